@@ -1,0 +1,237 @@
+"""Load and validate part catalogs (``catalogs/*.csv``) into SI pandas tables.
+
+Each CSV header carries the vendor's unit (``lead [mm]``); values are converted once here.
+Errors (unknown unit, missing column, duplicate id, non-numeric cell, non-positive stiffness,
+dangling reference) name the file, line and column.  A user catalog directory is merged after the
+shipped one; its ids must not collide with the shipped ids.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from types import MappingProxyType
+
+import pandas as pd
+
+from .errors import InputError
+from .units import split_header, unit_factor
+
+SHIPPED_DIR = Path(__file__).resolve().parent.parent / "catalogs"
+
+# column -> kind ("str" for text, "int" for counts, otherwise a units.KINDS kind); all required.
+_SCREWS = {
+    "id": "str", "vendor": "str", "series": "str",
+    "nominal_diameter": "length", "lead": "length", "root_diameter": "length", "ball_diameter": "length",
+    "max_length": "length", "mass_per_length": "mass_per_length", "dn_limit": "dn",
+    "price_per_length": "money_per_length", "price_fixed": "money",
+}
+_NUTS = {
+    "id": "str", "vendor": "str", "screw_id": "str", "type": "str",
+    "stiffness": "stiffness", "stiffness_preload": "force", "preload_min": "force", "preload_max": "force",
+    "dynamic_load_rating": "force", "static_load_rating": "force", "contact_angle": "angle",
+    "mass": "mass", "price": "money",
+}
+_BEARINGS = {
+    "id": "str", "vendor": "str", "series": "str", "arrangement": "str", "rows": "int",
+    "bore": "length", "outer_diameter": "length", "contact_angle": "angle", "preload_class": "str",
+    "preload": "force", "axial_rigidity": "stiffness", "lift_off_load": "force",
+    "dynamic_load_rating": "force", "static_load_rating": "force", "limiting_speed": "angular_speed",
+    "f0": "dimensionless", "f1": "dimensionless", "mass": "mass", "price": "money",
+}
+_GUIDES = {
+    "id": "str", "vendor": "str", "series": "str", "type": "str", "size": "length",
+    "preload_class": "str", "preload_level": "str", "preload": "force",
+    "normal_rigidity": "stiffness", "tangential_rigidity": "stiffness",
+    "dynamic_load_rating": "force", "static_load_rating": "force",
+    "friction_force": "force", "friction_coefficient": "dimensionless", "friction_viscous": "damping",
+    "damping": "damping", "block_mass": "mass", "rail_mass_per_length": "mass_per_length",
+    "block_price": "money", "rail_price_per_length": "money_per_length",
+}
+
+SCHEMA = MappingProxyType({
+    "screws": MappingProxyType(_SCREWS),
+    "nuts": MappingProxyType(_NUTS),
+    "bearings": MappingProxyType(_BEARINGS),
+    "guides": MappingProxyType(_GUIDES),
+})
+
+# Columns that must be > 0 (stiffness and the geometry the physics divides by).
+_POSITIVE = {
+    "screws": ("nominal_diameter", "lead", "root_diameter", "max_length", "mass_per_length", "dn_limit"),
+    "nuts": ("stiffness", "stiffness_preload", "dynamic_load_rating", "static_load_rating"),
+    "bearings": ("axial_rigidity", "bore", "outer_diameter", "rows", "dynamic_load_rating"),
+    "guides": ("normal_rigidity", "tangential_rigidity", "size", "dynamic_load_rating"),
+}
+_NON_NEGATIVE = ("price", "price_fixed", "price_per_length", "block_price", "rail_price_per_length",
+                 "mass", "block_mass", "preload", "preload_min", "preload_max", "friction_force",
+                 "friction_coefficient", "friction_viscous", "damping", "f0", "f1")
+_CHOICES = {
+    ("nuts", "type"): ("single", "double"),
+    ("guides", "type"): ("ball", "roller"),
+    ("guides", "preload_level"): ("light", "medium", "heavy", "super-heavy"),
+    ("bearings", "preload_class"): ("light", "medium", "heavy"),
+}
+
+
+@dataclass(frozen=True)
+class Catalog:
+    """The four part tables in SI, indexed by part id, plus where each row came from."""
+
+    screws: pd.DataFrame
+    nuts: pd.DataFrame
+    bearings: pd.DataFrame
+    guides: pd.DataFrame
+
+    def table(self, name: str) -> pd.DataFrame:
+        return getattr(self, name)
+
+    def part(self, table: str, part_id: str, *, source: str | None = None, key: str | None = None):
+        df = self.table(table)
+        if part_id not in df.index:
+            near = _closest(part_id, df.index)
+            hint = f"; did you mean '{near}'?" if near else ""
+            raise InputError(f"unknown {table[:-1]} id '{part_id}'{hint}", source=source, where=key)
+        return df.loc[part_id]
+
+
+def _closest(word: str, options) -> str | None:
+    import difflib
+
+    m = difflib.get_close_matches(str(word), [str(o) for o in options], n=1)
+    return m[0] if m else None
+
+
+def _read_table(path: Path, name: str) -> pd.DataFrame:
+    schema = SCHEMA[name]
+    src = str(path)
+    try:
+        with path.open(newline="", encoding="utf-8") as fh:
+            rows = list(csv.reader(fh))
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(f"cannot read catalog ({exc})", source=src) from None
+    if not rows:
+        raise InputError("empty catalog file", source=src)
+    header = rows[0]
+    cols: list[tuple[str, float | None, str]] = []  # (name, factor, kind)
+    seen = set()
+    for j, h in enumerate(header, start=1):
+        col, unit = split_header(h)
+        if col in seen:
+            raise InputError(f"duplicate column '{col}'", source=src, where=f"line 1, column {j}")
+        seen.add(col)
+        kind = schema.get(col)
+        if kind is None:
+            near = _closest(col, schema)
+            hint = f"; did you mean '{near}'?" if near else ""
+            raise InputError(f"unknown column '{col}'{hint}", source=src, where=f"line 1, column {j}")
+        if kind in ("str", "int"):
+            if unit not in (None, "", "-"):
+                raise InputError(f"column '{col}' takes no unit", source=src, where=f"line 1, column {j}")
+            cols.append((col, None, kind))
+            continue
+        if unit is None:
+            raise InputError(f"column '{col}' needs a unit in brackets, e.g. '{col} [..]'",
+                             source=src, where=f"line 1, column {j}")
+        try:
+            factor = unit_factor(unit, kind)
+        except ValueError as exc:
+            raise InputError(f"{exc} in column '{col}'", source=src, where=f"line 1, column {j}") from None
+        cols.append((col, factor, kind))
+    missing = [c for c in schema if c not in seen]
+    if missing:
+        raise InputError(f"missing column(s) {', '.join(missing)}", source=src, where="line 1")
+
+    records = []
+    ids: dict[str, int] = {}
+    for i, row in enumerate(rows[1:], start=2):
+        if not row or all(not c.strip() for c in row):
+            continue
+        if len(row) != len(cols):
+            raise InputError(f"has {len(row)} cells, header has {len(cols)}", source=src, where=f"line {i}")
+        rec = {}
+        for j, ((col, factor, kind), cell) in enumerate(zip(cols, row), start=1):
+            cell = cell.strip()
+            where = f"line {i}, column {j} ({col})"
+            if kind == "str":
+                if not cell:
+                    raise InputError("empty cell", source=src, where=where)
+                rec[col] = cell
+                continue
+            try:
+                val = float(cell)
+            except ValueError:
+                raise InputError(f"'{cell}' is not a number", source=src, where=where) from None
+            if not math.isfinite(val):
+                raise InputError(f"'{cell}' is not a finite number", source=src, where=where)
+            if kind == "int":
+                if val != int(val):
+                    raise InputError(f"'{cell}' is not a whole number", source=src, where=where)
+                rec[col] = int(val)
+                continue
+            if col in _POSITIVE[name] and val <= 0:
+                raise InputError(f"{col} must be positive, got {cell}", source=src, where=where)
+            if col in _NON_NEGATIVE and val < 0:
+                raise InputError(f"{col} must not be negative, got {cell}", source=src, where=where)
+            rec[col] = val * factor
+        choices = [(c, rec[c], ok) for (t, c), ok in _CHOICES.items() if t == name and rec[c] not in ok]
+        if choices:
+            c, v, ok = choices[0]
+            j = [n for n, _, _ in cols].index(c) + 1
+            raise InputError(f"{c} '{v}' is not one of {', '.join(ok)}", source=src,
+                             where=f"line {i}, column {j} ({c})")
+        if rec["id"] in ids:
+            raise InputError(f"duplicate id '{rec['id']}' (first on line {ids[rec['id']]})", source=src,
+                             where=f"line {i}, column 1 (id)")
+        ids[rec["id"]] = i
+        rec["_source"] = f"{src}:{i}"
+        records.append(rec)
+    df = pd.DataFrame.from_records(records, columns=list(schema) + ["_source"])
+    return df.set_index("id", drop=False)
+
+
+def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
+    """Load the shipped catalogs and any user catalog directories (later ones add parts).
+
+    A user directory may hold any subset of screws/nuts/bearings/guides CSVs.
+    """
+    dirs = ([SHIPPED_DIR] if shipped else []) + [Path(d) for d in extra_dirs]
+    tables: dict[str, list[pd.DataFrame]] = {name: [] for name in SCHEMA}
+    for d in dirs:
+        if not d.is_dir():
+            raise InputError("catalog directory not found", source=str(d))
+        for name in SCHEMA:
+            p = d / f"{name}.csv"
+            if p.exists():
+                tables[name].append(_read_table(p, name))
+    out = {}
+    for name, parts in tables.items():
+        if not parts:
+            raise InputError(f"no {name}.csv found in catalog directories", source=", ".join(map(str, dirs)))
+        df = pd.concat(parts) if len(parts) > 1 else parts[0]
+        dup = df.index[df.index.duplicated()]
+        if len(dup):
+            row = df.loc[dup[0]]
+            src = row["_source"].iloc[-1] if isinstance(row, pd.DataFrame) else row["_source"]
+            raise InputError(f"duplicate id '{dup[0]}' across catalog directories", source=src)
+        out[name] = df
+    nuts = out["nuts"]
+    bad = ~nuts["screw_id"].isin(out["screws"].index)
+    if bad.any():
+        r = nuts[bad].iloc[0]
+        raise InputError(f"screw_id '{r['screw_id']}' is not in screws.csv", source=r["_source"],
+                         where="column screw_id")
+    return Catalog(**out)
+
+
+_CACHE: dict[tuple, Catalog] = {}
+
+
+def default_catalog(extra_dirs=()) -> Catalog:
+    """Cached :func:`load_catalogs` (the tables are treated as read-only)."""
+    key = tuple(str(Path(d).resolve()) for d in extra_dirs)
+    if key not in _CACHE:
+        _CACHE[key] = load_catalogs(extra_dirs)
+    return _CACHE[key]

@@ -1,0 +1,82 @@
+"""Command line: ``axisopt evaluate | solve | diagnose | compare | study``.  The only module that prints.
+
+Exit codes: 0 success, 1 a well-formed question with a negative answer (e.g. an infeasible
+problem), 2 bad input (one line on stderr naming the file and key or line).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from .cliutil import EXIT_INPUT, EXIT_OK, Parser, write_json
+from .errors import InputError
+
+
+def cmd_evaluate(args) -> int:
+    from .design import load_design
+    from .model import evaluate
+    from .report import evaluation_dict, evaluation_table, plot_profiles
+
+    design = load_design(args.design)
+    if args.calibration:
+        from .identify.calibration import apply_calibration
+
+        design = apply_calibration(design, args.calibration)
+    ev = evaluate(design)
+    if args.json != "-":
+        print(evaluation_table(ev))
+    if args.json:
+        write_json(evaluation_dict(ev), args.json)
+    if args.plot:
+        plot_profiles([ev], args.plot)
+        if args.json != "-":
+            print(f"\nplot written to {args.plot}")
+    return EXIT_OK
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = Parser(prog="axisopt", description="Size and diagnose machine-tool feed axes.")
+    sub = p.add_subparsers(dest="command", required=True, parser_class=Parser)
+
+    e = sub.add_parser("evaluate", help="evaluate one design over the stroke")
+    e.add_argument("design", help="design YAML file")
+    e.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
+    e.add_argument("--plot", metavar="FILE.png", help="plot stiffness and frequency over the stroke")
+    e.add_argument("--calibration", metavar="FILE.yaml", help="apply a calibration saved by 'diagnose'")
+    e.set_defaults(func=cmd_evaluate)
+
+    for register in _extra_commands():
+        register(sub)
+    return p
+
+
+def _extra_commands():
+    """Subcommands kept in their own CLI modules (``axisopt/*_cli.py``, each with ``register(sub)``)."""
+    out = []
+    for mod in ("solve_cli", "diagnose_cli", "study_cli"):
+        try:
+            m = __import__(f"axisopt.{mod}", fromlist=["register"])
+        except ModuleNotFoundError as exc:
+            if exc.name != f"axisopt.{mod}":
+                raise
+            continue
+        out.append(m.register)
+    return out
+
+
+def main(argv=None) -> int:
+    try:
+        parser = build_parser()
+        args = parser.parse_args(argv)
+        return args.func(args)
+    except InputError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_INPUT
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,198 @@
+"""Axis and design descriptions (frozen dataclasses) and the strict design-YAML reader.
+
+A design YAML has ``axis`` (the machine's requirements, every dimensional value with its unit),
+``parts`` (catalog ids or inline custom parts) and optionally ``catalogs`` (extra catalog
+directories, relative to the YAML file) and ``name``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, fields, replace
+from pathlib import Path
+
+from .catalog import SCHEMA, Catalog, default_catalog
+from .units import parse_quantity
+from .yamlio import Section, read_yaml
+
+MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
+ORIENTATIONS = ("horizontal", "vertical")
+G = 9.80665
+
+
+@dataclass(frozen=True)
+class Axis:
+    """What the machine asks of the axis.  SI units."""
+
+    stroke: float
+    moving_mass: float  # table + workpiece, without nut and guide blocks [kg]
+    mounting: str
+    max_speed: float  # rapid traverse [m/s]
+    axial_load: float  # largest external axial (cutting) load [N]
+    start_offset: float = 0.13  # fixed bearing to nut at stroke start, l0 [m]
+    end_margin: float = 0.15  # nut at stroke end to the far bearing [m]
+    mean_speed: float | None = None  # for life; default half of max_speed [m/s]
+    mean_axial_load: float | None = None  # for life; default a third of axial_load [N]
+    acceleration: float = 0.0  # [m/s^2]
+    required_life: float = 20000 * 3600.0  # [s]
+    load_factor: float = 1.2  # fw
+    guide_blocks: int = 4
+    rails: int = 2
+    table_length: float = 0.5  # rail length = stroke + table_length [m]
+    normal_load: float = 0.0  # external load on the guide blocks besides gravity [N]
+    lubricant_viscosity: float = 32e-6  # at working temperature [m^2/s]
+    motor_inertia: float = 1.0e-3  # rotor + coupling [kg m^2]
+    orientation: str = "horizontal"
+    positions: int = 41  # nut positions evaluated over the stroke
+
+    @property
+    def span(self) -> float:
+        """Bearing-to-bearing length of the screw [m]."""
+        return self.start_offset + self.stroke + self.end_margin
+
+    @property
+    def mean_speed_eff(self) -> float:
+        return self.mean_speed if self.mean_speed is not None else 0.5 * self.max_speed
+
+    @property
+    def mean_axial_load_eff(self) -> float:
+        return self.mean_axial_load if self.mean_axial_load is not None else self.axial_load / 3.0
+
+
+@dataclass(frozen=True)
+class Design:
+    """An axis with one chosen part per slot.  Parts are catalog rows (pandas Series) in SI."""
+
+    axis: Axis
+    screw: object
+    nut: object
+    bearing: object
+    guide: object
+    nut_preload: float | None = None  # None: the catalog's quoted preload
+    name: str = "design"
+    source: str = ""
+    assumed: tuple = field(default=())  # axis keys left at their defaults, for reports
+
+    @property
+    def preload(self) -> float:
+        if self.nut_preload is not None:
+            return self.nut_preload
+        return float(self.nut["stiffness_preload"]) if self.nut["type"] == "double" \
+            else float(self.nut["preload_min"])
+
+    def part_ids(self) -> dict:
+        return {k: str(getattr(self, k)["id"]) for k in ("screw", "nut", "bearing", "guide")}
+
+    def with_parts(self, **kw) -> Design:
+        return replace(self, **kw)
+
+
+_AXIS_KINDS = {
+    "stroke": "length", "moving_mass": "mass", "max_speed": "speed", "axial_load": "force",
+    "start_offset": "length", "end_margin": "length", "mean_speed": "speed", "mean_axial_load": "force",
+    "acceleration": "acceleration", "required_life": "time", "table_length": "length",
+    "normal_load": "force", "lubricant_viscosity": "kinematic_viscosity", "motor_inertia": "inertia",
+}
+_AXIS_REQUIRED = ("stroke", "moving_mass", "mounting", "max_speed", "axial_load")
+_NON_NEGATIVE = ("end_margin", "mean_axial_load", "acceleration", "normal_load", "axial_load")
+
+
+def read_axis(sec: Section) -> tuple[Axis, tuple]:
+    """Read an ``axis:`` section.  Returns the Axis and the names of keys left at their defaults."""
+    kw = {}
+    for name, kind in _AXIS_KINDS.items():
+        v = sec.quantity(name, kind, required=name in _AXIS_REQUIRED,
+                         positive=name not in _NON_NEGATIVE, non_negative=name in _NON_NEGATIVE)
+        if v is not None:
+            kw[name] = v
+    kw["mounting"] = sec.choice("mounting", MOUNTINGS, required=True)
+    kw["orientation"] = sec.choice("orientation", ORIENTATIONS, "horizontal")
+    for name in ("guide_blocks", "rails", "positions"):
+        v = sec.number(name, integer=True, minimum=1 if name != "positions" else 3)
+        if v is not None:
+            kw[name] = int(v)
+    v = sec.number("load_factor", minimum=1.0)
+    if v is not None:
+        kw["load_factor"] = float(v)
+    sec.done()
+    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw)
+    return Axis(**kw), assumed
+
+
+def read_part(sec: Section, key: str, table: str, catalog: Catalog):
+    """A part slot: a catalog id, or an inline mapping with the catalog's columns (values with units)."""
+    node = sec.raw(key, required=True)
+    if isinstance(node.value, (str, int)) and not isinstance(node.value, bool):
+        return catalog.part(table, str(node.value), source=sec.source, key=sec.where(key))
+    if not isinstance(node.value, dict):
+        raise sec.error(key, f"expected a catalog id or a mapping of {table[:-1]} properties")
+    return inline_part(Section(node, sec.source, sec.key_path(key)), table)
+
+
+def inline_part(sec: Section, table: str):
+    import pandas as pd
+
+    rec = {}
+    for col, kind in SCHEMA[table].items():
+        if kind == "str":
+            rec[col] = sec.string(col, "custom" if col in ("vendor", "series") else None,
+                                  required=col not in ("vendor", "series"))
+        elif kind == "int":
+            rec[col] = int(sec.number(col, required=True, integer=True, minimum=1))
+        elif kind == "dimensionless":
+            rec[col] = float(sec.number(col, required=True, minimum=0))
+        else:
+            rec[col] = sec.quantity(col, kind, required=True, non_negative=True)
+    sec.done()
+    rec["_source"] = f"{sec.source}:{sec.node.line}"
+    return pd.Series(rec, name=rec["id"])
+
+
+def read_parts(sec: Section, catalog: Catalog) -> dict:
+    parts = {
+        "screw": read_part(sec, "screw", "screws", catalog),
+        "nut": read_part(sec, "nut", "nuts", catalog),
+        "bearing": read_part(sec, "bearing", "bearings", catalog),
+        "guide": read_part(sec, "guide", "guides", catalog),
+    }
+    pre = sec.quantity("nut_preload", "force", non_negative=True)
+    sec.done()
+    nut, screw = parts["nut"], parts["screw"]
+    if nut["screw_id"] != screw["id"]:
+        raise sec.error("nut", f"nut '{nut['id']}' fits screw '{nut['screw_id']}', not '{screw['id']}'")
+    if pre is not None and not (nut["preload_min"] - 1e-9 <= pre <= nut["preload_max"] + 1e-9):
+        raise sec.error("nut_preload", f"{pre:.0f} N is outside nut '{nut['id']}' range "
+                        f"{nut['preload_min']:.0f}..{nut['preload_max']:.0f} N")
+    parts["nut_preload"] = pre
+    return parts
+
+
+def catalog_for(root: Section, base_dir: Path) -> Catalog:
+    dirs = root.string_list("catalogs", [])
+    resolved = []
+    for d in dirs:
+        p = (base_dir / d).resolve()
+        if not p.is_dir():
+            raise root.error("catalogs", f"catalog directory '{d}' not found")
+        resolved.append(p)
+    return default_catalog(tuple(resolved))
+
+
+def load_design(path) -> Design:
+    """Read a design YAML file into a :class:`Design`; every error names the file and key."""
+    path = Path(path)
+    root = Section(read_yaml(path), str(path))
+    catalog = catalog_for(root, path.parent)
+    name = root.string("name", path.stem)
+    root.string("description")
+    axis, assumed = read_axis(root.section("axis", required=True))
+    parts = read_parts(root.section("parts", required=True), catalog)
+    root.done()
+    return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)
+
+
+def quantity(text: str, kind: str) -> float:
+    """Convenience for scripts and tests: ``quantity('800 mm', 'length') == 0.8``."""
+    return parse_quantity(text, kind)
+
+
+__all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_parts", "G"]

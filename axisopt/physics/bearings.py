@@ -1,0 +1,158 @@
+"""Support bearings: radial/axial stiffness relations and methods, friction torque (seed 3.3, eq. 40)."""
+
+from __future__ import annotations
+
+import math
+from types import MappingProxyType
+
+from axisopt import mathx as mx
+from axisopt.physics.screw import choose
+
+__all__ = [
+    "C_TYPE_TABLE2", "CATALOG_RADIAL_AXIAL_RATIO", "FRICTION_COEFFICIENTS_TABLE8",
+    "radial_from_axial_eq27", "radial_from_axial_catalog", "RADIAL_FROM_AXIAL_METHODS", "radial_from_axial",
+    "radial_stiffness_eq20", "radial_stiffness_palmgren", "radial_stiffness_kramer",
+    "RADIAL_STIFFNESS_METHODS",
+    "bearing_radial_stiffness", "bearing_friction_torque",
+]
+
+# Seed Table 2, c_type of eq. 20 by angular-contact series (C: 15 deg, AC: 25 deg).  The extracted table is
+# partly garbled; the 719C/719AC pair is read as 4.83/5.83 (one cell is blank in the source text).
+C_TYPE_TABLE2 = MappingProxyType(
+    {"719C": 4.83, "719AC": 5.83, "70C": 5.43, "70AC": 6.03, "72C": 5.38, "72AC": 6.03}
+)
+
+# Seed sec. 3.3.2 (bearing catalog [12]): c_r / c_a by contact angle in whole degrees.
+CATALOG_RADIAL_AXIAL_RATIO = MappingProxyType({15: 6.0, 20: 3.5, 25: 2.0})
+
+# Seed Table 8 (after [23], DIN ISO 15312): (f0_min, f0_max, f1_min, f1_max) for eq. 40.
+FRICTION_COEFFICIENTS_TABLE8 = MappingProxyType({
+    "deep groove ball": (1.7, 2.3, 0.00010, 0.00020),
+    "self-aligning ball": (2.4, 4.0, 0.00008, 0.00008),
+    "angular contact ball": (2.0, 7.0, 0.00025, 0.00035),
+    "four point": (2.0, 3.0, 0.00037, 0.00037),
+    "cylindrical roller with cage": (2.0, 4.0, 0.00020, 0.00040),
+    "cylindrical roller full complement": (5.0, 12.0, 0.00055, 0.00055),
+    "needle roller": (5.0, 10.0, 0.00050, 0.00050),
+    "self-aligning roller": (4.5, 6.5, 0.00017, 0.00036),
+    "tapered roller": (3.0, 4.5, 0.00040, 0.00040),
+    "axial cylindrical roller": (3.0, 4.0, 0.00150, 0.00150),
+    "axial self-aligning roller": (2.5, 3.3, 0.00023, 0.00033),
+})
+
+
+def radial_from_axial_eq27(axial_stiffness, contact_angle):
+    r"""Radial stiffness of an angular contact bearing from its axial stiffness ("design experience").
+
+    .. math:: k_r = (k_a / 2) \cot^2\alpha                              (seed eq. 27)
+
+    axial_stiffness : k_a [N/m];  contact_angle : alpha [rad].  Returns k_r [N/m].
+    Gives 6.96 / 3.77 / 2.30 k_a at 15 / 20 / 25 deg, about 15 % above the catalog ratios 6 / 3.5 / 2.
+    """
+    return 0.5 * axial_stiffness / mx.tan(contact_angle) ** 2
+
+
+def radial_from_axial_catalog(axial_stiffness, contact_angle):
+    r"""Catalog radial/axial ratio for bearing pairs in O or X arrangement.
+
+    .. math:: c_r = 6 c_a (15^\circ),\ 3.5 c_a (20^\circ),\ 2 c_a (25^\circ)
+
+    Source: seed sec. 3.3.2 (bearing catalog [12]).
+
+    axial_stiffness : c_a [N/m];  contact_angle : alpha [rad], a plain number equal to 15, 20 or 25 deg.
+    Returns c_r [N/m].  Other angles raise ValueError.
+    """
+    deg = round(math.degrees(float(contact_angle)), 6)
+    key = int(round(deg))
+    if abs(deg - key) > 1e-6 or key not in CATALOG_RADIAL_AXIAL_RATIO:
+        raise ValueError(f"catalog radial/axial ratio known only for 15, 20, 25 deg, not {deg} deg")
+    return CATALOG_RADIAL_AXIAL_RATIO[key] * axial_stiffness
+
+
+RADIAL_FROM_AXIAL_METHODS = MappingProxyType(
+    {"eq27": radial_from_axial_eq27, "catalog": radial_from_axial_catalog}
+)
+
+
+def radial_from_axial(axial_stiffness, contact_angle, method="catalog"):
+    """Radial stiffness from axial stiffness; method in RADIAL_FROM_AXIAL_METHODS ("eq27", "catalog").
+
+    axial_stiffness [N/m], contact_angle [rad].  Returns [N/m].
+    """
+    return choose(RADIAL_FROM_AXIAL_METHODS, method, "method")(axial_stiffness, contact_angle)
+
+
+def radial_stiffness_eq20(bore, outer_diameter, radial_load, c_type):
+    r"""Radial stiffness of an angular contact ball bearing, empirical form of seed eq. 20 (after [1]).
+
+    .. math:: k_r = c_{type} (D + d)^{2/3} (D - d)^{-1/4} F_r^{1/3}
+
+    evaluated with D, d in [mm], F_r in [N] and read as k_r in [N/um] (units as printed in the seed).
+    bore : d [m];  outer_diameter : D [m];  radial_load : F_r [N];  c_type : Table 2 value [-]
+    (C_TYPE_TABLE2).  Returns k_r [N/m].  Valid for preloaded spindle-type bearings 70xx/719xx/72xx.
+    """
+    d_mm, dd_mm = bore * 1e3, outer_diameter * 1e3
+    return 1e6 * c_type * (dd_mm + d_mm) ** (2.0 / 3.0) / (dd_mm - d_mm) ** 0.25 * mx.cbrt(radial_load)
+
+
+def radial_stiffness_palmgren(radial_load, ball_diameter, n_balls, contact_angle, n_rows=1.0):
+    r"""Radial stiffness after Palmgren (seed eq. 21-23).
+
+    .. math:: \delta_r = \frac{0.436}{\cos\alpha} (Q^2 / D_w)^{1/3}\ [\mu m],\ Q [N],\ D_w [mm]   (eq. 23)
+    .. math:: Q = 5 F_r / (i Z \cos\alpha)\ \text{(Stribeck)},
+    .. math:: k_r = dF_r/d\delta_r = \tfrac32 F_r/\delta_r
+
+    (p = 2/3 for ball bearings, eq. 21-22.)
+    radial_load : F_r [N];  ball_diameter : D_w [m];  n_balls : Z per row [-];  contact_angle : alpha [rad]
+    n_rows : i [-].  Returns k_r [N/m].  Valid for rigid rings, zero clearance, ball bearings.
+    """
+    ca = mx.cos(contact_angle)
+    q = 5.0 * radial_load / (n_rows * n_balls * ca)
+    delta_um = 0.436 / ca * mx.cbrt(q**2 / (ball_diameter * 1e3))
+    return 1.5 * radial_load / (delta_um * 1e-6)
+
+
+def radial_stiffness_kramer(radial_load, ball_diameter, n_balls):
+    r"""Radial stiffness after Kraemer (seed eq. 25-26).
+
+    .. math:: x_r = 1.2\times10^{-7} d_b^{-1/3} Z^{-2/3} F^{2/3},\quad k_r = n F_r / x_r,\ n = 3/2
+
+    evaluated in SI (d_b [m], F [N], x_r [m]); this matches Palmgren within ~10 % for typical geometry.
+    radial_load : F_r [N];  ball_diameter : d_b [m];  n_balls : Z [-].  Returns k_r [N/m].
+    """
+    x_r = 1.2e-7 * ball_diameter ** (-1.0 / 3.0) * n_balls ** (-2.0 / 3.0) * radial_load ** (2.0 / 3.0)
+    return 1.5 * radial_load / x_r
+
+
+RADIAL_STIFFNESS_METHODS = MappingProxyType({
+    "eq20": radial_stiffness_eq20, "palmgren": radial_stiffness_palmgren, "kramer": radial_stiffness_kramer,
+})
+
+
+def bearing_radial_stiffness(method, **kwargs):
+    """Radial bearing stiffness by a named method ("eq20", "palmgren", "kramer"); kwargs are that
+    function's arguments (SI).  Returns [N/m]."""
+    return choose(RADIAL_STIFFNESS_METHODS, method, "method")(**kwargs)
+
+
+def bearing_friction_torque(f0, f1, viscosity, speed, mean_diameter, load):
+    r"""Rolling bearing friction torque, load-independent plus load-dependent part.
+
+    .. math:: M = 10^{-7} f_0 (\nu n)^{2/3} d_m^3 + f_1 P_1 d_m\ [N mm],\ \nu n \ge 2000      (seed eq. 40)
+    .. math:: M = 160\cdot10^{-7} f_0 d_m^3 + f_1 P_1 d_m\ [N mm],\ \nu n < 2000
+
+    (low-speed branch: SKF / Schaeffler)
+
+    with nu [mm^2/s], n [1/min], d_m [mm].  Inputs and output here are SI:
+    f0, f1        : coefficients [-] (FRICTION_COEFFICIENTS_TABLE8)
+    viscosity     : nu, kinematic viscosity at operating temperature [m^2/s]
+    speed         : omega [rad/s] (sign ignored)
+    mean_diameter : d_m = (d + D)/2 [m]
+    load          : P_1, equivalent load [N]
+    Returns M [N*m].  Source: seed eq. 40, Table 8, DIN ISO 15312.
+    """
+    nu_n = viscosity * 1e6 * mx.fabs(speed) * 60.0 / (2.0 * mx.pi)
+    dm = mean_diameter * 1e3
+    m0 = mx.if_else(nu_n >= 2000.0, 1e-7 * f0 * mx.fmax(nu_n, 2000.0) ** (2.0 / 3.0) * dm**3,
+                    160e-7 * f0 * dm**3)
+    return 1e-3 * (m0 + f1 * load * dm)

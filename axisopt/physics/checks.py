@@ -1,0 +1,90 @@
+"""Screw checks: critical speed, buckling, L10 life, DN value (vendor catalog forms in SI)."""
+
+from __future__ import annotations
+
+from types import MappingProxyType
+
+from axisopt import mathx as mx
+from axisopt.physics.screw import E_STEEL, RHO_STEEL, choose
+
+__all__ = [
+    "CRITICAL_SPEED_LAMBDA1", "BUCKLING_ETA1", "critical_speed", "buckling_load",
+    "life_revolutions", "life_time", "dn_value",
+]
+
+# THK catalog A15-32 eq. 7: lambda_1 by mounting.  lambda_2 = 3.4 / 9.7 / 15.1 / 21.9 includes the 0.8 factor.
+CRITICAL_SPEED_LAMBDA1 = MappingProxyType(
+    {"fixed-free": 1.875, "supported-supported": 3.142, "fixed-supported": 3.927, "fixed-fixed": 4.730}
+)
+# THK catalog A15-30 eq. 5: eta_1 by mounting (eta_2 = 1.3 / 10 / 20 incl. 0.5);
+# supported-supported eta_1 = 1 (eta_2 = 5).
+BUCKLING_ETA1 = MappingProxyType(
+    {"fixed-free": 0.25, "supported-supported": 1.0, "fixed-supported": 2.0, "fixed-fixed": 4.0}
+)
+
+
+def critical_speed(root_diameter, span, mounting, safety_factor=0.8, youngs_modulus=E_STEEL,
+                   density=RHO_STEEL):
+    r"""Permissible speed from the first bending (whirling) frequency of the screw shaft.
+
+    .. math:: \omega = s\, \frac{\lambda_1^2}{\ell_b^2} \sqrt{\frac{E I}{\rho A}}
+
+    with I = pi d_r^4/64, A = pi d_r^2/4.
+
+    root_diameter : d_r [m];  span : l_b, between mounting surfaces [m];  mounting : one of MOUNTINGS
+    safety_factor : s = 0.8 (THK, Schneeberger, HSK: 80 % of critical)
+    youngs_modulus [Pa];  density [kg/m^3]
+    Returns omega [rad/s].  Source: THK catalog A15-32 eq. 7
+    (N1 = lambda_2 d_r / l_b^2 * 1e7 [1/min], d, l [mm]).
+    """
+    lam = choose(CRITICAL_SPEED_LAMBDA1, mounting, "mounting")
+    return safety_factor * lam**2 / span**2 * mx.sqrt(youngs_modulus * root_diameter**2 / (16.0 * density))
+
+
+def buckling_load(root_diameter, length, mounting, safety_factor=0.5, youngs_modulus=E_STEEL):
+    r"""Permissible compressive axial load from Euler buckling.
+
+    .. math:: P_1 = s\, \eta_1 \pi^2 E I / \ell_a^2,\ I = \pi d_r^4 / 64
+
+    root_diameter : d_r [m];  length : l_a, load point to mounting [m];  mounting : one of MOUNTINGS
+    safety_factor : s = 0.5 (THK);  youngs_modulus [Pa].  Returns P_1 [N].
+    Source: THK catalog A15-30 eq. 5 (P_1 = eta_2 d_r^4 / l_a^2 * 1e4 [N], mm); MiSUMi uses eta_2 = 10
+    for fixed-supported.  Check also the yield limit P_2 = 116 d_r^2 separately.
+    """
+    eta = choose(BUCKLING_ETA1, mounting, "mounting")
+    return safety_factor * eta * mx.pi**3 * youngs_modulus * root_diameter**4 / (64.0 * length**2)
+
+
+def life_revolutions(dynamic_load_rating, load, load_factor=1.0):
+    r"""Nominal (L10) life in revolutions.
+
+    .. math:: L = (C_a / (f_w F_a))^3 \cdot 10^6
+
+    dynamic_load_rating : C_a [N];  load : F_a, mean axial load [N] (> 0);  load_factor : f_w [-]
+    Returns L [rev].  Source: THK / MiSUMi / ISO 3408-5.
+    """
+    return (dynamic_load_rating / (load_factor * load)) ** 3 * 1e6
+
+
+def life_time(dynamic_load_rating, load, speed, load_factor=1.0):
+    r"""Nominal (L10) life in seconds at a constant mean speed.
+
+    .. math:: L_t = L / n = 2\pi L / \omega           (L_h = L / (60 N) in hours, N in 1/min)
+
+    dynamic_load_rating : C_a [N];  load : F_a [N];  speed : omega, mean speed [rad/s] (> 0)
+    load_factor : f_w [-].  Returns L_t [s] (divide by 3600 for hours).
+    """
+    return life_revolutions(dynamic_load_rating, load, load_factor) * 2.0 * mx.pi / speed
+
+
+def dn_value(diameter, speed):
+    r"""DN value, diameter times screw speed, in SI.
+
+    .. math:: DN = d\,|\omega|
+
+    diameter : d, ball centre (or nominal) diameter [m];  speed : omega [rad/s].
+    Returns DN [m rad/s].  Vendors quote D [mm] x N [1/min]: 1 mm*rpm = 1.0472e-4 m rad/s; catalog
+    limits (70 000-210 000 mm*rpm) are converted to SI when the catalog is loaded.
+    Source: THK catalog eq. 8-17, vendor-formulas.md sec. 2.2.
+    """
+    return diameter * mx.fabs(speed)

@@ -1,0 +1,108 @@
+"""Lumped axis dynamics: axial mode, table mode on guides, axial-torsional 2-DOF, dynamic compliance."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from axisopt import mathx as mx
+from axisopt.physics.screw import E_STEEL
+
+__all__ = [
+    "axial_natural_frequency", "axial_angular_frequency_eq11", "table_mode_frequency",
+    "axial_torsional_eigenvalues", "axial_torsional_frequencies", "dynamic_compliance",
+]
+
+
+def axial_natural_frequency(stiffness, moving_mass, screw_mass=0.0, x=None, span=None):
+    r"""First axial natural frequency of table on the drive spring, with Rayleigh screw-mass correction.
+
+    .. math:: f_1 = \frac{1}{2\pi}\sqrt{k / m_{eff}},\quad m_{eff} = m + m_s\, x / (3 L)
+
+    (m_s x/L is the screw mass between fixed bearing and nut; one third acts on the nut.)
+    stiffness   : k, axial stiffness at the nut position [N/m]
+    moving_mass : m, table + workpiece + nut [kg]
+    screw_mass  : m_s, whole screw [kg];  x : nut distance from fixed bearing [m];  span : L [m]
+    (x and span given together; if omitted, x/L = 1.)
+    Returns f_1 [Hz].  Source: seed eq. 11 (lumped form), model-discrepancy.md sec. 1.2.
+    """
+    share = 1.0 if x is None or span is None else x / span
+    m_eff = moving_mass + screw_mass * share / 3.0
+    return mx.sqrt(stiffness / m_eff) / (2.0 * mx.pi)
+
+
+def axial_angular_frequency_eq11(root_diameter, length, mass, youngs_modulus=E_STEEL):
+    r"""Position-dependent axial angular frequency of a mass on a screw segment of length l_x.
+
+    .. math:: \omega_x = \sqrt{E A / (m\, l_x)},\ A = \pi d^2 / 4               (seed eq. 11)
+
+    root_diameter : d [m];  length : l_x in [l_0, l_0 + h] [m];  mass : m [kg];  youngs_modulus : E [Pa]
+    Returns omega_x [rad/s].  Screw-only stiffness (nut, bearings rigid).
+    """
+    return mx.sqrt(youngs_modulus * mx.pi * root_diameter**2 / 4.0 / (mass * length))
+
+
+def table_mode_frequency(normal_stiffness_per_block, n_blocks, mass):
+    r"""Vertical (normal) table mode on its guide blocks, all blocks in parallel.
+
+    .. math:: f = \frac{1}{2\pi}\sqrt{n\, k_n / m}
+
+    normal_stiffness_per_block : k_n [N/m];  n_blocks : n [-];  mass : m [kg].  Returns f [Hz].
+    Rigid table, rigid rails; rocking modes not included.
+    """
+    return mx.sqrt(n_blocks * normal_stiffness_per_block / mass) / (2.0 * mx.pi)
+
+
+def axial_torsional_eigenvalues(rotary_inertia, torsional_stiffness, axial_stiffness, mass, lead):
+    r"""Squared angular frequencies of the coupled axial-torsional 2-DOF drive model.
+
+    DOFs theta (screw + rotor inertia J, held by torsional stiffness k_t at the motor) and x (table m),
+    coupled through the lead, r = P_h / (2 pi), by the axial stiffness k_a (screw + nut + bearing):
+
+    .. math:: M = \mathrm{diag}(J, m),
+    .. math:: K = \begin{bmatrix} k_t + k_a r^2 & -k_a r \\ -k_a r & k_a\end{bmatrix}
+    .. math:: \omega^2_{1,2} = \frac{b \mp \sqrt{b^2 - 4 J m k_t k_a}}{2 J m},\ b = J k_a + m (k_t + k_a r^2)
+
+    rotary_inertia : J [kg*m^2];  torsional_stiffness : k_t [N*m/rad];  axial_stiffness : k_a [N/m]
+    mass : m [kg];  lead : P_h [m].  Returns (omega_1^2, omega_2^2) [rad^2/s^2], omega_1 <= omega_2.
+    Source: standard feed-drive lumped model (seed Fig. 1-2).
+    """
+    r = lead / (2.0 * mx.pi)
+    b = rotary_inertia * axial_stiffness + mass * (torsional_stiffness + axial_stiffness * r**2)
+    disc = mx.sqrt(b**2 - 4.0 * rotary_inertia * mass * torsional_stiffness * axial_stiffness)
+    den = 2.0 * rotary_inertia * mass
+    return (b - disc) / den, (b + disc) / den
+
+
+def axial_torsional_frequencies(rotary_inertia, torsional_stiffness, axial_stiffness, mass, lead):
+    """Natural frequencies (f_1, f_2) [Hz] of axial_torsional_eigenvalues (same arguments, SI)."""
+    w1, w2 = axial_torsional_eigenvalues(rotary_inertia, torsional_stiffness, axial_stiffness, mass, lead)
+    return mx.sqrt(w1) / (2.0 * mx.pi), mx.sqrt(w2) / (2.0 * mx.pi)
+
+
+def dynamic_compliance(frequency, mass, axial_stiffness, axial_damping, rotary_inertia=None,
+                       torsional_stiffness=None, torsional_damping=0.0, lead=None):
+    r"""Table dynamic compliance X/F(j omega) of the lumped model (inverse dynamic stiffness, seed eq. 41).
+
+    Without rotary data (SDOF):  X/F = 1 / (k_a - m omega^2 + j omega c_a).
+    With rotary data (2-DOF of axial_torsional_eigenvalues, viscous c_a, c_t):
+
+    .. math:: X/F = \frac{k_t + k_a r^2 - J\omega^2 + j\omega (c_t + c_a r^2)}
+                         {(k_t + k_a r^2 - J\omega^2 + j\omega(c_t + c_a r^2))(k_a - m\omega^2 + j\omega c_a)
+                          - r^2 (k_a + j\omega c_a)^2}
+
+    frequency : f [Hz] (array);  mass : m [kg];  axial_stiffness : k_a [N/m];  axial_damping : c_a [N*s/m]
+    rotary_inertia : J [kg*m^2];  torsional_stiffness : k_t [N*m/rad];  torsional_damping : c_t [N*m*s/rad]
+    lead : P_h [m].  Returns complex ndarray [m/N] (numpy only, not symbolic).
+    """
+    w = 2.0 * np.pi * np.asarray(frequency, dtype=float)
+    jw = 1j * w
+    z_x = axial_stiffness - mass * w**2 + jw * axial_damping
+    if rotary_inertia is None:
+        return 1.0 / z_x
+    if torsional_stiffness is None or lead is None:
+        raise ValueError("dynamic_compliance: rotary_inertia needs torsional_stiffness and lead")
+    r = lead / (2.0 * np.pi)
+    z_t = torsional_stiffness + axial_stiffness * r**2 - rotary_inertia * w**2 + jw * (
+        torsional_damping + axial_damping * r**2)
+    coupling = r * (axial_stiffness + jw * axial_damping)
+    return z_t / (z_t * z_x - coupling**2)

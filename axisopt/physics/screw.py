@@ -1,0 +1,143 @@
+"""Screw shaft: stiffness combination, axial and torsional stiffness, inertia, mass (seed sec. 3.1)."""
+
+from __future__ import annotations
+
+from types import MappingProxyType
+
+from axisopt import mathx as mx
+
+__all__ = [
+    "E_STEEL", "G_STEEL", "RHO_STEEL", "MOUNTINGS", "CATALOG_STIFFNESS_FACTOR", "choose",
+    "series_stiffness", "parallel_stiffness", "screw_stiffness", "screw_stiffness_catalog",
+    "screw_torsional_stiffness", "screw_rotary_inertia", "screw_mass", "lead_angle",
+]
+
+E_STEEL = 206e9  # [Pa] THK catalog A15-30 (2.06e5 N/mm^2)
+G_STEEL = 79.3e9  # [Pa]
+RHO_STEEL = 7850.0  # [kg/m^3] THK catalog A15-32 (7.85e-6 kg/mm^3)
+
+MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed", "supported-supported")
+
+# k = c * E * A / L, catalog forms of seed eq. 7-8 (c = 4: fixed-fixed, nut at mid-span; c = 1: one fixed end
+# carries the load over L).  Supported ends carry no axial load, so fixed-supported behaves as fixed-free.
+# Supported-supported has no fixed bearing; by convention one support takes the thrust, c = 1.
+CATALOG_STIFFNESS_FACTOR = MappingProxyType(
+    {"fixed-free": 1.0, "fixed-supported": 1.0, "fixed-fixed": 4.0, "supported-supported": 1.0}
+)
+
+
+def choose(mapping, key, what):
+    """Look a discrete selector up in a read-only mapping; a wrong key raises ValueError naming choices."""
+    if not isinstance(key, str) or key not in mapping:
+        allowed = ", ".join(repr(k) for k in mapping)
+        raise ValueError(f"unknown {what} {key!r}; allowed: {allowed}")
+    return mapping[key]
+
+
+def series_stiffness(*ks):
+    r"""Springs in series.
+
+    .. math:: 1/k_e = \sum_i 1/k_i                                    (seed eq. 1, 2)
+
+    ks : stiffnesses k_i [N/m] (or any one consistent unit), at least one.
+    Returns k_e [same unit].  Valid for k_i > 0.
+    """
+    if not ks:
+        raise ValueError("series_stiffness needs at least one stiffness")
+    compliance = 0.0
+    for k in ks:
+        compliance = compliance + 1.0 / k
+    return 1.0 / compliance
+
+
+def parallel_stiffness(*ks):
+    r"""Springs in parallel, e.g. the two bearings of a pair.
+
+    .. math:: k_{Be} = \sum_i k_i                                     (seed eq. 2, k_Be = k_B1 + k_B2)
+
+    ks : stiffnesses k_i [N/m], at least one.  Returns [N/m].
+    """
+    if not ks:
+        raise ValueError("parallel_stiffness needs at least one stiffness")
+    total = 0.0
+    for k in ks:
+        total = total + k
+    return total
+
+
+def screw_stiffness(root_diameter, x, span, mounting, youngs_modulus=E_STEEL):
+    r"""Axial stiffness of the screw shaft seen by the nut at position x.
+
+    .. math:: k_s = E A / x                     (one fixed end; seed eq. 3, 5, 10)
+    .. math:: k_s = E A\, L / (x (L - x))       (fixed-fixed)
+
+    (fixed-fixed: both segments in parallel, minimum 4EA/L at x = L/2)
+
+    with A = pi d_r^2 / 4.
+
+    root_diameter  : d_r, thread root (minor) diameter [m]
+    x              : distance fixed bearing -> nut [m], 0 < x (< span for fixed-fixed)
+    span           : L, distance between the bearings [m] (used by fixed-fixed only)
+    mounting       : one of MOUNTINGS (plain string)
+    youngs_modulus : E [Pa]
+    Returns k_s [N/m].  Source: seed eq. 3-5, 10; THK "axial rigidity of the feed screw system".
+    Valid for a slender elastic bar (bearing and nut compliance excluded).
+    """
+    choose(CATALOG_STIFFNESS_FACTOR, mounting, "mounting")
+    ea = youngs_modulus * mx.pi * root_diameter**2 / 4.0
+    if mounting == "fixed-fixed":
+        return ea * span / (x * (span - x))
+    return ea / x
+
+
+def screw_stiffness_catalog(root_diameter, length, mounting, youngs_modulus=E_STEEL):
+    r"""Catalog form of the screw shaft stiffness, seed eq. 7-8.
+
+    .. math:: k_s = c\, E \pi d_r^2 / (4 L_1),  c = 4 (fixed-fixed, nut at mid-span), 1 (fixed-free)
+
+    With E = 2.06e5 N/mm^2, d_r in mm, L_1 in cm and k_s in N/um this is 64.7 d_r^2/L_1 (eq. 7) and 16.2
+    d_r^2/L_1 (eq. 8 prints 16.8, likely a typo: vendor-formulas.md sec. 2.5).
+
+    root_diameter : d_r [m];  length : L_1, bearing span [m];  mounting : one of MOUNTINGS
+    youngs_modulus: E [Pa].  Returns k_s [N/m].  Worst-case (minimum) value over the stroke.
+    """
+    c = choose(CATALOG_STIFFNESS_FACTOR, mounting, "mounting")
+    return c * youngs_modulus * mx.pi * root_diameter**2 / (4.0 * length)
+
+
+def screw_torsional_stiffness(root_diameter, length, shear_modulus=G_STEEL):
+    r"""Torsional stiffness of a solid shaft.
+
+    .. math:: k_\theta = G \pi d_r^4 / (32 l)
+
+    root_diameter : d_r [m];  length : l, motor coupling -> nut [m];  shear_modulus : G [Pa]
+    Returns k_theta [N*m/rad].  Source: elementary torsion (Saint-Venant, round bar).
+    """
+    return shear_modulus * mx.pi * root_diameter**4 / (32.0 * length)
+
+
+def screw_rotary_inertia(diameter, length, density=RHO_STEEL):
+    r"""Rotary inertia of a solid screw shaft about its axis.
+
+    .. math:: J = \pi \rho d^4 L / 32                 (THK selection page /0014, "J_screw")
+
+    diameter : d [m] (nominal for a conservative value);  length : L [m];  density : rho [kg/m^3]
+    Returns J [kg*m^2].
+    """
+    return mx.pi * density * diameter**4 * length / 32.0
+
+
+def screw_mass(diameter, length, density=RHO_STEEL):
+    r"""Mass of a solid shaft, m = rho pi d^2 L / 4.
+
+    diameter : d [m];  length : L [m];  density : rho [kg/m^3].  Returns [kg].
+    """
+    return density * mx.pi * diameter**2 * length / 4.0
+
+
+def lead_angle(lead, nominal_diameter):
+    r"""Lead (helix) angle, tan(beta) = P_h / (pi d).
+
+    lead : P_h [m];  nominal_diameter : d, ball centre diameter [m].  Returns beta [rad].
+    """
+    return mx.atan(lead / (mx.pi * nominal_diameter))

@@ -1,0 +1,130 @@
+"""Tables, JSON and plots in vendor units (N/um, Hz, mm, N*m).  Nothing here prints."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .model import CHECK_LABELS, CHECKS, Evaluation
+
+N_PER_UM = 1e6
+
+
+def _fmt(v, nd=1):
+    if v is None or (isinstance(v, float) and not math.isfinite(v)):
+        return "-"
+    return f"{v:,.{nd}f}"
+
+
+def evaluation_dict(ev: Evaluation) -> dict:
+    """JSON-ready summary of an evaluation (vendor units in key names)."""
+    v = ev.values
+    axis = ev.design.axis
+    kmin, kpos = ev.minimum("k_total")
+    fmin, fpos = ev.minimum("f1")
+    s = (ev.x - axis.start_offset)
+    return {
+        "design": ev.design.name,
+        "parts": ev.design.part_ids(),
+        "mounting": axis.mounting,
+        "nut_preload_N": ev.design.preload,
+        "min_axial_stiffness_N_per_um": kmin / N_PER_UM,
+        "min_axial_stiffness_position_mm": kpos * 1e3,
+        "min_natural_frequency_Hz": fmin,
+        "min_natural_frequency_position_mm": fpos * 1e3,
+        "weakest_link": ev.weakest,
+        "nut_stiffness_N_per_um": v["k_nut"] / N_PER_UM,
+        "bearing_stiffness_N_per_um": v["k_bearing"] / N_PER_UM,
+        "table_mode_Hz": v["f_table"],
+        "moving_mass_kg": v["moving_mass"],
+        "total_mass_kg": v["total_mass"],
+        "cost": v["cost"],
+        "cost_currency": "EUR",
+        "drag_torque_Nm": v["drag_torque"],
+        "drag_torque_parts_Nm": {"nut": v["drag_nut"], "bearings": v["drag_bearings"],
+                                 "guides": v["drag_guides"]},
+        "checks": {c: {"margin": _finite(v[f"margin_{c}"]), "pass": bool(v[f"margin_{c}"] >= 1.0)}
+                   for c in CHECKS},
+        "all_checks_pass": bool(all(v[f"margin_{c}"] >= 1.0 for c in CHECKS)),
+        "positions_mm": (s * 1e3).tolist(),
+        "axial_stiffness_N_per_um": (np.asarray(v["k_total"]) / N_PER_UM).tolist(),
+        "screw_stiffness_N_per_um": (np.asarray(v["k_screw"]) / N_PER_UM).tolist(),
+        "natural_frequency_Hz": np.asarray(v["f1"]).tolist(),
+        "axial_frequency_Hz": np.asarray(v["f_axial"]).tolist(),
+        "assumed_defaults": list(ev.design.assumed),
+    }
+
+
+def _finite(x):
+    return float(x) if math.isfinite(x) and abs(x) < 1e8 else None
+
+
+def evaluation_table(ev: Evaluation) -> str:
+    """The text table ``axisopt evaluate`` prints."""
+    d = ev.design
+    v = ev.values
+    a = d.axis
+    lines = []
+    ids = d.part_ids()
+    lines.append(f"design {d.name}: {a.mounting}, stroke {a.stroke * 1e3:.0f} mm, "
+                 f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks), span {a.span * 1e3:.0f} mm")
+    lines.append(f"  screw {ids['screw']}  nut {ids['nut']} (preload {d.preload:.0f} N)  "
+                 f"bearings {ids['bearing']}  guides {ids['guide']} x{a.guide_blocks}")
+    if d.assumed:
+        lines.append(f"  defaults used for: {', '.join(d.assumed)}")
+    lines.append("")
+    kmin, kpos = ev.minimum("k_total")
+    i_min = int(np.argmin(v["k_total"]))
+    comps = [("screw (at min)", v["k_screw"][i_min]), ("nut", v["k_nut"]), ("bearings", v["k_bearing"])]
+    weakest = min(comps, key=lambda c: c[1])[0]
+    lines.append("component stiffness [N/um]")
+    for name, k in comps:
+        mark = "  <- weakest link" if name == weakest else ""
+        lines.append(f"  {name:<16}{k / N_PER_UM:>10.1f}{mark}")
+    lines.append(f"  {'table on guides':<16}{'':>10}  (table mode {v['f_table']:.0f} Hz)")
+    lines.append("")
+    lines.append(f"{'over the stroke':<22}{'start':>10}{'middle':>10}{'end':>10}{'minimum':>10}{'at [mm]':>9}")
+    s = ev.x - a.start_offset
+    idx = [0, int(np.argmin(np.abs(s - a.stroke / 2))), len(s) - 1]
+    for key, label, scale in (("k_total", "axial stiffness N/um", N_PER_UM), ("f1", "1st frequency Hz", 1.0)):
+        arr = np.asarray(v[key])
+        m, pos = ev.minimum(key)
+        lines.append(f"  {label:<20}" + "".join(f"{arr[i] / scale:>10.1f}" for i in idx)
+                     + f"{m / scale:>10.1f}{pos * 1e3:>9.0f}")
+    lines.append("")
+    lines.append(f"drag torque {v['drag_torque']:.3f} N.m  (nut {v['drag_nut']:.3f}, bearings "
+                 f"{v['drag_bearings']:.3f}, guides {v['drag_guides']:.3f}) at {a.max_speed * 60:.0f} m/min")
+    lines.append(f"moving mass {v['moving_mass']:.1f} kg   total mass {v['total_mass']:.1f} kg   "
+                 f"cost {v['cost']:,.0f} EUR (illustrative prices)")
+    lines.append("")
+    lines.append("checks (margin >= 1 passes)")
+    for c in CHECKS:
+        m = v[f"margin_{c}"]
+        shown = "n/a" if m >= 1e8 else f"{m:.2f}"
+        lines.append(f"  {CHECK_LABELS[c]:<44}{shown:>8}  {'pass' if m >= 1.0 else 'FAIL'}")
+    return "\n".join(lines)
+
+
+def plot_profiles(evaluations, path: str, labels=None) -> None:
+    """Stiffness and first natural frequency over the stroke, one line per evaluation."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    for i, ev in enumerate(evaluations):
+        s = (ev.x - ev.design.axis.start_offset) * 1e3
+        lab = labels[i] if labels else ev.design.name
+        ax1.plot(s, np.asarray(ev["k_total"]) / N_PER_UM, label=lab)
+        ax2.plot(s, ev["f1"], label=lab)
+    ax1.set_ylabel("axial stiffness [N/um]")
+    ax2.set_ylabel("1st natural frequency [Hz]")
+    ax2.set_xlabel("nut position along the stroke [mm]")
+    for ax in (ax1, ax2):
+        ax.grid(True, alpha=0.3)
+    ax1.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)

@@ -1,0 +1,161 @@
+"""Parse quantities with units at the edges ("800 mm", "25 N/um", "3000 rpm") into SI floats.
+
+This is the one place where units are converted.  Inside the code everything is SI:
+m, kg, s, N, N/m, N*m, rad/s, Pa, K.  Money is kept in the catalog's currency (EUR here), a
+dimension of its own so that "EUR/m" and "EUR" are checked like any other unit.
+
+Parsing uses pint; vendor spellings such as ``N.m`` or ``mm.rpm`` (a dot for a product) and
+``um`` for micrometre are accepted.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+
+import pint
+
+from .errors import InputError
+
+_UREG = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+_UREG.define("EUR = [currency]")
+_UREG.define("USD = 0.92 EUR")  # illustrative fixed rate; catalogs here are in EUR
+_UREG.define("percent_ = 0.01 = pct")
+
+# Expected dimension of each quantity kind, as a pint dimensionality string, and its SI unit.
+KINDS: dict[str, tuple[str, str]] = {
+    "length": ("[length]", "m"),
+    "mass": ("[mass]", "kg"),
+    "time": ("[time]", "s"),
+    "force": ("[force]", "N"),
+    "stiffness": ("[force]/[length]", "N/m"),
+    "torque": ("[force]*[length]", "N*m"),
+    "speed": ("[length]/[time]", "m/s"),
+    "acceleration": ("[length]/[time]**2", "m/s**2"),
+    "angular_speed": ("1/[time]", "rad/s"),
+    "angle": ("", "rad"),
+    "dimensionless": ("", ""),
+    "mass_per_length": ("[mass]/[length]", "kg/m"),
+    "damping": ("[force]*[time]/[length]", "N*s/m"),
+    "pressure": ("[pressure]", "Pa"),
+    "temperature": ("[temperature]", "K"),
+    "kinematic_viscosity": ("[length]**2/[time]", "m**2/s"),
+    "inertia": ("[mass]*[length]**2", "kg*m**2"),
+    "money": ("[currency]", "EUR"),
+    "money_per_length": ("[currency]/[length]", "EUR/m"),
+    "dn": ("[length]/[time]", "m*rad/s"),
+    "frequency": ("1/[time]", "Hz"),
+    "compliance": ("[length]/[force]", "m/N"),
+    "thermal_expansion": ("1/[temperature]", "1/K"),
+}
+
+_DOT_PRODUCT = re.compile(r"(?<=[A-Za-z])\.(?=[A-Za-z])")
+
+
+_ALLOWED = re.compile(r"^[A-Za-z0-9_/*.^()%·µμ-]+$")
+
+
+def _normalise(unit: str) -> str:
+    if unit.strip() and not _ALLOWED.match(unit.strip()):
+        raise ValueError(f"unknown unit '{unit}'")
+    unit = unit.strip().replace("µ", "u").replace("μ", "u").replace("·", "*")
+    unit = _DOT_PRODUCT.sub("*", unit)
+    unit = unit.replace("^", "**")
+    if unit in ("-", ""):
+        return "dimensionless"
+    return unit
+
+
+@functools.lru_cache(maxsize=512)
+def unit_factor(unit: str, kind: str) -> float:
+    """Factor that turns a value in ``unit`` into SI for ``kind``.  Raises ValueError if unknown.
+
+    Offset units (degC) are not allowed here; use :func:`to_si` for temperatures.
+    """
+    dim, si = KINDS[kind]
+    text = _normalise(unit)
+    try:
+        u = _UREG.Unit(text)
+    except Exception as exc:  # pint raises several types for unparseable input
+        raise ValueError(f"unknown unit '{unit}'") from exc
+    q = _UREG.Quantity(1.0, u)
+    if dim == "":
+        if not q.dimensionless:
+            raise ValueError(f"unit '{unit}' is not dimensionless (wanted {kind})")
+    elif q.dimensionality != _UREG.get_dimensionality(dim):
+        raise ValueError(f"unit '{unit}' is not a unit of {kind}")
+    if kind == "temperature":
+        return 1.0
+    target = _UREG.Unit(si) if si else _UREG.dimensionless
+    return float(q.to(target).magnitude)
+
+
+def to_si(value: float, unit: str, kind: str) -> float:
+    """Convert ``value`` given in ``unit`` to SI; temperatures to kelvin (offsets handled)."""
+    if kind == "temperature":
+        unit_factor(unit, kind)  # validates
+        return float(_UREG.Quantity(value, _UREG.Unit(_normalise(unit))).to("kelvin").magnitude)
+    return value * unit_factor(unit, kind)
+
+
+_QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+def parse_quantity(text, kind: str, *, source: str | None = None, key: str | None = None) -> float:
+    """Parse ``"800 mm"`` into SI for ``kind``.  A bare number is an error unless kind is dimensionless.
+
+    Errors are :class:`InputError` naming ``source`` (file) and ``key``.
+    """
+    if isinstance(text, bool):
+        raise InputError(f"expected a {kind} with a unit, got {text!r}", source=source, where=key)
+    if isinstance(text, (int, float)):
+        if kind in ("dimensionless", "angle") and kind == "dimensionless":
+            return float(text)
+        raise InputError(
+            f"'{text}' has no unit; write it with one, e.g. '{text} {_example_unit(kind)}'",
+            source=source,
+            where=key,
+        )
+    if not isinstance(text, str):
+        raise InputError(f"expected a {kind} such as '1 {_example_unit(kind)}', got {text!r}",
+                         source=source, where=key)
+    m = _QTY.match(text)
+    if not m:
+        raise InputError(f"cannot read '{text}' as a number with a unit", source=source, where=key)
+    number, unit = float(m.group(1)), m.group(2)
+    if unit == "" and kind != "dimensionless":
+        raise InputError(
+            f"'{text}' has no unit; write it with one, e.g. '{text} {_example_unit(kind)}'",
+            source=source,
+            where=key,
+        )
+    try:
+        return to_si(number, unit, kind)
+    except ValueError as exc:
+        raise InputError(f"{exc} in '{text}'", source=source, where=key) from None
+
+
+_EXAMPLES = {
+    "length": "mm", "mass": "kg", "time": "s", "force": "N", "stiffness": "N/um", "torque": "N.m",
+    "speed": "m/min", "acceleration": "m/s^2", "angular_speed": "rpm", "angle": "deg",
+    "mass_per_length": "kg/m", "damping": "N.s/m", "temperature": "degC", "money": "EUR",
+    "inertia": "kg.m^2", "frequency": "Hz", "dn": "mm.rpm", "money_per_length": "EUR/m",
+}
+
+
+def _example_unit(kind: str) -> str:
+    return _EXAMPLES.get(kind, KINDS.get(kind, ("", "SI"))[1])
+
+
+def split_header(header: str) -> tuple[str, str | None]:
+    """``'lead [mm]'`` -> ``('lead', 'mm')``; ``'id'`` -> ``('id', None)``."""
+    m = re.match(r"^\s*([^\[\]]+?)\s*(?:\[([^\]]*)\])?\s*$", header)
+    if not m:
+        return header.strip(), None
+    return m.group(1), m.group(2)
+
+
+# Display helpers (SI -> vendor units), used by report and CLI only.
+N_PER_UM = 1e6
+MM = 1e-3
+RPM = 2.0 * 3.141592653589793 / 60.0
