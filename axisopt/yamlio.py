@@ -113,6 +113,9 @@ class Section:
         self.used.add(key)
         if key not in self.node.value:
             if required:
+                typo = difflib.get_close_matches(key, [k for k in self.node.value if k not in self.used], n=1)
+                if typo:
+                    raise self.error(typo[0], f"unknown key '{self.key_path(typo[0])}'; did you mean '{key}'?")
                 raise InputError(f"missing required key '{self.key_path(key)}'", source=self.source,
                                  where=self._loc(self.path, self.node.line) if self.path else None)
             return default
