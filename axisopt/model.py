@@ -25,12 +25,16 @@ from . import mathx as mx
 from .design import Design, G
 from .physics import bearings as pb
 from .physics import checks as pc
+from .physics import damping as pdm
+from .physics import dynamics as pdy
 from .physics import guides as pg
 from .physics import nut as pn
 from .physics import screw as ps
 
 # Efficiency of the ball screw used to refer guide friction to the motor (vendor typical 0.9).
 SCREW_EFFICIENCY = 0.9
+# Material damping ratio of steel structures, seed Table 5 (0.001-0.002).
+STEEL_DAMPING = 0.002
 
 PARAM_NAMES = (
     # axis
@@ -189,6 +193,13 @@ def axis_response(p: dict, x, mounting: str, preload) -> dict:
     f_axial = mx.sqrt(k_tot / m_eff) / (2.0 * math.pi)
     f_table = mx.sqrt(blocks * p["guide_normal_stiffness"] / moving) / (2.0 * math.pi)
     f1 = mx.fmin(f_axial, f_table)
+    # axial-torsional 2-DOF (rotor + screw inertia on the screw's torsional stiffness up to the nut,
+    # motor held by the servo), and the modal damping ratio of the axial mode from the guide blocks
+    # (seed Table 7) and steel structure (Table 5, 0.002)
+    j_rot = p["motor_inertia"] + ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), span)
+    k_tor = ps.screw_torsional_stiffness(p["root_diameter"], x)
+    f_coupled, _ = pdy.axial_torsional_frequencies(j_rot, k_tor, k_tot, m_eff, p["lead"])
+    zeta = pdm.modal_damping_ratio(m_eff, k_tot, blocks * p["guide_damping"], structural_ratio=STEEL_DAMPING)
 
     # --- drag torque at the motor at max speed (N*m)
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
@@ -238,6 +249,7 @@ def axis_response(p: dict, x, mounting: str, preload) -> dict:
     out = {
         "k_screw": k_s, "k_nut": k_n, "k_bearing": k_b, "k_total": k_tot,
         "f_axial": f_axial, "f_table": f_table, "f1": f1, "m_eff": m_eff,
+        "f_axial_torsional": f_coupled, "damping_ratio": zeta,
         "drag_torque": drag, "drag_nut": t_nut, "drag_bearings": t_brg, "drag_guides": t_guides,
         "moving_mass": moving, "total_mass": total_mass, "screw_mass": screw_mass, "cost": cost,
         "max_axial_force": f_max, "life": life, "screw_speed": omega,
@@ -249,7 +261,7 @@ def axis_response(p: dict, x, mounting: str, preload) -> dict:
 SCALAR_OUTPUTS = ("k_nut", "k_bearing", "f_table", "drag_torque", "drag_nut", "drag_bearings",
                   "drag_guides", "moving_mass", "total_mass", "screw_mass", "cost", "max_axial_force",
                   "life", "screw_speed") + tuple(f"margin_{c}" for c in CHECKS)
-PROFILE_OUTPUTS = ("k_screw", "k_total", "f_axial", "f1", "m_eff")
+PROFILE_OUTPUTS = ("k_screw", "k_total", "f_axial", "f1", "m_eff", "f_axial_torsional", "damping_ratio")
 
 
 @dataclass

@@ -52,6 +52,8 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "screw_stiffness_N_per_um": (np.asarray(v["k_screw"]) / N_PER_UM).tolist(),
         "natural_frequency_Hz": np.asarray(v["f1"]).tolist(),
         "axial_frequency_Hz": np.asarray(v["f_axial"]).tolist(),
+        "axial_torsional_frequency_Hz": np.asarray(v["f_axial_torsional"]).tolist(),
+        "damping_ratio": np.asarray(v["damping_ratio"]).tolist(),
         "assumed_defaults": list(ev.design.assumed),
     }
 
@@ -87,7 +89,9 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.append(f"{'over the stroke':<22}{'start':>10}{'middle':>10}{'end':>10}{'minimum':>10}{'at [mm]':>9}")
     s = ev.x - a.start_offset
     idx = [0, int(np.argmin(np.abs(s - a.stroke / 2))), len(s) - 1]
-    for key, label, scale in (("k_total", "axial stiffness N/um", N_PER_UM), ("f1", "1st frequency Hz", 1.0)):
+    rows = (("k_total", "axial stiffness N/um", N_PER_UM), ("f1", "1st frequency Hz", 1.0),
+            ("f_axial_torsional", "axial-torsional Hz", 1.0), ("damping_ratio", "damping ratio %", 0.01))
+    for key, label, scale in rows:
         arr = np.asarray(v[key])
         m, pos = ev.minimum(key)
         lines.append(f"  {label:<20}" + "".join(f"{arr[i] / scale:>10.1f}" for i in idx)
