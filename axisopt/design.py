@@ -196,3 +196,66 @@ def quantity(text: str, kind: str) -> float:
 
 
 __all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_parts", "G"]
+
+
+# Units used when a design is written back to YAML (vendor units, as users write them).
+_OUT_UNITS = {
+    "length": "mm", "mass": "kg", "time": "h", "force": "N", "stiffness": "N/um", "speed": "m/min",
+    "acceleration": "m/s^2", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
+    "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
+    "angular_speed": "rpm", "damping": "N.s/m",
+}
+
+
+def _q(value: float, kind: str) -> str:
+    from .units import unit_factor
+
+    unit = _OUT_UNITS[kind]
+    return f"{value / unit_factor(unit, kind):.12g} {unit}"
+
+
+def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
+    """A design as the plain mapping a design YAML holds (vendor units).  ``load_design`` reads it back.
+
+    Catalog parts are written as their ids unless ``inline_parts`` (or the part came from the YAML).
+    """
+    a = design.axis
+    axis: dict = {}
+    for f in fields(Axis):
+        if f.name in design.assumed:
+            continue
+        v = getattr(a, f.name)
+        if f.name in _AXIS_KINDS:
+            if v is not None:
+                axis[f.name] = _q(v, _AXIS_KINDS[f.name])
+        elif f.name == "load_factor":
+            axis[f.name] = float(v)
+        else:
+            axis[f.name] = v
+    parts: dict = {}
+    for slot, table in (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides")):
+        row = getattr(design, slot)
+        if not inline_parts and "catalogs/" in str(row.get("_source", "catalogs/")):
+            parts[slot] = str(row["id"])
+            continue
+        part = {}
+        for col, kind in SCHEMA[table].items():
+            v = row[col]
+            if kind == "str":
+                part[col] = str(v)
+            elif kind == "int":
+                part[col] = int(v)
+            elif kind == "dimensionless":
+                part[col] = float(v)
+            else:
+                part[col] = _q(float(v), kind)
+        parts[slot] = part
+    if design.nut_preload is not None:
+        parts["nut_preload"] = _q(design.nut_preload, "force")
+    return {"name": design.name, "axis": axis, "parts": parts}
+
+
+def design_to_yaml(design: Design, **kw) -> str:
+    import yaml
+
+    return yaml.safe_dump(design_to_dict(design, **kw), sort_keys=False, allow_unicode=True)
