@@ -1,0 +1,59 @@
+"""``axisopt diagnose DATA.csv [...] --design DESIGN.yaml [--report DIR] [--json FILE|-]
+[--save-calibration FILE.yaml] [--effects a,b,...] [--max-effects N]``"""
+
+from __future__ import annotations
+
+from .cliutil import EXIT_OK, write_json
+from .errors import InputError
+
+
+def cmd_diagnose(args) -> int:
+    from .design import load_design
+    from .identify import diagnose, plant_from_design, read_dataset
+    from .identify.calibration import save_calibration
+    from .identify.effects import library
+    from .identify.report import diagnosis_dict, diagnosis_text, write_report
+
+    design = load_design(args.design)
+    datasets = [read_dataset(p) for p in args.data]
+    names = None
+    if args.effects:
+        names = [n.strip() for n in args.effects.split(",") if n.strip()]
+        unknown = [n for n in names if n not in library()]
+        if unknown:
+            raise InputError(f"--effects: unknown effect '{unknown[0]}'; known: {', '.join(library())}")
+    if args.max_effects < 0:
+        raise InputError("--max-effects must not be negative")
+    diag = diagnose(datasets, plant_from_design(design), candidates=names, max_effects=args.max_effects)
+    quiet = args.json == "-"
+    if not quiet:
+        print(diagnosis_text(diag))
+    if args.report:
+        path = write_report(diag, args.report)
+        if not quiet:
+            print(f"report written to {path}")
+    if args.save_calibration:
+        cal = save_calibration(diag, args.save_calibration, design, args.data)
+        if not quiet:
+            print(f"calibration written to {args.save_calibration}")
+            for a in cal.get("applied", []):
+                print(f"  applied by evaluate: {a}")
+            for a in cal.get("not_applied", []):
+                print(f"  not applied: {a}")
+    if args.json:
+        write_json(diagnosis_dict(diag), args.json)
+    return EXIT_OK
+
+
+def register(sub) -> None:
+    d = sub.add_parser("diagnose", help="fit measured data, name what the model gets wrong, measure the gain")
+    d.add_argument("data", nargs="+", help="measured test CSV file(s) (units in headers)")
+    d.add_argument("--design", required=True, help="design YAML of the measured axis")
+    d.add_argument("--report", metavar="DIR", help="write report.md with residual plots to DIR")
+    d.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
+    d.add_argument("--save-calibration", metavar="FILE.yaml", help="save the calibrated model for evaluate")
+    d.add_argument(
+        "--effects", metavar="A,B", help="only consider these effects (default: the whole library)"
+    )
+    d.add_argument("--max-effects", type=int, default=2, metavar="N", help="accept at most N effects (2)")
+    d.set_defaults(func=cmd_diagnose)

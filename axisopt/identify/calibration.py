@@ -1,0 +1,200 @@
+"""Close the loop: save a diagnosis as a calibration YAML; apply it to a design for ``axisopt evaluate``.
+
+File layout (values carry units; ``kind`` names the quantity so the value parses strictly)::
+
+    axisopt_calibration: 1
+    design: table-x
+    verdict: support_condition
+    baseline:
+      screw_modulus: {value: 201.3 GPa, sigma: 0.8 GPa, kind: pressure}
+    effects:
+      - name: support_condition
+        parameters:
+          far_end_stiffness: {value: 296 N/um, sigma: 9 N/um, kind: stiffness}
+    applied: [...]          # informational, recomputed on apply
+    not_applied: [...]
+
+What ``evaluate`` cannot represent (Stribeck, backlash, thermal drift, damping ...) is listed as not applied.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from pathlib import Path
+
+import yaml
+
+from ..errors import InputError
+from ..physics.screw import E_STEEL
+from ..yamlio import Section, read_yaml
+from .effects import library
+
+FORMAT = 1
+
+
+def _entry(p, value, sigma) -> dict:
+    d = {
+        "value": f"{p.show(value):.6g} {p.unit}".strip()
+        if p.unit not in ("", "-")
+        else float(f"{value:.6g}"),
+        "kind": p.kind,
+    }
+    if math.isfinite(sigma):
+        d["sigma"] = (
+            f"{p.show(sigma):.3g} {p.unit}".strip() if p.unit not in ("", "-") else float(f"{sigma:.3g}")
+        )
+    return d
+
+
+def calibration_dict(diag, design=None, sources=()) -> dict:
+    """The calibration of a :class:`~.diagnose.Diagnosis` as a plain dict (YAML-ready)."""
+    res = diag.final
+    sig = dict(zip([p.name for p in res.params], res.sigma))
+    owner = diag.param_owner
+    base = {p.name: _entry(p, res.value(p.name), sig[p.name]) for p in res.params if p.name not in owner}
+    effects = [
+        {
+            "name": e.name,
+            "parameters": {
+                p.name: _entry(p, res.value(p.name), sig[p.name])
+                for p in res.params
+                if owner.get(p.name) == e.name
+            },
+        }
+        for e in diag.effects
+    ]
+    out = {
+        "axisopt_calibration": FORMAT,
+        "design": diag.plant.name,
+        "data": [str(s) for s in sources],
+        "verdict": diag.verdict,
+        "baseline": base,
+        "effects": effects,
+    }
+    if design is not None:
+        _, applied, skipped = calibrate_design(design, out)
+        out["applied"], out["not_applied"] = applied, skipped
+    return out
+
+
+def save_calibration(diag, path, design=None, sources=()) -> dict:
+    d = calibration_dict(diag, design, sources)
+    try:
+        Path(path).write_text(yaml.safe_dump(d, sort_keys=False, allow_unicode=True), encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot write calibration ({exc.strerror})", source=str(path)) from None
+    return d
+
+
+def _read(path) -> dict:
+    from ..units import parse_quantity
+
+    root = Section(read_yaml(path), str(path))
+    ver = root.number("axisopt_calibration", required=True, integer=True)
+    if ver != FORMAT:
+        raise root.error("axisopt_calibration", f"unsupported calibration format {ver} (expected {FORMAT})")
+    root.string("design")
+    root.string("verdict")
+    root.raw("data")
+    root.raw("applied")
+    root.raw("not_applied")
+
+    def values(sec):
+        out = {}
+        for key in sec.keys():
+            s = sec.section(key)
+            kind = s.string("kind", required=True)
+            raw = s.value("value", required=True)
+            out[key] = parse_quantity(raw, kind, source=str(path), key=s.where("value"))
+            s.raw("sigma")
+            s.done()
+        return out
+
+    base = values(root.section("baseline") or Section(_empty(), str(path)))
+    effects = []
+    node = root.raw("effects")
+    lib = library()
+    for item in node.value if node is not None and node.value else []:
+        s = Section(item, str(path), "effects")
+        name = s.string("name", required=True)
+        if name not in lib:
+            raise s.error("name", f"unknown effect '{name}'")
+        ps = s.section("parameters")
+        effects.append((name, values(ps) if ps is not None else {}))
+        s.done()
+    root.done()
+    return {"baseline": base, "effects": effects}
+
+
+def _empty():
+    from ..yamlio import Node
+
+    return Node({}, 0)
+
+
+def calibrate_design(design, cal) -> tuple:
+    """Apply a calibration (dict as written, or as read by ``_read``) to a Design.
+
+    Returns (design, applied descriptions, not-applied descriptions)."""
+    if "baseline" in cal and cal["baseline"] and isinstance(next(iter(cal["baseline"].values())), dict):
+        cal = _parse_dict(cal)
+    applied, skipped = [], []
+    base = cal["baseline"]
+    if "screw_modulus" in base:
+        e = base["screw_modulus"]
+        d0 = float(design.screw["root_diameter"])
+        d1 = d0 * math.sqrt(e / E_STEEL)
+        screw = design.screw.copy()
+        screw["root_diameter"] = d1
+        design = replace(design, screw=screw)
+        applied.append(
+            f"screw modulus {e / 1e9:.1f} GPa applied as equivalent root diameter "
+            f"{d0 * 1e3:.2f} -> {d1 * 1e3:.2f} mm (critical speed and buckling follow it)"
+        )
+    if "coulomb_friction" in base:
+        from .plant import plant_from_design
+
+        blocks = design.axis.guide_blocks
+        plant = plant_from_design(design)
+        f0 = float(design.guide["friction_force"])
+        want = f0 + (base["coulomb_friction"] - plant.coulomb) / blocks
+        f1 = max(want, 0.0)
+        guide = design.guide.copy()
+        guide["friction_force"] = f1
+        design = replace(design, guide=guide)
+        applied.append(
+            f"guide friction force {f0:.1f} -> {f1:.1f} N per block (Coulomb "
+            f"{base['coulomb_friction']:.1f} N at the table"
+            + (", clamped at 0: the model's nut drag alone exceeds it)" if want < 0 else ")")
+        )
+    if "damping_ratio" in base:
+        skipped.append(f"damping_ratio {base['damping_ratio']:.3f}: evaluate has no damping output")
+    lib = library()
+    for name, vals in cal["effects"]:
+        out = lib[name].calibrate(vals, design)
+        if out is None:
+            skipped.append(f"{name}: not representable in evaluate ({lib[name].title})")
+        else:
+            design, how = out
+            applied.append(f"{name}: {how}")
+    return design, applied, skipped
+
+
+def _parse_dict(cal):
+    from ..units import parse_quantity
+
+    def vals(d):
+        return {k: parse_quantity(v["value"], v["kind"]) for k, v in d.items()}
+
+    return {
+        "baseline": vals(cal["baseline"]),
+        "effects": [(e["name"], vals(e["parameters"])) for e in cal["effects"]],
+    }
+
+
+def apply_calibration(design, path):
+    """Read a calibration YAML saved by ``axisopt diagnose`` and return the calibrated Design."""
+    cal = _read(path)
+    new, _, _ = calibrate_design(design, cal)
+    return replace(new, name=f"{design.name} (calibrated)")

@@ -1,0 +1,343 @@
+"""Diagnosis: fit the design's model to measured data, find where it misfits, name the cause.
+
+1. Baseline: the design's own model with the calibration parameters a test engineer fits
+   (``measure.baseline_params``), weighted by measurement noise (estimated from the data).
+2. Residuals against every recorded factor; a table of where misfit concentrates.
+3. Forward selection over the effect library: each applicable candidate is fitted jointly with the
+   current parameters and scored by BIC; the best is accepted if ``dBIC < -10`` and the grouped
+   cross-validation RMSE (leave one position / load level / cycle block out) improves.
+4. Gain on held-out data, parameters +- 1 sigma with plausibility flags, runner-up and margin.
+
+Ref.: /work/shared/reference/model-discrepancy.md sec. 2 (method, acceptance rule, gain table).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .effects import library
+from .fit import Block, FitResult, Problem, fit, row_function
+from .measure import FEATURES, Y_UNIT, Obs, baseline_params, baseline_terms, observations, output
+
+ACCEPT_DBIC = -10.0  # Kass-Raftery "very strong"
+MIN_CV_GAIN = 0.05  # held-out RMSE must fall by at least 5 %
+MAX_FOLDS = 8
+
+
+@dataclass
+class Context:
+    plant: object
+    obs: list
+    resid: list = field(default_factory=list)  # per obs: prediction - y (SI) of the current model
+    params: dict = field(default_factory=dict)  # effect name -> its Param list
+
+
+@dataclass
+class Candidate:
+    effect: object
+    fit: FitResult
+    dbic: float
+    cv_rmse: float | None = None
+    cv_gain: float | None = None
+    problem: Problem | None = None
+    holdout: np.ndarray | None = None
+    names: tuple = ()  # the effect's own parameter names
+
+
+@dataclass
+class Accepted:
+    effect: object
+    fit: FitResult
+    dbic: float
+    cv_before: float
+    cv_after: float
+    runner_up: Candidate | None
+    plausibility: list
+
+    @property
+    def gain(self) -> float:
+        return 100.0 * (1.0 - self.cv_after / self.cv_before)
+
+
+@dataclass
+class Diagnosis:
+    plant: object
+    obs: list
+    baseline: FitResult
+    final: FitResult
+    effects: list  # accepted Effect objects in order
+    accepted: list  # Accepted records
+    rounds: list  # list of lists of Candidate (all candidates of each selection round)
+    cv_baseline: float
+    cv_final: float
+    noise: list  # per obs: estimated sigma in measurement units
+    holdout_baseline: np.ndarray
+    holdout_final: np.ndarray
+    param_owner: dict = field(default_factory=dict)  # effect parameter name -> effect name
+
+    @property
+    def y(self) -> np.ndarray:
+        return np.concatenate([o.y for o in self.obs])
+
+    @property
+    def verdict(self) -> str:
+        return ", ".join(e.name for e in self.effects) if self.effects else "none"
+
+    @property
+    def gain(self) -> float:
+        return 100.0 * (1.0 - self.cv_final / self.cv_baseline) if self.cv_baseline > 0 else 0.0
+
+
+def build_problem(ctx, effects, base) -> Problem:
+    obs, plant = ctx.obs, ctx.plant
+    params = list(base) + [p for e in effects for p in ctx.params[e.name]]
+    names = [p.name for p in params]
+    blocks = []
+    for o in obs:
+        feats = FEATURES[o.kind]
+
+        def predict(th, z, kind=o.kind, feats=feats):
+            P = {n: th[i] for i, n in enumerate(names)}
+            Z = {f: z[i] for i, f in enumerate(feats)}
+            q = baseline_terms(plant, P)
+            for e in effects:
+                if kind in e.kinds:
+                    e.apply(kind, q, P, Z, plant)
+            return output(kind, q, Z, plant)
+
+        blocks.append(Block(row_function(predict, len(params), len(feats)), o.Z, o.y, o.w))
+    return Problem(params, blocks)
+
+
+def _split(obs, v):
+    out, i = [], 0
+    for o in obs:
+        out.append(v[i : i + o.n])
+        i += o.n
+    return out
+
+
+def noise_sigma_rel(o: Obs, resid: np.ndarray) -> float:
+    """Noise floor relative to the weight scale, from successive differences of the residual sorted by
+    the recorded factors (smooth misfit cancels, noise does not); robust (median) form."""
+    keys = [o.Z[i] for i in range(o.Z.shape[0])][::-1]
+    order = np.lexsort(keys) if keys else np.arange(o.n)
+    r = (resid / o.scale)[order]
+    d = np.diff(r)
+    if len(d) < 3:
+        return 0.01
+    s = 1.4826 * float(np.median(np.abs(d - np.median(d)))) / math.sqrt(2.0)
+    return max(s, 1e-6)
+
+
+def folds_for(obs) -> np.ndarray:
+    out = []
+    for o in obs:
+        levels = np.unique(o.groups)
+        k = min(MAX_FOLDS, len(levels))
+        idx = np.searchsorted(levels, o.groups)
+        out.append(idx % k if k >= 2 else np.full(o.n, -1))
+    return np.concatenate(out)
+
+
+def cv_rmse(problem: Problem, theta, folds) -> tuple[float, np.ndarray]:
+    """Grouped cross-validation: refit without each fold, predict it; RMSE of weighted residuals."""
+    pred = problem.predict(theta).copy()
+    for k in np.unique(folds[folds >= 0]):
+        test = folds == k
+        res = fit(problem, theta, mask=~test, maxit=15, tol=1e-7)
+        pred[test] = res.prediction[test]
+    r = (pred - problem.y) * problem.w
+    return float(np.sqrt(np.mean(r**2))), pred
+
+
+SUBSAMPLE = 1500  # rows used to choose among multi-start initial values on large data sets
+
+
+def _fit_effects(ctx, effects, base, theta_prev, prev_names):
+    prob = build_problem(ctx, effects, base)
+    names = [p.name for p in prob.params]
+    new = effects[-1] if effects else None
+    starts = [{}] + [s for s in (new.starts(ctx) if new is not None else []) if s]
+    inits = [
+        np.array(
+            [
+                theta_prev.get(n, p.init) if n in prev_names else st.get(n, p.init)
+                for n, p in zip(names, prob.params)
+            ]
+        )
+        for st in starts
+    ]
+    n = len(prob.y)
+    if len(inits) > 1 and n > 2 * SUBSAMPLE:  # pick the start on a strided subsample, refine on all rows
+        k = n // SUBSAMPLE
+        sub = Problem(prob.params, [Block(b.function, b.Z[:, ::k], b.y[::k], b.w[::k]) for b in prob.blocks])
+        inits = [min((fit(sub, th0) for th0 in inits), key=lambda r: r.rss).theta]
+    best = None
+    for th0 in inits:
+        res = fit(prob, th0)
+        if best is None or res.rss < best.rss:
+            best = res
+    return prob, best
+
+
+def diagnose(datasets, plant, *, candidates=None, max_effects: int = 2) -> Diagnosis:
+    """Diagnose measured ``datasets`` (list of :class:`~.data.Dataset`) against ``plant``."""
+    obs = [observations(ds, plant) for ds in datasets]
+    kinds = {o.kind for o in obs}
+    base = baseline_params(kinds, plant)
+    ctx = Context(plant, obs)
+    lib = library()
+    pool = [lib[n] for n in (candidates or lib)]
+
+    # baseline, then noise weights from its residuals, then refit with those weights
+    prob, base_fit = _fit_effects(ctx, [], base, {}, set())
+    for o, r in zip(obs, _split(obs, base_fit.prediction - prob.y)):
+        o.sigma_rel = noise_sigma_rel(o, r)
+    prob, base_fit = _fit_effects(ctx, [], base, {}, set())
+    folds = folds_for(obs)
+    cv_base, ho_base = cv_rmse(prob, base_fit.theta, folds)
+
+    accepted, rounds, effects = [], [], []
+    cur_fit, cur_cv, cur_ho = base_fit, cv_base, ho_base
+    ctx.resid = _split(obs, base_fit.prediction - prob.y)
+    active = [e for e in pool if e.applicable(ctx)]
+    ctx.params = {e.name: e.params(ctx) for e in active}
+    for _ in range(max_effects):
+        prev = cur_fit.values()
+        scored = []
+        for e in active:
+            if e in effects:
+                continue
+            p_e, res = _fit_effects(ctx, effects + [e], base, prev, set(prev))
+            scored.append(
+                Candidate(
+                    e,
+                    res,
+                    res.bic - cur_fit.bic,
+                    problem=p_e,
+                    names=tuple(p.name for p in ctx.params[e.name]),
+                )
+            )
+        if not scored:
+            break
+        scored.sort(key=lambda c: c.dbic)
+        rounds.append(scored)
+        top = scored[0]
+        if top.dbic >= ACCEPT_DBIC:
+            break
+        for c in scored[:2]:
+            if c.dbic < ACCEPT_DBIC or c is top:
+                c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
+                c.cv_gain = 100.0 * (1.0 - c.cv_rmse / cur_cv)
+        if top.cv_gain is None or top.cv_gain < 100.0 * MIN_CV_GAIN:
+            break
+        effects.append(top.effect)
+        runner = scored[1] if len(scored) > 1 else None
+        accepted.append(
+            Accepted(
+                top.effect, top.fit, top.dbic, cur_cv, top.cv_rmse, runner, plausibility(top.fit, effects)
+            )
+        )
+        cur_fit, cur_cv, cur_ho = top.fit, top.cv_rmse, top.holdout
+        ctx.resid = _split(obs, cur_fit.prediction - prob.y)
+    noise = [o.sigma_rel * float(np.median(o.scale)) for o in obs]
+    owner = {p.name: e.name for e in effects for p in ctx.params[e.name]}
+    return Diagnosis(
+        plant,
+        obs,
+        base_fit,
+        cur_fit,
+        effects,
+        accepted,
+        rounds,
+        cv_base,
+        cur_cv,
+        noise,
+        ho_base,
+        cur_ho,
+        owner,
+    )
+
+
+def plausibility(res: FitResult, effects) -> list:
+    """Flags for fitted values outside their physically plausible range."""
+    out = []
+    for p, v in zip(res.params, res.theta):
+        if p.plausible is None:
+            continue
+        lo, hi = p.plausible
+        if not lo <= v <= hi:
+            note = f" ({p.plausible_note})" if p.plausible_note else ""
+            out.append(
+                f"{p.name} = {p.show(v):.4g} {p.unit} outside {p.show(lo):.4g}..{p.show(hi):.4g}{note}"
+            )
+    return out
+
+
+# ------------------------------------------------------------------------------ residual analysis
+def residual_table(o: Obs, resid: np.ndarray, max_bins: int = 6) -> list:
+    """Where misfit concentrates: for every recorded factor, the share of residual variance explained by
+    its levels (eta^2), the worst level and its RMS.  ``resid`` = prediction - y (SI)."""
+    unit, f = Y_UNIT[o.kind]
+    r = resid * f
+    if o.kind == "stiffness":  # misfit in compliance: a wrong stiffness would otherwise just track |F|
+        force = o.feature("force")
+        ok = np.abs(force) > 0.05 * np.max(np.abs(force))
+        r = np.where(ok, resid / np.where(ok, force, 1.0), 0.0) * 1e6
+        unit = "um/N"
+    total = float(np.sum((r - r.mean()) ** 2)) or 1e-300
+    rows = []
+    for name, vals in o.factors.items():
+        levels = np.unique(vals)
+        if len(levels) < 2:
+            continue
+        if len(levels) > max_bins:
+            edges = np.quantile(vals, np.linspace(0, 1, max_bins + 1)[1:-1])
+            idx = np.searchsorted(edges, vals, side="right")
+            labels = [
+                f"{_disp(name, vals[idx == i].min())}..{_disp(name, vals[idx == i].max())}"
+                for i in range(max_bins)
+            ]
+        else:
+            idx = np.searchsorted(levels, vals)
+            labels = [_disp(name, v) for v in levels]
+        between, worst = 0.0, (None, -1.0)
+        for i in np.unique(idx):
+            ri = r[idx == i]
+            between += len(ri) * (ri.mean() - r.mean()) ** 2
+            rms = float(np.sqrt(np.mean(ri**2)))
+            if rms > worst[1]:
+                worst = (labels[i], rms)
+        rows.append(
+            {
+                "factor": name,
+                "eta2": between / total,
+                "worst_level": worst[0],
+                "worst_rms": worst[1],
+                "rms": float(np.sqrt(np.mean(r**2))),
+                "unit": unit,
+            }
+        )
+    rows.sort(key=lambda d: -d["eta2"])
+    return rows
+
+
+_DISP = {
+    "position": (1e3, "mm"),
+    "velocity": (1e3, "mm/s"),
+    "frequency": (1.0, "Hz"),
+    "force": (1.0, "N"),
+    "normal_load": (1.0, "N"),
+    "axial_load": (1.0, "N"),
+    "time": (1.0, "s"),
+    "temperature": (1.0, "K"),
+}
+
+
+def _disp(name, v):
+    f, u = _DISP.get(name, (1.0, ""))
+    return f"{v * f:.4g}{(' ' + u) if u else ''}"

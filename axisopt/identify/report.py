@@ -1,0 +1,261 @@
+"""Diagnosis output: JSON-ready dict, console text, Markdown report with residual plots (Agg).
+Nothing here prints."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .diagnose import _split, residual_table
+from .measure import Y_UNIT
+
+
+def _pv(p, v, s):
+    unit = "" if p.unit in ("", "-") else f" {p.unit}"
+    sd = f" ± {p.show(s):.3g}" if math.isfinite(s) else ""
+    return f"{p.show(v):.4g}{sd}{unit}"
+
+
+def _params(res, names=None):
+    sig = dict(zip([p.name for p in res.params], res.sigma))
+    return [
+        {
+            "name": p.name,
+            "label": p.label,
+            "value": p.show(v),
+            "sigma": p.show(sig[p.name]),
+            "unit": p.unit,
+            "text": _pv(p, v, sig[p.name]),
+        }
+        for p, v in zip(res.params, res.theta)
+        if names is None or p.name in names
+    ]
+
+
+def _rmse_units(diag, pred):
+    out = []
+    for o, pr in zip(diag.obs, _split(diag.obs, pred)):
+        unit, f = Y_UNIT[o.kind]
+        out.append((o, float(np.sqrt(np.mean(((pr - o.y) * f) ** 2))), unit))
+    return out
+
+
+def diagnosis_dict(diag) -> dict:
+    owner = diag.param_owner
+    d = {
+        "design": diag.plant.name,
+        "datasets": [
+            {
+                "file": o.dataset.source,
+                "test": o.kind,
+                "rows": o.dataset.n,
+                "excluded_rows": [{"line": ln, "reason": why} for ln, why in o.dataset.excluded],
+                "noise_floor": s * Y_UNIT[o.kind][1],
+                "unit": Y_UNIT[o.kind][0],
+                "cv_groups": o.group_name,
+            }
+            for o, s in zip(diag.obs, diag.noise)
+        ],
+        "baseline": {
+            "parameters": _params(diag.baseline),
+            "status": diag.baseline.status,
+            "plausibility": _flags(diag.baseline),
+        },
+        "residuals_baseline": [
+            residual_table(o, r)
+            for o, r in zip(diag.obs, _split(diag.obs, diag.baseline.prediction - diag.y))
+        ],
+        "residuals_final": [
+            residual_table(o, r) for o, r in zip(diag.obs, _split(diag.obs, diag.final.prediction - diag.y))
+        ],
+        "candidates": [
+            [
+                {
+                    "effect": c.effect.name,
+                    "dBIC": c.dbic,
+                    "cv_gain_percent": c.cv_gain,
+                    "parameters": _params(c.fit, c.names),
+                }
+                for c in rnd
+            ]
+            for rnd in diag.rounds
+        ],
+        "verdict": diag.verdict,
+        "accepted": [],
+        "holdout_rmse_baseline": diag.cv_baseline,
+        "holdout_rmse_final": diag.cv_final,
+        "gain_percent": diag.gain,
+        "holdout_rmse_units": [
+            {"file": o.dataset.source, "baseline": b, "final": a, "unit": u}
+            for (o, b, u), (_, a, _) in zip(
+                _rmse_units(diag, diag.holdout_baseline), _rmse_units(diag, diag.holdout_final)
+            )
+        ],
+        "final": {"parameters": _params(diag.final), "status": diag.final.status},
+    }
+    for a in diag.accepted:
+        names = [n for n, e in owner.items() if e == a.effect.name]
+        r = a.runner_up
+        d["accepted"].append(
+            {
+                "effect": a.effect.name,
+                "title": a.effect.title,
+                "finding": a.effect.describe(a.fit.values(), diag.plant),
+                "parameters": _params(a.fit, names),
+                "dBIC": a.dbic,
+                "cv_rmse_before": a.cv_before,
+                "cv_rmse_after": a.cv_after,
+                "gain_percent": a.gain,
+                "plausibility": a.plausibility,
+                "runner_up": None
+                if r is None
+                else {"effect": r.effect.name, "dBIC": r.dbic, "margin": r.dbic - a.dbic},
+            }
+        )
+    return d
+
+
+def _flags(res):
+    from .diagnose import plausibility
+
+    return plausibility(res, [])
+
+
+def diagnosis_text(diag) -> str:
+    d = diagnosis_dict(diag)
+    L = [f"diagnose: {d['design']}"]
+    for ds in d["datasets"]:
+        L.append(
+            f"  {ds['test']:9s} {ds['file']}: {ds['rows']} rows, noise floor {ds['noise_floor']:.3g} "
+            f"{ds['unit']}, held-out groups by {ds['cv_groups']}"
+        )
+        for ex in ds["excluded_rows"]:
+            L.append(f"    excluded line {ex['line']}: {ex['reason']}")
+    L.append("baseline fit: " + ", ".join(f"{p['name']} = {p['text']}" for p in d["baseline"]["parameters"]))
+    for f in d["baseline"]["plausibility"]:
+        L.append(f"  check: {f}")
+    for ds, rows in zip(d["datasets"], d["residuals_baseline"]):
+        if rows:
+            L.append(f"misfit of the baseline ({ds['test']}), share of residual variance by factor:")
+            for r in rows[:4]:
+                L.append(
+                    f"  {r['factor']:12s} {100 * r['eta2']:5.1f} %   worst {r['worst_level']} "
+                    f"({r['worst_rms']:.3g} {r['unit']} rms; overall {r['rms']:.3g})"
+                )
+    for i, rnd in enumerate(d["candidates"], start=1):
+        L.append(f"candidates, round {i} (dBIC vs current model; accept < -10 with held-out gain):")
+        for c in rnd:
+            cv = f"  held-out gain {c['cv_gain_percent']:.0f} %" if c["cv_gain_percent"] is not None else ""
+            ps = ", ".join(f"{p['name']} = {p['text']}" for p in c["parameters"])
+            L.append(f"  {c['effect']:24s} {c['dBIC']:9.1f}{cv}   {ps}")
+    L.append(f"verdict: {d['verdict']}")
+    for a in d["accepted"]:
+        L.append(f"  {a['effect']}: {a['finding']}")
+        for p in a["parameters"]:
+            L.append(f"    {p['name']} = {p['text']}  ({p['label']})")
+        for f in a["plausibility"]:
+            L.append(f"    check: {f}")
+        ru = a["runner_up"]
+        beat = f"; beat {ru['effect']} (dBIC {ru['dBIC']:.1f}, margin {ru['margin']:.1f})" if ru else ""
+        L.append(f"    dBIC {a['dBIC']:.1f}, held-out gain {a['gain_percent']:.0f} %{beat}")
+    for h in d["holdout_rmse_units"]:
+        L.append(
+            f"held-out RMSE {Path(h['file']).name}: {h['baseline']:.3g} -> {h['final']:.3g} {h['unit']} "
+            f"(gain {d['gain_percent']:.0f} %)"
+        )
+    return "\n".join(L)
+
+
+def write_report(diag, outdir) -> Path:
+    """Markdown report with residual plots before/after; returns the report path."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    d = diagnosis_dict(diag)
+    md = [f"# Diagnosis of {d['design']}", "", f"**Verdict: {d['verdict']}**", ""]
+    for a in d["accepted"]:
+        md.append(
+            f"- **{a['effect']}** — {a['finding']}. "
+            + "; ".join(f"{p['name']} = {p['text']}" for p in a["parameters"])
+            + f". dBIC {a['dBIC']:.1f}, held-out gain {a['gain_percent']:.0f} %"
+            + (
+                f", beat {a['runner_up']['effect']} by {a['runner_up']['margin']:.1f} BIC"
+                if a["runner_up"]
+                else ""
+            )
+        )
+        md += [f"  - check: {f}" for f in a["plausibility"]]
+    md += ["", "## Data", ""]
+    for ds in d["datasets"]:
+        md.append(
+            f"- `{ds['file']}` ({ds['test']}): {ds['rows']} rows, noise floor {ds['noise_floor']:.3g} "
+            f"{ds['unit']}; cross-validation leaves one {ds['cv_groups']} out"
+        )
+        md += [f"  - excluded line {e['line']}: {e['reason']}" for e in ds["excluded_rows"]]
+    md += ["", "## Baseline fit", "", "| parameter | value |", "|---|---|"]
+    md += [f"| {p['name']} | {p['text']} |" for p in d["baseline"]["parameters"]]
+    md += [f"\ncheck: {f}" for f in d["baseline"]["plausibility"]]
+    md += ["", "## Where the baseline misfits", ""]
+    for ds, rows in zip(d["datasets"], d["residuals_baseline"]):
+        md += [
+            f"`{Path(ds['file']).name}`",
+            "",
+            "| factor | share of residual variance | worst level | rms there |",
+            "|---|---|---|---|",
+        ]
+        md += [
+            f"| {r['factor']} | {100 * r['eta2']:.1f} % | {r['worst_level']} "
+            f"| {r['worst_rms']:.3g} {r['unit']} |"
+            for r in rows
+        ]
+        md.append("")
+    md += ["## Candidates", ""]
+    for i, rnd in enumerate(d["candidates"], start=1):
+        md += [f"Round {i}", "", "| effect | dBIC | held-out gain | parameters |", "|---|---|---|---|"]
+        for c in rnd:
+            g = f"{c['cv_gain_percent']:.0f} %" if c["cv_gain_percent"] is not None else "-"
+            md.append(
+                f"| {c['effect']} | {c['dBIC']:.1f} | {g} | "
+                + "; ".join(f"{p['name']} = {p['text']}" for p in c["parameters"])
+                + " |"
+            )
+        md.append("")
+    md += ["## Gain", "", "| data | held-out RMSE before | after |", "|---|---|---|"]
+    md += [
+        f"| {Path(h['file']).name} | {h['baseline']:.4g} {h['unit']} | {h['final']:.4g} {h['unit']} |"
+        for h in d["holdout_rmse_units"]
+    ]
+    md += [
+        "",
+        f"Gain {d['gain_percent']:.0f} % (grouped cross-validation, noise-weighted RMSE "
+        f"{d['holdout_rmse_baseline']:.3g} -> {d['holdout_rmse_final']:.3g}; about 1 is the noise floor).",
+        "",
+    ]
+    md += ["## Residual plots", ""]
+    before = _split(diag.obs, diag.baseline.prediction - diag.y)
+    after = _split(diag.obs, diag.final.prediction - diag.y)
+    for k, (o, rb, ra) in enumerate(zip(diag.obs, before, after)):
+        facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
+        unit, f = Y_UNIT[o.kind]
+        fig, axes = plt.subplots(1, len(facs), figsize=(3.6 * len(facs), 3.2), squeeze=False)
+        for ax, (name, v) in zip(axes[0], facs):
+            ax.plot(v, rb * f, ".", ms=3, alpha=0.6, label="baseline")
+            ax.plot(v, ra * f, ".", ms=3, alpha=0.8, label=f"with {d['verdict']}")
+            ax.axhline(0.0, color="k", lw=0.5)
+            ax.set_xlabel(name)
+            ax.set_ylabel(f"model - measured [{unit}]")
+        axes[0][0].legend(fontsize=7)
+        fig.tight_layout()
+        png = out / f"residuals_{k + 1}.png"
+        fig.savefig(png, dpi=90)
+        plt.close(fig)
+        md += [f"![residuals {Path(o.dataset.source).name}]({png.name})", ""]
+    path = out / "report.md"
+    path.write_text("\n".join(md) + "\n", encoding="utf-8")
+    return path
