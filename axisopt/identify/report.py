@@ -168,6 +168,14 @@ def diagnosis_text(diag) -> str:
     return "\n".join(L)
 
 
+# SI factor -> (display unit, scale, offset) for residual plots
+_FACTOR_DISPLAY = {
+    "position": ("mm", 1e3, 0.0), "force": ("N", 1.0, 0.0), "velocity": ("mm/s", 1e3, 0.0),
+    "speed": ("mm/s", 1e3, 0.0), "time": ("s", 1.0, 0.0), "temperature": ("degC", 1.0, -273.15),
+    "frequency": ("Hz", 1.0, 0.0), "normal_load": ("N", 1.0, 0.0), "axial_load": ("N", 1.0, 0.0),
+}
+
+
 def write_report(diag, outdir) -> Path:
     """Markdown report with residual plots before/after; returns the report path."""
     import matplotlib
@@ -245,10 +253,12 @@ def write_report(diag, outdir) -> Path:
         unit, f = Y_UNIT[o.kind]
         fig, axes = plt.subplots(1, len(facs), figsize=(3.6 * len(facs), 3.2), squeeze=False)
         for ax, (name, v) in zip(axes[0], facs):
+            fu, fs, fo = _FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
+            v = np.asarray(v) * fs + fo
             ax.plot(v, rb * f, ".", ms=3, alpha=0.6, label="baseline")
             ax.plot(v, ra * f, ".", ms=3, alpha=0.8, label=f"with {d['verdict']}")
             ax.axhline(0.0, color="k", lw=0.5)
-            ax.set_xlabel(name)
+            ax.set_xlabel(f"{name} [{fu}]" if fu else name)
             ax.set_ylabel(f"model - measured [{unit}]")
         axes[0][0].legend(fontsize=7)
         fig.tight_layout()
