@@ -1,0 +1,334 @@
+"""Sizing problems: YAML <-> frozen dataclasses.
+
+A problem YAML names the axis (the same ``axis:`` section as a design YAML), the objective, the
+limits, the catalog restrictions and the bounds of the continuous variables.  Every value with a
+dimension carries its unit; unknown keys, bare numbers that need a unit and unknown part ids are
+:class:`~axisopt.errors.InputError` naming the file and key.
+
+.. code-block:: yaml
+
+    name: vmc-x
+    description: free text
+    catalogs: [../my_catalog]          # optional extra catalog directories (relative to this file)
+    axis: {...}                        # as in a design YAML (axis.mounting is the default mounting)
+    objective:
+      mode: stiffness                  # stiffness | frequency | weighted | lexicographic | pareto
+      weights: {stiffness: 1, frequency: 1}           # weighted: sum w_i * value_i / scale_i
+      scale: {stiffness: 100 N/um, frequency: 100 Hz}  # weighted
+      order: [frequency, stiffness]    # lexicographic
+      tolerance: 0.01                  # lexicographic: keep designs within 1 % of the best primary
+      pareto: [stiffness, frequency, cost, total_mass]  # pareto (two or more)
+    limits:
+      max_moving_mass: 450 kg
+      max_total_mass: 700 kg
+      max_cost: 6000 EUR
+      max_drag_torque: 1.2 N.m
+      min_life: 20000 h                # nut L10 life (the axis.required_life check applies too)
+      min_stiffness: 150 N/um          # minimum over the stroke
+      min_frequency: 60 Hz             # minimum over the stroke
+      margins: {critical_speed: 1.25, buckling: 2.0}   # per model.CHECKS; default 1.0, 0 disables
+    catalog:
+      mountings: [fixed-supported, fixed-fixed]         # default: [axis.mounting]
+      vendors: [HIWIN, THK]
+      nut_types: [double]
+      bearing_arrangements: [DB, DBD]
+      bearing_preload: [medium, heavy]                # bearing preload classes
+      guide_types: [ball, roller]
+      guide_preload: [medium, heavy]                  # guide preload levels or vendor classes (ZA, Z0, ...)
+      require: {screw: [id, ...], nut: id, bearing: [...], guide: [...]}
+      exclude: {guide: [id, ...]}
+    continuous:
+      nut_preload: {min: 0 N, max: 5 kN}  # intersected with each nut's preload_min..preload_max
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from types import MappingProxyType
+
+from .catalog import Catalog
+from .design import MOUNTINGS, Axis, catalog_for, read_axis
+from .errors import InputError
+from .model import CHECKS
+from .yamlio import Section, read_yaml
+
+OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto")
+PERFORMANCE = ("stiffness", "frequency")
+PARETO_KEYS = ("stiffness", "frequency", "cost", "total_mass", "moving_mass", "mass")
+SLOTS = ("screw", "nut", "bearing", "guide")
+SLOT_TABLE = MappingProxyType({"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides"})
+
+# limit key -> (quantity kind, display unit, SI factor of the display unit, model output, sense)
+LIMITS = MappingProxyType({
+    "max_moving_mass": ("mass", "kg", 1.0, "moving_mass", "<="),
+    "max_total_mass": ("mass", "kg", 1.0, "total_mass", "<="),
+    "max_cost": ("money", "EUR", 1.0, "cost", "<="),
+    "max_drag_torque": ("torque", "N.m", 1.0, "drag_torque", "<="),
+    "min_life": ("time", "h", 3600.0, "life", ">="),
+    "min_stiffness": ("stiffness", "N/um", 1e6, "k_total", ">="),
+    "min_frequency": ("frequency", "Hz", 1.0, "f1", ">="),
+})
+
+
+@dataclass(frozen=True)
+class Objective:
+    """What to maximise.  Performance values are the minima over the stroke (model position grid)."""
+
+    mode: str = "stiffness"
+    weights: tuple = (("stiffness", 1.0), ("frequency", 1.0))  # weighted
+    scale: tuple = (("stiffness", 100e6), ("frequency", 100.0))  # weighted, SI
+    order: tuple = ("stiffness", "frequency")  # lexicographic
+    tolerance: float = 0.0  # lexicographic, relative
+    pareto: tuple = ()  # pareto keys
+
+    @property
+    def label(self) -> str:
+        if self.mode == "weighted":
+            return " + ".join(f"{w:g}*{k}/{_fmt_si(k, s)}" for (k, w), (_, s) in zip(self.weights, self.scale))
+        if self.mode == "lexicographic":
+            return " then ".join(f"max min {k}" for k in self.order) + f" (tolerance {self.tolerance:g})"
+        if self.mode == "pareto":
+            return "Pareto front of " + ", ".join(self.pareto)
+        return f"maximise minimum {'axial stiffness' if self.mode == 'stiffness' else 'first natural frequency'}"
+
+
+def _fmt_si(key, value):
+    return f"{value / 1e6:g} N/um" if key == "stiffness" else f"{value:g} Hz"
+
+
+@dataclass(frozen=True)
+class Restrictions:
+    """Which catalog parts and mountings the search may use (None: no restriction)."""
+
+    mountings: tuple = ()
+    vendors: tuple | None = None
+    nut_types: tuple | None = None
+    bearing_arrangements: tuple | None = None
+    bearing_preload: tuple | None = None
+    guide_types: tuple | None = None
+    guide_preload: tuple | None = None
+    require: tuple = ()  # ((slot, (ids...)), ...)
+    exclude: tuple = ()
+
+    def required(self, slot):
+        return dict(self.require).get(slot)
+
+    def excluded(self, slot):
+        return dict(self.exclude).get(slot, ())
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A sizing problem (SI).  ``limits`` maps :data:`LIMITS` keys to SI values; ``margins`` maps each
+    of :data:`axisopt.model.CHECKS` to the smallest accepted margin (0 disables the check)."""
+
+    axis: Axis
+    catalog: Catalog = field(repr=False, compare=False)
+    objective: Objective = Objective()
+    limits: tuple = ()  # ((key, value_SI), ...)
+    margins: tuple = tuple((c, 1.0) for c in CHECKS)
+    restrictions: Restrictions = Restrictions()
+    preload_min: float = 0.0
+    preload_max: float = float("inf")
+    name: str = "problem"
+    source: str = ""
+    assumed: tuple = ()
+
+    @property
+    def limit_map(self) -> dict:
+        return dict(self.limits)
+
+    @property
+    def margin_map(self) -> dict:
+        return dict(self.margins)
+
+    @property
+    def mountings(self) -> tuple:
+        return self.restrictions.mountings or (self.axis.mounting,)
+
+    def axis_for(self, mounting: str) -> Axis:
+        return replace(self.axis, mounting=mounting)
+
+    def with_limit(self, key: str, value: float | None) -> Problem:
+        lim = self.limit_map
+        if value is None:
+            lim.pop(key, None)
+        else:
+            lim[key] = float(value)
+        return replace(self, limits=tuple(sorted(lim.items())))
+
+    def with_objective(self, objective: Objective) -> Problem:
+        return replace(self, objective=objective)
+
+
+# ----------------------------------------------------------------------------------------- reading
+
+def load_problem(path, catalog: Catalog | None = None) -> Problem:
+    """Read a problem YAML; every error names the file and key (InputError)."""
+    path = Path(path)
+    root = Section(read_yaml(path), str(path))
+    cat = catalog if catalog is not None else catalog_for(root, path.parent)
+    return read_problem(root, cat, name=path.stem)
+
+
+def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Problem:
+    name = root.string("name", name)
+    root.string("description")
+    axis, assumed = read_axis(root.section("axis", required=True))
+    objective = _read_objective(root)
+    limits, margins = _read_limits(root.section("limits"))
+    restr = _read_restrictions(root.section("catalog"), catalog, axis)
+    pmin, pmax = _read_continuous(root.section("continuous"))
+    root.done()
+    return Problem(axis=axis, catalog=catalog, objective=objective, limits=limits, margins=margins,
+                   restrictions=restr, preload_min=pmin, preload_max=pmax, name=name,
+                   source=root.source, assumed=assumed)
+
+
+def _read_objective(root: Section) -> Objective:
+    node = root.raw("objective")
+    if node is None:
+        return Objective()
+    if isinstance(node.value, str):
+        mode = root.choice("objective", OBJECTIVE_MODES)
+        if mode in ("weighted", "lexicographic", "pareto"):
+            raise root.error("objective", f"mode '{mode}' needs a mapping (see the problem format)")
+        return Objective(mode=mode)
+    sec = root.section("objective")
+    mode = sec.choice("mode", OBJECTIVE_MODES, required=True)
+    kw: dict = {"mode": mode}
+    if mode == "weighted":
+        wsec = sec.section("weights", required=True)
+        weights = []
+        for k in wsec.keys():
+            if k not in PERFORMANCE:
+                raise wsec.error(k, f"unknown objective '{k}'; use {', '.join(PERFORMANCE)}")
+            w = wsec.number(k, minimum=0.0)
+            weights.append((k, float(w)))
+        wsec.done()
+        ssec = sec.section("scale", required=True)
+        scale = []
+        for k, _ in weights:
+            kind = "stiffness" if k == "stiffness" else "frequency"
+            scale.append((k, ssec.quantity(k, kind, required=True, positive=True)))
+        ssec.done()
+        if not weights or sum(w for _, w in weights) <= 0:
+            raise sec.error("weights", "at least one weight must be positive")
+        kw.update(weights=tuple(weights), scale=tuple(scale))
+    elif mode == "lexicographic":
+        order = sec.string_list("order", None)
+        if not order or len(order) != 2 or set(order) != set(PERFORMANCE):
+            raise sec.error("order", "lexicographic order must list stiffness and frequency, e.g. "
+                                     "[frequency, stiffness]")
+        tol = sec.number("tolerance", 0.0, minimum=0.0)
+        if tol >= 1:
+            raise sec.error("tolerance", f"relative tolerance must be below 1, got {tol}")
+        kw.update(order=tuple(order), tolerance=float(tol))
+    elif mode == "pareto":
+        keys = sec.string_list("pareto", None)
+        if not keys or len(keys) < 2:
+            raise sec.error("pareto", f"list two or more of {', '.join(PARETO_KEYS)}")
+        for k in keys:
+            if k not in PARETO_KEYS:
+                raise sec.error("pareto", f"unknown Pareto objective '{k}'; use {', '.join(PARETO_KEYS)}")
+        keys = ["total_mass" if k == "mass" else k for k in keys]
+        if len(set(keys)) != len(keys):
+            raise sec.error("pareto", "Pareto objectives repeat")
+        kw.update(pareto=tuple(keys))
+    sec.done()
+    return Objective(**kw)
+
+
+def _read_limits(sec: Section | None):
+    margins = {c: 1.0 for c in CHECKS}
+    if sec is None:
+        return (), tuple(margins.items())
+    limits = {}
+    for key, (kind, _unit, _f, _out, _sense) in LIMITS.items():
+        v = sec.quantity(key, kind, positive=True)
+        if v is not None:
+            limits[key] = v
+    msec = sec.section("margins")
+    if msec is not None:
+        for k in msec.keys():
+            if k not in CHECKS:
+                import difflib
+
+                near = difflib.get_close_matches(k, CHECKS, n=1)
+                hint = f"; did you mean '{near[0]}'?" if near else ""
+                raise msec.error(k, f"unknown check '{k}'{hint} (checks: {', '.join(CHECKS)})")
+            margins[k] = float(msec.number(k, minimum=0.0))
+        msec.done()
+    sec.done()
+    return tuple(sorted(limits.items())), tuple(margins.items())
+
+
+def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Restrictions:
+    if sec is None:
+        return Restrictions(mountings=(axis.mounting,))
+    kw: dict = {}
+    mounts = sec.string_list("mountings", None)
+    if mounts is not None:
+        for m in mounts:
+            if m not in MOUNTINGS:
+                raise sec.error("mountings", f"'{m}' is not one of {', '.join(MOUNTINGS)}")
+        if not mounts:
+            raise sec.error("mountings", "list at least one mounting")
+        kw["mountings"] = tuple(dict.fromkeys(mounts))
+    else:
+        kw["mountings"] = (axis.mounting,)
+    vendors_all = sorted(set().union(*(set(catalog.table(t)["vendor"]) for t in SLOT_TABLE.values())))
+    for key, table, col in (("vendors", None, "vendor"), ("nut_types", "nuts", "type"),
+                            ("bearing_arrangements", "bearings", "arrangement"),
+                            ("bearing_preload", "bearings", "preload_class"),
+                            ("guide_types", "guides", "type"),
+                            ("guide_preload", "guides", None)):
+        vals = sec.string_list(key, None)
+        if vals is None:
+            continue
+        if table is None:
+            known = vendors_all
+        elif col is None:
+            g = catalog.guides
+            known = sorted(set(g["preload_level"]) | set(g["preload_class"]))
+        else:
+            known = sorted(set(catalog.table(table)[col]))
+        for v in vals:
+            if v not in known:
+                raise sec.error(key, f"'{v}' is not in the catalog ({', '.join(map(str, known))})")
+        kw[key] = tuple(vals)
+    for key in ("require", "exclude"):
+        s = sec.section(key)
+        if s is None:
+            continue
+        out = []
+        for slot in s.keys():
+            if slot not in SLOTS:
+                raise s.error(slot, f"unknown part slot '{slot}'; use {', '.join(SLOTS)}")
+            ids = s.string_list(slot, [])
+            for i in ids:
+                catalog.part(SLOT_TABLE[slot], i, source=s.source, key=s.where(slot))
+            out.append((slot, tuple(ids)))
+        s.done()
+        kw[key] = tuple(out)
+    sec.done()
+    return Restrictions(**kw)
+
+
+def _read_continuous(sec: Section | None):
+    if sec is None:
+        return 0.0, float("inf")
+    pre = sec.section("nut_preload")
+    lo, hi = 0.0, float("inf")
+    if pre is not None:
+        lo = pre.quantity("min", "force", 0.0, non_negative=True)
+        hi = pre.quantity("max", "force", float("inf"), positive=True)
+        if lo > hi:
+            raise pre.error("max", f"nut_preload max {hi:.0f} N is below min {lo:.0f} N")
+        pre.done()
+    sec.done()
+    return lo, hi
+
+
+__all__ = ["Problem", "Objective", "Restrictions", "LIMITS", "load_problem", "read_problem", "InputError"]

@@ -1,0 +1,122 @@
+"""Sizing search over the catalogs: ``solve(problem, method=...) -> SolveResult``.
+
+Methods: ``'default'`` (screening + bound order + IPOPT, proves the optimum), ``'exhaustive'`` (every
+combination; the ground truth) and ``'bonmin'`` (CasADi Bonmin MINLP with one-hot part selection; a
+heuristic reference).  All three use the same model position grid (``model.positions``) for the
+minimum over the stroke, the same limits and the same tie rule, so their objectives compare.
+
+``solve`` is a pure function of the problem (no printing, no global state besides per-process solver
+caches), so a trade study may call it in worker processes.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import replace
+
+import numpy as np
+
+from ..problem import LIMITS, Problem
+from .core import bound_order_search, certificate, exhaustive_search, polish
+from .result import Binding, Candidate, Certificate, Infeasibility, ParetoFront, SolveResult
+from .space import Constraint, build_constraints, build_space, objective_spec
+
+METHODS = ("default", "exhaustive", "bonmin")
+RELAX = 0.10  # sensitivities: relax each limit by 10 %
+
+
+def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit: float = 100.0,
+          sensitivities: bool = True) -> SolveResult:
+    """Solve a sizing problem.
+
+    problem       : :class:`axisopt.problem.Problem`
+    method        : 'default' | 'exhaustive' | 'bonmin'
+    top           : number of designs returned (best + runners-up)
+    time_limit    : Bonmin wall-clock limit [s]
+    sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (default method)
+    """
+    if method not in METHODS:
+        raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
+    t0 = time.perf_counter()
+    ob = problem.objective
+    if ob.mode == "pareto":
+        from .pareto import solve_pareto
+
+        return solve_pareto(problem, method=method, t0=t0)
+    space = build_space(problem)
+    constraints = build_constraints(problem)
+    if ob.mode == "lexicographic":
+        primary, secondary = ob.order
+        first = _solve_scalar(problem, space, constraints, objective_spec(primary), method, 1, time_limit, t0)
+        if first.best is None:
+            return first
+        j1 = first.best.objective
+        floor = j1 * (1.0 - max(ob.tolerance, 1e-9))
+        key = "min_stiffness" if primary == "stiffness" else "min_frequency"
+        kind, unit, factor, okey, _ = LIMITS[key]
+        extra = Constraint(f"lexicographic {primary}", okey, ">=", floor * (1e6 if primary == "stiffness" else 1.0),
+                           1, f"{primary} within {ob.tolerance:g} of its best {j1:.6g}", unit, factor)
+        res = _solve_scalar(problem, space, constraints + (extra,), objective_spec(secondary), method, top,
+                            time_limit, t0)
+        res.objective_label = f"{ob.label}: primary best {j1:.6g} {first.objective_unit}; " + res.objective_label
+        res.certificate.notes = res.certificate.notes + (
+            f"stage 1 ({primary}): {first.certificate.exact_evaluations} exact evaluations, "
+            f"{first.certificate.nlps_solved} NLPs, gap {first.certificate.gap:g}",)
+        res.certificate.nlps_solved += first.certificate.nlps_solved
+        res.certificate.proven = res.certificate.proven and first.certificate.proven
+        res.time = time.perf_counter() - t0
+        return res
+    spec = objective_spec(ob.mode, problem)
+    res = _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0)
+    if sensitivities and res.best is not None and method != "bonmin":
+        res.binding = limit_sensitivities(problem, res)
+        res.time = time.perf_counter() - t0
+    return res
+
+
+def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0) -> SolveResult:
+    if method == "bonmin":
+        from .bonmin import solve_bonmin
+
+        return solve_bonmin(problem, space, constraints, spec, time_limit=time_limit, top=top, t0=t0)
+    if method == "exhaustive":
+        ex, info = exhaustive_search(space, constraints, spec)
+    else:
+        ex, info = bound_order_search(space, constraints, spec, top=top)
+    if not np.isfinite(ex.objective).any():
+        from .explain import explain_infeasible
+
+        cert = certificate(info, 0, 0, ())
+        return SolveResult("infeasible", method, problem.name, spec.label, spec.unit, None, [], cert,
+                           time.perf_counter() - t0, message="no catalog combination meets every limit",
+                           infeasibility=explain_infeasible(space, constraints, spec))
+    cands, nlps, fails, notes = polish(space, ex, constraints, spec, top)
+    cert = certificate(info, nlps, fails, notes)
+    status = "optimal" if cert.proven else "time_limit"
+    if fails and cands and cands[0].rank == 1 and any("rank 1)" in n for n in notes):
+        status = "solver_failed"
+    return SolveResult(status, method, problem.name, spec.label, spec.unit, cands[0], cands[1:], cert,
+                       time.perf_counter() - t0, message="; ".join(notes), solver_status="ipopt")
+
+
+def limit_sensitivities(problem: Problem, res: SolveResult) -> list:
+    """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
+    (re-solved with the default method; a discrete problem has no meaningful multipliers)."""
+    best = res.best
+    at = {"max_moving_mass": best.moving_mass, "max_total_mass": best.total_mass, "max_cost": best.cost,
+          "max_drag_torque": best.drag_torque, "min_life": best.life_h * 3600.0,
+          "min_stiffness": best.min_stiffness * 1e6, "min_frequency": best.min_frequency}
+    out = []
+    for key, value in problem.limits:
+        kind, unit, factor, okey, sense = LIMITS[key]
+        relaxed = value * (1.0 + RELAX) if sense == "<=" else value * (1.0 - RELAX)
+        r2 = solve(problem.with_limit(key, relaxed), "default", top=1, sensitivities=False)
+        gain = (r2.best.objective - best.objective) if r2.best is not None else float("nan")
+        tol = 1e-6 * max(abs(best.objective), 1e-9)
+        out.append(Binding(key, unit, value / factor, at[key] / factor, relaxed / factor, gain,
+                           bool(gain > tol)))
+    return out
+
+
+__all__ = ["solve", "METHODS", "SolveResult", "Candidate", "Certificate", "Binding", "Infeasibility",
+           "ParetoFront", "replace"]

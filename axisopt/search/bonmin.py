@@ -1,0 +1,183 @@
+"""Reference method: the whole problem as one MINLP for CasADi + Bonmin (a heuristic on this
+nonconvex problem).
+
+One-hot binaries choose the nut (which fixes the screw), the bearing arrangement and the guide; each
+part parameter is the binary-weighted sum of the catalog column, so the symbolic
+:func:`axisopt.model.axis_response` is evaluated on a mixture that is exact at integer points.  The
+nut preload is ``lo(z) + w (hi(z) - lo(z))`` with w in [0, 1].  The objective is an epigraph variable
+below the objective at every grid position (same grid as the other methods); every limit is a
+scaled constraint.  A mounting is a structural choice of the model, so each allowed mounting is one
+MINLP, run in turn within the overall time limit.  Bonmin's own status is reported as is; the chosen
+combination is then re-evaluated exactly and re-checked.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import sys
+import time
+
+import casadi as ca
+import numpy as np
+
+from .. import model
+from .core import _feasible_at, make_candidate
+from .result import Certificate, SolveResult
+from .space import N_PER_UM, respond
+
+
+@contextlib.contextmanager
+def _quiet_stdout():
+    """Bonmin/CBC print node logs from C++ straight to file descriptor 1; send them to /dev/null."""
+    sys.stdout.flush()
+    try:
+        fd = sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):  # e.g. captured stdout without a descriptor
+        yield
+        return
+    saved = os.dup(fd)
+    try:
+        with open(os.devnull, "w") as null:
+            os.dup2(null.fileno(), fd)
+            yield
+    finally:
+        os.dup2(saved, fd)
+        os.close(saved)
+
+
+def _slot_params(space, mounting):
+    """Param name -> (slot, values) where slot is 'nut' | 'bearing' | 'guide' | 'axis'."""
+    ps = space.params_structured(mounting)
+    out = {}
+    for name, v in ps.items():
+        a = np.asarray(v, dtype=float)
+        if a.ndim == 0 or a.size == 1:
+            out[name] = ("axis", float(a.reshape(-1)[0]) if a.ndim else float(a))
+        elif a.shape[0] > 1 or (a.ndim == 4 and a.shape[1] == 1 and a.shape[2] == 1):
+            out[name] = ("nut", a.reshape(-1))
+        elif a.shape[1] > 1 or (a.ndim == 4 and a.shape[2] == 1):
+            out[name] = ("bearing", a.reshape(-1))
+        else:
+            out[name] = ("guide", a.reshape(-1))
+    return out
+
+
+def _build(space, mounting, constraints, objective):
+    _, N, B, G = space.shape
+    z = {"nut": ca.SX.sym("z_nut", N), "bearing": ca.SX.sym("z_bearing", B), "guide": ca.SX.sym("z_guide", G)}
+    w = ca.SX.sym("w")
+    t = ca.SX.sym("t", len(objective.terms))
+    p = {}
+    for name, (slot, vals) in _slot_params(space, mounting).items():
+        p[name] = vals if slot == "axis" else ca.dot(ca.DM(vals), z[slot])
+    lo = ca.dot(ca.DM(space.preload_lo), z["nut"])
+    hi = ca.dot(ca.DM(space.preload_hi), z["nut"])
+    x = space.positions(mounting)
+    out = model.axis_response(p, ca.DM(x), mounting, lo + w * (hi - lo))
+    g, lbg, ubg = [], [], []
+    for s in ("nut", "bearing", "guide"):
+        g.append(ca.sum1(z[s]))
+        lbg.append(1.0)
+        ubg.append(1.0)
+    for i, (key, _w) in enumerate(objective.terms):
+        v = out[key] / N_PER_UM if key == "k_total" else out[key]
+        g.append(v - t[i])
+        lbg += [0.0] * v.shape[0]
+        ubg += [ca.inf] * v.shape[0]
+    for c in constraints:
+        v = out[c.key]
+        if c.key == "life" or c.key.startswith("margin_"):
+            e = ca.log(ca.fmax(v, 1e-300) / c.limit)
+        else:
+            e = v / c.limit - 1.0
+        n = v.shape[0]
+        g.append(e)
+        lbg += [0.0 if c.sense == ">=" else -ca.inf] * n
+        ubg += [ca.inf if c.sense == ">=" else 0.0] * n
+    xvar = ca.vertcat(z["nut"], z["bearing"], z["guide"], w, t)
+    f = -sum(wt * t[i] for i, (_k, wt) in enumerate(objective.terms))
+    discrete = [True] * (N + B + G) + [False] * (1 + len(objective.terms))
+    return {"x": xvar, "f": f, "g": ca.vertcat(*g)}, np.array(lbg), np.array(ubg), discrete
+
+
+def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 100.0, top: int = 1,
+                 t0: float | None = None) -> SolveResult:
+    t0 = time.perf_counter() if t0 is None else t0
+    _, N, B, G = space.shape
+    best = None
+    statuses, notes = [], []
+    n_solves = 0
+    if N == 0 or B == 0 or G == 0:
+        statuses.append("empty search space")
+    for mi, mounting in enumerate(space.mountings):
+        if N == 0 or B == 0 or G == 0:
+            break
+        remaining = time_limit - (time.perf_counter() - t0)
+        if remaining <= 0.5:
+            statuses.append(f"{mounting}: not run (time limit)")
+            continue
+        nlp, lbg, ubg, discrete = _build(space, mounting, constraints, objective)
+        opts = {"discrete": discrete, "print_time": False, "bonmin.time_limit": float(remaining),
+                "bonmin.bb_log_level": 0, "bonmin.nlp_log_level": 0, "bonmin.fp_log_level": 0,
+                "bonmin.lp_log_level": 0, "bonmin.milp_log_level": 0, "bonmin.oa_log_level": 0,
+                "bonmin.print_level": 0, "bonmin.sb": "yes"}
+        solver = ca.nlpsol(f"bonmin_{mounting.replace('-', '_')}", "bonmin", nlp, opts)
+        nt = len(objective.terms)
+        x0 = np.concatenate([np.full(N, 1.0 / N), np.full(B, 1.0 / B), np.full(G, 1.0 / G), [1.0], np.zeros(nt)])
+        lbx = np.concatenate([np.zeros(N + B + G + 1), np.full(nt, -np.inf)])
+        ubx = np.concatenate([np.ones(N + B + G + 1), np.full(nt, np.inf)])
+        n_solves += 1
+        try:
+            with _quiet_stdout():
+                sol = solver(x0=x0, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg)
+        except RuntimeError as exc:  # Bonmin aborts on NaN derivatives etc.: report it, do not hide it
+            last = [ln for ln in str(exc).splitlines() if ln.strip()][-1]
+            statuses.append(f"{mounting}: ERROR ({last.split(': ', 1)[-1].strip()})")
+            continue
+        st = solver.stats()
+        status = str(st.get("return_status", "unknown"))
+        statuses.append(f"{mounting}: {status}")
+        xs = np.asarray(sol["x"]).ravel()
+        if not st.get("success", False) and status not in ("SUCCESS",):
+            # Bonmin may still carry an integer feasible point (e.g. on the time limit); check it below
+            pass
+        zn, zb, zg = xs[:N], xs[N:N + B], xs[N + B:N + B + G]
+        if not (np.isclose(zn.max(), 1.0, atol=1e-6) and np.isclose(zb.max(), 1.0, atol=1e-6)
+                and np.isclose(zg.max(), 1.0, atol=1e-6)):
+            notes.append(f"{mounting}: no integer solution returned")
+            continue
+        n, b, g = int(np.argmax(zn)), int(np.argmax(zb)), int(np.argmax(zg))
+        combo = int(np.ravel_multi_index((mi, n, b, g), space.shape))
+        lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
+        pre = lo + float(np.clip(xs[N + B + G], 0, 1)) * (hi - lo)
+        if not _feasible_at(space, combo, pre, constraints):
+            # tolerate Bonmin's constraint tolerance: back the preload off within 1e-6 of the range
+            pre2 = max(lo, pre - 1e-6 * max(hi - lo, 1.0))
+            if _feasible_at(space, combo, pre2, constraints):
+                pre = pre2
+            else:
+                notes.append(f"{mounting}: Bonmin's point violates a limit on exact re-evaluation "
+                             f"(combination {combo}, preload {pre:.1f} N)")
+                continue
+        cand = make_candidate(space, combo, pre, objective, rank=1)
+        if best is None or cand.objective > best.objective:
+            best = cand
+    all_success = all(s.split(": ", 1)[-1] == "SUCCESS" for s in statuses) and bool(statuses)
+    if best is None:
+        status = "infeasible" if all(s.endswith("INFEASIBLE") for s in statuses) and statuses else "solver_failed"
+    else:
+        status = "feasible"  # Bonmin's B-BB on a nonconvex problem proves nothing
+    cert = Certificate(combinations=space.size, feasible=-1, pruned_by_bound=0, exact_evaluations=0,
+                       nlps_solved=n_solves, nlp_failures=sum(1 for s in statuses if not s.endswith("SUCCESS")),
+                       gap=float("nan"), proven=False,
+                       notes=tuple(["Bonmin B-BB on a nonconvex MINLP: a heuristic, no optimality proof"]
+                                   + notes))
+    msg = "; ".join(statuses + notes)
+    if all_success:
+        msg = "Bonmin reported SUCCESS for every mounting (local, not a global proof); " + msg
+    return SolveResult(status, "bonmin", problem.name, objective.label, objective.unit, best, [], cert,
+                       time.perf_counter() - t0, message=msg, solver_status="; ".join(statuses))
+
+
+__all__ = ["solve_bonmin", "respond"]

@@ -1,0 +1,148 @@
+"""``axisopt solve PROBLEM.yaml``: the sizing search from the command line."""
+
+from __future__ import annotations
+
+import math
+
+from .cliutil import EXIT_NEGATIVE, EXIT_OK, write_json
+
+
+def register(sub) -> None:
+    s = sub.add_parser("solve", help="choose parts and preload that maximise stiffness/frequency (proven)")
+    s.add_argument("problem", help="problem YAML file")
+    s.add_argument("--method", choices=("default", "exhaustive", "bonmin"), default="default",
+                   help="default: proven optimum (bounds); exhaustive: every combination; bonmin: MINLP")
+    s.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
+    s.add_argument("--plot", metavar="FILE.png", help="plot the best designs (or the Pareto front)")
+    s.add_argument("--top", type=int, default=5, metavar="N", help="designs to show (best + runners-up)")
+    s.add_argument("--time-limit", type=float, default=100.0, metavar="S", help="Bonmin time limit [s]")
+    s.add_argument("--no-sensitivity", action="store_true",
+                   help="skip re-solving with each limit relaxed by 10 %%")
+    s.set_defaults(func=cmd_solve)
+
+
+def cmd_solve(args) -> int:
+    from .errors import InputError
+    from .problem import load_problem
+    from .search import solve
+
+    if args.top < 1:
+        raise InputError(f"--top must be at least 1, got {args.top}")
+    if args.time_limit <= 0:
+        raise InputError(f"--time-limit must be positive, got {args.time_limit}")
+    problem = load_problem(args.problem)
+    res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
+                sensitivities=not args.no_sensitivity)
+    quiet = args.json == "-"
+    if not quiet:
+        print(format_result(res))
+    if args.json:
+        d = res.to_dict()
+        if res.best is not None and res.best.design is not None:
+            from .model import evaluate
+            from .report import evaluation_dict
+
+            d["evaluation"] = evaluation_dict(evaluate(res.best.design))
+        write_json(d, args.json)
+    if args.plot:
+        if res.pareto is not None:
+            from .search.pareto import plot_pareto
+
+            plot_pareto(res.pareto, args.plot)
+        elif res.best is not None:
+            from .model import evaluate
+            from .report import plot_profiles
+
+            cands = [res.best] + list(res.runners_up)
+            plot_profiles([evaluate(c.design) for c in cands], args.plot,
+                          labels=[f"#{c.rank} {c.nut} / {c.bearing} ({c.mounting})" for c in cands])
+        if not quiet:
+            print(f"\nplot written to {args.plot}")
+    return EXIT_OK if res.status in ("optimal", "feasible") else EXIT_NEGATIVE
+
+
+def _n(v, nd=1):
+    if v is None or (isinstance(v, float) and not math.isfinite(v)):
+        return "-"
+    return f"{v:,.{nd}f}"
+
+
+def format_result(res) -> str:
+    from .model import evaluate
+    from .report import evaluation_table
+
+    c = res.certificate
+    L = [f"problem {res.problem}: {res.objective_label}",
+         f"method {res.method}: status {res.status}"
+         + (" (proven global optimum over the catalog)" if res.status == "optimal" and c.proven else "")
+         + f", {res.time:.2f} s" + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else "")]
+    if res.message:
+        L.append(f"  note: {res.message}")
+    L.append("")
+    if res.pareto is not None:
+        L.append(format_pareto(res.pareto))
+    elif res.best is not None:
+        b = res.best
+        L.append(f"best: {b.objective:,.3f} {res.objective_unit}")
+        L.append(evaluation_table(evaluate(b.design)))
+        if res.binding:
+            L.append("")
+            L.append("limits at the optimum (what relaxing each by 10 % buys, re-solved)")
+            L.append(f"  {'limit':<18}{'value':>12}{'at optimum':>12}{'relaxed to':>12}{'gain':>14}")
+            for bd in res.binding:
+                gain = "-" if bd.objective_gain is None or not math.isfinite(bd.objective_gain) else \
+                    f"{bd.objective_gain:+.4g} {res.objective_unit}"
+                L.append(f"  {bd.limit:<18}{_n(bd.value, 3):>12}{_n(bd.at_optimum, 3):>12}"
+                         f"{_n(bd.relaxed_to, 3):>12}{gain:>14}  {bd.unit}{'  BINDING' if bd.binding else ''}")
+            for bd in res.binding:
+                if bd.binding:
+                    verb = "raising" if bd.limit.startswith("max") else "lowering"
+                    L.append(f"  {verb} {bd.limit.replace('_', ' ')} to {_n(bd.relaxed_to, 3)} {bd.unit} buys "
+                             f"{bd.objective_gain:+.4g} {res.objective_unit}")
+        if res.runners_up:
+            L.append("")
+            L.append("best designs")
+            L.append(_cand_table([b] + list(res.runners_up), res.objective_unit))
+    if res.infeasibility is not None:
+        inf = res.infeasibility
+        if inf.unmeetable:
+            L.append("limits no catalog combination can meet (each checked on its own, best preload):")
+            for name, best, lim, unit in inf.unmeetable:
+                L.append(f"  {name}: limit {lim:,.3g} {unit}, best any combination reaches {best:,.3g} {unit}")
+        else:
+            L.append("every limit is met by some combination, but no combination meets all of them together")
+        L.append("")
+        L.append("closest designs (sum of relative misses):")
+        for cand in inf.closest:
+            miss = ", ".join(f"{k} by {100 * v:.1f} %" for k, v in cand.misses.items())
+            L.append(f"  #{cand.rank} {cand.mounting} {cand.screw} / {cand.nut} / {cand.bearing} / {cand.guide}"
+                     f" preload {cand.nut_preload:.0f} N: misses {miss or 'nothing'}")
+    L.append("")
+    L.append("certificate")
+    L.append(f"  combinations {c.combinations:,}; feasible {c.feasible:,}"
+             f"{' (screened)' if res.method == 'default' else ''}; pruned by bound {c.pruned_by_bound:,}; "
+             f"exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} (failures {c.nlp_failures})")
+    gap = "0 (proven)" if c.proven and c.gap == 0 else ("unknown" if not math.isfinite(c.gap) else f"{c.gap:.3%}")
+    L.append(f"  optimality gap {gap}"
+             + (f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"
+                if c.screening_time else ""))
+    for n in c.notes:
+        L.append(f"  {n}")
+    return "\n".join(L)
+
+
+def _cand_table(cands, unit) -> str:
+    L = [f"  {'#':>2} {'mounting':<16}{'nut':<28}{'bearing':<22}{'guide':<18}{'preload N':>10}"
+         f"{'obj ' + unit:>14}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"]
+    for c in cands:
+        L.append(f"  {c.rank:>2} {c.mounting:<16}{c.nut:<28}{c.bearing:<22}{c.guide:<18}{c.nut_preload:>10.0f}"
+                 f"{c.objective:>14.3f}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}{c.cost:>10,.0f}"
+                 f"{c.total_mass:>9.1f}")
+    return "\n".join(L)
+
+
+def format_pareto(front) -> str:
+    L = [f"Pareto front: {len(front.points)} non-dominated designs of {front.feasible:,} feasible "
+         f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"]
+    L.append(_cand_table(front.points, "-"))
+    return "\n".join(L)

@@ -1,0 +1,17 @@
+"""Compare designs and run batch trade studies (local process pool by default, Dask when asked).
+
+* :mod:`.compare`: ``axisopt compare`` -- designs side by side, problems solved to their best design.
+* :mod:`.spec`: study files (a base problem plus sweeps over its fields) expanded into cases.
+* :mod:`.run`: one solve per case in worker processes or on a Dask cluster, saved as each completes,
+  resumable.
+* :mod:`.table`: the results table (CSV, Parquet), summary plots and the Markdown report.
+"""
+
+from __future__ import annotations
+
+from .run import OK_STATUSES, CaseStore, Progress, RunSummary, run_study, solve_case
+from .spec import Case, Study, Sweep, apply_overrides, build_problem, load_study
+from .table import results_table, write_outputs
+
+__all__ = ["load_study", "run_study", "results_table", "write_outputs", "Study", "Sweep", "Case", "Progress",
+           "RunSummary", "CaseStore", "solve_case", "build_problem", "apply_overrides", "OK_STATUSES"]

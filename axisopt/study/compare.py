@@ -1,0 +1,205 @@
+"""Side-by-side comparison of designs (design YAMLs, or problem YAMLs solved to their best design).
+
+``load_compared(paths)`` returns one :class:`Compared` per file; ``compare_table`` is the text table
+``axisopt compare`` prints, ``compare_dict`` / ``compare_rows`` the JSON and CSV forms.  The weakest
+link of each design (the component with the lowest stiffness where the total is lowest) is marked.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from ..model import CHECK_LABELS, CHECKS, Evaluation, evaluate
+from ..report import N_PER_UM, evaluation_dict
+from ..yamlio import read_yaml
+
+
+@dataclass
+class Compared:
+    label: str
+    source: str
+    kind: str  # 'design' | 'problem'
+    evaluation: Evaluation | None
+    solve: dict | None = None  # for a problem: status, objective, certificate
+
+    @property
+    def ok(self) -> bool:
+        return self.evaluation is not None
+
+
+def file_kind(path) -> str:
+    """'design' when the YAML names its parts, else 'problem'."""
+    root = read_yaml(path)
+    if not isinstance(root.value, dict):
+        raise InputError("expected a design or problem mapping", source=str(path))
+    return "design" if "parts" in root.value else "problem"
+
+
+def load_compared(paths, method: str = "default") -> list:
+    from ..design import load_design
+
+    out = []
+    for p in paths:
+        kind = file_kind(p)
+        if kind == "design":
+            d = load_design(p)
+            out.append(Compared(d.name, str(p), kind, evaluate(d)))
+            continue
+        from ..problem import load_problem
+        from ..search import solve
+
+        prob = load_problem(p)
+        res = solve(prob, method, top=1, sensitivities=False)
+        info = {"status": res.status, "method": res.method, "objective": res.objective_label,
+                "objective_value": None if res.best is None else res.best.objective,
+                "objective_unit": res.objective_unit, "proven": bool(res.certificate.proven),
+                "message": res.message}
+        if res.best is None or res.best.design is None:
+            out.append(Compared(f"{prob.name} (solved)", str(p), kind, None, info))
+            continue
+        d = res.best.design
+        out.append(Compared(f"{prob.name} (solved)", str(p), kind, evaluate(d), info))
+    labels = [c.label for c in out]
+    for c in out:  # two files with one name: tell them apart by file name
+        if labels.count(c.label) > 1:
+            c.label = f"{c.label} [{Path(c.source).name}]"
+    return out
+
+
+def _components(ev: Evaluation) -> dict:
+    v = ev.values
+    i = int(np.argmin(v["k_total"]))
+    return {"screw": float(v["k_screw"][i]), "nut": float(v["k_nut"]), "bearings": float(v["k_bearing"])}
+
+
+def compare_table(items) -> str:
+    """The text table: one column per design, the weakest link of each marked with '<'."""
+    w0 = 44
+    width = max(16, *(min(30, len(c.label) + 2) for c in items))
+    rows: list = []
+
+    def row(name, cells):
+        rows.append(f"{name:<{w0}}" + "".join(f"{str(c)[:width - 1]:>{width}}" for c in cells))
+
+    def num(x, nd=1):
+        return "-" if x is None or (isinstance(x, float) and not math.isfinite(x)) else f"{x:,.{nd}f}"
+
+    row("", [c.label for c in items])
+    row("kind", [c.kind if c.ok else f"{c.kind}: {c.solve['status']}" for c in items])
+    evs = [c.evaluation for c in items]
+
+    def each(fn):
+        return [fn(e) if e is not None else "-" for e in evs]
+
+    row("mounting", each(lambda e: e.design.axis.mounting))
+    row("stroke [mm]", each(lambda e: num(e.design.axis.stroke * 1e3, 0)))
+    for slot in ("screw", "nut", "bearing", "guide"):
+        row(slot, each(lambda e, s=slot: e.design.part_ids()[s]))
+    row("nut preload [N]", each(lambda e: num(e.design.preload, 0)))
+    rows.append("")
+    rows.append("stiffness [N/um]  (< weakest link)")
+    comps = [_components(e) if e is not None else None for e in evs]
+    for comp, label in (("screw", "  screw (where total is min)"), ("nut", "  nut"), ("bearings", "  bearings")):
+        cells = []
+        for c in comps:
+            if c is None:
+                cells.append("-")
+                continue
+            mark = " <" if min(c, key=c.get) == comp else "  "
+            cells.append(num(c[comp] / N_PER_UM) + mark)
+        row(label, cells)
+    row("  total minimum", each(lambda e: num(e.minimum("k_total")[0] / N_PER_UM) + "  "))
+    row("  at [mm from stroke start]", each(lambda e: num(e.minimum("k_total")[1] * 1e3, 0) + "  "))
+    row("  weakest link", each(lambda e: e.weakest + "  "))
+    rows.append("")
+    rows.append("frequency [Hz]")
+    row("  1st natural, minimum", each(lambda e: num(e.minimum("f1")[0])))
+    row("  at [mm from stroke start]", each(lambda e: num(e.minimum("f1")[1] * 1e3, 0)))
+    row("  axial-torsional, minimum", each(lambda e: num(e.minimum("f_axial_torsional")[0])))
+    row("  table on guides", each(lambda e: num(e["f_table"])))
+    rows.append("")
+    row("drag torque [N.m]", each(lambda e: num(e["drag_torque"], 3)))
+    row("  nut / bearings / guides", each(lambda e: f"{e['drag_nut']:.2f}/{e['drag_bearings']:.2f}/"
+                                                    f"{e['drag_guides']:.2f}"))
+    row("moving mass [kg]", each(lambda e: num(e["moving_mass"])))
+    row("total mass [kg]", each(lambda e: num(e["total_mass"])))
+    row("cost [EUR]", each(lambda e: num(e["cost"], 0)))
+    rows.append("")
+    rows.append("checks (margin, >= 1 passes)")
+    for c in CHECKS:
+        def cell(e, c=c):
+            m = e[f"margin_{c}"]
+            return ("n/a" if m >= 1e8 else f"{m:.2f}") + ("  " if m >= 1.0 else " !")
+        row(f"  {CHECK_LABELS[c][:w0 - 3]}", each(cell))
+    row("all checks pass", each(lambda e: "yes" if min(e.checks().values()) >= 1.0 else "NO"))
+    solved = [c for c in items if c.solve is not None]
+    if solved:
+        rows.append("")
+        rows.append("solved problems")
+        for c in solved:
+            s = c.solve
+            val = "-" if s["objective_value"] is None else f"{s['objective_value']:,.3f} {s['objective_unit']}"
+            rows.append(f"  {c.label}: {s['status']} ({s['method']}), {s['objective']} = {val}")
+    return "\n".join(rows)
+
+
+def compare_dict(items) -> dict:
+    out = []
+    for c in items:
+        d = {"label": c.label, "source": c.source, "kind": c.kind, "solve": c.solve}
+        if c.evaluation is not None:
+            ev = evaluation_dict(c.evaluation)
+            comp = _components(c.evaluation)
+            ev["component_stiffness_at_min_N_per_um"] = {k: v / N_PER_UM for k, v in comp.items()}
+            fa, fapos = c.evaluation.minimum("f_axial_torsional")
+            ev["min_axial_torsional_frequency_Hz"] = fa
+            d["evaluation"] = ev
+        out.append(d)
+    return {"designs": out}
+
+
+def compare_rows(items) -> list:
+    """Flat rows (one per design) for the CSV."""
+    rows = []
+    for c in items:
+        r = {"label": c.label, "source": c.source, "kind": c.kind,
+             "status": c.solve["status"] if c.solve else "design"}
+        e = c.evaluation
+        if e is not None:
+            d = evaluation_dict(e)
+            comp = _components(e)
+            r.update({"mounting": d["mounting"], **d["parts"], "nut_preload [N]": d["nut_preload_N"],
+                      "stroke [mm]": e.design.axis.stroke * 1e3,
+                      "screw_stiffness_at_min [N/um]": comp["screw"] / N_PER_UM,
+                      "nut_stiffness [N/um]": comp["nut"] / N_PER_UM,
+                      "bearing_stiffness [N/um]": comp["bearings"] / N_PER_UM,
+                      "min_stiffness [N/um]": d["min_axial_stiffness_N_per_um"],
+                      "min_stiffness_at [mm]": d["min_axial_stiffness_position_mm"],
+                      "weakest_link": d["weakest_link"],
+                      "min_frequency [Hz]": d["min_natural_frequency_Hz"],
+                      "min_frequency_at [mm]": d["min_natural_frequency_position_mm"],
+                      "table_mode [Hz]": d["table_mode_Hz"],
+                      "drag_torque [N.m]": d["drag_torque_Nm"], "moving_mass [kg]": d["moving_mass_kg"],
+                      "total_mass [kg]": d["total_mass_kg"], "cost [EUR]": d["cost"],
+                      "all_checks_pass": d["all_checks_pass"]})
+            for k, v in d["checks"].items():
+                r[f"margin_{k}"] = v["margin"]
+        rows.append(r)
+    return rows
+
+
+def write_compare_csv(items, path) -> None:
+    import pandas as pd
+
+    try:
+        pd.DataFrame(compare_rows(items)).to_csv(path, index=False)
+    except OSError as exc:
+        raise InputError(f"cannot write CSV ({exc.strerror})", source=str(path)) from None
+
+
+__all__ = ["Compared", "load_compared", "compare_table", "compare_dict", "compare_rows", "write_compare_csv"]

@@ -1,0 +1,352 @@
+"""Study files: a base problem plus sweeps over any of its fields, expanded into cases.
+
+.. code-block:: yaml
+
+    name: vmc-stroke
+    description: free text
+    base: ../vmc_x_problem.yaml        # a problem YAML (relative to this file), or an inline problem mapping
+    method: default                    # solve method for every case (default | exhaustive | bonmin)
+    combine: product                   # product (every combination, default) | zip (n-th value of each key)
+    sweep:                             # dotted paths into the problem YAML
+      axis.stroke: [600 mm, 800 mm, 1000 mm]                     # a list of values
+      limits.max_cost: {from: 3000 EUR, to: 6000 EUR, steps: 4}  # an evenly spaced grid (same unit)
+      catalog.mountings: [[fixed-supported], [fixed-fixed]]      # values may be lists
+      axis.moving_mass: {random: {low: 300 kg, high: 700 kg, n: 20, seed: 1}}   # seeded uniform samples
+      catalog.guide_preload: {random: {choice: [[medium], [heavy]], n: 20, seed: 2}}
+      axis.acceleration: 4 m/s^2                                  # a single value: set for every case
+
+Every case is the base YAML tree with the swept values written in, read by the same
+:func:`axisopt.problem.read_problem` as ``axisopt solve`` uses, so its validation is identical.
+Each distinct list value (and each range's ends) is checked against the base when the study is
+read: a typo in a key or a bad value is a one-line :class:`InputError` naming the study key.
+Combinations that only fail together (e.g. a preload min above a swept max) become failed cases.
+"""
+
+from __future__ import annotations
+
+import copy
+import hashlib
+import itertools
+import json
+import re
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+
+from ..design import catalog_for
+from ..errors import InputError
+from ..problem import read_problem
+from ..yamlio import Node, Section, _plain, read_yaml
+
+METHODS = ("default", "exhaustive", "bonmin")
+COMBINE = ("product", "zip")
+_QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """One swept key: its dotted path, the values (as YAML would hold them) and how they were made."""
+
+    key: str
+    values: tuple
+    kind: str  # 'list' | 'range' | 'random' | 'fixed'
+    line: int = 0
+    checked: tuple = ()  # the values validated against the base problem when the study is read
+
+
+@dataclass(frozen=True)
+class Case:
+    """One solve: the case id, its position in the study and the values it writes into the base."""
+
+    case_id: str
+    index: int
+    overrides: tuple  # ((dotted key, plain value), ...)
+
+    def inputs(self) -> dict:
+        return dict(self.overrides)
+
+
+@dataclass(frozen=True)
+class Study:
+    name: str
+    description: str
+    source: str
+    base: Node = field(repr=False)  # the base problem's YAML tree
+    base_source: str = ""  # file the base tree came from (for error messages)
+    base_dir: str = "."  # directory that relative catalog paths in the base refer to
+    method: str = "default"
+    combine: str = "product"
+    sweeps: tuple = ()
+    cases: tuple = ()
+
+    @property
+    def keys(self) -> tuple:
+        return tuple(s.key for s in self.sweeps)
+
+    def fingerprint(self) -> str:
+        return _digest({"base": _plain(self.base), "method": self.method})
+
+    def context(self) -> dict:
+        """What a worker needs besides the cases: small, picklable, no catalog or solver objects."""
+        return {"base": self.base, "base_source": self.base_source, "base_dir": self.base_dir,
+                "method": self.method, "name": self.name}
+
+
+def load_study(path) -> Study:
+    """Read a study YAML into a :class:`Study` with its expanded cases (InputError naming the key)."""
+    path = Path(path)
+    src = str(path)
+    root = Section(read_yaml(path), src)
+    name = root.string("name", path.stem)
+    description = root.string("description", "") or ""
+    method = root.choice("method", METHODS, "default")
+    combine = root.choice("combine", COMBINE, "product")
+    base_node = root.raw("base", required=True)
+    if isinstance(base_node.value, str):
+        bpath = (path.parent / base_node.value)
+        if not bpath.is_file():
+            raise root.error("base", f"base problem '{base_node.value}' not found (relative to the study file)")
+        base = read_yaml(bpath)
+        base_source, base_dir = str(bpath), str(bpath.parent)
+    elif isinstance(base_node.value, dict):
+        base, base_source, base_dir = base_node, src, str(path.parent)
+    else:
+        raise root.error("base", "expected the path of a problem YAML or an inline problem mapping")
+    sweep_sec = root.section("sweep", required=True)
+    sweeps = tuple(_read_sweep(sweep_sec, k) for k in sweep_sec.keys())
+    if not sweeps:
+        raise root.error("sweep", "list at least one key to sweep")
+    root.done()
+    study = Study(name=name, description=description, source=src, base=base, base_source=base_source,
+                  base_dir=base_dir, method=method, combine=combine, sweeps=sweeps)
+    cases = expand(study, sweep_sec)  # checks zip lengths
+    _check_base(study, root)
+    return replace(study, cases=cases)
+
+
+# ------------------------------------------------------------------------------------------ sweeps
+
+def _read_sweep(sec: Section, key: str) -> Sweep:
+    node = sec.raw(key)
+    where = sec.where(key)
+    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_-]*(\.[A-Za-z_][A-Za-z0-9_-]*)*", key):
+        raise sec.error(key, f"sweep key '{key}' must be a dotted path into the problem, e.g. axis.stroke")
+    v = node.value
+    if isinstance(v, list):
+        values = tuple(_plain(n) for n in v)
+        if not values:
+            raise sec.error(key, "empty list of values")
+        return Sweep(key, values, "list", node.line, tuple(_unique(values)))
+    if isinstance(v, dict) and "random" in v:
+        sub = Section(node, sec.source, sec.key_path(key))
+        rs = sub.section("random", required=True)
+        sub.done()
+        n = int(rs.number("n", required=True, integer=True, minimum=1))
+        seed = rs.number("seed", required=True, integer=True)
+        rng = np.random.default_rng(int(seed))
+        if rs.has("choice"):
+            choices = rs.value("choice")
+            if not isinstance(choices, list) or not choices:
+                raise rs.error("choice", "expected a non-empty list of values")
+            idx = rng.integers(0, len(choices), n)
+            rs.done()
+            return Sweep(key, tuple(copy.deepcopy(choices[i]) for i in idx), "random", node.line,
+                         tuple(_unique(choices)))
+        lo, hi, unit = _pair(rs, "low", "high")
+        integer = rs.value("integer", False)
+        if not isinstance(integer, bool):
+            raise rs.error("integer", f"expected true or false, got {integer!r}")
+        rs.done()
+        draws = rng.uniform(lo, hi, n)
+        if integer:
+            draws = np.round(draws)
+        vals = tuple(_fmt(x, unit, integer) for x in draws)
+        return Sweep(key, vals, "random", node.line, (_fmt(lo, unit, integer), _fmt(hi, unit, integer)))
+    if isinstance(v, dict) and ("from" in v or "to" in v or "steps" in v):
+        rs = Section(node, sec.source, sec.key_path(key))
+        lo, hi, unit = _pair(rs, "from", "to")
+        steps = int(rs.number("steps", required=True, integer=True, minimum=1))
+        spacing = rs.choice("spacing", ("linear", "log"), "linear")
+        rs.done()
+        if spacing == "log":
+            if lo <= 0 or hi <= 0:
+                raise rs.error("spacing", "log spacing needs positive from and to")
+            grid = np.geomspace(lo, hi, steps)
+        else:
+            grid = np.linspace(lo, hi, steps)
+        vals = tuple(_fmt(x, unit, False) for x in grid)
+        return Sweep(key, vals, "range", node.line, (vals[0], vals[-1]))
+    if isinstance(v, dict):
+        raise InputError("expected a list of values, {from, to, steps}, {random: {...}} or one value",
+                         source=sec.source, where=where)
+    return Sweep(key, (v,), "fixed", node.line, (v,))
+
+
+def _pair(sec: Section, a: str, b: str):
+    na, nb = sec.raw(a, required=True), sec.raw(b, required=True)
+    xa, ua = _split(na.value, sec, a)
+    xb, ub = _split(nb.value, sec, b)
+    if ua != ub:
+        raise sec.error(b, f"'{a}' and '{b}' must use the same unit ('{ua}' vs '{ub}')")
+    if xb < xa:
+        raise sec.error(b, f"'{b}' ({nb.value}) is below '{a}' ({na.value})")
+    return xa, xb, ua
+
+
+def _split(v, sec: Section, key: str):
+    if isinstance(v, bool):
+        raise sec.error(key, f"expected a number with a unit, got {v!r}")
+    if isinstance(v, (int, float)):
+        return float(v), ""
+    m = _QTY.match(str(v))
+    if not m:
+        raise sec.error(key, f"cannot read '{v}' as a number with a unit")
+    return float(m.group(1)), m.group(2)
+
+
+def _fmt(x: float, unit: str, integer: bool):
+    num = int(round(float(x))) if integer else float(f"{float(x):.6g}")
+    return num if not unit else f"{num:.6g} {unit}"
+
+
+def _unique(values):
+    seen, out = set(), []
+    for v in values:
+        k = json.dumps(v, sort_keys=True, default=str)
+        if k not in seen:
+            seen.add(k)
+            out.append(v)
+    return out
+
+
+def _digest(obj) -> str:
+    return hashlib.sha1(json.dumps(obj, sort_keys=True, default=str).encode()).hexdigest()
+
+
+# ------------------------------------------------------------------------------------------- cases
+
+def expand(study: Study, sweep_sec: Section | None = None) -> tuple:
+    """The study's cases in order; ids combine the position with a hash of the base and the inputs,
+    so a changed study never reuses a stale result and identical inputs at two positions stay apart."""
+    rows = _rows(study, sweep_sec)
+    base = study.fingerprint()
+    width = max(4, len(str(len(rows) - 1)))
+    out = []
+    for i, row in enumerate(rows):
+        ov = tuple((s.key, v) for s, v in zip(study.sweeps, row))
+        h = _digest({"base": base, "inputs": [list(x) for x in ov]})[:10]
+        out.append(Case(f"{i:0{width}d}-{h}", i, ov))
+    return tuple(out)
+
+
+def _rows(study: Study, sweep_sec: Section | None = None) -> list:
+    sweeps = study.sweeps
+    if study.combine == "product":
+        return list(itertools.product(*(s.values for s in sweeps)))
+    lengths = {s.key: len(s.values) for s in sweeps if s.kind != "fixed"}
+    n = max(lengths.values(), default=1)
+    for k, m in lengths.items():
+        if m != n:
+            raise InputError(f"combine: zip needs the same number of values for every key; "
+                             f"'{k}' has {m}, another has {n}", source=study.source,
+                             where=sweep_sec.where(k) if sweep_sec else None)
+    return [tuple(s.values[0] if s.kind == "fixed" else s.values[i] for s in sweeps) for i in range(n)]
+
+
+def apply_overrides(base: Node, overrides, line: int = 0) -> Node:
+    """A copy of the base YAML tree with each dotted key set to its value (missing mappings created)."""
+    tree = copy.deepcopy(base)
+    for key, value in overrides:
+        parts = key.split(".")
+        node = tree
+        for j, p in enumerate(parts[:-1]):
+            if not isinstance(node.value, dict):
+                raise InputError(f"cannot set '{key}': '{'.'.join(parts[:j])}' is not a mapping in the base "
+                                 f"problem; sweep '{'.'.join(parts[:j])}' itself instead")
+            nxt = node.value.get(p)
+            if nxt is None:
+                nxt = Node({}, line)
+                node.value[p] = nxt
+            node = nxt
+        if not isinstance(node.value, dict):
+            where = ".".join(parts[:-1])
+            raise InputError(f"cannot set '{key}': '{where}' is a single value in the base problem, not a "
+                             f"mapping; sweep '{where}' itself instead")
+        node.value[parts[-1]] = _to_node(value, line)
+    return tree
+
+
+def _to_node(v, line: int) -> Node:
+    if isinstance(v, dict):
+        return Node({str(k): _to_node(x, line) for k, x in v.items()}, line)
+    if isinstance(v, list):
+        return Node([_to_node(x, line) for x in v], line)
+    return Node(v, line)
+
+
+def build_problem(context: dict, case: Case):
+    """The case's :class:`~axisopt.problem.Problem` (InputError if the combination is invalid)."""
+    tree = apply_overrides(context["base"], case.overrides)
+    root = Section(tree, context["base_source"])
+    catalog = catalog_for(root, Path(context["base_dir"]))  # cached per process
+    return read_problem(root, catalog, name=f"{context['name']}[{case.case_id}]")
+
+
+def _check_base(study: Study, root: Section) -> None:
+    """Read the base alone, then each distinct swept value against it, so that a typo or a bad value
+    is reported at once, naming the study key, instead of failing every case."""
+    ctx = study.context()
+    try:
+        build_problem(ctx, Case("base", -1, ()))
+    except InputError as exc:
+        raise InputError(f"base problem: {exc}", source=study.source, where=root.where("base")) from None
+    # every key with its first value, then each further distinct value on its own; with zip, the
+    # cases where a listed value first appears (the user paired those values explicitly)
+    first = tuple((s.key, s.checked[0]) for s in study.sweeps)
+    trials = [(None, first)]
+    if study.combine == "zip":
+        rows = _rows(study)
+        seen: set = set()
+        for row in rows:
+            for s, v in zip(study.sweeps, row):
+                k = (s.key, json.dumps(v, sort_keys=True, default=str))
+                if s.kind == "list" and k not in seen:
+                    seen.add(k)
+                    trials.append((s, tuple((x.key, y) for x, y in zip(study.sweeps, row))))
+        first = tuple((x.key, y) for x, y in zip(study.sweeps, rows[0]))
+    for i, s in enumerate(study.sweeps):
+        if study.combine == "zip" and s.kind == "list":
+            continue
+        for v in s.checked[1:] if study.combine != "zip" else s.checked:
+            trials.append((s, first[:i] + ((s.key, v),) + first[i + 1:]))
+    for s, ov in trials:
+        try:
+            build_problem(ctx, Case("check", -1, ov))
+        except InputError as exc:
+            culprit = s or _culprit(ctx, study.sweeps, exc)
+            value = dict(ov)[culprit.key]
+            raise InputError(f"sweep '{culprit.key}' value {json.dumps(value, default=str)}: {short_message(exc)}",
+                             source=study.source, where=f"line {culprit.line}") from None
+
+
+def _culprit(ctx, sweeps, exc) -> Sweep:
+    """The first sweep key that fails on its own against the base (else the first key)."""
+    for s in sweeps:
+        try:
+            build_problem(ctx, Case("check", -1, ((s.key, s.checked[0]),)))
+        except InputError:
+            return s
+    return sweeps[0]
+
+
+def short_message(exc: InputError) -> str:
+    """The message without the base file name and the made-up location of a swept value."""
+    msg = str(exc)
+    if exc.source and msg.startswith(exc.source + ": "):
+        msg = msg[len(exc.source) + 2:]
+    return re.sub(r"^line 0, (key '[^']*'): ", r"\1: ", msg)
+
+
+__all__ = ["Study", "Sweep", "Case", "load_study", "expand", "apply_overrides", "build_problem", "short_message"]
+

@@ -1,0 +1,337 @@
+"""The study's results: one table row per case (CSV and Parquet), summary plots, a Markdown report.
+
+The table is always assembled from the case files (``DIR/cases/*.json``), so it is the same whether
+the study ran in one go, was resumed, or ran on a Dask cluster.  Columns: ``case_id``, ``index``, the
+swept inputs (a quantity sweep becomes a number column with its unit in the name, e.g.
+``axis.stroke [mm]``; a list value such as a set of mountings is joined with ``+``), ``status``,
+``reason``, the objective, the chosen parts and preload, the design's minima over the stroke and where
+they occur, cost, masses, drag torque, life, the certificate, and the solve time.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+from .run import OK_STATUSES, CaseStore
+
+_QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+RESULT_COLUMNS = (
+    ("objective", ("objective", "value")), ("objective_unit", ("objective", "unit")),
+    ("mounting", ("best", "mounting")), ("screw", ("best", "screw")), ("nut", ("best", "nut")),
+    ("bearing", ("best", "bearing")), ("guide", ("best", "guide")),
+    ("nut_preload [N]", ("best", "nut_preload")),
+    ("min_stiffness [N/um]", ("best", "min_stiffness")),
+    ("min_stiffness_at [mm]", ("profile", "min_stiffness_position_mm")),
+    ("min_frequency [Hz]", ("best", "min_frequency")),
+    ("min_frequency_at [mm]", ("profile", "min_frequency_position_mm")),
+    ("weakest_link", ("profile", "weakest_link")),
+    ("cost [EUR]", ("best", "cost")), ("moving_mass [kg]", ("best", "moving_mass")),
+    ("total_mass [kg]", ("best", "total_mass")), ("drag_torque [N.m]", ("best", "drag_torque")),
+    ("life [h]", ("best", "life_h")),
+    ("proven", ("certificate", "proven")), ("gap", ("certificate", "gap")),
+    ("combinations", ("certificate", "combinations")), ("feasible", ("certificate", "feasible")),
+    ("nlps", ("certificate", "nlps")),
+)
+TIME_COLUMNS = ("solve_time [s]", "worker")  # differ between runs of the same study
+
+
+def input_columns(study) -> dict:
+    """sweep key -> (column name, converter) so that quantity sweeps become numeric columns."""
+    out = {}
+    for s in study.sweeps:
+        units = set()
+        numeric = True
+        for v in s.values:
+            if isinstance(v, bool) or isinstance(v, (list, dict)):
+                numeric = False
+                break
+            if isinstance(v, (int, float)):
+                units.add("")
+                continue
+            m = _QTY.match(str(v))
+            if not m:
+                numeric = False
+                break
+            units.add(m.group(2))
+        if numeric and len(units) == 1:
+            unit = units.pop()
+            name = f"{s.key} [{unit}]" if unit else s.key
+            out[s.key] = (name, _number)
+        else:
+            out[s.key] = (s.key, _text)
+    return out
+
+
+def _number(v):
+    if isinstance(v, (int, float)):
+        return float(v)
+    return float(_QTY.match(str(v)).group(1))
+
+
+def _text(v):
+    if isinstance(v, list):
+        return "+".join(_text(x) for x in v)
+    if isinstance(v, dict):
+        return ", ".join(f"{k}={_text(x)}" for k, x in v.items())
+    return str(v)
+
+
+def records(study, out_dir) -> list:
+    """The case records of the study's current cases that are present, in case order."""
+    store = CaseStore(out_dir)
+    out = []
+    for c in study.cases:
+        r = store.read(c.case_id)
+        if r is not None:
+            out.append(r)
+    return out
+
+
+def results_table(study, out_dir):
+    """pandas DataFrame, one row per finished case."""
+    import pandas as pd
+
+    cols = input_columns(study)
+    rows = []
+    for r in records(study, out_dir):
+        row = {"case_id": r["case_id"], "index": r["index"]}
+        for key, (name, conv) in cols.items():
+            row[name] = conv(r["inputs"].get(key))
+        row["status"] = r["status"]
+        row["reason"] = r.get("reason", "")
+        for name, (a, b) in RESULT_COLUMNS:
+            row[name] = (r.get(a) or {}).get(b)
+        pareto = r.get("pareto")
+        row["pareto_points"] = len(pareto["points"]) if pareto else None
+        row["solve_time [s]"] = r.get("time_s")
+        row["worker"] = r.get("worker", "")
+        rows.append(row)
+    columns = ["case_id", "index"] + [n for n, _ in cols.values()] + ["status", "reason"] \
+        + [n for n, _ in RESULT_COLUMNS] + ["pareto_points"] + list(TIME_COLUMNS)
+    df = pd.DataFrame(rows, columns=columns)
+    for n, _ in RESULT_COLUMNS:
+        if df[n].dropna().map(lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)).all() \
+                and n not in ("proven",):
+            df[n] = pd.to_numeric(df[n], errors="coerce")
+    df["proven"] = df["proven"].astype("boolean")
+    df["pareto_points"] = df["pareto_points"].astype("Int64")
+    return df
+
+
+def write_outputs(study, out_dir, summary=None) -> dict:
+    """Write ``results.csv``, ``results.parquet`` (when pyarrow is installed), the plots and
+    ``report.md`` into ``out_dir``; returns {name: path}."""
+    out = Path(out_dir)
+    df = results_table(study, out)
+    files = {}
+    files["csv"] = str(out / "results.csv")
+    df.to_csv(files["csv"], index=False)
+    try:
+        import pyarrow  # noqa: F401
+    except ImportError:
+        parquet_note = "Parquet not written: install pyarrow (pip install 'axisopt[parquet]')"
+    else:
+        files["parquet"] = str(out / "results.parquet")
+        df.to_parquet(files["parquet"], index=False)
+        parquet_note = ""
+    plots = summary_plots(study, df, out / "plots", out)
+    files.update(plots)
+    files["report"] = str(out / "report.md")
+    (out / "report.md").write_text(markdown_report(study, df, files, summary, parquet_note), encoding="utf-8")
+    return files
+
+
+# ------------------------------------------------------------------------------------------- plots
+
+def _group_column(study, df, cols):
+    """The column that separates lines in the summary plots: the first non-numeric swept input,
+    else the chosen mounting."""
+    for name, conv in cols.values():
+        if conv is _text and df[name].nunique() > 1:
+            return name
+    return "mounting"
+
+
+def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
+    """Best minimum stiffness and frequency against each numeric swept input (one line per group),
+    and the cost / stiffness trade-off of all cases with its non-dominated cases marked."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    files = {}
+    ok = df[df["status"].isin(OK_STATUSES)]
+    if ok.empty:
+        return files
+    plot_dir.mkdir(parents=True, exist_ok=True)
+    cols = input_columns(study)
+    group = _group_column(study, ok, cols)
+    for key, (name, conv) in cols.items():
+        if conv is not _number or ok[name].nunique() < 2:
+            continue
+        fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+        for g, sub in ok.groupby(group, dropna=False, sort=True):
+            # best over the other inputs at each value of this one
+            k = sub.groupby(name)["min_stiffness [N/um]"].max()
+            f = sub.groupby(name)["min_frequency [Hz]"].max()
+            line = "-o" if len(k) < 40 else "."
+            a1.plot(k.index, k.values, line, ms=3, label=str(g))
+            a2.plot(f.index, f.values, line, ms=3, label=str(g))
+        a1.set_ylabel("best min. axial stiffness [N/um]")
+        a2.set_ylabel("best min. 1st frequency [Hz]")
+        a2.set_xlabel(name)
+        for ax in (a1, a2):
+            ax.grid(True, alpha=0.3)
+        a1.legend(title=group, fontsize=8)
+        fig.suptitle(f"{study.name}: best design against {key}", fontsize=10)
+        fig.tight_layout()
+        fname = plot_dir / f"best_vs_{_slug(key)}.png"
+        fig.savefig(fname, dpi=100)
+        plt.close(fig)
+        files[f"plot {key}"] = str(fname)
+    # trade-off over all cases: cost against minimum stiffness, non-dominated cases joined
+    pts = ok[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
+    if len(pts) >= 2:
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        for g, sub in ok.groupby(group, dropna=False, sort=True):
+            ax.scatter(sub["cost [EUR]"], sub["min_stiffness [N/um]"], s=12, label=str(g), alpha=0.7)
+        front = pareto_mask(pts["cost [EUR]"].to_numpy(), pts["min_stiffness [N/um]"].to_numpy())
+        fr = pts[front].sort_values("cost [EUR]")
+        ax.step(fr["cost [EUR]"], fr["min_stiffness [N/um]"], "k-", where="post", lw=1,
+                label="non-dominated cases")
+        ax.set_xlabel("cost [EUR]")
+        ax.set_ylabel("min. axial stiffness [N/um]")
+        ax.grid(True, alpha=0.3)
+        ax.legend(title=group, fontsize=8)
+        ax.set_title(f"{study.name}: stiffness against cost of every case's best design", fontsize=10)
+        fig.tight_layout()
+        fname = plot_dir / "tradeoff_cost_stiffness.png"
+        fig.savefig(fname, dpi=100)
+        plt.close(fig)
+        files["plot trade-off"] = str(fname)
+    # Pareto fronts of the cases (pareto-mode problems), overlaid on their first two objectives
+    fronts = [r for r in records(study, out_dir) if r.get("pareto")]
+    if fronts:
+        p0 = fronts[0]["pareto"]
+        kx, ky = p0["keys"][:2]
+        attr = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost",
+                "total_mass": "total_mass", "moving_mass": "moving_mass"}
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        for r in fronts[:12]:
+            xs = [p[attr[kx]] for p in r["pareto"]["points"]]
+            ys = [p[attr[ky]] for p in r["pareto"]["points"]]
+            ax.plot(xs, ys, ".", label=_label(r, cols))
+        ax.set_xlabel(f"{kx} [{p0['units'][0]}]")
+        ax.set_ylabel(f"{ky} [{p0['units'][1]}]")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+        ax.set_title(f"{study.name}: Pareto fronts" + (" (first 12 cases)" if len(fronts) > 12 else ""),
+                     fontsize=10)
+        fig.tight_layout()
+        fname = plot_dir / "pareto_fronts.png"
+        fig.savefig(fname, dpi=100)
+        plt.close(fig)
+        files["plot Pareto fronts"] = str(fname)
+    return files
+
+
+def _label(rec, cols) -> str:
+    return ", ".join(f"{k.split('.')[-1]}={_text(rec['inputs'][k])}" for k in cols if k in rec["inputs"])
+
+
+def pareto_mask(cost, stiffness):
+    """Non-dominated points: lower cost and higher stiffness are better."""
+    import numpy as np
+
+    order = np.lexsort((-stiffness, cost))
+    mask = np.zeros(len(cost), bool)
+    best = -math.inf
+    for i in order:
+        if stiffness[i] > best:
+            mask[i] = True
+            best = stiffness[i]
+    return mask
+
+
+def _slug(key: str) -> str:
+    return re.sub(r"[^A-Za-z0-9]+", "_", key).strip("_")
+
+
+# ------------------------------------------------------------------------------------------ report
+
+def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
+    out_dir = Path(files["csv"]).parent
+
+    def rel(p):
+        return Path(p).relative_to(out_dir).as_posix()
+
+    n = len(study.cases)
+    ok = df[df["status"].isin(OK_STATUSES)]
+    L = [f"# Study: {study.name}", ""]
+    if study.description:
+        L += [study.description.strip(), ""]
+    L += [f"- study file: `{study.source}`", f"- base problem: `{study.base_source}`",
+          f"- method: {study.method}; cases: {n} ({study.combine} of {len(study.sweeps)} swept keys)"]
+    if summary is not None:
+        L.append(f"- last run: {summary.solved} cases solved in {summary.time:.1f} s on {summary.backend}"
+                 + (f" ({summary.workers} workers)" if summary.workers else "")
+                 + (f", {summary.resumed} kept from an earlier run" if summary.resumed else ""))
+        if summary.lost:
+            L.append(f"- **{summary.lost} cases not run** ({summary.lost_reason}); rerun with `--resume`")
+    missing = n - len(df)
+    L.append(f"- finished: {len(df)} of {n}; solved: {len(ok)}; failed: {len(df) - len(ok)}"
+             + (f"; **missing: {missing}** (rerun with `--resume`)" if missing else ""))
+    L += ["", "## Sweeps", "", "| key | values | kind |", "|---|---|---|"]
+    for s in study.sweeps:
+        vals = [_text(v) for v in s.values]
+        shown = ", ".join(vals[:6]) + (f", ... ({len(vals)} values)" if len(vals) > 6 else "")
+        L.append(f"| `{s.key}` | {shown} | {s.kind} |")
+    L += ["", "## Results", "", f"- table: [results.csv]({rel(files['csv'])})"
+          + (f", [results.parquet]({rel(files['parquet'])})" if "parquet" in files else f" ({parquet_note})"),
+          "- one JSON file per case: `cases/<case_id>.json`", ""]
+    counts = df["status"].value_counts()
+    if len(counts):
+        L += ["| status | cases |", "|---|---|"] + [f"| {s} | {c} |" for s, c in counts.items()] + [""]
+    for name, p in files.items():
+        if name.startswith("plot"):
+            L += [f"### {name[5:]}", "", f"![{name[5:]}]({rel(p)})", ""]
+    if not ok.empty:
+        unit = ok["objective_unit"].dropna().iloc[0] if ok["objective_unit"].notna().any() else ""
+        cols = input_columns(study)
+        top = ok.sort_values("objective", ascending=False).head(10)
+        L += ["## Best cases", "", "| case | " + " | ".join(n for n, _ in cols.values())
+              + f" | objective [{unit}] | mounting | nut | bearing | guide | k [N/um] | f [Hz] | cost [EUR] |",
+              "|" + "---|" * (len(cols) + 9)]
+        for _, r in top.iterrows():
+            L.append(f"| {r['case_id']} | " + " | ".join(_cell(r[n]) for n, _ in cols.values())
+                     + f" | {_cell(r['objective'])} | {r['mounting']} | {r['nut']} | {r['bearing']} | {r['guide']}"
+                     f" | {_cell(r['min_stiffness [N/um]'])} | {_cell(r['min_frequency [Hz]'])}"
+                     f" | {_cell(r['cost [EUR]'], 0)} |")
+        L.append("")
+        L += ["## Parts chosen", ""]
+        for slot in ("mounting", "screw", "nut", "bearing", "guide"):
+            vc = ok[slot].value_counts().head(5)
+            L.append(f"- {slot}: " + ", ".join(f"{k} ({v})" for k, v in vc.items()))
+        L.append("")
+    bad = df[~df["status"].isin(OK_STATUSES)]
+    if not bad.empty:
+        L += ["## Failed cases", "", "| case | status | reason |", "|---|---|---|"]
+        for _, r in bad.head(50).iterrows():
+            L.append(f"| {r['case_id']} | {r['status']} | {str(r['reason']).replace('|', '/')[:300]} |")
+        if len(bad) > 50:
+            L.append(f"| ... | | {len(bad) - 50} more in the table |")
+        L.append("")
+    return "\n".join(L)
+
+
+def _cell(v, nd=1):
+    if isinstance(v, float):
+        return "-" if not math.isfinite(v) else f"{v:,.{nd}f}"
+    return str(v)
+
+
+__all__ = ["results_table", "write_outputs", "records", "input_columns", "pareto_mask"]

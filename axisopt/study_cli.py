@@ -1,0 +1,136 @@
+"""``axisopt compare A.yaml B.yaml ...`` and ``axisopt study STUDY.yaml``."""
+
+from __future__ import annotations
+
+import sys
+import time
+
+from .cliutil import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK, write_json
+from .errors import InputError
+
+
+def register(sub) -> None:
+    c = sub.add_parser("compare", help="compare designs (or solved problems) side by side")
+    c.add_argument("files", nargs="+", metavar="FILE.yaml",
+                   help="design YAMLs, or problem YAMLs (solved with the default method; the best design is used)")
+    c.add_argument("--json", metavar="FILE", help="write the comparison as JSON ('-' for stdout)")
+    c.add_argument("--csv", metavar="FILE", help="write one row per design as CSV")
+    c.add_argument("--plot", metavar="FILE.png", help="overlay stiffness and frequency over the stroke")
+    c.set_defaults(func=cmd_compare)
+
+    s = sub.add_parser("study", help="run a batch trade study (sweeps over a base problem)")
+    s.add_argument("study", help="study YAML file")
+    s.add_argument("--out", metavar="DIR", help="output directory (default: <study file stem>-results)")
+    s.add_argument("--workers", type=int, metavar="N",
+                   help="local worker processes (default: all cores; 0 solves in this process)")
+    s.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])")
+    s.add_argument("--resume", action="store_true",
+                   help="continue an interrupted study in --out, solving only the missing cases")
+    s.add_argument("--quiet", action="store_true", help="no progress bar")
+    s.set_defaults(func=cmd_study)
+
+
+def cmd_compare(args) -> int:
+    from .study.compare import compare_dict, compare_table, load_compared, write_compare_csv
+
+    items = load_compared(args.files)
+    if args.json != "-":
+        print(compare_table(items))
+    if args.json:
+        write_json(compare_dict(items), args.json)
+    if args.csv:
+        write_compare_csv(items, args.csv)
+    evs = [c for c in items if c.ok]
+    if args.plot and evs:
+        from .report import plot_profiles
+
+        plot_profiles([c.evaluation for c in evs], args.plot, labels=[c.label for c in evs])
+        if args.json != "-":
+            print(f"\nplot written to {args.plot}")
+    failed = [c for c in items if not c.ok]
+    for c in failed:
+        print(f"error: {c.source}: problem has no design to compare (status {c.solve['status']})", file=sys.stderr)
+    return EXIT_NEGATIVE if failed else EXIT_OK
+
+
+class _Bar:
+    """Progress on stderr: tqdm when installed, else one rewritten line."""
+
+    def __init__(self, enabled: bool):
+        self.enabled = enabled
+        self.tqdm = None
+        self.last = 0.0
+
+    def __call__(self, p) -> None:
+        if not self.enabled:
+            return
+        if self.tqdm is None:
+            try:
+                from tqdm import tqdm
+            except ImportError:
+                self.tqdm = False
+            else:
+                self.tqdm = tqdm(total=p.total, initial=p.done, unit="case", file=sys.stderr)
+                self.seen = p.done
+        if self.tqdm:
+            self.tqdm.update(p.done - self.seen)
+            self.seen = p.done
+            self.tqdm.set_postfix(failed=p.failed)
+            return
+        now = time.perf_counter()
+        if now - self.last < 0.25 and p.done < p.total:
+            return
+        self.last = now
+        eta = p.eta
+        left = "--" if eta is None else _hms(eta)
+        print(f"\r  {p.done}/{p.total} cases done, {p.failed} failed, {_hms(p.elapsed)} elapsed, "
+              f"{left} left   ", end="", file=sys.stderr, flush=True)
+
+    def close(self) -> None:
+        if not self.enabled:
+            return
+        if self.tqdm:
+            self.tqdm.close()
+        elif self.last:
+            print(file=sys.stderr)
+
+
+def _hms(s: float) -> str:
+    s = int(round(s))
+    return f"{s // 3600}:{s // 60 % 60:02d}:{s % 60:02d}" if s >= 3600 else f"{s // 60}:{s % 60:02d}"
+
+
+def cmd_study(args) -> int:
+    from pathlib import Path
+
+    from .study import load_study, run_study
+
+    study = load_study(args.study)
+    if args.workers is not None and args.workers < 0:
+        raise InputError(f"--workers must be 0 or more, got {args.workers}")
+    if args.scheduler and args.workers is not None:
+        raise InputError("--workers and --scheduler exclude each other (the cluster has its own workers)")
+    out = args.out or f"{Path(args.study).stem}-results"
+    bar = _Bar(not args.quiet)
+    try:
+        summary = run_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,
+                            progress=bar)
+    except KeyboardInterrupt:
+        bar.close()
+        print(f"interrupted: finished cases are saved in {out}/cases; continue with "
+              f"'axisopt study {args.study} --out {out} --resume'", file=sys.stderr)
+        return 130
+    bar.close()
+    s = summary
+    print(f"study {study.name}: {s.total} cases; {s.solved} solved now in {s.time:.1f} s on {s.backend}"
+          + (f" ({s.workers} workers)" if s.workers else "")
+          + (f", {s.resumed} kept from an earlier run" if s.resumed else "") + f"; {s.failed} failed")
+    if s.lost:
+        print(f"{s.lost} cases not run ({s.lost_reason}); rerun with --resume", file=sys.stderr)
+    for name, path in s.files.items():
+        print(f"  {name}: {path}")
+    return EXIT_NEGATIVE if s.lost else EXIT_OK
+
+
+__all__ = ["register", "EXIT_INPUT"]

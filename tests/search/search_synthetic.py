@@ -1,0 +1,77 @@
+"""Synthetic catalogs (SCHEMA columns, SI) and problems for the search tests; fixed seeds."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+from axisopt.catalog import SCHEMA, Catalog
+from axisopt.design import Axis
+from axisopt.model import CHECKS
+from axisopt.problem import Objective, Problem, Restrictions
+
+RPM = 2 * math.pi / 60
+
+
+def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_bearings=4, n_guides=4) -> Catalog:
+    screws, nuts, bearings, guides = [], [], [], []
+    for i in range(n_screws):
+        d = rng.choice([20, 25, 32, 40, 50]) * 1e-3
+        lead = rng.choice([5, 10, 20]) * 1e-3
+        ball = rng.choice([3.175, 4.763, 6.35]) * 1e-3
+        sid = f"S{i}"
+        screws.append({"id": sid, "vendor": "V", "series": "synthetic", "nominal_diameter": d, "lead": lead,
+                       "root_diameter": d - 1.2 * ball, "ball_diameter": ball, "max_length": rng.uniform(1.5, 5),
+                       "mass_per_length": 7850 * math.pi * d**2 / 4, "dn_limit": rng.uniform(1.2e5, 2.2e5) * 1e-3 * RPM,
+                       "price_per_length": rng.uniform(60, 250), "price_fixed": rng.uniform(100, 300)})
+        for j in range(nuts_per_screw):
+            c = rng.uniform(10e3, 80e3)
+            double = bool(rng.random() < 0.7)
+            nuts.append({"id": f"N{i}_{j}", "vendor": "V", "screw_id": sid, "type": "double" if double else "single",
+                         "stiffness": rng.uniform(150, 900) * 1e6,
+                         "stiffness_preload": (0.1 if double else 0.3) * c,
+                         "preload_min": 0.02 * c if double else 0.0, "preload_max": (0.1 if double else 0.02) * c,
+                         "dynamic_load_rating": c, "static_load_rating": 2 * c, "contact_angle": math.radians(45),
+                         "mass": rng.uniform(0.5, 4), "price": rng.uniform(200, 900)})
+    for i in range(n_bearings):
+        bore = rng.choice([12, 15, 17, 20, 25, 30]) * 1e-3
+        bearings.append({"id": f"B{i}", "vendor": "V", "series": "synthetic", "arrangement": "DB", "rows": 2,
+                         "bore": bore, "outer_diameter": bore + 0.03, "contact_angle": math.radians(60),
+                         "preload_class": rng.choice(["light", "medium", "heavy"]), "preload": rng.uniform(500, 3000),
+                         "axial_rigidity": rng.uniform(300, 1500) * 1e6, "lift_off_load": rng.uniform(3e3, 2e4),
+                         "dynamic_load_rating": rng.uniform(15e3, 40e3), "static_load_rating": 4e4,
+                         "limiting_speed": rng.uniform(3000, 9000) * RPM, "f0": 1.5, "f1": 0.0003,
+                         "mass": rng.uniform(0.2, 1.0), "price": rng.uniform(100, 500)})
+    for i in range(n_guides):
+        kn = rng.uniform(200, 900) * 1e6
+        guides.append({"id": f"G{i}", "vendor": "V", "series": "synthetic", "type": "ball", "size": 0.025,
+                       "preload_class": "Z0", "preload_level": rng.choice(["light", "medium", "heavy"]),
+                       "preload": rng.uniform(500, 3000), "normal_rigidity": kn, "tangential_rigidity": 0.71 * kn,
+                       "dynamic_load_rating": 3e4, "static_load_rating": 5e4, "friction_force": rng.uniform(3, 30),
+                       "friction_coefficient": 0.003, "friction_viscous": rng.uniform(3, 20), "damping": 3000.0,
+                       "block_mass": rng.uniform(0.2, 1.5), "rail_mass_per_length": rng.uniform(2, 6),
+                       "block_price": rng.uniform(50, 200), "rail_price_per_length": rng.uniform(50, 150)})
+
+    def df(rows, name):
+        d = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]))
+        d["_source"] = "synthetic"
+        return d.set_index("id", drop=False)
+
+    return Catalog(screws=df(screws, "screws"), nuts=df(nuts, "nuts"), bearings=df(bearings, "bearings"),
+                   guides=df(guides, "guides"))
+
+
+def make_problem(catalog, *, mode="stiffness", mountings=("fixed-supported", "fixed-fixed"), limits=None,
+                 stroke=0.6, objective=None, margins=None, **axis_kw) -> Problem:
+    kw = {"moving_mass": 300.0, "max_speed": 0.3, "axial_load": 3000.0, "acceleration": 3.0}
+    kw.update(axis_kw)
+    axis = Axis(stroke=stroke, mounting=mountings[0], **kw)
+    m = {c: 1.0 for c in CHECKS}
+    m.update(margins or {})
+    return Problem(axis=axis, catalog=catalog, objective=objective or Objective(mode=mode),
+                   limits=tuple(sorted((limits or {}).items())), margins=tuple(m.items()),
+                   restrictions=Restrictions(mountings=tuple(mountings)), name="synthetic")
+
+

@@ -1,0 +1,234 @@
+"""The default search equals exhaustive enumeration; certificates, interior preloads, infeasibility,
+Pareto, Bonmin reference, problem YAML and CLI.  Fixed seeds; no timing assertions."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+from search_synthetic import make_catalog, make_problem
+
+from axisopt.cli import main
+from axisopt.errors import InputError
+from axisopt.problem import Objective, load_problem
+from axisopt.search import solve
+from axisopt.search.core import exhaustive_search
+from axisopt.search.pareto import nondominated
+from axisopt.search.space import build_constraints, build_space, exact_solve, objective_spec
+
+PROBLEMS = sorted((Path(__file__).resolve().parents[2] / "problems").glob("*_problem.yaml"))
+
+
+def _same(a, b):
+    assert a.status == b.status
+    if a.best is None:
+        assert b.best is None
+        return
+    assert a.best.objective == pytest.approx(b.best.objective, rel=1e-6)
+    assert a.best.combination == b.best.combination
+    assert a.best.nut_preload == pytest.approx(b.best.nut_preload, rel=1e-5, abs=1e-3)
+
+
+@pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("mode", ["stiffness", "frequency", "weighted"])
+def test_default_equals_exhaustive_randomized(seed, mode):
+    rng = np.random.default_rng(seed)
+    cat = make_catalog(rng, n_screws=5, nuts_per_screw=3, n_bearings=8, n_guides=6)
+    ob = Objective(mode="weighted", weights=(("stiffness", 1.0), ("frequency", 2.0)),
+                   scale=(("stiffness", 100e6), ("frequency", 100.0))) if mode == "weighted" else Objective(mode=mode)
+    limits = {"max_cost": float(rng.uniform(2500, 5000)), "max_drag_torque": float(rng.uniform(0.4, 1.5))}
+    if seed % 2:
+        limits["min_life"] = float(rng.uniform(5e3, 3e4)) * 3600
+    p = make_problem(cat, objective=ob, limits=limits,
+                     mountings=("fixed-free", "fixed-supported", "fixed-fixed") if seed % 3 == 0
+                     else ("fixed-supported", "fixed-fixed"))
+    d = solve(p, "default", top=3, sensitivities=False)
+    e = solve(p, "exhaustive", top=3, sensitivities=False)
+    _same(d, e)
+    if d.best is not None:
+        assert d.certificate.proven and d.certificate.gap == 0.0
+        assert [c.combination for c in d.runners_up] == [c.combination for c in e.runners_up]
+        c = d.certificate
+        assert c.pruned_by_bound + c.exact_evaluations == c.feasible
+        assert c.combinations == e.certificate.combinations == build_space(p).size
+
+
+def _interior(p, key):
+    d = solve(p, "default", top=1, sensitivities=False)
+    e = solve(p, "exhaustive", top=1, sensitivities=False)
+    _same(d, e)
+    b = d.best
+    sp = build_space(p)
+    n = int(sp.unravel(b.combination)[1])
+    assert sp.preload_lo[n] + 1.0 < b.nut_preload < sp.preload_hi[n] - 1.0  # the limit, not the range, caps it
+    return b
+
+
+def test_drag_limit_makes_preload_interior():
+    cat = make_catalog(np.random.default_rng(7), n_screws=3, nuts_per_screw=2)
+    cat.nuts["type"] = "double"
+    free = solve(make_problem(cat, axial_load=800.0), "default", top=1, sensitivities=False).best
+    from axisopt.model import evaluate
+
+    ev = evaluate(free.design)
+    limit = ev["drag_torque"] - 0.3 * ev["drag_nut"]  # 30 % of the nut's drag must go
+    b = _interior(make_problem(cat, axial_load=800.0, limits={"max_drag_torque": float(limit)}), "max_drag_torque")
+    assert b.drag_torque == pytest.approx(limit, rel=1e-5)
+
+
+def test_life_limit_makes_preload_interior():
+    cat = make_catalog(np.random.default_rng(8), n_screws=3, nuts_per_screw=2)
+    cat.nuts["type"] = "double"
+    p0 = make_problem(cat, axial_load=800.0)
+    free = solve(p0, "default", top=1, sensitivities=False).best
+    p = make_problem(cat, axial_load=800.0, limits={"min_life": free.life_h * 3600 * 1.5})
+    b = _interior(p, "min_life")
+    assert b.life_h == pytest.approx(free.life_h * 1.5, rel=1e-4)
+
+
+def test_ipopt_agrees_with_exact_1d_solve():
+    from axisopt.search import nlp
+
+    cat = make_catalog(np.random.default_rng(3))
+    cat.nuts["type"] = "double"
+    p = make_problem(cat, axial_load=800.0, limits={"max_drag_torque": 0.6})
+    sp, cons, spec = build_space(p), build_constraints(p), objective_spec("stiffness")
+    ex = exact_solve(sp, np.arange(sp.size), cons, spec)
+    rng = np.random.default_rng(0)
+    for j in rng.choice(np.nonzero(ex.feasible)[0], size=4, replace=False):
+        m, n, b, g = (int(v) for v in sp.unravel(ex.idx[j]))
+        prm = sp.params_flat(sp.mountings[m], np.array([n]), np.array([b]), np.array([g]))
+        prm = {k: float(np.asarray(v).ravel()[0]) for k, v in prm.items()}
+        r = nlp.solve_preload(sp.mountings[m], sp.positions(sp.mountings[m]), prm, sp.preload_lo[n],
+                              sp.preload_hi[n], cons, spec, guess=0.5 * (sp.preload_lo[n] + sp.preload_hi[n]))
+        assert r.success, r.status
+        assert r.objective == pytest.approx(ex.objective[j], rel=1e-6)
+        assert r.preload == pytest.approx(ex.preload[j], rel=1e-5)
+
+
+def test_lexicographic_equals_exhaustive():
+    cat = make_catalog(np.random.default_rng(11))
+    ob = Objective(mode="lexicographic", order=("frequency", "stiffness"), tolerance=0.05)
+    p = make_problem(cat, objective=ob, limits={"max_cost": 4000.0})
+    d = solve(p, "default", top=2, sensitivities=False)
+    e = solve(p, "exhaustive", top=2, sensitivities=False)
+    _same(d, e)
+    f_best = solve(p.with_objective(Objective(mode="frequency")), top=1, sensitivities=False).best.min_frequency
+    assert d.best.min_frequency >= f_best * 0.95 * (1 - 1e-9)
+
+
+def test_infeasible_problem_is_explained():
+    cat = make_catalog(np.random.default_rng(5))
+    p = make_problem(cat, limits={"max_cost": 50.0, "min_stiffness": 5e9})
+    for method in ("default", "exhaustive"):
+        r = solve(p, method, sensitivities=False)
+        assert r.status == "infeasible" and r.best is None
+    names = [u[0] for u in r.infeasibility.unmeetable]
+    assert "max cost" in names and "min stiffness" in names
+    assert r.infeasibility.closest and all(c.misses for c in r.infeasibility.closest)
+
+
+def test_sensitivity_reports_binding_drag_limit():
+    cat = make_catalog(np.random.default_rng(7))
+    cat.nuts["type"] = "double"
+    p = make_problem(cat, axial_load=800.0, limits={"max_drag_torque": 0.6, "max_cost": 1e5})
+    r = solve(p, "default", top=1)
+    assert r.status == "optimal"
+    by = {b.limit: b for b in r.binding}
+    assert by["max_drag_torque"].binding and by["max_drag_torque"].objective_gain > 0
+    assert not by["max_cost"].binding
+
+
+def test_nondominated_matches_pairwise():
+    rng = np.random.default_rng(2)
+    P = np.round(rng.normal(size=(700, 4)), 1)  # rounding makes ties and duplicates
+    ge = (P[:, None, :] >= P[None, :, :]).all(-1)
+    gt = (P[:, None, :] > P[None, :, :]).any(-1)
+    naive = np.nonzero(~(ge & gt).any(0))[0]
+    np.testing.assert_array_equal(nondominated(P, block=64), naive)
+
+
+def test_pareto_default_equals_exhaustive():
+    cat = make_catalog(np.random.default_rng(4))
+    ob = Objective(mode="pareto", pareto=("stiffness", "frequency", "cost", "total_mass"))
+    p = make_problem(cat, objective=ob, limits={"max_drag_torque": 1.0})
+    d, e = solve(p, "default"), solve(p, "exhaustive")
+    assert d.status == e.status == "optimal"
+    assert sorted(c.combination for c in d.pareto.points) == sorted(c.combination for c in e.pareto.points)
+    # brute force over the exact per-combination values
+    sp = build_space(p)
+    ex, _ = exhaustive_search(sp, build_constraints(p), objective_spec("stiffness"))
+    ok = np.nonzero(ex.feasible)[0]
+    P = np.column_stack([ex.min_stiffness[ok], ex.min_frequency[ok], -ex.cost[ok], -ex.total_mass[ok]])
+    ge = (P[:, None, :] >= P[None, :, :]).all(-1)
+    gt = (P[:, None, :] > P[None, :, :]).any(-1)
+    assert sorted(ex.idx[ok][~(ge & gt).any(0)].tolist()) == sorted(c.combination for c in d.pareto.points)
+
+
+def test_bonmin_reports_status_and_never_beats_the_proven_optimum():
+    cat = make_catalog(np.random.default_rng(9), n_screws=2, nuts_per_screw=1, n_bearings=2, n_guides=2)
+    p = make_problem(cat, mountings=("fixed-supported",), limits={"max_drag_torque": 0.8})
+    d = solve(p, "default", top=1, sensitivities=False)
+    b = solve(p, "bonmin", time_limit=30)
+    assert b.status in ("feasible", "infeasible", "solver_failed", "time_limit")
+    assert b.solver_status and not b.certificate.proven
+    if b.best is not None:
+        assert b.best.objective <= d.best.objective * (1 + 1e-6)
+
+
+# ----------------------------------------------------------------------------- YAML and CLI
+@pytest.mark.parametrize("path", PROBLEMS, ids=[p.stem for p in PROBLEMS])
+def test_shipped_problems_load(path):
+    p = load_problem(path)
+    assert p.mountings and p.objective.mode
+
+
+def _write(tmp_path, text):
+    f = tmp_path / "p_problem.yaml"
+    f.write_text(text)
+    return f
+
+
+BASE = """axis:
+  stroke: 400 mm
+  moving_mass: 100 kg
+  mounting: fixed-supported
+  max_speed: 20 m/min
+  axial_load: 1000 N
+"""
+
+
+@pytest.mark.parametrize("extra, needle", [
+    ("limits:\n  max_cots: 100 EUR\n", "max_cots"),
+    ("limits:\n  max_cost: 100\n", "max_cost"),
+    ("catalog:\n  require: {nut: NO-SUCH-NUT}\n", "NO-SUCH-NUT"),
+    ("catalog:\n  mountings: [fixed-flexible]\n", "mountings"),
+    ("objective: fastest\n", "objective"),
+    ("continuous:\n  nut_preload: {min: 5 kN, max: 1 kN}\n", "max"),
+    ("limits:\n  margins: {critcal_speed: 1.2}\n", "critcal_speed"),
+])
+def test_bad_problem_files_are_one_line_input_errors(tmp_path, extra, needle, capsys):
+    f = _write(tmp_path, BASE + extra)
+    with pytest.raises(InputError) as ei:
+        load_problem(f)
+    assert str(f) in str(ei.value) and needle in str(ei.value)
+    assert main(["solve", str(f)]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1
+
+
+def test_cli_solve_json_and_exit_codes(tmp_path, capsys):
+    root = Path(__file__).resolve().parents[2] / "problems"
+    out = tmp_path / "r.json"
+    assert main(["solve", str(root / "teaching_problem.yaml"), "--json", str(out), "--top", "2",
+                 "--plot", str(tmp_path / "p.png")]) == 0
+    d = json.loads(out.read_text())
+    assert d["status"] == "optimal" and d["certificate"]["gap"] == 0.0
+    assert set(d["best"]) >= {"screw", "nut", "bearing", "guide", "nut_preload", "objective"}
+    assert "evaluation" in d and (tmp_path / "p.png").exists()
+    text = capsys.readouterr().out
+    assert "certificate" in text and "checks" in text
+    assert main(["solve", str(root / "infeasible_problem.yaml"), "--no-sensitivity"]) == 1
+    assert "closest designs" in capsys.readouterr().out

@@ -1,0 +1,46 @@
+"""``axisopt compare`` on the shipped designs and a problem (solved to its best design)."""
+
+from __future__ import annotations
+
+import json
+
+import pandas as pd
+from study_helpers import PROBLEMS
+
+from axisopt.cli import main
+
+
+def test_compare_designs_and_a_problem(tmp_path, capsys):
+    files = [PROBLEMS / "vmc_x_design.yaml", PROBLEMS / "teaching_design.yaml", PROBLEMS / "teaching_problem.yaml"]
+    js, csv, png = tmp_path / "c.json", tmp_path / "c.csv", tmp_path / "c.png"
+    rc = main(["compare", *map(str, files), "--json", str(js), "--csv", str(csv), "--plot", str(png)])
+    assert rc == 0
+    out = capsys.readouterr().out
+    assert "teaching (solved)" in out and "weakest link" in out and "all checks pass" in out
+    # each design's weakest component carries the marker exactly once
+    comp_rows = [ln for ln in out.splitlines() if ln.startswith(("  screw (where", "  nut ", "  bearings "))]
+    assert sum(ln.count(" <") for ln in comp_rows) == 3
+    d = json.loads(js.read_text())
+    assert [x["kind"] for x in d["designs"]] == ["design", "design", "problem"]
+    ev = d["designs"][0]["evaluation"]
+    assert ev["weakest_link"] == "screw" and ev["min_axial_stiffness_N_per_um"] > 0
+    assert d["designs"][2]["solve"]["status"] == "optimal"
+    df = pd.read_csv(csv)
+    assert len(df) == 3 and {"min_stiffness [N/um]", "min_frequency_at [mm]", "cost [EUR]",
+                             "margin_critical_speed", "weakest_link"} <= set(df.columns)
+    assert png.stat().st_size > 10_000
+
+
+def test_compare_json_to_stdout_and_errors(tmp_path, capsys):
+    assert main(["compare", str(PROBLEMS / "teaching_design.yaml"), "--json", "-"]) == 0
+    assert json.loads(capsys.readouterr().out)["designs"][0]["label"] == "teaching axis 25x5"
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("name: x\naxis: {stroke: 800}\nparts: {}\n")
+    assert main(["compare", str(bad)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "stroke" in err
+
+
+def test_compare_infeasible_problem_exits_1(capsys):
+    assert main(["compare", str(PROBLEMS / "teaching_design.yaml"), str(PROBLEMS / "infeasible_problem.yaml")]) == 1
+    assert "no design to compare" in capsys.readouterr().err
