@@ -158,13 +158,14 @@ def nut_life_load(preload, axial_load, double):
     return double * loaded + (1.0 - double) * mx.fmax(axial_load, 1e-9)
 
 
-def axis_response(p: dict, x, mounting: str, preload) -> dict:
+def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> dict:
     """Evaluate the axis model.  See module docstring.
 
     p        : dict of :data:`PARAM_NAMES` -> float / ndarray / CasADi
     x        : nut positions, fixed bearing to nut [m]
     mounting : 'fixed-free' | 'fixed-supported' | 'fixed-fixed'
     preload  : nut preload [N] (float / ndarray / CasADi)
+    extras   : also compute the axial-torsional frequency and the damping ratio (screening skips them)
     Returns a dict: per-position arrays (``k_screw``, ``k_total``, ``f_axial``, ``f1``),
     per-design scalars (``k_nut``, ``k_bearing``, ``f_table``, ``drag_torque``, masses, ``cost``)
     and ``margin_<check>`` for each of :data:`CHECKS` (>= 1 passes).
@@ -172,7 +173,10 @@ def axis_response(p: dict, x, mounting: str, preload) -> dict:
     span = p["span"]
     # --- stiffness chain (N/m)
     k_s = ps.screw_stiffness(p["root_diameter"], x, span, mounting)
-    k_n = pn.nut_stiffness_catalog(p["nut_stiffness"], preload, p["nut_dynamic_load"],
+    # eq. 9 at the preload for a double nut; a single nut keeps its catalog value (quoted at 0.3 Ca axial
+    # load, no preload to speak of), so its stiffness does not depend on the preload variable
+    nut_load = p["nut_double"] * preload + (1.0 - p["nut_double"]) * p["nut_stiffness_preload"]
+    k_n = pn.nut_stiffness_catalog(p["nut_stiffness"], nut_load, p["nut_dynamic_load"],
                                    reference_preload=p["nut_stiffness_preload"])
     k_b = p["bearing_sets"] * p["bearing_stiffness"]
     k_tot = 1.0 / (1.0 / k_b + 1.0 / k_s + 1.0 / k_n)
@@ -196,10 +200,13 @@ def axis_response(p: dict, x, mounting: str, preload) -> dict:
     # axial-torsional 2-DOF (rotor + screw inertia on the screw's torsional stiffness up to the nut,
     # motor held by the servo), and the modal damping ratio of the axial mode from the guide blocks
     # (seed Table 7) and steel structure (Table 5, 0.002)
-    j_rot = p["motor_inertia"] + ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), span)
-    k_tor = ps.screw_torsional_stiffness(p["root_diameter"], x)
-    f_coupled, _ = pdy.axial_torsional_frequencies(j_rot, k_tor, k_tot, m_eff, p["lead"])
-    zeta = pdm.modal_damping_ratio(m_eff, k_tot, blocks * p["guide_damping"], structural_ratio=STEEL_DAMPING)
+    out_extra = {}
+    if extras:
+        j_rot = p["motor_inertia"] + ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), span)
+        k_tor = ps.screw_torsional_stiffness(p["root_diameter"], x)
+        f_coupled, _ = pdy.axial_torsional_frequencies(j_rot, k_tor, k_tot, m_eff, p["lead"])
+        zeta = pdm.modal_damping_ratio(m_eff, k_tot, blocks * p["guide_damping"], structural_ratio=STEEL_DAMPING)
+        out_extra = {"f_axial_torsional": f_coupled, "damping_ratio": zeta}
 
     # --- drag torque at the motor at max speed (N*m)
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
@@ -249,12 +256,12 @@ def axis_response(p: dict, x, mounting: str, preload) -> dict:
     out = {
         "k_screw": k_s, "k_nut": k_n, "k_bearing": k_b, "k_total": k_tot,
         "f_axial": f_axial, "f_table": f_table, "f1": f1, "m_eff": m_eff,
-        "f_axial_torsional": f_coupled, "damping_ratio": zeta,
         "drag_torque": drag, "drag_nut": t_nut, "drag_bearings": t_brg, "drag_guides": t_guides,
         "moving_mass": moving, "total_mass": total_mass, "screw_mass": screw_mass, "cost": cost,
         "max_axial_force": f_max, "life": life, "screw_speed": omega,
     }
     out.update({f"margin_{k}": v for k, v in margins.items()})
+    out.update(out_extra)
     return out
 
 

@@ -133,7 +133,7 @@ def main(argv=None):
           f"{'screen M/s':>10}")
     for name, n, td, te, tb, d, e, b, rate in rows:
         print(f"{name:<22}{n:>10,}{td:>10.3f}{te:>10.2f}{tb:>10.1f}{te / td:>8.0f}{tb / td:>8.0f}  {obj(d):>12}"
-              f"{obj(e):>12}{obj(b):>12}  {(b.status if b else '-'):<22}{rate / 1e6:>10.1f}")
+              f"{obj(e):>12} {obj(b):>14}  {(b.status if b else '-'):<22}{rate / 1e6:>10.1f}")
 
     # 4-objective Pareto front over the synthetic >= 1e6 catalog
     pp = synthetic_problem(Objective(mode="pareto", pareto=("stiffness", "frequency", "cost", "total_mass")))

@@ -77,10 +77,10 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
             nc = sl.stop - sl.start
             mask = np.broadcast_to(space.fits[sl][:, :, None], (nc, B, G)).copy()
             with np.errstate(all="ignore"):
-                out = model.axis_response(p, x1, mounting, lo)
+                out = model.axis_response(p, x1, mounting, lo, extras=False)
                 for c in low_end:
                     mask &= _screen_ok(c, out)
-                out = model.axis_response(p, xs, mounting, hi)
+                out = model.axis_response(p, xs, mounting, hi, extras=False)
                 for c in high_end:
                     mask &= _screen_ok(c, out)
                 bound = objective.value(out)

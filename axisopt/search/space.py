@@ -11,7 +11,7 @@ Two evaluation layouts use the same :func:`axisopt.model.axis_response`:
   never touches the guides, the cost is a sum of per-part terms, ...).
 * *flat* (exact evaluation of selected combinations): every parameter shaped ``(K, 1)``.
 
-Preload structure (checked by tests/search/test_model_structure.py): the minimum stiffness and
+Preload structure (assumed from the model; default == exhaustive in tests/search checks it): the minimum stiffness and
 frequency, the drag torque and the nut lift-off margin are nondecreasing in the nut preload, the nut
 life is nonincreasing, and every other output is independent of it.  The feasible preloads of a
 combination are therefore an interval and the best preload is its upper end.
@@ -147,10 +147,10 @@ def objective_spec(kind: str, problem: Problem | None = None) -> ObjectiveSpec:
 
 
 def respond(p, x, mounting, preload) -> dict:
-    """:func:`axisopt.model.axis_response` on numpy; a zero preload (single nut at its catalog minimum)
-    gives a zero nut stiffness, whose 1/0 in the series chain is a legitimate infinite compliance."""
+    """:func:`axisopt.model.axis_response` on numpy, without the outputs no limit or objective uses
+    (axial-torsional frequency, damping ratio)."""
     with np.errstate(divide="ignore"):
-        return model.axis_response(p, x, mounting, preload)
+        return model.axis_response(p, x, mounting, preload, extras=False)
 
 
 def _arrays(df, cols):
