@@ -158,17 +158,10 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
     K = len(idx)
     res = Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf), np.zeros(K), np.zeros(K),
                 np.zeros(K))
-    m_i, n_i, b_i, g_i = space.unravel(idx)
     dep = [c for c in constraints if c.direction != 0]
     indep = [c for c in constraints if c.direction == 0]
-    for mi, mounting in enumerate(space.mountings):
-        sel = np.nonzero(m_i == mi)[0]
-        if len(sel) == 0:
-            continue
-        n, b, g = n_i[sel], b_i[sel], g_i[sel]
+    for mounting, sel, n, b, _g, p, x in space.by_mounting(idx):
         k = len(sel)
-        p = space.params_flat(mounting, n, b, g)
-        x = space.positions(mounting)
         lo, hi = space.preload_lo[n], space.preload_hi[n]
         out_lo = respond(p, x, mounting, lo[:, None])
         out_hi = respond(p, x, mounting, hi[:, None])

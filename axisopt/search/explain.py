@@ -22,16 +22,9 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
     chunk = 20000
     for s in range(0, space.size, chunk):
         idx = np.arange(s, min(space.size, s + chunk))
-        m_i, n_i, b_i, g_i = space.unravel(idx)
         score = np.zeros(len(idx))
-        for mi, mounting in enumerate(space.mountings):
-            sel = np.nonzero(m_i == mi)[0]
-            if len(sel) == 0:
-                continue
-            n, b, g = n_i[sel], b_i[sel], g_i[sel]
+        for mounting, sel, n, b, _g, p, x in space.by_mounting(idx):
             k = len(sel)
-            p = space.params_flat(mounting, n, b, g)
-            x = space.positions(mounting)
             outs = {-1: respond(p, x, mounting, space.preload_lo[n][:, None]),
                     1: respond(p, x, mounting, space.preload_hi[n][:, None])}
             fit_pen = np.where(space.fits[n, b], 0.0, 1.0)

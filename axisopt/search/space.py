@@ -187,6 +187,17 @@ class Space:
     def unravel(self, idx):
         return np.unravel_index(np.asarray(idx, dtype=np.int64), self.shape)
 
+    def by_mounting(self, idx):
+        """Split combination numbers by mounting: yields (mounting, sel, n, b, g, params, positions) with
+        ``sel`` the rows of ``idx`` of that mounting and n, b, g their nut, bearing and guide numbers."""
+        m_i, n_i, b_i, g_i = self.unravel(idx)
+        for mi, mounting in enumerate(self.mountings):
+            sel = np.nonzero(m_i == mi)[0]
+            if len(sel) == 0:
+                continue
+            n, b, g = n_i[sel], b_i[sel], g_i[sel]
+            yield mounting, sel, n, b, g, self.params_flat(mounting, n, b, g), self.positions(mounting)
+
     def positions(self, mounting: str) -> np.ndarray:
         key = ("x", mounting)
         if key not in self._cache:
@@ -334,18 +345,11 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
                 np.zeros(K))
     if K == 0:
         return res
-    m_i, n_i, b_i, g_i = space.unravel(idx)
     up = [c for c in constraints if c.direction != 0 and c.upper_type]
     low = [c for c in constraints if c.direction != 0 and c.lower_type]
     indep = [c for c in constraints if c.direction == 0]
-    for mi, mounting in enumerate(space.mountings):
-        sel = np.nonzero(m_i == mi)[0]
-        if len(sel) == 0:
-            continue
-        n, b, g = n_i[sel], b_i[sel], g_i[sel]
+    for mounting, sel, n, b, _g, p, x in space.by_mounting(idx):
         k = len(sel)
-        p = space.params_flat(mounting, n, b, g)
-        x = space.positions(mounting)
         x1 = x[-1:]
         lo = space.preload_lo[n][:, None]
         hi = space.preload_hi[n][:, None]
