@@ -68,11 +68,15 @@ def _build(space, mounting, constraints, objective):
     z = {"nut": ca.SX.sym("z_nut", N), "bearing": ca.SX.sym("z_bearing", B), "guide": ca.SX.sym("z_guide", G)}
     w = ca.SX.sym("w")
     t = ca.SX.sym("t", len(objective.terms))
+    zn = {s: ca.fmax(v, 0.0) / ca.fmax(ca.sum1(ca.fmax(v, 0.0)), 1e-12) for s, v in z.items()}
     p = {}
     for name, (slot, vals) in _slot_params(space, mounting).items():
-        p[name] = vals if slot == "axis" else ca.dot(ca.DM(vals), z[slot])
-    lo = ca.dot(ca.DM(space.preload_lo), z["nut"])
-    hi = ca.dot(ca.DM(space.preload_hi), z["nut"])
+        # one-hot selection, written as a convex combination of catalog values so that the points Bonmin
+        # visits before the one-hot rows hold (sum(z) != 1, z a hair below 0) still give physical
+        # parameters (no zero stiffness, no negative cube-root argument); exact at every one-hot point
+        p[name] = vals if slot == "axis" else ca.dot(ca.DM(vals), zn[slot])
+    lo = ca.dot(ca.DM(space.preload_lo), zn["nut"])
+    hi = ca.dot(ca.DM(space.preload_hi), zn["nut"])
     x = space.positions(mounting)
     out = model.axis_response(p, ca.DM(x), mounting, lo + w * (hi - lo))
     g, lbg, ubg = [], [], []
@@ -165,7 +169,11 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
             best = cand
     all_success = all(s.split(": ", 1)[-1] == "SUCCESS" for s in statuses) and bool(statuses)
     if best is None:
-        status = "infeasible" if all(s.endswith("INFEASIBLE") for s in statuses) and statuses else "solver_failed"
+        # Bonmin's INFEASIBLE on a nonconvex problem is not a proof (it says so on feasible problems too)
+        status = "solver_failed"
+        if statuses and all(s.endswith("INFEASIBLE") for s in statuses):
+            notes.append("Bonmin reports INFEASIBLE; not a proof on this nonconvex problem "
+                         "(the default method proves feasibility or infeasibility)")
     else:
         status = "feasible"  # Bonmin's B-BB on a nonconvex problem proves nothing
     cert = Certificate(combinations=space.size, feasible=-1, pruned_by_bound=0, exact_evaluations=0,
