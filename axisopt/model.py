@@ -175,7 +175,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
     k_s = ps.screw_stiffness(p["root_diameter"], x, span, mounting)
     # eq. 9 at the preload for a double nut; a single nut keeps its catalog value (quoted at 0.3 Ca axial
     # load, no preload to speak of), so its stiffness does not depend on the preload variable
-    nut_load = p["nut_double"] * preload + (1.0 - p["nut_double"]) * p["nut_stiffness_preload"]
+    nut_load = mx.if_else(p["nut_double"] > 0.5, preload, p["nut_stiffness_preload"])
     k_n = pn.nut_stiffness_catalog(p["nut_stiffness"], nut_load, p["nut_dynamic_load"],
                                    reference_preload=p["nut_stiffness_preload"])
     k_b = p["bearing_sets"] * p["bearing_stiffness"]

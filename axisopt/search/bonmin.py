@@ -68,15 +68,14 @@ def _build(space, mounting, constraints, objective):
     z = {"nut": ca.SX.sym("z_nut", N), "bearing": ca.SX.sym("z_bearing", B), "guide": ca.SX.sym("z_guide", G)}
     w = ca.SX.sym("w")
     t = ca.SX.sym("t", len(objective.terms))
-    zn = {s: ca.fmax(v, 0.0) / ca.fmax(ca.sum1(ca.fmax(v, 0.0)), 1e-12) for s, v in z.items()}
     p = {}
     for name, (slot, vals) in _slot_params(space, mounting).items():
-        # one-hot selection, written as a convex combination of catalog values so that the points Bonmin
-        # visits before the one-hot rows hold (sum(z) != 1, z a hair below 0) still give physical
-        # parameters (no zero stiffness, no negative cube-root argument); exact at every one-hot point
-        p[name] = vals if slot == "axis" else ca.dot(ca.DM(vals), zn[slot])
-    lo = ca.dot(ca.DM(space.preload_lo), zn["nut"])
-    hi = ca.dot(ca.DM(space.preload_hi), zn["nut"])
+        # one-hot selection (linear in z, the standard MINLP form), plus 1e-6 of the column mean so that no
+        # stiffness, diameter or preload is exactly 0 at the z = 0 points Bonmin visits (NaN derivatives
+        # of cube roots and 1/k otherwise); the chosen design is re-evaluated exactly afterwards
+        p[name] = vals if slot == "axis" else ca.dot(ca.DM(vals), z[slot]) + 1e-6 * float(np.mean(vals))
+    lo = ca.dot(ca.DM(space.preload_lo), z["nut"]) + 1e-6 * float(np.mean(space.preload_hi))
+    hi = ca.dot(ca.DM(space.preload_hi), z["nut"]) + 1e-6 * float(np.mean(space.preload_hi))
     x = space.positions(mounting)
     out = model.axis_response(p, ca.DM(x), mounting, lo + w * (hi - lo))
     g, lbg, ubg = [], [], []
