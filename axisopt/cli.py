@@ -36,7 +36,10 @@ def cmd_evaluate(args) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from . import __version__
+
     p = Parser(prog="axisopt", description="Size and diagnose machine-tool feed axes.")
+    p.add_argument("--version", action="version", version=f"axisopt {__version__}")
     sub = p.add_subparsers(dest="command", required=True, parser_class=Parser)
 
     e = sub.add_parser("evaluate", help="evaluate one design over the stroke")

@@ -108,7 +108,8 @@ def format_result(res) -> str:
         if inf.unmeetable:
             L.append("limits no catalog combination can meet (each checked on its own, best preload):")
             for name, best, lim, unit in inf.unmeetable:
-                L.append(f"  {name}: limit {lim:,.3g} {unit}, best any combination reaches {best:,.3g} {unit}")
+                u = f" {unit}" if unit else ""
+                L.append(f"  {name}: limit {_num(lim)}{u}, best any combination reaches {_num(best)}{u}")
         else:
             L.append("every limit is met by some combination, but no combination meets all of them together")
         L.append("")
@@ -146,3 +147,8 @@ def format_pareto(front) -> str:
          f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"]
     L.append(_cand_table(front.points, "-"))
     return "\n".join(L)
+
+
+def _num(v: float) -> str:
+    """1,500 / 0.785 / 12.4: thousands separators for large values, three significant digits otherwise."""
+    return f"{v:,.0f}" if abs(v) >= 100 else f"{v:.3g}"
