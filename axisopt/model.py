@@ -55,15 +55,17 @@ PARAM_NAMES = (
     "guide_normal_stiffness", "guide_tangential_stiffness", "guide_friction_force",
     "guide_friction_coefficient", "guide_friction_viscous", "guide_damping", "guide_block_mass",
     "guide_rail_mass_per_length", "guide_block_price", "guide_rail_price_per_length", "guide_dynamic_load",
+    "guide_preload", "guide_roller",
 )
 
-CHECKS = ("critical_speed", "buckling", "nut_life", "dn", "nut_lift_off", "bearing_lift_off",
+CHECKS = ("critical_speed", "buckling", "nut_life", "guide_life", "dn", "nut_lift_off", "bearing_lift_off",
           "bearing_speed", "bearing_fit", "screw_length")
 
 CHECK_LABELS = {
     "critical_speed": "critical speed / max screw speed",
     "buckling": "buckling load / max axial force",
     "nut_life": "nut L10 life / required life",
+    "guide_life": "guide block L10 travel / required travel",
     "dn": "DN limit / DN at max speed",
     "nut_lift_off": "nut lift-off force / max axial force",
     "bearing_lift_off": "bearing lift-off load / max axial force",
@@ -95,7 +97,7 @@ def axis_params(axis, screw, nut, bearing, guide) -> dict:
         "screw_mass_per_length": col(screw, "mass_per_length"), "dn_limit": col(screw, "dn_limit"),
         "screw_price_per_length": col(screw, "price_per_length"), "screw_price_fixed": col(screw, "price_fixed"),
         "nut_stiffness": col(nut, "stiffness"), "nut_stiffness_preload": col(nut, "stiffness_preload"),
-        "nut_double": _is_double(nut), "nut_dynamic_load": col(nut, "dynamic_load_rating"),
+        "nut_double": _is_type(nut, "double"), "nut_dynamic_load": col(nut, "dynamic_load_rating"),
         "nut_static_load": col(nut, "static_load_rating"), "nut_mass": col(nut, "mass"),
         "nut_price": col(nut, "price"), "nut_preload_min": col(nut, "preload_min"),
         "nut_preload_max": col(nut, "preload_max"),
@@ -116,6 +118,8 @@ def axis_params(axis, screw, nut, bearing, guide) -> dict:
         "guide_block_price": col(guide, "block_price"),
         "guide_rail_price_per_length": col(guide, "rail_price_per_length"),
         "guide_dynamic_load": col(guide, "dynamic_load_rating"),
+        "guide_preload": col(guide, "preload"),
+        "guide_roller": _is_type(guide, "roller"),
     }
     return p
 
@@ -125,11 +129,12 @@ def _getter(row, name):
     return float(v) if np.ndim(v) == 0 else np.asarray(v, dtype=float)
 
 
-def _is_double(nut):
-    t = nut["type"]
+def _is_type(row, value):
+    """1.0 where the part's ``type`` column is ``value`` (one part or an array of parts)."""
+    t = row["type"]
     if isinstance(t, str):
-        return 1.0 if t == "double" else 0.0
-    return (np.asarray(t) == "double").astype(float)
+        return 1.0 if t == value else 0.0
+    return (np.asarray(t) == value).astype(float)
 
 
 def positions(axis, n: int | None = None) -> np.ndarray:
@@ -238,12 +243,17 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
     f_mean = p["mean_axial_load"] + f_guides + gravity
     life = pc.life_time(p["nut_dynamic_load"], nut_life_load(preload, f_mean, p["nut_double"]),
                         mean_omega, p["load_factor"])
+    # guide blocks: the load per block with the block preload acting like a preloaded pair of ball rows
+    # (same law as the double nut), against the travel the required life asks for at the mean speed
+    guide_load = nut_life_load(p["guide_preload"], n_block, 1.0)
+    guide_life = pc.guide_life_distance(p["guide_dynamic_load"], guide_load, p["load_factor"], p["guide_roller"])
     dn = pc.dn_value(p["nominal_diameter"], omega)
     lift = pn.lift_off_force(mx.fmax(preload, 1e-9))
     margins = {
         "critical_speed": crit / omega,
         "buckling": buck / f_max,
         "nut_life": life / p["required_life"],
+        "guide_life": guide_life / (p["required_life"] * p["mean_speed"]),
         "dn": p["dn_limit"] / dn,
         # a single nut has no preload to lose: the check does not apply (margin reported as inf)
         "nut_lift_off": mx.if_else(p["nut_double"] > 0.5, lift / f_max, 1e9),

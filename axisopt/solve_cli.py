@@ -133,12 +133,15 @@ def format_result(res) -> str:
 
 
 def _cand_table(cands, unit) -> str:
-    L = [f"  {'#':>2} {'mounting':<16}{'nut':<28}{'bearing':<22}{'guide':<18}{'preload N':>10}"
-         f"{'obj ' + unit:>14}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"]
+    """Best designs, one row each; text columns as wide as their longest entry."""
+    slots = ("mounting", "screw", "nut", "bearing", "guide")
+    w = {k: max(len(k), *(len(str(getattr(c, k))) for c in cands)) + 2 for k in slots}
+    L = ["  " + f"{'#':>2} " + "".join(f"{k:<{w[k]}}" for k in slots)
+         + f"{'preload N':>10}{'obj ' + unit:>14}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"]
     for c in cands:
-        L.append(f"  {c.rank:>2} {c.mounting:<16}{c.nut:<28}{c.bearing:<22}{c.guide:<18}{c.nut_preload:>10.0f}"
-                 f"{c.objective:>14.3f}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}{c.cost:>10,.0f}"
-                 f"{c.total_mass:>9.1f}")
+        L.append("  " + f"{c.rank:>2} " + "".join(f"{str(getattr(c, k)):<{w[k]}}" for k in slots)
+                 + f"{c.nut_preload:>10.0f}{c.objective:>14.3f}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}"
+                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}")
     return "\n".join(L)
 
 

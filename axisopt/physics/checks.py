@@ -77,6 +77,23 @@ def life_time(dynamic_load_rating, load, speed, load_factor=1.0):
     return life_revolutions(dynamic_load_rating, load, load_factor) * 2.0 * mx.pi / speed
 
 
+def guide_life_distance(dynamic_load_rating, load, load_factor=1.0, roller=0.0):
+    r"""Nominal (L10) travel life of a linear guide block.
+
+    .. math:: L = (C / (f_w P))^{3} \cdot 50\,\mathrm{km}            (ball blocks, C on the 50 km basis)
+    .. math:: L = (C / (f_w P))^{10/3} \cdot 100\,\mathrm{km}       (roller blocks, C on the 100 km basis)
+
+    dynamic_load_rating : C per block [N] on the basis the catalog uses for the block type
+    load : P, equivalent load per block [N];  load_factor : f_w [-]
+    roller : 0 for ball blocks, 1 for roller blocks (a number, so it may be symbolic or an array).
+    Returns L [m].  Source: THK LM Guide selection ("calculating the nominal life": L = (C/P_C)^3 x 50 km
+    for balls, (C/P_C)^(10/3) x 100 km for rollers); HIWIN linear guideway catalog G99TE20 (f_w divides C).
+    """
+    exponent = 3.0 + roller / 3.0
+    basis = 50e3 * (1.0 + roller)
+    return (dynamic_load_rating / (load_factor * load)) ** exponent * basis
+
+
 def dn_value(diameter, speed):
     r"""DN value, diameter times screw speed, in SI.
 

@@ -43,7 +43,7 @@ _BEARING_COLS = ("axial_rigidity", "lift_off_load", "preload", "f0", "f1", "bore
                  "limiting_speed", "mass", "price", "dynamic_load_rating")
 _GUIDE_COLS = ("normal_rigidity", "tangential_rigidity", "friction_force", "friction_coefficient",
                "friction_viscous", "damping", "block_mass", "rail_mass_per_length", "block_price",
-               "rail_price_per_length", "dynamic_load_rating")
+               "rail_price_per_length", "dynamic_load_rating", "preload")
 
 
 @dataclass(frozen=True)
@@ -293,6 +293,7 @@ def build_space(problem: Problem) -> Space:
     sp.n_arr["type"] = nuts["type"].to_numpy(dtype=object).astype(str)
     sp.b_arr = _arrays(bearings, _BEARING_COLS)
     sp.g_arr = _arrays(guides, _GUIDE_COLS)
+    sp.g_arr["type"] = guides["type"].to_numpy(dtype=object).astype(str)
     return sp
 
 

@@ -160,6 +160,8 @@ CASES = [
     case(checks.buckling_load, kw=dict(root_diameter=0.02, length=1.0), fixed=dict(mounting="fixed-fixed")),
     case(checks.life_revolutions, kw=dict(dynamic_load_rating=30e3, load=3e3, load_factor=1.2)),
     case(checks.life_time, kw=dict(dynamic_load_rating=30e3, load=3e3, speed=200.0, load_factor=1.2)),
+    case(checks.guide_life_distance, kw=dict(dynamic_load_rating=30e3, load=3e3, load_factor=1.2, roller=0.0)),
+    case(checks.guide_life_distance, kw=dict(dynamic_load_rating=30e3, load=3e3, load_factor=1.2, roller=1.0)),
     case(checks.dn_value, kw=dict(diameter=0.032, speed=300.0)),
 ]
 

@@ -240,3 +240,14 @@ def test_damping_eq38_eq39_relations():
     steel = damping.DAMPING_RATIO_TABLE5["steel"][0]
     assert damping.modal_damping_ratio(m, k, c, c, structural_ratio=steel) == pytest.approx(
         steel + 2 * c / (2 * m * w0), rel=1e-12)
+
+
+# THK LM Guide selection: the dynamic load rating C is the load at which 90 % of blocks reach 50 km (balls)
+# or 100 km (rollers); L = (C/P)^3 x 50 km and (C/P)^(10/3) x 100 km.  HIWIN G99TE20 divides C by f_w.
+@pytest.mark.published
+def test_guide_life_definition_thk():
+    assert checks.guide_life_distance(30e3, 30e3) == pytest.approx(50e3, rel=1e-12)
+    assert checks.guide_life_distance(30e3, 30e3, roller=1.0) == pytest.approx(100e3, rel=1e-12)
+    assert checks.guide_life_distance(30e3, 15e3) == pytest.approx(8 * 50e3, rel=1e-12)
+    assert checks.guide_life_distance(30e3, 15e3, roller=1.0) == pytest.approx(2 ** (10 / 3) * 100e3, rel=1e-12)
+    assert checks.guide_life_distance(36e3, 15e3, load_factor=1.2) == pytest.approx(8 * 50e3, rel=1e-12)
