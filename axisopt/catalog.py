@@ -108,7 +108,7 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
     schema = SCHEMA[name]
     src = str(path)
     try:
-        with path.open(newline="", encoding="utf-8") as fh:
+        with path.open(newline="", encoding="utf-8-sig") as fh:
             rows = list(csv.reader(fh))
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(f"cannot read catalog ({exc})", source=src) from None

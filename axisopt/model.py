@@ -233,7 +233,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
             + p["rails"] * p["rail_length"] * p["guide_rail_price_per_length"])
 
     # --- checks (margins, >= 1 passes)
-    gravity = p["gravity_axial"] * (p["table_mass"] + p["nut_mass"]) * G
+    gravity = p["gravity_axial"] * moving * G
     f_max = p["axial_load"] + moving * p["acceleration"] + f_guides + gravity
     x_far = p["start_offset"] + p["stroke"]
     crit = pc.critical_speed(p["root_diameter"], span, mounting)

@@ -294,6 +294,8 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
             known = sorted(set(g["preload_level"]) | set(g["preload_class"]))
         else:
             known = sorted(set(catalog.table(table)[col]))
+        if not vals:
+            raise sec.error(key, f"list at least one value, or leave '{key}' out to allow all")
         for v in vals:
             if v not in known:
                 raise sec.error(key, f"'{v}' is not in the catalog ({', '.join(map(str, known))})")

@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 
+from .errors import InputError
 from .model import CHECK_LABELS, CHECKS, Evaluation
 
 N_PER_UM = 1e6
@@ -110,6 +112,34 @@ def evaluation_table(ev: Evaluation) -> str:
     return "\n".join(lines)
 
 
+PLOT_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg")
+
+
+def make_output_dir(path):
+    """Create an output directory (and its parents); a path that cannot be one is an InputError."""
+    d = Path(path)
+    try:
+        d.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"cannot create output directory ({exc.strerror or exc})", source=str(d)) from None
+    return d
+
+
+def save_figure(fig, path) -> None:
+    """Save and close a matplotlib figure; a bad path or format is an InputError (one line, exit 2)."""
+    import matplotlib.pyplot as plt
+
+    ext = Path(path).suffix.lower().lstrip(".")
+    try:
+        if ext not in PLOT_FORMATS:
+            raise InputError(f"plot file needs one of the extensions {', '.join(PLOT_FORMATS)}", source=str(path))
+        fig.savefig(path, dpi=110)
+    except (OSError, ValueError) as exc:
+        raise InputError(f"cannot write plot ({getattr(exc, 'strerror', None) or exc})", source=str(path)) from None
+    finally:
+        plt.close(fig)
+
+
 def plot_profiles(evaluations, path: str, labels=None) -> None:
     """Stiffness and first natural frequency over the stroke, one line per evaluation."""
     import matplotlib
@@ -130,5 +160,4 @@ def plot_profiles(evaluations, path: str, labels=None) -> None:
         ax.grid(True, alpha=0.3)
     ax1.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path)

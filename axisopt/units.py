@@ -11,6 +11,7 @@ Parsing uses pint; vendor spellings such as ``N.m`` or ``mm.rpm`` (a dot for a p
 from __future__ import annotations
 
 import functools
+import math
 import re
 
 import pint
@@ -86,8 +87,27 @@ def unit_factor(unit: str, kind: str) -> float:
         raise ValueError(f"unit '{unit}' is not a unit of {kind}")
     if kind == "temperature":
         return 1.0
+    if kind in ("angular_speed", "frequency"):
+        return _rate_factor(text, q, kind)
     target = _UREG.Unit(si) if si else _UREG.dimensionless
     return float(q.to(target).magnitude)
+
+
+_ANGLE_WORDS = re.compile(r"rad|deg|rev|rpm|rps|turn|cycle", re.IGNORECASE)
+
+
+def _rate_factor(text: str, q, kind: str) -> float:
+    """Rates need care: pint counts a radian as dimensionless, so '1/min' and 'rad/s' look alike.
+
+    A unit that names an angle (rad, deg, rev, rpm, ...) is an angular rate: its value in 1/s is rad/s.
+    Any other rate (Hz, 1/min, 1/s) counts cycles: its value in 1/s is cycles per second.
+    angular_speed -> rad/s, frequency -> Hz.
+    """
+    per_s = float(q.to(_UREG.Unit("1/s")).magnitude)
+    angular = bool(_ANGLE_WORDS.search(text))
+    if kind == "angular_speed":
+        return per_s if angular else per_s * 2.0 * math.pi
+    return per_s / (2.0 * math.pi) if angular else per_s
 
 
 def to_si(value: float, unit: str, kind: str) -> float:
@@ -123,6 +143,8 @@ def parse_quantity(text, kind: str, *, source: str | None = None, key: str | Non
     if not m:
         raise InputError(f"cannot read '{text}' as a number with a unit", source=source, where=key)
     number, unit = float(m.group(1)), m.group(2)
+    if not math.isfinite(number):
+        raise InputError(f"'{text}' is not a finite number", source=source, where=key)
     if unit == "" and kind != "dimensionless":
         raise InputError(
             f"'{text}' has no unit; write it with one, e.g. '{text} {_example_unit(kind)}'",

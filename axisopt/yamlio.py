@@ -76,6 +76,13 @@ def parse_yaml_text(text: str, src: str) -> Node:
         return _construct(_Loader(""), root)
     except InputError as exc:
         raise InputError(str(exc).split(": ", 1)[-1], source=src, where=exc.where) from None
+    except yaml.YAMLError as exc:  # e.g. an unknown tag such as !!python/object
+        mark = getattr(exc, "problem_mark", None)
+        where = f"line {mark.line + 1}" if mark else None
+        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
+        raise InputError(f"malformed YAML: {problem}", source=src, where=where) from None
+    except RecursionError:
+        raise InputError("malformed YAML: a self-referencing alias", source=src) from None
 
 
 class Section:

@@ -143,7 +143,7 @@ def read_dataset(path) -> Dataset:
     """Read one test CSV.  See the module docstring for the formats."""
     src = str(path)
     try:
-        with Path(path).open(newline="", encoding="utf-8") as fh:
+        with Path(path).open(newline="", encoding="utf-8-sig") as fh:
             rows = list(csv.reader(fh))
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..errors import InputError
 from .effects import library
 from .fit import Block, FitResult, Problem, fit, row_function
 from .measure import FEATURES, Y_UNIT, Obs, baseline_params, baseline_terms, observations, output
@@ -139,7 +140,10 @@ def folds_for(obs) -> np.ndarray:
         levels = np.unique(o.groups)
         k = min(MAX_FOLDS, len(levels))
         idx = np.searchsorted(levels, o.groups)
-        out.append(idx % k if k >= 2 else np.full(o.n, -1))
+        if k < 2:  # nothing to hold out: a "held-out" error would be the in-sample one
+            raise InputError("held-out validation needs at least 2 groups (positions, load levels or cycles); "
+                             f"this file has {len(levels)}", source=str(o.dataset.source))
+        out.append(idx % k)
     return np.concatenate(out)
 
 

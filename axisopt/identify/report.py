@@ -183,8 +183,9 @@ def write_report(diag, outdir) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    out = Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
+    from ..report import make_output_dir
+
+    out = make_output_dir(outdir)
     d = diagnosis_dict(diag)
     md = [f"# Diagnosis of {d['design']}", "", f"**Verdict: {d['verdict']}**", ""]
     for a in d["accepted"]:

@@ -130,7 +130,9 @@ class CaseStore:
         self.dir = Path(out_dir) / "cases"
 
     def prepare(self) -> None:
-        self.dir.mkdir(parents=True, exist_ok=True)
+        from ..report import make_output_dir
+
+        make_output_dir(self.dir)
         for tmp in self.dir.glob(".*.tmp"):  # left by a run killed while writing
             tmp.unlink(missing_ok=True)
 
