@@ -195,11 +195,8 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
 
     # --- natural frequencies (Hz).  Rayleigh: the strained screw segment adds a third of its
     # mass; for fixed-free / fixed-supported the part beyond the nut moves with the nut.
-    if mounting == "fixed-fixed":
-        m_eff = moving + screw_mass / 3.0
-    else:
-        m_eff = moving + screw_mass * (1.0 - 2.0 * x / (3.0 * span))
-    f_axial = mx.sqrt(k_tot / m_eff) / (2.0 * math.pi)
+    m_eff = pdy.effective_axial_mass(moving, screw_mass, x, span, mounting)
+    f_axial = pdy.axial_natural_frequency(k_tot, m_eff)
     f_table = mx.sqrt(blocks * p["guide_normal_stiffness"] / moving) / (2.0 * math.pi)
     f1 = mx.fmin(f_axial, f_table)
     # axial-torsional 2-DOF (rotor + screw inertia on the screw's torsional stiffness up to the nut,

@@ -2,31 +2,57 @@
 
 from __future__ import annotations
 
+from types import MappingProxyType
+
 import numpy as np
 
 from axisopt import mathx as mx
-from axisopt.physics.screw import E_STEEL
+from axisopt.physics.screw import E_STEEL, choose
 
 __all__ = [
-    "axial_natural_frequency", "axial_angular_frequency_eq11", "table_mode_frequency",
+    "axial_natural_frequency", "effective_axial_mass", "axial_angular_frequency_eq11", "table_mode_frequency",
     "axial_torsional_eigenvalues", "axial_torsional_frequencies", "dynamic_compliance",
 ]
 
 
-def axial_natural_frequency(stiffness, moving_mass, screw_mass=0.0, x=None, span=None):
-    r"""First axial natural frequency of table on the drive spring, with Rayleigh screw-mass correction.
+def effective_axial_mass(moving_mass, screw_mass, x, span, mounting):
+    r"""Mass the axial mode moves: the table plus the Rayleigh share of the screw.
 
-    .. math:: f_1 = \frac{1}{2\pi}\sqrt{k / m_{eff}},\quad m_{eff} = m + m_s\, x / (3 L)
+    .. math:: m_{eff} = m + m_s \left(\tfrac{x}{3L} + \tfrac{L - x}{L}\right) = m + m_s (1 - \tfrac{2x}{3L})
+              \quad\text{(fixed-free, fixed-supported)}
+    .. math:: m_{eff} = m + m_s / 3 \quad\text{(fixed-fixed)}
 
-    (m_s x/L is the screw mass between fixed bearing and nut; one third acts on the nut.)
+    The strained screw between the fixed bearing and the nut has a linear displacement profile, so a
+    third of its mass acts at the nut; with an axially free far end, the screw beyond the nut carries no
+    force and moves with the nut as a rigid body.  Fixed-fixed: both segments are strained, a third of
+    each.  moving_mass : m [kg];  screw_mass : m_s [kg];  x : nut distance from the fixed bearing [m]
+    span : L [m];  mounting : 'fixed-free' | 'fixed-supported' | 'fixed-fixed'.  Returns m_eff [kg].
+    Source: Rayleigh's method on the lumped axial model (seed eq. 11 with the screw's own mass).
+    """
+    choose(_MASS_MOUNTINGS, mounting, "mounting")
+    if mounting == "fixed-fixed":
+        return moving_mass + screw_mass / 3.0 + 0.0 * x / span
+    return moving_mass + screw_mass * (1.0 - 2.0 * x / (3.0 * span))
+
+
+_MASS_MOUNTINGS = MappingProxyType({m: m for m in ("fixed-free", "fixed-supported", "fixed-fixed")})
+
+
+def axial_natural_frequency(stiffness, moving_mass, screw_mass=0.0, x=None, span=None, mounting="fixed-supported"):
+    r"""First axial natural frequency of the table on the drive spring (seed eq. 11, lumped form).
+
+    .. math:: f_1 = \frac{1}{2\pi}\sqrt{k / m_{eff}}
+
     stiffness   : k, axial stiffness at the nut position [N/m]
     moving_mass : m, table + workpiece + nut [kg]
     screw_mass  : m_s, whole screw [kg];  x : nut distance from fixed bearing [m];  span : L [m]
-    (x and span given together; if omitted, x/L = 1.)
-    Returns f_1 [Hz].  Source: seed eq. 11 (lumped form), model-discrepancy.md sec. 1.2.
+    With x and span, m_eff is :func:`effective_axial_mass` for the mounting; without them m + m_s / 3.
+    Returns f_1 [Hz].
     """
-    share = 1.0 if x is None or span is None else x / span
-    m_eff = moving_mass + screw_mass * share / 3.0
+    if x is None or span is None:
+        m_eff = moving_mass + screw_mass / 3.0
+    else:
+        m_eff = effective_axial_mass(moving_mass, screw_mass, x, span, mounting)
     return mx.sqrt(stiffness / m_eff) / (2.0 * mx.pi)
 
 

@@ -1,6 +1,7 @@
 """The assembled axis model: one formula on floats, numpy and CasADi; stroke behaviour by mounting."""
 
 import dataclasses
+import math
 from pathlib import Path
 
 import casadi as ca
@@ -112,3 +113,24 @@ def test_paper_3_1_3_frequency_and_stiffness_trend():
     designs = [load_design(ROOT / "problems" / f"paper_3_1_3_d{d}.yaml") for d in (25, 40, 50, 63)]
     mins = [evaluate(d).minimum("k_total")[0] for d in designs]
     assert mins == sorted(mins)
+
+
+def test_vmc_example_against_a_hand_calculation(vmc):
+    """The shipped VMC design, evaluated by hand from its catalog rows (HIWIN BS-08-2-EN-1704-K):
+    screw root 34.91 mm, span 0.13 + 0.8 + 0.17 m, fixed-supported, nut R40-10K5-FDC 1410 N/um at
+    0.1 Ca = 6340 N run at 3000 N, WBK30-DFD 1520 N/um, 450 kg table + 0.95 kg nut + 4 HG35 blocks."""
+    ev = evaluate(vmc)
+    x_end = 0.13 + 0.8
+    k_s = math.pi / 4 * 0.03491**2 * 206e9 / x_end  # eq. 3/10
+    k_n = 0.8 * 1410e6 * (3000 / 6340) ** (1 / 3)  # eq. 9
+    k_b = 1520e6
+    k = 1 / (1 / k_s + 1 / k_n + 1 / k_b)  # eq. 1-2
+    assert k_s / 1e6 == pytest.approx(212.0, abs=0.05)
+    assert ev["k_nut"] == pytest.approx(k_n, rel=1e-9)
+    assert ev.minimum("k_total")[0] == pytest.approx(k, rel=1e-9)
+    # eq. 11 with the moving mass and the Rayleigh share of the screw (part beyond the nut moves with it)
+    moving = 450 + float(vmc.nut["mass"]) + 4 * float(vmc.guide["block_mass"])
+    screw_mass = float(vmc.screw["mass_per_length"]) * 1.1
+    m_eff = moving + screw_mass * (1 - 2 * x_end / (3 * 1.1))
+    f = math.sqrt(k / m_eff) / (2 * math.pi)
+    assert ev["f_axial"][-1] == pytest.approx(f, rel=1e-9)

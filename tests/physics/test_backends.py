@@ -123,6 +123,10 @@ CASES = [
         kw=dict(stiffness=2e8, moving_mass=300.0, screw_mass=8.0, x=0.4, span=1.0),
     ),
     case(dynamics.axial_angular_frequency_eq11, kw=dict(root_diameter=0.04, length=0.5, mass=450.0)),
+    case(dynamics.effective_axial_mass, kw=dict(moving_mass=300.0, screw_mass=8.0, x=0.4, span=1.0),
+         fixed=dict(mounting="fixed-supported"), label="-fixed-supported"),
+    case(dynamics.effective_axial_mass, kw=dict(moving_mass=300.0, screw_mass=8.0, x=0.4, span=1.0),
+         fixed=dict(mounting="fixed-fixed"), label="-fixed-fixed"),
     case(dynamics.table_mode_frequency, kw=dict(normal_stiffness_per_block=5e8, n_blocks=4.0, mass=300.0)),
     case(
         dynamics.axial_torsional_eigenvalues,
