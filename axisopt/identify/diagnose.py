@@ -134,6 +134,22 @@ def noise_sigma_rel(o: Obs, resid: np.ndarray) -> float:
     return max(s, 1e-6)
 
 
+def _check_positions(ds, plant) -> None:
+    """Positions are measured from the stroke start; data off the design's stroke is a wrong design or a
+    wrong zero, and would be extrapolated silently."""
+    pos = ds.columns.get("position")
+    if pos is None:
+        return
+    tol = 0.02 * plant.stroke + 1e-3
+    bad = np.nonzero((pos < -tol) | (pos > plant.stroke + tol))[0]
+    if len(bad):
+        i = bad[0]
+        raise InputError(f"position {pos[i] * 1e3:.1f} mm is outside the design's stroke "
+                         f"0..{plant.stroke * 1e3:.0f} mm (positions are measured from the stroke start)",
+                         source=str(ds.source),
+                         where=f"line {int(ds.lines[i])}, column position")
+
+
 def folds_for(obs) -> np.ndarray:
     out = []
     for o in obs:
@@ -190,6 +206,8 @@ def _fit_effects(ctx, effects, base, theta_prev, prev_names):
 
 def diagnose(datasets, plant, *, candidates=None, max_effects: int = 2) -> Diagnosis:
     """Diagnose measured ``datasets`` (list of :class:`~.data.Dataset`) against ``plant``."""
+    for ds in datasets:
+        _check_positions(ds, plant)
     obs = [observations(ds, plant) for ds in datasets]
     kinds = {o.kind for o in obs}
     base = baseline_params(kinds, plant)

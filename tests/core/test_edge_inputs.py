@@ -85,3 +85,16 @@ def test_empty_restriction_list_is_an_error(tmp_path, capsys):
     p.write_text(text)
     assert main(["solve", str(p)]) == 2
     assert "catalog.vendors" in capsys.readouterr().err
+
+
+def test_diagnose_positions_off_the_stroke_are_refused(tmp_path, capsys):
+    data = ROOT / "problems" / "data"
+    lines = (data / "table_x_stiffness.csv").read_text().splitlines()
+    col = [i for i, h in enumerate(lines[0].split(",")) if h.startswith("position")][0]
+    row = lines[3].split(",")
+    row[col] = "5000"
+    lines[3] = ",".join(row)
+    p = tmp_path / "off.csv"
+    p.write_text("\n".join(lines) + "\n")
+    assert main(["diagnose", str(p), "--design", str(data / "table_x.yaml")]) == 2
+    assert "line 4, column position" in capsys.readouterr().err
