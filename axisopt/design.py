@@ -7,11 +7,11 @@ directories, relative to the YAML file) and ``name``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 from .catalog import SCHEMA, Catalog, default_catalog
-from .units import parse_quantity
+from .units import unit_factor
 from .yamlio import Section, read_yaml
 
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
@@ -81,9 +81,6 @@ class Design:
 
     def part_ids(self) -> dict:
         return {k: str(getattr(self, k)["id"]) for k in ("screw", "nut", "bearing", "guide")}
-
-    def with_parts(self, **kw) -> Design:
-        return replace(self, **kw)
 
 
 _AXIS_KINDS = {
@@ -190,11 +187,6 @@ def load_design(path) -> Design:
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)
 
 
-def quantity(text: str, kind: str) -> float:
-    """Convenience for scripts and tests: ``quantity('800 mm', 'length') == 0.8``."""
-    return parse_quantity(text, kind)
-
-
 __all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_parts", "G"]
 
 
@@ -208,8 +200,6 @@ _OUT_UNITS = {
 
 
 def _q(value: float, kind: str) -> str:
-    from .units import unit_factor
-
     unit = _OUT_UNITS[kind]
     return f"{value / unit_factor(unit, kind):.12g} {unit}"
 

@@ -9,8 +9,7 @@ import numpy as np
 
 from .errors import InputError
 from .model import CHECK_LABELS, CHECKS, Evaluation
-
-N_PER_UM = 1e6
+from .units import N_PER_UM
 
 
 def _fmt(v, nd=1):
@@ -125,7 +124,7 @@ def make_output_dir(path):
     return d
 
 
-def save_figure(fig, path) -> None:
+def save_figure(fig, path, dpi: int = 110) -> None:
     """Save and close a matplotlib figure; a bad path or format is an InputError (one line, exit 2)."""
     import matplotlib.pyplot as plt
 
@@ -133,7 +132,7 @@ def save_figure(fig, path) -> None:
     try:
         if ext not in PLOT_FORMATS:
             raise InputError(f"plot file needs one of the extensions {', '.join(PLOT_FORMATS)}", source=str(path))
-        fig.savefig(path, dpi=110)
+        fig.savefig(path, dpi=dpi)
     except (OSError, ValueError) as exc:
         raise InputError(f"cannot write plot ({getattr(exc, 'strerror', None) or exc})", source=str(path)) from None
     finally:

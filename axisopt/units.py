@@ -177,7 +177,5 @@ def split_header(header: str) -> tuple[str, str | None]:
     return m.group(1), m.group(2)
 
 
-# Display helpers (SI -> vendor units), used by report and CLI only.
+# N/m per N/um: catalogs, tables and solver scaling quote stiffness in N/um.
 N_PER_UM = 1e6
-MM = 1e-3
-RPM = 2.0 * 3.141592653589793 / 60.0

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..report import save_figure
 from .diagnose import _split, residual_table
 from .measure import Y_UNIT
 
@@ -264,8 +265,7 @@ def write_report(diag, outdir) -> Path:
         axes[0][0].legend(fontsize=7)
         fig.tight_layout()
         png = out / f"residuals_{k + 1}.png"
-        fig.savefig(png, dpi=90)
-        plt.close(fig)
+        save_figure(fig, png, dpi=90)
         md += [f"![residuals {Path(o.dataset.source).name}]({png.name})", ""]
     path = out / "report.md"
     path.write_text("\n".join(md) + "\n", encoding="utf-8")

@@ -26,12 +26,12 @@ import numpy as np
 
 from .. import model
 from ..problem import LIMITS, Problem
+from ..units import N_PER_UM
 
 # Outputs that depend on the nut preload and how (+1 nondecreasing, -1 nonincreasing).
 PRELOAD_DIRECTION = {"k_total": 1, "f1": 1, "k_nut": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
                      "margin_nut_lift_off": 1, "life": -1, "margin_nut_life": -1}
 PROFILE = ("k_total", "f1")
-N_PER_UM = 1e6
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
 BISECTION_STEPS = 52
 

@@ -14,6 +14,7 @@ import math
 import re
 from pathlib import Path
 
+from ..report import save_figure
 from .run import OK_STATUSES, CaseStore
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
@@ -190,8 +191,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         fig.suptitle(f"{study.name}: best design against {key}", fontsize=10)
         fig.tight_layout()
         fname = plot_dir / f"best_vs_{_slug(key)}.png"
-        fig.savefig(fname, dpi=100)
-        plt.close(fig)
+        save_figure(fig, fname, dpi=100)
         files[f"plot {key}"] = str(fname)
     # trade-off over all cases: cost against minimum stiffness, non-dominated cases joined
     pts = ok[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
@@ -210,8 +210,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         ax.set_title(f"{study.name}: stiffness against cost of every case's best design", fontsize=10)
         fig.tight_layout()
         fname = plot_dir / "tradeoff_cost_stiffness.png"
-        fig.savefig(fname, dpi=100)
-        plt.close(fig)
+        save_figure(fig, fname, dpi=100)
         files["plot trade-off"] = str(fname)
     # Pareto fronts of the cases (pareto-mode problems), overlaid on their first two objectives
     fronts = [r for r in records(study, out_dir) if r.get("pareto")]
@@ -233,8 +232,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
                      fontsize=10)
         fig.tight_layout()
         fname = plot_dir / "pareto_fronts.png"
-        fig.savefig(fname, dpi=100)
-        plt.close(fig)
+        save_figure(fig, fname, dpi=100)
         files["plot Pareto fronts"] = str(fname)
     return files
 
