@@ -26,20 +26,21 @@ _SCREWS = {
     "id": "str", "vendor": "str", "series": "str",
     "nominal_diameter": "length", "lead": "length", "root_diameter": "length", "ball_diameter": "length",
     "max_length": "length", "mass_per_length": "mass_per_length", "dn_limit": "dn",
+    "support_bore_min": "length", "support_bore_max": "length",
     "price_per_length": "money_per_length", "price_fixed": "money",
 }
 _NUTS = {
     "id": "str", "vendor": "str", "screw_id": "str", "type": "str",
     "stiffness": "stiffness", "stiffness_preload": "force", "preload_min": "force", "preload_max": "force",
     "dynamic_load_rating": "force", "static_load_rating": "force", "contact_angle": "angle",
-    "mass": "mass", "price": "money",
+    "axial_play": "length", "mass": "mass", "price": "money",
 }
 _BEARINGS = {
     "id": "str", "vendor": "str", "series": "str", "arrangement": "str", "rows": "int",
     "bore": "length", "outer_diameter": "length", "contact_angle": "angle", "preload_class": "str",
     "preload": "force", "axial_rigidity": "stiffness", "lift_off_load": "force",
     "dynamic_load_rating": "force", "static_load_rating": "force", "limiting_speed": "angular_speed",
-    "f0": "dimensionless", "f1": "dimensionless", "mass": "mass", "price": "money",
+    "starting_torque": "torque", "f0": "dimensionless", "f1": "dimensionless", "mass": "mass", "price": "money",
 }
 _GUIDES = {
     "id": "str", "vendor": "str", "series": "str", "type": "str", "size": "length",
@@ -60,12 +61,16 @@ SCHEMA = MappingProxyType({
 
 # Columns that must be > 0 (stiffness and the geometry the physics divides by).
 _POSITIVE = {
-    "screws": ("nominal_diameter", "lead", "root_diameter", "max_length", "mass_per_length", "dn_limit"),
+    "screws": ("nominal_diameter", "lead", "root_diameter", "max_length", "mass_per_length", "dn_limit",
+               "support_bore_min", "support_bore_max"),
     "nuts": ("stiffness", "stiffness_preload", "dynamic_load_rating", "static_load_rating"),
     "bearings": ("axial_rigidity", "bore", "outer_diameter", "rows", "dynamic_load_rating"),
     "guides": ("normal_rigidity", "tangential_rigidity", "size", "dynamic_load_rating"),
 }
-_NON_NEGATIVE = ("price", "price_fixed", "price_per_length", "block_price", "rail_price_per_length",
+# Columns whose cell may be left empty: the vendor does not list the value (read as NaN; the model then
+# uses its fallback, e.g. seed eq. 40 for a bearing set without a listed starting torque).
+OPTIONAL_COLUMNS = MappingProxyType({"bearings": ("starting_torque",)})
+_NON_NEGATIVE = ("axial_play", "starting_torque", "price", "price_fixed", "price_per_length", "block_price", "rail_price_per_length",
                  "mass", "block_mass", "preload", "preload_min", "preload_max", "friction_force",
                  "friction_coefficient", "friction_viscous", "damping", "f0", "f1")
 _CHOICES = {
@@ -159,6 +164,9 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
                 if not cell:
                     raise InputError("empty cell", source=src, where=where)
                 rec[col] = cell
+                continue
+            if not cell and col in OPTIONAL_COLUMNS.get(name, ()):
+                rec[col] = math.nan
                 continue
             try:
                 val = float(cell)

@@ -7,14 +7,25 @@ directories, relative to the YAML file) and ``name``.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, fields
 from pathlib import Path
 
-from .catalog import SCHEMA, Catalog, default_catalog
+from .catalog import OPTIONAL_COLUMNS, SCHEMA, Catalog, default_catalog
 from .units import unit_factor
 from .yamlio import Section, read_yaml
 
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
+
+# Defaults of the axis values no catalog row carries, with their sources (README "What the model assumes").
+# Bearing housing and nut bracket: no vendor publishes a value (THK A-707: "set the rigidity as high as
+# possible"; THK and NSK rigidities exclude them), so they are rigid unless the YAML gives them.
+# Coupling: RINGFEDER GWB AKN size 60 metal-bellows coupling (Tech Paper EN 08.2019): 75e3 N.m/rad,
+# 0.29e-3 kg.m^2, 75 N.m, a mid-size feed-drive coupling (our pick of size).
+# Temperature rise: THK A-715 sets the negative target travel for a 2-5 degC rise; 3 K is used.
+COUPLING_STIFFNESS = 75e3
+COUPLING_INERTIA = 0.29e-3
+TEMPERATURE_RISE = 3.0
 ORIENTATIONS = ("horizontal", "vertical")
 G = 9.80665
 
@@ -40,7 +51,15 @@ class Axis:
     table_length: float = 0.5  # rail length = stroke + table_length [m]
     normal_load: float = 0.0  # external load on the guide blocks besides gravity [N]
     lubricant_viscosity: float = 32e-6  # at working temperature [m^2/s]
-    motor_inertia: float = 1.0e-3  # rotor + coupling [kg m^2]
+    motor_inertia: float = 1.0e-3  # motor rotor [kg m^2]
+    # stiffnesses outside the catalogs, in the axial chain (see AXIS_DEFAULT_SOURCES for where the defaults
+    # come from); YAML overridable
+    bearing_housing_stiffness: float | None = None  # one support-bearing housing [N/m]; None: rigid
+    nut_bracket_stiffness: float | None = None  # nut bracket / table connection [N/m]; None: rigid
+    coupling_stiffness: float = COUPLING_STIFFNESS  # torsional [N m/rad]
+    coupling_inertia: float = COUPLING_INERTIA  # [kg m^2]
+    temperature_rise: float = TEMPERATURE_RISE  # screw temperature rise in operation [K]
+    pretension: float | None = None  # fixed-fixed screw pretension [N]; None: absorbs temperature_rise
     orientation: str = "horizontal"
     positions: int = 41  # nut positions evaluated over the stroke
 
@@ -88,9 +107,11 @@ _AXIS_KINDS = {
     "start_offset": "length", "end_margin": "length", "mean_speed": "speed", "mean_axial_load": "force",
     "acceleration": "acceleration", "required_life": "time", "table_length": "length",
     "normal_load": "force", "lubricant_viscosity": "kinematic_viscosity", "motor_inertia": "inertia",
+    "bearing_housing_stiffness": "stiffness", "nut_bracket_stiffness": "stiffness",
+    "coupling_stiffness": "torsional_stiffness", "coupling_inertia": "inertia", "temperature_rise": "temperature_difference",
 }
 _AXIS_REQUIRED = ("stroke", "moving_mass", "mounting", "max_speed", "axial_load")
-_NON_NEGATIVE = ("end_margin", "mean_axial_load", "acceleration", "normal_load", "axial_load")
+_NON_NEGATIVE = ("end_margin", "mean_axial_load", "acceleration", "normal_load", "axial_load", "temperature_rise")
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:
@@ -102,6 +123,10 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
         if v is not None:
             kw[name] = v
     kw["mounting"] = sec.choice("mounting", MOUNTINGS, required=True)
+    if sec.has("pretension"):
+        node = sec.raw("pretension")
+        if node.value != "auto":
+            kw["pretension"] = sec.quantity("pretension", "force", non_negative=True)
     kw["orientation"] = sec.choice("orientation", ORIENTATIONS, "horizontal")
     for name in ("guide_blocks", "rails", "positions"):
         v = sec.number(name, integer=True, minimum=1 if name != "positions" else 3)
@@ -138,7 +163,9 @@ def inline_part(sec: Section, table: str):
         elif kind == "dimensionless":
             rec[col] = float(sec.number(col, required=True, minimum=0))
         else:
-            rec[col] = sec.quantity(col, kind, required=True, non_negative=True)
+            optional = col in OPTIONAL_COLUMNS.get(table, ())
+            v = sec.quantity(col, kind, required=not optional, non_negative=True)
+            rec[col] = math.nan if v is None else v
     sec.done()
     rec["_source"] = f"{sec.source}:{sec.node.line}"
     return pd.Series(rec, name=rec["id"])
@@ -195,7 +222,7 @@ _OUT_UNITS = {
     "length": "mm", "mass": "kg", "time": "h", "force": "N", "stiffness": "N/um", "speed": "m/min",
     "acceleration": "m/s^2", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
     "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
-    "angular_speed": "rpm", "damping": "N.s/m",
+    "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad", "temperature_difference": "K",
 }
 
 
@@ -218,6 +245,8 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
         if f.name in _AXIS_KINDS:
             if v is not None:
                 axis[f.name] = _q(v, _AXIS_KINDS[f.name])
+        elif f.name == "pretension":
+            axis[f.name] = "auto" if v is None else _q(v, "force")
         elif f.name == "load_factor":
             axis[f.name] = float(v)
         else:
@@ -237,7 +266,7 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
                 part[col] = int(v)
             elif kind == "dimensionless":
                 part[col] = float(v)
-            else:
+            elif math.isfinite(float(v)):
                 part[col] = _q(float(v), kind)
         parts[slot] = part
     if design.nut_preload is not None:

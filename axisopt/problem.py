@@ -26,6 +26,7 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
       min_life: 20000 h                # nut L10 life (the axis.required_life check applies too)
       min_stiffness: 150 N/um          # minimum over the stroke
       min_frequency: 60 Hz             # minimum over the stroke
+      max_backlash: 0 um               # axial play of the nut (default 0: preloaded nuts only)
       margins: {critical_speed: 1.25, buckling: 2.0}   # per model.CHECKS; default 1.0, 0 disables
     catalog:
       mountings: [fixed-supported, fixed-fixed]         # default: [axis.mounting]
@@ -68,7 +69,12 @@ LIMITS = MappingProxyType({
     "min_life": ("time", "h", 3600.0, "life", ">="),
     "min_stiffness": ("stiffness", "N/um", 1e6, "k_total", ">="),
     "min_frequency": ("frequency", "Hz", 1.0, "f1", ">="),
+    "max_backlash": ("length", "um", 1e-6, "backlash", "<="),
 })
+# Limits that apply when a problem does not set them: a machine-tool feed axis has no backlash (single nuts
+# with axial play are allowed only when the problem says max_backlash > 0).
+DEFAULT_LIMITS = MappingProxyType({"max_backlash": 0.0})
+_ZERO_ALLOWED = ("max_backlash",)
 
 
 @dataclass(frozen=True)
@@ -242,11 +248,12 @@ def _read_objective(root: Section) -> Objective:
 
 def _read_limits(sec: Section | None):
     margins = {c: 1.0 for c in CHECKS}
+    limits = dict(DEFAULT_LIMITS)
     if sec is None:
-        return (), tuple(margins.items())
-    limits = {}
+        return tuple(sorted(limits.items())), tuple(margins.items())
     for key, (kind, _unit, _f, _out, _sense) in LIMITS.items():
-        v = sec.quantity(key, kind, positive=True)
+        zero_ok = key in _ZERO_ALLOWED
+        v = sec.quantity(key, kind, positive=not zero_ok, non_negative=zero_ok)
         if v is not None:
             limits[key] = v
     msec = sec.section("margins")

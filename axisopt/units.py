@@ -40,6 +40,8 @@ KINDS: dict[str, tuple[str, str]] = {
     "damping": ("[force]*[time]/[length]", "N*s/m"),
     "pressure": ("[pressure]", "Pa"),
     "temperature": ("[temperature]", "K"),
+    "temperature_difference": ("[temperature]", "K"),
+    "torsional_stiffness": ("[force]*[length]", "N*m"),
     "kinematic_viscosity": ("[length]**2/[time]", "m**2/s"),
     "inertia": ("[mass]*[length]**2", "kg*m**2"),
     "money": ("[currency]", "EUR"),
@@ -75,6 +77,8 @@ def unit_factor(unit: str, kind: str) -> float:
     """
     dim, si = KINDS[kind]
     text = _normalise(unit)
+    if kind == "temperature_difference":  # a rise of 3 degC is 3 K
+        text = {"degC": "delta_degC", "degF": "delta_degF", "celsius": "delta_degC"}.get(text, text)
     try:
         u = _UREG.Unit(text)
     except Exception as exc:  # pint raises several types for unparseable input
@@ -162,6 +166,7 @@ _EXAMPLES = {
     "speed": "m/min", "acceleration": "m/s^2", "angular_speed": "rpm", "angle": "deg",
     "mass_per_length": "kg/m", "damping": "N.s/m", "temperature": "degC", "money": "EUR",
     "inertia": "kg.m^2", "frequency": "Hz", "dn": "mm.rpm", "money_per_length": "EUR/m",
+    "temperature_difference": "K", "torsional_stiffness": "N.m/rad",
 }
 
 

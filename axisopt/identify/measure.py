@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import mathx as mx
+from ..physics import screw as ps
 from .data import Dataset
 from .fit import Param
 
@@ -206,9 +207,17 @@ def baseline_terms(plant, P) -> Terms:
 
 
 def screw_bearing_compliance(q: Terms, x, span):
-    near = q.c_bearing + x / q.EA
-    inv = 1.0 / near + q.k_far / (1.0 + q.k_far * (span - x) / q.EA)
-    return 1.0 / inv
+    """Screw and bearing sets, the axis model's two-path form (:func:`axisopt.physics.screw.two_path_stiffness`)."""
+    return 1.0 / ps.two_path_stiffness(1.0 / q.c_bearing, q.k_far, q.EA, x, span)
+
+
+def drive_compliance(plant, x):
+    """Compliance in the chain besides screw tension, bearings and nut, as the axis model has it: screw
+    torsion through the lead up to the nut, nut bracket, coupling [m/N]."""
+    tors = 0.0
+    if plant.torsion:
+        tors = 1.0 / ps.torsion_axial_stiffness(ps.screw_torsional_stiffness(plant.root_diameter, x), plant.lead)
+    return plant.c_series + tors
 
 
 def nut_k0(q: Terms, plant):
@@ -247,7 +256,7 @@ def output(kind: str, q: Terms, Z: dict, plant):
             + 0.5 * q.asymmetry
         )
     x = Z["x"]
-    c_sb = screw_bearing_compliance(q, x, plant.span)
+    c_sb = screw_bearing_compliance(q, x, plant.span) + drive_compliance(plant, x)
     k0 = nut_k0(q, plant)
     if kind == "stiffness":
         f = Z["force"]

@@ -27,8 +27,8 @@ class Plant:
     start_offset: float  # fixed bearing to nut at position 0 [m]
     stroke: float  # [m]
     root_diameter: float  # d_r [m]
-    k_bearing: float  # axial rigidity of one support-bearing set [N/m]
-    k_nut: float  # nut stiffness at the design preload [N/m]
+    k_bearing: float  # axial rigidity of one support-bearing set with its housing [N/m]
+    k_nut: float  # nut stiffness at the design preload, no external load [N/m]
     preload: float  # nut preload Fa0 [N]
     moving_mass: float  # table + nut + blocks [kg]
     screw_mass: float  # [kg]
@@ -41,6 +41,8 @@ class Plant:
     lead: float = 0.01  # [m]
     efficiency: float = 0.9  # screw efficiency for torque <-> force
     youngs_modulus: float = E_STEEL
+    c_series: float = 0.0  # position-independent compliance besides bearings and nut: bracket, coupling [m/N]
+    torsion: bool = False  # screw torsion through the lead in the chain (as the axis model)
     name: str = "design"
 
     @property
@@ -67,8 +69,9 @@ class Plant:
 
 
 def plant_from_design(design) -> Plant:
-    """Plant of a :class:`axisopt.design.Design` from the design's own axis model."""
+    """Plant of a :class:`axisopt.design.Design` from the design's own axis model (same chain components)."""
     from ..model import SCREW_EFFICIENCY, axis_response, design_params
+    from ..model.loads import bearing_set_stiffness
 
     p = design_params(design)
     ax = design.axis
@@ -82,8 +85,8 @@ def plant_from_design(design) -> Plant:
         start_offset=ax.start_offset,
         stroke=ax.stroke,
         root_diameter=float(p["root_diameter"]),
-        k_bearing=float(p["bearing_stiffness"]),
-        k_nut=float(out["k_nut"]),
+        k_bearing=float(bearing_set_stiffness(p)),
+        k_nut=float(out["k_nut_unloaded"]),
         preload=float(design.preload),
         moving_mass=float(out["moving_mass"]),
         screw_mass=float(out["screw_mass"]),
@@ -95,5 +98,7 @@ def plant_from_design(design) -> Plant:
         guide_normal_stiffness=float(p["guide_normal_stiffness"]),
         lead=float(p["lead"]),
         efficiency=SCREW_EFFICIENCY,
+        c_series=float(out["c_bracket"]) + 1.0 / float(out["k_coupling"]),
+        torsion=True,
         name=design.name,
     )

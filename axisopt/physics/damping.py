@@ -12,6 +12,7 @@ __all__ = [
     "critical_damping", "damping_ratio", "damping_coefficient", "damping_ratio_from_log_decrement_eq39",
     "damping_ratio_from_log_decrement_exact", "LOG_DECREMENT_METHODS", "damping_ratio_from_log_decrement",
     "damping_ratio_from_loss_factor", "damping_ratio_from_decay_rate", "modal_damping_ratio",
+    "rolling_joint_damping", "chain_damper_share",
 ]
 
 # Seed Table 5 (after [16]): damping ratio ranges [-], as printed
@@ -110,3 +111,35 @@ def modal_damping_ratio(mass, stiffness, *dampers, structural_ratio=0.0):
     for d in dampers:
         total = total + d
     return structural_ratio + total / critical_damping(mass, stiffness)
+
+
+def rolling_joint_damping(bore):
+    r"""Axial damping of a rolling-element joint (support bearing set, ball nut) from seed Table 6.
+
+    Table 6 lists spindle bearings by bore (55, 90, 120, 160 mm).  The midpoint of the row for the
+    nearest listed bore at or above ``bore`` is used; bores below 55 mm take the 55 mm row
+    (2000-9000 N*s/m, midpoint 5500), the smallest listed, and bores above 160 mm the 160 mm row.  Feed-axis
+    support bearings (15-60 mm) and nuts therefore get 5500 N*s/m: an order-of-magnitude figure.
+
+    bore : d [m] (float, array or symbol).  Returns d [N*s/m].
+    """
+    mm = bore * 1e3
+    rows = sorted(BEARING_DAMPING_TABLE6)
+    lo, hi = BEARING_DAMPING_TABLE6[rows[-1]]
+    out = 0.5 * (lo + hi) + 0.0 * mm
+    for b in reversed(rows[:-1]):
+        lo, hi = BEARING_DAMPING_TABLE6[b]
+        out = mx.if_else(mm <= b, 0.5 * (lo + hi), out)
+    return out
+
+
+def chain_damper_share(damping, chain_stiffness, component_stiffness):
+    r"""A damper across one spring of a series chain, referred to the chain's end coordinate.
+
+    .. math:: d_{eff} = d\,(k/k_i)^2
+
+    The component deforms by (k/k_i) of the chain's end displacement, so it dissipates (k/k_i)^2 of what the
+    same damper would at the end (strain-energy share).  damping : d [N*s/m];  chain_stiffness : k [N/m]
+    component_stiffness : k_i [N/m].  Returns d_eff [N*s/m].
+    """
+    return damping * (chain_stiffness / component_stiffness) ** 2

@@ -12,6 +12,7 @@ from axisopt.physics.screw import E_STEEL, choose
 __all__ = [
     "axial_natural_frequency", "effective_axial_mass", "axial_angular_frequency_eq11", "table_mode_frequency",
     "axial_torsional_eigenvalues", "axial_torsional_frequencies", "dynamic_compliance",
+    "drive_train_eigenvalues", "drive_train_frequencies", "drive_train_compliance",
 ]
 
 
@@ -132,3 +133,69 @@ def dynamic_compliance(frequency, mass, axial_stiffness, axial_damping, rotary_i
         torsional_damping + axial_damping * r**2)
     coupling = r * (axial_stiffness + jw * axial_damping)
     return z_t / (z_t * z_x - coupling**2)
+
+
+def drive_train_eigenvalues(motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass, lead):
+    r"""Squared angular frequencies of the two elastic modes of the motor-coupling-screw-table chain.
+
+    Three DOFs (seed Fig. 1): motor rotor theta_m (J_m, with its half of the coupling), screw theta_s (J_s,
+    with the other half), table x (m).  The coupling k_c joins theta_m and theta_s; the axial chain k
+    (bearings, screw tension and torsion, nut, bracket) acts on x - r theta_s, r = P_h / (2 pi).  The motor
+    is free at these frequencies (its position loop is far slower), so one mode is the rigid-body motion
+    at 0 Hz.  The other two solve
+
+    .. math:: J_m J_s m\,\lambda^2 - Q\lambda + k_c k (J_m + J_s + m r^2) = 0,
+    .. math:: Q = k_c J_s m + J_m m (k_c + k r^2) + J_m J_s k
+
+    (det(K - lambda M) = 0 divided by the rigid-body root).  As J_m -> inf it becomes the held-motor
+    2-DOF of :func:`axial_torsional_eigenvalues` with k_t = k_c.
+
+    motor_inertia : J_m [kg*m^2];  screw_inertia : J_s [kg*m^2];  coupling_stiffness : k_c [N*m/rad]
+    axial_stiffness : k [N/m];  mass : m [kg];  lead : P_h [m].
+    Returns (omega_1^2, omega_2^2) [rad^2/s^2], omega_1 <= omega_2.
+    """
+    r = lead / (2.0 * mx.pi)
+    a, b, kc, k = motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness
+    q = kc * b * mass + a * mass * (kc + k * r**2) + a * b * k
+    c0 = kc * k * (a + b + mass * r**2)
+    den = 2.0 * a * b * mass
+    disc = mx.sqrt(mx.hinge(q**2 - 4.0 * a * b * mass * c0))
+    return (q - disc) / den, (q + disc) / den
+
+
+def drive_train_frequencies(motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass, lead):
+    """Natural frequencies (f_1, f_2) [Hz] of drive_train_eigenvalues (same arguments, SI)."""
+    w1, w2 = drive_train_eigenvalues(motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass,
+                                     lead)
+    return mx.sqrt(w1) / (2.0 * mx.pi), mx.sqrt(w2) / (2.0 * mx.pi)
+
+
+def drive_train_compliance(frequency, motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass,
+                           lead, table_damping=0.0, chain_damping=0.0, coupling_damping=0.0, motor_held=False):
+    r"""Table compliance X/F(j omega) of the motor-coupling-screw-table chain (inverse of seed eq. 41).
+
+    DOFs and springs as :func:`drive_train_eigenvalues`; viscous dampers: ``table_damping`` c_g from the
+    table to the frame (guide blocks), ``chain_damping`` c_a across the axial chain (nut, bearings, as
+    referred to x - r theta_s), ``coupling_damping`` c_c across the coupling.  With the motor free, the
+    dynamic stiffness F/X is a ratio of polynomials of degree 5 over degree 3 in s, the form of seed
+    eq. 41; ``motor_held`` fixes theta_m (the static compliance is then 1/k + r^2/k_c).
+
+    frequency : f [Hz] (array).  Returns complex ndarray [m/N] (numpy only, not symbolic).
+    """
+    w = 2.0 * np.pi * np.asarray(frequency, dtype=float)
+    r = lead / (2.0 * np.pi)
+    s = 1j * w
+    zc = coupling_stiffness + s * coupling_damping
+    za = axial_stiffness + s * chain_damping
+    # rows/cols: theta_m, theta_s, x
+    a11 = motor_inertia * s**2 + zc
+    a12 = -zc
+    a22 = screw_inertia * s**2 + zc + za * r**2
+    a23 = -za * r
+    a33 = mass * s**2 + table_damping * s + za
+    if motor_held:
+        det2 = a22 * a33 - a23**2
+        return a22 / det2
+    det = a11 * (a22 * a33 - a23**2) - a12**2 * a33
+    cof = a11 * a22 - a12**2
+    return cof / det

@@ -8,6 +8,7 @@ from axisopt.physics.screw import E_STEEL
 __all__ = [
     "POISSON_STEEL", "nut_stiffness_catalog", "hertz_point_deflection", "nut_axial_deflection_hertz",
     "nut_stiffness_hertz", "lift_off_force", "double_nut_stiffness_under_load", "nut_preload_drag_torque",
+    "preloaded_pair_load",
 ]
 
 POISSON_STEEL = 0.3
@@ -111,6 +112,19 @@ def lift_off_force(preload):
     Valid for Hertz point contact (delta ~ F^(2/3)) in both halves.
     """
     return 2.0**1.5 * preload
+
+
+def preloaded_pair_load(preload, axial_load):
+    r"""Load on the loaded half of a preloaded pair (double nut, bearing set, guide ball rows).
+
+    .. math:: F_1 = F_{pr}\,(1 + F/(2^{3/2} F_{pr}))^{3/2}\ \text{for}\ F < 2^{3/2}F_{pr},\ F_1 = F\ \text{above}
+
+    preload : F_pr [N] (> 0);  axial_load : F, external load [N] (>= 0).  Returns F_1 [N].
+    Source: Steinmeyer technical pages ("expressions and definitions"), ISO 3408-5 (per mechanixcalc).
+    """
+    lift = 2.0**1.5 * mx.fmax(preload, 1e-9)
+    f1 = mx.fmax(preload, 1e-9) * (1.0 + mx.fmin(axial_load, lift) / lift) ** 1.5
+    return mx.if_else(axial_load < lift, f1, axial_load)
 
 
 def double_nut_stiffness_under_load(k0, preload, axial_load):

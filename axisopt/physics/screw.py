@@ -9,7 +9,8 @@ from axisopt import mathx as mx
 __all__ = [
     "E_STEEL", "G_STEEL", "RHO_STEEL", "MOUNTINGS", "CATALOG_STIFFNESS_FACTOR", "choose",
     "series_stiffness", "parallel_stiffness", "screw_stiffness", "screw_stiffness_catalog",
-    "screw_torsional_stiffness", "screw_rotary_inertia", "screw_mass", "lead_angle",
+    "screw_axial_rigidity", "two_path_stiffness", "screw_bearing_stiffness",
+    "screw_torsional_stiffness", "torsion_axial_stiffness", "screw_rotary_inertia", "screw_mass", "lead_angle",
 ]
 
 E_STEEL = 206e9  # [Pa] THK catalog A15-30 (2.06e5 N/mm^2)
@@ -90,6 +91,45 @@ def screw_stiffness(root_diameter, x, span, mounting, youngs_modulus=E_STEEL):
     return ea / x
 
 
+def screw_axial_rigidity(root_diameter, youngs_modulus=E_STEEL):
+    r"""Section rigidity of the screw shaft, EA = E pi d_r^2 / 4  [N] (root diameter d_r [m], E [Pa])."""
+    return youngs_modulus * mx.pi * root_diameter**2 / 4.0
+
+
+def two_path_stiffness(k_near, k_far, axial_rigidity, x, span):
+    r"""Axial stiffness at the nut of a screw held at both ends: two load paths in parallel.
+
+    .. math:: k = \Big[\frac{1}{k_1} + \frac{x}{EA}\Big]^{-1} + \Big[\frac{1}{k_2} + \frac{L-x}{EA}\Big]^{-1}
+
+    The nut force splits between the near path (bearing set k_1, screw segment x) and the far path
+    (bearing set k_2, segment L - x).  ``k_far = 0`` gives the one-fixed-end chain 1/(1/k_1 + x/EA).
+    With rigid bearings it is THK's fixed-fixed screw rigidity A E L / (a b) (vendor-formulas.md 2.5).
+
+    k_near, k_far  : k_1, k_2, axial stiffness of the bearing set (with its housing) at each end [N/m]
+    axial_rigidity : EA [N] (screw_axial_rigidity)
+    x              : fixed (near) bearing to nut [m];  span : L, bearing to bearing [m]
+    Returns k [N/m].  Source: statics of two springs in parallel (seed eq. 1-2 applied per path).
+    """
+    near = 1.0 / (1.0 / k_near + x / axial_rigidity)
+    far = k_far / (1.0 + k_far * (span - x) / axial_rigidity)
+    return near + far
+
+
+def screw_bearing_stiffness(root_diameter, x, span, mounting, k_bearing_set, youngs_modulus=E_STEEL):
+    r"""Screw shaft and support bearings together, as the nut sees them, by mounting.
+
+    fixed-fixed: :func:`two_path_stiffness` with a bearing set of stiffness ``k_bearing_set`` at each end;
+    otherwise the fixed set in series with the segment x (a supported or free end carries no axial load).
+
+    root_diameter : d_r [m];  x : fixed bearing to nut [m];  span : L [m];  mounting : one of MOUNTINGS
+    k_bearing_set : one bearing set with its housing [N/m].  Returns [N/m].
+    """
+    choose(CATALOG_STIFFNESS_FACTOR, mounting, "mounting")
+    ea = screw_axial_rigidity(root_diameter, youngs_modulus)
+    k_far = k_bearing_set if mounting == "fixed-fixed" else 0.0 * k_bearing_set
+    return two_path_stiffness(k_bearing_set, k_far, ea, x, span)
+
+
 def screw_stiffness_catalog(root_diameter, length, mounting, youngs_modulus=E_STEEL):
     r"""Catalog form of the screw shaft stiffness, seed eq. 7-8.
 
@@ -114,6 +154,20 @@ def screw_torsional_stiffness(root_diameter, length, shear_modulus=G_STEEL):
     Returns k_theta [N*m/rad].  Source: elementary torsion (Saint-Venant, round bar).
     """
     return shear_modulus * mx.pi * root_diameter**4 / (32.0 * length)
+
+
+def torsion_axial_stiffness(torsional_stiffness, lead):
+    r"""Axial stiffness at the nut of a torsional compliance in the drive, seen through the lead.
+
+    .. math:: k_{ax} = k_\theta (2\pi / P_h)^2
+
+    An axial force F at the nut needs the torque T = F P_h / (2 pi) at the screw; the twist T/k_theta moves
+    the nut by (P_h / 2 pi) T / k_theta.  torsional_stiffness : k_theta [N*m/rad] (screw shaft from the
+    coupling to the nut, or the coupling);  lead : P_h [m].  Returns k_ax [N/m].
+    Source: THK/HIWIN feed-system rigidity (screw torsion term); rigid-body kinematics of the screw pair.
+    Valid with the motor held by its position loop (at standstill).
+    """
+    return torsional_stiffness * (2.0 * mx.pi / lead) ** 2
 
 
 def screw_rotary_inertia(diameter, length, density=RHO_STEEL):

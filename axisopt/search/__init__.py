@@ -108,6 +108,8 @@ def limit_sensitivities(problem: Problem, res: SolveResult) -> list:
           "min_stiffness": best.min_stiffness * 1e6, "min_frequency": best.min_frequency}
     out = []
     for key, value in problem.limits:
+        if key not in at:  # e.g. max_backlash 0: relaxing it by 10 % changes nothing
+            continue
         kind, unit, factor, okey, sense = LIMITS[key]
         relaxed = value * (1.0 + RELAX) if sense == "<=" else value * (1.0 - RELAX)
         r2 = solve(problem.with_limit(key, relaxed), "default", top=1, sensitivities=False)

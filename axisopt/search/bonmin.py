@@ -92,6 +92,8 @@ def _build(space, mounting, constraints, objective):
         v = out[c.key]
         if c.key == "life" or c.key.startswith("margin_"):
             e = ca.log(ca.fmax(v, 1e-300) / c.limit)
+        elif c.limit <= 0:  # e.g. max_backlash 0: the value in display units must be <= 0
+            e = v / c.factor
         else:
             e = v / c.limit - 1.0
         n = v.shape[0]

@@ -29,18 +29,18 @@ from ..problem import LIMITS, Problem
 from ..units import N_PER_UM
 
 # Outputs that depend on the nut preload and how (+1 nondecreasing, -1 nonincreasing).
-PRELOAD_DIRECTION = {"k_total": 1, "f1": 1, "k_nut": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
+PRELOAD_DIRECTION = {"k_total": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
                      "margin_nut_lift_off": 1, "life": -1, "margin_nut_life": -1}
 PROFILE = ("k_total", "f1")
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
 BISECTION_STEPS = 52
 
 _SCREW_COLS = ("root_diameter", "nominal_diameter", "lead", "max_length", "mass_per_length", "dn_limit",
-               "price_per_length", "price_fixed")
+               "price_per_length", "price_fixed", "support_bore_min", "support_bore_max")
 _NUT_COLS = ("stiffness", "stiffness_preload", "dynamic_load_rating", "static_load_rating", "mass", "price",
-             "preload_min", "preload_max")
+             "preload_min", "preload_max", "axial_play")
 _BEARING_COLS = ("axial_rigidity", "lift_off_load", "preload", "f0", "f1", "bore", "outer_diameter",
-                 "limiting_speed", "mass", "price", "dynamic_load_rating")
+                 "limiting_speed", "mass", "price", "dynamic_load_rating", "starting_torque")
 _GUIDE_COLS = ("normal_rigidity", "tangential_rigidity", "friction_force", "friction_coefficient",
                "friction_viscous", "damping", "block_mass", "rail_mass_per_length", "block_price",
                "rail_price_per_length", "dynamic_load_rating", "preload")
@@ -83,6 +83,8 @@ class Constraint:
     def violation(self, v):
         """Relative miss (0 when met)."""
         if self.sense == "<=":
+            if self.limit <= 0:  # e.g. max_backlash 0: the miss in display units
+                return np.maximum(v / self.factor, 0.0)
             return np.maximum(v / self.limit - 1.0, 0.0)
         return np.maximum(1.0 - v / self.limit, 0.0)
 
@@ -279,8 +281,12 @@ def build_space(problem: Problem) -> Space:
         else:
             guides = df
     nuts = nuts[nuts["screw_id"].isin(screws.index)]
-    lo = np.maximum(nuts["preload_min"].to_numpy(float), problem.preload_min)
-    hi = np.minimum(nuts["preload_max"].to_numpy(float), problem.preload_max)
+    # the problem's preload bounds are for preloaded nuts; a single nut keeps its catalog range
+    single = (nuts["type"] == "single").to_numpy()
+    lo = np.where(single, nuts["preload_min"].to_numpy(float),
+                  np.maximum(nuts["preload_min"].to_numpy(float), problem.preload_min))
+    hi = np.where(single, nuts["preload_max"].to_numpy(float),
+                  np.minimum(nuts["preload_max"].to_numpy(float), problem.preload_max))
     keep = lo <= hi
     nuts, lo, hi = nuts[keep], lo[keep], hi[keep]
     screws_al = cat.screws.loc[nuts["screw_id"].to_numpy()]

@@ -11,9 +11,10 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from axisopt.physics import MODULES, bearings, checks, damping, dynamics, friction, guides, nut, screw
+from axisopt.physics import MODULES, bearings, checks, damping, dynamics, friction, guides, nut, screw, thermal
 
-EXCLUDED = {"dynamic_compliance", "choose"}  # complex numpy-only FRF; selector helper (no numbers)
+# complex numpy-only FRFs; selector helper (no numbers)
+EXCLUDED = {"dynamic_compliance", "drive_train_compliance", "choose"}
 SCALE = (0.9, 1.0, 1.1)
 RAD15 = math.radians(15.0)
 
@@ -51,6 +52,19 @@ CASES = [
         fixed=dict(mounting="fixed-fixed"),
     ),
     case(screw.screw_torsional_stiffness, kw=dict(root_diameter=0.02, length=1.0)),
+    case(screw.screw_axial_rigidity, kw=dict(root_diameter=0.02)),
+    case(screw.two_path_stiffness, kw=dict(k_near=8e8, k_far=(0.0, 8e8, 1e9), axial_rigidity=6e7, x=0.3, span=1.0)),
+    case(screw.screw_bearing_stiffness, kw=dict(root_diameter=0.02, x=0.3, span=1.0, k_bearing_set=8e8),
+         fixed=dict(mounting="fixed-fixed"), label="-ff"),
+    case(screw.screw_bearing_stiffness, kw=dict(root_diameter=0.02, x=0.3, span=1.0, k_bearing_set=8e8),
+         fixed=dict(mounting="fixed-supported"), label="-fs"),
+    case(screw.torsion_axial_stiffness, kw=dict(torsional_stiffness=1e4, lead=0.01)),
+    case(thermal.thermal_growth, kw=dict(length=1.0, temperature_rise=3.0)),
+    case(thermal.restrained_thermal_force, kw=dict(root_diameter=0.03, temperature_rise=3.0)),
+    case(thermal.thermal_force_elastic_ends, kw=dict(root_diameter=0.03, span=1.0, temperature_rise=3.0,
+                                                    k_bearing_set=8e8)),
+    case(thermal.thermal_displacement, kw=dict(x=0.4, span=1.0, root_diameter=0.03, temperature_rise=3.0,
+                                              k_bearing_set=8e8, both_ends_fixed=(0.0, 1.0, 1.0))),
     case(screw.screw_rotary_inertia, kw=dict(diameter=0.025, length=1.0)),
     case(screw.screw_mass, kw=dict(diameter=0.025, length=1.0)),
     case(screw.lead_angle, kw=dict(lead=0.01, nominal_diameter=0.032)),
@@ -59,6 +73,7 @@ CASES = [
     case(nut.nut_axial_deflection_hertz, kw=dict(axial_load=2000.0, **BALL)),
     case(nut.nut_stiffness_hertz, kw=dict(axial_load=2000.0, **BALL)),
     case(nut.lift_off_force, kw=dict(preload=1500.0)),
+    case(nut.preloaded_pair_load, kw=dict(preload=1500.0, axial_load=(1000.0, 5000.0, 3000.0))),
     case(
         nut.double_nut_stiffness_under_load,
         kw=dict(k0=8e8, preload=1000.0, axial_load=(-1000.0, 2500.0, 5000.0)),
@@ -136,6 +151,18 @@ CASES = [
         dynamics.axial_torsional_frequencies,
         kw=dict(rotary_inertia=2e-3, torsional_stiffness=3e3, axial_stiffness=2e8, mass=300.0, lead=0.01),
     ),
+    case(
+        dynamics.drive_train_eigenvalues,
+        kw=dict(motor_inertia=1e-3, screw_inertia=2e-3, coupling_stiffness=3e4, axial_stiffness=2e8, mass=300.0,
+                lead=0.01),
+    ),
+    case(
+        dynamics.drive_train_frequencies,
+        kw=dict(motor_inertia=1e-3, screw_inertia=2e-3, coupling_stiffness=3e4, axial_stiffness=2e8, mass=300.0,
+                lead=0.01),
+    ),
+    case(damping.rolling_joint_damping, kw=dict(bore=(0.03, 0.1, 0.2))),
+    case(damping.chain_damper_share, kw=dict(damping=5e3, chain_stiffness=2e8, component_stiffness=8e8)),
     case(damping.critical_damping, kw=dict(mass=300.0, stiffness=2e8)),
     case(damping.damping_ratio, kw=dict(damping=8e3, mass=300.0, stiffness=2e8)),
     case(damping.damping_coefficient, kw=dict(ratio=0.05, mass=300.0, stiffness=2e8)),

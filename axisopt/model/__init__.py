@@ -1,0 +1,29 @@
+"""The feed-axis model: physics assembled for an axis and its chosen parts.
+
+One set of pure functions, one per sub-assembly (:mod:`.loads`, :mod:`.chain`, :mod:`.modes`,
+:mod:`.drag`, :mod:`.cost`, :mod:`.checks`), put together by :func:`axis_response`.  ``evaluate``, the
+search (screening on numpy, exact solves, IPOPT on the CasADi Function) and ``diagnose`` (its plant) all
+call it.
+"""
+
+from .checks import CHECK_LABELS, CHECKS
+from .drag import SCREW_EFFICIENCY
+from .function import (
+    COMPONENTS,
+    PROFILE_OUTPUTS,
+    SCALAR_OUTPUTS,
+    AxisModel,
+    Evaluation,
+    design_params,
+    evaluate,
+    model_for,
+)
+from .modes import STEEL_DAMPING
+from .params import PARAM_NAMES, axis_params, positions
+from .response import axis_response
+
+__all__ = [
+    "CHECKS", "CHECK_LABELS", "COMPONENTS", "PARAM_NAMES", "PROFILE_OUTPUTS", "SCALAR_OUTPUTS", "SCREW_EFFICIENCY",
+    "STEEL_DAMPING", "AxisModel", "Evaluation", "axis_params", "axis_response", "design_params", "evaluate",
+    "model_for", "positions",
+]

@@ -1,0 +1,59 @@
+r"""The axial stiffness chain at the nut, component by component (seed eq. 1-2 and the vendors' sum).
+
+.. math:: 1/k = 1/k_{SB}(x) + 1/k_{tors}(x) + 1/k_{cpl} + 1/k_N + 1/k_{bracket}
+
+* ``k_SB``: screw shaft and support-bearing sets (each in series with its housing).  One fixed end:
+  set in series with the segment x.  Fixed-fixed: the two load paths in parallel (seed eq. 3-5, 10;
+  THK A E L/(a b)).
+* ``k_tors``: screw torsion from the coupling to the nut, through the lead, k_theta (2 pi / P_h)^2.
+* ``k_cpl``: coupling torsion through the lead (motor held by its position loop at standstill).
+* ``k_N``: nut.  Double nut: eq. 9 at the preload (HIWIN F 3.34), then the Hertz curve with lift-off at the
+  largest axial load the axis sees (its softest point).  Single nut with play: HIWIN F 3.35 at the mean
+  operating load, 0.8 K (F_bm / 0.28 C)^(1/3).
+* ``k_bracket``: nut bracket; ``k_SB`` includes the bearing housings (axis values, rigid when not given).
+
+``k_drive`` is the chain without the coupling: the spring between the screw and the table in the
+drive-train model (:func:`axisopt.physics.dynamics.drive_train_eigenvalues`).
+"""
+
+from __future__ import annotations
+
+from .. import mathx as mx
+from ..physics import nut as pn
+from ..physics import screw as ps
+from ..physics import thermal as pt
+from .loads import bearing_set_stiffness
+
+
+def nut_stiffness(p, preload, axial_force, mean_force):
+    """(k at zero external load, k at ``axial_force``) [N/m] of the nut, double or single.
+
+    A single nut with play is rated at the mean operating load (HIWIN F 3.35: 0.8 K (F_bm / 0.28 C)^(1/3),
+    the catalog's ``stiffness_preload`` holding the 0.28 C basis)."""
+    single_load = mx.fmax(mean_force, 1e-6)
+    load = mx.if_else(p["nut_double"] > 0.5, preload, single_load)
+    k0 = pn.nut_stiffness_catalog(p["nut_stiffness"], load, p["nut_dynamic_load"],
+                                  reference_preload=p["nut_stiffness_preload"])
+    k_loaded = pn.double_nut_stiffness_under_load(k0, mx.fmax(preload, 1e-9), axial_force)
+    return k0, mx.if_else(p["nut_double"] > 0.5, k_loaded, k0)
+
+
+def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
+    """Component stiffnesses [N/m] (profiles over x where they depend on it) and their series sum."""
+    d_r, lead = p["root_diameter"], p["lead"]
+    k_set = bearing_set_stiffness(p)
+    k_sb = ps.screw_bearing_stiffness(d_r, x, p["span"], mounting, k_set)
+    k_screw = ps.screw_stiffness(d_r, x, p["span"], mounting)
+    k_tors = ps.torsion_axial_stiffness(ps.screw_torsional_stiffness(d_r, x), lead)
+    k_cpl = ps.torsion_axial_stiffness(p["coupling_stiffness"], lead)
+    k_n0, k_n = nut_stiffness(p, preload, axial_force, mean_force)
+    k_drive = 1.0 / (1.0 / k_sb + 1.0 / k_tors + 1.0 / k_n + p["bracket_compliance"])
+    k_tot = ps.series_stiffness(k_drive, k_cpl)
+    u_th = pt.thermal_displacement(x, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0)
+    return {
+        "k_screw": k_screw, "k_screw_bearings": k_sb, "k_torsion": k_tors, "k_coupling": k_cpl,
+        "k_nut": k_n, "k_nut_unloaded": k_n0, "c_bracket": p["bracket_compliance"] + 0.0 * k_n,
+        "c_housing": p["housing_compliance"] + 0.0 * k_n,
+        "k_bearing": p["bearing_sets"] * k_set, "k_drive": k_drive, "k_total": k_tot,
+        "thermal_displacement": u_th,
+    }

@@ -1,0 +1,91 @@
+"""Vendor checks of the axis as margins (value / limit, >= 1 passes) and the values behind them."""
+
+from __future__ import annotations
+
+import math
+from types import MappingProxyType
+
+from .. import mathx as mx
+from ..physics import checks as pc
+from ..physics import nut as pn
+
+CHECKS = ("critical_speed", "buckling", "screw_yield", "nut_life", "bearing_life", "guide_life", "dn",
+          "nut_lift_off", "bearing_lift_off", "bearing_speed", "bearing_fit", "screw_length")
+
+CHECK_LABELS = MappingProxyType({
+    "critical_speed": "critical speed / max screw speed",
+    "buckling": "buckling load / max screw compression",
+    "screw_yield": "yield load (THK P2) / max screw tension",
+    "nut_life": "nut L10 life / required life",
+    "bearing_life": "support bearing L10 life / required life",
+    "guide_life": "guide block L10 travel / required travel",
+    "dn": "DN limit / DN at max speed",
+    "nut_lift_off": "nut lift-off force / max axial force",
+    "bearing_lift_off": "bearing lift-off load / max bearing load",
+    "bearing_speed": "bearing limiting speed / max screw speed",
+    "bearing_fit": "bearing bore within the screw end's range",
+    "screw_length": "screw max length / needed length",
+})
+
+# Buckling end condition.  The compressed length runs from the thrust (fixed) bearing to the nut, and the
+# guided nut counts as a fixed end whatever the screw mounting: THK worked examples A-724..A-727 and
+# A-738..A-740 take "fixed-fixed" (eta_2 = 20) for a fixed-supported screw, with l_a the distance between the
+# mounting positions.  The critical speed keeps the screw's own mounting (lambda_2 of the mounting).
+BUCKLING_END_CONDITION = "fixed-fixed"
+# Above this a margin says only "not limiting" (e.g. buckling when pretension keeps the screw in tension).
+MARGIN_CAP = 1e3
+# THK catalog A15 eq. 6: permissible tensile/compressive load of the shaft, P2 = sigma A, sigma = 147 MPa.
+SCREW_YIELD_STRESS = 147e6
+
+
+def checks(p, mounting, preload, loads, masses_) -> dict:
+    """Check margins ``margin_<check>`` and the physical values they compare (SI)."""
+    span = p["span"]
+    omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
+    mean_omega = 2.0 * math.pi * p["mean_speed"] / p["lead"]
+    f_max, f_mean = loads["max_axial_force"], loads["mean_axial_force"]
+    x_far = p["start_offset"] + p["stroke"]
+    crit = pc.critical_speed(p["root_diameter"], span, mounting)
+    # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK "evaluate
+    # both"), nut counted as fixed (BUCKLING_END_CONDITION)
+    buck_len = x_far if mounting != "fixed-fixed" else mx.fmax(x_far, span - p["start_offset"])
+    buck = pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_END_CONDITION)
+    compression = mx.fmax(loads["screw_compression"], buck / MARGIN_CAP)
+    yield_load = SCREW_YIELD_STRESS * math.pi * p["root_diameter"] ** 2 / 4.0
+    tension = mx.fmax(loads["screw_tension"], f_max)
+    nut_load = mx.if_else(p["nut_double"] > 0.5, pn.preloaded_pair_load(preload, f_mean), mx.fmax(f_mean, 1e-9))
+    life = pc.life_time(p["nut_dynamic_load"], nut_load, mean_omega, p["load_factor"])
+    # support bearings: the loaded half of the preloaded set under the mean load plus the static set load
+    brg_load = pn.preloaded_pair_load(p["bearing_preload"], f_mean + loads["bearing_static_load"])
+    brg_life = pc.life_time(p["bearing_dynamic_load"], brg_load, mean_omega, p["load_factor"])
+    # guide blocks: the load per block with the block preload acting like a preloaded pair of ball rows
+    guide_load = pn.preloaded_pair_load(p["guide_preload"], loads["block_load"])
+    guide_life = pc.guide_life_distance(p["guide_dynamic_load"], guide_load, p["load_factor"], p["guide_roller"])
+    dn = pc.dn_value(p["nominal_diameter"], omega)
+    lift = pn.lift_off_force(mx.fmax(preload, 1e-9))
+    brg_max = f_max + loads["bearing_static_load"]
+    bore = p["bearing_bore"]
+    margins = {
+        "critical_speed": crit / omega,
+        "buckling": buck / compression,
+        "screw_yield": yield_load / tension,
+        "nut_life": life / p["required_life"],
+        "bearing_life": brg_life / p["required_life"],
+        "guide_life": guide_life / (p["required_life"] * p["mean_speed"]),
+        "dn": p["dn_limit"] / dn,
+        # a single nut has no preload to lose: the check does not apply (margin reported as inf)
+        "nut_lift_off": mx.if_else(p["nut_double"] > 0.5, lift / f_max, 1e9),
+        "bearing_lift_off": p["bearing_lift_off"] / brg_max,
+        "bearing_speed": p["bearing_limiting_speed"] / omega,
+        # the bearing journal is machined on the screw end: its vendor lists the bores it takes
+        "bearing_fit": mx.fmin(p["support_bore_max"] / bore, bore / p["support_bore_min"]),
+        "screw_length": p["screw_max_length"] / span,
+    }
+    values = {
+        "critical_speed": crit, "buckling_load": buck, "yield_load": yield_load, "life": life,
+        "bearing_life": brg_life, "guide_life": guide_life, "dn": dn, "nut_lift_off_force": lift,
+        "bearing_max_load": brg_max,
+    }
+    out = {f"margin_{k}": v for k, v in margins.items()}
+    out.update(values)
+    return out

@@ -1,0 +1,51 @@
+"""Masses and the axial loads the axis sees: inertia, guide friction, gravity, pretension, heat."""
+
+from __future__ import annotations
+
+from .. import mathx as mx
+from ..physics import guides as pg
+from ..physics import thermal as pt
+
+G = 9.80665
+
+
+def masses(p) -> dict:
+    """Moving mass (table + nut + blocks), screw mass and total mass [kg]."""
+    screw_mass = p["screw_mass_per_length"] * p["span"]
+    moving = p["table_mass"] + p["nut_mass"] + p["guide_blocks"] * p["guide_block_mass"]
+    rails_mass = p["rails"] * p["rail_length"] * p["guide_rail_mass_per_length"]
+    total = moving + screw_mass + rails_mass + p["bearing_sets"] * p["bearing_mass"]
+    return {"moving_mass": moving, "screw_mass": screw_mass, "total_mass": total}
+
+
+def bearing_set_stiffness(p):
+    """One support-bearing set in series with its housing [N/m]."""
+    return 1.0 / (1.0 / p["bearing_stiffness"] + p["housing_compliance"])
+
+
+def axial_loads(p, moving) -> dict:
+    """Axial forces on the screw [N]: the largest (cutting + inertia + friction + weight) and the mean one
+    for life; guide friction at max speed and the normal load per block; the screw pretension and the
+    thermal force of a fixed-fixed screw; the static load this leaves on a support-bearing set."""
+    blocks = p["guide_blocks"]
+    n_block = (p["table_mass"] * G * (1.0 - p["gravity_axial"]) + p["normal_load"]) / blocks
+    f_guides = blocks * pg.guide_friction_force(
+        p["guide_friction_force"], p["guide_friction_coefficient"], p["guide_friction_viscous"],
+        n_block, p["max_speed"])
+    gravity = p["gravity_axial"] * moving * G
+    f_max = p["axial_load"] + moving * p["acceleration"] + f_guides + gravity
+    f_mean = p["mean_axial_load"] + f_guides + gravity
+    ff = p["bearing_sets"] - 1.0  # 1 for fixed-fixed
+    k_set = bearing_set_stiffness(p)
+    # pretension: 'auto' is the force that absorbs the temperature rise (vendor rule), fixed-fixed only
+    pre = ff * (p["pretension_auto"] * pt.restrained_thermal_force(p["root_diameter"], p["temperature_rise"])
+                + (1.0 - p["pretension_auto"]) * p["pretension"])
+    d_thermal = ff * pt.thermal_force_elastic_ends(p["root_diameter"], p["span"], p["temperature_rise"], k_set)
+    # a set carries the pretension when cold and what is left of it (or the thermal push) when warm
+    static = mx.fmax(pre, mx.fabs(d_thermal - pre))
+    # compression in the screw when pushing: the load, plus the thermal push not absorbed by pretension
+    compression = f_max + d_thermal - pre
+    return {"block_load": n_block, "guide_friction": f_guides, "max_axial_force": f_max,
+            "mean_axial_force": f_mean, "pretension": pre, "thermal_force": d_thermal,
+            "bearing_static_load": static, "screw_compression": compression,
+            "screw_tension": f_max + pre}

@@ -1,0 +1,58 @@
+"""Natural frequencies over the stroke (axial, table on guides, drive train) and modal damping."""
+
+from __future__ import annotations
+
+import math
+
+from .. import mathx as mx
+from ..physics import damping as pdm
+from ..physics import dynamics as pdy
+from ..physics import screw as ps
+
+# Material damping ratio of steel structures, seed Table 5 (0.001-0.002).
+STEEL_DAMPING = 0.002
+
+
+def axial_modes(p, x, mounting, chain, moving, screw_mass) -> dict:
+    """Axial mode (motor held, Rayleigh screw mass) and the table mode on the guide blocks [Hz]."""
+    m_eff = pdy.effective_axial_mass(moving, screw_mass, x, p["span"], mounting)
+    f_axial = pdy.axial_natural_frequency(chain["k_total"], m_eff)
+    f_table = mx.sqrt(p["guide_blocks"] * p["guide_normal_stiffness"] / moving) / (2.0 * math.pi)
+    return {"m_eff": m_eff, "f_axial": f_axial, "f_table": f_table, "f1": mx.fmin(f_axial, f_table)}
+
+
+def drive_inertias(p):
+    """(motor side, screw side) rotary inertia [kg*m^2]: rotor plus half the coupling; screw plus the other half."""
+    j_screw = ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"])
+    return p["motor_inertia"] + 0.5 * p["coupling_inertia"], j_screw + 0.5 * p["coupling_inertia"]
+
+
+def drive_train_modes(p, chain, m_eff) -> dict:
+    """First two elastic modes of motor - coupling - screw - table (motor free at these frequencies) [Hz]."""
+    j_m, j_s = drive_inertias(p)
+    f1, f2 = pdy.drive_train_frequencies(j_m, j_s, p["coupling_stiffness"], chain["k_drive"], m_eff, p["lead"])
+    return {"f_axial_torsional": f1, "f_axial_torsional_2": f2}
+
+
+def dampers(p, chain) -> dict:
+    """Viscous dampers of the axial mode referred to the table [N*s/m], each source apart.
+
+    Guide blocks: seed Table 7 (catalog column); nut and support-bearing sets: seed Table 6 by bore, each
+    weighted by its share of the chain's deformation (:func:`axisopt.physics.damping.chain_damper_share`).
+    """
+    k = chain["k_total"]
+    c_nut = pdm.chain_damper_share(pdm.rolling_joint_damping(p["nominal_diameter"]), k, chain["k_nut"])
+    # the bearing sets deform by (k / k_bearing) of the table motion (both sets together for fixed-fixed)
+    c_brg = pdm.chain_damper_share(p["bearing_sets"] * pdm.rolling_joint_damping(p["bearing_bore"]), k,
+                                   chain["k_bearing"])
+    return {"c_guides": p["guide_blocks"] * p["guide_damping"], "c_nut": c_nut, "c_bearings": c_brg}
+
+
+def damping(p, chain, m_eff) -> dict:
+    """Modal damping ratio of the axial mode and each source's part of it [-]."""
+    c = dampers(p, chain)
+    crit = pdm.critical_damping(m_eff, chain["k_total"])
+    out = {f"zeta_{k[2:]}": v / crit for k, v in c.items()}
+    out["zeta_structure"] = STEEL_DAMPING + 0.0 * crit
+    out["damping_ratio"] = STEEL_DAMPING + (c["c_guides"] + c["c_nut"] + c["c_bearings"]) / crit
+    return out

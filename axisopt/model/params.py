@@ -1,0 +1,120 @@
+"""The flat SI parameter vector of the axis model, built from an Axis and its four part rows."""
+
+from __future__ import annotations
+
+import numpy as np
+
+PARAM_NAMES = (
+    # axis
+    "stroke", "start_offset", "span", "table_mass", "acceleration", "max_speed", "mean_speed",
+    "axial_load", "mean_axial_load", "required_life", "load_factor", "guide_blocks", "rails",
+    "rail_length", "normal_load", "viscosity", "motor_inertia", "bearing_sets", "gravity_axial",
+    "housing_compliance", "bracket_compliance", "coupling_stiffness", "coupling_inertia",
+    "temperature_rise", "pretension", "pretension_auto",
+    # screw
+    "root_diameter", "nominal_diameter", "lead", "screw_max_length", "screw_mass_per_length",
+    "dn_limit", "screw_price_per_length", "screw_price_fixed", "support_bore_min", "support_bore_max",
+    # nut
+    "nut_stiffness", "nut_stiffness_preload", "nut_double", "nut_dynamic_load", "nut_static_load",
+    "nut_mass", "nut_price", "nut_preload_min", "nut_preload_max", "nut_axial_play",
+    # bearing arrangement (per screw end)
+    "bearing_stiffness", "bearing_lift_off", "bearing_preload", "bearing_f0", "bearing_f1",
+    "bearing_mean_diameter", "bearing_limiting_speed", "bearing_mass", "bearing_price",
+    "bearing_dynamic_load", "bearing_bore", "bearing_torque", "bearing_torque_listed",
+    # guide block and rail
+    "guide_normal_stiffness", "guide_tangential_stiffness", "guide_friction_force",
+    "guide_friction_coefficient", "guide_friction_viscous", "guide_damping", "guide_block_mass",
+    "guide_rail_mass_per_length", "guide_block_price", "guide_rail_price_per_length", "guide_dynamic_load",
+    "guide_preload", "guide_roller",
+)
+
+
+def axis_params(axis, screw, nut, bearing, guide) -> dict:
+    """Flat SI parameter dict for :func:`axisopt.model.axis_response` from an Axis and four part rows.
+
+    Part rows may be pandas Series (one design) or DataFrames / dicts of arrays (many designs).
+    """
+    col = _getter
+    mounting = axis.mounting
+    torque = col(bearing, "starting_torque")
+    listed = np.isfinite(torque)
+    p = {
+        "stroke": axis.stroke, "start_offset": axis.start_offset, "span": axis.span,
+        "table_mass": axis.moving_mass, "acceleration": axis.acceleration, "max_speed": axis.max_speed,
+        "mean_speed": axis.mean_speed_eff, "axial_load": axis.axial_load,
+        "mean_axial_load": axis.mean_axial_load_eff, "required_life": axis.required_life,
+        "load_factor": axis.load_factor, "guide_blocks": float(axis.guide_blocks), "rails": float(axis.rails),
+        "rail_length": axis.stroke + axis.table_length, "normal_load": axis.normal_load,
+        "viscosity": axis.lubricant_viscosity, "motor_inertia": axis.motor_inertia,
+        "bearing_sets": 2.0 if mounting == "fixed-fixed" else 1.0,
+        "gravity_axial": 1.0 if axis.orientation == "vertical" else 0.0,
+        "housing_compliance": _compliance(axis.bearing_housing_stiffness),
+        "bracket_compliance": _compliance(axis.nut_bracket_stiffness),
+        "coupling_stiffness": axis.coupling_stiffness, "coupling_inertia": axis.coupling_inertia,
+        "temperature_rise": axis.temperature_rise,
+        "pretension": 0.0 if axis.pretension is None else axis.pretension,
+        "pretension_auto": 1.0 if (axis.pretension is None and mounting == "fixed-fixed") else 0.0,
+        "root_diameter": col(screw, "root_diameter"), "nominal_diameter": col(screw, "nominal_diameter"),
+        "lead": col(screw, "lead"), "screw_max_length": col(screw, "max_length"),
+        "screw_mass_per_length": col(screw, "mass_per_length"), "dn_limit": col(screw, "dn_limit"),
+        "screw_price_per_length": col(screw, "price_per_length"), "screw_price_fixed": col(screw, "price_fixed"),
+        "support_bore_min": col(screw, "support_bore_min"), "support_bore_max": col(screw, "support_bore_max"),
+        "nut_stiffness": col(nut, "stiffness"), "nut_stiffness_preload": col(nut, "stiffness_preload"),
+        "nut_double": _is_type(nut, "double"), "nut_dynamic_load": col(nut, "dynamic_load_rating"),
+        "nut_static_load": col(nut, "static_load_rating"), "nut_mass": col(nut, "mass"),
+        "nut_price": col(nut, "price"), "nut_preload_min": col(nut, "preload_min"),
+        "nut_preload_max": col(nut, "preload_max"), "nut_axial_play": col(nut, "axial_play"),
+        "bearing_stiffness": col(bearing, "axial_rigidity"), "bearing_lift_off": col(bearing, "lift_off_load"),
+        "bearing_preload": col(bearing, "preload"), "bearing_f0": col(bearing, "f0"),
+        "bearing_f1": col(bearing, "f1"),
+        "bearing_mean_diameter": 0.5 * (col(bearing, "bore") + col(bearing, "outer_diameter")),
+        "bearing_limiting_speed": col(bearing, "limiting_speed"), "bearing_mass": col(bearing, "mass"),
+        "bearing_price": col(bearing, "price"), "bearing_dynamic_load": col(bearing, "dynamic_load_rating"),
+        "bearing_bore": col(bearing, "bore"),
+        # starting torque of the support unit where its vendor lists it (eq. 40 otherwise)
+        "bearing_torque": np.where(listed, torque, 0.0) if np.ndim(torque) else (float(torque) if listed else 0.0),
+        "bearing_torque_listed": listed.astype(float) if np.ndim(listed) else float(listed),
+        "guide_normal_stiffness": col(guide, "normal_rigidity"),
+        "guide_tangential_stiffness": col(guide, "tangential_rigidity"),
+        "guide_friction_force": col(guide, "friction_force"),
+        "guide_friction_coefficient": col(guide, "friction_coefficient"),
+        "guide_friction_viscous": col(guide, "friction_viscous"), "guide_damping": col(guide, "damping"),
+        "guide_block_mass": col(guide, "block_mass"),
+        "guide_rail_mass_per_length": col(guide, "rail_mass_per_length"),
+        "guide_block_price": col(guide, "block_price"),
+        "guide_rail_price_per_length": col(guide, "rail_price_per_length"),
+        "guide_dynamic_load": col(guide, "dynamic_load_rating"),
+        "guide_preload": col(guide, "preload"),
+        "guide_roller": _is_type(guide, "roller"),
+    }
+    return p
+
+
+def _compliance(stiffness):
+    """1/k [m/N]; a part not given (None) is rigid."""
+    return 0.0 if stiffness is None else 1.0 / stiffness
+
+
+def _getter(row, name):
+    v = row[name]
+    return float(v) if np.ndim(v) == 0 else np.asarray(v, dtype=float)
+
+
+def _is_type(row, value):
+    """1.0 where the part's ``type`` column is ``value`` (one part or an array of parts)."""
+    t = row["type"]
+    if isinstance(t, str):
+        return 1.0 if t == value else 0.0
+    return (np.asarray(t) == value).astype(float)
+
+
+def positions(axis, n: int | None = None) -> np.ndarray:
+    """Nut positions x (fixed bearing to nut) [m] over the stroke: an even grid plus, for
+    fixed-fixed, the mid-span point where the screw is softest (when it lies on the stroke)."""
+    n = n or axis.positions
+    x = axis.start_offset + np.linspace(0.0, axis.stroke, n)
+    if axis.mounting == "fixed-fixed":
+        mid = 0.5 * axis.span
+        if axis.start_offset < mid < axis.start_offset + axis.stroke:
+            x = np.unique(np.append(x, mid))
+    return x

@@ -1,0 +1,53 @@
+"""``axis_response``: the sub-assemblies of the axis model put together, one pure function.
+
+``axis_response(p, x, mounting, preload)`` takes ``p`` (the names in :data:`PARAM_NAMES` mapped to floats,
+numpy arrays that broadcast against the positions ``x``, or CasADi symbols), so the same function
+
+* evaluates one design on floats,
+* screens millions of catalog combinations at once on numpy arrays (``search``), and
+* builds the symbolic CasADi Function of :class:`axisopt.model.AxisModel` that IPOPT differentiates,
+
+and ``identify`` builds its plant from it.  Sub-assemblies: :mod:`.loads` (masses and axial loads),
+:mod:`.chain` (stiffness chain), :mod:`.modes` (frequencies and damping), :mod:`.drag`, :mod:`.cost` and
+:mod:`.checks`.
+"""
+
+from __future__ import annotations
+
+from .chain import stiffness_chain
+from .checks import checks
+from .cost import cost
+from .drag import drag_torque
+from .loads import axial_loads, masses
+from .modes import axial_modes, damping, drive_train_modes
+
+
+def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> dict:
+    """Evaluate the axis model.
+
+    p        : dict of :data:`PARAM_NAMES` -> float / ndarray / CasADi
+    x        : nut positions, fixed bearing to nut [m]
+    mounting : 'fixed-free' | 'fixed-supported' | 'fixed-fixed'
+    preload  : nut preload [N] (float / ndarray / CasADi)
+    extras   : also compute the drive-train frequencies and the damping (screening skips them)
+    Returns a dict: per-position arrays (``k_total``, ``k_screw``, ``f_axial``, ``f1``, ...), per-design
+    scalars (``k_nut``, ``k_bearing``, ``f_table``, ``drag_torque``, masses, ``cost``, loads) and
+    ``margin_<check>`` for each of :data:`CHECKS` (>= 1 passes).
+    """
+    m = masses(p)
+    loads = axial_loads(p, m["moving_mass"])
+    chain = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
+    modes = axial_modes(p, x, mounting, chain, m["moving_mass"], m["screw_mass"])
+    out = {}
+    out.update(m)
+    out.update(loads)
+    out.update(chain)
+    out.update(modes)
+    out.update(drag_torque(p, preload, loads))
+    out["cost"] = cost(p)
+    out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]
+    out.update(checks(p, mounting, preload, loads, m))
+    if extras:
+        out.update(drive_train_modes(p, chain, modes["m_eff"]))
+        out.update(damping(p, chain, modes["m_eff"]))
+    return out
