@@ -24,14 +24,42 @@ def cmd_evaluate(args) -> int:
 
         design = apply_calibration(design, args.calibration)
     ev = evaluate(design)
+    rows = resp = None
+    if args.methods:
+        from .model.methods import stiffness_methods
+
+        rows = stiffness_methods(ev)
+    if args.frf:
+        from .model.frf import frf
+
+        resp = frf(ev)
     if args.json != "-":
         print(evaluation_table(ev))
+        if rows is not None:
+            from .report_extra import methods_table
+
+            print("\n" + methods_table(rows))
     if args.json:
-        write_json(evaluation_dict(ev), args.json)
+        out = evaluation_dict(ev)
+        if rows is not None:
+            from .report_extra import methods_dict
+
+            out["stiffness_methods"] = methods_dict(rows)
+        if resp is not None:
+            from .report_extra import frf_dict
+
+            out["frf"] = frf_dict(resp)
+        write_json(out, args.json)
     if args.plot:
         plot_profiles([ev], args.plot)
         if args.json != "-":
             print(f"\nplot written to {args.plot}")
+    if args.frf:
+        from .report_extra import plot_frf
+
+        plot_frf(resp, args.frf)
+        if args.json != "-":
+            print(f"\nFRF plot written to {args.frf}")
     return EXIT_OK
 
 
@@ -47,6 +75,10 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
     e.add_argument("--plot", metavar="FILE.png", help="plot stiffness and frequency over the stroke")
     e.add_argument("--calibration", metavar="FILE.yaml", help="apply a calibration saved by 'diagnose'")
+    e.add_argument("--methods", action="store_true",
+                   help="stiffness of nut, bearings and screw by every method of the seed paper")
+    e.add_argument("--frf", metavar="FILE.png",
+                   help="plot the table's dynamic compliance at stroke start, middle and end (also in --json)")
     e.set_defaults(func=cmd_evaluate)
 
     for register in _extra_commands():

@@ -109,13 +109,14 @@ def _nut_rows(ev: Evaluation, p: dict) -> list:
               "lead": lead}
     missing = tuple(k for k, v in inputs.items() if v is None)
     value = None
-    note = "loaded balls per nut half from the nut's n_balls column; pitch diameter = nominal diameter"
+    note = "needs the loaded balls per nut half (no catalog column gives it); pitch diameter = nominal diameter"
     if not missing:
         phi = float(ps.lead_angle(lead, pitch_d))
         k_half = float(pn.nut_stiffness_hertz(load, n_balls, ball_d, pitch_d, beta, phi))
         # both halves of a preloaded double nut carry the preload and act together at zero external load
         value = 2.0 * k_half if double else k_half
-        note = f"{basis}; {note}; rigid nut body (eq. 9's 0.8 not applied)"
+        note = (f"{basis}; {n_balls:.0f} loaded balls per half (nut column n_balls); pitch diameter = nominal "
+                "diameter; rigid nut body (eq. 9's 0.8 not applied)")
     rows.append(MethodRow("nut", "Hertz eq. 12-18", "seed eq. 12-18 (Hertz point contact, Hamrock-Brewe)",
                           value, missing=missing, note=note))
     return rows
