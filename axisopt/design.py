@@ -108,7 +108,8 @@ _AXIS_KINDS = {
     "acceleration": "acceleration", "required_life": "time", "table_length": "length",
     "normal_load": "force", "lubricant_viscosity": "kinematic_viscosity", "motor_inertia": "inertia",
     "bearing_housing_stiffness": "stiffness", "nut_bracket_stiffness": "stiffness",
-    "coupling_stiffness": "torsional_stiffness", "coupling_inertia": "inertia", "temperature_rise": "temperature_difference",
+    "coupling_stiffness": "torsional_stiffness", "coupling_inertia": "inertia",
+    "temperature_rise": "temperature_difference",
 }
 _AXIS_REQUIRED = ("stroke", "moving_mass", "mounting", "max_speed", "axial_load")
 _NON_NEGATIVE = ("end_margin", "mean_axial_load", "acceleration", "normal_load", "axial_load", "temperature_rise")
@@ -222,7 +223,8 @@ _OUT_UNITS = {
     "length": "mm", "mass": "kg", "time": "h", "force": "N", "stiffness": "N/um", "speed": "m/min",
     "acceleration": "m/s^2", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
     "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
-    "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad", "temperature_difference": "K",
+    "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad",
+    "temperature_difference": "K",
 }
 
 

@@ -177,7 +177,8 @@ def drive_train_compliance(frequency, motor_inertia, screw_inertia, coupling_sti
     DOFs and springs as :func:`drive_train_eigenvalues`; viscous dampers: ``table_damping`` c_g from the
     table to the frame (guide blocks), ``chain_damping`` c_a across the axial chain (nut, bearings, as
     referred to x - r theta_s), ``coupling_damping`` c_c across the coupling.  With the motor free, the
-    dynamic stiffness F/X is a ratio of polynomials in s, the form of seed eq. 41 (here degree 6, zero at s = 0, over degree 4); ``motor_held`` fixes theta_m (the static compliance is then 1/k + r^2/k_c).
+    dynamic stiffness F/X is a ratio of polynomials in s, the form of seed eq. 41 (here degree 6, zero at
+    s = 0, over degree 4); ``motor_held`` fixes theta_m (the static compliance is then 1/k + r^2/k_c).
 
     frequency : f [Hz] (array).  Returns complex ndarray [m/N] (numpy only, not symbolic).
     """

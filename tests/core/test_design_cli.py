@@ -78,3 +78,43 @@ def test_empty_and_non_mapping_yaml(tmp_path, capsys):
         p.write_text(text)
         assert main(["evaluate", str(p)]) == 2
         assert str(p) in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("path", DESIGNS, ids=lambda p: p.name)
+def test_methods_and_frf_run_on_every_shipped_design(path, tmp_path, capsys):
+    js = tmp_path / "r.json"
+    assert main(["evaluate", str(path), "--methods", "--frf", str(tmp_path / "frf.png"), "--json", str(js)]) == 0
+    data = json.loads(js.read_text())
+    assert {r["component"] for r in data["stiffness_methods"]["methods"]} >= {"nut", "bearings", "screw"}
+    assert (tmp_path / "frf.png").stat().st_size > 0 and data["frf"]
+
+
+@pytest.mark.parametrize(("edit", "key"), [
+    (("  stroke: 800 mm", "  stroke: 800 mm\n  temperature_rise: -3 K"), "temperature_rise"),
+    (("  stroke: 800 mm", "  stroke: 800 mm\n  temperature_rise: 3 mm"), "temperature_rise"),
+    (("  stroke: 800 mm", "  stroke: 800 mm\n  pretension: lots"), "pretension"),
+    (("  stroke: 800 mm", "  stroke: 800 mm\n  coupling_stiffness: 75 N/m"), "coupling_stiffness"),
+    (("  stroke: 800 mm", "  stroke: 800 mm\n  nut_bracket_stiffness: 0 N/um"), "nut_bracket_stiffness"),
+    (("  stroke: 800 mm", "  stroke: 800 mm\n  bearing_housing_stiffness: .nan N/um"), "bearing_housing_stiffness"),
+])
+def test_new_axis_keys_reject_bad_values(tmp_path, capsys, edit, key):
+    p = tmp_path / "d.yaml"
+    p.write_text(GOOD.replace(*edit), encoding="utf-8")
+    assert main(["evaluate", str(p)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and key in err and str(p) in err
+
+
+def test_frf_bad_extension_is_one_line(tmp_path, capsys):
+    assert main(["evaluate", str(ROOT / "problems" / "vmc_x_design.yaml"), "--frf", str(tmp_path / "x.txt")]) == 2
+    assert len(capsys.readouterr().err.strip().splitlines()) == 1
+
+
+def test_bearing_that_does_not_fit_the_screw_end_fails_its_check(tmp_path, capsys):
+    """HIWIN Table 8.9/8.10: a 40 mm screw takes 25-30 mm journals (BK30/FK30, WBK30, SFA30); a WBK15 set
+    (15 mm bore) on it fails the fit check."""
+    p = tmp_path / "d.yaml"
+    p.write_text(GOOD.replace("bearing: HIWIN-WBK30-DFD", "bearing: HIWIN-WBK15-DF"), encoding="utf-8")
+    js = tmp_path / "r.json"
+    assert main(["evaluate", str(p), "--json", str(js)]) == 0
+    assert json.loads(js.read_text())["checks"]["bearing_fit"]["pass"] is False

@@ -2,6 +2,7 @@
 
 import dataclasses
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import casadi as ca
@@ -117,20 +118,100 @@ def test_paper_3_1_3_frequency_and_stiffness_trend():
 
 def test_vmc_example_against_a_hand_calculation(vmc):
     """The shipped VMC design, evaluated by hand from its catalog rows (HIWIN BS-08-2-EN-1704-K):
-    screw root 34.91 mm, span 0.13 + 0.8 + 0.17 m, fixed-supported, nut R40-10K5-FDC 1410 N/um at
-    0.1 Ca = 6340 N run at 3000 N, WBK30-DFD 1520 N/um, 450 kg table + 0.95 kg nut + 4 HG35 blocks."""
+    screw root 34.91 mm, lead 10 mm, span 0.13 + 0.8 + 0.17 m, fixed-supported, nut R40-10K5-FDC 1410 N/um at
+    0.1 Ca = 6340 N run at 3000 N (HIWIN F 3.34) and then loaded by the largest axial force (Hertz halves,
+    lift-off at 2.83 x preload), WBK30-DFD 1520 N/um, screw torsion G pi d^4 / (32 x) through the lead, the
+    default coupling (RINGFEDER GWB AKN 60, 75e3 N.m/rad) through the lead, housing and bracket rigid."""
     ev = evaluate(vmc)
     x_end = 0.13 + 0.8
+    lead = 0.010
     k_s = math.pi / 4 * 0.03491**2 * 206e9 / x_end  # eq. 3/10
-    k_n = 0.8 * 1410e6 * (3000 / 6340) ** (1 / 3)  # eq. 9
+    k_n0 = 0.8 * 1410e6 * (3000 / 6340) ** (1 / 3)  # eq. 9
+    # largest axial force: 3000 N cut + 456.8 kg x 3 m/s^2 + guide friction
+    f_max = float(ev["max_axial_force"])
+    moving = 450 + float(vmc.nut["mass"]) + 4 * float(vmc.guide["block_mass"])
+    assert f_max > 3000 + moving * 3.0
+    # Hertz double nut under f_max, solved here by bisection on (1+s)^1.5 - (1-s)^1.5 = f/F_pr
+    f = f_max / 3000.0
+    lo, hi = 0.0, 1.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if (1 + mid) ** 1.5 - (1 - mid) ** 1.5 < f:
+            lo = mid
+        else:
+            hi = mid
+    k_n = k_n0 * 0.5 * (math.sqrt(1 + lo) + math.sqrt(1 - lo))
     k_b = 1520e6
-    k = 1 / (1 / k_s + 1 / k_n + 1 / k_b)  # eq. 1-2
+    k_tors = 79.3e9 * math.pi * 0.03491**4 / (32 * x_end) * (2 * math.pi / lead) ** 2
+    k_cpl = 75e3 * (2 * math.pi / lead) ** 2
+    k = 1 / (1 / k_s + 1 / k_n + 1 / k_b + 1 / k_tors + 1 / k_cpl)
     assert k_s / 1e6 == pytest.approx(212.0, abs=0.05)
+    assert ev["k_nut_unloaded"] == pytest.approx(k_n0, rel=1e-9)
     assert ev["k_nut"] == pytest.approx(k_n, rel=1e-9)
     assert ev.minimum("k_total")[0] == pytest.approx(k, rel=1e-9)
     # eq. 11 with the moving mass and the Rayleigh share of the screw (part beyond the nut moves with it)
-    moving = 450 + float(vmc.nut["mass"]) + 4 * float(vmc.guide["block_mass"])
     screw_mass = float(vmc.screw["mass_per_length"]) * 1.1
     m_eff = moving + screw_mass * (1 - 2 * x_end / (3 * 1.1))
-    f = math.sqrt(k / m_eff) / (2 * math.pi)
-    assert ev["f_axial"][-1] == pytest.approx(f, rel=1e-9)
+    f1 = math.sqrt(k / m_eff) / (2 * math.pi)
+    assert ev["f_axial"][-1] == pytest.approx(f1, rel=1e-9)
+
+
+def _two_path_hand(k_b, ea, x, span, mounting):
+    """Screw and bearings by hand: near set + segment x, in parallel with far set + segment L - x (fixed-fixed)."""
+    near = 1 / (1 / k_b + x / ea)
+    if mounting != "fixed-fixed":
+        return near
+    return near + 1 / (1 / k_b + (span - x) / ea)
+
+
+@pytest.mark.parametrize("mounting", ["fixed-free", "fixed-supported", "fixed-fixed"])
+def test_evaluate_and_diagnose_agree_on_the_chain(vmc, mounting):
+    """The same design in evaluate and in diagnose's plant gives the same compliance at every position
+    (nut taken at the same stiffness), and both equal the two-path chain written out by hand."""
+    from axisopt.identify import plant_from_design
+    from axisopt.identify.measure import baseline_terms, drive_compliance, screw_bearing_compliance
+
+    d = replace(vmc, axis=replace(vmc.axis, mounting=mounting, bearing_housing_stiffness=4000e6,
+                                  nut_bracket_stiffness=2500e6))
+    ev = evaluate(d)
+    plant = plant_from_design(d)
+    q = baseline_terms(plant, {})
+    c_diag = screw_bearing_compliance(q, ev.x, plant.span) + drive_compliance(plant, ev.x) + 1 / plant.k_nut
+    c_eval = 1 / np.asarray(ev["k_total"]) - 1 / ev["k_nut"] + 1 / ev["k_nut_unloaded"]
+    np.testing.assert_allclose(c_diag, c_eval, rtol=1e-10)
+    # by hand: WBK30-DFD 1520 N/um in series with its 4000 N/um housing, at both ends for fixed-fixed
+    k_set = 1 / (1 / 1520e6 + 1 / 4000e6)
+    ea = 206e9 * math.pi / 4 * 0.03491**2
+    k_sb = _two_path_hand(k_set, ea, ev.x, d.axis.span, mounting)
+    np.testing.assert_allclose(1 / np.asarray(ev["k_screw_bearings"]), 1 / k_sb, rtol=1e-12)
+
+
+def test_fixed_fixed_shortcut_is_exact_only_at_mid_span(vmc):
+    """The old shortcut (both sets summed, in series with the screw's two segments) equals the two-path chain
+    at mid-span and overstates it elsewhere (about 20 % at x = 0.1 L for stiff-screw, soft-bearing axes)."""
+    k_b, ea, span = 300e6, 206e9 * math.pi / 4 * 0.03491**2, 1.0
+    x = np.array([0.1, 0.5])
+    exact = _two_path_hand(k_b, ea, x, span, "fixed-fixed")
+    shortcut = 1 / (1 / (2 * k_b) + x * (span - x) / (ea * span))
+    assert shortcut[1] == pytest.approx(exact[1], rel=1e-12)
+    assert shortcut[0] > 1.1 * exact[0]
+    from axisopt.physics.screw import screw_bearing_stiffness
+
+    np.testing.assert_allclose(screw_bearing_stiffness(0.03491, x, span, "fixed-fixed", k_b), exact, rtol=1e-12)
+
+
+def test_single_nut_follows_hiwin_f335_and_has_play():
+    """HIWIN BS-08-2-EN-1704-K F 3.35: a single nut with play is rated at the mean operating load,
+    R_n = 0.8 K (F_bm / (0.28 C_dyn))^(1/3); R40-10K5-FSC: K = 1060 N/um, C_dyn = 63 400 N (Table 6.4)."""
+    d = load_design(ROOT / "problems" / "vmc_x_design.yaml")
+    cat = d.screw  # same screw (40x10, ball 6.35)
+    from axisopt.catalog import default_catalog
+
+    nut = default_catalog().nuts.loc["HIWIN-R40-10K5-FSC"]
+    assert nut["screw_id"] == cat["id"]
+    single = replace(d, nut=nut, nut_preload=None)
+    ev = evaluate(single)
+    f_bm = float(ev["mean_axial_force"])
+    assert ev["k_nut"] == pytest.approx(0.8 * 1060e6 * (f_bm / (0.28 * 63400)) ** (1 / 3), rel=1e-3)
+    assert ev["backlash"] == pytest.approx(float(nut["axial_play"])) and ev["backlash"] > 0
+    assert ev["drag_nut"] == 0.0  # no preload: the preload drag rule gives nothing (seals are not modelled)

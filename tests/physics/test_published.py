@@ -4,11 +4,14 @@ printed digit unless a comment explains otherwise)."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from axisopt.physics import bearings, checks, damping, guides, nut, screw
+
+ROOT = Path(__file__).resolve().parents[2]
 
 MM, CM = 1e-3, 1e-2
 RPM = 2.0 * math.pi / 60.0
@@ -251,3 +254,62 @@ def test_guide_life_definition_thk():
     assert checks.guide_life_distance(30e3, 15e3) == pytest.approx(8 * 50e3, rel=1e-12)
     assert checks.guide_life_distance(30e3, 15e3, roller=1.0) == pytest.approx(2 ** (10 / 3) * 100e3, rel=1e-12)
     assert checks.guide_life_distance(36e3, 15e3, load_factor=1.2) == pytest.approx(8 * 50e3, rel=1e-12)
+
+
+# THK General Catalog A-738..A-740, worked example 2 (vertical conveyance): screw d1 = 12.5 mm, the section
+# between the nut and the bearing counted "fixed-fixed", l_a = 700 mm: P1 = 20 x 12.5^4 / 700^2 x 10^4 = 9960 N.
+# eta_2 = 20 is THK's rounding of 0.5 x 4 pi^2 E / 64 x 1e-4 with E = 206 GPa (19.96): 0.3 % allowed.
+@pytest.mark.published
+def test_buckling_thk_worked_example_nut_counts_as_fixed():
+    assert checks.buckling_load(12.5e-3, 0.700, "fixed-fixed") == pytest.approx(9960, rel=3e-3)
+
+
+def test_model_counts_the_nut_as_a_fixed_end():
+    from axisopt.design import load_design
+    from axisopt.model import evaluate
+    from axisopt.model.checks import BUCKLING_END_CONDITION
+
+    d = load_design(ROOT / "problems" / "vmc_x_design.yaml")  # fixed-supported
+    ev = evaluate(d)
+    assert BUCKLING_END_CONDITION == "fixed-fixed"
+    expected = checks.buckling_load(float(d.screw["root_diameter"]), 0.13 + 0.8, "fixed-fixed")
+    assert ev["buckling_load"] == pytest.approx(expected, rel=1e-12)
+
+
+# THK General Catalog A-713/A-714: BNF2512, d1 = 21.9 mm, K_S = 776 N/um at L = 100 mm and 111 N/um at 700 mm.
+@pytest.mark.published
+@pytest.mark.parametrize(("length", "ks"), [(0.100, 776), (0.700, 111)])
+def test_screw_rigidity_thk_worked_example(length, ks):
+    assert screw.screw_stiffness(21.9e-3, length, 1.0, "fixed-supported") / 1e6 == pytest.approx(ks, abs=0.5)
+
+
+# HIWIN BS-08-2-EN-1704-K F 3.36: dL = 11.6e-6 x dT x L; THK A-715: 12 um per metre and degC.
+@pytest.mark.published
+def test_thermal_growth_vendor_coefficients():
+    from axisopt.physics import thermal
+
+    assert thermal.thermal_growth(1.0, 1.0) == pytest.approx(11.6e-6, rel=1e-12)
+    assert thermal.thermal_growth(1.0, 1.0, alpha=12e-6) == pytest.approx(12e-6, rel=1e-12)
+    # the compensating pretension of a 40 mm screw (root 34.91 mm) for 3 K: E A alpha dT = 6.47 kN by hand
+    assert thermal.restrained_thermal_force(0.03491, 3.0) == pytest.approx(
+        206e9 * 3.141592653589793 / 4 * 0.03491**2 * 11.6e-6 * 3.0, rel=1e-12)
+
+
+# IBC/NSK support-bearing life: L10 = (C_a / P_a)^3 x 1e6 rev; HIWIN WBK30DFD C_dyn = 47.5 kN (Table 8.12)
+@pytest.mark.published
+def test_support_bearing_life_in_the_model():
+    import math as _m
+
+    from axisopt.design import load_design
+    from axisopt.model import evaluate
+
+    d = load_design(ROOT / "problems" / "vmc_x_design.yaml")
+    ev = evaluate(d)
+    f_mean = float(ev["mean_axial_force"])
+    pre = 4500.0  # WBK30DFD preload, HIWIN Table 8.12
+    lift = 2**1.5 * pre
+    loaded = pre * (1 + f_mean / lift) ** 1.5 if f_mean < lift else f_mean
+    rev = (47.5e3 / (1.2 * loaded)) ** 3 * 1e6
+    n = (8 / 60) / 0.010  # mean speed 8 m/min, lead 10 mm [rev/s]
+    assert ev["bearing_life"] == pytest.approx(rev / n, rel=1e-9)
+    assert _m.isfinite(ev["margin_bearing_life"])

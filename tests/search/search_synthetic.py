@@ -25,6 +25,7 @@ def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_beari
         screws.append({"id": sid, "vendor": "V", "series": "synthetic", "nominal_diameter": d, "lead": lead,
                        "root_diameter": d - 1.2 * ball, "ball_diameter": ball, "max_length": rng.uniform(1.5, 5),
                        "mass_per_length": 7850 * math.pi * d**2 / 4, "dn_limit": rng.uniform(1.2e5, 2.2e5) * 1e-3 * RPM,
+                       "support_bore_min": 0.4 * d, "support_bore_max": d - 0.002,
                        "price_per_length": rng.uniform(60, 250), "price_fixed": rng.uniform(100, 300)})
         for j in range(nuts_per_screw):
             c = rng.uniform(10e3, 80e3)
@@ -32,8 +33,9 @@ def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_beari
             nuts.append({"id": f"N{i}_{j}", "vendor": "V", "screw_id": sid, "type": "double" if double else "single",
                          "stiffness": rng.uniform(150, 900) * 1e6,
                          "stiffness_preload": (0.1 if double else 0.3) * c,
-                         "preload_min": 0.02 * c if double else 0.0, "preload_max": (0.1 if double else 0.02) * c,
+                         "preload_min": 0.02 * c if double else 0.0, "preload_max": 0.1 * c if double else 0.0,
                          "dynamic_load_rating": c, "static_load_rating": 2 * c, "contact_angle": math.radians(45),
+                         "axial_play": 0.0 if double else 2e-5,
                          "mass": rng.uniform(0.5, 4), "price": rng.uniform(200, 900)})
     for i in range(n_bearings):
         bore = rng.choice([12, 15, 17, 20, 25, 30]) * 1e-3
@@ -43,6 +45,7 @@ def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_beari
                          "axial_rigidity": rng.uniform(300, 1500) * 1e6, "lift_off_load": rng.uniform(3e3, 2e4),
                          "dynamic_load_rating": rng.uniform(15e3, 40e3), "static_load_rating": 4e4,
                          "limiting_speed": rng.uniform(3000, 9000) * RPM, "f0": 1.5, "f1": 0.0003,
+                         "starting_torque": rng.uniform(0.05, 0.3) if rng.random() < 0.5 else math.nan,
                          "mass": rng.uniform(0.2, 1.0), "price": rng.uniform(100, 500)})
     for i in range(n_guides):
         kn = rng.uniform(200, 900) * 1e6
@@ -63,15 +66,26 @@ def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_beari
                    guides=df(guides, "guides"))
 
 
+def make_double(catalog) -> None:
+    """Turn every nut of a synthetic catalog into a preloaded double nut (preload 2-10 % C, quoted at 10 % C)."""
+    n = catalog.nuts
+    c = n["dynamic_load_rating"]
+    n["type"] = "double"
+    n["stiffness_preload"], n["preload_min"], n["preload_max"], n["axial_play"] = 0.1 * c, 0.02 * c, 0.1 * c, 0.0
+
+
 def make_problem(catalog, *, mode="stiffness", mountings=("fixed-supported", "fixed-fixed"), limits=None,
-                 stroke=0.6, objective=None, margins=None, **axis_kw) -> Problem:
+                 stroke=0.6, objective=None, margins=None, backlash=None, **axis_kw) -> Problem:
     kw = {"moving_mass": 300.0, "max_speed": 0.3, "axial_load": 3000.0, "acceleration": 3.0}
     kw.update(axis_kw)
     axis = Axis(stroke=stroke, mounting=mountings[0], **kw)
     m = {c: 1.0 for c in CHECKS}
     m.update(margins or {})
+    limits = dict(limits or {})
+    # the problem reader's default (max_backlash 0) unless a test allows single nuts with play
+    limits.setdefault("max_backlash", 0.0 if backlash is None else backlash)
     return Problem(axis=axis, catalog=catalog, objective=objective or Objective(mode=mode),
-                   limits=tuple(sorted((limits or {}).items())), margins=tuple(m.items()),
+                   limits=tuple(sorted(limits.items())), margins=tuple(m.items()),
                    restrictions=Restrictions(mountings=tuple(mountings)), name="synthetic")
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from search_synthetic import make_catalog, make_problem
+from search_synthetic import make_catalog, make_double, make_problem
 
 from axisopt.cli import main
 from axisopt.errors import InputError
@@ -41,7 +41,8 @@ def test_default_equals_exhaustive_randomized(seed, mode):
     limits = {"max_cost": float(rng.uniform(2500, 5000)), "max_drag_torque": float(rng.uniform(0.4, 1.5))}
     if seed % 2:
         limits["min_life"] = float(rng.uniform(5e3, 3e4)) * 3600
-    p = make_problem(cat, objective=ob, limits=limits,
+    # odd seeds allow single nuts with play (max_backlash 50 um); even seeds keep the default 0
+    p = make_problem(cat, objective=ob, limits=limits, backlash=5e-5 if seed % 2 else None,
                      mountings=("fixed-free", "fixed-supported", "fixed-fixed") if seed % 3 == 0
                      else ("fixed-supported", "fixed-fixed"))
     d = solve(p, "default", top=3, sensitivities=False)
@@ -67,8 +68,8 @@ def _interior(p, key):
 
 
 def test_drag_limit_makes_preload_interior():
-    cat = make_catalog(np.random.default_rng(7), n_screws=3, nuts_per_screw=2)
-    cat.nuts["type"] = "double"
+    cat = make_catalog(np.random.default_rng(9), n_screws=3, nuts_per_screw=2, n_bearings=8)
+    make_double(cat)
     free = solve(make_problem(cat, axial_load=800.0), "default", top=1, sensitivities=False).best
     from axisopt.model import evaluate
 
@@ -80,7 +81,7 @@ def test_drag_limit_makes_preload_interior():
 
 def test_life_limit_makes_preload_interior():
     cat = make_catalog(np.random.default_rng(8), n_screws=3, nuts_per_screw=2)
-    cat.nuts["type"] = "double"
+    make_double(cat)
     p0 = make_problem(cat, axial_load=800.0)
     free = solve(p0, "default", top=1, sensitivities=False).best
     p = make_problem(cat, axial_load=800.0, limits={"min_life": free.life_h * 3600 * 1.5})
@@ -92,7 +93,7 @@ def test_ipopt_agrees_with_exact_1d_solve():
     from axisopt.search import nlp
 
     cat = make_catalog(np.random.default_rng(3))
-    cat.nuts["type"] = "double"
+    make_double(cat)
     p = make_problem(cat, axial_load=800.0, limits={"max_drag_torque": 0.6})
     sp, cons, spec = build_space(p), build_constraints(p), objective_spec("stiffness")
     ex = exact_solve(sp, np.arange(sp.size), cons, spec)
@@ -131,8 +132,8 @@ def test_infeasible_problem_is_explained():
 
 
 def test_sensitivity_reports_binding_drag_limit():
-    cat = make_catalog(np.random.default_rng(7))
-    cat.nuts["type"] = "double"
+    cat = make_catalog(np.random.default_rng(9), n_bearings=8)
+    make_double(cat)
     p = make_problem(cat, axial_load=800.0, limits={"max_drag_torque": 0.6, "max_cost": 1e5})
     r = solve(p, "default", top=1)
     assert r.status == "optimal"

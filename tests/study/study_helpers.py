@@ -28,7 +28,7 @@ def small_study(tmp_path) -> Path:
         base: @PROBLEMS@/teaching_problem.yaml
         sweep:
           axis.stroke: [300 mm, 500 mm, 700 mm]
-          catalog.mountings: [[fixed-supported], [fixed-fixed]]
+          catalog.mountings: [[fixed-supported], [fixed-supported, fixed-fixed]]
           limits.max_cost: [2500 EUR, 600 EUR]
         """)
 
