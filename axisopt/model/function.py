@@ -16,7 +16,8 @@ PROFILE_OUTPUTS = ("k_screw", "k_screw_bearings", "k_torsion", "k_drive", "k_tot
                    "thermal_displacement", "f_axial_torsional", "f_axial_torsional_2", "damping_ratio",
                    "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure")
 SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_bracket", "c_housing", "f_table",
-                  "drag_torque", "drag_nut", "drag_bearings", "drag_guides", "moving_mass", "total_mass", "screw_mass", "cost",
+                  "drag_torque", "drag_nut", "drag_bearings", "drag_guides", "moving_mass", "total_mass",
+                  "screw_mass", "cost",
                   "max_axial_force", "mean_axial_force", "guide_friction", "pretension", "thermal_force",
                   "bearing_static_load", "screw_compression", "backlash", "life", "bearing_life", "guide_life",
                   "screw_speed", "critical_speed", "buckling_load", "yield_load", "dn", "nut_lift_off_force",
