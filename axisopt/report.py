@@ -36,6 +36,14 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "min_natural_frequency_position_mm": fpos * 1e3,
         "weakest_link": ev.weakest,
         "nut_stiffness_N_per_um": v["k_nut"] / N_PER_UM,
+        "chain_at_minimum_N_per_um": {k: (_finite(c / N_PER_UM) if math.isfinite(c) else "rigid")
+                                      for k, c in ev.components().items()},
+        "nut_backlash_um": v["backlash"] * 1e6,
+        "pretension_N": v["pretension"],
+        "thermal_displacement_mm": (np.asarray(v["thermal_displacement"]) * 1e3).tolist(),
+        "drive_train_modes_Hz": [np.asarray(v["f_axial_torsional"]).tolist(),
+                                 np.asarray(v["f_axial_torsional_2"]).tolist()],
+        "damping_parts": {k: np.asarray(v[f"zeta_{k}"]).tolist() for k in ("guides", "nut", "bearings", "structure")},
         "bearing_stiffness_N_per_um": v["k_bearing"] / N_PER_UM,
         "table_mode_Hz": v["f_table"],
         "moving_mass_kg": v["moving_mass"],
@@ -77,15 +85,30 @@ def evaluation_table(ev: Evaluation) -> str:
     if d.assumed:
         lines.append(f"  defaults used for: {', '.join(d.assumed)}")
     lines.append("")
-    kmin, kpos = ev.minimum("k_total")
-    i_min = int(np.argmin(v["k_total"]))
-    comps = [("screw (at min)", v["k_screw"][i_min]), ("nut", v["k_nut"]), ("bearings", v["k_bearing"])]
-    weakest = min(comps, key=lambda c: c[1])[0]
-    lines.append("component stiffness [N/um]")
-    for name, k in comps:
+    i_min = ev.i_min
+    k_tot = float(v["k_total"][i_min])
+    comps = ev.components(i_min)
+    weakest = ev.weakest
+    sets = 2 if a.mounting == "fixed-fixed" else 1
+    housing = "housing rigid" if v["c_housing"] == 0 else f"housing {1 / v['c_housing'] / N_PER_UM:,.0f} N/um"
+    labels = {"bearings": f"bearings ({sets} set{'s' if sets > 1 else ''}, {housing})",
+              "screw": "screw tension", "screw torsion": "screw torsion (lead)", "coupling": "coupling (lead)",
+              "nut": f"nut at {v['max_axial_force'] / 1e3:.1f} kN", "nut bracket": "nut bracket"}
+    lines.append(f"axial stiffness chain at its softest point ({(ev.x[i_min] - a.start_offset) * 1e3:.0f} mm "
+                 f"along the stroke)")
+    lines.append(f"  {'component':<34}{'N/um':>10}{'um/kN':>9}{'share':>8}")
+    for name, k in comps.items():
         mark = "  <- weakest link" if name == weakest else ""
-        lines.append(f"  {name:<16}{k / N_PER_UM:>10.1f}{mark}")
-    lines.append(f"  {'table on guides':<16}{'':>10}  (table mode {v['f_table']:.0f} Hz)")
+        if not np.isfinite(k):
+            lines.append(f"  {labels[name]:<34}{'rigid':>10}{'0':>9}{'':>8}  (not given)")
+            continue
+        lines.append(f"  {labels[name]:<34}{k / N_PER_UM:>10,.1f}{1e9 / k:>9.2f}{k_tot / k * 100:>7.0f}%{mark}")
+    if a.mounting == "fixed-fixed":
+        k_sb = float(v["k_screw_bearings"][i_min])
+        lines.append(f"  {'screw + bearings, two paths':<34}{k_sb / N_PER_UM:>10,.1f}{1e9 / k_sb:>9.2f}"
+                     f"{k_tot / k_sb * 100:>7.0f}%  (in place of the two rows above)")
+    lines.append(f"  {'total':<34}{k_tot / N_PER_UM:>10,.1f}{1e9 / k_tot:>9.2f}")
+    lines.append(f"  {'table on guides':<34}{'':>10}  (table mode {v['f_table']:.0f} Hz)")
     lines.append("")
     lines.append(f"{'over the stroke':<22}{'start':>10}{'middle':>10}{'end':>10}{'minimum':>10}{'at [mm]':>9}")
     s = ev.x - a.start_offset
@@ -102,6 +125,15 @@ def evaluation_table(ev: Evaluation) -> str:
                  f"{v['drag_bearings']:.3f}, guides {v['drag_guides']:.3f}) at {a.max_speed * 60:.0f} m/min")
     lines.append(f"moving mass {v['moving_mass']:.1f} kg   total mass {v['total_mass']:.1f} kg   "
                  f"cost {v['cost']:,.0f} EUR (illustrative prices)")
+    lines.append(_thermal_line(ev))
+    z = {k: float(np.asarray(v[k])[i_min]) * 100
+         for k in ("zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure")}
+    lines.append(f"damping of the axial mode {float(np.asarray(v['damping_ratio'])[i_min]) * 100:.1f} %  (guides "
+                 f"{z['zeta_guides']:.1f}, nut {z['zeta_nut']:.2f}, bearings {z['zeta_bearings']:.2f}, structure "
+                 f"{z['zeta_structure']:.1f}; seed Tables 5-7)")
+    lines.append(f"drive-train modes (motor free) {float(np.asarray(v['f_axial_torsional'])[i_min]):.0f} and "
+                 f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  nut backlash "
+                 f"{v['backlash'] * 1e6:.0f} um")
     lines.append("")
     lines.append("checks (margin >= 1 passes)")
     for c in CHECKS:
@@ -109,6 +141,18 @@ def evaluation_table(ev: Evaluation) -> str:
         shown = "n/a" if m >= 1e8 else f"{m:.2f}"
         lines.append(f"  {CHECK_LABELS[c]:<44}{shown:>8}  {'pass' if m >= 1.0 else 'FAIL'}")
     return "\n".join(lines)
+
+
+def _thermal_line(ev: Evaluation) -> str:
+    a, v = ev.design.axis, ev.values
+    u = np.asarray(v["thermal_displacement"])
+    text = (f"thermal: +{a.temperature_rise:g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
+            f"(alpha 11.6e-6/K, HIWIN F 3.36)")
+    if a.mounting == "fixed-fixed":
+        text += (f"; pretension {v['pretension'] / 1e3:.1f} kN "
+                 f"({'absorbs the rise' if a.pretension is None else 'as given'}), bearing static load "
+                 f"{v['bearing_static_load'] / 1e3:.1f} kN")
+    return text
 
 
 PLOT_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg")

@@ -21,11 +21,11 @@ def test_correct_fixed_fixed_axis_names_nothing():
     d = replace(d, axis=replace(d.axis, mounting="fixed-fixed"))
     plant = plant_from_design(d)
     # by hand: WBK30-DFD 1520 N/um at both ends (housings rigid), root 34.91 mm, E 206 GPa, span 1.1 m; screw
-    # torsion G pi d^4/(32 x) and the GWB AKN 60 coupling (75e3 N.m/rad) through the 10 mm lead; nut at its preload
-    # (R40-10K5-FDC 0.8 x 1410 N/um x (3000/6340)^(1/3)), linear at these small loads
+    # torsion G pi d^4/(32 x) and the GWB AKN 60 coupling (75e3 N.m/rad) through the 20 mm lead; nut at its preload
+    # (R40-20K4-FDC 0.8 x 1150 N/um x (3000/5130)^(1/3)), linear at these small loads
     ea = 206e9 * math.pi / 4 * 0.03491**2
-    k_b, span, r2 = 1520e6, 1.1, (0.010 / (2 * math.pi)) ** 2
-    k_n = 0.8 * 1410e6 * (3000 / 6340) ** (1 / 3)
+    k_b, span, r2 = 1520e6, 1.1, (0.020 / (2 * math.pi)) ** 2
+    k_n = 0.8 * 1150e6 * (3000 / 5130) ** (1 / 3)
     rng = np.random.default_rng(3)
     pos, force, direction = [], [], []
     for p in np.linspace(0.0, 0.8, 9):

@@ -310,6 +310,6 @@ def test_support_bearing_life_in_the_model():
     lift = 2**1.5 * pre
     loaded = pre * (1 + f_mean / lift) ** 1.5 if f_mean < lift else f_mean
     rev = (47.5e3 / (1.2 * loaded)) ** 3 * 1e6
-    n = (8 / 60) / 0.010  # mean speed 8 m/min, lead 10 mm [rev/s]
+    n = (8 / 60) / 0.020  # mean speed 8 m/min, lead 20 mm [rev/s]
     assert ev["bearing_life"] == pytest.approx(rev / n, rel=1e-9)
     assert _m.isfinite(ev["margin_bearing_life"])
