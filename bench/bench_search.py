@@ -40,14 +40,16 @@ def synthetic_catalog(seed=0, n_screws=20, nuts_per_screw=5, n_bearings=100, n_g
                        "lead": float(rng.choice([10, 16, 20])) * 1e-3, "root_diameter": d - 1.2 * ball,
                        "ball_diameter": ball, "max_length": rng.uniform(3, 6),
                        "mass_per_length": 7850 * math.pi * d**2 / 4, "dn_limit": rng.uniform(1.2e5, 2.2e5) * 1e-3 * RPM,
+                       "support_bore_min": 0.4 * d, "support_bore_max": d - 0.002,
                        "price_per_length": rng.uniform(60, 250), "price_fixed": rng.uniform(100, 300)})
         for j in range(nuts_per_screw):
             c = rng.uniform(20e3, 120e3)
             double = bool(rng.random() < 0.7)
             nuts.append({"id": f"N{i}_{j}", "vendor": "SYN", "screw_id": f"S{i}",
                          "type": "double" if double else "single",
-                         "stiffness": rng.uniform(200, 1200) * 1e6, "stiffness_preload": (0.1 if double else 0.3) * c,
-                         "preload_min": 0.02 * c if double else 0.0, "preload_max": (0.1 if double else 0.02) * c,
+                         "stiffness": rng.uniform(200, 1200) * 1e6, "stiffness_preload": (0.1 if double else 0.28) * c,
+                         "preload_min": 0.02 * c if double else 0.0, "preload_max": 0.1 * c if double else 0.0,
+                         "axial_play": 0.0 if double else 2e-5,
                          "dynamic_load_rating": c, "static_load_rating": 2 * c, "contact_angle": math.radians(45),
                          "mass": rng.uniform(0.5, 4), "price": rng.uniform(200, 900)})
     for i in range(n_bearings):
@@ -58,6 +60,7 @@ def synthetic_catalog(seed=0, n_screws=20, nuts_per_screw=5, n_bearings=100, n_g
                          "preload": rng.uniform(500, 3000), "axial_rigidity": rng.uniform(300, 1500) * 1e6,
                          "lift_off_load": rng.uniform(5e3, 3e4), "dynamic_load_rating": rng.uniform(15e3, 40e3),
                          "static_load_rating": 4e4, "limiting_speed": rng.uniform(3000, 9000) * RPM, "f0": 1.5,
+                         "starting_torque": rng.uniform(0.1, 0.5) if rng.random() < 0.5 else math.nan,
                          "f1": 0.0003, "mass": rng.uniform(0.2, 1.0), "price": rng.uniform(100, 500)})
     for i in range(n_guides):
         kn = rng.uniform(200, 900) * 1e6
@@ -82,7 +85,7 @@ def synthetic_problem(objective=None) -> Problem:
     axis = Axis(stroke=0.8, moving_mass=400.0, mounting="fixed-fixed", max_speed=0.4, axial_load=3000.0,
                 acceleration=3.0)
     return Problem(axis=axis, catalog=cat, objective=objective or Objective(mode="frequency"),
-                   limits=(("max_cost", 5000.0), ("max_drag_torque", 1.0)),
+                   limits=(("max_backlash", 0.0), ("max_cost", 5000.0), ("max_drag_torque", 2.0)),
                    margins=tuple((c, 1.0) for c in CHECKS), restrictions=Restrictions(mountings=("fixed-fixed",)),
                    name="synthetic-1M")
 
