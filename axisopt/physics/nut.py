@@ -148,11 +148,11 @@ def double_nut_stiffness_under_load(k0, preload, axial_load):
     lift = 2.0**1.5
     s = mx.if_else(f >= lift, f ** (2.0 / 3.0) - 1.0, f / 3.0)
     for _ in range(NEWTON_STEPS):
-        lo = mx.hinge(1.0 - s)
+        lo = mx.fmax(1.0 - s, 1e-24)  # not hinge: keeps derivatives finite after lift-off (sqrt at 0)
         g = (1.0 + s) ** 1.5 - lo**1.5 - f
         dg = 1.5 * (mx.sqrt(1.0 + s) + mx.sqrt(lo))
         s = s - g / dg
-    return k0 * 0.5 * (mx.sqrt(1.0 + s) + mx.sqrt(mx.hinge(1.0 - s)))
+    return k0 * 0.5 * (mx.sqrt(1.0 + s) + mx.sqrt(mx.fmax(1.0 - s, 1e-24)))
 
 
 def nut_preload_drag_torque(preload, lead, nominal_diameter, coefficient=0.05):
