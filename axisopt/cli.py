@@ -26,9 +26,9 @@ def cmd_evaluate(args) -> int:
     ev = evaluate(design)
     rows = resp = None
     if args.methods:
-        from .model.methods import stiffness_methods
+        from .model.methods import select_methods, stiffness_methods
 
-        rows = stiffness_methods(ev)
+        rows = select_methods(stiffness_methods(ev), args.methods, design.name)
     if args.frf:
         from .model.frf import frf
 
@@ -75,8 +75,9 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
     e.add_argument("--plot", metavar="FILE.png", help="plot stiffness and frequency over the stroke")
     e.add_argument("--calibration", metavar="FILE.yaml", help="apply a calibration saved by 'diagnose'")
-    e.add_argument("--methods", action="store_true",
-                   help="stiffness of nut, bearings and screw by every method of the seed paper")
+    e.add_argument("--methods", nargs="?", const="all", metavar="NAMES",
+                   help="stiffness of nut, bearings and screw by every method of the seed paper, or only the "
+                        "named ones (e.g. nut:hertz,bearings:palmgren)")
     e.add_argument("--frf", metavar="FILE.png",
                    help="plot the table's dynamic compliance at stroke start, middle and end (also in --json)")
     e.set_defaults(func=cmd_evaluate)

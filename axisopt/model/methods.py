@@ -204,3 +204,35 @@ def stiffness_methods(ev: Evaluation) -> list[MethodRow]:
     """Rows for nut, bearings and screw: every seed method, with its value or the inputs it lacks."""
     p = design_params(ev.design)
     return _nut_rows(ev, p) + _bearing_rows(ev, p) + _screw_rows(ev, p)
+
+
+# Names a user can ask for with ``evaluate --methods nut:hertz,bearings:palmgren``: component:keyword, the
+# keyword matched against the start of the method's name (lower case).
+METHOD_KEYS = {
+    "nut:catalog": ("nut", "catalog"), "nut:hertz": ("nut", "hertz"),
+    "bearings:catalog": ("bearings", "catalog"), "bearings:eq20": ("bearings", "eq. 20"),
+    "bearings:palmgren": ("bearings", "palmgren"), "bearings:kraemer": ("bearings", "kraemer"),
+    "bearings:eq27": ("bearings", "eq. 27"), "screw:eq3": ("screw", "eq. 3"), "screw:eq7": ("screw", "catalog"),
+}
+
+
+def select_methods(rows, names: str, design_name: str = "design") -> list:
+    """The rows a user asked for by name ('all' or a comma list of :data:`METHOD_KEYS`).
+
+    An unknown name, or a named method the design's parts lack data for, is an InputError (one line)."""
+    from ..errors import InputError
+
+    if names == "all":
+        return list(rows)
+    out = []
+    for name in (n.strip() for n in names.split(",")):
+        if name not in METHOD_KEYS:
+            raise InputError(f"unknown stiffness method '{name}'; choose from {', '.join(METHOD_KEYS)} or all",
+                             where="--methods")
+        comp, key = METHOD_KEYS[name]
+        row = next(r for r in rows if r.component == comp and r.method.lower().startswith(key))
+        if row.value_N_per_m is None:
+            raise InputError(f"method '{name}' needs {', '.join(row.missing)}, which the parts of "
+                             f"'{design_name}' do not give", where="--methods")
+        out.append(row)
+    return out

@@ -118,3 +118,17 @@ def test_bearing_that_does_not_fit_the_screw_end_fails_its_check(tmp_path, capsy
     js = tmp_path / "r.json"
     assert main(["evaluate", str(p), "--json", str(js)]) == 0
     assert json.loads(js.read_text())["checks"]["bearing_fit"]["pass"] is False
+
+
+@pytest.mark.parametrize(("names", "text"), [("nut:hertz", "n_balls"), ("bearings:palmgren", "ball_diameter"),
+                                             ("nut:magic", "unknown stiffness method")])
+def test_named_method_without_data_is_one_line_error(capsys, names, text):
+    assert main(["evaluate", str(ROOT / "problems" / "vmc_x_design.yaml"), "--methods", names]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and text in err and "--methods" in err
+
+
+def test_named_method_with_data_prints_it(capsys):
+    assert main(["evaluate", str(ROOT / "problems" / "vmc_x_design.yaml"), "--methods", "nut:catalog,screw:eq7"]) == 0
+    out = capsys.readouterr().out
+    assert "catalog eq. 9" in out and "eq. 7-8" in out and "Hertz" not in out
