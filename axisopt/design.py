@@ -52,8 +52,7 @@ class Axis:
     normal_load: float = 0.0  # external load on the guide blocks besides gravity [N]
     lubricant_viscosity: float = 32e-6  # at working temperature [m^2/s]
     motor_inertia: float = 1.0e-3  # motor rotor [kg m^2]
-    # stiffnesses outside the catalogs, in the axial chain (see AXIS_DEFAULT_SOURCES for where the defaults
-    # come from); YAML overridable
+    # values outside the catalogs, YAML overridable; the defaults' sources are above the class
     bearing_housing_stiffness: float | None = None  # one support-bearing housing [N/m]; None: rigid
     nut_bracket_stiffness: float | None = None  # nut bracket / table connection [N/m]; None: rigid
     coupling_stiffness: float = COUPLING_STIFFNESS  # torsional [N m/rad]

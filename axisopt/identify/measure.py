@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import mathx as mx
+from ..physics import nut as pn
 from ..physics import screw as ps
 from .data import Dataset
 from .fit import Param
@@ -225,24 +226,18 @@ def nut_k0(q: Terms, plant):
     return plant.k_nut * mx.cbrt(ratio)
 
 
-def double_nut_deflection(force, preload, k0, steps: int = 12):
+def double_nut_deflection(force, preload, k0):
     r"""Axial deflection of a preloaded double nut under external load, with lift-off.
 
     Each half deflects as delta_i = C F_i^(2/3); F_1 - F_2 = F, common shift u = s delta_0:
 
     .. math:: (1+s)^{3/2} - (1-s)_+^{3/2} = |F|/F_{a0},\qquad \delta = \mathrm{sgn}(F)\, s\, 3F_{a0}/k_0
 
-    (k_0 = 3 F_a0 / delta_0 is the stiffness at zero load).  Lift-off at |F| = 2^{3/2} F_a0.  Same
-    equations as :func:`axisopt.physics.nut.double_nut_stiffness_under_load`; fixed Newton steps so it is
-    one symbolic expression.  force [N], preload F_a0 [N], k0 [N/m]; returns [m].
+    (k_0 = 3 F_a0 / delta_0 is the stiffness at zero load).  Lift-off at |F| = 2^{3/2} F_a0.  The shift s is
+    :func:`axisopt.physics.nut.double_nut_shift`, as in the axis model's double-nut stiffness.
+    force [N], preload F_a0 [N], k0 [N/m]; returns [m].
     """
-    f = mx.fabs(force) / preload
-    s = mx.if_else(f >= 2.0**1.5, f ** (2.0 / 3.0) - 1.0, f / 3.0)
-    for _ in range(steps):
-        lo = mx.fmax(1.0 - s, 1e-24)  # not hinge: keeps d/ds finite after lift-off (sqrt at 0)
-        g = (1.0 + s) ** 1.5 - lo**1.5 - f
-        dg = 1.5 * (mx.sqrt(1.0 + s) + mx.sqrt(lo))
-        s = s - g / dg
+    s = pn.double_nut_shift(mx.fabs(force) / preload)
     return mx.sign(force) * s * 3.0 * preload / k0
 
 

@@ -38,7 +38,7 @@ MARGIN_CAP = 1e3
 SCREW_YIELD_STRESS = 147e6
 
 
-def checks(p, mounting, preload, loads, masses_) -> dict:
+def checks(p, mounting, preload, loads) -> dict:
     """Check margins ``margin_<check>`` and the physical values they compare (SI)."""
     span = p["span"]
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]

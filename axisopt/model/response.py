@@ -46,7 +46,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
     out.update(drag_torque(p, preload, loads))
     out["cost"] = cost(p)
     out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]
-    out.update(checks(p, mounting, preload, loads, m))
+    out.update(checks(p, mounting, preload, loads))
     if extras:
         out.update(drive_train_modes(p, chain, modes["m_eff"]))
         out.update(damping(p, chain, modes["m_eff"]))

@@ -8,7 +8,7 @@ from axisopt.physics.screw import E_STEEL
 __all__ = [
     "POISSON_STEEL", "nut_stiffness_catalog", "hertz_point_deflection", "nut_axial_deflection_hertz",
     "nut_stiffness_hertz", "lift_off_force", "double_nut_stiffness_under_load", "nut_preload_drag_torque",
-    "preloaded_pair_load",
+    "preloaded_pair_load", "double_nut_shift",
 ]
 
 POISSON_STEEL = 0.3
@@ -127,6 +127,25 @@ def preloaded_pair_load(preload, axial_load):
     return mx.if_else(axial_load < lift, f1, axial_load)
 
 
+def double_nut_shift(force_ratio):
+    r"""Common contact shift s = u / delta_0 of a preloaded double nut under external load, with lift-off.
+
+    .. math:: (1+s)^{3/2} - (1-s)_+^{3/2} = f
+
+    solved by a fixed number of Newton steps (symbolic-safe; (1-s) is floored at 1e-24 rather than 0 so the
+    derivatives stay finite after lift-off).  force_ratio : f = |F| / F_a0 [-] (>= 0).  Returns s [-]
+    (s = f/3 for small f; s >= 1 after lift-off at f = 2^(3/2)).  Source: Hertz delta ~ F^(2/3) in each half.
+    """
+    f = force_ratio
+    s = mx.if_else(f >= 2.0**1.5, f ** (2.0 / 3.0) - 1.0, f / 3.0)
+    for _ in range(NEWTON_STEPS):
+        lo = mx.fmax(1.0 - s, 1e-24)
+        g = (1.0 + s) ** 1.5 - lo**1.5 - f
+        dg = 1.5 * (mx.sqrt(1.0 + s) + mx.sqrt(lo))
+        s = s - g / dg
+    return s
+
+
 def double_nut_stiffness_under_load(k0, preload, axial_load):
     r"""Stiffness of a preloaded double nut (or 4-point nut) under external axial load, with lift-off.
 
@@ -136,7 +155,7 @@ def double_nut_stiffness_under_load(k0, preload, axial_load):
 
     .. math:: (1+s)^{3/2} - (1-s)_+^{3/2} = f,\qquad k/k_0 = \tfrac12[(1+s)^{1/2} + (1-s)_+^{1/2}]
 
-    solved by a fixed number of Newton steps (symbolic-safe).  k/k0 = 0.707 at lift-off (f = 2.83) and
+    solved by :func:`double_nut_shift`.  k/k0 = 0.707 at lift-off (f = 2.83) and
     f^(1/3)/2 beyond it.  Source: model-discrepancy.md row 3 (Hertz contact); seed eq. 12-18 power law.
 
     k0         : stiffness at zero external load [N/m]
@@ -144,14 +163,7 @@ def double_nut_stiffness_under_load(k0, preload, axial_load):
     axial_load : F, external axial load [N] (sign ignored)
     Returns k [N/m].
     """
-    f = mx.fabs(axial_load) / preload
-    lift = 2.0**1.5
-    s = mx.if_else(f >= lift, f ** (2.0 / 3.0) - 1.0, f / 3.0)
-    for _ in range(NEWTON_STEPS):
-        lo = mx.fmax(1.0 - s, 1e-24)  # not hinge: keeps derivatives finite after lift-off (sqrt at 0)
-        g = (1.0 + s) ** 1.5 - lo**1.5 - f
-        dg = 1.5 * (mx.sqrt(1.0 + s) + mx.sqrt(lo))
-        s = s - g / dg
+    s = double_nut_shift(mx.fabs(axial_load) / preload)
     return k0 * 0.5 * (mx.sqrt(1.0 + s) + mx.sqrt(mx.fmax(1.0 - s, 1e-24)))
 
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from axisopt import mathx as mx
 from axisopt.physics.screw import E_STEEL, screw_axial_rigidity
 
 __all__ = [
@@ -72,4 +71,4 @@ def thermal_displacement(x, span, root_diameter, temperature_rise, k_bearing_set
     free = alpha * temperature_rise * x
     df = thermal_force_elastic_ends(root_diameter, span, temperature_rise, k_bearing_set, alpha, youngs_modulus)
     held = -df / k_bearing_set + (alpha * temperature_rise - df / ea) * x
-    return both_ends_fixed * held + (1.0 - both_ends_fixed) * free + 0.0 * mx.fabs(x)
+    return both_ends_fixed * held + (1.0 - both_ends_fixed) * free
