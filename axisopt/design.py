@@ -111,6 +111,9 @@ _AXIS_KINDS = {
     "temperature_rise": "temperature_difference",
 }
 _AXIS_REQUIRED = ("stroke", "moving_mass", "mounting", "max_speed", "axial_load")
+# Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
+# operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.
+_AXIS_MAXIMUM = {"temperature_rise": (100.0, "100 K")}
 _NON_NEGATIVE = ("end_margin", "mean_axial_load", "acceleration", "normal_load", "axial_load", "temperature_rise")
 
 
@@ -119,7 +122,8 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     kw = {}
     for name, kind in _AXIS_KINDS.items():
         v = sec.quantity(name, kind, required=name in _AXIS_REQUIRED,
-                         positive=name not in _NON_NEGATIVE, non_negative=name in _NON_NEGATIVE)
+                         positive=name not in _NON_NEGATIVE, non_negative=name in _NON_NEGATIVE,
+                         maximum=_AXIS_MAXIMUM.get(name))
         if v is not None:
             kw[name] = v
     kw["mounting"] = sec.choice("mounting", MOUNTINGS, required=True)

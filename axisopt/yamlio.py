@@ -133,7 +133,8 @@ class Section:
         return default if n is None else _plain(n)
 
     def quantity(self, key: str, kind: str, default=None, *, required: bool = False, positive: bool = False,
-                 non_negative: bool = False):
+                 non_negative: bool = False, maximum: tuple | None = None):
+        """A quantity in SI; ``maximum`` = (SI value, text shown) bounds it from above."""
         n = self.raw(key, None, required=required)
         if n is None:
             return default
@@ -142,6 +143,8 @@ class Section:
             raise self.error(key, f"must be positive, got '{n.value}'")
         if non_negative and v < 0:
             raise self.error(key, f"must not be negative, got '{n.value}'")
+        if maximum is not None and v > maximum[0]:
+            raise self.error(key, f"must be at most {maximum[1]}, got '{n.value}'")
         return v
 
     def number(self, key: str, default=None, *, required: bool = False, integer: bool = False,

@@ -92,6 +92,7 @@ def test_methods_and_frf_run_on_every_shipped_design(path, tmp_path, capsys):
 @pytest.mark.parametrize(("edit", "key"), [
     (("  stroke: 800 mm", "  stroke: 800 mm\n  temperature_rise: -3 K"), "temperature_rise"),
     (("  stroke: 800 mm", "  stroke: 800 mm\n  temperature_rise: 3 mm"), "temperature_rise"),
+    (("  stroke: 800 mm", "  stroke: 800 mm\n  temperature_rise: 1e300 K"), "temperature_rise"),
     (("  stroke: 800 mm", "  stroke: 800 mm\n  pretension: lots"), "pretension"),
     (("  stroke: 800 mm", "  stroke: 800 mm\n  coupling_stiffness: 75 N/m"), "coupling_stiffness"),
     (("  stroke: 800 mm", "  stroke: 800 mm\n  nut_bracket_stiffness: 0 N/um"), "nut_bracket_stiffness"),
