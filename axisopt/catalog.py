@@ -52,6 +52,13 @@ _GUIDES = {
     "block_price": "money", "rail_price_per_length": "money_per_length",
 }
 
+# Columns a table may omit from its header; shipped rows carry them (tests/catalogs checks every row).
+#   status: where the row's physics values come from: "vendor" (a vendor table), "paper" (the seed paper) or
+#           "derived" (at least one physics value computed by a rule in catalogs/SOURCES.md).  Prices are
+#           illustrative everywhere and do not count.  A row of a table without the column is "user".
+#   source: the reference key of catalogs/SOURCES.md and the table or page, e.g. "H-BS Table 6.6".
+PROVENANCE = MappingProxyType({"status": ("vendor", "paper", "derived"), "source": None})
+
 SCHEMA = MappingProxyType({
     "screws": MappingProxyType(_SCREWS),
     "nuts": MappingProxyType(_NUTS),
@@ -128,7 +135,7 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
         if col in seen:
             raise InputError(f"duplicate column '{col}'", source=src, where=f"line 1, column {j}")
         seen.add(col)
-        kind = schema.get(col)
+        kind = "str" if col in PROVENANCE else schema.get(col)
         if kind is None:
             near = _closest(col, schema)
             hint = f"; did you mean '{near}'?" if near else ""
@@ -186,6 +193,8 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
                 raise InputError(f"{col} must not be negative, got {cell}", source=src, where=where)
             rec[col] = val * factor
         choices = [(c, rec[c], ok) for (t, c), ok in _CHOICES.items() if t == name and rec[c] not in ok]
+        if "status" in rec and rec["status"] not in PROVENANCE["status"]:
+            choices.insert(0, ("status", rec["status"], PROVENANCE["status"]))
         if choices:
             c, v, ok = choices[0]
             j = [n for n, _, _ in cols].index(c) + 1
@@ -197,7 +206,12 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
         ids[rec["id"]] = i
         rec["_source"] = f"{src}:{i}"
         records.append(rec)
-    df = pd.DataFrame.from_records(records, columns=list(schema) + ["_source"])
+    df = pd.DataFrame.from_records(records, columns=list(schema) + ["_source"]
+                                   + [c for c in PROVENANCE if c in seen])
+    if "status" not in seen:
+        df["status"] = "user"
+    if "source" not in seen:
+        df["source"] = ""
     return df.set_index("id", drop=False)
 
 
@@ -231,6 +245,13 @@ def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
     if bad.any():
         r = nuts[bad].iloc[0]
         raise InputError(f"screw_id '{r['screw_id']}' is not in screws.csv", source=r["_source"],
+                         where="column screw_id")
+    other = nuts["vendor"].to_numpy() != out["screws"].loc[nuts["screw_id"], "vendor"].to_numpy()
+    if other.any():
+        r = nuts[other].iloc[0]
+        v = out["screws"].loc[r["screw_id"], "vendor"]
+        raise InputError(f"nut '{r['id']}' of vendor {r['vendor']} is listed on screw '{r['screw_id']}' of vendor "
+                         f"{v}: a nut runs only on its own vendor's shaft", source=r["_source"],
                          where="column screw_id")
     return Catalog(**out)
 

@@ -1,4 +1,4 @@
-"""Command line: ``axisopt evaluate | solve | diagnose | compare | study``.  The only module that prints.
+"""Command line: ``axisopt evaluate | solve | diagnose | compare | study | parts``.  The only module that prints.
 
 Exit codes: 0 success, 1 a well-formed question with a negative answer (e.g. an infeasible
 problem), 2 bad input (one line on stderr naming the file and key or line).
@@ -90,7 +90,7 @@ def build_parser() -> argparse.ArgumentParser:
 def _extra_commands():
     """Subcommands kept in their own CLI modules (``axisopt/*_cli.py``, each with ``register(sub)``)."""
     out = []
-    for mod in ("solve_cli", "diagnose_cli", "study_cli"):
+    for mod in ("solve_cli", "diagnose_cli", "study_cli", "parts_cli"):
         try:
             m = __import__(f"axisopt.{mod}", fromlist=["register"])
         except ModuleNotFoundError as exc:
