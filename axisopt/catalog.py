@@ -76,7 +76,7 @@ _POSITIVE = {
 }
 # Columns whose cell may be left empty: the vendor does not list the value (read as NaN; the model then
 # uses its fallback, e.g. seed eq. 40 for a bearing set without a listed starting torque).
-OPTIONAL_COLUMNS = MappingProxyType({"bearings": ("starting_torque",)})
+OPTIONAL_COLUMNS = MappingProxyType({"bearings": ("starting_torque",), "screws": ("ball_diameter",)})
 _NON_NEGATIVE = ("axial_play", "starting_torque",
                  "price", "price_fixed", "price_per_length", "block_price", "rail_price_per_length",
                  "mass", "block_mass", "preload", "preload_min", "preload_max", "friction_force",
