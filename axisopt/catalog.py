@@ -53,9 +53,9 @@ _GUIDES = {
 }
 
 # Columns a table may omit from its header; shipped rows carry them (tests/catalogs checks every row).
-#   status: where the row's physics values come from: "vendor" (a vendor table), "paper" (the seed paper) or
-#           "derived" (at least one physics value computed by a rule in catalogs/SOURCES.md).  Prices are
-#           illustrative everywhere and do not count.  A row of a table without the column is "user".
+#   status: "vendor" (a catalog part, stiffness and load ratings from the vendor's table), "paper" (stiffness from
+#           the seed paper) or "derived" (the part or its stiffness/ratings computed by a rule in
+#           catalogs/SOURCES.md).  A row of a table without the column is "user".
 #   source: the reference key of catalogs/SOURCES.md and the table or page, e.g. "H-BS Table 6.6".
 PROVENANCE = MappingProxyType({"status": ("vendor", "paper", "derived"), "source": None})
 

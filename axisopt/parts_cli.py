@@ -72,8 +72,9 @@ def counts_table(records) -> str:
     for r in records:
         lines.append(f"{r['kind']:<9} {r['vendor']:<16} {r['rows']:>5} {r['vendor_data']:>12} {r['paper']:>6} "
                      f"{r['derived']:>8} {r['user']:>5}")
-    lines.append("'vendor data': every stiffness, load rating and preload from a vendor table; 'derived': at least "
-                 "one computed by a rule in catalogs/SOURCES.md (prices are illustrative everywhere)")
+    lines.append("'vendor data': a catalog part whose stiffness and load ratings are read from the vendor's table; "
+                 "'derived': the part or its stiffness/ratings computed by a rule in catalogs/SOURCES.md "
+                 "(prices are illustrative everywhere)")
     return "\n".join(lines)
 
 
