@@ -53,11 +53,12 @@ _GUIDES = {
 }
 
 # Columns a table may omit from its header; shipped rows carry them (tests/catalogs checks every row).
-#   status: "vendor" (a catalog part, stiffness and load ratings from the vendor's table), "paper" (stiffness from
-#           the seed paper) or "derived" (the part or its stiffness/ratings computed by a rule in
-#           catalogs/SOURCES.md).  A row of a table without the column is "user".
+#   status: "vendor" (a catalog part, stiffness and load ratings from the vendor's table), "stiffness-derived"
+#           (a catalog part with vendor ratings and preload whose rigidity the vendor gives no number for; computed
+#           by a rule in catalogs/SOURCES.md), "paper" (stiffness from the seed paper) or "derived" (the part or
+#           its ratings computed by a rule).  A row of a table without the column is "user".
 #   source: the reference key of catalogs/SOURCES.md and the table or page, e.g. "H-BS Table 6.6".
-PROVENANCE = MappingProxyType({"status": ("vendor", "paper", "derived"), "source": None})
+PROVENANCE = MappingProxyType({"status": ("vendor", "stiffness-derived", "paper", "derived"), "source": None})
 
 SCHEMA = MappingProxyType({
     "screws": MappingProxyType(_SCREWS),

@@ -29,7 +29,7 @@ def register(sub) -> None:
     p = sub.add_parser("parts", help="catalog contents: counts per kind and vendor, or the rows of one kind")
     p.add_argument("kind", nargs="?", choices=KINDS, help="list the rows of this kind (default: counts only)")
     p.add_argument("--vendor", action="append", metavar="NAME", help="only this vendor (repeatable)")
-    p.add_argument("--status", choices=("vendor", "paper", "derived", "user"),
+    p.add_argument("--status", choices=("vendor", "stiffness-derived", "paper", "derived", "user"),
                    help="only rows of this provenance (see catalogs/SOURCES.md)")
     p.add_argument("--catalogs", nargs="+", default=(), metavar="DIR", help="user catalog directories to add")
     p.add_argument("--json", metavar="FILE", help="write the counts (or rows) as JSON ('-' for stdout)")
@@ -60,21 +60,22 @@ def counts(cat, vendors=None, status=None) -> list[dict]:
             df = df[df["status"] == status]
         for vendor, g in df.groupby("vendor", sort=True):
             rec = {"kind": kind, "vendor": vendor, "rows": int(len(g))}
-            for s in ("vendor", "paper", "derived", "user"):
-                rec["vendor_data" if s == "vendor" else s] = int((g["status"] == s).sum())
+            for s in ("vendor", "stiffness-derived", "paper", "derived", "user"):
+                rec[s.replace("vendor", "vendor_data").replace("-", "_")] = int((g["status"] == s).sum())
             out.append(rec)
     return out
 
 
 def counts_table(records) -> str:
-    head = f"{'kind':<9} {'vendor':<16} {'rows':>5} {'vendor data':>12} {'paper':>6} {'derived':>8} {'user':>5}"
+    head = (f"{'kind':<9} {'vendor':<16} {'rows':>5} {'vendor data':>12} {'stiffness derived':>18} {'paper':>6} "
+            f"{'derived':>8} {'user':>5}")
     lines = [head, "-" * len(head)]
     for r in records:
-        lines.append(f"{r['kind']:<9} {r['vendor']:<16} {r['rows']:>5} {r['vendor_data']:>12} {r['paper']:>6} "
-                     f"{r['derived']:>8} {r['user']:>5}")
-    lines.append("'vendor data': a catalog part whose stiffness and load ratings are read from the vendor's table; "
-                 "'derived': the part or its stiffness/ratings computed by a rule in catalogs/SOURCES.md "
-                 "(prices are illustrative everywhere)")
+        lines.append(f"{r['kind']:<9} {r['vendor']:<16} {r['rows']:>5} {r['vendor_data']:>12} "
+                     f"{r['stiffness_derived']:>18} {r['paper']:>6} {r['derived']:>8} {r['user']:>5}")
+    lines.append("vendor data: a catalog part, stiffness and load ratings from the vendor's table; stiffness derived: "
+                 "a catalog part whose vendor gives no rigidity number (rule in catalogs/SOURCES.md); derived: the "
+                 "part or its ratings computed by a rule; prices are illustrative everywhere")
     return "\n".join(lines)
 
 
