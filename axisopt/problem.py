@@ -36,6 +36,8 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
       bearing_preload: [medium, heavy]                # bearing preload classes
       guide_types: [ball, roller]
       guide_preload: [medium, heavy]                  # guide preload levels or vendor classes (ZA, Z0, ...)
+      status: [vendor, stiffness-derived]             # row provenance (catalogs/SOURCES.md); the default also
+                                                      # allows user rows; add derived or paper to search those
       require: {screw: [id, ...], nut: id, bearing: [...], guide: [...]}
       exclude: {guide: [id, ...]}
     continuous:
@@ -103,6 +105,9 @@ def _fmt_si(key, value):
     return f"{value / 1e6:g} N/um" if key == "stiffness" else f"{value:g} Hz"
 
 
+DEFAULT_STATUS = ("vendor", "stiffness-derived", "user")
+
+
 @dataclass(frozen=True)
 class Restrictions:
     """Which catalog parts and mountings the search may use (None: no restriction)."""
@@ -114,6 +119,9 @@ class Restrictions:
     bearing_preload: tuple | None = None
     guide_types: tuple | None = None
     guide_preload: tuple | None = None
+    # parts you can buy: catalog rows with vendor ratings, and user-catalog rows; 'derived' and 'paper' rows
+    # (a preload class or stack a vendor does not list, the seed's catalog [21] nuts) only when asked for
+    status: tuple = DEFAULT_STATUS
     require: tuple = ()  # ((slot, (ids...)), ...)
     exclude: tuple = ()
 
@@ -290,12 +298,16 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
                             ("bearing_arrangements", "bearings", "arrangement"),
                             ("bearing_preload", "bearings", "preload_class"),
                             ("guide_types", "guides", "type"),
-                            ("guide_preload", "guides", None)):
+                            ("guide_preload", "guides", None), ("status", "status", None)):
         vals = sec.string_list(key, None)
         if vals is None:
             continue
         if table is None:
             known = vendors_all
+        elif table == "status":
+            from .catalog import PROVENANCE
+
+            known = list(PROVENANCE["status"]) + ["user"]
         elif col is None:
             g = catalog.guides
             known = sorted(set(g["preload_level"]) | set(g["preload_class"]))

@@ -23,6 +23,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+import pandas as pd
 
 from .. import model
 from ..problem import LIMITS, Problem
@@ -255,6 +256,15 @@ def build_space(problem: Problem) -> Space:
         nuts = nuts[nuts["vendor"].isin(r.vendors)]
         bearings = bearings[bearings["vendor"].isin(r.vendors)]
         guides = guides[guides["vendor"].isin(r.vendors)]
+    # provenance: a slot the problem names parts for ('require') takes them whatever their status
+    def by_status(df, slot):
+        if r.required(slot):
+            return df
+        st = df["status"] if "status" in df.columns else pd.Series("user", index=df.index)
+        return df[st.isin(tuple(r.status)).to_numpy()]
+
+    screws, nuts = by_status(screws, "screw"), by_status(nuts, "nut")
+    bearings, guides = by_status(bearings, "bearing"), by_status(guides, "guide")
     if r.nut_types is not None:
         nuts = nuts[nuts["type"].isin(r.nut_types)]
     if r.bearing_arrangements is not None:
