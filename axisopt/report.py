@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import InputError
-from .model import CHECK_LABELS, CHECKS, Evaluation
+from .model import CHECK_LABELS, CHECKS, Evaluation, passes
 from .units import N_PER_UM
 
 
@@ -53,9 +53,9 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "drag_torque_Nm": v["drag_torque"],
         "drag_torque_parts_Nm": {"nut": v["drag_nut"], "bearings": v["drag_bearings"],
                                  "guides": v["drag_guides"]},
-        "checks": {c: {"margin": _finite(v[f"margin_{c}"]), "pass": bool(v[f"margin_{c}"] >= 1.0)}
+        "checks": {c: {"margin": _finite(v[f"margin_{c}"]), "pass": passes(v[f"margin_{c}"])}
                    for c in CHECKS},
-        "all_checks_pass": bool(all(v[f"margin_{c}"] >= 1.0 for c in CHECKS)),
+        "all_checks_pass": bool(all(passes(v[f"margin_{c}"]) for c in CHECKS)),
         "positions_mm": (s * 1e3).tolist(),
         "axial_stiffness_N_per_um": (np.asarray(v["k_total"]) / N_PER_UM).tolist(),
         "screw_stiffness_N_per_um": (np.asarray(v["k_screw"]) / N_PER_UM).tolist(),
@@ -139,7 +139,7 @@ def evaluation_table(ev: Evaluation) -> str:
     for c in CHECKS:
         m = v[f"margin_{c}"]
         shown = "n/a" if m >= 1e8 else f"{m:.2f}"
-        lines.append(f"  {CHECK_LABELS[c]:<44}{shown:>8}  {'pass' if m >= 1.0 else 'FAIL'}")
+        lines.append(f"  {CHECK_LABELS[c]:<44}{shown:>8}  {'pass' if passes(m) else 'FAIL'}")
     return "\n".join(lines)
 
 

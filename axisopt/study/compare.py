@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from ..model import CHECK_LABELS, CHECKS, Evaluation, evaluate
+from ..model import CHECK_LABELS, CHECKS, Evaluation, evaluate, passes
 from ..report import N_PER_UM, evaluation_dict
 from ..yamlio import read_yaml
 
@@ -134,7 +134,7 @@ def compare_table(items) -> str:
     for c in CHECKS:
         def cell(e, c=c):
             m = e[f"margin_{c}"]
-            return ("n/a" if m >= 1e8 else f"{m:.2f}") + ("  " if m >= 1.0 else " !")
+            return ("n/a" if m >= 1e8 else f"{m:.2f}") + ("  " if passes(m) else " !")
         row(f"  {CHECK_LABELS[c][:w0 - 3]}", each(cell))
     row("all checks pass", each(lambda e: "yes" if min(e.checks().values()) >= 1.0 else "NO"))
     solved = [c for c in items if c.solve is not None]
