@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import csv
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
 
@@ -60,12 +60,29 @@ _GUIDES = {
 #   source: the reference key of catalogs/SOURCES.md and the table or page, e.g. "H-BS Table 6.6".
 PROVENANCE = MappingProxyType({"status": ("vendor", "stiffness-derived", "paper", "derived"), "source": None})
 
+# Drive parts (servo motors, shaft couplings).  Optional tables: a catalog directory may leave them out.
+_MOTORS = {
+    "id": "str", "vendor": "str", "series": "str", "rated_power": "power", "rated_torque": "torque",
+    "peak_torque": "torque", "rated_speed": "angular_speed", "max_speed": "angular_speed",
+    "rotor_inertia": "inertia", "rotor_inertia_brake": "inertia", "brake_torque": "torque", "mass": "mass",
+    "flange": "length", "price": "money",
+}
+_COUPLINGS = {
+    "id": "str", "vendor": "str", "series": "str", "rated_torque": "torque",
+    "torsional_stiffness": "torsional_stiffness", "inertia": "inertia", "max_speed": "angular_speed",
+    "bore_min": "length", "bore_max": "length", "mass": "mass", "price": "money",
+}
+
 SCHEMA = MappingProxyType({
     "screws": MappingProxyType(_SCREWS),
     "nuts": MappingProxyType(_NUTS),
     "bearings": MappingProxyType(_BEARINGS),
     "guides": MappingProxyType(_GUIDES),
+    "motors": MappingProxyType(_MOTORS),
+    "couplings": MappingProxyType(_COUPLINGS),
 })
+# Tables the axis model needs in every catalog; the drive tables may be absent (empty then).
+REQUIRED_TABLES = ("screws", "nuts", "bearings", "guides")
 
 # Columns that must be > 0 (stiffness and the geometry the physics divides by).
 _POSITIVE = {
@@ -74,11 +91,22 @@ _POSITIVE = {
     "nuts": ("stiffness", "stiffness_preload", "dynamic_load_rating", "static_load_rating"),
     "bearings": ("axial_rigidity", "bore", "outer_diameter", "rows", "dynamic_load_rating"),
     "guides": ("normal_rigidity", "tangential_rigidity", "size", "dynamic_load_rating"),
+    "motors": ("rated_power", "rated_torque", "peak_torque", "rated_speed", "max_speed", "rotor_inertia"),
+    "couplings": ("rated_torque", "torsional_stiffness", "inertia", "max_speed", "bore_min", "bore_max"),
+}
+# Pairs (low, high) that a row must keep in order: a one-line error names the row otherwise.
+_ORDERED = {
+    "motors": (("rated_torque", "peak_torque"), ("rated_speed", "max_speed"),
+               ("rotor_inertia", "rotor_inertia_brake")),
+    "couplings": (("bore_min", "bore_max"),),
+    "nuts": (("preload_min", "preload_max"),),
 }
 # Columns whose cell may be left empty: the vendor does not list the value (read as NaN; the model then
 # uses its fallback, e.g. seed eq. 40 for a bearing set without a listed starting torque).
-OPTIONAL_COLUMNS = MappingProxyType({"bearings": ("starting_torque",), "screws": ("ball_diameter",)})
-_NON_NEGATIVE = ("axial_play", "starting_torque",
+OPTIONAL_COLUMNS = MappingProxyType({"bearings": ("starting_torque",), "screws": ("ball_diameter",),
+                                     "motors": ("rotor_inertia_brake", "brake_torque", "mass", "flange"),
+                                     "couplings": ("mass",)})
+_NON_NEGATIVE = ("axial_play", "starting_torque", "rotor_inertia_brake", "brake_torque", "flange",
                  "price", "price_fixed", "price_per_length", "block_price", "rail_price_per_length",
                  "mass", "block_mass", "preload", "preload_min", "preload_max", "friction_force",
                  "friction_coefficient", "friction_viscous", "damping", "f0", "f1")
@@ -92,12 +120,15 @@ _CHOICES = {
 
 @dataclass(frozen=True)
 class Catalog:
-    """The four part tables in SI, indexed by part id, plus where each row came from."""
+    """The part tables in SI, indexed by part id, plus where each row came from.  ``motors`` and
+    ``couplings`` (the drive) are empty tables when no catalog directory has them."""
 
     screws: pd.DataFrame
     nuts: pd.DataFrame
     bearings: pd.DataFrame
     guides: pd.DataFrame
+    motors: pd.DataFrame = field(default_factory=lambda: _empty("motors"))
+    couplings: pd.DataFrame = field(default_factory=lambda: _empty("couplings"))
 
     def table(self, name: str) -> pd.DataFrame:
         return getattr(self, name)
@@ -109,6 +140,10 @@ class Catalog:
             hint = f"; did you mean '{near}'?" if near else ""
             raise InputError(f"unknown {table[:-1]} id '{part_id}'{hint}", source=source, where=key)
         return df.loc[part_id]
+
+
+def _empty(name: str) -> pd.DataFrame:
+    return pd.DataFrame(columns=list(SCHEMA[name]) + ["_source", "status", "source"]).set_index("id", drop=False)
 
 
 def _closest(word: str, options) -> str | None:
@@ -201,6 +236,12 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
             j = [n for n, _, _ in cols].index(c) + 1
             raise InputError(f"{c} '{v}' is not one of {', '.join(ok)}", source=src,
                              where=f"line {i}, column {j} ({c})")
+        for a, b in _ORDERED.get(name, ()):
+            if rec[a] > rec[b]:  # NaN (an optional cell left empty) compares False
+                j = [n for n, _, _ in cols].index(b) + 1
+                raise InputError(f"{b} is below {a} ({b} {row[j - 1].strip()} < {a} "
+                                 f"{row[[n for n, _, _ in cols].index(a)].strip()})", source=src,
+                                 where=f"line {i}, column {j} ({b})")
         if rec["id"] in ids:
             raise InputError(f"duplicate id '{rec['id']}' (first on line {ids[rec['id']]})", source=src,
                              where=f"line {i}, column 1 (id)")
@@ -233,6 +274,9 @@ def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
     out = {}
     for name, parts in tables.items():
         if not parts:
+            if name not in REQUIRED_TABLES:
+                out[name] = _empty(name)
+                continue
             raise InputError(f"no {name}.csv found in catalog directories", source=", ".join(map(str, dirs)))
         df = pd.concat(parts) if len(parts) > 1 else parts[0]
         dup = df.index[df.index.duplicated()]

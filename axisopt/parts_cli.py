@@ -5,7 +5,7 @@ from __future__ import annotations
 from .cliutil import EXIT_OK, write_json
 from .errors import InputError
 
-KINDS = ("screws", "nuts", "bearings", "guides")
+KINDS = ("screws", "nuts", "bearings", "guides", "motors", "couplings")
 
 # Columns shown per kind when listing rows: (column, unit shown, factor from SI, format).
 _SHOWN = {
@@ -22,6 +22,11 @@ _SHOWN = {
     "guides": (("type", "", None, ""), ("size", "mm", 1e3, ".0f"), ("preload_class", "", None, ""),
                ("preload", "N", 1.0, ".0f"), ("normal_rigidity", "N/um", 1e-6, ".0f"),
                ("dynamic_load_rating", "kN", 1e-3, ".1f"), ("static_load_rating", "kN", 1e-3, ".1f")),
+    "motors": (("rated_torque", "N.m", 1.0, ".3g"), ("peak_torque", "N.m", 1.0, ".3g"),
+               ("max_speed", "rpm", 60 / 6.283185307179586, ".0f"), ("rotor_inertia", "kg.cm^2", 1e4, ".3g"),
+               ("brake_torque", "N.m", 1.0, ".3g")),
+    "couplings": (("rated_torque", "N.m", 1.0, ".0f"), ("torsional_stiffness", "N.m/rad", 1.0, ".0f"),
+                  ("inertia", "kg.cm^2", 1e4, ".3g"), ("bore_min", "mm", 1e3, ".0f"), ("bore_max", "mm", 1e3, ".0f")),
 }
 
 

@@ -44,6 +44,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "torsional_stiffness": ("[force]*[length]", "N*m"),
     "kinematic_viscosity": ("[length]**2/[time]", "m**2/s"),
     "inertia": ("[mass]*[length]**2", "kg*m**2"),
+    "power": ("[power]", "W"),
     "money": ("[currency]", "EUR"),
     "money_per_length": ("[currency]/[length]", "EUR/m"),
     "dn": ("[length]/[time]", "m*rad/s"),

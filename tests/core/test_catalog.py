@@ -104,6 +104,13 @@ def _edit(path, old, new, count=1):
          "screw_id 'NO-SUCH-SCREW'"),
         ("nuts.csv", "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,120,",
          "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,nan,", "not a finite number"),
+        # a motor whose peak torque is below its rated torque (issue 10: one-line error naming file and key)
+        ("motors.csv", "SGM7J-01A,Yaskawa,Sigma-7 SGM7J,100,0.318,1.11,",
+         "SGM7J-01A,Yaskawa,Sigma-7 SGM7J,100,0.318,0.2,",
+         "line 3, column 6 (peak_torque): peak_torque is below rated_torque"),
+        ("couplings.csv", ",22,8000,0.5,12700,8,26,", ",22,8000,0.5,12700,30,26,", "bore_max is below bore_min"),
+        ("nuts.csv", "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,", "HIWIN-R16-5T4-FSI,HIWIN,THK-BNFN-16x5,",
+         "of vendor HIWIN is listed on screw 'THK-BNFN-16x5' of vendor THK"),
     ],
 )
 def test_loader_errors_name_file_line_column(tmp_path, file, old, new, expect):
