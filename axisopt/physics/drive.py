@@ -1,0 +1,78 @@
+r"""Drive sizing: inertia reflected to the motor, motor torque over a move, RMS torque, motor speed.
+
+The vendors' procedure (THK General Catalog A-717 to A-720, "Studying the Rotational Torque" and "Studying
+the Driving Motor"; HIWIN F 3.15-3.24; Yaskawa Σ-7 manual ch. 2) in SI units:
+
+.. math::
+    J = m (P_h/2\pi)^2 A^2 + J_S A^2 + J_A A^2 + J_B          (THK eq. 45)
+    T_1 = F_a P_h A / (2\pi \eta)                             (THK eq. 43, friction and external force)
+    T_3 = (J + J_M) \omega',\quad \omega' = 2\pi N_M / (60 t)  (THK eq. 45, acceleration)
+    T_{rms} = \sqrt{\sum T_i^2 t_i / \sum t_i}                (THK eq. 48)
+
+``A`` is THK's reduction ratio: screw turns per motor turn (1 for a direct drive, < 1 for a reduction).
+Every function works on floats, numpy arrays and CasADi symbols (plain arithmetic; ``rms_torque`` takes
+sequences).
+"""
+
+from __future__ import annotations
+
+from math import pi
+
+from .. import mathx as mx
+
+STEEL_DENSITY = 7850.0  # kg/m^3; THK's screw inertia per length (A-733: 1.23e-3 kg cm^2/mm at 20 mm) uses it
+
+
+def screw_inertia(diameter, length, density=STEEL_DENSITY):
+    r"""Rotary inertia of a solid screw shaft, :math:`J_S = \pi \rho L d^4 / 32`.
+
+    diameter : d [m] (THK uses the nominal shaft diameter);  length : L [m].  Returns J_S [kg m^2]."""
+    return pi * density * length * diameter**4 / 32.0
+
+
+def load_inertia(mass, lead, ratio=1.0):
+    r"""Inertia of a translating mass seen at the motor, :math:`m (P_h / 2\pi)^2 A^2` [kg m^2].
+
+    mass : m [kg];  lead : P_h [m];  ratio : A, screw turns per motor turn [-]."""
+    return mass * (lead / (2.0 * pi)) ** 2 * ratio**2
+
+
+def reflected_inertia(mass, lead, screw_inertia_, coupling_inertia=0.0, ratio=1.0, motor_side_inertia=0.0):
+    r"""Total load inertia at the motor shaft (THK eq. 45 without the rotor):
+    :math:`m (P_h/2\pi)^2 A^2 + (J_S + J_{cpl}) A^2 + J_B`, with ``coupling_inertia`` on the screw side of
+    the reduction and ``motor_side_inertia`` (e.g. a pulley on the motor) unreduced [kg m^2]."""
+    return load_inertia(mass, lead, ratio) + (screw_inertia_ + coupling_inertia) * ratio**2 + motor_side_inertia
+
+
+def force_torque(axial_force, lead, efficiency=0.9, ratio=1.0):
+    r"""Motor torque to drive an axial force through the screw, :math:`F_a P_h A / (2\pi\eta)` [N m]
+    (THK eq. 43; η is the screw efficiency times the reduction's, 0.9-0.95 for a ball screw)."""
+    return axial_force * lead * ratio / (2.0 * pi * efficiency)
+
+
+def motor_speed(linear_speed, lead, ratio=1.0):
+    """Motor speed [rad/s] for a table speed [m/s] (THK eq. 46: N_M = V / P_h / A)."""
+    return 2.0 * pi * linear_speed / (lead * ratio)
+
+
+def acceleration_torque(total_inertia, motor_speed_, time):
+    r"""Torque to bring ``total_inertia`` (load plus rotor) [kg m^2] to ``motor_speed_`` [rad/s] in
+    ``time`` [s] at constant acceleration: :math:`J \omega'` (THK eq. 45) [N m]."""
+    return total_inertia * motor_speed_ / time
+
+
+def rms_torque(torques, durations):
+    r"""Effective (RMS) torque over a duty cycle, :math:`\sqrt{\sum T_i^2 t_i / \sum t_i}` (THK eq. 48) [N m].
+
+    torques, durations : sequences of equal length (floats, arrays or CasADi symbols); dwell segments carry
+    their holding torque (0 when the motor is free)."""
+    torques, durations = list(torques), list(durations)
+    if len(torques) != len(durations) or not torques:
+        raise ValueError("rms_torque needs one duration per torque")
+    num = sum(t * t * d for t, d in zip(torques, durations))
+    return mx.sqrt(num / sum(durations))
+
+
+def inertia_ratio(load_inertia_, rotor_inertia):
+    """Load-to-rotor inertia ratio J_L / J_M [-] (THK eq. 49 asks J_M >= J/C with C 3-10)."""
+    return load_inertia_ / rotor_inertia
