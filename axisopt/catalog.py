@@ -59,6 +59,8 @@ _GUIDES = {
 #           its ratings computed by a rule).  A row of a table without the column is "user".
 #   source: the reference key of catalogs/SOURCES.md and the table or page, e.g. "H-BS Table 6.6".
 PROVENANCE = MappingProxyType({"status": ("vendor", "stiffness-derived", "paper", "derived"), "source": None})
+USER_STATUS = "user"
+STATUSES = PROVENANCE["status"] + (USER_STATUS,)
 
 # Drive parts (servo motors, shaft couplings).  Optional tables: a catalog directory may leave them out.
 _MOTORS = {
@@ -228,20 +230,20 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
             if col in _NON_NEGATIVE and val < 0:
                 raise InputError(f"{col} must not be negative, got {cell}", source=src, where=where)
             rec[col] = val * factor
+        names = [n for n, _, _ in cols]
         choices = [(c, rec[c], ok) for (t, c), ok in _CHOICES.items() if t == name and rec[c] not in ok]
         if "status" in rec and rec["status"] not in PROVENANCE["status"]:
             choices.insert(0, ("status", rec["status"], PROVENANCE["status"]))
         if choices:
             c, v, ok = choices[0]
-            j = [n for n, _, _ in cols].index(c) + 1
+            j = names.index(c) + 1
             raise InputError(f"{c} '{v}' is not one of {', '.join(ok)}", source=src,
                              where=f"line {i}, column {j} ({c})")
         for a, b in _ORDERED.get(name, ()):
             if rec[a] > rec[b]:  # NaN (an optional cell left empty) compares False
-                j = [n for n, _, _ in cols].index(b) + 1
-                raise InputError(f"{b} is below {a} ({b} {row[j - 1].strip()} < {a} "
-                                 f"{row[[n for n, _, _ in cols].index(a)].strip()})", source=src,
-                                 where=f"line {i}, column {j} ({b})")
+                ja, jb = names.index(a), names.index(b)
+                raise InputError(f"{b} is below {a} ({b} {row[jb].strip()} < {a} {row[ja].strip()})", source=src,
+                                 where=f"line {i}, column {jb + 1} ({b})")
         if rec["id"] in ids:
             raise InputError(f"duplicate id '{rec['id']}' (first on line {ids[rec['id']]})", source=src,
                              where=f"line {i}, column 1 (id)")
@@ -251,7 +253,7 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
     df = pd.DataFrame.from_records(records, columns=list(schema) + ["_source"]
                                    + [c for c in PROVENANCE if c in seen])
     if "status" not in seen:
-        df["status"] = "user"
+        df["status"] = USER_STATUS
     if "source" not in seen:
         df["source"] = ""
     return df.set_index("id", drop=False)

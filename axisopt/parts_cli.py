@@ -34,38 +34,40 @@ def register(sub) -> None:
     p = sub.add_parser("parts", help="catalog contents: counts per kind and vendor, or the rows of one kind")
     p.add_argument("kind", nargs="?", choices=KINDS, help="list the rows of this kind (default: counts only)")
     p.add_argument("--vendor", action="append", metavar="NAME", help="only this vendor (repeatable)")
-    p.add_argument("--status", choices=("vendor", "stiffness-derived", "paper", "derived", "user"),
+    p.add_argument("--status", metavar="STATUS",
                    help="only rows of this provenance (see catalogs/SOURCES.md)")
     p.add_argument("--catalogs", nargs="+", default=(), metavar="DIR", help="user catalog directories to add")
     p.add_argument("--json", metavar="FILE", help="write the counts (or rows) as JSON ('-' for stdout)")
     p.set_defaults(func=cmd_parts)
 
 
-def _filtered(cat, kind, vendors, status):
-    df = cat.table(kind)
+def _select(df, vendors, status):
     if vendors:
-        unknown = sorted(set(vendors) - set(df["vendor"]))
-        if unknown:
-            raise InputError(f"no {kind} of vendor '{unknown[0]}'; vendors are "
-                             f"{', '.join(sorted(set(df['vendor'])))}", where="--vendor")
         df = df[df["vendor"].isin(vendors)]
     if status:
         df = df[df["status"] == status]
     return df
 
 
+def _filtered(cat, kind, vendors, status):
+    df = cat.table(kind)
+    unknown = sorted(set(vendors or ()) - set(df["vendor"]))
+    if unknown:
+        raise InputError(f"no {kind} of vendor '{unknown[0]}'; vendors are "
+                         f"{', '.join(sorted(set(df['vendor'])))}", where="--vendor")
+    return _select(df, vendors, status)
+
+
 def counts(cat, vendors=None, status=None) -> list[dict]:
     """One record per (kind, vendor): rows by provenance."""
+    from .catalog import STATUSES
+
     out = []
     for kind in KINDS:
-        df = cat.table(kind)
-        if vendors:
-            df = df[df["vendor"].isin(vendors)]
-        if status:
-            df = df[df["status"] == status]
+        df = _select(cat.table(kind), vendors, status)
         for vendor, g in df.groupby("vendor", sort=True):
             rec = {"kind": kind, "vendor": vendor, "rows": int(len(g))}
-            for s in ("vendor", "stiffness-derived", "paper", "derived", "user"):
+            for s in STATUSES:
                 rec[s.replace("vendor", "vendor_data").replace("-", "_")] = int((g["status"] == s).sum())
             out.append(rec)
     return out
@@ -116,8 +118,10 @@ def rows_dicts(df, kind) -> list[dict]:
 
 
 def cmd_parts(args) -> int:
-    from .catalog import load_catalogs
+    from .catalog import STATUSES, load_catalogs
 
+    if args.status is not None and args.status not in STATUSES:
+        raise InputError(f"'{args.status}' is not one of {', '.join(STATUSES)}", where="--status")
     cat = load_catalogs(args.catalogs)
     quiet = args.json == "-"
     if args.kind:

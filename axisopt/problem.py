@@ -50,7 +50,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
 
-from .catalog import Catalog
+from .catalog import STATUSES, USER_STATUS, Catalog
 from .design import MOUNTINGS, Axis, catalog_for, read_axis
 from .errors import InputError
 from .model import CHECKS
@@ -105,7 +105,7 @@ def _fmt_si(key, value):
     return f"{value / 1e6:g} N/um" if key == "stiffness" else f"{value:g} Hz"
 
 
-DEFAULT_STATUS = ("vendor", "stiffness-derived", "user")
+DEFAULT_STATUS = ("vendor", "stiffness-derived", USER_STATUS)
 
 
 @dataclass(frozen=True)
@@ -305,9 +305,7 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         if table is None:
             known = vendors_all
         elif table == "status":
-            from .catalog import PROVENANCE
-
-            known = list(PROVENANCE["status"]) + ["user"]
+            known = STATUSES
         elif col is None:
             g = catalog.guides
             known = sorted(set(g["preload_level"]) | set(g["preload_class"]))

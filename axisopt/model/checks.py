@@ -12,15 +12,6 @@ from ..physics import nut as pn
 CHECKS = ("critical_speed", "buckling", "screw_yield", "nut_life", "bearing_life", "guide_life", "dn",
           "nut_lift_off", "bearing_lift_off", "bearing_speed", "bearing_fit", "screw_length")
 
-# A margin passes at >= 1 less float rounding: the search holds each limit exactly by bisection, and the
-# evaluation path may round the same ratio (e.g. 19 999.999999999996 h against 20 000 h) one ulp lower.
-MARGIN_RTOL = 1e-9
-
-
-def passes(margin) -> bool:
-    """True when a check margin (value / limit) meets its limit, within float rounding."""
-    return bool(margin >= 1.0 - MARGIN_RTOL)
-
 CHECK_LABELS = MappingProxyType({
     "critical_speed": "critical speed / max screw speed",
     "buckling": "buckling load / max screw compression",
@@ -45,6 +36,15 @@ BUCKLING_END_CONDITION = "fixed-fixed"
 MARGIN_CAP = 1e3
 # THK catalog A15 eq. 6: permissible tensile/compressive load of the shaft, P2 = sigma A, sigma = 147 MPa.
 SCREW_YIELD_STRESS = 147e6
+
+# A margin passes at >= 1 less float rounding: the search holds each limit exactly by bisection, and the
+# evaluation path may round the same ratio (e.g. 19 999.999999999996 h against 20 000 h) one ulp lower.
+MARGIN_RTOL = 1e-9
+
+
+def passes(margin) -> bool:
+    """True when a check margin (value / limit) meets its limit, within float rounding."""
+    return bool(margin >= 1.0 - MARGIN_RTOL)
 
 
 def checks(p, mounting, preload, loads) -> dict:

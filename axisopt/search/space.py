@@ -26,6 +26,7 @@ import numpy as np
 import pandas as pd
 
 from .. import model
+from ..catalog import USER_STATUS
 from ..problem import LIMITS, Problem
 from ..units import N_PER_UM
 
@@ -260,7 +261,7 @@ def build_space(problem: Problem) -> Space:
     def by_status(df, slot):
         if r.required(slot):
             return df
-        st = df["status"] if "status" in df.columns else pd.Series("user", index=df.index)
+        st = df["status"] if "status" in df.columns else pd.Series(USER_STATUS, index=df.index)
         return df[st.isin(tuple(r.status)).to_numpy()]
 
     screws, nuts = by_status(screws, "screw"), by_status(nuts, "nut")
