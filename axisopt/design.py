@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, fields
+from functools import cached_property
 from pathlib import Path
 
 from .catalog import OPTIONAL_COLUMNS, SCHEMA, Catalog, default_catalog
+from .physics import motion
 from .units import unit_factor
 from .yamlio import Section, read_yaml
 
@@ -28,6 +30,12 @@ COUPLING_INERTIA = 0.29e-3
 TEMPERATURE_RISE = 3.0
 ORIENTATIONS = ("horizontal", "vertical")
 G = 9.80665
+# Drive defaults.  Inertia ratio: THK A-720 eq. 49 asks J_M >= J / C with C "normally between 3 to 10" (its
+# transfer examples use 10); 5, the tighter half of that range, is our default for machine-tool axes.  Brake
+# safety: no vendor figure was retrieved; 2 x the gravity torque is our assumption, set axis.brake_safety.
+MAX_INERTIA_RATIO = 5.0
+BRAKE_SAFETY = 2.0
+BRAKE_MODES = ("auto", "yes", "no")
 
 
 @dataclass(frozen=True)
@@ -61,11 +69,30 @@ class Axis:
     pretension: float | None = None  # fixed-fixed screw pretension [N]; None: absorbs temperature_rise
     orientation: str = "horizontal"
     positions: int = 41  # nut positions evaluated over the stroke
+    # drive: motion and duty, reduction, drive limits
+    jerk: float | None = None  # [m/s^3]; None: trapezoidal moves
+    duty_cycle: tuple = ()  # motion.Segment; empty: the rapid move over the stroke and back
+    reduction_ratio: float = 1.0  # motor turns per screw turn (2: a 2:1 belt or gear reduction)
+    reduction_efficiency: float = 1.0
+    reduction_inertia: float = 0.0  # reduction at the motor shaft [kg m^2]
+    max_inertia_ratio: float = MAX_INERTIA_RATIO  # load / rotor inertia at the motor
+    brake: str = "auto"  # holding brake: auto (vertical axes), yes, no
+    brake_safety: float = BRAKE_SAFETY  # brake holding torque / gravity torque
 
     @property
     def span(self) -> float:
         """Bearing-to-bearing length of the screw [m]."""
         return self.start_offset + self.stroke + self.end_margin
+
+    @property
+    def brake_used(self) -> bool:
+        return self.brake == "yes" or (self.brake == "auto" and self.orientation == "vertical")
+
+    @cached_property
+    def phases(self) -> tuple:
+        """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move."""
+        segs = self.duty_cycle or motion.rapid_cycle(self.stroke, self.max_speed, self.acceleration, self.jerk)
+        return motion.cycle_phases(segs)
 
     @property
     def mean_speed_eff(self) -> float:
@@ -86,6 +113,8 @@ class Design:
     bearing: object
     guide: object
     nut_preload: float | None = None  # None: the catalog's quoted preload
+    motor: object = None  # servo motor row, or None (the axis's motor_inertia; drive checks off)
+    coupling: object = None  # coupling row, or None (the axis's coupling values)
     name: str = "design"
     source: str = ""
     assumed: tuple = field(default=())  # axis keys left at their defaults, for reports
@@ -98,7 +127,10 @@ class Design:
             else float(self.nut["preload_min"])
 
     def part_ids(self) -> dict:
-        return {k: str(getattr(self, k)["id"]) for k in ("screw", "nut", "bearing", "guide")}
+        return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
+
+
+PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling")
 
 
 _AXIS_KINDS = {
@@ -108,7 +140,7 @@ _AXIS_KINDS = {
     "normal_load": "force", "lubricant_viscosity": "kinematic_viscosity", "motor_inertia": "inertia",
     "bearing_housing_stiffness": "stiffness", "nut_bracket_stiffness": "stiffness",
     "coupling_stiffness": "torsional_stiffness", "coupling_inertia": "inertia",
-    "temperature_rise": "temperature_difference",
+    "temperature_rise": "temperature_difference", "jerk": "jerk", "reduction_inertia": "inertia",
 }
 _AXIS_REQUIRED = ("stroke", "moving_mass", "mounting", "max_speed", "axial_load")
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
@@ -132,6 +164,20 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
         if node.value != "auto":
             kw["pretension"] = sec.quantity("pretension", "force", non_negative=True)
     kw["orientation"] = sec.choice("orientation", ORIENTATIONS, "horizontal")
+    kw["brake"] = sec.choice("brake", BRAKE_MODES, "auto")
+    for name, low in (("reduction_ratio", None), ("max_inertia_ratio", None), ("brake_safety", 1.0)):
+        v = sec.number(name, minimum=low)
+        if v is not None:
+            if not (math.isfinite(v) and v > 0):
+                raise sec.error(name, f"must be a positive finite number, got {v}")
+            kw[name] = float(v)
+    v = sec.number("reduction_efficiency")
+    if v is not None:
+        if not (0 < v <= 1):
+            raise sec.error("reduction_efficiency", f"must be in (0, 1], got {v}")
+        kw["reduction_efficiency"] = float(v)
+    if sec.has("duty_cycle"):
+        kw["duty_cycle"] = read_duty_cycle(sec, kw)
     for name in ("guide_blocks", "rails", "positions"):
         v = sec.number(name, integer=True, minimum=1 if name != "positions" else 3)
         if v is not None:
@@ -142,6 +188,44 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     sec.done()
     assumed = tuple(f.name for f in fields(Axis) if f.name not in kw)
     return Axis(**kw), assumed
+
+
+_SEGMENT_LIMIT = 1000  # duty-cycle entries
+
+
+def read_duty_cycle(sec: Section, kw: dict) -> tuple:
+    """``duty_cycle``: a list of moves ``{move: 400 mm, speed: 24 m/min, acceleration:, jerk:, force:}``
+    (speed defaults to the axis max_speed, acceleration and jerk to the axis's) and dwells
+    ``{dwell: 2 s, force:}``."""
+    node = sec.raw("duty_cycle")
+    where = sec.key_path("duty_cycle")
+    if not isinstance(node.value, list) or not node.value:
+        raise sec.error("duty_cycle", "expected a list of moves and dwells")
+    if len(node.value) > _SEGMENT_LIMIT:
+        raise sec.error("duty_cycle", f"has {len(node.value)} entries; at most {_SEGMENT_LIMIT}")
+    out = []
+    for i, item in enumerate(node.value):
+        s = Section(item, sec.source, f"{where}[{i}]")
+        if s.has("dwell") == s.has("move"):
+            raise InputError("each entry is a 'move' or a 'dwell'", source=sec.source,
+                             where=Section._loc(f"{where}[{i}]", item.line))
+        force = s.quantity("force", "force", 0.0, non_negative=True)
+        if s.has("dwell"):
+            out.append(motion.Segment("dwell", duration=s.quantity("dwell", "time", positive=True), force=force))
+        else:
+            dist = s.quantity("move", "length")
+            if dist == 0:
+                raise s.error("move", "a move needs a distance (signed: + forward, - back)")
+            if abs(dist) > kw.get("stroke", math.inf) * (1 + 1e-9):
+                raise s.error("move", f"{abs(dist) * 1e3:g} mm is longer than the stroke")
+            speed = s.quantity("speed", "speed", kw.get("max_speed"), positive=True)
+            acc = s.quantity("acceleration", "acceleration", kw.get("acceleration", 0.0), positive=True)
+            if not acc:
+                raise s.error("move", "needs an acceleration (here or in axis.acceleration)")
+            jerk = s.quantity("jerk", "jerk", kw.get("jerk"), positive=True)
+            out.append(motion.Segment("move", distance=dist, speed=speed, acceleration=acc, jerk=jerk, force=force))
+        s.done()
+    return tuple(out)
 
 
 def read_part(sec: Section, key: str, table: str, catalog: Catalog):
@@ -182,6 +266,9 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
         "bearing": read_part(sec, "bearing", "bearings", catalog),
         "guide": read_part(sec, "guide", "guides", catalog),
     }
+    for slot, table in (("motor", "motors"), ("coupling", "couplings")):
+        if sec.has(slot):
+            parts[slot] = read_part(sec, slot, table, catalog)
     pre = sec.quantity("nut_preload", "force", non_negative=True)
     sec.done()
     nut, screw = parts["nut"], parts["screw"]
@@ -213,8 +300,11 @@ def load_design(path) -> Design:
     name = root.string("name", path.stem)
     root.string("description")
     axis, assumed = read_axis(root.section("axis", required=True))
-    parts = read_parts(root.section("parts", required=True), catalog)
+    psec = root.section("parts", required=True)
+    parts = read_parts(psec, catalog)
     root.done()
+    if parts.get("motor") is not None and axis.acceleration <= 0 and not axis.duty_cycle:
+        raise psec.error("motor", "sizing a motor needs axis.acceleration (or an axis.duty_cycle)")
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)
 
 
@@ -224,7 +314,7 @@ __all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_part
 # Units used when a design is written back to YAML (vendor units, as users write them).
 _OUT_UNITS = {
     "length": "mm", "mass": "kg", "time": "h", "force": "N", "stiffness": "N/um", "speed": "m/min",
-    "acceleration": "m/s^2", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
+    "acceleration": "m/s^2", "jerk": "m/s^3", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
     "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
     "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad",
     "temperature_difference": "K",
@@ -254,11 +344,16 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
             axis[f.name] = "auto" if v is None else _q(v, "force")
         elif f.name == "load_factor":
             axis[f.name] = float(v)
+        elif f.name == "duty_cycle":
+            axis[f.name] = [_segment_dict(sg) for sg in v]
         else:
             axis[f.name] = v
     parts: dict = {}
-    for slot, table in (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides")):
+    for slot, table in (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides"),
+                        ("motor", "motors"), ("coupling", "couplings")):
         row = getattr(design, slot)
+        if row is None:
+            continue
         if not inline_parts and "catalogs/" in str(row.get("_source", "catalogs/")):
             parts[slot] = str(row["id"])
             continue
@@ -277,6 +372,19 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
     if design.nut_preload is not None:
         parts["nut_preload"] = _q(design.nut_preload, "force")
     return {"name": design.name, "axis": axis, "parts": parts}
+
+
+def _segment_dict(sg) -> dict:
+    if sg.kind == "dwell":
+        d = {"dwell": f"{sg.duration:.12g} s"}
+    else:
+        d = {"move": _q(sg.distance, "length"), "speed": _q(sg.speed, "speed"),
+             "acceleration": _q(sg.acceleration, "acceleration")}
+        if sg.jerk is not None:
+            d["jerk"] = _q(sg.jerk, "jerk")
+    if sg.force:
+        d["force"] = _q(sg.force, "force")
+    return d
 
 
 def design_to_yaml(design: Design, **kw) -> str:

@@ -38,8 +38,13 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
       guide_preload: [medium, heavy]                  # guide preload levels or vendor classes (ZA, Z0, ...)
       status: [vendor, stiffness-derived]             # row provenance (catalogs/SOURCES.md); the default also
                                                       # allows user rows; add derived or paper to search those
-      require: {screw: [id, ...], nut: id, bearing: [...], guide: [...]}
+      require: {screw: [id, ...], nut: id, bearing: [...], guide: [...], motor: [...], coupling: [...]}
       exclude: {guide: [id, ...]}
+      drive: yes                       # motor and coupling are search choices (default: yes when the catalog
+                                       # has motors; 'no' keeps the axis's motor_inertia/coupling values)
+      motor_vendors: [Yaskawa]         # the drive parts' own vendor and series filters ('vendors' is for
+      motor_series: [Sigma-7 SGM7G]    # the mechanical parts)
+      coupling_series: [...]
     continuous:
       nut_preload: {min: 0 N, max: 5 kN}  # intersected with each nut's preload_min..preload_max
 """
@@ -59,8 +64,10 @@ from .yamlio import Section, read_yaml
 OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto")
 PERFORMANCE = ("stiffness", "frequency")
 PARETO_KEYS = ("stiffness", "frequency", "cost", "total_mass", "moving_mass", "mass")
-SLOTS = ("screw", "nut", "bearing", "guide")
-SLOT_TABLE = MappingProxyType({"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides"})
+MECH_SLOTS = ("screw", "nut", "bearing", "guide")
+SLOTS = MECH_SLOTS + ("motor", "coupling")
+SLOT_TABLE = MappingProxyType({"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides",
+                               "motor": "motors", "coupling": "couplings"})
 
 # limit key -> (quantity kind, display unit, SI factor of the display unit, model output, sense)
 LIMITS = MappingProxyType({
@@ -72,6 +79,7 @@ LIMITS = MappingProxyType({
     "min_stiffness": ("stiffness", "N/um", 1e6, "k_total", ">="),
     "min_frequency": ("frequency", "Hz", 1.0, "f1", ">="),
     "max_backlash": ("length", "um", 1e-6, "backlash", "<="),
+    "max_inertia_ratio": ("dimensionless", "", 1.0, "inertia_ratio", "<="),
 })
 # Limits that apply when a problem does not set them: a machine-tool feed axis has no backlash (single nuts
 # with axial play are allowed only when the problem says max_backlash > 0).
@@ -124,6 +132,10 @@ class Restrictions:
     status: tuple = DEFAULT_STATUS
     require: tuple = ()  # ((slot, (ids...)), ...)
     exclude: tuple = ()
+    drive: bool = False  # motor and coupling are search choices
+    motor_vendors: tuple | None = None
+    motor_series: tuple | None = None
+    coupling_series: tuple | None = None
 
     def required(self, slot):
         return dict(self.require).get(slot)
@@ -280,9 +292,27 @@ def _read_limits(sec: Section | None):
 
 
 def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Restrictions:
+    has_motors = len(catalog.motors) > 0
     if sec is None:
-        return Restrictions(mountings=(axis.mounting,))
-    kw: dict = {}
+        return Restrictions(mountings=(axis.mounting,), drive=has_motors)
+    kw: dict = {"drive": has_motors}
+    drive = sec.choice("drive", (True, False, "yes", "no"), None)
+    if drive is not None:
+        kw["drive"] = drive in (True, "yes")
+        if kw["drive"] and not has_motors:
+            raise sec.error("drive", "the catalogs have no motors (motors.csv)")
+    for key, table, col in (("motor_vendors", "motors", "vendor"), ("motor_series", "motors", "series"),
+                            ("coupling_series", "couplings", "series")):
+        vals = sec.string_list(key, None)
+        if vals is None:
+            continue
+        known = sorted(set(catalog.table(table)[col]))
+        if not vals:
+            raise sec.error(key, f"list at least one value, or leave '{key}' out to allow all")
+        for v in vals:
+            if v not in known:
+                raise sec.error(key, f"'{v}' is not in the catalog ({', '.join(map(str, known))})")
+        kw[key] = tuple(vals)
     mounts = sec.string_list("mountings", None)
     if mounts is not None:
         for m in mounts:
@@ -293,7 +323,7 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         kw["mountings"] = tuple(dict.fromkeys(mounts))
     else:
         kw["mountings"] = (axis.mounting,)
-    vendors_all = sorted(set().union(*(set(catalog.table(t)["vendor"]) for t in SLOT_TABLE.values())))
+    vendors_all = sorted(set().union(*(set(catalog.table(SLOT_TABLE[t])["vendor"]) for t in MECH_SLOTS)))
     for key, table, col in (("vendors", None, "vendor"), ("nut_types", "nuts", "type"),
                             ("bearing_arrangements", "bearings", "arrangement"),
                             ("bearing_preload", "bearings", "preload_class"),
@@ -332,6 +362,8 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         s.done()
         kw[key] = tuple(out)
     sec.done()
+    if not kw["drive"] and any(slot in ("motor", "coupling") for slot, _ in kw.get("require", ())):
+        raise sec.error("require", "motor/coupling parts are required but 'drive' is off")
     return Restrictions(**kw)
 
 

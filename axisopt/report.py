@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import InputError
-from .model import CHECK_LABELS, CHECKS, Evaluation, passes
+from .model import CHECK_LABELS, CHECKS, DRIVE_CHECKS, Evaluation, passes
 from .units import N_PER_UM
 
 
@@ -55,6 +55,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
                                  "guides": v["drag_guides"]},
         "checks": {c: {"margin": _finite(v[f"margin_{c}"]), "pass": passes(v[f"margin_{c}"])}
                    for c in CHECKS},
+        "drive": drive_dict(ev),
         "all_checks_pass": bool(all(passes(v[f"margin_{c}"]) for c in CHECKS)),
         "positions_mm": (s * 1e3).tolist(),
         "axial_stiffness_N_per_um": (np.asarray(v["k_total"]) / N_PER_UM).tolist(),
@@ -65,6 +66,20 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "damping_ratio": np.asarray(v["damping_ratio"]).tolist(),
         "assumed_defaults": list(ev.design.assumed),
     }
+
+
+def drive_dict(ev: Evaluation) -> dict | None:
+    """The drive values of an evaluation (None without a motor)."""
+    d, v = ev.design, ev.values
+    if d.motor is None:
+        return None
+    return {"motor": str(d.motor["id"]), "coupling": None if d.coupling is None else str(d.coupling["id"]),
+            "reduction_ratio": d.axis.reduction_ratio, "peak_torque_Nm": v["peak_torque"],
+            "rms_torque_Nm": v["rms_torque"], "thrust_torque_Nm": v["thrust_torque"],
+            "mean_thrust_torque_Nm": v["mean_thrust_torque"],
+            "holding_torque_Nm": v["holding_torque"], "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
+            "load_inertia_kgm2": v["load_inertia"], "inertia_ratio": v["inertia_ratio"],
+            "duty_time_s": v["duty_time"], "friction_torque_Nm": v["friction_torque"]}
 
 
 def _finite(x):
@@ -135,12 +150,54 @@ def evaluation_table(ev: Evaluation) -> str:
                  f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  nut backlash "
                  f"{v['backlash'] * 1e6:.0f} um")
     lines.append("")
+    lines.extend(drive_lines(ev))
     lines.append("checks (margin >= 1 passes)")
     for c in CHECKS:
+        if c in DRIVE_CHECKS and d.motor is None:
+            continue
         m = v[f"margin_{c}"]
         shown = "n/a" if m >= 1e8 else f"{m:.2f}"
-        lines.append(f"  {CHECK_LABELS[c]:<44}{shown:>8}  {'pass' if passes(m) else 'FAIL'}")
+        lines.append(f"  {CHECK_LABELS[c]:<48}{shown:>8}  {'pass' if passes(m) else 'FAIL'}")
     return "\n".join(lines)
+
+
+RPM = 60.0 / (2.0 * math.pi)
+
+
+def drive_lines(ev: Evaluation) -> list:
+    """The drive block of ``evaluate``: motor, coupling, duty cycle, torques, speed, inertia, brake."""
+    d, v, a = ev.design, ev.values, ev.design.axis
+    if d.motor is None:
+        return ["drive: no motor given (parts.motor); rotor inertia "
+                f"{a.motor_inertia:.3g} kg.m^2 assumed for the drive-train modes", ""]
+    m = d.motor
+    red = "direct" if a.reduction_ratio == 1 else (f"reduction {a.reduction_ratio:g}:1, efficiency "
+                                                   f"{a.reduction_efficiency:g}")
+    cpl = f"coupling {d.coupling['id']}" if d.coupling is not None else "coupling from the axis values"
+    cycle = (f"{len(a.duty_cycle)}-entry duty cycle" if a.duty_cycle
+             else "rapid move over the stroke and back, no dwell (default)")
+    lines = [f"drive: motor {m['id']} ({m['vendor']}; rated {m['rated_torque']:.3g} N.m, peak "
+             f"{m['peak_torque']:.3g} N.m, max {m['max_speed'] * RPM:.0f} rpm), {cpl}, {red}",
+             f"  {cycle}: {v['duty_time']:.2f} s;  friction {v['friction_torque']:.3f} N.m"
+             + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else "")]
+    rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m", f"{m['peak_torque']:.3g} N.m (motor peak)"),
+            ("RMS torque, mean thrust", f"{v['rms_torque']:.3f}, {v['mean_thrust_torque']:.3f} N.m",
+             f"{m['rated_torque']:.3g} N.m (rated)"),
+            ("motor speed", f"{v['motor_speed'] * RPM:.0f} rpm", f"{m['max_speed'] * RPM:.0f} rpm (max)"),
+            ("inertia ratio load/rotor", f"{v['inertia_ratio']:.2f} ({v['load_inertia'] * 1e4:.3g} kg.cm^2)",
+             f"{a.max_inertia_ratio:g} (axis.max_inertia_ratio)")]
+    if a.orientation == "vertical":
+        brake = float(m["brake_torque"]) if math.isfinite(float(m["brake_torque"])) else 0.0
+        rows.append(("gravity holding torque", f"{v['holding_torque']:.3f} N.m",
+                     f"{brake:.3g} N.m brake / {a.brake_safety:g}" if brake else "no brake listed"))
+    if d.coupling is not None:
+        rows.append(("coupling torque", f"{m['peak_torque'] * a.reduction_ratio:.3g} N.m (motor peak)",
+                     f"{d.coupling['rated_torque']:.3g} N.m (rated)"))
+    lines.append(f"  {'':<28}{'needed':>26}   {'available':<28}")
+    for name, need, have in rows:
+        lines.append(f"  {name:<28}{need:>26}   {have}")
+    lines.append("")
+    return lines
 
 
 def _thermal_line(ev: Evaluation) -> str:

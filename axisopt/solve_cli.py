@@ -55,7 +55,8 @@ def cmd_solve(args) -> int:
 
             cands = [res.best] + list(res.runners_up)
             plot_profiles([evaluate(c.design) for c in cands], args.plot,
-                          labels=[f"#{c.rank} {c.nut} / {c.bearing} ({c.mounting})" for c in cands])
+                          labels=[f"#{c.rank} {c.nut} / {c.bearing} / {c.guide}"
+                                  + (f" / {c.motor}" if c.motor else "") + f" ({c.mounting})" for c in cands])
         if not quiet:
             print(f"\nplot written to {args.plot}")
     return EXIT_OK if res.status in ("optimal", "feasible") else EXIT_NEGATIVE
@@ -116,7 +117,7 @@ def format_result(res) -> str:
         L.append("closest designs (sum of relative misses):")
         for cand in inf.closest:
             miss = ", ".join(f"{k} by {100 * v:.1f} %" for k, v in cand.misses.items())
-            L.append(f"  #{cand.rank} {cand.mounting} {cand.screw} / {cand.nut} / {cand.bearing} / {cand.guide}"
+            L.append(f"  #{cand.rank} {cand.mounting} {' / '.join(cand.parts().values())}"
                      f" preload {cand.nut_preload:.0f} N: misses {miss or 'nothing'}")
     L.append("")
     L.append("certificate")
@@ -135,6 +136,8 @@ def format_result(res) -> str:
 def _cand_table(cands, unit) -> str:
     """Best designs, one row each; text columns as wide as their longest entry."""
     slots = ("mounting", "screw", "nut", "bearing", "guide")
+    if any(c.motor for c in cands):
+        slots += ("motor", "coupling")
     w = {k: max(len(k), *(len(str(getattr(c, k))) for c in cands)) + 2 for k in slots}
     L = ["  " + f"{'#':>2} " + "".join(f"{k:<{w[k]}}" for k in slots)
          + f"{'preload N':>10}{'obj ' + unit:>14}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"]

@@ -33,6 +33,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "torque": ("[force]*[length]", "N*m"),
     "speed": ("[length]/[time]", "m/s"),
     "acceleration": ("[length]/[time]**2", "m/s**2"),
+    "jerk": ("[length]/[time]**3", "m/s**3"),
     "angular_speed": ("1/[time]", "rad/s"),
     "angle": ("", "rad"),
     "dimensionless": ("", ""),
@@ -164,7 +165,7 @@ def parse_quantity(text, kind: str, *, source: str | None = None, key: str | Non
 
 _EXAMPLES = {
     "length": "mm", "mass": "kg", "time": "s", "force": "N", "stiffness": "N/um", "torque": "N.m",
-    "speed": "m/min", "acceleration": "m/s^2", "angular_speed": "rpm", "angle": "deg",
+    "speed": "m/min", "acceleration": "m/s^2", "jerk": "m/s^3", "angular_speed": "rpm", "angle": "deg",
     "mass_per_length": "kg/m", "damping": "N.s/m", "temperature": "degC", "money": "EUR",
     "inertia": "kg.m^2", "frequency": "Hz", "dn": "mm.rpm", "money_per_length": "EUR/m",
     "temperature_difference": "K", "torsional_stiffness": "N.m/rad",

@@ -6,7 +6,7 @@ search (screening on numpy, exact solves, IPOPT on the CasADi Function) and ``di
 call it.
 """
 
-from .checks import CHECK_LABELS, CHECKS, passes
+from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes
 from .drag import SCREW_EFFICIENCY
 from .function import (
     COMPONENTS,
@@ -23,7 +23,7 @@ from .params import PARAM_NAMES, axis_params, positions
 from .response import axis_response
 
 __all__ = [
-    "CHECKS", "CHECK_LABELS", "COMPONENTS", "passes", "PARAM_NAMES", "PROFILE_OUTPUTS", "SCALAR_OUTPUTS",
+    "CHECKS", "CHECK_LABELS", "DRIVE_CHECKS", "COMPONENTS", "passes", "PARAM_NAMES", "PROFILE_OUTPUTS", "SCALAR_OUTPUTS",
     "SCREW_EFFICIENCY",
     "STEEL_DAMPING", "AxisModel", "Evaluation", "axis_params", "axis_response", "design_params", "evaluate",
     "model_for", "positions",

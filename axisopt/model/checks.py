@@ -10,7 +10,11 @@ from ..physics import checks as pc
 from ..physics import nut as pn
 
 CHECKS = ("critical_speed", "buckling", "screw_yield", "nut_life", "bearing_life", "guide_life", "dn",
-          "nut_lift_off", "bearing_lift_off", "bearing_speed", "bearing_fit", "screw_length")
+          "nut_lift_off", "bearing_lift_off", "bearing_speed", "bearing_fit", "screw_length",
+          "motor_peak_torque", "motor_rated_torque", "motor_speed", "inertia_ratio", "brake_holding",
+          "coupling_torque", "coupling_speed")
+# Drive checks (model.drive); they apply only when the design has a motor (coupling).
+DRIVE_CHECKS = CHECKS[12:]
 
 CHECK_LABELS = MappingProxyType({
     "critical_speed": "critical speed / max screw speed",
@@ -25,6 +29,13 @@ CHECK_LABELS = MappingProxyType({
     "bearing_speed": "bearing limiting speed / max screw speed",
     "bearing_fit": "bearing bore within the screw end's range",
     "screw_length": "screw max length / needed length",
+    "motor_peak_torque": "motor peak torque / peak torque (cycle, thrust)",
+    "motor_rated_torque": "motor rated torque / RMS torque, mean thrust",
+    "motor_speed": "motor max speed / needed motor speed",
+    "inertia_ratio": "inertia ratio limit / load-to-rotor ratio",
+    "brake_holding": "brake torque / safety x gravity torque",
+    "coupling_torque": "coupling rated torque / motor peak torque",
+    "coupling_speed": "coupling max speed / max screw speed",
 })
 
 # Buckling end condition.  The compressed length runs from the thrust (fixed) bearing to the nut, and the

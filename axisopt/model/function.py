@@ -21,7 +21,9 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "max_axial_force", "mean_axial_force", "guide_friction", "pretension", "thermal_force",
                   "bearing_static_load", "screw_compression", "backlash", "life", "bearing_life", "guide_life",
                   "screw_speed", "critical_speed", "buckling_load", "yield_load", "dn", "nut_lift_off_force",
-                  "bearing_max_load") + tuple(f"margin_{c}" for c in CHECKS)
+                  "bearing_max_load", "load_inertia", "total_inertia", "inertia_ratio", "motor_speed", "peak_torque",
+                  "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque", "gravity_torque",
+                  "duty_time") + tuple(f"margin_{c}" for c in CHECKS)
 
 
 @dataclass
@@ -36,13 +38,16 @@ class AxisModel:
     mounting: str
     n_positions: int
     function: ca.Function
+    duty: tuple = ()
 
     @classmethod
-    def build(cls, mounting: str, n_positions: int) -> AxisModel:
+    def build(cls, mounting: str, n_positions: int, duty: tuple = ()) -> AxisModel:
+        """``duty``: the axis's duty-cycle phases (the cycle is built into the Function)."""
         prm = ca.SX.sym("params", len(PARAM_NAMES))
         pre = ca.SX.sym("preload")
         x = ca.SX.sym("x", n_positions)
         p = {name: prm[i] for i, name in enumerate(PARAM_NAMES)}
+        p["duty"] = duty
         out = axis_response(p, x, mounting, pre)
         names = list(PROFILE_OUTPUTS) + list(SCALAR_OUTPUTS)
         exprs = []
@@ -53,7 +58,7 @@ class AxisModel:
             exprs.append(e)
         f = ca.Function(f"axis_{mounting.replace('-', '_')}", [prm, pre, x], exprs,
                         ["params", "preload", "x"], names)
-        return cls(mounting, n_positions, f)
+        return cls(mounting, n_positions, f, duty)
 
     def __call__(self, params: dict, preload: float, x) -> dict:
         vec = np.array([float(params[n]) for n in PARAM_NAMES])
@@ -69,16 +74,19 @@ class AxisModel:
 _MODELS: dict[tuple, AxisModel] = {}
 
 
-def model_for(mounting: str, n_positions: int) -> AxisModel:
-    """Cached :meth:`AxisModel.build` (one Function per mounting and grid size)."""
-    key = (mounting, n_positions)
+def model_for(mounting: str, n_positions: int, duty: tuple = ()) -> AxisModel:
+    """Cached :meth:`AxisModel.build` (one Function per mounting, grid size and duty cycle)."""
+    key = (mounting, n_positions, duty)
     if key not in _MODELS:
-        _MODELS[key] = AxisModel.build(mounting, n_positions)
+        if len(_MODELS) > 64:
+            _MODELS.clear()
+        _MODELS[key] = AxisModel.build(mounting, n_positions, duty)
     return _MODELS[key]
 
 
 def design_params(design: Design) -> dict:
-    return axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide)
+    return axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
+                       design.coupling)
 
 
 COMPONENTS = (("bearings", "k_bearing"), ("screw", "k_screw"), ("screw torsion", "k_torsion"),
@@ -141,9 +149,9 @@ def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool
     x = positions(design.axis, n_positions)
     params = design_params(design)
     if use_casadi:
-        values = model_for(design.axis.mounting, len(x))(params, design.preload, x)
+        values = model_for(design.axis.mounting, len(x), design.axis.phases)(params, design.preload, x)
     else:
         raw = axis_response(params, x, design.axis.mounting, design.preload)
         values = {k: (np.broadcast_to(np.asarray(v, float), x.shape).copy() if k in PROFILE_OUTPUTS
-                      else float(v)) for k, v in raw.items()}
+                      else float(v)) for k, v in raw.items() if k != "duty_torques"}
     return Evaluation(design, x, values)

@@ -26,13 +26,22 @@ PARAM_NAMES = (
     "guide_friction_coefficient", "guide_friction_viscous", "guide_damping", "guide_block_mass",
     "guide_rail_mass_per_length", "guide_block_price", "guide_rail_price_per_length", "guide_dynamic_load",
     "guide_preload", "guide_roller",
+    # drive: motor, coupling, reduction (rotor_inertia at the motor; motor_inertia above is the motor side
+    # reflected to the screw for the drive-train modes)
+    "rotor_inertia", "has_motor", "motor_rated_torque", "motor_peak_torque", "motor_max_speed",
+    "motor_brake_torque", "motor_price", "has_coupling", "coupling_rated_torque", "coupling_max_speed",
+    "coupling_price", "reduction_ratio", "reduction_efficiency", "reduction_inertia", "max_inertia_ratio",
+    "brake_safety",
 )
 
 
-def axis_params(axis, screw, nut, bearing, guide) -> dict:
-    """Flat SI parameter dict for :func:`axisopt.model.axis_response` from an Axis and four part rows.
+def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> dict:
+    """Flat SI parameter dict for :func:`axisopt.model.axis_response` from an Axis and its part rows.
 
-    Part rows may be pandas Series (one design) or DataFrames / dicts of arrays (many designs).
+    Part rows may be pandas Series (one design) or DataFrames / dicts of arrays (many designs).  Without a
+    motor (or coupling) row the axis's ``motor_inertia`` (``coupling_*``) values stand in and the drive
+    checks do not apply.  ``p["duty"]`` holds the axis's duty-cycle phases (not a parameter: the same for
+    every design).
     """
     col = _getter
     mounting = axis.mounting
@@ -45,12 +54,11 @@ def axis_params(axis, screw, nut, bearing, guide) -> dict:
         "mean_axial_load": axis.mean_axial_load_eff, "required_life": axis.required_life,
         "load_factor": axis.load_factor, "guide_blocks": float(axis.guide_blocks), "rails": float(axis.rails),
         "rail_length": axis.stroke + axis.table_length, "normal_load": axis.normal_load,
-        "viscosity": axis.lubricant_viscosity, "motor_inertia": axis.motor_inertia,
+        "viscosity": axis.lubricant_viscosity,
         "bearing_sets": 2.0 if mounting == "fixed-fixed" else 1.0,
         "gravity_axial": 1.0 if axis.orientation == "vertical" else 0.0,
         "housing_compliance": _compliance(axis.bearing_housing_stiffness),
         "bracket_compliance": _compliance(axis.nut_bracket_stiffness),
-        "coupling_stiffness": axis.coupling_stiffness, "coupling_inertia": axis.coupling_inertia,
         "temperature_rise": axis.temperature_rise,
         "pretension": 0.0 if axis.pretension is None else axis.pretension,
         "pretension_auto": 1.0 if (axis.pretension is None and mounting == "fixed-fixed") else 0.0,
@@ -87,7 +95,45 @@ def axis_params(axis, screw, nut, bearing, guide) -> dict:
         "guide_preload": col(guide, "preload"),
         "guide_roller": _is_type(guide, "roller"),
     }
+    p.update(drive_params(axis, motor, coupling))
+    p["duty"] = axis.phases
     return p
+
+
+def drive_params(axis, motor, coupling) -> dict:
+    """Motor, coupling and reduction parameters (SI).  Missing parts: the axis values, checks off."""
+    col = _getter
+    ratio = axis.reduction_ratio
+    q = {"reduction_ratio": ratio, "reduction_efficiency": axis.reduction_efficiency,
+         "reduction_inertia": axis.reduction_inertia, "max_inertia_ratio": axis.max_inertia_ratio,
+         "brake_safety": axis.brake_safety}
+    if motor is None:
+        rotor = axis.motor_inertia
+        q.update({"has_motor": 0.0, "motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0,
+                  "motor_brake_torque": 0.0, "motor_price": 0.0})
+    else:
+        j = col(motor, "rotor_inertia")
+        jb = col(motor, "rotor_inertia_brake")
+        if axis.brake_used:  # the brake adds its inertia (catalog value; the plain rotor where none is listed)
+            j = np.where(np.isfinite(jb), jb, j) if np.ndim(jb) else (jb if np.isfinite(jb) else j)
+        brake = col(motor, "brake_torque")
+        brake = np.where(np.isfinite(brake), brake, 0.0) if np.ndim(brake) else (brake if np.isfinite(brake) else 0.0)
+        rotor = j
+        q.update({"has_motor": 1.0, "motor_rated_torque": col(motor, "rated_torque"),
+                  "motor_peak_torque": col(motor, "peak_torque"), "motor_max_speed": col(motor, "max_speed"),
+                  "motor_brake_torque": brake, "motor_price": col(motor, "price")})
+    if coupling is None:
+        q.update({"has_coupling": 0.0, "coupling_stiffness": axis.coupling_stiffness,
+                  "coupling_inertia": axis.coupling_inertia, "coupling_rated_torque": 1.0,
+                  "coupling_max_speed": 1.0, "coupling_price": 0.0})
+    else:
+        q.update({"has_coupling": 1.0, "coupling_stiffness": col(coupling, "torsional_stiffness"),
+                  "coupling_inertia": col(coupling, "inertia"), "coupling_rated_torque": col(coupling, "rated_torque"),
+                  "coupling_max_speed": col(coupling, "max_speed"), "coupling_price": col(coupling, "price")})
+    q["rotor_inertia"] = rotor
+    # motor side of the drive-train model, seen from the screw through the reduction
+    q["motor_inertia"] = (rotor + axis.reduction_inertia) * ratio**2
+    return q
 
 
 def _compliance(stiffness):

@@ -18,6 +18,7 @@ from .chain import stiffness_chain
 from .checks import checks
 from .cost import cost
 from .drag import drag_torque
+from .drive import drive
 from .loads import axial_loads, masses
 from .modes import axial_modes, damping, drive_train_modes
 
@@ -47,6 +48,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
     out["cost"] = cost(p)
     out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]
     out.update(checks(p, mounting, preload, loads))
+    out.update(drive(p, m["moving_mass"], out["drag_torque"]))
     if extras:
         out.update(drive_train_modes(p, chain, modes["m_eff"]))
         out.update(damping(p, chain, modes["m_eff"]))

@@ -76,3 +76,41 @@ def rms_torque(torques, durations):
 def inertia_ratio(load_inertia_, rotor_inertia):
     """Load-to-rotor inertia ratio J_L / J_M [-] (THK eq. 49 asks J_M >= J/C with C 3-10)."""
     return load_inertia_ / rotor_inertia
+
+
+def phase_torques(phases, total_inertia, lead, friction_torque, gravity_torque, efficiency=0.9, ratio=1.0):
+    r"""Motor torque at the start and end of each duty-cycle phase [N m] (THK eq. 40-45, signed):
+
+    .. math:: T = J\,\frac{2\pi}{P_h A} a + s\,\Big(T_f + \frac{F P_h A}{2\pi\eta}\Big) + T_g
+
+    phases          : :class:`axisopt.physics.motion.Phase` sequence (acceleration a, direction s, force F)
+    total_inertia   : load plus rotor at the motor [kg m^2]
+    friction_torque : friction/drag at the motor, opposing the motion [N m]
+    gravity_torque  : torque holding the weight of a vertical axis, positive lifting [N m]
+    efficiency      : η of screw and reduction for the external force;  ratio : A (screw turns per motor turn)
+    Returns a list of (T_start, T_end).  Friction is absent at standstill (s = 0).  Works on floats, numpy
+    arrays and CasADi symbols (the phases are floats)."""
+    k_acc = 2.0 * pi / (lead * ratio)
+    per_newton = lead * ratio / (2.0 * pi * efficiency)
+    out = []
+    for ph in phases:
+        base = ph.direction * (friction_torque + ph.force * per_newton) + gravity_torque
+        j = total_inertia * k_acc
+        out.append((j * ph.a0 + base, j * ph.a1 + base))
+    return out
+
+
+def linear_rms_torque(torques, durations):
+    r"""RMS torque over phases whose torque varies linearly from T0 to T1 (exact for jerk-limited ramps):
+    :math:`\sqrt{\sum t_i (T_0^2 + T_0 T_1 + T_1^2)/3 \,/\, \sum t_i}` [N m] (THK eq. 48 for constant torques)."""
+    num = sum(d * (t0 * t0 + t0 * t1 + t1 * t1) / 3.0 for (t0, t1), d in zip(torques, durations))
+    return mx.sqrt(num / sum(durations))
+
+
+def peak_torque(torques):
+    """Largest |torque| over the phases (the ends of each linear piece) [N m]."""
+    vals = [mx.fabs(t) for pair in torques for t in pair]
+    out = vals[0]
+    for v in vals[1:]:
+        out = mx.fmax(out, v)
+    return out

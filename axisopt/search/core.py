@@ -38,10 +38,13 @@ from .space import (
     Space,
     _ok_all,
     _vec,
+    convex_interval,
+    convex_margin_bound,
     exact_solve,
     objective_floor,
     rank_order,
     respond,
+    subset,
 )
 
 SCREEN_CHUNK = 4_000_000  # combinations per structured screening block (memory)
@@ -63,12 +66,14 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     _, N, B, G = space.shape
     per_nut = max(B * G, 1)
     step = max(1, SCREEN_CHUNK // per_nut)
-    low_end = [c for c in constraints if not c.lower_type]  # independent or favoured by a low preload
+    low_end = [c for c in constraints if not c.lower_type and not c.convex]  # independent or favoured by a low preload
     high_end = [c for c in constraints if c.lower_type]
+    cvx = [c for c in constraints if c.convex]
     idx_parts, bound_parts = [], []
     for mi, mounting in enumerate(space.mountings):
         xs = space.bound_positions(mounting).astype(np.float32)
         x1 = xs[-1:]
+        phases = space.problem.axis_for(mounting).phases
         for n0 in range(0, N, step):
             sl = slice(n0, min(N, n0 + step))
             p = space.params_structured(mounting, sl, dtype=np.float32)
@@ -77,12 +82,16 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
             nc = sl.stop - sl.start
             mask = np.broadcast_to(space.fits[sl][:, :, None], (nc, B, G)).copy()
             with np.errstate(all="ignore"):
-                out = model.axis_response(p, x1, mounting, lo, extras=False)
+                out_lo = model.axis_response(p, x1, mounting, lo, extras=False)
                 for c in low_end:
-                    mask &= _screen_ok(c, out)
+                    mask &= _screen_ok(c, out_lo)
                 out = model.axis_response(p, xs, mounting, hi, extras=False)
                 for c in high_end:
                     mask &= _screen_ok(c, out)
+                for c in cvx:  # the margin's bound over the whole preload range
+                    ub = convex_margin_bound(c, out_lo, out, phases)
+                    ok_c = np.asarray(ub >= c.limit * (1.0 - SCREEN_RTOL), dtype=bool)
+                    mask &= ok_c[..., 0] if ok_c.ndim else ok_c
                 bound = objective.value(out)
             bound = np.broadcast_to(bound + SCREEN_RTOL * np.abs(bound), (nc, B, G))
             nn, bb, gg = np.nonzero(mask)
@@ -172,6 +181,12 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
         low, up = lo.copy(), hi.copy()
         for c in dep:
             xc = x if c.profile else x[-1:]
+            if c.convex:  # a motor-torque limit: met on an interval of preloads
+                ex, a_lo, a_hi = convex_interval(c, p, xc, mounting, lo, hi)
+                ok &= ex
+                low = np.where(ex, np.maximum(low, a_lo), low)
+                up = np.where(ex, np.minimum(up, a_hi), up)
+                continue
             ok_lo = _ok_all([c], out_lo, k)
             ok_hi = _ok_all([c], out_hi, k)
             if c.upper_type:
@@ -184,7 +199,7 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
                 todo = ok & ~ok_lo
             if todo.any():
                 j = np.nonzero(todo)[0]
-                pj = {kk: (v[j] if np.ndim(v) and np.shape(v)[0] == k else v) for kk, v in p.items()}
+                pj = subset(p, j, k)
                 aj, zj = a[j], z[j]
                 for _ in range(BISECTION_STEPS):
                     mid = 0.5 * (aj + zj)
@@ -234,17 +249,19 @@ def make_candidate(space: Space, combo: int, preload: float, objective: Objectiv
                    name: str = "") -> Candidate:
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
-    screw, nut, bearing, guide = space.part_rows(n, b, g)
+    screw, nut, bearing, guide, motor, coupling = space.part_rows(n, b, g)
     lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
     preload = float(min(max(preload, lo), hi))
     design = Design(axis=space.problem.axis_for(mounting), screw=screw, nut=nut, bearing=bearing, guide=guide,
-                    nut_preload=preload, name=name or f"{space.problem.name}-{rank or 'design'}",
+                    motor=motor, coupling=coupling, nut_preload=preload, name=name or f"{space.problem.name}-{rank or 'design'}",
                     source=space.problem.source, assumed=space.problem.assumed)
     ev = model.evaluate(design)
     v = ev.values
     J = float(objective.value({k: np.asarray(v[k]) for k in ("k_total", "f1")}))
     return Candidate(rank=rank, combination=int(combo), mounting=mounting, screw=str(screw["id"]),
                      nut=str(nut["id"]), bearing=str(bearing["id"]), guide=str(guide["id"]), nut_preload=preload,
+                     motor="" if motor is None else str(motor["id"]),
+                     coupling="" if coupling is None else str(coupling["id"]),
                      objective=J, min_stiffness=float(np.min(v["k_total"])) / N_PER_UM,
                      min_frequency=float(np.min(v["f1"])), cost=float(v["cost"]),
                      moving_mass=float(v["moving_mass"]), total_mass=float(v["total_mass"]),
@@ -260,7 +277,9 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
         mi, n, b, g = (int(v) for v in space.unravel(combo))
         mounting = space.mountings[mi]
         p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))
-        p1 = {k: (float(np.asarray(v).ravel()[0]) if np.ndim(v) else float(v)) for k, v in p.items()}
+        p1 = {k: (float(np.asarray(v).ravel()[0]) if np.ndim(v) else float(v)) for k, v in p.items()
+              if k != "duty"}
+        p1["duty"] = p["duty"]
         lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
         res = nlp.solve_preload(mounting, space.positions(mounting), p1, lo, hi, constraints, objective,
                                 guess=float(ex.preload[j]))

@@ -35,11 +35,11 @@ def _scaled(key, v):
     return v / N_PER_UM if key == "k_total" else v
 
 
-def _solver(mounting: str, x: np.ndarray, cons: tuple, objective: ObjectiveSpec):
-    key = (mounting, tuple(np.round(x, 12)), tuple((c.key, c.sense) for c in cons), objective.terms)
+def _solver(mounting: str, x: np.ndarray, cons: tuple, objective: ObjectiveSpec, duty: tuple = ()):
+    key = (mounting, tuple(np.round(x, 12)), tuple((c.key, c.sense) for c in cons), objective.terms, duty)
     if key in _SOLVERS:
         return _SOLVERS[key]
-    F = model.model_for(mounting, len(x)).function
+    F = model.model_for(mounting, len(x), duty).function
     P = ca.SX.sym("params", len(model.PARAM_NAMES))
     lim = ca.SX.sym("limits", len(cons))
     plo, phi = ca.SX.sym("plo"), ca.SX.sym("phi")
@@ -76,11 +76,12 @@ def solve_preload(mounting: str, x, params: dict, plo: float, phi: float, constr
                   guess: float | None = None) -> NLPResult:
     """IPOPT on one combination; ``constraints`` may include preload-independent ones (ignored)."""
     cons = tuple(c for c in constraints if c.direction != 0)
-    solver, lbg, ubg = _solver(mounting, np.asarray(x, float), cons, objective)
+    duty = params.get("duty", ())
+    solver, lbg, ubg = _solver(mounting, np.asarray(x, float), cons, objective, duty)
     pv = np.array([float(params[n]) for n in model.PARAM_NAMES])
     span = phi - plo
     w0 = 1.0 if guess is None or span <= 0 else float(np.clip((guess - plo) / span, 0.0, 1.0))
-    f = model.model_for(mounting, len(x))(
+    f = model.model_for(mounting, len(x), duty)(
         dict(zip(model.PARAM_NAMES, pv)), plo + w0 * max(span, 0.0), x)
     t0 = [float(np.min(_scaled(k, f[k]))) * (1 - 1e-6) for k, _ in objective.terms]
     arg = {"x0": np.array([w0] + t0), "lbx": np.array([0.0] + [-np.inf] * len(t0)),

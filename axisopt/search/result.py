@@ -28,9 +28,16 @@ class Candidate:
     life_h: float  # nut L10 life [h]
     design: object = field(default=None, repr=False, compare=False)  # axisopt.design.Design
     misses: dict = field(default_factory=dict)  # infeasible problems: limit -> relative miss
+    motor: str = ""  # servo motor id ('' without drive search)
+    coupling: str = ""
 
     def parts(self) -> dict:
-        return {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
+        out = {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
+        if self.motor:
+            out["motor"] = self.motor
+        if self.coupling:
+            out["coupling"] = self.coupling
+        return out
 
     def to_dict(self) -> dict:
         d = asdict(self)

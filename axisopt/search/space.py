@@ -1,7 +1,10 @@
 """The discrete search space of a problem and vectorized evaluation of the axis model over it.
 
-A combination is (mounting, nut, bearing arrangement, guide); the nut fixes the screw.  Combinations
-are numbered ``((m * N + n) * B + b) * G + g`` over the filtered part tables.
+A combination is (mounting, nut, bearing arrangement, guide, drive); the nut fixes the screw and a drive
+is a (motor, coupling) pair.  The drive shares the last part axis with the guide: its index is
+``g * D + d`` over G guides and D drives, so combinations are numbered ``((m * N + n) * B + b) * (G D) + g D + d``
+and every layout below holds with "guide" read as "guide and drive".  Without drive search D = 1 (the
+axis's motor inertia and coupling values, drive checks off).
 
 Two evaluation layouts use the same :func:`axisopt.model.axis_response`:
 
@@ -30,9 +33,14 @@ from ..catalog import USER_STATUS
 from ..problem import LIMITS, Problem
 from ..units import N_PER_UM
 
-# Outputs that depend on the nut preload and how (+1 nondecreasing, -1 nonincreasing).
+# Outputs that depend on the nut preload and how (+1 nondecreasing, -1 nonincreasing, CONVEX: the motor
+# torques, convex in the preload -- the nut's drag raises the torque of some phases of the cycle and lowers
+# that of others (deceleration, lowering a vertical axis), so a torque limit holds on an interval of preloads).
+CONVEX = 2
 PRELOAD_DIRECTION = {"k_total": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
-                     "margin_nut_lift_off": 1, "life": -1, "margin_nut_life": -1}
+                     "margin_nut_lift_off": 1, "life": -1, "margin_nut_life": -1,
+                     "margin_motor_peak_torque": CONVEX, "margin_motor_rated_torque": CONVEX}
+GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a convex limit
 PROFILE = ("k_total", "f1")
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
 BISECTION_STEPS = 52
@@ -43,6 +51,9 @@ _NUT_COLS = ("stiffness", "stiffness_preload", "dynamic_load_rating", "static_lo
              "preload_min", "preload_max", "axial_play")
 _BEARING_COLS = ("axial_rigidity", "lift_off_load", "preload", "f0", "f1", "bore", "outer_diameter",
                  "limiting_speed", "mass", "price", "dynamic_load_rating", "starting_torque")
+_MOTOR_COLS = ("rated_torque", "peak_torque", "max_speed", "rotor_inertia", "rotor_inertia_brake", "brake_torque",
+               "price")
+_COUPLING_COLS = ("rated_torque", "torsional_stiffness", "inertia", "max_speed", "price")
 _GUIDE_COLS = ("normal_rigidity", "tangential_rigidity", "friction_force", "friction_coefficient",
                "friction_viscous", "damping", "block_mass", "rail_mass_per_length", "block_price",
                "rail_price_per_length", "dynamic_load_rating", "preload")
@@ -56,7 +67,7 @@ class Constraint:
     key: str  # model output
     sense: str  # '<=' or '>='
     limit: float  # SI
-    direction: int  # 0 independent of preload, +1 nondecreasing, -1 nonincreasing
+    direction: int  # 0 independent of preload, +1 nondecreasing, -1 nonincreasing, CONVEX (met on an interval)
     label: str
     unit: str
     factor: float  # SI per display unit
@@ -66,13 +77,22 @@ class Constraint:
         return self.key in PROFILE
 
     @property
+    def convex(self) -> bool:
+        """Satisfied on an interval of preloads (motor torque margins, ``>=``)."""
+        return self.direction == CONVEX
+
+    @property
     def upper_type(self) -> bool:
         """Satisfied for preloads below a threshold (drag, life)."""
+        if self.convex:
+            return False
         return (self.sense == "<=" and self.direction > 0) or (self.sense == ">=" and self.direction < 0)
 
     @property
     def lower_type(self) -> bool:
         """Satisfied for preloads above a threshold (lift-off, minimum stiffness/frequency)."""
+        if self.convex:
+            return False
         return (self.sense == ">=" and self.direction > 0) or (self.sense == "<=" and self.direction < 0)
 
     def value(self, out, axis=-1):
@@ -177,12 +197,21 @@ class Space:
     s_arr: dict = field(repr=False, default_factory=dict)
     n_arr: dict = field(repr=False, default_factory=dict)
     b_arr: dict = field(repr=False, default_factory=dict)
-    g_arr: dict = field(repr=False, default_factory=dict)
+    g_arr: dict = field(repr=False, default_factory=dict)  # guide columns, each guide repeated D times
+    motors: object = None  # DataFrame of the searched motors (None: no drive search)
+    couplings: object = None
+    drives: tuple = ((None, None),)  # (motor position, coupling position) pairs; None: axis values
+    m_arr: dict | None = field(repr=False, default=None)  # motor columns over the G*D axis
+    c_arr: dict | None = field(repr=False, default=None)
     _cache: dict = field(repr=False, default_factory=dict)
 
     @property
+    def n_drives(self) -> int:
+        return len(self.drives)
+
+    @property
     def shape(self) -> tuple:
-        return (len(self.mountings), len(self.nuts), len(self.bearings), len(self.guides))
+        return (len(self.mountings), len(self.nuts), len(self.bearings), len(self.guides) * self.n_drives)
 
     @property
     def size(self) -> int:
@@ -228,9 +257,11 @@ class Space:
             nt = sh({k: v[nut_slice] for k, v in self.n_arr.items()}, (-1, 1, 1, 1))
             b = sh(self.b_arr, (1, -1, 1, 1))
             g = sh(self.g_arr, (1, 1, -1, 1))
+            mo = None if self.m_arr is None else sh(self.m_arr, (1, 1, -1, 1))
+            cp = None if self.c_arr is None else sh(self.c_arr, (1, 1, -1, 1))
             if len(self._cache) > 64:
                 self._cache.clear()
-            ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g)
+            ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
             if np.dtype(dtype) != np.float64:
                 ps = {k: (v.astype(dtype) if isinstance(v, np.ndarray) else v) for k, v in ps.items()}
             self._cache[key] = ps
@@ -240,11 +271,18 @@ class Space:
         def pick(d, i):
             return {k: v[i][:, None] for k, v in d.items()}
         return model.axis_params(self.problem.axis_for(mounting), pick(self.s_arr, n), pick(self.n_arr, n),
-                                 pick(self.b_arr, b), pick(self.g_arr, g))
+                                 pick(self.b_arr, b), pick(self.g_arr, g),
+                                 None if self.m_arr is None else pick(self.m_arr, g),
+                                 None if self.c_arr is None else pick(self.c_arr, g))
 
     def part_rows(self, n, b, g):
+        """(screw, nut, bearing, guide, motor, coupling) rows of part-axis numbers; ``g`` is the guide-and-
+        drive index (motor and coupling None where the axis values stand in)."""
+        gi, di = divmod(int(g), self.n_drives)
+        mi, ci = self.drives[di]
         return (self.screws.iloc[int(n)], self.nuts.iloc[int(n)], self.bearings.iloc[int(b)],
-                self.guides.iloc[int(g)])
+                self.guides.iloc[gi], None if mi is None else self.motors.iloc[mi],
+                None if ci is None else self.couplings.iloc[ci])
 
 
 def build_space(problem: Problem) -> Space:
@@ -311,7 +349,183 @@ def build_space(problem: Problem) -> Space:
     sp.b_arr = _arrays(bearings, _BEARING_COLS)
     sp.g_arr = _arrays(guides, _GUIDE_COLS)
     sp.g_arr["type"] = guides["type"].to_numpy(dtype=object).astype(str)
+    _add_drives(sp, problem)
     return sp
+
+
+def _filtered(df, r, slot, series=None, vendors=None):
+    if vendors is not None:
+        df = df[df["vendor"].isin(vendors)]
+    if series is not None:
+        df = df[df["series"].isin(series)]
+    req, exc = r.required(slot), r.excluded(slot)
+    if req:
+        df = df[df.index.isin(req)]
+    if exc:
+        df = df[~df.index.isin(exc)]
+    return df
+
+
+def coupling_dominated(cp) -> np.ndarray:
+    """Couplings another coupling beats on every count the model uses: at least its rated torque,
+    torsional stiffness and maximum speed, at most its inertia and price, and better on one of them
+    (mass and bore do not enter the model; a dominated coupling can never be the better choice)."""
+    a = {c: cp[c].to_numpy(float) for c in ("rated_torque", "torsional_stiffness", "max_speed", "inertia", "price")}
+    ge = ((a["rated_torque"][:, None] >= a["rated_torque"][None]) & (a["torsional_stiffness"][:, None]
+          >= a["torsional_stiffness"][None]) & (a["max_speed"][:, None] >= a["max_speed"][None])
+          & (a["inertia"][:, None] <= a["inertia"][None]) & (a["price"][:, None] <= a["price"][None]))
+    gt = ((a["rated_torque"][:, None] > a["rated_torque"][None]) | (a["torsional_stiffness"][:, None]
+          > a["torsional_stiffness"][None]) | (a["max_speed"][:, None] > a["max_speed"][None])
+          | (a["inertia"][:, None] < a["inertia"][None]) | (a["price"][:, None] < a["price"][None]))
+    return (ge & gt).any(axis=0)
+
+
+def _add_drives(sp: Space, problem: Problem) -> None:
+    """The (motor, coupling) pairs the search chooses from, spread over the guide axis."""
+    r = problem.restrictions
+    cat = problem.catalog
+    if not r.drive or len(cat.motors) == 0:
+        return
+    motors = _filtered(cat.motors, r, "motor", r.motor_series, r.motor_vendors)
+    couplings = _filtered(cat.couplings, r, "coupling", r.coupling_series)
+    if len(couplings) and not r.required("coupling"):
+        couplings = couplings[~coupling_dominated(couplings)]
+    ratio = problem.axis.reduction_ratio
+    need = problem.margin_map.get("coupling_torque", 1.0)
+    pairs = []
+    for mi in range(len(motors)):
+        if len(couplings) == 0:
+            pairs.append((mi, None))
+            continue
+        peak = float(motors["peak_torque"].iloc[mi]) * ratio
+        # the coupling-torque check depends on the pair only: pairs that fail it are never formed
+        ok = couplings["rated_torque"].to_numpy(float) >= need * peak * (1.0 - 1e-12)
+        pairs.extend((mi, int(ci)) for ci in np.nonzero(ok)[0])
+    sp.motors, sp.couplings = motors, couplings
+    sp.drives = tuple(pairs)
+    D = len(pairs)
+    sp.g_arr = {k: np.repeat(v, D) for k, v in sp.g_arr.items()}
+    G = len(sp.guides)
+    mpos = np.array([m for m, _ in pairs], dtype=np.int64)
+    sp.m_arr = {k: np.tile(motors[k].to_numpy(float)[mpos], G) for k in _MOTOR_COLS}
+    if len(couplings):
+        cpos = np.array([c for _, c in pairs], dtype=np.int64)
+        sp.c_arr = {k: np.tile(couplings[k].to_numpy(float)[cpos], G) for k in _COUPLING_COLS}
+
+
+def subset(p: dict, j, k: int) -> dict:
+    """The parameters of rows ``j`` of a flat layout of ``k`` combinations (the duty cycle is shared)."""
+    return {kk: (v[j] if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v) for kk, v in p.items()}
+
+
+def _interval_min_abs(t_lo, t_hi):
+    """min |T| over preloads between two ends where T is affine in the preload: 0 if it changes sign."""
+    t_lo, t_hi = np.asarray(t_lo), np.asarray(t_hi)
+    return np.where(t_lo * t_hi <= 0, 0.0, np.minimum(np.abs(t_lo), np.abs(t_hi)))
+
+
+def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np.ndarray:
+    """An upper bound of a motor-torque margin over every preload between the two ends of ``out_lo`` and
+    ``out_hi`` (screening).  Each phase torque is affine in the preload (through the nut's drag), so its
+    smallest magnitude over the interval is known; the thrusts grow with the preload.  RMS: a linear piece
+    (T0^2 + T0 T1 + T1^2)/3 >= (T0^2 + T1^2)/6, and = T0^2 for a constant one."""
+    v_lo = np.asarray(out_lo[c.key])
+    thrust = "thrust_torque" if c.key == "margin_motor_peak_torque" else "mean_thrust_torque"
+    need_lo = np.asarray(out_lo["peak_torque" if c.key == "margin_motor_peak_torque" else "rms_torque"])
+    need_lo = np.maximum(need_lo, np.asarray(out_lo[thrust]))
+    available = v_lo * need_lo
+    ends = [(_interval_min_abs(a0, b0), _interval_min_abs(a1, b1))
+            for (a0, a1), (b0, b1) in zip(out_lo["duty_torques"], out_hi["duty_torques"])]
+    if c.key == "margin_motor_peak_torque":
+        lb = np.asarray(out_lo[thrust])
+        for m0, m1 in ends:
+            lb = np.maximum(lb, np.maximum(m0, m1))
+    else:
+        total = sum(ph.duration for ph in phases)
+        acc = 0.0
+        for ph, (m0, m1) in zip(phases, ends):
+            acc = acc + ph.duration * (m0 * m0 if ph.a0 == ph.a1 else (m0 * m0 + m1 * m1) / 6.0)
+        lb = np.maximum(np.sqrt(acc / total) if total > 0 else 0.0, np.asarray(out_lo[thrust]))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        bound = np.where(lb > 0, available / lb, np.inf)
+    return np.where(v_lo >= 1e8, v_lo, bound)  # not applicable (no motor): as is
+
+
+def _golden_best(value, a, b, steps=GOLDEN_STEPS):
+    """Preload in [a, b] maximising a unimodal ``value(preload) -> (K,)`` (vectorized golden section)."""
+    r = (math.sqrt(5.0) - 1.0) / 2.0
+    x1, x2 = b - r * (b - a), a + r * (b - a)
+    f1, f2 = value(x1), value(x2)
+    for _ in range(steps):
+        left = f1 >= f2
+        b = np.where(left, x2, b)
+        a = np.where(left, a, x1)
+        x2n = np.where(left, x1, a + r * (b - a))
+        x1n = np.where(left, b - r * (b - a), x2)
+        x1, x2 = x1n, x2n
+        f1, f2 = value(x1), value(x2)
+    return np.where(f1 >= f2, x1, x2)
+
+
+def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
+    """For a convex (interval) limit: the largest preload in [lo, top] meeting it, per combination.
+    Returns (exists, preload).  Met at ``top``: top.  Else met at ``lo``: bisection (the limit's interval
+    contains lo and ends below top).  Else: its most favourable preload by golden section, then bisection."""
+    K = len(lo)
+    lo, top = np.asarray(lo, float), np.asarray(top, float)
+
+    def value(pj, pre):
+        return _vec(c.value(respond(pj, x1, mounting, pre[:, None])), len(pre))
+
+    exists = c.ok(value(p, top)).astype(bool)
+    pb = top.copy()
+    j = np.nonzero(~exists)[0]
+    if len(j):
+        pj = subset(p, j, K)
+        start = np.where(c.ok(value(pj, lo[j])), lo[j], np.nan)
+        g = np.nonzero(np.isnan(start))[0]
+        if len(g):
+            pg = subset(pj, g, len(j))
+            best = _golden_best(lambda pre: value(pg, pre), lo[j][g], top[j][g])
+            start[g] = np.where(c.ok(value(pg, best)), best, np.nan)
+        has = np.isfinite(start)
+        h = np.nonzero(has)[0]
+        if len(h):
+            ph = subset(pj, h, len(j))
+            a, z = start[h], top[j][h]
+            for _ in range(BISECTION_STEPS):
+                mid = 0.5 * (a + z)
+                good = c.ok(value(ph, mid)).astype(bool)
+                a = np.where(good, mid, a)
+                z = np.where(good, z, mid)
+            pb[j[h]] = a
+        exists[j] = has
+    return exists, pb
+
+
+def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
+    """For a convex limit: (exists, low end, high end) of the preloads in [lo, hi] meeting it, found without
+    assuming anything but convexity (golden section for a feasible point, then a bisection to each side)."""
+    K = len(lo)
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+
+    def value(pj, pre):
+        return _vec(c.value(respond(pj, x1, mounting, pre[:, None])), len(pre))
+
+    best = _golden_best(lambda pre: value(p, pre), lo.copy(), hi.copy())
+    ok_lo, ok_hi, ok_b = (c.ok(value(p, v)).astype(bool) for v in (lo, hi, best))
+    start = np.where(ok_lo, lo, np.where(ok_hi, hi, best))
+    exists = ok_lo | ok_hi | ok_b
+    ends = []
+    for edge in (lo, hi):
+        a, z = start.copy(), edge.copy()
+        for _ in range(BISECTION_STEPS):
+            mid = 0.5 * (a + z)
+            good = c.ok(value(p, mid)).astype(bool)
+            a = np.where(good, mid, a)
+            z = np.where(good, z, mid)
+        ends.append(np.where(c.ok(value(p, edge)).astype(bool), edge, a))
+    return exists, ends[0], ends[1]
 
 
 # --------------------------------------------------------------------------- exact 1-D solve
@@ -365,6 +579,7 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
         return res
     up = [c for c in constraints if c.direction != 0 and c.upper_type]
     low = [c for c in constraints if c.direction != 0 and c.lower_type]
+    cvx = [c for c in constraints if c.convex]
     indep = [c for c in constraints if c.direction == 0]
     for mounting, sel, n, b, _g, p, x in space.by_mounting(idx):
         k = len(sel)
@@ -381,7 +596,7 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
         need_bis = ok & ok_up_lo & ~ok_up_hi
         if need_bis.any():
             j = np.nonzero(need_bis)[0]
-            pj = {kk: (v[j] if np.ndim(v) and np.shape(v)[0] == k else v) for kk, v in p.items()}
+            pj = subset(p, j, k)
             aa, bj = a[j], bb[j]
             upc = [c for c in up if not c.profile]
             for _ in range(BISECTION_STEPS):
@@ -393,7 +608,14 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
             a[j] = aa
         pstar = np.where(ok_up_hi, hi[:, 0], a)
         ok &= ok_up_lo
+        for c in cvx:  # lower the preload into each motor-torque interval (drag and life stay met)
+            j = np.nonzero(ok)[0]
+            if len(j):
+                ex, top = convex_feasible_top(c, subset(p, j, k), x1, mounting, lo[j, 0], pstar[j])
+                ok[j] &= ex
+                pstar[j] = np.where(ex, top, pstar[j])
         out = respond(p, x, mounting, pstar[:, None])
+        ok &= _ok_all(cvx, out, k)
         ok &= _ok_all(low, out, k)
         ok &= _ok_all([c for c in up if c.profile], out, k)
         J = np.broadcast_to(objective.value(out), (k,))

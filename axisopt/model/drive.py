@@ -1,0 +1,89 @@
+"""The drive: servo motor, coupling and reduction over the axis's duty cycle, and the drive checks.
+
+Inertia at the motor (THK eq. 45): table, nut and blocks through the lead, screw and coupling through the
+reduction, the reduction's own inertia and the rotor (with its holding brake when the brake is used).
+Per duty-cycle phase the motor torque is inertia x angular acceleration, plus the friction of the axis
+(the model's drag torque: nut preload, support bearings, guide blocks) against the motion, the external
+force through the screw and reduction efficiency, and gravity for a vertical axis
+(:func:`axisopt.physics.drive.phase_torques`).  Steady thrust: the torque that pushes an axial load at feed
+with friction and weight.  Yaskawa's selection asks the load torque to stay within the rated torque: the
+thrust at the mean axial load counts with the cycle's RMS torque against the rated torque, the thrust at
+the largest axial load with the cycle's peak against the motor's peak torque.
+
+The phases are the axis's (``p["duty"]``, floats); the design enters through the parameters, so this
+evaluates on floats, numpy arrays and CasADi symbols like every other sub-assembly.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .. import mathx as mx
+from ..physics import drive as pd
+from ..physics import screw as ps
+from .drag import SCREW_EFFICIENCY
+from .loads import G
+
+NOT_APPLICABLE = 1e9  # margin of a check that does not apply (no motor, horizontal axis for the brake)
+
+
+def drive_inertias(p, moving_mass):
+    """(load inertia at the motor without the rotor, rotor inertia) [kg m^2]."""
+    a = 1.0 / p["reduction_ratio"]
+    j_screw = ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"])
+    j_load = pd.reflected_inertia(moving_mass, p["lead"], j_screw, p["coupling_inertia"], a,
+                                  p["reduction_inertia"])
+    return j_load, p["rotor_inertia"]
+
+
+def drive(p, moving_mass, drag) -> dict:
+    """Motor torques over the duty cycle, motor speed, inertia ratio, holding torque and the drive margins."""
+    a = 1.0 / p["reduction_ratio"]
+    eta = SCREW_EFFICIENCY * p["reduction_efficiency"]
+    j_load, j_rotor = drive_inertias(p, moving_mass)
+    j_tot = j_load + j_rotor
+    friction = drag * a / p["reduction_efficiency"]
+    weight = p["gravity_axial"] * moving_mass * G
+    gravity = pd.force_torque(weight, p["lead"], eta, a)
+    phases = p.get("duty", ())  # no cycle (a bare parameter dict): the steady thrusts alone
+    torques = pd.phase_torques(phases, j_tot, p["lead"], friction, gravity, eta, a)
+    durations = [ph.duration for ph in phases]
+    t_rms = pd.linear_rms_torque(torques, durations) if phases else 0.0 * friction
+    t_peak_cycle = pd.peak_torque(torques) if phases else 0.0 * friction
+    # steady thrust at feed (no acceleration): the largest and the mean axial load with friction and weight
+    thrust = friction + pd.force_torque(p["axial_load"], p["lead"], eta, a) + gravity
+    thrust_mean = friction + pd.force_torque(p["mean_axial_load"], p["lead"], eta, a) + gravity
+    t_peak = mx.fmax(t_peak_cycle, thrust)
+    t_cont = mx.fmax(t_rms, thrust_mean)
+    v_max = max([ph.speed for ph in phases] + [0.0])
+    n_motor = pd.motor_speed(v_max, p["lead"], a)
+    ratio = pd.inertia_ratio(j_load, j_rotor)
+    # holding a vertical axis at standstill: the weight through the screw without efficiency credit (the
+    # back-driving torque m g P_h eta' / 2 pi is below it), times the brake safety factor
+    hold = p["gravity_axial"] * pd.force_torque(weight, p["lead"], 1.0, a)
+    has = p["has_motor"] > 0.5
+    brake_needed = p["gravity_axial"] > 0.5
+    screw_speed = 2.0 * math.pi * v_max / p["lead"]
+    margins = {
+        "motor_peak_torque": mx.if_else(has, p["motor_peak_torque"] / t_peak, NOT_APPLICABLE),
+        "motor_rated_torque": mx.if_else(has, p["motor_rated_torque"] / t_cont, NOT_APPLICABLE),
+        "motor_speed": mx.if_else(has, p["motor_max_speed"] / mx.fmax(n_motor, 1e-9), NOT_APPLICABLE),
+        "inertia_ratio": mx.if_else(has, p["max_inertia_ratio"] / ratio, NOT_APPLICABLE),
+        "brake_holding": mx.if_else(has * brake_needed > 0.5,
+                                    p["motor_brake_torque"] / (p["brake_safety"] * hold + 1e-12), NOT_APPLICABLE),
+        # the coupling carries what the motor can deliver (its peak torque through the reduction)
+        "coupling_torque": mx.if_else(p["has_coupling"] * has > 0.5,
+                                      p["coupling_rated_torque"] / (p["motor_peak_torque"] * p["reduction_ratio"]),
+                                      NOT_APPLICABLE),
+        "coupling_speed": mx.if_else(p["has_coupling"] > 0.5, p["coupling_max_speed"] / mx.fmax(screw_speed, 1e-9),
+                                     NOT_APPLICABLE),
+    }
+    out = {f"margin_{k}": v for k, v in margins.items()}
+    out.update({
+        "load_inertia": j_load, "total_inertia": j_tot, "inertia_ratio": ratio, "motor_speed": n_motor,
+        "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean, "holding_torque": hold,
+        "friction_torque": friction, "gravity_torque": gravity, "duty_time": sum(durations),
+        "duty_torques": torques,
+    })
+    return out
+

@@ -1,0 +1,111 @@
+r"""Motion of the table over a duty cycle, as phases of linearly varying acceleration.
+
+A duty cycle is a list of moves and dwells.  A move starts and ends at rest: it accelerates to its
+speed (at the axis acceleration, limited by the jerk when one is given), cruises, and decelerates; a short
+move never reaches its speed (triangular or, with jerk, S-shaped profile).  A dwell stands still.  Each
+phase carries what the motor torque needs (:func:`axisopt.physics.drive.phase_torques`): its duration,
+the table acceleration at its start and end (linear in between, so a jerk-limited ramp is exact), the
+direction of motion (+1, -1, 0 at standstill), the external axial force opposing the motion and the
+largest speed reached.
+
+Pure Python on floats: the cycle is the axis's, the same for every design; the design enters only in the
+torque (inertia, lead, friction), so the phases are built once per axis.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Segment:
+    """One entry of a duty cycle (SI).  ``kind`` 'move' or 'dwell'."""
+
+    kind: str
+    distance: float = 0.0  # signed [m] (move)
+    speed: float = 0.0  # cruise speed, magnitude [m/s] (move)
+    acceleration: float = 0.0  # [m/s^2] (move)
+    jerk: float | None = None  # [m/s^3] (move); None: trapezoidal
+    duration: float = 0.0  # [s] (dwell)
+    force: float = 0.0  # external axial force opposing the motion [N] (a dwell: held against gravity's side)
+
+
+@dataclass(frozen=True)
+class Phase:
+    """A piece of the cycle with linearly varying acceleration."""
+
+    duration: float  # [s]
+    a0: float  # table acceleration at the start [m/s^2], signed
+    a1: float  # ... at the end
+    direction: float  # +1, -1, or 0 (standstill)
+    force: float  # external axial force opposing the motion [N]
+    speed: float  # largest |speed| in the phase [m/s]
+
+
+def ramp(speed: float, acceleration: float, jerk: float | None) -> tuple[list, float, float]:
+    """Acceleration pieces [(duration, a0, a1)] taking the table from rest to ``speed``, and the time and
+    distance this takes.  With jerk: a jerk-limited (S-curve) ramp, which reaches the full acceleration only
+    when ``speed >= acceleration**2 / jerk``."""
+    if speed <= 0.0 or acceleration <= 0.0:  # no acceleration given: speed changes count as instantaneous
+        return [], 0.0, 0.0
+    if jerk is None or not math.isfinite(jerk):
+        t = speed / acceleration
+        return [(t, acceleration, acceleration)], t, 0.5 * speed * t
+    a_peak = min(acceleration, math.sqrt(speed * jerk))
+    tj = a_peak / jerk
+    tc = speed / a_peak - tj  # at constant acceleration
+    pieces = [(tj, 0.0, a_peak)] + ([(tc, a_peak, a_peak)] if tc > 0.0 else []) + [(tj, a_peak, 0.0)]
+    t = 2.0 * tj + max(tc, 0.0)
+    return pieces, t, 0.5 * speed * t  # symmetric S-ramp: mean speed is half the final speed
+
+
+def move_phases(seg: Segment) -> list[Phase]:
+    """Phases of a point-to-point move (rest to rest)."""
+    dist = abs(seg.distance)
+    if dist == 0.0:
+        return []
+    s = 1.0 if seg.distance > 0 else -1.0
+    v = seg.speed
+    pieces, t_ramp, d_ramp = ramp(v, seg.acceleration, seg.jerk)
+    if v <= 0.0:
+        return []
+    if 2.0 * d_ramp > dist:  # never reaches the speed: the largest speed whose two ramps fit the distance
+        lo, hi = 0.0, v
+        for _ in range(80):
+            mid = 0.5 * (lo + hi)
+            if 2.0 * ramp(mid, seg.acceleration, seg.jerk)[2] > dist:
+                hi = mid
+            else:
+                lo = mid
+        v = lo
+        pieces, t_ramp, d_ramp = ramp(v, seg.acceleration, seg.jerk)
+    cruise = (dist - 2.0 * d_ramp) / v if v > 0 else 0.0
+    out = [Phase(t, s * a0, s * a1, s, seg.force, v) for t, a0, a1 in pieces if t > 0]
+    if cruise > 0:
+        out.append(Phase(cruise, 0.0, 0.0, s, seg.force, v))
+    out += [Phase(t, -s * a1, -s * a0, s, seg.force, v) for t, a0, a1 in reversed(pieces) if t > 0]
+    return out
+
+
+def cycle_phases(segments) -> tuple[Phase, ...]:
+    """All phases of a duty cycle, in order."""
+    out: list[Phase] = []
+    for seg in segments:
+        if seg.kind == "dwell":
+            if seg.duration > 0:
+                out.append(Phase(seg.duration, 0.0, 0.0, 0.0, seg.force, 0.0))
+        else:
+            out.extend(move_phases(seg))
+    return tuple(out)
+
+
+def rapid_cycle(stroke: float, speed: float, acceleration: float, jerk: float | None) -> tuple[Segment, ...]:
+    """The default cycle when none is given: a rapid move over the whole stroke and back, without dwell
+    (continuous reversing: a conservative duty for the RMS torque)."""
+    mv = dict(speed=speed, acceleration=acceleration, jerk=jerk)
+    return (Segment("move", distance=stroke, **mv), Segment("move", distance=-stroke, **mv))
+
+
+def cycle_time(phases) -> float:
+    return sum(ph.duration for ph in phases)
