@@ -40,8 +40,9 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
                                                       # allows user rows; add derived or paper to search those
       require: {screw: [id, ...], nut: id, bearing: [...], guide: [...], motor: [...], coupling: [...]}
       exclude: {guide: [id, ...]}
-      drive: yes                       # motor and coupling are search choices (default: yes when the catalog
-                                       # has motors; 'no' keeps the axis's motor_inertia/coupling values)
+      drive: yes                       # motor and coupling are search choices (default: yes when a motor or
+                                       # coupling filter/requirement below is given; 'no' keeps the axis's
+                                       # motor_inertia and coupling values and skips the drive checks)
       motor_vendors: [Yaskawa]         # the drive parts' own vendor and series filters ('vendors' is for
       motor_series: [Sigma-7 SGM7G]    # the mechanical parts)
       coupling_series: [...]
@@ -294,13 +295,15 @@ def _read_limits(sec: Section | None):
 def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Restrictions:
     has_motors = len(catalog.motors) > 0
     if sec is None:
-        return Restrictions(mountings=(axis.mounting,), drive=has_motors)
-    kw: dict = {"drive": has_motors}
+        return Restrictions(mountings=(axis.mounting,))
+    kw: dict = {}
     drive = sec.choice("drive", (True, False, "yes", "no"), None)
-    if drive is not None:
-        kw["drive"] = drive in (True, "yes")
-        if kw["drive"] and not has_motors:
-            raise sec.error("drive", "the catalogs have no motors (motors.csv)")
+    # the drive is searched when asked for: 'drive: yes', or a motor/coupling filter or requirement
+    asked = any(sec.has(k) for k in ("motor_vendors", "motor_series", "coupling_series")) or any(
+        s.has(slot) for k in ("require",) if sec.has(k) for s in [sec.section(k)] for slot in ("motor", "coupling"))
+    kw["drive"] = drive in (True, "yes") if drive is not None else asked
+    if kw["drive"] and not has_motors:
+        raise sec.error("drive", "the catalogs have no motors (motors.csv)")
     for key, table, col in (("motor_vendors", "motors", "vendor"), ("motor_series", "motors", "series"),
                             ("coupling_series", "couplings", "series")):
         vals = sec.string_list(key, None)

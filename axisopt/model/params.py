@@ -100,6 +100,13 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
     return p
 
 
+def one_design(p: dict, i: int = 0) -> dict:
+    """Design ``i`` of a flat parameter dict as floats (the duty cycle carried along)."""
+    out = {k: float(np.asarray(p[k]).ravel()[i] if np.ndim(p[k]) else p[k]) for k in PARAM_NAMES}
+    out["duty"] = p.get("duty", ())
+    return out
+
+
 def drive_params(axis, motor, coupling) -> dict:
     """Motor, coupling and reduction parameters (SI).  Missing parts: the axis values, checks off."""
     col = _getter

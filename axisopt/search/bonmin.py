@@ -1,7 +1,8 @@
 """Reference method: the whole problem as one MINLP for CasADi + Bonmin (a heuristic on this
 nonconvex problem).
 
-One-hot binaries choose the nut (which fixes the screw), the bearing arrangement and the guide; each
+One-hot binaries choose the nut (which fixes the screw), the bearing arrangement and the guide (with the
+drive: one binary per guide-and-drive entry of the space's last axis); each
 part parameter is the binary-weighted sum of the catalog column, so the symbolic
 :func:`axisopt.model.axis_response` is evaluated on a mixture that is exact at integer points.  The
 nut preload is ``lo(z) + w (hi(z) - lo(z))`` with w in [0, 1].  The objective is an epigraph variable
@@ -51,6 +52,8 @@ def _slot_params(space, mounting):
     ps = space.params_structured(mounting)
     out = {}
     for name, v in ps.items():
+        if name == "duty":
+            continue
         a = np.asarray(v, dtype=float)
         if a.ndim == 0 or a.size == 1:
             out[name] = ("axis", float(a.reshape(-1)[0]) if a.ndim else float(a))
@@ -74,6 +77,7 @@ def _build(space, mounting, constraints, objective):
         # stiffness, diameter or preload is exactly 0 at the z = 0 points Bonmin visits (NaN derivatives
         # of cube roots and 1/k otherwise); the chosen design is re-evaluated exactly afterwards
         p[name] = vals if slot == "axis" else ca.dot(ca.DM(vals), z[slot]) + 1e-6 * float(np.mean(vals))
+    p["duty"] = space.problem.axis_for(mounting).phases
     lo = ca.dot(ca.DM(space.preload_lo), z["nut"]) + 1e-6 * float(np.mean(space.preload_hi))
     hi = ca.dot(ca.DM(space.preload_hi), z["nut"]) + 1e-6 * float(np.mean(space.preload_hi))
     x = space.positions(mounting)
@@ -89,7 +93,7 @@ def _build(space, mounting, constraints, objective):
         lbg += [0.0] * v.shape[0]
         ubg += [ca.inf] * v.shape[0]
     for c in constraints:
-        v = out[c.key]
+        v = ca.SX(out[c.key])  # a drive check without a motor is a constant
         if c.key == "life" or c.key.startswith("margin_"):
             e = ca.log(ca.fmax(v, 1e-300) / c.limit)
         elif c.limit <= 0:  # e.g. max_backlash 0: the value in display units must be <= 0

@@ -277,9 +277,7 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
         mi, n, b, g = (int(v) for v in space.unravel(combo))
         mounting = space.mountings[mi]
         p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))
-        p1 = {k: (float(np.asarray(v).ravel()[0]) if np.ndim(v) else float(v)) for k, v in p.items()
-              if k != "duty"}
-        p1["duty"] = p["duty"]
+        p1 = model.one_design(p)
         lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
         res = nlp.solve_preload(mounting, space.positions(mounting), p1, lo, hi, constraints, objective,
                                 guess=float(ex.preload[j]))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -89,3 +90,30 @@ def make_problem(catalog, *, mode="stiffness", mountings=("fixed-supported", "fi
                    restrictions=Restrictions(mountings=tuple(mountings)), name="synthetic")
 
 
+
+
+def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2) -> Catalog:
+    """Give a synthetic catalog servo motors (peak 3 x rated, some with a holding brake) and couplings."""
+    motors, couplings = [], []
+    for i in range(n_motors):
+        t = rng.uniform(2.0, 15.0)
+        j = rng.uniform(2e-4, 3e-3)
+        brake = bool(rng.random() < 0.6)
+        motors.append({"id": f"M{i}", "vendor": "V", "series": "synthetic", "rated_power": t * 300.0,
+                       "rated_torque": t, "peak_torque": 3.0 * t, "rated_speed": 2000 * RPM,
+                       "max_speed": rng.uniform(2500, 6000) * RPM, "rotor_inertia": j,
+                       "rotor_inertia_brake": 1.1 * j if brake else math.nan,
+                       "brake_torque": 1.5 * t if brake else math.nan, "mass": math.nan, "flange": math.nan,
+                       "price": 200 + 80 * t})
+    for i in range(n_couplings):
+        couplings.append({"id": f"C{i}", "vendor": "V", "series": "synthetic", "rated_torque": rng.uniform(30, 200),
+                          "torsional_stiffness": rng.uniform(2e4, 3e5), "inertia": rng.uniform(1e-4, 1e-3),
+                          "max_speed": 8000 * RPM, "bore_min": 0.01, "bore_max": 0.04, "mass": math.nan,
+                          "price": rng.uniform(60, 250)})
+
+    def df(rows, name):
+        d = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]))
+        d["_source"] = "synthetic"
+        return d.set_index("id", drop=False)
+
+    return dataclasses.replace(catalog, motors=df(motors, "motors"), couplings=df(couplings, "couplings"))

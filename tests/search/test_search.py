@@ -8,8 +8,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from search_synthetic import make_catalog, make_double, make_problem
+from search_synthetic import add_drives, make_catalog, make_double, make_problem
 
+from axisopt import model
 from axisopt.cli import main
 from axisopt.errors import InputError
 from axisopt.problem import Objective, load_problem
@@ -54,6 +55,44 @@ def test_default_equals_exhaustive_randomized(seed, mode):
         c = d.certificate
         assert c.pruned_by_bound + c.exact_evaluations == c.feasible
         assert c.combinations == e.certificate.combinations == build_space(p).size
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 5, 7])
+def test_default_equals_exhaustive_with_drive(seed):
+    """Motor and coupling as search choices: the default method equals exhaustive enumeration, on horizontal
+    and vertical axes (gravity makes the motor-torque limits convex, not monotone, in the nut preload: the
+    drag helps when lowering) and with a duty cycle of cutting moves and dwells."""
+    from dataclasses import replace
+
+    from axisopt.physics.motion import Segment
+
+    rng = np.random.default_rng(100 + seed)
+    cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
+    make_double(cat)
+    cat = add_drives(cat, rng, n_motors=4, n_couplings=2)
+    vertical = seed % 2 == 1
+    duty = () if seed < 2 else (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+                                Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=2500.0),
+                                Segment("dwell", duration=1.0),
+                                Segment("move", distance=-0.2, speed=0.3, acceleration=4.0))
+    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
+    mass = rng.uniform(60, 150) if vertical else rng.uniform(150, 400)
+    p = make_problem(cat, limits=limits, moving_mass=float(mass), axial_load=1500.0 if vertical else 3000.0,
+                     orientation="vertical" if vertical else "horizontal", duty_cycle=duty)
+    p = replace(p, restrictions=replace(p.restrictions, drive=True),
+                margins=tuple((c, 1.0) for c in model.CHECKS))
+    sp = build_space(p)
+    assert sp.n_drives > 1 and sp.size == 2 * 8 * 4 * 3 * sp.n_drives
+    d = solve(p, "default", top=2, sensitivities=False)
+    e = solve(p, "exhaustive", top=2, sensitivities=False)
+    assert (d.best is None) == (e.best is None)
+    assert d.best is not None  # the seeds are chosen so that each case has a drive-limited optimum
+    if d.best is not None:
+        _same(d, e)
+        assert d.best.motor and d.best.coupling
+        ev = model.evaluate(d.best.design)
+        for c in model.DRIVE_CHECKS:
+            assert model.passes(ev.values[f"margin_{c}"]), c
 
 
 def _interior(p, key):
@@ -101,7 +140,7 @@ def test_ipopt_agrees_with_exact_1d_solve():
     for j in rng.choice(np.nonzero(ex.feasible)[0], size=4, replace=False):
         m, n, b, g = (int(v) for v in sp.unravel(ex.idx[j]))
         prm = sp.params_flat(sp.mountings[m], np.array([n]), np.array([b]), np.array([g]))
-        prm = {k: float(np.asarray(v).ravel()[0]) for k, v in prm.items()}
+        prm = model.one_design(prm)
         r = nlp.solve_preload(sp.mountings[m], sp.positions(sp.mountings[m]), prm, sp.preload_lo[n],
                               sp.preload_hi[n], cons, spec, guess=0.5 * (sp.preload_lo[n] + sp.preload_hi[n]))
         assert r.success, r.status
