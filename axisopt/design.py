@@ -13,6 +13,7 @@ from functools import cached_property
 from pathlib import Path
 
 from .catalog import OPTIONAL_COLUMNS, SCHEMA, Catalog, default_catalog
+from .errors import InputError
 from .physics import motion
 from .units import unit_factor
 from .yamlio import Section, read_yaml

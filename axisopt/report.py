@@ -96,9 +96,13 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.append(f"design {d.name}: {a.mounting}, stroke {a.stroke * 1e3:.0f} mm, "
                  f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks), span {a.span * 1e3:.0f} mm")
     lines.append(f"  screw {ids['screw']}  nut {ids['nut']} (preload {d.preload:.0f} N)  "
-                 f"bearings {ids['bearing']}  guides {ids['guide']} x{a.guide_blocks}")
-    if d.assumed:
-        lines.append(f"  defaults used for: {', '.join(d.assumed)}")
+                 f"bearings {ids['bearing']}  guides {ids['guide']} x{a.guide_blocks}"
+                 + (f"  motor {ids['motor']}" if "motor" in ids else "")
+                 + (f"  coupling {ids['coupling']}" if "coupling" in ids else ""))
+    assumed = [k for k in d.assumed if not ((k == "motor_inertia" and d.motor is not None)
+                                            or (k.startswith("coupling_") and d.coupling is not None))]
+    if assumed:
+        lines.append(f"  defaults used for: {', '.join(assumed)}")
     lines.append("")
     i_min = ev.i_min
     k_tot = float(v["k_total"][i_min])

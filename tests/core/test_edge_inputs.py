@@ -98,3 +98,38 @@ def test_diagnose_positions_off_the_stroke_are_refused(tmp_path, capsys):
     p.write_text("\n".join(lines) + "\n")
     assert main(["diagnose", str(p), "--design", str(data / "table_x.yaml")]) == 2
     assert "line 4, column position" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("  motor: SGM7G-13A", "  motor: SGM7G-13X", "SGM7G-13A"),  # unknown id: names the closest
+    ("  axial_load: 3000 N\n", "  axial_load: 3000 N\n  duty_cycle:\n    - {dwell: -2 s}\n", "must be positive"),
+    ("  axial_load: 3000 N\n", "  axial_load: 3000 N\n  duty_cycle:\n    - {move: 100 mm, sped: 2 m/min}\n",
+     "unknown key 'axis.duty_cycle[0].sped'"),
+    ("  axial_load: 3000 N\n", "  axial_load: 3000 N\n  duty_cycle:\n    - {move: 5 m}\n", "longer than the stroke"),
+    ("  axial_load: 3000 N\n", "  axial_load: 3000 N\n  duty_cycle:\n    - {move: 100 mm, dwell: 1 s}\n",
+     "'move' or a 'dwell'"),
+    ("  axial_load: 3000 N\n", "  axial_load: 3000 N\n  reduction_efficiency: 1.5\n", "reduction_efficiency"),
+    ("  axial_load: 3000 N\n", "  axial_load: 3000 N\n  brake: maybe\n", "brake"),
+])
+def test_bad_drive_input_is_a_one_line_error(tmp_path, capsys, old, new, words):
+    text = DESIGN.read_text()
+    assert old in text
+    bad = tmp_path / "d.yaml"
+    bad.write_text(text.replace(old, new, 1))
+    assert main(["evaluate", str(bad)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert words in err and "\n" not in err and str(bad) in err
+
+
+def test_motor_row_with_peak_below_rated_is_refused(tmp_path, capsys):
+    d = tmp_path / "cat"
+    shutil.copytree(SHIPPED_DIR, d)
+    p = d / "motors.csv"
+    lines = p.read_text().splitlines()
+    cells = lines[1].split(",")
+    cells[5] = "0.01"  # peak_torque below rated_torque
+    lines[1] = ",".join(cells)
+    p.write_text("\n".join(lines) + "\n")
+    with pytest.raises(Exception, match="peak_torque") as exc:
+        load_catalogs([d], shipped=False)
+    assert "motors.csv" in str(exc.value) and "\n" not in str(exc.value)
