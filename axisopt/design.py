@@ -318,7 +318,7 @@ _OUT_UNITS = {
     "acceleration": "m/s^2", "jerk": "m/s^3", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
     "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
     "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad",
-    "temperature_difference": "K",
+    "temperature_difference": "K", "power": "W",
 }
 
 

@@ -29,7 +29,7 @@ def small_study(tmp_path) -> Path:
         sweep:
           axis.stroke: [300 mm, 500 mm, 700 mm]
           catalog.mountings: [[fixed-supported], [fixed-supported, fixed-fixed]]
-          limits.max_cost: [2500 EUR, 600 EUR]
+          limits.max_cost: [3500 EUR, 600 EUR]
         """)
 
 
