@@ -23,7 +23,8 @@ from .params import PARAM_NAMES, axis_params, one_design, positions
 from .response import axis_response
 
 __all__ = [
-    "CHECKS", "CHECK_LABELS", "DRIVE_CHECKS", "COMPONENTS", "passes", "PARAM_NAMES", "PROFILE_OUTPUTS", "SCALAR_OUTPUTS",
+    "CHECKS", "CHECK_LABELS", "DRIVE_CHECKS", "COMPONENTS", "passes", "PARAM_NAMES", "PROFILE_OUTPUTS",
+    "SCALAR_OUTPUTS",
     "SCREW_EFFICIENCY",
     "STEEL_DAMPING", "AxisModel", "Evaluation", "axis_params", "axis_response", "design_params", "evaluate",
     "model_for", "one_design", "positions",

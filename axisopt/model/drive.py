@@ -81,7 +81,8 @@ def drive(p, moving_mass, drag) -> dict:
     out = {f"margin_{k}": v for k, v in margins.items()}
     out.update({
         "load_inertia": j_load, "total_inertia": j_tot, "inertia_ratio": ratio, "motor_speed": n_motor,
-        "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean, "holding_torque": hold,
+        "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean,
+        "holding_torque": hold,
         "friction_torque": friction, "gravity_torque": gravity, "duty_time": sum(durations),
         "duty_torques": torques,
     })

@@ -22,7 +22,8 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "bearing_static_load", "screw_compression", "backlash", "life", "bearing_life", "guide_life",
                   "screw_speed", "critical_speed", "buckling_load", "yield_load", "dn", "nut_lift_off_force",
                   "bearing_max_load", "load_inertia", "total_inertia", "inertia_ratio", "motor_speed", "peak_torque",
-                  "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque", "gravity_torque",
+                  "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque",
+                  "gravity_torque",
                   "duty_time") + tuple(f"margin_{c}" for c in CHECKS)
 
 

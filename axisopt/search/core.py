@@ -253,7 +253,8 @@ def make_candidate(space: Space, combo: int, preload: float, objective: Objectiv
     lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
     preload = float(min(max(preload, lo), hi))
     design = Design(axis=space.problem.axis_for(mounting), screw=screw, nut=nut, bearing=bearing, guide=guide,
-                    motor=motor, coupling=coupling, nut_preload=preload, name=name or f"{space.problem.name}-{rank or 'design'}",
+                    motor=motor, coupling=coupling, nut_preload=preload,
+                    name=name or f"{space.problem.name}-{rank or 'design'}",
                     source=space.problem.source, assumed=space.problem.assumed)
     ev = model.evaluate(design)
     v = ev.values

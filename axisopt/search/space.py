@@ -506,7 +506,6 @@ def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
 def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
     """For a convex limit: (exists, low end, high end) of the preloads in [lo, hi] meeting it, found without
     assuming anything but convexity (golden section for a feasible point, then a bisection to each side)."""
-    K = len(lo)
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
 
     def value(pj, pre):
