@@ -292,6 +292,20 @@ def _read_limits(sec: Section | None):
     return tuple(sorted(limits.items())), tuple(margins.items())
 
 
+def _catalog_names(sec: Section, key: str, known) -> tuple | None:
+    """A non-empty list of names under ``key``, each one of ``known()`` (None when the key is absent)."""
+    vals = sec.string_list(key, None)
+    if vals is None:
+        return None
+    if not vals:
+        raise sec.error(key, f"list at least one value, or leave '{key}' out to allow all")
+    names = known()
+    for v in vals:
+        if v not in names:
+            raise sec.error(key, f"'{v}' is not in the catalog ({', '.join(map(str, names))})")
+    return tuple(vals)
+
+
 def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Restrictions:
     has_motors = len(catalog.motors) > 0
     if sec is None:
@@ -299,23 +313,17 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
     kw: dict = {}
     drive = sec.choice("drive", (True, False, "yes", "no"), None)
     # the drive is searched when asked for: 'drive: yes', or a motor/coupling filter or requirement
-    asked = any(sec.has(k) for k in ("motor_vendors", "motor_series", "coupling_series")) or any(
-        s.has(slot) for k in ("require",) if sec.has(k) for s in [sec.section(k)] for slot in ("motor", "coupling"))
+    req = sec.node.value.get("require")
+    asked = any(sec.has(k) for k in ("motor_vendors", "motor_series", "coupling_series")) or (
+        req is not None and isinstance(req.value, dict) and bool({"motor", "coupling"} & set(req.value)))
     kw["drive"] = drive in (True, "yes") if drive is not None else asked
     if kw["drive"] and not has_motors:
         raise sec.error("drive", "the catalogs have no motors (motors.csv)")
     for key, table, col in (("motor_vendors", "motors", "vendor"), ("motor_series", "motors", "series"),
                             ("coupling_series", "couplings", "series")):
-        vals = sec.string_list(key, None)
-        if vals is None:
-            continue
-        known = sorted(set(catalog.table(table)[col]))
-        if not vals:
-            raise sec.error(key, f"list at least one value, or leave '{key}' out to allow all")
-        for v in vals:
-            if v not in known:
-                raise sec.error(key, f"'{v}' is not in the catalog ({', '.join(map(str, known))})")
-        kw[key] = tuple(vals)
+        vals = _catalog_names(sec, key, lambda t=table, c=col: sorted(set(catalog.table(t)[c])))
+        if vals is not None:
+            kw[key] = vals
     mounts = sec.string_list("mountings", None)
     if mounts is not None:
         for m in mounts:
@@ -332,24 +340,19 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
                             ("bearing_preload", "bearings", "preload_class"),
                             ("guide_types", "guides", "type"),
                             ("guide_preload", "guides", None), ("status", "status", None)):
-        vals = sec.string_list(key, None)
-        if vals is None:
-            continue
-        if table is None:
-            known = vendors_all
-        elif table == "status":
-            known = STATUSES
-        elif col is None:
-            g = catalog.guides
-            known = sorted(set(g["preload_level"]) | set(g["preload_class"]))
-        else:
-            known = sorted(set(catalog.table(table)[col]))
-        if not vals:
-            raise sec.error(key, f"list at least one value, or leave '{key}' out to allow all")
-        for v in vals:
-            if v not in known:
-                raise sec.error(key, f"'{v}' is not in the catalog ({', '.join(map(str, known))})")
-        kw[key] = tuple(vals)
+        def known(table=table, col=col):
+            if table is None:
+                return vendors_all
+            if table == "status":
+                return STATUSES
+            if col is None:
+                g = catalog.guides
+                return sorted(set(g["preload_level"]) | set(g["preload_class"]))
+            return sorted(set(catalog.table(table)[col]))
+
+        vals = _catalog_names(sec, key, known)
+        if vals is not None:
+            kw[key] = vals
     for key in ("require", "exclude"):
         s = sec.section(key)
         if s is None:

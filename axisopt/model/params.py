@@ -46,7 +46,6 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
     col = _getter
     mounting = axis.mounting
     torque = col(bearing, "starting_torque")
-    listed = np.isfinite(torque)
     p = {
         "stroke": axis.stroke, "start_offset": axis.start_offset, "span": axis.span,
         "table_mass": axis.moving_mass, "acceleration": axis.acceleration, "max_speed": axis.max_speed,
@@ -80,8 +79,8 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "bearing_price": col(bearing, "price"), "bearing_dynamic_load": col(bearing, "dynamic_load_rating"),
         "bearing_bore": col(bearing, "bore"),
         # starting torque of the support unit where its vendor lists it (eq. 40 otherwise)
-        "bearing_torque": np.where(listed, torque, 0.0) if np.ndim(torque) else (float(torque) if listed else 0.0),
-        "bearing_torque_listed": listed.astype(float) if np.ndim(listed) else float(listed),
+        "bearing_torque": _listed_or(torque, 0.0),
+        "bearing_torque_listed": np.isfinite(torque) * 1.0,
         "guide_normal_stiffness": col(guide, "normal_rigidity"),
         "guide_tangential_stiffness": col(guide, "tangential_rigidity"),
         "guide_friction_force": col(guide, "friction_force"),
@@ -119,13 +118,10 @@ def drive_params(axis, motor, coupling) -> dict:
         q.update({"has_motor": 0.0, "motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0,
                   "motor_brake_torque": 0.0, "motor_price": 0.0})
     else:
-        j = col(motor, "rotor_inertia")
-        jb = col(motor, "rotor_inertia_brake")
+        rotor = col(motor, "rotor_inertia")
         if axis.brake_used:  # the brake adds its inertia (catalog value; the plain rotor where none is listed)
-            j = np.where(np.isfinite(jb), jb, j) if np.ndim(jb) else (jb if np.isfinite(jb) else j)
-        brake = col(motor, "brake_torque")
-        brake = np.where(np.isfinite(brake), brake, 0.0) if np.ndim(brake) else (brake if np.isfinite(brake) else 0.0)
-        rotor = j
+            rotor = _listed_or(col(motor, "rotor_inertia_brake"), rotor)
+        brake = _listed_or(col(motor, "brake_torque"), 0.0)
         q.update({"has_motor": 1.0, "motor_rated_torque": col(motor, "rated_torque"),
                   "motor_peak_torque": col(motor, "peak_torque"), "motor_max_speed": col(motor, "max_speed"),
                   "motor_brake_torque": brake, "motor_price": col(motor, "price")})
@@ -141,6 +137,12 @@ def drive_params(axis, motor, coupling) -> dict:
     # motor side of the drive-train model, seen from the screw through the reduction
     q["motor_inertia"] = (rotor + axis.reduction_inertia) * ratio**2
     return q
+
+
+def _listed_or(value, fallback):
+    """A catalog column where it is listed (finite), ``fallback`` where it is empty; float or array."""
+    out = np.where(np.isfinite(value), value, fallback)
+    return out if np.ndim(out) else float(out)
 
 
 def _compliance(stiffness):

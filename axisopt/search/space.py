@@ -314,21 +314,8 @@ def build_space(problem: Problem) -> Space:
         guides = guides[guides["type"].isin(r.guide_types)]
     if r.guide_preload is not None:
         guides = guides[guides["preload_level"].isin(r.guide_preload) | guides["preload_class"].isin(r.guide_preload)]
-    for slot, df_name in (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides")):
-        req, exc = r.required(slot), r.excluded(slot)
-        df = {"screws": screws, "nuts": nuts, "bearings": bearings, "guides": guides}[df_name]
-        if req:
-            df = df[df.index.isin(req)]
-        if exc:
-            df = df[~df.index.isin(exc)]
-        if df_name == "screws":
-            screws = df
-        elif df_name == "nuts":
-            nuts = df
-        elif df_name == "bearings":
-            bearings = df
-        else:
-            guides = df
+    screws, nuts = _filtered(screws, r, "screw"), _filtered(nuts, r, "nut")
+    bearings, guides = _filtered(bearings, r, "bearing"), _filtered(guides, r, "guide")
     nuts = nuts[nuts["screw_id"].isin(screws.index)]
     # the problem's preload bounds are for preloaded nuts; a single nut keeps its catalog range
     single = (nuts["type"] == "single").to_numpy()
@@ -354,6 +341,7 @@ def build_space(problem: Problem) -> Space:
 
 
 def _filtered(df, r, slot, series=None, vendors=None):
+    """Rows of a part table the problem allows in ``slot``: vendor and series filters, require, exclude."""
     if vendors is not None:
         df = df[df["vendor"].isin(vendors)]
     if series is not None:
@@ -506,24 +494,35 @@ def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
 def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
     """For a convex limit: (exists, low end, high end) of the preloads in [lo, hi] meeting it, found without
     assuming anything but convexity (golden section for a feasible point, then a bisection to each side)."""
+    K = len(lo)
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
 
     def value(pj, pre):
         return _vec(c.value(respond(pj, x1, mounting, pre[:, None])), len(pre))
 
-    best = _golden_best(lambda pre: value(p, pre), lo.copy(), hi.copy())
-    ok_lo, ok_hi, ok_b = (c.ok(value(p, v)).astype(bool) for v in (lo, hi, best))
-    start = np.where(ok_lo, lo, np.where(ok_hi, hi, best))
-    exists = ok_lo | ok_hi | ok_b
+    ok_lo, ok_hi = (c.ok(value(p, v)).astype(bool) for v in (lo, hi))
+    start = np.where(ok_lo, lo, hi)
+    exists = ok_lo | ok_hi
+    g = np.nonzero(~exists)[0]  # met at neither end: look for the most favourable preload in between
+    if len(g):
+        pg = subset(p, g, K)
+        best = _golden_best(lambda pre: value(pg, pre), lo[g], hi[g])
+        exists[g] = c.ok(value(pg, best)).astype(bool)
+        start[g] = best
     ends = []
-    for edge in (lo, hi):
-        a, z = start.copy(), edge.copy()
-        for _ in range(BISECTION_STEPS):
-            mid = 0.5 * (a + z)
-            good = c.ok(value(p, mid)).astype(bool)
-            a = np.where(good, mid, a)
-            z = np.where(good, z, mid)
-        ends.append(np.where(c.ok(value(p, edge)).astype(bool), edge, a))
+    for edge, ok_edge in ((lo, ok_lo), (hi, ok_hi)):
+        end = edge.copy()
+        j = np.nonzero(exists & ~ok_edge)[0]  # the interval stops short of this edge: bisect for its end
+        if len(j):
+            pj = subset(p, j, K)
+            a, z = start[j], edge[j]
+            for _ in range(BISECTION_STEPS):
+                mid = 0.5 * (a + z)
+                good = c.ok(value(pj, mid)).astype(bool)
+                a = np.where(good, mid, a)
+                z = np.where(good, z, mid)
+            end[j] = a
+        ends.append(end)
     return exists, ends[0], ends[1]
 
 
