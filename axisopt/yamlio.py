@@ -51,8 +51,8 @@ def read_yaml(path) -> Node:
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read file ({exc.__class__.__name__}: {exc.strerror or exc})", source=src) \
-            from None
+        why = getattr(exc, "strerror", None) or exc  # a decoding error has no strerror
+        raise InputError(f"cannot read file ({exc.__class__.__name__}: {why})", source=src) from None
     return parse_yaml_text(text, src)
 
 

@@ -133,3 +133,11 @@ def test_motor_row_with_peak_below_rated_is_refused(tmp_path, capsys):
     with pytest.raises(Exception, match="peak_torque") as exc:
         load_catalogs([d], shipped=False)
     assert "motors.csv" in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_yaml_that_is_not_utf8_is_a_one_line_error(tmp_path, capsys):
+    bad = tmp_path / "d.yaml"
+    bad.write_bytes(DESIGN.read_text().encode("utf-16"))
+    assert main(["evaluate", str(bad)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "cannot read file" in err and "UnicodeDecodeError" in err and "\n" not in err
