@@ -53,3 +53,14 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
         out.update(drive_train_modes(p, chain, modes["m_eff"]))
         out.update(damping(p, chain, modes["m_eff"]))
     return out
+
+
+def drive_response(p: dict, preload) -> dict:
+    """The motor and coupling outputs of :func:`axis_response` alone (masses, loads, drag, drive): the same
+    sub-assemblies, without the stiffness chain and the modes, for the searches' repeated solves of the
+    preload against the motor-torque limits (which depend on the preload through the nut's drag only)."""
+    m = masses(p)
+    loads = axial_loads(p, m["moving_mass"])
+    out = drag_torque(p, preload, loads)
+    out.update(drive(p, m["moving_mass"], out["drag_torque"]))
+    return out

@@ -14,10 +14,11 @@ Default method
        and cross-checked against the 1-D solve.
 
 Exhaustive method
-    Every combination, no bounds and no screening: the preload problem of each is solved on a grid
-    of preloads plus bisection of the feasibility boundary next to the best grid point (this does not
-    assume that the objective grows with the preload), chunked and vectorized.  IPOPT polishes the
-    winners as in the default method.
+    Every combination, no bounds and no screening: each limit is checked exactly on every combination
+    (the preload-dependent ones by their own bisection, the motor-torque ones by their interval), and the
+    preload problem of each combination that some preload can make feasible is solved on a grid of that
+    feasible interval (this does not assume that the objective grows with the preload), chunked and
+    vectorized.  IPOPT polishes the winners as in the default method.
 """
 
 from __future__ import annotations
@@ -180,12 +181,16 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
         res.moving_mass[sel] = _vec(out_lo["moving_mass"], k)
         low, up = lo.copy(), hi.copy()
         for c in dep:
+            w = np.nonzero(ok)[0]  # only the combinations every limit so far allows (exact, not a bound)
+            if not len(w):
+                break
+            pw = subset(p, w, k)
             xc = x if c.profile else x[-1:]
             if c.convex:  # a motor-torque limit: met on an interval of preloads
-                ex, a_lo, a_hi = convex_interval(c, p, xc, mounting, lo, hi)
-                ok &= ex
-                low = np.where(ex, np.maximum(low, a_lo), low)
-                up = np.where(ex, np.minimum(up, a_hi), up)
+                ex, a_lo, a_hi = convex_interval(c, pw, xc, mounting, lo[w], hi[w])
+                ok[w] &= ex
+                low[w] = np.where(ex, np.maximum(low[w], a_lo), low[w])
+                up[w] = np.where(ex, np.minimum(up[w], a_hi), up[w])
                 continue
             ok_lo = _ok_all([c], out_lo, k)
             ok_hi = _ok_all([c], out_hi, k)
@@ -214,21 +219,31 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
         ok &= low <= up
         best_obj = np.full(k, -np.inf)
         best_pre = np.full(k, np.nan)
-        for t in np.linspace(0.0, 1.0, n_grid):
-            pre = np.where(ok, low + t * (up - low), lo)
-            out = respond(p, x, mounting, pre[:, None])
-            good = ok & _ok_all(constraints, out, k)
-            J = np.broadcast_to(objective.value(out), (k,))
-            better = good & (J > best_obj)
-            best_obj = np.where(better, J, best_obj)
-            best_pre = np.where(better, pre, best_pre)
+        w = np.nonzero(ok)[0]  # the grid runs on the combinations with a feasible preload interval
+        if len(w):
+            pw = subset(p, w, k)
+            bo, bp = np.full(len(w), -np.inf), np.full(len(w), np.nan)
+            for t in np.linspace(0.0, 1.0, n_grid):
+                pre = low[w] + t * (up[w] - low[w])
+                out = respond(pw, x, mounting, pre[:, None])
+                good = _ok_all(constraints, out, len(w))
+                J = np.broadcast_to(objective.value(out), (len(w),))
+                better = good & (J > bo)
+                bo = np.where(better, J, bo)
+                bp = np.where(better, pre, bp)
+            best_obj[w], best_pre[w] = bo, bp
         feas = np.isfinite(best_obj)
-        out = respond(p, x, mounting, np.where(feas, best_pre, lo)[:, None])
         res.feasible[sel] = feas
         res.objective[sel] = best_obj
         res.preload[sel] = best_pre
-        res.min_stiffness[sel] = np.where(feas, _vec(np.min(out["k_total"], axis=-1), k) / N_PER_UM, np.nan)
-        res.min_frequency[sel] = np.where(feas, _vec(np.min(out["f1"], axis=-1), k), np.nan)
+        ks, fs = np.full(k, np.nan), np.full(k, np.nan)
+        f = np.nonzero(feas)[0]
+        if len(f):
+            out = respond(subset(p, f, k), x, mounting, best_pre[f][:, None])
+            ks[f] = _vec(np.min(out["k_total"], axis=-1), len(f)) / N_PER_UM
+            fs[f] = _vec(np.min(out["f1"], axis=-1), len(f))
+        res.min_stiffness[sel] = ks
+        res.min_frequency[sel] = fs
     return res
 
 

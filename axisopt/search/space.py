@@ -177,6 +177,12 @@ def respond(p, x, mounting, preload) -> dict:
         return model.axis_response(p, x, mounting, preload, extras=False)
 
 
+def respond_drive(p, preload) -> dict:
+    """:func:`axisopt.model.drive_response` on numpy: the motor-torque limits without the stiffness chain."""
+    with np.errstate(divide="ignore"):
+        return model.drive_response(p, preload)
+
+
 def _arrays(df, cols):
     return {c: df[c].to_numpy(dtype=float) for c in cols}
 
@@ -463,7 +469,7 @@ def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
     lo, top = np.asarray(lo, float), np.asarray(top, float)
 
     def value(pj, pre):
-        return _vec(c.value(respond(pj, x1, mounting, pre[:, None])), len(pre))
+        return _vec(c.value(respond_drive(pj, pre[:, None])), len(pre))
 
     exists = c.ok(value(p, top)).astype(bool)
     pb = top.copy()
@@ -498,7 +504,7 @@ def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
 
     def value(pj, pre):
-        return _vec(c.value(respond(pj, x1, mounting, pre[:, None])), len(pre))
+        return _vec(c.value(respond_drive(pj, pre[:, None])), len(pre))
 
     ok_lo, ok_hi = (c.ok(value(p, v)).astype(bool) for v in (lo, hi))
     start = np.where(ok_lo, lo, hi)
