@@ -109,3 +109,21 @@ def rapid_cycle(stroke: float, speed: float, acceleration: float, jerk: float | 
 
 def cycle_time(phases) -> float:
     return sum(ph.duration for ph in phases)
+
+
+def phase_speeds(phases) -> list[tuple[float, float]]:
+    """Table speed magnitude at the start and end of each phase [m/s] (for torque-speed plots): the
+    acceleration integrated from rest, each move starting at rest; a cruise runs at its speed, a dwell at 0."""
+    out = []
+    v = 0.0
+    for ph in phases:
+        if ph.direction == 0:
+            v0 = v1 = 0.0
+        elif ph.a0 == 0.0 and ph.a1 == 0.0:
+            v0 = v1 = ph.speed
+        else:
+            v0 = v
+            v1 = min(max(v0 + ph.direction * 0.5 * (ph.a0 + ph.a1) * ph.duration, 0.0), ph.speed)
+        out.append((v0, v1))
+        v = v1
+    return out

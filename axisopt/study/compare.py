@@ -15,7 +15,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..model import CHECK_LABELS, CHECKS, Evaluation, evaluate, passes
-from ..report import N_PER_UM, evaluation_dict
+from ..report import N_PER_UM, RPM, drive_dict, evaluation_dict
 from ..yamlio import read_yaml
 
 
@@ -79,7 +79,7 @@ def _components(ev: Evaluation) -> dict:
 
 def compare_table(items) -> str:
     """The text table: one column per design, the weakest link of each marked with '<'."""
-    w0 = 44
+    w0 = 52
     width = max(16, *(min(30, len(c.label) + 2) for c in items))
     rows: list = []
 
@@ -98,8 +98,9 @@ def compare_table(items) -> str:
 
     row("mounting", each(lambda e: e.design.axis.mounting))
     row("stroke [mm]", each(lambda e: num(e.design.axis.stroke * 1e3, 0)))
-    for slot in ("screw", "nut", "bearing", "guide"):
-        row(slot, each(lambda e, s=slot: e.design.part_ids()[s]))
+    drives = [e for e in evs if e is not None and e.design.motor is not None]
+    for slot in ("screw", "nut", "bearing", "guide") + (("motor", "coupling") if drives else ()):
+        row(slot, each(lambda e, s=slot: e.design.part_ids().get(s, "-")))
     row("nut preload [N]", each(lambda e: num(e.design.preload, 0)))
     rows.append("")
     rows.append("stiffness [N/um]  (< weakest link)")
@@ -129,6 +130,25 @@ def compare_table(items) -> str:
     row("moving mass [kg]", each(lambda e: num(e["moving_mass"])))
     row("total mass [kg]", each(lambda e: num(e["total_mass"])))
     row("cost [EUR]", each(lambda e: num(e["cost"], 0)))
+    if drives:
+        rows.append("")
+        rows.append("drive (needed / available)")
+
+        def motor(fn):
+            return each(lambda e: fn(e, e.design.motor) if e.design.motor is not None else "no motor")
+
+        row("  peak torque [N.m]", motor(lambda e, m: f"{e['peak_torque']:.2f} / {m['peak_torque']:.3g}"))
+        row("  RMS or mean thrust torque [N.m]",
+            motor(lambda e, m: f"{max(e['rms_torque'], e['mean_thrust_torque']):.2f} / {m['rated_torque']:.3g}"))
+        row("  motor speed [rpm]",
+            motor(lambda e, m: f"{e['motor_speed'] * RPM:,.0f} / {m['max_speed'] * RPM:,.0f}"))
+        row("  inertia ratio load/rotor",
+            motor(lambda e, m: f"{e['inertia_ratio']:.2f} / {e.design.axis.max_inertia_ratio:g}"))
+        if any(e.design.axis.orientation == "vertical" for e in drives):
+            row("  holding torque x safety [N.m]", motor(
+                lambda e, m: "-" if e.design.axis.orientation != "vertical" else
+                f"{e['holding_torque'] * e.design.axis.brake_safety:.2f} / "
+                f"{(m['brake_torque'] if math.isfinite(float(m['brake_torque'])) else 0.0):.3g}"))
     rows.append("")
     rows.append("checks (margin, >= 1 passes)")
     for c in CHECKS:
@@ -187,6 +207,9 @@ def compare_rows(items) -> list:
                       "drag_torque [N.m]": d["drag_torque_Nm"], "moving_mass [kg]": d["moving_mass_kg"],
                       "total_mass [kg]": d["total_mass_kg"], "cost [EUR]": d["cost"],
                       "all_checks_pass": d["all_checks_pass"]})
+            for k, v in (drive_dict(e) or {}).items():
+                if k not in ("motor", "coupling"):
+                    r[f"drive_{k}"] = v
             for k, v in d["checks"].items():
                 r[f"margin_{k}"] = v["margin"]
         rows.append(r)

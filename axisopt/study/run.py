@@ -45,6 +45,7 @@ _SOLVE_LOCK = threading.Lock()
 def solve_case(context: dict, case: Case) -> dict:
     """Build and solve one case; never raises for a case-level failure (the reason is recorded)."""
     from ..model import evaluate
+    from ..report import drive_dict
     from ..search import solve
 
     t0 = time.perf_counter()
@@ -82,6 +83,11 @@ def solve_case(context: dict, case: Case) -> dict:
         f, fpos = ev.minimum("f1")
         rec["profile"] = {"min_stiffness_position_mm": kpos * 1e3, "min_frequency_position_mm": fpos * 1e3,
                           "weakest_link": ev.weakest, "all_checks_pass": bool(min(ev.checks().values()) >= 1.0)}
+        drv = drive_dict(ev)
+        if drv is not None:  # the motor's needs and its torque margins
+            rec["drive"] = {k: (_num(float(v)) if isinstance(v, (int, float)) else v) for k, v in drv.items()}
+            rec["drive"].update({f"margin_{k}": _num(float(ev[f"margin_{k}"]))
+                                 for k in ("motor_peak_torque", "motor_rated_torque")})
     c = res.certificate
     rec["certificate"] = {"proven": bool(c.proven), "gap": _num(c.gap), "combinations": int(c.combinations),
                           "feasible": int(c.feasible), "pruned_by_bound": int(c.pruned_by_bound),

@@ -23,6 +23,7 @@ RESULT_COLUMNS = (
     ("objective", ("objective", "value")), ("objective_unit", ("objective", "unit")),
     ("mounting", ("best", "mounting")), ("screw", ("best", "screw")), ("nut", ("best", "nut")),
     ("bearing", ("best", "bearing")), ("guide", ("best", "guide")),
+    ("motor", ("best", "motor")), ("coupling", ("best", "coupling")),
     ("nut_preload [N]", ("best", "nut_preload")),
     ("min_stiffness [N/um]", ("best", "min_stiffness")),
     ("min_stiffness_at [mm]", ("profile", "min_stiffness_position_mm")),
@@ -32,6 +33,10 @@ RESULT_COLUMNS = (
     ("cost [EUR]", ("best", "cost")), ("moving_mass [kg]", ("best", "moving_mass")),
     ("total_mass [kg]", ("best", "total_mass")), ("drag_torque [N.m]", ("best", "drag_torque")),
     ("life [h]", ("best", "life_h")),
+    ("peak_torque [N.m]", ("drive", "peak_torque_Nm")), ("rms_torque [N.m]", ("drive", "rms_torque_Nm")),
+    ("motor_speed [rpm]", ("drive", "motor_speed_rpm")), ("inertia_ratio", ("drive", "inertia_ratio")),
+    ("margin_motor_peak_torque", ("drive", "margin_motor_peak_torque")),
+    ("margin_motor_rated_torque", ("drive", "margin_motor_rated_torque")),
     ("proven", ("certificate", "proven")), ("gap", ("certificate", "gap")),
     ("combinations", ("certificate", "combinations")), ("feasible", ("certificate", "feasible")),
     ("nlps", ("certificate", "nlps")),
@@ -311,8 +316,10 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
                      f" | {_cell(r['cost [EUR]'], 0)} |")
         L.append("")
         L += ["## Parts chosen", ""]
-        for slot in ("mounting", "screw", "nut", "bearing", "guide"):
-            vc = ok[slot].value_counts().head(5)
+        for slot in ("mounting", "screw", "nut", "bearing", "guide", "motor", "coupling"):
+            vc = ok[slot].replace("", None).dropna().value_counts().head(5)
+            if slot in ("motor", "coupling") and vc.empty:
+                continue
             L.append(f"- {slot}: " + ", ".join(f"{k} ({v})" for k, v in vc.items()))
         L.append("")
     bad = df[~df["status"].isin(OK_STATUSES)]

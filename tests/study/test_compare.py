@@ -44,3 +44,25 @@ def test_compare_json_to_stdout_and_errors(tmp_path, capsys):
 def test_compare_infeasible_problem_exits_1(capsys):
     assert main(["compare", str(PROBLEMS / "teaching_design.yaml"), str(PROBLEMS / "infeasible_problem.yaml")]) == 1
     assert "no design to compare" in capsys.readouterr().err
+
+
+def test_compare_shows_the_drive_side_by_side(tmp_path, capsys):
+    """A design with a motor next to one without: motor and coupling rows, the torques needed against the
+    motor's catalog values, and the drive figures in the CSV, the same numbers ``evaluate`` computes."""
+    from axisopt.design import load_design
+    from axisopt.model import evaluate
+
+    files = [PROBLEMS / "vmc_x_design.yaml", PROBLEMS / "teaching_design.yaml"]
+    csv = tmp_path / "c.csv"
+    assert main(["compare", *map(str, files), "--csv", str(csv)]) == 0
+    out = capsys.readouterr().out
+    ev = evaluate(load_design(PROBLEMS / "vmc_x_design.yaml"))
+    motor = ev.design.motor
+    rows = {ln[:52].strip(): ln[52:].split() for ln in out.splitlines() if ln.startswith(("motor", "coupling", "  "))}
+    assert rows["motor"] == [str(motor["id"]), "-"]
+    peak = rows["peak torque [N.m]"]
+    assert float(peak[0]) == round(ev["peak_torque"], 2) and float(peak[2]) == float(f"{motor['peak_torque']:.3g}")
+    assert peak[3:] == ["no", "motor"]
+    df = pd.read_csv(csv)
+    assert df.loc[0, "motor"] == motor["id"] and pd.isna(df.loc[1, "motor"])
+    assert abs(df.loc[0, "drive_rms_torque_Nm"] - ev["rms_torque"]) < 1e-9
