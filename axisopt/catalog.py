@@ -149,9 +149,9 @@ def _empty(name: str) -> pd.DataFrame:
 
 
 def _closest(word: str, options) -> str | None:
-    import difflib
+    from .yamlio import close_matches
 
-    m = difflib.get_close_matches(str(word), [str(o) for o in options], n=1)
+    m = close_matches(str(word), [str(o) for o in options])
     return m[0] if m else None
 
 

@@ -13,6 +13,7 @@ class InputError(AxisoptError):
     def __init__(self, message: str, *, source: str | None = None, where: str | None = None):
         self.source = source
         self.where = where
+        self.message = message
         prefix = ""
         if source:
             prefix = f"{source}"

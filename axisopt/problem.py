@@ -60,7 +60,7 @@ from .catalog import STATUSES, USER_STATUS, Catalog
 from .design import MOUNTINGS, Axis, catalog_for, read_axis
 from .errors import InputError
 from .model import CHECKS
-from .yamlio import Section, read_yaml
+from .yamlio import Section, close_matches, read_yaml
 
 OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto")
 PERFORMANCE = ("stiffness", "frequency")
@@ -281,9 +281,7 @@ def _read_limits(sec: Section | None):
     if msec is not None:
         for k in msec.keys():
             if k not in CHECKS:
-                import difflib
-
-                near = difflib.get_close_matches(k, CHECKS, n=1)
+                near = close_matches(k, CHECKS)
                 hint = f"; did you mean '{near[0]}'?" if near else ""
                 raise msec.error(k, f"unknown check '{k}'{hint} (checks: {', '.join(CHECKS)})")
             margins[k] = float(msec.number(k, minimum=0.0))

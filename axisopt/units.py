@@ -126,6 +126,34 @@ def to_si(value: float, unit: str, kind: str) -> float:
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
+# The largest magnitude (SI) any input of a kind may have: far beyond every machine-tool axis, well inside
+# float range, so that no product or power of inputs in the model overflows to inf or NaN.
+PLAUSIBLE_MAX = {
+    "length": 1e3, "mass": 1e7, "time": 1e10, "force": 1e9, "stiffness": 1e14, "torque": 1e7, "speed": 1e3,
+    "acceleration": 1e5, "jerk": 1e8, "angular_speed": 1e6, "angle": 1e3, "dimensionless": 1e9,
+    "mass_per_length": 1e6, "damping": 1e12, "pressure": 1e13, "temperature": 1e4,
+    "temperature_difference": 1e4, "torsional_stiffness": 1e12, "kinematic_viscosity": 1e2, "inertia": 1e5,
+    "power": 1e9, "money": 1e12, "money_per_length": 1e10, "dn": 1e6, "frequency": 1e7, "compliance": 1e3,
+    "thermal_expansion": 1.0,
+}
+PLAUSIBLE_MIN = 1e-15  # the smallest non-zero magnitude (SI) of any input
+MAX_UNIT_CHARS = 40  # 'kg.m^2/s' is 8; a longer unit text is refused before pint parses it
+PREFIX_ONLY = {"u", "µ", "μ", "k"}  # '450 u' is a metric prefix without its unit (pint: 'u' is the dalton)
+
+
+def check_plausible(value: float, kind: str, text, *, source=None, key=None) -> float:
+    """``value`` (SI) unless it is non-finite or outside what an axis input can be (one-line InputError)."""
+    if not math.isfinite(value):
+        raise InputError(f"'{text}' is not a finite number", source=source, where=key)
+    top = PLAUSIBLE_MAX.get(kind, 1e12)
+    if abs(value) > top:
+        raise InputError(f"'{text}' is out of range: at most {top:g} {KINDS.get(kind, ('', ''))[1] or ''}"
+                         f"".rstrip() + " in magnitude", source=source, where=key)
+    if 0 < abs(value) < PLAUSIBLE_MIN:
+        raise InputError(f"'{text}' is too small to be meant (below {PLAUSIBLE_MIN:g} in SI units); write 0 "
+                         "if it is zero", source=source, where=key)
+    return value
+
 
 def parse_quantity(text, kind: str, *, source: str | None = None, key: str | None = None) -> float:
     """Parse ``"800 mm"`` into SI for ``kind``.  A bare number is an error unless kind is dimensionless.
@@ -135,8 +163,8 @@ def parse_quantity(text, kind: str, *, source: str | None = None, key: str | Non
     if isinstance(text, bool):
         raise InputError(f"expected a {kind} with a unit, got {text!r}", source=source, where=key)
     if isinstance(text, (int, float)):
-        if kind in ("dimensionless", "angle") and kind == "dimensionless":
-            return float(text)
+        if kind == "dimensionless":
+            return check_plausible(float(text), kind, text, source=source, key=key)
         raise InputError(
             f"'{text}' has no unit; write it with one, e.g. '{text} {_example_unit(kind)}'",
             source=source,
@@ -144,6 +172,9 @@ def parse_quantity(text, kind: str, *, source: str | None = None, key: str | Non
         )
     if not isinstance(text, str):
         raise InputError(f"expected a {kind} such as '1 {_example_unit(kind)}', got {text!r}",
+                         source=source, where=key)
+    if len(text) > MAX_UNIT_CHARS + 40:
+        raise InputError(f"cannot read '{text[:40]}...' ({len(text):,} characters) as a number with a unit",
                          source=source, where=key)
     m = _QTY.match(text)
     if not m:
@@ -157,10 +188,14 @@ def parse_quantity(text, kind: str, *, source: str | None = None, key: str | Non
             source=source,
             where=key,
         )
+    if unit.strip() in PREFIX_ONLY:
+        raise InputError(f"'{unit}' in '{text}' is a metric prefix without its unit; write the whole unit, "
+                         f"e.g. '{m.group(1)} {_example_unit(kind)}'", source=source, where=key)
     try:
-        return to_si(number, unit, kind)
+        v = to_si(number, unit, kind)
     except ValueError as exc:
         raise InputError(f"{exc} in '{text}'", source=source, where=key) from None
+    return check_plausible(v, kind, text, source=source, key=key)
 
 
 _EXAMPLES = {

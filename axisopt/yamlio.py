@@ -8,6 +8,7 @@ typed values (``quantity``, ``choice``, ``integer``...) while recording which ke
 from __future__ import annotations
 
 import difflib
+import math
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -24,11 +25,30 @@ class Node:
     line: int
 
 
+MAX_DEPTH = 64  # nesting of mappings and lists; the deepest axisopt input nests 5 levels
+MAX_VALUES = 200_000  # values after expanding aliases (a YAML "billion laughs" expands to 10^9)
+MAX_BYTES = 20_000_000  # file size
+
+
 class _Loader(yaml.SafeLoader):
-    pass
+    def compose_node(self, parent, index):  # PyYAML composes recursively: bound the depth before Python does
+        depth = getattr(self, "_depth", 0) + 1
+        if depth > MAX_DEPTH:
+            raise InputError(f"malformed YAML: nested deeper than {MAX_DEPTH} levels",
+                             where=f"line {self.peek_event().start_mark.line + 1}")
+        self._depth = depth
+        try:
+            return super().compose_node(parent, index)
+        finally:
+            self._depth = depth - 1
 
 
-def _construct(loader, node):
+def _construct(loader, node, count=None):
+    count = [0] if count is None else count
+    count[0] += 1
+    if count[0] > MAX_VALUES:
+        raise InputError(f"YAML too large: more than {MAX_VALUES:,} values once its aliases are expanded",
+                         where=f"line {node.start_mark.line + 1}")
     line = node.start_mark.line + 1
     if isinstance(node, yaml.MappingNode):
         out: dict[str, Node] = {}
@@ -38,10 +58,10 @@ def _construct(loader, node):
                 key = str(key)
             if key in out:
                 raise InputError(f"duplicate key '{key}'", where=f"line {k.start_mark.line + 1}")
-            out[key] = _construct(loader, v)
+            out[key] = _construct(loader, v, count)
         return Node(out, line)
     if isinstance(node, yaml.SequenceNode):
-        return Node([_construct(loader, v) for v in node.value], line)
+        return Node([_construct(loader, v, count) for v in node.value], line)
     return Node(loader.construct_object(node), line)
 
 
@@ -49,6 +69,8 @@ def read_yaml(path) -> Node:
     path = Path(path)
     src = str(path)
     try:
+        if path.is_file() and path.stat().st_size > MAX_BYTES:
+            raise InputError(f"file too large ({path.stat().st_size:,} bytes; at most {MAX_BYTES:,})", source=src)
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         why = getattr(exc, "strerror", None) or exc  # a decoding error has no strerror
@@ -69,13 +91,15 @@ def parse_yaml_text(text: str, src: str) -> Node:
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
         raise InputError(f"malformed YAML: {problem}", source=src, where=where) from None
     except InputError as exc:
-        raise InputError(str(exc), source=src) from None
+        raise InputError(exc.message, source=src, where=exc.where) from None
+    except RecursionError:
+        raise InputError(f"malformed YAML: nested deeper than {MAX_DEPTH} levels", source=src) from None
     if root is None:
         raise InputError("empty YAML file", source=src)
     try:
         return _construct(_Loader(""), root)
     except InputError as exc:
-        raise InputError(str(exc).split(": ", 1)[-1], source=src, where=exc.where) from None
+        raise InputError(exc.message, source=src, where=exc.where) from None
     except yaml.YAMLError as exc:  # e.g. an unknown tag such as !!python/object
         mark = getattr(exc, "problem_mark", None)
         where = f"line {mark.line + 1}" if mark else None
@@ -83,6 +107,17 @@ def parse_yaml_text(text: str, src: str) -> Node:
         raise InputError(f"malformed YAML: {problem}", source=src, where=where) from None
     except RecursionError:
         raise InputError("malformed YAML: a self-referencing alias", source=src) from None
+
+
+def close_matches(word: str, options, n: int = 1) -> list:
+    """difflib's close matches, skipped for long texts (its cost grows with the square of the length)."""
+    word = str(word)
+    if len(word) > 64:
+        return []
+    return difflib.get_close_matches(word, [o for o in options if len(str(o)) <= 64], n=n)
+
+
+MAX_TEXT = 10_000  # characters of any text value (names, descriptions)
 
 
 class Section:
@@ -101,6 +136,7 @@ class Section:
         return f"line {line}, key '{path}'" if path else f"line {line}"
 
     def key_path(self, key: str) -> str:
+        key = str(key) if len(str(key)) <= 60 else str(key)[:40] + f"...({len(str(key)):,} characters)"
         return f"{self.path}.{key}" if self.path else key
 
     def where(self, key: str) -> str:
@@ -120,7 +156,7 @@ class Section:
         self.used.add(key)
         if key not in self.node.value:
             if required:
-                typo = difflib.get_close_matches(key, [k for k in self.node.value if k not in self.used], n=1)
+                typo = close_matches(key, [k for k in self.node.value if k not in self.used], n=1)
                 if typo:
                     raise self.error(typo[0], f"unknown key '{self.key_path(typo[0])}'; did you mean '{key}'?")
                 raise InputError(f"missing required key '{self.key_path(key)}'", source=self.source,
@@ -148,15 +184,23 @@ class Section:
         return v
 
     def number(self, key: str, default=None, *, required: bool = False, integer: bool = False,
-               minimum: float | None = None):
+               minimum: float | None = None, maximum: float | None = None):
+        """A plain number: finite, within [minimum, maximum] (``maximum`` defaults to 1e9, which no count
+        or factor of an axis input reaches)."""
         n = self.raw(key, None, required=required)
         if n is None:
             return default
         v = n.value
         if isinstance(v, bool) or not isinstance(v, (int, float)) or (integer and not isinstance(v, int)):
-            raise self.error(key, f"expected a{'whole' if integer else ''} number, got {v!r}")
+            shown = repr(v) if len(repr(v)) <= 60 else repr(v)[:60] + "..."
+            raise self.error(key, f"expected a {'whole ' if integer else ''}number, got {shown}")
+        if not math.isfinite(v):
+            raise self.error(key, f"must be a finite number, got {v}")
         if minimum is not None and v < minimum:
             raise self.error(key, f"must be at least {minimum}, got {v}")
+        top = 1e9 if maximum is None else maximum
+        if v > top:
+            raise self.error(key, f"must be at most {top:g}, got {v:g}")
         return v
 
     def choice(self, key: str, options, default=None, *, required: bool = False):
@@ -165,9 +209,10 @@ class Section:
             return default
         v = n.value
         if v not in options:
-            near = difflib.get_close_matches(str(v), list(options), n=1)
+            near = close_matches(str(v), list(options), n=1)
             hint = f"; did you mean '{near[0]}'?" if near else ""
-            raise self.error(key, f"'{v}' is not one of {', '.join(options)}{hint}")
+            shown = str(v) if len(str(v)) <= 60 else str(v)[:60] + "..."
+            raise self.error(key, f"'{shown}' is not one of {', '.join(options)}{hint}")
         return v
 
     def string(self, key: str, default=None, *, required: bool = False):
@@ -175,7 +220,9 @@ class Section:
         if n is None:
             return default
         if not isinstance(n.value, str):
-            raise self.error(key, f"expected text, got {n.value!r}")
+            raise self.error(key, f"expected text, got {str(n.value)[:60]!r}")
+        if len(n.value) > MAX_TEXT:
+            raise self.error(key, f"text too long ({len(n.value):,} characters; at most {MAX_TEXT:,})")
         return n.value
 
     def string_list(self, key: str, default=None):
@@ -200,7 +247,7 @@ class Section:
         extra = [k for k in self.node.value if k not in self.used]
         if extra:
             k = extra[0]
-            near = difflib.get_close_matches(k, sorted(self.used), n=1)
+            near = close_matches(k, sorted(self.used), n=1)
             hint = f"; did you mean '{near[0]}'?" if near else ""
             raise self.error(k, f"unknown key '{self.key_path(k)}'{hint}")
 

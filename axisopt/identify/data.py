@@ -19,7 +19,6 @@ empty or NaN cell is an :class:`InputError` naming the file, line and column.
 from __future__ import annotations
 
 import csv
-import difflib
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -28,6 +27,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..units import split_header, to_si, unit_factor
+from ..yamlio import close_matches
 
 # column -> quantity kind (None: a plain number without unit)
 COLUMNS = {
@@ -162,7 +162,7 @@ def read_dataset(path) -> Dataset:
         name, unit = split_header(h)
         where = f"line {hline}, column {j}"
         if name not in COLUMNS:
-            near = difflib.get_close_matches(name, list(COLUMNS), n=1)
+            near = close_matches(name, list(COLUMNS))
             hint = f"; did you mean '{near[0]}'?" if near else ""
             raise InputError(f"unknown column '{name}'{hint}", source=src, where=where)
         if name in [c[0] for c in cols]:

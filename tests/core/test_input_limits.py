@@ -1,0 +1,63 @@
+"""Hardening of the one YAML reader and the one quantity parser: every hostile input below ends in one
+line on stderr and exit 2, quickly (each case would hang, crash with a traceback, or be accepted as
+nonsense without the limits in ``yamlio`` and ``units``)."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import pytest
+
+from axisopt.cli import main
+
+ROOT = Path(__file__).resolve().parents[2]
+DESIGN = (ROOT / "problems" / "vmc_x_design.yaml").read_text()
+PROBLEM = (ROOT / "problems" / "teaching_problem.yaml").read_text()
+LEXICOGRAPHIC = (ROOT / "problems" / "highspeed_problem.yaml").read_text()
+
+BOMB = "".join(f"{a}: &{a} [" + ",".join([f"*{p}"] * 9 if p else ['"x"'] * 9) + "]\n"
+               for a, p in zip("abcdefghi", [None, *"abcdefgh"]))
+
+
+def _run(tmp_path, capsys, text, command="evaluate", encoding="utf-8"):
+    f = tmp_path / "in.yaml"
+    f.write_bytes(text.encode(encoding) if isinstance(text, str) else text)
+    t = time.perf_counter()
+    rc = main([command, str(f)])
+    dt = time.perf_counter() - t
+    err = capsys.readouterr().err.strip()
+    return rc, err, dt
+
+
+@pytest.mark.parametrize("name, text, words", [
+    ("deep nesting", "a: " + "[" * 1000 + "]" * 1000 + "\n", "nested deeper than"),
+    ("alias bomb", BOMB, "aliases are expanded"),
+    ("nan factor", DESIGN.replace("load_factor: 1.2", "load_factor: .nan"), "finite"),
+    ("inf factor", DESIGN.replace("load_factor: 1.2", "load_factor: .inf"), "finite"),
+    ("huge count", DESIGN.replace("guide_blocks: 4", "guide_blocks: 100000000000"), "at most"),
+    ("huge length", DESIGN.replace("stroke: 800 mm", "stroke: 1e308 mm"), "out of range"),
+    ("tiny length", DESIGN.replace("stroke: 800 mm", "stroke: 1e-300 mm"), "too small"),
+    ("huge time", DESIGN.replace("required_life: 20000 h", "required_life: 1e300 h"), "out of range"),
+    ("micro alone", DESIGN.replace("moving_mass: 450 kg", "moving_mass: 450 µ"), "prefix"),
+    ("u alone", DESIGN.replace("moving_mass: 450 kg", "moving_mass: 450 u"), "prefix"),
+    ("long unit", DESIGN.replace("stroke: 800 mm", "stroke: 800 " + "m" * 100_000), "characters"),
+    ("long name", DESIGN.replace("name: VMC X axis", "name: " + "x" * 100_000), "text too long"),
+    ("long key", DESIGN.replace("  rails: 2", "  " + "r" * 1000 + ": 2"), "unknown key"),
+    ("latin-1", DESIGN.replace("description:", "description: Tisch für Werkstück,"), "UnicodeDecodeError"),
+])
+def test_hostile_design_is_one_line_exit_2(tmp_path, capsys, name, text, words):
+    rc, err, dt = _run(tmp_path, capsys, text, encoding="latin-1" if name == "latin-1" else "utf-8")
+    assert rc == 2, (name, err)
+    assert err.startswith("error: ") and "\n" not in err and words in err, err
+    assert len(err) < 400 and dt < 5.0
+
+
+@pytest.mark.parametrize("text, old, new, words", [
+    (PROBLEM, "max_cost: 3500 EUR", "max_cost: .nan EUR", "read"),
+    (LEXICOGRAPHIC, "tolerance: 0.02", "tolerance: .nan", "finite"),
+])
+def test_hostile_problem_is_one_line_exit_2(tmp_path, capsys, text, old, new, words):
+    assert old in text
+    rc, err, _ = _run(tmp_path, capsys, text.replace(old, new), command="solve")
+    assert rc == 2 and "\n" not in err and words in err, err
