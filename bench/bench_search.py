@@ -5,7 +5,8 @@ Every shipped problem searches the drive too: ``drives`` is the number of (motor
 each mechanical combination is multiplied by (pairs whose coupling cannot carry the motor's peak torque
 are never formed); ``combos`` counts them in.  The synthetic row searches the mechanics only.
 
-    python bench/bench_search.py [--bonmin-time 100] [--skip-bonmin] [--skip-exhaustive-large] [--only NAME ...]
+    python bench/bench_search.py [--bonmin-time 100] [--skip-bonmin] [--skip-exhaustive-large] [--skip-exhaustive]
+                                [--only NAME ...]
 """
 
 from __future__ import annotations
@@ -108,6 +109,7 @@ def main(argv=None):
     ap.add_argument("--bonmin-time", type=float, default=100.0)
     ap.add_argument("--skip-bonmin", action="store_true")
     ap.add_argument("--skip-exhaustive-large", action="store_true")
+    ap.add_argument("--skip-exhaustive", action="store_true")
     ap.add_argument("--only", nargs="+", metavar="NAME", help="run only these problems (file stems)")
     args = ap.parse_args(argv)
 
@@ -122,7 +124,7 @@ def main(argv=None):
         solve(prob, "default", top=1, sensitivities=False)  # warm caches (CasADi functions, solvers)
         runs = [timed(lambda prob=prob: solve(prob, "default", top=1, sensitivities=False)) for _ in range(REPEAT)]
         d, td = min(runs, key=lambda r: r[1])  # best of REPEAT: the method's time without machine noise
-        if name == "synthetic-1M" and args.skip_exhaustive_large:
+        if args.skip_exhaustive or (name == "synthetic-1M" and args.skip_exhaustive_large):
             e, te = None, float("nan")
         else:
             e, te = timed(lambda prob=prob: solve(prob, "exhaustive", top=1, sensitivities=False))

@@ -56,11 +56,13 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
 
 
 def drive_response(p: dict, preload) -> dict:
-    """The motor and coupling outputs of :func:`axis_response` alone (masses, loads, drag, drive): the same
-    sub-assemblies, without the stiffness chain and the modes, for the searches' repeated solves of the
-    preload against the motor-torque limits (which depend on the preload through the nut's drag only)."""
+    """The outputs of :func:`axis_response` that the motor and coupling change (the drive block and the cost),
+    from the same sub-assemblies without the stiffness chain and the modes: for the searches, which screen
+    the mechanics once per combination of screw, nut, bearing and guide and then each drive against it, and
+    solve the preload against the motor-torque limits (which depend on it through the nut's drag only)."""
     m = masses(p)
     loads = axial_loads(p, m["moving_mass"])
     out = drag_torque(p, preload, loads)
     out.update(drive(p, m["moving_mass"], out["drag_torque"]))
+    out["cost"] = cost(p)
     return out

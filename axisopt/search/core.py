@@ -33,6 +33,7 @@ from . import nlp
 from .result import Candidate, Certificate
 from .space import (
     BISECTION_STEPS,
+    DRIVE_KEYS,
     N_PER_UM,
     Exact,
     ObjectiveSpec,
@@ -62,14 +63,23 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     Screening runs in float32 for memory bandwidth; every test is relaxed by SCREEN_RTOL and the bound
     raised by it, so rounding can only keep a combination, never drop one (exact checks follow in
     float64).
+
+    With a drive search the mechanics are screened once per (screw, nut, bearing, guide) combination on
+    every limit the drive does not change (the stiffness chain, the modes, the objective bound); each
+    surviving combination is then expanded by its (motor, coupling) pairs and screened on the drive's
+    limits (:data:`DRIVE_KEYS`) with the drive sub-assembly alone.
     """
     t0 = time.perf_counter()
     _, N, B, G = space.shape
-    per_nut = max(B * G, 1)
+    two_stage = space.m_arr is not None
+    D = space.n_drives if two_stage else 1
+    Gm = G // D  # guide axis of the mechanical stage
+    mech = [c for c in constraints if not (two_stage and c.key in DRIVE_KEYS)]
+    per_nut = max(B * Gm, 1)
     step = max(1, SCREEN_CHUNK // per_nut)
-    low_end = [c for c in constraints if not c.lower_type and not c.convex]  # independent or favoured by a low preload
-    high_end = [c for c in constraints if c.lower_type]
-    cvx = [c for c in constraints if c.convex]
+    low_end = [c for c in mech if not c.lower_type and not c.convex]  # independent or favoured by a low preload
+    high_end = [c for c in mech if c.lower_type]
+    cvx = [c for c in mech if c.convex]
     idx_parts, bound_parts = [], []
     for mi, mounting in enumerate(space.mountings):
         xs = space.bound_positions(mounting).astype(np.float32)
@@ -77,11 +87,11 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
         phases = space.problem.axis_for(mounting).phases
         for n0 in range(0, N, step):
             sl = slice(n0, min(N, n0 + step))
-            p = space.params_structured(mounting, sl, dtype=np.float32)
+            p = space.params_structured(mounting, sl, dtype=np.float32, mechanics=two_stage)
             lo = space.preload_lo[sl].reshape(-1, 1, 1, 1).astype(np.float32)
             hi = space.preload_hi[sl].reshape(-1, 1, 1, 1).astype(np.float32)
             nc = sl.stop - sl.start
-            mask = np.broadcast_to(space.fits[sl][:, :, None], (nc, B, G)).copy()
+            mask = np.broadcast_to(space.fits[sl][:, :, None], (nc, B, Gm)).copy()
             with np.errstate(all="ignore"):
                 out_lo = model.axis_response(p, x1, mounting, lo, extras=False)
                 for c in low_end:
@@ -94,13 +104,53 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
                     ok_c = np.asarray(ub >= c.limit * (1.0 - SCREEN_RTOL), dtype=bool)
                     mask &= ok_c[..., 0] if ok_c.ndim else ok_c
                 bound = objective.value(out)
-            bound = np.broadcast_to(bound + SCREEN_RTOL * np.abs(bound), (nc, B, G))
+            bound = np.broadcast_to(bound + SCREEN_RTOL * np.abs(bound), (nc, B, Gm))
             nn, bb, gg = np.nonzero(mask)
-            idx_parts.append(np.ravel_multi_index((np.full(len(nn), mi), nn + n0, bb, gg), space.shape))
-            bound_parts.append(bound[nn, bb, gg].astype(float))
+            bnd = bound[nn, bb, gg].astype(float)
+            nn = nn + n0
+            if two_stage:
+                nn, bb, gg, bnd = _screen_drives(space, mounting, constraints, phases, nn, bb, gg, bnd)
+            idx_parts.append(np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape))
+            bound_parts.append(bnd)
     idx = np.concatenate(idx_parts) if idx_parts else np.zeros(0, np.int64)
     bound = np.concatenate(bound_parts) if bound_parts else np.zeros(0)
     return idx, bound, time.perf_counter() - t0
+
+
+DRIVE_CHUNK = 1_000_000  # expanded (combination, drive) rows per block of the drive stage
+
+
+def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg, bound):
+    """The drive stage of :func:`screen`: each mechanical survivor (nut nn, bearing bb, guide gg) times
+    every (motor, coupling) pair, checked on the limits the drive changes at the lowest and highest allowed
+    preload (float64, same slack).  Returns the survivors' (nut, bearing, guide-and-drive, bound)."""
+    D = space.n_drives
+    cons = [c for c in constraints if c.key in DRIVE_KEYS]
+    if not cons or len(nn) == 0:
+        g_full = (gg[:, None] * D + np.arange(D)[None]).ravel()
+        return np.repeat(nn, D), np.repeat(bb, D), g_full, np.repeat(bound, D)
+    out_parts = []
+    rows = max(1, DRIVE_CHUNK // D)
+    for s0 in range(0, len(nn), rows):
+        n_, b_, g_, bd = nn[s0:s0 + rows], bb[s0:s0 + rows], gg[s0:s0 + rows], bound[s0:s0 + rows]
+        ne, be = np.repeat(n_, D), np.repeat(b_, D)
+        ge = (g_[:, None] * D + np.arange(D)[None]).ravel()
+        p = space.params_flat(mounting, ne, be, ge)
+        lo, hi = space.preload_lo[ne][:, None], space.preload_hi[ne][:, None]
+        with np.errstate(all="ignore"):
+            out_lo = model.drive_response(p, lo)
+            ok = np.ones(len(ne), dtype=bool)
+            cvx = [c for c in cons if c.convex]
+            out_hi = model.drive_response(p, hi) if cvx else None
+            for c in cons:
+                if c.convex:
+                    ub = np.asarray(convex_margin_bound(c, out_lo, out_hi, phases))
+                    ok &= (ub >= c.limit * (1.0 - SCREEN_RTOL)).reshape(len(ne))
+                else:
+                    ok &= _screen_ok(c, out_lo).reshape(len(ne))
+        k = np.nonzero(ok)[0]
+        out_parts.append((ne[k], be[k], ge[k], np.repeat(bd, D)[k]))
+    return tuple(np.concatenate([o[i] for o in out_parts]) for i in range(4))
 
 
 def _screen_ok(c, out):

@@ -177,6 +177,10 @@ def respond(p, x, mounting, preload) -> dict:
         return model.axis_response(p, x, mounting, preload, extras=False)
 
 
+# Outputs the motor and coupling change (all others are the same for every drive of a mechanical combination).
+DRIVE_KEYS = frozenset({"cost", "inertia_ratio"} | {f"margin_{c}" for c in model.DRIVE_CHECKS})
+
+
 def respond_drive(p, preload) -> dict:
     """:func:`axisopt.model.drive_response` on numpy: the motor-torque limits without the stiffness chain."""
     with np.errstate(divide="ignore"):
@@ -253,8 +257,11 @@ class Space:
         return x[sorted(idx)]
 
     # ------------------------------------------------------------------ parameter dicts
-    def params_structured(self, mounting: str, nut_slice=slice(None), dtype=float) -> dict:
-        key = ("ps", mounting, nut_slice.start, nut_slice.stop, np.dtype(dtype).name)
+    def params_structured(self, mounting: str, nut_slice=slice(None), dtype=float, mechanics: bool = False) -> dict:
+        """Parameters broadcast over (nuts, bearings, guide-and-drive, positions).  ``mechanics``: over the
+        guides alone, without the drive (the axis values stand in for motor and coupling), for the outputs
+        the drive does not change (every output but :data:`DRIVE_KEYS`)."""
+        key = ("ps", mounting, nut_slice.start, nut_slice.stop, np.dtype(dtype).name, mechanics)
         if key not in self._cache:
             def sh(d, shape):
                 return {k: (v.reshape(shape).astype(dtype) if v.dtype.kind == "f" else v.reshape(shape))
@@ -262,9 +269,10 @@ class Space:
             s = sh({k: v[nut_slice] for k, v in self.s_arr.items()}, (-1, 1, 1, 1))
             nt = sh({k: v[nut_slice] for k, v in self.n_arr.items()}, (-1, 1, 1, 1))
             b = sh(self.b_arr, (1, -1, 1, 1))
-            g = sh(self.g_arr, (1, 1, -1, 1))
-            mo = None if self.m_arr is None else sh(self.m_arr, (1, 1, -1, 1))
-            cp = None if self.c_arr is None else sh(self.c_arr, (1, 1, -1, 1))
+            D = self.n_drives if mechanics else 1
+            g = sh({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1))
+            mo = None if self.m_arr is None or mechanics else sh(self.m_arr, (1, 1, -1, 1))
+            cp = None if self.c_arr is None or mechanics else sh(self.c_arr, (1, 1, -1, 1))
             if len(self._cache) > 64:
                 self._cache.clear()
             ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
