@@ -46,6 +46,7 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
       motor_vendors: [Yaskawa]         # the drive parts' own vendor and series filters ('vendors' is for
       motor_series: [Sigma-7 SGM7G]    # the mechanical parts)
       coupling_series: [...]
+      max_motor_flange: 130 mm         # the motor must fit the machine: flange (square) size at most this
     continuous:
       nut_preload: {min: 0 N, max: 5 kN}  # intersected with each nut's preload_min..preload_max
 """
@@ -137,6 +138,7 @@ class Restrictions:
     motor_vendors: tuple | None = None
     motor_series: tuple | None = None
     coupling_series: tuple | None = None
+    max_motor_flange: float | None = None  # [m]
 
     def required(self, slot):
         return dict(self.require).get(slot)
@@ -322,6 +324,10 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         vals = _catalog_names(sec, key, lambda t=table, c=col: sorted(set(catalog.table(t)[c])))
         if vals is not None:
             kw[key] = vals
+    flange = sec.quantity("max_motor_flange", "length", positive=True)
+    if flange is not None:
+        kw["max_motor_flange"] = flange
+        kw["drive"] = kw["drive"] or drive is None
     mounts = sec.string_list("mountings", None)
     if mounts is not None:
         for m in mounts:

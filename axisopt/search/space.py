@@ -389,6 +389,10 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     if not r.drive or len(cat.motors) == 0:
         return
     motors = _filtered(cat.motors, r, "motor", r.motor_series, r.motor_vendors)
+    if r.max_motor_flange is not None:  # a motor without a listed flange cannot be shown to fit
+        motors = motors[(motors["flange"] <= r.max_motor_flange * (1 + 1e-9)).to_numpy()]
+    if problem.axis.brake_used and not r.required("motor"):  # the axis asks for a holding brake
+        motors = motors[(motors["brake_torque"] > 0).to_numpy()]
     couplings = _filtered(cat.couplings, r, "coupling", r.coupling_series)
     if len(couplings) and not r.required("coupling"):
         couplings = couplings[~coupling_dominated(couplings)]

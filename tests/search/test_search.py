@@ -272,3 +272,29 @@ def test_cli_solve_json_and_exit_codes(tmp_path, capsys):
     assert "certificate" in text and "checks" in text
     assert main(["solve", str(root / "infeasible_problem.yaml"), "--no-sensitivity"]) == 1
     assert "closest designs" in capsys.readouterr().out
+
+
+def test_motor_flange_and_brake_restrictions(tmp_path):
+    """catalog.max_motor_flange keeps only motors whose listed flange fits; a vertical axis (brake auto)
+    searches only motors with a holding brake.  Counted independently from motors.csv."""
+    import pandas as pd
+
+    csv = pd.read_csv(Path(__file__).resolve().parents[2] / "catalogs" / "motors.csv")
+    base = (Path(__file__).resolve().parents[2] / "problems" / "vertical_problem.yaml").read_text()
+    assert "catalog:" in base
+    text = base.replace("catalog:", "catalog:\n  max_motor_flange: 130 mm", 1)
+    f = tmp_path / "p.yaml"
+    f.write_text(text)
+    prob = load_problem(f)
+    series = prob.restrictions.motor_series
+    rows = csv if series is None else csv[csv["series"].isin(series)]
+    if prob.restrictions.motor_vendors is not None:
+        rows = rows[rows["vendor"].isin(prob.restrictions.motor_vendors)]
+    want = rows[(rows["flange [mm]"] <= 130) & (rows["brake_torque [N.m]"] > 0)]["id"]
+    sp = build_space(prob)
+    got = [] if sp.motors is None else list(sp.motors["id"])
+    assert sorted(got) == sorted(want)
+    q = tmp_path / "q.yaml"
+    q.write_text(base)
+    unrestricted = build_space(load_problem(q))
+    assert set(unrestricted.motors["id"]) == set(rows[rows["brake_torque [N.m]"] > 0]["id"])
