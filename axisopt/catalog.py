@@ -83,6 +83,7 @@ SCHEMA = MappingProxyType({
     "motors": MappingProxyType(_MOTORS),
     "couplings": MappingProxyType(_COUPLINGS),
 })
+MAX_CATALOG_BYTES = 50_000_000
 # Tables the axis model needs in every catalog; the drive tables may be absent (empty then).
 REQUIRED_TABLES = ("screws", "nuts", "bearings", "guides")
 
@@ -108,10 +109,8 @@ _ORDERED = {
 OPTIONAL_COLUMNS = MappingProxyType({"bearings": ("starting_torque",), "screws": ("ball_diameter",),
                                      "motors": ("rotor_inertia_brake", "brake_torque", "mass", "flange"),
                                      "couplings": ("mass",)})
-_NON_NEGATIVE = ("axial_play", "starting_torque", "rotor_inertia_brake", "brake_torque", "flange",
-                 "price", "price_fixed", "price_per_length", "block_price", "rail_price_per_length",
-                 "mass", "block_mass", "preload", "preload_min", "preload_max", "friction_force",
-                 "friction_coefficient", "friction_viscous", "damping", "f0", "f1")
+# Every other number of every table must not be negative (no part has a negative mass, price, play or
+# friction); catalog rows and inline parts go through the same :func:`row_problem`.
 _CHOICES = {
     ("nuts", "type"): ("single", "double"),
     ("guides", "type"): ("ball", "roller"),
@@ -155,14 +154,55 @@ def _closest(word: str, options) -> str | None:
     return m[0] if m else None
 
 
+def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
+    """The first thing wrong with one part of table ``name`` (numbers in SI, optional cells NaN), as
+    (column, message), or None.  The one validation of catalog rows (:func:`load_catalogs`) and of parts
+    written inline in a design (:func:`axisopt.design.inline_part`)."""
+    from .units import PLAUSIBLE_MAX
+
+    for col, kind in SCHEMA[name].items():
+        val = rec.get(col)
+        if kind == "str":
+            if not isinstance(val, str) or not val.strip():
+                return col, "empty text"
+            continue
+        if val is None or (isinstance(val, float) and math.isnan(val)):
+            if col in OPTIONAL_COLUMNS.get(name, ()):
+                continue
+            return col, "missing value"
+        if not math.isfinite(val):
+            return col, f"not a finite number ({val})"
+        if col in _POSITIVE[name] and val <= 0:
+            return col, "must be positive"
+        if val < 0:
+            return col, "must not be negative"
+        if kind != "int" and abs(val) > PLAUSIBLE_MAX.get(kind, 1e12):
+            return col, f"out of range (at most {PLAUSIBLE_MAX.get(kind, 1e12):g} in SI units)"
+    for (t, c), ok in _CHOICES.items():
+        if t == name and rec.get(c) not in ok:
+            return c, f"'{rec.get(c)}' is not one of {', '.join(ok)}"
+    for a, b in _ORDERED.get(name, ()):
+        if rec[a] > rec[b]:  # NaN (an optional cell left empty) compares False
+            return b, f"{b} is below {a}"
+    return None
+
+
 def _read_table(path: Path, name: str) -> pd.DataFrame:
     schema = SCHEMA[name]
     src = str(path)
     try:
+        if path.stat().st_size > MAX_CATALOG_BYTES:
+            raise InputError(f"catalog file too large ({path.stat().st_size:,} bytes; at most "
+                             f"{MAX_CATALOG_BYTES:,})", source=src)
         with path.open(newline="", encoding="utf-8-sig") as fh:
-            rows = list(csv.reader(fh))
+            reader = csv.reader(fh)
+            try:
+                rows = list(reader)
+            except csv.Error as exc:
+                raise InputError(f"malformed CSV ({exc})", source=src, where=f"line {reader.line_num}") from None
     except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read catalog ({exc})", source=src) from None
+        raise InputError(f"cannot read catalog ({exc.__class__.__name__}: "
+                         f"{getattr(exc, 'strerror', None) or exc})", source=src) from None
     if not rows:
         raise InputError("empty catalog file", source=src)
     header = rows[0]
@@ -225,25 +265,23 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
                     raise InputError(f"'{cell}' is not a whole number", source=src, where=where)
                 rec[col] = int(val)
                 continue
-            if col in _POSITIVE[name] and val <= 0:
-                raise InputError(f"{col} must be positive, got {cell}", source=src, where=where)
-            if col in _NON_NEGATIVE and val < 0:
-                raise InputError(f"{col} must not be negative, got {cell}", source=src, where=where)
             rec[col] = val * factor
         names = [n for n, _, _ in cols]
-        choices = [(c, rec[c], ok) for (t, c), ok in _CHOICES.items() if t == name and rec[c] not in ok]
         if "status" in rec and rec["status"] not in PROVENANCE["status"]:
-            choices.insert(0, ("status", rec["status"], PROVENANCE["status"]))
-        if choices:
-            c, v, ok = choices[0]
-            j = names.index(c) + 1
-            raise InputError(f"{c} '{v}' is not one of {', '.join(ok)}", source=src,
-                             where=f"line {i}, column {j} ({c})")
-        for a, b in _ORDERED.get(name, ()):
-            if rec[a] > rec[b]:  # NaN (an optional cell left empty) compares False
-                ja, jb = names.index(a), names.index(b)
-                raise InputError(f"{b} is below {a} ({b} {row[jb].strip()} < {a} {row[ja].strip()})", source=src,
-                                 where=f"line {i}, column {jb + 1} ({b})")
+            j = names.index("status") + 1
+            raise InputError(f"status '{rec['status']}' is not one of {', '.join(PROVENANCE['status'])}",
+                             source=src, where=f"line {i}, column {j} (status)")
+        bad = row_problem(name, rec)
+        if bad is not None:
+            c, msg = bad
+            j = names.index(c)
+            if msg.startswith(c):  # an ordered pair: "<high> is below <low>"
+                text = f"{msg} ({row[j].strip()})"
+            elif msg.startswith("'"):  # a choice: the message shows the value
+                text = f"{c} {msg}"
+            else:
+                text = f"{c} {msg}, got {row[j].strip()}"
+            raise InputError(text, source=src, where=f"line {i}, column {j + 1} ({c})")
         if rec["id"] in ids:
             raise InputError(f"duplicate id '{rec['id']}' (first on line {ids[rec['id']]})", source=src,
                              where=f"line {i}, column 1 (id)")

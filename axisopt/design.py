@@ -12,7 +12,7 @@ from dataclasses import dataclass, field, fields
 from functools import cached_property
 from pathlib import Path
 
-from .catalog import OPTIONAL_COLUMNS, SCHEMA, Catalog, default_catalog
+from .catalog import OPTIONAL_COLUMNS, SCHEMA, Catalog, default_catalog, row_problem
 from .errors import InputError
 from .physics import motion
 from .units import unit_factor
@@ -256,6 +256,10 @@ def inline_part(sec: Section, table: str):
             v = sec.quantity(col, kind, required=not optional, non_negative=True)
             rec[col] = math.nan if v is None else v
     sec.done()
+    bad = row_problem(table, rec)  # the catalog loader's rules: positive geometry, choices, ordered pairs
+    if bad is not None:
+        col, msg = bad
+        raise sec.error(col, msg if msg.startswith(col) else f"{col} {msg}")
     rec["_source"] = f"{sec.source}:{sec.node.line}"
     return pd.Series(rec, name=rec["id"])
 

@@ -61,3 +61,46 @@ def test_hostile_problem_is_one_line_exit_2(tmp_path, capsys, text, old, new, wo
     assert old in text
     rc, err, _ = _run(tmp_path, capsys, text.replace(old, new), command="solve")
     assert rc == 2 and "\n" not in err and words in err, err
+
+
+CUSTOM = (ROOT / "problems" / "custom_parts_design.yaml").read_text()
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("root_diameter: 72.5 mm", "root_diameter: 0 mm", "root_diameter must be positive"),
+    ("stiffness: 2200 N/um", "stiffness: 0 N/um", "stiffness must be positive"),
+    ("lead: 20 mm", "lead: 0 mm", "lead must be positive"),
+    ("type: double", "type: triple", "'triple' is not one of"),
+    ("preload_min: 5 kN", "preload_min: 25 kN", "preload_max is below preload_min"),
+])
+def test_inline_parts_follow_the_catalog_rules(tmp_path, capsys, old, new, words):
+    """The same row rules as catalog CSVs (catalog.row_problem), named by the design's key."""
+    assert old in CUSTOM
+    rc, err, _ = _run(tmp_path, capsys, CUSTOM.replace(old, new, 1))
+    assert rc == 2 and "\n" not in err and words in err and "parts." in err, err
+
+
+@pytest.mark.parametrize("table, column, cell, words", [
+    ("guides", "rail_mass_per_length [kg/m]", "-3", "must not be negative"),
+    ("nuts", "mass [kg]", "1e30", "out of range"),
+    ("screws", "id", "x" * 200_000, "malformed CSV"),
+])
+def test_catalog_cells_follow_the_row_rules(tmp_path, capsys, table, column, cell, words):
+    import csv
+    import shutil
+
+    from axisopt.catalog import SHIPPED_DIR
+
+    d = tmp_path / "cat"
+    shutil.copytree(SHIPPED_DIR, d)
+    path = d / f"{table}.csv"
+    with path.open(newline="", encoding="utf-8-sig") as fh:
+        rows = list(csv.reader(fh))
+    rows[1][rows[0].index(column)] = cell
+    with path.open("w", newline="", encoding="utf-8") as fh:
+        csv.writer(fh).writerows(rows)
+    design = tmp_path / "d.yaml"
+    design.write_text(DESIGN.replace("parts:", f"catalogs: [{d}]\nparts:", 1))
+    rc = main(["evaluate", str(design)])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and "\n" not in err and words in err and f"{table}.csv" in err, err
