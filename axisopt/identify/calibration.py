@@ -27,7 +27,7 @@ import yaml
 
 from ..errors import InputError
 from ..physics.screw import E_STEEL
-from ..yamlio import Section, read_yaml
+from ..yamlio import Section, close_matches, read_yaml
 from .effects import library
 
 FORMAT = 1
@@ -88,43 +88,72 @@ def save_calibration(diag, path, design=None, sources=()) -> dict:
 
 
 def _read(path) -> dict:
-    from ..units import parse_quantity
+    from ..units import KINDS, parse_quantity
 
     root = Section(read_yaml(path), str(path))
     ver = root.number("axisopt_calibration", required=True, integer=True)
     if ver != FORMAT:
         raise root.error("axisopt_calibration", f"unsupported calibration format {ver} (expected {FORMAT})")
-    root.string("design")
+    design = root.string("design")
     root.string("verdict")
     root.raw("data")
     root.raw("applied")
     root.raw("not_applied")
 
-    def values(sec):
+    def values(sec, allowed=None, where=""):
         out = {}
         for key in sec.keys():
+            if allowed is not None and key not in allowed:
+                near = close_matches(key, sorted(allowed))
+                hint = f"; did you mean '{near[0]}'?" if near else ""
+                raise sec.error(key, f"unknown {where} parameter '{key}'{hint} (known: {', '.join(sorted(allowed))})")
             s = sec.section(key)
-            kind = s.string("kind", required=True)
+            kind = s.choice("kind", tuple(KINDS), required=True)
+            if allowed is not None and allowed[key] != kind:
+                raise s.error("kind", f"'{key}' is a {allowed[key]}, not a {kind}")
             raw = s.value("value", required=True)
             out[key] = parse_quantity(raw, kind, source=str(path), key=s.where("value"))
             s.raw("sigma")
             s.done()
         return out
 
-    base = values(root.section("baseline") or Section(_empty(), str(path)))
+    base = values(root.section("baseline") or Section(_empty(), str(path)), BASELINE_KINDS, "baseline")
     effects = []
     node = root.raw("effects")
+    if node is not None and node.value is not None and not isinstance(node.value, list):
+        raise root.error("effects", "expected a list of effects")
     lib = library()
     for item in node.value if node is not None and node.value else []:
         s = Section(item, str(path), "effects")
-        name = s.string("name", required=True)
-        if name not in lib:
-            raise s.error("name", f"unknown effect '{name}'")
-        ps = s.section("parameters")
-        effects.append((name, values(ps) if ps is not None else {}))
+        name = s.choice("name", tuple(lib), required=True)
+        ps = s.section("parameters", required=True)
+        vals = values(ps)
+        if not vals:
+            raise s.error("parameters", f"effect '{name}' lists no parameters")
+        effects.append((name, vals, s.where("parameters")))
         s.done()
     root.done()
-    return {"baseline": base, "effects": effects}
+    return {"design": design, "baseline": base, "effects": effects, "source": str(path)}
+
+
+# The baseline parameters a calibration may carry (identify.measure.baseline_params) and their kinds.
+BASELINE_KINDS = {"screw_modulus": "pressure", "coulomb_friction": "force", "damping_ratio": "dimensionless"}
+
+
+class _Reads(dict):
+    """A parameter dict that remembers which keys were read (to name a parameter no effect uses)."""
+
+    def __init__(self, *a):
+        super().__init__(*a)
+        self.read: set = set()
+
+    def __getitem__(self, k):
+        self.read.add(k)
+        return super().__getitem__(k)
+
+    def get(self, k, default=None):
+        self.read.add(k)
+        return super().get(k, default)
 
 
 def _empty():
@@ -171,8 +200,19 @@ def calibrate_design(design, cal) -> tuple:
     if "damping_ratio" in base:
         skipped.append(f"damping_ratio {base['damping_ratio']:.3f}: evaluate has no damping output")
     lib = library()
-    for name, vals in cal["effects"]:
-        out = lib[name].calibrate(vals, design)
+    for name, vals, *where in cal["effects"]:
+        vals = _Reads(vals)
+        try:
+            out = lib[name].calibrate(vals, design)
+        except KeyError as exc:
+            raise InputError(f"effect '{name}' needs parameter '{exc.args[0]}' (given: {', '.join(sorted(vals))})",
+                             source=cal.get("source"),
+                             where=where[0] if where else None) from None
+        unused = sorted(set(vals) - vals.read)
+        if out is not None and unused:
+            raise InputError(f"effect '{name}' has no parameter '{unused[0]}' (it uses "
+                             f"{', '.join(sorted(vals.read))})", source=cal.get("source"),
+                             where=where[0] if where else None)
         if out is None:
             skipped.append(f"{name}: not representable in evaluate ({lib[name].title})")
         else:
@@ -196,5 +236,9 @@ def _parse_dict(cal):
 def apply_calibration(design, path):
     """Read a calibration YAML saved by ``axisopt diagnose`` and return the calibrated Design."""
     cal = _read(path)
+    if cal["design"] is not None and cal["design"] != design.name:
+        raise InputError(f"calibration is for design '{cal['design']}', not '{design.name}' (a calibration "
+                         "fitted on another axis does not apply; edit its 'design' key only if the axis is the same)",
+                         source=str(path), where="key 'design'")
     new, _, _ = calibrate_design(design, cal)
     return replace(new, name=f"{design.name} (calibrated)")

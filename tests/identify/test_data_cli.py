@@ -232,3 +232,49 @@ def test_two_test_types_share_parameters():
     assert diag.verdict == "added_mass"
     assert diag.final.value("added_mass") == pytest.approx(80.0, rel=0.1)
     assert diag.final.value("screw_modulus") == pytest.approx(190e9, rel=0.03)
+
+
+GOOD_CAL = """axisopt_calibration: 1
+design: {design}
+baseline:
+  screw_modulus: {{value: 200 GPa, kind: pressure}}
+effects:
+  - name: support_condition
+    parameters:
+      far_end_stiffness: {{value: 900 N/um, kind: stiffness}}
+"""
+
+
+@pytest.mark.parametrize("old, new, words", [
+    (None, None, None),  # the file as written applies
+    ("design: {design}", "design: another axis", "calibration is for design 'another axis'"),
+    ("screw_modulus:", "screw_modulos:", "did you mean 'screw_modulus'"),
+    ("far_end_stiffness:", "far_end_stifness:", "needs parameter 'far_end_stiffness' (given: far_end_stifness)"),
+    ("kind: stiffness", "kind: stifness", "is not one of"),
+    ("kind: pressure", "kind: force", "'screw_modulus' is a pressure, not a force"),
+    ("    parameters:\n      far_end_stiffness: {{value: 900 N/um, kind: stiffness}}\n", "    parameters: {{}}\n",
+     "lists no parameters"),
+    ("name: support_condition", "name: support_conditon", "did you mean 'support_condition'"),
+])
+def test_calibration_file_is_validated(tmp_path, capsys, old, new, words):
+    """A calibration applies only to its own design, with known keys and kinds (each bad case used to be
+    applied silently or end in a KeyError traceback)."""
+    design = load_design(DESIGN)
+    text = GOOD_CAL if old is None else GOOD_CAL.replace(old, new)
+    p = write(tmp_path, text.format(design=design.name), "c.yaml")
+    rc = main(["evaluate", str(DESIGN), "--calibration", str(p)])
+    err = capsys.readouterr().err.strip()
+    if old is None:
+        assert rc == 0 and err == ""
+        assert apply_calibration(design, p).axis.mounting == "fixed-fixed"
+    else:
+        assert rc == 2 and "\n" not in err and words in err, err
+
+
+def test_calibration_baseline_names_match_the_fit():
+    """The names and kinds a calibration may carry are the ones diagnose fits (measure.baseline_params)."""
+    from axisopt.identify.calibration import BASELINE_KINDS
+    from axisopt.identify.measure import baseline_params
+
+    params = baseline_params({"stiffness", "friction", "frf"}, plant_from_design(load_design(DESIGN)))
+    assert {p.name: p.kind for p in params} == BASELINE_KINDS
