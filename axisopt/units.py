@@ -141,15 +141,16 @@ MAX_UNIT_CHARS = 40  # 'kg.m^2/s' is 8; a longer unit text is refused before pin
 PREFIX_ONLY = {"u", "µ", "μ", "k"}  # '450 u' is a metric prefix without its unit (pint: 'u' is the dalton)
 
 
-def check_plausible(value: float, kind: str, text, *, source=None, key=None) -> float:
-    """``value`` (SI) unless it is non-finite or outside what an axis input can be (one-line InputError)."""
+def check_plausible(value: float, kind: str, text, *, source=None, key=None, tiny: bool = True) -> float:
+    """``value`` (SI) unless it is non-finite or outside what an axis input can be (one-line InputError).
+    ``tiny=False``: values close to zero pass (measured data, where they are noise around zero)."""
     if not math.isfinite(value):
         raise InputError(f"'{text}' is not a finite number", source=source, where=key)
     top = PLAUSIBLE_MAX.get(kind, 1e12)
     if abs(value) > top:
         raise InputError(f"'{text}' is out of range: at most {top:g} {KINDS.get(kind, ('', ''))[1] or ''}"
                          f"".rstrip() + " in magnitude", source=source, where=key)
-    if 0 < abs(value) < PLAUSIBLE_MIN:
+    if tiny and 0 < abs(value) < PLAUSIBLE_MIN:
         raise InputError(f"'{text}' is too small to be meant (below {PLAUSIBLE_MIN:g} in SI units); write 0 "
                          "if it is zero", source=source, where=key)
     return value

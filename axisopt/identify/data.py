@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from ..units import split_header, to_si, unit_factor
+from ..units import check_plausible, split_header, to_si, unit_factor
 from ..yamlio import close_matches
 
 # column -> quantity kind (None: a plain number without unit)
@@ -227,7 +227,8 @@ def read_dataset(path) -> Dataset:
             if name in ("cycle", "mode") and val < 0:
                 raise InputError(f"{name} must not be negative, got '{cell}'", source=src, where=where)
             if qkind is not None:
-                val = to_si(val, unit, qkind)
+                val = check_plausible(to_si(val, unit, qkind), qkind, f"{cell} {unit}", source=src, key=where,
+                                      tiny=False)
             data[r, j - 1] = val
     if len(lines) == 0:
         raise InputError("no data rows", source=src)

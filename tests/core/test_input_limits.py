@@ -104,3 +104,16 @@ def test_catalog_cells_follow_the_row_rules(tmp_path, capsys, table, column, cel
     rc = main(["evaluate", str(design)])
     err = capsys.readouterr().err.strip()
     assert rc == 2 and "\n" not in err and words in err and f"{table}.csv" in err, err
+
+
+def test_diagnose_data_out_of_range_is_one_line(tmp_path, capsys):
+    """A force of 1e300 N in a test table used to run the fit for minutes with overflow warnings."""
+    data = ROOT / "problems" / "data"
+    text = (data / "table_x_stiffness.csv").read_text().splitlines()
+    cells = text[1].split(",")
+    cells[1] = "1e300"
+    f = tmp_path / "d.csv"
+    f.write_text("\n".join([text[0], ",".join(cells), *text[2:]]) + "\n")
+    rc = main(["diagnose", str(f), "--design", str(data / "table_x.yaml")])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and "\n" not in err and "out of range" in err and "line 2" in err, err
