@@ -136,6 +136,8 @@ def main(argv=None):
                               else prob.objective.mode, prob)
         ts = min(screen(sp, build_constraints(prob), spec)[2] for _ in range(REPEAT))
         rows.append((name, sp.size, sp.n_drives, td, te, tb, d, e, b, sp.size / ts))
+        print(f"  {name}: default {td:.3f} s, exhaustive {te:.2f} s, bonmin {tb:.1f} s "
+              f"({b.status if b else '-'})", file=sys.stderr, flush=True)
 
     def obj(r):
         if r is None:

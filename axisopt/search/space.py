@@ -30,6 +30,7 @@ import pandas as pd
 
 from .. import model
 from ..catalog import USER_STATUS
+from ..errors import InputError
 from ..problem import LIMITS, Problem
 from ..units import N_PER_UM
 
@@ -391,8 +392,6 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     motors = _filtered(cat.motors, r, "motor", r.motor_series, r.motor_vendors)
     if r.max_motor_flange is not None:  # a motor without a listed flange cannot be shown to fit
         motors = motors[(motors["flange"] <= r.max_motor_flange * (1 + 1e-9)).to_numpy()]
-    if problem.axis.brake_used and not r.required("motor"):  # the axis asks for a holding brake
-        motors = motors[(motors["brake_torque"] > 0).to_numpy()]
     couplings = _filtered(cat.couplings, r, "coupling", r.coupling_series)
     if len(couplings) and not r.required("coupling"):
         couplings = couplings[~coupling_dominated(couplings)]
@@ -407,6 +406,11 @@ def _add_drives(sp: Space, problem: Problem) -> None:
         # the coupling-torque check depends on the pair only: pairs that fail it are never formed
         ok = couplings["rated_torque"].to_numpy(float) >= need * peak * (1.0 - 1e-12)
         pairs.extend((mi, int(ci)) for ci in np.nonzero(ok)[0])
+    if not pairs:
+        why = ("no motor is left after the motor filters" if len(motors) == 0 else
+               "no coupling left after the filters carries the peak torque of any allowed motor")
+        raise InputError(f"the drive search has nothing to choose from: {why} (catalog: motor_vendors, "
+                         "motor_series, max_motor_flange, require/exclude)", source=problem.source)
     sp.motors, sp.couplings = motors, couplings
     sp.drives = tuple(pairs)
     D = len(pairs)

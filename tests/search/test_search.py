@@ -274,27 +274,28 @@ def test_cli_solve_json_and_exit_codes(tmp_path, capsys):
     assert "closest designs" in capsys.readouterr().out
 
 
-def test_motor_flange_and_brake_restrictions(tmp_path):
-    """catalog.max_motor_flange keeps only motors whose listed flange fits; a vertical axis (brake auto)
-    searches only motors with a holding brake.  Counted independently from motors.csv."""
+def test_motor_flange_restriction(tmp_path, capsys):
+    """catalog.max_motor_flange keeps only motors whose listed flange fits (a motor without a listed flange
+    cannot be shown to fit); counted independently from motors.csv.  Nothing left: a one-line error."""
     import pandas as pd
 
-    csv = pd.read_csv(Path(__file__).resolve().parents[2] / "catalogs" / "motors.csv")
-    base = (Path(__file__).resolve().parents[2] / "problems" / "vertical_problem.yaml").read_text()
-    assert "catalog:" in base
-    text = base.replace("catalog:", "catalog:\n  max_motor_flange: 130 mm", 1)
-    f = tmp_path / "p.yaml"
-    f.write_text(text)
-    prob = load_problem(f)
-    series = prob.restrictions.motor_series
-    rows = csv if series is None else csv[csv["series"].isin(series)]
-    if prob.restrictions.motor_vendors is not None:
-        rows = rows[rows["vendor"].isin(prob.restrictions.motor_vendors)]
-    want = rows[(rows["flange [mm]"] <= 130) & (rows["brake_torque [N.m]"] > 0)]["id"]
-    sp = build_space(prob)
-    got = [] if sp.motors is None else list(sp.motors["id"])
-    assert sorted(got) == sorted(want)
+    root = Path(__file__).resolve().parents[2]
+    csv = pd.read_csv(root / "catalogs" / "motors.csv")
+    base = (root / "problems" / "teaching_problem.yaml").read_text()
     q = tmp_path / "q.yaml"
     q.write_text(base)
-    unrestricted = build_space(load_problem(q))
-    assert set(unrestricted.motors["id"]) == set(rows[rows["brake_torque [N.m]"] > 0]["id"])
+    prob = load_problem(q)
+    rows = csv[csv["series"].isin(prob.restrictions.motor_series)]
+    assert set(build_space(prob).motors["id"]) == set(rows["id"])
+    for limit in (60, 130, 1000):
+        f = tmp_path / f"p{limit}.yaml"
+        f.write_text(base.replace("catalog:", f"catalog:\n  max_motor_flange: {limit} mm", 1))
+        want = sorted(rows[rows["flange [mm]"] <= limit]["id"])
+        if not want:
+            with pytest.raises(InputError, match="nothing to choose from"):
+                build_space(load_problem(f))
+            assert main(["solve", str(f)]) == 2
+            err = capsys.readouterr().err.strip()
+            assert "\n" not in err and "max_motor_flange" in err
+            continue
+        assert sorted(build_space(load_problem(f)).motors["id"]) == want
