@@ -28,13 +28,12 @@ def json_default(o):
 
 
 def write_json(obj, target: str) -> None:
-    """Write ``obj`` as JSON to a file, or to stdout when ``target`` is '-'."""
+    """Write ``obj`` as JSON to a file (atomically: the old file stays whole if writing fails), or to stdout
+    when ``target`` is '-'.  A file that cannot be written is an InputError naming it."""
     text = json.dumps(obj, indent=2, default=json_default, allow_nan=False)
     if target == "-":
         print(text)
         return
-    try:
-        with open(target, "w", encoding="utf-8") as fh:
-            fh.write(text + "\n")
-    except OSError as exc:
-        raise InputError(f"cannot write JSON ({exc.strerror})", source=target) from None
+    from .report import write_text_atomic
+
+    write_text_atomic(target, text + "\n", what="JSON")

@@ -123,14 +123,24 @@ def cmd_study(args) -> int:
         return 130
     bar.close()
     s = summary
+    if s.redone:
+        print(f"resume: {s.redone} case{'s' if s.redone != 1 else ''} recorded as worker_died (an "
+              f"infrastructure failure) by an earlier run solved again")
     print(f"study {study.name}: {s.total} cases; {s.solved} solved now in {s.time:.1f} s on {s.backend}"
           + (f" ({s.workers} workers)" if s.workers else "")
           + (f", {s.resumed} kept from an earlier run" if s.resumed else "") + f"; {s.failed} failed")
-    if s.lost:
-        print(f"{s.lost} cases not run ({s.lost_reason}); rerun with --resume", file=sys.stderr)
     for name, path in s.files.items():
         print(f"  {name}: {path}")
-    return EXIT_NEGATIVE if s.lost else EXIT_OK
+    notes = []
+    if s.died:
+        notes.append(f"{s.died} case{'s' if s.died != 1 else ''} not solved because the worker process died "
+                     f"twice while solving {'them' if s.died != 1 else 'it'} (status worker_died)")
+    if s.lost:
+        notes.append(f"{s.lost} cases not run ({s.lost_reason})")
+    if notes:
+        note = "; ".join(notes) + f"; rerun with 'axisopt study {args.study} --out {out} --resume'"
+        print("note: " + " ".join(note.split()), file=sys.stderr)  # one line
+    return EXIT_NEGATIVE if s.lost or s.died else EXIT_OK
 
 
 __all__ = ["register", "EXIT_INPUT"]

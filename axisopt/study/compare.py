@@ -219,10 +219,10 @@ def compare_rows(items) -> list:
 def write_compare_csv(items, path) -> None:
     import pandas as pd
 
-    try:
-        pd.DataFrame(compare_rows(items)).to_csv(path, index=False)
-    except OSError as exc:
-        raise InputError(f"cannot write CSV ({exc.strerror})", source=str(path)) from None
+    from ..report import atomic_file
+
+    with atomic_file(path, "w", what="CSV") as fh:
+        pd.DataFrame(compare_rows(items)).to_csv(fh, index=False)
 
 
 __all__ = ["Compared", "load_compared", "compare_table", "compare_dict", "compare_rows", "write_compare_csv"]

@@ -11,10 +11,20 @@ Execution back-ends (all call the same :func:`run_batch` on small case definitio
   then.
 
 Nothing is lost: the parent writes every finished case to ``DIR/cases/<case_id>.json`` through a
-temporary file and ``os.replace`` (atomic), so a run stopped by Ctrl-C, ``kill -9`` or a dead worker
-continues with ``resume=True`` and recomputes only the missing cases.  A failing case (infeasible,
-bad combination of inputs, solver error) is a result with its reason; the others go on.  A case
-whose worker process dies twice is recorded as failed rather than retried forever.
+temporary file and ``os.replace`` (atomic, :func:`axisopt.report.atomic_file`, like every other output
+file), so a run stopped by Ctrl-C, ``kill -9`` or a dead worker continues with ``resume=True`` and
+recomputes only the missing cases.  A failing case (infeasible, bad combination of inputs, solver error)
+is a result with its reason; the others go on.
+
+The local pool sends one case at a time to each worker and the worker acknowledges it before solving,
+so the parent knows which case each worker is running.  A worker that dies (killed, out of memory,
+crashed in native code) costs only the case it was running: that case is tried again, the other
+workers go on, a new worker takes the dead one's place.  A case whose worker dies twice while solving
+it is recorded with status ``worker_died`` (an infrastructure failure, :data:`INFRA_STATUSES`), which a
+resumed run solves again.
+
+One run at a time writes to a study directory: ``DIR/.lock`` holds the pid, host and process start time
+of the run; a second run stops with an InputError, a lock left by a run that is gone is taken over.
 """
 
 from __future__ import annotations
@@ -34,6 +44,9 @@ from ..errors import InputError
 from .spec import Case, Study, build_problem, short_message
 
 OK_STATUSES = ("optimal", "feasible")
+# failures of the machinery, not of the case: not a result, solved again by a resumed run
+INFRA_STATUSES = ("worker_died",)
+WORKER_DEATHS = 2  # a case whose worker dies this often while solving it is recorded as worker_died
 RECORD_VERSION = 1
 # A solve is not thread-safe (per-process CasADi solver caches): a Dask worker with several threads
 # runs its cases one at a time.
@@ -108,6 +121,20 @@ def _num(v):
     return float(v) if v is not None and math.isfinite(v) else None
 
 
+def _pool_worker(conn, ctx: dict, solve, parent_pid: int) -> None:
+    """A local pool worker: receive a case, acknowledge it, solve it, send the record; None ends it."""
+    _init_worker(parent_pid)
+    while True:
+        try:
+            case = conn.recv()
+        except (EOFError, OSError):  # the parent is gone or closed the pipe
+            return
+        if case is None:
+            return
+        conn.send(("start", case.case_id))
+        conn.send(("done", solve(ctx, case)))
+
+
 def _init_worker(parent_pid: int):
     import signal
 
@@ -139,8 +166,7 @@ class CaseStore:
         from ..report import make_output_dir
 
         make_output_dir(self.dir)
-        for tmp in self.dir.glob(".*.tmp"):  # left by a run killed while writing
-            tmp.unlink(missing_ok=True)
+        _sweep_temporaries(self.dir)
 
     def existing(self) -> set:
         if not self.dir.is_dir():
@@ -148,13 +174,11 @@ class CaseStore:
         return {p.stem for p in self.dir.glob("*.json")}
 
     def write(self, rec: dict) -> None:
-        final = self.dir / f"{rec['case_id']}.json"
-        tmp = self.dir / f".{rec['case_id']}.{os.getpid()}.tmp"
-        with open(tmp, "w", encoding="utf-8") as fh:
-            json.dump(rec, fh, indent=1, allow_nan=False, default=_json_default)
-        # os.replace is atomic: a reader (or a resumed run) sees the whole file or none.  No fsync: that
-        # only guards against power loss, after which an unreadable file is treated as missing.
-        os.replace(tmp, final)
+        from ..report import write_text_atomic
+
+        # no fsync per case: after a power loss an unreadable case file is treated as missing and solved again
+        text = json.dumps(rec, indent=1, allow_nan=False, default=_json_default)
+        write_text_atomic(self.dir / f"{rec['case_id']}.json", text, what="case result", fsync=False)
 
     def read(self, case_id: str) -> dict | None:
         try:
@@ -162,6 +186,16 @@ class CaseStore:
                 return json.load(fh)
         except (OSError, ValueError):
             return None
+
+
+def _sweep_temporaries(d: Path) -> None:
+    """Remove the temporary files of :func:`axisopt.report.atomic_file` left by a run killed mid-write
+    (only under the study lock: no other run is writing here)."""
+    for tmp in d.glob(".*.tmp"):
+        try:
+            tmp.unlink()
+        except OSError:
+            pass
 
 
 def _json_default(o):
@@ -209,6 +243,8 @@ class RunSummary:
     backend: str
     workers: int
     files: dict = field(default_factory=dict)  # name -> path of the table, plots, report
+    died: int = 0  # recorded as worker_died by this run (their worker died twice); rerun with resume
+    redone: int = 0  # recorded as worker_died by an earlier run and solved again by this one
 
 
 def default_workers() -> int:
@@ -229,10 +265,21 @@ def run_study(study: Study, out_dir, *, workers: int | None = None, scheduler=No
 
     workers   : local worker processes (default: all cores); 0 solves in this process
     scheduler : address of a Dask scheduler (or a ``dask.distributed.Client``); overrides workers
-    resume    : continue a run in ``out_dir``; without it an ``out_dir`` holding results is an error
+    resume    : continue a run in ``out_dir``; without it an ``out_dir`` holding results is an error.
+                Cases recorded as infrastructure failures (``worker_died``) are solved again.
     progress  : callable(Progress) after each finished case
+
+    Holds ``out_dir/.lock`` while it runs (InputError if another run holds it).  Files that cannot be
+    written (disk full, no permission, a directory where a file belongs) are InputErrors naming the file.
     """
-    out = Path(out_dir)
+    from ..report import make_output_dir
+
+    out = make_output_dir(out_dir)
+    with StudyLock(out):
+        return _run_locked(study, out, workers, scheduler, resume, progress, batch, report)
+
+
+def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, report) -> RunSummary:
     store = CaseStore(out)
     have = store.existing()
     ids = {c.case_id for c in study.cases}
@@ -240,18 +287,29 @@ def run_study(study: Study, out_dir, *, workers: int | None = None, scheduler=No
         raise InputError(f"already holds {len(have)} case results; pass --resume to continue that study or "
                          f"choose another --out", source=str(out))
     store.prepare()
+    _sweep_temporaries(out)
+    if (out / "plots").is_dir():
+        _sweep_temporaries(out / "plots")
     _write_definition(study, out)
-    done_ids = {i for i in have & ids if store.read(i) is not None}
+    kept = {}
+    for i in have & ids:
+        rec = store.read(i)
+        if rec is not None:
+            kept[i] = rec.get("status")
+    redo = {i for i, st in kept.items() if st in INFRA_STATUSES}  # the machinery failed, not the case
+    done_ids = set(kept) - redo
     todo = [c for c in study.cases if c.case_id not in done_ids]
     prog = Progress(total=len(study.cases), done=len(done_ids), resumed=len(done_ids))
-    if done_ids:
-        prog.failed = sum(1 for i in done_ids if store.read(i).get("status") not in OK_STATUSES)
+    prog.failed = sum(1 for i in done_ids if kept[i] not in OK_STATUSES)
+    died = 0
 
     def sink(rec: dict) -> None:
+        nonlocal died
         store.write(rec)
         prog.done += 1
         if rec["status"] not in OK_STATUSES:
             prog.failed += 1
+        died += rec["status"] in INFRA_STATUSES
         if progress is not None:
             progress(prog)
 
@@ -267,17 +325,17 @@ def run_study(study: Study, out_dir, *, workers: int | None = None, scheduler=No
         nw = default_workers() if workers is None else int(workers)
         if nw < 0:
             raise InputError(f"--workers must be 0 or more, got {nw}")
-        bs = batch or batch_size(len(todo), max(nw, 1))
         if nw == 0 or not todo:
             backend = "in-process"
             for c in todo:
                 sink(solve_case(ctx, c))
         else:
             backend = "local pool"
-            _run_pool(min(nw, len(todo)), ctx, _batches(todo, bs), sink)
+            # solve_case is looked up now (not imported by the workers) so that a test can replace it
+            lost, lost_reason = _run_pool(min(nw, len(todo)), ctx, todo, sink, solve_case)
     summary = RunSummary(out_dir=str(out), total=len(study.cases), solved=prog.done - prog.resumed,
                          resumed=prog.resumed, failed=prog.failed, lost=lost, lost_reason=lost_reason,
-                         time=prog.elapsed, backend=backend, workers=nw)
+                         time=prog.elapsed, backend=backend, workers=nw, died=died, redone=len(redo))
     if report:
         from .table import write_outputs
 
@@ -290,69 +348,268 @@ def _batches(cases, size: int) -> list:
 
 
 def _write_definition(study: Study, out: Path) -> None:
+    from ..report import write_text_atomic
+
     d = {"name": study.name, "source": study.source, "base_source": study.base_source, "method": study.method,
          "combine": study.combine, "keys": list(study.keys), "fingerprint": study.fingerprint(),
          "cases": [{"case_id": c.case_id, "index": c.index, "inputs": c.inputs()} for c in study.cases]}
-    tmp = out / ".study.json.tmp"
-    tmp.write_text(json.dumps(d, indent=1, default=str) + "\n", encoding="utf-8")
-    os.replace(tmp, out / "study.json")
+    write_text_atomic(out / "study.json", json.dumps(d, indent=1, default=str) + "\n", what="study definition")
 
+
+# ------------------------------------------------------------------------------------------- lock
+
+class StudyLock:
+    """``DIR/.lock``: one run at a time writes to a study directory.
+
+    The file is created with ``O_CREAT | O_EXCL`` and holds one JSON line: pid, host and start time of
+    the holding process.  A lock whose process is gone (same host; a pid now used by another process
+    does not count) is taken over; taking it is serialised with ``flock`` on the directory, so two runs
+    cannot both take over the same stale lock.  A lock from another host is never taken over: delete it
+    by hand when that run is gone.
+    """
+
+    def __init__(self, out_dir):
+        self.dir = Path(out_dir)
+        self.path = self.dir / ".lock"
+        self.mine = None
+
+    def __enter__(self):
+        self.acquire()
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.release()
+
+    def acquire(self) -> None:
+        me = {"pid": os.getpid(), "host": socket.gethostname(), "start": _process_start(os.getpid()),
+              "since": time.strftime("%Y-%m-%d %H:%M:%S")}
+        text = json.dumps(me) + "\n"
+        try:
+            with _directory_flock(self.dir):
+                try:
+                    self._create(text)
+                except FileExistsError:
+                    holder = self._holder()
+                    if _holder_alive(holder):
+                        raise self._busy(holder) from None
+                    os.unlink(self.path)  # stale: its run is gone
+                    self._create(text)
+        except OSError as exc:
+            raise InputError(f"cannot take the study lock ({exc.strerror or exc})", source=str(self.path)) \
+                from None
+        self.mine = me
+
+    def _create(self, text: str) -> None:
+        fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644)
+        try:
+            os.write(fd, text.encode())
+        finally:
+            os.close(fd)
+
+    def _holder(self) -> dict:
+        try:
+            d = json.loads(self.path.read_text(encoding="utf-8"))
+        except ValueError:
+            return {}  # written only in part: its writer died between create and write
+        return d if isinstance(d, dict) else {}
+
+    def _busy(self, h: dict) -> InputError:
+        return InputError(f"another study run (pid {h.get('pid')} on {h.get('host')}, since {h.get('since')}) is "
+                          f"writing to this directory; wait for it to end, or delete {self.path} if that run "
+                          f"is gone", source=str(self.dir))
+
+    def release(self) -> None:
+        if self.mine is None:
+            return
+        try:
+            if self._holder().get("pid") == self.mine["pid"]:
+                os.unlink(self.path)
+        except OSError:
+            pass  # left behind: the next run finds its process gone and takes it over
+        self.mine = None
+
+
+class _directory_flock:
+    """Exclusive ``flock`` on a directory while a lock file in it is checked and taken (no-op without
+    fcntl)."""
+
+    def __init__(self, d: Path):
+        self.d = d
+        self.fd = None
+
+    def __enter__(self):
+        try:
+            import fcntl
+        except ImportError:  # pragma: no cover - not POSIX
+            return self
+        self.fd = os.open(self.d, os.O_RDONLY)
+        fcntl.flock(self.fd, fcntl.LOCK_EX)
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if self.fd is not None:
+            os.close(self.fd)  # releases the flock
+
+
+def _process_start(pid: int):
+    """Start time of a process in clock ticks since boot (Linux ``/proc``), else None."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii", errors="replace") as fh:
+            return int(fh.read().rsplit(")", 1)[1].split()[19])
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def _holder_alive(h: dict) -> bool:
+    """Whether the run recorded in a lock file may still be running."""
+    if not h or not isinstance(h.get("pid"), int):
+        return False  # garbled: its writer died while writing it
+    if h.get("host") != socket.gethostname():
+        return True  # cannot tell: another host's run is never taken over
+    try:
+        os.kill(h["pid"], 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        pass  # a process of another user has that pid
+    start = _process_start(h["pid"])
+    return not (start is not None and h.get("start") is not None and start != h["start"])
+
+
+# ------------------------------------------------------------------------------------------- pool
 
 def _mp_context():
     methods = mp.get_all_start_methods()
     return mp.get_context("forkserver" if "forkserver" in methods else "spawn")
 
 
-def _run_pool(workers: int, ctx: dict, batches: list, sink) -> None:
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-    from concurrent.futures.process import BrokenProcessPool
+@dataclass
+class _Worker:
+    proc: object
+    conn: object
+    case: Case | None = None  # the case sent to it and not finished
+    started: bool = False  # the worker acknowledged that case: it is solving it
 
-    crashes: Counter = Counter()
-    pending = list(batches)
-    while pending:
-        ex = ProcessPoolExecutor(workers, mp_context=_mp_context(), initializer=_init_worker,
-                                 initargs=(os.getpid(),))
-        futs = {ex.submit(run_batch, ctx, b): b for b in pending}
-        pending = []
+
+def _run_pool(workers: int, ctx: dict, cases: list, sink, solve) -> tuple:
+    """Solve ``cases`` on ``workers`` local processes, one case at a time per worker.
+
+    A worker that dies costs only the case it acknowledged (``started``): that case goes back to the
+    front of the queue, or is recorded as ``worker_died`` after :data:`WORKER_DEATHS` deaths; a case sent
+    but not yet acknowledged goes back uncharged; a new worker replaces the dead one.  Workers that keep
+    dying before they solve anything (broken installation, no memory) end the run with the cases left
+    counted as lost.  Returns (lost, reason).
+    """
+    from collections import deque
+    from multiprocessing.connection import wait
+
+    mpc = _mp_context()
+    queue = deque(cases)
+    deaths: Counter = Counter()
+    pool: list = []
+    barren, last_exit = 0, ""  # deaths in a row that cost no case: no case was running
+
+    def spawn() -> None:
+        here, there = mpc.Pipe()
+        proc = mpc.Process(target=_pool_worker, args=(there, ctx, solve, os.getpid()), daemon=True)
+        proc.start()
+        there.close()
+        pool.append(_Worker(proc, here))
+
+    def receive(w: _Worker) -> bool:
+        """Take the worker's messages; False when its pipe is closed (the worker is gone)."""
+        nonlocal barren
         try:
-            for f in as_completed(futs):
-                recs = f.result()
-                futs.pop(f)
-                for r in recs:
-                    sink(r)
-        except BrokenProcessPool:
-            # a worker died (killed, out of memory, crashed in native code): keep what finished, retry
-            # the rest one case per task; a case in flight at two deaths is recorded as failed
-            for f, b in futs.items():
-                if f.done() and f.exception() is None:
-                    for r in f.result():
-                        sink(r)
-                    continue
-                for c in b:
-                    crashes[c.case_id] += 1
-                    if crashes[c.case_id] >= 2:
-                        sink({"version": RECORD_VERSION, "case_id": c.case_id, "index": c.index,
-                              "inputs": c.inputs(), "status": "error", "time_s": 0.0, "worker": "",
-                              "reason": "worker process died twice while solving this case"})
-                    else:
-                        pending.append((c,))
-            pending.sort(key=lambda b: b[0].index)
-        except BaseException:
-            _stop(ex)
-            raise
-        finally:
-            ex.shutdown(wait=True, cancel_futures=True)
+            while w.conn.poll():
+                kind, val = w.conn.recv()
+                if kind == "start":
+                    w.started = True
+                else:
+                    w.case, w.started, barren = None, False, 0
+                    sink(val)
+        except (EOFError, OSError):
+            return False
+        return True
+
+    def bury(w: _Worker) -> None:
+        nonlocal barren, last_exit
+        receive(w)  # a record sent just before it died still counts
+        pool.remove(w)
+        w.conn.close()
+        w.proc.join(5)
+        last_exit = _exit_text(w.proc.exitcode)
+        c = w.case
+        if c is None or not w.started:
+            barren += 1
+            if c is not None:
+                queue.appendleft(c)  # sent, never started: not this case's fault
+            return
+        deaths[c.case_id] += 1
+        if deaths[c.case_id] < WORKER_DEATHS:
+            queue.appendleft(c)  # alone on a fresh worker next
+            return
+        sink({"version": RECORD_VERSION, "case_id": c.case_id, "index": c.index, "inputs": c.inputs(),
+              "status": "worker_died", "time_s": 0.0, "worker": "",
+              "reason": f"the worker process died {deaths[c.case_id]} times while solving this case (last: "
+                        f"{last_exit}); a resumed run (--resume) solves it again"})
+
+    finished = False
+    try:
+        while queue or any(w.case is not None for w in pool):
+            if barren > 2 * workers + 2:
+                lost = len(queue) + sum(w.case is not None for w in pool)
+                return lost, f"worker processes keep dying before they solve a case ({last_exit})"
+            busy = sum(w.case is not None for w in pool)
+            while len(pool) < min(workers, busy + len(queue)):
+                spawn()
+            for w in pool:
+                if w.case is None and queue:
+                    w.case, w.started = queue.popleft(), False
+                    try:
+                        w.conn.send(w.case)
+                    except OSError:
+                        pass  # it died: its sentinel is ready
+            ready = set(wait([w.conn for w in pool] + [w.proc.sentinel for w in pool]))
+            for w in list(pool):
+                if w.conn in ready or w.proc.sentinel in ready:
+                    if not receive(w) or not w.proc.is_alive():
+                        bury(w)
+        finished = True
+        return 0, ""
+    finally:
+        _stop_workers(pool, gently=finished)
 
 
-def _stop(ex) -> None:
-    """Stop a pool now (Ctrl-C): end the worker processes we started, then cancel queued tasks."""
-    procs = list((getattr(ex, "_processes", None) or {}).values())  # shutdown() forgets them
-    for p in procs:
-        if p.is_alive():
-            p.terminate()
-    ex.shutdown(wait=False, cancel_futures=True)
-    for p in procs:
-        p.join(5)
+def _exit_text(code) -> str:
+    if code is None:
+        return "did not exit"
+    if code < 0:
+        import signal
+
+        try:
+            return f"killed by {signal.Signals(-code).name}"
+        except ValueError:
+            return f"killed by signal {-code}"
+    return f"exit code {code}"
+
+
+def _stop_workers(pool: list, gently: bool) -> None:
+    """End the pool's processes: idle ones are asked to stop, the others (Ctrl-C, an error) terminated."""
+    for w in pool:
+        if gently and w.case is None:
+            try:
+                w.conn.send(None)
+                continue
+            except OSError:
+                pass
+        if w.proc.is_alive():
+            w.proc.terminate()
+    for w in pool:
+        w.proc.join(5)
+        if w.proc.is_alive():  # pragma: no cover - stuck in native code
+            w.proc.kill()
+            w.proc.join(5)
+        w.conn.close()
 
 
 def _run_dask(scheduler, ctx: dict, batches: list, sink):
@@ -392,4 +649,5 @@ def _run_dask(scheduler, ctx: dict, batches: list, sink):
     return lost, reason, nw
 
 
-__all__ = ["run_study", "solve_case", "run_batch", "CaseStore", "Progress", "RunSummary", "OK_STATUSES"]
+__all__ = ["run_study", "solve_case", "run_batch", "CaseStore", "StudyLock", "Progress", "RunSummary", "OK_STATUSES",
+           "INFRA_STATUSES"]

@@ -14,7 +14,7 @@ import math
 import re
 from pathlib import Path
 
-from ..report import save_figure
+from ..report import atomic_file, make_output_dir, save_figure, write_text_atomic
 from .run import OK_STATUSES, CaseStore
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
@@ -129,24 +129,30 @@ def results_table(study, out_dir):
 
 def write_outputs(study, out_dir, summary=None) -> dict:
     """Write ``results.csv``, ``results.parquet`` (when pyarrow is installed), the plots and
-    ``report.md`` into ``out_dir``; returns {name: path}."""
+    ``report.md`` into ``out_dir``; returns {name: path}.
+
+    Each file is replaced atomically (:func:`axisopt.report.atomic_file`): a run stopped or out of disk
+    space while writing leaves the previous file whole.  A file that cannot be written is an InputError
+    naming it."""
     out = Path(out_dir)
     df = results_table(study, out)
     files = {}
     files["csv"] = str(out / "results.csv")
-    df.to_csv(files["csv"], index=False)
+    with atomic_file(files["csv"], "w", what="results table") as fh:
+        df.to_csv(fh, index=False)
     try:
         import pyarrow  # noqa: F401
     except ImportError:
         parquet_note = "Parquet not written: install pyarrow (pip install 'axisopt[parquet]')"
     else:
         files["parquet"] = str(out / "results.parquet")
-        df.to_parquet(files["parquet"], index=False)
+        with atomic_file(files["parquet"], "wb", what="results table") as fh:
+            df.to_parquet(fh, index=False)
         parquet_note = ""
     plots = summary_plots(study, df, out / "plots", out)
     files.update(plots)
     files["report"] = str(out / "report.md")
-    (out / "report.md").write_text(markdown_report(study, df, files, summary, parquet_note), encoding="utf-8")
+    write_text_atomic(files["report"], markdown_report(study, df, files, summary, parquet_note), what="report")
     return files
 
 
@@ -173,7 +179,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
     ok = df[df["status"].isin(OK_STATUSES)]
     if ok.empty:
         return files
-    plot_dir.mkdir(parents=True, exist_ok=True)
+    make_output_dir(plot_dir)
     cols = input_columns(study)
     group = _group_column(study, ok, cols)
     for key, (name, conv) in cols.items():
