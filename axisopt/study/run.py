@@ -1,12 +1,13 @@
 """Running a study: one solve per case, in worker processes, each result saved as it completes.
 
-Execution back-ends (all call the same :func:`run_batch` on small case definitions):
+Execution back-ends (all call the same :func:`solve_case` on small case definitions):
 
 * in process (``workers=0``): a plain loop, for debugging;
-* a local pool (default): ``concurrent.futures.ProcessPoolExecutor`` with the ``forkserver`` start
-  method (``spawn`` where there is none), one worker per core.  Each worker builds its own CasADi
-  functions and loads the catalog once (both cached per process); nothing but case definitions and
-  plain result dicts crosses the process boundary;
+* a local pool (default): one ``multiprocessing`` process per core, started by a ``forkserver`` that
+  has imported the solver stack once (``spawn`` where there is none), each fed one case at a time
+  through its own pipe.  Each worker builds its own CasADi functions and loads the catalog once (both
+  cached per process); nothing but case definitions and plain result dicts crosses the process
+  boundary;
 * an existing Dask cluster (``scheduler='tcp://host:8786'``): ``dask.distributed`` is imported only
   then.
 
@@ -33,6 +34,7 @@ import json
 import math
 import multiprocessing as mp
 import os
+import re
 import socket
 import threading
 import time
@@ -188,14 +190,19 @@ class CaseStore:
             return None
 
 
+# .NAME.PID.RANDOM.tmp of atomic_file (and .CASE.PID.tmp of earlier versions)
+_TEMPORARY = re.compile(r"^\..+\.\d+(\.[0-9a-f]{8})?\.tmp$")
+
+
 def _sweep_temporaries(d: Path) -> None:
     """Remove the temporary files of :func:`axisopt.report.atomic_file` left by a run killed mid-write
     (only under the study lock: no other run is writing here)."""
     for tmp in d.glob(".*.tmp"):
-        try:
-            tmp.unlink()
-        except OSError:
-            pass
+        if _TEMPORARY.match(tmp.name):
+            try:
+                tmp.unlink()
+            except OSError:
+                pass
 
 
 def _json_default(o):
@@ -480,7 +487,13 @@ def _holder_alive(h: dict) -> bool:
 
 def _mp_context():
     methods = mp.get_all_start_methods()
-    return mp.get_context("forkserver" if "forkserver" in methods else "spawn")
+    if "forkserver" not in methods:  # pragma: no cover - not POSIX
+        return mp.get_context("spawn")
+    c = mp.get_context("forkserver")
+    # the fork server imports the solver stack once, so that a worker (or one replacing a dead worker)
+    # starts in milliseconds instead of a second; it takes effect when the server starts
+    c.set_forkserver_preload(["axisopt.study.run", "axisopt.search", "axisopt.model", "axisopt.report"])
+    return c
 
 
 @dataclass
