@@ -48,6 +48,8 @@ from .spec import Case, Study, build_problem, short_message
 OK_STATUSES = ("optimal", "feasible")
 # failures of the machinery, not of the case: not a result, solved again by a resumed run
 INFRA_STATUSES = ("worker_died",)
+# how versions before worker_died recorded a case whose worker died twice (status "error")
+_LEGACY_WORKER_DIED = "worker process died twice while solving this case"
 WORKER_DEATHS = 2  # a case whose worker dies this often while solving it is recorded as worker_died
 RECORD_VERSION = 1
 # A solve is not thread-safe (per-process CasADi solver caches): a Dask worker with several threads
@@ -302,7 +304,7 @@ def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, r
     for i in have & ids:
         rec = store.read(i)
         if rec is not None:
-            kept[i] = rec.get("status")
+            kept[i] = "worker_died" if rec.get("reason") == _LEGACY_WORKER_DIED else rec.get("status")
     redo = {i for i, st in kept.items() if st in INFRA_STATUSES}  # the machinery failed, not the case
     done_ids = set(kept) - redo
     todo = [c for c in study.cases if c.case_id not in done_ids]
@@ -410,8 +412,11 @@ class StudyLock:
         fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644)
         try:
             os.write(fd, text.encode())
-        finally:
+        except OSError:  # disk full: no lock without its holder
             os.close(fd)
+            os.unlink(self.path)
+            raise
+        os.close(fd)
 
     def _holder(self) -> dict:
         try:
@@ -450,7 +455,10 @@ class _directory_flock:
         except ImportError:  # pragma: no cover - not POSIX
             return self
         self.fd = os.open(self.d, os.O_RDONLY)
-        fcntl.flock(self.fd, fcntl.LOCK_EX)
+        try:
+            fcntl.flock(self.fd, fcntl.LOCK_EX)
+        except OSError:  # a file system without flock: the lock file alone still keeps runs apart
+            pass
         return self
 
     def __exit__(self, *exc) -> None:

@@ -248,6 +248,23 @@ def test_only_the_case_a_dead_worker_was_running_is_charged(reference, tmp_path,
     pd.testing.assert_frame_equal(stable(results_table(st, out)), stable(ref))
 
 
+@pytest.mark.parametrize("status, reason", [
+    ("worker_died", "the worker process died 2 times while solving this case (last: killed by SIGKILL)"),
+    ("error", "worker process died twice while solving this case"),  # as versions before worker_died wrote it
+])
+def test_resume_solves_again_the_cases_lost_to_dead_workers(reference, tmp_path, capsys, status, reason):
+    st, _, ref = reference
+    src, out = _finished_copy(reference, tmp_path)
+    for p in sorted((out / "cases").glob("*.json"))[2:4]:
+        rec = json.loads(p.read_text(encoding="utf-8"))
+        keep = {k: rec[k] for k in ("version", "case_id", "index", "inputs")}
+        p.write_text(json.dumps({**keep, "status": status, "reason": reason, "time_s": 0.0, "worker": ""}),
+                     encoding="utf-8")
+    s = run_study(st, out, workers=0, resume=True, report=False)
+    assert s.solved == 2 and s.redone == 2 and s.resumed == 14
+    pd.testing.assert_frame_equal(stable(results_table(st, out)), stable(ref))
+
+
 def _wait_for(cond, proc, what, timeout=60.0):
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
