@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from pathlib import Path
 
 import yaml
 
@@ -80,10 +79,9 @@ def calibration_dict(diag, design=None, sources=()) -> dict:
 
 def save_calibration(diag, path, design=None, sources=()) -> dict:
     d = calibration_dict(diag, design, sources)
-    try:
-        Path(path).write_text(yaml.safe_dump(d, sort_keys=False, allow_unicode=True), encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot write calibration ({exc.strerror})", source=str(path)) from None
+    from ..report import write_text_atomic
+
+    write_text_atomic(path, yaml.safe_dump(d, sort_keys=False, allow_unicode=True), what="calibration")
     return d
 
 

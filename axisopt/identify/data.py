@@ -284,7 +284,9 @@ def write_dataset(ds: Dataset, path, units: dict | None = None) -> None:
         )
         heads.append(f"{n} [{u}]")
         factors.append((1.0 / unit_factor(u, q), -273.15 if q == "temperature" else 0.0))
-    with Path(path).open("w", newline="", encoding="utf-8") as fh:
+    from ..report import atomic_file
+
+    with atomic_file(path, "w", what="data CSV") as fh:
         w = csv.writer(fh)
         w.writerow(heads)
         for r in range(ds.n):

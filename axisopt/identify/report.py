@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..report import save_figure
+from ..report import save_figure, write_text_atomic
 from .diagnose import _split, residual_table
 from .measure import Y_UNIT
 
@@ -268,5 +268,5 @@ def write_report(diag, outdir) -> Path:
         save_figure(fig, png, dpi=90)
         md += [f"![residuals {Path(o.dataset.source).name}]({png.name})", ""]
     path = out / "report.md"
-    path.write_text("\n".join(md) + "\n", encoding="utf-8")
+    write_text_atomic(path, "\n".join(md) + "\n", what="report")
     return path
