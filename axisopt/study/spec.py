@@ -28,6 +28,7 @@ import copy
 import hashlib
 import itertools
 import json
+import math
 import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -127,6 +128,10 @@ def load_study(path) -> Study:
 
 # ------------------------------------------------------------------------------------------ sweeps
 
+MAX_VALUES = 100_000  # values of one sweep (random n, grid steps)
+MAX_CASES = 1_000_000  # cases of one study
+
+
 def _read_sweep(sec: Section, key: str) -> Sweep:
     node = sec.raw(key)
     where = sec.where(key)
@@ -142,8 +147,8 @@ def _read_sweep(sec: Section, key: str) -> Sweep:
         sub = Section(node, sec.source, sec.key_path(key))
         rs = sub.section("random", required=True)
         sub.done()
-        n = int(rs.number("n", required=True, integer=True, minimum=1))
-        seed = rs.number("seed", required=True, integer=True)
+        n = int(rs.number("n", required=True, integer=True, minimum=1, maximum=MAX_VALUES))
+        seed = rs.number("seed", required=True, integer=True, minimum=0, maximum=2**63 - 1)
         rng = np.random.default_rng(int(seed))
         if rs.has("choice"):
             choices = rs.value("choice")
@@ -166,7 +171,7 @@ def _read_sweep(sec: Section, key: str) -> Sweep:
     if isinstance(v, dict) and ("from" in v or "to" in v or "steps" in v):
         rs = Section(node, sec.source, sec.key_path(key))
         lo, hi, unit = _pair(rs, "from", "to")
-        steps = int(rs.number("steps", required=True, integer=True, minimum=1))
+        steps = int(rs.number("steps", required=True, integer=True, minimum=1, maximum=MAX_VALUES))
         spacing = rs.choice("spacing", ("linear", "log"), "linear")
         rs.done()
         if spacing == "log":
@@ -198,11 +203,15 @@ def _split(v, sec: Section, key: str):
     if isinstance(v, bool):
         raise sec.error(key, f"expected a number with a unit, got {v!r}")
     if isinstance(v, (int, float)):
-        return float(v), ""
-    m = _QTY.match(str(v))
-    if not m:
-        raise sec.error(key, f"cannot read '{v}' as a number with a unit")
-    return float(m.group(1)), m.group(2)
+        x, unit = float(v), ""
+    else:
+        m = _QTY.match(str(v)) if len(str(v)) <= 200 else None
+        if not m:
+            raise sec.error(key, f"cannot read '{str(v)[:60]}' as a number with a unit")
+        x, unit = float(m.group(1)), m.group(2)
+    if not math.isfinite(x) or abs(x) > 1e15:
+        raise sec.error(key, f"'{v}' is not a finite number of sensible size")
+    return x, unit
 
 
 def _fmt(x: float, unit: str, integer: bool):
@@ -243,6 +252,10 @@ def expand(study: Study, sweep_sec: Section | None = None) -> tuple:
 def _rows(study: Study, sweep_sec: Section | None = None) -> list:
     sweeps = study.sweeps
     if study.combine == "product":
+        total = math.prod(len(s.values) for s in sweeps)
+        if total > MAX_CASES:
+            raise InputError(f"the sweep makes {total:,} cases (at most {MAX_CASES:,}); split the study",
+                             source=study.source, where="key 'sweep'")
         return list(itertools.product(*(s.values for s in sweeps)))
     lengths = {s.key: len(s.values) for s in sweeps if s.kind != "fixed"}
     n = max(lengths.values(), default=1)

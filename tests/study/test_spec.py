@@ -58,6 +58,13 @@ def test_range_random_zip_and_inline_base(tmp_path):
     ("axis.stroke: {random: {low: 1 mm, high: 2 mm, n: 3}}", "seed"),
     ("axis.stroke: {step: 3}", "axis.stroke"),
     ("objective.mode: [stiffness]", "objective.mode"),            # base has 'objective: frequency' (a value)
+    # hardening: generators that crashed or exhausted memory
+    ("axis.stroke: {random: {low: 1 mm, high: 2 mm, n: 3, seed: -1}}", "seed"),
+    ("axis.stroke: {random: {low: -1e400 mm, high: 2 mm, n: 3, seed: 1}}", "low"),
+    ("axis.stroke: {random: {low: 1 mm, high: 2 mm, n: 1000000000000000000, seed: 1}}", "n"),
+    ("axis.stroke: {from: 1 mm, to: 2 mm, steps: 100000000}", "steps"),
+    ("axis.stroke: {from: 1 mm, to: 2 mm, steps: 100000}\n          axis.moving_mass: {from: 1 kg, to: 2 kg, "
+     "steps: 100000}", "sweep"),
 ])
 def test_malformed_study_is_one_line_naming_the_key(tmp_path, capsys, sweep, needle):
     p = write_study(tmp_path, f"""\
