@@ -36,3 +36,14 @@ def small_study(tmp_path) -> Path:
 def stable(df):
     """The table without the columns that legitimately differ between runs."""
     return df.drop(columns=VOLATILE).reset_index(drop=True)
+
+
+def kill_group(proc) -> None:
+    """kill -9 a study subprocess started with start_new_session=True and every worker it started."""
+    import os
+    import signal
+
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass

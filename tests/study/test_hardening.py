@@ -16,7 +16,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 from crash_helpers import CRASH_CONFIG, copy_study, crashing_solve, fill_disk_on, worker_pid
-from study_helpers import PROBLEMS, PYTHON, ROOT, stable
+from study_helpers import PROBLEMS, PYTHON, ROOT, kill_group, stable
 
 from axisopt.cli import main
 from axisopt.errors import InputError
@@ -299,10 +299,7 @@ def test_two_dead_workers_and_a_killed_run_resume_to_the_uninterrupted_rows(refe
         os.kill(proc.pid, signal.SIGKILL)  # and the run itself
         proc.wait(10)
     finally:
-        try:
-            os.killpg(proc.pid, signal.SIGKILL)  # the worker processes this test started
-        except ProcessLookupError:
-            pass
+        kill_group(proc)  # the worker processes this test started
     recs = [json.loads(p.read_text(encoding="utf-8")) for p in (out / "cases").glob("*.json")]
     assert 5 <= len(recs) < 16
     # two deaths charge at most one case twice: the waiting cases were never charged

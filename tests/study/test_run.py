@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
-from study_helpers import PYTHON, ROOT, stable, write_study
+from study_helpers import PYTHON, ROOT, kill_group, stable, write_study
 
 from axisopt.cli import main
 from axisopt.errors import InputError
@@ -93,10 +93,7 @@ def test_killed_study_resumes_to_the_uninterrupted_rows(reference, tmp_path):
         os.kill(proc.pid, signal.SIGKILL)
         proc.wait(10)
     finally:
-        try:
-            os.killpg(proc.pid, signal.SIGKILL)  # the worker processes this test started
-        except ProcessLookupError:
-            pass
+        kill_group(proc)  # the worker processes this test started
     done = len(list((out / "cases").glob("*.json")))
     assert 2 <= done < 12
     for p in (out / "cases").glob("*.json"):
