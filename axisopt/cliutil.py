@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 
 from .errors import InputError
 
@@ -27,10 +28,23 @@ def json_default(o):
     raise TypeError(f"not JSON serialisable: {type(o).__name__}")
 
 
+def _finite(obj):
+    """``obj`` with every NaN or infinite float replaced by None (JSON null: no value, never NaN)."""
+    if isinstance(obj, float):
+        return obj if math.isfinite(obj) else None
+    if isinstance(obj, dict):
+        return {k: _finite(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_finite(v) for v in obj]
+    if hasattr(obj, "dtype") and hasattr(obj, "tolist"):  # numpy scalars and arrays
+        return _finite(obj.tolist())
+    return obj
+
+
 def write_json(obj, target: str) -> None:
     """Write ``obj`` as JSON to a file (atomically: the old file stays whole if writing fails), or to stdout
     when ``target`` is '-'.  A file that cannot be written is an InputError naming it."""
-    text = json.dumps(obj, indent=2, default=json_default, allow_nan=False)
+    text = json.dumps(_finite(obj), indent=2, default=json_default, allow_nan=False)
     if target == "-":
         print(text)
         return

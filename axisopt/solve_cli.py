@@ -28,7 +28,7 @@ def cmd_solve(args) -> int:
 
     if args.top < 1:
         raise InputError(f"--top must be at least 1, got {args.top}")
-    if args.time_limit <= 0:
+    if not (math.isfinite(args.time_limit) and args.time_limit > 0):
         raise InputError(f"--time-limit must be positive, got {args.time_limit}")
     problem = load_problem(args.problem)
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,

@@ -110,7 +110,11 @@ def _read(path) -> dict:
             if allowed is not None and allowed[key] != kind:
                 raise s.error("kind", f"'{key}' is a {allowed[key]}, not a {kind}")
             raw = s.value("value", required=True)
-            out[key] = parse_quantity(raw, kind, source=str(path), key=s.where("value"))
+            v = parse_quantity(raw, kind, source=str(path), key=s.where("value"))
+            if v < 0 and kind in NON_NEGATIVE_KINDS or (key in POSITIVE_PARAMS and not v > 0):
+                raise s.error("value", f"'{raw}' is not physical for {key} (must be "
+                                       f"{'positive' if key in POSITIVE_PARAMS else 'non-negative'})")
+            out[key] = v
             s.raw("sigma")
             s.done()
         return out
@@ -133,6 +137,11 @@ def _read(path) -> dict:
     root.done()
     return {"design": design, "baseline": base, "effects": effects, "source": str(path)}
 
+
+# Calibrated values that cannot be negative (a stiffness, damping coefficient, modulus, mass ...) and the
+# ones that must be positive: a negative or zero one is refused, not applied.
+NON_NEGATIVE_KINDS = frozenset({"stiffness", "damping", "pressure", "mass", "inertia", "torsional_stiffness"})
+POSITIVE_PARAMS = frozenset({"screw_modulus", "damping_ratio"})
 
 # The baseline parameters a calibration may carry (identify.measure.baseline_params) and their kinds.
 BASELINE_KINDS = {"screw_modulus": "pressure", "coulomb_friction": "force", "damping_ratio": "dimensionless"}

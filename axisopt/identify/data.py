@@ -227,8 +227,7 @@ def read_dataset(path) -> Dataset:
             if name in ("cycle", "mode") and val < 0:
                 raise InputError(f"{name} must not be negative, got '{cell}'", source=src, where=where)
             if qkind is not None:
-                val = check_plausible(to_si(val, unit, qkind), qkind, f"{cell} {unit}", source=src, key=where,
-                                      tiny=False)
+                val = check_plausible(to_si(val, unit, qkind), qkind, f"{cell} {unit}", source=src, key=where)
             data[r, j - 1] = val
     if len(lines) == 0:
         raise InputError("no data rows", source=src)

@@ -117,3 +117,24 @@ def test_diagnose_data_out_of_range_is_one_line(tmp_path, capsys):
     rc = main(["diagnose", str(f), "--design", str(data / "table_x.yaml")])
     err = capsys.readouterr().err.strip()
     assert rc == 2 and "\n" not in err and "out of range" in err and "line 2" in err, err
+
+
+@pytest.mark.parametrize("value", ["nan", "inf", "-1"])
+def test_time_limit_must_be_finite_positive(capsys, value):
+    rc = main(["solve", str(ROOT / "problems" / "teaching_problem.yaml"), "--time-limit", value])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and "\n" not in err and "--time-limit" in err, err
+
+
+def test_json_never_holds_nan(tmp_path):
+    """write_json writes null for a value the model could not compute, never NaN (invalid JSON)."""
+    import json
+    import math
+
+    import numpy as np
+
+    from axisopt.cliutil import write_json
+
+    f = tmp_path / "x.json"
+    write_json({"a": math.nan, "b": [1.0, math.inf, np.float64("nan")], "c": np.array([1.0, np.nan])}, str(f))
+    assert json.loads(f.read_text()) == {"a": None, "b": [1.0, None, None], "c": [1.0, None]}

@@ -278,3 +278,18 @@ def test_calibration_baseline_names_match_the_fit():
 
     params = baseline_params({"stiffness", "friction", "frf"}, plant_from_design(load_design(DESIGN)))
     assert {p.name: p.kind for p in params} == BASELINE_KINDS
+
+
+@pytest.mark.parametrize("old, new", [
+    ("value: 200 GPa", "value: 0 GPa"),
+    ("value: 200 GPa", "value: -202.7 GPa"),
+    ("value: 900 N/um", "value: -900 N/um"),
+])
+def test_calibration_values_must_be_physical(tmp_path, capsys, old, new):
+    """A zero or negative modulus was a ZeroDivisionError / math domain traceback; a negative stiffness
+    was applied."""
+    design = load_design(DESIGN)
+    p = write(tmp_path, GOOD_CAL.replace(old, new).format(design=design.name), "c.yaml")
+    rc = main(["evaluate", str(DESIGN), "--calibration", str(p)])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and "\n" not in err and "not physical" in err, err
