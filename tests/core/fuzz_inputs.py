@@ -372,6 +372,9 @@ PROBLEM_OPTIONAL = {
     ("objective",): {"mode": "weighted", "weights": {"stiffness": 1, "frequency": 1},
                      "scale": {"stiffness": "100 N/um", "frequency": "50 Hz"}},
 }
+OBJECTIVES = (PROBLEM_OPTIONAL[("objective",)], {"mode": "pareto", "pareto": ["stiffness", "cost"]},
+              {"mode": "pareto", "pareto": ["stiffness", "frequency", "cost", "total_mass"]},
+              {"mode": "lexicographic", "order": ["frequency", "stiffness"], "tolerance": 0.02}, "frequency")
 EXTREME_COUNTS = (10**9, 10**6, 10**5, 3, 0, -1, 2**63)
 
 
@@ -389,6 +392,8 @@ def add_optional(ch, tree) -> str | None:
     if not cands:
         return None
     path, value = ch.choice(cands)
+    if path == ("objective",):
+        value = ch.choice(OBJECTIVES)
     import copy
 
     value = copy.deepcopy(value)

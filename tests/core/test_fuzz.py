@@ -99,6 +99,8 @@ KNOWN = (
     Known("choice-with-bools", "traceback", r"object of type 'bool' has no len",
           "Section.choice with boolean options (catalog.drive) passes True/False to difflib: any wrong value of "
           "catalog.drive is a TypeError traceback"),
+    Known("empty-pareto-front", "traceback", r"^axisopt solve .*'int' object is not iterable",
+          "an infeasible Pareto problem: format_pareto -> _cand_table([]) calls max(len(k)) on an int"),
     Known("positions-unbounded", "hang", r"positions", "axis.positions accepts up to 1e9 (10^5 takes ~10 s)"),
     Known("positions-unbounded", "traceback", r"positions.*MemoryError", "axis.positions accepts up to 1e9"),
 )
@@ -256,6 +258,13 @@ def _calibration(baseline=None, effect=None) -> bytes:
     return dump_yaml(tree)
 
 
+def _teaching_pareto_infeasible() -> bytes:
+    tree = yaml.safe_load(shipped("teaching_problem.yaml"))
+    tree["objective"] = {"mode": "pareto", "pareto": ["stiffness", "cost"]}
+    tree["limits"]["max_cost"] = "100 EUR"
+    return dump_yaml(tree)
+
+
 def _evaluate_calibrated(cal: bytes, json_out: bool) -> Case:
     return Case("calibration", "", ["evaluate", "d.yaml", "--calibration", "cal.yaml"]
                 + (["--json", "-"] if json_out else []), {"cal.yaml": cal, "d.yaml": shipped(DATA_DESIGN)})
@@ -286,6 +295,11 @@ REPRODUCERS = {
         lambda: Case("problem", "catalog.drive: maybe", ["solve", "p.yaml", "--no-sensitivity"],
                      {"p.yaml": shipped("teaching_problem.yaml").replace(b"\ncatalog:\n",
                                                                          b"\ncatalog:\n  drive: maybe\n")})),
+    "empty-pareto-front": (
+        "solve of an infeasible Pareto problem (text output): TypeError 'int' object is not iterable in "
+        "solve_cli._cand_table (max over an empty front)",
+        lambda: Case("problem", "teaching, pareto objective, max_cost 100 EUR", ["solve", "p.yaml", "--no-sensitivity"],
+                     {"p.yaml": _teaching_pareto_infeasible()})),
     "time-limit-nan": (
         "solve --time-limit nan (or inf) is accepted (NaN <= 0 is False); with --method bonmin it runs ~20 s and "
         "ends in MINLP_ERROR (exit 1) instead of a one-line error",
@@ -294,7 +308,7 @@ REPRODUCERS = {
 }
 
 
-OPEN = ("drive-choice-traceback",)
+OPEN = ("drive-choice-traceback", "empty-pareto-front")
 
 
 @pytest.mark.parametrize("bug", [pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=v[0]) if k in OPEN
