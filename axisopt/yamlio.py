@@ -114,7 +114,7 @@ def close_matches(word: str, options, n: int = 1) -> list:
     word = str(word)
     if len(word) > 64:
         return []
-    return difflib.get_close_matches(word, [o for o in options if len(str(o)) <= 64], n=n)
+    return difflib.get_close_matches(word, [str(o) for o in options if len(str(o)) <= 64], n=n)
 
 
 MAX_TEXT = 10_000  # characters of any text value (names, descriptions)
@@ -212,7 +212,7 @@ class Section:
             near = close_matches(str(v), list(options), n=1)
             hint = f"; did you mean '{near[0]}'?" if near else ""
             shown = str(v) if len(str(v)) <= 60 else str(v)[:60] + "..."
-            raise self.error(key, f"'{shown}' is not one of {', '.join(options)}{hint}")
+            raise self.error(key, f"'{shown}' is not one of {', '.join(map(str, options))}{hint}")
         return v
 
     def string(self, key: str, default=None, *, required: bool = False):

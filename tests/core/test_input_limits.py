@@ -138,3 +138,10 @@ def test_json_never_holds_nan(tmp_path):
     f = tmp_path / "x.json"
     write_json({"a": math.nan, "b": [1.0, math.inf, np.float64("nan")], "c": np.array([1.0, np.nan])}, str(f))
     assert json.loads(f.read_text()) == {"a": None, "b": [1.0, None, None], "c": [1.0, None]}
+
+
+def test_choice_with_boolean_options_is_one_line(tmp_path, capsys):
+    """catalog.drive takes yes/no/true/false: another value was a TypeError in the 'did you mean' lookup."""
+    text = PROBLEM.replace("catalog:", "catalog:\n  drive: maybe", 1)
+    rc, err, _ = _run(tmp_path, capsys, text, command="solve")
+    assert rc == 2 and "\n" not in err and "'maybe' is not one of" in err, err
