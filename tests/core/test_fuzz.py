@@ -96,9 +96,6 @@ class Known:
 
 
 KNOWN = (
-    Known("choice-with-bools", "traceback", r"object of type 'bool' has no len",
-          "Section.choice with boolean options (catalog.drive) passes True/False to difflib: any wrong value of "
-          "catalog.drive is a TypeError traceback"),
     Known("empty-pareto-front", "traceback", r"^axisopt solve .*'int' object is not iterable",
           "an infeasible Pareto problem: format_pareto -> _cand_table([]) calls max(len(k)) on an int"),
     Known("positions-unbounded", "hang", r"positions", "axis.positions accepts up to 1e9 (10^5 takes ~10 s)"),
@@ -308,7 +305,7 @@ REPRODUCERS = {
 }
 
 
-OPEN = ("drive-choice-traceback", "empty-pareto-front")
+OPEN = ("empty-pareto-front",)
 
 
 @pytest.mark.parametrize("bug", [pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=v[0]) if k in OPEN
