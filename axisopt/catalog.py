@@ -191,6 +191,8 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
     schema = SCHEMA[name]
     src = str(path)
     try:
+        if not path.is_file():
+            raise InputError("not a regular file", source=src)
         if path.stat().st_size > MAX_CATALOG_BYTES:
             raise InputError(f"catalog file too large ({path.stat().st_size:,} bytes; at most "
                              f"{MAX_CATALOG_BYTES:,})", source=src)

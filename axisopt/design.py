@@ -165,7 +165,10 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
         if node.value != "auto":
             kw["pretension"] = sec.quantity("pretension", "force", non_negative=True)
     kw["orientation"] = sec.choice("orientation", ORIENTATIONS, "horizontal")
-    kw["brake"] = sec.choice("brake", BRAKE_MODES, "auto")
+    if sec.has("brake") and isinstance(sec.raw("brake").value, bool):  # YAML reads a bare yes/no as a boolean
+        kw["brake"] = "yes" if sec.raw("brake").value else "no"
+    else:
+        kw["brake"] = sec.choice("brake", BRAKE_MODES, "auto")
     for name, low in (("reduction_ratio", None), ("max_inertia_ratio", None), ("brake_safety", 1.0)):
         v = sec.number(name, minimum=low)
         if v is not None:
@@ -180,7 +183,8 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     if sec.has("duty_cycle"):
         kw["duty_cycle"] = read_duty_cycle(sec, kw)
     for name in ("guide_blocks", "rails", "positions"):
-        v = sec.number(name, integer=True, minimum=1 if name != "positions" else 3)
+        v = sec.number(name, integer=True, minimum=1 if name != "positions" else 3,
+                       maximum={"guide_blocks": 64, "rails": 8, "positions": 2001}[name])
         if v is not None:
             kw[name] = int(v)
     v = sec.number("load_factor", minimum=1.0)

@@ -138,7 +138,7 @@ def _cand_table(cands, unit) -> str:
     slots = ("mounting", "screw", "nut", "bearing", "guide")
     if any(c.motor for c in cands):
         slots += ("motor", "coupling")
-    w = {k: max(len(k), *(len(str(getattr(c, k))) for c in cands)) + 2 for k in slots}
+    w = {k: max([len(k)] + [len(str(getattr(c, k))) for c in cands]) + 2 for k in slots}
     L = ["  " + f"{'#':>2} " + "".join(f"{k:<{w[k]}}" for k in slots)
          + f"{'preload N':>10}{'obj ' + unit:>14}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"]
     for c in cands:

@@ -69,6 +69,8 @@ def read_yaml(path) -> Node:
     path = Path(path)
     src = str(path)
     try:
+        if path.exists() and not path.is_file():  # a FIFO, device or directory: no reading without end
+            raise InputError("not a regular file", source=src)
         if path.is_file() and path.stat().st_size > MAX_BYTES:
             raise InputError(f"file too large ({path.stat().st_size:,} bytes; at most {MAX_BYTES:,})", source=src)
         text = path.read_text(encoding="utf-8")

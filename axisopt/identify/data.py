@@ -143,8 +143,14 @@ def read_dataset(path) -> Dataset:
     """Read one test CSV.  See the module docstring for the formats."""
     src = str(path)
     try:
+        if Path(path).exists() and not Path(path).is_file():
+            raise InputError("not a regular file", source=src)
         with Path(path).open(newline="", encoding="utf-8-sig") as fh:
-            rows = list(csv.reader(fh))
+            reader = csv.reader(fh)
+            try:
+                rows = list(reader)
+            except csv.Error as exc:
+                raise InputError(f"malformed CSV ({exc})", source=src, where=f"line {reader.line_num}") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(
             f"cannot read data file ({getattr(exc, 'strerror', None) or exc})", source=src

@@ -95,12 +95,7 @@ class Known:
     reason: str
 
 
-KNOWN = (
-    Known("empty-pareto-front", "traceback", r"^axisopt solve .*'int' object is not iterable",
-          "an infeasible Pareto problem: format_pareto -> _cand_table([]) calls max(len(k)) on an int"),
-    Known("positions-unbounded", "hang", r"positions", "axis.positions accepts up to 1e9 (10^5 takes ~10 s)"),
-    Known("positions-unbounded", "traceback", r"positions.*MemoryError", "axis.positions accepts up to 1e9"),
-)
+KNOWN = ()  # every bug the fuzz runs found is fixed; a new one is listed here with its reproducer below
 
 
 def known(case: Case, cls: str, detail: str) -> Known | None:
@@ -305,7 +300,7 @@ REPRODUCERS = {
 }
 
 
-OPEN = ("empty-pareto-front",)
+OPEN = ()
 
 
 @pytest.mark.parametrize("bug", [pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=v[0]) if k in OPEN

@@ -145,3 +145,34 @@ def test_choice_with_boolean_options_is_one_line(tmp_path, capsys):
     text = PROBLEM.replace("catalog:", "catalog:\n  drive: maybe", 1)
     rc, err, _ = _run(tmp_path, capsys, text, command="solve")
     assert rc == 2 and "\n" not in err and "'maybe' is not one of" in err, err
+
+
+def test_non_regular_files_and_huge_position_grids(tmp_path, capsys):
+    """A FIFO hung forever and /dev/zero read until MemoryError; positions: 1e9 allocated gigabytes."""
+    import os
+
+    fifo = tmp_path / "fifo.yaml"
+    os.mkfifo(fifo)
+    for path in (fifo, Path("/dev/zero")):
+        assert main(["evaluate", str(path)]) == 2
+        err = capsys.readouterr().err.strip()
+        assert "not a regular file" in err and "\n" not in err
+    rc, err, _ = _run(tmp_path, capsys, DESIGN.replace("  rails: 2", "  rails: 2\n  positions: 1000000000"))
+    assert rc == 2 and "at most 2001" in err
+
+
+def test_brake_yes_no_as_yaml_booleans(tmp_path, capsys):
+    """The README's 'brake: yes' is a YAML boolean: read as the mode, not refused."""
+    from axisopt.design import load_design
+
+    for word, mode in (("yes", "yes"), ("no", "no")):
+        f = tmp_path / f"{word}.yaml"
+        f.write_text(DESIGN.replace("  rails: 2", f"  rails: 2\n  brake: {word}"))
+        assert load_design(f).axis.brake == mode
+
+
+def test_empty_pareto_front_prints(tmp_path, capsys):
+    """An infeasible Pareto problem printed a TypeError traceback from the empty design table."""
+    text = PROBLEM.replace("objective: stiffness", "objective: {mode: pareto, pareto: [stiffness, cost]}")
+    rc, err, _ = _run(tmp_path, capsys, text.replace("max_cost: 3500 EUR", "max_cost: 100 EUR"), command="solve")
+    assert rc == 1 and "Traceback" not in err
