@@ -180,6 +180,9 @@ def respond(p, x, mounting, preload) -> dict:
 
 # Outputs the motor and coupling change (all others are the same for every drive of a mechanical combination).
 DRIVE_KEYS = frozenset({"cost", "inertia_ratio"} | {f"margin_{c}" for c in model.DRIVE_CHECKS})
+# Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain); the motor's
+# inertia enters only the axial-torsional modes, which no limit or objective reads.
+COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1"})
 
 
 def respond_drive(p, preload) -> dict:
@@ -258,11 +261,25 @@ class Space:
         return x[sorted(idx)]
 
     # ------------------------------------------------------------------ parameter dicts
-    def params_structured(self, mounting: str, nut_slice=slice(None), dtype=float, mechanics: bool = False) -> dict:
+    def coupling_stiffnesses(self) -> np.ndarray:
+        """The distinct torsional stiffnesses [N m/rad] of the searched drive pairs (the axis value for a
+        pair without a coupling), ascending."""
+        if self.c_arr is None:
+            return np.array([float(self.problem.axis.coupling_stiffness)])
+        return np.unique(self.c_arr["torsional_stiffness"])
+
+    def params_structured(self, mounting: str, nut_slice=slice(None), dtype=float, mechanics: bool = False,
+                          coupling_stiffness: float | None = None) -> dict:
         """Parameters broadcast over (nuts, bearings, guide-and-drive, positions).  ``mechanics``: over the
-        guides alone, without the drive (the axis values stand in for motor and coupling), for the outputs
-        the drive does not change (every output but :data:`DRIVE_KEYS`)."""
-        key = ("ps", mounting, nut_slice.start, nut_slice.stop, np.dtype(dtype).name, mechanics)
+        guides alone, without the drive, for the outputs the drive does not change (every output but
+        :data:`DRIVE_KEYS` and :data:`COUPLING_KEYS`).  The axis values stand in for motor and coupling,
+        except the coupling's torsional stiffness, which is in the stiffness chain: ``coupling_stiffness``,
+        by default the stiffest searched coupling, so that the stiffness and frequency are upper bounds
+        over every drive pair (the screening relaxes their limits with them; exact solves use the pair)."""
+        if mechanics and self.m_arr is not None and coupling_stiffness is None:
+            coupling_stiffness = float(self.coupling_stiffnesses()[-1])
+        key = ("ps", mounting, nut_slice.start, nut_slice.stop, np.dtype(dtype).name, mechanics,
+               coupling_stiffness)
         if key not in self._cache:
             def sh(d, shape):
                 return {k: (v.reshape(shape).astype(dtype) if v.dtype.kind == "f" else v.reshape(shape))
@@ -277,6 +294,8 @@ class Space:
             if len(self._cache) > 64:
                 self._cache.clear()
             ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
+            if mechanics and coupling_stiffness is not None:
+                ps["coupling_stiffness"] = coupling_stiffness
             if np.dtype(dtype) != np.float64:
                 ps = {k: (v.astype(dtype) if isinstance(v, np.ndarray) else v) for k, v in ps.items()}
             self._cache[key] = ps

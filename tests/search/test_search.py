@@ -95,6 +95,70 @@ def test_default_equals_exhaustive_with_drive(seed):
             assert model.passes(ev.values[f"margin_{c}"]), c
 
 
+def _drive_problem(seed, axis_coupling):
+    """A synthetic drive problem whose two couplings are both stiffer than the axis's stand-in value."""
+    from dataclasses import replace
+
+    rng = np.random.default_rng(300 + seed)
+    cat = make_catalog(rng, n_screws=8, nuts_per_screw=2, n_bearings=6, n_guides=4)
+    make_double(cat)
+    cat = add_drives(cat, rng, n_motors=3, n_couplings=2)
+    cp = cat.couplings.copy()
+    cp["torsional_stiffness"], cp["rated_torque"] = [3e5, 1.5e5], 500.0
+    cat = replace(cat, couplings=cp)
+    p = make_problem(cat, limits={"max_cost": float(rng.uniform(3500, 6000))}, moving_mass=200.0,
+                     axial_load=3000.0)
+    return replace(p, restrictions=replace(p.restrictions, drive=True),
+                   axis=replace(p.axis, coupling_stiffness=axis_coupling))
+
+
+@pytest.mark.parametrize("seed", [2, 5])
+def test_coupling_stiffness_in_chain_is_bounded_over_drive_pairs(seed):
+    """The coupling's torsional stiffness is in series in the stiffness chain, so the mechanical screening
+    stage must not take the axis's stand-in value (here 2e3 N m/rad, far softer than either searched
+    coupling): it pruned the optimum by bound (objective 150.8 against 192.0 N/um, seed 2) and called a
+    problem with a binding minimum stiffness infeasible.  Reference: exhaustive enumeration."""
+    p = _drive_problem(seed, axis_coupling=2e3)
+    e = solve(p, "exhaustive", top=1, sensitivities=False)
+    d = solve(p, "default", top=1, sensitivities=False)
+    assert d.best.objective == pytest.approx(e.best.objective, rel=1e-6)
+    kmin = float(np.min(model.evaluate(e.best.design).values["k_total"]))
+    p2 = p.with_limit("min_stiffness", 0.98 * kmin)
+    d2 = solve(p2, "default", top=1, sensitivities=False)
+    e2 = solve(p2, "exhaustive", top=1, sensitivities=False)
+    assert d2.status == e2.status == "optimal"
+    assert d2.best.objective == pytest.approx(e2.best.objective, rel=1e-6)
+
+
+def test_infeasibility_scores_equal_per_combination_evaluation():
+    """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
+    the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
+    combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
+    from axisopt.search.explain import miss_scores
+    from axisopt.search.space import _vec, respond
+
+    p = _drive_problem(2, axis_coupling=2e3).with_limit("min_stiffness", 400e6)
+    sp, cons = build_space(p), build_constraints(p)
+    assert sp.n_drives > 1 and len(sp.coupling_stiffnesses()) == 2
+    new = np.full(sp.size, np.nan)
+    for idx, score in miss_scores(sp, cons):
+        new[idx] = score
+    ref = np.zeros(sp.size)
+    for mounting, sel, n, b, _g, prm, x in sp.by_mounting(np.arange(sp.size)):
+        k = len(sel)
+        lo = respond(prm, x, mounting, sp.preload_lo[n][:, None])
+        hi = respond(prm, x, mounting, sp.preload_hi[n][:, None])
+        ref[sel] += np.where(sp.fits[n, b], 0.0, 1.0)
+        for c in cons:
+            v_lo, v_hi = _vec(c.value(lo), k), _vec(c.value(hi), k)
+            if c.convex:
+                v = np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
+            else:
+                v = v_hi if c.lower_type else v_lo
+            ref[sel] += c.violation(v)
+    np.testing.assert_allclose(new, ref, rtol=1e-9, atol=1e-12)
+
+
 def _interior(p, key):
     d = solve(p, "default", top=1, sensitivities=False)
     e = solve(p, "exhaustive", top=1, sensitivities=False)
