@@ -121,9 +121,13 @@ def format_result(res) -> str:
                      f" preload {cand.nut_preload:.0f} N: misses {miss or 'nothing'}")
     L.append("")
     L.append("certificate")
-    L.append(f"  combinations {c.combinations:,}; feasible {c.feasible:,}"
-             f"{' (screened)' if res.method == 'default' else ''}; pruned by bound {c.pruned_by_bound:,}; "
-             f"exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} (failures {c.nlp_failures})")
+    if c.feasible is None:  # Bonmin: one MINLP per mounting, nothing counted or bounded
+        L.append(f"  combinations {c.combinations:,}; MINLP solves {c.nlps_solved} "
+                 f"(not SUCCESS {c.nlp_failures}); feasible combinations not counted")
+    else:
+        L.append(f"  combinations {c.combinations:,}; feasible {c.feasible:,}"
+                 f"{' (screened)' if res.method == 'default' else ''}; pruned by bound {c.pruned_by_bound:,}; "
+                 f"exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} (failures {c.nlp_failures})")
     gap = "0 (proven)" if c.proven and c.gap == 0 else ("unknown" if not math.isfinite(c.gap) else f"{c.gap:.3%}")
     L.append(f"  optimality gap {gap}"
              + (f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"

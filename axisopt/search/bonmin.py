@@ -110,6 +110,89 @@ def _build(space, mounting, constraints, objective):
     return {"x": xvar, "f": f, "g": ca.vertcat(*g)}, np.array(lbg), np.array(ubg), discrete
 
 
+# Seconds Bonmin may run past the time limit before it is stopped: its own limit is checked between
+# branch-and-bound nodes, and one node's NLP can run for minutes.
+DEADLINE_GRACE = 2.0
+PROGRESS_EVERY = 10.0  # [s] progress lines on a terminal's stderr
+
+
+def _solve_with_deadline(work, deadline: float, label: str):
+    """Run ``work()`` (build and solve one MINLP) in a forked child and stop it at ``deadline`` seconds.
+
+    Building the symbolic problem and its derivatives can itself take minutes on a large catalog, so the
+    whole of it runs in the child.  Returns ("ok", (x, stats)), ("error", message) or ("timeout", None).
+    Where fork is not available the work runs in this process (Bonmin's own time limit only)."""
+    import multiprocessing as mp
+
+    try:
+        ctx = mp.get_context("fork")
+    except ValueError:
+        return work()
+    recv, send = ctx.Pipe(duplex=False)
+
+    def child():
+        recv.close()
+        try:
+            send.send(work())
+        except BaseException as exc:  # noqa: BLE001 - the parent reports it
+            send.send(("error", f"{type(exc).__name__}: {exc}"))
+        finally:
+            send.close()
+            os._exit(0)
+
+    proc = ctx.Process(target=child, daemon=True)
+    proc.start()
+    send.close()
+    start = time.perf_counter()
+    tty = sys.stderr.isatty()
+    try:
+        while True:
+            left = deadline - (time.perf_counter() - start)
+            if left <= 0:
+                return "timeout", None
+            if recv.poll(min(left, PROGRESS_EVERY)):
+                try:
+                    return recv.recv()
+                except EOFError:
+                    return "error", "the Bonmin process ended without a result"
+            if tty:
+                print(f"bonmin {label}: running, {time.perf_counter() - start:.0f} s of at most {deadline:.0f} s",
+                      file=sys.stderr, flush=True)
+    finally:
+        recv.close()
+        if proc.is_alive():
+            proc.kill()
+        proc.join()
+
+
+def _mounting_solve(space, mounting, constraints, objective, time_limit: float):
+    """Build the MINLP of one mounting and solve it with Bonmin (runs in the deadline child)."""
+    _, N, B, G = space.shape
+    nlp, lbg, ubg, discrete = _build(space, mounting, constraints, objective)
+    opts = {"discrete": discrete, "print_time": False, "bonmin.time_limit": float(time_limit),
+            "bonmin.bb_log_level": 0, "bonmin.nlp_log_level": 0, "bonmin.fp_log_level": 0,
+            "bonmin.lp_log_level": 0, "bonmin.milp_log_level": 0, "bonmin.oa_log_level": 0,
+            "bonmin.print_level": 0, "bonmin.sb": "yes"}
+    solver = ca.nlpsol(f"bonmin_{mounting.replace('-', '_')}", "bonmin", nlp, opts)
+    nt = len(objective.terms)
+    x0 = np.concatenate([np.full(N, 1.0 / N), np.full(B, 1.0 / B), np.full(G, 1.0 / G), [1.0], np.zeros(nt)])
+    lbx = np.concatenate([np.zeros(N + B + G + 1), np.full(nt, -np.inf)])
+    ubx = np.concatenate([np.ones(N + B + G + 1), np.full(nt, np.inf)])
+    return _solve_here(solver, dict(x0=x0, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg))
+
+
+def _solve_here(solver, args: dict):
+    try:
+        with _quiet_stdout():
+            sol = solver(**args)
+    except RuntimeError as exc:
+        last = [ln for ln in str(exc).splitlines() if ln.strip()][-1]
+        return "error", last.split(": ", 1)[-1].strip()
+    st = solver.stats()
+    return "ok", (np.asarray(sol["x"]).ravel(), {"return_status": str(st.get("return_status", "unknown")),
+                                                  "success": bool(st.get("success", False))})
+
+
 def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 100.0, top: int = 1,
                  t0: float | None = None) -> SolveResult:
     t0 = time.perf_counter() if t0 is None else t0
@@ -126,28 +209,19 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
         if remaining <= 0.5:
             statuses.append(f"{mounting}: not run (time limit)")
             continue
-        nlp, lbg, ubg, discrete = _build(space, mounting, constraints, objective)
-        opts = {"discrete": discrete, "print_time": False, "bonmin.time_limit": float(remaining),
-                "bonmin.bb_log_level": 0, "bonmin.nlp_log_level": 0, "bonmin.fp_log_level": 0,
-                "bonmin.lp_log_level": 0, "bonmin.milp_log_level": 0, "bonmin.oa_log_level": 0,
-                "bonmin.print_level": 0, "bonmin.sb": "yes"}
-        solver = ca.nlpsol(f"bonmin_{mounting.replace('-', '_')}", "bonmin", nlp, opts)
-        nt = len(objective.terms)
-        x0 = np.concatenate([np.full(N, 1.0 / N), np.full(B, 1.0 / B), np.full(G, 1.0 / G), [1.0], np.zeros(nt)])
-        lbx = np.concatenate([np.zeros(N + B + G + 1), np.full(nt, -np.inf)])
-        ubx = np.concatenate([np.ones(N + B + G + 1), np.full(nt, np.inf)])
         n_solves += 1
-        try:
-            with _quiet_stdout():
-                sol = solver(x0=x0, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg)
-        except RuntimeError as exc:  # Bonmin aborts on NaN derivatives etc.: report it, do not hide it
-            last = [ln for ln in str(exc).splitlines() if ln.strip()][-1]
-            statuses.append(f"{mounting}: ERROR ({last.split(': ', 1)[-1].strip()})")
+        kind, got = _solve_with_deadline(
+            lambda m=mounting, r=remaining: _mounting_solve(space, m, constraints, objective, r),
+            remaining + DEADLINE_GRACE, mounting)
+        if kind == "timeout":
+            statuses.append(f"{mounting}: stopped at the time limit ({time_limit:g} s) without a result")
             continue
-        st = solver.stats()
+        if kind == "error":  # Bonmin aborts on NaN derivatives etc.: report it, do not hide it
+            statuses.append(f"{mounting}: ERROR ({got})")
+            continue
+        xs, st = got
         status = str(st.get("return_status", "unknown"))
         statuses.append(f"{mounting}: {status}")
-        xs = np.asarray(sol["x"]).ravel()
         if not st.get("success", False) and status not in ("SUCCESS",):
             # Bonmin may still carry an integer feasible point (e.g. on the time limit); check it below
             pass
@@ -181,8 +255,9 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
                          "(the default method proves feasibility or infeasibility)")
     else:
         status = "feasible"  # Bonmin's B-BB on a nonconvex problem proves nothing
-    cert = Certificate(combinations=space.size, feasible=-1, pruned_by_bound=0, exact_evaluations=0,
-                       nlps_solved=n_solves, nlp_failures=sum(1 for s in statuses if not s.endswith("SUCCESS")),
+    failed = sum(1 for s in statuses if not s.endswith(("SUCCESS", "(time limit)")))
+    cert = Certificate(combinations=space.size, feasible=None, pruned_by_bound=0, exact_evaluations=0,
+                       nlps_solved=n_solves, nlp_failures=failed,
                        gap=float("nan"), proven=False,
                        notes=tuple(["Bonmin B-BB on a nonconvex MINLP: a heuristic, no optimality proof"]
                                    + notes))

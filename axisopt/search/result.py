@@ -50,8 +50,8 @@ class Certificate:
     """How the answer was obtained and how sure it is."""
 
     combinations: int  # in the search space (mountings x nuts x bearings x guides)
-    feasible: int  # combinations that pass the preload-independent limits and the preload-dependent
-    #                ones at their most favourable preload (exhaustive: exactly feasible)
+    feasible: int | None  # combinations that pass the preload-independent limits and the preload-dependent
+    #                ones at their most favourable preload (exhaustive: exactly feasible); None: not counted (Bonmin)
     pruned_by_bound: int  # feasible combinations never solved because their bound cannot win
     exact_evaluations: int  # combinations whose continuous problem was solved (vectorized 1-D solve)
     nlps_solved: int  # IPOPT solves

@@ -107,7 +107,8 @@ def solve_case(context: dict, case: Case) -> dict:
                                  for k in ("motor_peak_torque", "motor_rated_torque")})
     c = res.certificate
     rec["certificate"] = {"proven": bool(c.proven), "gap": _num(c.gap), "combinations": int(c.combinations),
-                          "feasible": int(c.feasible), "pruned_by_bound": int(c.pruned_by_bound),
+                          "feasible": None if c.feasible is None else int(c.feasible),
+                          "pruned_by_bound": int(c.pruned_by_bound),
                           "exact_evaluations": int(c.exact_evaluations), "nlps": int(c.nlps_solved),
                           "nlp_failures": int(c.nlp_failures)}
     if res.pareto is not None:

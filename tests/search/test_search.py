@@ -282,6 +282,33 @@ def test_bonmin_reports_status_and_never_beats_the_proven_optimum():
         assert b.best.objective <= d.best.objective * (1 + 1e-6)
 
 
+def test_bonmin_deadline_stops_work_that_ignores_its_own_time_limit():
+    # Bonmin checks its time limit only between nodes, and building the symbolic MINLP of a large catalog
+    # takes minutes before Bonmin starts: the deadline child must stop both (a hang, not a speed, check)
+    import time as _time
+
+    from axisopt.search.bonmin import _solve_with_deadline
+
+    t = _time.perf_counter()
+    kind, got = _solve_with_deadline(lambda: _time.sleep(120), 1.0, "test")
+    assert (kind, got) == ("timeout", None) and _time.perf_counter() - t < 10
+    assert _solve_with_deadline(lambda: ("ok", 42), 30.0, "test") == ("ok", 42)
+    kind, msg = _solve_with_deadline(lambda: 1 / 0, 30.0, "test")
+    assert kind == "error" and "ZeroDivisionError" in msg
+
+
+def test_bonmin_on_the_vmc_catalog_stops_near_its_time_limit():
+    # 21 M combinations: before the fix the MINLP construction alone ran 9 min past a 5 s limit
+    import time as _time
+
+    p = load_problem(Path(__file__).parents[2] / "problems" / "vmc_x_problem.yaml")
+    t = _time.perf_counter()
+    b = solve(p, "bonmin", time_limit=3)
+    assert _time.perf_counter() - t < 60
+    assert b.certificate.feasible is None and not b.certificate.proven
+    assert "time limit" in b.message
+
+
 # ----------------------------------------------------------------------------- YAML and CLI
 @pytest.mark.parametrize("path", PROBLEMS, ids=[p.stem for p in PROBLEMS])
 def test_shipped_problems_load(path):
