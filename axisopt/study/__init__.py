@@ -9,8 +9,9 @@
 
 from __future__ import annotations
 
-from .run import OK_STATUSES, CaseStore, Progress, RunSummary, run_study, solve_case
+from .run import Progress, RunSummary, run_study, solve_case
 from .spec import Case, Study, Sweep, apply_overrides, build_problem, load_study
+from .store import OK_STATUSES, CaseStore
 from .table import results_table, write_outputs
 
 __all__ = ["load_study", "run_study", "results_table", "write_outputs", "Study", "Sweep", "Case", "Progress",

@@ -15,7 +15,7 @@ import re
 from pathlib import Path
 
 from ..report import atomic_file, make_output_dir, save_figure, write_text_atomic
-from .run import OK_STATUSES, CaseStore
+from .store import OK_STATUSES, CaseStore
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 

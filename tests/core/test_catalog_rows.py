@@ -174,7 +174,7 @@ def test_each_kind_has_three_vendors_with_real_rows(cat):
 
 
 def test_counts_table_matches_catalog(cat):
-    from axisopt.parts_cli import counts
+    from axisopt.cli.parts import counts
 
     recs = pd.DataFrame(counts(cat))
     for kind in ("screws", "nuts", "bearings", "guides"):

@@ -133,7 +133,7 @@ def test_json_never_holds_nan(tmp_path):
 
     import numpy as np
 
-    from axisopt.cliutil import write_json
+    from axisopt.cli.common import write_json
 
     f = tmp_path / "x.json"
     write_json({"a": math.nan, "b": [1.0, math.inf, np.float64("nan")], "c": np.array([1.0, np.nan])}, str(f))

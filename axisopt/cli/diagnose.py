@@ -3,16 +3,16 @@
 
 from __future__ import annotations
 
-from .cliutil import EXIT_OK, write_json
-from .errors import InputError
+from ..errors import InputError
+from .common import EXIT_OK, write_json
 
 
 def cmd_diagnose(args) -> int:
-    from .design import load_design
-    from .identify import diagnose, plant_from_design, read_dataset
-    from .identify.calibration import save_calibration
-    from .identify.effects import library
-    from .identify.report import diagnosis_dict, diagnosis_text, write_report
+    from ..design import load_design
+    from ..identify import diagnose, plant_from_design, read_dataset
+    from ..identify.calibration import save_calibration
+    from ..identify.effects import library
+    from ..identify.report import diagnosis_dict, diagnosis_text, write_report
 
     design = load_design(args.design)
     datasets = [read_dataset(p) for p in args.data]

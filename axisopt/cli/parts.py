@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from .cliutil import EXIT_OK, write_json
-from .errors import InputError
+from ..errors import InputError
+from .common import EXIT_OK, write_json
 
 KINDS = ("screws", "nuts", "bearings", "guides", "motors", "couplings")
 
@@ -60,7 +60,7 @@ def _filtered(cat, kind, vendors, status):
 
 def counts(cat, vendors=None, status=None) -> list[dict]:
     """One record per (kind, vendor): rows by provenance."""
-    from .catalog import STATUSES
+    from ..catalog import STATUSES
 
     out = []
     for kind in KINDS:
@@ -118,7 +118,7 @@ def rows_dicts(df, kind) -> list[dict]:
 
 
 def cmd_parts(args) -> int:
-    from .catalog import STATUSES, load_catalogs
+    from ..catalog import STATUSES, load_catalogs
 
     if args.status is not None and args.status not in STATUSES:
         raise InputError(f"'{args.status}' is not one of {', '.join(STATUSES)}", where="--status")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from .cliutil import EXIT_NEGATIVE, EXIT_OK, write_json
+from .common import EXIT_NEGATIVE, EXIT_OK, write_json
 
 
 def register(sub) -> None:
@@ -22,9 +22,9 @@ def register(sub) -> None:
 
 
 def cmd_solve(args) -> int:
-    from .errors import InputError
-    from .problem import load_problem
-    from .search import solve
+    from ..errors import InputError
+    from ..problem import load_problem
+    from ..search import solve
 
     if args.top < 1:
         raise InputError(f"--top must be at least 1, got {args.top}")
@@ -39,19 +39,19 @@ def cmd_solve(args) -> int:
     if args.json:
         d = res.to_dict()
         if res.best is not None and res.best.design is not None:
-            from .model import evaluate
-            from .report import evaluation_dict
+            from ..model import evaluate
+            from ..report import evaluation_dict
 
             d["evaluation"] = evaluation_dict(evaluate(res.best.design))
         write_json(d, args.json)
     if args.plot:
         if res.pareto is not None:
-            from .search.pareto import plot_pareto
+            from ..search.pareto import plot_pareto
 
             plot_pareto(res.pareto, args.plot)
         elif res.best is not None:
-            from .model import evaluate
-            from .report import plot_profiles
+            from ..model import evaluate
+            from ..report import plot_profiles
 
             cands = [res.best] + list(res.runners_up)
             plot_profiles([evaluate(c.design) for c in cands], args.plot,
@@ -69,8 +69,8 @@ def _n(v, nd=1):
 
 
 def format_result(res) -> str:
-    from .model import evaluate
-    from .report import evaluation_table
+    from ..model import evaluate
+    from ..report import evaluation_table
 
     c = res.certificate
     L = [f"problem {res.problem}: {res.objective_label}",

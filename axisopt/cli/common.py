@@ -1,4 +1,4 @@
-"""Shared pieces of the command-line modules (``cli.py`` and ``*_cli.py``)."""
+"""Shared pieces of the command modules: the argument parser, exit codes, JSON output."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import argparse
 import json
 import math
 
-from .errors import InputError
+from ..errors import InputError
 
 EXIT_OK, EXIT_NEGATIVE, EXIT_INPUT = 0, 1, 2
 
@@ -48,6 +48,6 @@ def write_json(obj, target: str) -> None:
     if target == "-":
         print(text)
         return
-    from .report import write_text_atomic
+    from ..report import write_text_atomic
 
     write_text_atomic(target, text + "\n", what="JSON")

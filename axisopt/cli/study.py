@@ -1,23 +1,15 @@
-"""``axisopt compare A.yaml B.yaml ...`` and ``axisopt study STUDY.yaml``."""
+"""``axisopt study STUDY.yaml``: a batch trade study, locally or on a Dask cluster."""
 
 from __future__ import annotations
 
 import sys
 import time
 
-from .cliutil import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK, write_json
-from .errors import InputError
+from ..errors import InputError
+from .common import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK
 
 
 def register(sub) -> None:
-    c = sub.add_parser("compare", help="compare designs (or solved problems) side by side")
-    c.add_argument("files", nargs="+", metavar="FILE.yaml",
-                   help="design YAMLs, or problem YAMLs (solved with the default method; the best design is used)")
-    c.add_argument("--json", metavar="FILE", help="write the comparison as JSON ('-' for stdout)")
-    c.add_argument("--csv", metavar="FILE", help="write one row per design as CSV")
-    c.add_argument("--plot", metavar="FILE.png", help="overlay stiffness and frequency over the stroke")
-    c.set_defaults(func=cmd_compare)
-
     s = sub.add_parser("study", help="run a batch trade study (sweeps over a base problem)")
     s.add_argument("study", help="study YAML file")
     s.add_argument("--out", metavar="DIR", help="output directory (default: <study file stem>-results)")
@@ -29,29 +21,6 @@ def register(sub) -> None:
                    help="continue an interrupted study in --out, solving only the missing cases")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
     s.set_defaults(func=cmd_study)
-
-
-def cmd_compare(args) -> int:
-    from .study.compare import compare_dict, compare_table, load_compared, write_compare_csv
-
-    items = load_compared(args.files)
-    if args.json != "-":
-        print(compare_table(items))
-    if args.json:
-        write_json(compare_dict(items), args.json)
-    if args.csv:
-        write_compare_csv(items, args.csv)
-    evs = [c for c in items if c.ok]
-    if args.plot and evs:
-        from .report import plot_profiles
-
-        plot_profiles([c.evaluation for c in evs], args.plot, labels=[c.label for c in evs])
-        if args.json != "-":
-            print(f"\nplot written to {args.plot}")
-    failed = [c for c in items if not c.ok]
-    for c in failed:
-        print(f"error: {c.source}: problem has no design to compare (status {c.solve['status']})", file=sys.stderr)
-    return EXIT_NEGATIVE if failed else EXIT_OK
 
 
 class _Bar:
@@ -104,7 +73,7 @@ def _hms(s: float) -> str:
 def cmd_study(args) -> int:
     from pathlib import Path
 
-    from .study import load_study, run_study
+    from ..study import load_study, run_study
 
     study = load_study(args.study)
     if args.workers is not None and args.workers < 0:

@@ -1,0 +1,40 @@
+"""``axisopt compare A.yaml B.yaml ...``: designs (or solved problems) side by side."""
+
+from __future__ import annotations
+
+import sys
+
+from .common import EXIT_NEGATIVE, EXIT_OK, write_json
+
+
+def register(sub) -> None:
+    c = sub.add_parser("compare", help="compare designs (or solved problems) side by side")
+    c.add_argument("files", nargs="+", metavar="FILE.yaml",
+                   help="design YAMLs, or problem YAMLs (solved with the default method; the best design is used)")
+    c.add_argument("--json", metavar="FILE", help="write the comparison as JSON ('-' for stdout)")
+    c.add_argument("--csv", metavar="FILE", help="write one row per design as CSV")
+    c.add_argument("--plot", metavar="FILE.png", help="overlay stiffness and frequency over the stroke")
+    c.set_defaults(func=cmd_compare)
+
+
+def cmd_compare(args) -> int:
+    from ..study.compare import compare_dict, compare_table, load_compared, write_compare_csv
+
+    items = load_compared(args.files)
+    if args.json != "-":
+        print(compare_table(items))
+    if args.json:
+        write_json(compare_dict(items), args.json)
+    if args.csv:
+        write_compare_csv(items, args.csv)
+    evs = [c for c in items if c.ok]
+    if args.plot and evs:
+        from ..report import plot_profiles
+
+        plot_profiles([c.evaluation for c in evs], args.plot, labels=[c.label for c in evs])
+        if args.json != "-":
+            print(f"\nplot written to {args.plot}")
+    failed = [c for c in items if not c.ok]
+    for c in failed:
+        print(f"error: {c.source}: problem has no design to compare (status {c.solve['status']})", file=sys.stderr)
+    return EXIT_NEGATIVE if failed else EXIT_OK

@@ -1,0 +1,69 @@
+"""``axisopt evaluate``: one design over the stroke."""
+
+from __future__ import annotations
+
+from .common import EXIT_OK, write_json
+
+
+def register(sub) -> None:
+    e = sub.add_parser("evaluate", help="evaluate one design over the stroke")
+    e.add_argument("design", help="design YAML file")
+    e.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
+    e.add_argument("--plot", metavar="FILE.png", help="plot stiffness and frequency over the stroke")
+    e.add_argument("--calibration", metavar="FILE.yaml", help="apply a calibration saved by 'diagnose'")
+    e.add_argument("--methods", nargs="?", const="all", metavar="NAMES",
+                   help="stiffness of nut, bearings and screw by every method of the seed paper, or only the "
+                        "named ones (e.g. nut:hertz,bearings:palmgren)")
+    e.add_argument("--frf", metavar="FILE.png",
+                   help="plot the table's dynamic compliance at stroke start, middle and end (also in --json)")
+    e.set_defaults(func=cmd_evaluate)
+
+
+def cmd_evaluate(args) -> int:
+    from ..design import load_design
+    from ..model import evaluate
+    from ..report import evaluation_dict, evaluation_table, plot_profiles
+
+    design = load_design(args.design)
+    if args.calibration:
+        from ..identify.calibration import apply_calibration
+
+        design = apply_calibration(design, args.calibration)
+    ev = evaluate(design)
+    rows = resp = None
+    if args.methods:
+        from ..model.methods import select_methods, stiffness_methods
+
+        rows = select_methods(stiffness_methods(ev), args.methods, design.name)
+    if args.frf:
+        from ..model.frf import frf
+
+        resp = frf(ev)
+    if args.json != "-":
+        print(evaluation_table(ev))
+        if rows is not None:
+            from ..report_extra import methods_table
+
+            print("\n" + methods_table(rows))
+    if args.json:
+        out = evaluation_dict(ev)
+        if rows is not None:
+            from ..report_extra import methods_dict
+
+            out["stiffness_methods"] = methods_dict(rows)
+        if resp is not None:
+            from ..report_extra import frf_dict
+
+            out["frf"] = frf_dict(resp)
+        write_json(out, args.json)
+    if args.plot:
+        plot_profiles([ev], args.plot)
+        if args.json != "-":
+            print(f"\nplot written to {args.plot}")
+    if args.frf:
+        from ..report_extra import plot_frf
+
+        plot_frf(resp, args.frf)
+        if args.json != "-":
+            print(f"\nFRF plot written to {args.frf}")
+    return EXIT_OK
