@@ -48,6 +48,6 @@ def write_json(obj, target: str) -> None:
     if target == "-":
         print(text)
         return
-    from ..report import write_text_atomic
+    from ..fileio import write_text_atomic
 
     write_text_atomic(target, text + "\n", what="JSON")

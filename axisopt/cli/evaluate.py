@@ -42,17 +42,17 @@ def cmd_evaluate(args) -> int:
     if args.json != "-":
         print(evaluation_table(ev))
         if rows is not None:
-            from ..report_extra import methods_table
+            from ..report.methods import methods_table
 
             print("\n" + methods_table(rows))
     if args.json:
         out = evaluation_dict(ev)
         if rows is not None:
-            from ..report_extra import methods_dict
+            from ..report.methods import methods_dict
 
             out["stiffness_methods"] = methods_dict(rows)
         if resp is not None:
-            from ..report_extra import frf_dict
+            from ..report.methods import frf_dict
 
             out["frf"] = frf_dict(resp)
         write_json(out, args.json)
@@ -61,7 +61,7 @@ def cmd_evaluate(args) -> int:
         if args.json != "-":
             print(f"\nplot written to {args.plot}")
     if args.frf:
-        from ..report_extra import plot_frf
+        from ..report.methods import plot_frf
 
         plot_frf(resp, args.frf)
         if args.json != "-":

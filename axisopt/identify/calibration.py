@@ -79,7 +79,7 @@ def calibration_dict(diag, design=None, sources=()) -> dict:
 
 def save_calibration(diag, path, design=None, sources=()) -> dict:
     d = calibration_dict(diag, design, sources)
-    from ..report import write_text_atomic
+    from ..fileio import write_text_atomic
 
     write_text_atomic(path, yaml.safe_dump(d, sort_keys=False, allow_unicode=True), what="calibration")
     return d

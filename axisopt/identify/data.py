@@ -289,7 +289,7 @@ def write_dataset(ds: Dataset, path, units: dict | None = None) -> None:
         )
         heads.append(f"{n} [{u}]")
         factors.append((1.0 / unit_factor(u, q), -273.15 if q == "temperature" else 0.0))
-    from ..report import atomic_file
+    from ..fileio import atomic_file
 
     with atomic_file(path, "w", what="data CSV") as fh:
         w = csv.writer(fh)

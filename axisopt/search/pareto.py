@@ -134,6 +134,6 @@ def plot_pareto(front: ParetoFront, path: str) -> None:
     ax.set_title(f"Pareto front: {len(front.points)} designs ({', '.join(front.keys)})")
     ax.grid(True, alpha=0.3)
     fig.tight_layout()
-    from ..report import save_figure
+    from ..fileio import save_figure
 
     save_figure(fig, path)

@@ -219,7 +219,7 @@ def compare_rows(items) -> list:
 def write_compare_csv(items, path) -> None:
     import pandas as pd
 
-    from ..report import atomic_file
+    from ..fileio import atomic_file
 
     with atomic_file(path, "w", what="CSV") as fh:
         pd.DataFrame(compare_rows(items)).to_csv(fh, index=False)

@@ -224,7 +224,7 @@ def run_study(study: Study, out_dir, *, workers: int | None = None, scheduler=No
     Holds ``out_dir/.lock`` while it runs (InputError if another run holds it).  Files that cannot be
     written (disk full, no permission, a directory where a file belongs) are InputErrors naming the file.
     """
-    from ..report import make_output_dir
+    from ..fileio import make_output_dir
 
     out = make_output_dir(out_dir)
     with StudyLock(out):
@@ -300,7 +300,7 @@ def _batches(cases, size: int) -> list:
 
 
 def _write_definition(study: Study, out: Path) -> None:
-    from ..report import write_text_atomic
+    from ..fileio import write_text_atomic
 
     d = {"name": study.name, "source": study.source, "base_source": study.base_source, "method": study.method,
          "combine": study.combine, "keys": list(study.keys), "fingerprint": study.fingerprint(),

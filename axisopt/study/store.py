@@ -17,7 +17,7 @@ class CaseStore:
         self.dir = Path(out_dir) / "cases"
 
     def prepare(self) -> None:
-        from ..report import make_output_dir
+        from ..fileio import make_output_dir
 
         make_output_dir(self.dir)
         _sweep_temporaries(self.dir)
@@ -28,7 +28,7 @@ class CaseStore:
         return {p.stem for p in self.dir.glob("*.json")}
 
     def write(self, rec: dict) -> None:
-        from ..report import write_text_atomic
+        from ..fileio import write_text_atomic
 
         # no fsync per case: after a power loss an unreadable case file is treated as missing and solved again
         text = json.dumps(rec, indent=1, allow_nan=False, default=_json_default)

@@ -14,7 +14,7 @@ import math
 import re
 from pathlib import Path
 
-from ..report import atomic_file, make_output_dir, save_figure, write_text_atomic
+from ..fileio import atomic_file, make_output_dir, save_figure, write_text_atomic
 from .store import OK_STATUSES, CaseStore
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")

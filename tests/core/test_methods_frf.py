@@ -17,7 +17,7 @@ from axisopt.model.frf import _chain_at, frf
 from axisopt.model.loads import bearing_set_stiffness
 from axisopt.model.methods import bearing_c_type, stiffness_methods
 from axisopt.physics.dynamics import drive_train_compliance
-from axisopt.report_extra import frf_dict, methods_dict, methods_table, plot_frf
+from axisopt.report.methods import frf_dict, methods_dict, methods_table, plot_frf
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -1,17 +1,16 @@
-"""Tables, JSON and plots in vendor units (N/um, Hz, mm, N*m).  Nothing here prints."""
+"""The evaluation of one design as a text table and a JSON dict, in vendor units (N/um, Hz, mm, N*m).
+Nothing here prints."""
 
 from __future__ import annotations
 
 import math
-from contextlib import contextmanager
-from pathlib import Path
 
 import numpy as np
 
-from .errors import InputError
-from .model import CHECK_LABELS, CHECKS, DRIVE_CHECKS, Evaluation, passes
-from .units import N_PER_UM
+from ..model import CHECK_LABELS, CHECKS, DRIVE_CHECKS, Evaluation, passes
+from ..units import N_PER_UM
 
+RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
 
 def _fmt(v, nd=1):
     if v is None or (isinstance(v, float) and not math.isfinite(v)):
@@ -166,7 +165,6 @@ def evaluation_table(ev: Evaluation) -> str:
     return "\n".join(lines)
 
 
-RPM = 60.0 / (2.0 * math.pi)
 
 
 def drive_lines(ev: Evaluation) -> list:
@@ -215,169 +213,3 @@ def _thermal_line(ev: Evaluation) -> str:
                  f"({'absorbs the rise' if a.pretension is None else 'as given'}), bearing static load "
                  f"{v['bearing_static_load'] / 1e3:.1f} kN")
     return text
-
-
-PLOT_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg")
-
-
-def make_output_dir(path):
-    """Create an output directory (and its parents); a path that cannot be one is an InputError."""
-    d = Path(path)
-    if d.exists() and not d.is_dir():
-        raise InputError("cannot create output directory: a file of that name is in the way", source=str(d))
-    try:
-        d.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise InputError(f"cannot create output directory ({exc.strerror or exc})", source=str(d)) from None
-    return d
-
-
-@contextmanager
-def atomic_file(path, mode: str = "w", *, what: str = "file", fsync: bool = True):
-    """Open ``path`` for writing so that it is replaced whole or not at all.
-
-    Every output file of axisopt goes through here: the content goes to a temporary file in the same
-    directory (``.NAME.PID.RANDOM.tmp``), which ``os.replace`` then puts in place atomically.  A write that
-    fails (disk full, no permission, a directory in the way) or a process killed mid-write leaves the old
-    file untouched; the temporary file is removed on failure (one left by ``kill -9`` is swept by the next
-    study run).  ``mode`` is ``"w"`` (UTF-8 text, newlines written as given) or ``"wb"``.  ``fsync`` also
-    guards the content against a power loss right after the rename.  An ``OSError`` becomes an InputError
-    naming ``path`` (one line, exit code 2).
-    """
-    import os
-    import secrets
-
-    if mode not in ("w", "wb"):
-        raise ValueError(f"mode must be 'w' or 'wb', got {mode!r}")
-    p = Path(path)
-    if p.is_dir():
-        raise InputError(f"cannot write {what}: a directory of that name is in the way", source=str(p))
-    tmp = p.with_name(f".{p.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp")
-    done = False
-    try:
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # 0o666 & ~umask, as open() would
-        with open(fd, mode, **({"encoding": "utf-8", "newline": ""} if mode == "w" else {})) as fh:
-            yield fh
-            fh.flush()
-            if fsync:
-                os.fsync(fh.fileno())
-        os.replace(tmp, p)
-        done = True
-    except OSError as exc:
-        raise InputError(f"cannot write {what} ({exc.strerror or exc})", source=str(p)) from None
-    finally:
-        if not done:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-
-
-def write_text_atomic(path, text: str, *, what: str = "file", fsync: bool = True) -> None:
-    """Write a text file (UTF-8) whole or not at all, through :func:`atomic_file`."""
-    with atomic_file(path, "w", what=what, fsync=fsync) as fh:
-        fh.write(text)
-
-
-def save_figure(fig, path, dpi: int = 110) -> None:
-    """Save and close a matplotlib figure, atomically (:func:`atomic_file`); a bad path or format is an
-    InputError (one line, exit 2)."""
-    import matplotlib.pyplot as plt
-
-    ext = Path(path).suffix.lower().lstrip(".")
-    try:
-        if ext not in PLOT_FORMATS:
-            raise InputError(f"plot file needs one of the extensions {', '.join(PLOT_FORMATS)}", source=str(path))
-        with atomic_file(path, "wb", what="plot") as fh:
-            fig.savefig(fh, format=ext, dpi=dpi)
-    except ValueError as exc:
-        raise InputError(f"cannot write plot ({exc})", source=str(path)) from None
-    finally:
-        plt.close(fig)
-
-
-def duty_points(ev: Evaluation) -> dict | None:
-    """The duty cycle of an evaluation on the motor's torque-speed plane (None without a motor): motor speed
-    [rpm] and torque [N.m] at the start and end of each phase, the RMS torque at the mean speed, and the
-    motor's rated, peak and speed limits."""
-    from .physics.motion import phase_speeds
-
-    d, v, a = ev.design, ev.values, ev.design.axis
-    if d.motor is None:
-        return None
-    phases = a.phases
-    to_rpm = 2.0 * math.pi / float(d.screw["lead"]) * a.reduction_ratio * RPM  # table m/s -> motor rpm
-    speeds = phase_speeds(phases)
-    n, t = [], []
-    from .model import design_params, drive_response
-
-    torques = drive_response(design_params(d), d.preload)["duty_torques"]  # per phase; not a Function output
-    for (v0, v1), (t0, t1) in zip(speeds, torques):
-        n += [v0 * to_rpm, v1 * to_rpm]
-        t += [float(t0), float(t1)]
-    total = sum(ph.duration for ph in phases)
-    mean = sum(ph.duration * 0.5 * (v0 + v1) for ph, (v0, v1) in zip(phases, speeds)) / total if total else 0.0
-    m = d.motor
-    return {"speed_rpm": n, "torque_Nm": t, "rms_torque_Nm": float(v["rms_torque"]),
-            "mean_speed_rpm": mean * to_rpm, "rated_torque_Nm": float(m["rated_torque"]),
-            "peak_torque_Nm": float(m["peak_torque"]), "rated_speed_rpm": float(m["rated_speed"]) * RPM,
-            "max_speed_rpm": float(m["max_speed"]) * RPM, "motor": str(m["id"])}
-
-
-def _torque_speed(ax, pts: dict, label: str, color) -> None:
-    ax.plot(pts["speed_rpm"], np.abs(pts["torque_Nm"]), "o-", ms=3, lw=1, color=color,
-            label=f"{label}: duty cycle |T|")
-    ax.plot([pts["mean_speed_rpm"]], [pts["rms_torque_Nm"]], "s", ms=7, color=color, mfc="none",
-            label=f"{label}: RMS at mean speed")
-    nr, nm = pts["rated_speed_rpm"], pts["max_speed_rpm"]
-    ax.plot([0, nr, nr], [pts["rated_torque_Nm"], pts["rated_torque_Nm"], 0], "-", color=color, lw=2, alpha=0.5,
-            label=f"{pts['motor']}: rated torque to rated speed")
-    ax.plot([0, nm, nm], [pts["peak_torque_Nm"], pts["peak_torque_Nm"], 0], "--", color=color, lw=1.5,
-            alpha=0.5, label=f"{pts['motor']}: peak torque, max speed (checked)")
-
-
-def plot_profiles(evaluations, path: str, labels=None) -> None:
-    """Stiffness and first natural frequency over the stroke, one line per evaluation; with a motor, a
-    torque-speed panel: the duty-cycle points against the motor's rated and peak torque and speed limits
-    (the limits the checks use; a vendor's curve also drops the peak torque at high speed)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    pts = [duty_points(ev) for ev in evaluations]
-    drive = any(p is not None for p in pts)
-    if drive:
-        fig = plt.figure(figsize=(13, 6))
-        gs = fig.add_gridspec(2, 2, width_ratios=(1, 1))
-        ax1 = fig.add_subplot(gs[0, 0])
-        ax2 = fig.add_subplot(gs[1, 0], sharex=ax1)
-        ax3 = fig.add_subplot(gs[:, 1])
-    else:
-        fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for i, ev in enumerate(evaluations):
-        s = (ev.x - ev.design.axis.start_offset) * 1e3
-        lab = labels[i] if labels else ev.design.name
-        col = colors[i % len(colors)]
-        ax1.plot(s, np.asarray(ev["k_total"]) / N_PER_UM, label=lab, color=col)
-        ax2.plot(s, ev["f1"], label=lab, color=col)
-        if pts[i] is not None:
-            _torque_speed(ax3, pts[i], lab, col)
-    ax1.set_ylabel("axial stiffness [N/um]")
-    ax2.set_ylabel("1st natural frequency [Hz]")
-    ax2.set_xlabel("nut position along the stroke [mm]")
-    axes = (ax1, ax2)
-    if drive:
-        ax3.set_xlabel("motor speed [rpm]")
-        ax3.set_ylabel("motor torque magnitude [N.m]")
-        ax3.set_title("duty cycle against the motor limits", fontsize=10)
-        ax3.set_xlim(left=0)
-        ax3.set_ylim(bottom=0)
-        ax3.legend(fontsize=7, loc="upper right")
-        axes = (ax1, ax2, ax3)
-    for ax in axes:
-        ax.grid(True, alpha=0.3)
-    ax1.legend(fontsize=8)
-    fig.tight_layout()
-    save_figure(fig, path)

@@ -9,8 +9,8 @@ import math
 
 import numpy as np
 
-from .report import save_figure
-from .units import N_PER_UM
+from ..fileio import save_figure
+from ..units import N_PER_UM
 
 
 def _num(v):
