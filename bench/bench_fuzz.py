@@ -9,14 +9,14 @@ CSV, user catalog directory, compare pair, or command-line flags) with a mutatio
 time limit.  Each outcome is classified against the CLI contract:
 
   ok                exit 0, --json output finite and without negative masses, stiffnesses, lengths
-  negative          exit 1 with an explanation
+  negative          exit 1 (proven) or 3 (unproven: Bonmin, a time limit) with an explanation
   clean error       exit 2 with exactly one stderr line starting 'error: '
   multi-line error  exit 2 with anything else on stderr
   traceback         a Python traceback on stderr (any exit code)
   hang              no exit within --timeout seconds (the process group is killed)
   bad output        exit 0 but the JSON holds NaN/Infinity or a negative mass/stiffness/length/frequency
   warning           exit 0 with a Python warning on stderr
-  silent negative   exit 1 with no output at all
+  silent negative   exit 1 or 3 with no output at all
   crash             any other exit code (a signal, an abort)
 
 Case ``i`` of seed ``s`` is drawn from ``random.Random(s * 1_000_003 + i)``, so a bad case is reproduced with

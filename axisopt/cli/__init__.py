@@ -1,8 +1,10 @@
 """Command line: ``axisopt evaluate | solve | diagnose | compare | study | parts``.  The only package that prints:
 one module per command, shared output helpers in :mod:`.common`.
 
-Exit codes: 0 success, 1 a well-formed question with a negative answer (e.g. an infeasible
-problem), 2 bad input (one line on stderr naming the file and key or line).
+Exit codes: 0 success (solve: a proven optimum), 1 a proven negative answer (an infeasible problem; a failed
+check with ``evaluate --fail-on-check``), 2 bad input (one line on stderr naming the file and key or line),
+3 no proof either way (Bonmin's unproven point, a time limit, a solver failure), 130 interrupted.  A closed
+pipe or a full device on stdout keeps the command's code.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ import argparse
 import sys
 
 from ..errors import InputError
-from .common import EXIT_INPUT, EXIT_OK, Parser
+from .common import EXIT_INPUT, EXIT_INTERRUPTED, GuardedStdout, Parser
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -35,21 +37,22 @@ def _commands():
 
 
 def main(argv=None) -> int:
+    saved = sys.stdout
+    out = sys.stdout = GuardedStdout(saved)
     try:
         parser = build_parser()
         args = parser.parse_args(argv)
-        return args.func(args)
+        code = args.func(args)
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)
-        return EXIT_INPUT
+        code = EXIT_INPUT
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
-        return 130
-    except BrokenPipeError:  # output piped into e.g. `head`: stop quietly
-        import os
-
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return EXIT_OK
+        code = EXIT_INTERRUPTED
+    finally:
+        out.flush()
+        sys.stdout = saved
+    return code
 
 
 if __name__ == "__main__":

@@ -8,7 +8,52 @@ import math
 
 from ..errors import InputError
 
-EXIT_OK, EXIT_NEGATIVE, EXIT_INPUT = 0, 1, 2
+# 0 success (solve: proven optimum), 1 a proven negative answer (an infeasible problem, a failed check with
+# --fail-on-check), 2 bad input, 3 no proof either way (Bonmin's unproven point, a time limit, a solver
+# failure), 130 interrupted.
+EXIT_OK, EXIT_NEGATIVE, EXIT_INPUT, EXIT_UNPROVEN, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
+
+
+class GuardedStdout:
+    """sys.stdout for the length of one command: a closed pipe (``axisopt ... | head``) or a full device
+    (``> /dev/full``) does not end the command with a traceback or a wrong exit code.  The command runs to
+    its end (its other outputs, e.g. ``--json FILE``, are still written) and keeps its own exit code; output
+    to the closed pipe is dropped silently, a full device is reported on stderr in one line."""
+
+    def __init__(self, stream):
+        self._s = stream
+        self.lost: OSError | None = None
+
+    def _lose(self, exc: OSError) -> None:
+        import errno
+        import os
+        import sys
+
+        self.lost = exc
+        try:  # Python's own flush at exit must not fail again on the data still buffered
+            os.dup2(os.open(os.devnull, os.O_WRONLY), self._s.fileno())
+        except (OSError, ValueError, AttributeError):
+            pass
+        if exc.errno != errno.EPIPE:
+            print(f"error: standard output: {exc.strerror or exc}; output lost", file=sys.stderr)
+
+    def write(self, text: str) -> int:
+        if self.lost is None:
+            try:
+                return self._s.write(text)
+            except OSError as exc:
+                self._lose(exc)
+        return len(text)
+
+    def flush(self) -> None:
+        if self.lost is None:
+            try:
+                self._s.flush()
+            except OSError as exc:
+                self._lose(exc)
+
+    def __getattr__(self, name):  # fileno, isatty, encoding, ... of the real stream
+        return getattr(self._s, name)
 
 
 class Parser(argparse.ArgumentParser):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from .common import EXIT_NEGATIVE, EXIT_OK, write_json
+from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, write_json
 
 
 def register(sub) -> None:
@@ -59,7 +59,12 @@ def cmd_solve(args) -> int:
                                   + (f" / {c.motor}" if c.motor else "") + f" ({c.mounting})" for c in cands])
         if not quiet:
             print(f"\nplot written to {args.plot}")
-    return EXIT_OK if res.status in ("optimal", "feasible") else EXIT_NEGATIVE
+    return exit_code(res.status)
+
+
+def exit_code(status: str) -> int:
+    """0 proven optimum, 1 proven infeasible, 3 anything unproven (Bonmin's point, time limit, failure)."""
+    return {"optimal": EXIT_OK, "infeasible": EXIT_NEGATIVE}.get(status, EXIT_UNPROVEN)
 
 
 def _n(v, nd=1):

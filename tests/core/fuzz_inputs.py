@@ -12,7 +12,7 @@ seeded ``random.Random`` (the bench) and hypothesis' ``data.draw`` (the test, wh
 
 * exit 0 with finite output (with ``--json``: no NaN/Infinity, no negative mass, stiffness, length or
   frequency), no traceback and no warning on stderr;
-* exit 1 with an explanation (stdout or stderr not empty), no traceback;
+* exit 1 (proven negative) or 3 (unproven) with an explanation (stdout or stderr not empty), no traceback;
 * exit 2 with exactly one line on stderr starting with ``error: ``.
 """
 
@@ -994,15 +994,15 @@ def classify(case: Case, out: Outcome) -> tuple[str, str]:
     if "Traceback (most recent call last)" in err:
         tail = [ln for ln in lines if not ln.startswith(" ")]
         return "traceback", (tail[-1] if tail else lines[-1])[:300]
-    if out.rc not in (0, 1, 2):
+    if out.rc not in (0, 1, 2, 3):
         return "crash", f"exit code {out.rc}; " + " | ".join(lines[-3:])[:300]
     if out.rc == 2:
         if len(lines) == 1 and lines[0].startswith("error: ") and len(err.strip().splitlines()) == 1:
             return "clean error", lines[0][:300]
         return "multi-line error", f"{len(err.splitlines())} stderr lines: " + " | ".join(lines[:4])[:300]
-    if out.rc == 1:
+    if out.rc in (1, 3):  # 1 proven negative, 3 unproven (Bonmin, a time limit): both must explain
         if not (out.stdout.strip() or err.strip()):
-            return "silent negative", "exit 1 with no output"
+            return "silent negative", f"exit {out.rc} with no output"
         return "negative", (lines[-1] if lines else out.stdout.strip().splitlines()[-1])[:300]
     # exit 0
     if any(w in err for w in ("Warning", "warning:")):
