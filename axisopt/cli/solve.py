@@ -53,10 +53,14 @@ def cmd_solve(args) -> int:
             from ..model import evaluate
             from ..report import plot_profiles
 
+            from ..report.plots import distinct_labels
+
             cands = [res.best] + list(res.runners_up)
-            plot_profiles([evaluate(c.design) for c in cands], args.plot,
-                          labels=[f"#{c.rank} {c.nut} / {c.bearing} / {c.guide}"
-                                  + (f" / {c.motor}" if c.motor else "") + f" ({c.mounting})" for c in cands])
+            parts = [{"mounting": c.mounting, **c.parts()} for c in cands]
+            labels = distinct_labels(parts, [f"#{c.rank}" for c in cands]) if len(cands) > 1 else \
+                [" / ".join(str(v) for v in parts[0].values() if v)]
+            plot_profiles([evaluate(c.design) for c in cands], args.plot, labels=labels,
+                          limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")})
         if not quiet:
             print(f"\nplot written to {args.plot}")
     return exit_code(res.status)

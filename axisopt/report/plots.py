@@ -53,10 +53,23 @@ def _torque_speed(ax, pts: dict, label: str, color) -> None:
             alpha=0.5, label=f"{pts['motor']}: peak torque, max speed (checked)")
 
 
-def plot_profiles(evaluations, path: str, labels=None) -> None:
+def distinct_labels(items, prefix=None) -> list:
+    """Legend labels that name every part in which the items differ (and only those): ``items`` are
+    dicts slot -> part id (or mounting); ``prefix`` an optional list of leading tags (e.g. '#2')."""
+    slots = [k for k in (items[0] if items else {}) if len({str(it.get(k)) for it in items}) > 1]
+    out = []
+    for i, it in enumerate(items):
+        body = " / ".join(str(it[k]) for k in slots if it.get(k) not in (None, "")) or "same parts"
+        out.append(f"{prefix[i]} {body}" if prefix else body)
+    return out
+
+
+def plot_profiles(evaluations, path: str, labels=None, limits=None) -> None:
     """Stiffness and first natural frequency over the stroke, one line per evaluation; with a motor, a
     torque-speed panel: the duty-cycle points against the motor's rated and peak torque and speed limits
-    (the limits the checks use; a vendor's curve also drops the peak torque at high speed)."""
+    (the limits the checks use; a vendor's curve also drops the peak torque at high speed).  ``limits``
+    (optional) maps 'min_stiffness' [N/m] and 'min_frequency' [Hz] to the problem's limits, drawn as
+    dashed lines."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -81,6 +94,14 @@ def plot_profiles(evaluations, path: str, labels=None) -> None:
         ax2.plot(s, ev["f1"], label=lab, color=col)
         if pts[i] is not None:
             _torque_speed(ax3, pts[i], lab, col)
+    limits = dict(limits or {})
+    if "min_stiffness" in limits:
+        ax1.axhline(limits["min_stiffness"] / N_PER_UM, color="tab:red", ls="--", lw=1,
+                    label=f"min_stiffness {limits['min_stiffness'] / N_PER_UM:g} N/um")
+    if "min_frequency" in limits:
+        ax2.axhline(limits["min_frequency"], color="tab:red", ls="--", lw=1,
+                    label=f"min_frequency {limits['min_frequency']:g} Hz")
+        ax2.legend(fontsize=8)
     ax1.set_ylabel("axial stiffness [N/um]")
     ax2.set_ylabel("1st natural frequency [Hz]")
     ax2.set_xlabel("nut position along the stroke [mm]")

@@ -24,6 +24,9 @@ _FIELD = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "c
           "moving_mass": "moving_mass"}
 
 
+CLOUD = 4000  # feasible designs drawn for the plot of the front
+
+
 def nondominated(points: np.ndarray, block: int = 2048) -> np.ndarray:
     """Indices of the non-dominated rows of ``points`` (n x d), every column maximised.
 
@@ -100,8 +103,10 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
            for r, j in enumerate(front[:max_points])]
     info["feasible"] = int(len(ok))
     cert = Certificate(nlps_solved=0, nlp_failures=0, notes=tuple(notes + [f"front size {len(front)}"]), **info)
+    sample = ok if len(ok) <= CLOUD else np.random.default_rng(0).choice(ok, CLOUD, replace=False)
+    cloud = np.column_stack([getattr(ex, _FIELD[k])[sample] for k in keys]) if len(ok) else None
     pf = ParetoFront(tuple(keys), tuple(SENSE[k] for k in keys), tuple(UNIT[k] for k in keys), pts,
-                     feasible=int(len(ok)))
+                     feasible=int(len(ok)), cloud=cloud)
     status = "optimal" if len(front) else "infeasible"
     res = SolveResult(status, method, problem.name, problem.objective.label, "-", pts[0] if pts else None, [],
                       cert, time.perf_counter() - t0, pareto=pf)
@@ -114,26 +119,45 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
 
 
 def plot_pareto(front: ParetoFront, path: str) -> None:
-    """Scatter of the front: first two objectives on the axes, a third as colour (Agg backend)."""
+    """Scatter matrix of every objective pair: the non-dominated designs in colour (by the first
+    objective), a sample of the feasible designs they dominate in grey, each axis labelled with its unit
+    and whether it is maximised or minimised; the diagonal shows each objective's spread over the front."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    def vals(k):
-        return np.array([getattr(p, _FIELD[k]) for p in front.points])
-
-    k0, k1 = front.keys[0], front.keys[1]
-    fig, ax = plt.subplots(figsize=(7, 5))
-    c = vals(front.keys[2]) if len(front.keys) > 2 else None
-    sc = ax.scatter(vals(k0), vals(k1), c=c, s=18, cmap="viridis")
-    if c is not None:
-        fig.colorbar(sc, ax=ax, label=f"{front.keys[2]} [{front.units[2]}]")
-    ax.set_xlabel(f"{k0} [{front.units[0]}] ({front.senses[0]})")
-    ax.set_ylabel(f"{k1} [{front.units[1]}] ({front.senses[1]})")
-    ax.set_title(f"Pareto front: {len(front.points)} designs ({', '.join(front.keys)})")
-    ax.grid(True, alpha=0.3)
-    fig.tight_layout()
+    keys, d = front.keys, len(front.keys)
+    F = np.array([[getattr(p, _FIELD[k]) for k in keys] for p in front.points]).reshape(-1, d)
+    C = np.asarray(front.cloud, dtype=float).reshape(-1, d) if front.cloud is not None else np.zeros((0, d))
+    size = 2.6 * d if d > 2 else 5.5
+    fig, axes = plt.subplots(d, d, figsize=(size + 1.0, size), squeeze=False)
+    label = [f"{k.replace('_', ' ')} [{u}] ({'max' if s == 'max' else 'min'})"
+             for k, u, s in zip(keys, front.units, front.senses)]
+    sc = None
+    for i in range(d):
+        for j in range(d):
+            ax = axes[i][j]
+            if i == j:
+                ax.hist(F[:, i], bins=min(20, max(len(F), 1)), color="tab:blue", alpha=0.7)
+                ax.set_yticks([])
+            else:
+                if len(C):
+                    ax.scatter(C[:, j], C[:, i], s=4, color="0.75", alpha=0.5, linewidths=0,
+                               label="feasible (sample)" if (i, j) == (1, 0) else None)
+                sc = ax.scatter(F[:, j], F[:, i], c=F[:, 0], s=14, cmap="viridis",
+                                label="Pareto front" if (i, j) == (1, 0) else None)
+            ax.grid(True, alpha=0.3)
+            if i == d - 1:
+                ax.set_xlabel(label[j], fontsize=8)
+            if j == 0:
+                ax.set_ylabel(label[i], fontsize=8)
+            ax.tick_params(labelsize=7)
+    if d > 1:
+        axes[1][0].legend(fontsize=7, loc="best")
+    if sc is not None:
+        fig.colorbar(sc, ax=axes, label=label[0], shrink=0.8)
+    fig.suptitle(f"Pareto front: {len(front.points)} non-dominated of {front.feasible:,} feasible designs")
     from ..fileio import save_figure
 
     save_figure(fig, path)

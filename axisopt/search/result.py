@@ -89,6 +89,9 @@ class ParetoFront:
     units: tuple
     points: list  # list[Candidate], sorted by the first key
     feasible: int = 0
+    # objective values (columns in ``keys`` order, display units) of up to 4000 feasible designs drawn at
+    # random with a fixed seed, for plotting the front against what it dominates; not in the JSON
+    cloud: object = None
 
     def to_dict(self) -> dict:
         return {"keys": list(self.keys), "senses": list(self.senses), "units": list(self.units),
