@@ -167,9 +167,34 @@ def _group_column(study, df, cols):
     return "mounting"
 
 
+MAX_LINES = 10  # lines per plot; more groups are folded into the best over them (said in the legend title)
+
+
+def _line_groups(df, cols, name, fallback):
+    """Columns whose combinations make the lines of a plot against swept input ``name``: every other
+    swept input (cases that differ in them are different designs questions and are not joined), or the
+    fallback grouping when nothing else is swept or the combinations are too many to draw."""
+    others = [n for k, (n, _c) in cols.items() if n != name and df[n].nunique() > 1]
+    if others and df.groupby(others, dropna=False).ngroups <= MAX_LINES:
+        return others
+    return [fallback]
+
+
+def _machine_columns(df, cols) -> list:
+    """Swept inputs that change the axis itself (axis.*: stroke, masses, ...): cases that differ in them
+    are different machines, so a cost / stiffness staircase is drawn within each, never across."""
+    return [n for k, (n, _c) in cols.items() if k.startswith("axis.") and df[n].nunique() > 1]
+
+
+def _group_label(g, by) -> str:
+    g = g if isinstance(g, tuple) else (g,)
+    return ", ".join(f"{b.split(' [')[0].split('.')[-1]}={v}" for b, v in zip(by, g))
+
+
 def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
-    """Best minimum stiffness and frequency against each numeric swept input (one line per group),
-    and the cost / stiffness trade-off of all cases with its non-dominated cases marked."""
+    """Best minimum stiffness and frequency against each numeric swept input (one line per combination of
+    the other swept inputs, infeasible cases marked), and the cost / stiffness trade-off of all cases with
+    its non-dominated cases joined within each machine (cases of different axis inputs are not joined)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -177,47 +202,69 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
 
     files = {}
     ok = df[df["status"].isin(OK_STATUSES)]
+    bad = df[~df["status"].isin(OK_STATUSES)]
     if ok.empty:
         return files
     make_output_dir(plot_dir)
     cols = input_columns(study)
     group = _group_column(study, ok, cols)
     for key, (name, conv) in cols.items():
-        if conv is not _number or ok[name].nunique() < 2:
+        if conv is not _number or df[name].nunique() < 2:
             continue
+        by = _line_groups(df, cols, name, group)
         fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-        for g, sub in ok.groupby(group, dropna=False, sort=True):
-            # best over the other inputs at each value of this one
+        for g, sub in ok.groupby(by, dropna=False, sort=True):
+            # best over the cases that share this x and this line's inputs
             k = sub.groupby(name)["min_stiffness [N/um]"].max()
             f = sub.groupby(name)["min_frequency [Hz]"].max()
             line = "-o" if len(k) < 40 else "."
-            a1.plot(k.index, k.values, line, ms=3, label=str(g))
-            a2.plot(f.index, f.values, line, ms=3, label=str(g))
+            a1.plot(k.index, k.values, line, ms=3, label=_group_label(g, by))
+            a2.plot(f.index, f.values, line, ms=3, label=_group_label(g, by))
+        if len(bad):
+            for ax in (a1, a2):
+                ax.plot(bad[name], [0.0] * len(bad), "x", color="tab:red", ms=7,
+                        transform=ax.get_xaxis_transform(), clip_on=False,
+                        label=f"no design ({len(bad)} cases: {', '.join(sorted(set(bad['status'])))})")
         a1.set_ylabel("best min. axial stiffness [N/um]")
         a2.set_ylabel("best min. 1st frequency [Hz]")
         a2.set_xlabel(name)
         for ax in (a1, a2):
             ax.grid(True, alpha=0.3)
-        a1.legend(title=group, fontsize=8)
+        a1.legend(fontsize=7)
         fig.suptitle(f"{study.name}: best design against {key}", fontsize=10)
         fig.tight_layout()
         fname = plot_dir / f"best_vs_{_slug(key)}.png"
         save_figure(fig, fname, dpi=100)
         files[f"plot {key}"] = str(fname)
-    # trade-off over all cases: cost against minimum stiffness, non-dominated cases joined
+    # trade-off over all cases: cost against minimum stiffness, non-dominated cases joined per machine
     pts = ok[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
     if len(pts) >= 2:
         fig, ax = plt.subplots(figsize=(7, 4.5))
-        for g, sub in ok.groupby(group, dropna=False, sort=True):
-            ax.scatter(sub["cost [EUR]"], sub["min_stiffness [N/um]"], s=12, label=str(g), alpha=0.7)
-        front = pareto_mask(pts["cost [EUR]"].to_numpy(), pts["min_stiffness [N/um]"].to_numpy())
-        fr = pts[front].sort_values("cost [EUR]")
-        ax.step(fr["cost [EUR]"], fr["min_stiffness [N/um]"], "k-", where="post", lw=1,
-                label="non-dominated cases")
+        machines = _machine_columns(df, cols)
+        by = machines or [group]
+        colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        for i, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
+            col = colors[i % len(colors)]
+            sub = sub[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
+            ax.scatter(sub["cost [EUR]"], sub["min_stiffness [N/um]"], s=12, alpha=0.7, color=col,
+                       label=_group_label(g, by))
+            if machines and len(sub) >= 2:
+                front = pareto_mask(sub["cost [EUR]"].to_numpy(), sub["min_stiffness [N/um]"].to_numpy())
+                fr = sub[front].sort_values("cost [EUR]")
+                ax.step(fr["cost [EUR]"], fr["min_stiffness [N/um]"], "-", color=col, where="post", lw=1)
+        if not machines:
+            front = pareto_mask(pts["cost [EUR]"].to_numpy(), pts["min_stiffness [N/um]"].to_numpy())
+            fr = pts[front].sort_values("cost [EUR]")
+            ax.step(fr["cost [EUR]"], fr["min_stiffness [N/um]"], "k-", where="post", lw=1,
+                    label="non-dominated cases")
+        if len(bad):
+            ax.text(0.01, 0.01, f"not shown: {len(bad)} cases without a design", transform=ax.transAxes,
+                    fontsize=8, color="tab:red", va="bottom")
         ax.set_xlabel("cost [EUR]")
         ax.set_ylabel("min. axial stiffness [N/um]")
         ax.grid(True, alpha=0.3)
-        ax.legend(title=group, fontsize=8)
+        ax.legend(fontsize=7, title="non-dominated cases joined per machine" if machines else None,
+                  title_fontsize=7)
         ax.set_title(f"{study.name}: stiffness against cost of every case's best design", fontsize=10)
         fig.tight_layout()
         fname = plot_dir / "tradeoff_cost_stiffness.png"

@@ -1,0 +1,71 @@
+"""Study summary plots: lines never join cases that differ in another swept input, the cost/stiffness
+staircase never joins different machines (axis inputs), infeasible cases are shown, not dropped."""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import numpy as np
+import pandas as pd
+
+import axisopt.study.table as table
+
+
+def _study():
+    sweeps = [SimpleNamespace(key="axis.stroke", values=["500 mm", "800 mm", "1100 mm"]),
+              SimpleNamespace(key="limits.max_cost", values=["4000 EUR", "6000 EUR"])]
+    return SimpleNamespace(name="s", sweeps=sweeps, cases=[])
+
+
+def _frame():
+    rows = []
+    rng = np.random.default_rng(1)
+    for stroke in (500.0, 800.0, 1100.0):
+        for cost in (4000.0, 6000.0):
+            infeasible = stroke == 1100.0 and cost == 4000.0
+            rows.append({"axis.stroke [mm]": stroke, "limits.max_cost [EUR]": cost, "mounting": "fixed-fixed",
+                         "status": "infeasible" if infeasible else "optimal",
+                         "min_stiffness [N/um]": np.nan if infeasible else 300 - stroke / 10 + cost / 100,
+                         "min_frequency [Hz]": np.nan if infeasible else 200 - stroke / 20,
+                         "cost [EUR]": np.nan if infeasible else cost - rng.uniform(0, 500)})
+    return pd.DataFrame(rows)
+
+
+def _figures(monkeypatch, tmp_path):
+    figs = {}
+
+    def keep(fig, path, dpi=110):
+        figs[path.name] = fig
+
+    monkeypatch.setattr(table, "save_figure", keep)
+    table.summary_plots(_study(), _frame(), tmp_path / "plots", tmp_path)
+    return figs
+
+
+def test_lines_against_stroke_hold_the_other_input_fixed(monkeypatch, tmp_path):
+    figs = _figures(monkeypatch, tmp_path)
+    ax = figs["best_vs_axis_stroke.png"].axes[0]
+    df = _frame()
+    ok = df[df.status == "optimal"]
+    lines = [ln for ln in ax.get_lines() if ln.get_marker() != "x"]
+    assert len(lines) == 2  # one per max_cost value, never a line mixing the two budgets
+    for ln in lines:
+        x, y = ln.get_xdata(), ln.get_ydata()
+        cost = float(ln.get_label().split("=")[1])
+        want = ok[ok["limits.max_cost [EUR]"] == cost].sort_values("axis.stroke [mm]")
+        assert np.allclose(x, want["axis.stroke [mm]"]) and np.allclose(y, want["min_stiffness [N/um]"])
+    marks = [ln for ln in ax.get_lines() if ln.get_marker() == "x"]
+    assert len(marks) == 1 and list(marks[0].get_xdata()) == [1100.0] and "infeasible" in marks[0].get_label()
+
+
+def test_tradeoff_staircase_stays_within_one_stroke(monkeypatch, tmp_path):
+    figs = _figures(monkeypatch, tmp_path)
+    ax = figs["tradeoff_cost_stiffness.png"].axes[0]
+    df = _frame().dropna()
+    steps = [ln for ln in ax.get_lines() if len(ln.get_xdata())]
+    assert steps
+    for ln in steps:
+        xs = set(np.round(ln.get_xdata(), 6))
+        strokes = set(df[np.isin(np.round(df["cost [EUR]"], 6), list(xs))]["axis.stroke [mm]"])
+        assert len(strokes) == 1
+    assert any("1 cases without a design" in t.get_text() for t in ax.texts)
