@@ -177,6 +177,20 @@ _FACTOR_DISPLAY = {
 }
 
 
+CATEGORICAL = {"direction": {-1.0: "-1", 1.0: "+1"}, "cycle": {},
+               "mode": {}, "exclude": {}}
+
+
+def categories(name: str, values) -> list | None:
+    """[(value, tick label), ...] when a factor is categorical (direction, cycle, mode, or at most three
+    distinct values), else None (plotted on a continuous axis)."""
+    u = np.unique(np.asarray(values, dtype=float))
+    if name not in CATEGORICAL and len(u) > 3:
+        return None
+    names = CATEGORICAL.get(name, {})
+    return [(float(x), names.get(float(x), f"{x:g}")) for x in u]
+
+
 def write_report(diag, outdir) -> Path:
     """Markdown report with residual plots before/after; returns the report path."""
     import matplotlib
@@ -257,8 +271,17 @@ def write_report(diag, outdir) -> Path:
         for ax, (name, v) in zip(axes[0], facs):
             fu, fs, fo = _FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
             v = np.asarray(v) * fs + fo
-            ax.plot(v, rb * f, ".", ms=3, alpha=0.6, label="baseline")
-            ax.plot(v, ra * f, ".", ms=3, alpha=0.8, label=f"with {d['verdict']}")
+            cats = categories(name, v)
+            if cats is None:
+                ax.plot(v, rb * f, ".", ms=3, alpha=0.6, label="baseline")
+                ax.plot(v, ra * f, ".", ms=3, alpha=0.8, label=f"with {d['verdict']}")
+            else:  # a category per tick, baseline left and extended model right of it, points spread
+                jit = np.random.default_rng(0).uniform(-0.08, 0.08, len(v))
+                pos = np.searchsorted([c for c, _ in cats], v).astype(float)
+                ax.plot(pos - 0.18 + jit, rb * f, ".", ms=3, alpha=0.6, label="baseline")
+                ax.plot(pos + 0.18 + jit, ra * f, ".", ms=3, alpha=0.8, label=f"with {d['verdict']}")
+                ax.set_xticks(range(len(cats)), [lab for _, lab in cats])
+                ax.set_xlim(-0.6, len(cats) - 0.4)
             ax.axhline(0.0, color="k", lw=0.5)
             ax.set_xlabel(f"{name} [{fu}]" if fu else name)
             ax.set_ylabel(f"model - measured [{unit}]")

@@ -167,7 +167,7 @@ def _group_column(study, df, cols):
     return "mounting"
 
 
-MAX_LINES = 10  # lines per plot; more groups are folded into the best over them (said in the legend title)
+MAX_LINES = 10  # lines per plot; with more combinations the lines follow the plain grouping (text input or mounting)
 
 
 def _line_groups(df, cols, name, fallback):

@@ -293,3 +293,19 @@ def test_calibration_values_must_be_physical(tmp_path, capsys, old, new):
     rc = main(["evaluate", str(DESIGN), "--calibration", str(p)])
     err = capsys.readouterr().err.strip()
     assert rc == 2 and "\n" not in err and "not physical" in err, err
+
+
+def test_residual_plot_draws_direction_as_categories(tmp_path, monkeypatch):
+    # direction is +-1: a category per tick, not a continuous axis from -1 to 1
+    import axisopt.identify.report as rep
+
+    figs = []
+    monkeypatch.setattr(rep, "save_figure", lambda fig, path, dpi=90: figs.append(fig))
+    root = Path(__file__).resolve().parents[2] / "problems" / "data"
+    assert main(["diagnose", str(root / "table_x_stiffness.csv"), "--design", str(root / "table_x.yaml"),
+                 "--report", str(tmp_path / "r")]) == 0
+    axes = {ax.get_xlabel(): ax for fig in figs for ax in fig.axes}
+    d = axes["direction"]
+    assert [t.get_text() for t in d.get_xticklabels()] == ["-1", "+1"]
+    assert axes["position [mm]"].get_xticklabels()[0].get_text() != "-1"
+    assert rep.categories("position", [0.0, 100.0, 200.0, 300.0]) is None
