@@ -52,7 +52,6 @@ def cmd_solve(args) -> int:
         elif res.best is not None:
             from ..model import evaluate
             from ..report import plot_profiles
-
             from ..report.plots import distinct_labels
 
             cands = [res.best] + list(res.runners_up)
