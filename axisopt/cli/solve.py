@@ -35,7 +35,7 @@ def cmd_solve(args) -> int:
                 sensitivities=not args.no_sensitivity)
     quiet = args.json == "-"
     if not quiet:
-        print(format_result(res))
+        print(format_result(res, top=args.top))
     if args.json:
         d = res.to_dict()
         if res.best is not None and res.best.design is not None:
@@ -76,7 +76,7 @@ def _n(v, nd=1):
     return f"{v:,.{nd}f}"
 
 
-def format_result(res) -> str:
+def format_result(res, top: int | None = None) -> str:
     from ..model import evaluate
     from ..report import evaluation_table
 
@@ -89,7 +89,7 @@ def format_result(res) -> str:
         L.append(f"  note: {res.message}")
     L.append("")
     if res.pareto is not None:
-        L.append(format_pareto(res.pareto))
+        L.append(format_pareto(res.pareto, top))
     elif res.best is not None:
         b = res.best
         L.append(f"best: {b.objective:,.3f} {res.objective_unit}")
@@ -160,10 +160,14 @@ def _cand_table(cands, unit) -> str:
     return "\n".join(L)
 
 
-def format_pareto(front) -> str:
+def format_pareto(front, top: int | None = None) -> str:
+    """The front's designs sorted by the first objective; ``top`` of them (all when None)."""
+    shown = front.points if top is None else front.points[:top]
     L = [f"Pareto front: {len(front.points)} non-dominated designs of {front.feasible:,} feasible "
          f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"]
-    L.append(_cand_table(front.points, "-"))
+    if len(shown) < len(front.points):
+        L.append(f"  the first {len(shown)} by {front.keys[0]} shown (--top N for more, --json for all)")
+    L.append(_cand_table(shown, "-"))
     return "\n".join(L)
 
 

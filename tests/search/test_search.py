@@ -390,3 +390,15 @@ def test_motor_flange_restriction(tmp_path, capsys):
             assert "\n" not in err and "max_motor_flange" in err
             continue
         assert sorted(build_space(load_problem(f)).motors["id"]) == want
+
+
+def test_top_limits_the_printed_pareto_front(capsys):
+    from axisopt.cli.solve import format_pareto
+
+    p = make_problem(make_catalog(np.random.default_rng(4), n_screws=3, nuts_per_screw=2, n_bearings=3, n_guides=3),
+                     objective=Objective(mode="pareto", pareto=("stiffness", "cost")))
+    front = solve(p, "default").pareto
+    assert len(front.points) >= 3
+    rows = [ln for ln in format_pareto(front, 2).splitlines() if ln[:5].strip().isdigit()]
+    assert [int(r.split()[0]) for r in rows] == [1, 2]
+    assert len([ln for ln in format_pareto(front).splitlines() if ln[:5].strip().isdigit()]) == len(front.points)
