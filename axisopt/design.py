@@ -169,8 +169,11 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
         kw["brake"] = "yes" if sec.raw("brake").value else "no"
     else:
         kw["brake"] = sec.choice("brake", BRAKE_MODES, "auto")
-    for name, low in (("reduction_ratio", None), ("max_inertia_ratio", None), ("brake_safety", 1.0)):
-        v = sec.number(name, minimum=low)
+    # plausible ranges: a belt or gear stage of a feed drive reduces by at most about 1:20 either way (1:50
+    # allowed); an inertia-ratio limit beyond 1000 or a brake safety factor beyond 10 is no limit at all
+    for name, low, high in (("reduction_ratio", 0.02, 50.0), ("max_inertia_ratio", None, 1000.0),
+                            ("brake_safety", 1.0, 10.0)):
+        v = sec.number(name, minimum=low, maximum=high)
         if v is not None:
             if not (math.isfinite(v) and v > 0):
                 raise sec.error(name, f"must be a positive finite number, got {v}")

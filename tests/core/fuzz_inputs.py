@@ -1018,13 +1018,32 @@ def classify(case: Case, out: Outcome) -> tuple[str, str]:
     for name, text in out.json_files.items():
         if name.startswith("out/"):
             problems += [f"{name}: {p}" for p in json_problems(text)]
-    m = NAN_TEXT.search(out.stdout) if "--json" not in case.argv or _json_target(case) != "-" else None
+    shown = _without_echoed_names(case, out.stdout)
+    m = NAN_TEXT.search(shown) if "--json" not in case.argv or _json_target(case) != "-" else None
     if m:
-        line = next(ln for ln in out.stdout.splitlines() if NAN_TEXT.search(ln))
+        line = next(ln for ln in shown.splitlines() if NAN_TEXT.search(ln))
         problems.append(f"text output shows {m.group(0).strip()!r}: {line.strip()[:150]}")
     if problems:
         return "bad output", "; ".join(problems[:3])[:300]
     return "ok", ""
+
+
+_ECHOED = re.compile(r"^\s*(name|description):\s*(.+?)\s*$", re.M)
+
+
+def _without_echoed_names(case: Case, text: str) -> str:
+    """``text`` without the free-text names and descriptions of the case's own files (a study named
+    'nan mm' is echoed as given: that is the user's text, not a computed NaN)."""
+    for data in case.files.values():
+        try:
+            src = data.decode("utf-8")
+        except (UnicodeDecodeError, AttributeError):
+            continue
+        for m in _ECHOED.finditer(src):
+            name = m.group(2).strip("'\"")
+            if name and NAN_TEXT.search(name):
+                text = text.replace(name, "<name>")
+    return text
 
 
 NAN_TEXT = re.compile(r"(?<![A-Za-z_])([-+]?nan|[-+]?inf|[-+]?infinity)(?![A-Za-z_])", re.I)

@@ -297,6 +297,16 @@ REPRODUCERS = {
         "ends in MINLP_ERROR (exit 1) instead of a one-line error",
         lambda: Case("flags", "--time-limit nan", ["solve", "p.yaml", "--no-sensitivity", "--time-limit", "nan"],
                      {"p.yaml": shipped("teaching_problem.yaml")})),
+    "reduction-ratio-tiny": (
+        "axis.reduction_ratio 1e-300 in the gantry problem: OverflowError traceback in load_inertia (ratio**2)",
+        lambda: Case("problem", "axis.reduction_ratio: 1e-300", ["solve", "p.yaml", "--no-sensitivity"],
+                     {"p.yaml": shipped("gantry_problem.yaml").replace(b"\naxis:\n",
+                                                                       b"\naxis:\n  reduction_ratio: 1.0e-300\n")})),
+    "study-named-nan": (
+        "a study named 'nan mm' is echoed as given; the classifier counted the user's name as a NaN output",
+        lambda: Case("study", "name: nan mm", ["study", "s.yaml", "--out", "out", "--workers", "0", "--quiet"],
+                     {"s.yaml": b"name: nan mm\nbase: p.yaml\nsweep:\n  limits.max_cost: [3500 EUR]\n",
+                      "p.yaml": shipped("teaching_problem.yaml")})),
 }
 
 
@@ -309,7 +319,7 @@ def test_known_bug(bug):
     case = REPRODUCERS[bug][1]()
     out = run(case)
     cls, detail = classify(case, out)
-    if bug == "time-limit-nan":  # bad input must be exit 2, one line
+    if bug in ("time-limit-nan", "reduction-ratio-tiny"):  # bad input must be exit 2, one line
         assert cls == "clean error", f"{cls}: exit {out.rc}; {detail}"
         return
     assert cls not in BAD, f"{cls}: {detail}"
