@@ -12,11 +12,11 @@ from dataclasses import dataclass, field, fields
 from functools import cached_property
 from pathlib import Path
 
-from .catalog import OPTIONAL_COLUMNS, SCHEMA, Catalog, default_catalog, row_problem
+from .catalog import _CHOICES, OPTIONAL_COLUMNS, SCHEMA, Catalog, default_catalog, row_problem
 from .errors import InputError
 from .physics import motion
 from .units import unit_factor
-from .yamlio import Section, read_yaml
+from .yamlio import Key, Section, Spec, read_yaml
 
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
 
@@ -134,71 +134,121 @@ class Design:
 PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling")
 
 
-_AXIS_KINDS = {
-    "stroke": "length", "moving_mass": "mass", "max_speed": "speed", "axial_load": "force",
-    "start_offset": "length", "end_margin": "length", "mean_speed": "speed", "mean_axial_load": "force",
-    "acceleration": "acceleration", "required_life": "time", "table_length": "length",
-    "normal_load": "force", "lubricant_viscosity": "kinematic_viscosity", "motor_inertia": "inertia",
-    "bearing_housing_stiffness": "stiffness", "nut_bracket_stiffness": "stiffness",
-    "coupling_stiffness": "torsional_stiffness", "coupling_inertia": "inertia",
-    "temperature_rise": "temperature_difference", "jerk": "jerk", "reduction_inertia": "inertia",
-}
-_AXIS_REQUIRED = ("stroke", "moving_mass", "mounting", "max_speed", "axial_load")
+# ------------------------------------------------------------------------------ the YAML keys (one table)
+# Each table below is the one declaration of its section's keys: the readers read them by it (Section.read)
+# and `axisopt schema` writes it out as a JSON Schema.  Unset axis keys take the Axis defaults above.
+
+def _axis_q(kind: str, doc: str, *, required: bool = False, zero: bool = False, maximum=None) -> Key:
+    """An axis quantity: positive, or non-negative when ``zero``."""
+    return Key("quantity", doc, required=required, kind=kind, positive=not zero, non_negative=zero,
+               maximum=maximum)
+
+
+_SEGMENT_LIMIT = 1000  # duty-cycle entries
+_FORCE = Key("quantity", "axial (process) force during the entry", kind="force", non_negative=True, default=0.0)
+MOVE_SPEC = Spec("move", "a move of the duty cycle", {
+    "move": Key("quantity", "signed distance (+ forward, - back), at most the stroke", required=True,
+                kind="length", example="400 mm"),
+    "speed": Key("quantity", "top speed (default: axis.max_speed)", kind="speed", positive=True),
+    "acceleration": Key("quantity", "acceleration (default: axis.acceleration)", kind="acceleration",
+                        positive=True),
+    "jerk": Key("quantity", "jerk limit (default: axis.jerk)", kind="jerk", positive=True),
+    "force": _FORCE,
+})
+DWELL_SPEC = Spec("dwell", "a dwell of the duty cycle", {
+    "dwell": Key("quantity", "duration", required=True, kind="time", positive=True, example="2 s"),
+    "force": _FORCE,
+})
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
-# operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.
-_AXIS_MAXIMUM = {"temperature_rise": (100.0, "100 K")}
-_NON_NEGATIVE = ("end_margin", "mean_axial_load", "acceleration", "normal_load", "axial_load", "temperature_rise")
+# operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible
+# drive ranges: a belt or gear stage of a feed drive reduces by at most about 1:20 either way (1:50 allowed);
+# an inertia-ratio limit beyond 1000 or a brake safety factor beyond 10 is no limit at all.
+AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional value with its unit)", {
+    "stroke": _axis_q("length", "travel of the table", required=True),
+    "moving_mass": _axis_q("mass", "table + workpiece, without nut and guide blocks", required=True),
+    "mounting": Key("choice", "screw end supports (a problem: the default mounting)", required=True,
+                    choices=MOUNTINGS),
+    "max_speed": _axis_q("speed", "rapid traverse speed", required=True),
+    "axial_load": _axis_q("force", "largest external axial (cutting) load", required=True, zero=True),
+    "start_offset": _axis_q("length", "fixed bearing to nut at stroke start, l0"),
+    "end_margin": _axis_q("length", "nut at stroke end to the far bearing", zero=True),
+    "mean_speed": _axis_q("speed", "mean speed for the life (default: half of max_speed)"),
+    "mean_axial_load": _axis_q("force", "mean axial load for the life (default: a third of axial_load)", zero=True),
+    "acceleration": _axis_q("acceleration", "acceleration of the moves", zero=True),
+    "required_life": _axis_q("time", "required life of the nut and bearings"),
+    "load_factor": Key("number", "load factor fw of the life calculation", minimum=1.0),
+    "guide_blocks": Key("number", "guide blocks carrying the table", integer=True, minimum=1, maximum=64),
+    "rails": Key("number", "guide rails", integer=True, minimum=1, maximum=8),
+    "table_length": _axis_q("length", "table length (rail length = stroke + table_length)"),
+    "normal_load": _axis_q("force", "external load on the guide blocks besides gravity", zero=True),
+    "lubricant_viscosity": _axis_q("kinematic_viscosity", "lubricant viscosity at working temperature"),
+    "motor_inertia": _axis_q("inertia", "motor rotor inertia (when no motor part is chosen)"),
+    "bearing_housing_stiffness": _axis_q("stiffness", "one support-bearing housing (default: rigid)"),
+    "nut_bracket_stiffness": _axis_q("stiffness", "nut bracket / table connection (default: rigid)"),
+    "coupling_stiffness": _axis_q("torsional_stiffness", "coupling torsional stiffness (when no coupling part)"),
+    "coupling_inertia": _axis_q("inertia", "coupling inertia (when no coupling part)"),
+    "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation", zero=True,
+                           maximum=(100.0, "100 K")),
+    "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs temperature_rise)",
+                      options=(Key("choice", choices=("auto",)),
+                               Key("quantity", kind="force", non_negative=True))),
+    "orientation": Key("choice", "axis orientation", choices=ORIENTATIONS, default="horizontal"),
+    "positions": Key("number", "nut positions evaluated over the stroke", integer=True, minimum=3,
+                     maximum=2001),
+    "jerk": _axis_q("jerk", "jerk limit (default: trapezoidal moves)"),
+    "duty_cycle": Key("list", "moves and dwells (default: the rapid move over the stroke and back)",
+                      minimum=1, maximum=_SEGMENT_LIMIT,
+                      items=Key("one_of", options=(Key("section", spec=MOVE_SPEC), Key("section", spec=DWELL_SPEC)))),
+    "reduction_ratio": Key("number", "motor turns per screw turn (2: a 2:1 belt or gear)", positive=True,
+                           minimum=0.02, maximum=50.0),
+    "reduction_efficiency": Key("number", "efficiency of the reduction, in (0, 1]", positive=True, maximum=1.0),
+    "reduction_inertia": _axis_q("inertia", "inertia of the reduction at the motor shaft"),
+    "max_inertia_ratio": Key("number", "largest load / rotor inertia ratio at the motor", positive=True,
+                             maximum=1000.0),
+    "brake": Key("one_of", "holding brake (auto: vertical axes)", default="auto",
+                 options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
+    "brake_safety": Key("number", "brake holding torque / gravity torque", positive=True, minimum=1.0,
+                        maximum=10.0),
+})
+_AXIS_KINDS = {name: k.kind for name, k in AXIS_SPEC.keys.items() if k.type == "quantity"}
+_AXIS_REQUIRED = tuple(name for name, k in AXIS_SPEC.keys.items() if k.required)
+_AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reduction_efficiency")
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:
     """Read an ``axis:`` section.  Returns the Axis and the names of keys left at their defaults."""
+    sec = sec.declared(AXIS_SPEC)
     kw = {}
-    for name, kind in _AXIS_KINDS.items():
-        v = sec.quantity(name, kind, required=name in _AXIS_REQUIRED,
-                         positive=name not in _NON_NEGATIVE, non_negative=name in _NON_NEGATIVE,
-                         maximum=_AXIS_MAXIMUM.get(name))
+    for name in _AXIS_KINDS:
+        v = sec.read(name)
         if v is not None:
             kw[name] = v
-    kw["mounting"] = sec.choice("mounting", MOUNTINGS, required=True)
+    kw["mounting"] = sec.read("mounting")
     if sec.has("pretension"):
         node = sec.raw("pretension")
         if node.value != "auto":
             kw["pretension"] = sec.quantity("pretension", "force", non_negative=True)
-    kw["orientation"] = sec.choice("orientation", ORIENTATIONS, "horizontal")
+    kw["orientation"] = sec.read("orientation")
     if sec.has("brake") and isinstance(sec.raw("brake").value, bool):  # YAML reads a bare yes/no as a boolean
         kw["brake"] = "yes" if sec.raw("brake").value else "no"
     else:
-        kw["brake"] = sec.choice("brake", BRAKE_MODES, "auto")
-    # plausible ranges: a belt or gear stage of a feed drive reduces by at most about 1:20 either way (1:50
-    # allowed); an inertia-ratio limit beyond 1000 or a brake safety factor beyond 10 is no limit at all
-    for name, low, high in (("reduction_ratio", 0.02, 50.0), ("max_inertia_ratio", None, 1000.0),
-                            ("brake_safety", 1.0, 10.0)):
-        v = sec.number(name, minimum=low, maximum=high)
+        kw["brake"] = sec.choice("brake", BRAKE_MODES, AXIS_SPEC.keys["brake"].default)
+    for name in _AXIS_NUMBERS:
+        v = sec.read(name)
         if v is not None:
-            if not (math.isfinite(v) and v > 0):
-                raise sec.error(name, f"must be a positive finite number, got {v}")
             kw[name] = float(v)
-    v = sec.number("reduction_efficiency")
-    if v is not None:
-        if not (0 < v <= 1):
-            raise sec.error("reduction_efficiency", f"must be in (0, 1], got {v}")
-        kw["reduction_efficiency"] = float(v)
     if sec.has("duty_cycle"):
         kw["duty_cycle"] = read_duty_cycle(sec, kw)
     for name in ("guide_blocks", "rails", "positions"):
-        v = sec.number(name, integer=True, minimum=1 if name != "positions" else 3,
-                       maximum={"guide_blocks": 64, "rails": 8, "positions": 2001}[name])
+        v = sec.read(name)
         if v is not None:
             kw[name] = int(v)
-    v = sec.number("load_factor", minimum=1.0)
+    v = sec.read("load_factor")
     if v is not None:
         kw["load_factor"] = float(v)
     sec.done()
     assumed = tuple(f.name for f in fields(Axis) if f.name not in kw)
     return Axis(**kw), assumed
-
-
-_SEGMENT_LIMIT = 1000  # duty-cycle entries
 
 
 def read_duty_cycle(sec: Section, kw: dict) -> tuple:
@@ -217,20 +267,21 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
         if s.has("dwell") == s.has("move"):
             raise InputError("each entry is a 'move' or a 'dwell'", source=sec.source,
                              where=Section._loc(f"{where}[{i}]", item.line))
-        force = s.quantity("force", "force", 0.0, non_negative=True)
+        s = Section(item, sec.source, f"{where}[{i}]", DWELL_SPEC if s.has("dwell") else MOVE_SPEC)
+        force = s.read("force")
         if s.has("dwell"):
-            out.append(motion.Segment("dwell", duration=s.quantity("dwell", "time", positive=True), force=force))
+            out.append(motion.Segment("dwell", duration=s.read("dwell"), force=force))
         else:
-            dist = s.quantity("move", "length")
+            dist = s.read("move")
             if dist == 0:
                 raise s.error("move", "a move needs a distance (signed: + forward, - back)")
             if abs(dist) > kw.get("stroke", math.inf) * (1 + 1e-9):
                 raise s.error("move", f"{abs(dist) * 1e3:g} mm is longer than the stroke")
-            speed = s.quantity("speed", "speed", kw.get("max_speed"), positive=True)
-            acc = s.quantity("acceleration", "acceleration", kw.get("acceleration", 0.0), positive=True)
+            speed = s.read("speed", kw.get("max_speed"))
+            acc = s.read("acceleration", kw.get("acceleration", 0.0))
             if not acc:
                 raise s.error("move", "needs an acceleration (here or in axis.acceleration)")
-            jerk = s.quantity("jerk", "jerk", kw.get("jerk"), positive=True)
+            jerk = s.read("jerk", kw.get("jerk"))
             out.append(motion.Segment("move", distance=dist, speed=speed, acceleration=acc, jerk=jerk, force=force))
         s.done()
     return tuple(out)
@@ -243,25 +294,45 @@ def read_part(sec: Section, key: str, table: str, catalog: Catalog):
         return catalog.part(table, str(node.value), source=sec.source, key=sec.where(key))
     if not isinstance(node.value, dict):
         raise sec.error(key, f"expected a catalog id or a mapping of {table[:-1]} properties")
-    return inline_part(Section(node, sec.source, sec.key_path(key)), table)
+    return inline_part(Section(node, sec.source, sec.key_path(key), PART_SPECS[table]), table)
+
+
+def _part_key(table: str, col: str, kind: str) -> Key:
+    """How an inline part gives catalog column ``col`` (the catalog loader's column kinds and choices)."""
+    doc = col.replace("_", " ")
+    if kind == "str":
+        optional = col in ("vendor", "series")
+        return Key("string", doc + (" (default: custom)" if optional else ""), required=not optional,
+                   default="custom" if optional else None, choices=_CHOICES.get((table, col)))
+    if kind == "int":
+        return Key("number", doc, required=True, integer=True, minimum=1)
+    if kind == "dimensionless":
+        return Key("number", doc, required=True, minimum=0)
+    optional = col in OPTIONAL_COLUMNS.get(table, ())
+    return Key("quantity", doc + (" (optional: the vendor lists none)" if optional else ""),
+               required=not optional, kind=kind, non_negative=True)
+
+
+# An inline (custom) part: the columns of its catalog table, with units.
+PART_SPECS = {table: Spec(table[:-1], f"a custom {table[:-1]}: the columns of catalogs/{table}.csv, with units",
+                          {col: _part_key(table, col, kind) for col, kind in cols.items()})
+              for table, cols in SCHEMA.items()}
 
 
 def inline_part(sec: Section, table: str):
     import pandas as pd
 
+    sec = sec.declared(PART_SPECS[table])
     rec = {}
     for col, kind in SCHEMA[table].items():
-        if kind == "str":
-            rec[col] = sec.string(col, "custom" if col in ("vendor", "series") else None,
-                                  required=col not in ("vendor", "series"))
-        elif kind == "int":
-            rec[col] = int(sec.number(col, required=True, integer=True, minimum=1))
+        v = sec.read(col)
+        if kind == "int":
+            v = int(v)
         elif kind == "dimensionless":
-            rec[col] = float(sec.number(col, required=True, minimum=0))
-        else:
-            optional = col in OPTIONAL_COLUMNS.get(table, ())
-            v = sec.quantity(col, kind, required=not optional, non_negative=True)
-            rec[col] = math.nan if v is None else v
+            v = float(v)
+        elif kind != "str" and v is None:
+            v = math.nan
+        rec[col] = v
     sec.done()
     bad = row_problem(table, rec)  # the catalog loader's rules: positive geometry, choices, ordered pairs
     if bad is not None:
@@ -269,6 +340,31 @@ def inline_part(sec: Section, table: str):
         raise sec.error(col, msg if msg.startswith(col) else f"{col} {msg}")
     rec["_source"] = f"{sec.source}:{sec.node.line}"
     return pd.Series(rec, name=rec["id"])
+
+
+def _slot(table: str, doc: str, required: bool) -> Key:
+    return Key("one_of", doc, required=required,
+               options=(Key("string", f"a {table[:-1]} id from the catalogs"), Key("number", integer=True),
+                        Key("section", spec=PART_SPECS[table])))
+
+
+PARTS_SPEC = Spec("parts", "one part per slot: a catalog id, or an inline mapping of a custom part", {
+    "screw": _slot("screws", "ball screw", True),
+    "nut": _slot("nuts", "ball nut (fits the screw)", True),
+    "bearing": _slot("bearings", "support bearing set", True),
+    "guide": _slot("guides", "linear guide block and rail", True),
+    "motor": _slot("motors", "servo motor (optional; needs axis.acceleration or axis.duty_cycle)", False),
+    "coupling": _slot("couplings", "shaft coupling (optional)", False),
+    "nut_preload": Key("quantity", "nut preload within the nut's range (default: the catalog's)", kind="force",
+                       non_negative=True),
+})
+_NAME = Key("string", "name of the file's subject (default: the file name)")
+_DESCRIPTION = Key("string", "free text")
+_CATALOGS = Key("names", "extra catalog directories, relative to this file")
+DESIGN_SPEC = Spec("design", "an axis design: the machine's requirements and one part per slot", {
+    "name": _NAME, "description": _DESCRIPTION, "catalogs": _CATALOGS,
+    "axis": Key("section", required=True, spec=AXIS_SPEC), "parts": Key("section", required=True, spec=PARTS_SPEC),
+})
 
 
 def read_parts(sec: Section, catalog: Catalog) -> dict:
@@ -281,7 +377,7 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
     for slot, table in (("motor", "motors"), ("coupling", "couplings")):
         if sec.has(slot):
             parts[slot] = read_part(sec, slot, table, catalog)
-    pre = sec.quantity("nut_preload", "force", non_negative=True)
+    pre = sec.read("nut_preload")
     sec.done()
     nut, screw = parts["nut"], parts["screw"]
     if nut["screw_id"] != screw["id"]:
@@ -307,12 +403,12 @@ def catalog_for(root: Section, base_dir: Path) -> Catalog:
 def load_design(path) -> Design:
     """Read a design YAML file into a :class:`Design`; every error names the file and key."""
     path = Path(path)
-    root = Section(read_yaml(path), str(path))
+    root = Section(read_yaml(path), str(path), spec=DESIGN_SPEC)
     catalog = catalog_for(root, path.parent)
-    name = root.string("name", path.stem)
-    root.string("description")
-    axis, assumed = read_axis(root.section("axis", required=True))
-    psec = root.section("parts", required=True)
+    name = root.read("name", path.stem)
+    root.read("description")
+    axis, assumed = read_axis(root.read("axis"))
+    psec = root.read("parts")
     parts = read_parts(psec, catalog)
     root.done()
     if parts.get("motor") is not None and axis.acceleration <= 0 and not axis.duty_cycle:

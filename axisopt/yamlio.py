@@ -3,14 +3,20 @@
 ``read_yaml(path)`` returns a :class:`Node` tree.  ``Section`` wraps a mapping node and hands out
 typed values (``quantity``, ``choice``, ``integer``...) while recording which keys were used;
 ``Section.done()`` then rejects any key left over (a typo), naming the file, line and key path.
+
+Each kind of file declares its keys once, as :class:`Spec` tables of :class:`Key` entries (name, type, unit
+kind, required, choices, one-line description).  A Section given a Spec reads a declared key with
+:meth:`Section.read`, refuses to read an undeclared one (a bug, :class:`UndeclaredKey`) and hands the
+nested Spec to its sub-sections; :mod:`axisopt.schema` writes the same tables out as a JSON Schema.
 """
 
 from __future__ import annotations
 
 import difflib
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
+from types import MappingProxyType
 from typing import Any
 
 import yaml
@@ -121,17 +127,111 @@ def close_matches(word: str, options, n: int = 1) -> list:
 
 MAX_TEXT = 10_000  # characters of any text value (names, descriptions)
 
+# Key types: what a key's value is in the YAML file.
+#   quantity  a number with its unit ('800 mm'), of units.KINDS kind ``kind``; a bare number if dimensionless
+#   number    a plain number (``integer``: a whole one) within [minimum, maximum]
+#   choice    one of ``choices``
+#   string    text
+#   names     a list of names (one name alone is a list of one); ``choices``: the allowed names
+#   section   a mapping, described by ``spec``
+#   list      a list of ``items``
+#   one_of    one of the forms in ``options`` (each a Key)
+#   any       anything (informational keys the reader skips)
+KEY_TYPES = ("quantity", "number", "choice", "string", "names", "section", "list", "one_of", "any")
+
+
+@dataclass(frozen=True)
+class Key:
+    """What one YAML key accepts.  The one declaration of the key: :meth:`Section.read` reads it by these
+    rules, and :mod:`axisopt.schema` writes them into the JSON Schema."""
+
+    type: str
+    doc: str = ""
+    required: bool = False
+    kind: str | None = None  # quantity: the units.KINDS kind
+    positive: bool = False  # quantity, number
+    non_negative: bool = False  # quantity
+    minimum: float | None = None  # number; list: fewest items
+    maximum: Any = None  # number: a float (default 1e9); quantity: (SI value, text shown); list: most items
+    integer: bool = False  # number
+    choices: tuple | None = None  # choice; names: the allowed names (None: any)
+    default: Any = None  # returned by Section.read when the key is absent (SI for a quantity)
+    spec: Spec | None = None  # section
+    items: Key | None = None  # list
+    options: tuple = ()  # one_of
+    example: Any = None  # a value as written in YAML, for the schema
+
+    def __post_init__(self):
+        if self.type not in KEY_TYPES:
+            raise ValueError(f"unknown key type {self.type!r}")
+
+    def specs(self) -> tuple:
+        """The mapping forms this key accepts (its own spec, or its options' specs)."""
+        if self.type == "section" and self.spec is not None:
+            return (self.spec,)
+        return tuple(s for o in self.options for s in o.specs())
+
+
+@dataclass(frozen=True)
+class Spec:
+    """The keys of one YAML mapping.  ``extra``: the form of any other key (a mapping whose key names are
+    the user's, e.g. sweep paths), ``extra_doc`` describes those names; without it other keys are errors."""
+
+    name: str
+    doc: str
+    keys: Any = field(default_factory=dict)  # {name: Key}, kept read-only
+    extra: Key | None = None
+    extra_doc: str = ""
+    extra_pattern: str | None = None  # a regular expression every other key name matches
+
+    def __post_init__(self):
+        object.__setattr__(self, "keys", MappingProxyType(dict(self.keys)))
+
+    def key(self, name: str) -> Key:
+        k = self.keys.get(name)
+        if k is None:
+            if self.extra is None:
+                raise UndeclaredKey(f"the reader of '{self.name}' reads key '{name}', which its Spec does not "
+                                    "declare: add it to the table")
+            return self.extra
+        return k
+
+    def merged(self, other: Spec) -> Spec:
+        return Spec(self.name, self.doc, {**self.keys, **other.keys}, self.extra or other.extra)
+
+
+class UndeclaredKey(LookupError):
+    """A reader read a key its :class:`Spec` does not declare: a bug in axisopt, not in the input."""
+
+
+def nested_spec(key: Key) -> Spec | None:
+    """The Spec a sub-section of ``key`` is read with (the union of the mapping forms it accepts)."""
+    specs = key.specs()
+    if not specs:
+        return None
+    out = specs[0]
+    for s in specs[1:]:
+        out = out.merged(s)
+    return out
+
 
 class Section:
-    """Typed, strict access to one YAML mapping."""
+    """Typed, strict access to one YAML mapping; ``spec`` (optional) declares its keys."""
 
-    def __init__(self, node: Node, source: str, path: str = ""):
+    def __init__(self, node: Node, source: str, path: str = "", spec: Spec | None = None):
         if not isinstance(node.value, dict):
             raise InputError("expected a mapping of keys", source=source, where=self._loc(path, node.line))
         self.node = node
         self.source = source
         self.path = path
+        self.spec = spec
         self.used: set[str] = set()
+
+    def declared(self, spec: Spec) -> Section:
+        """This section, read by ``spec`` unless it already has one (a Section made without a Spec)."""
+        if self.spec is None:
+            self.spec = spec
+        return self
 
     @staticmethod
     def _loc(path: str, line: int) -> str:
@@ -155,6 +255,8 @@ class Section:
         return list(self.node.value)
 
     def raw(self, key: str, default=None, *, required: bool = False):
+        if self.spec is not None:
+            self.spec.key(key)  # a key the table does not declare is a bug in the reader
         self.used.add(key)
         if key not in self.node.value:
             if required:
@@ -243,7 +345,34 @@ class Section:
         n = self.raw(key, None, required=required)
         if n is None:
             return None
-        return Section(n, self.source, self.key_path(key))
+        spec = nested_spec(self.spec.key(key)) if self.spec is not None else None
+        return Section(n, self.source, self.key_path(key), spec)
+
+    def read(self, key: str, default=None):
+        """Read a declared key by its :class:`Key` (type, unit kind, required, bounds, choices); ``default``
+        (else the Key's) when it is absent."""
+        k = self.spec.key(key) if self.spec is not None else None
+        if k is None:
+            raise UndeclaredKey(f"Section.read('{key}') needs a Spec")
+        default = k.default if default is None else default
+        if k.type == "quantity":
+            return self.quantity(key, k.kind, default, required=k.required, positive=k.positive,
+                                 non_negative=k.non_negative, maximum=k.maximum)
+        if k.type == "number":
+            v = self.number(key, default, required=k.required, integer=k.integer, minimum=k.minimum,
+                            maximum=k.maximum)
+            if k.positive and v is not None and not v > 0:
+                raise self.error(key, f"must be a positive finite number, got {v}")
+            return v
+        if k.type == "choice":
+            return self.choice(key, k.choices, default, required=k.required)
+        if k.type == "string":
+            return self.string(key, default, required=k.required)
+        if k.type == "names":
+            return self.string_list(key, default)
+        if k.type == "section":
+            return self.section(key, required=k.required)
+        raise TypeError(f"Section.read cannot read a '{k.type}' key ('{key}'); read it with raw()")
 
     def done(self) -> None:
         extra = [k for k in self.node.value if k not in self.used]
