@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
-from .common import EXIT_OK, write_json
+import sys
+
+from .common import EXIT_NEGATIVE, EXIT_OK, write_json
 
 
 def register(sub) -> None:
@@ -16,6 +18,8 @@ def register(sub) -> None:
                         "named ones (e.g. nut:hertz,bearings:palmgren)")
     e.add_argument("--frf", metavar="FILE.png",
                    help="plot the table's dynamic compliance at stroke start, middle and end (also in --json)")
+    e.add_argument("--fail-on-check", action="store_true",
+                   help="exit 1 when any check fails (for scripts; default: exit 0 with FAIL in the table)")
     e.set_defaults(func=cmd_evaluate)
 
 
@@ -66,4 +70,11 @@ def cmd_evaluate(args) -> int:
         plot_frf(resp, args.frf)
         if args.json != "-":
             print(f"\nFRF plot written to {args.frf}")
+    if args.fail_on_check:
+        from ..report.evaluation import check_rows
+
+        failed = [r["check"] for r in check_rows(ev) if not r["pass"]]
+        if failed:
+            print(f"axisopt: {len(failed)} check(s) fail: {', '.join(failed)}", file=sys.stderr)
+            return EXIT_NEGATIVE
     return EXIT_OK

@@ -106,6 +106,27 @@ def checks(p, mounting, preload, loads) -> dict:
         "bearing_life": brg_life, "guide_life": guide_life, "dn": dn, "nut_lift_off_force": lift,
         "bearing_max_load": brg_max,
     }
+    # what each margin compares, in SI: the available capacity and the needed value (margin = available /
+    # needed, except bearing_fit, whose "needed" is the bore and "available" the largest bore the end takes)
+    pairs = {
+        "critical_speed": (crit, omega), "buckling": (buck, loads["screw_compression"]),
+        "screw_yield": (yield_load, tension), "nut_life": (life, p["required_life"]),
+        "bearing_life": (brg_life, p["required_life"]),
+        "guide_life": (guide_life, p["required_life"] * p["mean_speed"]), "dn": (p["dn_limit"], dn),
+        "nut_lift_off": (lift, f_max), "bearing_lift_off": (p["bearing_lift_off"], brg_max),
+        "bearing_speed": (p["bearing_limiting_speed"], omega), "bearing_fit": (p["support_bore_max"], bore),
+        "screw_length": (p["screw_max_length"], span),
+    }
     out = {f"margin_{k}": v for k, v in margins.items()}
     out.update(values)
+    out.update(check_pairs(pairs))
+    return out
+
+
+def check_pairs(pairs: dict) -> dict:
+    """``available_<check>`` and ``needed_<check>`` outputs from {check: (available, needed)}."""
+    out = {}
+    for k, (have, need) in pairs.items():
+        out[f"available_{k}"] = have
+        out[f"needed_{k}"] = need
     return out

@@ -21,6 +21,7 @@ import math
 from .. import mathx as mx
 from ..physics import drive as pd
 from ..physics import screw as ps
+from .checks import check_pairs
 from .drag import SCREW_EFFICIENCY
 from .loads import G
 
@@ -79,6 +80,13 @@ def drive(p, moving_mass, drag) -> dict:
                                      NOT_APPLICABLE),
     }
     out = {f"margin_{k}": v for k, v in margins.items()}
+    out.update(check_pairs({
+        "motor_peak_torque": (p["motor_peak_torque"], t_peak), "motor_rated_torque": (p["motor_rated_torque"], t_cont),
+        "motor_speed": (p["motor_max_speed"], n_motor), "inertia_ratio": (p["max_inertia_ratio"], ratio),
+        "brake_holding": (p["motor_brake_torque"], p["brake_safety"] * hold),
+        "coupling_torque": (p["coupling_rated_torque"], p["motor_peak_torque"] * p["reduction_ratio"]),
+        "coupling_speed": (p["coupling_max_speed"], screw_speed),
+    }))
     out.update({
         "load_inertia": j_load, "total_inertia": j_tot, "inertia_ratio": ratio, "motor_speed": n_motor,
         "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean,

@@ -4,6 +4,7 @@ Nothing here prints."""
 from __future__ import annotations
 
 import math
+import textwrap
 
 import numpy as np
 
@@ -11,6 +12,80 @@ from ..model import CHECK_LABELS, CHECKS, DRIVE_CHECKS, Evaluation, passes
 from ..units import N_PER_UM
 
 RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
+WIDTH = 100  # terminal columns the text tables fit
+
+# Each check's physical values in the unit vendors quote them in: (unit, factor from SI).  DN in mm x rpm.
+CHECK_UNITS = {
+    "critical_speed": ("rpm", RPM), "buckling": ("kN", 1e-3), "screw_yield": ("kN", 1e-3),
+    "nut_life": ("h", 1 / 3600), "bearing_life": ("h", 1 / 3600), "guide_life": ("km", 1e-3),
+    "dn": ("mm.rpm", 1e3 * RPM), "nut_lift_off": ("kN", 1e-3), "bearing_lift_off": ("kN", 1e-3),
+    "bearing_speed": ("rpm", RPM), "bearing_fit": ("mm", 1e3), "screw_length": ("mm", 1e3),
+    "motor_peak_torque": ("N.m", 1.0), "motor_rated_torque": ("N.m", 1.0), "motor_speed": ("rpm", RPM),
+    "inertia_ratio": ("", 1.0), "brake_holding": ("N.m", 1.0), "coupling_torque": ("N.m", 1.0),
+    "coupling_speed": ("rpm", RPM),
+}
+# Short names for tables with one column per design.
+CHECK_SHORT = {
+    "critical_speed": "critical speed", "buckling": "buckling load", "screw_yield": "screw yield load",
+    "nut_life": "nut life", "bearing_life": "bearing life", "guide_life": "guide travel", "dn": "DN value",
+    "nut_lift_off": "nut lift-off", "bearing_lift_off": "bearing lift-off", "bearing_speed": "bearing speed",
+    "bearing_fit": "bearing bore (max)", "screw_length": "screw length", "motor_peak_torque": "motor peak torque",
+    "motor_rated_torque": "motor rated torque", "motor_speed": "motor speed", "inertia_ratio": "inertia ratio",
+    "brake_holding": "brake holding", "coupling_torque": "coupling torque", "coupling_speed": "coupling speed",
+}
+NOT_APPLICABLE = 1e8  # a margin at or above this: the check does not apply (or nothing loads it)
+
+
+def fmt_value(x) -> str:
+    """A physical value at sensible precision: whole numbers from 100 up (with thousands separators), else
+    three significant digits; '-' for a missing or non-finite value."""
+    if x is None or not math.isfinite(x):
+        return "-"
+    if abs(x) >= 100:
+        return f"{x:,.0f}"
+    return f"{x:.3g}"
+
+
+def check_rows(ev: Evaluation) -> list:
+    """One dict per check that applies to the design: ``check``, ``label``, ``available`` and ``needed`` in
+    ``unit``, ``margin`` (available / needed; None when nothing loads it) and ``pass``.  bearing_fit's
+    available value is the range of bores the screw end takes, as ``available_min`` .. ``available``."""
+    d, v = ev.design, ev.values
+    out = []
+    for c in CHECKS:
+        if c in DRIVE_CHECKS and (d.motor is None and not c.startswith("coupling_")
+                                  or c.startswith("coupling_") and d.coupling is None):
+            continue
+        m = float(v[f"margin_{c}"])
+        if c == "brake_holding" and d.axis.orientation != "vertical":
+            continue
+        unit, f = CHECK_UNITS[c]
+        row = {"check": c, "label": CHECK_LABELS[c], "unit": unit,
+               "available": _finite(float(v[f"available_{c}"]) * f), "needed": _finite(float(v[f"needed_{c}"]) * f),
+               "margin": None if m >= NOT_APPLICABLE else _finite(m), "pass": passes(m)}
+        if c == "bearing_fit":
+            row["available_min"] = _finite(float(d.screw["support_bore_min"]) * f)
+        if c == "nut_lift_off" and m >= NOT_APPLICABLE:
+            row["available"] = None  # a single nut has no preload to lose
+        out.append(row)
+    return out
+
+
+def check_lines(ev: Evaluation) -> list:
+    """The checks block of ``evaluate``: available, needed and margin with units (fits 100 columns)."""
+    lines = [f"{'checks (margin = available / needed, >= 1 passes)':<50}{'available':>15}{'needed':>15}{'margin':>8}"]
+    for r in check_rows(ev):
+        unit = f" {r['unit']}" if r["unit"] else ""
+        if r["check"] == "bearing_fit":
+            have = f"{fmt_value(r['available_min'])}-{fmt_value(r['available'])}{unit}"
+            label = "bearing bore / bores the screw end takes"
+        else:
+            have = fmt_value(r["available"]) + unit if r["available"] is not None else "n/a"
+            label = r["label"]
+        need = fmt_value(r["needed"]) + unit if r["needed"] else "none"
+        margin = "n/a" if r["margin"] is None else f"{r['margin']:.2f}"
+        lines.append(f"  {label:<48}{have:>15}{need:>15}{margin:>8}  {'pass' if r['pass'] else 'FAIL'}")
+    return lines
 
 def _fmt(v, nd=1):
     if v is None or (isinstance(v, float) and not math.isfinite(v)):
@@ -53,8 +128,8 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "drag_torque_Nm": v["drag_torque"],
         "drag_torque_parts_Nm": {"nut": v["drag_nut"], "bearings": v["drag_bearings"],
                                  "guides": v["drag_guides"]},
-        "checks": {c: {"margin": _finite(v[f"margin_{c}"]), "pass": passes(v[f"margin_{c}"])}
-                   for c in CHECKS},
+        "checks": {r["check"]: {k: x for k, x in r.items() if k not in ("check", "label")} | {"label": r["label"]}
+                   for r in check_rows(ev)},
         "drive": drive_dict(ev),
         "all_checks_pass": bool(all(passes(v[f"margin_{c}"]) for c in CHECKS)),
         "positions_mm": (s * 1e3).tolist(),
@@ -93,16 +168,19 @@ def evaluation_table(ev: Evaluation) -> str:
     a = d.axis
     lines = []
     ids = d.part_ids()
-    lines.append(f"design {d.name}: {a.mounting}, stroke {a.stroke * 1e3:.0f} mm, "
-                 f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks), span {a.span * 1e3:.0f} mm")
-    lines.append(f"  screw {ids['screw']}  nut {ids['nut']} (preload {d.preload:.0f} N)  "
-                 f"bearings {ids['bearing']}  guides {ids['guide']} x{a.guide_blocks}"
-                 + (f"  motor {ids['motor']}" if "motor" in ids else "")
-                 + (f"  coupling {ids['coupling']}" if "coupling" in ids else ""))
+    lines.append(f"design {d.name}")
+    lines.append(f"  {a.mounting}, stroke {a.stroke * 1e3:.0f} mm, span {a.span * 1e3:.0f} mm, "
+                 f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks)")
+    parts = [f"screw {ids['screw']}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
+             f"bearings {ids['bearing']}", f"guides {ids['guide']} x{a.guide_blocks}"]
+    parts += [f"{slot} {ids[slot]}" for slot in ("motor", "coupling") if slot in ids]
+    lines.extend(textwrap.wrap("  ".join(parts), WIDTH, initial_indent="  ", subsequent_indent="  ",
+                               break_on_hyphens=False))
     assumed = [k for k in d.assumed if not ((k == "motor_inertia" and d.motor is not None)
                                             or (k.startswith("coupling_") and d.coupling is not None))]
     if assumed:
-        lines.append(f"  defaults used for: {', '.join(assumed)}")
+        lines.extend(textwrap.wrap(f"defaults used for: {', '.join(assumed)}", WIDTH, initial_indent="  ",
+                                   subsequent_indent="    ", break_on_hyphens=False))
     lines.append("")
     i_min = ev.i_min
     k_tot = float(v["k_total"][i_min])
@@ -149,19 +227,13 @@ def evaluation_table(ev: Evaluation) -> str:
          for k in ("zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure")}
     lines.append(f"damping of the axial mode {float(np.asarray(v['damping_ratio'])[i_min]) * 100:.1f} %  (guides "
                  f"{z['zeta_guides']:.1f}, nut {z['zeta_nut']:.2f}, bearings {z['zeta_bearings']:.2f}, structure "
-                 f"{z['zeta_structure']:.1f}; seed Tables 5-7)")
+                 f"{z['zeta_structure']:.1f}; seed T. 5-7)")
     lines.append(f"drive-train modes (motor free) {float(np.asarray(v['f_axial_torsional'])[i_min]):.0f} and "
                  f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  nut backlash "
                  f"{v['backlash'] * 1e6:.0f} um")
     lines.append("")
     lines.extend(drive_lines(ev))
-    lines.append("checks (margin >= 1 passes)")
-    for c in CHECKS:
-        if c in DRIVE_CHECKS and d.motor is None:
-            continue
-        m = v[f"margin_{c}"]
-        shown = "n/a" if m >= 1e8 else f"{m:.2f}"
-        lines.append(f"  {CHECK_LABELS[c]:<48}{shown:>8}  {'pass' if passes(m) else 'FAIL'}")
+    lines.extend(check_lines(ev))
     return "\n".join(lines)
 
 
@@ -180,7 +252,7 @@ def drive_lines(ev: Evaluation) -> list:
     cycle = (f"{len(a.duty_cycle)}-entry duty cycle" if a.duty_cycle
              else "rapid move over the stroke and back, no dwell (default)")
     lines = [f"drive: motor {m['id']} ({m['vendor']}; rated {m['rated_torque']:.3g} N.m, peak "
-             f"{m['peak_torque']:.3g} N.m, max {m['max_speed'] * RPM:.0f} rpm), {cpl}, {red}",
+             f"{m['peak_torque']:.3g} N.m, max {m['max_speed'] * RPM:.0f} rpm)", f"  {cpl}, {red}",
              f"  {cycle}: {v['duty_time']:.2f} s;  friction {v['friction_torque']:.3f} N.m"
              + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else "")]
     rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m", f"{m['peak_torque']:.3g} N.m (motor peak)"),
@@ -196,7 +268,7 @@ def drive_lines(ev: Evaluation) -> list:
     if d.coupling is not None:
         rows.append(("coupling torque", f"{m['peak_torque'] * a.reduction_ratio:.3g} N.m (motor peak)",
                      f"{d.coupling['rated_torque']:.3g} N.m (rated)"))
-    lines.append(f"  {'':<28}{'needed':>26}   {'available':<28}")
+    lines.append(f"  {'':<28}{'needed':>26}   available")
     for name, need, have in rows:
         lines.append(f"  {name:<28}{need:>26}   {have}")
     lines.append("")
@@ -209,7 +281,7 @@ def _thermal_line(ev: Evaluation) -> str:
     text = (f"thermal: +{a.temperature_rise:g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
             f"(alpha 11.6e-6/K, HIWIN F 3.36)")
     if a.mounting == "fixed-fixed":
-        text += (f"; pretension {v['pretension'] / 1e3:.1f} kN "
+        text += (f"\n  pretension {v['pretension'] / 1e3:.1f} kN "
                  f"({'absorbs the rise' if a.pretension is None else 'as given'}), bearing static load "
                  f"{v['bearing_static_load'] / 1e3:.1f} kN")
     return text

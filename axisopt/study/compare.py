@@ -14,8 +14,9 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from ..model import CHECK_LABELS, CHECKS, Evaluation, evaluate, passes
+from ..model import CHECKS, Evaluation, evaluate
 from ..report import N_PER_UM, RPM, drive_dict, evaluation_dict
+from ..report.evaluation import CHECK_SHORT, CHECK_UNITS, check_rows, fmt_value
 from ..yamlio import read_yaml
 
 
@@ -79,8 +80,8 @@ def _components(ev: Evaluation) -> dict:
 
 def compare_table(items) -> str:
     """The text table: one column per design, the weakest link of each marked with '<'."""
-    w0 = 52
-    width = max(16, *(min(30, len(c.label) + 2) for c in items))
+    w0 = 34
+    width = max(22, *(min(30, len(c.label) + 2) for c in items))
     rows: list = []
 
     def row(name, cells):
@@ -150,12 +151,20 @@ def compare_table(items) -> str:
                 f"{e['holding_torque'] * e.design.axis.brake_safety:.2f} / "
                 f"{(m['brake_torque'] if math.isfinite(float(m['brake_torque'])) else 0.0):.3g}"))
     rows.append("")
-    rows.append("checks (margin, >= 1 passes)")
+    rows.append("checks: margin (available / needed), >= 1 passes, ! fails")
+    tables = [{r["check"]: r for r in check_rows(e)} if e is not None else None for e in evs]
     for c in CHECKS:
-        def cell(e, c=c):
-            m = e[f"margin_{c}"]
-            return ("n/a" if m >= 1e8 else f"{m:.2f}") + ("  " if passes(m) else " !")
-        row(f"  {CHECK_LABELS[c][:w0 - 3]}", each(cell))
+        if not any(t is not None and c in t for t in tables):
+            continue
+        unit = CHECK_UNITS[c][0]
+
+        def cell(t, c=c):
+            if t is None or c not in t:
+                return "-"
+            r = t[c]
+            m = "n/a" if r["margin"] is None else f"{r['margin']:.2f}"
+            return f"{m} ({fmt_value(r['available'])}/{fmt_value(r['needed'])})" + ("  " if r["pass"] else " !")
+        row(f"  {CHECK_SHORT[c]}" + (f" [{unit}]" if unit else ""), [cell(t) for t in tables])
     row("all checks pass", each(lambda e: "yes" if min(e.checks().values()) >= 1.0 else "NO"))
     solved = [c for c in items if c.solve is not None]
     if solved:
@@ -211,7 +220,10 @@ def compare_rows(items) -> list:
                 if k not in ("motor", "coupling"):
                     r[f"drive_{k}"] = v
             for k, v in d["checks"].items():
-                r[f"margin_{k}"] = v["margin"]
+                u = f" [{v['unit']}]" if v["unit"] else ""
+                r[f"{k} margin"] = v["margin"]
+                r[f"{k} available{u}"] = v["available"]
+                r[f"{k} needed{u}"] = v["needed"]
         rows.append(r)
     return rows
 
@@ -222,7 +234,7 @@ def write_compare_csv(items, path) -> None:
     from ..fileio import atomic_file
 
     with atomic_file(path, "w", what="CSV") as fh:
-        pd.DataFrame(compare_rows(items)).to_csv(fh, index=False)
+        pd.DataFrame(compare_rows(items)).to_csv(fh, index=False, float_format="%.10g")
 
 
 __all__ = ["Compared", "load_compared", "compare_table", "compare_dict", "compare_rows", "write_compare_csv"]

@@ -62,6 +62,7 @@ def solve_case(context: dict, case: Case) -> dict:
     """Build and solve one case; never raises for a case-level failure (the reason is recorded)."""
     from ..model import evaluate
     from ..report import drive_dict
+    from ..report.evaluation import check_rows
     from ..search import solve
 
     t0 = time.perf_counter()
@@ -102,8 +103,8 @@ def solve_case(context: dict, case: Case) -> dict:
         drv = drive_dict(ev)
         if drv is not None:  # the motor's needs and its torque margins
             rec["drive"] = {k: (_num(float(v)) if isinstance(v, (int, float)) else v) for k, v in drv.items()}
-            rec["drive"].update({f"margin_{k}": _num(float(ev[f"margin_{k}"]))
-                                 for k in ("motor_peak_torque", "motor_rated_torque")})
+        rec["checks"] = {r["check"]: {k: r[k] for k in ("available", "needed", "unit", "margin", "pass")}
+                         for r in check_rows(ev)}
     c = res.certificate
     rec["certificate"] = {"proven": bool(c.proven), "gap": _num(c.gap), "combinations": int(c.combinations),
                           "feasible": None if c.feasible is None else int(c.feasible),

@@ -35,13 +35,27 @@ RESULT_COLUMNS = (
     ("life [h]", ("best", "life_h")),
     ("peak_torque [N.m]", ("drive", "peak_torque_Nm")), ("rms_torque [N.m]", ("drive", "rms_torque_Nm")),
     ("motor_speed [rpm]", ("drive", "motor_speed_rpm")), ("inertia_ratio", ("drive", "inertia_ratio")),
-    ("margin_motor_peak_torque", ("drive", "margin_motor_peak_torque")),
-    ("margin_motor_rated_torque", ("drive", "margin_motor_rated_torque")),
     ("proven", ("certificate", "proven")), ("gap", ("certificate", "gap")),
     ("combinations", ("certificate", "combinations")), ("feasible", ("certificate", "feasible")),
     ("nlps", ("certificate", "nlps")),
 )
 TIME_COLUMNS = ("solve_time [s]", "worker")  # differ between runs of the same study
+CSV_FLOAT = "%.10g"  # ten significant digits: no float noise (999.9999999999999) in the CSV files
+
+
+def check_columns() -> list:
+    """(column, check, field) for each check of the chosen design: margin, available and needed in the
+    vendor unit (e.g. ``critical_speed available [rpm]``); empty where the check does not apply."""
+    from ..model import CHECKS
+    from ..report.evaluation import CHECK_UNITS
+
+    out = []
+    for c in CHECKS:
+        unit = CHECK_UNITS[c][0]
+        u = f" [{unit}]" if unit else ""
+        out += [(f"{c} margin", c, "margin"), (f"{c} available{u}", c, "available"),
+                (f"{c} needed{u}", c, "needed")]
+    return out
 
 
 def input_columns(study) -> dict:
@@ -110,15 +124,19 @@ def results_table(study, out_dir):
         row["reason"] = r.get("reason", "")
         for name, (a, b) in RESULT_COLUMNS:
             row[name] = (r.get(a) or {}).get(b)
+        checks = r.get("checks") or {}
+        for name, c, f in check_columns():
+            row[name] = (checks.get(c) or {}).get(f)
         pareto = r.get("pareto")
         row["pareto_points"] = len(pareto["points"]) if pareto else None
         row["solve_time [s]"] = r.get("time_s")
         row["worker"] = r.get("worker", "")
         rows.append(row)
     columns = ["case_id", "index"] + [n for n, _ in cols.values()] + ["status", "reason"] \
-        + [n for n, _ in RESULT_COLUMNS] + ["pareto_points"] + list(TIME_COLUMNS)
+        + [n for n, _ in RESULT_COLUMNS] + [n for n, _, _ in check_columns()] + ["pareto_points"] \
+        + list(TIME_COLUMNS)
     df = pd.DataFrame(rows, columns=columns)
-    for n, _ in RESULT_COLUMNS:
+    for n in [n for n, _ in RESULT_COLUMNS] + [n for n, _, _ in check_columns()]:
         if df[n].dropna().map(lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)).all() \
                 and n not in ("proven",):
             df[n] = pd.to_numeric(df[n], errors="coerce")
@@ -139,7 +157,7 @@ def write_outputs(study, out_dir, summary=None) -> dict:
     files = {}
     files["csv"] = str(out / "results.csv")
     with atomic_file(files["csv"], "w", what="results table") as fh:
-        df.to_csv(fh, index=False)
+        df.to_csv(fh, index=False, float_format=CSV_FLOAT)
     try:
         import pyarrow  # noqa: F401
     except ImportError:

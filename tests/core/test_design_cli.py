@@ -118,7 +118,38 @@ def test_bearing_that_does_not_fit_the_screw_end_fails_its_check(tmp_path, capsy
     p.write_text(GOOD.replace("bearing: HIWIN-WBK30-DFD", "bearing: HIWIN-WBK15-DF"), encoding="utf-8")
     js = tmp_path / "r.json"
     assert main(["evaluate", str(p), "--json", str(js)]) == 0
-    assert json.loads(js.read_text())["checks"]["bearing_fit"]["pass"] is False
+    fit = json.loads(js.read_text())["checks"]["bearing_fit"]
+    assert fit["pass"] is False
+    # the physical values behind it: a 15 mm bore against the 25-30 mm the 40 mm screw end takes
+    assert (fit["needed"], fit["available_min"], fit["available"], fit["unit"]) == (
+        pytest.approx(15), pytest.approx(25), pytest.approx(30), "mm")
+    # --fail-on-check turns the failed check into exit 1 with one line naming it; without it: exit 0
+    capsys.readouterr()
+    assert main(["evaluate", str(p), "--fail-on-check"]) == 1
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "bearing_fit" in err
+    assert main(["evaluate", str(ROOT / "problems" / "vmc_x_design.yaml"), "--fail-on-check"]) == 0
+
+
+def test_checks_carry_physical_values_in_vendor_units(tmp_path, capsys):
+    """Each check's needed value recomputed by hand from the design file (24 m/min on a 20 mm lead is
+    1200 rpm at the screw and, direct drive, at the motor; DN = 40 mm x 1200 rpm, HIWIN's D x n; required
+    life 20 000 h; guide travel = 20 000 h x mean speed 8 m/min = 9 600 km), and margin = available / needed."""
+    js = tmp_path / "r.json"
+    assert main(["evaluate", str(ROOT / "problems" / "vmc_x_design.yaml"), "--json", str(js)]) == 0
+    checks = json.loads(js.read_text())["checks"]
+    assert checks["critical_speed"]["unit"] == "rpm" and checks["critical_speed"]["needed"] == pytest.approx(1200)
+    assert checks["motor_speed"]["needed"] == pytest.approx(1200)
+    assert checks["dn"]["needed"] == pytest.approx(40 * 1200) and checks["dn"]["unit"] == "mm.rpm"
+    assert checks["nut_life"]["needed"] == pytest.approx(20_000) and checks["nut_life"]["unit"] == "h"
+    assert checks["screw_length"]["needed"] == pytest.approx(1100)  # span of the design
+    assert checks["guide_life"]["needed"] == pytest.approx(9600) and checks["guide_life"]["unit"] == "km"
+    for name, c in checks.items():
+        if c["margin"] is not None and c["needed"] and name != "bearing_fit":
+            assert c["margin"] == pytest.approx(c["available"] / c["needed"], rel=1e-9), name
+    assert "brake_holding" not in checks  # a horizontal axis needs no brake
+    out = capsys.readouterr().out
+    assert all(len(line) <= 100 for line in out.splitlines()), max(out.splitlines(), key=len)
 
 
 @pytest.mark.parametrize(("names", "text"), [("nut:hertz", "n_balls"), ("bearings:palmgren", "ball_diameter"),

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 
 import pandas as pd
+import pytest
 from study_helpers import PROBLEMS
 
 from axisopt.cli import main
@@ -27,7 +28,14 @@ def test_compare_designs_and_a_problem(tmp_path, capsys):
     assert d["designs"][2]["solve"]["status"] == "optimal"
     df = pd.read_csv(csv)
     assert len(df) == 3 and {"min_stiffness [N/um]", "min_frequency_at [mm]", "cost [EUR]",
-                             "margin_critical_speed", "weakest_link"} <= set(df.columns)
+                             "critical_speed margin", "critical_speed available [rpm]",
+                             "critical_speed needed [rpm]", "weakest_link"} <= set(df.columns)
+    # physical values: the VMC screw turns at 24 m/min / 20 mm lead = 1200 rpm (design file), margin = ratio
+    r = df.iloc[0]
+    assert r["critical_speed needed [rpm]"] == pytest.approx(1200)
+    assert r["critical_speed margin"] == pytest.approx(r["critical_speed available [rpm]"] / 1200, rel=1e-9)
+    assert r["nut_life needed [h]"] == pytest.approx(20_000)
+    assert "  critical speed [rpm]" in out and "(4,353/1,200)" in out
     assert png.stat().st_size > 10_000
 
 
