@@ -381,12 +381,23 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
     sec.done()
     nut, screw = parts["nut"], parts["screw"]
     if nut["screw_id"] != screw["id"]:
-        raise sec.error("nut", f"nut '{nut['id']}' fits screw '{nut['screw_id']}', not '{screw['id']}'")
+        raise sec.error("nut", f"nut '{nut['id']}' fits screw '{nut['screw_id']}', not '{screw['id']}'; "
+                        + fitting_nuts(catalog, screw["id"]))
     if pre is not None and not (nut["preload_min"] - 1e-9 <= pre <= nut["preload_max"] + 1e-9):
         raise sec.error("nut_preload", f"{pre:.0f} N is outside nut '{nut['id']}' range "
                         f"{nut['preload_min']:.0f}..{nut['preload_max']:.0f} N")
     parts["nut_preload"] = pre
     return parts
+
+
+def fitting_nuts(catalog: Catalog, screw_id: str, shown: int = 6) -> str:
+    """'nuts for it: A, B (+3 more; axisopt parts nuts --fits ID)' -- what a refused nut could be instead."""
+    nuts = catalog.table("nuts")
+    ids = [str(i) for i in nuts.index[nuts["screw_id"] == screw_id]]
+    if not ids:
+        return f"the catalogs have no nut for '{screw_id}'"
+    more = f" (+{len(ids) - shown} more)" if len(ids) > shown else ""
+    return f"nuts for it: {', '.join(ids[:shown])}{more} (axisopt parts nuts --fits {screw_id})"
 
 
 def catalog_for(root: Section, base_dir: Path) -> Catalog:

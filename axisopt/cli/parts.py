@@ -7,37 +7,52 @@ from .common import EXIT_OK, write_json
 
 KINDS = ("screws", "nuts", "bearings", "guides", "motors", "couplings")
 
-# Columns shown per kind when listing rows: (column, unit shown, factor from SI, format).
-_SHOWN = {
-    "screws": (("nominal_diameter", "mm", 1e3, ".0f"), ("lead", "mm", 1e3, ".0f"),
-               ("root_diameter", "mm", 1e3, ".2f"), ("max_length", "mm", 1e3, ".0f"),
-               ("support_bore_min", "mm", 1e3, ".0f"), ("support_bore_max", "mm", 1e3, ".0f")),
-    "nuts": (("screw_id", "", None, ""), ("type", "", None, ""), ("stiffness", "N/um", 1e-6, ".0f"),
-             ("stiffness_preload", "N", 1.0, ".0f"), ("preload_max", "N", 1.0, ".0f"),
-             ("dynamic_load_rating", "kN", 1e-3, ".1f"), ("static_load_rating", "kN", 1e-3, ".1f"),
-             ("axial_play", "mm", 1e3, ".3f")),
-    "bearings": (("arrangement", "", None, ""), ("bore", "mm", 1e3, ".0f"), ("preload_class", "", None, ""),
-                 ("preload", "N", 1.0, ".0f"), ("axial_rigidity", "N/um", 1e-6, ".0f"),
-                 ("dynamic_load_rating", "kN", 1e-3, ".1f"), ("starting_torque", "N.m", 1.0, ".2f")),
-    "guides": (("type", "", None, ""), ("size", "mm", 1e3, ".0f"), ("preload_class", "", None, ""),
-               ("preload", "N", 1.0, ".0f"), ("normal_rigidity", "N/um", 1e-6, ".0f"),
-               ("dynamic_load_rating", "kN", 1e-3, ".1f"), ("static_load_rating", "kN", 1e-3, ".1f")),
-    "motors": (("rated_torque", "N.m", 1.0, ".3g"), ("peak_torque", "N.m", 1.0, ".3g"),
-               ("max_speed", "rpm", 60 / 6.283185307179586, ".0f"), ("rotor_inertia", "kg.cm^2", 1e4, ".3g"),
-               ("brake_torque", "N.m", 1.0, ".3g")),
-    "couplings": (("rated_torque", "N.m", 1.0, ".0f"), ("torsional_stiffness", "N.m/rad", 1.0, ".0f"),
-                  ("inertia", "kg.cm^2", 1e4, ".3g"), ("bore_min", "mm", 1e3, ".0f"), ("bore_max", "mm", 1e3, ".0f")),
+# The text table per kind: (header, column or columns, factor from SI, format); fits 100 columns.  All
+# columns, with vendor, provenance and source, are in --json and --csv.
+_TABLE = {
+    "screws": (("d [mm]", "nominal_diameter", 1e3, ".0f"), ("lead [mm]", "lead", 1e3, ".0f"),
+               ("root [mm]", "root_diameter", 1e3, ".2f"), ("max L [mm]", "max_length", 1e3, ".0f"),
+               ("end bore [mm]", ("support_bore_min", "support_bore_max"), 1e3, ".0f"),
+               ("DN limit", "dn_limit", 1e3 * 60 / 6.283185307179586, ",.0f")),
+    "nuts": (("type", "type", None, ""), ("k [N/um]", "stiffness", 1e-6, ".0f"),
+             ("preload [N]", ("preload_min", "preload_max"), 1.0, ".0f"),
+             ("Ca [kN]", "dynamic_load_rating", 1e-3, ".1f"),
+             ("C0a [kN]", "static_load_rating", 1e-3, ".1f"), ("play [mm]", "axial_play", 1e3, ".3f")),
+    "bearings": (("arr.", "arrangement", None, ""), ("bore [mm]", "bore", 1e3, ".0f"),
+                 ("class", "preload_class", None, ""), ("preload [N]", "preload", 1.0, ".0f"),
+                 ("k [N/um]", "axial_rigidity", 1e-6, ".0f"), ("Ca [kN]", "dynamic_load_rating", 1e-3, ".1f"),
+                 ("drag [N.m]", "starting_torque", 1.0, ".2f")),
+    "guides": (("type", "type", None, ""), ("size", "size", 1e3, ".0f"), ("class", "preload_class", None, ""),
+               ("preload [N]", "preload", 1.0, ".0f"), ("k [N/um]", "normal_rigidity", 1e-6, ".0f"),
+               ("C [kN]", "dynamic_load_rating", 1e-3, ".1f"), ("C0 [kN]", "static_load_rating", 1e-3, ".1f")),
+    "motors": (("rated [N.m]", "rated_torque", 1.0, ".3g"), ("peak [N.m]", "peak_torque", 1.0, ".3g"),
+               ("max [rpm]", "max_speed", 60 / 6.283185307179586, ".0f"),
+               ("rotor [kg.cm^2]", "rotor_inertia", 1e4, ".3g"), ("brake [N.m]", "brake_torque", 1.0, ".3g")),
+    "couplings": (("rated [N.m]", "rated_torque", 1.0, ".0f"), ("k [N.m/rad]", "torsional_stiffness", 1.0, ",.0f"),
+                  ("J [kg.cm^2]", "inertia", 1e4, ".3g"), ("bore [mm]", ("bore_min", "bore_max"), 1e3, ".0f"),
+                  ("max [rpm]", "max_speed", 60 / 6.283185307179586, ",.0f")),
 }
+# What each filter applies to.
+_FITS = ("nuts", "bearings")
+_SIZE = ("screws", "nuts")
+_CLASS = ("bearings", "guides")
 
 
 def register(sub) -> None:
-    p = sub.add_parser("parts", help="catalog contents: counts per kind and vendor, or the rows of one kind")
+    p = sub.add_parser("parts", help="catalog contents: counts per kind and vendor, or the rows of one kind",
+                       description="Without a kind: rows per kind and vendor.  With a kind: its rows, filtered.")
     p.add_argument("kind", nargs="?", choices=KINDS, help="list the rows of this kind (default: counts only)")
     p.add_argument("--vendor", action="append", metavar="NAME", help="only this vendor (repeatable)")
     p.add_argument("--status", metavar="STATUS",
                    help="only rows of this provenance (see catalogs/SOURCES.md)")
+    p.add_argument("--fits", metavar="SCREW_ID",
+                   help="nuts made for this screw, or support bearings whose bore its end journal takes")
+    p.add_argument("--diameter", metavar="MM", help="screws (and their nuts) of this nominal diameter [mm]")
+    p.add_argument("--lead", metavar="MM", help="screws (and their nuts) of this lead [mm]")
+    p.add_argument("--preload-class", metavar="CLASS", help="bearings or guides of this preload class")
     p.add_argument("--catalogs", nargs="+", default=(), metavar="DIR", help="user catalog directories to add")
     p.add_argument("--json", metavar="FILE", help="write the counts (or rows) as JSON ('-' for stdout)")
+    p.add_argument("--csv", metavar="FILE", help="write the rows (all columns, vendor units) as CSV")
     p.set_defaults(func=cmd_parts)
 
 
@@ -87,6 +102,9 @@ def counts_table(records) -> str:
 
 
 def _cell(row, col, factor, fmt):
+    if isinstance(col, tuple):  # a range: min-max (one value when they agree)
+        lo, hi = (_cell(row, c, factor, fmt) for c in col)
+        return lo if lo == hi else f"{lo}-{hi}"
     v = row[col]
     if factor is None:
         return str(v)
@@ -95,26 +113,103 @@ def _cell(row, col, factor, fmt):
     return format(v * factor, fmt)
 
 
-def rows_table(df, kind) -> str:
-    cols = _SHOWN[kind]
-    heads = ["id", "vendor"] + [f"{c} [{u}]" if u else c for c, u, _, _ in cols] + ["status", "source"]
-    body = [[r["id"], r["vendor"]] + [_cell(r, c, f, fmt) for c, _, f, fmt in cols] + [r["status"], r["source"]]
-            for _, r in df.iterrows()]
+def _grid(heads, body, right) -> list:
     widths = [max(len(h), *(len(b[i]) for b in body)) if body else len(h) for i, h in enumerate(heads)]
-    line = lambda cells: "  ".join(c.ljust(w) for c, w in zip(cells, widths)).rstrip()  # noqa: E731
-    return "\n".join([line(heads), line(["-" * w for w in widths])] + [line(b) for b in body])
+
+    def line(cells):
+        return "  ".join(c.rjust(w) if r else c.ljust(w) for c, w, r in zip(cells, widths, right)).rstrip()
+    return [line(heads), line(["-" * w for w in widths])] + [line(b) for b in body]
+
+
+def rows_table(df, kind, screws=None) -> str:
+    """The rows of one kind as text; nuts are grouped under the screw they are made for."""
+    cols = _TABLE[kind]
+    heads = ["id"] + [h for h, _, _, _ in cols]
+    right = [False] + [f is not None for _, _, f, _ in cols]
+
+    def body(sub):
+        return [[str(r["id"])] + [_cell(r, c, f, fmt) for _, c, f, fmt in cols] for _, r in sub.iterrows()]
+    if kind != "nuts" or df.empty:
+        return "\n".join(_grid(heads, body(df), right))
+    lines = []
+    grid = _grid(heads, body(df), right)
+    lines.extend(grid[:2])
+    at = 2
+    for screw_id, g in df.groupby("screw_id", sort=False):
+        s = screws.loc[screw_id] if screws is not None and screw_id in screws.index else None
+        size = f" ({s['nominal_diameter'] * 1e3:.0f} x {s['lead'] * 1e3:g} mm)" if s is not None else ""
+        lines.append(f"screw {screw_id}{size}")
+        lines.extend(grid[at:at + len(g)])
+        at += len(g)
+    return "\n".join(lines)
 
 
 def rows_dicts(df, kind) -> list[dict]:
+    """Every column of the rows, in vendor units (the unit in the key), with vendor, provenance and source."""
+    from ..catalog import SCHEMA
+
     out = []
     for _, r in df.iterrows():
-        rec = {"id": r["id"], "vendor": r["vendor"], "status": r["status"], "source": r["source"]}
-        for c, u, f, _ in _SHOWN[kind]:
+        rec = {}
+        for c, k in SCHEMA[kind].items():
             v = r[c]
-            key = f"{c}_{u.replace('/', '_per_').replace('.', '')}" if u else c
-            rec[key] = v if f is None else (None if v != v else float(v * f))
+            if k in ("str",):
+                rec[c] = v
+                continue
+            unit, f = _VENDOR_UNITS.get(k, ("", 1.0))
+            key = f"{c} [{unit}]" if unit else c
+            rec[key] = None if v != v else (int(v) if k == "int" else float(f"{v * f:.10g}"))
+        rec.update({"status": r["status"], "source": r["source"]})
         out.append(rec)
     return out
+
+
+# SI -> the unit a catalog column is shown in (by the column's kind in catalog.SCHEMA).
+_VENDOR_UNITS = {
+    "length": ("mm", 1e3), "force": ("N", 1.0), "stiffness": ("N/um", 1e-6), "mass": ("kg", 1.0),
+    "torque": ("N.m", 1.0), "angular_speed": ("rpm", 60 / 6.283185307179586), "inertia": ("kg.cm^2", 1e4),
+    "torsional_stiffness": ("N.m/rad", 1.0), "dn": ("mm.rpm", 1e3 * 60 / 6.283185307179586),
+    "mass_per_length": ("kg/m", 1.0), "money_per_length": ("EUR/m", 1.0), "money": ("EUR", 1.0),
+    "angle": ("deg", 57.29577951308232), "damping": ("N.s/m", 1.0), "power": ("W", 1.0),
+}
+
+
+def _mm(text, flag) -> float:
+    try:
+        v = float(text)
+    except ValueError:
+        raise InputError(f"expected a number of millimetres, got '{text}'", where=flag) from None
+    if not (0 < v < 1e4):
+        raise InputError(f"expected a size in mm between 0 and 10 000, got {text}", where=flag)
+    return v / 1e3
+
+
+def apply_filters(cat, kind, df, args):
+    """The rows of ``df`` (kind ``kind``) that pass --fits, --diameter, --lead and --preload-class."""
+    for flag, value, kinds in (("--fits", args.fits, _FITS), ("--diameter", args.diameter, _SIZE),
+                               ("--lead", args.lead, _SIZE), ("--preload-class", args.preload_class, _CLASS)):
+        if value is not None and kind not in kinds:
+            raise InputError(f"applies to {' and '.join(kinds)}, not {kind}", where=flag)
+    screws = cat.table("screws")
+    if args.fits is not None:
+        screw = cat.part("screws", args.fits, key="--fits")
+        if kind == "nuts":
+            df = df[df["screw_id"] == screw["id"]]
+        else:
+            df = df[(df["bore"] >= screw["support_bore_min"] - 1e-9) & (df["bore"] <= screw["support_bore_max"] + 1e-9)]
+    for flag, value, col in (("--diameter", args.diameter, "nominal_diameter"), ("--lead", args.lead, "lead")):
+        if value is None:
+            continue
+        v = _mm(value, flag)
+        ok = screws.index[(screws[col] - v).abs() < 1e-6]
+        df = df[df["id"].isin(ok)] if kind == "screws" else df[df["screw_id"].isin(ok)]
+    if args.preload_class is not None:
+        classes = sorted(set(df["preload_class"].astype(str)))
+        if args.preload_class not in classes:
+            raise InputError(f"no {kind} of preload class '{args.preload_class}' here; classes are "
+                             f"{', '.join(classes)}", where="--preload-class")
+        df = df[df["preload_class"].astype(str) == args.preload_class]
+    return df
 
 
 def cmd_parts(args) -> int:
@@ -125,13 +220,26 @@ def cmd_parts(args) -> int:
     cat = load_catalogs(args.catalogs)
     quiet = args.json == "-"
     if args.kind:
-        df = _filtered(cat, args.kind, args.vendor, args.status)
+        df = apply_filters(cat, args.kind, _filtered(cat, args.kind, args.vendor, args.status), args)
         if not quiet:
-            print(rows_table(df, args.kind))
-            print(f"\n{len(df)} {args.kind}")
+            print(rows_table(df, args.kind, cat.table("screws")))
+            print(f"\n{len(df)} {args.kind}; all columns, vendor and source: --csv or --json")
         if args.json:
             write_json({"kind": args.kind, "rows": rows_dicts(df, args.kind)}, args.json)
+        if args.csv:
+            import pandas as pd
+
+            from ..fileio import atomic_file
+
+            with atomic_file(args.csv, "w", what="CSV") as fh:
+                pd.DataFrame(rows_dicts(df, args.kind)).to_csv(fh, index=False)
+            if not quiet:
+                print(f"rows written to {args.csv}")
         return EXIT_OK
+    for flag in ("fits", "diameter", "lead", "preload_class", "csv"):
+        if getattr(args, flag) is not None:
+            raise InputError("needs a kind (e.g. 'axisopt parts nuts --fits SCREW_ID')",
+                             where="--" + flag.replace("_", "-"))
     for v in args.vendor or ():
         if not any(v in set(cat.table(k)["vendor"]) for k in KINDS):
             raise InputError(f"no parts of vendor '{v}' in the catalogs", where="--vendor")
