@@ -12,7 +12,7 @@ from dataclasses import dataclass, field, fields
 from functools import cached_property
 from pathlib import Path
 
-from .catalog import _CHOICES, OPTIONAL_COLUMNS, SCHEMA, Catalog, default_catalog, row_problem
+from .catalog import _CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
 from .errors import InputError
 from .physics import motion
 from .units import unit_factor
@@ -448,7 +448,8 @@ def _q(value: float, kind: str) -> str:
 def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
     """A design as the plain mapping a design YAML holds (vendor units).  ``load_design`` reads it back.
 
-    Catalog parts are written as their ids unless ``inline_parts`` (or the part came from the YAML).
+    Parts of the shipped catalogs are written as their ids unless ``inline_parts``; a part from a user
+    catalog or from the YAML itself is written inline, so the file stands on its own.
     """
     a = design.axis
     axis: dict = {}
@@ -473,7 +474,7 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
         row = getattr(design, slot)
         if row is None:
             continue
-        if not inline_parts and "catalogs/" in str(row.get("_source", "catalogs/")):
+        if not inline_parts and str(row.get("_source", "")).startswith(str(SHIPPED_DIR)):
             parts[slot] = str(row["id"])
             continue
         part = {}

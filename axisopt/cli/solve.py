@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 
 from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, write_json
 
@@ -18,6 +19,9 @@ def register(sub) -> None:
     s.add_argument("--time-limit", type=float, default=100.0, metavar="S", help="Bonmin time limit [s]")
     s.add_argument("--no-sensitivity", action="store_true",
                    help="skip re-solving with each limit relaxed by 10 %%")
+    s.add_argument("--save-design", metavar="FILE.yaml|DIR",
+                   help="write the best design as a design YAML (evaluate and compare read it); a directory "
+                        "gets the --top designs shown (or every Pareto point) as 1.yaml, 2.yaml, ... (01.yaml from 10)")
     s.set_defaults(func=cmd_solve)
 
 
@@ -31,6 +35,10 @@ def cmd_solve(args) -> int:
     if not (math.isfinite(args.time_limit) and args.time_limit > 0):
         raise InputError(f"--time-limit must be positive, got {args.time_limit}")
     problem = load_problem(args.problem)
+    if args.save_design and args.save_design.lower().endswith((".yaml", ".yml")) \
+            and problem.objective.mode == "pareto":
+        raise InputError("a Pareto front has several designs: give a directory, not a .yaml file",
+                         where="--save-design")
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
                 sensitivities=not args.no_sensitivity)
     quiet = args.json == "-"
@@ -62,7 +70,43 @@ def cmd_solve(args) -> int:
                           limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")})
         if not quiet:
             print(f"\nplot written to {args.plot}")
+    if args.save_design:
+        written = save_designs(res, args.save_design, args.top, args.problem)
+        if not written:
+            print(f"axisopt: no design saved: the problem is {res.status}", file=sys.stderr)
+        elif not quiet:
+            print(f"\n{len(written)} design YAML written: {', '.join(written)}" if len(written) < 4 else
+                  f"\n{len(written)} design YAMLs written to {args.save_design}")
     return exit_code(res.status)
+
+
+def save_designs(res, target: str, top: int, problem_path: str) -> list:
+    """Write the best design to ``target`` (a .yaml file) or the shown designs into ``target`` (a directory,
+    ranks as 1.yaml, 2.yaml ...; Pareto points in front order).  Returns the paths written."""
+    from pathlib import Path
+
+    from ..design import design_to_yaml
+    from ..fileio import make_output_dir, write_text_atomic
+
+    cands = list(res.pareto.points) if res.pareto is not None else \
+        ([res.best] + list(res.runners_up))[:top] if res.best is not None else []
+    cands = [c for c in cands if c is not None and c.design is not None]
+    if not cands:
+        return []
+    single = target.lower().endswith((".yaml", ".yml"))
+    out = []
+    paths = [Path(target)] if single else [Path(target) / f"{i:0{len(str(len(cands)))}d}.yaml"
+                                                 for i in range(1, len(cands) + 1)]
+    if not single:
+        make_output_dir(target)
+    for c, path in zip(cands if not single else cands[:1], paths):
+        what = "Pareto point" if res.pareto is not None else f"rank {c.rank}"
+        head = (f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}, "
+                f"{res.objective_label} = {c.objective:.6g} {res.objective_unit}\n") if res.pareto is None else \
+            f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}\n"
+        write_text_atomic(str(path), head + design_to_yaml(c.design), what="design YAML")
+        out.append(str(path))
+    return out
 
 
 def exit_code(status: str) -> int:
