@@ -14,6 +14,29 @@ from ..errors import InputError
 EXIT_OK, EXIT_NEGATIVE, EXIT_INPUT, EXIT_UNPROVEN, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
 
 
+def add_html_report(parser, what: str) -> None:
+    """The ``--report FILE.html`` option (a self-contained HTML report, needs axisopt[html])."""
+    parser.add_argument("--report", metavar="FILE.html",
+                        help=f"write {what} as one self-contained HTML file (interactive figures; needs plotly)")
+
+
+def check_html_report(path) -> None:
+    """Refuse a --report target before the work starts: not .html, or plotly missing (one line, exit 2)."""
+    if path is None:
+        return
+    from ..errors import InputError
+    from ..report.html import require_plotly
+
+    if not str(path).lower().endswith((".html", ".htm")):
+        raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
+    require_plotly()
+
+
+def wrote(path, quiet: bool) -> None:
+    if not quiet:
+        print(f"\nreport written to {path}")
+
+
 class GuardedStdout:
     """sys.stdout for the length of one command: a closed pipe (``axisopt ... | head``) or a full device
     (``> /dev/full``) does not end the command with a traceback or a wrong exit code.  The command runs to

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import EXIT_NEGATIVE, EXIT_OK, write_json
+from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, write_json, wrote
 
 
 def register(sub) -> None:
@@ -14,15 +14,18 @@ def register(sub) -> None:
     c.add_argument("--json", metavar="FILE", help="write the comparison as JSON ('-' for stdout)")
     c.add_argument("--csv", metavar="FILE", help="write one row per design as CSV")
     c.add_argument("--plot", metavar="FILE.png", help="overlay stiffness and frequency over the stroke")
+    add_html_report(c, "the comparison")
     c.set_defaults(func=cmd_compare)
 
 
 def cmd_compare(args) -> int:
     from ..study.compare import compare_dict, compare_table, load_compared, write_compare_csv
 
+    check_html_report(args.report)
     items = load_compared(args.files)
+    text = compare_table(items)
     if args.json != "-":
-        print(compare_table(items))
+        print(text)
     if args.json:
         write_json(compare_dict(items), args.json)
     if args.csv:
@@ -34,6 +37,11 @@ def cmd_compare(args) -> int:
         plot_profiles([c.evaluation for c in evs], args.plot, labels=[c.label for c in evs])
         if args.json != "-":
             print(f"\nplot written to {args.plot}")
+    if args.report:
+        from ..report.html import compare_page, write_page
+
+        write_page(compare_page(items, text), args.report)
+        wrote(args.report, args.json == "-")
     failed = [c for c in items if not c.ok]
     for c in failed:
         print(f"error: {c.source}: problem has no design to compare (status {c.solve['status']})", file=sys.stderr)

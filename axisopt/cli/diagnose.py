@@ -1,4 +1,4 @@
-"""``axisopt diagnose DATA.csv [...] --design DESIGN.yaml [--report DIR] [--json FILE|-]
+"""``axisopt diagnose DATA.csv [...] --design DESIGN.yaml [--report FILE.html|DIR] [--json FILE|-]
 [--save-calibration FILE.yaml] [--effects a,b,...] [--max-effects N]``"""
 
 from __future__ import annotations
@@ -14,6 +14,11 @@ def cmd_diagnose(args) -> int:
     from ..identify.effects import library
     from ..identify.report import diagnosis_dict, diagnosis_text, write_report
 
+    html = args.report is not None and str(args.report).lower().endswith((".html", ".htm"))
+    if html:
+        from ..report.html import require_plotly
+
+        require_plotly()
     design = load_design(args.design)
     datasets = [read_dataset(p) for p in args.data]
     names = None
@@ -26,9 +31,16 @@ def cmd_diagnose(args) -> int:
         raise InputError("--max-effects must not be negative")
     diag = diagnose(datasets, plant_from_design(design), candidates=names, max_effects=args.max_effects)
     quiet = args.json == "-"
+    text = diagnosis_text(diag)
     if not quiet:
-        print(diagnosis_text(diag))
-    if args.report:
+        print(text)
+    if html:
+        from ..report.html import diagnose_page, write_page
+
+        write_page(diagnose_page(diag, text), args.report)
+        if not quiet:
+            print(f"report written to {args.report}")
+    elif args.report:
         path = write_report(diag, args.report)
         if not quiet:
             print(f"report written to {path}")
@@ -49,7 +61,9 @@ def register(sub) -> None:
     d = sub.add_parser("diagnose", help="fit measured data, name what the model gets wrong, measure the gain")
     d.add_argument("data", nargs="+", help="measured test CSV file(s) (units in headers)")
     d.add_argument("--design", required=True, help="design YAML of the measured axis")
-    d.add_argument("--report", metavar="DIR", help="write report.md with residual plots to DIR")
+    d.add_argument("--report", metavar="FILE.html|DIR",
+                   help="a self-contained HTML report (FILE.html, needs plotly), or report.md with residual "
+                        "plots in DIR")
     d.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
     d.add_argument("--save-calibration", metavar="FILE.yaml", help="save the calibrated model for evaluate")
     d.add_argument(

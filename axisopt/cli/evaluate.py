@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import EXIT_NEGATIVE, EXIT_OK, write_json
+from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, write_json, wrote
 
 
 def register(sub) -> None:
@@ -20,6 +20,7 @@ def register(sub) -> None:
                    help="plot the table's dynamic compliance at stroke start, middle and end (also in --json)")
     e.add_argument("--fail-on-check", action="store_true",
                    help="exit 1 when any check fails (for scripts; default: exit 0 with FAIL in the table)")
+    add_html_report(e, "the evaluation")
     e.set_defaults(func=cmd_evaluate)
 
 
@@ -28,6 +29,7 @@ def cmd_evaluate(args) -> int:
     from ..model import evaluate
     from ..report import evaluation_dict, evaluation_table, plot_profiles
 
+    check_html_report(args.report)
     design = load_design(args.design)
     if args.calibration:
         from ..identify.calibration import apply_calibration
@@ -70,6 +72,11 @@ def cmd_evaluate(args) -> int:
         plot_frf(resp, args.frf)
         if args.json != "-":
             print(f"\nFRF plot written to {args.frf}")
+    if args.report:
+        from ..report.html import evaluation_page, write_page
+
+        write_page(evaluation_page(ev), args.report)
+        wrote(args.report, args.json == "-")
     if args.fail_on_check:
         from ..report.evaluation import check_rows
 

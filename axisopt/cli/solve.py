@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import sys
 
-from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, write_json
+from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, add_html_report, check_html_report, write_json, wrote
 
 
 def register(sub) -> None:
@@ -22,6 +22,7 @@ def register(sub) -> None:
     s.add_argument("--save-design", metavar="FILE.yaml|DIR",
                    help="write the best design as a design YAML (evaluate and compare read it); a directory "
                         "gets the --top designs shown (or every Pareto point) as 1.yaml, 2.yaml, ... (01.yaml from 10)")
+    add_html_report(s, "the result")
     s.set_defaults(func=cmd_solve)
 
 
@@ -34,6 +35,7 @@ def cmd_solve(args) -> int:
         raise InputError(f"--top must be at least 1, got {args.top}")
     if not (math.isfinite(args.time_limit) and args.time_limit > 0):
         raise InputError(f"--time-limit must be positive, got {args.time_limit}")
+    check_html_report(args.report)
     problem = load_problem(args.problem)
     if args.save_design and args.save_design.lower().endswith((".yaml", ".yml")) \
             and problem.objective.mode == "pareto":
@@ -42,8 +44,9 @@ def cmd_solve(args) -> int:
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
                 sensitivities=not args.no_sensitivity)
     quiet = args.json == "-"
+    text = format_result(res, top=args.top) if not quiet or args.report else ""
     if not quiet:
-        print(format_result(res, top=args.top))
+        print(text)
     if args.json:
         d = res.to_dict()
         if res.best is not None and res.best.design is not None:
@@ -70,6 +73,11 @@ def cmd_solve(args) -> int:
                           limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")})
         if not quiet:
             print(f"\nplot written to {args.plot}")
+    if args.report:
+        from ..report.html import solve_page, write_page
+
+        write_page(solve_page(res, problem, text), args.report)
+        wrote(args.report, quiet)
     if args.save_design:
         written = save_designs(res, args.save_design, args.top, args.problem)
         if not written:

@@ -6,7 +6,7 @@ import sys
 import time
 
 from ..errors import InputError
-from .common import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK
+from .common import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report
 
 
 def register(sub) -> None:
@@ -20,6 +20,7 @@ def register(sub) -> None:
     s.add_argument("--resume", action="store_true",
                    help="continue an interrupted study in --out, solving only the missing cases")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_html_report(s, "the study (figures, cases table, summary)")
     s.set_defaults(func=cmd_study)
 
 
@@ -75,6 +76,7 @@ def cmd_study(args) -> int:
 
     from ..study import load_study, run_study
 
+    check_html_report(args.report)
     study = load_study(args.study)
     if args.workers is not None and args.workers < 0:
         raise InputError(f"--workers must be 0 or more, got {args.workers}")
@@ -98,6 +100,13 @@ def cmd_study(args) -> int:
     print(f"study {study.name}: {s.total} cases; {s.solved} solved now in {s.time:.1f} s on {s.backend}"
           + (f" ({s.workers} workers)" if s.workers else "")
           + (f", {s.resumed} kept from an earlier run" if s.resumed else "") + f"; {s.failed} failed")
+    if args.report:
+        from ..report.html import study_page, write_page
+        from ..study.table import results_table
+
+        md = Path(s.files["report"]).read_text(encoding="utf-8") if "report" in s.files else ""
+        write_page(study_page(study, results_table(study, out), md), args.report)
+        s.files["html report"] = args.report
     for name, path in s.files.items():
         print(f"  {name}: {path}")
     notes = []

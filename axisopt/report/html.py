@@ -1,0 +1,358 @@
+"""Self-contained HTML reports: one file with the summary first, then sections, figures drawn with plotly
+(its JavaScript inlined once, so the file opens offline and can be mailed on), readable on a phone.
+
+:class:`Page` collects blocks (key figures, text, preformatted tables, plotly figures) under headings; the
+``*_page`` builders turn an evaluation, a solve result, a comparison, a study table or a diagnosis into a
+Page.  plotly is an optional dependency (``pip install 'axisopt[html]'``); without it :func:`require_plotly`
+is a one-line error.  Nothing here prints; :func:`write_page` writes atomically."""
+
+from __future__ import annotations
+
+import html
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import InputError
+from ..units import N_PER_UM
+
+_CSS = """
+:root { color-scheme: light; --ink:#1d2330; --muted:#5b6475; --line:#d9dee7; --ok:#1a7f37; --bad:#c62828; }
+* { box-sizing: border-box; }
+body { font: 15px/1.45 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; color: var(--ink);
+       margin: 0 auto; padding: 12px; max-width: 1100px; }
+h1 { font-size: 1.35em; margin: .3em 0; } h2 { font-size: 1.1em; margin: 1.4em 0 .4em;
+     border-bottom: 1px solid var(--line); padding-bottom: .2em; }
+p.sub { color: var(--muted); margin: 0 0 .8em; }
+nav { font-size: .9em; margin: .4em 0 1em; } nav a { display: inline-block; margin: 0 .9em .2em 0; }
+.cards { display: grid; grid-template-columns: repeat(auto-fill, minmax(150px, 1fr)); gap: 8px; }
+.card { border: 1px solid var(--line); border-radius: 6px; padding: 6px 9px; }
+.card .k { color: var(--muted); font-size: .8em; } .card .v { font-size: 1.15em; font-weight: 600; }
+.card.bad { border-color: var(--bad); } .card.bad .v { color: var(--bad); }
+.card.ok .v { color: var(--ok); }
+pre { overflow-x: auto; font-size: 12px; line-height: 1.3; background: #f6f8fa; padding: 8px; border-radius: 6px; }
+.scroll { overflow-x: auto; }
+table { border-collapse: collapse; font-size: 13px; } th, td { padding: 3px 8px; border-bottom: 1px solid var(--line);
+        text-align: right; white-space: nowrap; } th:first-child, td:first-child { text-align: left; }
+td.bad { color: var(--bad); font-weight: 600; } td.ok { color: var(--ok); }
+.fig { width: 100%; min-height: 320px; }
+footer { color: var(--muted); font-size: .8em; margin-top: 2em; }
+"""
+
+
+def require_plotly():
+    try:
+        import plotly  # noqa: F401
+    except ImportError:
+        raise InputError("the HTML report needs plotly: pip install 'axisopt[html]'", where="--report") from None
+
+
+@dataclass
+class Page:
+    """An HTML report under construction: ``cards`` (label, value, state) first, then the sections."""
+
+    title: str
+    subtitle: str = ""
+    cards: list = field(default_factory=list)
+    sections: list = field(default_factory=list)  # (heading, [html fragments])
+
+    def card(self, label: str, value: str, state: str = "") -> None:
+        self.cards.append((label, value, state))
+
+    def section(self, heading: str) -> list:
+        body: list = []
+        self.sections.append((heading, body))
+        return body
+
+    def render(self) -> str:
+        import plotly
+        from plotly.offline import get_plotlyjs
+
+        cards = "".join(f'<div class="card {s}"><div class="k">{_e(k)}</div><div class="v">{_e(v)}</div></div>'
+                        for k, v, s in self.cards)
+        nav = "".join(f'<a href="#s{i}">{_e(h)}</a>' for i, (h, _) in enumerate(self.sections))
+        body = "".join(f'<h2 id="s{i}">{_e(h)}</h2>' + "".join(parts) for i, (h, parts) in enumerate(self.sections))
+        return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+                f"<title>{_e(self.title)}</title><style>{_CSS}</style>"
+                f"<script>{get_plotlyjs()}</script></head><body>"
+                f"<h1>{_e(self.title)}</h1>" + (f'<p class="sub">{_e(self.subtitle)}</p>' if self.subtitle else "")
+                + f'<div class="cards">{cards}</div><nav>{nav}</nav>{body}'
+                f"<footer>axisopt report; figures by plotly {plotly.__version__} (inlined, works offline)"
+                "</footer></body></html>\n")
+
+
+def _e(text) -> str:
+    return html.escape(str(text))
+
+
+def pre(text: str) -> str:
+    return f"<pre>{_e(text)}</pre>"
+
+
+def para(text: str) -> str:
+    return f"<p>{_e(text)}</p>"
+
+
+def table(head, rows, states=None) -> str:
+    """A table; ``states`` (optional) gives per row the class of its last cell ('ok' / 'bad')."""
+    th = "".join(f"<th>{_e(h)}</th>" for h in head)
+    trs = []
+    for i, r in enumerate(rows):
+        cells = [f"<td>{_e(c)}</td>" for c in r]
+        if states is not None and states[i]:
+            cells[-1] = f'<td class="{states[i]}">{_e(r[-1])}</td>'
+        trs.append("<tr>" + "".join(cells) + "</tr>")
+    return f'<div class="scroll"><table><thead><tr>{th}</tr></thead><tbody>{"".join(trs)}</tbody></table></div>'
+
+
+def figure(fig, height: int = 420) -> str:
+    """A plotly figure as a div (the page inlines plotly.js once)."""
+    fig.update_layout(height=height, margin=dict(l=55, r=15, t=40, b=45), template="plotly_white",
+                      legend=dict(orientation="h", y=-0.18))
+    return '<div class="fig">' + fig.to_html(full_html=False, include_plotlyjs=False,
+                                             config={"responsive": True, "displaylogo": False}) + "</div>"
+
+
+def write_page(page: Page, path) -> None:
+    from ..fileio import write_text_atomic
+
+    if not str(path).lower().endswith((".html", ".htm")):
+        raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
+    require_plotly()
+    write_text_atomic(str(path), page.render(), what="HTML report")
+
+
+# ------------------------------------------------------------------------------------------- figures
+def profiles_figure(evaluations, labels, limits=None):
+    """Axial stiffness and first natural frequency over the stroke, one line per evaluation."""
+    from plotly.subplots import make_subplots
+
+    fig = make_subplots(rows=1, cols=2, subplot_titles=("axial stiffness [N/um]", "1st natural frequency [Hz]"))
+    for i, (ev, lab) in enumerate(zip(evaluations, labels)):
+        s = (ev.x - ev.design.axis.start_offset) * 1e3
+        color = _COLORS[i % len(_COLORS)]
+        fig.add_scatter(x=s, y=np.asarray(ev["k_total"]) / N_PER_UM, name=lab, line=dict(color=color),
+                        legendgroup=lab, row=1, col=1,
+                        hovertemplate="%{x:.0f} mm: %{y:.1f} N/um<extra>" + _e(lab) + "</extra>")
+        fig.add_scatter(x=s, y=np.asarray(ev["f1"]), name=lab, line=dict(color=color), legendgroup=lab,
+                        showlegend=False, row=1, col=2,
+                        hovertemplate="%{x:.0f} mm: %{y:.1f} Hz<extra>" + _e(lab) + "</extra>")
+    for key, col, scale, unit in (("min_stiffness", 1, N_PER_UM, "N/um"), ("min_frequency", 2, 1.0, "Hz")):
+        if limits and limits.get(key) is not None:
+            fig.add_hline(y=limits[key] / scale, line=dict(dash="dash", color="#c62828"), row=1, col=col,
+                          annotation_text=f"limit {limits[key] / scale:g} {unit}")
+    fig.update_xaxes(title_text="nut position from stroke start [mm]")
+    return fig
+
+
+_COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
+
+
+def chain_figure(ev):
+    """The axial stiffness chain at the softest point: compliance per component [um/kN]."""
+    import plotly.graph_objects as go
+
+    comps = {k: v for k, v in ev.components().items() if math.isfinite(v) and v > 0}
+    names = list(comps)
+    c = [1e9 / comps[n] for n in names]
+    fig = go.Figure(go.Bar(x=c, y=names, orientation="h", marker_color=["#c62828" if n == ev.weakest else "#1f77b4"
+                                                                         for n in names],
+                           hovertemplate="%{y}: %{x:.2f} um/kN<extra></extra>"))
+    fig.update_layout(title="compliance at the softest point [um/kN] (weakest link in red)",
+                      xaxis_title="um/kN", yaxis=dict(autorange="reversed"))
+    return fig
+
+
+# ------------------------------------------------------------------------------------------- pages
+def evaluation_cards(page: Page, ev) -> None:
+    from .evaluation import check_rows
+
+    k, _ = ev.minimum("k_total")
+    f, _ = ev.minimum("f1")
+    rows = check_rows(ev)
+    failed = [r["check"] for r in rows if not r["pass"]]
+    page.card("min axial stiffness", f"{k / N_PER_UM:,.1f} N/um")
+    page.card("min 1st frequency", f"{f:,.1f} Hz")
+    page.card("weakest link", ev.weakest)
+    page.card("total mass", f"{ev['total_mass']:,.1f} kg")
+    page.card("cost (illustrative)", f"{ev['cost']:,.0f} EUR")
+    page.card("checks", "all pass" if not failed else f"{len(failed)} fail", "ok" if not failed else "bad")
+
+
+def checks_table(ev) -> str:
+    from .evaluation import check_rows, fmt_value
+
+    head = ["check", "available", "needed", "margin", "result"]
+    body, states = [], []
+    for r in check_rows(ev):
+        u = f" {r['unit']}" if r["unit"] else ""
+        have = (f"{fmt_value(r['available_min'])}-{fmt_value(r['available'])}{u}" if r["check"] == "bearing_fit"
+                else ("n/a" if r["available"] is None else fmt_value(r["available"]) + u))
+        body.append([r["label"], have, (fmt_value(r["needed"]) + u) if r["needed"] else "none",
+                     "n/a" if r["margin"] is None else f"{r['margin']:.2f}", "pass" if r["pass"] else "FAIL"])
+        states.append("ok" if r["pass"] else "bad")
+    return table(head, body, states)
+
+
+def evaluation_page(ev, title: str | None = None) -> Page:
+    from .evaluation import evaluation_table
+
+    d = ev.design
+    page = Page(title or f"Axis evaluation: {d.name}",
+                f"{d.axis.mounting}, stroke {d.axis.stroke * 1e3:.0f} mm; parts "
+                + ", ".join(f"{k} {v}" for k, v in d.part_ids().items()))
+    evaluation_cards(page, ev)
+    page.section("Stiffness and frequency over the stroke").append(figure(profiles_figure([ev], [d.name])))
+    page.section("Stiffness chain").append(figure(chain_figure(ev), 300))
+    page.section("Checks").append(checks_table(ev))
+    page.section("Full evaluation (as printed)").append(pre(evaluation_table(ev)))
+    return page
+
+
+def solve_page(res, problem, text: str) -> Page:
+    """A solve: status and certificate first, the best design's profile (with the runners-up) or the Pareto
+    front as a scatter matrix, the checks of the best design, and the printed result."""
+    from ..model import evaluate
+    from .plots import distinct_labels
+
+    page = Page(f"Sizing: {res.problem}", f"{res.objective_label}; method {res.method}")
+    page.card("status", res.status, "ok" if res.status == "optimal" else "bad")
+    page.card("proven", "yes" if res.certificate.proven else "no", "ok" if res.certificate.proven else "")
+    page.card("combinations", f"{res.certificate.combinations:,}")
+    page.card("time", f"{res.time:.2f} s")
+    if res.pareto is not None:
+        page.card("Pareto points", str(len(res.pareto.points)))
+        page.section("Pareto front").append(figure(pareto_figure(res.pareto), 560))
+    elif res.best is not None and res.best.design is not None:
+        page.card("objective", f"{res.best.objective:,.3f} {res.objective_unit}")
+        cands = [res.best] + list(res.runners_up)
+        parts = [{"mounting": c.mounting, **c.parts()} for c in cands]
+        labels = distinct_labels(parts, [f"#{c.rank}" for c in cands]) if len(cands) > 1 else ["best"]
+        evs = [evaluate(c.design) for c in cands]
+        limits = {k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")}
+        page.section("Best designs over the stroke").append(figure(profiles_figure(evs, labels, limits)))
+        page.section("Checks of the best design").append(checks_table(evs[0]))
+    page.section("Result (as printed)").append(pre(text))
+    return page
+
+
+def pareto_figure(front):
+    """Scatter matrix of the chosen objectives: sampled feasible designs in grey, the front in colour."""
+    import plotly.graph_objects as go
+
+    from ..search.pareto import _FIELD
+
+    dims_front = [dict(label=f"{k.replace('_', ' ')} [{u}]" if u else k,
+                       values=[float(getattr(p, _FIELD[k])) for p in front.points])
+                  for k, u in zip(front.keys, front.units)]
+    fig = go.Figure()
+    if front.cloud is not None and len(front.cloud):
+        cloud = np.asarray(front.cloud)
+        fig.add_trace(go.Splom(dimensions=[dict(label=d["label"], values=cloud[:, i]) for i, d in
+                                           enumerate(dims_front)], name="feasible designs (sample)",
+                               marker=dict(size=3, color="#b0b7c3", opacity=0.4), diagonal_visible=False))
+    fig.add_trace(go.Splom(dimensions=dims_front, name="Pareto front", diagonal_visible=False,
+                           marker=dict(size=7, color="#d62728", line=dict(width=0.5, color="white")),
+                           text=[f"{p.screw} / {p.nut} / {p.bearing} / {p.guide}" for p in front.points]))
+    fig.update_layout(title="objectives pairwise (front in red, hover for parts)")
+    return fig
+
+
+def compare_page(items, text: str) -> Page:
+    from .plots import distinct_labels
+
+    page = Page("Comparison", ", ".join(c.label for c in items))
+    evs = [c.evaluation for c in items if c.evaluation is not None]
+    for c in items:
+        e = c.evaluation
+        if e is None:
+            page.card(c.label, c.solve["status"] if c.solve else "-", "bad")
+            continue
+        ok = min(e.checks().values()) >= 1.0
+        page.card(c.label, f"{e.minimum('k_total')[0] / N_PER_UM:,.1f} N/um, {e.minimum('f1')[0]:,.1f} Hz",
+                  "ok" if ok else "bad")
+    if evs:
+        labels = [c.label for c in items if c.evaluation is not None]
+        parts = [{"mounting": e.design.axis.mounting, **e.design.part_ids()} for e in evs]
+        if len(set(labels)) < len(labels):
+            labels = distinct_labels(parts)
+        page.section("Stiffness and frequency over the stroke").append(figure(profiles_figure(evs, labels)))
+    page.section("Side by side (as printed)").append(pre(text))
+    return page
+
+
+def study_page(study, df, text: str) -> Page:
+    """A study: counts by status, the objective against each numeric swept input, the results table."""
+    import pandas as pd
+    import plotly.graph_objects as go
+
+    from ..study.table import input_columns
+
+    page = Page(f"Trade study: {study.name}", f"{len(df)} cases")
+    for status, n in df["status"].value_counts().items():
+        page.card(str(status), str(int(n)), "ok" if status == "optimal" else "bad")
+    unit = df["objective_unit"].dropna().iloc[0] if df["objective_unit"].notna().any() else ""
+    for key, (name, _) in input_columns(study).items():
+        if name not in df or not pd.api.types.is_numeric_dtype(df[name]):
+            continue
+        fig = go.Figure()
+        ok = df["status"] == "optimal"
+        fig.add_scatter(x=df.loc[ok, name], y=df.loc[ok, "objective"], mode="markers", name="optimal",
+                        text=df.loc[ok, "case_id"] + ": " + df.loc[ok, "screw"].astype(str) + " / "
+                        + df.loc[ok, "nut"].astype(str), hovertemplate="%{text}<br>%{x}: %{y:.4g}<extra></extra>")
+        if (~ok).any():
+            ymin = float(df.loc[ok, "objective"].min()) if ok.any() else 0.0
+            fig.add_scatter(x=df.loc[~ok, name], y=[ymin] * int((~ok).sum()), mode="markers", name="no optimum",
+                            marker=dict(symbol="x", color="#c62828", size=9), text=df.loc[~ok, "status"],
+                            hovertemplate="%{text}<extra></extra>")
+        fig.update_layout(title=f"objective against {key}", xaxis_title=name, yaxis_title=f"objective [{unit}]")
+        page.section(f"Objective against {key}").append(figure(fig, 380))
+    shown = [c for c in ("case_id", *[n for n, _ in input_columns(study).values()], "status", "objective",
+                         "screw", "nut", "bearing", "guide", "min_stiffness [N/um]", "min_frequency [Hz]",
+                         "cost [EUR]") if c in df]
+    rows = [[_cell(v) for v in r] for r in df[shown].head(200).itertuples(index=False)]
+    page.section("Cases" + (" (first 200; all in results.csv)" if len(df) > 200 else "")).append(
+        table(shown, rows))
+    page.section("Summary (as written to report.md)").append(pre(text))
+    return page
+
+
+def _cell(v) -> str:
+    if isinstance(v, float):
+        return "-" if not math.isfinite(v) else f"{v:,.4g}"
+    return str(v)
+
+
+def diagnose_page(diag, text: str) -> Page:
+    """A diagnosis: the verdict first, then residuals against each factor before and after, and the text."""
+    from plotly.subplots import make_subplots
+
+    from ..identify.report import _FACTOR_DISPLAY, Y_UNIT, _split, diagnosis_dict
+
+    d = diagnosis_dict(diag)
+    page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why")
+    page.card("verdict", d["verdict"], "bad" if d["accepted"] else "ok")
+    page.card("held-out gain", f"{d['gain_percent']:.0f} %")
+    for a in d["accepted"]:
+        page.card(a["effect"], "; ".join(p["text"] for p in a["parameters"]) or a["finding"])
+    before = _split(diag.obs, diag.baseline.prediction - diag.y)
+    after = _split(diag.obs, diag.final.prediction - diag.y)
+    for o, rb, ra in zip(diag.obs, before, after):
+        facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
+        unit, f = Y_UNIT[o.kind]
+        fig = make_subplots(rows=1, cols=len(facs), shared_yaxes=True)
+        for j, (name, v) in enumerate(facs, start=1):
+            fu, fs, fo = _FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
+            x = np.asarray(v) * fs + fo
+            fig.add_scatter(x=x, y=rb * f, mode="markers", name="baseline", marker=dict(size=4, color="#9aa3b2"),
+                            showlegend=j == 1, row=1, col=j)
+            fig.add_scatter(x=x, y=ra * f, mode="markers", name=f"with {d['verdict']}", showlegend=j == 1,
+                            marker=dict(size=4, color="#d62728"), row=1, col=j)
+            fig.update_xaxes(title_text=f"{name} [{fu}]" if fu else name, row=1, col=j)
+        fig.update_yaxes(title_text=f"model - measured [{unit}]", row=1, col=1)
+        name = str(o.dataset.source).replace("\\", "/").rsplit("/", 1)[-1]
+        page.section(f"Residuals: {name}").append(figure(fig, 360))
+    page.section("Diagnosis (as printed)").append(pre(text))
+    return page
