@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import sys
+import textwrap
 
 from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, add_html_report, check_html_report, write_json, wrote
 
@@ -153,12 +154,12 @@ def format_result(res, top: int | None = None) -> str:
             for bd in res.binding:
                 gain = "-" if bd.objective_gain is None or not math.isfinite(bd.objective_gain) else \
                     f"{bd.objective_gain:+.4g} {res.objective_unit}"
-                L.append(f"  {bd.limit:<18}{_n(bd.value, 3):>12}{_n(bd.at_optimum, 3):>12}"
-                         f"{_n(bd.relaxed_to, 3):>12}{gain:>14}  {bd.unit}{'  BINDING' if bd.binding else ''}")
+                L.append(f"  {bd.limit:<18}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
+                         f"{_v(bd.relaxed_to):>12}{gain:>14}  {bd.unit}{'  BINDING' if bd.binding else ''}")
             for bd in res.binding:
                 if bd.binding:
                     verb = "raising" if bd.limit.startswith("max") else "lowering"
-                    L.append(f"  {verb} {bd.limit.replace('_', ' ')} to {_n(bd.relaxed_to, 3)} {bd.unit} buys "
+                    L.append(f"  {verb} {bd.limit.replace('_', ' ')} to {_v(bd.relaxed_to)} {bd.unit} buys "
                              f"{bd.objective_gain:+.4g} {res.objective_unit}")
         if res.runners_up:
             L.append("")
@@ -186,29 +187,52 @@ def format_result(res, top: int | None = None) -> str:
                  f"(not SUCCESS {c.nlp_failures}); feasible combinations not counted")
     else:
         L.append(f"  combinations {c.combinations:,}; feasible {c.feasible:,}"
-                 f"{' (screened)' if res.method == 'default' else ''}; pruned by bound {c.pruned_by_bound:,}; "
-                 f"exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} (failures {c.nlp_failures})")
+                 f"{' (screened)' if res.method == 'default' else ''}; pruned by bound {c.pruned_by_bound:,}")
+        L.append(f"  exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} (failures {c.nlp_failures})")
     gap = "0 (proven)" if c.proven and c.gap == 0 else ("unknown" if not math.isfinite(c.gap) else f"{c.gap:.3%}")
     L.append(f"  optimality gap {gap}"
              + (f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"
                 if c.screening_time else ""))
     for n in c.notes:
         L.append(f"  {n}")
-    return "\n".join(L)
+    return fit_lines("\n".join(L))
+
+
+def fit_lines(text: str, width: int = 100) -> str:
+    """Wrap each line longer than ``width`` at spaces, its continuation indented under it (tables are built
+    to fit; this catches prose: notes, misses, messages)."""
+    out = []
+    for line in text.split("\n"):
+        if len(line) <= width:
+            out.append(line)
+            continue
+        lead = " " * (len(line) - len(line.lstrip(" ")))
+        out.extend(textwrap.wrap(line, width, initial_indent="", subsequent_indent=lead + "    ",
+                                 break_on_hyphens=False, drop_whitespace=True) or [line])
+    return "\n".join(out)
 
 
 def _cand_table(cands, unit) -> str:
-    """Best designs, one row each; text columns as wide as their longest entry."""
-    slots = ("mounting", "screw", "nut", "bearing", "guide")
-    if any(c.motor for c in cands):
-        slots += ("motor", "coupling")
-    w = {k: max([len(k)] + [len(str(getattr(c, k))) for c in cands]) + 2 for k in slots}
-    L = ["  " + f"{'#':>2} " + "".join(f"{k:<{w[k]}}" for k in slots)
-         + f"{'preload N':>10}{'obj ' + unit:>14}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"]
+    """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
+    design, only the parts in which it differs from the one above)."""
+    slots = ("screw", "nut", "bearing", "guide", "motor", "coupling")
+    obj = f"obj {unit}" if unit != "-" else ""
+    L = [f"  {'#':>3} {'mounting':<17}{obj:>12}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"
+         f"{'preload N':>11}"]
+    prev = None
     for c in cands:
-        L.append("  " + f"{c.rank:>2} " + "".join(f"{str(getattr(c, k)):<{w[k]}}" for k in slots)
-                 + f"{c.nut_preload:>10.0f}{c.objective:>14.3f}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}"
-                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}")
+        val = f"{c.objective:,.3f}" if obj else ""
+        L.append(f"  {c.rank:>3} {c.mounting:<17}{val:>12}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}"
+                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}{c.nut_preload:>11.0f}")
+        parts = c.parts()
+        if prev is None:
+            shown = [f"{k} {parts[k]}" for k in slots if parts.get(k)]
+        else:
+            shown = [f"{k} {parts[k]}" for k in slots if parts.get(k) and parts.get(k) != prev.get(k)]
+            shown = ["same parts as above" if not shown else "as above but " + shown[0]] + shown[1:]
+        L.extend(textwrap.wrap("  ".join(shown), 100, initial_indent=" " * 8, subsequent_indent=" " * 8,
+                               break_on_hyphens=False))
+        prev = parts
     return "\n".join(L)
 
 
@@ -221,6 +245,13 @@ def format_pareto(front, top: int | None = None) -> str:
         L.append(f"  the first {len(shown)} by {front.keys[0]} shown (--top N for more, --json for all)")
     L.append(_cand_table(shown, "-"))
     return "\n".join(L)
+
+
+def _v(v) -> str:
+    """A limit or design value: 20,000 / 1,250 / 98.5 / 0.785 ('-' when missing)."""
+    if v is None or (isinstance(v, float) and not math.isfinite(v)):
+        return "-"
+    return _num(float(v)) if abs(v) >= 100 else f"{v:.4g}"
 
 
 def _num(v: float) -> str:
