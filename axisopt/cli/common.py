@@ -32,6 +32,45 @@ def check_html_report(path) -> None:
     require_plotly()
 
 
+def colour_wanted() -> bool:
+    """Colour on a terminal (rich installed, NO_COLOR unset); AXISOPT_COLOR=always|never overrides."""
+    import os
+    import sys
+
+    force = os.environ.get("AXISOPT_COLOR", "").lower()
+    if force == "never" or (os.environ.get("NO_COLOR") and force != "always"):
+        return False
+    try:
+        import rich  # noqa: F401
+    except ImportError:
+        return False
+    if force == "always":
+        return True
+    try:
+        return bool(sys.stdout.isatty())
+    except (AttributeError, ValueError):
+        return False
+
+
+def show(text: str) -> None:
+    """Print a command's text output; on a colour terminal FAIL (and a compare ' !') in red, pass in green,
+    the weakest link and binding limits in yellow.  Plain text when piped or redirected."""
+    if not colour_wanted():
+        print(text)
+        return
+    import sys
+
+    from rich.console import Console
+    from rich.text import Text
+
+    t = Text(text)
+    t.highlight_regex(r"\bFAIL\b| !(?=\n|$)|\bNO\b$", "bold red")
+    t.highlight_regex(r"(?<=  )pass\b", "green")
+    t.highlight_regex(r"<- weakest link|\bBINDING\b", "yellow")
+    Console(file=sys.stdout, highlight=False, soft_wrap=True,
+            force_terminal=True, color_system="standard").print(t)
+
+
 def wrote(path, quiet: bool) -> None:
     if not quiet:
         print(f"\nreport written to {path}")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, write_json, wrote
+from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json, wrote
 
 
 def register(sub) -> None:
@@ -25,7 +25,7 @@ def cmd_compare(args) -> int:
     items = load_compared(args.files)
     text = compare_table(items)
     if args.json != "-":
-        print(text)
+        show(text)
     if args.json:
         write_json(compare_dict(items), args.json)
     if args.csv:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, write_json, wrote
+from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json, wrote
 
 
 def register(sub) -> None:
@@ -46,7 +46,7 @@ def cmd_evaluate(args) -> int:
 
         resp = frf(ev)
     if args.json != "-":
-        print(evaluation_table(ev))
+        show(evaluation_table(ev))
         if rows is not None:
             from ..report.methods import methods_table
 

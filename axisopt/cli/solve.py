@@ -6,7 +6,7 @@ import math
 import sys
 import textwrap
 
-from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, add_html_report, check_html_report, write_json, wrote
+from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, add_html_report, check_html_report, show, write_json, wrote
 
 
 def register(sub) -> None:
@@ -47,7 +47,7 @@ def cmd_solve(args) -> int:
     quiet = args.json == "-"
     text = format_result(res, top=args.top) if not quiet or args.report else ""
     if not quiet:
-        print(text)
+        show(text)
     if args.json:
         d = res.to_dict()
         if res.best is not None and res.best.design is not None:

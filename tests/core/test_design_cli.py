@@ -164,3 +164,21 @@ def test_named_method_with_data_prints_it(capsys):
     assert main(["evaluate", str(ROOT / "problems" / "vmc_x_design.yaml"), "--methods", "nut:catalog,screw:eq7"]) == 0
     out = capsys.readouterr().out
     assert "catalog eq. 9" in out and "eq. 7-8" in out and "Hertz" not in out
+
+
+def test_colour_only_on_request_or_terminal(monkeypatch, capsys):
+    """Plain text when captured (not a terminal); AXISOPT_COLOR=always colours FAIL red and pass green;
+    NO_COLOR wins over a terminal."""
+    pytest.importorskip("rich")
+    design = str(ROOT / "problems" / "paper_3_1_3_d40.yaml")  # fails critical speed and nut life
+    assert main(["evaluate", design]) == 0
+    assert "\x1b[" not in capsys.readouterr().out
+    monkeypatch.setenv("AXISOPT_COLOR", "always")
+    assert main(["evaluate", design]) == 0
+    out = capsys.readouterr().out
+    assert "\x1b[1;31mFAIL\x1b[0m" in out and "\x1b[32mpass\x1b[0m" in out
+    monkeypatch.setenv("AXISOPT_COLOR", "")
+    monkeypatch.setenv("NO_COLOR", "1")
+    monkeypatch.setattr("sys.stdout.isatty", lambda: True, raising=False)
+    assert main(["evaluate", design]) == 0
+    assert "\x1b[" not in capsys.readouterr().out
