@@ -58,10 +58,10 @@ from pathlib import Path
 from types import MappingProxyType
 
 from .catalog import STATUSES, USER_STATUS, Catalog
-from .design import MOUNTINGS, Axis, catalog_for, read_axis
+from .design import _CATALOGS, _DESCRIPTION, _NAME, AXIS_SPEC, MOUNTINGS, Axis, catalog_for, read_axis
 from .errors import InputError
 from .model import CHECKS
-from .yamlio import Section, close_matches, read_yaml
+from .yamlio import Key, Section, Spec, close_matches, read_yaml
 
 OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto")
 PERFORMANCE = ("stiffness", "frequency")
@@ -191,24 +191,107 @@ class Problem:
         return replace(self, objective=objective)
 
 
+# ------------------------------------------------------------------------------ the YAML keys (one table)
+# The one declaration of a problem file's keys: the readers below read them by it (Section.read) and
+# `axisopt schema problem` writes it out.  What a Key cannot say (a weight's scale follows its weight, catalog
+# names are checked against the catalogs loaded) stays in the readers.
+
+_LIMIT_DOCS = {
+    "max_moving_mass": "moving mass at most this", "max_total_mass": "total mass of the axis parts at most this",
+    "max_cost": "cost of the parts at most this", "max_drag_torque": "drag torque (nut and bearings) at most this",
+    "min_life": "nut L10 life at least this (the axis.required_life check applies too)",
+    "min_stiffness": "axial stiffness at least this (minimum over the stroke)",
+    "min_frequency": "first natural frequency at least this (minimum over the stroke)",
+    "max_backlash": "axial play of the nut at most this (default 0: preloaded nuts only)",
+    "max_inertia_ratio": "load / rotor inertia ratio at the motor at most this",
+}
+MARGINS_SPEC = Spec("margins", "smallest accepted margin per check (default 1.0; 0 disables the check)",
+                    {c: Key("number", f"smallest accepted {c.replace('_', ' ')} margin", minimum=0.0)
+                     for c in CHECKS})
+LIMITS_SPEC = Spec("limits", "limits on the model's outputs (each with its unit)", {
+    **{key: Key("quantity", _LIMIT_DOCS[key], kind=kind, positive=key not in _ZERO_ALLOWED,
+                non_negative=key in _ZERO_ALLOWED)
+       for key, (kind, *_rest) in LIMITS.items()},
+    "margins": Key("section", spec=MARGINS_SPEC),
+})
+WEIGHTS_SPEC = Spec("weights", "weighted objective: weight per performance value", {
+    k: Key("number", f"weight of the {k}", minimum=0.0) for k in PERFORMANCE})
+SCALE_SPEC = Spec("scale", "weighted objective: the scale of each weighted value (one per weight)", {
+    "stiffness": Key("quantity", "stiffness scale", kind="stiffness", positive=True, example="100 N/um"),
+    "frequency": Key("quantity", "frequency scale", kind="frequency", positive=True, example="100 Hz"),
+})
+OBJECTIVE_SPEC = Spec("objective", "what to maximise", {
+    "mode": Key("choice", "objective mode", required=True, choices=OBJECTIVE_MODES),
+    "weights": Key("section", "weighted: sum of weight * value / scale", spec=WEIGHTS_SPEC),
+    "scale": Key("section", "weighted: the scale of each weighted value", spec=SCALE_SPEC),
+    "order": Key("names", "lexicographic: stiffness and frequency, first the primary", choices=PERFORMANCE,
+                 minimum=2, maximum=2),
+    "tolerance": Key("number", "lexicographic: keep designs within this fraction of the best primary (below 1)",
+                     minimum=0.0, default=0.0),
+    "pareto": Key("names", "pareto: two or more objectives", choices=PARETO_KEYS, minimum=2),
+})
+SLOT_IDS_SPEC = Spec("slots", "part ids per slot", {
+    slot: Key("names", f"{slot} ids from the catalogs") for slot in SLOTS})
+_CATALOG_NAMES = "(each one the catalogs hold)"
+RESTRICTIONS_SPEC = Spec("catalog", "which catalog parts and mountings the search may use", {
+    "mountings": Key("names", "screw mountings to search (default: [axis.mounting])", choices=MOUNTINGS,
+                     minimum=1),
+    "vendors": Key("names", f"vendors of the mechanical parts {_CATALOG_NAMES}", minimum=1),
+    "nut_types": Key("names", f"nut types {_CATALOG_NAMES}", minimum=1),
+    "bearing_arrangements": Key("names", f"bearing arrangements {_CATALOG_NAMES}", minimum=1),
+    "bearing_preload": Key("names", f"bearing preload classes {_CATALOG_NAMES}", minimum=1),
+    "guide_types": Key("names", f"guide types {_CATALOG_NAMES}", minimum=1),
+    "guide_preload": Key("names", f"guide preload levels or vendor classes {_CATALOG_NAMES}", minimum=1),
+    "status": Key("names", "row provenance (catalogs/SOURCES.md; default: vendor, stiffness-derived, user)",
+                  choices=STATUSES, minimum=1),
+    "require": Key("section", "only these part ids per slot", spec=SLOT_IDS_SPEC),
+    "exclude": Key("section", "never these part ids per slot", spec=SLOT_IDS_SPEC),
+    "drive": Key("choice", "motor and coupling are search choices (default: yes when a motor or coupling "
+                 "filter or requirement is given)", choices=(True, False, "yes", "no")),
+    "motor_vendors": Key("names", f"motor vendors {_CATALOG_NAMES}", minimum=1),
+    "motor_series": Key("names", f"motor series {_CATALOG_NAMES}", minimum=1),
+    "coupling_series": Key("names", f"coupling series {_CATALOG_NAMES}", minimum=1),
+    "max_motor_flange": Key("quantity", "the motor's (square) flange size at most this", kind="length",
+                            positive=True, example="130 mm"),
+})
+PRELOAD_RANGE_SPEC = Spec("nut_preload", "nut preload range (intersected with each nut's preload range)", {
+    "min": Key("quantity", "lowest preload", kind="force", non_negative=True, default=0.0),
+    "max": Key("quantity", "highest preload", kind="force", positive=True, default=float("inf"), example="5 kN"),
+})
+CONTINUOUS_SPEC = Spec("continuous", "bounds of the continuous variables", {
+    "nut_preload": Key("section", spec=PRELOAD_RANGE_SPEC)})
+PROBLEM_SPEC = Spec("problem", "a sizing problem: the axis, the objective, limits and catalog restrictions", {
+    "name": _NAME, "description": _DESCRIPTION, "catalogs": _CATALOGS,
+    "axis": Key("section", "as in a design (axis.mounting is the default mounting)", required=True,
+                spec=AXIS_SPEC),
+    "objective": Key("one_of", "what to maximise (default: stiffness)",
+                     options=(Key("choice", "a mode without options", choices=PERFORMANCE),
+                              Key("section", spec=OBJECTIVE_SPEC))),
+    "limits": Key("section", spec=LIMITS_SPEC),
+    "catalog": Key("section", spec=RESTRICTIONS_SPEC),
+    "continuous": Key("section", spec=CONTINUOUS_SPEC),
+})
+
+
 # ----------------------------------------------------------------------------------------- reading
 
 def load_problem(path, catalog: Catalog | None = None) -> Problem:
     """Read a problem YAML; every error names the file and key (InputError)."""
     path = Path(path)
-    root = Section(read_yaml(path), str(path))
+    root = Section(read_yaml(path), str(path), spec=PROBLEM_SPEC)
     cat = catalog if catalog is not None else catalog_for(root, path.parent)
     return read_problem(root, cat, name=path.stem)
 
 
 def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Problem:
-    name = root.string("name", name)
-    root.string("description")
-    axis, assumed = read_axis(root.section("axis", required=True))
+    root = root.declared(PROBLEM_SPEC)
+    name = root.read("name", name)
+    root.read("description")
+    axis, assumed = read_axis(root.read("axis"))
     objective = _read_objective(root)
-    limits, margins = _read_limits(root.section("limits"))
-    restr = _read_restrictions(root.section("catalog"), catalog, axis)
-    pmin, pmax = _read_continuous(root.section("continuous"))
+    limits, margins = _read_limits(root.read("limits"))
+    restr = _read_restrictions(root.read("catalog"), catalog, axis)
+    pmin, pmax = _read_continuous(root.read("continuous"))
     root.done()
     return Problem(axis=axis, catalog=catalog, objective=objective, limits=limits, margins=margins,
                    restrictions=restr, preload_min=pmin, preload_max=pmax, name=name,
@@ -219,43 +302,42 @@ def _read_objective(root: Section) -> Objective:
     node = root.raw("objective")
     if node is None:
         return Objective()
-    if isinstance(node.value, str):
+    if isinstance(node.value, str):  # all modes, so that the options-taking ones get a helpful message
         mode = root.choice("objective", OBJECTIVE_MODES)
         if mode in ("weighted", "lexicographic", "pareto"):
             raise root.error("objective", f"mode '{mode}' needs a mapping (see the problem format)")
         return Objective(mode=mode)
     sec = root.section("objective")
-    mode = sec.choice("mode", OBJECTIVE_MODES, required=True)
+    mode = sec.read("mode")
     kw: dict = {"mode": mode}
     if mode == "weighted":
-        wsec = sec.section("weights", required=True)
+        wsec = sec.section("weights", required=True)  # required in this mode only
         weights = []
         for k in wsec.keys():
             if k not in PERFORMANCE:
                 raise wsec.error(k, f"unknown objective '{k}'; use {', '.join(PERFORMANCE)}")
-            w = wsec.number(k, minimum=0.0)
+            w = wsec.read(k)
             weights.append((k, float(w)))
         wsec.done()
         ssec = sec.section("scale", required=True)
         scale = []
         for k, _ in weights:
-            kind = "stiffness" if k == "stiffness" else "frequency"
-            scale.append((k, ssec.quantity(k, kind, required=True, positive=True)))
+            scale.append((k, ssec.quantity(k, SCALE_SPEC.keys[k].kind, required=True, positive=True)))
         ssec.done()
         if not weights or sum(w for _, w in weights) <= 0:
             raise sec.error("weights", "at least one weight must be positive")
         kw.update(weights=tuple(weights), scale=tuple(scale))
     elif mode == "lexicographic":
-        order = sec.string_list("order", None)
+        order = sec.read("order")
         if not order or len(order) != 2 or set(order) != set(PERFORMANCE):
             raise sec.error("order", "lexicographic order must list stiffness and frequency, e.g. "
                                      "[frequency, stiffness]")
-        tol = sec.number("tolerance", 0.0, minimum=0.0)
+        tol = sec.read("tolerance")
         if tol >= 1:
             raise sec.error("tolerance", f"relative tolerance must be below 1, got {tol}")
         kw.update(order=tuple(order), tolerance=float(tol))
     elif mode == "pareto":
-        keys = sec.string_list("pareto", None)
+        keys = sec.read("pareto")
         if not keys or len(keys) < 2:
             raise sec.error("pareto", f"list two or more of {', '.join(PARETO_KEYS)}")
         for k in keys:
@@ -274,19 +356,18 @@ def _read_limits(sec: Section | None):
     limits = dict(DEFAULT_LIMITS)
     if sec is None:
         return tuple(sorted(limits.items())), tuple(margins.items())
-    for key, (kind, _unit, _f, _out, _sense) in LIMITS.items():
-        zero_ok = key in _ZERO_ALLOWED
-        v = sec.quantity(key, kind, positive=not zero_ok, non_negative=zero_ok)
+    for key in LIMITS:
+        v = sec.read(key)
         if v is not None:
             limits[key] = v
-    msec = sec.section("margins")
+    msec = sec.read("margins")
     if msec is not None:
         for k in msec.keys():
             if k not in CHECKS:
                 near = close_matches(k, CHECKS)
                 hint = f"; did you mean '{near[0]}'?" if near else ""
                 raise msec.error(k, f"unknown check '{k}'{hint} (checks: {', '.join(CHECKS)})")
-            margins[k] = float(msec.number(k, minimum=0.0))
+            margins[k] = float(msec.read(k))
         msec.done()
     sec.done()
     return tuple(sorted(limits.items())), tuple(margins.items())
@@ -294,7 +375,7 @@ def _read_limits(sec: Section | None):
 
 def _catalog_names(sec: Section, key: str, known) -> tuple | None:
     """A non-empty list of names under ``key``, each one of ``known()`` (None when the key is absent)."""
-    vals = sec.string_list(key, None)
+    vals = sec.read(key)
     if vals is None:
         return None
     if not vals:
@@ -311,7 +392,7 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
     if sec is None:
         return Restrictions(mountings=(axis.mounting,))
     kw: dict = {}
-    drive = sec.choice("drive", (True, False, "yes", "no"), None)
+    drive = sec.read("drive")
     # the drive is searched when asked for: 'drive: yes', or a motor/coupling filter or requirement
     req = sec.node.value.get("require")
     asked = any(sec.has(k) for k in ("motor_vendors", "motor_series", "coupling_series")) or (
@@ -324,11 +405,11 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         vals = _catalog_names(sec, key, lambda t=table, c=col: sorted(set(catalog.table(t)[c])))
         if vals is not None:
             kw[key] = vals
-    flange = sec.quantity("max_motor_flange", "length", positive=True)
+    flange = sec.read("max_motor_flange")
     if flange is not None:
         kw["max_motor_flange"] = flange
         kw["drive"] = kw["drive"] or drive is None
-    mounts = sec.string_list("mountings", None)
+    mounts = sec.read("mountings")
     if mounts is not None:
         for m in mounts:
             if m not in MOUNTINGS:
@@ -358,14 +439,14 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         if vals is not None:
             kw[key] = vals
     for key in ("require", "exclude"):
-        s = sec.section(key)
+        s = sec.read(key)
         if s is None:
             continue
         out = []
         for slot in s.keys():
             if slot not in SLOTS:
                 raise s.error(slot, f"unknown part slot '{slot}'; use {', '.join(SLOTS)}")
-            ids = s.string_list(slot, [])
+            ids = s.read(slot, [])
             for i in ids:
                 catalog.part(SLOT_TABLE[slot], i, source=s.source, key=s.where(slot))
             out.append((slot, tuple(ids)))
@@ -380,11 +461,11 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
 def _read_continuous(sec: Section | None):
     if sec is None:
         return 0.0, float("inf")
-    pre = sec.section("nut_preload")
+    pre = sec.read("nut_preload")
     lo, hi = 0.0, float("inf")
     if pre is not None:
-        lo = pre.quantity("min", "force", 0.0, non_negative=True)
-        hi = pre.quantity("max", "force", float("inf"), positive=True)
+        lo = pre.read("min")
+        hi = pre.read("max")
         if lo > hi:
             raise pre.error("max", f"nut_preload max {hi:.0f} N is below min {lo:.0f} N")
         pre.done()
@@ -392,4 +473,5 @@ def _read_continuous(sec: Section | None):
     return lo, hi
 
 
-__all__ = ["Problem", "Objective", "Restrictions", "LIMITS", "load_problem", "read_problem", "InputError"]
+__all__ = ["Problem", "Objective", "Restrictions", "LIMITS", "PROBLEM_SPEC", "load_problem", "read_problem",
+           "InputError"]

@@ -30,10 +30,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _commands():
     """One module per subcommand, each with ``register(sub)``; they import their heavy parts lazily."""
-    from . import compare, diagnose, evaluate, parts, solve, study
+    from . import compare, diagnose, evaluate, parts, schema, solve, study
 
     return [evaluate.register, solve.register, diagnose.register, compare.register, study.register,
-            parts.register]
+            parts.register, schema.register]
 
 
 def main(argv=None) -> int:

@@ -26,7 +26,8 @@ import yaml
 
 from ..errors import InputError
 from ..physics.screw import E_STEEL
-from ..yamlio import Section, close_matches, read_yaml
+from ..units import KINDS
+from ..yamlio import Key, Section, Spec, close_matches, read_yaml
 from .effects import library
 
 FORMAT = 1
@@ -86,14 +87,14 @@ def save_calibration(diag, path, design=None, sources=()) -> dict:
 
 
 def _read(path) -> dict:
-    from ..units import KINDS, parse_quantity
+    from ..units import parse_quantity
 
-    root = Section(read_yaml(path), str(path))
-    ver = root.number("axisopt_calibration", required=True, integer=True)
+    root = Section(read_yaml(path), str(path), spec=CALIBRATION_SPEC)
+    ver = root.number("axisopt_calibration", required=True, integer=True)  # any whole number: a clear message
     if ver != FORMAT:
         raise root.error("axisopt_calibration", f"unsupported calibration format {ver} (expected {FORMAT})")
-    design = root.string("design")
-    root.string("verdict")
+    design = root.read("design")
+    root.read("verdict")
     root.raw("data")
     root.raw("applied")
     root.raw("not_applied")
@@ -119,16 +120,17 @@ def _read(path) -> dict:
             s.done()
         return out
 
-    base = values(root.section("baseline") or Section(_empty(), str(path)), BASELINE_KINDS, "baseline")
+    base = values(root.read("baseline") or Section(_empty(), str(path), spec=BASELINE_SPEC), BASELINE_KINDS,
+                  "baseline")
     effects = []
     node = root.raw("effects")
     if node is not None and node.value is not None and not isinstance(node.value, list):
         raise root.error("effects", "expected a list of effects")
     lib = library()
     for item in node.value if node is not None and node.value else []:
-        s = Section(item, str(path), "effects")
-        name = s.choice("name", tuple(lib), required=True)
-        ps = s.section("parameters", required=True)
+        s = Section(item, str(path), "effects", EFFECT_SPEC)
+        name = s.choice("name", tuple(lib), required=True)  # the library now (effects may be registered)
+        ps = s.read("parameters")
         vals = values(ps)
         if not vals:
             raise s.error("parameters", f"effect '{name}' lists no parameters")
@@ -145,6 +147,47 @@ POSITIVE_PARAMS = frozenset({"screw_modulus", "damping_ratio"})
 
 # The baseline parameters a calibration may carry (identify.measure.baseline_params) and their kinds.
 BASELINE_KINDS = {"screw_modulus": "pressure", "coulomb_friction": "force", "damping_ratio": "dimensionless"}
+
+
+# ------------------------------------------------------------------------------ the YAML keys (one table)
+# The one declaration of a calibration file's keys: _read reads them by it and `axisopt schema calibration`
+# writes it out.  An effect's parameter names are the effect's own (the library checks them on apply).
+
+def _param_spec(name: str, doc: str, kind: str | None) -> Spec:
+    """A calibrated value: {value, sigma, kind}; ``kind`` None: any units.KINDS kind, named in the file."""
+    positive = name in POSITIVE_PARAMS
+    return Spec(name, doc, {
+        "value": Key("quantity", "the calibrated value, with a unit of its kind" + (
+            " (positive)" if positive else " (not negative)" if kind in NON_NEGATIVE_KINDS else ""),
+            required=True, kind=kind, positive=positive, non_negative=not positive and kind in NON_NEGATIVE_KINDS),
+        "sigma": Key("any", "its standard uncertainty (informational)"),
+        "kind": Key("choice", "the quantity kind the value is read as", required=True,
+                    choices=(kind,) if kind is not None else tuple(KINDS)),
+    })
+
+
+BASELINE_SPEC = Spec("baseline", "calibrated baseline parameters (those diagnose fits)", {
+    name: Key("section", spec=_param_spec(name, f"baseline {name.replace('_', ' ')}", kind))
+    for name, kind in BASELINE_KINDS.items()})
+PARAMETERS_SPEC = Spec("parameters", "the effect's calibrated parameters, by the effect's parameter names", {},
+                       extra=Key("section", spec=_param_spec("parameter", "a calibrated effect parameter", None)),
+                       extra_doc="a parameter name of the effect")
+EFFECT_SPEC = Spec("effect", "an accepted effect with its calibrated parameters", {
+    "name": Key("choice", "the effect (axisopt's effect library)", required=True, choices=tuple(library())),
+    "parameters": Key("section", required=True, spec=PARAMETERS_SPEC),
+})
+CALIBRATION_SPEC = Spec("calibration", "a calibration saved by axisopt diagnose (applied by evaluate "
+                        "--calibration)", {
+    "axisopt_calibration": Key("number", "format version", required=True, integer=True, minimum=FORMAT,
+                               maximum=FORMAT),
+    "design": Key("string", "name of the design the calibration was fitted on (applies to that design only)"),
+    "data": Key("any", "measurement files the fit used (informational)"),
+    "verdict": Key("string", "diagnose's verdict (informational)"),
+    "baseline": Key("section", spec=BASELINE_SPEC),
+    "effects": Key("list", "accepted effects", items=Key("section", spec=EFFECT_SPEC)),
+    "applied": Key("any", "what evaluate applies (informational, recomputed on apply)"),
+    "not_applied": Key("any", "what evaluate cannot represent (informational)"),
+})
 
 
 class _Reads(dict):

@@ -35,10 +35,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..design import catalog_for
+from ..design import _DESCRIPTION, _NAME, catalog_for
 from ..errors import InputError
-from ..problem import read_problem
-from ..yamlio import Node, Section, _plain, read_yaml
+from ..problem import PROBLEM_SPEC, read_problem
+from ..yamlio import Key, Node, Section, Spec, _plain, read_yaml
 
 METHODS = ("default", "exhaustive", "bonmin")
 COMBINE = ("product", "zip")
@@ -94,15 +94,67 @@ class Study:
                 "method": self.method, "name": self.name}
 
 
+# ------------------------------------------------------------------------------ the YAML keys (one table)
+# The one declaration of a study file's keys: load_study reads them by it and `axisopt schema study` writes
+# it out.  A sweep's keys are the user's (dotted paths into the problem); their values are checked against
+# the base problem when the study is read, which no table can say.
+
+MAX_VALUES = 100_000  # values of one sweep (random n, grid steps)
+MAX_CASES = 1_000_000  # cases of one study
+SWEEP_KEY = r"[A-Za-z_][A-Za-z0-9_-]*(\.[A-Za-z_][A-Za-z0-9_-]*)*"
+
+_END = Key("quantity", "a number with the swept key's unit (the same unit at both ends)", required=True,
+           example="500 mm")
+_N = Key("number", "number of samples", required=True, integer=True, minimum=1, maximum=MAX_VALUES)
+_SEED = Key("number", "seed of the random generator", required=True, integer=True, minimum=0, maximum=2**63 - 1)
+RANDOM_RANGE_SPEC = Spec("random_range", "seeded uniform samples between low and high", {
+    "low": _END, "high": _END, "n": _N, "seed": _SEED,
+    "integer": Key("choice", "round the samples to whole numbers", choices=(True, False), default=False),
+})
+RANDOM_CHOICE_SPEC = Spec("random_choice", "seeded random picks from a list of values", {
+    "choice": Key("list", "the values to pick from", required=True, minimum=1,
+                  items=Key("any", "a value of the swept key")),
+    "n": _N, "seed": _SEED,
+})
+RANDOM_SWEEP_SPEC = Spec("random_sweep", "seeded random values", {
+    "random": Key("one_of", "samples of a range, or picks from a list", required=True,
+                  options=(Key("section", spec=RANDOM_RANGE_SPEC), Key("section", spec=RANDOM_CHOICE_SPEC))),
+})
+RANGE_SPEC = Spec("range", "an evenly spaced grid from..to", {
+    "from": _END, "to": _END,
+    "steps": Key("number", "number of grid values", required=True, integer=True, minimum=1, maximum=MAX_VALUES),
+    "spacing": Key("choice", "linear, or log (even ratios)", choices=("linear", "log"), default="linear"),
+})
+SWEEP_SPEC = Spec("sweep", "the swept keys: dotted paths into the problem (e.g. axis.stroke)", {},
+                  extra=Key("one_of", "the values of a swept key", options=(
+                      Key("list", "a list of values", minimum=1, items=Key("any", "a value of the swept key")),
+                      Key("section", spec=RANGE_SPEC),
+                      Key("section", spec=RANDOM_SWEEP_SPEC),
+                      Key("one_of", "one value, set for every case",
+                          options=(Key("string"), Key("number"), Key("choice", choices=(True, False)))))),
+                  extra_doc="a dotted path into the problem YAML, e.g. axis.stroke or limits.max_cost",
+                  extra_pattern=f"^{SWEEP_KEY}$")
+STUDY_SPEC = Spec("study", "a study: a base problem and sweeps over its keys, expanded into cases", {
+    "name": _NAME, "description": _DESCRIPTION,
+    "base": Key("one_of", "the base problem", required=True,
+                options=(Key("string", "path of a problem YAML, relative to this file"),
+                         Key("section", "an inline problem", spec=PROBLEM_SPEC))),
+    "method": Key("choice", "solve method for every case", choices=METHODS, default="default"),
+    "combine": Key("choice", "product: every combination; zip: the n-th value of each key", choices=COMBINE,
+                   default="product"),
+    "sweep": Key("section", "the swept keys", required=True, spec=SWEEP_SPEC),
+})
+
+
 def load_study(path) -> Study:
     """Read a study YAML into a :class:`Study` with its expanded cases (InputError naming the key)."""
     path = Path(path)
     src = str(path)
-    root = Section(read_yaml(path), src)
-    name = root.string("name", path.stem)
-    description = root.string("description", "") or ""
-    method = root.choice("method", METHODS, "default")
-    combine = root.choice("combine", COMBINE, "product")
+    root = Section(read_yaml(path), src, spec=STUDY_SPEC)
+    name = root.read("name", path.stem)
+    description = root.read("description", "") or ""
+    method = root.read("method")
+    combine = root.read("combine")
     base_node = root.raw("base", required=True)
     if isinstance(base_node.value, str):
         bpath = (path.parent / base_node.value)
@@ -114,7 +166,7 @@ def load_study(path) -> Study:
         base, base_source, base_dir = base_node, src, str(path.parent)
     else:
         raise root.error("base", "expected the path of a problem YAML or an inline problem mapping")
-    sweep_sec = root.section("sweep", required=True)
+    sweep_sec = root.read("sweep")
     sweeps = tuple(_read_sweep(sweep_sec, k) for k in sweep_sec.keys())
     if not sweeps:
         raise root.error("sweep", "list at least one key to sweep")
@@ -128,14 +180,10 @@ def load_study(path) -> Study:
 
 # ------------------------------------------------------------------------------------------ sweeps
 
-MAX_VALUES = 100_000  # values of one sweep (random n, grid steps)
-MAX_CASES = 1_000_000  # cases of one study
-
-
 def _read_sweep(sec: Section, key: str) -> Sweep:
     node = sec.raw(key)
     where = sec.where(key)
-    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_-]*(\.[A-Za-z_][A-Za-z0-9_-]*)*", key):
+    if not re.fullmatch(SWEEP_KEY, key):
         raise sec.error(key, f"sweep key '{key}' must be a dotted path into the problem, e.g. axis.stroke")
     v = node.value
     if isinstance(v, list):
@@ -144,11 +192,11 @@ def _read_sweep(sec: Section, key: str) -> Sweep:
             raise sec.error(key, "empty list of values")
         return Sweep(key, values, "list", node.line, tuple(_unique(values)))
     if isinstance(v, dict) and "random" in v:
-        sub = Section(node, sec.source, sec.key_path(key))
+        sub = Section(node, sec.source, sec.key_path(key), RANDOM_SWEEP_SPEC)
         rs = sub.section("random", required=True)
         sub.done()
-        n = int(rs.number("n", required=True, integer=True, minimum=1, maximum=MAX_VALUES))
-        seed = rs.number("seed", required=True, integer=True, minimum=0, maximum=2**63 - 1)
+        n = int(rs.read("n"))
+        seed = rs.read("seed")
         rng = np.random.default_rng(int(seed))
         if rs.has("choice"):
             choices = rs.value("choice")
@@ -169,10 +217,10 @@ def _read_sweep(sec: Section, key: str) -> Sweep:
         vals = tuple(_fmt(x, unit, integer) for x in draws)
         return Sweep(key, vals, "random", node.line, (_fmt(lo, unit, integer), _fmt(hi, unit, integer)))
     if isinstance(v, dict) and ("from" in v or "to" in v or "steps" in v):
-        rs = Section(node, sec.source, sec.key_path(key))
+        rs = Section(node, sec.source, sec.key_path(key), RANGE_SPEC)
         lo, hi, unit = _pair(rs, "from", "to")
-        steps = int(rs.number("steps", required=True, integer=True, minimum=1, maximum=MAX_VALUES))
-        spacing = rs.choice("spacing", ("linear", "log"), "linear")
+        steps = int(rs.read("steps"))
+        spacing = rs.read("spacing")
         rs.done()
         if spacing == "log":
             if lo <= 0 or hi <= 0:
@@ -361,5 +409,6 @@ def short_message(exc: InputError) -> str:
     return re.sub(r"^line 0, (key '[^']*'): ", r"\1: ", msg)
 
 
-__all__ = ["Study", "Sweep", "Case", "load_study", "expand", "apply_overrides", "build_problem", "short_message"]
+__all__ = ["Study", "Sweep", "Case", "STUDY_SPEC", "load_study", "expand", "apply_overrides", "build_problem",
+           "short_message"]
 
