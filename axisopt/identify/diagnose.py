@@ -78,6 +78,7 @@ class Diagnosis:
     holdout_baseline: np.ndarray
     holdout_final: np.ndarray
     param_owner: dict = field(default_factory=dict)  # effect parameter name -> effect name
+    rejected: list = field(default_factory=list)  # (round, Candidate, [implausibility texts]) never accepted
 
     @property
     def y(self) -> np.ndarray:
@@ -121,17 +122,72 @@ def _split(obs, v):
     return out
 
 
-def noise_sigma_rel(o: Obs, resid: np.ndarray) -> float:
-    """Noise floor relative to the weight scale, from successive differences of the residual sorted by
-    the recorded factors (smooth misfit cancels, noise does not); robust (median) form."""
-    keys = [o.Z[i] for i in range(o.Z.shape[0])][::-1]
-    order = np.lexsort(keys) if keys else np.arange(o.n)
-    r = (resid / o.scale)[order]
-    d = np.diff(r)
-    if len(d) < 3:
-        return 0.01
-    s = 1.4826 * float(np.median(np.abs(d - np.median(d)))) / math.sqrt(2.0)
-    return max(s, 1e-6)
+# Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode): the noise
+# floor never takes differences across them.
+_CATEGORICAL_FACTORS = ("direction", "cycle", "mode")
+MIN_REPLICATE_DOF = 5
+
+
+def noise_sigma_rel(o: Obs, resid: np.ndarray) -> tuple[float, str]:
+    """Noise floor relative to the weight scale, and how it was estimated.
+
+    1. Replicates: rows with the same value of every recorded factor (a reading repeated at the same
+       position, load, direction, cycle, ...) differ by noise alone, whatever the model gets wrong; the pooled
+       within-replicate standard deviation is used when it has at least 5 degrees of freedom.
+    2. Otherwise second differences of the residual along one continuous factor within rows that share all
+       other factors (:func:`_second_difference_sigma`): misfit constant or linear along it cancels, and an
+       effect that alternates between neighbouring rows (hysteresis, a direction-dependent friction) is
+       never differenced across."""
+    r = resid / o.scale
+    if o.factors:
+        keys = np.column_stack([np.asarray(v, dtype=float) for v in o.factors.values()])
+        _, inv, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
+        inv = np.asarray(inv).ravel()
+        rep = counts[inv] >= 2
+        dof = int(rep.sum() - np.count_nonzero(counts >= 2))
+        if dof >= MIN_REPLICATE_DOF:
+            means = np.bincount(inv, weights=r, minlength=len(counts)) / counts
+            ss = float(np.sum(((r - means[inv]) ** 2)[rep]))
+            s = math.sqrt(ss / dof)
+            return max(s, 1e-6), f"pooled scatter of {int(np.count_nonzero(counts >= 2))} replicate groups " \
+                                 f"({dof} degrees of freedom)"
+    s, how = _second_difference_sigma(o, r)
+    if s is not None:
+        return s, how
+    return 0.01, "assumed 1 % (too few rows to estimate)"
+
+
+def _second_difference_sigma(o: Obs, r: np.ndarray):
+    """Noise from second differences of the residual along one continuous factor, within rows that share
+    every other factor (and the factor's sign): misfit that is constant or linear along that factor cancels
+    (an offset per load direction, a stiffness error growing with the load, a friction term set by the
+    normal load).  Tried along each continuous factor with four or more levels; the smallest estimate is kept
+    (structure only adds).  Gaussian noise: var(e1 - 2 e2 + e3) = 6 sigma^2; median-absolute-deviation form."""
+    names = list(o.factors)
+    if not names:
+        return None, ""
+    cols = {k: np.asarray(o.factors[k], dtype=float) for k in names}
+    best = None
+    for inner in names:
+        v = cols[inner]
+        if inner in _CATEGORICAL_FACTORS or len(np.unique(v)) < 4:
+            continue
+        keys = [cols[k] for k in names if k != inner] + [np.sign(v)]
+        order = np.lexsort((v, *keys))
+        same = np.ones(len(order) - 1, dtype=bool)
+        for k in keys:
+            ks = k[order]
+            same &= ks[1:] == ks[:-1]
+        rs = r[order]
+        d2 = rs[2:] - 2.0 * rs[1:-1] + rs[:-2]
+        ok = same[1:] & same[:-1]
+        d2 = d2[ok]
+        if len(d2) < 5:
+            continue
+        s = 1.4826 * float(np.median(np.abs(d2 - np.median(d2)))) / math.sqrt(6.0)
+        if best is None or s < best[0]:
+            best = (max(s, 1e-6), f"second differences along {inner} within rows sharing the other factors")
+    return best if best is not None else (None, "")
 
 
 def _check_positions(ds, plant) -> None:
@@ -218,12 +274,12 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 2) -> Diagn
     # baseline, then noise weights from its residuals, then refit with those weights
     prob, base_fit = _fit_effects(ctx, [], base, {}, set())
     for o, r in zip(obs, _split(obs, base_fit.prediction - prob.y)):
-        o.sigma_rel = noise_sigma_rel(o, r)
+        o.sigma_rel, o.noise_method = noise_sigma_rel(o, r)
     prob, base_fit = _fit_effects(ctx, [], base, {}, set())
     folds = folds_for(obs)
     cv_base, ho_base = cv_rmse(prob, base_fit.theta, folds)
 
-    accepted, rounds, effects = [], [], []
+    accepted, rounds, effects, rejected = [], [], [], []
     cur_fit, cur_cv, cur_ho = base_fit, cv_base, ho_base
     ctx.resid = _split(obs, base_fit.prediction - prob.y)
     active = [e for e in pool if e.applicable(ctx)]
@@ -248,9 +304,21 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 2) -> Diagn
             break
         scored.sort(key=lambda c: c.dbic)
         rounds.append(scored)
-        top = scored[0]
-        if top.dbic >= ACCEPT_DBIC:
+        # a candidate that explains the data only with a value outside its physical range is not accepted:
+        # it is reported ("would need ...") and the next candidate in BIC order is considered
+        top = None
+        for c in scored:
+            if c.dbic >= ACCEPT_DBIC:
+                break
+            bad = plausibility(c.fit, effects + [c.effect], names=c.names)
+            if bad:
+                rejected.append((len(rounds), c, bad))
+                continue
+            top = c
             break
+        if top is None:
+            break
+        scored = [top] + [c for c in scored if c is not top]
         for c in scored[:2]:
             if c.dbic < ACCEPT_DBIC or c is top:
                 c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
@@ -282,14 +350,15 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 2) -> Diagn
         ho_base,
         cur_ho,
         owner,
+        rejected,
     )
 
 
-def plausibility(res: FitResult, effects) -> list:
-    """Flags for fitted values outside their physically plausible range."""
+def plausibility(res: FitResult, effects, names=None) -> list:
+    """Flags for fitted values outside their physically plausible range (only ``names`` when given)."""
     out = []
     for p, v in zip(res.params, res.theta):
-        if p.plausible is None:
+        if p.plausible is None or (names is not None and p.name not in names):
             continue
         lo, hi = p.plausible
         if not lo <= v <= hi:

@@ -101,6 +101,8 @@ class SupportCondition(Effect):
                 0.0,
                 100.0 * kb,
                 typical=kb,
+                plausible=(0.0, 1.5 * kb),
+                plausible_note="between a free end (0) and the far bearing set's catalog stiffness + 50 %",
             )
         ]
 
@@ -153,8 +155,9 @@ class HertzContact(Effect):
                 0.02 * fa,
                 50.0 * fa,
                 typical=fa,
-                plausible=(0.5 * fa, 1.5 * fa),
-                plausible_note="within -50/+50 % of the design preload",
+                plausible=(0.2 * fa, 1.5 * fa),
+                plausible_note="a worn nut keeps 20 % of its preload or more; 50 % above the design is not "
+                "assembled",
             )
         ]
 
@@ -236,6 +239,8 @@ class FrictionHysteresis(Effect):
                 0.0,
                 1e5,
                 typical=f0,
+                plausible=(0.0, 5.0 * f0),
+                plausible_note="at most five times the axis's friction force (guides, nut, bearings)",
             )
         ]
 
@@ -284,6 +289,8 @@ class ThermalDrift(Effect):
                 -1e-3 / 3600.0,
                 1e-3 / 3600.0,
                 typical=5e-6 / 3600.0,
+                plausible=(-50e-6 / 3600.0, 50e-6 / 3600.0),
+                plausible_note="a screw warming or cooling by up to about 4 K per hour",
             )
         ]
 
@@ -318,6 +325,8 @@ class ComplianceOffset(Effect):
                 -0.9 * c,
                 100.0 * c,
                 typical=c,
+                plausible=(-0.5 * c, 3.0 * c),
+                plausible_note="a component up to 4x softer than its catalog value, or the chain up to 2x stiffer",
             )
         ]
 
@@ -371,6 +380,8 @@ class PreloadLoss(Effect):
                 -0.5 / cmax,
                 0.95 / cmax,
                 typical=0.1 / cmax,
+                plausible=(0.0, 0.8 / cmax),
+                plausible_note="preload only falls with running, and not to nothing within one test",
             )
         ]
 
@@ -406,6 +417,7 @@ class AddedMass(Effect):
                 10.0 * m,
                 typical=0.2 * m,
                 plausible=(-0.5 * m, 1.0 * m),
+                plausible_note="a workpiece or fixture up to the table's own mass; at most half of it missing",
             )
         ]
 
@@ -469,6 +481,8 @@ class ExtraMode(Effect):
                 1e-3,
                 0.5,
                 typical=0.03,
+                plausible=(0.002, 0.2),
+                plausible_note="structural modes 0.2-20 %",
             ),
             Param(
                 "mode_stiffness",
@@ -534,6 +548,8 @@ class Stribeck(Effect):
                 0.0,
                 1e6,
                 typical=fc,
+                plausible=(0.0, 2.0 * fc),
+                plausible_note="breakaway up to three times the Coulomb level",
             ),
             Param(
                 "stribeck_velocity",
@@ -585,6 +601,8 @@ class Viscous(Effect):
                 0.0,
                 1e9,
                 typical=typ,
+                plausible=(0.0, 20.0 * typ),
+                plausible_note="viscous force at the top test speed up to 20x the axis's Coulomb friction",
             )
         ]
 
@@ -660,6 +678,8 @@ class DirectionAsymmetry(Effect):
                 -1e6,
                 1e6,
                 typical=max(ctx.plant.coulomb, 10.0),
+                plausible=(-max(ctx.plant.coulomb, 10.0), max(ctx.plant.coulomb, 10.0)),
+                plausible_note="a direction difference up to the axis's whole Coulomb friction",
             )
         ]
 

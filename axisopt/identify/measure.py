@@ -59,6 +59,7 @@ class Obs:
     group_name: str
     factors: dict
     sigma_rel: float = 0.01  # noise relative to scale, estimated after the baseline fit
+    noise_method: str = ""  # how sigma_rel was estimated (reported)
 
     @property
     def n(self) -> int:
@@ -175,6 +176,8 @@ def baseline_params(kinds, plant) -> list:
                 0.0,
                 math.inf,
                 typical=max(plant.coulomb, 10.0),
+                plausible=(0.25 * plant.coulomb, 4.0 * plant.coulomb),
+                plausible_note="the catalog drag of nut, bearings and guides within a factor of 4",
             )
         )
     if "frf" in kinds:

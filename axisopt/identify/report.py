@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from ..report import save_figure, write_text_atomic
-from .diagnose import _split, residual_table
+from .diagnose import _split, plausibility, residual_table
 from .measure import Y_UNIT
 
 
@@ -54,6 +54,7 @@ def diagnosis_dict(diag) -> dict:
                 "rows": o.dataset.n,
                 "excluded_rows": [{"line": ln, "reason": why} for ln, why in o.dataset.excluded],
                 "noise_floor": s * Y_UNIT[o.kind][1],
+                "noise_method": o.noise_method,
                 "unit": Y_UNIT[o.kind][0],
                 "cv_groups": o.group_name,
             }
@@ -94,7 +95,15 @@ def diagnosis_dict(diag) -> dict:
                 _rmse_units(diag, diag.holdout_baseline), _rmse_units(diag, diag.holdout_final)
             )
         ],
-        "final": {"parameters": _params(diag.final), "status": diag.final.status},
+        "final": {"parameters": _params(diag.final), "status": diag.final.status,
+                  "plausibility": plausibility(diag.final, [])},
+        "rejected": [
+            {"round": rnd, "effect": c.effect.name, "dBIC": c.dbic, "would_need": bad,
+             "parameters": _params(c.fit, c.names)}
+            for rnd, c, bad in diag.rejected
+        ],
+        "other_explanations": other_explanations(diag),
+        "quantity": quantity_notes(diag),
     }
     for a in diag.accepted:
         names = [n for n, e in owner.items() if e == a.effect.name]
@@ -103,13 +112,15 @@ def diagnosis_dict(diag) -> dict:
             {
                 "effect": a.effect.name,
                 "title": a.effect.title,
-                "finding": a.effect.describe(a.fit.values(), diag.plant),
-                "parameters": _params(a.fit, names),
+                # the numbers of the final joint fit (the one --save-calibration writes), not of the round
+                # in which the effect was accepted
+                "finding": a.effect.describe(diag.final.values(), diag.plant),
+                "parameters": _params(diag.final, names),
                 "dBIC": a.dbic,
                 "cv_rmse_before": a.cv_before,
                 "cv_rmse_after": a.cv_after,
                 "gain_percent": a.gain,
-                "plausibility": a.plausibility,
+                "plausibility": plausibility(diag.final, [], names=names) + _undetermined(diag.final, names),
                 "runner_up": None
                 if r is None
                 else {"effect": r.effect.name, "dBIC": r.dbic, "margin": r.dbic - a.dbic},
@@ -119,9 +130,62 @@ def diagnosis_dict(diag) -> dict:
 
 
 def _flags(res):
-    from .diagnose import plausibility
-
     return plausibility(res, [])
+
+
+def _undetermined(res, names) -> list:
+    """Parameters whose standard deviation exceeds their value: the data do not fix them."""
+    out = []
+    for p, v, s in zip(res.params, res.theta, res.sigma):
+        if p.name in names and math.isfinite(s) and v != 0 and s > abs(v):
+            out.append(f"{p.name} not determined by these data (+-{p.show(s):.3g} on {p.show(v):.4g} {p.unit})")
+    return out
+
+
+def other_explanations(diag) -> list:
+    """What else the fit points to: a screw modulus outside steel's range means the chain is softer (or
+    stiffer) than the model, which a component off its catalog value explains as well; name each component
+    and the stiffness it would need to carry the same compliance at mid-stroke."""
+    out = []
+    vals = diag.final.values()
+    E = vals.get("screw_modulus")
+    pl = diag.plant
+    if E is None or 0.9 * pl.youngs_modulus <= E <= 1.1 * pl.youngs_modulus:
+        return out
+    x = pl.start_offset + 0.5 * pl.stroke
+    dc = x / (E * pl.area) - x / (pl.youngs_modulus * pl.area)  # extra compliance the modulus absorbs [m/N]
+    side = "softer" if dc > 0 else "stiffer"
+    text = (f"the screw modulus fitted at {E / 1e9:.0f} GPa (steel {pl.youngs_modulus / 1e9:.0f} GPa) makes the chain "
+            f"{abs(dc) * 1e9:.2f} um/kN {side} at mid-stroke; the same would follow from")
+    alts = []
+    for name, k in (("the support bearing set", pl.k_bearing), ("the nut", pl.k_nut)):
+        c_new = 1.0 / k + dc
+        if c_new > 0:
+            alts.append(f"{name} at {1.0 / c_new / 1e6:,.0f} N/um instead of its catalog {k / 1e6:,.0f} N/um")
+    alts.append("an unlisted compliance (housing, nut bracket, coupling) of "
+                f"{1.0 / abs(dc) / 1e6:,.0f} N/um in series" if dc > 0 else "a stiffer structure than modelled")
+    out.append(text + " " + "; or ".join(alts) + " (test: --effects compliance_offset)")
+    return out
+
+
+def quantity_notes(diag) -> list:
+    """How a measured quantity was converted for the model (torque data are fitted as force at the table)."""
+    out = []
+    pl = diag.plant
+    for o in diag.obs:
+        if o.kind == "friction" and "drag_torque" in o.dataset.columns:
+            out.append(f"{Path(o.dataset.source).name}: drag torque T fitted as table force F = 2 pi eta T / l "
+                       f"(lead l = {pl.lead * 1e3:g} mm, screw efficiency eta = {pl.efficiency:g}, the "
+                       f"model's value); forces below are also given as screw torque T = F l / (2 pi eta)")
+    return out
+
+
+def _torque_of(diag):
+    """N at the table -> N.m at the screw, when a friction dataset was given as torque (else None)."""
+    pl = diag.plant
+    if any(o.kind == "friction" and "drag_torque" in o.dataset.columns for o in diag.obs):
+        return pl.lead / (2.0 * math.pi * pl.efficiency)
+    return None
 
 
 def diagnosis_text(diag) -> str:
@@ -132,9 +196,22 @@ def diagnosis_text(diag) -> str:
             f"  {ds['test']:9s} {ds['file']}: {ds['rows']} rows, noise floor {ds['noise_floor']:.3g} "
             f"{ds['unit']}, held-out groups by {ds['cv_groups']}"
         )
+        L.append(f"    noise floor from {ds['noise_method']}")
         for ex in ds["excluded_rows"]:
             L.append(f"    excluded line {ex['line']}: {ex['reason']}")
-    L.append("baseline fit: " + ", ".join(f"{p['name']} = {p['text']}" for p in d["baseline"]["parameters"]))
+    torque = _torque_of(diag)
+
+    def ptext(p):
+        t = f"{p['name']} = {p['text']}"
+        if torque is not None and p["unit"] == "N":
+            t += f" (= {p['value'] * torque:.4g} N.m at the screw)"
+        return t
+    for q in d["quantity"]:
+        L.append(f"  {q}")
+    if d["baseline"]["parameters"]:
+        L.append("baseline fit: " + ", ".join(ptext(p) for p in d["baseline"]["parameters"]))
+    else:
+        L.append("baseline fit: no free parameter for these data (the design's own model, as catalogued)")
     for f in d["baseline"]["plausibility"]:
         L.append(f"  check: {f}")
     for ds, rows in zip(d["datasets"], d["residuals_baseline"]):
@@ -151,16 +228,30 @@ def diagnosis_text(diag) -> str:
             cv = f"  held-out gain {c['cv_gain_percent']:.0f} %" if c["cv_gain_percent"] is not None else ""
             ps = ", ".join(f"{p['name']} = {p['text']}" for p in c["parameters"])
             L.append(f"  {c['effect']:24s} {c['dBIC']:9.1f}{cv}   {ps}")
-    L.append(f"verdict: {d['verdict']}")
+    for r in d["rejected"]:
+        L.append(f"not accepted (round {r['round']}): {r['effect']} (dBIC {r['dBIC']:.1f}) would need "
+                 + "; ".join(r["would_need"]))
+    L.append(f"verdict: {d['verdict']}" + ("  (values of the final joint fit, as saved by --save-calibration)"
+                                             if d["accepted"] else ""))
     for a in d["accepted"]:
         L.append(f"  {a['effect']}: {a['finding']}")
         for p in a["parameters"]:
-            L.append(f"    {p['name']} = {p['text']}  ({p['label']})")
+            L.append(f"    {ptext(p)}  ({p['label']})")
         for f in a["plausibility"]:
             L.append(f"    check: {f}")
         ru = a["runner_up"]
         beat = f"; beat {ru['effect']} (dBIC {ru['dBIC']:.1f}, margin {ru['margin']:.1f})" if ru else ""
         L.append(f"    dBIC {a['dBIC']:.1f}, held-out gain {a['gain_percent']:.0f} %{beat}")
+    if d["accepted"]:
+        base_final = [p for p in d["final"]["parameters"]
+                      if p["name"] not in diag.param_owner]
+        if base_final:
+            L.append("  with it, the baseline: " + ", ".join(ptext(p) for p in base_final))
+    for f in d["final"]["plausibility"]:
+        if not any(f in a["plausibility"] for a in d["accepted"]):
+            L.append(f"  check: {f}")
+    for e in d["other_explanations"]:
+        L.append(f"  also consider: {e}")
     for h in d["holdout_rmse_units"]:
         L.append(
             f"held-out RMSE {Path(h['file']).name}: {h['baseline']:.3g} -> {h['final']:.3g} {h['unit']} "

@@ -131,7 +131,7 @@ def test_quoted_figures_match(cmd, in_readme, in_output, tmp_path):
 
 
 def test_noise_floor_quoted(tmp_path):
-    r = re.search(r"near the ([\d.]+) um noise floor", " ".join(README.split()))
+    r = re.search(r"at the ([\d.]+) um noise floor", " ".join(README.split()))
     _, out = _run("axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
                   tmp_path)
     o = re.search(r"noise floor ([\d.]+) um", out)
