@@ -195,21 +195,9 @@ def format_result(res, top: int | None = None) -> str:
                 if c.screening_time else ""))
     for n in c.notes:
         L.append(f"  {n}")
+    from ..report.evaluation import fit_lines
+
     return fit_lines("\n".join(L))
-
-
-def fit_lines(text: str, width: int = 100) -> str:
-    """Wrap each line longer than ``width`` at spaces, its continuation indented under it (tables are built
-    to fit; this catches prose: notes, misses, messages)."""
-    out = []
-    for line in text.split("\n"):
-        if len(line) <= width:
-            out.append(line)
-            continue
-        lead = " " * (len(line) - len(line.lstrip(" ")))
-        out.extend(textwrap.wrap(line, width, initial_indent="", subsequent_indent=lead + "    ",
-                                 break_on_hyphens=False, drop_whitespace=True) or [line])
-    return "\n".join(out)
 
 
 def _cand_table(cands, unit) -> str:

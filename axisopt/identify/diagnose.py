@@ -170,7 +170,7 @@ def _second_difference_sigma(o: Obs, r: np.ndarray):
     best = None
     for inner in names:
         v = cols[inner]
-        if inner in _CATEGORICAL_FACTORS or len(np.unique(v)) < 4:
+        if inner in ("direction", "mode") or len(np.unique(v)) < 4:  # cycles are ordered: a trend cancels
             continue
         keys = [cols[k] for k in names if k != inner] + [np.sign(v)]
         order = np.lexsort((v, *keys))

@@ -43,6 +43,9 @@ FACTORS = {  # residual tables: column -> display (unit, factor)
     "frequency": ("position", "mode", "cycle"),
     "frf": ("frequency", "position", "cycle"),
 }
+# The measured column(s) of each test (what the model predicts).
+MEASURED_COLUMNS = {"stiffness": ("displacement",), "friction": ("friction_force", "drag_torque"),
+                    "frequency": ("frequency",), "frf": ("real", "imag", "magnitude", "phase")}
 Y_UNIT = {"stiffness": ("um", 1e6), "friction": ("N", 1.0), "frequency": ("Hz", 1.0), "frf": ("um/N", 1e6)}
 
 

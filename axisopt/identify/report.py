@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from ..report import save_figure, write_text_atomic
+from ..report.evaluation import fit_lines
 from .diagnose import _split, plausibility, residual_table
 from .measure import Y_UNIT
 
@@ -55,6 +56,7 @@ def diagnosis_dict(diag) -> dict:
                 "excluded_rows": [{"line": ln, "reason": why} for ln, why in o.dataset.excluded],
                 "noise_floor": s * Y_UNIT[o.kind][1],
                 "noise_method": o.noise_method,
+                "data_notes": data_notes(o),
                 "unit": Y_UNIT[o.kind][0],
                 "cv_groups": o.group_name,
             }
@@ -180,6 +182,29 @@ def quantity_notes(diag) -> list:
     return out
 
 
+def data_notes(o) -> list:
+    """What looks odd in the measured column itself: three or more consecutive identical readings (a held
+    or copied value) are named with their lines; they are kept in the fit."""
+    from .measure import MEASURED_COLUMNS
+
+    out = []
+    for col in MEASURED_COLUMNS.get(o.kind, ()):
+        v = o.dataset.columns.get(col)
+        if v is None or len(v) < 3:
+            continue
+        i = 0
+        while i < len(v):
+            j = i
+            while j + 1 < len(v) and v[j + 1] == v[i]:
+                j += 1
+            if j - i >= 2:
+                lines = o.dataset.lines
+                out.append(f"{col} repeats the same value on {j - i + 1} consecutive rows (lines "
+                           f"{int(lines[i])}-{int(lines[j])}): a held or copied reading? kept in the fit")
+            i = j + 1
+    return out
+
+
 def _torque_of(diag):
     """N at the table -> N.m at the screw, when a friction dataset was given as torque (else None)."""
     pl = diag.plant
@@ -190,17 +215,21 @@ def _torque_of(diag):
 
 def diagnosis_text(diag) -> str:
     d = diagnosis_dict(diag)
+    torque = _torque_of(diag)
+
+    def _nm(value, unit):
+        return f" (= {value * torque:.3g} N.m)" if torque is not None and unit == "N" else ""
     L = [f"diagnose: {d['design']}"]
     for ds in d["datasets"]:
         L.append(
             f"  {ds['test']:9s} {ds['file']}: {ds['rows']} rows, noise floor {ds['noise_floor']:.3g} "
-            f"{ds['unit']}, held-out groups by {ds['cv_groups']}"
+            f"{ds['unit']}{_nm(ds['noise_floor'], ds['unit'])}, held-out groups by {ds['cv_groups']}"
         )
         L.append(f"    noise floor from {ds['noise_method']}")
+        for note in ds["data_notes"]:
+            L.append(f"    note: {note}")
         for ex in ds["excluded_rows"]:
             L.append(f"    excluded line {ex['line']}: {ex['reason']}")
-    torque = _torque_of(diag)
-
     def ptext(p):
         t = f"{p['name']} = {p['text']}"
         if torque is not None and p["unit"] == "N":
@@ -256,8 +285,10 @@ def diagnosis_text(diag) -> str:
         L.append(
             f"held-out RMSE {Path(h['file']).name}: {h['baseline']:.3g} -> {h['final']:.3g} {h['unit']} "
             f"(gain {d['gain_percent']:.0f} %)"
+            + (f"; {h['baseline'] * torque:.3g} -> {h['final'] * torque:.3g} N.m at the screw"
+               if torque is not None and h["unit"] == "N" else "")
         )
-    return "\n".join(L)
+    return fit_lines("\n".join(L))
 
 
 # SI factor -> (display unit, scale, offset) for residual plots

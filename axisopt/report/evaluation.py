@@ -174,8 +174,9 @@ def evaluation_table(ev: Evaluation) -> str:
     parts = [f"screw {ids['screw']}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
              f"bearings {ids['bearing']}", f"guides {ids['guide']} x{a.guide_blocks}"]
     parts += [f"{slot} {ids[slot]}" for slot in ("motor", "coupling") if slot in ids]
-    lines.extend(textwrap.wrap("  ".join(parts), WIDTH, initial_indent="  ", subsequent_indent="  ",
-                               break_on_hyphens=False))
+    glued = "  ".join(p.replace(" ", "\0") for p in parts)  # break between parts, never inside one
+    lines.extend(w.replace("\0", " ") for w in textwrap.wrap(glued, WIDTH, initial_indent="  ",
+                                                             subsequent_indent="  ", break_on_hyphens=False))
     assumed = [k for k in d.assumed if not ((k == "motor_inertia" and d.motor is not None)
                                             or (k.startswith("coupling_") and d.coupling is not None))]
     if assumed:
@@ -285,3 +286,17 @@ def _thermal_line(ev: Evaluation) -> str:
                  f"({'absorbs the rise' if a.pretension is None else 'as given'}), bearing static load "
                  f"{v['bearing_static_load'] / 1e3:.1f} kN")
     return text
+
+
+def fit_lines(text: str, width: int = 100) -> str:
+    """Wrap each line longer than ``width`` at spaces, its continuation indented under it (tables are built
+    to fit; this catches prose: notes, misses, messages)."""
+    out = []
+    for line in text.split("\n"):
+        if len(line) <= width:
+            out.append(line)
+            continue
+        lead = " " * (len(line) - len(line.lstrip(" ")))
+        out.extend(textwrap.wrap(line, width, initial_indent="", subsequent_indent=lead + "    ",
+                                 break_on_hyphens=False, drop_whitespace=True) or [line])
+    return "\n".join(out)

@@ -116,6 +116,15 @@ FIGURES = [
     ("axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
      r"Held-out RMSE falls from ([\d.]+) um to\s+([\d.]+) um",
      r"held-out RMSE \S+: ([\d.]+) -> ([\d.]+) um(?s:.*)"),
+    ("axisopt diagnose problems/data/xjtu/xjtu_up_friction.csv --design problems/data/xjtu/xjtu_rig.yaml",
+     r"friction falls ([\d.]+) ± ([\d.]+) % of its initial value per 35 h",
+     r"preload_loss_rate = ([\d.]+) ± ([\d.]+) percent"),
+    ("axisopt diagnose problems/data/xjtu/xjtu_up_friction.csv --design problems/data/xjtu/xjtu_rig.yaml",
+     r"held-out RMSE ([\d.]+) -> ([\d.]+) N.m over held-out cycles \(gain (\d+) %\)",
+     r"(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain \d+ %\); ([\d.]+) -> ([\d.]+) N.m at the screw"),
+    ("axisopt diagnose problems/data/xjtu/xjtu_down_friction.csv --design problems/data/xjtu/xjtu_rig.yaml",
+     r"The 'down' screw gives ([\d.]+) % per cycle \(gain (\d+) %\)",
+     r"preload_loss_rate = ([\d.]+) ±(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain (\d+) %\)"),
 ]
 
 
