@@ -51,7 +51,7 @@ def _kind_of(path: Path) -> str:
     name = path.name
     if path.parent.name == "studies":
         return "study"
-    if "design" in name or name.startswith("paper_") or path.parent.name == "data":
+    if "design" in name or name.startswith("paper_") or "data" in path.parent.parts:
         return "design"
     if "problem" in name:
         return "problem"
