@@ -1,5 +1,8 @@
 """``axisopt diagnose DATA.csv [...] --design DESIGN.yaml [--report FILE.html|DIR] [--json FILE|-]
-[--save-calibration FILE.yaml] [--effects a,b,...] [--max-effects N]``"""
+[--save-calibration FILE.yaml] [--effects a,b,...] [--max-effects N] [--gain '0.85 N.m/A']``
+
+A first file with a ``time`` column (and no reduced-table columns) is a time record: the files go to the
+inverse dynamic identification of :mod:`axisopt.identify.idim` (first file estimation, others validation)."""
 
 from __future__ import annotations
 
@@ -8,6 +11,10 @@ from .common import EXIT_OK, write_json
 
 
 def cmd_diagnose(args) -> int:
+    from ..identify.timerecord import is_time_record
+
+    if args.data and is_time_record(args.data[0]):  # time records: IDIM (LS and IV), axisopt.identify.idim
+        return _cmd_diagnose_time(args)
     from ..design import load_design
     from ..identify import diagnose, plant_from_design, read_dataset
     from ..identify.calibration import save_calibration
@@ -57,6 +64,24 @@ def cmd_diagnose(args) -> int:
     return EXIT_OK
 
 
+def _cmd_diagnose_time(args) -> int:
+    from ..design import load_design
+    from ..identify import plant_from_design
+    from ..identify.idim import diagnose_time_files, time_diagnosis_dict, time_diagnosis_text
+
+    for opt, val in (("--report", args.report), ("--save-calibration", args.save_calibration)):
+        if val:
+            raise InputError(f"{opt} is not available for time records (use --json)")
+    names = [n.strip() for n in args.effects.split(",") if n.strip()] if args.effects else None
+    diag = diagnose_time_files(args.data, plant=plant_from_design(load_design(args.design)), gain=args.gain,
+                               candidates=names, max_effects=args.max_effects)
+    if args.json != "-":
+        print(time_diagnosis_text(diag))
+    if args.json:
+        write_json(time_diagnosis_dict(diag), args.json)
+    return EXIT_OK
+
+
 def register(sub) -> None:
     d = sub.add_parser("diagnose", help="fit measured data, name what the model gets wrong, measure the gain")
     d.add_argument("data", nargs="+", help="measured test CSV file(s) (units in headers)")
@@ -70,4 +95,7 @@ def register(sub) -> None:
         "--effects", metavar="A,B", help="only consider these effects (default: the whole library)"
     )
     d.add_argument("--max-effects", type=int, default=2, metavar="N", help="accept at most N effects (2)")
+    d.add_argument("--gain", metavar="'0.85 N.m/A'",
+                   help="time records with a current column: torque (N.m/A) or force (N/A) per ampere, for files "
+                        "without a '# gain:' line")
     d.set_defaults(func=cmd_diagnose)
