@@ -49,6 +49,7 @@ Nothing here imports the CLI or YAML.
 from __future__ import annotations
 
 import math
+import textwrap
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -78,7 +79,7 @@ PARAMS = {
     "M": ("moving mass", "mass"),
     "Fv": ("viscous friction", "damping"),
     "Fc": ("Coulomb friction", "effort"),
-    "offset": ("offset (gravity, sensor; includes (Fc+ - Fc-)/2)", "effort"),
+    "offset": ("offset (gravity, sensor, Coulomb asymmetry)", "effort"),
     "dFv": ("viscous asymmetry Fv+ - Fv-", "damping"),
     "Fs": ("Stribeck excess Fs - Fc", "effort"),
     "c1": ("Coulomb vs position, P1 coefficient", "effort"),
@@ -553,7 +554,7 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     for nm in names:
         e = EFFECTS[nm]
         if nm == "extra_mode" and peak[1] < PEAK_RATIO:
-            skipped[nm] = f"no peak in the residual spectrum (highest {peak[1]:.1f}x the median at {peak[0]:.0f} Hz)"
+            skipped[nm] = f"no residual spectral peak (at most {peak[1]:.1f}x the median, {peak[0]:.0f} Hz)"
         elif nm == "position_friction" and span < 0.1 * stroke_q:
             skipped[nm] = "the record covers less than 10 % of the stroke"
         else:
@@ -621,7 +622,7 @@ def _param_lines(q, est: Estimate, only=None, indent="    ") -> list:
             continue
         u, f = _unit(q, t)
         label = "moving inertia (motor side)" if (q, t) == ("torque", "M") else PARAMS[t][0]
-        out.append(f"{indent}{_sym(q, t):<7}{_fmt(v * f, s * f):>22} {u:<10} {label}")
+        out.append(f"{indent}{_sym(q, t):<7}{_fmt(v * f, s * f):>22} {u:<10} {label}".rstrip())
     if "vs" in est.shape and (only is None or "Fs" in only):
         u, f = UNITS[q]["speed"]
         out.append(f"{indent}{'vs':<7}{est.shape['vs'] * f:>22.4g} {u:<10} Stribeck velocity (1-D search)")
@@ -637,63 +638,87 @@ def _errors(diag, est) -> str:
     return ", ".join(parts)
 
 
+WIDTH = 100
+
+
+def _wrap(text: str, indent: str = "  ", cont: str = "      ") -> list:
+    return textwrap.wrap(text, WIDTH, initial_indent=indent, subsequent_indent=cont, break_on_hyphens=False)
+
+
+def _compact(q, est: Estimate, terms) -> str:
+    out = []
+    for t in terms:
+        i = est.terms.index(t)
+        u, f = _unit(q, t)
+        out.append(f"{_sym(q, t)} {_fmt(est.theta[i] * f, est.std[i] * f)} {u}")
+    if "vs" in est.shape and "Fs" in terms:
+        u, f = UNITS[q]["speed"]
+        out.append(f"vs {est.shape['vs'] * f:.3g} {u}")
+    fr = mode_frequency(est)
+    if fr is not None and "beta" in terms:
+        out.append(f"f_r {fr:.3g} Hz")
+    return ", ".join(out)
+
+
 def time_diagnosis_text(diag: TimeDiagnosis) -> str:
+    """Console text, at most 100 columns (prose wrapped with indented continuation)."""
     q = diag.quantity
     er, p = diag.estimation, diag.estimation.proc
     rec = er.record
     unit_eff = UNITS[q]["effort"][0]
+    spd_u, spd_f = UNITS[q]["speed"]
     L = [f"time-record identification (IDIM) of {diag.design.get('name', 'the axis')}: {q} data, "
          + ("table coordinate" if q == "force" else "motor angle coordinate")]
-    L.append(f"  estimation  {rec.name}: {rec.n} samples at {p.fs:.6g} Hz, {er.n} regression rows"
-             + (f"; {rec.gain_note}" if rec.gain_note else ""))
+    L += _wrap(f"estimation  {rec.name}: {rec.n} samples at {p.fs:.6g} Hz, {er.n} regression rows"
+               + (f"; {rec.gain_note}" if rec.gain_note else ""), cont="              ")
     for v in diag.validation:
         L.append(f"  validation  {v.record.name}: {v.record.n} samples, {v.n} regression rows")
-    L.append(f"  filter      zero-phase Butterworth (order {BUTTER_ORDER}, |H|^2 by FFT = forward-backward), "
-             f"cut-off {p.fc:.1f} Hz: {p.rule} (motion bandwidth {p.f_motion:.1f} Hz)")
-    L.append(f"  decimation  parallel: every column and the {q} low-passed at {p.fdec:.1f} Hz, every "
-             f"{p.nd}. row kept; rows below {p.vmin * UNITS[q]['speed'][1]:.3g} {UNITS[q]['speed'][0]} "
-             "or at reversals left out")
+    L += _wrap(f"filter      zero-phase Butterworth, order {BUTTER_ORDER} (|H|^2 by FFT, as forward-backward), "
+               f"cut-off {p.fc:.1f} Hz: {p.rule}; motion bandwidth {p.f_motion:.1f} Hz", cont="              ")
+    L += _wrap(f"decimation  parallel: every column and the {q} low-passed at {p.fdec:.1f} Hz, every {p.nd}th "
+               f"row kept; rows below {p.vmin * spd_f:.3g} {spd_u} or at reversals left out",
+               cont="              ")
     c = diag.controller
     if c is not None:
-        L.append(f"  controller  fitted from the reference: Kp {c.kp:.4g}, Kd {c.kd:.4g}, feed-forward "
-                 f"v {c.kv:.3g}, a {c.ka:.3g} (R2 {c.r2:.3f})")
+        L += _wrap(f"controller  PD fitted from the reference: Kp {c.kp:.4g}, Kd {c.kd:.4g}, feed-forward "
+                   f"v {c.kv:.3g}, a {c.ka:.3g} (R2 {c.r2:.3f})", cont="              ")
     L.append("")
     L.append("baseline  f = M a + Fv v + Fc sgn(v) + offset" if q == "force" else
              "baseline  T = J a + Fv w + Fc sgn(w) + offset (motor side)")
     for est in (diag.baseline_ls, diag.baseline_iv):
-        L.append(f"  {est.method}" + (f"  ({est.note})" if est.note else ""))
+        L += _wrap(f"{est.method}" + (f"  ({est.note})" if est.note else ""), cont="      ")
         L += _param_lines(q, est)
-        L.append(f"    {q} error (||y - y_hat||/||y||): {_errors(diag, est)}")
+        L += _wrap(f"{q} error ||y - y_hat||/||y||: {_errors(diag, est)}", indent="    ")
     if q == "torque" and diag.design.get("lead"):
         lead, eta = diag.design["lead"], diag.design.get("efficiency", 1.0)
         g = 2 * math.pi / lead
         b = diag.baseline_iv.as_dict()
-        L.append(f"  table-side equivalents through lead {lead * 1e3:g} mm and efficiency {eta:g} "
-                 f"(F = T 2pi eta/p, M = J (2pi/p)^2 eta): M {b['M'] * g * g * eta:.4g} kg, "
-                 f"Fv {b['Fv'] * g * g * eta:.4g} N.s/m, Fc {b['Fc'] * g * eta:.4g} N, "
-                 f"offset {b['offset'] * g * eta:.4g} N")
+        L += _wrap(f"table side through lead {lead * 1e3:g} mm and efficiency {eta:g} (F = T 2pi eta/p, "
+                   f"M = J (2pi/p)^2 eta): M {b['M'] * g * g * eta:.4g} kg, Fv {b['Fv'] * g * g * eta:.4g} N.s/m, "
+                   f"Fc {b['Fc'] * g * eta:.4g} N, offset {b['offset'] * g * eta:.4g} N")
     L.append("")
-    L.append(f"candidates (LS, fitted jointly with the baseline; dBIC on the estimation run, gain on the "
-             f"{diag.validation_mode}; accept dBIC < {ACCEPT_DBIC:g} and gain >= {MIN_GAIN:g} %)")
+    L += _wrap(f"candidates, each fitted (LS) jointly with the baseline; dBIC on the estimation run, gain on the "
+               f"{diag.validation_mode}; accepted if dBIC < {ACCEPT_DBIC:g} and gain >= {MIN_GAIN:g} %",
+               indent="", cont="  ")
     for k, rnd in enumerate(diag.rounds, start=1):
         for cnd in rnd:
-            vals = "; ".join(s.strip() for s in _param_lines(q, cnd.estimate, cnd.effect.terms, ""))
-            vals = " ".join(vals.split())
-            L.append(f"  round {k}  {cnd.effect.name:<20} dBIC {cnd.dbic:>9.1f}  gain {cnd.gain:>6.1f} %  {vals}")
+            L += _wrap(f"{k}  {cnd.effect.name:<20} dBIC {cnd.dbic:>8.1f}  gain {cnd.gain:>6.1f} %  "
+                       + _compact(q, cnd.estimate, cnd.effect.terms), cont=" " * 52)
     for nm, why in diag.skipped.items():
-        L.append(f"  not tried {nm}: {why}")
+        L += _wrap(f"-  {nm:<20} not tried: {why}", cont=" " * 26)
     L.append("")
     if diag.accepted:
-        L.append("verdict: " + ", then ".join(f"{c.effect.name} ({c.effect.summary}; gain {c.gain:.0f} %)"
-                                              for c in diag.accepted))
-        L.append(f"  final fit ({diag.final.method}" + (f"; {diag.final.note}" if diag.final.note else "") + ")")
+        L += _wrap("verdict: " + ", then ".join(f"{c.effect.name} ({c.effect.summary}; gain {c.gain:.0f} % on "
+                                                f"held-out data)" for c in diag.accepted), indent="", cont="  ")
+        L += _wrap(f"final fit ({diag.final.method}" + (f"; {diag.final.note}" if diag.final.note else "") + ")",
+                   cont="    ")
         L += _param_lines(q, diag.final)
-        L.append(f"    {q} error: {_errors(diag, diag.final)}")
+        L += _wrap(f"{q} error: {_errors(diag, diag.final)}", indent="    ")
     else:
-        L.append("verdict: nothing beyond the baseline (no effect lowers BIC by 10 and the held-out error by "
-                 f"{MIN_GAIN:g} %)")
-    L.append(f"  offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: on moving rows the two are the "
-             "same column")
+        L += _wrap("verdict: nothing beyond the baseline (no effect lowers BIC by 10 and the held-out error by "
+                   f"{MIN_GAIN:g} %)", indent="", cont="  ")
+    L += _wrap(f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves the two "
+               "are the same column")
     return "\n".join(L)
 
 

@@ -134,7 +134,7 @@ def test_current_record_with_gain_reports_motor_side_and_table_equivalents(tmp_p
     out = tmp_path / "d.json"
     assert main(["diagnose", str(est), str(val), "--design", str(DESIGN), "--json", str(out)]) == 0
     text = capsys.readouterr().out
-    assert "torque data" in text and "table-side equivalents" in text
+    assert "torque data" in text and "table side through lead 10 mm" in text
     d = json.loads(out.read_text())
     assert d["quantity"] == "torque"
     par = {p["name"]: p for p in d["baseline"]["IV"]["parameters"]}

@@ -1,0 +1,26 @@
+"""Regenerate the shipped time records (synthetic, seeded): ``python problems/data/generate_timerecord.py``.
+
+table_x_run_est.csv (10 s) and table_x_run_val.csv (6 s): the axis of table_x.yaml under its PD position
+loop, 1 kHz, trapezoidal moves of 2..350 mm/s in both directions.  Recorded: time, table position (1 um
+scale, quantised), motor force at the table (the drive's current times its force constant) and the position
+reference.  The axis: 620 kg moving (table 306 kg plus the screw and motor inertia reflected through the
+10 mm lead), Coulomb 500 N, viscous 1200 N s/m, and a hidden Stribeck rise of 160 N decaying with
+3 mm/s -- the friction the design model does not have.  Simulated by axisopt.identify.timesynth.
+"""
+
+from pathlib import Path
+
+from axisopt.identify.timesynth import AxisTruth, simulate_axis
+
+HERE = Path(__file__).resolve().parent
+TRUTH = AxisTruth(mass=620.0, viscous=1200.0, coulomb=500.0, stribeck=160.0, stribeck_v=0.003)
+
+
+def main():
+    simulate_axis(TRUTH, duration=10.0, seed=7).write_csv(HERE / "table_x_run_est.csv")
+    simulate_axis(TRUTH, duration=6.0, seed=8).write_csv(HERE / "table_x_run_val.csv")
+    print("wrote table_x_run_est.csv, table_x_run_val.csv")
+
+
+if __name__ == "__main__":
+    main()
