@@ -140,7 +140,8 @@ def noise_sigma_rel(o: Obs, resid: np.ndarray) -> tuple[float, str]:
        never differenced across."""
     r = resid / o.scale
     if o.factors:
-        keys = np.column_stack([np.asarray(v, dtype=float) for v in o.factors.values()])
+        # every model feature too: an FRF's real and imaginary rows share their factors but are no replicates
+        keys = np.column_stack([np.asarray(v, dtype=float) for v in o.factors.values()] + list(o.Z))
         _, inv, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
         inv = np.asarray(inv).ravel()
         rep = counts[inv] >= 2

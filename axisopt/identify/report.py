@@ -105,6 +105,7 @@ def diagnosis_dict(diag) -> dict:
             for rnd, c, bad in diag.rejected
         ],
         "other_explanations": other_explanations(diag),
+        "frf_modes": frf_modes(diag),
         "quantity": quantity_notes(diag),
     }
     for a in diag.accepted:
@@ -179,6 +180,51 @@ def quantity_notes(diag) -> list:
             out.append(f"{Path(o.dataset.source).name}: drag torque T fitted as table force F = 2 pi eta T / l "
                        f"(lead l = {pl.lead * 1e3:g} mm, screw efficiency eta = {pl.efficiency:g}, the "
                        f"model's value); forces below are also given as screw torque T = F l / (2 pi eta)")
+    return out
+
+
+def _peak(freq, mag):
+    """Peak frequency of a sampled magnitude, refined by a parabola through the top three points in
+    log-frequency."""
+    i = int(np.argmax(mag))
+    if 0 < i < len(mag) - 1:
+        x = np.log(freq[i - 1:i + 2])
+        y = np.log(mag[i - 1:i + 2])
+        den = (x[0] - x[1]) * (x[0] - x[2]) * (x[1] - x[2])
+        a = (x[2] * (y[1] - y[0]) + x[1] * (y[0] - y[2]) + x[0] * (y[2] - y[1])) / den
+        b = (x[2] ** 2 * (y[0] - y[1]) + x[1] ** 2 * (y[2] - y[0]) + x[0] ** 2 * (y[1] - y[2])) / den
+        if a < 0:
+            return float(np.exp(-b / (2 * a)))
+    return float(freq[i])
+
+
+def frf_modes(diag) -> list:
+    """Frequency-response data, by position: the measured resonance (peak of |G|) and |G| there, the
+    baseline's and the final model's resonance, the fitted damping of the axial mode and any extra mode."""
+    out = []
+    vals = diag.final.values()
+    for o, yb, yf in zip(diag.obs, _split(diag.obs, diag.baseline.prediction),
+                         _split(diag.obs, diag.final.prediction)):
+        if o.kind != "frf":
+            continue
+        n = o.n // 2
+        pos = o.dataset.columns["position"]
+        freq = o.Z[1, :n] / (2 * math.pi)
+
+        def mag(y, n=n):
+            return np.hypot(y[:n], y[n:])
+        for p in np.unique(pos):
+            sel = np.nonzero(pos == p)[0]
+            sel = sel[np.argsort(freq[sel])]
+            out.append({
+                "file": o.dataset.source, "position_mm": float(p) * 1e3,
+                "measured_peak_Hz": _peak(freq[sel], mag(o.y)[sel]),
+                "measured_peak_um_per_N": float(np.max(mag(o.y)[sel])) * 1e6,
+                "baseline_peak_Hz": _peak(freq[sel], mag(yb)[sel]),
+                "model_peak_Hz": _peak(freq[sel], mag(yf)[sel]),
+                "damping_ratio": vals.get("damping_ratio"),
+                "extra_mode_Hz": vals.get("mode_frequency"), "extra_mode_damping": vals.get("mode_damping"),
+            })
     return out
 
 
@@ -281,6 +327,18 @@ def diagnosis_text(diag) -> str:
             L.append(f"  check: {f}")
     for e in d["other_explanations"]:
         L.append(f"  also consider: {e}")
+    if d["frf_modes"]:
+        L.append(f"resonance by position (peak of |G|){'measured':>15}{'|G| um/N':>10}{'baseline':>11}{'model':>10}"
+                 f"{'damping':>9}")
+        for m in d["frf_modes"]:
+            z = "-" if m["damping_ratio"] is None else f"{100 * m['damping_ratio']:.2f} %"
+            L.append(f"  at {m['position_mm']:6.0f} mm{'':>24}{m['measured_peak_Hz']:>12.1f} Hz"
+                     f"{m['measured_peak_um_per_N']:>10.3g}{m['baseline_peak_Hz']:>8.1f} Hz"
+                     f"{m['model_peak_Hz']:>7.1f} Hz{z:>9}")
+        m = d["frf_modes"][0]
+        if m["extra_mode_Hz"] is not None:
+            L.append(f"  extra mode {m['extra_mode_Hz']:.1f} Hz, damping {100 * m['extra_mode_damping']:.2f} % "
+                     "(all positions)")
     for h in d["holdout_rmse_units"]:
         L.append(
             f"held-out RMSE {Path(h['file']).name}: {h['baseline']:.3g} -> {h['final']:.3g} {h['unit']} "

@@ -143,3 +143,23 @@ def test_frequency_data_say_there_is_no_baseline_parameter(plant):
     text = diagnosis_text(diagnose([ds], plant))
     assert "baseline fit: no free parameter" in text
     assert "baseline fit: \n" not in text + "\n"
+
+
+def test_frf_resonance_by_position(plant):
+    """FRFs at four positions with a hidden extra mode: the table gives, per position, the measured and the
+    fitted resonance (they agree after the fit), the axial mode's damping as hidden, and the extra mode.  The
+    measured peak moves down the stroke (a longer screw in tension is softer)."""
+    from test_recovery import frf_doe
+
+    ds = simulate(plant, "frf", frf_doe(), baseline={"damping_ratio": 0.04}, noise=0.01, seed=1,
+                  effects={"extra_mode": {"mode_frequency": 300.0, "mode_damping": 0.03, "mode_stiffness": 500e6}})
+    diag = diagnose([ds], plant)
+    modes = diagnosis_dict(diag)["frf_modes"]
+    assert [round(m["position_mm"]) for m in modes] == [0, 267, 533, 800]
+    peaks = [m["measured_peak_Hz"] for m in modes]
+    assert all(a > b for a, b in zip(peaks, peaks[1:]))
+    for m in modes:
+        assert m["model_peak_Hz"] == pytest.approx(m["measured_peak_Hz"], rel=0.01)
+        assert m["damping_ratio"] == pytest.approx(0.04, rel=0.1)
+        assert m["extra_mode_Hz"] == pytest.approx(300.0, rel=0.05)
+    assert "resonance by position" in diagnosis_text(diag)
