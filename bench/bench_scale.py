@@ -1,0 +1,100 @@
+"""Scaling benchmark of the default search (not a test): synthetic multi-vendor catalogs
+(bench/synthetic_catalogs.py) at 10^6, 10^7 and 10^8 combinations, motors and couplings included, each size
+solved in a fresh process so that its peak memory is its own.  Prints one row per size: combinations,
+solve time, screening rate, peak memory (max RSS), exact 1-D solves, pruned by bound, and the objective;
+`--exhaustive-check` also runs --method exhaustive on the smallest size and prints the ratio.
+
+    python bench/bench_scale.py [--sizes 1e6 1e7 1e8] [--exhaustive-check]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import resource
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "bench"))
+
+# (screws, nuts per screw, bearings, guides, motors, couplings): about nuts x bearings x guides x drive pairs
+SHAPES = {
+    1e6: (10, 5, 50, 40, 6, 3),
+    1e7: (20, 5, 100, 100, 5, 2),
+    1e8: (40, 5, 200, 125, 8, 4),
+    1e9: (60, 6, 300, 200, 12, 6),
+}
+
+
+def problem(size: float):
+    from synthetic_catalogs import catalog
+
+    from axisopt.design import Axis
+    from axisopt.model import CHECKS
+    from axisopt.problem import Objective, Problem, Restrictions
+
+    s, n, b, g, m, c = SHAPES[size]
+    cat = catalog(s, n, b, g, m, c, seed=int(math.log10(size)))
+    axis = Axis(stroke=0.8, moving_mass=400.0, mounting="fixed-supported", max_speed=0.4, axial_load=2000.0,
+                acceleration=3.0)
+    return Problem(axis=axis, catalog=cat, objective=Objective(mode="frequency"),
+                   limits=(("max_backlash", 0.0), ("max_cost", 6000.0), ("max_drag_torque", 2.5)),
+                   margins=tuple((k, 1.0) for k in CHECKS),
+                   restrictions=Restrictions(mountings=("fixed-supported",), drive=True),
+                   name=f"synthetic-{size:.0e}")
+
+
+def one(size: float, method: str) -> dict:
+    from axisopt.search import solve
+
+    p = problem(size)
+    t = time.perf_counter()
+    res = solve(p, method, top=1, sensitivities=False)
+    dt = time.perf_counter() - t
+    c = res.certificate
+    return {"size": size, "method": method, "combinations": c.combinations, "time_s": dt,
+            "rate_M_per_s": c.screening_rate / 1e6, "screening_s": c.screening_time,
+            "peak_MB": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, "exact": c.exact_evaluations,
+            "pruned": c.pruned_by_bound, "feasible": c.feasible, "status": res.status, "objective": res.objective,
+            "unit": res.objective_unit, "proven": c.proven}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--sizes", nargs="+", type=float, default=[1e6, 1e7, 1e8])
+    ap.add_argument("--exhaustive-check", action="store_true")
+    ap.add_argument("--child", nargs=2, metavar=("SIZE", "METHOD"), help=argparse.SUPPRESS)
+    args = ap.parse_args(argv)
+    if args.child:
+        print(json.dumps(one(float(args.child[0]), args.child[1])))
+        return 0
+    runs = [(s, "default") for s in args.sizes]
+    if args.exhaustive_check:
+        runs.append((min(args.sizes), "exhaustive"))
+    print(f"{'combinations':>14}{'method':>12}{'time s':>9}{'screen M/s':>11}{'peak MB':>9}{'exact':>11}"
+          f"{'pruned':>10}{'feasible':>10}  objective")
+    rows = []
+    for size, method in runs:
+        out = subprocess.run([sys.executable, __file__, "--child", str(size), method], capture_output=True,
+                             text=True, check=True)
+        r = json.loads(out.stdout.strip().splitlines()[-1])
+        rows.append(r)
+        print(f"{r['combinations']:>14,}{method:>12}{r['time_s']:>9.2f}{r['rate_M_per_s']:>11.1f}"
+              f"{r['peak_MB']:>9.0f}{r['exact']:>11,}{r['pruned']:>10,}{(r['feasible'] or 0):>10,}  "
+              f"{r['status']} {r['objective']:.4f} {r['unit']}")
+    ex = [r for r in rows if r["method"] == "exhaustive"]
+    if ex:
+        d = next(r for r in rows if r["method"] == "default" and r["size"] == ex[0]["size"])
+        same = math.isclose(d["objective"], ex[0]["objective"], rel_tol=1e-6)
+        print(f"exhaustive / default time at {d['combinations']:,}: {ex[0]['time_s'] / d['time_s']:.0f}x; "
+              f"same optimum: {same}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
