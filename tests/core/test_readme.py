@@ -122,6 +122,14 @@ FIGURES = [
     ("axisopt diagnose problems/data/xjtu/xjtu_up_friction.csv --design problems/data/xjtu/xjtu_rig.yaml",
      r"held-out RMSE ([\d.]+) -> ([\d.]+) N.m over held-out cycles \(gain (\d+) %\)",
      r"(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain \d+ %\); ([\d.]+) -> ([\d.]+) N.m at the screw"),
+    ("axisopt diagnose problems/data/table_x_run_est.csv problems/data/table_x_run_val.csv "
+     "--design problems/data/table_x.yaml",
+     r"The IV fit gives Fs - Fc = ([\d.]+) ± ([\d.]+) N and vs = ([\d.]+) mm/s",
+     r"final fit(?s:.*)Fs\s+([\d.]+) ± ([\d.]+) N(?s:.*)vs\s+([\d.]+) mm/s"),
+    ("axisopt diagnose problems/data/table_x_run_est.csv problems/data/table_x_run_val.csv "
+     "--design problems/data/table_x.yaml",
+     r"`stribeck` wins: dBIC (-[\d.]+), validation gain (\d+) %",
+     r"stribeck\s+dBIC\s+(-[\d.]+)\s+gain\s+([\d.]+) %"),
     ("axisopt diagnose problems/data/xjtu/xjtu_down_friction.csv --design problems/data/xjtu/xjtu_rig.yaml",
      r"The 'down' screw gives ([\d.]+) % per cycle \(gain (\d+) %\)",
      r"preload_loss_rate = ([\d.]+) ±(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain (\d+) %\)"),
