@@ -474,6 +474,7 @@ class TimeDiagnosis:
     residual_peak: tuple  # (frequency [Hz], ratio to median) of the baseline residual spectrum
     times: dict  # seconds: ls, iv, diagnose
     design: dict = field(default_factory=dict)  # name, lead, efficiency (for the torque -> force note)
+    rejected: list = field(default_factory=list)  # (round, TimeCandidate, reason): outside its physical range
 
     @property
     def verdict(self) -> list:
@@ -521,6 +522,27 @@ def residual_peak(rows: Rows, est: Estimate) -> tuple:
     return float(f[band][k]), float(ps[band][k] / np.median(ps[band]))
 
 
+def implausible(cand_terms, est: Estimate, base: Estimate) -> str:
+    """Why an effect's fitted terms leave their physical range ('' when they do not).  Ranges, relative to
+    the baseline's own friction: a Stribeck excess between 0 and twice the Coulomb level (breakaway up to
+    three times it); a viscous direction difference up to the viscous coefficient itself; a Coulomb
+    variation along the stroke (each Legendre coefficient) up to the Coulomb level; an extra mode with a
+    positive m1 m2 / k (a real mass behind a real spring)."""
+    fc, fv = abs(base.value("Fc")), abs(base.value("Fv"))
+    out = []
+    for t in cand_terms:
+        v = est.value(t)
+        if t == "Fs" and not 0.0 <= v <= 2.0 * fc:
+            out.append(f"Fs = {v:.4g} outside 0..{2 * fc:.4g} (breakaway up to 3x Coulomb)")
+        elif t == "dFv" and abs(v) > fv:
+            out.append(f"dFv = {v:.4g} beyond +-{fv:.4g} (the whole viscous coefficient)")
+        elif t in ("c1", "c2") and abs(v) > fc:
+            out.append(f"{t} = {v:.4g} beyond +-{fc:.4g} (the whole Coulomb friction)")
+        elif t == "beta" and v <= 0.0:
+            out.append(f"beta = {v:.4g} not positive (no mass-spring pair has m1 m2/k <= 0)")
+    return "; ".join(out)
+
+
 def _fit_candidate(est_rows, terms, effect, shape):
     shape = dict(shape)
     if effect.shape == "vs":
@@ -563,7 +585,7 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     terms, shape = list(BASE), {}
     cur = base_ls
     cur_ho = _heldout_rmse(est_rows, val_rows, terms, shape)
-    accepted, rounds = [], []
+    accepted, rounds, rejected = [], [], []
     for _ in range(max_effects):
         scored = []
         for e in pool:
@@ -578,8 +600,15 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
             break
         scored.sort(key=lambda c: c.dbic)
         rounds.append(scored)
-        top = scored[0]
-        if top.dbic >= ACCEPT_DBIC or top.gain < MIN_GAIN:
+        top = None
+        for c in scored:  # the best candidate whose values are physical; an implausible one is reported
+            why = implausible(c.effect.terms, c.estimate, base_ls)
+            if why:
+                rejected.append((len(rounds), c, why))
+                continue
+            top = c
+            break
+        if top is None or top.dbic >= ACCEPT_DBIC or top.gain < MIN_GAIN:
             break
         accepted.append(top)
         terms += list(top.effect.terms)
@@ -590,7 +619,7 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     final = instrumental_variables(est_rows, terms, shape, ctrl=ctrl, start=final_ls) if accepted else base_iv
     times = {"ls": t_ls, "iv": t_iv, "diagnose": time.perf_counter() - t0}
     return TimeDiagnosis(est.quantity, est_rows, val_rows, ctrl, base_ls, base_iv, final, final_ls, accepted,
-                         rounds, skipped, peak, times, dict(design or {}))
+                         rounds, skipped, peak, times, dict(design or {}), rejected)
 
 
 # ------------------------------------------------------------------------------------------- output
@@ -706,6 +735,8 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
                        + _compact(q, cnd.estimate, cnd.effect.terms), cont=" " * 52)
     for nm, why in diag.skipped.items():
         L += _wrap(f"-  {nm:<20} not tried: {why}", cont=" " * 26)
+    for k, cnd, why in diag.rejected:
+        L += _wrap(f"{k}  {cnd.effect.name:<20} not accepted: would need {why}", cont=" " * 26)
     L.append("")
     if diag.accepted:
         L += _wrap("verdict: " + ", then ".join(f"{c.effect.name} ({c.effect.summary}; gain {c.gain:.0f} % on "
@@ -760,6 +791,8 @@ def time_diagnosis_dict(diag: TimeDiagnosis) -> dict:
                          **_est_dict(q, c.estimate)} for c in rnd] for rnd in diag.rounds],
         "skipped": diag.skipped,
         "verdict": diag.verdict,
+        "rejected": [{"round": k, "effect": c.effect.name, "dBIC": c.dbic, "would_need": why}
+                     for k, c, why in diag.rejected],
         "gain_percent": [c.gain for c in diag.accepted],
         "final": {**_est_dict(q, diag.final), "relative_error": errs(diag.final)},
         "seconds": diag.times,

@@ -210,3 +210,19 @@ def test_reader_errors_are_input_errors(tmp_path, plant):
     p = _edit(_good(tmp_path), 3, "0.0010,100,")
     with pytest.raises(InputError, match="line 3, column 3 .force.: empty cell"):
         diagnose_time_files([p], plant=plant)
+
+
+def test_implausible_time_effect_is_not_accepted(tmp_path, plant):
+    """Friction that *drops* at low speed (a negative Stribeck excess, -40 % of Coulomb) fits the Stribeck
+    term only with Fs < 0, outside its physical range: with Stribeck the only candidate, nothing is accepted
+    and the output says what it would need.  Control: the same record with a positive excess is accepted."""
+    rng = np.random.default_rng(7)
+    base = dict(mass=500.0, viscous=1200.0, coulomb=400.0, offset=20.0)
+    bad = AxisTruth(**base, stribeck=-160.0, stribeck_v=0.005)
+    diag = diagnose_time_files(records(tmp_path, bad, seed=int(rng.integers(100))), plant=plant,
+                               candidates=["stribeck"])
+    assert diag.verdict == []
+    assert diag.rejected and diag.rejected[0][1].effect.name == "stribeck" and "Fs" in diag.rejected[0][2]
+    good = AxisTruth(**base, stribeck=160.0, stribeck_v=0.005)
+    diag = diagnose_time_files(records(tmp_path, good, seed=3), plant=plant, candidates=["stribeck"])
+    assert diag.verdict == ["stribeck"]
