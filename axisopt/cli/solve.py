@@ -12,12 +12,13 @@ from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, add_html_report, chec
 def register(sub) -> None:
     s = sub.add_parser("solve", help="choose parts and preload that maximise stiffness/frequency (proven)")
     s.add_argument("problem", help="problem YAML file")
-    s.add_argument("--method", choices=("default", "exhaustive", "bonmin"), default="default",
-                   help="default: proven optimum (bounds); exhaustive: every combination; bonmin: MINLP")
+    s.add_argument("--method", choices=("default", "exhaustive", "bonmin", "scip"), default="default",
+                   help="default: proven optimum (bounds); exhaustive: every combination; bonmin: MINLP; "
+                        "scip: global MINLP (pip install 'axisopt[scip]')")
     s.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     s.add_argument("--plot", metavar="FILE.png", help="plot the best designs (or the Pareto front)")
     s.add_argument("--top", type=int, default=5, metavar="N", help="designs to show (best + runners-up)")
-    s.add_argument("--time-limit", type=float, default=100.0, metavar="S", help="Bonmin time limit [s]")
+    s.add_argument("--time-limit", type=float, default=100.0, metavar="S", help="Bonmin / SCIP time limit [s]")
     s.add_argument("--no-sensitivity", action="store_true",
                    help="skip re-solving with each limit relaxed by 10 %%")
     s.add_argument("--save-design", metavar="FILE.yaml|DIR",
@@ -186,9 +187,12 @@ def format_result(res, top: int | None = None) -> str:
         L.append(f"  combinations {c.combinations:,}; MINLP solves {c.nlps_solved} "
                  f"(not SUCCESS {c.nlp_failures}); feasible combinations not counted")
     else:
-        L.append(f"  combinations {c.combinations:,}; feasible {c.feasible:,}"
-                 f"{' (screened)' if res.method == 'default' else ''}; pruned by bound {c.pruned_by_bound:,}")
-        L.append(f"  exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} (failures {c.nlp_failures})")
+        blocks = (f"; screened {c.screened:,}, the rest pruned by their (nut, bearing) block's bound"
+                  if res.method == "default" and c.screened is not None else "")
+        L.append(f"  combinations {c.combinations:,}{blocks}")
+        L.append(f"  feasible {c.feasible:,}{' (screened)' if res.method == 'default' else ''}; pruned by bound "
+                 f"{c.pruned_by_bound:,}; exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} "
+                 f"(failures {c.nlp_failures})")
     gap = "0 (proven)" if c.proven and c.gap == 0 else ("unknown" if not math.isfinite(c.gap) else f"{c.gap:.3%}")
     L.append(f"  optimality gap {gap}"
              + (f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"

@@ -1,7 +1,11 @@
 """Default (bound-ordered, proven) and exhaustive searches for scalar objectives.
 
 Default method
-    1. *Screening* (all combinations, vectorized, structured broadcasting): every preload-independent
+    0. *Blocks* (:func:`bound_order_search`): each (mounting, nut, bearing) block of combinations -- all its
+       guides and drives -- is tested and bounded at once with an optimistic guide (the most favourable
+       value of every guide column); blocks are screened best-first and only while their bound can still
+       reach the incumbent, so most of the product is never formed.
+    1. *Screening* (the combinations of a block, vectorized, structured broadcasting): every preload-independent
        limit is checked exactly; each preload-dependent limit at its most favourable preload (drag and
        life at the lowest allowed preload, lift-off and minimum stiffness/frequency at the highest),
        which is exact as a necessary condition.  The bound is the objective at the highest allowed
@@ -71,50 +75,106 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     """
     t0 = time.perf_counter()
     _, N, B, G = space.shape
-    two_stage = space.m_arr is not None
-    D = space.n_drives if two_stage else 1
-    Gm = G // D  # guide axis of the mechanical stage
-    mech = [c for c in constraints if not (two_stage and c.key in DRIVE_KEYS)]
-    per_nut = max(B * Gm, 1)
-    step = max(1, SCREEN_CHUNK // per_nut)
-    low_end = [c for c in mech if not c.lower_type and not c.convex]  # independent or favoured by a low preload
-    high_end = [c for c in mech if c.lower_type]
-    cvx = [c for c in mech if c.convex]
+    D = space.n_drives if space.m_arr is not None else 1
+    step = max(1, SCREEN_CHUNK // max(B * (G // D), 1))
     idx_parts, bound_parts = [], []
-    for mi, mounting in enumerate(space.mountings):
-        xs = space.bound_positions(mounting).astype(np.float32)
-        x1 = xs[-1:]
-        phases = space.problem.axis_for(mounting).phases
+    for mi in range(len(space.mountings)):
         for n0 in range(0, N, step):
-            sl = slice(n0, min(N, n0 + step))
-            p = space.params_structured(mounting, sl, dtype=np.float32, mechanics=two_stage)
-            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1).astype(np.float32)
-            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1).astype(np.float32)
-            nc = sl.stop - sl.start
-            mask = np.broadcast_to(space.fits[sl][:, :, None], (nc, B, Gm)).copy()
-            with np.errstate(all="ignore"):
-                out_lo = model.axis_response(p, x1, mounting, lo, extras=False)
-                for c in low_end:
-                    mask &= _screen_ok(c, out_lo)
-                out = model.axis_response(p, xs, mounting, hi, extras=False)
-                for c in high_end:
-                    mask &= _screen_ok(c, out)
-                for c in cvx:  # the margin's bound over the whole preload range
-                    ub = convex_margin_bound(c, out_lo, out, phases)
-                    ok_c = np.asarray(ub >= c.limit * (1.0 - SCREEN_RTOL), dtype=bool)
-                    mask &= ok_c[..., 0] if ok_c.ndim else ok_c
-                bound = objective.value(out)
-            bound = np.broadcast_to(bound + SCREEN_RTOL * np.abs(bound), (nc, B, Gm))
-            nn, bb, gg = np.nonzero(mask)
-            bnd = bound[nn, bb, gg].astype(float)
-            nn = nn + n0
-            if two_stage:
-                nn, bb, gg, bnd = _screen_drives(space, mounting, constraints, phases, nn, bb, gg, bnd)
-            idx_parts.append(np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape))
+            i, bnd = screen_nuts(space, mi, slice(n0, min(N, n0 + step)), constraints, objective)
+            idx_parts.append(i)
             bound_parts.append(bnd)
     idx = np.concatenate(idx_parts) if idx_parts else np.zeros(0, np.int64)
     bound = np.concatenate(bound_parts) if bound_parts else np.zeros(0)
     return idx, bound, time.perf_counter() - t0
+
+
+def _mechanical(space: Space, constraints):
+    two_stage = space.m_arr is not None
+    return [c for c in constraints if not (two_stage and c.key in DRIVE_KEYS)]
+
+
+def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSpec, premask=None):
+    """:func:`screen` over the nuts ``nuts`` (a slice or an index array) of mounting ``mi``, every bearing
+    and guide (and drive); ``premask`` (nuts x bearings, optional) leaves out (nut, bearing) blocks.
+    Returns the survivors' combination numbers and bounds."""
+    mounting = space.mountings[mi]
+    _, N, B, G = space.shape
+    two_stage = space.m_arr is not None
+    D = space.n_drives if two_stage else 1
+    Gm = G // D  # guide axis of the mechanical stage
+    mech = _mechanical(space, constraints)
+    low_end = [c for c in mech if not c.lower_type and not c.convex]  # independent or favoured by a low preload
+    high_end = [c for c in mech if c.lower_type]
+    cvx = [c for c in mech if c.convex]
+    xs = space.bound_positions(mounting).astype(np.float32)
+    x1 = xs[-1:]
+    phases = space.problem.axis_for(mounting).phases
+    nut_idx = np.arange(N)[nuts] if isinstance(nuts, slice) else np.asarray(nuts, dtype=np.int64)
+    p = space.params_structured(mounting, nuts, dtype=np.float32, mechanics=two_stage)
+    lo = space.preload_lo[nut_idx].reshape(-1, 1, 1, 1).astype(np.float32)
+    hi = space.preload_hi[nut_idx].reshape(-1, 1, 1, 1).astype(np.float32)
+    nc = len(nut_idx)
+    fits = space.fits[nut_idx] if premask is None else space.fits[nut_idx] & premask
+    mask = np.broadcast_to(fits[:, :, None], (nc, B, Gm)).copy()
+    with np.errstate(all="ignore"):
+        out_lo = model.axis_response(p, x1, mounting, lo, extras=False)
+        for c in low_end:
+            mask &= _screen_ok(c, out_lo)
+        out = model.axis_response(p, xs, mounting, hi, extras=False)
+        for c in high_end:
+            mask &= _screen_ok(c, out)
+        for c in cvx:  # the margin's bound over the whole preload range
+            ub = convex_margin_bound(c, out_lo, out, phases)
+            ok_c = np.asarray(ub >= c.limit * (1.0 - SCREEN_RTOL), dtype=bool)
+            mask &= ok_c[..., 0] if ok_c.ndim else ok_c
+        bound = objective.value(out)
+    bound = np.broadcast_to(bound + SCREEN_RTOL * np.abs(bound), (nc, B, Gm))
+    nn, bb, gg = np.nonzero(mask)
+    bnd = bound[nn, bb, gg].astype(float)
+    nn = nut_idx[nn]
+    if two_stage:
+        nn, bb, gg, bnd = _screen_drives(space, mounting, constraints, phases, nn, bb, gg, bnd)
+    return np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), bnd
+
+
+def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
+    """Per (mounting, nut, bearing) block of combinations: whether some guide (and drive) could meet the
+    mechanical limits, and an upper bound of the objective over the block, both from one evaluation with
+    the optimistic guide of each guide type (:meth:`Space.params_optimistic_guide`).  Limits the drive
+    changes, and the motor-torque limits, are left to the screening.  Returns a list over mountings of
+    (ok, bound), each nuts x bearings."""
+    _, N, B, _ = space.shape
+    # every mechanical limit, and the cost (the optimistic guide carries the cheapest drive pair's price)
+    mech = [c for c in constraints if not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")]
+    low_end = [c for c in mech if not c.lower_type]
+    high_end = [c for c in mech if c.lower_type]
+    types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
+    step = max(1, SCREEN_CHUNK // max(B, 1))
+    out = []
+    for mounting in space.mountings:
+        xs = space.bound_positions(mounting).astype(np.float32)
+        ok_all = np.zeros((N, B), dtype=bool)
+        bound_all = np.full((N, B), -np.inf)
+        for n0 in range(0, N, step):
+            sl = slice(n0, min(N, n0 + step))
+            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1).astype(np.float32)
+            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1).astype(np.float32)
+            for t in types:
+                p = space.params_optimistic_guide(mounting, sl, str(t), dtype=np.float32)
+                with np.errstate(all="ignore"):
+                    ok = np.broadcast_to(space.fits[sl][:, :, None], (sl.stop - sl.start, B, 1)).copy()
+                    out_lo = model.axis_response(p, xs[-1:], mounting, lo, extras=False)
+                    for c in low_end:
+                        ok &= _screen_ok(c, out_lo)
+                    o = model.axis_response(p, xs, mounting, hi, extras=False)
+                    for c in high_end:
+                        ok &= _screen_ok(c, o)
+                    bnd = np.broadcast_to(objective.value(o), ok.shape).astype(float)
+                bnd = bnd + 2.0 * SCREEN_RTOL * np.abs(bnd)
+                ok_all[sl] |= ok[..., 0]
+                bound_all[sl] = np.maximum(bound_all[sl], np.where(ok[..., 0], bnd[..., 0], -np.inf))
+        out.append((ok_all, bound_all))
+    return out
 
 
 DRIVE_CHUNK = 1_000_000  # expanded (combination, drive) rows per block of the drive stage
@@ -169,39 +229,104 @@ def _concat(parts):
 
 def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top: int = 1, *,
                        max_evaluations: int | None = None):
-    """Default method core.  Returns (Exact of evaluated combinations, certificate fields dict)."""
-    idx, bound, t_screen = screen(space, constraints, objective)
-    order = np.argsort(-bound, kind="stable")
-    pos, batch = 0, 64
-    parts = []
-    thr = -np.inf
-    n_eval = 0
-    while pos < len(order):
-        if bound[order[pos]] < objective_floor(thr):
+    """Default method core: best-first over blocks of combinations, never forming the whole product.
+
+    1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives -- gets a
+       feasibility test and an objective bound from one evaluation with the optimistic guide.
+    2. The blocks are taken in decreasing bound.  A group of blocks is screened (:func:`screen_nuts`, exact
+       per combination up to the float32 slack) and its survivors join a pool; the pool's best bounds are
+       solved exactly (:func:`exact_solve`) before the next group whenever they beat the next block's
+       bound.  The incumbent is the ``top``-th best exact objective.
+    3. It stops when neither the next block nor the pool can reach the incumbent: the gap is then 0.  Blocks
+       never screened are the certificate's ``pruned_by_block``; survivors never solved its
+       ``pruned_by_bound``.
+    Returns (Exact of evaluated combinations, certificate fields dict)."""
+    t0 = time.perf_counter()
+    GD = space.shape[3]
+    blocks = block_bounds(space, constraints, objective)
+    bm, bn, bb, bv = [], [], [], []
+    n_block_ok = 0
+    for mi, (ok, bound) in enumerate(blocks):
+        n, b = np.nonzero(ok)
+        n_block_ok += len(n)
+        bm.append(np.full(len(n), mi))
+        bn.append(n)
+        bb.append(b)
+        bv.append(bound[n, b])
+    bm, bn, bb, bv = (np.concatenate(x) if x else np.zeros(0) for x in (bm, bn, bb, bv))
+    order = np.argsort(-bv, kind="stable")
+    bm, bn, bb, bv = bm[order].astype(int), bn[order].astype(int), bb[order].astype(int), bv[order]
+    t_screen = time.perf_counter() - t0
+    _, N, B, _ = space.shape
+    per_group = max(1, SCREEN_CHUNK // max(B * (GD // (space.n_drives if space.m_arr is not None else 1)), 1))
+    pos, batch, n_eval, screened_blocks, feasible = 0, 64, 0, 0, 0
+    group = 1  # distinct nuts per screened group: grows as long as no incumbent prunes
+    pool_idx, pool_bnd = np.zeros(0, np.int64), np.zeros(0)
+    parts, thr = [], -np.inf
+    while True:
+        floor = objective_floor(thr)
+        nxt = bv[pos] if pos < len(bv) else -np.inf
+        best_pool = pool_bnd.max() if len(pool_bnd) else -np.inf
+        if max(nxt, best_pool) < floor or (pos >= len(bv) and not len(pool_bnd)):
             break
         if max_evaluations is not None and n_eval >= max_evaluations:
             break
-        take = order[pos: pos + batch]
-        pos += len(take)
-        batch = min(batch * 2, 131072)
-        ex = exact_solve(space, idx[take], constraints, objective)
-        n_eval += len(take)
-        parts.append(ex)
-        allobj = np.concatenate([p.objective for p in parts])
-        fin = allobj[np.isfinite(allobj)]
-        if len(fin) >= top:
-            thr = np.partition(fin, len(fin) - top)[len(fin) - top]
+        if len(pool_bnd) and best_pool >= nxt:  # exact solves of the pool's best bounds
+            cand = np.nonzero(pool_bnd >= max(nxt, floor))[0]
+            take = cand[np.argsort(-pool_bnd[cand], kind="stable")[:batch]]
+            batch = min(batch * 2, 131072)
+            ex = exact_solve(space, pool_idx[take], constraints, objective)
+            n_eval += len(take)
+            parts.append(ex)
+            keep = np.ones(len(pool_bnd), dtype=bool)
+            keep[take] = False
+            pool_idx, pool_bnd = pool_idx[keep], pool_bnd[keep]
+            allobj = np.concatenate([p.objective for p in parts])
+            fin = allobj[np.isfinite(allobj)]
+            if len(fin) >= top:
+                thr = np.partition(fin, len(fin) - top)[len(fin) - top]
+            continue
+        # screen the next group of blocks: up to per_group distinct nuts, in bound order
+        t1 = time.perf_counter()
+        end, seen = pos, set()
+        while end < len(bv) and bv[end] >= floor:
+            key = (bm[end], bn[end])
+            if key not in seen and len(seen) >= min(group, per_group):
+                break
+            seen.add(key)
+            end += 1
+        end = max(end, pos + 1)
+        grp = slice(pos, end)
+        group = min(group * 2, per_group)
+        screened_blocks += end - pos
+        pos = end
+        new_idx, new_bnd = [], []
+        for mi in np.unique(bm[grp]):
+            sel = bm[grp] == mi
+            gn, gb = bn[grp][sel], bb[grp][sel]
+            nuts = np.unique(gn)
+            premask = np.zeros((len(nuts), B), dtype=bool)
+            premask[np.searchsorted(nuts, gn), gb] = True
+            i, bnd = screen_nuts(space, int(mi), nuts, constraints, objective, premask=premask)
+            new_idx.append(i)
+            new_bnd.append(bnd)
+        add_i = np.concatenate(new_idx) if new_idx else np.zeros(0, np.int64)
+        add_b = np.concatenate(new_bnd) if new_bnd else np.zeros(0)
+        feasible += len(add_i)
+        pool_idx, pool_bnd = np.concatenate([pool_idx, add_i]), np.concatenate([pool_bnd, add_b])
+        t_screen += time.perf_counter() - t1
     ex = _concat(parts) if parts else exact_solve(space, [], constraints, objective)
+    rest = max(bv[pos] if pos < len(bv) else -np.inf, pool_bnd.max() if len(pool_bnd) else -np.inf)
     best = ex.objective.max() if len(ex.objective) else -np.inf
-    if pos < len(order):
-        rest = bound[order[pos]]
-        gap = 0.0 if rest < objective_floor(best) or rest < objective_floor(thr) else \
-            float((rest - best) / max(abs(best), 1e-30)) if np.isfinite(best) else float("inf")
-    else:
+    if rest == -np.inf or rest < objective_floor(thr) or rest < objective_floor(best):
         gap = 0.0
-    info = {"combinations": space.size, "feasible": int(len(idx)), "pruned_by_bound": int(len(order) - pos),
+    else:
+        gap = float((rest - best) / max(abs(best), 1e-30)) if np.isfinite(best) else float("inf")
+    screened = screened_blocks * GD
+    info = {"combinations": space.size, "feasible": int(feasible), "pruned_by_bound": int(feasible - n_eval),
             "exact_evaluations": int(n_eval), "gap": gap, "proven": gap == 0.0,
-            "screening_time": t_screen, "screening_rate": space.size / max(t_screen, 1e-9)}
+            "screening_time": t_screen, "screening_rate": space.size / max(t_screen, 1e-9),
+            "pruned_by_block": int(space.size - screened), "screened": int(screened)}
     return ex, info
 
 

@@ -61,6 +61,10 @@ class Certificate:
     screening_time: float = 0.0  # [s]
     screening_rate: float = 0.0  # combinations / s
     notes: tuple = ()
+    # default method: combinations never screened (their (mounting, nut, bearing) block cannot meet the limits
+    # or reach the incumbent with any guide and drive), and combinations screened one by one
+    pruned_by_block: int = 0
+    screened: int | None = None
 
     def to_dict(self) -> dict:
         return {k: _clean(v) for k, v in asdict(self).items()}

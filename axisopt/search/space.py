@@ -60,6 +60,17 @@ _GUIDE_COLS = ("normal_rigidity", "tangential_rigidity", "friction_force", "fric
                "rail_price_per_length", "dynamic_load_rating", "preload")
 
 
+# The guide values that favour every mechanical limit and the objective (the optimistic guide of the block
+# bounds): the table carries the blocks, so less block mass, rail mass, friction, price and preload, and more
+# rigidity, damping and load rating never make a design worse.  The drive's limits (motor torques, where
+# less friction can raise a deceleration torque) are not bounded this way (DRIVE_KEYS: checked per pair).
+GUIDE_BEST = {"normal_rigidity": np.nanmax, "tangential_rigidity": np.nanmax, "friction_force": np.nanmin,
+              "friction_coefficient": np.nanmin, "friction_viscous": np.nanmin, "damping": np.nanmax,
+              "block_mass": np.nanmin,
+              "rail_mass_per_length": np.nanmin, "block_price": np.nanmin, "rail_price_per_length": np.nanmin,
+              "dynamic_load_rating": np.nanmax, "preload": np.nanmin}
+
+
 @dataclass(frozen=True)
 class Constraint:
     """``value(out) sense limit``; ``direction`` is how the value moves with the nut preload."""
@@ -278,8 +289,9 @@ class Space:
         over every drive pair (the screening relaxes their limits with them; exact solves use the pair)."""
         if mechanics and self.m_arr is not None and coupling_stiffness is None:
             coupling_stiffness = float(self.coupling_stiffnesses()[-1])
-        key = ("ps", mounting, nut_slice.start, nut_slice.stop, np.dtype(dtype).name, mechanics,
-               coupling_stiffness)
+        nkey = (nut_slice.start, nut_slice.stop) if isinstance(nut_slice, slice) else \
+            np.asarray(nut_slice, dtype=np.int64).tobytes()
+        key = ("ps", mounting, nkey, np.dtype(dtype).name, mechanics, coupling_stiffness)
         if key not in self._cache:
             def sh(d, shape):
                 return {k: (v.reshape(shape).astype(dtype) if v.dtype.kind == "f" else v.reshape(shape))
@@ -300,6 +312,37 @@ class Space:
                 ps = {k: (v.astype(dtype) if isinstance(v, np.ndarray) else v) for k, v in ps.items()}
             self._cache[key] = ps
         return self._cache[key]
+
+    def params_optimistic_guide(self, mounting: str, nut_sel, guide_type: str, dtype=float) -> dict:
+        """Parameters over (nuts ``nut_sel``, bearings, one guide, positions) where the one guide takes, column
+        by column, the most favourable value of the searched guides of ``guide_type`` (:data:`GUIDE_BEST`).
+        No mechanical limit and no objective value of any (nut, bearing, guide) combination is better than
+        with this guide, so the (nut, bearing) results bound every guide (and every drive: the axis values
+        stand in for motor and coupling, with the stiffest searched coupling in the stiffness chain)."""
+        D = self.n_drives
+        gt = self.g_arr["type"][::D]
+        sel = gt == guide_type
+
+        def sh(d, shape):
+            return {k: (v.reshape(shape).astype(dtype) if v.dtype.kind == "f" else v.reshape(shape))
+                    for k, v in d.items()}
+        s = sh({k: v[nut_sel] for k, v in self.s_arr.items()}, (-1, 1, 1, 1))
+        nt = sh({k: v[nut_sel] for k, v in self.n_arr.items()}, (-1, 1, 1, 1))
+        b = sh(self.b_arr, (1, -1, 1, 1))
+        g = {k: np.array([GUIDE_BEST[k](v[::D][sel])]) for k, v in self.g_arr.items() if k in GUIDE_BEST}
+        g["type"] = np.array([guide_type])
+        g = sh(g, (1, 1, 1, 1))
+        ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, None, None)
+        if self.m_arr is not None:
+            ps["coupling_stiffness"] = float(self.coupling_stiffnesses()[-1])
+            # the cheapest searched (motor, coupling) pair: the cost is a lower bound over every drive
+            price = np.nan_to_num(self.m_arr["price"][:D])
+            if self.c_arr is not None:
+                price = price + np.nan_to_num(self.c_arr["price"][:D])
+            ps["motor_price"], ps["coupling_price"] = float(price.min()), 0.0
+        if np.dtype(dtype) != np.float64:
+            ps = {k: (v.astype(dtype) if isinstance(v, np.ndarray) else v) for k, v in ps.items()}
+        return ps
 
     def params_flat(self, mounting: str, n, b, g) -> dict:
         def pick(d, i):
