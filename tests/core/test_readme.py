@@ -153,3 +153,11 @@ def test_noise_floor_quoted(tmp_path):
                   tmp_path)
     o = re.search(r"noise floor ([\d.]+) um", out)
     assert r and o and _close(r.group(1), o.group(1))
+
+
+def test_test_files_have_unique_basenames():
+    """pytest's default import mode keys test modules by basename: two tests/*/test_x.py break collection
+    (it did once, in CI only, where no __pycache__ hid it)."""
+    root = Path(__file__).resolve().parents[1]
+    names = [p.name for p in root.rglob("*.py") if p.name != "__init__.py"]
+    assert len(names) == len(set(names)), sorted({n for n in names if names.count(n) > 1})
