@@ -1,8 +1,9 @@
 """Sizing search over the catalogs: ``solve(problem, method=...) -> SolveResult``.
 
 Methods: ``'default'`` (screening + bound order + IPOPT, proves the optimum), ``'exhaustive'`` (every
-combination; the ground truth) and ``'bonmin'`` (CasADi Bonmin MINLP with one-hot part selection; a
-heuristic reference).  All three use the same model position grid (``model.positions``) for the
+combination; the ground truth), ``'bonmin'`` (CasADi Bonmin MINLP with one-hot part selection; a
+heuristic reference) and ``'scip'`` (the same MINLP solved globally by SCIP; optional extra
+``axisopt[scip]``).  All use the same model position grid (``model.positions``) for the
 minimum over the stroke, the same limits and the same tie rule, so their objectives compare.
 
 ``solve`` is a pure function of the problem (no printing, no global state besides per-process solver
@@ -21,7 +22,7 @@ from .core import bound_order_search, certificate, exhaustive_search, polish
 from .result import Binding, Candidate, Certificate, Infeasibility, ParetoFront, SolveResult
 from .space import Constraint, build_constraints, build_space, objective_spec
 
-METHODS = ("default", "exhaustive", "bonmin")
+METHODS = ("default", "exhaustive", "bonmin", "scip")
 RELAX = 0.10  # sensitivities: relax each limit by 10 %
 
 
@@ -30,9 +31,9 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     """Solve a sizing problem.
 
     problem       : :class:`axisopt.problem.Problem`
-    method        : 'default' | 'exhaustive' | 'bonmin'
+    method        : 'default' | 'exhaustive' | 'bonmin' | 'scip'
     top           : number of designs returned (best + runners-up)
-    time_limit    : Bonmin wall-clock limit [s]
+    time_limit    : Bonmin / SCIP wall-clock limit [s]
     sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (default method)
     """
     if method not in METHODS:
@@ -40,6 +41,11 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     t0 = time.perf_counter()
     ob = problem.objective
     if ob.mode == "pareto":
+        if method == "scip":
+            from ..errors import InputError
+
+            raise InputError("--method scip solves one scalar objective; a Pareto front needs --method default "
+                             "or exhaustive")
         from .pareto import solve_pareto
 
         return solve_pareto(problem, method=method, t0=t0)
@@ -68,7 +74,7 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
         return res
     spec = objective_spec(ob.mode, problem)
     res = _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0)
-    if sensitivities and res.best is not None and method != "bonmin":
+    if sensitivities and res.best is not None and method not in ("bonmin", "scip"):
         res.binding = limit_sensitivities(problem, res)
         res.time = time.perf_counter() - t0
     return res
@@ -79,6 +85,10 @@ def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0
         from .bonmin import solve_bonmin
 
         return solve_bonmin(problem, space, constraints, spec, time_limit=time_limit, top=top, t0=t0)
+    if method == "scip":
+        from .scip import solve_scip
+
+        return solve_scip(problem, space, constraints, spec, time_limit=time_limit, top=top, t0=t0)
     if method == "exhaustive":
         ex, info = exhaustive_search(space, constraints, spec)
     else:

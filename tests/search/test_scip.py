@@ -1,0 +1,101 @@
+"""SCIP global-MINLP reference (optional extra axisopt[scip]): its optimum equals exhaustive enumeration's on
+the teaching problem and on seeded random catalogs; infeasibility, Pareto and CLI exit codes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from search_synthetic import add_drives, make_catalog, make_double, make_problem
+
+from axisopt.cli import main
+from axisopt.errors import InputError
+from axisopt.problem import Objective, load_problem
+from axisopt.search import solve
+
+pytest.importorskip("pyscipopt")
+
+PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
+REL = 1e-4
+
+
+def _agrees(s, e):
+    """SCIP's answer against the exhaustive one: the same optimum (or worse only when stopped)."""
+    assert e.status in ("optimal", "infeasible")
+    if e.best is None:
+        assert s.status == "infeasible" and s.best is None
+        return
+    assert s.status in ("optimal", "time_limit"), s.message
+    if s.best is None:  # stopped without a design it could confirm: nothing claimed
+        assert s.status == "time_limit" and not s.certificate.proven
+        return
+    if s.status == "optimal":
+        assert s.best.objective == pytest.approx(e.best.objective, rel=REL)
+        assert s.certificate.proven and s.certificate.gap <= 1e-4
+    assert s.best.objective <= e.best.objective * (1 + 1e-6)
+    # the reported design is the model's evaluation of the chosen parts and preload
+    assert s.best.design is not None and s.best.design.nut_preload == pytest.approx(s.best.nut_preload)
+    assert s.certificate.feasible is None and s.certificate.combinations == e.certificate.combinations
+
+
+def test_teaching_problem_equals_exhaustive():
+    p = load_problem(PROBLEMS / "teaching_problem.yaml")
+    s = solve(p, "scip", time_limit=40)
+    _agrees(s, solve(p, "exhaustive", top=1, sensitivities=False))
+    assert s.status == "optimal"
+    assert "nodes" in s.certificate.notes[0]
+
+
+@pytest.mark.parametrize("seed", [3, 4])
+def test_random_catalogs_equal_exhaustive(seed):
+    rng = np.random.default_rng(seed)
+    cat = make_catalog(rng, n_screws=3, nuts_per_screw=2, n_bearings=4, n_guides=3)
+    limits = {"max_cost": float(rng.uniform(2500, 5000)), "max_drag_torque": float(rng.uniform(0.4, 1.5)),
+              "min_life": float(rng.uniform(5e3, 3e4)) * 3600}
+    ob = Objective(mode="weighted", weights=(("stiffness", 1.0), ("frequency", 2.0)),
+                   scale=(("stiffness", 100e6), ("frequency", 100.0))) if seed == 4 else Objective(mode="stiffness")
+    p = make_problem(cat, objective=ob, limits=limits)
+    _agrees(solve(p, "scip", time_limit=20), solve(p, "exhaustive", top=1, sensitivities=False))
+
+
+def test_random_catalog_with_drive_and_frequency_equals_exhaustive():
+    rng = np.random.default_rng(105)
+    cat = make_catalog(rng, n_screws=3, nuts_per_screw=2, n_bearings=3, n_guides=2)
+    make_double(cat)
+    cat = add_drives(cat, rng, n_motors=3, n_couplings=2)
+    p = make_problem(cat, mode="frequency", limits={"max_cost": 5000.0, "max_drag_torque": 1.5},
+                     moving_mass=200.0)
+    _agrees(solve(p, "scip", time_limit=20), solve(p, "exhaustive", top=1, sensitivities=False))
+
+
+def test_infeasible_problem_is_reported_infeasible():
+    cat = make_catalog(np.random.default_rng(7), n_screws=2, nuts_per_screw=2, n_bearings=3, n_guides=2)
+    p = make_problem(cat, limits={"max_cost": 100.0})
+    s = solve(p, "scip", time_limit=20)
+    assert solve(p, "exhaustive", sensitivities=False).status == "infeasible"
+    assert s.status == "infeasible" and s.best is None and s.certificate.proven
+
+
+def test_pareto_is_an_input_error():
+    p = load_problem(PROBLEMS / "pareto_problem.yaml")
+    with pytest.raises(InputError, match="Pareto"):
+        solve(p, "scip")
+
+
+def test_cli_exit_codes(capsys):
+    assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--method", "scip", "--time-limit", "40"]) == 0
+    out = capsys.readouterr().out
+    assert "method scip: status optimal" in out
+    assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--method", "scip", "--time-limit", "0.01"]) == 3
+    assert main(["solve", str(PROBLEMS / "pareto_problem.yaml"), "--method", "scip"]) == 2
+    assert "Pareto" in capsys.readouterr().err
+
+
+def test_missing_pyscipopt_names_the_extra(monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "pyscipopt", None)  # import fails as if not installed
+    p = load_problem(PROBLEMS / "teaching_problem.yaml")
+    with pytest.raises(InputError, match=r"pip install 'axisopt\[scip\]'"):
+        solve(p, "scip")
