@@ -39,6 +39,7 @@ from .space import (
     BISECTION_STEPS,
     DRIVE_KEYS,
     N_PER_UM,
+    SCREEN_CHUNK,
     Exact,
     ObjectiveSpec,
     Space,
@@ -53,7 +54,6 @@ from .space import (
     subset,
 )
 
-SCREEN_CHUNK = 4_000_000  # combinations per structured screening block (memory)
 SCREEN_RTOL = 1e-4  # float32 screening: relative slack on every test and on the bound
 
 
@@ -74,9 +74,8 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     limits (:data:`DRIVE_KEYS`) with the drive sub-assembly alone.
     """
     t0 = time.perf_counter()
-    _, N, B, G = space.shape
-    D = space.n_drives if space.m_arr is not None else 1
-    step = max(1, SCREEN_CHUNK // max(B * (G // D), 1))
+    N = space.shape[1]
+    step = space.nuts_per_screen()
     idx_parts, bound_parts = [], []
     for mi in range(len(space.mountings)):
         for n0 in range(0, N, step):
@@ -258,7 +257,7 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     bm, bn, bb, bv = bm[order].astype(int), bn[order].astype(int), bb[order].astype(int), bv[order]
     t_screen = time.perf_counter() - t0
     _, N, B, _ = space.shape
-    per_group = max(1, SCREEN_CHUNK // max(B * (GD // (space.n_drives if space.m_arr is not None else 1)), 1))
+    per_group = space.nuts_per_screen()
     pos, batch, n_eval, screened_blocks, feasible = 0, 64, 0, 0, 0
     group = 1  # distinct nuts per screened group: grows as long as no incumbent prunes
     pool_idx, pool_bnd = np.zeros(0, np.int64), np.zeros(0)

@@ -14,7 +14,7 @@ import time
 import numpy as np
 
 from ..errors import InputError
-from .core import SCREEN_CHUNK, _concat, block_bounds, exhaustive_search, make_candidate, screen_nuts
+from .core import _concat, block_bounds, exhaustive_search, make_candidate, screen_nuts
 from .result import Certificate, ParetoFront, SolveResult
 from .space import build_constraints, build_space, exact_solve, objective_spec
 
@@ -71,10 +71,10 @@ def screen_feasible_blocks(space, constraints, spec):
     (:func:`~.core.block_bounds`; every front point is feasible, so no bound on the objectives is used).
     Returns (survivors' combination numbers, seconds, combinations screened)."""
     t0 = time.perf_counter()
-    _, N, B, GD = space.shape
+    GD = space.shape[3]
     idx = []
     screened = 0
-    step = max(1, SCREEN_CHUNK // max(B * (GD // (space.n_drives if space.m_arr is not None else 1)), 1))
+    step = space.nuts_per_screen()
     for mi, (ok, _bound) in enumerate(block_bounds(space, constraints, spec)):
         nuts = np.nonzero(ok.any(axis=1))[0]
         screened += int(ok.sum()) * GD

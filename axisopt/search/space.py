@@ -123,6 +123,21 @@ class Constraint:
         return np.maximum(1.0 - v / self.limit, 0.0)
 
 
+SCREEN_CHUNK = 4_000_000  # combinations per structured screening block (memory)
+
+
+def _shaped(d, shape, dtype) -> dict:
+    """Each column of ``d`` reshaped to ``shape`` (broadcast layout); float columns cast to ``dtype``."""
+    return {k: (v.reshape(shape).astype(dtype) if v.dtype.kind == "f" else v.reshape(shape)) for k, v in d.items()}
+
+
+def _as_dtype(ps: dict, dtype) -> dict:
+    """A parameter dict with its arrays cast to ``dtype`` (float32 screening)."""
+    if np.dtype(dtype) == np.float64:
+        return ps
+    return {k: (v.astype(dtype) if isinstance(v, np.ndarray) else v) for k, v in ps.items()}
+
+
 def min_last(v):
     """Minimum over the last (position) axis; elementwise chains for short axes (much faster)."""
     v = np.asarray(v)
@@ -293,24 +308,17 @@ class Space:
             np.asarray(nut_slice, dtype=np.int64).tobytes()
         key = ("ps", mounting, nkey, np.dtype(dtype).name, mechanics, coupling_stiffness)
         if key not in self._cache:
-            def sh(d, shape):
-                return {k: (v.reshape(shape).astype(dtype) if v.dtype.kind == "f" else v.reshape(shape))
-                        for k, v in d.items()}
-            s = sh({k: v[nut_slice] for k, v in self.s_arr.items()}, (-1, 1, 1, 1))
-            nt = sh({k: v[nut_slice] for k, v in self.n_arr.items()}, (-1, 1, 1, 1))
-            b = sh(self.b_arr, (1, -1, 1, 1))
+            s, nt, b = self._nut_bearing_arrays(nut_slice, dtype)
             D = self.n_drives if mechanics else 1
-            g = sh({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1))
-            mo = None if self.m_arr is None or mechanics else sh(self.m_arr, (1, 1, -1, 1))
-            cp = None if self.c_arr is None or mechanics else sh(self.c_arr, (1, 1, -1, 1))
+            g = _shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
+            mo = None if self.m_arr is None or mechanics else _shaped(self.m_arr, (1, 1, -1, 1), dtype)
+            cp = None if self.c_arr is None or mechanics else _shaped(self.c_arr, (1, 1, -1, 1), dtype)
             if len(self._cache) > 64:
                 self._cache.clear()
             ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
             if mechanics and coupling_stiffness is not None:
                 ps["coupling_stiffness"] = coupling_stiffness
-            if np.dtype(dtype) != np.float64:
-                ps = {k: (v.astype(dtype) if isinstance(v, np.ndarray) else v) for k, v in ps.items()}
-            self._cache[key] = ps
+            self._cache[key] = _as_dtype(ps, dtype)
         return self._cache[key]
 
     def params_optimistic_guide(self, mounting: str, nut_sel, guide_type: str, dtype=float) -> dict:
@@ -320,18 +328,11 @@ class Space:
         with this guide, so the (nut, bearing) results bound every guide (and every drive: the axis values
         stand in for motor and coupling, with the stiffest searched coupling in the stiffness chain)."""
         D = self.n_drives
-        gt = self.g_arr["type"][::D]
-        sel = gt == guide_type
-
-        def sh(d, shape):
-            return {k: (v.reshape(shape).astype(dtype) if v.dtype.kind == "f" else v.reshape(shape))
-                    for k, v in d.items()}
-        s = sh({k: v[nut_sel] for k, v in self.s_arr.items()}, (-1, 1, 1, 1))
-        nt = sh({k: v[nut_sel] for k, v in self.n_arr.items()}, (-1, 1, 1, 1))
-        b = sh(self.b_arr, (1, -1, 1, 1))
+        sel = self.g_arr["type"][::D] == guide_type
+        s, nt, b = self._nut_bearing_arrays(nut_sel, dtype)
         g = {k: np.array([GUIDE_BEST[k](v[::D][sel])]) for k, v in self.g_arr.items() if k in GUIDE_BEST}
         g["type"] = np.array([guide_type])
-        g = sh(g, (1, 1, 1, 1))
+        g = _shaped(g, (1, 1, 1, 1), dtype)
         ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, None, None)
         if self.m_arr is not None:
             ps["coupling_stiffness"] = float(self.coupling_stiffnesses()[-1])
@@ -340,9 +341,19 @@ class Space:
             if self.c_arr is not None:
                 price = price + np.nan_to_num(self.c_arr["price"][:D])
             ps["motor_price"], ps["coupling_price"] = float(price.min()), 0.0
-        if np.dtype(dtype) != np.float64:
-            ps = {k: (v.astype(dtype) if isinstance(v, np.ndarray) else v) for k, v in ps.items()}
-        return ps
+        return _as_dtype(ps, dtype)
+
+    def _nut_bearing_arrays(self, nut_sel, dtype) -> tuple:
+        """Screw and nut columns of the nuts ``nut_sel`` on the first axis, every bearing on the second."""
+        s = _shaped({k: v[nut_sel] for k, v in self.s_arr.items()}, (-1, 1, 1, 1), dtype)
+        nt = _shaped({k: v[nut_sel] for k, v in self.n_arr.items()}, (-1, 1, 1, 1), dtype)
+        return s, nt, _shaped(self.b_arr, (1, -1, 1, 1), dtype)
+
+    def nuts_per_screen(self) -> int:
+        """Nuts per structured screening block: each covers every bearing and (mechanical) guide."""
+        _, _, B, G = self.shape
+        Gm = G // (self.n_drives if self.m_arr is not None else 1)
+        return max(1, SCREEN_CHUNK // max(B * Gm, 1))
 
     def params_flat(self, mounting: str, n, b, g) -> dict:
         def pick(d, i):
