@@ -441,14 +441,21 @@ def solve_scip(problem, space, constraints, objective, *, time_limit: float = 10
     statuses, notes = [], []
     gaps, nodes, solves = [], 0, 0
     stopped = False
+
+    def out_of_time(mounting) -> bool:
+        """Less than 0.1 s of the limit left: the mounting is not run (recorded)."""
+        nonlocal stopped
+        if time_limit - (time.perf_counter() - t0) > 0.1:
+            return False
+        statuses.append(f"{mounting}: not run (time limit)")
+        stopped = True
+        return True
+
     for mi, mounting in enumerate(space.mountings):
         if N == 0 or B == 0 or G == 0:
             statuses.append(f"{mounting}: infeasible (empty search space)")
             continue
-        remaining = time_limit - (time.perf_counter() - t0)
-        if remaining <= 0.1:
-            statuses.append(f"{mounting}: not run (time limit)")
-            stopped = True
+        if out_of_time(mounting):
             continue
         try:
             m, z, P, info = _mounting_model(ps, space, mounting, constraints, objective)
@@ -458,12 +465,9 @@ def solve_scip(problem, space, constraints, objective, *, time_limit: float = 10
         if m is None:
             statuses.append(f"{mounting}: infeasible ({info})")
             continue
-        remaining = time_limit - (time.perf_counter() - t0)
-        if remaining <= 0.1:
-            statuses.append(f"{mounting}: not run (time limit)")
-            stopped = True
+        if out_of_time(mounting):
             continue
-        m.setParam("limits/time", float(remaining))
+        m.setParam("limits/time", float(time_limit - (time.perf_counter() - t0)))
         m.setParam("limits/gap", GAP)
         m.setParam("randomization/randomseedshift", 0)
         for key, value in SCIP_PARAMS.items():
