@@ -24,12 +24,9 @@ def check_html_report(path) -> None:
     """Refuse a --report target before the work starts: not .html, or plotly missing (one line, exit 2)."""
     if path is None:
         return
-    from ..errors import InputError
-    from ..report.html import require_plotly
+    from ..report.html import check_report_path
 
-    if not str(path).lower().endswith((".html", ".htm")):
-        raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
-    require_plotly()
+    check_report_path(path)
 
 
 def colour_wanted() -> bool:

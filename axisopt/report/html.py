@@ -115,12 +115,17 @@ def figure(fig, height: int = 420) -> str:
                                              config={"responsive": True, "displaylogo": False}) + "</div>"
 
 
-def write_page(page: Page, path) -> None:
-    from ..fileio import write_text_atomic
-
+def check_report_path(path) -> None:
+    """A --report target must end in .html and plotly must be installed (one-line InputError otherwise)."""
     if not str(path).lower().endswith((".html", ".htm")):
         raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
     require_plotly()
+
+
+def write_page(page: Page, path) -> None:
+    from ..fileio import write_text_atomic
+
+    check_report_path(path)
     write_text_atomic(str(path), page.render(), what="HTML report")
 
 
