@@ -15,7 +15,7 @@ from pathlib import Path
 from .catalog import _CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
 from .errors import InputError
 from .physics import motion
-from .units import unit_factor
+from .units import DISPLAY_UNITS, unit_factor
 from .yamlio import Key, Section, Spec, read_yaml
 
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
@@ -430,18 +430,8 @@ def load_design(path) -> Design:
 __all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_parts", "G"]
 
 
-# Units used when a design is written back to YAML (vendor units, as users write them).
-_OUT_UNITS = {
-    "length": "mm", "mass": "kg", "time": "h", "force": "N", "stiffness": "N/um", "speed": "m/min",
-    "acceleration": "m/s^2", "jerk": "m/s^3", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
-    "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
-    "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad",
-    "temperature_difference": "K", "power": "W",
-}
-
-
 def _q(value: float, kind: str) -> str:
-    unit = _OUT_UNITS[kind]
+    unit = DISPLAY_UNITS[kind]
     return f"{value / unit_factor(unit, kind):.12g} {unit}"
 
 

@@ -71,6 +71,17 @@ def _normalise(unit: str) -> str:
     return unit
 
 
+# The unit each kind is written in at the edges (design YAML written back, catalog exports): vendor units,
+# as users write them.
+DISPLAY_UNITS = {
+    "length": "mm", "mass": "kg", "time": "h", "force": "N", "stiffness": "N/um", "speed": "m/min",
+    "acceleration": "m/s^2", "jerk": "m/s^3", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
+    "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
+    "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad",
+    "temperature_difference": "K", "power": "W",
+}
+
+
 @functools.lru_cache(maxsize=512)
 def unit_factor(unit: str, kind: str) -> float:
     """Factor that turns a value in ``unit`` into SI for ``kind``.  Raises ValueError if unknown.

@@ -156,7 +156,7 @@ def rows_dicts(df, kind) -> list[dict]:
             if k in ("str",):
                 rec[c] = v
                 continue
-            unit, f = _VENDOR_UNITS.get(k, ("", 1.0))
+            unit, f = _vendor_unit(k)
             key = f"{c} [{unit}]" if unit else c
             rec[key] = None if v != v else (int(v) if k == "int" else float(f"{v * f:.10g}"))
         rec.update({"status": r["status"], "source": r["source"]})
@@ -164,14 +164,13 @@ def rows_dicts(df, kind) -> list[dict]:
     return out
 
 
-# SI -> the unit a catalog column is shown in (by the column's kind in catalog.SCHEMA).
-_VENDOR_UNITS = {
-    "length": ("mm", 1e3), "force": ("N", 1.0), "stiffness": ("N/um", 1e-6), "mass": ("kg", 1.0),
-    "torque": ("N.m", 1.0), "angular_speed": ("rpm", 60 / 6.283185307179586), "inertia": ("kg.cm^2", 1e4),
-    "torsional_stiffness": ("N.m/rad", 1.0), "dn": ("mm.rpm", 1e3 * 60 / 6.283185307179586),
-    "mass_per_length": ("kg/m", 1.0), "money_per_length": ("EUR/m", 1.0), "money": ("EUR", 1.0),
-    "angle": ("deg", 57.29577951308232), "damping": ("N.s/m", 1.0), "power": ("W", 1.0),
-}
+def _vendor_unit(kind: str) -> tuple:
+    """(unit, factor from SI) a catalog column of ``kind`` is exported in: the display units, with rotor and
+    coupling inertia in kg.cm^2 as motor catalogs list it."""
+    from ..units import DISPLAY_UNITS, unit_factor
+
+    unit = "kg.cm^2" if kind == "inertia" else DISPLAY_UNITS.get(kind)
+    return ("", 1.0) if unit is None else (unit, 1.0 / unit_factor(unit, kind))
 
 
 def _mm(text, flag) -> float:
