@@ -115,6 +115,7 @@ def results_table(study, out_dir):
     import pandas as pd
 
     cols = input_columns(study)
+    chk = check_columns()
     rows = []
     for r in records(study, out_dir):
         row = {"case_id": r["case_id"], "index": r["index"]}
@@ -125,7 +126,7 @@ def results_table(study, out_dir):
         for name, (a, b) in RESULT_COLUMNS:
             row[name] = (r.get(a) or {}).get(b)
         checks = r.get("checks") or {}
-        for name, c, f in check_columns():
+        for name, c, f in chk:
             row[name] = (checks.get(c) or {}).get(f)
         pareto = r.get("pareto")
         row["pareto_points"] = len(pareto["points"]) if pareto else None
@@ -133,10 +134,10 @@ def results_table(study, out_dir):
         row["worker"] = r.get("worker", "")
         rows.append(row)
     columns = ["case_id", "index"] + [n for n, _ in cols.values()] + ["status", "reason"] \
-        + [n for n, _ in RESULT_COLUMNS] + [n for n, _, _ in check_columns()] + ["pareto_points"] \
+        + [n for n, _ in RESULT_COLUMNS] + [n for n, _, _ in chk] + ["pareto_points"] \
         + list(TIME_COLUMNS)
     df = pd.DataFrame(rows, columns=columns)
-    for n in [n for n, _ in RESULT_COLUMNS] + [n for n, _, _ in check_columns()]:
+    for n in [n for n, _ in RESULT_COLUMNS] + [n for n, _, _ in chk]:
         if df[n].dropna().map(lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)).all() \
                 and n not in ("proven",):
             df[n] = pd.to_numeric(df[n], errors="coerce")
