@@ -72,6 +72,10 @@ def _cmd_diagnose_time(args) -> int:
     for opt, val in (("--report", args.report), ("--save-calibration", args.save_calibration)):
         if val:
             raise InputError(f"{opt} is not available for time records (use --json)")
+    if args.gain is not None:  # refused when malformed, whether or not the record is a current record
+        from ..identify.timerecord import parse_gain
+
+        parse_gain(args.gain, source="--gain")
     names = [n.strip() for n in args.effects.split(",") if n.strip()] if args.effects else None
     diag = diagnose_time_files(args.data, plant=plant_from_design(load_design(args.design)), gain=args.gain,
                                candidates=names, max_effects=args.max_effects)

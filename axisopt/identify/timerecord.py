@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from ..units import split_header, unit_factor
+from ..units import check_plausible, split_header, unit_factor
 
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
@@ -84,6 +84,10 @@ def is_time_record(path) -> bool:
     """True if the file's header has a ``time`` column and none of the reduced-table test columns."""
     names = set(_header_names(path))
     return "time" in names and not names & _TABLE_COLUMNS
+
+
+# SI kind of each column, for the range check of every cell (current has no kind: its gain gives it one)
+_KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque"}
 
 
 def parse_gain(text: str, *, source=None, where=None) -> tuple:
@@ -185,9 +189,11 @@ def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecor
                 c = cell.strip()
                 msg = "empty cell" if not c else f"'{c}' is not a number"
                 raise InputError(msg, source=src, where=f"line {i}, column {j + 1} ({names[j]})") from None
+            where = f"line {i}, column {j + 1} ({names[j]})"
             if not math.isfinite(val):
-                raise InputError(f"'{cell.strip()}' is not a finite number", source=src,
-                                 where=f"line {i}, column {j + 1} ({names[j]})")
+                raise InputError(f"'{cell.strip()}' is not a finite number", source=src, where=where)
+            if names[j] in _KIND:  # the tables' range check (data.py): a value no axis can produce is refused
+                check_plausible(val * cols[j][2], _KIND[names[j]], cell.strip(), source=src, key=where, tiny=False)
             data[r, j] = val
     if n < MIN_SAMPLES:
         raise InputError(f"{n} samples; a time record needs at least {MIN_SAMPLES}", source=src)

@@ -189,6 +189,8 @@ def _edit(p, line, text):
          "unit per ampere"),
         (lambda d: _good(d, header="time [s],position [mm],force [N],speed [mm/s]"), "line 1, column 4",
          "unknown column 'speed'"),
+        (lambda d: _edit(_good(d), 9, "0.0070,1e308,3"), "line 9, column 2 (position)", "out of range"),
+        (lambda d: _edit(_good(d), 12, "0.0100,100,-1e300"), "line 12, column 3 (force)", "out of range"),
     ],
 )
 def test_bad_input_is_one_line_naming_file_line_column(tmp_path, capsys, make, where, what):
@@ -196,6 +198,13 @@ def test_bad_input_is_one_line_naming_file_line_column(tmp_path, capsys, make, w
     assert main(["diagnose", str(p), "--design", str(DESIGN)]) == 2
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and str(p) in err and where in err and what in err, err
+
+
+def test_malformed_gain_is_refused_on_any_record(tmp_path, capsys):
+    """--gain is read only for current records, but a malformed one is still an error, not ignored."""
+    assert main(["diagnose", str(_good(tmp_path)), "--design", str(DESIGN), "--gain", "abc"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "--gain" in err and "unit per ampere" in err, err
 
 
 def test_validation_run_with_other_columns_is_refused(tmp_path, capsys):
