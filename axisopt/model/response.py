@@ -23,7 +23,7 @@ from .loads import axial_loads, masses
 from .modes import axial_modes, damping, drive_train_modes
 
 
-def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> dict:
+def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True) -> dict:
     """Evaluate the axis model.
 
     p        : dict of :data:`PARAM_NAMES` -> float / ndarray / CasADi
@@ -31,6 +31,8 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
     mounting : 'fixed-free' | 'fixed-supported' | 'fixed-fixed'
     preload  : nut preload [N] (float / ndarray / CasADi)
     extras   : also compute the drive-train frequencies and the damping (screening skips them)
+    drive_block : also compute the drive block (motor torques, inertia ratio, drive margins); the screening
+               of the mechanics skips it when each drive is screened apart (:func:`drive_response`)
     Returns a dict: per-position arrays (``k_total``, ``k_screw``, ``f_axial``, ``f1``, ...), per-design
     scalars (``k_nut``, ``k_bearing``, ``f_table``, ``drag_torque``, masses, ``cost``, loads) and
     ``margin_<check>`` for each of :data:`CHECKS` (>= 1 passes).
@@ -48,7 +50,8 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True) -> di
     out["cost"] = cost(p)
     out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]
     out.update(checks(p, mounting, preload, loads))
-    out.update(drive(p, m["moving_mass"], out["drag_torque"]))
+    if drive_block:
+        out.update(drive(p, m["moving_mass"], out["drag_torque"]))
     if extras:
         out.update(drive_train_modes(p, chain, modes["m_eff"]))
         out.update(damping(p, chain, modes["m_eff"]))

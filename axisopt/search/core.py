@@ -116,10 +116,10 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
     fits = space.fits[nut_idx] if premask is None else space.fits[nut_idx] & premask
     mask = np.broadcast_to(fits[:, :, None], (nc, B, Gm)).copy()
     with np.errstate(all="ignore"):
-        out_lo = model.axis_response(p, x1, mounting, lo, extras=False)
+        out_lo = model.axis_response(p, x1, mounting, lo, extras=False, drive_block=not two_stage)
         for c in low_end:
             mask &= _screen_ok(c, out_lo)
-        out = model.axis_response(p, xs, mounting, hi, extras=False)
+        out = model.axis_response(p, xs, mounting, hi, extras=False, drive_block=not two_stage)
         for c in high_end:
             mask &= _screen_ok(c, out)
         for c in cvx:  # the margin's bound over the whole preload range
@@ -176,39 +176,41 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
     return out
 
 
-DRIVE_CHUNK = 1_000_000  # expanded (combination, drive) rows per block of the drive stage
+DRIVE_CHUNK = 1_000_000  # (combination, drive) pairs per block of the drive stage
 
 
 def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg, bound):
     """The drive stage of :func:`screen`: each mechanical survivor (nut nn, bearing bb, guide gg) times
     every (motor, coupling) pair, checked on the limits the drive changes at the lowest and highest allowed
-    preload (float64, same slack).  Returns the survivors' (nut, bearing, guide-and-drive, bound)."""
+    preload (float64, same slack), structured over (survivor, drive pair) (:meth:`Space.params_drives`:
+    the mechanics once per survivor, the drive once per pair).  Returns the survivors' (nut, bearing,
+    guide-and-drive, bound)."""
     D = space.n_drives
     cons = [c for c in constraints if c.key in DRIVE_KEYS]
     if not cons or len(nn) == 0:
         g_full = (gg[:, None] * D + np.arange(D)[None]).ravel()
         return np.repeat(nn, D), np.repeat(bb, D), g_full, np.repeat(bound, D)
+    cvx = [c for c in cons if c.convex]
     out_parts = []
     rows = max(1, DRIVE_CHUNK // D)
     for s0 in range(0, len(nn), rows):
         n_, b_, g_, bd = nn[s0:s0 + rows], bb[s0:s0 + rows], gg[s0:s0 + rows], bound[s0:s0 + rows]
-        ne, be = np.repeat(n_, D), np.repeat(b_, D)
-        ge = (g_[:, None] * D + np.arange(D)[None]).ravel()
-        p = space.params_flat(mounting, ne, be, ge)
-        lo, hi = space.preload_lo[ne][:, None], space.preload_hi[ne][:, None]
+        K = len(n_)
+        p = space.params_drives(mounting, n_, b_, g_)
+        lo, hi = space.preload_lo[n_][:, None, None], space.preload_hi[n_][:, None, None]
         with np.errstate(all="ignore"):
             out_lo = model.drive_response(p, lo)
-            ok = np.ones(len(ne), dtype=bool)
-            cvx = [c for c in cons if c.convex]
             out_hi = model.drive_response(p, hi) if cvx else None
+            ok = np.ones((K, D), dtype=bool)
             for c in cons:
                 if c.convex:
                     ub = np.asarray(convex_margin_bound(c, out_lo, out_hi, phases))
-                    ok &= (ub >= c.limit * (1.0 - SCREEN_RTOL)).reshape(len(ne))
+                    ok_c = ub >= c.limit * (1.0 - SCREEN_RTOL)
+                    ok &= ok_c[..., 0] if ok_c.ndim == 3 else ok_c
                 else:
-                    ok &= _screen_ok(c, out_lo).reshape(len(ne))
-        k = np.nonzero(ok)[0]
-        out_parts.append((ne[k], be[k], ge[k], np.repeat(bd, D)[k]))
+                    ok &= _screen_ok(c, out_lo)
+        k, d = np.nonzero(ok)
+        out_parts.append((n_[k], b_[k], g_[k] * D + d, bd[k]))
     return tuple(np.concatenate([o[i] for o in out_parts]) for i in range(4))
 
 

@@ -135,7 +135,9 @@ def _as_dtype(ps: dict, dtype) -> dict:
     """A parameter dict with its arrays cast to ``dtype`` (float32 screening)."""
     if np.dtype(dtype) == np.float64:
         return ps
-    return {k: (v.astype(dtype) if isinstance(v, np.ndarray) else v) for k, v in ps.items()}
+    dt = np.dtype(dtype).type
+    return {k: (v.astype(dtype) if isinstance(v, np.ndarray) else dt(v) if isinstance(v, float) else v)
+            for k, v in ps.items()}
 
 
 def min_last(v):
@@ -362,6 +364,23 @@ class Space:
                                  pick(self.b_arr, b), pick(self.g_arr, g),
                                  None if self.m_arr is None else pick(self.m_arr, g),
                                  None if self.c_arr is None else pick(self.c_arr, g))
+
+    def params_drives(self, mounting: str, n, b, g, dtype=float) -> dict:
+        """Parameters over (K mechanical combinations, D drive pairs, 1 position): screw, nut, bearing and guide
+        columns of the combinations (nut ``n``, bearing ``b``, mechanical guide ``g``) shaped (K, 1, 1), the
+        searched (motor, coupling) pairs (1, D, 1); element (k, d) is guide-and-drive ``g[k] * D + d``."""
+        D = self.n_drives
+
+        def pick(d, i):
+            return {k: v[i][:, None, None] for k, v in d.items()}
+
+        def pairs(d):
+            return None if d is None else {k: v[:D][None, :, None] for k, v in d.items()}
+
+        ps = model.axis_params(self.problem.axis_for(mounting), pick(self.s_arr, n), pick(self.n_arr, n),
+                               pick(self.b_arr, b), pick(self.g_arr, np.asarray(g) * D), pairs(self.m_arr),
+                               pairs(self.c_arr))
+        return _as_dtype(ps, dtype)
 
     def part_rows(self, n, b, g):
         """(screw, nut, bearing, guide, motor, coupling) rows of part-axis numbers; ``g`` is the guide-and-
