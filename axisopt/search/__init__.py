@@ -97,9 +97,10 @@ def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0
         from .explain import explain_infeasible
 
         cert = certificate(info, 0, 0, ())
+        why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive")
         return SolveResult("infeasible", method, problem.name, spec.label, spec.unit, None, [], cert,
                            time.perf_counter() - t0, message="no catalog combination meets every limit",
-                           infeasibility=explain_infeasible(space, constraints, spec))
+                           infeasibility=why)
     cands, nlps, fails, notes = polish(space, ex, constraints, spec, top)
     cert = certificate(info, nlps, fails, notes)
     status = "optimal" if cert.proven else "time_limit"

@@ -1,4 +1,21 @@
-"""Why a problem is infeasible: limits no combination meets, and the closest designs."""
+"""Why a problem is infeasible: limits no combination meets, and the closest designs.
+
+Each limit is taken on its own at its most favourable allowed preload end; a limit no (fitting) combination
+meets is reported with the best value any combination reaches, and the closest designs minimise the sum of
+relative misses (:func:`miss_scores`).
+
+Two ways to the same answer:
+
+* *best-first over blocks* (default method): every (mounting, nut, bearing) block -- all its guides and
+  drives -- gets, from one evaluation with the optimistic guide of each guide type
+  (:meth:`Space.params_optimistic_guide`), the best value any of its combinations could reach on each limit
+  the optimistic guide bounds, and so a lower bound of its combinations' miss scores.  Blocks are scored one
+  by one only while they could still improve a limit's best value, meet a limit not met yet, or hold one of
+  the closest designs; the limits the optimistic guide does not bound (the motor and coupling checks, the
+  inertia ratio) count as "could be met" until some block meets them.
+* *every combination* (exhaustive method, and the reference of the tests): :func:`miss_scores` over the
+  whole product.
+"""
 
 from __future__ import annotations
 
@@ -11,6 +28,8 @@ from .space import COUPLING_KEYS, DRIVE_KEYS, Space, _vec, respond, respond_driv
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block
+FIRST_BATCH = 32  # blocks scored in the first round of the best-first explanation; doubles each round
+BOUND_RTOL = 1e-9  # slack on the block bounds (rounding of the same sums in another order)
 
 
 class _Tally:
@@ -51,13 +70,16 @@ def _closest(top_idx, top_score, idx, score, n):
     return allidx[keep], allsc[keep]
 
 
-def explain_infeasible(space: Space, constraints, objective, n_closest: int = CLOSEST) -> Infeasibility:
-    """Each limit is checked on its own, at its most favourable allowed preload end, over every combination
-    (full position grid).  A limit met by no combination is reported with the best value any combination
-    reaches.  The closest designs minimise the sum of relative misses (:func:`miss_scores`)."""
+def explain_infeasible(space: Space, constraints, objective, n_closest: int = CLOSEST, *,
+                       every_combination: bool = False) -> Infeasibility:
+    """Limits no combination meets (with the best value any reaches) and the ``n_closest`` designs of
+    lowest miss score (ties: lowest combination number).  Best-first over blocks unless
+    ``every_combination`` (module docstring); both give the same answer."""
     tally = _Tally(constraints)
     top_idx, top_score = np.zeros(0, np.int64), np.zeros(0)
-    for idx, score in miss_scores(space, constraints, tally):
+    scores = miss_scores(space, constraints, tally) if every_combination else \
+        _best_first_scores(space, constraints, tally, n_closest)
+    for idx, score in scores:
         top_idx, top_score = _closest(top_idx, top_score, idx, score, n_closest)
     unmeetable = []
     for c in constraints:
@@ -67,15 +89,180 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
                                       for r, combo in enumerate(top_idx, start=1)])
 
 
+def _bounded(space: Space, c) -> bool:
+    """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
+    limits of :func:`axisopt.search.core.block_bounds`: not the drive's, except the cost)."""
+    return not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")
+
+
+def block_optimism(space: Space, constraints):
+    """Per mounting and (nut, bearing) block: for each limit the optimistic guide bounds, the best value any
+    combination of the block reaches at the limit's favourable preload end (full position grid), and a
+    lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
+    _, N, B, _ = space.shape
+    bounded = [c for c in constraints if _bounded(space, c)]
+    types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
+    out = []
+    for mounting in space.mountings:
+        x = space.positions(mounting)
+        step = max(1, CHUNK // max(B * len(x), 1))
+        best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in bounded}
+        for n0 in range(0, N, step):
+            sl = slice(n0, min(N, n0 + step))
+            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1)
+            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
+            shape = (sl.stop - sl.start, B)
+            for t in types:
+                p = space.params_optimistic_guide(mounting, sl, str(t))
+                out_lo, out_hi = respond(p, x, mounting, lo), respond(p, x, mounting, hi)
+                for c in bounded:
+                    v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape + (1,))[..., 0]
+                                         for o in (out_lo, out_hi)))
+                    pick = np.maximum if c.sense == ">=" else np.minimum
+                    best[c.name][sl] = pick(best[c.name][sl], v)
+        lb = np.where(space.fits, 0.0, 1.0)
+        for c in bounded:
+            lb = lb + c.violation(best[c.name])
+        out.append((best, lb))
+    return out
+
+
+def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int):
+    """Blocks of (combination numbers, miss scores) in best-first order, until no block left out could
+    change the explanation: improve the best value of a limit no block meets yet (or meet it), or hold a
+    design among the ``n_closest`` (its score lower bound not above the current ``n_closest``-th score)."""
+    opt = block_optimism(space, constraints)
+    M, (_, N, B, _) = len(space.mountings), space.shape
+    bounded = {c.name for c in constraints if _bounded(space, c)}
+    lb = np.stack([o[1] for o in opt])  # (M, N, B)
+    vals = {c.name: np.stack([o[0][c.name] for o in opt]) for c in constraints if c.name in bounded}
+    fits = np.broadcast_to(space.fits, (M, N, B))
+    usable = fits if fits.any() else np.ones_like(fits)  # the tally counts fitting combinations if any fit
+    done = np.zeros((M, N, B), dtype=bool)
+    scores = np.zeros(0)
+    batch = FIRST_BATCH
+    drive_known = False
+    while not done.all():
+        if not drive_known and done.any() and any(not tally.met[c.name] for c in constraints
+                                                  if c.name not in bounded):
+            lb = lb + _drive_pass(space, [c for c in constraints if c.name not in bounded], tally)
+            drive_known = True
+        want = np.zeros((M, N, B), dtype=bool)
+        open_ = ~done
+        for c in constraints:
+            if tally.met[c.name] or (drive_known and c.name not in bounded):
+                continue
+            cand = open_ & usable
+            if c.name not in bounded:  # could be met anywhere: the open blocks of lowest score bound first
+                want |= _first(cand, lb, batch)
+                continue
+            v = vals[c.name]
+            b = tally.best[c.name]
+            if b is not None:
+                tol = BOUND_RTOL * max(abs(b), 1e-30)
+                cand &= v > b + tol if c.sense == ">=" else v < b - tol
+            want |= _first(cand, -v if c.sense == ">=" else v, batch)
+        kth = np.partition(scores, n_closest - 1)[n_closest - 1] if len(scores) >= n_closest else np.inf
+        cand = open_ & (lb <= kth + BOUND_RTOL * max(abs(kth), 1.0) if np.isfinite(kth) else open_)
+        want |= _first(cand, lb, batch)
+        if not want.any():
+            break
+        _, _, G = space.shape[1:]
+        rows = max(1, CHUNK // max(G * len(space.positions(space.mountings[0])), 1))
+        for mi in range(M):
+            n_sel, b_sel = np.nonzero(want[mi])
+            for s0 in range(0, len(n_sel), rows):
+                for idx, score in _score_nuts(space, constraints, tally, mi, n_sel[s0:s0 + rows],
+                                              b_sel[s0:s0 + rows]):
+                    scores = np.concatenate([scores, np.sort(score)[:n_closest]])
+                    yield idx, score
+        done |= want
+        batch *= 2
+
+
+def _drive_pass(space: Space, drive, tally: _Tally) -> np.ndarray:
+    """The limits the optimistic guide does not bound (the drive's: motor and coupling checks, inertia
+    ratio), each at its favourable preload end on the drive sub-assembly alone (no stiffness chain, no
+    positions) over every combination: folded into ``tally`` (so their best values are exact), and per
+    block the least sum of their misses over its guides and drives, which the block's score lower bound
+    may add.  Returns that sum, (mountings, nuts, bearings)."""
+    _, N, B, G = space.shape
+    out = np.zeros((len(space.mountings), N, B))
+    step = max(1, CHUNK // max(B * G, 1))
+    for mi, mounting in enumerate(space.mountings):
+        for n0 in range(0, N, step):
+            sl = slice(n0, min(N, n0 + step))
+            shape = (sl.stop - sl.start, B, G)
+            fits = np.broadcast_to(space.fits[sl][:, :, None], shape)
+            pd = space.params_structured(mounting, sl)
+            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1)
+            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
+            d_lo, d_hi = respond_drive(pd, lo), respond_drive(pd, hi)
+            total = np.zeros(shape)
+            for c in drive:
+                v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in (d_lo, d_hi)))
+                miss = c.violation(v)
+                total = total + miss
+                tally.add(c, v, miss, fits)
+            out[mi, sl] = total.min(axis=-1)
+    return out
+
+
+def _first(cand, key, n):
+    """``n`` blocks of ``cand`` of lowest ``key`` (blocks tied with the n-th wait for a later round)."""
+    k = np.nonzero(cand.ravel())[0]
+    if len(k) > n:
+        k = k[np.argpartition(key.ravel()[k], n - 1)[:n]]
+    out = np.zeros(cand.size, dtype=bool)
+    out[k] = True
+    return out.reshape(cand.shape)
+
+
 def miss_scores(space: Space, constraints, tally: _Tally | None = None):
-    """Blocks of (combination numbers, sum of relative misses): each limit at its favourable preload end,
-    plus 1 when the bearing does not fit the screw.
+    """Blocks of (combination numbers, sum of relative misses) over every combination: each limit at its
+    favourable preload end, plus 1 when the bearing does not fit the screw (:func:`_score_nuts`)."""
+    tally = tally or _Tally(constraints)
+    _, N, B, G = space.shape
+    D = space.n_drives if space.m_arr is not None else 1
+    for mi, mounting in enumerate(space.mountings):
+        x = space.positions(mounting)
+        step = max(1, CHUNK // max(B * (G // D) * len(x), B * G, 1))
+        for n0 in range(0, N, step):
+            yield from _score_nuts(space, constraints, tally, mi, np.arange(n0, min(N, n0 + step)))
+
+
+def _pair_params(space: Space, mounting: str, nut_idx, bearing_idx, mechanics: bool,
+                 coupling_stiffness: float | None = None) -> dict:
+    """Parameters over ((nut, bearing) pairs, 1, guide-and-drive, positions): the structured layout of
+    :meth:`Space.params_structured` with the nut and bearing axes merged into one axis of chosen pairs."""
+    from .. import model as _model
+    from .space import _shaped
+
+    D = space.n_drives if (mechanics and space.m_arr is not None) else 1
+    s = _shaped({k: v[nut_idx] for k, v in space.s_arr.items()}, (-1, 1, 1, 1), float)
+    nt = _shaped({k: v[nut_idx] for k, v in space.n_arr.items()}, (-1, 1, 1, 1), float)
+    b = _shaped({k: v[bearing_idx] for k, v in space.b_arr.items()}, (-1, 1, 1, 1), float)
+    g = _shaped({k: v[::D] for k, v in space.g_arr.items()}, (1, 1, -1, 1), float)
+    drive = space.m_arr is not None and not mechanics
+    mo = _shaped(space.m_arr, (1, 1, -1, 1), float) if drive else None
+    cp = _shaped(space.c_arr, (1, 1, -1, 1), float) if drive and space.c_arr is not None else None
+    p = _model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, mo, cp)
+    if mechanics and space.m_arr is not None:
+        p["coupling_stiffness"] = float(space.coupling_stiffnesses()[-1] if coupling_stiffness is None
+                                        else coupling_stiffness)
+    return p
+
+
+def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bearing_idx=None):
+    """(combination numbers, miss scores) of mounting ``mi`` over every guide and drive of either the nuts
+    ``nut_idx`` times every bearing, or, with ``bearing_idx`` (aligned with ``nut_idx``), the (nut, bearing)
+    blocks of those pairs only.
 
     Structured like the screening: the limits the drive does not change are evaluated once per (screw, nut,
     bearing, guide) combination, the ones the coupling's stiffness changes (:data:`COUPLING_KEYS`) once per
     distinct coupling stiffness, the drive's limits (:data:`DRIVE_KEYS`) on the drive sub-assembly alone for
     each (motor, coupling) pair."""
-    tally = tally or _Tally(constraints)
+    mounting = space.mountings[mi]
     _, N, B, G = space.shape
     two_stage = space.m_arr is not None
     D = space.n_drives if two_stage else 1
@@ -88,50 +275,62 @@ def miss_scores(space: Space, constraints, tally: _Tally | None = None):
     if two_stage:
         pair_k = space.c_arr["torsional_stiffness"][:D] if space.c_arr is not None else np.full(D, k_cpl[0])
         group = np.searchsorted(k_cpl, pair_k)
-    for mi, mounting in enumerate(space.mountings):
-        x = space.positions(mounting)
-        step = max(1, CHUNK // max(B * Gm * len(x), B * G, 1))
-        for n0 in range(0, N, step):
-            sl = slice(n0, min(N, n0 + step))
-            nc = sl.stop - sl.start
-            shape = (nc, B, Gm)
-            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1)
-            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
-            fits = np.broadcast_to(space.fits[sl][:, :, None], shape)
-            score = np.where(fits, 0.0, 1.0)
-            p = space.params_structured(mounting, sl, mechanics=two_stage)
-            out_lo, out_hi = respond(p, x, mounting, lo), respond(p, x, mounting, hi)
-            for c in mech:
-                v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in (out_lo, out_hi)))
+    x = space.positions(mounting)
+    nut_idx = np.asarray(nut_idx, dtype=np.int64)
+    nc = len(nut_idx)
+    pairs = bearing_idx is not None
+    Bx = 1 if pairs else B  # the bearing axis: merged into the pair axis, or every bearing
+
+    def params(**kw):
+        if pairs:
+            return _pair_params(space, mounting, nut_idx, bearing_idx, **kw)
+        return space.params_structured(mounting, nut_idx, **kw)
+
+    shape = (nc, Bx, Gm)
+    lo = space.preload_lo[nut_idx].reshape(-1, 1, 1, 1)
+    hi = space.preload_hi[nut_idx].reshape(-1, 1, 1, 1)
+    fit_nb = space.fits[nut_idx, bearing_idx][:, None] if pairs else space.fits[nut_idx]
+    fits = np.broadcast_to(fit_nb[:, :, None], shape)
+    score = np.where(fits, 0.0, 1.0)
+    p = params(mechanics=two_stage)
+    out_lo, out_hi = respond(p, x, mounting, lo), respond(p, x, mounting, hi)
+    for c in mech:
+        v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in (out_lo, out_hi)))
+        miss = c.violation(v)
+        score = score + miss
+        tally.add(c, v, miss, fits)
+    if two_stage:
+        shape_d = (nc, Bx, Gm, D)
+        fits_d = np.broadcast_to(fits[..., None], shape_d)
+        score = np.broadcast_to(score[..., None], shape_d).copy()
+        by_k = []
+        for k in k_cpl if cpl else ():
+            pk = params(mechanics=True, coupling_stiffness=float(k))
+            by_k.append((respond(pk, x, mounting, lo), respond(pk, x, mounting, hi)))
+        for c in cpl:
+            v = np.stack([_favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in outs))
+                          for outs in by_k], axis=-1)[..., group]
+            miss = c.violation(v)
+            score += miss
+            tally.add(c, v, miss, fits_d)
+        if drive:
+            pd = params(mechanics=False)
+            d_lo, d_hi = respond_drive(pd, lo), respond_drive(pd, hi)
+            for c in drive:
+                v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), (nc, Bx, G)).reshape(shape_d)
+                                     for o in (d_lo, d_hi)))
                 miss = c.violation(v)
-                score = score + miss
-                tally.add(c, v, miss, fits)
-            if two_stage:
-                shape_d = (nc, B, Gm, D)
-                fits_d = np.broadcast_to(fits[..., None], shape_d)
-                score = np.broadcast_to(score[..., None], shape_d).copy()
-                by_k = []
-                for k in k_cpl if cpl else ():
-                    pk = space.params_structured(mounting, sl, mechanics=True, coupling_stiffness=float(k))
-                    by_k.append((respond(pk, x, mounting, lo), respond(pk, x, mounting, hi)))
-                for c in cpl:
-                    v = np.stack([_favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in outs))
-                                  for outs in by_k], axis=-1)[..., group]
-                    miss = c.violation(v)
-                    score += miss
-                    tally.add(c, v, miss, fits_d)
-                if drive:
-                    pd = space.params_structured(mounting, sl)
-                    d_lo, d_hi = respond_drive(pd, lo), respond_drive(pd, hi)
-                    for c in drive:
-                        v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), (nc, B, G)).reshape(shape_d)
-                                             for o in (d_lo, d_hi)))
-                        miss = c.violation(v)
-                        score += miss
-                        tally.add(c, v, miss, fits_d)
-            nn, bb, gg = np.meshgrid(np.arange(sl.start, sl.stop), np.arange(B), np.arange(G), indexing="ij")
-            idx = np.ravel_multi_index((np.full(nn.size, mi), nn.ravel(), bb.ravel(), gg.ravel()), space.shape)
-            yield idx, score.reshape(-1)
+                score += miss
+                tally.add(c, v, miss, fits_d)
+    score = np.broadcast_to(score, shape_d if two_stage else shape).reshape(nc, Bx, G)
+    if pairs:
+        nn = np.repeat(nut_idx, G)
+        bb = np.repeat(np.asarray(bearing_idx, dtype=np.int64), G)
+        gg = np.tile(np.arange(G), nc)
+    else:
+        n3, bb, gg = np.meshgrid(nut_idx, np.arange(B), np.arange(G), indexing="ij")
+        nn, bb, gg = n3.ravel(), bb.ravel(), gg.ravel()
+    yield np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), score.reshape(-1)
 
 
 def _last(c, v):

@@ -134,7 +134,8 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     if not len(front):
         from .explain import explain_infeasible
 
-        res.infeasibility = explain_infeasible(space, constraints, spec)
+        exhaustive = method == "exhaustive"
+        res.infeasibility = explain_infeasible(space, constraints, spec, every_combination=exhaustive)
         res.message = "no catalog combination meets every limit"
     return res
 

@@ -1,0 +1,114 @@
+"""The infeasibility explanation of the default method (best-first over (mounting, nut, bearing) blocks,
+bounded with the optimistic guide; search/explain.py) against the same explanation over every combination
+(the exhaustive method's): the same limits reported unmeetable with the same best values, and the same
+closest designs, on random catalogs with ball and roller guides, with and without a drive search, infeasible
+on a mechanical limit, on a drive limit, or on both."""
+
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+from test_block_search import _problem
+
+from axisopt.problem import load_problem
+from axisopt.search import explain as E
+from axisopt.search import solve
+from axisopt.search.space import build_constraints, build_space, objective_spec
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _weak_motors(p, factor):
+    m = p.catalog.motors.copy()
+    m["rated_torque"] *= factor
+    m["peak_torque"] *= factor
+    return replace(p, catalog=replace(p.catalog, motors=m))
+
+
+def _case(seed, kind):
+    p = _problem(seed)
+    e = solve(p, "exhaustive", top=1, sensitivities=False).best
+    if kind in ("mechanics", "both"):
+        p = p.with_limit("max_cost", 0.4 * e.cost).with_limit("min_frequency", 1.3 * e.min_frequency)
+    if kind in ("drive", "both"):
+        p = _weak_motors(p, 0.15)
+    return p
+
+
+CASES = [(0, "mechanics"), (2, "mechanics"), (1, "mechanics"), (1, "drive"), (3, "drive"), (5, "both")]
+
+
+@pytest.mark.parametrize("seed,kind", CASES)
+def test_best_first_explanation_equals_every_combination(seed, kind):
+    p = _case(seed, kind)
+    sp, cons = build_space(p), build_constraints(p)
+    spec = objective_spec(p.objective.mode, p)
+    full = E.explain_infeasible(sp, cons, spec, every_combination=True)
+    assert full.unmeetable, "each case leaves some limit that no combination meets"
+    fast = E.explain_infeasible(sp, cons, spec)
+    assert [u[0] for u in fast.unmeetable] == [u[0] for u in full.unmeetable]
+    for a, b in zip(fast.unmeetable, full.unmeetable):
+        assert a[1] == pytest.approx(b[1], rel=1e-9, abs=1e-12), a
+    assert [c.combination for c in fast.closest] == [c.combination for c in full.closest]
+    assert [c.misses for c in fast.closest] == [c.misses for c in full.closest]
+
+
+def _scored(sp, cons, spec, monkeypatch):
+    scored = []
+    orig = E._score_nuts
+
+    def counting(*a, **k):
+        for idx, score in orig(*a, **k):
+            scored.append(len(idx))
+            yield idx, score
+
+    monkeypatch.setattr(E, "_score_nuts", counting)
+    return E.explain_infeasible(sp, cons, spec), sum(scored)
+
+
+def _shipped(name):
+    p = load_problem(ROOT / "problems" / name)
+    return p, build_space(p), build_constraints(p), objective_spec(p.objective.mode, p)
+
+
+def test_shipped_mechanical_infeasibility_scores_few_blocks(monkeypatch):
+    """problems/infeasible_problem.yaml (1.7 M combinations): the blocks' bounds leave almost all of the
+    product unscored, and the explanation names the limits no combination meets."""
+    p, sp, cons, spec = _shipped("infeasible_problem.yaml")
+    why, n = _scored(sp, cons, spec, monkeypatch)
+    assert n < 0.1 * sp.size, (n, sp.size)
+    assert [u[0] for u in why.unmeetable] == ["max cost", "critical speed / max screw speed"]
+    assert len(why.closest) == E.CLOSEST and all(c.misses for c in why.closest)
+
+
+def test_shipped_drive_infeasibility_equals_every_combination(monkeypatch):
+    """problems/infeasible_drive_problem.yaml: every drive limit is folded in exactly (the optimistic guide
+    does not bound them) and the answer equals the scan of every combination."""
+    p, sp, cons, spec = _shipped("infeasible_drive_problem.yaml")
+    why, n = _scored(sp, cons, spec, monkeypatch)
+    full = E.explain_infeasible(sp, cons, spec, every_combination=True)
+    assert why.to_dict() == full.to_dict()
+    assert n < sp.size
+
+
+def test_block_optimism_bounds_every_combination():
+    """Each block's optimistic values are at least as good as every combination's in it, and its score
+    lower bound at most their miss scores (reference: the miss scores over every combination)."""
+    p = _case(1, "both")
+    sp, cons = build_space(p), build_constraints(p)
+    opt = E.block_optimism(sp, cons)
+    for idx, score in E.miss_scores(sp, cons):
+        m, n, b, _ = sp.unravel(idx)
+        for mi in np.unique(m):
+            k = m == mi
+            lb = opt[mi][1][n[k], b[k]]
+            assert np.all(lb <= score[k] * (1 + 1e-9) + 1e-12)
+
+
+def test_solve_uses_the_block_explanation_and_agrees_with_exhaustive():
+    p = _case(2, "mechanics")
+    d = solve(p, "default", sensitivities=False)
+    e = solve(p, "exhaustive", sensitivities=False)
+    assert d.status == e.status == "infeasible"
+    assert d.infeasibility.to_dict() == e.infeasibility.to_dict()
