@@ -63,7 +63,7 @@ def life_revolutions(dynamic_load_rating, load, load_factor=1.0):
     dynamic_load_rating : C_a [N];  load : F_a, mean axial load [N] (> 0);  load_factor : f_w [-]
     Returns L [rev].  Source: THK / MiSUMi / ISO 3408-5.
     """
-    return (dynamic_load_rating / (load_factor * load)) ** 3 * 1e6
+    return mx.power(dynamic_load_rating / (load_factor * load), 3) * 1e6
 
 
 def life_time(dynamic_load_rating, load, speed, load_factor=1.0):

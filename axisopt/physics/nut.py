@@ -123,7 +123,7 @@ def preloaded_pair_load(preload, axial_load):
     Source: Steinmeyer technical pages ("expressions and definitions"), ISO 3408-5 (per mechanixcalc).
     """
     lift = 2.0**1.5 * mx.fmax(preload, 1e-9)
-    f1 = mx.fmax(preload, 1e-9) * (1.0 + mx.fmin(axial_load, lift) / lift) ** 1.5
+    f1 = mx.fmax(preload, 1e-9) * mx.power(1.0 + mx.fmin(axial_load, lift) / lift, 1.5)
     return mx.if_else(axial_load < lift, f1, axial_load)
 
 
