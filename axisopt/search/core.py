@@ -92,15 +92,48 @@ def _mechanical(space: Space, constraints):
     return [c for c in constraints if not (two_stage and c.key in DRIVE_KEYS)]
 
 
+CACHE_BLOCK = 200_000  # (nut, bearing, guide) combinations per evaluation inside screen_nuts (cache-sized arrays)
+
+
 def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSpec, premask=None):
     """:func:`screen` over the nuts ``nuts`` (a slice or an index array) of mounting ``mi``, every bearing
     and guide (and drive); ``premask`` (nuts x bearings, optional) leaves out (nut, bearing) blocks.
-    Returns the survivors' combination numbers and bounds."""
+    Returns the survivors' combination numbers and bounds.  The model is evaluated over sub-blocks of about
+    :data:`CACHE_BLOCK` combinations (whole nuts): numpy then works on arrays that stay in the CPU cache,
+    about twice as fast as over millions of combinations at once; the survivors are the same."""
     mounting = space.mountings[mi]
     _, N, B, G = space.shape
     two_stage = space.m_arr is not None
     D = space.n_drives if two_stage else 1
     Gm = G // D  # guide axis of the mechanical stage
+    phases = space.problem.axis_for(mounting).phases
+    nut_idx = np.arange(N)[nuts] if isinstance(nuts, slice) else np.asarray(nuts, dtype=np.int64)
+    step = max(1, CACHE_BLOCK // max(B * Gm, 1))
+    parts = []
+    for s0 in range(0, len(nut_idx), step):
+        s1 = min(len(nut_idx), s0 + step)
+        if isinstance(nuts, slice):
+            sub = slice(int(nut_idx[s0]), int(nut_idx[s1 - 1]) + 1) if len(nut_idx) else nuts
+        else:
+            sub = nut_idx[s0:s1]
+        pm = None if premask is None else premask[s0:s1]
+        parts.append(_screen_mechanics(space, mounting, sub, nut_idx[s0:s1], constraints, objective, pm))
+    if parts:
+        nn, bb, gg, bnd = (np.concatenate([q[i] for q in parts]) for i in range(4))
+    else:
+        nn, bb, gg, bnd = (np.zeros(0, np.int64),) * 3 + (np.zeros(0),)
+    if two_stage:
+        nn, bb, gg, bnd = _screen_drives(space, mounting, constraints, phases, nn, bb, gg, bnd)
+    return np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), bnd
+
+
+def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, objective: ObjectiveSpec, premask):
+    """The mechanical stage of :func:`screen_nuts` over the nuts ``nuts`` (numbers ``nut_idx``): every limit
+    but the drive's (with a drive search), and the bound.  Returns the survivors' (nut, bearing, guide,
+    bound)."""
+    _, _, B, G = space.shape
+    two_stage = space.m_arr is not None
+    Gm = G // (space.n_drives if two_stage else 1)
     mech = _mechanical(space, constraints)
     low_end = [c for c in mech if not c.lower_type and not c.convex]  # independent or favoured by a low preload
     high_end = [c for c in mech if c.lower_type]
@@ -108,7 +141,6 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
     xs = space.bound_positions(mounting).astype(np.float32)
     x1 = xs[-1:]
     phases = space.problem.axis_for(mounting).phases
-    nut_idx = np.arange(N)[nuts] if isinstance(nuts, slice) else np.asarray(nuts, dtype=np.int64)
     p = space.params_structured(mounting, nuts, dtype=np.float32, mechanics=two_stage)
     lo = space.preload_lo[nut_idx].reshape(-1, 1, 1, 1).astype(np.float32)
     hi = space.preload_hi[nut_idx].reshape(-1, 1, 1, 1).astype(np.float32)
@@ -129,11 +161,7 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
         bound = objective.value(out)
     bound = np.broadcast_to(bound + SCREEN_RTOL * np.abs(bound), (nc, B, Gm))
     nn, bb, gg = np.nonzero(mask)
-    bnd = bound[nn, bb, gg].astype(float)
-    nn = nut_idx[nn]
-    if two_stage:
-        nn, bb, gg, bnd = _screen_drives(space, mounting, constraints, phases, nn, bb, gg, bnd)
-    return np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), bnd
+    return nut_idx[nn], bb, gg, bound[nn, bb, gg].astype(float)
 
 
 def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
@@ -176,7 +204,7 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
     return out
 
 
-DRIVE_CHUNK = 1_000_000  # (combination, drive) pairs per block of the drive stage
+DRIVE_CHUNK = 50_000  # (combination, drive) pairs per block of the drive stage (cache-sized float64 arrays)
 
 
 def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg, bound):
