@@ -20,10 +20,10 @@ from .function import (
 )
 from .modes import STEEL_DAMPING
 from .params import PARAM_NAMES, axis_params, one_design, positions
-from .response import axis_response, drive_response
+from .response import CHAIN_OUTPUTS, axis_response, drive_response
 
 __all__ = [
-    "CHECKS", "CHECK_LABELS", "DRIVE_CHECKS", "COMPONENTS", "passes", "PARAM_NAMES", "PROFILE_OUTPUTS",
+    "CHAIN_OUTPUTS", "CHECKS", "CHECK_LABELS", "DRIVE_CHECKS", "COMPONENTS", "passes", "PARAM_NAMES", "PROFILE_OUTPUTS",
     "SCALAR_OUTPUTS",
     "SCREW_EFFICIENCY",
     "STEEL_DAMPING", "AxisModel", "Evaluation", "axis_params", "axis_response", "design_params", "drive_response",

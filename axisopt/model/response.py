@@ -22,8 +22,14 @@ from .drive import drive
 from .loads import axial_loads, masses
 from .modes import axial_modes, damping, drive_train_modes
 
+# The outputs of the stiffness chain and the axial modes (``chain=False`` leaves them out).
+CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupling", "k_nut", "k_nut_unloaded",
+                           "c_bracket", "c_housing", "k_bearing", "k_drive", "k_total", "thermal_displacement",
+                           "m_eff", "f_axial", "f_table", "f1"})
 
-def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True) -> dict:
+
+def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True,
+                  chain: bool = True) -> dict:
     """Evaluate the axis model.
 
     p        : dict of :data:`PARAM_NAMES` -> float / ndarray / CasADi
@@ -33,19 +39,22 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     extras   : also compute the drive-train frequencies and the damping (screening skips them)
     drive_block : also compute the drive block (motor torques, inertia ratio, drive margins); the screening
                of the mechanics skips it when each drive is screened apart (:func:`drive_response`)
+    chain    : also compute the stiffness chain and the axial modes (:data:`CHAIN_OUTPUTS`; the screening
+               skips them where it checks only the limits at the lowest preload)
     Returns a dict: per-position arrays (``k_total``, ``k_screw``, ``f_axial``, ``f1``, ...), per-design
     scalars (``k_nut``, ``k_bearing``, ``f_table``, ``drag_torque``, masses, ``cost``, loads) and
     ``margin_<check>`` for each of :data:`CHECKS` (>= 1 passes).
     """
     m = masses(p)
     loads = axial_loads(p, m["moving_mass"])
-    chain = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
-    modes = axial_modes(p, x, mounting, chain, m["moving_mass"], m["screw_mass"])
     out = {}
     out.update(m)
     out.update(loads)
-    out.update(chain)
-    out.update(modes)
+    if chain or extras:
+        k = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
+        modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"])
+        out.update(k)
+        out.update(modes)
     out.update(drag_torque(p, preload, loads))
     out["cost"] = cost(p)
     out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]
@@ -53,8 +62,8 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     if drive_block:
         out.update(drive(p, m["moving_mass"], out["drag_torque"]))
     if extras:
-        out.update(drive_train_modes(p, chain, modes["m_eff"]))
-        out.update(damping(p, chain, modes["m_eff"]))
+        out.update(drive_train_modes(p, k, modes["m_eff"]))
+        out.update(damping(p, k, modes["m_eff"]))
     return out
 
 

@@ -148,7 +148,8 @@ def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, o
     fits = space.fits[nut_idx] if premask is None else space.fits[nut_idx] & premask
     mask = np.broadcast_to(fits[:, :, None], (nc, B, Gm)).copy()
     with np.errstate(all="ignore"):
-        out_lo = model.axis_response(p, x1, mounting, lo, extras=False, drive_block=not two_stage)
+        chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in low_end) or bool(cvx)
+        out_lo = model.axis_response(p, x1, mounting, lo, extras=False, drive_block=not two_stage, chain=chain_lo)
         for c in low_end:
             mask &= _screen_ok(c, out_lo)
         out = model.axis_response(p, xs, mounting, hi, extras=False, drive_block=not two_stage)

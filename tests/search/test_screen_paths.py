@@ -85,3 +85,16 @@ def test_power_products_match_numpy(dtype):
         np.testing.assert_allclose(mx.power(x, e), x**e, rtol=4 * eps)
         assert mx.power(x, e).dtype == dtype
     assert mx.power(2.0, 3) == 8.0
+
+
+def test_chain_outputs_are_what_chain_false_leaves_out():
+    p = _problem(1)
+    sp = build_space(p)
+    m = sp.mountings[0]
+    ps = sp.params_structured(m, slice(0, 3), dtype=np.float32)
+    lo = sp.preload_lo[:3].reshape(-1, 1, 1, 1).astype(np.float32)
+    x = sp.positions(m)[-1:]
+    full = model.axis_response(ps, x, m, lo, extras=False)
+    part = model.axis_response(ps, x, m, lo, extras=False, chain=False)
+    assert set(full) - set(part) == model.CHAIN_OUTPUTS
+    assert all(np.array_equal(full[k], part[k]) for k in part if k != "duty_torques")
