@@ -27,6 +27,9 @@ re-checked; the numbers printed are the model's.
 from __future__ import annotations
 
 import contextlib
+import os
+import sys
+import tempfile
 import threading
 import time
 
@@ -431,6 +434,32 @@ def _recover(space, mi, z, P, m, constraints):
                          f"preload {pre:.1f} N)")
 
 
+@contextlib.contextmanager
+def _c_stderr_to_file():
+    """Send what the SCIP/SoPlex C code writes to file descriptor 2 during the block (e.g. 'Cannot set
+    feasibility tolerance to small value 1e-12 without GMP', hundreds of times on a long solve) to a temporary
+    file instead of the user's terminal; yields a list that holds its distinct lines afterwards."""
+    lines: list = []
+    fd = 2  # the C library's stderr, whatever Python's sys.stderr is
+    with contextlib.suppress(AttributeError, OSError, ValueError):
+        sys.stderr.flush()
+    try:
+        saved = os.dup(fd)
+    except OSError:  # no descriptor 2 (a daemon): nothing to keep off the terminal
+        yield lines
+        return
+    with tempfile.TemporaryFile() as tmp:
+        os.dup2(tmp.fileno(), fd)
+        try:
+            yield lines
+        finally:
+            os.dup2(saved, fd)
+            os.close(saved)
+            tmp.seek(0)
+            text = tmp.read().decode("utf-8", "replace").splitlines()
+            lines.extend(dict.fromkeys(t.strip() for t in text if t.strip()))
+
+
 def solve_scip(problem, space, constraints, objective, *, time_limit: float = 100.0, top: int = 1,
                t0: float | None = None) -> SolveResult:
     """Solve each mounting's MINLP with SCIP and return the best design (re-evaluated)."""
@@ -472,7 +501,11 @@ def solve_scip(problem, space, constraints, objective, *, time_limit: float = 10
         m.setParam("randomization/randomseedshift", 0)
         for key, value in SCIP_PARAMS.items():
             m.setParam(key, value)
-        m.optimize()
+        with _c_stderr_to_file() as lines:
+            m.optimize()
+        if lines:
+            notes.append(f"{mounting}: {len(lines)} distinct SCIP/SoPlex messages kept off the terminal, "
+                         f"e.g. '{lines[0]}'")
         solves += 1
         st = m.getStatus()
         nodes += int(m.getNNodes())
