@@ -444,11 +444,12 @@ def _c_stderr_to_file():
     with contextlib.suppress(AttributeError, OSError, ValueError):
         sys.stderr.flush()
     try:
+        tmp = tempfile.TemporaryFile()
         saved = os.dup(fd)
-    except OSError:  # no descriptor 2 (a daemon): nothing to keep off the terminal
+    except OSError:  # no descriptor 2 (a daemon) or no room for the file: leave the messages where they go
         yield lines
         return
-    with tempfile.TemporaryFile() as tmp:
+    with tmp:
         os.dup2(tmp.fileno(), fd)
         try:
             yield lines
