@@ -190,6 +190,9 @@ def format_result(res, top: int | None = None) -> str:
         blocks = (f"; screened {c.screened:,}, the rest pruned by their (nut, bearing) block's bound"
                   if res.method == "default" and c.screened is not None else "")
         L.append(f"  combinations {c.combinations:,}{blocks}")
+        if c.pruned_by_dominance:
+            L.append(f"  never formed {c.pruned_by_dominance:,} (a coupling another beats on every count, or one "
+                     "that cannot carry the motor's peak torque)")
         L.append(f"  feasible {c.feasible:,}{' (screened)' if res.method == 'default' else ''}; pruned by bound "
                  f"{c.pruned_by_bound:,}; exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} "
                  f"(failures {c.nlp_failures})")

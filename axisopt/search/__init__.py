@@ -93,6 +93,7 @@ def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0
         ex, info = exhaustive_search(space, constraints, spec)
     else:
         ex, info = bound_order_search(space, constraints, spec, top=top)
+    info["pruned_by_dominance"] = space.pruned_by_dominance
     if not np.isfinite(ex.objective).any():
         from .explain import explain_infeasible
 

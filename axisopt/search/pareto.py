@@ -106,6 +106,7 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
                 "exact_evaluations": int(len(idx)), "gap": 0.0, "proven": True, "screening_time": t_screen,
                 "screening_rate": space.size / max(t_screen, 1e-9), "screened": screened,
                 "pruned_by_block": space.size - screened}
+    info["pruned_by_dominance"] = space.pruned_by_dominance
     ok = np.nonzero(ex.feasible)[0]
     cols = []
     for k in keys:

@@ -65,6 +65,9 @@ class Certificate:
     # or reach the incumbent with any guide and drive), and combinations screened one by one
     pruned_by_block: int = 0
     screened: int | None = None
+    # combinations never formed (not in ``combinations``): a (motor, coupling) pair whose coupling is dominated
+    # by another or cannot carry the motor's peak torque
+    pruned_by_dominance: int = 0
 
     def to_dict(self) -> dict:
         return {k: _clean(v) for k, v in asdict(self).items()}

@@ -246,11 +246,19 @@ class Space:
     drives: tuple = ((None, None),)  # (motor position, coupling position) pairs; None: axis values
     m_arr: dict | None = field(repr=False, default=None)  # motor columns over the G*D axis
     c_arr: dict | None = field(repr=False, default=None)
+    # (motor, coupling) pairs never formed: a coupling another beats on every count, or one that cannot carry
+    # the motor's peak torque (a limit of the pair alone)
+    pairs_left_out: int = 0
     _cache: dict = field(repr=False, default_factory=dict)
 
     @property
     def n_drives(self) -> int:
         return len(self.drives)
+
+    @property
+    def pruned_by_dominance(self) -> int:
+        """Combinations left out before the search by :attr:`pairs_left_out` (not in :attr:`size`)."""
+        return int(self.size // self.n_drives * self.pairs_left_out)
 
     @property
     def shape(self) -> tuple:
@@ -486,6 +494,7 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     if r.max_motor_flange is not None:  # a motor without a listed flange cannot be shown to fit
         motors = motors[(motors["flange"] <= r.max_motor_flange * (1 + 1e-9)).to_numpy()]
     couplings = _filtered(cat.couplings, r, "coupling", r.coupling_series)
+    n_couplings = len(couplings)
     if len(couplings) and not r.required("coupling"):
         couplings = couplings[~coupling_dominated(couplings)]
     ratio = problem.axis.reduction_ratio
@@ -506,6 +515,7 @@ def _add_drives(sp: Space, problem: Problem) -> None:
                          "motor_series, max_motor_flange, require/exclude)", source=problem.source)
     sp.motors, sp.couplings = motors, couplings
     sp.drives = tuple(pairs)
+    sp.pairs_left_out = len(motors) * max(n_couplings, 1) - len(pairs)
     D = len(pairs)
     sp.g_arr = {k: np.repeat(v, D) for k, v in sp.g_arr.items()}
     G = len(sp.guides)
