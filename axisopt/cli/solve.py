@@ -197,9 +197,13 @@ def format_result(res, top: int | None = None) -> str:
                  f"{c.pruned_by_bound:,}; exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} "
                  f"(failures {c.nlp_failures})")
     gap = "0 (proven)" if c.proven and c.gap == 0 else ("unknown" if not math.isfinite(c.gap) else f"{c.gap:.3%}")
-    L.append(f"  optimality gap {gap}"
-             + (f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"
-                if c.screening_time else ""))
+    if not c.screening_time:
+        rate = ""
+    elif c.screened is None:  # every combination screened
+        rate = f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"
+    else:  # the blocks' bounds, then the combinations of the opened blocks one by one
+        rate = f"; screening {c.screening_time:.3f} s (block bounds, {c.screened:,} combinations one by one)"
+    L.append(f"  optimality gap {gap}{rate}")
     for n in c.notes:
         L.append(f"  {n}")
     from ..report.evaluation import fit_lines
