@@ -543,6 +543,8 @@ def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np
     smallest magnitude over the interval is known; the thrusts grow with the preload.  RMS: a linear piece
     (T0^2 + T0 T1 + T1^2)/3 >= (T0^2 + T1^2)/6, and = T0^2 for a constant one."""
     v_lo = np.asarray(out_lo[c.key])
+    if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor): nothing to bound
+        return v_lo
     thrust = "thrust_torque" if c.key == "margin_motor_peak_torque" else "mean_thrust_torque"
     need_lo = np.asarray(out_lo["peak_torque" if c.key == "margin_motor_peak_torque" else "rms_torque"])
     need_lo = np.maximum(need_lo, np.asarray(out_lo[thrust]))
