@@ -45,7 +45,14 @@ GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a c
 PROFILE = ("k_total", "f1")
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
 BISECTION_STEPS = 52
-SEARCH_POINTS = 64  # k-ary threshold search (default method): preloads tried per round in one evaluation
+SEARCH_POINTS = 64  # k-ary threshold search (default method): most preloads tried per round in one evaluation
+SEARCH_ROWS = 4096  # ... as long as the combinations times the points stay about this many rows per evaluation
+
+
+def search_points(k: int) -> int:
+    """Preloads per round of :func:`kary_threshold` for ``k`` combinations: many while a model evaluation
+    costs mostly its fixed Python overhead (few combinations), 2 (bisection) once the rows cost more."""
+    return int(max(2, min(SEARCH_POINTS, 2 ** round(math.log2(SEARCH_ROWS / max(k, 1) + 1)))))
 
 _SCREW_COLS = ("root_diameter", "nominal_diameter", "lead", "max_length", "mass_per_length", "dn_limit",
                "price_per_length", "price_fixed", "support_bore_min", "support_bore_max")
@@ -606,8 +613,9 @@ def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
         has = np.isfinite(start)
         h = np.nonzero(has)[0]
         if len(h):
-            pr = repeat_rows(subset(pj, h, len(j)), len(h), SEARCH_POINTS - 1)
-            pb[j[h]] = kary_threshold(lambda pre: c.ok(value(pr, pre.reshape(-1))), start[h], top[j][h])
+            P = search_points(len(h))
+            pr = repeat_rows(subset(pj, h, len(j)), len(h), P - 1)
+            pb[j[h]] = kary_threshold(lambda pre: c.ok(value(pr, pre.reshape(-1))), start[h], top[j][h], P)
         exists[j] = has
     return exists, pb
 
@@ -713,8 +721,8 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
     """Best preload (upper end of the feasible preload interval) and the exact objective on the full
     position grid for the combinations ``idx`` (any mix of mountings), vectorized per mounting.
 
-    Assumes the preload structure in the module docstring: a threshold search (:func:`kary_threshold`, 63
-    preloads per vectorized round, the bisection's resolution in 9 rounds) finds the largest preload meeting
+    Assumes the preload structure in the module docstring: a threshold search (:func:`kary_threshold`: up to
+    63 preloads per vectorized round for few combinations, bisection for many) finds the largest preload meeting
     the upper-type constraints (drag, life); the lower-type ones (lift-off, minimum stiffness or
     frequency) are then checked there.
     """
@@ -743,13 +751,14 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
         need_bis = ok & ok_up_lo & ~ok_up_hi
         if need_bis.any():
             j = np.nonzero(need_bis)[0]
-            pr = repeat_rows(subset(p, j, k), len(j), SEARCH_POINTS - 1)
+            P = search_points(len(j))
+            pr = repeat_rows(subset(p, j, k), len(j), P - 1)
             upc = [c for c in up if not c.profile]
 
             def good(pre, pr=pr, upc=upc, x1=x1, mounting=mounting):
                 return _ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1)), pre.size)
 
-            a[j] = kary_threshold(good, a[j], bb[j])
+            a[j] = kary_threshold(good, a[j], bb[j], P)
         pstar = np.where(ok_up_hi, hi[:, 0], a)
         ok &= ok_up_lo
         for c in cvx:  # lower the preload into each motor-torque interval (drag and life stay met)
