@@ -185,15 +185,20 @@ def quantity_notes(diag) -> list:
 
 def _peak(freq, mag):
     """Peak frequency of a sampled magnitude, refined by a parabola through the top three points in
-    log-frequency."""
+    log-frequency.  Repeated readings at one frequency count once, with their largest magnitude."""
+    freq, mag = np.asarray(freq, dtype=float), np.asarray(mag, dtype=float)
+    u, inv = np.unique(freq, return_inverse=True)
+    m = np.full(len(u), -np.inf)
+    np.maximum.at(m, inv, mag)
+    freq, mag = u, m
     i = int(np.argmax(mag))
-    if 0 < i < len(mag) - 1:
+    if 0 < i < len(mag) - 1 and np.all(freq[i - 1:i + 2] > 0) and np.all(mag[i - 1:i + 2] > 0):
         x = np.log(freq[i - 1:i + 2])
         y = np.log(mag[i - 1:i + 2])
         den = (x[0] - x[1]) * (x[0] - x[2]) * (x[1] - x[2])
         a = (x[2] * (y[1] - y[0]) + x[1] * (y[0] - y[2]) + x[0] * (y[2] - y[1])) / den
         b = (x[2] ** 2 * (y[0] - y[1]) + x[1] ** 2 * (y[2] - y[0]) + x[0] ** 2 * (y[1] - y[2])) / den
-        if a < 0:
+        if a < 0 and np.isfinite(b / a):
             return float(np.exp(-b / (2 * a)))
     return float(freq[i])
 
