@@ -427,7 +427,8 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
             pw = subset(p, w, k)
             bo, bp = np.full(len(w), -np.inf), np.full(len(w), np.nan)
             for t in np.linspace(0.0, 1.0, n_grid):
-                pre = low[w] + t * (up[w] - low[w])
+                # clipped: low + 1.0 * (up - low) can round one ulp above up, past a threshold
+                pre = np.clip(low[w] + t * (up[w] - low[w]), low[w], up[w])
                 out = respond(pw, x, mounting, pre[:, None])
                 good = _ok_all(constraints, out, len(w))
                 J = np.broadcast_to(objective.value(out), (len(w),))
