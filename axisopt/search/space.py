@@ -448,6 +448,17 @@ def build_space(problem: Problem) -> Space:
                   np.minimum(nuts["preload_max"].to_numpy(float), problem.preload_max))
     keep = lo <= hi
     nuts, lo, hi = nuts[keep], lo[keep], hi[keep]
+    # an empty part slot leaves no combination at all: a one-line error naming it (not an "infeasible"
+    # result whose explanation has nothing to score)
+    for df, what, filters in ((nuts, "screw and nut", "vendors, nut_types, status, require/exclude; "
+                               "continuous.nut_preload for preloaded nuts"),
+                              (bearings, "support bearing", "vendors, bearing_arrangements, bearing_preload, "
+                               "status, require/exclude"),
+                              (guides, "linear guide", "vendors, guide_types, guide_preload, status, "
+                               "require/exclude")):
+        if len(df) == 0:
+            raise InputError(f"the search has nothing to choose from: no {what} is left after the filters "
+                             f"(catalog: {filters})", source=problem.source)
     screws_al = cat.screws.loc[nuts["screw_id"].to_numpy()]
     # the bearing journal rule is the model's margin_bearing_fit check; no extra pairing rule here
     fits = np.ones((len(nuts), len(bearings)), dtype=bool)
