@@ -445,20 +445,28 @@ def _c_stderr_to_file():
         sys.stderr.flush()
     try:
         tmp = tempfile.TemporaryFile()
-        saved = os.dup(fd)
-    except OSError:  # no descriptor 2 (a daemon) or no room for the file: leave the messages where they go
+    except OSError:  # no room for the file: leave the messages where they go
         yield lines
         return
-    with tmp:
-        os.dup2(tmp.fileno(), fd)
+    with tmp:  # closed on every path, also when descriptor 2 cannot be duplicated
         try:
+            saved = os.dup(fd)
+        except OSError:  # no descriptor 2 (a daemon): leave the messages where they go
+            saved = None
+        if saved is None:
             yield lines
+            return
+        try:
+            os.dup2(tmp.fileno(), fd)
+            try:
+                yield lines
+            finally:
+                os.dup2(saved, fd)
         finally:
-            os.dup2(saved, fd)
             os.close(saved)
-            tmp.seek(0)
-            text = tmp.read().decode("utf-8", "replace").splitlines()
-            lines.extend(dict.fromkeys(t.strip() for t in text if t.strip()))
+        tmp.seek(0)
+        text = tmp.read().decode("utf-8", "replace").splitlines()
+        lines.extend(dict.fromkeys(t.strip() for t in text if t.strip()))
 
 
 def solve_scip(problem, space, constraints, objective, *, time_limit: float = 100.0, top: int = 1,

@@ -13,3 +13,26 @@ def test_c_level_stderr_is_captured_and_restored(capfd):
     assert lines == ["Cannot set feasibility tolerance", "other"]
     os.write(2, b"after\n")
     assert capfd.readouterr().err == "after\n"
+
+
+def test_temporary_file_closed_when_descriptor_2_cannot_be_duplicated(monkeypatch):
+    """No descriptor 2 to duplicate (a daemon): the messages stay where they go, and the temporary file
+    opened for them is closed at once (it was left open for the garbage collector)."""
+    import tempfile
+
+    from axisopt.search import scip
+
+    opened, real = [], tempfile.TemporaryFile
+
+    def temporary_file(*a, **k):
+        opened.append(real(*a, **k))
+        return opened[-1]
+
+    def no_dup(fd):
+        raise OSError(9, "Bad file descriptor")
+
+    monkeypatch.setattr(scip.tempfile, "TemporaryFile", temporary_file)
+    monkeypatch.setattr(scip.os, "dup", no_dup)
+    with _c_stderr_to_file() as lines:
+        pass
+    assert lines == [] and len(opened) == 1 and opened[0].closed
