@@ -128,17 +128,15 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
 
 def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, objective: ObjectiveSpec, premask):
     """The mechanical stage of :func:`screen_nuts` over the nuts ``nuts`` (numbers ``nut_idx``): every limit
-    but the drive's, and the bound.  Returns the survivors' (nut, bearing, guide,
-    bound)."""
+    but the drive's (:data:`DRIVE_KEYS`, which hold the motor-torque limits, the only convex ones), and the
+    bound.  Returns the survivors' (nut, bearing, guide, bound)."""
     _, _, B, G = space.shape
     Gm = G // space.n_drives
     mech = _mechanical(space, constraints)
-    low_end = [c for c in mech if not c.lower_type and not c.convex]  # independent or favoured by a low preload
+    low_end = [c for c in mech if not c.lower_type]  # independent or favoured by a low preload
     high_end = [c for c in mech if c.lower_type]
-    cvx = [c for c in mech if c.convex]
     xs = space.bound_positions(mounting).astype(np.float32)
     x1 = xs[-1:]
-    phases = space.problem.axis_for(mounting).phases
     p = space.params_structured(mounting, nuts, dtype=np.float32, mechanics=True)
     lo = space.preload_lo[nut_idx].reshape(-1, 1, 1, 1).astype(np.float32)
     hi = space.preload_hi[nut_idx].reshape(-1, 1, 1, 1).astype(np.float32)
@@ -146,17 +144,13 @@ def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, o
     fits = space.fits[nut_idx] if premask is None else space.fits[nut_idx] & premask
     mask = np.broadcast_to(fits[:, :, None], (nc, B, Gm)).copy()
     with np.errstate(all="ignore"):
-        chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in low_end) or bool(cvx)
+        chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in low_end)
         out_lo = model.axis_response(p, x1, mounting, lo, extras=False, drive_block=False, chain=chain_lo)
         for c in low_end:
             mask &= _screen_ok(c, out_lo)
         out = model.axis_response(p, xs, mounting, hi, extras=False, drive_block=False)
         for c in high_end:
             mask &= _screen_ok(c, out)
-        for c in cvx:  # the margin's bound over the whole preload range
-            ub = convex_margin_bound(c, out_lo, out, phases)
-            ok_c = np.asarray(ub >= c.limit * (1.0 - SCREEN_RTOL), dtype=bool)
-            mask &= ok_c[..., 0] if ok_c.ndim else ok_c
         bound = objective.value(out)
     bound = np.broadcast_to(bound + SCREEN_RTOL * np.abs(bound), (nc, B, Gm))
     nn, bb, gg = np.nonzero(mask)

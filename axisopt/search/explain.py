@@ -11,8 +11,10 @@ Two ways to the same answer:
   (:meth:`Space.params_optimistic_guide`), the best value any of its combinations could reach on each limit
   the optimistic guide bounds, and so a lower bound of its combinations' miss scores.  Blocks are scored one
   by one only while they could still improve a limit's best value, meet a limit not met yet, or hold one of
-  the closest designs; the limits the optimistic guide does not bound (the motor and coupling checks, the
-  inertia ratio) count as "could be met" until some block meets them.
+  the closest designs.  The limits the optimistic guide does not bound (the motor and coupling checks, the
+  inertia ratio) count as "could be met" in the first round; one that no scored block met then is evaluated
+  over every combination on the drive sub-assembly alone (:func:`_drive_pass`: its best value exact, and
+  each block's least sum of such misses added to its score lower bound).
 * *every combination* (exhaustive method, and the reference of the tests): :func:`miss_scores` over the
   whole product.
 """

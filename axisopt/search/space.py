@@ -602,8 +602,9 @@ def _golden_best(value, a, b, steps=GOLDEN_STEPS):
 
 def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
     """For a convex (interval) limit: the largest preload in [lo, top] meeting it, per combination.
-    Returns (exists, preload).  Met at ``top``: top.  Else met at ``lo``: bisection (the limit's interval
-    contains lo and ends below top).  Else: its most favourable preload by golden section, then bisection."""
+    Returns (exists, preload).  Met at ``top``: top.  Else met at ``lo``: threshold search from lo
+    (:func:`kary_threshold`; the limit's interval contains lo and ends below top).  Else: its most favourable
+    preload by golden section, then the threshold search from there."""
     K = len(lo)
     lo, top = np.asarray(lo, float), np.asarray(top, float)
 
