@@ -162,7 +162,8 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
             b = tally.best[c.name]
             if b is not None:
                 tol = BOUND_RTOL * max(abs(b), 1e-30)
-                cand &= v > b + tol if c.sense == ">=" else v < b - tol
+                # a block that could meet the limit stays a candidate whatever the tolerance
+                cand &= (v > b + tol if c.sense == ">=" else v < b - tol) | c.ok(v)
             want |= _first(cand, -v if c.sense == ">=" else v, batch)
         kth = np.partition(scores, n_closest - 1)[n_closest - 1] if len(scores) >= n_closest else np.inf
         cand = open_ & (lb <= kth + BOUND_RTOL * max(abs(kth), 1.0) if np.isfinite(kth) else open_)
