@@ -116,7 +116,7 @@ def block_optimism(space: Space, constraints):
             shape = (sl.stop - sl.start, B)
             for t in types:
                 p = space.params_optimistic_guide(mounting, sl, str(t))
-                out_lo, out_hi = respond(p, x, mounting, lo), respond(p, x, mounting, hi)
+                out_lo, out_hi = (_respond(p, x, mounting, pre, drive=False) for pre in (lo, hi))
                 for c in bounded:
                     v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape + (1,))[..., 0]
                                          for o in (out_lo, out_hi)))
@@ -296,7 +296,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     fits = np.broadcast_to(fit_nb[:, :, None], shape)
     score = np.where(fits, 0.0, 1.0)
     p = params(mechanics=two_stage)
-    out_lo, out_hi = respond(p, x, mounting, lo), respond(p, x, mounting, hi)
+    out_lo, out_hi = (_respond(p, x, mounting, pre, drive=not two_stage) for pre in (lo, hi))
     for c in mech:
         v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in (out_lo, out_hi)))
         miss = c.violation(v)
@@ -309,7 +309,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         by_k = []
         for k in k_cpl if cpl else ():
             pk = params(mechanics=True, coupling_stiffness=float(k))
-            by_k.append((respond(pk, x, mounting, lo), respond(pk, x, mounting, hi)))
+            by_k.append(tuple(_respond(pk, x, mounting, pre, drive=False) for pre in (lo, hi)))
         for c in cpl:
             v = np.stack([_favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in outs))
                           for outs in by_k], axis=-1)[..., group]
@@ -334,6 +334,13 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         n3, bb, gg = np.meshgrid(nut_idx, np.arange(B), np.arange(G), indexing="ij")
         nn, bb, gg = n3.ravel(), bb.ravel(), gg.ravel()
     yield np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), score.reshape(-1)
+
+
+def _respond(p, x, mounting, preload, drive: bool) -> dict:
+    """:func:`axisopt.model.axis_response` without the drive-train extras, and without the drive block
+    unless ``drive`` (the limits read here from it are scored on the drive sub-assembly instead)."""
+    with np.errstate(divide="ignore"):
+        return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive)
 
 
 def _last(c, v):
