@@ -70,6 +70,17 @@ def write_text_atomic(path, text: str, *, what: str = "file", fsync: bool = True
         fh.write(text)
 
 
+def tidy_layout(fig) -> None:
+    """``fig.tight_layout()`` without matplotlib's warning when it cannot make room (a long legend or title
+    in a small figure): the figure is then saved as laid out, which is no reason to print a Python warning
+    to the user."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message="Tight layout not applied", category=UserWarning)
+        fig.tight_layout()
+
+
 def save_figure(fig, path, dpi: int = 110) -> None:
     """Save and close a matplotlib figure, atomically (:func:`atomic_file`); a bad path or format is an
     InputError (one line, exit 2)."""

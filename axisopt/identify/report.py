@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..fileio import tidy_layout
 from ..report import save_figure, write_text_atomic
 from ..report.evaluation import fit_lines
 from .diagnose import _split, plausibility, residual_table
@@ -471,7 +472,7 @@ def write_report(diag, outdir) -> Path:
             ax.set_xlabel(f"{name} [{fu}]" if fu else name)
             ax.set_ylabel(f"model - measured [{unit}]")
         axes[0][0].legend(fontsize=7)
-        fig.tight_layout()
+        tidy_layout(fig)
         png = out / f"residuals_{k + 1}.png"
         save_figure(fig, png, dpi=90)
         md += [f"![residuals {Path(o.dataset.source).name}]({png.name})", ""]

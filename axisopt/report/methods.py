@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from ..fileio import save_figure
+from ..fileio import save_figure, tidy_layout
 from ..units import N_PER_UM
 
 
@@ -100,5 +100,5 @@ def plot_frf(result: dict, path: str) -> None:
     for ax in (ax1, ax2):
         ax.grid(True, which="both", alpha=0.3)
     ax1.legend(fontsize=8)
-    fig.tight_layout()
+    tidy_layout(fig)
     save_figure(fig, path)

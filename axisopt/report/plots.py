@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from ..fileio import save_figure
+from ..fileio import save_figure, tidy_layout
 from ..model import Evaluation
 from ..units import N_PER_UM
 from .evaluation import RPM
@@ -117,5 +117,5 @@ def plot_profiles(evaluations, path: str, labels=None, limits=None) -> None:
     for ax in axes:
         ax.grid(True, alpha=0.3)
     ax1.legend(fontsize=8)
-    fig.tight_layout()
+    tidy_layout(fig)
     save_figure(fig, path)

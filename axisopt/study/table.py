@@ -14,7 +14,7 @@ import math
 import re
 from pathlib import Path
 
-from ..fileio import atomic_file, make_output_dir, save_figure, write_text_atomic
+from ..fileio import atomic_file, make_output_dir, save_figure, tidy_layout, write_text_atomic
 from .store import OK_STATUSES, CaseStore
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
@@ -251,7 +251,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
             ax.grid(True, alpha=0.3)
         a1.legend(fontsize=7)
         fig.suptitle(f"{study.name}: best design against {key}", fontsize=10)
-        fig.tight_layout()
+        tidy_layout(fig)
         fname = plot_dir / f"best_vs_{_slug(key)}.png"
         save_figure(fig, fname, dpi=100)
         files[f"plot {key}"] = str(fname)
@@ -285,7 +285,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         ax.legend(fontsize=7, title="non-dominated cases joined per machine" if machines else None,
                   title_fontsize=7)
         ax.set_title(f"{study.name}: stiffness against cost of every case's best design", fontsize=10)
-        fig.tight_layout()
+        tidy_layout(fig)
         fname = plot_dir / "tradeoff_cost_stiffness.png"
         save_figure(fig, fname, dpi=100)
         files["plot trade-off"] = str(fname)
@@ -307,7 +307,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         ax.legend(fontsize=7)
         ax.set_title(f"{study.name}: Pareto fronts" + (" (first 12 cases)" if len(fronts) > 12 else ""),
                      fontsize=10)
-        fig.tight_layout()
+        tidy_layout(fig)
         fname = plot_dir / "pareto_fronts.png"
         save_figure(fig, fname, dpi=100)
         files["plot Pareto fronts"] = str(fname)
