@@ -296,9 +296,13 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     fits = np.broadcast_to(fit_nb[:, :, None], shape)
     score = np.where(fits, 0.0, 1.0)
     p = params(mechanics=two_stage)
-    out_lo, out_hi = (_respond(p, x, mounting, pre, drive=not two_stage) for pre in (lo, hi))
+    # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped
+    # there unless one of those reads them
+    chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in mech if not c.lower_type)
+    out_lo = _respond(p, x, mounting, lo, drive=not two_stage, chain=chain_lo)
+    out_hi = _respond(p, x, mounting, hi, drive=not two_stage)
     for c in mech:
-        v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in (out_lo, out_hi)))
+        v = _fav(c, out_lo, out_hi, shape)
         miss = c.violation(v)
         score = score + miss
         tally.add(c, v, miss, fits)
@@ -307,12 +311,13 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         fits_d = np.broadcast_to(fits[..., None], shape_d)
         score = np.broadcast_to(score[..., None], shape_d).copy()
         by_k = []
+        cpl_lo = any(not c.lower_type for c in cpl)  # minimum stiffness and frequency: the highest preload only
         for k in k_cpl if cpl else ():
             pk = params(mechanics=True, coupling_stiffness=float(k))
-            by_k.append(tuple(_respond(pk, x, mounting, pre, drive=False) for pre in (lo, hi)))
+            by_k.append((_respond(pk, x, mounting, lo, drive=False) if cpl_lo else None,
+                         _respond(pk, x, mounting, hi, drive=False)))
         for c in cpl:
-            v = np.stack([_favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in outs))
-                          for outs in by_k], axis=-1)[..., group]
+            v = np.stack([_fav(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
             miss = c.violation(v)
             score += miss
             tally.add(c, v, miss, fits_d)
@@ -336,11 +341,21 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     yield np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), score.reshape(-1)
 
 
-def _respond(p, x, mounting, preload, drive: bool) -> dict:
+def _respond(p, x, mounting, preload, drive: bool, chain: bool = True) -> dict:
     """:func:`axisopt.model.axis_response` without the drive-train extras, and without the drive block
     unless ``drive`` (the limits read here from it are scored on the drive sub-assembly instead)."""
     with np.errstate(divide="ignore"):
-        return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive)
+        return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive, chain=chain)
+
+
+def _fav(c, out_lo, out_hi, shape):
+    """:func:`_favourable` reading only the preload end(s) the limit needs (``out_lo`` may be None or
+    without the chain outputs when no limit read there needs them)."""
+    def val(o):
+        return np.broadcast_to(_last(c, c.value(o)), shape)
+    if c.convex:
+        return _favourable(c, val(out_lo), val(out_hi))
+    return val(out_hi) if c.lower_type else val(out_lo)
 
 
 def _last(c, v):
