@@ -234,28 +234,6 @@ def miss_scores(space: Space, constraints, tally: _Tally | None = None):
             yield from _score_nuts(space, constraints, tally, mi, np.arange(n0, min(N, n0 + step)))
 
 
-def _pair_params(space: Space, mounting: str, nut_idx, bearing_idx, mechanics: bool,
-                 coupling_stiffness: float | None = None) -> dict:
-    """Parameters over ((nut, bearing) pairs, 1, guide-and-drive, positions): the structured layout of
-    :meth:`Space.params_structured` with the nut and bearing axes merged into one axis of chosen pairs."""
-    from .. import model as _model
-    from .space import _shaped
-
-    D = space.n_drives if (mechanics and space.m_arr is not None) else 1
-    s = _shaped({k: v[nut_idx] for k, v in space.s_arr.items()}, (-1, 1, 1, 1), float)
-    nt = _shaped({k: v[nut_idx] for k, v in space.n_arr.items()}, (-1, 1, 1, 1), float)
-    b = _shaped({k: v[bearing_idx] for k, v in space.b_arr.items()}, (-1, 1, 1, 1), float)
-    g = _shaped({k: v[::D] for k, v in space.g_arr.items()}, (1, 1, -1, 1), float)
-    drive = space.m_arr is not None and not mechanics
-    mo = _shaped(space.m_arr, (1, 1, -1, 1), float) if drive else None
-    cp = _shaped(space.c_arr, (1, 1, -1, 1), float) if drive and space.c_arr is not None else None
-    p = _model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, mo, cp)
-    if mechanics and space.m_arr is not None:
-        p["coupling_stiffness"] = float(space.coupling_stiffnesses()[-1] if coupling_stiffness is None
-                                        else coupling_stiffness)
-    return p
-
-
 def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bearing_idx=None):
     """(combination numbers, miss scores) of mounting ``mi`` over every guide and drive of either the nuts
     ``nut_idx`` times every bearing, or, with ``bearing_idx`` (aligned with ``nut_idx``), the (nut, bearing)
@@ -285,9 +263,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     Bx = 1 if pairs else B  # the bearing axis: merged into the pair axis, or every bearing
 
     def params(**kw):
-        if pairs:
-            return _pair_params(space, mounting, nut_idx, bearing_idx, **kw)
-        return space.params_structured(mounting, nut_idx, **kw)
+        return space.params_structured(mounting, nut_idx, bearings=bearing_idx, **kw)
 
     shape = (nc, Bx, Gm)
     lo = space.preload_lo[nut_idx].reshape(-1, 1, 1, 1)

@@ -313,8 +313,10 @@ class Space:
         return np.unique(self.c_arr["torsional_stiffness"])
 
     def params_structured(self, mounting: str, nut_slice=slice(None), dtype=float, mechanics: bool = False,
-                          coupling_stiffness: float | None = None) -> dict:
-        """Parameters broadcast over (nuts, bearings, guide-and-drive, positions).  ``mechanics``: over the
+                          coupling_stiffness: float | None = None, bearings=None) -> dict:
+        """Parameters broadcast over (nuts, bearings, guide-and-drive, positions); with ``bearings`` (bearing
+        numbers aligned with the nut numbers ``nut_slice``) over ((nut, bearing) pairs, 1, guide-and-drive,
+        positions) instead.  ``mechanics``: over the
         guides alone, without the drive, for the outputs the drive does not change (every output but
         :data:`DRIVE_KEYS` and :data:`COUPLING_KEYS`).  The axis values stand in for motor and coupling,
         except the coupling's torsional stiffness, which is in the stiffness chain: ``coupling_stiffness``,
@@ -324,9 +326,10 @@ class Space:
             coupling_stiffness = float(self.coupling_stiffnesses()[-1])
         nkey = (nut_slice.start, nut_slice.stop) if isinstance(nut_slice, slice) else \
             np.asarray(nut_slice, dtype=np.int64).tobytes()
-        key = ("ps", mounting, nkey, np.dtype(dtype).name, mechanics, coupling_stiffness)
+        bkey = None if bearings is None else np.asarray(bearings, dtype=np.int64).tobytes()
+        key = ("ps", mounting, nkey, bkey, np.dtype(dtype).name, mechanics, coupling_stiffness)
         if key not in self._cache:
-            s, nt, b = self._nut_bearing_arrays(nut_slice, dtype)
+            s, nt, b = self._nut_bearing_arrays(nut_slice, dtype, bearings)
             D = self.n_drives if mechanics else 1
             g = _shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
             mo = None if self.m_arr is None or mechanics else _shaped(self.m_arr, (1, 1, -1, 1), dtype)
@@ -361,10 +364,13 @@ class Space:
             ps["motor_price"], ps["coupling_price"] = float(price.min()), 0.0
         return _as_dtype(ps, dtype)
 
-    def _nut_bearing_arrays(self, nut_sel, dtype) -> tuple:
-        """Screw and nut columns of the nuts ``nut_sel`` on the first axis, every bearing on the second."""
+    def _nut_bearing_arrays(self, nut_sel, dtype, bearings=None) -> tuple:
+        """Screw and nut columns of the nuts ``nut_sel`` on the first axis, every bearing on the second (or,
+        with ``bearings`` aligned with the nuts, those bearings on the first axis too)."""
         s = _shaped({k: v[nut_sel] for k, v in self.s_arr.items()}, (-1, 1, 1, 1), dtype)
         nt = _shaped({k: v[nut_sel] for k, v in self.n_arr.items()}, (-1, 1, 1, 1), dtype)
+        if bearings is not None:
+            return s, nt, _shaped({k: v[bearings] for k, v in self.b_arr.items()}, (-1, 1, 1, 1), dtype)
         return s, nt, _shaped(self.b_arr, (1, -1, 1, 1), dtype)
 
     def nuts_per_screen(self) -> int:
