@@ -326,21 +326,23 @@ class Space:
             coupling_stiffness = float(self.coupling_stiffnesses()[-1])
         nkey = (nut_slice.start, nut_slice.stop) if isinstance(nut_slice, slice) else \
             np.asarray(nut_slice, dtype=np.int64).tobytes()
-        bkey = None if bearings is None else np.asarray(bearings, dtype=np.int64).tobytes()
-        key = ("ps", mounting, nkey, bkey, np.dtype(dtype).name, mechanics, coupling_stiffness)
-        if key not in self._cache:
-            s, nt, b = self._nut_bearing_arrays(nut_slice, dtype, bearings)
-            D = self.n_drives if mechanics else 1
-            g = _shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
-            mo = None if self.m_arr is None or mechanics else _shaped(self.m_arr, (1, 1, -1, 1), dtype)
-            cp = None if self.c_arr is None or mechanics else _shaped(self.c_arr, (1, 1, -1, 1), dtype)
+        key = ("ps", mounting, nkey, np.dtype(dtype).name, mechanics, coupling_stiffness)
+        if bearings is None and key in self._cache:
+            return self._cache[key]
+        s, nt, b = self._nut_bearing_arrays(nut_slice, dtype, bearings)
+        D = self.n_drives if mechanics else 1
+        g = _shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
+        mo = None if self.m_arr is None or mechanics else _shaped(self.m_arr, (1, 1, -1, 1), dtype)
+        cp = None if self.c_arr is None or mechanics else _shaped(self.c_arr, (1, 1, -1, 1), dtype)
+        ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
+        if mechanics and coupling_stiffness is not None:
+            ps["coupling_stiffness"] = coupling_stiffness
+        ps = _as_dtype(ps, dtype)
+        if bearings is None:  # pair layouts are built once each (the explanation's scored blocks): not kept
             if len(self._cache) > 64:
                 self._cache.clear()
-            ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
-            if mechanics and coupling_stiffness is not None:
-                ps["coupling_stiffness"] = coupling_stiffness
-            self._cache[key] = _as_dtype(ps, dtype)
-        return self._cache[key]
+            self._cache[key] = ps
+        return ps
 
     def params_optimistic_guide(self, mounting: str, nut_sel, guide_type: str, dtype=float) -> dict:
         """Parameters over (nuts ``nut_sel``, bearings, one guide, positions) where the one guide takes, column
