@@ -89,7 +89,7 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     return idx, bound, time.perf_counter() - t0
 
 
-def _mechanical(space: Space, constraints):
+def _mechanical(constraints):
     return [c for c in constraints if c.key not in DRIVE_KEYS]
 
 
@@ -132,7 +132,7 @@ def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, o
     bound.  Returns the survivors' (nut, bearing, guide, bound)."""
     _, _, B, G = space.shape
     Gm = G // space.n_drives
-    mech = _mechanical(space, constraints)
+    mech = _mechanical(constraints)
     low_end = [c for c in mech if not c.lower_type]  # independent or favoured by a low preload
     high_end = [c for c in mech if c.lower_type]
     xs = space.bound_positions(mounting).astype(np.float32)

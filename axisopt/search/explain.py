@@ -50,12 +50,16 @@ class _Tally:
             self.best[c.name] = bv
 
 
-def _favourable(c, v_lo, v_hi):
-    """The value at the preload end that favours the limit (for a limit met on an interval of preloads,
-    the better of the two ends)."""
+def _favourable(c, out_lo, out_hi, shape):
+    """The limit's value at the preload end that favours it (for a limit met on an interval of preloads,
+    the better of the two ends), broadcast to ``shape``; only the end(s) it needs are read (``out_lo`` may
+    be None, or without the chain outputs, when no limit read there needs them)."""
+    def val(o):
+        return np.broadcast_to(_last(c, c.value(o)), shape)
     if c.convex:
+        v_lo, v_hi = val(out_lo), val(out_hi)
         return np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
-    return v_hi if c.lower_type else v_lo
+    return val(out_hi) if c.lower_type else val(out_lo)
 
 
 def _closest(top_idx, top_score, idx, score, n):
@@ -91,7 +95,7 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
                                       for r, combo in enumerate(top_idx, start=1)])
 
 
-def _bounded(space: Space, c) -> bool:
+def _bounded(c) -> bool:
     """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
     limits of :func:`axisopt.search.core.block_bounds`: not the drive's, except the cost)."""
     return not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")
@@ -102,7 +106,7 @@ def block_optimism(space: Space, constraints):
     combination of the block reaches at the limit's favourable preload end (full position grid), and a
     lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
     _, N, B, _ = space.shape
-    bounded = [c for c in constraints if _bounded(space, c)]
+    bounded = [c for c in constraints if _bounded(c)]
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
     out = []
     for mounting in space.mountings:
@@ -116,10 +120,9 @@ def block_optimism(space: Space, constraints):
             shape = (sl.stop - sl.start, B)
             for t in types:
                 p = space.params_optimistic_guide(mounting, sl, str(t))
-                out_lo, out_hi = (_respond(p, x, mounting, pre, drive=False) for pre in (lo, hi))
+                out_lo, out_hi = (respond(p, x, mounting, pre, drive_block=False) for pre in (lo, hi))
                 for c in bounded:
-                    v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape + (1,))[..., 0]
-                                         for o in (out_lo, out_hi)))
+                    v = _favourable(c, out_lo, out_hi, shape + (1,))[..., 0]
                     pick = np.maximum if c.sense == ">=" else np.minimum
                     best[c.name][sl] = pick(best[c.name][sl], v)
         lb = np.where(space.fits, 0.0, 1.0)
@@ -135,9 +138,11 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     design among the ``n_closest`` (its score lower bound not above the current ``n_closest``-th score)."""
     opt = block_optimism(space, constraints)
     M, (_, N, B, _) = len(space.mountings), space.shape
-    bounded = {c.name for c in constraints if _bounded(space, c)}
+    bounded = {c.name for c in constraints if _bounded(c)}
     lb = np.stack([o[1] for o in opt])  # (M, N, B)
     vals = {c.name: np.stack([o[0][c.name] for o in opt]) for c in constraints if c.name in bounded}
+    G, X = space.shape[3], max(len(space.positions(m)) for m in space.mountings)
+    rows = max(1, CHUNK // max(G * X, 1))  # (nut, bearing) pairs scored per evaluation
     fits = np.broadcast_to(space.fits, (M, N, B))
     usable = fits if fits.any() else np.ones_like(fits)  # the tally counts fitting combinations if any fit
     done = np.zeros((M, N, B), dtype=bool)
@@ -170,8 +175,6 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
         want |= _first(cand, lb, batch)
         if not want.any():
             break
-        _, _, G = space.shape[1:]
-        rows = max(1, CHUNK // max(G * len(space.positions(space.mountings[0])), 1))
         for mi in range(M):
             n_sel, b_sel = np.nonzero(want[mi])
             for s0 in range(0, len(n_sel), rows):
@@ -203,7 +206,7 @@ def _drive_pass(space: Space, drive, tally: _Tally) -> np.ndarray:
             d_lo, d_hi = respond_drive(pd, lo), respond_drive(pd, hi)
             total = np.zeros(shape)
             for c in drive:
-                v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), shape) for o in (d_lo, d_hi)))
+                v = _favourable(c, d_lo, d_hi, shape)
                 miss = c.violation(v)
                 total = total + miss
                 tally.add(c, v, miss, fits)
@@ -275,10 +278,10 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped
     # there unless one of those reads them
     chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in mech if not c.lower_type)
-    out_lo = _respond(p, x, mounting, lo, drive=not two_stage, chain=chain_lo)
-    out_hi = _respond(p, x, mounting, hi, drive=not two_stage)
+    out_lo = respond(p, x, mounting, lo, drive_block=not two_stage, chain=chain_lo)
+    out_hi = respond(p, x, mounting, hi, drive_block=not two_stage)
     for c in mech:
-        v = _fav(c, out_lo, out_hi, shape)
+        v = _favourable(c, out_lo, out_hi, shape)
         miss = c.violation(v)
         score = score + miss
         tally.add(c, v, miss, fits)
@@ -290,10 +293,10 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         cpl_lo = any(not c.lower_type for c in cpl)  # minimum stiffness and frequency: the highest preload only
         for k in k_cpl if cpl else ():
             pk = params(mechanics=True, coupling_stiffness=float(k))
-            by_k.append((_respond(pk, x, mounting, lo, drive=False) if cpl_lo else None,
-                         _respond(pk, x, mounting, hi, drive=False)))
+            by_k.append((respond(pk, x, mounting, lo, drive_block=False) if cpl_lo else None,
+                         respond(pk, x, mounting, hi, drive_block=False)))
         for c in cpl:
-            v = np.stack([_fav(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
+            v = np.stack([_favourable(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
             miss = c.violation(v)
             score += miss
             tally.add(c, v, miss, fits_d)
@@ -301,8 +304,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
             pd = params(mechanics=False)
             d_lo, d_hi = respond_drive(pd, lo), respond_drive(pd, hi)
             for c in drive:
-                v = _favourable(c, *(np.broadcast_to(_last(c, c.value(o)), (nc, Bx, G)).reshape(shape_d)
-                                     for o in (d_lo, d_hi)))
+                v = _favourable(c, d_lo, d_hi, (nc, Bx, G)).reshape(shape_d)
                 miss = c.violation(v)
                 score += miss
                 tally.add(c, v, miss, fits_d)
@@ -315,23 +317,6 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         n3, bb, gg = np.meshgrid(nut_idx, np.arange(B), np.arange(G), indexing="ij")
         nn, bb, gg = n3.ravel(), bb.ravel(), gg.ravel()
     yield np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), score.reshape(-1)
-
-
-def _respond(p, x, mounting, preload, drive: bool, chain: bool = True) -> dict:
-    """:func:`axisopt.model.axis_response` without the drive-train extras, and without the drive block
-    unless ``drive`` (the limits read here from it are scored on the drive sub-assembly instead)."""
-    with np.errstate(divide="ignore"):
-        return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive, chain=chain)
-
-
-def _fav(c, out_lo, out_hi, shape):
-    """:func:`_favourable` reading only the preload end(s) the limit needs (``out_lo`` may be None or
-    without the chain outputs when no limit read there needs them)."""
-    def val(o):
-        return np.broadcast_to(_last(c, c.value(o)), shape)
-    if c.convex:
-        return _favourable(c, val(out_lo), val(out_hi))
-    return val(out_hi) if c.lower_type else val(out_lo)
 
 
 def _last(c, v):

@@ -207,11 +207,11 @@ def objective_spec(kind: str, problem: Problem | None = None) -> ObjectiveSpec:
     raise ValueError(f"no scalar objective for '{kind}'")
 
 
-def respond(p, x, mounting, preload) -> dict:
+def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = True) -> dict:
     """:func:`axisopt.model.axis_response` on numpy, without the outputs no limit or objective uses
-    (axial-torsional frequency, damping ratio)."""
+    (axial-torsional frequency, damping ratio); ``drive_block`` and ``chain`` as there."""
     with np.errstate(divide="ignore"):
-        return model.axis_response(p, x, mounting, preload, extras=False)
+        return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive_block, chain=chain)
 
 
 # Outputs the motor and coupling change (all others are the same for every drive of a mechanical combination).
