@@ -21,36 +21,111 @@ from .units import split_header, unit_factor
 
 SHIPPED_DIR = Path(__file__).resolve().parent.parent / "catalogs"
 
-# column -> kind ("str" for text, "int" for counts, otherwise a units.KINDS kind); all required.
-_SCREWS = {
-    "id": "str", "vendor": "str", "series": "str",
-    "nominal_diameter": "length", "lead": "length", "root_diameter": "length", "ball_diameter": "length",
-    "max_length": "length", "mass_per_length": "mass_per_length", "dn_limit": "dn",
-    "support_bore_min": "length", "support_bore_max": "length",
-    "price_per_length": "money_per_length", "price_fixed": "money",
-}
-_NUTS = {
-    "id": "str", "vendor": "str", "screw_id": "str", "type": "str",
-    "stiffness": "stiffness", "stiffness_preload": "force", "preload_min": "force", "preload_max": "force",
-    "dynamic_load_rating": "force", "static_load_rating": "force", "contact_angle": "angle",
-    "axial_play": "length", "mass": "mass", "price": "money",
-}
-_BEARINGS = {
-    "id": "str", "vendor": "str", "series": "str", "arrangement": "str", "rows": "int",
-    "bore": "length", "outer_diameter": "length", "contact_angle": "angle", "preload_class": "str",
-    "preload": "force", "axial_rigidity": "stiffness", "lift_off_load": "force",
-    "dynamic_load_rating": "force", "static_load_rating": "force", "limiting_speed": "angular_speed",
-    "starting_torque": "torque", "f0": "dimensionless", "f1": "dimensionless", "mass": "mass", "price": "money",
-}
-_GUIDES = {
-    "id": "str", "vendor": "str", "series": "str", "type": "str", "size": "length",
-    "preload_class": "str", "preload_level": "str", "preload": "force",
-    "normal_rigidity": "stiffness", "tangential_rigidity": "stiffness",
-    "dynamic_load_rating": "force", "static_load_rating": "force",
-    "friction_force": "force", "friction_coefficient": "dimensionless", "friction_viscous": "damping",
-    "damping": "damping", "block_mass": "mass", "rail_mass_per_length": "mass_per_length",
-    "block_price": "money", "rail_price_per_length": "money_per_length",
-}
+# ------------------------------------------------------------------ the part columns (one declaration)
+@dataclass(frozen=True)
+class Column:
+    """One column of a part table: how the loader reads it and which model parameter it feeds.
+
+    kind      : "str" (text), "int" (a count) or a :data:`axisopt.units.KINDS` kind (the header's unit converts)
+    param     : the model parameter (:data:`axisopt.model.PARAM_NAMES`) the value goes to as it is; None for a
+                column the model does not read, or reads through a rule (see ``model.params.axis_params``)
+    positive  : must be > 0 (stiffness and the geometry the physics divides by); every other number >= 0
+    optional  : the cell may be empty where the vendor lists no value (read as NaN)
+    estimate  : for an optional column the model reads: what stands in where the cell is empty (an estimated,
+                not a vendor, value; results say when it binds)
+    """
+
+    name: str
+    kind: str
+    param: str | None = None
+    positive: bool = False
+    optional: bool = False
+    estimate: str = ""
+
+
+def _c(name, kind, param=None, **kw) -> Column:
+    return Column(name, kind, param, **kw)
+
+
+_TEXT = ("id", "vendor", "series")
+COLUMNS = MappingProxyType({
+    "screws": (
+        *(_c(n, "str") for n in _TEXT),
+        _c("nominal_diameter", "length", "nominal_diameter", positive=True),
+        _c("lead", "length", "lead", positive=True),
+        _c("root_diameter", "length", "root_diameter", positive=True),
+        _c("ball_diameter", "length", optional=True),
+        _c("max_length", "length", "screw_max_length", positive=True),
+        _c("mass_per_length", "mass_per_length", "screw_mass_per_length", positive=True),
+        _c("dn_limit", "dn", "dn_limit", positive=True),
+        _c("support_bore_min", "length", "support_bore_min", positive=True),
+        _c("support_bore_max", "length", "support_bore_max", positive=True),
+        _c("price_per_length", "money_per_length", "screw_price_per_length"),
+        _c("price_fixed", "money", "screw_price_fixed"),
+    ),
+    "nuts": (
+        _c("id", "str"), _c("vendor", "str"), _c("screw_id", "str"), _c("type", "str"),
+        _c("stiffness", "stiffness", "nut_stiffness", positive=True),
+        _c("stiffness_preload", "force", "nut_stiffness_preload", positive=True),
+        _c("preload_min", "force", "nut_preload_min"), _c("preload_max", "force", "nut_preload_max"),
+        _c("dynamic_load_rating", "force", "nut_dynamic_load", positive=True),
+        _c("static_load_rating", "force", "nut_static_load", positive=True),
+        _c("contact_angle", "angle"),
+        _c("axial_play", "length", "nut_axial_play"), _c("mass", "mass", "nut_mass"),
+        _c("price", "money", "nut_price"),
+    ),
+    "bearings": (
+        *(_c(n, "str") for n in _TEXT), _c("arrangement", "str"), _c("rows", "int", positive=True),
+        _c("bore", "length", "bearing_bore", positive=True), _c("outer_diameter", "length", positive=True),
+        _c("contact_angle", "angle"), _c("preload_class", "str"),
+        _c("preload", "force", "bearing_preload"),
+        _c("axial_rigidity", "stiffness", "bearing_stiffness", positive=True),
+        _c("lift_off_load", "force", "bearing_lift_off"),
+        _c("dynamic_load_rating", "force", "bearing_dynamic_load", positive=True),
+        _c("static_load_rating", "force"),
+        _c("limiting_speed", "angular_speed", "bearing_limiting_speed"),
+        _c("starting_torque", "torque", optional=True,
+           estimate="seed eq. 40 (Palmgren f0/f1 friction torque of the set)"),
+        _c("f0", "dimensionless", "bearing_f0"), _c("f1", "dimensionless", "bearing_f1"),
+        _c("mass", "mass", "bearing_mass"), _c("price", "money", "bearing_price"),
+    ),
+    "guides": (
+        *(_c(n, "str") for n in _TEXT), _c("type", "str"), _c("size", "length", positive=True),
+        _c("preload_class", "str"), _c("preload_level", "str"), _c("preload", "force", "guide_preload"),
+        _c("normal_rigidity", "stiffness", "guide_normal_stiffness", positive=True),
+        _c("tangential_rigidity", "stiffness", "guide_tangential_stiffness", positive=True),
+        _c("dynamic_load_rating", "force", "guide_dynamic_load", positive=True),
+        _c("static_load_rating", "force"),
+        _c("friction_force", "force", "guide_friction_force"),
+        _c("friction_coefficient", "dimensionless", "guide_friction_coefficient"),
+        _c("friction_viscous", "damping", "guide_friction_viscous"),
+        _c("damping", "damping", "guide_damping"), _c("block_mass", "mass", "guide_block_mass"),
+        _c("rail_mass_per_length", "mass_per_length", "guide_rail_mass_per_length"),
+        _c("block_price", "money", "guide_block_price"),
+        _c("rail_price_per_length", "money_per_length", "guide_rail_price_per_length"),
+    ),
+    # Drive parts (servo motors, shaft couplings).  Optional tables: a catalog directory may leave them out.
+    "motors": (
+        *(_c(n, "str") for n in _TEXT), _c("rated_power", "power", positive=True),
+        _c("rated_torque", "torque", "motor_rated_torque", positive=True),
+        _c("peak_torque", "torque", "motor_peak_torque", positive=True),
+        _c("rated_speed", "angular_speed", positive=True),
+        _c("max_speed", "angular_speed", "motor_max_speed", positive=True),
+        _c("rotor_inertia", "inertia", positive=True),
+        _c("rotor_inertia_brake", "inertia", optional=True), _c("brake_torque", "torque", optional=True),
+        _c("mass", "mass", optional=True), _c("flange", "length", optional=True),
+        _c("price", "money", "motor_price"),
+    ),
+    "couplings": (
+        *(_c(n, "str") for n in _TEXT),
+        _c("rated_torque", "torque", "coupling_rated_torque", positive=True),
+        _c("torsional_stiffness", "torsional_stiffness", positive=True),
+        _c("inertia", "inertia", positive=True),
+        _c("max_speed", "angular_speed", "coupling_max_speed", positive=True),
+        _c("bore_min", "length", positive=True), _c("bore_max", "length", positive=True),
+        _c("mass", "mass", optional=True), _c("price", "money", "coupling_price"),
+    ),
+})
 
 # Columns a table may omit from its header; shipped rows carry them (tests/catalogs checks every row).
 #   status: "vendor" (a catalog part, stiffness and load ratings from the vendor's table), "stiffness-derived"
@@ -62,41 +137,18 @@ PROVENANCE = MappingProxyType({"status": ("vendor", "stiffness-derived", "paper"
 USER_STATUS = "user"
 STATUSES = PROVENANCE["status"] + (USER_STATUS,)
 
-# Drive parts (servo motors, shaft couplings).  Optional tables: a catalog directory may leave them out.
-_MOTORS = {
-    "id": "str", "vendor": "str", "series": "str", "rated_power": "power", "rated_torque": "torque",
-    "peak_torque": "torque", "rated_speed": "angular_speed", "max_speed": "angular_speed",
-    "rotor_inertia": "inertia", "rotor_inertia_brake": "inertia", "brake_torque": "torque", "mass": "mass",
-    "flange": "length", "price": "money",
-}
-_COUPLINGS = {
-    "id": "str", "vendor": "str", "series": "str", "rated_torque": "torque",
-    "torsional_stiffness": "torsional_stiffness", "inertia": "inertia", "max_speed": "angular_speed",
-    "bore_min": "length", "bore_max": "length", "mass": "mass", "price": "money",
-}
-
-SCHEMA = MappingProxyType({
-    "screws": MappingProxyType(_SCREWS),
-    "nuts": MappingProxyType(_NUTS),
-    "bearings": MappingProxyType(_BEARINGS),
-    "guides": MappingProxyType(_GUIDES),
-    "motors": MappingProxyType(_MOTORS),
-    "couplings": MappingProxyType(_COUPLINGS),
-})
+SCHEMA = MappingProxyType({t: MappingProxyType({c.name: c.kind for c in cols}) for t, cols in COLUMNS.items()})
 MAX_CATALOG_BYTES = 50_000_000
 # Tables the axis model needs in every catalog; the drive tables may be absent (empty then).
 REQUIRED_TABLES = ("screws", "nuts", "bearings", "guides")
 
-# Columns that must be > 0 (stiffness and the geometry the physics divides by).
-_POSITIVE = {
-    "screws": ("nominal_diameter", "lead", "root_diameter", "max_length", "mass_per_length", "dn_limit",
-               "support_bore_min", "support_bore_max"),
-    "nuts": ("stiffness", "stiffness_preload", "dynamic_load_rating", "static_load_rating"),
-    "bearings": ("axial_rigidity", "bore", "outer_diameter", "rows", "dynamic_load_rating"),
-    "guides": ("normal_rigidity", "tangential_rigidity", "size", "dynamic_load_rating"),
-    "motors": ("rated_power", "rated_torque", "peak_torque", "rated_speed", "max_speed", "rotor_inertia"),
-    "couplings": ("rated_torque", "torsional_stiffness", "inertia", "max_speed", "bore_min", "bore_max"),
-}
+# Columns that must be > 0 and columns whose cell may be left empty (read as NaN; the model then uses the
+# column's ``estimate``, e.g. seed eq. 40 for a bearing set without a listed starting torque); derived from
+# :data:`COLUMNS`.  Every other number of every table must not be negative (no part has a negative mass, price,
+# play or friction); catalog rows and inline parts go through the same :func:`row_problem`.
+_POSITIVE = {t: tuple(c.name for c in cols if c.positive) for t, cols in COLUMNS.items()}
+OPTIONAL_COLUMNS = MappingProxyType({t: tuple(c.name for c in cols if c.optional) for t, cols in COLUMNS.items()
+                                     if any(c.optional for c in cols)})
 # Pairs (low, high) that a row must keep in order: a one-line error names the row otherwise.
 _ORDERED = {
     "motors": (("rated_torque", "peak_torque"), ("rated_speed", "max_speed"),
@@ -104,13 +156,6 @@ _ORDERED = {
     "couplings": (("bore_min", "bore_max"),),
     "nuts": (("preload_min", "preload_max"),),
 }
-# Columns whose cell may be left empty: the vendor does not list the value (read as NaN; the model then
-# uses its fallback, e.g. seed eq. 40 for a bearing set without a listed starting torque).
-OPTIONAL_COLUMNS = MappingProxyType({"bearings": ("starting_torque",), "screws": ("ball_diameter",),
-                                     "motors": ("rotor_inertia_brake", "brake_torque", "mass", "flange"),
-                                     "couplings": ("mass",)})
-# Every other number of every table must not be negative (no part has a negative mass, price, play or
-# friction); catalog rows and inline parts go through the same :func:`row_problem`.
 _CHOICES = {
     ("nuts", "type"): ("single", "double"),
     ("guides", "type"): ("ball", "roller"),

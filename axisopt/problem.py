@@ -61,6 +61,7 @@ from .catalog import STATUSES, USER_STATUS, Catalog
 from .design import _CATALOGS, _DESCRIPTION, _NAME, AXIS_SPEC, MOUNTINGS, Axis, catalog_for, read_axis
 from .errors import InputError
 from .model import CHECKS
+from .model.limits import LIMITS
 from .yamlio import Key, Section, Spec, close_matches, read_yaml
 
 OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto")
@@ -71,22 +72,8 @@ SLOTS = MECH_SLOTS + ("motor", "coupling")
 SLOT_TABLE = MappingProxyType({"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides",
                                "motor": "motors", "coupling": "couplings"})
 
-# limit key -> (quantity kind, display unit, SI factor of the display unit, model output, sense)
-LIMITS = MappingProxyType({
-    "max_moving_mass": ("mass", "kg", 1.0, "moving_mass", "<="),
-    "max_total_mass": ("mass", "kg", 1.0, "total_mass", "<="),
-    "max_cost": ("money", "EUR", 1.0, "cost", "<="),
-    "max_drag_torque": ("torque", "N.m", 1.0, "drag_torque", "<="),
-    "min_life": ("time", "h", 3600.0, "life", ">="),
-    "min_stiffness": ("stiffness", "N/um", 1e6, "k_total", ">="),
-    "min_frequency": ("frequency", "Hz", 1.0, "f1", ">="),
-    "max_backlash": ("length", "um", 1e-6, "backlash", "<="),
-    "max_inertia_ratio": ("dimensionless", "", 1.0, "inertia_ratio", "<="),
-})
-# Limits that apply when a problem does not set them: a machine-tool feed axis has no backlash (single nuts
-# with axial play are allowed only when the problem says max_backlash > 0).
-DEFAULT_LIMITS = MappingProxyType({"max_backlash": 0.0})
-_ZERO_ALLOWED = ("max_backlash",)
+# limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once there
+DEFAULT_LIMITS = MappingProxyType({k: lim.default for k, lim in LIMITS.items() if lim.default is not None})
 
 
 @dataclass(frozen=True)
@@ -196,22 +183,12 @@ class Problem:
 # `axisopt schema problem` writes it out.  What a Key cannot say (a weight's scale follows its weight, catalog
 # names are checked against the catalogs loaded) stays in the readers.
 
-_LIMIT_DOCS = {
-    "max_moving_mass": "moving mass at most this", "max_total_mass": "total mass of the axis parts at most this",
-    "max_cost": "cost of the parts at most this", "max_drag_torque": "drag torque (nut and bearings) at most this",
-    "min_life": "nut L10 life at least this (the axis.required_life check applies too)",
-    "min_stiffness": "axial stiffness at least this (minimum over the stroke)",
-    "min_frequency": "first natural frequency at least this (minimum over the stroke)",
-    "max_backlash": "axial play of the nut at most this (default 0: preloaded nuts only)",
-    "max_inertia_ratio": "load / rotor inertia ratio at the motor at most this",
-}
 MARGINS_SPEC = Spec("margins", "smallest accepted margin per check (default 1.0; 0 disables the check)",
                     {c: Key("number", f"smallest accepted {c.replace('_', ' ')} margin", minimum=0.0)
                      for c in CHECKS})
 LIMITS_SPEC = Spec("limits", "limits on the model's outputs (each with its unit)", {
-    **{key: Key("quantity", _LIMIT_DOCS[key], kind=kind, positive=key not in _ZERO_ALLOWED,
-                non_negative=key in _ZERO_ALLOWED)
-       for key, (kind, *_rest) in LIMITS.items()},
+    **{key: Key("quantity", lim.doc, kind=lim.kind, positive=not lim.zero_ok, non_negative=lim.zero_ok)
+       for key, lim in LIMITS.items()},
     "margins": Key("section", spec=MARGINS_SPEC),
 })
 WEIGHTS_SPEC = Spec("weights", "weighted objective: weight per performance value", {

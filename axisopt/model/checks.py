@@ -8,35 +8,13 @@ from types import MappingProxyType
 from .. import mathx as mx
 from ..physics import checks as pc
 from ..physics import nut as pn
+from .limits import CHECK_TABLE
 
-CHECKS = ("critical_speed", "buckling", "screw_yield", "nut_life", "bearing_life", "guide_life", "dn",
-          "nut_lift_off", "bearing_lift_off", "bearing_speed", "bearing_fit", "screw_length",
-          "motor_peak_torque", "motor_rated_torque", "motor_speed", "inertia_ratio", "brake_holding",
-          "coupling_torque", "coupling_speed")
+# The checks, their labels and units are declared once in model.limits (CHECK_TABLE).
+CHECKS = tuple(c.name for c in CHECK_TABLE)
 # Drive checks (model.drive); they apply only when the design has a motor (coupling).
-DRIVE_CHECKS = CHECKS[12:]
-
-CHECK_LABELS = MappingProxyType({
-    "critical_speed": "critical speed / max screw speed",
-    "buckling": "buckling load / max screw compression",
-    "screw_yield": "yield load (THK P2) / max screw tension",
-    "nut_life": "nut L10 life / required life",
-    "bearing_life": "support bearing L10 life / required life",
-    "guide_life": "guide block L10 travel / required travel",
-    "dn": "DN limit / DN at max speed",
-    "nut_lift_off": "nut lift-off force / max axial force",
-    "bearing_lift_off": "bearing lift-off load / max bearing load",
-    "bearing_speed": "bearing limiting speed / max screw speed",
-    "bearing_fit": "bearing bore within the screw end's range",
-    "screw_length": "screw max length / needed length",
-    "motor_peak_torque": "motor peak torque / peak torque (cycle, thrust)",
-    "motor_rated_torque": "motor rated torque / RMS torque, mean thrust",
-    "motor_speed": "motor max speed / needed motor speed",
-    "inertia_ratio": "inertia ratio limit / load-to-rotor ratio",
-    "brake_holding": "brake torque / safety x gravity torque",
-    "coupling_torque": "coupling rated torque / motor peak torque",
-    "coupling_speed": "coupling max speed / max screw speed",
-})
+DRIVE_CHECKS = tuple(c.name for c in CHECK_TABLE if c.drive)
+CHECK_LABELS = MappingProxyType({c.name: c.label for c in CHECK_TABLE})
 
 # Buckling end condition.  The compressed length runs from the thrust (fixed) bearing to the nut, and the
 # guided nut counts as a fixed end whatever the screw mounting: THK worked examples A-724..A-727 and

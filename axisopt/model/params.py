@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+from types import MappingProxyType
+
 import numpy as np
+
+from ..catalog import COLUMNS
 
 PARAM_NAMES = (
     # axis
@@ -35,6 +39,24 @@ PARAM_NAMES = (
 )
 
 
+# part table -> ((column, parameter), ...): the columns that feed a model parameter as they are, from the one
+# declaration of the part columns (axisopt.catalog.COLUMNS).  A new part column the model reads needs its
+# ``param`` there and its name in PARAM_NAMES above.
+PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.param) for t, cols in COLUMNS.items()})
+# numeric columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice)
+_RULE_COLUMNS = MappingProxyType({
+    "screws": (), "nuts": (), "bearings": ("bore", "outer_diameter", "starting_torque"), "guides": (),
+    "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque"),
+    "couplings": ("torsional_stiffness", "inertia"),
+})
+
+
+def columns_read(table: str) -> tuple:
+    """The numeric columns of a part table the model reads (what a vectorized search keeps as arrays)."""
+    direct = tuple(c for c, _ in PART_PARAMS[table])
+    return direct + tuple(c for c in _RULE_COLUMNS[table] if c not in direct)
+
+
 def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> dict:
     """Flat SI parameter dict for :func:`axisopt.model.axis_response` from an Axis and its part rows.
 
@@ -61,39 +83,19 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "temperature_rise": axis.temperature_rise,
         "pretension": 0.0 if axis.pretension is None else axis.pretension,
         "pretension_auto": 1.0 if (axis.pretension is None and mounting == "fixed-fixed") else 0.0,
-        "root_diameter": col(screw, "root_diameter"), "nominal_diameter": col(screw, "nominal_diameter"),
-        "lead": col(screw, "lead"), "screw_max_length": col(screw, "max_length"),
-        "screw_mass_per_length": col(screw, "mass_per_length"), "dn_limit": col(screw, "dn_limit"),
-        "screw_price_per_length": col(screw, "price_per_length"), "screw_price_fixed": col(screw, "price_fixed"),
-        "support_bore_min": col(screw, "support_bore_min"), "support_bore_max": col(screw, "support_bore_max"),
-        "nut_stiffness": col(nut, "stiffness"), "nut_stiffness_preload": col(nut, "stiffness_preload"),
-        "nut_double": _is_type(nut, "double"), "nut_dynamic_load": col(nut, "dynamic_load_rating"),
-        "nut_static_load": col(nut, "static_load_rating"), "nut_mass": col(nut, "mass"),
-        "nut_price": col(nut, "price"), "nut_preload_min": col(nut, "preload_min"),
-        "nut_preload_max": col(nut, "preload_max"), "nut_axial_play": col(nut, "axial_play"),
-        "bearing_stiffness": col(bearing, "axial_rigidity"), "bearing_lift_off": col(bearing, "lift_off_load"),
-        "bearing_preload": col(bearing, "preload"), "bearing_f0": col(bearing, "f0"),
-        "bearing_f1": col(bearing, "f1"),
+    }
+    # every column that feeds a parameter as it is (catalog.COLUMNS), then the ones read through a rule
+    for table, row in (("screws", screw), ("nuts", nut), ("bearings", bearing), ("guides", guide)):
+        for column, param in PART_PARAMS[table]:
+            p[param] = col(row, column)
+    p.update({
+        "nut_double": _is_type(nut, "double"),
         "bearing_mean_diameter": 0.5 * (col(bearing, "bore") + col(bearing, "outer_diameter")),
-        "bearing_limiting_speed": col(bearing, "limiting_speed"), "bearing_mass": col(bearing, "mass"),
-        "bearing_price": col(bearing, "price"), "bearing_dynamic_load": col(bearing, "dynamic_load_rating"),
-        "bearing_bore": col(bearing, "bore"),
         # starting torque of the support unit where its vendor lists it (eq. 40 otherwise)
         "bearing_torque": _listed_or(torque, 0.0),
         "bearing_torque_listed": np.isfinite(torque) * 1.0,
-        "guide_normal_stiffness": col(guide, "normal_rigidity"),
-        "guide_tangential_stiffness": col(guide, "tangential_rigidity"),
-        "guide_friction_force": col(guide, "friction_force"),
-        "guide_friction_coefficient": col(guide, "friction_coefficient"),
-        "guide_friction_viscous": col(guide, "friction_viscous"), "guide_damping": col(guide, "damping"),
-        "guide_block_mass": col(guide, "block_mass"),
-        "guide_rail_mass_per_length": col(guide, "rail_mass_per_length"),
-        "guide_block_price": col(guide, "block_price"),
-        "guide_rail_price_per_length": col(guide, "rail_price_per_length"),
-        "guide_dynamic_load": col(guide, "dynamic_load_rating"),
-        "guide_preload": col(guide, "preload"),
         "guide_roller": _is_type(guide, "roller"),
-    }
+    })
     p.update(drive_params(axis, motor, coupling))
     p["duty"] = axis.phases
     return p
@@ -122,17 +124,16 @@ def drive_params(axis, motor, coupling) -> dict:
         if axis.brake_used:  # the brake adds its inertia (catalog value; the plain rotor where none is listed)
             rotor = _listed_or(col(motor, "rotor_inertia_brake"), rotor)
         brake = _listed_or(col(motor, "brake_torque"), 0.0)
-        q.update({"has_motor": 1.0, "motor_rated_torque": col(motor, "rated_torque"),
-                  "motor_peak_torque": col(motor, "peak_torque"), "motor_max_speed": col(motor, "max_speed"),
-                  "motor_brake_torque": brake, "motor_price": col(motor, "price")})
+        q.update({"has_motor": 1.0, "motor_brake_torque": brake})
+        q.update({param: col(motor, column) for column, param in PART_PARAMS["motors"]})
     if coupling is None:
         q.update({"has_coupling": 0.0, "coupling_stiffness": axis.coupling_stiffness,
                   "coupling_inertia": axis.coupling_inertia, "coupling_rated_torque": 1.0,
                   "coupling_max_speed": 1.0, "coupling_price": 0.0})
     else:
         q.update({"has_coupling": 1.0, "coupling_stiffness": col(coupling, "torsional_stiffness"),
-                  "coupling_inertia": col(coupling, "inertia"), "coupling_rated_torque": col(coupling, "rated_torque"),
-                  "coupling_max_speed": col(coupling, "max_speed"), "coupling_price": col(coupling, "price")})
+                  "coupling_inertia": col(coupling, "inertia")})
+        q.update({param: col(coupling, column) for column, param in PART_PARAMS["couplings"]})
     q["rotor_inertia"] = rotor
     # motor side of the drive-train model, seen from the screw through the reduction
     q["motor_inertia"] = (rotor + axis.reduction_inertia) * ratio**2

@@ -9,30 +9,16 @@ import textwrap
 import numpy as np
 
 from ..model import CHECK_LABELS, CHECKS, DRIVE_CHECKS, Evaluation, passes
+from ..model.limits import CHECK_TABLE
 from ..units import N_PER_UM
 
 RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
 WIDTH = 100  # terminal columns the text tables fit
 
-# Each check's physical values in the unit vendors quote them in: (unit, factor from SI).  DN in mm x rpm.
-CHECK_UNITS = {
-    "critical_speed": ("rpm", RPM), "buckling": ("kN", 1e-3), "screw_yield": ("kN", 1e-3),
-    "nut_life": ("h", 1 / 3600), "bearing_life": ("h", 1 / 3600), "guide_life": ("km", 1e-3),
-    "dn": ("mm.rpm", 1e3 * RPM), "nut_lift_off": ("kN", 1e-3), "bearing_lift_off": ("kN", 1e-3),
-    "bearing_speed": ("rpm", RPM), "bearing_fit": ("mm", 1e3), "screw_length": ("mm", 1e3),
-    "motor_peak_torque": ("N.m", 1.0), "motor_rated_torque": ("N.m", 1.0), "motor_speed": ("rpm", RPM),
-    "inertia_ratio": ("", 1.0), "brake_holding": ("N.m", 1.0), "coupling_torque": ("N.m", 1.0),
-    "coupling_speed": ("rpm", RPM),
-}
-# Short names for tables with one column per design.
-CHECK_SHORT = {
-    "critical_speed": "critical speed", "buckling": "buckling load", "screw_yield": "screw yield load",
-    "nut_life": "nut life", "bearing_life": "bearing life", "guide_life": "guide travel", "dn": "DN value",
-    "nut_lift_off": "nut lift-off", "bearing_lift_off": "bearing lift-off", "bearing_speed": "bearing speed",
-    "bearing_fit": "bearing bore (max)", "screw_length": "screw length", "motor_peak_torque": "motor peak torque",
-    "motor_rated_torque": "motor rated torque", "motor_speed": "motor speed", "inertia_ratio": "inertia ratio",
-    "brake_holding": "brake holding", "coupling_torque": "coupling torque", "coupling_speed": "coupling speed",
-}
+# Each check's physical values in the unit vendors quote them in: (unit, factor from SI), DN in mm x rpm; and
+# short names for tables with one column per design (both declared with the check in model.limits).
+CHECK_UNITS = {c.name: (c.unit, c.factor) for c in CHECK_TABLE}
+CHECK_SHORT = {c.name: c.short for c in CHECK_TABLE}
 NOT_APPLICABLE = 1e8  # a margin at or above this: the check does not apply (or nothing loads it)
 
 

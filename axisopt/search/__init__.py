@@ -17,7 +17,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..problem import LIMITS, Problem
+from ..model.limits import LIMITS
+from ..problem import Problem
 from .core import bound_order_search, certificate, exhaustive_search, polish
 from .result import Binding, Candidate, Certificate, Infeasibility, ParetoFront, SolveResult
 from .space import Constraint, build_constraints, build_space, objective_spec
@@ -59,9 +60,9 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
         j1 = first.best.objective
         floor = j1 * (1.0 - max(ob.tolerance, 1e-9))
         key = "min_stiffness" if primary == "stiffness" else "min_frequency"
-        kind, unit, factor, okey, _ = LIMITS[key]
-        extra = Constraint(f"lexicographic {primary}", okey, ">=", floor * (1e6 if primary == "stiffness" else 1.0),
-                           1, f"{primary} within {ob.tolerance:g} of its best {j1:.6g}", unit, factor)
+        lim = LIMITS[key]
+        extra = Constraint(f"lexicographic {primary}", lim.output, ">=", floor * lim.factor, lim.preload,
+                           f"{primary} within {ob.tolerance:g} of its best {j1:.6g}", lim.unit, lim.factor)
         res = _solve_scalar(problem, space, constraints + (extra,), objective_spec(secondary), method, top,
                             time_limit, t0)
         res.objective_label = f"{ob.label}: primary best {j1:.6g} {first.objective_unit}; " + res.objective_label
@@ -102,10 +103,10 @@ def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0
         return SolveResult("infeasible", method, problem.name, spec.label, spec.unit, None, [], cert,
                            time.perf_counter() - t0, message="no catalog combination meets every limit",
                            infeasibility=why)
-    cands, nlps, fails, notes = polish(space, ex, constraints, spec, top)
-    cert = certificate(info, nlps, fails, notes)
+    cands, nlps, failed_ranks, notes = polish(space, ex, constraints, spec, top)
+    cert = certificate(info, nlps, len(failed_ranks), notes)
     status = "optimal" if cert.proven else "time_limit"
-    if fails and cands and cands[0].rank == 1 and any("rank 1)" in n for n in notes):
+    if 1 in failed_ranks:  # IPOPT failed on the best design (its 1-D solution is kept)
         status = "solver_failed"
     return SolveResult(status, method, problem.name, spec.label, spec.unit, cands[0], cands[1:], cert,
                        time.perf_counter() - t0, message="; ".join(notes), solver_status="ipopt")
@@ -115,19 +116,18 @@ def limit_sensitivities(problem: Problem, res: SolveResult) -> list:
     """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
     (re-solved with the default method; a discrete problem has no meaningful multipliers)."""
     best = res.best
-    at = {"max_moving_mass": best.moving_mass, "max_total_mass": best.total_mass, "max_cost": best.cost,
-          "max_drag_torque": best.drag_torque, "min_life": best.life_h * 3600.0,
-          "min_stiffness": best.min_stiffness * 1e6, "min_frequency": best.min_frequency}
     out = []
     for key, value in problem.limits:
-        if key not in at:  # e.g. max_backlash 0: relaxing it by 10 % changes nothing
-            continue
-        kind, unit, factor, okey, sense = LIMITS[key]
-        relaxed = value * (1.0 + RELAX) if sense == "<=" else value * (1.0 - RELAX)
+        lim = LIMITS[key]
+        at = best.outputs.get(lim.output)
+        if value == 0.0 or at is None or not np.isfinite(at):
+            continue  # e.g. max_backlash 0: relaxing it by 10 % changes nothing; an output the design lacks
+        unit, factor = lim.unit, lim.factor
+        relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
         r2 = solve(problem.with_limit(key, relaxed), "default", top=1, sensitivities=False)
         gain = (r2.best.objective - best.objective) if r2.best is not None else float("nan")
         tol = 1e-6 * max(abs(best.objective), 1e-9)
-        out.append(Binding(key, unit, value / factor, at[key] / factor, relaxed / factor, gain,
+        out.append(Binding(key, unit, value / factor, at / factor, relaxed / factor, gain,
                            bool(gain > tol)))
     return out
 

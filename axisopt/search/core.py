@@ -33,6 +33,7 @@ import numpy as np
 
 from .. import model
 from ..design import Design
+from ..model.limits import LIMITS
 from . import nlp
 from .result import Candidate, Certificate
 from .space import (
@@ -479,13 +480,15 @@ def make_candidate(space: Space, combo: int, preload: float, objective: Objectiv
                      objective=J, min_stiffness=float(np.min(v["k_total"])) / N_PER_UM,
                      min_frequency=float(np.min(v["f1"])), cost=float(v["cost"]),
                      moving_mass=float(v["moving_mass"]), total_mass=float(v["total_mass"]),
-                     drag_torque=float(v["drag_torque"]), life_h=float(v["life"]) / 3600.0, design=design)
+                     drag_torque=float(v["drag_torque"]), life_h=float(v["life"]) / 3600.0, design=design,
+                     outputs={lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v})
 
 
 def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: int):
-    """IPOPT on the ``top`` best combinations of ``ex``.  Returns (candidates, nlps, failures, notes)."""
+    """IPOPT on the ``top`` best combinations of ``ex``.  Returns (candidates, nlps, failed ranks, notes):
+    the ranks whose NLP failed (their 1-D solution is kept)."""
     pick = rank_order(ex.objective, ex.cost, ex.total_mass, ex.idx, top)
-    cands, fails, notes = [], 0, []
+    cands, fails, notes = [], [], []
     for r, j in enumerate(pick, start=1):
         combo = int(ex.idx[j])
         mi, n, b, g = (int(v) for v in space.unravel(combo))
@@ -497,7 +500,7 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
                                 guess=float(ex.preload[j]))
         pre = float(ex.preload[j])
         if not res.success:
-            fails += 1
+            fails.append(r)
             notes.append(f"IPOPT {res.status} on combination {combo} (rank {r}); kept the 1-D solution")
         elif res.objective < ex.objective[j] - 1e-6 * max(abs(ex.objective[j]), 1e-9):
             notes.append(f"IPOPT objective {res.objective:.6g} below the 1-D solve {ex.objective[j]:.6g} on "

@@ -30,6 +30,9 @@ class Candidate:
     misses: dict = field(default_factory=dict)  # infeasible problems: limit -> relative miss
     motor: str = ""  # servo motor id ('' without drive search)
     coupling: str = ""
+    # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their minimum over
+    # the stroke.  Not in the JSON (the display fields above carry the same values in vendor units).
+    outputs: dict = field(default_factory=dict, repr=False, compare=False)
 
     def parts(self) -> dict:
         out = {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
@@ -42,6 +45,7 @@ class Candidate:
     def to_dict(self) -> dict:
         d = asdict(self)
         d.pop("design")
+        d.pop("outputs")
         return {k: _clean(v) for k, v in d.items()}
 
 

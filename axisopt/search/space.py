@@ -31,16 +31,13 @@ import pandas as pd
 from .. import model
 from ..catalog import USER_STATUS
 from ..errors import InputError
-from ..problem import LIMITS, Problem
+from ..model.limits import CHECK_RECORDS, CHECK_TABLE, CONVEX, LIMITS, OUTPUT_PRELOAD
+from ..model.params import columns_read
+from ..problem import Problem
 from ..units import N_PER_UM
 
-# Outputs that depend on the nut preload and how (+1 nondecreasing, -1 nonincreasing, CONVEX: the motor
-# torques, convex in the preload -- the nut's drag raises the torque of some phases of the cycle and lowers
-# that of others (deceleration, lowering a vertical axis), so a torque limit holds on an interval of preloads).
-CONVEX = 2
-PRELOAD_DIRECTION = {"k_total": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
-                     "margin_nut_lift_off": 1, "life": -1, "margin_nut_life": -1,
-                     "margin_motor_peak_torque": CONVEX, "margin_motor_rated_torque": CONVEX}
+# How an output moves with the nut preload (+1, -1, CONVEX; 0 independent): declared in model.limits.
+PRELOAD_DIRECTION = {**OUTPUT_PRELOAD, **{f"margin_{c.name}": c.preload for c in CHECK_TABLE if c.preload}}
 GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a convex limit
 PROFILE = ("k_total", "f1")
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
@@ -54,18 +51,8 @@ def search_points(k: int) -> int:
     costs mostly its fixed Python overhead (few combinations), 2 (bisection) once the rows cost more."""
     return int(max(2, min(SEARCH_POINTS, 2 ** round(math.log2(SEARCH_ROWS / max(k, 1) + 1)))))
 
-_SCREW_COLS = ("root_diameter", "nominal_diameter", "lead", "max_length", "mass_per_length", "dn_limit",
-               "price_per_length", "price_fixed", "support_bore_min", "support_bore_max")
-_NUT_COLS = ("stiffness", "stiffness_preload", "dynamic_load_rating", "static_load_rating", "mass", "price",
-             "preload_min", "preload_max", "axial_play")
-_BEARING_COLS = ("axial_rigidity", "lift_off_load", "preload", "f0", "f1", "bore", "outer_diameter",
-                 "limiting_speed", "mass", "price", "dynamic_load_rating", "starting_torque")
-_MOTOR_COLS = ("rated_torque", "peak_torque", "max_speed", "rotor_inertia", "rotor_inertia_brake", "brake_torque",
-               "price")
-_COUPLING_COLS = ("rated_torque", "torsional_stiffness", "inertia", "max_speed", "price")
-_GUIDE_COLS = ("normal_rigidity", "tangential_rigidity", "friction_force", "friction_coefficient",
-               "friction_viscous", "damping", "block_mass", "rail_mass_per_length", "block_price",
-               "rail_price_per_length", "dynamic_load_rating", "preload")
+_SCREW_COLS, _NUT_COLS, _BEARING_COLS, _GUIDE_COLS, _MOTOR_COLS, _COUPLING_COLS = (
+    columns_read(t) for t in ("screws", "nuts", "bearings", "guides", "motors", "couplings"))
 
 
 # The guide values that favour every mechanical limit and the objective (the optimistic guide of the block
@@ -165,13 +152,13 @@ def min_last(v):
 def build_constraints(problem: Problem) -> tuple[Constraint, ...]:
     out = []
     for key, value in problem.limits:
-        kind, unit, factor, okey, sense = LIMITS[key]
-        out.append(Constraint(key, okey, sense, value, PRELOAD_DIRECTION.get(okey, 0),
-                              key.replace("_", " "), unit, factor))
+        lim = LIMITS[key]
+        out.append(Constraint(key, lim.output, lim.sense, value, lim.preload, key.replace("_", " "), lim.unit,
+                              lim.factor))
     for check, m in problem.margins:
         if m > 0:
             k = f"margin_{check}"
-            out.append(Constraint(k, k, ">=", m, PRELOAD_DIRECTION.get(k, 0), model.CHECK_LABELS[check], "", 1.0))
+            out.append(Constraint(k, k, ">=", m, CHECK_RECORDS[check].preload, model.CHECK_LABELS[check], "", 1.0))
     return tuple(out)
 
 

@@ -1,0 +1,132 @@
+"""What a sizing problem may limit and which vendor checks the model runs: one declaration each.
+
+A :class:`Limit` is a bound a problem file sets on a model output (``limits: min_stiffness: 150 N/um``); a
+:class:`Check` is a vendor rule the model always evaluates as a margin (available / needed, >= 1 passes).
+Everything else is derived from these two tables: the problem reader and its JSON schema, the search's
+constraints and the direction each moves with the nut preload, the sensitivity report, the candidate's
+outputs, and the evaluation's check rows with their units.  Adding a limit or a check is one entry here plus
+the physics that computes its output (``model.checks`` for a check's margin and available/needed values).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+
+RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
+CONVEX = 2  # a preload direction: the output is convex in the nut preload (met on an interval of preloads)
+
+# How model outputs move with the nut preload (+1 nondecreasing, -1 nonincreasing, CONVEX; absent: independent).
+# The search's exact 1-D solve rests on it (default == exhaustive in tests/search checks it): the minimum
+# stiffness and frequency, the drag torque and the nut lift-off margin rise with the preload, the nut life
+# falls, and the motor torques are convex (the nut's drag raises the torque of some phases of the cycle and
+# lowers that of others: deceleration, lowering a vertical axis).
+OUTPUT_PRELOAD = MappingProxyType({
+    "k_total": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1, "life": -1,
+})
+
+
+@dataclass(frozen=True)
+class Limit:
+    """A bound on a model output that a problem may set.
+
+    key      : the problem file's key under ``limits:``
+    output   : the model output it bounds (minimum over the stroke for a profile output)
+    sense    : '<=' or '>=' (output sense limit)
+    kind     : quantity kind of the value (:data:`axisopt.units.KINDS`)
+    unit     : display unit; ``factor`` is SI per display unit
+    doc      : what it means, for the schema and ``--help``
+    zero_ok  : 0 is an allowed value (otherwise it must be positive)
+    default  : applies when a problem does not set it (None: no default)
+    """
+
+    key: str
+    output: str
+    sense: str
+    kind: str
+    unit: str
+    factor: float
+    doc: str
+    zero_ok: bool = False
+    default: float | None = None
+
+    @property
+    def preload(self) -> int:
+        return OUTPUT_PRELOAD.get(self.output, 0)
+
+
+LIMIT_TABLE = (
+    Limit("max_moving_mass", "moving_mass", "<=", "mass", "kg", 1.0, "moving mass at most this"),
+    Limit("max_total_mass", "total_mass", "<=", "mass", "kg", 1.0, "total mass of the axis parts at most this"),
+    Limit("max_cost", "cost", "<=", "money", "EUR", 1.0, "cost of the parts at most this"),
+    Limit("max_drag_torque", "drag_torque", "<=", "torque", "N.m", 1.0,
+          "drag torque (nut and bearings) at most this"),
+    Limit("min_life", "life", ">=", "time", "h", 3600.0,
+          "nut L10 life at least this (the axis.required_life check applies too)"),
+    Limit("min_stiffness", "k_total", ">=", "stiffness", "N/um", 1e6,
+          "axial stiffness at least this (minimum over the stroke)"),
+    Limit("min_frequency", "f1", ">=", "frequency", "Hz", 1.0,
+          "first natural frequency at least this (minimum over the stroke)"),
+    # a machine-tool feed axis has no backlash: single nuts with axial play are allowed only when the problem
+    # says max_backlash > 0
+    Limit("max_backlash", "backlash", "<=", "length", "um", 1e-6,
+          "axial play of the nut at most this (default 0: preloaded nuts only)", zero_ok=True, default=0.0),
+    Limit("max_inertia_ratio", "inertia_ratio", "<=", "dimensionless", "", 1.0,
+          "load / rotor inertia ratio at the motor at most this"),
+)
+LIMITS = MappingProxyType({lim.key: lim for lim in LIMIT_TABLE})
+
+
+@dataclass(frozen=True)
+class Check:
+    """A vendor check the model evaluates as ``margin_<name>`` = available / needed (>= 1 passes).
+
+    label    : what the margin compares ('available / needed'), for tables and the search's constraints
+    short    : a short name for tables with one column per design
+    unit     : the unit vendors quote the compared values in; ``factor`` converts SI to it
+    preload  : how the margin moves with the nut preload (see :data:`OUTPUT_PRELOAD`)
+    drive    : a drive check: it applies only when the design has a motor (coupling checks: a coupling)
+    """
+
+    name: str
+    label: str
+    short: str
+    unit: str
+    factor: float
+    preload: int = 0
+    drive: bool = False
+
+
+CHECK_TABLE = (
+    Check("critical_speed", "critical speed / max screw speed", "critical speed", "rpm", RPM),
+    Check("buckling", "buckling load / max screw compression", "buckling load", "kN", 1e-3),
+    Check("screw_yield", "yield load (THK P2) / max screw tension", "screw yield load", "kN", 1e-3),
+    Check("nut_life", "nut L10 life / required life", "nut life", "h", 1 / 3600, preload=-1),
+    Check("bearing_life", "support bearing L10 life / required life", "bearing life", "h", 1 / 3600),
+    Check("guide_life", "guide block L10 travel / required travel", "guide travel", "km", 1e-3),
+    Check("dn", "DN limit / DN at max speed", "DN value", "mm.rpm", 1e3 * RPM),
+    Check("nut_lift_off", "nut lift-off force / max axial force", "nut lift-off", "kN", 1e-3, preload=1),
+    Check("bearing_lift_off", "bearing lift-off load / max bearing load", "bearing lift-off", "kN", 1e-3),
+    Check("bearing_speed", "bearing limiting speed / max screw speed", "bearing speed", "rpm", RPM),
+    Check("bearing_fit", "bearing bore within the screw end's range", "bearing bore (max)", "mm", 1e3),
+    Check("screw_length", "screw max length / needed length", "screw length", "mm", 1e3),
+    Check("motor_peak_torque", "motor peak torque / peak torque (cycle, thrust)", "motor peak torque", "N.m", 1.0,
+          preload=CONVEX, drive=True),
+    Check("motor_rated_torque", "motor rated torque / RMS torque, mean thrust", "motor rated torque", "N.m", 1.0,
+          preload=CONVEX, drive=True),
+    Check("motor_speed", "motor max speed / needed motor speed", "motor speed", "rpm", RPM, drive=True),
+    Check("inertia_ratio", "inertia ratio limit / load-to-rotor ratio", "inertia ratio", "", 1.0, drive=True),
+    Check("brake_holding", "brake torque / safety x gravity torque", "brake holding", "N.m", 1.0, drive=True),
+    Check("coupling_torque", "coupling rated torque / motor peak torque", "coupling torque", "N.m", 1.0,
+          drive=True),
+    Check("coupling_speed", "coupling max speed / max screw speed", "coupling speed", "rpm", RPM, drive=True),
+)
+CHECK_RECORDS = MappingProxyType({c.name: c for c in CHECK_TABLE})
+
+
+def preload_direction(output: str) -> int:
+    """How a model output (or ``margin_<check>``) moves with the nut preload."""
+    if output.startswith("margin_") and output[7:] in CHECK_RECORDS:
+        return CHECK_RECORDS[output[7:]].preload
+    return OUTPUT_PRELOAD.get(output, 0)
