@@ -12,7 +12,7 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
     catalogs: [../my_catalog]          # optional extra catalog directories (relative to this file)
     axis: {...}                        # as in a design YAML (axis.mounting is the default mounting)
     objective:
-      mode: stiffness                  # stiffness | frequency | weighted | lexicographic | pareto
+      mode: stiffness                  # stiffness | frequency | weighted | lexicographic | pareto | kv
       weights: {stiffness: 1, frequency: 1}           # weighted: sum w_i * value_i / scale_i
       scale: {stiffness: 100 N/um, frequency: 100 Hz}  # weighted
       order: [frequency, stiffness]    # lexicographic
@@ -64,7 +64,7 @@ from .model import CHECKS
 from .model.limits import LIMITS
 from .yamlio import Key, Section, Spec, close_matches, read_yaml
 
-OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto")
+OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto", "kv")
 PERFORMANCE = ("stiffness", "frequency")
 PARETO_KEYS = ("stiffness", "frequency", "cost", "total_mass", "moving_mass", "mass")
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")
@@ -95,7 +95,9 @@ class Objective:
             return " then ".join(f"max min {k}" for k in self.order) + f" (tolerance {self.tolerance:g})"
         if self.mode == "pareto":
             return "Pareto front of " + ", ".join(self.pareto)
-        return f"maximise minimum {'axial stiffness' if self.mode == 'stiffness' else 'first natural frequency'}"
+        names = {"stiffness": "axial stiffness", "frequency": "first natural frequency",
+                 "kv": "achievable position-loop gain Kv"}
+        return f"maximise minimum {names[self.mode]}"
 
 
 def _fmt_si(key, value):

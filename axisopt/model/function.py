@@ -14,7 +14,7 @@ from .response import axis_response
 
 PROFILE_OUTPUTS = ("k_screw", "k_screw_bearings", "k_torsion", "k_drive", "k_total", "f_axial", "f1", "m_eff",
                    "thermal_displacement", "f_axial_torsional", "f_axial_torsional_2", "damping_ratio",
-                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure")
+                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure", "kv")
 SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_bracket", "c_housing", "f_table",
                   "drag_torque", "drag_nut", "drag_bearings", "drag_guides", "moving_mass", "total_mass",
                   "screw_mass", "cost",

@@ -24,6 +24,7 @@ CONVEX = 2  # a preload direction: the output is convex in the nut preload (met 
 # lowers that of others: deceleration, lowering a vertical axis).
 OUTPUT_PRELOAD = MappingProxyType({
     "k_total": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1, "life": -1,
+    "kv": 1,
 })
 
 
@@ -74,6 +75,8 @@ LIMIT_TABLE = (
           "axial play of the nut at most this (default 0: preloaded nuts only)", zero_ok=True, default=0.0),
     Limit("max_inertia_ratio", "inertia_ratio", "<=", "dimensionless", "", 1.0,
           "load / rotor inertia ratio at the motor at most this"),
+    Limit("min_kv", "kv", ">=", "frequency", "1/s", 1.0,
+          "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, model.servo)"),
 )
 LIMITS = MappingProxyType({lim.key: lim for lim in LIMIT_TABLE})
 

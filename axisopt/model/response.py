@@ -14,6 +14,7 @@ and ``identify`` builds its plant from it.  Sub-assemblies: :mod:`.loads` (masse
 
 from __future__ import annotations
 
+from ..physics.servo import kv_rule
 from .chain import stiffness_chain
 from .checks import checks
 from .cost import cost
@@ -25,7 +26,7 @@ from .modes import axial_modes, damping, drive_train_modes
 # The outputs of the stiffness chain and the axial modes (``chain=False`` leaves them out).
 CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupling", "k_nut", "k_nut_unloaded",
                            "c_bracket", "c_housing", "k_bearing", "k_drive", "k_total", "thermal_displacement",
-                           "m_eff", "f_axial", "f_table", "f1"})
+                           "m_eff", "f_axial", "f_table", "f1", "kv"})
 
 
 def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True,
@@ -55,6 +56,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
         modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"])
         out.update(k)
         out.update(modes)
+        out["kv"] = kv_rule(modes["f_axial"])  # achievable position-loop gain [1/s] (model.servo)
     out.update(drag_torque(p, preload, loads))
     out["cost"] = cost(p)
     out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]

@@ -39,7 +39,7 @@ from ..units import N_PER_UM
 # How an output moves with the nut preload (+1, -1, CONVEX; 0 independent): declared in model.limits.
 PRELOAD_DIRECTION = {**OUTPUT_PRELOAD, **{f"margin_{c.name}": c.preload for c in CHECK_TABLE if c.preload}}
 GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a convex limit
-PROFILE = ("k_total", "f1")
+PROFILE = ("k_total", "f1", "kv")
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
 BISECTION_STEPS = 52
 SEARCH_POINTS = 64  # k-ary threshold search (default method): most preloads tried per round in one evaluation
@@ -183,6 +183,8 @@ def objective_spec(kind: str, problem: Problem | None = None) -> ObjectiveSpec:
         return ObjectiveSpec((("k_total", 1.0),), "minimum axial stiffness", "N/um")
     if kind == "frequency":
         return ObjectiveSpec((("f1", 1.0),), "minimum first natural frequency", "Hz")
+    if kind == "kv":
+        return ObjectiveSpec((("kv", 1.0),), "minimum achievable position-loop gain Kv", "1/s")
     if kind == "weighted":
         ob = problem.objective
         scale = dict(ob.scale)
@@ -205,7 +207,7 @@ def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = Tru
 DRIVE_KEYS = frozenset({"cost", "inertia_ratio"} | {f"margin_{c}" for c in model.DRIVE_CHECKS})
 # Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain); the motor's
 # inertia enters only the axial-torsional modes, which no limit or objective reads.
-COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1"})
+COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1", "kv"})
 
 
 def respond_drive(p, preload) -> dict:
