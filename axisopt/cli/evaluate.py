@@ -17,7 +17,11 @@ def register(sub) -> None:
                    help="stiffness of nut, bearings and screw by every method of the seed paper, or only the "
                         "named ones (e.g. nut:hertz,bearings:palmgren)")
     e.add_argument("--frf", metavar="FILE.png",
-                   help="plot the table's dynamic compliance at stroke start, middle and end (also in --json)")
+                   help="plot the table's dynamic compliance at stroke start, middle and end: motor held (the "
+                        "first frequency's model), motor free and with the tuned servo (also in --json)")
+    e.add_argument("--ss", metavar="FILE.npz",
+                   help="write the linear state-space model (A, B, C, D; motor free and held) at stroke start, "
+                        "middle and end and the tuned servo gains as a numpy .npz")
     e.add_argument("--fail-on-check", action="store_true",
                    help="exit 1 when any check fails (for scripts; default: exit 0 with FAIL in the table)")
     add_html_report(e, "the evaluation")
@@ -36,15 +40,18 @@ def cmd_evaluate(args) -> int:
 
         design = apply_calibration(design, args.calibration)
     ev = evaluate(design)
-    rows = resp = None
+    rows = resp = held = closed = None
     if args.methods:
         from ..model.methods import select_methods, stiffness_methods
 
         rows = select_methods(stiffness_methods(ev), args.methods, design.name)
     if args.frf:
         from ..model.frf import frf
+        from ..report.methods import closed_loop_frf
 
         resp = frf(ev)
+        held = frf(ev, resp["frequency_Hz"], motor_held=True)
+        closed = closed_loop_frf(ev, resp["frequency_Hz"])
     if args.json != "-":
         show(evaluation_table(ev))
         if rows is not None:
@@ -60,7 +67,7 @@ def cmd_evaluate(args) -> int:
         if resp is not None:
             from ..report.methods import frf_dict
 
-            out["frf"] = frf_dict(resp)
+            out["frf"] = frf_dict(resp, held, closed)
         write_json(out, args.json)
     if args.plot:
         plot_profiles([ev], args.plot)
@@ -69,9 +76,18 @@ def cmd_evaluate(args) -> int:
     if args.frf:
         from ..report.methods import plot_frf
 
-        plot_frf(resp, args.frf)
+        plot_frf(resp, args.frf, held, closed)
         if args.json != "-":
             print(f"\nFRF plot written to {args.frf}")
+    if args.ss:
+        from ..model.servo import tune
+        from ..model.statespace import stroke_state_spaces
+        from ..report.servo import write_state_space
+
+        write_state_space(stroke_state_spaces(ev), tune(ev), args.ss,
+                          held=stroke_state_spaces(ev, motor_held=True))
+        if args.json != "-":
+            print(f"\nstate-space model written to {args.ss}")
     if args.report:
         from ..report.html import evaluation_page, write_page
 

@@ -10,7 +10,9 @@ import numpy as np
 
 from ..model import CHECK_LABELS, CHECKS, DRIVE_CHECKS, Evaluation, passes
 from ..model.limits import CHECK_TABLE
+from ..model.servo import servo_response
 from ..units import N_PER_UM
+from .servo import servo_dict, servo_lines
 
 RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
 WIDTH = 100  # terminal columns the text tables fit
@@ -126,6 +128,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "axial_torsional_frequency_Hz": np.asarray(v["f_axial_torsional"]).tolist(),
         "damping_ratio": np.asarray(v["damping_ratio"]).tolist(),
         "assumed_defaults": list(ev.design.assumed),
+        "servo": servo_dict(servo_response(ev), v["kv"]),
     }
 
 
@@ -220,6 +223,7 @@ def evaluation_table(ev: Evaluation) -> str:
                  f"{v['backlash'] * 1e6:.0f} um")
     lines.append("")
     lines.extend(drive_lines(ev))
+    lines.extend(servo_lines(servo_response(ev)))
     lines.extend(check_lines(ev))
     return "\n".join(lines)
 

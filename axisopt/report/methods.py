@@ -56,49 +56,91 @@ def methods_dict(rows) -> dict:
     }
 
 
-def frf_dict(result: dict) -> dict:
-    """JSON-ready dynamic compliance of :func:`axisopt.model.frf.frf` (um/N, deg, Hz)."""
-    return {
+def _curves(result: dict) -> list:
+    return [{
+        "position_mm": float(q["position_mm"]),
+        "modes_Hz": [_num(f) for f in q.get("modes_Hz", ())],
+        "magnitude_um_per_N": [_num(v) for v in q["magnitude_um_per_N"]],
+        "phase_deg": [_num(v) for v in q["phase_deg"]],
+    } for q in result["positions"]]
+
+
+def frf_dict(result: dict, held: dict | None = None, closed: dict | None = None) -> dict:
+    """JSON-ready dynamic compliance of :func:`axisopt.model.frf.frf` (um/N, deg, Hz); with ``held`` (the
+    same with the motor held, the headline first frequency's model) and ``closed`` (the closed-loop
+    compliance at the tool with the tuned servo, :func:`closed_loop_frf`) on the same grid."""
+    out = {
         "motor_held": bool(result["motor_held"]),
         "frequency_Hz": [float(f) for f in result["frequency_Hz"]],
-        "positions": [{
-            "position_mm": float(q["position_mm"]),
-            "modes_Hz": [_num(f) for f in q["modes_Hz"]],
-            "magnitude_um_per_N": [_num(v) for v in q["magnitude_um_per_N"]],
-            "phase_deg": [_num(v) for v in q["phase_deg"]],
-        } for q in result["positions"]],
+        "positions": _curves(result),
     }
+    if held is not None:
+        out["motor_held_positions"] = _curves(held)
+    if closed is not None:
+        out["closed_loop"] = {"kv_per_s": float(closed["kv"]), "positions": _curves(closed)}
+    return out
 
 
-def plot_frf(result: dict, path: str) -> None:
-    """Magnitude (log-log, um/N) and phase of the table compliance, one line per nut position, the modes
-    as dashed vertical lines in the same colour."""
+def closed_loop_frf(ev, freqs) -> dict:
+    """The closed-loop compliance at the tool x_tool / F with the tuned servo (:mod:`axisopt.model.servo`) at
+    stroke start, middle and end, in the layout of :func:`axisopt.model.frf.frf`."""
+    from ..model.frf import frf_positions
+    from ..model.servo import frequency_response, tune
+
+    g = tune(ev)
+    s = ev.x - ev.design.axis.start_offset
+    pos = []
+    for i, h in zip(frf_positions(ev), frequency_response(ev, freqs, g)):
+        pos.append({"index": i, "position_mm": float(s[i] * 1e3), "compliance_m_per_N": h,
+                    "magnitude_um_per_N": np.abs(h) * 1e6, "phase_deg": np.degrees(np.unwrap(np.angle(h))),
+                    "modes_Hz": ()})
+    return {"design": ev.design.name, "kv": g.kv, "frequency_Hz": np.asarray(freqs, float), "positions": pos}
+
+
+def plot_frf(result: dict, path: str, held: dict | None = None, closed: dict | None = None) -> None:
+    """Magnitude (log-log, um/N) and phase of the table compliance, one colour per nut position, the modes
+    as vertical lines in the same colour.  With ``held`` and ``closed``: the motor-held curve (solid, its
+    first mode the headline first frequency), the motor-free one (dashed) and the closed loop with the tuned
+    servo (dotted), each labelled."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     f = np.asarray(result["frequency_Hz"], dtype=float)
-    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6.5 if held is not None else 6), sharex=True)
     names = ("stroke start", "mid-stroke", "stroke end")
-    for j, q in enumerate(result["positions"]):
+    own = "motor held" if result.get("motor_held") else "motor free"
+    sets = [(result, "--" if held is not None else "-", own)]
+    if held is not None:
+        sets.insert(0, (held, "-", "motor held"))
+    if closed is not None:
+        sets.append((closed, ":", f"servo Kv {closed['kv']:.0f}/s"))
+    for j in range(len(result["positions"])):
         color = f"C{j}"
         name = names[j] if j < len(names) and len(result["positions"]) == 3 else "nut"
-        modes = [m for m in q["modes_Hz"] if m is not None and math.isfinite(m)]
-        label = f"{name} {q['position_mm']:.0f} mm (modes " + ", ".join(f"{m:.0f}" for m in modes) + " Hz)"
-        ax1.loglog(f, q["magnitude_um_per_N"], color=color, label=label)
-        ax2.semilogx(f, q["phase_deg"], color=color)
-        for m in modes:
-            if f[0] <= m <= f[-1]:
-                for ax in (ax1, ax2):
-                    ax.axvline(m, color=color, linestyle="--", linewidth=0.8, alpha=0.7)
-    held = "motor held" if result.get("motor_held") else "motor free"
-    ax1.set_title(f"{result.get('design', '')}: table compliance X/F ({held})", fontsize=10)
+        for res, style, what in sets:
+            q = res["positions"][j]
+            modes = [m for m in q.get("modes_Hz", ()) if m is not None and math.isfinite(m)]
+            shown = f" (modes {', '.join(f'{m:.0f}' for m in modes)} Hz)" if modes else ""
+            label = f"{name} {q['position_mm']:.0f} mm, {what}{shown}" if len(sets) > 1 else \
+                f"{name} {q['position_mm']:.0f} mm{shown}"
+            ax1.loglog(f, q["magnitude_um_per_N"], color=color, linestyle=style, label=label,
+                       linewidth=1.0 if style != "-" else 1.4)
+            ax2.semilogx(f, q["phase_deg"], color=color, linestyle=style, linewidth=1.0)
+            if style in ("-", "--") and modes:
+                for m in modes[:1] if style == "-" and len(sets) > 1 else modes:
+                    if f[0] <= m <= f[-1]:
+                        for ax in (ax1, ax2):
+                            ax.axvline(m, color=color, linestyle=style, linewidth=0.7, alpha=0.5)
+    title = "table compliance X/F: motor held (-), free (--), with the servo (:)" if len(sets) > 1 else \
+        f"table compliance X/F ({own})"
+    ax1.set_title(f"{result.get('design', '')}: {title}", fontsize=9)
     ax1.set_ylabel("compliance [um/N]")
     ax2.set_ylabel("phase [deg]")
     ax2.set_xlabel("frequency [Hz]")
     for ax in (ax1, ax2):
         ax.grid(True, which="both", alpha=0.3)
-    ax1.legend(fontsize=8)
+    ax1.legend(fontsize=6 if len(sets) > 1 else 8, ncol=1)
     tidy_layout(fig)
     save_figure(fig, path)
