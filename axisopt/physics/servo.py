@@ -8,7 +8,8 @@ __all__ = ["RULE", "CURRENT_LOOP_HZ", "KV_PER_HZ", "VELOCITY_HZ_PER_KV", "KV_M_M
            "yaskawa_gains", "following_error"]
 
 RULE = "FANUC B-65262EN f_n [Hz] >= Kv [1/s]; Yaskawa Pn100 [Hz] = Pn102 [1/s], Pn101, Pn401"
-CURRENT_LOOP_HZ = 1000.0  # [Hz] current-loop bandwidth (first-order lag), assumed
+CURRENT_LOOP_HZ = 2000.0  # [Hz] current-loop bandwidth (first-order lag), assumed: below the 3.1 kHz speed
+# frequency response Yaskawa quotes for Sigma-7 drives (a current loop is faster than the speed loop)
 KV_PER_HZ = 1.0  # FANUC: position-loop gain [1/s] at most the natural frequency [Hz]
 VELOCITY_HZ_PER_KV = 1.0  # Yaskawa reference values: speed-loop gain [Hz] = position-loop gain [1/s]
 KV_M_MIN_PER_MM = 1000.0 / 60.0  # 1 (m/min)/mm in 1/s
