@@ -117,3 +117,12 @@ def test_tuned_servo_is_stable_on_the_model(ev):
     assert -C[2] @ z0 == pytest.approx(following_error(v, g.kv), rel=1e-6)
     c_g = float(ev.design.guide["damping"]) * ev.design.axis.guide_blocks
     assert -C[0] @ z0 == pytest.approx(following_error(v, g.kv) + c_g * v / ev.at("k_total", i), rel=1e-3)
+
+
+def test_servo_formulas_on_float_numpy_and_casadi():
+    import casadi as ca
+
+    f, v, k = 84.7, 0.4, 84.7
+    assert float(ca.DM(kv_rule(ca.DM(f)))) == pytest.approx(kv_rule(f))
+    np.testing.assert_allclose(kv_rule(np.array([f, 2 * f])), [kv_rule(f), kv_rule(2 * f)])
+    assert float(ca.DM(following_error(ca.DM(v), ca.DM(k)))) == pytest.approx(following_error(v, k))
