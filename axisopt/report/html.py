@@ -247,10 +247,10 @@ def pareto_figure(front):
     """Scatter matrix of the chosen objectives: sampled feasible designs in grey, the front in colour."""
     import plotly.graph_objects as go
 
-    from ..search.pareto import _FIELD
+    from ..search.pareto import FIELD
 
     dims_front = [dict(label=f"{k.replace('_', ' ')} [{u}]" if u else k,
-                       values=[float(getattr(p, _FIELD[k])) for p in front.points])
+                       values=[float(getattr(p, FIELD[k])) for p in front.points])
                   for k, u in zip(front.keys, front.units)]
     fig = go.Figure()
     if front.cloud is not None and len(front.cloud):
