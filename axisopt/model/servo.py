@@ -2,8 +2,8 @@ r"""The servo a design allows: cascade position / velocity loop tuned by vendor 
 
 Structure (semi-closed loop: position and velocity from the motor encoder, the common ball-screw set-up)::
 
-    x_ref -(+)- Kv -> v_cmd -(+)- PI: K_vp (1 + 1/(T_i s)) -> torque filter 1/(T_f s + 1)
-             |-x_m            |-v_m                         -> current loop 1/(T_c s + 1) -> T_m -> axis
+    x_ref -(+)- Kv -> v_cmd -(+)- PI: K_vp (1 + 1/(T_i s)) -> torque filter 1/(T_f s + 1) -> notch
+             |-x_m            |-v_m                -> current loop 1/(T_c s + 1) -> T_m -> axis
 
 with ``x_m = r theta_m`` the motor angle through the lead (r = P_h / 2 pi) and the plant the open-loop
 :class:`axisopt.model.statespace.AxisStateSpace`.  The rule (``RULE``), from vendors' tuning guidance:
@@ -21,7 +21,11 @@ with ``x_m = r theta_m`` the motor angle through the lead (r = P_h / 2 pi) and t
 3. Integral time and torque filter from it (Yaskawa Sigma-7 / Sigma E-S manual, 8.8.1 manual tuning):
    Pn101 [ms] = 4000 / (2 pi Pn100 [Hz]) (its example: 40.0 Hz -> 15.92 ms) and
    Pn401 [ms] = 1000 / (2 pi Pn100 [Hz] 4) ("adjusted value for stable control").
-4. The current loop is a first-order lag of ``CURRENT_LOOP_HZ`` bandwidth (assumed; drives quote 1-3 kHz).
+4. A notch (Q 0.7) on the torque reference at the second drive-train mode (rotor against screw across the
+   coupling), as drives set for a ball screw's torsion resonance; without it that lightly damped mode
+   (0.2 %, steel) goes unstable behind the filter and current-loop lags.
+5. The current loop is a first-order lag of ``CURRENT_LOOP_HZ`` (2 kHz, assumed: Yaskawa quotes a 3.1 kHz
+   speed frequency response for Sigma-7 drives, and a current loop is faster than its speed loop).
 
 Following error at constant speed v without feedforward: e = v / Kv (Heidenhain iTNC 530 technical manual,
 "interrelation of kv factor, feed rate and following error"); Kv in (m/min)/mm = Kv [1/s] * 60 / 1000.
@@ -50,6 +54,7 @@ from .statespace import AxisStateSpace, stroke_state_spaces
 
 __all__ = ["RULE", "CURRENT_LOOP_HZ", "kv_rule", "ServoGains", "yaskawa_gains", "tune", "closed_loop",
            "ServoResult", "servo_response", "KV_M_MIN_PER_MM", "following_error", "frequency_response"]
+
 
 @dataclass(frozen=True)
 class ServoGains:
@@ -89,10 +94,10 @@ def tune(ev: Evaluation, current_loop_hz: float = CURRENT_LOOP_HZ, notch: bool =
     f_v = VELOCITY_HZ_PER_KV * kv
     y = yaskawa_gains(f_v)
     inertia = float(ev["total_inertia"])
-    notch = float(np.min(ev["f_axial_torsional_2"])) if notch else 0.0
+    f_notch = float(np.min(ev["f_axial_torsional_2"])) if notch else 0.0
     return ServoGains(kv=kv, velocity_hz=f_v, kvp=2.0 * math.pi * f_v * inertia, ti=y["Pn101_ms"] * 1e-3,
                       tf=y["Pn401_ms"] * 1e-3, tc=1.0 / (2.0 * math.pi * current_loop_hz), inertia=inertia, f_n=f_n,
-                      notch_hz=notch)
+                      notch_hz=f_notch)
 
 
 CL_INPUTS = ("position_command", "process_force")
@@ -163,7 +168,7 @@ def closed_loop(ss: AxisStateSpace, g: ServoGains, *, position_loop: bool = True
 
 def _response(A, B, C, D, freqs, inp: int, out: int) -> np.ndarray:
     """Complex y_out / u_inp at ``freqs`` [Hz]: modal form C V (s - lambda)^-1 V^-1 B where A diagonalizes
-    well, else one solve per frequency."""
+    well, else one batched solve over the frequencies."""
     s = 2j * math.pi * np.asarray(freqs, dtype=float)
     lam, V = np.linalg.eig(A)
     if np.linalg.cond(V) < 1e8:
@@ -212,7 +217,8 @@ class ServoResult:
     min_damping        : smallest damping ratio of the closed-loop poles [-], per position
     velocity_bandwidth_Hz, position_bandwidth_Hz : -3 dB of the closed velocity / position loop [Hz]
     peak_compliance_um_per_N  : largest closed-loop compliance at the tool over frequency [um/N]
-    following_error_rapid_um, following_error_feed_um : v / Kv at the axis's max and mean speed [um]
+    rapid_speed, feed_speed   : the axis's max and mean speed [m/s]; ``following_error_rapid`` and
+                         ``following_error_feed`` are v / Kv at them [m]
     """
 
     gains: ServoGains
