@@ -57,7 +57,8 @@ def servo_dict(r: ServoResult, kv_profile=None) -> dict:
         "feed_speed_m_per_min": r.feed_speed * 60.0,
         "following_error_rapid_mm": r.following_error_rapid * 1e3,
         "following_error_feed_mm": r.following_error_feed * 1e3,
-        "positions": [{
+        # per stroke position (not under a "positions" key: min_damping is signed, negative when unstable)
+        "closed_loop": [{
             "position_mm": p, "stable": bool(s), "min_damping": _num(z), "velocity_bandwidth_Hz": _num(v),
             "position_bandwidth_Hz": _num(b), "peak_compliance_um_per_N": _num(c),
         } for p, s, z, v, b, c in zip(r.position_mm, r.stable, r.min_damping, r.velocity_bandwidth_Hz,

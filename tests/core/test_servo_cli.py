@@ -27,7 +27,7 @@ def test_evaluate_servo_ss_and_frf(tmp_path, capsys):
     s = out["servo"]
     assert s["kv_per_s"] == pytest.approx(out["min_natural_frequency_Hz"], rel=1e-9)  # f1 = f_axial here
     assert s["following_error_rapid_mm"] == pytest.approx(0.4 / s["kv_per_s"] * 1e3)
-    assert all(p["stable"] for p in s["positions"])
+    assert all(p["stable"] for p in s["closed_loop"])
     assert min(s["kv_profile_per_s"]) == pytest.approx(s["kv_per_s"])
     frf = out["frf"]
     held = frf["motor_held_positions"]
