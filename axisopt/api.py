@@ -77,16 +77,13 @@ def study(spec, out: str | PathLike | None = None, *, workers: int | None = 0, r
     out     : output directory (default ``<study file stem>-results`` as on the command line)
     workers : local worker processes; 0 (the default here) solves in this process, None uses every core
     resume  : continue a run in ``out``
+
+    ``axisopt.study`` is also the package :mod:`axisopt.study`; the package is callable with these
+    arguments, so ``axisopt.study(spec)`` works before and after the package is imported.
     """
-    from pathlib import Path
+    from .study.result import run_spec
 
-    from .study import load_study
-    from .study.result import run
-
-    s = spec if not isinstance(spec, (str, PathLike)) else load_study(spec)
-    if out is None:
-        out = f"{Path(spec).stem if isinstance(spec, (str, PathLike)) else s.name}-results"
-    return run(s, out, workers=workers, resume=resume, scheduler=scheduler)
+    return run_spec(spec, out, workers=workers, resume=resume, scheduler=scheduler)
 
 
 def diagnose(data, design: Design | str | PathLike, *, effects=None, max_effects: int = 2,

@@ -46,6 +46,26 @@ class StudyResult:
         return html_table(df[cols].to_dict("records"), repr(self), columns=cols)
 
 
+def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, scheduler=None,
+             progress=None) -> StudyResult:
+    """Run a study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult`.
+
+    out     : output directory (default ``<study file stem>-results``, as on the command line)
+    workers : local worker processes; 0 (the default here) solves in this process, None uses every core
+    resume  : continue a run in ``out``
+    """
+    from os import PathLike
+    from pathlib import Path
+
+    from .spec import load_study
+
+    path = isinstance(spec, (str, PathLike))
+    study = load_study(spec) if path else spec
+    if out is None:
+        out = f"{Path(spec).stem if path else study.name}-results"
+    return run(study, out, workers=workers, resume=resume, scheduler=scheduler, progress=progress)
+
+
 def run(study: Study, out_dir, *, workers: int | None = 0, resume: bool = False, scheduler=None,
         progress=None) -> StudyResult:
     """Run ``study`` into ``out_dir`` (:func:`axisopt.study.run.run_study`) and return its result."""
@@ -55,4 +75,4 @@ def run(study: Study, out_dir, *, workers: int | None = 0, resume: bool = False,
     return StudyResult(study, str(out_dir), summary)
 
 
-__all__ = ["StudyResult", "run"]
+__all__ = ["StudyResult", "run", "run_spec"]
