@@ -1,5 +1,5 @@
-"""Command line: ``axisopt evaluate | solve | diagnose | compare | study | parts``.  The only package that prints:
-one module per command, shared output helpers in :mod:`.common`.
+"""Command line: ``axisopt evaluate | solve | diagnose | compare | study | parts | schema | init``.  The only
+package that prints: one module per command, shared output helpers in :mod:`.common`.
 
 Exit codes: 0 success (solve: a proven optimum), 1 a proven negative answer (an infeasible problem; a failed
 check with ``evaluate --fail-on-check``), 2 bad input (one line on stderr naming the file and key or line),
@@ -31,10 +31,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _commands():
     """One module per subcommand, each with ``register(sub)``; they import their heavy parts lazily."""
-    from . import compare, diagnose, evaluate, parts, schema, solve, study
+    from . import compare, diagnose, evaluate, init, parts, schema, solve, study
 
     return [evaluate.register, solve.register, diagnose.register, compare.register, study.register,
-            parts.register, schema.register]
+            parts.register, schema.register, init.register]
 
 
 def _show_progress() -> None:
