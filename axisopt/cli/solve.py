@@ -141,6 +141,8 @@ def format_result(res, top: int | None = None) -> str:
          + f", {res.time:.2f} s" + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else "")]
     if res.message:
         L.append(f"  note: {res.message}")
+    if res.infeasibility is not None:
+        L.extend(relax_lines(res.infeasibility))
     L.append("")
     if res.pareto is not None:
         L.append(format_pareto(res.pareto, top))
@@ -209,6 +211,39 @@ def format_result(res, top: int | None = None) -> str:
     from ..report.evaluation import fit_lines
 
     return fit_lines("\n".join(L))
+
+
+def relax_lines(inf) -> list:
+    """The first lines of an infeasible answer: what to relax, by how much, for which closest design."""
+    rel = inf.relax
+    if not rel:
+        return []
+
+    def amount(r):
+        u = f" {r.unit}" if r.unit else ""
+        sign = "+" if r.relaxed_to > r.value else "-"
+        rule = " (below the vendor's rule)" if r.below_vendor_rule else ""
+        return f"{r.key} from {_v(r.value)}{u} to {_v(r.relaxed_to)}{u} ({sign}{_num(100 * r.change)} %){rule}"
+
+    d = rel[0].design
+    who = f"design #{rel[0].design_rank}" + (f" ({d.mounting} {' / '.join(d.parts().values())})" if d else "")
+    if inf.relax_blocked_by:
+        head = (f"  no relaxation of the limits is enough: every closest design breaks a compatibility rule; "
+                f"{who} breaks {', '.join(inf.relax_blocked_by)} and besides needs ")
+    else:
+        head = "  to make it feasible, relax "
+    if len(rel) == 1 and not inf.relax_blocked_by:
+        L = [f"{head}{amount(rel[0])}: {who} then meets every limit"]
+    elif len(rel) == 1:
+        L = [f"{head}{amount(rel[0])}"]
+    else:
+        L = [f"{head}these {len(rel)} limits{' relaxed' if inf.relax_blocked_by else ''} together (smallest "
+             "change first)"
+             + ("" if inf.relax_blocked_by else f"; {who} then meets every limit") + ":"]
+        L += [f"    {amount(r)}" for r in rel]
+    for rank, rules in inf.not_relaxable:
+        L.append(f"  design #{rank} left out: it breaks {', '.join(rules)} (a compatibility rule, not relaxable)")
+    return L
 
 
 def _cand_table(cands, unit) -> str:

@@ -155,17 +155,49 @@ class ParetoFront:
         return html_table([p.row() for p in self.points], repr(self))
 
 
+@dataclass
+class Relaxation:
+    """A limit to relax so that a design becomes feasible (:func:`axisopt.search.relax.rank_relaxations`)."""
+
+    key: str  # where it sits in the problem file, e.g. 'limits.max_cost', 'limits.margins.critical_speed'
+    label: str
+    unit: str  # display unit ('' for a margin)
+    value: float  # the limit now (display units)
+    relaxed_to: float  # the value the design reaches: the limit relaxed to it makes the design meet it
+    change: float  # relative change of the limit (0.25: 25 %)
+    design_rank: int  # the closest design (Infeasibility.closest rank) it frees
+    design: object = field(default=None, repr=False, compare=False)  # that Candidate
+    together: bool = False  # the design needs other limits relaxed too (the other Relaxations)
+    below_vendor_rule: bool = False  # a check's margin relaxed below 1: the vendor's own rule would not hold
+
+    def to_dict(self) -> dict:
+        d = asdict(self)
+        d.pop("design")
+        d["parts"] = self.design.parts() if self.design is not None else None
+        d["mounting"] = self.design.mounting if self.design is not None else None
+        return {k: _clean(v) for k, v in d.items()}
+
+
 @dataclass(repr=False)
 class Infeasibility:
     """Why no combination meets the limits."""
 
     unmeetable: list  # [(limit name, best achievable value, limit value, unit)] met by no combination
     closest: list  # list[Candidate] with .misses filled
+    # what to relax: list[Relaxation], smallest change first, all for one design (search.relax); the closest
+    # designs left out because they break a compatibility rule: [(rank, [rules])]; and when every closest
+    # design breaks one, the rules the proposed design breaks (relaxing the limits is then not enough)
+    relax: list = field(default_factory=list)
+    not_relaxable: list = field(default_factory=list)
+    relax_blocked_by: list = field(default_factory=list)
 
     def to_dict(self) -> dict:
         return {"unmeetable": [{"limit": n, "best_achievable": _clean(b), "limit_value": _clean(v), "unit": u}
                                for n, b, v, u in self.unmeetable],
-                "closest": [c.to_dict() for c in self.closest]}
+                "closest": [c.to_dict() for c in self.closest],
+                "relax": [r.to_dict() for r in self.relax],
+                "not_relaxable": [{"rank": r, "breaks": list(k)} for r, k in self.not_relaxable],
+                "relax_blocked_by": list(self.relax_blocked_by)}
 
     def to_frame(self):
         """pandas DataFrame of the closest designs, with ``miss <limit> [%]`` per missed limit."""
@@ -250,6 +282,10 @@ class SolveResult:
             fields["designs"] = 1 + len(self.runners_up)
         elif self.infeasibility is not None:
             fields["unmeetable"] = ", ".join(n for n, *_ in self.infeasibility.unmeetable) or "none alone"
+            rel = self.infeasibility.relax
+            if rel:
+                shown = [f"{r.key} {'+' if r.relaxed_to > r.value else '-'}{fmt(100 * r.change)} %" for r in rel]
+                fields["relax"] = ", ".join(shown[:3]) + (f" and {len(shown) - 3} more" if len(shown) > 3 else "")
             c = self.infeasibility.closest[0] if self.infeasibility.closest else None
             if c is not None:
                 miss = [f"{k} by {fmt(100 * v)} %" for k, v in c.misses.items()]
