@@ -13,6 +13,7 @@ from functools import cached_property
 from pathlib import Path
 
 from .catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
+from .display import fmt, one_line
 from .errors import InputError
 from .physics import motion
 from .units import DISPLAY_UNITS, unit_factor
@@ -129,6 +130,14 @@ class Design:
 
     def part_ids(self) -> dict:
         return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
+
+    def __repr__(self) -> str:  # the parts are catalog rows: a dataclass repr would print them whole
+        a = self.axis
+        parts = ", ".join(f"{k} {v}" for k, v in self.part_ids().items())
+        return one_line("Design", repr(self.name), {
+            "": f"{a.mounting}, {a.orientation}", "stroke": fmt(a.stroke * 1e3, "mm"),
+            "moving mass": fmt(a.moving_mass, "kg"), "max speed": fmt(a.max_speed * 60, "m/min"),
+            "axial load": fmt(a.axial_load, "N"), "parts": f"{parts} (nut preload {fmt(self.preload, 'N')})"})
 
 
 PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling")

@@ -59,6 +59,7 @@ from types import MappingProxyType
 
 from .catalog import STATUSES, USER_STATUS, Catalog
 from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, MOUNTINGS, NAME_KEY, Axis, catalog_for, read_axis
+from .display import fmt, one_line
 from .errors import InputError
 from .model import CHECKS
 from .model.limits import LIMITS
@@ -176,6 +177,15 @@ class Problem:
 
     def with_objective(self, objective: Objective) -> Problem:
         return replace(self, objective=objective)
+
+    def __repr__(self) -> str:
+        a = self.axis
+        lims = ", ".join(f"{k} {fmt(v / LIMITS[k].factor, LIMITS[k].unit)}" for k, v in self.limits)
+        margins = ", ".join(f"{c} {m:g}" for c, m in self.margins if m != 1.0)
+        return one_line("Problem", repr(self.name), {
+            "objective": self.objective.label, "limits": lims, "margins": margins,
+            "axis": f"{', '.join(self.mountings)}, stroke {fmt(a.stroke * 1e3, 'mm')}, moving mass "
+                    f"{fmt(a.moving_mass, 'kg')}, {fmt(a.max_speed * 60, 'm/min')}"})
 
 
 # ------------------------------------------------------------------------------ the YAML keys (one table)
