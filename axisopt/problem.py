@@ -447,6 +447,8 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
             if slot not in SLOTS:
                 raise s.error(slot, f"unknown part slot '{slot}'; use {', '.join(SLOTS)}")
             ids = s.read(slot, [])
+            if key == "require" and not ids:  # as 'vendors: []': an empty list would allow no part at all
+                raise s.error(slot, "list at least one part id (or leave the slot out)")
             for i in ids:
                 catalog.part(SLOT_TABLE[slot], i, source=s.source, key=s.where(slot))
             out.append((slot, tuple(ids)))

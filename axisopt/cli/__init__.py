@@ -13,7 +13,7 @@ import argparse
 import sys
 
 from ..errors import InputError
-from .common import EXIT_INPUT, EXIT_INTERRUPTED, GuardedStdout, Parser
+from .common import EXIT_INPUT, EXIT_INTERRUPTED, GuardedStdout, Parser, error_line
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -44,7 +44,7 @@ def main(argv=None) -> int:
         args = parser.parse_args(argv)
         code = args.func(args)
     except InputError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        error_line(str(exc))
         code = EXIT_INPUT
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)

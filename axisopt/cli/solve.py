@@ -6,7 +6,18 @@ import math
 import sys
 import textwrap
 
-from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, add_html_report, check_html_report, show, write_json, wrote
+from .common import (
+    EXIT_NEGATIVE,
+    EXIT_OK,
+    EXIT_UNPROVEN,
+    add_html_report,
+    check_html_report,
+    one_line,
+    show,
+    stdout_taken,
+    write_json,
+    wrote,
+)
 
 
 def register(sub) -> None:
@@ -45,7 +56,7 @@ def cmd_solve(args) -> int:
                          where="--save-design")
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
                 sensitivities=not args.no_sensitivity)
-    quiet = args.json == "-"
+    quiet = stdout_taken(args.json)
     text = format_result(res, top=args.top) if not quiet or args.report else ""
     if not quiet:
         show(text)
@@ -101,6 +112,7 @@ def save_designs(res, target: str, top: int, problem_path: str) -> list:
     cands = list(res.pareto.points) if res.pareto is not None else \
         ([res.best] + list(res.runners_up))[:top] if res.best is not None else []
     cands = [c for c in cands if c is not None and c.design is not None]
+    problem_path = one_line(problem_path)  # a comment line: no line break in a file name may inject YAML
     if not cands:
         return []
     single = target.lower().endswith((".yaml", ".yml"))
