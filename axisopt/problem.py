@@ -287,10 +287,14 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
     root = root.declared(PROBLEM_SPEC)
     name = root.read("name", name)
     root.read("description")
-    axis, assumed = read_axis(root.read("axis"))
+    asec = root.read("axis")
+    axis, assumed = read_axis(asec)
     objective = _read_objective(root)
     limits, margins = _read_limits(root.read("limits"))
     restr = _read_restrictions(root.read("catalog"), catalog, axis)
+    if restr.drive and axis.acceleration <= 0 and not axis.duty_cycle:  # as a design with a motor: no default
+        raise asec.error("acceleration", "sizing a motor (the search chooses the drive) needs axis.acceleration "
+                         "> 0 or an axis.duty_cycle: without one the drive would carry no inertia torque")
     pmin, pmax = _read_continuous(root.read("continuous"))
     root.done()
     return Problem(axis=axis, catalog=catalog, objective=objective, limits=limits, margins=margins,

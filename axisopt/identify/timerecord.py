@@ -218,6 +218,14 @@ def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecor
     q = col["position"] * to_q
     ref = col["reference"] * to_q if "reference" in col else None
     effort = col[effort_col] * gscale
+    je = names.index(effort_col) + 1
+    if float(np.ptp(effort)) == 0.0:  # no force signal at all: nothing to fit, no error to divide by
+        raise InputError(f"the {effort_col} column is constant ({data[0, je - 1]:g} throughout): a time record "
+                         "needs the effort of the moving axis", source=src, where=f"column {je} ({effort_col})")
+    if float(np.ptp(q)) == 0.0:
+        jq = names.index("position") + 1
+        raise InputError("the position column is constant: the axis does not move in this record", source=src,
+                         where=f"column {jq} (position)")
     return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note)
 
 
