@@ -115,6 +115,8 @@ def make_output_dir(path):
     """Create an output directory (and its parents); a path that cannot be one is an InputError."""
     if str(path) == "":
         raise InputError("empty output directory name")
+    if str(path) == "-":
+        raise InputError("'-' (standard output) cannot be an output directory; give a directory name")
     d = Path(path)
     if d.exists() and not d.is_dir():
         raise InputError("cannot create output directory: a file of that name is in the way", source=str(d))

@@ -36,12 +36,25 @@ def _commands():
             parts.register, schema.register]
 
 
+def _one_output_on_stdout(args) -> None:
+    """Two outputs on standard output ('--json - --csv -') would interleave into neither format."""
+    from ..fileio import is_stdout
+    from .common import OUTPUT_OPTIONS
+
+    taken = [o for o in OUTPUT_OPTIONS if isinstance(getattr(args, o[2:].replace("-", "_"), None), str)
+             and is_stdout(getattr(args, o[2:].replace("-", "_")))]
+    if len(taken) > 1:
+        both = "both" if len(taken) == 2 else "all"
+        raise InputError(f"{' and '.join(taken)} would {both} write to standard output; give all but one a file name")
+
+
 def main(argv=None) -> int:
     saved = sys.stdout
     out = sys.stdout = GuardedStdout(saved)
     try:
         parser = build_parser()
         args = parser.parse_args(argv)
+        _one_output_on_stdout(args)
         code = args.func(args)
     except InputError as exc:
         error_line(str(exc))

@@ -37,7 +37,7 @@ def cmd_diagnose(args) -> int:
     if args.max_effects < 0:
         raise InputError("--max-effects must not be negative")
     diag = diagnose(datasets, plant_from_design(design), candidates=names, max_effects=args.max_effects)
-    quiet = stdout_taken(args.json)
+    quiet = stdout_taken(args.json, args.save_calibration)
     text = diagnosis_text(diag)
     if not quiet:
         print(text)

@@ -94,6 +94,23 @@ def test_dash_is_stdout_and_nothing_else_is_printed(tmp_path, capsys, monkeypatc
     assert not (tmp_path / "-").exists()
 
 
+def test_save_design_dash_prints_the_design_only(tmp_path, capsys, monkeypatch):
+    import yaml
+
+    monkeypatch.chdir(tmp_path)
+    assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--no-sensitivity", "--save-design", "-"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("# written by axisopt solve") and yaml.safe_load(out)["parts"]
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_two_outputs_on_stdout_and_dash_as_a_directory_are_refused(tmp_path, capsys):
+    assert main(["compare", str(DESIGN), "--csv", "-", "--json", "-"]) == 2
+    assert "standard output" in _one_line_error(capsys)
+    assert main(["study", str(PROBLEMS / "studies" / "teaching_random.yaml"), "--out", "-"]) == 2
+    assert "cannot be an output directory" in _one_line_error(capsys)
+
+
 def test_standard_output_path_is_written_in_place(tmp_path):
     """/dev/stdout (here: a path that is this process's stdout) is stdout, never renamed over."""
     import subprocess
