@@ -50,11 +50,20 @@ class CaseStore:
         return {p.stem for p in self.dir.glob("*.json")}
 
     def write(self, rec: dict) -> None:
+        import os
+        import stat
+
         from ..fileio import write_text_atomic
 
         # no fsync per case: after a power loss an unreadable case file is treated as missing and solved again
         text = json.dumps(rec, indent=1, allow_nan=False, default=_json_default)
-        write_text_atomic(self.dir / f"{rec['case_id']}.json", text, what="case result", fsync=False)
+        path = self.dir / f"{rec['case_id']}.json"
+        try:  # a FIFO or device planted in the study's own cases directory is removed, never written to
+            if not stat.S_ISREG(os.lstat(path).st_mode) and not path.is_dir():
+                path.unlink()
+        except OSError:
+            pass
+        write_text_atomic(path, text, what="case result", fsync=False)
 
     def read(self, case_id: str) -> dict | None:
         """The record of ``case_id``, or None when it is missing, unreadable (not a regular file, too large,
