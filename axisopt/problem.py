@@ -274,10 +274,14 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
     root = root.declared(PROBLEM_SPEC)
     name = root.read("name", name)
     root.read("description")
-    axis, assumed = read_axis(root.read("axis"))
+    asec = root.read("axis")
+    axis, assumed = read_axis(asec)
     objective = _read_objective(root)
     limits, margins = _read_limits(root.read("limits"))
     restr = _read_restrictions(root.read("catalog"), catalog, axis)
+    if restr.drive and axis.acceleration <= 0 and not axis.duty_cycle:  # as a design with a motor: no default
+        raise asec.error("acceleration", "sizing a motor (the search chooses the drive) needs axis.acceleration "
+                         "> 0 or an axis.duty_cycle: without one the drive would carry no inertia torque")
     pmin, pmax = _read_continuous(root.read("continuous"))
     root.done()
     return Problem(axis=axis, catalog=catalog, objective=objective, limits=limits, margins=margins,
@@ -434,6 +438,8 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
             if slot not in SLOTS:
                 raise s.error(slot, f"unknown part slot '{slot}'; use {', '.join(SLOTS)}")
             ids = s.read(slot, [])
+            if key == "require" and not ids:  # as 'vendors: []': an empty list would allow no part at all
+                raise s.error(slot, "list at least one part id (or leave the slot out)")
             for i in ids:
                 catalog.part(SLOT_TABLE[slot], i, source=s.source, key=s.where(slot))
             out.append((slot, tuple(ids)))

@@ -14,7 +14,7 @@ import logging
 import sys
 
 from ..errors import InputError
-from .common import EXIT_INPUT, EXIT_INTERRUPTED, GuardedStdout, Parser
+from .common import EXIT_INPUT, EXIT_INTERRUPTED, GuardedStdout, Parser, error_line
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -47,6 +47,18 @@ def _show_progress() -> None:
         log.setLevel(logging.INFO)
 
 
+def _one_output_on_stdout(args) -> None:
+    """Two outputs on standard output ('--json - --csv -') would interleave into neither format."""
+    from ..fileio import is_stdout
+    from .common import OUTPUT_OPTIONS
+
+    taken = [o for o in OUTPUT_OPTIONS if isinstance(getattr(args, o[2:].replace("-", "_"), None), str)
+             and is_stdout(getattr(args, o[2:].replace("-", "_")))]
+    if len(taken) > 1:
+        both = "both" if len(taken) == 2 else "all"
+        raise InputError(f"{' and '.join(taken)} would {both} write to standard output; give all but one a file name")
+
+
 def main(argv=None) -> int:
     _show_progress()
     saved = sys.stdout
@@ -54,9 +66,10 @@ def main(argv=None) -> int:
     try:
         parser = build_parser()
         args = parser.parse_args(argv)
+        _one_output_on_stdout(args)
         code = args.func(args)
     except InputError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        error_line(str(exc))
         code = EXIT_INPUT
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)

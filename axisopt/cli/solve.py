@@ -6,7 +6,18 @@ import math
 import sys
 import textwrap
 
-from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, add_html_report, check_html_report, show, write_json, wrote
+from .common import (
+    EXIT_NEGATIVE,
+    EXIT_OK,
+    EXIT_UNPROVEN,
+    add_html_report,
+    check_html_report,
+    one_line,
+    show,
+    stdout_taken,
+    write_json,
+    wrote,
+)
 
 
 def register(sub) -> None:
@@ -39,13 +50,12 @@ def cmd_solve(args) -> int:
         raise InputError(f"--time-limit must be positive, got {args.time_limit}")
     check_html_report(args.report)
     problem = load_problem(args.problem)
-    if args.save_design and args.save_design.lower().endswith((".yaml", ".yml")) \
-            and problem.objective.mode == "pareto":
+    if args.save_design and _single_file(args.save_design) and problem.objective.mode == "pareto":
         raise InputError("a Pareto front has several designs: give a directory, not a .yaml file",
                          where="--save-design")
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
                 sensitivities=not args.no_sensitivity)
-    quiet = args.json == "-"
+    quiet = stdout_taken(args.json, args.save_design)
     text = format_result(res, top=args.top) if not quiet or args.report else ""
     if not quiet:
         show(text)
@@ -101,9 +111,10 @@ def save_designs(res, target: str, top: int, problem_path: str) -> list:
     cands = list(res.pareto.points) if res.pareto is not None else \
         ([res.best] + list(res.runners_up))[:top] if res.best is not None else []
     cands = [c for c in cands if c is not None and c.design is not None]
+    problem_path = one_line(problem_path)  # a comment line: no line break in a file name may inject YAML
     if not cands:
         return []
-    single = target.lower().endswith((".yaml", ".yml"))
+    single = _single_file(target)
     out = []
     paths = [Path(target)] if single else [Path(target) / f"{i:0{len(str(len(cands)))}d}.yaml"
                                                  for i in range(1, len(cands) + 1)]
@@ -117,6 +128,13 @@ def save_designs(res, target: str, top: int, problem_path: str) -> list:
         write_text_atomic(str(path), head + design_to_yaml(c.design), what="design YAML")
         out.append(str(path))
     return out
+
+
+def _single_file(target: str) -> bool:
+    """--save-design names one file (.yaml/.yml, or '-' for stdout), not a directory."""
+    from ..fileio import is_stdout
+
+    return target.lower().endswith((".yaml", ".yml")) or is_stdout(target)
 
 
 def exit_code(status: str) -> int:

@@ -299,10 +299,10 @@ def compare_rows(items) -> list:
 def write_compare_csv(items, path) -> None:
     import pandas as pd
 
-    from ..fileio import atomic_file
+    from ..fileio import csv_safe, open_output
 
-    with atomic_file(path, "w", what="CSV") as fh:
-        pd.DataFrame(compare_rows(items)).to_csv(fh, index=False, float_format="%.10g")
+    with open_output(path, "w", what="CSV") as fh:  # text cells escaped against CSV injection
+        csv_safe(pd.DataFrame(compare_rows(items))).to_csv(fh, index=False, float_format="%.10g")
 
 
 __all__ = ["Compared", "Comparison", "compare", "load_compared", "compare_table", "compare_dict", "compare_rows",
