@@ -142,7 +142,7 @@ continuous:
   coupling: RINGFEDER-GWB-AKN-80
   nut_preload: 3500 N
 """,
-        sweep=("axis.axial_load", "[3000 N, 5000 N, 8000 N]", "light, medium and heavy roughing"),
+        sweep=("axis.axial_load", "[3000 N, 5000 N, 6000 N]", "light, medium and heavy roughing"),
     ),
     "gantry": dict(
         title="gantry, long X axis",
@@ -192,7 +192,7 @@ continuous:
   coupling: RINGFEDER-GWB-AKN-300
   nut_preload: 4300 N
 """,
-        sweep=("axis.stroke", "[1500 mm, 2000 mm, 2500 mm]", "machine sizes"),
+        sweep=("axis.stroke", "[1500 mm, 1750 mm, 2000 mm]", "machine sizes"),
     ),
     "vertical": dict(
         title="vertical Z axis (gravity on the screw, holding brake)",
@@ -242,7 +242,7 @@ continuous:
   coupling: RINGFEDER-GWB-AKN-150
   nut_preload: 2850 N
 """,
-        sweep=("limits.max_cost", "[4000 EUR, 6000 EUR, 8000 EUR]", "budgets"),
+        sweep=("limits.max_cost", "[5000 EUR, 6000 EUR, 8000 EUR]", "budgets"),
     ),
 }
 

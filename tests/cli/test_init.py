@@ -43,9 +43,10 @@ def test_study_template_loads_into_cases(machine, tmp_path):
     assert len(study.cases) == 3 and study.name == f"{template('problem', machine).split('name: ')[1].split()[0]}-study"
 
 
-def test_study_template_runs(tmp_path, capsys):
+@pytest.mark.parametrize("machine", MACHINES)
+def test_study_template_runs_every_case_to_a_design(machine, tmp_path, capsys):
     path = tmp_path / "s.yaml"
-    assert main(["init", "study", "--machine", "lathe", "--out", str(path)]) == 0
+    assert main(["init", "study", "--machine", machine, "--out", str(path)]) == 0
     assert main(["study", str(path), "--out", str(tmp_path / "out"), "--workers", "0", "--quiet"]) == 0
     assert "3 cases; 3 solved now" in capsys.readouterr().out
 
