@@ -9,6 +9,7 @@ shipped one; its ids must not collide with the shipped ids.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -236,12 +237,9 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
     schema = SCHEMA[name]
     src = str(path)
     try:
-        if not path.is_file():
-            raise InputError("not a regular file", source=src)
-        if path.stat().st_size > MAX_CATALOG_BYTES:
-            raise InputError(f"catalog file too large ({path.stat().st_size:,} bytes; at most "
-                             f"{MAX_CATALOG_BYTES:,})", source=src)
-        with path.open(newline="", encoding="utf-8-sig") as fh:
+        from .fileio import read_input  # regular files only, at most MAX_CATALOG_BYTES
+
+        with io.StringIO(read_input(path, "catalog", what="catalog", encoding="utf-8-sig"), newline="") as fh:
             reader = csv.reader(fh)
             try:
                 rows = list(reader)

@@ -13,6 +13,7 @@ from functools import cached_property
 from pathlib import Path
 
 from .catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
+from .display import fmt, one_line
 from .errors import InputError
 from .physics import motion
 from .units import DISPLAY_UNITS, unit_factor
@@ -96,6 +97,19 @@ class Axis:
         return motion.cycle_phases(segs)
 
     @property
+    def top_speed(self) -> float:
+        """The highest table speed commanded [m/s]: max_speed, or a duty-cycle move's speed if faster (the
+        reader refuses such a move; kept as the maximum so the speed checks never read a slower value)."""
+        return max([self.max_speed] + [s.speed for s in self.duty_cycle if s.kind == "move" and s.speed])
+
+    @property
+    def top_acceleration(self) -> float:
+        """The highest acceleration commanded [m/s^2]: axis.acceleration or a duty-cycle move's own, if higher
+        (the largest inertia force in the axial load, f_max, is taken at it)."""
+        return max([self.acceleration] + [s.acceleration for s in self.duty_cycle
+                                          if s.kind == "move" and s.acceleration])
+
+    @property
     def mean_speed_eff(self) -> float:
         return self.mean_speed if self.mean_speed is not None else 0.5 * self.max_speed
 
@@ -129,6 +143,14 @@ class Design:
 
     def part_ids(self) -> dict:
         return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
+
+    def __repr__(self) -> str:  # the parts are catalog rows: a dataclass repr would print them whole
+        a = self.axis
+        parts = ", ".join(f"{k} {v}" for k, v in self.part_ids().items())
+        return one_line("Design", repr(self.name), {
+            "": f"{a.mounting}, {a.orientation}", "stroke": fmt(a.stroke * 1e3, "mm"),
+            "moving mass": fmt(a.moving_mass, "kg"), "max speed": fmt(a.max_speed * 60, "m/min"),
+            "axial load": fmt(a.axial_load, "N"), "parts": f"{parts} (nut preload {fmt(self.preload, 'N')})"})
 
 
 PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling")
@@ -278,6 +300,11 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
             if abs(dist) > kw.get("stroke", math.inf) * (1 + 1e-9):
                 raise s.error("move", f"{abs(dist) * 1e3:g} mm is longer than the stroke")
             speed = s.read("speed", kw.get("max_speed"))
+            top = kw.get("max_speed")
+            if top is not None and speed > top * (1 + 1e-9):  # the speed checks are taken at max_speed
+                raise s.error("speed", f"{speed * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min); "
+                              "raise max_speed to the fastest move (critical speed, DN and bearing speed are "
+                              "checked at it)")
             acc = s.read("acceleration", kw.get("acceleration", 0.0))
             if not acc:
                 raise s.error("move", "needs an acceleration (here or in axis.acceleration)")

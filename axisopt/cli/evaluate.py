@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json, wrote
+from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, stdout_taken, write_json, wrote
 
 
 def register(sub) -> None:
@@ -52,7 +52,7 @@ def cmd_evaluate(args) -> int:
         resp = frf(ev)
         held = frf(ev, resp["frequency_Hz"], motor_held=True)
         closed = closed_loop_frf(ev, resp["frequency_Hz"])
-    if args.json != "-":
+    if not stdout_taken(args.json):
         show(evaluation_table(ev))
         if rows is not None:
             from ..report.methods import methods_table
@@ -71,13 +71,13 @@ def cmd_evaluate(args) -> int:
         write_json(out, args.json)
     if args.plot:
         plot_profiles([ev], args.plot)
-        if args.json != "-":
+        if not stdout_taken(args.json):
             print(f"\nplot written to {args.plot}")
     if args.frf:
         from ..report.methods import plot_frf
 
         plot_frf(resp, args.frf, held, closed)
-        if args.json != "-":
+        if not stdout_taken(args.json):
             print(f"\nFRF plot written to {args.frf}")
     if args.ss:
         from ..model.servo import tune
@@ -86,13 +86,13 @@ def cmd_evaluate(args) -> int:
 
         write_state_space(stroke_state_spaces(ev), tune(ev), args.ss,
                           held=stroke_state_spaces(ev, motor_held=True))
-        if args.json != "-":
+        if not stdout_taken(args.json):
             print(f"\nstate-space model written to {args.ss}")
     if args.report:
         from ..report.html import evaluation_page, write_page
 
         write_page(evaluation_page(ev), args.report)
-        wrote(args.report, args.json == "-")
+        wrote(args.report, stdout_taken(args.json))
     if args.fail_on_check:
         from ..report.evaluation import check_rows
 

@@ -119,6 +119,9 @@ def check_report_path(path) -> None:
     """A --report target must end in .html and plotly must be installed (one-line InputError otherwise)."""
     if not str(path).lower().endswith((".html", ".htm")):
         raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
+    from ..fileio import check_output_path
+
+    check_output_path(path, what="HTML report", where="--report")
     require_plotly()
 
 

@@ -97,18 +97,16 @@ def closed_loop_frf(ev, freqs) -> dict:
     return {"design": ev.design.name, "kv": g.kv, "frequency_Hz": np.asarray(freqs, float), "positions": pos}
 
 
-def plot_frf(result: dict, path: str, held: dict | None = None, closed: dict | None = None) -> None:
+def plot_frf(result: dict, path: str | None = None, held: dict | None = None, closed: dict | None = None):
     """Magnitude (log-log, um/N) and phase of the table compliance, one colour per nut position, the modes
     as vertical lines in the same colour.  With ``held`` and ``closed``: the motor-held curve (solid, its
     first mode the headline first frequency), the motor-free one (dashed) and the closed loop with the tuned
-    servo (dotted), each labelled."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    servo (dotted), each labelled.  Returns the matplotlib Figure; written to ``path`` only when given."""
+    from matplotlib.figure import Figure
 
     f = np.asarray(result["frequency_Hz"], dtype=float)
-    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6.5 if held is not None else 6), sharex=True)
+    fig = Figure(figsize=(7, 6.5 if held is not None else 6))
+    ax1, ax2 = fig.subplots(2, 1, sharex=True)
     names = ("stroke start", "mid-stroke", "stroke end")
     own = "motor held" if result.get("motor_held") else "motor free"
     sets = [(result, "--" if held is not None else "-", own)]
@@ -143,4 +141,6 @@ def plot_frf(result: dict, path: str, held: dict | None = None, closed: dict | N
         ax.grid(True, which="both", alpha=0.3)
     ax1.legend(fontsize=6 if len(sets) > 1 else 8, ncol=1)
     tidy_layout(fig)
-    save_figure(fig, path)
+    if path is not None:
+        save_figure(fig, path)
+    return fig

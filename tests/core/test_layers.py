@@ -5,7 +5,7 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
-PKG = Path(__file__).resolve().parents[1] / "axisopt"
+PKG = Path(__file__).resolve().parents[2] / "axisopt"
 
 
 def _package(module: str) -> str:
