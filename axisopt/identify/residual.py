@@ -1,0 +1,155 @@
+"""What a fit leaves unexplained: tests of the final residual for structure against noise, and the structure's
+signature in words (what it looks like, what could cause it, which measurement would separate the causes).
+
+A *probe* is a set of columns G (functions of the recorded factors: position, velocity, direction, time, ...).
+Its share of the residual r is the added-variable statistic of the model-discrepancy reference (sec. 2.1 step
+3): G is first made orthogonal to the fitted model's own columns W, so a probe is never credited with what
+the model can already absorb by refitting, then
+
+.. math:: s = \\|P_{G_\\perp} r\\|^2 / \\|r\\|^2, \\qquad
+          \\chi^2 = n_{eff}\\, s/(1 - s) \\sim \\chi^2_k \\text{ under white noise}
+
+with :math:`n_{eff} = n (1 - \\rho_1)/(1 + \\rho_1)` (lag-1 autocorrelation :math:`\\rho_1` of the residual in
+row order: filtered, decimated rows are not independent).  A probe scanned over a parameter (a period) pays
+for the scan with a Bonferroni factor.  Structure *remains* when a probe holds at least ``MIN_SHARE`` of the
+residual variance at ``log10 p < LOG10_P``.  Numpy only.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+MIN_SHARE = 0.10  # a signature must hold at least this share of the residual variance ...
+LOG10_P = -8.0  # ... at this significance (after the scan's Bonferroni factor)
+
+
+@dataclass
+class Probe:
+    """One structure test of the residual."""
+
+    kind: str  # 'position_periodic' | 'velocity' | 'position' | 'time' | 'acceleration' | 'run'
+    share: float  # share of the residual variance it explains [-]
+    log10_p: float  # significance under white noise (n_eff, Bonferroni for scans)
+    k: int  # columns
+    detail: dict = field(default_factory=dict)  # kind-specific: period, shape, worst level, ...
+
+    @property
+    def significant(self) -> bool:
+        return self.share >= MIN_SHARE and self.log10_p < LOG10_P
+
+
+def orthogonal(G: np.ndarray, W: np.ndarray | None) -> np.ndarray:
+    """G minus its projection on the span of W (column-scaled, rank-safe)."""
+    G = np.asarray(G, dtype=float)
+    if G.ndim == 1:
+        G = G[:, None]
+    if W is None or W.size == 0:
+        return G - G.mean(axis=0)
+    sc = np.linalg.norm(W, axis=0)
+    sc[sc == 0] = 1.0
+    coef, *_ = np.linalg.lstsq(W / sc, G, rcond=None)
+    return G - (W / sc) @ coef
+
+
+def share(r: np.ndarray, G: np.ndarray, W: np.ndarray | None = None) -> float:
+    """Share of ``r``'s sum of squares explained by the columns of ``G`` made orthogonal to ``W``."""
+    Go = orthogonal(G, W)
+    sc = np.linalg.norm(Go, axis=0)
+    ok = sc > 1e-9 * (np.max(sc) if len(sc) else 1.0)
+    if not ok.any():
+        return 0.0
+    Go = Go[:, ok] / sc[ok]
+    coef, *_ = np.linalg.lstsq(Go, r, rcond=None)
+    fit = Go @ coef
+    rr = float(r @ r)
+    return float(fit @ fit) / rr if rr > 0 else 0.0
+
+
+def lag1(r: np.ndarray, breaks: np.ndarray | None = None) -> float:
+    """Lag-1 autocorrelation of ``r`` in row order; pairs across ``breaks`` (True where row i+1 does not
+    follow row i) are left out."""
+    a, b = r[:-1], r[1:]
+    if breaks is not None:
+        a, b = a[~breaks], b[~breaks]
+    d = math.sqrt(float(a @ a) * float(b @ b))
+    return float(a @ b) / d if d > 0 else 0.0
+
+
+def n_effective(n: int, rho: float) -> float:
+    rho = min(max(rho, 0.0), 0.95)
+    return n * (1.0 - rho) / (1.0 + rho)
+
+
+def log10_p_chi2(x: float, k: int) -> float:
+    """log10 of the upper tail of chi^2_k at x (Wilson-Hilferty normal approximation; tails below 1e-300
+    are extended with the normal's asymptote)."""
+    if x <= 0:
+        return 0.0
+    z = ((x / k) ** (1.0 / 3.0) - (1.0 - 2.0 / (9.0 * k))) / math.sqrt(2.0 / (9.0 * k))
+    if z < 30:
+        return math.log10(max(0.5 * math.erfc(z / math.sqrt(2.0)), 1e-300))
+    return (-0.5 * z * z - math.log(z * math.sqrt(2.0 * math.pi))) / math.log(10.0)
+
+
+def probe(kind: str, r: np.ndarray, G: np.ndarray, W: np.ndarray | None, n_eff: float, scans: int = 1,
+          **detail) -> Probe:
+    G = np.asarray(G, dtype=float)
+    k = 1 if G.ndim == 1 else G.shape[1]
+    s = share(r, G, W)
+    chi = n_eff * s / max(1.0 - s, 1e-12)
+    lp = log10_p_chi2(chi, k) + math.log10(max(scans, 1))
+    return Probe(kind, s, min(lp, 0.0), k, dict(detail))
+
+
+def period_scan(r: np.ndarray, q: np.ndarray, sgn: np.ndarray, columns, p_min: float, p_max: float,
+                W: np.ndarray | None, n_eff: float, fixed=()) -> Probe:
+    """Spectrum of the residual over position.  A coarse scan on a uniform grid of spatial frequency
+    (spacing a quarter of 1/span, so no peak falls between grid points) with the plain columns
+    sin, cos, sgn(v) sin, sgn(v) cos of 2 pi q/P at the rows ``q``, ``sgn``; then the three best periods, refined
+    on a local grid, and the periods named in advance (``fixed``: the lead and its harmonics, no scan
+    factor) are scored with ``columns(P)`` (the same columns computed as the regression's: filtered and
+    decimated) against the model's columns W.  Returns the best as a 'position_periodic' probe with detail
+    ``period`` and ``friction_share`` (the share of the periodic part that follows the direction)."""
+    span = float(np.ptp(q)) or 1.0
+    df = 0.25 / span
+    freqs = np.arange(1.0 / p_max, 1.0 / p_min + df, df)
+    rc = r - r.mean()
+    scores = np.zeros(len(freqs))
+    for i0 in range(0, len(freqs), 64):  # share of the four plain columns, 64 frequencies at a time
+        f = freqs[i0 : i0 + 64]
+        ph = 2.0 * np.pi * np.outer(f, q)
+        sn, cs = np.sin(ph), np.cos(ph)
+        G = np.stack([sn, cs, sn * sgn, cs * sgn], axis=2)  # (nf, n, 4)
+        A = np.einsum("fni,fnj->fij", G, G) + 1e-9 * np.eye(4)
+        b = np.einsum("fni,n->fi", G, rc)
+        scores[i0 : i0 + 64] = np.einsum("fi,fi->f", b, np.linalg.solve(A, b[..., None])[..., 0])
+    scans = len(freqs)
+    tops = []
+    for k in np.argsort(-scores):
+        if all(abs(freqs[k] - freqs[t]) > 2 * df for t in tops):
+            tops.append(int(k))
+        if len(tops) == 3:
+            break
+    trial = [(float(P), 1) for P in fixed if p_min <= P <= p_max]
+    for k in tops:
+        trial += [(1.0 / f, scans) for f in freqs[k] + df * np.linspace(-0.5, 0.5, 5) if f > 0]
+    best = None
+    for P, sc in trial:
+        G = columns(P)
+        pr = probe("position_periodic", r, G, W, n_eff, scans=sc, period=float(P))
+        if best is None or pr.log10_p < best[0].log10_p:
+            best = (pr, G)
+    pr, G = best
+    s_force = share(r, G[:, :2], W)  # the columns without sgn(v): a force the same both ways
+    pr.detail["friction_share"] = max(0.0, 1.0 - s_force / pr.share) if pr.share > 0 else 0.0
+    return pr
+
+
+def best_shape(r: np.ndarray, shapes: dict, W: np.ndarray | None) -> tuple:
+    """The single column of ``shapes`` (name -> column) that explains most of ``r`` (after W): (name, share)."""
+    scores = {nm: share(r, g, W) for nm, g in shapes.items()}
+    nm = max(scores, key=scores.get)
+    return nm, scores[nm]
