@@ -595,7 +595,7 @@ def _legendre(x, deg):
     return [np.polynomial.legendre.Legendre.basis(j)(x) for j in range(1, deg + 1)]
 
 
-def analyse_residual(runs: list, est: Estimate) -> Unexplained:
+def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
     """Test the residual of ``est`` on ``runs`` (estimation first) for structure: over position (a period
     scan, the lead and its harmonics named in advance), velocity, position along the stroke, time within a
     run, between runs and acceleration; see :mod:`.residual`."""
@@ -610,7 +610,7 @@ def analyse_residual(runs: list, est: Estimate) -> Unexplained:
     neff = rs.n_effective(len(r), rho)
     vmax = max(float(np.max(np.abs(rw.sig["v"][rw.keep]))) for rw in runs)
     probes = []
-    if proc.lead_q > 0:
+    if proc.lead_q > 0 and (kinds is None or "position_periodic" in kinds):
         def periodic(P):
             def cols(rw):
                 ph = 2.0 * np.pi * rw.sig["q"] / P
@@ -622,6 +622,8 @@ def analyse_residual(runs: list, est: Estimate) -> Unexplained:
         hi = max(float(np.ptp(q_rows)) / 3.0, proc.lead_q)
         probes.append(rs.period_scan(r, q_rows, s_rows, periodic, proc.lead_q / 4.0, hi, W, neff,
                                      fixed=[proc.lead_q / k for k in RIPPLE_HARMONICS]))
+    if kinds is not None:
+        return Unexplained(probes, float(np.sqrt(np.mean(r**2))), 0.0, rho, len(r))
 
     def vel_cols(rw):
         v = rw.sig["v"]
@@ -677,6 +679,16 @@ def analyse_residual(runs: list, est: Estimate) -> Unexplained:
     probes.sort(key=lambda p: p.log10_p)
     noise = math.sqrt(sum(noise_floor(rw) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs))
     return Unexplained(probes, float(np.sqrt(np.mean(r**2))), noise, rho, len(r))
+
+
+def _periodic_peak(rows: Rows, est: Estimate):
+    """(period, share) when the residual of ``est`` is mostly periodic in position (a significant probe holding
+    at least half of it), else None: a spectral peak that moves with speed is a ripple, not a mode."""
+    if rows.proc.lead_q <= 0:
+        return None
+    u = analyse_residual([rows], est, kinds=("position_periodic",))
+    p = u.probes[0] if u.probes else None
+    return (p.detail["period"], p.share) if p is not None and p.significant and p.share >= 0.5 else None
 
 
 def implausible(cand_terms, est: Estimate, base: Estimate) -> str:
@@ -748,6 +760,10 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
         e = EFFECTS[nm]
         if nm == "extra_mode" and peak[1] < PEAK_RATIO:
             skipped[nm] = f"no residual spectral peak (at most {peak[1]:.1f}x the median, {peak[0]:.0f} Hz)"
+        elif nm == "extra_mode" and (per := _periodic_peak(est_rows, base_ls)) is not None:
+            skipped[nm] = (f"the residual's spectral peak ({peak[0]:.0f} Hz) follows the position: periodic over "
+                           f"{per[0] * UNITS[est.quantity]['position'][1]:.3g} {UNITS[est.quantity]['position'][0]}, "
+                           f"{100 * per[1]:.0f} % of the residual (a ripple, not a resonance)")
         elif nm == "position_friction" and span < 0.1 * stroke_q:
             skipped[nm] = "the record covers less than 10 % of the stroke"
         elif nm == "lead_ripple" and not (lead_q > 0 and span >= 2.0 * lead_q):
@@ -777,12 +793,13 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
         for c in scored:  # the best candidate by dBIC that is physical and predicts held-out data better
             why = implausible(c.effect.terms, c.estimate, base_ls)
             if why:
-                c.reason = f"would need {why}"
                 rejected.append((len(rounds), c, why))
-            elif c.dbic >= ACCEPT_DBIC:
+            if c.dbic >= ACCEPT_DBIC:  # the first criterion it fails is its reason
                 c.reason = f"dBIC {c.dbic:.1f} not below {ACCEPT_DBIC:g}"
             elif c.gain < MIN_GAIN:
                 c.reason = f"held-out gain {c.gain:.1f} % below {MIN_GAIN:g} %"
+            elif why:
+                c.reason = f"would need {why}"
             elif top is None:
                 top = c
         if top is not None:
@@ -853,12 +870,12 @@ def _best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, r
             gain = 100.0 * (1.0 - ho / cur_ho) if cur_ho > 0 else 0.0
             why = implausible(a.effect.terms + b.effect.terms, fit, base_ls)
             alone = max(a.gain, b.gain)
-            if why:
-                reason = f"would need {why}"
-            elif dbic >= ACCEPT_DBIC:
+            if dbic >= ACCEPT_DBIC:
                 reason = f"dBIC {dbic:.1f} not below {ACCEPT_DBIC:g}"
             elif gain < MIN_GAIN:
                 reason = f"held-out gain {gain:.1f} % below {MIN_GAIN:g} %"
+            elif why:
+                reason = f"would need {why}"
             elif gain - alone < MIN_GAIN:
                 reason = f"held-out gain {gain:.1f} % is not {MIN_GAIN:g} % above the better member alone " \
                          f"({alone:.1f} %)"
@@ -902,7 +919,7 @@ def baseline_flags(est: Estimate, quantity: str) -> list:
                 out.append(f"{name} is not identifiable from this record: its uncertainty is "
                            f"{'undefined' if not math.isfinite(sd) else 'zero'} (a degenerate column)")
             elif t in ("M", "Fv", "Fc") and sd >= abs(v):
-                out.append(f"{name} = {v * f:.3g} ± {sd * f:.2g} {u} is not identifiable from this record "
+                out.append(f"{name} = {v * f:.3g} ± {sd * f:.3g} {u} is not identifiable from this record "
                            "(the uncertainty exceeds the value)")
     return out
 
@@ -1026,9 +1043,16 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         for cnd in rnd:
             if cnd.reason:
                 L += _wrap(f"{k}  {cnd.effect.name:<20} not accepted: {cnd.reason}", cont=" " * 26)
+    rest = 0
     for k, a, b, _est, dbic, gain, why in diag.pairs:
+        if why and (dbic >= ACCEPT_DBIC or gain < MIN_GAIN):
+            rest += 1
+            continue
         L += _wrap(f"{k}  pair {a.effect.name} + {b.effect.name}: dBIC {dbic:.1f}, gain {gain:.1f} %: "
                    + (f"not accepted: {why}" if why else "accepted (neither passes alone)"), cont=" " * 26)
+    if rest:
+        L += _wrap(f"-  {rest} pair{'s' if rest > 1 else ''} of these candidates tried together: none lowers BIC "
+                   f"by {-ACCEPT_DBIC:g} and predicts the held-out data {MIN_GAIN:g} % better", cont=" " * 26)
     L.append("")
     if diag.accepted:
         parts = []
@@ -1057,8 +1081,8 @@ def _why_none(diag: TimeDiagnosis) -> str:
     if not diag.rounds:
         return "no candidate effect applies to this record"
     best = diag.rounds[0][:3]
-    out = [f"{c.effect.name} " + (f"(dBIC {c.dbic:.1f}, gain {c.gain:.1f} %) {c.reason}"
-                                  if c.reason.startswith("would need") else c.reason) for c in best]
+    out = [f"{c.effect.name}: " + (f"dBIC {c.dbic:.1f} and gain {c.gain:.1f} %, but {c.reason}"
+                                   if c.reason.startswith("would need") else c.reason) for c in best]
     return "; ".join(out)
 
 
