@@ -18,7 +18,7 @@ from .measure import Y_UNIT
 def _pv(p, v, s):
     unit = "" if p.unit in ("", "-") else f" {p.unit}"
     sd = f" ± {p.show(s):.3g}" if math.isfinite(s) else ""
-    return f"{p.show(v):.4g}{sd}{unit}"
+    return f"{p.show(v):.4g}{sd}{unit}" + ("" if math.isfinite(s) else " (not identifiable from these data)")
 
 
 def _params(res, names=None):
@@ -28,7 +28,7 @@ def _params(res, names=None):
             "name": p.name,
             "label": p.label,
             "value": p.show(v),
-            "sigma": p.show(sig[p.name]),
+            "sigma": p.show(sig[p.name]) if math.isfinite(sig[p.name]) else None,
             "unit": p.unit,
             "text": _pv(p, v, sig[p.name]),
         }
@@ -93,13 +93,14 @@ def diagnosis_dict(diag) -> dict:
         "holdout_rmse_final": diag.cv_final,
         "gain_percent": diag.gain,
         "holdout_rmse_units": [
-            {"file": o.dataset.source, "baseline": b, "final": a, "unit": u}
-            for (o, b, u), (_, a, _) in zip(
-                _rmse_units(diag, diag.holdout_baseline), _rmse_units(diag, diag.holdout_final)
+            {"file": o.dataset.source, "baseline": b, "final": a, "unit": u, "gain_percent": g}
+            for (o, b, u), (_, a, _), g in zip(
+                _rmse_units(diag, diag.holdout_baseline), _rmse_units(diag, diag.holdout_final),
+                _file_gains(diag)
             )
         ],
         "final": {"parameters": _params(diag.final), "status": diag.final.status,
-                  "plausibility": plausibility(diag.final, [])},
+                  "plausibility": plausibility(diag.final, []) + unidentifiable(diag.final)},
         "rejected": [
             {"round": rnd, "effect": c.effect.name, "dBIC": c.dbic, "would_need": bad,
              "parameters": _params(c.fit, c.names)}
@@ -124,7 +125,8 @@ def diagnosis_dict(diag) -> dict:
                 "cv_rmse_before": a.cv_before,
                 "cv_rmse_after": a.cv_after,
                 "gain_percent": a.gain,
-                "plausibility": plausibility(diag.final, [], names=names) + _undetermined(diag.final, names),
+                "plausibility": plausibility(diag.final, [], names=names) + _undetermined(diag.final, names)
+                + unidentifiable(diag.final, names),
                 "runner_up": None
                 if r is None
                 else {"effect": r.effect.name, "dBIC": r.dbic, "margin": r.dbic - a.dbic},
@@ -133,8 +135,26 @@ def diagnosis_dict(diag) -> dict:
     return d
 
 
+def _file_gains(diag) -> list:
+    """Held-out gain of each file [%]: the noise-weighted held-out RMSE of its own rows, baseline against final
+    (the pooled gain weighs every file together)."""
+    out = []
+    for o, pb, pf in zip(diag.obs, _split(diag.obs, diag.holdout_baseline), _split(diag.obs, diag.holdout_final)):
+        rb = float(np.sqrt(np.mean(((pb - o.y) * o.w) ** 2)))
+        rf = float(np.sqrt(np.mean(((pf - o.y) * o.w) ** 2)))
+        out.append(100.0 * (1.0 - rf / rb) if rb > 0 else 0.0)
+    return out
+
+
 def _flags(res):
-    return plausibility(res, [])
+    return plausibility(res, []) + unidentifiable(res)
+
+
+def unidentifiable(res, names=None) -> list:
+    """Parameters the data do not fix (infinite variance: a zero or dependent Jacobian column)."""
+    return [f"{p.name} is not identifiable from these data: the fit does not change with it (it is reported "
+            "at the value the search stopped at, without an uncertainty)"
+            for p, s in zip(res.params, res.sigma) if not math.isfinite(s) and (names is None or p.name in names)]
 
 
 def _undetermined(res, names) -> list:
@@ -348,7 +368,7 @@ def diagnosis_text(diag) -> str:
     for h in d["holdout_rmse_units"]:
         L.append(
             f"held-out RMSE {Path(h['file']).name}: {h['baseline']:.3g} -> {h['final']:.3g} {h['unit']} "
-            f"(gain {d['gain_percent']:.0f} %)"
+            f"(gain {h['gain_percent']:.0f} %)"
             + (f"; {h['baseline'] * torque:.3g} -> {h['final'] * torque:.3g} N.m at the screw"
                if torque is not None and h["unit"] == "N" else "")
         )
@@ -436,9 +456,10 @@ def write_report(diag, outdir) -> Path:
                 + " |"
             )
         md.append("")
-    md += ["## Gain", "", "| data | held-out RMSE before | after |", "|---|---|---|"]
+    md += ["## Gain", "", "| data | held-out RMSE before | after | gain |", "|---|---|---|---|"]
     md += [
-        f"| {Path(h['file']).name} | {h['baseline']:.4g} {h['unit']} | {h['final']:.4g} {h['unit']} |"
+        f"| {Path(h['file']).name} | {h['baseline']:.4g} {h['unit']} | {h['final']:.4g} {h['unit']} | "
+        f"{h['gain_percent']:.0f} % |"
         for h in d["holdout_rmse_units"]
     ]
     md += [
