@@ -153,3 +153,65 @@ def best_shape(r: np.ndarray, shapes: dict, W: np.ndarray | None) -> tuple:
     scores = {nm: share(r, g, W) for nm, g in shapes.items()}
     nm = max(scores, key=scores.get)
     return nm, scores[nm]
+
+
+# ------------------------------------------------------------------------------------ reduced tables
+# factor of a test table -> (what the residual does, candidate causes, the measurement that separates them)
+FACTOR_WORDS = {
+    "position": ("varies with position",
+                 "a support or chain compliance that changes along the screw, guide misalignment, screw straightness",
+                 "repeat at more positions, and at one position with the load reversed"),
+    "force": ("varies with the load",
+              "a contact stiffness (Hertz) or nut lift-off the model does not hold, a load-dependent friction",
+              "vary the load in small steps at one position, both directions"),
+    "direction": ("differs with the direction",
+                  "lost motion (backlash) or friction hysteresis, a direction-dependent friction",
+                  "measure the reversal at several positions and with different lubrication or speed"),
+    "cycle": ("changes from cycle to cycle", "wear or run-in, warm-up, a loosening joint",
+              "repeat the test cold and warm and after a rest"),
+    "time": ("drifts with time", "warm-up (thermal expansion, lubricant viscosity), creep",
+             "repeat the test cold and warm, with a temperature sensor on the nut"),
+    "temperature": ("follows the temperature", "thermal expansion or lubricant viscosity",
+                    "hold the temperature and repeat, or vary it on purpose"),
+    "normal_load": ("grows with the guide load", "guide friction mu N, seals pressed harder",
+                    "vary the normal load independently of the axial load"),
+    "axial_load": ("grows with the axial load", "nut friction with load (efficiency), bearing friction",
+                   "vary the axial load at one speed"),
+    "mode": ("differs by mode", "a mode shape or mass the model lacks", "measure the mode shapes"),
+    "frequency": ("depends on frequency", "a mode or damping the model lacks",
+                  "a finer frequency sweep around the misfit, at several positions"),
+}
+VELOCITY_WORDS = {
+    "v|v|": ("grows with v|v|", "quadratic drag, e.g. seals or lubricant churning",
+             "a friction curve at constant speeds up to the maximum in both directions, repeated warm"),
+    "v": ("grows in proportion to speed", "viscous friction other than the catalog's",
+          "a friction curve over the whole speed range"),
+    "low_speed": ("rises at low speed", "a Stribeck rise, breakaway",
+                  "many constant speeds below 10 mm/s in both directions"),
+    "|v|": ("differs by direction, growing with speed", "viscous friction differing by direction (a seal lip)",
+            "constant-speed runs at several speeds in both directions"),
+    "sgn": ("differs by direction by a constant", "a gravity or cable-chain force, a Coulomb asymmetry",
+            "runs in both directions at several speeds and loads"),
+}
+
+
+def factor_probe(name: str, r: np.ndarray, values: np.ndarray, max_bins: int = 6) -> Probe:
+    """Share of ``r`` (noise-weighted residual of a table) held by the levels of one recorded factor (at most
+    ``max_bins`` quantile bins), with its significance (rows independent) and the worst level."""
+    values = np.asarray(values, dtype=float)
+    levels = np.unique(values)
+    if len(levels) > max_bins:
+        edges = np.quantile(values, np.linspace(0, 1, max_bins + 1)[1:-1])
+        idx = np.searchsorted(edges, values, side="right")
+    else:
+        idx = np.searchsorted(levels, values)
+    groups = np.unique(idx)
+    G = np.column_stack([(idx == g).astype(float) for g in groups[1:]]) if len(groups) > 1 else np.zeros((len(r), 0))
+    if G.shape[1] == 0:
+        return Probe(name, 0.0, 0.0, 0, {"factor": name})
+    pr = probe(name, r, G, None, float(len(r)))
+    means = [abs(float(np.mean(r[idx == g]))) for g in groups]
+    g = groups[int(np.argmax(means))]
+    sel = values[idx == g]
+    pr.detail.update(factor=name, worst=(float(sel.min()), float(sel.max())))
+    return pr
