@@ -265,7 +265,7 @@ def _fit_effects(ctx, effects, base, theta_prev, prev_names):
     return prob, best
 
 
-def diagnose(datasets, plant, *, candidates=None, max_effects: int = 2) -> Diagnosis:
+def diagnose(datasets, plant, *, candidates=None, max_effects: int = 3) -> Diagnosis:
     """Diagnose measured ``datasets`` (list of :class:`~.data.Dataset`) against ``plant``."""
     for ds in datasets:
         _check_positions(ds, plant)
@@ -378,7 +378,7 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 2) -> Diagn
         owner,
         rejected,
         pairs,
-        table_unexplained(obs, _split(obs, cur_fit.residual)),
+        table_unexplained(obs, _split(obs, cur_fit.residual), effects),
     )
 
 
@@ -449,7 +449,7 @@ class TableUnexplained:
 UNEXPLAINED_RMS = 1.5  # a noise-weighted residual RMS below this is at the noise floor, whatever its pattern
 
 
-def table_unexplained(obs, resid_w) -> list:
+def table_unexplained(obs, resid_w, effects=()) -> list:
     """Test the final residual of every test for structure along its recorded factors (see
     :mod:`.residual`): the share of the residual variance each factor's levels hold, its significance; for
     friction data the velocity dependence's shape (v|v|, v, low-speed rise, direction)."""
@@ -458,17 +458,25 @@ def table_unexplained(obs, resid_w) -> list:
     out = []
     for o, r in zip(obs, resid_w):
         r = np.asarray(r, dtype=float)
-        probes = [rs.factor_probe(name, r, vals) for name, vals in o.factors.items() if len(np.unique(vals)) > 1]
+        probes = [rs.factor_probe(name, r, vals, max_bins=8 if name == "velocity" else 6)
+                  for name, vals in o.factors.items() if len(np.unique(vals)) > 1]
         if o.kind == "friction":
             v = o.feature("velocity")
             vs = float(np.quantile(np.abs(v), 0.25)) or 1e-3
             shapes = {"v|v|": v * np.abs(v), "v": v, "low_speed": np.sign(v) * np.exp(-np.abs(v) / vs)}
             if np.ptp(np.sign(v)) > 0:
                 shapes.update({"|v|": np.abs(v), "sgn": np.sign(v)})
+            # the shapes are compared after what the model already fits along velocity: its Coulomb level, and
+            # its viscous slope when the viscous effect is in the model
+            W = np.column_stack([np.sign(v), v] if "viscous" in [e.name for e in effects] else [np.sign(v)])
+            if "viscous" in [e.name for e in effects]:
+                shapes.pop("v")
             for pr in probes:
                 if pr.kind == "velocity":
-                    nm, sh = rs.best_shape(r, shapes, None)
-                    pr.detail.update(shape=nm, shape_share=sh / pr.share if pr.share > 0 else 0.0)
+                    nm, sh = rs.best_shape(r, shapes, W)
+                    # one smooth column can hold more than the level means do (bins average it out)
+                    pr.detail.update(shape=nm, shape_share=min(sh / pr.share, 1.0) if pr.share > 0 else 0.0)
+                    pr.share = max(pr.share, sh)
         out.append(TableUnexplained(o.kind, str(o.dataset.source), float(np.sqrt(np.mean(r**2))), probes))
     return out
 

@@ -734,7 +734,7 @@ def _fit_candidate(est_rows, terms, effect, shape):
     return least_squares(est_rows, terms, shape), shape
 
 
-def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effects: int = 2,
+def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effects: int = 3,
                   design: dict | None = None, lead_q: float = 0.0) -> TimeDiagnosis:
     """Identify the estimation record ``records[0]`` (LS and IV), select effects, validate on the rest."""
     import time
@@ -1275,7 +1275,7 @@ def _unexplained_dict(diag: TimeDiagnosis) -> dict | None:
 
 
 def diagnose_time_files(paths, *, plant, gain: str | None = None, candidates=None,
-                        max_effects: int = 2) -> TimeDiagnosis:
+                        max_effects: int = 3) -> TimeDiagnosis:
     """Read the records (the first the estimation run, the others validation runs) and diagnose them against
     ``plant`` (:class:`.plant.Plant`: lead, efficiency and stroke are used)."""
     from .timerecord import check_same_columns, read_time_record

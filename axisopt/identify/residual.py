@@ -196,8 +196,9 @@ VELOCITY_WORDS = {
 
 
 def factor_probe(name: str, r: np.ndarray, values: np.ndarray, max_bins: int = 6) -> Probe:
-    """Share of ``r`` (noise-weighted residual of a table) held by the levels of one recorded factor (at most
-    ``max_bins`` quantile bins), with its significance (rows independent) and the worst level."""
+    """Share of ``r`` (noise-weighted residual of a table: unit variance at the noise floor) held by the levels
+    of one recorded factor (at most ``max_bins`` quantile bins) and the worst level.  Significance: with the
+    noise known, :math:`\\chi^2 = \\sum_i n_i (\\bar r_i - \\bar r)^2 \\sim \\chi^2_{k-1}` over the k levels."""
     values = np.asarray(values, dtype=float)
     levels = np.unique(values)
     if len(levels) > max_bins:
@@ -209,7 +210,10 @@ def factor_probe(name: str, r: np.ndarray, values: np.ndarray, max_bins: int = 6
     G = np.column_stack([(idx == g).astype(float) for g in groups[1:]]) if len(groups) > 1 else np.zeros((len(r), 0))
     if G.shape[1] == 0:
         return Probe(name, 0.0, 0.0, 0, {"factor": name})
-    pr = probe(name, r, G, None, float(len(r)))
+    s = share(r, G, None)
+    mu = float(np.mean(r))
+    chi = sum(float(np.sum(idx == g)) * (float(np.mean(r[idx == g])) - mu) ** 2 for g in groups)
+    pr = Probe(name, s, min(log10_p_chi2(chi, len(groups) - 1), 0.0), len(groups) - 1, {})
     means = [abs(float(np.mean(r[idx == g]))) for g in groups]
     g = groups[int(np.argmax(means))]
     sel = values[idx == g]
