@@ -342,7 +342,7 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 3) -> Diagn
             effects += [a_.effect, b_.effect]
             plaus = plausibility(p_fit, effects)
             for c, other in ((a_, b_), (b_, a_)):
-                c.reason = ""
+                c.reason = f"alone: {c.reason}; accepted together with {other.effect.name}"
                 accepted.append(Accepted(c.effect, p_fit, pair["dbic"], cur_cv, p_cv, None, plaus,
                                          together=other.effect.name))
             cur_fit, cur_cv, cur_ho = p_fit, p_cv, p_ho

@@ -820,7 +820,7 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
             break
         a_, b_, fit = pair[1], pair[2], pair[3]
         for c, other in ((a_, b_), (b_, a_)):
-            c.reason, c.together = "", other.effect.name
+            c.reason, c.together = f"alone: {c.reason}; accepted together with {other.effect.name}", other.effect.name
         accepted += [a_, b_]
         terms += list(a_.effect.terms) + list(b_.effect.terms)
         shape = dict(fit.shape)
