@@ -318,10 +318,11 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 3) -> Diagn
             if top is not None:
                 c.reason = f"{top.effect.name} was accepted first (dBIC {top.dbic:.1f})"
                 continue
-            if c.dbic >= ACCEPT_DBIC:
-                c.reason = f"dBIC {c.dbic:.1f} not below {ACCEPT_DBIC:g}"
-                continue
             bad = plausibility(c.fit, effects + [c.effect], names=c.names)
+            if c.dbic >= ACCEPT_DBIC:
+                c.reason = f"dBIC {c.dbic:.1f} not below {ACCEPT_DBIC:g}" + (
+                    f"; and it would need {'; '.join(bad)}" if bad else "")
+                continue
             if bad:
                 rejected.append((len(rounds), c, bad))
                 c.reason = "would need " + "; ".join(bad)

@@ -800,7 +800,9 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
                 c.reason = f"held-out gain {c.gain:.1f} % below {MIN_GAIN:g} %"
             elif why:
                 c.reason = f"would need {why}"
-            elif top is None:
+            if why and not c.reason.startswith("would need"):
+                c.reason += f"; and it would need {why}"
+            if not c.reason and top is None:
                 top = c
         if top is not None:
             top.reason = ""
