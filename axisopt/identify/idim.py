@@ -605,6 +605,7 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
     W = np.vstack([matrix(r, est.terms, est.shape) for r in runs])
     y = np.concatenate([r.y for r in runs])
     r = y - W @ est.theta
+    W = rs.Span(W)
     breaks = np.concatenate([np.append(np.diff(rw.keep) != proc.nd, True) for rw in runs])[:-1]
     rho = rs.lag1(r, breaks)
     neff = rs.n_effective(len(r), rho)
@@ -842,23 +843,14 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
 MAX_PAIR_POOL = 6  # pairs are tried among at most this many single candidates (the best by dBIC): 15 fits
 
 
-def _fit_set(est_rows, terms, effects, shape):
-    """LS with several effects; each shape parameter is searched again with every other term present."""
-    shape = dict(shape)
-    fit = least_squares(est_rows, terms, shape)
-    for e in effects:
-        if e.shape:
-            fit, shape = _fit_candidate(est_rows, terms, e, {k: v for k, v in shape.items() if k != e.shape})
-    return fit, shape
-
-
 def _best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, rnd, log):
     """When no single effect passes, effects that only help together: every pair of the round's candidates
-    (at most ``MAX_PAIR_POOL``), fitted jointly; a pair is accepted when it lowers BIC by 10, predicts the
-    held-out data at least ``MIN_GAIN`` % better, keeps every value in its physical range, and beats each
-    of its members alone by ``MIN_GAIN`` % (each is needed).  The pair with the largest held-out gain wins;
+    that lower BIC at all alone (at most ``MAX_PAIR_POOL``), fitted jointly with the shapes each found alone;
+    a pair is accepted when it lowers BIC by 10, predicts the held-out data at least ``MIN_GAIN`` % better,
+    keeps every value in its physical range, and beats each of its members alone by ``MIN_GAIN`` % (each is
+    needed).  The pair with the largest held-out gain wins;
     every pair tried is logged with its reason."""
-    pool = [c for c in scored[:MAX_PAIR_POOL]]
+    pool = [c for c in scored if c.dbic < 0.0][:MAX_PAIR_POOL]  # each must show some signal alone
     best = None
     for i in range(len(pool)):
         for j in range(i + 1, len(pool)):
@@ -866,7 +858,7 @@ def _best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, r
             sh0 = {**shape, **{k: v for k, v in a.estimate.shape.items() if k not in shape},
                    **{k: v for k, v in b.estimate.shape.items() if k not in shape}}
             tt = terms + list(a.effect.terms) + list(b.effect.terms)
-            fit, sh = _fit_set(est_rows, tt, [a.effect, b.effect], sh0)
+            fit, sh = least_squares(est_rows, tt, sh0), sh0  # shapes as found for each alone
             dbic = fit.bic - cur.bic
             ho = _heldout_rmse(est_rows, val_rows, tt, sh)
             gain = 100.0 * (1.0 - ho / cur_ho) if cur_ho > 0 else 0.0

@@ -41,11 +41,25 @@ class Probe:
         return self.share >= MIN_SHARE and self.log10_p < LOG10_P
 
 
-def orthogonal(G: np.ndarray, W: np.ndarray | None) -> np.ndarray:
-    """G minus its projection on the span of W (column-scaled, rank-safe)."""
+class Span:
+    """An orthonormal basis Q of the span of a model's columns W (computed once, rank-safe by SVD), so the
+    many probes of one residual project with ``Q Q^T`` instead of a least-squares solve each."""
+
+    def __init__(self, W: np.ndarray):
+        sc = np.linalg.norm(W, axis=0)
+        sc[sc == 0] = 1.0
+        u, sv, _ = np.linalg.svd(W / sc, full_matrices=False)
+        self.Q = u[:, sv > 1e-10 * (sv.max() if sv.size else 0.0)]
+        self.size = W.size
+
+
+def orthogonal(G: np.ndarray, W) -> np.ndarray:
+    """G minus its projection on the span of W (an array, column-scaled and rank-safe, or a :class:`Span`)."""
     G = np.asarray(G, dtype=float)
     if G.ndim == 1:
         G = G[:, None]
+    if isinstance(W, Span):
+        return G - W.Q @ (W.Q.T @ G)
     if W is None or W.size == 0:
         return G - G.mean(axis=0)
     sc = np.linalg.norm(W, axis=0)
@@ -108,7 +122,7 @@ def period_scan(r: np.ndarray, q: np.ndarray, sgn: np.ndarray, columns, p_min: f
                 W: np.ndarray | None, n_eff: float, fixed=()) -> Probe:
     """Spectrum of the residual over position.  A coarse scan on a uniform grid of spatial frequency
     (spacing a quarter of 1/span, so no peak falls between grid points) with the plain columns
-    sin, cos, sgn(v) sin, sgn(v) cos of 2 pi q/P at the rows ``q``, ``sgn``; then the three best periods, refined
+    sin, cos, sgn(v) sin, sgn(v) cos of 2 pi q/P at the rows ``q``, ``sgn``; then the two best periods, refined
     on a local grid, and the periods named in advance (``fixed``: the lead and its harmonics, no scan
     factor) are scored with ``columns(P)`` (the same columns computed as the regression's: filtered and
     decimated) against the model's columns W.  Returns the best as a 'position_periodic' probe with detail
@@ -123,19 +137,20 @@ def period_scan(r: np.ndarray, q: np.ndarray, sgn: np.ndarray, columns, p_min: f
         ph = 2.0 * np.pi * np.outer(f, q)
         sn, cs = np.sin(ph), np.cos(ph)
         G = np.stack([sn, cs, sn * sgn, cs * sgn], axis=2)  # (nf, n, 4)
-        A = np.einsum("fni,fnj->fij", G, G) + 1e-9 * np.eye(4)
-        b = np.einsum("fni,n->fi", G, rc)
+        Gt = G.transpose(0, 2, 1)
+        A = np.matmul(Gt, G) + 1e-9 * np.eye(4)
+        b = np.matmul(Gt, rc)
         scores[i0 : i0 + 64] = np.einsum("fi,fi->f", b, np.linalg.solve(A, b[..., None])[..., 0])
     scans = len(freqs)
     tops = []
     for k in np.argsort(-scores):
         if all(abs(freqs[k] - freqs[t]) > 2 * df for t in tops):
             tops.append(int(k))
-        if len(tops) == 3:
+        if len(tops) == 2:
             break
     trial = [(float(P), 1) for P in fixed if p_min <= P <= p_max]
     for k in tops:
-        trial += [(1.0 / f, scans) for f in freqs[k] + df * np.linspace(-0.5, 0.5, 5) if f > 0]
+        trial += [(1.0 / f, scans) for f in freqs[k] + df * np.array([-0.35, 0.0, 0.35]) if f > 0]
     best = None
     for P, sc in trial:
         G = columns(P)
