@@ -392,7 +392,7 @@ def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
     held-out gain >= 5 %); it must also beat each member alone by 5 % of held-out error (each is needed).
     The pair with the largest held-out gain is returned (a dict), every pair tried is logged with its reason."""
     prev = cur_fit.values()
-    pool = [c for c in scored if c.dbic < 0.0][:MAX_PAIR_POOL]  # each must show some signal alone
+    pool = scored[:MAX_PAIR_POOL]
     best = None
     for i in range(len(pool)):
         for j in range(i + 1, len(pool)):
