@@ -835,6 +835,14 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     final = instrumental_variables(est_rows, terms, shape, ctrl=ctrl, start=final_ls) if accepted else base_iv
     un = analyse_residual([est_rows] + val_rows, final)
     flags = {"baseline": baseline_flags(base_iv, est.quantity), "final": baseline_flags(final, est.quantity)}
+    if "vs" in final.shape:  # a shape parameter at the end of its 1-D search is not identified by the record
+        vmax = float(np.max(np.abs(est_rows.sig["v"])))
+        lo, hi = max(proc.vmin, 1e-4 * vmax), 0.5 * vmax
+        if not 1.05 * lo < final.shape["vs"] < 0.95 * hi:
+            u, f = UNITS[est.quantity]["speed"]
+            flags["final"].append(f"vs = {final.shape['vs'] * f:.3g} {u} is at the end of its search range "
+                                  f"({lo * f:.3g}..{hi * f:.3g} {u}): the Stribeck velocity is not identifiable from "
+                                  "this record")
     times = {"ls": t_ls, "iv": t_iv, "diagnose": time.perf_counter() - t0}
     return TimeDiagnosis(est.quantity, est_rows, val_rows, ctrl, base_ls, base_iv, final, final_ls, accepted,
                          rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags)

@@ -525,7 +525,17 @@ def write_report(diag, outdir) -> Path:
         f"{d['holdout_rmse_baseline']:.3g} -> {d['holdout_rmse_final']:.3g}; about 1 is the noise floor).",
         "",
     ]
-    md += ["## Residual plots", ""]
+    md += ["## What the final fit leaves", ""]
+    for u in d["unexplained"]:
+        name = Path(u["file"]).name
+        if u["remaining"]:
+            md.append(f"- `{name}`: **unexplained** structure (RMS {u['rms_over_noise']:.2g}x the noise floor)")
+            md += [f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual variance. Candidates: "
+                   f"{sg['causes']}. To separate them: {sg['to_separate']}." for sg in u["signatures"]]
+        else:
+            md.append(f"- `{name}`: RMS {u['rms_over_noise']:.2g}x the noise floor, no structure along a recorded "
+                      "factor")
+    md += ["", "## Residual plots", ""]
     before = _split(diag.obs, diag.baseline.prediction - diag.y)
     after = _split(diag.obs, diag.final.prediction - diag.y)
     for k, (o, rb, ra) in enumerate(zip(diag.obs, before, after)):
