@@ -673,6 +673,12 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
             i0 += rw.n
         probes.append(rs.probe("run", r, ind, W, neff))
 
+    if all(rw.record.external is not None for rw in runs):
+        def load_cols(rw):
+            f, sg = rw.record.external, np.sign(rw.sig["v"])
+            return np.column_stack([f, np.abs(f), sg * np.abs(f), sg * f])
+        probes.append(rs.probe("load", r, _pooled(runs, load_cols), W, neff))
+
     def acc_cols(rw):
         a, sg = rw.sig["a"], np.sign(rw.sig["v"])
         return np.column_stack([sg * a, np.abs(a), a * np.abs(a)])
@@ -1132,6 +1138,11 @@ SIGNATURE_WORDS = {
         "runs that differ: temperature, lubrication or load changed between the estimation and validation "
         "runs",
         "repeat one run twice in a row and note the nut temperature"),
+    "load": (
+        "a dependence on the process force: nut or guide friction growing with the load (efficiency), a "
+        "compliant support that shifts under it, or an external_force column with a wrong sign or scale",
+        "runs at one speed with different constant process forces, both directions, and a check of the force "
+        "sensor's sign and calibration"),
     "acceleration": (
         "a dependence on acceleration beyond M a: a compliant transmission (the motor side lags), lost motion, "
         "or an inertia that differs by direction",
@@ -1172,6 +1183,8 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         what, key = "drifts with time within a run", "time"
     elif p.kind == "run":
         what, key = "differs between the estimation and validation runs", "run"
+    elif p.kind == "load":
+        what, key = "depends on the external force", "load"
     else:
         what, key = "depends on acceleration beyond M a", "acceleration"
     causes, measure = SIGNATURE_WORDS[key]

@@ -274,3 +274,16 @@ def test_json_carries_the_unexplained_verdict(tmp_path, plant, capsys):
     d = json.loads(capsys.readouterr().out)
     assert d["unexplained"]["remaining"] and d["unexplained"]["signatures"][0]["kind"] == "position_periodic"
     assert all(c["reason"] for c in d["not_accepted"])
+
+
+def test_external_force_at_the_wrong_scale_leaves_a_load_signature(tmp_path, plant):
+    """An external_force column recorded at half its true value: the misfit follows the process force, and the
+    verdict says so (whatever else is fitted)."""
+    truth = AxisTruth(mass=500.0, viscous=1200.0, coulomb=300.0, offset=20.0, process_force=300.0)
+    rec = simulate_axis(truth, duration=12.0, seed=7)
+    rec.extra["external_force"] = 0.5 * rec.extra["external_force"]
+    path = tmp_path / "half.csv"
+    rec.write_csv(path, columns=("time", "position", "force", "reference", "external_force"))
+    un = unexplained(diagnose_time_files([path], plant=plant))
+    assert un["remaining"] and un["signatures"][0]["kind"] == "load"
+    assert "external force" in un["signatures"][0]["signature"]
