@@ -38,11 +38,24 @@ Effects (each a few columns added to W, fitted jointly with the baseline):
   column is the fourth derivative, parameter beta = m1 m2/k, reported as the resonance
   :math:`f_r = \\sqrt{M/\\beta}/2\\pi`.  Only a candidate when the baseline's residual spectrum has a peak
   (5x its median between 3x the motion bandwidth and the cut-off).  Its IV instrument is the measured
-  column itself (a rigid-body simulation has no mode).
+  column itself (a rigid-body simulation has no mode).  Not offered when the residual's spectral peak
+  follows the position (a ripple moves in frequency with the speed; a mode does not).
+* ``lead_ripple``: a force ripple sin, cos(2 pi q/P) (the same both ways: lead error, run-out) and a friction
+  ripple sgn(v) sin, sgn(v) cos(2 pi q/P) (ball recirculation), P the lead / k for k = 1, 2, 3 (the best by
+  RSS); parameters rs, rc, ks, kc, each pair's amplitude up to the Coulomb level.
+* ``quadratic_drag``: v|v|, parameter Cq > 0 (seals, lubricant churning).
+
+An ``external_force`` column (:mod:`.timerecord`) is added to the effort before the regression and enters
+the closed-loop simulation of IV.
 
 Selection: forward, each round the candidate with the lowest dBIC = n ln(RSS1/RSS0) + dp ln n on the
-estimation run; accepted if dBIC < -10 and the RMSE of the effort predicted on the validation runs (or, with
-no validation run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %.
+estimation run that passes: dBIC < -10, the RMSE of the effort predicted on the validation runs (or, with
+no validation run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %, and
+its values are physical; every other candidate keeps the first criterion it failed as its reason.  When no
+single effect passes, pairs of the candidates that lower BIC alone are fitted together and accepted on the
+same tests when each member is needed (:func:`_best_pair`).  The baseline and final fits carry plausibility
+and identifiability flags (:func:`baseline_flags`), and the final residual is tested for structure
+(:func:`analyse_residual`, :mod:`.residual`): what remains is reported as "unexplained" with its signature.
 Nothing here imports the CLI or YAML.
 """
 

@@ -18,6 +18,13 @@ Optionally a second mass: the motor-side mass ``mode_mass`` carries the drive fo
 table by a spring-damper tuned to the resonance ``mode_hz`` (damping ratio ``mode_zeta``); the table
 carries the friction and its position is measured.
 
+Effects the identification library may lack: a ripple periodic in position ``ripple`` sin(2 pi x /
+``ripple_period`` + ``ripple_phase``), as a force in -x (the drive supplies it both ways) or, with
+``ripple_friction``, added to the Coulomb level (it follows the direction); a drag ``quadratic_drag`` v|v|;
+lost motion ``backlash`` between the motor-side and table masses (a dead zone of the spring; needs the
+second mass); and a seeded piecewise-constant process force on the table, ``process_force`` (recorded as
+``extra['external_force']`` and written as the ``external_force [N]`` column).
+
 The controller (sampled at ``fs``): PD on the measured position, the velocity from the backward difference
 of the measured position through a first-order low-pass (``vel_filter_hz``),
 :math:`u = K_p (r - x_m) + K_d (\\dot r - \\hat v)`.  The recorded force is ``u`` plus white sensor noise
