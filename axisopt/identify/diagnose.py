@@ -6,7 +6,13 @@
 3. Forward selection over the effect library: each applicable candidate is fitted jointly with the
    current parameters and scored by BIC; the best is accepted if ``dBIC < -10`` and the grouped
    cross-validation RMSE (leave one position / load level / cycle block out) improves.
-4. Gain on held-out data, parameters +- 1 sigma with plausibility flags, runner-up and margin.
+   Every candidate not accepted keeps the first criterion it failed (dBIC, a value outside its physical
+   range, held-out gain); when no single effect passes, pairs of the best candidates are fitted jointly and
+   accepted when each member is needed (:func:`_best_pair`).
+4. Gain on held-out data (pooled and per file), parameters +- 1 sigma with plausibility flags (a parameter
+   the data do not fix is "not identifiable", see :func:`.fit._covariance`), runner-up and margin.
+5. What remains: the final residual of every file is tested along each recorded factor against the noise
+   floor (:func:`table_unexplained`); structure left is the "unexplained" verdict, in words.
 
 Ref.: /work/shared/reference/model-discrepancy.md sec. 2 (method, acceptance rule, gain table).
 """
