@@ -340,7 +340,9 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 3) -> Diagn
                 continue
             top = c
         if top is None:
-            if len(effects) + 2 > max_effects:
+            # pairs only when some candidate found signal (dBIC < -10) that no single effect turns into an
+            # accepted explanation: a misfit at the noise floor costs no pair fits
+            if len(effects) + 2 > max_effects or not any(c.dbic < ACCEPT_DBIC for c in scored):
                 break
             pair = _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, len(rounds), pairs)
             if pair is None:

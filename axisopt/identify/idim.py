@@ -835,7 +835,9 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
             cur = top.estimate
             cur_ho = _heldout_rmse(est_rows, val_rows, terms, shape)
             continue
-        if len(accepted) + 2 > max_effects:
+        # pairs only when some candidate found signal (dBIC < -10) that no single effect turns into an accepted
+        # explanation: a residual at the noise floor costs no pair fits
+        if len(accepted) + 2 > max_effects or not any(c.dbic < ACCEPT_DBIC for c in scored):
             break
         pair = _best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, len(rounds), pairs)
         if pair is None:
