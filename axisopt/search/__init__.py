@@ -71,6 +71,10 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
             f"{first.certificate.nlps_solved} NLPs, gap {first.certificate.gap:g}",)
         res.certificate.nlps_solved += first.certificate.nlps_solved
         res.certificate.proven = res.certificate.proven and first.certificate.proven
+        if first.status != "optimal" and res.status == "optimal":  # stage 2 proven on an unproven stage 1
+            res.status = first.status
+            res.message = "; ".join(m for m in (f"stage 1 ({primary}): {first.message or first.status}",
+                                                res.message) if m)
         res.time = time.perf_counter() - t0
         return res
     spec = objective_spec(ob.mode, problem)
