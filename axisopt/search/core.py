@@ -251,7 +251,7 @@ def _concat(parts):
 
 
 def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top: int = 1, *,
-                       max_evaluations: int | None = None):
+                       max_evaluations: int | None = None, incumbent: float = -np.inf):
     """Default method core: best-first over blocks of combinations, never forming the whole product.
 
     1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives -- gets a
@@ -263,6 +263,8 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     3. It stops when neither the next block nor the pool can reach the incumbent: the gap is then 0.  Blocks
        never screened are the certificate's ``pruned_by_block``; survivors never solved its
        ``pruned_by_bound``.
+    ``incumbent``: an objective some design is known to reach (top 1): what cannot tie with it is pruned from
+    the start, and the Exact returned may then be empty.
     Returns (Exact of evaluated combinations, certificate fields dict)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
@@ -285,7 +287,7 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     pos, batch, n_eval, screened_blocks, feasible = 0, 64, 0, 0, 0
     group = 1  # distinct nuts per screened group: grows as long as no incumbent prunes
     pool_idx, pool_bnd = np.zeros(0, np.int64), np.zeros(0)
-    parts, thr = [], -np.inf
+    parts, thr = [], (incumbent if top == 1 else -np.inf)
     while True:
         floor = objective_floor(thr)
         nxt = bv[pos] if pos < len(bv) else -np.inf
