@@ -156,7 +156,7 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
             drive_known = True
         want = np.zeros((M, N, B), dtype=bool)
         open_ = ~done
-        for c in constraints:
+        for c in constraints if done.any() else ():  # first round: the lowest score bounds only (below)
             if tally.met[c.name] or (drive_known and c.name not in bounded):
                 continue
             cand = open_ & usable
