@@ -108,6 +108,9 @@ def block_optimism(space: Space, constraints):
     _, N, B, _ = space.shape
     bounded = [c for c in constraints if _bounded(c)]
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
+    # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped there
+    # unless one of those reads them (as in _score_nuts)
+    chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in bounded if c.convex or not c.lower_type)
     out = []
     for mounting in space.mountings:
         x = space.positions(mounting)
@@ -120,7 +123,8 @@ def block_optimism(space: Space, constraints):
             shape = (sl.stop - sl.start, B)
             for t in types:
                 p = space.params_optimistic_guide(mounting, sl, str(t))
-                out_lo, out_hi = (respond(p, x, mounting, pre, drive_block=False) for pre in (lo, hi))
+                out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
+                out_hi = respond(p, x, mounting, hi, drive_block=False)
                 for c in bounded:
                     v = _favourable(c, out_lo, out_hi, shape + (1,))[..., 0]
                     pick = np.maximum if c.sense == ">=" else np.minimum
