@@ -463,6 +463,12 @@ def exhaustive_search(space: Space, constraints, objective: ObjectiveSpec, chunk
 # ------------------------------------------------------------------------------------ candidates
 def make_candidate(space: Space, combo: int, preload: float, objective: ObjectiveSpec, rank: int = 0,
                    name: str = "") -> Candidate:
+    return candidate_values(space, combo, preload, objective, rank, name)[0]
+
+
+def candidate_values(space: Space, combo: int, preload: float, objective: ObjectiveSpec, rank: int = 0,
+                     name: str = "") -> tuple:
+    """(:func:`make_candidate`'s Candidate, the model's values of its design: ``Evaluation.values``)."""
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
     screw, nut, bearing, guide, motor, coupling = space.part_rows(n, b, g)
@@ -483,7 +489,8 @@ def make_candidate(space: Space, combo: int, preload: float, objective: Objectiv
                      min_frequency=float(np.min(v["f1"])), cost=float(v["cost"]),
                      moving_mass=float(v["moving_mass"]), total_mass=float(v["total_mass"]),
                      drag_torque=float(v["drag_torque"]), life_h=float(v["life"]) / 3600.0, design=design,
-                     outputs={lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v})
+                     outputs={lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v}
+                     ), v
 
 
 def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: int):

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import model
-from .core import make_candidate
+from .core import candidate_values
 from .result import Infeasibility
 from .space import COUPLING_KEYS, DRIVE_KEYS, Space, _vec, respond, respond_drive
 
@@ -341,11 +341,10 @@ def _closest_design(space: Space, constraints, objective, combo: int, rank: int)
     for c in constraints:
         tot += c.violation(_vec(c.value(out), 33))
     pre = float(grid[int(np.argmin(tot))])
-    cand = make_candidate(space, combo, pre, objective, rank=rank)
-    vals = dict(model.evaluate(cand.design).values)
+    cand, vals = candidate_values(space, combo, pre, objective, rank=rank)  # one evaluation of the design
     misses = {}
     for c in constraints:
-        v = float(np.min(vals[c.key])) if c.profile else float(vals[c.key])
+        v = float(np.min(vals[c.key]))
         miss = float(c.violation(np.asarray(v)))
         if miss > 0:
             misses[c.label] = miss
