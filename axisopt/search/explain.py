@@ -102,18 +102,22 @@ def _bounded(c) -> bool:
 
 
 def block_optimism(space: Space, constraints):
-    """Per mounting and (nut, bearing) block: for each limit the optimistic guide bounds, the best value any
-    combination of the block reaches at the limit's favourable preload end (full position grid), and a
-    lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
+    """Per mounting and (nut, bearing) block: for each limit the optimistic guide bounds, a value no
+    combination of the block beats at the limit's favourable preload end (profiles on
+    :meth:`Space.bound_positions`), and a lower bound of the block's miss scores.
+    Returns a list over mountings of (values dict, lower bound)."""
     _, N, B, _ = space.shape
     bounded = [c for c in constraints if _bounded(c)]
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
     # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped there
     # unless one of those reads them (as in _score_nuts)
     chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in bounded if c.convex or not c.lower_type)
+    # a minimum over a few positions bounds the minimum over the grid from above: optimistic for a ">=" limit,
+    # so the few suffice unless a "<=" limit reads a profile
+    few = all(c.sense == ">=" for c in bounded if c.profile)
     out = []
     for mounting in space.mountings:
-        x = space.positions(mounting)
+        x = space.bound_positions(mounting) if few else space.positions(mounting)
         step = max(1, CHUNK // max(B * len(x), 1))
         best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in bounded}
         for n0 in range(0, N, step):
