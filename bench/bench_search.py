@@ -105,7 +105,7 @@ REPEAT = 3  # the default method and the screening are timed as the best of this
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser()
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--bonmin-time", type=float, default=100.0)
     ap.add_argument("--skip-bonmin", action="store_true")
     ap.add_argument("--skip-exhaustive-large", action="store_true")

@@ -39,7 +39,7 @@ import numpy as np
 from .. import model
 from ..errors import InputError
 from .bonmin import _slot_params
-from .core import _feasible_at, make_candidate
+from .core import _feasible_at, bound_order_search, make_candidate
 from .result import Certificate, SolveResult
 from .space import N_PER_UM, respond
 
@@ -49,6 +49,7 @@ SAMPLES = 64  # random integer points (fixed seed) that set the scale of each au
 # Dual reductions (fixing a variable because the objective prefers one side) cut the optimum off the teaching
 # problem (110.09 -> "optimal" 102.95 N/um; SCIP 10, the epigraph-with-comparisons model); off, it is right.
 SCIP_PARAMS = {"misc/allowstrongdualreds": False, "misc/allowweakdualreds": False}
+CROSS_CHECK_REL = 1e-4  # a design better than SCIP's proven optimum by more than this contradicts the proof
 BRANCH_PRIORITY = (3, 2, 1)  # nut, bearing, guide-and-drive binaries
 INSTALL = "pip install 'axisopt[scip]'"
 
@@ -469,6 +470,30 @@ def _c_stderr_to_file():
         lines.extend(dict.fromkeys(t.strip() for t in text if t.strip()))
 
 
+def _contradiction(space, constraints, objective, best) -> str:
+    """SCIP's proof against a design the project's own search finds (re-evaluated by the model): '' when none
+    contradicts it, else why it is wrong.
+
+    SCIP's LP relaxation of this model can be numerically wrong: on ``highspeed_problem.yaml`` (stage 2,
+    fixed-supported) it declares infeasible even the single combination whose parts and preload are all fixed
+    at the default method's optimum, a point that SCIP's own ``checkSol`` accepts (it stops at "unresolved
+    numerical troubles in LP ... using pseudo solution instead" and cuts the node off).  Such a proof is never
+    passed on: a design that meets every limit and beats SCIP's answer turns its status into a failure."""
+    ex, _info = bound_order_search(space, constraints, objective, top=1)
+    fin = np.isfinite(ex.objective)
+    if not fin.any():
+        return ""
+    j = int(np.argmax(np.where(fin, ex.objective, -np.inf)))
+    j_ref = float(ex.objective[j])
+    if best is not None and j_ref <= best.objective + CROSS_CHECK_REL * max(abs(best.objective), 1e-12):
+        return ""
+    ref = make_candidate(space, int(ex.idx[j]), float(ex.preload[j]), objective)
+    claim = "no design meets the limits" if best is None else f"the optimum is {best.objective:.6g}"
+    return (f"SCIP proved that {claim}, but {ref.mounting} {ref.nut} + {ref.bearing} + {ref.guide} at preload "
+            f"{ref.nut_preload:.1f} N meets every limit on the model with objective {j_ref:.6g}: SCIP's proof is "
+            f"wrong on this problem (numerical trouble in its LP relaxation); no proven answer")
+
+
 def solve_scip(problem, space, constraints, objective, *, time_limit: float = 100.0, top: int = 1,
                t0: float | None = None) -> SolveResult:
     """Solve each mounting's MINLP with SCIP and return the best design (re-evaluated)."""
@@ -545,6 +570,14 @@ def solve_scip(problem, space, constraints, objective, *, time_limit: float = 10
         status = "infeasible"
     else:
         status = "optimal"
+    if status in ("optimal", "infeasible"):
+        wrong = _contradiction(space, constraints, objective, best)
+        if wrong:
+            status = "solver_failed"
+            notes.append(wrong)
+            statuses.append("proof contradicted by a feasible design")
+        else:
+            notes.append("proof cross-checked against the default method's best design: consistent")
     gap = max(gaps) if gaps else (0.0 if status in ("optimal", "infeasible") else float("nan"))
     cert = Certificate(combinations=space.size, feasible=None, pruned_by_bound=0, exact_evaluations=0,
                        nlps_solved=solves, nlp_failures=int(failed), gap=gap,
