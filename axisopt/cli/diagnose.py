@@ -19,7 +19,7 @@ def cmd_diagnose(args) -> int:
     from ..identify import diagnose, plant_from_design, read_dataset
     from ..identify.calibration import save_calibration
     from ..identify.effects import library
-    from ..identify.report import diagnosis_dict, diagnosis_text, write_report
+    from ..report.diagnosis import diagnosis_dict, diagnosis_text, write_report
 
     html = args.report is not None and str(args.report).lower().endswith((".html", ".htm"))
     if html:

@@ -106,11 +106,9 @@ class Diagnosis:
     def to_frame(self):
         """pandas DataFrame of the final fit's parameters, one row each: ``effect`` (the accepted effect that
         owns it, 'baseline' otherwise), ``parameter``, ``label``, ``value`` and ``sigma`` in ``unit``."""
-        from .report import _params
-
         rows = [{"effect": self.param_owner.get(p["name"], "baseline"), "parameter": p["name"],
                  "label": p["label"], "value": p["value"], "sigma": p["sigma"], "unit": p["unit"]}
-                for p in _params(self.final)]
+                for p in param_rows(self.final)]
         return frame(rows, ("effect", "parameter", "label", "value", "sigma", "unit"))
 
     def __repr__(self) -> str:
@@ -119,10 +117,8 @@ class Diagnosis:
             "verdict": self.verdict, "held-out error down": f"{self.gain:.1f} %", "data": files})
 
     def _repr_html_(self) -> str:
-        from .report import _params
-
         rows = [{"effect": self.param_owner.get(p["name"], "baseline"), "parameter": p["name"],
-                 "value": p["text"]} for p in _params(self.final)]
+                 "value": p["text"]} for p in param_rows(self.final)]
         return html_table(rows, repr(self))
 
 
@@ -158,6 +154,30 @@ def _split(obs, v):
 def split_by_observation(obs, v) -> list:
     """``v`` (the stacked rows of every observation) cut into one array per observation."""
     return _split(obs, v)
+
+
+def param_text(p, v, s) -> str:
+    """A fitted parameter as text in its display unit: value ± sigma, or 'not identifiable'."""
+    unit = "" if p.unit in ("", "-") else f" {p.unit}"
+    sd = f" ± {p.show(s):.3g}" if math.isfinite(s) else ""
+    return f"{p.show(v):.4g}{sd}{unit}" + ("" if math.isfinite(s) else " (not identifiable from these data)")
+
+
+def param_rows(res, names=None) -> list:
+    """The parameters of a fit (only ``names`` when given) as dicts: name, label, value, sigma, unit, text."""
+    sig = dict(zip([p.name for p in res.params], res.sigma))
+    return [
+        {
+            "name": p.name,
+            "label": p.label,
+            "value": p.show(v),
+            "sigma": p.show(sig[p.name]) if math.isfinite(sig[p.name]) else None,
+            "unit": p.unit,
+            "text": param_text(p, v, sig[p.name]),
+        }
+        for p, v in zip(res.params, res.theta)
+        if names is None or p.name in names
+    ]
 
 
 # Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode): the noise
@@ -614,3 +634,8 @@ _DISP = {
 def _disp(name, v):
     f, u = _DISP.get(name, (1.0, ""))
     return f"{v * f:.4g}{(' ' + u) if u else ''}"
+
+
+def display_value(name, v) -> str:
+    """A factor's value in its display unit (e.g. a velocity in mm/s), as text."""
+    return _disp(name, v)

@@ -15,7 +15,7 @@ from axisopt.cli import main
 from axisopt.design import load_design
 from axisopt.identify import diagnose, plant_from_design, read_dataset
 from axisopt.identify.fit import _covariance
-from axisopt.identify.report import diagnosis_dict, diagnosis_text
+from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 
 DATA = Path(__file__).resolve().parents[2] / "problems" / "data"
 DESIGN = DATA / "table_x.yaml"

@@ -1,4 +1,5 @@
-"""Diagnosis output: JSON-ready dict, console text, Markdown report with residual plots (Agg).
+"""Diagnosis output (:class:`axisopt.identify.diagnose.Diagnosis`): JSON-ready dict, console text, Markdown
+report with residual plots (Agg).
 Nothing here prints."""
 
 from __future__ import annotations
@@ -9,32 +10,11 @@ from pathlib import Path
 import numpy as np
 
 from ..fileio import tidy_layout
-from ..report import save_figure, write_text_atomic
-from ..report.evaluation import fit_lines
-from .diagnose import _split, plausibility, residual_table
-from .measure import Y_UNIT
-
-
-def _pv(p, v, s):
-    unit = "" if p.unit in ("", "-") else f" {p.unit}"
-    sd = f" ± {p.show(s):.3g}" if math.isfinite(s) else ""
-    return f"{p.show(v):.4g}{sd}{unit}" + ("" if math.isfinite(s) else " (not identifiable from these data)")
-
-
-def _params(res, names=None):
-    sig = dict(zip([p.name for p in res.params], res.sigma))
-    return [
-        {
-            "name": p.name,
-            "label": p.label,
-            "value": p.show(v),
-            "sigma": p.show(sig[p.name]) if math.isfinite(sig[p.name]) else None,
-            "unit": p.unit,
-            "text": _pv(p, v, sig[p.name]),
-        }
-        for p, v in zip(res.params, res.theta)
-        if names is None or p.name in names
-    ]
+from ..identify.diagnose import param_rows, plausibility, residual_table
+from ..identify.diagnose import split_by_observation as _split
+from ..identify.measure import Y_UNIT
+from . import save_figure, write_text_atomic
+from .evaluation import fit_lines
 
 
 def _rmse_units(diag, pred):
@@ -64,7 +44,7 @@ def diagnosis_dict(diag) -> dict:
             for o, s in zip(diag.obs, diag.noise)
         ],
         "baseline": {
-            "parameters": _params(diag.baseline),
+            "parameters": param_rows(diag.baseline),
             "status": diag.baseline.status,
             "plausibility": _flags(diag.baseline),
         },
@@ -81,7 +61,7 @@ def diagnosis_dict(diag) -> dict:
                     "effect": c.effect.name,
                     "dBIC": c.dbic,
                     "cv_gain_percent": c.cv_gain,
-                    "parameters": _params(c.fit, c.names),
+                    "parameters": param_rows(c.fit, c.names),
                 }
                 for c in rnd
             ]
@@ -99,11 +79,11 @@ def diagnosis_dict(diag) -> dict:
                 _file_gains(diag)
             )
         ],
-        "final": {"parameters": _params(diag.final), "status": diag.final.status,
+        "final": {"parameters": param_rows(diag.final), "status": diag.final.status,
                   "plausibility": plausibility(diag.final, []) + unidentifiable(diag.final)},
         "rejected": [
             {"round": rnd, "effect": c.effect.name, "dBIC": c.dbic, "would_need": bad,
-             "parameters": _params(c.fit, c.names)}
+             "parameters": param_rows(c.fit, c.names)}
             for rnd, c, bad in diag.rejected
         ],
         "not_accepted": [
@@ -130,7 +110,7 @@ def diagnosis_dict(diag) -> dict:
                 # the numbers of the final joint fit (the one --save-calibration writes), not of the round
                 # in which the effect was accepted
                 "finding": a.effect.describe(diag.final.values(), diag.plant),
-                "parameters": _params(diag.final, names),
+                "parameters": param_rows(diag.final, names),
                 "dBIC": a.dbic,
                 "cv_rmse_before": a.cv_before,
                 "cv_rmse_after": a.cv_after,
@@ -148,13 +128,13 @@ def diagnosis_dict(diag) -> dict:
 
 def unexplained_dicts(diag) -> list:
     """Per dataset: is structure left in the final residual, and its signatures in words."""
-    from .diagnose import _disp, table_signature
+    from ..identify.diagnose import display_value, table_signature
 
     out = []
     for u in diag.unexplained:
         sigs = []
         for p in u.remaining:
-            what, causes, measure = table_signature(p, _disp)
+            what, causes, measure = table_signature(p, display_value)
             sigs.append({"factor": p.kind, "share": p.share, "log10_p": p.log10_p, "signature": what,
                          "causes": causes, "to_separate": measure})
         out.append({"file": u.source, "test": u.kind, "rms_over_noise": u.rms, "remaining": bool(sigs),
@@ -291,7 +271,7 @@ def frf_modes(diag) -> list:
 def data_notes(o) -> list:
     """What looks odd in the measured column itself: three or more consecutive identical readings (a held
     or copied value) are named with their lines; they are kept in the fit."""
-    from .measure import MEASURED_COLUMNS
+    from ..identify.measure import MEASURED_COLUMNS
 
     out = []
     for col in MEASURED_COLUMNS.get(o.kind, ()):
@@ -461,7 +441,7 @@ def write_report(diag, outdir) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from ..report import make_output_dir
+    from . import make_output_dir
 
     out = make_output_dir(outdir)
     d = diagnosis_dict(diag)
