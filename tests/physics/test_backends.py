@@ -11,7 +11,19 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from axisopt.physics import MODULES, bearings, carriage, checks, damping, dynamics, friction, guides, nut, screw, thermal
+from axisopt.physics import (
+    MODULES,
+    bearings,
+    carriage,
+    checks,
+    damping,
+    dynamics,
+    friction,
+    guides,
+    nut,
+    screw,
+    thermal,
+)
 
 # complex numpy-only FRFs; selector helper (no numbers)
 # carriage.mean_load takes sequences: tests/physics/test_carriage_published.py checks its backends
