@@ -134,12 +134,12 @@ def max_block_load(normal_force, cross_force, pitch_moment, roll_moment, yaw_mom
     Source: THK General Catalog A-106 (the static safety factor takes the largest P_E of all blocks and
     cases).
     """
-    loads = corner_block_loads(normal_force, cross_force, pitch_moment, roll_moment, yaw_moment, n_blocks,
-                               c_pitch, c_roll, c_yaw)
-    m = loads[0]
-    for v in loads[1:]:
-        m = mx.fmax(m, v)
-    return m
+    # the roll term's sign is free for either front/back row: max over s_y of |a + s_y c| = |a| + |c|
+    a, c, t = normal_force / n_blocks, c_roll * roll_moment, cross_force / n_blocks
+    b, e = c_pitch * pitch_moment, c_yaw * yaw_moment
+    front = mx.fabs(a + b) + mx.fabs(c) + mx.fabs(t + e)
+    back = mx.fabs(a - b) + mx.fabs(c) + mx.fabs(t - e)
+    return mx.fmax(front, back)
 
 
 def static_safety(static_load_rating, load):

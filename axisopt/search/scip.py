@@ -41,7 +41,7 @@ from ..errors import InputError
 from .bonmin import _slot_params
 from .core import _feasible_at, make_candidate
 from .result import Certificate, SolveResult
-from .space import N_PER_UM, respond
+from .space import N_PER_UM, STIFFNESS_OUTPUTS, respond
 
 GAP = 1e-5  # SCIP's relative gap limit (limits/gap)
 MAX_TERMS = 40  # a larger SCIP expression becomes an auxiliary variable
@@ -401,7 +401,7 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
         m.addCons(z["nut"][n_i] + z["bearing"][b_i] <= 1)
     t = [m.addVar(f"t{k}", lb=None) for k in range(nt)]
     for k, (key, _w) in enumerate(objective.terms):
-        unit = N_PER_UM if key == "k_total" else 1.0
+        unit = N_PER_UM if key in STIFFNESS_OUTPUTS else 1.0
         for j, node in enumerate(graph.outputs[k]):
             m.addCons(t[k] - (1.0 / unit) * tr.expr(node) <= 0, name=f"epi{k}_{j}")
     for c, node in general:
