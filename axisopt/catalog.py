@@ -9,6 +9,7 @@ shipped one; its ids must not collide with the shipped ids.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -161,7 +162,7 @@ _ORDERED = {
     "couplings": (("bore_min", "bore_max"),),
     "nuts": (("preload_min", "preload_max"),),
 }
-_CHOICES = {
+CHOICES = {
     ("nuts", "type"): ("single", "double"),
     ("guides", "type"): ("ball", "roller"),
     ("guides", "preload_level"): ("light", "medium", "heavy", "super-heavy"),
@@ -228,7 +229,7 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
             return col, "must not be negative"
         if kind != "int" and abs(val) > PLAUSIBLE_MAX.get(kind, 1e12):
             return col, f"out of range (at most {PLAUSIBLE_MAX.get(kind, 1e12):g} in SI units)"
-    for (t, c), ok in _CHOICES.items():
+    for (t, c), ok in CHOICES.items():
         if t == name and rec.get(c) not in ok:
             return c, f"'{rec.get(c)}' is not one of {', '.join(ok)}"
     for a, b in _ORDERED.get(name, ()):
@@ -241,12 +242,9 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
     schema = SCHEMA[name]
     src = str(path)
     try:
-        if not path.is_file():
-            raise InputError("not a regular file", source=src)
-        if path.stat().st_size > MAX_CATALOG_BYTES:
-            raise InputError(f"catalog file too large ({path.stat().st_size:,} bytes; at most "
-                             f"{MAX_CATALOG_BYTES:,})", source=src)
-        with path.open(newline="", encoding="utf-8-sig") as fh:
+        from .fileio import read_input  # regular files only, at most MAX_CATALOG_BYTES
+
+        with io.StringIO(read_input(path, "catalog", what="catalog", encoding="utf-8-sig"), newline="") as fh:
             reader = csv.reader(fh)
             try:
                 rows = list(reader)

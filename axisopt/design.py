@@ -12,7 +12,8 @@ from dataclasses import dataclass, field, fields
 from functools import cached_property
 from pathlib import Path
 
-from .catalog import _CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
+from .catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
+from .display import fmt, one_line
 from .errors import InputError
 from .physics import motion
 from .units import DISPLAY_UNITS, unit_factor
@@ -146,6 +147,19 @@ class Axis:
         return motion.cycle_phases(segs)
 
     @property
+    def top_speed(self) -> float:
+        """The highest table speed commanded [m/s]: max_speed, or a duty-cycle move's speed if faster (the
+        reader refuses such a move; kept as the maximum so the speed checks never read a slower value)."""
+        return max([self.max_speed] + [s.speed for s in self.duty_cycle if s.kind == "move" and s.speed])
+
+    @property
+    def top_acceleration(self) -> float:
+        """The highest acceleration commanded [m/s^2]: axis.acceleration or a duty-cycle move's own, if higher
+        (the largest inertia force in the axial load, f_max, is taken at it)."""
+        return max([self.acceleration] + [s.acceleration for s in self.duty_cycle
+                                          if s.kind == "move" and s.acceleration])
+
+    @property
     def mean_speed_eff(self) -> float:
         return self.mean_speed if self.mean_speed is not None else 0.5 * self.max_speed
 
@@ -179,6 +193,14 @@ class Design:
 
     def part_ids(self) -> dict:
         return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
+
+    def __repr__(self) -> str:  # the parts are catalog rows: a dataclass repr would print them whole
+        a = self.axis
+        parts = ", ".join(f"{k} {v}" for k, v in self.part_ids().items())
+        return one_line("Design", repr(self.name), {
+            "": f"{a.mounting}, {a.orientation}", "stroke": fmt(a.stroke * 1e3, "mm"),
+            "moving mass": fmt(a.moving_mass, "kg"), "max speed": fmt(a.max_speed * 60, "m/min"),
+            "axial load": fmt(a.axial_load, "N"), "parts": f"{parts} (nut preload {fmt(self.preload, 'N')})"})
 
 
 PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling")
@@ -371,6 +393,11 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
             if abs(dist) > kw.get("stroke", math.inf) * (1 + 1e-9):
                 raise s.error("move", f"{abs(dist) * 1e3:g} mm is longer than the stroke")
             speed = s.read("speed", kw.get("max_speed"))
+            top = kw.get("max_speed")
+            if top is not None and speed > top * (1 + 1e-9):  # the speed checks are taken at max_speed
+                raise s.error("speed", f"{speed * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min); "
+                              "raise max_speed to the fastest move (critical speed, DN and bearing speed are "
+                              "checked at it)")
             acc = s.read("acceleration", kw.get("acceleration", 0.0))
             if not acc:
                 raise s.error("move", "needs an acceleration (here or in axis.acceleration)")
@@ -396,7 +423,7 @@ def _part_key(table: str, col: str, kind: str) -> Key:
     if kind == "str":
         optional = col in ("vendor", "series")
         return Key("string", doc + (" (default: custom)" if optional else ""), required=not optional,
-                   default="custom" if optional else None, choices=_CHOICES.get((table, col)))
+                   default="custom" if optional else None, choices=CHOICES.get((table, col)))
     if kind == "int":
         return Key("number", doc, required=True, integer=True, minimum=1)
     if kind == "dimensionless":
@@ -451,11 +478,11 @@ PARTS_SPEC = Spec("parts", "one part per slot: a catalog id, or an inline mappin
     "nut_preload": Key("quantity", "nut preload within the nut's range (default: the catalog's)", kind="force",
                        non_negative=True),
 })
-_NAME = Key("string", "name of the file's subject (default: the file name)")
-_DESCRIPTION = Key("string", "free text")
-_CATALOGS = Key("names", "extra catalog directories, relative to this file")
+NAME_KEY = Key("string", "name of the file's subject (default: the file name)")
+DESCRIPTION_KEY = Key("string", "free text")
+CATALOGS_KEY = Key("names", "extra catalog directories, relative to this file")
 DESIGN_SPEC = Spec("design", "an axis design: the machine's requirements and one part per slot", {
-    "name": _NAME, "description": _DESCRIPTION, "catalogs": _CATALOGS,
+    "name": NAME_KEY, "description": DESCRIPTION_KEY, "catalogs": CATALOGS_KEY,
     "axis": Key("section", required=True, spec=AXIS_SPEC), "parts": Key("section", required=True, spec=PARTS_SPEC),
 })
 

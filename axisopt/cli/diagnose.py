@@ -7,7 +7,7 @@ inverse dynamic identification of :mod:`axisopt.identify.idim` (first file estim
 from __future__ import annotations
 
 from ..errors import InputError
-from .common import EXIT_OK, write_json
+from .common import EXIT_OK, stdout_taken, write_json
 
 
 def cmd_diagnose(args) -> int:
@@ -37,7 +37,7 @@ def cmd_diagnose(args) -> int:
     if args.max_effects < 0:
         raise InputError("--max-effects must not be negative")
     diag = diagnose(datasets, plant_from_design(design), candidates=names, max_effects=args.max_effects)
-    quiet = args.json == "-"
+    quiet = stdout_taken(args.json, args.save_calibration)
     text = diagnosis_text(diag)
     if not quiet:
         print(text)
@@ -79,7 +79,7 @@ def _cmd_diagnose_time(args) -> int:
     names = [n.strip() for n in args.effects.split(",") if n.strip()] if args.effects else None
     diag = diagnose_time_files(args.data, plant=plant_from_design(load_design(args.design)), gain=args.gain,
                                candidates=names, max_effects=args.max_effects)
-    if args.json != "-":
+    if not stdout_taken(args.json):
         print(time_diagnosis_text(diag))
     if args.json:
         write_json(time_diagnosis_dict(diag), args.json)

@@ -19,6 +19,7 @@ empty or NaN cell is an :class:`InputError` naming the file, line and column.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -26,6 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..fileio import MAX_DATA_ROWS, read_input
 from ..units import check_plausible, split_header, to_si, unit_factor
 from ..yamlio import close_matches
 
@@ -143,12 +145,19 @@ def read_dataset(path) -> Dataset:
     """Read one test CSV.  See the module docstring for the formats."""
     src = str(path)
     try:
-        if Path(path).exists() and not Path(path).is_file():
-            raise InputError("not a regular file", source=src)
-        with Path(path).open(newline="", encoding="utf-8-sig") as fh:
+        text = read_input(path, "data", what="data file", encoding="utf-8-sig")  # regular files only, size cap
+        with io.StringIO(text, newline="") as fh:
             reader = csv.reader(fh)
             try:
-                rows = list(reader)
+                rows = []
+                for r in reader:
+                    rows.append(r)
+                    if len(rows) > MAX_DATA_ROWS + 100:  # header and comments besides the rows
+                        raise InputError(f"too many rows (at most {MAX_DATA_ROWS:,} readings)", source=src,
+                                         where=f"line {reader.line_num}")
+                    if any("\n" in c or "\r" in c for c in r):  # a stray quote swallowed line ends
+                        raise InputError("malformed CSV (a quoted cell runs over several lines: a stray '\"'?)",
+                                         source=src, where=f"line {reader.line_num}")
             except csv.Error as exc:
                 raise InputError(f"malformed CSV ({exc})", source=src, where=f"line {reader.line_num}") from None
     except (OSError, UnicodeDecodeError) as exc:

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..display import frame, html_table, one_line
 from ..errors import InputError
 from .effects import library
 from .fit import Block, FitResult, Problem, fit, row_function
@@ -63,7 +64,7 @@ class Accepted:
         return 100.0 * (1.0 - self.cv_after / self.cv_before)
 
 
-@dataclass
+@dataclass(repr=False)
 class Diagnosis:
     plant: object
     obs: list
@@ -91,6 +92,28 @@ class Diagnosis:
     @property
     def gain(self) -> float:
         return 100.0 * (1.0 - self.cv_final / self.cv_baseline) if self.cv_baseline > 0 else 0.0
+
+    def to_frame(self):
+        """pandas DataFrame of the final fit's parameters, one row each: ``effect`` (the accepted effect that
+        owns it, 'baseline' otherwise), ``parameter``, ``label``, ``value`` and ``sigma`` in ``unit``."""
+        from .report import _params
+
+        rows = [{"effect": self.param_owner.get(p["name"], "baseline"), "parameter": p["name"],
+                 "label": p["label"], "value": p["value"], "sigma": p["sigma"], "unit": p["unit"]}
+                for p in _params(self.final)]
+        return frame(rows, ("effect", "parameter", "label", "value", "sigma", "unit"))
+
+    def __repr__(self) -> str:
+        files = ", ".join(str(o.dataset.source) for o in self.obs)
+        return one_line("Diagnosis", repr(getattr(self.plant, "name", "")), {
+            "verdict": self.verdict, "held-out error down": f"{self.gain:.1f} %", "data": files})
+
+    def _repr_html_(self) -> str:
+        from .report import _params
+
+        rows = [{"effect": self.param_owner.get(p["name"], "baseline"), "parameter": p["name"],
+                 "value": p["text"]} for p in _params(self.final)]
+        return html_table(rows, repr(self))
 
 
 def build_problem(ctx, effects, base) -> Problem:
@@ -120,6 +143,11 @@ def _split(obs, v):
         out.append(v[i : i + o.n])
         i += o.n
     return out
+
+
+def split_by_observation(obs, v) -> list:
+    """``v`` (the stacked rows of every observation) cut into one array per observation."""
+    return _split(obs, v)
 
 
 # Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode): the noise

@@ -316,7 +316,10 @@ def fit_controller(rows: Rows) -> Controller | None:
     X, y = X[e:-e], y[e:-e]
     th = _lstsq(X, y)
     res = y - X @ th
-    r2 = 1.0 - float(res @ res) / float(np.sum((y - y.mean()) ** 2))
+    ss = float(np.sum((y - y.mean()) ** 2))
+    if not ss > 0.0:  # a constant effort explains nothing about the controller
+        return None
+    r2 = 1.0 - float(res @ res) / ss
     return Controller(*map(float, th), r2)
 
 
@@ -441,7 +444,8 @@ def predict(rows: Rows, est: Estimate) -> np.ndarray:
 def rel_error(rows: Rows, est: Estimate) -> float:
     """||y - y_hat|| / ||y|| on the kept rows [-]."""
     r = rows.y - predict(rows, est)
-    return float(np.linalg.norm(r) / np.linalg.norm(rows.y))
+    ny = float(np.linalg.norm(rows.y))
+    return float(np.linalg.norm(r) / ny) if ny > 0.0 else float("nan")
 
 
 def rmse(rows: Rows, est: Estimate) -> float:

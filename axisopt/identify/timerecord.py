@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..fileio import MAX_TIME_SAMPLES, read_input
 from ..units import check_plausible, split_header, unit_factor
 
 MIN_SAMPLES = 200
@@ -70,18 +71,20 @@ class TimeRecord:
 
 
 def _header_names(path) -> list:
+    # the stat comes first (a FIFO or device is refused, never opened); then only the head is read
+    text = read_input(path, "time record", what="data file", encoding="utf-8-sig", head=65536)
     try:
-        with Path(path).open(newline="", encoding="utf-8-sig") as fh:
-            for line in fh:
-                if line.strip() and not line.lstrip().startswith("#"):
-                    return [split_header(h)[0] for h in next(csv.reader([line]))]
-    except (OSError, UnicodeDecodeError, csv.Error):
+        for line in text.splitlines():
+            if line.strip() and not line.lstrip().startswith("#"):
+                return [split_header(h)[0] for h in next(csv.reader([line]))]
+    except csv.Error:
         return []
     return []
 
 
 def is_time_record(path) -> bool:
-    """True if the file's header has a ``time`` column and none of the reduced-table test columns."""
+    """True if the file's header has a ``time`` column and none of the reduced-table test columns.  A path
+    that is not a readable regular file within the size cap is an InputError (nothing is opened first)."""
     names = set(_header_names(path))
     return "time" in names and not names & _TABLE_COLUMNS
 
@@ -116,11 +119,7 @@ def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecor
     """Read one time record (see the module docstring).  ``lead`` [m] converts motor angles and chooses
     nothing else; ``gain`` is the CLI's text for current columns (a ``# gain:`` line in the file wins)."""
     src = str(path)
-    try:
-        with Path(path).open(newline="", encoding="utf-8-sig") as fh:
-            raw = fh.read().splitlines()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read data file ({getattr(exc, 'strerror', None) or exc})", source=src) from None
+    raw = read_input(path, "time record", what="data file", encoding="utf-8-sig").splitlines()
     file_gain, gain_line = None, None
     rows = []
     for i, line in enumerate(raw, start=1):
@@ -175,6 +174,8 @@ def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecor
             raise InputError("current column needs a gain: a line '# gain: 0.85 N.m/A' in the file or --gain",
                              source=src, where=f"line {hline}, column {names.index('current') + 1}")
     n = len(rows) - 1
+    if n > MAX_TIME_SAMPLES:
+        raise InputError(f"too many samples ({n:,}; at most {MAX_TIME_SAMPLES:,})", source=src)
     data = np.empty((n, len(cols)))
     lines = np.empty(n, dtype=int)
     for r, (i, text) in enumerate(rows[1:]):
@@ -217,6 +218,14 @@ def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecor
     q = col["position"] * to_q
     ref = col["reference"] * to_q if "reference" in col else None
     effort = col[effort_col] * gscale
+    je = names.index(effort_col) + 1
+    if float(np.ptp(effort)) == 0.0:  # no force signal at all: nothing to fit, no error to divide by
+        raise InputError(f"the {effort_col} column is constant ({data[0, je - 1]:g} throughout): a time record "
+                         "needs the effort of the moving axis", source=src, where=f"column {je} ({effort_col})")
+    if float(np.ptp(q)) == 0.0:
+        jq = names.index("position") + 1
+        raise InputError("the position column is constant: the axis does not move in this record", source=src,
+                         where=f"column {jq} (position)")
     return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note)
 
 

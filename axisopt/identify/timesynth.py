@@ -98,7 +98,9 @@ class Record:
             pos, ref, ph = self.position * 2 * math.pi / lead, self.reference * 2 * math.pi / lead, "rad"
         data = {"time": (self.t, "time [s]", "{:.4f}"), "position": (pos, f"position [{ph}]", "{:.6g}"),
                 "force": (eff, head, "{:.6g}"), "reference": (ref, f"reference [{ph}]", "{:.6g}")}
-        with open(path, "w", newline="") as fh:
+        from ..fileio import open_output
+
+        with open_output(path, "w", what="time record") as fh:
             if effort == "current" and gain is not None:
                 fh.write(f"# gain: {gain} N.m/A\n")
             w = csv.writer(fh)

@@ -91,6 +91,8 @@ class Check:
     unit     : the unit vendors quote the compared values in; ``factor`` converts SI to it
     preload  : how the margin moves with the nut preload (see :data:`OUTPUT_PRELOAD`)
     drive    : a drive check: it applies only when the design has a motor (coupling checks: a coupling)
+    relaxable: a rule with a margin one may trade (False: a compatibility rule, parts that fit or not; an
+               infeasible problem's explanation never proposes relaxing it)
     """
 
     name: str
@@ -100,6 +102,7 @@ class Check:
     factor: float
     preload: int = 0
     drive: bool = False
+    relaxable: bool = True
 
 
 CHECK_TABLE = (
@@ -113,8 +116,9 @@ CHECK_TABLE = (
     Check("nut_lift_off", "nut lift-off force / max axial force", "nut lift-off", "kN", 1e-3, preload=1),
     Check("bearing_lift_off", "bearing lift-off load / max bearing load", "bearing lift-off", "kN", 1e-3),
     Check("bearing_speed", "bearing limiting speed / max screw speed", "bearing speed", "rpm", RPM),
-    Check("bearing_fit", "bearing bore within the screw end's range", "bearing bore (max)", "mm", 1e3),
-    Check("screw_length", "screw max length / needed length", "screw length", "mm", 1e3),
+    Check("bearing_fit", "bearing bore within the screw end's range", "bearing bore (max)", "mm", 1e3,
+          relaxable=False),
+    Check("screw_length", "screw max length / needed length", "screw length", "mm", 1e3, relaxable=False),
     Check("motor_peak_torque", "motor peak torque / peak torque (cycle, thrust)", "motor peak torque", "N.m", 1.0,
           preload=CONVEX, drive=True),
     Check("motor_rated_torque", "motor rated torque / RMS torque, mean thrust", "motor rated torque", "N.m", 1.0,

@@ -76,7 +76,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
     torque = col(bearing, "starting_torque")
     p = {
         "stroke": axis.stroke, "start_offset": axis.start_offset, "span": axis.span,
-        "table_mass": axis.moving_mass, "acceleration": axis.acceleration, "max_speed": axis.max_speed,
+        "table_mass": axis.moving_mass, "acceleration": axis.top_acceleration, "max_speed": axis.top_speed,
         "mean_speed": axis.mean_speed_eff, "axial_load": axis.axial_load,
         "mean_axial_load": axis.mean_axial_load_eff, "required_life": axis.required_life,
         "load_factor": axis.load_factor, "guide_blocks": float(axis.guide_blocks), "rails": float(axis.rails),

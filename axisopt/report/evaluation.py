@@ -8,7 +8,8 @@ import textwrap
 
 import numpy as np
 
-from ..model import CHECK_LABELS, CHECKS, DRIVE_CHECKS, Evaluation, passes
+from ..model import CHECKS, Evaluation, passes
+from ..model.function import NOT_APPLICABLE, check_rows  # noqa: F401  (check_rows: one per check, in model)
 from ..model.limits import CHECK_TABLE
 from ..units import N_PER_UM
 
@@ -19,7 +20,6 @@ WIDTH = 100  # terminal columns the text tables fit
 # short names for tables with one column per design (both declared with the check in model.limits).
 CHECK_UNITS = {c.name: (c.unit, c.factor) for c in CHECK_TABLE}
 CHECK_SHORT = {c.name: c.short for c in CHECK_TABLE}
-NOT_APPLICABLE = 1e8  # a margin at or above this: the check does not apply (or nothing loads it)
 
 
 def fmt_value(x) -> str:
@@ -30,31 +30,6 @@ def fmt_value(x) -> str:
     if abs(x) >= 100:
         return f"{x:,.0f}"
     return f"{x:.3g}"
-
-
-def check_rows(ev: Evaluation) -> list:
-    """One dict per check that applies to the design: ``check``, ``label``, ``available`` and ``needed`` in
-    ``unit``, ``margin`` (available / needed; None when nothing loads it) and ``pass``.  bearing_fit's
-    available value is the range of bores the screw end takes, as ``available_min`` .. ``available``."""
-    d, v = ev.design, ev.values
-    out = []
-    for c in CHECKS:
-        if c in DRIVE_CHECKS and (d.motor is None and not c.startswith("coupling_")
-                                  or c.startswith("coupling_") and d.coupling is None):
-            continue
-        m = float(v[f"margin_{c}"])
-        if c == "brake_holding" and d.axis.orientation != "vertical":
-            continue
-        unit, f = CHECK_UNITS[c]
-        row = {"check": c, "label": CHECK_LABELS[c], "unit": unit,
-               "available": _finite(float(v[f"available_{c}"]) * f), "needed": _finite(float(v[f"needed_{c}"]) * f),
-               "margin": None if m >= NOT_APPLICABLE else _finite(m), "pass": passes(m)}
-        if c == "bearing_fit":
-            row["available_min"] = _finite(float(d.screw["support_bore_min"]) * f)
-        if c == "nut_lift_off" and m >= NOT_APPLICABLE:
-            row["available"] = None  # a single nut has no preload to lose
-        out.append(row)
-    return out
 
 
 def check_lines(ev: Evaluation) -> list:

@@ -20,7 +20,7 @@ import numpy as np
 from ..model.limits import LIMITS
 from ..problem import Problem
 from .core import bound_order_search, certificate, exhaustive_search, polish
-from .result import Binding, Candidate, Certificate, Infeasibility, ParetoFront, SolveResult
+from .result import Binding, Candidate, Certificate, Infeasibility, ParetoFront, Relaxation, SolveResult
 from .space import Constraint, build_constraints, build_space, objective_spec
 
 METHODS = ("default", "exhaustive", "bonmin", "scip")
@@ -97,9 +97,11 @@ def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0
     info["pruned_by_dominance"] = space.pruned_by_dominance
     if not np.isfinite(ex.objective).any():
         from .explain import explain_infeasible
+        from .relax import rank_relaxations
 
         cert = certificate(info, 0, 0, ())
         why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive")
+        why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
         return SolveResult("infeasible", method, problem.name, spec.label, spec.unit, None, [], cert,
                            time.perf_counter() - t0, message="no catalog combination meets every limit",
                            infeasibility=why)
@@ -133,4 +135,4 @@ def limit_sensitivities(problem: Problem, res: SolveResult) -> list:
 
 
 __all__ = ["solve", "METHODS", "SolveResult", "Candidate", "Certificate", "Binding", "Infeasibility",
-           "ParetoFront", "replace"]
+           "ParetoFront", "Relaxation", "replace"]

@@ -20,7 +20,7 @@ from .space import build_constraints, build_space, exact_solve, objective_spec
 
 SENSE = {"stiffness": "max", "frequency": "max", "cost": "min", "total_mass": "min", "moving_mass": "min"}
 UNIT = {"stiffness": "N/um", "frequency": "Hz", "cost": "EUR", "total_mass": "kg", "moving_mass": "kg"}
-_FIELD = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost", "total_mass": "total_mass",
+FIELD = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost", "total_mass": "total_mass",
           "moving_mass": "moving_mass"}
 
 
@@ -110,12 +110,12 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     ok = np.nonzero(ex.feasible)[0]
     cols = []
     for k in keys:
-        v = getattr(ex, _FIELD[k])[ok]
+        v = getattr(ex, FIELD[k])[ok]
         cols.append(v if SENSE[k] == "max" else -v)
     P = np.column_stack(cols) if len(ok) else np.zeros((0, len(keys)))
     front = ok[nondominated(P)] if len(ok) else np.zeros(0, np.int64)
     # sort by the first objective (best first)
-    first = getattr(ex, _FIELD[keys[0]])[front]
+    first = getattr(ex, FIELD[keys[0]])[front]
     front = front[np.argsort(-first if SENSE[keys[0]] == "max" else first, kind="stable")]
     notes = []
     if len(front) > max_points:
@@ -126,7 +126,7 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     info["feasible"] = int(len(ok))
     cert = Certificate(nlps_solved=0, nlp_failures=0, notes=tuple(notes + [f"front size {len(front)}"]), **info)
     sample = ok if len(ok) <= CLOUD else np.random.default_rng(0).choice(ok, CLOUD, replace=False)
-    cloud = np.column_stack([getattr(ex, _FIELD[k])[sample] for k in keys]) if len(ok) else None
+    cloud = np.column_stack([getattr(ex, FIELD[k])[sample] for k in keys]) if len(ok) else None
     pf = ParetoFront(tuple(keys), tuple(SENSE[k] for k in keys), tuple(UNIT[k] for k in keys), pts,
                      feasible=int(len(ok)), cloud=cloud)
     status = "optimal" if len(front) else "infeasible"
@@ -134,27 +134,29 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
                       cert, time.perf_counter() - t0, pareto=pf)
     if not len(front):
         from .explain import explain_infeasible
+        from .relax import rank_relaxations
 
         exhaustive = method == "exhaustive"
         res.infeasibility = explain_infeasible(space, constraints, spec, every_combination=exhaustive)
+        inf = res.infeasibility
+        inf.relax, inf.not_relaxable, inf.relax_blocked_by = rank_relaxations(constraints, inf)
         res.message = "no catalog combination meets every limit"
     return res
 
 
-def plot_pareto(front: ParetoFront, path: str) -> None:
+def plot_pareto(front: ParetoFront, path: str | None = None):
     """Scatter matrix of every objective pair: the non-dominated designs in colour (by the first
     objective), a sample of the feasible designs they dominate in grey, each axis labelled with its unit
-    and whether it is maximised or minimised; the diagonal shows each objective's spread over the front."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    and whether it is maximised or minimised; the diagonal shows each objective's spread over the front.
+    Returns the matplotlib Figure (not registered with pyplot); written to ``path`` only when given."""
+    from matplotlib.figure import Figure
 
     keys, d = front.keys, len(front.keys)
-    F = np.array([[getattr(p, _FIELD[k]) for k in keys] for p in front.points]).reshape(-1, d)
+    F = np.array([[getattr(p, FIELD[k]) for k in keys] for p in front.points]).reshape(-1, d)
     C = np.asarray(front.cloud, dtype=float).reshape(-1, d) if front.cloud is not None else np.zeros((0, d))
     size = 2.6 * d if d > 2 else 5.5
-    fig, axes = plt.subplots(d, d, figsize=(size + 1.0, size), squeeze=False)
+    fig = Figure(figsize=(size + 1.0, size))
+    axes = fig.subplots(d, d, squeeze=False)
     label = [f"{k.replace('_', ' ')} [{u}] ({'max' if s == 'max' else 'min'})"
              for k, u, s in zip(keys, front.units, front.senses)]
     sc = None
@@ -181,6 +183,8 @@ def plot_pareto(front: ParetoFront, path: str) -> None:
     if sc is not None:
         fig.colorbar(sc, ax=axes, label=label[0], shrink=0.8)
     fig.suptitle(f"Pareto front: {len(front.points)} non-dominated of {front.feasible:,} feasible designs")
-    from ..fileio import save_figure
+    if path is not None:
+        from ..fileio import save_figure
 
-    save_figure(fig, path)
+        save_figure(fig, path)
+    return fig
