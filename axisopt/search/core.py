@@ -480,7 +480,7 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
                     source=space.problem.source, assumed=space.problem.assumed)
     ev = model.evaluate(design)
     v = ev.values
-    J = float(objective.value({k: np.asarray(v[k]) for k in ("k_total", "f1")}))
+    J = float(objective.value({k: np.asarray(v[k]) for k, _ in objective.terms}))
     return Candidate(rank=rank, combination=int(combo), mounting=mounting, screw=str(screw["id"]),
                      nut=str(nut["id"]), bearing=str(bearing["id"]), guide=str(guide["id"]), nut_preload=preload,
                      motor="" if motor is None else str(motor["id"]),
