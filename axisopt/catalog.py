@@ -96,7 +96,7 @@ COLUMNS = MappingProxyType({
         _c("normal_rigidity", "stiffness", "guide_normal_stiffness", positive=True),
         _c("tangential_rigidity", "stiffness", "guide_tangential_stiffness", positive=True),
         _c("dynamic_load_rating", "force", "guide_dynamic_load", positive=True),
-        _c("static_load_rating", "force"),
+        _c("static_load_rating", "force", "guide_static_load", positive=True),
         _c("friction_force", "force", "guide_friction_force"),
         _c("friction_coefficient", "dimensionless", "guide_friction_coefficient"),
         _c("friction_viscous", "damping", "guide_friction_viscous"),
@@ -104,6 +104,11 @@ COLUMNS = MappingProxyType({
         _c("rail_mass_per_length", "mass_per_length", "guide_rail_mass_per_length"),
         _c("block_price", "money", "guide_block_price"),
         _c("rail_price_per_length", "money_per_length", "guide_rail_price_per_length"),
+        # static permissible moments of one block (vendor tables: HIWIN MR/MP/MY, IKO T0/TX/TY, NBS M0X/M0Z/M0Y):
+        # the block-load method needs them for one block per rail or one rail (THK K = C0 / M)
+        _c("moment_roll", "torque", "guide_moment_roll", positive=True),
+        _c("moment_pitch", "torque", "guide_moment_pitch", positive=True),
+        _c("moment_yaw", "torque", "guide_moment_yaw", positive=True),
     ),
     # Drive parts (servo motors, shaft couplings).  Optional tables: a catalog directory may leave them out.
     "motors": (

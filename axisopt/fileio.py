@@ -21,12 +21,12 @@ INPUT_LIMITS = {
     "yaml": 20_000_000,  # design, problem, study, calibration YAML
     "catalog": 50_000_000,  # one catalog CSV
     "data": 10_000_000,  # a reduced-table diagnose CSV (static, friction, frequency, FRF)
-    "time record": 100_000_000,  # a diagnose time record
+    "time record": 40_000_000,  # a diagnose time record
     "case": 20_000_000,  # a study's case record (JSON)
 }
 # Rows of the diagnose files (the fits grow faster than linearly with them)
 MAX_DATA_ROWS = 50_000
-MAX_TIME_SAMPLES = 2_000_000
+MAX_TIME_SAMPLES = 500_000
 
 _KIND_NAMES = {_stat.S_IFIFO: "a FIFO (named pipe)", _stat.S_IFCHR: "a character device",
                _stat.S_IFBLK: "a block device", _stat.S_IFSOCK: "a socket", _stat.S_IFDIR: "a directory",

@@ -65,7 +65,7 @@ from .model import CHECKS
 from .model.limits import LIMITS
 from .yamlio import Key, Section, Spec, close_matches, read_yaml
 
-OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto", "kv")
+OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto", "tool_stiffness", "kv")
 PERFORMANCE = ("stiffness", "frequency")
 PARETO_KEYS = ("stiffness", "frequency", "cost", "total_mass", "moving_mass", "mass")
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")
@@ -96,9 +96,9 @@ class Objective:
             return " then ".join(f"max min {k}" for k in self.order) + f" (tolerance {self.tolerance:g})"
         if self.mode == "pareto":
             return "Pareto front of " + ", ".join(self.pareto)
-        names = {"stiffness": "axial stiffness", "frequency": "first natural frequency",
-                 "kv": "achievable position-loop gain Kv"}
-        return f"maximise minimum {names[self.mode]}"
+        what = {"stiffness": "axial stiffness", "frequency": "first natural frequency",
+                "tool_stiffness": "stiffness at the tool", "kv": "achievable position-loop gain Kv"}[self.mode]
+        return f"maximise minimum {what}"
 
 
 def _fmt_si(key, value):
@@ -254,7 +254,7 @@ PROBLEM_SPEC = Spec("problem", "a sizing problem: the axis, the objective, limit
     "axis": Key("section", "as in a design (axis.mounting is the default mounting)", required=True,
                 spec=AXIS_SPEC),
     "objective": Key("one_of", "what to maximise (default: stiffness)",
-                     options=(Key("choice", "a mode without options", choices=PERFORMANCE),
+                     options=(Key("choice", "a mode without options", choices=PERFORMANCE + ("tool_stiffness",)),
                               Key("section", spec=OBJECTIVE_SPEC))),
     "limits": Key("section", spec=LIMITS_SPEC),
     "catalog": Key("section", spec=RESTRICTIONS_SPEC),

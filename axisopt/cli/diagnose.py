@@ -19,7 +19,7 @@ def cmd_diagnose(args) -> int:
     from ..identify import diagnose, plant_from_design, read_dataset
     from ..identify.calibration import save_calibration
     from ..identify.effects import library
-    from ..identify.report import diagnosis_dict, diagnosis_text, write_report
+    from ..report.diagnosis import diagnosis_dict, diagnosis_text, write_report
 
     html = args.report is not None and str(args.report).lower().endswith((".html", ".htm"))
     if html:
@@ -98,7 +98,7 @@ def register(sub) -> None:
     d.add_argument(
         "--effects", metavar="A,B", help="only consider these effects (default: the whole library)"
     )
-    d.add_argument("--max-effects", type=int, default=2, metavar="N", help="accept at most N effects (2)")
+    d.add_argument("--max-effects", type=int, default=3, metavar="N", help="accept at most N effects (3)")
     d.add_argument("--gain", metavar="'0.85 N.m/A'",
                    help="time records with a current column: torque (N.m/A) or force (N/A) per ampere, for files "
                         "without a '# gain:' line")

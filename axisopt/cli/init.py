@@ -187,7 +187,7 @@ continuous:
   screw: HIWIN-G-50x40-b6p35
   nut: HIWIN-R50-40K3-FDC
   bearing: HIWIN-WBK40-DFD
-  guide: HIWIN-HG15-ZA
+  guide: HIWIN-HG25-ZA        # size 25 under an 800 kg gantry: HG15 misses its life under the cut
   motor: HC452
   coupling: RINGFEDER-GWB-AKN-300
   nut_preload: 4300 N

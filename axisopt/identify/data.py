@@ -256,6 +256,7 @@ def read_dataset(path) -> Dataset:
         zero = (columns["velocity"] == 0.0) & keep
         excluded += [(int(i), "velocity 0: friction direction undefined") for i in lines[zero]]
         keep &= ~zero
+        _check_friction_sign(columns, keep, lines, names, src)
     if kind == "frf":
         if "magnitude" in columns:
             mag, ph = columns.pop("magnitude"), columns.pop("phase")
@@ -278,6 +279,30 @@ def read_dataset(path) -> Dataset:
         raise InputError("every row is excluded", source=src)
     columns = {k: v[keep] for k, v in columns.items()}
     return Dataset(kind, src, columns, lines[keep], sorted(excluded))
+
+
+def _check_friction_sign(columns, keep, lines, names, src) -> None:
+    """A friction table takes the signed force (or torque) the drive supplies: negative at negative velocity.
+    Magnitudes given with a signed velocity -- positive on both sides and about equal there, where a real
+    friction's odd part (its Coulomb level) would be -- would fit a Coulomb level of about zero and a spurious
+    offset: refused with the convention.  (A vertical axis whose weight exceeds its friction is positive on
+    both sides too, but differs between them by twice the friction, and passes.)"""
+    meas = "friction_force" if "friction_force" in columns else "drag_torque"
+    v, f = columns["velocity"][keep], columns[meas][keep]
+    neg, pos = v < 0, v > 0
+    if neg.sum() < 2 or pos.sum() < 2:
+        return
+    if np.mean(f[neg] > 0) < 0.95 or np.mean(f[pos] > 0) < 0.95:
+        return
+    fp, fn = float(np.median(f[pos])), float(np.median(f[neg]))
+    if abs(fp - fn) / 2 >= 0.25 * (fp + fn) / 2:
+        return
+    i = int(np.nonzero(neg & (f > 0))[0][0])
+    raise InputError(
+        f"{meas} is positive at negative velocity and about equal in both directions ({fn:.4g} against "
+        f"{fp:.4g}): a magnitude? A friction table takes the signed value the drive supplies, negative at "
+        f"negative velocity (F(|v|) sgn v)",
+        source=src, where=f"line {lines[keep][i]}, column {names.index(meas) + 1} ({meas})")
 
 
 def write_dataset(ds: Dataset, path, units: dict | None = None) -> None:

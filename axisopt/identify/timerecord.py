@@ -12,6 +12,9 @@ Format (units in the headers, any unit of the quantity)::
   table travel through the screw lead.  ``reference`` (optional) takes the same kind of unit.
 * exactly one effort column: ``force [N]`` (table side), ``torque [N.m]`` (motor side) or ``current [A]``
   with a gain in ``N.m/A`` (motor torque) or ``N/A`` (table force).
+* ``external_force [N]`` (optional): a process force acting on the table (cutting, a spring, a weight),
+  positive in +x.  The drive then supplies f = M a + F(v) - F_ext, so the identification fits f + F_ext;
+  for torque records the force is taken to the motor as F_ext p / (2 pi eta) (lead p, screw efficiency eta).
 
 The identification keeps the input's quantity: force data is identified in table coordinates (q [m],
 M [kg], Fv [N s/m], Fc [N]); torque data in motor coordinates (q [rad], J [kg m^2], Fv [N m s/rad],
@@ -34,7 +37,9 @@ from ..units import check_plausible, split_header, unit_factor
 
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
-COLUMNS = ("time", "position", "reference") + EFFORTS
+COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force",)
+# angle units spelled as revolutions that the unit library does not know (it knows 'turn')
+_REV = {"rev": "turn", "revs": "turn", "revolution": "turn", "revolutions": "turn"}
 CURRENT_UNITS = {"A": 1.0, "mA": 1e-3, "kA": 1e3}
 _GAIN_LINE = re.compile(r"^\s*#\s*gain\s*:\s*(.+?)\s*$", re.IGNORECASE)
 _NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.+?)\s*$")
@@ -56,6 +61,7 @@ class TimeRecord:
     effort_column: str
     lines: np.ndarray
     gain_note: str = ""
+    external: np.ndarray | None = None  # external force on the table in the effort's coordinate [N] or [N m]
 
     @property
     def n(self) -> int:
@@ -90,7 +96,8 @@ def is_time_record(path) -> bool:
 
 
 # SI kind of each column, for the range check of every cell (current has no kind: its gain gives it one)
-_KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque"}
+_KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque",
+         "external_force": "force"}
 
 
 def parse_gain(text: str, *, source=None, where=None) -> tuple:
@@ -115,9 +122,10 @@ def parse_gain(text: str, *, source=None, where=None) -> tuple:
     raise bad
 
 
-def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecord:
+def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: float = 1.0) -> TimeRecord:
     """Read one time record (see the module docstring).  ``lead`` [m] converts motor angles and chooses
-    nothing else; ``gain`` is the CLI's text for current columns (a ``# gain:`` line in the file wins)."""
+    nothing else; ``gain`` is the CLI's text for current columns (a ``# gain:`` line in the file wins);
+    ``efficiency`` takes an external force to the motor side of a torque record."""
     src = str(path)
     raw = read_input(path, "time record", what="data file", encoding="utf-8-sig").splitlines()
     file_gain, gain_line = None, None
@@ -226,7 +234,10 @@ def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecor
         jq = names.index("position") + 1
         raise InputError("the position column is constant: the axis does not move in this record", source=src,
                          where=f"column {jq} (position)")
-    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note)
+    ext = None
+    if "external_force" in col:
+        ext = col["external_force"] * (1.0 if quantity == "force" else lead / (2.0 * math.pi * efficiency))
+    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext)
 
 
 def _factor(name, unit, src, where, lead) -> float:
@@ -238,8 +249,8 @@ def _factor(name, unit, src, where, lead) -> float:
             try:
                 return unit_factor(unit, "length")
             except ValueError:
-                return unit_factor(unit, "angle") * lead / (2.0 * math.pi)
-        if name == "force":
+                return unit_factor(_REV.get(unit.strip(), unit), "angle") * lead / (2.0 * math.pi)
+        if name in ("force", "external_force"):
             return unit_factor(unit, "force")
         if name == "torque":
             return unit_factor(unit, "torque")

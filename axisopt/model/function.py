@@ -17,7 +17,7 @@ from .response import axis_response
 
 PROFILE_OUTPUTS = ("k_screw", "k_screw_bearings", "k_torsion", "k_drive", "k_total", "f_axial", "f1", "m_eff",
                    "thermal_displacement", "f_axial_torsional", "f_axial_torsional_2", "damping_ratio",
-                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure", "kv")
+                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure", "k_tool", "kv")
 SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_bracket", "c_housing", "f_table",
                   "drag_torque", "drag_nut", "drag_bearings", "drag_guides", "moving_mass", "total_mass",
                   "screw_mass", "cost",
@@ -27,7 +27,9 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "bearing_max_load", "load_inertia", "total_inertia", "inertia_ratio", "motor_speed", "peak_torque",
                   "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque",
                   "gravity_torque",
-                  "duty_time") + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
+                  "duty_time", "guide_max_load", "guide_static_safety", "guide_mean_load", "nut_static_safety",
+                  "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking",
+                  ) + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
 
 
 @dataclass

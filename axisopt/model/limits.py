@@ -23,8 +23,8 @@ CONVEX = 2  # a preload direction: the output is convex in the nut preload (met 
 # falls, and the motor torques are convex (the nut's drag raises the torque of some phases of the cycle and
 # lowers that of others: deceleration, lowering a vertical axis).
 OUTPUT_PRELOAD = MappingProxyType({
-    "k_total": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1, "life": -1,
-    "kv": 1,
+    "k_total": 1, "k_tool": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
+    "life": -1, "kv": 1,
 })
 
 
@@ -75,6 +75,9 @@ LIMIT_TABLE = (
           "axial play of the nut at most this (default 0: preloaded nuts only)", zero_ok=True, default=0.0),
     Limit("max_inertia_ratio", "inertia_ratio", "<=", "dimensionless", "", 1.0,
           "load / rotor inertia ratio at the motor at most this"),
+    Limit("min_tool_stiffness", "k_tool", ">=", "stiffness", "N/um", 1e6,
+          "stiffness in the feed direction at the cutting point: the axial chain in series with the table "
+          "pitching and yawing on its blocks (minimum over the stroke)"),
     Limit("min_kv", "kv", ">=", "frequency", "1/s", 1.0,
           "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, model.servo)"),
 )
@@ -128,6 +131,8 @@ CHECK_TABLE = (
     Check("coupling_torque", "coupling rated torque / motor peak torque", "coupling torque", "N.m", 1.0,
           drive=True),
     Check("coupling_speed", "coupling max speed / max screw speed", "coupling speed", "rpm", RPM, drive=True),
+    Check("guide_static", "guide block C0 / (least f_S x largest block load)", "guide static", "kN", 1e-3),
+    Check("nut_static", "nut C0a / (least f_S x largest axial force)", "nut static", "kN", 1e-3),
 )
 CHECK_RECORDS = MappingProxyType({c.name: c for c in CHECK_TABLE})
 

@@ -103,6 +103,13 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "axial_torsional_frequency_Hz": np.asarray(v["f_axial_torsional"]).tolist(),
         "damping_ratio": np.asarray(v["damping_ratio"]).tolist(),
         "assumed_defaults": list(ev.design.assumed),
+        # carriage (issue 25)
+        "min_tool_stiffness_N_per_um": ev.minimum("k_tool")[0] / N_PER_UM,
+        "tool_stiffness_N_per_um": (np.asarray(v["k_tool"]) / N_PER_UM).tolist(),
+        "guide_rocking_compliance_um_per_kN": v["c_rocking"] * 1e9,
+        "pitch_mode_Hz": v["f_pitch"], "yaw_mode_Hz": v["f_yaw"],
+        "guide_max_block_load_N": v["guide_max_load"], "guide_static_safety": v["guide_static_safety"],
+        "guide_mean_block_load_N": v["guide_mean_load"], "nut_static_safety": v["nut_static_safety"],
         "servo": servo_dict(servo_response(ev), v["kv"]),
     }
 
@@ -171,11 +178,25 @@ def evaluation_table(ev: Evaluation) -> str:
                      f"{k_tot / k_sb * 100:>7.0f}%  (in place of the two rows above)")
     lines.append(f"  {'total':<34}{k_tot / N_PER_UM:>10,.1f}{1e9 / k_tot:>9.2f}")
     lines.append(f"  {'table on guides':<34}{'':>10}  (table mode {v['f_table']:.0f} Hz)")
+    # the stiffness at the cutting point: the chain in series with the table rocking on its blocks (issue 25)
+    k_tool = float(np.asarray(v["k_tool"])[i_min])
+    c_rock = float(v["c_rocking"])
+    rock = f"{1 / c_rock / N_PER_UM:>10,.1f}{c_rock * 1e9:>9.2f}" if c_rock > 0 else f"{'rigid':>10}{'0':>9}"
+    lines.append(f"  {'guides pitch/yaw x lever^2':<34}{rock}  (tool {a.tool_height_eff * 1e3:.0f} mm up, "
+                 f"{a.tool_offset * 1e3:.0f} mm across)")
+    lines.append(f"  {'stiffness at the tool':<34}{k_tool / N_PER_UM:>10,.1f}{1e9 / k_tool:>9.2f}  (pitch "
+                 f"{v['f_pitch']:.0f} Hz, yaw {v['f_yaw']:.0f} Hz)")
+    lines.extend(textwrap.wrap(
+        f"carriage: largest block load {v['guide_max_load'] / 1e3:.2f} kN, guide static safety f_S "
+        f"{v['guide_static_safety']:.1f} (least {a.guide_static_safety:g}); mean block load "
+        f"{v['guide_mean_load'] / 1e3:.2f} kN; nut static safety {v['nut_static_safety']:.1f} "
+        f"(least {a.nut_static_safety:g})", WIDTH, initial_indent="  ", subsequent_indent="    "))
     lines.append("")
     lines.append(f"{'over the stroke':<22}{'start':>10}{'middle':>10}{'end':>10}{'minimum':>10}{'at [mm]':>9}")
     s = ev.x - a.start_offset
     idx = [0, int(np.argmin(np.abs(s - a.stroke / 2))), len(s) - 1]
-    rows = (("k_total", "axial stiffness N/um", N_PER_UM), ("f1", "1st frequency Hz", 1.0),
+    rows = (("k_total", "axial stiffness N/um", N_PER_UM), ("k_tool", "tool stiffness N/um", N_PER_UM),
+            ("f1", "1st frequency Hz", 1.0),
             ("f_axial_torsional", "axial-torsional Hz", 1.0), ("damping_ratio", "damping ratio %", 0.01))
     for key, label, scale in rows:
         arr = np.asarray(v[key])

@@ -338,7 +338,7 @@ def diagnose_page(diag, text: str) -> Page:
     from plotly.subplots import make_subplots
 
     from ..identify.diagnose import split_by_observation as _split
-    from ..identify.report import FACTOR_DISPLAY, Y_UNIT, diagnosis_dict
+    from .diagnosis import FACTOR_DISPLAY, Y_UNIT, diagnosis_dict
 
     d = diagnosis_dict(diag)
     page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why")

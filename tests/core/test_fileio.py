@@ -233,6 +233,15 @@ def test_diagnose_row_cap(tmp_path, capsys, monkeypatch):
     assert "too many rows" in _one_line_error(capsys)
 
 
+def test_time_record_sample_cap(capsys, monkeypatch):
+    import axisopt.identify.timerecord as tr
+
+    monkeypatch.setattr(tr, "MAX_TIME_SAMPLES", 300)
+    data = PROBLEMS / "data"
+    assert main(["diagnose", str(data / "table_x_run_est.csv"), "--design", str(data / "table_x.yaml")]) == 2
+    assert "too many samples" in _one_line_error(capsys)
+
+
 def test_stray_quote_in_diagnose_csv_is_one_line(tmp_path, capsys):
     lines = (PROBLEMS / "data" / "table_x_stiffness.csv").read_text().splitlines()
     lines[5] = lines[5].replace(",", ',"', 1)
