@@ -7,6 +7,7 @@ from types import MappingProxyType
 import numpy as np
 
 from ..catalog import COLUMNS
+from ..physics.bearings import support_starting_torque_envelope
 
 PARAM_NAMES = (
     # axis
@@ -51,6 +52,10 @@ _RULE_COLUMNS = MappingProxyType({
 })
 
 
+# rule columns and the parameter each one ends in (for naming the estimates a result rests on, model.estimates)
+RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque"})
+
+
 def columns_read(table: str) -> tuple:
     """The numeric columns of a part table the model reads (what a vectorized search keeps as arrays)."""
     direct = tuple(c for c, _ in PART_PARAMS[table])
@@ -88,11 +93,13 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
     for table, row in (("screws", screw), ("nuts", nut), ("bearings", bearing), ("guides", guide)):
         for column, param in PART_PARAMS[table]:
             p[param] = col(row, column)
+    dm = 0.5 * (col(bearing, "bore") + col(bearing, "outer_diameter"))
     p.update({
         "nut_double": _is_type(nut, "double"),
-        "bearing_mean_diameter": 0.5 * (col(bearing, "bore") + col(bearing, "outer_diameter")),
-        # starting torque of the support unit where its vendor lists it (eq. 40 otherwise)
-        "bearing_torque": _listed_or(torque, 0.0),
+        "bearing_mean_diameter": dm,
+        # starting torque of the support unit where its vendor lists it; else the upper envelope of the vendor
+        # values per preload and mean diameter (physics.bearings.support_starting_torque_envelope)
+        "bearing_torque": _listed_or(torque, support_starting_torque_envelope(p["bearing_preload"], dm)),
         "bearing_torque_listed": np.isfinite(torque) * 1.0,
         "guide_roller": _is_type(guide, "roller"),
     })

@@ -403,6 +403,18 @@ class Space:
                 None if ci is None else self.couplings.iloc[ci])
 
 
+def vendor_filled(df: pd.DataFrame, table: str) -> pd.DataFrame:
+    """The rows of a part table with a vendor value in every column the model would otherwise estimate
+    (``catalog.COLUMNS``: an optional column with an ``estimate``)."""
+    from ..catalog import COLUMNS
+
+    keep = np.ones(len(df), dtype=bool)
+    for c in COLUMNS[table]:
+        if c.estimate and c.name in df.columns:
+            keep &= np.isfinite(df[c.name].to_numpy(dtype=float))
+    return df[keep]
+
+
 def build_space(problem: Problem) -> Space:
     cat = problem.catalog
     r = problem.restrictions
@@ -422,6 +434,9 @@ def build_space(problem: Problem) -> Space:
 
     screws, nuts = by_status(screws, "screw"), by_status(nuts, "nut")
     bearings, guides = by_status(bearings, "bearing"), by_status(guides, "guide")
+    if r.estimated == "exclude":  # vendor values only: no row with an empty cell the model would estimate
+        screws, nuts = vendor_filled(screws, "screws"), vendor_filled(nuts, "nuts")
+        bearings, guides = vendor_filled(bearings, "bearings"), vendor_filled(guides, "guides")
     if r.nut_types is not None:
         nuts = nuts[nuts["type"].isin(r.nut_types)]
     if r.bearing_arrangements is not None:
@@ -506,6 +521,8 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     motors = _filtered(cat.motors, r, "motor", r.motor_series, r.motor_vendors)
     if r.max_motor_flange is not None:  # a motor without a listed flange cannot be shown to fit
         motors = motors[(motors["flange"] <= r.max_motor_flange * (1 + 1e-9)).to_numpy()]
+    if r.estimated == "exclude":
+        motors = vendor_filled(motors, "motors")
     couplings = _filtered(cat.couplings, r, "coupling", r.coupling_series)
     n_couplings = len(couplings)
     if len(couplings) and not r.required("coupling"):

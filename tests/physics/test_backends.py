@@ -114,6 +114,7 @@ CASES = [
             f0=4.0, f1=3e-4, viscosity=(1e-6, 30e-6, 100e-6), speed=20.0, mean_diameter=0.05, load=2000.0
         ),
     ),
+    case(bearings.support_starting_torque_envelope, kw=dict(preload=(500.0, 2000.0, 3900.0), mean_diameter=0.056)),
     case(guides.guide_tangential_stiffness, kw=dict(normal_stiffness=4e8)),
     case(guides.guide_ball_stiffness, kw=dict(preload_per_ball=50.0, deflection_constant=1e-7)),
     case(
