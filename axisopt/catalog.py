@@ -52,12 +52,12 @@ class Column:
     def estimated_in(self, status: str, source: str = "") -> str:
         """How this column's value is estimated in a row of ``status`` and ``source`` ('' : the vendor's)."""
         if status in self.estimated_when:
-            return self.estimated_how or f"derived ({status} row, catalogs/SOURCES.md)"
+            return self.estimated_how or f"{status} row, catalogs/SOURCES.md"
         if self.derived_marker and source:
             for part in str(source).split(";"):
                 words = part.replace(",", " ").split()
                 if self.derived_marker in words and "derived" in words[words.index(self.derived_marker):]:
-                    return f"derived ({part.strip()}; catalogs/SOURCES.md)"
+                    return f"{part.strip()} (catalogs/SOURCES.md)"
         return ""
 
 
@@ -112,7 +112,7 @@ COLUMNS = MappingProxyType({
         _c("static_load_rating", "force"),
         _c("limiting_speed", "angular_speed", "bearing_limiting_speed", **_DERIVED, derived_marker="speed"),
         _c("starting_torque", "torque", optional=True,
-           estimate="upper envelope of the vendor starting torques per preload x mean diameter (3.72e-3 F_pr d_m)"),
+           estimate="vendor envelope 3.72e-3 x preload x mean diameter"),
         _c("f0", "dimensionless", "bearing_f0"), _c("f1", "dimensionless", "bearing_f1"),
         _c("mass", "mass", "bearing_mass"), _c("price", "money", "bearing_price", **_PRICE),
     ),

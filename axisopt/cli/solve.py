@@ -244,7 +244,8 @@ def estimated_lines(estimated) -> list:
     for r in estimated:
         vals = "; ".join(f"{e['slot']} {e['part']} {e['column']} {_num(e['shown'])} {e['unit']} ({e['how']})"
                          for e in r["estimates"])
-        out.append(f"    {r['what']} ({r['output']}): {vals}")
+        out.extend(textwrap.wrap(f"{r['what']} ({r['output']}): {vals}", 100, initial_indent="    ",
+                                 subsequent_indent="        "))
     return out
 
 

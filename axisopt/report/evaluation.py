@@ -126,6 +126,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "axial_torsional_frequency_Hz": np.asarray(v["f_axial_torsional"]).tolist(),
         "damping_ratio": np.asarray(v["damping_ratio"]).tolist(),
         "assumed_defaults": list(ev.design.assumed),
+        "estimated": [e.to_dict() | {"moves": w} for e, w in estimates(ev) if w],
     }
 
 
@@ -221,7 +222,39 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.append("")
     lines.extend(drive_lines(ev))
     lines.extend(check_lines(ev))
+    lines.extend(estimate_lines(ev))
     return "\n".join(lines)
+
+
+# outputs an evaluation names the estimates of (besides the checks near their limit)
+_EST_OUTPUTS = (("k_total", "min stiffness"), ("f1", "min frequency"), ("drag_torque", "drag torque"),
+                ("life", "nut life"))
+NEAR_LIMIT = 1.1  # a check with margin below this counts as near its limit
+
+
+def estimates(ev: Evaluation) -> list:
+    """[(Estimate, [what it moves])] for the design's estimated part values except prices (which move only the
+    cost and are always illustrative): the key outputs and the checks within 10 % of their limit."""
+    from ..model.estimates import design_estimates, resting_on
+
+    est = [e for e in design_estimates(ev.design) if "price" not in e.column]
+    if not est:
+        return []
+    near = [f"margin_{c}" for c in CHECKS if float(ev.values[f"margin_{c}"]) < NEAR_LIMIT]
+    names = dict(_EST_OUTPUTS) | {m: f"check {m[7:].replace('_', ' ')}" for m in near}
+    moved = resting_on(ev.design, list(names), est)
+    return [(e, [names[o] for o in names if any(x is e for x in moved.get(o, ()))]) for e in est]
+
+
+def estimate_lines(ev: Evaluation) -> list:
+    rows = [(e, w) for e, w in estimates(ev) if w]
+    if not rows:
+        return []
+    out = ["", "estimated values (not in the vendor's table; catalogs/SOURCES.md) and what they move:"]
+    for e, what in rows:
+        out.extend(textwrap.wrap(f"{e.slot} {e.part} {e.column} {e.shown:.4g} {e.unit} ({e.how}) moves "
+                                 f"{', '.join(what)}", WIDTH, initial_indent="  ", subsequent_indent="      "))
+    return out
 
 
 
