@@ -142,6 +142,11 @@ COLUMNS = MappingProxyType({
         _c("rotor_inertia_brake", "inertia", optional=True), _c("brake_torque", "torque", optional=True),
         _c("mass", "mass", optional=True), _c("flange", "length", optional=True),
         _c("price", "money", "motor_price", **_PRICE),
+        # intermittent (peak) zone of the vendor's torque-speed curve: peak torque flat up to the corner speed,
+        # then falling linearly to its value at max speed (physics.drive.peak_torque_available)
+        _c("peak_corner_speed", "angular_speed", optional=True,
+           estimate="min(rated speed, max speed / 2): Mitsubishi MDS-D-SVJ3 sec. 7-1 (2)"),
+        _c("peak_torque_at_max_speed", "torque", optional=True, estimate="rated torque (peak falls to rated)"),
     ),
     "couplings": (
         *(_c(n, "str") for n in _TEXT),
@@ -179,7 +184,8 @@ OPTIONAL_COLUMNS = MappingProxyType({t: tuple(c.name for c in cols if c.optional
 # Pairs (low, high) that a row must keep in order: a one-line error names the row otherwise.
 _ORDERED = {
     "motors": (("rated_torque", "peak_torque"), ("rated_speed", "max_speed"),
-               ("rotor_inertia", "rotor_inertia_brake")),
+               ("rotor_inertia", "rotor_inertia_brake"), ("peak_corner_speed", "max_speed"),
+               ("peak_torque_at_max_speed", "peak_torque")),
     "couplings": (("bore_min", "bore_max"),),
     "nuts": (("preload_min", "preload_max"),),
 }
@@ -305,7 +311,9 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
         except ValueError as exc:
             raise InputError(f"{exc} in column '{col}'", source=src, where=f"line 1, column {j}") from None
         cols.append((col, factor, kind))
-    missing = [c for c in schema if c not in seen]
+    # an optional column with an estimate may be left out of the header: every row then takes the estimate
+    omitted = [c.name for c in COLUMNS[name] if c.optional and c.estimate and c.name not in seen]
+    missing = [c for c in schema if c not in seen and c not in omitted]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)}", source=src, where="line 1")
 
@@ -316,7 +324,7 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
             continue
         if len(row) != len(cols):
             raise InputError(f"has {len(row)} cells, header has {len(cols)}", source=src, where=f"line {i}")
-        rec = {}
+        rec = dict.fromkeys(omitted, math.nan)
         for j, ((col, factor, kind), cell) in enumerate(zip(cols, row), start=1):
             cell = cell.strip()
             where = f"line {i}, column {j} ({col})"

@@ -36,6 +36,9 @@ G = 9.80665
 # safety: no vendor figure was retrieved; 2 x the gravity torque is our assumption, set axis.brake_safety.
 MAX_INERTIA_RATIO = 5.0
 BRAKE_SAFETY = 2.0
+# RMS torque / rated torque: Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <=
+# 0.8 Tst" (stall torque); taken against the rated torque, which is at most the stall torque (issue 26).
+RMS_TORQUE_RATIO = 0.8
 BRAKE_MODES = ("auto", "yes", "no")
 
 
@@ -79,6 +82,7 @@ class Axis:
     max_inertia_ratio: float = MAX_INERTIA_RATIO  # load / rotor inertia at the motor
     brake: str = "auto"  # holding brake: auto (vertical axes), yes, no
     brake_safety: float = BRAKE_SAFETY  # brake holding torque / gravity torque
+    rms_torque_ratio: float = RMS_TORQUE_RATIO  # largest RMS torque / rated torque of the motor
 
     @property
     def span(self) -> float:
@@ -209,10 +213,13 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                  options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
     "brake_safety": Key("number", "brake holding torque / gravity torque", positive=True, minimum=1.0,
                         maximum=10.0),
+    "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
+                            "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
+                            maximum=1.0),
 })
 _AXIS_KINDS = {name: k.kind for name, k in AXIS_SPEC.keys.items() if k.type == "quantity"}
 _AXIS_REQUIRED = tuple(name for name, k in AXIS_SPEC.keys.items() if k.required)
-_AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reduction_efficiency")
+_AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reduction_efficiency", "rms_torque_ratio")
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:

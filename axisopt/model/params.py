@@ -8,6 +8,7 @@ import numpy as np
 
 from ..catalog import COLUMNS
 from ..physics.bearings import support_starting_torque_envelope
+from ..physics.drive import PEAK_CORNER_FRACTION
 
 PARAM_NAMES = (
     # axis
@@ -36,7 +37,7 @@ PARAM_NAMES = (
     "rotor_inertia", "has_motor", "motor_rated_torque", "motor_peak_torque", "motor_max_speed",
     "motor_brake_torque", "motor_price", "has_coupling", "coupling_rated_torque", "coupling_max_speed",
     "coupling_price", "reduction_ratio", "reduction_efficiency", "reduction_inertia", "max_inertia_ratio",
-    "brake_safety",
+    "brake_safety", "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed",
 )
 
 
@@ -47,13 +48,16 @@ PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.pa
 # numeric columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice)
 _RULE_COLUMNS = MappingProxyType({
     "screws": (), "nuts": (), "bearings": ("bore", "outer_diameter", "starting_torque"), "guides": (),
-    "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque"),
+    "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
+               "peak_corner_speed", "peak_torque_at_max_speed"),
     "couplings": ("torsional_stiffness", "inertia"),
 })
 
 
 # rule columns and the parameter each one ends in (for naming the estimates a result rests on, model.estimates)
-RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque"})
+RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque",
+                                ("motors", "peak_corner_speed"): "motor_peak_corner_speed",
+                                ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed"})
 
 
 def columns_read(table: str) -> tuple:
@@ -121,11 +125,12 @@ def drive_params(axis, motor, coupling) -> dict:
     ratio = axis.reduction_ratio
     q = {"reduction_ratio": ratio, "reduction_efficiency": axis.reduction_efficiency,
          "reduction_inertia": axis.reduction_inertia, "max_inertia_ratio": axis.max_inertia_ratio,
-         "brake_safety": axis.brake_safety}
+         "brake_safety": axis.brake_safety, "rms_torque_ratio": axis.rms_torque_ratio}
     if motor is None:
         rotor = axis.motor_inertia
         q.update({"has_motor": 0.0, "motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0,
-                  "motor_brake_torque": 0.0, "motor_price": 0.0})
+                  "motor_brake_torque": 0.0, "motor_price": 0.0, "motor_peak_corner_speed": 1.0,
+                  "motor_peak_at_max_speed": 1.0})
     else:
         rotor = col(motor, "rotor_inertia")
         if axis.brake_used:  # the brake adds its inertia (catalog value; the plain rotor where none is listed)
@@ -133,6 +138,11 @@ def drive_params(axis, motor, coupling) -> dict:
         brake = _listed_or(col(motor, "brake_torque"), 0.0)
         q.update({"has_motor": 1.0, "motor_brake_torque": brake})
         q.update({param: col(motor, column) for column, param in PART_PARAMS["motors"]})
+        # the intermittent zone's corner points where the vendor lists them, else the conservative estimate
+        q["motor_peak_corner_speed"] = _listed_or(
+            col(motor, "peak_corner_speed"),
+            np.minimum(col(motor, "rated_speed"), PEAK_CORNER_FRACTION * col(motor, "max_speed")))
+        q["motor_peak_at_max_speed"] = _listed_or(col(motor, "peak_torque_at_max_speed"), col(motor, "rated_torque"))
     if coupling is None:
         q.update({"has_coupling": 0.0, "coupling_stiffness": axis.coupling_stiffness,
                   "coupling_inertia": axis.coupling_inertia, "coupling_rated_torque": 1.0,

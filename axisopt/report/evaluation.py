@@ -275,9 +275,12 @@ def drive_lines(ev: Evaluation) -> list:
              f"{m['peak_torque']:.3g} N.m, max {m['max_speed'] * RPM:.0f} rpm)", f"  {cpl}, {red}",
              f"  {cycle}: {v['duty_time']:.2f} s;  friction {v['friction_torque']:.3f} N.m"
              + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else "")]
-    rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m", f"{m['peak_torque']:.3g} N.m (motor peak)"),
+    zone = "" if abs(v["needed_motor_peak_torque"] - v["peak_torque"]) <= 1e-9 * v["peak_torque"] else \
+        f" ({v['needed_motor_peak_torque']:.3f} referred to the zone)"
+    rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m{zone}",
+             f"{m['peak_torque']:.3g} N.m (motor peak, zone by speed)"),
             ("RMS torque, mean thrust", f"{v['rms_torque']:.3f}, {v['mean_thrust_torque']:.3f} N.m",
-             f"{m['rated_torque']:.3g} N.m (rated)"),
+             f"{a.rms_torque_ratio:g} x {m['rated_torque']:.3g} N.m (rated)"),
             ("motor speed", f"{v['motor_speed'] * RPM:.0f} rpm", f"{m['max_speed'] * RPM:.0f} rpm (max)"),
             ("inertia ratio load/rotor", f"{v['inertia_ratio']:.2f} ({v['load_inertia'] * 1e4:.3g} kg.cm^2)",
              f"{a.max_inertia_ratio:g} (axis.max_inertia_ratio)")]
