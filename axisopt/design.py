@@ -69,7 +69,9 @@ class Axis:
     nut_bracket_stiffness: float | None = None  # nut bracket / table connection [N/m]; None: rigid
     coupling_stiffness: float = COUPLING_STIFFNESS  # torsional [N m/rad]
     coupling_inertia: float = COUPLING_INERTIA  # [kg m^2]
-    temperature_rise: float = TEMPERATURE_RISE  # screw temperature rise in operation [K]
+    # screw temperature rise in operation [K]; None: the heat balance of the duty cycle (model.heat) when the axis
+    # has one, TEMPERATURE_RISE otherwise
+    temperature_rise: float | None = None
     pretension: float | None = None  # fixed-fixed screw pretension [N]; None: absorbs temperature_rise
     orientation: str = "horizontal"
     positions: int = 41  # nut positions evaluated over the stroke
@@ -83,6 +85,7 @@ class Axis:
     brake: str = "auto"  # holding brake: auto (vertical axes), yes, no
     brake_safety: float = BRAKE_SAFETY  # brake holding torque / gravity torque
     rms_torque_ratio: float = RMS_TORQUE_RATIO  # largest RMS torque / rated torque of the motor
+    heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
 
     @property
     def span(self) -> float:
@@ -191,7 +194,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "nut_bracket_stiffness": _axis_q("stiffness", "nut bracket / table connection (default: rigid)"),
     "coupling_stiffness": _axis_q("torsional_stiffness", "coupling torsional stiffness (when no coupling part)"),
     "coupling_inertia": _axis_q("inertia", "coupling inertia (when no coupling part)"),
-    "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation", zero=True,
+    "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation (default: the "
+                                "heat balance of the duty cycle when the axis has one, else 3 K)", zero=True,
                            maximum=(100.0, "100 K")),
     "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs temperature_rise)",
                       options=(Key("choice", choices=("auto",)),
@@ -213,6 +217,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                  options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
     "brake_safety": Key("number", "brake holding torque / gravity torque", positive=True, minimum=1.0,
                         maximum=10.0),
+    "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw surface for the heat balance "
+                             "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4)"),
     "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
                             "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
                             maximum=1.0),

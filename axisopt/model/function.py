@@ -24,7 +24,8 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "bearing_max_load", "load_inertia", "total_inertia", "inertia_ratio", "motor_speed", "peak_torque",
                   "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque",
                   "gravity_torque",
-                  "duty_time") + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
+                  "duty_time", "friction_power", "heat_transfer", "heat_balance_rise", "temperature_rise",
+                  "thermal_growth") + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
 
 
 @dataclass

@@ -7,6 +7,7 @@ from types import MappingProxyType
 import numpy as np
 
 from ..catalog import COLUMNS
+from ..design import TEMPERATURE_RISE
 from ..physics.bearings import support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
 
@@ -38,6 +39,7 @@ PARAM_NAMES = (
     "motor_brake_torque", "motor_price", "has_coupling", "coupling_rated_torque", "coupling_max_speed",
     "coupling_price", "reduction_ratio", "reduction_efficiency", "reduction_inertia", "max_inertia_ratio",
     "brake_safety", "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed",
+    "temperature_rise_auto", "heat_transfer",
 )
 
 
@@ -89,7 +91,10 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "gravity_axial": 1.0 if axis.orientation == "vertical" else 0.0,
         "housing_compliance": _compliance(axis.bearing_housing_stiffness),
         "bracket_compliance": _compliance(axis.nut_bracket_stiffness),
-        "temperature_rise": axis.temperature_rise,
+        # a duty cycle and no temperature_rise given: the heat balance (model.heat) sets the rise
+        "temperature_rise": TEMPERATURE_RISE if axis.temperature_rise is None else axis.temperature_rise,
+        "temperature_rise_auto": 1.0 if (axis.temperature_rise is None and axis.duty_cycle) else 0.0,
+        "heat_transfer": 0.0 if axis.heat_transfer is None else axis.heat_transfer,
         "pretension": 0.0 if axis.pretension is None else axis.pretension,
         "pretension_auto": 1.0 if (axis.pretension is None and mounting == "fixed-fixed") else 0.0,
     }

@@ -101,6 +101,9 @@ def evaluation_dict(ev: Evaluation) -> dict:
                                       for k, c in ev.components().items()},
         "nut_backlash_um": v["backlash"] * 1e6,
         "pretension_N": v["pretension"],
+        "friction_power_W": v["friction_power"], "temperature_rise_K": v["temperature_rise"],
+        "heat_balance_rise_K": v["heat_balance_rise"], "heat_transfer_W_per_m2K": v["heat_transfer"],
+        "thermal_growth_um": v["thermal_growth"] * 1e6,
         "thermal_displacement_mm": (np.asarray(v["thermal_displacement"]) * 1e3).tolist(),
         "drive_train_modes_Hz": [np.asarray(v["f_axial_torsional"]).tolist(),
                                  np.asarray(v["f_axial_torsional_2"]).tolist()],
@@ -301,8 +304,19 @@ def drive_lines(ev: Evaluation) -> list:
 def _thermal_line(ev: Evaluation) -> str:
     a, v = ev.design.axis, ev.values
     u = np.asarray(v["thermal_displacement"])
-    text = (f"thermal: +{a.temperature_rise:g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
+    text = (f"thermal: +{float(v['temperature_rise']):.3g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
             f"(alpha 11.6e-6/K, HIWIN F 3.36)")
+    used = a.temperature_rise is None and a.duty_cycle
+    how = ("rise from the heat balance of the duty cycle" if used else
+           "rise as given; the heat balance" if a.temperature_rise is not None else
+           "rise: default (THK A-715), no duty cycle; the heat balance of continuous rapids")
+    film = "Jungnickel rotating shaft, Holman free convection" if a.heat_transfer is None else "axis.heat_transfer"
+    rise = "" if used else f" would give +{float(v['heat_balance_rise']):.3g} K"
+    balance = (f"{how}: friction power {float(v['friction_power']):.3g} W (nut and bearings at the cycle's mean "
+               f"screw speed), film {float(v['heat_transfer']):.3g} W/(m^2.K) "
+               f"({film}) over the screw surface"
+               f"{rise}")
+    text += "\n" + "\n".join(textwrap.wrap(balance, WIDTH, initial_indent="  ", subsequent_indent="    "))
     if a.mounting == "fixed-fixed":
         text += (f"\n  pretension {v['pretension'] / 1e3:.1f} kN "
                  f"({'absorbs the rise' if a.pretension is None else 'as given'}), bearing static load "
