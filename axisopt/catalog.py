@@ -189,7 +189,7 @@ _ORDERED = {
     "couplings": (("bore_min", "bore_max"),),
     "nuts": (("preload_min", "preload_max"),),
 }
-_CHOICES = {
+CHOICES = {
     ("nuts", "type"): ("single", "double"),
     ("guides", "type"): ("ball", "roller"),
     ("guides", "preload_level"): ("light", "medium", "heavy", "super-heavy"),
@@ -256,7 +256,7 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
             return col, "must not be negative"
         if kind != "int" and abs(val) > PLAUSIBLE_MAX.get(kind, 1e12):
             return col, f"out of range (at most {PLAUSIBLE_MAX.get(kind, 1e12):g} in SI units)"
-    for (t, c), ok in _CHOICES.items():
+    for (t, c), ok in CHOICES.items():
         if t == name and rec.get(c) not in ok:
             return c, f"'{rec.get(c)}' is not one of {', '.join(ok)}"
     for a, b in _ORDERED.get(name, ()):

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field, fields
 from functools import cached_property
 from pathlib import Path
 
-from .catalog import _CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
+from .catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
 from .errors import InputError
 from .physics import motion
 from .units import DISPLAY_UNITS, unit_factor
@@ -316,7 +316,7 @@ def _part_key(table: str, col: str, kind: str) -> Key:
     if kind == "str":
         optional = col in ("vendor", "series")
         return Key("string", doc + (" (default: custom)" if optional else ""), required=not optional,
-                   default="custom" if optional else None, choices=_CHOICES.get((table, col)))
+                   default="custom" if optional else None, choices=CHOICES.get((table, col)))
     if kind == "int":
         return Key("number", doc, required=True, integer=True, minimum=1)
     if kind == "dimensionless":
@@ -371,11 +371,11 @@ PARTS_SPEC = Spec("parts", "one part per slot: a catalog id, or an inline mappin
     "nut_preload": Key("quantity", "nut preload within the nut's range (default: the catalog's)", kind="force",
                        non_negative=True),
 })
-_NAME = Key("string", "name of the file's subject (default: the file name)")
-_DESCRIPTION = Key("string", "free text")
-_CATALOGS = Key("names", "extra catalog directories, relative to this file")
+NAME_KEY = Key("string", "name of the file's subject (default: the file name)")
+DESCRIPTION_KEY = Key("string", "free text")
+CATALOGS_KEY = Key("names", "extra catalog directories, relative to this file")
 DESIGN_SPEC = Spec("design", "an axis design: the machine's requirements and one part per slot", {
-    "name": _NAME, "description": _DESCRIPTION, "catalogs": _CATALOGS,
+    "name": NAME_KEY, "description": DESCRIPTION_KEY, "catalogs": CATALOGS_KEY,
     "axis": Key("section", required=True, spec=AXIS_SPEC), "parts": Key("section", required=True, spec=PARTS_SPEC),
 })
 

@@ -58,7 +58,7 @@ from pathlib import Path
 from types import MappingProxyType
 
 from .catalog import STATUSES, USER_STATUS, Catalog
-from .design import _CATALOGS, _DESCRIPTION, _NAME, AXIS_SPEC, MOUNTINGS, Axis, catalog_for, read_axis
+from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, MOUNTINGS, NAME_KEY, Axis, catalog_for, read_axis
 from .errors import InputError
 from .model import CHECKS
 from .model.limits import LIMITS
@@ -243,7 +243,7 @@ PRELOAD_RANGE_SPEC = Spec("nut_preload", "nut preload range (intersected with ea
 CONTINUOUS_SPEC = Spec("continuous", "bounds of the continuous variables", {
     "nut_preload": Key("section", spec=PRELOAD_RANGE_SPEC)})
 PROBLEM_SPEC = Spec("problem", "a sizing problem: the axis, the objective, limits and catalog restrictions", {
-    "name": _NAME, "description": _DESCRIPTION, "catalogs": _CATALOGS,
+    "name": NAME_KEY, "description": DESCRIPTION_KEY, "catalogs": CATALOGS_KEY,
     "axis": Key("section", "as in a design (axis.mounting is the default mounting)", required=True,
                 spec=AXIS_SPEC),
     "objective": Key("one_of", "what to maximise (default: stiffness)",

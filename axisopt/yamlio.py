@@ -270,7 +270,7 @@ class Section:
 
     def value(self, key: str, default=None, *, required: bool = False):
         n = self.raw(key, None, required=required)
-        return default if n is None else _plain(n)
+        return default if n is None else plain(n)
 
     def quantity(self, key: str, kind: str, default=None, *, required: bool = False, positive: bool = False,
                  non_negative: bool = False, maximum: tuple | None = None):
@@ -337,7 +337,7 @@ class Section:
         out = []
         for it in items:
             if not isinstance(it.value, (str, int, float)) or isinstance(it.value, bool):
-                raise self.error(key, f"expected a list of names, got {_plain(n)!r}")
+                raise self.error(key, f"expected a list of names, got {plain(n)!r}")
             out.append(str(it.value))
         return out
 
@@ -383,10 +383,10 @@ class Section:
             raise self.error(k, f"unknown key '{self.key_path(k)}'{hint}")
 
 
-def _plain(node: Node):
+def plain(node: Node):
     v = node.value
     if isinstance(v, dict):
-        return {k: _plain(x) for k, x in v.items()}
+        return {k: plain(x) for k, x in v.items()}
     if isinstance(v, list):
-        return [_plain(x) for x in v]
+        return [plain(x) for x in v]
     return v

@@ -10,6 +10,7 @@ pipe or a full device on stdout keeps the command's code.
 from __future__ import annotations
 
 import argparse
+import logging
 import sys
 
 from ..errors import InputError
@@ -36,7 +37,18 @@ def _commands():
             parts.register, schema.register]
 
 
+def _show_progress() -> None:
+    """Progress records of the library (logger "axisopt", e.g. a long Bonmin solve) go to a terminal's stderr."""
+    log = logging.getLogger("axisopt")
+    if sys.stderr.isatty() and not log.handlers:
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("%(message)s"))
+        log.addHandler(handler)
+        log.setLevel(logging.INFO)
+
+
 def main(argv=None) -> int:
+    _show_progress()
     saved = sys.stdout
     out = sys.stdout = GuardedStdout(saved)
     try:

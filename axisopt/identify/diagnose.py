@@ -122,6 +122,11 @@ def _split(obs, v):
     return out
 
 
+def split_by_observation(obs, v) -> list:
+    """``v`` (the stacked rows of every observation) cut into one array per observation."""
+    return _split(obs, v)
+
+
 # Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode): the noise
 # floor never takes differences across them.
 _CATEGORICAL_FACTORS = ("direction", "cycle", "mode")

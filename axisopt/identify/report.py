@@ -356,7 +356,7 @@ def diagnosis_text(diag) -> str:
 
 
 # SI factor -> (display unit, scale, offset) for residual plots
-_FACTOR_DISPLAY = {
+FACTOR_DISPLAY = {
     "position": ("mm", 1e3, 0.0), "force": ("N", 1.0, 0.0), "velocity": ("mm/s", 1e3, 0.0),
     "speed": ("mm/s", 1e3, 0.0), "time": ("s", 1.0, 0.0), "temperature": ("degC", 1.0, -273.15),
     "frequency": ("Hz", 1.0, 0.0), "normal_load": ("N", 1.0, 0.0), "axial_load": ("N", 1.0, 0.0),
@@ -455,7 +455,7 @@ def write_report(diag, outdir) -> Path:
         unit, f = Y_UNIT[o.kind]
         fig, axes = plt.subplots(1, len(facs), figsize=(3.6 * len(facs), 3.2), squeeze=False)
         for ax, (name, v) in zip(axes[0], facs):
-            fu, fs, fo = _FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
+            fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
             v = np.asarray(v) * fs + fo
             cats = categories(name, v)
             if cats is None:

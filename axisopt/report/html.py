@@ -247,10 +247,10 @@ def pareto_figure(front):
     """Scatter matrix of the chosen objectives: sampled feasible designs in grey, the front in colour."""
     import plotly.graph_objects as go
 
-    from ..search.pareto import _FIELD
+    from ..search.pareto import FIELD
 
     dims_front = [dict(label=f"{k.replace('_', ' ')} [{u}]" if u else k,
-                       values=[float(getattr(p, _FIELD[k])) for p in front.points])
+                       values=[float(getattr(p, FIELD[k])) for p in front.points])
                   for k, u in zip(front.keys, front.units)]
     fig = go.Figure()
     if front.cloud is not None and len(front.cloud):
@@ -334,7 +334,8 @@ def diagnose_page(diag, text: str) -> Page:
     """A diagnosis: the verdict first, then residuals against each factor before and after, and the text."""
     from plotly.subplots import make_subplots
 
-    from ..identify.report import _FACTOR_DISPLAY, Y_UNIT, _split, diagnosis_dict
+    from ..identify.diagnose import split_by_observation as _split
+    from ..identify.report import FACTOR_DISPLAY, Y_UNIT, diagnosis_dict
 
     d = diagnosis_dict(diag)
     page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why")
@@ -349,7 +350,7 @@ def diagnose_page(diag, text: str) -> Page:
         unit, f = Y_UNIT[o.kind]
         fig = make_subplots(rows=1, cols=len(facs), shared_yaxes=True)
         for j, (name, v) in enumerate(facs, start=1):
-            fu, fs, fo = _FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
+            fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
             x = np.asarray(v) * fs + fo
             fig.add_scatter(x=x, y=rb * f, mode="markers", name="baseline", marker=dict(size=4, color="#9aa3b2"),
                             showlegend=j == 1, row=1, col=j)

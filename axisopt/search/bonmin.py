@@ -15,6 +15,7 @@ combination is then re-evaluated exactly and re-checked.
 from __future__ import annotations
 
 import contextlib
+import logging
 import os
 import sys
 import time
@@ -113,6 +114,7 @@ def _build(space, mounting, constraints, objective):
 # Seconds Bonmin may run past the time limit before it is stopped: its own limit is checked between
 # branch-and-bound nodes, and one node's NLP can run for minutes.
 DEADLINE_GRACE = 2.0
+LOG = logging.getLogger("axisopt.search")
 PROGRESS_EVERY = 10.0  # [s] progress lines on a terminal's stderr
 
 
@@ -155,9 +157,9 @@ def _solve_with_deadline(work, deadline: float, label: str):
                     return recv.recv()
                 except EOFError:
                     return "error", "the Bonmin process ended without a result"
-            if tty:
-                print(f"bonmin {label}: running, {time.perf_counter() - start:.0f} s of at most {deadline:.0f} s",
-                      file=sys.stderr, flush=True)
+            if tty:  # the CLI shows the "axisopt" logger's records on a terminal (only cli prints)
+                LOG.info("bonmin %s: running, %.0f s of at most %.0f s", label, time.perf_counter() - start,
+                         deadline)
     finally:
         recv.close()
         if proc.is_alive():

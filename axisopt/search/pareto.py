@@ -20,7 +20,7 @@ from .space import build_constraints, build_space, exact_solve, objective_spec
 
 SENSE = {"stiffness": "max", "frequency": "max", "cost": "min", "total_mass": "min", "moving_mass": "min"}
 UNIT = {"stiffness": "N/um", "frequency": "Hz", "cost": "EUR", "total_mass": "kg", "moving_mass": "kg"}
-_FIELD = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost", "total_mass": "total_mass",
+FIELD = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost", "total_mass": "total_mass",
           "moving_mass": "moving_mass"}
 
 
@@ -110,12 +110,12 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     ok = np.nonzero(ex.feasible)[0]
     cols = []
     for k in keys:
-        v = getattr(ex, _FIELD[k])[ok]
+        v = getattr(ex, FIELD[k])[ok]
         cols.append(v if SENSE[k] == "max" else -v)
     P = np.column_stack(cols) if len(ok) else np.zeros((0, len(keys)))
     front = ok[nondominated(P)] if len(ok) else np.zeros(0, np.int64)
     # sort by the first objective (best first)
-    first = getattr(ex, _FIELD[keys[0]])[front]
+    first = getattr(ex, FIELD[keys[0]])[front]
     front = front[np.argsort(-first if SENSE[keys[0]] == "max" else first, kind="stable")]
     notes = []
     if len(front) > max_points:
@@ -126,7 +126,7 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     info["feasible"] = int(len(ok))
     cert = Certificate(nlps_solved=0, nlp_failures=0, notes=tuple(notes + [f"front size {len(front)}"]), **info)
     sample = ok if len(ok) <= CLOUD else np.random.default_rng(0).choice(ok, CLOUD, replace=False)
-    cloud = np.column_stack([getattr(ex, _FIELD[k])[sample] for k in keys]) if len(ok) else None
+    cloud = np.column_stack([getattr(ex, FIELD[k])[sample] for k in keys]) if len(ok) else None
     pf = ParetoFront(tuple(keys), tuple(SENSE[k] for k in keys), tuple(UNIT[k] for k in keys), pts,
                      feasible=int(len(ok)), cloud=cloud)
     status = "optimal" if len(front) else "infeasible"
@@ -151,7 +151,7 @@ def plot_pareto(front: ParetoFront, path: str) -> None:
     import matplotlib.pyplot as plt
 
     keys, d = front.keys, len(front.keys)
-    F = np.array([[getattr(p, _FIELD[k]) for k in keys] for p in front.points]).reshape(-1, d)
+    F = np.array([[getattr(p, FIELD[k]) for k in keys] for p in front.points]).reshape(-1, d)
     C = np.asarray(front.cloud, dtype=float).reshape(-1, d) if front.cloud is not None else np.zeros((0, d))
     size = 2.6 * d if d > 2 else 5.5
     fig, axes = plt.subplots(d, d, figsize=(size + 1.0, size), squeeze=False)

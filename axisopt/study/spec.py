@@ -35,10 +35,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..design import _DESCRIPTION, _NAME, catalog_for
+from ..design import DESCRIPTION_KEY, NAME_KEY, catalog_for
 from ..errors import InputError
 from ..problem import PROBLEM_SPEC, read_problem
-from ..yamlio import Key, Node, Section, Spec, _plain, read_yaml
+from ..yamlio import Key, Node, Section, Spec, plain, read_yaml
 
 METHODS = ("default", "exhaustive", "bonmin")
 COMBINE = ("product", "zip")
@@ -86,7 +86,7 @@ class Study:
         return tuple(s.key for s in self.sweeps)
 
     def fingerprint(self) -> str:
-        return _digest({"base": _plain(self.base), "method": self.method})
+        return _digest({"base": plain(self.base), "method": self.method})
 
     def context(self) -> dict:
         """What a worker needs besides the cases: small, picklable, no catalog or solver objects."""
@@ -135,7 +135,7 @@ SWEEP_SPEC = Spec("sweep", "the swept keys: dotted paths into the problem (e.g. 
                   extra_doc="a dotted path into the problem YAML, e.g. axis.stroke or limits.max_cost",
                   extra_pattern=f"^{SWEEP_KEY}$")
 STUDY_SPEC = Spec("study", "a study: a base problem and sweeps over its keys, expanded into cases", {
-    "name": _NAME, "description": _DESCRIPTION,
+    "name": NAME_KEY, "description": DESCRIPTION_KEY,
     "base": Key("one_of", "the base problem", required=True,
                 options=(Key("string", "path of a problem YAML, relative to this file"),
                          Key("section", "an inline problem", spec=PROBLEM_SPEC))),
@@ -187,7 +187,7 @@ def _read_sweep(sec: Section, key: str) -> Sweep:
         raise sec.error(key, f"sweep key '{key}' must be a dotted path into the problem, e.g. axis.stroke")
     v = node.value
     if isinstance(v, list):
-        values = tuple(_plain(n) for n in v)
+        values = tuple(plain(n) for n in v)
         if not values:
             raise sec.error(key, "empty list of values")
         return Sweep(key, values, "list", node.line, tuple(_unique(values)))
