@@ -98,9 +98,10 @@ class Axis:
 
     @cached_property
     def phases(self) -> tuple:
-        """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move."""
+        """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move.  ``heat``:
+        the heat balance sets the temperature rise (a duty cycle and no ``temperature_rise``)."""
         segs = self.duty_cycle or motion.rapid_cycle(self.stroke, self.max_speed, self.acceleration, self.jerk)
-        return motion.cycle_phases(segs)
+        return motion.Phases(motion.cycle_phases(segs), heat=self.temperature_rise is None and bool(self.duty_cycle))
 
     @property
     def mean_speed_eff(self) -> float:

@@ -63,9 +63,10 @@ def drive(p, moving_mass, drag) -> dict:
     t_cont = mx.fmax(t_rms, thrust_mean)
     # peak torque needed, referred to the flat (low-speed) peak: max over phases of |T| T_pk / T_pk(n); convex in
     # the nut preload like |T| (the zone does not depend on it), so the margin holds on an interval of preloads
+    factors = [p["motor_peak_torque"] / mx.fmax(avail, 1e-9) for avail in zone]  # >= 1, preload-independent
     use = thrust
-    for (t0, t1), avail in zip(torques, zone):
-        use = mx.fmax(use, mx.fmax(mx.fabs(t0), mx.fabs(t1)) * p["motor_peak_torque"] / mx.fmax(avail, 1e-9))
+    for (t0, t1), k in zip(torques, factors):
+        use = mx.fmax(use, mx.fmax(mx.fabs(t0), mx.fabs(t1)) * k)
     thrust_ratio = p["rms_torque_ratio"] * p["motor_rated_torque"]
     v_max = max([ph.speed for ph in phases] + [0.0])
     n_motor = pd.motor_speed(v_max, p["lead"], a)
@@ -103,7 +104,7 @@ def drive(p, moving_mass, drag) -> dict:
         "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean,
         "holding_torque": hold,
         "friction_torque": friction, "gravity_torque": gravity, "duty_time": sum(durations),
-        "duty_torques": torques,
+        "duty_torques": torques, "zone_factors": factors,
     })
     return out
 

@@ -39,7 +39,13 @@ def heat_balance(p, preload) -> dict:
     rise = mx.if_else(given, pt.friction_temperature_rise(power, mx.fmax(p["heat_transfer"], 1e-12), area),
                       rise_auto)
     h = power / (area * mx.fmax(rise, 1e-12))  # the effective film
-    used = p["temperature_rise_auto"] * rise + (1.0 - p["temperature_rise_auto"]) * p["temperature_rise"]
+    # the axis says in Python whether the balance sets the rise (motion.Phases.heat), so that a model without it
+    # carries no preload-dependent thermal terms (the global reference solvers see the same algebra as before)
+    flag = getattr(phases, "heat", None)
+    if flag is None:  # a bare parameter dict: the parameter decides
+        used = p["temperature_rise_auto"] * rise + (1.0 - p["temperature_rise_auto"]) * p["temperature_rise"]
+    else:
+        used = rise if flag else p["temperature_rise"]
     return {"friction_power": power, "heat_transfer": h, "heat_balance_rise": rise, "temperature_rise": used,
             "cycle_mean_screw_speed": omega}
 

@@ -576,15 +576,17 @@ def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np
     if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor): nothing to bound
         return v_lo
     thrust = "thrust_torque" if c.key == "margin_motor_peak_torque" else "mean_thrust_torque"
-    need_lo = np.asarray(out_lo["peak_torque" if c.key == "margin_motor_peak_torque" else "rms_torque"])
-    need_lo = np.maximum(need_lo, np.asarray(out_lo[thrust]))
+    # what the margin compares the torque with (the peak: the zone at each phase's speed, referred to the flat
+    # peak; the RMS: rms_torque_ratio x rated), recovered exactly from the margin at the interval's low end
+    need_lo = np.asarray(out_lo["needed_motor_peak_torque" if c.key == "margin_motor_peak_torque"
+                                else "needed_motor_rated_torque"])
     available = v_lo * need_lo
     ends = [(_interval_min_abs(a0, b0), _interval_min_abs(a1, b1))
             for (a0, a1), (b0, b1) in zip(out_lo["duty_torques"], out_hi["duty_torques"])]
-    if c.key == "margin_motor_peak_torque":
+    if c.key == "margin_motor_peak_torque":  # each phase's smallest |T| referred to the flat peak (zone factor)
         lb = np.asarray(out_lo[thrust])
-        for m0, m1 in ends:
-            lb = np.maximum(lb, np.maximum(m0, m1))
+        for (m0, m1), k in zip(ends, out_lo["zone_factors"]):
+            lb = np.maximum(lb, np.maximum(m0, m1) * k)
     else:
         total = sum(ph.duration for ph in phases)
         acc = 0.0

@@ -41,7 +41,9 @@ def _agrees(s, e):
 
 def test_teaching_problem_equals_exhaustive():
     p = load_problem(PROBLEMS / "teaching_problem.yaml")
-    s = solve(p, "scip", time_limit=40)
+    # 120 s: since issue 26 the RMS bound (0.8 x rated) puts more drive limits near their bound, which takes
+    # SCIP longer to prove (about 45 s on a loaded 2-core machine)
+    s = solve(p, "scip", time_limit=120)
     _agrees(s, solve(p, "exhaustive", top=1, sensitivities=False))
     assert s.status == "optimal"
     assert "nodes" in s.certificate.notes[0]
@@ -84,7 +86,7 @@ def test_pareto_is_an_input_error():
 
 
 def test_cli_exit_codes(capsys):
-    assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--method", "scip", "--time-limit", "40"]) == 0
+    assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--method", "scip", "--time-limit", "120"]) == 0
     out = capsys.readouterr().out
     assert "method scip: status optimal" in out
     assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--method", "scip", "--time-limit", "0.01"]) == 3
