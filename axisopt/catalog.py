@@ -9,6 +9,7 @@ shipped one; its ids must not collide with the shipped ids.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -122,7 +123,7 @@ COLUMNS = MappingProxyType({
         _c("normal_rigidity", "stiffness", "guide_normal_stiffness", positive=True, **_RIGIDITY),
         _c("tangential_rigidity", "stiffness", "guide_tangential_stiffness", positive=True, **_RIGIDITY),
         _c("dynamic_load_rating", "force", "guide_dynamic_load", positive=True, **_DERIVED),
-        _c("static_load_rating", "force"),
+        _c("static_load_rating", "force", "guide_static_load", positive=True),
         _c("friction_force", "force", "guide_friction_force"),
         _c("friction_coefficient", "dimensionless", "guide_friction_coefficient"),
         _c("friction_viscous", "damping", "guide_friction_viscous"),
@@ -130,6 +131,11 @@ COLUMNS = MappingProxyType({
         _c("rail_mass_per_length", "mass_per_length", "guide_rail_mass_per_length"),
         _c("block_price", "money", "guide_block_price", **_PRICE),
         _c("rail_price_per_length", "money_per_length", "guide_rail_price_per_length", **_PRICE),
+        # static permissible moments of one block (vendor tables: HIWIN MR/MP/MY, IKO T0/TX/TY, NBS M0X/M0Z/M0Y):
+        # the block-load method needs them for one block per rail or one rail (THK K = C0 / M)
+        _c("moment_roll", "torque", "guide_moment_roll", positive=True),
+        _c("moment_pitch", "torque", "guide_moment_pitch", positive=True),
+        _c("moment_yaw", "torque", "guide_moment_yaw", positive=True),
     ),
     # Drive parts (servo motors, shaft couplings).  Optional tables: a catalog directory may leave them out.
     "motors": (
@@ -269,12 +275,9 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
     schema = SCHEMA[name]
     src = str(path)
     try:
-        if not path.is_file():
-            raise InputError("not a regular file", source=src)
-        if path.stat().st_size > MAX_CATALOG_BYTES:
-            raise InputError(f"catalog file too large ({path.stat().st_size:,} bytes; at most "
-                             f"{MAX_CATALOG_BYTES:,})", source=src)
-        with path.open(newline="", encoding="utf-8-sig") as fh:
+        from .fileio import read_input  # regular files only, at most MAX_CATALOG_BYTES
+
+        with io.StringIO(read_input(path, "catalog", what="catalog", encoding="utf-8-sig"), newline="") as fh:
             reader = csv.reader(fh)
             try:
                 rows = list(reader)

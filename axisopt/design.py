@@ -13,6 +13,7 @@ from functools import cached_property
 from pathlib import Path
 
 from .catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
+from .display import fmt, one_line
 from .errors import InputError
 from .physics import motion
 from .units import DISPLAY_UNITS, unit_factor
@@ -29,7 +30,9 @@ MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
 COUPLING_STIFFNESS = 75e3
 COUPLING_INERTIA = 0.29e-3
 TEMPERATURE_RISE = 3.0
-ORIENTATIONS = ("horizontal", "vertical")
+# horizontal: gravity presses the table onto the rails; vertical: gravity acts along the rail (on the screw);
+# wall: the rails on a vertical wall, the feed horizontal, gravity across the rails (a lateral block load)
+ORIENTATIONS = ("horizontal", "vertical", "wall")
 G = 9.80665
 # Drive defaults.  Inertia ratio: THK A-720 eq. 49 asks J_M >= J / C with C "normally between 3 to 10" (its
 # transfer examples use 10); 5, the tighter half of that range, is our default for machine-tool axes.  Brake
@@ -39,6 +42,19 @@ BRAKE_SAFETY = 2.0
 # RMS torque / rated torque: Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <=
 # 0.8 Tst" (stall torque); taken against the rated torque, which is at most the stall torque (issue 26).
 RMS_TORQUE_RATIO = 0.8
+# Carriage (issue 25).  Static safety factors: THK's current selection pages give the lower limit of f_S "with
+# vibrations or impacts" as 5 for the LM Guide (thk.com/in/en/products/lm_guide/selection/0005/, Table 10) and
+# for the ball screw (LM Guide Actuator pages, "Ball Screw Unit/Bearing Unit": 5); a feed axis of a cutting
+# machine has both (THK names "vibrations due to a cutting load" and acceleration).  The older General Catalog
+# prints 2.5 to 7 for machine tools with vibration or impact (A-95, A-703); HIWIN G99TE20 Table 1-1: 3 to 5.
+GUIDE_STATIC_SAFETY = 5.0
+NUT_STATIC_SAFETY = 5.0
+# Geometry defaults where the YAML gives none (our assumptions, stated in the README): blocks set in from the
+# table ends (spacing 0.6 x table length), rails 0.6 x table width apart, a table + workpiece box as wide as it
+# is long, 0.4 x its length high with the centre of gravity at half that height and the cutting point on top.
+SPACING_SHARE = 0.6
+CG_HEIGHT_SHARE = 0.2
+TOOL_HEIGHT_SHARE = 0.4
 BRAKE_MODES = ("auto", "yes", "no")
 
 
@@ -86,6 +102,41 @@ class Axis:
     brake_safety: float = BRAKE_SAFETY  # brake holding torque / gravity torque
     rms_torque_ratio: float = RMS_TORQUE_RATIO  # largest RMS torque / rated torque of the motor
     heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
+    # carriage: cutting force across the rail (the feed component is axial_load, the normal one normal_load),
+    # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the defaults
+    # above, from the table's size) and the static safety the guides and the nut must keep
+    cross_load: float = 0.0  # [N]
+    tool_height: float | None = None  # cutting point above the guide mounting plane [m]
+    tool_offset: float = 0.0  # cutting point across the rail from the carriage centre [m]
+    cg_height: float | None = None  # centre of gravity of the moving mass above the mounting plane [m]
+    cg_offset: float = 0.0  # ... across the rail from the carriage centre [m]
+    table_width: float | None = None  # [m]; None: table_length
+    block_spacing: float | None = None  # outer block to outer block along a rail [m]
+    rail_spacing: float | None = None  # outer rail to outer rail [m]
+    pitch_inertia: float | None = None  # moving mass about the lateral axis in the mounting plane [kg m^2]
+    yaw_inertia: float | None = None  # moving mass about the vertical axis through the carriage centre [kg m^2]
+    guide_static_safety: float = GUIDE_STATIC_SAFETY  # least C0 / largest block load
+    nut_static_safety: float = NUT_STATIC_SAFETY  # least C0a / largest axial force
+
+    @property
+    def table_width_eff(self) -> float:
+        return self.table_length if self.table_width is None else self.table_width
+
+    @property
+    def block_spacing_eff(self) -> float:
+        return SPACING_SHARE * self.table_length if self.block_spacing is None else self.block_spacing
+
+    @property
+    def rail_spacing_eff(self) -> float:
+        return SPACING_SHARE * self.table_width_eff if self.rail_spacing is None else self.rail_spacing
+
+    @property
+    def cg_height_eff(self) -> float:
+        return CG_HEIGHT_SHARE * self.table_length if self.cg_height is None else self.cg_height
+
+    @property
+    def tool_height_eff(self) -> float:
+        return TOOL_HEIGHT_SHARE * self.table_length if self.tool_height is None else self.tool_height
 
     @property
     def span(self) -> float:
@@ -102,6 +153,19 @@ class Axis:
         the heat balance sets the temperature rise (a duty cycle and no ``temperature_rise``)."""
         segs = self.duty_cycle or motion.rapid_cycle(self.stroke, self.max_speed, self.acceleration, self.jerk)
         return motion.Phases(motion.cycle_phases(segs), heat=self.temperature_rise is None and bool(self.duty_cycle))
+
+    @property
+    def top_speed(self) -> float:
+        """The highest table speed commanded [m/s]: max_speed, or a duty-cycle move's speed if faster (the
+        reader refuses such a move; kept as the maximum so the speed checks never read a slower value)."""
+        return max([self.max_speed] + [s.speed for s in self.duty_cycle if s.kind == "move" and s.speed])
+
+    @property
+    def top_acceleration(self) -> float:
+        """The highest acceleration commanded [m/s^2]: axis.acceleration or a duty-cycle move's own, if higher
+        (the largest inertia force in the axial load, f_max, is taken at it)."""
+        return max([self.acceleration] + [s.acceleration for s in self.duty_cycle
+                                          if s.kind == "move" and s.acceleration])
 
     @property
     def mean_speed_eff(self) -> float:
@@ -137,6 +201,14 @@ class Design:
 
     def part_ids(self) -> dict:
         return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
+
+    def __repr__(self) -> str:  # the parts are catalog rows: a dataclass repr would print them whole
+        a = self.axis
+        parts = ", ".join(f"{k} {v}" for k, v in self.part_ids().items())
+        return one_line("Design", repr(self.name), {
+            "": f"{a.mounting}, {a.orientation}", "stroke": fmt(a.stroke * 1e3, "mm"),
+            "moving mass": fmt(a.moving_mass, "kg"), "max speed": fmt(a.max_speed * 60, "m/min"),
+            "axial load": fmt(a.axial_load, "N"), "parts": f"{parts} (nut preload {fmt(self.preload, 'N')})"})
 
 
 PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling")
@@ -223,10 +295,34 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
                             "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
                             maximum=1.0),
+    # carriage (issue 25): the cutting force's cross component and where it acts, the centre of gravity, the
+    # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
+    "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load)",
+                          zero=True),
+    "tool_height": _axis_q("length", "cutting point above the guide mounting plane (default 0.4 x table_length)",
+                           zero=True),
+    "tool_offset": _axis_q("length", "cutting point across the rail from the carriage centre", zero=True),
+    "cg_height": _axis_q("length", "moving mass's centre of gravity above the guide mounting plane "
+                         "(default 0.2 x table_length)", zero=True),
+    "cg_offset": _axis_q("length", "moving mass's centre of gravity across the rail from the carriage centre",
+                         zero=True),
+    "table_width": _axis_q("length", "table width across the rails (default: table_length)"),
+    "block_spacing": _axis_q("length", "outer block to outer block along a rail, at most table_length "
+                             "(default 0.6 x table_length)"),
+    "rail_spacing": _axis_q("length", "outer rail to outer rail, at most table_width (default 0.6 x table_width)"),
+    "pitch_inertia": _axis_q("inertia", "moving mass about the cross axis in the mounting plane (default: a box "
+                             "table_length long, 2 x cg_height high)"),
+    "yaw_inertia": _axis_q("inertia", "moving mass about the normal axis (default: a box table_length x "
+                           "table_width)"),
+    "guide_static_safety": Key("number", "least guide static safety C0 / largest block load (default 5: THK, "
+                               "with vibrations or impacts)", minimum=1.0, maximum=100.0),
+    "nut_static_safety": Key("number", "least nut static safety C0a / largest axial force (default 5: THK, with "
+                             "vibrations or impacts)", minimum=1.0, maximum=100.0),
 })
 _AXIS_KINDS = {name: k.kind for name, k in AXIS_SPEC.keys.items() if k.type == "quantity"}
 _AXIS_REQUIRED = tuple(name for name, k in AXIS_SPEC.keys.items() if k.required)
-_AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reduction_efficiency", "rms_torque_ratio")
+_AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reduction_efficiency",
+                 "guide_static_safety", "nut_static_safety", "rms_torque_ratio")
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:
@@ -260,9 +356,28 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     v = sec.read("load_factor")
     if v is not None:
         kw["load_factor"] = float(v)
+    _check_carriage(sec, kw)
     sec.done()
     assumed = tuple(f.name for f in fields(Axis) if f.name not in kw)
     return Axis(**kw), assumed
+
+
+def _check_carriage(sec: Section, kw: dict) -> None:
+    """The block pattern fits the table; at least two blocks on every rail (the table's rocking stiffness comes
+    from the block spacing: no vendor text gives one block's moment rigidity)."""
+    length = kw.get("table_length", Axis.table_length)
+    width = kw.get("table_width", length)
+    if kw.get("block_spacing", 0.0) > length * (1 + 1e-9):
+        raise sec.error("block_spacing", f"{kw['block_spacing'] * 1e3:g} mm is larger than the table "
+                        f"(table_length {length * 1e3:g} mm)")
+    if kw.get("rail_spacing", 0.0) > width * (1 + 1e-9):
+        raise sec.error("rail_spacing", f"{kw['rail_spacing'] * 1e3:g} mm is larger than the table "
+                        f"(table_width {width * 1e3:g} mm)")
+    blocks, rails = kw.get("guide_blocks", Axis.guide_blocks), kw.get("rails", Axis.rails)
+    if blocks % rails or blocks < 2 * rails:
+        key = "guide_blocks" if sec.has("guide_blocks") else "rails"
+        raise sec.error(key, f"{blocks} blocks on {rails} rail(s): give every rail the same number of blocks, "
+                        "at least two")
 
 
 def read_duty_cycle(sec: Section, kw: dict) -> tuple:
@@ -292,6 +407,11 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
             if abs(dist) > kw.get("stroke", math.inf) * (1 + 1e-9):
                 raise s.error("move", f"{abs(dist) * 1e3:g} mm is longer than the stroke")
             speed = s.read("speed", kw.get("max_speed"))
+            top = kw.get("max_speed")
+            if top is not None and speed > top * (1 + 1e-9):  # the speed checks are taken at max_speed
+                raise s.error("speed", f"{speed * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min); "
+                              "raise max_speed to the fastest move (critical speed, DN and bearing speed are "
+                              "checked at it)")
             acc = s.read("acceleration", kw.get("acceleration", 0.0))
             if not acc:
                 raise s.error("move", "needs an acceleration (here or in axis.acceleration)")

@@ -59,12 +59,13 @@ from types import MappingProxyType
 
 from .catalog import STATUSES, USER_STATUS, Catalog
 from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, MOUNTINGS, NAME_KEY, Axis, catalog_for, read_axis
+from .display import fmt, one_line
 from .errors import InputError
 from .model import CHECKS
 from .model.limits import LIMITS
 from .yamlio import Key, Section, Spec, close_matches, read_yaml
 
-OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto")
+OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto", "tool_stiffness")
 PERFORMANCE = ("stiffness", "frequency")
 PARETO_KEYS = ("stiffness", "frequency", "cost", "total_mass", "moving_mass", "mass")
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")
@@ -95,7 +96,9 @@ class Objective:
             return " then ".join(f"max min {k}" for k in self.order) + f" (tolerance {self.tolerance:g})"
         if self.mode == "pareto":
             return "Pareto front of " + ", ".join(self.pareto)
-        return f"maximise minimum {'axial stiffness' if self.mode == 'stiffness' else 'first natural frequency'}"
+        what = {"stiffness": "axial stiffness", "frequency": "first natural frequency",
+                "tool_stiffness": "stiffness at the tool"}[self.mode]
+        return f"maximise minimum {what}"
 
 
 def _fmt_si(key, value):
@@ -178,6 +181,15 @@ class Problem:
     def with_objective(self, objective: Objective) -> Problem:
         return replace(self, objective=objective)
 
+    def __repr__(self) -> str:
+        a = self.axis
+        lims = ", ".join(f"{k} {fmt(v / LIMITS[k].factor, LIMITS[k].unit)}" for k, v in self.limits)
+        margins = ", ".join(f"{c} {m:g}" for c, m in self.margins if m != 1.0)
+        return one_line("Problem", repr(self.name), {
+            "objective": self.objective.label, "limits": lims, "margins": margins,
+            "axis": f"{', '.join(self.mountings)}, stroke {fmt(a.stroke * 1e3, 'mm')}, moving mass "
+                    f"{fmt(a.moving_mass, 'kg')}, {fmt(a.max_speed * 60, 'm/min')}"})
+
 
 # ------------------------------------------------------------------------------ the YAML keys (one table)
 # The one declaration of a problem file's keys: the readers below read them by it (Section.read) and
@@ -247,7 +259,7 @@ PROBLEM_SPEC = Spec("problem", "a sizing problem: the axis, the objective, limit
     "axis": Key("section", "as in a design (axis.mounting is the default mounting)", required=True,
                 spec=AXIS_SPEC),
     "objective": Key("one_of", "what to maximise (default: stiffness)",
-                     options=(Key("choice", "a mode without options", choices=PERFORMANCE),
+                     options=(Key("choice", "a mode without options", choices=PERFORMANCE + ("tool_stiffness",)),
                               Key("section", spec=OBJECTIVE_SPEC))),
     "limits": Key("section", spec=LIMITS_SPEC),
     "catalog": Key("section", spec=RESTRICTIONS_SPEC),
@@ -269,10 +281,14 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
     root = root.declared(PROBLEM_SPEC)
     name = root.read("name", name)
     root.read("description")
-    axis, assumed = read_axis(root.read("axis"))
+    asec = root.read("axis")
+    axis, assumed = read_axis(asec)
     objective = _read_objective(root)
     limits, margins = _read_limits(root.read("limits"))
     restr = _read_restrictions(root.read("catalog"), catalog, axis)
+    if restr.drive and axis.acceleration <= 0 and not axis.duty_cycle:  # as a design with a motor: no default
+        raise asec.error("acceleration", "sizing a motor (the search chooses the drive) needs axis.acceleration "
+                         "> 0 or an axis.duty_cycle: without one the drive would carry no inertia torque")
     pmin, pmax = _read_continuous(root.read("continuous"))
     root.done()
     return Problem(axis=axis, catalog=catalog, objective=objective, limits=limits, margins=margins,
@@ -432,6 +448,8 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
             if slot not in SLOTS:
                 raise s.error(slot, f"unknown part slot '{slot}'; use {', '.join(SLOTS)}")
             ids = s.read(slot, [])
+            if key == "require" and not ids:  # as 'vendors: []': an empty list would allow no part at all
+                raise s.error(slot, "list at least one part id (or leave the slot out)")
             for i in ids:
                 catalog.part(SLOT_TABLE[slot], i, source=s.source, key=s.where(slot))
             out.append((slot, tuple(ids)))

@@ -21,7 +21,7 @@ import re
 from .yamlio import MAX_TEXT, Key, Spec
 
 SCHEMA_DIALECT = "https://json-schema.org/draft/2020-12/schema"
-SCHEMA_BASE = "https://axisopt.example/schema/"
+SCHEMA_BASE = "urn:axisopt:schema:"  # $id of a kind's schema: urn:axisopt:schema:<kind> (no web address to fetch)
 KINDS_OF_FILE = ("design", "problem", "study", "calibration")
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"  # units._QTY's number
@@ -149,6 +149,19 @@ def example_of(kind: str | None) -> str:
     return _EXAMPLES.get(kind, "500 mm")
 
 
+def unit_message(kind: str | None) -> str:
+    """What an editor shows when a quantity's text fails its pattern (the schema's ``patternErrorMessage``,
+    read by the YAML and JSON language servers in place of the regular expression): the kind, an example and
+    a few of the units listed.  One short line."""
+    if kind is None:
+        return "a number and a unit, e.g. 500 mm"
+    units = [u for u in units_of(kind) if u.isascii()]
+    shown = ", ".join(units[:6]) + (", ..." if len(units) > 6 else "")
+    what = "a number" + (", optionally with %, percent or ppm" if kind == "dimensionless" else " and a unit of "
+                                                                                           f"{kind.replace('_', ' ')}")
+    return f"expected {what}, e.g. {example_of(kind)}" + (f" (units: {shown})" if kind != "dimensionless" else "")
+
+
 # ----------------------------------------------------------------------------------------------- schema
 
 class _Writer:
@@ -218,25 +231,29 @@ class _Writer:
     def _quantity(self, k: Key) -> dict:
         if k.kind is None:
             return {"description": "a number with a unit, e.g. 500 mm",
-                    "anyOf": [{"type": "number"}, {"type": "string", "pattern": quantity_pattern(None)}]}
+                    "anyOf": [{"type": "number"}, {"type": "string", "pattern": quantity_pattern(None),
+                                                   "patternErrorMessage": unit_message(None)}]}
         name = f"quantity_{k.kind}"
         if name not in self.defs:
-            text = {"type": "string", "pattern": quantity_pattern(k.kind)}
+            text = {"type": "string", "pattern": quantity_pattern(k.kind),
+                    "patternErrorMessage": unit_message(k.kind), "examples": [example_of(k.kind)]}
             self.defs[name] = ({"anyOf": [{"type": "number"}, text]} if k.kind == "dimensionless" else text)
         words = k.kind.replace("_", " ")
         sign = ""
         out: dict = {"$ref": f"#/$defs/{name}"}
+        example = k.example if k.example is not None else example_of(k.kind)
         if k.positive:
             sign, out["pattern"] = ", positive", _POSITIVE
+            out["patternErrorMessage"] = f"{words} must be positive, e.g. {example}"
             if k.kind == "dimensionless":
                 out["exclusiveMinimum"] = 0
         elif k.non_negative:
             sign, out["pattern"] = ", not negative", _NON_NEGATIVE
+            out["patternErrorMessage"] = f"{words} must not be negative, e.g. {example}"
             if k.kind == "dimensionless":
                 out["minimum"] = 0
         if k.maximum is not None:
             sign += f", at most {k.maximum[1]}"
-        example = k.example if k.example is not None else example_of(k.kind)
         return {"description": f"{words}{sign}, e.g. {example}", **out}
 
     def _number(self, k: Key) -> dict:
@@ -295,11 +312,11 @@ def json_schema(kind: str) -> dict:
     spec = spec_of(kind)
     w = _Writer(spec)
     body = w.spec(spec, top=True)
-    out = {"$schema": SCHEMA_DIALECT, "$id": f"{SCHEMA_BASE}{kind}.json", "title": f"axisopt {kind} file"}
+    out = {"$schema": SCHEMA_DIALECT, "$id": f"{SCHEMA_BASE}{kind}", "title": f"axisopt {kind} file"}
     out.update(body)
     if w.defs:
         out["$defs"] = dict(sorted(w.defs.items()))
     return out
 
 
-__all__ = ["json_schema", "spec_of", "units_of", "quantity_pattern", "KINDS_OF_FILE"]
+__all__ = ["json_schema", "spec_of", "units_of", "quantity_pattern", "unit_message", "KINDS_OF_FILE"]

@@ -5,7 +5,9 @@ m, kg, s, N, N/m, N*m, rad/s, Pa, K.  Money is kept in the catalog's currency (E
 dimension of its own so that "EUR/m" and "EUR" are checked like any other unit.
 
 Parsing uses pint; vendor spellings such as ``N.m`` or ``mm.rpm`` (a dot for a product) and
-``um`` for micrometre are accepted.
+``um`` for micrometre are accepted.  The units the shipped catalogs, problems and reports use are looked up in
+:data:`KNOWN` (factors pint computed, each checked against pint by the tests), so that a command that reads only
+those never builds pint's registry (half a second); any other unit goes to pint.
 """
 
 from __future__ import annotations
@@ -14,14 +16,19 @@ import functools
 import math
 import re
 
-import pint
-
 from .errors import InputError
 
-_UREG = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-_UREG.define("EUR = [currency]")
-_UREG.define("USD = 0.92 EUR")  # illustrative fixed rate; catalogs here are in EUR
-_UREG.define("percent_ = 0.01 = pct")
+
+@functools.lru_cache(maxsize=1)
+def _registry():
+    """pint's unit registry, built on first use (only for a unit that is not in :data:`KNOWN`)."""
+    import pint
+
+    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    ureg.define("EUR = [currency]")
+    ureg.define("USD = 0.92 EUR")  # illustrative fixed rate; catalogs here are in EUR
+    ureg.define("percent_ = 0.01 = pct")
+    return ureg
 
 # Expected dimension of each quantity kind, as a pint dimensionality string, and its SI unit.
 KINDS: dict[str, tuple[str, str]] = {
@@ -91,6 +98,14 @@ def unit_factor(unit: str, kind: str) -> float:
     """
     dim, si = KINDS[kind]
     text = _normalise(unit)
+    known = KNOWN.get((text, kind))
+    return known if known is not None else _pint_factor(unit, text, kind)
+
+
+def _pint_factor(unit: str, text: str, kind: str) -> float:
+    """:func:`unit_factor` by pint (``text``: the normalised ``unit``)."""
+    _UREG = _registry()
+    dim, si = KINDS[kind]
     if kind == "temperature_difference":  # a rise of 3 degC is 3 K
         text = {"degC": "delta_degC", "degF": "delta_degF", "celsius": "delta_degC"}.get(text, text)
     try:
@@ -111,6 +126,71 @@ def unit_factor(unit: str, kind: str) -> float:
     return float(q.to(target).magnitude)
 
 
+# (unit as :func:`_normalise` writes it, kind) -> factor to SI, as :func:`_pint_factor` computes it.  The units of
+# the shipped catalogs, problems, studies and reports, and a few common others; tests/core/test_units.py checks
+# every entry against pint.  A unit missing here is still read (by pint), only slower the first time.
+KNOWN: dict[tuple[str, str], float] = {
+    ('1/K', 'thermal_expansion'): 1.0,
+    ('1/s', 'frequency'): 1.0,
+    ('EUR', 'money'): 1.0,
+    ('EUR/m', 'money_per_length'): 1.0,
+    ('GPa', 'pressure'): 1000000000.0,
+    ('Hz', 'frequency'): 1.0,
+    ('K', 'temperature'): 1.0,
+    ('K', 'temperature_difference'): 1.0,
+    ('MPa', 'pressure'): 1000000.0,
+    ('N', 'force'): 1.0,
+    ('N*m', 'torque'): 1.0,
+    ('N*m', 'torsional_stiffness'): 1.0,
+    ('N*m/rad', 'torsional_stiffness'): 1.0,
+    ('N*mm', 'torque'): 0.001,
+    ('N*s/m', 'damping'): 1.0,
+    ('N/m', 'stiffness'): 1.0,
+    ('N/um', 'stiffness'): 1000000.0,
+    ('Pa', 'pressure'): 1.0,
+    ('USD', 'money'): 0.92,
+    ('W', 'power'): 1.0,
+    ('cSt', 'kinematic_viscosity'): 1.0000000000000002e-06,
+    ('cm', 'length'): 0.01,
+    ('deg', 'angle'): 0.017453292519943295,
+    ('degC', 'temperature'): 1.0,
+    ('degC', 'temperature_difference'): 1.0,
+    ('dimensionless', 'dimensionless'): 1.0,
+    ('g', 'mass'): 0.001,
+    ('h', 'time'): 3600.0,
+    ('kN', 'force'): 1000.0,
+    ('kW', 'power'): 1000.0,
+    ('kg', 'mass'): 1.0,
+    ('kg*cm**2', 'inertia'): 0.0001,
+    ('kg*m**2', 'inertia'): 1.0,
+    ('kg*mm**2', 'inertia'): 1e-06,
+    ('kg/m', 'mass_per_length'): 1.0,
+    ('m', 'length'): 1.0,
+    ('m**2/s', 'kinematic_viscosity'): 1.0,
+    ('m*rad/s', 'dn'): 1.0,
+    ('m/N', 'compliance'): 1.0,
+    ('m/min', 'speed'): 0.016666666666666666,
+    ('m/s', 'speed'): 1.0,
+    ('m/s**2', 'acceleration'): 1.0,
+    ('m/s**3', 'jerk'): 1.0,
+    ('min', 'time'): 60.0,
+    ('mm', 'length'): 0.001,
+    ('mm**2/s', 'kinematic_viscosity'): 1e-06,
+    ('mm*rpm', 'dn'): 0.00010471975511965978,
+    ('mm/min', 'speed'): 1.6666666666666667e-05,
+    ('mm/s', 'speed'): 0.001,
+    ('mm/s**2', 'acceleration'): 0.001,
+    ('ms', 'time'): 0.001,
+    ('rad', 'angle'): 1.0,
+    ('rad/s', 'angular_speed'): 1.0,
+    ('rpm', 'angular_speed'): 0.10471975511965977,
+    ('s', 'time'): 1.0,
+    ('um', 'length'): 1e-06,
+    ('um/N', 'compliance'): 1e-06,
+}
+_KELVIN_OFFSET = {"K": 0.0, "degC": 273.15}  # temperature units read without pint
+
+
 _ANGLE_WORDS = re.compile(r"rad|deg|rev|rpm|rps|turn|cycle", re.IGNORECASE)
 
 
@@ -121,7 +201,7 @@ def _rate_factor(text: str, q, kind: str) -> float:
     Any other rate (Hz, 1/min, 1/s) counts cycles: its value in 1/s is cycles per second.
     angular_speed -> rad/s, frequency -> Hz.
     """
-    per_s = float(q.to(_UREG.Unit("1/s")).magnitude)
+    per_s = float(q.to(_registry().Unit("1/s")).magnitude)
     angular = bool(_ANGLE_WORDS.search(text))
     if kind == "angular_speed":
         return per_s if angular else per_s * 2.0 * math.pi
@@ -132,7 +212,11 @@ def to_si(value: float, unit: str, kind: str) -> float:
     """Convert ``value`` given in ``unit`` to SI; temperatures to kelvin (offsets handled)."""
     if kind == "temperature":
         unit_factor(unit, kind)  # validates
-        return float(_UREG.Quantity(value, _UREG.Unit(_normalise(unit))).to("kelvin").magnitude)
+        text = _normalise(unit)
+        if text in _KELVIN_OFFSET:  # as pint converts them: value * 1 + offset
+            return value + _KELVIN_OFFSET[text]
+        ureg = _registry()
+        return float(ureg.Quantity(value, ureg.Unit(text)).to("kelvin").magnitude)
     return value * unit_factor(unit, kind)
 
 

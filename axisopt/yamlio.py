@@ -30,10 +30,20 @@ class Node:
     value: Any  # dict[str, Node] | list[Node] | scalar
     line: int
 
+    def __repr__(self) -> str:  # as the user wrote it: error messages never show Node(value=..., line=...)
+        return repr(plain(self))
+
+    def __str__(self) -> str:
+        v = plain(self)
+        return v if isinstance(v, str) else repr(v)
+
 
 MAX_DEPTH = 64  # nesting of mappings and lists; the deepest axisopt input nests 5 levels
 MAX_VALUES = 200_000  # values after expanding aliases (a YAML "billion laughs" expands to 10^9)
-MAX_BYTES = 20_000_000  # file size
+MAX_BYTES = 20_000_000  # file size (fileio.INPUT_LIMITS["yaml"])
+
+
+_PLAIN_TAGS = ("tag:yaml.org,2002:map", "tag:yaml.org,2002:seq")  # a mapping or list without an explicit tag
 
 
 class _Loader(yaml.SafeLoader):
@@ -56,6 +66,9 @@ def _construct(loader, node, count=None):
         raise InputError(f"YAML too large: more than {MAX_VALUES:,} values once its aliases are expanded",
                          where=f"line {node.start_mark.line + 1}")
     line = node.start_mark.line + 1
+    if isinstance(node, (yaml.MappingNode, yaml.SequenceNode)) and node.tag not in _PLAIN_TAGS:
+        raise InputError(f"YAML tag '{node.tag}' is not supported here (write a plain mapping or list)",
+                         where=f"line {line}")
     if isinstance(node, yaml.MappingNode):
         out: dict[str, Node] = {}
         for k, v in node.value:
@@ -74,15 +87,9 @@ def _construct(loader, node, count=None):
 def read_yaml(path) -> Node:
     path = Path(path)
     src = str(path)
-    try:
-        if path.exists() and not path.is_file():  # a FIFO, device or directory: no reading without end
-            raise InputError("not a regular file", source=src)
-        if path.is_file() and path.stat().st_size > MAX_BYTES:
-            raise InputError(f"file too large ({path.stat().st_size:,} bytes; at most {MAX_BYTES:,})", source=src)
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        why = getattr(exc, "strerror", None) or exc  # a decoding error has no strerror
-        raise InputError(f"cannot read file ({exc.__class__.__name__}: {why})", source=src) from None
+    from .fileio import read_input  # regular files only (a FIFO or device is never opened), size cap
+
+    text = read_input(path, "yaml", what="file")
     return parse_yaml_text(text, src)
 
 
@@ -278,7 +285,7 @@ class Section:
         n = self.raw(key, None, required=required)
         if n is None:
             return default
-        v = parse_quantity(n.value, kind, source=self.source, key=self.where(key))
+        v = parse_quantity(plain(n), kind, source=self.source, key=self.where(key))
         if positive and not v > 0:
             raise self.error(key, f"must be positive, got '{n.value}'")
         if non_negative and v < 0:

@@ -1,7 +1,7 @@
 """Benchmark: diagnose a 10 000-row static stiffness test (budget 5 s).  Prints the time and its ratio
 to the budget.  ``python bench/bench_diagnose.py [rows]``; not run as a test."""
 
-import sys
+import argparse
 import time
 from pathlib import Path
 
@@ -35,5 +35,12 @@ def main(rows: int = 10_000) -> None:
     print(f"time {dt:.2f} s  budget {BUDGET:.1f} s  ratio {dt / BUDGET:.2f}")
 
 
+def cli(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("rows", nargs="?", type=int, default=10_000, help="rows of the synthetic test (10 000)")
+    main(ap.parse_args(argv).rows)
+    return 0
+
+
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 10_000)
+    raise SystemExit(cli())

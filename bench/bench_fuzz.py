@@ -4,7 +4,8 @@
     python bench/bench_fuzz.py --replay 123 --keep /tmp/case123      # write case 123's files, print its command
 
 Every case is one shipped input (design, problem, study with a tiny sweep, saved calibration, diagnose data
-CSV, user catalog directory, compare pair, or command-line flags) with a mutation from
+CSV, user catalog directory, compare pair, or command-line flags) with a mutation, or one of the hardening
+cases of issue 24 (FIFO and device paths, '-', oversized or degenerate data, ...), from
 ``tests/core/fuzz_inputs.py``, run as a subprocess ``python -m axisopt ...`` in its own empty directory with a
 time limit.  Each outcome is classified against the CLI contract:
 

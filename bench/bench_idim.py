@@ -2,7 +2,7 @@
 12 000-sample validation run (budget 5 s).  Prints the times, the IV/LS time ratio and the ratio to the budget.
 ``python bench/bench_idim.py [samples]``; not run as a test."""
 
-import sys
+import argparse
 import tempfile
 import time
 from pathlib import Path
@@ -41,5 +41,12 @@ def main(samples: int = 25_000) -> None:
     print(f"read + identify + diagnose {total:.2f} s  budget {BUDGET:.1f} s  ratio {total / BUDGET:.2f}")
 
 
+def cli(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("samples", nargs="?", type=int, default=25_000, help="samples of the estimation record (25 000)")
+    main(ap.parse_args(argv).samples)
+    return 0
+
+
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 25_000)
+    raise SystemExit(cli())

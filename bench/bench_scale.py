@@ -84,7 +84,7 @@ def one(size: float, method: str) -> dict:
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser()
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sizes", nargs="+", type=float, default=[1e6, 1e7, 1e8])
     ap.add_argument("--exhaustive-check", action="store_true")
     ap.add_argument("--pareto", type=float, metavar="SIZE", help="also the 4-objective Pareto front at SIZE")
@@ -100,17 +100,19 @@ def main(argv=None):
         runs.append((args.pareto, "pareto"))
     # pruning by kind: pairs never formed (dominated coupling, coupling too weak for the motor), blocks pruned
     # by their bound, combinations screened one by one, survivors pruned by bound, exact 1-D solves
-    print(f"{'combinations':>14}{'method':>12}{'time s':>9}{'peak MB':>9}{'never formed':>14}{'by block':>14}"
-          f"{'screened':>12}{'by bound':>10}{'exact':>9}{'feasible':>10}  objective")
+    # every column is at least one space wider than its widest number (11-digit counts with commas), so that
+    # two numbers never run together (an exhaustive row's "0" and "1,600,000" printed as "01,600,000")
+    print(f"{'combinations':>15} {'method':>11} {'time s':>8} {'peak MB':>8} {'never formed':>14} {'by block':>14}"
+          f" {'screened':>14} {'by bound':>14} {'exact':>14} {'feasible':>14}  objective")
     rows = []
     for size, method in runs:
         out = subprocess.run([sys.executable, __file__, "--child", str(size), method], capture_output=True,
                              text=True, check=True)
         r = json.loads(out.stdout.strip().splitlines()[-1])
         rows.append(r)
-        print(f"{r['combinations']:>14,}{method:>12}{r['time_s']:>9.2f}{r['peak_MB']:>9.0f}"
-              f"{r['never_formed']:>14,}{r['by_block']:>14,}{r['screened']:>12,}{r['pruned']:>10,}"
-              f"{r['exact']:>9,}{(r['feasible'] or 0):>10,}  "
+        print(f"{r['combinations']:>15,} {method:>11} {r['time_s']:>8.2f} {r['peak_MB']:>8.0f}"
+              f" {r['never_formed']:>14,} {r['by_block']:>14,} {r['screened']:>14,} {r['pruned']:>14,}"
+              f" {r['exact']:>14,} {(r['feasible'] or 0):>14,}  "
               f"{r['status']}" + ("" if method == "pareto" else f" {r['objective']:.4f} {r['unit']}"))
     ex = [r for r in rows if r["method"] == "exhaustive"]
     if ex:

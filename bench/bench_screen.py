@@ -39,7 +39,7 @@ def cases(synthetic):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser()
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--synthetic", nargs="*", type=float, default=[1e6, 1e7])
     ap.add_argument("--check", help="npz file of survivors and bounds: written if absent, else compared")

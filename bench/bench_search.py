@@ -75,7 +75,8 @@ def synthetic_catalog(seed=0, n_screws=20, nuts_per_screw=5, n_bearings=100, n_g
                        "dynamic_load_rating": 3e4, "static_load_rating": 5e4, "friction_force": rng.uniform(3, 30),
                        "friction_coefficient": 0.003, "friction_viscous": rng.uniform(3, 20), "damping": 3000.0,
                        "block_mass": rng.uniform(0.2, 1.5), "rail_mass_per_length": rng.uniform(2, 6),
-                       "block_price": rng.uniform(50, 200), "rail_price_per_length": rng.uniform(50, 150)})
+                       "block_price": rng.uniform(50, 200), "rail_price_per_length": rng.uniform(50, 150),
+                       "moment_roll": 400.0, "moment_pitch": 300.0, "moment_yaw": 300.0})
 
     def df(rows, name):
         d = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]))
@@ -105,7 +106,7 @@ REPEAT = 3  # the default method and the screening are timed as the best of this
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser()
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--bonmin-time", type=float, default=100.0)
     ap.add_argument("--skip-bonmin", action="store_true")
     ap.add_argument("--skip-exhaustive-large", action="store_true")

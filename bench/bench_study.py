@@ -4,7 +4,8 @@
 
 Runs the cases of the study three ways and prints wall-clock times and ratios:
 
-1. a plain loop in this process: build each case's problem and ``solve`` it (no files, no pool);
+1. a plain loop in this process: build each case's problem and ``solve`` it (no files, no pool), with the
+   median solve time of the feasible and of the infeasible cases (explanation included) and their ratio;
 2. ``run_study`` with 1 worker process (case files, table, plots and report included);
 3. ``run_study`` with 2 worker processes.
 
@@ -15,6 +16,7 @@ Targets (issue 5): 1000 cases in <= 60 s on 2 cores; study overhead <= 10 % over
 from __future__ import annotations
 
 import argparse
+import statistics
 import sys
 import tempfile
 import time
@@ -28,16 +30,29 @@ from axisopt.search import solve  # noqa: E402
 from axisopt.study import build_problem, load_study, run_study  # noqa: E402
 
 
-def plain_loop(study) -> float:
+def plain_loop(study) -> tuple[float, dict]:
+    """Total time and each case's solve time by outcome ('feasible': a design; 'infeasible': explained)."""
     ctx = study.context()
+    per = {"feasible": [], "infeasible": []}
     t0 = time.perf_counter()
     for c in study.cases:
         try:
             p = build_problem(ctx, c)
         except Exception:  # noqa: BLE001 - an invalid combination counts as a (quick) failed case
             continue
-        solve(p, study.method, top=1, sensitivities=False)
-    return time.perf_counter() - t0
+        t = time.perf_counter()
+        r = solve(p, study.method, top=1, sensitivities=False)
+        per["feasible" if r.best is not None else "infeasible"].append(time.perf_counter() - t)
+    return time.perf_counter() - t0, per
+
+
+def print_medians(per: dict) -> None:
+    """Median solve time of feasible and of infeasible cases (the latter include the explanation)."""
+    med = {k: statistics.median(v) if v else float("nan") for k, v in per.items()}
+    for k in ("feasible", "infeasible"):
+        print(f"  {k + ' cases':<18}{len(per[k]):>5}   median {1e3 * med[k]:7.1f} ms/case   "
+              f"total {sum(per[k]):6.1f} s")
+    print(f"  infeasible / feasible median: {med['infeasible'] / med['feasible']:.2f}  (target <= 2)")
 
 
 def timed_study(study, workers: int) -> tuple[float, object]:
@@ -52,6 +67,7 @@ def main(argv=None) -> int:
     ap.add_argument("--study", default=str(ROOT / "problems/studies/vmc_random_1000.yaml"))
     ap.add_argument("--n", type=int, default=1000, help="use the first N cases")
     ap.add_argument("--skip-loop", action="store_true", help="skip the plain loop")
+    ap.add_argument("--loop-only", action="store_true", help="only the plain loop and its per-case medians")
     args = ap.parse_args(argv)
     study = load_study(args.study)
     study = replace(study, cases=study.cases[: args.n])
@@ -61,8 +77,11 @@ def main(argv=None) -> int:
     solve(build_problem(study.context(), study.cases[0]), top=1, sensitivities=False)
     t_loop = None
     if not args.skip_loop:
-        t_loop = plain_loop(study)
+        t_loop, per = plain_loop(study)
         print(f"plain loop (1 process)        {t_loop:7.1f} s   {1e3 * t_loop / n:6.1f} ms/case")
+        print_medians(per)
+        if args.loop_only:
+            return 0
     t1, s1 = timed_study(study, 1)
     print(f"study, 1 worker process       {t1:7.1f} s   {1e3 * t1 / n:6.1f} ms/case   ({s1.failed} failed cases)")
     t2, s2 = timed_study(study, 2)

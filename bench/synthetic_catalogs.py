@@ -96,7 +96,9 @@ def catalog(n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100, n_motor
                        "dynamic_load_rating": c, "static_load_rating": 2 * c, "friction_force": 0.2 * size * f,
                        "friction_coefficient": 0.003, "friction_viscous": 0.4 * size, "damping": 100 * size,
                        "block_mass": 1.5e-5 * size ** 3, "rail_mass_per_length": 0.005 * size ** 2,
-                       "block_price": (3 * size + 40) * lvl, "rail_price_per_length": (2.5 * size + 30) * lvl})
+                       "block_price": (3 * size + 40) * lvl, "rail_price_per_length": (2.5 * size + 30) * lvl,
+                       # static moment ratings about 1 % of C0 per metre of block, as HIWIN HG (C0/M ~ 100-200 1/m)
+                       "moment_roll": 0.012 * 2 * c, "moment_pitch": 0.008 * 2 * c, "moment_yaw": 0.008 * 2 * c})
     for i in range(n_motors):
         vend, lvl = _vendor(rng)
         t = float(rng.choice([1.3, 2.4, 3.2, 4.8, 6.4, 8.3, 11.5, 15, 20, 30]))

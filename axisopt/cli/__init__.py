@@ -1,5 +1,5 @@
-"""Command line: ``axisopt evaluate | solve | diagnose | compare | study | parts``.  The only package that prints:
-one module per command, shared output helpers in :mod:`.common`.
+"""Command line: ``axisopt evaluate | solve | diagnose | compare | study | parts | schema | init``.  The only
+package that prints: one module per command, shared output helpers in :mod:`.common`.
 
 Exit codes: 0 success (solve: a proven optimum), 1 a proven negative answer (an infeasible problem; a failed
 check with ``evaluate --fail-on-check``), 2 bad input (one line on stderr naming the file and key or line),
@@ -14,7 +14,7 @@ import logging
 import sys
 
 from ..errors import InputError
-from .common import EXIT_INPUT, EXIT_INTERRUPTED, GuardedStdout, Parser
+from .common import EXIT_INPUT, EXIT_INTERRUPTED, GuardedStdout, Parser, error_line
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -31,10 +31,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _commands():
     """One module per subcommand, each with ``register(sub)``; they import their heavy parts lazily."""
-    from . import compare, diagnose, evaluate, parts, schema, solve, study
+    from . import compare, diagnose, evaluate, init, parts, schema, solve, study
 
     return [evaluate.register, solve.register, diagnose.register, compare.register, study.register,
-            parts.register, schema.register]
+            parts.register, schema.register, init.register]
 
 
 def _show_progress() -> None:
@@ -47,6 +47,18 @@ def _show_progress() -> None:
         log.setLevel(logging.INFO)
 
 
+def _one_output_on_stdout(args) -> None:
+    """Two outputs on standard output ('--json - --csv -') would interleave into neither format."""
+    from ..fileio import is_stdout
+    from .common import OUTPUT_OPTIONS
+
+    taken = [o for o in OUTPUT_OPTIONS if isinstance(getattr(args, o[2:].replace("-", "_"), None), str)
+             and is_stdout(getattr(args, o[2:].replace("-", "_")))]
+    if len(taken) > 1:
+        both = "both" if len(taken) == 2 else "all"
+        raise InputError(f"{' and '.join(taken)} would {both} write to standard output; give all but one a file name")
+
+
 def main(argv=None) -> int:
     _show_progress()
     saved = sys.stdout
@@ -54,9 +66,10 @@ def main(argv=None) -> int:
     try:
         parser = build_parser()
         args = parser.parse_args(argv)
+        _one_output_on_stdout(args)
         code = args.func(args)
     except InputError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        error_line(str(exc))
         code = EXIT_INPUT
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)

@@ -68,6 +68,44 @@ def show(text: str) -> None:
             force_terminal=True, color_system="standard").print(t)
 
 
+def stdout_taken(*targets) -> bool:
+    """True when one of the output paths is standard output ('-' or /dev/stdout): the command's text is then
+    not printed, so that stdout holds only that output."""
+    from ..fileio import is_stdout
+
+    return any(t is not None and t != "" and is_stdout(t) for t in targets)
+
+
+MAX_ERROR_CHARS = 400
+
+
+def one_line(text: str) -> str:
+    """An error message as one printable line: line breaks and other control characters shown escaped
+    (``\\n``), runs of blanks folded, at most ``MAX_ERROR_CHARS`` characters (the rest elided).  The one
+    place every error the CLI prints goes through."""
+    out = []
+    for ch in str(text):
+        if ch in "\n\r":
+            out.append("\\n" if ch == "\n" else "\\r")
+        elif ch == "\t":
+            out.append(" ")
+        elif ord(ch) < 32 or ord(ch) == 127 or 0x80 <= ord(ch) < 0xA0 or ch in "\u2028\u2029":
+            out.append(f"\\x{ord(ch):02x}" if ord(ch) < 256 else f"\\u{ord(ch):04x}")
+        else:
+            out.append(ch)
+    line = " ".join("".join(out).split())
+    if len(line) > MAX_ERROR_CHARS:
+        line = line[:MAX_ERROR_CHARS - 25] + f" ... ({len(line):,} characters)"
+    return line
+
+
+def error_line(text: str) -> None:
+    """Print ``error: TEXT`` as one line on stderr, on a line of its own (after a progress bar)."""
+    import sys
+
+    print(f"error: {one_line(text)}", file=sys.stderr, flush=True)
+
+
 def wrote(path, quiet: bool) -> None:
     if not quiet:
         print(f"\nreport written to {path}")
@@ -86,7 +124,6 @@ class GuardedStdout:
     def _lose(self, exc: OSError) -> None:
         import errno
         import os
-        import sys
 
         self.lost = exc
         try:  # Python's own flush at exit must not fail again on the data still buffered
@@ -94,7 +131,7 @@ class GuardedStdout:
         except (OSError, ValueError, AttributeError):
             pass
         if exc.errno != errno.EPIPE:
-            print(f"error: standard output: {exc.strerror or exc}; output lost", file=sys.stderr)
+            error_line(f"standard output: {exc.strerror or exc}; output lost")
 
     def write(self, text: str) -> int:
         if self.lost is None:
@@ -115,8 +152,24 @@ class GuardedStdout:
         return getattr(self._s, name)
 
 
+# options that name an output file or directory: an empty name is a usage error, never "not given"
+OUTPUT_OPTIONS = ("--json", "--csv", "--plot", "--out", "--report", "--save-design", "--save-calibration", "--frf")
+
+
+def _output_path(text: str) -> str:
+    if not text.strip():
+        raise argparse.ArgumentTypeError("empty file name")
+    return text
+
+
 class Parser(argparse.ArgumentParser):
-    """argparse that reports a usage error as one line (InputError, exit code 2)."""
+    """argparse that reports a usage error as one line (InputError, exit code 2); an output option given an
+    empty name (``--save-design ""``) is such an error."""
+
+    def add_argument(self, *names, **kw):
+        if any(n in OUTPUT_OPTIONS for n in names) and "type" not in kw and kw.get("action") in (None, "store"):
+            kw["type"] = _output_path
+        return super().add_argument(*names, **kw)
 
     def error(self, message):
         raise InputError(f"{self.prog}: {message}")
@@ -146,12 +199,11 @@ def _finite(obj):
 
 
 def write_json(obj, target: str) -> None:
-    """Write ``obj`` as JSON to a file (atomically: the old file stays whole if writing fails), or to stdout
-    when ``target`` is '-'.  A file that cannot be written is an InputError naming it."""
-    text = json.dumps(_finite(obj), indent=2, default=json_default, allow_nan=False)
-    if target == "-":
-        print(text)
-        return
+    """Write ``obj`` as JSON through :func:`axisopt.fileio.open_output`: a regular file atomically (the
+    old file stays whole if writing fails), '-' to stdout, a FIFO or device in place.  A file that cannot be
+    written is an InputError naming it."""
     from ..fileio import write_text_atomic
+
+    text = json.dumps(_finite(obj), indent=2, default=json_default, allow_nan=False)
 
     write_text_atomic(target, text + "\n", what="JSON")

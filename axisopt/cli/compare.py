@@ -2,9 +2,17 @@
 
 from __future__ import annotations
 
-import sys
-
-from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json, wrote
+from .common import (
+    EXIT_NEGATIVE,
+    EXIT_OK,
+    add_html_report,
+    check_html_report,
+    error_line,
+    show,
+    stdout_taken,
+    write_json,
+    wrote,
+)
 
 
 def register(sub) -> None:
@@ -24,7 +32,7 @@ def cmd_compare(args) -> int:
     check_html_report(args.report)
     items = load_compared(args.files)
     text = compare_table(items)
-    if args.json != "-":
+    if not stdout_taken(args.json, args.csv):
         show(text)
     if args.json:
         write_json(compare_dict(items), args.json)
@@ -35,14 +43,14 @@ def cmd_compare(args) -> int:
         from ..report import plot_profiles
 
         plot_profiles([c.evaluation for c in evs], args.plot, labels=[c.label for c in evs])
-        if args.json != "-":
+        if not stdout_taken(args.json, args.csv):
             print(f"\nplot written to {args.plot}")
     if args.report:
         from ..report.html import compare_page, write_page
 
         write_page(compare_page(items, text), args.report)
-        wrote(args.report, args.json == "-")
+        wrote(args.report, stdout_taken(args.json, args.csv))
     failed = [c for c in items if not c.ok]
     for c in failed:
-        print(f"error: {c.source}: problem has no design to compare (status {c.solve['status']})", file=sys.stderr)
+        error_line(f"{c.source}: problem has no design to compare (status {c.solve['status']})")
     return EXIT_NEGATIVE if failed else EXIT_OK

@@ -7,7 +7,7 @@ inverse dynamic identification of :mod:`axisopt.identify.idim` (first file estim
 from __future__ import annotations
 
 from ..errors import InputError
-from .common import EXIT_OK, write_json
+from .common import EXIT_OK, stdout_taken, write_json
 
 
 def cmd_diagnose(args) -> int:
@@ -19,7 +19,7 @@ def cmd_diagnose(args) -> int:
     from ..identify import diagnose, plant_from_design, read_dataset
     from ..identify.calibration import save_calibration
     from ..identify.effects import library
-    from ..identify.report import diagnosis_dict, diagnosis_text, write_report
+    from ..report.diagnosis import diagnosis_dict, diagnosis_text, write_report
 
     html = args.report is not None and str(args.report).lower().endswith((".html", ".htm"))
     if html:
@@ -37,7 +37,7 @@ def cmd_diagnose(args) -> int:
     if args.max_effects < 0:
         raise InputError("--max-effects must not be negative")
     diag = diagnose(datasets, plant_from_design(design), candidates=names, max_effects=args.max_effects)
-    quiet = args.json == "-"
+    quiet = stdout_taken(args.json, args.save_calibration)
     text = diagnosis_text(diag)
     if not quiet:
         print(text)
@@ -79,7 +79,7 @@ def _cmd_diagnose_time(args) -> int:
     names = [n.strip() for n in args.effects.split(",") if n.strip()] if args.effects else None
     diag = diagnose_time_files(args.data, plant=plant_from_design(load_design(args.design)), gain=args.gain,
                                candidates=names, max_effects=args.max_effects)
-    if args.json != "-":
+    if not stdout_taken(args.json):
         print(time_diagnosis_text(diag))
     if args.json:
         write_json(time_diagnosis_dict(diag), args.json)
@@ -98,7 +98,7 @@ def register(sub) -> None:
     d.add_argument(
         "--effects", metavar="A,B", help="only consider these effects (default: the whole library)"
     )
-    d.add_argument("--max-effects", type=int, default=2, metavar="N", help="accept at most N effects (2)")
+    d.add_argument("--max-effects", type=int, default=3, metavar="N", help="accept at most N effects (3)")
     d.add_argument("--gain", metavar="'0.85 N.m/A'",
                    help="time records with a current column: torque (N.m/A) or force (N/A) per ampere, for files "
                         "without a '# gain:' line")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json, wrote
+from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, stdout_taken, write_json, wrote
 
 
 def register(sub) -> None:
@@ -45,7 +45,7 @@ def cmd_evaluate(args) -> int:
         from ..model.frf import frf
 
         resp = frf(ev)
-    if args.json != "-":
+    if not stdout_taken(args.json):
         show(evaluation_table(ev))
         if rows is not None:
             from ..report.methods import methods_table
@@ -64,19 +64,19 @@ def cmd_evaluate(args) -> int:
         write_json(out, args.json)
     if args.plot:
         plot_profiles([ev], args.plot)
-        if args.json != "-":
+        if not stdout_taken(args.json):
             print(f"\nplot written to {args.plot}")
     if args.frf:
         from ..report.methods import plot_frf
 
         plot_frf(resp, args.frf)
-        if args.json != "-":
+        if not stdout_taken(args.json):
             print(f"\nFRF plot written to {args.frf}")
     if args.report:
         from ..report.html import evaluation_page, write_page
 
         write_page(evaluation_page(ev), args.report)
-        wrote(args.report, args.json == "-")
+        wrote(args.report, stdout_taken(args.json))
     if args.fail_on_check:
         from ..report.evaluation import check_rows
 

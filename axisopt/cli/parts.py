@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..errors import InputError
-from .common import EXIT_OK, write_json
+from .common import EXIT_OK, stdout_taken, write_json
 
 KINDS = ("screws", "nuts", "bearings", "guides", "motors", "couplings")
 
@@ -217,7 +217,7 @@ def cmd_parts(args) -> int:
     if args.status is not None and args.status not in STATUSES:
         raise InputError(f"'{args.status}' is not one of {', '.join(STATUSES)}", where="--status")
     cat = load_catalogs(args.catalogs)
-    quiet = args.json == "-"
+    quiet = stdout_taken(args.json, args.csv)
     if args.kind:
         df = apply_filters(cat, args.kind, _filtered(cat, args.kind, args.vendor, args.status), args)
         if not quiet:
@@ -228,10 +228,10 @@ def cmd_parts(args) -> int:
         if args.csv:
             import pandas as pd
 
-            from ..fileio import atomic_file
+            from ..fileio import csv_safe, open_output
 
-            with atomic_file(args.csv, "w", what="CSV") as fh:
-                pd.DataFrame(rows_dicts(df, args.kind)).to_csv(fh, index=False)
+            with open_output(args.csv, "w", what="CSV") as fh:  # text cells escaped against CSV injection
+                csv_safe(pd.DataFrame(rows_dicts(df, args.kind))).to_csv(fh, index=False)
             if not quiet:
                 print(f"rows written to {args.csv}")
         return EXIT_OK

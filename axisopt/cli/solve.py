@@ -6,7 +6,18 @@ import math
 import sys
 import textwrap
 
-from .common import EXIT_NEGATIVE, EXIT_OK, EXIT_UNPROVEN, add_html_report, check_html_report, show, write_json, wrote
+from .common import (
+    EXIT_NEGATIVE,
+    EXIT_OK,
+    EXIT_UNPROVEN,
+    add_html_report,
+    check_html_report,
+    one_line,
+    show,
+    stdout_taken,
+    write_json,
+    wrote,
+)
 
 
 def register(sub) -> None:
@@ -39,13 +50,12 @@ def cmd_solve(args) -> int:
         raise InputError(f"--time-limit must be positive, got {args.time_limit}")
     check_html_report(args.report)
     problem = load_problem(args.problem)
-    if args.save_design and args.save_design.lower().endswith((".yaml", ".yml")) \
-            and problem.objective.mode == "pareto":
+    if args.save_design and _single_file(args.save_design) and problem.objective.mode == "pareto":
         raise InputError("a Pareto front has several designs: give a directory, not a .yaml file",
                          where="--save-design")
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
                 sensitivities=not args.no_sensitivity)
-    quiet = args.json == "-"
+    quiet = stdout_taken(args.json, args.save_design)
     text = format_result(res, top=args.top) if not quiet or args.report else ""
     if not quiet:
         show(text)
@@ -101,9 +111,10 @@ def save_designs(res, target: str, top: int, problem_path: str) -> list:
     cands = list(res.pareto.points) if res.pareto is not None else \
         ([res.best] + list(res.runners_up))[:top] if res.best is not None else []
     cands = [c for c in cands if c is not None and c.design is not None]
+    problem_path = one_line(problem_path)  # a comment line: no line break in a file name may inject YAML
     if not cands:
         return []
-    single = target.lower().endswith((".yaml", ".yml"))
+    single = _single_file(target)
     out = []
     paths = [Path(target)] if single else [Path(target) / f"{i:0{len(str(len(cands)))}d}.yaml"
                                                  for i in range(1, len(cands) + 1)]
@@ -117,6 +128,13 @@ def save_designs(res, target: str, top: int, problem_path: str) -> list:
         write_text_atomic(str(path), head + design_to_yaml(c.design), what="design YAML")
         out.append(str(path))
     return out
+
+
+def _single_file(target: str) -> bool:
+    """--save-design names one file (.yaml/.yml, or '-' for stdout), not a directory."""
+    from ..fileio import is_stdout
+
+    return target.lower().endswith((".yaml", ".yml")) or is_stdout(target)
 
 
 def exit_code(status: str) -> int:
@@ -141,6 +159,8 @@ def format_result(res, top: int | None = None) -> str:
          + f", {res.time:.2f} s" + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else "")]
     if res.message:
         L.append(f"  note: {res.message}")
+    if res.infeasibility is not None:
+        L.extend(relax_lines(res.infeasibility))
     L.append("")
     if res.pareto is not None:
         L.append(format_pareto(res.pareto, top))
@@ -210,6 +230,39 @@ def format_result(res, top: int | None = None) -> str:
     from ..report.evaluation import fit_lines
 
     return fit_lines("\n".join(L))
+
+
+def relax_lines(inf) -> list:
+    """The first lines of an infeasible answer: what to relax, by how much, for which closest design."""
+    rel = inf.relax
+    if not rel:
+        return []
+
+    def amount(r):
+        u = f" {r.unit}" if r.unit else ""
+        sign = "+" if r.relaxed_to > r.value else "-"
+        rule = " (below the vendor's rule)" if r.below_vendor_rule else ""
+        return f"{r.key} from {_v(r.value)}{u} to {_v(r.relaxed_to)}{u} ({sign}{_num(100 * r.change)} %){rule}"
+
+    d = rel[0].design
+    who = f"design #{rel[0].design_rank}" + (f" ({d.mounting} {' / '.join(d.parts().values())})" if d else "")
+    if inf.relax_blocked_by:
+        head = (f"  no relaxation of the limits is enough: every closest design breaks a compatibility rule; "
+                f"{who} breaks {', '.join(inf.relax_blocked_by)} and besides needs ")
+    else:
+        head = "  to make it feasible, relax "
+    if len(rel) == 1 and not inf.relax_blocked_by:
+        L = [f"{head}{amount(rel[0])}: {who} then meets every limit"]
+    elif len(rel) == 1:
+        L = [f"{head}{amount(rel[0])}"]
+    else:
+        L = [f"{head}these {len(rel)} limits{' relaxed' if inf.relax_blocked_by else ''} together (smallest "
+             "change first)"
+             + ("" if inf.relax_blocked_by else f"; {who} then meets every limit") + ":"]
+        L += [f"    {amount(r)}" for r in rel]
+    for rank, rules in inf.not_relaxable:
+        L.append(f"  design #{rank} left out: it breaks {', '.join(rules)} (a compatibility rule, not relaxable)")
+    return L
 
 
 def _cand_table(cands, unit) -> str:

@@ -6,7 +6,7 @@ import sys
 import time
 
 from ..errors import InputError
-from .common import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report
+from .common import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, one_line
 
 
 def register(sub) -> None:
@@ -60,10 +60,19 @@ class _Bar:
     def close(self) -> None:
         if not self.enabled:
             return
+        self.enabled = False  # closed once
         if self.tqdm:
             self.tqdm.close()
         elif self.last:
-            print(file=sys.stderr)
+            print(file=sys.stderr, flush=True)
+
+
+def _is_terminal(stream) -> bool:
+    """The bar is drawn only on a terminal: a log file or pipe gets no carriage-return lines."""
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError):
+        return False
 
 
 def _hms(s: float) -> str:
@@ -83,16 +92,19 @@ def cmd_study(args) -> int:
     if args.scheduler and args.workers is not None:
         raise InputError("--workers and --scheduler exclude each other (the cluster has its own workers)")
     out = args.out or f"{Path(args.study).stem}-results"
-    bar = _Bar(not args.quiet)
+    if args.scheduler is not None and not args.scheduler.strip():
+        raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
+    bar = _Bar(not args.quiet and _is_terminal(sys.stderr))
     try:
         summary = run_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,
                             progress=bar)
     except KeyboardInterrupt:
         bar.close()
-        print(f"interrupted: finished cases are saved in {out}/cases; continue with "
-              f"'axisopt study {args.study} --out {out} --resume'", file=sys.stderr)
+        print(one_line(f"interrupted: finished cases are saved in {out}/cases; continue with "
+                       f"'axisopt study {args.study} --out {out} --resume'"), file=sys.stderr)
         return 130
-    bar.close()
+    finally:  # the bar's line ends before anything else is printed (an error included)
+        bar.close()
     s = summary
     if s.redone:
         print(f"resume: {s.redone} case{'s' if s.redone != 1 else ''} recorded as worker_died (an "
@@ -117,8 +129,10 @@ def cmd_study(args) -> int:
         notes.append(f"{s.lost} cases not run ({s.lost_reason})")
     if notes:
         note = "; ".join(notes) + f"; rerun with 'axisopt study {args.study} --out {out} --resume'"
-        print("note: " + " ".join(note.split()), file=sys.stderr)  # one line
-    return EXIT_NEGATIVE if s.lost or s.died else EXIT_OK
+        print("note: " + one_line(note), file=sys.stderr)  # one line
+    # 1 when any case has no design (infeasible, invalid combination, solver failure, worker died) or was not
+    # run; 0 only when every case found its design
+    return EXIT_NEGATIVE if s.lost or s.died or s.failed else EXIT_OK
 
 
 __all__ = ["register", "EXIT_INPUT"]

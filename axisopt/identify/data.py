@@ -19,6 +19,7 @@ empty or NaN cell is an :class:`InputError` naming the file, line and column.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -26,6 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..fileio import MAX_DATA_ROWS, read_input
 from ..units import check_plausible, split_header, to_si, unit_factor
 from ..yamlio import close_matches
 
@@ -143,12 +145,19 @@ def read_dataset(path) -> Dataset:
     """Read one test CSV.  See the module docstring for the formats."""
     src = str(path)
     try:
-        if Path(path).exists() and not Path(path).is_file():
-            raise InputError("not a regular file", source=src)
-        with Path(path).open(newline="", encoding="utf-8-sig") as fh:
+        text = read_input(path, "data", what="data file", encoding="utf-8-sig")  # regular files only, size cap
+        with io.StringIO(text, newline="") as fh:
             reader = csv.reader(fh)
             try:
-                rows = list(reader)
+                rows = []
+                for r in reader:
+                    rows.append(r)
+                    if len(rows) > MAX_DATA_ROWS + 100:  # header and comments besides the rows
+                        raise InputError(f"too many rows (at most {MAX_DATA_ROWS:,} readings)", source=src,
+                                         where=f"line {reader.line_num}")
+                    if any("\n" in c or "\r" in c for c in r):  # a stray quote swallowed line ends
+                        raise InputError("malformed CSV (a quoted cell runs over several lines: a stray '\"'?)",
+                                         source=src, where=f"line {reader.line_num}")
             except csv.Error as exc:
                 raise InputError(f"malformed CSV ({exc})", source=src, where=f"line {reader.line_num}") from None
     except (OSError, UnicodeDecodeError) as exc:
@@ -247,6 +256,7 @@ def read_dataset(path) -> Dataset:
         zero = (columns["velocity"] == 0.0) & keep
         excluded += [(int(i), "velocity 0: friction direction undefined") for i in lines[zero]]
         keep &= ~zero
+        _check_friction_sign(columns, keep, lines, names, src)
     if kind == "frf":
         if "magnitude" in columns:
             mag, ph = columns.pop("magnitude"), columns.pop("phase")
@@ -269,6 +279,30 @@ def read_dataset(path) -> Dataset:
         raise InputError("every row is excluded", source=src)
     columns = {k: v[keep] for k, v in columns.items()}
     return Dataset(kind, src, columns, lines[keep], sorted(excluded))
+
+
+def _check_friction_sign(columns, keep, lines, names, src) -> None:
+    """A friction table takes the signed force (or torque) the drive supplies: negative at negative velocity.
+    Magnitudes given with a signed velocity -- positive on both sides and about equal there, where a real
+    friction's odd part (its Coulomb level) would be -- would fit a Coulomb level of about zero and a spurious
+    offset: refused with the convention.  (A vertical axis whose weight exceeds its friction is positive on
+    both sides too, but differs between them by twice the friction, and passes.)"""
+    meas = "friction_force" if "friction_force" in columns else "drag_torque"
+    v, f = columns["velocity"][keep], columns[meas][keep]
+    neg, pos = v < 0, v > 0
+    if neg.sum() < 2 or pos.sum() < 2:
+        return
+    if np.mean(f[neg] > 0) < 0.95 or np.mean(f[pos] > 0) < 0.95:
+        return
+    fp, fn = float(np.median(f[pos])), float(np.median(f[neg]))
+    if abs(fp - fn) / 2 >= 0.25 * (fp + fn) / 2:
+        return
+    i = int(np.nonzero(neg & (f > 0))[0][0])
+    raise InputError(
+        f"{meas} is positive at negative velocity and about equal in both directions ({fn:.4g} against "
+        f"{fp:.4g}): a magnitude? A friction table takes the signed value the drive supplies, negative at "
+        f"negative velocity (F(|v|) sgn v)",
+        source=src, where=f"line {lines[keep][i]}, column {names.index(meas) + 1} ({meas})")
 
 
 def write_dataset(ds: Dataset, path, units: dict | None = None) -> None:

@@ -694,4 +694,37 @@ class DirectionAsymmetry(Effect):
         )
 
 
+@register_effect
+class QuadraticDrag(Effect):
+    name = "quadratic_drag"
+    title = "drag growing with the square of speed"
+    kinds = ("friction",)
+    signature = "residual odd in v and growing faster than v: c v|v| (seals, lubricant churning)"
+
+    def params(self, ctx):
+        v = max(float(np.max(np.abs(o.feature("velocity")))) for o in ctx.obs if o.kind == "friction")
+        fc = max(ctx.plant.coulomb, 10.0)
+        return [
+            Param(
+                "drag_coefficient",
+                "quadratic drag coefficient c of c v|v|",
+                "N.s^2/m^2",
+                "mass_per_length",
+                0.1 * fc / v**2,
+                -1e12,
+                1e12,
+                typical=fc / v**2,
+                plausible=(0.0, 20.0 * fc / v**2),
+                plausible_note="a positive drag, at the top test speed up to 20x the axis's Coulomb friction",
+            )
+        ]
+
+    def apply(self, kind, q, P, Z, plant):
+        q.drag = P["drag_coefficient"]
+
+    def describe(self, v, plant):
+        return (f"drag grows with v|v|: c = {v['drag_coefficient']:.4g} N.s^2/m^2 (seals, lubricant churning); "
+                "evaluate has no such term")
+
+
 BUILTIN = tuple(_LIBRARY)

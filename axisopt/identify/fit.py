@@ -217,12 +217,25 @@ def fit(problem: Problem, theta0=None, mask=None, maxit: int = 60, tol: float = 
 
 
 def _covariance(J, rss, n, scale):
+    """sigma^2 (J^T J)^-1 in SI.  A parameter in a direction the data do not fix (a zero or dependent Jacobian
+    column: a Stribeck velocity far below every test speed, a term held at its bound) gets an infinite
+    variance -- "not identifiable" -- instead of the zero a pseudo-inverse would give it."""
     p = J.shape[1]
     if p == 0:
         return np.zeros((0, 0))
     s2 = rss / max(n - p, 1)
     try:
-        inv = np.linalg.pinv(J.T @ J)
+        _, sv, vt = np.linalg.svd(J, full_matrices=False)
     except np.linalg.LinAlgError:
         return np.full((p, p), np.inf)
-    return s2 * inv * np.outer(scale, scale)
+    good = sv > 1e-9 * (sv.max() if sv.size else 0.0)
+    if not good.any():
+        return np.diag(np.full(p, np.inf))
+    inv = (vt[good].T / sv[good] ** 2) @ vt[good]
+    cov = s2 * inv * np.outer(scale, scale)
+    if not good.all():
+        weak = np.any(np.abs(vt[~good]) > 1e-3, axis=0)
+        cov[weak, :] = 0.0
+        cov[:, weak] = 0.0
+        cov[weak, weak] = np.inf
+    return cov

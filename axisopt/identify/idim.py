@@ -38,11 +38,24 @@ Effects (each a few columns added to W, fitted jointly with the baseline):
   column is the fourth derivative, parameter beta = m1 m2/k, reported as the resonance
   :math:`f_r = \\sqrt{M/\\beta}/2\\pi`.  Only a candidate when the baseline's residual spectrum has a peak
   (5x its median between 3x the motion bandwidth and the cut-off).  Its IV instrument is the measured
-  column itself (a rigid-body simulation has no mode).
+  column itself (a rigid-body simulation has no mode).  Not offered when the residual's spectral peak
+  follows the position (a ripple moves in frequency with the speed; a mode does not).
+* ``lead_ripple``: a force ripple sin, cos(2 pi q/P) (the same both ways: lead error, run-out) and a friction
+  ripple sgn(v) sin, sgn(v) cos(2 pi q/P) (ball recirculation), P the lead / k for k = 1, 2, 3 (the best by
+  RSS); parameters rs, rc, ks, kc, each pair's amplitude up to the Coulomb level.
+* ``quadratic_drag``: v|v|, parameter Cq > 0 (seals, lubricant churning).
+
+An ``external_force`` column (:mod:`.timerecord`) is added to the effort before the regression and enters
+the closed-loop simulation of IV.
 
 Selection: forward, each round the candidate with the lowest dBIC = n ln(RSS1/RSS0) + dp ln n on the
-estimation run; accepted if dBIC < -10 and the RMSE of the effort predicted on the validation runs (or, with
-no validation run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %.
+estimation run that passes: dBIC < -10, the RMSE of the effort predicted on the validation runs (or, with
+no validation run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %, and
+its values are physical; every other candidate keeps the first criterion it failed as its reason.  When no
+single effect passes, pairs of the candidates that lower BIC alone are fitted together and accepted on the
+same tests when each member is needed (:func:`_best_pair`).  The baseline and final fits carry plausibility
+and identifiability flags (:func:`baseline_flags`), and the final residual is tested for structure
+(:func:`analyse_residual`, :mod:`.residual`): what remains is reported as "unexplained" with its signature.
 Nothing here imports the CLI or YAML.
 """
 
@@ -85,12 +98,18 @@ PARAMS = {
     "c1": ("Coulomb vs position, P1 coefficient", "effort"),
     "c2": ("Coulomb vs position, P2 coefficient", "effort"),
     "beta": ("m1 m2/k of the extra mode", "snap"),
+    "rs": ("force ripple, sin(2 pi q/P) coefficient", "effort"),
+    "rc": ("force ripple, cos(2 pi q/P) coefficient", "effort"),
+    "ks": ("friction ripple, sgn(v) sin(2 pi q/P) coefficient", "effort"),
+    "kc": ("friction ripple, sgn(v) cos(2 pi q/P) coefficient", "effort"),
+    "Cq": ("quadratic drag c v|v|", "drag2"),
 }
 UNITS = {
     "force": {"mass": ("kg", 1.0), "damping": ("N.s/m", 1.0), "effort": ("N", 1.0), "snap": ("kg.s^2", 1.0),
-              "speed": ("mm/s", 1e3), "position": ("mm", 1e3)},
+              "speed": ("mm/s", 1e3), "position": ("mm", 1e3), "drag2": ("N.s^2/m^2", 1.0)},
     "torque": {"mass": ("kg.m^2", 1.0), "damping": ("N.m.s/rad", 1.0), "effort": ("N.m", 1.0),
-               "snap": ("kg.m^2.s^2", 1.0), "speed": ("rad/s", 1.0), "position": ("rad", 1.0)},
+               "snap": ("kg.m^2.s^2", 1.0), "speed": ("rad/s", 1.0), "position": ("rad", 1.0),
+               "drag2": ("N.m.s^2/rad^2", 1.0)},
 }
 SYMBOL = {"force": {"M": "M"}, "torque": {"M": "J"}}
 
@@ -110,7 +129,13 @@ EFFECTS = {
     "position_friction": TimeEffect("position_friction", ("c1", "c2"),
                                     summary="Coulomb friction varies along the stroke"),
     "extra_mode": TimeEffect("extra_mode", ("beta",), summary="a second mass behind a spring (resonance)"),
+    "lead_ripple": TimeEffect("lead_ripple", ("rs", "rc", "ks", "kc"), shape="period",
+                              summary="force or friction ripple periodic in position at the lead or a harmonic "
+                                      "(lead error, ball recirculation)"),
+    "quadratic_drag": TimeEffect("quadratic_drag", ("Cq",),
+                                 summary="drag growing with v|v| (seals, lubricant churning)"),
 }
+RIPPLE_HARMONICS = (1, 2, 3)  # the ripple's period is the lead / k for one of these k (chosen by RSS)
 
 
 def time_effects() -> dict:
@@ -128,6 +153,7 @@ class Processing:
     rule: str
     vmin: float
     stroke_q: float  # stroke in the record's coordinate
+    lead_q: float = 0.0  # the screw's lead in the record's coordinate (table [m] or motor angle 2 pi [rad])
 
 
 @dataclass
@@ -165,6 +191,12 @@ def _columns(term: str, sig: dict, proc: Processing, shape: dict) -> np.ndarray:
         return s * (xi if term == "c1" else 1.5 * xi**2 - 0.5)
     if term == "beta":
         return sig["snap"]
+    if term in ("rs", "rc", "ks", "kc"):
+        ph = 2.0 * math.pi * sig["q"] / shape["period"]
+        w = np.sin(ph) if term in ("rs", "ks") else np.cos(ph)
+        return w if term in ("rs", "rc") else s * w
+    if term == "Cq":
+        return v * np.abs(v)
     raise KeyError(term)
 
 
@@ -177,14 +209,14 @@ def decimate(rows_full: np.ndarray, proc: Processing, keep: np.ndarray) -> np.nd
     return lowpass(rows_full, proc.fs, proc.fdec)[keep]
 
 
-def processing_for(rec: TimeRecord, stroke_q: float) -> Processing:
+def processing_for(rec: TimeRecord, stroke_q: float, lead_q: float = 0.0) -> Processing:
     fs = rec.fs
     cut = choose_cutoff(rec.q, fs)
     nd = decimation_factor(fs, cut.fc)
     fdec = 0.8 * fs / (2.0 * nd)
     q, v = derivatives(rec.q, fs, cut.fc, 1)
     vmin = VMIN_REL * float(np.max(np.abs(v)))
-    return Processing(fs, cut.fc, nd, fdec, cut.f_motion, cut.rule, vmin, stroke_q)
+    return Processing(fs, cut.fc, nd, fdec, cut.f_motion, cut.rule, vmin, stroke_q, lead_q)
 
 
 def signals(q: np.ndarray, proc: Processing) -> dict:
@@ -210,7 +242,7 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
     if len(keep) < 20:
         raise InputError(f"only {len(keep)} usable rows after filtering and decimation (the axis must move: "
                          f"speeds above {proc.vmin:.3g} in the record's unit/s)", source=rec.source)
-    y = lowpass(rec.effort, proc.fs, proc.fdec)[keep]
+    y = lowpass(rec.effort + rec.external if rec.external is not None else rec.effort, proc.fs, proc.fdec)[keep]
     return Rows(rec, sig, keep, y, proc)
 
 
@@ -316,7 +348,10 @@ def fit_controller(rows: Rows) -> Controller | None:
     X, y = X[e:-e], y[e:-e]
     th = _lstsq(X, y)
     res = y - X @ th
-    r2 = 1.0 - float(res @ res) / float(np.sum((y - y.mean()) ** 2))
+    ss = float(np.sum((y - y.mean()) ** 2))
+    if not ss > 0.0:  # a constant effort explains nothing about the controller
+        return None
+    r2 = 1.0 - float(res @ res) / ss
     return Controller(*map(float, th), r2)
 
 
@@ -332,6 +367,12 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
     dfv, fsx = params.get("dFv", 0.0), params.get("Fs", 0.0)
     vs = shape.get("vs", 1.0)
     c1, c2 = params.get("c1", 0.0), params.get("c2", 0.0)
+    rs, rc, ks, kc = (params.get(t, 0.0) for t in ("rs", "rc", "ks", "kc"))
+    ripple = any((rs, rc, ks, kc))
+    kq = 2.0 * math.pi / shape["period"] if ripple else 0.0
+    cq = params.get("Cq", 0.0)
+    ext = rec.external.tolist() if rec.external is not None else None
+    sin, cos = math.sin, math.cos
     fvp, fvn = fv + dfv / 2, fv - dfv / 2
     kp, kd, kv, ka = ctrl.kp, ctrl.kd, ctrl.kv, ctrl.ka
     h = 1.0 / (proc.fs * substeps)
@@ -345,23 +386,30 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
     for k in range(rec.n):
         out[k] = q
         u = kp * (rl[k] - q) + kd * (drl[k] - v) + kv * drl[k] + ka * ddrl[k] - off
+        if ext is not None:
+            u += ext[k]
         for _ in range(substeps):
             xi = sq * q - 1.0
             dpos = c1 * xi + c2 * (1.5 * xi * xi - 0.5)
+            uk = u
+            if ripple:
+                sn, cn = sin(kq * q), cos(kq * q)
+                uk = u - rs * sn - rc * cn
+                dpos += ks * sn + kc * cn
             if v == 0.0:
                 brk = fc + fsx + dpos
                 if brk < 0.0:
                     brk = 0.0
-                if u > brk:
-                    v = hm * (u - brk)
-                elif u < -brk:
-                    v = hm * (u + brk)
+                if uk > brk:
+                    v = hm * (uk - brk)
+                elif uk < -brk:
+                    v = hm * (uk + brk)
             else:
                 if v > 0:
-                    fr = fc + fvp * v + fsx * exp(-v / vs) + dpos
+                    fr = fc + fvp * v + fsx * exp(-v / vs) + dpos + cq * v * v
                 else:
-                    fr = -fc + fvn * v - fsx * exp(v / vs) - dpos
-                vn = v + hm * (u - fr)
+                    fr = -fc + fvn * v - fsx * exp(v / vs) - dpos - cq * v * v
+                vn = v + hm * (uk - fr)
                 v = 0.0 if vn * v < 0 else vn
             q += h * v
         if not abs(q) < bound:
@@ -441,7 +489,8 @@ def predict(rows: Rows, est: Estimate) -> np.ndarray:
 def rel_error(rows: Rows, est: Estimate) -> float:
     """||y - y_hat|| / ||y|| on the kept rows [-]."""
     r = rows.y - predict(rows, est)
-    return float(np.linalg.norm(r) / np.linalg.norm(rows.y))
+    ny = float(np.linalg.norm(rows.y))
+    return float(np.linalg.norm(r) / ny) if ny > 0.0 else float("nan")
 
 
 def rmse(rows: Rows, est: Estimate) -> float:
@@ -456,6 +505,8 @@ class TimeCandidate:
     estimate: Estimate
     dbic: float
     gain: float  # [%] validation (or held-out block) RMSE reduction
+    reason: str = ""  # why it was not accepted ('' when accepted or not yet judged)
+    together: str = ""  # accepted as a pair with this effect (neither passes alone)
 
 
 @dataclass
@@ -475,6 +526,9 @@ class TimeDiagnosis:
     times: dict  # seconds: ls, iv, diagnose
     design: dict = field(default_factory=dict)  # name, lead, efficiency (for the torque -> force note)
     rejected: list = field(default_factory=list)  # (round, TimeCandidate, reason): outside its physical range
+    pairs: list = field(default_factory=list)  # (round, TimeCandidate, TimeCandidate, Estimate, dBIC, gain, reason)
+    unexplained: Unexplained | None = None  # structure left in the final residual
+    flags: dict = field(default_factory=dict)  # 'baseline' / 'final' -> [plausibility or identifiability notes]
 
     @property
     def verdict(self) -> list:
@@ -522,12 +576,152 @@ def residual_peak(rows: Rows, est: Estimate) -> tuple:
     return float(f[band][k]), float(ps[band][k] / np.median(ps[band]))
 
 
+# ------------------------------------------------------------------------------ what remains unexplained
+@dataclass
+class Unexplained:
+    """Structure left in the final fit's residual (estimation and validation rows pooled)."""
+
+    probes: list  # residual.Probe, every test made, most significant first
+    rms: float  # residual RMS on the pooled rows [effort unit, SI]
+    noise: float  # noise floor at the rows (sensor noise through the decimation filter) [SI]
+    lag1: float  # lag-1 autocorrelation of the residual in row order
+    n: int
+
+    @property
+    def remaining(self) -> list:
+        """The significant probes (see :mod:`.residual`), largest share first."""
+        return sorted([p for p in self.probes if p.significant], key=lambda p: -p.share)
+
+
+def noise_floor(rows: Rows) -> float:
+    """Sensor noise of the effort at the regression rows: the white part of the raw effort from its second
+    differences (median absolute deviation, var(e1 - 2 e2 + e3) = 6 sigma^2), through the decimation low-pass
+    (equivalent noise bandwidth of |H|^2 = 1/(1 + (f/f_d)^8): 1.026 f_d)."""
+    e = rows.record.effort
+    d2 = e[2:] - 2.0 * e[1:-1] + e[:-2]
+    s = 1.4826 * float(np.median(np.abs(d2 - np.median(d2)))) / math.sqrt(6.0)
+    return s * math.sqrt(min(1.0, 2.0 * 1.026 * rows.proc.fdec / rows.proc.fs))
+
+
+def _pooled(runs: list, full_cols) -> np.ndarray:
+    """Columns computed at full rate on each run (``full_cols(rows) -> (N, k)``), decimated alike, stacked."""
+    return np.vstack([decimate(np.asarray(full_cols(r)).reshape(r.record.n, -1), r.proc, r.keep) for r in runs])
+
+
+def _legendre(x, deg):
+    return [np.polynomial.legendre.Legendre.basis(j)(x) for j in range(1, deg + 1)]
+
+
+def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
+    """Test the residual of ``est`` on ``runs`` (estimation first) for structure: over position (a period
+    scan, the lead and its harmonics named in advance), velocity, position along the stroke, time within a
+    run, between runs and acceleration; see :mod:`.residual`."""
+    from . import residual as rs
+
+    proc = runs[0].proc
+    W = np.vstack([matrix(r, est.terms, est.shape) for r in runs])
+    y = np.concatenate([r.y for r in runs])
+    r = y - W @ est.theta
+    W = rs.Span(W)
+    breaks = np.concatenate([np.append(np.diff(rw.keep) != proc.nd, True) for rw in runs])[:-1]
+    rho = rs.lag1(r, breaks)
+    neff = rs.n_effective(len(r), rho)
+    vmax = max(float(np.max(np.abs(rw.sig["v"][rw.keep]))) for rw in runs)
+    probes = []
+    if proc.lead_q > 0 and (kinds is None or "position_periodic" in kinds):
+        def periodic(P):
+            def cols(rw):
+                ph = 2.0 * np.pi * rw.sig["q"] / P
+                sg = np.sign(rw.sig["v"])
+                return np.column_stack([np.sin(ph), np.cos(ph), sg * np.sin(ph), sg * np.cos(ph)])
+            return _pooled(runs, cols)
+        q_rows = np.concatenate([rw.sig["q"][rw.keep] for rw in runs])
+        s_rows = np.concatenate([np.sign(rw.sig["v"][rw.keep]) for rw in runs])
+        hi = max(float(np.ptp(q_rows)) / 3.0, proc.lead_q)
+        probes.append(rs.period_scan(r, q_rows, s_rows, periodic, proc.lead_q / 4.0, hi, W, neff,
+                                     fixed=[proc.lead_q / k for k in RIPPLE_HARMONICS]))
+    if kinds is not None:
+        return Unexplained(probes, float(np.sqrt(np.mean(r**2))), 0.0, rho, len(r))
+
+    def vel_cols(rw):
+        v = rw.sig["v"]
+        u = 2.0 * np.abs(v) / vmax - 1.0
+        sg = np.sign(v)
+        return np.column_stack(_legendre(u, 4) + [sg * p for p in _legendre(u, 4)])
+    pv = rs.probe("velocity", r, _pooled(runs, vel_cols), W, neff)
+    shapes = {"v|v|": _pooled(runs, lambda rw: rw.sig["v"] * np.abs(rw.sig["v"]))[:, 0],
+              "|v|": _pooled(runs, lambda rw: np.abs(rw.sig["v"]))[:, 0],
+              "sqrt": _pooled(runs, lambda rw: np.sign(rw.sig["v"]) * np.sqrt(np.abs(rw.sig["v"])))[:, 0]}
+    for f in (0.01, 0.03, 0.1):
+        shapes[f"low_speed_{f}"] = _pooled(runs, lambda rw, f=f: np.sign(rw.sig["v"])
+                                          * np.exp(-np.abs(rw.sig["v"]) / (f * vmax)))[:, 0]
+    nm, sh = rs.best_shape(r, shapes, W)
+    pv.detail.update(shape="low_speed" if nm.startswith("low_speed") else nm,
+                     shape_share=sh / pv.share if pv.share > 0 else 0.0)
+    probes.append(pv)
+    sq = proc.stroke_q
+
+    def pos_cols(rw):
+        xi = 2.0 * rw.sig["q"] / sq - 1.0
+        sg = np.sign(rw.sig["v"])
+        return np.column_stack(_legendre(xi, 4) + [sg * p for p in _legendre(xi, 4)])
+    G = _pooled(runs, pos_cols)
+    pp = rs.probe("position", r, G, W, neff)
+    q_rows = np.concatenate([rw.sig["q"][rw.keep] for rw in runs])
+    fitpart = rs.orthogonal(G, W)
+    coef, *_ = np.linalg.lstsq(fitpart, r, rcond=None)
+    along = fitpart @ coef
+    bins = np.linspace(q_rows.min(), q_rows.max(), 9)
+    idx = np.clip(np.searchsorted(bins, q_rows) - 1, 0, 7)
+    means = [float(np.mean(np.abs(along[idx == i]))) if np.any(idx == i) else 0.0 for i in range(8)]
+    k = int(np.argmax(means))
+    pp.detail["worst"] = (float(bins[k]), float(bins[k + 1]))
+    probes.append(pp)
+
+    def time_cols(rw):
+        t = rw.record.t
+        return np.column_stack(_legendre(2.0 * (t - t[0]) / (t[-1] - t[0]) - 1.0, 3))
+    probes.append(rs.probe("time", r, _pooled(runs, time_cols), W, neff))
+    if len(runs) > 1:
+        ind = np.zeros((len(r), len(runs) - 1))
+        i0 = runs[0].n
+        for j, rw in enumerate(runs[1:]):
+            ind[i0 : i0 + rw.n, j] = 1.0
+            i0 += rw.n
+        probes.append(rs.probe("run", r, ind, W, neff))
+
+    if all(rw.record.external is not None for rw in runs):
+        def load_cols(rw):
+            f, sg = rw.record.external, np.sign(rw.sig["v"])
+            return np.column_stack([f, np.abs(f), sg * np.abs(f), sg * f])
+        probes.append(rs.probe("load", r, _pooled(runs, load_cols), W, neff))
+
+    def acc_cols(rw):
+        a, sg = rw.sig["a"], np.sign(rw.sig["v"])
+        return np.column_stack([sg * a, np.abs(a), a * np.abs(a)])
+    probes.append(rs.probe("acceleration", r, _pooled(runs, acc_cols), W, neff))
+    probes.sort(key=lambda p: p.log10_p)
+    noise = math.sqrt(sum(noise_floor(rw) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs))
+    return Unexplained(probes, float(np.sqrt(np.mean(r**2))), noise, rho, len(r))
+
+
+def _periodic_peak(rows: Rows, est: Estimate):
+    """(period, share) when the residual of ``est`` is mostly periodic in position (a significant probe holding
+    at least half of it), else None: a spectral peak that moves with speed is a ripple, not a mode."""
+    if rows.proc.lead_q <= 0:
+        return None
+    u = analyse_residual([rows], est, kinds=("position_periodic",))
+    p = u.probes[0] if u.probes else None
+    return (p.detail["period"], p.share) if p is not None and p.significant and p.share >= 0.5 else None
+
+
 def implausible(cand_terms, est: Estimate, base: Estimate) -> str:
     """Why an effect's fitted terms leave their physical range ('' when they do not).  Ranges, relative to
     the baseline's own friction: a Stribeck excess between 0 and twice the Coulomb level (breakaway up to
     three times it); a viscous direction difference up to the viscous coefficient itself; a Coulomb
     variation along the stroke (each Legendre coefficient) up to the Coulomb level; an extra mode with a
-    positive m1 m2 / k (a real mass behind a real spring)."""
+    positive m1 m2 / k (a real mass behind a real spring); a quadratic drag with a positive coefficient; a
+    force or friction ripple (amplitude of each) up to the Coulomb level."""
     fc, fv = abs(base.value("Fc")), abs(base.value("Fv"))
     out = []
     for t in cand_terms:
@@ -540,6 +734,14 @@ def implausible(cand_terms, est: Estimate, base: Estimate) -> str:
             out.append(f"{t} = {v:.4g} beyond +-{fc:.4g} (the whole Coulomb friction)")
         elif t == "beta" and v <= 0.0:
             out.append(f"beta = {v:.4g} not positive (no mass-spring pair has m1 m2/k <= 0)")
+        elif t == "Cq" and v <= 0.0:
+            out.append(f"Cq = {v:.4g} not positive (a drag that falls with v|v| is no drag)")
+        elif t == "rs" and math.hypot(v, est.value("rc")) > fc:
+            out.append(f"a force ripple of amplitude {math.hypot(v, est.value('rc')):.4g} beyond {fc:.4g} "
+                       "(the whole Coulomb friction)")
+        elif t == "ks" and math.hypot(v, est.value("kc")) > fc:
+            out.append(f"a friction ripple of amplitude {math.hypot(v, est.value('kc')):.4g} beyond {fc:.4g} "
+                       "(the friction would reverse)")
     return "; ".join(out)
 
 
@@ -548,17 +750,22 @@ def _fit_candidate(est_rows, terms, effect, shape):
     if effect.shape == "vs":
         vmax = float(np.max(np.abs(est_rows.sig["v"])))
         shape["vs"] = search_shape(est_rows, terms, shape, max(est_rows.proc.vmin, 1e-4 * vmax), 0.5 * vmax)
+    elif effect.shape == "period":
+        fits = [least_squares(est_rows, terms, {**shape, "period": est_rows.proc.lead_q / k})
+                for k in RIPPLE_HARMONICS]
+        best = min(fits, key=lambda e: e.rss)
+        return best, dict(best.shape)
     return least_squares(est_rows, terms, shape), shape
 
 
-def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effects: int = 2,
-                  design: dict | None = None) -> TimeDiagnosis:
+def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effects: int = 3,
+                  design: dict | None = None, lead_q: float = 0.0) -> TimeDiagnosis:
     """Identify the estimation record ``records[0]`` (LS and IV), select effects, validate on the rest."""
     import time
 
     t0 = time.perf_counter()
     est = records[0]
-    proc = processing_for(est, stroke_q)
+    proc = processing_for(est, stroke_q, lead_q)
     est_rows = make_rows(est, proc)
     val_rows = [make_rows(r, proc) for r in records[1:]]
     ctrl = fit_controller(est_rows)
@@ -577,16 +784,22 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
         e = EFFECTS[nm]
         if nm == "extra_mode" and peak[1] < PEAK_RATIO:
             skipped[nm] = f"no residual spectral peak (at most {peak[1]:.1f}x the median, {peak[0]:.0f} Hz)"
+        elif nm == "extra_mode" and (per := _periodic_peak(est_rows, base_ls)) is not None:
+            skipped[nm] = (f"the residual's spectral peak ({peak[0]:.0f} Hz) follows the position: periodic over "
+                           f"{per[0] * UNITS[est.quantity]['position'][1]:.3g} {UNITS[est.quantity]['position'][0]}, "
+                           f"{100 * per[1]:.0f} % of the residual (a ripple, not a resonance)")
         elif nm == "position_friction" and span < 0.1 * stroke_q:
             skipped[nm] = "the record covers less than 10 % of the stroke"
+        elif nm == "lead_ripple" and not (lead_q > 0 and span >= 2.0 * lead_q):
+            skipped[nm] = "the record covers less than two leads" if lead_q > 0 else "no lead known"
         else:
             pool.append(e)
 
     terms, shape = list(BASE), {}
     cur = base_ls
     cur_ho = _heldout_rmse(est_rows, val_rows, terms, shape)
-    accepted, rounds, rejected = [], [], []
-    for _ in range(max_effects):
+    accepted, rounds, rejected, pairs = [], [], [], []
+    while len(accepted) < max_effects:
         scored = []
         for e in pool:
             if e in [c.effect for c in accepted]:
@@ -601,25 +814,141 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
         scored.sort(key=lambda c: c.dbic)
         rounds.append(scored)
         top = None
-        for c in scored:  # the best candidate whose values are physical; an implausible one is reported
+        for c in scored:  # the best candidate by dBIC that is physical and predicts held-out data better
             why = implausible(c.effect.terms, c.estimate, base_ls)
             if why:
                 rejected.append((len(rounds), c, why))
-                continue
-            top = c
+            if c.dbic >= ACCEPT_DBIC:  # the first criterion it fails is its reason
+                c.reason = f"dBIC {c.dbic:.1f} not below {ACCEPT_DBIC:g}"
+            elif c.gain < MIN_GAIN:
+                c.reason = f"held-out gain {c.gain:.1f} % below {MIN_GAIN:g} %"
+            elif why:
+                c.reason = f"would need {why}"
+            if why and not c.reason.startswith("would need"):
+                c.reason += f"; and it would need {why}"
+            if not c.reason and top is None:
+                top = c
+        if top is not None:
+            top.reason = ""
+            for c in scored:
+                if c is not top and not c.reason:
+                    c.reason = f"{top.effect.name} explains more (dBIC {top.dbic:.1f})"
+            accepted.append(top)
+            terms += list(top.effect.terms)
+            shape.update(top.estimate.shape)
+            cur = top.estimate
+            cur_ho = _heldout_rmse(est_rows, val_rows, terms, shape)
+            continue
+        # pairs only when some candidate found signal (dBIC < -10) that no single effect turns into an accepted
+        # explanation: a residual at the noise floor costs no pair fits
+        if len(accepted) + 2 > max_effects or not any(c.dbic < ACCEPT_DBIC for c in scored):
             break
-        if top is None or top.dbic >= ACCEPT_DBIC or top.gain < MIN_GAIN:
+        pair = _best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, len(rounds), pairs)
+        if pair is None:
             break
-        accepted.append(top)
-        terms += list(top.effect.terms)
-        shape.update(top.estimate.shape)
-        cur = top.estimate
+        a_, b_, fit = pair[1], pair[2], pair[3]
+        for c, other in ((a_, b_), (b_, a_)):
+            c.reason, c.together = f"alone: {c.reason}; accepted together with {other.effect.name}", other.effect.name
+        accepted += [a_, b_]
+        terms += list(a_.effect.terms) + list(b_.effect.terms)
+        shape = dict(fit.shape)
+        cur = fit
         cur_ho = _heldout_rmse(est_rows, val_rows, terms, shape)
+        for c in (a_, b_):
+            c.gain = pair[5]
     final_ls = least_squares(est_rows, terms, shape) if accepted else base_ls
     final = instrumental_variables(est_rows, terms, shape, ctrl=ctrl, start=final_ls) if accepted else base_iv
+    un = analyse_residual([est_rows] + val_rows, final)
+    flags = {"baseline": baseline_flags(base_iv, est.quantity), "final": baseline_flags(final, est.quantity)}
+    if "vs" in final.shape:  # a shape parameter at the end of its 1-D search is not identified by the record
+        vmax = float(np.max(np.abs(est_rows.sig["v"])))
+        lo, hi = max(proc.vmin, 1e-4 * vmax), 0.5 * vmax
+        if not 1.05 * lo < final.shape["vs"] < 0.95 * hi:
+            u, f = UNITS[est.quantity]["speed"]
+            flags["final"].append(f"vs = {final.shape['vs'] * f:.3g} {u} is at the end of its search range "
+                                  f"({lo * f:.3g}..{hi * f:.3g} {u}): the Stribeck velocity is not identifiable from "
+                                  "this record")
     times = {"ls": t_ls, "iv": t_iv, "diagnose": time.perf_counter() - t0}
     return TimeDiagnosis(est.quantity, est_rows, val_rows, ctrl, base_ls, base_iv, final, final_ls, accepted,
-                         rounds, skipped, peak, times, dict(design or {}), rejected)
+                         rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags)
+
+
+MAX_PAIR_POOL = 6  # pairs are tried among at most this many single candidates (the best by dBIC): 15 fits
+
+
+def _best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, rnd, log):
+    """When no single effect passes, effects that only help together: every pair of the round's candidates
+    that lower BIC at all alone (at most ``MAX_PAIR_POOL``), fitted jointly with the shapes each found alone;
+    a pair is accepted when it lowers BIC by 10, predicts the held-out data at least ``MIN_GAIN`` % better,
+    keeps every value in its physical range, and beats each of its members alone by ``MIN_GAIN`` % (each is
+    needed).  The pair with the largest held-out gain wins;
+    every pair tried is logged with its reason."""
+    pool = [c for c in scored if c.dbic < 0.0][:MAX_PAIR_POOL]  # each must show some signal alone
+    best = None
+    for i in range(len(pool)):
+        for j in range(i + 1, len(pool)):
+            a, b = pool[i], pool[j]
+            sh0 = {**shape, **{k: v for k, v in a.estimate.shape.items() if k not in shape},
+                   **{k: v for k, v in b.estimate.shape.items() if k not in shape}}
+            tt = terms + list(a.effect.terms) + list(b.effect.terms)
+            fit, sh = least_squares(est_rows, tt, sh0), sh0  # shapes as found for each alone
+            dbic = fit.bic - cur.bic
+            ho = _heldout_rmse(est_rows, val_rows, tt, sh)
+            gain = 100.0 * (1.0 - ho / cur_ho) if cur_ho > 0 else 0.0
+            why = implausible(a.effect.terms + b.effect.terms, fit, base_ls)
+            alone = max(a.gain, b.gain)
+            if dbic >= ACCEPT_DBIC:
+                reason = f"dBIC {dbic:.1f} not below {ACCEPT_DBIC:g}"
+            elif gain < MIN_GAIN:
+                reason = f"held-out gain {gain:.1f} % below {MIN_GAIN:g} %"
+            elif why:
+                reason = f"would need {why}"
+            elif gain - alone < MIN_GAIN:
+                reason = f"held-out gain {gain:.1f} % is not {MIN_GAIN:g} % above the better member alone " \
+                         f"({alone:.1f} %)"
+            else:
+                reason = ""
+            entry = [rnd, a, b, fit, dbic, gain, reason]
+            log.append(entry)
+            if not reason and (best is None or gain > best[5]):
+                best = entry
+    if best is not None:
+        for e in log:
+            if e is not best and e[0] == rnd and not e[6]:
+                e[6] = f"{best[1].effect.name} + {best[2].effect.name} predicts better ({best[5]:.1f} %)"
+    return best
+
+
+def baseline_flags(est: Estimate, quantity: str) -> list:
+    """Plausibility and identifiability of a fit's baseline terms: a moving mass or inertia, viscous or Coulomb
+    friction that is not positive is never a physical fit; a term whose standard deviation is zero or
+    undefined, or larger than its value, is not identifiable from the record."""
+    out = []
+    sym = "J" if quantity == "torque" else "M"
+    for t in est.terms:
+        i = est.terms.index(t)
+        v, sd = float(est.theta[i]), float(est.std[i])
+        u, f = _unit(quantity, t)
+        name = _sym(quantity, t)
+        if t == "M" and v <= 0.0:
+            out.append(f"{sym} = {v * f:.3g} {u} is not positive: no moving body has zero or negative "
+                       "inertia -- the record does not excite acceleration enough for its sampling and noise "
+                       "(too coarse, too slow), or effort and position disagree in sign")
+        elif t == "Fc" and v < 0.0:
+            out.append(f"Fc = {v * f:.3g} {u} is negative: friction that drives the axis -- check the signs of "
+                       "the effort and position columns, or a force the record does not carry "
+                       "(external_force)")
+        elif t == "Fv" and v < 0.0:
+            out.append(f"Fv = {v * f:.3g} {u} is negative: damping that feeds energy in -- a missing low-speed "
+                       "(Stribeck) rise or a force the record does not carry pulls it below zero")
+        if t in BASE or t in PARAMS:
+            if not math.isfinite(sd) or sd == 0.0:
+                out.append(f"{name} is not identifiable from this record: its uncertainty is "
+                           f"{'undefined' if not math.isfinite(sd) else 'zero'} (a degenerate column)")
+            elif t in ("M", "Fv", "Fc") and sd >= abs(v):
+                out.append(f"{name} = {v * f:.3g} ± {sd * f:.3g} {u} is not identifiable from this record "
+                           "(the uncertainty exceeds the value)")
+    return out
 
 
 # ------------------------------------------------------------------------------------------- output
@@ -718,6 +1047,8 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         L += _wrap(f"{est.method}" + (f"  ({est.note})" if est.note else ""), cont="      ")
         L += _param_lines(q, est)
         L += _wrap(f"{q} error ||y - y_hat||/||y||: {_errors(diag, est)}", indent="    ")
+    for f in diag.flags.get("baseline", []):
+        L += _wrap(f"! {f}", indent="  ", cont="      ")
     if q == "torque" and diag.design.get("lead"):
         lead, eta = diag.design["lead"], diag.design.get("efficiency", 1.0)
         g = 2 * math.pi / lead
@@ -735,22 +1066,178 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
                        + _compact(q, cnd.estimate, cnd.effect.terms), cont=" " * 52)
     for nm, why in diag.skipped.items():
         L += _wrap(f"-  {nm:<20} not tried: {why}", cont=" " * 26)
-    for k, cnd, why in diag.rejected:
-        L += _wrap(f"{k}  {cnd.effect.name:<20} not accepted: would need {why}", cont=" " * 26)
+    for k, rnd in enumerate(diag.rounds, start=1):
+        for cnd in rnd:
+            if cnd.reason:
+                L += _wrap(f"{k}  {cnd.effect.name:<20} not accepted: {cnd.reason}", cont=" " * 26)
+    rest = 0
+    for k, a, b, _est, dbic, gain, why in diag.pairs:
+        if why and (dbic >= ACCEPT_DBIC or gain < MIN_GAIN):
+            rest += 1
+            continue
+        L += _wrap(f"{k}  pair {a.effect.name} + {b.effect.name}: dBIC {dbic:.1f}, gain {gain:.1f} %: "
+                   + (f"not accepted: {why}" if why else "accepted (neither passes alone)"), cont=" " * 26)
+    if rest:
+        L += _wrap(f"-  {rest} pair{'s' if rest > 1 else ''} of these candidates tried together: none lowers BIC "
+                   f"by {-ACCEPT_DBIC:g} and predicts the held-out data {MIN_GAIN:g} % better", cont=" " * 26)
     L.append("")
     if diag.accepted:
-        L += _wrap("verdict: " + ", then ".join(f"{c.effect.name} ({c.effect.summary}; gain {c.gain:.0f} % on "
-                                                f"held-out data)" for c in diag.accepted), indent="", cont="  ")
+        parts = []
+        for c in diag.accepted:
+            if c.together and parts and parts[-1].startswith(c.together):
+                parts[-1] = parts[-1].replace(" (", f" together with {c.effect.name} (", 1)
+                continue
+            parts.append(f"{c.effect.name} ({c.effect.summary}; gain {c.gain:.0f} % on held-out data)")
+        L += _wrap("verdict: " + ", then ".join(parts), indent="", cont="  ")
         L += _wrap(f"final fit ({diag.final.method}" + (f"; {diag.final.note}" if diag.final.note else "") + ")",
                    cont="    ")
         L += _param_lines(q, diag.final)
         L += _wrap(f"{q} error: {_errors(diag, diag.final)}", indent="    ")
+        for f in diag.flags.get("final", []):
+            L += _wrap(f"! {f}", indent="  ", cont="      ")
     else:
-        L += _wrap("verdict: nothing beyond the baseline (no effect lowers BIC by 10 and the held-out error by "
-                   f"{MIN_GAIN:g} %)", indent="", cont="  ")
+        L += _wrap("verdict: nothing named beyond the baseline: " + _why_none(diag), indent="", cont="  ")
+    L += _unexplained_lines(diag)
     L += _wrap(f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves the two "
                "are the same column")
     return "\n".join(L)
+
+
+def _why_none(diag: TimeDiagnosis) -> str:
+    """The true reason no effect was named: the best candidates and what stopped each."""
+    if not diag.rounds:
+        return "no candidate effect applies to this record"
+    best = diag.rounds[0][:3]
+    out = [f"{c.effect.name}: " + (f"dBIC {c.dbic:.1f} and gain {c.gain:.1f} %, but {c.reason}"
+                                   if c.reason.startswith("would need") else c.reason) for c in best]
+    return "; ".join(out)
+
+
+def _mm(diag: TimeDiagnosis, q_len: float) -> float:
+    """A length in the record's coordinate as table travel [mm]."""
+    if diag.quantity == "force":
+        return q_len * 1e3
+    return q_len / (2.0 * math.pi) * diag.design.get("lead", 0.0) * 1e3
+
+
+SIGNATURE_WORDS = {
+    # kind -> (candidate causes, the measurement that separates them)
+    "position_periodic_lead": (
+        "lead error or ball recirculation (a circuit per turn), screw run-out or a bent screw",
+        "repeat at two speeds and in both directions: a ripple fixed in millimetres stays while a resonance or "
+        "the controller moves with speed; a friction ripple changes sign with the direction, a lead error or "
+        "run-out does not; measure the lead error with a laser against the scale"),
+    "position_periodic": (
+        "ball recirculation over a circuit of several turns, the guide's ball pitch, a coupling misalignment "
+        "or motor cogging geared to this period",
+        "repeat at two speeds (a period fixed in millimetres stays) and compare the period with the nut's "
+        "circuit length, the guide-ball pitch and the motor's pole pitch through the lead"),
+    "velocity_v|v|": (
+        "quadratic drag, e.g. seals or lubricant churning, or air drag on a large table",
+        "a friction curve at constant speeds up to the maximum in both directions (v|v| against a steeper "
+        "viscous slope), repeated warm: churning falls as the lubricant thins"),
+    "velocity_low_speed": (
+        "a low-speed friction rise the fitted terms do not hold (a second Stribeck constant, breakaway)",
+        "a friction curve with many constant speeds below 10 mm/s in both directions"),
+    "velocity_|v|": (
+        "viscous friction that differs by direction (a seal or wiper lip, a gravity or cable-chain load)",
+        "constant-speed runs at several speeds in both directions"),
+    "velocity": (
+        "a velocity dependence of friction that none of the library's terms has",
+        "a friction curve at constant speeds over the whole speed range in both directions"),
+    "position": (
+        "friction or a force that varies along the stroke: guide misalignment, screw straightness, preload "
+        "varying along the screw, a cable chain or hose",
+        "a slow constant-speed run over the full stroke in both directions (a friction changes sign with the "
+        "direction, a cable-chain or weight force does not)"),
+    "time": (
+        "a drift within the run: warm-up (friction falls as the lubricant heats) or a load that changes",
+        "repeat the run cold and warm, and with a temperature sensor on the nut"),
+    "run": (
+        "runs that differ: temperature, lubrication or load changed between the estimation and validation "
+        "runs",
+        "repeat one run twice in a row and note the nut temperature"),
+    "load": (
+        "a dependence on the process force: nut or guide friction growing with the load (efficiency), a "
+        "compliant support that shifts under it, or an external_force column with a wrong sign or scale",
+        "runs at one speed with different constant process forces, both directions, and a check of the force "
+        "sensor's sign and calibration"),
+    "acceleration": (
+        "a dependence on acceleration beyond M a: a compliant transmission (the motor side lags), lost motion, "
+        "or an inertia that differs by direction",
+        "runs with the same speeds at different accelerations, and a second encoder on the motor"),
+}
+
+
+def signature_text(diag: TimeDiagnosis, p) -> tuple:
+    """(what the residual does, candidate causes, separating measurement) of a probe, in words."""
+    d = p.detail
+    if p.kind == "position_periodic":
+        P = _mm(diag, d["period"])
+        lead_mm = _mm(diag, diag.estimation.proc.lead_q)
+        ratio = lead_mm / P if P > 0 else 0.0
+        k = round(ratio)
+        at_lead = k >= 1 and abs(ratio - k) < 0.02 * k
+        name = "the lead" if k == 1 else f"the lead / {k}"
+        kind = ("a friction (changes sign with the direction)" if d.get("friction_share", 0) > 0.5 else
+                "a force (the same sign both ways)")
+        what = f"periodic in position with period {P:.1f} mm" + (f" = {name}" if at_lead else
+                                                                  f" (the lead is {lead_mm:.3g} mm)") + f", {kind}"
+        key = "position_periodic_lead" if at_lead else "position_periodic"
+    elif p.kind == "velocity":
+        shape = d.get("shape", "")
+        sh = d.get("shape_share", 0.0)
+        words = {"v|v|": "grows with v|v|", "low_speed": "rises at low speed", "|v|": "differs by direction, "
+                 "growing with speed", "sqrt": "grows with the square root of speed"}
+        if sh >= 0.7 and shape in words:
+            what = f"depends on velocity: {words[shape]}"
+            key = f"velocity_{shape}" if f"velocity_{shape}" in SIGNATURE_WORDS else "velocity"
+        else:
+            what, key = "depends on velocity in a shape none of the library's terms has", "velocity"
+    elif p.kind == "position":
+        lo, hi = d.get("worst", (0.0, 0.0))
+        what = f"varies along the stroke (largest at {_mm(diag, lo):.0f}-{_mm(diag, hi):.0f} mm)"
+        key = "position"
+    elif p.kind == "time":
+        what, key = "drifts with time within a run", "time"
+    elif p.kind == "run":
+        what, key = "differs between the estimation and validation runs", "run"
+    elif p.kind == "load":
+        what, key = "depends on the external force", "load"
+    else:
+        what, key = "depends on acceleration beyond M a", "acceleration"
+    causes, measure = SIGNATURE_WORDS[key]
+    return what, causes, measure
+
+
+NOISE_RATIO = 2.0  # a residual this many times the noise floor is unexplained even when no probe names it
+
+
+def _unexplained_lines(diag: TimeDiagnosis) -> list:
+    u = diag.unexplained
+    if u is None:
+        return []
+    unit = UNITS[diag.quantity]["effort"][0]
+    L = []
+    rem = u.remaining
+    ratio = u.rms / u.noise if u.noise > 0 else float("inf")
+    if rem:
+        L += _wrap(f"unexplained: the residual keeps structure beyond noise (RMS {u.rms:.3g} {unit} against a "
+                   f"{u.noise:.3g} {unit} noise floor, lag-1 correlation {u.lag1:.2f}):", indent="", cont="  ")
+        for p in rem:
+            what, causes, measure = signature_text(diag, p)
+            L += _wrap(f"- residual {what}: {100 * p.share:.0f} % of the residual variance. Candidates: {causes}. "
+                       f"To separate them: {measure}.", indent="  ", cont="    ")
+    elif ratio > NOISE_RATIO:
+        L += _wrap(f"unexplained: the residual is {ratio:.1f} times the noise floor (RMS {u.rms:.3g} {unit} "
+                   f"against {u.noise:.3g} {unit}, lag-1 correlation {u.lag1:.2f}) but none of the tests over "
+                   "position, velocity, time and acceleration holds it: an effect outside the library (a "
+                   "resonance, a time delay, lost motion)", indent="", cont="  ")
+    else:
+        L += _wrap(f"residual: no structure beyond noise (RMS {u.rms:.3g} {unit} against a {u.noise:.3g} {unit} "
+                   "noise floor; tested over position incl. its period, velocity, time and acceleration)",
+                   indent="", cont="  ")
+    return L
 
 
 def _est_dict(q, est: Estimate) -> dict:
@@ -794,13 +1281,35 @@ def time_diagnosis_dict(diag: TimeDiagnosis) -> dict:
         "rejected": [{"round": k, "effect": c.effect.name, "dBIC": c.dbic, "would_need": why}
                      for k, c, why in diag.rejected],
         "gain_percent": [c.gain for c in diag.accepted],
+        "not_accepted": [{"round": k, "effect": c.effect.name, "dBIC": c.dbic, "gain_percent": c.gain,
+                          "reason": c.reason} for k, rnd in enumerate(diag.rounds, start=1) for c in rnd if c.reason],
+        "pairs": [{"round": k, "effects": [a.effect.name, b.effect.name], "dBIC": dbic, "gain_percent": gain,
+                   "accepted": not why, "reason": why} for k, a, b, _e, dbic, gain, why in diag.pairs],
+        "flags": diag.flags,
+        "unexplained": _unexplained_dict(diag),
         "final": {**_est_dict(q, diag.final), "relative_error": errs(diag.final)},
         "seconds": diag.times,
     }
 
 
+def _unexplained_dict(diag: TimeDiagnosis) -> dict | None:
+    u = diag.unexplained
+    if u is None:
+        return None
+    out = []
+    for p in u.remaining:
+        what, causes, measure = signature_text(diag, p)
+        det = {k: v for k, v in p.detail.items() if isinstance(v, (int, float, str))}
+        if "period" in det:
+            det["period_mm"] = _mm(diag, det.pop("period"))
+        out.append({"kind": p.kind, "share": p.share, "log10_p": p.log10_p, "signature": what, "causes": causes,
+                    "to_separate": measure, **det})
+    return {"remaining": bool(out) or (u.noise > 0 and u.rms / u.noise > NOISE_RATIO), "rms": u.rms,
+            "noise_floor": u.noise, "lag1": u.lag1, "signatures": out}
+
+
 def diagnose_time_files(paths, *, plant, gain: str | None = None, candidates=None,
-                        max_effects: int = 2) -> TimeDiagnosis:
+                        max_effects: int = 3) -> TimeDiagnosis:
     """Read the records (the first the estimation run, the others validation runs) and diagnose them against
     ``plant`` (:class:`.plant.Plant`: lead, efficiency and stroke are used)."""
     from .timerecord import check_same_columns, read_time_record
@@ -811,12 +1320,13 @@ def diagnose_time_files(paths, *, plant, gain: str | None = None, candidates=Non
             raise InputError(f"--effects: unknown time-record effect '{unknown[0]}'; known: {', '.join(EFFECTS)}")
     if max_effects < 0:
         raise InputError("--max-effects must not be negative")
-    recs = [read_time_record(p, lead=plant.lead, gain=gain) for p in paths]
+    recs = [read_time_record(p, lead=plant.lead, gain=gain, efficiency=plant.efficiency) for p in paths]
     for r in recs[1:]:
         check_same_columns(recs[0], r)
         if r.quantity != recs[0].quantity:
             raise InputError(f"a {r.quantity} record cannot validate the {recs[0].quantity} record {recs[0].name}",
                              source=r.source)
-    stroke_q = plant.stroke * (1.0 if recs[0].quantity == "force" else 2.0 * math.pi / plant.lead)
+    to_q = 1.0 if recs[0].quantity == "force" else 2.0 * math.pi / plant.lead
     design = {"name": plant.name, "lead": plant.lead, "efficiency": plant.efficiency}
-    return diagnose_time(recs, stroke_q=stroke_q, candidates=candidates, max_effects=max_effects, design=design)
+    return diagnose_time(recs, stroke_q=plant.stroke * to_q, candidates=candidates, max_effects=max_effects,
+                         design=design, lead_q=plant.lead * to_q)

@@ -13,7 +13,7 @@ Terms (all SI; ``x`` = fixed bearing to nut, ``L`` = span, ``EA`` = screw sectio
 * static stiffness test: ``delta = F (c_SB + c_extra) + delta_N(F) + offsets``;
 * natural frequency: ``f = 1 / (2 pi sqrt(c_total m_eff(x)))`` (m_eff as the axis model);
 * frequency response: ``G = 1/(k - m w^2 + 2 i zeta sqrt(k m) w)`` plus any extra modes;
-* friction at the table: ``F = sgn(v) (F_c s(cycle) + mu N + Stribeck) + c_v v + a/2``.
+* friction at the table: ``F = sgn(v) (F_c s(cycle) + mu N + Stribeck) + c_v v + c_q v|v| + a/2``.
 
 Effects (``effects.py``) change the fields of the :class:`Terms` record before the output is formed.
 """
@@ -149,6 +149,7 @@ class Terms:
     viscous: object = 0.0
     stribeck: object = 0.0
     asymmetry: object = 0.0
+    drag: object = 0.0  # quadratic drag coefficient c of c v|v| [N s^2/m^2]
 
 
 def baseline_params(kinds, plant) -> list:
@@ -254,6 +255,7 @@ def output(kind: str, q: Terms, Z: dict, plant):
         return (
             mx.sign(v) * (q.coulomb * q.coulomb_factor + q.mu * Z["normal"] + q.stribeck)
             + q.viscous * v
+            + q.drag * v * mx.fabs(v)
             + 0.5 * q.asymmetry
         )
     x = Z["x"]

@@ -12,6 +12,9 @@ Format (units in the headers, any unit of the quantity)::
   table travel through the screw lead.  ``reference`` (optional) takes the same kind of unit.
 * exactly one effort column: ``force [N]`` (table side), ``torque [N.m]`` (motor side) or ``current [A]``
   with a gain in ``N.m/A`` (motor torque) or ``N/A`` (table force).
+* ``external_force [N]`` (optional): a process force acting on the table (cutting, a spring, a weight),
+  positive in +x.  The drive then supplies f = M a + F(v) - F_ext, so the identification fits f + F_ext;
+  for torque records the force is taken to the motor as F_ext p / (2 pi eta) (lead p, screw efficiency eta).
 
 The identification keeps the input's quantity: force data is identified in table coordinates (q [m],
 M [kg], Fv [N s/m], Fc [N]); torque data in motor coordinates (q [rad], J [kg m^2], Fv [N m s/rad],
@@ -29,11 +32,14 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..fileio import MAX_TIME_SAMPLES, read_input
 from ..units import check_plausible, split_header, unit_factor
 
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
-COLUMNS = ("time", "position", "reference") + EFFORTS
+COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force",)
+# angle units spelled as revolutions that the unit library does not know (it knows 'turn')
+_REV = {"rev": "turn", "revs": "turn", "revolution": "turn", "revolutions": "turn"}
 CURRENT_UNITS = {"A": 1.0, "mA": 1e-3, "kA": 1e3}
 _GAIN_LINE = re.compile(r"^\s*#\s*gain\s*:\s*(.+?)\s*$", re.IGNORECASE)
 _NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.+?)\s*$")
@@ -55,6 +61,7 @@ class TimeRecord:
     effort_column: str
     lines: np.ndarray
     gain_note: str = ""
+    external: np.ndarray | None = None  # external force on the table in the effort's coordinate [N] or [N m]
 
     @property
     def n(self) -> int:
@@ -70,24 +77,27 @@ class TimeRecord:
 
 
 def _header_names(path) -> list:
+    # the stat comes first (a FIFO or device is refused, never opened); then only the head is read
+    text = read_input(path, "time record", what="data file", encoding="utf-8-sig", head=65536)
     try:
-        with Path(path).open(newline="", encoding="utf-8-sig") as fh:
-            for line in fh:
-                if line.strip() and not line.lstrip().startswith("#"):
-                    return [split_header(h)[0] for h in next(csv.reader([line]))]
-    except (OSError, UnicodeDecodeError, csv.Error):
+        for line in text.splitlines():
+            if line.strip() and not line.lstrip().startswith("#"):
+                return [split_header(h)[0] for h in next(csv.reader([line]))]
+    except csv.Error:
         return []
     return []
 
 
 def is_time_record(path) -> bool:
-    """True if the file's header has a ``time`` column and none of the reduced-table test columns."""
+    """True if the file's header has a ``time`` column and none of the reduced-table test columns.  A path
+    that is not a readable regular file within the size cap is an InputError (nothing is opened first)."""
     names = set(_header_names(path))
     return "time" in names and not names & _TABLE_COLUMNS
 
 
 # SI kind of each column, for the range check of every cell (current has no kind: its gain gives it one)
-_KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque"}
+_KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque",
+         "external_force": "force"}
 
 
 def parse_gain(text: str, *, source=None, where=None) -> tuple:
@@ -112,15 +122,12 @@ def parse_gain(text: str, *, source=None, where=None) -> tuple:
     raise bad
 
 
-def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecord:
+def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: float = 1.0) -> TimeRecord:
     """Read one time record (see the module docstring).  ``lead`` [m] converts motor angles and chooses
-    nothing else; ``gain`` is the CLI's text for current columns (a ``# gain:`` line in the file wins)."""
+    nothing else; ``gain`` is the CLI's text for current columns (a ``# gain:`` line in the file wins);
+    ``efficiency`` takes an external force to the motor side of a torque record."""
     src = str(path)
-    try:
-        with Path(path).open(newline="", encoding="utf-8-sig") as fh:
-            raw = fh.read().splitlines()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read data file ({getattr(exc, 'strerror', None) or exc})", source=src) from None
+    raw = read_input(path, "time record", what="data file", encoding="utf-8-sig").splitlines()
     file_gain, gain_line = None, None
     rows = []
     for i, line in enumerate(raw, start=1):
@@ -175,6 +182,8 @@ def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecor
             raise InputError("current column needs a gain: a line '# gain: 0.85 N.m/A' in the file or --gain",
                              source=src, where=f"line {hline}, column {names.index('current') + 1}")
     n = len(rows) - 1
+    if n > MAX_TIME_SAMPLES:
+        raise InputError(f"too many samples ({n:,}; at most {MAX_TIME_SAMPLES:,})", source=src)
     data = np.empty((n, len(cols)))
     lines = np.empty(n, dtype=int)
     for r, (i, text) in enumerate(rows[1:]):
@@ -217,7 +226,18 @@ def read_time_record(path, *, lead: float, gain: str | None = None) -> TimeRecor
     q = col["position"] * to_q
     ref = col["reference"] * to_q if "reference" in col else None
     effort = col[effort_col] * gscale
-    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note)
+    je = names.index(effort_col) + 1
+    if float(np.ptp(effort)) == 0.0:  # no force signal at all: nothing to fit, no error to divide by
+        raise InputError(f"the {effort_col} column is constant ({data[0, je - 1]:g} throughout): a time record "
+                         "needs the effort of the moving axis", source=src, where=f"column {je} ({effort_col})")
+    if float(np.ptp(q)) == 0.0:
+        jq = names.index("position") + 1
+        raise InputError("the position column is constant: the axis does not move in this record", source=src,
+                         where=f"column {jq} (position)")
+    ext = None
+    if "external_force" in col:
+        ext = col["external_force"] * (1.0 if quantity == "force" else lead / (2.0 * math.pi * efficiency))
+    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext)
 
 
 def _factor(name, unit, src, where, lead) -> float:
@@ -229,8 +249,8 @@ def _factor(name, unit, src, where, lead) -> float:
             try:
                 return unit_factor(unit, "length")
             except ValueError:
-                return unit_factor(unit, "angle") * lead / (2.0 * math.pi)
-        if name == "force":
+                return unit_factor(_REV.get(unit.strip(), unit), "angle") * lead / (2.0 * math.pi)
+        if name in ("force", "external_force"):
             return unit_factor(unit, "force")
         if name == "torque":
             return unit_factor(unit, "torque")

@@ -18,6 +18,13 @@ Optionally a second mass: the motor-side mass ``mode_mass`` carries the drive fo
 table by a spring-damper tuned to the resonance ``mode_hz`` (damping ratio ``mode_zeta``); the table
 carries the friction and its position is measured.
 
+Effects the identification library may lack: a ripple periodic in position ``ripple`` sin(2 pi x /
+``ripple_period`` + ``ripple_phase``), as a force in -x (the drive supplies it both ways) or, with
+``ripple_friction``, added to the Coulomb level (it follows the direction); a drag ``quadratic_drag`` v|v|;
+lost motion ``backlash`` between the motor-side and table masses (a dead zone of the spring; needs the
+second mass); and a seeded piecewise-constant process force on the table, ``process_force`` (recorded as
+``extra['external_force']`` and written as the ``external_force [N]`` column).
+
 The controller (sampled at ``fs``): PD on the measured position, the velocity from the backward difference
 of the measured position through a first-order low-pass (``vel_filter_hz``),
 :math:`u = K_p (r - x_m) + K_d (\\dot r - \\hat v)`.  The recorded force is ``u`` plus white sensor noise
@@ -55,6 +62,14 @@ class AxisTruth:
     mode_hz: float = 0.0  # 0: rigid axis
     mode_mass: float = 150.0  # motor-side share of ``mass`` [kg]
     mode_zeta: float = 0.03
+    ripple: float = 0.0  # [N] amplitude of a force ripple periodic in position (lead error, recirculation)
+    ripple_period: float = 0.01  # [m]
+    ripple_phase: float = 0.0  # [rad]
+    ripple_friction: bool = False  # True: the ripple is a friction (follows sgn v); False: a force in +x
+    quadratic_drag: float = 0.0  # [N s^2/m^2] symmetric drag c v|v| (seals, lubricant churning)
+    backlash: float = 0.0  # [m] total lost motion between motor and table (needs mode_hz > 0: the motor
+    #                        side mass crosses the gap with the table left behind)
+    process_force: float = 0.0  # [N] amplitude of a seeded piecewise-constant external force on the table
 
 
 @dataclass
@@ -79,7 +94,7 @@ class Record:
     truth: AxisTruth
     loop: LoopSettings
     gains: tuple
-    extra: dict = field(default_factory=dict)
+    extra: dict = field(default_factory=dict)  # 'external_force' [N] at every sample when simulated
 
     def write_csv(self, path, *, columns=("time", "position", "force", "reference"), effort="force",
                   lead: float = 0.01, efficiency: float = 1.0, gain: float | None = None,
@@ -98,7 +113,11 @@ class Record:
             pos, ref, ph = self.position * 2 * math.pi / lead, self.reference * 2 * math.pi / lead, "rad"
         data = {"time": (self.t, "time [s]", "{:.4f}"), "position": (pos, f"position [{ph}]", "{:.6g}"),
                 "force": (eff, head, "{:.6g}"), "reference": (ref, f"reference [{ph}]", "{:.6g}")}
-        with open(path, "w", newline="") as fh:
+        if "external_force" in self.extra:
+            data["external_force"] = (self.extra["external_force"], "external_force [N]", "{:.6g}")
+        from ..fileio import open_output
+
+        with open_output(path, "w", what="time record") as fh:
             if effort == "current" and gain is not None:
                 fh.write(f"# gain: {gain} N.m/A\n")
             w = csv.writer(fh)
@@ -179,6 +198,11 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
     c1, c2 = truth.position_coeffs
     fse, vs = truth.stribeck, truth.stribeck_v
     off = truth.offset
+    rip, rip_k, rip_ph = truth.ripple, 2 * math.pi / truth.ripple_period, truth.ripple_phase
+    rip_fr = truth.ripple_friction
+    cq = truth.quadratic_drag
+    gap = truth.backlash / 2
+    f_ext = process_force_profile(t, truth.process_force, seed) if truth.process_force else None
     two = truth.mode_hz > 0
     if two:
         m1 = truth.mode_mass
@@ -209,14 +233,27 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
         force[k] = u + f_noise[k]
         for _ in range(ns):
             if two:
-                spring = k_s * (x1 - x) + c_s * (v1 - v)
+                stretch = x1 - x
+                if gap > 0.0:  # dead zone of the lost motion: no spring force inside the gap
+                    stretch = stretch - gap if stretch > gap else (stretch + gap if stretch < -gap else 0.0)
+                    spring = k_s * stretch + (c_s * (v1 - v) if stretch != 0.0 else 0.0)
+                else:
+                    spring = k_s * stretch + c_s * (v1 - v)
                 v1 += h * (u - spring) / m1
                 x1 += h * v1
                 drive = spring - off
             else:
                 drive = u - off
+            if f_ext is not None:
+                drive += f_ext[k]
             xi = 2 * x / truth.stroke - 1
             dpos = c1 * xi + c2 * (1.5 * xi * xi - 0.5)
+            if rip:
+                wave = rip * math.sin(rip_k * x + rip_ph)
+                if rip_fr:
+                    dpos += wave  # a friction: opposes the motion, like the Coulomb part
+                else:
+                    drive -= wave  # a force in -x: the drive must supply +wave
             if v == 0.0:
                 bp = max(fc_p + fse + dpos, 0.0)
                 bn = max(fc_n + fse + dpos, 0.0)
@@ -226,10 +263,29 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
                     v = h * (drive + bn) / mt
             else:
                 if v > 0:
-                    fr = fc_p + fv_p * v + fse * math.exp(-v / vs) + dpos
+                    fr = fc_p + fv_p * v + fse * math.exp(-v / vs) + dpos + cq * v * v
                 else:
-                    fr = -fc_n + fv_n * v - fse * math.exp(v / vs) - dpos
+                    fr = -fc_n + fv_n * v - fse * math.exp(v / vs) - dpos - cq * v * v
                 vn = v + h * (drive - fr) / mt
                 v = 0.0 if vn * v < 0 else vn
             x += h * v
-    return Record(t, meas, force, ref, truth, loop, (kp, kd))
+    extra = {"external_force": f_ext} if f_ext is not None else {}
+    return Record(t, meas, force, ref, truth, loop, (kp, kd), extra)
+
+
+def process_force_profile(t: np.ndarray, amplitude: float, seed: int) -> np.ndarray:
+    """A seeded external force on the table [N]: constant levels within +-``amplitude`` held 0.3-1.2 s each
+    (cuts starting and stopping), ramped over 20 ms between levels."""
+    rng = np.random.default_rng(seed + 2000)
+    out = np.zeros(len(t))
+    t0, level = 0.0, 0.0
+    fs = 1.0 / float(t[1] - t[0])
+    while t0 < t[-1]:
+        new = rng.uniform(-amplitude, amplitude) if rng.random() < 0.75 else 0.0
+        i0 = int(t0 * fs)
+        out[i0:] = new
+        ramp = min(int(0.02 * fs), len(out) - i0)
+        out[i0 : i0 + ramp] = level + (new - level) * np.arange(1, ramp + 1) / ramp
+        level = new
+        t0 += rng.uniform(0.3, 1.2)
+    return out

@@ -57,7 +57,8 @@ def checks(p, mounting, preload, loads) -> dict:
     brg_load = pn.preloaded_pair_load(p["bearing_preload"], f_mean + loads["bearing_static_load"])
     brg_life = pc.life_time(p["bearing_dynamic_load"], brg_load, mean_omega, p["load_factor"])
     # guide blocks: the load per block with the block preload acting like a preloaded pair of ball rows
-    guide_load = pn.preloaded_pair_load(p["guide_preload"], loads["block_load"])
+    # (the most loaded block's cubic mean load over the duty cycle, model.carriage)
+    guide_load = pn.preloaded_pair_load(p["guide_preload"], loads["guide_mean_load"])
     guide_life = pc.guide_life_distance(p["guide_dynamic_load"], guide_load, p["load_factor"], p["guide_roller"])
     dn = pc.dn_value(p["nominal_diameter"], omega)
     lift = pn.lift_off_force(mx.fmax(preload, 1e-9))
@@ -78,11 +79,14 @@ def checks(p, mounting, preload, loads) -> dict:
         # the bearing journal is machined on the screw end: its vendor lists the bores it takes
         "bearing_fit": mx.fmin(p["support_bore_max"] / bore, bore / p["support_bore_min"]),
         "screw_length": p["screw_max_length"] / span,
+        # static safety of the guide blocks (largest block load of the load cases) and of the nut
+        "guide_static": p["guide_static_load"] / (p["guide_static_safety"] * loads["guide_max_load"]),
+        "nut_static": p["nut_static_load"] / (p["nut_static_safety"] * f_max),
     }
     values = {
         "critical_speed": crit, "buckling_load": buck, "yield_load": yield_load, "life": life,
         "bearing_life": brg_life, "guide_life": guide_life, "dn": dn, "nut_lift_off_force": lift,
-        "bearing_max_load": brg_max,
+        "bearing_max_load": brg_max, "nut_static_safety": p["nut_static_load"] / f_max,
     }
     # what each margin compares, in SI: the available capacity and the needed value (margin = available /
     # needed, except bearing_fit, whose "needed" is the bore and "available" the largest bore the end takes)
@@ -94,6 +98,8 @@ def checks(p, mounting, preload, loads) -> dict:
         "nut_lift_off": (lift, f_max), "bearing_lift_off": (p["bearing_lift_off"], brg_max),
         "bearing_speed": (p["bearing_limiting_speed"], omega), "bearing_fit": (p["support_bore_max"], bore),
         "screw_length": (p["screw_max_length"], span),
+        "guide_static": (p["guide_static_load"], p["guide_static_safety"] * loads["guide_max_load"]),
+        "nut_static": (p["nut_static_load"], p["nut_static_safety"] * f_max),
     }
     out = {f"margin_{k}": v for k, v in margins.items()}
     out.update(values)

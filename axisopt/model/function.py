@@ -2,19 +2,22 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import casadi as ca
 import numpy as np
 
 from ..design import Design
-from .checks import CHECKS
+from ..display import fmt, frame, html_fields, html_table, one_line
+from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes
+from .limits import CHECK_RECORDS
 from .params import PARAM_NAMES, axis_params, positions
 from .response import axis_response
 
 PROFILE_OUTPUTS = ("k_screw", "k_screw_bearings", "k_torsion", "k_drive", "k_total", "f_axial", "f1", "m_eff",
                    "thermal_displacement", "f_axial_torsional", "f_axial_torsional_2", "damping_ratio",
-                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure")
+                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure", "k_tool")
 SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_bracket", "c_housing", "f_table",
                   "drag_torque", "drag_nut", "drag_bearings", "drag_guides", "moving_mass", "total_mass",
                   "screw_mass", "cost",
@@ -24,8 +27,10 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "bearing_max_load", "load_inertia", "total_inertia", "inertia_ratio", "motor_speed", "peak_torque",
                   "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque",
                   "gravity_torque",
-                  "duty_time", "friction_power", "heat_transfer", "heat_balance_rise", "temperature_rise",
-                  "thermal_growth") + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
+                  "duty_time", "guide_max_load", "guide_static_safety", "guide_mean_load", "nut_static_safety",
+                  "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking", "friction_power", "heat_transfer",
+                  "heat_balance_rise", "temperature_rise", "thermal_growth",
+                  ) + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
 
 
 @dataclass
@@ -95,7 +100,7 @@ COMPONENTS = (("bearings", "k_bearing"), ("screw", "k_screw"), ("screw torsion",
               ("coupling", "k_coupling"), ("nut", "k_nut"), ("nut bracket", "c_bracket"))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class Evaluation:
     """A design evaluated over the stroke (SI)."""
 
@@ -143,7 +148,110 @@ class Evaluation:
         return float(v[i]), float(self.x[i] - self.design.axis.start_offset)
 
     def checks(self) -> dict:
+        """Check name -> margin (available / needed, >= 1 passes), every check (see :meth:`check_table`)."""
         return {c: float(self.values[f"margin_{c}"]) for c in CHECKS}
+
+    def check_rows(self) -> list:
+        """The checks that apply to the design, one dict each (see :func:`check_rows`)."""
+        return check_rows(self)
+
+    def check_table(self):
+        """pandas DataFrame, one row per check that applies: ``check``, ``label``, ``available``, ``needed``
+        (both in ``unit``, the unit vendors quote), ``unit``, ``margin`` (available / needed; empty when
+        nothing loads it) and ``pass``."""
+        rows = [{k: r[k] for k in CHECK_COLUMNS} for r in check_rows(self)]
+        return frame(rows, CHECK_COLUMNS)
+
+    def summary(self) -> dict:
+        """Headline values in engineering units, the unit in each key (``min_stiffness [N/um]``)."""
+        v, a = self.values, self.design.axis
+        k, k_at = self.minimum("k_total")
+        f, f_at = self.minimum("f1")
+        rows = check_rows(self)
+        return {"design": self.design.name, "mounting": a.mounting, **self.design.part_ids(),
+                "nut_preload [N]": float(self.design.preload), "stroke [mm]": a.stroke * 1e3,
+                "min_stiffness [N/um]": k / 1e6, "min_stiffness_at [mm]": k_at * 1e3,
+                "weakest_link": self.weakest, "min_frequency [Hz]": f, "min_frequency_at [mm]": f_at * 1e3,
+                "table_mode [Hz]": float(v["f_table"]), "drag_torque [N.m]": float(v["drag_torque"]),
+                "moving_mass [kg]": float(v["moving_mass"]), "total_mass [kg]": float(v["total_mass"]),
+                "cost [EUR]": float(v["cost"]),
+                "checks_failed": ", ".join(r["check"] for r in rows if not r["pass"]) or "none"}
+
+    def to_frame(self):
+        """pandas DataFrame, one row per nut position over the stroke (model grid), units in the column
+        names: ``position [mm]`` from stroke start, ``stiffness [N/um]``, ``screw_stiffness [N/um]``,
+        ``frequency [Hz]`` (first natural), ``axial_frequency [Hz]``, ``axial_torsional_frequency [Hz]``,
+        ``damping_ratio [%]``, ``thermal_displacement [mm]``.  :meth:`summary` and :meth:`check_table` give
+        the rest."""
+        v = self.values
+        n = len(self.x)
+
+        def col(key, scale=1.0):
+            return np.broadcast_to(np.asarray(v[key], dtype=float), (n,)) * scale
+
+        import pandas as pd
+
+        return pd.DataFrame({"position [mm]": (self.x - self.design.axis.start_offset) * 1e3,
+                             "stiffness [N/um]": col("k_total", 1e-6),
+                             "screw_stiffness [N/um]": col("k_screw", 1e-6),
+                             "frequency [Hz]": col("f1"), "axial_frequency [Hz]": col("f_axial"),
+                             "axial_torsional_frequency [Hz]": col("f_axial_torsional"),
+                             "damping_ratio [%]": col("damping_ratio", 100.0),
+                             "thermal_displacement [mm]": col("thermal_displacement", 1e3)})
+
+    def __repr__(self) -> str:
+        s = self.summary()
+        fails = s["checks_failed"]
+        return one_line("Evaluation", f"{self.design.name!r}, {s['mounting']}", {
+            "min stiffness": f"{fmt(s['min_stiffness [N/um]'], 'N/um')} at {fmt(s['min_stiffness_at [mm]'], 'mm')}"
+                             f" (weakest: {s['weakest_link']})",
+            "1st frequency": fmt(s["min_frequency [Hz]"], "Hz"),
+            "drag": fmt(s["drag_torque [N.m]"], "N.m"), "cost": fmt(s["cost [EUR]"], "EUR"),
+            "checks": "all pass" if fails == "none" else f"FAIL {fails}"})
+
+    def _repr_html_(self) -> str:
+        s = self.summary()
+        head = html_fields({k: fmt(v) if isinstance(v, float) else v for k, v in s.items()},
+                           f"Evaluation of {self.design.name}")
+        rows = [{"check": r["label"], "available": fmt(r["available"], r["unit"]),
+                 "needed": fmt(r["needed"], r["unit"]), "margin": fmt(r["margin"]),
+                 "pass": "pass" if r["pass"] else "FAIL"} for r in check_rows(self)]
+        return head + html_table(rows, "checks (margin = available / needed, >= 1 passes)")
+
+
+NOT_APPLICABLE = 1e8  # a margin at or above this: the check does not apply (or nothing loads it)
+CHECK_COLUMNS = ("check", "label", "available", "needed", "unit", "margin", "pass")
+
+
+def _finite(x):
+    return float(x) if math.isfinite(x) and abs(x) < NOT_APPLICABLE else None
+
+
+def check_rows(ev: Evaluation) -> list:
+    """One dict per check that applies to the design: ``check``, ``label``, ``available`` and ``needed`` in
+    ``unit`` (the vendor unit of :data:`model.limits.CHECK_TABLE`), ``margin`` (available / needed; None when
+    nothing loads it) and ``pass``.  bearing_fit's available value is the range of bores the screw end takes,
+    as ``available_min`` .. ``available``."""
+    d, v = ev.design, ev.values
+    out = []
+    for c in CHECKS:
+        if c in DRIVE_CHECKS and (d.motor is None and not c.startswith("coupling_")
+                                  or c.startswith("coupling_") and d.coupling is None):
+            continue
+        m = float(v[f"margin_{c}"])
+        if c == "brake_holding" and d.axis.orientation != "vertical":
+            continue
+        rec = CHECK_RECORDS[c]
+        unit, f = rec.unit, rec.factor
+        row = {"check": c, "label": CHECK_LABELS[c], "unit": unit,
+               "available": _finite(float(v[f"available_{c}"]) * f), "needed": _finite(float(v[f"needed_{c}"]) * f),
+               "margin": None if m >= NOT_APPLICABLE else _finite(m), "pass": passes(m)}
+        if c == "bearing_fit":
+            row["available_min"] = _finite(float(d.screw["support_bore_min"]) * f)
+        if c == "nut_lift_off" and m >= NOT_APPLICABLE:
+            row["available"] = None  # a single nut has no preload to lose
+        out.append(row)
+    return out
 
 
 def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool = True) -> Evaluation:

@@ -26,7 +26,8 @@ CONVEX = 2  # a preload direction: the output is convex in the nut preload (met 
 # the thermal growth, the pretension of a fixed-fixed screw and the bearing set's static load: the bearing life,
 # bearing lift-off, screw yield and buckling margins fall with the preload (independent without a duty cycle).
 OUTPUT_PRELOAD = MappingProxyType({
-    "k_total": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1, "life": -1,
+    "k_total": 1, "k_tool": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
+    "life": -1,
     "friction_power": 1, "heat_balance_rise": 1, "temperature_rise": 1, "thermal_growth": 1,
 })
 
@@ -81,6 +82,9 @@ LIMIT_TABLE = (
     Limit("max_thermal_growth", "thermal_growth", "<=", "length", "um", 1e-6,
           "thermal growth of the screw at the nut (largest over the stroke; heat balance of the duty cycle) at "
           "most this"),
+    Limit("min_tool_stiffness", "k_tool", ">=", "stiffness", "N/um", 1e6,
+          "stiffness in the feed direction at the cutting point: the axial chain in series with the table "
+          "pitching and yawing on its blocks (minimum over the stroke)"),
 )
 LIMITS = MappingProxyType({lim.key: lim for lim in LIMIT_TABLE})
 
@@ -94,6 +98,8 @@ class Check:
     unit     : the unit vendors quote the compared values in; ``factor`` converts SI to it
     preload  : how the margin moves with the nut preload (see :data:`OUTPUT_PRELOAD`)
     drive    : a drive check: it applies only when the design has a motor (coupling checks: a coupling)
+    relaxable: a rule with a margin one may trade (False: a compatibility rule, parts that fit or not; an
+               infeasible problem's explanation never proposes relaxing it)
     """
 
     name: str
@@ -103,6 +109,7 @@ class Check:
     factor: float
     preload: int = 0
     drive: bool = False
+    relaxable: bool = True
 
 
 CHECK_TABLE = (
@@ -117,8 +124,9 @@ CHECK_TABLE = (
     Check("bearing_lift_off", "bearing lift-off load / max bearing load", "bearing lift-off", "kN", 1e-3,
           preload=-1),
     Check("bearing_speed", "bearing limiting speed / max screw speed", "bearing speed", "rpm", RPM),
-    Check("bearing_fit", "bearing bore within the screw end's range", "bearing bore (max)", "mm", 1e3),
-    Check("screw_length", "screw max length / needed length", "screw length", "mm", 1e3),
+    Check("bearing_fit", "bearing bore within the screw end's range", "bearing bore (max)", "mm", 1e3,
+          relaxable=False),
+    Check("screw_length", "screw max length / needed length", "screw length", "mm", 1e3, relaxable=False),
     Check("motor_peak_torque", "motor peak zone / peak torque (cycle, thrust)", "motor peak torque", "N.m", 1.0,
           preload=CONVEX, drive=True),
     Check("motor_rated_torque", "rated x RMS ratio / RMS torque, mean thrust", "motor rated torque", "N.m", 1.0,
@@ -129,6 +137,8 @@ CHECK_TABLE = (
     Check("coupling_torque", "coupling rated torque / motor peak torque", "coupling torque", "N.m", 1.0,
           drive=True),
     Check("coupling_speed", "coupling max speed / max screw speed", "coupling speed", "rpm", RPM, drive=True),
+    Check("guide_static", "guide block C0 / (least f_S x largest block load)", "guide static", "kN", 1e-3),
+    Check("nut_static", "nut C0a / (least f_S x largest axial force)", "nut static", "kN", 1e-3),
 )
 CHECK_RECORDS = MappingProxyType({c.name: c for c in CHECK_TABLE})
 

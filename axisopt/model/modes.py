@@ -13,12 +13,16 @@ from ..physics import screw as ps
 STEEL_DAMPING = 0.002
 
 
-def axial_modes(p, x, mounting, chain, moving, screw_mass) -> dict:
-    """Axial mode (motor held, Rayleigh screw mass) and the table mode on the guide blocks [Hz]."""
+def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None) -> dict:
+    """Axial mode (motor held, Rayleigh screw mass), the table's bounce mode on the guide blocks and, given the
+    rocking modes (``model.carriage.rocking``: pitch and yaw), the first of them all [Hz]."""
     m_eff = pdy.effective_axial_mass(moving, screw_mass, x, p["span"], mounting)
     f_axial = pdy.axial_natural_frequency(chain["k_total"], m_eff)
     f_table = mx.sqrt(p["guide_blocks"] * p["guide_normal_stiffness"] / moving) / (2.0 * math.pi)
-    return {"m_eff": m_eff, "f_axial": f_axial, "f_table": f_table, "f1": mx.fmin(f_axial, f_table)}
+    f1 = mx.fmin(f_axial, f_table)
+    if rock is not None:
+        f1 = mx.fmin(f1, mx.fmin(rock["f_pitch"], rock["f_yaw"]))
+    return {"m_eff": m_eff, "f_axial": f_axial, "f_table": f_table, "f1": f1}
 
 
 def drive_inertias(p):

@@ -38,8 +38,15 @@ PARAM_NAMES = (
     "rotor_inertia", "has_motor", "motor_rated_torque", "motor_peak_torque", "motor_max_speed",
     "motor_brake_torque", "motor_price", "has_coupling", "coupling_rated_torque", "coupling_max_speed",
     "coupling_price", "reduction_ratio", "reduction_efficiency", "reduction_inertia", "max_inertia_ratio",
-    "brake_safety", "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed",
-    "temperature_rise_auto", "heat_transfer",
+    "brake_safety",
+    # carriage (issue 25): the guide's static rating and moment ratings, the cutting force's cross component, the
+    # lever arms, the block pattern, gravity across the rails (wall mounting), the table's rocking inertias, the
+    # least static safety of guide and nut, and whether the duty cycle's phases carry the process force
+    "guide_static_load", "guide_moment_roll", "guide_moment_pitch", "guide_moment_yaw", "cross_load",
+    "tool_height", "tool_offset", "cg_height", "cg_offset", "block_spacing", "rail_spacing", "gravity_cross",
+    "pitch_inertia", "yaw_inertia", "guide_static_safety", "nut_static_safety", "duty_process",
+    "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed", "temperature_rise_auto",
+    "heat_transfer",
 )
 
 
@@ -81,7 +88,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
     torque = col(bearing, "starting_torque")
     p = {
         "stroke": axis.stroke, "start_offset": axis.start_offset, "span": axis.span,
-        "table_mass": axis.moving_mass, "acceleration": axis.acceleration, "max_speed": axis.max_speed,
+        "table_mass": axis.moving_mass, "acceleration": axis.top_acceleration, "max_speed": axis.top_speed,
         "mean_speed": axis.mean_speed_eff, "axial_load": axis.axial_load,
         "mean_axial_load": axis.mean_axial_load_eff, "required_life": axis.required_life,
         "load_factor": axis.load_factor, "guide_blocks": float(axis.guide_blocks), "rails": float(axis.rails),
@@ -112,6 +119,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "bearing_torque_listed": np.isfinite(torque) * 1.0,
         "guide_roller": _is_type(guide, "roller"),
     })
+    p.update(carriage_params(axis))
     p.update(drive_params(axis, motor, coupling))
     p["duty"] = axis.phases
     return p
@@ -122,6 +130,26 @@ def one_design(p: dict, i: int = 0) -> dict:
     out = {k: float(np.asarray(p[k]).ravel()[i] if np.ndim(p[k]) else p[k]) for k in PARAM_NAMES}
     out["duty"] = p.get("duty", ())
     return out
+
+
+def carriage_params(axis) -> dict:
+    """Carriage geometry, load and safety parameters (SI), with the defaults of :class:`axisopt.design.Axis`.
+    The rocking inertias default to a uniform box of the axis's moving mass (table + workpiece): table_length
+    long, table_width wide, 2 x cg_height high, its centre at cg_height (pitch about the cross axis in the
+    mounting plane; yaw about the normal axis through the carriage centre, cg_offset away)."""
+    from ..physics.carriage import box_inertia
+
+    length, width, h = axis.table_length, axis.table_width_eff, axis.cg_height_eff
+    pitch = box_inertia(axis.moving_mass, length, 2.0 * h, h) if axis.pitch_inertia is None else axis.pitch_inertia
+    yaw = box_inertia(axis.moving_mass, length, width, axis.cg_offset) if axis.yaw_inertia is None \
+        else axis.yaw_inertia
+    return {
+        "cross_load": axis.cross_load, "tool_height": axis.tool_height_eff, "tool_offset": axis.tool_offset,
+        "cg_height": h, "cg_offset": axis.cg_offset, "block_spacing": axis.block_spacing_eff,
+        "rail_spacing": axis.rail_spacing_eff, "gravity_cross": 1.0 if axis.orientation == "wall" else 0.0,
+        "pitch_inertia": pitch, "yaw_inertia": yaw, "guide_static_safety": axis.guide_static_safety,
+        "nut_static_safety": axis.nut_static_safety, "duty_process": 1.0 if axis.duty_cycle else 0.0,
+    }
 
 
 def drive_params(axis, motor, coupling) -> dict:

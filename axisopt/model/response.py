@@ -14,6 +14,7 @@ and ``identify`` builds its plant from it.  Sub-assemblies: :mod:`.loads` (masse
 
 from __future__ import annotations
 
+from .carriage import carriage_loads, rocking, tool_stiffness
 from .chain import stiffness_chain
 from .checks import checks
 from .cost import cost
@@ -26,7 +27,8 @@ from .modes import axial_modes, damping, drive_train_modes
 # The outputs of the stiffness chain and the axial modes (``chain=False`` leaves them out).
 CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupling", "k_nut", "k_nut_unloaded",
                            "c_bracket", "c_housing", "k_bearing", "k_drive", "k_total", "thermal_displacement",
-                           "m_eff", "f_axial", "f_table", "f1", "thermal_growth"})
+                           "m_eff", "f_axial", "f_table", "f1", "k_tool", "c_rocking", "k_pitch", "k_yaw",
+                           "f_pitch", "f_yaw", "thermal_growth"})
 
 
 def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True,
@@ -50,14 +52,18 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     p = with_temperature(p, heat)
     m = masses(p)
     loads = axial_loads(p, m["moving_mass"])
+    loads.update(carriage_loads(p, m["moving_mass"]))
     out = {}
     out.update(heat)
     out.update(m)
     out.update(loads)
     if chain or extras:
         k = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
-        modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"])
+        rock = rocking(p)
+        modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"], rock)
         out.update(k)
+        out.update(rock)
+        out.update(tool_stiffness(p, k["k_total"], rock))
         out.update(modes)
     out.update(drag_torque(p, preload, loads))
     out["cost"] = cost(p)

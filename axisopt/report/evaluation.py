@@ -8,7 +8,8 @@ import textwrap
 
 import numpy as np
 
-from ..model import CHECK_LABELS, CHECKS, DRIVE_CHECKS, Evaluation, passes
+from ..model import CHECKS, Evaluation, passes
+from ..model.function import NOT_APPLICABLE, check_rows  # noqa: F401  (check_rows: one per check, in model)
 from ..model.limits import CHECK_TABLE
 from ..units import N_PER_UM
 
@@ -19,7 +20,6 @@ WIDTH = 100  # terminal columns the text tables fit
 # short names for tables with one column per design (both declared with the check in model.limits).
 CHECK_UNITS = {c.name: (c.unit, c.factor) for c in CHECK_TABLE}
 CHECK_SHORT = {c.name: c.short for c in CHECK_TABLE}
-NOT_APPLICABLE = 1e8  # a margin at or above this: the check does not apply (or nothing loads it)
 
 
 def fmt_value(x) -> str:
@@ -30,31 +30,6 @@ def fmt_value(x) -> str:
     if abs(x) >= 100:
         return f"{x:,.0f}"
     return f"{x:.3g}"
-
-
-def check_rows(ev: Evaluation) -> list:
-    """One dict per check that applies to the design: ``check``, ``label``, ``available`` and ``needed`` in
-    ``unit``, ``margin`` (available / needed; None when nothing loads it) and ``pass``.  bearing_fit's
-    available value is the range of bores the screw end takes, as ``available_min`` .. ``available``."""
-    d, v = ev.design, ev.values
-    out = []
-    for c in CHECKS:
-        if c in DRIVE_CHECKS and (d.motor is None and not c.startswith("coupling_")
-                                  or c.startswith("coupling_") and d.coupling is None):
-            continue
-        m = float(v[f"margin_{c}"])
-        if c == "brake_holding" and d.axis.orientation != "vertical":
-            continue
-        unit, f = CHECK_UNITS[c]
-        row = {"check": c, "label": CHECK_LABELS[c], "unit": unit,
-               "available": _finite(float(v[f"available_{c}"]) * f), "needed": _finite(float(v[f"needed_{c}"]) * f),
-               "margin": None if m >= NOT_APPLICABLE else _finite(m), "pass": passes(m)}
-        if c == "bearing_fit":
-            row["available_min"] = _finite(float(d.screw["support_bore_min"]) * f)
-        if c == "nut_lift_off" and m >= NOT_APPLICABLE:
-            row["available"] = None  # a single nut has no preload to lose
-        out.append(row)
-    return out
 
 
 def check_lines(ev: Evaluation) -> list:
@@ -129,6 +104,13 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "axial_torsional_frequency_Hz": np.asarray(v["f_axial_torsional"]).tolist(),
         "damping_ratio": np.asarray(v["damping_ratio"]).tolist(),
         "assumed_defaults": list(ev.design.assumed),
+        # carriage (issue 25)
+        "min_tool_stiffness_N_per_um": ev.minimum("k_tool")[0] / N_PER_UM,
+        "tool_stiffness_N_per_um": (np.asarray(v["k_tool"]) / N_PER_UM).tolist(),
+        "guide_rocking_compliance_um_per_kN": v["c_rocking"] * 1e9,
+        "pitch_mode_Hz": v["f_pitch"], "yaw_mode_Hz": v["f_yaw"],
+        "guide_max_block_load_N": v["guide_max_load"], "guide_static_safety": v["guide_static_safety"],
+        "guide_mean_block_load_N": v["guide_mean_load"], "nut_static_safety": v["nut_static_safety"],
         "estimated": [e.to_dict() | {"moves": w} for e, w in estimates(ev) if w],
     }
 
@@ -197,11 +179,25 @@ def evaluation_table(ev: Evaluation) -> str:
                      f"{k_tot / k_sb * 100:>7.0f}%  (in place of the two rows above)")
     lines.append(f"  {'total':<34}{k_tot / N_PER_UM:>10,.1f}{1e9 / k_tot:>9.2f}")
     lines.append(f"  {'table on guides':<34}{'':>10}  (table mode {v['f_table']:.0f} Hz)")
+    # the stiffness at the cutting point: the chain in series with the table rocking on its blocks (issue 25)
+    k_tool = float(np.asarray(v["k_tool"])[i_min])
+    c_rock = float(v["c_rocking"])
+    rock = f"{1 / c_rock / N_PER_UM:>10,.1f}{c_rock * 1e9:>9.2f}" if c_rock > 0 else f"{'rigid':>10}{'0':>9}"
+    lines.append(f"  {'guides pitch/yaw x lever^2':<34}{rock}  (tool {a.tool_height_eff * 1e3:.0f} mm up, "
+                 f"{a.tool_offset * 1e3:.0f} mm across)")
+    lines.append(f"  {'stiffness at the tool':<34}{k_tool / N_PER_UM:>10,.1f}{1e9 / k_tool:>9.2f}  (pitch "
+                 f"{v['f_pitch']:.0f} Hz, yaw {v['f_yaw']:.0f} Hz)")
+    lines.extend(textwrap.wrap(
+        f"carriage: largest block load {v['guide_max_load'] / 1e3:.2f} kN, guide static safety f_S "
+        f"{v['guide_static_safety']:.1f} (least {a.guide_static_safety:g}); mean block load "
+        f"{v['guide_mean_load'] / 1e3:.2f} kN; nut static safety {v['nut_static_safety']:.1f} "
+        f"(least {a.nut_static_safety:g})", WIDTH, initial_indent="  ", subsequent_indent="    "))
     lines.append("")
     lines.append(f"{'over the stroke':<22}{'start':>10}{'middle':>10}{'end':>10}{'minimum':>10}{'at [mm]':>9}")
     s = ev.x - a.start_offset
     idx = [0, int(np.argmin(np.abs(s - a.stroke / 2))), len(s) - 1]
-    rows = (("k_total", "axial stiffness N/um", N_PER_UM), ("f1", "1st frequency Hz", 1.0),
+    rows = (("k_total", "axial stiffness N/um", N_PER_UM), ("k_tool", "tool stiffness N/um", N_PER_UM),
+            ("f1", "1st frequency Hz", 1.0),
             ("f_axial_torsional", "axial-torsional Hz", 1.0), ("damping_ratio", "damping ratio %", 0.01))
     for key, label, scale in rows:
         arr = np.asarray(v[key])

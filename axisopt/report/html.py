@@ -119,6 +119,9 @@ def check_report_path(path) -> None:
     """A --report target must end in .html and plotly must be installed (one-line InputError otherwise)."""
     if not str(path).lower().endswith((".html", ".htm")):
         raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
+    from ..fileio import check_output_path
+
+    check_output_path(path, what="HTML report", where="--report")
     require_plotly()
 
 
@@ -335,7 +338,7 @@ def diagnose_page(diag, text: str) -> Page:
     from plotly.subplots import make_subplots
 
     from ..identify.diagnose import split_by_observation as _split
-    from ..identify.report import FACTOR_DISPLAY, Y_UNIT, diagnosis_dict
+    from .diagnosis import FACTOR_DISPLAY, Y_UNIT, diagnosis_dict
 
     d = diagnosis_dict(diag)
     page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why")

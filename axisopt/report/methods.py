@@ -70,16 +70,15 @@ def frf_dict(result: dict) -> dict:
     }
 
 
-def plot_frf(result: dict, path: str) -> None:
+def plot_frf(result: dict, path: str | None = None):
     """Magnitude (log-log, um/N) and phase of the table compliance, one line per nut position, the modes
-    as dashed vertical lines in the same colour."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    as dashed vertical lines in the same colour.  Returns the matplotlib Figure; written to ``path`` only
+    when given."""
+    from matplotlib.figure import Figure
 
     f = np.asarray(result["frequency_Hz"], dtype=float)
-    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    fig = Figure(figsize=(7, 6))
+    ax1, ax2 = fig.subplots(2, 1, sharex=True)
     names = ("stroke start", "mid-stroke", "stroke end")
     for j, q in enumerate(result["positions"]):
         color = f"C{j}"
@@ -101,4 +100,6 @@ def plot_frf(result: dict, path: str) -> None:
         ax.grid(True, which="both", alpha=0.3)
     ax1.legend(fontsize=8)
     tidy_layout(fig)
-    save_figure(fig, path)
+    if path is not None:
+        save_figure(fig, path)
+    return fig

@@ -72,28 +72,28 @@ def distinct_labels(items, prefix=None) -> list:
     return out
 
 
-def plot_profiles(evaluations, path: str, labels=None, limits=None) -> None:
+def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None):
     """Stiffness and first natural frequency over the stroke, one line per evaluation; with a motor, a
     torque-speed panel: the duty-cycle points against the motor's rated and peak torque and speed limits
     (the limits the checks use: the intermittent zone falling from its corner speed to max speed).  ``limits``
     (optional) maps 'min_stiffness' [N/m] and 'min_frequency' [Hz] to the problem's limits, drawn as
-    dashed lines."""
+    dashed lines.  Returns the matplotlib Figure (not registered with pyplot); written to ``path`` only when
+    one is given."""
     import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
 
     pts = [duty_points(ev) for ev in evaluations]
     drive = any(p is not None for p in pts)
     if drive:
-        fig = plt.figure(figsize=(13, 6))
+        fig = Figure(figsize=(13, 6))
         gs = fig.add_gridspec(2, 2, width_ratios=(1, 1))
         ax1 = fig.add_subplot(gs[0, 0])
         ax2 = fig.add_subplot(gs[1, 0], sharex=ax1)
         ax3 = fig.add_subplot(gs[:, 1])
     else:
-        fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        fig = Figure(figsize=(7, 6))
+        ax1, ax2 = fig.subplots(2, 1, sharex=True)
+    colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
     for i, ev in enumerate(evaluations):
         s = (ev.x - ev.design.axis.start_offset) * 1e3
         lab = labels[i] if labels else ev.design.name
@@ -126,4 +126,6 @@ def plot_profiles(evaluations, path: str, labels=None, limits=None) -> None:
         ax.grid(True, alpha=0.3)
     ax1.legend(fontsize=8)
     tidy_layout(fig)
-    save_figure(fig, path)
+    if path is not None:
+        save_figure(fig, path)
+    return fig

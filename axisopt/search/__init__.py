@@ -20,7 +20,7 @@ import numpy as np
 from ..model.limits import LIMITS
 from ..problem import Problem
 from .core import bound_order_search, certificate, exhaustive_search, polish
-from .result import Binding, Candidate, Certificate, Infeasibility, ParetoFront, SolveResult
+from .result import Binding, Candidate, Certificate, Infeasibility, ParetoFront, Relaxation, SolveResult
 from .space import Constraint, build_constraints, build_space, objective_spec
 
 METHODS = ("default", "exhaustive", "bonmin", "scip")
@@ -71,12 +71,16 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
             f"{first.certificate.nlps_solved} NLPs, gap {first.certificate.gap:g}",)
         res.certificate.nlps_solved += first.certificate.nlps_solved
         res.certificate.proven = res.certificate.proven and first.certificate.proven
+        if first.status != "optimal" and res.status == "optimal":  # stage 2 proven on an unproven stage 1
+            res.status = first.status
+            res.message = "; ".join(m for m in (f"stage 1 ({primary}): {first.message or first.status}",
+                                                res.message) if m)
         res.time = time.perf_counter() - t0
         return res
     spec = objective_spec(ob.mode, problem)
     res = _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0)
     if sensitivities and res.best is not None and method not in ("bonmin", "scip"):
-        res.binding = limit_sensitivities(problem, res)
+        res.binding = limit_sensitivities(problem, res, space=space)
         res.time = time.perf_counter() - t0
     if res.best is not None and res.best.design is not None:
         res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in spec.terms])
@@ -118,9 +122,11 @@ def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0
     info["pruned_by_dominance"] = space.pruned_by_dominance
     if not np.isfinite(ex.objective).any():
         from .explain import explain_infeasible
+        from .relax import rank_relaxations
 
         cert = certificate(info, 0, 0, ())
         why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive")
+        why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
         return SolveResult("infeasible", method, problem.name, spec.label, spec.unit, None, [], cert,
                            time.perf_counter() - t0, message="no catalog combination meets every limit",
                            infeasibility=why)
@@ -133,10 +139,15 @@ def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0
                        time.perf_counter() - t0, message="; ".join(notes), solver_status="ipopt")
 
 
-def limit_sensitivities(problem: Problem, res: SolveResult) -> list:
+def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> list:
     """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
-    (re-solved with the default method; a discrete problem has no meaningful multipliers)."""
+    (re-solved with the default method; a discrete problem has no meaningful multipliers).
+
+    ``space``: the problem's search space, if built (the part tables do not depend on the limits, so every
+    re-solve reuses it and its cached parameter arrays)."""
     best = res.best
+    space = build_space(problem) if space is None else space
+    spec = objective_spec(problem.objective.mode, problem)
     out = []
     for key, value in problem.limits:
         lim = LIMITS[key]
@@ -145,8 +156,13 @@ def limit_sensitivities(problem: Problem, res: SolveResult) -> list:
             continue  # e.g. max_backlash 0: relaxing it by 10 % changes nothing; an output the design lacks
         unit, factor = lim.unit, lim.factor
         relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
-        r2 = solve(problem.with_limit(key, relaxed), "default", top=1, sensitivities=False)
-        gain = (r2.best.objective - best.objective) if r2.best is not None else float("nan")
+        # the optimum meets the relaxed limit too: only designs that can reach it are searched (none: no gain)
+        loose = build_constraints(problem.with_limit(key, relaxed))
+        ex, _info = bound_order_search(space, loose, spec, top=1, incumbent=best.objective)
+        if np.isfinite(ex.objective).any():
+            gain = polish(space, ex, loose, spec, 1)[0][0].objective - best.objective
+        else:
+            gain = 0.0
         tol = 1e-6 * max(abs(best.objective), 1e-9)
         out.append(Binding(key, unit, value / factor, at / factor, relaxed / factor, gain,
                            bool(gain > tol)))
@@ -154,4 +170,4 @@ def limit_sensitivities(problem: Problem, res: SolveResult) -> list:
 
 
 __all__ = ["solve", "METHODS", "SolveResult", "Candidate", "Certificate", "Binding", "Infeasibility",
-           "ParetoFront", "replace"]
+           "ParetoFront", "Relaxation", "replace"]

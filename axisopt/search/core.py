@@ -251,7 +251,7 @@ def _concat(parts):
 
 
 def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top: int = 1, *,
-                       max_evaluations: int | None = None):
+                       max_evaluations: int | None = None, incumbent: float = -np.inf):
     """Default method core: best-first over blocks of combinations, never forming the whole product.
 
     1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives -- gets a
@@ -263,6 +263,8 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     3. It stops when neither the next block nor the pool can reach the incumbent: the gap is then 0.  Blocks
        never screened are the certificate's ``pruned_by_block``; survivors never solved its
        ``pruned_by_bound``.
+    ``incumbent``: an objective some design is known to reach (top 1): what cannot tie with it is pruned from
+    the start, and the Exact returned may then be empty.
     Returns (Exact of evaluated combinations, certificate fields dict)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
@@ -285,7 +287,7 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     pos, batch, n_eval, screened_blocks, feasible = 0, 64, 0, 0, 0
     group = 1  # distinct nuts per screened group: grows as long as no incumbent prunes
     pool_idx, pool_bnd = np.zeros(0, np.int64), np.zeros(0)
-    parts, thr = [], -np.inf
+    parts, thr = [], (incumbent if top == 1 else -np.inf)
     while True:
         floor = objective_floor(thr)
         nxt = bv[pos] if pos < len(bv) else -np.inf
@@ -461,6 +463,12 @@ def exhaustive_search(space: Space, constraints, objective: ObjectiveSpec, chunk
 # ------------------------------------------------------------------------------------ candidates
 def make_candidate(space: Space, combo: int, preload: float, objective: ObjectiveSpec, rank: int = 0,
                    name: str = "") -> Candidate:
+    return candidate_values(space, combo, preload, objective, rank, name)[0]
+
+
+def candidate_values(space: Space, combo: int, preload: float, objective: ObjectiveSpec, rank: int = 0,
+                     name: str = "") -> tuple:
+    """(:func:`make_candidate`'s Candidate, the model's values of its design: ``Evaluation.values``)."""
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
     screw, nut, bearing, guide, motor, coupling = space.part_rows(n, b, g)
@@ -472,7 +480,7 @@ def make_candidate(space: Space, combo: int, preload: float, objective: Objectiv
                     source=space.problem.source, assumed=space.problem.assumed)
     ev = model.evaluate(design)
     v = ev.values
-    J = float(objective.value({k: np.asarray(v[k]) for k in ("k_total", "f1")}))
+    J = float(objective.value({k: np.asarray(v[k]) for k, _ in objective.terms}))
     return Candidate(rank=rank, combination=int(combo), mounting=mounting, screw=str(screw["id"]),
                      nut=str(nut["id"]), bearing=str(bearing["id"]), guide=str(guide["id"]), nut_preload=preload,
                      motor="" if motor is None else str(motor["id"]),
@@ -481,7 +489,8 @@ def make_candidate(space: Space, combo: int, preload: float, objective: Objectiv
                      min_frequency=float(np.min(v["f1"])), cost=float(v["cost"]),
                      moving_mass=float(v["moving_mass"]), total_mass=float(v["total_mass"]),
                      drag_torque=float(v["drag_torque"]), life_h=float(v["life"]) / 3600.0, design=design,
-                     outputs={lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v})
+                     outputs={lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v}
+                     ), v
 
 
 def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: int):

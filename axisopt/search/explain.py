@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import model
-from .core import make_candidate
+from .core import candidate_values
 from .result import Infeasibility
 from .space import COUPLING_KEYS, DRIVE_KEYS, Space, _vec, respond, respond_drive
 
@@ -102,15 +102,22 @@ def _bounded(c) -> bool:
 
 
 def block_optimism(space: Space, constraints):
-    """Per mounting and (nut, bearing) block: for each limit the optimistic guide bounds, the best value any
-    combination of the block reaches at the limit's favourable preload end (full position grid), and a
-    lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
+    """Per mounting and (nut, bearing) block: for each limit the optimistic guide bounds, a value no
+    combination of the block beats at the limit's favourable preload end (profiles on
+    :meth:`Space.bound_positions`), and a lower bound of the block's miss scores.
+    Returns a list over mountings of (values dict, lower bound)."""
     _, N, B, _ = space.shape
     bounded = [c for c in constraints if _bounded(c)]
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
+    # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped there
+    # unless one of those reads them (as in _score_nuts)
+    chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in bounded if c.convex or not c.lower_type)
+    # a minimum over a few positions bounds the minimum over the grid from above: optimistic for a ">=" limit,
+    # so the few suffice unless a "<=" limit reads a profile
+    few = all(c.sense == ">=" for c in bounded if c.profile)
     out = []
     for mounting in space.mountings:
-        x = space.positions(mounting)
+        x = space.bound_positions(mounting) if few else space.positions(mounting)
         step = max(1, CHUNK // max(B * len(x), 1))
         best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in bounded}
         for n0 in range(0, N, step):
@@ -120,7 +127,8 @@ def block_optimism(space: Space, constraints):
             shape = (sl.stop - sl.start, B)
             for t in types:
                 p = space.params_optimistic_guide(mounting, sl, str(t))
-                out_lo, out_hi = (respond(p, x, mounting, pre, drive_block=False) for pre in (lo, hi))
+                out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
+                out_hi = respond(p, x, mounting, hi, drive_block=False)
                 for c in bounded:
                     v = _favourable(c, out_lo, out_hi, shape + (1,))[..., 0]
                     pick = np.maximum if c.sense == ">=" else np.minimum
@@ -156,7 +164,7 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
             drive_known = True
         want = np.zeros((M, N, B), dtype=bool)
         open_ = ~done
-        for c in constraints:
+        for c in constraints if done.any() else ():  # first round: the lowest score bounds only (below)
             if tally.met[c.name] or (drive_known and c.name not in bounded):
                 continue
             cand = open_ & usable
@@ -337,11 +345,10 @@ def _closest_design(space: Space, constraints, objective, combo: int, rank: int)
     for c in constraints:
         tot += c.violation(_vec(c.value(out), 33))
     pre = float(grid[int(np.argmin(tot))])
-    cand = make_candidate(space, combo, pre, objective, rank=rank)
-    vals = dict(model.evaluate(cand.design).values)
+    cand, vals = candidate_values(space, combo, pre, objective, rank=rank)  # one evaluation of the design
     misses = {}
     for c in constraints:
-        v = float(np.min(vals[c.key])) if c.profile else float(vals[c.key])
+        v = float(np.min(vals[c.key]))
         miss = float(c.violation(np.asarray(v)))
         if miss > 0:
             misses[c.label] = miss

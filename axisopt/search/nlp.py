@@ -15,7 +15,7 @@ import casadi as ca
 import numpy as np
 
 from .. import model
-from .space import N_PER_UM, Constraint, ObjectiveSpec
+from .space import N_PER_UM, STIFFNESS_OUTPUTS, Constraint, ObjectiveSpec
 
 _IPOPT = {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes", "ipopt.tol": 1e-10,
           "ipopt.max_iter": 300, "ipopt.bound_push": 1e-9, "ipopt.bound_frac": 1e-9,
@@ -32,7 +32,7 @@ class NLPResult:
 
 
 def _scaled(key, v):
-    return v / N_PER_UM if key == "k_total" else v
+    return v / N_PER_UM if key in STIFFNESS_OUTPUTS else v
 
 
 def _solver(mounting: str, x: np.ndarray, cons: tuple, objective: ObjectiveSpec, duty: tuple = ()):

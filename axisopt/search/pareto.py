@@ -134,27 +134,29 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
                       cert, time.perf_counter() - t0, pareto=pf)
     if not len(front):
         from .explain import explain_infeasible
+        from .relax import rank_relaxations
 
         exhaustive = method == "exhaustive"
         res.infeasibility = explain_infeasible(space, constraints, spec, every_combination=exhaustive)
+        inf = res.infeasibility
+        inf.relax, inf.not_relaxable, inf.relax_blocked_by = rank_relaxations(constraints, inf)
         res.message = "no catalog combination meets every limit"
     return res
 
 
-def plot_pareto(front: ParetoFront, path: str) -> None:
+def plot_pareto(front: ParetoFront, path: str | None = None):
     """Scatter matrix of every objective pair: the non-dominated designs in colour (by the first
     objective), a sample of the feasible designs they dominate in grey, each axis labelled with its unit
-    and whether it is maximised or minimised; the diagonal shows each objective's spread over the front."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    and whether it is maximised or minimised; the diagonal shows each objective's spread over the front.
+    Returns the matplotlib Figure (not registered with pyplot); written to ``path`` only when given."""
+    from matplotlib.figure import Figure
 
     keys, d = front.keys, len(front.keys)
     F = np.array([[getattr(p, FIELD[k]) for k in keys] for p in front.points]).reshape(-1, d)
     C = np.asarray(front.cloud, dtype=float).reshape(-1, d) if front.cloud is not None else np.zeros((0, d))
     size = 2.6 * d if d > 2 else 5.5
-    fig, axes = plt.subplots(d, d, figsize=(size + 1.0, size), squeeze=False)
+    fig = Figure(figsize=(size + 1.0, size))
+    axes = fig.subplots(d, d, squeeze=False)
     label = [f"{k.replace('_', ' ')} [{u}] ({'max' if s == 'max' else 'min'})"
              for k, u, s in zip(keys, front.units, front.senses)]
     sc = None
@@ -181,6 +183,8 @@ def plot_pareto(front: ParetoFront, path: str) -> None:
     if sc is not None:
         fig.colorbar(sc, ax=axes, label=label[0], shrink=0.8)
     fig.suptitle(f"Pareto front: {len(front.points)} non-dominated of {front.feasible:,} feasible designs")
-    from ..fileio import save_figure
+    if path is not None:
+        from ..fileio import save_figure
 
-    save_figure(fig, path)
+        save_figure(fig, path)
+    return fig

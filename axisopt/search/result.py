@@ -5,6 +5,14 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass, field
 
+from ..display import fmt, frame, html_fields, html_table, one_line
+
+# Candidate fields as table columns, the display unit in the name (Candidate's fields are in these units).
+CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"), ("min_stiffness", "min_stiffness [N/um]"),
+                     ("min_frequency", "min_frequency [Hz]"), ("cost", "cost [EUR]"),
+                     ("moving_mass", "moving_mass [kg]"), ("total_mass", "total_mass [kg]"),
+                     ("drag_torque", "drag_torque [N.m]"), ("life_h", "life [h]"))
+
 
 @dataclass
 class Candidate:
@@ -47,6 +55,22 @@ class Candidate:
         d.pop("design")
         d.pop("outputs")
         return {k: _clean(v) for k, v in d.items()}
+
+    def row(self, objective_unit: str | None = None) -> dict:
+        """One table row: rank, mounting, parts, the objective (when ``objective_unit`` is given) and the
+        values in display units, each unit in its column name; an infeasible problem's closest designs add
+        ``miss <limit> [%]`` per missed limit."""
+        r = {"rank": self.rank, "mounting": self.mounting, "screw": self.screw, "nut": self.nut,
+             "bearing": self.bearing, "guide": self.guide}
+        if self.motor:
+            r["motor"] = self.motor
+        if self.coupling:
+            r["coupling"] = self.coupling
+        if objective_unit is not None:
+            r[f"objective [{objective_unit}]" if objective_unit not in ("", "-") else "objective"] = self.objective
+        r.update({col: getattr(self, f) for f, col in CANDIDATE_COLUMNS})
+        r.update({f"miss {k} [%]": 100.0 * v for k, v in self.misses.items()})
+        return r
 
 
 @dataclass
@@ -96,7 +120,7 @@ class Binding:
         return {k: _clean(v) for k, v in asdict(self).items()}
 
 
-@dataclass
+@dataclass(repr=False)
 class ParetoFront:
     keys: tuple  # objective keys, e.g. ('stiffness', 'cost')
     senses: tuple  # 'max' | 'min' per key
@@ -111,21 +135,84 @@ class ParetoFront:
         return {"keys": list(self.keys), "senses": list(self.senses), "units": list(self.units),
                 "feasible": self.feasible, "points": [p.to_dict() for p in self.points]}
 
+    def __len__(self) -> int:
+        return len(self.points)
+
+    def __iter__(self):
+        return iter(self.points)
+
+    def __getitem__(self, i):
+        return self.points[i]
+
+    def to_frame(self):
+        """pandas DataFrame, one row per non-dominated design in front order (units in the column names)."""
+        return frame([p.row() for p in self.points])
+
+    def __repr__(self) -> str:
+        objectives = ", ".join(f"{s} {k}" + (f" [{u}]" if u else "") for k, s, u in
+                               zip(self.keys, self.senses, self.units))
+        return one_line("ParetoFront", f"{len(self.points)} non-dominated of {self.feasible:,} feasible designs",
+                        {"objectives": objectives})
+
+    def _repr_html_(self) -> str:
+        return html_table([p.row() for p in self.points], repr(self))
+
 
 @dataclass
+class Relaxation:
+    """A limit to relax so that a design becomes feasible (:func:`axisopt.search.relax.rank_relaxations`)."""
+
+    key: str  # where it sits in the problem file, e.g. 'limits.max_cost', 'limits.margins.critical_speed'
+    label: str
+    unit: str  # display unit ('' for a margin)
+    value: float  # the limit now (display units)
+    relaxed_to: float  # the value the design reaches: the limit relaxed to it makes the design meet it
+    change: float  # relative change of the limit (0.25: 25 %)
+    design_rank: int  # the closest design (Infeasibility.closest rank) it frees
+    design: object = field(default=None, repr=False, compare=False)  # that Candidate
+    together: bool = False  # the design needs other limits relaxed too (the other Relaxations)
+    below_vendor_rule: bool = False  # a check's margin relaxed below 1: the vendor's own rule would not hold
+
+    def to_dict(self) -> dict:
+        d = asdict(self)
+        d.pop("design")
+        d["parts"] = self.design.parts() if self.design is not None else None
+        d["mounting"] = self.design.mounting if self.design is not None else None
+        return {k: _clean(v) for k, v in d.items()}
+
+
+@dataclass(repr=False)
 class Infeasibility:
     """Why no combination meets the limits."""
 
     unmeetable: list  # [(limit name, best achievable value, limit value, unit)] met by no combination
     closest: list  # list[Candidate] with .misses filled
+    # what to relax: list[Relaxation], smallest change first, all for one design (search.relax); the closest
+    # designs left out because they break a compatibility rule: [(rank, [rules])]; and when every closest
+    # design breaks one, the rules the proposed design breaks (relaxing the limits is then not enough)
+    relax: list = field(default_factory=list)
+    not_relaxable: list = field(default_factory=list)
+    relax_blocked_by: list = field(default_factory=list)
 
     def to_dict(self) -> dict:
         return {"unmeetable": [{"limit": n, "best_achievable": _clean(b), "limit_value": _clean(v), "unit": u}
                                for n, b, v, u in self.unmeetable],
-                "closest": [c.to_dict() for c in self.closest]}
+                "closest": [c.to_dict() for c in self.closest],
+                "relax": [r.to_dict() for r in self.relax],
+                "not_relaxable": [{"rank": r, "breaks": list(k)} for r, k in self.not_relaxable],
+                "relax_blocked_by": list(self.relax_blocked_by)}
+
+    def to_frame(self):
+        """pandas DataFrame of the closest designs, with ``miss <limit> [%]`` per missed limit."""
+        return frame([c.row() for c in self.closest])
+
+    def __repr__(self) -> str:
+        unmet = {n: f"limit {fmt(v, u)}, best {fmt(b, u)}" for n, b, v, u in self.unmeetable}
+        return one_line("Infeasibility", f"{len(self.unmeetable)} limits no combination meets" if unmet else
+                        "every limit met by some combination, not all together", unmet)
 
 
-@dataclass
+@dataclass(repr=False)
 class SolveResult:
     """The answer of :func:`axisopt.search.solve`.
 
@@ -165,6 +252,60 @@ class SolveResult:
             "infeasibility": self.infeasibility.to_dict() if self.infeasibility else None,
             "pareto": self.pareto.to_dict() if self.pareto else None,
         }
+
+    def designs(self) -> list:
+        """The designs shown: the Pareto front's points, else best and runners-up, else (infeasible) the
+        closest designs."""
+        if self.pareto is not None:
+            return list(self.pareto.points)
+        if self.best is not None:
+            return [self.best] + list(self.runners_up)
+        return list(self.infeasibility.closest) if self.infeasibility is not None else []
+
+    def to_frame(self):
+        """pandas DataFrame, one row per design of :meth:`designs` (units in the column names: ``objective
+        [N/um]``, ``min_stiffness [N/um]``, ``cost [EUR]`` ...; the closest designs of an infeasible problem
+        with ``miss <limit> [%]``)."""
+        unit = None if self.pareto is not None or self.best is None else self.objective_unit
+        return frame([c.row(unit) for c in self.designs()])
+
+    def __repr__(self) -> str:
+        fields = {}
+        head = f"{self.status}, {self.problem!r}"
+        if self.pareto is not None:
+            fields["Pareto front"] = f"{len(self.pareto)} designs of {self.pareto.feasible:,} feasible"
+        elif self.best is not None:
+            b = self.best
+            fields[self.objective_label] = fmt(b.objective, self.objective_unit if self.objective_unit != "-"
+                                               else "")
+            fields["best"] = f"{b.mounting} {' / '.join(b.parts().values())}, preload {fmt(b.nut_preload, 'N')}"
+            fields["min stiffness"] = fmt(b.min_stiffness, "N/um")
+            fields["1st frequency"] = fmt(b.min_frequency, "Hz")
+            fields["cost"] = fmt(b.cost, "EUR")
+            fields["designs"] = 1 + len(self.runners_up)
+        elif self.infeasibility is not None:
+            fields["unmeetable"] = ", ".join(n for n, *_ in self.infeasibility.unmeetable) or "none alone"
+            rel = self.infeasibility.relax
+            if rel:
+                shown = [f"{r.key} {'+' if r.relaxed_to > r.value else '-'}{fmt(100 * r.change)} %" for r in rel]
+                fields["relax"] = ", ".join(shown[:3]) + (f" and {len(shown) - 3} more" if len(shown) > 3 else "")
+            c = self.infeasibility.closest[0] if self.infeasibility.closest else None
+            if c is not None:
+                miss = [f"{k} by {fmt(100 * v)} %" for k, v in c.misses.items()]
+                fields["closest design misses"] = ", ".join(miss[:3]) + (f" and {len(miss) - 3} more"
+                                                                         if len(miss) > 3 else "")
+        if self.message and self.status != "optimal":
+            fields["note"] = self.message
+        fields["proven"] = bool(self.certificate.proven)
+        fields["time"] = f"{self.time:.2f} s"
+        return one_line("SolveResult", head, fields)
+
+    def _repr_html_(self) -> str:
+        head = repr(self)
+        return html_fields({"status": self.status, "problem": self.problem, "objective": self.objective_label,
+                            "method": self.method, "proven": self.certificate.proven,
+                            "time [s]": round(self.time, 2)}, "SolveResult") + \
+            html_table([c.row(None if self.best is None else self.objective_unit) for c in self.designs()], head)
 
 
 def _clean(v):

@@ -39,9 +39,9 @@ import numpy as np
 from .. import model
 from ..errors import InputError
 from .bonmin import _slot_params
-from .core import _feasible_at, make_candidate
+from .core import _feasible_at, bound_order_search, make_candidate
 from .result import Certificate, SolveResult
-from .space import N_PER_UM, respond
+from .space import N_PER_UM, STIFFNESS_OUTPUTS, respond
 
 GAP = 1e-5  # SCIP's relative gap limit (limits/gap)
 MAX_TERMS = 40  # a larger SCIP expression becomes an auxiliary variable
@@ -49,10 +49,13 @@ SAMPLES = 64  # random integer points (fixed seed) that set the scale of each au
 # Dual reductions (fixing a variable because the objective prefers one side) cut the optimum off the teaching
 # problem (110.09 -> "optimal" 102.95 N/um; SCIP 10, the epigraph-with-comparisons model); off, it is right.
 SCIP_PARAMS = {"misc/allowstrongdualreds": False, "misc/allowweakdualreds": False}
+CROSS_CHECK_REL = 1e-4  # a design better than SCIP's proven optimum by more than this contradicts the proof
 BRANCH_PRIORITY = (3, 2, 1)  # nut, bearing, guide-and-drive binaries
 INSTALL = "pip install 'axisopt[scip]'"
 
 _SLOTS = ("nut", "bearing", "guide")
+PAIR_CHUNK = 20000  # (nut, guide) pairs per model evaluation of the carriage's limits
+_PAIR_KEYS = ("margin_guide_static", "margin_guide_life", "margin_nut_static")
 _P = 8  # dependency bit of the preload (slots: 1, 2, 4; nut shifts: 16)
 
 
@@ -366,6 +369,7 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
     # limits on one slot: remove the parts that miss them (a constant limit that fails: nothing is feasible)
     allowed = {s: np.ones(n, dtype=bool) for s, n in zip(_SLOTS, (N, B, G))}
     general = []
+    pair_limits = []
     # their values from the model itself (numpy, flat layout, as the exhaustive search evaluates them): a part
     # exactly at a limit must pass or fail as it does there, not as the translation's rounding has it
     K = N + B + G
@@ -387,8 +391,13 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
                         return None, None, None, f"{c.label} fails for every combination"
                 else:
                     allowed[slot] &= ok
+            elif c.key in _PAIR_KEYS and tr.g.dep[node] == 5:  # the carriage: the nut's mass and the guide
+                pair_limits.append((ci, c, j))
             else:
                 general.append((c, node))
+    # the carriage's limits depend on the nut (its mass) and the guide alone: evaluated on every pair with the
+    # model (as the exhaustive search does) and failing pairs cut off linearly, one cut per nut
+    forbidden = _failing_pairs(space, mounting, pair_limits, N, G) if pair_limits else np.zeros((N, G), bool)
     for s in _SLOTS:
         if not allowed[s].any():
             return None, None, None, f"no {s} meets the limits that depend on the {s} alone"
@@ -399,9 +408,13 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
     m.addCons(P <= ps.quicksum(float(v) * zi for v, zi in zip(hi_n, z["nut"])), name="preload_hi")
     for n_i, b_i in zip(*np.nonzero(~space.fits)):
         m.addCons(z["nut"][n_i] + z["bearing"][b_i] <= 1)
+    for n_i in np.nonzero(forbidden.any(axis=1) & allowed["nut"])[0]:
+        bad_g = [z["guide"][g_i] for g_i in np.nonzero(forbidden[n_i] & allowed["guide"])[0]]
+        if bad_g:  # one guide is chosen: this equals the pair cuts z_n + z_g <= 1
+            m.addCons(z["nut"][n_i] + ps.quicksum(bad_g) <= 1, name=f"pair_nut{n_i}")
     t = [m.addVar(f"t{k}", lb=None) for k in range(nt)]
     for k, (key, _w) in enumerate(objective.terms):
-        unit = N_PER_UM if key == "k_total" else 1.0
+        unit = N_PER_UM if key in STIFFNESS_OUTPUTS else 1.0
         for j, node in enumerate(graph.outputs[k]):
             m.addCons(t[k] - (1.0 / unit) * tr.expr(node) <= 0, name=f"epi{k}_{j}")
     for c, node in general:
@@ -414,6 +427,24 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
     m.setObjective(ps.quicksum(wt * t[k] for k, (_key, wt) in enumerate(objective.terms)), "maximize")
     info = {"aux": tr.n_aux, "binaries": tr.n_binary, "parts": {s: int(allowed[s].sum()) for s in _SLOTS}}
     return m, z, P, info
+
+
+def _failing_pairs(space, mounting, pair_limits, N, G) -> np.ndarray:
+    """(N, G) mask of the (nut, guide-and-drive) pairs that miss a carriage limit (bearing 0 and the nut's
+    lowest preload stand in: these limits do not depend on them)."""
+    n_idx = np.repeat(np.arange(N), G)
+    g_idx = np.tile(np.arange(G), N)
+    x = space.positions(mounting)[-1:]
+    bad = np.zeros(N * G, dtype=bool)
+    for lo in range(0, N * G, PAIR_CHUNK):
+        sl = slice(lo, min(N * G, lo + PAIR_CHUNK))
+        k = sl.stop - sl.start
+        out = respond(space.params_flat(mounting, n_idx[sl], np.zeros(k, dtype=int), g_idx[sl]), x, mounting,
+                      np.asarray(space.preload_lo, float)[n_idx[sl]][:, None], chain=False)
+        for _ci, c, _j in pair_limits:
+            v = np.broadcast_to(np.asarray(out[c.key], dtype=float).reshape(-1), (k,))
+            bad[sl] |= ~np.asarray(c.ok(v), dtype=bool)
+    return bad.reshape(N, G)
 
 
 def _recover(space, mi, z, P, m, constraints):
@@ -467,6 +498,30 @@ def _c_stderr_to_file():
         tmp.seek(0)
         text = tmp.read().decode("utf-8", "replace").splitlines()
         lines.extend(dict.fromkeys(t.strip() for t in text if t.strip()))
+
+
+def _contradiction(space, constraints, objective, best) -> str:
+    """SCIP's proof against a design the project's own search finds (re-evaluated by the model): '' when none
+    contradicts it, else why it is wrong.
+
+    SCIP's LP relaxation of this model can be numerically wrong: on ``highspeed_problem.yaml`` (stage 2,
+    fixed-supported) it declares infeasible even the single combination whose parts and preload are all fixed
+    at the default method's optimum, a point that SCIP's own ``checkSol`` accepts (it stops at "unresolved
+    numerical troubles in LP ... using pseudo solution instead" and cuts the node off).  Such a proof is never
+    passed on: a design that meets every limit and beats SCIP's answer turns its status into a failure."""
+    ex, _info = bound_order_search(space, constraints, objective, top=1)
+    fin = np.isfinite(ex.objective)
+    if not fin.any():
+        return ""
+    j = int(np.argmax(np.where(fin, ex.objective, -np.inf)))
+    j_ref = float(ex.objective[j])
+    if best is not None and j_ref <= best.objective + CROSS_CHECK_REL * max(abs(best.objective), 1e-12):
+        return ""
+    ref = make_candidate(space, int(ex.idx[j]), float(ex.preload[j]), objective)
+    claim = "no design meets the limits" if best is None else f"the optimum is {best.objective:.6g}"
+    return (f"SCIP proved that {claim}, but {ref.mounting} {ref.nut} + {ref.bearing} + {ref.guide} at preload "
+            f"{ref.nut_preload:.1f} N meets every limit on the model with objective {j_ref:.6g}: SCIP's proof is "
+            f"wrong on this problem (numerical trouble in its LP relaxation); no proven answer")
 
 
 def solve_scip(problem, space, constraints, objective, *, time_limit: float = 100.0, top: int = 1,
@@ -545,6 +600,14 @@ def solve_scip(problem, space, constraints, objective, *, time_limit: float = 10
         status = "infeasible"
     else:
         status = "optimal"
+    if status in ("optimal", "infeasible"):
+        wrong = _contradiction(space, constraints, objective, best)
+        if wrong:
+            status = "solver_failed"
+            notes.append(wrong)
+            statuses.append("proof contradicted by a feasible design")
+        else:
+            notes.append("proof cross-checked against the default method's best design: consistent")
     gap = max(gaps) if gaps else (0.0 if status in ("optimal", "infeasible") else float("nan"))
     cert = Certificate(combinations=space.size, feasible=None, pruned_by_bound=0, exact_evaluations=0,
                        nlps_solved=solves, nlp_failures=int(failed), gap=gap,

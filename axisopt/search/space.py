@@ -39,7 +39,8 @@ from ..units import N_PER_UM
 # How an output moves with the nut preload (+1, -1, CONVEX; 0 independent): declared in model.limits.
 PRELOAD_DIRECTION = {**OUTPUT_PRELOAD, **{f"margin_{c.name}": c.preload for c in CHECK_TABLE if c.preload}}
 GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a convex limit
-PROFILE = ("k_total", "f1")
+PROFILE = ("k_total", "f1", "k_tool")
+STIFFNESS_OUTPUTS = ("k_total", "k_tool")  # shown and scaled in N/um
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
 BISECTION_STEPS = 52
 SEARCH_POINTS = 64  # k-ary threshold search (default method): most preloads tried per round in one evaluation
@@ -63,7 +64,10 @@ GUIDE_BEST = {"normal_rigidity": np.nanmax, "tangential_rigidity": np.nanmax, "f
               "friction_coefficient": np.nanmin, "friction_viscous": np.nanmin, "damping": np.nanmax,
               "block_mass": np.nanmin,
               "rail_mass_per_length": np.nanmin, "block_price": np.nanmin, "rail_price_per_length": np.nanmin,
-              "dynamic_load_rating": np.nanmax, "preload": np.nanmin}
+              "dynamic_load_rating": np.nanmax, "preload": np.nanmin,
+              # carriage (issue 25): a higher static or moment rating never loads a block more
+              "static_load_rating": np.nanmax, "moment_roll": np.nanmax, "moment_pitch": np.nanmax,
+              "moment_yaw": np.nanmax}
 
 
 @dataclass(frozen=True)
@@ -174,7 +178,7 @@ class ObjectiveSpec:
         total = 0.0
         for key, w in self.terms:
             v = min_last(out[key])
-            total = total + w * (v / N_PER_UM if key == "k_total" else v)
+            total = total + w * (v / N_PER_UM if key in STIFFNESS_OUTPUTS else v)
         return total
 
 
@@ -183,6 +187,8 @@ def objective_spec(kind: str, problem: Problem | None = None) -> ObjectiveSpec:
         return ObjectiveSpec((("k_total", 1.0),), "minimum axial stiffness", "N/um")
     if kind == "frequency":
         return ObjectiveSpec((("f1", 1.0),), "minimum first natural frequency", "Hz")
+    if kind == "tool_stiffness":
+        return ObjectiveSpec((("k_tool", 1.0),), "minimum stiffness at the tool", "N/um")
     if kind == "weighted":
         ob = problem.objective
         scale = dict(ob.scale)
@@ -205,7 +211,7 @@ def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = Tru
 DRIVE_KEYS = frozenset({"cost", "inertia_ratio"} | {f"margin_{c}" for c in model.DRIVE_CHECKS})
 # Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain); the motor's
 # inertia enters only the axial-torsional modes, which no limit or objective reads.
-COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1"})
+COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1", "k_tool"})
 
 
 def respond_drive(p, preload) -> dict:

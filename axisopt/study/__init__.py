@@ -9,6 +9,9 @@
 
 from __future__ import annotations
 
+import sys
+import types
+
 from .run import Progress, RunSummary, run_study, solve_case
 from .spec import Case, Study, Sweep, apply_overrides, build_problem, load_study
 from .store import OK_STATUSES, CaseStore
@@ -16,3 +19,17 @@ from .table import results_table, write_outputs
 
 __all__ = ["load_study", "run_study", "results_table", "write_outputs", "Study", "Sweep", "Case", "Progress",
            "RunSummary", "CaseStore", "solve_case", "build_problem", "apply_overrides", "OK_STATUSES"]
+
+
+class _CallablePackage(types.ModuleType):
+    """``axisopt.study`` names both this package and the notebook function that runs a study
+    (:func:`axisopt.api.study`): once the package is imported it is the attribute, so the package itself runs a
+    study when called, ``axisopt.study("problems/studies/teaching_random.yaml", "out")``."""
+
+    def __call__(self, spec, out=None, *, workers: int | None = 0, resume: bool = False, scheduler=None):
+        from .result import run_spec
+
+        return run_spec(spec, out, workers=workers, resume=resume, scheduler=scheduler)
+
+
+sys.modules[__name__].__class__ = _CallablePackage

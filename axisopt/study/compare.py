@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..display import fmt, html_table, one_line
 from ..errors import InputError
 from ..model import CHECKS, Evaluation, evaluate
 from ..report import N_PER_UM, RPM, drive_dict, evaluation_dict
@@ -31,6 +32,73 @@ class Compared:
     @property
     def ok(self) -> bool:
         return self.evaluation is not None
+
+
+@dataclass(repr=False)
+class Comparison:
+    """Designs side by side (:func:`compare`): ``items`` one :class:`Compared` each, in argument order."""
+
+    items: list
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+    def __iter__(self):
+        return iter(self.items)
+
+    def __getitem__(self, i):
+        return self.items[i]
+
+    def text(self) -> str:
+        """The table ``axisopt compare`` prints."""
+        return compare_table(self.items)
+
+    def to_dict(self) -> dict:
+        return compare_dict(self.items)
+
+    def to_frame(self):
+        """pandas DataFrame, one row per design (the CSV's columns: units in the names, e.g.
+        ``min_stiffness [N/um]``, each check's margin, available and needed)."""
+        import pandas as pd
+
+        return pd.DataFrame(compare_rows(self.items))
+
+    def __repr__(self) -> str:
+        cells = []
+        for c in self.items:
+            e = c.evaluation
+            if e is None:
+                cells.append(f"{c.label}: {c.solve['status']}")
+                continue
+            cells.append(f"{c.label}: {fmt(e.minimum('k_total')[0] / N_PER_UM, 'N/um')}, "
+                         f"{fmt(e.minimum('f1')[0], 'Hz')}, {fmt(e['cost'], 'EUR')}")
+        return one_line("Comparison", f"{len(self.items)} designs", {"": " | ".join(cells)})
+
+    def _repr_html_(self) -> str:
+        keys = ("label", "kind", "mounting", "min_stiffness [N/um]", "weakest_link", "min_frequency [Hz]",
+                "drag_torque [N.m]", "total_mass [kg]", "cost [EUR]", "all_checks_pass")
+        return html_table(compare_rows(self.items), f"Comparison of {len(self.items)} designs", columns=keys)
+
+
+def compare(files, method: str = "default") -> Comparison:
+    """Compare designs: each of ``files`` a design or problem YAML path (a problem is solved to its best
+    design with ``method``) or a :class:`axisopt.design.Design`."""
+    from ..design import Design
+
+    items, paths = [], []
+    for f in files:
+        if isinstance(f, Design):
+            items.append(Compared(f.name, "<Design>", "design", evaluate(f)))
+        else:
+            items.append(None)
+            paths.append(f)
+    loaded = iter(load_compared(paths, method) if paths else [])
+    items = [c if c is not None else next(loaded) for c in items]
+    labels = [c.label for c in items]
+    for i, c in enumerate(items):  # two with one name: number them
+        if labels.count(c.label) > 1:
+            c.label = f"{c.label} [{i + 1}]"
+    return Comparison(items)
 
 
 def file_kind(path) -> str:
@@ -231,10 +299,11 @@ def compare_rows(items) -> list:
 def write_compare_csv(items, path) -> None:
     import pandas as pd
 
-    from ..fileio import atomic_file
+    from ..fileio import csv_safe, open_output
 
-    with atomic_file(path, "w", what="CSV") as fh:
-        pd.DataFrame(compare_rows(items)).to_csv(fh, index=False, float_format="%.10g")
+    with open_output(path, "w", what="CSV") as fh:  # text cells escaped against CSV injection
+        csv_safe(pd.DataFrame(compare_rows(items))).to_csv(fh, index=False, float_format="%.10g")
 
 
-__all__ = ["Compared", "load_compared", "compare_table", "compare_dict", "compare_rows", "write_compare_csv"]
+__all__ = ["Compared", "Comparison", "compare", "load_compared", "compare_table", "compare_dict", "compare_rows",
+           "write_compare_csv"]

@@ -43,14 +43,13 @@ from pathlib import Path
 
 from ..errors import InputError
 from .spec import Case, Study, build_problem, short_message
-from .store import OK_STATUSES, CaseStore, _sweep_temporaries
+from .store import OK_STATUSES, RECORD_VERSION, CaseStore, _sweep_temporaries
 
 # failures of the machinery, not of the case: not a result, solved again by a resumed run
 INFRA_STATUSES = ("worker_died",)
 # how versions before worker_died recorded a case whose worker died twice (status "error")
 _LEGACY_WORKER_DIED = "worker process died twice while solving this case"
 WORKER_DEATHS = 2  # a case whose worker dies this often while solving it is recorded as worker_died
-RECORD_VERSION = 1
 # A solve is not thread-safe (per-process CasADi solver caches): a Dask worker with several threads
 # runs its cases one at a time.
 _SOLVE_LOCK = threading.Lock()

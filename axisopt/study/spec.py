@@ -385,20 +385,24 @@ def _check_base(study: Study, root: Section) -> None:
         try:
             build_problem(ctx, Case("check", -1, ov))
         except InputError as exc:
-            culprit = s or _culprit(ctx, study.sweeps, exc)
+            culprit = _culprit(ctx, [s] if s is not None else study.sweeps, ov)
+            if culprit is None:  # each value is valid on its own: only the combination is invalid, which
+                continue  # is that case's result (recorded as input_error), not a fault of the study file
             value = dict(ov)[culprit.key]
             raise InputError(f"sweep '{culprit.key}' value {json.dumps(value, default=str)}: {short_message(exc)}",
                              source=study.source, where=f"line {culprit.line}") from None
 
 
-def _culprit(ctx, sweeps, exc) -> Sweep:
-    """The first sweep key that fails on its own against the base (else the first key)."""
+def _culprit(ctx, sweeps, overrides) -> Sweep | None:
+    """The first of ``sweeps`` whose value in ``overrides`` fails on its own against the base, or None when
+    every one is valid alone (the combination is what is invalid)."""
+    values = dict(overrides)
     for s in sweeps:
         try:
-            build_problem(ctx, Case("check", -1, ((s.key, s.checked[0]),)))
+            build_problem(ctx, Case("check", -1, ((s.key, values[s.key]),)))
         except InputError:
             return s
-    return sweeps[0]
+    return None
 
 
 def short_message(exc: InputError) -> str:

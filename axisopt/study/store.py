@@ -8,6 +8,28 @@ import re
 from pathlib import Path
 
 OK_STATUSES = ("optimal", "feasible")
+# every status a case record may hold: the solver's (axisopt.search.SolveResult.status) and the runner's
+CASE_STATUSES = OK_STATUSES + ("infeasible", "time_limit", "solver_failed", "input_error", "error", "worker_died")
+RECORD_VERSION = 1
+
+
+def valid_record(rec, case_id: str) -> bool:
+    """A case record read back is trusted only when it is a mapping of this record version for this very
+    case (``case_id``), with a known status and fields of the right type; anything else is solved again."""
+    if not isinstance(rec, dict) or rec.get("version") != RECORD_VERSION or rec.get("case_id") != case_id:
+        return False
+    if rec.get("status") not in CASE_STATUSES or not isinstance(rec.get("reason", ""), str):
+        return False
+    if not isinstance(rec.get("index"), int) or isinstance(rec.get("index"), bool) or \
+            not isinstance(rec.get("inputs"), dict):
+        return False
+    for key in ("objective", "best", "profile", "drive", "checks", "certificate", "pareto"):
+        if rec.get(key) is not None and not isinstance(rec[key], dict):
+            return False
+    if rec["status"] in OK_STATUSES and not isinstance(rec.get("objective"), dict):
+        return False
+    t = rec.get("time_s")
+    return t is None or (isinstance(t, (int, float)) and not isinstance(t, bool))
 
 
 class CaseStore:
@@ -28,18 +50,32 @@ class CaseStore:
         return {p.stem for p in self.dir.glob("*.json")}
 
     def write(self, rec: dict) -> None:
+        import os
+        import stat
+
         from ..fileio import write_text_atomic
 
         # no fsync per case: after a power loss an unreadable case file is treated as missing and solved again
         text = json.dumps(rec, indent=1, allow_nan=False, default=_json_default)
-        write_text_atomic(self.dir / f"{rec['case_id']}.json", text, what="case result", fsync=False)
+        path = self.dir / f"{rec['case_id']}.json"
+        try:  # a FIFO or device planted in the study's own cases directory is removed, never written to
+            if not stat.S_ISREG(os.lstat(path).st_mode) and not path.is_dir():
+                path.unlink()
+        except OSError:
+            pass
+        write_text_atomic(path, text, what="case result", fsync=False)
 
     def read(self, case_id: str) -> dict | None:
+        """The record of ``case_id``, or None when it is missing, unreadable (not a regular file, too large,
+        not JSON) or not a valid record of that case (:func:`valid_record`): such a case is solved again."""
+        from ..errors import InputError
+        from ..fileio import read_input
+
         try:
-            with open(self.dir / f"{case_id}.json", encoding="utf-8") as fh:
-                return json.load(fh)
-        except (OSError, ValueError):
+            rec = json.loads(read_input(self.dir / f"{case_id}.json", "case", what="case result"))
+        except (InputError, ValueError, RecursionError):
             return None
+        return rec if valid_record(rec, case_id) else None
 
 
 # .NAME.PID.RANDOM.tmp of atomic_file (and .CASE.PID.tmp of earlier versions)

@@ -14,7 +14,7 @@ import math
 import re
 from pathlib import Path
 
-from ..fileio import atomic_file, make_output_dir, save_figure, tidy_layout, write_text_atomic
+from ..fileio import atomic_file, csv_safe, make_output_dir, save_figure, tidy_layout, write_text_atomic
 from .store import OK_STATUSES, CaseStore
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
@@ -158,7 +158,7 @@ def write_outputs(study, out_dir, summary=None) -> dict:
     files = {}
     files["csv"] = str(out / "results.csv")
     with atomic_file(files["csv"], "w", what="results table") as fh:
-        df.to_csv(fh, index=False, float_format=CSV_FLOAT)
+        csv_safe(df).to_csv(fh, index=False, float_format=CSV_FLOAT)  # text cells escaped (CSV injection)
     try:
         import pyarrow  # noqa: F401
     except ImportError:

@@ -28,6 +28,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import traceback
 from dataclasses import dataclass, field
@@ -56,7 +57,7 @@ EFFECTS = ("support_condition", "hertz_contact", "backlash", "friction_hysteresi
            "compliance_offset", "added_mass", "stribeck", "viscous", "load_dependent_friction",
            "direction_asymmetry", "preload_loss", "extra_mode")
 
-KINDS = ("design", "problem", "study", "calibration", "data", "catalog", "flags", "compare")
+KINDS = ("design", "problem", "study", "calibration", "data", "catalog", "flags", "compare", "hardening")
 
 
 def shipped(rel: str) -> bytes:
@@ -539,7 +540,10 @@ class Case:
     argv: list
     files: dict = field(default_factory=dict)  # relative path -> bytes
     dirs: tuple = ()  # relative directories to create
-    special: str = ""  # 'fifo:<rel path>' makes a named pipe
+    # ';'-separated: 'fifo:<rel path>' makes a named pipe nobody writes or reads; 'drain:<rel path>' makes one
+    # that a thread of the runner reads to its end (as `cat fifo` would), for output paths
+    special: str = ""
+    drains: dict = field(default_factory=dict, repr=False, compare=False)  # rel path -> _Drain (while running)
 
     def command(self) -> str:
         return "axisopt " + " ".join(_q(a) for a in self.argv)
@@ -551,8 +555,45 @@ class Case:
             p = workdir / rel
             p.parent.mkdir(parents=True, exist_ok=True)
             p.write_bytes(data)
-        if self.special.startswith("fifo:"):
-            os.mkfifo(workdir / self.special[5:])
+        for spec in filter(None, self.special.split(";")):
+            how, _, rel = spec.partition(":")
+            p = workdir / rel
+            p.parent.mkdir(parents=True, exist_ok=True)
+            os.mkfifo(p)
+            if how == "drain":
+                self.drains[rel] = _Drain(p)
+
+    def release(self) -> dict:
+        """What arrived at each drained FIFO (rel path -> bytes); a reader still waiting is released."""
+        got = {rel: d.result() for rel, d in self.drains.items()}
+        self.drains = {}
+        return got
+
+
+class _Drain:
+    """A thread that reads a FIFO to its end."""
+
+    def __init__(self, path: Path):
+        self.path, self.data = path, b""
+        self.t = threading.Thread(target=self._run, daemon=True)
+        self.t.start()
+
+    def _run(self):
+        try:
+            with open(self.path, "rb") as fh:
+                self.data = fh.read()
+        except OSError:
+            pass
+
+    def result(self) -> bytes:
+        self.t.join(2)
+        if self.t.is_alive():  # the command never opened it: open the writing end once so the reader returns
+            try:
+                os.close(os.open(self.path, os.O_WRONLY | os.O_NONBLOCK))
+            except OSError:
+                pass
+            self.t.join(5)
+        return self.data
 
 
 def _q(a: str) -> str:
@@ -918,8 +959,142 @@ def fifo_case() -> Case:
                 special="fifo:fifo.yaml")
 
 
+def _zero_column(data: bytes, column: str) -> bytes:
+    """A CSV (time record or table) with every cell of ``column`` set to 0."""
+    out, j = [], None
+    for line in data.decode("utf-8").splitlines():
+        if line.startswith("#") or not line.strip():
+            out.append(line)
+        elif j is None:
+            j = next(i for i, h in enumerate(line.split(",")) if h.strip().startswith(column))
+            out.append(line)
+        else:
+            cells = line.split(",")
+            cells[j] = "0"
+            out.append(",".join(cells))
+    return ("\n".join(out) + "\n").encode()
+
+
+def _catalog_with(table: str, cell: str) -> bytes:
+    rows = read_csv_rows((CATALOGS / f"{table}.csv").read_bytes())
+    row = list(rows[1])
+    row[rows[0].index("id")] = cell
+    return write_csv_rows([rows[0], row])
+
+
+def _hardening_cases() -> list:
+    """One case per class of issue 24 ("Hardening, second round"): output paths that are FIFOs, '-' or
+    /dev/stdout; inputs that are FIFOs, devices, oversized; a time record without force; a duty cycle faster
+    than the axis; multi-line values; silent acceptances; CSV cells that are formulas."""
+    D, P, S, C = "d.yaml", "p.yaml", "s.yaml", "data.csv"
+    dfiles = {D: shipped("vmc_x_design.yaml")}
+    pfiles = {P: shipped("teaching_problem.yaml")}
+    tx = {C: shipped(DATA_CSV), "t.yaml": shipped(DATA_DESIGN)}
+    est, val = shipped("data/table_x_run_est.csv"), shipped("data/table_x_run_val.csv")
+    runs = {"est.csv": est, "val.csv": val, "t.yaml": shipped(DATA_DESIGN)}
+    st = _tiny_sweep(yaml.safe_load(shipped("studies/teaching_random.yaml")), "teaching_random.yaml", True)
+    sfiles = {S: dump_yaml(st)}
+    quiet_study = ["--workers", "0", "--quiet"]
+    teach = shipped("teaching_problem.yaml")
+    vmc = shipped("vmc_x_design.yaml")
+    fast_move = vmc.replace(b"  table_length: 600 mm\n", b"  table_length: 600 mm\n  duty_cycle:\n"
+                            b"    - {move: 300 mm, speed: 60 m/min}\n    - {move: -300 mm}\n")
+    hard_move = vmc.replace(b"  table_length: 600 mm\n", b"  table_length: 600 mm\n  duty_cycle:\n"
+                            b"    - {move: 300 mm, acceleration: 8 m/s^2}\n    - {move: -300 mm}\n")
+    no_acc = b"\n".join(ln for ln in teach.splitlines() if not ln.strip().startswith(b"acceleration:")) + b"\n"
+    rows = shipped(DATA_CSV).decode().splitlines()
+    rows[5] = rows[5].replace(",", ',"', 1)
+    stray = ("\n".join(rows) + "\n").encode()
+    head, body = rows[0], [r for r in rows[1:] if r and not r.startswith("#")]
+    many = ("\n".join([head] + body * (50_001 // len(body) + 1)) + "\n").encode()
+    together = (b"name: together\nbase: p.yaml\ncombine: product\nsweep:\n"
+                b"  continuous.nut_preload.min: [100 N, 5 kN]\n  continuous.nut_preload.max: [1 kN, 10 kN]\n")
+    cases = [
+        # 1. outputs: FIFOs (a reader drains them), '-', /dev/stdout
+        Case("hardening", "parts --csv to a FIFO", ["parts", "screws", "--csv", "o.fifo"], {}, special="drain:o.fifo"),
+        Case("hardening", "parts --json to a FIFO", ["parts", "--json", "o.fifo"], {}, special="drain:o.fifo"),
+        Case("hardening", "schema --out to a FIFO", ["schema", "design", "--out", "o.fifo"], {},
+             special="drain:o.fifo"),
+        Case("hardening", "evaluate --json to a FIFO", ["evaluate", D, "--json", "o.fifo"], dfiles,
+             special="drain:o.fifo"),
+        Case("hardening", "compare --csv to a FIFO", ["compare", D, D, "--csv", "o.fifo"], dfiles,
+             special="drain:o.fifo"),
+        Case("hardening", "parts --csv -", ["parts", "screws", "--csv", "-"], {}),
+        Case("hardening", "parts --json /dev/stdout", ["parts", "nuts", "--json", "/dev/stdout"], {}),
+        Case("hardening", "schema --out -", ["schema", "problem", "--out", "-"], {}),
+        Case("hardening", "compare --csv - --json -", ["compare", D, D, "--csv", "-", "--json", "-"], dfiles),
+        Case("hardening", "evaluate --plot -", ["evaluate", D, "--plot", "-"], dfiles),
+        Case("hardening", "solve --save-design -", ["solve", P, "--no-sensitivity", "--save-design", "-"], pfiles),
+        Case("hardening", "study --out -", ["study", S, "--out", "-", *quiet_study], sfiles),
+        Case("hardening", "solve --save-design ''", ["solve", P, "--no-sensitivity", "--save-design", ""], pfiles),
+        Case("hardening", "schema --out ''", ["schema", "design", "--out", ""], {}),
+        # 2. inputs that are not regular files, or too large
+        Case("hardening", "diagnose data is a FIFO nobody writes", ["diagnose", "f.csv", "--design", "t.yaml"], tx,
+             special="fifo:f.csv"),
+        Case("hardening", "diagnose validation run is a FIFO", ["diagnose", "est.csv", "v.csv", "--design", "t.yaml"],
+             runs, special="fifo:v.csv"),
+        Case("hardening", "diagnose /dev/zero", ["diagnose", "/dev/zero", "--design", "t.yaml"], tx),
+        Case("hardening", "catalog CSV is a FIFO", ["parts", "--catalogs", "cat"], {}, special="fifo:cat/screws.csv"),
+        Case("hardening", "calibration is a FIFO", ["evaluate", D, "--calibration", "c.yaml"], dfiles,
+             special="fifo:c.yaml"),
+        Case("hardening", "study base is a FIFO", ["study", S, "--out", "out", *quiet_study],
+             {S: b"name: f\nbase: b.yaml\nsweep:\n  axis.stroke: [300 mm]\n"}, special="fifo:b.yaml"),
+        Case("hardening", "diagnose CSV with too many rows", ["diagnose", "m.csv", "--design", "t.yaml"],
+             {"m.csv": many, "t.yaml": shipped(DATA_DESIGN)}),
+        # 3. a time record with all-zero force
+        Case("hardening", "time record with zero force (estimation)",
+             ["diagnose", "z.csv", "val.csv", "--design", "t.yaml"], {**runs, "z.csv": _zero_column(est, "force")}),
+        Case("hardening", "time record with zero force (validation)",
+             ["diagnose", "est.csv", "z.csv", "--design", "t.yaml", "--json", "-"],
+             {**runs, "z.csv": _zero_column(val, "force")}),
+        Case("hardening", "time record with constant position",
+             ["diagnose", "z.csv", "--design", "t.yaml"], {**runs, "z.csv": _zero_column(est, "position")}),
+        # 4. the motion commanded
+        Case("hardening", "duty-cycle move faster than max_speed", ["evaluate", D, "--json", "-"], {D: fast_move}),
+        Case("hardening", "duty-cycle move harder than axis.acceleration", ["evaluate", D, "--json", "-"],
+             {D: hard_move}),
+        Case("hardening", "drive search without acceleration", ["solve", P, "--no-sensitivity"], {P: no_acc}),
+        # 5. errors that were not one line
+        Case("hardening", "YAML value with a newline", ["evaluate", D],
+             {D: vmc.replace(b"  stroke: 800 mm", b'  stroke: "800\\nkg\\n"')}),
+        Case("hardening", "stray quote in a diagnose CSV", ["diagnose", "q.csv", "--design", "t.yaml"],
+             {"q.csv": stray, "t.yaml": shipped(DATA_DESIGN)}),
+        Case("hardening", "study --scheduler ''", ["study", S, "--out", "out", "--scheduler", ""], sfiles),
+        Case("hardening", "value that is a list of quantities", ["evaluate", D],
+             {D: vmc.replace(b"  stroke: 800 mm", b"  stroke: [300 mm, 400 mm]")}),
+        # 6. studies
+        Case("hardening", "sweep invalid only together (product)", ["study", S, "--out", "out", *quiet_study],
+             {S: together, P: teach}),
+        Case("hardening", "study --report into a missing directory",
+             ["study", S, "--out", "out", *quiet_study, "--report", "no/dir/r.html"], sfiles),
+        # 7. silent acceptances
+        Case("hardening", "require with an empty list", ["solve", P, "--no-sensitivity"],
+             {P: teach.replace(b"require: {coupling: [", b"require: {screw: [], coupling: [")}),
+        Case("hardening", "YAML tag on a mapping", ["evaluate", D], {D: vmc.replace(b"axis:\n", b"axis: !custom\n")}),
+        Case("hardening", "!!omap axis", ["evaluate", D],
+             {D: b"name: x\naxis: !!omap\n  - stroke: 800 mm\nparts: {}\n"}),
+        Case("hardening", "problem file name with a newline, --save-design",
+             ["solve", "p\nmotor: X\n.yaml", "--no-sensitivity", "--save-design", "best.yaml"],
+             {"p\nmotor: X\n.yaml": teach}),
+        # 8. CSV cells that are formulas
+        Case("hardening", "user catalog id that is a formula, parts --csv",
+             ["parts", "couplings", "--catalogs", "cat", "--csv", "c.csv"],
+             {"cat/couplings.csv": _catalog_with("couplings", "=HYPERLINK(\"http://x\")")}),
+    ]
+    return cases
+
+
+HARDENING_CASES = _hardening_cases()
+
+
+def hardening_case(ch) -> Case:
+    c = ch.choice(HARDENING_CASES)
+    return Case(c.kind, c.mutation, list(c.argv), dict(c.files), c.dirs, c.special)
+
+
 MAKERS = {"design": design_case, "problem": problem_case, "study": study_case, "calibration": calibration_case,
-          "data": data_case, "catalog": catalog_case, "flags": flags_case, "compare": compare_case}
+          "data": data_case, "catalog": catalog_case, "flags": flags_case, "compare": compare_case,
+          "hardening": hardening_case}
 
 
 def make_case(ch, kind: str | None = None, fast: bool = True) -> Case:
@@ -983,6 +1158,7 @@ class Outcome:
     stderr: str
     seconds: float
     json_files: dict = field(default_factory=dict)  # name -> text of JSON files written
+    drained: dict = field(default_factory=dict)  # FIFO output path -> what its reader received
 
 
 def classify(case: Case, out: Outcome) -> tuple[str, str]:
@@ -1015,6 +1191,9 @@ def classify(case: Case, out: Outcome) -> tuple[str, str]:
             problems += json_problems(out.stdout)
         elif target in out.json_files:
             problems += json_problems(out.json_files[target])
+    for name, text in out.drained.items():
+        if not text.strip():
+            problems.append(f"exit 0 but nothing arrived at the FIFO {name}")
     for name, text in out.json_files.items():
         if name.startswith("out/"):
             problems += [f"{name}: {p}" for p in json_problems(text)]
@@ -1059,7 +1238,7 @@ def collect_json_files(case: Case, workdir: Path) -> dict:
     out = {}
     if "--json" in case.argv:
         i = case.argv.index("--json")
-        if i + 1 < len(case.argv) and case.argv[i + 1] != "-":
+        if i + 1 < len(case.argv) and case.argv[i + 1] != "-" and not case.argv[i + 1].startswith("/dev/"):
             p = workdir / case.argv[i + 1]
             if p.is_file():
                 out[case.argv[i + 1]] = p.read_text(errors="replace")
@@ -1118,6 +1297,9 @@ def run_subprocess(case: Case, workdir: Path, timeout: float = 60.0, python=sys.
     dt = time.perf_counter() - t0
     out = Outcome(rc, so.decode("utf-8", "replace"), se.decode("utf-8", "replace"), dt)
     out.json_files = collect_json_files(case, workdir)
+    out.drained = {rel: data.decode("utf-8", "replace") for rel, data in case.release().items()}
+    if "--json" in case.argv and _json_target(case) in out.drained:
+        out.json_files[_json_target(case)] = out.drained[_json_target(case)]
     return out
 
 

@@ -372,3 +372,21 @@ def test_cli_kinds_are_the_schema_kinds():
     from axisopt.cli.schema import FILE_KINDS
 
     assert FILE_KINDS == KINDS_OF_FILE
+
+
+def test_schema_ids_are_urns_and_a_wrong_unit_reads_well(validators):
+    """Issue 30 item 6: no example domain as $id; an editor shows the quantity's patternErrorMessage (kind,
+    example, units) in place of the 200-character regular expression."""
+    for kind in KINDS_OF_FILE:
+        assert json_schema(kind)["$id"] == f"urn:axisopt:schema:{kind}"
+    data = yaml.safe_load(DESIGN.read_text(encoding="utf-8"))
+    data["axis"]["stroke"] = "800 kg"
+    data["axis"]["moving_mass"] = "-60 kg"
+    errors = {".".join(map(str, e.absolute_path)): e for e in validators["design"].iter_errors(data)}
+    assert set(errors) == {"axis.stroke", "axis.moving_mass"}
+    shown = {k: e.schema["patternErrorMessage"] for k, e in errors.items()}
+    assert shown["axis.stroke"].startswith("expected a number and a unit of length, e.g. 800 mm (units: m, mm,")
+    assert shown["axis.moving_mass"] == "mass must be positive, e.g. 300 kg"
+    assert all(len(m) < 120 and "\\s" not in m for m in shown.values())
+    with pytest.raises(InputError, match="stroke"):  # the loader refuses the same value
+        parse_quantity("800 kg", "length", source="d.yaml", key="axis.stroke")

@@ -1,7 +1,10 @@
+from pathlib import Path
+
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from axisopt import units
 from axisopt.errors import InputError
 from axisopt.units import parse_quantity, split_header, unit_factor
 
@@ -51,3 +54,29 @@ def test_unit_factor_rejects_wrong_dimension():
 @given(st.floats(min_value=1e-6, max_value=1e6, allow_nan=False))
 def test_mm_round_trip(v):
     assert parse_quantity(f"{v!r} mm", "length") == pytest.approx(v * 1e-3, rel=1e-12)
+
+
+@pytest.mark.parametrize("unit,kind", sorted(units.KNOWN))
+def test_known_units_equal_pint(unit, kind):
+    """The table that spares pint's registry holds exactly what pint computes."""
+    assert units._pint_factor(unit, units._normalise(unit), kind) == units.KNOWN[(unit, kind)]
+
+
+def test_temperatures_without_pint_equal_pint():
+    ureg = units._registry()
+    for text in ("20 degC", "-40 degC", "300 K", "0.1 degC"):
+        value, unit = text.split()
+        want = float(ureg.Quantity(float(value), ureg.Unit(unit)).to("kelvin").magnitude)
+        assert units.parse_quantity(text, "temperature") == want
+
+
+def test_reading_a_problem_builds_no_unit_registry():
+    import subprocess
+    import sys
+
+    code = ("import sys; from axisopt.problem import load_problem; load_problem('problems/teaching_problem.yaml'); "
+            "print('pint' in sys.modules)")
+    root = Path(__file__).resolve().parents[2]
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=root,
+                         env={**__import__("os").environ, "PYTHONPATH": str(root)}, check=True)
+    assert out.stdout.strip() == "False"

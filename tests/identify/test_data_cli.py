@@ -297,7 +297,7 @@ def test_calibration_values_must_be_physical(tmp_path, capsys, old, new):
 
 def test_residual_plot_draws_direction_as_categories(tmp_path, monkeypatch):
     # direction is +-1: a category per tick, not a continuous axis from -1 to 1
-    import axisopt.identify.report as rep
+    import axisopt.report.diagnosis as rep
 
     figs = []
     monkeypatch.setattr(rep, "save_figure", lambda fig, path, dpi=90: figs.append(fig))

@@ -7,7 +7,7 @@ import warnings
 import numpy as np
 import pytest
 
-from axisopt.identify.report import _peak
+from axisopt.report.diagnosis import _peak
 
 
 def _single_mode(f, fn=120.0, zeta=0.05):

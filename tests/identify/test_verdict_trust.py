@@ -16,8 +16,8 @@ from test_recovery import BASELINE, frequency_doe, friction_doe, stiffness_doe
 from axisopt.cli import main
 from axisopt.design import load_design
 from axisopt.identify import diagnose, plant_from_design
-from axisopt.identify.report import diagnosis_dict, diagnosis_text
 from axisopt.identify.synth import simulate
+from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 
 DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
 

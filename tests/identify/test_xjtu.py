@@ -9,7 +9,7 @@ import pytest
 
 from axisopt.design import load_design
 from axisopt.identify import diagnose, plant_from_design, read_dataset
-from axisopt.identify.report import diagnosis_dict
+from axisopt.report.diagnosis import diagnosis_dict
 
 DATA = Path(__file__).resolve().parents[2] / "problems" / "data" / "xjtu"
 

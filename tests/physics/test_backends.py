@@ -11,10 +11,23 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from axisopt.physics import MODULES, bearings, checks, damping, dynamics, friction, guides, nut, screw, thermal
+from axisopt.physics import (
+    MODULES,
+    bearings,
+    carriage,
+    checks,
+    damping,
+    dynamics,
+    friction,
+    guides,
+    nut,
+    screw,
+    thermal,
+)
 
 # complex numpy-only FRFs; selector helper (no numbers)
-EXCLUDED = {"dynamic_compliance", "drive_train_compliance", "choose"}
+# carriage.mean_load takes sequences: tests/physics/test_carriage_published.py checks its backends
+EXCLUDED = {"dynamic_compliance", "drive_train_compliance", "choose", "mean_load"}
 SCALE = (0.9, 1.0, 1.1)
 RAD15 = math.radians(15.0)
 
@@ -201,6 +214,27 @@ CASES = [
     case(checks.guide_life_distance, kw=dict(dynamic_load_rating=30e3, load=3e3, load_factor=1.2, roller=0.0)),
     case(checks.guide_life_distance, kw=dict(dynamic_load_rating=30e3, load=3e3, load_factor=1.2, roller=1.0)),
     case(checks.dn_value, kw=dict(diameter=0.032, speed=300.0)),
+    case(carriage.carriage_moments, kw=dict(feed_force=(-4e3, 2e3, 5e3), cross_force=1e3, normal_force=3e3,
+                                            x=(-0.1, 0.0, 0.2), y=0.05, height=0.3)),
+    case(carriage.moment_share, kw=dict(count=(1.0, 2.0, 3.0), spacing=0.4, moment_factor=120.0, per_other=2.0)),
+    case(carriage.block_radial_load, kw=dict(normal_force=3e3, pitch_moment=(-900.0, 400.0, 800.0),
+                                             roll_moment=200.0, n_blocks=4.0, c_pitch=2.0, c_roll=1.5,
+                                             sx=(1.0, -1.0, 1.0), sy=(-1.0, 1.0, 1.0))),
+    case(carriage.block_lateral_load, kw=dict(cross_force=1e3, yaw_moment=(-300.0, 200.0, 500.0), n_blocks=4.0,
+                                              c_yaw=2.0, sx=(1.0, -1.0, 1.0))),
+    case(carriage.equivalent_block_load, kw=dict(radial=(-2e3, 1e3, 3e3), lateral=(500.0, -400.0, 0.0))),
+    case(carriage.corner_block_loads, kw=dict(normal_force=3e3, cross_force=(-1e3, 0.0, 2e3),
+                                              pitch_moment=(-900.0, 400.0, 800.0), roll_moment=200.0,
+                                              yaw_moment=-300.0, n_blocks=4.0, c_pitch=2.0, c_roll=1.5,
+                                              c_yaw=2.0)),
+    case(carriage.max_block_load, kw=dict(normal_force=3e3, cross_force=(-1e3, 0.0, 2e3),
+                                          pitch_moment=(-900.0, 400.0, 800.0), roll_moment=200.0,
+                                          yaw_moment=-300.0, n_blocks=4.0, c_pitch=2.0, c_roll=1.5, c_yaw=2.0)),
+    case(carriage.static_safety, kw=dict(static_load_rating=50e3, load=8e3)),
+    case(carriage.pattern_rocking_stiffness, kw=dict(block_stiffness=5e8, count=(1.0, 2.0, 3.0), spacing=0.4,
+                                                     per_other=2.0, moment_factor=150.0)),
+    case(carriage.rocking_frequency, kw=dict(rocking_stiffness=2e7, inertia=30.0)),
+    case(carriage.box_inertia, kw=dict(mass=500.0, length=0.8, depth=0.3, offset=0.15)),
 ]
 
 

@@ -16,7 +16,8 @@ from axisopt.problem import Objective, Problem, Restrictions
 RPM = 2 * math.pi / 60
 
 
-def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_bearings=4, n_guides=4) -> Catalog:
+def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_bearings=4, n_guides=4,
+                 carriage: bool = False) -> Catalog:
     screws, nuts, bearings, guides = [], [], [], []
     for i in range(n_screws):
         d = rng.choice([20, 25, 32, 40, 50]) * 1e-3
@@ -56,7 +57,14 @@ def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_beari
                        "dynamic_load_rating": 3e4, "static_load_rating": 5e4, "friction_force": rng.uniform(3, 30),
                        "friction_coefficient": 0.003, "friction_viscous": rng.uniform(3, 20), "damping": 3000.0,
                        "block_mass": rng.uniform(0.2, 1.5), "rail_mass_per_length": rng.uniform(2, 6),
-                       "block_price": rng.uniform(50, 200), "rail_price_per_length": rng.uniform(50, 150)})
+                       "block_price": rng.uniform(50, 200), "rail_price_per_length": rng.uniform(50, 150),
+                       "moment_roll": 400.0, "moment_pitch": 300.0, "moment_yaw": 300.0})
+    if carriage:  # guides of several sizes: static and moment ratings that vary, for the carriage's checks
+        for g in guides:
+            c = rng.uniform(8e3, 60e3)
+            g.update(dynamic_load_rating=c, static_load_rating=rng.uniform(1.3, 1.8) * c,
+                     moment_roll=rng.uniform(0.008, 0.02) * c, moment_pitch=rng.uniform(0.006, 0.015) * c,
+                     moment_yaw=rng.uniform(0.006, 0.015) * c)
 
     def df(rows, name):
         d = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]))

@@ -117,3 +117,34 @@ def test_missing_pyscipopt_names_the_extra(monkeypatch):
     p = load_problem(PROBLEMS / "teaching_problem.yaml")
     with pytest.raises(InputError, match=r"pip install 'axisopt\[scip\]'"):
         solve(p, "scip")
+
+
+def test_contradicted_proof_is_detected():
+    """A proof of infeasibility, or of an optimum below a design the search finds, is contradicted (the check
+    that turns SCIP's numerically wrong proofs into a failure)."""
+    from axisopt.search.scip import _contradiction
+    from axisopt.search.space import build_constraints, build_space, objective_spec
+
+    p = load_problem(PROBLEMS / "teaching_problem.yaml")
+    space, cons, spec = build_space(p), build_constraints(p), objective_spec("stiffness")
+    e = solve(p, "exhaustive", top=1, sensitivities=False)
+    assert "no design meets the limits" in _contradiction(space, cons, spec, None)
+    assert _contradiction(space, cons, spec, e.best) == ""
+    from dataclasses import replace
+
+    worse = replace(e.best, objective=0.9 * e.best.objective)
+    assert "SCIP's proof is wrong" in _contradiction(space, cons, spec, worse)
+
+
+@pytest.mark.slow
+def test_highspeed_problem_never_a_wrong_proof():
+    """SCIP's LP relaxation proves the high-speed problem's stage 2 infeasible (57 s, proven) although the default
+    method and exhaustive enumeration solve it (99.37 N/um): the answer is the optimum, a time limit or a failure,
+    never a wrong proven answer."""
+    p = load_problem(PROBLEMS / "highspeed_problem.yaml")
+    s = solve(p, "scip", time_limit=45)
+    assert s.status in ("optimal", "time_limit", "solver_failed"), s.message
+    if s.certificate.proven or s.status == "optimal":
+        assert s.status == "optimal" and s.best.objective == pytest.approx(99.3745, rel=1e-4)
+    if s.status == "solver_failed":
+        assert not s.certificate.proven and "proof is wrong" in s.message

@@ -57,6 +57,33 @@ def test_default_equals_exhaustive_randomized(seed, mode):
         assert c.combinations == e.certificate.combinations == build_space(p).size
 
 
+@pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("mode", ["tool_stiffness", "frequency"])
+def test_default_equals_exhaustive_carriage(seed, mode):
+    """The carriage's checks (guide and nut static safety, guide life under the cutting loads), the tool-stiffness
+    limit and objective, and the rocking modes in the first frequency: the default search equals enumeration."""
+    rng = np.random.default_rng(100 + seed)
+    cat = make_catalog(rng, n_screws=4, nuts_per_screw=3, n_bearings=5, n_guides=8, carriage=True)
+    limits = {"max_cost": float(rng.uniform(4000, 8000)), "max_drag_torque": float(rng.uniform(1.0, 2.5))}
+    if seed % 2:
+        limits["min_tool_stiffness"] = float(rng.uniform(40, 120)) * 1e6
+    axis = dict(cross_load=float(rng.uniform(0, 3000)), normal_load=float(rng.uniform(0, 4000)),
+                tool_height=float(rng.uniform(0.05, 0.4)), tool_offset=float(rng.uniform(0, 0.1)),
+                cg_height=float(rng.uniform(0.05, 0.2)), guide_static_safety=float(rng.uniform(3, 8)),
+                nut_static_safety=float(rng.uniform(2, 6)), orientation=("horizontal", "vertical", "wall")[seed % 3],
+                required_life=float(rng.uniform(1e3, 5e3)) * 3600, table_length=0.6)
+    p = make_problem(cat, mode=mode, limits=limits, **axis)
+    d = solve(p, "default", top=3, sensitivities=False)
+    e = solve(p, "exhaustive", top=3, sensitivities=False)
+    _same(d, e)
+    if d.best is not None:
+        assert d.certificate.proven
+        assert [c.combination for c in d.runners_up] == [c.combination for c in e.runners_up]
+        ev = d.best.design
+        out = model.evaluate(ev).values
+        assert model.passes(out["margin_guide_static"]) and model.passes(out["margin_nut_static"])
+
+
 @pytest.mark.parametrize("seed", [0, 1, 2, 5, 7])
 def test_default_equals_exhaustive_with_drive(seed):
     """Motor and coupling as search choices: the default method equals exhaustive enumeration, on horizontal

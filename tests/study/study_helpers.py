@@ -47,3 +47,8 @@ def kill_group(proc) -> None:
         os.killpg(proc.pid, signal.SIGKILL)
     except ProcessLookupError:
         pass
+
+
+def study_code(df) -> int:
+    """The exit code of a study whose results table is ``df``: 1 when a case has no design, else 0."""
+    return int(bool((~df["status"].isin(["optimal", "feasible"])).any()))

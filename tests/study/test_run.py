@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
-from study_helpers import PYTHON, ROOT, kill_group, stable, write_study
+from study_helpers import PYTHON, ROOT, kill_group, stable, study_code, write_study
 
 from axisopt.cli import main
 from axisopt.errors import InputError
@@ -103,7 +103,7 @@ def test_killed_study_resumes_to_the_uninterrupted_rows(reference, tmp_path):
     assert 2 <= done < 12
     for p in (out / "cases").glob("*.json"):
         json.loads(p.read_text())  # every file written is whole
-    assert main(["study", st.source, "--out", str(out), "--workers", "1", "--quiet", "--resume"]) == 0
+    assert main(["study", st.source, "--out", str(out), "--workers", "1", "--quiet", "--resume"]) == study_code(ref)
     df = results_table(st, out)
     pd.testing.assert_frame_equal(stable(df), stable(ref))
     assert len(list((out / "cases").glob("*.json"))) == 12 and not list((out / "cases").glob(".*"))

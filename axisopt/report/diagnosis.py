@@ -1,4 +1,5 @@
-"""Diagnosis output: JSON-ready dict, console text, Markdown report with residual plots (Agg).
+"""Diagnosis output (:class:`axisopt.identify.diagnose.Diagnosis`): JSON-ready dict, console text, Markdown
+report with residual plots (Agg).
 Nothing here prints."""
 
 from __future__ import annotations
@@ -9,32 +10,11 @@ from pathlib import Path
 import numpy as np
 
 from ..fileio import tidy_layout
-from ..report import save_figure, write_text_atomic
-from ..report.evaluation import fit_lines
-from .diagnose import _split, plausibility, residual_table
-from .measure import Y_UNIT
-
-
-def _pv(p, v, s):
-    unit = "" if p.unit in ("", "-") else f" {p.unit}"
-    sd = f" ± {p.show(s):.3g}" if math.isfinite(s) else ""
-    return f"{p.show(v):.4g}{sd}{unit}"
-
-
-def _params(res, names=None):
-    sig = dict(zip([p.name for p in res.params], res.sigma))
-    return [
-        {
-            "name": p.name,
-            "label": p.label,
-            "value": p.show(v),
-            "sigma": p.show(sig[p.name]),
-            "unit": p.unit,
-            "text": _pv(p, v, sig[p.name]),
-        }
-        for p, v in zip(res.params, res.theta)
-        if names is None or p.name in names
-    ]
+from ..identify.diagnose import param_rows, plausibility, residual_table
+from ..identify.diagnose import split_by_observation as _split
+from ..identify.measure import Y_UNIT
+from . import save_figure, write_text_atomic
+from .evaluation import fit_lines
 
 
 def _rmse_units(diag, pred):
@@ -64,7 +44,7 @@ def diagnosis_dict(diag) -> dict:
             for o, s in zip(diag.obs, diag.noise)
         ],
         "baseline": {
-            "parameters": _params(diag.baseline),
+            "parameters": param_rows(diag.baseline),
             "status": diag.baseline.status,
             "plausibility": _flags(diag.baseline),
         },
@@ -81,7 +61,7 @@ def diagnosis_dict(diag) -> dict:
                     "effect": c.effect.name,
                     "dBIC": c.dbic,
                     "cv_gain_percent": c.cv_gain,
-                    "parameters": _params(c.fit, c.names),
+                    "parameters": param_rows(c.fit, c.names),
                 }
                 for c in rnd
             ]
@@ -93,18 +73,29 @@ def diagnosis_dict(diag) -> dict:
         "holdout_rmse_final": diag.cv_final,
         "gain_percent": diag.gain,
         "holdout_rmse_units": [
-            {"file": o.dataset.source, "baseline": b, "final": a, "unit": u}
-            for (o, b, u), (_, a, _) in zip(
-                _rmse_units(diag, diag.holdout_baseline), _rmse_units(diag, diag.holdout_final)
+            {"file": o.dataset.source, "baseline": b, "final": a, "unit": u, "gain_percent": g}
+            for (o, b, u), (_, a, _), g in zip(
+                _rmse_units(diag, diag.holdout_baseline), _rmse_units(diag, diag.holdout_final),
+                _file_gains(diag)
             )
         ],
-        "final": {"parameters": _params(diag.final), "status": diag.final.status,
-                  "plausibility": plausibility(diag.final, [])},
+        "final": {"parameters": param_rows(diag.final), "status": diag.final.status,
+                  "plausibility": plausibility(diag.final, []) + unidentifiable(diag.final)},
         "rejected": [
             {"round": rnd, "effect": c.effect.name, "dBIC": c.dbic, "would_need": bad,
-             "parameters": _params(c.fit, c.names)}
+             "parameters": param_rows(c.fit, c.names)}
             for rnd, c, bad in diag.rejected
         ],
+        "not_accepted": [
+            {"round": i, "effect": c.effect.name, "dBIC": c.dbic, "cv_gain_percent": c.cv_gain, "reason": c.reason}
+            for i, rnd in enumerate(diag.rounds, start=1) for c in rnd if c.reason
+        ],
+        "pairs": [
+            {"round": e["round"], "effects": [e["a"].effect.name, e["b"].effect.name], "dBIC": e["dbic"],
+             "cv_gain_percent": e["gain"], "accepted": not e["reason"], "reason": e["reason"]}
+            for e in diag.pairs
+        ],
+        "unexplained": unexplained_dicts(diag),
         "other_explanations": other_explanations(diag),
         "frf_modes": frf_modes(diag),
         "quantity": quantity_notes(diag),
@@ -119,12 +110,14 @@ def diagnosis_dict(diag) -> dict:
                 # the numbers of the final joint fit (the one --save-calibration writes), not of the round
                 # in which the effect was accepted
                 "finding": a.effect.describe(diag.final.values(), diag.plant),
-                "parameters": _params(diag.final, names),
+                "parameters": param_rows(diag.final, names),
                 "dBIC": a.dbic,
                 "cv_rmse_before": a.cv_before,
                 "cv_rmse_after": a.cv_after,
                 "gain_percent": a.gain,
-                "plausibility": plausibility(diag.final, [], names=names) + _undetermined(diag.final, names),
+                "together_with": a.together or None,
+                "plausibility": plausibility(diag.final, [], names=names) + _undetermined(diag.final, names)
+                + unidentifiable(diag.final, names),
                 "runner_up": None
                 if r is None
                 else {"effect": r.effect.name, "dBIC": r.dbic, "margin": r.dbic - a.dbic},
@@ -133,8 +126,49 @@ def diagnosis_dict(diag) -> dict:
     return d
 
 
+def unexplained_dicts(diag) -> list:
+    """Per dataset: is structure left in the final residual, and its signatures in words."""
+    from ..identify.diagnose import display_value, table_signature
+
+    out = []
+    for u in diag.unexplained:
+        sigs = []
+        for p in u.remaining:
+            what, causes, measure = table_signature(p, display_value)
+            sigs.append({"factor": p.kind, "share": p.share, "log10_p": p.log10_p, "signature": what,
+                         "causes": causes, "to_separate": measure})
+        out.append({"file": u.source, "test": u.kind, "rms_over_noise": u.rms, "remaining": bool(sigs),
+                    "signatures": sigs})
+    return out
+
+
+def _why_none(d) -> str:
+    first = [c for c in d["not_accepted"] if c["round"] == 1][:3]
+    if not first:
+        return "no candidate effect applies to these data"
+    return "; ".join(f"{c['effect']}: {c['reason']}" for c in first)
+
+
+def _file_gains(diag) -> list:
+    """Held-out gain of each file [%]: the noise-weighted held-out RMSE of its own rows, baseline against final
+    (the pooled gain weighs every file together)."""
+    out = []
+    for o, pb, pf in zip(diag.obs, _split(diag.obs, diag.holdout_baseline), _split(diag.obs, diag.holdout_final)):
+        rb = float(np.sqrt(np.mean(((pb - o.y) * o.w) ** 2)))
+        rf = float(np.sqrt(np.mean(((pf - o.y) * o.w) ** 2)))
+        out.append(100.0 * (1.0 - rf / rb) if rb > 0 else 0.0)
+    return out
+
+
 def _flags(res):
-    return plausibility(res, [])
+    return plausibility(res, []) + unidentifiable(res)
+
+
+def unidentifiable(res, names=None) -> list:
+    """Parameters the data do not fix (infinite variance: a zero or dependent Jacobian column)."""
+    return [f"{p.name} is not identifiable from these data: the fit does not change with it (it is reported "
+            "at the value the search stopped at, without an uncertainty)"
+            for p, s in zip(res.params, res.sigma) if not math.isfinite(s) and (names is None or p.name in names)]
 
 
 def _undetermined(res, names) -> list:
@@ -237,7 +271,7 @@ def frf_modes(diag) -> list:
 def data_notes(o) -> list:
     """What looks odd in the measured column itself: three or more consecutive identical readings (a held
     or copied value) are named with their lines; they are kept in the fit."""
-    from .measure import MEASURED_COLUMNS
+    from ..identify.measure import MEASURED_COLUMNS
 
     out = []
     for col in MEASURED_COLUMNS.get(o.kind, ()):
@@ -309,13 +343,22 @@ def diagnosis_text(diag) -> str:
             cv = f"  held-out gain {c['cv_gain_percent']:.0f} %" if c["cv_gain_percent"] is not None else ""
             ps = ", ".join(f"{p['name']} = {p['text']}" for p in c["parameters"])
             L.append(f"  {c['effect']:24s} {c['dBIC']:9.1f}{cv}   {ps}")
-    for r in d["rejected"]:
-        L.append(f"not accepted (round {r['round']}): {r['effect']} (dBIC {r['dBIC']:.1f}) would need "
-                 + "; ".join(r["would_need"]))
+    for r in d["not_accepted"]:
+        if r["dBIC"] < -10:  # the others all fail on BIC, said once below
+            L.append(f"not accepted (round {r['round']}): {r['effect']} (dBIC {r['dBIC']:.1f}): {r['reason']}")
+    rest = sum(1 for r in d["not_accepted"] if r["dBIC"] >= -10)
+    if rest:
+        L.append(f"not accepted: {rest} more candidate{'s' if rest > 1 else ''} with dBIC not below -10")
+    for e in d["pairs"]:
+        if e["accepted"] or e["dBIC"] < -10:
+            g = f", held-out gain {e['cv_gain_percent']:.0f} %" if e["cv_gain_percent"] is not None else ""
+            L.append(f"pair (round {e['round']}): {' + '.join(e['effects'])} (dBIC {e['dBIC']:.1f}{g}): "
+                     + ("accepted, neither passes alone" if e["accepted"] else e["reason"]))
     L.append(f"verdict: {d['verdict']}" + ("  (values of the final joint fit, as saved by --save-calibration)"
-                                             if d["accepted"] else ""))
+                                             if d["accepted"] else f" -- {_why_none(d)}"))
     for a in d["accepted"]:
-        L.append(f"  {a['effect']}: {a['finding']}")
+        tog = f" (together with {a['together_with']}: neither passes alone)" if a["together_with"] else ""
+        L.append(f"  {a['effect']}: {a['finding']}{tog}")
         for p in a["parameters"]:
             L.append(f"    {ptext(p)}  ({p['label']})")
         for f in a["plausibility"]:
@@ -345,10 +388,24 @@ def diagnosis_text(diag) -> str:
         if m["extra_mode_Hz"] is not None:
             L.append(f"  extra mode {m['extra_mode_Hz']:.1f} Hz, damping {100 * m['extra_mode_damping']:.2f} % "
                      "(all positions)")
+    for u in d["unexplained"]:
+        name = Path(u["file"]).name
+        if u["remaining"]:
+            L.append(f"unexplained ({name}): the residual keeps structure beyond noise (RMS {u['rms_over_noise']:.2g}x "
+                     "the noise floor):")
+            for sg in u["signatures"]:
+                L.append(f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual variance. "
+                         f"Candidates: {sg['causes']}. To separate them: {sg['to_separate']}.")
+        elif u["rms_over_noise"] >= 1.5:
+            L.append(f"unexplained ({name}): the residual is {u['rms_over_noise']:.2g}x the noise floor, but no "
+                     "recorded factor holds a significant share of it")
+        else:
+            L.append(f"residual ({name}): at the noise floor ({u['rms_over_noise']:.2g}x), no structure along the "
+                     "recorded factors")
     for h in d["holdout_rmse_units"]:
         L.append(
             f"held-out RMSE {Path(h['file']).name}: {h['baseline']:.3g} -> {h['final']:.3g} {h['unit']} "
-            f"(gain {d['gain_percent']:.0f} %)"
+            f"(gain {h['gain_percent']:.0f} %)"
             + (f"; {h['baseline'] * torque:.3g} -> {h['final'] * torque:.3g} N.m at the screw"
                if torque is not None and h["unit"] == "N" else "")
         )
@@ -384,7 +441,7 @@ def write_report(diag, outdir) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from ..report import make_output_dir
+    from . import make_output_dir
 
     out = make_output_dir(outdir)
     d = diagnosis_dict(diag)
@@ -436,9 +493,10 @@ def write_report(diag, outdir) -> Path:
                 + " |"
             )
         md.append("")
-    md += ["## Gain", "", "| data | held-out RMSE before | after |", "|---|---|---|"]
+    md += ["## Gain", "", "| data | held-out RMSE before | after | gain |", "|---|---|---|---|"]
     md += [
-        f"| {Path(h['file']).name} | {h['baseline']:.4g} {h['unit']} | {h['final']:.4g} {h['unit']} |"
+        f"| {Path(h['file']).name} | {h['baseline']:.4g} {h['unit']} | {h['final']:.4g} {h['unit']} | "
+        f"{h['gain_percent']:.0f} % |"
         for h in d["holdout_rmse_units"]
     ]
     md += [
@@ -447,7 +505,17 @@ def write_report(diag, outdir) -> Path:
         f"{d['holdout_rmse_baseline']:.3g} -> {d['holdout_rmse_final']:.3g}; about 1 is the noise floor).",
         "",
     ]
-    md += ["## Residual plots", ""]
+    md += ["## What the final fit leaves", ""]
+    for u in d["unexplained"]:
+        name = Path(u["file"]).name
+        if u["remaining"]:
+            md.append(f"- `{name}`: **unexplained** structure (RMS {u['rms_over_noise']:.2g}x the noise floor)")
+            md += [f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual variance. Candidates: "
+                   f"{sg['causes']}. To separate them: {sg['to_separate']}." for sg in u["signatures"]]
+        else:
+            md.append(f"- `{name}`: RMS {u['rms_over_noise']:.2g}x the noise floor, no structure along a recorded "
+                      "factor")
+    md += ["", "## Residual plots", ""]
     before = _split(diag.obs, diag.baseline.prediction - diag.y)
     after = _split(diag.obs, diag.final.prediction - diag.y)
     for k, (o, rb, ra) in enumerate(zip(diag.obs, before, after)):

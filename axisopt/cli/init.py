@@ -1,0 +1,314 @@
+"""``axisopt init design|problem|study [--machine vmc|lathe|gantry|vertical] [--out FILE] [--force]``: a
+commented YAML template for a named machine type that loads, solves or evaluates as it is written.
+
+The templates say what each value means and in which unit, and in particular where the process (cutting)
+force goes: ``axis.axial_load`` (the largest force: nut stiffness under load, lift-off, buckling, life with
+``mean_axial_load``, the motor's steady thrust) and a duty-cycle entry's ``force:`` (the force during that
+entry only: the motor's peak and RMS torque over the cycle).  Each machine's limits and catalog
+restrictions were chosen so that its problem is feasible and solves in seconds; its design holds the parts of
+that problem's optimum (rounded preload), so ``evaluate`` passes every check.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from ..errors import InputError
+from .common import EXIT_OK
+
+KINDS = ("design", "problem", "study")
+MACHINES = ("vmc", "lathe", "gantry", "vertical")
+
+_FORCE_NOTE = """\
+  # Where the process (cutting) force goes -- two places, forces in N or kN:
+  #  axial_load:  the LARGEST external axial force on the table (cutting, clamping).
+  #               Used for the nut stiffness under load, preload lift-off, buckling and
+  #               the motor's steady thrust; mean_axial_load (default a third of it)
+  #               sets the nut and bearing L10 life.
+  #  duty_cycle force: the force during that move or dwell only, e.g.
+  #               {move: 400 mm, speed: 2 m/min, force: 2500 N}; used for the motor's
+  #               peak and RMS torque over the cycle.  Without a duty_cycle the cycle is
+  #               a rapid move over the stroke and back with no process force.
+  # Inertia (moving_mass x acceleration), guide friction and, on a vertical axis,
+  # gravity are added by the model: leave them out of these forces."""
+
+# Per machine: title, name, the axis section (after 'axis:'), the problem's objective to continuous sections,
+# the design's parts, and the study's sweep.
+_MACHINE = {
+    "vmc": dict(
+        title="vertical machining centre, X axis",
+        name="vmc-x",
+        description="VMC X axis: 450 kg table and workpiece, 800 mm stroke, 24 m/min rapids.",
+        axis="""\
+  stroke: 800 mm              # nut travel (required)
+  moving_mass: 450 kg         # table, fixture, heaviest part (required)
+  mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
+  orientation: horizontal     # horizontal | vertical (gravity on the screw, holding brake)
+  max_speed: 24 m/min         # rapid traverse (required)
+  mean_speed: 8 m/min         # for the life (default: half of max_speed)
+  acceleration: 3 m/s^2       # of the moves (default 0)
+{force}
+  axial_load: 3000 N          # largest process force (required)
+  mean_axial_load: 800 N      # mean process force, for the life
+  duty_cycle:                 # the motor is sized on this cycle
+    - {{move: 300 mm}}                                # rapid approach at max_speed and acceleration
+    - {{move: 400 mm, speed: 2 m/min, force: 2500 N}} # cutting feed against 2.5 kN
+    - {{dwell: 1 s}}                                  # spindle stop
+    - {{move: -700 mm}}                               # rapid return
+    - {{dwell: 5 s}}                                  # tool and part change
+  required_life: 20000 h      # nut and bearing L10 life needed (default 20000 h)
+  guide_blocks: 4             # carriages in total (default 4)
+  rails: 2                    # (default 2)
+  table_length: 600 mm        # rail length = stroke + table_length (default 500 mm)
+""",
+        problem="""\
+objective: frequency          # maximise the lowest 1st natural frequency over the stroke
+limits:
+  max_cost: 7000 EUR          # parts, motor and coupling included (illustrative prices)
+  max_drag_torque: 2.5 N.m    # nut preload and bearing drag
+  min_life: 20000 h
+  min_stiffness: 150 N/um     # lowest axial stiffness over the stroke
+  margins:                    # vendor checks: available / needed at least this (default 1)
+    critical_speed: 1.25
+    buckling: 2.0
+catalog:                      # parts the search may choose (axisopt parts)
+  mountings: [fixed-supported, fixed-fixed]  # tries each
+  vendors: [HIWIN, THK, NSK]
+  nut_types: [double]         # preloaded double nuts: no backlash
+  motor_series: [Sigma-7 SGM7G]
+  require: {coupling: [RINGFEDER-GWB-AKN-60, RINGFEDER-GWB-AKN-80]}
+continuous:
+  nut_preload: {min: 200 N, max: 20 kN}
+""",
+        parts="""\
+  screw: HIWIN-G-50x20-b6p35
+  nut: HIWIN-R50-20K4-FDC-b635
+  bearing: NSK-40TAC90B-DFF-C9
+  guide: HIWIN-HG15-ZA
+  motor: SGM7G-20A
+  coupling: RINGFEDER-GWB-AKN-80
+  nut_preload: 4500 N
+""",
+        sweep=("axis.moving_mass", "[300 kg, 450 kg, 600 kg]", "light, usual and heavy workpieces"),
+    ),
+    "lathe": dict(
+        title="turning centre, Z axis",
+        name="lathe-z",
+        description="Lathe Z axis: 250 kg carriage and turret, 600 mm stroke, 30 m/min, 5 kN feed force.",
+        axis="""\
+  stroke: 600 mm              # nut travel (required)
+  moving_mass: 250 kg         # carriage, cross slide, turret (required)
+  mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
+  orientation: horizontal     # slant bed: no gravity along the screw
+  max_speed: 30 m/min         # rapid traverse (required)
+  acceleration: 5 m/s^2       # of the moves (default 0)
+{force}
+  axial_load: 5000 N          # largest process force: roughing feed
+  mean_axial_load: 1500 N     # mean process force, for the life
+  duty_cycle:                 # the motor is sized on this cycle
+    - {{move: 150 mm}}                                   # rapid approach
+    - {{move: 400 mm, speed: 0.5 m/min, force: 4000 N}}  # roughing pass against 4 kN
+    - {{move: -400 mm}}                                  # rapid back
+    - {{move: 400 mm, speed: 0.2 m/min, force: 1000 N}}  # finishing pass against 1 kN
+    - {{move: -550 mm}}                                  # rapid return
+    - {{dwell: 10 s}}                                    # part change
+  required_life: 20000 h      # nut and bearing L10 life needed (default 20000 h)
+  table_length: 400 mm        # rail length = stroke + table_length (default 500 mm)
+""",
+        problem="""\
+objective: stiffness          # maximise the lowest axial stiffness over the stroke
+limits:
+  max_cost: 5000 EUR          # parts, motor and coupling included (illustrative prices)
+  max_drag_torque: 2 N.m      # nut preload and bearing drag
+  min_life: 20000 h
+  margins:                    # vendor checks: available / needed at least this (default 1)
+    critical_speed: 1.25
+catalog:                      # parts the search may choose (axisopt parts)
+  mountings: [fixed-supported, fixed-fixed]  # tries each
+  vendors: [HIWIN, THK, NSK]
+  nut_types: [double]         # preloaded double nuts: no backlash
+  motor_series: [Sigma-7 SGM7G]
+  require: {coupling: [RINGFEDER-GWB-AKN-60, RINGFEDER-GWB-AKN-80]}
+continuous:
+  nut_preload: {min: 200 N, max: 20 kN}
+""",
+        parts="""\
+  screw: HIWIN-G-40x20-b6p35
+  nut: HIWIN-R40-20K4-FDC
+  bearing: NSK-30TAC62B-DFF-C9
+  guide: HIWIN-HG15-ZA
+  motor: SGM7G-20A
+  coupling: RINGFEDER-GWB-AKN-80
+  nut_preload: 3500 N
+""",
+        sweep=("axis.axial_load", "[3000 N, 5000 N, 6000 N]", "light, medium and heavy roughing"),
+    ),
+    "gantry": dict(
+        title="gantry, long X axis",
+        name="gantry-x",
+        description="Gantry X axis: 800 kg gantry, 2000 mm stroke, 30 m/min; long screws whirl and are soft.",
+        axis="""\
+  stroke: 2000 mm             # nut travel (required)
+  moving_mass: 800 kg         # gantry with Y, Z and spindle (required)
+  mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
+  orientation: horizontal     # horizontal | vertical (gravity on the screw, holding brake)
+  max_speed: 30 m/min         # rapid traverse (required)
+  mean_speed: 10 m/min        # for the life (default: half of max_speed)
+  acceleration: 2 m/s^2       # of the moves (default 0)
+{force}
+  axial_load: 5000 N          # largest process force (required)
+  mean_axial_load: 1500 N     # mean process force, for the life
+  duty_cycle:                 # the motor is sized on this cycle
+    - {{move: 500 mm}}                                 # rapid approach
+    - {{move: 1000 mm, speed: 5 m/min, force: 3000 N}} # milling pass against 3 kN
+    - {{move: -1500 mm}}                               # rapid return
+    - {{dwell: 10 s}}                                  # tool and part change
+  required_life: 15000 h      # nut and bearing L10 life needed (default 20000 h)
+  table_length: 800 mm        # rail length = stroke + table_length (default 500 mm)
+""",
+        problem="""\
+objective: stiffness          # maximise the lowest axial stiffness over the stroke
+limits:
+  max_cost: 15000 EUR         # parts, motor and coupling included (illustrative prices)
+  max_drag_torque: 5 N.m      # nut preload and bearing drag
+  min_life: 15000 h
+  margins:                    # vendor checks: available / needed at least this (default 1)
+    critical_speed: 1.2
+catalog:                      # parts the search may choose (axisopt parts)
+  mountings: [fixed-supported, fixed-fixed]  # tries each
+  vendors: [HIWIN]
+  nut_types: [double]         # preloaded double nuts: no backlash
+  require: {motor: [HC202, HC352, HC452, HC702], coupling: [RINGFEDER-GWB-AKN-300]}
+continuous:
+  nut_preload: {min: 200 N, max: 30 kN}
+""",
+        parts="""\
+  screw: HIWIN-G-50x40-b6p35
+  nut: HIWIN-R50-40K3-FDC
+  bearing: HIWIN-WBK40-DFD
+  guide: HIWIN-HG25-ZA        # size 25 under an 800 kg gantry: HG15 misses its life under the cut
+  motor: HC452
+  coupling: RINGFEDER-GWB-AKN-300
+  nut_preload: 4300 N
+""",
+        sweep=("axis.stroke", "[1500 mm, 1750 mm, 2000 mm]", "machine sizes"),
+    ),
+    "vertical": dict(
+        title="vertical Z axis (gravity on the screw, holding brake)",
+        name="vertical-z",
+        description="Vertical Z axis: 300 kg spindle head, 500 mm stroke, 24 m/min, brake holds twice gravity.",
+        axis="""\
+  stroke: 500 mm              # nut travel (required)
+  moving_mass: 300 kg         # spindle head (required)
+  mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
+  orientation: vertical       # gravity acts along the screw; the motor needs a holding brake
+  brake_safety: 2             # brake torque / gravity torque (default 2)
+  max_speed: 24 m/min         # rapid traverse (required)
+  acceleration: 3 m/s^2       # of the moves (default 0)
+{force}
+  axial_load: 3000 N          # largest process force: drilling thrust
+  mean_axial_load: 1000 N     # mean process force, for the life
+  duty_cycle:                 # the motor is sized on this cycle (- is down)
+    - {{move: -200 mm}}                                # rapid down
+    - {{move: -250 mm, speed: 2 m/min, force: 2000 N}} # drilling feed against 2 kN
+    - {{dwell: 1 s}}
+    - {{move: 450 mm}}                                 # rapid up
+    - {{dwell: 5 s}}                                   # tool change, held by the motor
+  required_life: 20000 h      # nut and bearing L10 life needed (default 20000 h)
+  table_length: 400 mm        # rail length = stroke + table_length (default 500 mm)
+""",
+        problem="""\
+objective: stiffness          # maximise the lowest axial stiffness over the stroke
+limits:
+  max_cost: 6000 EUR          # parts, motor and coupling included (illustrative prices)
+  max_drag_torque: 2 N.m      # nut preload and bearing drag
+  min_life: 20000 h
+catalog:                      # parts the search may choose (axisopt parts)
+  mountings: [fixed-supported, fixed-fixed]  # tries each
+  vendors: [HIWIN, THK, NSK]
+  nut_types: [double]         # preloaded double nuts: no backlash
+  motor_series: [Sigma-7 SGM7G, MELDAS HC (2000 r/min)]   # motors with a holding brake listed
+  require: {coupling: [RINGFEDER-GWB-AKN-150]}
+continuous:
+  nut_preload: {min: 200 N, max: 20 kN}
+""",
+        parts="""\
+  screw: HIWIN-G-63x20-b6p35
+  nut: HIWIN-R63-20K5-FDC-b635
+  bearing: NSK-50TAC100B-DFF-C9
+  guide: HIWIN-HG15-ZA
+  motor: HC352
+  coupling: RINGFEDER-GWB-AKN-150
+  nut_preload: 2850 N
+""",
+        sweep=("limits.max_cost", "[5000 EUR, 6000 EUR, 8000 EUR]", "budgets"),
+    ),
+}
+
+_HEADER = """\
+# axisopt {kind}: {title}
+# Written by 'axisopt init {kind} --machine {machine}'.
+# {next}
+# Every quantity carries its unit ("800 mm", "3 m/s^2", "4 kN"); a bare number is refused.
+# Editor completion and checks: axisopt schema {kind} --out axisopt-{kind}.json
+# (README, "Editor support").
+"""
+_NEXT = {"design": "Evaluate it: axisopt evaluate FILE",
+         "problem": "Solve it: axisopt solve FILE (exit 0 optimal, 1 infeasible)",
+         "study": "Run it: axisopt study FILE --out DIR"}
+
+
+def template(kind: str, machine: str = "vmc") -> str:
+    """The commented YAML text of a ``kind`` file (design, problem, study) for ``machine``."""
+    if kind not in KINDS:
+        raise InputError(f"unknown file kind '{kind}'; use one of {', '.join(KINDS)}")
+    if machine not in _MACHINE:
+        raise InputError(f"unknown machine '{machine}'; use one of {', '.join(MACHINES)}", where="--machine")
+    m = _MACHINE[machine]
+    head = _HEADER.format(kind=kind, title=m["title"], machine=machine, next=_NEXT[kind])
+    axis = "axis:\n" + m["axis"].format(force=_FORCE_NOTE)
+    if kind == "design":
+        return (f"{head}name: {m['name']}\ndescription: >\n  {m['description']}\n{axis}"
+                "parts:                        # catalog ids (axisopt parts lists them)\n"
+                f"{m['parts']}")
+    problem = f"name: {m['name']}\ndescription: >\n  {m['description']}\n{axis}{m['problem']}"
+    if kind == "problem":
+        return head + problem
+    key, values, what = m["sweep"]
+    base = "".join(("  " + line) if line else line for line in problem.splitlines(True))
+    return (f"{head}name: {m['name']}-study\ndescription: >\n  {m['description']}\n  Swept over {what}.\n"
+            f"base:                         # a problem as 'init problem' writes (or base: FILE)\n"
+            f"{base}sweep:                        # each key a dotted path into the base problem\n"
+            f"  {key}: {values}   # {what}\n")
+
+
+def register(sub) -> None:
+    p = sub.add_parser("init", help="write a commented design, problem or study YAML for a machine type")
+    p.add_argument("kind", choices=KINDS, help="the kind of YAML file")
+    p.add_argument("--machine", choices=MACHINES, default="vmc",
+                   help="machine type: vmc (machining centre X), lathe (Z), gantry (long X), vertical (Z); "
+                        "default vmc")
+    p.add_argument("--out", metavar="FILE",
+                   help="file to write ('-' for stdout; default <machine>_<kind>.yaml in this directory)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing file")
+    p.set_defaults(func=cmd_init)
+
+
+def cmd_init(args) -> int:
+    text = template(args.kind, args.machine)
+    out = args.out or f"{args.machine}_{args.kind}.yaml"
+    if out == "-":
+        sys.stdout.write(text)
+        return EXIT_OK
+    path = Path(out)
+    if path.exists() and not args.force:
+        raise InputError("file exists; use --force to overwrite it, or --out another file", source=str(path))
+    if path.is_dir():
+        raise InputError("is a directory; give a file name", source=str(path))
+    from ..fileio import write_text_atomic
+
+    write_text_atomic(str(path), text, what=f"{args.kind} YAML")
+    nxt = {"design": "axisopt evaluate", "problem": "axisopt solve", "study": "axisopt study"}[args.kind]
+    print(f"{args.kind} template for a {_MACHINE[args.machine]['title']} written to {path}; next: {nxt} {path}")
+    return EXIT_OK

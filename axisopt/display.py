@@ -1,0 +1,86 @@
+"""Small presentation helpers the result classes share for notebooks: a number in engineering form, a list of
+row dicts as a pandas DataFrame, the same rows as a small HTML table, a one-line repr.
+
+Sits low (beside ``units``) so that the computing packages' result classes (model, search, identify, study)
+give ``to_frame()``, a short ``__repr__`` and ``_repr_html_`` without importing ``report`` (the layers run one
+way).  pandas is imported only when a frame is asked for, so ``import axisopt`` stays fast.  Nothing here
+prints.
+"""
+
+from __future__ import annotations
+
+import html
+import math
+
+REPR_WIDTH = 400  # characters a one-line repr may take before it is cut
+
+
+def fmt(x, unit: str = "") -> str:
+    """A physical value as an engineer writes it: thousands separators from 100 up, three significant digits
+    below; ``unit`` appended after a space; '-' for a missing or non-finite value.
+
+    >>> fmt(1234.4, "N/um"), fmt(0.785, "N.m"), fmt(None)
+    ('1,234 N/um', '0.785 N.m', '-')
+    """
+    if x is None:
+        return "-"
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    if not math.isfinite(v):
+        return "-"
+    text = f"{v:,.0f}" if abs(v) >= 100 else f"{v:.3g}"
+    return f"{text} {unit}" if unit else text
+
+
+def frame(rows, columns=None):
+    """pandas DataFrame of ``rows`` (a list of dicts; ``columns`` fixes the order and keeps the columns of
+    an empty table)."""
+    import pandas as pd
+
+    return pd.DataFrame(list(rows), columns=list(columns) if columns is not None else None)
+
+
+def html_table(rows, caption: str = "", columns=None, max_rows: int = 30) -> str:
+    """A small HTML table of ``rows`` (list of dicts): numbers as :func:`fmt` writes them, text escaped;
+    ``max_rows`` rows at most (a last row says how many were left off)."""
+    rows = list(rows)
+    cols = list(columns) if columns is not None else list(dict.fromkeys(k for r in rows for k in r))
+    out = ["<table>"]
+    if caption:
+        out.append(f"<caption style='text-align:left'>{html.escape(caption)}</caption>")
+    out.append("<thead><tr>" + "".join(f"<th>{html.escape(str(c))}</th>" for c in cols) + "</tr></thead><tbody>")
+    for r in rows[:max_rows]:
+        out.append("<tr>" + "".join(f"<td>{html.escape(_cell(r.get(c)))}</td>" for c in cols) + "</tr>")
+    if len(rows) > max_rows:
+        out.append(f"<tr><td colspan='{len(cols)}'>... {len(rows) - max_rows} more rows (to_frame() has them "
+                   "all)</td></tr>")
+    out.append("</tbody></table>")
+    return "".join(out)
+
+
+def html_fields(fields: dict, caption: str = "") -> str:
+    """A two-column HTML table (name, value) of a result's headline values."""
+    return html_table([{"": k, "value": v} for k, v in fields.items()], caption, columns=("", "value"))
+
+
+def one_line(name: str, head: str, fields: dict) -> str:
+    """``Name(head; key value; key value ...)`` (an empty key: the value alone) cut at :data:`REPR_WIDTH`
+    characters."""
+    body = "; ".join(f"{k} {_cell(v)}" if k else _cell(v) for k, v in fields.items() if v not in (None, ""))
+    text = f"{name}({head}{'; ' if head and body else ''}{body})"
+    return text if len(text) <= REPR_WIDTH else text[:REPR_WIDTH - 4] + " ...)"
+
+
+def _cell(v) -> str:
+    if v is None:
+        return "-"
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if isinstance(v, (int, float)) and not isinstance(v, bool):
+        return fmt(v) if isinstance(v, float) else f"{v:,}"
+    return str(v)
+
+
+__all__ = ["fmt", "frame", "html_table", "html_fields", "one_line", "REPR_WIDTH"]

@@ -1,0 +1,78 @@
+"""A study run from Python (:func:`axisopt.study`): the run's summary and its results table."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..display import html_table, one_line
+from .run import RunSummary, run_study
+from .spec import Study
+from .table import results_table
+
+# columns of the notebook's HTML view (the table itself has every column)
+SHOWN = ("case_id", "status", "objective", "objective_unit", "mounting", "screw", "nut", "min_stiffness [N/um]",
+         "min_frequency [Hz]", "cost [EUR]")
+
+
+@dataclass(repr=False)
+class StudyResult:
+    """A finished study: ``summary`` (cases solved, failed, files written) and the output directory; the
+    results table, one row per case, is read from the case files by :meth:`to_frame`."""
+
+    study: Study
+    out_dir: str
+    summary: RunSummary
+
+    def to_frame(self):
+        """pandas DataFrame, one row per finished case: the swept inputs (quantities as numbers, the unit in
+        the column name, e.g. ``axis.stroke [mm]``), status, objective, chosen parts, ``min_stiffness [N/um]``,
+        ``cost [EUR]``, each check's margin, available and needed (the study's ``results.csv``)."""
+        return results_table(self.study, self.out_dir)
+
+    @property
+    def files(self) -> dict:
+        """name -> path of the table, plots and report written."""
+        return dict(self.summary.files)
+
+    def __repr__(self) -> str:
+        s = self.summary
+        return one_line("StudyResult", repr(self.study.name), {
+            "cases": s.total, "solved now": s.solved, "kept": s.resumed or None, "failed": s.failed,
+            "not run": s.lost or None, "time": f"{s.time:.1f} s", "out": self.out_dir})
+
+    def _repr_html_(self) -> str:
+        df = self.to_frame()
+        cols = [c for c in SHOWN if c in df.columns]
+        return html_table(df[cols].to_dict("records"), repr(self), columns=cols)
+
+
+def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, scheduler=None,
+             progress=None) -> StudyResult:
+    """Run a study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult`.
+
+    out     : output directory (default ``<study file stem>-results``, as on the command line)
+    workers : local worker processes; 0 (the default here) solves in this process, None uses every core
+    resume  : continue a run in ``out``
+    """
+    from os import PathLike
+    from pathlib import Path
+
+    from .spec import load_study
+
+    path = isinstance(spec, (str, PathLike))
+    study = load_study(spec) if path else spec
+    if out is None:
+        out = f"{Path(spec).stem if path else study.name}-results"
+    return run(study, out, workers=workers, resume=resume, scheduler=scheduler, progress=progress)
+
+
+def run(study: Study, out_dir, *, workers: int | None = 0, resume: bool = False, scheduler=None,
+        progress=None) -> StudyResult:
+    """Run ``study`` into ``out_dir`` (:func:`axisopt.study.run.run_study`) and return its result."""
+    if scheduler is not None:
+        workers = None
+    summary = run_study(study, out_dir, workers=workers, scheduler=scheduler, resume=resume, progress=progress)
+    return StudyResult(study, str(out_dir), summary)
+
+
+__all__ = ["StudyResult", "run", "run_spec"]
