@@ -34,6 +34,10 @@ class Column:
     optional  : the cell may be empty where the vendor lists no value (read as NaN)
     estimate  : for an optional column the model reads: what stands in where the cell is empty (an estimated,
                 not a vendor, value; results say when it binds)
+    estimated_when : row statuses (``status`` column) whose value in this column is not the vendor's table
+                (derived by a rule or illustrative, catalogs/SOURCES.md); ``estimated_how`` says how
+    derived_marker : a row whose ``source`` names this value as derived (``'<marker> ... derived'`` within
+                one ``;``-separated part) holds an estimate here whatever its status
     """
 
     name: str
@@ -42,10 +46,32 @@ class Column:
     positive: bool = False
     optional: bool = False
     estimate: str = ""
+    estimated_when: tuple = ()
+    estimated_how: str = ""
+    derived_marker: str = ""
+
+    def estimated_in(self, status: str, source: str = "") -> str:
+        """How this column's value is estimated in a row of ``status`` and ``source`` ('' : the vendor's)."""
+        if status in self.estimated_when:
+            return self.estimated_how or f"{status} row, catalogs/SOURCES.md"
+        if self.derived_marker and source:
+            for part in str(source).split(";"):
+                words = part.replace(",", " ").split()
+                if self.derived_marker in words and "derived" in words[words.index(self.derived_marker):]:
+                    return f"{part.strip()} (catalogs/SOURCES.md)"
+        return ""
 
 
 def _c(name, kind, param=None, **kw) -> Column:
     return Column(name, kind, param, **kw)
+
+
+# Where a catalog value is not the vendor's (catalogs/SOURCES.md): every price is illustrative; rigidity is
+# derived in 'stiffness-derived' and 'derived' rows, ratings and preload in 'derived' rows.
+_CATALOG_ROWS = ("vendor", "stiffness-derived", "paper", "derived")
+_PRICE = {"estimated_when": _CATALOG_ROWS, "estimated_how": "illustrative price (catalogs/SOURCES.md)"}
+_RIGIDITY = {"estimated_when": ("stiffness-derived", "derived")}
+_DERIVED = {"estimated_when": ("derived",)}
 
 
 _TEXT = ("id", "vendor", "series")
@@ -61,49 +87,50 @@ COLUMNS = MappingProxyType({
         _c("dn_limit", "dn", "dn_limit", positive=True),
         _c("support_bore_min", "length", "support_bore_min", positive=True),
         _c("support_bore_max", "length", "support_bore_max", positive=True),
-        _c("price_per_length", "money_per_length", "screw_price_per_length"),
-        _c("price_fixed", "money", "screw_price_fixed"),
+        _c("price_per_length", "money_per_length", "screw_price_per_length", **_PRICE),
+        _c("price_fixed", "money", "screw_price_fixed", **_PRICE),
     ),
     "nuts": (
         _c("id", "str"), _c("vendor", "str"), _c("screw_id", "str"), _c("type", "str"),
-        _c("stiffness", "stiffness", "nut_stiffness", positive=True),
+        _c("stiffness", "stiffness", "nut_stiffness", positive=True, **_RIGIDITY),
         _c("stiffness_preload", "force", "nut_stiffness_preload", positive=True),
         _c("preload_min", "force", "nut_preload_min"), _c("preload_max", "force", "nut_preload_max"),
-        _c("dynamic_load_rating", "force", "nut_dynamic_load", positive=True),
+        _c("dynamic_load_rating", "force", "nut_dynamic_load", positive=True, **_DERIVED),
         _c("static_load_rating", "force", "nut_static_load", positive=True),
         _c("contact_angle", "angle"),
         _c("axial_play", "length", "nut_axial_play"), _c("mass", "mass", "nut_mass"),
-        _c("price", "money", "nut_price"),
+        _c("price", "money", "nut_price", **_PRICE),
     ),
     "bearings": (
         *(_c(n, "str") for n in _TEXT), _c("arrangement", "str"), _c("rows", "int", positive=True),
         _c("bore", "length", "bearing_bore", positive=True), _c("outer_diameter", "length", positive=True),
         _c("contact_angle", "angle"), _c("preload_class", "str"),
-        _c("preload", "force", "bearing_preload"),
-        _c("axial_rigidity", "stiffness", "bearing_stiffness", positive=True),
-        _c("lift_off_load", "force", "bearing_lift_off"),
-        _c("dynamic_load_rating", "force", "bearing_dynamic_load", positive=True),
+        _c("preload", "force", "bearing_preload", **_DERIVED, derived_marker="preload"),
+        _c("axial_rigidity", "stiffness", "bearing_stiffness", positive=True, **_RIGIDITY),
+        _c("lift_off_load", "force", "bearing_lift_off", estimated_when=_CATALOG_ROWS,
+           estimated_how="2.83 x preload (DB/DF/DFF, SKF-LF) or 2.08 x preload (DBD), catalogs/SOURCES.md"),
+        _c("dynamic_load_rating", "force", "bearing_dynamic_load", positive=True, **_DERIVED),
         _c("static_load_rating", "force"),
-        _c("limiting_speed", "angular_speed", "bearing_limiting_speed"),
+        _c("limiting_speed", "angular_speed", "bearing_limiting_speed", **_DERIVED, derived_marker="speed"),
         _c("starting_torque", "torque", optional=True,
-           estimate="seed eq. 40 (Palmgren f0/f1 friction torque of the set)"),
+           estimate="vendor envelope 3.72e-3 x preload x mean diameter"),
         _c("f0", "dimensionless", "bearing_f0"), _c("f1", "dimensionless", "bearing_f1"),
-        _c("mass", "mass", "bearing_mass"), _c("price", "money", "bearing_price"),
+        _c("mass", "mass", "bearing_mass"), _c("price", "money", "bearing_price", **_PRICE),
     ),
     "guides": (
         *(_c(n, "str") for n in _TEXT), _c("type", "str"), _c("size", "length", positive=True),
         _c("preload_class", "str"), _c("preload_level", "str"), _c("preload", "force", "guide_preload"),
-        _c("normal_rigidity", "stiffness", "guide_normal_stiffness", positive=True),
-        _c("tangential_rigidity", "stiffness", "guide_tangential_stiffness", positive=True),
-        _c("dynamic_load_rating", "force", "guide_dynamic_load", positive=True),
+        _c("normal_rigidity", "stiffness", "guide_normal_stiffness", positive=True, **_RIGIDITY),
+        _c("tangential_rigidity", "stiffness", "guide_tangential_stiffness", positive=True, **_RIGIDITY),
+        _c("dynamic_load_rating", "force", "guide_dynamic_load", positive=True, **_DERIVED),
         _c("static_load_rating", "force", "guide_static_load", positive=True),
         _c("friction_force", "force", "guide_friction_force"),
         _c("friction_coefficient", "dimensionless", "guide_friction_coefficient"),
         _c("friction_viscous", "damping", "guide_friction_viscous"),
         _c("damping", "damping", "guide_damping"), _c("block_mass", "mass", "guide_block_mass"),
         _c("rail_mass_per_length", "mass_per_length", "guide_rail_mass_per_length"),
-        _c("block_price", "money", "guide_block_price"),
-        _c("rail_price_per_length", "money_per_length", "guide_rail_price_per_length"),
+        _c("block_price", "money", "guide_block_price", **_PRICE),
+        _c("rail_price_per_length", "money_per_length", "guide_rail_price_per_length", **_PRICE),
         # static permissible moments of one block (vendor tables: HIWIN MR/MP/MY, IKO T0/TX/TY, NBS M0X/M0Z/M0Y):
         # the block-load method needs them for one block per rail or one rail (THK K = C0 / M)
         _c("moment_roll", "torque", "guide_moment_roll", positive=True),
@@ -120,7 +147,12 @@ COLUMNS = MappingProxyType({
         _c("rotor_inertia", "inertia", positive=True),
         _c("rotor_inertia_brake", "inertia", optional=True), _c("brake_torque", "torque", optional=True),
         _c("mass", "mass", optional=True), _c("flange", "length", optional=True),
-        _c("price", "money", "motor_price"),
+        _c("price", "money", "motor_price", **_PRICE),
+        # intermittent (peak) zone of the vendor's torque-speed curve: peak torque flat up to the corner speed,
+        # then falling linearly to its value at max speed (physics.drive.peak_torque_available)
+        _c("peak_corner_speed", "angular_speed", optional=True,
+           estimate="min(rated speed, max speed / 2): Mitsubishi MDS-D-SVJ3 sec. 7-1 (2)"),
+        _c("peak_torque_at_max_speed", "torque", optional=True, estimate="rated torque (peak falls to rated)"),
     ),
     "couplings": (
         *(_c(n, "str") for n in _TEXT),
@@ -129,7 +161,7 @@ COLUMNS = MappingProxyType({
         _c("inertia", "inertia", positive=True),
         _c("max_speed", "angular_speed", "coupling_max_speed", positive=True),
         _c("bore_min", "length", positive=True), _c("bore_max", "length", positive=True),
-        _c("mass", "mass", optional=True), _c("price", "money", "coupling_price"),
+        _c("mass", "mass", optional=True), _c("price", "money", "coupling_price", **_PRICE),
     ),
 })
 
@@ -158,7 +190,8 @@ OPTIONAL_COLUMNS = MappingProxyType({t: tuple(c.name for c in cols if c.optional
 # Pairs (low, high) that a row must keep in order: a one-line error names the row otherwise.
 _ORDERED = {
     "motors": (("rated_torque", "peak_torque"), ("rated_speed", "max_speed"),
-               ("rotor_inertia", "rotor_inertia_brake")),
+               ("rotor_inertia", "rotor_inertia_brake"), ("peak_corner_speed", "max_speed"),
+               ("peak_torque_at_max_speed", "peak_torque")),
     "couplings": (("bore_min", "bore_max"),),
     "nuts": (("preload_min", "preload_max"),),
 }
@@ -281,7 +314,9 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
         except ValueError as exc:
             raise InputError(f"{exc} in column '{col}'", source=src, where=f"line 1, column {j}") from None
         cols.append((col, factor, kind))
-    missing = [c for c in schema if c not in seen]
+    # an optional column with an estimate may be left out of the header: every row then takes the estimate
+    omitted = [c.name for c in COLUMNS[name] if c.optional and c.estimate and c.name not in seen]
+    missing = [c for c in schema if c not in seen and c not in omitted]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)}", source=src, where="line 1")
 
@@ -292,7 +327,7 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
             continue
         if len(row) != len(cols):
             raise InputError(f"has {len(row)} cells, header has {len(cols)}", source=src, where=f"line {i}")
-        rec = {}
+        rec = dict.fromkeys(omitted, math.nan)
         for j, ((col, factor, kind), cell) in enumerate(zip(cols, row), start=1):
             cell = cell.strip()
             where = f"line {i}, column {j} ({col})"

@@ -39,6 +39,9 @@ G = 9.80665
 # safety: no vendor figure was retrieved; 2 x the gravity torque is our assumption, set axis.brake_safety.
 MAX_INERTIA_RATIO = 5.0
 BRAKE_SAFETY = 2.0
+# RMS torque / rated torque: Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <=
+# 0.8 Tst" (stall torque); taken against the rated torque, which is at most the stall torque (issue 26).
+RMS_TORQUE_RATIO = 0.8
 # Carriage (issue 25).  Static safety factors: THK's current selection pages give the lower limit of f_S "with
 # vibrations or impacts" as 5 for the LM Guide (thk.com/in/en/products/lm_guide/selection/0005/, Table 10) and
 # for the ball screw (LM Guide Actuator pages, "Ball Screw Unit/Bearing Unit": 5); a feed axis of a cutting
@@ -82,7 +85,9 @@ class Axis:
     nut_bracket_stiffness: float | None = None  # nut bracket / table connection [N/m]; None: rigid
     coupling_stiffness: float = COUPLING_STIFFNESS  # torsional [N m/rad]
     coupling_inertia: float = COUPLING_INERTIA  # [kg m^2]
-    temperature_rise: float = TEMPERATURE_RISE  # screw temperature rise in operation [K]
+    # screw temperature rise in operation [K]; None: the heat balance of the duty cycle (model.heat) when the axis
+    # has one, TEMPERATURE_RISE otherwise
+    temperature_rise: float | None = None
     pretension: float | None = None  # fixed-fixed screw pretension [N]; None: absorbs temperature_rise
     orientation: str = "horizontal"
     positions: int = 41  # nut positions evaluated over the stroke
@@ -95,6 +100,8 @@ class Axis:
     max_inertia_ratio: float = MAX_INERTIA_RATIO  # load / rotor inertia at the motor
     brake: str = "auto"  # holding brake: auto (vertical axes), yes, no
     brake_safety: float = BRAKE_SAFETY  # brake holding torque / gravity torque
+    rms_torque_ratio: float = RMS_TORQUE_RATIO  # largest RMS torque / rated torque of the motor
+    heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
     # carriage: cutting force across the rail (the feed component is axial_load, the normal one normal_load),
     # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the defaults
     # above, from the table's size) and the static safety the guides and the nut must keep
@@ -142,9 +149,10 @@ class Axis:
 
     @cached_property
     def phases(self) -> tuple:
-        """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move."""
+        """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move.  ``heat``:
+        the heat balance sets the temperature rise (a duty cycle and no ``temperature_rise``)."""
         segs = self.duty_cycle or motion.rapid_cycle(self.stroke, self.max_speed, self.acceleration, self.jerk)
-        return motion.cycle_phases(segs)
+        return motion.Phases(motion.cycle_phases(segs), heat=self.temperature_rise is None and bool(self.duty_cycle))
 
     @property
     def top_speed(self) -> float:
@@ -259,7 +267,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "nut_bracket_stiffness": _axis_q("stiffness", "nut bracket / table connection (default: rigid)"),
     "coupling_stiffness": _axis_q("torsional_stiffness", "coupling torsional stiffness (when no coupling part)"),
     "coupling_inertia": _axis_q("inertia", "coupling inertia (when no coupling part)"),
-    "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation", zero=True,
+    "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation (default: the "
+                                "heat balance of the duty cycle when the axis has one, else 3 K)", zero=True,
                            maximum=(100.0, "100 K")),
     "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs temperature_rise)",
                       options=(Key("choice", choices=("auto",)),
@@ -281,6 +290,11 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                  options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
     "brake_safety": Key("number", "brake holding torque / gravity torque", positive=True, minimum=1.0,
                         maximum=10.0),
+    "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw surface for the heat balance "
+                             "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4)"),
+    "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
+                            "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
+                            maximum=1.0),
     # carriage (issue 25): the cutting force's cross component and where it acts, the centre of gravity, the
     # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
     "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load)",
@@ -308,7 +322,7 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
 _AXIS_KINDS = {name: k.kind for name, k in AXIS_SPEC.keys.items() if k.type == "quantity"}
 _AXIS_REQUIRED = tuple(name for name, k in AXIS_SPEC.keys.items() if k.required)
 _AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reduction_efficiency",
-                 "guide_static_safety", "nut_static_safety")
+                 "guide_static_safety", "nut_static_safety", "rms_torque_ratio")
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:

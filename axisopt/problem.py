@@ -129,6 +129,7 @@ class Restrictions:
     motor_series: tuple | None = None
     coupling_series: tuple | None = None
     max_motor_flange: float | None = None  # [m]
+    estimated: str = "allow"  # 'exclude': no part whose empty catalog cell the model would estimate
 
     def required(self, slot):
         return dict(self.require).get(slot)
@@ -222,6 +223,7 @@ OBJECTIVE_SPEC = Spec("objective", "what to maximise", {
 SLOT_IDS_SPEC = Spec("slots", "part ids per slot", {
     slot: Key("names", f"{slot} ids from the catalogs") for slot in SLOTS})
 _CATALOG_NAMES = "(each one the catalogs hold)"
+ESTIMATED_CHOICES = ("allow", "exclude")
 RESTRICTIONS_SPEC = Spec("catalog", "which catalog parts and mountings the search may use", {
     "mountings": Key("names", "screw mountings to search (default: [axis.mounting])", choices=MOUNTINGS,
                      minimum=1),
@@ -242,6 +244,9 @@ RESTRICTIONS_SPEC = Spec("catalog", "which catalog parts and mountings the searc
     "coupling_series": Key("names", f"coupling series {_CATALOG_NAMES}", minimum=1),
     "max_motor_flange": Key("quantity", "the motor's (square) flange size at most this", kind="length",
                             positive=True, example="130 mm"),
+    "estimated": Key("choice", "parts whose empty catalog cell the model fills with an estimate (a support "
+                     "bearing's starting torque, a motor's torque-speed corner points): 'allow' (default; results "
+                     "say when one binds) or 'exclude' (vendor values only)", choices=ESTIMATED_CHOICES),
 })
 PRELOAD_RANGE_SPEC = Spec("nut_preload", "nut preload range (intersected with each nut's preload range)", {
     "min": Key("quantity", "lowest preload", kind="force", non_negative=True, default=0.0),
@@ -398,6 +403,9 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         vals = _catalog_names(sec, key, lambda t=table, c=col: sorted(set(catalog.table(t)[c])))
         if vals is not None:
             kw[key] = vals
+    est = sec.read("estimated")
+    if est is not None:
+        kw["estimated"] = est
     flange = sec.read("max_motor_flange")
     if flange is not None:
         kw["max_motor_flange"] = flange

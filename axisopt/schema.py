@@ -100,6 +100,7 @@ def _candidates(kind: str) -> list:
         "dn": _compound(("mm", "m"), _TIMES, ("rpm", "rad/s", "r/min")),
         "thermal_expansion": ["1/K", "1/degC", "ppm/K", "um/m/K", "1/delta_degC"],
         "dimensionless": ["%", "percent", "pct", "ppm"],
+        "heat_transfer": ["W/(m^2.K)", "W/(m^2*K)", "W/m^2/K", "W/(m2.K)", "kW/(m^2.K)", "W/(cm^2.K)"],
     }
     return c.get(kind, [])
 

@@ -59,6 +59,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "frequency": ("1/[time]", "Hz"),
     "compliance": ("[length]/[force]", "m/N"),
     "thermal_expansion": ("1/[temperature]", "1/K"),
+    "heat_transfer": ("[power]/[length]**2/[temperature]", "W/(m**2*K)"),
 }
 
 _DOT_PRODUCT = re.compile(r"(?<=[A-Za-z])\.(?=[A-Za-z])")
@@ -85,7 +86,7 @@ DISPLAY_UNITS = {
     "acceleration": "m/s^2", "jerk": "m/s^3", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
     "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
     "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad",
-    "temperature_difference": "K", "power": "W",
+    "temperature_difference": "K", "power": "W", "heat_transfer": "W/(m^2.K)",
 }
 
 
@@ -229,7 +230,7 @@ PLAUSIBLE_MAX = {
     "mass_per_length": 1e6, "damping": 1e12, "pressure": 1e13, "temperature": 1e4,
     "temperature_difference": 1e4, "torsional_stiffness": 1e12, "kinematic_viscosity": 1e2, "inertia": 1e5,
     "power": 1e9, "money": 1e12, "money_per_length": 1e10, "dn": 1e6, "frequency": 1e7, "compliance": 1e3,
-    "thermal_expansion": 1.0,
+    "thermal_expansion": 1.0, "heat_transfer": 1e6,
 }
 PLAUSIBLE_MIN = 1e-15  # the smallest non-zero magnitude (SI) of any input
 MAX_UNIT_CHARS = 40  # 'kg.m^2/s' is 8; a longer unit text is refused before pint parses it
@@ -299,7 +300,7 @@ _EXAMPLES = {
     "speed": "m/min", "acceleration": "m/s^2", "jerk": "m/s^3", "angular_speed": "rpm", "angle": "deg",
     "mass_per_length": "kg/m", "damping": "N.s/m", "temperature": "degC", "money": "EUR",
     "inertia": "kg.m^2", "frequency": "Hz", "dn": "mm.rpm", "money_per_length": "EUR/m",
-    "temperature_difference": "K", "torsional_stiffness": "N.m/rad",
+    "temperature_difference": "K", "torsional_stiffness": "N.m/rad", "heat_transfer": "W/(m^2.K)",
 }
 
 

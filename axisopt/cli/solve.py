@@ -226,6 +226,7 @@ def format_result(res, top: int | None = None) -> str:
     L.append(f"  optimality gap {gap}{rate}")
     for n in c.notes:
         L.append(f"  {n}")
+    L.extend(estimated_lines(c.estimated))
     from ..report.evaluation import fit_lines
 
     return fit_lines("\n".join(L))
@@ -286,6 +287,19 @@ def _cand_table(cands, unit) -> str:
                                break_on_hyphens=False))
         prev = parts
     return "\n".join(L)
+
+
+def estimated_lines(estimated) -> list:
+    """Text lines for ``Certificate.estimated`` (what of the optimum rests on estimated part values)."""
+    if not estimated:
+        return []
+    out = ["  rests on estimated values (not in the vendor's table; catalogs/SOURCES.md):"]
+    for r in estimated:
+        vals = "; ".join(f"{e['slot']} {e['part']} {e['column']} {_num(e['shown'])} {e['unit']} ({e['how']})"
+                         for e in r["estimates"])
+        out.extend(textwrap.wrap(f"{r['what']} ({r['output']}): {vals}", 100, initial_indent="    ",
+                                 subsequent_indent="        "))
+    return out
 
 
 def format_pareto(front, top: int | None = None) -> str:

@@ -50,10 +50,13 @@ def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
     k_drive = 1.0 / (1.0 / k_sb + 1.0 / k_tors + 1.0 / k_n + p["bracket_compliance"])
     k_tot = ps.series_stiffness(k_drive, k_cpl)
     u_th = pt.thermal_displacement(x, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0)
+    # largest thermal growth at the nut over the stroke: u is linear in x, so at one of the stroke's ends
+    ends = [mx.fabs(pt.thermal_displacement(xe, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0))
+            for xe in (p["start_offset"], p["start_offset"] + p["stroke"])]
     return {
         "k_screw": k_screw, "k_screw_bearings": k_sb, "k_torsion": k_tors, "k_coupling": k_cpl,
         "k_nut": k_n, "k_nut_unloaded": k_n0, "c_bracket": p["bracket_compliance"] + 0.0 * k_n,
         "c_housing": p["housing_compliance"] + 0.0 * k_n,
         "k_bearing": p["bearing_sets"] * k_set, "k_drive": k_drive, "k_total": k_tot,
-        "thermal_displacement": u_th,
+        "thermal_displacement": u_th, "thermal_growth": mx.fmax(ends[0], ends[1]),
     }

@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import math
 
-from .. import mathx as mx
-from ..physics import bearings as pb
 from ..physics import friction as pf
 from ..physics import nut as pn
 
@@ -16,14 +14,12 @@ SCREW_EFFICIENCY = 0.9
 def drag_torque(p, preload, loads) -> dict:
     """Drag torque [N*m] by source.  Nut: the preload drag rule (THK/HIWIN, eq. in physics.nut) at the nut's
     preload (a single nut's preload is its catalog value, 0 without oversize balls).  Bearings: the starting
-    torque the support unit's vendor lists, else seed eq. 40 with the static set load.  Guides: block friction
+    torque the support unit's vendor lists, else the upper envelope of the vendors' values (an estimate,
+    ``model.params.axis_params``; results name it where it binds).  Guides: block friction
     at rapid speed through the screw efficiency."""
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
     t_nut = pn.nut_preload_drag_torque(preload, p["lead"], p["nominal_diameter"])
-    eq40 = pb.bearing_friction_torque(p["bearing_f0"], p["bearing_f1"], p["viscosity"], omega,
-                                      p["bearing_mean_diameter"], p["bearing_preload"] + loads["bearing_static_load"])
-    per_set = mx.if_else(p["bearing_torque_listed"] > 0.5, p["bearing_torque"], eq40)
-    t_brg = p["bearing_sets"] * per_set
+    t_brg = p["bearing_sets"] * p["bearing_torque"]
     t_guides = pf.axial_force_torque(loads["guide_friction"], p["lead"], SCREW_EFFICIENCY)
     return {"drag_torque": t_nut + t_brg + t_guides, "drag_nut": t_nut, "drag_bearings": t_brg,
             "drag_guides": t_guides, "screw_speed": omega}

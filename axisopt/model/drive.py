@@ -51,11 +51,23 @@ def drive(p, moving_mass, drag) -> dict:
     durations = [ph.duration for ph in phases]
     t_rms = pd.linear_rms_torque(torques, durations) if phases else 0.0 * friction
     t_peak_cycle = pd.peak_torque(torques) if phases else 0.0 * friction
+    # each phase's largest |torque| against the peak torque the motor gives at the phase's largest speed (the
+    # intermittent zone, physics.drive.peak_torque_available); the steady thrust (feed) against the flat peak
+    zone = [pd.peak_torque_available(pd.motor_speed(ph.speed, p["lead"], a), p["motor_peak_torque"],
+                                     p["motor_peak_corner_speed"], p["motor_peak_at_max_speed"], p["motor_max_speed"])
+            for ph in phases]
     # steady thrust at feed (no acceleration): the largest and the mean axial load with friction and weight
     thrust = friction + pd.force_torque(p["axial_load"], p["lead"], eta, a) + gravity
     thrust_mean = friction + pd.force_torque(p["mean_axial_load"], p["lead"], eta, a) + gravity
     t_peak = mx.fmax(t_peak_cycle, thrust)
     t_cont = mx.fmax(t_rms, thrust_mean)
+    # peak torque needed, referred to the flat (low-speed) peak: max over phases of |T| T_pk / T_pk(n); convex in
+    # the nut preload like |T| (the zone does not depend on it), so the margin holds on an interval of preloads
+    factors = [p["motor_peak_torque"] / mx.fmax(avail, 1e-9) for avail in zone]  # >= 1, preload-independent
+    use = thrust
+    for (t0, t1), k in zip(torques, factors):
+        use = mx.fmax(use, mx.fmax(mx.fabs(t0), mx.fabs(t1)) * k)
+    thrust_ratio = p["rms_torque_ratio"] * p["motor_rated_torque"]
     v_max = max([ph.speed for ph in phases] + [0.0])
     n_motor = pd.motor_speed(v_max, p["lead"], a)
     ratio = pd.inertia_ratio(j_load, j_rotor)
@@ -66,8 +78,8 @@ def drive(p, moving_mass, drag) -> dict:
     brake_needed = p["gravity_axial"] > 0.5
     screw_speed = 2.0 * math.pi * v_max / p["lead"]
     margins = {
-        "motor_peak_torque": mx.if_else(has, p["motor_peak_torque"] / t_peak, NOT_APPLICABLE),
-        "motor_rated_torque": mx.if_else(has, p["motor_rated_torque"] / t_cont, NOT_APPLICABLE),
+        "motor_peak_torque": mx.if_else(has, p["motor_peak_torque"] / use, NOT_APPLICABLE),
+        "motor_rated_torque": mx.if_else(has, thrust_ratio / t_cont, NOT_APPLICABLE),
         "motor_speed": mx.if_else(has, p["motor_max_speed"] / mx.fmax(n_motor, 1e-9), NOT_APPLICABLE),
         "inertia_ratio": mx.if_else(has, p["max_inertia_ratio"] / ratio, NOT_APPLICABLE),
         "brake_holding": mx.if_else(has * brake_needed > 0.5,
@@ -81,7 +93,7 @@ def drive(p, moving_mass, drag) -> dict:
     }
     out = {f"margin_{k}": v for k, v in margins.items()}
     out.update(check_pairs({
-        "motor_peak_torque": (p["motor_peak_torque"], t_peak), "motor_rated_torque": (p["motor_rated_torque"], t_cont),
+        "motor_peak_torque": (p["motor_peak_torque"], use), "motor_rated_torque": (thrust_ratio, t_cont),
         "motor_speed": (p["motor_max_speed"], n_motor), "inertia_ratio": (p["max_inertia_ratio"], ratio),
         "brake_holding": (p["motor_brake_torque"], p["brake_safety"] * hold),
         "coupling_torque": (p["coupling_rated_torque"], p["motor_peak_torque"] * p["reduction_ratio"]),
@@ -92,7 +104,7 @@ def drive(p, moving_mass, drag) -> dict:
         "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean,
         "holding_torque": hold,
         "friction_torque": friction, "gravity_torque": gravity, "duty_time": sum(durations),
-        "duty_torques": torques,
+        "duty_torques": torques, "zone_factors": factors,
     })
     return out
 

@@ -28,7 +28,8 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque",
                   "gravity_torque",
                   "duty_time", "guide_max_load", "guide_static_safety", "guide_mean_load", "nut_static_safety",
-                  "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking",
+                  "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking", "friction_power", "heat_transfer",
+                  "heat_balance_rise", "temperature_rise", "thermal_growth",
                   ) + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
 
 
@@ -262,5 +263,5 @@ def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool
     else:
         raw = axis_response(params, x, design.axis.mounting, design.preload)
         values = {k: (np.broadcast_to(np.asarray(v, float), x.shape).copy() if k in PROFILE_OUTPUTS
-                      else float(v)) for k, v in raw.items() if k != "duty_torques"}
+                      else float(v)) for k, v in raw.items() if k not in ("duty_torques", "zone_factors")}
     return Evaluation(design, x, values)

@@ -22,9 +22,13 @@ CONVEX = 2  # a preload direction: the output is convex in the nut preload (met 
 # stiffness and frequency, the drag torque and the nut lift-off margin rise with the preload, the nut life
 # falls, and the motor torques are convex (the nut's drag raises the torque of some phases of the cycle and
 # lowers that of others: deceleration, lowering a vertical axis).
+# The heat balance (model.heat) makes the temperature rise grow with the preload (nut drag x speed), and with it
+# the thermal growth, the pretension of a fixed-fixed screw and the bearing set's static load: the bearing life,
+# bearing lift-off, screw yield and buckling margins fall with the preload (independent without a duty cycle).
 OUTPUT_PRELOAD = MappingProxyType({
     "k_total": 1, "k_tool": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
     "life": -1, "kv": 1,
+    "friction_power": 1, "heat_balance_rise": 1, "temperature_rise": 1, "thermal_growth": 1,
 })
 
 
@@ -75,6 +79,9 @@ LIMIT_TABLE = (
           "axial play of the nut at most this (default 0: preloaded nuts only)", zero_ok=True, default=0.0),
     Limit("max_inertia_ratio", "inertia_ratio", "<=", "dimensionless", "", 1.0,
           "load / rotor inertia ratio at the motor at most this"),
+    Limit("max_thermal_growth", "thermal_growth", "<=", "length", "um", 1e-6,
+          "thermal growth of the screw at the nut (largest over the stroke; heat balance of the duty cycle) at "
+          "most this"),
     Limit("min_tool_stiffness", "k_tool", ">=", "stiffness", "N/um", 1e6,
           "stiffness in the feed direction at the cutting point: the axial chain in series with the table "
           "pitching and yawing on its blocks (minimum over the stroke)"),
@@ -109,21 +116,22 @@ class Check:
 
 CHECK_TABLE = (
     Check("critical_speed", "critical speed / max screw speed", "critical speed", "rpm", RPM),
-    Check("buckling", "buckling load / max screw compression", "buckling load", "kN", 1e-3),
-    Check("screw_yield", "yield load (THK P2) / max screw tension", "screw yield load", "kN", 1e-3),
+    Check("buckling", "buckling load / max screw compression", "buckling load", "kN", 1e-3, preload=-1),
+    Check("screw_yield", "yield load (THK P2) / max screw tension", "screw yield load", "kN", 1e-3, preload=-1),
     Check("nut_life", "nut L10 life / required life", "nut life", "h", 1 / 3600, preload=-1),
-    Check("bearing_life", "support bearing L10 life / required life", "bearing life", "h", 1 / 3600),
+    Check("bearing_life", "support bearing L10 life / required life", "bearing life", "h", 1 / 3600, preload=-1),
     Check("guide_life", "guide block L10 travel / required travel", "guide travel", "km", 1e-3),
     Check("dn", "DN limit / DN at max speed", "DN value", "mm.rpm", 1e3 * RPM),
     Check("nut_lift_off", "nut lift-off force / max axial force", "nut lift-off", "kN", 1e-3, preload=1),
-    Check("bearing_lift_off", "bearing lift-off load / max bearing load", "bearing lift-off", "kN", 1e-3),
+    Check("bearing_lift_off", "bearing lift-off load / max bearing load", "bearing lift-off", "kN", 1e-3,
+          preload=-1),
     Check("bearing_speed", "bearing limiting speed / max screw speed", "bearing speed", "rpm", RPM),
     Check("bearing_fit", "bearing bore within the screw end's range", "bearing bore (max)", "mm", 1e3,
           relaxable=False),
     Check("screw_length", "screw max length / needed length", "screw length", "mm", 1e3, relaxable=False),
-    Check("motor_peak_torque", "motor peak torque / peak torque (cycle, thrust)", "motor peak torque", "N.m", 1.0,
+    Check("motor_peak_torque", "motor peak zone / peak torque (cycle, thrust)", "motor peak torque", "N.m", 1.0,
           preload=CONVEX, drive=True),
-    Check("motor_rated_torque", "motor rated torque / RMS torque, mean thrust", "motor rated torque", "N.m", 1.0,
+    Check("motor_rated_torque", "rated x RMS ratio / RMS torque, mean thrust", "motor rated torque", "N.m", 1.0,
           preload=CONVEX, drive=True),
     Check("motor_speed", "motor max speed / needed motor speed", "motor speed", "rpm", RPM, drive=True),
     Check("inertia_ratio", "inertia ratio limit / load-to-rotor ratio", "inertia ratio", "", 1.0, drive=True),

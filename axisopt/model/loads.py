@@ -43,8 +43,10 @@ def axial_loads(p, moving) -> dict:
     d_thermal = ff * pt.thermal_force_elastic_ends(p["root_diameter"], p["span"], p["temperature_rise"], k_set)
     # a set carries the pretension when cold and what is left of it (or the thermal push) when warm
     static = mx.fmax(pre, mx.fabs(d_thermal - pre))
-    # compression in the screw when pushing: the load, plus the thermal push not absorbed by pretension
-    compression = f_max + d_thermal - pre
+    # compression in the screw when pushing: the load, plus the thermal push not absorbed by pretension (a
+    # pretension above the thermal push is not credited against the load: conservative, and monotone in the
+    # temperature rise, which rises with the nut preload through the heat balance)
+    compression = f_max + mx.fmax(d_thermal - pre, 0.0)
     return {"block_load": n_block, "guide_friction": f_guides, "max_axial_force": f_max,
             "mean_axial_force": f_mean, "pretension": pre, "thermal_force": d_thermal,
             "bearing_static_load": static, "screw_compression": compression,

@@ -7,6 +7,9 @@ from types import MappingProxyType
 import numpy as np
 
 from ..catalog import COLUMNS
+from ..design import TEMPERATURE_RISE
+from ..physics.bearings import support_starting_torque_envelope
+from ..physics.drive import PEAK_CORNER_FRACTION
 
 PARAM_NAMES = (
     # axis
@@ -42,6 +45,8 @@ PARAM_NAMES = (
     "guide_static_load", "guide_moment_roll", "guide_moment_pitch", "guide_moment_yaw", "cross_load",
     "tool_height", "tool_offset", "cg_height", "cg_offset", "block_spacing", "rail_spacing", "gravity_cross",
     "pitch_inertia", "yaw_inertia", "guide_static_safety", "nut_static_safety", "duty_process",
+    "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed", "temperature_rise_auto",
+    "heat_transfer",
 )
 
 
@@ -52,9 +57,16 @@ PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.pa
 # numeric columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice)
 _RULE_COLUMNS = MappingProxyType({
     "screws": (), "nuts": (), "bearings": ("bore", "outer_diameter", "starting_torque"), "guides": (),
-    "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque"),
+    "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
+               "peak_corner_speed", "peak_torque_at_max_speed"),
     "couplings": ("torsional_stiffness", "inertia"),
 })
+
+
+# rule columns and the parameter each one ends in (for naming the estimates a result rests on, model.estimates)
+RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque",
+                                ("motors", "peak_corner_speed"): "motor_peak_corner_speed",
+                                ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed"})
 
 
 def columns_read(table: str) -> tuple:
@@ -86,7 +98,10 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "gravity_axial": 1.0 if axis.orientation == "vertical" else 0.0,
         "housing_compliance": _compliance(axis.bearing_housing_stiffness),
         "bracket_compliance": _compliance(axis.nut_bracket_stiffness),
-        "temperature_rise": axis.temperature_rise,
+        # a duty cycle and no temperature_rise given: the heat balance (model.heat) sets the rise
+        "temperature_rise": TEMPERATURE_RISE if axis.temperature_rise is None else axis.temperature_rise,
+        "temperature_rise_auto": 1.0 if (axis.temperature_rise is None and axis.duty_cycle) else 0.0,
+        "heat_transfer": 0.0 if axis.heat_transfer is None else axis.heat_transfer,
         "pretension": 0.0 if axis.pretension is None else axis.pretension,
         "pretension_auto": 1.0 if (axis.pretension is None and mounting == "fixed-fixed") else 0.0,
     }
@@ -94,11 +109,13 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
     for table, row in (("screws", screw), ("nuts", nut), ("bearings", bearing), ("guides", guide)):
         for column, param in PART_PARAMS[table]:
             p[param] = col(row, column)
+    dm = 0.5 * (col(bearing, "bore") + col(bearing, "outer_diameter"))
     p.update({
         "nut_double": _is_type(nut, "double"),
-        "bearing_mean_diameter": 0.5 * (col(bearing, "bore") + col(bearing, "outer_diameter")),
-        # starting torque of the support unit where its vendor lists it (eq. 40 otherwise)
-        "bearing_torque": _listed_or(torque, 0.0),
+        "bearing_mean_diameter": dm,
+        # starting torque of the support unit where its vendor lists it; else the upper envelope of the vendor
+        # values per preload and mean diameter (physics.bearings.support_starting_torque_envelope)
+        "bearing_torque": _listed_or(torque, support_starting_torque_envelope(p["bearing_preload"], dm)),
         "bearing_torque_listed": np.isfinite(torque) * 1.0,
         "guide_roller": _is_type(guide, "roller"),
     })
@@ -141,11 +158,12 @@ def drive_params(axis, motor, coupling) -> dict:
     ratio = axis.reduction_ratio
     q = {"reduction_ratio": ratio, "reduction_efficiency": axis.reduction_efficiency,
          "reduction_inertia": axis.reduction_inertia, "max_inertia_ratio": axis.max_inertia_ratio,
-         "brake_safety": axis.brake_safety}
+         "brake_safety": axis.brake_safety, "rms_torque_ratio": axis.rms_torque_ratio}
     if motor is None:
         rotor = axis.motor_inertia
         q.update({"has_motor": 0.0, "motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0,
-                  "motor_brake_torque": 0.0, "motor_price": 0.0})
+                  "motor_brake_torque": 0.0, "motor_price": 0.0, "motor_peak_corner_speed": 1.0,
+                  "motor_peak_at_max_speed": 1.0})
     else:
         rotor = col(motor, "rotor_inertia")
         if axis.brake_used:  # the brake adds its inertia (catalog value; the plain rotor where none is listed)
@@ -153,6 +171,11 @@ def drive_params(axis, motor, coupling) -> dict:
         brake = _listed_or(col(motor, "brake_torque"), 0.0)
         q.update({"has_motor": 1.0, "motor_brake_torque": brake})
         q.update({param: col(motor, column) for column, param in PART_PARAMS["motors"]})
+        # the intermittent zone's corner points where the vendor lists them, else the conservative estimate
+        q["motor_peak_corner_speed"] = _listed_or(
+            col(motor, "peak_corner_speed"),
+            np.minimum(col(motor, "rated_speed"), PEAK_CORNER_FRACTION * col(motor, "max_speed")))
+        q["motor_peak_at_max_speed"] = _listed_or(col(motor, "peak_torque_at_max_speed"), col(motor, "rated_torque"))
     if coupling is None:
         q.update({"has_coupling": 0.0, "coupling_stiffness": axis.coupling_stiffness,
                   "coupling_inertia": axis.coupling_inertia, "coupling_rated_torque": 1.0,

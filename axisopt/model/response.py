@@ -21,6 +21,7 @@ from .checks import checks
 from .cost import cost
 from .drag import drag_torque
 from .drive import drive
+from .heat import heat_balance, with_temperature
 from .loads import axial_loads, masses
 from .modes import axial_modes, damping, drive_train_modes
 
@@ -28,7 +29,7 @@ from .modes import axial_modes, damping, drive_train_modes
 CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupling", "k_nut", "k_nut_unloaded",
                            "c_bracket", "c_housing", "k_bearing", "k_drive", "k_total", "thermal_displacement",
                            "m_eff", "f_axial", "f_table", "f1", "k_tool", "c_rocking", "k_pitch", "k_yaw",
-                           "f_pitch", "f_yaw", "kv"})
+                           "f_pitch", "f_yaw", "kv", "thermal_growth"})
 
 
 def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True,
@@ -48,10 +49,13 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     scalars (``k_nut``, ``k_bearing``, ``f_table``, ``drag_torque``, masses, ``cost``, loads) and
     ``margin_<check>`` for each of :data:`CHECKS` (>= 1 passes).
     """
+    heat = heat_balance(p, preload)
+    p = with_temperature(p, heat)
     m = masses(p)
     loads = axial_loads(p, m["moving_mass"])
     loads.update(carriage_loads(p, m["moving_mass"]))
     out = {}
+    out.update(heat)
     out.update(m)
     out.update(loads)
     if chain or extras:
@@ -80,6 +84,7 @@ def drive_response(p: dict, preload) -> dict:
     from the same sub-assemblies without the stiffness chain and the modes: for the searches, which screen
     the mechanics once per combination of screw, nut, bearing and guide and then each drive against it, and
     solve the preload against the motor-torque limits (which depend on it through the nut's drag only)."""
+    p = with_temperature(p, heat_balance(p, preload))
     m = masses(p)
     loads = axial_loads(p, m["moving_mass"])
     out = drag_torque(p, preload, loads)

@@ -13,7 +13,8 @@ __all__ = [
     "radial_from_axial_eq27", "radial_from_axial_catalog", "RADIAL_FROM_AXIAL_METHODS", "radial_from_axial",
     "radial_stiffness_eq20", "radial_stiffness_palmgren", "radial_stiffness_kramer",
     "RADIAL_STIFFNESS_METHODS",
-    "bearing_radial_stiffness", "bearing_friction_torque",
+    "bearing_radial_stiffness", "bearing_friction_torque", "SUPPORT_TORQUE_ENVELOPE",
+    "support_starting_torque_envelope",
 ]
 
 # Seed Table 2, c_type of eq. 20 by angular-contact series (C: 15 deg, AC: 25 deg).  The extracted table is
@@ -156,3 +157,26 @@ def bearing_friction_torque(f0, f1, viscosity, speed, mean_diameter, load):
     m0 = mx.if_else(nu_n >= 2000.0, 1e-7 * f0 * mx.fmax(nu_n, 2000.0) ** (2.0 / 3.0) * dm**3,
                     160e-7 * f0 * dm**3)
     return 1e-3 * (m0 + f1 * load * dm)
+
+
+# Upper envelope of the vendors' starting torque of preloaded support-bearing sets per unit preload and mean
+# diameter, T_start / (F_pr d_m), over every shipped catalog row that lists both (HIWIN WBK H-BS Table 8.12,
+# NSK TAC B NSK-SP p. 168, Schaeffler ZKLN M_RL H-BS Tables 8.38/8.40; catalogs/SOURCES.md "Estimated support
+# drag").  Largest observed: INA ZKLN1034, 0.06 N.m / (735 N x 22 mm) = 3.71e-3; rounded up.
+# tests/core/test_catalog.py checks that no vendor row lies above it.
+SUPPORT_TORQUE_ENVELOPE = 3.72e-3
+
+
+def support_starting_torque_envelope(preload, mean_diameter, coefficient=SUPPORT_TORQUE_ENVELOPE):
+    r"""Conservative starting torque of a preloaded support-bearing set whose vendor lists none.
+
+    .. math:: M = c_{max} F_{pr} d_m,\quad c_{max} = \max_{\text{vendor rows}} M_{vendor} / (F_{pr} d_m)
+
+    The vendors' starting torques scale with preload times pitch radius (NSK TAC B, HIWIN WBK, ZKLN; ratio
+    spread x2.6 over bores 10-60 mm); the estimate takes the upper envelope, so a part without a vendor value
+    is never credited with less drag than the worst comparable vendor part (seed eq. 40 reads 4-9x below the
+    vendor values and is not used for the drag).
+    preload : F_pr of the set [N];  mean_diameter : d_m = (d + D)/2 [m];  coefficient : c_max [-].
+    Returns M [N*m].
+    """
+    return coefficient * preload * mean_diameter

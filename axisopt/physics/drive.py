@@ -100,6 +100,28 @@ def phase_torques(phases, total_inertia, lead, friction_torque, gravity_torque, 
     return out
 
 
+# Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (2), p. 7-4: the maximum torque governs the
+# acceleration "in a low-speed rotation range (approximately less than half of the servomotor maximum speed)";
+# beyond it the torque characteristics of the high-speed range apply.  The estimated corner of the peak zone
+# where a vendor prints no curve values is the lower of the rated speed and this fraction of the max speed.
+PEAK_CORNER_FRACTION = 0.5
+
+
+def peak_torque_available(speed, peak_torque, corner_speed, peak_at_max_speed, max_speed):
+    r"""Peak (intermittent-zone) torque a servo motor can give at a speed, from two corner points of the vendor's
+    torque-speed curve: flat to the corner speed, then falling linearly to its value at max speed.
+
+    .. math:: T_{pk}(n) = T_{pk} - (T_{pk} - T_{pk,max}) \min(1, \max(0, n - n_c) / (n_{max} - n_c))
+
+    speed : n [rad/s];  peak_torque : T_pk [N m];  corner_speed : n_c [rad/s];  peak_at_max_speed : T_pk,max [N m]
+    max_speed : n_max [rad/s].  Returns [N m].  Yaskawa Sigma-7 "Torque-Motor Speed Characteristics" (A:
+    continuous, B: intermittent duty zone), Siemens 1FT7 "Mmax" characteristic; a speed above max is held at
+    the max-speed value (the motor speed check refuses it)."""
+    over = mx.fmax(speed - corner_speed, 0.0)
+    frac = mx.fmin(over / mx.fmax(max_speed - corner_speed, 1e-9), 1.0)
+    return peak_torque - (peak_torque - peak_at_max_speed) * frac
+
+
 def linear_rms_torque(torques, durations):
     r"""RMS torque over phases whose torque varies linearly from T0 to T1 (exact for jerk-limited ramps):
     :math:`\sqrt{\sum t_i (T_0^2 + T_0 T_1 + T_1^2)/3 \,/\, \sum t_i}` [N m] (THK eq. 48 for constant torques)."""

@@ -88,6 +88,31 @@ def move_phases(seg: Segment) -> list[Phase]:
     return out
 
 
+class Phases(tuple):
+    """The phases of a duty cycle (a tuple) and whether the heat balance sets the temperature rise (``heat``):
+    a property of the axis, the same for every design, so the model branches on it in Python instead of
+    carrying both forms symbolically.  Equal only with the same phases and flag (cache keys)."""
+
+    heat: bool = False
+
+    def __new__(cls, phases=(), heat: bool = False):
+        obj = super().__new__(cls, phases)
+        obj.heat = bool(heat)
+        return obj
+
+    def __eq__(self, other):
+        return tuple.__eq__(self, other) and getattr(other, "heat", False) == self.heat
+
+    def __ne__(self, other):
+        return not self.__eq__(other)
+
+    def __hash__(self):
+        return hash((tuple(self), self.heat))
+
+    def __reduce__(self):
+        return (Phases, (tuple(self), self.heat))
+
+
 def cycle_phases(segments) -> tuple[Phase, ...]:
     """All phases of a duty cycle, in order."""
     out: list[Phase] = []

@@ -78,6 +78,9 @@ def evaluation_dict(ev: Evaluation) -> dict:
                                       for k, c in ev.components().items()},
         "nut_backlash_um": v["backlash"] * 1e6,
         "pretension_N": v["pretension"],
+        "friction_power_W": v["friction_power"], "temperature_rise_K": v["temperature_rise"],
+        "heat_balance_rise_K": v["heat_balance_rise"], "heat_transfer_W_per_m2K": v["heat_transfer"],
+        "thermal_growth_um": v["thermal_growth"] * 1e6,
         "thermal_displacement_mm": (np.asarray(v["thermal_displacement"]) * 1e3).tolist(),
         "drive_train_modes_Hz": [np.asarray(v["f_axial_torsional"]).tolist(),
                                  np.asarray(v["f_axial_torsional_2"]).tolist()],
@@ -111,6 +114,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "guide_max_block_load_N": v["guide_max_load"], "guide_static_safety": v["guide_static_safety"],
         "guide_mean_block_load_N": v["guide_mean_load"], "nut_static_safety": v["nut_static_safety"],
         "servo": servo_dict(servo_response(ev), v["kv"]),
+        "estimated": [e.to_dict() | {"moves": w} for e, w in estimates(ev) if w],
     }
 
 
@@ -221,7 +225,39 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.extend(drive_lines(ev))
     lines.extend(servo_lines(servo_response(ev)))
     lines.extend(check_lines(ev))
+    lines.extend(estimate_lines(ev))
     return "\n".join(lines)
+
+
+# outputs an evaluation names the estimates of (besides the checks near their limit)
+_EST_OUTPUTS = (("k_total", "min stiffness"), ("f1", "min frequency"), ("drag_torque", "drag torque"),
+                ("life", "nut life"))
+NEAR_LIMIT = 1.1  # a check with margin below this counts as near its limit
+
+
+def estimates(ev: Evaluation) -> list:
+    """[(Estimate, [what it moves])] for the design's estimated part values except prices (which move only the
+    cost and are always illustrative): the key outputs and the checks within 10 % of their limit."""
+    from ..model.estimates import design_estimates, resting_on
+
+    est = [e for e in design_estimates(ev.design) if "price" not in e.column]
+    if not est:
+        return []
+    near = [f"margin_{c}" for c in CHECKS if float(ev.values[f"margin_{c}"]) < NEAR_LIMIT]
+    names = dict(_EST_OUTPUTS) | {m: f"check {m[7:].replace('_', ' ')}" for m in near}
+    moved = resting_on(ev.design, list(names), est)
+    return [(e, [names[o] for o in names if any(x is e for x in moved.get(o, ()))]) for e in est]
+
+
+def estimate_lines(ev: Evaluation) -> list:
+    rows = [(e, w) for e, w in estimates(ev) if w]
+    if not rows:
+        return []
+    out = ["", "estimated values (not in the vendor's table; catalogs/SOURCES.md) and what they move:"]
+    for e, what in rows:
+        out.extend(textwrap.wrap(f"{e.slot} {e.part} {e.column} {e.shown:.4g} {e.unit} ({e.how}) moves "
+                                 f"{', '.join(what)}", WIDTH, initial_indent="  ", subsequent_indent="      "))
+    return out
 
 
 
@@ -242,9 +278,12 @@ def drive_lines(ev: Evaluation) -> list:
              f"{m['peak_torque']:.3g} N.m, max {m['max_speed'] * RPM:.0f} rpm)", f"  {cpl}, {red}",
              f"  {cycle}: {v['duty_time']:.2f} s;  friction {v['friction_torque']:.3f} N.m"
              + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else "")]
-    rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m", f"{m['peak_torque']:.3g} N.m (motor peak)"),
+    zone = "" if abs(v["needed_motor_peak_torque"] - v["peak_torque"]) <= 1e-9 * v["peak_torque"] else \
+        f" ({v['needed_motor_peak_torque']:.3f} referred to the zone)"
+    rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m{zone}",
+             f"{m['peak_torque']:.3g} N.m (motor peak, zone by speed)"),
             ("RMS torque, mean thrust", f"{v['rms_torque']:.3f}, {v['mean_thrust_torque']:.3f} N.m",
-             f"{m['rated_torque']:.3g} N.m (rated)"),
+             f"{a.rms_torque_ratio:g} x {m['rated_torque']:.3g} N.m (rated)"),
             ("motor speed", f"{v['motor_speed'] * RPM:.0f} rpm", f"{m['max_speed'] * RPM:.0f} rpm (max)"),
             ("inertia ratio load/rotor", f"{v['inertia_ratio']:.2f} ({v['load_inertia'] * 1e4:.3g} kg.cm^2)",
              f"{a.max_inertia_ratio:g} (axis.max_inertia_ratio)")]
@@ -265,8 +304,19 @@ def drive_lines(ev: Evaluation) -> list:
 def _thermal_line(ev: Evaluation) -> str:
     a, v = ev.design.axis, ev.values
     u = np.asarray(v["thermal_displacement"])
-    text = (f"thermal: +{a.temperature_rise:g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
+    text = (f"thermal: +{float(v['temperature_rise']):.3g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
             f"(alpha 11.6e-6/K, HIWIN F 3.36)")
+    used = a.temperature_rise is None and a.duty_cycle
+    how = ("rise from the heat balance of the duty cycle" if used else
+           "rise as given; the heat balance" if a.temperature_rise is not None else
+           "rise: default (THK A-715), no duty cycle; the heat balance of continuous rapids")
+    film = "Jungnickel rotating shaft, Holman free convection" if a.heat_transfer is None else "axis.heat_transfer"
+    rise = "" if used else f" would give +{float(v['heat_balance_rise']):.3g} K"
+    balance = (f"{how}: friction power {float(v['friction_power']):.3g} W (nut and bearings at the cycle's mean "
+               f"screw speed), film {float(v['heat_transfer']):.3g} W/(m^2.K) "
+               f"({film}) over the screw surface"
+               f"{rise}")
+    text += "\n" + "\n".join(textwrap.wrap(balance, WIDTH, initial_indent="  ", subsequent_indent="    "))
     if a.mounting == "fixed-fixed":
         text += (f"\n  pretension {v['pretension'] / 1e3:.1f} kN "
                  f"({'absorbs the rise' if a.pretension is None else 'as given'}), bearing static load "

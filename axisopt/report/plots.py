@@ -28,7 +28,8 @@ def duty_points(ev: Evaluation) -> dict | None:
     n, t = [], []
     from ..model import design_params, drive_response
 
-    torques = drive_response(design_params(d), d.preload)["duty_torques"]  # per phase; not a Function output
+    prm = design_params(d)
+    torques = drive_response(prm, d.preload)["duty_torques"]  # per phase; not a Function output
     for (v0, v1), (t0, t1) in zip(speeds, torques):
         n += [v0 * to_rpm, v1 * to_rpm]
         t += [float(t0), float(t1)]
@@ -38,7 +39,11 @@ def duty_points(ev: Evaluation) -> dict | None:
     return {"speed_rpm": n, "torque_Nm": t, "rms_torque_Nm": float(v["rms_torque"]),
             "mean_speed_rpm": mean * to_rpm, "rated_torque_Nm": float(m["rated_torque"]),
             "peak_torque_Nm": float(m["peak_torque"]), "rated_speed_rpm": float(m["rated_speed"]) * RPM,
-            "max_speed_rpm": float(m["max_speed"]) * RPM, "motor": str(m["id"])}
+            "max_speed_rpm": float(m["max_speed"]) * RPM, "motor": str(m["id"]),
+            # the intermittent zone the check uses (vendor corner points or their estimate) and the RMS bound
+            "zone_speed_rpm": [0.0, float(prm["motor_peak_corner_speed"]) * RPM, float(m["max_speed"]) * RPM],
+            "zone_torque_Nm": [float(m["peak_torque"]), float(m["peak_torque"]), float(prm["motor_peak_at_max_speed"])],
+            "rms_limit_Nm": float(prm["rms_torque_ratio"]) * float(m["rated_torque"])}
 
 
 def _torque_speed(ax, pts: dict, label: str, color) -> None:
@@ -49,8 +54,11 @@ def _torque_speed(ax, pts: dict, label: str, color) -> None:
     nr, nm = pts["rated_speed_rpm"], pts["max_speed_rpm"]
     ax.plot([0, nr, nr], [pts["rated_torque_Nm"], pts["rated_torque_Nm"], 0], "-", color=color, lw=2, alpha=0.5,
             label=f"{pts['motor']}: rated torque to rated speed")
-    ax.plot([0, nm, nm], [pts["peak_torque_Nm"], pts["peak_torque_Nm"], 0], "--", color=color, lw=1.5,
-            alpha=0.5, label=f"{pts['motor']}: peak torque, max speed (checked)")
+    zs, zt = pts["zone_speed_rpm"], pts["zone_torque_Nm"]
+    ax.plot(zs + [nm], zt + [0], "--", color=color, lw=1.5, alpha=0.5,
+            label=f"{pts['motor']}: intermittent zone, max speed (checked)")
+    ax.axhline(pts["rms_limit_Nm"], color=color, lw=1, ls=":", alpha=0.6,
+               label=f"{pts['motor']}: RMS limit (rms_torque_ratio x rated)")
 
 
 def distinct_labels(items, prefix=None) -> list:
@@ -67,7 +75,7 @@ def distinct_labels(items, prefix=None) -> list:
 def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None):
     """Stiffness and first natural frequency over the stroke, one line per evaluation; with a motor, a
     torque-speed panel: the duty-cycle points against the motor's rated and peak torque and speed limits
-    (the limits the checks use; a vendor's curve also drops the peak torque at high speed).  ``limits``
+    (the limits the checks use: the intermittent zone falling from its corner speed to max speed).  ``limits``
     (optional) maps 'min_stiffness' [N/m] and 'min_frequency' [Hz] to the problem's limits, drawn as
     dashed lines.  Returns the matplotlib Figure (not registered with pyplot); written to ``path`` only when
     one is given."""

@@ -82,7 +82,28 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     if sensitivities and res.best is not None and method not in ("bonmin", "scip"):
         res.binding = limit_sensitivities(problem, res, space=space)
         res.time = time.perf_counter() - t0
+    if res.best is not None and res.best.design is not None:
+        res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in spec.terms])
     return res
+
+
+def estimated_at_optimum(problem: Problem, res: SolveResult, objective_outputs) -> tuple:
+    """What of the optimum rests on estimated part values (``Certificate.estimated``): the objective, the
+    limits at their bound or binding by the sensitivities, the checks at their limit."""
+    from ..model.estimates import binding_estimates
+
+    binding = {b.limit for b in res.binding if b.binding}
+    limits = [(k, v) for k, v in problem.limits]
+    found = binding_estimates(res.best.design, limits, objective_outputs)
+    seen = {r.what for r in found}
+    extra = [(k, v) for k, v in limits if k in binding and k not in seen]
+    if extra:  # binding by relaxation though not at its bound (a discrete step): its output's estimates
+        from ..model.estimates import Resting, resting_on
+
+        outs = {k: LIMITS[k].output for k, _ in extra}
+        moved = resting_on(res.best.design, list(outs.values()))
+        found += [Resting(k, o, tuple(moved[o])) for k, o in outs.items() if moved.get(o)]
+    return tuple(r.to_dict() for r in found)
 
 
 def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0) -> SolveResult:

@@ -96,6 +96,9 @@ class Certificate:
     # combinations never formed (not in ``combinations``): a (motor, coupling) pair whose coupling is dominated
     # by another or cannot carry the motor's peak torque
     pruned_by_dominance: int = 0
+    # the objective and the active limits and checks of the best design that rest on estimated part values (not
+    # the vendor's table): model.estimates.Resting.to_dict() each; empty when every active value is a vendor's
+    estimated: tuple = ()
 
     def to_dict(self) -> dict:
         return {k: _clean(v) for k, v in asdict(self).items()}

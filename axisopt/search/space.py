@@ -411,6 +411,18 @@ class Space:
                 None if ci is None else self.couplings.iloc[ci])
 
 
+def vendor_filled(df: pd.DataFrame, table: str) -> pd.DataFrame:
+    """The rows of a part table with a vendor value in every column the model would otherwise estimate
+    (``catalog.COLUMNS``: an optional column with an ``estimate``)."""
+    from ..catalog import COLUMNS
+
+    keep = np.ones(len(df), dtype=bool)
+    for c in COLUMNS[table]:
+        if c.estimate and c.name in df.columns:
+            keep &= np.isfinite(df[c.name].to_numpy(dtype=float))
+    return df[keep]
+
+
 def build_space(problem: Problem) -> Space:
     cat = problem.catalog
     r = problem.restrictions
@@ -430,6 +442,9 @@ def build_space(problem: Problem) -> Space:
 
     screws, nuts = by_status(screws, "screw"), by_status(nuts, "nut")
     bearings, guides = by_status(bearings, "bearing"), by_status(guides, "guide")
+    if r.estimated == "exclude":  # vendor values only: no row with an empty cell the model would estimate
+        screws, nuts = vendor_filled(screws, "screws"), vendor_filled(nuts, "nuts")
+        bearings, guides = vendor_filled(bearings, "bearings"), vendor_filled(guides, "guides")
     if r.nut_types is not None:
         nuts = nuts[nuts["type"].isin(r.nut_types)]
     if r.bearing_arrangements is not None:
@@ -514,6 +529,8 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     motors = _filtered(cat.motors, r, "motor", r.motor_series, r.motor_vendors)
     if r.max_motor_flange is not None:  # a motor without a listed flange cannot be shown to fit
         motors = motors[(motors["flange"] <= r.max_motor_flange * (1 + 1e-9)).to_numpy()]
+    if r.estimated == "exclude":
+        motors = vendor_filled(motors, "motors")
     couplings = _filtered(cat.couplings, r, "coupling", r.coupling_series)
     n_couplings = len(couplings)
     if len(couplings) and not r.required("coupling"):
@@ -567,15 +584,17 @@ def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np
     if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor): nothing to bound
         return v_lo
     thrust = "thrust_torque" if c.key == "margin_motor_peak_torque" else "mean_thrust_torque"
-    need_lo = np.asarray(out_lo["peak_torque" if c.key == "margin_motor_peak_torque" else "rms_torque"])
-    need_lo = np.maximum(need_lo, np.asarray(out_lo[thrust]))
+    # what the margin compares the torque with (the peak: the zone at each phase's speed, referred to the flat
+    # peak; the RMS: rms_torque_ratio x rated), recovered exactly from the margin at the interval's low end
+    need_lo = np.asarray(out_lo["needed_motor_peak_torque" if c.key == "margin_motor_peak_torque"
+                                else "needed_motor_rated_torque"])
     available = v_lo * need_lo
     ends = [(_interval_min_abs(a0, b0), _interval_min_abs(a1, b1))
             for (a0, a1), (b0, b1) in zip(out_lo["duty_torques"], out_hi["duty_torques"])]
-    if c.key == "margin_motor_peak_torque":
+    if c.key == "margin_motor_peak_torque":  # each phase's smallest |T| referred to the flat peak (zone factor)
         lb = np.asarray(out_lo[thrust])
-        for m0, m1 in ends:
-            lb = np.maximum(lb, np.maximum(m0, m1))
+        for (m0, m1), k in zip(ends, out_lo["zone_factors"]):
+            lb = np.maximum(lb, np.maximum(m0, m1) * k)
     else:
         total = sum(ph.duration for ph in phases)
         acc = 0.0

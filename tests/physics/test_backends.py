@@ -73,6 +73,11 @@ CASES = [
          fixed=dict(mounting="fixed-supported"), label="-fs"),
     case(screw.torsion_axial_stiffness, kw=dict(torsional_stiffness=1e4, lead=0.01)),
     case(thermal.thermal_growth, kw=dict(length=1.0, temperature_rise=3.0)),
+    case(thermal.rotating_shaft_heat_transfer, kw=dict(speed=(10.0, 100.0, 300.0), radius=0.02)),
+    case(thermal.free_convection_temperature_rise, kw=dict(friction_power=(10.0, 50.0, 100.0), diameter=0.04,
+                                                           area=0.1)),
+    case(thermal.friction_temperature_rise, kw=dict(friction_power=(10.0, 50.0, 100.0), heat_transfer=20.0,
+                                                    area=0.1)),
     case(thermal.restrained_thermal_force, kw=dict(root_diameter=0.03, temperature_rise=3.0)),
     case(thermal.thermal_force_elastic_ends, kw=dict(root_diameter=0.03, span=1.0, temperature_rise=3.0,
                                                     k_bearing_set=8e8)),
@@ -127,6 +132,7 @@ CASES = [
             f0=4.0, f1=3e-4, viscosity=(1e-6, 30e-6, 100e-6), speed=20.0, mean_diameter=0.05, load=2000.0
         ),
     ),
+    case(bearings.support_starting_torque_envelope, kw=dict(preload=(500.0, 2000.0, 3900.0), mean_diameter=0.056)),
     case(guides.guide_tangential_stiffness, kw=dict(normal_stiffness=4e8)),
     case(guides.guide_ball_stiffness, kw=dict(preload_per_ball=50.0, deflection_constant=1e-7)),
     case(

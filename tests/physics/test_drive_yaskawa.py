@@ -33,7 +33,9 @@ def _params(mass_lead_screw, coupling_inertia, ratio, reduction_inertia, rotor, 
          "axial_load": 0.0, "mean_axial_load": 0.0, "has_motor": 1.0, "has_coupling": 0.0,
          "max_inertia_ratio": 35.0, "brake_safety": 2.0, "motor_brake_torque": 0.0,
          "coupling_rated_torque": 1.0, "coupling_max_speed": 1.0}
-    p.update({"motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0})
+    # Yaskawa's selection rule: RMS torque within the rated torque (no margin, sec. 2.4.1)
+    p.update({"motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0, "rms_torque_ratio": 1.0,
+              "motor_peak_corner_speed": 1.0, "motor_peak_at_max_speed": 1.0})
     p.update(motor)
     return p
 
@@ -77,7 +79,10 @@ def test_position_control_example_selects_sgm7j_01a():
     for mid, m in sgm7j.iterrows():
         p = _params((lead, 0.016, 0.8), j_coupling, 1.0, 0.0, float(m["rotor_inertia"]),
                     motor_rated_torque=float(m["rated_torque"]), motor_peak_torque=float(m["peak_torque"]),
-                    motor_max_speed=float(m["max_speed"]))
+                    motor_max_speed=float(m["max_speed"]),
+                    # the intermittent zone the model estimates where the vendor prints no corner values
+                    motor_peak_corner_speed=min(float(m["rated_speed"]), 0.5 * float(m["max_speed"])),
+                    motor_peak_at_max_speed=float(m["rated_torque"]))
         p["duty"] = phases
         out = drive(p, mass, drag)
         assert out["friction_torque"] == pytest.approx(0.139, abs=0.0005)

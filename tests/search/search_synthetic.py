@@ -107,12 +107,18 @@ def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2) -> 
         t = rng.uniform(2.0, 15.0)
         j = rng.uniform(2e-4, 3e-3)
         brake = bool(rng.random() < 0.6)
+        # intermittent-zone corner points (issue 26): half the motors list them, the rest take the estimate; a
+        # generator of its own so that the draws above keep their sequence
+        zr = np.random.default_rng(7919 + i)
+        listed = bool(zr.random() < 0.5)
         motors.append({"id": f"M{i}", "vendor": "V", "series": "synthetic", "rated_power": t * 300.0,
                        "rated_torque": t, "peak_torque": 3.0 * t, "rated_speed": 2000 * RPM,
                        "max_speed": rng.uniform(2500, 6000) * RPM, "rotor_inertia": j,
                        "rotor_inertia_brake": 1.1 * j if brake else math.nan,
                        "brake_torque": 1.5 * t if brake else math.nan, "mass": math.nan, "flange": math.nan,
-                       "price": 200 + 80 * t})
+                       "price": 200 + 80 * t,
+                       "peak_corner_speed": zr.uniform(1000, 2500) * RPM if listed else math.nan,
+                       "peak_torque_at_max_speed": zr.uniform(1.0, 2.0) * t if listed else math.nan})
     for i in range(n_couplings):
         couplings.append({"id": f"C{i}", "vendor": "V", "series": "synthetic", "rated_torque": rng.uniform(30, 200),
                           "torsional_stiffness": rng.uniform(2e4, 3e5), "inertia": rng.uniform(1e-4, 1e-3),

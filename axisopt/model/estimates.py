@@ -1,0 +1,172 @@
+"""Which part values of a design are estimates (not the vendor's table) and which results rest on them.
+
+The optimizer goes wherever the model is optimistic, so a value the vendor does not list must never read
+better than the vendor values it stands in for, and a result that depends on one must say so.  Where a value
+is estimated is declared once with the part columns (:data:`axisopt.catalog.COLUMNS`: ``estimate`` for an
+optional column left empty, ``estimated_when`` for the row statuses whose value is derived or illustrative,
+catalogs/SOURCES.md); :func:`design_estimates` lists them for one design and :func:`resting_on` finds, by
+perturbing each estimated parameter, the outputs (a binding limit, a check at its limit, the objective)
+that move with it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from ..catalog import COLUMNS, USER_STATUS
+from ..units import DISPLAY_UNITS, unit_factor
+from .params import PART_PARAMS, RULE_PARAMS, axis_params, positions
+from .response import axis_response
+
+SLOT_TABLES = (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides"),
+               ("motor", "motors"), ("coupling", "couplings"))
+_STEP = 0.05  # relative perturbation of an estimated parameter
+_MOVES = 1e-7  # relative change of an output that counts as "rests on it"
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """A part value the model uses that is not in the vendor's table.
+
+    slot, part : the design slot ('bearing') and the part id;  column : the catalog column
+    param      : the model parameter it feeds;  value : what the model uses (SI)
+    how        : how it was estimated (the column's declaration, catalogs/SOURCES.md)
+    """
+
+    slot: str
+    part: str
+    column: str
+    param: str
+    value: float
+    how: str
+    unit: str = ""  # display unit of ``shown``
+    shown: float = math.nan  # value in the display unit
+
+    def to_dict(self) -> dict:
+        d = asdict(self)
+        d["value"] = _finite(self.value)
+        d["shown"] = _finite(self.shown)
+        return d
+
+
+def _param_of(table: str, column: str) -> str | None:
+    return dict(PART_PARAMS[table]).get(column) or RULE_PARAMS.get((table, column))
+
+
+def design_estimates(design) -> list:
+    """The estimated values of a design's parts, in slot order (:class:`Estimate`)."""
+    p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
+                    design.coupling)
+    out = []
+    for slot, table in SLOT_TABLES:
+        row = getattr(design, slot, None)
+        if row is None:
+            continue
+        status = str(row.get("status", USER_STATUS)) if hasattr(row, "get") else USER_STATUS
+        pid = str(row["id"])
+        for col in COLUMNS[table]:
+            if col.kind in ("str", "int"):
+                continue
+            param = _param_of(table, col.name)
+            if param is None or param not in p:
+                continue
+            val = row.get(col.name, math.nan) if hasattr(row, "get") else math.nan
+            empty = val is None or (isinstance(val, float) and math.isnan(val))
+            how = col.estimate if (empty and col.estimate) else col.estimated_in(status, row.get("source", ""))
+            if how:
+                v = float(np.ravel(p[param])[0])
+                unit = DISPLAY_UNITS.get(col.kind, "")
+                shown = v / unit_factor(unit, col.kind) if unit else v
+                out.append(Estimate(slot, pid, col.name, param, v, how, unit, shown))
+    return out
+
+
+def _scalar(v) -> float:
+    return float(np.min(np.asarray(v, dtype=float)))
+
+
+def resting_on(design, outputs, estimates=None) -> dict:
+    """{output: [Estimate, ...]} for each of ``outputs`` (model output names; a profile output as its minimum
+    over the stroke) that changes when one estimated parameter of the design is raised by 5 %."""
+    estimates = design_estimates(design) if estimates is None else estimates
+    outputs = [o for o in dict.fromkeys(outputs)]
+    if not estimates or not outputs:
+        return {}
+    x = positions(design.axis)
+    p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
+                    design.coupling)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        base = axis_response(p, x, design.axis.mounting, design.preload)
+        ref = {o: _scalar(base[o]) for o in outputs if o in base}
+        found: dict = {}
+        for est in estimates:
+            q = dict(p)
+            q[est.param] = p[est.param] * (1.0 + _STEP) if p[est.param] != 0 else _STEP
+            out = axis_response(q, x, design.axis.mounting, design.preload)
+            for o, v0 in ref.items():
+                v1 = _scalar(out[o])
+                if math.isfinite(v0) and math.isfinite(v1) and abs(v1 - v0) > _MOVES * max(abs(v0), 1e-12):
+                    found.setdefault(o, []).append(est)
+    return found
+
+
+def _finite(v):
+    return v if isinstance(v, float) and math.isfinite(v) else None
+
+
+@dataclass(frozen=True)
+class Resting:
+    """A result of a design that moves with estimated part values.
+
+    what      : 'objective', a limit key (``max_drag_torque``) or ``check <name>``
+    output    : the model output (``drag_torque``, ``margin_nut_life``)
+    estimates : the :class:`Estimate` values it moves with
+    """
+
+    what: str
+    output: str
+    estimates: tuple
+
+    def to_dict(self) -> dict:
+        return {"what": self.what, "output": self.output, "estimates": [e.to_dict() for e in self.estimates]}
+
+    def text(self) -> str:
+        vals = "; ".join(f"{e.slot} {e.part} {e.column} {e.shown:.4g} {e.unit} ({e.how})" for e in self.estimates)
+        return f"{self.what} rests on estimated {vals}"
+
+
+ACTIVE_RTOL = 1e-4  # a limit or check within this of its bound is active (the search holds limits exactly)
+
+
+def binding_estimates(design, limits=(), objective_outputs=(), checks: bool = True) -> list:
+    """The objective and the active limits and checks of ``design`` that rest on estimated part values.
+
+    limits            : ((key, SI value), ...) of :data:`axisopt.model.limits.LIMITS` keys
+    objective_outputs : model outputs the objective is made of (``k_total``)
+    checks            : also the vendor checks at their limit (margin within :data:`ACTIVE_RTOL` of 1)
+    Returns [:class:`Resting`] (empty: every active value is a vendor value)."""
+    from .limits import CHECK_TABLE, LIMITS
+
+    x = positions(design.axis)
+    p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
+                    design.coupling)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = axis_response(p, x, design.axis.mounting, design.preload)
+    wanted = [("objective", o) for o in objective_outputs]
+    for key, value in limits:
+        lim = LIMITS[key]
+        if lim.output not in out or value == 0.0:
+            continue
+        at = _scalar(out[lim.output])
+        if abs(at - value) <= ACTIVE_RTOL * abs(value):
+            wanted.append((key, lim.output))
+    if checks:
+        for c in CHECK_TABLE:
+            m = out.get(f"margin_{c.name}")
+            if m is not None and _scalar(m) <= 1.0 + ACTIVE_RTOL:
+                wanted.append((f"check {c.name}", f"margin_{c.name}"))
+    found = resting_on(design, [o for _, o in wanted])
+    return [Resting(what, o, tuple(found[o])) for what, o in wanted if found.get(o)]

@@ -1,0 +1,93 @@
+"""Issue 26: an estimated value never wins by being optimistic, and a result says when it rests on one."""
+
+import csv
+
+import numpy as np
+import pytest
+
+from axisopt.catalog import SHIPPED_DIR, default_catalog
+from axisopt.physics.bearings import SUPPORT_TORQUE_ENVELOPE, support_starting_torque_envelope
+from axisopt.problem import load_problem
+from axisopt.search import solve
+
+VENDOR = "NSK-40TAC72B-DF-C10"  # NSK-SP p. 168: 3 900 N preload, 0.28 N.m starting torque
+COPY = "USER-40TAC72B-DF"  # the same bearing with its starting torque cell left empty
+
+PROBLEM = """name: estimates
+catalogs: [cat]
+axis:
+  stroke: 700 mm
+  moving_mass: 350 kg
+  mounting: fixed-supported
+  max_speed: 30 m/min
+  axial_load: 4000 N
+  mean_axial_load: 1500 N
+  acceleration: 4 m/s^2
+  required_life: 2000 h
+objective: stiffness
+limits:
+  max_drag_torque: 2 N.m
+catalog:
+  nut_types: [double]
+  {estimated}require: {{screw: [HIWIN-G-50x20-b6p35], bearing: [{bearings}], guide: [HIWIN-HG15-ZA]}}
+continuous:
+  nut_preload: {{min: 200 N, max: 20 kN}}
+"""
+
+
+def _problem(tmp_path, bearings, estimated=""):
+    cat = tmp_path / "cat"
+    cat.mkdir(exist_ok=True)
+    with open(SHIPPED_DIR / "bearings.csv", newline="", encoding="utf-8") as fh:
+        rows = list(csv.reader(fh))
+    head = rows[0]
+    row = next(r for r in rows if r[0] == VENDOR)
+    copy = list(row)
+    copy[0] = COPY
+    copy[head.index("starting_torque [N.m]")] = ""
+    with open(cat / "bearings.csv", "w", newline="", encoding="utf-8") as fh:
+        csv.writer(fh).writerows([head, copy])
+    path = tmp_path / "p.yaml"
+    path.write_text(PROBLEM.format(bearings=", ".join(bearings),
+                                   estimated=f"estimated: {estimated}\n  " if estimated else ""))
+    return load_problem(path)
+
+
+def test_envelope_bounds_every_vendor_starting_torque():
+    """The estimate for an empty starting-torque cell is at least the vendor value of every shipped row that
+    lists one, evaluated at that row's own preload and mean diameter (catalogs/SOURCES.md)."""
+    b = default_catalog().bearings
+    v = b[np.isfinite(b["starting_torque"].to_numpy(float))]
+    dm = 0.5 * (v["bore"] + v["outer_diameter"])
+    est = support_starting_torque_envelope(v["preload"].to_numpy(float), dm.to_numpy(float))
+    assert (est >= v["starting_torque"].to_numpy(float) - 1e-12).all()
+    # and the envelope is tight: the largest vendor ratio is within 0.5 % of it
+    assert (v["starting_torque"] / (v["preload"] * dm)).max() == pytest.approx(SUPPORT_TORQUE_ENVELOPE, rel=5e-3)
+
+
+def test_search_does_not_prefer_the_estimated_part(tmp_path):
+    """Two identical bearings, one without its vendor starting torque: the estimate is not optimistic, so the
+    drag-limited search keeps the part with the vendor value (before issue 26, eq. 40 read 0.17 N.m for the
+    copy against the vendor's 0.28 N.m and the copy won)."""
+    res = solve(_problem(tmp_path, [VENDOR, COPY]), top=2, sensitivities=False)
+    assert res.status == "optimal"
+    assert res.best.bearing == VENDOR
+    assert all(c.objective <= res.best.objective for c in res.runners_up)
+    assert res.certificate.estimated == () or all(
+        e["column"] != "starting_torque" for r in res.certificate.estimated for e in r["estimates"])
+
+
+def test_output_names_the_estimate_that_binds(tmp_path):
+    res = solve(_problem(tmp_path, [COPY]), top=1, sensitivities=False)
+    assert res.status == "optimal"
+    rest = {r["what"]: r for r in res.certificate.estimated}
+    assert "max_drag_torque" in rest
+    est = [e for e in rest["max_drag_torque"]["estimates"] if e["column"] == "starting_torque"]
+    assert est and est[0]["part"] == COPY and "envelope" in est[0]["how"]
+    assert est[0]["value"] >= 0.28
+    assert "certificate" in res.to_dict() and res.to_dict()["certificate"]["estimated"]
+
+
+def test_estimated_exclude_searches_vendor_values_only(tmp_path):
+    res = solve(_problem(tmp_path, [VENDOR, COPY], estimated="exclude"), top=2, sensitivities=False)
+    assert res.best.bearing == VENDOR and all(c.bearing != COPY for c in res.runners_up)
