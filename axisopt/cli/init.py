@@ -138,7 +138,7 @@ continuous:
   nut: HIWIN-R40-20K4-FDC
   bearing: NSK-30TAC62B-DFF-C9
   guide: HIWIN-HG15-ZA
-  motor: SGM7G-20A
+  motor: SGM7A-50A
   coupling: RINGFEDER-GWB-AKN-80
   nut_preload: 3500 N
 """,
@@ -188,7 +188,7 @@ continuous:
   nut: HIWIN-R50-40K3-FDC
   bearing: HIWIN-WBK40-DFD
   guide: HIWIN-HG25-ZA        # size 25 under an 800 kg gantry: HG15 misses its life under the cut
-  motor: HC452
+  motor: HC702
   coupling: RINGFEDER-GWB-AKN-300
   nut_preload: 4300 N
 """,
@@ -238,7 +238,7 @@ continuous:
   nut: HIWIN-R63-20K5-FDC-b635
   bearing: NSK-50TAC100B-DFF-C9
   guide: HIWIN-HG15-ZA
-  motor: HC352
+  motor: HC452
   coupling: RINGFEDER-GWB-AKN-150
   nut_preload: 2850 N
 """,
