@@ -581,6 +581,11 @@ class Stribeck(Effect):
         )
 
 
+def _top_friction_speed(ctx) -> float:
+    """The largest |velocity| of the friction data [m/s]: the scale of the speed-dependent friction effects."""
+    return max(float(np.max(np.abs(o.feature("velocity")))) for o in ctx.obs if o.kind == "friction")
+
+
 @register_effect
 class Viscous(Effect):
     name = "viscous"
@@ -589,7 +594,7 @@ class Viscous(Effect):
     signature = "residual linear and odd in v (model-discrepancy.md #7)"
 
     def params(self, ctx):
-        v = max(float(np.max(np.abs(o.feature("velocity")))) for o in ctx.obs if o.kind == "friction")
+        v = _top_friction_speed(ctx)
         typ = max(ctx.plant.coulomb, 10.0) / v
         return [
             Param(
@@ -702,7 +707,7 @@ class QuadraticDrag(Effect):
     signature = "residual odd in v and growing faster than v: c v|v| (seals, lubricant churning)"
 
     def params(self, ctx):
-        v = max(float(np.max(np.abs(o.feature("velocity")))) for o in ctx.obs if o.kind == "friction")
+        v = _top_friction_speed(ctx)
         fc = max(ctx.plant.coulomb, 10.0)
         return [
             Param(

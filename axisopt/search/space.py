@@ -31,13 +31,11 @@ import pandas as pd
 from .. import model
 from ..catalog import USER_STATUS
 from ..errors import InputError
-from ..model.limits import CHECK_RECORDS, CHECK_TABLE, CONVEX, LIMITS, OUTPUT_PRELOAD
+from ..model.limits import CHECK_RECORDS, CONVEX, LIMITS
 from ..model.params import columns_read
 from ..problem import Problem
 from ..units import N_PER_UM
 
-# How an output moves with the nut preload (+1, -1, CONVEX; 0 independent): declared in model.limits.
-PRELOAD_DIRECTION = {**OUTPUT_PRELOAD, **{f"margin_{c.name}": c.preload for c in CHECK_TABLE if c.preload}}
 GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a convex limit
 PROFILE = ("k_total", "f1", "k_tool", "kv")
 STIFFNESS_OUTPUTS = ("k_total", "k_tool")  # shown and scaled in N/um

@@ -131,3 +131,17 @@ def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2) -> 
         return d.set_index("id", drop=False)
 
     return dataclasses.replace(catalog, motors=df(motors, "motors"), couplings=df(couplings, "couplings"))
+
+
+def assert_same_answer(a, b, preload: bool = True):
+    """Two SolveResults give the same answer: status, objective, combination (and nut preload)."""
+    import pytest
+
+    assert a.status == b.status
+    if a.best is None:
+        assert b.best is None
+        return
+    assert a.best.objective == pytest.approx(b.best.objective, rel=1e-6)
+    assert a.best.combination == b.best.combination
+    if preload:
+        assert a.best.nut_preload == pytest.approx(b.best.nut_preload, rel=1e-5, abs=1e-3)

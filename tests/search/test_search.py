@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from search_synthetic import add_drives, make_catalog, make_double, make_problem
+from search_synthetic import add_drives, assert_same_answer, make_catalog, make_double, make_problem
 
 from axisopt import model
 from axisopt.cli import main
@@ -21,15 +21,6 @@ from axisopt.search.space import build_constraints, build_space, exact_solve, ob
 
 PROBLEMS = sorted((Path(__file__).resolve().parents[2] / "problems").glob("*_problem.yaml"))
 
-
-def _same(a, b):
-    assert a.status == b.status
-    if a.best is None:
-        assert b.best is None
-        return
-    assert a.best.objective == pytest.approx(b.best.objective, rel=1e-6)
-    assert a.best.combination == b.best.combination
-    assert a.best.nut_preload == pytest.approx(b.best.nut_preload, rel=1e-5, abs=1e-3)
 
 
 @pytest.mark.parametrize("seed", range(6))
@@ -48,7 +39,7 @@ def test_default_equals_exhaustive_randomized(seed, mode):
                      else ("fixed-supported", "fixed-fixed"))
     d = solve(p, "default", top=3, sensitivities=False)
     e = solve(p, "exhaustive", top=3, sensitivities=False)
-    _same(d, e)
+    assert_same_answer(d, e)
     if d.best is not None:
         assert d.certificate.proven and d.certificate.gap == 0.0
         assert [c.combination for c in d.runners_up] == [c.combination for c in e.runners_up]
@@ -75,7 +66,7 @@ def test_default_equals_exhaustive_carriage(seed, mode):
     p = make_problem(cat, mode=mode, limits=limits, **axis)
     d = solve(p, "default", top=3, sensitivities=False)
     e = solve(p, "exhaustive", top=3, sensitivities=False)
-    _same(d, e)
+    assert_same_answer(d, e)
     if d.best is not None:
         assert d.certificate.proven
         assert [c.combination for c in d.runners_up] == [c.combination for c in e.runners_up]
@@ -115,7 +106,7 @@ def test_default_equals_exhaustive_with_drive(seed):
     assert (d.best is None) == (e.best is None)
     assert d.best is not None  # the seeds are chosen so that each case has a drive-limited optimum
     if d.best is not None:
-        _same(d, e)
+        assert_same_answer(d, e)
         assert d.best.motor and d.best.coupling
         ev = model.evaluate(d.best.design)
         for c in model.DRIVE_CHECKS:
@@ -189,7 +180,7 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
 def _interior(p, key):
     d = solve(p, "default", top=1, sensitivities=False)
     e = solve(p, "exhaustive", top=1, sensitivities=False)
-    _same(d, e)
+    assert_same_answer(d, e)
     b = d.best
     sp = build_space(p)
     n = int(sp.unravel(b.combination)[1])
@@ -245,7 +236,7 @@ def test_lexicographic_equals_exhaustive():
     p = make_problem(cat, objective=ob, limits={"max_cost": 4000.0})
     d = solve(p, "default", top=2, sensitivities=False)
     e = solve(p, "exhaustive", top=2, sensitivities=False)
-    _same(d, e)
+    assert_same_answer(d, e)
     f_best = solve(p.with_objective(Objective(mode="frequency")), top=1, sensitivities=False).best.min_frequency
     assert d.best.min_frequency >= f_best * 0.95 * (1 - 1e-9)
 
@@ -456,7 +447,7 @@ def test_default_equals_exhaustive_with_heat_balance(seed):
                      axial_load=1000.0, required_life=float(rng.uniform(2e3, 1e4)) * 3600)
     d = solve(p, "default", top=3, sensitivities=False)
     e = solve(p, "exhaustive", top=3, sensitivities=False)
-    _same(d, e)
+    assert_same_answer(d, e)
     assert d.best is not None  # the seeds are chosen so that each case has an optimum
     ev = model.evaluate(d.best.design)
     assert ev.values["thermal_growth"] <= limits["max_thermal_growth"] * (1 + 1e-6)
