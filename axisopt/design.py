@@ -21,7 +21,7 @@ from .yamlio import Key, Section, Spec, read_yaml
 
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
 
-# Defaults of the axis values no catalog row carries, with their sources (README "What the model assumes").
+# Defaults of the axis values no catalog row carries, with their sources (docs/assumptions.md).
 # Bearing housing and nut bracket: no vendor publishes a value (THK A-707: "set the rigidity as high as
 # possible"; THK and NSK rigidities exclude them), so they are rigid unless the YAML gives them.
 # Coupling: RINGFEDER GWB AKN size 60 metal-bellows coupling (Tech Paper EN 08.2019): 75e3 N.m/rad,
@@ -49,7 +49,7 @@ RMS_TORQUE_RATIO = 0.8
 # prints 2.5 to 7 for machine tools with vibration or impact (A-95, A-703); HIWIN G99TE20 Table 1-1: 3 to 5.
 GUIDE_STATIC_SAFETY = 5.0
 NUT_STATIC_SAFETY = 5.0
-# Geometry defaults where the YAML gives none (our assumptions, stated in the README): blocks set in from the
+# Geometry defaults where the YAML gives none (our assumptions, stated in docs/assumptions.md): blocks set in from the
 # table ends (spacing 0.6 x table length), rails 0.6 x table width apart, a table + workpiece box as wide as it
 # is long, 0.4 x its length high with the centre of gravity at half that height and the cutting point on top.
 SPACING_SHARE = 0.6

@@ -252,7 +252,7 @@ _HEADER = """\
 # {next}
 # Every quantity carries its unit ("800 mm", "3 m/s^2", "4 kN"); a bare number is refused.
 # Editor completion and checks: axisopt schema {kind} --out axisopt-{kind}.json
-# (README, "Editor support").
+# (docs/files.md, "Editor support").
 """
 _NEXT = {"design": "Evaluate it: axisopt evaluate FILE",
          "problem": "Solve it: axisopt solve FILE (exit 0 optimal, 1 infeasible)",
@@ -310,5 +310,6 @@ def cmd_init(args) -> int:
 
     write_text_atomic(str(path), text, what=f"{args.kind} YAML")
     nxt = {"design": "axisopt evaluate", "problem": "axisopt solve", "study": "axisopt study"}[args.kind]
-    print(f"{args.kind} template for a {_MACHINE[args.machine]['title']} written to {path}; next: {nxt} {path}")
+    print(f"{args.kind} template for a {_MACHINE[args.machine]['title']} written to {path}")
+    print(f"next: {nxt} {path}")
     return EXIT_OK

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import textwrap
+
 from ..errors import InputError
 from .common import EXIT_OK, stdout_taken, write_json
 
@@ -95,9 +97,10 @@ def counts_table(records) -> str:
     for r in records:
         lines.append(f"{r['kind']:<9} {r['vendor']:<16} {r['rows']:>5} {r['vendor_data']:>12} "
                      f"{r['stiffness_derived']:>18} {r['paper']:>6} {r['derived']:>8} {r['user']:>5}")
-    lines.append("vendor data: a catalog part, stiffness and load ratings from the vendor's table; stiffness derived: "
-                 "a catalog part whose vendor gives no rigidity number (rule in catalogs/SOURCES.md); derived: the "
-                 "part or its ratings computed by a rule; prices are illustrative everywhere")
+    lines += textwrap.wrap("vendor data: a catalog part, stiffness and load ratings from the vendor's table; "
+                           "stiffness derived: a catalog part whose vendor gives no rigidity number (rule in "
+                           "catalogs/SOURCES.md); derived: the part or its ratings computed by a rule; prices are "
+                           "illustrative everywhere", 100)
     return "\n".join(lines)
 
 

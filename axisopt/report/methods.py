@@ -6,6 +6,7 @@ Vendor units (N/um, um/N, Hz, deg).  Nothing here prints.
 from __future__ import annotations
 
 import math
+import textwrap
 
 import numpy as np
 
@@ -36,7 +37,8 @@ def methods_table(rows) -> str:
         else:
             shown = f"{r.value_N_per_m / N_PER_UM:,.1f}"
             note = r.note
-        lines.append(f"{mark} {comp:<10}{r.method:<34}{shown:>10}  {note}".rstrip())
+        head = f"{mark} {comp:<10}{r.method:<34}{shown:>10}  "
+        lines += textwrap.wrap(head + note, 100, subsequent_indent=" " * len(head)) if note else [head.rstrip()]
     return "\n".join(lines)
 
 

@@ -24,12 +24,28 @@ from __future__ import annotations
 import numpy as np
 
 from .. import model
+from ..model.limits import CHECK_RECORDS
 from .core import candidate_values
 from .result import Infeasibility
 from .space import COUPLING_KEYS, DRIVE_KEYS, Space, _vec, respond, respond_drive
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block
+# A compatibility rule (the bearing bore does not fit the screw end, the screw is too short: Check.relaxable
+# False) weighs this much more than a limit in the miss score, so the closest designs are ones the user can
+# free by relaxing their own limits whenever such designs exist (a bearing that does not fit is not a design).
+RULE_WEIGHT = 1000.0
+
+
+def weight(c) -> float:
+    """The weight of constraint ``c``'s relative miss in the miss score."""
+    if c.name.startswith("margin_"):
+        rec = CHECK_RECORDS.get(c.name[len("margin_"):])
+        if rec is not None and not rec.relaxable:
+            return RULE_WEIGHT
+    return 1.0
+
+
 FIRST_BATCH = 32  # blocks scored in the first round of the best-first explanation; doubles each round
 BOUND_RTOL = 1e-9  # slack on the block bounds (rounding of the same sums in another order)
 
@@ -133,9 +149,9 @@ def block_optimism(space: Space, constraints):
                     v = _favourable(c, out_lo, out_hi, shape + (1,))[..., 0]
                     pick = np.maximum if c.sense == ">=" else np.minimum
                     best[c.name][sl] = pick(best[c.name][sl], v)
-        lb = np.where(space.fits, 0.0, 1.0)
+        lb = np.where(space.fits, 0.0, RULE_WEIGHT)
         for c in bounded:
-            lb = lb + c.violation(best[c.name])
+            lb = lb + weight(c) * c.violation(best[c.name])
         out.append((best, lb))
     return out
 
@@ -216,7 +232,7 @@ def _drive_pass(space: Space, drive, tally: _Tally) -> np.ndarray:
             for c in drive:
                 v = _favourable(c, d_lo, d_hi, shape)
                 miss = c.violation(v)
-                total = total + miss
+                total = total + weight(c) * miss
                 tally.add(c, v, miss, fits)
             out[mi, sl] = total.min(axis=-1)
     return out
@@ -234,7 +250,8 @@ def _first(cand, key, n):
 
 def miss_scores(space: Space, constraints, tally: _Tally | None = None):
     """Blocks of (combination numbers, sum of relative misses) over every combination: each limit at its
-    favourable preload end, plus 1 when the bearing does not fit the screw (:func:`_score_nuts`)."""
+    favourable preload end, plus RULE_WEIGHT when the bearing does not fit the screw, a compatibility rule
+    weighted by RULE_WEIGHT (:func:`_score_nuts`)."""
     tally = tally or _Tally(constraints)
     _, N, B, G = space.shape
     D = space.n_drives if space.m_arr is not None else 1
@@ -281,7 +298,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     hi = space.preload_hi[nut_idx].reshape(-1, 1, 1, 1)
     fit_nb = space.fits[nut_idx, bearing_idx][:, None] if pairs else space.fits[nut_idx]
     fits = np.broadcast_to(fit_nb[:, :, None], shape)
-    score = np.where(fits, 0.0, 1.0)
+    score = np.where(fits, 0.0, RULE_WEIGHT)
     p = params(mechanics=two_stage)
     # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped
     # there unless one of those reads them
@@ -291,7 +308,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     for c in mech:
         v = _favourable(c, out_lo, out_hi, shape)
         miss = c.violation(v)
-        score = score + miss
+        score = score + weight(c) * miss
         tally.add(c, v, miss, fits)
     if two_stage:
         shape_d = (nc, Bx, Gm, D)
@@ -306,7 +323,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         for c in cpl:
             v = np.stack([_favourable(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
             miss = c.violation(v)
-            score += miss
+            score += weight(c) * miss
             tally.add(c, v, miss, fits_d)
         if drive:
             pd = params(mechanics=False)
@@ -314,7 +331,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
             for c in drive:
                 v = _favourable(c, d_lo, d_hi, (nc, Bx, G)).reshape(shape_d)
                 miss = c.violation(v)
-                score += miss
+                score += weight(c) * miss
                 tally.add(c, v, miss, fits_d)
     score = np.broadcast_to(score, shape_d if two_stage else shape).reshape(nc, Bx, G)
     if pairs:
