@@ -529,10 +529,11 @@ class TimeDiagnosis:
     pairs: list = field(default_factory=list)  # (round, TimeCandidate, TimeCandidate, Estimate, dBIC, gain, reason)
     unexplained: Unexplained | None = None  # structure left in the final residual
     flags: dict = field(default_factory=dict)  # 'baseline' / 'final' -> [plausibility or identifiability notes]
+    lost: LostMotion | None = None  # lost motion between motor and table (records with motor_position)
 
     @property
     def verdict(self) -> list:
-        return [c.effect.name for c in self.accepted]
+        return [c.effect.name for c in self.accepted] + (["backlash"] if self.lost and self.lost.accepted else [])
 
     @property
     def validation_mode(self) -> str:
@@ -576,6 +577,106 @@ def residual_peak(rows: Rows, est: Estimate) -> tuple:
     return float(f[band][k]), float(ps[band][k] / np.median(ps[band]))
 
 
+# ------------------------------------------------------------------------ lost motion (motor vs table position)
+LOST_MOTION_MAX = 0.2e-3  # [m] table travel: a preloaded ball-screw axis loses at most a few um; a lost motion
+#                          above 0.2 mm is a loose coupling, key or nut, reported as implausible, not fitted
+LOST_MOTION_T = 5.0  # the lost motion's estimate must be this many standard deviations above zero
+
+
+@dataclass
+class LostMotion:
+    """Motor encoder against table position: e = motor_q - q = e0 + (b/2) sgn(F) + F/k - (c/k) de/dt, F = f - m1 a1 the
+    force the transmission carries (f the effort, a1 the motor side's acceleration, m1 the motor-side mass or
+    inertia, found by a 1-D search)."""
+
+    width: float  # b, the lost motion [record coordinate]
+    width_std: float
+    stiffness: float  # k [effort / coordinate]; inf when the windup is not measurable
+    motor_mass: float  # m1 [mass or inertia]
+    rms_before: float  # [coordinate] held-out RMS of e with only offset and windup (no lost motion)
+    rms_after: float
+    gain: float  # [%]
+    reason: str = ""  # why it is not accepted ('' when it is)
+
+    @property
+    def accepted(self) -> bool:
+        return not self.reason
+
+
+def _lost_motion_rows(rows: Rows, m1: float, fmin: float):
+    """(e, columns [1, sgn F, f, a1, de/dt]) at the rows where |F| = |f - m1 a1| > fmin (the side of the gap is
+    certain there): e = e0 + (b/2) sgn F + f/k - (m1/k) a1 - (c/k) de/dt."""
+    rec = rows.record
+    if "lost_motion" not in rows.sig:  # e, the motor side's own acceleration and de/dt, filtered as the effort is
+        sm, se = signals(rec.motor_q, rows.proc), signals(rec.motor_q - rec.q, rows.proc)
+        rows.sig["lost_motion"] = decimate(np.column_stack([se["q"], sm["a"], se["v"]]), rows.proc, rows.keep)
+    e, a1, de = rows.sig["lost_motion"].T
+    F = rows.y - m1 * a1
+    ok = np.abs(F) > fmin
+    return e[ok], np.column_stack([np.ones(ok.sum()), np.sign(F[ok]), rows.y[ok], a1[ok], de[ok]])
+
+
+def lost_motion(est_rows: Rows, val_rows: list, base: Estimate, noise: float, lead_m: float = 0.0) -> LostMotion | None:
+    """The lost motion and windup between motor and table when every record has a ``motor_position`` column;
+    judged like an effect: significant, plausible and better on the held-out rows (validation runs, else
+    the estimation run's second half).  m1 enters linearly (the a1 column) but also decides which side of the
+    gap each row is on: a coarse grid, then the fit's own m1 until the sides stop changing."""
+    if est_rows.record.motor_q is None or any(v.record.motor_q is None for v in val_rows):
+        return None
+    M = max(base.value("M"), 0.0)
+    fmin = 3.0 * noise
+
+    def fit(m1):
+        e, G = _lost_motion_rows(est_rows, m1, fmin)
+        if len(e) < 20:
+            return None
+        th, *_ = np.linalg.lstsq(G, e, rcond=None)
+        return float(np.sum((e - G @ th) ** 2)), m1, th, e, G
+
+    fits = [f for f in (fit(m) for m in np.linspace(0.0, M, 21)) if f is not None]
+    if not fits:
+        return None
+    best = min(fits, key=lambda f: f[0])
+    for _ in range(20):
+        th = best[2]
+        m1 = float(np.clip(-th[3] / th[2], 0.0, M)) if th[2] > 0 else best[1]
+        if abs(m1 - best[1]) <= 1e-6 * max(M, 1e-12):
+            break
+        nxt = fit(m1)
+        if nxt is None or nxt[0] > best[0]:
+            break
+        best = nxt
+    rss, m1, th, e, G = best
+    dof = max(len(e) - G.shape[1], 1)
+    cov = rss / dof * np.linalg.pinv(G.T @ G)
+    half, half_std = float(th[1]), float(math.sqrt(max(cov[1, 1], 0.0)))
+    k = 1.0 / th[2] if th[2] > 0 else float("inf")
+    if val_rows:
+        held = [_lost_motion_rows(v, m1, fmin) for v in val_rows]
+        fit_e, fit_G = e, G
+    else:  # no validation run: fit on the first half, judge on the second
+        n2 = len(e) // 2
+        held, fit_e, fit_G = [(e[n2:], G[n2:])], e[:n2], G[:n2]
+    th_full, *_ = np.linalg.lstsq(fit_G, fit_e, rcond=None)
+    other = [0, 2, 3, 4]  # every column but the lost motion's
+    th_base, *_ = np.linalg.lstsq(fit_G[:, other], fit_e, rcond=None)
+    r_full = np.concatenate([he - hG @ th_full for he, hG in held])
+    r_base = np.concatenate([he - hG[:, other] @ th_base for he, hG in held])
+    before, after = float(np.sqrt(np.mean(r_base**2))), float(np.sqrt(np.mean(r_full**2)))
+    gain = 100.0 * (1.0 - after / before) if before > 0 else 0.0
+    width, width_std = 2.0 * half, 2.0 * half_std
+    to_q = 1.0 if est_rows.record.quantity == "force" else (2.0 * math.pi / lead_m if lead_m > 0 else float("inf"))
+    lim = LOST_MOTION_MAX * to_q
+    reason = ""
+    if width <= LOST_MOTION_T * width_std or width <= 0.0:
+        reason = f"not significant (b = {width:.3g} +- {width_std:.2g}, below {LOST_MOTION_T:g} standard deviations)"
+    elif gain < MIN_GAIN:
+        reason = f"held-out gain {gain:.1f} % < {MIN_GAIN:g} %"
+    elif width > lim:
+        reason = "would need a lost motion above 0.2 mm of table travel (a loose coupling, key or nut, not backlash)"
+    return LostMotion(width, width_std, k, m1, before, after, gain, reason)
+
+
 # ------------------------------------------------------------------------------ what remains unexplained
 @dataclass
 class Unexplained:
@@ -606,6 +707,26 @@ def noise_floor(rows: Rows) -> float:
 def _pooled(runs: list, full_cols) -> np.ndarray:
     """Columns computed at full rate on each run (``full_cols(rows) -> (N, k)``), decimated alike, stacked."""
     return np.vstack([decimate(np.asarray(full_cols(r)).reshape(r.record.n, -1), r.proc, r.keep) for r in runs])
+
+
+def since_reversal(rw: Rows) -> np.ndarray:
+    """Travel since the last reversal of the motion at every full-rate sample, in the record's coordinate:
+    the direction is sgn(v) where the axis moves faster than the record's speed threshold, held through
+    slow stretches; the travel is measured from the position where it last changed (from the first sample
+    before the first reversal)."""
+    q, v = rw.sig["q"], rw.sig["v"]
+    d = np.where(np.abs(v) >= rw.proc.vmin, np.sign(v), 0.0)
+    idx = np.where(d != 0, np.arange(len(d)), 0)
+    np.maximum.accumulate(idx, out=idx)
+    held = d[idx]  # the last non-zero direction
+    turn = np.zeros(len(d), dtype=np.int64)
+    change = np.nonzero(held[1:] * held[:-1] < 0)[0] + 1
+    turn[change] = change
+    np.maximum.accumulate(turn, out=turn)
+    return np.abs(q - q[turn])
+
+
+REVERSAL_SCALES = (0.0005, 0.002, 0.01)  # travel scales of the reversal probe, as fractions of the stroke
 
 
 def _legendre(x, deg):
@@ -695,6 +816,17 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
             f, sg = rw.record.external, np.sign(rw.sig["v"])
             return np.column_stack([f, np.abs(f), sg * np.abs(f), sg * f])
         probes.append(rs.probe("load", r, _pooled(runs, load_cols), W, neff))
+
+    def rev_cols(rw):
+        d, sg = since_reversal(rw), np.sign(rw.sig["v"])
+        cols = [np.exp(-d / (f * sq)) for f in REVERSAL_SCALES]
+        return np.column_stack(cols + [sg * c for c in cols])
+    pr = rs.probe("reversal", r, _pooled(runs, rev_cols), W, neff)
+    rev_shapes = {f: _pooled(runs, lambda rw, f=f: np.column_stack([np.exp(-since_reversal(rw) / (f * sq))]))[:, 0]
+                  for f in REVERSAL_SCALES}
+    best, _ = rs.best_shape(r, rev_shapes, W)
+    pr.detail["scale"] = best * sq
+    probes.append(pr)
 
     def acc_cols(rw):
         a, sg = rw.sig["a"], np.sign(rw.sig["v"])
@@ -868,9 +1000,10 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
             flags["final"].append(f"vs = {final.shape['vs'] * f:.3g} {u} is at the end of its search range "
                                   f"({lo * f:.3g}..{hi * f:.3g} {u}): the Stribeck velocity is not identifiable from "
                                   "this record")
+    lost = lost_motion(est_rows, val_rows, final_ls, noise_floor(est_rows), (design or {}).get("lead", 0.0))
     times = {"ls": t_ls, "iv": t_iv, "diagnose": time.perf_counter() - t0}
     return TimeDiagnosis(est.quantity, est_rows, val_rows, ctrl, base_ls, base_iv, final, final_ls, accepted,
-                         rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags)
+                         rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags, lost)
 
 
 MAX_PAIR_POOL = 6  # pairs are tried among at most this many single candidates (the best by dBIC): 15 fits
@@ -1095,12 +1228,34 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         L += _wrap(f"{q} error: {_errors(diag, diag.final)}", indent="    ")
         for f in diag.flags.get("final", []):
             L += _wrap(f"! {f}", indent="  ", cont="      ")
-    else:
+    elif not (diag.lost and diag.lost.accepted):
         L += _wrap("verdict: nothing named beyond the baseline: " + _why_none(diag), indent="", cont="  ")
+    L += _lost_motion_lines(diag)
     L += _unexplained_lines(diag)
     L += _wrap(f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves the two "
                "are the same column")
     return "\n".join(L)
+
+
+def _lost_motion_lines(diag: TimeDiagnosis) -> list:
+    lm = diag.lost
+    if lm is None:
+        return []
+    q = diag.quantity
+    b, sb = _mm(diag, lm.width) * 1e3, _mm(diag, lm.width_std) * 1e3
+    what = (f"motor_position against position: e = e0 + (b/2) sgn(F) + F/k, F = {q} - m1 a1 the force the "
+            f"transmission carries; b = {b:.3g} ± {sb:.2g} um of table travel")
+    if math.isfinite(lm.stiffness) and lm.stiffness > 0:
+        per_m = lm.stiffness / (_mm(diag, 1.0) * 1e-3)  # effort per metre of table travel
+        k_txt = f"{per_m / 1e6:.3g} N/um" if q == "force" else f"{per_m / 1e6:.3g} N.m per um of table travel"
+        what += f", windup stiffness k {k_txt}"
+    m_u = UNITS[q]["mass"][0]
+    what += (f", motor-side m1 {lm.motor_mass:.3g} {m_u}; held-out RMS of e {_mm(diag, lm.rms_before) * 1e3:.3g} -> "
+             f"{_mm(diag, lm.rms_after) * 1e3:.3g} um (gain {lm.gain:.0f} %)")
+    if lm.accepted:
+        head = "verdict: backlash (lost motion between motor and table, measured by the two encoders): "
+        return _wrap(head + what, indent="", cont="  ")
+    return _wrap(f"lost motion between motor and table not named ({lm.reason}): {what}", indent="", cont="  ")
 
 
 def _why_none(diag: TimeDiagnosis) -> str:
@@ -1162,6 +1317,11 @@ SIGNATURE_WORDS = {
         "compliant support that shifts under it, or an external_force column with a wrong sign or scale",
         "runs at one speed with different constant process forces, both directions, and a check of the force "
         "sensor's sign and calibration"),
+    "reversal": (
+        "lost motion (backlash) between the motor and the table, or the impact of taking up the lost motion "
+        "exciting the drive, or the elastic windup of a compliant transmission",
+        "record the motor encoder's position beside the table position (a motor_position column): the "
+        "diagnosis then measures the lost motion and the windup; or a reversal test per ISO 230-2 at low speed"),
     "acceleration": (
         "a dependence on acceleration beyond M a: a compliant transmission (the motor side lags), lost motion, "
         "or an inertia that differs by direction",
@@ -1204,6 +1364,10 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         what, key = "differs between the estimation and validation runs", "run"
     elif p.kind == "load":
         what, key = "depends on the external force", "load"
+    elif p.kind == "reversal":
+        what = (f"is concentrated in the first {_mm(diag, d.get('scale', 0.0)):.2g} mm of travel after each "
+                "direction reversal")
+        key = "reversal"
     else:
         what, key = "depends on acceleration beyond M a", "acceleration"
     causes, measure = SIGNATURE_WORDS[key]
@@ -1231,11 +1395,13 @@ def _unexplained_lines(diag: TimeDiagnosis) -> list:
     elif ratio > NOISE_RATIO:
         L += _wrap(f"unexplained: the residual is {ratio:.1f} times the noise floor (RMS {u.rms:.3g} {unit} "
                    f"against {u.noise:.3g} {unit}, lag-1 correlation {u.lag1:.2f}) but none of the tests over "
-                   "position, velocity, time and acceleration holds it: an effect outside the library (a "
-                   "resonance, a time delay, lost motion)", indent="", cont="  ")
+                   "position, velocity, time, reversals and acceleration holds it: an effect outside the "
+                   "library (a resonance, a time delay, or lost motion"
+                   + ("" if diag.lost is not None else ": a motor_position column beside the table's position "
+                      "measures it") + ")", indent="", cont="  ")
     else:
         L += _wrap(f"residual: no structure beyond noise (RMS {u.rms:.3g} {unit} against a {u.noise:.3g} {unit} "
-                   "noise floor; tested over position incl. its period, velocity, time and acceleration)",
+                   "noise floor; tested over position incl. its period, velocity, time, reversals and acceleration)",
                    indent="", cont="  ")
     return L
 
@@ -1287,6 +1453,10 @@ def time_diagnosis_dict(diag: TimeDiagnosis) -> dict:
                    "accepted": not why, "reason": why} for k, a, b, _e, dbic, gain, why in diag.pairs],
         "flags": diag.flags,
         "unexplained": _unexplained_dict(diag),
+        "lost_motion": None if diag.lost is None else {
+            "accepted": diag.lost.accepted, "reason": diag.lost.reason,
+            "width_um": _mm(diag, diag.lost.width) * 1e3, "width_std_um": _mm(diag, diag.lost.width_std) * 1e3,
+            "gain_percent": diag.lost.gain},
         "final": {**_est_dict(q, diag.final), "relative_error": errs(diag.final)},
         "seconds": diag.times,
     }

@@ -30,7 +30,7 @@ LOG10_P = -8.0  # ... at this significance (after the scan's Bonferroni factor)
 class Probe:
     """One structure test of the residual."""
 
-    kind: str  # 'position_periodic' | 'velocity' | 'position' | 'time' | 'acceleration' | 'run' | 'load'
+    kind: str  # 'position_periodic' | 'velocity' | 'position' | 'time' | 'reversal' | 'acceleration' | 'run' | 'load'
     #            (time records) or a recorded factor's name (tables)
     share: float  # share of the residual variance it explains [-]
     log10_p: float  # significance under white noise (n_eff, Bonferroni for scans)

@@ -12,6 +12,9 @@ Format (units in the headers, any unit of the quantity)::
   table travel through the screw lead.  ``reference`` (optional) takes the same kind of unit.
 * exactly one effort column: ``force [N]`` (table side), ``torque [N.m]`` (motor side) or ``current [A]``
   with a gain in ``N.m/A`` (motor torque) or ``N/A`` (table force).
+* ``motor_position`` (optional): the motor encoder's position, in a length unit (converted through the
+  lead by the drive) or an angle unit, beside a ``position`` measured at the table (a linear scale).  The
+  two together measure the lost motion (backlash) and the windup of the transmission (:mod:`.idim`).
 * ``external_force [N]`` (optional): a process force acting on the table (cutting, a spring, a weight),
   positive in +x.  The drive then supplies f = M a + F(v) - F_ext, so the identification fits f + F_ext;
   for torque records the force is taken to the motor as F_ext p / (2 pi eta) (lead p, screw efficiency eta).
@@ -37,7 +40,7 @@ from ..units import check_plausible, split_header, unit_factor
 
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
-COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force",)
+COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force", "motor_position")
 # angle units spelled as revolutions that the unit library does not know (it knows 'turn')
 _REV = {"rev": "turn", "revs": "turn", "revolution": "turn", "revolutions": "turn"}
 CURRENT_UNITS = {"A": 1.0, "mA": 1e-3, "kA": 1e3}
@@ -62,6 +65,7 @@ class TimeRecord:
     lines: np.ndarray
     gain_note: str = ""
     external: np.ndarray | None = None  # external force on the table in the effort's coordinate [N] or [N m]
+    motor_q: np.ndarray | None = None  # motor encoder position in the record's coordinate (as ``q``)
 
     @property
     def n(self) -> int:
@@ -97,7 +101,7 @@ def is_time_record(path) -> bool:
 
 # SI kind of each column, for the range check of every cell (current has no kind: its gain gives it one)
 _KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque",
-         "external_force": "force"}
+         "external_force": "force", "motor_position": "length"}
 
 
 def parse_gain(text: str, *, source=None, where=None) -> tuple:
@@ -234,10 +238,15 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
         jq = names.index("position") + 1
         raise InputError("the position column is constant: the axis does not move in this record", source=src,
                          where=f"column {jq} (position)")
+    motor_q = col["motor_position"] * to_q if "motor_position" in col else None
+    if motor_q is not None and float(np.ptp(motor_q)) == 0.0:
+        jm = names.index("motor_position") + 1
+        raise InputError("the motor_position column is constant: the motor does not move in this record",
+                         source=src, where=f"column {jm} (motor_position)")
     ext = None
     if "external_force" in col:
         ext = col["external_force"] * (1.0 if quantity == "force" else lead / (2.0 * math.pi * efficiency))
-    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext)
+    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext, motor_q)
 
 
 def _factor(name, unit, src, where, lead) -> float:
@@ -245,7 +254,7 @@ def _factor(name, unit, src, where, lead) -> float:
     try:
         if name == "time":
             return unit_factor(unit, "time")
-        if name in ("position", "reference"):
+        if name in ("position", "reference", "motor_position"):
             try:
                 return unit_factor(unit, "length")
             except ValueError:

@@ -115,6 +115,9 @@ class Record:
                 "force": (eff, head, "{:.6g}"), "reference": (ref, f"reference [{ph}]", "{:.6g}")}
         if "external_force" in self.extra:
             data["external_force"] = (self.extra["external_force"], "external_force [N]", "{:.6g}")
+        if "motor_position" in self.extra:
+            mp = self.extra["motor_position"] * (1e3 if position_unit == "mm" else 2 * math.pi / lead)
+            data["motor_position"] = (mp, f"motor_position [{ph}]", "{:.9g}")
         from ..fileio import open_output
 
         with open_output(path, "w", what="time record") as fh:
@@ -176,8 +179,10 @@ def trapezoid_reference(duration: float, fs: float, stroke: float, seed: int,
 
 
 def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = None, *, duration: float = 12.0,
-                  seed: int = 0, reference_seed: int | None = None) -> Record:
-    """Simulate the closed loop; see the module docstring."""
+                  seed: int = 0, reference_seed: int | None = None, record_motor: bool = False) -> Record:
+    """Simulate the closed loop; see the module docstring.  ``record_motor``: also record the motor-side
+    position (an encoder of 0.1 um resolution in table travel; the table's own when the axis is rigid) as
+    ``extra['motor_position']``, written as a ``motor_position`` column."""
     truth = truth or AxisTruth()
     loop = loop or LoopSettings()
     fs, ns = loop.fs, loop.substeps
@@ -223,6 +228,7 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
     n = len(t)
     meas = np.empty(n)
     force = np.empty(n)
+    motor = np.empty(n) if record_motor else None
     for k in range(n):
         xm = round((x + pos_noise[k]) / q) * q
         if k:
@@ -231,6 +237,8 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
         u = kp * (ref[k] - xm) + kd * (dref[k] - vhat)
         meas[k] = xm
         force[k] = u + f_noise[k]
+        if motor is not None:
+            motor[k] = round((x1 if two else x) / 1e-7) * 1e-7
         for _ in range(ns):
             if two:
                 stretch = x1 - x
@@ -270,6 +278,8 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
                 v = 0.0 if vn * v < 0 else vn
             x += h * v
     extra = {"external_force": f_ext} if f_ext is not None else {}
+    if motor is not None:
+        extra["motor_position"] = motor
     return Record(t, meas, force, ref, truth, loop, (kp, kd), extra)
 
 

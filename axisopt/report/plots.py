@@ -36,29 +36,66 @@ def duty_points(ev: Evaluation) -> dict | None:
     total = sum(ph.duration for ph in phases)
     mean = sum(ph.duration * 0.5 * (v0 + v1) for ph, (v0, v1) in zip(phases, speeds)) / total if total else 0.0
     m = d.motor
+    estimated = [c for c in ("peak_corner_speed", "peak_torque_at_max_speed") if _missing(m, c)]
     return {"speed_rpm": n, "torque_Nm": t, "rms_torque_Nm": float(v["rms_torque"]),
             "mean_speed_rpm": mean * to_rpm, "rated_torque_Nm": float(m["rated_torque"]),
             "peak_torque_Nm": float(m["peak_torque"]), "rated_speed_rpm": float(m["rated_speed"]) * RPM,
             "max_speed_rpm": float(m["max_speed"]) * RPM, "motor": str(m["id"]),
+            # the steady thrusts at feed (no acceleration): the largest axial load against the peak, the mean
+            # one with the cycle's RMS against the RMS limit (model.drive)
+            "thrust_torque_Nm": float(v["thrust_torque"]), "mean_thrust_torque_Nm": float(v["mean_thrust_torque"]),
             # the intermittent zone the check uses (vendor corner points or their estimate) and the RMS bound
             "zone_speed_rpm": [0.0, float(prm["motor_peak_corner_speed"]) * RPM, float(m["max_speed"]) * RPM],
             "zone_torque_Nm": [float(m["peak_torque"]), float(m["peak_torque"]), float(prm["motor_peak_at_max_speed"])],
+            "zone_estimated": bool(estimated),
             "rms_limit_Nm": float(prm["rms_torque_ratio"]) * float(m["rated_torque"])}
 
 
-def _torque_speed(ax, pts: dict, label: str, color) -> None:
+def _missing(row, col) -> bool:
+    try:
+        val = float(row[col])
+    except (KeyError, TypeError, ValueError):
+        return True
+    return not math.isfinite(val)
+
+
+def _torque_speed(ax, pts: dict, label: str, color, limits: bool = True) -> None:
+    """One design's duty cycle against its motor: every phase's |torque| at its speed, the steady thrust at
+    feed (the largest axial load: checked against the peak, a triangle), the RMS torque (checked, with the mean
+    thrust, against rated x rms_torque_ratio, a square), and, once per motor, its intermittent (peak) zone as
+    the check reads it (dashed), the rated (continuous) torque up to the rated speed (thick), the RMS limit
+    (dotted) and the maximum speed (dash-dot).  The marker and line styles are explained once by
+    :func:`_style_legend`; the labels name the design and the motor with their values."""
+    rms = max(pts["rms_torque_Nm"], pts["mean_thrust_torque_Nm"])
     ax.plot(pts["speed_rpm"], np.abs(pts["torque_Nm"]), "o-", ms=3, lw=1, color=color,
-            label=f"{label}: duty cycle |T|")
-    ax.plot([pts["mean_speed_rpm"]], [pts["rms_torque_Nm"]], "s", ms=7, color=color, mfc="none",
-            label=f"{label}: RMS at mean speed")
+            label=f"{label}: thrust at feed {pts['thrust_torque_Nm']:.1f}, RMS {rms:.2f} N.m")
+    ax.plot([0.0], [pts["thrust_torque_Nm"]], "^", ms=9, color=color, clip_on=False)
+    ax.plot([pts["mean_speed_rpm"]], [rms], "s", ms=8, color=color, mfc="none")
+    if not limits:  # the motor's limits are drawn once, with the first design that uses it
+        return
     nr, nm = pts["rated_speed_rpm"], pts["max_speed_rpm"]
-    ax.plot([0, nr, nr], [pts["rated_torque_Nm"], pts["rated_torque_Nm"], 0], "-", color=color, lw=2, alpha=0.5,
-            label=f"{pts['motor']}: rated torque to rated speed")
     zs, zt = pts["zone_speed_rpm"], pts["zone_torque_Nm"]
-    ax.plot(zs + [nm], zt + [0], "--", color=color, lw=1.5, alpha=0.5,
-            label=f"{pts['motor']}: intermittent zone, max speed (checked)")
-    ax.axhline(pts["rms_limit_Nm"], color=color, lw=1, ls=":", alpha=0.6,
-               label=f"{pts['motor']}: RMS limit (rms_torque_ratio x rated)")
+    how = "corner estimated" if pts.get("zone_estimated") else "vendor corner points"
+    ax.plot(zs, zt, "--", color=color, lw=1.5, alpha=0.7,
+            label=f"{pts['motor']}: peak {pts['peak_torque_Nm']:.3g} N.m ({how}), rated {pts['rated_torque_Nm']:.3g} "
+                  f"N.m to {nr:.0f} rpm, RMS limit {pts['rms_limit_Nm']:.3g} N.m, max {nm:.0f} rpm")
+    ax.plot([0, nr], [pts["rated_torque_Nm"]] * 2, "-", color=color, lw=2.5, alpha=0.45)
+    ax.plot([nm, nm], [0, zt[-1]], "-.", color=color, lw=1, alpha=0.7)
+    ax.plot([0, nm], [pts["rms_limit_Nm"]] * 2, ":", color=color, lw=1.2, alpha=0.8)
+
+
+def _style_legend(ax) -> list:
+    """Legend entries for the marker and line styles of the torque-speed panel (drawn in grey, once)."""
+    from matplotlib.lines import Line2D
+
+    g = "0.35"
+    return [Line2D([], [], color=g, marker="o", ms=3, lw=1, label="duty cycle |T| by phase"),
+            Line2D([], [], color=g, marker="^", ms=8, ls="", label="steady thrust at feed (axial_load)"),
+            Line2D([], [], color=g, marker="s", ms=7, mfc="none", ls="", label="RMS checked (cycle or mean thrust)"),
+            Line2D([], [], color=g, ls="--", label="intermittent (peak) zone"),
+            Line2D([], [], color=g, lw=2.5, alpha=0.45, label="rated torque to rated speed"),
+            Line2D([], [], color=g, ls=":", label="RMS limit (rms_torque_ratio x rated)"),
+            Line2D([], [], color=g, ls="-.", label="max speed")]
 
 
 def distinct_labels(items, prefix=None) -> list:
@@ -73,9 +110,11 @@ def distinct_labels(items, prefix=None) -> list:
 
 
 def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None):
-    """Stiffness and first natural frequency over the stroke, one line per evaluation; with a motor, a
-    torque-speed panel: the duty-cycle points against the motor's rated and peak torque and speed limits
-    (the limits the checks use: the intermittent zone falling from its corner speed to max speed).  ``limits``
+    """Stiffness and first natural frequency over the stroke, one line per evaluation (its own dash pattern,
+    so coinciding curves stay visible; a design that fails a check is marked x and its legend entry names the
+    failed checks); with a motor, a torque-speed panel: the duty-cycle points against the motor's rated and
+    peak torque and speed limits (the limits the checks use: the intermittent zone falling from its corner
+    speed to max speed), each motor's limits drawn once, a design without a motor named as such.  ``limits``
     (optional) maps 'min_stiffness' [N/m] and 'min_frequency' [Hz] to the problem's limits, drawn as
     dashed lines.  Returns the matplotlib Figure (not registered with pyplot); written to ``path`` only when
     one is given."""
@@ -85,7 +124,7 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
     pts = [duty_points(ev) for ev in evaluations]
     drive = any(p is not None for p in pts)
     if drive:
-        fig = Figure(figsize=(13, 6))
+        fig = Figure(figsize=(13, 8))
         gs = fig.add_gridspec(2, 2, width_ratios=(1, 1))
         ax1 = fig.add_subplot(gs[0, 0])
         ax2 = fig.add_subplot(gs[1, 0], sharex=ax1)
@@ -94,14 +133,36 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
         fig = Figure(figsize=(7, 6))
         ax1, ax2 = fig.subplots(2, 1, sharex=True)
     colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
+    motors_drawn = set()
+    styles = ("-", "--", "-.", ":")
+    groups: dict = {}  # designs whose stiffness and frequency curves coincide share one line
     for i, ev in enumerate(evaluations):
+        key = (np.round(np.asarray(ev["k_total"], float) / N_PER_UM, 3).tobytes(),
+               np.round(np.asarray(ev["f1"], float), 3).tobytes(), tuple(np.round(ev.x, 6)))
+        groups.setdefault(key, []).append(i)
+    tags = [labels[i] if labels else ev.design.name for i, ev in enumerate(evaluations)]
+    short = [t.split()[0] if t.startswith("#") else t for t in tags]
+    for j, members in enumerate(groups.values()):
+        i = members[0]
+        ev = evaluations[i]
         s = (ev.x - ev.design.axis.start_offset) * 1e3
-        lab = labels[i] if labels else ev.design.name
         col = colors[i % len(colors)]
-        ax1.plot(s, np.asarray(ev["k_total"]) / N_PER_UM, label=lab, color=col)
-        ax2.plot(s, ev["f1"], label=lab, color=col)
+        failed = sorted({r["check"] for m in members for r in evaluations[m].check_rows() if not r["pass"]})
+        name = tags[i] if len(members) == 1 else \
+            f"{', '.join(short[m] for m in members)}: the same curves ({tags[i]} ...)"
+        name += f" - FAILS {', '.join(failed)}" if failed else ""
+        ls = styles[j % len(styles)]  # distinct dash patterns: curves that nearly coincide stay visible
+        mk = dict(marker="x", markevery=max(1, len(s) // 8)) if failed else {}
+        ax1.plot(s, np.asarray(ev["k_total"]) / N_PER_UM, ls, label=name, color=col, **mk)
+        ax2.plot(s, ev["f1"], ls, label=name, color=col, **mk)
+    for i in range(len(evaluations)):
+        col = colors[i % len(colors)]
         if pts[i] is not None:
-            _torque_speed(ax3, pts[i], lab, col)
+            first = pts[i]["motor"] not in motors_drawn
+            motors_drawn.add(pts[i]["motor"])
+            _torque_speed(ax3, pts[i], short[i], col, limits=first)
+        elif drive:  # a design without a motor is named, not silently left out of the drive panel
+            ax3.plot([], [], " ", label=f"{short[i]}: no drive (the design has no motor)")
     limits = dict(limits or {})
     if "min_stiffness" in limits:
         ax1.axhline(limits["min_stiffness"] / N_PER_UM, color="tab:red", ls="--", lw=1,
@@ -118,13 +179,26 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
         ax3.set_xlabel("motor speed [rpm]")
         ax3.set_ylabel("motor torque magnitude [N.m]")
         ax3.set_title("duty cycle against the motor limits", fontsize=10)
-        ax3.set_xlim(left=0)
-        ax3.set_ylim(bottom=0)
-        ax3.legend(fontsize=7, loc="upper right")
+        top = max(max(p["zone_torque_Nm"] + [p["thrust_torque_Nm"]] + list(np.abs(p["torque_Nm"])))
+                  for p in pts if p is not None)
+        right = max(p["max_speed_rpm"] for p in pts if p is not None)
+        ax3.set_xlim(0, 1.05 * right)
+        ax3.set_ylim(0, 1.08 * top)
+        # below the panel: the legend never hides a limit line or a duty point
+        handles, names = ax3.get_legend_handles_labels()
+        ax3.legend(handles + _style_legend(ax3), names + [h.get_label() for h in _style_legend(ax3)], fontsize=7,
+                   loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=1, frameon=False)
         axes = (ax1, ax2, ax3)
     for ax in axes:
         ax.grid(True, alpha=0.3)
-    ax1.legend(fontsize=8)
+    if drive:  # the designs' legend (and the problem's limits) below the curves, off the data
+        h1, n1 = ax1.get_legend_handles_labels()
+        h2, n2 = ax2.get_legend_handles_labels()
+        extra = [(h, n) for h, n in zip(h2, n2) if n.startswith("min_frequency")]
+        ax2.legend(h1 + [h for h, _ in extra], n1 + [n for _, n in extra], fontsize=7, loc="upper center",
+                   bbox_to_anchor=(0.5, -0.18), frameon=False)
+    else:
+        ax1.legend(fontsize=8)
     tidy_layout(fig)
     if path is not None:
         save_figure(fig, path)

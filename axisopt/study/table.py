@@ -206,8 +206,18 @@ def _machine_columns(df, cols) -> list:
 
 
 def _group_label(g, by) -> str:
+    """'max_cost = 4000 EUR, mountings = fixed-fixed': each swept input with the unit of its column."""
     g = g if isinstance(g, tuple) else (g,)
-    return ", ".join(f"{b.split(' [')[0].split('.')[-1]}={v}" for b, v in zip(by, g))
+    out = []
+    for b, v in zip(by, g):
+        name, _, unit = b.partition(" [")
+        val = f"{v:g}" if isinstance(v, (int, float)) and not isinstance(v, bool) else str(v)
+        out.append(f"{name.split('.')[-1]} = {val}" + (f" {unit.rstrip(']')}" if unit else ""))
+    return ", ".join(out)
+
+
+_LINE_STYLES = ("-", "--", "-.", ":")
+_MARKERS = ("o", "s", "^", "v", "D", "P", "X", "*")
 
 
 def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
@@ -232,21 +242,26 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
             continue
         by = _line_groups(df, cols, name, group)
         fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-        for g, sub in ok.groupby(by, dropna=False, sort=True):
-            # best over the cases that share this x and this line's inputs
+        for j, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
+            # best over the cases that share this x and this line's inputs; each line its own dash pattern and
+            # marker, so lines that coincide stay visible
             k = sub.groupby(name)["min_stiffness [N/um]"].max()
             f = sub.groupby(name)["min_frequency [Hz]"].max()
-            line = "-o" if len(k) < 40 else "."
-            a1.plot(k.index, k.values, line, ms=3, label=_group_label(g, by))
-            a2.plot(f.index, f.values, line, ms=3, label=_group_label(g, by))
+            style = dict(ls=_LINE_STYLES[j % len(_LINE_STYLES)], marker=_MARKERS[j % len(_MARKERS)] if len(k) < 40
+                         else ".", ms=4 + 1.5 * (j % 3), mfc="none", label=_group_label(g, by))
+            a1.plot(k.index, k.values, **style)
+            a2.plot(f.index, f.values, **style)
         if len(bad):
+            # cases without a design have no value to draw: their inputs are shaded, not drawn as zeros
+            xs = sorted(set(bad[name].dropna()))
             for ax in (a1, a2):
-                ax.plot(bad[name], [0.0] * len(bad), "x", color="tab:red", ms=7,
-                        transform=ax.get_xaxis_transform(), clip_on=False,
-                        label=f"no design ({len(bad)} cases: {', '.join(sorted(set(bad['status'])))})")
+                for i, x in enumerate(xs):
+                    ax.axvline(x, color="tab:red", alpha=0.25, lw=4,
+                               label=(f"no design at this {key.split('.')[-1]} for {len(bad)} cases "
+                                      f"({', '.join(sorted(set(bad['status'])))})") if i == 0 else None)
         a1.set_ylabel("best min. axial stiffness [N/um]")
         a2.set_ylabel("best min. 1st frequency [Hz]")
-        a2.set_xlabel(name)
+        a2.set_xlabel(name.replace(" [", " [", 1))
         for ax in (a1, a2):
             ax.grid(True, alpha=0.3)
         a1.legend(fontsize=7)

@@ -3,6 +3,7 @@ shows every objective pair with the front marked against the designs it dominate
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -43,12 +44,21 @@ def test_solve_plot_legend_tells_runners_up_apart_and_draws_the_limit(monkeypatc
     prob = tmp_path / "t_problem.yaml"
     prob.write_text(text)
     assert main(["solve", str(prob), "--top", "4", "--no-sensitivity", "--plot", str(tmp_path / "p.png")]) == 0
-    ax = figs[0].axes[0]
-    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    ax, ax2 = figs[0].axes[0], figs[0].axes[1]
+    # the designs' legend sits below the frequency panel (off the data); every rank is named exactly once,
+    # designs whose curves coincide share one line (no curve drawn twice over another)
+    legend = [t.get_text() for t in ax2.get_legend().get_texts()]
     designs = [lab for lab in legend if lab.startswith("#")]
-    assert len(designs) == 4 and len(set(designs)) == 4
-    limit = [ln for ln in ax.get_lines() if ln.get_linestyle() == "--"]
+    ranks = [r for lab in designs for r in re.findall(r"#(\d+)", lab.split(" (")[0].split(" HIWIN")[0])]
+    assert sorted(ranks) == ["1", "2", "3", "4"]
+    curves = [ln for ln in ax.get_lines() if ln.get_label().startswith("#")]
+    assert len(curves) == len(designs)
+    ys = [np.round(ln.get_ydata(), 3).tobytes() for ln in curves]
+    assert len(set(ys)) == len(ys), "two legend entries draw the same curve"
+    assert any("the same curves" in lab for lab in designs)  # #1/#2 differ only in the motor
+    limit = [ln for ln in ax.get_lines() if ln.get_label().startswith("min_stiffness")]
     assert len(limit) == 1 and np.allclose(limit[0].get_ydata(), 60.0)
+    assert any(lab.startswith("min_stiffness") for lab in legend)
 
 
 @pytest.fixture(scope="module")

@@ -152,7 +152,7 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
     """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
     the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
     combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
-    from axisopt.search.explain import miss_scores
+    from axisopt.search.explain import RULE_WEIGHT, miss_scores, weight
     from axisopt.search.space import _vec, respond
 
     p = _drive_problem(2, axis_coupling=2e3).with_limit("min_stiffness", 400e6)
@@ -166,14 +166,14 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
         k = len(sel)
         lo = respond(prm, x, mounting, sp.preload_lo[n][:, None])
         hi = respond(prm, x, mounting, sp.preload_hi[n][:, None])
-        ref[sel] += np.where(sp.fits[n, b], 0.0, 1.0)
+        ref[sel] += np.where(sp.fits[n, b], 0.0, RULE_WEIGHT)  # a compatibility rule outweighs every limit
         for c in cons:
             v_lo, v_hi = _vec(c.value(lo), k), _vec(c.value(hi), k)
             if c.convex:
                 v = np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
             else:
                 v = v_hi if c.lower_type else v_lo
-            ref[sel] += c.violation(v)
+            ref[sel] += weight(c) * c.violation(v)
     np.testing.assert_allclose(new, ref, rtol=1e-9, atol=1e-12)
 
 

@@ -47,15 +47,22 @@ def test_lines_against_stroke_hold_the_other_input_fixed(monkeypatch, tmp_path):
     ax = figs["best_vs_axis_stroke.png"].axes[0]
     df = _frame()
     ok = df[df.status == "optimal"]
-    lines = [ln for ln in ax.get_lines() if ln.get_marker() != "x"]
+    shaded = [ln for ln in ax.get_lines() if ln.get_color() == "tab:red"]
+    lines = [ln for ln in ax.get_lines() if ln not in shaded]
     assert len(lines) == 2  # one per max_cost value, never a line mixing the two budgets
+    # lines that could coincide stay apart: each its own dash pattern and marker
+    assert len({(ln.get_linestyle(), ln.get_marker()) for ln in lines}) == 2
     for ln in lines:
         x, y = ln.get_xdata(), ln.get_ydata()
-        cost = float(ln.get_label().split("=")[1])
+        label = ln.get_label()
+        assert label.startswith("max_cost = ") and label.endswith(" EUR")  # the input with its unit
+        cost = float(label.split("=")[1].split()[0])
         want = ok[ok["limits.max_cost [EUR]"] == cost].sort_values("axis.stroke [mm]")
         assert np.allclose(x, want["axis.stroke [mm]"]) and np.allclose(y, want["min_stiffness [N/um]"])
-    marks = [ln for ln in ax.get_lines() if ln.get_marker() == "x"]
-    assert len(marks) == 1 and list(marks[0].get_xdata()) == [1100.0] and "infeasible" in marks[0].get_label()
+    # a case without a design has no value: its input is shaded across the panel, never drawn as a zero
+    assert len(shaded) == 1 and list(shaded[0].get_xdata()) == [1100.0, 1100.0]
+    assert list(shaded[0].get_ydata()) == [0, 1] and "infeasible" in shaded[0].get_label()
+    assert all(np.all(np.asarray(ln.get_ydata(), float) > 0) for ln in lines)
 
 
 def test_tradeoff_staircase_stays_within_one_stroke(monkeypatch, tmp_path):
