@@ -18,6 +18,9 @@ def add_html_report(parser, what: str) -> None:
     """The ``--report FILE.html`` option (a self-contained HTML report, needs axisopt[html])."""
     parser.add_argument("--report", metavar="FILE.html",
                         help=f"write {what} as one self-contained HTML file (interactive figures; needs plotly)")
+    parser.add_argument("--plotly", choices=("inline", "cdn"), default="inline",
+                        help="with --report: plotly.js inlined (default; about 4.7 MB, works offline) or loaded "
+                             "from the plotly CDN (about 0.1 MB, needs the network to show the figures)")
 
 
 def check_html_report(path) -> None:

@@ -48,7 +48,7 @@ def cmd_compare(args) -> int:
     if args.report:
         from ..report.html import compare_page, write_page
 
-        write_page(compare_page(items, text), args.report)
+        write_page(compare_page(items, text), args.report, plotly=args.plotly)
         wrote(args.report, stdout_taken(args.json, args.csv))
     failed = [c for c in items if not c.ok]
     for c in failed:

@@ -44,7 +44,7 @@ def cmd_diagnose(args) -> int:
     if html:
         from ..report.html import diagnose_page, write_page
 
-        write_page(diagnose_page(diag, text), args.report)
+        write_page(diagnose_page(diag, text), args.report, plotly=args.plotly)
         if not quiet:
             print(f"report written to {args.report}")
     elif args.report:
@@ -93,6 +93,9 @@ def register(sub) -> None:
     d.add_argument("--report", metavar="FILE.html|DIR",
                    help="a self-contained HTML report (FILE.html, needs plotly), or report.md with residual "
                         "plots in DIR")
+    d.add_argument("--plotly", choices=("inline", "cdn"), default="inline",
+                   help="with --report FILE.html: plotly.js inlined (default; works offline) or loaded from the "
+                        "plotly CDN (a small file that needs the network)")
     d.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
     d.add_argument("--save-calibration", metavar="FILE.yaml", help="save the calibrated model for evaluate")
     d.add_argument(

@@ -91,7 +91,7 @@ def cmd_evaluate(args) -> int:
     if args.report:
         from ..report.html import evaluation_page, write_page
 
-        write_page(evaluation_page(ev), args.report)
+        write_page(evaluation_page(ev), args.report, plotly=args.plotly)
         wrote(args.report, stdout_taken(args.json))
     if args.fail_on_check:
         from ..report.evaluation import check_rows

@@ -88,7 +88,7 @@ def cmd_solve(args) -> int:
     if args.report:
         from ..report.html import solve_page, write_page
 
-        write_page(solve_page(res, problem, text), args.report)
+        write_page(solve_page(res, problem, text), args.report, plotly=args.plotly)
         wrote(args.report, quiet)
     if args.save_design:
         written = save_designs(res, args.save_design, args.top, args.problem)

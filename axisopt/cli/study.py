@@ -117,7 +117,7 @@ def cmd_study(args) -> int:
         from ..study.table import results_table
 
         md = Path(s.files["report"]).read_text(encoding="utf-8") if "report" in s.files else ""
-        write_page(study_page(study, results_table(study, out), md), args.report)
+        write_page(study_page(study, results_table(study, out), md), args.report, plotly=args.plotly)
         s.files["html report"] = args.report
     for name, path in s.files.items():
         print(f"  {name}: {path}")

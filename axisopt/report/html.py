@@ -36,6 +36,10 @@ pre { overflow-x: auto; font-size: 12px; line-height: 1.3; background: #f6f8fa; 
 table { border-collapse: collapse; font-size: 13px; } th, td { padding: 3px 8px; border-bottom: 1px solid var(--line);
         text-align: right; white-space: nowrap; } th:first-child, td:first-child { text-align: left; }
 td.bad { color: var(--bad); font-weight: 600; } td.ok { color: var(--ok); }
+td.m-fail { background: #fde2e1; color: var(--bad); font-weight: 600; } td.m-tight { background: #fff1cc; }
+td.m-fair { background: #eef7e4; } td.m-ample { color: var(--ok); }
+p.key { font-size: .8em; color: var(--muted); }
+td.wrap, th.wrap { white-space: normal; text-align: left; min-width: 12em; }
 .fig { width: 100%; min-height: 320px; }
 footer { color: var(--muted); font-size: .8em; margin-top: 2em; }
 """
@@ -65,9 +69,21 @@ class Page:
         self.sections.append((heading, body))
         return body
 
-    def render(self) -> str:
+    def render(self, plotly_js: str = "inline") -> str:
+        """The page; ``plotly_js`` 'inline' (plotly.js in the file: offline) or 'cdn' (a script tag loading the
+        installed plotly's version from the plotly CDN: a small file that needs the network)."""
         import plotly
         from plotly.offline import get_plotlyjs
+
+        if plotly_js == "inline":
+            script, note = f"<script>{get_plotlyjs()}</script>", "inlined, works offline"
+        elif plotly_js == "cdn":
+            from plotly.offline.offline import get_plotlyjs_version
+
+            src = f"https://cdn.plot.ly/plotly-{get_plotlyjs_version()}.min.js"
+            script, note = f'<script src="{src}" charset="utf-8"></script>', f"loaded from {src}"
+        else:
+            raise ValueError(f"plotly_js must be 'inline' or 'cdn', not {plotly_js!r}")
 
         cards = "".join(f'<div class="card {s}"><div class="k">{_e(k)}</div><div class="v">{_e(v)}</div></div>'
                         for k, v, s in self.cards)
@@ -76,10 +92,10 @@ class Page:
         return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
                 "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
                 f"<title>{_e(self.title)}</title><style>{_CSS}</style>"
-                f"<script>{get_plotlyjs()}</script></head><body>"
+                f"{script}</head><body>"
                 f"<h1>{_e(self.title)}</h1>" + (f'<p class="sub">{_e(self.subtitle)}</p>' if self.subtitle else "")
                 + f'<div class="cards">{cards}</div><nav>{nav}</nav>{body}'
-                f"<footer>axisopt report; figures by plotly {plotly.__version__} (inlined, works offline)"
+                f"<footer>axisopt report; figures by plotly {plotly.__version__} ({note})"
                 "</footer></body></html>\n")
 
 
@@ -95,12 +111,15 @@ def para(text: str) -> str:
     return f"<p>{_e(text)}</p>"
 
 
-def table(head, rows, states=None) -> str:
-    """A table; ``states`` (optional) gives per row the class of its last cell ('ok' / 'bad')."""
+def table(head, rows, states=None, classes=None) -> str:
+    """A table in its own horizontal scroller (the page never scrolls sideways); ``states`` (optional) gives
+    per row the class of its last cell ('ok' / 'bad'), ``classes`` (optional) per row a list of cell classes
+    ('' for none)."""
     th = "".join(f"<th>{_e(h)}</th>" for h in head)
     trs = []
     for i, r in enumerate(rows):
-        cells = [f"<td>{_e(c)}</td>" for c in r]
+        cls = classes[i] if classes is not None else [""] * len(r)
+        cells = [f'<td class="{c}">{_e(v)}</td>' if c else f"<td>{_e(v)}</td>" for v, c in zip(r, cls)]
         if states is not None and states[i]:
             cells[-1] = f'<td class="{states[i]}">{_e(r[-1])}</td>'
         trs.append("<tr>" + "".join(cells) + "</tr>")
@@ -125,11 +144,11 @@ def check_report_path(path) -> None:
     require_plotly()
 
 
-def write_page(page: Page, path) -> None:
+def write_page(page: Page, path, plotly: str = "inline") -> None:
     from ..fileio import write_text_atomic
 
     check_report_path(path)
-    write_text_atomic(str(path), page.render(), what="HTML report")
+    write_text_atomic(str(path), page.render(plotly), what="HTML report")
 
 
 # ------------------------------------------------------------------------------------------- figures
@@ -189,19 +208,98 @@ def evaluation_cards(page: Page, ev) -> None:
     page.card("checks", "all pass" if not failed else f"{len(failed)} fail", "ok" if not failed else "bad")
 
 
+MARGIN_CLASSES = ((1.0, "m-fail"), (1.1, "m-tight"), (1.5, "m-fair"))  # below each bound its class; above: ample
+
+
+def margin_class(m) -> str:
+    """How close a margin (available / needed) is to failing: m-fail < 1 <= m-tight < 1.1 <= m-fair < 1.5 <=
+    m-ample."""
+    if m is None or not math.isfinite(m):
+        return ""
+    for bound, cls in MARGIN_CLASSES:
+        if m < bound:
+            return cls
+    return "m-ample"
+
+
+MARGIN_KEY = ('<p class="key">margin = available / needed: <span class="m">below 1 fails (red), 1-1.1 tight '
+              '(amber), 1.1-1.5 fair (pale green), from 1.5 ample (green)</span></p>')
+
+
 def checks_table(ev) -> str:
     from .evaluation import check_rows, fmt_value
 
     head = ["check", "available", "needed", "margin", "result"]
-    body, states = [], []
+    body, classes = [], []
     for r in check_rows(ev):
         u = f" {r['unit']}" if r["unit"] else ""
         have = (f"{fmt_value(r['available_min'])}-{fmt_value(r['available'])}{u}" if r["check"] == "bearing_fit"
                 else ("n/a" if r["available"] is None else fmt_value(r["available"]) + u))
         body.append([r["label"], have, (fmt_value(r["needed"]) + u) if r["needed"] else "none",
                      "n/a" if r["margin"] is None else f"{r['margin']:.2f}", "pass" if r["pass"] else "FAIL"])
-        states.append("ok" if r["pass"] else "bad")
-    return table(head, body, states)
+        classes.append(["wrap", "", "", margin_class(r["margin"]), "ok" if r["pass"] else "bad"])
+    return table(head, body, classes=classes) + MARGIN_KEY
+
+
+def drive_figure(ev):
+    """The duty cycle on the motor's torque-speed plane (plotly twin of report.plots' panel), or None."""
+    import plotly.graph_objects as go
+
+    from .plots import duty_points
+
+    pts = duty_points(ev)
+    if pts is None:
+        return None
+    fig = go.Figure()
+    rms = max(pts["rms_torque_Nm"], pts["mean_thrust_torque_Nm"])
+    nr, nm = pts["rated_speed_rpm"], pts["max_speed_rpm"]
+    how = "corner estimated" if pts["zone_estimated"] else "vendor corner points"
+    fig.add_scatter(x=pts["zone_speed_rpm"], y=pts["zone_torque_Nm"], mode="lines", line=dict(dash="dash"),
+                    name=f"{pts['motor']} peak zone ({how})")
+    fig.add_scatter(x=[0, nr], y=[pts["rated_torque_Nm"]] * 2, mode="lines", line=dict(width=4),
+                    opacity=0.5, name=f"rated {pts['rated_torque_Nm']:.3g} N.m to {nr:.0f} rpm")
+    fig.add_scatter(x=[0, nm], y=[pts["rms_limit_Nm"]] * 2, mode="lines", line=dict(dash="dot"),
+                    name=f"RMS limit {pts['rms_limit_Nm']:.3g} N.m")
+    fig.add_scatter(x=[nm, nm], y=[0, pts["zone_torque_Nm"][-1]], mode="lines", line=dict(dash="dashdot"),
+                    name=f"max speed {nm:.0f} rpm")
+    fig.add_scatter(x=pts["speed_rpm"], y=np.abs(pts["torque_Nm"]), mode="lines+markers",
+                    name="duty cycle |T| by phase")
+    fig.add_scatter(x=[0.0], y=[pts["thrust_torque_Nm"]], mode="markers", marker=dict(symbol="triangle-up", size=12),
+                    name=f"steady thrust at feed {pts['thrust_torque_Nm']:.1f} N.m")
+    fig.add_scatter(x=[pts["mean_speed_rpm"]], y=[rms], mode="markers", marker=dict(symbol="square-open", size=11),
+                    name=f"RMS checked {rms:.2f} N.m")
+    fig.update_layout(title="duty cycle against the motor limits", xaxis_title="motor speed [rpm]",
+                      yaxis_title="motor torque magnitude [N.m]")
+    return fig
+
+
+def frf_figure(ev):
+    """Table compliance over frequency at stroke start, middle and end: motor held (the headline first
+    frequency's model), motor free and with the tuned servo."""
+    from plotly.subplots import make_subplots
+
+    from ..model.frf import frf
+    from .methods import closed_loop_frf
+
+    free = frf(ev)
+    f = np.asarray(free["frequency_Hz"], float)
+    held = frf(ev, f, motor_held=True)
+    closed = closed_loop_frf(ev, f)
+    fig = make_subplots(rows=2, cols=1, shared_xaxes=True, subplot_titles=("compliance [um/N]", "phase [deg]"))
+    sets = ((held, "solid", "motor held"), (free, "dash", "motor free"), (closed, "dot", "servo"))
+    for j, q0 in enumerate(free["positions"]):
+        color = _COLORS[j % len(_COLORS)]
+        for res, dash, what in sets:
+            q = res["positions"][j]
+            name = f"{q0['position_mm']:.0f} mm, {what}"
+            fig.add_scatter(x=f, y=q["magnitude_um_per_N"], mode="lines", line=dict(color=color, dash=dash),
+                            name=name, legendgroup=name, row=1, col=1)
+            fig.add_scatter(x=f, y=q["phase_deg"], mode="lines", line=dict(color=color, dash=dash), name=name,
+                            legendgroup=name, showlegend=False, row=2, col=1)
+    fig.update_xaxes(type="log", title_text="frequency [Hz]", row=2, col=1)
+    fig.update_xaxes(type="log", row=1, col=1)
+    fig.update_yaxes(type="log", row=1, col=1)
+    return fig
 
 
 def evaluation_page(ev, title: str | None = None) -> Page:
@@ -214,6 +312,10 @@ def evaluation_page(ev, title: str | None = None) -> Page:
     evaluation_cards(page, ev)
     page.section("Stiffness and frequency over the stroke").append(figure(profiles_figure([ev], [d.name])))
     page.section("Stiffness chain").append(figure(chain_figure(ev), 300))
+    drive = drive_figure(ev)
+    if drive is not None:
+        page.section("Drive: duty cycle against the motor").append(figure(drive, 460))
+    page.section("Dynamic compliance of the table (FRF)").append(figure(frf_figure(ev), 560))
     page.section("Checks").append(checks_table(ev))
     page.section("Full evaluation (as printed)").append(pre(evaluation_table(ev)))
     return page
@@ -233,6 +335,7 @@ def solve_page(res, problem, text: str) -> Page:
     if res.pareto is not None:
         page.card("Pareto points", str(len(res.pareto.points)))
         page.section("Pareto front").append(figure(pareto_figure(res.pareto), 560))
+        page.section(f"Every point of the front ({len(res.pareto.points)})").append(pareto_table(res.pareto))
     elif res.best is not None and res.best.design is not None:
         page.card("objective", f"{res.best.objective:,.3f} {res.objective_unit}")
         cands = [res.best] + list(res.runners_up)
@@ -268,19 +371,50 @@ def pareto_figure(front):
     return fig
 
 
+def pareto_table(front) -> str:
+    """Every point of a Pareto front: its objective values and its parts."""
+    from ..search.pareto import FIELD
+
+    head = ["#"] + [f"{k.replace('_', ' ')} [{u}]" if u else k for k, u in zip(front.keys, front.units)] + \
+        ["mounting", "screw", "nut", "bearing", "guide", "motor", "preload [N]"]
+    rows = []
+    for i, pt in enumerate(front.points, start=1):
+        parts = pt.parts() if hasattr(pt, "parts") else {}
+        rows.append([str(i)] + [f"{float(getattr(pt, FIELD[k])):,.4g}" for k in front.keys]
+                    + [pt.mounting, pt.screw, pt.nut, pt.bearing, pt.guide, parts.get("motor") or "-",
+                       f"{pt.nut_preload:,.0f}"])
+    return table(head, rows)
+
+
 def compare_page(items, text: str) -> Page:
     from .plots import distinct_labels
 
+    from .evaluation import check_rows
+
     page = Page("Comparison", ", ".join(c.label for c in items))
     evs = [c.evaluation for c in items if c.evaluation is not None]
+    head = ["design", "min stiffness [N/um]", "min 1st frequency [Hz]", "drag [N.m]", "total mass [kg]",
+            "cost [EUR]", "motor", "least margin", "failed checks"]
+    rows, classes = [], []
     for c in items:
         e = c.evaluation
         if e is None:
             page.card(c.label, c.solve["status"] if c.solve else "-", "bad")
+            rows.append([c.label] + ["-"] * 7 + [f"no design ({c.solve['status'] if c.solve else '-'})"])
+            classes.append(["wrap"] + [""] * 7 + ["bad wrap"])
             continue
-        ok = min(e.checks().values()) >= 1.0
-        page.card(c.label, f"{e.minimum('k_total')[0] / N_PER_UM:,.1f} N/um, {e.minimum('f1')[0]:,.1f} Hz",
-                  "ok" if ok else "bad")
+        checks = check_rows(e)
+        failed = [r["check"] for r in checks if not r["pass"]]
+        margins = [r["margin"] for r in checks if r["margin"] is not None]
+        least = min(margins) if margins else None
+        page.card(c.label, f"{e.minimum('k_total')[0] / N_PER_UM:,.1f} N/um, {e.minimum('f1')[0]:,.1f} Hz"
+                  + (f"; FAILS {', '.join(failed)}" if failed else ""), "bad" if failed else "ok")
+        rows.append([c.label, f"{e.minimum('k_total')[0] / N_PER_UM:,.1f}", f"{e.minimum('f1')[0]:,.1f}",
+                     f"{float(e['drag_torque']):.3f}", f"{float(e['total_mass']):,.1f}", f"{float(e['cost']):,.0f}",
+                     str(e.design.motor["id"]) if e.design.motor is not None else "no drive",
+                     "n/a" if least is None else f"{least:.2f}", ", ".join(failed) or "none"])
+        classes.append(["wrap", "", "", "", "", "", "", margin_class(least), "bad wrap" if failed else "ok"])
+    page.section("Side by side").append(table(head, rows, classes=classes) + MARGIN_KEY)
     if evs:
         labels = [c.label for c in items if c.evaluation is not None]
         parts = [{"mounting": e.design.axis.mounting, **e.design.part_ids()} for e in evs]
@@ -310,20 +444,24 @@ def study_page(study, df, text: str) -> Page:
         fig.add_scatter(x=df.loc[ok, name], y=df.loc[ok, "objective"], mode="markers", name="optimal",
                         text=df.loc[ok, "case_id"] + ": " + df.loc[ok, "screw"].astype(str) + " / "
                         + df.loc[ok, "nut"].astype(str), hovertemplate="%{text}<br>%{x}: %{y:.4g}<extra></extra>")
-        if (~ok).any():
-            ymin = float(df.loc[ok, "objective"].min()) if ok.any() else 0.0
-            fig.add_scatter(x=df.loc[~ok, name], y=[ymin] * int((~ok).sum()), mode="markers", name="no optimum",
-                            marker=dict(symbol="x", color="#c62828", size=9), text=df.loc[~ok, "status"],
-                            hovertemplate="%{text}<extra></extra>")
+        if (~ok).any():  # no objective to draw: the inputs of the cases without a design are shaded
+            for i, x in enumerate(sorted(set(df.loc[~ok, name].dropna()))):
+                fig.add_vline(x=x, line=dict(color="#c62828", width=6), opacity=0.2)
+            fig.add_scatter(x=[None], y=[None], mode="lines", line=dict(color="#c62828", width=6), opacity=0.3,
+                            name=f"no design here ({int((~ok).sum())} cases; reasons in the table)")
         fig.update_layout(title=f"objective against {key}", xaxis_title=name, yaxis_title=f"objective [{unit}]")
         page.section(f"Objective against {key}").append(figure(fig, 380))
-    shown = [c for c in ("case_id", *[n for n, _ in input_columns(study).values()], "status", "objective",
-                         "screw", "nut", "bearing", "guide", "min_stiffness [N/um]", "min_frequency [Hz]",
+    shown = [c for c in ("case_id", *[n for n, _ in input_columns(study).values()], "status", "reason", "objective",
+                         "screw", "nut", "bearing", "guide", "motor", "min_stiffness [N/um]", "min_frequency [Hz]",
                          "cost [EUR]") if c in df]
-    rows = [[_cell(v) for v in r] for r in df[shown].head(200).itertuples(index=False)]
+    sub = df[shown].head(200)
+    rows = [[_cell(v) for v in r] for r in sub.itertuples(index=False)]
+    classes = [["wrap" if c == "reason" else ("bad" if c == "status" and st not in ("optimal", "feasible") else "")
+                for c in shown] for st in sub["status"]]
     page.section("Cases" + (" (first 200; all in results.csv)" if len(df) > 200 else "")).append(
-        table(shown, rows))
-    page.section("Summary (as written to report.md)").append(pre(text))
+        table(shown, rows, classes=classes))
+    summary = "\n".join(ln for ln in text.splitlines() if not ln.lstrip().startswith("!["))  # no image links
+    page.section("Summary (as written to report.md, figures above)").append(pre(summary))
     return page
 
 

@@ -16,7 +16,7 @@ from axisopt.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 P = ROOT / "problems"
-PHONE = (412, 900)
+PHONE = (390, 900)  # a small phone's CSS width
 
 
 def _browser_or_skip():
@@ -37,7 +37,7 @@ def reports(tmp_path_factory):
     pytest.importorskip("plotly")
     d = tmp_path_factory.mktemp("html")
     runs = {
-        "evaluate": (["evaluate", str(P / "vmc_x_design.yaml")], 2),
+        "evaluate": (["evaluate", str(P / "vmc_x_design.yaml")], 4),  # profiles, chain, drive, FRF
         "solve": (["solve", str(P / "teaching_problem.yaml"), "--top", "3", "--no-sensitivity"], 1),
         "pareto": (["solve", str(P / "pareto_problem.yaml"), "--no-sensitivity"], 1),
         "compare": (["compare", str(P / "vmc_x_design.yaml"), str(P / "paper_3_1_3_d40.yaml")], 1),
@@ -115,3 +115,78 @@ def test_report_needs_an_html_name(argv, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "--report" in err and ".html" in err
+
+
+def test_cdn_option_links_plotly_instead_of_inlining_it(tmp_path):
+    pytest.importorskip("plotly")
+    from plotly.offline import get_plotlyjs
+    from plotly.offline.offline import get_plotlyjs_version
+
+    inline, cdn = tmp_path / "inline.html", tmp_path / "cdn.html"
+    assert main(["evaluate", str(P / "vmc_x_design.yaml"), "--report", str(inline)]) == 0
+    assert main(["evaluate", str(P / "vmc_x_design.yaml"), "--report", str(cdn), "--plotly", "cdn"]) == 0
+    a, b = inline.read_text(encoding="utf-8"), cdn.read_text(encoding="utf-8")
+    src = f'<script src="https://cdn.plot.ly/plotly-{get_plotlyjs_version()}.min.js"'
+    assert src in b and src not in a
+    assert len(a) - len(b) > 0.95 * len(get_plotlyjs())  # plotly.js (about 4.7 MB) is not in the file
+    assert "works offline" in a and "loaded from https://cdn.plot.ly/" in b
+
+
+def test_margins_are_coloured_by_how_close_they_are():
+    from axisopt.report.html import margin_class
+
+    assert [margin_class(m) for m in (0.5, 0.999, 1.0, 1.05, 1.1, 1.49, 1.5, 76.0)] == \
+        ["m-fail", "m-fail", "m-tight", "m-tight", "m-fair", "m-fair", "m-ample", "m-ample"]
+    assert margin_class(None) == "" and margin_class(float("nan")) == ""
+
+
+def _rows(html_text, heading):
+    """The body rows of the first table after the section heading ``heading`` (cells as text)."""
+    part = html_text.split(heading, 1)[1].split("</table>", 1)[0]
+    return [re.findall(r"<td[^>]*>(.*?)</td>", tr) for tr in re.findall(r"<tr>(.*?)</tr>", part)[1:]]
+
+
+def test_evaluate_page_colours_every_margin(reports):
+    import html as h
+
+    from axisopt.design import load_design
+    from axisopt.model import evaluate
+    from axisopt.report.evaluation import check_rows
+    from axisopt.report.html import margin_class
+
+    text = reports["evaluate"][0].read_text(encoding="utf-8")
+    for r in check_rows(evaluate(load_design(P / "vmc_x_design.yaml"))):
+        if r["margin"] is not None:
+            cell = f'<td class="{margin_class(r["margin"])}">{r["margin"]:.2f}</td>'
+            assert cell in text.split(h.escape(r["label"]), 1)[1].split("</tr>", 1)[0], r["check"]
+    assert "Drive: duty cycle against the motor" in text and "Dynamic compliance of the table" in text
+
+
+def test_pareto_page_lists_every_point(reports):
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+
+    front = solve(load_problem(P / "pareto_problem.yaml"), sensitivities=False).pareto
+    rows = _rows(reports["pareto"][0].read_text(encoding="utf-8"), "Every point of the front")
+    assert len(rows) == len(front.points) > 5
+    assert [r[0] for r in rows] == [str(i) for i in range(1, len(front.points) + 1)]
+
+
+def test_compare_page_is_a_table_naming_failed_checks(reports):
+    from axisopt.design import load_design
+    from axisopt.model import evaluate
+    from axisopt.report.evaluation import check_rows
+
+    text = reports["compare"][0].read_text(encoding="utf-8")
+    rows = _rows(text, "Side by side")
+    assert len(rows) == 2
+    failed = [r["check"] for r in check_rows(evaluate(load_design(P / "paper_3_1_3_d40.yaml"))) if not r["pass"]]
+    assert failed and rows[1][-1] == ", ".join(failed) and rows[0][-1] == "none"
+
+
+def test_study_page_has_no_raw_markdown_and_gives_the_reasons(reports):
+    text = reports["study"][0].read_text(encoding="utf-8")
+    body = text.split("</head>", 1)[1]  # past the inlined plotly.js
+    assert "![" not in body and "](plots/" not in body
+    cases = body.split("Cases", 1)[1].split("</table>", 1)[0]
+    assert "<th>reason</th>" in cases and "<th>status</th>" in cases
