@@ -387,9 +387,8 @@ def pareto_table(front) -> str:
 
 
 def compare_page(items, text: str) -> Page:
-    from .plots import distinct_labels
-
     from .evaluation import check_rows
+    from .plots import distinct_labels
 
     page = Page("Comparison", ", ".join(c.label for c in items))
     evs = [c.evaluation for c in items if c.evaluation is not None]
@@ -445,7 +444,7 @@ def study_page(study, df, text: str) -> Page:
                         text=df.loc[ok, "case_id"] + ": " + df.loc[ok, "screw"].astype(str) + " / "
                         + df.loc[ok, "nut"].astype(str), hovertemplate="%{text}<br>%{x}: %{y:.4g}<extra></extra>")
         if (~ok).any():  # no objective to draw: the inputs of the cases without a design are shaded
-            for i, x in enumerate(sorted(set(df.loc[~ok, name].dropna()))):
+            for x in sorted(set(df.loc[~ok, name].dropna())):
                 fig.add_vline(x=x, line=dict(color="#c62828", width=6), opacity=0.2)
             fig.add_scatter(x=[None], y=[None], mode="lines", line=dict(color="#c62828", width=6), opacity=0.3,
                             name=f"no design here ({int((~ok).sum())} cases; reasons in the table)")
