@@ -267,3 +267,82 @@ def test_test_files_have_unique_basenames():
     root = Path(__file__).resolve().parents[1]
     names = [p.name for p in root.rglob("*.py") if p.name != "__init__.py"]
     assert len(names) == len(set(names)), sorted({n for n in names if names.count(n) > 1})
+
+
+def _yaml_examples():
+    """(page:line, kind, parsed) of every ``yaml`` block that is not a file the page has the reader write:
+    the annotated examples of the file formats. ``...`` stands for a part left out."""
+    import yaml
+
+    out = []
+    for page, line, lang, body, why in FENCES:
+        if lang != "yaml" or why is not None:
+            continue
+        doc = yaml.safe_load(body.replace("{...}", "...")) or {}
+        kind = ("study" if "sweep" in doc else "problem" if {"objective", "limits", "catalog"} & set(doc)
+                else "design")
+        out.append((f"{page}:{line}", kind, doc))
+    return out
+
+
+def _unknown_keys(value, schema, defs, path="") -> list[str]:
+    """Keys of ``value`` the JSON Schema (written from the readers' key tables) does not know, recursively."""
+    while "$ref" in schema:
+        schema = {**defs[schema.pop("$ref").rsplit("/", 1)[1]], **schema}
+    options = schema.get("anyOf") or schema.get("oneOf")
+    if options:  # the first form under which the value has no unknown key
+        found = [_unknown_keys(value, dict(o), defs, path) for o in options]
+        return min(found, key=len)
+    if isinstance(value, dict):
+        if schema.get("type") not in ("object", None) or "properties" not in schema:
+            return [] if schema.get("additionalProperties", True) is not False else [f"{path}: {sorted(value)}"]
+        props, patterns = schema["properties"], schema.get("patternProperties", {})
+        bad = []
+        for k, v in value.items():
+            matching = [pat for pat in patterns if re.search(pat, str(k))]
+            if k in props:
+                bad += _unknown_keys(v, dict(props[k]), defs, f"{path}.{k}".lstrip("."))
+            elif matching:
+                bad += _unknown_keys(v, dict(patterns[matching[0]]), defs, f"{path}.{k}".lstrip("."))
+            elif schema.get("additionalProperties", True) is False:
+                bad.append(f"{path}.{k}".lstrip("."))
+            elif isinstance(schema.get("additionalProperties"), dict):
+                bad += _unknown_keys(v, dict(schema["additionalProperties"]), defs, f"{path}.{k}".lstrip("."))
+        return bad
+    if isinstance(value, list) and isinstance(schema.get("items"), dict):
+        return [b for v in value for b in _unknown_keys(v, dict(schema["items"]), defs, f"{path}[]")]
+    return []
+
+
+YAML_EXAMPLES = _yaml_examples()
+
+
+@pytest.mark.parametrize("where, kind, doc", YAML_EXAMPLES, ids=[w for w, _, _ in YAML_EXAMPLES])
+def test_yaml_examples_use_known_keys(where, kind, doc):
+    """Every key in the pages' annotated YAML examples is one the reader accepts (the schema is written from
+    the readers' key tables), so an example cannot keep a renamed or removed key."""
+    from axisopt.schema import json_schema
+
+    schema = json_schema(kind)
+    bad = _unknown_keys(doc, dict(schema), schema.get("$defs", {}))
+    if kind == "study":  # a swept key is a dotted path into the problem file: it must name a problem key
+        problem = json_schema("problem")
+        for dotted in doc.get("sweep", {}):
+            node = {k: "..." for k in [dotted.split(".")[-1]]}
+            for part in reversed(dotted.split(".")[:-1]):
+                node = {part: node}
+            bad += [f"sweep: {b}" for b in _unknown_keys(node, dict(problem), problem["$defs"])]
+    assert not bad, f"{where}: keys a {kind} file does not accept: {bad}"
+
+
+def test_yaml_key_check_finds_a_misspelt_key():
+    from axisopt.schema import json_schema
+
+    schema = json_schema("design")
+    doc = {"axis": {"stroke": "800 mm", "duty_cycle": [{"move": "300 mm", "sped": "2 m/min"}, {"dwell": "1 s"}]},
+           "parts": {"screw": "x", "nutt": "y"}, "catalgs": []}
+    assert sorted(_unknown_keys(doc, dict(schema), schema["$defs"])) == ["axis.duty_cycle[].sped", "catalgs",
+                                                                         "parts.nutt"]
+    study = {"name": "s", "base": "p.yaml", "sweep": {"axis.strok": [1], "limits.max_cost": [2]}}
+    with pytest.raises(AssertionError, match=r"sweep: axis\.strok'"):
+        test_yaml_examples_use_known_keys("x", "study", study)
