@@ -15,6 +15,7 @@ Every Markdown page (README.md and docs/**/*.md) is read:
    keys the readers accept (checked against the JSON Schema written from their key tables).
 7. What a command prints fits 100 columns, except the commands listed in ``WIDE`` (the exceptions
    docs/evaluate.md names).
+8. Every ``axisopt ...`` command quoted inline in the prose uses options and values the parser accepts.
 
 A block preceded by ``<!-- not-run: reason -->`` is not run; ``test_not_run_blocks_are_the_listed_ones``
 keeps the list of such blocks explicit, so nothing is skipped silently. Timings are not deterministic and
@@ -361,3 +362,61 @@ def test_yaml_key_check_finds_a_misspelt_key():
     study = {"name": "s", "base": "p.yaml", "sweep": {"axis.strok": [1], "limits.max_cost": [2]}}
     with pytest.raises(AssertionError, match=r"sweep: axis\.strok'"):
         test_yaml_examples_use_known_keys("x", "study", study)
+
+
+INLINE = re.compile(r"(?<!`)`(axisopt [a-z][^`]*)`(?!`)")
+
+
+def _inline_commands():
+    """(page, command) of every ``axisopt ...`` command quoted inline in the prose (not in a fenced block),
+    and of the not-run blocks' axisopt commands (shown, not run: they must at least parse)."""
+    inline = [(page, m.group(1)) for page, text in TEXT.items() for m in INLINE.finditer(FENCE.sub("", text))]
+    shown = [(page, ln.partition("#")[0].strip()) for page, _, _, body, why in FENCES if why is not None
+             for ln in body.replace("\\\n", " ").splitlines() if ln.startswith("axisopt ")]
+    return inline + shown
+
+
+def _inline_problems(cmd: str) -> list[str]:
+    """What is wrong with an inline command: an option its subcommand does not have, or a value the parser
+    refuses. Placeholders (``FILE``, ``KIND``, ``...``) and omitted required arguments are the prose's
+    shorthand; ``a|b`` stands for each alternative."""
+    import argparse
+    import itertools
+
+    from axisopt.cli import build_parser
+
+    parser = build_parser()
+    subs = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices
+    argv = shlex.split(cmd)[1:]
+    if not argv or argv[0] not in subs:
+        return [f"no command {argv[:1]}"]
+    options = {s for a in subs[argv[0]]._actions for s in a.option_strings}
+    bad = [f"unknown option {t.split('=')[0]}" for t in argv[1:]
+           if t.startswith("--") and t.split("=")[0] not in options]
+    alternatives = [t.split("|") if "|" in t and not t.startswith("-") else [t] for t in argv]
+    for variant in itertools.product(*alternatives):
+        err = io.StringIO()
+        try:
+            with contextlib.redirect_stderr(err):
+                parser.parse_args(list(variant))
+        except (SystemExit, Exception) as e:  # the CLI's parser raises InputError, argparse SystemExit
+            msg = f"{e} {err.getvalue()}"
+            placeholder = any((t.isupper() or "..." in t or t.split(".")[0].isupper()) and t in msg for t in variant)
+            if "arguments are required" not in msg and not placeholder:
+                bad.append(msg.strip())
+    return bad
+
+
+@pytest.mark.parametrize("page, cmd", _inline_commands(), ids=[f"{p}-{c[:40]}" for p, c in _inline_commands()])
+def test_inline_commands_parse(page, cmd):
+    """A command quoted in the prose uses options and values the parser accepts (so a renamed flag or a
+    removed choice cannot stay in the text)."""
+    assert not _inline_problems(cmd), f"{page}: `{cmd}`: {_inline_problems(cmd)}"
+
+
+def test_inline_check_finds_a_stale_flag():
+    assert _inline_problems("axisopt solve --methd exhaustive")[0] == "unknown option --methd"  # problem omitted
+    assert "invalid choice: 'exhaustiv'" in _inline_problems("axisopt solve p.yaml --method exhaustiv")[0]
+    assert "invalid choice: 'gears'" in _inline_problems("axisopt parts motors|gears")[0]
+    assert not _inline_problems("axisopt parts motors|couplings")
+    assert not _inline_problems("axisopt schema KIND")
