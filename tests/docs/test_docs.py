@@ -11,6 +11,11 @@ Every Markdown page (README.md and docs/**/*.md) is read:
    one page in one namespace, so the output shown is the output compared.
 5. Figures quoted in the prose (deterministic ones: optima, sensitivities, diagnosis results) are compared
    with the command's output to the precision the page quotes them.
+6. Every ``yaml`` block that is not a file to write (the annotated examples of the file formats) uses only
+   keys the readers accept (checked against the JSON Schema written from their key tables).
+7. What a command prints fits 100 columns, except the commands listed in ``WIDE`` (the exceptions
+   docs/evaluate.md names).
+8. Every ``axisopt ...`` command quoted inline in the prose uses options and values the parser accepts.
 
 A block preceded by ``<!-- not-run: reason -->`` is not run; ``test_not_run_blocks_are_the_listed_ones``
 keeps the list of such blocks explicit, so nothing is skipped silently. Timings are not deterministic and
@@ -45,6 +50,14 @@ NOT_RUN = {
     ("docs/install.md", "python3 -m venv .venv && .venv/bin/pip install -q -e \".[test,all]\""),
     ("docs/howto-dask.md", "dask scheduler --port 8786"),
     ("docs/solve.md", "axisopt solve problems/teaching_problem.yaml --method bonmin"),
+}
+
+# Commands whose output may exceed 100 columns, as docs/evaluate.md says ("Text output fits 100 columns, except").
+WIDE = {
+    "axisopt compare problems/vmc_x_design.yaml problems/paper_3_1_3_d40.yaml problems/teaching_problem.yaml":
+        "three designs side by side, about 30 columns each",
+    "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml "
+    "--report out/diag --save-calibration": "the line naming the calibration applied to the design",
 }
 
 
@@ -184,8 +197,11 @@ def test_block_runs_as_shown(where, kind, payload, pages):
         assert not wide, f"{where}: '{cmd}' prints lines wider than 100 columns: {wide[0]!r}"
     elif kind == "shell":
         cmd, rc = payload
-        got, _ = _run(cmd, page.dir)
+        got, out = _run(cmd, page.dir)
         assert got == rc, f"{where}: '{cmd}' exited {got}, the page says {rc}"
+        wide = [ln for ln in out.splitlines() if len(ln) > 100]
+        assert not wide or any(" ".join(cmd.split()).startswith(w) for w in WIDE), \
+            f"{where}: '{cmd}' prints lines wider than 100 columns: {wide[0]!r}"
     else:
         test = doctest.DocTestParser().get_doctest(payload, page.globs, where, where, 0)
         runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
@@ -267,3 +283,140 @@ def test_test_files_have_unique_basenames():
     root = Path(__file__).resolve().parents[1]
     names = [p.name for p in root.rglob("*.py") if p.name != "__init__.py"]
     assert len(names) == len(set(names)), sorted({n for n in names if names.count(n) > 1})
+
+
+def _yaml_examples():
+    """(page:line, kind, parsed) of every ``yaml`` block that is not a file the page has the reader write:
+    the annotated examples of the file formats. ``...`` stands for a part left out."""
+    import yaml
+
+    out = []
+    for page, line, lang, body, why in FENCES:
+        if lang != "yaml" or why is not None:
+            continue
+        doc = yaml.safe_load(body.replace("{...}", "...")) or {}
+        kind = ("study" if "sweep" in doc else "problem" if {"objective", "limits", "catalog"} & set(doc)
+                else "design")
+        out.append((f"{page}:{line}", kind, doc))
+    return out
+
+
+def _unknown_keys(value, schema, defs, path="") -> list[str]:
+    """Keys of ``value`` the JSON Schema (written from the readers' key tables) does not know, recursively."""
+    while "$ref" in schema:
+        schema = {**defs[schema.pop("$ref").rsplit("/", 1)[1]], **schema}
+    options = schema.get("anyOf") or schema.get("oneOf")
+    if options:  # the first form under which the value has no unknown key
+        found = [_unknown_keys(value, dict(o), defs, path) for o in options]
+        return min(found, key=len)
+    if isinstance(value, dict):
+        if schema.get("type") not in ("object", None) or "properties" not in schema:
+            return [] if schema.get("additionalProperties", True) is not False else [f"{path}: {sorted(value)}"]
+        props, patterns = schema["properties"], schema.get("patternProperties", {})
+        bad = []
+        for k, v in value.items():
+            matching = [pat for pat in patterns if re.search(pat, str(k))]
+            if k in props:
+                bad += _unknown_keys(v, dict(props[k]), defs, f"{path}.{k}".lstrip("."))
+            elif matching:
+                bad += _unknown_keys(v, dict(patterns[matching[0]]), defs, f"{path}.{k}".lstrip("."))
+            elif schema.get("additionalProperties", True) is False:
+                bad.append(f"{path}.{k}".lstrip("."))
+            elif isinstance(schema.get("additionalProperties"), dict):
+                bad += _unknown_keys(v, dict(schema["additionalProperties"]), defs, f"{path}.{k}".lstrip("."))
+        return bad
+    if isinstance(value, list) and isinstance(schema.get("items"), dict):
+        return [b for v in value for b in _unknown_keys(v, dict(schema["items"]), defs, f"{path}[]")]
+    return []
+
+
+YAML_EXAMPLES = _yaml_examples()
+
+
+@pytest.mark.parametrize("where, kind, doc", YAML_EXAMPLES, ids=[w for w, _, _ in YAML_EXAMPLES])
+def test_yaml_examples_use_known_keys(where, kind, doc):
+    """Every key in the pages' annotated YAML examples is one the reader accepts (the schema is written from
+    the readers' key tables), so an example cannot keep a renamed or removed key."""
+    from axisopt.schema import json_schema
+
+    schema = json_schema(kind)
+    bad = _unknown_keys(doc, dict(schema), schema.get("$defs", {}))
+    if kind == "study":  # a swept key is a dotted path into the problem file: it must name a problem key
+        problem = json_schema("problem")
+        for dotted in doc.get("sweep", {}):
+            node = {k: "..." for k in [dotted.split(".")[-1]]}
+            for part in reversed(dotted.split(".")[:-1]):
+                node = {part: node}
+            bad += [f"sweep: {b}" for b in _unknown_keys(node, dict(problem), problem["$defs"])]
+    assert not bad, f"{where}: keys a {kind} file does not accept: {bad}"
+
+
+def test_yaml_key_check_finds_a_misspelt_key():
+    from axisopt.schema import json_schema
+
+    schema = json_schema("design")
+    doc = {"axis": {"stroke": "800 mm", "duty_cycle": [{"move": "300 mm", "sped": "2 m/min"}, {"dwell": "1 s"}]},
+           "parts": {"screw": "x", "nutt": "y"}, "catalgs": []}
+    assert sorted(_unknown_keys(doc, dict(schema), schema["$defs"])) == ["axis.duty_cycle[].sped", "catalgs",
+                                                                         "parts.nutt"]
+    study = {"name": "s", "base": "p.yaml", "sweep": {"axis.strok": [1], "limits.max_cost": [2]}}
+    with pytest.raises(AssertionError, match=r"sweep: axis\.strok'"):
+        test_yaml_examples_use_known_keys("x", "study", study)
+
+
+INLINE = re.compile(r"(?<!`)`(axisopt [a-z][^`]*)`(?!`)")
+
+
+def _inline_commands():
+    """(page, command) of every ``axisopt ...`` command quoted inline in the prose (not in a fenced block),
+    and of the not-run blocks' axisopt commands (shown, not run: they must at least parse)."""
+    inline = [(page, m.group(1)) for page, text in TEXT.items() for m in INLINE.finditer(FENCE.sub("", text))]
+    shown = [(page, ln.partition("#")[0].strip()) for page, _, _, body, why in FENCES if why is not None
+             for ln in body.replace("\\\n", " ").splitlines() if ln.startswith("axisopt ")]
+    return inline + shown
+
+
+def _inline_problems(cmd: str) -> list[str]:
+    """What is wrong with an inline command: an option its subcommand does not have, or a value the parser
+    refuses. Placeholders (``FILE``, ``KIND``, ``...``) and omitted required arguments are the prose's
+    shorthand; ``a|b`` stands for each alternative."""
+    import argparse
+    import itertools
+
+    from axisopt.cli import build_parser
+
+    parser = build_parser()
+    subs = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices
+    argv = shlex.split(cmd)[1:]
+    if not argv or argv[0] not in subs:
+        return [f"no command {argv[:1]}"]
+    options = {s for a in subs[argv[0]]._actions for s in a.option_strings}
+    bad = [f"unknown option {t.split('=')[0]}" for t in argv[1:]
+           if t.startswith("--") and t.split("=")[0] not in options]
+    alternatives = [t.split("|") if "|" in t and not t.startswith("-") else [t] for t in argv]
+    for variant in itertools.product(*alternatives):
+        err = io.StringIO()
+        try:
+            with contextlib.redirect_stderr(err):
+                parser.parse_args(list(variant))
+        except (SystemExit, Exception) as e:  # the CLI's parser raises InputError, argparse SystemExit
+            msg = f"{e} {err.getvalue()}"
+            placeholder = any((t.isupper() or "..." in t or t.split(".")[0].isupper()) and t in msg for t in variant)
+            if "arguments are required" not in msg and not placeholder:
+                bad.append(msg.strip())
+    return bad
+
+
+@pytest.mark.parametrize("page, cmd", _inline_commands(), ids=[f"{p}-{c[:40]}" for p, c in _inline_commands()])
+def test_inline_commands_parse(page, cmd):
+    """A command quoted in the prose uses options and values the parser accepts (so a renamed flag or a
+    removed choice cannot stay in the text)."""
+    assert not _inline_problems(cmd), f"{page}: `{cmd}`: {_inline_problems(cmd)}"
+
+
+def test_inline_check_finds_a_stale_flag():
+    assert _inline_problems("axisopt solve --methd exhaustive")[0] == "unknown option --methd"  # problem omitted
+    assert "invalid choice: 'exhaustiv'" in _inline_problems("axisopt solve p.yaml --method exhaustiv")[0]
+    assert "invalid choice: 'gears'" in _inline_problems("axisopt parts motors|gears")[0]
+    assert not _inline_problems("axisopt parts motors|couplings")
+    assert not _inline_problems("axisopt schema KIND")
