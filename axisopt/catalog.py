@@ -1,5 +1,9 @@
 """Load and validate part catalogs (``catalogs/*.csv``) into SI pandas tables.
 
+One strict reader (:func:`load_records`, the csv module, no pandas) validates every file; :func:`load_catalogs`
+turns its records into the pandas tables the search uses, and ``axisopt parts`` lists the records as they are
+(its start-up then imports neither pandas nor numpy).
+
 Each CSV header carries the vendor's unit (``lead [mm]``); values are converted once here.
 Errors (unknown unit, missing column, duplicate id, non-numeric cell, non-positive stiffness,
 dangling reference) name the file, line and column.  A user catalog directory is merged after the
@@ -14,11 +18,13 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
-
-import pandas as pd
+from typing import TYPE_CHECKING
 
 from .errors import InputError
 from .units import split_header, unit_factor
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 SHIPPED_DIR = Path(__file__).resolve().parent.parent / "catalogs"
 
@@ -228,6 +234,8 @@ class Catalog:
 
 
 def _empty(name: str) -> pd.DataFrame:
+    import pandas as pd
+
     return pd.DataFrame(columns=list(SCHEMA[name]) + ["_source", "status", "source"]).set_index("id", drop=False)
 
 
@@ -271,7 +279,9 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
     return None
 
 
-def _read_table(path: Path, name: str) -> pd.DataFrame:
+def _read_records(path: Path, name: str) -> list[dict]:
+    """The rows of one CSV as validated records in SI (``status`` and ``source`` filled in for a table without
+    them); the first problem raises a one-line :class:`InputError` naming the file, line and column."""
     schema = SCHEMA[name]
     src = str(path)
     try:
@@ -372,58 +382,94 @@ def _read_table(path: Path, name: str) -> pd.DataFrame:
                              where=f"line {i}, column 1 (id)")
         ids[rec["id"]] = i
         rec["_source"] = f"{src}:{i}"
+        rec.setdefault("status", USER_STATUS)
+        rec.setdefault("source", "")
         records.append(rec)
-    df = pd.DataFrame.from_records(records, columns=list(schema) + ["_source"]
-                                   + [c for c in PROVENANCE if c in seen])
-    if "status" not in seen:
-        df["status"] = USER_STATUS
-    if "source" not in seen:
-        df["source"] = ""
-    return df.set_index("id", drop=False)
+    return records
 
 
-def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
-    """Load the shipped catalogs and any user catalog directories (later ones add parts).
+class PartRows:
+    """The validated catalog rows as plain records (dicts in SI, keyed by column, plus ``_source``, ``status`` and
+    ``source``), per table in file order: what :func:`load_records` returns and :func:`load_catalogs` builds its
+    pandas tables from."""
 
-    A user directory may hold any subset of screws/nuts/bearings/guides CSVs.
-    """
+    def __init__(self, tables: dict[str, list[dict]]):
+        self._tables = tables
+        self._ids = {name: {r["id"]: r for r in rows} for name, rows in tables.items()}
+
+    def table(self, name: str) -> list[dict]:
+        return self._tables[name]
+
+    def part(self, table: str, part_id: str, *, source: str | None = None, key: str | None = None) -> dict:
+        """The row of ``part_id`` (same error as :meth:`Catalog.part` for an unknown id)."""
+        rows = self._ids[table]
+        if part_id not in rows:
+            near = _closest(part_id, rows)
+            hint = f"; did you mean '{near}'?" if near else ""
+            raise InputError(f"unknown {table[:-1]} id '{part_id}'{hint}", source=source, where=key)
+        return rows[part_id]
+
+
+def load_records(extra_dirs=(), *, shipped: bool = True) -> PartRows:
+    """Read and validate the shipped catalogs and any user catalog directories (later ones add parts), without
+    pandas: every check of :func:`load_catalogs` (which builds its tables from these records)."""
     dirs = ([SHIPPED_DIR] if shipped else []) + [Path(d) for d in extra_dirs]
-    tables: dict[str, list[pd.DataFrame]] = {name: [] for name in SCHEMA}
+    tables: dict[str, list[list[dict]]] = {name: [] for name in SCHEMA}
     for d in dirs:
         if not d.is_dir():
             raise InputError("catalog directory not found", source=str(d))
         for name in SCHEMA:
             p = d / f"{name}.csv"
             if p.exists():
-                tables[name].append(_read_table(p, name))
-    out = {}
+                tables[name].append(_read_records(p, name))
+    out: dict[str, list[dict]] = {}
     for name, parts in tables.items():
         if not parts:
             if name not in REQUIRED_TABLES:
-                out[name] = _empty(name)
+                out[name] = []
                 continue
             raise InputError(f"no {name}.csv found in catalog directories", source=", ".join(map(str, dirs)))
-        df = pd.concat(parts) if len(parts) > 1 else parts[0]
-        dup = df.index[df.index.duplicated()]
-        if len(dup):
-            row = df.loc[dup[0]]
-            src = row["_source"].iloc[-1] if isinstance(row, pd.DataFrame) else row["_source"]
-            raise InputError(f"duplicate id '{dup[0]}' across catalog directories", source=src)
-        out[name] = df
-    nuts = out["nuts"]
-    bad = ~nuts["screw_id"].isin(out["screws"].index)
-    if bad.any():
-        r = nuts[bad].iloc[0]
-        raise InputError(f"screw_id '{r['screw_id']}' is not in screws.csv", source=r["_source"],
-                         where="column screw_id")
-    other = nuts["vendor"].to_numpy() != out["screws"].loc[nuts["screw_id"], "vendor"].to_numpy()
-    if other.any():
-        r = nuts[other].iloc[0]
-        v = out["screws"].loc[r["screw_id"], "vendor"]
-        raise InputError(f"nut '{r['id']}' of vendor {r['vendor']} is listed on screw '{r['screw_id']}' of vendor "
-                         f"{v}: a nut runs only on its own vendor's shaft", source=r["_source"],
-                         where="column screw_id")
-    return Catalog(**out)
+        rows = [r for part in parts for r in part]
+        last: dict[str, dict] = {}
+        first_dup = None
+        for r in rows:  # each file's ids are unique already: a repeat comes from another directory
+            if r["id"] in last and first_dup is None:
+                first_dup = r["id"]
+            last[r["id"]] = r
+        if first_dup is not None:
+            raise InputError(f"duplicate id '{first_dup}' across catalog directories",
+                             source=last[first_dup]["_source"])
+        out[name] = rows
+    screws = {r["id"]: r for r in out["screws"]}
+    for r in out["nuts"]:
+        if r["screw_id"] not in screws:
+            raise InputError(f"screw_id '{r['screw_id']}' is not in screws.csv", source=r["_source"],
+                             where="column screw_id")
+    for r in out["nuts"]:
+        v = screws[r["screw_id"]]["vendor"]
+        if r["vendor"] != v:
+            raise InputError(f"nut '{r['id']}' of vendor {r['vendor']} is listed on screw '{r['screw_id']}' of "
+                             f"vendor {v}: a nut runs only on its own vendor's shaft", source=r["_source"],
+                             where="column screw_id")
+    return PartRows(out)
+
+
+def _frame(name: str, rows: list[dict]) -> pd.DataFrame:
+    import pandas as pd
+
+    if not rows:
+        return _empty(name)
+    df = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]) + ["_source", *PROVENANCE])
+    return df.set_index("id", drop=False)
+
+
+def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
+    """Load the shipped catalogs and any user catalog directories (later ones add parts) as pandas tables.
+
+    A user directory may hold any subset of screws/nuts/bearings/guides CSVs.
+    """
+    rows = load_records(extra_dirs, shipped=shipped)
+    return Catalog(**{name: _frame(name, rows.table(name)) for name in SCHEMA})
 
 
 _CACHE: dict[tuple, Catalog] = {}

@@ -58,21 +58,23 @@ def register(sub) -> None:
     p.set_defaults(func=cmd_parts)
 
 
-def _select(df, vendors, status):
-    if vendors:
-        df = df[df["vendor"].isin(vendors)]
-    if status:
-        df = df[df["status"] == status]
-    return df
+def _rows(table) -> list[dict]:
+    """The rows of a table as records (a list from :func:`axisopt.catalog.load_records`, or a pandas table)."""
+    return table.to_dict("records") if hasattr(table, "to_dict") else list(table)
+
+
+def _select(rows, vendors, status):
+    return [r for r in rows if (not vendors or r["vendor"] in vendors) and (not status or r["status"] == status)]
 
 
 def _filtered(cat, kind, vendors, status):
-    df = cat.table(kind)
-    unknown = sorted(set(vendors or ()) - set(df["vendor"]))
+    rows = _rows(cat.table(kind))
+    have = {r["vendor"] for r in rows}
+    unknown = sorted(set(vendors or ()) - have)
     if unknown:
         raise InputError(f"no {kind} of vendor '{unknown[0]}'; vendors are "
-                         f"{', '.join(sorted(set(df['vendor'])))}", where="--vendor")
-    return _select(df, vendors, status)
+                         f"{', '.join(sorted(have))}", where="--vendor")
+    return _select(rows, vendors, status)
 
 
 def counts(cat, vendors=None, status=None) -> list[dict]:
@@ -81,11 +83,12 @@ def counts(cat, vendors=None, status=None) -> list[dict]:
 
     out = []
     for kind in KINDS:
-        df = _select(cat.table(kind), vendors, status)
-        for vendor, g in df.groupby("vendor", sort=True):
-            rec = {"kind": kind, "vendor": vendor, "rows": int(len(g))}
+        rows = _select(_rows(cat.table(kind)), vendors, status)
+        for vendor in sorted({r["vendor"] for r in rows}):
+            g = [r for r in rows if r["vendor"] == vendor]
+            rec = {"kind": kind, "vendor": vendor, "rows": len(g)}
             for s in STATUSES:
-                rec[s.replace("vendor", "vendor_data").replace("-", "_")] = int((g["status"] == s).sum())
+                rec[s.replace("vendor", "vendor_data").replace("-", "_")] = sum(r["status"] == s for r in g)
             out.append(rec)
     return out
 
@@ -124,35 +127,35 @@ def _grid(heads, body, right) -> list:
     return [line(heads), line(["-" * w for w in widths])] + [line(b) for b in body]
 
 
-def rows_table(df, kind, screws=None) -> str:
+def rows_table(rows, kind, screws=None) -> str:
     """The rows of one kind as text; nuts are grouped under the screw they are made for."""
     cols = _TABLE[kind]
     heads = ["id"] + [h for h, _, _, _ in cols]
     right = [False] + [f is not None for _, _, f, _ in cols]
-
-    def body(sub):
-        return [[str(r["id"])] + [_cell(r, c, f, fmt) for _, c, f, fmt in cols] for _, r in sub.iterrows()]
-    if kind != "nuts" or df.empty:
-        return "\n".join(_grid(heads, body(df), right))
-    lines = []
-    grid = _grid(heads, body(df), right)
-    lines.extend(grid[:2])
-    at = 2
-    for screw_id, g in df.groupby("screw_id", sort=False):
-        s = screws.loc[screw_id] if screws is not None and screw_id in screws.index else None
+    rows = _rows(rows)
+    body = [[str(r["id"])] + [_cell(r, c, f, fmt) for _, c, f, fmt in cols] for r in rows]
+    if kind != "nuts" or not rows:
+        return "\n".join(_grid(heads, body, right))
+    screws = {r["id"]: r for r in _rows(screws)} if screws is not None else {}
+    grid = _grid(heads, body, right)
+    lines = grid[:2]
+    groups: dict[str, list[list[str]]] = {}  # screw id -> its nuts' lines, screws in order of first appearance
+    for r, line in zip(rows, grid[2:]):
+        groups.setdefault(r["screw_id"], []).append(line)
+    for screw_id, g in groups.items():
+        s = screws.get(screw_id)
         size = f" ({s['nominal_diameter'] * 1e3:.0f} x {s['lead'] * 1e3:g} mm)" if s is not None else ""
         lines.append(f"screw {screw_id}{size}")
-        lines.extend(grid[at:at + len(g)])
-        at += len(g)
+        lines.extend(g)
     return "\n".join(lines)
 
 
-def rows_dicts(df, kind) -> list[dict]:
+def rows_dicts(rows, kind) -> list[dict]:
     """Every column of the rows, in vendor units (the unit in the key), with vendor, provenance and source."""
     from ..catalog import SCHEMA
 
     out = []
-    for _, r in df.iterrows():
+    for r in _rows(rows):
         rec = {}
         for c, k in SCHEMA[kind].items():
             v = r[c]
@@ -186,55 +189,56 @@ def _mm(text, flag) -> float:
     return v / 1e3
 
 
-def apply_filters(cat, kind, df, args):
-    """The rows of ``df`` (kind ``kind``) that pass --fits, --diameter, --lead and --preload-class."""
+def apply_filters(cat, kind, rows, args):
+    """The ``rows`` (kind ``kind``) that pass --fits, --diameter, --lead and --preload-class."""
     for flag, value, kinds in (("--fits", args.fits, _FITS), ("--diameter", args.diameter, _SIZE),
                                ("--lead", args.lead, _SIZE), ("--preload-class", args.preload_class, _CLASS)):
         if value is not None and kind not in kinds:
             raise InputError(f"applies to {' and '.join(kinds)}, not {kind}", where=flag)
-    screws = cat.table("screws")
+    screws = _rows(cat.table("screws"))
     if args.fits is not None:
         screw = cat.part("screws", args.fits, key="--fits")
         if kind == "nuts":
-            df = df[df["screw_id"] == screw["id"]]
+            rows = [r for r in rows if r["screw_id"] == screw["id"]]
         else:
-            df = df[(df["bore"] >= screw["support_bore_min"] - 1e-9) & (df["bore"] <= screw["support_bore_max"] + 1e-9)]
+            rows = [r for r in rows
+                    if screw["support_bore_min"] - 1e-9 <= r["bore"] <= screw["support_bore_max"] + 1e-9]
     for flag, value, col in (("--diameter", args.diameter, "nominal_diameter"), ("--lead", args.lead, "lead")):
         if value is None:
             continue
         v = _mm(value, flag)
-        ok = screws.index[(screws[col] - v).abs() < 1e-6]
-        df = df[df["id"].isin(ok)] if kind == "screws" else df[df["screw_id"].isin(ok)]
+        ok = {s["id"] for s in screws if abs(s[col] - v) < 1e-6}
+        rows = [r for r in rows if r["id" if kind == "screws" else "screw_id"] in ok]
     if args.preload_class is not None:
-        classes = sorted(set(df["preload_class"].astype(str)))
+        classes = sorted({str(r["preload_class"]) for r in rows})
         if args.preload_class not in classes:
             raise InputError(f"no {kind} of preload class '{args.preload_class}' here; classes are "
                              f"{', '.join(classes)}", where="--preload-class")
-        df = df[df["preload_class"].astype(str) == args.preload_class]
-    return df
+        rows = [r for r in rows if str(r["preload_class"]) == args.preload_class]
+    return rows
 
 
 def cmd_parts(args) -> int:
-    from ..catalog import STATUSES, load_catalogs
+    from ..catalog import STATUSES, load_records
 
     if args.status is not None and args.status not in STATUSES:
         raise InputError(f"'{args.status}' is not one of {', '.join(STATUSES)}", where="--status")
-    cat = load_catalogs(args.catalogs)
+    cat = load_records(args.catalogs)  # plain records: no pandas on this path
     quiet = stdout_taken(args.json, args.csv)
     if args.kind:
-        df = apply_filters(cat, args.kind, _filtered(cat, args.kind, args.vendor, args.status), args)
+        rows = apply_filters(cat, args.kind, _filtered(cat, args.kind, args.vendor, args.status), args)
         if not quiet:
-            print(rows_table(df, args.kind, cat.table("screws")))
-            print(f"\n{len(df)} {args.kind}; all columns, vendor and source: --csv or --json")
+            print(rows_table(rows, args.kind, cat.table("screws")))
+            print(f"\n{len(rows)} {args.kind}; all columns, vendor and source: --csv or --json")
         if args.json:
-            write_json({"kind": args.kind, "rows": rows_dicts(df, args.kind)}, args.json)
+            write_json({"kind": args.kind, "rows": rows_dicts(rows, args.kind)}, args.json)
         if args.csv:
             import pandas as pd
 
             from ..fileio import csv_safe, open_output
 
             with open_output(args.csv, "w", what="CSV") as fh:  # text cells escaped against CSV injection
-                csv_safe(pd.DataFrame(rows_dicts(df, args.kind))).to_csv(fh, index=False)
+                csv_safe(pd.DataFrame(rows_dicts(rows, args.kind))).to_csv(fh, index=False)
             if not quiet:
                 print(f"rows written to {args.csv}")
         return EXIT_OK
@@ -243,7 +247,7 @@ def cmd_parts(args) -> int:
             raise InputError("needs a kind (e.g. 'axisopt parts nuts --fits SCREW_ID')",
                              where="--" + flag.replace("_", "-"))
     for v in args.vendor or ():
-        if not any(v in set(cat.table(k)["vendor"]) for k in KINDS):
+        if not any(r["vendor"] == v for k in KINDS for r in cat.table(k)):
             raise InputError(f"no parts of vendor '{v}' in the catalogs", where="--vendor")
     recs = counts(cat, args.vendor, args.status)
     if not quiet:

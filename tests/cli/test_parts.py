@@ -98,3 +98,19 @@ def test_a_nut_for_another_screw_is_refused_with_the_nuts_that_fit(tmp_path, cap
     assert len(err.splitlines()) == 1 and "parts.nut" in err
     for nut in (r["id"] for r in _rows("nuts") if r["screw_id"] == SCREW):
         assert nut in err
+
+
+def test_nuts_listed_under_their_own_screw(capsys):
+    """The text listing groups nuts under a 'screw ID' heading: every nut sits under the screw its CSV row names
+    (catalogs add nuts for a screw further down the file, e.g. Rexroth's FDMES after its FEMES)."""
+    assert main(["parts", "nuts"]) == 0
+    screw_of = {r["id"]: r["screw_id"] for r in _rows("nuts")}
+    under, seen = None, set()
+    for line in capsys.readouterr().out.splitlines():
+        word = line.split(" ", 1)[0]
+        if line.startswith("screw "):
+            under = line.split()[1]
+        elif word in screw_of:
+            assert screw_of[word] == under, f"{word} listed under {under}, made for {screw_of[word]}"
+            seen.add(word)
+    assert seen == set(screw_of)
