@@ -55,10 +55,11 @@ def cmd_diagnose(args) -> int:
         cal = save_calibration(diag, args.save_calibration, design, args.data)
         if not quiet:
             print(f"calibration written to {args.save_calibration}")
-            for a in cal.get("applied", []):
-                print(f"  applied by evaluate: {a}")
-            for a in cal.get("not_applied", []):
-                print(f"  not applied: {a}")
+            import textwrap
+
+            for head, key in (("applied by evaluate", "applied"), ("not applied", "not_applied")):
+                for a in cal.get(key, []):
+                    print("\n".join(textwrap.wrap(f"  {head}: {a}", 100, subsequent_indent="      ")))
     if args.json:
         write_json(diagnosis_dict(diag), args.json)
     return EXIT_OK

@@ -140,6 +140,9 @@ def load_compared(paths, method: str = "default") -> list:
     return out
 
 
+TEXT_WIDTH = 100  # the terminal columns the table fits
+
+
 def _components(ev: Evaluation) -> dict:
     v = ev.values
     i = int(np.argmin(v["k_total"]))
@@ -147,13 +150,15 @@ def _components(ev: Evaluation) -> dict:
 
 
 def compare_table(items) -> str:
-    """The text table: one column per design, the weakest link of each marked with '<'."""
+    """The text table: one column per design, the weakest link of each marked with '<'.  Within 100 columns:
+    when the designs do not fit side by side, the table is printed in blocks of as many designs as fit, one
+    under the other."""
     w0 = 34
     width = max(22, *(min(30, len(c.label) + 2) for c in items))
-    rows: list = []
+    rows: list = []  # a text line, or (name, cells) of a table row
 
     def row(name, cells):
-        rows.append(f"{name:<{w0}}" + "".join(f"{str(c)[:width - 1]:>{width}}" for c in cells))
+        rows.append((name, list(cells)))
 
     def num(x, nd=1):
         return "-" if x is None or (isinstance(x, float) and not math.isfinite(x)) else f"{x:,.{nd}f}"
@@ -234,15 +239,21 @@ def compare_table(items) -> str:
             return f"{m} ({fmt_value(r['available'])}/{fmt_value(r['needed'])})" + ("  " if r["pass"] else " !")
         row(f"  {CHECK_SHORT[c]}" + (f" [{unit}]" if unit else ""), [cell(t) for t in tables])
     row("all checks pass", each(lambda e: "yes" if min(e.checks().values()) >= 1.0 else "NO"))
+    per = max(1, (TEXT_WIDTH - w0) // width)  # designs side by side
+    blocks = []
+    for j in range(0, len(items), per):
+        lines = [r if isinstance(r, str) else
+                 f"{r[0]:<{w0}}" + "".join(f"{str(c)[:width - 1]:>{width}}" for c in r[1][j:j + per]) for r in rows]
+        blocks.append("\n".join(ln.rstrip() for ln in lines))
     solved = [c for c in items if c.solve is not None]
     if solved:
-        rows.append("")
-        rows.append("solved problems")
+        tail = ["solved problems"]
         for c in solved:
             s = c.solve
             val = "-" if s["objective_value"] is None else f"{s['objective_value']:,.3f} {s['objective_unit']}"
-            rows.append(f"  {c.label}: {s['status']} ({s['method']}), {s['objective']} = {val}")
-    return "\n".join(rows)
+            tail.append(f"  {c.label}: {s['status']} ({s['method']}), {s['objective']} = {val}")
+        blocks.append("\n".join(tail))
+    return "\n\n".join(blocks)
 
 
 def compare_dict(items) -> dict:
