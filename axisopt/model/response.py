@@ -79,15 +79,22 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     return out
 
 
+def drive_inputs(p: dict, preload) -> tuple:
+    """What the drive block takes from the mechanics of a combination: the moving mass [kg] and the drag
+    torques by source [N m] (:func:`axisopt.model.drag.drag_torque`).  The guide enters the drive only through
+    these two, so the searches can bound the drive over a range of guides from their ranges."""
+    p = with_temperature(p, heat_balance(p, preload))
+    m = masses(p)
+    return m["moving_mass"], drag_torque(p, preload, axial_loads(p, m["moving_mass"]))
+
+
 def drive_response(p: dict, preload) -> dict:
     """The outputs of :func:`axis_response` that the motor and coupling change (the drive block and the cost),
     from the same sub-assemblies without the stiffness chain and the modes: for the searches, which screen
     the mechanics once per combination of screw, nut, bearing and guide and then each drive against it, and
     solve the preload against the motor-torque limits (which depend on it through the nut's drag only)."""
-    p = with_temperature(p, heat_balance(p, preload))
-    m = masses(p)
-    loads = axial_loads(p, m["moving_mass"])
-    out = drag_torque(p, preload, loads)
-    out.update(drive(p, m["moving_mass"], out["drag_torque"]))
+    moving, out = drive_inputs(p, preload)
+    out = dict(out)
+    out.update(drive(p, moving, out["drag_torque"]))
     out["cost"] = cost(p)
     return out

@@ -7,14 +7,14 @@ relative misses (:func:`miss_scores`).
 Two ways to the same answer:
 
 * *best-first over blocks* (default method): every (mounting, nut, bearing) block -- all its guides and
-  drives -- gets, from one evaluation with the optimistic guide of each guide type
-  (:meth:`Space.params_optimistic_guide`), the best value any of its combinations could reach on each limit
-  the optimistic guide bounds, and so a lower bound of its combinations' miss scores.  Blocks are scored one
-  by one only while they could still improve a limit's best value, meet a limit not met yet, or hold one of
-  the closest designs.  The limits the optimistic guide does not bound (the motor and coupling checks, the
-  inertia ratio) count as "could be met" in the first round; one that no scored block met then is evaluated
-  over every combination on the drive sub-assembly alone (:func:`_drive_pass`: its best value exact, and
-  each block's least sum of such misses added to its score lower bound).
+  drives -- gets the best value any of its combinations could reach on each limit, and so a lower bound of
+  its combinations' miss scores: for the mechanical limits from one evaluation with the optimistic guide of
+  each guide type (:meth:`Space.params_optimistic_guide`); for the drive's (motor and coupling checks,
+  inertia ratio), which the optimistic guide does not bound (less friction can raise a deceleration
+  torque), from the drive block evaluated in interval arithmetic (:mod:`.interval`) per drive pair over the
+  range of moving mass and drag torque the block's guides give (:func:`drive_optimism`).  Blocks are scored
+  one by one only while they could still improve a limit's best value, meet a limit not met yet, or hold
+  one of the closest designs.
 * *every combination* (exhaustive method, and the reference of the tests): :func:`miss_scores` over the
   whole product.
 """
@@ -24,8 +24,10 @@ from __future__ import annotations
 import numpy as np
 
 from .. import model
+from ..model.drive import drive as drive_block
 from ..model.limits import CHECK_RECORDS
 from .core import candidate_values
+from .interval import Interval, ends
 from .result import Infeasibility
 from .space import COUPLING_KEYS, DRIVE_KEYS, Space, _vec, respond, respond_drive
 
@@ -48,6 +50,7 @@ def weight(c) -> float:
     return 1.0
 
 
+DRIVE_NUTS = 64  # nuts per evaluation of the drive limits' interval bounds (memory: nuts x bearings x guides)
 FIRST_BATCH = 32  # blocks scored in the first round of the best-first explanation; doubles each round
 BOUND_RTOL = 1e-9  # slack on the block bounds (rounding of the same sums in another order)
 
@@ -119,13 +122,15 @@ def _bounded(c) -> bool:
     return not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")
 
 
-def block_optimism(space: Space, constraints):
-    """Per mounting and (nut, bearing) block: for each limit the optimistic guide bounds, a value no
-    combination of the block beats at the limit's favourable preload end (profiles on
-    :meth:`Space.bound_positions`), and a lower bound of the block's miss scores.
-    Returns a list over mountings of (values dict, lower bound)."""
+def block_optimism(space: Space, constraints, drive: bool = True):
+    """Per mounting and (nut, bearing) block: for each limit a value no combination of the block beats at the
+    limit's favourable preload end -- the limits the optimistic guide bounds from it (profiles on
+    :meth:`Space.bound_positions`), the drive's from :func:`drive_optimism` (unless not ``drive``) -- and a
+    lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
     _, N, B, _ = space.shape
     bounded = [c for c in constraints if _bounded(c)]
+    drive = [c for c in constraints if not _bounded(c)] if drive else []
+    constraints = bounded + drive
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
     # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped there
     # unless one of those reads them (as in _score_nuts)
@@ -137,13 +142,13 @@ def block_optimism(space: Space, constraints):
     for mounting in space.mountings:
         x = space.bound_positions(mounting) if few else space.positions(mounting)
         step = max(1, CHUNK // max(B * len(x), 1))
-        best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in bounded}
+        best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints}
         for n0 in range(0, N, step):
             sl = slice(n0, min(N, n0 + step))
             lo = space.preload_lo[sl].reshape(-1, 1, 1, 1)
             hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
             shape = (sl.stop - sl.start, B)
-            for t in types:
+            for t in types if bounded else ():
                 p = space.params_optimistic_guide(mounting, sl, str(t))
                 out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
                 out_hi = respond(p, x, mounting, hi, drive_block=False)
@@ -151,10 +156,43 @@ def block_optimism(space: Space, constraints):
                     v = _favourable(c, out_lo, out_hi, shape + (1,))[..., 0]
                     pick = np.maximum if c.sense == ">=" else np.minimum
                     best[c.name][sl] = pick(best[c.name][sl], v)
+            for n1 in range(sl.start, sl.stop, DRIVE_NUTS) if drive else ():
+                s1 = slice(n1, min(sl.stop, n1 + DRIVE_NUTS))
+                for name, v in drive_optimism(space, mounting, s1, drive).items():
+                    best[name][s1] = v
         lb = np.where(space.fits, 0.0, RULE_WEIGHT)
-        for c in bounded:
+        for c in constraints:
             lb = lb + weight(c) * c.violation(best[c.name])
         out.append((best, lb))
+    return out
+
+
+def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict:
+    """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the drive block),
+    per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at the limit's
+    favourable preload end.  The guide enters the drive block only through the moving mass and the drag torque
+    (:func:`axisopt.model.drive_inputs`), so the block is evaluated once per drive pair in interval arithmetic
+    over the range of the two that the block's guides give (a box holding every guide's pair); the best over
+    the drive pairs bounds the block.  Returns {limit name: (nuts, bearings)}."""
+    pm = space.params_structured(mounting, nut_slice, mechanics=True)  # (nuts, bearings, guides, 1)
+    pd = space.params_drive_pairs(mounting, nut_slice)  # (nuts, bearings, drive pairs, 1)
+    full = (nut_slice.stop - nut_slice.start, space.shape[2], space.shape[3] // max(space.n_drives, 1), 1)
+    opt = []  # per preload end: (lower ends, upper ends) of the drive outputs
+    for pre in (space.preload_lo[nut_slice], space.preload_hi[nut_slice]):
+        with np.errstate(divide="ignore"):
+            moving, drag = model.drive_inputs(pm, pre.reshape(-1, 1, 1, 1))
+            m = Interval.over(np.broadcast_to(moving, full), axis=2)
+            t = Interval.over(np.broadcast_to(drag["drag_torque"], full), axis=2)
+            opt.append(ends(drive_block(pd, m, t)))
+    shape = (full[0], full[1], space.n_drives)
+    out = {}
+    for c in drive:
+        i = 1 if c.sense == ">=" else 0  # the optimistic end of the interval
+        if c.key not in opt[0][i]:
+            raise KeyError(f"limit {c.name} reads {c.key}, which neither the optimistic guide nor the drive "
+                           "block bounds")
+        v = _favourable(c, opt[0][i], opt[1][i], shape)
+        out[c.name] = v.max(axis=-1) if c.sense == ">=" else v.min(axis=-1)
     return out
 
 
@@ -162,11 +200,13 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     """Blocks of (combination numbers, miss scores) in best-first order, until no block left out could
     change the explanation: improve the best value of a limit no block meets yet (or meet it), or hold a
     design among the ``n_closest`` (its score lower bound not above the current ``n_closest``-th score)."""
-    opt = block_optimism(space, constraints)
+    # the drive limits' bounds (interval arithmetic over every block) wait until a drive limit is left unmet by
+    # the first round: most explanations never need them
+    opt = block_optimism(space, constraints, drive=False)
+    drive = [c for c in constraints if not _bounded(c)]
     M, (_, N, B, _) = len(space.mountings), space.shape
-    bounded = {c.name for c in constraints if _bounded(c)}
     lb = np.stack([o[1] for o in opt])  # (M, N, B)
-    vals = {c.name: np.stack([o[0][c.name] for o in opt]) for c in constraints if c.name in bounded}
+    vals = {name: np.stack([o[0][name] for o in opt]) for name in opt[0][0]}
     G, X = space.shape[3], max(len(space.positions(m)) for m in space.mountings)
     rows = max(1, CHUNK // max(G * X, 1))  # (nut, bearing) pairs scored per evaluation
     fits = np.broadcast_to(space.fits, (M, N, B))
@@ -174,19 +214,22 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     done = np.zeros((M, N, B), dtype=bool)
     scores = np.zeros(0)
     batch = FIRST_BATCH
-    drive_known = False
     while not done.all():
-        if not drive_known and done.any() and any(not tally.met[c.name] for c in constraints
-                                                  if c.name not in bounded):
-            lb = lb + _drive_pass(space, [c for c in constraints if c.name not in bounded], tally)
-            drive_known = True
+        if done.any() and any(c.name not in vals and not tally.met[c.name] for c in drive):
+            for mi, mounting in enumerate(space.mountings):
+                for n0 in range(0, N, DRIVE_NUTS):
+                    sl = slice(n0, min(N, n0 + DRIVE_NUTS))
+                    for c, v in zip(drive, drive_optimism(space, mounting, sl, drive).values()):
+                        vals.setdefault(c.name, np.empty((M, N, B)))[mi, sl] = v
+            for c in drive:
+                lb = lb + weight(c) * c.violation(vals[c.name])
         want = np.zeros((M, N, B), dtype=bool)
         open_ = ~done
         for c in constraints if done.any() else ():  # first round: the lowest score bounds only (below)
-            if tally.met[c.name] or (drive_known and c.name not in bounded):
+            if tally.met[c.name]:
                 continue
             cand = open_ & usable
-            if c.name not in bounded:  # could be met anywhere: the open blocks of lowest score bound first
+            if c.name not in vals:  # a drive limit before its bounds: could be met anywhere
                 want |= _first(cand, lb, batch)
                 continue
             v = vals[c.name]
@@ -210,34 +253,6 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
                     yield idx, score
         done |= want
         batch *= 2
-
-
-def _drive_pass(space: Space, drive, tally: _Tally) -> np.ndarray:
-    """The limits the optimistic guide does not bound (the drive's: motor and coupling checks, inertia
-    ratio), each at its favourable preload end on the drive sub-assembly alone (no stiffness chain, no
-    positions) over every combination: folded into ``tally`` (so their best values are exact), and per
-    block the least sum of their misses over its guides and drives, which the block's score lower bound
-    may add.  Returns that sum, (mountings, nuts, bearings)."""
-    _, N, B, G = space.shape
-    out = np.zeros((len(space.mountings), N, B))
-    step = max(1, CHUNK // max(B * G, 1))
-    for mi, mounting in enumerate(space.mountings):
-        for n0 in range(0, N, step):
-            sl = slice(n0, min(N, n0 + step))
-            shape = (sl.stop - sl.start, B, G)
-            fits = np.broadcast_to(space.fits[sl][:, :, None], shape)
-            pd = space.params_structured(mounting, sl)
-            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1)
-            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
-            d_lo, d_hi = respond_drive(pd, lo), respond_drive(pd, hi)
-            total = np.zeros(shape)
-            for c in drive:
-                v = _favourable(c, d_lo, d_hi, shape)
-                miss = c.violation(v)
-                total = total + weight(c) * miss
-                tally.add(c, v, miss, fits)
-            out[mi, sl] = total.min(axis=-1)
-    return out
 
 
 def _first(cand, key, n):

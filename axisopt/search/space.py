@@ -359,6 +359,18 @@ class Space:
             ps["motor_price"], ps["coupling_price"] = float(price.min()), 0.0
         return _as_dtype(ps, dtype)
 
+    def params_drive_pairs(self, mounting: str, nut_sel) -> dict:
+        """Parameters over (nuts ``nut_sel``, bearings, drive pairs, 1) with the first guide's columns: for the
+        drive block (:func:`axisopt.model.drive.drive`), which takes the guide only through the moving mass
+        and the drag torque passed to it (the explanation's interval bounds over the guides)."""
+        D = self.n_drives
+        s, nt, b = self._nut_bearing_arrays(nut_sel, float)
+        g = _shaped({k: v[:1] for k, v in self.g_arr.items()}, (1, 1, 1, 1), float)
+        mo = None if self.m_arr is None else _shaped({k: v[:D] for k, v in self.m_arr.items()}, (1, 1, -1, 1), float)
+        cp = None if self.c_arr is None else _shaped({k: v[:D] for k, v in self.c_arr.items()}, (1, 1, -1, 1),
+                                                     float)
+        return model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
+
     def _nut_bearing_arrays(self, nut_sel, dtype, bearings=None) -> tuple:
         """Screw and nut columns of the nuts ``nut_sel`` on the first axis, every bearing on the second (or,
         with ``bearings`` aligned with the nuts, those bearings on the first axis too)."""
