@@ -478,7 +478,9 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
                     motor=motor, coupling=coupling, nut_preload=preload,
                     name=name or f"{space.problem.name}-{rank or 'design'}",
                     source=space.problem.source, assumed=space.problem.assumed)
-    ev = model.evaluate(design)
+    # the model on numpy: the same formula as the CasADi Function (tests/model/test_model.py holds them to 1e-10)
+    # without building that Function for every new axis (a study's cases, the closest designs)
+    ev = model.evaluate(design, use_casadi=False)
     v = ev.values
     J = float(objective.value({k: np.asarray(v[k]) for k, _ in objective.terms}))
     return Candidate(rank=rank, combination=int(combo), mounting=mounting, screw=str(screw["id"]),

@@ -50,6 +50,7 @@ def weight(c) -> float:
     return 1.0
 
 
+DRIVE_BEARING_GROUPS = 8  # bearings taken together in the drive limits' interval bounds (module docstring)
 DRIVE_NUTS = 64  # nuts per evaluation of the drive limits' interval bounds (memory: nuts x bearings x guides)
 FIRST_BATCH = 32  # blocks scored in the first round of the best-first explanation; doubles each round
 BOUND_RTOL = 1e-9  # slack on the block bounds (rounding of the same sums in another order)
@@ -171,20 +172,42 @@ def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict
     """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the drive block),
     per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at the limit's
     favourable preload end.  The guide enters the drive block only through the moving mass and the drag torque
-    (:func:`axisopt.model.drive_inputs`), so the block is evaluated once per drive pair in interval arithmetic
-    over the range of the two that the block's guides give (a box holding every guide's pair); the best over
+    (:func:`axisopt.model.drive_inputs`), so the drive block is evaluated once per drive pair in interval
+    arithmetic over the range of the two that the guides give (a box holding every guide's pair).  The
+    bearings are taken in :data:`DRIVE_BEARING_GROUPS` groups of neighbouring drag torque, each bearing
+    parameter an interval over its group: a group's bound holds each of its bearings' blocks.  The best over
     the drive pairs bounds the block.  Returns {limit name: (nuts, bearings)}."""
     pm = space.params_structured(mounting, nut_slice, mechanics=True)  # (nuts, bearings, guides, 1)
     pd = space.params_drive_pairs(mounting, nut_slice)  # (nuts, bearings, drive pairs, 1)
-    full = (nut_slice.stop - nut_slice.start, space.shape[2], space.shape[3] // max(space.n_drives, 1), 1)
+    B = space.shape[2]
+    full = (nut_slice.stop - nut_slice.start, B, space.shape[3] // max(space.n_drives, 1), 1)
+    torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[0, :, 0, 0]
+    order = np.argsort(torque, kind="stable")
+    starts = np.unique(np.linspace(0, B, min(B, DRIVE_BEARING_GROUPS) + 1).astype(int)[:-1])
+    group = np.empty(B, dtype=np.int64)
+    group[order] = np.searchsorted(starts, np.arange(B), side="right") - 1
+
+    def over_groups(lo, hi):
+        """(lo, hi) along the bearing axis reduced to each group's range."""
+        lo, hi = np.take(lo, order, axis=1), np.take(hi, order, axis=1)
+        return np.minimum.reduceat(lo, starts, axis=1), np.maximum.reduceat(hi, starts, axis=1)
+
+    def by_group(v):
+        a = np.asarray(v)
+        if B > 1 and a.ndim >= 2 and a.shape[1] == B and a.dtype.kind == "f":
+            return Interval(*over_groups(a, a))
+        return v
+    pg = {k: (v if k == "duty" else by_group(v)) for k, v in pd.items()}
     opt = []  # per preload end: (lower ends, upper ends) of the drive outputs
     for pre in (space.preload_lo[nut_slice], space.preload_hi[nut_slice]):
         with np.errstate(divide="ignore"):
             moving, drag = model.drive_inputs(pm, pre.reshape(-1, 1, 1, 1))
-            m = Interval.over(np.broadcast_to(moving, full), axis=2)
-            t = Interval.over(np.broadcast_to(drag["drag_torque"], full), axis=2)
-            opt.append(ends(drive_block(pd, m, t)))
-    shape = (full[0], full[1], space.n_drives)
+            ranges = []
+            for v in (moving, drag["drag_torque"]):
+                v = np.broadcast_to(v, full)
+                ranges.append(Interval(*over_groups(v.min(axis=2, keepdims=True), v.max(axis=2, keepdims=True))))
+            opt.append(ends(drive_block(pg, *ranges)))
+    shape = (full[0], len(starts), space.n_drives)
     out = {}
     for c in drive:
         i = 1 if c.sense == ">=" else 0  # the optimistic end of the interval
@@ -192,7 +215,7 @@ def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict
             raise KeyError(f"limit {c.name} reads {c.key}, which neither the optimistic guide nor the drive "
                            "block bounds")
         v = _favourable(c, opt[0][i], opt[1][i], shape)
-        out[c.name] = v.max(axis=-1) if c.sense == ">=" else v.min(axis=-1)
+        out[c.name] = (v.max(axis=-1) if c.sense == ">=" else v.min(axis=-1))[:, group]
     return out
 
 
