@@ -64,6 +64,7 @@ def checks(p, mounting, preload, loads) -> dict:
     lift = pn.lift_off_force(mx.fmax(preload, 1e-9))
     brg_max = f_max + loads["bearing_static_load"]
     bore = p["bearing_bore"]
+    ceiling = pn.preload_ceiling(p["nut_dynamic_load"])
     margins = {
         "critical_speed": crit / omega,
         "buckling": buck / compression,
@@ -74,6 +75,8 @@ def checks(p, mounting, preload, loads) -> dict:
         "dn": p["dn_limit"] / dn,
         # a single nut has no preload to lose: the check does not apply (margin reported as inf)
         "nut_lift_off": mx.if_else(p["nut_double"] > 0.5, lift / f_max, 1e9),
+        # the vendors' preload ceiling (10 % Ca); a nut with play carries no preload
+        "nut_preload": mx.if_else(p["nut_double"] > 0.5, ceiling / mx.fmax(preload, 1e-9), 1e9),
         "bearing_lift_off": p["bearing_lift_off"] / brg_max,
         "bearing_speed": p["bearing_limiting_speed"] / omega,
         # the bearing journal is machined on the screw end: its vendor lists the bores it takes
@@ -95,7 +98,8 @@ def checks(p, mounting, preload, loads) -> dict:
         "screw_yield": (yield_load, tension), "nut_life": (life, p["required_life"]),
         "bearing_life": (brg_life, p["required_life"]),
         "guide_life": (guide_life, p["required_life"] * p["mean_speed"]), "dn": (p["dn_limit"], dn),
-        "nut_lift_off": (lift, f_max), "bearing_lift_off": (p["bearing_lift_off"], brg_max),
+        "nut_lift_off": (lift, f_max), "nut_preload": (ceiling, preload),
+        "bearing_lift_off": (p["bearing_lift_off"], brg_max),
         "bearing_speed": (p["bearing_limiting_speed"], omega), "bearing_fit": (p["support_bore_max"], bore),
         "screw_length": (p["screw_max_length"], span),
         "guide_static": (p["guide_static_load"], p["guide_static_safety"] * loads["guide_max_load"]),

@@ -248,7 +248,7 @@ def check_rows(ev: Evaluation) -> list:
                "margin": None if m >= NOT_APPLICABLE else _finite(m), "pass": passes(m)}
         if c == "bearing_fit":
             row["available_min"] = _finite(float(d.screw["support_bore_min"]) * f)
-        if c == "nut_lift_off" and m >= NOT_APPLICABLE:
+        if c in ("nut_lift_off", "nut_preload") and m >= NOT_APPLICABLE:
             row["available"] = None  # a single nut has no preload to lose
         out.append(row)
     return out

@@ -123,6 +123,8 @@ CHECK_TABLE = (
     Check("guide_life", "guide block L10 travel / required travel", "guide travel", "km", 1e-3),
     Check("dn", "DN limit / DN at max speed", "DN value", "mm.rpm", 1e3 * RPM),
     Check("nut_lift_off", "nut lift-off force / max axial force", "nut lift-off", "kN", 1e-3, preload=1),
+    Check("nut_preload", "preload ceiling (10 % Ca, THK A-687) / nut preload", "nut preload ceiling", "kN", 1e-3,
+          preload=-1),
     Check("bearing_lift_off", "bearing lift-off load / max bearing load", "bearing lift-off", "kN", 1e-3,
           preload=-1),
     Check("bearing_speed", "bearing limiting speed / max screw speed", "bearing speed", "rpm", RPM),

@@ -8,7 +8,7 @@ from axisopt.physics.screw import E_STEEL
 __all__ = [
     "POISSON_STEEL", "nut_stiffness_catalog", "hertz_point_deflection", "nut_axial_deflection_hertz",
     "nut_stiffness_hertz", "lift_off_force", "double_nut_stiffness_under_load", "nut_preload_drag_torque",
-    "preloaded_pair_load", "double_nut_shift",
+    "preloaded_pair_load", "double_nut_shift", "PRELOAD_CEILING", "preload_ceiling",
 ]
 
 POISSON_STEEL = 0.3
@@ -101,6 +101,20 @@ def nut_stiffness_hertz(axial_load, n_balls, ball_diameter, pitch_diameter, cont
     delta = nut_axial_deflection_hertz(axial_load, n_balls, ball_diameter, pitch_diameter, contact_angle,
                                        lead_angle, conformity_nut, conformity_screw, youngs_modulus, poisson)
     return 1.5 * axial_load / delta
+
+
+# The largest preload of a preloaded ball nut as a fraction of its dynamic load rating Ca: THK Ball Screw General
+# Catalog, "Preload" (A-687): "an excessive preload adversely affects the service life and heat generation. The
+# maximum preload should be set at 10% of the basic dynamic load rating (Ca)"; HIWIN H-BS sec. 3.6.2 (10 % for
+# double nuts); Steinmeyer, "Nut rigidity": 10 % for 2-point contact, about 8 % for 4-point contact nuts.
+PRELOAD_CEILING = 0.10
+
+
+def preload_ceiling(dynamic_load_rating, fraction=PRELOAD_CEILING):
+    r"""The largest preload a vendor allows a preloaded ball nut, :math:`P_{max} = 0.1\, C_a` (THK A-687,
+    HIWIN H-BS 3.6.2).  dynamic_load_rating : Ca [N].  Returns [N].  No vendor found states a ceiling by speed
+    or DN; the preload's heat enters through the heat balance (model.heat) instead."""
+    return fraction * dynamic_load_rating
 
 
 def lift_off_force(preload):

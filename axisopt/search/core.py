@@ -496,20 +496,27 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
 
 
 def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: int):
-    """IPOPT on the ``top`` best combinations of ``ex``.  Returns (candidates, nlps, failed ranks, notes):
-    the ranks whose NLP failed (their 1-D solution is kept)."""
+    """IPOPT on the ``top`` best combinations of ``ex``.  Returns (candidates, NLPs solved, failed ranks, notes):
+    the ranks whose NLP failed (their 1-D solution is kept).  A combination whose 1-D solution is the top of
+    its preload range needs no NLP: the objective does not fall with the preload (the exact solve rests on
+    it), so no preload in the range does better."""
     pick = rank_order(ex.objective, ex.cost, ex.total_mass, ex.idx, top)
     cands, fails, notes = [], [], []
+    solved = 0
     for r, j in enumerate(pick, start=1):
         combo = int(ex.idx[j])
         mi, n, b, g = (int(v) for v in space.unravel(combo))
         mounting = space.mountings[mi]
+        lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
+        pre = float(ex.preload[j])
+        if pre >= hi:
+            cands.append(make_candidate(space, combo, pre, objective, rank=r))
+            continue
         p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))
         p1 = model.one_design(p)
-        lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
         res = nlp.solve_preload(mounting, space.positions(mounting), p1, lo, hi, constraints, objective,
-                                guess=float(ex.preload[j]))
-        pre = float(ex.preload[j])
+                                guess=pre)
+        solved += 1
         if not res.success:
             fails.append(r)
             notes.append(f"IPOPT {res.status} on combination {combo} (rank {r}); kept the 1-D solution")
@@ -520,7 +527,7 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
             pre = res.preload
         # else: IPOPT's point violates a limit by its tolerance; keep the (feasible) 1-D solution
         cands.append(make_candidate(space, combo, pre, objective, rank=r))
-    return cands, len(pick), fails, notes
+    return cands, solved, fails, notes
 
 
 def _feasible_at(space: Space, combo: int, preload: float, constraints) -> bool:

@@ -33,6 +33,7 @@ from ..catalog import USER_STATUS
 from ..errors import InputError
 from ..model.limits import CHECK_RECORDS, CONVEX, LIMITS
 from ..model.params import columns_read
+from ..physics import nut as pnut
 from ..problem import Problem
 from ..units import N_PER_UM
 
@@ -151,6 +152,10 @@ def min_last(v):
     return m
 
 
+# Checks the search's preload range holds by construction (build_space), at a margin up to 1: not constraints.
+RANGE_CHECKS = frozenset({"nut_preload"})
+
+
 def build_constraints(problem: Problem) -> tuple[Constraint, ...]:
     out = []
     for key, value in problem.limits:
@@ -158,6 +163,8 @@ def build_constraints(problem: Problem) -> tuple[Constraint, ...]:
         out.append(Constraint(key, lim.output, lim.sense, value, lim.preload, key.replace("_", " "), lim.unit,
                               lim.factor))
     for check, m in problem.margins:
+        if check in RANGE_CHECKS and m <= 1.0:
+            continue  # the search's preload range holds it (build_space)
         if m > 0:
             k = f"margin_{check}"
             out.append(Constraint(k, k, ">=", m, CHECK_RECORDS[check].preload, model.CHECK_LABELS[check], "", 1.0))
@@ -474,6 +481,9 @@ def build_space(problem: Problem) -> Space:
                   np.maximum(nuts["preload_min"].to_numpy(float), problem.preload_min))
     hi = np.where(single, nuts["preload_max"].to_numpy(float),
                   np.minimum(nuts["preload_max"].to_numpy(float), problem.preload_max))
+    # the vendors' preload ceiling (check nut_preload: 10 % Ca) bounds the range of a preloaded nut, as the
+    # vendors' own preload ranges do: the search never goes above it, so it needs no constraint of its own
+    hi = np.where(single, hi, np.minimum(hi, pnut.preload_ceiling(nuts["dynamic_load_rating"].to_numpy(float))))
     keep = lo <= hi
     nuts, lo, hi = nuts[keep], lo[keep], hi[keep]
     # an empty part slot leaves no combination at all: a one-line error naming it (not an "infeasible"

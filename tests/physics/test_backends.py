@@ -91,6 +91,7 @@ CASES = [
     case(nut.nut_axial_deflection_hertz, kw=dict(axial_load=2000.0, **BALL)),
     case(nut.nut_stiffness_hertz, kw=dict(axial_load=2000.0, **BALL)),
     case(nut.lift_off_force, kw=dict(preload=1500.0)),
+    case(nut.preload_ceiling, kw=dict(dynamic_load_rating=45e3)),
     case(nut.double_nut_shift, kw=dict(force_ratio=(0.5, 2.0, 4.0))),
     case(nut.preloaded_pair_load, kw=dict(preload=1500.0, axial_load=(1000.0, 5000.0, 3000.0))),
     case(

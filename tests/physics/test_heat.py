@@ -63,3 +63,15 @@ def test_holman_free_convection_rise_meets_its_own_film():
     p, d, area = 40.0, 0.04, math.pi * 0.04 * 1.0
     dt = thermal.free_convection_temperature_rise(p, d, area)
     assert 1.32 * (dt / d) ** 0.25 * area * dt == pytest.approx(p, rel=1e-12)
+
+
+def test_holman_example_7_7_simplified_free_convection():
+    """Holman, Heat Transfer (SI units, 9th ed., Tata McGraw-Hill 2002), Example 7-7 "Calculation with simplified
+    relations", pp. 338-339 (the pipe of Example 7-5): a horizontal pipe 0.3048 m in diameter at 250 degC in
+    room air at 15 degC loses 1.57 kW per metre (laminar relation of Table 7-2).  The heat balance solved for the
+    rise gives back the 235 K of the example from the published 1.57 kW/m, within the rounding of the
+    printed figure (+-5 W/m, i.e. +-0.26 % in the rise)."""
+    d = 0.3048
+    area = math.pi * d * 1.0
+    rise = thermal.free_convection_temperature_rise(1570.0, d, area)
+    assert rise == pytest.approx(250.0 - 15.0, rel=0.003)
