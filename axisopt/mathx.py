@@ -19,7 +19,10 @@ _CASADI_TYPES = (ca.SX, ca.MX, ca.DM)
 
 def is_symbolic(*values) -> bool:
     """True when any argument is a CasADi SX/MX/DM object."""
-    return any(isinstance(v, _CASADI_TYPES) for v in values)
+    for v in values:  # a loop, not any(generator): called on every elementary operation of the model
+        if isinstance(v, _CASADI_TYPES):
+            return True
+    return False
 
 
 def _pick(*values):
@@ -59,7 +62,7 @@ def atan(x):
 
 
 def fabs(x):
-    return ca.fabs(x) if is_symbolic(x) else np.abs(x)
+    return ca.fabs(x) if isinstance(x, _CASADI_TYPES) else np.abs(x)
 
 
 def sign(x):
@@ -67,11 +70,11 @@ def sign(x):
 
 
 def fmin(a, b):
-    return ca.fmin(a, b) if is_symbolic(a, b) else np.minimum(a, b)
+    return ca.fmin(a, b) if isinstance(a, _CASADI_TYPES) or isinstance(b, _CASADI_TYPES) else np.minimum(a, b)
 
 
 def fmax(a, b):
-    return ca.fmax(a, b) if is_symbolic(a, b) else np.maximum(a, b)
+    return ca.fmax(a, b) if isinstance(a, _CASADI_TYPES) or isinstance(b, _CASADI_TYPES) else np.maximum(a, b)
 
 
 def power(x, p):

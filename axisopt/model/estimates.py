@@ -98,18 +98,29 @@ def resting_on(design, outputs, estimates=None) -> dict:
     x = positions(design.axis)
     p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
                     design.coupling)
+    # the design and each estimate raised by 5 %, one row each, in one evaluation of the model
+    k = len(estimates) + 1
+    def column(v):
+        numeric = not isinstance(v, (bool, str, tuple, list)) and np.ndim(v) == 0 \
+            and np.asarray(v).dtype.kind in "fiu"
+        return np.full((k, 1), float(v)) if numeric else v
+    q = {n: column(v) for n, v in p.items()}
+    for i, est in enumerate(estimates, start=1):
+        v = float(p[est.param])
+        q[est.param][i, 0] = v * (1.0 + _STEP) if v != 0 else _STEP
+
+    def row(v, i):
+        a = np.asarray(v, dtype=float)
+        return float(np.min(a[i] if a.ndim and a.shape[0] == k else a))
     with np.errstate(divide="ignore", invalid="ignore"):
-        base = axis_response(p, x, design.axis.mounting, design.preload)
-        ref = {o: _scalar(base[o]) for o in outputs if o in base}
-        found: dict = {}
-        for est in estimates:
-            q = dict(p)
-            q[est.param] = p[est.param] * (1.0 + _STEP) if p[est.param] != 0 else _STEP
-            out = axis_response(q, x, design.axis.mounting, design.preload)
-            for o, v0 in ref.items():
-                v1 = _scalar(out[o])
-                if math.isfinite(v0) and math.isfinite(v1) and abs(v1 - v0) > _MOVES * max(abs(v0), 1e-12):
-                    found.setdefault(o, []).append(est)
+        out = axis_response(q, x, design.axis.mounting, design.preload)
+    ref = {o: row(out[o], 0) for o in outputs if o in out}
+    found: dict = {}
+    for i, est in enumerate(estimates, start=1):
+        for o, v0 in ref.items():
+            v1 = row(out[o], i)
+            if math.isfinite(v0) and math.isfinite(v1) and abs(v1 - v0) > _MOVES * max(abs(v0), 1e-12):
+                found.setdefault(o, []).append(est)
     return found
 
 
