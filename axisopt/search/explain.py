@@ -113,8 +113,7 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
     for c in constraints:
         if not tally.met[c.name] and tally.best[c.name] is not None:
             unmeetable.append((c.label, tally.best[c.name] / c.factor, c.limit / c.factor, c.unit))
-    return Infeasibility(unmeetable, [_closest_design(space, constraints, objective, int(combo), r)
-                                      for r, combo in enumerate(top_idx, start=1)])
+    return Infeasibility(unmeetable, _closest_designs(space, constraints, objective, [int(c) for c in top_idx]))
 
 
 def _bounded(c) -> bool:
@@ -390,26 +389,37 @@ def _last(c, v):
     return v[..., 0] if (not c.profile and v.ndim == 4) else v
 
 
-def _closest_design(space: Space, constraints, objective, combo: int, rank: int):
-    mi, n, b, g = (int(v) for v in space.unravel(combo))
-    # the preload that minimises the total miss, on a grid of the allowed range
-    lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
-    grid = np.linspace(lo, hi, 33)
-    mounting = space.mountings[mi]
-    p = space.params_flat(mounting, np.full(33, n), np.full(33, b), np.full(33, g))
-    out = respond(p, space.positions(mounting), mounting, grid[:, None])
-    tot = np.zeros(33)
-    for c in constraints:
-        tot += c.violation(_vec(c.value(out), 33))
-    pre = float(grid[int(np.argmin(tot))])
-    cand, vals = candidate_values(space, combo, pre, objective, rank=rank)  # one evaluation of the design
-    misses = {}
-    for c in constraints:
-        v = float(np.min(vals[c.key]))
-        miss = float(c.violation(np.asarray(v)))
-        if miss > 0:
-            misses[c.label] = miss
-    if not space.fits[n, b]:
-        misses["bearing bore fits screw"] = 1.0
-    cand.misses = misses
-    return cand
+def _closest_designs(space: Space, constraints, objective, combos) -> list:
+    """The candidates of ``combos`` (ranked 1, 2, ...), each at the preload that minimises its total miss on a
+    grid of its allowed range (one model evaluation per mounting for all of them), with their misses."""
+    G = 33
+    pre = np.zeros(len(combos))
+    parts = [tuple(int(v) for v in space.unravel(int(c))) for c in combos]
+    for mi in {p[0] for p in parts}:
+        rows = [k for k, p in enumerate(parts) if p[0] == mi]
+        n = np.array([parts[k][1] for k in rows])
+        b = np.array([parts[k][2] for k in rows])
+        g = np.array([parts[k][3] for k in rows])
+        grid = np.linspace(space.preload_lo[n], space.preload_hi[n], G, axis=1)  # as np.linspace(lo, hi, G) each
+        mounting = space.mountings[mi]
+        p = space.params_flat(mounting, np.repeat(n, G), np.repeat(b, G), np.repeat(g, G))
+        out = respond(p, space.positions(mounting), mounting, grid.reshape(-1, 1))
+        tot = np.zeros(len(rows) * G)
+        for c in constraints:
+            tot += c.violation(_vec(c.value(out), len(rows) * G))
+        best = np.argmin(tot.reshape(len(rows), G), axis=1)  # first of equal misses, as one design alone
+        pre[rows] = grid[np.arange(len(rows)), best]
+    out = []
+    for rank, (combo, (_mi, n, b, _g)) in enumerate(zip(combos, parts), start=1):
+        cand, vals = candidate_values(space, int(combo), float(pre[rank - 1]), objective, rank=rank)
+        misses = {}
+        for c in constraints:
+            v = float(np.min(vals[c.key]))
+            miss = float(c.violation(np.asarray(v)))
+            if miss > 0:
+                misses[c.label] = miss
+        if not space.fits[n, b]:
+            misses["bearing bore fits screw"] = 1.0
+        cand.misses = misses
+        out.append(cand)
+    return out

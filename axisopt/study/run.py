@@ -77,7 +77,9 @@ def solve_case(context: dict, case: Case) -> dict:
     try:
         with _SOLVE_LOCK:
             res = solve(problem, context["method"], top=1, sensitivities=False)
-            ev = evaluate(res.best.design) if res.best is not None and res.best.design is not None else None
+            # on numpy: the CasADi Function of a case's duty cycle would be built for this one evaluation
+            ev = evaluate(res.best.design, use_casadi=False) if res.best is not None and res.best.design is not None \
+                else None
     except Exception as exc:  # a solver failure is a result of this case, not the end of the study
         rec.update(status="error", reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
                    time_s=time.perf_counter() - t0)
