@@ -217,6 +217,7 @@ def _group_label(g, by) -> str:
 
 
 _LINE_STYLES = ("-", "--", "-.", ":")
+SHADED_INPUTS = 20  # distinct inputs without a design shaded as bands; more are marked as a rug of ticks
 _MARKERS = ("o", "s", "^", "v", "D", "P", "X", "*")
 
 
@@ -252,13 +253,18 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
             a1.plot(k.index, k.values, **style)
             a2.plot(f.index, f.values, **style)
         if len(bad):
-            # cases without a design have no value to draw: their inputs are shaded, not drawn as zeros
+            # cases without a design have no value to draw: their inputs are shaded, not drawn as zeros (a
+            # sweep of many distinct inputs, e.g. random: a rug of ticks along the bottom of the panel, one artist)
             xs = sorted(set(bad[name].dropna()))
+            what = f"for {len(bad)} cases ({', '.join(sorted(set(bad['status'])))})"
             for ax in (a1, a2):
+                if len(xs) > SHADED_INPUTS:
+                    ax.plot(xs, [0.0] * len(xs), "|", color="tab:red", ms=10, alpha=0.6,
+                            transform=ax.get_xaxis_transform(), label=f"no design at these inputs {what}")
+                    continue
                 for i, x in enumerate(xs):
                     ax.axvline(x, color="tab:red", alpha=0.25, lw=4,
-                               label=(f"no design at this {key.split('.')[-1]} for {len(bad)} cases "
-                                      f"({', '.join(sorted(set(bad['status'])))})") if i == 0 else None)
+                               label=f"no design at this {key.split('.')[-1]} {what}" if i == 0 else None)
         a1.set_ylabel("best min. axial stiffness [N/um]")
         a2.set_ylabel("best min. 1st frequency [Hz]")
         a2.set_xlabel(name.replace(" [", " [", 1))

@@ -76,3 +76,22 @@ def test_tradeoff_staircase_stays_within_one_stroke(monkeypatch, tmp_path):
         strokes = set(df[np.isin(np.round(df["cost [EUR]"], 6), list(xs))]["axis.stroke [mm]"])
         assert len(strokes) == 1
     assert any("1 cases without a design" in t.get_text() for t in ax.texts)
+
+
+def test_many_inputs_without_a_design_are_a_rug_not_bands(monkeypatch, tmp_path):
+    """A random sweep leaves hundreds of distinct inputs without a design: they are one row of red ticks along
+    the panel's bottom (one artist), not a band each that would paint the panel red."""
+    df = _frame()
+    rng = np.random.default_rng(3)
+    extra = df[df.status != "optimal"].iloc[[0] * 30].copy()
+    extra["axis.stroke [mm]"] = rng.uniform(500, 1500, 30)
+    df = pd.concat([df, extra], ignore_index=True)
+    figs = {}
+    monkeypatch.setattr(table, "save_figure", lambda fig, path, dpi=110: figs.__setitem__(path.name, fig))
+    table.summary_plots(_study(), df, tmp_path / "plots", tmp_path)
+    ax = figs["best_vs_axis_stroke.png"].axes[0]
+    red = [ln for ln in ax.get_lines() if ln.get_color() == "tab:red"]
+    assert len(red) == 1 and red[0].get_marker() == "|" and red[0].get_linestyle() == "None"
+    bad = sorted(set(df[df.status != "optimal"]["axis.stroke [mm]"]))
+    assert np.allclose(sorted(red[0].get_xdata()), bad) and set(red[0].get_ydata()) == {0.0}
+    assert "31 cases" in red[0].get_label()
