@@ -1,0 +1,45 @@
+"""build_space reuses the filtered part tables of an earlier problem on the same catalog object with the same
+restrictions (a study's cases), while each problem keeps its own axis and parameter cache; a change of
+restrictions or preload range builds anew.  Reference: the uncached build."""
+
+from pathlib import Path
+
+import numpy as np
+
+from axisopt.problem import load_problem
+from axisopt.search import space as S
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _eq(x, y):
+    return np.array_equal(x, y, equal_nan=x.dtype.kind == "f")  # a column may hold NaN (no vendor value)
+
+
+def _same(a, b):
+    assert a.shape == b.shape and a.drives == b.drives
+    assert np.array_equal(a.preload_lo, b.preload_lo) and np.array_equal(a.preload_hi, b.preload_hi)
+    for d1, d2 in ((a.s_arr, b.s_arr), (a.n_arr, b.n_arr), (a.b_arr, b.b_arr), (a.g_arr, b.g_arr)):
+        assert d1.keys() == d2.keys() and all(_eq(d1[k], d2[k]) for k in d1)
+
+
+def test_cases_share_tables_not_axes():
+    p = load_problem(ROOT / "problems" / "vmc_x_problem.yaml")
+    q = p.with_limit("max_cost", 5000.0)
+    from dataclasses import replace
+    q = replace(q, axis=replace(q.axis, stroke=0.6))
+    a, b = S.build_space(p), S.build_space(q)
+    assert a.problem is p and b.problem is q and a._cache is not b._cache
+    assert b.n_arr is a.n_arr  # shared, read-only
+    _same(b, S._build_space(q))
+    assert b.positions(b.mountings[0])[-1] != a.positions(a.mountings[0])[-1]  # each its own axis
+
+
+def test_other_restrictions_build_anew():
+    p = load_problem(ROOT / "problems" / "vmc_x_problem.yaml")
+    from dataclasses import replace
+    q = replace(p, preload_max=0.5 * float(S.build_space(p).preload_hi.max()))
+    a, b = S.build_space(p), S.build_space(q)
+    assert b.n_arr is not a.n_arr or not np.array_equal(a.preload_hi, b.preload_hi)
+    _same(b, S._build_space(q))
+    assert b.preload_hi.max() <= q.preload_max
