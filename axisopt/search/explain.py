@@ -157,14 +157,24 @@ def block_optimism(space: Space, constraints, drive: bool = True):
                     v = _favourable(c, out_lo, out_hi, shape + (1,))[..., 0]
                     pick = np.maximum if c.sense == ">=" else np.minimum
                     best[c.name][sl] = pick(best[c.name][sl], v)
-            for n1 in range(sl.start, sl.stop, DRIVE_NUTS) if drive else ():
-                s1 = slice(n1, min(sl.stop, n1 + DRIVE_NUTS))
-                for name, v in drive_optimism(space, mounting, s1, drive).items():
-                    best[name][s1] = v
+        if drive:
+            best.update(_drive_bounds(space, mounting, drive))
         lb = np.where(space.fits, 0.0, RULE_WEIGHT)
         for c in constraints:
             lb = lb + weight(c) * c.violation(best[c.name])
         out.append((best, lb))
+    return out
+
+
+def _drive_bounds(space: Space, mounting: str, drive) -> dict:
+    """:func:`drive_optimism` over every nut of ``mounting``, :data:`DRIVE_NUTS` nuts at a time:
+    {limit name: (nuts, bearings)}."""
+    N, B = space.shape[1], space.shape[2]
+    out = {c.name: np.empty((N, B)) for c in drive}
+    for n0 in range(0, N, DRIVE_NUTS):
+        sl = slice(n0, min(N, n0 + DRIVE_NUTS))
+        for name, v in drive_optimism(space, mounting, sl, drive).items():
+            out[name][sl] = v
     return out
 
 
@@ -240,10 +250,8 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     while not done.all():
         if done.any() and any(c.name not in vals and not tally.met[c.name] for c in drive):
             for mi, mounting in enumerate(space.mountings):
-                for n0 in range(0, N, DRIVE_NUTS):
-                    sl = slice(n0, min(N, n0 + DRIVE_NUTS))
-                    for c, v in zip(drive, drive_optimism(space, mounting, sl, drive).values()):
-                        vals.setdefault(c.name, np.empty((M, N, B)))[mi, sl] = v
+                for name, v in _drive_bounds(space, mounting, drive).items():
+                    vals.setdefault(name, np.empty((M, N, B)))[mi] = v
             for c in drive:
                 lb = lb + weight(c) * c.violation(vals[c.name])
         want = np.zeros((M, N, B), dtype=bool)

@@ -23,27 +23,27 @@ def _lohi(v):
     return v, v
 
 
+def _finite_ends(lo, hi):
+    """0 * inf (an unbounded end times zero) is 0 at every point of the range: nan is not a bound."""
+    if np.isnan(lo).any() or np.isnan(hi).any():
+        lo = np.nan_to_num(lo, nan=0.0, posinf=np.inf, neginf=-np.inf)
+        hi = np.nan_to_num(hi, nan=0.0, posinf=np.inf, neginf=-np.inf)
+    return lo, hi
+
+
 def _mul(a_lo, a_hi, b_lo, b_hi):
     with np.errstate(invalid="ignore"):
         c = (a_lo * b_lo, a_lo * b_hi, a_hi * b_lo, a_hi * b_hi)
         lo = np.minimum(np.minimum(c[0], c[1]), np.minimum(c[2], c[3]))
         hi = np.maximum(np.maximum(c[0], c[1]), np.maximum(c[2], c[3]))
-    if np.isnan(lo).any() or np.isnan(hi).any():
-        # 0 * inf (an unbounded end times zero) is 0 at every point of the range: nan is not a bound
-        lo, hi = np.nan_to_num(lo, nan=0.0, posinf=np.inf, neginf=-np.inf), \
-            np.nan_to_num(hi, nan=0.0, posinf=np.inf, neginf=-np.inf)
-    return lo, hi
+    return _finite_ends(lo, hi)
 
 
 def _scale(a_lo, a_hi, k):
     """[a_lo, a_hi] times an exact value ``k`` (two products instead of four)."""
     with np.errstate(invalid="ignore"):
         x, y = a_lo * k, a_hi * k
-        lo, hi = np.minimum(x, y), np.maximum(x, y)
-    if np.isnan(lo).any() or np.isnan(hi).any():
-        lo, hi = np.nan_to_num(lo, nan=0.0, posinf=np.inf, neginf=-np.inf), \
-            np.nan_to_num(hi, nan=0.0, posinf=np.inf, neginf=-np.inf)
-    return lo, hi
+        return _finite_ends(np.minimum(x, y), np.maximum(x, y))
 
 
 class Interval:
@@ -55,15 +55,6 @@ class Interval:
     def __init__(self, lo, hi=None):
         self.lo = np.asarray(lo, dtype=float)
         self.hi = self.lo if hi is None else np.asarray(hi, dtype=float)
-
-    @classmethod
-    def over(cls, values, axis) -> Interval:
-        """The range of ``values`` along ``axis`` (kept as a length-1 axis)."""
-        return cls(np.min(values, axis=axis, keepdims=True), np.max(values, axis=axis, keepdims=True))
-
-    @property
-    def shape(self):
-        return np.broadcast_shapes(np.shape(self.lo), np.shape(self.hi))
 
     def __repr__(self) -> str:
         return f"Interval({self.lo!r}, {self.hi!r})"
