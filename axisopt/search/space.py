@@ -512,7 +512,7 @@ def _build_space(problem: Problem) -> Space:
     # an empty part slot leaves no combination at all: a one-line error naming it (not an "infeasible"
     # result whose explanation has nothing to score)
     for df, what, filters in ((nuts, "screw and nut", "vendors, nut_types, status, require/exclude; "
-                               "continuous.nut_preload for preloaded nuts"),
+                               "continuous.nut_preload and the 10 % Ca preload ceiling for preloaded nuts"),
                               (bearings, "support bearing", "vendors, bearing_arrangements, bearing_preload, "
                                "status, require/exclude"),
                               (guides, "linear guide", "vendors, guide_types, guide_preload, status, "

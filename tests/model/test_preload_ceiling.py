@@ -73,3 +73,16 @@ def test_search_keeps_preloads_under_the_ceiling():
     assert d.best.nut_preload <= 0.1 * ca * (1 + 1e-12)
     ev = evaluate(d.best.design, use_casadi=False)
     assert float(ev["margin_nut_preload"]) >= 1.0 - 1e-9
+
+
+def test_nuts_whose_whole_range_is_above_the_ceiling_are_named_in_the_error():
+    from axisopt.errors import InputError
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+    p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
+    nuts = p.catalog.nuts.copy()
+    double = nuts["type"] != "single"
+    nuts.loc[double, "preload_min"] = 0.12 * nuts.loc[double, "dynamic_load_rating"]
+    nuts.loc[double, "preload_max"] = 0.2 * nuts.loc[double, "dynamic_load_rating"]
+    with pytest.raises(InputError, match="preload ceiling"):
+        solve(replace(p, catalog=replace(p.catalog, nuts=nuts)), top=1, sensitivities=False)
