@@ -15,7 +15,7 @@ from __future__ import annotations
 import csv
 import io
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
 from typing import TYPE_CHECKING
@@ -25,6 +25,8 @@ from .units import split_header, unit_factor
 
 if TYPE_CHECKING:
     import pandas as pd
+
+    from .parttable import PartTable, Row
 
 SHIPPED_DIR = Path(__file__).resolve().parent.parent / "catalogs"
 
@@ -209,34 +211,84 @@ CHOICES = {
 }
 
 
-@dataclass(frozen=True)
+TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings")
+
+
 class Catalog:
     """The part tables in SI, indexed by part id, plus where each row came from.  ``motors`` and
-    ``couplings`` (the drive) are empty tables when no catalog directory has them."""
+    ``couplings`` (the drive) are empty tables when no catalog directory has them.
 
-    screws: pd.DataFrame
-    nuts: pd.DataFrame
-    bearings: pd.DataFrame
-    guides: pd.DataFrame
-    motors: pd.DataFrame = field(default_factory=lambda: _empty("motors"))
-    couplings: pd.DataFrame = field(default_factory=lambda: _empty("couplings"))
+    Each table is given as a :class:`~axisopt.parttable.PartTable` (what :func:`load_catalogs` builds, no
+    pandas) or a pandas DataFrame indexed by part id.  ``cat.screws`` (and the other five) is the pandas table
+    (built on first use); :meth:`rows` is the same table without pandas, as the search and the model read it.
+    :meth:`replace` swaps tables (``cat.replace(guides=df)``)."""
+
+    __slots__ = ("_given", "_rows", "_frames")
+
+    def __init__(self, screws, nuts, bearings, guides, motors=None, couplings=None):
+        given = dict(zip(TABLES, (screws, nuts, bearings, guides, motors, couplings)))
+        self._given = {k: (_empty_table(k) if v is None else v) for k, v in given.items()}
+        self._rows: dict = {}
+        self._frames: dict = {}
+
+    def replace(self, **tables) -> Catalog:
+        """A catalog with some tables swapped (``cat.replace(guides=df)``)."""
+        unknown = set(tables) - set(TABLES)
+        if unknown:
+            raise TypeError(f"unknown catalog table(s) {', '.join(sorted(unknown))}")
+        return Catalog(**{**self._given, **tables})
+
+    def rows(self, name: str) -> PartTable:
+        """Table ``name`` as a :class:`~axisopt.parttable.PartTable` (no pandas)."""
+        t = self._rows.get(name)
+        if t is None:
+            from .parttable import PartTable
+
+            src = self._given[name]
+            t = src if isinstance(src, PartTable) else PartTable.from_frame(src)
+            self._rows[name] = t
+        return t
 
     def table(self, name: str) -> pd.DataFrame:
-        return getattr(self, name)
+        """Table ``name`` as a pandas DataFrame indexed by part id (imports pandas; the same object each time)."""
+        df = self._frames.get(name)
+        if df is None:
+            from .parttable import PartTable
 
-    def part(self, table: str, part_id: str, *, source: str | None = None, key: str | None = None):
-        df = self.table(table)
-        if part_id not in df.index:
-            near = _closest(part_id, df.index)
+            src = self._given[name]
+            df = src.to_frame() if isinstance(src, PartTable) else src
+            self._frames[name] = df
+        return df
+
+    screws = property(lambda self: self.table("screws"), doc="screws (pandas DataFrame by part id)")
+    nuts = property(lambda self: self.table("nuts"), doc="nuts (pandas DataFrame by part id)")
+    bearings = property(lambda self: self.table("bearings"), doc="support bearings (pandas DataFrame by part id)")
+    guides = property(lambda self: self.table("guides"), doc="linear guides (pandas DataFrame by part id)")
+    motors = property(lambda self: self.table("motors"), doc="motors (pandas DataFrame by part id)")
+    couplings = property(lambda self: self.table("couplings"), doc="couplings (pandas DataFrame by part id)")
+
+    def __len__(self) -> int:  # pragma: no cover - convenience
+        return sum(len(self.rows(n)) for n in TABLES)
+
+    def __repr__(self) -> str:
+        return "Catalog(" + ", ".join(f"{n}: {len(self.rows(n))}" for n in TABLES) + ")"
+
+    def part(self, table: str, part_id: str, *, source: str | None = None, key: str | None = None) -> Row:
+        """The row of ``part_id`` in ``table`` as a :class:`~axisopt.parttable.Row`; an unknown id is a one-line
+        error with the closest id."""
+        t = self.rows(table)
+        i = t.position(part_id)
+        if i is None:
+            near = _closest(part_id, t.ids)
             hint = f"; did you mean '{near}'?" if near else ""
             raise InputError(f"unknown {table[:-1]} id '{part_id}'{hint}", source=source, where=key)
-        return df.loc[part_id]
+        return t.row(i)
 
 
-def _empty(name: str) -> pd.DataFrame:
-    import pandas as pd
+def _empty_table(name: str) -> PartTable:
+    from .parttable import PartTable
 
-    return pd.DataFrame(columns=list(SCHEMA[name]) + ["_source", "status", "source"]).set_index("id", drop=False)
+    return PartTable([], list(SCHEMA[name]) + ["_source", "status", "source"], ids=[])
 
 
 def _closest(word: str, options) -> str | None:
@@ -454,22 +506,17 @@ def load_records(extra_dirs=(), *, shipped: bool = True) -> PartRows:
     return PartRows(out)
 
 
-def _frame(name: str, rows: list[dict]) -> pd.DataFrame:
-    import pandas as pd
-
-    if not rows:
-        return _empty(name)
-    df = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]) + ["_source", *PROVENANCE])
-    return df.set_index("id", drop=False)
-
-
 def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
-    """Load the shipped catalogs and any user catalog directories (later ones add parts) as pandas tables.
+    """Load the shipped catalogs and any user catalog directories (later ones add parts) as a :class:`Catalog`
+    (its tables are built without pandas; ``cat.screws`` and the others give pandas tables on demand).
 
     A user directory may hold any subset of screws/nuts/bearings/guides CSVs.
     """
+    from .parttable import PartTable
+
     rows = load_records(extra_dirs, shipped=shipped)
-    return Catalog(**{name: _frame(name, rows.table(name)) for name in SCHEMA})
+    return Catalog(**{name: PartTable(rows.table(name), list(SCHEMA[name]) + ["_source", *PROVENANCE])
+                      for name in SCHEMA})
 
 
 _CACHE: dict[tuple, Catalog] = {}

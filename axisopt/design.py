@@ -15,6 +15,7 @@ from pathlib import Path
 from .catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA, SHIPPED_DIR, Catalog, default_catalog, row_problem
 from .display import fmt, one_line
 from .errors import InputError
+from .parttable import Row
 from .physics import motion
 from .units import DISPLAY_UNITS, unit_factor
 from .yamlio import Key, Section, Spec, read_yaml
@@ -454,8 +455,6 @@ PART_SPECS = {table: Spec(table[:-1], f"a custom {table[:-1]}: the columns of ca
 
 
 def inline_part(sec: Section, table: str):
-    import pandas as pd
-
     sec = sec.declared(PART_SPECS[table])
     rec = {}
     for col, kind in SCHEMA[table].items():
@@ -473,7 +472,7 @@ def inline_part(sec: Section, table: str):
         col, msg = bad
         raise sec.error(col, msg if msg.startswith(col) else f"{col} {msg}")
     rec["_source"] = f"{sec.source}:{sec.node.line}"
-    return pd.Series(rec, name=rec["id"])
+    return Row(rec, rec["id"])
 
 
 def _slot(table: str, doc: str, required: bool) -> Key:
@@ -526,8 +525,8 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
 
 def fitting_nuts(catalog: Catalog, screw_id: str, shown: int = 6) -> str:
     """'nuts for it: A, B (+3 more; axisopt parts nuts --fits ID)' -- what a refused nut could be instead."""
-    nuts = catalog.table("nuts")
-    ids = [str(i) for i in nuts.index[nuts["screw_id"] == screw_id]]
+    nuts = catalog.rows("nuts")
+    ids = [str(i) for i in nuts.ids[nuts["screw_id"] == screw_id]]
     if not ids:
         return f"the catalogs have no nut for '{screw_id}'"
     more = f" (+{len(ids) - shown} more)" if len(ids) > shown else ""

@@ -386,7 +386,7 @@ def _catalog_names(sec: Section, key: str, known) -> tuple | None:
 
 
 def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Restrictions:
-    has_motors = len(catalog.motors) > 0
+    has_motors = len(catalog.rows("motors")) > 0
     if sec is None:
         return Restrictions(mountings=(axis.mounting,))
     kw: dict = {}
@@ -400,7 +400,7 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         raise sec.error("drive", "the catalogs have no motors (motors.csv)")
     for key, table, col in (("motor_vendors", "motors", "vendor"), ("motor_series", "motors", "series"),
                             ("coupling_series", "couplings", "series")):
-        vals = _catalog_names(sec, key, lambda t=table, c=col: sorted(set(catalog.table(t)[c])))
+        vals = _catalog_names(sec, key, lambda t=table, c=col: sorted(set(catalog.rows(t)[c])))
         if vals is not None:
             kw[key] = vals
     est = sec.read("estimated")
@@ -420,7 +420,7 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         kw["mountings"] = tuple(dict.fromkeys(mounts))
     else:
         kw["mountings"] = (axis.mounting,)
-    vendors_all = sorted(set().union(*(set(catalog.table(SLOT_TABLE[t])["vendor"]) for t in MECH_SLOTS)))
+    vendors_all = sorted(set().union(*(set(catalog.rows(SLOT_TABLE[t])["vendor"]) for t in MECH_SLOTS)))
     for key, table, col in (("vendors", None, "vendor"), ("nut_types", "nuts", "type"),
                             ("bearing_arrangements", "bearings", "arrangement"),
                             ("bearing_preload", "bearings", "preload_class"),
@@ -432,9 +432,9 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
             if table == "status":
                 return STATUSES
             if col is None:
-                g = catalog.guides
+                g = catalog.rows("guides")
                 return sorted(set(g["preload_level"]) | set(g["preload_class"]))
-            return sorted(set(catalog.table(table)[col]))
+            return sorted(set(catalog.rows(table)[col]))
 
         vals = _catalog_names(sec, key, known)
         if vals is not None:

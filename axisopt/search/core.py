@@ -176,18 +176,16 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
         xs = space.bound_positions(mounting).astype(np.float32)
         ok_all = np.zeros((N, B), dtype=bool)
         bound_all = np.full((N, B), -np.inf)
+        # the model's outputs here do not depend on the limits: kept for the sensitivities' re-solves
+        keep = N * B * len(xs) <= BOUNDS_KEPT
         for n0 in range(0, N, step):
             sl = slice(n0, min(N, n0 + step))
-            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1).astype(np.float32)
-            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1).astype(np.float32)
             for t in types:
-                p = space.params_optimistic_guide(mounting, sl, str(t), dtype=np.float32)
                 with np.errstate(all="ignore"):
+                    out_lo, o = _block_outputs(space, mounting, sl, str(t), xs, keep)
                     ok = np.broadcast_to(space.fits[sl][:, :, None], (sl.stop - sl.start, B, 1)).copy()
-                    out_lo = model.axis_response(p, xs[-1:], mounting, lo, extras=False)
                     for c in low_end:
                         ok &= _screen_ok(c, out_lo)
-                    o = model.axis_response(p, xs, mounting, hi, extras=False)
                     for c in high_end:
                         ok &= _screen_ok(c, o)
                     bnd = np.broadcast_to(objective.value(o), ok.shape).astype(float)
@@ -196,6 +194,26 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
                 bound_all[sl] = np.maximum(bound_all[sl], np.where(ok[..., 0], bnd[..., 0], -np.inf))
         out.append((ok_all, bound_all))
     return out
+
+
+BOUNDS_KEPT = 200_000  # block-bound model values kept per space up to this many (nut, bearing, position)s
+
+
+def _block_outputs(space: Space, mounting: str, sl: slice, guide_type: str, xs, keep: bool):
+    """The optimistic guide's model outputs over the nuts ``sl`` and every bearing, at the lowest preload
+    (last position) and at the highest (positions ``xs``): what :func:`block_bounds` tests and bounds."""
+    key = ("block outputs", mounting, sl.start, sl.stop, guide_type)
+    hit = space._cache.get(key) if keep else None
+    if hit is not None:
+        return hit
+    lo = space.preload_lo[sl].reshape(-1, 1, 1, 1).astype(np.float32)
+    hi = space.preload_hi[sl].reshape(-1, 1, 1, 1).astype(np.float32)
+    p = space.params_optimistic_guide(mounting, sl, guide_type, dtype=np.float32)
+    res = (model.axis_response(p, xs[-1:], mounting, lo, extras=False),
+           model.axis_response(p, xs, mounting, hi, extras=False))
+    if keep:
+        space._cache[key] = res
+    return res
 
 
 DRIVE_CHUNK = 50_000  # (combination, drive) pairs per block of the drive stage (cache-sized float64 arrays)

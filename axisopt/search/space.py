@@ -26,13 +26,13 @@ import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
-import pandas as pd
 
 from .. import model
 from ..catalog import USER_STATUS
 from ..errors import InputError
 from ..model.limits import CHECK_RECORDS, CONVEX, LIMITS
 from ..model.params import columns_read
+from ..parttable import PartTable
 from ..physics import nut as pnut
 from ..problem import Problem
 from ..units import N_PER_UM
@@ -227,8 +227,8 @@ def respond_drive(p, preload) -> dict:
         return model.drive_response(p, preload)
 
 
-def _arrays(df, cols):
-    return {c: df[c].to_numpy(dtype=float) for c in cols}
+def _arrays(t, cols):
+    return {c: t.number(c) for c in cols}
 
 
 @dataclass
@@ -237,7 +237,7 @@ class Space:
 
     problem: Problem
     mountings: tuple
-    screws: object  # DataFrame aligned with nuts (one screw row per nut)
+    screws: object  # PartTable aligned with nuts (one screw row per nut)
     nuts: object
     bearings: object
     guides: object
@@ -248,7 +248,7 @@ class Space:
     n_arr: dict = field(repr=False, default_factory=dict)
     b_arr: dict = field(repr=False, default_factory=dict)
     g_arr: dict = field(repr=False, default_factory=dict)  # guide columns, each guide repeated D times
-    motors: object = None  # DataFrame of the searched motors (None: no drive search)
+    motors: object = None  # PartTable of the searched motors (None: no drive search)
     couplings: object = None
     drives: tuple = ((None, None),)  # (motor position, coupling position) pairs; None: axis values
     m_arr: dict | None = field(repr=False, default=None)  # motor columns over the G*D axis
@@ -423,26 +423,25 @@ class Space:
         drive index (motor and coupling None where the axis values stand in)."""
         gi, di = divmod(int(g), self.n_drives)
         mi, ci = self.drives[di]
-        return (self.screws.iloc[int(n)], self.nuts.iloc[int(n)], self.bearings.iloc[int(b)],
-                self.guides.iloc[gi], None if mi is None else self.motors.iloc[mi],
-                None if ci is None else self.couplings.iloc[ci])
+        return (self.screws.row(n), self.nuts.row(n), self.bearings.row(b), self.guides.row(gi),
+                None if mi is None else self.motors.row(mi), None if ci is None else self.couplings.row(ci))
 
 
-def vendor_filled(df: pd.DataFrame, table: str) -> pd.DataFrame:
+def vendor_filled(t: PartTable, table: str) -> PartTable:
     """The rows of a part table with a vendor value in every column the model would otherwise estimate
     (``catalog.COLUMNS``: an optional column with an ``estimate``)."""
     from ..catalog import COLUMNS
 
-    keep = np.ones(len(df), dtype=bool)
+    keep = np.ones(len(t), dtype=bool)
     for c in COLUMNS[table]:
-        if c.estimate and c.name in df.columns:
-            keep &= np.isfinite(df[c.name].to_numpy(dtype=float))
-    return df[keep]
+        if c.estimate and c.name in t:
+            keep &= np.isfinite(t.number(c.name))
+    return t.take(keep)
 
 
 # Spaces built in this process, by what they are made of (the catalog object and the problem's choices that
 # filter it): a study's cases share the catalog and most of their restrictions, and filtering the tables with
-# pandas is about 20 ms a case.  Each problem gets its own Space (its axis, its parameter cache) on the shared,
+# is a few ms a case.  Each problem gets its own Space (its axis, its parameter cache) on the shared,
 # read-only part tables and arrays.
 _SPACES: dict = {}
 SPACES_KEPT = 4
@@ -466,19 +465,20 @@ def build_space(problem: Problem) -> Space:
 def _build_space(problem: Problem) -> Space:
     cat = problem.catalog
     r = problem.restrictions
-    nuts, bearings, guides = cat.nuts, cat.bearings, cat.guides
-    screws = cat.screws
+    nuts, bearings, guides = cat.rows("nuts"), cat.rows("bearings"), cat.rows("guides")
+    screws = cat.rows("screws")
     if r.vendors is not None:
-        screws = screws[screws["vendor"].isin(r.vendors)]
-        nuts = nuts[nuts["vendor"].isin(r.vendors)]
-        bearings = bearings[bearings["vendor"].isin(r.vendors)]
-        guides = guides[guides["vendor"].isin(r.vendors)]
+        screws = screws.take(screws.isin("vendor", r.vendors))
+        nuts = nuts.take(nuts.isin("vendor", r.vendors))
+        bearings = bearings.take(bearings.isin("vendor", r.vendors))
+        guides = guides.take(guides.isin("vendor", r.vendors))
     # provenance: a slot the problem names parts for ('require') takes them whatever their status
-    def by_status(df, slot):
+    def by_status(t, slot):
         if r.required(slot):
-            return df
-        st = df["status"] if "status" in df.columns else pd.Series(USER_STATUS, index=df.index)
-        return df[st.isin(tuple(r.status)).to_numpy()]
+            return t
+        if "status" not in t:
+            return t if USER_STATUS in r.status else t.take(np.zeros(len(t), dtype=bool))
+        return t.take(t.isin("status", tuple(r.status)))
 
     screws, nuts = by_status(screws, "screw"), by_status(nuts, "nut")
     bearings, guides = by_status(bearings, "bearing"), by_status(guides, "guide")
@@ -486,74 +486,74 @@ def _build_space(problem: Problem) -> Space:
         screws, nuts = vendor_filled(screws, "screws"), vendor_filled(nuts, "nuts")
         bearings, guides = vendor_filled(bearings, "bearings"), vendor_filled(guides, "guides")
     if r.nut_types is not None:
-        nuts = nuts[nuts["type"].isin(r.nut_types)]
+        nuts = nuts.take(nuts.isin("type", r.nut_types))
     if r.bearing_arrangements is not None:
-        bearings = bearings[bearings["arrangement"].isin(r.bearing_arrangements)]
+        bearings = bearings.take(bearings.isin("arrangement", r.bearing_arrangements))
     if r.bearing_preload is not None:
-        bearings = bearings[bearings["preload_class"].isin(r.bearing_preload)]
+        bearings = bearings.take(bearings.isin("preload_class", r.bearing_preload))
     if r.guide_types is not None:
-        guides = guides[guides["type"].isin(r.guide_types)]
+        guides = guides.take(guides.isin("type", r.guide_types))
     if r.guide_preload is not None:
-        guides = guides[guides["preload_level"].isin(r.guide_preload) | guides["preload_class"].isin(r.guide_preload)]
+        guides = guides.take(guides.isin("preload_level", r.guide_preload)
+                             | guides.isin("preload_class", r.guide_preload))
     screws, nuts = _filtered(screws, r, "screw"), _filtered(nuts, r, "nut")
     bearings, guides = _filtered(bearings, r, "bearing"), _filtered(guides, r, "guide")
-    nuts = nuts[nuts["screw_id"].isin(screws.index)]
+    nuts = nuts.take(nuts.isin("screw_id", set(screws.ids)))
     # the problem's preload bounds are for preloaded nuts; a single nut keeps its catalog range
-    single = (nuts["type"] == "single").to_numpy()
-    lo = np.where(single, nuts["preload_min"].to_numpy(float),
-                  np.maximum(nuts["preload_min"].to_numpy(float), problem.preload_min))
-    hi = np.where(single, nuts["preload_max"].to_numpy(float),
-                  np.minimum(nuts["preload_max"].to_numpy(float), problem.preload_max))
+    single = nuts["type"] == "single"
+    lo = np.where(single, nuts.number("preload_min"), np.maximum(nuts.number("preload_min"), problem.preload_min))
+    hi = np.where(single, nuts.number("preload_max"), np.minimum(nuts.number("preload_max"), problem.preload_max))
     # the vendors' preload ceiling (check nut_preload: 10 % Ca) bounds the range of a preloaded nut, as the
     # vendors' own preload ranges do: the search never goes above it, so it needs no constraint of its own
-    hi = np.where(single, hi, np.minimum(hi, pnut.preload_ceiling(nuts["dynamic_load_rating"].to_numpy(float))))
+    hi = np.where(single, hi, np.minimum(hi, pnut.preload_ceiling(nuts.number("dynamic_load_rating"))))
     keep = lo <= hi
-    nuts, lo, hi = nuts[keep], lo[keep], hi[keep]
+    nuts, lo, hi = nuts.take(keep), lo[keep], hi[keep]
     # an empty part slot leaves no combination at all: a one-line error naming it (not an "infeasible"
     # result whose explanation has nothing to score)
-    for df, what, filters in ((nuts, "screw and nut", "vendors, nut_types, status, require/exclude; "
+    for t, what, filters in ((nuts, "screw and nut", "vendors, nut_types, status, require/exclude; "
                                "continuous.nut_preload and the 10 % Ca preload ceiling for preloaded nuts"),
                               (bearings, "support bearing", "vendors, bearing_arrangements, bearing_preload, "
                                "status, require/exclude"),
                               (guides, "linear guide", "vendors, guide_types, guide_preload, status, "
                                "require/exclude")):
-        if len(df) == 0:
+        if len(t) == 0:
             raise InputError(f"the search has nothing to choose from: no {what} is left after the filters "
                              f"(catalog: {filters})", source=problem.source)
-    screws_al = cat.screws.loc[nuts["screw_id"].to_numpy()]
+    screws_al = cat.rows("screws").by_id(list(nuts["screw_id"]))
     # the bearing journal rule is the model's margin_bearing_fit check; no extra pairing rule here
     fits = np.ones((len(nuts), len(bearings)), dtype=bool)
     sp = Space(problem=problem, mountings=tuple(problem.mountings), screws=screws_al, nuts=nuts,
                bearings=bearings, guides=guides, preload_lo=lo, preload_hi=hi, fits=fits)
     sp.s_arr = _arrays(screws_al, _SCREW_COLS)
     sp.n_arr = _arrays(nuts, _NUT_COLS)
-    sp.n_arr["type"] = nuts["type"].to_numpy(dtype=object).astype(str)
+    sp.n_arr["type"] = nuts["type"].astype(str)
     sp.b_arr = _arrays(bearings, _BEARING_COLS)
     sp.g_arr = _arrays(guides, _GUIDE_COLS)
-    sp.g_arr["type"] = guides["type"].to_numpy(dtype=object).astype(str)
+    sp.g_arr["type"] = guides["type"].astype(str)
     _add_drives(sp, problem)
     return sp
 
 
-def _filtered(df, r, slot, series=None, vendors=None):
+def _filtered(t, r, slot, series=None, vendors=None):
     """Rows of a part table the problem allows in ``slot``: vendor and series filters, require, exclude."""
     if vendors is not None:
-        df = df[df["vendor"].isin(vendors)]
+        t = t.take(t.isin("vendor", vendors))
     if series is not None:
-        df = df[df["series"].isin(series)]
+        t = t.take(t.isin("series", series))
     req, exc = r.required(slot), r.excluded(slot)
     if req:
-        df = df[df.index.isin(req)]
+        t = t.take(np.isin(t.ids.astype(str), list(req)))
     if exc:
-        df = df[~df.index.isin(exc)]
-    return df
+        t = t.take(~np.isin(t.ids.astype(str), list(exc)))
+    return t
 
 
 def coupling_dominated(cp) -> np.ndarray:
     """Couplings another coupling beats on every count the model uses: at least its rated torque,
     torsional stiffness and maximum speed, at most its inertia and price, and better on one of them
     (mass and bore do not enter the model; a dominated coupling can never be the better choice)."""
-    a = {c: cp[c].to_numpy(float) for c in ("rated_torque", "torsional_stiffness", "max_speed", "inertia", "price")}
+    a = {c: np.asarray(cp[c], dtype=float)
+         for c in ("rated_torque", "torsional_stiffness", "max_speed", "inertia", "price")}
     ge = ((a["rated_torque"][:, None] >= a["rated_torque"][None]) & (a["torsional_stiffness"][:, None]
           >= a["torsional_stiffness"][None]) & (a["max_speed"][:, None] >= a["max_speed"][None])
           & (a["inertia"][:, None] <= a["inertia"][None]) & (a["price"][:, None] <= a["price"][None]))
@@ -567,17 +567,17 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     """The (motor, coupling) pairs the search chooses from, spread over the guide axis."""
     r = problem.restrictions
     cat = problem.catalog
-    if not r.drive or len(cat.motors) == 0:
+    if not r.drive or len(cat.rows("motors")) == 0:
         return
-    motors = _filtered(cat.motors, r, "motor", r.motor_series, r.motor_vendors)
+    motors = _filtered(cat.rows("motors"), r, "motor", r.motor_series, r.motor_vendors)
     if r.max_motor_flange is not None:  # a motor without a listed flange cannot be shown to fit
-        motors = motors[(motors["flange"] <= r.max_motor_flange * (1 + 1e-9)).to_numpy()]
+        motors = motors.take(motors.number("flange") <= r.max_motor_flange * (1 + 1e-9))
     if r.estimated == "exclude":
         motors = vendor_filled(motors, "motors")
-    couplings = _filtered(cat.couplings, r, "coupling", r.coupling_series)
+    couplings = _filtered(cat.rows("couplings"), r, "coupling", r.coupling_series)
     n_couplings = len(couplings)
     if len(couplings) and not r.required("coupling"):
-        couplings = couplings[~coupling_dominated(couplings)]
+        couplings = couplings.take(~coupling_dominated(couplings))
     ratio = problem.axis.reduction_ratio
     need = problem.margin_map.get("coupling_torque", 1.0)
     pairs = []
@@ -585,9 +585,9 @@ def _add_drives(sp: Space, problem: Problem) -> None:
         if len(couplings) == 0:
             pairs.append((mi, None))
             continue
-        peak = float(motors["peak_torque"].iloc[mi]) * ratio
+        peak = float(motors.number("peak_torque")[mi]) * ratio
         # the coupling-torque check depends on the pair only: pairs that fail it are never formed
-        ok = couplings["rated_torque"].to_numpy(float) >= need * peak * (1.0 - 1e-12)
+        ok = couplings.number("rated_torque") >= need * peak * (1.0 - 1e-12)
         pairs.extend((mi, int(ci)) for ci in np.nonzero(ok)[0])
     if not pairs:
         why = ("no motor is left after the motor filters" if len(motors) == 0 else
@@ -601,10 +601,10 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     sp.g_arr = {k: np.repeat(v, D) for k, v in sp.g_arr.items()}
     G = len(sp.guides)
     mpos = np.array([m for m, _ in pairs], dtype=np.int64)
-    sp.m_arr = {k: np.tile(motors[k].to_numpy(float)[mpos], G) for k in _MOTOR_COLS}
+    sp.m_arr = {k: np.tile(motors.number(k)[mpos], G) for k in _MOTOR_COLS}
     if len(couplings):
         cpos = np.array([c for _, c in pairs], dtype=np.int64)
-        sp.c_arr = {k: np.tile(couplings[k].to_numpy(float)[cpos], G) for k in _COUPLING_COLS}
+        sp.c_arr = {k: np.tile(couplings.number(k)[cpos], G) for k in _COUPLING_COLS}
 
 
 def subset(p: dict, j, k: int) -> dict:

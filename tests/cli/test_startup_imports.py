@@ -1,8 +1,9 @@
 """What the command line imports on its common paths: the heavy libraries only where the command needs them.
 
 Start-up time is measured in bench/bench_cli.py; this guards the cause of a slow start so it cannot creep back:
-``parts`` lists plain catalog records (no pandas, no numpy), ``solve`` and ``evaluate`` build no unit registry
-and draw nothing (no pint, matplotlib, plotly, dask, rich when stdout is not a terminal)."""
+``parts`` lists plain catalog records (no pandas, no numpy), ``solve`` and ``evaluate`` read the catalogs into
+pandas-free part tables, build no unit registry and draw nothing (no pandas, pint, matplotlib, plotly, dask, rich
+when stdout is not a terminal)."""
 
 import json
 import os
@@ -20,8 +21,10 @@ NOT_IMPORTED = {
     ("parts",): set(PROBE),
     ("parts", "screws"): set(PROBE),
     ("parts", "nuts", "--fits", "HIWIN-G-40x20-b6p35", "--json", "-"): set(PROBE),
-    ("solve", "problems/teaching_problem.yaml"): {"pint", "matplotlib", "plotly", "dask", "rich", "scipy"},
-    ("evaluate", "problems/teaching_design.yaml"): {"pint", "matplotlib", "plotly", "dask", "rich", "scipy"},
+    ("solve", "problems/teaching_problem.yaml"): {"pint", "pandas", "pyarrow", "matplotlib", "plotly", "dask", "rich",
+                                                  "scipy"},
+    ("evaluate", "problems/teaching_design.yaml"): {"pint", "pandas", "pyarrow", "matplotlib", "plotly", "dask",
+                                                    "rich", "scipy"},
 }
 _SCRIPT = """
 import contextlib, io, json, sys

@@ -59,11 +59,11 @@ def test_search_keeps_preloads_under_the_ceiling():
     double = nuts["type"] != "single"
     nuts.loc[double, "preload_max"] = 0.2 * nuts.loc[double, "dynamic_load_rating"]
     # drag and life loose enough that the preload would climb above the ceiling if the range allowed it
-    p = replace(p, catalog=replace(p.catalog, nuts=nuts)).with_limit("max_drag_torque", 20.0)
+    p = replace(p, catalog=p.catalog.replace(nuts=nuts)).with_limit("max_drag_torque", 20.0)
     p = p.with_limit("min_life", 1000 * 3600.0)
     from axisopt.search.space import build_space
     sp = build_space(p)
-    ceiling = 0.1 * sp.nuts["dynamic_load_rating"].to_numpy(float)
+    ceiling = 0.1 * sp.nuts.number("dynamic_load_rating")
     assert (sp.preload_hi <= ceiling * (1 + 1e-12)).all() and (sp.preload_hi > 0.99 * ceiling).any()
     d = solve(p, top=1, sensitivities=False)
     e = solve(p, "exhaustive", top=1, sensitivities=False)
@@ -85,4 +85,4 @@ def test_nuts_whose_whole_range_is_above_the_ceiling_are_named_in_the_error():
     nuts.loc[double, "preload_min"] = 0.12 * nuts.loc[double, "dynamic_load_rating"]
     nuts.loc[double, "preload_max"] = 0.2 * nuts.loc[double, "dynamic_load_rating"]
     with pytest.raises(InputError, match="preload ceiling"):
-        solve(replace(p, catalog=replace(p.catalog, nuts=nuts)), top=1, sensitivities=False)
+        solve(replace(p, catalog=p.catalog.replace(nuts=nuts)), top=1, sensitivities=False)

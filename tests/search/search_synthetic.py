@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import numpy as np
@@ -130,7 +129,7 @@ def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2) -> 
         d["_source"] = "synthetic"
         return d.set_index("id", drop=False)
 
-    return dataclasses.replace(catalog, motors=df(motors, "motors"), couplings=df(couplings, "couplings"))
+    return catalog.replace(motors=df(motors, "motors"), couplings=df(couplings, "couplings"))
 
 
 def assert_same_answer(a, b, preload: bool = True):

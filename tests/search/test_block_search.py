@@ -22,7 +22,7 @@ def _problem(seed):
     g["block_mass"] *= rng.uniform(0.5, 2.0, len(g))  # guides that differ in mass, rigidity and rating
     g["normal_rigidity"] *= rng.uniform(0.5, 2.0, len(g))
     g["dynamic_load_rating"] *= rng.uniform(0.3, 1.5, len(g))
-    cat = replace(cat, guides=g)
+    cat = cat.replace(guides=g)
     drive = seed % 2 == 1
     if drive:
         make_double(cat)

@@ -23,7 +23,7 @@ def _weak_motors(p, factor):
     m = p.catalog.motors.copy()
     m["rated_torque"] *= factor
     m["peak_torque"] *= factor
-    return replace(p, catalog=replace(p.catalog, motors=m))
+    return replace(p, catalog=p.catalog.replace(motors=m))
 
 
 def _case(seed, kind):

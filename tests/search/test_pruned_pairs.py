@@ -24,7 +24,7 @@ def test_left_out_pairs_are_counted():
     cp["inertia"] = [2e-4, 1e-4, 5e-4]
     cp["max_speed"] = cp["max_speed"].iloc[0]
     cp["price"] = [100.0, 100.0, 120.0]
-    cat = replace(cat, motors=m, couplings=cp)
+    cat = cat.replace(motors=m, couplings=cp)
     p = make_problem(cat, limits={"max_cost": 1e5})
     p = replace(p, restrictions=replace(p.restrictions, drive=True))
     sp = build_space(p)

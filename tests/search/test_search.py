@@ -123,7 +123,7 @@ def _drive_problem(seed, axis_coupling):
     cat = add_drives(cat, rng, n_motors=3, n_couplings=2)
     cp = cat.couplings.copy()
     cp["torsional_stiffness"], cp["rated_torque"] = [3e5, 1.5e5], 500.0
-    cat = replace(cat, couplings=cp)
+    cat = cat.replace(couplings=cp)
     p = make_problem(cat, limits={"max_cost": float(rng.uniform(3500, 6000))}, moving_mass=200.0,
                      axial_load=3000.0)
     return replace(p, restrictions=replace(p.restrictions, drive=True),
