@@ -4,7 +4,8 @@
 
 Runs each command as a user does (a fresh ``python -m axisopt`` process, output discarded), N times each,
 interleaved with ``python -c pass`` and ``python -c "import numpy"`` so that machine load hits all alike; prints
-the median wall time of each, its ratios to both references, the median CPU time (user + system, less affected by
+the median wall time of each (after one untimed run that writes the compiled modules, as a user's machine keeps
+them), its ratios to both references, the median CPU time (user + system, less affected by
 other processes on a loaded machine) and which heavy libraries the command imports (``-X importtime``).
 
 Targets (issue 29): ``solve problems/teaching_problem.yaml`` < 0.6 s and ``parts screws`` < 0.4 s wall on an idle
@@ -59,6 +60,11 @@ def main(argv=None) -> int:
     ap.add_argument("--repeat", type=int, default=5, help="runs of each command (5)")
     args = ap.parse_args(argv)
     env = dict(os.environ, PYTHONPATH=str(ROOT), AXISOPT_COLOR="never")
+    # as on a user's machine: Python keeps the compiled modules (some sandboxes set PYTHONDONTWRITEBYTECODE,
+    # and then every run compiles axisopt's modules again, about 0.09 s); one untimed run of each writes them
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    for cmd in COMMANDS.values():
+        _run(cmd, env)
     times = {k: [] for k in COMMANDS}
     cpu = {k: [] for k in COMMANDS}
     for _ in range(args.repeat):
