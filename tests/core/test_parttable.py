@@ -1,6 +1,7 @@
 """The pandas-free part tables (axisopt.parttable) against the pandas tables they stand in for."""
 
 import math
+import pickle
 
 import numpy as np
 import pandas as pd
@@ -53,6 +54,8 @@ def test_rows_are_the_pandas_rows(cat):
     assert isinstance(r2, Row) and r2.name == r.name and t.row(0) == r  # a copy does not touch the table
     with pytest.raises(ValueError):  # the shared column arrays are read-only
         t["preload_max"][0] = 0.0
+    back = pickle.loads(pickle.dumps(r))  # a study's workers send designs back pickled
+    assert isinstance(back, Row) and back.name == r.name and back == r
 
 
 def test_take_isin_by_id_and_the_frame_round_trip(cat):
