@@ -267,9 +267,6 @@ class Catalog:
     motors = property(lambda self: self.table("motors"), doc="motors (pandas DataFrame by part id)")
     couplings = property(lambda self: self.table("couplings"), doc="couplings (pandas DataFrame by part id)")
 
-    def __len__(self) -> int:  # pragma: no cover - convenience
-        return sum(len(self.rows(n)) for n in TABLES)
-
     def __repr__(self) -> str:
         return "Catalog(" + ", ".join(f"{n}: {len(self.rows(n))}" for n in TABLES) + ")"
 
