@@ -282,10 +282,15 @@ class Catalog:
         return t.row(i)
 
 
+def _table_columns(name: str) -> list[str]:
+    """The columns of a loaded part table: the schema's, then where each row came from."""
+    return list(SCHEMA[name]) + ["_source", *PROVENANCE]
+
+
 def _empty_table(name: str) -> PartTable:
     from .parttable import PartTable
 
-    return PartTable([], list(SCHEMA[name]) + ["_source", "status", "source"], ids=[])
+    return PartTable([], _table_columns(name), ids=[])
 
 
 def _closest(word: str, options) -> str | None:
@@ -512,8 +517,7 @@ def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
     from .parttable import PartTable
 
     rows = load_records(extra_dirs, shipped=shipped)
-    return Catalog(**{name: PartTable(rows.table(name), list(SCHEMA[name]) + ["_source", *PROVENANCE])
-                      for name in SCHEMA})
+    return Catalog(**{name: PartTable(rows.table(name), _table_columns(name)) for name in SCHEMA})
 
 
 _CACHE: dict[tuple, Catalog] = {}

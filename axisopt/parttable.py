@@ -39,9 +39,9 @@ def _column(values: list) -> np.ndarray:
 
 
 class PartTable:
-    """Part rows by column.  ``records`` (list of dicts, one per part, in order) or ``columns`` (name -> array,
-    all of one length) with ``ids``; the rows keep their values as given (``row(i)``), the columns are numpy
-    arrays (``t["lead"]``)."""
+    """Part rows by column.  ``records``: one dict per part, in order; ``names``: the columns (default: the
+    first record's keys); ``ids``: the part ids (default: each record's ``id``).  The rows keep their values as
+    given (``row(i)``); a column is a numpy array built on first use (``t["lead"]``)."""
 
     __slots__ = ("_records", "_columns", "_names", "ids", "_pos")
 
@@ -99,9 +99,6 @@ class PartTable:
     def row(self, i: int) -> Row:
         r = self._records[int(i)]
         return r.copy() if isinstance(r, Row) else Row(r, self.ids[int(i)])
-
-    def rows(self):
-        return (self.row(i) for i in range(len(self)))
 
     def position(self, part_id) -> int | None:
         if self._pos is None:

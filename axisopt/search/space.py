@@ -440,7 +440,7 @@ def vendor_filled(t: PartTable, table: str) -> PartTable:
 
 
 # Spaces built in this process, by what they are made of (the catalog object and the problem's choices that
-# filter it): a study's cases share the catalog and most of their restrictions, and filtering the tables with
+# filter it): a study's cases share the catalog and most of their restrictions, and filtering the part tables
 # is a few ms a case.  Each problem gets its own Space (its axis, its parameter cache) on the shared,
 # read-only part tables and arrays.
 _SPACES: dict = {}
@@ -542,9 +542,9 @@ def _filtered(t, r, slot, series=None, vendors=None):
         t = t.take(t.isin("series", series))
     req, exc = r.required(slot), r.excluded(slot)
     if req:
-        t = t.take(np.isin(t.ids.astype(str), list(req)))
+        t = t.take(t.isin("id", req))
     if exc:
-        t = t.take(~np.isin(t.ids.astype(str), list(exc)))
+        t = t.take(~t.isin("id", exc))
     return t
 
 
