@@ -256,7 +256,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "mean_speed": _axis_q("speed", "mean speed for the life (default: half of max_speed)"),
     "mean_axial_load": _axis_q("force", "mean axial load for the life (default: a third of axial_load)", zero=True),
     "acceleration": _axis_q("acceleration", "acceleration of the moves", zero=True),
-    "required_life": _axis_q("time", "required life of the nut and bearings"),
+    "required_life": _axis_q("time", "required life of the nut, bearings and guides (problem default: its "
+                             "limits.min_life, else 20000 h)"),
     "load_factor": Key("number", "load factor fw of the life calculation", minimum=1.0),
     "guide_blocks": Key("number", "guide blocks carrying the table", integer=True, minimum=1, maximum=64),
     "rails": Key("number", "guide rails", integer=True, minimum=1, maximum=8),

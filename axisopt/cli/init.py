@@ -57,7 +57,7 @@ _MACHINE = {
     - {{dwell: 1 s}}                                  # spindle stop
     - {{move: -700 mm}}                               # rapid return
     - {{dwell: 5 s}}                                  # tool and part change
-  required_life: 20000 h      # nut and bearing L10 life needed (default 20000 h)
+  required_life: 20000 h      # nut, bearing, guide life needed (default 20000 h)
   guide_blocks: 4             # carriages in total (default 4)
   rails: 2                    # (default 2)
   table_length: 600 mm        # rail length = stroke + table_length (default 500 mm)
@@ -113,7 +113,7 @@ continuous:
     - {{move: 400 mm, speed: 0.2 m/min, force: 1000 N}}  # finishing pass against 1 kN
     - {{move: -550 mm}}                                  # rapid return
     - {{dwell: 10 s}}                                    # part change
-  required_life: 20000 h      # nut and bearing L10 life needed (default 20000 h)
+  required_life: 20000 h      # nut, bearing, guide life needed (default 20000 h)
   table_length: 400 mm        # rail length = stroke + table_length (default 500 mm)
 """,
         problem="""\
@@ -164,7 +164,7 @@ continuous:
     - {{move: 1000 mm, speed: 5 m/min, force: 3000 N}} # milling pass against 3 kN
     - {{move: -1500 mm}}                               # rapid return
     - {{dwell: 10 s}}                                  # tool and part change
-  required_life: 15000 h      # nut and bearing L10 life needed (default 20000 h)
+  required_life: 15000 h      # nut, bearing, guide life needed (default 20000 h)
   table_length: 800 mm        # rail length = stroke + table_length (default 500 mm)
 """,
         problem="""\
@@ -215,7 +215,7 @@ continuous:
     - {{dwell: 1 s}}
     - {{move: 450 mm}}                                 # rapid up
     - {{dwell: 5 s}}                                   # tool change, held by the motor
-  required_life: 20000 h      # nut and bearing L10 life needed (default 20000 h)
+  required_life: 20000 h      # nut, bearing, guide life needed (default 20000 h)
   table_length: 400 mm        # rail length = stroke + table_length (default 500 mm)
 """,
         problem="""\

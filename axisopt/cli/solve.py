@@ -293,10 +293,11 @@ def estimated_lines(estimated) -> list:
     """Text lines for ``Certificate.estimated`` (what of the optimum rests on estimated part values)."""
     if not estimated:
         return []
+    from ..model.estimates import estimate_text
+
     out = ["  rests on estimated values (not in the vendor's table; catalogs/SOURCES.md):"]
     for r in estimated:
-        vals = "; ".join(f"{e['slot']} {e['part']} {e['column']} {_num(e['shown'])} {e['unit']} ({e['how']})"
-                         for e in r["estimates"])
+        vals = "; ".join(estimate_text(e) for e in r["estimates"])
         out.extend(textwrap.wrap(f"{r['what']} ({r['output']}): {vals}", 100, initial_indent="    ",
                                  subsequent_indent="        "))
     return out

@@ -44,12 +44,35 @@ class Estimate:
     how: str
     unit: str = ""  # display unit of ``shown``
     shown: float = math.nan  # value in the display unit
+    probe: float = math.nan  # the value :func:`resting_on` tries (default: the value raised by 5 %)
 
     def to_dict(self) -> dict:
         d = asdict(self)
         d["value"] = _finite(self.value)
         d["shown"] = _finite(self.shown)
+        d.pop("probe")
         return d
+
+    def text(self) -> str:
+        return estimate_text(self.to_dict())
+
+
+def estimate_text(e: dict) -> str:
+    """One estimate (:meth:`Estimate.to_dict`) as text: 'guide HG15 normal_rigidity 177 N/um (how)', or for an
+    axis value left out 'axis.bearing_housing_stiffness rigid (how)'."""
+    if e["slot"] == "axis":
+        return f"axis.{e['column']} rigid ({e['how']})"
+    shown = e["shown"]
+    num = "-" if shown is None else f"{shown:.4g}"
+    return f"{e['slot']} {e['part']} {e['column']} {num} {e['unit']} ({e['how']})"
+
+
+# Axis values a design may leave out that the model then takes as rigid: (YAML key, compliance parameter).
+# No vendor publishes them (THK's axial rigidity of the feed screw system has a term K_H for the nut and bearing
+# mounting, "as high as possible"), so a result that moves with them says it assumes them rigid.
+ASSUMED_RIGID = (("bearing_housing_stiffness", "housing_compliance"), ("nut_bracket_stiffness", "bracket_compliance"))
+RIGID_HOW = "not given; THK's mounting rigidity K_H"
+RIGID_PROBE = 1e-9  # [m/N]: the compliance :func:`resting_on` tries for a rigid part (1000 N/um)
 
 
 def _param_of(table: str, column: str) -> str | None:
@@ -81,6 +104,9 @@ def design_estimates(design) -> list:
                 unit = DISPLAY_UNITS.get(col.kind, "")
                 shown = v / unit_factor(unit, col.kind) if unit else v
                 out.append(Estimate(slot, pid, col.name, param, v, how, unit, shown))
+    for key, param in ASSUMED_RIGID:
+        if getattr(design.axis, key) is None:
+            out.append(Estimate("axis", "", key, param, 0.0, RIGID_HOW, "N/um", math.inf, probe=RIGID_PROBE))
     return out
 
 
@@ -107,7 +133,7 @@ def resting_on(design, outputs, estimates=None) -> dict:
     q = {n: column(v) for n, v in p.items()}
     for i, est in enumerate(estimates, start=1):
         v = float(p[est.param])
-        q[est.param][i, 0] = v * (1.0 + _STEP) if v != 0 else _STEP
+        q[est.param][i, 0] = est.probe if math.isfinite(est.probe) else (v * (1.0 + _STEP) if v != 0 else _STEP)
 
     def row(v, i):
         a = np.asarray(v, dtype=float)
@@ -145,7 +171,7 @@ class Resting:
         return {"what": self.what, "output": self.output, "estimates": [e.to_dict() for e in self.estimates]}
 
     def text(self) -> str:
-        vals = "; ".join(f"{e.slot} {e.part} {e.column} {e.shown:.4g} {e.unit} ({e.how})" for e in self.estimates)
+        vals = "; ".join(e.text() for e in self.estimates)
         return f"{self.what} rests on estimated {vals}"
 
 

@@ -68,7 +68,8 @@ LIMIT_TABLE = (
     Limit("max_drag_torque", "drag_torque", "<=", "torque", "N.m", 1.0,
           "drag torque (nut and bearings) at most this"),
     Limit("min_life", "life", ">=", "time", "h", 3600.0,
-          "nut L10 life at least this (the axis.required_life check applies too)"),
+          "nut L10 life at least this; without axis.required_life also the need of the nut, bearing and "
+          "guide life checks"),
     Limit("min_stiffness", "k_total", ">=", "stiffness", "N/um", 1e6,
           "axial stiffness at least this (minimum over the stroke)"),
     Limit("min_frequency", "f1", ">=", "frequency", "Hz", 1.0,

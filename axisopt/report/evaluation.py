@@ -255,7 +255,7 @@ def estimate_lines(ev: Evaluation) -> list:
         return []
     out = ["", "estimated values (not in the vendor's table; catalogs/SOURCES.md) and what they move:"]
     for e, what in rows:
-        out.extend(textwrap.wrap(f"{e.slot} {e.part} {e.column} {e.shown:.4g} {e.unit} ({e.how}) moves "
+        out.extend(textwrap.wrap(f"{e.text()} moves "
                                  f"{', '.join(what)}", WIDTH, initial_indent="  ", subsequent_indent="      "))
     return out
 

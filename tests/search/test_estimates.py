@@ -91,3 +91,20 @@ def test_output_names_the_estimate_that_binds(tmp_path):
 def test_estimated_exclude_searches_vendor_values_only(tmp_path):
     res = solve(_problem(tmp_path, [VENDOR, COPY], estimated="exclude"), top=2, sensitivities=False)
     assert res.best.bearing == VENDOR and all(c.bearing != COPY for c in res.runners_up)
+
+
+def test_rigid_housing_and_bracket_are_named_unless_given(tmp_path):
+    # the stiffness optimum's objective moves with the housing and the nut bracket (THK's K_H term): left out,
+    # they are taken as rigid and the certificate says so; given, they are the user's values and not named
+    res = solve(_problem(tmp_path, [VENDOR]), top=1, sensitivities=False)
+    rest = {r["what"]: r for r in res.certificate.estimated}
+    named = {e["column"] for e in rest["objective"]["estimates"] if e["slot"] == "axis"}
+    assert named == {"bearing_housing_stiffness", "nut_bracket_stiffness"}
+    e = next(e for e in rest["objective"]["estimates"] if e["slot"] == "axis")
+    assert e["shown"] is None and "K_H" in e["how"]  # JSON-safe: no infinity
+    path = tmp_path / "p.yaml"
+    path.write_text(path.read_text().replace("axis:\n", "axis:\n  bearing_housing_stiffness: 2000 N/um\n"
+                                             "  nut_bracket_stiffness: 1500 N/um\n", 1))
+    res = solve(load_problem(path), top=1, sensitivities=False)
+    axis_named = [e for r in res.certificate.estimated for e in r["estimates"] if e["slot"] == "axis"]
+    assert axis_named == []
