@@ -99,7 +99,12 @@ def drive(p, moving_mass, drag) -> dict:
         "coupling_torque": (p["coupling_rated_torque"], p["motor_peak_torque"] * p["reduction_ratio"]),
         "coupling_speed": (p["coupling_max_speed"], screw_speed),
     }))
+    # energy the motor returns to the drive over one cycle (braking, lowering a vertical axis) and its mean power:
+    # what the drive's regenerative resistor must take (Yaskawa 12.8.6), before winding and drive losses
+    regen = sum(pd.regenerative_energy(phases, torques, p["lead"], a), 0.0 * friction) if phases else 0.0 * friction
+    cycle = sum(durations)
     out.update({
+        "regen_energy": regen, "regen_power": regen / cycle if cycle > 0 else 0.0 * regen,
         "load_inertia": j_load, "total_inertia": j_tot, "inertia_ratio": ratio, "motor_speed": n_motor,
         "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean,
         "holding_torque": hold,

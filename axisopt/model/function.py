@@ -26,7 +26,7 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "screw_speed", "critical_speed", "buckling_load", "yield_load", "dn", "nut_lift_off_force",
                   "bearing_max_load", "load_inertia", "total_inertia", "inertia_ratio", "motor_speed", "peak_torque",
                   "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque",
-                  "gravity_torque",
+                  "gravity_torque", "regen_energy", "regen_power",
                   "duty_time", "guide_max_load", "guide_static_safety", "guide_mean_load", "nut_static_safety",
                   "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking", "friction_power", "heat_transfer",
                   "heat_balance_rise", "temperature_rise", "thermal_growth",

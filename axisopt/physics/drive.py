@@ -122,6 +122,39 @@ def peak_torque_available(speed, peak_torque, corner_speed, peak_at_max_speed, m
     return peak_torque - (peak_torque - peak_at_max_speed) * frac
 
 
+REGEN_STEPS = 8  # Simpson sub-intervals per phase for the regenerative energy (exact while the power keeps its sign)
+
+
+def regenerative_energy(phases, torques, lead, ratio=1.0):
+    r"""Energy the motor returns to the drive in each duty-cycle phase [J]: the negative part of the shaft power,
+
+    .. math:: E = \int_0^{t} \max(0, -T(\tau)\,\omega(\tau))\,d\tau,\qquad \omega = \frac{2\pi v}{P_h A}
+
+    with T linear over the phase (:func:`phase_torques`) and the table speed v from the phase's start speed and
+    acceleration; Simpson's rule on :data:`REGEN_STEPS` sub-intervals (T omega is a cubic: exact unless the
+    power changes sign inside the phase).  The vendors' regeneration sizing integrates the same torque x speed
+    (Yaskawa Sigma-7 manual 12.8.6: E_S - E_L = J n^2 / 182 - (pi / 60) n T_L t_D for a stop; Mitsubishi MR-JE
+    11.2.2: the sum of the negative energies; Omron 1S 4-4-1) and then subtracts the motor's winding loss
+    (Omron: the actual energy is about 90 % of it) and what the drive's capacitors absorb: this is the
+    mechanical energy before those losses, an upper estimate.  phases: :class:`axisopt.physics.motion.Phase`;
+    torques: their (T_start, T_end) [N m]; lead [m]; ratio: screw turns per motor turn.  Returns a list [J]."""
+    k = 2.0 * pi / (lead * ratio)  # motor rad/s per table m/s
+    out = []
+    for ph, (t0, t1) in zip(phases, torques):
+        if ph.duration <= 0.0 or ph.direction == 0.0:
+            out.append(0.0 * t0)
+            continue
+        h = ph.duration / REGEN_STEPS
+        acc = 0.0 * t0
+        for i in range(REGEN_STEPS + 1):
+            tau = i * h
+            w = 1.0 if i in (0, REGEN_STEPS) else (4.0 if i % 2 else 2.0)
+            torque = t0 + (t1 - t0) * (tau / ph.duration)
+            acc = acc + w * mx.fmax(-torque * k * ph.speed_at(tau), 0.0)
+        out.append(acc * h / 3.0)
+    return out
+
+
 def linear_rms_torque(torques, durations):
     r"""RMS torque over phases whose torque varies linearly from T0 to T1 (exact for jerk-limited ramps):
     :math:`\sqrt{\sum t_i (T_0^2 + T_0 T_1 + T_1^2)/3 \,/\, \sum t_i}` [N m] (THK eq. 48 for constant torques)."""

@@ -41,6 +41,11 @@ class Phase:
     direction: float  # +1, -1, or 0 (standstill)
     force: float  # external axial force opposing the motion [N]
     speed: float  # largest |speed| in the phase [m/s]
+    v0: float = 0.0  # table speed at the start [m/s], signed (the speed over the phase: v0 + integral of a)
+
+    def speed_at(self, t):
+        """Signed table speed [m/s] at time ``t`` into the phase (acceleration linear in t)."""
+        return self.v0 + self.a0 * t + 0.5 * (self.a1 - self.a0) * t * t / self.duration
 
 
 def ramp(speed: float, acceleration: float, jerk: float | None) -> tuple[list, float, float]:
@@ -81,10 +86,18 @@ def move_phases(seg: Segment) -> list[Phase]:
         v = lo
         pieces, t_ramp, d_ramp = ramp(v, seg.acceleration, seg.jerk)
     cruise = (dist - 2.0 * d_ramp) / v if v > 0 else 0.0
-    out = [Phase(t, s * a0, s * a1, s, seg.force, v) for t, a0, a1 in pieces if t > 0]
+    out, u = [], 0.0  # u: speed at the start of each ramp piece, from rest up to v and back
+    for t, a0, a1 in pieces:
+        if t > 0:
+            out.append(Phase(t, s * a0, s * a1, s, seg.force, v, s * u))
+        u += 0.5 * (a0 + a1) * t
     if cruise > 0:
-        out.append(Phase(cruise, 0.0, 0.0, s, seg.force, v))
-    out += [Phase(t, -s * a1, -s * a0, s, seg.force, v) for t, a0, a1 in reversed(pieces) if t > 0]
+        out.append(Phase(cruise, 0.0, 0.0, s, seg.force, v, s * v))
+    u = v
+    for t, a0, a1 in reversed(pieces):
+        if t > 0:
+            out.append(Phase(t, -s * a1, -s * a0, s, seg.force, v, s * u))
+        u -= 0.5 * (a0 + a1) * t
     return out
 
 
@@ -137,18 +150,6 @@ def cycle_time(phases) -> float:
 
 
 def phase_speeds(phases) -> list[tuple[float, float]]:
-    """Table speed magnitude at the start and end of each phase [m/s] (for torque-speed plots): the
-    acceleration integrated from rest, each move starting at rest; a cruise runs at its speed, a dwell at 0."""
-    out = []
-    v = 0.0
-    for ph in phases:
-        if ph.direction == 0:
-            v0 = v1 = 0.0
-        elif ph.a0 == 0.0 and ph.a1 == 0.0:
-            v0 = v1 = ph.speed
-        else:
-            v0 = v
-            v1 = min(max(v0 + ph.direction * 0.5 * (ph.a0 + ph.a1) * ph.duration, 0.0), ph.speed)
-        out.append((v0, v1))
-        v = v1
-    return out
+    """Table speed magnitude at the start and end of each phase [m/s] (for torque-speed plots)."""
+    return [(abs(ph.v0), abs(ph.speed_at(ph.duration))) if ph.duration > 0 else (abs(ph.v0), abs(ph.v0))
+            for ph in phases]

@@ -129,7 +129,8 @@ def drive_dict(ev: Evaluation) -> dict | None:
             "mean_thrust_torque_Nm": v["mean_thrust_torque"],
             "holding_torque_Nm": v["holding_torque"], "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
             "load_inertia_kgm2": v["load_inertia"], "inertia_ratio": v["inertia_ratio"],
-            "duty_time_s": v["duty_time"], "friction_torque_Nm": v["friction_torque"]}
+            "duty_time_s": v["duty_time"], "friction_torque_Nm": v["friction_torque"],
+            "regen_energy_J": v["regen_energy"], "regen_power_W": v["regen_power"]}
 
 
 def _finite(x):
@@ -155,8 +156,11 @@ def evaluation_table(ev: Evaluation) -> str:
     assumed = [k for k in d.assumed if not ((k == "motor_inertia" and d.motor is not None)
                                             or (k.startswith("coupling_") and d.coupling is not None))]
     if assumed:
-        lines.extend(textwrap.wrap(f"defaults used for: {', '.join(assumed)}", WIDTH, initial_indent="  ",
-                                   subsequent_indent="    ", break_on_hyphens=False))
+        shown = [_default_shown(a, k) for k in assumed]
+        glued = ", ".join(x.replace(" ", "\0") for x in shown)
+        lines.extend(w.replace("\0", " ") for w in textwrap.wrap(
+            f"defaults used for: {glued}", WIDTH, initial_indent="  ", subsequent_indent="    ",
+            break_on_hyphens=False))
     lines.append("")
     i_min = ev.i_min
     k_tot = float(v["k_total"][i_min])
@@ -235,6 +239,24 @@ _EST_OUTPUTS = (("k_total", "min stiffness"), ("f1", "min frequency"), ("drag_to
 NEAR_LIMIT = 1.1  # a check with margin below this counts as near its limit
 
 
+# defaults the life, torque and heat checks read, shown with their value: (axis attribute, display unit, SI per unit)
+# (the temperature rise has its own line: the thermal block says where it comes from)
+_DEFAULT_VALUES = {"mean_axial_load": ("mean_axial_load_eff", "N", 1.0),
+                   "mean_speed": ("mean_speed_eff", "m/min", 1 / 60),
+                   "required_life": ("required_life", "h", 3600.0), "load_factor": ("load_factor", "", 1.0)}
+
+
+def _default_shown(axis, key: str) -> str:
+    """A defaulted axis key as the evaluation names it: with its value where the checks read it."""
+    if key not in _DEFAULT_VALUES:
+        return key
+    attr, unit, factor = _DEFAULT_VALUES[key]
+    value = getattr(axis, attr, None)
+    if not isinstance(value, (int, float)) or not math.isfinite(value):
+        return key
+    return f"{key} {value / factor:,.4g}{' ' + unit if unit else ''}"
+
+
 def estimates(ev: Evaluation) -> list:
     """[(Estimate, [what it moves])] for the design's estimated part values except prices (which move only the
     cost and are always illustrative): the key outputs and the checks within 10 % of their limit."""
@@ -297,6 +319,11 @@ def drive_lines(ev: Evaluation) -> list:
     lines.append(f"  {'':<28}{'needed':>26}   available")
     for name, need, have in rows:
         lines.append(f"  {name:<28}{need:>26}   {have}")
+    lines.extend(textwrap.wrap(
+        f"regeneration {v['regen_energy']:,.0f} J per cycle back from the motor, {v['regen_power']:,.0f} W mean "
+        "(braking" + (", lowering" if a.orientation == "vertical" else "") + "; before winding and drive losses): "
+        "what the drive's regenerative resistor must take (Yaskawa 12.8.6), not checked", WIDTH,
+        initial_indent="  ", subsequent_indent="    "))
     lines.append("")
     return lines
 

@@ -83,3 +83,23 @@ def test_compare_plot_draws_each_motor_once_and_names_a_design_without_one(tmp_p
     assert failed and any(n.startswith("C - FAILS ") and all(c in n for c in failed) for n in names)
     # A and B draw the same curves: one line, both named
     assert any(n.startswith("A, B: the same curves") for n in names)
+
+
+def test_regeneration_of_the_default_cycle_is_yaskawas_two_stops(capsys):
+    # the default cycle (trapezoidal rapid over the stroke and back) stops twice from the rapid speed: Yaskawa
+    # Sigma-7 12.8.6 gives each stop E_S - E_L = J n^2 / 182 - (pi / 60) n T_L t_D (182.38 unrounded)
+    ev = evaluate(load_design(DESIGN))
+    a = ev.design.axis
+    assert a.jerk is None and not a.duty_cycle and a.orientation == "horizontal"
+    n = ev["motor_speed"] * 60 / (2 * math.pi)
+    t_d = a.max_speed / a.acceleration
+    stop = ev["total_inertia"] * n**2 / 182.38 - (math.pi / 60) * n * ev["friction_torque"] * t_d
+    assert ev["regen_energy"] == pytest.approx(2 * stop, rel=1e-4)
+    assert ev["regen_power"] == pytest.approx(ev["regen_energy"] / ev["duty_time"], rel=1e-12)
+    assert main(["evaluate", str(DESIGN), "--json", "-"]) == 0
+    import json
+
+    drive = json.loads(capsys.readouterr().out)["drive"]
+    assert drive["regen_energy_J"] == pytest.approx(float(ev["regen_energy"]))
+    assert main(["evaluate", str(DESIGN)]) == 0
+    assert f"regeneration {float(ev['regen_energy']):,.0f} J per cycle" in capsys.readouterr().out

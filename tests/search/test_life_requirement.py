@@ -43,3 +43,14 @@ def test_the_bearing_check_needs_the_life_limit(tmp_path):
     res = solve(load_problem(f), sensitivities=False)
     assert res.status == "optimal"
     assert abs(res.best.objective - 110.092) < 1e-3  # N/um, the shipped optimum
+
+
+def test_the_defaults_line_shows_the_values_the_life_checks_read(capsys):
+    from axisopt.cli import main
+
+    # teaching: axial_load 2000 N, max_speed 30 m/min, no mean values given: a third of the load, half the speed
+    assert main(["solve", str(ROOT / "problems" / "teaching_problem.yaml"), "--no-sensitivity"]) == 0
+    out = capsys.readouterr().out
+    text = " ".join(out[out.index("defaults used for:"):].split("\n\n")[0].split())
+    assert "mean_axial_load 666.7 N" in text and "mean_speed 15 m/min" in text and "load_factor 1.2" in text
+    assert "required_life" not in text  # it follows limits.min_life: not a default
