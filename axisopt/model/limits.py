@@ -29,6 +29,8 @@ OUTPUT_PRELOAD = MappingProxyType({
     "k_total": 1, "k_tool": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
     "life": -1, "kv": 1,
     "friction_power": 1, "heat_balance_rise": 1, "temperature_rise": 1, "thermal_growth": 1,
+    # the nut's drag brakes every move: the energy the motor returns falls with the preload
+    "regen_energy": -1, "regen_power": -1,
 })
 
 
@@ -86,6 +88,9 @@ LIMIT_TABLE = (
     Limit("min_tool_stiffness", "k_tool", ">=", "stiffness", "N/um", 1e6,
           "stiffness in the feed direction at the cutting point: the axial chain in series with the table "
           "pitching and yawing on its blocks (minimum over the stroke)"),
+    Limit("max_regen_power", "regen_power", "<=", "power", "W", 1.0,
+          "mean power the motor returns to the drive over the duty cycle (braking, lowering) at most this: what "
+          "the drive's regenerative resistor takes (Yaskawa Sigma-7 12.8.6)"),
     Limit("min_kv", "kv", ">=", "frequency", "1/s", 1.0,
           "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, model.servo)"),
 )

@@ -240,15 +240,15 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
         lo, hi = space.preload_lo[n_][:, None, None], space.preload_hi[n_][:, None, None]
         with np.errstate(all="ignore"):
             out_lo = model.drive_response(p, lo)
-            out_hi = model.drive_response(p, hi) if cvx else None
+            out_hi = model.drive_response(p, hi) if cvx or any(c.lower_type for c in cons) else None
             ok = np.ones((K, D), dtype=bool)
             for c in cons:
                 if c.convex:
                     ub = np.asarray(convex_margin_bound(c, out_lo, out_hi, phases))
                     ok_c = ub >= c.limit * (1.0 - SCREEN_RTOL)
                     ok &= ok_c[..., 0] if ok_c.ndim == 3 else ok_c
-                else:
-                    ok &= _screen_ok(c, out_lo)
+                else:  # at the preload end that favours it (the regenerated power falls with the preload)
+                    ok &= _screen_ok(c, out_hi if c.lower_type else out_lo)
         k, d = np.nonzero(ok)
         out_parts.append((n_[k], b_[k], g_[k] * D + d, bd[k]))
     return tuple(np.concatenate([o[i] for o in out_parts]) for i in range(4))

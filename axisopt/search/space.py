@@ -215,7 +215,7 @@ def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = Tru
 
 
 # Outputs the motor and coupling change (all others are the same for every drive of a mechanical combination).
-DRIVE_KEYS = frozenset({"cost", "inertia_ratio"} | {f"margin_{c}" for c in model.DRIVE_CHECKS})
+DRIVE_KEYS = frozenset({"cost", "inertia_ratio", "regen_power"} | {f"margin_{c}" for c in model.DRIVE_CHECKS})
 # Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain); the motor's
 # inertia enters only the axial-torsional modes, which no limit or objective reads.
 COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1", "k_tool", "kv"})
