@@ -131,8 +131,10 @@ def regenerative_energy(phases, torques, lead, ratio=1.0):
     .. math:: E = \int_0^{t} \max(0, -T(\tau)\,\omega(\tau))\,d\tau,\qquad \omega = \frac{2\pi v}{P_h A}
 
     with T linear over the phase (:func:`phase_torques`) and the table speed v from the phase's start speed and
-    acceleration; Simpson's rule on :data:`REGEN_STEPS` sub-intervals (T omega is a cubic: exact unless the
-    power changes sign inside the phase).  The vendors' regeneration sizing integrates the same torque x speed
+    acceleration.  A phase of constant acceleration (trapezoidal profiles, cruises) has a constant torque and a
+    speed of one sign, so E = max(0, -T \int omega dt) exactly; a jerk-limited piece (torque varying) takes
+    Simpson's rule on :data:`REGEN_STEPS` sub-intervals (T omega is a cubic: exact unless the power changes
+    sign inside the piece).  The vendors' regeneration sizing integrates the same torque x speed
     (Yaskawa Sigma-7 manual 12.8.6: E_S - E_L = J n^2 / 182 - (pi / 60) n T_L t_D for a stop; Mitsubishi MR-JE
     11.2.2: the sum of the negative energies; Omron 1S 4-4-1) and then subtracts the motor's winding loss
     (Omron: the actual energy is about 90 % of it) and what the drive's capacitors absorb: this is the
@@ -143,6 +145,10 @@ def regenerative_energy(phases, torques, lead, ratio=1.0):
     for ph, (t0, t1) in zip(phases, torques):
         if ph.duration <= 0.0 or ph.direction == 0.0:
             out.append(0.0 * t0)
+            continue
+        if ph.a0 == ph.a1:  # constant torque: the motor angle turned in the phase times it
+            angle = k * (ph.v0 * ph.duration + 0.5 * ph.a0 * ph.duration**2)
+            out.append(mx.fmax(-t0 * angle, 0.0))
             continue
         h = ph.duration / REGEN_STEPS
         acc = 0.0 * t0

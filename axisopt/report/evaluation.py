@@ -254,7 +254,9 @@ def _default_shown(axis, key: str) -> str:
     value = getattr(axis, attr, None)
     if not isinstance(value, (int, float)) or not math.isfinite(value):
         return key
-    return f"{key} {value / factor:,.4g}{' ' + unit if unit else ''}"
+    v = value / factor
+    num = f"{v:,.0f}" if abs(v) >= 1000 else f"{v:.4g}"
+    return f"{key} {num}{' ' + unit if unit else ''}"
 
 
 def estimates(ev: Evaluation) -> list:
