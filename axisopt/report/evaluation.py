@@ -303,7 +303,7 @@ def drive_lines(ev: Evaluation) -> list:
              f"  {cycle}: {v['duty_time']:.2f} s;  friction {v['friction_torque']:.3f} N.m"
              + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else "")]
     zone = "" if abs(v["needed_motor_peak_torque"] - v["peak_torque"]) <= 1e-9 * v["peak_torque"] else \
-        f" ({v['needed_motor_peak_torque']:.3f} referred to the zone)"
+        f" ({v['needed_motor_peak_torque']:.3f} scaled to the flat peak: the zone falls at speed)"
     rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m{zone}",
              f"{m['peak_torque']:.3g} N.m (motor peak, zone by speed)"),
             ("RMS torque, mean thrust", f"{v['rms_torque']:.3f}, {v['mean_thrust_torque']:.3f} N.m",
