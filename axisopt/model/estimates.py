@@ -60,9 +60,12 @@ class Estimate:
 def estimate_text(e: dict) -> str:
     """One estimate (:meth:`Estimate.to_dict`) as text: 'guide HG15 normal_rigidity 177 N/um (how)', or for an
     axis value left out 'axis.bearing_housing_stiffness rigid (how)'."""
-    if e["slot"] == "axis":
-        return f"axis.{e['column']} rigid ({e['how']})"
     shown = e["shown"]
+    if e["slot"] == "axis":
+        if shown is None:  # a part left out: rigid
+            return f"axis.{e['column']} rigid ({e['how']})"
+        num = f"{shown:,.0f}" if abs(shown) >= 1000 else f"{shown:.4g}"
+        return f"axis.{e['column']} {num} {e['unit']} ({e['how']})"
     num = "-" if shown is None else f"{shown:.4g}"
     return f"{e['slot']} {e['part']} {e['column']} {num} {e['unit']} ({e['how']})"
 
@@ -73,6 +76,15 @@ def estimate_text(e: dict) -> str:
 ASSUMED_RIGID = (("bearing_housing_stiffness", "housing_compliance"), ("nut_bracket_stiffness", "bracket_compliance"))
 RIGID_HOW = "not given; THK's mounting rigidity K_H"
 RIGID_PROBE = 1e-9  # [m/N]: the compliance :func:`resting_on` tries for a rigid part (1000 N/um)
+# Axis values a design may leave to a default that the life, torque and thermal checks read: (YAML key,
+# parameter, display unit, SI per unit, how, whether the axis left it to the default).
+ASSUMED_DEFAULTS = (
+    ("mean_axial_load", "mean_axial_load", "N", 1.0, "default: a third of axial_load",
+     lambda a: a.mean_axial_load is None),
+    ("mean_speed", "mean_speed", "m/min", 1 / 60, "default: half of max_speed", lambda a: a.mean_speed is None),
+    ("temperature_rise", "temperature_rise", "K", 1.0, "default without a duty cycle; THK plans for 2-5 degC",
+     lambda a: a.temperature_rise is None and not a.duty_cycle),
+)
 
 
 def _param_of(table: str, column: str) -> str | None:
@@ -107,6 +119,10 @@ def design_estimates(design) -> list:
     for key, param in ASSUMED_RIGID:
         if getattr(design.axis, key) is None:
             out.append(Estimate("axis", "", key, param, 0.0, RIGID_HOW, "N/um", math.inf, probe=RIGID_PROBE))
+    for key, param, unit, factor, how, defaulted in ASSUMED_DEFAULTS:
+        if defaulted(design.axis) and param in p:
+            v = float(np.ravel(p[param])[0])
+            out.append(Estimate("axis", "", key, param, v, how, unit, v / factor))
     return out
 
 

@@ -75,6 +75,9 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
             res.status = first.status
             res.message = "; ".join(m for m in (f"stage 1 ({primary}): {first.message or first.status}",
                                                 res.message) if m)
+        if res.best is not None and res.best.design is not None:  # both stages' objectives
+            terms = [k for st in (primary, secondary) for k, _ in objective_spec(st).terms]
+            res.certificate.estimated = estimated_at_optimum(problem, res, terms)
         res.time = time.perf_counter() - t0
         return res
     spec = objective_spec(ob.mode, problem)

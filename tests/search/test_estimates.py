@@ -108,3 +108,23 @@ def test_rigid_housing_and_bracket_are_named_unless_given(tmp_path):
     res = solve(load_problem(path), top=1, sensitivities=False)
     axis_named = [e for r in res.certificate.estimated for e in r["estimates"] if e["slot"] == "axis"]
     assert axis_named == []
+
+
+def test_a_binding_check_names_the_defaults_it_reads(tmp_path):
+    # the high-speed optimum (lexicographic) has its nut life at the required 20 000 h; the life reads the mean
+    # axial load and speed, which the problem leaves to their defaults (a third of axial_load, half of max_speed):
+    # the certificate names them; given in the file, they are the user's values and are not named
+    from pathlib import Path
+
+    src = Path(SHIPPED_DIR).parent / "problems" / "highspeed_problem.yaml"
+    res = solve(load_problem(src), top=1, sensitivities=False)
+    rest = {r["what"]: r for r in res.certificate.estimated}
+    named = {e["column"]: e for e in rest["check nut_life"]["estimates"]}
+    assert set(named) == {"mean_axial_load", "mean_speed"}
+    assert named["mean_axial_load"]["shown"] == pytest.approx(500.0) and "third" in named["mean_axial_load"]["how"]
+    f = tmp_path / "p.yaml"
+    f.write_text(src.read_text(encoding="utf-8").replace("axis:\n", "axis:\n  mean_axial_load: 500 N\n", 1),
+                 encoding="utf-8")
+    res = solve(load_problem(f), top=1, sensitivities=False)
+    rest = {r["what"]: r for r in res.certificate.estimated}
+    assert {e["column"] for e in rest["check nut_life"]["estimates"]} == {"mean_speed"}
