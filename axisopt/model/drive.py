@@ -101,7 +101,7 @@ def drive(p, moving_mass, drag) -> dict:
     }))
     # energy the motor returns to the drive over one cycle (braking, lowering a vertical axis) and its mean power:
     # what the drive's regenerative resistor must take (Yaskawa 12.8.6), before winding and drive losses
-    regen = sum(pd.regenerative_energy(phases, torques, p["lead"], a), 0.0 * friction) if phases else 0.0 * friction
+    regen = sum(pd.regenerative_energy(phases, torques, p["lead"], a), 0.0 * friction)
     cycle = sum(durations)
     out.update({
         "regen_energy": regen, "regen_power": regen / cycle if cycle > 0 else 0.0 * regen,

@@ -64,10 +64,16 @@ def estimate_text(e: dict) -> str:
     if e["slot"] == "axis":
         if shown is None:  # a part left out: rigid
             return f"axis.{e['column']} rigid ({e['how']})"
-        num = f"{shown:,.0f}" if abs(shown) >= 1000 else f"{shown:.4g}"
-        return f"axis.{e['column']} {num} {e['unit']} ({e['how']})"
+        return f"axis.{e['column']} {axis_value_text(shown, e['unit'])} ({e['how']})"
     num = "-" if shown is None else f"{shown:.4g}"
     return f"{e['slot']} {e['part']} {e['column']} {num} {e['unit']} ({e['how']})"
+
+
+def axis_value_text(value: float, unit: str = "") -> str:
+    """An axis value as the outputs name it: '1,333 N', '666.7 N', '1.2' (separators from 1000 up, else four
+    significant digits)."""
+    num = f"{value:,.0f}" if abs(value) >= 1000 else f"{value:.4g}"
+    return f"{num} {unit}" if unit else num
 
 
 # Axis values a design may leave out that the model then takes as rigid: (YAML key, compliance parameter).
@@ -120,7 +126,7 @@ def design_estimates(design) -> list:
         if getattr(design.axis, key) is None:
             out.append(Estimate("axis", "", key, param, 0.0, RIGID_HOW, "N/um", math.inf, probe=RIGID_PROBE))
     for key, param, unit, factor, how, defaulted in ASSUMED_DEFAULTS:
-        if defaulted(design.axis) and param in p:
+        if defaulted(design.axis):
             v = float(np.ravel(p[param])[0])
             out.append(Estimate("axis", "", key, param, v, how, unit, v / factor))
     return out

@@ -254,9 +254,9 @@ def _default_shown(axis, key: str) -> str:
     value = getattr(axis, attr, None)
     if not isinstance(value, (int, float)) or not math.isfinite(value):
         return key
-    v = value / factor
-    num = f"{v:,.0f}" if abs(v) >= 1000 else f"{v:.4g}"
-    return f"{key} {num}{' ' + unit if unit else ''}"
+    from ..model.estimates import axis_value_text
+
+    return f"{key} {axis_value_text(value / factor, unit)}"
 
 
 def estimates(ev: Evaluation) -> list:
