@@ -3,8 +3,9 @@
     python tools/parity.py REF [--against WORKTREE_OR_HEAD] [--keep DIR]
 
 Checks REF out in a temporary git worktree, runs ``axisopt solve --json`` for every ``problems/*problem*.yaml``
-and ``axisopt evaluate --json`` for every ``problems/*design*.yaml`` (and the paper designs) with each tree on
-``PYTHONPATH``, drops the timing fields (``time_s``, ``*_time``), and prints the keys that differ.  Exit 0 when
+``axisopt evaluate --json`` for every ``problems/*design*.yaml`` (and the paper designs) and ``axisopt diagnose
+--json`` for every shipped data set (``problems/data``: the static table, the XJTU friction series, the time
+records as estimation and validation pairs) with each tree on ``PYTHONPATH``, drops the timing fields (``time_s``, ``*_time``), and prints the keys that differ.  Exit 0 when
 every output is identical, 1 otherwise.  ``--allow KEY`` ignores a top-level path prefix (e.g. a report section
 that the change is meant to add).
 """
@@ -19,12 +20,24 @@ import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-TIMING = ("time_s", "screening_time", "screening_rate")
+TIMING = ("time_s", "screening_time", "screening_rate", "seconds")
+
+
+# The shipped measured data sets, each with the design it was taken on (docs/diagnose.md runs the same).
+DIAGNOSE = (
+    (("data/table_x_stiffness.csv",), "data/table_x.yaml"),
+    (("data/xjtu/xjtu_up_friction.csv",), "data/xjtu/xjtu_rig.yaml"),
+    (("data/xjtu/xjtu_down_friction.csv",), "data/xjtu/xjtu_rig.yaml"),
+    (("data/table_x_run_est.csv", "data/table_x_run_val.csv"), "data/table_x.yaml"),
+    (("data/table_x_ripple_est.csv", "data/table_x_ripple_val.csv"), "data/table_x.yaml"),
+    (("data/table_x_backlash_est.csv", "data/table_x_backlash_val.csv"), "data/table_x.yaml"),
+)
 
 
 def _files(tree: Path):
     probs = sorted(p.name for p in (tree / "problems").glob("*.yaml"))
-    return [("solve", f) for f in probs if "problem" in f] + [("evaluate", f) for f in probs if "problem" not in f]
+    return ([("solve", f) for f in probs if "problem" in f] + [("evaluate", f) for f in probs if "problem" not in f]
+            + [("diagnose", data) for data in DIAGNOSE])
 
 
 def _strip(obj):
@@ -35,10 +48,19 @@ def _strip(obj):
     return obj
 
 
-def _run(tree: Path, cmd: str, name: str, out: Path) -> object:
+def _label(name) -> str:
+    return name if isinstance(name, str) else "+".join(Path(f).stem for f in name[0])
+
+
+def _run(tree: Path, cmd: str, name, out: Path) -> object:
     env = dict(os.environ, PYTHONPATH=str(tree), AXISOPT_COLOR="0")
-    target = out / f"{cmd}-{name}.json"
-    proc = subprocess.run([sys.executable, "-m", "axisopt", cmd, f"problems/{name}", "--json", str(target)],
+    target = out / f"{cmd}-{_label(name)}.json"
+    if cmd == "diagnose":
+        files, design = name
+        args = [f"problems/{f}" for f in files] + ["--design", f"problems/{design}"]
+    else:
+        args = [f"problems/{name}"]
+    proc = subprocess.run([sys.executable, "-m", "axisopt", cmd, *args, "--json", str(target)],
                           cwd=tree, env=env, capture_output=True, text=True)
     if not target.exists():
         return {"exit": proc.returncode, "stderr": proc.stderr.strip()[-300:]}
@@ -78,12 +100,12 @@ def main(argv=None) -> int:
             (tmp / "b").mkdir()
             bad = 0
             for cmd, name in _files(ROOT):
-                if args.only and name not in args.only:
+                if args.only and _label(name) not in args.only:
                     continue
                 a = _run(ref_tree, cmd, name, tmp / "a")
                 b = _run(ROOT, cmd, name, tmp / "b")
                 diffs = [d for d in _diff(a, b) if not any(d[0].startswith(p) for p in args.allow)]
-                print(f"{cmd:8s} {name:34s} {'same' if not diffs else f'{len(diffs)} differences'}")
+                print(f"{cmd:8s} {_label(name):34s} {'same' if not diffs else f'{len(diffs)} differences'}")
                 for path, x, y in diffs[:8]:
                     print(f"    {path}: {str(x)[:70]} -> {str(y)[:70]}")
                 bad += bool(diffs)

@@ -1,0 +1,72 @@
+"""How a default solve walks the search package: the search functions in the order they are first entered.
+
+    python tools/stretches.py [PROBLEM] [--list]
+
+Profiles ``axisopt.solve(PROBLEM)`` (default ``problems/teaching_problem.yaml``) with ``sys.setprofile``, keeps the
+functions of ``axisopt.search`` in the order of their first call, and counts the stretches: runs of consecutive
+first entries in one module.  A pipeline whose stages are modules reads as few stretches (entry -> parts ->
+bounds -> screen -> preload -> polish -> certificate); helpers scattered across modules read as many.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def first_entries(problem: str) -> list[tuple[str, str]]:
+    import axisopt
+
+    seen: dict[tuple[str, str], None] = {}
+
+    def prof(frame, event, arg):
+        if event != "call":
+            return
+        mod = frame.f_globals.get("__name__", "")
+        if mod.startswith("axisopt.search"):
+            key = (mod, frame.f_code.co_qualname if hasattr(frame.f_code, "co_qualname") else frame.f_code.co_name)
+            if "<" not in key[1] and key not in seen:  # comprehensions, lambdas and nested functions belong to their caller
+                seen[key] = None
+
+    prob = axisopt.load_problem(problem)
+    sys.setprofile(prof)
+    try:
+        axisopt.solve(prob)
+    finally:
+        sys.setprofile(None)
+    return list(seen)
+
+
+def stretches(entries) -> list[tuple[str, int]]:
+    out: list[tuple[str, int]] = []
+    for mod, _ in entries:
+        if out and out[-1][0] == mod:
+            out[-1] = (mod, out[-1][1] + 1)
+        else:
+            out.append((mod, 1))
+    return out
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("problem", nargs="?", default=str(ROOT / "problems" / "teaching_problem.yaml"))
+    ap.add_argument("--list", action="store_true", help="print every function in the order of first entry")
+    args = ap.parse_args(argv)
+    entries = first_entries(args.problem)
+    runs = stretches(entries)
+    if args.list:
+        for mod, fn in entries:
+            print(f"{mod}.{fn}")
+    print(" -> ".join(f"{m.removeprefix('axisopt.search.')}({n})" for m, n in runs))
+    mods = {}
+    for m, _ in runs:
+        mods[m] = mods.get(m, 0) + 1
+    print(f"{len(entries)} search functions in {len(runs)} stretches; stretches per module: "
+          + ", ".join(f"{m.removeprefix('axisopt.search.')} {n}" for m, n in sorted(mods.items(), key=lambda t: -t[1])))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
