@@ -132,6 +132,10 @@ COLUMNS = MappingProxyType({
         _c("tangential_rigidity", "stiffness", "guide_tangential_stiffness", positive=True, **_RIGIDITY),
         _c("dynamic_load_rating", "force", "guide_dynamic_load", positive=True, **_DERIVED),
         _c("static_load_rating", "force", "guide_static_load", positive=True),
+        # the travel the dynamic rating is defined for: 50 km (THK, HIWIN, IKO, NBS ball blocks; IKO roller
+        # blocks too) or 100 km (THK, HIWIN roller blocks, ISO 14728-1); catalogs/SOURCES.md per vendor
+        _c("rating_distance", "distance", positive=True, optional=True,
+           estimate="50 km, the shorter of the two rating bases (never kinder than the vendor's)"),
         _c("friction_force", "force", "guide_friction_force"),
         _c("friction_coefficient", "dimensionless", "guide_friction_coefficient"),
         _c("friction_viscous", "damping", "guide_friction_viscous"),

@@ -73,6 +73,7 @@ def _candidates(kind: str) -> list:
     torque = _compound(_FORCE, _TIMES, ("m", "mm", "cm", "in", "ft"))
     c = {
         "length": list(_LEN),
+        "distance": list(_LEN),
         "mass": list(_MASS),
         "time": list(_TIME),
         "force": list(_FORCE),

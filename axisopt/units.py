@@ -33,6 +33,7 @@ def _registry():
 # Expected dimension of each quantity kind, as a pint dimensionality string, and its SI unit.
 KINDS: dict[str, tuple[str, str]] = {
     "length": ("[length]", "m"),
+    "distance": ("[length]", "m"),  # a travel (a guide's rating basis, a life in km): lengths beyond an axis
     "mass": ("[mass]", "kg"),
     "time": ("[time]", "s"),
     "force": ("[force]", "N"),
@@ -86,7 +87,7 @@ DISPLAY_UNITS = {
     "acceleration": "m/s^2", "jerk": "m/s^3", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
     "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
     "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad",
-    "temperature_difference": "K", "power": "W", "heat_transfer": "W/(m^2.K)",
+    "temperature_difference": "K", "power": "W", "heat_transfer": "W/(m^2.K)", "distance": "km",
 }
 
 
@@ -165,6 +166,7 @@ KNOWN: dict[tuple[str, str], float] = {
     ('kg*m**2', 'inertia'): 1.0,
     ('kg*mm**2', 'inertia'): 1e-06,
     ('kg/m', 'mass_per_length'): 1.0,
+    ('km', 'distance'): 1000.0,
     ('m', 'length'): 1.0,
     ('m**2/s', 'kinematic_viscosity'): 1.0,
     ('m*rad/s', 'dn'): 1.0,
@@ -225,7 +227,7 @@ _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$"
 # The largest magnitude (SI) any input of a kind may have: far beyond every machine-tool axis, well inside
 # float range, so that no product or power of inputs in the model overflows to inf or NaN.
 PLAUSIBLE_MAX = {
-    "length": 1e3, "mass": 1e7, "time": 1e10, "force": 1e9, "stiffness": 1e14, "torque": 1e7, "speed": 1e3,
+    "length": 1e3, "distance": 1e12, "mass": 1e7, "time": 1e10, "force": 1e9, "stiffness": 1e14, "torque": 1e7, "speed": 1e3,
     "acceleration": 1e5, "jerk": 1e8, "angular_speed": 1e6, "angle": 1e3, "dimensionless": 1e9,
     "mass_per_length": 1e6, "damping": 1e12, "pressure": 1e13, "temperature": 1e4,
     "temperature_difference": 1e4, "torsional_stiffness": 1e12, "kinematic_viscosity": 1e2, "inertia": 1e5,
@@ -301,6 +303,7 @@ _EXAMPLES = {
     "mass_per_length": "kg/m", "damping": "N.s/m", "temperature": "degC", "money": "EUR",
     "inertia": "kg.m^2", "frequency": "Hz", "dn": "mm.rpm", "money_per_length": "EUR/m",
     "temperature_difference": "K", "torsional_stiffness": "N.m/rad", "heat_transfer": "W/(m^2.K)",
+    "distance": "km",
 }
 
 

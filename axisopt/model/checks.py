@@ -59,7 +59,8 @@ def checks(p, mounting, preload, loads) -> dict:
     # guide blocks: the load per block with the block preload acting like a preloaded pair of ball rows
     # (the most loaded block's cubic mean load over the duty cycle, model.carriage)
     guide_load = pn.preloaded_pair_load(p["guide_preload"], loads["guide_mean_load"])
-    guide_life = pc.guide_life_distance(p["guide_dynamic_load"], guide_load, p["load_factor"], p["guide_roller"])
+    guide_life = pc.guide_life_distance(p["guide_dynamic_load"], guide_load, p["load_factor"], p["guide_roller"],
+                                        p["guide_rating_distance"])
     dn = pc.dn_value(p["nominal_diameter"], omega)
     lift = pn.lift_off_force(mx.fmax(preload, 1e-9))
     brg_max = f_max + loads["bearing_static_load"]

@@ -11,6 +11,10 @@ from ..design import TEMPERATURE_RISE
 from ..physics.bearings import support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
 
+# A guide row without a rating basis: 50 km, the shorter of the vendors' two bases (a C defined for 100 km and
+# read as a 50 km rating halves the life, never doubles it)
+GUIDE_RATING_DISTANCE = 50e3  # [m]
+
 PARAM_NAMES = (
     # axis
     "stroke", "start_offset", "span", "table_mass", "acceleration", "max_speed", "mean_speed",
@@ -32,7 +36,7 @@ PARAM_NAMES = (
     "guide_normal_stiffness", "guide_tangential_stiffness", "guide_friction_force",
     "guide_friction_coefficient", "guide_friction_viscous", "guide_damping", "guide_block_mass",
     "guide_rail_mass_per_length", "guide_block_price", "guide_rail_price_per_length", "guide_dynamic_load",
-    "guide_preload", "guide_roller",
+    "guide_preload", "guide_roller", "guide_rating_distance",
     # drive: motor, coupling, reduction (rotor_inertia at the motor; motor_inertia above is the motor side
     # reflected to the screw for the drive-train modes)
     "rotor_inertia", "has_motor", "motor_rated_torque", "motor_peak_torque", "motor_max_speed",
@@ -56,7 +60,8 @@ PARAM_NAMES = (
 PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.param) for t, cols in COLUMNS.items()})
 # numeric columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice)
 _RULE_COLUMNS = MappingProxyType({
-    "screws": (), "nuts": (), "bearings": ("bore", "outer_diameter", "starting_torque"), "guides": (),
+    "screws": (), "nuts": (), "bearings": ("bore", "outer_diameter", "starting_torque"),
+    "guides": ("rating_distance",),
     "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
                "peak_corner_speed", "peak_torque_at_max_speed"),
     "couplings": ("torsional_stiffness", "inertia"),
@@ -65,6 +70,7 @@ _RULE_COLUMNS = MappingProxyType({
 
 # rule columns and the parameter each one ends in (for naming the estimates a result rests on, model.estimates)
 RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque",
+                                ("guides", "rating_distance"): "guide_rating_distance",
                                 ("motors", "peak_corner_speed"): "motor_peak_corner_speed",
                                 ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed"})
 
@@ -118,6 +124,8 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "bearing_torque": _listed_or(torque, support_starting_torque_envelope(p["bearing_preload"], dm)),
         "bearing_torque_listed": np.isfinite(torque) * 1.0,
         "guide_roller": _is_type(guide, "roller"),
+        # the guide's rating basis where its vendor states it, else 50 km (the shorter basis: conservative)
+        "guide_rating_distance": _listed_or(col(guide, "rating_distance"), GUIDE_RATING_DISTANCE),
     })
     p.update(carriage_params(axis))
     p.update(drive_params(axis, motor, coupling))

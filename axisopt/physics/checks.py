@@ -77,20 +77,25 @@ def life_time(dynamic_load_rating, load, speed, load_factor=1.0):
     return life_revolutions(dynamic_load_rating, load, load_factor) * 2.0 * mx.pi / speed
 
 
-def guide_life_distance(dynamic_load_rating, load, load_factor=1.0, roller=0.0):
+def guide_life_distance(dynamic_load_rating, load, load_factor=1.0, roller=0.0, rating_distance=None):
     r"""Nominal (L10) travel life of a linear guide block.
 
-    .. math:: L = (C / (f_w P))^{3} \cdot 50\,\mathrm{km}            (ball blocks, C on the 50 km basis)
-    .. math:: L = (C / (f_w P))^{10/3} \cdot 100\,\mathrm{km}       (roller blocks, C on the 100 km basis)
+    .. math:: L = (C / (f_w P))^{3} \cdot L_C            (ball blocks)
+    .. math:: L = (C / (f_w P))^{10/3} \cdot L_C         (roller blocks)
 
-    dynamic_load_rating : C per block [N] on the basis the catalog uses for the block type
+    dynamic_load_rating : C per block [N], on the rating basis L_C its vendor defines it for
     load : P, equivalent load per block [N];  load_factor : f_w [-]
-    roller : 0 for ball blocks, 1 for roller blocks (a number, so it may be symbolic or an array).
-    Returns L [m].  Source: THK LM Guide selection ("calculating the nominal life": L = (C/P_C)^3 x 50 km
-    for balls, (C/P_C)^(10/3) x 100 km for rollers); HIWIN linear guideway catalog G99TE20 (f_w divides C).
+    roller : 0 for ball blocks, 1 for roller blocks (a number, so it may be symbolic or an array)
+    rating_distance : L_C, the travel C is defined for [m]: 50 km for ball blocks of every vendor in the
+        catalogs; for roller blocks 100 km at THK and HIWIN, 50 km at IKO.  None: THK's convention
+        (50 km ball, 100 km roller).
+    Returns L [m].  Sources: THK LM Guide selection ("calculating the nominal life": L = (C/P_C)^3 x 50 km
+    for balls, (C/P_C)^(10/3) x 100 km for rollers); HIWIN G99TE20 sec. 2-1 (C for 50 km of operation for a
+    ball type guideway, 100 km for a roller type; f_w divides C); IKO CAT-1578E p. I-20, life calculation
+    example L = 50 (C/P)^(10/3) km for the roller type MXG45.
     """
     exponent = 3.0 + roller / 3.0
-    basis = 50e3 * (1.0 + roller)
+    basis = 50e3 * (1.0 + roller) if rating_distance is None else rating_distance
     return (dynamic_load_rating / (load_factor * load)) ** exponent * basis
 
 

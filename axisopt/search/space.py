@@ -31,7 +31,7 @@ from .. import model
 from ..catalog import USER_STATUS
 from ..errors import InputError
 from ..model.limits import CHECK_RECORDS, CONVEX, LIMITS
-from ..model.params import columns_read
+from ..model.params import GUIDE_RATING_DISTANCE, columns_read
 from ..parttable import PartTable
 from ..physics import nut as pnut
 from ..problem import Problem
@@ -66,7 +66,9 @@ GUIDE_BEST = {"normal_rigidity": np.nanmax, "tangential_rigidity": np.nanmax, "f
               "dynamic_load_rating": np.nanmax, "preload": np.nanmin,
               # carriage (issue 25): a higher static or moment rating never loads a block more
               "static_load_rating": np.nanmax, "moment_roll": np.nanmax, "moment_pitch": np.nanmax,
-              "moment_yaw": np.nanmax}
+              "moment_yaw": np.nanmax,
+              # the longest rating basis, an empty cell read as the model reads it (model.params)
+              "rating_distance": lambda v: np.max(np.nan_to_num(v, nan=GUIDE_RATING_DISTANCE))}
 
 
 @dataclass(frozen=True)
