@@ -10,9 +10,10 @@ from pathlib import Path
 import numpy as np
 
 from ..fileio import tidy_layout
-from ..identify.diagnose import param_rows, plausibility, residual_table
+from ..identify.diagnose import param_rows, plausibility
 from ..identify.diagnose import split_by_observation as _split
 from ..identify.measure import Y_UNIT
+from ..identify.tableresidual import display_value, residual_table, table_signature
 from . import save_figure, write_text_atomic
 from .evaluation import fit_lines
 
@@ -128,8 +129,6 @@ def diagnosis_dict(diag) -> dict:
 
 def unexplained_dicts(diag) -> list:
     """Per dataset: is structure left in the final residual, and its signatures in words."""
-    from ..identify.diagnose import display_value, table_signature
-
     out = []
     for u in diag.unexplained:
         sigs = []

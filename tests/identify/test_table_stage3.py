@@ -14,7 +14,7 @@ import pytest
 from axisopt.cli import main
 from axisopt.design import load_design
 from axisopt.identify import diagnose, plant_from_design, read_dataset
-from axisopt.identify.fit import _covariance
+from axisopt.identify.fit import covariance
 from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 
 DATA = Path(__file__).resolve().parents[2] / "problems" / "data"
@@ -138,7 +138,7 @@ def test_each_file_gets_its_own_gain(tmp_path, plant, capsys):
 
 def test_a_dependent_column_is_not_identifiable_not_zero_uncertainty():
     J = np.array([[1.0, 0.0, 2.0], [2.0, 0.0, 1.0], [3.0, 0.0, 0.5], [1.0, 0.0, 1.0]])
-    cov = _covariance(J, rss=1.0, n=4, scale=np.ones(3))
+    cov = covariance(J, rss=1.0, n=4, scale=np.ones(3))
     sd = np.sqrt(np.diag(cov))
     assert np.isfinite(sd[0]) and np.isfinite(sd[2]) and sd[0] > 0
     assert np.isinf(sd[1])
