@@ -68,7 +68,8 @@ def cmd_diagnose(args) -> int:
 def _cmd_diagnose_time(args) -> int:
     from ..design import load_design
     from ..identify import plant_from_design
-    from ..identify.idim import diagnose_time_files, time_diagnosis_dict, time_diagnosis_text
+    from ..identify.idim import diagnose_time_files
+    from ..report.timediag import time_diagnosis_dict, time_diagnosis_text
 
     for opt, val in (("--report", args.report), ("--save-calibration", args.save_calibration)):
         if val:

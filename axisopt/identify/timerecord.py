@@ -306,7 +306,7 @@ def lowpass(x, fs: float, fc: float, order: int = BUTTER_ORDER) -> np.ndarray:
     return y[:, 0] if one else y
 
 
-def _welch(x, fs, nseg=1024):
+def welch(x, fs, nseg=1024):
     nseg = min(nseg, len(x))
     step = nseg // 2
     win = np.hanning(nseg)
@@ -329,7 +329,7 @@ def choose_cutoff(q, fs: float) -> CutoffChoice:
     the upper half of the band -- and the cut-off is the highest frequency where the signal is still 10x
     that floor, but at least 5x the motion bandwidth (99 % of the signal power) and at most fs/8."""
     v = np.diff(q) * fs
-    f, ps = _welch(v, fs)
+    f, ps = welch(v, fs)
     shape = np.sin(np.pi * f / fs) ** 2 + 1e-30
     upper = f > fs / 4
     n0 = float(np.median(ps[upper] / shape[upper]))
