@@ -14,8 +14,9 @@ import pytest
 from axisopt.cli import main
 from axisopt.design import load_design
 from axisopt.identify import plant_from_design
-from axisopt.identify.idim import diagnose_time_files, time_diagnosis_text
+from axisopt.identify.idim import diagnose_time_files
 from axisopt.identify.timesynth import AxisTruth, LoopSettings, simulate_axis
+from axisopt.report.timediag import time_diagnosis_text
 
 DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
 COLS = ("time", "position", "force", "reference", "motor_position")

@@ -13,7 +13,7 @@ from axisopt.design import load_design
 from axisopt.errors import InputError
 from axisopt.identify import Effect, diagnose, library, plant_from_design, read_dataset, register_effect
 from axisopt.identify.calibration import apply_calibration
-from axisopt.identify.effects import _LIBRARY
+from axisopt.identify.effects import unregister_effect
 from axisopt.identify.synth import simulate
 from axisopt.model import evaluate
 
@@ -208,7 +208,7 @@ def test_user_effect_plugin_competes(tmp_path):
         assert diag.verdict == "sensor_gain"
         assert diag.final.value("gain_error") == pytest.approx(0.2, rel=0.1)
     finally:
-        _LIBRARY.pop("sensor_gain", None)
+        unregister_effect("sensor_gain")
 
 
 def test_two_test_types_share_parameters():

@@ -5,7 +5,7 @@ revolution units.
 
 The records come from :mod:`axisopt.identify.timesynth`, the closed-loop simulator written apart from the
 identification (its ripple is ``sin(2 pi x / period + phase)`` on the simulated table, its drag ``c v|v|``);
-nothing here builds data with the effect columns of :mod:`axisopt.identify.idim`."""
+nothing here builds data with the effect columns of the time-record effects (:mod:`axisopt.identify.effects`)."""
 
 import json
 import math
@@ -17,15 +17,11 @@ import pytest
 from axisopt.cli import main
 from axisopt.design import load_design
 from axisopt.identify import plant_from_design
-from axisopt.identify.idim import (
-    Estimate,
-    analyse_residual,
-    baseline_flags,
-    diagnose_time_files,
-    time_diagnosis_dict,
-    time_diagnosis_text,
-)
+from axisopt.identify.estimators import Estimate
+from axisopt.identify.idim import baseline_flags, diagnose_time_files
+from axisopt.identify.timeresidual import analyse_residual
 from axisopt.identify.timesynth import AxisTruth, simulate_axis
+from axisopt.report.timediag import time_diagnosis_dict, time_diagnosis_text
 
 DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
 LEAD = 0.01
@@ -199,7 +195,7 @@ def test_external_force_column_is_used_in_the_dynamics(tmp_path, plant):
     simulate_axis(truth, duration=12.0, seed=7).write_csv(bare)
     without = diagnose_time_files([bare], plant=plant, candidates=["stribeck"])
     with_col = diagnose_time_files(paths[:1], plant=plant, candidates=["stribeck"])
-    from axisopt.identify.idim import rel_error
+    from axisopt.identify.estimators import rel_error
 
     assert rel_error(without.estimation, without.baseline_ls) > 3 * rel_error(with_col.estimation,
                                                                                  with_col.baseline_ls)
