@@ -217,7 +217,7 @@ def quantity_notes(diag) -> list:
     return out
 
 
-def _peak(freq, mag):
+def frf_peak(freq, mag):
     """Peak frequency of a sampled magnitude, refined by a parabola through the top three points in
     log-frequency.  Repeated readings at one frequency count once, with their largest magnitude."""
     freq, mag = np.asarray(freq, dtype=float), np.asarray(mag, dtype=float)
@@ -257,10 +257,10 @@ def frf_modes(diag) -> list:
             sel = sel[np.argsort(freq[sel])]
             out.append({
                 "file": o.dataset.source, "position_mm": float(p) * 1e3,
-                "measured_peak_Hz": _peak(freq[sel], mag(o.y)[sel]),
+                "measured_peak_Hz": frf_peak(freq[sel], mag(o.y)[sel]),
                 "measured_peak_um_per_N": float(np.max(mag(o.y)[sel])) * 1e6,
-                "baseline_peak_Hz": _peak(freq[sel], mag(yb)[sel]),
-                "model_peak_Hz": _peak(freq[sel], mag(yf)[sel]),
+                "baseline_peak_Hz": frf_peak(freq[sel], mag(yb)[sel]),
+                "model_peak_Hz": frf_peak(freq[sel], mag(yf)[sel]),
                 "damping_ratio": vals.get("damping_ratio"),
                 "extra_mode_Hz": vals.get("mode_frequency"), "extra_mode_damping": vals.get("mode_damping"),
             })
