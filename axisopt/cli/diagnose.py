@@ -2,7 +2,8 @@
 [--save-calibration FILE.yaml] [--effects a,b,...] [--max-effects N] [--gain '0.85 N.m/A']``
 
 A first file with a ``time`` column (and no reduced-table columns) is a time record: the files go to the
-inverse dynamic identification of :mod:`axisopt.identify.idim` (first file estimation, others validation)."""
+inverse dynamic identification of :mod:`axisopt.identify.idim` (first file estimation, others validation); the
+text and JSON of either diagnosis come from :mod:`axisopt.report`."""
 
 from __future__ import annotations
 

@@ -61,3 +61,15 @@ def test_user_effect_plugin_competes(tmp_path):
         assert diag.final.value("gain_error") == pytest.approx(0.2, rel=0.1)
     finally:
         unregister_effect("sensor_gain")
+
+
+def test_one_registry_serves_tables_and_time_records():
+    from axisopt.identify.effects import TIME_ORDER, time_effects
+
+    table, time = library(), time_effects()
+    assert list(time) == list(TIME_ORDER)
+    # the effects both kinds of data can show are declared once
+    assert set(table) & set(time) == {"direction_asymmetry", "stribeck", "extra_mode", "quadratic_drag"}
+    assert "lead_ripple" not in table and "position_friction" not in table
+    assert time["stribeck"].terms == ("Fs",) and time["stribeck"].shape.name == "vs"
+    assert time["lead_ripple"].terms == ("rs", "rc", "ks", "kc")

@@ -1,7 +1,7 @@
-"""Lost motion (backlash) between motor and table in time records (:mod:`axisopt.identify.lostmotion`): hidden in records simulated by
-identify/timesynth (a motor-side mass tied to the table by a spring with a dead zone, closed loop on the
-table's scale; written apart from the identification code), measured from a motor_position column beside the
-table's position, never named on records without lost motion."""
+"""Lost motion (backlash) between motor and table in time records (:mod:`axisopt.identify.lostmotion`): hidden in
+records simulated by identify/timesynth (a motor-side mass tied to the table by a spring with a dead zone, closed
+loop on the table's scale; written apart from the identification code), measured from a motor_position column beside
+the table's position, never named on records without lost motion."""
 
 from __future__ import annotations
 
