@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-from test_recovery import BASELINE, friction_doe
+from test_diagnose_recovery import BASELINE, friction_doe
 
 from axisopt.cli import main
 from axisopt.design import load_design

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-from test_recovery import BASELINE, frequency_doe, friction_doe
+from test_diagnose_recovery import BASELINE, frequency_doe, friction_doe
 
 from axisopt.cli import main
 from axisopt.design import load_design
@@ -225,7 +225,7 @@ def test_frf_resonance_by_position(plant):
     """FRFs at four positions with a hidden extra mode: the table gives, per position, the measured and the
     fitted resonance (they agree after the fit), the axial mode's damping as hidden, and the extra mode.  The
     measured peak moves down the stroke (a longer screw in tension is softer)."""
-    from test_recovery import frf_doe
+    from test_diagnose_recovery import frf_doe
 
     ds = simulate(plant, "frf", frf_doe(), baseline={"damping_ratio": 0.04}, noise=0.01, seed=1,
                   effects={"extra_mode": {"mode_frequency": 300.0, "mode_damping": 0.03, "mode_stiffness": 500e6}})

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_recovery import BASELINE, frequency_doe, friction_doe, stiffness_doe
+from test_diagnose_recovery import BASELINE, frequency_doe, friction_doe, stiffness_doe
 
 from axisopt.design import load_design
 from axisopt.identify import diagnose, plant_from_design, read_dataset
