@@ -145,7 +145,8 @@ def build_problem(ctx, effects, base) -> Problem:
     return Problem(params, blocks)
 
 
-def _split(obs, v):
+def split_by_observation(obs, v) -> list:
+    """``v`` (the stacked rows of every observation) cut into one array per observation."""
     out, i = [], 0
     for o in obs:
         out.append(v[i : i + o.n])
@@ -153,9 +154,7 @@ def _split(obs, v):
     return out
 
 
-def split_by_observation(obs, v) -> list:
-    """``v`` (the stacked rows of every observation) cut into one array per observation."""
-    return _split(obs, v)
+_split = split_by_observation
 
 
 def param_text(p, v, s) -> str:
