@@ -29,7 +29,7 @@ from .formulation import SLOTS, one_hot_params, one_hot_symbols
 MAX_TERMS = 40  # a larger SCIP expression becomes an auxiliary variable
 
 
-_BUILD_LOCK = threading.Lock()
+_BUILD_LOCK = threading.Lock()  # the shift is swapped in a module: one build at a time
 
 
 @contextlib.contextmanager
@@ -84,7 +84,8 @@ _BINARY = {ca.OP_ADD: np.add, ca.OP_SUB: np.subtract, ca.OP_MUL: np.multiply, ca
 
 class Graph:
     """The expression graph of a CasADi SX Function as nodes (op, args), with each node's dependency mask
-    (bits: nut 1, bearing 2, guide 4, preload 8), its use count and its numeric value on a batch of points."""
+    (bit i for input i: nut 1, bearing 2, guide-and-drive 4, preload 8, nut shifts 16), its use count and its
+    numeric value on a batch of points."""
 
     def __init__(self, f: ca.Function):
         self.op, self.args, self.const, self.dep = [], [], [], []
@@ -145,6 +146,10 @@ class Graph:
 
 
 class Translator:
+    """The SCIP expression of each graph node (memoized), on the model ``m`` with the part binaries ``z`` (slot ->
+    variables), the preload variable and the nut-shift variables; ``columns``: slot -> the batch columns where
+    that slot runs over its parts (the numeric values of a folded node)."""
+
     def __init__(self, ps, m, graph: Graph, z: dict, pre, shifts: list, columns: dict):
         self.ps, self.m, self.g, self.z, self.pre, self.shifts = ps, m, graph, z, pre, shifts
         self.columns = columns  # slot -> slice of the batch where that slot runs over its parts
