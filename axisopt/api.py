@@ -62,11 +62,12 @@ def solve(problem: Problem | str | PathLike, method: str = "default", *, top: in
 
 
 def compare(*files, method: str = "default"):
-    """Designs side by side -> :class:`axisopt.study.compare.Comparison`.  Each argument is a design or
+    """Designs side by side -> :class:`axisopt.report.compare.Comparison`.  Each argument is a design or
     problem YAML path (a problem is solved to its best design) or a :class:`Design`."""
-    from .study.compare import compare as _compare
+    from .report.compare import Comparison
+    from .study.compare import compare_designs
 
-    return _compare(files, method=method)
+    return Comparison(compare_designs(files, method=method))
 
 
 def study(spec, out: str | PathLike | None = None, *, workers: int | None = 0, resume: bool = False,
@@ -135,7 +136,7 @@ def plot_profiles(evaluations, path: str | PathLike | None = None, *, labels=Non
 def plot_pareto(front, path: str | PathLike | None = None):
     """Scatter matrix of a Pareto front (a :class:`ParetoFront` or a :class:`SolveResult` that has one)
     -> matplotlib Figure; written to ``path`` only when given."""
-    from .search.pareto import plot_pareto as _plot
+    from .report.solve import plot_pareto as _plot
 
     front = getattr(front, "pareto", None) or front
     return _plot(front, None if path is None else str(path))

@@ -27,7 +27,8 @@ def register(sub) -> None:
 
 
 def cmd_compare(args) -> int:
-    from ..study.compare import compare_dict, compare_table, load_compared, write_compare_csv
+    from ..report.compare import compare_dict, compare_table, write_compare_csv
+    from ..study.compare import load_compared
 
     check_html_report(args.report)
     items = load_compared(args.files)

@@ -40,7 +40,7 @@ def frf_positions(ev: Evaluation) -> list[int]:
     return [0, mid, len(ev.x) - 1]
 
 
-def _chain_at(ev: Evaluation, p: dict, i: int) -> dict:
+def chain_at(ev: Evaluation, p: dict, i: int) -> dict:
     """Springs, masses and dampers of the drive-train model at position index i (SI)."""
     j_m, j_s = drive_inertias(p)
     k_c = float(p["coupling_stiffness"])
@@ -90,7 +90,7 @@ def frf(ev: Evaluation, freqs=None, *, motor_held: bool = False, damping_scale: 
         raise InputError(f"damping scale must be a finite number >= 0, got {damping_scale}")
     p = design_params(ev.design)
     idx = frf_positions(ev)
-    models = [_chain_at(ev, p, i) for i in idx]
+    models = [chain_at(ev, p, i) for i in idx]
     for m in models:
         for k in ("table_damping", "chain_damping", "coupling_damping"):
             m[k] *= damping_scale

@@ -254,6 +254,21 @@ def check_rows(ev: Evaluation) -> list:
     return out
 
 
+def drive_dict(ev: Evaluation) -> dict | None:
+    """The drive values of an evaluation (None without a motor)."""
+    d, v = ev.design, ev.values
+    if d.motor is None:
+        return None
+    return {"motor": str(d.motor["id"]), "coupling": None if d.coupling is None else str(d.coupling["id"]),
+            "reduction_ratio": d.axis.reduction_ratio, "peak_torque_Nm": v["peak_torque"],
+            "rms_torque_Nm": v["rms_torque"], "thrust_torque_Nm": v["thrust_torque"],
+            "mean_thrust_torque_Nm": v["mean_thrust_torque"],
+            "holding_torque_Nm": v["holding_torque"], "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
+            "load_inertia_kgm2": v["load_inertia"], "inertia_ratio": v["inertia_ratio"],
+            "duty_time_s": v["duty_time"], "friction_torque_Nm": v["friction_torque"],
+            "regen_energy_J": v["regen_energy"], "regen_power_W": v["regen_power"]}
+
+
 def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool = True) -> Evaluation:
     """Evaluate a design with the CasADi axis Function (or directly on numpy with use_casadi=False)."""
     x = positions(design.axis, n_positions)

@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .frf import _chain_at, frf_positions
+from .frf import chain_at, frf_positions
 from .function import Evaluation, design_params
 
 __all__ = ["AxisStateSpace", "state_space", "stroke_state_spaces", "STATES", "INPUTS", "OUTPUTS"]
@@ -117,7 +117,7 @@ class AxisStateSpace:
 
 
 def second_order(m: dict):
-    """(M, K, C_d) over [theta_m, theta_s, x] from the drive-train values of :func:`axisopt.model.frf._chain_at`."""
+    """(M, K, C_d) over [theta_m, theta_s, x] from the drive-train values of :func:`axisopt.model.frf.chain_at`."""
     r = m["lead"] / (2.0 * math.pi)
     kc, k = m["coupling_stiffness"], m["axial_stiffness"]
     cc, ca = m["coupling_damping"], m["chain_damping"]
@@ -160,7 +160,7 @@ def state_space(ev: Evaluation, i: int, *, motor_held: bool = False, damping_sca
     damping_scale : multiplies every damper (0: the undamped model whose eigenvalues are the modes).
     """
     p = design_params(ev.design)
-    m = _chain_at(ev, p, i)
+    m = chain_at(ev, p, i)
     for k in ("table_damping", "chain_damping", "coupling_damping"):
         m[k] *= damping_scale
     ratio = float(ev.design.axis.reduction_ratio)

@@ -9,7 +9,7 @@ import textwrap
 import numpy as np
 
 from ..model import CHECKS, Evaluation, passes
-from ..model.function import NOT_APPLICABLE, check_rows  # noqa: F401  (check_rows: one per check, in model)
+from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.limits import CHECK_TABLE
 from ..model.servo import servo_response
 from ..units import N_PER_UM
@@ -116,21 +116,6 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "servo": servo_dict(servo_response(ev), v["kv"]),
         "estimated": [e.to_dict() | {"moves": w} for e, w in estimates(ev) if w],
     }
-
-
-def drive_dict(ev: Evaluation) -> dict | None:
-    """The drive values of an evaluation (None without a motor)."""
-    d, v = ev.design, ev.values
-    if d.motor is None:
-        return None
-    return {"motor": str(d.motor["id"]), "coupling": None if d.coupling is None else str(d.coupling["id"]),
-            "reduction_ratio": d.axis.reduction_ratio, "peak_torque_Nm": v["peak_torque"],
-            "rms_torque_Nm": v["rms_torque"], "thrust_torque_Nm": v["thrust_torque"],
-            "mean_thrust_torque_Nm": v["mean_thrust_torque"],
-            "holding_torque_Nm": v["holding_torque"], "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
-            "load_inertia_kgm2": v["load_inertia"], "inertia_ratio": v["inertia_ratio"],
-            "duty_time_s": v["duty_time"], "friction_torque_Nm": v["friction_torque"],
-            "regen_energy_J": v["regen_energy"], "regen_power_W": v["regen_power"]}
 
 
 def _finite(x):

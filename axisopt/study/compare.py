@@ -1,23 +1,17 @@
-"""Side-by-side comparison of designs (design YAMLs, or problem YAMLs solved to their best design).
+"""Designs to compare side by side (design YAMLs, or problem YAMLs solved to their best design).
 
-``load_compared(paths)`` returns one :class:`Compared` per file; ``compare_table`` is the text table
-``axisopt compare`` prints, ``compare_dict`` / ``compare_rows`` the JSON and CSV forms.  The weakest
-link of each design (the component with the lowest stiffness where the total is lowest) is marked.
+``load_compared(paths)`` returns one :class:`Compared` per file, ``compare_designs`` one per file or
+:class:`~axisopt.design.Design`: each holds the design's evaluation (or, for a problem without a design,
+its solve status).  The table, JSON and CSV forms are made in :mod:`axisopt.report.compare`.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
-from ..display import fmt, html_table, one_line
 from ..errors import InputError
-from ..model import CHECKS, Evaluation, evaluate
-from ..report import N_PER_UM, RPM, drive_dict, evaluation_dict
-from ..report.evaluation import CHECK_SHORT, CHECK_UNITS, check_rows, fmt_value
+from ..model import Evaluation, evaluate
 from ..yamlio import read_yaml
 
 
@@ -34,55 +28,10 @@ class Compared:
         return self.evaluation is not None
 
 
-@dataclass(repr=False)
-class Comparison:
-    """Designs side by side (:func:`compare`): ``items`` one :class:`Compared` each, in argument order."""
-
-    items: list
-
-    def __len__(self) -> int:
-        return len(self.items)
-
-    def __iter__(self):
-        return iter(self.items)
-
-    def __getitem__(self, i):
-        return self.items[i]
-
-    def text(self) -> str:
-        """The table ``axisopt compare`` prints."""
-        return compare_table(self.items)
-
-    def to_dict(self) -> dict:
-        return compare_dict(self.items)
-
-    def to_frame(self):
-        """pandas DataFrame, one row per design (the CSV's columns: units in the names, e.g.
-        ``min_stiffness [N/um]``, each check's margin, available and needed)."""
-        import pandas as pd
-
-        return pd.DataFrame(compare_rows(self.items))
-
-    def __repr__(self) -> str:
-        cells = []
-        for c in self.items:
-            e = c.evaluation
-            if e is None:
-                cells.append(f"{c.label}: {c.solve['status']}")
-                continue
-            cells.append(f"{c.label}: {fmt(e.minimum('k_total')[0] / N_PER_UM, 'N/um')}, "
-                         f"{fmt(e.minimum('f1')[0], 'Hz')}, {fmt(e['cost'], 'EUR')}")
-        return one_line("Comparison", f"{len(self.items)} designs", {"": " | ".join(cells)})
-
-    def _repr_html_(self) -> str:
-        keys = ("label", "kind", "mounting", "min_stiffness [N/um]", "weakest_link", "min_frequency [Hz]",
-                "drag_torque [N.m]", "total_mass [kg]", "cost [EUR]", "all_checks_pass")
-        return html_table(compare_rows(self.items), f"Comparison of {len(self.items)} designs", columns=keys)
-
-
-def compare(files, method: str = "default") -> Comparison:
-    """Compare designs: each of ``files`` a design or problem YAML path (a problem is solved to its best
-    design with ``method``) or a :class:`axisopt.design.Design`."""
+def compare_designs(files, method: str = "default") -> list:
+    """Designs to compare, one :class:`Compared` each in argument order: each of ``files`` a design or problem
+    YAML path (a problem is solved to its best design with ``method``) or a :class:`axisopt.design.Design`
+    (:class:`axisopt.report.compare.Comparison` shows them side by side)."""
     from ..design import Design
 
     items, paths = [], []
@@ -98,7 +47,7 @@ def compare(files, method: str = "default") -> Comparison:
     for i, c in enumerate(items):  # two with one name: number them
         if labels.count(c.label) > 1:
             c.label = f"{c.label} [{i + 1}]"
-    return Comparison(items)
+    return items
 
 
 def file_kind(path) -> str:
@@ -140,181 +89,4 @@ def load_compared(paths, method: str = "default") -> list:
     return out
 
 
-TEXT_WIDTH = 100  # the terminal columns the table fits
-
-
-def _components(ev: Evaluation) -> dict:
-    v = ev.values
-    i = int(np.argmin(v["k_total"]))
-    return {"screw": float(v["k_screw"][i]), "nut": float(v["k_nut"]), "bearings": float(v["k_bearing"])}
-
-
-def compare_table(items) -> str:
-    """The text table: one column per design, the weakest link of each marked with '<'.  Within 100 columns:
-    when the designs do not fit side by side, the table is printed in blocks of as many designs as fit, one
-    under the other."""
-    w0 = 34
-    width = max(22, *(min(30, len(c.label) + 2) for c in items))
-    rows: list = []  # a text line, or (name, cells) of a table row
-
-    def row(name, cells):
-        rows.append((name, list(cells)))
-
-    def num(x, nd=1):
-        return "-" if x is None or (isinstance(x, float) and not math.isfinite(x)) else f"{x:,.{nd}f}"
-
-    row("", [c.label for c in items])
-    row("kind", [c.kind if c.ok else f"{c.kind}: {c.solve['status']}" for c in items])
-    evs = [c.evaluation for c in items]
-
-    def each(fn):
-        return [fn(e) if e is not None else "-" for e in evs]
-
-    row("mounting", each(lambda e: e.design.axis.mounting))
-    row("stroke [mm]", each(lambda e: num(e.design.axis.stroke * 1e3, 0)))
-    drives = [e for e in evs if e is not None and e.design.motor is not None]
-    for slot in ("screw", "nut", "bearing", "guide") + (("motor", "coupling") if drives else ()):
-        row(slot, each(lambda e, s=slot: e.design.part_ids().get(s, "-")))
-    row("nut preload [N]", each(lambda e: num(e.design.preload, 0)))
-    rows.append("")
-    rows.append("stiffness [N/um]  (< weakest link)")
-    comps = [_components(e) if e is not None else None for e in evs]
-    for comp, label in (("screw", "  screw (where total is min)"), ("nut", "  nut"), ("bearings", "  bearings")):
-        cells = []
-        for c in comps:
-            if c is None:
-                cells.append("-")
-                continue
-            mark = " <" if min(c, key=c.get) == comp else "  "
-            cells.append(num(c[comp] / N_PER_UM) + mark)
-        row(label, cells)
-    row("  total minimum", each(lambda e: num(e.minimum("k_total")[0] / N_PER_UM) + "  "))
-    row("  at [mm from stroke start]", each(lambda e: num(e.minimum("k_total")[1] * 1e3, 0) + "  "))
-    row("  weakest link", each(lambda e: e.weakest + "  "))
-    rows.append("")
-    rows.append("frequency [Hz]")
-    row("  1st natural, minimum", each(lambda e: num(e.minimum("f1")[0])))
-    row("  at [mm from stroke start]", each(lambda e: num(e.minimum("f1")[1] * 1e3, 0)))
-    row("  axial-torsional, minimum", each(lambda e: num(e.minimum("f_axial_torsional")[0])))
-    row("  table on guides", each(lambda e: num(e["f_table"])))
-    rows.append("")
-    row("drag torque [N.m]", each(lambda e: num(e["drag_torque"], 3)))
-    row("  nut / bearings / guides", each(lambda e: f"{e['drag_nut']:.2f}/{e['drag_bearings']:.2f}/"
-                                                    f"{e['drag_guides']:.2f}"))
-    row("moving mass [kg]", each(lambda e: num(e["moving_mass"])))
-    row("total mass [kg]", each(lambda e: num(e["total_mass"])))
-    row("cost [EUR]", each(lambda e: num(e["cost"], 0)))
-    if drives:
-        rows.append("")
-        rows.append("drive (needed / available)")
-
-        def motor(fn):
-            return each(lambda e: fn(e, e.design.motor) if e.design.motor is not None else "no motor")
-
-        row("  peak torque [N.m]", motor(lambda e, m: f"{e['peak_torque']:.2f} / {m['peak_torque']:.3g}"))
-        row("  RMS or mean thrust torque [N.m]",
-            motor(lambda e, m: f"{max(e['rms_torque'], e['mean_thrust_torque']):.2f} / {m['rated_torque']:.3g}"))
-        row("  motor speed [rpm]",
-            motor(lambda e, m: f"{e['motor_speed'] * RPM:,.0f} / {m['max_speed'] * RPM:,.0f}"))
-        row("  inertia ratio load/rotor",
-            motor(lambda e, m: f"{e['inertia_ratio']:.2f} / {e.design.axis.max_inertia_ratio:g}"))
-        if any(e.design.axis.orientation == "vertical" for e in drives):
-            row("  holding torque x safety [N.m]", motor(
-                lambda e, m: "-" if e.design.axis.orientation != "vertical" else
-                f"{e['holding_torque'] * e.design.axis.brake_safety:.2f} / "
-                f"{(m['brake_torque'] if math.isfinite(float(m['brake_torque'])) else 0.0):.3g}"))
-    rows.append("")
-    rows.append("checks: margin (available / needed), >= 1 passes, ! fails")
-    tables = [{r["check"]: r for r in check_rows(e)} if e is not None else None for e in evs]
-    for c in CHECKS:
-        if not any(t is not None and c in t for t in tables):
-            continue
-        unit = CHECK_UNITS[c][0]
-
-        def cell(t, c=c):
-            if t is None or c not in t:
-                return "-"
-            r = t[c]
-            m = "n/a" if r["margin"] is None else f"{r['margin']:.2f}"
-            return f"{m} ({fmt_value(r['available'])}/{fmt_value(r['needed'])})" + ("  " if r["pass"] else " !")
-        row(f"  {CHECK_SHORT[c]}" + (f" [{unit}]" if unit else ""), [cell(t) for t in tables])
-    row("all checks pass", each(lambda e: "yes" if min(e.checks().values()) >= 1.0 else "NO"))
-    per = max(1, (TEXT_WIDTH - w0) // width)  # designs side by side
-    blocks = []
-    for j in range(0, len(items), per):
-        lines = [r if isinstance(r, str) else
-                 f"{r[0]:<{w0}}" + "".join(f"{str(c)[:width - 1]:>{width}}" for c in r[1][j:j + per]) for r in rows]
-        blocks.append("\n".join(ln.rstrip() for ln in lines))
-    solved = [c for c in items if c.solve is not None]
-    if solved:
-        tail = ["solved problems"]
-        for c in solved:
-            s = c.solve
-            val = "-" if s["objective_value"] is None else f"{s['objective_value']:,.3f} {s['objective_unit']}"
-            tail.append(f"  {c.label}: {s['status']} ({s['method']}), {s['objective']} = {val}")
-        blocks.append("\n".join(tail))
-    return "\n\n".join(blocks)
-
-
-def compare_dict(items) -> dict:
-    out = []
-    for c in items:
-        d = {"label": c.label, "source": c.source, "kind": c.kind, "solve": c.solve}
-        if c.evaluation is not None:
-            ev = evaluation_dict(c.evaluation)
-            comp = _components(c.evaluation)
-            ev["component_stiffness_at_min_N_per_um"] = {k: v / N_PER_UM for k, v in comp.items()}
-            fa, fapos = c.evaluation.minimum("f_axial_torsional")
-            ev["min_axial_torsional_frequency_Hz"] = fa
-            d["evaluation"] = ev
-        out.append(d)
-    return {"designs": out}
-
-
-def compare_rows(items) -> list:
-    """Flat rows (one per design) for the CSV."""
-    rows = []
-    for c in items:
-        r = {"label": c.label, "source": c.source, "kind": c.kind,
-             "status": c.solve["status"] if c.solve else "design"}
-        e = c.evaluation
-        if e is not None:
-            d = evaluation_dict(e)
-            comp = _components(e)
-            r.update({"mounting": d["mounting"], **d["parts"], "nut_preload [N]": d["nut_preload_N"],
-                      "stroke [mm]": e.design.axis.stroke * 1e3,
-                      "screw_stiffness_at_min [N/um]": comp["screw"] / N_PER_UM,
-                      "nut_stiffness [N/um]": comp["nut"] / N_PER_UM,
-                      "bearing_stiffness [N/um]": comp["bearings"] / N_PER_UM,
-                      "min_stiffness [N/um]": d["min_axial_stiffness_N_per_um"],
-                      "min_stiffness_at [mm]": d["min_axial_stiffness_position_mm"],
-                      "weakest_link": d["weakest_link"],
-                      "min_frequency [Hz]": d["min_natural_frequency_Hz"],
-                      "min_frequency_at [mm]": d["min_natural_frequency_position_mm"],
-                      "table_mode [Hz]": d["table_mode_Hz"],
-                      "drag_torque [N.m]": d["drag_torque_Nm"], "moving_mass [kg]": d["moving_mass_kg"],
-                      "total_mass [kg]": d["total_mass_kg"], "cost [EUR]": d["cost"],
-                      "all_checks_pass": d["all_checks_pass"]})
-            for k, v in (drive_dict(e) or {}).items():
-                if k not in ("motor", "coupling"):
-                    r[f"drive_{k}"] = v
-            for k, v in d["checks"].items():
-                u = f" [{v['unit']}]" if v["unit"] else ""
-                r[f"{k} margin"] = v["margin"]
-                r[f"{k} available{u}"] = v["available"]
-                r[f"{k} needed{u}"] = v["needed"]
-        rows.append(r)
-    return rows
-
-
-def write_compare_csv(items, path) -> None:
-    import pandas as pd
-
-    from ..fileio import csv_safe, open_output
-
-    with open_output(path, "w", what="CSV") as fh:  # text cells escaped against CSV injection
-        csv_safe(pd.DataFrame(compare_rows(items))).to_csv(fh, index=False, float_format="%.10g")
-
-
-__all__ = ["Compared", "Comparison", "compare", "load_compared", "compare_table", "compare_dict", "compare_rows",
-           "write_compare_csv"]
+__all__ = ["Compared", "compare_designs", "file_kind", "load_compared"]

@@ -42,7 +42,7 @@ class CaseStore:
         from ..fileio import make_output_dir
 
         make_output_dir(self.dir)
-        _sweep_temporaries(self.dir)
+        sweep_temporaries(self.dir)
 
     def existing(self) -> set:
         if not self.dir.is_dir():
@@ -82,7 +82,7 @@ class CaseStore:
 _TEMPORARY = re.compile(r"^\..+\.\d+(\.[0-9a-f]{8})?\.tmp$")
 
 
-def _sweep_temporaries(d: Path) -> None:
+def sweep_temporaries(d: Path) -> None:
     """Remove the temporary files of :func:`axisopt.report.atomic_file` left by a run killed mid-write
     (only under the study lock: no other run is writing here)."""
     for tmp in d.glob(".*.tmp"):

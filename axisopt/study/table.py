@@ -47,11 +47,11 @@ def check_columns() -> list:
     """(column, check, field) for each check of the chosen design: margin, available and needed in the
     vendor unit (e.g. ``critical_speed available [rpm]``); empty where the check does not apply."""
     from ..model import CHECKS
-    from ..report.evaluation import CHECK_UNITS
+    from ..model.limits import CHECK_RECORDS
 
     out = []
     for c in CHECKS:
-        unit = CHECK_UNITS[c][0]
+        unit = CHECK_RECORDS[c].unit
         u = f" [{unit}]" if unit else ""
         out += [(f"{c} margin", c, "margin"), (f"{c} available{u}", c, "available"),
                 (f"{c} needed{u}", c, "needed")]

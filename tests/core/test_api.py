@@ -102,7 +102,7 @@ def test_checks_keep_their_margins_for_existing_callers():
     assert table.loc["nut_life", "margin"] == pytest.approx(margins["nut_life"])
 
 
-def test_pareto_front_is_a_sequence_with_a_frame_and_figure(tmp_path):
+def test_pareto_front_is_a_sequence_with_a_frame_and_figure(tmp_path, monkeypatch):
     import axisopt
 
     res = axisopt.solve(PROBLEMS / "pareto_problem.yaml")
@@ -114,18 +114,18 @@ def test_pareto_front_is_a_sequence_with_a_frame_and_figure(tmp_path):
     assert df["min_stiffness [N/um]"].tolist() == [p.min_stiffness for p in front]
     assert repr(front).startswith(f"ParetoFront({len(front)} non-dominated of")
     assert "[N/um]" in repr(front) and "[EUR]" in repr(front)
-    os.chdir(tmp_path)
+    monkeypatch.chdir(tmp_path)  # restored after the test: others read paths relative to the repository
     fig = axisopt.plot_pareto(res)
     assert fig.axes and list(tmp_path.iterdir()) == []  # no file without a path
     axisopt.plot_pareto(front, tmp_path / "front.png")
     assert (tmp_path / "front.png").stat().st_size > 1000
 
 
-def test_plot_profiles_returns_a_figure_and_writes_only_with_a_path(tmp_path):
+def test_plot_profiles_returns_a_figure_and_writes_only_with_a_path(tmp_path, monkeypatch):
     import axisopt
 
     ev = axisopt.evaluate(axisopt.load_design(PROBLEMS / "teaching_design.yaml"))
-    os.chdir(tmp_path)
+    monkeypatch.chdir(tmp_path)  # restored after the test: others read paths relative to the repository
     fig = axisopt.plot_profiles(ev)
     assert [a.get_ylabel() for a in fig.axes[:2]] == ["axial stiffness [N/um]", "1st natural frequency [Hz]"]
     assert list(tmp_path.iterdir()) == []

@@ -278,3 +278,35 @@ def test_parts_csv_escapes_a_user_catalog_formula(tmp_path, monkeypatch, capsys)
     assert main(["parts", "couplings", "--catalogs", str(cat), "--csv", str(out)]) == 0
     text = out.read_text(encoding="utf-8")
     assert "'=HYPERLINK" in text and "\n=HYPERLINK" not in text
+
+
+# ------------------------------------------------------------------------- tidy_layout (was test_tidy_layout.py)
+# A figure whose decorations cannot fit (the study's trade-off plot with a long legend did this in bench_study) is
+# saved without matplotlib's 'Tight layout not applied' UserWarning reaching the user.
+
+def _crowded():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(2, 1.5))
+    ax.set_title("line\n" * 30)
+    return fig
+
+
+def test_plain_tight_layout_warns_and_tidy_layout_does_not():
+    import warnings
+
+    import matplotlib.pyplot as plt
+
+    from axisopt.fileio import tidy_layout
+
+    fig = _crowded()
+    with pytest.warns(UserWarning, match="Tight layout not applied"):
+        fig.tight_layout()
+    fig = _crowded()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        tidy_layout(fig)
+    plt.close("all")

@@ -13,7 +13,7 @@ import yaml
 from axisopt.design import load_design
 from axisopt.errors import InputError
 from axisopt.model import design_params, evaluate
-from axisopt.model.frf import _chain_at, frf
+from axisopt.model.frf import chain_at, frf
 from axisopt.model.loads import bearing_set_stiffness
 from axisopt.model.methods import bearing_c_type, stiffness_methods
 from axisopt.physics.dynamics import drive_train_compliance
@@ -140,7 +140,7 @@ def test_frf_dynamic_stiffness_form(evals):
     ev = evals["vmc_x_design.yaml"]
     p = design_params(ev.design)
     i = 0
-    m = _chain_at(ev, p, i)
+    m = chain_at(ev, p, i)
     r = m["lead"] / (2.0 * math.pi)
     kc, cc, k, ca, cg = (m["coupling_stiffness"], m["coupling_damping"], m["axial_stiffness"], m["chain_damping"],
                          m["table_damping"])

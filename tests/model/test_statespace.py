@@ -12,7 +12,7 @@ import pytest
 
 from axisopt.design import load_design
 from axisopt.model import design_params, evaluate
-from axisopt.model.frf import _chain_at, frf, frf_positions
+from axisopt.model.frf import chain_at, frf, frf_positions
 from axisopt.model.servo import closed_loop, servo_response
 from axisopt.model.statespace import second_order, state_space
 from axisopt.physics import dynamics as pdy
@@ -45,7 +45,7 @@ def test_open_loop_eigenfrequencies_are_the_model_modes_at_every_position(ev):
         # the headline axial mode f_axial (motor held) leaves out the screw's rotary inertia on the coupling:
         # the held model's first mode is at or below it and equal to it without that inertia
         assert held.natural_frequencies()[0] <= ev.at("f_axial", i) * (1 + 1e-12)
-        spring = _chain_at(ev, design_params(ev.design), i)
+        spring = chain_at(ev, design_params(ev.design), i)
         spring["screw_inertia"] = 1e-12 * spring["screw_inertia"]
         mass, stiff, _ = second_order(spring)
         lam = np.linalg.eigvals(np.linalg.solve(mass[1:, 1:], stiff[1:, 1:])).real

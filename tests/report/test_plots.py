@@ -71,13 +71,14 @@ def pareto_result():
 
 def test_pareto_plot_is_a_scatter_matrix_with_the_front_marked(monkeypatch, tmp_path, pareto_result):
     import axisopt.fileio as fileio
+    import axisopt.report.solve as solve_report
     import axisopt.search.pareto as pareto
 
     figs = _capture(monkeypatch, fileio)
     front = pareto_result.pareto
     d = len(front.keys)
     assert d == 4
-    pareto.plot_pareto(front, str(tmp_path / "f.png"))
+    solve_report.plot_pareto(front, str(tmp_path / "f.png"))
     fig = figs[0]
     grid = [ax for ax in fig.axes if ax.get_label() != "<colorbar>"]
     assert len(grid) == d * d

@@ -66,8 +66,10 @@ def test_local_pool_gives_the_same_rows(reference, tmp_path):
 def test_dask_local_cluster_gives_the_same_rows(reference, tmp_path):
     distributed = pytest.importorskip("distributed")
     st, _, ref = reference
+    # ":0": the scheduler's HTTP server on a free port, not on 8787 that another cluster may hold (a test on another
+    # pytest-xdist worker, another run on the machine; Dask then warns, an error here)
     with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False,
-                                  dashboard_address=None) as cluster:
+                                  dashboard_address=":0") as cluster:
         s = run_study(st, tmp_path / "dask", scheduler=cluster.scheduler_address, report=False)
     assert s.backend == "dask" and s.solved == 12 and s.lost == 0
     pd.testing.assert_frame_equal(stable(results_table(st, tmp_path / "dask")), stable(ref))

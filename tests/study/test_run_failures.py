@@ -317,7 +317,9 @@ def test_dask_worker_killed_mid_study_gives_the_uninterrupted_rows(reference, tm
     st = load_study(copy_study(tmp_path, n=8))
     ref = _first_cases(reference[2], st)
     out = tmp_path / "out"
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+    # ":0": the scheduler's HTTP server on a free port, not on 8787 that another cluster may hold (a test on another
+    # pytest-xdist worker, another run on the machine; Dask then warns, an error here)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0",
                                   silence_logs=50) as cluster, distributed.Client(cluster) as client:
         victim = sorted(client.run(os.getpid).values())[0]
         killed = []

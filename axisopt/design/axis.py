@@ -1,0 +1,209 @@
+"""The axis and design descriptions: :class:`Axis` (what the machine asks of the axis, SI, with the defaults
+of the values no catalog row carries) and :class:`Design` (an axis with one chosen part per slot).  Frozen
+dataclasses; the YAML keys are declared in :mod:`.keys`, read in :mod:`.reader`, written in :mod:`.writer`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+
+from ..display import fmt, one_line
+from ..physics import motion
+
+MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
+
+# Defaults of the axis values no catalog row carries, with their sources (docs/assumptions.md).
+# Bearing housing and nut bracket: no vendor publishes a value (THK A-707: "set the rigidity as high as
+# possible"; THK and NSK rigidities exclude them), so they are rigid unless the YAML gives them.
+# Coupling: RINGFEDER GWB AKN size 60 metal-bellows coupling (Tech Paper EN 08.2019): 75e3 N.m/rad,
+# 0.29e-3 kg.m^2, 75 N.m, a mid-size feed-drive coupling (our pick of size).
+# Temperature rise: THK A-715 sets the negative target travel for a 2-5 degC rise; 3 K is used.
+COUPLING_STIFFNESS = 75e3
+COUPLING_INERTIA = 0.29e-3
+TEMPERATURE_RISE = 3.0
+# horizontal: gravity presses the table onto the rails; vertical: gravity acts along the rail (on the screw);
+# wall: the rails on a vertical wall, the feed horizontal, gravity across the rails (a lateral block load)
+ORIENTATIONS = ("horizontal", "vertical", "wall")
+G = 9.80665
+# Drive defaults.  Inertia ratio: THK A-720 eq. 49 asks J_M >= J / C with C "normally between 3 to 10" (its
+# transfer examples use 10); 5, the tighter half of that range, is our default for machine-tool axes.  Brake
+# safety: no vendor figure was retrieved; 2 x the gravity torque is our assumption, set axis.brake_safety.
+MAX_INERTIA_RATIO = 5.0
+BRAKE_SAFETY = 2.0
+# RMS torque / rated torque: Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <=
+# 0.8 Tst" (stall torque); taken against the rated torque, which is at most the stall torque (issue 26).
+RMS_TORQUE_RATIO = 0.8
+# Carriage (issue 25).  Static safety factors: THK's current selection pages give the lower limit of f_S "with
+# vibrations or impacts" as 5 for the LM Guide (thk.com/in/en/products/lm_guide/selection/0005/, Table 10) and
+# for the ball screw (LM Guide Actuator pages, "Ball Screw Unit/Bearing Unit": 5); a feed axis of a cutting
+# machine has both (THK names "vibrations due to a cutting load" and acceleration).  The older General Catalog
+# prints 2.5 to 7 for machine tools with vibration or impact (A-95, A-703); HIWIN G99TE20 Table 1-1: 3 to 5.
+GUIDE_STATIC_SAFETY = 5.0
+NUT_STATIC_SAFETY = 5.0
+# Geometry defaults where the YAML gives none (our assumptions, stated in docs/assumptions.md): blocks set in from the
+# table ends (spacing 0.6 x table length), rails 0.6 x table width apart, a table + workpiece box as wide as it
+# is long, 0.4 x its length high with the centre of gravity at half that height and the cutting point on top.
+SPACING_SHARE = 0.6
+CG_HEIGHT_SHARE = 0.2
+TOOL_HEIGHT_SHARE = 0.4
+BRAKE_MODES = ("auto", "yes", "no")
+
+
+@dataclass(frozen=True)
+class Axis:
+    """What the machine asks of the axis.  SI units."""
+
+    stroke: float
+    moving_mass: float  # table + workpiece, without nut and guide blocks [kg]
+    mounting: str
+    max_speed: float  # rapid traverse [m/s]
+    axial_load: float  # largest external axial (cutting) load [N]
+    start_offset: float = 0.13  # fixed bearing to nut at stroke start, l0 [m]
+    end_margin: float = 0.15  # nut at stroke end to the far bearing [m]
+    mean_speed: float | None = None  # for life; default half of max_speed [m/s]
+    mean_axial_load: float | None = None  # for life; default a third of axial_load [N]
+    acceleration: float = 0.0  # [m/s^2]
+    required_life: float = 20000 * 3600.0  # [s]
+    load_factor: float = 1.2  # fw
+    guide_blocks: int = 4
+    rails: int = 2
+    table_length: float = 0.5  # rail length = stroke + table_length [m]
+    normal_load: float = 0.0  # external load on the guide blocks besides gravity [N]
+    lubricant_viscosity: float = 32e-6  # at working temperature [m^2/s]
+    motor_inertia: float = 1.0e-3  # motor rotor [kg m^2]
+    # values outside the catalogs, YAML overridable; the defaults' sources are above the class
+    bearing_housing_stiffness: float | None = None  # one support-bearing housing [N/m]; None: rigid
+    nut_bracket_stiffness: float | None = None  # nut bracket / table connection [N/m]; None: rigid
+    coupling_stiffness: float = COUPLING_STIFFNESS  # torsional [N m/rad]
+    coupling_inertia: float = COUPLING_INERTIA  # [kg m^2]
+    # screw temperature rise in operation [K]; None: the heat balance of the duty cycle (model.heat) when the axis
+    # has one, TEMPERATURE_RISE otherwise
+    temperature_rise: float | None = None
+    pretension: float | None = None  # fixed-fixed screw pretension [N]; None: absorbs temperature_rise
+    orientation: str = "horizontal"
+    positions: int = 41  # nut positions evaluated over the stroke
+    # drive: motion and duty, reduction, drive limits
+    jerk: float | None = None  # [m/s^3]; None: trapezoidal moves
+    duty_cycle: tuple = ()  # motion.Segment; empty: the rapid move over the stroke and back
+    reduction_ratio: float = 1.0  # motor turns per screw turn (2: a 2:1 belt or gear reduction)
+    reduction_efficiency: float = 1.0
+    reduction_inertia: float = 0.0  # reduction at the motor shaft [kg m^2]
+    max_inertia_ratio: float = MAX_INERTIA_RATIO  # load / rotor inertia at the motor
+    brake: str = "auto"  # holding brake: auto (vertical axes), yes, no
+    brake_safety: float = BRAKE_SAFETY  # brake holding torque / gravity torque
+    rms_torque_ratio: float = RMS_TORQUE_RATIO  # largest RMS torque / rated torque of the motor
+    heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
+    # carriage: cutting force across the rail (the feed component is axial_load, the normal one normal_load),
+    # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the defaults
+    # above, from the table's size) and the static safety the guides and the nut must keep
+    cross_load: float = 0.0  # [N]
+    tool_height: float | None = None  # cutting point above the guide mounting plane [m]
+    tool_offset: float = 0.0  # cutting point across the rail from the carriage centre [m]
+    cg_height: float | None = None  # centre of gravity of the moving mass above the mounting plane [m]
+    cg_offset: float = 0.0  # ... across the rail from the carriage centre [m]
+    table_width: float | None = None  # [m]; None: table_length
+    block_spacing: float | None = None  # outer block to outer block along a rail [m]
+    rail_spacing: float | None = None  # outer rail to outer rail [m]
+    pitch_inertia: float | None = None  # moving mass about the lateral axis in the mounting plane [kg m^2]
+    yaw_inertia: float | None = None  # moving mass about the vertical axis through the carriage centre [kg m^2]
+    guide_static_safety: float = GUIDE_STATIC_SAFETY  # least C0 / largest block load
+    nut_static_safety: float = NUT_STATIC_SAFETY  # least C0a / largest axial force
+
+    @property
+    def table_width_eff(self) -> float:
+        return self.table_length if self.table_width is None else self.table_width
+
+    @property
+    def block_spacing_eff(self) -> float:
+        return SPACING_SHARE * self.table_length if self.block_spacing is None else self.block_spacing
+
+    @property
+    def rail_spacing_eff(self) -> float:
+        return SPACING_SHARE * self.table_width_eff if self.rail_spacing is None else self.rail_spacing
+
+    @property
+    def cg_height_eff(self) -> float:
+        return CG_HEIGHT_SHARE * self.table_length if self.cg_height is None else self.cg_height
+
+    @property
+    def tool_height_eff(self) -> float:
+        return TOOL_HEIGHT_SHARE * self.table_length if self.tool_height is None else self.tool_height
+
+    @property
+    def span(self) -> float:
+        """Bearing-to-bearing length of the screw [m]."""
+        return self.start_offset + self.stroke + self.end_margin
+
+    @property
+    def brake_used(self) -> bool:
+        return self.brake == "yes" or (self.brake == "auto" and self.orientation == "vertical")
+
+    @cached_property
+    def phases(self) -> tuple:
+        """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move.  ``heat``:
+        the heat balance sets the temperature rise (a duty cycle and no ``temperature_rise``)."""
+        segs = self.duty_cycle or motion.rapid_cycle(self.stroke, self.max_speed, self.acceleration, self.jerk)
+        return motion.Phases(motion.cycle_phases(segs), heat=self.temperature_rise is None and bool(self.duty_cycle))
+
+    @property
+    def top_speed(self) -> float:
+        """The highest table speed commanded [m/s]: max_speed, or a duty-cycle move's speed if faster (the
+        reader refuses such a move; kept as the maximum so the speed checks never read a slower value)."""
+        return max([self.max_speed] + [s.speed for s in self.duty_cycle if s.kind == "move" and s.speed])
+
+    @property
+    def top_acceleration(self) -> float:
+        """The highest acceleration commanded [m/s^2]: axis.acceleration or a duty-cycle move's own, if higher
+        (the largest inertia force in the axial load, f_max, is taken at it)."""
+        return max([self.acceleration] + [s.acceleration for s in self.duty_cycle
+                                          if s.kind == "move" and s.acceleration])
+
+    @property
+    def mean_speed_eff(self) -> float:
+        return self.mean_speed if self.mean_speed is not None else 0.5 * self.max_speed
+
+    @property
+    def mean_axial_load_eff(self) -> float:
+        return self.mean_axial_load if self.mean_axial_load is not None else self.axial_load / 3.0
+
+
+@dataclass(frozen=True)
+class Design:
+    """An axis with one chosen part per slot.  Parts are catalog rows (pandas Series) in SI."""
+
+    axis: Axis
+    screw: object
+    nut: object
+    bearing: object
+    guide: object
+    nut_preload: float | None = None  # None: the catalog's quoted preload
+    motor: object = None  # servo motor row, or None (the axis's motor_inertia; drive checks off)
+    coupling: object = None  # coupling row, or None (the axis's coupling values)
+    name: str = "design"
+    source: str = ""
+    assumed: tuple = field(default=())  # axis keys left at their defaults, for reports
+
+    @property
+    def preload(self) -> float:
+        if self.nut_preload is not None:
+            return self.nut_preload
+        return float(self.nut["stiffness_preload"]) if self.nut["type"] == "double" \
+            else float(self.nut["preload_min"])
+
+    def part_ids(self) -> dict:
+        return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
+
+    def __repr__(self) -> str:  # the parts are catalog rows: a dataclass repr would print them whole
+        a = self.axis
+        parts = ", ".join(f"{k} {v}" for k, v in self.part_ids().items())
+        return one_line("Design", repr(self.name), {
+            "": f"{a.mounting}, {a.orientation}", "stroke": fmt(a.stroke * 1e3, "mm"),
+            "moving mass": fmt(a.moving_mass, "kg"), "max speed": fmt(a.max_speed * 60, "m/min"),
+            "axial load": fmt(a.axial_load, "N"), "parts": f"{parts} (nut preload {fmt(self.preload, 'N')})"})
+
+
+PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling")
+
+
+__all__ = ["Axis", "Design", "PART_SLOTS", "MOUNTINGS", "ORIENTATIONS", "BRAKE_MODES", "G"]

@@ -1,0 +1,172 @@
+"""The YAML keys of a design file, one table per section: ``axis`` (:data:`AXIS_SPEC`, with the duty cycle's
+moves and dwells), ``parts`` (:data:`PARTS_SPEC`; an inline custom part: :data:`PART_SPECS`) and the file
+(:data:`DESIGN_SPEC`).  The readers read by these tables (:mod:`.reader`) and ``axisopt schema`` writes them out
+as a JSON Schema.
+"""
+
+from __future__ import annotations
+
+from ..catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA
+from ..yamlio import Key, Spec
+from .axis import BRAKE_MODES, MOUNTINGS, ORIENTATIONS
+
+# Each table below is the one declaration of its section's keys: the readers read them by it (Section.read)
+# and `axisopt schema` writes it out as a JSON Schema.  Unset axis keys take the Axis defaults (.axis).
+
+def _axis_q(kind: str, doc: str, *, required: bool = False, zero: bool = False, maximum=None) -> Key:
+    """An axis quantity: positive, or non-negative when ``zero``."""
+    return Key("quantity", doc, required=required, kind=kind, positive=not zero, non_negative=zero,
+               maximum=maximum)
+
+
+SEGMENT_LIMIT = 1000  # duty-cycle entries
+_FORCE = Key("quantity", "axial (process) force during the entry", kind="force", non_negative=True, default=0.0)
+MOVE_SPEC = Spec("move", "a move of the duty cycle", {
+    "move": Key("quantity", "signed distance (+ forward, - back), at most the stroke", required=True,
+                kind="length", example="400 mm"),
+    "speed": Key("quantity", "top speed (default: axis.max_speed)", kind="speed", positive=True),
+    "acceleration": Key("quantity", "acceleration (default: axis.acceleration)", kind="acceleration",
+                        positive=True),
+    "jerk": Key("quantity", "jerk limit (default: axis.jerk)", kind="jerk", positive=True),
+    "force": _FORCE,
+})
+DWELL_SPEC = Spec("dwell", "a dwell of the duty cycle", {
+    "dwell": Key("quantity", "duration", required=True, kind="time", positive=True, example="2 s"),
+    "force": _FORCE,
+})
+# Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
+# operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible
+# drive ranges: a belt or gear stage of a feed drive reduces by at most about 1:20 either way (1:50 allowed);
+# an inertia-ratio limit beyond 1000 or a brake safety factor beyond 10 is no limit at all.
+AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional value with its unit)", {
+    "stroke": _axis_q("length", "travel of the table", required=True),
+    "moving_mass": _axis_q("mass", "table + workpiece, without nut and guide blocks", required=True),
+    "mounting": Key("choice", "screw end supports (a problem: the default mounting)", required=True,
+                    choices=MOUNTINGS),
+    "max_speed": _axis_q("speed", "rapid traverse speed", required=True),
+    "axial_load": _axis_q("force", "largest external axial (cutting) load", required=True, zero=True),
+    "start_offset": _axis_q("length", "fixed bearing to nut at stroke start, l0"),
+    "end_margin": _axis_q("length", "nut at stroke end to the far bearing", zero=True),
+    "mean_speed": _axis_q("speed", "mean speed for the life (default: half of max_speed)"),
+    "mean_axial_load": _axis_q("force", "mean axial load for the life (default: a third of axial_load)", zero=True),
+    "acceleration": _axis_q("acceleration", "acceleration of the moves", zero=True),
+    "required_life": _axis_q("time", "required life of the nut, bearings and guides (problem default: its "
+                             "limits.min_life, else 20000 h)"),
+    "load_factor": Key("number", "load factor fw of the life calculation", minimum=1.0),
+    "guide_blocks": Key("number", "guide blocks carrying the table", integer=True, minimum=1, maximum=64),
+    "rails": Key("number", "guide rails", integer=True, minimum=1, maximum=8),
+    "table_length": _axis_q("length", "table length (rail length = stroke + table_length)"),
+    "normal_load": _axis_q("force", "external load on the guide blocks besides gravity", zero=True),
+    "lubricant_viscosity": _axis_q("kinematic_viscosity", "lubricant viscosity at working temperature"),
+    "motor_inertia": _axis_q("inertia", "motor rotor inertia (when no motor part is chosen)"),
+    "bearing_housing_stiffness": _axis_q("stiffness", "one support-bearing housing (default: rigid)"),
+    "nut_bracket_stiffness": _axis_q("stiffness", "nut bracket / table connection (default: rigid)"),
+    "coupling_stiffness": _axis_q("torsional_stiffness", "coupling torsional stiffness (when no coupling part)"),
+    "coupling_inertia": _axis_q("inertia", "coupling inertia (when no coupling part)"),
+    "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation (default: the "
+                                "heat balance of the duty cycle when the axis has one, else 3 K)", zero=True,
+                           maximum=(100.0, "100 K")),
+    "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs temperature_rise)",
+                      options=(Key("choice", choices=("auto",)),
+                               Key("quantity", kind="force", non_negative=True))),
+    "orientation": Key("choice", "axis orientation", choices=ORIENTATIONS, default="horizontal"),
+    "positions": Key("number", "nut positions evaluated over the stroke", integer=True, minimum=3,
+                     maximum=2001),
+    "jerk": _axis_q("jerk", "jerk limit (default: trapezoidal moves)"),
+    "duty_cycle": Key("list", "moves and dwells (default: the rapid move over the stroke and back)",
+                      minimum=1, maximum=SEGMENT_LIMIT,
+                      items=Key("one_of", options=(Key("section", spec=MOVE_SPEC), Key("section", spec=DWELL_SPEC)))),
+    "reduction_ratio": Key("number", "motor turns per screw turn (2: a 2:1 belt or gear)", positive=True,
+                           minimum=0.02, maximum=50.0),
+    "reduction_efficiency": Key("number", "efficiency of the reduction, in (0, 1]", positive=True, maximum=1.0),
+    "reduction_inertia": _axis_q("inertia", "inertia of the reduction at the motor shaft"),
+    "max_inertia_ratio": Key("number", "largest load / rotor inertia ratio at the motor", positive=True,
+                             maximum=1000.0),
+    "brake": Key("one_of", "holding brake (auto: vertical axes)", default="auto",
+                 options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
+    "brake_safety": Key("number", "brake holding torque / gravity torque", positive=True, minimum=1.0,
+                        maximum=10.0),
+    "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw surface for the heat balance "
+                             "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4)"),
+    "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
+                            "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
+                            maximum=1.0),
+    # carriage (issue 25): the cutting force's cross component and where it acts, the centre of gravity, the
+    # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
+    "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load)",
+                          zero=True),
+    "tool_height": _axis_q("length", "cutting point above the guide mounting plane (default 0.4 x table_length)",
+                           zero=True),
+    "tool_offset": _axis_q("length", "cutting point across the rail from the carriage centre", zero=True),
+    "cg_height": _axis_q("length", "moving mass's centre of gravity above the guide mounting plane "
+                         "(default 0.2 x table_length)", zero=True),
+    "cg_offset": _axis_q("length", "moving mass's centre of gravity across the rail from the carriage centre",
+                         zero=True),
+    "table_width": _axis_q("length", "table width across the rails (default: table_length)"),
+    "block_spacing": _axis_q("length", "outer block to outer block along a rail, at most table_length "
+                             "(default 0.6 x table_length)"),
+    "rail_spacing": _axis_q("length", "outer rail to outer rail, at most table_width (default 0.6 x table_width)"),
+    "pitch_inertia": _axis_q("inertia", "moving mass about the cross axis in the mounting plane (default: a box "
+                             "table_length long, 2 x cg_height high)"),
+    "yaw_inertia": _axis_q("inertia", "moving mass about the normal axis (default: a box table_length x "
+                           "table_width)"),
+    "guide_static_safety": Key("number", "least guide static safety C0 / largest block load (default 5: THK, "
+                               "with vibrations or impacts)", minimum=1.0, maximum=100.0),
+    "nut_static_safety": Key("number", "least nut static safety C0a / largest axial force (default 5: THK, with "
+                             "vibrations or impacts)", minimum=1.0, maximum=100.0),
+})
+AXIS_KINDS = {name: k.kind for name, k in AXIS_SPEC.keys.items() if k.type == "quantity"}
+AXIS_REQUIRED = tuple(name for name, k in AXIS_SPEC.keys.items() if k.required)
+AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reduction_efficiency",
+                 "guide_static_safety", "nut_static_safety", "rms_torque_ratio")
+
+
+def _part_key(table: str, col: str, kind: str) -> Key:
+    """How an inline part gives catalog column ``col`` (the catalog loader's column kinds and choices)."""
+    doc = col.replace("_", " ")
+    if kind == "str":
+        optional = col in ("vendor", "series")
+        return Key("string", doc + (" (default: custom)" if optional else ""), required=not optional,
+                   default="custom" if optional else None, choices=CHOICES.get((table, col)))
+    if kind == "int":
+        return Key("number", doc, required=True, integer=True, minimum=1)
+    if kind == "dimensionless":
+        return Key("number", doc, required=True, minimum=0)
+    optional = col in OPTIONAL_COLUMNS.get(table, ())
+    return Key("quantity", doc + (" (optional: the vendor lists none)" if optional else ""),
+               required=not optional, kind=kind, non_negative=True)
+
+
+# An inline (custom) part: the columns of its catalog table, with units.
+PART_SPECS = {table: Spec(table[:-1], f"a custom {table[:-1]}: the columns of catalogs/{table}.csv, with units",
+                          {col: _part_key(table, col, kind) for col, kind in cols.items()})
+              for table, cols in SCHEMA.items()}
+
+
+def _slot(table: str, doc: str, required: bool) -> Key:
+    return Key("one_of", doc, required=required,
+               options=(Key("string", f"a {table[:-1]} id from the catalogs"), Key("number", integer=True),
+                        Key("section", spec=PART_SPECS[table])))
+
+
+PARTS_SPEC = Spec("parts", "one part per slot: a catalog id, or an inline mapping of a custom part", {
+    "screw": _slot("screws", "ball screw", True),
+    "nut": _slot("nuts", "ball nut (fits the screw)", True),
+    "bearing": _slot("bearings", "support bearing set", True),
+    "guide": _slot("guides", "linear guide block and rail", True),
+    "motor": _slot("motors", "servo motor (optional; needs axis.acceleration or axis.duty_cycle)", False),
+    "coupling": _slot("couplings", "shaft coupling (optional)", False),
+    "nut_preload": Key("quantity", "nut preload within the nut's range (default: the catalog's)", kind="force",
+                       non_negative=True),
+})
+NAME_KEY = Key("string", "name of the file's subject (default: the file name)")
+DESCRIPTION_KEY = Key("string", "free text")
+CATALOGS_KEY = Key("names", "extra catalog directories, relative to this file")
+DESIGN_SPEC = Spec("design", "an axis design: the machine's requirements and one part per slot", {
+    "name": NAME_KEY, "description": DESCRIPTION_KEY, "catalogs": CATALOGS_KEY,
+    "axis": Key("section", required=True, spec=AXIS_SPEC), "parts": Key("section", required=True, spec=PARTS_SPEC),
+})
+
+
+__all__ = ["AXIS_SPEC", "MOVE_SPEC", "DWELL_SPEC", "PART_SPECS", "PARTS_SPEC", "DESIGN_SPEC", "NAME_KEY",
+           "DESCRIPTION_KEY", "CATALOGS_KEY", "AXIS_KINDS", "AXIS_NUMBERS", "SEGMENT_LIMIT"]

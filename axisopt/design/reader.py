@@ -1,0 +1,208 @@
+"""The strict design-YAML reader: :func:`load_design` and the section readers the problem and study readers
+share (:func:`read_axis`, :func:`read_parts`, :func:`catalog_for`).  Every error names the file and key.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import fields
+from pathlib import Path
+
+from ..catalog import SCHEMA, Catalog, default_catalog, row_problem
+from ..errors import InputError
+from ..parttable import Row
+from ..physics import motion
+from ..yamlio import Section, read_yaml
+from .axis import BRAKE_MODES, Axis, Design
+from .keys import AXIS_KINDS, AXIS_NUMBERS, AXIS_SPEC, DESIGN_SPEC, DWELL_SPEC, MOVE_SPEC, PART_SPECS, SEGMENT_LIMIT
+
+
+def read_axis(sec: Section) -> tuple[Axis, tuple]:
+    """Read an ``axis:`` section.  Returns the Axis and the names of keys left at their defaults."""
+    sec = sec.declared(AXIS_SPEC)
+    kw = {}
+    for name in AXIS_KINDS:
+        v = sec.read(name)
+        if v is not None:
+            kw[name] = v
+    kw["mounting"] = sec.read("mounting")
+    if sec.has("pretension"):
+        node = sec.raw("pretension")
+        if node.value != "auto":
+            kw["pretension"] = sec.quantity("pretension", "force", non_negative=True)
+    kw["orientation"] = sec.read("orientation")
+    if sec.has("brake") and isinstance(sec.raw("brake").value, bool):  # YAML reads a bare yes/no as a boolean
+        kw["brake"] = "yes" if sec.raw("brake").value else "no"
+    else:
+        kw["brake"] = sec.choice("brake", BRAKE_MODES, AXIS_SPEC.keys["brake"].default)
+    for name in AXIS_NUMBERS:
+        v = sec.read(name)
+        if v is not None:
+            kw[name] = float(v)
+    if sec.has("duty_cycle"):
+        kw["duty_cycle"] = read_duty_cycle(sec, kw)
+    for name in ("guide_blocks", "rails", "positions"):
+        v = sec.read(name)
+        if v is not None:
+            kw[name] = int(v)
+    v = sec.read("load_factor")
+    if v is not None:
+        kw["load_factor"] = float(v)
+    _check_carriage(sec, kw)
+    sec.done()
+    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw)
+    return Axis(**kw), assumed
+
+
+def _check_carriage(sec: Section, kw: dict) -> None:
+    """The block pattern fits the table; at least two blocks on every rail (the table's rocking stiffness comes
+    from the block spacing: no vendor text gives one block's moment rigidity)."""
+    length = kw.get("table_length", Axis.table_length)
+    width = kw.get("table_width", length)
+    if kw.get("block_spacing", 0.0) > length * (1 + 1e-9):
+        raise sec.error("block_spacing", f"{kw['block_spacing'] * 1e3:g} mm is larger than the table "
+                        f"(table_length {length * 1e3:g} mm)")
+    if kw.get("rail_spacing", 0.0) > width * (1 + 1e-9):
+        raise sec.error("rail_spacing", f"{kw['rail_spacing'] * 1e3:g} mm is larger than the table "
+                        f"(table_width {width * 1e3:g} mm)")
+    blocks, rails = kw.get("guide_blocks", Axis.guide_blocks), kw.get("rails", Axis.rails)
+    if blocks % rails or blocks < 2 * rails:
+        key = "guide_blocks" if sec.has("guide_blocks") else "rails"
+        raise sec.error(key, f"{blocks} blocks on {rails} rail(s): give every rail the same number of blocks, "
+                        "at least two")
+
+
+def read_duty_cycle(sec: Section, kw: dict) -> tuple:
+    """``duty_cycle``: a list of moves ``{move: 400 mm, speed: 24 m/min, acceleration:, jerk:, force:}``
+    (speed defaults to the axis max_speed, acceleration and jerk to the axis's) and dwells
+    ``{dwell: 2 s, force:}``."""
+    node = sec.raw("duty_cycle")
+    where = sec.key_path("duty_cycle")
+    if not isinstance(node.value, list) or not node.value:
+        raise sec.error("duty_cycle", "expected a list of moves and dwells")
+    if len(node.value) > SEGMENT_LIMIT:
+        raise sec.error("duty_cycle", f"has {len(node.value)} entries; at most {SEGMENT_LIMIT}")
+    out = []
+    for i, item in enumerate(node.value):
+        s = Section(item, sec.source, f"{where}[{i}]")
+        if s.has("dwell") == s.has("move"):
+            raise InputError("each entry is a 'move' or a 'dwell'", source=sec.source,
+                             where=Section._loc(f"{where}[{i}]", item.line))
+        s = Section(item, sec.source, f"{where}[{i}]", DWELL_SPEC if s.has("dwell") else MOVE_SPEC)
+        force = s.read("force")
+        if s.has("dwell"):
+            out.append(motion.Segment("dwell", duration=s.read("dwell"), force=force))
+        else:
+            dist = s.read("move")
+            if dist == 0:
+                raise s.error("move", "a move needs a distance (signed: + forward, - back)")
+            if abs(dist) > kw.get("stroke", math.inf) * (1 + 1e-9):
+                raise s.error("move", f"{abs(dist) * 1e3:g} mm is longer than the stroke")
+            speed = s.read("speed", kw.get("max_speed"))
+            top = kw.get("max_speed")
+            if top is not None and speed > top * (1 + 1e-9):  # the speed checks are taken at max_speed
+                raise s.error("speed", f"{speed * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min); "
+                              "raise max_speed to the fastest move (critical speed, DN and bearing speed are "
+                              "checked at it)")
+            acc = s.read("acceleration", kw.get("acceleration", 0.0))
+            if not acc:
+                raise s.error("move", "needs an acceleration (here or in axis.acceleration)")
+            jerk = s.read("jerk", kw.get("jerk"))
+            out.append(motion.Segment("move", distance=dist, speed=speed, acceleration=acc, jerk=jerk, force=force))
+        s.done()
+    return tuple(out)
+
+
+def read_part(sec: Section, key: str, table: str, catalog: Catalog):
+    """A part slot: a catalog id, or an inline mapping with the catalog's columns (values with units)."""
+    node = sec.raw(key, required=True)
+    if isinstance(node.value, (str, int)) and not isinstance(node.value, bool):
+        return catalog.part(table, str(node.value), source=sec.source, key=sec.where(key))
+    if not isinstance(node.value, dict):
+        raise sec.error(key, f"expected a catalog id or a mapping of {table[:-1]} properties")
+    return inline_part(Section(node, sec.source, sec.key_path(key), PART_SPECS[table]), table)
+
+
+def inline_part(sec: Section, table: str):
+    sec = sec.declared(PART_SPECS[table])
+    rec = {}
+    for col, kind in SCHEMA[table].items():
+        v = sec.read(col)
+        if kind == "int":
+            v = int(v)
+        elif kind == "dimensionless":
+            v = float(v)
+        elif kind != "str" and v is None:
+            v = math.nan
+        rec[col] = v
+    sec.done()
+    bad = row_problem(table, rec)  # the catalog loader's rules: positive geometry, choices, ordered pairs
+    if bad is not None:
+        col, msg = bad
+        raise sec.error(col, msg if msg.startswith(col) else f"{col} {msg}")
+    rec["_source"] = f"{sec.source}:{sec.node.line}"
+    return Row(rec, rec["id"])
+
+
+def read_parts(sec: Section, catalog: Catalog) -> dict:
+    parts = {
+        "screw": read_part(sec, "screw", "screws", catalog),
+        "nut": read_part(sec, "nut", "nuts", catalog),
+        "bearing": read_part(sec, "bearing", "bearings", catalog),
+        "guide": read_part(sec, "guide", "guides", catalog),
+    }
+    for slot, table in (("motor", "motors"), ("coupling", "couplings")):
+        if sec.has(slot):
+            parts[slot] = read_part(sec, slot, table, catalog)
+    pre = sec.read("nut_preload")
+    sec.done()
+    nut, screw = parts["nut"], parts["screw"]
+    if nut["screw_id"] != screw["id"]:
+        raise sec.error("nut", f"nut '{nut['id']}' fits screw '{nut['screw_id']}', not '{screw['id']}'; "
+                        + fitting_nuts(catalog, screw["id"]))
+    if pre is not None and not (nut["preload_min"] - 1e-9 <= pre <= nut["preload_max"] + 1e-9):
+        raise sec.error("nut_preload", f"{pre:.0f} N is outside nut '{nut['id']}' range "
+                        f"{nut['preload_min']:.0f}..{nut['preload_max']:.0f} N")
+    parts["nut_preload"] = pre
+    return parts
+
+
+def fitting_nuts(catalog: Catalog, screw_id: str, shown: int = 6) -> str:
+    """'nuts for it: A, B (+3 more; axisopt parts nuts --fits ID)' -- what a refused nut could be instead."""
+    nuts = catalog.rows("nuts")
+    ids = [str(i) for i in nuts.ids[nuts["screw_id"] == screw_id]]
+    if not ids:
+        return f"the catalogs have no nut for '{screw_id}'"
+    more = f" (+{len(ids) - shown} more)" if len(ids) > shown else ""
+    return f"nuts for it: {', '.join(ids[:shown])}{more} (axisopt parts nuts --fits {screw_id})"
+
+
+def catalog_for(root: Section, base_dir: Path) -> Catalog:
+    dirs = root.string_list("catalogs", [])
+    resolved = []
+    for d in dirs:
+        p = (base_dir / d).resolve()
+        if not p.is_dir():
+            raise root.error("catalogs", f"catalog directory '{d}' not found")
+        resolved.append(p)
+    return default_catalog(tuple(resolved))
+
+
+def load_design(path) -> Design:
+    """Read a design YAML file into a :class:`Design`; every error names the file and key."""
+    path = Path(path)
+    root = Section(read_yaml(path), str(path), spec=DESIGN_SPEC)
+    catalog = catalog_for(root, path.parent)
+    name = root.read("name", path.stem)
+    root.read("description")
+    axis, assumed = read_axis(root.read("axis"))
+    psec = root.read("parts")
+    parts = read_parts(psec, catalog)
+    root.done()
+    if parts.get("motor") is not None and axis.acceleration <= 0 and not axis.duty_cycle:
+        raise psec.error("motor", "sizing a motor needs axis.acceleration (or an axis.duty_cycle)")
+    return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)
+
+
+__all__ = ["load_design", "read_axis", "read_duty_cycle", "read_parts", "read_part", "inline_part", "fitting_nuts",
+           "catalog_for"]

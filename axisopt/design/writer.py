@@ -1,0 +1,89 @@
+"""A :class:`~axisopt.design.Design` written back as the mapping (and YAML text) a design file holds, in
+vendor units: :func:`design_to_dict`, :func:`design_to_yaml`; :func:`~axisopt.design.load_design` reads it back.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import fields
+
+from ..catalog import SCHEMA, SHIPPED_DIR
+from ..units import DISPLAY_UNITS, unit_factor
+from .axis import Axis, Design
+from .keys import AXIS_KINDS
+
+
+def _q(value: float, kind: str) -> str:
+    unit = DISPLAY_UNITS[kind]
+    return f"{value / unit_factor(unit, kind):.12g} {unit}"
+
+
+def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
+    """A design as the plain mapping a design YAML holds (vendor units).  ``load_design`` reads it back.
+
+    Parts of the shipped catalogs are written as their ids unless ``inline_parts``; a part from a user
+    catalog or from the YAML itself is written inline, so the file stands on its own.
+    """
+    a = design.axis
+    axis: dict = {}
+    for f in fields(Axis):
+        if f.name in design.assumed:
+            continue
+        v = getattr(a, f.name)
+        if f.name in AXIS_KINDS:
+            if v is not None:
+                axis[f.name] = _q(v, AXIS_KINDS[f.name])
+        elif f.name == "pretension":
+            axis[f.name] = "auto" if v is None else _q(v, "force")
+        elif f.name == "load_factor":
+            axis[f.name] = float(v)
+        elif f.name == "duty_cycle":
+            axis[f.name] = [_segment_dict(sg) for sg in v]
+        else:
+            axis[f.name] = v
+    parts: dict = {}
+    for slot, table in (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides"),
+                        ("motor", "motors"), ("coupling", "couplings")):
+        row = getattr(design, slot)
+        if row is None:
+            continue
+        if not inline_parts and str(row.get("_source", "")).startswith(str(SHIPPED_DIR)):
+            parts[slot] = str(row["id"])
+            continue
+        part = {}
+        for col, kind in SCHEMA[table].items():
+            v = row[col]
+            if kind == "str":
+                part[col] = str(v)
+            elif kind == "int":
+                part[col] = int(v)
+            elif kind == "dimensionless":
+                part[col] = float(v)
+            elif math.isfinite(float(v)):
+                part[col] = _q(float(v), kind)
+        parts[slot] = part
+    if design.nut_preload is not None:
+        parts["nut_preload"] = _q(design.nut_preload, "force")
+    return {"name": design.name, "axis": axis, "parts": parts}
+
+
+def _segment_dict(sg) -> dict:
+    if sg.kind == "dwell":
+        d = {"dwell": f"{sg.duration:.12g} s"}
+    else:
+        d = {"move": _q(sg.distance, "length"), "speed": _q(sg.speed, "speed"),
+             "acceleration": _q(sg.acceleration, "acceleration")}
+        if sg.jerk is not None:
+            d["jerk"] = _q(sg.jerk, "jerk")
+    if sg.force:
+        d["force"] = _q(sg.force, "force")
+    return d
+
+
+def design_to_yaml(design: Design, **kw) -> str:
+    import yaml
+
+    return yaml.safe_dump(design_to_dict(design, **kw), sort_keys=False, allow_unicode=True)
+
+
+__all__ = ["design_to_dict", "design_to_yaml"]

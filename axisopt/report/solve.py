@@ -1,0 +1,241 @@
+"""A :class:`~axisopt.search.result.SolveResult` as ``axisopt solve`` shows it: the text it prints
+(:func:`format_result`; a Pareto front's table :func:`format_pareto`) and the front's scatter matrix
+(:func:`plot_pareto`).  Nothing here prints."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+
+import numpy as np
+
+
+def format_result(res, top: int | None = None) -> str:
+    """The text ``axisopt solve`` prints: status, the best design's evaluation (or the Pareto front, or why
+    the problem is infeasible), the limits at the optimum, the runners-up and the certificate."""
+    from ..model import evaluate
+    from .evaluation import evaluation_table
+
+    c = res.certificate
+    L = [f"problem {res.problem}: {res.objective_label}",
+         f"method {res.method}: status {res.status}"
+         + (" (proven global optimum over the catalog)" if res.status == "optimal" and c.proven else "")
+         + f", {res.time:.2f} s" + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else "")]
+    if res.message:
+        L.append(f"  note: {res.message}")
+    if res.infeasibility is not None:
+        L.extend(relax_lines(res.infeasibility))
+    L.append("")
+    if res.pareto is not None:
+        L.append(format_pareto(res.pareto, top))
+    elif res.best is not None:
+        b = res.best
+        L.append(f"best: {b.objective:,.3f} {res.objective_unit}")
+        L.append(evaluation_table(evaluate(b.design)))
+        if res.binding:
+            L.append("")
+            L.append("limits at the optimum (what relaxing each by 10 % buys, re-solved)")
+            L.append(f"  {'limit':<18}{'value':>12}{'at optimum':>12}{'relaxed to':>12}{'gain':>14}")
+            for bd in res.binding:
+                gain = "-" if bd.objective_gain is None or not math.isfinite(bd.objective_gain) else \
+                    f"{bd.objective_gain:+.4g} {res.objective_unit}"
+                L.append(f"  {bd.limit:<18}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
+                         f"{_v(bd.relaxed_to):>12}{gain:>14}  {bd.unit}{'  BINDING' if bd.binding else ''}")
+            for bd in res.binding:
+                if bd.binding:
+                    verb = "raising" if bd.limit.startswith("max") else "lowering"
+                    L.append(f"  {verb} {bd.limit.replace('_', ' ')} to {_v(bd.relaxed_to)} {bd.unit} buys "
+                             f"{bd.objective_gain:+.4g} {res.objective_unit}")
+        if res.runners_up:
+            L.append("")
+            L.append("best designs")
+            L.append(_cand_table([b] + list(res.runners_up), res.objective_unit))
+    if res.infeasibility is not None:
+        inf = res.infeasibility
+        if inf.unmeetable:
+            L.append("limits no catalog combination can meet (each checked on its own, best preload):")
+            for name, best, lim, unit in inf.unmeetable:
+                u = f" {unit}" if unit else ""
+                L.append(f"  {name}: limit {_num(lim)}{u}, best any combination reaches {_num(best)}{u}")
+        else:
+            L.append("every limit is met by some combination, but no combination meets all of them together")
+        L.append("")
+        L.append("closest designs (sum of relative misses):")
+        for cand in inf.closest:
+            miss = ", ".join(f"{k} by {100 * v:.1f} %" for k, v in cand.misses.items())
+            L.append(f"  #{cand.rank} {cand.mounting} {' / '.join(cand.parts().values())}"
+                     f" preload {cand.nut_preload:.0f} N: misses {miss or 'nothing'}")
+    L.append("")
+    L.append("certificate")
+    if c.feasible is None:  # Bonmin: one MINLP per mounting, nothing counted or bounded
+        L.append(f"  combinations {c.combinations:,}; MINLP solves {c.nlps_solved} "
+                 f"(not SUCCESS {c.nlp_failures}); feasible combinations not counted")
+    else:
+        blocks = (f"; screened {c.screened:,}, the rest pruned by their (nut, bearing) block's bound"
+                  if res.method == "default" and c.screened is not None else "")
+        L.append(f"  combinations {c.combinations:,}{blocks}")
+        if c.pruned_by_dominance:
+            L.append(f"  never formed {c.pruned_by_dominance:,} (a coupling another beats on every count, or one "
+                     "that cannot carry the motor's peak torque)")
+        L.append(f"  feasible {c.feasible:,}{' (screened)' if res.method == 'default' else ''}; pruned by bound "
+                 f"{c.pruned_by_bound:,}; exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} "
+                 f"(failures {c.nlp_failures})")
+    gap = "0 (proven)" if c.proven and c.gap == 0 else ("unknown" if not math.isfinite(c.gap) else f"{c.gap:.3%}")
+    if not c.screening_time:
+        rate = ""
+    elif c.screened is None:  # every combination screened
+        rate = f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"
+    else:  # the blocks' bounds, then the combinations of the opened blocks one by one
+        rate = f"; screening {c.screening_time:.3f} s (block bounds, {c.screened:,} combinations one by one)"
+    L.append(f"  optimality gap {gap}{rate}")
+    for n in c.notes:
+        L.append(f"  {n}")
+    L.extend(estimated_lines(c.estimated))
+    from .evaluation import fit_lines
+
+    return fit_lines("\n".join(L))
+
+
+def relax_lines(inf) -> list:
+    """The first lines of an infeasible answer: what to relax, by how much, for which closest design."""
+    rel = inf.relax
+    if not rel:
+        return []
+
+    def amount(r):
+        u = f" {r.unit}" if r.unit else ""
+        sign = "+" if r.relaxed_to > r.value else "-"
+        rule = " (below the vendor's rule)" if r.below_vendor_rule else ""
+        return f"{r.key} from {_v(r.value)}{u} to {_v(r.relaxed_to)}{u} ({sign}{_num(100 * r.change)} %){rule}"
+
+    d = rel[0].design
+    who = f"design #{rel[0].design_rank}" + (f" ({d.mounting} {' / '.join(d.parts().values())})" if d else "")
+    if inf.relax_blocked_by:
+        head = (f"  no relaxation of the limits is enough: every closest design breaks a compatibility rule; "
+                f"{who} breaks {', '.join(inf.relax_blocked_by)} and besides needs ")
+    else:
+        head = "  to make it feasible, relax "
+    if len(rel) == 1 and not inf.relax_blocked_by:
+        L = [f"{head}{amount(rel[0])}: {who} then meets every limit"]
+    elif len(rel) == 1:
+        L = [f"{head}{amount(rel[0])}"]
+    else:
+        L = [f"{head}these {len(rel)} limits{' relaxed' if inf.relax_blocked_by else ''} together (smallest "
+             "change first)"
+             + ("" if inf.relax_blocked_by else f"; {who} then meets every limit") + ":"]
+        L += [f"    {amount(r)}" for r in rel]
+    for rank, rules in inf.not_relaxable:
+        L.append(f"  design #{rank} left out: it breaks {', '.join(rules)} (a compatibility rule, not relaxable)")
+    return L
+
+
+def _cand_table(cands, unit) -> str:
+    """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
+    design, only the parts in which it differs from the one above)."""
+    slots = ("screw", "nut", "bearing", "guide", "motor", "coupling")
+    obj = f"obj {unit}" if unit != "-" else ""
+    L = [f"  {'#':>3} {'mounting':<17}{obj:>12}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"
+         f"{'preload N':>11}"]
+    prev = None
+    for c in cands:
+        val = f"{c.objective:,.3f}" if obj else ""
+        L.append(f"  {c.rank:>3} {c.mounting:<17}{val:>12}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}"
+                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}{c.nut_preload:>11.0f}")
+        parts = c.parts()
+        if prev is None:
+            shown = [f"{k} {parts[k]}" for k in slots if parts.get(k)]
+        else:
+            shown = [f"{k} {parts[k]}" for k in slots if parts.get(k) and parts.get(k) != prev.get(k)]
+            shown = ["same parts as above" if not shown else "as above but " + shown[0]] + shown[1:]
+        L.extend(textwrap.wrap("  ".join(shown), 100, initial_indent=" " * 8, subsequent_indent=" " * 8,
+                               break_on_hyphens=False))
+        prev = parts
+    return "\n".join(L)
+
+
+def estimated_lines(estimated) -> list:
+    """Text lines for ``Certificate.estimated`` (what of the optimum rests on estimated part values)."""
+    if not estimated:
+        return []
+    from ..model.estimates import estimate_text
+
+    out = ["  rests on estimated values (not in the vendor's table; catalogs/SOURCES.md):"]
+    for r in estimated:
+        vals = "; ".join(estimate_text(e) for e in r["estimates"])
+        out.extend(textwrap.wrap(f"{r['what']} ({r['output']}): {vals}", 100, initial_indent="    ",
+                                 subsequent_indent="        "))
+    return out
+
+
+def format_pareto(front, top: int | None = None) -> str:
+    """The front's designs sorted by the first objective; ``top`` of them (all when None)."""
+    shown = front.points if top is None else front.points[:top]
+    L = [f"Pareto front: {len(front.points)} non-dominated designs of {front.feasible:,} feasible "
+         f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"]
+    if len(shown) < len(front.points):
+        L.append(f"  the first {len(shown)} by {front.keys[0]} shown (--top N for more, --json for all)")
+    L.append(_cand_table(shown, "-"))
+    return "\n".join(L)
+
+
+def _v(v) -> str:
+    """A limit or design value: 20,000 / 1,250 / 98.5 / 0.785 ('-' when missing)."""
+    if v is None or (isinstance(v, float) and not math.isfinite(v)):
+        return "-"
+    return _num(float(v)) if abs(v) >= 100 else f"{v:.4g}"
+
+
+def _num(v: float) -> str:
+    """1,500 / 0.785 / 12.4: thousands separators for large values, three significant digits otherwise."""
+    return f"{v:,.0f}" if abs(v) >= 100 else f"{v:.3g}"
+
+
+def plot_pareto(front, path: str | None = None):
+    """Scatter matrix of every objective pair: the non-dominated designs in colour (by the first
+    objective), a sample of the feasible designs they dominate in grey, each axis labelled with its unit
+    and whether it is maximised or minimised; the diagonal shows each objective's spread over the front.
+    Returns the matplotlib Figure (not registered with pyplot); written to ``path`` only when given."""
+    from matplotlib.figure import Figure
+
+    from ..search.pareto import FIELD
+
+    keys, d = front.keys, len(front.keys)
+    F = np.array([[getattr(p, FIELD[k]) for k in keys] for p in front.points]).reshape(-1, d)
+    C = np.asarray(front.cloud, dtype=float).reshape(-1, d) if front.cloud is not None else np.zeros((0, d))
+    size = 2.6 * d if d > 2 else 5.5
+    fig = Figure(figsize=(size + 1.0, size))
+    axes = fig.subplots(d, d, squeeze=False)
+    label = [f"{k.replace('_', ' ')} [{u}] ({'max' if s == 'max' else 'min'})"
+             for k, u, s in zip(keys, front.units, front.senses)]
+    sc = None
+    for i in range(d):
+        for j in range(d):
+            ax = axes[i][j]
+            if i == j:
+                ax.hist(F[:, i], bins=min(20, max(len(F), 1)), color="tab:blue", alpha=0.7)
+                ax.set_yticks([])
+            else:
+                if len(C):
+                    ax.scatter(C[:, j], C[:, i], s=4, color="0.75", alpha=0.5, linewidths=0,
+                               label="feasible (sample)" if (i, j) == (1, 0) else None)
+                sc = ax.scatter(F[:, j], F[:, i], c=F[:, 0], s=14, cmap="viridis",
+                                label="Pareto front" if (i, j) == (1, 0) else None)
+            ax.grid(True, alpha=0.3)
+            if i == d - 1:
+                ax.set_xlabel(label[j], fontsize=8)
+            if j == 0:
+                ax.set_ylabel(label[i], fontsize=8)
+            ax.tick_params(labelsize=7)
+    if d > 1:
+        axes[1][0].legend(fontsize=7, loc="best")
+    if sc is not None:
+        fig.colorbar(sc, ax=axes, label=label[0], shrink=0.8)
+    fig.suptitle(f"Pareto front: {len(front.points)} non-dominated of {front.feasible:,} feasible designs")
+    if path is not None:
+        from ..fileio import save_figure
+
+        save_figure(fig, path)
+    return fig
+
+
+__all__ = ["format_result", "format_pareto", "relax_lines", "estimated_lines", "plot_pareto"]

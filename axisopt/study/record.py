@@ -1,0 +1,99 @@
+"""One case of a study solved into its record (a plain dict, saved as ``DIR/cases/<case_id>.json``).
+
+:func:`solve_case` builds the case's problem, solves it and records the status, the reason of a failure, the
+best design, where its minima lie, its drive values and check margins and the certificate; it never raises
+for a case-level failure.  The record holds data only: the table, plots and report are made from it
+(:mod:`.table`).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import socket
+import threading
+import time
+
+from ..errors import InputError
+from .spec import Case, build_problem, short_message
+from .store import OK_STATUSES, RECORD_VERSION
+
+# failures of the machinery, not of the case: not a result, solved again by a resumed run
+INFRA_STATUSES = ("worker_died",)
+# how versions before worker_died recorded a case whose worker died twice (status "error")
+LEGACY_WORKER_DIED = "worker process died twice while solving this case"
+# A solve is not thread-safe (per-process CasADi solver caches): a Dask worker with several threads
+# runs its cases one at a time.
+_SOLVE_LOCK = threading.Lock()
+
+
+def solve_case(context: dict, case: Case) -> dict:
+    """Build and solve one case; never raises for a case-level failure (the reason is recorded)."""
+    from ..model import evaluate
+    from ..model.function import check_rows, drive_dict
+    from ..search import solve
+
+    t0 = time.perf_counter()
+    rec = {"version": RECORD_VERSION, "case_id": case.case_id, "index": case.index,
+           "inputs": {k: v for k, v in case.overrides}, "status": "", "reason": "",
+           "worker": f"{socket.gethostname()}:{os.getpid()}"}
+    try:
+        problem = build_problem(context, case)
+    except InputError as exc:
+        rec.update(status="input_error", reason=short_message(exc).replace("\n", " "),
+                   time_s=time.perf_counter() - t0)
+        return rec
+    try:
+        with _SOLVE_LOCK:
+            res = solve(problem, context["method"], top=1, sensitivities=False)
+            # on numpy: the CasADi Function of a case's duty cycle would be built for this one evaluation
+            ev = evaluate(res.best.design, use_casadi=False) if res.best is not None and res.best.design is not None \
+                else None
+    except Exception as exc:  # a solver failure is a result of this case, not the end of the study
+        rec.update(status="error", reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
+                   time_s=time.perf_counter() - t0)
+        return rec
+    rec["status"] = res.status
+    rec["objective"] = {"label": res.objective_label, "unit": res.objective_unit, "value": _num(res.objective)}
+    reason = res.message
+    if res.infeasibility is not None and res.infeasibility.unmeetable:
+        reason = (reason + "; " if reason else "") + "no combination meets " + ", ".join(
+            f"{n} (limit {lim:.4g}, best {b:.4g} {u})" for n, b, lim, u in res.infeasibility.unmeetable)
+    rec["reason"] = reason if res.status not in OK_STATUSES else ""
+    rec["note"] = res.message if res.status in OK_STATUSES else ""
+    if res.best is not None:
+        best = res.best.to_dict()
+        best.pop("misses", None)
+        rec["best"] = best
+    if ev is not None:
+        k, kpos = ev.minimum("k_total")
+        f, fpos = ev.minimum("f1")
+        rec["profile"] = {"min_stiffness_position_mm": kpos * 1e3, "min_frequency_position_mm": fpos * 1e3,
+                          "weakest_link": ev.weakest, "all_checks_pass": bool(min(ev.checks().values()) >= 1.0)}
+        drv = drive_dict(ev)
+        if drv is not None:  # the motor's needs and its torque margins
+            rec["drive"] = {k: (_num(float(v)) if isinstance(v, (int, float)) else v) for k, v in drv.items()}
+        rec["checks"] = {r["check"]: {k: r[k] for k in ("available", "needed", "unit", "margin", "pass")}
+                         for r in check_rows(ev)}
+    c = res.certificate
+    rec["certificate"] = {"proven": bool(c.proven), "gap": _num(c.gap), "combinations": int(c.combinations),
+                          "feasible": None if c.feasible is None else int(c.feasible),
+                          "pruned_by_bound": int(c.pruned_by_bound),
+                          "exact_evaluations": int(c.exact_evaluations), "nlps": int(c.nlps_solved),
+                          "nlp_failures": int(c.nlp_failures)}
+    if res.pareto is not None:
+        rec["pareto"] = res.pareto.to_dict()
+    rec["time_s"] = time.perf_counter() - t0
+    return rec
+
+
+def run_batch(context: dict, cases) -> list:
+    """Solve several cases (one task of a pool or Dask cluster)."""
+    return [solve_case(context, c) for c in cases]
+
+
+def _num(v):
+    return float(v) if v is not None and math.isfinite(v) else None
+
+
+__all__ = ["solve_case", "run_batch", "INFRA_STATUSES", "LEGACY_WORKER_DIED"]
