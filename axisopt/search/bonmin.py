@@ -24,9 +24,12 @@ import casadi as ca
 import numpy as np
 
 from .. import model
-from .core import _feasible_at, make_candidate
+from ..units import N_PER_UM
+from .candidates import make_candidate
+from .objective import STIFFNESS_OUTPUTS
+from .polish import feasible_at as _feasible_at
 from .result import Certificate, SolveResult
-from .space import N_PER_UM, STIFFNESS_OUTPUTS, respond
+from .space import respond
 
 
 @contextlib.contextmanager

@@ -26,10 +26,11 @@ import numpy as np
 from .. import model
 from ..model.drive import drive as drive_block
 from ..model.limits import CHECK_RECORDS
-from .core import candidate_values
+from .candidates import candidate_values
+from .constraints import End, as_vector
 from .interval import Interval, ends
 from .result import Infeasibility
-from .space import COUPLING_KEYS, DRIVE_KEYS, Space, _vec, respond, respond_drive
+from .space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block
@@ -79,10 +80,11 @@ def _favourable(c, out_lo, out_hi, shape):
     be None, or without the chain outputs, when no limit read there needs them)."""
     def val(o):
         return np.broadcast_to(_last(c, c.value(o)), shape)
-    if c.convex:
+    end = c.favourable
+    if end is End.INTERVAL:
         v_lo, v_hi = val(out_lo), val(out_hi)
         return np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
-    return val(out_hi) if c.lower_type else val(out_lo)
+    return val(out_hi) if end is End.HIGH else val(out_lo)
 
 
 def _closest(top_idx, top_score, idx, score, n):
@@ -119,7 +121,7 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
 
 def _bounded(c) -> bool:
     """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
-    limits of :func:`axisopt.search.core.block_bounds`: not the drive's, except the cost)."""
+    limits of :func:`axisopt.search.bounds.block_bounds`: not the drive's, except the cost)."""
     return not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")
 
 
@@ -415,7 +417,7 @@ def _closest_designs(space: Space, constraints, objective, combos) -> list:
         out = respond(p, space.positions(mounting), mounting, grid.reshape(-1, 1))
         tot = np.zeros(len(rows) * G)
         for c in constraints:
-            tot += c.violation(_vec(c.value(out), len(rows) * G))
+            tot += c.violation(as_vector(c.value(out), len(rows) * G))
         best = np.argmin(tot.reshape(len(rows), G), axis=1)  # first of equal misses, as one design alone
         pre[rows] = grid[np.arange(len(rows)), best]
     out = []

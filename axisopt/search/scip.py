@@ -38,10 +38,14 @@ import numpy as np
 
 from .. import model
 from ..errors import InputError
+from ..units import N_PER_UM
+from .bestfirst import bound_order_search
 from .bonmin import _slot_params
-from .core import _feasible_at, bound_order_search, make_candidate
+from .candidates import make_candidate
+from .objective import STIFFNESS_OUTPUTS
+from .polish import feasible_at as _feasible_at
 from .result import Certificate, SolveResult
-from .space import N_PER_UM, STIFFNESS_OUTPUTS, respond
+from .space import respond
 
 GAP = 1e-5  # SCIP's relative gap limit (limits/gap)
 MAX_TERMS = 40  # a larger SCIP expression becomes an auxiliary variable
