@@ -11,7 +11,7 @@ import numpy as np
 
 from .bounds import block_bounds
 from .objective import ObjectiveSpec, objective_floor
-from .preload import Exact, exact_solve
+from .preload import concat_exact, exact_solve
 from .result import SearchStats
 from .screen import screen_nuts
 from .space import Space
@@ -107,7 +107,7 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
         feasible += len(add_i)
         pool_idx, pool_bnd = np.concatenate([pool_idx, add_i]), np.concatenate([pool_bnd, add_b])
         t_screen += time.perf_counter() - t1
-    ex = Exact.concat(parts) if parts else exact_solve(space, [], constraints, objective)
+    ex = concat_exact(parts) if parts else exact_solve(space, [], constraints, objective)
     rest = max(bv[pos] if pos < len(bv) else -np.inf, pool_bnd.max() if len(pool_bnd) else -np.inf)
     best = ex.objective.max() if len(ex.objective) else -np.inf
     if rest == -np.inf or rest < objective_floor(thr) or rest < objective_floor(best):

@@ -18,8 +18,8 @@ from ..units import N_PER_UM
 from .bracket import BISECTION_STEPS
 from .constraints import as_vector, ok_all
 from .objective import ObjectiveSpec
-from .preload import Exact, convex_interval
-from .result import SearchStats
+from .preload import concat_exact, convex_interval, new_exact
+from .result import Exact, SearchStats
 from .space import Space, respond, subset
 
 
@@ -32,9 +32,7 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
     on an even grid of that interval, both ends included, and the best feasible point kept.
     """
     idx = np.asarray(idx, dtype=np.int64)
-    K = len(idx)
-    res = Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf), np.zeros(K), np.zeros(K),
-                np.zeros(K))
+    res = new_exact(idx)
     dep = [c for c in constraints if c.direction != 0]
     indep = [c for c in constraints if c.direction == 0]
     for mounting, sel, n, b, _g, p, x in space.by_mounting(idx):
@@ -120,7 +118,7 @@ def exhaustive_search(space: Space, constraints, objective: ObjectiveSpec, chunk
     parts = []
     for s in range(0, space.size, chunk):
         parts.append(grid_solve(space, np.arange(s, min(space.size, s + chunk)), constraints, objective))
-    ex = Exact.concat(parts) if parts else grid_solve(space, [], constraints, objective)
+    ex = concat_exact(parts) if parts else grid_solve(space, [], constraints, objective)
     stats = SearchStats(combinations=space.size, feasible=int(ex.feasible.sum()), pruned_by_bound=0,
                         exact_evaluations=space.size, gap=0.0, proven=True, screening_time=0.0,
                         screening_rate=space.size / max(time.perf_counter() - t0, 1e-9))

@@ -3,7 +3,7 @@ space, constraints, objective) and dispatches by the objective's mode -- scalar,
 solves, the first's optimum a floor of the second) or Pareto (:mod:`.pareto`) -- to the method's runner
 (:data:`METHOD_TABLE`).  The scalar result is built in one place (:func:`scalar_result`); the limit
 sensitivities (:func:`limit_sensitivities`) and what of the optimum rests on estimated part values
-(:func:`estimated_at_optimum`) are added here.
+(:func:`estimated_at_optimum`) are added here.  The stages are imported when a solve first reaches them.
 """
 
 from __future__ import annotations
@@ -11,21 +11,18 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 import numpy as np
 
 from ..errors import InputError
 from ..model.limits import LIMITS
 from ..problem import GOALS, Problem
-from .bestfirst import bound_order_search
-from .constraints import build_constraints, limit_constraint
-from .exhaustive import exhaustive_search
-from .objective import ObjectiveSpec, objective_spec
-from .parts import build_space
-from .polish import polish
 from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, Binding, Certificate, SolveResult
-from .space import Space
+
+if TYPE_CHECKING:
+    from .objective import ObjectiveSpec
+    from .space import Space
 
 RELAX = 0.10  # sensitivities: relax each limit by 10 %
 
@@ -47,15 +44,28 @@ class Task:
 
 
 def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task:
-    return Task(problem, build_space(problem), build_constraints(problem),
+    """The task of ``problem``: its search space, constraints and objective (``objective``: another one)."""
+    from .parts import build_space
+
+    space = build_space(problem)  # (each stage is imported as the task reaches it)
+    from .constraints import build_constraints
+
+    constraints = build_constraints(problem)
+    from .objective import objective_spec
+
+    return Task(problem, space, constraints,
                 objective_spec(problem.objective.mode, problem) if objective is None else objective)
 
 
 def _run_search(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
     """The default and exhaustive methods: the search, then :func:`scalar_result`."""
     if method == "exhaustive":
+        from .exhaustive import exhaustive_search
+
         ex, stats = exhaustive_search(task.space, task.constraints, task.objective)
     else:
+        from .bestfirst import bound_order_search
+
         ex, stats = bound_order_search(task.space, task.constraints, task.objective, top=top)
     return scalar_result(task, method, ex, stats, top, t0)
 
@@ -125,6 +135,8 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
 
         return solve_pareto(problem, method=method, t0=t0)
     if ob.mode == "lexicographic":
+        from .objective import objective_spec
+
         res = _solve_lexicographic(build_task(problem, objective_spec(ob.order[1])), m, top, time_limit, t0)
     else:
         task = build_task(problem)
@@ -142,6 +154,9 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
 
 def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0: float) -> SolveResult:
     """The primary objective's optimum, then the secondary's over the designs within the tolerance of it."""
+    from .constraints import limit_constraint
+    from .objective import objective_spec
+
     problem, ob = task.problem, task.problem.objective
     primary, secondary = ob.order
     first = m.run(task.with_(objective=objective_spec(primary)), m.name, 1, time_limit, t0)
@@ -173,6 +188,8 @@ def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0:
 def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float) -> SolveResult:
     """The SolveResult of a search that ends in the exact solves ``ex`` with statistics ``stats``: infeasible
     (with the explanation and what to relax), or the ``top`` best polished by IPOPT."""
+    from .polish import polish
+
     problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
     stats.pruned_by_dominance = space.pruned_by_dominance
     if not np.isfinite(ex.objective).any():
@@ -199,6 +216,12 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> li
 
     ``space``: the problem's search space, if built (the part tables do not depend on the limits, so every
     re-solve reuses it and its cached parameter arrays)."""
+    from .bestfirst import bound_order_search
+    from .constraints import build_constraints
+    from .objective import objective_spec
+    from .parts import build_space
+    from .polish import polish
+
     best = res.best
     space = build_space(problem) if space is None else space
     spec = objective_spec(problem.objective.mode, problem)

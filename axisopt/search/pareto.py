@@ -20,7 +20,7 @@ from .constraints import build_constraints
 from .exhaustive import exhaustive_search
 from .objective import objective_spec
 from .parts import build_space
-from .preload import Exact, exact_solve
+from .preload import concat_exact, exact_solve
 from .result import INFEASIBLE, OPTIMAL, Certificate, ParetoFront, SearchStats, SolveResult
 from .screen import screen_nuts
 
@@ -104,7 +104,7 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     else:
         idx, t_screen, screened = screen_feasible_blocks(space, constraints, spec)
         parts = [exact_solve(space, idx[s: s + 200000], constraints, spec) for s in range(0, len(idx), 200000)]
-        ex = Exact.concat(parts) if parts else exact_solve(space, [], constraints, spec)
+        ex = concat_exact(parts) if parts else exact_solve(space, [], constraints, spec)
         info = SearchStats(combinations=space.size, feasible=int(len(idx)), pruned_by_bound=0,
                            exact_evaluations=int(len(idx)), gap=0.0, proven=True, screening_time=t_screen,
                            screening_rate=space.size / max(t_screen, 1e-9), screened=screened,

@@ -136,6 +136,11 @@ def _build_space(problem: Problem) -> Space:
     sp.g_arr = _arrays(guides, _GUIDE_COLS)
     sp.g_arr["type"] = guides["type"].astype(str)
     _add_drives(sp, problem)
+    D = len(sp.drives)
+    sp.n_drives = D
+    sp.shape = (len(sp.mountings), len(nuts), len(bearings), len(guides) * D)
+    sp.size = int(np.prod(sp.shape))
+    sp.pruned_by_dominance = int(sp.size // D * sp.pairs_left_out)
     return sp
 
 

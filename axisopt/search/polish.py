@@ -11,8 +11,6 @@ any NLP is built.  One solver per (mounting, grid, objective, limit set) and pro
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import casadi as ca
 import numpy as np
 
@@ -20,7 +18,7 @@ from .. import model
 from .candidates import make_candidate
 from .constraints import ok_all
 from .objective import ObjectiveSpec, in_display_units, rank_order
-from .preload import Exact
+from .result import Exact, NLPResult
 from .space import Space, respond
 
 
@@ -73,14 +71,6 @@ _IPOPT = {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes", "ipopt
           "ipopt.max_iter": 300, "ipopt.bound_push": 1e-9, "ipopt.bound_frac": 1e-9,
           "ipopt.mu_init": 1e-4}
 _SOLVERS: dict = {}
-
-
-@dataclass
-class NLPResult:
-    success: bool
-    status: str
-    preload: float
-    objective: float  # display units
 
 
 def nlp_solver(mounting: str, x: np.ndarray, cons: tuple, objective: ObjectiveSpec, duty: tuple = ()):

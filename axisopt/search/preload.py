@@ -10,7 +10,7 @@ favour a low preload; a motor-torque limit (convex in the preload) lowers it int
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import fields
 
 import numpy as np
 
@@ -18,36 +18,20 @@ from ..units import N_PER_UM
 from .bracket import BISECTION_STEPS, golden_best, kary_threshold, search_points
 from .constraints import Constraint, as_vector, ok_all
 from .objective import ObjectiveSpec
+from .result import Exact
 from .space import Space, repeat_rows, respond, respond_drive, subset
 
 
-@dataclass
-class Exact:
-    """Exact per-combination optimum of the continuous problem (vectorized over K combinations)."""
-
-    idx: np.ndarray
-    feasible: np.ndarray
-    preload: np.ndarray
-    objective: np.ndarray  # display units, -inf where infeasible
-    cost: np.ndarray
-    total_mass: np.ndarray
-    moving_mass: np.ndarray
-    min_stiffness: np.ndarray = None  # [N/um] at the chosen preload
-    min_frequency: np.ndarray = None  # [Hz]
-
-    def __post_init__(self):
-        if self.min_stiffness is None:
-            self.min_stiffness = np.full(len(self.idx), np.nan)
-        if self.min_frequency is None:
-            self.min_frequency = np.full(len(self.idx), np.nan)
+def new_exact(idx) -> Exact:
+    """An Exact of the combinations ``idx`` with nothing solved yet (infeasible, objective -inf)."""
+    K = len(idx)
+    return Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf), np.zeros(K), np.zeros(K),
+                 np.zeros(K), np.full(K, np.nan), np.full(K, np.nan))
 
 
-    @classmethod
-    def concat(cls, parts) -> Exact:
-        """One Exact of the combinations of ``parts`` (in order)."""
-        return cls(*(np.concatenate([getattr(p, f) for p in parts]) for f in
-                     ("idx", "feasible", "preload", "objective", "cost", "total_mass", "moving_mass",
-                      "min_stiffness", "min_frequency")))
+def concat_exact(parts) -> Exact:
+    """One Exact of the combinations of ``parts`` (in order)."""
+    return Exact(*(np.concatenate([getattr(p, f.name) for p in parts]) for f in fields(Exact)))
 
 
 def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, need=("k_total", "f1")) -> Exact:
@@ -61,8 +45,7 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
     """
     idx = np.asarray(idx, dtype=np.int64)
     K = len(idx)
-    res = Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf), np.zeros(K), np.zeros(K),
-                np.zeros(K))
+    res = new_exact(idx)
     if K == 0:
         return res
     up = [c for c in constraints if c.direction != 0 and c.upper_type]

@@ -8,6 +8,8 @@ import math
 from dataclasses import asdict, dataclass, field, fields
 from types import MappingProxyType
 
+import numpy as np
+
 from ..display import fmt, frame, html_fields, html_table, one_line
 
 
@@ -47,6 +49,32 @@ class SearchStats:
     pruned_by_block: int = 0  # default method: combinations never screened (their block cannot win)
     screened: int | None = None  # default method: combinations screened one by one
     pruned_by_dominance: int = 0  # combinations never formed (dominated drive pairs)
+
+
+@dataclass
+class Exact:
+    """The exact per-combination optimum of the continuous problem, over K combinations
+    (:func:`.preload.exact_solve`, :func:`.exhaustive.grid_solve`)."""
+
+    idx: np.ndarray  # combination numbers
+    feasible: np.ndarray
+    preload: np.ndarray  # [N]
+    objective: np.ndarray  # display units, -inf where infeasible
+    cost: np.ndarray  # [EUR]
+    total_mass: np.ndarray  # [kg]
+    moving_mass: np.ndarray  # [kg]
+    min_stiffness: np.ndarray  # [N/um] at the chosen preload
+    min_frequency: np.ndarray  # [Hz]
+
+
+@dataclass
+class NLPResult:
+    """IPOPT's answer for one combination (:func:`.polish.solve_preload`)."""
+
+    success: bool
+    status: str
+    preload: float  # [N]
+    objective: float  # display units
 
 
 # Candidate fields as table columns, the display unit in the name (Candidate's fields are in these units).

@@ -103,24 +103,12 @@ class Space:
     # (motor, coupling) pairs never formed: a coupling another beats on every count, or one that cannot carry
     # the motor's peak torque (a limit of the pair alone)
     pairs_left_out: int = 0
+    # the numbering of the combinations (:mod:`.parts` sets them once the tables are final)
+    n_drives: int = 1  # drive pairs D
+    shape: tuple = ()  # (mountings, nuts, bearings, guides x drives)
+    size: int = 0  # combinations
+    pruned_by_dominance: int = 0  # combinations left out by pairs_left_out (not in size)
     _cache: dict = field(repr=False, default_factory=dict)
-
-    @property
-    def n_drives(self) -> int:
-        return len(self.drives)
-
-    @property
-    def pruned_by_dominance(self) -> int:
-        """Combinations left out before the search by :attr:`pairs_left_out` (not in :attr:`size`)."""
-        return int(self.size // self.n_drives * self.pairs_left_out)
-
-    @property
-    def shape(self) -> tuple:
-        return (len(self.mountings), len(self.nuts), len(self.bearings), len(self.guides) * self.n_drives)
-
-    @property
-    def size(self) -> int:
-        return int(np.prod(self.shape))
 
     def unravel(self, idx):
         return np.unravel_index(np.asarray(idx, dtype=np.int64), self.shape)
