@@ -2,11 +2,11 @@
 
 :func:`block_bounds`: each (mounting, nut, bearing) block -- all its guides and drives -- is tested and bounded
 at once with an optimistic guide (the most favourable value of every guide column,
-:meth:`.space.Space.params_optimistic_guide`): every mechanical limit at its favourable preload end
+:func:`optimistic_guide_params`): every mechanical limit at its favourable preload end
 (:attr:`.constraints.Constraint.favourable`) and an upper bound of the objective at the highest allowed
-preload over a few grid positions.  :func:`convex_margin_bound` bounds a motor-torque margin over a preload
-interval (the screening's drive stage).  :func:`screen_ok` is the float32 screening test both use: every limit
-relaxed by :data:`SCREEN_RTOL`, so rounding can only keep a combination, never drop one.
+preload over a few grid positions (:func:`bound_positions`).  :func:`screen_ok` is the float32 test the bounds
+and the screening use: every limit relaxed by :data:`SCREEN_RTOL`, so rounding can only keep a combination,
+never drop one.
 """
 
 from __future__ import annotations
@@ -14,17 +14,63 @@ from __future__ import annotations
 import numpy as np
 
 from .. import model
-from .constraints import Constraint, End
+from .constraints import End
 from .objective import ObjectiveSpec
-from .space import DRIVE_KEYS, SCREEN_CHUNK, Space
+from .space import DRIVE_KEYS, SCREEN_CHUNK, Space, as_dtype, shaped
 
 SCREEN_RTOL = 1e-4  # float32 screening: relative slack on every test and on the bound
+
+# The guide values that favour every mechanical limit and the objective (the optimistic guide of the block
+# bounds): the table carries the blocks, so less block mass, rail mass, friction, price and preload, and more
+# rigidity, damping and load rating never make a design worse.  The drive's limits (motor torques, where
+# less friction can raise a deceleration torque) are not bounded this way (DRIVE_KEYS: checked per pair).
+GUIDE_BEST = {"normal_rigidity": np.nanmax, "tangential_rigidity": np.nanmax, "friction_force": np.nanmin,
+              "friction_coefficient": np.nanmin, "friction_viscous": np.nanmin, "damping": np.nanmax,
+              "block_mass": np.nanmin,
+              "rail_mass_per_length": np.nanmin, "block_price": np.nanmin, "rail_price_per_length": np.nanmin,
+              "dynamic_load_rating": np.nanmax, "preload": np.nanmin,
+              # carriage (issue 25): a higher static or moment rating never loads a block more
+              "static_load_rating": np.nanmax, "moment_roll": np.nanmax, "moment_pitch": np.nanmax,
+              "moment_yaw": np.nanmax}
+
+
+def bound_positions(space: Space, mounting: str) -> np.ndarray:
+    """A few grid positions; the minimum over them bounds the minimum over the grid from above."""
+    x = space.positions(mounting)
+    n = len(x)
+    idx = {0, n // 2, n - 1}
+    if mounting == "fixed-fixed":
+        idx.add(int(np.argmin(np.abs(x - 0.5 * space.problem.axis.span))))
+    return x[sorted(idx)]
+
+
+def optimistic_guide_params(space: Space, mounting: str, nut_sel, guide_type: str, dtype=float) -> dict:
+    """Parameters over (nuts ``nut_sel``, bearings, one guide, positions) where the one guide takes, column
+    by column, the most favourable value of the searched guides of ``guide_type`` (:data:`GUIDE_BEST`).
+    No mechanical limit and no objective value of any (nut, bearing, guide) combination is better than
+    with this guide, so the (nut, bearing) results bound every guide (and every drive: the axis values
+    stand in for motor and coupling, with the stiffest searched coupling in the stiffness chain)."""
+    D = space.n_drives
+    sel = space.g_arr["type"][::D] == guide_type
+    s, nt, b = space.nut_bearing_arrays(nut_sel, dtype)
+    g = {k: np.array([GUIDE_BEST[k](v[::D][sel])]) for k, v in space.g_arr.items() if k in GUIDE_BEST}
+    g["type"] = np.array([guide_type])
+    g = shaped(g, (1, 1, 1, 1), dtype)
+    ps = model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, None, None)
+    if space.m_arr is not None:
+        ps["coupling_stiffness"] = float(space.coupling_stiffnesses()[-1])
+        # the cheapest searched (motor, coupling) pair: the cost is a lower bound over every drive
+        price = np.nan_to_num(space.m_arr["price"][:D])
+        if space.c_arr is not None:
+            price = price + np.nan_to_num(space.c_arr["price"][:D])
+        ps["motor_price"], ps["coupling_price"] = float(price.min()), 0.0
+    return as_dtype(ps, dtype)
 
 
 def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
     """Per (mounting, nut, bearing) block of combinations: whether some guide (and drive) could meet the
     mechanical limits, and an upper bound of the objective over the block, both from one evaluation with
-    the optimistic guide of each guide type (:meth:`Space.params_optimistic_guide`).  Limits the drive
+    the optimistic guide of each guide type (:func:`optimistic_guide_params`).  Limits the drive
     changes, and the motor-torque limits, are left to the screening.  Returns a list over mountings of
     (ok, bound), each nuts x bearings."""
     _, N, B, _ = space.shape
@@ -36,7 +82,7 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
     step = max(1, SCREEN_CHUNK // max(B, 1))
     out = []
     for mounting in space.mountings:
-        xs = space.bound_positions(mounting).astype(np.float32)
+        xs = bound_positions(space, mounting).astype(np.float32)
         ok_all = np.zeros((N, B), dtype=bool)
         bound_all = np.full((N, B), -np.inf)
         # the model's outputs here do not depend on the limits: kept for the sensitivities' re-solves
@@ -72,7 +118,7 @@ def _block_outputs(space: Space, mounting: str, sl: slice, guide_type: str, xs, 
         return hit
     lo = space.preload_lo[sl].reshape(-1, 1, 1, 1).astype(np.float32)
     hi = space.preload_hi[sl].reshape(-1, 1, 1, 1).astype(np.float32)
-    p = space.params_optimistic_guide(mounting, sl, guide_type, dtype=np.float32)
+    p = optimistic_guide_params(space, mounting, sl, guide_type, dtype=np.float32)
     res = (model.axis_response(p, xs[-1:], mounting, lo, extras=False),
            model.axis_response(p, xs, mounting, hi, extras=False))
     if keep:
@@ -88,41 +134,3 @@ def screen_ok(c, out):
         v = np.asarray(v)[..., 0] if np.ndim(v) else v
     lim = c.limit * (1.0 + SCREEN_RTOL) if c.sense == "<=" else c.limit * (1.0 - SCREEN_RTOL)
     return np.asarray(v <= lim if c.sense == "<=" else v >= lim, dtype=bool)
-
-
-
-def interval_min_abs(t_lo, t_hi):
-    """min |T| over preloads between two ends where T is affine in the preload: 0 if it changes sign."""
-    t_lo, t_hi = np.asarray(t_lo), np.asarray(t_hi)
-    return np.where(t_lo * t_hi <= 0, 0.0, np.minimum(np.abs(t_lo), np.abs(t_hi)))
-
-
-def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np.ndarray:
-    """An upper bound of a motor-torque margin over every preload between the two ends of ``out_lo`` and
-    ``out_hi`` (screening).  Each phase torque is affine in the preload (through the nut's drag), so its
-    smallest magnitude over the interval is known; the thrusts grow with the preload.  RMS: a linear piece
-    (T0^2 + T0 T1 + T1^2)/3 >= (T0^2 + T1^2)/6, and = T0^2 for a constant one."""
-    v_lo = np.asarray(out_lo[c.key])
-    if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor): nothing to bound
-        return v_lo
-    thrust = "thrust_torque" if c.key == "margin_motor_peak_torque" else "mean_thrust_torque"
-    # what the margin compares the torque with (the peak: the zone at each phase's speed, referred to the flat
-    # peak; the RMS: rms_torque_ratio x rated), recovered exactly from the margin at the interval's low end
-    need_lo = np.asarray(out_lo["needed_motor_peak_torque" if c.key == "margin_motor_peak_torque"
-                                else "needed_motor_rated_torque"])
-    available = v_lo * need_lo
-    ends = [(interval_min_abs(a0, b0), interval_min_abs(a1, b1))
-            for (a0, a1), (b0, b1) in zip(out_lo["duty_torques"], out_hi["duty_torques"])]
-    if c.key == "margin_motor_peak_torque":  # each phase's smallest |T| referred to the flat peak (zone factor)
-        lb = np.asarray(out_lo[thrust])
-        for (m0, m1), k in zip(ends, out_lo["zone_factors"]):
-            lb = np.maximum(lb, np.maximum(m0, m1) * k)
-    else:
-        total = sum(ph.duration for ph in phases)
-        acc = 0.0
-        for ph, (m0, m1) in zip(phases, ends):
-            acc = acc + ph.duration * (m0 * m0 if ph.a0 == ph.a1 else (m0 * m0 + m1 * m1) / 6.0)
-        lb = np.maximum(np.sqrt(acc / total) if total > 0 else 0.0, np.asarray(out_lo[thrust]))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        bound = np.where(lb > 0, available / lb, np.inf)
-    return np.where(v_lo >= 1e8, v_lo, bound)  # not applicable (no motor): as is

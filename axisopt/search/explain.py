@@ -9,7 +9,7 @@ Two ways to the same answer:
 * *best-first over blocks* (default method): every (mounting, nut, bearing) block -- all its guides and
   drives -- gets the best value any of its combinations could reach on each limit, and so a lower bound of
   its combinations' miss scores: for the mechanical limits from one evaluation with the optimistic guide of
-  each guide type (:meth:`Space.params_optimistic_guide`); for the drive's (motor and coupling checks,
+  each guide type (:func:`.bounds.optimistic_guide_params`); for the drive's (motor and coupling checks,
   inertia ratio), which the optimistic guide does not bound (less friction can raise a deceleration
   torque), from the drive block evaluated in interval arithmetic (:mod:`.interval`) per drive pair over the
   range of moving mass and drag torque the block's guides give (:func:`drive_optimism`).  Blocks are scored
@@ -26,11 +26,12 @@ import numpy as np
 from .. import model
 from ..model.drive import drive as drive_block
 from ..model.limits import CHECK_RECORDS
+from .bounds import bound_positions, optimistic_guide_params
 from .candidates import candidate_values
 from .constraints import End, as_vector
 from .interval import Interval, ends
 from .result import Infeasibility
-from .space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive
+from .space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive, shaped
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block
@@ -128,7 +129,7 @@ def _bounded(c) -> bool:
 def block_optimism(space: Space, constraints, drive: bool = True):
     """Per mounting and (nut, bearing) block: for each limit a value no combination of the block beats at the
     limit's favourable preload end -- the limits the optimistic guide bounds from it (profiles on
-    :meth:`Space.bound_positions`), the drive's from :func:`drive_optimism` (unless not ``drive``) -- and a
+    :func:`.bounds.bound_positions`), the drive's from :func:`drive_optimism` (unless not ``drive``) -- and a
     lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
     _, N, B, _ = space.shape
     bounded = [c for c in constraints if _bounded(c)]
@@ -143,7 +144,7 @@ def block_optimism(space: Space, constraints, drive: bool = True):
     few = all(c.sense == ">=" for c in bounded if c.profile)
     out = []
     for mounting in space.mountings:
-        x = space.bound_positions(mounting) if few else space.positions(mounting)
+        x = bound_positions(space, mounting) if few else space.positions(mounting)
         step = max(1, CHUNK // max(B * len(x), 1))
         best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints}
         for n0 in range(0, N, step):
@@ -152,7 +153,7 @@ def block_optimism(space: Space, constraints, drive: bool = True):
             hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
             shape = (sl.stop - sl.start, B)
             for t in types if bounded else ():
-                p = space.params_optimistic_guide(mounting, sl, str(t))
+                p = optimistic_guide_params(space, mounting, sl, str(t))
                 out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
                 out_hi = respond(p, x, mounting, hi, drive_block=False)
                 for c in bounded:
@@ -190,7 +191,7 @@ def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict
     parameter an interval over its group: a group's bound holds each of its bearings' blocks.  The best over
     the drive pairs bounds the block.  Returns {limit name: (nuts, bearings)}."""
     pm = space.params_structured(mounting, nut_slice, mechanics=True)  # (nuts, bearings, guides, 1)
-    pd = space.params_drive_pairs(mounting, nut_slice)  # (nuts, bearings, drive pairs, 1)
+    pd = drive_pair_params(space, mounting, nut_slice)  # (nuts, bearings, drive pairs, 1)
     B = space.shape[2]
     full = (nut_slice.stop - nut_slice.start, B, space.shape[3] // max(space.n_drives, 1), 1)
     torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[0, :, 0, 0]
@@ -434,3 +435,16 @@ def _closest_designs(space: Space, constraints, objective, combos) -> list:
         cand.misses = misses
         out.append(cand)
     return out
+
+
+def drive_pair_params(space: Space, mounting: str, nut_sel) -> dict:
+    """Parameters over (nuts ``nut_sel``, bearings, drive pairs, 1) with the first guide's columns: for the
+    drive block (:func:`axisopt.model.drive.drive`), which takes the guide only through the moving mass
+    and the drag torque passed to it (the explanation's interval bounds over the guides)."""
+    D = space.n_drives
+    s, nt, b = space.nut_bearing_arrays(nut_sel, float)
+    g = shaped({k: v[:1] for k, v in space.g_arr.items()}, (1, 1, 1, 1), float)
+    mo = None if space.m_arr is None else shaped({k: v[:D] for k, v in space.m_arr.items()}, (1, 1, -1, 1), float)
+    cp = None if space.c_arr is None else shaped({k: v[:D] for k, v in space.c_arr.items()}, (1, 1, -1, 1),
+                                                 float)
+    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, mo, cp)

@@ -15,10 +15,10 @@ import time
 import numpy as np
 
 from .. import model
-from .bounds import SCREEN_RTOL, convex_margin_bound, screen_ok
-from .constraints import End
+from .bounds import SCREEN_RTOL, bound_positions, screen_ok
+from .constraints import Constraint, End
 from .objective import ObjectiveSpec
-from .space import DRIVE_KEYS, Space
+from .space import DRIVE_KEYS, SCREEN_CHUNK, Space, as_dtype
 
 
 def screen(space: Space, constraints, objective: ObjectiveSpec):
@@ -26,7 +26,7 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
 
     Two structured evaluations per block of nuts: at the lowest allowed preload on one position (the
     preload-independent limits and the ones that favour a low preload) and at the highest allowed
-    preload on :meth:`Space.bound_positions` (the limits that favour a high preload and the bound).
+    preload on :func:`.bounds.bound_positions` (the limits that favour a high preload and the bound).
     Screening runs in float32 for memory bandwidth; every test is relaxed by SCREEN_RTOL and the bound
     raised by it, so rounding can only keep a combination, never drop one (exact checks follow in
     float64).
@@ -40,7 +40,7 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     """
     t0 = time.perf_counter()
     N = space.shape[1]
-    step = space.nuts_per_screen()
+    step = nuts_per_screen(space)
     idx_parts, bound_parts = [], []
     for mi in range(len(space.mountings)):
         for n0 in range(0, N, step):
@@ -98,7 +98,7 @@ def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, o
     mech = _mechanical(constraints)
     low_end = [c for c in mech if c.favourable is not End.HIGH]  # independent or favoured by a low preload
     high_end = [c for c in mech if c.favourable is End.HIGH]
-    xs = space.bound_positions(mounting).astype(np.float32)
+    xs = bound_positions(space, mounting).astype(np.float32)
     x1 = xs[-1:]
     p = space.params_structured(mounting, nuts, dtype=np.float32, mechanics=True)
     lo = space.preload_lo[nut_idx].reshape(-1, 1, 1, 1).astype(np.float32)
@@ -127,7 +127,7 @@ DRIVE_CHUNK = 50_000  # (combination, drive) pairs per block of the drive stage 
 def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg, bound):
     """The drive stage of :func:`screen`: each mechanical survivor (nut nn, bearing bb, guide gg) times
     every (motor, coupling) pair, checked on the limits the drive changes at the lowest and highest allowed
-    preload (float64, same slack), structured over (survivor, drive pair) (:meth:`Space.params_drives`:
+    preload (float64, same slack), structured over (survivor, drive pair) (:func:`drive_params`:
     the mechanics once per survivor, the drive once per pair).  Returns the survivors' (nut, bearing,
     guide-and-drive, bound)."""
     D = space.n_drives
@@ -141,7 +141,7 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
     for s0 in range(0, len(nn), rows):
         n_, b_, g_, bd = nn[s0:s0 + rows], bb[s0:s0 + rows], gg[s0:s0 + rows], bound[s0:s0 + rows]
         K = len(n_)
-        p = space.params_drives(mounting, n_, b_, g_)
+        p = drive_params(space, mounting, n_, b_, g_)
         lo, hi = space.preload_lo[n_][:, None, None], space.preload_hi[n_][:, None, None]
         with np.errstate(all="ignore"):
             out_lo = model.drive_response(p, lo)
@@ -158,3 +158,64 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
         out_parts.append((n_[k], b_[k], g_[k] * D + d, bd[k]))
     return tuple(np.concatenate([o[i] for o in out_parts]) for i in range(4))
 
+
+def nuts_per_screen(space: Space) -> int:
+    """Nuts per structured screening block: each covers every bearing and (mechanical) guide."""
+    _, _, B, G = space.shape
+    Gm = G // (space.n_drives if space.m_arr is not None else 1)
+    return max(1, SCREEN_CHUNK // max(B * Gm, 1))
+
+
+def drive_params(space: Space, mounting: str, n, b, g, dtype=float) -> dict:
+    """Parameters over (K mechanical combinations, D drive pairs, 1 position): screw, nut, bearing and guide
+    columns of the combinations (nut ``n``, bearing ``b``, mechanical guide ``g``) shaped (K, 1, 1), the
+    searched (motor, coupling) pairs (1, D, 1); element (k, d) is guide-and-drive ``g[k] * D + d``."""
+    D = space.n_drives
+
+    def pick(d, i):
+        return {k: v[i][:, None, None] for k, v in d.items()}
+
+    def pairs(d):
+        return None if d is None else {k: v[:D][None, :, None] for k, v in d.items()}
+
+    ps = model.axis_params(space.problem.axis_for(mounting), pick(space.s_arr, n), pick(space.n_arr, n),
+                           pick(space.b_arr, b), pick(space.g_arr, np.asarray(g) * D), pairs(space.m_arr),
+                           pairs(space.c_arr))
+    return as_dtype(ps, dtype)
+
+
+def interval_min_abs(t_lo, t_hi):
+    """min |T| over preloads between two ends where T is affine in the preload: 0 if it changes sign."""
+    t_lo, t_hi = np.asarray(t_lo), np.asarray(t_hi)
+    return np.where(t_lo * t_hi <= 0, 0.0, np.minimum(np.abs(t_lo), np.abs(t_hi)))
+
+
+def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np.ndarray:
+    """An upper bound of a motor-torque margin over every preload between the two ends of ``out_lo`` and
+    ``out_hi`` (screening).  Each phase torque is affine in the preload (through the nut's drag), so its
+    smallest magnitude over the interval is known; the thrusts grow with the preload.  RMS: a linear piece
+    (T0^2 + T0 T1 + T1^2)/3 >= (T0^2 + T1^2)/6, and = T0^2 for a constant one."""
+    v_lo = np.asarray(out_lo[c.key])
+    if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor): nothing to bound
+        return v_lo
+    thrust = "thrust_torque" if c.key == "margin_motor_peak_torque" else "mean_thrust_torque"
+    # what the margin compares the torque with (the peak: the zone at each phase's speed, referred to the flat
+    # peak; the RMS: rms_torque_ratio x rated), recovered exactly from the margin at the interval's low end
+    need_lo = np.asarray(out_lo["needed_motor_peak_torque" if c.key == "margin_motor_peak_torque"
+                                else "needed_motor_rated_torque"])
+    available = v_lo * need_lo
+    ends = [(interval_min_abs(a0, b0), interval_min_abs(a1, b1))
+            for (a0, a1), (b0, b1) in zip(out_lo["duty_torques"], out_hi["duty_torques"])]
+    if c.key == "margin_motor_peak_torque":  # each phase's smallest |T| referred to the flat peak (zone factor)
+        lb = np.asarray(out_lo[thrust])
+        for (m0, m1), k in zip(ends, out_lo["zone_factors"]):
+            lb = np.maximum(lb, np.maximum(m0, m1) * k)
+    else:
+        total = sum(ph.duration for ph in phases)
+        acc = 0.0
+        for ph, (m0, m1) in zip(phases, ends):
+            acc = acc + ph.duration * (m0 * m0 if ph.a0 == ph.a1 else (m0 * m0 + m1 * m1) / 6.0)
+        lb = np.maximum(np.sqrt(acc / total) if total > 0 else 0.0, np.asarray(out_lo[thrust]))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        bound = np.where(lb > 0, available / lb, np.inf)
+    return np.where(v_lo >= 1e8, v_lo, bound)  # not applicable (no motor): as is

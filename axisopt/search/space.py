@@ -25,30 +25,15 @@ import numpy as np
 from .. import model
 from ..problem import Problem
 
-# The guide values that favour every mechanical limit and the objective (the optimistic guide of the block
-# bounds): the table carries the blocks, so less block mass, rail mass, friction, price and preload, and more
-# rigidity, damping and load rating never make a design worse.  The drive's limits (motor torques, where
-# less friction can raise a deceleration torque) are not bounded this way (DRIVE_KEYS: checked per pair).
-GUIDE_BEST = {"normal_rigidity": np.nanmax, "tangential_rigidity": np.nanmax, "friction_force": np.nanmin,
-              "friction_coefficient": np.nanmin, "friction_viscous": np.nanmin, "damping": np.nanmax,
-              "block_mass": np.nanmin,
-              "rail_mass_per_length": np.nanmin, "block_price": np.nanmin, "rail_price_per_length": np.nanmin,
-              "dynamic_load_rating": np.nanmax, "preload": np.nanmin,
-              # carriage (issue 25): a higher static or moment rating never loads a block more
-              "static_load_rating": np.nanmax, "moment_roll": np.nanmax, "moment_pitch": np.nanmax,
-              "moment_yaw": np.nanmax}
-
-
-
 SCREEN_CHUNK = 4_000_000  # combinations per structured screening block (memory)
 
 
-def _shaped(d, shape, dtype) -> dict:
+def shaped(d, shape, dtype) -> dict:
     """Each column of ``d`` reshaped to ``shape`` (broadcast layout); float columns cast to ``dtype``."""
     return {k: (v.reshape(shape).astype(dtype) if v.dtype.kind == "f" else v.reshape(shape)) for k, v in d.items()}
 
 
-def _as_dtype(ps: dict, dtype) -> dict:
+def as_dtype(ps: dict, dtype) -> dict:
     """A parameter dict with its arrays cast to ``dtype`` (float32 screening)."""
     if np.dtype(dtype) == np.float64:
         return ps
@@ -130,15 +115,6 @@ class Space:
             self._cache[key] = model.positions(self.problem.axis_for(mounting))
         return self._cache[key]
 
-    def bound_positions(self, mounting: str) -> np.ndarray:
-        """A few grid positions; the minimum over them bounds the minimum over the grid from above."""
-        x = self.positions(mounting)
-        n = len(x)
-        idx = {0, n // 2, n - 1}
-        if mounting == "fixed-fixed":
-            idx.add(int(np.argmin(np.abs(x - 0.5 * self.problem.axis.span))))
-        return x[sorted(idx)]
-
     # ------------------------------------------------------------------ parameter dicts
     def coupling_stiffnesses(self) -> np.ndarray:
         """The distinct torsional stiffnesses [N m/rad] of the searched drive pairs (the axis value for a
@@ -164,69 +140,29 @@ class Space:
         key = ("ps", mounting, nkey, np.dtype(dtype).name, mechanics, coupling_stiffness)
         if bearings is None and key in self._cache:
             return self._cache[key]
-        s, nt, b = self._nut_bearing_arrays(nut_slice, dtype, bearings)
+        s, nt, b = self.nut_bearing_arrays(nut_slice, dtype, bearings)
         D = self.n_drives if mechanics else 1
-        g = _shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
-        mo = None if self.m_arr is None or mechanics else _shaped(self.m_arr, (1, 1, -1, 1), dtype)
-        cp = None if self.c_arr is None or mechanics else _shaped(self.c_arr, (1, 1, -1, 1), dtype)
+        g = shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
+        mo = None if self.m_arr is None or mechanics else shaped(self.m_arr, (1, 1, -1, 1), dtype)
+        cp = None if self.c_arr is None or mechanics else shaped(self.c_arr, (1, 1, -1, 1), dtype)
         ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
         if mechanics and coupling_stiffness is not None:
             ps["coupling_stiffness"] = coupling_stiffness
-        ps = _as_dtype(ps, dtype)
+        ps = as_dtype(ps, dtype)
         if bearings is None:  # pair layouts are built once each (the explanation's scored blocks): not kept
             if len(self._cache) > 64:
                 self._cache.clear()
             self._cache[key] = ps
         return ps
 
-    def params_optimistic_guide(self, mounting: str, nut_sel, guide_type: str, dtype=float) -> dict:
-        """Parameters over (nuts ``nut_sel``, bearings, one guide, positions) where the one guide takes, column
-        by column, the most favourable value of the searched guides of ``guide_type`` (:data:`GUIDE_BEST`).
-        No mechanical limit and no objective value of any (nut, bearing, guide) combination is better than
-        with this guide, so the (nut, bearing) results bound every guide (and every drive: the axis values
-        stand in for motor and coupling, with the stiffest searched coupling in the stiffness chain)."""
-        D = self.n_drives
-        sel = self.g_arr["type"][::D] == guide_type
-        s, nt, b = self._nut_bearing_arrays(nut_sel, dtype)
-        g = {k: np.array([GUIDE_BEST[k](v[::D][sel])]) for k, v in self.g_arr.items() if k in GUIDE_BEST}
-        g["type"] = np.array([guide_type])
-        g = _shaped(g, (1, 1, 1, 1), dtype)
-        ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, None, None)
-        if self.m_arr is not None:
-            ps["coupling_stiffness"] = float(self.coupling_stiffnesses()[-1])
-            # the cheapest searched (motor, coupling) pair: the cost is a lower bound over every drive
-            price = np.nan_to_num(self.m_arr["price"][:D])
-            if self.c_arr is not None:
-                price = price + np.nan_to_num(self.c_arr["price"][:D])
-            ps["motor_price"], ps["coupling_price"] = float(price.min()), 0.0
-        return _as_dtype(ps, dtype)
-
-    def params_drive_pairs(self, mounting: str, nut_sel) -> dict:
-        """Parameters over (nuts ``nut_sel``, bearings, drive pairs, 1) with the first guide's columns: for the
-        drive block (:func:`axisopt.model.drive.drive`), which takes the guide only through the moving mass
-        and the drag torque passed to it (the explanation's interval bounds over the guides)."""
-        D = self.n_drives
-        s, nt, b = self._nut_bearing_arrays(nut_sel, float)
-        g = _shaped({k: v[:1] for k, v in self.g_arr.items()}, (1, 1, 1, 1), float)
-        mo = None if self.m_arr is None else _shaped({k: v[:D] for k, v in self.m_arr.items()}, (1, 1, -1, 1), float)
-        cp = None if self.c_arr is None else _shaped({k: v[:D] for k, v in self.c_arr.items()}, (1, 1, -1, 1),
-                                                     float)
-        return model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
-
-    def _nut_bearing_arrays(self, nut_sel, dtype, bearings=None) -> tuple:
+    def nut_bearing_arrays(self, nut_sel, dtype=float, bearings=None) -> tuple:
         """Screw and nut columns of the nuts ``nut_sel`` on the first axis, every bearing on the second (or,
         with ``bearings`` aligned with the nuts, those bearings on the first axis too)."""
-        s = _shaped({k: v[nut_sel] for k, v in self.s_arr.items()}, (-1, 1, 1, 1), dtype)
-        nt = _shaped({k: v[nut_sel] for k, v in self.n_arr.items()}, (-1, 1, 1, 1), dtype)
+        s = shaped({k: v[nut_sel] for k, v in self.s_arr.items()}, (-1, 1, 1, 1), dtype)
+        nt = shaped({k: v[nut_sel] for k, v in self.n_arr.items()}, (-1, 1, 1, 1), dtype)
         if bearings is not None:
-            return s, nt, _shaped({k: v[bearings] for k, v in self.b_arr.items()}, (-1, 1, 1, 1), dtype)
-        return s, nt, _shaped(self.b_arr, (1, -1, 1, 1), dtype)
-
-    def nuts_per_screen(self) -> int:
-        """Nuts per structured screening block: each covers every bearing and (mechanical) guide."""
-        _, _, B, G = self.shape
-        Gm = G // (self.n_drives if self.m_arr is not None else 1)
-        return max(1, SCREEN_CHUNK // max(B * Gm, 1))
+            return s, nt, shaped({k: v[bearings] for k, v in self.b_arr.items()}, (-1, 1, 1, 1), dtype)
+        return s, nt, shaped(self.b_arr, (1, -1, 1, 1), dtype)
 
     def params_flat(self, mounting: str, n, b, g) -> dict:
         def pick(d, i):
@@ -235,23 +171,6 @@ class Space:
                                  pick(self.b_arr, b), pick(self.g_arr, g),
                                  None if self.m_arr is None else pick(self.m_arr, g),
                                  None if self.c_arr is None else pick(self.c_arr, g))
-
-    def params_drives(self, mounting: str, n, b, g, dtype=float) -> dict:
-        """Parameters over (K mechanical combinations, D drive pairs, 1 position): screw, nut, bearing and guide
-        columns of the combinations (nut ``n``, bearing ``b``, mechanical guide ``g``) shaped (K, 1, 1), the
-        searched (motor, coupling) pairs (1, D, 1); element (k, d) is guide-and-drive ``g[k] * D + d``."""
-        D = self.n_drives
-
-        def pick(d, i):
-            return {k: v[i][:, None, None] for k, v in d.items()}
-
-        def pairs(d):
-            return None if d is None else {k: v[:D][None, :, None] for k, v in d.items()}
-
-        ps = model.axis_params(self.problem.axis_for(mounting), pick(self.s_arr, n), pick(self.n_arr, n),
-                               pick(self.b_arr, b), pick(self.g_arr, np.asarray(g) * D), pairs(self.m_arr),
-                               pairs(self.c_arr))
-        return _as_dtype(ps, dtype)
 
     def part_rows(self, n, b, g):
         """(screw, nut, bearing, guide, motor, coupling) rows of part-axis numbers; ``g`` is the guide-and-

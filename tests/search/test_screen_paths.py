@@ -10,10 +10,11 @@ from test_block_search import _problem
 from axisopt import mathx as mx
 from axisopt import model
 from axisopt.search import screen as core
-from axisopt.search.bounds import convex_margin_bound, screen_ok
+from axisopt.search.bounds import screen_ok
 from axisopt.search.constraints import build_constraints
 from axisopt.search.objective import objective_spec
 from axisopt.search.parts import build_space
+from axisopt.search.screen import convex_margin_bound
 from axisopt.search.space import DRIVE_KEYS
 
 
