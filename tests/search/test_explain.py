@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_block_search import _problem
+from test_bounds import _problem
 
 from axisopt.problem import load_problem
 from axisopt.search import explain as E

@@ -5,7 +5,7 @@ fixed seeds."""
 
 import numpy as np
 import pytest
-from test_block_search import _problem
+from test_bounds import _problem
 
 from axisopt import mathx as mx
 from axisopt import model
