@@ -36,7 +36,7 @@ GUIDE_BEST = {"normal_rigidity": np.nanmax, "tangential_rigidity": np.nanmax, "f
 
 def bound_positions(space: Space, mounting: str) -> np.ndarray:
     """A few grid positions; the minimum over them bounds the minimum over the grid from above."""
-    x = space.positions(mounting)
+    x = space.grid[mounting]
     n = len(x)
     idx = {0, n // 2, n - 1}
     if mounting == "fixed-fixed":
@@ -58,7 +58,7 @@ def optimistic_guide_params(space: Space, mounting: str, nut_sel, guide_type: st
     g = shaped(g, (1, 1, 1, 1), dtype)
     ps = model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, None, None)
     if space.m_arr is not None:
-        ps["coupling_stiffness"] = float(space.coupling_stiffnesses()[-1])
+        ps["coupling_stiffness"] = float(space.coupling_k[-1])
         # the cheapest searched (motor, coupling) pair: the cost is a lower bound over every drive
         price = np.nan_to_num(space.m_arr["price"][:D])
         if space.c_arr is not None:

@@ -144,7 +144,7 @@ def block_optimism(space: Space, constraints, drive: bool = True):
     few = all(c.sense == ">=" for c in bounded if c.profile)
     out = []
     for mounting in space.mountings:
-        x = bound_positions(space, mounting) if few else space.positions(mounting)
+        x = bound_positions(space, mounting) if few else space.grid[mounting]
         step = max(1, CHUNK // max(B * len(x), 1))
         best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints}
         for n0 in range(0, N, step):
@@ -243,7 +243,7 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     M, (_, N, B, _) = len(space.mountings), space.shape
     lb = np.stack([o[1] for o in opt])  # (M, N, B)
     vals = {name: np.stack([o[0][name] for o in opt]) for name in opt[0][0]}
-    G, X = space.shape[3], max(len(space.positions(m)) for m in space.mountings)
+    G, X = space.shape[3], max(len(space.grid[m]) for m in space.mountings)
     rows = max(1, CHUNK // max(G * X, 1))  # (nut, bearing) pairs scored per evaluation
     fits = np.broadcast_to(space.fits, (M, N, B))
     usable = fits if fits.any() else np.ones_like(fits)  # the tally counts fitting combinations if any fit
@@ -307,7 +307,7 @@ def miss_scores(space: Space, constraints, tally: _Tally | None = None):
     _, N, B, G = space.shape
     D = space.n_drives if space.m_arr is not None else 1
     for mi, mounting in enumerate(space.mountings):
-        x = space.positions(mounting)
+        x = space.grid[mounting]
         step = max(1, CHUNK // max(B * (G // D) * len(x), B * G, 1))
         for n0 in range(0, N, step):
             yield from _score_nuts(space, constraints, tally, mi, np.arange(n0, min(N, n0 + step)))
@@ -329,13 +329,13 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     Gm = G // D
     drive = [c for c in constraints if two_stage and c.key in DRIVE_KEYS]
     # limits the coupling's stiffness changes: evaluated once per distinct stiffness, mapped to the pairs
-    k_cpl = space.coupling_stiffnesses() if two_stage else np.zeros(0)
+    k_cpl = space.coupling_k if two_stage else np.zeros(0)
     cpl = [c for c in constraints if two_stage and c.key in COUPLING_KEYS]
     mech = [c for c in constraints if c not in drive and c not in cpl]
     if two_stage:
         pair_k = space.c_arr["torsional_stiffness"][:D] if space.c_arr is not None else np.full(D, k_cpl[0])
         group = np.searchsorted(k_cpl, pair_k)
-    x = space.positions(mounting)
+    x = space.grid[mounting]
     nut_idx = np.asarray(nut_idx, dtype=np.int64)
     nc = len(nut_idx)
     pairs = bearing_idx is not None
@@ -415,7 +415,7 @@ def _closest_designs(space: Space, constraints, objective, combos) -> list:
         grid = np.linspace(space.preload_lo[n], space.preload_hi[n], G, axis=1)  # as np.linspace(lo, hi, G) each
         mounting = space.mountings[mi]
         p = space.params_flat(mounting, np.repeat(n, G), np.repeat(b, G), np.repeat(g, G))
-        out = respond(p, space.positions(mounting), mounting, grid.reshape(-1, 1))
+        out = respond(p, space.grid[mounting], mounting, grid.reshape(-1, 1))
         tot = np.zeros(len(rows) * G)
         for c in constraints:
             tot += c.violation(as_vector(c.value(out), len(rows) * G))

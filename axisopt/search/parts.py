@@ -14,6 +14,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from .. import model
 from ..catalog import USER_STATUS
 from ..errors import InputError
 from ..model.params import columns_read
@@ -64,7 +65,11 @@ def build_space(problem: Problem) -> Space:
         if len(_SPACES) >= SPACES_KEPT:
             _SPACES.pop(next(iter(_SPACES)))
         _SPACES[key] = hit = (problem.catalog, sp)
-    return replace(hit[1], problem=problem, _cache={})
+    sp = replace(hit[1], problem=problem, _cache={})
+    sp.grid = {m: model.positions(problem.axis_for(m)) for m in sp.mountings}
+    if sp.c_arr is None:
+        sp.coupling_k = np.array([float(problem.axis.coupling_stiffness)])
+    return sp
 
 
 def _build_space(problem: Problem) -> Space:
@@ -141,6 +146,8 @@ def _build_space(problem: Problem) -> Space:
     sp.shape = (len(sp.mountings), len(nuts), len(bearings), len(guides) * D)
     sp.size = int(np.prod(sp.shape))
     sp.pruned_by_dominance = int(sp.size // D * sp.pairs_left_out)
+    if sp.c_arr is not None:
+        sp.coupling_k = np.unique(sp.c_arr["torsional_stiffness"])
     return sp
 
 

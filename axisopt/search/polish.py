@@ -41,7 +41,7 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
             continue
         p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))
         p1 = model.one_design(p)
-        res = solve_preload(mounting, space.positions(mounting), p1, lo, hi, constraints, objective,
+        res = solve_preload(mounting, space.grid[mounting], p1, lo, hi, constraints, objective,
                                 guess=pre)
         solved += 1
         if not res.success:
@@ -62,7 +62,7 @@ def feasible_at(space: Space, combo: int, preload: float, constraints) -> bool:
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
     p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))
-    out = respond(p, space.positions(mounting), mounting, np.array([[preload]]))
+    out = respond(p, space.grid[mounting], mounting, np.array([[preload]]))
     return bool(ok_all(constraints, out, 1)[0])
 
 

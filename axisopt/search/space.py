@@ -93,6 +93,10 @@ class Space:
     shape: tuple = ()  # (mountings, nuts, bearings, guides x drives)
     size: int = 0  # combinations
     pruned_by_dominance: int = 0  # combinations left out by pairs_left_out (not in size)
+    # the distinct torsional stiffnesses [N m/rad] of the searched drive pairs (the axis value for a pair without a
+    # coupling), ascending, and the model position grid of each mounting [m] (of the problem's axis)
+    coupling_k: np.ndarray = field(repr=False, default=None)
+    grid: dict = field(repr=False, default_factory=dict)
     _cache: dict = field(repr=False, default_factory=dict)
 
     def unravel(self, idx):
@@ -107,21 +111,16 @@ class Space:
             if len(sel) == 0:
                 continue
             n, b, g = n_i[sel], b_i[sel], g_i[sel]
-            yield mounting, sel, n, b, g, self.params_flat(mounting, n, b, g), self.positions(mounting)
+            yield mounting, sel, n, b, g, self.params_flat(mounting, n, b, g), self.grid[mounting]
 
     def positions(self, mounting: str) -> np.ndarray:
-        key = ("x", mounting)
-        if key not in self._cache:
-            self._cache[key] = model.positions(self.problem.axis_for(mounting))
-        return self._cache[key]
+        """The model position grid of ``mounting`` [m] (:attr:`grid`)."""
+        return self.grid[mounting]
 
     # ------------------------------------------------------------------ parameter dicts
     def coupling_stiffnesses(self) -> np.ndarray:
-        """The distinct torsional stiffnesses [N m/rad] of the searched drive pairs (the axis value for a
-        pair without a coupling), ascending."""
-        if self.c_arr is None:
-            return np.array([float(self.problem.axis.coupling_stiffness)])
-        return np.unique(self.c_arr["torsional_stiffness"])
+        """The distinct torsional stiffnesses [N m/rad] of the searched drive pairs, ascending (:attr:`coupling_k`)."""
+        return self.coupling_k
 
     def params_structured(self, mounting: str, nut_slice=slice(None), dtype=float, mechanics: bool = False,
                           coupling_stiffness: float | None = None, bearings=None) -> dict:
@@ -134,7 +133,7 @@ class Space:
         by default the stiffest searched coupling, so that the stiffness and frequency are upper bounds
         over every drive pair (the screening relaxes their limits with them; exact solves use the pair)."""
         if mechanics and self.m_arr is not None and coupling_stiffness is None:
-            coupling_stiffness = float(self.coupling_stiffnesses()[-1])
+            coupling_stiffness = float(self.coupling_k[-1])
         nkey = (nut_slice.start, nut_slice.stop) if isinstance(nut_slice, slice) else \
             np.asarray(nut_slice, dtype=np.int64).tobytes()
         key = ("ps", mounting, nkey, np.dtype(dtype).name, mechanics, coupling_stiffness)
