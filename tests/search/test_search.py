@@ -155,7 +155,7 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
     """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
     the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
     combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
-    from axisopt.search.constraints import as_vector as _vec
+    from axisopt.search.constraints import as_vector
     from axisopt.search.explain import RULE_WEIGHT, miss_scores, weight
     from axisopt.search.space import respond
 
@@ -172,7 +172,7 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
         hi = respond(prm, x, mounting, sp.preload_hi[n][:, None])
         ref[sel] += np.where(sp.fits[n, b], 0.0, RULE_WEIGHT)  # a compatibility rule outweighs every limit
         for c in cons:
-            v_lo, v_hi = _vec(c.value(lo), k), _vec(c.value(hi), k)
+            v_lo, v_hi = as_vector(c.value(lo), k), as_vector(c.value(hi), k)
             if c.convex:
                 v = np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
             else:
