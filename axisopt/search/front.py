@@ -9,7 +9,7 @@ sensitivities (:func:`limit_sensitivities`) and what of the optimum rests on est
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Callable
 
@@ -37,17 +37,12 @@ class Task:
     constraints: tuple
     objective: ObjectiveSpec
 
-    def with_(self, constraints=None, objective=None) -> Task:
-        """The same task with other constraints or another objective."""
-        return Task(self.problem, self.space, self.constraints if constraints is None else constraints,
-                    self.objective if objective is None else objective)
-
 
 def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task:
     """The task of ``problem``: its search space, constraints and objective (``objective``: another one)."""
     from .parts import build_space
 
-    space = build_space(problem)  # (each stage is imported as the task reaches it)
+    space = build_space(problem)  # each stage module is imported when a solve first reaches it
     from .constraints import build_constraints
 
     constraints = build_constraints(problem)
@@ -159,7 +154,7 @@ def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0:
 
     problem, ob = task.problem, task.problem.objective
     primary, secondary = ob.order
-    first = m.run(task.with_(objective=objective_spec(primary)), m.name, 1, time_limit, t0)
+    first = m.run(replace(task, objective=objective_spec(primary)), m.name, 1, time_limit, t0)
     if first.best is None:
         return first
     j1 = first.best.objective
@@ -167,7 +162,7 @@ def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0:
     lim = LIMITS[GOALS[primary].limit]
     extra = limit_constraint(lim.key, floor * lim.factor, f"lexicographic {primary}",
                              f"{primary} within {ob.tolerance:g} of its best {j1:.6g}")
-    res = m.run(task.with_(constraints=task.constraints + (extra,)), m.name, top, time_limit, t0)
+    res = m.run(replace(task, constraints=task.constraints + (extra,)), m.name, top, time_limit, t0)
     res.objective_label = f"{ob.label}: primary best {j1:.6g} {first.objective_unit}; " + res.objective_label
     res.certificate.notes = res.certificate.notes + (
         f"stage 1 ({primary}): {first.certificate.exact_evaluations} exact evaluations, "
