@@ -13,7 +13,7 @@ from .bounds import block_bounds
 from .objective import ObjectiveSpec, objective_floor
 from .preload import concat_exact, exact_solve
 from .result import SearchStats
-from .screen import nuts_per_screen, screen_nuts
+from .screen import screen_nuts
 from .space import Space
 
 
@@ -50,7 +50,7 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     bm, bn, bb, bv = bm[order].astype(int), bn[order].astype(int), bb[order].astype(int), bv[order]
     t_screen = time.perf_counter() - t0
     _, N, B, _ = space.shape
-    per_group = nuts_per_screen(space)
+    per_group = space.nuts_per_block
     pos, batch, n_eval, screened_blocks, feasible = 0, 64, 0, 0, 0
     group = 1  # distinct nuts per screened group: grows as long as no incumbent prunes
     pool_idx, pool_bnd = np.zeros(0, np.int64), np.zeros(0)

@@ -13,13 +13,6 @@ import numpy as np
 GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a convex limit
 BISECTION_STEPS = 52
 SEARCH_POINTS = 64  # k-ary threshold search (default method): most preloads tried per round in one evaluation
-SEARCH_ROWS = 4096  # ... as long as the combinations times the points stay about this many rows per evaluation
-
-
-def search_points(k: int) -> int:
-    """Preloads per round of :func:`kary_threshold` for ``k`` combinations: many while a model evaluation
-    costs mostly its fixed Python overhead (few combinations), 2 (bisection) once the rows cost more."""
-    return int(max(2, min(SEARCH_POINTS, 2 ** round(math.log2(SEARCH_ROWS / max(k, 1) + 1)))))
 
 
 def golden_best(value, a, b, steps=GOLDEN_STEPS):

@@ -25,7 +25,7 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
     """(:func:`make_candidate`'s Candidate, the model's values of its design: ``Evaluation.values``)."""
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
-    screw, nut, bearing, guide, motor, coupling = space.part_rows(n, b, g)
+    screw, nut, bearing, guide, motor, coupling = part_rows(space, n, b, g)
     lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
     preload = float(min(max(preload, lo), hi))
     design = Design(axis=space.problem.axis_for(mounting), screw=screw, nut=nut, bearing=bearing, guide=guide,
@@ -48,3 +48,11 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
                      outputs={lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v}
                      ), v
 
+
+def part_rows(space: Space, n, b, g):
+    """(screw, nut, bearing, guide, motor, coupling) rows of part-axis numbers; ``g`` is the guide-and-
+    drive index (motor and coupling None where the axis values stand in)."""
+    gi, di = divmod(int(g), space.n_drives)
+    mi, ci = space.drives[di]
+    return (space.screws.row(n), space.nuts.row(n), space.bearings.row(b), space.guides.row(gi),
+            None if mi is None else space.motors.row(mi), None if ci is None else space.couplings.row(ci))

@@ -24,6 +24,7 @@ import numpy as np
 from .. import mathx, model
 from ..model.limits import CHECK_RECORDS, CONVEX, LIMITS
 from ..problem import Problem
+from .objective import min_last
 
 PROFILE = frozenset(model.PROFILE_OUTPUTS)  # outputs given per position: a limit reads their minimum
 
@@ -100,20 +101,6 @@ class Constraint:
         if limit is None and self.limit <= 0:
             return v / self.factor
         return v / lim - 1.0
-
-
-def min_last(v):
-    """Minimum over the last (position) axis; elementwise chains for short axes (much faster)."""
-    v = np.asarray(v)
-    if v.ndim == 0:
-        return v
-    n = v.shape[-1]
-    if n > 8:
-        return np.min(v, axis=-1)
-    m = v[..., 0]
-    for i in range(1, n):
-        m = np.minimum(m, v[..., i])
-    return m
 
 
 def as_vector(v, K):

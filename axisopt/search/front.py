@@ -43,13 +43,12 @@ def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task
     from .parts import build_space
 
     space = build_space(problem)  # each stage module is imported when a solve first reaches it
-    from .constraints import build_constraints
-
-    constraints = build_constraints(problem)
     from .objective import objective_spec
 
-    return Task(problem, space, constraints,
-                objective_spec(problem.objective.mode, problem) if objective is None else objective)
+    objective = objective_spec(problem.objective.mode, problem) if objective is None else objective
+    from .constraints import build_constraints
+
+    return Task(problem, space, build_constraints(problem), objective)
 
 
 def _run_search(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:

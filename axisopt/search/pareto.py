@@ -22,7 +22,7 @@ from .objective import objective_spec
 from .parts import build_space
 from .preload import concat_exact, exact_solve
 from .result import INFEASIBLE, OPTIMAL, Certificate, ParetoFront, SearchStats, SolveResult
-from .screen import nuts_per_screen, screen_nuts
+from .screen import screen_nuts
 
 # per Pareto key (axisopt.problem.OBJECTIVE_TABLE): maximised or minimised, display unit, Candidate field
 SENSE = {k: g.sense for k, g in GOALS.items() if g.pareto}
@@ -80,7 +80,7 @@ def screen_feasible_blocks(space, constraints, spec):
     GD = space.shape[3]
     idx = []
     screened = 0
-    step = nuts_per_screen(space)
+    step = space.nuts_per_block
     for mi, (ok, _bound) in enumerate(block_bounds(space, constraints, spec)):
         nuts = np.nonzero(ok.any(axis=1))[0]
         screened += int(ok.sum()) * GD

@@ -21,7 +21,7 @@ from ..model.params import columns_read
 from ..parttable import PartTable
 from ..physics import nut as pnut
 from ..problem import Problem
-from .space import Space
+from .space import SCREEN_CHUNK, Space
 
 _SCREW_COLS, _NUT_COLS, _BEARING_COLS, _GUIDE_COLS, _MOTOR_COLS, _COUPLING_COLS = (
     columns_read(t) for t in ("screws", "nuts", "bearings", "guides", "motors", "couplings"))
@@ -146,6 +146,9 @@ def _build_space(problem: Problem) -> Space:
     sp.shape = (len(sp.mountings), len(nuts), len(bearings), len(guides) * D)
     sp.size = int(np.prod(sp.shape))
     sp.pruned_by_dominance = int(sp.size // D * sp.pairs_left_out)
+    # each block covers every bearing and (mechanical) guide
+    Gm = sp.shape[3] // (D if sp.m_arr is not None else 1)
+    sp.nuts_per_block = max(1, SCREEN_CHUNK // max(sp.shape[2] * Gm, 1))
     if sp.c_arr is not None:
         sp.coupling_k = np.unique(sp.c_arr["torsional_stiffness"])
     return sp

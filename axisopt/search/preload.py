@@ -10,16 +10,36 @@ favour a low preload; a motor-torque limit (convex in the preload) lowers it int
 
 from __future__ import annotations
 
+import math
 from dataclasses import fields
 
 import numpy as np
 
 from ..units import N_PER_UM
-from .bracket import BISECTION_STEPS, golden_best, kary_threshold, search_points
+from .bracket import BISECTION_STEPS, SEARCH_POINTS, golden_best, kary_threshold
 from .constraints import Constraint, as_vector, ok_all
 from .objective import ObjectiveSpec
 from .result import Exact
-from .space import Space, repeat_rows, respond, respond_drive, subset
+from .space import Space, respond, respond_drive
+
+SEARCH_ROWS = 4096  # threshold search: combinations times preloads per model evaluation, about
+
+
+def search_points(k: int) -> int:
+    """Preloads per round of :func:`kary_threshold` for ``k`` combinations: many while a model evaluation
+    costs mostly its fixed Python overhead (few combinations), 2 (bisection) once the rows cost more."""
+    return int(max(2, min(SEARCH_POINTS, 2 ** round(math.log2(SEARCH_ROWS / max(k, 1) + 1)))))
+
+
+def subset(p: dict, j, k: int) -> dict:
+    """The parameters of rows ``j`` of a flat layout of ``k`` combinations (the duty cycle is shared)."""
+    return {kk: (v[j] if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v) for kk, v in p.items()}
+
+
+def repeat_rows(p: dict, k: int, r: int) -> dict:
+    """A flat layout of ``k`` combinations with every row repeated ``r`` times (row i*r + j is row i)."""
+    return {kk: (np.repeat(v, r, axis=0) if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v)
+            for kk, v in p.items()}
 
 
 def new_exact(idx) -> Exact:

@@ -18,7 +18,7 @@ from .. import model
 from .bounds import SCREEN_RTOL, bound_positions, screen_ok
 from .constraints import Constraint, End
 from .objective import ObjectiveSpec
-from .space import DRIVE_KEYS, SCREEN_CHUNK, Space, as_dtype
+from .space import DRIVE_KEYS, Space, as_dtype
 
 
 def screen(space: Space, constraints, objective: ObjectiveSpec):
@@ -40,7 +40,7 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     """
     t0 = time.perf_counter()
     N = space.shape[1]
-    step = nuts_per_screen(space)
+    step = space.nuts_per_block
     idx_parts, bound_parts = [], []
     for mi in range(len(space.mountings)):
         for n0 in range(0, N, step):
@@ -157,13 +157,6 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
         k, d = np.nonzero(ok)
         out_parts.append((n_[k], b_[k], g_[k] * D + d, bd[k]))
     return tuple(np.concatenate([o[i] for o in out_parts]) for i in range(4))
-
-
-def nuts_per_screen(space: Space) -> int:
-    """Nuts per structured screening block: each covers every bearing and (mechanical) guide."""
-    _, _, B, G = space.shape
-    Gm = G // (space.n_drives if space.m_arr is not None else 1)
-    return max(1, SCREEN_CHUNK // max(B * Gm, 1))
 
 
 def drive_params(space: Space, mounting: str, n, b, g, dtype=float) -> dict:

@@ -93,6 +93,7 @@ class Space:
     shape: tuple = ()  # (mountings, nuts, bearings, guides x drives)
     size: int = 0  # combinations
     pruned_by_dominance: int = 0  # combinations left out by pairs_left_out (not in size)
+    nuts_per_block: int = 1  # nuts per structured screening block: about SCREEN_CHUNK (nut, bearing, guide)s
     # the distinct torsional stiffnesses [N m/rad] of the searched drive pairs (the axis value for a pair without a
     # coupling), ascending, and the model position grid of each mounting [m] (of the problem's axis)
     coupling_k: np.ndarray = field(repr=False, default=None)
@@ -170,25 +171,3 @@ class Space:
                                  pick(self.b_arr, b), pick(self.g_arr, g),
                                  None if self.m_arr is None else pick(self.m_arr, g),
                                  None if self.c_arr is None else pick(self.c_arr, g))
-
-    def part_rows(self, n, b, g):
-        """(screw, nut, bearing, guide, motor, coupling) rows of part-axis numbers; ``g`` is the guide-and-
-        drive index (motor and coupling None where the axis values stand in)."""
-        gi, di = divmod(int(g), self.n_drives)
-        mi, ci = self.drives[di]
-        return (self.screws.row(n), self.nuts.row(n), self.bearings.row(b), self.guides.row(gi),
-                None if mi is None else self.motors.row(mi), None if ci is None else self.couplings.row(ci))
-
-
-
-def subset(p: dict, j, k: int) -> dict:
-    """The parameters of rows ``j`` of a flat layout of ``k`` combinations (the duty cycle is shared)."""
-    return {kk: (v[j] if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v) for kk, v in p.items()}
-
-
-
-def repeat_rows(p: dict, k: int, r: int) -> dict:
-    """A flat layout of ``k`` combinations with every row repeated ``r`` times (row i*r + j is row i)."""
-    return {kk: (np.repeat(v, r, axis=0) if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v)
-            for kk, v in p.items()}
-
