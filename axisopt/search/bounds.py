@@ -29,7 +29,7 @@ GUIDE_BEST = {"normal_rigidity": np.nanmax, "tangential_rigidity": np.nanmax, "f
               "block_mass": np.nanmin,
               "rail_mass_per_length": np.nanmin, "block_price": np.nanmin, "rail_price_per_length": np.nanmin,
               "dynamic_load_rating": np.nanmax, "preload": np.nanmin,
-              # carriage (issue 25): a higher static or moment rating never loads a block more
+              # carriage (model.carriage): a higher static or moment rating never loads a block more
               "static_load_rating": np.nanmax, "moment_roll": np.nanmax, "moment_pitch": np.nanmax,
               "moment_yaw": np.nanmax}
 
