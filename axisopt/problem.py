@@ -65,9 +65,73 @@ from .model import CHECKS
 from .model.limits import LIMITS
 from .yamlio import Key, Section, Spec, close_matches, read_yaml
 
-OBJECTIVE_MODES = ("stiffness", "frequency", "weighted", "lexicographic", "pareto", "tool_stiffness", "kv")
-PERFORMANCE = ("stiffness", "frequency")
-PARETO_KEYS = ("stiffness", "frequency", "cost", "total_mass", "moving_mass", "mass")
+
+@dataclass(frozen=True)
+class Goal:
+    """One objective a problem may name: maximised or minimised, the minimum over the stroke of a profile.
+
+    key         : its name in the problem file (``objective: {mode: key}``, ``pareto: [...]``)
+    limit       : the limit on the same model output (``model.limits.LIMIT_TABLE``): the output, its display
+                  unit and factor, and the sense (a ``>=`` limit: maximised) come from there
+    field       : the :class:`axisopt.search.result.Candidate` field holding its value ('' if none)
+    what        : what it is, for the mode's label (``maximise minimum <what>``)
+    label       : the search's objective label, of a scalar mode
+    mode        : a scalar objective mode of its own
+    performance : combinable in a weighted or lexicographic objective
+    pareto      : allowed in a Pareto front
+    """
+
+    key: str
+    limit: str
+    field: str = ""
+    what: str = ""
+    label: str = ""
+    mode: bool = False
+    performance: bool = False
+    pareto: bool = False
+
+    @property
+    def output(self) -> str:
+        return LIMITS[self.limit].output
+
+    @property
+    def unit(self) -> str:
+        return LIMITS[self.limit].unit
+
+    @property
+    def factor(self) -> float:
+        """SI per display unit."""
+        return LIMITS[self.limit].factor
+
+    @property
+    def sense(self) -> str:
+        """'max' or 'min'."""
+        return "max" if LIMITS[self.limit].sense == ">=" else "min"
+
+
+# Every objective, declared once: the problem reader's modes and Pareto keys, the labels, the search's
+# objective functions (axisopt.search.objective) and the Pareto front's senses, units and fields derive from it.
+# A new objective: one Goal here plus the physics of its output (and its limit in LIMIT_TABLE).
+OBJECTIVE_TABLE = (
+    Goal("stiffness", "min_stiffness", "min_stiffness", "axial stiffness", "minimum axial stiffness", mode=True,
+         performance=True, pareto=True),
+    Goal("frequency", "min_frequency", "min_frequency", "first natural frequency",
+         "minimum first natural frequency", mode=True, performance=True, pareto=True),
+    Goal("tool_stiffness", "min_tool_stiffness", "", "stiffness at the tool", "minimum stiffness at the tool",
+         mode=True),
+    Goal("kv", "min_kv", "", "achievable position-loop gain Kv", "minimum achievable position-loop gain Kv",
+         mode=True),
+    Goal("cost", "max_cost", "cost", pareto=True),
+    Goal("total_mass", "max_total_mass", "total_mass", pareto=True),
+    Goal("moving_mass", "max_moving_mass", "moving_mass", pareto=True),
+)
+GOALS = MappingProxyType({g.key: g for g in OBJECTIVE_TABLE})
+PARETO_ALIASES = MappingProxyType({"mass": "total_mass"})
+COMBINED_MODES = ("weighted", "lexicographic", "pareto")  # modes built from the goals
+PERFORMANCE = tuple(g.key for g in OBJECTIVE_TABLE if g.performance)
+OBJECTIVE_MODES = PERFORMANCE + COMBINED_MODES + tuple(g.key for g in OBJECTIVE_TABLE
+                                                       if g.mode and not g.performance)
+PARETO_KEYS = tuple(g.key for g in OBJECTIVE_TABLE if g.pareto) + tuple(PARETO_ALIASES)
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")
 SLOTS = MECH_SLOTS + ("motor", "coupling")
 SLOT_TABLE = MappingProxyType({"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides",
@@ -96,13 +160,12 @@ class Objective:
             return " then ".join(f"max min {k}" for k in self.order) + f" (tolerance {self.tolerance:g})"
         if self.mode == "pareto":
             return "Pareto front of " + ", ".join(self.pareto)
-        what = {"stiffness": "axial stiffness", "frequency": "first natural frequency",
-                "tool_stiffness": "stiffness at the tool", "kv": "achievable position-loop gain Kv"}[self.mode]
-        return f"maximise minimum {what}"
+        return f"maximise minimum {GOALS[self.mode].what}"
 
 
 def _fmt_si(key, value):
-    return f"{value / 1e6:g} N/um" if key == "stiffness" else f"{value:g} Hz"
+    g = GOALS[key]
+    return f"{value / g.factor:g} {g.unit}"
 
 
 DEFAULT_STATUS = ("vendor", "stiffness-derived", USER_STATUS)
@@ -352,7 +415,7 @@ def _read_objective(root: Section) -> Objective:
         for k in keys:
             if k not in PARETO_KEYS:
                 raise sec.error("pareto", f"unknown Pareto objective '{k}'; use {', '.join(PARETO_KEYS)}")
-        keys = ["total_mass" if k == "mass" else k for k in keys]
+        keys = [PARETO_ALIASES.get(k, k) for k in keys]
         if len(set(keys)) != len(keys):
             raise sec.error("pareto", "Pareto objectives repeat")
         kw.update(pareto=tuple(keys))

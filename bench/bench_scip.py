@@ -13,7 +13,7 @@ from pathlib import Path
 
 from axisopt.problem import load_problem
 from axisopt.search import solve
-from axisopt.search.space import build_space
+from axisopt.search.parts import build_space
 
 PROBLEMS = sorted((Path(__file__).resolve().parents[1] / "problems").glob("*_problem.yaml"))
 

@@ -1,6 +1,6 @@
 """Screening throughput of the default search (a benchmark, not a test).
 
-Times :func:`axisopt.search.core.screen` (every nut of every mounting, each covering all its bearings, guides
+Times :func:`axisopt.search.screen.screen` (every nut of every mounting, each covering all its bearings, guides
 and drives) on the shipped problems and on the synthetic catalogs of bench/bench_scale.py, and prints the
 designs screened per second: the combinations the screened nuts cover / seconds.  Each timing is the best of
 ``--repeat`` runs (the machine may be shared).  ``--check FILE`` saves (or, when FILE exists, compares) the
@@ -44,8 +44,10 @@ def main(argv=None):
     ap.add_argument("--synthetic", nargs="*", type=float, default=[1e6, 1e7])
     ap.add_argument("--check", help="npz file of survivors and bounds: written if absent, else compared")
     args = ap.parse_args(argv)
-    from axisopt.search.core import screen
-    from axisopt.search.space import build_constraints, build_space, objective_spec
+    from axisopt.search.constraints import build_constraints
+    from axisopt.search.objective import objective_spec
+    from axisopt.search.parts import build_space
+    from axisopt.search.screen import screen
 
     saved = dict(np.load(args.check)) if args.check and Path(args.check).exists() else None
     new = {}

@@ -9,7 +9,7 @@ Two ways to the same answer:
 * *best-first over blocks* (default method): every (mounting, nut, bearing) block -- all its guides and
   drives -- gets the best value any of its combinations could reach on each limit, and so a lower bound of
   its combinations' miss scores: for the mechanical limits from one evaluation with the optimistic guide of
-  each guide type (:meth:`Space.params_optimistic_guide`); for the drive's (motor and coupling checks,
+  each guide type (:func:`.bounds.optimistic_guide_params`); for the drive's (motor and coupling checks,
   inertia ratio), which the optimistic guide does not bound (less friction can raise a deceleration
   torque), from the drive block evaluated in interval arithmetic (:mod:`.interval`) per drive pair over the
   range of moving mass and drag torque the block's guides give (:func:`drive_optimism`).  Blocks are scored
@@ -26,10 +26,12 @@ import numpy as np
 from .. import model
 from ..model.drive import drive as drive_block
 from ..model.limits import CHECK_RECORDS
-from .core import candidate_values
+from .bounds import bound_positions, optimistic_guide_params
+from .candidates import candidate_values
+from .constraints import End, as_vector
 from .interval import Interval, ends
 from .result import Infeasibility
-from .space import COUPLING_KEYS, DRIVE_KEYS, Space, _vec, respond, respond_drive
+from .space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive, shaped
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block
@@ -79,10 +81,11 @@ def _favourable(c, out_lo, out_hi, shape):
     be None, or without the chain outputs, when no limit read there needs them)."""
     def val(o):
         return np.broadcast_to(_last(c, c.value(o)), shape)
-    if c.convex:
+    end = c.favourable
+    if end is End.INTERVAL:
         v_lo, v_hi = val(out_lo), val(out_hi)
         return np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
-    return val(out_hi) if c.lower_type else val(out_lo)
+    return val(out_hi) if end is End.HIGH else val(out_lo)
 
 
 def _closest(top_idx, top_score, idx, score, n):
@@ -119,14 +122,14 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
 
 def _bounded(c) -> bool:
     """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
-    limits of :func:`axisopt.search.core.block_bounds`: not the drive's, except the cost)."""
+    limits of :func:`axisopt.search.bounds.block_bounds`: not the drive's, except the cost)."""
     return not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")
 
 
 def block_optimism(space: Space, constraints, drive: bool = True):
     """Per mounting and (nut, bearing) block: for each limit a value no combination of the block beats at the
     limit's favourable preload end -- the limits the optimistic guide bounds from it (profiles on
-    :meth:`Space.bound_positions`), the drive's from :func:`drive_optimism` (unless not ``drive``) -- and a
+    :func:`.bounds.bound_positions`), the drive's from :func:`drive_optimism` (unless not ``drive``) -- and a
     lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
     _, N, B, _ = space.shape
     bounded = [c for c in constraints if _bounded(c)]
@@ -141,7 +144,7 @@ def block_optimism(space: Space, constraints, drive: bool = True):
     few = all(c.sense == ">=" for c in bounded if c.profile)
     out = []
     for mounting in space.mountings:
-        x = space.bound_positions(mounting) if few else space.positions(mounting)
+        x = bound_positions(space, mounting) if few else space.grid[mounting]
         step = max(1, CHUNK // max(B * len(x), 1))
         best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints}
         for n0 in range(0, N, step):
@@ -150,7 +153,7 @@ def block_optimism(space: Space, constraints, drive: bool = True):
             hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
             shape = (sl.stop - sl.start, B)
             for t in types if bounded else ():
-                p = space.params_optimistic_guide(mounting, sl, str(t))
+                p = optimistic_guide_params(space, mounting, sl, str(t))
                 out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
                 out_hi = respond(p, x, mounting, hi, drive_block=False)
                 for c in bounded:
@@ -188,7 +191,7 @@ def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict
     parameter an interval over its group: a group's bound holds each of its bearings' blocks.  The best over
     the drive pairs bounds the block.  Returns {limit name: (nuts, bearings)}."""
     pm = space.params_structured(mounting, nut_slice, mechanics=True)  # (nuts, bearings, guides, 1)
-    pd = space.params_drive_pairs(mounting, nut_slice)  # (nuts, bearings, drive pairs, 1)
+    pd = drive_pair_params(space, mounting, nut_slice)  # (nuts, bearings, drive pairs, 1)
     B = space.shape[2]
     full = (nut_slice.stop - nut_slice.start, B, space.shape[3] // max(space.n_drives, 1), 1)
     torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[0, :, 0, 0]
@@ -240,7 +243,7 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     M, (_, N, B, _) = len(space.mountings), space.shape
     lb = np.stack([o[1] for o in opt])  # (M, N, B)
     vals = {name: np.stack([o[0][name] for o in opt]) for name in opt[0][0]}
-    G, X = space.shape[3], max(len(space.positions(m)) for m in space.mountings)
+    G, X = space.shape[3], max(len(space.grid[m]) for m in space.mountings)
     rows = max(1, CHUNK // max(G * X, 1))  # (nut, bearing) pairs scored per evaluation
     fits = np.broadcast_to(space.fits, (M, N, B))
     usable = fits if fits.any() else np.ones_like(fits)  # the tally counts fitting combinations if any fit
@@ -304,7 +307,7 @@ def miss_scores(space: Space, constraints, tally: _Tally | None = None):
     _, N, B, G = space.shape
     D = space.n_drives if space.m_arr is not None else 1
     for mi, mounting in enumerate(space.mountings):
-        x = space.positions(mounting)
+        x = space.grid[mounting]
         step = max(1, CHUNK // max(B * (G // D) * len(x), B * G, 1))
         for n0 in range(0, N, step):
             yield from _score_nuts(space, constraints, tally, mi, np.arange(n0, min(N, n0 + step)))
@@ -326,13 +329,13 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     Gm = G // D
     drive = [c for c in constraints if two_stage and c.key in DRIVE_KEYS]
     # limits the coupling's stiffness changes: evaluated once per distinct stiffness, mapped to the pairs
-    k_cpl = space.coupling_stiffnesses() if two_stage else np.zeros(0)
+    k_cpl = space.coupling_k if two_stage else np.zeros(0)
     cpl = [c for c in constraints if two_stage and c.key in COUPLING_KEYS]
     mech = [c for c in constraints if c not in drive and c not in cpl]
     if two_stage:
         pair_k = space.c_arr["torsional_stiffness"][:D] if space.c_arr is not None else np.full(D, k_cpl[0])
         group = np.searchsorted(k_cpl, pair_k)
-    x = space.positions(mounting)
+    x = space.grid[mounting]
     nut_idx = np.asarray(nut_idx, dtype=np.int64)
     nc = len(nut_idx)
     pairs = bearing_idx is not None
@@ -412,10 +415,10 @@ def _closest_designs(space: Space, constraints, objective, combos) -> list:
         grid = np.linspace(space.preload_lo[n], space.preload_hi[n], G, axis=1)  # as np.linspace(lo, hi, G) each
         mounting = space.mountings[mi]
         p = space.params_flat(mounting, np.repeat(n, G), np.repeat(b, G), np.repeat(g, G))
-        out = respond(p, space.positions(mounting), mounting, grid.reshape(-1, 1))
+        out = respond(p, space.grid[mounting], mounting, grid.reshape(-1, 1))
         tot = np.zeros(len(rows) * G)
         for c in constraints:
-            tot += c.violation(_vec(c.value(out), len(rows) * G))
+            tot += c.violation(as_vector(c.value(out), len(rows) * G))
         best = np.argmin(tot.reshape(len(rows), G), axis=1)  # first of equal misses, as one design alone
         pre[rows] = grid[np.arange(len(rows)), best]
     out = []
@@ -432,3 +435,16 @@ def _closest_designs(space: Space, constraints, objective, combos) -> list:
         cand.misses = misses
         out.append(cand)
     return out
+
+
+def drive_pair_params(space: Space, mounting: str, nut_sel) -> dict:
+    """Parameters over (nuts ``nut_sel``, bearings, drive pairs, 1) with the first guide's columns: for the
+    drive block (:func:`axisopt.model.drive.drive`), which takes the guide only through the moving mass
+    and the drag torque passed to it (the explanation's interval bounds over the guides)."""
+    D = space.n_drives
+    s, nt, b = space.nut_bearing_arrays(nut_sel, float)
+    g = shaped({k: v[:1] for k, v in space.g_arr.items()}, (1, 1, 1, 1), float)
+    mo = None if space.m_arr is None else shaped({k: v[:D] for k, v in space.m_arr.items()}, (1, 1, -1, 1), float)
+    cp = None if space.c_arr is None else shaped({k: v[:D] for k, v in space.c_arr.items()}, (1, 1, -1, 1),
+                                                 float)
+    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, mo, cp)

@@ -13,15 +13,21 @@ import time
 
 import numpy as np
 
-from ..errors import InputError
-from .core import _concat, block_bounds, exhaustive_search, make_candidate, screen_nuts
-from .result import Certificate, ParetoFront, SolveResult
-from .space import build_constraints, build_space, exact_solve, objective_spec
+from ..problem import GOALS
+from .bounds import block_bounds
+from .candidates import make_candidate
+from .constraints import build_constraints
+from .exhaustive import exhaustive_search
+from .objective import objective_spec
+from .parts import build_space
+from .preload import concat_exact, exact_solve
+from .result import INFEASIBLE, OPTIMAL, Certificate, ParetoFront, SearchStats, SolveResult
+from .screen import screen_nuts
 
-SENSE = {"stiffness": "max", "frequency": "max", "cost": "min", "total_mass": "min", "moving_mass": "min"}
-UNIT = {"stiffness": "N/um", "frequency": "Hz", "cost": "EUR", "total_mass": "kg", "moving_mass": "kg"}
-FIELD = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost", "total_mass": "total_mass",
-          "moving_mass": "moving_mass"}
+# per Pareto key (axisopt.problem.OBJECTIVE_TABLE): maximised or minimised, display unit, Candidate field
+SENSE = {k: g.sense for k, g in GOALS.items() if g.pareto}
+UNIT = {k: g.unit for k, g in GOALS.items() if g.pareto}
+FIELD = {k: g.field for k, g in GOALS.items() if g.pareto}
 
 
 CLOUD = 4000  # feasible designs drawn for the plot of the front
@@ -68,13 +74,13 @@ def nondominated(points: np.ndarray, block: int = 2048) -> np.ndarray:
 
 def screen_feasible_blocks(space, constraints, spec):
     """Screen only the (mounting, nut, bearing) blocks that some guide and drive could make feasible
-    (:func:`~.core.block_bounds`; every front point is feasible, so no bound on the objectives is used).
+    (:func:`.bounds.block_bounds`; every front point is feasible, so no bound on the objectives is used).
     Returns (survivors' combination numbers, seconds, combinations screened)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
     idx = []
     screened = 0
-    step = space.nuts_per_screen()
+    step = space.nuts_per_block
     for mi, (ok, _bound) in enumerate(block_bounds(space, constraints, spec)):
         nuts = np.nonzero(ok.any(axis=1))[0]
         screened += int(ok.sum()) * GD
@@ -88,9 +94,6 @@ def screen_feasible_blocks(space, constraints, spec):
 
 def solve_pareto(problem, method: str = "default", t0: float | None = None, max_points: int = 200) -> SolveResult:
     t0 = time.perf_counter() if t0 is None else t0
-    if method == "bonmin":
-        raise InputError("--method bonmin does not compute Pareto fronts; use default or exhaustive",
-                         source=problem.source)
     keys = problem.objective.pareto
     space = build_space(problem)
     constraints = build_constraints(problem)
@@ -101,12 +104,12 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     else:
         idx, t_screen, screened = screen_feasible_blocks(space, constraints, spec)
         parts = [exact_solve(space, idx[s: s + 200000], constraints, spec) for s in range(0, len(idx), 200000)]
-        ex = _concat(parts) if parts else exact_solve(space, [], constraints, spec)
-        info = {"combinations": space.size, "feasible": int(len(idx)), "pruned_by_bound": 0,
-                "exact_evaluations": int(len(idx)), "gap": 0.0, "proven": True, "screening_time": t_screen,
-                "screening_rate": space.size / max(t_screen, 1e-9), "screened": screened,
-                "pruned_by_block": space.size - screened}
-    info["pruned_by_dominance"] = space.pruned_by_dominance
+        ex = concat_exact(parts) if parts else exact_solve(space, [], constraints, spec)
+        info = SearchStats(combinations=space.size, feasible=int(len(idx)), pruned_by_bound=0,
+                           exact_evaluations=int(len(idx)), gap=0.0, proven=True, screening_time=t_screen,
+                           screening_rate=space.size / max(t_screen, 1e-9), screened=screened,
+                           pruned_by_block=space.size - screened)
+    info.pruned_by_dominance = space.pruned_by_dominance
     ok = np.nonzero(ex.feasible)[0]
     cols = []
     for k in keys:
@@ -123,13 +126,13 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
                      "in the JSON point count")
     pts = [make_candidate(space, int(ex.idx[j]), float(ex.preload[j]), spec, rank=r + 1)
            for r, j in enumerate(front[:max_points])]
-    info["feasible"] = int(len(ok))
-    cert = Certificate(nlps_solved=0, nlp_failures=0, notes=tuple(notes + [f"front size {len(front)}"]), **info)
+    info.feasible = int(len(ok))
+    cert = Certificate.of(info, 0, 0, notes + [f"front size {len(front)}"])
     sample = ok if len(ok) <= CLOUD else np.random.default_rng(0).choice(ok, CLOUD, replace=False)
     cloud = np.column_stack([getattr(ex, FIELD[k])[sample] for k in keys]) if len(ok) else None
     pf = ParetoFront(tuple(keys), tuple(SENSE[k] for k in keys), tuple(UNIT[k] for k in keys), pts,
                      feasible=int(len(ok)), cloud=cloud)
-    status = "optimal" if len(front) else "infeasible"
+    status = OPTIMAL if len(front) else INFEASIBLE
     res = SolveResult(status, method, problem.name, problem.objective.label, "-", pts[0] if pts else None, [],
                       cert, time.perf_counter() - t0, pareto=pf)
     if not len(front):

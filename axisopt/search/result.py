@@ -1,11 +1,81 @@
-"""Result dataclasses of a sizing search (plain data; JSON-ready through ``to_dict``)."""
+"""Result dataclasses of a sizing search (plain data; JSON-ready through ``to_dict``), the statuses a solve
+may end in (:data:`STATUS_TABLE`) and the statistics a search stage hands to the certificate
+(:class:`SearchStats`)."""
 
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, fields
+from types import MappingProxyType
+
+import numpy as np
 
 from ..display import fmt, frame, html_fields, html_table, one_line
+
+
+@dataclass(frozen=True)
+class Status:
+    """A status a solve may end in (``SolveResult.status``)."""
+
+    name: str
+    meaning: str
+    found: bool  # a design is returned
+    proven: bool  # the design is the proven optimum (or, for 'infeasible', no design exists)
+
+
+STATUS_TABLE = (
+    Status("optimal", "proven optimum over the catalog (gap 0)", True, True),
+    Status("feasible", "a design found, not proven optimal (Bonmin, or SCIP's point without proof)", True, False),
+    Status("time_limit", "stopped before the proof; gap > 0 or unknown", True, False),
+    Status("solver_failed", "an NLP or MINLP solve failed; see the message", True, False),
+    Status("infeasible", "no catalog combination meets every limit", False, True),
+)
+STATUSES = MappingProxyType({st.name: st for st in STATUS_TABLE})
+OPTIMAL, FEASIBLE, TIME_LIMIT, SOLVER_FAILED, INFEASIBLE = (st.name for st in STATUS_TABLE)
+
+
+@dataclass
+class SearchStats:
+    """What a search stage counted (the certificate's search fields; :meth:`Certificate.of`)."""
+
+    combinations: int  # in the search space
+    feasible: int | None  # passed screening (exhaustive: exactly feasible); None: not counted
+    pruned_by_bound: int  # feasible combinations never solved because their bound cannot win
+    exact_evaluations: int  # combinations whose continuous problem was solved
+    gap: float  # relative optimality gap; 0 when proven
+    proven: bool
+    screening_time: float = 0.0  # [s]
+    screening_rate: float = 0.0  # combinations / s
+    pruned_by_block: int = 0  # default method: combinations never screened (their block cannot win)
+    screened: int | None = None  # default method: combinations screened one by one
+    pruned_by_dominance: int = 0  # combinations never formed (dominated drive pairs)
+
+
+@dataclass
+class Exact:
+    """The exact per-combination optimum of the continuous problem, over K combinations
+    (:func:`.preload.exact_solve`, :func:`.exhaustive.grid_solve`)."""
+
+    idx: np.ndarray  # combination numbers
+    feasible: np.ndarray
+    preload: np.ndarray  # [N]
+    objective: np.ndarray  # display units, -inf where infeasible
+    cost: np.ndarray  # [EUR]
+    total_mass: np.ndarray  # [kg]
+    moving_mass: np.ndarray  # [kg]
+    min_stiffness: np.ndarray  # [N/um] at the chosen preload
+    min_frequency: np.ndarray  # [Hz]
+
+
+@dataclass
+class NLPResult:
+    """IPOPT's answer for one combination (:func:`.polish.solve_preload`)."""
+
+    success: bool
+    status: str
+    preload: float  # [N]
+    objective: float  # display units
+
 
 # Candidate fields as table columns, the display unit in the name (Candidate's fields are in these units).
 CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"), ("min_stiffness", "min_stiffness [N/um]"),
@@ -99,6 +169,12 @@ class Certificate:
     # the objective and the active limits and checks of the best design that rest on estimated part values (not
     # the vendor's table): model.estimates.Resting.to_dict() each; empty when every active value is a vendor's
     estimated: tuple = ()
+
+    @classmethod
+    def of(cls, stats: SearchStats, nlps: int = 0, fails: int = 0, notes=()) -> Certificate:
+        """The certificate of a search's statistics, its NLP solves and failures and its notes."""
+        return cls(nlps_solved=nlps, nlp_failures=fails, notes=tuple(notes),
+                   **{f.name: getattr(stats, f.name) for f in fields(SearchStats)})
 
     def to_dict(self) -> dict:
         return {k: _clean(v) for k, v in asdict(self).items()}
@@ -216,8 +292,7 @@ class Infeasibility:
 class SolveResult:
     """The answer of :func:`axisopt.search.solve`.
 
-    status: 'optimal' (proven), 'infeasible', 'time_limit' (stopped; gap > 0 or unknown),
-    'solver_failed' (an NLP/MINLP failed; see message), 'feasible' (Bonmin: found, not proven).
+    status: one of :data:`STATUS_TABLE` ('optimal', 'feasible', 'time_limit', 'solver_failed', 'infeasible').
     """
 
     status: str
@@ -294,7 +369,7 @@ class SolveResult:
                 miss = [f"{k} by {fmt(100 * v)} %" for k, v in c.misses.items()]
                 fields["closest design misses"] = ", ".join(miss[:3]) + (f" and {len(miss) - 3} more"
                                                                          if len(miss) > 3 else "")
-        if self.message and self.status != "optimal":
+        if self.message and self.status != OPTIMAL:
             fields["note"] = self.message
         fields["proven"] = bool(self.certificate.proven)
         fields["time"] = f"{self.time:.2f} s"

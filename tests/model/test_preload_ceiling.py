@@ -61,7 +61,7 @@ def test_search_keeps_preloads_under_the_ceiling():
     # drag and life loose enough that the preload would climb above the ceiling if the range allowed it
     p = replace(p, catalog=p.catalog.replace(nuts=nuts)).with_limit("max_drag_torque", 20.0)
     p = p.with_limit("min_life", 1000 * 3600.0)
-    from axisopt.search.space import build_space
+    from axisopt.search.parts import build_space
     sp = build_space(p)
     ceiling = 0.1 * sp.nuts.number("dynamic_load_rating")
     assert (sp.preload_hi <= ceiling * (1 + 1e-12)).all() and (sp.preload_hi > 0.99 * ceiling).any()

@@ -13,8 +13,10 @@ from hypothesis import strategies as st
 from axisopt import mathx as mx
 from axisopt.physics import drive as pdr
 from axisopt.search import explain as E
+from axisopt.search.constraints import build_constraints
 from axisopt.search.interval import Interval, ends
-from axisopt.search.space import build_constraints, build_space, respond_drive
+from axisopt.search.parts import build_space
+from axisopt.search.space import respond_drive
 
 finite = st.floats(-1e3, 1e3, allow_nan=False)
 
@@ -67,7 +69,7 @@ def test_drive_bounds_hold_every_combination(seed, groups, monkeypatch):
     """Per (nut, bearing) block, each drive limit's interval bound is at least as good as the value of every
     guide and drive pair in it at the favourable preload end (weak motors: the drive limits are active); with
     the bearings taken one by one (8 groups of these 5 bearings) and together (2 groups, 1 group)."""
-    from test_explain_blocks import _case
+    from test_explain import _case
     monkeypatch.setattr(E, "DRIVE_BEARING_GROUPS", groups)
     p = _case(seed, "drive")
     sp, cons = build_space(p), build_constraints(p)

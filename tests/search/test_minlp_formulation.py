@@ -13,7 +13,7 @@ import pytest
 from axisopt.problem import load_problem
 from axisopt.search.minlp import formulation
 from axisopt.search.minlp.formulation import SLOTS, integral, one_hot_params, one_hot_symbols, recover, slot_params
-from axisopt.search.space import build_space
+from axisopt.search.parts import build_space
 
 TEACHING = Path(__file__).resolve().parents[2] / "problems" / "teaching_problem.yaml"
 
@@ -67,7 +67,7 @@ def test_recover_moves_the_preload_into_the_limits(monkeypatch):
     meets it (clipped to the nut's range), else None."""
     space = SimpleNamespace(shape=(2, 2, 1, 3), preload_lo=np.array([100.0, 200.0]),
                             preload_hi=np.array([300.0, 400.0]))
-    monkeypatch.setattr(formulation, "_feasible_at", lambda sp, combo, pre, cons: pre <= 350.0)
+    monkeypatch.setattr(formulation, "feasible_at", lambda sp, combo, pre, cons: pre <= 350.0)
     z = {"nut": [0.0, 1.0], "bearing": [1.0], "guide": [0.0, 0.0, 1.0]}
     combo = int(np.ravel_multi_index((1, 1, 0, 2), space.shape))
     got = recover(space, 1, z, lambda lo, hi: lo + 0.5 * (hi - lo), ())

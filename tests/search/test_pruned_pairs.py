@@ -8,7 +8,7 @@ import numpy as np
 from search_synthetic import add_drives, make_catalog, make_double, make_problem
 
 from axisopt.search import solve
-from axisopt.search.space import build_space
+from axisopt.search.parts import build_space
 
 
 def test_left_out_pairs_are_counted():

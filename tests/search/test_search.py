@@ -15,9 +15,12 @@ from axisopt.cli import main
 from axisopt.errors import InputError
 from axisopt.problem import Objective, load_problem
 from axisopt.search import solve
-from axisopt.search.core import exhaustive_search
+from axisopt.search.constraints import build_constraints
+from axisopt.search.exhaustive import exhaustive_search
+from axisopt.search.objective import objective_spec
 from axisopt.search.pareto import nondominated
-from axisopt.search.space import build_constraints, build_space, exact_solve, objective_spec
+from axisopt.search.parts import build_space
+from axisopt.search.preload import exact_solve
 
 PROBLEMS = sorted((Path(__file__).resolve().parents[2] / "problems").glob("*_problem.yaml"))
 
@@ -152,8 +155,9 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
     """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
     the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
     combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
+    from axisopt.search.constraints import as_vector
     from axisopt.search.explain import RULE_WEIGHT, miss_scores, weight
-    from axisopt.search.space import _vec, respond
+    from axisopt.search.space import respond
 
     p = _drive_problem(2, axis_coupling=2e3).with_limit("min_stiffness", 400e6)
     sp, cons = build_space(p), build_constraints(p)
@@ -168,7 +172,7 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
         hi = respond(prm, x, mounting, sp.preload_hi[n][:, None])
         ref[sel] += np.where(sp.fits[n, b], 0.0, RULE_WEIGHT)  # a compatibility rule outweighs every limit
         for c in cons:
-            v_lo, v_hi = _vec(c.value(lo), k), _vec(c.value(hi), k)
+            v_lo, v_hi = as_vector(c.value(lo), k), as_vector(c.value(hi), k)
             if c.convex:
                 v = np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
             else:
@@ -211,7 +215,7 @@ def test_life_limit_makes_preload_interior():
 
 
 def test_ipopt_agrees_with_exact_1d_solve():
-    from axisopt.search import nlp
+    from axisopt.search import polish as nlp
 
     cat = make_catalog(np.random.default_rng(3))
     make_double(cat)

@@ -22,9 +22,10 @@ import casadi as ca
 import numpy as np
 
 from ... import model
-from ..core import make_candidate
+from ...units import N_PER_UM
+from ..candidates import make_candidate
+from ..objective import STIFFNESS_OUTPUTS
 from ..result import Certificate, SolveResult
-from ..space import N_PER_UM, STIFFNESS_OUTPUTS
 from .formulation import SLOTS, integral, one_hot_params, one_hot_symbols, recover
 from .scaling import scaled_limit
 from .streams import quiet_stdout

@@ -19,7 +19,7 @@ from typing import Callable, Mapping
 import casadi as ca
 import numpy as np
 
-from ..core import _feasible_at
+from ..polish import feasible_at
 
 SLOTS = ("nut", "bearing", "guide")  # the one-hot slots, in the order of the space's axes 1..3
 
@@ -99,11 +99,11 @@ def recover(space, mounting_index: int, z: Mapping[str, np.ndarray], preload: Ca
     combo = int(np.ravel_multi_index((mounting_index, n, b, g), space.shape))
     lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
     pre = preload(lo, hi)
-    if _feasible_at(space, combo, pre, constraints):
+    if feasible_at(space, combo, pre, constraints):
         return Recovered(combo, pre, pre)
     for move in moves:
         p2 = float(np.clip(pre + move * max(hi - lo, 1.0), lo, hi))
-        if _feasible_at(space, combo, p2, constraints):
+        if feasible_at(space, combo, p2, constraints):
             return Recovered(combo, pre, p2)
     return Recovered(combo, pre, None)
 

@@ -26,9 +26,12 @@ import time
 import numpy as np
 
 from ...errors import InputError
-from ..core import bound_order_search, make_candidate
+from ...units import N_PER_UM
+from ..bestfirst import bound_order_search
+from ..candidates import make_candidate
+from ..objective import STIFFNESS_OUTPUTS
 from ..result import Certificate, SolveResult
-from ..space import N_PER_UM, STIFFNESS_OUTPUTS, respond
+from ..space import respond
 from .formulation import SLOTS, recover
 from .scaling import reciprocal_times, scaled_limit
 from .streams import c_stderr_to_file

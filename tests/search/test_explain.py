@@ -9,12 +9,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_block_search import _problem
+from test_bounds import _problem
 
 from axisopt.problem import load_problem
 from axisopt.search import explain as E
 from axisopt.search import solve
-from axisopt.search.space import build_constraints, build_space, objective_spec
+from axisopt.search.constraints import build_constraints
+from axisopt.search.objective import objective_spec
+from axisopt.search.parts import build_space
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from axisopt.problem import load_problem
-from axisopt.search import space as S
+from axisopt.search import parts as S
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -5,12 +5,17 @@ fixed seeds."""
 
 import numpy as np
 import pytest
-from test_block_search import _problem
+from test_bounds import _problem
 
 from axisopt import mathx as mx
 from axisopt import model
-from axisopt.search import core
-from axisopt.search.space import DRIVE_KEYS, build_constraints, build_space, convex_margin_bound, objective_spec
+from axisopt.search import screen as core
+from axisopt.search.bounds import screen_ok
+from axisopt.search.constraints import build_constraints
+from axisopt.search.objective import objective_spec
+from axisopt.search.parts import build_space
+from axisopt.search.screen import convex_margin_bound
+from axisopt.search.space import DRIVE_KEYS
 
 
 def _reference_drives(space, mounting, constraints, phases, nn, bb, gg):
@@ -29,7 +34,7 @@ def _reference_drives(space, mounting, constraints, phases, nn, bb, gg):
                 ub = np.asarray(convex_margin_bound(c, out_lo, out_hi, phases))
                 ok &= (ub >= c.limit * (1.0 - core.SCREEN_RTOL)).reshape(len(ne))
             else:
-                ok &= core._screen_ok(c, out_lo).reshape(len(ne))
+                ok &= screen_ok(c, out_lo).reshape(len(ne))
     return ne[ok], be[ok], ge[ok], np.repeat(np.arange(len(nn)), D)[ok]
 
 

@@ -1,0 +1,123 @@
+"""The default method's driver: best-first over blocks of combinations, never forming the whole product
+(:func:`bound_order_search`).  Its stages: block bounds (:mod:`.bounds`), screening (:mod:`.screen`), the exact
+preload solve (:mod:`.preload`); the winners are polished after it (:mod:`.polish`).
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from .bounds import block_bounds
+from .objective import ObjectiveSpec, objective_floor
+from .preload import concat_exact, exact_solve
+from .result import SearchStats
+from .screen import screen_nuts
+from .space import Space
+
+
+def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top: int = 1, *,
+                       max_evaluations: int | None = None, incumbent: float = -np.inf):
+    """Default method core: best-first over blocks of combinations, never forming the whole product.
+
+    1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives -- gets a
+       feasibility test and an objective bound from one evaluation with the optimistic guide.
+    2. The blocks are taken in decreasing bound.  A group of blocks is screened (:func:`screen_nuts`, exact
+       per combination up to the float32 slack) and its survivors join a pool; the pool's best bounds are
+       solved exactly (:func:`exact_solve`) before the next group whenever they beat the next block's
+       bound.  The incumbent is the ``top``-th best exact objective.
+    3. It stops when neither the next block nor the pool can reach the incumbent: the gap is then 0.  Blocks
+       never screened are the certificate's ``pruned_by_block``; survivors never solved its
+       ``pruned_by_bound``.
+    ``incumbent``: an objective some design is known to reach (top 1): what cannot tie with it is pruned from
+    the start, and the Exact returned may then be empty.
+    Returns (Exact of evaluated combinations, :class:`.result.SearchStats`)."""
+    t0 = time.perf_counter()
+    GD = space.shape[3]
+    blocks = block_bounds(space, constraints, objective)
+    bm, bn, bb, bv = [], [], [], []
+    n_block_ok = 0
+    for mi, (ok, bound) in enumerate(blocks):
+        n, b = np.nonzero(ok)
+        n_block_ok += len(n)
+        bm.append(np.full(len(n), mi))
+        bn.append(n)
+        bb.append(b)
+        bv.append(bound[n, b])
+    bm, bn, bb, bv = (np.concatenate(x) if x else np.zeros(0) for x in (bm, bn, bb, bv))
+    order = np.argsort(-bv, kind="stable")
+    bm, bn, bb, bv = bm[order].astype(int), bn[order].astype(int), bb[order].astype(int), bv[order]
+    t_screen = time.perf_counter() - t0
+    _, N, B, _ = space.shape
+    per_group = space.nuts_per_block
+    pos, batch, n_eval, screened_blocks, feasible = 0, 64, 0, 0, 0
+    group = 1  # distinct nuts per screened group: grows as long as no incumbent prunes
+    pool_idx, pool_bnd = np.zeros(0, np.int64), np.zeros(0)
+    parts, thr = [], (incumbent if top == 1 else -np.inf)
+    while True:
+        floor = objective_floor(thr)
+        nxt = bv[pos] if pos < len(bv) else -np.inf
+        best_pool = pool_bnd.max() if len(pool_bnd) else -np.inf
+        if max(nxt, best_pool) < floor or (pos >= len(bv) and not len(pool_bnd)):
+            break
+        if max_evaluations is not None and n_eval >= max_evaluations:
+            break
+        if len(pool_bnd) and best_pool >= nxt:  # exact solves of the pool's best bounds
+            cand = np.nonzero(pool_bnd >= max(nxt, floor))[0]
+            take = cand[np.argsort(-pool_bnd[cand], kind="stable")[:batch]]
+            batch = min(batch * 2, 131072)
+            ex = exact_solve(space, pool_idx[take], constraints, objective)
+            n_eval += len(take)
+            parts.append(ex)
+            keep = np.ones(len(pool_bnd), dtype=bool)
+            keep[take] = False
+            pool_idx, pool_bnd = pool_idx[keep], pool_bnd[keep]
+            allobj = np.concatenate([p.objective for p in parts])
+            fin = allobj[np.isfinite(allobj)]
+            if len(fin) >= top:
+                thr = np.partition(fin, len(fin) - top)[len(fin) - top]
+            continue
+        # screen the next group of blocks: up to per_group distinct nuts, in bound order
+        t1 = time.perf_counter()
+        end, seen = pos, set()
+        while end < len(bv) and bv[end] >= floor:
+            key = (bm[end], bn[end])
+            if key not in seen and len(seen) >= min(group, per_group):
+                break
+            seen.add(key)
+            end += 1
+        end = max(end, pos + 1)
+        grp = slice(pos, end)
+        group = min(group * 2, per_group)
+        screened_blocks += end - pos
+        pos = end
+        new_idx, new_bnd = [], []
+        for mi in np.unique(bm[grp]):
+            sel = bm[grp] == mi
+            gn, gb = bn[grp][sel], bb[grp][sel]
+            nuts = np.unique(gn)
+            premask = np.zeros((len(nuts), B), dtype=bool)
+            premask[np.searchsorted(nuts, gn), gb] = True
+            i, bnd = screen_nuts(space, int(mi), nuts, constraints, objective, premask=premask)
+            new_idx.append(i)
+            new_bnd.append(bnd)
+        add_i = np.concatenate(new_idx) if new_idx else np.zeros(0, np.int64)
+        add_b = np.concatenate(new_bnd) if new_bnd else np.zeros(0)
+        feasible += len(add_i)
+        pool_idx, pool_bnd = np.concatenate([pool_idx, add_i]), np.concatenate([pool_bnd, add_b])
+        t_screen += time.perf_counter() - t1
+    ex = concat_exact(parts) if parts else exact_solve(space, [], constraints, objective)
+    rest = max(bv[pos] if pos < len(bv) else -np.inf, pool_bnd.max() if len(pool_bnd) else -np.inf)
+    best = ex.objective.max() if len(ex.objective) else -np.inf
+    if rest == -np.inf or rest < objective_floor(thr) or rest < objective_floor(best):
+        gap = 0.0
+    else:
+        gap = float((rest - best) / max(abs(best), 1e-30)) if np.isfinite(best) else float("inf")
+    screened = screened_blocks * GD
+    stats = SearchStats(combinations=space.size, feasible=int(feasible), pruned_by_bound=int(feasible - n_eval),
+                        exact_evaluations=int(n_eval), gap=gap, proven=gap == 0.0,
+                        screening_time=t_screen, screening_rate=space.size / max(t_screen, 1e-9),
+                        pruned_by_block=int(space.size - screened), screened=int(screened))
+    return ex, stats
+

@@ -1,0 +1,58 @@
+"""A design of the search space as a :class:`.result.Candidate`: its parts, preload and the model's values
+(:func:`make_candidate`, :func:`candidate_values`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import model
+from ..design import Design
+from ..model.limits import LIMITS
+from ..units import N_PER_UM
+from .objective import ObjectiveSpec
+from .result import Candidate
+from .space import Space
+
+
+def make_candidate(space: Space, combo: int, preload: float, objective: ObjectiveSpec, rank: int = 0,
+                   name: str = "") -> Candidate:
+    """The candidate of combination ``combo`` at ``preload`` (clipped to its range), ranked ``rank``."""
+    return candidate_values(space, combo, preload, objective, rank, name)[0]
+
+
+def candidate_values(space: Space, combo: int, preload: float, objective: ObjectiveSpec, rank: int = 0,
+                     name: str = "") -> tuple:
+    """(:func:`make_candidate`'s Candidate, the model's values of its design: ``Evaluation.values``)."""
+    mi, n, b, g = (int(v) for v in space.unravel(combo))
+    mounting = space.mountings[mi]
+    screw, nut, bearing, guide, motor, coupling = part_rows(space, n, b, g)
+    lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
+    preload = float(min(max(preload, lo), hi))
+    design = Design(axis=space.problem.axis_for(mounting), screw=screw, nut=nut, bearing=bearing, guide=guide,
+                    motor=motor, coupling=coupling, nut_preload=preload,
+                    name=name or f"{space.problem.name}-{rank or 'design'}",
+                    source=space.problem.source, assumed=space.problem.assumed)
+    # the model on numpy: the same formula as the CasADi Function (tests/model/test_model.py holds them to 1e-10)
+    # without building that Function for every new axis (a study's cases, the closest designs)
+    ev = model.evaluate(design, use_casadi=False)
+    v = ev.values
+    J = float(objective.value({k: np.asarray(v[k]) for k, _ in objective.terms}))
+    return Candidate(rank=rank, combination=int(combo), mounting=mounting, screw=str(screw["id"]),
+                     nut=str(nut["id"]), bearing=str(bearing["id"]), guide=str(guide["id"]), nut_preload=preload,
+                     motor="" if motor is None else str(motor["id"]),
+                     coupling="" if coupling is None else str(coupling["id"]),
+                     objective=J, min_stiffness=float(np.min(v["k_total"])) / N_PER_UM,
+                     min_frequency=float(np.min(v["f1"])), cost=float(v["cost"]),
+                     moving_mass=float(v["moving_mass"]), total_mass=float(v["total_mass"]),
+                     drag_torque=float(v["drag_torque"]), life_h=float(v["life"]) / 3600.0, design=design,
+                     outputs={lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v}
+                     ), v
+
+
+def part_rows(space: Space, n, b, g):
+    """(screw, nut, bearing, guide, motor, coupling) rows of part-axis numbers; ``g`` is the guide-and-
+    drive index (motor and coupling None where the axis values stand in)."""
+    gi, di = divmod(int(g), space.n_drives)
+    mi, ci = space.drives[di]
+    return (space.screws.row(n), space.nuts.row(n), space.bearings.row(b), space.guides.row(gi),
+            None if mi is None else space.motors.row(mi), None if ci is None else space.couplings.row(ci))

@@ -1,0 +1,257 @@
+"""The front door of a solve: :func:`solve` validates the method, builds the :class:`Task` (problem, search
+space, constraints, objective) and dispatches by the objective's mode -- scalar, lexicographic (two scalar
+solves, the first's optimum a floor of the second) or Pareto (:mod:`.pareto`) -- to the method's runner
+(:data:`METHOD_TABLE`).  The scalar result is built in one place (:func:`scalar_result`); the limit
+sensitivities (:func:`limit_sensitivities`) and what of the optimum rests on estimated part values
+(:func:`estimated_at_optimum`) are added here.  The stages are imported when a solve first reaches them.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, replace
+from types import MappingProxyType
+from typing import TYPE_CHECKING, Callable
+
+import numpy as np
+
+from ..errors import InputError
+from ..model.limits import LIMITS
+from ..problem import GOALS, Problem
+from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, Binding, Certificate, SolveResult
+
+if TYPE_CHECKING:
+    from .objective import ObjectiveSpec
+    from .space import Space
+
+RELAX = 0.10  # sensitivities: relax each limit by 10 %
+
+
+@dataclass(frozen=True)
+class Task:
+    """What every stage of a solve works on: the problem, its search space, its constraints and the scalar
+    objective (the Pareto front: the stiffness, whose exact solve gives every front value)."""
+
+    problem: Problem
+    space: Space
+    constraints: tuple
+    objective: ObjectiveSpec
+
+
+def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task:
+    """The task of ``problem``: its search space, constraints and objective (``objective``: another one)."""
+    from .parts import build_space
+
+    space = build_space(problem)  # each stage module is imported when a solve first reaches it
+    from .objective import objective_spec
+
+    objective = objective_spec(problem.objective.mode, problem) if objective is None else objective
+    from .constraints import build_constraints
+
+    return Task(problem, space, build_constraints(problem), objective)
+
+
+def _run_search(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
+    """The default and exhaustive methods: the search, then :func:`scalar_result`."""
+    if method == "exhaustive":
+        from .exhaustive import exhaustive_search
+
+        ex, stats = exhaustive_search(task.space, task.constraints, task.objective)
+    else:
+        from .bestfirst import bound_order_search
+
+        ex, stats = bound_order_search(task.space, task.constraints, task.objective, top=top)
+    return scalar_result(task, method, ex, stats, top, t0)
+
+
+def _run_bonmin(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
+    from .minlp import solve_bonmin
+
+    return solve_bonmin(task.problem, task.space, task.constraints, task.objective, time_limit=time_limit,
+                        top=top, t0=t0)
+
+
+def _run_scip(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
+    from .minlp import solve_scip
+
+    return solve_scip(task.problem, task.space, task.constraints, task.objective, time_limit=time_limit, top=top,
+                      t0=t0)
+
+
+@dataclass(frozen=True)
+class Method:
+    """A search method and what it can do (the one place its capabilities are said)."""
+
+    name: str
+    run: Callable  # (task, method name, top, time_limit, t0) -> SolveResult, a scalar objective
+    proves: bool  # proves the optimum over the catalog (gap 0) when it ends 'optimal'
+    pareto: bool  # computes exact Pareto fronts
+    sensitivities: bool  # the limit sensitivities are re-solved with it
+    runners_up: bool  # returns the ``top`` best designs (else the best only)
+    doc: str
+
+
+METHOD_TABLE = (
+    Method("default", _run_search, True, True, True, True,
+           "block bounds, screening, exact preload solve in bound order, IPOPT polish; proves the optimum"),
+    Method("exhaustive", _run_search, True, True, True, True,
+           "every combination, preload on a grid of its feasible interval; the ground truth"),
+    Method("bonmin", _run_bonmin, False, False, False, False,
+           "CasADi Bonmin MINLP with one-hot part selection; a heuristic reference"),
+    Method("scip", _run_scip, True, False, False, False,
+           "the same MINLP solved globally by SCIP (optional extra axisopt[scip])"),
+)
+METHODS_BY_NAME = MappingProxyType({m.name: m for m in METHOD_TABLE})
+METHODS = tuple(METHODS_BY_NAME)
+
+
+def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit: float = 100.0,
+          sensitivities: bool = True) -> SolveResult:
+    """Solve a sizing problem.
+
+    problem       : :class:`axisopt.problem.Problem`
+    method        : a :data:`METHOD_TABLE` name: 'default' | 'exhaustive' | 'bonmin' | 'scip'
+    top           : number of designs returned (best + runners-up; a method without runners-up notes it)
+    time_limit    : Bonmin / SCIP wall-clock limit [s]
+    sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that allow it)
+    """
+    if method not in METHODS_BY_NAME:
+        raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
+    m = METHODS_BY_NAME[method]
+    t0 = time.perf_counter()
+    ob = problem.objective
+    if ob.mode == "pareto":
+        if not m.pareto:
+            raise InputError(f"--method {method} solves one scalar objective; a Pareto front needs "
+                             f"--method {' or '.join(x.name for x in METHOD_TABLE if x.pareto)}",
+                             source=problem.source)
+        from .pareto import solve_pareto
+
+        return solve_pareto(problem, method=method, t0=t0)
+    if ob.mode == "lexicographic":
+        from .objective import objective_spec
+
+        res = _solve_lexicographic(build_task(problem, objective_spec(ob.order[1])), m, top, time_limit, t0)
+    else:
+        task = build_task(problem)
+        res = m.run(task, method, top, time_limit, t0)
+        if sensitivities and res.best is not None and m.sensitivities:
+            res.binding = limit_sensitivities(problem, res, space=task.space)
+            res.time = time.perf_counter() - t0
+        if res.best is not None and res.best.design is not None:
+            res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in task.objective.terms])
+    if top > 1 and not m.runners_up:
+        res.certificate.notes = res.certificate.notes + (
+            f"--method {method} returns the best design only (top {top} asked: no runners-up)",)
+    return res
+
+
+def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0: float) -> SolveResult:
+    """The primary objective's optimum, then the secondary's over the designs within the tolerance of it."""
+    from .constraints import limit_constraint
+    from .objective import objective_spec
+
+    problem, ob = task.problem, task.problem.objective
+    primary, secondary = ob.order
+    first = m.run(replace(task, objective=objective_spec(primary)), m.name, 1, time_limit, t0)
+    if first.best is None:
+        return first
+    j1 = first.best.objective
+    floor = j1 * (1.0 - max(ob.tolerance, 1e-9))
+    lim = LIMITS[GOALS[primary].limit]
+    extra = limit_constraint(lim.key, floor * lim.factor, f"lexicographic {primary}",
+                             f"{primary} within {ob.tolerance:g} of its best {j1:.6g}")
+    res = m.run(replace(task, constraints=task.constraints + (extra,)), m.name, top, time_limit, t0)
+    res.objective_label = f"{ob.label}: primary best {j1:.6g} {first.objective_unit}; " + res.objective_label
+    res.certificate.notes = res.certificate.notes + (
+        f"stage 1 ({primary}): {first.certificate.exact_evaluations} exact evaluations, "
+        f"{first.certificate.nlps_solved} NLPs, gap {first.certificate.gap:g}",)
+    res.certificate.nlps_solved += first.certificate.nlps_solved
+    res.certificate.proven = res.certificate.proven and first.certificate.proven
+    if first.status != OPTIMAL and res.status == OPTIMAL:  # stage 2 proven on an unproven stage 1
+        res.status = first.status
+        res.message = "; ".join(x for x in (f"stage 1 ({primary}): {first.message or first.status}",
+                                            res.message) if x)
+    if res.best is not None and res.best.design is not None:  # both stages' objectives
+        terms = [k for st in (primary, secondary) for k, _ in objective_spec(st).terms]
+        res.certificate.estimated = estimated_at_optimum(problem, res, terms)
+    res.time = time.perf_counter() - t0
+    return res
+
+
+def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float) -> SolveResult:
+    """The SolveResult of a search that ends in the exact solves ``ex`` with statistics ``stats``: infeasible
+    (with the explanation and what to relax), or the ``top`` best polished by IPOPT."""
+    from .polish import polish
+
+    problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
+    stats.pruned_by_dominance = space.pruned_by_dominance
+    if not np.isfinite(ex.objective).any():
+        from .explain import explain_infeasible
+        from .relax import rank_relaxations
+
+        why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive")
+        why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
+        return SolveResult(INFEASIBLE, method, problem.name, spec.label, spec.unit, None, [], Certificate.of(stats),
+                           time.perf_counter() - t0, message="no catalog combination meets every limit",
+                           infeasibility=why)
+    cands, nlps, failed_ranks, notes = polish(space, ex, constraints, spec, top)
+    cert = Certificate.of(stats, nlps, len(failed_ranks), notes)
+    status = OPTIMAL if cert.proven else TIME_LIMIT
+    if 1 in failed_ranks:  # IPOPT failed on the best design (its 1-D solution is kept)
+        status = SOLVER_FAILED
+    return SolveResult(status, method, problem.name, spec.label, spec.unit, cands[0], cands[1:], cert,
+                       time.perf_counter() - t0, message="; ".join(notes), solver_status="ipopt")
+
+
+def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> list:
+    """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
+    (re-solved with the default method; a discrete problem has no meaningful multipliers).
+
+    ``space``: the problem's search space, if built (the part tables do not depend on the limits, so every
+    re-solve reuses it and its cached parameter arrays)."""
+    from .bestfirst import bound_order_search
+    from .constraints import build_constraints
+    from .objective import objective_spec
+    from .parts import build_space
+    from .polish import polish
+
+    best = res.best
+    space = build_space(problem) if space is None else space
+    spec = objective_spec(problem.objective.mode, problem)
+    out = []
+    for key, value in problem.limits:
+        lim = LIMITS[key]
+        at = best.outputs.get(lim.output)
+        if value == 0.0 or at is None or not np.isfinite(at):
+            continue  # e.g. max_backlash 0: relaxing it by 10 % changes nothing; an output the design lacks
+        unit, factor = lim.unit, lim.factor
+        relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
+        # the optimum meets the relaxed limit too: only designs that can reach it are searched (none: no gain)
+        loose = build_constraints(problem.with_limit(key, relaxed))
+        ex, _stats = bound_order_search(space, loose, spec, top=1, incumbent=best.objective)
+        if np.isfinite(ex.objective).any():
+            gain = polish(space, ex, loose, spec, 1)[0][0].objective - best.objective
+        else:
+            gain = 0.0
+        tol = 1e-6 * max(abs(best.objective), 1e-9)
+        out.append(Binding(key, unit, value / factor, at / factor, relaxed / factor, gain,
+                           bool(gain > tol)))
+    return out
+
+
+def estimated_at_optimum(problem: Problem, res: SolveResult, objective_outputs) -> tuple:
+    """What of the optimum rests on estimated part values (``Certificate.estimated``): the objective, the
+    limits at their bound or binding by the sensitivities, the checks at their limit."""
+    from ..model.estimates import Resting, binding_estimates, resting_on
+
+    binding = {b.limit for b in res.binding if b.binding}
+    limits = [(k, v) for k, v in problem.limits]
+    found = binding_estimates(res.best.design, limits, objective_outputs)
+    seen = {r.what for r in found}
+    extra = [(k, v) for k, v in limits if k in binding and k not in seen]
+    if extra:  # binding by relaxation though not at its bound (a discrete step): its output's estimates
+        outs = {k: LIMITS[k].output for k, _ in extra}
+        moved = resting_on(res.best.design, list(outs.values()))
+        found += [Resting(k, o, tuple(moved[o])) for k, o in outs.items() if moved.get(o)]
+    return tuple(r.to_dict() for r in found)

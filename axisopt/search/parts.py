@@ -1,0 +1,228 @@
+"""The parts a problem may use: the catalog's tables filtered by the problem's restrictions, the (motor,
+coupling) drive pairs, and a process cache of the result (:func:`build_space` -> :class:`.space.Space`).
+
+The filters: vendors, series, provenance status, estimated values, nut types, bearing arrangements and
+preload classes, guide types and preload levels, require/exclude; nuts keep their screw; each nut's preload
+range is the problem's (preloaded nuts, capped by the vendors' 10 % Ca ceiling) or its catalog range (single
+nuts).  Couplings another beats on every count, and (motor, coupling) pairs whose coupling cannot carry the
+motor's peak torque, are never formed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from .. import model
+from ..catalog import USER_STATUS
+from ..errors import InputError
+from ..model.params import columns_read
+from ..parttable import PartTable
+from ..physics import nut as pnut
+from ..problem import Problem
+from .space import SCREEN_CHUNK, Space
+
+_SCREW_COLS, _NUT_COLS, _BEARING_COLS, _GUIDE_COLS, _MOTOR_COLS, _COUPLING_COLS = (
+    columns_read(t) for t in ("screws", "nuts", "bearings", "guides", "motors", "couplings"))
+
+
+
+def _arrays(t, cols):
+    return {c: t.number(c) for c in cols}
+
+
+
+def vendor_filled(t: PartTable, table: str) -> PartTable:
+    """The rows of a part table with a vendor value in every column the model would otherwise estimate
+    (``catalog.COLUMNS``: an optional column with an ``estimate``)."""
+    from ..catalog import COLUMNS
+
+    keep = np.ones(len(t), dtype=bool)
+    for c in COLUMNS[table]:
+        if c.estimate and c.name in t:
+            keep &= np.isfinite(t.number(c.name))
+    return t.take(keep)
+
+
+# Spaces built in this process, by what they are made of (the catalog object and the problem's choices that
+# filter it): a study's cases share the catalog and most of their restrictions, and filtering the part tables
+# is a few ms a case.  Each problem gets its own Space (its axis, its parameter cache) on the shared,
+# read-only part tables and arrays.
+_SPACES: dict = {}
+SPACES_KEPT = 4
+
+
+def build_space(problem: Problem) -> Space:
+    """The filtered part tables of ``problem`` as a :class:`Space` (reused from an earlier problem on the same
+    catalog object with the same restrictions, preload range, reduction ratio and coupling margin)."""
+    key = (id(problem.catalog), problem.restrictions, tuple(problem.mountings), problem.preload_min,
+           problem.preload_max, float(problem.axis.reduction_ratio),
+           float(problem.margin_map.get("coupling_torque", 1.0)))
+    hit = _SPACES.get(key)
+    if hit is None or hit[0] is not problem.catalog:
+        sp = _build_space(problem)
+        if len(_SPACES) >= SPACES_KEPT:
+            _SPACES.pop(next(iter(_SPACES)))
+        _SPACES[key] = hit = (problem.catalog, sp)
+    sp = replace(hit[1], problem=problem, _cache={})
+    sp.grid = {m: model.positions(problem.axis_for(m)) for m in sp.mountings}
+    if sp.c_arr is None:
+        sp.coupling_k = np.array([float(problem.axis.coupling_stiffness)])
+    return sp
+
+
+def _build_space(problem: Problem) -> Space:
+    cat = problem.catalog
+    r = problem.restrictions
+    nuts, bearings, guides = cat.rows("nuts"), cat.rows("bearings"), cat.rows("guides")
+    screws = cat.rows("screws")
+    if r.vendors is not None:
+        screws = screws.take(screws.isin("vendor", r.vendors))
+        nuts = nuts.take(nuts.isin("vendor", r.vendors))
+        bearings = bearings.take(bearings.isin("vendor", r.vendors))
+        guides = guides.take(guides.isin("vendor", r.vendors))
+    # provenance: a slot the problem names parts for ('require') takes them whatever their status
+    def by_status(t, slot):
+        if r.required(slot):
+            return t
+        if "status" not in t:
+            return t if USER_STATUS in r.status else t.take(np.zeros(len(t), dtype=bool))
+        return t.take(t.isin("status", tuple(r.status)))
+
+    screws, nuts = by_status(screws, "screw"), by_status(nuts, "nut")
+    bearings, guides = by_status(bearings, "bearing"), by_status(guides, "guide")
+    if r.estimated == "exclude":  # vendor values only: no row with an empty cell the model would estimate
+        screws, nuts = vendor_filled(screws, "screws"), vendor_filled(nuts, "nuts")
+        bearings, guides = vendor_filled(bearings, "bearings"), vendor_filled(guides, "guides")
+    if r.nut_types is not None:
+        nuts = nuts.take(nuts.isin("type", r.nut_types))
+    if r.bearing_arrangements is not None:
+        bearings = bearings.take(bearings.isin("arrangement", r.bearing_arrangements))
+    if r.bearing_preload is not None:
+        bearings = bearings.take(bearings.isin("preload_class", r.bearing_preload))
+    if r.guide_types is not None:
+        guides = guides.take(guides.isin("type", r.guide_types))
+    if r.guide_preload is not None:
+        guides = guides.take(guides.isin("preload_level", r.guide_preload)
+                             | guides.isin("preload_class", r.guide_preload))
+    screws, nuts = _filtered(screws, r, "screw"), _filtered(nuts, r, "nut")
+    bearings, guides = _filtered(bearings, r, "bearing"), _filtered(guides, r, "guide")
+    nuts = nuts.take(nuts.isin("screw_id", set(screws.ids)))
+    # the problem's preload bounds are for preloaded nuts; a single nut keeps its catalog range
+    single = nuts["type"] == "single"
+    lo = np.where(single, nuts.number("preload_min"), np.maximum(nuts.number("preload_min"), problem.preload_min))
+    hi = np.where(single, nuts.number("preload_max"), np.minimum(nuts.number("preload_max"), problem.preload_max))
+    # the vendors' preload ceiling (check nut_preload: 10 % Ca) bounds the range of a preloaded nut, as the
+    # vendors' own preload ranges do: the search never goes above it, so it needs no constraint of its own
+    hi = np.where(single, hi, np.minimum(hi, pnut.preload_ceiling(nuts.number("dynamic_load_rating"))))
+    keep = lo <= hi
+    nuts, lo, hi = nuts.take(keep), lo[keep], hi[keep]
+    # an empty part slot leaves no combination at all: a one-line error naming it (not an "infeasible"
+    # result whose explanation has nothing to score)
+    for t, what, filters in ((nuts, "screw and nut", "vendors, nut_types, status, require/exclude; "
+                               "continuous.nut_preload and the 10 % Ca preload ceiling for preloaded nuts"),
+                              (bearings, "support bearing", "vendors, bearing_arrangements, bearing_preload, "
+                               "status, require/exclude"),
+                              (guides, "linear guide", "vendors, guide_types, guide_preload, status, "
+                               "require/exclude")):
+        if len(t) == 0:
+            raise InputError(f"the search has nothing to choose from: no {what} is left after the filters "
+                             f"(catalog: {filters})", source=problem.source)
+    screws_al = cat.rows("screws").by_id(list(nuts["screw_id"]))
+    # the bearing journal rule is the model's margin_bearing_fit check; no extra pairing rule here
+    fits = np.ones((len(nuts), len(bearings)), dtype=bool)
+    sp = Space(problem=problem, mountings=tuple(problem.mountings), screws=screws_al, nuts=nuts,
+               bearings=bearings, guides=guides, preload_lo=lo, preload_hi=hi, fits=fits)
+    sp.s_arr = _arrays(screws_al, _SCREW_COLS)
+    sp.n_arr = _arrays(nuts, _NUT_COLS)
+    sp.n_arr["type"] = nuts["type"].astype(str)
+    sp.b_arr = _arrays(bearings, _BEARING_COLS)
+    sp.g_arr = _arrays(guides, _GUIDE_COLS)
+    sp.g_arr["type"] = guides["type"].astype(str)
+    _add_drives(sp, problem)
+    D = len(sp.drives)
+    sp.n_drives = D
+    sp.shape = (len(sp.mountings), len(nuts), len(bearings), len(guides) * D)
+    sp.size = int(np.prod(sp.shape))
+    sp.pruned_by_dominance = int(sp.size // D * sp.pairs_left_out)
+    # each block covers every bearing and (mechanical) guide
+    Gm = sp.shape[3] // (D if sp.m_arr is not None else 1)
+    sp.nuts_per_block = max(1, SCREEN_CHUNK // max(sp.shape[2] * Gm, 1))
+    if sp.c_arr is not None:
+        sp.coupling_k = np.unique(sp.c_arr["torsional_stiffness"])
+    return sp
+
+
+def _filtered(t, r, slot, series=None, vendors=None):
+    """Rows of a part table the problem allows in ``slot``: vendor and series filters, require, exclude."""
+    if vendors is not None:
+        t = t.take(t.isin("vendor", vendors))
+    if series is not None:
+        t = t.take(t.isin("series", series))
+    req, exc = r.required(slot), r.excluded(slot)
+    if req:
+        t = t.take(t.isin("id", req))
+    if exc:
+        t = t.take(~t.isin("id", exc))
+    return t
+
+
+def coupling_dominated(cp) -> np.ndarray:
+    """Couplings another coupling beats on every count the model uses: at least its rated torque,
+    torsional stiffness and maximum speed, at most its inertia and price, and better on one of them
+    (mass and bore do not enter the model; a dominated coupling can never be the better choice)."""
+    a = {c: np.asarray(cp[c], dtype=float)
+         for c in ("rated_torque", "torsional_stiffness", "max_speed", "inertia", "price")}
+    ge = ((a["rated_torque"][:, None] >= a["rated_torque"][None]) & (a["torsional_stiffness"][:, None]
+          >= a["torsional_stiffness"][None]) & (a["max_speed"][:, None] >= a["max_speed"][None])
+          & (a["inertia"][:, None] <= a["inertia"][None]) & (a["price"][:, None] <= a["price"][None]))
+    gt = ((a["rated_torque"][:, None] > a["rated_torque"][None]) | (a["torsional_stiffness"][:, None]
+          > a["torsional_stiffness"][None]) | (a["max_speed"][:, None] > a["max_speed"][None])
+          | (a["inertia"][:, None] < a["inertia"][None]) | (a["price"][:, None] < a["price"][None]))
+    return (ge & gt).any(axis=0)
+
+
+def _add_drives(sp: Space, problem: Problem) -> None:
+    """The (motor, coupling) pairs the search chooses from, spread over the guide axis."""
+    r = problem.restrictions
+    cat = problem.catalog
+    if not r.drive or len(cat.rows("motors")) == 0:
+        return
+    motors = _filtered(cat.rows("motors"), r, "motor", r.motor_series, r.motor_vendors)
+    if r.max_motor_flange is not None:  # a motor without a listed flange cannot be shown to fit
+        motors = motors.take(motors.number("flange") <= r.max_motor_flange * (1 + 1e-9))
+    if r.estimated == "exclude":
+        motors = vendor_filled(motors, "motors")
+    couplings = _filtered(cat.rows("couplings"), r, "coupling", r.coupling_series)
+    n_couplings = len(couplings)
+    if len(couplings) and not r.required("coupling"):
+        couplings = couplings.take(~coupling_dominated(couplings))
+    ratio = problem.axis.reduction_ratio
+    need = problem.margin_map.get("coupling_torque", 1.0)
+    pairs = []
+    for mi in range(len(motors)):
+        if len(couplings) == 0:
+            pairs.append((mi, None))
+            continue
+        peak = float(motors.number("peak_torque")[mi]) * ratio
+        # the coupling-torque check depends on the pair only: pairs that fail it are never formed
+        ok = couplings.number("rated_torque") >= need * peak * (1.0 - 1e-12)
+        pairs.extend((mi, int(ci)) for ci in np.nonzero(ok)[0])
+    if not pairs:
+        why = ("no motor is left after the motor filters" if len(motors) == 0 else
+               "no coupling left after the filters carries the peak torque of any allowed motor")
+        raise InputError(f"the drive search has nothing to choose from: {why} (catalog: motor_vendors, "
+                         "motor_series, max_motor_flange, require/exclude)", source=problem.source)
+    sp.motors, sp.couplings = motors, couplings
+    sp.drives = tuple(pairs)
+    sp.pairs_left_out = len(motors) * max(n_couplings, 1) - len(pairs)
+    D = len(pairs)
+    sp.g_arr = {k: np.repeat(v, D) for k, v in sp.g_arr.items()}
+    G = len(sp.guides)
+    mpos = np.array([m for m, _ in pairs], dtype=np.int64)
+    sp.m_arr = {k: np.tile(motors.number(k)[mpos], G) for k in _MOTOR_COLS}
+    if len(couplings):
+        cpos = np.array([c for _, c in pairs], dtype=np.int64)
+        sp.c_arr = {k: np.tile(couplings.number(k)[cpos], G) for k in _COUPLING_COLS}
+

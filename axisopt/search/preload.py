@@ -1,0 +1,187 @@
+"""The exact preload solve of selected combinations (:func:`exact_solve`): for each, the best preload and
+the exact objective on the full position grid, vectorized per mounting.
+
+It rests on the preload structure the model declares (``axisopt.model.limits.OUTPUT_PRELOAD``, see
+:mod:`.constraints`): the feasible preloads of a combination are an interval and the best preload is its upper
+end.  A threshold search (:func:`.bracket.kary_threshold`) finds the largest preload meeting the limits that
+favour a low preload; a motor-torque limit (convex in the preload) lowers it into its interval
+(:func:`convex_feasible_top`); the limits that favour a high preload are then checked there.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import fields
+
+import numpy as np
+
+from ..units import N_PER_UM
+from .bracket import BISECTION_STEPS, SEARCH_POINTS, golden_best, kary_threshold
+from .constraints import Constraint, as_vector, ok_all
+from .objective import ObjectiveSpec
+from .result import Exact
+from .space import Space, respond, respond_drive
+
+SEARCH_ROWS = 4096  # threshold search: combinations times preloads per model evaluation, about
+
+
+def search_points(k: int) -> int:
+    """Preloads per round of :func:`kary_threshold` for ``k`` combinations: many while a model evaluation
+    costs mostly its fixed Python overhead (few combinations), 2 (bisection) once the rows cost more."""
+    return int(max(2, min(SEARCH_POINTS, 2 ** round(math.log2(SEARCH_ROWS / max(k, 1) + 1)))))
+
+
+def subset(p: dict, j, k: int) -> dict:
+    """The parameters of rows ``j`` of a flat layout of ``k`` combinations (the duty cycle is shared)."""
+    return {kk: (v[j] if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v) for kk, v in p.items()}
+
+
+def repeat_rows(p: dict, k: int, r: int) -> dict:
+    """A flat layout of ``k`` combinations with every row repeated ``r`` times (row i*r + j is row i)."""
+    return {kk: (np.repeat(v, r, axis=0) if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v)
+            for kk, v in p.items()}
+
+
+def new_exact(idx) -> Exact:
+    """An Exact of the combinations ``idx`` with nothing solved yet (infeasible, objective -inf)."""
+    K = len(idx)
+    return Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf), np.zeros(K), np.zeros(K),
+                 np.zeros(K), np.full(K, np.nan), np.full(K, np.nan))
+
+
+def concat_exact(parts) -> Exact:
+    """One Exact of the combinations of ``parts`` (in order)."""
+    return Exact(*(np.concatenate([getattr(p, f.name) for p in parts]) for f in fields(Exact)))
+
+
+def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, need=("k_total", "f1")) -> Exact:
+    """Best preload (upper end of the feasible preload interval) and the exact objective on the full
+    position grid for the combinations ``idx`` (any mix of mountings), vectorized per mounting.
+
+    Assumes the preload structure in the module docstring: a threshold search (:func:`kary_threshold`: up to
+    63 preloads per vectorized round for few combinations, bisection for many) finds the largest preload meeting
+    the upper-type constraints (drag, life); the lower-type ones (lift-off, minimum stiffness or
+    frequency) are then checked there.
+    """
+    idx = np.asarray(idx, dtype=np.int64)
+    K = len(idx)
+    res = new_exact(idx)
+    if K == 0:
+        return res
+    up = [c for c in constraints if c.direction != 0 and c.upper_type]
+    low = [c for c in constraints if c.direction != 0 and c.lower_type]
+    cvx = [c for c in constraints if c.convex]
+    indep = [c for c in constraints if c.direction == 0]
+    for mounting, sel, n, b, _g, p, x in space.by_mounting(idx):
+        k = len(sel)
+        x1 = x[-1:]
+        lo = space.preload_lo[n][:, None]
+        hi = space.preload_hi[n][:, None]
+        out_lo = respond(p, x1, mounting, lo)
+        ok = ok_all(indep, out_lo, k) & space.fits[n, b]
+        ok_up_lo = ok_all([c for c in up if not c.profile], out_lo, k)
+        out_hi = respond(p, x1, mounting, hi)
+        ok_up_hi = ok_all([c for c in up if not c.profile], out_hi, k)
+        a = lo[:, 0].copy()  # feasible end
+        bb = hi[:, 0].copy()  # infeasible end (unless ok_up_hi)
+        need_bis = ok & ok_up_lo & ~ok_up_hi
+        if need_bis.any():
+            j = np.nonzero(need_bis)[0]
+            P = search_points(len(j))
+            pr = repeat_rows(subset(p, j, k), len(j), P - 1)
+            upc = [c for c in up if not c.profile]
+
+            def good(pre, pr=pr, upc=upc, x1=x1, mounting=mounting):
+                return ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1)), pre.size)
+
+            a[j] = kary_threshold(good, a[j], bb[j], P)
+        pstar = np.where(ok_up_hi, hi[:, 0], a)
+        ok &= ok_up_lo
+        for c in cvx:  # lower the preload into each motor-torque interval (drag and life stay met)
+            j = np.nonzero(ok)[0]
+            if len(j):
+                ex, top = convex_feasible_top(c, subset(p, j, k), x1, mounting, lo[j, 0], pstar[j])
+                ok[j] &= ex
+                pstar[j] = np.where(ex, top, pstar[j])
+        out = respond(p, x, mounting, pstar[:, None])
+        ok &= ok_all(cvx, out, k)
+        ok &= ok_all(low, out, k)
+        ok &= ok_all([c for c in up if c.profile], out, k)
+        J = np.broadcast_to(objective.value(out), (k,))
+        res.feasible[sel] = ok
+        res.preload[sel] = pstar
+        res.objective[sel] = np.where(ok, J, -np.inf)
+        res.cost[sel] = as_vector(out["cost"], k)
+        res.total_mass[sel] = as_vector(out["total_mass"], k)
+        res.moving_mass[sel] = as_vector(out["moving_mass"], k)
+        res.min_stiffness[sel] = as_vector(np.min(out["k_total"], axis=-1), k) / N_PER_UM
+        res.min_frequency[sel] = as_vector(np.min(out["f1"], axis=-1), k)
+    return res
+
+
+def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
+    """For a convex (interval) limit: the largest preload in [lo, top] meeting it, per combination.
+    Returns (exists, preload).  Met at ``top``: top.  Else met at ``lo``: threshold search from lo
+    (:func:`kary_threshold`; the limit's interval contains lo and ends below top).  Else: its most favourable
+    preload by golden section, then the threshold search from there."""
+    K = len(lo)
+    lo, top = np.asarray(lo, float), np.asarray(top, float)
+
+    def value(pj, pre):
+        return as_vector(c.value(respond_drive(pj, pre[:, None])), len(pre))
+
+    exists = c.ok(value(p, top)).astype(bool)
+    pb = top.copy()
+    j = np.nonzero(~exists)[0]
+    if len(j):
+        pj = subset(p, j, K)
+        start = np.where(c.ok(value(pj, lo[j])), lo[j], np.nan)
+        g = np.nonzero(np.isnan(start))[0]
+        if len(g):
+            pg = subset(pj, g, len(j))
+            best = golden_best(lambda pre: value(pg, pre), lo[j][g], top[j][g])
+            start[g] = np.where(c.ok(value(pg, best)), best, np.nan)
+        has = np.isfinite(start)
+        h = np.nonzero(has)[0]
+        if len(h):
+            P = search_points(len(h))
+            pr = repeat_rows(subset(pj, h, len(j)), len(h), P - 1)
+            pb[j[h]] = kary_threshold(lambda pre: c.ok(value(pr, pre.reshape(-1))), start[h], top[j][h], P)
+        exists[j] = has
+    return exists, pb
+
+
+def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
+    """For a convex limit: (exists, low end, high end) of the preloads in [lo, hi] meeting it, found without
+    assuming anything but convexity (golden section for a feasible point, then a bisection to each side)."""
+    K = len(lo)
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+
+    def value(pj, pre):
+        return as_vector(c.value(respond_drive(pj, pre[:, None])), len(pre))
+
+    ok_lo, ok_hi = (c.ok(value(p, v)).astype(bool) for v in (lo, hi))
+    start = np.where(ok_lo, lo, hi)
+    exists = ok_lo | ok_hi
+    g = np.nonzero(~exists)[0]  # met at neither end: look for the most favourable preload in between
+    if len(g):
+        pg = subset(p, g, K)
+        best = golden_best(lambda pre: value(pg, pre), lo[g], hi[g])
+        exists[g] = c.ok(value(pg, best)).astype(bool)
+        start[g] = best
+    ends = []
+    for edge, ok_edge in ((lo, ok_lo), (hi, ok_hi)):
+        end = edge.copy()
+        j = np.nonzero(exists & ~ok_edge)[0]  # the interval stops short of this edge: bisect for its end
+        if len(j):
+            pj = subset(p, j, K)
+            a, z = start[j], edge[j]
+            for _ in range(BISECTION_STEPS):
+                mid = 0.5 * (a + z)
+                good = c.ok(value(pj, mid)).astype(bool)
+                a = np.where(good, mid, a)
+                z = np.where(good, z, mid)
+            end[j] = a
+        ends.append(end)
+    return exists, ends[0], ends[1]
+
