@@ -2,10 +2,12 @@
 
     python tools/stretches.py [PROBLEM] [--list]
 
-Profiles ``axisopt.solve(PROBLEM)`` (default ``problems/teaching_problem.yaml``) with ``sys.setprofile``, keeps the
-functions of ``axisopt.search`` in the order of their first call, and counts the stretches: runs of consecutive
-first entries in one module.  A pipeline whose stages are modules reads as few stretches (entry -> parts ->
-bounds -> screen -> preload -> polish -> certificate); helpers scattered across modules read as many.
+Imports every module of ``axisopt.search``, then profiles ``axisopt.solve(PROBLEM)`` (default
+``problems/teaching_problem.yaml``) with ``sys.setprofile``, keeps the functions of ``axisopt.search`` in the order
+of their first call (comprehensions, lambdas and nested functions count as their caller), and counts the
+stretches: runs of consecutive first entries in one module.  A pipeline whose stages are modules reads as few
+stretches (entry -> parts -> bounds -> screen -> preload -> polish -> certificate); helpers scattered across
+modules read as many.
 """
 from __future__ import annotations
 
@@ -17,7 +19,15 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def first_entries(problem: str) -> list[tuple[str, str]]:
+    import importlib
+    import pkgutil
+
     import axisopt
+    import axisopt.search
+
+    # every search module imported first: the walk is the solve's, not the class bodies an import runs
+    for info in pkgutil.walk_packages(axisopt.search.__path__, "axisopt.search."):
+        importlib.import_module(info.name)
 
     seen: dict[tuple[str, str], None] = {}
 
