@@ -1,7 +1,11 @@
 """The drive: servo motor, coupling and reduction over the axis's duty cycle, and the drive checks.
 
 Inertia at the motor (THK eq. 45): table, nut and blocks through the lead, screw and coupling through the
-reduction, the reduction's own inertia and the rotor (with its holding brake when the brake is used).
+reduction, the reduction's own inertia and the rotor (with its holding brake when the brake is used).  The
+screw counts as the vendors size it: a solid steel cylinder of the nominal (outer) diameter (THK A-744,
+FANUC B-65142E sec. 4, HIWIN F 3.20, Mitsubishi MDS-B-SVJ2 sec. 11-5), over the model's screw length, the
+bearing span (the length the screw_length check asks of the catalog).  The torsional mode keeps the mean of
+nominal and root diameter (model.modes): the shaft's physical inertia, not the sizing convention.
 Per duty-cycle phase the motor torque is inertia x angular acceleration, plus the friction of the axis
 (the model's drag torque: nut preload, support bearings, guide blocks) against the motion, the external
 force through the screw and reduction efficiency, and gravity for a vertical axis
@@ -31,7 +35,7 @@ NOT_APPLICABLE = 1e9  # margin of a check that does not apply (no motor, horizon
 def drive_inertias(p, moving_mass):
     """(load inertia at the motor without the rotor, rotor inertia) [kg m^2]."""
     a = 1.0 / p["reduction_ratio"]
-    j_screw = ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"])
+    j_screw = ps.screw_rotary_inertia(p["nominal_diameter"], p["span"])
     j_load = pd.reflected_inertia(moving_mass, p["lead"], j_screw, p["coupling_inertia"], a,
                                   p["reduction_inertia"])
     return j_load, p["rotor_inertia"]

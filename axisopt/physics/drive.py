@@ -20,16 +20,6 @@ from math import pi
 
 from .. import mathx as mx
 
-STEEL_DENSITY = 7850.0  # kg/m^3; THK's screw inertia per length (A-733: 1.23e-3 kg cm^2/mm at 20 mm) uses it
-
-
-def screw_inertia(diameter, length, density=STEEL_DENSITY):
-    r"""Rotary inertia of a solid screw shaft, :math:`J_S = \pi \rho L d^4 / 32`.
-
-    diameter : d [m] (THK uses the nominal shaft diameter);  length : L [m].  Returns J_S [kg m^2]."""
-    return pi * density * length * diameter**4 / 32.0
-
-
 def load_inertia(mass, lead, ratio=1.0):
     r"""Inertia of a translating mass seen at the motor, :math:`m (P_h / 2\pi)^2 A^2` [kg m^2].
 

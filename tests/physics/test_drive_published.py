@@ -14,6 +14,7 @@ import math
 import pytest
 
 from axisopt.physics import drive
+from axisopt.physics.screw import screw_rotary_inertia
 
 MM, KG_CM2 = 1e-3, 1e-4
 RPM = 2.0 * math.pi / 60.0
@@ -24,8 +25,16 @@ G = 9.807  # THK A-725
 @pytest.mark.parametrize(("diameter_mm", "per_mm_kg_cm2"), [(20, 1.23e-3), (15, 3.9e-4)])
 def test_screw_inertia_per_length_thk(diameter_mm, per_mm_kg_cm2):
     # THK A-733 (shaft 20 mm: 1.23e-3 kg cm^2/mm) and A-743 (shaft 15 mm: 3.9e-4 kg cm^2/mm)
-    j = drive.screw_inertia(diameter_mm * MM, 1.0) / KG_CM2 * MM  # kg cm^2 per mm
+    j = screw_rotary_inertia(diameter_mm * MM, 1.0) / KG_CM2 * MM  # kg cm^2 per mm
     assert j == pytest.approx(per_mm_kg_cm2, abs=0.5 * 10 ** (math.floor(math.log10(per_mm_kg_cm2)) - 2))
+
+
+@pytest.mark.published
+def test_screw_inertia_fanuc_and_mitsubishi():
+    # FANUC B-65142E/04 sec. 4 (p. 31): steel shaft (7.8e3 kg/m^3) of 32 mm x 1 m, "Jb = 0.0008 [kg m^2]"
+    assert screw_rotary_inertia(0.032, 1.0, density=7.8e3) == pytest.approx(0.0008, abs=0.5e-4)
+    # Mitsubishi MDS-B-SVJ2 sec. 11-5 (p. 11-15): 40 mm x 1000 mm, 7.80e-3 kg/cm^3, "JB = 19.6 (kg cm^2)"
+    assert screw_rotary_inertia(0.040, 1.0, density=7.8e3) / KG_CM2 == pytest.approx(19.6, abs=0.05)
 
 
 @pytest.mark.published
@@ -64,7 +73,7 @@ def test_thk_example_2_vertical_conveyance():
     up = drive.force_torque(510.0, lead, 0.9)  # Fa2 = 510 N upward uniform
     down = drive.force_torque(470.0, lead, 0.9)  # Fa5 = 470 N downward uniform
     assert up * 1e3 == pytest.approx(900, rel=5e-3) and down * 1e3 == pytest.approx(830, rel=5e-3)
-    js = drive.screw_inertia(15 * MM, 800 * MM)
+    js = screw_rotary_inertia(15 * MM, 800 * MM)
     assert js / KG_CM2 == pytest.approx(0.31, abs=0.005)  # 0.31 kg cm^2
     j = drive.reflected_inertia(m, lead, js)
     assert j == pytest.approx(1.58e-4, abs=0.005e-4)
