@@ -227,7 +227,8 @@ _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$"
 # The largest magnitude (SI) any input of a kind may have: far beyond every machine-tool axis, well inside
 # float range, so that no product or power of inputs in the model overflows to inf or NaN.
 PLAUSIBLE_MAX = {
-    "length": 1e3, "distance": 1e12, "mass": 1e7, "time": 1e10, "force": 1e9, "stiffness": 1e14, "torque": 1e7, "speed": 1e3,
+    "length": 1e3, "distance": 1e12, "mass": 1e7, "time": 1e10, "force": 1e9, "stiffness": 1e14, "torque": 1e7,
+    "speed": 1e3,
     "acceleration": 1e5, "jerk": 1e8, "angular_speed": 1e6, "angle": 1e3, "dimensionless": 1e9,
     "mass_per_length": 1e6, "damping": 1e12, "pressure": 1e13, "temperature": 1e4,
     "temperature_difference": 1e4, "torsional_stiffness": 1e12, "kinematic_viscosity": 1e2, "inertia": 1e5,

@@ -20,6 +20,7 @@ from math import pi
 
 from .. import mathx as mx
 
+
 def load_inertia(mass, lead, ratio=1.0):
     r"""Inertia of a translating mass seen at the motor, :math:`m (P_h / 2\pi)^2 A^2` [kg m^2].
 

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from .. import model
-from ..catalog import USER_STATUS
+from ..catalog import COLUMNS, USER_STATUS
 from ..errors import InputError
 from ..model.limits import CHECK_RECORDS, CONVEX, LIMITS
 from ..model.params import GUIDE_RATING_DISTANCE, columns_read
@@ -229,8 +229,12 @@ def respond_drive(p, preload) -> dict:
         return model.drive_response(p, preload)
 
 
+# text columns the model reads through a rule (a bearing set's arrangement: its rows per load direction)
+_TEXT_COLUMNS = frozenset(c.name for cols in COLUMNS.values() for c in cols if c.kind == "str")
+
+
 def _arrays(t, cols):
-    return {c: t.number(c) for c in cols}
+    return {c: (np.asarray(t[c]).astype(str) if c in _TEXT_COLUMNS else t.number(c)) for c in cols}
 
 
 @dataclass
