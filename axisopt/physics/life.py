@@ -32,7 +32,7 @@ from axisopt import mathx as mx
 from axisopt.physics.nut import preloaded_pair_load
 
 __all__ = ["NUT_SET_EXPONENT", "BEARING_SET_EXPONENT", "cubic_mean", "directional_means", "preloaded_halves",
-           "set_life", "row_group_rating"]
+           "set_life", "set_equivalent_load", "row_group_rating"]
 
 NUT_SET_EXPONENT = 10.0 / 9.0  # HIWIN H-BS F 3.12: L = (L1^(-10/9) + L2^(-10/9))^(-9/10)
 BEARING_SET_EXPONENT = 1.1  # NSK super-precision bearings, life of a preloaded pair: (L1^-1.1 + L2^-1.1)^(-1/1.1)
@@ -94,6 +94,22 @@ def set_life(lives, exponent=NUT_SET_EXPONENT):
     for life in lives:
         acc = acc + mx.power(life, -exponent)
     return mx.power(acc, -1.0 / exponent)
+
+
+def set_equivalent_load(mean_loads, ratings, exponent=NUT_SET_EXPONENT):
+    r"""The load that, on the first member's rating, gives the set's life (:func:`set_life` of the members'
+    lives L_i = K (C_i / F_i)^3):
+
+    .. math:: F_{eq} = C_1 \left(\sum (F_i / C_i)^{3e}\right)^{1/(3e)},\qquad L = K (C_1 / F_{eq})^3
+
+    mean_loads : F_i [N] (> 0);  ratings : C_i [N];  exponent : e.  Returns F_eq [N].  The same life as
+    :func:`set_life`, written on load ratios (of order 0.01-1) rather than on lives (of order 1e9 rev).
+    """
+    q = 3.0 * exponent
+    acc = 0.0
+    for f, c in zip(mean_loads, ratings):
+        acc = acc + mx.power(f / c, q)
+    return ratings[0] * mx.power(acc, 1.0 / q)
 
 
 def row_group_rating(set_rating, rows_loaded, rows_rated):

@@ -112,3 +112,12 @@ def test_life_functions_take_arrays():
     plus, minus = life.directional_means(loads, [1.0, 1.0])
     assert plus.shape == (2,) and math.isclose(plus[1], 100.0 / 2 ** (1 / 3))
     assert math.isclose(minus[0], 516.0 / 2 ** (1 / 3))
+
+
+def test_set_equivalent_load_gives_the_set_life():
+    # two halves of one rating and two row groups of different ratings: (C1/F_eq)^3 equals the Weibull sum
+    for means, ratings, e in (([1200.0, 700.0], (30e3, 30e3), life.NUT_SET_EXPONENT),
+                              ([3300.0, 3100.0], (46.5e3, 28.5e3), life.BEARING_SET_EXPONENT)):
+        lives = [(c / f) ** 3 for f, c in zip(means, ratings)]
+        f_eq = life.set_equivalent_load(means, ratings, e)
+        assert (ratings[0] / f_eq) ** 3 == pytest.approx(life.set_life(lives, e), rel=1e-12)
