@@ -15,6 +15,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+from dataclasses import dataclass
 
 from .errors import InputError
 
@@ -322,3 +323,68 @@ def split_header(header: str) -> tuple[str, str | None]:
 
 # N/m per N/um: catalogs, tables and solver scaling quote stiffness in N/um.
 N_PER_UM = 1e6
+
+
+# ------------------------------------------------------------------------------ strict unit CSV
+# The readers of unit-headed CSV files (measured tables, time records, catalogs) share the header's and the
+# cells' rules here: a header cell is ``name [unit]``, every column known and once, a unit in brackets exactly
+# when the column has a quantity kind, every cell one finite number; each problem is an InputError naming the
+# file, line and column.
+
+
+@dataclass(frozen=True)
+class CsvColumn:
+    """One column of a unit-headed CSV: its name, the unit as written, its quantity kind (None: a plain number
+    without unit) and the factor to SI (None when there is no unit, or the reader converts it itself)."""
+
+    name: str
+    unit: str | None
+    kind: str | None
+    factor: float | None
+
+
+def read_header(header, *, line: int, source: str, kinds: dict, unknown, factor=None) -> list:
+    """The :class:`CsvColumn` of a header row.  ``kinds``: column name -> quantity kind (None: no unit);
+    ``unknown(name)``: the message for a column not in ``kinds``; ``factor(name, unit, kind, where)``: the SI
+    factor of a unit (default :func:`unit_factor`; a ValueError becomes "<message> in column '<name>'")."""
+    cols = []
+    for j, h in enumerate(header, start=1):
+        name, unit = split_header(h)
+        where = f"line {line}, column {j}"
+        if name not in kinds:
+            raise InputError(unknown(name), source=source, where=where)
+        if name in [c.name for c in cols]:
+            raise InputError(f"duplicate column '{name}'", source=source, where=where)
+        kind = kinds[name]
+        f = None
+        if kind is None:
+            if unit not in (None, "", "-"):
+                raise InputError(f"column '{name}' takes no unit", source=source, where=where)
+        elif unit is None:
+            raise InputError(f"column '{name}' needs a unit in brackets, e.g. '{name} [..]'", source=source,
+                             where=where)
+        else:
+            try:
+                f = factor(name, unit, kind, where) if factor is not None else unit_factor(unit, kind)
+            except ValueError as exc:
+                raise InputError(f"{exc} in column '{name}'", source=source, where=where) from None
+        cols.append(CsvColumn(name, unit, kind, f))
+    return cols
+
+
+def check_width(cells, columns: int, *, source: str, line: int) -> None:
+    """A data row must have as many cells as the header."""
+    if len(cells) != columns:
+        raise InputError(f"has {len(cells)} cells, header has {columns}", source=source, where=f"line {line}")
+
+
+def read_number(cell: str, *, source: str, where: str) -> float:
+    """One cell as a finite number (surrounding blanks allowed)."""
+    try:
+        val = float(cell)
+    except ValueError:
+        c = cell.strip()
+        raise InputError("empty cell" if not c else f"'{c}' is not a number", source=source, where=where) from None
+    if not math.isfinite(val):
+        raise InputError(f"'{cell.strip()}' is not a finite number", source=source, where=where)
+    return val

@@ -9,7 +9,9 @@ from pathlib import Path
 
 from axisopt.design import load_design
 from axisopt.identify import plant_from_design
-from axisopt.identify.idim import BASE, diagnose_time_files, instrumental_variables, least_squares
+from axisopt.identify.estimators import instrumental_variables, least_squares
+from axisopt.identify.idim import diagnose_time_files
+from axisopt.identify.timemodel import BASE
 from axisopt.identify.timesynth import AxisTruth, simulate_axis
 
 BUDGET = 5.0

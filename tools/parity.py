@@ -5,8 +5,9 @@
 Checks REF out in a temporary git worktree, runs ``axisopt solve --json`` for every ``problems/*problem*.yaml``
 ``axisopt evaluate --json`` for every ``problems/*design*.yaml`` (and the paper designs) and ``axisopt diagnose
 --json`` for every shipped data set (``problems/data``: the static table, the XJTU friction series, the time
-records as estimation and validation pairs) with each tree on ``PYTHONPATH``, drops the timing fields (``time_s``, ``*_time``), and prints the keys that differ.  Exit 0 when
-every output is identical, 1 otherwise.  ``--allow KEY`` ignores a top-level path prefix (e.g. a report section
+records as estimation and validation pairs) with each tree on ``PYTHONPATH``, drops the timing fields
+(``time_s``, ``*_time``, ``seconds``), and prints the keys that differ.  Exit 0 when every output is identical,
+1 otherwise.  ``--allow KEY`` ignores a top-level path prefix (e.g. a report section
 that the change is meant to add).
 """
 from __future__ import annotations

@@ -27,7 +27,8 @@ def first_entries(problem: str) -> list[tuple[str, str]]:
         mod = frame.f_globals.get("__name__", "")
         if mod.startswith("axisopt.search"):
             key = (mod, frame.f_code.co_qualname if hasattr(frame.f_code, "co_qualname") else frame.f_code.co_name)
-            if "<" not in key[1] and key not in seen:  # comprehensions, lambdas and nested functions belong to their caller
+            # comprehensions, lambdas and nested functions belong to their caller
+            if "<" not in key[1] and key not in seen:
                 seen[key] = None
 
     prob = axisopt.load_problem(problem)

@@ -2,7 +2,8 @@
 [--save-calibration FILE.yaml] [--effects a,b,...] [--max-effects N] [--gain '0.85 N.m/A']``
 
 A first file with a ``time`` column (and no reduced-table columns) is a time record: the files go to the
-inverse dynamic identification of :mod:`axisopt.identify.idim` (first file estimation, others validation)."""
+inverse dynamic identification of :mod:`axisopt.identify.idim` (first file estimation, others validation); the
+text and JSON of either diagnosis come from :mod:`axisopt.report`."""
 
 from __future__ import annotations
 
@@ -68,7 +69,8 @@ def cmd_diagnose(args) -> int:
 def _cmd_diagnose_time(args) -> int:
     from ..design import load_design
     from ..identify import plant_from_design
-    from ..identify.idim import diagnose_time_files, time_diagnosis_dict, time_diagnosis_text
+    from ..identify.idim import diagnose_time_files
+    from ..report.timediag import time_diagnosis_dict, time_diagnosis_text
 
     for opt, val in (("--report", args.report), ("--save-calibration", args.save_calibration)):
         if val:

@@ -1,8 +1,9 @@
-"""Identification: measured-data formats, fitting, effect library, diagnosis, gain report."""
+"""Identification: measured-data formats, fitting, the effect library, diagnosis of reduced tables
+(:mod:`.diagnose`) and of time records (:mod:`.idim`), judged by one selection rule (:mod:`.selection`)."""
 
 from .data import Dataset, read_dataset
 from .diagnose import Diagnosis, diagnose
-from .effects import Effect, library, register_effect
+from .effects import Effect, library, register_effect, time_effects, unregister_effect
 from .fit import Param
 from .plant import Plant, plant_from_design
 
@@ -17,4 +18,6 @@ __all__ = [
     "plant_from_design",
     "read_dataset",
     "register_effect",
+    "time_effects",
+    "unregister_effect",
 ]

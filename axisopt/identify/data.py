@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import csv
 import io
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -28,7 +27,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..fileio import MAX_DATA_ROWS, read_input
-from ..units import check_plausible, split_header, to_si, unit_factor
+from ..units import check_plausible, check_width, read_header, read_number, to_si, unit_factor
 from ..yamlio import close_matches
 
 # column -> quantity kind (None: a plain number without unit)
@@ -172,30 +171,13 @@ def read_dataset(path) -> Dataset:
     if not rows:
         raise InputError("empty data file", source=src)
     hline, header = rows[0]
-    cols = []
-    for j, h in enumerate(header, start=1):
-        name, unit = split_header(h)
-        where = f"line {hline}, column {j}"
-        if name not in COLUMNS:
-            near = close_matches(name, list(COLUMNS))
-            hint = f"; did you mean '{near[0]}'?" if near else ""
-            raise InputError(f"unknown column '{name}'{hint}", source=src, where=where)
-        if name in [c[0] for c in cols]:
-            raise InputError(f"duplicate column '{name}'", source=src, where=where)
-        qkind = COLUMNS[name]
-        if qkind is None:
-            if unit not in (None, "", "-"):
-                raise InputError(f"column '{name}' takes no unit", source=src, where=where)
-        elif unit is None:
-            raise InputError(
-                f"column '{name}' needs a unit in brackets, e.g. '{name} [..]'", source=src, where=where
-            )
-        else:
-            try:
-                unit_factor(unit, qkind)
-            except ValueError as exc:
-                raise InputError(f"{exc} in column '{name}'", source=src, where=where) from None
-        cols.append((name, unit, qkind))
+
+    def unknown(name):
+        near = close_matches(name, list(COLUMNS))
+        return f"unknown column '{name}'" + (f"; did you mean '{near[0]}'?" if near else "")
+
+    cols = [(c.name, c.unit, c.kind)
+            for c in read_header(header, line=hline, source=src, kinds=COLUMNS, unknown=unknown)]
     names = [c[0] for c in cols]
     kind = detect_kind(names, src)
     spec = KINDS[kind]
@@ -222,19 +204,12 @@ def read_dataset(path) -> Dataset:
     data = np.empty((len(rows) - 1, len(cols)))
     lines = np.empty(len(rows) - 1, dtype=int)
     for r, (i, row) in enumerate(rows[1:]):
-        if len(row) != len(cols):
-            raise InputError(f"has {len(row)} cells, header has {len(cols)}", source=src, where=f"line {i}")
+        check_width(row, len(cols), source=src, line=i)
         lines[r] = i
         for j, ((name, unit, qkind), cell) in enumerate(zip(cols, row), start=1):
             cell = cell.strip()
             where = f"line {i}, column {j} ({name})"
-            try:
-                val = float(cell)
-            except ValueError:
-                msg = "empty cell" if not cell else f"'{cell}' is not a number"
-                raise InputError(msg, source=src, where=where) from None
-            if not math.isfinite(val):
-                raise InputError(f"'{cell}' is not a finite number", source=src, where=where)
+            val = read_number(cell, source=src, where=where)
             if name == "direction" and val not in (1.0, -1.0):
                 raise InputError(f"direction must be +1 or -1, got '{cell}'", source=src, where=where)
             if name == "exclude" and val not in (0.0, 1.0):

@@ -1,20 +1,22 @@
-"""Diagnosis: fit the design's model to measured data, find where it misfits, name the cause.
+"""Diagnosis of reduced tables: fit the design's model to measured data, find where it misfits, name the cause.
 
 1. Baseline: the design's own model with the calibration parameters a test engineer fits
-   (``measure.baseline_params``), weighted by measurement noise (estimated from the data).
-2. Residuals against every recorded factor; a table of where misfit concentrates.
-3. Forward selection over the effect library: each applicable candidate is fitted jointly with the
-   current parameters and scored by BIC; the best is accepted if ``dBIC < -10`` and the grouped
-   cross-validation RMSE (leave one position / load level / cycle block out) improves.
-   Every candidate not accepted keeps the first criterion it failed (dBIC, a value outside its physical
-   range, held-out gain); when no single effect passes, pairs of the best candidates are fitted jointly and
-   accepted when each member is needed (:func:`_best_pair`).
+   (``measure.baseline_params``), weighted by measurement noise (estimated from the data,
+   :func:`.tableresidual.noise_sigma_rel`).
+2. Residuals against every recorded factor; a table of where misfit concentrates (:mod:`.tableresidual`).
+3. Forward selection over the effect library (:func:`.effects.library`): each applicable candidate is fitted
+   jointly with the current parameters and judged by :data:`.selection.TABLE_RULE` -- dBIC < -10, its values
+   in their physical range, and the grouped cross-validation RMSE (leave one position / load level / cycle
+   block out) at least 5 % lower.  Every candidate not accepted keeps the first criterion it failed; when no
+   single effect passes, pairs of the best candidates are fitted jointly and accepted when each member is
+   needed (:func:`_best_pair`).
 4. Gain on held-out data (pooled and per file), parameters +- 1 sigma with plausibility flags (a parameter
-   the data do not fix is "not identifiable", see :func:`.fit._covariance`), runner-up and margin.
+   the data do not fix is "not identifiable", see :func:`.fit.covariance`), runner-up and margin.
 5. What remains: the final residual of every file is tested along each recorded factor against the noise
-   floor (:func:`table_unexplained`); structure left is the "unexplained" verdict, in words.
+   floor (:func:`.tableresidual.table_unexplained`); structure left is the "unexplained" verdict, in words.
 
-Ref.: /work/shared/reference/model-discrepancy.md sec. 2 (method, acceptance rule, gain table).
+The information criterion and its threshold: Kass and Raftery, "Bayes factors", J. Am. Stat. Assoc. 90 (1995)
+773-795; grouped cross-validation: Roberts et al., Ecography 40 (2017) 913-929.
 """
 
 from __future__ import annotations
@@ -28,10 +30,10 @@ from ..display import frame, html_table, one_line
 from ..errors import InputError
 from .effects import library
 from .fit import Block, FitResult, Problem, fit, row_function
-from .measure import FEATURES, Y_UNIT, Obs, baseline_params, baseline_terms, observations, output
+from .measure import FEATURES, baseline_params, baseline_terms, observations, output
+from .selection import TABLE_RULE as RULE
+from .tableresidual import noise_sigma_rel, table_unexplained
 
-ACCEPT_DBIC = -10.0  # Kass-Raftery "very strong"
-MIN_CV_GAIN = 0.05  # held-out RMSE must fall by at least 5 %
 MAX_FOLDS = 8
 
 
@@ -143,7 +145,8 @@ def build_problem(ctx, effects, base) -> Problem:
     return Problem(params, blocks)
 
 
-def _split(obs, v):
+def split_by_observation(obs, v) -> list:
+    """``v`` (the stacked rows of every observation) cut into one array per observation."""
     out, i = [], 0
     for o in obs:
         out.append(v[i : i + o.n])
@@ -151,9 +154,7 @@ def _split(obs, v):
     return out
 
 
-def split_by_observation(obs, v) -> list:
-    """``v`` (the stacked rows of every observation) cut into one array per observation."""
-    return _split(obs, v)
+_split = split_by_observation
 
 
 def param_text(p, v, s) -> str:
@@ -178,75 +179,6 @@ def param_rows(res, names=None) -> list:
         for p, v in zip(res.params, res.theta)
         if names is None or p.name in names
     ]
-
-
-# Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode): the noise
-# floor never takes differences across them.
-_CATEGORICAL_FACTORS = ("direction", "cycle", "mode")
-MIN_REPLICATE_DOF = 5
-
-
-def noise_sigma_rel(o: Obs, resid: np.ndarray) -> tuple[float, str]:
-    """Noise floor relative to the weight scale, and how it was estimated.
-
-    1. Replicates: rows with the same value of every recorded factor (a reading repeated at the same
-       position, load, direction, cycle, ...) differ by noise alone, whatever the model gets wrong; the pooled
-       within-replicate standard deviation is used when it has at least 5 degrees of freedom.
-    2. Otherwise second differences of the residual along one continuous factor within rows that share all
-       other factors (:func:`_second_difference_sigma`): misfit constant or linear along it cancels, and an
-       effect that alternates between neighbouring rows (hysteresis, a direction-dependent friction) is
-       never differenced across."""
-    r = resid / o.scale
-    if o.factors:
-        # every model feature too: an FRF's real and imaginary rows share their factors but are no replicates
-        keys = np.column_stack([np.asarray(v, dtype=float) for v in o.factors.values()] + list(o.Z))
-        _, inv, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
-        inv = np.asarray(inv).ravel()
-        rep = counts[inv] >= 2
-        dof = int(rep.sum() - np.count_nonzero(counts >= 2))
-        if dof >= MIN_REPLICATE_DOF:
-            means = np.bincount(inv, weights=r, minlength=len(counts)) / counts
-            ss = float(np.sum(((r - means[inv]) ** 2)[rep]))
-            s = math.sqrt(ss / dof)
-            return max(s, 1e-6), f"pooled scatter of {int(np.count_nonzero(counts >= 2))} replicate groups " \
-                                 f"({dof} degrees of freedom)"
-    s, how = _second_difference_sigma(o, r)
-    if s is not None:
-        return s, how
-    return 0.01, "assumed 1 % (too few rows to estimate)"
-
-
-def _second_difference_sigma(o: Obs, r: np.ndarray):
-    """Noise from second differences of the residual along one continuous factor, within rows that share
-    every other factor (and the factor's sign): misfit that is constant or linear along that factor cancels
-    (an offset per load direction, a stiffness error growing with the load, a friction term set by the
-    normal load).  Tried along each continuous factor with four or more levels; the smallest estimate is kept
-    (structure only adds).  Gaussian noise: var(e1 - 2 e2 + e3) = 6 sigma^2; median-absolute-deviation form."""
-    names = list(o.factors)
-    if not names:
-        return None, ""
-    cols = {k: np.asarray(o.factors[k], dtype=float) for k in names}
-    best = None
-    for inner in names:
-        v = cols[inner]
-        if inner in ("direction", "mode") or len(np.unique(v)) < 4:  # cycles are ordered: a trend cancels
-            continue
-        keys = [cols[k] for k in names if k != inner] + [np.sign(v)]
-        order = np.lexsort((v, *keys))
-        same = np.ones(len(order) - 1, dtype=bool)
-        for k in keys:
-            ks = k[order]
-            same &= ks[1:] == ks[:-1]
-        rs = r[order]
-        d2 = rs[2:] - 2.0 * rs[1:-1] + rs[:-2]
-        ok = same[1:] & same[:-1]
-        d2 = d2[ok]
-        if len(d2) < 5:
-            continue
-        s = 1.4826 * float(np.median(np.abs(d2 - np.median(d2)))) / math.sqrt(6.0)
-        if best is None or s < best[0]:
-            best = (max(s, 1e-6), f"second differences along {inner} within rows sharing the other factors")
-    return best if best is not None else (None, "")
 
 
 def _check_positions(ds, plant) -> None:
@@ -373,24 +305,21 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 3) -> Diagn
                 c.reason = f"{top.effect.name} was accepted first (dBIC {top.dbic:.1f})"
                 continue
             bad = plausibility(c.fit, effects + [c.effect], names=c.names)
-            if c.dbic >= ACCEPT_DBIC:
-                c.reason = f"dBIC {c.dbic:.1f} not below {ACCEPT_DBIC:g}" + (
-                    f"; and it would need {'; '.join(bad)}" if bad else "")
-                continue
-            if bad:
+            if c.dbic < RULE.accept_dbic and bad:
                 rejected.append((len(rounds), c, bad))
-                c.reason = "would need " + "; ".join(bad)
-                continue
-            c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
-            c.cv_gain = 100.0 * (1.0 - c.cv_rmse / cur_cv)
-            if c.cv_gain < 100.0 * MIN_CV_GAIN:
-                c.reason = f"held-out gain {c.cv_gain:.1f} % below {100 * MIN_CV_GAIN:g} %"
-                continue
-            top = c
+
+            def held_out(c=c, before=cur_cv):
+                c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
+                c.cv_gain = RULE.gain(before, c.cv_rmse)
+                return c.cv_gain
+
+            c.reason = RULE.reason(c.dbic, held_out, "; ".join(bad))
+            if not c.reason:
+                top = c
         if top is None:
             # pairs only when some candidate found signal (dBIC < -10) that no single effect turns into an
             # accepted explanation: a misfit at the noise floor costs no pair fits
-            if len(effects) + 2 > max_effects or not any(c.dbic < ACCEPT_DBIC for c in scored):
+            if len(effects) + 2 > max_effects or not any(c.dbic < RULE.accept_dbic for c in scored):
                 break
             pair = _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, len(rounds), pairs)
             if pair is None:
@@ -406,9 +335,9 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 3) -> Diagn
             ctx.resid = _split(obs, cur_fit.prediction - prob.y)
             continue
         runner = next((c for c in scored if c is not top), None)
-        if runner is not None and runner.cv_gain is None and runner.dbic < ACCEPT_DBIC:
+        if runner is not None and runner.cv_gain is None and runner.dbic < RULE.accept_dbic:
             runner.cv_rmse, runner.holdout = cv_rmse(runner.problem, runner.fit.theta, folds)
-            runner.cv_gain = 100.0 * (1.0 - runner.cv_rmse / cur_cv)
+            runner.cv_gain = RULE.gain(cur_cv, runner.cv_rmse)
         effects.append(top.effect)
         accepted.append(
             Accepted(
@@ -439,16 +368,13 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = 3) -> Diagn
     )
 
 
-MAX_PAIR_POOL = 5  # pairs among at most this many single candidates (the best by dBIC): 10 joint fits
-
-
 def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
     """Effects that only help together: when no single candidate passes, every pair of the round's best
-    ``MAX_PAIR_POOL`` candidates is fitted jointly and scored like a single one (dBIC < -10, plausible,
-    held-out gain >= 5 %); it must also beat each member alone by 5 % of held-out error (each is needed).
-    The pair with the largest held-out gain is returned (a dict), every pair tried is logged with its reason."""
+    candidates (:data:`.selection.TABLE_RULE`: ``pair_pool``) is fitted jointly and judged like a single one;
+    it must also beat each member alone by ``min_gain`` of held-out error (each is needed).  The pair with the
+    largest held-out gain is returned (a dict), every pair tried is logged with its reason."""
     prev = cur_fit.values()
-    pool = scored[:MAX_PAIR_POOL]
+    pool = RULE.pair_pool_of(scored)
     best = None
     for i in range(len(pool)):
         for j in range(i + 1, len(pool)):
@@ -457,103 +383,26 @@ def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
             entry = {"round": rnd, "a": a, "b": b, "fit": res, "problem": prob_p, "dbic": res.bic - cur_fit.bic,
                      "gain": None, "reason": ""}
             log.append(entry)
-            names = a.names + b.names
-            bad = plausibility(res, effects + [a.effect, b.effect], names=names)
-            if entry["dbic"] >= ACCEPT_DBIC:
-                entry["reason"] = f"dBIC {entry['dbic']:.1f} not below {ACCEPT_DBIC:g}"
-                continue
-            if bad:
-                entry["reason"] = "would need " + "; ".join(bad)
-                continue
-            entry["cv"], entry["holdout"] = cv_rmse(prob_p, res.theta, folds)
-            entry["gain"] = gain = 100.0 * (1.0 - entry["cv"] / cur_cv)
-            for c in (a, b):
-                if c.cv_gain is None:
-                    c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
-                    c.cv_gain = 100.0 * (1.0 - c.cv_rmse / cur_cv)
-            alone = max(a.cv_gain, b.cv_gain)
-            if gain < 100.0 * MIN_CV_GAIN:
-                entry["reason"] = f"held-out gain {gain:.1f} % below {100 * MIN_CV_GAIN:g} %"
-            elif gain - alone < 100.0 * MIN_CV_GAIN:
-                entry["reason"] = (f"held-out gain {gain:.1f} % is not {100 * MIN_CV_GAIN:g} % above the better "
-                                   f"member alone ({alone:.1f} %)")
-            elif best is None or gain > best["gain"]:
+            bad = plausibility(res, effects + [a.effect, b.effect], names=a.names + b.names)
+
+            def held_out(entry=entry, prob_p=prob_p, res=res, a=a, b=b):
+                entry["cv"], entry["holdout"] = cv_rmse(prob_p, res.theta, folds)
+                entry["gain"] = RULE.gain(cur_cv, entry["cv"])
+                for c in (a, b):
+                    if c.cv_gain is None:
+                        c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
+                        c.cv_gain = RULE.gain(cur_cv, c.cv_rmse)
+                return entry["gain"]
+
+            entry["reason"] = RULE.pair_reason(entry["dbic"], held_out, "; ".join(bad),
+                                               lambda a=a, b=b: max(a.cv_gain, b.cv_gain))
+            if not entry["reason"] and (best is None or entry["gain"] > best["gain"]):
                 best = entry
     if best is not None:
         for e in log:
             if e is not best and e["round"] == rnd and not e["reason"]:
                 e["reason"] = f"{best['a'].effect.name} + {best['b'].effect.name} predicts better"
     return best
-
-
-@dataclass
-class TableUnexplained:
-    """Structure left in the final noise-weighted residual of one test (1 = the noise floor)."""
-
-    kind: str
-    source: str
-    rms: float  # noise-weighted RMS of the final residual [-]
-    probes: list  # residual.Probe, one per recorded factor (and the velocity shape of friction data)
-
-    @property
-    def remaining(self) -> list:
-        """Significant probes, largest share first -- only when the misfit exceeds the noise floor."""
-        if self.rms < UNEXPLAINED_RMS:
-            return []
-        return sorted([p for p in self.probes if p.significant], key=lambda p: -p.share)
-
-
-UNEXPLAINED_RMS = 1.5  # a noise-weighted residual RMS below this is at the noise floor, whatever its pattern
-
-
-def table_unexplained(obs, resid_w, effects=()) -> list:
-    """Test the final residual of every test for structure along its recorded factors (see
-    :mod:`.residual`): the share of the residual variance each factor's levels hold, its significance; for
-    friction data the velocity dependence's shape (v|v|, v, low-speed rise, direction)."""
-    from . import residual as rs
-
-    out = []
-    for o, r in zip(obs, resid_w):
-        r = np.asarray(r, dtype=float)
-        probes = [rs.factor_probe(name, r, vals, max_bins=8 if name == "velocity" else 6)
-                  for name, vals in o.factors.items() if len(np.unique(vals)) > 1]
-        if o.kind == "friction":
-            v = o.feature("velocity")
-            vs = float(np.quantile(np.abs(v), 0.25)) or 1e-3
-            shapes = {"v|v|": v * np.abs(v), "v": v, "low_speed": np.sign(v) * np.exp(-np.abs(v) / vs)}
-            if np.ptp(np.sign(v)) > 0:
-                shapes.update({"|v|": np.abs(v), "sgn": np.sign(v)})
-            # the shapes are compared after what the model already fits along velocity: its Coulomb level, and
-            # its viscous slope when the viscous effect is in the model
-            W = np.column_stack([np.sign(v), v] if "viscous" in [e.name for e in effects] else [np.sign(v)])
-            if "viscous" in [e.name for e in effects]:
-                shapes.pop("v")
-            for pr in probes:
-                if pr.kind == "velocity":
-                    nm, sh = rs.best_shape(r, shapes, W)
-                    # one smooth column can hold more than the level means do (bins average it out)
-                    pr.detail.update(shape=nm, shape_share=min(sh / pr.share, 1.0) if pr.share > 0 else 0.0)
-                    pr.share = max(pr.share, sh)
-        out.append(TableUnexplained(o.kind, str(o.dataset.source), float(np.sqrt(np.mean(r**2))), probes))
-    return out
-
-
-def table_signature(p, disp) -> tuple:
-    """(what, causes, measurement) of a table probe; ``disp(name, value)`` formats a factor level."""
-    from . import residual as rs
-
-    d = p.detail
-    lo, hi = d.get("worst", (0.0, 0.0))
-    where = f" (largest at {disp(p.kind, lo)}" + (f"..{disp(p.kind, hi)})" if hi != lo else ")")
-    if p.kind == "velocity" and d.get("shape_share", 0.0) >= 0.7:
-        what, causes, measure = rs.VELOCITY_WORDS[d["shape"]]
-        return f"depends on velocity: {what}", causes, measure
-    if p.kind == "velocity":
-        return ("depends on velocity in a shape none of the library's terms has" + where,
-                "a friction law outside the library", "a friction curve over the whole speed range, both ways")
-    what, causes, measure = rs.FACTOR_WORDS.get(p.kind, (f"varies with {p.kind}", "an effect outside the library",
-                                                         f"vary {p.kind} on purpose"))
-    return what + where, causes, measure
 
 
 def plausibility(res: FitResult, effects, names=None) -> list:
@@ -569,73 +418,3 @@ def plausibility(res: FitResult, effects, names=None) -> list:
                 f"{p.name} = {p.show(v):.4g} {p.unit} outside {p.show(lo):.4g}..{p.show(hi):.4g}{note}"
             )
     return out
-
-
-# ------------------------------------------------------------------------------ residual analysis
-def residual_table(o: Obs, resid: np.ndarray, max_bins: int = 6) -> list:
-    """Where misfit concentrates: for every recorded factor, the share of residual variance explained by
-    its levels (eta^2), the worst level and its RMS.  ``resid`` = prediction - y (SI)."""
-    unit, f = Y_UNIT[o.kind]
-    r = resid * f
-    if o.kind == "stiffness":  # misfit in compliance: a wrong stiffness would otherwise just track |F|
-        force = o.feature("force")
-        ok = np.abs(force) > 0.05 * np.max(np.abs(force))
-        r = np.where(ok, resid / np.where(ok, force, 1.0), 0.0) * 1e6
-        unit = "um/N"
-    total = float(np.sum((r - r.mean()) ** 2)) or 1e-300
-    rows = []
-    for name, vals in o.factors.items():
-        levels = np.unique(vals)
-        if len(levels) < 2:
-            continue
-        if len(levels) > max_bins:
-            edges = np.quantile(vals, np.linspace(0, 1, max_bins + 1)[1:-1])
-            idx = np.searchsorted(edges, vals, side="right")
-            labels = [
-                f"{_disp(name, vals[idx == i].min())}..{_disp(name, vals[idx == i].max())}"
-                for i in range(max_bins)
-            ]
-        else:
-            idx = np.searchsorted(levels, vals)
-            labels = [_disp(name, v) for v in levels]
-        between, worst = 0.0, (None, -1.0)
-        for i in np.unique(idx):
-            ri = r[idx == i]
-            between += len(ri) * (ri.mean() - r.mean()) ** 2
-            rms = float(np.sqrt(np.mean(ri**2)))
-            if rms > worst[1]:
-                worst = (labels[i], rms)
-        rows.append(
-            {
-                "factor": name,
-                "eta2": between / total,
-                "worst_level": worst[0],
-                "worst_rms": worst[1],
-                "rms": float(np.sqrt(np.mean(r**2))),
-                "unit": unit,
-            }
-        )
-    rows.sort(key=lambda d: -d["eta2"])
-    return rows
-
-
-_DISP = {
-    "position": (1e3, "mm"),
-    "velocity": (1e3, "mm/s"),
-    "frequency": (1.0, "Hz"),
-    "force": (1.0, "N"),
-    "normal_load": (1.0, "N"),
-    "axial_load": (1.0, "N"),
-    "time": (1.0, "s"),
-    "temperature": (1.0, "K"),
-}
-
-
-def _disp(name, v):
-    f, u = _DISP.get(name, (1.0, ""))
-    return f"{v * f:.4g}{(' ' + u) if u else ''}"
-
-
-def display_value(name, v) -> str:
-    """A factor's value in its display unit (e.g. a velocity in mm/s), as text."""
-    return _disp(name, v)

@@ -200,7 +200,7 @@ def fit(problem: Problem, theta0=None, mask=None, maxit: int = 60, tol: float = 
             converged = True
             break
     n = int(np.count_nonzero(wm))
-    cov = _covariance(J, rss, n, scale)
+    cov = covariance(J, rss, n, scale)
     full_r = (pred - problem.y) * problem.w
     return FitResult(
         params,
@@ -216,7 +216,7 @@ def fit(problem: Problem, theta0=None, mask=None, maxit: int = 60, tol: float = 
     )
 
 
-def _covariance(J, rss, n, scale):
+def covariance(J, rss, n, scale):
     """sigma^2 (J^T J)^-1 in SI.  A parameter in a direction the data do not fix (a zero or dependent Jacobian
     column: a Stribeck velocity far below every test speed, a term held at its bound) gets an infinite
     variance -- "not identifiable" -- instead of the zero a pseudo-inverse would give it."""

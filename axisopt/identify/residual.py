@@ -2,9 +2,9 @@
 signature in words (what it looks like, what could cause it, which measurement would separate the causes).
 
 A *probe* is a set of columns G (functions of the recorded factors: position, velocity, direction, time, ...).
-Its share of the residual r is the added-variable statistic of the model-discrepancy reference (sec. 2.1 step
-3): G is first made orthogonal to the fitted model's own columns W, so a probe is never credited with what
-the model can already absorb by refitting, then
+Its share of the residual r is the added-variable (partial regression) statistic (R. D. Cook, S. Weisberg,
+*Residuals and Influence in Regression*, Chapman & Hall 1982): G is first made orthogonal to the fitted
+model's own columns W, so a probe is never credited with what the model can already absorb by refitting, then
 
 .. math:: s = \\|P_{G_\\perp} r\\|^2 / \\|r\\|^2, \\qquad
           \\chi^2 = n_{eff}\\, s/(1 - s) \\sim \\chi^2_k \\text{ under white noise}

@@ -36,7 +36,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..fileio import MAX_TIME_SAMPLES, read_input
-from ..units import check_plausible, split_header, unit_factor
+from ..units import check_plausible, check_width, read_header, read_number, split_header, unit_factor
 
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
@@ -150,19 +150,10 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
         header = next(csv.reader([htext]))
     except csv.Error as exc:
         raise InputError(f"malformed CSV header ({exc})", source=src, where=f"line {hline}") from None
-    cols = []
-    for j, h in enumerate(header, start=1):
-        name, unit = split_header(h)
-        where = f"line {hline}, column {j}"
-        if name not in COLUMNS:
-            raise InputError(f"unknown column '{name}' in a time record; expected {', '.join(COLUMNS)}",
-                             source=src, where=where)
-        if name in [c[0] for c in cols]:
-            raise InputError(f"duplicate column '{name}'", source=src, where=where)
-        if unit is None:
-            raise InputError(f"column '{name}' needs a unit in brackets, e.g. '{name} [..]'", source=src,
-                             where=where)
-        cols.append((name, unit, _factor(name, unit, src, where, lead)))
+    cols = [(c.name, c.unit, c.factor) for c in read_header(
+        header, line=hline, source=src, kinds={c: _KIND.get(c, "current") for c in COLUMNS},
+        unknown=lambda name: f"unknown column '{name}' in a time record; expected {', '.join(COLUMNS)}",
+        factor=lambda name, unit, kind, where: _factor(name, unit, src, where, lead))]
     names = [c[0] for c in cols]
     for need in ("time", "position"):
         if need not in names:
@@ -192,19 +183,11 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     lines = np.empty(n, dtype=int)
     for r, (i, text) in enumerate(rows[1:]):
         cells = text.split(",")
-        if len(cells) != len(cols):
-            raise InputError(f"has {len(cells)} cells, header has {len(cols)}", source=src, where=f"line {i}")
+        check_width(cells, len(cols), source=src, line=i)
         lines[r] = i
         for j, cell in enumerate(cells):
-            try:
-                val = float(cell)
-            except ValueError:
-                c = cell.strip()
-                msg = "empty cell" if not c else f"'{c}' is not a number"
-                raise InputError(msg, source=src, where=f"line {i}, column {j + 1} ({names[j]})") from None
             where = f"line {i}, column {j + 1} ({names[j]})"
-            if not math.isfinite(val):
-                raise InputError(f"'{cell.strip()}' is not a finite number", source=src, where=where)
+            val = read_number(cell, source=src, where=where)
             if names[j] in _KIND:  # the tables' range check (data.py): a value no axis can produce is refused
                 check_plausible(val * cols[j][2], _KIND[names[j]], cell.strip(), source=src, key=where, tiny=False)
             data[r, j] = val
@@ -306,7 +289,7 @@ def lowpass(x, fs: float, fc: float, order: int = BUTTER_ORDER) -> np.ndarray:
     return y[:, 0] if one else y
 
 
-def _welch(x, fs, nseg=1024):
+def welch(x, fs, nseg=1024):
     nseg = min(nseg, len(x))
     step = nseg // 2
     win = np.hanning(nseg)
@@ -329,7 +312,7 @@ def choose_cutoff(q, fs: float) -> CutoffChoice:
     the upper half of the band -- and the cut-off is the highest frequency where the signal is still 10x
     that floor, but at least 5x the motion bandwidth (99 % of the signal power) and at most fs/8."""
     v = np.diff(q) * fs
-    f, ps = _welch(v, fs)
+    f, ps = welch(v, fs)
     shape = np.sin(np.pi * f / fs) ** 2 + 1e-30
     upper = f > fs / 4
     n0 = float(np.median(ps[upper] / shape[upper]))

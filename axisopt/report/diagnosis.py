@@ -10,9 +10,10 @@ from pathlib import Path
 import numpy as np
 
 from ..fileio import tidy_layout
-from ..identify.diagnose import param_rows, plausibility, residual_table
+from ..identify.diagnose import param_rows, plausibility
 from ..identify.diagnose import split_by_observation as _split
 from ..identify.measure import Y_UNIT
+from ..identify.tableresidual import display_value, residual_table, table_signature
 from . import save_figure, write_text_atomic
 from .evaluation import fit_lines
 
@@ -128,8 +129,6 @@ def diagnosis_dict(diag) -> dict:
 
 def unexplained_dicts(diag) -> list:
     """Per dataset: is structure left in the final residual, and its signatures in words."""
-    from ..identify.diagnose import display_value, table_signature
-
     out = []
     for u in diag.unexplained:
         sigs = []
@@ -218,7 +217,7 @@ def quantity_notes(diag) -> list:
     return out
 
 
-def _peak(freq, mag):
+def frf_peak(freq, mag):
     """Peak frequency of a sampled magnitude, refined by a parabola through the top three points in
     log-frequency.  Repeated readings at one frequency count once, with their largest magnitude."""
     freq, mag = np.asarray(freq, dtype=float), np.asarray(mag, dtype=float)
@@ -258,10 +257,10 @@ def frf_modes(diag) -> list:
             sel = sel[np.argsort(freq[sel])]
             out.append({
                 "file": o.dataset.source, "position_mm": float(p) * 1e3,
-                "measured_peak_Hz": _peak(freq[sel], mag(o.y)[sel]),
+                "measured_peak_Hz": frf_peak(freq[sel], mag(o.y)[sel]),
                 "measured_peak_um_per_N": float(np.max(mag(o.y)[sel])) * 1e6,
-                "baseline_peak_Hz": _peak(freq[sel], mag(yb)[sel]),
-                "model_peak_Hz": _peak(freq[sel], mag(yf)[sel]),
+                "baseline_peak_Hz": frf_peak(freq[sel], mag(yb)[sel]),
+                "model_peak_Hz": frf_peak(freq[sel], mag(yf)[sel]),
                 "damping_ratio": vals.get("damping_ratio"),
                 "extra_mode_Hz": vals.get("mode_frequency"), "extra_mode_damping": vals.get("mode_damping"),
             })

@@ -111,11 +111,11 @@ def estimated_at_optimum(problem: Problem, res: SolveResult, objective_outputs) 
 
 def _solve_scalar(problem, space, constraints, spec, method, top, time_limit, t0) -> SolveResult:
     if method == "bonmin":
-        from .bonmin import solve_bonmin
+        from .minlp import solve_bonmin
 
         return solve_bonmin(problem, space, constraints, spec, time_limit=time_limit, top=top, t0=t0)
     if method == "scip":
-        from .scip import solve_scip
+        from .minlp import solve_scip
 
         return solve_scip(problem, space, constraints, spec, time_limit=time_limit, top=top, t0=t0)
     if method == "exhaustive":

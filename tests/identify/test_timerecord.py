@@ -1,5 +1,6 @@
-"""Time-record identification (IDIM, LS and IV): baseline recovery, hidden effects named with their
-parameters, null cases and decoys, current/torque records, bad-input one-liners.
+"""Time-record reader (:mod:`axisopt.identify.timerecord`): current records with a gain (motor side and
+table equivalents), position in revolutions, bad input as one line naming file, line and column, validation
+runs with other columns, a bad external-force column.
 
 The records come from :mod:`axisopt.identify.timesynth`, a closed-loop simulator written apart from the
 identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 1 kHz)."""
@@ -16,9 +17,11 @@ from axisopt.design import load_design
 from axisopt.errors import InputError
 from axisopt.identify import plant_from_design
 from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import AxisTruth, LoopSettings, simulate_axis
+from axisopt.identify.timesynth import AxisTruth, simulate_axis
 
 DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
+
+
 LEAD = 0.01
 
 
@@ -36,95 +39,41 @@ def records(tmp_path, truth, loop=None, seed=0, est_s=12.0, val_s=8.0, **csv):
     return [est, val]
 
 
-def baseline_truth(rng, **kw):
+# ------------------------------------------------------------------------------------------- bad input
+def _good(tmp_path, name="g.csv", n=400, header="time [s],position [mm],force [N]", pre=""):
+    t = np.arange(n) / 1000.0
+    x = 100 + 20 * np.sin(2 * np.pi * t)
+    f = 50 * np.cos(2 * np.pi * t)
+    body = "\n".join(f"{a:.4f},{b:.5f},{c:.4f}" for a, b, c in zip(t, x, f))
+    p = tmp_path / name
+    p.write_text(pre + header + "\n" + body + "\n")
+    return p
+
+
+def _edit(p, line, text):
+    lines = p.read_text().splitlines()
+    lines[line - 1] = text
+    p.write_text("\n".join(lines) + "\n")
+    return p
+
+
+def truth_for(seed, **kw):
+    rng = np.random.default_rng(seed)
     sign = rng.choice([-1.0, 1.0])
     return AxisTruth(mass=rng.uniform(300, 900), viscous=rng.uniform(600, 2500), coulomb=rng.uniform(200, 600),
                      offset=sign * rng.uniform(20, 60), **kw)
 
 
-def close(est, term, true, rel):
-    assert est.value(term) == pytest.approx(true, rel=rel), (term, est.value(term), true)
-
-
-@pytest.mark.parametrize("seed", [11, 12, 13])
-def test_baseline_recovered_by_ls_and_iv_and_null_names_nothing(tmp_path, plant, seed):
-    truth = baseline_truth(np.random.default_rng(seed))
-    diag = diagnose_time_files(records(tmp_path, truth, seed=seed), plant=plant)
-    for est in (diag.baseline_ls, diag.baseline_iv):
-        close(est, "M", truth.mass, 0.10)
-        close(est, "Fv", truth.viscous, 0.10)
-        close(est, "Fc", truth.coulomb, 0.10)
-        close(est, "offset", truth.offset, 0.10)
-    assert diag.baseline_iv.converged and diag.baseline_iv.iterations >= 2
-    assert diag.verdict == []
-    assert diag.validation and diag.validation[0].n > 200
-
-
-def _stribeck(rng):
-    fs, vs = rng.uniform(80, 200), rng.uniform(0.003, 0.008)
-    return dict(stribeck=fs, stribeck_v=vs), None, {"Fs": (fs, 0.10), "vs": (vs, 0.20)}
-
-
-def _asym(rng):
-    dfv = rng.choice([-1.0, 1.0]) * rng.uniform(400, 900)
-    dfc = rng.choice([-1.0, 1.0]) * rng.uniform(20, 80)
-    return dict(viscous_asym=dfv, coulomb_asym=dfc), None, {"dFv": (dfv, 0.10)}
-
-
-def _position(rng):
-    c = rng.choice([-1.0, 1.0], 2) * rng.uniform(80, 150, 2)
-    return dict(position_coeffs=(c[0], c[1])), None, {"c1": (c[0], 0.10), "c2": (c[1], 0.10)}
-
-
-def _mode(rng):
-    f = rng.uniform(25, 40)
-    return dict(mode_hz=f, mode_zeta=0.1, mode_mass=rng.uniform(100, 200)), LoopSettings(bandwidth_hz=3.0), \
-        {"f_r": (f, 0.10)}
-
-
-EFFECT_CASES = {"stribeck": _stribeck, "direction_asymmetry": _asym, "position_friction": _position,
-                "extra_mode": _mode}
-
-
-@pytest.mark.parametrize("name,seed", [(n, s) for n in EFFECT_CASES for s in (21, 22)])
-def test_hidden_effect_named_first_with_its_parameter(tmp_path, plant, name, seed):
-    rng = np.random.default_rng(seed)
-    kw, loop, expect = EFFECT_CASES[name](rng)
-    truth = baseline_truth(rng, **kw)
-    diag = diagnose_time_files(records(tmp_path, truth, loop, seed=seed), plant=plant)
-    assert diag.verdict and diag.verdict[0] == name, diag.verdict
-    assert diag.accepted[0].gain >= 30.0
-    fin = diag.final
-    assert fin.method == "IV"
-    for term, (true, rel) in expect.items():
-        got = fin.shape["vs"] if term == "vs" else (
-            math.sqrt(fin.value("M") / fin.value("beta")) / (2 * math.pi) if term == "f_r" else fin.value(term))
-        assert got == pytest.approx(true, rel=rel), (term, got, true)
-    close(fin, "M", truth.mass, 0.10)
-    if name == "direction_asymmetry":  # the Coulomb half-difference is a constant while moving: in the offset
-        close(fin, "offset", truth.offset + truth.coulomb_asym / 2, 0.10)
-
-
-def test_decoy_offset_is_not_an_asymmetry(tmp_path, plant):
-    truth = AxisTruth(offset=150.0)
-    diag = diagnose_time_files(records(tmp_path, truth, seed=31), plant=plant)
-    assert diag.verdict == []
-    close(diag.final, "offset", 150.0, 0.05)
-
-
-def test_decoy_strong_viscous_is_not_stribeck(tmp_path, plant):
-    truth = AxisTruth(viscous=5000.0, coulomb=150.0)
-    diag = diagnose_time_files(records(tmp_path, truth, seed=32), plant=plant)
-    assert "stribeck" not in diag.verdict
-    assert diag.verdict == []
-    close(diag.final, "Fv", 5000.0, 0.05)
-
-
-def test_decoy_stribeck_is_not_viscous_or_position(tmp_path, plant):
-    truth = AxisTruth(stribeck=120.0, stribeck_v=0.02, viscous=800.0)  # slow decay over the speed range
-    diag = diagnose_time_files(records(tmp_path, truth, seed=33), plant=plant, max_effects=2)
-    assert diag.verdict == ["stribeck"]
-    close(diag.final, "Fv", 800.0, 0.10)
+def _rewrite(src, dst, header=None, cell=None):
+    lines = src.read_text().splitlines()
+    if header:
+        lines[0] = header
+    if cell:
+        row, col, val = cell
+        cells = lines[row].split(",")
+        cells[col] = val
+        lines[row] = ",".join(cells)
+    dst.write_text("\n".join(lines) + "\n")
 
 
 def test_current_record_with_gain_reports_motor_side_and_table_equivalents(tmp_path, plant, capsys):
@@ -149,33 +98,6 @@ def test_current_record_with_gain_reports_motor_side_and_table_equivalents(tmp_p
                  str(out)]) == 0
     d2 = json.loads(out.read_text())
     assert d2["baseline"]["IV"]["parameters"][0]["value"] == pytest.approx(par["J"]["value"], rel=1e-9)
-
-
-def test_without_reference_iv_uses_delayed_regressors(tmp_path, plant):
-    truth = AxisTruth(mass=400.0, viscous=900.0, coulomb=250.0)
-    paths = records(tmp_path, truth, seed=51, columns=("time", "position", "force"))
-    diag = diagnose_time_files(paths, plant=plant)
-    assert diag.controller is None and "delayed-regressor" in diag.baseline_iv.note
-    close(diag.baseline_iv, "M", 400.0, 0.10)
-    close(diag.baseline_iv, "Fc", 250.0, 0.10)
-
-
-# ------------------------------------------------------------------------------------------- bad input
-def _good(tmp_path, name="g.csv", n=400, header="time [s],position [mm],force [N]", pre=""):
-    t = np.arange(n) / 1000.0
-    x = 100 + 20 * np.sin(2 * np.pi * t)
-    f = 50 * np.cos(2 * np.pi * t)
-    body = "\n".join(f"{a:.4f},{b:.5f},{c:.4f}" for a, b, c in zip(t, x, f))
-    p = tmp_path / name
-    p.write_text(pre + header + "\n" + body + "\n")
-    return p
-
-
-def _edit(p, line, text):
-    lines = p.read_text().splitlines()
-    lines[line - 1] = text
-    p.write_text("\n".join(lines) + "\n")
-    return p
 
 
 @pytest.mark.parametrize(
@@ -221,17 +143,39 @@ def test_reader_errors_are_input_errors(tmp_path, plant):
         diagnose_time_files([p], plant=plant)
 
 
-def test_implausible_time_effect_is_not_accepted(tmp_path, plant):
-    """Friction that *drops* at low speed (a negative Stribeck excess, -40 % of Coulomb) fits the Stribeck
-    term only with Fs < 0, outside its physical range: with Stribeck the only candidate, nothing is accepted
-    and the output says what it would need.  Control: the same record with a positive excess is accepted."""
-    rng = np.random.default_rng(7)
-    base = dict(mass=500.0, viscous=1200.0, coulomb=400.0, offset=20.0)
-    bad = AxisTruth(**base, stribeck=-160.0, stribeck_v=0.005)
-    diag = diagnose_time_files(records(tmp_path, bad, seed=int(rng.integers(100))), plant=plant,
-                               candidates=["stribeck"])
-    assert diag.verdict == []
-    assert diag.rejected and diag.rejected[0][1].effect.name == "stribeck" and "Fs" in diag.rejected[0][2]
-    good = AxisTruth(**base, stribeck=160.0, stribeck_v=0.005)
-    diag = diagnose_time_files(records(tmp_path, good, seed=3), plant=plant, candidates=["stribeck"])
-    assert diag.verdict == ["stribeck"]
+@pytest.mark.parametrize("header,cell,what", [
+    ("time [s],position [mm],force [N],reference [mm],external_force [mm]", None,
+     "line 1, column 5.*not a unit of force"),
+    (None, (3, 4, "abc"), "line 4, column 5 .external_force.: 'abc' is not a number"),
+    (None, (3, 4, ""), "line 4, column 5 .external_force.: empty cell"),
+])
+def test_bad_external_force_is_one_line_exit_2(tmp_path, capsys, header, cell, what):
+    import re
+
+    truth = AxisTruth(process_force=100.0)
+    src = tmp_path / "src.csv"
+    simulate_axis(truth, duration=1.0, seed=1).write_csv(src, columns=("time", "position", "force", "reference",
+                                                                       "external_force"))
+    bad = tmp_path / "bad.csv"
+    _rewrite(src, bad, header, cell)
+    assert main(["diagnose", str(bad), "--design", str(DESIGN)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and re.search(what, err), err
+
+
+def test_position_in_revolutions_is_accepted(tmp_path, plant):
+    """The README lists [rev] for a motor-angle position: read like [rad], through the lead."""
+    rec = simulate_axis(truth_for(9), duration=8.0, seed=9)
+    rad, rev = tmp_path / "rad.csv", tmp_path / "rev.csv"
+    rec.write_csv(rad, position_unit="rad")
+    lines = rad.read_text().splitlines()
+    head = lines[0].replace("position [rad]", "position [rev]").replace("reference [rad]", "reference [rev]")
+    rows = []
+    for ln in lines[1:]:
+        c = ln.split(",")
+        c[1], c[3] = f"{float(c[1]) / (2 * math.pi):.8g}", f"{float(c[3]) / (2 * math.pi):.8g}"
+        rows.append(",".join(c))
+    rev.write_text("\n".join([head] + rows) + "\n")
+    a = diagnose_time_files([rad], plant=plant, candidates=["stribeck"])
+    b = diagnose_time_files([rev], plant=plant, candidates=["stribeck"])
+    assert b.baseline_ls.value("M") == pytest.approx(a.baseline_ls.value("M"), rel=1e-3)

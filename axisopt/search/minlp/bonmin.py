@@ -1,20 +1,18 @@
 """Reference method: the whole problem as one MINLP for CasADi + Bonmin (a heuristic on this
 nonconvex problem).
 
-One-hot binaries choose the nut (which fixes the screw), the bearing arrangement and the guide (with the
-drive: one binary per guide-and-drive entry of the space's last axis); each
-part parameter is the binary-weighted sum of the catalog column, so the symbolic
-:func:`axisopt.model.axis_response` is evaluated on a mixture that is exact at integer points.  The
-nut preload is ``lo(z) + w (hi(z) - lo(z))`` with w in [0, 1].  The objective is an epigraph variable
-below the objective at every grid position (same grid as the other methods); every limit is a
-scaled constraint.  A mounting is a structural choice of the model, so each allowed mounting is one
-MINLP, run in turn within the overall time limit.  Bonmin's own status is reported as is; the chosen
-combination is then re-evaluated exactly and re-checked.
+The formulation is :mod:`axisopt.search.minlp.formulation`'s: one-hot binaries choose the nut, the bearing
+arrangement and the guide-and-drive entry, and the symbolic :func:`axisopt.model.axis_response` is evaluated
+on the binary-weighted part parameters (exact at integer points).  The nut preload is
+``lo(z) + w (hi(z) - lo(z))`` with w in [0, 1].  The objective is an epigraph variable below the objective at
+every grid position (same grid as the other methods); every limit is a constraint scaled by
+:func:`axisopt.search.minlp.scaling.scaled_limit`.  A mounting is a structural choice of the model, so each
+allowed mounting is one MINLP, run in turn within the overall time limit.  Bonmin's own status is reported as
+is; the chosen combination is then re-evaluated exactly and re-checked.
 """
 
 from __future__ import annotations
 
-import contextlib
 import logging
 import os
 import sys
@@ -23,68 +21,32 @@ import time
 import casadi as ca
 import numpy as np
 
-from .. import model
-from .core import _feasible_at, make_candidate
-from .result import Certificate, SolveResult
-from .space import N_PER_UM, STIFFNESS_OUTPUTS, respond
+from ... import model
+from ..core import make_candidate
+from ..result import Certificate, SolveResult
+from ..space import N_PER_UM, STIFFNESS_OUTPUTS
+from .formulation import SLOTS, integral, one_hot_params, one_hot_symbols, recover
+from .scaling import scaled_limit
+from .streams import quiet_stdout
 
-
-@contextlib.contextmanager
-def _quiet_stdout():
-    """Bonmin/CBC print node logs from C++ straight to file descriptor 1; send them to /dev/null."""
-    sys.stdout.flush()
-    try:
-        fd = sys.stdout.fileno()
-    except (AttributeError, OSError, ValueError):  # e.g. captured stdout without a descriptor
-        yield
-        return
-    saved = os.dup(fd)
-    try:
-        with open(os.devnull, "w") as null:
-            os.dup2(null.fileno(), fd)
-            yield
-    finally:
-        os.dup2(saved, fd)
-        os.close(saved)
-
-
-def _slot_params(space, mounting):
-    """Param name -> (slot, values) where slot is 'nut' | 'bearing' | 'guide' | 'axis'."""
-    ps = space.params_structured(mounting)
-    out = {}
-    for name, v in ps.items():
-        if name == "duty":
-            continue
-        a = np.asarray(v, dtype=float)
-        if a.ndim == 0 or a.size == 1:
-            out[name] = ("axis", float(a.reshape(-1)[0]) if a.ndim else float(a))
-        elif a.shape[0] > 1 or (a.ndim == 4 and a.shape[1] == 1 and a.shape[2] == 1):
-            out[name] = ("nut", a.reshape(-1))
-        elif a.shape[1] > 1 or (a.ndim == 4 and a.shape[2] == 1):
-            out[name] = ("bearing", a.reshape(-1))
-        else:
-            out[name] = ("guide", a.reshape(-1))
-    return out
+FLOOR = 1e-6  # of each column's mean added to the one-hot mixtures (no stiffness or diameter exactly 0)
+# a preload that misses a limit on exact re-evaluation is backed off by this fraction of its range (Bonmin's
+# constraint tolerance)
+MOVES = (-1e-6,)
 
 
 def _build(space, mounting, constraints, objective):
     _, N, B, G = space.shape
-    z = {"nut": ca.SX.sym("z_nut", N), "bearing": ca.SX.sym("z_bearing", B), "guide": ca.SX.sym("z_guide", G)}
+    z = one_hot_symbols(space)
     w = ca.SX.sym("w")
     t = ca.SX.sym("t", len(objective.terms))
-    p = {}
-    for name, (slot, vals) in _slot_params(space, mounting).items():
-        # one-hot selection (linear in z, the standard MINLP form), plus 1e-6 of the column mean so that no
-        # stiffness, diameter or preload is exactly 0 at the z = 0 points Bonmin visits (NaN derivatives
-        # of cube roots and 1/k otherwise); the chosen design is re-evaluated exactly afterwards
-        p[name] = vals if slot == "axis" else ca.dot(ca.DM(vals), z[slot]) + 1e-6 * float(np.mean(vals))
-    p["duty"] = space.problem.axis_for(mounting).phases
-    lo = ca.dot(ca.DM(space.preload_lo), z["nut"]) + 1e-6 * float(np.mean(space.preload_hi))
-    hi = ca.dot(ca.DM(space.preload_hi), z["nut"]) + 1e-6 * float(np.mean(space.preload_hi))
+    p = one_hot_params(space, mounting, z, floor=FLOOR)
+    lo = ca.dot(ca.DM(space.preload_lo), z["nut"]) + FLOOR * float(np.mean(space.preload_hi))
+    hi = ca.dot(ca.DM(space.preload_hi), z["nut"]) + FLOOR * float(np.mean(space.preload_hi))
     x = space.positions(mounting)
     out = model.axis_response(p, ca.DM(x), mounting, lo + w * (hi - lo))
     g, lbg, ubg = [], [], []
-    for s in ("nut", "bearing", "guide"):
+    for s in SLOTS:
         g.append(ca.sum1(z[s]))
         lbg.append(1.0)
         ubg.append(1.0)
@@ -95,14 +57,9 @@ def _build(space, mounting, constraints, objective):
         ubg += [ca.inf] * v.shape[0]
     for c in constraints:
         v = ca.SX(out[c.key])  # a drive check without a motor is a constant
-        if c.key == "life" or c.key.startswith("margin_"):
-            e = ca.log(ca.fmax(v, 1e-300) / c.limit)
-        elif c.limit <= 0:  # e.g. max_backlash 0: the value in display units must be <= 0
-            e = v / c.factor
-        else:
-            e = v / c.limit - 1.0
+        e, rhs = scaled_limit(c, v)
         n = v.shape[0]
-        g.append(e)
+        g.append(e - rhs)
         lbg += [0.0 if c.sense == ">=" else -ca.inf] * n
         ubg += [ca.inf if c.sense == ">=" else 0.0] * n
     xvar = ca.vertcat(z["nut"], z["bearing"], z["guide"], w, t)
@@ -185,7 +142,7 @@ def _mounting_solve(space, mounting, constraints, objective, time_limit: float):
 
 def _solve_here(solver, args: dict):
     try:
-        with _quiet_stdout():
+        with quiet_stdout():
             sol = solver(**args)
     except RuntimeError as exc:
         last = [ln for ln in str(exc).splitlines() if ln.strip()][-1]
@@ -197,6 +154,8 @@ def _solve_here(solver, args: dict):
 
 def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 100.0, top: int = 1,
                  t0: float | None = None) -> SolveResult:
+    """Solve each mounting's MINLP with Bonmin and return the best design (re-evaluated; never proven: status
+    'feasible' at best).  One design only (``top`` is accepted for the common signature)."""
     t0 = time.perf_counter() if t0 is None else t0
     _, N, B, G = space.shape
     best = None
@@ -224,27 +183,18 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
         xs, st = got
         status = str(st.get("return_status", "unknown"))
         statuses.append(f"{mounting}: {status}")
-        if not st.get("success", False) and status not in ("SUCCESS",):
-            # Bonmin may still carry an integer feasible point (e.g. on the time limit); check it below
-            pass
-        zn, zb, zg = xs[:N], xs[N:N + B], xs[N + B:N + B + G]
-        if not (np.isclose(zn.max(), 1.0, atol=1e-6) and np.isclose(zb.max(), 1.0, atol=1e-6)
-                and np.isclose(zg.max(), 1.0, atol=1e-6)):
+        # whatever the status, Bonmin may carry an integer feasible point (e.g. on the time limit): checked here
+        zs = dict(zip(SLOTS, (xs[:N], xs[N:N + B], xs[N + B:N + B + G])))
+        if not integral(zs):
             notes.append(f"{mounting}: no integer solution returned")
             continue
-        n, b, g = int(np.argmax(zn)), int(np.argmax(zb)), int(np.argmax(zg))
-        combo = int(np.ravel_multi_index((mi, n, b, g), space.shape))
-        lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
-        pre = lo + float(np.clip(xs[N + B + G], 0, 1)) * (hi - lo)
-        if not _feasible_at(space, combo, pre, constraints):
-            # tolerate Bonmin's constraint tolerance: back the preload off within 1e-6 of the range
-            pre2 = max(lo, pre - 1e-6 * max(hi - lo, 1.0))
-            if _feasible_at(space, combo, pre2, constraints):
-                pre = pre2
-            else:
-                notes.append(f"{mounting}: Bonmin's point violates a limit on exact re-evaluation "
-                             f"(combination {combo}, preload {pre:.1f} N)")
-                continue
+        w = float(np.clip(xs[N + B + G], 0, 1))
+        got = recover(space, mi, zs, lambda lo, hi, w=w: lo + w * (hi - lo), constraints, MOVES)
+        combo, pre = got.combination, got.preload
+        if pre is None:  # beyond Bonmin's constraint tolerance
+            notes.append(f"{mounting}: Bonmin's point violates a limit on exact re-evaluation "
+                         f"(combination {combo}, preload {got.proposed:.1f} N)")
+            continue
         cand = make_candidate(space, combo, pre, objective, rank=1)
         if best is None or cand.objective > best.objective:
             best = cand
@@ -270,4 +220,4 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
                        time.perf_counter() - t0, message=msg, solver_status="; ".join(statuses))
 
 
-__all__ = ["solve_bonmin", "respond"]
+__all__ = ["solve_bonmin"]

@@ -4,11 +4,12 @@ on one `solve --method scip` of the vertical problem)."""
 
 import os
 
-from axisopt.search.scip import _c_stderr_to_file
+from axisopt.search.minlp import streams
+from axisopt.search.minlp.streams import c_stderr_to_file
 
 
 def test_c_level_stderr_is_captured_and_restored(capfd):
-    with _c_stderr_to_file() as lines:
+    with c_stderr_to_file() as lines:
         os.write(2, b"Cannot set feasibility tolerance\n  \nCannot set feasibility tolerance\nother\n")
     assert lines == ["Cannot set feasibility tolerance", "other"]
     os.write(2, b"after\n")
@@ -20,8 +21,6 @@ def test_temporary_file_closed_when_descriptor_2_cannot_be_duplicated(monkeypatc
     opened for them is closed at once (it was left open for the garbage collector)."""
     import tempfile
 
-    from axisopt.search import scip
-
     opened, real = [], tempfile.TemporaryFile
 
     def temporary_file(*a, **k):
@@ -31,8 +30,8 @@ def test_temporary_file_closed_when_descriptor_2_cannot_be_duplicated(monkeypatc
     def no_dup(fd):
         raise OSError(9, "Bad file descriptor")
 
-    monkeypatch.setattr(scip.tempfile, "TemporaryFile", temporary_file)
-    monkeypatch.setattr(scip.os, "dup", no_dup)
-    with _c_stderr_to_file() as lines:
+    monkeypatch.setattr(streams.tempfile, "TemporaryFile", temporary_file)
+    monkeypatch.setattr(streams.os, "dup", no_dup)
+    with c_stderr_to_file() as lines:
         pass
     assert lines == [] and len(opened) == 1 and opened[0].closed

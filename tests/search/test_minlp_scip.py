@@ -125,7 +125,7 @@ def test_missing_pyscipopt_names_the_extra(monkeypatch):
 def test_contradicted_proof_is_detected():
     """A proof of infeasibility, or of an optimum below a design the search finds, is contradicted (the check
     that turns SCIP's numerically wrong proofs into a failure)."""
-    from axisopt.search.scip import _contradiction
+    from axisopt.search.minlp.scip import _contradiction
     from axisopt.search.space import build_constraints, build_space, objective_spec
 
     p = load_problem(PROBLEMS / "teaching_problem.yaml")

@@ -1,7 +1,7 @@
-"""Lost motion (backlash) between motor and table in time records (issue 28): hidden in records simulated by
-identify/timesynth (a motor-side mass tied to the table by a spring with a dead zone, closed loop on the
-table's scale; written apart from the identification code), measured from a motor_position column beside the
-table's position, never named on records without lost motion."""
+"""Lost motion (backlash) between motor and table in time records (:mod:`axisopt.identify.lostmotion`): hidden in
+records simulated by identify/timesynth (a motor-side mass tied to the table by a spring with a dead zone, closed
+loop on the table's scale; written apart from the identification code), measured from a motor_position column beside
+the table's position, never named on records without lost motion."""
 
 from __future__ import annotations
 
@@ -14,10 +14,13 @@ import pytest
 from axisopt.cli import main
 from axisopt.design import load_design
 from axisopt.identify import plant_from_design
-from axisopt.identify.idim import diagnose_time_files, time_diagnosis_text
+from axisopt.identify.idim import diagnose_time_files
 from axisopt.identify.timesynth import AxisTruth, LoopSettings, simulate_axis
+from axisopt.report.timediag import time_diagnosis_text
 
 DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
+
+
 COLS = ("time", "position", "force", "reference", "motor_position")
 
 
@@ -39,6 +42,12 @@ def records(tmp_path, truth, seed, columns=COLS):
     simulate_axis(truth, loop, duration=12.0, seed=seed, record_motor=True).write_csv(est, columns=columns)
     simulate_axis(truth, loop, duration=8.0, seed=seed + 500, record_motor=True).write_csv(val, columns=columns)
     return [est, val]
+
+
+def _write(tmp_path, header, rows):
+    p = tmp_path / "bad.csv"
+    p.write_text(header + "\n" + "\n".join(rows) + "\n", encoding="utf-8")
+    return p
 
 
 @pytest.mark.parametrize("seed, backlash, mode_hz", [(1, 30e-6, 30.0), (2, 10e-6, 35.0), (4, 50e-6, 25.0)])
@@ -81,12 +90,6 @@ def test_cli_json_carries_the_lost_motion(tmp_path, plant, capsys):
     lm = out["lost_motion"] if "lost_motion" in out else out["files"][0]["lost_motion"]
     assert lm["accepted"] and lm["width_um"] == pytest.approx(20.0, rel=0.08)
     assert "backlash" in (out.get("verdict") or out["files"][0]["verdict"])
-
-
-def _write(tmp_path, header, rows):
-    p = tmp_path / "bad.csv"
-    p.write_text(header + "\n" + "\n".join(rows) + "\n", encoding="utf-8")
-    return p
 
 
 @pytest.mark.parametrize("header, cell, what", [

@@ -1,0 +1,207 @@
+"""What a time-record fit leaves unexplained: the residual of the final fit (estimation and validation rows
+pooled) tested for structure over position (a period scan, the lead and its harmonics named in advance),
+velocity, position along the stroke, time within a run, between runs, the external force, travel since a
+reversal and acceleration (:mod:`.residual`: added-variable shares against the noise floor); and the baseline
+residual's spectral peak that makes an extra mode a candidate.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import residual as rs
+from .effects.friction import RIPPLE_HARMONICS
+from .estimators import Estimate
+from .timemodel import Rows, decimate, full_matrix, matrix
+from .timerecord import lowpass, welch
+
+
+def residual_peak(rows: Rows, est: Estimate) -> tuple:
+    """Peak of the baseline residual spectrum between 3x the motion bandwidth and the cut-off."""
+    proc = rows.proc
+    W = lowpass(full_matrix(rows.sig, est.terms, proc, est.shape), proc.fs, proc.fdec)
+    y = lowpass(rows.record.effort, proc.fs, proc.fdec)
+    r = np.zeros(len(y))
+    r[rows.keep[0] : rows.keep[-1]] = (y - W @ est.theta)[rows.keep[0] : rows.keep[-1]]
+    moving = np.zeros(len(y), bool)
+    moving[rows.keep] = True
+    moving = np.convolve(moving, np.ones(proc.nd), mode="same") > 0
+    r[~moving] = 0.0
+    f, ps = welch(r, proc.fs, 512)
+    band = (f >= 3.0 * proc.f_motion) & (f <= proc.fc)
+    if band.sum() < 5:
+        return 0.0, 0.0
+    k = int(np.argmax(ps[band]))
+    return float(f[band][k]), float(ps[band][k] / np.median(ps[band]))
+
+
+
+@dataclass
+class Unexplained:
+    """Structure left in the final fit's residual (estimation and validation rows pooled)."""
+
+    probes: list  # residual.Probe, every test made, most significant first
+    rms: float  # residual RMS on the pooled rows [effort unit, SI]
+    noise: float  # noise floor at the rows (sensor noise through the decimation filter) [SI]
+    lag1: float  # lag-1 autocorrelation of the residual in row order
+    n: int
+
+    @property
+    def remaining(self) -> list:
+        """The significant probes (see :mod:`.residual`), largest share first."""
+        return sorted([p for p in self.probes if p.significant], key=lambda p: -p.share)
+
+
+def noise_floor(rows: Rows) -> float:
+    """Sensor noise of the effort at the regression rows: the white part of the raw effort from its second
+    differences (median absolute deviation, var(e1 - 2 e2 + e3) = 6 sigma^2), through the decimation low-pass
+    (equivalent noise bandwidth of |H|^2 = 1/(1 + (f/f_d)^8): 1.026 f_d)."""
+    e = rows.record.effort
+    d2 = e[2:] - 2.0 * e[1:-1] + e[:-2]
+    s = 1.4826 * float(np.median(np.abs(d2 - np.median(d2)))) / math.sqrt(6.0)
+    return s * math.sqrt(min(1.0, 2.0 * 1.026 * rows.proc.fdec / rows.proc.fs))
+
+
+def pooled(runs: list, full_cols) -> np.ndarray:
+    """Columns computed at full rate on each run (``full_cols(rows) -> (N, k)``), decimated alike, stacked."""
+    return np.vstack([decimate(np.asarray(full_cols(r)).reshape(r.record.n, -1), r.proc, r.keep) for r in runs])
+
+
+def since_reversal(rw: Rows) -> np.ndarray:
+    """Travel since the last reversal of the motion at every full-rate sample, in the record's coordinate:
+    the direction is sgn(v) where the axis moves faster than the record's speed threshold, held through
+    slow stretches; the travel is measured from the position where it last changed (from the first sample
+    before the first reversal)."""
+    q, v = rw.sig["q"], rw.sig["v"]
+    d = np.where(np.abs(v) >= rw.proc.vmin, np.sign(v), 0.0)
+    idx = np.where(d != 0, np.arange(len(d)), 0)
+    np.maximum.accumulate(idx, out=idx)
+    held = d[idx]  # the last non-zero direction
+    turn = np.zeros(len(d), dtype=np.int64)
+    change = np.nonzero(held[1:] * held[:-1] < 0)[0] + 1
+    turn[change] = change
+    np.maximum.accumulate(turn, out=turn)
+    return np.abs(q - q[turn])
+
+
+REVERSAL_SCALES = (0.0005, 0.002, 0.01)  # travel scales of the reversal probe, as fractions of the stroke
+
+
+def legendre(x, deg):
+    return [np.polynomial.legendre.Legendre.basis(j)(x) for j in range(1, deg + 1)]
+
+
+def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
+    """Test the residual of ``est`` on ``runs`` (estimation first) for structure: over position (a period
+    scan, the lead and its harmonics named in advance), velocity, position along the stroke, time within a
+    run, between runs and acceleration; see :mod:`.residual`."""
+    proc = runs[0].proc
+    W = np.vstack([matrix(r, est.terms, est.shape) for r in runs])
+    y = np.concatenate([r.y for r in runs])
+    r = y - W @ est.theta
+    W = rs.Span(W)
+    breaks = np.concatenate([np.append(np.diff(rw.keep) != proc.nd, True) for rw in runs])[:-1]
+    rho = rs.lag1(r, breaks)
+    neff = rs.n_effective(len(r), rho)
+    vmax = max(float(np.max(np.abs(rw.sig["v"][rw.keep]))) for rw in runs)
+    probes = []
+    if proc.lead_q > 0 and (kinds is None or "position_periodic" in kinds):
+        def periodic(P):
+            def cols(rw):
+                ph = 2.0 * np.pi * rw.sig["q"] / P
+                sg = np.sign(rw.sig["v"])
+                return np.column_stack([np.sin(ph), np.cos(ph), sg * np.sin(ph), sg * np.cos(ph)])
+            return pooled(runs, cols)
+        q_rows = np.concatenate([rw.sig["q"][rw.keep] for rw in runs])
+        s_rows = np.concatenate([np.sign(rw.sig["v"][rw.keep]) for rw in runs])
+        hi = max(float(np.ptp(q_rows)) / 3.0, proc.lead_q)
+        probes.append(rs.period_scan(r, q_rows, s_rows, periodic, proc.lead_q / 4.0, hi, W, neff,
+                                     fixed=[proc.lead_q / k for k in RIPPLE_HARMONICS]))
+    if kinds is not None:
+        return Unexplained(probes, float(np.sqrt(np.mean(r**2))), 0.0, rho, len(r))
+
+    def vel_cols(rw):
+        v = rw.sig["v"]
+        u = 2.0 * np.abs(v) / vmax - 1.0
+        sg = np.sign(v)
+        return np.column_stack(legendre(u, 4) + [sg * p for p in legendre(u, 4)])
+    pv = rs.probe("velocity", r, pooled(runs, vel_cols), W, neff)
+    shapes = {"v|v|": pooled(runs, lambda rw: rw.sig["v"] * np.abs(rw.sig["v"]))[:, 0],
+              "|v|": pooled(runs, lambda rw: np.abs(rw.sig["v"]))[:, 0],
+              "sqrt": pooled(runs, lambda rw: np.sign(rw.sig["v"]) * np.sqrt(np.abs(rw.sig["v"])))[:, 0]}
+    for f in (0.01, 0.03, 0.1):
+        shapes[f"low_speed_{f}"] = pooled(runs, lambda rw, f=f: np.sign(rw.sig["v"])
+                                          * np.exp(-np.abs(rw.sig["v"]) / (f * vmax)))[:, 0]
+    nm, sh = rs.best_shape(r, shapes, W)
+    pv.detail.update(shape="low_speed" if nm.startswith("low_speed") else nm,
+                     shape_share=sh / pv.share if pv.share > 0 else 0.0)
+    probes.append(pv)
+    sq = proc.stroke_q
+
+    def pos_cols(rw):
+        xi = 2.0 * rw.sig["q"] / sq - 1.0
+        sg = np.sign(rw.sig["v"])
+        return np.column_stack(legendre(xi, 4) + [sg * p for p in legendre(xi, 4)])
+    G = pooled(runs, pos_cols)
+    pp = rs.probe("position", r, G, W, neff)
+    q_rows = np.concatenate([rw.sig["q"][rw.keep] for rw in runs])
+    fitpart = rs.orthogonal(G, W)
+    coef, *_ = np.linalg.lstsq(fitpart, r, rcond=None)
+    along = fitpart @ coef
+    bins = np.linspace(q_rows.min(), q_rows.max(), 9)
+    idx = np.clip(np.searchsorted(bins, q_rows) - 1, 0, 7)
+    means = [float(np.mean(np.abs(along[idx == i]))) if np.any(idx == i) else 0.0 for i in range(8)]
+    k = int(np.argmax(means))
+    pp.detail["worst"] = (float(bins[k]), float(bins[k + 1]))
+    probes.append(pp)
+
+    def time_cols(rw):
+        t = rw.record.t
+        return np.column_stack(legendre(2.0 * (t - t[0]) / (t[-1] - t[0]) - 1.0, 3))
+    probes.append(rs.probe("time", r, pooled(runs, time_cols), W, neff))
+    if len(runs) > 1:
+        ind = np.zeros((len(r), len(runs) - 1))
+        i0 = runs[0].n
+        for j, rw in enumerate(runs[1:]):
+            ind[i0 : i0 + rw.n, j] = 1.0
+            i0 += rw.n
+        probes.append(rs.probe("run", r, ind, W, neff))
+
+    if all(rw.record.external is not None for rw in runs):
+        def load_cols(rw):
+            f, sg = rw.record.external, np.sign(rw.sig["v"])
+            return np.column_stack([f, np.abs(f), sg * np.abs(f), sg * f])
+        probes.append(rs.probe("load", r, pooled(runs, load_cols), W, neff))
+
+    def rev_cols(rw):
+        d, sg = since_reversal(rw), np.sign(rw.sig["v"])
+        cols = [np.exp(-d / (f * sq)) for f in REVERSAL_SCALES]
+        return np.column_stack(cols + [sg * c for c in cols])
+    pr = rs.probe("reversal", r, pooled(runs, rev_cols), W, neff)
+    rev_shapes = {f: pooled(runs, lambda rw, f=f: np.column_stack([np.exp(-since_reversal(rw) / (f * sq))]))[:, 0]
+                  for f in REVERSAL_SCALES}
+    best, _ = rs.best_shape(r, rev_shapes, W)
+    pr.detail["scale"] = best * sq
+    probes.append(pr)
+
+    def acc_cols(rw):
+        a, sg = rw.sig["a"], np.sign(rw.sig["v"])
+        return np.column_stack([sg * a, np.abs(a), a * np.abs(a)])
+    probes.append(rs.probe("acceleration", r, pooled(runs, acc_cols), W, neff))
+    probes.sort(key=lambda p: p.log10_p)
+    noise = math.sqrt(sum(noise_floor(rw) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs))
+    return Unexplained(probes, float(np.sqrt(np.mean(r**2))), noise, rho, len(r))
+
+
+def periodic_peak(rows: Rows, est: Estimate):
+    """(period, share) when the residual of ``est`` is mostly periodic in position (a significant probe holding
+    at least half of it), else None: a spectral peak that moves with speed is a ripple, not a mode."""
+    if rows.proc.lead_q <= 0:
+        return None
+    u = analyse_residual([rows], est, kinds=("position_periodic",))
+    p = u.probes[0] if u.probes else None
+    return (p.detail["period"], p.share) if p is not None and p.significant and p.share >= 0.5 else None
+
