@@ -144,7 +144,8 @@ class Axis:
         """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move.  ``heat``:
         the heat balance sets the temperature rise (a duty cycle and no ``temperature_rise``)."""
         segs = self.duty_cycle or motion.rapid_cycle(self.stroke, self.max_speed, self.acceleration, self.jerk)
-        return motion.Phases(motion.cycle_phases(segs), heat=self.temperature_rise is None and bool(self.duty_cycle))
+        return motion.Phases(motion.cycle_phases(segs), heat=self.temperature_rise is None and bool(self.duty_cycle),
+                             given=bool(self.duty_cycle))
 
     @property
     def top_speed(self) -> float:
@@ -161,7 +162,12 @@ class Axis:
 
     @property
     def mean_speed_eff(self) -> float:
-        return self.mean_speed if self.mean_speed is not None else 0.5 * self.max_speed
+        """The mean speed the life checks read [m/s]: ``mean_speed`` when given, else the duty cycle's travel
+        over its time (THK A-730, dwells included), else half of max_speed."""
+        if self.mean_speed is not None:
+            return self.mean_speed
+        cycle = motion.mean_speed(self.phases) if self.duty_cycle else 0.0
+        return cycle if cycle > 0.0 else 0.5 * self.max_speed
 
     @property
     def mean_axial_load_eff(self) -> float:

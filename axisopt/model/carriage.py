@@ -19,11 +19,9 @@ mean axial load when the cycle gives none (the default rapid cycle), and the mos
 
 from __future__ import annotations
 
-from functools import lru_cache
-
 from .. import mathx as mx
 from ..physics import carriage as pcr
-from ..physics import motion
+from .loads import phase_groups
 
 G = 9.80665
 
@@ -50,19 +48,6 @@ def _sum(forces):
     return fn, fy, mp, mr, my
 
 
-@lru_cache(maxsize=64)
-def _phase_groups(phases: tuple) -> tuple:
-    """Duty-cycle phases grouped by (process force, peak acceleration, mean acceleration, direction), with the
-    travel of each group [m] (an acceleration ramp from v0 to v1 travels (v0 + v1) / 2 x its duration)."""
-    groups: dict = {}
-    for ph, (v0, v1) in zip(phases, motion.phase_speeds(phases)):
-        travel = 0.5 * (v0 + v1) * ph.duration if ph.direction else 0.0
-        peak = ph.a0 if abs(ph.a0) >= abs(ph.a1) else ph.a1
-        key = (ph.force, peak, 0.5 * (ph.a0 + ph.a1), ph.direction)
-        groups[key] = groups.get(key, 0.0) + travel
-    return tuple((k, v) for k, v in groups.items())
-
-
 def carriage_loads(p, moving) -> dict:
     """Largest equivalent block load of the load cases [N], the guides' static safety factor [-], the mean
     block load over the duty cycle [N] (most loaded block) and the moment shares."""
@@ -82,7 +67,7 @@ def carriage_loads(p, moving) -> dict:
         cases.append([weight, (s * moving * p["acceleration"], 0.0, 0.0, y_g, h_g)])
         for t in (1.0, -1.0):
             cases.append([weight, (s * f_feed, t * f_cross, f_norm, y_t, h_t)])
-    groups = _phase_groups(tuple(p.get("duty", ())))
+    groups = phase_groups(tuple(p.get("duty", ())))
     # the phases' own process forces (a duty cycle that gives them): the cut with the phase's inertia force
     ratio = mx.if_else(f_feed > 0.0, 1.0 / mx.fmax(f_feed, 1e-12), 0.0)
     for (force, peak, _, direction), _ in groups:

@@ -7,6 +7,7 @@ from types import MappingProxyType
 
 from .. import mathx as mx
 from ..physics import checks as pc
+from ..physics import life as pl
 from ..physics import nut as pn
 from .limits import CHECK_TABLE
 
@@ -36,12 +37,43 @@ def passes(margin) -> bool:
     return bool(margin >= 1.0 - MARGIN_RTOL)
 
 
+def nut_life_load(p, preload, loads, travels):
+    """The equivalent load [N] on the nut's rating that gives its L10 life over the duty cycle's phase loads
+    (physics.life).  A preloaded nut as HIWIN computes it (H-BS F 3.7-3.12): both halves' cubic-mean loads over
+    the phases, each half's life at the nut's rating, their Weibull sum (e = 10/9).  A single nut as THK does
+    (A-706): the greater of the two directions' cubic means."""
+    c = p["nut_dynamic_load"]
+    halves = [pl.preloaded_halves(mx.fmax(preload, 1e-9), f) for f in loads]
+    means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
+    pair = pl.set_equivalent_load(means, (c, c), pl.NUT_SET_EXPONENT)
+    plus, minus = pl.directional_means(loads, travels)
+    return mx.if_else(p["nut_double"] > 0.5, pair, mx.fmax(mx.fmax(plus, minus), 1e-9))
+
+
+def bearing_life_load(p, loads, travels, static):
+    """The equivalent load [N] on the support-bearing set's printed rating that gives the set's L10 life: the
+    rows carrying each direction as the two halves of a preloaded pair, each rated by its row count (the
+    printed set rating for the stronger direction, i^0.7 scaled for the other: NSK TAC B, IBC), the static set
+    load (pretension, thermal force) pressing the weaker rows, and the rows' lives summed as NSK sums a
+    preloaded set's (e = 1.1).  The set is mounted with its stronger rows facing the direction that gives the
+    longer life (the designer's choice)."""
+    c_strong = p["bearing_dynamic_load"]
+    ratings = (c_strong, pl.row_group_rating(c_strong, p["bearing_rows_weak"], p["bearing_rows_strong"]))
+    best = None
+    for orient in (1.0, -1.0):
+        halves = [pl.preloaded_halves(p["bearing_preload"], orient * f - static) for f in loads]
+        means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
+        load = pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT)
+        best = load if best is None else mx.fmin(best, load)
+    return best
+
+
 def checks(p, mounting, preload, loads) -> dict:
     """Check margins ``margin_<check>`` and the physical values they compare (SI)."""
     span = p["span"]
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
     mean_omega = 2.0 * math.pi * p["mean_speed"] / p["lead"]
-    f_max, f_mean = loads["max_axial_force"], loads["mean_axial_force"]
+    f_max = loads["max_axial_force"]
     x_far = p["start_offset"] + p["stroke"]
     crit = pc.critical_speed(p["root_diameter"], span, mounting)
     # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK "evaluate
@@ -51,10 +83,9 @@ def checks(p, mounting, preload, loads) -> dict:
     compression = mx.fmax(loads["screw_compression"], buck / MARGIN_CAP)
     yield_load = SCREW_YIELD_STRESS * math.pi * p["root_diameter"] ** 2 / 4.0
     tension = mx.fmax(loads["screw_tension"], f_max)
-    nut_load = mx.if_else(p["nut_double"] > 0.5, pn.preloaded_pair_load(preload, f_mean), mx.fmax(f_mean, 1e-9))
-    life = pc.life_time(p["nut_dynamic_load"], nut_load, mean_omega, p["load_factor"])
-    # support bearings: the loaded half of the preloaded set under the mean load plus the static set load
-    brg_load = pn.preloaded_pair_load(p["bearing_preload"], f_mean + loads["bearing_static_load"])
+    life = pc.life_time(p["nut_dynamic_load"], nut_life_load(p, preload, loads["life_loads"], loads["life_travels"]),
+                        mean_omega, p["load_factor"])
+    brg_load = bearing_life_load(p, loads["life_loads"], loads["life_travels"], loads["bearing_static_load"])
     brg_life = pc.life_time(p["bearing_dynamic_load"], brg_load, mean_omega, p["load_factor"])
     # guide blocks: the load per block with the block preload acting like a preloaded pair of ball rows
     # (the most loaded block's cubic mean load over the duty cycle, model.carriage)

@@ -87,7 +87,8 @@ RIGID_PROBE = 1e-9  # [m/N]: the compliance :func:`resting_on` tries for a rigid
 ASSUMED_DEFAULTS = (
     ("mean_axial_load", "mean_axial_load", "N", 1.0, "default: a third of axial_load",
      lambda a: a.mean_axial_load is None),
-    ("mean_speed", "mean_speed", "m/min", 1 / 60, "default: half of max_speed", lambda a: a.mean_speed is None),
+    ("mean_speed", "mean_speed", "m/min", 1 / 60, "default: half of max_speed",
+     lambda a: a.mean_speed is None and not a.duty_cycle),
     ("temperature_rise", "temperature_rise", "K", 1.0, "default without a duty cycle; THK plans for 2-5 degC",
      lambda a: a.temperature_rise is None and not a.duty_cycle),
 )

@@ -1,12 +1,54 @@
-"""Masses and the axial loads the axis sees: inertia, guide friction, gravity, pretension, heat."""
+"""Masses and the axial loads the axis sees: inertia, guide friction, gravity, pretension, heat, and the
+axial load of each duty-cycle phase with its travel, for the life checks."""
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 from .. import mathx as mx
 from ..physics import guides as pg
+from ..physics import motion
 from ..physics import thermal as pt
 
 G = 9.80665
+
+
+@lru_cache(maxsize=64)
+def phase_groups(phases: tuple) -> tuple:
+    """Duty-cycle phases grouped by (process force, peak acceleration, mean acceleration, direction), with the
+    travel of each group [m] (:func:`axisopt.physics.motion.phase_travel`)."""
+    groups: dict = {}
+    for ph in phases:
+        travel = motion.phase_travel(ph) if ph.direction else 0.0
+        peak = ph.a0 if abs(ph.a0) >= abs(ph.a1) else ph.a1
+        key = (ph.force, peak, 0.5 * (ph.a0 + ph.a1), ph.direction)
+        groups[key] = groups.get(key, 0.0) + travel
+    return tuple((k, v) for k, v in groups.items())
+
+
+def life_loads(p, moving, f_guides) -> tuple[list, list]:
+    """Signed axial load on the nut in each phase that travels [N] (+ along the axis's positive direction, up
+    on a vertical axis) and the travel under it [m], for the life checks (physics.life).
+
+    A duty cycle of the user's: per phase, the inertia force at the phase's mean acceleration, the guide
+    friction and the phase's process force against the motion, and the weight (THK A-725/A-739: e.g.
+    Fa1 = mu m g + f + m alpha).  Without one: the mean axial load (with friction) each way over half the
+    travel, and the weight.
+    """
+    phases = p.get("duty", ())
+    weight = p["gravity_axial"] * moving * G
+    loads, travels = [], []
+    if getattr(phases, "given", False):
+        for (force, _, mean_acc, direction), dist in phase_groups(tuple(phases)):
+            if dist <= 0.0 or not direction:
+                continue
+            f_proc = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
+            loads.append(moving * mean_acc + direction * (f_guides + f_proc) + weight)
+            travels.append(dist)
+    if not travels:
+        f = p["mean_axial_load"] + f_guides
+        loads, travels = [f + weight, -f + weight], [0.5, 0.5]
+    return loads, travels
 
 
 def masses(p) -> dict:
@@ -47,7 +89,9 @@ def axial_loads(p, moving) -> dict:
     # pretension above the thermal push is not credited against the load: conservative, and monotone in the
     # temperature rise, which rises with the nut preload through the heat balance)
     compression = f_max + mx.fmax(d_thermal - pre, 0.0)
-    return {"block_load": n_block, "guide_friction": f_guides, "max_axial_force": f_max,
+    life, travel = life_loads(p, moving, f_guides)
+    return {"life_loads": life, "life_travels": travel,
+            "block_load": n_block, "guide_friction": f_guides, "max_axial_force": f_max,
             "mean_axial_force": f_mean, "pretension": pre, "thermal_force": d_thermal,
             "bearing_static_load": static, "screw_compression": compression,
             "screw_tension": f_max + pre}

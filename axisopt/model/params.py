@@ -6,7 +6,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..catalog import COLUMNS
+from ..catalog import ARRANGEMENT_ROWS, COLUMNS
 from ..design import TEMPERATURE_RISE
 from ..physics.bearings import support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
@@ -36,7 +36,7 @@ PARAM_NAMES = (
     "guide_normal_stiffness", "guide_tangential_stiffness", "guide_friction_force",
     "guide_friction_coefficient", "guide_friction_viscous", "guide_damping", "guide_block_mass",
     "guide_rail_mass_per_length", "guide_block_price", "guide_rail_price_per_length", "guide_dynamic_load",
-    "guide_preload", "guide_roller", "guide_rating_distance",
+    "guide_preload", "guide_roller", "guide_rating_distance", "bearing_rows_strong", "bearing_rows_weak",
     # drive: motor, coupling, reduction (rotor_inertia at the motor; motor_inertia above is the motor side
     # reflected to the screw for the drive-train modes)
     "rotor_inertia", "has_motor", "motor_rated_torque", "motor_peak_torque", "motor_max_speed",
@@ -60,7 +60,7 @@ PARAM_NAMES = (
 PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.param) for t, cols in COLUMNS.items()})
 # numeric columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice)
 _RULE_COLUMNS = MappingProxyType({
-    "screws": (), "nuts": (), "bearings": ("bore", "outer_diameter", "starting_torque"),
+    "screws": (), "nuts": (), "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement"),
     "guides": ("rating_distance",),
     "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
                "peak_corner_speed", "peak_torque_at_max_speed"),
@@ -124,6 +124,8 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "bearing_torque": _listed_or(torque, support_starting_torque_envelope(p["bearing_preload"], dm)),
         "bearing_torque_listed": np.isfinite(torque) * 1.0,
         "guide_roller": _is_type(guide, "roller"),
+        # rows of the bearing set that carry each load direction (catalog.ARRANGEMENT_ROWS)
+        "bearing_rows_strong": _arrangement_rows(bearing, 0), "bearing_rows_weak": _arrangement_rows(bearing, 1),
         # the guide's rating basis where its vendor states it, else 50 km (the shorter basis: conservative)
         "guide_rating_distance": _listed_or(col(guide, "rating_distance"), GUIDE_RATING_DISTANCE),
     })
@@ -212,6 +214,14 @@ def _compliance(stiffness):
 def _getter(row, name):
     v = row[name]
     return float(v) if np.ndim(v) == 0 else np.asarray(v, dtype=float)
+
+
+def _arrangement_rows(row, i):
+    """Rows of the set carrying the stronger (i = 0) or the other (1) load direction, one part or an array."""
+    a = row["arrangement"]
+    if isinstance(a, str):
+        return float(ARRANGEMENT_ROWS[a][i])
+    return np.array([ARRANGEMENT_ROWS[str(v)][i] for v in np.ravel(a)], dtype=float).reshape(np.shape(a))
 
 
 def _is_type(row, value):

@@ -57,7 +57,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     out = {}
     out.update(heat)
     out.update(m)
-    out.update(loads)
+    out.update({k: v for k, v in loads.items() if not isinstance(v, list)})  # per-phase lists: no outputs
     if chain or extras:
         k = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
         rock = rocking(p)

@@ -31,28 +31,35 @@ from __future__ import annotations
 from axisopt import mathx as mx
 from axisopt.physics.nut import preloaded_pair_load
 
-__all__ = ["NUT_SET_EXPONENT", "BEARING_SET_EXPONENT", "cubic_mean", "directional_means", "preloaded_halves",
-           "set_life", "set_equivalent_load", "row_group_rating"]
+__all__ = ["NUT_SET_EXPONENT", "BEARING_SET_EXPONENT", "LOAD_SCALE", "cubic_mean", "directional_means",
+           "preloaded_halves", "set_life", "set_equivalent_load", "row_group_rating"]
 
 NUT_SET_EXPONENT = 10.0 / 9.0  # HIWIN H-BS F 3.12: L = (L1^(-10/9) + L2^(-10/9))^(-9/10)
 BEARING_SET_EXPONENT = 1.1  # NSK super-precision bearings, life of a preloaded pair: (L1^-1.1 + L2^-1.1)^(-1/1.1)
+LOAD_SCALE = 1000.0  # [N]: cubic means are taken on F / LOAD_SCALE (see cubic_mean)
 ROW_EXPONENT = 0.7  # dynamic rating of i like rows loaded together: C_i = i^0.7 C_1 (NSK 1.62/2.16, IBC eq. 2.4)
 
 
-def cubic_mean(loads, travels):
+def cubic_mean(loads, travels, scale=LOAD_SCALE):
     r"""Cubic mean of step loads weighted by the travel under each (THK A-705 eq. 30).
 
-    .. math:: F_m = (\sum F_i^3 l_i / \sum l_i)^{1/3}
+    .. math:: F_m = (\sum F_i^3 l_i / \sum l_i)^{1/3} = s\,(\sum (F_i/s)^3 l_i / \sum l_i)^{1/3}
 
     loads   : F_i [N] (>= 0: the load in the direction a bearing row or nut half carries it)
     travels : l_i, travel (or revolutions) under each load; their sum must be > 0.
+    scale   : s [N], the load the cubes are taken relative to (:data:`LOAD_SCALE`): the same value up to
+              rounding, but the sum of cubes stays of order one instead of 1e9-1e12 N^3.  A global solver
+              (SCIP) compares with absolute tolerances (1e-6..1e-9); on the unscaled sum its bound propagation
+              and probing proved feasible designs infeasible (teaching problem, stage s38).
     Returns F_m [N].
     """
     total = sum(travels)
+    inv = 1.0 / scale
     acc = 0.0
     for f, l in zip(loads, travels):
-        acc = acc + f * f * f * l
-    return mx.cbrt(acc / total)
+        r = f * inv
+        acc = acc + r * r * r * l
+    return scale * mx.cbrt(acc / total)
 
 
 def directional_means(loads, travels):

@@ -102,28 +102,32 @@ def move_phases(seg: Segment) -> list[Phase]:
 
 
 class Phases(tuple):
-    """The phases of a duty cycle (a tuple) and whether the heat balance sets the temperature rise (``heat``):
-    a property of the axis, the same for every design, so the model branches on it in Python instead of
-    carrying both forms symbolically.  Equal only with the same phases and flag (cache keys)."""
+    """The phases of a duty cycle (a tuple), whether the heat balance sets the temperature rise (``heat``) and
+    whether the cycle is the user's (``given``; else the default rapid cycle, which the life checks do not
+    read): properties of the axis, the same for every design, so the model branches on them in Python instead
+    of carrying both forms symbolically.  Equal only with the same phases and flags (cache keys)."""
 
     heat: bool = False
+    given: bool = False
 
-    def __new__(cls, phases=(), heat: bool = False):
+    def __new__(cls, phases=(), heat: bool = False, given: bool = False):
         obj = super().__new__(cls, phases)
         obj.heat = bool(heat)
+        obj.given = bool(given)
         return obj
 
     def __eq__(self, other):
-        return tuple.__eq__(self, other) and getattr(other, "heat", False) == self.heat
+        return (tuple.__eq__(self, other) and getattr(other, "heat", False) == self.heat
+                and getattr(other, "given", False) == self.given)
 
     def __ne__(self, other):
         return not self.__eq__(other)
 
     def __hash__(self):
-        return hash((tuple(self), self.heat))
+        return hash((tuple(self), self.heat, self.given))
 
     def __reduce__(self):
-        return (Phases, (tuple(self), self.heat))
+        return (Phases, (tuple(self), self.heat, self.given))
 
 
 def cycle_phases(segments) -> tuple[Phase, ...]:
@@ -147,6 +151,20 @@ def rapid_cycle(stroke: float, speed: float, acceleration: float, jerk: float | 
 
 def cycle_time(phases) -> float:
     return sum(ph.duration for ph in phases)
+
+
+def phase_travel(ph: Phase) -> float:
+    r"""Distance the table travels in a phase [m] (>= 0): :math:`|v_0 T + (2 a_0 + a_1) T^2 / 6|`, exact for an
+    acceleration linear in time (the speed keeps its sign within a phase)."""
+    t = ph.duration
+    return abs(ph.v0 * t + (2.0 * ph.a0 + ph.a1) * t * t / 6.0)
+
+
+def mean_speed(phases) -> float:
+    """Mean table speed over a cycle [m/s]: its travel over its time, dwells included (THK A-730: the mean
+    rotational speed N_m = 2 n l_S / P_h over the clock minute); 0 for a cycle without time."""
+    t = cycle_time(phases)
+    return sum(phase_travel(ph) for ph in phases) / t if t > 0 else 0.0
 
 
 def phase_speeds(phases) -> list[tuple[float, float]]:

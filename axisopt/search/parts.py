@@ -15,7 +15,7 @@ from dataclasses import replace
 import numpy as np
 
 from .. import model
-from ..catalog import USER_STATUS
+from ..catalog import COLUMNS, USER_STATUS
 from ..errors import InputError
 from ..model.params import columns_read
 from ..parttable import PartTable
@@ -28,8 +28,12 @@ _SCREW_COLS, _NUT_COLS, _BEARING_COLS, _GUIDE_COLS, _MOTOR_COLS, _COUPLING_COLS 
 
 
 
+# text columns the model reads through a rule (a bearing set's arrangement: its rows per load direction)
+_TEXT_COLUMNS = frozenset(c.name for cols in COLUMNS.values() for c in cols if c.kind == "str")
+
+
 def _arrays(t, cols):
-    return {c: t.number(c) for c in cols}
+    return {c: (np.asarray(t[c]).astype(str) if c in _TEXT_COLUMNS else t.number(c)) for c in cols}
 
 
 

@@ -115,7 +115,8 @@ def test_bearing_that_does_not_fit_the_screw_end_fails_its_check(tmp_path, capsy
     """HIWIN Table 8.9/8.10: a 40 mm screw takes 25-30 mm journals (BK30/FK30, WBK30, SFA30); a WBK15 set
     (15 mm bore) on it fails the fit check."""
     p = tmp_path / "d.yaml"
-    p.write_text(GOOD.replace("bearing: HIWIN-WBK30-DFD", "bearing: HIWIN-WBK15-DF"), encoding="utf-8")
+    assert "bearing: NSK-30TAC62B-DFF-C9" in GOOD
+    p.write_text(GOOD.replace("bearing: NSK-30TAC62B-DFF-C9", "bearing: HIWIN-WBK15-DF"), encoding="utf-8")
     js = tmp_path / "r.json"
     assert main(["evaluate", str(p), "--json", str(js)]) == 0
     fit = json.loads(js.read_text())["checks"]["bearing_fit"]

@@ -174,7 +174,7 @@ STUDY = """name: api-study
 base:
   name: api-base
   axis: {stroke: 400 mm, moving_mass: 120 kg, mounting: fixed-supported, max_speed: 30 m/min,
-         axial_load: 2000 N, acceleration: 3 m/s^2}
+         axial_load: 2000 N, acceleration: 3 m/s^2, mean_speed: 8 m/min}
   objective: stiffness
   limits: {max_cost: 2500 EUR, max_drag_torque: 1.2 N.m, min_life: 15000 h}
   catalog: {vendors: [HIWIN], nut_types: [double], mountings: [fixed-supported]}

@@ -51,6 +51,7 @@ MOVES = tuple(step * rel for rel in (1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3) f
 
 PAIR_CHUNK = 20000  # (nut, guide) pairs per model evaluation of the carriage's limits
 _PAIR_KEYS = ("margin_guide_static", "margin_guide_life", "margin_nut_static")
+_CONTINUOUS = 8 | 16  # dependency bits of the preload and the nut shifts (translate.Graph)
 
 
 def _pyscipopt():
@@ -114,6 +115,7 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
     allowed = {s: np.ones(n, dtype=bool) for s, n in zip(SLOTS, (N, B, G))}
     general = []
     pair_limits = []
+    parts_limits = set()  # limits on the parts alone, not on the preload (e.g. the support bearings' life)
     # their values from the model itself (numpy, flat layout, as the exhaustive search evaluates them): a part
     # exactly at a limit must pass or fail as it does there, not as the translation's rounding has it
     K = N + B + G
@@ -137,6 +139,8 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
                     allowed[slot] &= ok
             elif c.key in _PAIR_KEYS and tr.g.dep[node] == 5:  # the carriage: the nut's mass and the guide
                 pair_limits.append((ci, c, j))
+            elif not tr.g.dep[node] & _CONTINUOUS and all(not tr.g.dep[nd] & _CONTINUOUS for nd in nodes):
+                parts_limits.add(ci)  # the parts alone (no preload): enumerated below
             else:
                 general.append((c, node))
     # the carriage's limits depend on the nut (its mass) and the guide alone: evaluated on every pair with the
@@ -152,6 +156,14 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
     m.addCons(P <= ps.quicksum(float(v) * zi for v, zi in zip(hi_n, z["nut"])), name="preload_hi")
     for n_i, b_i in zip(*np.nonzero(~space.fits)):
         m.addCons(z["nut"][n_i] + z["bearing"][b_i] <= 1)
+    # a limit on the parts alone (no preload, no nut shift) is decided by the model on every allowed
+    # combination, as the exhaustive search decides it, and the failing (nut, bearing, guides) cut off linearly:
+    # its relaxation (the support bearings' life: cubic means, Weibull sums, a min over two mountings) would
+    # otherwise carry SCIP's whole tree
+    for n_i, b_i, bad_gs in _failing_combinations(space, mounting, [constraints[ci] for ci in sorted(parts_limits)],
+                                                  allowed) if parts_limits else ():
+        m.addCons(z["nut"][n_i] + z["bearing"][b_i] + ps.quicksum(z["guide"][g_i] for g_i in bad_gs) <= 2,
+                  name=f"parts_nut{n_i}_bearing{b_i}")
     for n_i in np.nonzero(forbidden.any(axis=1) & allowed["nut"])[0]:
         bad_g = [z["guide"][g_i] for g_i in np.nonzero(forbidden[n_i] & allowed["guide"])[0]]
         if bad_g:  # one guide is chosen: this equals the pair cuts z_n + z_g <= 1
@@ -185,6 +197,35 @@ def _failing_pairs(space, mounting, pair_limits, N, G) -> np.ndarray:
             v = np.broadcast_to(np.asarray(out[c.key], dtype=float).reshape(-1), (k,))
             bad[sl] |= ~np.asarray(c.ok(v), dtype=bool)
     return bad.reshape(N, G)
+
+
+def _failing_combinations(space, mounting, limits, allowed):
+    """(nut, bearing, [guides]) for every allowed nut and bearing that fit, with the allowed guide-and-drive
+    entries whose combination misses one of ``limits`` (limits that do not depend on the preload: the nut's
+    lowest preload stands in)."""
+    n_ok = np.nonzero(allowed["nut"])[0]
+    b_ok = np.nonzero(allowed["bearing"])[0]
+    g_ok = np.nonzero(allowed["guide"])[0]
+    pairs = [(n_i, b_i) for n_i in n_ok for b_i in b_ok if space.fits[n_i, b_i]]
+    if not pairs or len(g_ok) == 0:
+        return []
+    G = len(g_ok)
+    n_idx = np.repeat(np.array([q[0] for q in pairs]), G)
+    b_idx = np.repeat(np.array([q[1] for q in pairs]), G)
+    g_idx = np.tile(g_ok, len(pairs))
+    x = space.positions(mounting)
+    bad = np.zeros(len(n_idx), dtype=bool)
+    for lo in range(0, len(n_idx), PAIR_CHUNK):
+        sl = slice(lo, min(len(n_idx), lo + PAIR_CHUNK))
+        k = sl.stop - sl.start
+        out = respond(space.params_flat(mounting, n_idx[sl], b_idx[sl], g_idx[sl]), x, mounting,
+                      np.asarray(space.preload_lo, float)[n_idx[sl]][:, None])
+        for c in limits:
+            v = np.asarray(c.value(out), dtype=float)
+            v = v.reshape(k, -1) if v.ndim and v.shape[0] == k else np.broadcast_to(v.reshape(1, -1), (k, v.size))
+            bad[sl] |= ~np.asarray(c.ok(v), dtype=bool).all(axis=1)
+    bad = bad.reshape(len(pairs), G)
+    return [(int(n_i), int(b_i), [int(g) for g in g_ok[bad[r]]]) for r, (n_i, b_i) in enumerate(pairs) if bad[r].any()]
 
 
 def _recover(space, mi, z, P, m, constraints):
