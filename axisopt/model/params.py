@@ -58,10 +58,11 @@ PARAM_NAMES = (
 # declaration of the part columns (axisopt.catalog.COLUMNS).  A new part column the model reads needs its
 # ``param`` there and its name in PARAM_NAMES above.
 PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.param) for t, cols in COLUMNS.items()})
-# numeric columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice)
+# columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice; the text
+# columns type and arrangement as the numbers they stand for)
 _RULE_COLUMNS = MappingProxyType({
-    "screws": (), "nuts": (), "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement"),
-    "guides": ("rating_distance",),
+    "screws": (), "nuts": ("type",), "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement"),
+    "guides": ("type", "rating_distance"),
     "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
                "peak_corner_speed", "peak_torque_at_max_speed"),
     "couplings": ("torsional_stiffness", "inertia"),
@@ -76,7 +77,7 @@ RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque
 
 
 def columns_read(table: str) -> tuple:
-    """The numeric columns of a part table the model reads (what a vectorized search keeps as arrays)."""
+    """The columns of a part table the model reads (what a vectorized search keeps as arrays)."""
     direct = tuple(c for c, _ in PART_PARAMS[table])
     return direct + tuple(c for c in _RULE_COLUMNS[table] if c not in direct)
 
@@ -218,10 +219,9 @@ def _getter(row, name):
 
 def _arrangement_rows(row, i):
     """Rows of the set carrying the stronger (i = 0) or the other (1) load direction, one part or an array."""
-    a = row["arrangement"]
-    if isinstance(a, str):
-        return float(ARRANGEMENT_ROWS[a][i])
-    return np.array([ARRANGEMENT_ROWS[str(v)][i] for v in np.ravel(a)], dtype=float).reshape(np.shape(a))
+    a = np.asarray(row["arrangement"])
+    rows = np.select([a == k for k in ARRANGEMENT_ROWS], [v[i] for v in ARRANGEMENT_ROWS.values()], np.nan)
+    return float(rows) if rows.ndim == 0 else rows
 
 
 def _is_type(row, value):

@@ -28,7 +28,7 @@ _SCREW_COLS, _NUT_COLS, _BEARING_COLS, _GUIDE_COLS, _MOTOR_COLS, _COUPLING_COLS 
 
 
 
-# text columns the model reads through a rule (a bearing set's arrangement: its rows per load direction)
+# text columns the model reads through a rule (a part's type, a bearing set's arrangement): kept as strings
 _TEXT_COLUMNS = frozenset(c.name for cols in COLUMNS.values() for c in cols if c.kind == "str")
 
 
@@ -140,10 +140,8 @@ def _build_space(problem: Problem) -> Space:
                bearings=bearings, guides=guides, preload_lo=lo, preload_hi=hi, fits=fits)
     sp.s_arr = _arrays(screws_al, _SCREW_COLS)
     sp.n_arr = _arrays(nuts, _NUT_COLS)
-    sp.n_arr["type"] = nuts["type"].astype(str)
     sp.b_arr = _arrays(bearings, _BEARING_COLS)
     sp.g_arr = _arrays(guides, _GUIDE_COLS)
-    sp.g_arr["type"] = guides["type"].astype(str)
     _add_drives(sp, problem)
     D = len(sp.drives)
     sp.n_drives = D
