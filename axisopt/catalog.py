@@ -207,19 +207,20 @@ _ORDERED = {
     "couplings": (("bore_min", "bore_max"),),
     "nuts": (("preload_min", "preload_max"),),
 }
+# The sets of 60-degree thrust bearings for screw ends: pairs (DB back-to-back, DF face-to-face), three rows (two
+# in tandem against one: DBD, DFD) and four (two against two: DBB, DFF), with the rows that carry each load
+# direction: (the stronger direction, the other); the vendors print the set's rating for the stronger one (NSK
+# TAC B: DFD in the "2 rows" column; HIWIN WBK DFD 46.5 kN)
+ARRANGEMENT_ROWS = MappingProxyType({"DB": (1, 1), "DF": (1, 1), "DBD": (2, 1), "DFD": (2, 1), "DBB": (2, 2),
+                                     "DFF": (2, 2)})
 CHOICES = {
     ("nuts", "type"): ("single", "double"),
     ("guides", "type"): ("ball", "roller"),
     ("guides", "preload_level"): ("light", "medium", "heavy", "super-heavy"),
     ("bearings", "preload_class"): ("light", "medium", "heavy"),
-    # the sets of 60-degree thrust bearings for screw ends: pairs (DB back-to-back, DF face-to-face), three rows
-    # (two in tandem against one: DBD, DFD) and four (two against two: DBB, DFF)
-    ("bearings", "arrangement"): ("DB", "DF", "DBD", "DFD", "DBB", "DFF"),
+    # the sets of 60-degree thrust bearings for screw ends (ARRANGEMENT_ROWS)
+    ("bearings", "arrangement"): tuple(ARRANGEMENT_ROWS),
 }
-# Rows of a bearing set that carry each load direction: (the stronger direction, the other); the vendors print
-# the set's rating for the stronger one (NSK TAC B: DFD in the "2 rows" column; HIWIN WBK DFD 46.5 kN)
-ARRANGEMENT_ROWS = MappingProxyType({"DB": (1, 1), "DF": (1, 1), "DBD": (2, 1), "DFD": (2, 1), "DBB": (2, 2),
-                                     "DFF": (2, 2)})
 
 
 TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings")

@@ -50,7 +50,7 @@ def cubic_mean(loads, travels, scale=LOAD_SCALE):
     scale   : s [N], the load the cubes are taken relative to (:data:`LOAD_SCALE`): the same value up to
               rounding, but the sum of cubes stays of order one instead of 1e9-1e12 N^3.  A global solver
               (SCIP) compares with absolute tolerances (1e-6..1e-9); on the unscaled sum its bound propagation
-              and probing proved feasible designs infeasible (teaching problem, stage s38).
+              and probing proved feasible designs infeasible (the teaching problem).
     Returns F_m [N].
     """
     total = sum(travels)
