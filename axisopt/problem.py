@@ -110,7 +110,7 @@ class Goal:
 
 
 # Every objective, declared once: the problem reader's modes and Pareto keys, the labels, the search's
-# objective functions (axisopt.search.objective) and the Pareto front's senses, units and fields derive from it.
+# objective functions (axisopt.search.task.objective) and the Pareto front's senses, units and fields derive from it.
 # A new objective: one Goal here plus the physics of its output (and its limit in LIMIT_TABLE).
 OBJECTIVE_TABLE = (
     Goal("stiffness", "min_stiffness", "min_stiffness", "axial stiffness", "minimum axial stiffness", mode=True,

@@ -44,10 +44,10 @@ def main(argv=None):
     ap.add_argument("--synthetic", nargs="*", type=float, default=[1e6, 1e7])
     ap.add_argument("--check", help="npz file of survivors and bounds: written if absent, else compared")
     args = ap.parse_args(argv)
-    from axisopt.search.constraints import build_constraints
-    from axisopt.search.objective import objective_spec
     from axisopt.search.parts import build_space
     from axisopt.search.screen import screen
+    from axisopt.search.task.constraints import build_constraints
+    from axisopt.search.task.objective import objective_spec
 
     saved = dict(np.load(args.check)) if args.check and Path(args.check).exists() else None
     new = {}

@@ -28,10 +28,10 @@ from axisopt.design import Axis  # noqa: E402
 from axisopt.model import CHECKS  # noqa: E402
 from axisopt.problem import Objective, Problem, Restrictions, load_problem  # noqa: E402
 from axisopt.search import solve  # noqa: E402
-from axisopt.search.constraints import build_constraints  # noqa: E402
-from axisopt.search.objective import objective_spec  # noqa: E402
 from axisopt.search.parts import build_space  # noqa: E402
 from axisopt.search.screen import screen  # noqa: E402
+from axisopt.search.task.constraints import build_constraints  # noqa: E402
+from axisopt.search.task.objective import objective_spec  # noqa: E402
 
 RPM = 2 * math.pi / 60
 

@@ -5,9 +5,12 @@
 Imports every module of ``axisopt.search``, then profiles ``axisopt.solve(PROBLEM)`` (default
 ``problems/teaching_problem.yaml``) with ``sys.setprofile``, keeps the functions of ``axisopt.search`` in the order
 of their first call (comprehensions, lambdas and nested functions count as their caller), and counts the
-stretches: runs of consecutive first entries in one module.  A pipeline whose stages are modules reads as few
-stretches (entry -> parts -> bounds -> screen -> preload -> polish -> certificate); helpers scattered across
+stretches: runs of consecutive first entries in one stage module.  A pipeline whose stages are modules reads as
+few stretches (entry -> parts -> bounds -> screen -> preload -> polish -> certificate); helpers scattered across
 modules read as many.
+
+The task's vocabulary (``axisopt.search.task``: the space, the constraints and the objective every stage reads)
+is not a stage: its first entries are listed, and counted, apart (``--all`` counts them as stretches too).
 """
 from __future__ import annotations
 
@@ -50,9 +53,14 @@ def first_entries(problem: str) -> list[tuple[str, str]]:
     return list(seen)
 
 
-def stretches(entries) -> list[tuple[str, int]]:
+VOCABULARY = "axisopt.search.task"
+
+
+def stretches(entries, stages_only: bool = True) -> list[tuple[str, int]]:
     out: list[tuple[str, int]] = []
     for mod, _ in entries:
+        if stages_only and mod.startswith(VOCABULARY):
+            continue
         if out and out[-1][0] == mod:
             out[-1] = (mod, out[-1][1] + 1)
         else:
@@ -64,9 +72,10 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("problem", nargs="?", default=str(ROOT / "problems" / "teaching_problem.yaml"))
     ap.add_argument("--list", action="store_true", help="print every function in the order of first entry")
+    ap.add_argument("--all", action="store_true", help="count the task's vocabulary modules as stretches too")
     args = ap.parse_args(argv)
     entries = first_entries(args.problem)
-    runs = stretches(entries)
+    runs = stretches(entries, stages_only=not args.all)
     if args.list:
         for mod, fn in entries:
             print(f"{mod}.{fn}")
@@ -74,6 +83,10 @@ def main(argv=None) -> int:
     mods = {}
     for m, _ in runs:
         mods[m] = mods.get(m, 0) + 1
+    vocab = [e for e in entries if e[0].startswith(VOCABULARY)]
+    if not args.all:
+        print(f"task vocabulary: {len(vocab)} functions of "
+              + ", ".join(sorted({m.removeprefix(VOCABULARY + '.') for m, _ in vocab})))
     print(f"{len(entries)} search functions in {len(runs)} stretches; stretches per module: "
           + ", ".join(f"{m.removeprefix('axisopt.search.')} {n}" for m, n in sorted(mods.items(), key=lambda t: -t[1])))
     return 0

@@ -8,11 +8,11 @@ grid (``model.positions``) for the minimum over the stroke, the same limits and 
 objectives compare.
 
 The stages of a default solve, one module each: :mod:`.front` (entry, task, methods, the result) ->
-:mod:`.parts` (the filtered part tables as a :mod:`.space`) -> :mod:`.bounds` (block bounds) -> :mod:`.screen`
--> :mod:`.preload` (exact 1-D preload solve, on :mod:`.bracket`) -> :mod:`.polish` (IPOPT) ->
-:mod:`.candidates`; :mod:`.bestfirst` drives the middle stages.  Beside them: :mod:`.constraints`,
-:mod:`.objective`, :mod:`.exhaustive`, :mod:`.pareto`, :mod:`.explain` and :mod:`.relax` (infeasible
-problems), :mod:`.interval`, :mod:`.result`.
+:mod:`.parts` (the filtered part tables as a :mod:`.task.space`) -> :mod:`.bounds` (block bounds) ->
+:mod:`.screen` -> :mod:`.preload` (exact 1-D preload solve) -> :mod:`.polish` (IPOPT) -> :mod:`.candidates` ->
+:mod:`.result`; :mod:`.bestfirst` drives the middle stages.  Every stage reads the :mod:`.task` (the space, the
+constraints, the objective).  Beside them: :mod:`.exhaustive`, :mod:`.pareto`, :mod:`.explain` and
+:mod:`.relax` (infeasible problems), :mod:`.interval`.
 
 ``solve`` is a pure function of the problem (no printing, no global state besides per-process solver
 caches), so a trade study may call it in worker processes.

@@ -10,11 +10,11 @@ import time
 import numpy as np
 
 from .bounds import block_bounds
-from .objective import ObjectiveSpec, objective_floor
 from .preload import concat_exact, exact_solve
 from .result import SearchStats
 from .screen import screen_nuts
-from .space import Space
+from .task.objective import ObjectiveSpec, objective_floor
+from .task.space import Space
 
 
 def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top: int = 1, *,

@@ -15,9 +15,9 @@ import numpy as np
 
 from .. import model
 from ..model.params import GUIDE_RATING_DISTANCE
-from .constraints import End
-from .objective import ObjectiveSpec
-from .space import DRIVE_KEYS, SCREEN_CHUNK, Space, as_dtype, shaped
+from .task.constraints import End
+from .task.objective import ObjectiveSpec
+from .task.space import DRIVE_KEYS, SCREEN_CHUNK, Space, as_dtype, shaped
 
 SCREEN_RTOL = 1e-4  # float32 screening: relative slack on every test and on the bound
 

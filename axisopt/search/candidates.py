@@ -9,9 +9,9 @@ from .. import model
 from ..design import Design
 from ..model.limits import LIMITS
 from ..units import N_PER_UM
-from .objective import ObjectiveSpec
 from .result import Candidate
-from .space import Space
+from .task.objective import ObjectiveSpec
+from .task.space import Space
 
 
 def make_candidate(space: Space, combo: int, preload: float, objective: ObjectiveSpec, rank: int = 0,

@@ -15,12 +15,11 @@ import time
 import numpy as np
 
 from ..units import N_PER_UM
-from .bracket import BISECTION_STEPS
-from .constraints import as_vector, ok_all
-from .objective import ObjectiveSpec
-from .preload import concat_exact, convex_interval, new_exact, subset
+from .preload import BISECTION_STEPS, concat_exact, convex_interval, new_exact, subset
 from .result import Exact, SearchStats
-from .space import Space, respond
+from .task.constraints import as_vector, ok_all
+from .task.objective import ObjectiveSpec
+from .task.space import Space, respond
 
 
 def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid: int = 9) -> Exact:

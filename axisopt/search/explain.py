@@ -28,10 +28,10 @@ from ..model.drive import drive as drive_block
 from ..model.limits import CHECK_RECORDS
 from .bounds import bound_positions, optimistic_guide_params
 from .candidates import candidate_values
-from .constraints import End, as_vector
 from .interval import Interval, ends
 from .result import Infeasibility
-from .space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive, shaped
+from .task.constraints import End, as_vector
+from .task.space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive, shaped
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block

@@ -19,23 +19,12 @@ from ..errors import InputError
 from ..model.limits import LIMITS
 from ..problem import GOALS, Problem
 from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, Binding, Certificate, SolveResult
+from .task import Task
 
 if TYPE_CHECKING:
-    from .objective import ObjectiveSpec
-    from .space import Space
+    from .task.objective import ObjectiveSpec
 
 RELAX = 0.10  # sensitivities: relax each limit by 10 %
-
-
-@dataclass(frozen=True)
-class Task:
-    """What every stage of a solve works on: the problem, its search space, its constraints and the scalar
-    objective (the Pareto front: the stiffness, whose exact solve gives every front value)."""
-
-    problem: Problem
-    space: Space
-    constraints: tuple
-    objective: ObjectiveSpec
 
 
 def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task:
@@ -43,10 +32,10 @@ def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task
     from .parts import build_space
 
     space = build_space(problem)  # each stage module is imported when a solve first reaches it
-    from .objective import objective_spec
+    from .task.objective import objective_spec
 
     objective = objective_spec(problem.objective.mode, problem) if objective is None else objective
-    from .constraints import build_constraints
+    from .task.constraints import build_constraints
 
     return Task(problem, space, build_constraints(problem), objective)
 
@@ -129,7 +118,7 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
 
         return solve_pareto(problem, method=method, t0=t0)
     if ob.mode == "lexicographic":
-        from .objective import objective_spec
+        from .task.objective import objective_spec
 
         res = _solve_lexicographic(build_task(problem, objective_spec(ob.order[1])), m, top, time_limit, t0)
     else:
@@ -148,8 +137,8 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
 
 def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0: float) -> SolveResult:
     """The primary objective's optimum, then the secondary's over the designs within the tolerance of it."""
-    from .constraints import limit_constraint
-    from .objective import objective_spec
+    from .task.constraints import limit_constraint
+    from .task.objective import objective_spec
 
     problem, ob = task.problem, task.problem.objective
     primary, secondary = ob.order
@@ -211,10 +200,10 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> li
     ``space``: the problem's search space, if built (the part tables do not depend on the limits, so every
     re-solve reuses it and its cached parameter arrays)."""
     from .bestfirst import bound_order_search
-    from .constraints import build_constraints
-    from .objective import objective_spec
     from .parts import build_space
     from .polish import polish
+    from .task.constraints import build_constraints
+    from .task.objective import objective_spec
 
     best = res.best
     space = build_space(problem) if space is None else space

@@ -16,13 +16,13 @@ import numpy as np
 from ..problem import GOALS
 from .bounds import block_bounds
 from .candidates import make_candidate
-from .constraints import build_constraints
 from .exhaustive import exhaustive_search
-from .objective import objective_spec
 from .parts import build_space
 from .preload import concat_exact, exact_solve
 from .result import INFEASIBLE, OPTIMAL, Certificate, ParetoFront, SearchStats, SolveResult
 from .screen import screen_nuts
+from .task.constraints import build_constraints
+from .task.objective import objective_spec
 
 # per Pareto key (axisopt.problem.OBJECTIVE_TABLE): maximised or minimised, display unit, Candidate field
 SENSE = {k: g.sense for k, g in GOALS.items() if g.pareto}

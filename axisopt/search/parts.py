@@ -1,5 +1,5 @@
 """The parts a problem may use: the catalog's tables filtered by the problem's restrictions, the (motor,
-coupling) drive pairs, and a process cache of the result (:func:`build_space` -> :class:`.space.Space`).
+coupling) drive pairs, and a process cache of the result (:func:`build_space` -> :class:`.task.space.Space`).
 
 The filters: vendors, series, provenance status, estimated values, nut types, bearing arrangements and
 preload classes, guide types and preload levels, require/exclude; nuts keep their screw; each nut's preload
@@ -21,7 +21,7 @@ from ..model.params import columns_read
 from ..parttable import PartTable
 from ..physics import nut as pnut
 from ..problem import Problem
-from .space import SCREEN_CHUNK, Space
+from .task.space import SCREEN_CHUNK, Space
 
 _SCREW_COLS, _NUT_COLS, _BEARING_COLS, _GUIDE_COLS, _MOTOR_COLS, _COUPLING_COLS = (
     columns_read(t) for t in ("screws", "nuts", "bearings", "guides", "motors", "couplings"))

@@ -16,10 +16,10 @@ import numpy as np
 
 from .. import model
 from .candidates import make_candidate
-from .constraints import ok_all
-from .objective import ObjectiveSpec, in_display_units, rank_order
 from .result import Exact, NLPResult
-from .space import Space, respond
+from .task.constraints import ok_all
+from .task.objective import ObjectiveSpec, in_display_units, rank_order
+from .task.space import Space, respond
 
 
 def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: int):

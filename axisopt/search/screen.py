@@ -1,5 +1,5 @@
 """Screening: every combination of a set of (mounting, nut, bearing) blocks, vectorized in the structured
-layout (:mod:`.space`), in float32 with the slack of :func:`.bounds.screen_ok`.
+layout (:mod:`.task.space`), in float32 with the slack of :func:`.bounds.screen_ok`.
 
 Every preload-independent limit is checked exactly; each preload-dependent limit at its most favourable
 preload (drag and life at the lowest allowed preload, lift-off and minimum stiffness/frequency at the highest),
@@ -16,9 +16,9 @@ import numpy as np
 
 from .. import model
 from .bounds import SCREEN_RTOL, bound_positions, screen_ok
-from .constraints import Constraint, End
-from .objective import ObjectiveSpec
-from .space import DRIVE_KEYS, Space, as_dtype
+from .task.constraints import Constraint, End
+from .task.objective import ObjectiveSpec
+from .task.space import DRIVE_KEYS, Space, as_dtype
 
 
 def screen(space: Space, constraints, objective: ObjectiveSpec):

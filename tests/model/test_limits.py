@@ -12,7 +12,7 @@ from axisopt.model.limits import CHECK_TABLE, LIMITS, preload_direction
 from axisopt.problem import LIMITS_SPEC, load_problem
 from axisopt.report.evaluation import CHECK_SHORT, CHECK_UNITS
 from axisopt.search import solve
-from axisopt.search.constraints import build_constraints
+from axisopt.search.task.constraints import build_constraints
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -11,10 +11,10 @@ from search_synthetic import add_drives, make_catalog, make_double, make_problem
 from axisopt import model
 from axisopt.search import solve
 from axisopt.search.bounds import block_bounds
-from axisopt.search.constraints import build_constraints
 from axisopt.search.exhaustive import exhaustive_search
-from axisopt.search.objective import objective_spec
 from axisopt.search.parts import build_space
+from axisopt.search.task.constraints import build_constraints
+from axisopt.search.task.objective import objective_spec
 
 
 def _problem(seed):

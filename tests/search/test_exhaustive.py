@@ -8,11 +8,11 @@ default method's exact 1-D solve (the objective grows with the preload: the opti
 import numpy as np
 from search_synthetic import make_catalog, make_double, make_problem
 
-from axisopt.search.constraints import build_constraints
 from axisopt.search.exhaustive import grid_solve
-from axisopt.search.objective import objective_spec
 from axisopt.search.parts import build_space
 from axisopt.search.preload import exact_solve
+from axisopt.search.task.constraints import build_constraints
+from axisopt.search.task.objective import objective_spec
 
 
 def test_grid_keeps_the_upper_end_of_the_feasible_preloads():

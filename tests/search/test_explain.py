@@ -14,9 +14,9 @@ from test_bounds import _problem
 from axisopt.problem import load_problem
 from axisopt.search import explain as E
 from axisopt.search import solve
-from axisopt.search.constraints import build_constraints
-from axisopt.search.objective import objective_spec
 from axisopt.search.parts import build_space
+from axisopt.search.task.constraints import build_constraints
+from axisopt.search.task.objective import objective_spec
 
 ROOT = Path(__file__).resolve().parents[2]
 

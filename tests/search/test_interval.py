@@ -13,10 +13,10 @@ from hypothesis import strategies as st
 from axisopt import mathx as mx
 from axisopt.physics import drive as pdr
 from axisopt.search import explain as E
-from axisopt.search.constraints import build_constraints
 from axisopt.search.interval import Interval, ends
 from axisopt.search.parts import build_space
-from axisopt.search.space import respond_drive
+from axisopt.search.task.constraints import build_constraints
+from axisopt.search.task.space import respond_drive
 
 finite = st.floats(-1e3, 1e3, allow_nan=False)
 

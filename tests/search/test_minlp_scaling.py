@@ -8,8 +8,8 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from axisopt.search.constraints import Constraint
 from axisopt.search.minlp.scaling import log_scaled, reciprocal_times, scaled_limit
+from axisopt.search.task.constraints import Constraint
 
 
 def _limit(key, sense, limit, factor=1.0):

@@ -132,10 +132,10 @@ def test_missing_pyscipopt_names_the_extra(monkeypatch):
 def test_contradicted_proof_is_detected():
     """A proof of infeasibility, or of an optimum below a design the search finds, is contradicted (the check
     that turns SCIP's numerically wrong proofs into a failure)."""
-    from axisopt.search.constraints import build_constraints
     from axisopt.search.minlp.scip import _contradiction
-    from axisopt.search.objective import objective_spec
     from axisopt.search.parts import build_space
+    from axisopt.search.task.constraints import build_constraints
+    from axisopt.search.task.objective import objective_spec
 
     p = load_problem(PROBLEMS / "teaching_problem.yaml")
     space, cons, spec = build_space(p), build_constraints(p), objective_spec("stiffness")

@@ -11,11 +11,11 @@ from axisopt import mathx as mx
 from axisopt import model
 from axisopt.search import screen as core
 from axisopt.search.bounds import screen_ok
-from axisopt.search.constraints import build_constraints
-from axisopt.search.objective import objective_spec
 from axisopt.search.parts import build_space
 from axisopt.search.screen import convex_margin_bound
-from axisopt.search.space import DRIVE_KEYS
+from axisopt.search.task.constraints import build_constraints
+from axisopt.search.task.objective import objective_spec
+from axisopt.search.task.space import DRIVE_KEYS
 
 
 def _reference_drives(space, mounting, constraints, phases, nn, bb, gg):

@@ -15,12 +15,12 @@ from axisopt.cli import main
 from axisopt.errors import InputError
 from axisopt.problem import Objective, load_problem
 from axisopt.search import solve
-from axisopt.search.constraints import build_constraints
 from axisopt.search.exhaustive import exhaustive_search
-from axisopt.search.objective import objective_spec
 from axisopt.search.pareto import nondominated
 from axisopt.search.parts import build_space
 from axisopt.search.preload import exact_solve
+from axisopt.search.task.constraints import build_constraints
+from axisopt.search.task.objective import objective_spec
 
 PROBLEMS = sorted((Path(__file__).resolve().parents[2] / "problems").glob("*_problem.yaml"))
 
@@ -155,9 +155,9 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
     """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
     the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
     combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
-    from axisopt.search.constraints import as_vector
     from axisopt.search.explain import RULE_WEIGHT, miss_scores, weight
-    from axisopt.search.space import respond
+    from axisopt.search.task.constraints import as_vector
+    from axisopt.search.task.space import respond
 
     p = _drive_problem(2, axis_coupling=2e3).with_limit("min_stiffness", 400e6)
     sp, cons = build_space(p), build_constraints(p)

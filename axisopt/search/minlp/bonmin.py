@@ -24,8 +24,8 @@ import numpy as np
 from ... import model
 from ...units import N_PER_UM
 from ..candidates import make_candidate
-from ..objective import STIFFNESS_OUTPUTS
 from ..result import Certificate, SolveResult
+from ..task.objective import STIFFNESS_OUTPUTS
 from .formulation import SLOTS, integral, one_hot_params, one_hot_symbols, recover
 from .scaling import scaled_limit
 from .streams import quiet_stdout

@@ -37,7 +37,7 @@ def reciprocal_times(value, divisor: float):
 
 def scaled_limit(c, value, limit: Any = None, *, log: bool = True,
                  divide: Callable[[Any, Any], Any] = operator.truediv) -> tuple[Any, float]:
-    """The limit ``c`` (a :class:`axisopt.search.space.Constraint`) on ``value`` as ``(g, rhs)``: the solver's
+    """The limit ``c`` (a :class:`axisopt.search.task.space.Constraint`) on ``value`` as ``(g, rhs)``: the solver's
     constraint is ``g >= rhs`` or ``g <= rhs`` (``c.sense``).
 
     ``limit``  : the divisor, by default ``c.limit``; a symbol where one solver serves every limit value (the

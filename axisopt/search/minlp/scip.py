@@ -29,9 +29,9 @@ from ...errors import InputError
 from ...units import N_PER_UM
 from ..bestfirst import bound_order_search
 from ..candidates import make_candidate
-from ..objective import STIFFNESS_OUTPUTS
 from ..result import Certificate, SolveResult
-from ..space import respond
+from ..task.objective import STIFFNESS_OUTPUTS
+from ..task.space import respond
 from .formulation import SLOTS, recover
 from .scaling import reciprocal_times, scaled_limit
 from .streams import c_stderr_to_file

@@ -5,7 +5,7 @@ resolution of the true threshold, from either side and for any number of points 
 import numpy as np
 import pytest
 
-from axisopt.search.bracket import kary_threshold
+from axisopt.search.preload import kary_threshold
 
 
 @pytest.mark.parametrize("points", [2, 3, 16, 64])

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from axisopt.problem import GOALS, OBJECTIVE_MODES, OBJECTIVE_TABLE, PARETO_KEYS, Objective
-from axisopt.search.objective import objective_spec, rank_order
 from axisopt.search.pareto import FIELD, SENSE, UNIT
+from axisopt.search.task.objective import objective_spec, rank_order
 
 
 def test_every_scalar_mode_has_an_objective_in_its_goals_unit():

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from axisopt.model.limits import CONVEX, LIMITS
-from axisopt.search.constraints import Constraint, End, Preload, limit_constraint
+from axisopt.search.task.constraints import Constraint, End, Preload, limit_constraint
 
 
 def _c(key="k_total", sense=">=", limit=100e6, direction=1, factor=1e6):

@@ -21,9 +21,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import mathx, model
-from ..model.limits import CHECK_RECORDS, CONVEX, LIMITS
-from ..problem import Problem
+from ... import mathx, model
+from ...model.limits import CHECK_RECORDS, CONVEX, LIMITS
+from ...problem import Problem
 from .objective import min_last
 
 PROFILE = frozenset(model.PROFILE_OUTPUTS)  # outputs given per position: a limit reads their minimum

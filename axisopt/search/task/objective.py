@@ -14,8 +14,8 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..problem import GOALS, OBJECTIVE_TABLE, Problem
-from ..units import N_PER_UM
+from ...problem import GOALS, OBJECTIVE_TABLE, Problem
+from ...units import N_PER_UM
 
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
 

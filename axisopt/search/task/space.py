@@ -22,8 +22,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import model
-from ..problem import Problem
+from ... import model
+from ...problem import Problem
 
 SCREEN_CHUNK = 4_000_000  # combinations per structured screening block (memory)
 

@@ -1,0 +1,26 @@
+"""The task a solve works on, and the vocabulary every stage of the search reads: the search space (the part
+arrays and the combination numbering, :mod:`.space`), the constraints (each limit with its preload structure and
+scaling, :mod:`.constraints`) and the objective (:mod:`.objective`).  The stages (:mod:`axisopt.search`) build it
+once (:func:`axisopt.search.front.build_task`) and pass it on; nothing here runs a stage.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ...problem import Problem
+from .objective import ObjectiveSpec
+from .space import Space
+
+__all__ = ["Task"]
+
+
+@dataclass(frozen=True)
+class Task:
+    """What every stage of a solve works on: the problem, its search space, its constraints and the scalar
+    objective (the Pareto front: the stiffness, whose exact solve gives every front value)."""
+
+    problem: Problem
+    space: Space
+    constraints: tuple
+    objective: ObjectiveSpec
