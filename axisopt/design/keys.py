@@ -21,6 +21,11 @@ def _axis_q(kind: str, doc: str, *, required: bool = False, zero: bool = False, 
 
 SEGMENT_LIMIT = 1000  # duty-cycle entries
 _FORCE = Key("quantity", "axial (process) force during the entry", kind="force", non_negative=True, default=0.0)
+# a workpiece loaded or unloaded: the entry's own moving mass (no inheritance from the entry before: a cycle repeats,
+# and each entry that differs from axis.moving_mass says so)
+_MASS = Key("quantity", "table + workpiece during the entry (default: axis.moving_mass, the heaviest the table "
+            "carries: an entry may be lighter, e.g. the workpiece unloaded)", kind="mass", positive=True,
+            example="300 kg")
 MOVE_SPEC = Spec("move", "a move of the duty cycle", {
     "move": Key("quantity", "signed distance (+ forward, - back), at most the stroke", required=True,
                 kind="length", example="400 mm"),
@@ -29,10 +34,12 @@ MOVE_SPEC = Spec("move", "a move of the duty cycle", {
                         positive=True),
     "jerk": Key("quantity", "jerk limit (default: axis.jerk)", kind="jerk", positive=True),
     "force": _FORCE,
+    "moving_mass": _MASS,
 })
 DWELL_SPEC = Spec("dwell", "a dwell of the duty cycle", {
     "dwell": Key("quantity", "duration", required=True, kind="time", positive=True, example="2 s"),
     "force": _FORCE,
+    "moving_mass": _MASS,
 })
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
 # operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible
