@@ -91,8 +91,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                              maximum=1000.0),
     "brake": Key("one_of", "holding brake (auto: vertical axes)", default="auto",
                  options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
-    "brake_safety": Key("number", "brake holding torque / gravity torque", positive=True, minimum=1.0,
-                        maximum=10.0),
+    "brake_safety": Key("number", "brake holding torque / holding torque at the heaviest stop (THK A-745)",
+                        positive=True, minimum=1.0, maximum=10.0),
     "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw surface for the heat balance "
                              "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4)"),
     "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
