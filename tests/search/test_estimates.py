@@ -134,9 +134,9 @@ def test_estimated_exclude_names_itself_when_it_removes_every_motor(tmp_path, ca
     """No shipped motor row lists its peak zone past the corner speed (the Mitsubishi-rule corner and the fall to
     rated torque are estimates, docs/assumptions.md): 'exclude' removes them all, and the error names that
     filter, not the motor filters it did not come from."""
-    from axisopt.cli import main
-
     from pathlib import Path
+
+    from axisopt.cli import main
 
     path = Path(_problem(tmp_path, [VENDOR]).source)
     text = path.read_text(encoding="utf-8").replace(
