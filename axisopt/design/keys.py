@@ -63,7 +63,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "guide_blocks": Key("number", "guide blocks carrying the table", integer=True, minimum=1, maximum=64),
     "rails": Key("number", "guide rails", integer=True, minimum=1, maximum=8),
     "table_length": _axis_q("length", "table length (rail length = stroke + table_length)"),
-    "normal_load": _axis_q("force", "external load on the guide blocks besides gravity", zero=True),
+    "normal_load": _axis_q("force", "cutting force pressing onto the guide blocks, besides gravity (default 0 N: "
+                           "solve then says the guides were sized without it)", zero=True),
     "lubricant_viscosity": _axis_q("kinematic_viscosity", "lubricant viscosity at working temperature"),
     "motor_inertia": _axis_q("inertia", "motor rotor inertia (when no motor part is chosen)"),
     "bearing_housing_stiffness": _axis_q("stiffness", "one support-bearing housing (default: rigid)"),
@@ -100,8 +101,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                             maximum=1.0),
     # carriage (issue 25): the cutting force's cross component and where it acts, the centre of gravity, the
     # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
-    "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load)",
-                          zero=True),
+    "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load; default "
+                          "0 N: solve then says the guides were sized without it)", zero=True),
     "tool_height": _axis_q("length", "cutting point above the guide mounting plane (default 0.4 x table_length)",
                            zero=True),
     "tool_offset": _axis_q("length", "cutting point across the rail from the carriage centre", zero=True),

@@ -136,3 +136,22 @@ def test_bad_phase_mass_is_one_line_exit_2(tmp_path, capsys, value, words):
     err = capsys.readouterr().err.strip()
     assert err.startswith("error: ") and "\n" not in err, err
     assert "axis.duty_cycle[2].moving_mass" in err and words in err, err
+
+
+def test_guide_block_loads_take_each_phases_mass():
+    """A horizontal table that returns empty: the return's weight and inertia on the blocks are the empty
+    table's, so the mean block load over the cycle falls, while the static load cases keep the axis's mass."""
+    import dataclasses
+
+    from axisopt.physics import motion
+
+    root = Path(__file__).resolve().parents[2]
+    d = load_design(root / "problems" / "vmc_x_design.yaml")
+    cycle = (motion.Segment("move", distance=0.6, speed=0.4, acceleration=3.0),
+             motion.Segment("move", distance=-0.6, speed=0.4, acceleration=3.0))
+    lighter = (cycle[0], dataclasses.replace(cycle[1], moving_mass=0.2 * d.axis.moving_mass))
+    full = evaluate(dataclasses.replace(d, axis=dataclasses.replace(d.axis, duty_cycle=cycle)), use_casadi=False)
+    empty = evaluate(dataclasses.replace(d, axis=dataclasses.replace(d.axis, duty_cycle=lighter)), use_casadi=False)
+    assert float(empty.values["guide_mean_load"]) < float(full.values["guide_mean_load"])
+    assert float(empty.values["guide_max_load"]) == pytest.approx(float(full.values["guide_max_load"]))
+    assert float(empty.values["guide_life"]) > float(full.values["guide_life"])
