@@ -30,8 +30,19 @@ _FORCE_NOTE = """\
   #               {move: 400 mm, speed: 2 m/min, force: 2500 N}; used for the motor's
   #               peak and RMS torque over the cycle.  Without a duty_cycle the cycle is
   #               a rapid move over the stroke and back with no process force.
+  #               An entry may name its own moving_mass (a workpiece loaded or
+  #               unloaded), at most axis.moving_mass: {dwell: 5 s, moving_mass: 300 kg}.
   # Inertia (moving_mass x acceleration), guide friction and, on a vertical axis,
-  # gravity are added by the model: leave them out of these forces."""
+  # gravity are added by the model: leave them out of these forces.
+  # The cut's other two components load the guides (block loads, static safety,
+  # guide life), with the point where the cut acts:
+  #  normal_load: onto the rails;  cross_load: across them (0 N unless given:
+  #               the guides are then sized without them, and solve says so);
+  #  tool_height: cutting point above the guide mounting plane;
+  #  tool_offset: cutting point across the rails from the carriage centre.
+  #  Unknown?  Turning rule of thumb (Isakov, Cutting Tool Engineering 2013):
+  #  feed Ff = 0.5 Fc and passive Fp = 0.25 Fc of the tangential force Fc; a rough
+  #  guide, not a measurement."""
 
 # Per machine: title, name, the axis section (after 'axis:'), the problem's objective to continuous sections,
 # the design's parts, and the study's sweep.
@@ -51,6 +62,10 @@ _MACHINE = {
 {force}
   axial_load: 3000 N          # largest process force (required)
   mean_axial_load: 800 N      # mean process force, for the life
+  normal_load: 1500 N         # cut onto the rails (face milling: cutter thrust); assumed
+  cross_load: 1500 N          # cut across the rails; our assumption: half the feed force each
+  tool_height: 300 mm         # cutting point above the guide mounting plane
+  tool_offset: 100 mm         # cutting point across the rails from the carriage centre
   duty_cycle:                 # the motor is sized on this cycle
     - {{move: 300 mm}}                                # rapid approach at max_speed and acceleration
     - {{move: 400 mm, speed: 2 m/min, force: 2500 N}} # cutting feed against 2.5 kN
@@ -85,10 +100,10 @@ continuous:
   screw: HIWIN-G-50x20-b6p35
   nut: HIWIN-R50-20K4-FDC-b635
   bearing: NSK-40TAC90B-DFF-C9
-  guide: HIWIN-HG15-ZA
+  guide: HIWIN-RG15-ZA
   motor: SGM7G-20A
   coupling: RINGFEDER-GWB-AKN-80
-  nut_preload: 4500 N
+  nut_preload: 4400 N
 """,
         sweep=("axis.moving_mass", "[300 kg, 450 kg, 600 kg]", "light, usual and heavy workpieces"),
     ),
@@ -104,8 +119,12 @@ continuous:
   max_speed: 30 m/min         # rapid traverse (required)
   acceleration: 5 m/s^2       # of the moves (default 0)
 {force}
-  axial_load: 5000 N          # largest process force: roughing feed
+  axial_load: 5000 N          # largest process force: roughing feed force Ff
   mean_axial_load: 1500 N     # mean process force, for the life
+  normal_load: 10000 N        # tangential force Fc onto the rails (rule of thumb: Ff / 0.5)
+  cross_load: 2500 N          # passive (radial) force Fp across the rails (0.25 Fc)
+  tool_height: 250 mm         # tool tip above the guide mounting plane
+  tool_offset: 150 mm         # tool tip across the rails from the carriage centre
   duty_cycle:                 # the motor is sized on this cycle
     - {{move: 150 mm}}                                   # rapid approach
     - {{move: 400 mm, speed: 0.5 m/min, force: 4000 N}}  # roughing pass against 4 kN
@@ -137,10 +156,10 @@ continuous:
   screw: HIWIN-G-40x20-b6p35
   nut: HIWIN-R40-20K4-FDC
   bearing: NSK-30TAC62B-DFF-C9
-  guide: HIWIN-HG15-ZA
+  guide: HIWIN-HG30-ZA
   motor: SGM7A-50A
   coupling: RINGFEDER-GWB-AKN-80
-  nut_preload: 3500 N
+  nut_preload: 2600 N
 """,
         sweep=("axis.axial_load", "[3000 N, 5000 N, 6000 N]", "light, medium and heavy roughing"),
     ),
@@ -159,6 +178,10 @@ continuous:
 {force}
   axial_load: 5000 N          # largest process force (required)
   mean_axial_load: 1500 N     # mean process force, for the life
+  normal_load: 2500 N         # cut onto the rails; our assumption: half the feed force
+  cross_load: 2500 N          # cut across the rails; our assumption: half the feed force
+  tool_height: 600 mm         # cutting point above the guide mounting plane (spindle)
+  tool_offset: 500 mm         # cutting point across the rails from the carriage centre (Y travel)
   duty_cycle:                 # the motor is sized on this cycle
     - {{move: 500 mm}}                                 # rapid approach
     - {{move: 1000 mm, speed: 5 m/min, force: 3000 N}} # milling pass against 3 kN
@@ -187,7 +210,7 @@ continuous:
   screw: HIWIN-G-50x40-b6p35
   nut: HIWIN-R50-40K3-FDC
   bearing: NSK-40TAC90B-DFF-C9  # light preload (C9): a standard-preload set misses 15 000 h here
-  guide: HIWIN-HG25-ZA        # size 25 under an 800 kg gantry: HG15 misses its life under the cut
+  guide: HIWIN-HG30-ZA        # size 30: the cut 600 mm up, 500 mm across tilts the gantry
   motor: HC702
   coupling: RINGFEDER-GWB-AKN-300
   nut_preload: 4300 N
@@ -209,6 +232,10 @@ continuous:
 {force}
   axial_load: 3000 N          # largest process force: drilling thrust
   mean_axial_load: 1000 N     # mean process force, for the life
+  normal_load: 2000 N         # milling force pressing the head onto the column; our assumption
+  cross_load: 1500 N          # milling force across the rails; our assumption
+  tool_height: 350 mm         # spindle nose out from the rail mounting plane
+  tool_offset: 0 mm           # on the carriage centre line
   duty_cycle:                 # the motor is sized on this cycle (- is down)
     - {{move: -200 mm}}                                # rapid down
     - {{move: -250 mm, speed: 2 m/min, force: 2000 N}} # drilling feed against 2 kN

@@ -41,7 +41,7 @@ def register(sub) -> None:
 def cmd_solve(args) -> int:
     from ..errors import InputError
     from ..problem import load_problem
-    from ..report.solve import format_result
+    from ..report.solve import format_result, load_components
     from ..search import solve
 
     if args.top < 1:
@@ -56,11 +56,12 @@ def cmd_solve(args) -> int:
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
                 sensitivities=not args.no_sensitivity)
     quiet = stdout_taken(args.json, args.save_design)
-    text = format_result(res, top=args.top) if not quiet or args.report else ""
+    text = format_result(res, top=args.top, problem=problem) if not quiet or args.report else ""
     if not quiet:
         show(text)
     if args.json:
         d = res.to_dict()
+        d["load_components"] = load_components(problem.axis, problem.assumed)
         if res.best is not None and res.best.design is not None:
             from ..model import evaluate
             from ..report import evaluation_dict

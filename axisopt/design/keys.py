@@ -21,6 +21,11 @@ def _axis_q(kind: str, doc: str, *, required: bool = False, zero: bool = False, 
 
 SEGMENT_LIMIT = 1000  # duty-cycle entries
 _FORCE = Key("quantity", "axial (process) force during the entry", kind="force", non_negative=True, default=0.0)
+# a workpiece loaded or unloaded: the entry's own moving mass (no inheritance from the entry before: a cycle repeats,
+# and each entry that differs from axis.moving_mass says so)
+_MASS = Key("quantity", "table + workpiece during the entry (default: axis.moving_mass, the heaviest the table "
+            "carries: an entry may be lighter, e.g. the workpiece unloaded)", kind="mass", positive=True,
+            example="300 kg")
 MOVE_SPEC = Spec("move", "a move of the duty cycle", {
     "move": Key("quantity", "signed distance (+ forward, - back), at most the stroke", required=True,
                 kind="length", example="400 mm"),
@@ -29,10 +34,12 @@ MOVE_SPEC = Spec("move", "a move of the duty cycle", {
                         positive=True),
     "jerk": Key("quantity", "jerk limit (default: axis.jerk)", kind="jerk", positive=True),
     "force": _FORCE,
+    "moving_mass": _MASS,
 })
 DWELL_SPEC = Spec("dwell", "a dwell of the duty cycle", {
     "dwell": Key("quantity", "duration", required=True, kind="time", positive=True, example="2 s"),
     "force": _FORCE,
+    "moving_mass": _MASS,
 })
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
 # operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible
@@ -56,7 +63,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "guide_blocks": Key("number", "guide blocks carrying the table", integer=True, minimum=1, maximum=64),
     "rails": Key("number", "guide rails", integer=True, minimum=1, maximum=8),
     "table_length": _axis_q("length", "table length (rail length = stroke + table_length)"),
-    "normal_load": _axis_q("force", "external load on the guide blocks besides gravity", zero=True),
+    "normal_load": _axis_q("force", "cutting force pressing onto the guide blocks, besides gravity (default 0 N: "
+                           "solve then says the guides were sized without it)", zero=True),
     "lubricant_viscosity": _axis_q("kinematic_viscosity", "lubricant viscosity at working temperature"),
     "motor_inertia": _axis_q("inertia", "motor rotor inertia (when no motor part is chosen)"),
     "bearing_housing_stiffness": _axis_q("stiffness", "one support-bearing housing (default: rigid)"),
@@ -84,8 +92,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                              maximum=1000.0),
     "brake": Key("one_of", "holding brake (auto: vertical axes)", default="auto",
                  options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
-    "brake_safety": Key("number", "brake holding torque / gravity torque", positive=True, minimum=1.0,
-                        maximum=10.0),
+    "brake_safety": Key("number", "brake holding torque / holding torque at the heaviest stop (THK A-745)",
+                        positive=True, minimum=1.0, maximum=10.0),
     "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw surface for the heat balance "
                              "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4)"),
     "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
@@ -93,8 +101,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                             maximum=1.0),
     # carriage (issue 25): the cutting force's cross component and where it acts, the centre of gravity, the
     # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
-    "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load)",
-                          zero=True),
+    "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load; default "
+                          "0 N: solve then says the guides were sized without it)", zero=True),
     "tool_height": _axis_q("length", "cutting point above the guide mounting plane (default 0.4 x table_length)",
                            zero=True),
     "tool_offset": _axis_q("length", "cutting point across the rail from the carriage centre", zero=True),

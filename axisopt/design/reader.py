@@ -73,9 +73,11 @@ def _check_carriage(sec: Section, kw: dict) -> None:
 
 
 def read_duty_cycle(sec: Section, kw: dict) -> tuple:
-    """``duty_cycle``: a list of moves ``{move: 400 mm, speed: 24 m/min, acceleration:, jerk:, force:}``
-    (speed defaults to the axis max_speed, acceleration and jerk to the axis's) and dwells
-    ``{dwell: 2 s, force:}``."""
+    """``duty_cycle``: a list of moves ``{move: 400 mm, speed: 24 m/min, acceleration:, jerk:, force:,
+    moving_mass:}`` (speed defaults to the axis max_speed, acceleration and jerk to the axis's) and dwells
+    ``{dwell: 2 s, force:, moving_mass:}``.  An entry's ``moving_mass`` (a workpiece loaded or unloaded) is at
+    most the axis's: ``axis.moving_mass`` is the heaviest the table carries (the largest inertia force, the
+    modes, the guides' static load and the brake are taken with it)."""
     node = sec.raw("duty_cycle")
     where = sec.key_path("duty_cycle")
     if not isinstance(node.value, list) or not node.value:
@@ -90,8 +92,14 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
                              where=Section._loc(f"{where}[{i}]", item.line))
         s = Section(item, sec.source, f"{where}[{i}]", DWELL_SPEC if s.has("dwell") else MOVE_SPEC)
         force = s.read("force")
+        mass = s.read("moving_mass")
+        heaviest = kw.get("moving_mass")
+        if mass is not None and heaviest is not None and mass > heaviest * (1 + 1e-9):
+            raise s.error("moving_mass", f"{mass:g} kg is heavier than axis.moving_mass ({heaviest:g} kg); give "
+                          "the axis the heaviest mass the table carries (the largest inertia force, the modes, "
+                          "the guides' static load and the brake are taken with it)")
         if s.has("dwell"):
-            out.append(motion.Segment("dwell", duration=s.read("dwell"), force=force))
+            out.append(motion.Segment("dwell", duration=s.read("dwell"), force=force, moving_mass=mass))
         else:
             dist = s.read("move")
             if dist == 0:
@@ -108,7 +116,8 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
             if not acc:
                 raise s.error("move", "needs an acceleration (here or in axis.acceleration)")
             jerk = s.read("jerk", kw.get("jerk"))
-            out.append(motion.Segment("move", distance=dist, speed=speed, acceleration=acc, jerk=jerk, force=force))
+            out.append(motion.Segment("move", distance=dist, speed=speed, acceleration=acc, jerk=jerk, force=force,
+                                      moving_mass=mass))
         s.done()
     return tuple(out)
 

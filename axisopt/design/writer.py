@@ -77,6 +77,8 @@ def _segment_dict(sg) -> dict:
             d["jerk"] = _q(sg.jerk, "jerk")
     if sg.force:
         d["force"] = _q(sg.force, "force")
+    if sg.moving_mass is not None:
+        d["moving_mass"] = _q(sg.moving_mass, "mass")
     return d
 
 

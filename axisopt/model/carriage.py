@@ -10,7 +10,8 @@ for a wall-mounted one):
   cutting point, feed and cross components with either sign (the cut reverses with the feed direction);
 * acceleration and deceleration: the inertia force m a at the centre of gravity, either direction;
 * each phase of the duty cycle: its process force (``force:`` of a move; the cross and normal components scale
-  with it) at the cutting point and its inertia force at the centre of gravity.
+  with it) at the cutting point and its inertia force at the centre of gravity, with the phase's moving mass
+  (an entry's own ``moving_mass``: a workpiece loaded or unloaded; its weight too).
 
 The static safety takes the largest equivalent block load of every case; the life takes, block by block, the
 cubic mean over the travel of the duty cycle's phases (THK A-96/A-107), the phases' process force being the
@@ -21,7 +22,7 @@ from __future__ import annotations
 
 from .. import mathx as mx
 from ..physics import carriage as pcr
-from .loads import phase_groups
+from .loads import phase_groups, phase_moving_mass
 
 G = 9.80665
 
@@ -54,7 +55,11 @@ def carriage_loads(p, moving) -> dict:
     sh = shares(p)
     n = sh["n"]
     ga, gc = p["gravity_axial"], p["gravity_cross"]
-    weight = (-ga * moving * G, gc * moving * G, (1.0 - ga - gc) * moving * G, p["cg_offset"], p["cg_height"])
+
+    def weight_of(m):
+        return (-ga * m * G, gc * m * G, (1.0 - ga - gc) * m * G, p["cg_offset"], p["cg_height"])
+
+    weight = weight_of(moving)
     y_t, h_t, y_g, h_g = p["tool_offset"], p["tool_height"], p["cg_offset"], p["cg_height"]
     f_feed, f_cross, f_norm = p["axial_load"], p["cross_load"], p["normal_load"]
 
@@ -70,11 +75,12 @@ def carriage_loads(p, moving) -> dict:
     groups = phase_groups(tuple(p.get("duty", ())))
     # the phases' own process forces (a duty cycle that gives them): the cut with the phase's inertia force
     ratio = mx.if_else(f_feed > 0.0, 1.0 / mx.fmax(f_feed, 1e-12), 0.0)
-    for (force, peak, _, direction), _ in groups:
+    for (force, peak, _, direction, mass), _ in groups:
         if force:
+            m = phase_moving_mass(p, moving, mass)
             scale = p["duty_process"] * force * ratio
             sign = -direction if direction else 1.0
-            cases.append([weight, (-moving * peak, 0.0, 0.0, y_g, h_g),
+            cases.append([weight_of(m), (-m * peak, 0.0, 0.0, y_g, h_g),
                           (sign * p["duty_process"] * force, scale * f_cross, scale * f_norm, y_t, h_t)])
     p_max = pe_max(cases[0])
     for c in cases[1:]:
@@ -83,12 +89,13 @@ def carriage_loads(p, moving) -> dict:
     # mean load per block over the travel: the phase's process force, or the mean axial load (rapid cycle)
     loads = {corner: [] for corner in pcr.CORNERS}
     travel = []
-    for (force, _, mean_acc, direction), dist in groups:
+    for (force, _, mean_acc, direction, mass), dist in groups:
         if dist <= 0.0:
             continue
+        m = phase_moving_mass(p, moving, mass)
         f = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
         scale = f * ratio
-        fn, fy, mp, mr, my = _sum([weight, (-moving * mean_acc, 0.0, 0.0, y_g, h_g),
+        fn, fy, mp, mr, my = _sum([weight_of(m), (-m * mean_acc, 0.0, 0.0, y_g, h_g),
                                    (-direction * f, scale * f_cross, scale * f_norm, y_t, h_t)])
         for corner, pe in zip(pcr.CORNERS, pcr.corner_block_loads(fn, fy, mp, mr, my, n, sh["pitch"],
                                                                    sh["roll"], sh["yaw"])):

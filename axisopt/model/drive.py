@@ -9,7 +9,11 @@ nominal and root diameter (model.modes): the shaft's physical inertia, not the s
 Per duty-cycle phase the motor torque is inertia x angular acceleration, plus the friction of the axis
 (the model's drag torque: nut preload, support bearings, guide blocks) against the motion, the external
 force through the screw and reduction efficiency, and gravity for a vertical axis
-(:func:`axisopt.physics.drive.phase_torques`).  Steady thrust: the torque that pushes an axial load at feed
+(:func:`axisopt.physics.drive.phase_torques`), each with the phase's moving mass (a duty-cycle entry's own
+``moving_mass``, the workpiece loaded or unloaded: inertia and weight); the guide friction in the drag is the
+axis's (the heaviest mass's: a lighter phase's is below it, and on a vertical axis the mass does not press on
+the guides).  At a dwell the motor holds (THK A-745): the weight at the dwell plus its force, less the guide
+friction at standstill, through the screw.  Steady thrust: the torque that pushes an axial load at feed
 with friction and weight.  Yaskawa's selection asks the load torque to stay within the rated torque: the
 thrust at the mean axial load counts with the cycle's RMS torque against the rated torque, the thrust at
 the largest axial load with the cycle's peak against the motor's peak torque.
@@ -27,7 +31,7 @@ from ..physics import drive as pd
 from ..physics import screw as ps
 from .checks import check_pairs
 from .drag import SCREW_EFFICIENCY
-from .loads import G
+from .loads import G, phase_moving_mass
 
 NOT_APPLICABLE = 1e9  # margin of a check that does not apply (no motor, horizontal axis for the brake)
 
@@ -41,8 +45,12 @@ def drive_inertias(p, moving_mass):
     return j_load, p["rotor_inertia"]
 
 
-def drive(p, moving_mass, drag) -> dict:
-    """Motor torques over the duty cycle, motor speed, inertia ratio, holding torque and the drive margins."""
+def drive(p, moving_mass, drag, hold_friction=0.0) -> dict:
+    """Motor torques over the duty cycle, motor speed, inertia ratio, holding torque and the drive margins.
+
+    moving_mass : the axis's moving mass [kg] (table + workpiece, nut, blocks); a phase whose duty-cycle entry
+    names its own table + workpiece takes that instead;  drag : friction torque at the screw [N m];
+    hold_friction : guide friction at standstill [N] (THK's f, credited to the holding torque)."""
     a = 1.0 / p["reduction_ratio"]
     eta = SCREW_EFFICIENCY * p["reduction_efficiency"]
     j_load, j_rotor = drive_inertias(p, moving_mass)
@@ -51,7 +59,15 @@ def drive(p, moving_mass, drag) -> dict:
     weight = p["gravity_axial"] * moving_mass * G
     gravity = pd.force_torque(weight, p["lead"], eta, a)
     phases = p.get("duty", ())  # no cycle (a bare parameter dict): the steady thrusts alone
-    torques = pd.phase_torques(phases, j_tot, p["lead"], friction, gravity, eta, a)
+    # per phase: the inertia and the weight of the mass the phase carries (one evaluation per distinct mass)
+    by_mass = {None: (j_tot, gravity)}
+    for ph in phases:
+        if ph.moving_mass not in by_mass:
+            m = phase_moving_mass(p, moving_mass, ph.moving_mass)
+            by_mass[ph.moving_mass] = (drive_inertias(p, m)[0] + j_rotor,
+                                       pd.force_torque(p["gravity_axial"] * m * G, p["lead"], eta, a))
+    torques = pd.phase_torques(phases, [by_mass[ph.moving_mass][0] for ph in phases], p["lead"], friction,
+                               [by_mass[ph.moving_mass][1] for ph in phases], eta, a, hold_friction)
     durations = [ph.duration for ph in phases]
     t_rms = pd.linear_rms_torque(torques, durations) if phases else 0.0 * friction
     t_peak_cycle = pd.peak_torque(torques) if phases else 0.0 * friction
@@ -75,9 +91,13 @@ def drive(p, moving_mass, drag) -> dict:
     v_max = max([ph.speed for ph in phases] + [0.0])
     n_motor = pd.motor_speed(v_max, p["lead"], a)
     ratio = pd.inertia_ratio(j_load, j_rotor)
-    # holding a vertical axis at standstill: the weight through the screw without efficiency credit (the
-    # back-driving torque m g P_h eta' / 2 pi is below it), times the brake safety factor
-    hold = p["gravity_axial"] * pd.force_torque(weight, p["lead"], 1.0, a)
+    # holding a vertical axis at standstill (THK A-745: T_S = (m g - f) P_h / 2 pi eta, guide friction
+    # credited): the brake holds wherever the power fails, so with the heaviest mass the table carries (the
+    # axis's moving_mass), or a dwell's weight and force if larger; times the brake safety factor
+    hold = p["gravity_axial"] * pd.holding_torque(weight, hold_friction, p["lead"], eta, a)
+    for ph, (t0, _) in zip(phases, torques):
+        if ph.direction == 0.0:
+            hold = mx.fmax(hold, t0)
     has = p["has_motor"] > 0.5
     brake_needed = p["gravity_axial"] > 0.5
     screw_speed = 2.0 * math.pi * v_max / p["lead"]

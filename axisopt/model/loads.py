@@ -15,23 +15,44 @@ G = 9.80665
 
 @lru_cache(maxsize=64)
 def phase_groups(phases: tuple) -> tuple:
-    """Duty-cycle phases grouped by (process force, peak acceleration, mean acceleration, direction), with the
-    travel of each group [m] (:func:`axisopt.physics.motion.phase_travel`)."""
+    """Duty-cycle phases grouped by (process force, peak acceleration, mean acceleration, direction, the entry's
+    moving mass or None), with the travel of each group [m] (:func:`axisopt.physics.motion.phase_travel`)."""
     groups: dict = {}
     for ph in phases:
         travel = motion.phase_travel(ph) if ph.direction else 0.0
         peak = ph.a0 if abs(ph.a0) >= abs(ph.a1) else ph.a1
-        key = (ph.force, peak, 0.5 * (ph.a0 + ph.a1), ph.direction)
+        key = (ph.force, peak, 0.5 * (ph.a0 + ph.a1), ph.direction, ph.moving_mass)
         groups[key] = groups.get(key, 0.0) + travel
     return tuple((k, v) for k, v in groups.items())
+
+
+def phase_moving_mass(p, moving, entry_mass):
+    """Moving mass in a phase [kg]: ``moving`` (the axis's table + workpiece, nut and blocks) with the duty-cycle
+    entry's own table + workpiece ``entry_mass`` [kg] in place of the axis's (a workpiece loaded or unloaded);
+    ``moving`` when the entry names none (None)."""
+    return moving if entry_mass is None else moving + (entry_mass - p["table_mass"])
+
+
+def guide_friction(p, table_mass, speed):
+    r"""Normal load per guide block [N] and the friction of all blocks [N] at a table speed [m/s], with
+    ``table_mass`` [kg] (table + workpiece) on the blocks unless the axis is vertical:
+    :math:`N = (m g (1 - g_{ax}) + F_n) / n`, :math:`f = n\,(F_0 + \mu N + c_v v)`
+    (:func:`axisopt.physics.guides.guide_friction_force`).  THK's worked examples write the same term
+    :math:`\mu m g + f` (A-725)."""
+    blocks = p["guide_blocks"]
+    n_block = (table_mass * G * (1.0 - p["gravity_axial"]) + p["normal_load"]) / blocks
+    f = blocks * pg.guide_friction_force(p["guide_friction_force"], p["guide_friction_coefficient"],
+                                         p["guide_friction_viscous"], n_block, speed)
+    return n_block, f
 
 
 def life_loads(p, moving, f_guides) -> tuple[list, list]:
     """Signed axial load on the nut in each phase that travels [N] (+ along the axis's positive direction, up
     on a vertical axis) and the travel under it [m], for the life checks (physics.life).
 
-    A duty cycle of the user's: per phase, the inertia force at the phase's mean acceleration, the guide
-    friction and the phase's process force against the motion, and the weight (THK A-725/A-739: e.g.
+    A duty cycle of the user's: per phase, with the phase's moving mass m (an entry's own ``moving_mass``, a
+    workpiece loaded or unloaded, else the axis's), the inertia force at the phase's mean acceleration, the
+    guide friction and the phase's process force against the motion, and the weight (THK A-725/A-739: e.g.
     Fa1 = mu m g + f + m alpha).  Without one: the mean axial load (with friction) each way over half the
     travel, and the weight.
     """
@@ -39,11 +60,13 @@ def life_loads(p, moving, f_guides) -> tuple[list, list]:
     weight = p["gravity_axial"] * moving * G
     loads, travels = [], []
     if getattr(phases, "given", False):
-        for (force, _, mean_acc, direction), dist in phase_groups(tuple(phases)):
+        for (force, _, mean_acc, direction, mass), dist in phase_groups(tuple(phases)):
             if dist <= 0.0 or not direction:
                 continue
+            m = phase_moving_mass(p, moving, mass)
+            f_fric = f_guides if mass is None else guide_friction(p, mass, p["max_speed"])[1]
             f_proc = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
-            loads.append(moving * mean_acc + direction * (f_guides + f_proc) + weight)
+            loads.append(m * mean_acc + direction * (f_fric + f_proc) + p["gravity_axial"] * m * G)
             travels.append(dist)
     if not travels:
         f = p["mean_axial_load"] + f_guides
@@ -68,12 +91,9 @@ def bearing_set_stiffness(p):
 def axial_loads(p, moving) -> dict:
     """Axial forces on the screw [N]: the largest (cutting + inertia + friction + weight) and the mean one
     for life; guide friction at max speed and the normal load per block; the screw pretension and the
-    thermal force of a fixed-fixed screw; the static load this leaves on a support-bearing set."""
-    blocks = p["guide_blocks"]
-    n_block = (p["table_mass"] * G * (1.0 - p["gravity_axial"]) + p["normal_load"]) / blocks
-    f_guides = blocks * pg.guide_friction_force(
-        p["guide_friction_force"], p["guide_friction_coefficient"], p["guide_friction_viscous"],
-        n_block, p["max_speed"])
+    thermal force of a fixed-fixed screw; the static load this leaves on a support-bearing set; the guide
+    friction at standstill (THK's f, credited to the holding torque, A-745)."""
+    n_block, f_guides = guide_friction(p, p["table_mass"], p["max_speed"])
     gravity = p["gravity_axial"] * moving * G
     f_max = p["axial_load"] + moving * p["acceleration"] + f_guides + gravity
     f_mean = p["mean_axial_load"] + f_guides + gravity
@@ -91,7 +111,8 @@ def axial_loads(p, moving) -> dict:
     compression = f_max + mx.fmax(d_thermal - pre, 0.0)
     life, travel = life_loads(p, moving, f_guides)
     return {"life_loads": life, "life_travels": travel,
-            "block_load": n_block, "guide_friction": f_guides, "max_axial_force": f_max,
+            "block_load": n_block, "guide_friction": f_guides,
+            "guide_friction_static": guide_friction(p, p["table_mass"], 0.0)[1], "max_axial_force": f_max,
             "mean_axial_force": f_mean, "pretension": pre, "thermal_force": d_thermal,
             "bearing_static_load": static, "screw_compression": compression,
             "screw_tension": f_max + pre}

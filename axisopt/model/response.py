@@ -72,7 +72,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]
     out.update(checks(p, mounting, preload, loads))
     if drive_block:
-        out.update(drive(p, m["moving_mass"], out["drag_torque"]))
+        out.update(drive(p, m["moving_mass"], out["drag_torque"], loads["guide_friction_static"]))
     if extras:
         out.update(drive_train_modes(p, k, modes["m_eff"]))
         out.update(damping(p, k, modes["m_eff"]))
@@ -80,12 +80,14 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
 
 
 def drive_inputs(p: dict, preload) -> tuple:
-    """What the drive block takes from the mechanics of a combination: the moving mass [kg] and the drag
-    torques by source [N m] (:func:`axisopt.model.drag.drag_torque`).  The guide enters the drive only through
-    these two, so the searches can bound the drive over a range of guides from their ranges."""
+    """What the drive block takes from the mechanics of a combination: the moving mass [kg], the drag
+    torques by source [N m] (:func:`axisopt.model.drag.drag_torque`) and the guide friction at standstill [N]
+    (credited to the holding torque).  The guide enters the drive only through these three, so the searches
+    can bound the drive over a range of guides from their ranges."""
     p = with_temperature(p, heat_balance(p, preload))
     m = masses(p)
-    return m["moving_mass"], drag_torque(p, preload, axial_loads(p, m["moving_mass"]))
+    loads = axial_loads(p, m["moving_mass"])
+    return m["moving_mass"], drag_torque(p, preload, loads), loads["guide_friction_static"]
 
 
 def drive_response(p: dict, preload) -> dict:
@@ -93,8 +95,8 @@ def drive_response(p: dict, preload) -> dict:
     from the same sub-assemblies without the stiffness chain and the modes: for the searches, which screen
     the mechanics once per combination of screw, nut, bearing and guide and then each drive against it, and
     solve the preload against the motor-torque limits (which depend on it through the nut's drag only)."""
-    moving, out = drive_inputs(p, preload)
+    moving, out, hold_friction = drive_inputs(p, preload)
     out = dict(out)
-    out.update(drive(p, moving, out["drag_torque"]))
+    out.update(drive(p, moving, out["drag_torque"], hold_friction))
     out["cost"] = cost(p)
     return out

@@ -69,24 +69,60 @@ def inertia_ratio(load_inertia_, rotor_inertia):
     return load_inertia_ / rotor_inertia
 
 
-def phase_torques(phases, total_inertia, lead, friction_torque, gravity_torque, efficiency=0.9, ratio=1.0):
+def holding_torque(held_force, friction, lead, efficiency=0.9, ratio=1.0):
+    r"""Motor torque holding an axis at standstill against a force on gravity's side [N m] (THK General Catalog,
+    vertical conveyance example, A-745: "When stationary (m2 = 0): TS = 658 N.mm", the work removed):
+
+    .. math:: T_S = \max(0,\ m g - f)\,\frac{P_h A}{2\pi\eta}
+
+    held_force : m g, the weight of what the table carries at the stop, plus any force held on its side [N]
+    friction   : f, the guide resistance at standstill [N], which helps hold (THK subtracts it)
+    lead       : P_h [m];  efficiency : η, THK's forward efficiency (it divides, as for the moving torques:
+                 above the back-driving torque m g P_h η' / 2π, so the motor or brake is not sized short)
+    ratio      : A, screw turns per motor turn [-]
+    THK's numbers: m1 = 40 kg, f = 20 N, P_h = 10 mm, η = 0.9 give 658 N.mm.  Floats, arrays, CasADi."""
+    return mx.fmax(held_force - friction, 0.0) * lead * ratio / (2.0 * pi * efficiency)
+
+
+def _each(value, n: int) -> list:
+    """A per-phase value: a list or tuple of one per phase as it is, anything else the same for all."""
+    if isinstance(value, (list, tuple)):
+        if len(value) != n:
+            raise ValueError("one value per phase")
+        return list(value)
+    return [value] * n
+
+
+def phase_torques(phases, total_inertia, lead, friction_torque, gravity_torque, efficiency=0.9, ratio=1.0,
+                  hold_friction=0.0):
     r"""Motor torque at the start and end of each duty-cycle phase [N m] (THK eq. 40-45, signed):
 
     .. math:: T = J\,\frac{2\pi}{P_h A} a + s\,\Big(T_f + \frac{F P_h A}{2\pi\eta}\Big) + T_g
 
+    and at standstill (s = 0, a dwell) the holding torque of :func:`holding_torque`,
+    :math:`\max(0, T_g + (F - f) P_h A / (2\pi\eta))`, the dwell's force F held on gravity's side and the guide
+    friction f credited (THK A-745).
+
     phases          : :class:`axisopt.physics.motion.Phase` sequence (acceleration a, direction s, force F)
-    total_inertia   : load plus rotor at the motor [kg m^2]
+    total_inertia   : load plus rotor at the motor [kg m^2], one for all phases or a list of one per phase
+                      (a duty-cycle entry that loads or unloads the workpiece changes it)
     friction_torque : friction/drag at the motor, opposing the motion [N m]
-    gravity_torque  : torque holding the weight of a vertical axis, positive lifting [N m]
+    gravity_torque  : torque holding the weight of a vertical axis, positive lifting [N m]; one or one per phase
     efficiency      : η of screw and reduction for the external force;  ratio : A (screw turns per motor turn)
+    hold_friction   : f, the guide friction at standstill [N] (credited at a dwell; 0: no credit)
     Returns a list of (T_start, T_end).  Friction is absent at standstill (s = 0).  Works on floats, numpy
     arrays and CasADi symbols (the phases are floats)."""
     k_acc = 2.0 * pi / (lead * ratio)
     per_newton = lead * ratio / (2.0 * pi * efficiency)
+    n = len(phases)
     out = []
-    for ph in phases:
-        base = ph.direction * (friction_torque + ph.force * per_newton) + gravity_torque
-        j = total_inertia * k_acc
+    for ph, j_tot, t_g in zip(phases, _each(total_inertia, n), _each(gravity_torque, n)):
+        if ph.direction == 0.0:
+            hold = mx.fmax(t_g + (ph.force - hold_friction) * per_newton, 0.0)
+            out.append((hold, hold))
+            continue
+        base = ph.direction * (friction_torque + ph.force * per_newton) + t_g
+        j = j_tot * k_acc
         out.append((j * ph.a0 + base, j * ph.a1 + base))
     return out
 

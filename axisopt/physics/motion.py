@@ -5,8 +5,8 @@ speed (at the axis acceleration, limited by the jerk when one is given), cruises
 move never reaches its speed (triangular or, with jerk, S-shaped profile).  A dwell stands still.  Each
 phase carries what the motor torque needs (:func:`axisopt.physics.drive.phase_torques`): its duration,
 the table acceleration at its start and end (linear in between, so a jerk-limited ramp is exact), the
-direction of motion (+1, -1, 0 at standstill), the external axial force opposing the motion and the
-largest speed reached.
+direction of motion (+1, -1, 0 at standstill), the external axial force opposing the motion, the
+largest speed reached and the moving mass when the entry names its own (a workpiece loaded or unloaded).
 
 Pure Python on floats: the cycle is the axis's, the same for every design; the design enters only in the
 torque (inertia, lead, friction), so the phases are built once per axis.
@@ -29,6 +29,7 @@ class Segment:
     jerk: float | None = None  # [m/s^3] (move); None: trapezoidal
     duration: float = 0.0  # [s] (dwell)
     force: float = 0.0  # external axial force opposing the motion [N] (a dwell: held against gravity's side)
+    moving_mass: float | None = None  # table + workpiece during the entry [kg]; None: the axis's moving_mass
 
 
 @dataclass(frozen=True)
@@ -42,6 +43,7 @@ class Phase:
     force: float  # external axial force opposing the motion [N]
     speed: float  # largest |speed| in the phase [m/s]
     v0: float = 0.0  # table speed at the start [m/s], signed (the speed over the phase: v0 + integral of a)
+    moving_mass: float | None = None  # table + workpiece in the phase [kg]; None: the axis's moving_mass
 
     def speed_at(self, t):
         """Signed table speed [m/s] at time ``t`` into the phase (acceleration linear in t)."""
@@ -89,14 +91,14 @@ def move_phases(seg: Segment) -> list[Phase]:
     out, u = [], 0.0  # u: speed at the start of each ramp piece, from rest up to v and back
     for t, a0, a1 in pieces:
         if t > 0:
-            out.append(Phase(t, s * a0, s * a1, s, seg.force, v, s * u))
+            out.append(Phase(t, s * a0, s * a1, s, seg.force, v, s * u, seg.moving_mass))
         u += 0.5 * (a0 + a1) * t
     if cruise > 0:
-        out.append(Phase(cruise, 0.0, 0.0, s, seg.force, v, s * v))
+        out.append(Phase(cruise, 0.0, 0.0, s, seg.force, v, s * v, seg.moving_mass))
     u = v
     for t, a0, a1 in reversed(pieces):
         if t > 0:
-            out.append(Phase(t, -s * a1, -s * a0, s, seg.force, v, s * u))
+            out.append(Phase(t, -s * a1, -s * a0, s, seg.force, v, s * u, seg.moving_mass))
         u -= 0.5 * (a0 + a1) * t
     return out
 
@@ -136,7 +138,7 @@ def cycle_phases(segments) -> tuple[Phase, ...]:
     for seg in segments:
         if seg.kind == "dwell":
             if seg.duration > 0:
-                out.append(Phase(seg.duration, 0.0, 0.0, 0.0, seg.force, 0.0))
+                out.append(Phase(seg.duration, 0.0, 0.0, 0.0, seg.force, 0.0, 0.0, seg.moving_mass))
         else:
             out.extend(move_phases(seg))
     return tuple(out)

@@ -298,7 +298,7 @@ def drive_lines(ev: Evaluation) -> list:
              f"{a.max_inertia_ratio:g} (axis.max_inertia_ratio)")]
     if a.orientation == "vertical":
         brake = float(m["brake_torque"]) if math.isfinite(float(m["brake_torque"])) else 0.0
-        rows.append(("gravity holding torque", f"{v['holding_torque']:.3f} N.m",
+        rows.append(("holding torque at a stop", f"{v['holding_torque']:.3f} N.m",
                      f"{brake:.3g} N.m brake / {a.brake_safety:g}" if brake else "no brake listed"))
     if d.coupling is not None:
         rows.append(("coupling torque", f"{m['peak_torque'] * a.reduction_ratio:.3g} N.m (motor peak)",

@@ -9,10 +9,38 @@ import textwrap
 
 import numpy as np
 
+# The cutting force's components beside the feed force, as a rule of thumb for turning: feed F_f = 0.50 F_c and
+# passive (radial) F_p = 0.25 F_c of the tangential F_c (E. Isakov, "Calculated Forces When Turning", Cutting Tool
+# Engineering, 2013, who adds that the rule "is not a good practice because the results are not as accurate as
+# they could be"): guidance for the designer where the cut's own components are unknown, never a model default.
+FEED_SHARE, PASSIVE_SHARE = 0.50, 0.25
+COMPONENT_KEYS = ("normal_load", "cross_load")
 
-def format_result(res, top: int | None = None) -> str:
+
+def load_components(axis, assumed) -> dict | None:
+    """When the axis gives ``axial_load`` but not the cut's normal or cross component (``assumed``: the axis keys
+    left at their defaults), what the guides were sized without and the turning rule of thumb from the feed force
+    (:data:`FEED_SHARE`, :data:`PASSIVE_SHARE`); None when both are given or there is no axial load."""
+    missing = [k for k in COMPONENT_KEYS if k in assumed]
+    if not missing or axis.axial_load <= 0.0:
+        return None
+    fc = axis.axial_load / FEED_SHARE
+    text = (f"guides sized without the cut's {' and '.join(missing)} (not given: 0 N); give "
+            f"{'them' if len(missing) > 1 else 'it'} with tool_height and tool_offset (where the cut acts).  "
+            f"Turning rule of thumb (Isakov, CTE 2013: F_f = 0.5 F_c, F_p = 0.25 F_c): axial_load "
+            f"{_num(axis.axial_load)} N as the feed force puts the tangential force near {_num(fc)} N, the "
+            f"passive near {_num(PASSIVE_SHARE * fc)} N")
+    return {"missing": missing, "axial_load_N": axis.axial_load, "tangential_estimate_N": fc,
+            "passive_estimate_N": PASSIVE_SHARE * fc,
+            "rule": "turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (Isakov, Cutting Tool Engineering 2013)",
+            "text": text}
+
+
+def format_result(res, top: int | None = None, problem=None) -> str:
     """The text ``axisopt solve`` prints: status, the best design's evaluation (or the Pareto front, or why
-    the problem is infeasible), the limits at the optimum, the runners-up and the certificate."""
+    the problem is infeasible), the limits at the optimum, the runners-up and the certificate.  With the
+    ``problem``: a line when the guides were sized without the cut's normal or cross component
+    (:func:`load_components`)."""
     from ..model import evaluate
     from .evaluation import evaluation_table
 
@@ -23,6 +51,9 @@ def format_result(res, top: int | None = None) -> str:
          + f", {res.time:.2f} s" + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else "")]
     if res.message:
         L.append(f"  note: {res.message}")
+    comp = None if problem is None else load_components(problem.axis, problem.assumed)
+    if comp is not None:
+        L.extend(textwrap.wrap(f"note: {comp['text']}", 100, initial_indent="  ", subsequent_indent="    "))
     if res.infeasibility is not None:
         L.extend(relax_lines(res.infeasibility))
     L.append("")
@@ -238,4 +269,4 @@ def plot_pareto(front, path: str | None = None):
     return fig
 
 
-__all__ = ["format_result", "format_pareto", "relax_lines", "estimated_lines", "plot_pareto"]
+__all__ = ["format_result", "format_pareto", "load_components", "relax_lines", "estimated_lines", "plot_pareto"]

@@ -184,9 +184,10 @@ def _drive_bounds(space: Space, mounting: str, drive) -> dict:
 def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict:
     """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the drive block),
     per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at the limit's
-    favourable preload end.  The guide enters the drive block only through the moving mass and the drag torque
-    (:func:`axisopt.model.drive_inputs`), so the drive block is evaluated once per drive pair in interval
-    arithmetic over the range of the two that the guides give (a box holding every guide's pair).  The
+    favourable preload end.  The guide enters the drive block only through the moving mass, the drag torque and
+    the standstill guide friction (:func:`axisopt.model.drive_inputs`), so the drive block is evaluated once per
+    drive pair in interval arithmetic over the range of the three that the guides give (a box holding every
+    guide's triple).  The
     bearings are taken in :data:`DRIVE_BEARING_GROUPS` groups of neighbouring drag torque, each bearing
     parameter an interval over its group: a group's bound holds each of its bearings' blocks.  The best over
     the drive pairs bounds the block.  Returns {limit name: (nuts, bearings)}."""
@@ -214,9 +215,9 @@ def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict
     opt = []  # per preload end: (lower ends, upper ends) of the drive outputs
     for pre in (space.preload_lo[nut_slice], space.preload_hi[nut_slice]):
         with np.errstate(divide="ignore"):
-            moving, drag = model.drive_inputs(pm, pre.reshape(-1, 1, 1, 1))
+            moving, drag, hold_friction = model.drive_inputs(pm, pre.reshape(-1, 1, 1, 1))
             ranges = []
-            for v in (moving, drag["drag_torque"]):
+            for v in (moving, drag["drag_torque"], hold_friction):
                 v = np.broadcast_to(v, full)
                 ranges.append(Interval(*over_groups(v.min(axis=2, keepdims=True), v.max(axis=2, keepdims=True))))
             opt.append(ends(drive_block(pg, *ranges)))

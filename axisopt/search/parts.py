@@ -195,7 +195,15 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     if r.max_motor_flange is not None:  # a motor without a listed flange cannot be shown to fit
         motors = motors.take(motors.number("flange") <= r.max_motor_flange * (1 + 1e-9))
     if r.estimated == "exclude":
+        before = len(motors)
         motors = vendor_filled(motors, "motors")
+        if before and not len(motors):  # the filter, not the catalog, left no motor: say which (docs/assumptions.md)
+            raise InputError(
+                f"'exclude' removed all {before} motors the other filters left, so the drive search has nothing to "
+                "choose from (the peak-torque zone above the corner speed is estimated for "
+                "every motor without peak_corner_speed and peak_torque_at_max_speed read from its vendor's "
+                "torque-speed curve); add those columns to a motors table, or allow estimated values",
+                source=problem.source, where="key 'catalog.estimated'")
     couplings = _filtered(cat.rows("couplings"), r, "coupling", r.coupling_series)
     n_couplings = len(couplings)
     if len(couplings) and not r.required("coupling"):

@@ -128,3 +128,27 @@ def test_a_binding_check_names_the_defaults_it_reads(tmp_path):
     res = solve(load_problem(f), top=1, sensitivities=False)
     rest = {r["what"]: r for r in res.certificate.estimated}
     assert {e["column"] for e in rest["check nut_life"]["estimates"]} == {"mean_speed"}
+
+
+def test_estimated_exclude_names_itself_when_it_removes_every_motor(tmp_path, capsys):
+    """No shipped motor row lists its peak zone past the corner speed (the Mitsubishi-rule corner and the fall to
+    rated torque are estimates, docs/assumptions.md): 'exclude' removes them all, and the error names that
+    filter, not the motor filters it did not come from."""
+    from pathlib import Path
+
+    from axisopt.cli import main
+
+    path = Path(_problem(tmp_path, [VENDOR]).source)
+    text = path.read_text(encoding="utf-8").replace(
+        "catalog:\n", "catalog:\n  motor_series: [Sigma-7 SGM7G]\n  estimated: exclude\n").replace(
+        "guide: [HIWIN-HG15-ZA]}", "guide: [HIWIN-HG15-ZA], coupling: [RINGFEDER-GWB-AKN-80]}")
+    path.write_text(text, encoding="utf-8")
+    assert main(["solve", str(path), "--no-sensitivity"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "key 'catalog.estimated'" in err and "'exclude' removed all" in err, err
+    assert "motor_vendors" not in err
+    # with estimated values allowed the same problem has motors to choose from
+    path.write_text(text.replace("  estimated: exclude\n", ""), encoding="utf-8")
+    assert main(["solve", str(path), "--no-sensitivity", "--top", "1"]) in (0, 1)
+    out = capsys.readouterr()
+    assert "nothing to choose from" not in out.err and "motor SGM7G" in out.out
