@@ -45,9 +45,10 @@ import vendor_procedures as vp  # noqa: E402  (this checker's own formulas, no a
 from vendor_procedures import UNITS, Row, quantity  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
-TOLERANCE = 0.02
-AXISOPT_LOAD_FACTOR = 1.2  # axisopt's documented default fw (docs/files.md), for the same-basis comparison  # agreement of vendor and axisopt margins where both use the same method
+TOLERANCE = 0.02  # agreement of vendor and axisopt margins where both use the same method
+AXISOPT_LOAD_FACTOR = 1.2  # axisopt's documented default fw (docs/files.md), for the same-basis comparison
 G = 9.80665
+
 
 def catalog_row(kind: str, part) -> dict:
     """A part's row from catalogs/<kind>.csv in SI (units from the headers), or an inline mapping."""
@@ -242,6 +243,8 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     # 5 support bearings: life per direction by the rows carrying it, static safety
     n_sets = 2 if ff else 1
     blife, src, bnote = vp.bearing_life_h(brg, phases, pre_vendor, nm)
+    b_ax = vp.bearing_life_h(brg, phases, pre_vendor, nm, fw_ax)[0]
+    bnote += f"; with axisopt's fw {fw_ax} on the loads: {b_ax:,.0f} h"
     rows.append(Row("support bearing L10 life", "h", blife, ax.life_h, blife / ax.life_h, theirs("bearing_life"),
                     their_margin("bearing_life"), "", src, bnote))
     perm, src = vp.bearing_permissible_load(brg)
@@ -259,8 +262,10 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     travel_speed = vp.mean_travel_speed(phases) if cycle_given else ax.mean_speed
     need_km = ax.life_h * 3600 * travel_speed / 1e3
     g_km, src, gnote = vp.guide_life_km(guide, ax, phases, cycle_given, moving)
+    g_ax = vp.guide_life_km(guide, ax, phases, cycle_given, moving, fw_ax)[0]
     rows.append(Row("guide L10 travel", "km", g_km, need_km, g_km / need_km, theirs("guide_life"),
-                    their_margin("guide_life"), "", src, gnote))
+                    their_margin("guide_life"), "", src, gnote + f"; at axisopt's fw {fw_ax}: {g_ax:,.0f} km",
+                    same_basis=g_ax))
     # 7 axial rigidity of the feed system (THK A-707 eq. 32)
     k_v, src, knote = vp.feed_rigidity(ax, screw, nut, brg, preload, f_max)
     chain = ev.get("chain_at_minimum_N_per_um", {})
@@ -319,7 +324,8 @@ def main(argv=None) -> int:
         design_path, ev = run_axisopt(Path(args.file), Path(tmp))
         design = yaml.safe_load(design_path.read_text(encoding="utf-8"))
     rows = check_design(design, ev)
-    print(f"{args.file}: design {ev['design']}, parts " + "  ".join(f"{k} {v}" for k, v in ev["parts"].items()))
+    print(f"{args.file}: design {ev['design']}, {ev['mounting']}, parts "
+          + "  ".join(f"{k} {v}" for k, v in ev["parts"].items()))
     print(table(rows))
     fails = [r.check for r in rows if not r.passes]
     diffs = [r.check for r in rows if r.kind == "DIFF"]

@@ -30,6 +30,9 @@ CONVENTIONS = {
     "factor, IBC eq. 2.39 over the bearings; axisopt: the 2^(3/2) preloaded-pair law on row groups, fw applied",
     "axial rigidity": "THK A-707 eq. 32 with the nut at its preload (A-710, no external load) and no torsion/"
     "coupling; axisopt's chain at its own least-stiff point without torsion and coupling terms",
+    "RMS torque": "THK's friction f is constant (A-725); axisopt adds the guides' viscous friction at speed, and "
+    "moves jerk-limited where the design gives a jerk (this checker: trapezoidal)",
+    "holding torque": "THK A-745 credits the guide friction and divides by eta 0.9; axisopt: m g P_h / 2 pi",
     "guide static safety": "the largest block load with full feed, cross and normal forces and the peak "
     "acceleration together (this checker's load case); axisopt's load cases are its own",
 }
@@ -71,7 +74,7 @@ class Row:
 
     @property
     def passes(self) -> bool:
-        return self.margin is None or self.margin >= 1.0 - 1e-9
+        return bool(self.margin is None or self.margin >= 1.0 - 1e-9)
 
 
 
@@ -232,6 +235,13 @@ IBC_SPLIT = {(1, 1): (2.83, 1.00, 0.67, 1.00, 0.33, 1.0), (2, 1): (5.66, 0.84, 0
              (1, 2): (2.83, 1.36, 0.52, 0.84, 0.30, 1.0), (2, 2): (5.66, 0.84, 0.40, 0.84, 0.22, 0.617)}
 
 
+# the preload force the set's catalog value names (the axial force across the set at no load) in units of IBC's
+# Fv: the side of the set that carries it at Fae = 0 is 1 bearing x 1.0 Fv (DB/DF), the single bearing of a 2:1
+# set 1.36 Fv (IBC eq. 2.11/2.13), 2 bearings x 0.84 Fv (2:2, eq. 2.22/2.23).  NSK-SP p. 168 prints for 25TAC62B
+# DF 3 150 N, DFD 4 300 N (4 300 / 1.36 = 3 162 N, the DF value: the reading holds), DFF 6 250 N.
+IBC_SET_PRELOAD = {(1, 1): 1.0, (2, 1): 1.36, (2, 2): 1.68}
+
+
 def ibc_bearing_loads(n_load, n_other, fv, f):
     """Axial load of each bearing facing the load and of each opposite bearing (IBC Table 2.2), f >= 0."""
     x, a0, a1, b0, b1, after = IBC_SPLIT[(n_load, n_other)]
@@ -240,7 +250,7 @@ def ibc_bearing_loads(n_load, n_other, fv, f):
     return a0 * fv + a1 * f, max(b0 * fv - b1 * f, 0.0)
 
 
-def bearing_life_h(brg, phases, pretension, nm):
+def bearing_life_h(brg, phases, pretension, nm, fw=1.0):
     """Support-bearing set L10 life [h] by IBC TI-I-5010.2/E: the set's single-bearing rating (the printed set
     rating / i^0.7 for the printed rows, IBC eq. 2.4, NSK-SP p. 111), each bearing's axial load per phase from
     Table 2.2 (the rows facing each direction carry it), each bearing's cubic-mean load weighted by revolutions
@@ -249,7 +259,7 @@ def bearing_life_h(brg, phases, pretension, nm):
     pretension presses the set, in the worse sense.  Returns (hours, source, note)."""
     n_plus, n_minus = ROWS[brg["arrangement"]]
     c_single = brg["dynamic_load_rating"] / max(n_plus, n_minus) ** 0.7
-    fv = brg["preload"]
+    fv = brg["preload"] / IBC_SET_PRELOAD[(max(n_plus, n_minus), min(n_plus, n_minus))]
     moving = [p for p in phases if p.dist > 0]
     total = sum(p.dist for p in moving)
     worst = math.inf
@@ -263,6 +273,7 @@ def bearing_life_h(brg, phases, pretension, nm):
                 face = 1 if f >= 0 else -1
                 n_load, n_opp = (np_, nm_) if face == 1 else (nm_, np_)
                 a, b = ibc_bearing_loads(n_load, n_opp, fv, abs(f))
+                a, b = a * fw, b * fw
                 cubes[face] += a**3 * p.dist
                 cubes[-face] += b**3 * p.dist
             lives = []
@@ -272,7 +283,10 @@ def bearing_life_h(brg, phases, pretension, nm):
             rev = sum(life ** -WEIBULL_IBC for life in lives) ** (-1 / WEIBULL_IBC)
             best = max(best, rev / (60 * nm))
         worst = min(worst, best)
-    note = f"{brg['arrangement']}: {n_plus}/{n_minus} rows, Ca single {c_single / 1e3:.1f} kN, Fv {fv:.0f} N"
+    angle = brg.get("contact_angle") or 60.0
+    note = (f"{brg['arrangement']}: {n_plus}/{n_minus} rows, Ca single {c_single / 1e3:.1f} kN, set preload "
+            f"{brg['preload']:.0f} N = IBC Fv {fv:.0f} N"
+            + ("" if angle >= 59 else f"; IBC's table is for 60 deg, this set {angle:.0f} deg"))
     return worst, "IBC Table 2.2, eqs. 2.4, 2.34, 2.37, 2.39", note
 
 
@@ -338,6 +352,12 @@ GUIDE_BASIS = {("HIWIN", "ball"): 50, ("HIWIN", "roller"): 100, ("THK", "ball"):
                ("IKO", "ball"): 50, ("IKO", "roller"): 50, ("NBS", "ball"): 50}
 
 
+def guide_rating_life(c, p, kind, basis):
+    """Rating life of a guide block [km]: L = (C/P)^e x basis, e = 3 ball, 10/3 roller (T-GC A-10 eqs. 2/3, H-LG
+    eqs. 1.2/1.3, IKO CAT-1578E III-7 eqs. 1/2); basis = the travel C is defined for [km]."""
+    return (c / p) ** (3.0 if kind == "ball" else 10.0 / 3.0) * basis
+
+
 def guide_static_safety(vendor, kind):
     """Least static safety factor C0/P for a machine tool axis (vibration / impact class, lower bound):
     HIWIN H-LG Table 1-1 3.0; THK T-GC A-9 Table 1 (normal motion, impact) 2.5; IKO Table 2.1/2.2 (vibration
@@ -347,7 +367,7 @@ def guide_static_safety(vendor, kind):
         vendor, "H-LG Table 1-1 (no vendor table)") + f": f_S >= {fs}"
 
 
-def guide_life_km(guide, ax, phases, cycle_given, moving):
+def guide_life_km(guide, ax, phases, cycle_given, moving, fw_given=None):
     """Guide block L10 travel [km] of the most loaded block: its cubic-mean load over the phases (T-GC A-32) with
     the block preload (T-GC A-112, lift-off at 2.8 x preload),
     L = (C / (fW Pm))^e x basis (T-GC A-10 eqs. 4/5, H-LG eqs. 1.4/1.5, IKO III-7: e = 3 ball, 10/3 roller;
@@ -359,6 +379,7 @@ def guide_life_km(guide, ax, phases, cycle_given, moving):
                                       if ax.v_max <= 2.0 else 2.0)
     if ax.load_factor is not None and ax.load_factor > fw:
         fw = ax.load_factor
+    fw = fw if fw_given is None else fw_given
     moving_phases = [p for p in phases if p.dist > 0]
     cubes = None
     for p in moving_phases:
@@ -370,10 +391,10 @@ def guide_life_km(guide, ax, phases, cycle_given, moving):
     # preload (T-GC A-112: "calculate the service life while taking into account the magnitude of the preload";
     # its effect lasts to about 2.8 x the preload): the block's balls as a preloaded pair (H-BS F 3.7 form)
     pm = preloaded_halves(p0, pm_ext)[0] if p0 > 0 else pm_ext
-    e = 3.0 if kind == "ball" else 10.0 / 3.0
-    km = (guide["dynamic_load_rating"] / (fw * pm)) ** e * basis
+    km = guide_rating_life(guide["dynamic_load_rating"], fw * pm, kind, basis)
     note = (f"basis {basis} km ({vendor} {kind}; csv column {guide.get('rating_distance', 0) / 1e3:.0f} km), "
-            f"fW {fw}, Pm {pm_ext:.0f} N, with preload {p0:.0f} N: {pm:.0f} N" + ("" if cycle_given else "; no cycle: feed at mean_axial_load"))
+            f"fW {fw}, Pm {pm_ext:.0f} N, with preload {p0:.0f} N: {pm:.0f} N"
+            + ("" if cycle_given else "; no cycle: feed at mean_axial_load"))
     return km, "T-GC A-10/A-32, H-LG eq. 1.4/1.5, IKO III-7", note
 
 
@@ -415,6 +436,18 @@ def preload_torque(preload, lead, d_pcd):
     return 0.05 * tan_b**-0.5 * preload * lead / (2 * math.pi) / 1e3
 
 
+def screw_inertia(d0, length):
+    """Screw shaft inertia [kg.m^2], a solid steel cylinder of the outer diameter d0 [m] over its length [m]:
+    J = pi rho d^4 L / 32 (T-GC A-718 'J = m D^2 / 8', D the outer diameter; rho 7.85e3 kg/m^3, A-696)."""
+    return math.pi * RHO_THK * 1e9 * d0**4 * length / 32
+
+
+def holding_torque(weight, friction, lead):
+    """Screw torque holding a vertical axis at a stop [N.m], T-GC A-745: T_s = (m g - f) P_h / (2 pi eta), the guide
+    resistance f credited, eta = 0.9 dividing.  weight m g, friction f [N]; lead [m]."""
+    return max(weight - friction, 0.0) * lead / (2 * math.pi * ETA_THK)
+
+
 def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, phases, preload, n_sets, ev,
                cycle_given):
     """Inertia ratio (T-GC A-718 with J = m D^2 / 8 of the nominal diameter, FANUC/HIWIN F 3.20), RMS torque
@@ -422,7 +455,7 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
     vertical axis (T-GC A-745: T_s = (m g - f) P_h / (2 pi eta))."""
     lead = screw["lead"]                             # [m]
     d0, d1 = screw["nominal_diameter"], screw["root_diameter"]
-    j_screw = math.pi * RHO_THK * 1e9 * d0**4 * ax.span / 32
+    j_screw = screw_inertia(d0, ax.span)
     j_table = moving * (lead / (2 * math.pi)) ** 2
     j_coup = coupling["inertia"] if coupling else 0.29e-3
     i = ax.ratio
@@ -438,7 +471,7 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
     drag = preload_torque(preload, lead * 1e3, (d1 + screw["ball_diameter"]) * 1e3) if nut["type"] == "double" \
         else 0.0
     drag += n_sets * (brg.get("starting_torque") or 0.0)
-    hold = max(weight - (friction if ax.vertical else 0.0), 0.0) * lead / (2 * math.pi * ETA_THK) / (i * ax.red_eff)
+    hold = holding_torque(weight, friction if ax.vertical else 0.0, lead) / (i * ax.red_eff)
     drv = phases if cycle_given else default_drive_phases(ax, moving, friction, weight)
     sq, tt = 0.0, 0.0
     for p in drv:
