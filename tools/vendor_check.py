@@ -207,7 +207,7 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     rows.append(Row("buckling", "kN", p1 / 1e3, f_max / 1e3, p1 / f_max, theirs("buckling"), their_margin("buckling"),
                     "", src, f"l_a = thrust bearing to nut at the far end {la:.0f} mm, nut as fixed end (THK A-726);"
                     " load: feed force + m a + friction (+ weight)"))
-    pre_vendor = vp.thermal_pretension(d1, ax.temp_rise) if ff else 0.0
+    pre_vendor = vp.thermal_pretension(d1, ax.temp_rise, svendor) if ff else 0.0
     p2 = vp.permissible_tension(d1)
     tension = f_max + pre_vendor
     rows.append(Row("tensile/compressive load", "kN", p2 / 1e3, tension / 1e3, p2 / tension, theirs("screw_yield"),
@@ -215,7 +215,7 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     "max axial force" + (" + thermal pretension" if ff else "")))
     if ff:
         rows.append(Row("thermal pretension", "kN", pre_vendor / 1e3, None, None, ev.get("pretension_N", 0.0) / 1e3,
-                        None, "", "T-GC A-715 eq. 38 (alpha 12e-6/K) x E A: stretch for a "
+                        None, "", "T-GC A-715 eq. 38, H-BS F 3.36 (alpha) x E A: stretch for a "
                         f"{ax.temp_rise or vp.DESIGN_RISE:.0f} K rise", "axis.temperature_rise if given, else 3 K"))
     # 4 nut: static safety, lift-off, preload ceiling, L10 life
     fs_nut = vp.NUT_STATIC_SAFETY

@@ -178,10 +178,12 @@ def permissible_tension(d1):
     return 147.0 * math.pi / 4.0 * d1**2
 
 
-def thermal_pretension(d1, rise=None):
+def thermal_pretension(d1, rise=None, vendor="THK"):
     """Pretension of a fixed-fixed screw that takes up a temperature rise [N]: the force that stretches the
-    shaft by its thermal growth (T-GC A-715 eq. 38, alpha 12e-6/K) with Hooke's law, E A alpha dT."""
-    return E_THK * math.pi / 4.0 * d1**2 * ALPHA_THK * (DESIGN_RISE if rise is None else rise)
+    shaft by its thermal growth with Hooke's law, E A alpha dT; alpha 11.6e-6/K for HIWIN (H-BS F 3.36),
+    12e-6/K otherwise (T-GC A-715 eq. 38)."""
+    alpha = 11.6e-6 if vendor == "HIWIN" else ALPHA_THK
+    return E_THK * math.pi / 4.0 * d1**2 * alpha * (DESIGN_RISE if rise is None else rise)
 
 
 def nut_load_factor(vendor, v_max, given):
