@@ -1,0 +1,122 @@
+"""Every shipped optimum (and the shipped designs) by the part vendors' own procedures (issue 38, done-when 2).
+
+tools/vendor_check.py solves each problem with axisopt as a program, then recomputes every check from the design
+YAML and the catalog rows by the vendors' printed procedures (tools/vendor_procedures.py, tested against the
+worked examples in test_vendor_procedures.py).  Here:
+
+* the vendor's criterion: every margin >= 1 by the checker's own computation (the known failures are marked
+  xfail with the reason; an XPASS means the model was changed to pass them);
+* agreement with axisopt where both use the same method: within TOLERANCE (2 %), or the wider tolerance stated
+  below where the vendor constants or an input convention differ by a known amount (docs/validation.md).
+"""
+
+from __future__ import annotations
+
+import ast
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+TOLERANCE = 0.02
+# (file, check) -> (tolerance, why).  `None` as file: every file.
+WIDER = {
+    (None, "buckling"): (0.035, "HIWIN's F 3.25 constant 0.5 x 4.072e5 = 2.036e5 against THK's 2e5 (A-694 eq. 6), "
+                                "which axisopt applies to every screw: +1.8 %; and axisopt's viscous guide friction "
+                                "in the load"),
+    ("teaching_design", "critical speed"): (0.08, "fixed-free: HIWIN's f_n 0.147 (F 3.27) is 6.3 % below THK's "
+                                                  "lambda_2 3.4 (A-696), which axisopt applies"),
+    ("vmc_x_problem", "nut L10 life"): (0.05, "axisopt adds the IKO roller blocks' viscous friction at rapid speed "
+                                              "(39 N.s/m x 4 blocks) to the life loads; THK's f is constant"),
+    ("highspeed_problem", "guide L10 travel"): (0.08, "the most loaded block's mean load differs by 2 % (the "
+                                                      "checker's rigid-table statics with the screw at the rail "
+                                                      "plane against axisopt's carriage model)"),
+}
+# the vendor's criterion fails here (checker's computation); xfail until the model or the problem changes
+KNOWN_FAILS = {
+    "highspeed_problem": "nut L10 life: HIWIN's fp 1.3 (normal operation) against axisopt's fw 1.2, on an optimum "
+                         "whose nut life sits exactly at the 20 000 h limit",
+    "gantry_problem": "nut L10 life: HIWIN's fp 1.3 against axisopt's fw 1.2, the optimum's nut life at its limit",
+    "teaching_design": "a teaching design, not an optimum: its nut and bearing lives fail by axisopt's own checks",
+}
+FILES = ["teaching_problem", "highspeed_problem", "gantry_problem", "vertical_problem", "vmc_x_problem",
+         "duty_cycle_problem", "teaching_design", "vmc_x_design"]
+_CACHE: dict = {}
+
+
+def rows(name: str, tmp_path_factory) -> list[dict]:
+    """The checker's rows for problems/<name>.yaml (run once per session)."""
+    if name not in _CACHE:
+        out = tmp_path_factory.mktemp("vendor") / f"{name}.json"
+        env = dict(os.environ, PYTHONPATH=str(ROOT))
+        subprocess.run([sys.executable, str(ROOT / "tools" / "vendor_check.py"), f"problems/{name}.yaml",
+                        "--json", str(out)], cwd=ROOT, env=env, check=True, capture_output=True, text=True)
+        _CACHE[name] = json.loads(out.read_text(encoding="utf-8"))
+    return _CACHE[name]
+
+
+def _compared(r: dict) -> tuple[float, float] | None:
+    """The two numbers the checker compared for a same-method row (its same-basis value, else the margins,
+    else the values)."""
+    if r["kind"] in ("CONV", "INFO"):
+        return None
+    if r["same_basis"] is not None:
+        return r["same_basis"], r["axisopt"]
+    if r["margin"] is not None and r["axis_margin"] is not None:
+        return r["margin"], r["axis_margin"]
+    return r["vendor"], r["axisopt"]
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(reason=KNOWN_FAILS[n], strict=False))
+                                  if n in KNOWN_FAILS else n for n in FILES])
+def test_vendor_criterion(name, tmp_path_factory):
+    failed = [(r["check"], r["margin"]) for r in rows(name, tmp_path_factory) if not r["passes"]]
+    assert not failed, f"{name}: the vendor's procedure fails {failed}"
+
+
+@pytest.mark.parametrize("name", FILES)
+def test_agrees_with_axisopt_where_same_method(name, tmp_path_factory):
+    checked = 0
+    for r in rows(name, tmp_path_factory):
+        pair = _compared(r)
+        if pair is None:
+            continue
+        tol = WIDER.get((name, r["check"]), WIDER.get((None, r["check"]), (TOLERANCE, "")))[0]
+        assert pair[0] == pytest.approx(pair[1], rel=tol), f"{name}: {r['check']} {pair}"
+        checked += 1
+    assert checked >= 8  # the checks of screw, nut, guides and drive that both compute the same way
+
+
+def test_fixed_fixed_pretension_and_tension(tmp_path):
+    # no shipped optimum is fixed-fixed: the VMC design mounted fixed-fixed exercises the pretension path
+    design = tmp_path / "ff.yaml"
+    design.write_text((ROOT / "problems" / "vmc_x_design.yaml").read_text(encoding="utf-8").replace(
+        "mounting: fixed-supported", "mounting: fixed-fixed"), encoding="utf-8")
+    out = tmp_path / "ff.json"
+    subprocess.run([sys.executable, str(ROOT / "tools" / "vendor_check.py"), str(design), "--json", str(out)],
+                   cwd=ROOT, env=dict(os.environ, PYTHONPATH=str(ROOT)), check=True, capture_output=True)
+    by = {r["check"]: r for r in json.loads(out.read_text(encoding="utf-8"))}
+    pre = by["thermal pretension"]
+    # 3 K (THK A-715: 2-5 K) on the root section, alpha 11.6e-6/K for a HIWIN shaft (H-BS F 3.36)
+    assert pre["vendor"] == pytest.approx(pre["axisopt"], rel=TOLERANCE)
+    assert by["tensile/compressive load"]["limit"] > by["buckling"]["limit"]  # the pretension counts in tension
+
+
+def test_teaching_optimum_every_check_present(tmp_path_factory):
+    names = {r["check"] for r in rows("teaching_problem", tmp_path_factory)}
+    assert {"critical speed", "DN value", "buckling", "tensile/compressive load", "nut L10 life",
+            "support bearing L10 life", "support bearing static", "guide L10 travel", "nut static safety C0a/Famax",
+            "guide static safety C0/P", "axial rigidity (screw, nut, bearing, K_H)", "inertia ratio load/rotor",
+            "RMS torque"} <= names
+
+
+def test_checker_imports_nothing_of_axisopt():
+    for path in (ROOT / "tools" / "vendor_check.py", ROOT / "tools" / "vendor_procedures.py"):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        names = [a.name for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names]
+        names += [n.module or "" for n in ast.walk(tree) if isinstance(n, ast.ImportFrom)]
+        assert not [m for m in names if m.split(".")[0] == "axisopt"], path

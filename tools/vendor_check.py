@@ -1,0 +1,341 @@
+r"""Independent check of an axis by the part vendors' own selection procedures (issue 38, done-when item 2).
+
+Usage::
+
+    python tools/vendor_check.py problems/teaching_problem.yaml      # solves it, then checks the optimum
+    python tools/vendor_check.py problems/vmc_x_design.yaml          # checks a design as it is
+    python tools/vendor_check.py P.yaml --json out.json              # the rows as JSON too
+
+Written apart from axisopt's physics on purpose: nothing here imports ``axisopt``.  axisopt is called only as
+a program (``python -m axisopt solve|evaluate ... --json``); the design's keys are read from its YAML, the
+chosen parts' rows straight from ``catalogs/*.csv`` (units from the headers), and every number is recomputed
+here by the vendor's printed procedure (the source of each is in its function's docstring and in the
+printed table).  For each check the table shows the vendor's value and limit, the vendor's margin with
+PASS/FAIL by the vendor's criterion, axisopt's margin and their ratio; ``AGREE`` where both use the same
+method and agree within :data:`TOLERANCE`, ``DIFF`` where they differ by more, ``CONV`` where the two use
+different conventions on purpose (the note says which; docs/validation.md lists them).
+
+Vendor texts (git mirror ArtemFilin1990/Mar, see /work/research/38_conventions.md for the paths):
+T-GC THK General Catalog (ball screw A15, LM guide A1); H-BS HIWIN Ballscrews BS-08-2-EN-1704-K; H-LG HIWIN
+Linear Guideway G99TE20-1808; NSK-SP NSK super-precision bearings; IBC TI-I-5010.2/E; IKO CAT-1578E.
+
+Estimates of this checker (no vendor figure; printed in the notes): the screw axis at the rail mounting plane
+under the table centre (the block loads); the cross and normal cutting components scale with a phase's feed
+force; screw length for the inertia = bearing span (journals not known); trapezoidal moves (jerk ignored).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import re
+import subprocess
+import sys
+import tempfile
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+import yaml
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import vendor_procedures as vp  # noqa: E402  (this checker's own formulas, no axisopt)
+from vendor_procedures import UNITS, Row, quantity  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+TOLERANCE = 0.02  # agreement of vendor and axisopt margins where both use the same method
+AXISOPT_LOAD_FACTOR = 1.2  # axisopt's documented default fw (docs/files.md), for the same-basis comparison
+G = 9.80665
+
+
+def catalog_row(kind: str, part) -> dict:
+    """A part's row from catalogs/<kind>.csv in SI (units from the headers), or an inline mapping."""
+    if isinstance(part, dict):
+        return {k: (quantity(v) if not isinstance(v, str) or re.match(r"^[-0-9.]", v) else v)
+                for k, v in part.items()}
+    with open(ROOT / "catalogs" / f"{kind}.csv", newline="", encoding="utf-8") as fh:
+        for row in csv.DictReader(fh):
+            if row["id"] != part:
+                continue
+            out = {}
+            for head, text in row.items():
+                m = re.fullmatch(r"(\w+) \[(.+)\]", head)
+                name, unit = (m.group(1), m.group(2)) if m else (head, None)
+                out[name] = (float(text) * UNITS[unit] if text else None) if unit else text
+            return out
+    raise KeyError(f"{part} not in catalogs/{kind}.csv")
+
+
+# --- axisopt as a program -------------------------------------------------------------------------------------
+def run_axisopt(path: Path, workdir: Path) -> tuple[Path, dict]:
+    """Solve a problem (saving its optimum as a design) or take a design; evaluate it.  Returns the design file
+    and the evaluate JSON."""
+    text = path.read_text(encoding="utf-8")
+    design = path
+    cmd = [sys.executable, "-m", "axisopt"]
+    if re.search(r"^objective:", text, re.M):
+        design = workdir / "optimum.yaml"
+        subprocess.run(cmd + ["solve", str(path), "--no-sensitivity", "--save-design", str(design)],
+                       check=True, capture_output=True, text=True)
+    out = workdir / "evaluate.json"
+    subprocess.run(cmd + ["evaluate", str(design), "--json", str(out)], check=True, capture_output=True,
+                   text=True)
+    return design, json.loads(out.read_text(encoding="utf-8"))
+
+
+# --- the axis as the vendor's procedure needs it ------------------------------------------------------------
+@dataclass
+class Axis:
+    stroke: float
+    start: float
+    span: float
+    mounting: str
+    vertical: bool
+    wall: bool
+    v_max: float
+    a_max: float
+    axial_load: float
+    mean_load: float
+    mean_speed: float
+    life_h: float
+    load_factor: float | None
+    blocks: int
+    normal: float
+    cross: float
+    h_tool: float
+    y_tool: float
+    h_cg: float
+    y_cg: float
+    block_spacing: float
+    rail_spacing: float
+    rails: int
+    housing_k: float | None
+    bracket_k: float | None
+    temp_rise: float | None
+    ratio: float
+    red_eff: float
+    red_inertia: float
+    max_inertia_ratio: float
+    brake: str
+    duty: list
+    table_mass: float
+
+
+def read_axis(design: dict) -> Axis:
+    """The design's axis keys, with the defaults docs/files.md states for those not given."""
+    a = design["axis"]
+
+    def q(key, default=None):
+        return quantity(a[key]) if key in a else default
+
+    stroke, table_len = q("stroke"), q("table_length", 0.5)
+    start = q("start_offset", 0.130)
+    width = q("table_width", table_len)
+    axial = q("axial_load")
+    return Axis(
+        stroke=stroke, start=start, span=start + stroke + q("end_margin", 0.150), mounting=a["mounting"],
+        vertical=a.get("orientation") == "vertical", wall=a.get("orientation") == "wall",
+        v_max=q("max_speed"), a_max=q("acceleration", 0.0), axial_load=axial,
+        mean_load=q("mean_axial_load", axial / 3.0), mean_speed=q("mean_speed", q("max_speed") / 2.0),
+        life_h=q("required_life", 20000 * 3600.0) / 3600.0,
+        load_factor=float(a["load_factor"]) if "load_factor" in a else None,
+        blocks=int(a.get("guide_blocks", 4)), normal=q("normal_load", 0.0), cross=q("cross_load", 0.0),
+        h_tool=q("tool_height", 0.4 * table_len), y_tool=q("tool_offset", 0.0), h_cg=q("cg_height", 0.2 * table_len),
+        y_cg=q("cg_offset", 0.0), block_spacing=q("block_spacing", 0.6 * table_len),
+        rail_spacing=q("rail_spacing", 0.6 * width), rails=int(a.get("rails", 2)),
+        housing_k=q("bearing_housing_stiffness"), bracket_k=q("nut_bracket_stiffness"),
+        temp_rise=q("temperature_rise") if "temperature_rise" in a else None,
+        ratio=float(a.get("reduction_ratio", 1.0)), red_eff=float(a.get("reduction_efficiency", 1.0)),
+        red_inertia=q("reduction_inertia", 0.0), max_inertia_ratio=float(a.get("max_inertia_ratio", 5.0)),
+        brake=str(a.get("brake", "auto")), duty=list(a.get("duty_cycle") or []), table_mass=q("moving_mass"))
+
+
+def compare(vendor, theirs, same_method=True) -> str:
+    if theirs is None or vendor is None:
+        return "INFO"
+    if not same_method:
+        return "CONV"
+    return "AGREE" if abs(vendor / theirs - 1.0) <= TOLERANCE else "DIFF"
+
+
+def check_design(design: dict, ev: dict) -> list[Row]:
+    """Every vendor check of one evaluated design."""
+    ax = read_axis(design)
+    parts = design["parts"]
+    screw, nut = catalog_row("screws", parts["screw"]), catalog_row("nuts", parts["nut"])
+    brg, guide = catalog_row("bearings", parts["bearing"]), catalog_row("guides", parts["guide"])
+    motor = catalog_row("motors", parts["motor"]) if "motor" in parts else None
+    coupling = catalog_row("couplings", parts["coupling"]) if "coupling" in parts else None
+    preload = quantity(parts["nut_preload"]) if "nut_preload" in parts else ev["nut_preload_N"]
+    chk = ev["checks"]
+    rows: list[Row] = []
+
+    def theirs(name, field="available", scale=1.0):
+        c = chk.get(name)
+        return None if c is None or c.get(field) is None else c[field] * scale
+
+    def their_margin(name):
+        c = chk.get(name)
+        return None if c is None else c["margin"]
+
+    # masses and loads (THK A-725: Fa = mu m g + f + m alpha, + m g on a vertical axis, A-739)
+    moving = ax.table_mass + nut["mass"] + ax.blocks * guide["block_mass"]
+    on_rails = 0.0 if (ax.vertical or ax.wall) else moving * G
+    friction = guide["friction_coefficient"] * (on_rails + ax.normal) + ax.blocks * guide["friction_force"]
+    weight = moving * G if ax.vertical else 0.0
+    phases, cycle_given = vp.duty_phases(ax, moving, friction, weight)
+    a_peak = max([ax.a_max] + [abs(p.acc) for p in phases])
+    f_max = ax.axial_load + moving * a_peak + friction + weight
+    lead, d1, d0 = screw["lead"] * 1e3, screw["root_diameter"] * 1e3, screw["nominal_diameter"] * 1e3
+    n_max = ax.v_max * 60.0 / (lead * 1e-3)                           # [rpm]
+    svendor = screw["vendor"]
+    ff = ax.mounting == "fixed-fixed"
+    x_far = (ax.start + ax.stroke) * 1e3
+    span = ax.span * 1e3
+
+    # 1 permissible rotational speed (critical speed, mounting factor) and DN
+    n1, src = vp.critical_speed(svendor, d1, span, ax.mounting)
+    rows.append(Row("critical speed", "rpm", n1, n_max, n1 / n_max, theirs("critical_speed"),
+                    their_margin("critical_speed"), "", src, f"l_b = bearing span {span:.0f} mm"))
+    dn_lim, dn, src, note = vp.dn_check(svendor, d0, d1, screw["ball_diameter"] * 1e3, n_max, screw["dn_limit"])
+    rows.append(Row("DN value", "mm.rpm", dn_lim, dn, dn_lim / dn, theirs("dn"), their_margin("dn"), "", src, note))
+    # 2 buckling and 3 permissible tensile/compressive load (147 MPa)
+    la = max(x_far, span - ax.start * 1e3) if ff else x_far
+    p1, src = vp.buckling_load(svendor, d1, la)
+    rows.append(Row("buckling", "kN", p1 / 1e3, f_max / 1e3, p1 / f_max, theirs("buckling"), their_margin("buckling"),
+                    "", src, f"l_a = thrust bearing to nut at the far end {la:.0f} mm, nut as fixed end (THK A-726);"
+                    " load: feed force + m a + friction (+ weight)"))
+    pre_vendor = vp.thermal_pretension(d1, ax.temp_rise, svendor) if ff else 0.0
+    p2 = vp.permissible_tension(d1)
+    tension = f_max + pre_vendor
+    rows.append(Row("tensile/compressive load", "kN", p2 / 1e3, tension / 1e3, p2 / tension, theirs("screw_yield"),
+                    their_margin("screw_yield"), "", "T-GC A-694 eq. 7: P2 = 116 d1^2 (147 MPa)",
+                    "max axial force" + (" + thermal pretension" if ff else "")))
+    if ff:
+        rows.append(Row("thermal pretension", "kN", pre_vendor / 1e3, None, None, ev.get("pretension_N", 0.0) / 1e3,
+                        None, "", "T-GC A-715 eq. 38, H-BS F 3.36 (alpha) x E A: stretch for a "
+                        f"{ax.temp_rise or vp.DESIGN_RISE:.0f} K rise", "axis.temperature_rise if given, else 3 K"))
+    # 4 nut: static safety, lift-off, preload ceiling, L10 life
+    fs_nut = vp.NUT_STATIC_SAFETY
+    rows.append(Row("nut static safety C0a/Famax", "-", nut["static_load_rating"] / f_max, fs_nut,
+                    nut["static_load_rating"] / f_max / fs_nut, ev.get("nut_static_safety"), None, "",
+                    "T-GC A-703 Table 18 (machine tool, vibration/impact: 2.5-7), H-BS F 3.3",
+                    f"criterion f_S >= {fs_nut} (vendor's lower bound; axisopt's default 5)"))
+    double = nut["type"] == "double"
+    if double:
+        lift = 2 ** 1.5 * preload
+        rows.append(Row("nut lift-off", "kN", lift / 1e3, f_max / 1e3, lift / f_max, theirs("nut_lift_off"),
+                        their_margin("nut_lift_off"), "", "H-BS F 3.6 / T-GC A-687: F_lim = 2^(3/2) F_pr"))
+        ceiling = 0.1 * nut["dynamic_load_rating"]
+        rows.append(Row("nut preload ceiling", "kN", ceiling / 1e3, preload / 1e3, ceiling / preload,
+                        theirs("nut_preload"), their_margin("nut_preload"), "", "T-GC A-687, H-BS F 3.5: <= 10 % Ca"))
+    nm = vp.mean_speed_rpm(phases, lead) if cycle_given else ax.mean_speed * 60 / (lead * 1e-3)
+    fw_nut, fw_src = vp.nut_load_factor(nut["vendor"], ax.v_max, ax.load_factor)
+    life, src = vp.nut_life_h(nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_nut, nm)
+    fw_ax = ax.load_factor if ax.load_factor is not None else AXISOPT_LOAD_FACTOR
+    life_ax = vp.nut_life_h(nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_ax, nm)[0]
+    rows.append(Row("nut L10 life", "h", life, ax.life_h, life / ax.life_h, theirs("nut_life"),
+                    their_margin("nut_life"), "", src, f"{fw_src}; mean speed {nm:.0f} rpm"
+                    + ("" if cycle_given else "; loads: axis.mean_axial_load + friction each way")
+                    + f"; at axisopt's fw {fw_ax}: {life_ax:,.0f} h", same_basis=life_ax))
+    # 5 support bearings: life per direction by the rows carrying it, static safety
+    n_sets = 2 if ff else 1
+    blife, src, bnote = vp.bearing_life_h(brg, phases, pre_vendor, nm)
+    b_ax = vp.bearing_life_h(brg, phases, pre_vendor, nm, fw_ax)[0]
+    bnote += f"; with axisopt's fw {fw_ax} on the loads: {b_ax:,.0f} h"
+    rows.append(Row("support bearing L10 life", "h", blife, ax.life_h, blife / ax.life_h, theirs("bearing_life"),
+                    their_margin("bearing_life"), "", src, bnote))
+    perm, src = vp.bearing_permissible_load(brg)
+    load_b = f_max + pre_vendor
+    rows.append(Row("support bearing static", "kN", perm / 1e3, load_b / 1e3, perm / load_b,
+                    theirs("bearing_static"), their_margin("bearing_static"), "", src,
+                    "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")))
+    # 6 guides: static safety and travel life at the vendor's rating distance
+    blocks = vp.block_loads_max(ax, moving, a_peak)
+    fs_g, src = vp.guide_static_safety(guide["vendor"], guide["type"])
+    rows.append(Row("guide static safety C0/P", "-", guide["static_load_rating"] / blocks, fs_g,
+                    guide["static_load_rating"] / blocks / fs_g, ev.get("guide_static_safety"), None, "", src,
+                    f"largest block load {blocks / 1e3:.2f} kN (axisopt "
+                    f"{ev.get('guide_max_block_load_N', float('nan')) / 1e3:.2f} kN)"))
+    travel_speed = vp.mean_travel_speed(phases) if cycle_given else ax.mean_speed
+    need_km = ax.life_h * 3600 * travel_speed / 1e3
+    g_km, src, gnote = vp.guide_life_km(guide, ax, phases, cycle_given, moving)
+    g_ax = vp.guide_life_km(guide, ax, phases, cycle_given, moving, fw_ax)[0]
+    rows.append(Row("guide L10 travel", "km", g_km, need_km, g_km / need_km, theirs("guide_life"),
+                    their_margin("guide_life"), "", src, gnote + f"; at axisopt's fw {fw_ax}: {g_ax:,.0f} km",
+                    same_basis=g_ax))
+    # 7 axial rigidity of the feed system (THK A-707 eq. 32)
+    k_v, src, knote = vp.feed_rigidity(ax, screw, nut, brg, preload, f_max)
+    chain = ev.get("chain_at_minimum_N_per_um", {})
+    k_them = None
+    if chain:
+        parts_k = [v for k, v in chain.items() if k not in ("screw torsion", "coupling") and v != "rigid"]
+        k_them = 1.0 / sum(1.0 / v for v in parts_k)
+    rows.append(Row("axial rigidity (screw, nut, bearing, K_H)", "N/um", k_v, None, None, k_them, None, "", src,
+                    knote))
+    # 8 drive: inertia ratio, RMS torque, holding torque
+    if motor is not None:
+        rows += vp.drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, phases, preload,
+                              n_sets, ev, cycle_given)
+    for r in rows:
+        same = not any(r.check.startswith(c) for c in vp.CONVENTIONS)
+        if r.same_basis is not None:
+            r.kind = compare(r.same_basis, r.axisopt, same)
+            continue
+        r.kind = compare(r.margin if r.margin is not None and r.axis_margin is not None else r.vendor,
+                         r.axis_margin if r.margin is not None and r.axis_margin is not None else r.axisopt, same)
+        if r.kind == "CONV":
+            r.note = (r.note + "; " if r.note else "") + "convention: " + vp.CONVENTIONS[
+                next(c for c in vp.CONVENTIONS if r.check.startswith(c))]
+    return rows
+
+
+def fmt(x) -> str:
+    if x is None:
+        return "-"
+    if isinstance(x, float) and not math.isfinite(x):
+        return "inf"
+    a = abs(x)
+    return f"{x:,.0f}" if a >= 1000 else f"{x:.3g}" if a >= 0.01 else f"{x:.2e}"
+
+
+def table(rows: list[Row]) -> str:
+    head = f"{'check':<42} {'unit':>6} {'vendor':>10} {'limit':>10} {'margin':>7} {'':4} {'axisopt':>10} " \
+           f"{'ax.marg':>7} {'ratio':>6} {'':5}"
+    lines = [head, "-" * len(head)]
+    for r in rows:
+        ratio = (r.margin / r.axis_margin if r.margin is not None and r.axis_margin
+                 else r.vendor / r.axisopt if r.axisopt else None)
+        verdict = "" if r.margin is None else ("PASS" if r.passes else "FAIL")
+        lines.append(f"{r.check:<42} {r.unit:>6} {fmt(r.vendor):>10} {fmt(r.limit):>10} {fmt(r.margin):>7} "
+                     f"{verdict:4} {fmt(r.axisopt):>10} {fmt(r.axis_margin):>7} {fmt(ratio):>6} {r.kind:5}")
+        lines.append(f"    {r.source}" + (f"  [{r.note}]" if r.note else ""))
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("file", help="problem or design YAML")
+    ap.add_argument("--json", help="write the rows as JSON")
+    args = ap.parse_args(argv)
+    with tempfile.TemporaryDirectory() as tmp:
+        design_path, ev = run_axisopt(Path(args.file), Path(tmp))
+        design = yaml.safe_load(design_path.read_text(encoding="utf-8"))
+    rows = check_design(design, ev)
+    print(f"{args.file}: design {ev['design']}, {ev['mounting']}, parts "
+          + "  ".join(f"{k} {v}" for k, v in ev["parts"].items()))
+    print(table(rows))
+    fails = [r.check for r in rows if not r.passes]
+    diffs = [r.check for r in rows if r.kind == "DIFF"]
+    print(f"vendor criterion: {'all pass' if not fails else 'FAIL ' + ', '.join(fails)};  "
+          f"disagreements > {TOLERANCE:.0%} (same method): {', '.join(diffs) or 'none'}")
+    if args.json:
+        Path(args.json).write_text(json.dumps([asdict(r) | {"passes": r.passes} for r in rows], indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    np.seterr(all="raise")
+    raise SystemExit(main())
