@@ -2,12 +2,11 @@
 evaluate cannot represent, validation of a calibration file."""
 
 import json
-import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 import yaml
+from identify_helpers import DESIGN, dataset_csv, write
 from test_diagnose_recovery import BASELINE, friction_doe
 
 from axisopt.cli import main
@@ -16,18 +15,6 @@ from axisopt.errors import InputError
 from axisopt.identify import diagnose, plant_from_design
 from axisopt.identify.calibration import apply_calibration
 from axisopt.identify.synth import simulate
-
-DATA = Path(__file__).resolve().parents[2] / "problems" / "data"
-
-
-DESIGN = DATA / "table_x.yaml"
-
-
-def write(tmp_path, text, name="d.csv"):
-    p = tmp_path / name
-    p.write_text(text)
-    return p
-
 
 GOOD_CAL = """axisopt_calibration: 1
 design: {design}
@@ -38,29 +25,6 @@ effects:
     parameters:
       far_end_stiffness: {{value: 900 N/um, kind: stiffness}}
 """
-
-
-@pytest.fixture(scope="module")
-def plant():
-    return plant_from_design(load_design(DESIGN))
-
-
-def _csv(ds, path, torque_lead=None, efficiency=None):
-    cols = dict(ds.columns)
-    head, data = [], []
-    units = {"position": ("mm", 1e3), "force": ("N", 1.0), "displacement": ("um", 1e6), "direction": ("", 1.0),
-             "velocity": ("mm/s", 1e3), "normal_load": ("N", 1.0), "friction_force": ("N", 1.0),
-             "frequency": ("Hz", 1.0)}
-    if torque_lead is not None:  # the same friction measured as screw torque: T = F l / (2 pi eta)
-        cols["drag_torque"] = cols.pop("friction_force") * torque_lead / (2 * math.pi * efficiency)
-        units["drag_torque"] = ("N.m", 1.0)
-    for k, v in cols.items():
-        u, f = units[k]
-        head.append(f"{k} [{u}]" if u else k)
-        data.append(np.asarray(v) * f)
-    rows = [",".join(head)] + [",".join(f"{x:.9g}" for x in r) for r in zip(*data)]
-    path.write_text("\n".join(rows) + "\n", encoding="utf-8")
-    return path
 
 
 def test_calibration_lists_what_evaluate_cannot_represent(tmp_path):
@@ -152,7 +116,7 @@ def test_verdict_numbers_are_the_saved_calibration(plant, tmp_path, capsys):
     ds = simulate(plant, "friction", friction_doe(), baseline=BASELINE["friction"], noise=0.01, seed=7,
                   effects={"stribeck": {"stribeck_rise": 200.0, "stribeck_velocity": 2e-3},
                            "load_dependent_friction": {"friction_coefficient": 0.005}})
-    data = _csv(ds, tmp_path / "fric.csv")
+    data = dataset_csv(ds, tmp_path / "fric.csv")
     js, cal = tmp_path / "d.json", tmp_path / "cal.yaml"
     assert main(["diagnose", str(data), "--design", str(DESIGN), "--json", str(js),
                  "--save-calibration", str(cal)]) == 0

@@ -2,49 +2,14 @@
 one-line errors naming file, line and column, excluded rows, the friction sign convention."""
 
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
+from identify_helpers import DESIGN, SPEEDS, coulomb, friction_table, write
 
 from axisopt.cli import main
-from axisopt.design import load_design
 from axisopt.errors import InputError
-from axisopt.identify import plant_from_design, read_dataset
-
-DATA = Path(__file__).resolve().parents[2] / "problems" / "data"
-
-
-DESIGN = DATA / "table_x.yaml"
-
-
-def write(tmp_path, text, name="d.csv"):
-    p = tmp_path / name
-    p.write_text(text)
-    return p
-
-
-SPEEDS = np.geomspace(0.002, 0.4, 14)  # [m/s]
-
-
-@pytest.fixture(scope="module")
-def plant():
-    return plant_from_design(load_design(DESIGN))
-
-
-def coulomb(plant):
-    return plant.coulomb + plant.mu * plant.weight_on_guides  # the design's friction level at the table [N]
-
-
-def friction_table(path, law, *, speeds=SPEEDS, both=True, noise=5.0, seed=1, rep=2, magnitudes=False):
-    rng = np.random.default_rng(seed)
-    v = np.repeat(np.r_[speeds, -speeds] if both else speeds, rep)
-    f = law(v) + noise * rng.standard_normal(len(v))
-    if magnitudes:
-        f = np.abs(f)
-    rows = ["velocity [mm/s],friction_force [N]"] + [f"{a * 1e3:.6g},{b:.6g}" for a, b in zip(v, f)]
-    path.write_text("\n".join(rows) + "\n")
-    return path
+from axisopt.identify import read_dataset
 
 
 def test_units_convert_and_kind_is_detected(tmp_path):

@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
+from identify_helpers import DESIGN, coulomb, dataset_csv, friction_table
 from test_diagnose_recovery import BASELINE, frequency_doe, friction_doe
 
 from axisopt.cli import main
@@ -30,54 +31,10 @@ from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 DATA = Path(__file__).resolve().parents[2] / "problems" / "data"
 
 
-DESIGN = DATA / "table_x.yaml"
-
-
 STIFF = DATA / "table_x_stiffness.csv"
 
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-@pytest.fixture(scope="module")
-def plant():
-    return plant_from_design(load_design(DESIGN))
-
-
-def _csv(ds, path, torque_lead=None, efficiency=None):
-    cols = dict(ds.columns)
-    head, data = [], []
-    units = {"position": ("mm", 1e3), "force": ("N", 1.0), "displacement": ("um", 1e6), "direction": ("", 1.0),
-             "velocity": ("mm/s", 1e3), "normal_load": ("N", 1.0), "friction_force": ("N", 1.0),
-             "frequency": ("Hz", 1.0)}
-    if torque_lead is not None:  # the same friction measured as screw torque: T = F l / (2 pi eta)
-        cols["drag_torque"] = cols.pop("friction_force") * torque_lead / (2 * math.pi * efficiency)
-        units["drag_torque"] = ("N.m", 1.0)
-    for k, v in cols.items():
-        u, f = units[k]
-        head.append(f"{k} [{u}]" if u else k)
-        data.append(np.asarray(v) * f)
-    rows = [",".join(head)] + [",".join(f"{x:.9g}" for x in r) for r in zip(*data)]
-    path.write_text("\n".join(rows) + "\n", encoding="utf-8")
-    return path
-
-
-SPEEDS = np.geomspace(0.002, 0.4, 14)  # [m/s]
-
-
-def coulomb(plant):
-    return plant.coulomb + plant.mu * plant.weight_on_guides  # the design's friction level at the table [N]
-
-
-def friction_table(path, law, *, speeds=SPEEDS, both=True, noise=5.0, seed=1, rep=2, magnitudes=False):
-    rng = np.random.default_rng(seed)
-    v = np.repeat(np.r_[speeds, -speeds] if both else speeds, rep)
-    f = law(v) + noise * rng.standard_normal(len(v))
-    if magnitudes:
-        f = np.abs(f)
-    rows = ["velocity [mm/s],friction_force [N]"] + [f"{a * 1e3:.6g},{b:.6g}" for a, b in zip(v, f)]
-    path.write_text("\n".join(rows) + "\n")
-    return path
 
 
 def test_cli_shipped_example_end_to_end(tmp_path, capsys):
@@ -202,7 +159,7 @@ def test_torque_data_keep_their_quantity(plant, tmp_path, capsys):
     the friction findings in N.m too."""
     ds = simulate(plant, "friction", friction_doe(), baseline=BASELINE["friction"], noise=0.01, seed=9,
                   effects={"direction_asymmetry": {"direction_difference": 60.0}})
-    data = _csv(ds, tmp_path / "torque.csv", torque_lead=plant.lead, efficiency=plant.efficiency)
+    data = dataset_csv(ds, tmp_path / "torque.csv", torque_lead=plant.lead, efficiency=plant.efficiency)
     assert main(["diagnose", str(data), "--design", str(DESIGN)]) == 0
     out = capsys.readouterr().out
     assert "drag torque T fitted as table force" in out and f"efficiency eta = {plant.efficiency:g}" in out

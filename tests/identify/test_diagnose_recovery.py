@@ -6,21 +6,11 @@ is recovered within 10 % (20 % for shape parameters); held-out (grouped CV) gain
 name nothing; look-alike decoys are not confused.
 """
 
-from pathlib import Path
-
 import numpy as np
 import pytest
 
-from axisopt.design import load_design
-from axisopt.identify import diagnose, plant_from_design
+from axisopt.identify import diagnose
 from axisopt.identify.synth import simulate
-
-DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
-
-
-@pytest.fixture(scope="module")
-def plant():
-    return plant_from_design(load_design(DESIGN))
 
 
 def stiffness_doe(temperature=False, cycles=1):

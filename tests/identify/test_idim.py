@@ -5,44 +5,18 @@ The records come from :mod:`axisopt.identify.timesynth`, a closed-loop simulator
 identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 1 kHz)."""
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
+from identify_helpers import assert_timesynth_axis, baseline_truth, close, records
 
-from axisopt.design import load_design
-from axisopt.identify import plant_from_design
 from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import AxisTruth, LoopSettings, simulate_axis
-
-DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
-
-
-LEAD = 0.01
+from axisopt.identify.timesynth import AxisTruth, LoopSettings
 
 
 @pytest.fixture(scope="module")
-def plant():
-    p = plant_from_design(load_design(DESIGN))
-    assert p.lead == LEAD and p.stroke == pytest.approx(0.8)
-    return p
-
-
-def records(tmp_path, truth, loop=None, seed=0, est_s=12.0, val_s=8.0, **csv):
-    est, val = tmp_path / f"est{seed}.csv", tmp_path / f"val{seed}.csv"
-    simulate_axis(truth, loop, duration=est_s, seed=seed).write_csv(est, **csv)
-    simulate_axis(truth, loop, duration=val_s, seed=seed + 500).write_csv(val, **csv)
-    return [est, val]
-
-
-def baseline_truth(rng, **kw):
-    sign = rng.choice([-1.0, 1.0])
-    return AxisTruth(mass=rng.uniform(300, 900), viscous=rng.uniform(600, 2500), coulomb=rng.uniform(200, 600),
-                     offset=sign * rng.uniform(20, 60), **kw)
-
-
-def close(est, term, true, rel):
-    assert est.value(term) == pytest.approx(true, rel=rel), (term, est.value(term), true)
+def plant(plant):
+    return assert_timesynth_axis(plant)
 
 
 def _stribeck(rng):
@@ -90,7 +64,7 @@ def test_hidden_effect_named_first_with_its_parameter(tmp_path, plant, name, see
     rng = np.random.default_rng(seed)
     kw, loop, expect = EFFECT_CASES[name](rng)
     truth = baseline_truth(rng, **kw)
-    diag = diagnose_time_files(records(tmp_path, truth, loop, seed=seed), plant=plant)
+    diag = diagnose_time_files(records(tmp_path, truth, seed, loop=loop), plant=plant)
     assert diag.verdict and diag.verdict[0] == name, diag.verdict
     assert diag.accepted[0].gain >= 30.0
     fin = diag.final

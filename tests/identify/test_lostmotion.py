@@ -6,27 +6,17 @@ the table's position, never named on records without lost motion."""
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import numpy as np
 import pytest
+from identify_helpers import DESIGN
 
 from axisopt.cli import main
-from axisopt.design import load_design
-from axisopt.identify import plant_from_design
 from axisopt.identify.idim import diagnose_time_files
 from axisopt.identify.timesynth import AxisTruth, LoopSettings, simulate_axis
 from axisopt.report.timediag import time_diagnosis_text
 
-DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
-
-
 COLS = ("time", "position", "force", "reference", "motor_position")
-
-
-@pytest.fixture(scope="module")
-def plant():
-    return plant_from_design(load_design(DESIGN))
 
 
 def truth_for(seed, backlash, mode_hz):

@@ -1,41 +1,14 @@
 """The reduced tables' residuals (:mod:`axisopt.identify.tableresidual`): the noise floor is the noise, not
 the misfit (replicates, second differences); a drag outside the library is left unexplained with its shape."""
 
-from pathlib import Path
-
 import numpy as np
 import pytest
+from identify_helpers import coulomb, friction_table
 from test_diagnose_recovery import BASELINE, frequency_doe, friction_doe, stiffness_doe
 
-from axisopt.design import load_design
-from axisopt.identify import diagnose, plant_from_design, read_dataset
+from axisopt.identify import diagnose, read_dataset
 from axisopt.identify.synth import simulate
 from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
-
-DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
-
-
-@pytest.fixture(scope="module")
-def plant():
-    return plant_from_design(load_design(DESIGN))
-
-
-SPEEDS = np.geomspace(0.002, 0.4, 14)  # [m/s]
-
-
-def coulomb(plant):
-    return plant.coulomb + plant.mu * plant.weight_on_guides  # the design's friction level at the table [N]
-
-
-def friction_table(path, law, *, speeds=SPEEDS, both=True, noise=5.0, seed=1, rep=2, magnitudes=False):
-    rng = np.random.default_rng(seed)
-    v = np.repeat(np.r_[speeds, -speeds] if both else speeds, rep)
-    f = law(v) + noise * rng.standard_normal(len(v))
-    if magnitudes:
-        f = np.abs(f)
-    rows = ["velocity [mm/s],friction_force [N]"] + [f"{a * 1e3:.6g},{b:.6g}" for a, b in zip(v, f)]
-    path.write_text("\n".join(rows) + "\n")
-    return path
 
 
 @pytest.mark.parametrize(("kind", "doe", "effect", "values"), [

@@ -7,36 +7,20 @@ identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 
 
 import json
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
+from identify_helpers import DESIGN, LEAD, assert_timesynth_axis, records, truth_for
 
 from axisopt.cli import main
-from axisopt.design import load_design
 from axisopt.errors import InputError
-from axisopt.identify import plant_from_design
 from axisopt.identify.idim import diagnose_time_files
 from axisopt.identify.timesynth import AxisTruth, simulate_axis
 
-DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
-
-
-LEAD = 0.01
-
 
 @pytest.fixture(scope="module")
-def plant():
-    p = plant_from_design(load_design(DESIGN))
-    assert p.lead == LEAD and p.stroke == pytest.approx(0.8)
-    return p
-
-
-def records(tmp_path, truth, loop=None, seed=0, est_s=12.0, val_s=8.0, **csv):
-    est, val = tmp_path / f"est{seed}.csv", tmp_path / f"val{seed}.csv"
-    simulate_axis(truth, loop, duration=est_s, seed=seed).write_csv(est, **csv)
-    simulate_axis(truth, loop, duration=val_s, seed=seed + 500).write_csv(val, **csv)
-    return [est, val]
+def plant(plant):
+    return assert_timesynth_axis(plant)
 
 
 # ------------------------------------------------------------------------------------------- bad input
@@ -55,13 +39,6 @@ def _edit(p, line, text):
     lines[line - 1] = text
     p.write_text("\n".join(lines) + "\n")
     return p
-
-
-def truth_for(seed, **kw):
-    rng = np.random.default_rng(seed)
-    sign = rng.choice([-1.0, 1.0])
-    return AxisTruth(mass=rng.uniform(300, 900), viscous=rng.uniform(600, 2500), coulomb=rng.uniform(200, 600),
-                     offset=sign * rng.uniform(20, 60), **kw)
 
 
 def _rewrite(src, dst, header=None, cell=None):

@@ -6,48 +6,15 @@ tests are quiet on white noise.
 The records come from :mod:`axisopt.identify.timesynth`, the closed-loop simulator written apart from the
 identification."""
 
-from pathlib import Path
-
-import numpy as np
 import pytest
+from identify_helpers import LEAD, records, truth_for, unexplained
 
-from axisopt.design import load_design
-from axisopt.identify import plant_from_design
 from axisopt.identify.idim import diagnose_time_files
 from axisopt.identify.timeresidual import analyse_residual
 from axisopt.identify.timesynth import AxisTruth, simulate_axis
-from axisopt.report.timediag import time_diagnosis_dict, time_diagnosis_text
-
-DESIGN = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
-
-
-LEAD = 0.01
-
+from axisopt.report.timediag import time_diagnosis_text
 
 LIBRARY_BEFORE = ["stribeck", "direction_asymmetry", "position_friction", "extra_mode"]
-
-
-@pytest.fixture(scope="module")
-def plant():
-    return plant_from_design(load_design(DESIGN))
-
-
-def truth_for(seed, **kw):
-    rng = np.random.default_rng(seed)
-    sign = rng.choice([-1.0, 1.0])
-    return AxisTruth(mass=rng.uniform(300, 900), viscous=rng.uniform(600, 2500), coulomb=rng.uniform(200, 600),
-                     offset=sign * rng.uniform(20, 60), **kw)
-
-
-def records(tmp_path, truth, seed, **csv):
-    est, val = tmp_path / f"est{seed}.csv", tmp_path / f"val{seed}.csv"
-    simulate_axis(truth, duration=12.0, seed=seed).write_csv(est, **csv)
-    simulate_axis(truth, duration=8.0, seed=seed + 500).write_csv(val, **csv)
-    return [est, val]
-
-
-def unexplained(diag):
-    return time_diagnosis_dict(diag)["unexplained"]
 
 
 # ------------------------------------------------------------------------------------- the unexplained verdict
