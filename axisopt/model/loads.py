@@ -46,9 +46,11 @@ def guide_friction(p, table_mass, speed):
     return n_block, f
 
 
-def life_loads(p, moving, f_guides) -> tuple[list, list]:
-    """Signed axial load on the nut in each phase that travels [N] (+ along the axis's positive direction, up
-    on a vertical axis) and the travel under it [m], for the life checks (physics.life).
+def life_rows(p, moving, f_guides) -> list[dict]:
+    """The life checks' load cases, one per duty-cycle phase group that travels: ``load`` the signed axial load on
+    the nut [N] (+ along the axis's positive direction, up on a vertical axis), ``travel`` the travel under it [m],
+    and what makes the load: ``direction`` (+1/-1), ``acceleration`` (the phases' mean) [m/s^2], ``mass`` the
+    moving mass [kg], ``friction`` the guide friction [N], ``process`` the process force [N] and ``weight`` [N].
 
     A duty cycle of the user's: per phase, with the phase's moving mass m (an entry's own ``moving_mass``, a
     workpiece loaded or unloaded, else the axis's), the inertia force at the phase's mean acceleration, the
@@ -57,8 +59,7 @@ def life_loads(p, moving, f_guides) -> tuple[list, list]:
     travel, and the weight.
     """
     phases = p.get("duty", ())
-    weight = p["gravity_axial"] * moving * G
-    loads, travels = [], []
+    rows = []
     if getattr(phases, "given", False):
         for (force, _, mean_acc, direction, mass), dist in phase_groups(tuple(phases)):
             if dist <= 0.0 or not direction:
@@ -66,12 +67,23 @@ def life_loads(p, moving, f_guides) -> tuple[list, list]:
             m = phase_moving_mass(p, moving, mass)
             f_fric = f_guides if mass is None else guide_friction(p, mass, p["max_speed"])[1]
             f_proc = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
-            loads.append(m * mean_acc + direction * (f_fric + f_proc) + p["gravity_axial"] * m * G)
-            travels.append(dist)
-    if not travels:
-        f = p["mean_axial_load"] + f_guides
-        loads, travels = [f + weight, -f + weight], [0.5, 0.5]
-    return loads, travels
+            weight = p["gravity_axial"] * m * G
+            rows.append({"load": m * mean_acc + direction * (f_fric + f_proc) + weight, "travel": dist,
+                         "direction": direction, "acceleration": mean_acc, "mass": m, "friction": f_fric,
+                         "process": f_proc, "weight": weight})
+    if not rows:
+        weight = p["gravity_axial"] * moving * G
+        for direction in (1.0, -1.0):
+            rows.append({"load": direction * (p["mean_axial_load"] + f_guides) + weight, "travel": 0.5,
+                         "direction": direction, "acceleration": 0.0, "mass": moving, "friction": f_guides,
+                         "process": p["mean_axial_load"], "weight": weight})
+    return rows
+
+
+def life_loads(p, moving, f_guides) -> tuple[list, list]:
+    """The signed axial loads [N] and travels [m] of :func:`life_rows`, for the life checks (physics.life)."""
+    rows = life_rows(p, moving, f_guides)
+    return [r["load"] for r in rows], [r["travel"] for r in rows]
 
 
 def masses(p) -> dict:

@@ -13,6 +13,7 @@ from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F40
 from ..model.limits import CHECK_TABLE
 from ..model.servo import servo_response
 from ..units import N_PER_UM
+from .lifeloads import life_dict, life_lines
 from .servo import servo_dict, servo_lines
 
 RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
@@ -97,6 +98,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "checks": {r["check"]: {k: x for k, x in r.items() if k not in ("check", "label")} | {"label": r["label"]}
                    for r in check_rows(ev)},
         "drive": drive_dict(ev),
+        "life_loads": life_dict(ev),
         "all_checks_pass": bool(all(passes(v[f"margin_{c}"]) for c in CHECKS)),
         "positions_mm": (s * 1e3).tolist(),
         "axial_stiffness_N_per_um": (np.asarray(v["k_total"]) / N_PER_UM).tolist(),
@@ -213,6 +215,8 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.append("")
     lines.extend(drive_lines(ev))
     lines.extend(servo_lines(servo_response(ev)))
+    lines.extend(life_lines(ev))
+    lines.append("")
     lines.extend(check_lines(ev))
     lines.extend(estimate_lines(ev))
     return "\n".join(lines)
