@@ -66,9 +66,12 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation (default: the "
                                 "heat balance of the duty cycle when the axis has one, else 3 K)", zero=True,
                            maximum=(100.0, "100 K")),
-    "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs temperature_rise)",
+    "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs pretension_rise)",
                       options=(Key("choice", choices=("auto",)),
                                Key("quantity", kind="force", non_negative=True))),
+    "pretension_rise": _axis_q("temperature_difference", "design temperature rise the auto pretension of a "
+                               "fixed-fixed screw absorbs, E A alpha dT (default 3 K: THK A-715 plans for 2-5 degC; "
+                               "HIWIN-style guidance about 3 degC)", zero=True, maximum=(10.0, "10 K")),
     "orientation": Key("choice", "axis orientation", choices=ORIENTATIONS, default="horizontal"),
     "positions": Key("number", "nut positions evaluated over the stroke", integer=True, minimum=3,
                      maximum=2001),
