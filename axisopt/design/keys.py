@@ -89,8 +89,9 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                  options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
     "brake_safety": Key("number", "brake holding torque / gravity torque", positive=True, minimum=1.0,
                         maximum=10.0),
-    "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw surface for the heat balance "
-                             "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4)"),
+    "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw shaft for the heat balance "
+                             "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4, over the "
+                             "cycle, with free convection)"),
     "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
                             "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
                             maximum=1.0),
