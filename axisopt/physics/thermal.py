@@ -197,8 +197,10 @@ def screw_heat_network(nut_power, bearing_power, film, nominal_diameter, root_di
     Nodes and paths (theta: rise over ambient):
 
     * the nut's friction power P_n enters the nut and the shaft under it, taken at one temperature (the
-      balls' contact conductance is large: Jungnickel's contact model, Thermca ``ball_screw.cont_cond``); it
-      leaves through the nut bracket into the table, ``nut_conductance`` G_n, and into the shaft;
+      balls' contact conductance taken as infinite, Jungnickel models it finite, Thermca
+      ``ball_screw.cont_cond``: a finite one keeps the nut warmer and sends more of P_n into the table, so the
+      shaft's rise here is an upper estimate); it leaves through the nut bracket into the table,
+      ``nut_conductance`` G_n, and into the shaft;
     * the shaft spreads it along its span (uniformly: the nut sweeps the stroke) and loses it by convection,
       ``film`` alpha over pi d L, and by conduction along the shaft into its ends (:func:`shaft_end_fraction`);
     * each held end leads through the support bearing, ``end_conductance`` G_e, into its housing; the

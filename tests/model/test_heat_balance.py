@@ -134,3 +134,13 @@ def test_auto_pretension_absorbs_the_design_rise(tmp_path, capsys):
     capsys.readouterr()
     assert list(edits.values()) == [pytest.approx(6860, abs=10), pytest.approx(6860 * 2 / 3, abs=7),
                                     pytest.approx(5000.0)]
+
+
+@pytest.mark.published
+def test_default_design_rise_lies_in_thks_target_travel_range():
+    # THK A-715: "set a negative target value for the reference travel distance assuming a temperature increase
+    # of 2 to 5 degC (-0.02 mm to -0.06 mm/m)"; the default design rise stretches the shaft by 0.035 mm/m
+    from axisopt.design import PRETENSION_RISE
+
+    assert 0.02e-3 <= pt.thermal_growth(1.0, PRETENSION_RISE) <= 0.06e-3
+    assert pt.thermal_growth(1.0, PRETENSION_RISE) == pytest.approx(0.0348e-3, abs=0.00005e-3)
