@@ -54,7 +54,7 @@ def test_thk_a821_heat_generation_test_without_seal():
     """THK A-821: the shaft centre rose 8.9 K without seal (12.2 K with the wiper ring, whose friction the model
     does not count) after 90 min.  The network gives 10.2 K at a 1.30 m span; tolerance +-30 %: the preload drag
     torque alone scatters +-30 % (THK A-689, C3-C5 torque fluctuation) and the conductances are estimates.
-    The convection-only balance this replaced gave 24.8 K."""
+    The convection-only balance this replaced gave 24.9 K."""
     p, preload = _a821()
     heat = heat_balance(p, preload)
     assert float(heat["cycle_mean_screw_speed"]) * 60 / (2 * math.pi) == pytest.approx(949, abs=1)  # 1 m in 1.975 s
@@ -68,7 +68,7 @@ def test_thk_a821_heat_generation_test_without_seal():
 def test_thk_a671_heat_generation_example_stays_on_its_scale(span):
     """THK A-671 Fig. 9 draws the screw-shaft temperature of the 40x10 double nut at 2700 N on a 20-30 degC scale
     over 180 min: a rise under 10 K.  The shaft length is not printed: every plausible span 0.6-1.5 m for a
-    0.35 m stroke stays under it (5.3-5.9 K); the convection-only balance this replaced gave 33 K at 0.8 m.
+    0.35 m stroke stays under it (5.3-5.9 K); the convection-only balance this replaced gave 18-42 K.
     The curve rises visibly on a 10 K scale: the rise is taken as above 2 K (our reading of the figure)."""
     p, preload = _a671(span)
     heat = heat_balance(p, preload)
