@@ -24,6 +24,7 @@ from .axis import (
     NUT_STATIC_SAFETY,
     ORIENTATIONS,
     PART_SLOTS,
+    PRETENSION_RISE,
     RMS_TORQUE_RATIO,
     SPACING_SHARE,
     TEMPERATURE_RISE,
@@ -59,7 +60,7 @@ __all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_part
            # besides: the defaults, the YAML key tables, the other readers and the writer
            "BRAKE_MODES", "BRAKE_SAFETY", "CG_HEIGHT_SHARE", "COUPLING_INERTIA", "COUPLING_STIFFNESS",
            "GUIDE_STATIC_SAFETY", "MAX_INERTIA_RATIO", "NUT_STATIC_SAFETY", "ORIENTATIONS", "PART_SLOTS",
-           "RMS_TORQUE_RATIO", "SPACING_SHARE", "TEMPERATURE_RISE", "TOOL_HEIGHT_SHARE",
+           "PRETENSION_RISE", "RMS_TORQUE_RATIO", "SPACING_SHARE", "TEMPERATURE_RISE", "TOOL_HEIGHT_SHARE",
            "AXIS_SPEC", "CATALOGS_KEY", "DESCRIPTION_KEY", "DESIGN_SPEC", "DWELL_SPEC", "MOVE_SPEC", "NAME_KEY",
            "PART_SPECS", "PARTS_SPEC", "catalog_for", "fitting_nuts", "inline_part", "read_duty_cycle", "read_part",
            "design_to_dict", "design_to_yaml"]

@@ -19,9 +19,15 @@ MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
 # Coupling: RINGFEDER GWB AKN size 60 metal-bellows coupling (Tech Paper EN 08.2019): 75e3 N.m/rad,
 # 0.29e-3 kg.m^2, 75 N.m, a mid-size feed-drive coupling (our pick of size).
 # Temperature rise: THK A-715 sets the negative target travel for a 2-5 degC rise; 3 K is used.
+# Pretension of a fixed-fixed screw: the force that absorbs a stated design rise, not the heat balance's whole rise:
+# THK A-715 "set a negative target value for the reference travel distance assuming a temperature increase of 2 to
+# 5 degC (-0.02 mm to -0.06 mm/m)"; the HIWIN-style guidance of Guangyang (gyballscrew.com, "The influence of ball
+# screw pretension") "a temperature rise of about 3 degC as the reference for the compensation value T", under
+# 5 degC.  3 K is used.
 COUPLING_STIFFNESS = 75e3
 COUPLING_INERTIA = 0.29e-3
 TEMPERATURE_RISE = 3.0
+PRETENSION_RISE = 3.0
 # horizontal: gravity presses the table onto the rails; vertical: gravity acts along the rail (on the screw);
 # wall: the rails on a vertical wall, the feed horizontal, gravity across the rails (a lateral block load)
 ORIENTATIONS = ("horizontal", "vertical", "wall")
@@ -80,7 +86,8 @@ class Axis:
     # screw temperature rise in operation [K]; None: the heat balance of the duty cycle (model.heat) when the axis
     # has one, TEMPERATURE_RISE otherwise
     temperature_rise: float | None = None
-    pretension: float | None = None  # fixed-fixed screw pretension [N]; None: absorbs temperature_rise
+    pretension: float | None = None  # fixed-fixed screw pretension [N]; None: absorbs pretension_rise
+    pretension_rise: float | None = None  # design rise the auto pretension absorbs [K]; None: PRETENSION_RISE
     orientation: str = "horizontal"
     positions: int = 41  # nut positions evaluated over the stroke
     # drive: motion and duty, reduction, drive limits

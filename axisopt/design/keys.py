@@ -74,9 +74,12 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation (default: the "
                                 "heat balance of the duty cycle when the axis has one, else 3 K)", zero=True,
                            maximum=(100.0, "100 K")),
-    "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs temperature_rise)",
+    "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs pretension_rise)",
                       options=(Key("choice", choices=("auto",)),
                                Key("quantity", kind="force", non_negative=True))),
+    "pretension_rise": _axis_q("temperature_difference", "design temperature rise the auto pretension of a "
+                               "fixed-fixed screw absorbs, E A alpha dT (default 3 K: THK A-715 plans for 2-5 degC; "
+                               "HIWIN-style guidance about 3 degC)", zero=True, maximum=(10.0, "10 K")),
     "orientation": Key("choice", "axis orientation", choices=ORIENTATIONS, default="horizontal"),
     "positions": Key("number", "nut positions evaluated over the stroke", integer=True, minimum=3,
                      maximum=2001),
@@ -94,8 +97,9 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                  options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
     "brake_safety": Key("number", "brake holding torque / holding torque at the heaviest stop (THK A-745)",
                         positive=True, minimum=1.0, maximum=10.0),
-    "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw surface for the heat balance "
-                             "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4)"),
+    "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw shaft for the heat balance "
+                             "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4, over the "
+                             "cycle, with free convection)"),
     "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
                             "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
                             maximum=1.0),

@@ -91,6 +91,8 @@ ASSUMED_DEFAULTS = (
      lambda a: a.mean_speed is None and not a.duty_cycle),
     ("temperature_rise", "temperature_rise", "K", 1.0, "default without a duty cycle; THK plans for 2-5 degC",
      lambda a: a.temperature_rise is None and not a.duty_cycle),
+    ("pretension_rise", "pretension_rise", "K", 1.0, "default design rise of the auto pretension; THK plans for "
+     "2-5 degC", lambda a: a.pretension_rise is None and a.pretension is None and a.mounting == "fixed-fixed"),
 )
 
 

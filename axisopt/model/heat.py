@@ -1,12 +1,26 @@
 """Heat balance of the screw: friction power over the duty cycle and the temperature rise it causes.
 
-The nut's preload drag and the support bearings' drag turn into heat in the screw at the cycle's mean screw
-speed (Tian & He: Q = T omega); the shaft loses it by convection from its surface, with the film coefficient of a
-cylinder rotating in still air (Jungnickel 2010), bounded by free convection from a horizontal cylinder (Holman)
-at low speed, unless the axis gives one (``axis.heat_transfer``).  The rise
-replaces the fixed ``temperature_rise`` when the axis has a duty cycle and sets none; thermal growth at the nut,
-the pretension of a fixed-fixed screw and the checks that read them use it.  It rises with the nut preload
-(through the drag), so do the outputs that read it (model.limits.OUTPUT_PRELOAD).
+The nut's preload drag and the support bearings' drag turn into heat at the cycle's mean screw speed (Tian & He:
+Q = T omega).  The heat leaves through a lumped thermal network after Jungnickel (2010)
+(:func:`axisopt.physics.thermal.screw_heat_network`): the nut's heat through the nut bracket into the table and
+into the shaft; the shaft loses it by convection (Jungnickel's film of a shaft rotating in still air, averaged over
+the cycle's phases, mixed with free convection from a horizontal cylinder) and by conduction along itself into
+the support bearings and their housings, which the bearings' own heat warms.  ``axis.heat_transfer`` replaces the
+shaft's film (a cooled screw).  The rise replaces the fixed ``temperature_rise`` when the axis has a duty cycle and
+sets none; the thermal growth at the nut and the thermal force of a fixed-fixed screw read it.  It rises linearly
+with the nut preload (through the drag), and so do the outputs that read it (model.limits.OUTPUT_PRELOAD).
+
+The network's conductances are estimates (no vendor or paper publishes them for a general axis; measured check:
+tests/physics/test_heat.py against THK's heat-generation tests A-821 and A-671; docs/assumptions.md):
+
+* ``NUT_BRACKET_SHAPE``: the nut bracket conducts like a cast-iron block whose section over length equals the
+  screw's nominal diameter (e.g. 40 x 80 mm over 80 mm for a 40 mm screw: 1.9 W/K), the table beyond it at ambient;
+* ``END_CONDUCTANCE``: shaft end -> support bearing -> housing, 2 W/K per end (Schaeffler's radial conductance of
+  a rolling bearing, Thermca ``bearing.cond``, gives 1.5-1.8 W/K per row of a 7206 at 230-1000 rpm; a DF pair in
+  series with its housing joint about 2 W/K);
+* ``HOUSING_CONDUCTANCE``: a support-bearing housing to the bed, 5 W/K (a bolted cast-iron unit on the bed);
+* ``FREE_CONVECTION_RISE``: the free-convection film is taken at a 5 K rise (THK plans for 2-5 degC, A-715; the
+  film moves by -15 % / +15 % between 2.5 and 10 K).
 """
 
 from __future__ import annotations
@@ -16,29 +30,45 @@ import math
 from .. import mathx as mx
 from ..physics import nut as pn
 from ..physics import thermal as pt
-from ..physics.motion import phase_speeds
+from ..physics.motion import mean_speed, phase_travel
+
+NUT_BRACKET_SHAPE = 1.0  # bracket section / length per metre of screw diameter [-] (estimate)
+END_CONDUCTANCE = 2.0  # [W/K] per held shaft end (estimate)
+HOUSING_CONDUCTANCE = 5.0  # [W/K] per support-bearing housing (estimate)
+FREE_CONVECTION_RISE = 5.0  # [K] at which the free-convection film is taken (estimate)
+
+
+def cycle_film(phases, lead, radius):
+    """Jungnickel's rotating-shaft film averaged over the duty cycle's phases by time [W/(m^2 K)], each phase at
+    its mean screw speed (travel over duration; a dwell adds nothing): the film grows as omega^0.7, so the film at
+    the cycle's mean speed would overstate it."""
+    total = sum(ph.duration for ph in phases)
+    if total <= 0.0:
+        return 0.0
+    film = 0.0
+    for ph in phases:
+        if ph.duration > 0.0:
+            omega = 2.0 * math.pi * phase_travel(ph) / ph.duration / lead
+            film = film + ph.duration / total * pt.rotating_shaft_heat_transfer(omega, radius)
+    return film
 
 
 def heat_balance(p, preload) -> dict:
-    """Friction power [W] (nut and bearings, cycle mean), film coefficient [W/(m^2 K)], the heat-balance rise
-    [K] and the temperature rise the model uses [K] (the balance when ``temperature_rise_auto``)."""
+    """Friction power [W] (nut and bearings, cycle mean), the shaft's film coefficient [W/(m^2 K)], the
+    heat-balance rise [K] and the temperature rise the model uses [K] (the balance when
+    ``temperature_rise_auto``)."""
     phases = p.get("duty", ())
-    v_mean = pt.mean_cycle_speed(phases, phase_speeds(phases)) if phases else p["mean_speed"]
+    v_mean = mean_speed(phases) if phases else p["mean_speed"]
     omega = 2.0 * math.pi * v_mean / p["lead"]
-    t_screw = pn.nut_preload_drag_torque(preload, p["lead"], p["nominal_diameter"]) \
-        + p["bearing_sets"] * p["bearing_torque"]
-    power = t_screw * omega
-    d = p["nominal_diameter"]
-    area = math.pi * d * p["span"]
-    # film: the axis's, else the rotating shaft's (Jungnickel) bounded by free convection alone (Holman); each
-    # alone overstates the rise, so the smaller is an upper estimate of it
-    h_rot = pt.rotating_shaft_heat_transfer(omega, 0.5 * d)
-    rise_auto = mx.fmin(pt.friction_temperature_rise(power, h_rot, area),
-                        pt.free_convection_temperature_rise(power, d, area))
+    d, d_r = p["nominal_diameter"], p["root_diameter"]
+    p_nut = pn.nut_preload_drag_torque(preload, p["lead"], d) * omega
+    p_bearings = p["bearing_sets"] * p["bearing_torque"] * omega
+    h_rot = cycle_film(phases, p["lead"], 0.5 * d) if phases else pt.rotating_shaft_heat_transfer(omega, 0.5 * d)
+    h_mixed = pt.mixed_convection_film(h_rot, pt.horizontal_cylinder_free_film(FREE_CONVECTION_RISE, d))
     given = p["heat_transfer"] > 0.0
-    rise = mx.if_else(given, pt.friction_temperature_rise(power, mx.fmax(p["heat_transfer"], 1e-12), area),
-                      rise_auto)
-    h = power / (area * mx.fmax(rise, 1e-12))  # the effective film
+    h = mx.if_else(given, mx.fmax(p["heat_transfer"], 1e-12), h_mixed)
+    rise = pt.screw_heat_network(p_nut, p_bearings, h, d, d_r, p["span"], p["shaft_ends"],
+                                 NUT_BRACKET_SHAPE * pt.K_CAST_IRON * d, END_CONDUCTANCE, HOUSING_CONDUCTANCE)
     # the axis says in Python whether the balance sets the rise (motion.Phases.heat), so that a model without it
     # carries no preload-dependent thermal terms (the global reference solvers see the same algebra as before)
     flag = getattr(phases, "heat", None)
@@ -46,8 +76,8 @@ def heat_balance(p, preload) -> dict:
         used = p["temperature_rise_auto"] * rise + (1.0 - p["temperature_rise_auto"]) * p["temperature_rise"]
     else:
         used = rise if flag else p["temperature_rise"]
-    return {"friction_power": power, "heat_transfer": h, "heat_balance_rise": rise, "temperature_rise": used,
-            "cycle_mean_screw_speed": omega}
+    return {"friction_power": p_nut + p_bearings, "heat_transfer": h, "heat_balance_rise": rise,
+            "temperature_rise": used, "cycle_mean_screw_speed": omega}
 
 
 def with_temperature(p, heat) -> dict:

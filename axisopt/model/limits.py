@@ -23,7 +23,8 @@ CONVEX = 2  # a preload direction: the output is convex in the nut preload (met 
 # falls, and the motor torques are convex (the nut's drag raises the torque of some phases of the cycle and
 # lowers that of others: deceleration, lowering a vertical axis).
 # The heat balance (model.heat) makes the temperature rise grow with the preload (nut drag x speed), and with it
-# the thermal growth, the pretension of a fixed-fixed screw and the bearing set's static load: the bearing life,
+# the thermal growth, the thermal push of a fixed-fixed screw beyond its pretension (which absorbs a fixed design
+# rise) and the bearing set's static load: the bearing life,
 # bearing lift-off, screw yield and buckling margins fall with the preload (independent without a duty cycle).
 OUTPUT_PRELOAD = MappingProxyType({
     "k_total": 1, "k_tool": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,

@@ -111,12 +111,17 @@ def axial_loads(p, moving) -> dict:
     f_mean = p["mean_axial_load"] + f_guides + gravity
     ff = p["bearing_sets"] - 1.0  # 1 for fixed-fixed
     k_set = bearing_set_stiffness(p)
-    # pretension: 'auto' is the force that absorbs the temperature rise (vendor rule), fixed-fixed only
-    pre = ff * (p["pretension_auto"] * pt.restrained_thermal_force(p["root_diameter"], p["temperature_rise"])
+    # pretension, fixed-fixed only: 'auto' is the force that absorbs the vendor's design rise, E A alpha dT_design
+    # (THK A-715: a negative target travel for 2-5 degC, the shaft stretched to it; design.PRETENSION_RISE), not the
+    # heat balance's whole rise; a given pretension wins
+    pre = ff * (p["pretension_auto"] * pt.restrained_thermal_force(p["root_diameter"], p["pretension_rise"])
                 + (1.0 - p["pretension_auto"]) * p["pretension"])
+    # the thermal force of the whole rise on the elastic ends (bearing sets with their housings): it eats the
+    # pretension, and what exceeds it pushes the screw into compression (rises with the nut preload)
     d_thermal = ff * pt.thermal_force_elastic_ends(p["root_diameter"], p["span"], p["temperature_rise"], k_set)
-    # a set carries the pretension when cold and what is left of it (or the thermal push) when warm
-    static = mx.fmax(pre, mx.fabs(d_thermal - pre))
+    # a set carries the pretension when cold and, warm, the pretension left or the thermal push beyond it:
+    # max(pre, |d - pre|) = max(pre, d - pre) for d >= 0, nondecreasing in the rise
+    static = mx.fmax(pre, d_thermal - pre)
     # compression in the screw when pushing: the load, plus the thermal push not absorbed by pretension (a
     # pretension above the thermal push is not credited against the load: conservative, and monotone in the
     # temperature rise, which rises with the nut preload through the heat balance)

@@ -7,7 +7,7 @@ from types import MappingProxyType
 import numpy as np
 
 from ..catalog import ARRANGEMENT_ROWS, COLUMNS
-from ..design import TEMPERATURE_RISE
+from ..design import PRETENSION_RISE, TEMPERATURE_RISE
 from ..physics.bearings import support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
 
@@ -50,7 +50,7 @@ PARAM_NAMES = (
     "tool_height", "tool_offset", "cg_height", "cg_offset", "block_spacing", "rail_spacing", "gravity_cross",
     "pitch_inertia", "yaw_inertia", "guide_static_safety", "nut_static_safety", "duty_process",
     "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed", "temperature_rise_auto",
-    "heat_transfer",
+    "heat_transfer", "shaft_ends", "pretension_rise",
 )
 
 
@@ -111,6 +111,9 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "heat_transfer": 0.0 if axis.heat_transfer is None else axis.heat_transfer,
         "pretension": 0.0 if axis.pretension is None else axis.pretension,
         "pretension_auto": 1.0 if (axis.pretension is None and mounting == "fixed-fixed") else 0.0,
+        # the vendor's design rise the auto pretension absorbs; the shaft ends a support bearing holds (heat)
+        "pretension_rise": PRETENSION_RISE if axis.pretension_rise is None else axis.pretension_rise,
+        "shaft_ends": 1.0 if mounting == "fixed-free" else 2.0,
     }
     # every column that feeds a parameter as it is (catalog.COLUMNS), then the ones read through a rule
     for table, row in (("screws", screw), ("nuts", nut), ("bearings", bearing), ("guides", guide)):

@@ -1,4 +1,5 @@
-"""Thermal growth of the screw shaft and the pretension that compensates it (vendor catalog forms, SI)."""
+"""Thermal growth of the screw shaft and the pretension that compensates it (vendor catalog forms), and the
+steady heat balance of a ball-screw drive as a lumped thermal network (Jungnickel 2010; SI)."""
 
 from __future__ import annotations
 
@@ -6,9 +7,10 @@ from axisopt import mathx as mx
 from axisopt.physics.screw import E_STEEL, screw_axial_rigidity
 
 __all__ = [
-    "ALPHA_STEEL", "thermal_growth", "restrained_thermal_force", "thermal_force_elastic_ends",
-    "thermal_displacement", "rotating_shaft_heat_transfer", "friction_temperature_rise",
-    "free_convection_temperature_rise",
+    "ALPHA_STEEL", "K_STEEL", "K_CAST_IRON", "thermal_growth", "restrained_thermal_force",
+    "thermal_force_elastic_ends", "thermal_displacement", "rotating_shaft_heat_transfer", "friction_temperature_rise",
+    "free_convection_temperature_rise", "horizontal_cylinder_free_film", "mixed_convection_film",
+    "shaft_end_fraction", "screw_heat_network",
 ]
 
 ALPHA_STEEL = 11.6e-6  # [1/K] HIWIN BS-08-2-EN-1704-K F 3.36 (THK A-715 uses 12e-6)
@@ -127,10 +129,97 @@ def free_convection_temperature_rise(friction_power, diameter, area, coefficient
     return (friction_power * diameter**0.25 / (coefficient * area)) ** 0.8
 
 
-def mean_cycle_speed(phases, speeds):
-    """Mean table speed over a duty cycle [m/s]: distance over cycle time, each phase's distance from its start
-    and end speeds (``motion.phase_speeds``) as (v0 + v1) t / 2 (exact at constant acceleration)."""
-    total = sum(ph.duration for ph in phases)
-    if total <= 0.0:
-        return 0.0
-    return sum(0.5 * (v0 + v1) * ph.duration for ph, (v0, v1) in zip(phases, speeds)) / total
+# ---- the heat balance as a lumped thermal network ------------------------------------------------------------
+# Jungnickel, G. (2010) "Simulation des thermischen Verhaltens von Werkzeugmaschinen. Modellierung und
+# Parametrierung", TU Dresden: lumped-parameter thermal models of machine-tool components, as implemented in
+# steffenschroe/Thermca (thermca/lib/*.py, cited there as [Jun10]): the rotating-shaft film (above), free convection
+# on a horizontal cylinder (free_conv.horiz_cyl), mixed free and forced convection (combd_film.mix_conv), material
+# conductivities (solids.carbon_steel C45 48 W/(m K), solids.cast_iron_gjl_300 47.5 W/(m K)).
+K_STEEL = 48.0  # [W/(m K)] screw shaft: C45 (1.0503), [Jun10] via Thermca solids.carbon_steel
+K_CAST_IRON = 47.5  # [W/(m K)] nut bracket, table: EN-GJL-300, [Jun10] via Thermca solids.cast_iron_gjl_300
+
+
+def horizontal_cylinder_free_film(temperature_rise, diameter):
+    r"""Free-convection film coefficient of a horizontal cylinder in still air (Jungnickel 2010, Thermca
+    ``free_conv.horiz_cyl``).
+
+    .. math:: \alpha = 1.34\, \Delta T^{0.33} + 0.164\, (\Delta T / d^7)^{0.1}
+
+    temperature_rise : Delta T, surface over air [K];  diameter : d [m].  Returns alpha [W/(m^2 K)].  E.g. a 40 mm
+    shaft 5 K above the air: 4.1 W/(m^2 K) (Holman's laminar 1.32 (dT/d)^0.25 gives 4.4).
+    """
+    return 1.34 * temperature_rise**0.33 + 0.164 * (temperature_rise / diameter**7) ** 0.1
+
+
+def mixed_convection_film(forced, free, exponent=4.0):
+    r"""Film coefficient of free and forced convection acting together (Jungnickel 2010, Thermca
+    ``combd_film.mix_conv``).
+
+    .. math:: \alpha = (\alpha_{forced}^n + \alpha_{free}^n)^{1/n}
+
+    forced, free : [W/(m^2 K)];  exponent : n = 4 for flows across each other (a horizontal rotating shaft: the
+    rotation's flow runs round it, the buoyant one up), 3 for assisting flows.  Returns alpha [W/(m^2 K)].
+    """
+    return (forced**exponent + free**exponent) ** (1.0 / exponent)
+
+
+def shaft_end_fraction(film, nominal_diameter, root_diameter, half_length, end_conductance, conductivity=K_STEEL):
+    r"""How strongly the shaft ends pull the mean temperature of a heated shaft towards theirs: the shaft as a fin
+    (conduction along it, convection from its surface) between two ends held through ``end_conductance``.
+
+    With heat entering uniformly along the shaft, the mean rise is :math:`\theta_\infty (1 - f)`
+    (:math:`\theta_\infty = q'/(\alpha U)`, the rise of an endless shaft); with the ends at
+    :math:`\theta_e` and no heat along it, :math:`\theta_e f`, where
+
+    .. math:: f = \frac{G \tanh x}{x\,(k A m \tanh x + G)},\quad m = \sqrt{\alpha U / (k A)},\ x = m\,l
+
+    (the fin equation :math:`k A \theta'' = \alpha U \theta - q'` with :math:`k A \theta' = \pm G \theta` at the
+    ends; Incropera & DeWitt, Fundamentals of Heat and Mass Transfer, ch. 3.6, extended fins).  U = pi d
+    (nominal diameter: the surface), A = pi d_r^2 / 4 (root diameter: the conducting section).
+    film : alpha [W/(m^2 K)];  nominal_diameter, root_diameter [m];  half_length : l, half the bearing span
+    (both ends held) or the whole span (one end held, the other free) [m];  end_conductance : G [W/K] per end;
+    conductivity : k [W/(m K)].  Returns f [-] in [0, tanh(x)/x] (0: insulated ends; tanh(x)/x: ends at
+    theta_e).
+    """
+    area = mx.pi * root_diameter**2 / 4.0
+    kam = mx.sqrt(film * mx.pi * nominal_diameter * conductivity * area)  # k A m
+    x = kam / (conductivity * area) * half_length
+    t = mx.tanh(x)
+    return end_conductance * t / (x * (kam * t + end_conductance))
+
+
+def screw_heat_network(nut_power, bearing_power, film, nominal_diameter, root_diameter, span, ends,
+                       nut_conductance, end_conductance, housing_conductance, conductivity=K_STEEL):
+    r"""Steady mean temperature rise of the screw shaft of a ball-screw drive: a lumped thermal network after
+    Jungnickel (2010) (heat sources at the nut and the support bearings, a film on the rotating shaft,
+    conduction through the joints to the machine's structure, which stays at ambient).
+
+    Nodes and paths (theta: rise over ambient):
+
+    * the nut's friction power P_n enters the nut and the shaft under it, taken at one temperature (the
+      balls' contact conductance taken as infinite, Jungnickel models it finite, Thermca
+      ``ball_screw.cont_cond``: a finite one keeps the nut warmer and sends more of P_n into the table, so the
+      shaft's rise here is an upper estimate); it leaves through the nut bracket into the table,
+      ``nut_conductance`` G_n, and into the shaft;
+    * the shaft spreads it along its span (uniformly: the nut sweeps the stroke) and loses it by convection,
+      ``film`` alpha over pi d L, and by conduction along the shaft into its ends (:func:`shaft_end_fraction`);
+    * each held end leads through the support bearing, ``end_conductance`` G_e, into its housing; the
+      bearings' friction power P_b heats the housings, ``housing_conductance`` G_h each, to
+      theta_e = P_b / (ends G_h) on average.
+
+    .. math::
+        R_s = (1 - f) / (\alpha \pi d L),\quad
+        Q_s = \frac{P_n - G_n f \theta_e}{1 + G_n R_s},\quad
+        \theta_s = Q_s R_s + f \theta_e
+
+    nut_power : P_n [W];  bearing_power : P_b, all fixed support sets [W];  film : alpha [W/(m^2 K)];
+    nominal_diameter, root_diameter [m];  span : L, bearing to bearing [m];  ends : held shaft ends (2 with a
+    bearing at each end, 1 fixed-free);  conductances [W/K].  Returns theta_s [K], the shaft's mean rise (what
+    its growth reads).  It rises linearly with P_n (so with the nut preload) and with P_b.  Radiation is left
+    out (an upper estimate).
+    """
+    f = shaft_end_fraction(film, nominal_diameter, root_diameter, span / ends, end_conductance, conductivity)
+    r_s = (1.0 - f) / (film * mx.pi * nominal_diameter * span)
+    theta_end = f * bearing_power / (ends * housing_conductance)
+    q_shaft = (nut_power - nut_conductance * theta_end) / (1.0 + nut_conductance * r_s)
+    return q_shaft * r_s + theta_end

@@ -8,6 +8,7 @@ import textwrap
 
 import numpy as np
 
+from ..design import PRETENSION_RISE
 from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.limits import CHECK_TABLE
@@ -328,17 +329,23 @@ def _thermal_line(ev: Evaluation) -> str:
     how = ("rise from the heat balance of the duty cycle" if used else
            "rise as given; the heat balance" if a.temperature_rise is not None else
            "rise: default (THK A-715), no duty cycle; the heat balance of continuous rapids")
-    film = "Jungnickel rotating shaft, Holman free convection" if a.heat_transfer is None else "axis.heat_transfer"
+    film = ("Jungnickel rotating shaft over the cycle, with free convection" if a.heat_transfer is None
+            else "axis.heat_transfer")
     rise = "" if used else f" would give +{float(v['heat_balance_rise']):.3g} K"
     balance = (f"{how}: friction power {float(v['friction_power']):.3g} W (nut and bearings at the cycle's mean "
-               f"screw speed), film {float(v['heat_transfer']):.3g} W/(m^2.K) "
-               f"({film}) over the screw surface"
-               f"{rise}")
+               f"screw speed) through a lumped network (Jungnickel 2010): shaft film "
+               f"{float(v['heat_transfer']):.3g} W/(m^2.K) ({film}), conduction through the nut bracket and the "
+               f"shaft ends (estimated conductances, docs/assumptions.md){rise}")
     text += "\n" + "\n".join(textwrap.wrap(balance, WIDTH, initial_indent="  ", subsequent_indent="    "))
     if a.mounting == "fixed-fixed":
-        text += (f"\n  pretension {v['pretension'] / 1e3:.1f} kN "
-                 f"({'absorbs the rise' if a.pretension is None else 'as given'}), bearing static load "
-                 f"{v['bearing_static_load'] / 1e3:.1f} kN")
+        pre, push = float(v["pretension"]), float(v["thermal_force"])
+        design = PRETENSION_RISE if a.pretension_rise is None else a.pretension_rise
+        how_pre = f"absorbs a design rise of {design:g} K, THK A-715" if a.pretension is None else "as given"
+        rest = (f"{(push - pre) / 1e3:.1f} kN beyond it compresses the screw" if push > pre
+                else "the screw stays in tension")
+        pre_line = (f"pretension {pre / 1e3:.1f} kN ({how_pre}); the rise pushes the elastic ends with "
+                    f"{push / 1e3:.1f} kN: {rest}; bearing static load {v['bearing_static_load'] / 1e3:.1f} kN")
+        text += "\n" + "\n".join(textwrap.wrap(pre_line, WIDTH, initial_indent="  ", subsequent_indent="    "))
     return text
 
 

@@ -2,6 +2,7 @@
 
 import math
 
+import numpy as np
 import pytest
 
 from axisopt.physics import thermal
@@ -75,3 +76,54 @@ def test_holman_example_7_7_simplified_free_convection():
     area = math.pi * d * 1.0
     rise = thermal.free_convection_temperature_rise(1570.0, d, area)
     assert rise == pytest.approx(250.0 - 15.0, rel=0.003)
+
+
+def test_jungnickel_free_convection_agrees_with_holman():
+    # Jungnickel 2010 (Thermca free_conv.horiz_cyl) and Holman Table 7-2 (laminar, 1.32 (dT/d)^0.25) for the same
+    # 40 mm horizontal cylinder 5 K above the air: 4.11 and 4.41 W/(m^2 K), two published correlations within 10 %
+    jung = thermal.horizontal_cylinder_free_film(5.0, 0.04)
+    assert jung == pytest.approx(4.11, abs=0.005)
+    assert jung == pytest.approx(1.32 * (5.0 / 0.04) ** 0.25, rel=0.10)
+
+
+def test_mixed_convection_of_transverse_flows():
+    # Jungnickel 2010 (Thermca combd_film.mix_conv, transverse: n = 4): (3^4 + 4^4)^(1/4) = 4.28
+    assert thermal.mixed_convection_film(3.0, 4.0) == pytest.approx(337.0**0.25, rel=1e-12)
+
+
+def _fin_mean_by_finite_differences(h, d, dr, length, g_end, q_line, theta_end, k=thermal.K_STEEL, n=2001):
+    """Mean rise of a shaft (fin) with heat q' [W/m] along it and ends held through g_end to theta_end: the fin
+    equation k A theta'' = h U theta - q' solved on a grid (independent of the closed form)."""
+    area, perim = math.pi * dr**2 / 4, math.pi * d
+    dx = length / (n - 1)
+    a = np.zeros((n, n))
+    b = np.full(n, q_line * dx)
+    for i in range(n):
+        a[i, i] = h * perim * dx
+        for j in (i - 1, i + 1):
+            if 0 <= j < n:
+                a[i, i] += k * area / dx
+                a[i, j] -= k * area / dx
+    for i in (0, n - 1):  # half cells at the ends, plus the end conductance
+        a[i, i] -= 0.5 * h * perim * dx
+        b[i] = 0.5 * q_line * dx + g_end * theta_end
+        a[i, i] += g_end
+    theta = np.linalg.solve(a, b)
+    return float(np.trapezoid(theta, dx=dx) / length)
+
+
+@pytest.mark.parametrize("g_end", [0.5, 2.0, 1e6])
+def test_shaft_end_fraction_solves_the_fin_equation(g_end):
+    """The closed form (Incropera & DeWitt ch. 3.6, a fin with convective ends) against a finite-difference
+    solution of the same fin equation: the heated shaft with ends at ambient, and the unheated shaft with warm ends.
+    Ends at ambient (g -> inf): f = tanh(x)/x, the textbook fin efficiency."""
+    h, d, dr, length = 8.0, 0.04, 0.034, 0.9
+    f = thermal.shaft_end_fraction(h, d, dr, length / 2, g_end)
+    q_line = 20.0
+    theta_inf = q_line / (h * math.pi * d)
+    assert _fin_mean_by_finite_differences(h, d, dr, length, g_end, q_line, 0.0) == pytest.approx(
+        theta_inf * (1 - f), rel=2e-4)
+    assert _fin_mean_by_finite_differences(h, d, dr, length, g_end, 0.0, 3.0) == pytest.approx(3.0 * f, rel=2e-4)
+    if g_end > 1e5:
+        x = math.sqrt(h * math.pi * d / (thermal.K_STEEL * math.pi * dr**2 / 4)) * length / 2
+        assert f == pytest.approx(math.tanh(x) / x, rel=1e-4)
