@@ -118,7 +118,12 @@ COLUMNS = MappingProxyType({
         _c("lift_off_load", "force", "bearing_lift_off", estimated_when=_CATALOG_ROWS,
            estimated_how="2.83 x preload (DB/DF/DFF, SKF-LF) or 2.08 x preload (DBD), catalogs/SOURCES.md"),
         _c("dynamic_load_rating", "force", "bearing_dynamic_load", positive=True, **_DERIVED),
-        _c("static_load_rating", "force"),
+        # the static (or limiting, or permissible) axial rating of the rows carrying the stronger direction, and
+        # the least static safety its vendor asks on it (physics.bearings: NSK/HIWIN WBK limiting load 1/0.7,
+        # THK permissible load 1); empty: a true C0a with no vendor figure, Rexroth's machine-tool S0 >= 4
+        _c("static_load_rating", "force", "bearing_static_load", positive=True),
+        _c("static_safety", "dimensionless", positive=True, optional=True,
+           estimate="no vendor figure: Rexroth's machine-tool S0 >= 4 (R310RU 3301 p. 125)"),
         _c("limiting_speed", "angular_speed", "bearing_limiting_speed", **_DERIVED, derived_marker="speed"),
         _c("starting_torque", "torque", optional=True,
            estimate="vendor envelope 3.72e-3 x preload x mean diameter"),

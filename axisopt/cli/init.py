@@ -44,6 +44,16 @@ _FORCE_NOTE = """\
   #  feed Ff = 0.5 Fc and passive Fp = 0.25 Fc of the tangential force Fc; a rough
   #  guide, not a measurement."""
 
+_MOUNT_NOTE = """\
+  # Mounting stiffness: the machine's own parts, in series with the support bearings and the
+  # nut.  Give your housings' and nut bracket's axial stiffness (FEM or measured) when known;
+  # left out, each is an estimate named in every result that rests on it:
+  # bearing_housing_stiffness: 20000 N/um  # one support-bearing housing (default: 26 x the
+  #                                        #   bearing set, IBC's units against their bare sets)
+  # nut_bracket_stiffness: 2000 N/um       # nut bracket to the table (default: 4 x the nut,
+  #                                        #   THK's 80 % nut-mounting allowance once more)
+"""
+
 # Per machine: title, name, the axis section (after 'axis:'), the problem's objective to continuous sections,
 # the design's parts, and the study's sweep.
 _MACHINE = {
@@ -213,7 +223,7 @@ continuous:
   guide: HIWIN-HG30-ZA        # size 30: the cut 600 mm up, 500 mm across tilts the gantry
   motor: HC702
   coupling: RINGFEDER-GWB-AKN-300
-  nut_preload: 4300 N
+  nut_preload: 2500 N
 """,
         sweep=("axis.stroke", "[1500 mm, 1750 mm, 2000 mm]", "machine sizes"),
     ),
@@ -294,7 +304,7 @@ def template(kind: str, machine: str = "vmc") -> str:
         raise InputError(f"unknown machine '{machine}'; use one of {', '.join(MACHINES)}", where="--machine")
     m = _MACHINE[machine]
     head = _HEADER.format(kind=kind, title=m["title"], machine=machine, next=_NEXT[kind])
-    axis = "axis:\n" + m["axis"].format(force=_FORCE_NOTE)
+    axis = "axis:\n" + m["axis"].format(force=_FORCE_NOTE) + _MOUNT_NOTE
     if kind == "design":
         return (f"{head}name: {m['name']}\ndescription: >\n  {m['description']}\n{axis}"
                 "parts:                        # catalog ids (axisopt parts lists them)\n"

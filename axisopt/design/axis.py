@@ -10,12 +10,19 @@ from functools import cached_property
 
 from ..display import fmt, one_line
 from ..physics import motion
+from ..physics.checks import load_factor_default
 
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
 
 # Defaults of the axis values no catalog row carries, with their sources (docs/assumptions.md).
-# Bearing housing and nut bracket: no vendor publishes a value (THK A-707: "set the rigidity as high as
-# possible"; THK and NSK rigidities exclude them), so they are rigid unless the YAML gives them.
+# Bearing housing and nut bracket (issue 38): no vendor publishes a value for the machine's own parts (THK A-708:
+# "set the rigidity as high as possible"; THK and NSK rigidities exclude them).  Never rigid: without a YAML
+# value the housing is 26 x its bearing set (IBC's bearing units against their bare sets,
+# physics.bearings.housing_stiffness_default) and the bracket 4 x its nut (THK's 80 % nut-mounting allowance
+# taken once more, physics.nut.bracket_stiffness_default), both named as estimates in every result.
+# Load factor fw: THK A-704 Table 19 by the axis's max speed (physics.checks.load_factor_default).
+# Nut lift-off: the preload holds up to 2^(3/2) x preload (THK A-687, HIWIN H-BS F 3.6); no vendor asks a
+# margin on top, on a vertical axis neither (the largest axial force already carries the weight; THK A-737).
 # Coupling: RINGFEDER GWB AKN size 60 metal-bellows coupling (Tech Paper EN 08.2019): 75e3 N.m/rad,
 # 0.29e-3 kg.m^2, 75 N.m, a mid-size feed-drive coupling (our pick of size).
 # Temperature rise: THK A-715 sets the negative target travel for a 2-5 degC rise; 3 K is used.
@@ -47,6 +54,7 @@ RMS_TORQUE_RATIO = 0.8
 # prints 2.5 to 7 for machine tools with vibration or impact (A-95, A-703); HIWIN G99TE20 Table 1-1: 3 to 5.
 GUIDE_STATIC_SAFETY = 5.0
 NUT_STATIC_SAFETY = 5.0
+NUT_LIFT_OFF_SAFETY = 1.0
 # Geometry defaults where the YAML gives none (our assumptions, stated in docs/assumptions.md): blocks set in from the
 # table ends (spacing 0.6 x table length), rails 0.6 x table width apart, a table + workpiece box as wide as it
 # is long, 0.4 x its length high with the centre of gravity at half that height and the cutting point on top.
@@ -71,7 +79,7 @@ class Axis:
     mean_axial_load: float | None = None  # for life; default a third of axial_load [N]
     acceleration: float = 0.0  # [m/s^2]
     required_life: float = 20000 * 3600.0  # [s]
-    load_factor: float = 1.2  # fw
+    load_factor: float | None = None  # fw; None: THK A-704 Table 19 by max_speed (load_factor_eff)
     guide_blocks: int = 4
     rails: int = 2
     table_length: float = 0.5  # rail length = stroke + table_length [m]
@@ -79,8 +87,10 @@ class Axis:
     lubricant_viscosity: float = 32e-6  # at working temperature [m^2/s]
     motor_inertia: float = 1.0e-3  # motor rotor [kg m^2]
     # values outside the catalogs, YAML overridable; the defaults' sources are above the class
-    bearing_housing_stiffness: float | None = None  # one support-bearing housing [N/m]; None: rigid
-    nut_bracket_stiffness: float | None = None  # nut bracket / table connection [N/m]; None: rigid
+    # one support-bearing housing [N/m]; None: 26 x the bearing set (IBC units, an estimate)
+    bearing_housing_stiffness: float | None = None
+    # nut bracket / table connection [N/m]; None: 4 x the nut (THK's mounting allowance, an estimate)
+    nut_bracket_stiffness: float | None = None
     coupling_stiffness: float = COUPLING_STIFFNESS  # torsional [N m/rad]
     coupling_inertia: float = COUPLING_INERTIA  # [kg m^2]
     # screw temperature rise in operation [K]; None: the heat balance of the duty cycle (model.heat) when the axis
@@ -116,6 +126,16 @@ class Axis:
     yaw_inertia: float | None = None  # moving mass about the vertical axis through the carriage centre [kg m^2]
     guide_static_safety: float = GUIDE_STATIC_SAFETY  # least C0 / largest block load
     nut_static_safety: float = NUT_STATIC_SAFETY  # least C0a / largest axial force
+    # least static safety of the support-bearing set on its static rating; None: the rating's vendor's
+    # (catalogs bearings static_safety: NSK limiting load 1/0.7, THK permissible load 1, else Rexroth's 4)
+    bearing_static_safety: float | None = None
+    nut_lift_off_safety: float = NUT_LIFT_OFF_SAFETY  # least nut lift-off force / largest axial force
+
+    @property
+    def load_factor_eff(self) -> float:
+        """The load factor fw the life checks read: ``load_factor`` when given, else THK A-704 Table 19's
+        for the axis's top speed (:func:`axisopt.physics.checks.load_factor_default`)."""
+        return load_factor_default(self.top_speed) if self.load_factor is None else self.load_factor
 
     @property
     def table_width_eff(self) -> float:

@@ -59,7 +59,9 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "acceleration": _axis_q("acceleration", "acceleration of the moves", zero=True),
     "required_life": _axis_q("time", "required life of the nut, bearings and guides (problem default: its "
                              "limits.min_life, else 20000 h)"),
-    "load_factor": Key("number", "load factor fw of the life calculation", minimum=1.0),
+    "load_factor": Key("number", "load factor fw of the life calculation (default: THK A-704 Table 19 by "
+                       "max_speed, the upper end of its row: 1.2 up to 15 m/min, 1.5 to 60, 2 to 120, else 3.5)",
+                       minimum=1.0, maximum=10.0),
     "guide_blocks": Key("number", "guide blocks carrying the table", integer=True, minimum=1, maximum=64),
     "rails": Key("number", "guide rails", integer=True, minimum=1, maximum=8),
     "table_length": _axis_q("length", "table length (rail length = stroke + table_length)"),
@@ -67,8 +69,10 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                            "solve then says the guides were sized without it)", zero=True),
     "lubricant_viscosity": _axis_q("kinematic_viscosity", "lubricant viscosity at working temperature"),
     "motor_inertia": _axis_q("inertia", "motor rotor inertia (when no motor part is chosen)"),
-    "bearing_housing_stiffness": _axis_q("stiffness", "one support-bearing housing (default: rigid)"),
-    "nut_bracket_stiffness": _axis_q("stiffness", "nut bracket / table connection (default: rigid)"),
+    "bearing_housing_stiffness": _axis_q("stiffness", "one support-bearing housing (default, an estimate: 26 x "
+                                         "the bearing set, IBC's units against their bare sets)"),
+    "nut_bracket_stiffness": _axis_q("stiffness", "nut bracket / table connection (default, an estimate: 4 x the "
+                                     "nut, THK's 80 % nut-mounting allowance taken once more)"),
     "coupling_stiffness": _axis_q("torsional_stiffness", "coupling torsional stiffness (when no coupling part)"),
     "coupling_inertia": _axis_q("inertia", "coupling inertia (when no coupling part)"),
     "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation (default: the "
@@ -126,11 +130,18 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                                "with vibrations or impacts)", minimum=1.0, maximum=100.0),
     "nut_static_safety": Key("number", "least nut static safety C0a / largest axial force (default 5: THK, with "
                              "vibrations or impacts)", minimum=1.0, maximum=100.0),
+    "bearing_static_safety": Key("number", "least support-bearing static safety: static rating of the rows / "
+                                 "largest axial load on them (default: the rating's vendor's, NSK 1/0.7 on its "
+                                 "limiting load, THK 1 on its permissible load, else Rexroth's 4 for machine "
+                                 "tools)", minimum=1.0, maximum=100.0),
+    "nut_lift_off_safety": Key("number", "least nut lift-off force (2.83 x preload) / largest axial force (default "
+                               "1: THK A-687, HIWIN F 3.6)", minimum=1.0, maximum=100.0),
 })
 AXIS_KINDS = {name: k.kind for name, k in AXIS_SPEC.keys.items() if k.type == "quantity"}
 AXIS_REQUIRED = tuple(name for name, k in AXIS_SPEC.keys.items() if k.required)
 AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reduction_efficiency",
-                 "guide_static_safety", "nut_static_safety", "rms_torque_ratio")
+                 "guide_static_safety", "nut_static_safety", "rms_torque_ratio", "bearing_static_safety",
+                 "nut_lift_off_safety")
 
 
 def _part_key(table: str, col: str, kind: str) -> Key:
@@ -142,9 +153,10 @@ def _part_key(table: str, col: str, kind: str) -> Key:
                    default="custom" if optional else None, choices=CHOICES.get((table, col)))
     if kind == "int":
         return Key("number", doc, required=True, integer=True, minimum=1)
-    if kind == "dimensionless":
-        return Key("number", doc, required=True, minimum=0)
     optional = col in OPTIONAL_COLUMNS.get(table, ())
+    if kind == "dimensionless":
+        return Key("number", doc + (" (optional: the vendor lists none)" if optional else ""),
+                   required=not optional, minimum=0)
     return Key("quantity", doc + (" (optional: the vendor lists none)" if optional else ""),
                required=not optional, kind=kind, non_negative=True)
 

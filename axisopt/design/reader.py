@@ -139,11 +139,9 @@ def inline_part(sec: Section, table: str):
         v = sec.read(col)
         if kind == "int":
             v = int(v)
-        elif kind == "dimensionless":
-            v = float(v)
         elif kind != "str" and v is None:
             v = math.nan
-        rec[col] = v
+        rec[col] = float(v) if kind == "dimensionless" else v
     sec.done()
     bad = row_problem(table, rec)  # the catalog loader's rules: positive geometry, choices, ordered pairs
     if bad is not None:

@@ -35,6 +35,8 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
                 axis[f.name] = _q(v, AXIS_KINDS[f.name])
         elif f.name == "pretension":
             axis[f.name] = "auto" if v is None else _q(v, "force")
+        elif v is None:
+            continue  # a key left to its default (load_factor, bearing_static_safety)
         elif f.name == "load_factor":
             axis[f.name] = float(v)
         elif f.name == "duty_cycle":
@@ -57,9 +59,11 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
                 part[col] = str(v)
             elif kind == "int":
                 part[col] = int(v)
+            elif not math.isfinite(float(v)):
+                continue  # an optional cell left empty
             elif kind == "dimensionless":
                 part[col] = float(v)
-            elif math.isfinite(float(v)):
+            else:
                 part[col] = _q(float(v), kind)
         parts[slot] = part
     if design.nut_preload is not None:

@@ -10,7 +10,8 @@ r"""The axial stiffness chain at the nut, component by component (seed eq. 1-2 a
 * ``k_N``: nut.  Double nut: eq. 9 at the preload (HIWIN F 3.34), then the Hertz curve with lift-off at the
   largest axial load the axis sees (its softest point).  Single nut with play: HIWIN F 3.35 at the mean
   operating load, 0.8 K (F_bm / 0.28 C)^(1/3).
-* ``k_bracket``: nut bracket; ``k_SB`` includes the bearing housings (axis values, rigid when not given).
+* ``k_bracket``: nut bracket; ``k_SB`` includes the bearing housings (axis values, else the estimates of
+  :func:`axisopt.model.params.mount_compliances`).
 
 ``k_drive`` is the chain without the coupling: the spring between the screw and the table in the
 drive-train model (:func:`axisopt.physics.dynamics.drive_train_eigenvalues`).

@@ -6,6 +6,7 @@ import math
 from types import MappingProxyType
 
 from .. import mathx as mx
+from ..physics import bearings as pb
 from ..physics import checks as pc
 from ..physics import life as pl
 from ..physics import nut as pn
@@ -68,6 +69,23 @@ def bearing_life_load(p, loads, travels, static):
     return best
 
 
+def bearing_static(p, f_max, static):
+    """(margin, available, needed) of the support-bearing set's static check [N]: the set is mounted with its
+    stronger rows facing the static set load (pretension, thermal force), which they carry with the largest
+    axial force; the other rows carry the largest axial force alone (the static load comes and goes with the
+    screw's temperature: a warm pretensioned screw leaves the sets nearly unloaded).  Each direction's rows
+    are rated in proportion to their count (physics.bearings.row_static_rating) with the least static safety
+    the rating's vendor asks (or the axis's)."""
+    c_strong = p["bearing_static_load"]
+    c_weak = pb.row_static_rating(c_strong, p["bearing_rows_weak"], p["bearing_rows_strong"])
+    s0 = p["bearing_static_safety"]
+    push = f_max + static
+    margin = pb.support_static_margin(c_strong, c_weak, push, f_max, s0)
+    strong_governs = c_strong / push <= c_weak / f_max
+    return (margin, mx.if_else(strong_governs, c_strong, c_weak),
+            s0 * mx.if_else(strong_governs, push, f_max))
+
+
 def checks(p, mounting, preload, loads) -> dict:
     """Check margins ``margin_<check>`` and the physical values they compare (SI)."""
     span = p["span"]
@@ -97,6 +115,8 @@ def checks(p, mounting, preload, loads) -> dict:
     brg_max = f_max + loads["bearing_static_load"]
     bore = p["bearing_bore"]
     ceiling = pn.preload_ceiling(p["nut_dynamic_load"])
+    brg_static, brg_c0, brg_c0_need = bearing_static(p, f_max, loads["bearing_static_load"])
+    lift_need = p["nut_lift_off_safety"] * f_max
     margins = {
         "critical_speed": crit / omega,
         "buckling": buck / compression,
@@ -106,7 +126,7 @@ def checks(p, mounting, preload, loads) -> dict:
         "guide_life": guide_life / (p["required_life"] * p["mean_speed"]),
         "dn": p["dn_limit"] / dn,
         # a single nut has no preload to lose: the check does not apply (margin reported as inf)
-        "nut_lift_off": mx.if_else(p["nut_double"] > 0.5, lift / f_max, 1e9),
+        "nut_lift_off": mx.if_else(p["nut_double"] > 0.5, lift / lift_need, 1e9),
         # the vendors' preload ceiling (10 % Ca); a nut with play carries no preload
         "nut_preload": mx.if_else(p["nut_double"] > 0.5, ceiling / mx.fmax(preload, 1e-9), 1e9),
         "bearing_lift_off": p["bearing_lift_off"] / brg_max,
@@ -117,6 +137,7 @@ def checks(p, mounting, preload, loads) -> dict:
         # static safety of the guide blocks (largest block load of the load cases) and of the nut
         "guide_static": p["guide_static_load"] / (p["guide_static_safety"] * loads["guide_max_load"]),
         "nut_static": p["nut_static_load"] / (p["nut_static_safety"] * f_max),
+        "bearing_static": brg_static,
     }
     values = {
         "critical_speed": crit, "buckling_load": buck, "yield_load": yield_load, "life": life,
@@ -130,12 +151,13 @@ def checks(p, mounting, preload, loads) -> dict:
         "screw_yield": (yield_load, tension), "nut_life": (life, p["required_life"]),
         "bearing_life": (brg_life, p["required_life"]),
         "guide_life": (guide_life, p["required_life"] * p["mean_speed"]), "dn": (p["dn_limit"], dn),
-        "nut_lift_off": (lift, f_max), "nut_preload": (ceiling, preload),
+        "nut_lift_off": (lift, lift_need), "nut_preload": (ceiling, preload),
         "bearing_lift_off": (p["bearing_lift_off"], brg_max),
         "bearing_speed": (p["bearing_limiting_speed"], omega), "bearing_fit": (p["support_bore_max"], bore),
         "screw_length": (p["screw_max_length"], span),
         "guide_static": (p["guide_static_load"], p["guide_static_safety"] * loads["guide_max_load"]),
         "nut_static": (p["nut_static_load"], p["nut_static_safety"] * f_max),
+        "bearing_static": (brg_c0, brg_c0_need),
     }
     out = {f"margin_{k}": v for k, v in margins.items()}
     out.update(values)

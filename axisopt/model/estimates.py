@@ -59,7 +59,7 @@ class Estimate:
 
 def estimate_text(e: dict) -> str:
     """One estimate (:meth:`Estimate.to_dict`) as text: 'guide HG15 normal_rigidity 177 N/um (how)', or for an
-    axis value left out 'axis.bearing_housing_stiffness rigid (how)'."""
+    axis value left out 'axis.bearing_housing_stiffness 27,000 N/um (how)'."""
     shown = e["shown"]
     if e["slot"] == "axis":
         if shown is None:  # a part left out: rigid
@@ -76,12 +76,16 @@ def axis_value_text(value: float, unit: str = "") -> str:
     return f"{num} {unit}" if unit else num
 
 
-# Axis values a design may leave out that the model then takes as rigid: (YAML key, compliance parameter).
-# No vendor publishes them (THK's axial rigidity of the feed screw system has a term K_H for the nut and bearing
-# mounting, "as high as possible"), so a result that moves with them says it assumes them rigid.
-ASSUMED_RIGID = (("bearing_housing_stiffness", "housing_compliance"), ("nut_bracket_stiffness", "bracket_compliance"))
-RIGID_HOW = "not given; THK's mounting rigidity K_H"
-RIGID_PROBE = 1e-9  # [m/N]: the compliance :func:`resting_on` tries for a rigid part (1000 N/um)
+# Axis values a design may leave out that the model then estimates (model.params.mount_compliances): (YAML key,
+# compliance parameter, how).  No vendor publishes them for the machine's own parts (THK's axial rigidity of the
+# feed screw system has a term K_H for the nut and bearing mounting, "as high as possible"), so a result that
+# moves with them names the estimate.
+ASSUMED_MOUNTS = (
+    ("bearing_housing_stiffness", "housing_compliance",
+     "estimate: 26 x the bearing set, IBC TI-I-5010.2 units against their bare sets"),
+    ("nut_bracket_stiffness", "bracket_compliance",
+     "estimate: 4 x the nut, THK A-709's 80 % nut-mounting allowance once more"),
+)
 # Axis values a design may leave to a default that the life, torque and thermal checks read: (YAML key,
 # parameter, display unit, SI per unit, how, whether the axis left it to the default).
 ASSUMED_DEFAULTS = (
@@ -93,7 +97,13 @@ ASSUMED_DEFAULTS = (
      lambda a: a.temperature_rise is None and not a.duty_cycle),
     ("pretension_rise", "pretension_rise", "K", 1.0, "default design rise of the auto pretension; THK plans for "
      "2-5 degC", lambda a: a.pretension_rise is None and a.pretension is None and a.mounting == "fixed-fixed"),
+    ("load_factor", "load_factor", "", 1.0, "default: THK A-704 Table 19 by max speed, the upper end of the row",
+     lambda a: a.load_factor is None),
+    ("nut_lift_off_safety", "nut_lift_off_safety", "", 1.0,
+     "default: lift-off at 2.83 x preload, THK A-687, HIWIN F 3.6", lambda a: a.nut_lift_off_safety == 1.0),
 )
+# Part columns whose estimate an axis value replaces: (table, column) -> axis attribute.
+OVERRIDDEN_BY_AXIS = {("bearings", "static_safety"): "bearing_static_safety"}
 
 
 def _param_of(table: str, column: str) -> str | None:
@@ -119,15 +129,18 @@ def design_estimates(design) -> list:
                 continue
             val = row.get(col.name, math.nan) if hasattr(row, "get") else math.nan
             empty = val is None or (isinstance(val, float) and math.isnan(val))
+            if getattr(design.axis, OVERRIDDEN_BY_AXIS.get((table, col.name), "_none_"), None) is not None:
+                continue
             how = col.estimate if (empty and col.estimate) else col.estimated_in(status, row.get("source", ""))
             if how:
                 v = float(np.ravel(p[param])[0])
                 unit = DISPLAY_UNITS.get(col.kind, "")
                 shown = v / unit_factor(unit, col.kind) if unit else v
                 out.append(Estimate(slot, pid, col.name, param, v, how, unit, shown))
-    for key, param in ASSUMED_RIGID:
+    for key, param, how in ASSUMED_MOUNTS:
         if getattr(design.axis, key) is None:
-            out.append(Estimate("axis", "", key, param, 0.0, RIGID_HOW, "N/um", math.inf, probe=RIGID_PROBE))
+            c = float(np.ravel(p[param])[0])
+            out.append(Estimate("axis", "", key, param, c, how, "N/um", 1e-6 / c))
     for key, param, unit, factor, how, defaulted in ASSUMED_DEFAULTS:
         if defaulted(design.axis):
             v = float(np.ravel(p[param])[0])

@@ -150,6 +150,9 @@ CHECK_TABLE = (
     Check("coupling_speed", "coupling max speed / max screw speed", "coupling speed", "rpm", RPM, drive=True),
     Check("guide_static", "guide block C0 / (least f_S x largest block load)", "guide static", "kN", 1e-3),
     Check("nut_static", "nut C0a / (least f_S x largest axial force)", "nut static", "kN", 1e-3),
+    # the static set load (pretension, thermal force) rises with the nut preload through the heat balance
+    Check("bearing_static", "bearing C0a / (least S0 x largest axial load)", "bearing static", "kN", 1e-3,
+          preload=-1),
 )
 CHECK_RECORDS = MappingProxyType({c.name: c for c in CHECK_TABLE})
 

@@ -8,8 +8,9 @@ import numpy as np
 
 from ..catalog import ARRANGEMENT_ROWS, COLUMNS
 from ..design import PRETENSION_RISE, TEMPERATURE_RISE
-from ..physics.bearings import support_starting_torque_envelope
+from ..physics.bearings import STATIC_SAFETY_MACHINE_TOOL, housing_stiffness_default, support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
+from ..physics.nut import bracket_stiffness_default, nut_stiffness_catalog
 
 # A guide row without a rating basis: 50 km, the shorter of the vendors' two bases (a C defined for 100 km and
 # read as a 50 km rating halves the life, never doubles it)
@@ -37,6 +38,7 @@ PARAM_NAMES = (
     "guide_friction_coefficient", "guide_friction_viscous", "guide_damping", "guide_block_mass",
     "guide_rail_mass_per_length", "guide_block_price", "guide_rail_price_per_length", "guide_dynamic_load",
     "guide_preload", "guide_roller", "guide_rating_distance", "bearing_rows_strong", "bearing_rows_weak",
+    "bearing_static_load", "bearing_static_safety", "nut_lift_off_safety",
     # drive: motor, coupling, reduction (rotor_inertia at the motor; motor_inertia above is the motor side
     # reflected to the screw for the drive-train modes)
     "rotor_inertia", "has_motor", "motor_rated_torque", "motor_peak_torque", "motor_max_speed",
@@ -61,7 +63,8 @@ PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.pa
 # columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice; the text
 # columns type and arrangement as the numbers they stand for)
 _RULE_COLUMNS = MappingProxyType({
-    "screws": (), "nuts": ("type",), "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement"),
+    "screws": (), "nuts": ("type",), "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement",
+                                                "static_safety"),
     "guides": ("type", "rating_distance"),
     "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
                "peak_corner_speed", "peak_torque_at_max_speed"),
@@ -71,6 +74,7 @@ _RULE_COLUMNS = MappingProxyType({
 
 # rule columns and the parameter each one ends in (for naming the estimates a result rests on, model.estimates)
 RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque",
+                                ("bearings", "static_safety"): "bearing_static_safety",
                                 ("guides", "rating_distance"): "guide_rating_distance",
                                 ("motors", "peak_corner_speed"): "motor_peak_corner_speed",
                                 ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed"})
@@ -98,13 +102,11 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "table_mass": axis.moving_mass, "acceleration": axis.top_acceleration, "max_speed": axis.top_speed,
         "mean_speed": axis.mean_speed_eff, "axial_load": axis.axial_load,
         "mean_axial_load": axis.mean_axial_load_eff, "required_life": axis.required_life,
-        "load_factor": axis.load_factor, "guide_blocks": float(axis.guide_blocks), "rails": float(axis.rails),
+        "load_factor": axis.load_factor_eff, "guide_blocks": float(axis.guide_blocks), "rails": float(axis.rails),
         "rail_length": axis.stroke + axis.table_length, "normal_load": axis.normal_load,
         "viscosity": axis.lubricant_viscosity,
         "bearing_sets": 2.0 if mounting == "fixed-fixed" else 1.0,
         "gravity_axial": 1.0 if axis.orientation == "vertical" else 0.0,
-        "housing_compliance": _compliance(axis.bearing_housing_stiffness),
-        "bracket_compliance": _compliance(axis.nut_bracket_stiffness),
         # a duty cycle and no temperature_rise given: the heat balance (model.heat) sets the rise
         "temperature_rise": TEMPERATURE_RISE if axis.temperature_rise is None else axis.temperature_rise,
         "temperature_rise_auto": 1.0 if (axis.temperature_rise is None and axis.duty_cycle) else 0.0,
@@ -132,7 +134,13 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
         "bearing_rows_strong": _arrangement_rows(bearing, 0), "bearing_rows_weak": _arrangement_rows(bearing, 1),
         # the guide's rating basis where its vendor states it, else 50 km (the shorter basis: conservative)
         "guide_rating_distance": _listed_or(col(guide, "rating_distance"), GUIDE_RATING_DISTANCE),
+        # the least static safety of the set on its static rating: the axis's, else the rating's vendor's
+        # (catalog column static_safety), else Rexroth's machine-tool S0 (physics.bearings)
+        "bearing_static_safety": _listed_or(col(bearing, "static_safety"), STATIC_SAFETY_MACHINE_TOOL)
+        if axis.bearing_static_safety is None else axis.bearing_static_safety,
+        "nut_lift_off_safety": axis.nut_lift_off_safety,
     })
+    p.update(mount_compliances(axis, p))
     p.update(carriage_params(axis))
     p.update(drive_params(axis, motor, coupling))
     p["duty"] = axis.phases
@@ -210,9 +218,18 @@ def _listed_or(value, fallback):
     return out if np.ndim(out) else float(out)
 
 
-def _compliance(stiffness):
-    """1/k [m/N]; a part not given (None) is rigid."""
-    return 0.0 if stiffness is None else 1.0 / stiffness
+def mount_compliances(axis, p) -> dict:
+    """Compliance [m/N] of one bearing housing and of the nut bracket: the axis's values, else the published
+    estimates (never rigid): the housing 26 x its bearing set (IBC TI-I-5010.2 units against their bare sets,
+    :func:`axisopt.physics.bearings.housing_stiffness_default`), the bracket 4 x its nut at the catalog's
+    reference preload (THK A-709's 80 % nut-mounting allowance once more,
+    :func:`axisopt.physics.nut.bracket_stiffness_default`).  Floats or arrays (one per part)."""
+    housing = housing_stiffness_default(p["bearing_stiffness"]) if axis.bearing_housing_stiffness is None \
+        else axis.bearing_housing_stiffness
+    nut = nut_stiffness_catalog(p["nut_stiffness"], p["nut_stiffness_preload"], p["nut_dynamic_load"],
+                                reference_preload=p["nut_stiffness_preload"])
+    bracket = bracket_stiffness_default(nut) if axis.nut_bracket_stiffness is None else axis.nut_bracket_stiffness
+    return {"housing_compliance": 1.0 / housing, "bracket_compliance": 1.0 / bracket}
 
 
 def _getter(row, name):

@@ -14,7 +14,9 @@ __all__ = [
     "radial_stiffness_eq20", "radial_stiffness_palmgren", "radial_stiffness_kramer",
     "RADIAL_STIFFNESS_METHODS",
     "bearing_radial_stiffness", "bearing_friction_torque", "SUPPORT_TORQUE_ENVELOPE",
-    "support_starting_torque_envelope",
+    "support_starting_torque_envelope", "NSK_PERMISSIBLE_SHARE", "STATIC_SAFETY_MACHINE_TOOL",
+    "STATIC_SAFETY_IBC", "row_static_rating", "support_static_margin", "HOUSING_UNIT_RATIO",
+    "housing_stiffness_default",
 ]
 
 # Seed Table 2, c_type of eq. 20 by angular-contact series (C: 15 deg, AC: 25 deg).  The extracted table is
@@ -180,3 +182,68 @@ def support_starting_torque_envelope(preload, mean_diameter, coefficient=SUPPORT
     Returns M [N*m].
     """
     return coefficient * preload * mean_diameter
+
+
+# Static safety of support-bearing sets (issue 38).  The vendors rate the sets' static capacity three ways:
+# NSK TAC B (and HIWIN WBK, which carry them) print a "limiting axial load" whose permissible share is 0.7
+# (NSK super-precision bearings, p. 111 footnote 2: "the permissible axial load equals 0.7 x the limiting
+# axial load"); THK prints the support unit's "permissible load", which "indicates the static permissible
+# load" (General Catalog A-806 note), i.e. safety 1 on it; a true basic static rating C0a takes
+# S0 = C0a / P0a >= 4 for machine tools (Bosch Rexroth R310RU 3301 p. 125, its LGF/LGN support bearings;
+# IBC TI-I-5010.2 eq. 2.6 asks S0a > 2.5 for its BS bearings in general use).
+NSK_PERMISSIBLE_SHARE = 0.7
+STATIC_SAFETY_MACHINE_TOOL = 4.0
+STATIC_SAFETY_IBC = 2.5
+
+
+def row_static_rating(set_rating, rows_loaded, rows_rated):
+    r"""Static (or limiting) axial rating of the rows of a bearing set that carry one load direction, from
+    the set's printed rating (vendors print the direction with the most rows).
+
+    .. math:: C_{0,i} = C_{0,set}\, i / i_{set}
+
+    set_rating : C0_set [N], printed for ``rows_rated`` rows loaded together;  rows_loaded : i [-].
+    Returns C0_i [N].  Sources: IBC TI-I-5010.2 eq. 2.5 (Cao_set = i Cao_single); NSK super-precision
+    bearings Table 1.2 (multi-row sets: C0 x 2, 3, 4 for 2, 3, 4 rows; TAC B limiting axial load 40.5 /
+    81.5 / 122 kN for 25TAC62B, 1 / 2 / 3 rows); NACHI TAB note 3 (x 2 or 3).  The static rating grows with
+    the row count, unlike the dynamic one (i^0.7, :func:`axisopt.physics.life.row_group_rating`).
+    """
+    return set_rating * rows_loaded / rows_rated
+
+
+def support_static_margin(rating_strong, rating_weak, push, back, safety):
+    r"""Static safety margin of a support-bearing set: the least of the two load directions' ratings over
+    the safety times the largest axial load in that direction.
+
+    .. math:: m = \min\left(\frac{C_{0,s}}{S_0 F_{push}},\ \frac{C_{0,w}}{S_0 F_{back}}\right)
+
+    rating_strong, rating_weak : C0 of the rows carrying the static set load's direction and of the others
+        [N] (:func:`row_static_rating`; the set is mounted with its stronger rows facing the static load)
+    push : the largest axial load the strong rows take, max axial force + static set load (pretension,
+        thermal force) [N];  back : the largest the other rows take [N] (> 0)
+    safety : S0, the least static safety the rating's vendor asks [-].  Returns m (>= 1 passes).
+    Sources: IBC TI-I-5010.2 eq. 2.6 (S0a = C0a / P0a); Rexroth R310RU 3301 eq. 25 (S0 = C0 / F0); NSK
+    p. 111 (permissible axial load = 0.7 x limiting axial load).
+    """
+    return mx.fmin(rating_strong / (safety * push), rating_weak / (safety * back))
+
+
+# Axial stiffness of a precision support-bearing unit (housing, locknut) against its bare bearing set: IBC
+# TI-I-5010.2 prints both for the same sets and preloads, bare duplex sets p. 9 and flange/pillow-block units
+# p. 22 (sec. 4.6); the units read 0.963-0.992 x the bare sets.  The least ratio, the heavy series BS 35 at
+# light preload (3200 N: bare 1090 N/um, unit BSBU 35 DB 128 1050 N/um), is the default: the housing is then
+# 26.3 x the set.  An estimate for other vendors' housings; the joint to the machine bed is not included.
+HOUSING_UNIT_RATIO = 1050.0 / 1090.0
+
+
+def housing_stiffness_default(set_stiffness, unit_ratio=HOUSING_UNIT_RATIO):
+    r"""Axial stiffness of a support-bearing housing whose design gives none, from the published ratio of a
+    bearing unit's stiffness to its bare bearing set's.
+
+    .. math:: k_H = k_B\, r / (1 - r),\qquad 1/k_{unit} = 1/k_B + 1/k_H = 1 / (r k_B)
+
+    set_stiffness : k_B, the bearing set's axial stiffness [N/m];  unit_ratio : r = k_unit / k_B [-]
+    (:data:`HOUSING_UNIT_RATIO`, IBC TI-I-5010.2 p. 9 and p. 22).  Returns k_H [N/m].  An estimate: the
+    ratio is IBC's for its own units, without the bolted joint to the bed.
+    """
+    return set_stiffness * unit_ratio / (1.0 - unit_ratio)

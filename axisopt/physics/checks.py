@@ -9,7 +9,7 @@ from axisopt.physics.screw import E_STEEL, RHO_STEEL, choose
 
 __all__ = [
     "CRITICAL_SPEED_LAMBDA1", "BUCKLING_ETA1", "critical_speed", "buckling_load",
-    "life_revolutions", "life_time", "dn_value",
+    "life_revolutions", "life_time", "dn_value", "THK_LOAD_FACTOR_TABLE", "load_factor_default",
 ]
 
 # THK catalog A15-32 eq. 7: lambda_1 by mounting.  lambda_2 = 3.4 / 9.7 / 15.1 / 21.9 includes the 0.8 factor.
@@ -21,6 +21,33 @@ CRITICAL_SPEED_LAMBDA1 = MappingProxyType(
 BUCKLING_ETA1 = MappingProxyType(
     {"fixed-free": 0.25, "supported-supported": 1.0, "fixed-supported": 2.0, "fixed-fixed": 4.0}
 )
+
+
+# THK General Catalog A-704 Table 19 "Load Factor (fW)" (the same as Table 3, A-12, for LM guides): rows by
+# vibration/impact and speed, (top of the speed range [m/s], fW range).  HIWIN H-BS p. 25 gives fp 1.1-1.2
+# without impact, 1.3-1.8 in normal operation, 2-3 with high impact and vibration.
+THK_LOAD_FACTOR_TABLE = (
+    (0.25, (1.0, 1.2)),  # faint vibration, very low speed, V <= 0.25 m/s
+    (1.0, (1.2, 1.5)),  # weak, slow, 0.25 < V <= 1 m/s
+    (2.0, (1.5, 2.0)),  # medium, 1 < V <= 2 m/s
+    (float("inf"), (2.0, 3.5)),  # strong, high speed, V > 2 m/s
+)
+
+
+def load_factor_default(speed):
+    r"""Load factor f_W of the life calculations for an axis whose design gives none: the upper end of the
+    row of THK's Table 19 that the axis's top speed falls in.
+
+    .. math:: f_W = 1.2\ (V \le 0.25),\ 1.5\ (\le 1),\ 2.0\ (\le 2),\ 3.5\ (> 2\ \mathrm{m/s})
+
+    speed : V, the top table speed [m/s] (a float: the row is a choice, not a formula).  Returns f_W [-].
+    Source: THK General Catalog A-704 Table 19; THK's worked examples take the upper end of the row: f_W =
+    1.5 at V_max = 1 m/s (A-729, high-speed transfer) and at 0.3 m/s (A-742, vertical conveyance).
+    """
+    for top, (_, upper) in THK_LOAD_FACTOR_TABLE:
+        if speed <= top:
+            return upper
+    return THK_LOAD_FACTOR_TABLE[-1][1][1]
 
 
 def critical_speed(root_diameter, span, mounting, safety_factor=0.8, youngs_modulus=E_STEEL,

@@ -156,9 +156,11 @@ def evaluation_table(ev: Evaluation) -> str:
     weakest = ev.weakest
     sets = 2 if a.mounting == "fixed-fixed" else 1
     housing = "housing rigid" if v["c_housing"] == 0 else f"housing {1 / v['c_housing'] / N_PER_UM:,.0f} N/um"
+    housing = "housing estimated" if a.bearing_housing_stiffness is None else housing
     labels = {"bearings": f"bearings ({sets} set{'s' if sets > 1 else ''}, {housing})",
               "screw": "screw tension", "screw torsion": "screw torsion (lead)", "coupling": "coupling (lead)",
-              "nut": f"nut at {v['max_axial_force'] / 1e3:.1f} kN", "nut bracket": "nut bracket"}
+              "nut": f"nut at {v['max_axial_force'] / 1e3:.1f} kN",
+              "nut bracket": "nut bracket (estimate)" if a.nut_bracket_stiffness is None else "nut bracket"}
     lines.append(f"axial stiffness chain at its softest point ({(ev.x[i_min] - a.start_offset) * 1e3:.0f} mm "
                  f"along the stroke)")
     lines.append(f"  {'component':<34}{'N/um':>10}{'um/kN':>9}{'share':>8}")
@@ -233,7 +235,7 @@ NEAR_LIMIT = 1.1  # a check with margin below this counts as near its limit
 # (the temperature rise has its own line: the thermal block says where it comes from)
 _DEFAULT_VALUES = {"mean_axial_load": ("mean_axial_load_eff", "N", 1.0),
                    "mean_speed": ("mean_speed_eff", "m/min", 1 / 60),
-                   "required_life": ("required_life", "h", 3600.0), "load_factor": ("load_factor", "", 1.0)}
+                   "required_life": ("required_life", "h", 3600.0), "load_factor": ("load_factor_eff", "", 1.0)}
 
 
 def _default_shown(axis, key: str) -> str:

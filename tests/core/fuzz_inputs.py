@@ -356,6 +356,7 @@ AXIS_OPTIONAL = {
     "bearing_housing_stiffness": "2000 N/um", "nut_bracket_stiffness": "1500 N/um", "temperature_rise": "3 K",
     "pretension": "auto", "positions": 41, "jerk": "100 m/s^3", "reduction_ratio": 2, "reduction_efficiency": 0.95,
     "reduction_inertia": "0.4e-4 kg.m^2", "max_inertia_ratio": 5, "brake": "yes", "brake_safety": 2,
+    "bearing_static_safety": 4, "nut_lift_off_safety": 1.2,
     "duty_cycle": [{"move": "300 mm"}, {"move": "350 mm", "speed": "2 m/min", "force": "2500 N"}, {"dwell": "1 s"},
                    {"move": "-650 mm", "acceleration": "4 m/s^2", "jerk": "80 m/s^3"}],
 }

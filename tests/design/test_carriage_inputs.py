@@ -102,3 +102,41 @@ def _write(tmp_path, text):
     f = tmp_path / "x.yaml"
     f.write_text(text)
     return f
+
+
+# issue 38: the support-bearing static safety, the nut lift-off safety, the load factor and the mounting stiffness
+@pytest.mark.parametrize(("edit", "key"), [
+    ("  bearing_static_safety: 0.5\n", "axis.bearing_static_safety"),
+    ("  bearing_static_safety: .nan\n", "axis.bearing_static_safety"),
+    ("  bearing_static_safety: 1e300\n", "axis.bearing_static_safety"),
+    ("  bearing_static_safety: -4\n", "axis.bearing_static_safety"),
+    ("  nut_lift_off_safety: 0.9\n", "axis.nut_lift_off_safety"),
+    ("  nut_lift_off_safety: .inf\n", "axis.nut_lift_off_safety"),
+    ("  nut_lift_off_safety: two\n", "axis.nut_lift_off_safety"),
+    ("  bearing_static_safty: 2\n", "bearing_static_safty"),
+    ("  bearing_housing_stiffness: -2000 N/um\n", "axis.bearing_housing_stiffness"),
+    ("  nut_bracket_stiffness: 1500 N\n", "axis.nut_bracket_stiffness"),
+    ("  nut_bracket_stiffness: 1e300 N/um\n", "axis.nut_bracket_stiffness"),
+])
+def test_support_keys_reject_bad_values(tmp_path, capsys, edit, key):
+    rc, err, f = _run(tmp_path, capsys, DESIGN.replace("  rails: 2\n", "  rails: 2\n" + edit))
+    assert rc == 2
+    assert len(err.splitlines()) == 1 and "Traceback" not in err
+    assert str(f) in err and key in err
+
+
+def test_bearing_static_safety_overrides_the_vendor_figure(tmp_path, capsys):
+    """The check's need scales with the safety the axis asks; without one, the rating's vendor's (NSK 1/0.7)."""
+    base = load_design(_file(tmp_path, DESIGN, "a.yaml"))
+    asked = load_design(_file(tmp_path, DESIGN.replace("  rails: 2\n", "  rails: 2\n  bearing_static_safety: 4\n"),
+                               "b.yaml"))
+    s0 = float(base.bearing["static_safety"]) if np.isfinite(float(base.bearing["static_safety"])) else 4.0
+    m0 = float(model.evaluate(base)["margin_bearing_static"])
+    m1 = float(model.evaluate(asked)["margin_bearing_static"])
+    assert m1 == pytest.approx(m0 * s0 / 4.0, rel=1e-9)
+
+
+def _file(tmp_path, text, name):
+    f = tmp_path / name
+    f.write_text(text)
+    return f

@@ -217,8 +217,8 @@ def _close(readme_value: str, printed: str) -> bool:
 XJTU_UP = "axisopt diagnose problems/data/xjtu/xjtu_up_friction.csv --design problems/data/xjtu/xjtu_rig.yaml"
 # (page, command, regex on the page's prose, regex on the output): each group pair is one figure
 FIGURES = [
-    ("docs/solve.md", "axisopt solve problems/teaching_problem.yaml",
-     r"raising max drag torque to ([\d.]+) N\.m buys \+([\d.]+) N/um\" on the teaching problem",
+    ("docs/solve.md", "axisopt solve problems/vertical_problem.yaml",
+     r"raising max drag torque to ([\d.]+) N\.m buys \+([\d.]+) N/um\" on the vertical problem",
      r"raising max drag torque to ([\d.]+) N\.m buys \+([\d.]+) N/um"),
     ("docs/diagnose.md", "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
      r"`support_condition` wins \(dBIC (-[\d.]+), held-out gain (\d+) %\)",

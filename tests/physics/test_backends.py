@@ -27,7 +27,8 @@ from axisopt.physics import (
 
 # complex numpy-only FRFs; selector helper (no numbers)
 # carriage.mean_load takes sequences: tests/physics/test_carriage_published.py checks its backends
-EXCLUDED = {"dynamic_compliance", "drive_train_compliance", "choose", "mean_load"}
+# load_factor_default picks a table row by a float speed (a choice, not a formula)
+EXCLUDED = {"dynamic_compliance", "drive_train_compliance", "choose", "mean_load", "load_factor_default"}
 SCALE = (0.9, 1.0, 1.1)
 RAD15 = math.radians(15.0)
 
@@ -141,6 +142,11 @@ CASES = [
         ),
     ),
     case(bearings.support_starting_torque_envelope, kw=dict(preload=(500.0, 2000.0, 3900.0), mean_diameter=0.056)),
+    case(bearings.row_static_rating, kw=dict(set_rating=81.5e3, rows_loaded=(1.0, 2.0, 1.0), rows_rated=2.0)),
+    case(bearings.support_static_margin, kw=dict(rating_strong=81.5e3, rating_weak=40.75e3, push=(30e3, 10e3, 50e3),
+                                                 back=(10e3, 20e3, 5e3), safety=1.4285714)),
+    case(bearings.housing_stiffness_default, kw=dict(set_stiffness=1e9)),
+    case(nut.bracket_stiffness_default, kw=dict(nut_stiffness=5e8)),
     case(guides.guide_tangential_stiffness, kw=dict(normal_stiffness=4e8)),
     case(guides.guide_ball_stiffness, kw=dict(preload_per_ball=50.0, deflection_constant=1e-7)),
     case(

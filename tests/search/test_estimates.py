@@ -24,6 +24,7 @@ axis:
   mean_axial_load: 1500 N
   acceleration: 4 m/s^2
   required_life: 2000 h
+  load_factor: 1.2
 objective: stiffness
 limits:
   max_drag_torque: 2 N.m
@@ -93,15 +94,18 @@ def test_estimated_exclude_searches_vendor_values_only(tmp_path):
     assert res.best.bearing == VENDOR and all(c.bearing != COPY for c in res.runners_up)
 
 
-def test_rigid_housing_and_bracket_are_named_unless_given(tmp_path):
+def test_estimated_housing_and_bracket_are_named_unless_given(tmp_path):
     # the stiffness optimum's objective moves with the housing and the nut bracket (THK's K_H term): left out,
-    # they are taken as rigid and the certificate says so; given, they are the user's values and not named
+    # they are estimated (issue 38: IBC's units, THK's nut-mounting allowance; never rigid) and the certificate
+    # names them with their values; given, they are the user's values and not named
     res = solve(_problem(tmp_path, [VENDOR]), top=1, sensitivities=False)
     rest = {r["what"]: r for r in res.certificate.estimated}
-    named = {e["column"] for e in rest["objective"]["estimates"] if e["slot"] == "axis"}
-    assert named == {"bearing_housing_stiffness", "nut_bracket_stiffness"}
-    e = next(e for e in rest["objective"]["estimates"] if e["slot"] == "axis")
-    assert e["shown"] is None and "K_H" in e["how"]  # JSON-safe: no infinity
+    named = {e["column"]: e for e in rest["objective"]["estimates"] if e["slot"] == "axis"}
+    assert set(named) == {"bearing_housing_stiffness", "nut_bracket_stiffness"}
+    # NSK-40TAC72B-DF-C10 1230 N/um (NSK-SP p. 168): its housing 1050/40 x that
+    assert named["bearing_housing_stiffness"]["shown"] == pytest.approx(1230 * 1050 / 40, rel=1e-9)
+    assert "IBC" in named["bearing_housing_stiffness"]["how"] and "THK" in named["nut_bracket_stiffness"]["how"]
+    assert named["nut_bracket_stiffness"]["shown"] > 0
     path = tmp_path / "p.yaml"
     path.write_text(path.read_text().replace("axis:\n", "axis:\n  bearing_housing_stiffness: 2000 N/um\n"
                                              "  nut_bracket_stiffness: 1500 N/um\n", 1))
@@ -120,14 +124,16 @@ def test_a_binding_check_names_the_defaults_it_reads(tmp_path):
     res = solve(load_problem(src), top=1, sensitivities=False)
     rest = {r["what"]: r for r in res.certificate.estimated}
     named = {e["column"]: e for e in rest["check nut_life"]["estimates"]}
-    assert set(named) == {"mean_axial_load", "mean_speed"}
+    # issue 38: highspeed gives its mean speed; its load factor is THK Table 19's for 80 m/min
+    assert set(named) == {"mean_axial_load", "load_factor"}
+    assert named["load_factor"]["shown"] == pytest.approx(2.0) and "Table 19" in named["load_factor"]["how"]
     assert named["mean_axial_load"]["shown"] == pytest.approx(500.0) and "third" in named["mean_axial_load"]["how"]
     f = tmp_path / "p.yaml"
     f.write_text(src.read_text(encoding="utf-8").replace("axis:\n", "axis:\n  mean_axial_load: 500 N\n", 1),
                  encoding="utf-8")
     res = solve(load_problem(f), top=1, sensitivities=False)
     rest = {r["what"]: r for r in res.certificate.estimated}
-    assert {e["column"] for e in rest["check nut_life"]["estimates"]} == {"mean_speed"}
+    assert {e["column"] for e in rest["check nut_life"]["estimates"]} == {"load_factor"}
 
 
 def test_estimated_exclude_names_itself_when_it_removes_every_motor(tmp_path, capsys):

@@ -39,7 +39,7 @@ def test_in_process_run_records_every_case(reference):
     assert len(ok) == 6 and (bad["limits.max_cost [EUR]"] == 600.0).all()
     assert (bad["status"] == "infeasible").all() and bad["reason"].str.len().gt(0).all()
     assert ok["proven"].all() and ok["nut"].notna().all() and (ok["min_stiffness [N/um]"] > 0).all()
-    assert set(ok["weakest_link"]) <= {"screw", "nut", "bearings"}
+    assert set(ok["weakest_link"]) <= {"screw", "screw torsion", "nut", "bearings"}
     out = s.out_dir
     for f in ("results.csv", "report.md", "study.json"):
         assert os.path.exists(os.path.join(out, f))
