@@ -46,7 +46,6 @@ from vendor_procedures import UNITS, Row, quantity  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 TOLERANCE = 0.02  # agreement of vendor and axisopt margins where both use the same method
-AXISOPT_LOAD_FACTOR = 1.2  # axisopt's documented default fw (docs/files.md), for the same-basis comparison
 G = 9.80665
 
 
@@ -234,7 +233,7 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     nm = vp.mean_speed_rpm(phases, lead) if cycle_given else ax.mean_speed * 60 / (lead * 1e-3)
     fw_nut, fw_src = vp.nut_load_factor(nut["vendor"], ax.v_max, ax.load_factor)
     life, src = vp.nut_life_h(nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_nut, nm)
-    fw_ax = ax.load_factor if ax.load_factor is not None else AXISOPT_LOAD_FACTOR
+    fw_ax = float(ev["load_factor"])  # the fw axisopt's life checks read (its output), for the same-basis rows
     life_ax = vp.nut_life_h(nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_ax, nm)[0]
     rows.append(Row("nut L10 life", "h", life, ax.life_h, life / ax.life_h, theirs("nut_life"),
                     their_margin("nut_life"), "", src, f"{fw_src}; mean speed {nm:.0f} rpm"
@@ -249,9 +248,12 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     their_margin("bearing_life"), "", src, bnote))
     perm, src = vp.bearing_permissible_load(brg)
     load_b = f_max + pre_vendor
+    generic = src.startswith("IBC")  # a plain C0a without its vendor's factor: each side picks a general S0
     rows.append(Row("support bearing static", "kN", perm / 1e3, load_b / 1e3, perm / load_b,
-                    theirs("bearing_static"), their_margin("bearing_static"), "", src,
-                    "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")))
+                    theirs("bearing_static"), their_margin("bearing_static"), "CONV" if generic else "", src,
+                    "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")
+                    + ("; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
+                       "Rexroth's S0 4 for machine tools" if generic else "")))
     # 6 guides: static safety and travel life at the vendor's rating distance
     blocks = vp.block_loads_max(ax, moving, a_peak)
     fs_g, src = vp.guide_static_safety(guide["vendor"], guide["type"])
@@ -280,6 +282,8 @@ def check_design(design: dict, ev: dict) -> list[Row]:
         rows += vp.drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, phases, preload,
                               n_sets, ev, cycle_given)
     for r in rows:
+        if r.kind == "CONV":  # set where the row is made: a convention of this design's parts
+            continue
         same = not any(r.check.startswith(c) for c in vp.CONVENTIONS)
         if r.same_basis is not None:
             r.kind = compare(r.same_basis, r.axisopt, same)

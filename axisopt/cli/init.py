@@ -110,10 +110,10 @@ continuous:
   screw: HIWIN-G-50x20-b6p35
   nut: HIWIN-R50-20K4-FDC-b635
   bearing: NSK-40TAC90B-DFF-C9
-  guide: HIWIN-RG15-ZA
+  guide: HIWIN-HG20-ZA
   motor: SGM7G-20A
   coupling: RINGFEDER-GWB-AKN-80
-  nut_preload: 4400 N
+  nut_preload: 3700 N
 """,
         sweep=("axis.moving_mass", "[300 kg, 450 kg, 600 kg]", "light, usual and heavy workpieces"),
     ),
@@ -217,10 +217,10 @@ continuous:
   nut_preload: {min: 200 N, max: 30 kN}
 """,
         parts="""\
-  screw: HIWIN-G-50x40-b6p35
-  nut: HIWIN-R50-40K3-FDC
-  bearing: NSK-40TAC90B-DFF-C9  # light preload (C9): a standard-preload set misses 15 000 h here
-  guide: HIWIN-HG30-ZA        # size 30: the cut 600 mm up, 500 mm across tilts the gantry
+  screw: HIWIN-G-63x40-b6p35
+  nut: HIWIN-R63-40K2-FDC
+  bearing: NSK-50TAC100B-DFF-C9  # light preload (C9): a standard-preload set misses 15 000 h here
+  guide: HIWIN-HG35-ZA        # size 35: the cut 600 mm up, 500 mm across tilts the gantry
   motor: HC702
   coupling: RINGFEDER-GWB-AKN-300
   nut_preload: 2500 N

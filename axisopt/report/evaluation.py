@@ -109,6 +109,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "axial_torsional_frequency_Hz": np.asarray(v["f_axial_torsional"]).tolist(),
         "damping_ratio": np.asarray(v["damping_ratio"]).tolist(),
         "assumed_defaults": list(ev.design.assumed),
+        "load_factor": axis.load_factor_eff,  # the fw the life checks read (given, or THK A-704 Table 19)
         # carriage (issue 25)
         "min_tool_stiffness_N_per_um": ev.minimum("k_tool")[0] / N_PER_UM,
         "tool_stiffness_N_per_um": (np.asarray(v["k_tool"]) / N_PER_UM).tolist(),

@@ -1114,11 +1114,11 @@ def make_case(ch, kind: str | None = None, fast: bool = True) -> Case:
 OUTCOMES = ("ok", "negative", "clean error", "multi-line error", "traceback", "hang", "bad output", "crash",
             "silent negative", "warning")
 BAD = ("multi-line error", "traceback", "hang", "bad output", "crash", "silent negative", "warning")
-# leaf keys of a --json output that must not be negative
+# leaf keys of a --json output that must not be negative (the path decides), and the signed ones (the last key)
 _NON_NEGATIVE = re.compile(r"(mass|stiffness|N_per_um|length|stroke|frequency|_Hz|^cost$|price|position|inertia|"
                            r"preload|rigidity|life|noise_floor|rms|drag_torque|friction)", re.I)
 _SIGNED = re.compile(r"(dBIC|gain|delta|change|residual|displacement|margin|value|offset|thermal|objective|eta|"
-                     r"phase|real|imag)", re.I)
+                     r"phase|real|imag|direction|acceleration|axial_load)", re.I)
 
 
 def _bad_const(name):
