@@ -319,6 +319,38 @@ def table(rows: list[Row]) -> str:
     return "\n".join(lines)
 
 
+# the results table of docs/validation.md: (short label, the checker's check name)
+SUMMARY = (("crit. speed", "critical speed"), ("DN", "DN value"), ("buckling", "buckling"),
+           ("P2 147 MPa", "tensile/compressive load"), ("nut C0a/F", "nut static safety C0a/Famax"),
+           ("lift-off", "nut lift-off"), ("preload<=10%Ca", "nut preload ceiling"), ("nut life", "nut L10 life"),
+           ("brg life", "support bearing L10 life"), ("brg static", "support bearing static"),
+           ("guide C0/P", "guide static safety C0/P"), ("guide km", "guide L10 travel"),
+           ("K axial", "axial rigidity (screw, nut, bearing, K_H)"), ("J ratio", "inertia ratio load/rotor"),
+           ("T rms", "RMS torque"), ("T hold", "holding torque at a stop"))
+
+
+def summary_cell(r: dict | None) -> str:
+    """One cell of the results table from a row's JSON: 'margin PASS (axisopt's margin) KIND'; for the rigidity
+    'vendor / axisopt' N/um."""
+    if r is None:
+        return "\u2013"
+    if r["margin"] is None:
+        return f"{fmt(r['vendor'])} / {fmt(r['axisopt'])} {r['kind']}"
+    verdict = "PASS" if r["passes"] else "**FAIL**"
+    theirs = f" ({fmt(r['axis_margin'])})" if r["axis_margin"] is not None else ""
+    return f"{fmt(r['margin'])} {verdict}{theirs} {r['kind']}"
+
+
+def summary_table(results: dict) -> str:
+    """The Markdown results table of docs/validation.md from {column name: the rows' JSON}."""
+    names = list(results)
+    lines = ["| check | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
+    for label, check in SUMMARY:
+        cells = [summary_cell(next((r for r in results[n] if r["check"] == check), None)) for n in names]
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("file", help="problem or design YAML")

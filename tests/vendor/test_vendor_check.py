@@ -30,7 +30,7 @@ WIDER = {
                                 "in the load"),
     ("teaching_design", "critical speed"): (0.08, "fixed-free: HIWIN's f_n 0.147 (F 3.27) is 6.3 % below THK's "
                                                   "lambda_2 3.4 (A-696), which axisopt applies"),
-    ("vmc_x_problem", "nut L10 life"): (0.05, "axisopt adds the IKO roller blocks' viscous friction at rapid speed "
+    ("vmc_x_problem", "nut L10 life"): (0.05, "axisopt adds the roller blocks' viscous friction at rapid speed "
                                               "(39 N.s/m x 4 blocks) to the life loads; THK's f is constant"),
     ("highspeed_problem", "guide L10 travel"): (0.08, "the most loaded block's mean load differs by 2 % (the "
                                                       "checker's rigid-table statics with the screw at the rail "
@@ -116,3 +116,20 @@ def test_checker_imports_nothing_of_axisopt():
         names = [a.name for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names]
         names += [n.module or "" for n in ast.walk(tree) if isinstance(n, ast.ImportFrom)]
         assert not [m for m in names if m.split(".")[0] == "axisopt"], path
+
+
+COLUMNS = {"teaching_problem": "teaching", "highspeed_problem": "highspeed", "gantry_problem": "gantry",
+           "vertical_problem": "vertical", "vmc_x_problem": "vmc_x", "duty_cycle_problem": "duty_cycle",
+           "teaching_design": "teaching design", "vmc_x_design": "vmc_x design"}
+
+
+def test_docs_results_table_is_what_the_checker_prints(tmp_path_factory):
+    """docs/validation.md's results table, cell by cell, from the checker's rows on every shipped file."""
+    sys.path.insert(0, str(ROOT / "tools"))
+    try:
+        from vendor_check import summary_table
+    finally:
+        sys.path.pop(0)
+    want = summary_table({COLUMNS[n]: rows(n, tmp_path_factory) for n in FILES})
+    text = (ROOT / "docs" / "validation.md").read_text(encoding="utf-8")
+    assert want in text, "docs/validation.md results table differs; the checker prints:\n" + want
