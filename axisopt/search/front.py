@@ -197,8 +197,9 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> li
     """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
     (re-solved with the default method; a discrete problem has no meaningful multipliers).
 
-    ``space``: the problem's search space, if built (the part tables do not depend on the limits, so every
-    re-solve reuses it and its cached parameter arrays)."""
+    ``space``: the problem's search space, if built (the part tables do not depend on the limits, so a re-solve
+    reuses it and its cached parameter arrays, unless the relaxed limit is also an axis value the parts' checks
+    read, as ``min_life`` is when the axis sets no ``required_life``)."""
     from .bestfirst import bound_order_search
     from .parts import build_space
     from .polish import polish
@@ -217,10 +218,13 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> li
         unit, factor = lim.unit, lim.factor
         relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
         # the optimum meets the relaxed limit too: only designs that can reach it are searched (none: no gain)
-        loose = build_constraints(problem.with_limit(key, relaxed))
-        ex, _stats = bound_order_search(space, loose, spec, top=1, incumbent=best.objective)
+        relaxed_problem = problem.with_limit(key, relaxed)
+        loose = build_constraints(relaxed_problem)
+        # a limit that is also an axis value (min_life: the life the checks need) changes the part parameters
+        sp = space if relaxed_problem.axis == problem.axis else build_space(relaxed_problem)
+        ex, _stats = bound_order_search(sp, loose, spec, top=1, incumbent=best.objective)
         if np.isfinite(ex.objective).any():
-            gain = polish(space, ex, loose, spec, 1)[0][0].objective - best.objective
+            gain = polish(sp, ex, loose, spec, 1)[0][0].objective - best.objective
         else:
             gain = 0.0
         tol = 1e-6 * max(abs(best.objective), 1e-9)

@@ -58,3 +58,14 @@ def test_the_defaults_line_shows_the_values_the_life_checks_read(capsys):
     assert "mean_axial_load 666.7 N" in text and "load_factor 1.5" in text  # THK Table 19 at 30 m/min
     assert "mean_speed" not in text
     assert "required_life" not in text  # it follows limits.min_life: not a default
+
+
+def test_the_life_limits_sensitivity_is_the_gain_of_solving_it_relaxed():
+    # relaxing min_life relaxes the checks' required life too (a new search space: the parts' parameters carry
+    # it); the sensitivity table once re-solved on the old space and showed +0 where the life binds
+    p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
+    res = solve(p)
+    row = next(b for b in res.binding if b.limit == "min_life")
+    relaxed = solve(p.with_limit("min_life", 10800 * H), sensitivities=False)
+    assert row.objective_gain == pytest.approx(relaxed.best.objective - res.best.objective, rel=1e-6, abs=1e-9)
+    assert row.binding and row.objective_gain > 0.0
