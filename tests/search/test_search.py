@@ -116,6 +116,40 @@ def test_default_equals_exhaustive_with_drive(seed):
             assert model.passes(ev.values[f"margin_{c}"]), c
 
 
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_default_equals_exhaustive_with_phase_masses_and_forces(seed):
+    """The vendors' life loads per phase (THK A-725/A-739) with a workpiece unloaded mid-cycle (a phase's own
+    moving mass), a cutting move's process force and a dwell held against a force, horizontal and vertical,
+    motor and coupling searched, the vendors' load factor by speed and the estimated mounts: the default method
+    still equals exhaustive enumeration."""
+    from dataclasses import replace
+
+    from axisopt.physics.motion import Segment
+
+    rng = np.random.default_rng(500 + seed)
+    cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
+    make_double(cat)
+    cat = add_drives(cat, rng, n_motors=4, n_couplings=2)
+    vertical = seed % 2 == 1
+    mass = float(rng.uniform(60, 150) if vertical else rng.uniform(150, 400))
+    duty = (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+            Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=float(rng.uniform(500, 2500))),
+            Segment("dwell", duration=1.0, force=float(rng.uniform(0, 500)), moving_mass=0.6 * mass),
+            Segment("move", distance=-0.2, speed=0.3, acceleration=4.0, moving_mass=0.6 * mass))
+    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
+    p = make_problem(cat, limits=limits, moving_mass=mass, axial_load=1500.0 if vertical else 3000.0,
+                     orientation="vertical" if vertical else "horizontal", duty_cycle=duty, load_factor=None,
+                     required_life=float(rng.uniform(5e3, 2e4)) * 3600)
+    p = replace(p, restrictions=replace(p.restrictions, drive=True),
+                margins=tuple((c, 1.0) for c in model.CHECKS))
+    d = solve(p, "default", top=2, sensitivities=False)
+    e = solve(p, "exhaustive", top=2, sensitivities=False)
+    assert (d.best is None) == (e.best is None)
+    assert d.best is not None  # the seeds are chosen so that each case has an optimum
+    assert_same_answer(d, e)
+    assert d.best.design.axis.load_factor_eff == pytest.approx(1.5)  # THK Table 19 at 18 m/min
+
+
 def _drive_problem(seed, axis_coupling):
     """A synthetic drive problem whose two couplings are both stiffer than the axis's stand-in value."""
     from dataclasses import replace
