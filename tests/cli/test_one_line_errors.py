@@ -7,6 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from cli_helpers import one_line_error, write_file
 
 from axisopt.cli import main
 from axisopt.cli.common import MAX_ERROR_CHARS, one_line
@@ -17,17 +18,8 @@ DATA = PROBLEMS / "data"
 VMC = (PROBLEMS / "vmc_x_design.yaml").read_text(encoding="utf-8")
 
 
-def _one_line_error(capsys) -> str:
-    cap = capsys.readouterr()
-    err = cap.err.strip()
-    assert err.startswith("error: ") and "\n" not in err and "Traceback" not in cap.err, cap.err
-    return err
 
 
-def _write(tmp_path, name, text) -> str:
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return str(p)
 
 
 # ------------------------------------------------------------------------- 3. a time record with all-zero force
@@ -45,18 +37,18 @@ def _zero_force(tmp_path, src: Path, name: str) -> str:
             cells = line.split(",")
             cells[j] = "0"
             out.append(",".join(cells))
-    return _write(tmp_path, name, "\n".join(out) + "\n")
+    return write_file(tmp_path, name, "\n".join(out) + "\n")
 
 
 @pytest.mark.parametrize("which", ["estimation", "validation"])
-def test_time_record_with_zero_force_is_a_one_line_error(tmp_path, capsys, which):
+def test_time_record_with_zero_force_is_aone_line_error(tmp_path, capsys, which):
     est, val = DATA / "table_x_run_est.csv", DATA / "table_x_run_val.csv"
     if which == "estimation":
         files = [_zero_force(tmp_path, est, "est.csv"), str(val)]
     else:
         files = [str(est), _zero_force(tmp_path, val, "val.csv")]
     assert main(["diagnose", *files, "--design", str(DATA / "table_x.yaml")]) == 2
-    err = _one_line_error(capsys)
+    err = one_line_error(capsys)
     assert "force column is constant" in err and "column 3" in err
 
 
@@ -70,14 +62,14 @@ def test_one_line_escapes_line_breaks_and_caps_the_length():
 
 def test_yaml_value_with_a_newline_is_one_line(tmp_path, capsys):
     text = VMC.replace("  stroke: 800 mm", '  stroke: "800\\nkg\\n"')
-    assert main(["evaluate", _write(tmp_path, "d.yaml", text)]) == 2
-    _one_line_error(capsys)
+    assert main(["evaluate", write_file(tmp_path, "d.yaml", text)]) == 2
+    one_line_error(capsys)
 
 
 def test_messages_show_values_not_nodes(tmp_path, capsys):
     text = VMC.replace("  stroke: 800 mm", "  stroke: [300 mm, 400 mm]")
-    assert main(["evaluate", _write(tmp_path, "d.yaml", text)]) == 2
-    err = _one_line_error(capsys)
+    assert main(["evaluate", write_file(tmp_path, "d.yaml", text)]) == 2
+    err = one_line_error(capsys)
     assert "Node(" not in err and "['300 mm', '400 mm']" in err
 
 
@@ -87,8 +79,8 @@ def test_empty_require_list_is_refused(tmp_path, capsys):
     problem = (PROBLEMS / "teaching_problem.yaml").read_text(encoding="utf-8")
     problem = problem.replace("require: {coupling: [", "require: {screw: [], coupling: [")
     assert "screw: []" in problem
-    assert main(["solve", _write(tmp_path, "p.yaml", problem)]) == 2
-    err = _one_line_error(capsys)
+    assert main(["solve", write_file(tmp_path, "p.yaml", problem)]) == 2
+    err = one_line_error(capsys)
     assert "require.screw" in err and "at least one" in err
 
 
@@ -96,8 +88,8 @@ def test_empty_require_list_is_refused(tmp_path, capsys):
                                     "axis: !!set {a, b}\n"])
 def test_yaml_tags_on_mappings_and_lists_are_refused(tmp_path, capsys, tagged):
     text = "name: x\n" + tagged + "parts: {}\n"
-    assert main(["evaluate", _write(tmp_path, "d.yaml", text)]) == 2
-    err = _one_line_error(capsys)
+    assert main(["evaluate", write_file(tmp_path, "d.yaml", text)]) == 2
+    err = one_line_error(capsys)
     assert "line 2" in err and ("tag" in err or "malformed" in err)
 
 

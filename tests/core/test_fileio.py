@@ -14,6 +14,7 @@ import threading
 from pathlib import Path
 
 import pytest
+from cli_helpers import one_line_error
 
 from axisopt.cli import main
 from axisopt.errors import InputError
@@ -54,10 +55,6 @@ class Drain:
         return self.data
 
 
-def _one_line_error(capsys) -> str:
-    err = capsys.readouterr().err.strip()
-    assert err.startswith("error: ") and "\n" not in err, err
-    return err
 
 
 @pytest.mark.parametrize("argv", [
@@ -106,9 +103,9 @@ def test_save_design_dash_prints_the_design_only(tmp_path, capsys, monkeypatch):
 
 def test_two_outputs_on_stdout_and_dash_as_a_directory_are_refused(tmp_path, capsys):
     assert main(["compare", str(DESIGN), "--csv", "-", "--json", "-"]) == 2
-    assert "standard output" in _one_line_error(capsys)
+    assert "standard output" in one_line_error(capsys)
     assert main(["study", str(PROBLEMS / "studies" / "teaching_random.yaml"), "--out", "-"]) == 2
-    assert "cannot be an output directory" in _one_line_error(capsys)
+    assert "cannot be an output directory" in one_line_error(capsys)
 
 
 def test_standard_output_path_is_written_in_place(tmp_path):
@@ -161,11 +158,11 @@ def test_failed_write_leaves_the_old_file_and_no_temporary(tmp_path):
 
 def test_empty_output_names_are_refused(capsys):
     assert main(["schema", "design", "--out", ""]) == 2
-    assert "empty file name" in _one_line_error(capsys)
+    assert "empty file name" in one_line_error(capsys)
     assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--save-design", ""]) == 2
-    assert "--save-design" in _one_line_error(capsys)
+    assert "--save-design" in one_line_error(capsys)
     assert main(["evaluate", str(DESIGN), "--json", " "]) == 2
-    _one_line_error(capsys)
+    one_line_error(capsys)
 
 
 # ---------------------------------------------------------------------------------------------------- inputs
@@ -189,7 +186,7 @@ def test_fifo_inputs_are_refused_without_blocking(tmp_path, capsys):
     ]
     for argv in cases:
         assert main(argv) == 2, argv
-        err = _one_line_error(capsys)
+        err = one_line_error(capsys)
         assert "not a regular file" in err and "FIFO" in err, err
 
 
@@ -198,7 +195,7 @@ def test_fifo_in_a_catalog_directory_is_refused(tmp_path, capsys):
     cat.mkdir()
     os.mkfifo(cat / "screws.csv")
     assert main(["parts", "--catalogs", str(cat)]) == 2
-    assert "not a regular file" in _one_line_error(capsys)
+    assert "not a regular file" in one_line_error(capsys)
 
 
 def test_directory_and_device_inputs_are_refused_by_stat(tmp_path):
@@ -230,7 +227,7 @@ def test_diagnose_row_cap(tmp_path, capsys, monkeypatch):
     p = tmp_path / "s.csv"
     p.write_text(src)
     assert main(["diagnose", str(p), "--design", str(PROBLEMS / "data" / "table_x.yaml")]) == 2
-    assert "too many rows" in _one_line_error(capsys)
+    assert "too many rows" in one_line_error(capsys)
 
 
 def test_time_record_sample_cap(capsys, monkeypatch):
@@ -239,7 +236,7 @@ def test_time_record_sample_cap(capsys, monkeypatch):
     monkeypatch.setattr(tr, "MAX_TIME_SAMPLES", 300)
     data = PROBLEMS / "data"
     assert main(["diagnose", str(data / "table_x_run_est.csv"), "--design", str(data / "table_x.yaml")]) == 2
-    assert "too many samples" in _one_line_error(capsys)
+    assert "too many samples" in one_line_error(capsys)
 
 
 def test_stray_quote_in_diagnose_csv_is_one_line(tmp_path, capsys):
@@ -248,7 +245,7 @@ def test_stray_quote_in_diagnose_csv_is_one_line(tmp_path, capsys):
     p = tmp_path / "q.csv"
     p.write_text("\n".join(lines) + "\n")
     assert main(["diagnose", str(p), "--design", str(PROBLEMS / "data" / "table_x.yaml")]) == 2
-    err = _one_line_error(capsys)
+    err = one_line_error(capsys)
     assert len(err) < 500
 
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from cli_helpers import one_line_error, write_file
 
 from axisopt.cli import main
 
@@ -15,24 +16,15 @@ PROBLEMS = ROOT / "problems"
 VMC = (PROBLEMS / "vmc_x_design.yaml").read_text(encoding="utf-8")
 
 
-def _one_line_error(capsys) -> str:
-    cap = capsys.readouterr()
-    err = cap.err.strip()
-    assert err.startswith("error: ") and "\n" not in err and "Traceback" not in cap.err, cap.err
-    return err
 
 
-def _write(tmp_path, name, text) -> str:
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return str(p)
 
 
 def test_duty_cycle_faster_than_max_speed_is_an_error_naming_the_key(tmp_path, capsys):
     text = VMC.replace("  table_length: 600 mm\n", "  table_length: 600 mm\n  duty_cycle:\n"
                        "    - {move: 300 mm, speed: 60 m/min}\n    - {move: -300 mm}\n")
-    assert main(["evaluate", _write(tmp_path, "d.yaml", text)]) == 2
-    err = _one_line_error(capsys)
+    assert main(["evaluate", write_file(tmp_path, "d.yaml", text)]) == 2
+    err = one_line_error(capsys)
     assert "d.yaml" in err and "axis.duty_cycle[0].speed" in err and "max_speed" in err
 
 
@@ -42,7 +34,7 @@ def test_checks_read_the_highest_acceleration_commanded(tmp_path):
 
     text = VMC.replace("  table_length: 600 mm\n", "  table_length: 600 mm\n  duty_cycle:\n"
                        "    - {move: 300 mm, acceleration: 6 m/s^2}\n    - {move: -300 mm}\n")
-    d = load_design(_write(tmp_path, "d.yaml", text))
+    d = load_design(write_file(tmp_path, "d.yaml", text))
     assert d.axis.acceleration == 3.0 and d.axis.top_acceleration == 6.0
     assert float(design_params(d)["acceleration"]) == 6.0
     assert float(design_params(d)["max_speed"]) == pytest.approx(0.4)
@@ -52,10 +44,10 @@ def test_checks_read_the_highest_acceleration_commanded(tmp_path):
 
 def test_motor_without_acceleration_is_an_error_in_a_design_and_a_problem(tmp_path, capsys):
     design = VMC.replace("  acceleration: 3 m/s^2\n", "")
-    assert main(["evaluate", _write(tmp_path, "d.yaml", design)]) == 2
-    assert "acceleration" in _one_line_error(capsys)
+    assert main(["evaluate", write_file(tmp_path, "d.yaml", design)]) == 2
+    assert "acceleration" in one_line_error(capsys)
     problem = (PROBLEMS / "teaching_problem.yaml").read_text(encoding="utf-8")
     problem = "\n".join(ln for ln in problem.splitlines() if not ln.strip().startswith("acceleration:")) + "\n"
-    assert main(["solve", _write(tmp_path, "p.yaml", problem)]) == 2
-    err = _one_line_error(capsys)
+    assert main(["solve", write_file(tmp_path, "p.yaml", problem)]) == 2
+    err = one_line_error(capsys)
     assert "axis.acceleration" in err and "p.yaml" in err

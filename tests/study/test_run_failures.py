@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
+from cli_helpers import one_line_error
 from crash_helpers import CRASH_CONFIG, copy_study, crashing_solve, fill_disk_on, worker_pid
 from study_helpers import PROBLEMS, PYTHON, ROOT, kill_group, stable
 from study_helpers import study_code as _study_code
@@ -51,11 +52,6 @@ def _resume(src, out, *more) -> int:
     return main(["study", str(src), "--out", str(out), "--resume", "--workers", "0", "--quiet", *more])
 
 
-def _one_line_error(capsys) -> str:
-    err = capsys.readouterr().err
-    lines = err.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith("error: ") and "Traceback" not in err, err
-    return lines[0]
 
 
 def _temporaries(d: Path) -> list:
@@ -109,7 +105,7 @@ def test_run_killed_while_writing_results_leaves_the_old_file(reference, tmp_pat
     ("results.csv", errno.ENOSPC), ("results.parquet", errno.ENOSPC), ("report.md", errno.EACCES),
     ("study.json", errno.ENOSPC), ("tradeoff_cost_stiffness.png", errno.ENOSPC), ("case", errno.ENOSPC),
 ])
-def test_full_disk_or_no_permission_is_a_one_line_error(reference, tmp_path, monkeypatch, capsys, name, code):
+def test_full_disk_or_no_permission_is_aone_line_error(reference, tmp_path, monkeypatch, capsys, name, code):
     if name.endswith(".parquet"):
         pytest.importorskip("pyarrow")  # written only with the 'parquet' extra
     src, out = _finished_copy(reference, tmp_path)
@@ -121,7 +117,7 @@ def test_full_disk_or_no_permission_is_a_one_line_error(reference, tmp_path, mon
     old = (out / "results.csv").read_bytes()
     fill_disk_on(monkeypatch, name, code=code)
     assert _resume(src, out) == 2
-    line = _one_line_error(capsys)
+    line = one_line_error(capsys)
     assert name in line and os.strerror(code) in line
     assert (out / "results.csv").read_bytes() == old  # never a truncated table
     assert _temporaries(out) == [] and not (out / ".lock").exists()
@@ -138,25 +134,25 @@ def test_full_disk_for_json_output_keeps_the_old_file(tmp_path, monkeypatch, cap
     target.write_text('{"old": true}\n', encoding="utf-8")
     fill_disk_on(monkeypatch, "out.json", budget=10)
     assert main(["evaluate", str(PROBLEMS / "teaching_design.yaml"), "--json", str(target)]) == 2
-    line = _one_line_error(capsys)
+    line = one_line_error(capsys)
     assert str(target) in line and "No space left on device" in line
     assert target.read_text(encoding="utf-8") == '{"old": true}\n' and _temporaries(tmp_path) == []
 
 
 @pytest.mark.skipif(os.name != "posix" or os.geteuid() == 0, reason="root writes through chmod")
-def test_unwritable_study_directory_is_a_one_line_error(reference, tmp_path, capsys):
+def test_unwritable_study_directory_is_aone_line_error(reference, tmp_path, capsys):
     src, out = _finished_copy(reference, tmp_path)
     os.chmod(out, 0o555)
     try:
         assert _resume(src, out) == 2
     finally:
         os.chmod(out, 0o755)
-    line = _one_line_error(capsys)
+    line = one_line_error(capsys)
     assert str(out) in line and "Permission denied" in line
 
 
 @pytest.mark.parametrize("name, make", [("results.csv", "dir"), ("plots", "file"), ("report.md", "dir")])
-def test_output_of_the_wrong_kind_is_a_one_line_error(reference, tmp_path, capsys, name, make):
+def test_output_of_the_wrong_kind_is_aone_line_error(reference, tmp_path, capsys, name, make):
     src, out = _finished_copy(reference, tmp_path)
     p = out / name
     shutil.rmtree(p) if p.is_dir() else p.unlink()
@@ -166,7 +162,7 @@ def test_output_of_the_wrong_kind_is_a_one_line_error(reference, tmp_path, capsy
         p.write_text("not a directory\n", encoding="utf-8")
     old = (out / "results.csv").read_bytes() if name != "results.csv" else None
     assert _resume(src, out) == 2
-    line = _one_line_error(capsys)
+    line = one_line_error(capsys)
     assert str(p) in line and "in the way" in line
     if old is not None:
         assert (out / "results.csv").read_bytes() == old
@@ -178,7 +174,7 @@ def test_second_run_on_the_same_directory_is_refused(reference, tmp_path, capsys
     src, out = _finished_copy(reference, tmp_path)
     with StudyLock(out):  # a run in progress (this process)
         assert _resume(src, out) == 2
-        line = _one_line_error(capsys)
+        line = one_line_error(capsys)
         assert str(out) in line and f"pid {os.getpid()}" in line and "another study run" in line
         assert (out / ".lock").exists()
         with pytest.raises(InputError, match="another study run"):
@@ -297,7 +293,7 @@ def test_two_dead_workers_and_a_killed_run_resume_to_the_uninterrupted_rows(refe
             os.kill(pid, signal.SIGKILL)
             killed.append(pid)
         # meanwhile a second run on the same directory is refused
-        assert _resume(src, out) == 2 and "another study run" in _one_line_error(capsys)
+        assert _resume(src, out) == 2 and "another study run" in one_line_error(capsys)
         _wait_for(lambda: finished() >= 5, proc, "5 cases")
         os.kill(proc.pid, signal.SIGKILL)  # and the run itself
         proc.wait(10)
