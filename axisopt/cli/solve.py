@@ -140,7 +140,9 @@ def _single_file(target: str) -> bool:
 
 def exit_code(status: str) -> int:
     """0 proven optimum, 1 proven infeasible, 3 anything unproven (Bonmin's point, time limit, failure)."""
-    return {"optimal": EXIT_OK, "infeasible": EXIT_NEGATIVE}.get(status, EXIT_UNPROVEN)
+    from ..search.result import INFEASIBLE, OPTIMAL
+
+    return {OPTIMAL: EXIT_OK, INFEASIBLE: EXIT_NEGATIVE}.get(status, EXIT_UNPROVEN)
 
 
 def format_pareto(front, top: int | None = None) -> str:

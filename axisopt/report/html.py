@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
+from ..search.result import OPTIMAL
+from ..study.store import OK_STATUSES
 from ..units import N_PER_UM
 
 _CSS = """
@@ -328,7 +330,7 @@ def solve_page(res, problem, text: str) -> Page:
     from .plots import distinct_labels
 
     page = Page(f"Sizing: {res.problem}", f"{res.objective_label}; method {res.method}")
-    page.card("status", res.status, "ok" if res.status == "optimal" else "bad")
+    page.card("status", res.status, "ok" if res.status == OPTIMAL else "bad")
     page.card("proven", "yes" if res.certificate.proven else "no", "ok" if res.certificate.proven else "")
     page.card("combinations", f"{res.certificate.combinations:,}")
     page.card("time", f"{res.time:.2f} s")
@@ -433,13 +435,13 @@ def study_page(study, df, text: str) -> Page:
 
     page = Page(f"Trade study: {study.name}", f"{len(df)} cases")
     for status, n in df["status"].value_counts().items():
-        page.card(str(status), str(int(n)), "ok" if status == "optimal" else "bad")
+        page.card(str(status), str(int(n)), "ok" if status == OPTIMAL else "bad")
     unit = df["objective_unit"].dropna().iloc[0] if df["objective_unit"].notna().any() else ""
     for key, (name, _) in input_columns(study).items():
         if name not in df or not pd.api.types.is_numeric_dtype(df[name]):
             continue
         fig = go.Figure()
-        ok = df["status"] == "optimal"
+        ok = df["status"] == OPTIMAL
         fig.add_scatter(x=df.loc[ok, name], y=df.loc[ok, "objective"], mode="markers", name="optimal",
                         text=df.loc[ok, "case_id"] + ": " + df.loc[ok, "screw"].astype(str) + " / "
                         + df.loc[ok, "nut"].astype(str), hovertemplate="%{text}<br>%{x}: %{y:.4g}<extra></extra>")
@@ -455,7 +457,7 @@ def study_page(study, df, text: str) -> Page:
                          "cost [EUR]") if c in df]
     sub = df[shown].head(200)
     rows = [[_cell(v) for v in r] for r in sub.itertuples(index=False)]
-    classes = [["wrap" if c == "reason" else ("bad" if c == "status" and st not in ("optimal", "feasible") else "")
+    classes = [["wrap" if c == "reason" else ("bad" if c == "status" and st not in OK_STATUSES else "")
                 for c in shown] for st in sub["status"]]
     page.section("Cases" + (" (first 200; all in results.csv)" if len(df) > 200 else "")).append(
         table(shown, rows, classes=classes))

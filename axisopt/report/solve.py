@@ -9,6 +9,8 @@ import textwrap
 
 import numpy as np
 
+from ..search.result import OPTIMAL
+
 # The cutting force's components beside the feed force, as a rule of thumb for turning: feed F_f = 0.50 F_c and
 # passive (radial) F_p = 0.25 F_c of the tangential F_c (E. Isakov, "Calculated Forces When Turning", Cutting Tool
 # Engineering, 2013, who adds that the rule "is not a good practice because the results are not as accurate as
@@ -47,7 +49,7 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     c = res.certificate
     L = [f"problem {res.problem}: {res.objective_label}",
          f"method {res.method}: status {res.status}"
-         + (" (proven global optimum over the catalog)" if res.status == "optimal" and c.proven else "")
+         + (" (proven global optimum over the catalog)" if res.status == OPTIMAL and c.proven else "")
          + f", {res.time:.2f} s" + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else "")]
     if res.message:
         L.append(f"  note: {res.message}")

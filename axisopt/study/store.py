@@ -7,9 +7,11 @@ import json
 import re
 from pathlib import Path
 
-OK_STATUSES = ("optimal", "feasible")
-# every status a case record may hold: the solver's (axisopt.search.SolveResult.status) and the runner's
-CASE_STATUSES = OK_STATUSES + ("infeasible", "time_limit", "solver_failed", "input_error", "error", "worker_died")
+from ..search.result import FEASIBLE, INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT
+
+OK_STATUSES = (OPTIMAL, FEASIBLE)
+# every status a case record may hold: the solver's (axisopt.search.result.STATUS_TABLE) and the runner's
+CASE_STATUSES = OK_STATUSES + (INFEASIBLE, TIME_LIMIT, SOLVER_FAILED, "input_error", "error", "worker_died")
 RECORD_VERSION = 1
 
 
