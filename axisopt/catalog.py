@@ -21,7 +21,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from .errors import InputError
-from .units import split_header, unit_factor
+from .units import read_header
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -370,31 +370,16 @@ def _read_records(path: Path, name: str) -> list[dict]:
     if not rows:
         raise InputError("empty catalog file", source=src)
     header = rows[0]
-    cols: list[tuple[str, float | None, str]] = []  # (name, factor, kind)
-    seen = set()
-    for j, h in enumerate(header, start=1):
-        col, unit = split_header(h)
-        if col in seen:
-            raise InputError(f"duplicate column '{col}'", source=src, where=f"line 1, column {j}")
-        seen.add(col)
-        kind = "str" if col in PROVENANCE else schema.get(col)
-        if kind is None:
-            near = _closest(col, schema)
-            hint = f"; did you mean '{near}'?" if near else ""
-            raise InputError(f"unknown column '{col}'{hint}", source=src, where=f"line 1, column {j}")
-        if kind in ("str", "int"):
-            if unit not in (None, "", "-"):
-                raise InputError(f"column '{col}' takes no unit", source=src, where=f"line 1, column {j}")
-            cols.append((col, None, kind))
-            continue
-        if unit is None:
-            raise InputError(f"column '{col}' needs a unit in brackets, e.g. '{col} [..]'",
-                             source=src, where=f"line 1, column {j}")
-        try:
-            factor = unit_factor(unit, kind)
-        except ValueError as exc:
-            raise InputError(f"{exc} in column '{col}'", source=src, where=f"line 1, column {j}") from None
-        cols.append((col, factor, kind))
+    def unknown(col: str) -> str:
+        near = _closest(col, schema)
+        return f"unknown column '{col}'" + (f"; did you mean '{near}'?" if near else "")
+
+    # the header by the strict unit-CSV rules (units.read_header): text and count columns take no unit
+    kinds = {c: (None if k in ("str", "int") else k) for c, k in schema.items()} | dict.fromkeys(PROVENANCE)
+    header_cols = read_header(header, line=1, source=src, kinds=kinds, unknown=unknown)
+    # (name, SI factor or None, kind) per column
+    cols = [(c.name, c.factor, "str" if c.name in PROVENANCE else schema[c.name]) for c in header_cols]
+    seen = {c.name for c in header_cols}
     # an optional column with an estimate may be left out of the header: every row then takes the estimate
     omitted = [c.name for c in COLUMNS[name] if c.optional and c.estimate and c.name not in seen]
     missing = [c for c in schema if c not in seen and c not in omitted]
