@@ -12,8 +12,8 @@ from ..design import Design
 from ..physics import life as pl
 from .checks import bearing_life_load, nut_life_load
 from .function import design_params
-from .heat import heat_balance, with_temperature
-from .loads import axial_loads, life_rows, masses
+from .loads import life_rows
+from .response import loaded
 
 
 def life_table(design: Design) -> dict:
@@ -25,11 +25,8 @@ def life_table(design: Design) -> dict:
     [N] (+, -; THK A-706), ``nut_equivalent`` and ``bearing_equivalent`` the loads on the nut's and the set's
     ratings that give their L10 lives [N] and ``mean_speed`` [m/s].
     """
-    p = design_params(design)
     preload = design.preload
-    p = with_temperature(p, heat_balance(p, preload))
-    m = masses(p)
-    loads = axial_loads(p, m["moving_mass"])
+    p, _, m, loads = loaded(design_params(design), preload)
     rows = life_rows(p, m["moving_mass"], loads["guide_friction"])
     forces, travels = [r["load"] for r in rows], [r["travel"] for r in rows]
     plus, minus = pl.directional_means(forces, travels)

@@ -32,6 +32,16 @@ CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupli
                            "f_pitch", "f_yaw", "kv", "thermal_growth"})
 
 
+def loaded(p: dict, preload) -> tuple:
+    """The first steps every evaluation of the axis shares: the heat balance (:mod:`.heat`), the parameters at
+    the temperature rise it sets, the masses and the axial loads (:mod:`.loads`).  Returns (p at that rise, the
+    heat balance, the masses, the axial loads); float, numpy or CasADi like :func:`axis_response`."""
+    heat = heat_balance(p, preload)
+    p = with_temperature(p, heat)
+    m = masses(p)
+    return p, heat, m, axial_loads(p, m["moving_mass"])
+
+
 def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True,
                   chain: bool = True) -> dict:
     """Evaluate the axis model.
@@ -49,10 +59,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     scalars (``k_nut``, ``k_bearing``, ``f_table``, ``drag_torque``, masses, ``cost``, loads) and
     ``margin_<check>`` for each of :data:`CHECKS` (>= 1 passes).
     """
-    heat = heat_balance(p, preload)
-    p = with_temperature(p, heat)
-    m = masses(p)
-    loads = axial_loads(p, m["moving_mass"])
+    p, heat, m, loads = loaded(p, preload)
     loads.update(carriage_loads(p, m["moving_mass"]))
     out = {}
     out.update(heat)
@@ -84,9 +91,7 @@ def drive_inputs(p: dict, preload) -> tuple:
     torques by source [N m] (:func:`axisopt.model.drag.drag_torque`) and the guide friction at standstill [N]
     (credited to the holding torque).  The guide enters the drive only through these three, so the searches
     can bound the drive over a range of guides from their ranges."""
-    p = with_temperature(p, heat_balance(p, preload))
-    m = masses(p)
-    loads = axial_loads(p, m["moving_mass"])
+    p, _, m, loads = loaded(p, preload)
     return m["moving_mass"], drag_torque(p, preload, loads), loads["guide_friction_static"]
 
 
