@@ -246,9 +246,9 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     bnote += f"; with axisopt's fw {fw_ax} on the loads: {b_ax:,.0f} h"
     rows.append(Row("support bearing L10 life", "h", blife, ax.life_h, blife / ax.life_h, theirs("bearing_life"),
                     their_margin("bearing_life"), "", src, bnote))
-    perm, src = vp.bearing_permissible_load(brg)
+    perm, src, generic = vp.bearing_permissible_load(brg)
     load_b = f_max + pre_vendor
-    generic = src.startswith("IBC")  # a plain C0a without its vendor's factor: each side picks a general S0
+    # generic: a plain C0a without its vendor's factor, where each side picks a general S0
     rows.append(Row("support bearing static", "kN", perm / 1e3, load_b / 1e3, perm / load_b,
                     theirs("bearing_static"), their_margin("bearing_static"), "CONV" if generic else "", src,
                     "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")

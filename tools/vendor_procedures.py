@@ -295,14 +295,15 @@ def bearing_life_h(brg, phases, pretension, nm, fw=1.0):
 def bearing_permissible_load(brg):
     """Permissible axial load of the set in its weaker direction [N].  60-degree screw-support sets (NSK TAC B,
     HIWIN WBK): 0.7 x the limiting axial load (NSK-SP p. 111 footnote 2), the printed value scaled to the weak
-    direction's rows.  THK BK units: the printed permissible load (T-GC A-806).  Others: C0a / 2.5 (IBC eq. 2.6)."""
+    direction's rows.  THK BK units: the printed permissible load (T-GC A-806).  Others: C0a / 2.5 (IBC eq. 2.6).
+    Returns (load, source, generic): ``generic`` when the rating has no vendor factor of its own (IBC's general S0)."""
     strong, weak = max(ROWS[brg["arrangement"]]), min(ROWS[brg["arrangement"]])
     c0 = brg["static_load_rating"] * weak / strong
     if brg["vendor"] == "THK":
-        return c0, "T-GC A-806 permissible load"
+        return c0, "T-GC A-806 permissible load", False
     if brg["arrangement"].startswith("DF") or "TAC" in str(brg.get("series", "")):
-        return 0.7 * c0, "NSK-SP p. 111 fn. 2: 0.7 x limiting axial load"
-    return c0 / 2.5, "IBC eq. 2.6: C0a / S0, S0 = 2.5"
+        return 0.7 * c0, "NSK-SP p. 111 fn. 2: 0.7 x limiting axial load", False
+    return c0 / 2.5, "IBC eq. 2.6: C0a / S0, S0 = 2.5", True
 
 
 def block_reactions(ax, forces):
