@@ -45,12 +45,14 @@ def drive_inertias(p, moving_mass):
     return j_load, p["rotor_inertia"]
 
 
-def drive(p, moving_mass, drag, hold_friction=0.0) -> dict:
+def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     """Motor torques over the duty cycle, motor speed, inertia ratio, holding torque and the drive margins.
 
     moving_mass : the axis's moving mass [kg] (table + workpiece, nut, blocks); a phase whose duty-cycle entry
     names its own table + workpiece takes that instead;  drag : friction torque at the screw [N m];
-    hold_friction : guide friction at standstill [N] (THK's f, credited to the holding torque)."""
+    hold_friction : guide friction at standstill [N] (THK's f, credited to the holding torque);
+    regen : also the regenerated energy and power (``regen_energy``, ``regen_power``: a Simpson sum over every
+    jerk-limited piece, the costliest output of the block; a search whose limits do not read them skips it)."""
     a = 1.0 / p["reduction_ratio"]
     eta = SCREW_EFFICIENCY * p["reduction_efficiency"]
     j_load, j_rotor = drive_inertias(p, moving_mass)
@@ -73,9 +75,12 @@ def drive(p, moving_mass, drag, hold_friction=0.0) -> dict:
     t_peak_cycle = pd.peak_torque(torques) if phases else 0.0 * friction
     # each phase's largest |torque| against the peak torque the motor gives at the phase's largest speed (the
     # intermittent zone, physics.drive.peak_torque_available); the steady thrust (feed) against the flat peak
-    zone = [pd.peak_torque_available(pd.motor_speed(ph.speed, p["lead"], a), p["motor_peak_torque"],
-                                     p["motor_peak_corner_speed"], p["motor_peak_at_max_speed"], p["motor_max_speed"])
-            for ph in phases]
+    by_speed: dict = {}  # one zone value per distinct phase speed
+    for ph in phases:
+        if ph.speed not in by_speed:
+            by_speed[ph.speed] = pd.peak_torque_available(
+                pd.motor_speed(ph.speed, p["lead"], a), p["motor_peak_torque"], p["motor_peak_corner_speed"],
+                p["motor_peak_at_max_speed"], p["motor_max_speed"])
     # steady thrust at feed (no acceleration): the largest and the mean axial load with friction and weight
     thrust = friction + pd.force_torque(p["axial_load"], p["lead"], eta, a) + gravity
     thrust_mean = friction + pd.force_torque(p["mean_axial_load"], p["lead"], eta, a) + gravity
@@ -83,10 +88,11 @@ def drive(p, moving_mass, drag, hold_friction=0.0) -> dict:
     t_cont = mx.fmax(t_rms, thrust_mean)
     # peak torque needed, referred to the flat (low-speed) peak: max over phases of |T| T_pk / T_pk(n); convex in
     # the nut preload like |T| (the zone does not depend on it), so the margin holds on an interval of preloads
-    factors = [p["motor_peak_torque"] / mx.fmax(avail, 1e-9) for avail in zone]  # >= 1, preload-independent
+    factor_of = {s: p["motor_peak_torque"] / mx.fmax(avail, 1e-9) for s, avail in by_speed.items()}  # >= 1
+    factors = [factor_of[ph.speed] for ph in phases]  # preload-independent
     use = thrust
-    for (t0, t1), k in zip(torques, factors):
-        use = mx.fmax(use, mx.fmax(mx.fabs(t0), mx.fabs(t1)) * k)
+    for pair, speed in {(id(pair), ph.speed): (pair, ph.speed) for pair, ph in zip(torques, phases)}.values():
+        use = mx.fmax(use, mx.fmax(mx.fabs(pair[0]), mx.fabs(pair[1])) * factor_of[speed])
     thrust_ratio = p["rms_torque_ratio"] * p["motor_rated_torque"]
     v_max = max([ph.speed for ph in phases] + [0.0])
     n_motor = pd.motor_speed(v_max, p["lead"], a)
@@ -125,10 +131,11 @@ def drive(p, moving_mass, drag, hold_friction=0.0) -> dict:
     }))
     # energy the motor returns to the drive over one cycle (braking, lowering a vertical axis) and its mean power:
     # what the drive's regenerative resistor must take (Yaskawa 12.8.6), before winding and drive losses
-    regen = sum(pd.regenerative_energy(phases, torques, p["lead"], a), 0.0 * friction)
-    cycle = sum(durations)
+    if regen:
+        energy = sum(pd.regenerative_energy(phases, torques, p["lead"], a), 0.0 * friction)
+        cycle = sum(durations)
+        out.update({"regen_energy": energy, "regen_power": energy / cycle if cycle > 0 else 0.0 * energy})
     out.update({
-        "regen_energy": regen, "regen_power": regen / cycle if cycle > 0 else 0.0 * regen,
         "load_inertia": j_load, "total_inertia": j_tot, "inertia_ratio": ratio, "motor_speed": n_motor,
         "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean,
         "holding_torque": hold,

@@ -43,7 +43,7 @@ def loaded(p: dict, preload) -> tuple:
 
 
 def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True,
-                  chain: bool = True) -> dict:
+                  chain: bool = True, regen: bool = True) -> dict:
     """Evaluate the axis model.
 
     p        : dict of :data:`PARAM_NAMES` -> float / ndarray / CasADi
@@ -55,6 +55,8 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
                of the mechanics skips it when each drive is screened apart (:func:`drive_response`)
     chain    : also compute the stiffness chain and the axial modes (:data:`CHAIN_OUTPUTS`; the screening
                skips them where it checks only the limits at the lowest preload)
+    regen    : with the drive block, also the regenerated energy and power (a search none of whose limits
+               reads them skips it: :func:`axisopt.model.drive.drive`)
     Returns a dict: per-position arrays (``k_total``, ``k_screw``, ``f_axial``, ``f1``, ...), per-design
     scalars (``k_nut``, ``k_bearing``, ``f_table``, ``drag_torque``, masses, ``cost``, loads) and
     ``margin_<check>`` for each of :data:`CHECKS` (>= 1 passes).
@@ -79,7 +81,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]
     out.update(checks(p, mounting, preload, loads))
     if drive_block:
-        out.update(drive(p, m["moving_mass"], out["drag_torque"], loads["guide_friction_static"]))
+        out.update(drive(p, m["moving_mass"], out["drag_torque"], loads["guide_friction_static"], regen))
     if extras:
         out.update(drive_train_modes(p, k, modes["m_eff"]))
         out.update(damping(p, k, modes["m_eff"]))
@@ -95,13 +97,13 @@ def drive_inputs(p: dict, preload) -> tuple:
     return m["moving_mass"], drag_torque(p, preload, loads), loads["guide_friction_static"]
 
 
-def drive_response(p: dict, preload) -> dict:
+def drive_response(p: dict, preload, regen: bool = True) -> dict:
     """The outputs of :func:`axis_response` that the motor and coupling change (the drive block and the cost),
     from the same sub-assemblies without the stiffness chain and the modes: for the searches, which screen
     the mechanics once per combination of screw, nut, bearing and guide and then each drive against it, and
     solve the preload against the motor-torque limits (which depend on it through the nut's drag only)."""
     moving, out, hold_friction = drive_inputs(p, preload)
     out = dict(out)
-    out.update(drive(p, moving, out["drag_torque"], hold_friction))
+    out.update(drive(p, moving, out["drag_torque"], hold_friction, regen))
     out["cost"] = cost(p)
     return out

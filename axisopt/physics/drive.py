@@ -116,14 +116,22 @@ def phase_torques(phases, total_inertia, lead, friction_torque, gravity_torque, 
     per_newton = lead * ratio / (2.0 * pi * efficiency)
     n = len(phases)
     out = []
+    # phases of the same accelerations, direction, force and mass (the S-curve pieces of every move that reaches
+    # full acceleration) share one computed pair: the same object, which the RMS and peak below count once
+    seen: dict = {}
     for ph, j_tot, t_g in zip(phases, _each(total_inertia, n), _each(gravity_torque, n)):
-        if ph.direction == 0.0:
-            hold = mx.fmax(t_g + (ph.force - hold_friction) * per_newton, 0.0)
-            out.append((hold, hold))
-            continue
-        base = ph.direction * (friction_torque + ph.force * per_newton) + t_g
-        j = j_tot * k_acc
-        out.append((j * ph.a0 + base, j * ph.a1 + base))
+        key = (ph.direction, ph.force, id(t_g)) + ((id(j_tot), ph.a0, ph.a1) if ph.direction != 0.0 else ())
+        pair = seen.get(key)
+        if pair is None:
+            if ph.direction == 0.0:
+                hold = mx.fmax(t_g + (ph.force - hold_friction) * per_newton, 0.0)
+                pair = (hold, hold)
+            else:
+                base = ph.direction * (friction_torque + ph.force * per_newton) + t_g
+                j = j_tot * k_acc
+                pair = (j * ph.a0 + base, j * ph.a1 + base)
+            seen[key] = pair
+        out.append(pair)
     return out
 
 
@@ -191,13 +199,18 @@ def regenerative_energy(phases, torques, lead, ratio=1.0):
 def linear_rms_torque(torques, durations):
     r"""RMS torque over phases whose torque varies linearly from T0 to T1 (exact for jerk-limited ramps):
     :math:`\sqrt{\sum t_i (T_0^2 + T_0 T_1 + T_1^2)/3 \,/\, \sum t_i}` [N m] (THK eq. 48 for constant torques)."""
-    num = sum(d * (t0 * t0 + t0 * t1 + t1 * t1) / 3.0 for (t0, t1), d in zip(torques, durations))
+    total: dict = {}  # phases sharing one torque pair (phase_torques): their durations summed first
+    for pair, d in zip(torques, durations):
+        entry = total.setdefault(id(pair), [pair, 0.0])
+        entry[1] += d
+    num = sum(d * (t0 * t0 + t0 * t1 + t1 * t1) / 3.0 for (t0, t1), d in total.values())
     return mx.sqrt(num / sum(durations))
 
 
 def peak_torque(torques):
     """Largest |torque| over the phases (the ends of each linear piece) [N m]."""
-    vals = [mx.fabs(t) for pair in torques for t in pair]
+    distinct = {id(pair): pair for pair in torques}.values()  # a shared pair counts once
+    vals = [mx.fabs(t) for pair in distinct for t in pair]
     out = vals[0]
     for v in vals[1:]:
         out = mx.fmax(out, v)

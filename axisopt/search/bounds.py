@@ -122,8 +122,9 @@ def _block_outputs(space: Space, mounting: str, sl: slice, guide_type: str, xs, 
     lo = space.preload_lo[sl].reshape(-1, 1, 1, 1).astype(np.float32)
     hi = space.preload_hi[sl].reshape(-1, 1, 1, 1).astype(np.float32)
     p = optimistic_guide_params(space, mounting, sl, guide_type, dtype=np.float32)
-    res = (model.axis_response(p, xs[-1:], mounting, lo, extras=False),
-           model.axis_response(p, xs, mounting, hi, extras=False))
+    # the drive block is left out: block_bounds reads no limit the drive changes but the cost (outside it)
+    res = (model.axis_response(p, xs[-1:], mounting, lo, extras=False, drive_block=False),
+           model.axis_response(p, xs, mounting, hi, extras=False, drive_block=False))
     if keep:
         space._cache[key] = res
     return res

@@ -30,7 +30,7 @@ from .bounds import bound_positions, optimistic_guide_params
 from .candidates import candidate_values
 from .interval import Interval, ends
 from .result import Infeasibility
-from .task.constraints import End, as_vector
+from .task.constraints import End, as_vector, reads_regen
 from .task.space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive, shaped
 
 CLOSEST = 5
@@ -220,7 +220,7 @@ def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict
             for v in (moving, drag["drag_torque"], hold_friction):
                 v = np.broadcast_to(v, full)
                 ranges.append(Interval(*over_groups(v.min(axis=2, keepdims=True), v.max(axis=2, keepdims=True))))
-            opt.append(ends(drive_block(pg, *ranges)))
+            opt.append(ends(drive_block(pg, *ranges, regen=reads_regen(drive))))
     shape = (full[0], len(starts), space.n_drives)
     out = {}
     for c in drive:
@@ -355,8 +355,9 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped
     # there unless one of those reads them
     chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in mech if not c.lower_type)
-    out_lo = respond(p, x, mounting, lo, drive_block=not two_stage, chain=chain_lo)
-    out_hi = respond(p, x, mounting, hi, drive_block=not two_stage)
+    regen = reads_regen(constraints)
+    out_lo = respond(p, x, mounting, lo, drive_block=not two_stage, chain=chain_lo, regen=regen)
+    out_hi = respond(p, x, mounting, hi, drive_block=not two_stage, regen=regen)
     for c in mech:
         v = _favourable(c, out_lo, out_hi, shape)
         miss = c.violation(v)
@@ -379,7 +380,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
             tally.add(c, v, miss, fits_d)
         if drive:
             pd = params(mechanics=False)
-            d_lo, d_hi = respond_drive(pd, lo), respond_drive(pd, hi)
+            d_lo, d_hi = respond_drive(pd, lo, regen), respond_drive(pd, hi, regen)
             for c in drive:
                 v = _favourable(c, d_lo, d_hi, (nc, Bx, G)).reshape(shape_d)
                 miss = c.violation(v)

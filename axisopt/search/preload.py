@@ -22,7 +22,7 @@ import numpy as np
 
 from ..units import N_PER_UM
 from .result import Exact
-from .task.constraints import Constraint, as_vector, ok_all
+from .task.constraints import Constraint, as_vector, ok_all, reads_regen
 from .task.objective import ObjectiveSpec
 from .task.space import Space, respond, respond_drive
 
@@ -173,7 +173,7 @@ def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
     lo, top = np.asarray(lo, float), np.asarray(top, float)
 
     def value(pj, pre):
-        return as_vector(c.value(respond_drive(pj, pre[:, None])), len(pre))
+        return as_vector(c.value(respond_drive(pj, pre[:, None], reads_regen([c]))), len(pre))
 
     exists = c.ok(value(p, top)).astype(bool)
     pb = top.copy()
@@ -203,7 +203,7 @@ def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
 
     def value(pj, pre):
-        return as_vector(c.value(respond_drive(pj, pre[:, None])), len(pre))
+        return as_vector(c.value(respond_drive(pj, pre[:, None], reads_regen([c]))), len(pre))
 
     ok_lo, ok_hi = (c.ok(value(p, v)).astype(bool) for v in (lo, hi))
     start = np.where(ok_lo, lo, hi)

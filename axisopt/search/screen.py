@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import model
 from .bounds import SCREEN_RTOL, bound_positions, screen_ok
-from .task.constraints import Constraint, End
+from .task.constraints import Constraint, End, reads_regen
 from .task.objective import ObjectiveSpec
 from .task.space import DRIVE_KEYS, Space, as_dtype
 
@@ -144,8 +144,9 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
         p = drive_params(space, mounting, n_, b_, g_)
         lo, hi = space.preload_lo[n_][:, None, None], space.preload_hi[n_][:, None, None]
         with np.errstate(all="ignore"):
-            out_lo = model.drive_response(p, lo)
-            out_hi = model.drive_response(p, hi) if cvx or any(c.lower_type for c in cons) else None
+            regen = reads_regen(cons)
+            out_lo = model.drive_response(p, lo, regen)
+            out_hi = model.drive_response(p, hi, regen) if cvx or any(c.lower_type for c in cons) else None
             ok = np.ones((K, D), dtype=bool)
             for c in cons:
                 if c.convex:

@@ -103,6 +103,14 @@ class Constraint:
         return v / lim - 1.0
 
 
+REGEN_OUTPUTS = frozenset({"regen_energy", "regen_power"})
+
+
+def reads_regen(constraints) -> bool:
+    """Whether a limit reads the regenerated energy or power (the drive block skips that sum otherwise)."""
+    return any(c.key in REGEN_OUTPUTS for c in constraints)
+
+
 def as_vector(v, K):
     """A scalar, (K,) or (K, 1) array as a fresh (K,) array."""
     a = np.asarray(v, dtype=float)

@@ -43,11 +43,12 @@ def as_dtype(ps: dict, dtype) -> dict:
 
 
 
-def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = True) -> dict:
+def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = True, regen: bool = True) -> dict:
     """:func:`axisopt.model.axis_response` on numpy, without the outputs no limit or objective uses
-    (axial-torsional frequency, damping ratio); ``drive_block`` and ``chain`` as there."""
+    (axial-torsional frequency, damping ratio); ``drive_block``, ``chain`` and ``regen`` as there."""
     with np.errstate(divide="ignore"):
-        return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive_block, chain=chain)
+        return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive_block, chain=chain,
+                                   regen=regen)
 
 
 # Outputs the motor and coupling change (all others are the same for every drive of a mechanical combination).
@@ -57,10 +58,11 @@ DRIVE_KEYS = frozenset({"cost", "inertia_ratio", "regen_power"} | {f"margin_{c}"
 COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1", "k_tool", "kv"})
 
 
-def respond_drive(p, preload) -> dict:
-    """:func:`axisopt.model.drive_response` on numpy: the motor-torque limits without the stiffness chain."""
+def respond_drive(p, preload, regen: bool = True) -> dict:
+    """:func:`axisopt.model.drive_response` on numpy: the motor-torque limits without the stiffness chain
+    (``regen``: also the regenerated energy and power)."""
     with np.errstate(divide="ignore"):
-        return model.drive_response(p, preload)
+        return model.drive_response(p, preload, regen)
 
 
 @dataclass
