@@ -72,7 +72,14 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
                                [by_mass[ph.moving_mass][1] for ph in phases], eta, a, hold_friction)
     durations = [ph.duration for ph in phases]
     t_rms = pd.linear_rms_torque(torques, durations) if phases else 0.0 * friction
-    t_peak_cycle = pd.peak_torque(torques) if phases else 0.0 * friction
+    # each distinct torque pair's largest |torque|, and the largest over the pairs that run at each phase speed
+    pair_peak: dict = {}
+    at_speed: dict = {}
+    for pair, ph in zip(torques, phases):
+        if id(pair) not in pair_peak:
+            pair_peak[id(pair)] = mx.fmax(mx.fabs(pair[0]), mx.fabs(pair[1]))
+        at_speed.setdefault(ph.speed, {})[id(pair)] = pair_peak[id(pair)]
+    t_peak_cycle = _largest(pair_peak.values()) if phases else 0.0 * friction
     # each phase's largest |torque| against the peak torque the motor gives at the phase's largest speed (the
     # intermittent zone, physics.drive.peak_torque_available); the steady thrust (feed) against the flat peak
     by_speed: dict = {}  # one zone value per distinct phase speed
@@ -91,8 +98,8 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     factor_of = {s: p["motor_peak_torque"] / mx.fmax(avail, 1e-9) for s, avail in by_speed.items()}  # >= 1
     factors = [factor_of[ph.speed] for ph in phases]  # preload-independent
     use = thrust
-    for pair, speed in {(id(pair), ph.speed): (pair, ph.speed) for pair, ph in zip(torques, phases)}.values():
-        use = mx.fmax(use, mx.fmax(mx.fabs(pair[0]), mx.fabs(pair[1])) * factor_of[speed])
+    for speed, peaks in at_speed.items():  # max(a k, b k) = max(a, b) k for the factor k >= 1
+        use = mx.fmax(use, _largest(peaks.values()) * factor_of[speed])
     thrust_ratio = p["rms_torque_ratio"] * p["motor_rated_torque"]
     v_max = max([ph.speed for ph in phases] + [0.0])
     n_motor = pd.motor_speed(v_max, p["lead"], a)
@@ -144,3 +151,11 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     })
     return out
 
+
+def _largest(values):
+    """The elementwise largest of a non-empty collection of values (floats, arrays or CasADi)."""
+    it = iter(values)
+    out = next(it)
+    for v in it:
+        out = mx.fmax(out, v)
+    return out

@@ -205,13 +205,3 @@ def linear_rms_torque(torques, durations):
         entry[1] += d
     num = sum(d * (t0 * t0 + t0 * t1 + t1 * t1) / 3.0 for (t0, t1), d in total.values())
     return mx.sqrt(num / sum(durations))
-
-
-def peak_torque(torques):
-    """Largest |torque| over the phases (the ends of each linear piece) [N m]."""
-    distinct = {id(pair): pair for pair in torques}.values()  # a shared pair counts once
-    vals = [mx.fabs(t) for pair in distinct for t in pair]
-    out = vals[0]
-    for v in vals[1:]:
-        out = mx.fmax(out, v)
-    return out
