@@ -80,9 +80,9 @@ def test_shipped_mechanical_infeasibility_scores_few_blocks(monkeypatch):
     p, sp, cons, spec = _shipped("infeasible_problem.yaml")
     why, n = _scored(sp, cons, spec, monkeypatch)
     assert n < 0.1 * sp.size, (n, sp.size)
-    # (and, since issue 38's load factor from THK Table 19, the support sets' life)
-    assert [u[0] for u in why.unmeetable] == ["max cost", "critical speed / max screw speed",
-                                              "support bearing L10 life / required life"]
+    # (from issue 38's load factor, THK Table 19, to issue 39 also the support sets' life; the 70-120 mm
+    # ZKLN and NSK TAC03 sets of issue 39 meet that life on their own, so it is no longer unmeetable alone)
+    assert [u[0] for u in why.unmeetable] == ["max cost", "critical speed / max screw speed"]
     assert len(why.closest) == E.CLOSEST and all(c.misses for c in why.closest)
 
 
