@@ -91,7 +91,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "duty_cycle": Key("list", "moves and dwells (default: the rapid move over the stroke and back)",
                       minimum=1, maximum=SEGMENT_LIMIT,
                       items=Key("one_of", options=(Key("section", spec=MOVE_SPEC), Key("section", spec=DWELL_SPEC)))),
-    "reduction_ratio": Key("number", "motor turns per screw turn (2: a 2:1 belt or gear)", positive=True,
+    "reduction_ratio": Key("number", "motor turns per screw turn (2: a 2:1 belt or gear; when no reduction part)",
+                           positive=True,
                            minimum=0.02, maximum=50.0),
     "reduction_efficiency": Key("number", "efficiency of the reduction, in (0, 1]", positive=True, maximum=1.0),
     "reduction_inertia": _axis_q("inertia", "inertia of the reduction at the motor shaft"),
@@ -180,6 +181,9 @@ PARTS_SPEC = Spec("parts", "one part per slot: a catalog id, or an inline mappin
     "guide": _slot("guides", "linear guide block and rail", True),
     "motor": _slot("motors", "servo motor (optional; needs axis.acceleration or axis.duty_cycle)", False),
     "coupling": _slot("couplings", "shaft coupling (optional)", False),
+    "reduction": _slot("reductions", "reduction between motor and coupling: planetary gearbox or belt stage "
+                       "(optional; without it the axis's reduction_ratio, reduction_efficiency and reduction_inertia, "
+                       "direct drive by default)", False),
     "nut_preload": Key("quantity", "nut preload within the nut's range (default: the catalog's)", kind="force",
                        non_negative=True),
 })

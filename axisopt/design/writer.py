@@ -45,7 +45,7 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
             axis[f.name] = v
     parts: dict = {}
     for slot, table in (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides"),
-                        ("motor", "motors"), ("coupling", "couplings")):
+                        ("motor", "motors"), ("coupling", "couplings"), ("reduction", "reductions")):
         row = getattr(design, slot)
         if row is None:
             continue

@@ -62,11 +62,12 @@ def optimistic_guide_params(space: Space, mounting: str, nut_sel, guide_type: st
     ps = model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, None, None)
     if space.m_arr is not None:
         ps["coupling_stiffness"] = float(space.coupling_k[-1])
-        # the cheapest searched (motor, coupling) pair: the cost is a lower bound over every drive
+        # the cheapest searched drive (motor, coupling, reduction): the cost is a lower bound over every drive
         price = np.nan_to_num(space.m_arr["price"][:D])
-        if space.c_arr is not None:
-            price = price + np.nan_to_num(space.c_arr["price"][:D])
-        ps["motor_price"], ps["coupling_price"] = float(price.min()), 0.0
+        for arr in (space.c_arr, space.r_arr):
+            if arr is not None:
+                price = price + np.nan_to_num(arr["price"][:D])
+        ps["motor_price"], ps["coupling_price"], ps["reduction_price"] = float(price.min()), 0.0, 0.0
     return as_dtype(ps, dtype)
 
 

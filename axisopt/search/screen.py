@@ -173,7 +173,7 @@ def drive_params(space: Space, mounting: str, n, b, g, dtype=float) -> dict:
 
     ps = model.axis_params(space.problem.axis_for(mounting), pick(space.s_arr, n), pick(space.n_arr, n),
                            pick(space.b_arr, b), pick(space.g_arr, np.asarray(g) * D), pairs(space.m_arr),
-                           pairs(space.c_arr))
+                           pairs(space.c_arr), pairs(space.r_arr))
     return as_dtype(ps, dtype)
 
 
