@@ -234,9 +234,25 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])
               for ri in choices]
     need = problem.margin_map.get("coupling_torque", 1.0)
+    # the motor speed the cycle asks is smallest on the longest lead of the space (model.drive: 2 pi v / P_h x
+    # ratio); a (motor, reduction) that fails the motor-speed or reduction-speed check even there fails it on
+    # every screw, and is never formed (a check disabled by a margin of 0 prunes nothing)
+    v_max = max([ph.speed for ph in problem.axis.phases] + [0.0])
+    lead_max = float(np.max(sp.s_arr["lead"])) if len(sp.s_arr["lead"]) else np.inf
+    speed_need = {k: problem.margin_map.get(k, 1.0) for k in ("motor_speed", "reduction_speed")}
+    red_speed = reductions.number("max_input_speed") if len(reductions) else np.zeros(0)
+
+    def too_fast(mi, ri, ratio):
+        n_min = 2.0 * np.pi * v_max / lead_max * ratio
+        if n_min * speed_need["motor_speed"] > float(motors.number("max_speed")[mi]) * (1.0 + 1e-12):
+            return True
+        return ri is not None and n_min * speed_need["reduction_speed"] > float(red_speed[ri]) * (1.0 + 1e-12)
+
     pairs = []
     for mi in range(len(motors)):
         for ri, ratio in zip(choices, ratios):
+            if too_fast(mi, ri, ratio):
+                continue
             if len(couplings) == 0:
                 pairs.append((mi, None, ri))
                 continue
