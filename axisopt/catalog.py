@@ -193,7 +193,7 @@ COLUMNS = MappingProxyType({
         _c("rated_torque", "torque", "reduction_rated_torque", positive=True),
         _c("accel_torque", "torque", "reduction_accel_torque", positive=True),
         _c("torsional_stiffness", "torsional_stiffness", positive=True),
-        _c("backlash", "angle"),
+        _c("backlash", "angle", "reduction_backlash"),
         _c("max_input_speed", "angular_speed", "reduction_max_speed", positive=True),
         _c("mass", "mass", optional=True), _c("price", "money", "reduction_price", **_PRICE),
     ),

@@ -52,6 +52,18 @@ def drive_inertias(p, moving_mass):
     return j_load, p["rotor_inertia"]
 
 
+def lost_motion(p):
+    r"""Lost motion of the drive at the table [m]: the axial play of a single nut with play (a preloaded nut has
+    none) plus a reduction's torsional backlash through the lead,
+
+    .. math:: \delta = (1 - d)\,\delta_{nut} + j_t \frac{P_h}{2\pi}
+
+    p["nut_axial_play"] [m], p["nut_double"] (1: preloaded), p["reduction_backlash"] j_t [rad] at the output
+    (Beckhoff AG2400/AG3400 "Maximum torsional backlash jt [arcmin]"; 0 without a reduction), p["lead"] P_h [m].
+    A semi-closed loop (encoder on the motor) does not see it; the problem's max_backlash limits it."""
+    return (1.0 - p["nut_double"]) * p["nut_axial_play"] + p["reduction_backlash"] * p["lead"] / (2.0 * math.pi)
+
+
 def output_torques(p, moving_mass, drag, phases, hold_friction=0.0):
     r"""Torque at the reduction's output (the screw side of the ratio) per duty-cycle phase [N m], signed (THK eq.
     40-45 at the screw, A = 1):

@@ -56,7 +56,7 @@ PARAM_NAMES = (
     # reduction (issue 39): a catalog part, or none (the axis's reduction_* values above, its checks off); its
     # output-side ratings, its torsional compliance (in series with the coupling) and its input speed limit
     "has_reduction", "reduction_rated_torque", "reduction_accel_torque", "reduction_compliance",
-    "reduction_max_speed", "reduction_price",
+    "reduction_max_speed", "reduction_price", "reduction_backlash",
 )
 
 
@@ -226,7 +226,7 @@ def reduction_params(axis, reduction) -> dict:
     none = {"has_reduction": 0.0, "reduction_ratio": axis.reduction_ratio,
             "reduction_efficiency": axis.reduction_efficiency, "reduction_inertia": axis.reduction_inertia,
             "reduction_rated_torque": 1.0, "reduction_accel_torque": 1.0, "reduction_compliance": 0.0,
-            "reduction_max_speed": 1.0, "reduction_price": 0.0}
+            "reduction_max_speed": 1.0, "reduction_price": 0.0, "reduction_backlash": 0.0}
     if reduction is None:
         return none
     col = _getter

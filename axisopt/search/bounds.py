@@ -17,7 +17,7 @@ from .. import model
 from ..model.params import GUIDE_RATING_DISTANCE
 from .task.constraints import End
 from .task.objective import ObjectiveSpec
-from .task.space import DRIVE_KEYS, SCREEN_CHUNK, Space, as_dtype, shaped
+from .task.space import DRIVE_KEYS, MECHANICS_BOUNDED, SCREEN_CHUNK, Space, as_dtype, shaped
 
 SCREEN_RTOL = 1e-4  # float32 screening: relative slack on every test and on the bound
 
@@ -79,7 +79,7 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
     (ok, bound), each nuts x bearings."""
     _, N, B, _ = space.shape
     # every mechanical limit, and the cost (the optimistic guide carries the cheapest drive pair's price)
-    mech = [c for c in constraints if not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")]
+    mech = [c for c in constraints if not c.convex and (c.key not in DRIVE_KEYS or c.key in MECHANICS_BOUNDED)]
     low_end = [c for c in mech if c.favourable is not End.HIGH]
     high_end = [c for c in mech if c.favourable is End.HIGH]
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)

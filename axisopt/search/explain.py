@@ -32,7 +32,7 @@ from .interval import Interval, ends
 from .parts import drive_stiffnesses
 from .result import Infeasibility
 from .task.constraints import End, as_vector
-from .task.space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive, shaped
+from .task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive, shaped
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block
@@ -124,7 +124,7 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
 def _bounded(c) -> bool:
     """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
     limits of :func:`axisopt.search.bounds.block_bounds`: not the drive's, except the cost)."""
-    return not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")
+    return not c.convex and (c.key not in DRIVE_KEYS or c.key in MECHANICS_BOUNDED)
 
 
 def block_optimism(space: Space, constraints, drive: bool = True):

@@ -242,6 +242,20 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     speed_need = {k: problem.margin_map.get(k, 1.0) for k in ("motor_speed", "reduction_speed")}
     red_speed = reductions.number("max_input_speed") if len(reductions) else np.zeros(0)
 
+    # a reduction's backlash is lost motion at the table (model.drive.lost_motion), least on the shortest lead: a
+    # reduction that exceeds the problem's max_backlash even there is never formed
+    backlash_max = problem.limit_map.get("max_backlash", np.inf)
+    lead_min = float(np.min(sp.s_arr["lead"])) if len(sp.s_arr["lead"]) else 0.0
+    if len(reductions):
+        lost = reductions.number("backlash") * lead_min / (2.0 * np.pi)
+        keep = lost <= backlash_max * (1.0 + 1e-9) + 1e-15
+        if not r.required("reduction") or keep.any():
+            reductions = reductions.take(keep)
+        choices = ([] if r.required("reduction") else [None]) + list(range(len(reductions)))
+        ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])
+                  for ri in choices]
+        red_speed = reductions.number("max_input_speed")
+
     def too_fast(mi, ri, ratio):
         n_min = 2.0 * np.pi * v_max / lead_max * ratio
         if n_min * speed_need["motor_speed"] > float(motors.number("max_speed")[mi]) * (1.0 + 1e-12):

@@ -53,7 +53,9 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
 
 
 def _mechanical(constraints):
-    return [c for c in constraints if c.key not in DRIVE_KEYS]
+    """The limits of the mechanical stage: every limit the drive does not change, and the lost motion (its value
+    without a reduction, the nut's play, is the least over every drive: the drive stage tests it again)."""
+    return [c for c in constraints if c.key not in DRIVE_KEYS or c.key == "backlash"]
 
 
 CACHE_BLOCK = 200_000  # (nut, bearing, guide) combinations per evaluation inside screen_nuts (cache-sized arrays)

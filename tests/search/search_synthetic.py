@@ -143,7 +143,8 @@ def add_reductions(catalog, rng: np.random.Generator, n=3) -> Catalog:
         rows.append({"id": f"R{i}", "vendor": "V", "series": "synthetic", "kind": ("planetary", "belt")[i % 2],
                      "ratio": float(rng.choice([1.5, 2.0, 3.0, 5.0])), "efficiency": rng.uniform(0.9, 0.98),
                      "inertia": rng.uniform(1e-5, 5e-4), "rated_torque": t, "accel_torque": t * rng.uniform(1.5, 2.5),
-                     "torsional_stiffness": 10 ** rng.uniform(4, 6), "backlash": 3 * math.pi / 10800,
+                     "torsional_stiffness": 10 ** rng.uniform(4, 6),
+                     "backlash": rng.uniform(1.0, 10.0) * math.pi / 10800,  # 1-10 arcmin
                      "max_input_speed": rng.uniform(3000, 8000) * RPM, "mass": math.nan,
                      "price": rng.uniform(100, 800)})
     d = pd.DataFrame.from_records(rows, columns=list(SCHEMA["reductions"]))

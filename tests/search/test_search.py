@@ -114,7 +114,9 @@ def _reduction_case(seed):
     mass = rng.uniform(60, 150) if vertical else rng.uniform(150, 400)
     p = make_problem(cat, limits=limits, moving_mass=float(mass), axial_load=1500.0 if vertical else 3000.0,
                      orientation="vertical" if vertical else "horizontal", duty_cycle=duty,
-                     mode="frequency" if seed in (2, 5) else "stiffness")
+                     mode="frequency" if seed in (2, 5) else "stiffness",
+                     # a reduction's backlash is lost motion (jt P_h / 2 pi): some drives pass, some do not
+                     backlash=float(rng.uniform(5e-6, 40e-6)))
     p = replace(p, restrictions=replace(p.restrictions, drive=True),
                 margins=tuple((c, 1.0) for c in model.CHECKS))
     sp = build_space(p)

@@ -50,8 +50,14 @@ def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = Tru
         return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive_block, chain=chain)
 
 
-# Outputs the motor and coupling change (all others are the same for every drive of a mechanical combination).
-DRIVE_KEYS = frozenset({"cost", "inertia_ratio", "regen_power"} | {f"margin_{c}" for c in model.DRIVE_CHECKS})
+# Outputs the motor, coupling and reduction change (all others are the same for every drive of a mechanical
+# combination); the lost motion takes a reduction's backlash.
+DRIVE_KEYS = frozenset({"cost", "inertia_ratio", "regen_power", "backlash"}
+                       | {f"margin_{c}" for c in model.DRIVE_CHECKS})
+# Drive outputs whose value with the mechanics layout (no motor, coupling or reduction; the bounds: the cheapest
+# drive's price) is the most favourable over every drive: the mechanical stages test them too, the drive stage
+# again per drive (the cost is never more than with the cheapest drive, the lost motion never less than the nut's)
+MECHANICS_BOUNDED = frozenset({"cost", "backlash"})
 # Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain); the motor's
 # inertia enters only the axial-torsional modes, which no limit or objective reads.
 COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1", "k_tool", "kv"})
