@@ -160,7 +160,8 @@ def evaluation_table(ev: Evaluation) -> str:
     housing = "housing rigid" if v["c_housing"] == 0 else f"housing {1 / v['c_housing'] / N_PER_UM:,.0f} N/um"
     housing = "housing estimated" if a.bearing_housing_stiffness is None else housing
     labels = {"bearings": f"bearings ({sets} set{'s' if sets > 1 else ''}, {housing})",
-              "screw": "screw tension", "screw torsion": "screw torsion (lead)", "coupling": "coupling (lead)",
+              "screw": "screw tension", "screw torsion": "screw torsion (lead)",
+              "coupling": "coupling (lead)" if d.reduction is None else "coupling + reduction (lead)",
               "nut": f"nut at {v['max_axial_force'] / 1e3:.1f} kN",
               "nut bracket": "nut bracket (estimate)" if a.nut_bracket_stiffness is None else "nut bracket"}
     lines.append(f"axial stiffness chain at its softest point ({(ev.x[i_min] - a.start_offset) * 1e3:.0f} mm "
