@@ -317,7 +317,8 @@ RESTRICTIONS_SPEC = Spec("catalog", "which catalog parts and mountings the searc
     "motor_series": Key("names", f"motor series {_CATALOG_NAMES}", minimum=1),
     "coupling_series": Key("names", f"coupling series {_CATALOG_NAMES}", minimum=1),
     "reductions": Key("choice", "a searched drive chooses a reduction (reductions.csv) or none, beside motor and "
-                      "coupling (default yes; no: the axis's reduction values only)", choices=(True, False, "yes", "no")),
+                      "coupling (default yes; no: the axis's reduction values only)",
+                      choices=(True, False, "yes", "no")),
     "max_motor_flange": Key("quantity", "the motor's (square) flange size at most this", kind="length",
                             positive=True, example="130 mm"),
     "estimated": Key("choice", "parts whose empty catalog cell the model fills with an estimate (a support "

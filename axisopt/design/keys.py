@@ -6,7 +6,7 @@ as a JSON Schema.
 
 from __future__ import annotations
 
-from ..catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA
+from ..catalog import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
 from ..yamlio import Key, Spec
 from .axis import BRAKE_MODES, MOUNTINGS, ORIENTATIONS
 
@@ -156,8 +156,9 @@ def _part_key(table: str, col: str, kind: str) -> Key:
         return Key("number", doc, required=True, integer=True, minimum=1)
     optional = col in OPTIONAL_COLUMNS.get(table, ())
     if kind == "dimensionless":
+        top = next((c.at_most for c in COLUMNS[table] if c.name == col), None)  # an efficiency: at most 1
         return Key("number", doc + (" (optional: the vendor lists none)" if optional else ""),
-                   required=not optional, minimum=0)
+                   required=not optional, minimum=0, maximum=top)
     return Key("quantity", doc + (" (optional: the vendor lists none)" if optional else ""),
                required=not optional, kind=kind, non_negative=True)
 

@@ -283,5 +283,6 @@ def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool
     else:
         raw = axis_response(params, x, design.axis.mounting, design.preload)
         values = {k: (np.broadcast_to(np.asarray(v, float), x.shape).copy() if k in PROFILE_OUTPUTS
-                      else float(v)) for k, v in raw.items() if k not in ("duty_torques", "zone_factors", "output_torques")}
+                      else float(v)) for k, v in raw.items()
+                  if k not in ("duty_torques", "zone_factors", "output_torques")}
     return Evaluation(design, x, values)

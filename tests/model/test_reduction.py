@@ -36,7 +36,8 @@ def test_beckhoff_tp050_row_in_si():
     assert r["max_input_speed"] == pytest.approx(5000 * 2 * math.pi / 60)
     assert r["backlash"] == pytest.approx(3 * ARCMIN)
     # TP010 MF i = 5 (…/8995369483.html): Ct21 33 Nm/arcmin -> 113 446 N m/rad; TP300 MF i = 5: 1000 -> 3 437 747
-    assert default_catalog().part("reductions", "BK-TP010-MF-5")["torsional_stiffness"] == pytest.approx(113_446, abs=0.5)
+    tp010 = default_catalog().part("reductions", "BK-TP010-MF-5")
+    assert tp010["torsional_stiffness"] == pytest.approx(113_446, abs=0.5)
     assert default_catalog().part("reductions", "BK-TP300-MF-5")["torsional_stiffness"] == \
         pytest.approx(3_437_747, abs=0.5)
 

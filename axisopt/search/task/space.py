@@ -2,7 +2,8 @@
 combinations and the parameter layouts the stages evaluate the axis model on.
 
 A combination is (mounting, nut, bearing arrangement, guide, drive); the nut fixes the screw and a drive
-is a (motor, coupling, reduction) triple (the reduction None: the axis's reduction values).  The drive shares the last part axis with the guide: its index is
+is a (motor, coupling, reduction) triple (the reduction None: the axis's reduction values).  The drive shares the
+last part axis with the guide: its index is
 ``g * D + d`` over G guides and D drives, so combinations are numbered ``((m * N + n) * B + b) * (G D) + g D + d``
 and every layout below holds with "guide" read as "guide and drive".  Without drive search D = 1 (the
 axis's motor inertia and coupling values, drive checks off).  :mod:`.parts` builds a :class:`Space`.
