@@ -46,6 +46,7 @@ class Column:
                 (derived by a rule or illustrative, catalogs/SOURCES.md); ``estimated_how`` says how
     derived_marker : a row whose ``source`` names this value as derived (``'<marker> ... derived'`` within
                 one ``;``-separated part) holds an estimate here whatever its status
+    at_most   : the largest meaningful value in SI (an efficiency: 1), or None
     """
 
     name: str
@@ -57,6 +58,7 @@ class Column:
     estimated_when: tuple = ()
     estimated_how: str = ""
     derived_marker: str = ""
+    at_most: float | None = None
 
     def estimated_in(self, status: str, source: str = "") -> str:
         """How this column's value is estimated in a row of ``status`` and ``source`` ('' : the vendor's)."""
@@ -154,7 +156,7 @@ COLUMNS = MappingProxyType({
         _c("moment_pitch", "torque", "guide_moment_pitch", positive=True),
         _c("moment_yaw", "torque", "guide_moment_yaw", positive=True),
     ),
-    # Drive parts (servo motors, shaft couplings).  Optional tables: a catalog directory may leave them out.
+    # Drive parts (servo motors, shaft couplings, reductions).  Optional tables: a catalog directory may leave them out.
     "motors": (
         *(_c(n, "str") for n in _TEXT), _c("rated_power", "power", positive=True),
         _c("rated_torque", "torque", "motor_rated_torque", positive=True),
@@ -179,6 +181,21 @@ COLUMNS = MappingProxyType({
         _c("max_speed", "angular_speed", "coupling_max_speed", positive=True),
         _c("bore_min", "length", positive=True), _c("bore_max", "length", positive=True),
         _c("mass", "mass", optional=True), _c("price", "money", "coupling_price", **_PRICE),
+    ),
+    # Reductions between motor and coupling (planetary gearbox on the motor flange, or a belt stage), optional:
+    # ratio = motor turns per output turn; inertia at the input (the motor shaft); the torques, the torsional
+    # stiffness and the backlash on the output side (Beckhoff AG2400/AG3400: T2N, T2B, Ct21, jt; n1Max)
+    "reductions": (
+        *(_c(n, "str") for n in _TEXT), _c("kind", "str"),
+        _c("ratio", "dimensionless", "reduction_ratio", positive=True),
+        _c("efficiency", "dimensionless", "reduction_efficiency", positive=True, at_most=1.0),
+        _c("inertia", "inertia", "reduction_inertia"),
+        _c("rated_torque", "torque", "reduction_rated_torque", positive=True),
+        _c("accel_torque", "torque", "reduction_accel_torque", positive=True),
+        _c("torsional_stiffness", "torsional_stiffness", positive=True),
+        _c("backlash", "angle", "reduction_backlash"),
+        _c("max_input_speed", "angular_speed", "reduction_max_speed", positive=True),
+        _c("mass", "mass", optional=True), _c("price", "money", "reduction_price", **_PRICE),
     ),
 })
 
@@ -211,7 +228,10 @@ _ORDERED = {
                ("peak_torque_at_max_speed", "peak_torque")),
     "couplings": (("bore_min", "bore_max"),),
     "nuts": (("preload_min", "preload_max"),),
+    "reductions": (("rated_torque", "accel_torque"),),
 }
+# Largest meaningful values (an efficiency of at most 1), from COLUMNS
+_AT_MOST = {t: tuple((c.name, c.at_most) for c in cols if c.at_most is not None) for t, cols in COLUMNS.items()}
 # The sets of 60-degree thrust bearings for screw ends: pairs (DB back-to-back, DF face-to-face), three rows (two
 # in tandem against one: DBD, DFD) and four (two against two: DBB, DFF), with the rows that carry each load
 # direction: (the stronger direction, the other); the vendors print the set's rating for the stronger one (NSK
@@ -225,15 +245,16 @@ CHOICES = {
     ("bearings", "preload_class"): ("light", "medium", "heavy"),
     # the sets of 60-degree thrust bearings for screw ends (ARRANGEMENT_ROWS)
     ("bearings", "arrangement"): tuple(ARRANGEMENT_ROWS),
+    ("reductions", "kind"): ("planetary", "belt"),
 }
 
 
-TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings")
+TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings", "reductions")
 
 
 class Catalog:
-    """The part tables in SI, indexed by part id, plus where each row came from.  ``motors`` and
-    ``couplings`` (the drive) are empty tables when no catalog directory has them.
+    """The part tables in SI, indexed by part id, plus where each row came from.  ``motors``,
+    ``couplings`` and ``reductions`` (the drive) are empty tables when no catalog directory has them.
 
     Each table is given as a :class:`~axisopt.parttable.PartTable` (what :func:`load_catalogs` builds, no
     pandas) or a pandas DataFrame indexed by part id.  ``cat.screws`` (and the other five) is the pandas table
@@ -242,8 +263,8 @@ class Catalog:
 
     __slots__ = ("_given", "_rows", "_frames")
 
-    def __init__(self, screws, nuts, bearings, guides, motors=None, couplings=None):
-        given = dict(zip(TABLES, (screws, nuts, bearings, guides, motors, couplings)))
+    def __init__(self, screws, nuts, bearings, guides, motors=None, couplings=None, reductions=None):
+        given = dict(zip(TABLES, (screws, nuts, bearings, guides, motors, couplings, reductions)))
         self._given = {k: (_empty_table(k) if v is None else v) for k, v in given.items()}
         self._rows: dict = {}
         self._frames: dict = {}
@@ -283,6 +304,7 @@ class Catalog:
     guides = property(lambda self: self.table("guides"), doc="linear guides (pandas DataFrame by part id)")
     motors = property(lambda self: self.table("motors"), doc="motors (pandas DataFrame by part id)")
     couplings = property(lambda self: self.table("couplings"), doc="couplings (pandas DataFrame by part id)")
+    reductions = property(lambda self: self.table("reductions"), doc="reductions (pandas DataFrame by part id)")
 
     def __repr__(self) -> str:
         return "Catalog(" + ", ".join(f"{n}: {len(self.rows(n))}" for n in TABLES) + ")"
@@ -341,6 +363,9 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
             return col, "must not be negative"
         if kind != "int" and abs(val) > PLAUSIBLE_MAX.get(kind, 1e12):
             return col, f"out of range (at most {PLAUSIBLE_MAX.get(kind, 1e12):g} in SI units)"
+    for col, top in _AT_MOST.get(name, ()):
+        if rec[col] > top:
+            return col, f"must be at most {top:g} (= {top * 100:g} %)"
     for (t, c), ok in CHOICES.items():
         if t == name and rec.get(c) not in ok:
             return c, f"'{rec.get(c)}' is not one of {', '.join(ok)}"

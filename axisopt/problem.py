@@ -46,6 +46,9 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
       motor_vendors: [Yaskawa]         # the drive parts' own vendor and series filters ('vendors' is for
       motor_series: [Sigma-7 SGM7G]    # the mechanical parts)
       coupling_series: [...]
+      reductions: yes                  # a searched drive also chooses a reduction (catalogs' reductions.csv) or
+                                       # none (default yes when the table has rows; 'no': direct drive, or the
+                                       # axis's reduction_ratio, only)
       max_motor_flange: 130 mm         # the motor must fit the machine: flange (square) size at most this
     continuous:
       nut_preload: {min: 0 N, max: 5 kN}  # intersected with each nut's preload_min..preload_max
@@ -133,9 +136,10 @@ OBJECTIVE_MODES = PERFORMANCE + COMBINED_MODES + tuple(g.key for g in OBJECTIVE_
                                                        if g.mode and not g.performance)
 PARETO_KEYS = tuple(g.key for g in OBJECTIVE_TABLE if g.pareto) + tuple(PARETO_ALIASES)
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")
-SLOTS = MECH_SLOTS + ("motor", "coupling")
+DRIVE_SLOTS = ("motor", "coupling", "reduction")
+SLOTS = MECH_SLOTS + DRIVE_SLOTS
 SLOT_TABLE = MappingProxyType({"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides",
-                               "motor": "motors", "coupling": "couplings"})
+                               "motor": "motors", "coupling": "couplings", "reduction": "reductions"})
 
 # limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once there
 DEFAULT_LIMITS = MappingProxyType({k: lim.default for k, lim in LIMITS.items() if lim.default is not None})
@@ -191,6 +195,7 @@ class Restrictions:
     motor_vendors: tuple | None = None
     motor_series: tuple | None = None
     coupling_series: tuple | None = None
+    reductions: bool = True  # a searched drive chooses a reduction part too (or none: the axis's reduction values)
     max_motor_flange: float | None = None  # [m]
     estimated: str = "allow"  # 'exclude': no part whose empty catalog cell the model would estimate
 
@@ -311,6 +316,9 @@ RESTRICTIONS_SPEC = Spec("catalog", "which catalog parts and mountings the searc
     "motor_vendors": Key("names", f"motor vendors {_CATALOG_NAMES}", minimum=1),
     "motor_series": Key("names", f"motor series {_CATALOG_NAMES}", minimum=1),
     "coupling_series": Key("names", f"coupling series {_CATALOG_NAMES}", minimum=1),
+    "reductions": Key("choice", "a searched drive chooses a reduction (reductions.csv) or none, beside motor and "
+                      "coupling (default yes; no: the axis's reduction values only)",
+                      choices=(True, False, "yes", "no")),
     "max_motor_flange": Key("quantity", "the motor's (square) flange size at most this", kind="length",
                             positive=True, example="130 mm"),
     "estimated": Key("choice", "parts whose empty catalog cell the model fills with an estimate (a support "
@@ -468,7 +476,7 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
     # the drive is searched when asked for: 'drive: yes', or a motor/coupling filter or requirement
     req = sec.node.value.get("require")
     asked = any(sec.has(k) for k in ("motor_vendors", "motor_series", "coupling_series")) or (
-        req is not None and isinstance(req.value, dict) and bool({"motor", "coupling"} & set(req.value)))
+        req is not None and isinstance(req.value, dict) and bool(set(DRIVE_SLOTS) & set(req.value)))
     kw["drive"] = drive in (True, "yes") if drive is not None else asked
     if kw["drive"] and not has_motors:
         raise sec.error("drive", "the catalogs have no motors (motors.csv)")
@@ -480,6 +488,9 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
     est = sec.read("estimated")
     if est is not None:
         kw["estimated"] = est
+    reds = sec.read("reductions")
+    if reds is not None:
+        kw["reductions"] = reds in (True, "yes")
     flange = sec.read("max_motor_flange")
     if flange is not None:
         kw["max_motor_flange"] = flange
@@ -530,8 +541,10 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         s.done()
         kw[key] = tuple(out)
     sec.done()
-    if not kw["drive"] and any(slot in ("motor", "coupling") for slot, _ in kw.get("require", ())):
-        raise sec.error("require", "motor/coupling parts are required but 'drive' is off")
+    if not kw["drive"] and any(slot in DRIVE_SLOTS for slot, _ in kw.get("require", ())):
+        raise sec.error("require", "motor/coupling/reduction parts are required but 'drive' is off")
+    if not kw.get("reductions", True) and any(slot == "reduction" for slot, _ in kw.get("require", ())):
+        raise sec.error("require", "reduction parts are required but 'reductions' is off")
     return Restrictions(**kw)
 
 

@@ -14,11 +14,14 @@ show, plus a vendor factor and scatter.  Anchors (checked against the shipped ca
   of size, block mass ~ size^3;
 * motors: rotor inertia ~ rated torque^1.5 (Yaskawa SGM7G: 8.3 N.m, 14 kg.cm^2), peak ~ 3 x rated, price
   ~ 150 EUR per N.m;
-* couplings: rated torque 10-300 N.m, torsional stiffness ~ 1 000 x torque N.m/rad, inertia ~ torque^1.3.
+* couplings: rated torque 10-300 N.m, torsional stiffness ~ 1 000 x torque N.m/rad, inertia ~ torque^1.3;
+* reductions: planetary (i = 3-10, T2N 40-2000 N.m, T2B ~ 2.3 x T2N, Ct21 ~ 0.5 x T2N N.m/arcmin, J1 ~ 0.03 x
+  T2N^0.8 kg.cm^2, jt 3 arcmin: the Beckhoff AG2400/AG3400 rows of catalogs/reductions.csv) and belt stages
+  (i = 1.5-3; no vendor stage data: illustrative).
 
-``catalog(n_screws, nuts_per_screw, n_bearings, n_guides, n_motors, n_couplings, seed)`` returns a
+``catalog(n_screws, nuts_per_screw, n_bearings, n_guides, n_motors, n_couplings, seed, n_reductions)`` returns a
 :class:`axisopt.catalog.Catalog`; the combination count of a problem over it is about
-nuts x bearings x guides x (motor, coupling) pairs.
+nuts x bearings x guides x (motor, coupling, reduction or none) drives.
 """
 
 from __future__ import annotations
@@ -40,8 +43,9 @@ def _vendor(rng):
 
 
 def catalog(n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100, n_motors=0, n_couplings=0,
-            seed=0) -> Catalog:
+            seed=0, n_reductions=0) -> Catalog:
     rng = np.random.default_rng(seed)
+    reductions = _reductions(n_reductions, np.random.default_rng(1000 + seed))  # the other draws keep their order
     screws, nuts, bearings, guides, motors, couplings = [], [], [], [], [], []
     for i in range(n_screws):
         vend, lvl = _vendor(rng)
@@ -124,4 +128,21 @@ def catalog(n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100, n_motor
         return d.set_index("id", drop=False)
 
     return Catalog(df(screws, "screws"), df(nuts, "nuts"), df(bearings, "bearings"), df(guides, "guides"),
-                   df(motors, "motors"), df(couplings, "couplings"))
+                   df(motors, "motors"), df(couplings, "couplings"), df(reductions, "reductions"))
+
+
+def _reductions(n, rng) -> list:
+    out = []
+    for i in range(n):
+        vend, lvl = _vendor(rng)
+        belt = bool(rng.random() < 0.3)
+        ratio = float(rng.choice([1.5, 2.0, 3.0] if belt else [3, 4, 5, 7, 10]))
+        t = float(rng.choice([40, 80, 125, 330, 1800]))
+        out.append({"id": f"R{i}", "vendor": vend, "series": "synthetic", "kind": "belt" if belt else "planetary",
+                    "ratio": ratio, "efficiency": 0.95 if belt else 0.97, "inertia": 3e-6 * t ** 0.8,
+                    "rated_torque": t, "accel_torque": 2.3 * t,
+                    "torsional_stiffness": 0.5 * t * 10800 / math.pi * rng.uniform(0.7, 1.3),
+                    "backlash": (5.0 if belt else 3.0) * math.pi / 10800,
+                    "max_input_speed": (6000 if t < 500 else 3000) * RPM, "mass": 0.05 * t ** 0.8,
+                    "price": (200 + 2.5 * t) * lvl})
+    return out

@@ -7,7 +7,7 @@ import textwrap
 from ..errors import InputError
 from .common import EXIT_OK, stdout_taken, write_json
 
-KINDS = ("screws", "nuts", "bearings", "guides", "motors", "couplings")
+KINDS = ("screws", "nuts", "bearings", "guides", "motors", "couplings", "reductions")
 
 # The text table per kind: (header, column or columns, factor from SI, format); fits 100 columns.  All
 # columns, with vendor, provenance and source, are in --json and --csv.
@@ -33,6 +33,10 @@ _TABLE = {
     "couplings": (("rated [N.m]", "rated_torque", 1.0, ".0f"), ("k [N.m/rad]", "torsional_stiffness", 1.0, ",.0f"),
                   ("J [kg.cm^2]", "inertia", 1e4, ".3g"), ("bore [mm]", ("bore_min", "bore_max"), 1e3, ".0f"),
                   ("max [rpm]", "max_speed", 60 / 6.283185307179586, ",.0f")),
+    "reductions": (("kind", "kind", None, ""), ("i", "ratio", 1.0, ".3g"), ("eta", "efficiency", 1.0, ".2f"),
+                   ("T2N [N.m]", "rated_torque", 1.0, ".0f"), ("T2B [N.m]", "accel_torque", 1.0, ".0f"),
+                   ("k [N.m/rad]", "torsional_stiffness", 1.0, ",.0f"), ("J1 [kg.cm^2]", "inertia", 1e4, ".3g"),
+                   ("n1max [rpm]", "max_input_speed", 60 / 6.283185307179586, ",.0f")),
 }
 # What each filter applies to.
 _FITS = ("nuts", "bearings")

@@ -213,6 +213,7 @@ class Design:
     nut_preload: float | None = None  # None: the catalog's quoted preload
     motor: object = None  # servo motor row, or None (the axis's motor_inertia; drive checks off)
     coupling: object = None  # coupling row, or None (the axis's coupling values)
+    reduction: object = None  # reduction row (gearbox or belt stage), or None (the axis's reduction_* values)
     name: str = "design"
     source: str = ""
     assumed: tuple = field(default=())  # axis keys left at their defaults, for reports
@@ -236,7 +237,7 @@ class Design:
             "axial load": fmt(a.axial_load, "N"), "parts": f"{parts} (nut preload {fmt(self.preload, 'N')})"})
 
 
-PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling")
+PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling", "reduction")
 
 
 __all__ = ["Axis", "Design", "PART_SLOTS", "MOUNTINGS", "ORIENTATIONS", "BRAKE_MODES", "G"]

@@ -6,7 +6,7 @@ as a JSON Schema.
 
 from __future__ import annotations
 
-from ..catalog import CHOICES, OPTIONAL_COLUMNS, SCHEMA
+from ..catalog import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
 from ..yamlio import Key, Spec
 from .axis import BRAKE_MODES, MOUNTINGS, ORIENTATIONS
 
@@ -91,7 +91,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "duty_cycle": Key("list", "moves and dwells (default: the rapid move over the stroke and back)",
                       minimum=1, maximum=SEGMENT_LIMIT,
                       items=Key("one_of", options=(Key("section", spec=MOVE_SPEC), Key("section", spec=DWELL_SPEC)))),
-    "reduction_ratio": Key("number", "motor turns per screw turn (2: a 2:1 belt or gear)", positive=True,
+    "reduction_ratio": Key("number", "motor turns per screw turn (2: a 2:1 belt or gear; when no reduction part)",
+                           positive=True,
                            minimum=0.02, maximum=50.0),
     "reduction_efficiency": Key("number", "efficiency of the reduction, in (0, 1]", positive=True, maximum=1.0),
     "reduction_inertia": _axis_q("inertia", "inertia of the reduction at the motor shaft"),
@@ -155,8 +156,9 @@ def _part_key(table: str, col: str, kind: str) -> Key:
         return Key("number", doc, required=True, integer=True, minimum=1)
     optional = col in OPTIONAL_COLUMNS.get(table, ())
     if kind == "dimensionless":
+        top = next((c.at_most for c in COLUMNS[table] if c.name == col), None)  # an efficiency: at most 1
         return Key("number", doc + (" (optional: the vendor lists none)" if optional else ""),
-                   required=not optional, minimum=0)
+                   required=not optional, minimum=0, maximum=top)
     return Key("quantity", doc + (" (optional: the vendor lists none)" if optional else ""),
                required=not optional, kind=kind, non_negative=True)
 
@@ -180,6 +182,9 @@ PARTS_SPEC = Spec("parts", "one part per slot: a catalog id, or an inline mappin
     "guide": _slot("guides", "linear guide block and rail", True),
     "motor": _slot("motors", "servo motor (optional; needs axis.acceleration or axis.duty_cycle)", False),
     "coupling": _slot("couplings", "shaft coupling (optional)", False),
+    "reduction": _slot("reductions", "reduction between motor and coupling: planetary gearbox or belt stage "
+                       "(optional; without it the axis's reduction_ratio, reduction_efficiency and reduction_inertia, "
+                       "direct drive by default)", False),
     "nut_preload": Key("quantity", "nut preload within the nut's range (default: the catalog's)", kind="force",
                        non_negative=True),
 })

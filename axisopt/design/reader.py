@@ -158,7 +158,7 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
         "bearing": read_part(sec, "bearing", "bearings", catalog),
         "guide": read_part(sec, "guide", "guides", catalog),
     }
-    for slot, table in (("motor", "motors"), ("coupling", "couplings")):
+    for slot, table in (("motor", "motors"), ("coupling", "couplings"), ("reduction", "reductions")):
         if sec.has(slot):
             parts[slot] = read_part(sec, slot, table, catalog)
     pre = sec.read("nut_preload")
@@ -206,6 +206,10 @@ def load_design(path) -> Design:
     psec = root.read("parts")
     parts = read_parts(psec, catalog)
     root.done()
+    given = [k for k in ("reduction_ratio", "reduction_efficiency", "reduction_inertia") if k not in assumed]
+    if parts.get("reduction") is not None and given:
+        raise psec.error("reduction", f"the reduction part sets the ratio, efficiency and inertia: leave "
+                         f"axis.{given[0]} out (it applies only without a reduction part)")
     if parts.get("motor") is not None and axis.acceleration <= 0 and not axis.duty_cycle:
         raise psec.error("motor", "sizing a motor needs axis.acceleration (or an axis.duty_cycle)")
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)

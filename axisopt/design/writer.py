@@ -29,6 +29,8 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
     for f in fields(Axis):
         if f.name in design.assumed:
             continue
+        if f.name.startswith("reduction_") and design.reduction is not None:
+            continue  # the reduction part sets them (the reader refuses both)
         v = getattr(a, f.name)
         if f.name in AXIS_KINDS:
             if v is not None:
@@ -45,7 +47,7 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
             axis[f.name] = v
     parts: dict = {}
     for slot, table in (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides"),
-                        ("motor", "motors"), ("coupling", "couplings")):
+                        ("motor", "motors"), ("coupling", "couplings"), ("reduction", "reductions")):
         row = getattr(design, slot)
         if row is None:
             continue

@@ -6,7 +6,8 @@ r"""The axial stiffness chain at the nut, component by component (seed eq. 1-2 a
   set in series with the segment x.  Fixed-fixed: the two load paths in parallel (seed eq. 3-5, 10;
   THK A E L/(a b)).
 * ``k_tors``: screw torsion from the coupling to the nut, through the lead, k_theta (2 pi / P_h)^2.
-* ``k_cpl``: coupling torsion through the lead (motor held by its position loop at standstill).
+* ``k_cpl``: coupling torsion through the lead (motor held by its position loop at standstill), with a
+  reduction's output-side torsional stiffness in series (:func:`drive_torsional_stiffness`).
 * ``k_N``: nut.  Double nut: eq. 9 at the preload (HIWIN F 3.34), then the Hertz curve with lift-off at the
   largest axial load the axis sees (its softest point).  Single nut with play: HIWIN F 3.35 at the mean
   operating load, 0.8 K (F_bm / 0.28 C)^(1/3).
@@ -24,6 +25,16 @@ from ..physics import nut as pn
 from ..physics import screw as ps
 from ..physics import thermal as pt
 from .loads import bearing_set_stiffness
+
+
+def drive_torsional_stiffness(p):
+    r"""Torsional stiffness between the motor side and the screw [N m/rad]: the coupling and the reduction's output
+    side in series (both on the screw side of the ratio), :math:`1/k_\theta = 1/k_{cpl} + 1/C_{t21}`.
+
+    p["coupling_stiffness"] [N m/rad]; p["reduction_compliance"] = 1 / Ct21 [rad/(N m)], 0 without a reduction
+    (Beckhoff AG2400/AG3400 "Maximum torsional rigidity Ct21 [Nm/arcmin]", output side).  Series springs: the
+    seed paper's eq. 1 for the axial chain, the same rule for torsion."""
+    return 1.0 / (1.0 / p["coupling_stiffness"] + p["reduction_compliance"])
 
 
 def nut_stiffness(p, preload, axial_force, mean_force):
@@ -46,7 +57,7 @@ def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
     k_sb = ps.screw_bearing_stiffness(d_r, x, p["span"], mounting, k_set)
     k_screw = ps.screw_stiffness(d_r, x, p["span"], mounting)
     k_tors = ps.torsion_axial_stiffness(ps.screw_torsional_stiffness(d_r, x), lead)
-    k_cpl = ps.torsion_axial_stiffness(p["coupling_stiffness"], lead)
+    k_cpl = ps.torsion_axial_stiffness(drive_torsional_stiffness(p), lead)
     k_n0, k_n = nut_stiffness(p, preload, axial_force, mean_force)
     k_drive = 1.0 / (1.0 / k_sb + 1.0 / k_tors + 1.0 / k_n + p["bracket_compliance"])
     k_tot = ps.series_stiffness(k_drive, k_cpl)

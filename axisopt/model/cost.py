@@ -4,8 +4,9 @@ from __future__ import annotations
 
 
 def cost(p):
-    """Screw by length plus end machining, nut, bearing sets, guide blocks, rails, motor and coupling [EUR]."""
+    """Screw by length plus end machining, nut, bearing sets, guide blocks, rails, motor, coupling and
+    reduction [EUR]."""
     return (p["screw_price_per_length"] * p["span"] + p["screw_price_fixed"] + p["nut_price"]
             + p["bearing_sets"] * p["bearing_price"] + p["guide_blocks"] * p["guide_block_price"]
             + p["rails"] * p["rail_length"] * p["guide_rail_price_per_length"]
-            + p["motor_price"] + p["coupling_price"])
+            + p["motor_price"] + p["coupling_price"] + p["reduction_price"])

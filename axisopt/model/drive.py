@@ -18,6 +18,13 @@ with friction and weight.  Yaskawa's selection asks the load torque to stay with
 thrust at the mean axial load counts with the cycle's RMS torque against the rated torque, the thrust at
 the largest axial load with the cycle's peak against the motor's peak torque.
 
+A reduction part (a planetary gearbox on the motor flange) is checked as its vendor rates it (Beckhoff AG2400 /
+AG3400 "Mechanical data": T2B "maximum acceleration torque, maximum 1000 cycles per hour", T2N "nominal output
+torque", n1Max "maximum input speed"): the largest output torque of the cycle (acceleration, thrust) against T2B,
+the cycle's RMS output torque (or the mean thrust, if larger) against T2N, the largest motor speed against n1Max.
+The output torque is the torque the screw side takes (:func:`output_torques`): the same phase torques at the screw,
+without the rotor's and the reduction's own inertia and loss.
+
 The phases are the axis's (``p["duty"]``, floats); the design enters through the parameters, so this
 evaluates on floats, numpy arrays and CasADi symbols like every other sub-assembly.
 """
@@ -25,6 +32,8 @@ evaluates on floats, numpy arrays and CasADi symbols like every other sub-assemb
 from __future__ import annotations
 
 import math
+
+import numpy as np
 
 from .. import mathx as mx
 from ..physics import drive as pd
@@ -43,6 +52,45 @@ def drive_inertias(p, moving_mass):
     j_load = pd.reflected_inertia(moving_mass, p["lead"], j_screw, p["coupling_inertia"], a,
                                   p["reduction_inertia"])
     return j_load, p["rotor_inertia"]
+
+
+def lost_motion(p):
+    r"""Lost motion of the drive at the table [m]: the axial play of a single nut with play (a preloaded nut has
+    none) plus a reduction's torsional backlash through the lead,
+
+    .. math:: \delta = (1 - d)\,\delta_{nut} + j_t \frac{P_h}{2\pi}
+
+    p["nut_axial_play"] [m], p["nut_double"] (1: preloaded), p["reduction_backlash"] j_t [rad] at the output
+    (Beckhoff AG2400/AG3400 "Maximum torsional backlash jt [arcmin]"; 0 without a reduction), p["lead"] P_h [m].
+    A semi-closed loop (encoder on the motor) does not see it; the problem's max_backlash limits it."""
+    return (1.0 - p["nut_double"]) * p["nut_axial_play"] + p["reduction_backlash"] * p["lead"] / (2.0 * math.pi)
+
+
+def output_torques(p, moving_mass, drag, phases, hold_friction=0.0):
+    r"""Torque at the reduction's output (the screw side of the ratio) per duty-cycle phase [N m], signed (THK eq.
+    40-45 at the screw, A = 1):
+
+    .. math:: T_2 = (m (P_h/2\pi)^2 + J_S + J_{cpl}) \frac{2\pi}{P_h} a + s\,(T_f + \frac{F P_h}{2\pi\eta_s}) + T_g
+
+    p : parameters (lead, nominal_diameter, span, coupling_inertia, gravity_axial, table_mass);  moving_mass [kg];
+    drag : friction torque at the screw T_f [N m];  phases : the duty cycle;  hold_friction : guide friction at
+    standstill [N].  Returns (phase torques [(T_start, T_end)], steady thrust at the largest axial load, at the
+    mean axial load) [N m].  What the motor torque is less the rotor's and the reduction's inertia and loss,
+    referred to the output: what the gearbox's T2B and T2N rate (Beckhoff AG2400 Mechanical data)."""
+    j_screw = ps.screw_rotary_inertia(p["nominal_diameter"], p["span"])
+    by_mass = {}
+    for ph in phases:
+        if ph.moving_mass not in by_mass:
+            m = phase_moving_mass(p, moving_mass, ph.moving_mass)
+            by_mass[ph.moving_mass] = (
+                pd.reflected_inertia(m, p["lead"], j_screw, p["coupling_inertia"], 1.0),
+                pd.force_torque(p["gravity_axial"] * m * G, p["lead"], SCREW_EFFICIENCY, 1.0))
+    torques = pd.phase_torques(phases, [by_mass[ph.moving_mass][0] for ph in phases], p["lead"], drag,
+                               [by_mass[ph.moving_mass][1] for ph in phases], SCREW_EFFICIENCY, 1.0, hold_friction)
+    gravity = pd.force_torque(p["gravity_axial"] * moving_mass * G, p["lead"], SCREW_EFFICIENCY, 1.0)
+    thrust = drag + pd.force_torque(p["axial_load"], p["lead"], SCREW_EFFICIENCY, 1.0) + gravity
+    thrust_mean = drag + pd.force_torque(p["mean_axial_load"], p["lead"], SCREW_EFFICIENCY, 1.0) + gravity
+    return torques, thrust, thrust_mean
 
 
 def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
@@ -113,6 +161,15 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
             hold = mx.fmax(hold, t0)
     has = p["has_motor"] > 0.5
     brake_needed = p["gravity_axial"] > 0.5
+    # the reduction's output torques (screw side): the cycle's largest against T2B, its RMS against T2N
+    red = p["has_reduction"] > 0.5
+    if isinstance(red, (bool, np.bool_)) and not red:  # numbers without a reduction: nothing at an output
+        out_torques, out_thrust, out_thrust_mean = [(0.0 * friction, 0.0 * friction)] * len(phases), \
+            0.0 * friction, 0.0 * friction
+    else:
+        out_torques, out_thrust, out_thrust_mean = output_torques(p, moving_mass, drag, phases, hold_friction)
+    out_peak = mx.fmax(_pair_peaks(out_torques), out_thrust) if phases else out_thrust
+    out_rms = mx.fmax(pd.linear_rms_torque(out_torques, durations), out_thrust_mean) if phases else out_thrust_mean
     screw_speed = 2.0 * math.pi * v_max / p["lead"]
     margins = {
         "motor_peak_torque": mx.if_else(has, p["motor_peak_torque"] / use, NOT_APPLICABLE),
@@ -127,6 +184,11 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
                                       NOT_APPLICABLE),
         "coupling_speed": mx.if_else(p["has_coupling"] > 0.5, p["coupling_max_speed"] / mx.fmax(screw_speed, 1e-9),
                                      NOT_APPLICABLE),
+        "reduction_accel_torque": mx.if_else(red, p["reduction_accel_torque"] / mx.fmax(out_peak, 1e-9),
+                                             NOT_APPLICABLE),
+        "reduction_rated_torque": mx.if_else(red, p["reduction_rated_torque"] / mx.fmax(out_rms, 1e-9),
+                                             NOT_APPLICABLE),
+        "reduction_speed": mx.if_else(red, p["reduction_max_speed"] / mx.fmax(n_motor, 1e-9), NOT_APPLICABLE),
     }
     out = {f"margin_{k}": v for k, v in margins.items()}
     out.update(check_pairs({
@@ -135,6 +197,9 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
         "brake_holding": (p["motor_brake_torque"], p["brake_safety"] * hold),
         "coupling_torque": (p["coupling_rated_torque"], p["motor_peak_torque"] * p["reduction_ratio"]),
         "coupling_speed": (p["coupling_max_speed"], screw_speed),
+        "reduction_accel_torque": (p["reduction_accel_torque"], out_peak),
+        "reduction_rated_torque": (p["reduction_rated_torque"], out_rms),
+        "reduction_speed": (p["reduction_max_speed"], n_motor),
     }))
     # energy the motor returns to the drive over one cycle (braking, lowering a vertical axis) and its mean power:
     # what the drive's regenerative resistor must take (Yaskawa 12.8.6), before winding and drive losses
@@ -148,8 +213,15 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
         "holding_torque": hold,
         "friction_torque": friction, "gravity_torque": gravity, "duty_time": sum(durations),
         "duty_torques": torques, "zone_factors": factors,
+        "output_peak_torque": out_peak, "output_rms_torque": out_rms, "output_thrust_torque": out_thrust,
+        "output_mean_thrust_torque": out_thrust_mean, "output_torques": out_torques,
     })
     return out
+
+
+def _pair_peaks(torques):
+    """The largest |torque| over the ends of the (shared, :func:`axisopt.physics.drive.phase_torques`) pairs."""
+    return _largest({id(pair): mx.fmax(mx.fabs(pair[0]), mx.fabs(pair[1])) for pair in torques}.values())
 
 
 def _largest(values):

@@ -22,7 +22,7 @@ from .params import PART_PARAMS, RULE_PARAMS, axis_params, positions
 from .response import axis_response
 
 SLOT_TABLES = (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides"),
-               ("motor", "motors"), ("coupling", "couplings"))
+               ("motor", "motors"), ("coupling", "couplings"), ("reduction", "reductions"))
 _STEP = 0.05  # relative perturbation of an estimated parameter
 _MOVES = 1e-7  # relative change of an output that counts as "rests on it"
 
@@ -113,7 +113,7 @@ def _param_of(table: str, column: str) -> str | None:
 def design_estimates(design) -> list:
     """The estimated values of a design's parts, in slot order (:class:`Estimate`)."""
     p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                    design.coupling)
+                    design.coupling, design.reduction)
     out = []
     for slot, table in SLOT_TABLES:
         row = getattr(design, slot, None)
@@ -161,7 +161,7 @@ def resting_on(design, outputs, estimates=None) -> dict:
         return {}
     x = positions(design.axis)
     p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                    design.coupling)
+                    design.coupling, design.reduction)
     # the design and each estimate raised by 5 %, one row each, in one evaluation of the model
     k = len(estimates) + 1
     def column(v):
@@ -227,7 +227,7 @@ def binding_estimates(design, limits=(), objective_outputs=(), checks: bool = Tr
 
     x = positions(design.axis)
     p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                    design.coupling)
+                    design.coupling, design.reduction)
     with np.errstate(divide="ignore", invalid="ignore"):
         out = axis_response(p, x, design.axis.mounting, design.preload)
     wanted = [("objective", o) for o in objective_outputs]

@@ -24,6 +24,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..physics import dynamics as pdy
+from .chain import drive_torsional_stiffness
 from .function import Evaluation, design_params
 from .modes import STEEL_DAMPING, dampers, drive_inertias
 
@@ -43,7 +44,7 @@ def frf_positions(ev: Evaluation) -> list[int]:
 def chain_at(ev: Evaluation, p: dict, i: int) -> dict:
     """Springs, masses and dampers of the drive-train model at position index i (SI)."""
     j_m, j_s = drive_inertias(p)
-    k_c = float(p["coupling_stiffness"])
+    k_c = float(drive_torsional_stiffness(p))  # coupling and reduction in series
     chain = {"k_total": ev.at("k_total", i), "k_nut": float(ev["k_nut"]), "k_bearing": float(ev["k_bearing"])}
     c = dampers(p, chain)
     return {

@@ -26,7 +26,7 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "screw_speed", "critical_speed", "buckling_load", "yield_load", "dn", "nut_lift_off_force",
                   "bearing_max_load", "load_inertia", "total_inertia", "inertia_ratio", "motor_speed", "peak_torque",
                   "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque",
-                  "gravity_torque", "regen_energy", "regen_power",
+                  "gravity_torque", "regen_energy", "regen_power", "output_peak_torque", "output_rms_torque",
                   "duty_time", "guide_max_load", "guide_static_safety", "guide_mean_load", "nut_static_safety",
                   "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking", "friction_power", "heat_transfer",
                   "heat_balance_rise", "temperature_rise", "thermal_growth",
@@ -93,7 +93,7 @@ def model_for(mounting: str, n_positions: int, duty: tuple = ()) -> AxisModel:
 
 def design_params(design: Design) -> dict:
     return axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                       design.coupling)
+                       design.coupling, design.reduction)
 
 
 COMPONENTS = (("bearings", "k_bearing"), ("screw", "k_screw"), ("screw torsion", "k_torsion"),
@@ -235,8 +235,9 @@ def check_rows(ev: Evaluation) -> list:
     d, v = ev.design, ev.values
     out = []
     for c in CHECKS:
-        if c in DRIVE_CHECKS and (d.motor is None and not c.startswith("coupling_")
-                                  or c.startswith("coupling_") and d.coupling is None):
+        if c in DRIVE_CHECKS and (c.startswith("reduction_") and d.reduction is None
+                                  or c.startswith("coupling_") and d.coupling is None
+                                  or d.motor is None and not c.startswith(("coupling_", "reduction_"))):
             continue
         m = float(v[f"margin_{c}"])
         if c == "brake_holding" and d.axis.orientation != "vertical":
@@ -259,8 +260,12 @@ def drive_dict(ev: Evaluation) -> dict | None:
     d, v = ev.design, ev.values
     if d.motor is None:
         return None
+    red = d.reduction
     return {"motor": str(d.motor["id"]), "coupling": None if d.coupling is None else str(d.coupling["id"]),
-            "reduction_ratio": d.axis.reduction_ratio, "peak_torque_Nm": v["peak_torque"],
+            "reduction": None if red is None else str(red["id"]),
+            "reduction_ratio": d.axis.reduction_ratio if red is None else float(red["ratio"]),
+            "output_peak_torque_Nm": v["output_peak_torque"], "output_rms_torque_Nm": v["output_rms_torque"],
+            "peak_torque_Nm": v["peak_torque"],
             "rms_torque_Nm": v["rms_torque"], "thrust_torque_Nm": v["thrust_torque"],
             "mean_thrust_torque_Nm": v["mean_thrust_torque"],
             "holding_torque_Nm": v["holding_torque"], "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
@@ -278,5 +283,6 @@ def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool
     else:
         raw = axis_response(params, x, design.axis.mounting, design.preload)
         values = {k: (np.broadcast_to(np.asarray(v, float), x.shape).copy() if k in PROFILE_OUTPUTS
-                      else float(v)) for k, v in raw.items() if k not in ("duty_torques", "zone_factors")}
+                      else float(v)) for k, v in raw.items()
+                  if k not in ("duty_torques", "zone_factors", "output_torques")}
     return Evaluation(design, x, values)

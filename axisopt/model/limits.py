@@ -106,7 +106,8 @@ class Check:
     short    : a short name for tables with one column per design
     unit     : the unit vendors quote the compared values in; ``factor`` converts SI to it
     preload  : how the margin moves with the nut preload (see :data:`OUTPUT_PRELOAD`)
-    drive    : a drive check: it applies only when the design has a motor (coupling checks: a coupling)
+    drive    : a drive check: it applies only when the design has a motor (coupling checks: a coupling; reduction
+               checks: a reduction)
     relaxable: a rule with a margin one may trade (False: a compatibility rule, parts that fit or not; an
                infeasible problem's explanation never proposes relaxing it)
     """
@@ -148,6 +149,13 @@ CHECK_TABLE = (
     Check("coupling_torque", "coupling rated torque / motor peak torque", "coupling torque", "N.m", 1.0,
           drive=True),
     Check("coupling_speed", "coupling max speed / max screw speed", "coupling speed", "rpm", RPM, drive=True),
+    # a reduction part (Beckhoff AG2400/AG3400 Mechanical data): the output torques of the cycle against T2B and
+    # T2N, the motor speed against n1Max; convex in the nut preload like the motor torques
+    Check("reduction_accel_torque", "reduction T2B / peak output torque (cycle, thrust)", "reduction T2B", "N.m",
+          1.0, preload=CONVEX, drive=True),
+    Check("reduction_rated_torque", "reduction T2N / RMS output torque, mean thrust", "reduction T2N", "N.m",
+          1.0, preload=CONVEX, drive=True),
+    Check("reduction_speed", "reduction n1Max / max motor speed", "reduction speed", "rpm", RPM, drive=True),
     Check("guide_static", "guide block C0 / (least f_S x largest block load)", "guide static", "kN", 1e-3),
     Check("nut_static", "nut C0a / (least f_S x largest axial force)", "nut static", "kN", 1e-3),
     # the static set load (pretension, thermal force) rises with the nut preload through the heat balance

@@ -8,6 +8,7 @@ from .. import mathx as mx
 from ..physics import damping as pdm
 from ..physics import dynamics as pdy
 from ..physics import screw as ps
+from .chain import drive_torsional_stiffness
 
 # Material damping ratio of steel structures, seed Table 5 (0.001-0.002).
 STEEL_DAMPING = 0.002
@@ -34,7 +35,8 @@ def drive_inertias(p):
 def drive_train_modes(p, chain, m_eff) -> dict:
     """First two elastic modes of motor - coupling - screw - table (motor free at these frequencies) [Hz]."""
     j_m, j_s = drive_inertias(p)
-    f1, f2 = pdy.drive_train_frequencies(j_m, j_s, p["coupling_stiffness"], chain["k_drive"], m_eff, p["lead"])
+    f1, f2 = pdy.drive_train_frequencies(j_m, j_s, drive_torsional_stiffness(p), chain["k_drive"], m_eff,
+                                         p["lead"])
     return {"f_axial_torsional": f1, "f_axial_torsional_2": f2}
 
 

@@ -53,6 +53,10 @@ PARAM_NAMES = (
     "pitch_inertia", "yaw_inertia", "guide_static_safety", "nut_static_safety", "duty_process",
     "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed", "temperature_rise_auto",
     "heat_transfer", "shaft_ends", "pretension_rise",
+    # reduction (issue 39): a catalog part, or none (the axis's reduction_* values above, its checks off); its
+    # output-side ratings, its torsional compliance (in series with the coupling) and its input speed limit
+    "has_reduction", "reduction_rated_torque", "reduction_accel_torque", "reduction_compliance",
+    "reduction_max_speed", "reduction_price", "reduction_backlash",
 )
 
 
@@ -69,6 +73,7 @@ _RULE_COLUMNS = MappingProxyType({
     "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
                "peak_corner_speed", "peak_torque_at_max_speed"),
     "couplings": ("torsional_stiffness", "inertia"),
+    "reductions": ("torsional_stiffness",),
 })
 
 
@@ -86,7 +91,7 @@ def columns_read(table: str) -> tuple:
     return direct + tuple(c for c in _RULE_COLUMNS[table] if c not in direct)
 
 
-def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> dict:
+def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, reduction=None) -> dict:
     """Flat SI parameter dict for :func:`axisopt.model.axis_response` from an Axis and its part rows.
 
     Part rows may be pandas Series (one design) or DataFrames / dicts of arrays (many designs).  Without a
@@ -142,7 +147,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None) -> 
     })
     p.update(mount_compliances(axis, p))
     p.update(carriage_params(axis))
-    p.update(drive_params(axis, motor, coupling))
+    p.update(drive_params(axis, motor, coupling, reduction))
     p["duty"] = axis.phases
     return p
 
@@ -174,13 +179,16 @@ def carriage_params(axis) -> dict:
     }
 
 
-def drive_params(axis, motor, coupling) -> dict:
-    """Motor, coupling and reduction parameters (SI).  Missing parts: the axis values, checks off."""
+def drive_params(axis, motor, coupling, reduction=None) -> dict:
+    """Motor, coupling and reduction parameters (SI).  Missing parts: the axis values, checks off.
+
+    ``reduction``: a reductions row (or arrays of them); a row whose ``ratio`` is NaN stands for no reduction
+    (the search's direct-drive choice beside the catalog's reductions): the axis's reduction values then."""
     col = _getter
-    ratio = axis.reduction_ratio
-    q = {"reduction_ratio": ratio, "reduction_efficiency": axis.reduction_efficiency,
-         "reduction_inertia": axis.reduction_inertia, "max_inertia_ratio": axis.max_inertia_ratio,
-         "brake_safety": axis.brake_safety, "rms_torque_ratio": axis.rms_torque_ratio}
+    q = {"max_inertia_ratio": axis.max_inertia_ratio, "brake_safety": axis.brake_safety,
+         "rms_torque_ratio": axis.rms_torque_ratio}
+    q.update(reduction_params(axis, reduction))
+    ratio = q["reduction_ratio"]
     if motor is None:
         rotor = axis.motor_inertia
         q.update({"has_motor": 0.0, "motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0,
@@ -208,7 +216,25 @@ def drive_params(axis, motor, coupling) -> dict:
         q.update({param: col(coupling, column) for column, param in PART_PARAMS["couplings"]})
     q["rotor_inertia"] = rotor
     # motor side of the drive-train model, seen from the screw through the reduction
-    q["motor_inertia"] = (rotor + axis.reduction_inertia) * ratio**2
+    q["motor_inertia"] = (rotor + q["reduction_inertia"]) * ratio**2
+    return q
+
+
+def reduction_params(axis, reduction) -> dict:
+    """The reduction's parameters (SI): its catalog row where there is one (a NaN ratio: none), else the axis's
+    ratio, efficiency and input inertia with a rigid stage (compliance 0) and the reduction checks off."""
+    none = {"has_reduction": 0.0, "reduction_ratio": axis.reduction_ratio,
+            "reduction_efficiency": axis.reduction_efficiency, "reduction_inertia": axis.reduction_inertia,
+            "reduction_rated_torque": 1.0, "reduction_accel_torque": 1.0, "reduction_compliance": 0.0,
+            "reduction_max_speed": 1.0, "reduction_price": 0.0, "reduction_backlash": 0.0}
+    if reduction is None:
+        return none
+    col = _getter
+    has = np.isfinite(col(reduction, "ratio"))
+    q = {param: _listed_or(col(reduction, column), none[param]) for column, param in PART_PARAMS["reductions"]}
+    q["has_reduction"] = has * 1.0 if np.ndim(has) else float(has)
+    # the stage's torsional stiffness (output side) as a compliance, in series with the coupling's (model.chain)
+    q["reduction_compliance"] = _listed_or(1.0 / col(reduction, "torsional_stiffness"), 0.0)
     return q
 
 

@@ -20,7 +20,7 @@ from .chain import stiffness_chain
 from .checks import checks
 from .cost import cost
 from .drag import drag_torque
-from .drive import drive
+from .drive import drive, lost_motion
 from .heat import heat_balance, with_temperature
 from .loads import axial_loads, masses
 from .modes import axial_modes, damping, drive_train_modes
@@ -78,7 +78,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
         out["kv"] = kv_rule(modes["f_axial"])  # achievable position-loop gain [1/s] (model.servo)
     out.update(drag_torque(p, preload, loads))
     out["cost"] = cost(p)
-    out["backlash"] = (1.0 - p["nut_double"]) * p["nut_axial_play"]
+    out["backlash"] = lost_motion(p)
     out.update(checks(p, mounting, preload, loads))
     if drive_block:
         out.update(drive(p, m["moving_mass"], out["drag_torque"], loads["guide_friction_static"], regen))
@@ -98,7 +98,8 @@ def drive_inputs(p: dict, preload) -> tuple:
 
 
 def drive_response(p: dict, preload, regen: bool = True) -> dict:
-    """The outputs of :func:`axis_response` that the motor and coupling change (the drive block and the cost),
+    """The outputs of :func:`axis_response` that the motor, coupling and reduction change (the drive block, the
+    cost and the lost motion),
     from the same sub-assemblies without the stiffness chain and the modes: for the searches, which screen
     the mechanics once per combination of screw, nut, bearing and guide and then each drive against it, and
     solve the preload against the motor-torque limits (which depend on it through the nut's drag only)."""
@@ -106,4 +107,5 @@ def drive_response(p: dict, preload, regen: bool = True) -> dict:
     out = dict(out)
     out.update(drive(p, moving, out["drag_torque"], hold_friction, regen))
     out["cost"] = cost(p)
+    out["backlash"] = lost_motion(p)
     return out

@@ -163,7 +163,7 @@ def state_space(ev: Evaluation, i: int, *, motor_held: bool = False, damping_sca
     m = chain_at(ev, p, i)
     for k in ("table_damping", "chain_damping", "coupling_damping"):
         m[k] *= damping_scale
-    ratio = float(ev.design.axis.reduction_ratio)
+    ratio = float(p["reduction_ratio"])  # the reduction part's, else the axis's
     A, B, C, D, mass, stiff, damp, free = _assemble(m, ratio, motor_held)
     return AxisStateSpace(A, B, C, D, mass, stiff, damp,
                           position_mm=float((ev.x[i] - ev.design.axis.start_offset) * 1e3), x=float(ev.x[i]),

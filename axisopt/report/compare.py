@@ -98,7 +98,9 @@ def compare_table(items) -> str:
     row("mounting", each(lambda e: e.design.axis.mounting))
     row("stroke [mm]", each(lambda e: num(e.design.axis.stroke * 1e3, 0)))
     drives = [e for e in evs if e is not None and e.design.motor is not None]
-    for slot in ("screw", "nut", "bearing", "guide") + (("motor", "coupling") if drives else ()):
+    reds = [e for e in evs if e is not None and e.design.reduction is not None]
+    for slot in ("screw", "nut", "bearing", "guide") + (("motor", "coupling") if drives else ()) + \
+            (("reduction",) if reds else ()):
         row(slot, each(lambda e, s=slot: e.design.part_ids().get(s, "-")))
     row("nut preload [N]", each(lambda e: num(e.design.preload, 0)))
     rows.append("")
@@ -221,7 +223,7 @@ def compare_rows(items) -> list:
                       "total_mass [kg]": d["total_mass_kg"], "cost [EUR]": d["cost"],
                       "all_checks_pass": d["all_checks_pass"]})
             for k, v in (drive_dict(e) or {}).items():
-                if k not in ("motor", "coupling"):
+                if k not in ("motor", "coupling", "reduction"):
                     r[f"drive_{k}"] = v
             for k, v in d["checks"].items():
                 u = f" [{v['unit']}]" if v["unit"] else ""

@@ -138,12 +138,13 @@ def evaluation_table(ev: Evaluation) -> str:
                  f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks)")
     parts = [f"screw {ids['screw']}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
              f"bearings {ids['bearing']}", f"guides {ids['guide']} x{a.guide_blocks}"]
-    parts += [f"{slot} {ids[slot]}" for slot in ("motor", "coupling") if slot in ids]
+    parts += [f"{slot} {ids[slot]}" for slot in ("motor", "coupling", "reduction") if slot in ids]
     glued = "  ".join(p.replace(" ", "\0") for p in parts)  # break between parts, never inside one
     lines.extend(w.replace("\0", " ") for w in textwrap.wrap(glued, WIDTH, initial_indent="  ",
                                                              subsequent_indent="  ", break_on_hyphens=False))
     assumed = [k for k in d.assumed if not ((k == "motor_inertia" and d.motor is not None)
-                                            or (k.startswith("coupling_") and d.coupling is not None))]
+                                            or (k.startswith("coupling_") and d.coupling is not None)
+                                            or (k.startswith("reduction_") and d.reduction is not None))]
     if assumed:
         shown = [_default_shown(a, k) for k in assumed]
         glued = ", ".join(x.replace(" ", "\0") for x in shown)
@@ -159,7 +160,8 @@ def evaluation_table(ev: Evaluation) -> str:
     housing = "housing rigid" if v["c_housing"] == 0 else f"housing {1 / v['c_housing'] / N_PER_UM:,.0f} N/um"
     housing = "housing estimated" if a.bearing_housing_stiffness is None else housing
     labels = {"bearings": f"bearings ({sets} set{'s' if sets > 1 else ''}, {housing})",
-              "screw": "screw tension", "screw torsion": "screw torsion (lead)", "coupling": "coupling (lead)",
+              "screw": "screw tension", "screw torsion": "screw torsion (lead)",
+              "coupling": "coupling (lead)" if d.reduction is None else "coupling + reduction (lead)",
               "nut": f"nut at {v['max_axial_force'] / 1e3:.1f} kN",
               "nut bracket": "nut bracket (estimate)" if a.nut_bracket_stiffness is None else "nut bracket"}
     lines.append(f"axial stiffness chain at its softest point ({(ev.x[i_min] - a.start_offset) * 1e3:.0f} mm "
@@ -286,13 +288,21 @@ def drive_lines(ev: Evaluation) -> list:
         return ["drive: no motor given (parts.motor); rotor inertia "
                 f"{a.motor_inertia:.3g} kg.m^2 assumed for the drive-train modes", ""]
     m = d.motor
-    red = "direct" if a.reduction_ratio == 1 else (f"reduction {a.reduction_ratio:g}:1, efficiency "
-                                                   f"{a.reduction_efficiency:g}")
+    r = d.reduction
+    ratio = a.reduction_ratio if r is None else float(r["ratio"])
+    if r is not None:
+        red = (f"reduction {r['id']} ({r['vendor']} {r['kind']}; {ratio:g}:1, efficiency {float(r['efficiency']):g}, "
+               f"{float(r['inertia']) * 1e4:.3g} kg.cm^2 at the input, {float(r['torsional_stiffness']):,.0f} "
+               f"N.m/rad, backlash {float(r['backlash']) * 10800 / math.pi:g} arcmin"
+               + (f", {float(r['mass']):.3g} kg" if math.isfinite(float(r["mass"])) else "") + ")")
+    else:
+        red = "direct" if ratio == 1 else f"reduction {ratio:g}:1, efficiency {a.reduction_efficiency:g}"
     cpl = f"coupling {d.coupling['id']}" if d.coupling is not None else "coupling from the axis values"
     cycle = (f"{len(a.duty_cycle)}-entry duty cycle" if a.duty_cycle
              else "rapid move over the stroke and back, no dwell (default)")
     lines = [f"drive: motor {m['id']} ({m['vendor']}; rated {m['rated_torque']:.3g} N.m, peak "
-             f"{m['peak_torque']:.3g} N.m, max {m['max_speed'] * RPM:.0f} rpm)", f"  {cpl}, {red}",
+             f"{m['peak_torque']:.3g} N.m, max {m['max_speed'] * RPM:.0f} rpm)",
+             *textwrap.wrap(f"{cpl}, {red}", WIDTH, initial_indent="  ", subsequent_indent="    "),
              f"  {cycle}: {v['duty_time']:.2f} s;  friction {v['friction_torque']:.3f} N.m"
              + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else "")]
     zone = "" if abs(v["needed_motor_peak_torque"] - v["peak_torque"]) <= 1e-9 * v["peak_torque"] else \
@@ -309,8 +319,13 @@ def drive_lines(ev: Evaluation) -> list:
         rows.append(("holding torque at a stop", f"{v['holding_torque']:.3f} N.m",
                      f"{brake:.3g} N.m brake / {a.brake_safety:g}" if brake else "no brake listed"))
     if d.coupling is not None:
-        rows.append(("coupling torque", f"{m['peak_torque'] * a.reduction_ratio:.3g} N.m (motor peak)",
+        rows.append(("coupling torque", f"{m['peak_torque'] * ratio:.3g} N.m (motor peak)",
                      f"{d.coupling['rated_torque']:.3g} N.m (rated)"))
+    if r is not None:
+        rows.append(("output torque peak (cycle)", f"{v['output_peak_torque']:.3g} N.m",
+                     f"{float(r['accel_torque']):.3g} N.m (T2B)"))
+        rows.append(("output torque RMS, thrust", f"{v['output_rms_torque']:.3g} N.m",
+                     f"{float(r['rated_torque']):.3g} N.m (T2N)"))
     lines.append(f"  {'':<28}{'needed':>26}   available")
     for name, need, have in rows:
         lines.append(f"  {name:<28}{need:>26}   {have}")

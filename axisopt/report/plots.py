@@ -23,7 +23,8 @@ def duty_points(ev: Evaluation) -> dict | None:
     if d.motor is None:
         return None
     phases = a.phases
-    to_rpm = 2.0 * math.pi / float(d.screw["lead"]) * a.reduction_ratio * RPM  # table m/s -> motor rpm
+    ratio = a.reduction_ratio if d.reduction is None else float(d.reduction["ratio"])
+    to_rpm = 2.0 * math.pi / float(d.screw["lead"]) * ratio * RPM  # table m/s -> motor rpm
     speeds = phase_speeds(phases)
     n, t = [], []
     from ..model import design_params, drive_response

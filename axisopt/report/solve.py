@@ -165,7 +165,7 @@ def relax_lines(inf) -> list:
 def _cand_table(cands, unit) -> str:
     """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
     design, only the parts in which it differs from the one above)."""
-    slots = ("screw", "nut", "bearing", "guide", "motor", "coupling")
+    slots = ("screw", "nut", "bearing", "guide", "motor", "coupling", "reduction")
     obj = f"obj {unit}" if unit != "-" else ""
     L = [f"  {'#':>3} {'mounting':<17}{obj:>12}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"
          f"{'preload N':>11}"]
@@ -179,6 +179,7 @@ def _cand_table(cands, unit) -> str:
             shown = [f"{k} {parts[k]}" for k in slots if parts.get(k)]
         else:
             shown = [f"{k} {parts[k]}" for k in slots if parts.get(k) and parts.get(k) != prev.get(k)]
+            shown += [f"no {k}" for k in slots if prev.get(k) and not parts.get(k)]
             shown = ["same parts as above" if not shown else "as above but " + shown[0]] + shown[1:]
         L.extend(textwrap.wrap("  ".join(shown), 100, initial_indent=" " * 8, subsequent_indent=" " * 8,
                                break_on_hyphens=False))

@@ -17,7 +17,7 @@ from .. import model
 from ..model.params import GUIDE_RATING_DISTANCE
 from .task.constraints import End
 from .task.objective import ObjectiveSpec
-from .task.space import DRIVE_KEYS, SCREEN_CHUNK, Space, as_dtype, shaped
+from .task.space import DRIVE_KEYS, MECHANICS_BOUNDED, SCREEN_CHUNK, Space, as_dtype, shaped
 
 SCREEN_RTOL = 1e-4  # float32 screening: relative slack on every test and on the bound
 
@@ -62,11 +62,12 @@ def optimistic_guide_params(space: Space, mounting: str, nut_sel, guide_type: st
     ps = model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, None, None)
     if space.m_arr is not None:
         ps["coupling_stiffness"] = float(space.coupling_k[-1])
-        # the cheapest searched (motor, coupling) pair: the cost is a lower bound over every drive
+        # the cheapest searched drive (motor, coupling, reduction): the cost is a lower bound over every drive
         price = np.nan_to_num(space.m_arr["price"][:D])
-        if space.c_arr is not None:
-            price = price + np.nan_to_num(space.c_arr["price"][:D])
-        ps["motor_price"], ps["coupling_price"] = float(price.min()), 0.0
+        for arr in (space.c_arr, space.r_arr):
+            if arr is not None:
+                price = price + np.nan_to_num(arr["price"][:D])
+        ps["motor_price"], ps["coupling_price"], ps["reduction_price"] = float(price.min()), 0.0, 0.0
     return as_dtype(ps, dtype)
 
 
@@ -78,7 +79,7 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
     (ok, bound), each nuts x bearings."""
     _, N, B, _ = space.shape
     # every mechanical limit, and the cost (the optimistic guide carries the cheapest drive pair's price)
-    mech = [c for c in constraints if not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")]
+    mech = [c for c in constraints if not c.convex and (c.key not in DRIVE_KEYS or c.key in MECHANICS_BOUNDED)]
     low_end = [c for c in mech if c.favourable is not End.HIGH]
     high_end = [c for c in mech if c.favourable is End.HIGH]
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)

@@ -25,11 +25,11 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
     """(:func:`make_candidate`'s Candidate, the model's values of its design: ``Evaluation.values``)."""
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
-    screw, nut, bearing, guide, motor, coupling = part_rows(space, n, b, g)
+    screw, nut, bearing, guide, motor, coupling, reduction = part_rows(space, n, b, g)
     lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
     preload = float(min(max(preload, lo), hi))
     design = Design(axis=space.problem.axis_for(mounting), screw=screw, nut=nut, bearing=bearing, guide=guide,
-                    motor=motor, coupling=coupling, nut_preload=preload,
+                    motor=motor, coupling=coupling, reduction=reduction, nut_preload=preload,
                     name=name or f"{space.problem.name}-{rank or 'design'}",
                     source=space.problem.source, assumed=space.problem.assumed)
     # the model on numpy: the same formula as the CasADi Function (tests/model/test_model.py holds them to 1e-10)
@@ -41,6 +41,7 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
                      nut=str(nut["id"]), bearing=str(bearing["id"]), guide=str(guide["id"]), nut_preload=preload,
                      motor="" if motor is None else str(motor["id"]),
                      coupling="" if coupling is None else str(coupling["id"]),
+                     reduction="" if reduction is None else str(reduction["id"]),
                      objective=J, min_stiffness=float(np.min(v["k_total"])) / N_PER_UM,
                      min_frequency=float(np.min(v["f1"])), cost=float(v["cost"]),
                      moving_mass=float(v["moving_mass"]), total_mass=float(v["total_mass"]),
@@ -50,9 +51,10 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
 
 
 def part_rows(space: Space, n, b, g):
-    """(screw, nut, bearing, guide, motor, coupling) rows of part-axis numbers; ``g`` is the guide-and-
-    drive index (motor and coupling None where the axis values stand in)."""
+    """(screw, nut, bearing, guide, motor, coupling, reduction) rows of part-axis numbers; ``g`` is the guide-
+    and-drive index (motor, coupling and reduction None where the axis values stand in)."""
     gi, di = divmod(int(g), space.n_drives)
-    mi, ci = space.drives[di]
+    mi, ci, ri = space.drives[di]
     return (space.screws.row(n), space.nuts.row(n), space.bearings.row(b), space.guides.row(gi),
-            None if mi is None else space.motors.row(mi), None if ci is None else space.couplings.row(ci))
+            None if mi is None else space.motors.row(mi), None if ci is None else space.couplings.row(ci),
+            None if ri is None else space.reductions.row(ri))

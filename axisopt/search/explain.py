@@ -29,9 +29,10 @@ from ..model.limits import CHECK_RECORDS
 from .bounds import bound_positions, optimistic_guide_params
 from .candidates import candidate_values
 from .interval import Interval, ends
+from .parts import drive_stiffnesses
 from .result import Infeasibility
 from .task.constraints import End, as_vector, reads_regen
-from .task.space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive, shaped
+from .task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive, shaped
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block
@@ -123,7 +124,7 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
 def _bounded(c) -> bool:
     """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
     limits of :func:`axisopt.search.bounds.block_bounds`: not the drive's, except the cost)."""
-    return not c.convex and (c.key not in DRIVE_KEYS or c.key == "cost")
+    return not c.convex and (c.key not in DRIVE_KEYS or c.key in MECHANICS_BOUNDED)
 
 
 def block_optimism(space: Space, constraints, drive: bool = True):
@@ -334,8 +335,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     cpl = [c for c in constraints if two_stage and c.key in COUPLING_KEYS]
     mech = [c for c in constraints if c not in drive and c not in cpl]
     if two_stage:
-        pair_k = space.c_arr["torsional_stiffness"][:D] if space.c_arr is not None else np.full(D, k_cpl[0])
-        group = np.searchsorted(k_cpl, pair_k)
+        group = np.searchsorted(k_cpl, drive_stiffnesses(space))
     x = space.grid[mounting]
     nut_idx = np.asarray(nut_idx, dtype=np.int64)
     nc = len(nut_idx)
@@ -449,4 +449,6 @@ def drive_pair_params(space: Space, mounting: str, nut_sel) -> dict:
     mo = None if space.m_arr is None else shaped({k: v[:D] for k, v in space.m_arr.items()}, (1, 1, -1, 1), float)
     cp = None if space.c_arr is None else shaped({k: v[:D] for k, v in space.c_arr.items()}, (1, 1, -1, 1),
                                                  float)
-    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, mo, cp)
+    rd = None if space.r_arr is None else shaped({k: v[:D] for k, v in space.r_arr.items()}, (1, 1, -1, 1),
+                                                 float)
+    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, mo, cp, rd)

@@ -1,11 +1,12 @@
 """The parts a problem may use: the catalog's tables filtered by the problem's restrictions, the (motor,
-coupling) drive pairs, and a process cache of the result (:func:`build_space` -> :class:`.task.space.Space`).
+coupling, reduction) drives, and a process cache of the result (:func:`build_space` -> :class:`.task.space.Space`).
 
 The filters: vendors, series, provenance status, estimated values, nut types, bearing arrangements and
 preload classes, guide types and preload levels, require/exclude; nuts keep their screw; each nut's preload
 range is the problem's (preloaded nuts, capped by the vendors' 10 % Ca ceiling) or its catalog range (single
-nuts).  Couplings another beats on every count, and (motor, coupling) pairs whose coupling cannot carry the
-motor's peak torque, are never formed.
+nuts).  Couplings another beats on every count, and drives whose coupling cannot carry the motor's peak torque
+through the drive's reduction, are never formed.  A drive's reduction is a reductions row or none (the axis's
+reduction values: direct drive by default), when the problem allows reductions (``catalog.reductions``).
 """
 
 from __future__ import annotations
@@ -23,8 +24,8 @@ from ..physics import nut as pnut
 from ..problem import Problem
 from .task.space import SCREEN_CHUNK, Space
 
-_SCREW_COLS, _NUT_COLS, _BEARING_COLS, _GUIDE_COLS, _MOTOR_COLS, _COUPLING_COLS = (
-    columns_read(t) for t in ("screws", "nuts", "bearings", "guides", "motors", "couplings"))
+_SCREW_COLS, _NUT_COLS, _BEARING_COLS, _GUIDE_COLS, _MOTOR_COLS, _COUPLING_COLS, _REDUCTION_COLS = (
+    columns_read(t) for t in ("screws", "nuts", "bearings", "guides", "motors", "couplings", "reductions"))
 
 
 
@@ -71,8 +72,9 @@ def build_space(problem: Problem) -> Space:
         _SPACES[key] = hit = (problem.catalog, sp)
     sp = replace(hit[1], problem=problem, _cache={})
     sp.grid = {m: model.positions(problem.axis_for(m)) for m in sp.mountings}
-    if sp.c_arr is None:
-        sp.coupling_k = np.array([float(problem.axis.coupling_stiffness)])
+    # the drives' torsional stiffnesses (a drive without a coupling takes this problem's axis value)
+    sp.coupling_k = np.unique(drive_stiffnesses(sp)) if sp.m_arr is not None else \
+        np.array([float(problem.axis.coupling_stiffness)])
     return sp
 
 
@@ -151,9 +153,21 @@ def _build_space(problem: Problem) -> Space:
     # each block covers every bearing and (mechanical) guide
     Gm = sp.shape[3] // (D if sp.m_arr is not None else 1)
     sp.nuts_per_block = max(1, SCREEN_CHUNK // max(sp.shape[2] * Gm, 1))
-    if sp.c_arr is not None:
-        sp.coupling_k = np.unique(sp.c_arr["torsional_stiffness"])
     return sp
+
+
+def drive_stiffnesses(sp: Space) -> np.ndarray:
+    """The torsional stiffness between motor side and screw [N m/rad] of each searched drive (D,): its coupling's
+    (the axis value without one) in series with its reduction's (none: rigid), as :func:`axisopt.model.chain.
+    drive_torsional_stiffness` takes them."""
+    D = sp.n_drives
+    k = sp.c_arr["torsional_stiffness"][:D] if sp.c_arr is not None else \
+        np.full(D, float(sp.problem.axis.coupling_stiffness))
+    if sp.r_arr is None:
+        return k
+    with np.errstate(divide="ignore", invalid="ignore"):
+        c_red = np.nan_to_num(1.0 / sp.r_arr["torsional_stiffness"][:D], nan=0.0)
+    return 1.0 / (1.0 / k + c_red)
 
 
 def _filtered(t, r, slot, series=None, vendors=None):
@@ -186,7 +200,7 @@ def coupling_dominated(cp) -> np.ndarray:
 
 
 def _add_drives(sp: Space, problem: Problem) -> None:
-    """The (motor, coupling) pairs the search chooses from, spread over the guide axis."""
+    """The (motor, coupling, reduction) drives the search chooses from, spread over the guide axis."""
     r = problem.restrictions
     cat = problem.catalog
     if not r.drive or len(cat.rows("motors")) == 0:
@@ -208,31 +222,79 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     n_couplings = len(couplings)
     if len(couplings) and not r.required("coupling"):
         couplings = couplings.take(~coupling_dominated(couplings))
-    ratio = problem.axis.reduction_ratio
+    reductions = cat.rows("reductions")
+    if r.reductions:
+        reductions = _filtered(reductions, r, "reduction")
+        if not r.required("reduction") and "status" in reductions:
+            reductions = reductions.take(reductions.isin("status", tuple(r.status)))
+    else:
+        reductions = reductions.take(np.zeros(len(reductions), dtype=bool))
+    # the drive's reduction: none (the axis's values; left out when the problem requires reduction parts) or a row
+    choices = ([] if r.required("reduction") else [None]) + list(range(len(reductions)))
+    ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])
+              for ri in choices]
     need = problem.margin_map.get("coupling_torque", 1.0)
+    # the motor speed the cycle asks is smallest on the longest lead of the space (model.drive: 2 pi v / P_h x
+    # ratio); a (motor, reduction) that fails the motor-speed or reduction-speed check even there fails it on
+    # every screw, and is never formed (a check disabled by a margin of 0 prunes nothing)
+    v_max = max([ph.speed for ph in problem.axis.phases] + [0.0])
+    lead_max = float(np.max(sp.s_arr["lead"])) if len(sp.s_arr["lead"]) else np.inf
+    speed_need = {k: problem.margin_map.get(k, 1.0) for k in ("motor_speed", "reduction_speed")}
+    red_speed = reductions.number("max_input_speed") if len(reductions) else np.zeros(0)
+
+    # a reduction's backlash is lost motion at the table (model.drive.lost_motion), least on the shortest lead: a
+    # reduction that exceeds the problem's max_backlash even there is never formed
+    backlash_max = problem.limit_map.get("max_backlash", np.inf)
+    lead_min = float(np.min(sp.s_arr["lead"])) if len(sp.s_arr["lead"]) else 0.0
+    if len(reductions):
+        lost = reductions.number("backlash") * lead_min / (2.0 * np.pi)
+        keep = lost <= backlash_max * (1.0 + 1e-9) + 1e-15
+        if not r.required("reduction") or keep.any():
+            reductions = reductions.take(keep)
+        choices = ([] if r.required("reduction") else [None]) + list(range(len(reductions)))
+        ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])
+                  for ri in choices]
+        red_speed = reductions.number("max_input_speed")
+
+    def too_fast(mi, ri, ratio):
+        n_min = 2.0 * np.pi * v_max / lead_max * ratio
+        if n_min * speed_need["motor_speed"] > float(motors.number("max_speed")[mi]) * (1.0 + 1e-12):
+            return True
+        return ri is not None and n_min * speed_need["reduction_speed"] > float(red_speed[ri]) * (1.0 + 1e-12)
+
     pairs = []
     for mi in range(len(motors)):
-        if len(couplings) == 0:
-            pairs.append((mi, None))
-            continue
-        peak = float(motors.number("peak_torque")[mi]) * ratio
-        # the coupling-torque check depends on the pair only: pairs that fail it are never formed
-        ok = couplings.number("rated_torque") >= need * peak * (1.0 - 1e-12)
-        pairs.extend((mi, int(ci)) for ci in np.nonzero(ok)[0])
+        for ri, ratio in zip(choices, ratios):
+            if too_fast(mi, ri, ratio):
+                continue
+            if len(couplings) == 0:
+                pairs.append((mi, None, ri))
+                continue
+            peak = float(motors.number("peak_torque")[mi]) * ratio
+            # the coupling-torque check depends on the drive only: drives that fail it are never formed
+            ok = couplings.number("rated_torque") >= need * peak * (1.0 - 1e-12)
+            pairs.extend((mi, int(ci), ri) for ci in np.nonzero(ok)[0])
     if not pairs:
         why = ("no motor is left after the motor filters" if len(motors) == 0 else
+               "no reduction is left after the filters" if not choices else
                "no coupling left after the filters carries the peak torque of any allowed motor")
         raise InputError(f"the drive search has nothing to choose from: {why} (catalog: motor_vendors, "
-                         "motor_series, max_motor_flange, require/exclude)", source=problem.source)
+                         "motor_series, max_motor_flange, reductions, require/exclude)", source=problem.source)
     sp.motors, sp.couplings = motors, couplings
+    sp.reductions = reductions if len(reductions) else None
     sp.drives = tuple(pairs)
-    sp.pairs_left_out = len(motors) * max(n_couplings, 1) - len(pairs)
+    sp.pairs_left_out = len(motors) * max(n_couplings, 1) * len(choices) - len(pairs)
     D = len(pairs)
     sp.g_arr = {k: np.repeat(v, D) for k, v in sp.g_arr.items()}
     G = len(sp.guides)
-    mpos = np.array([m for m, _ in pairs], dtype=np.int64)
+    mpos = np.array([m for m, _, _ in pairs], dtype=np.int64)
     sp.m_arr = {k: np.tile(motors.number(k)[mpos], G) for k in _MOTOR_COLS}
     if len(couplings):
-        cpos = np.array([c for _, c in pairs], dtype=np.int64)
+        cpos = np.array([c for _, c, _ in pairs], dtype=np.int64)
         sp.c_arr = {k: np.tile(couplings.number(k)[cpos], G) for k in _COUPLING_COLS}
+    if sp.reductions is not None:
+        # a drive without a reduction: NaN in every column (model.params.reduction_params: the axis's values)
+        rpos = np.array([-1 if ri is None else ri for _, _, ri in pairs], dtype=np.int64)
+        sp.r_arr = {k: np.tile(np.where(rpos >= 0, reductions.number(k)[np.maximum(rpos, 0)], np.nan), G)
+                    for k in _REDUCTION_COLS}
 

@@ -108,6 +108,7 @@ class Candidate:
     misses: dict = field(default_factory=dict)  # infeasible problems: limit -> relative miss
     motor: str = ""  # servo motor id ('' without drive search)
     coupling: str = ""
+    reduction: str = ""  # reduction id ('' : none, the axis's reduction values)
     # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their minimum over
     # the stroke.  Not in the JSON (the display fields above carry the same values in vendor units).
     outputs: dict = field(default_factory=dict, repr=False, compare=False)
@@ -118,6 +119,8 @@ class Candidate:
             out["motor"] = self.motor
         if self.coupling:
             out["coupling"] = self.coupling
+        if self.reduction:
+            out["reduction"] = self.reduction
         return out
 
     def to_dict(self) -> dict:
@@ -136,6 +139,8 @@ class Candidate:
             r["motor"] = self.motor
         if self.coupling:
             r["coupling"] = self.coupling
+        if self.reduction:
+            r["reduction"] = self.reduction
         if objective_unit is not None:
             r[f"objective [{objective_unit}]" if objective_unit not in ("", "-") else "objective"] = self.objective
         r.update({col: getattr(self, f) for f, col in CANDIDATE_COLUMNS})

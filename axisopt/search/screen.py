@@ -53,7 +53,9 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
 
 
 def _mechanical(constraints):
-    return [c for c in constraints if c.key not in DRIVE_KEYS]
+    """The limits of the mechanical stage: every limit the drive does not change, and the lost motion (its value
+    without a reduction, the nut's play, is the least over every drive: the drive stage tests it again)."""
+    return [c for c in constraints if c.key not in DRIVE_KEYS or c.key == "backlash"]
 
 
 CACHE_BLOCK = 200_000  # (nut, bearing, guide) combinations per evaluation inside screen_nuts (cache-sized arrays)
@@ -174,7 +176,7 @@ def drive_params(space: Space, mounting: str, n, b, g, dtype=float) -> dict:
 
     ps = model.axis_params(space.problem.axis_for(mounting), pick(space.s_arr, n), pick(space.n_arr, n),
                            pick(space.b_arr, b), pick(space.g_arr, np.asarray(g) * D), pairs(space.m_arr),
-                           pairs(space.c_arr))
+                           pairs(space.c_arr), pairs(space.r_arr))
     return as_dtype(ps, dtype)
 
 
@@ -184,25 +186,44 @@ def interval_min_abs(t_lo, t_hi):
     return np.where(t_lo * t_hi <= 0, 0.0, np.minimum(np.abs(t_lo), np.abs(t_hi)))
 
 
+# The torque checks convex in the nut preload (model.limits CONVEX), each with the model outputs its margin reads:
+# (phase torques, the steady thrust that bounds it from below, the needed value, zone factors or None, peak or RMS)
+CONVEX_TORQUES = {
+    "margin_motor_peak_torque": ("duty_torques", "thrust_torque", "needed_motor_peak_torque", "zone_factors", True),
+    "margin_motor_rated_torque": ("duty_torques", "mean_thrust_torque", "needed_motor_rated_torque", None, False),
+    "margin_reduction_accel_torque": ("output_torques", "output_thrust_torque", "needed_reduction_accel_torque",
+                                      None, True),
+    "margin_reduction_rated_torque": ("output_torques", "output_mean_thrust_torque",
+                                      "needed_reduction_rated_torque", None, False),
+}
+
+
 def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np.ndarray:
-    """An upper bound of a motor-torque margin over every preload between the two ends of ``out_lo`` and
-    ``out_hi`` (screening).  Each phase torque is affine in the preload (through the nut's drag), so its
-    smallest magnitude over the interval is known; the thrusts grow with the preload.  RMS: a linear piece
-    (T0^2 + T0 T1 + T1^2)/3 >= (T0^2 + T1^2)/6, and = T0^2 for a constant one."""
+    """An upper bound of a motor- or reduction-torque margin (:data:`CONVEX_TORQUES`) over every preload between
+    the two ends of ``out_lo`` and ``out_hi`` (screening).  Each phase torque is affine in the preload (through
+    the nut's drag), so its smallest magnitude over the interval is known; the thrusts grow with the preload.
+    RMS: a linear piece (T0^2 + T0 T1 + T1^2)/3 >= (T0^2 + T1^2)/6, and = T0^2 for a constant one."""
     v_lo = np.asarray(out_lo[c.key])
-    if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor): nothing to bound
+    if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor, no reduction): nothing to bound
         return v_lo
-    thrust = "thrust_torque" if c.key == "margin_motor_peak_torque" else "mean_thrust_torque"
-    # what the margin compares the torque with (the peak: the zone at each phase's speed, referred to the flat
-    # peak; the RMS: rms_torque_ratio x rated), recovered exactly from the margin at the interval's low end
-    need_lo = np.asarray(out_lo["needed_motor_peak_torque" if c.key == "margin_motor_peak_torque"
-                                else "needed_motor_rated_torque"])
+    torques, thrust, needed, zone, peak = CONVEX_TORQUES[c.key]
+    # what the margin compares the torque with (the motor peak: the zone at each phase's speed, referred to the
+    # flat peak; the motor RMS: rms_torque_ratio x rated; the reduction: T2B, T2N), recovered exactly from the
+    # margin at the interval's low end
+    need_lo = np.asarray(out_lo[needed])
     available = v_lo * need_lo
-    ends = [(interval_min_abs(a0, b0), interval_min_abs(a1, b1))
-            for (a0, a1), (b0, b1) in zip(out_lo["duty_torques"], out_hi["duty_torques"])]
-    if c.key == "margin_motor_peak_torque":  # each phase's smallest |T| referred to the flat peak (zone factor)
+    shared: dict = {}  # phases sharing a torque pair at both ends (physics.drive.phase_torques): one evaluation
+    ends = []
+    for lo_pair, hi_pair in zip(out_lo[torques], out_hi[torques]):
+        key = (id(lo_pair), id(hi_pair))
+        if key not in shared:
+            (a0, a1), (b0, b1) = lo_pair, hi_pair
+            shared[key] = (interval_min_abs(a0, b0), interval_min_abs(a1, b1))
+        ends.append(shared[key])
+    if peak:  # each phase's smallest |T| (the motor's referred to the flat peak by its zone factor)
         lb = np.asarray(out_lo[thrust])
-        for (m0, m1), k in zip(ends, out_lo["zone_factors"]):
+        factors = out_lo[zone] if zone else [1.0] * len(ends)
+        for (m0, m1), k in zip(ends, factors):
             lb = np.maximum(lb, np.maximum(m0, m1) * k)
     else:
         total = sum(ph.duration for ph in phases)

@@ -23,7 +23,7 @@ RESULT_COLUMNS = (
     ("objective", ("objective", "value")), ("objective_unit", ("objective", "unit")),
     ("mounting", ("best", "mounting")), ("screw", ("best", "screw")), ("nut", ("best", "nut")),
     ("bearing", ("best", "bearing")), ("guide", ("best", "guide")),
-    ("motor", ("best", "motor")), ("coupling", ("best", "coupling")),
+    ("motor", ("best", "motor")), ("coupling", ("best", "coupling")), ("reduction", ("best", "reduction")),
     ("nut_preload [N]", ("best", "nut_preload")),
     ("min_stiffness [N/um]", ("best", "min_stiffness")),
     ("min_stiffness_at [mm]", ("profile", "min_stiffness_position_mm")),
@@ -409,9 +409,9 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
                      f" | {_cell(r['cost [EUR]'], 0)} |")
         L.append("")
         L += ["## Parts chosen", ""]
-        for slot in ("mounting", "screw", "nut", "bearing", "guide", "motor", "coupling"):
+        for slot in ("mounting", "screw", "nut", "bearing", "guide", "motor", "coupling", "reduction"):
             vc = ok[slot].replace("", None).dropna().value_counts().head(5)
-            if slot in ("motor", "coupling") and vc.empty:
+            if slot in ("motor", "coupling", "reduction") and vc.empty:
                 continue
             L.append(f"- {slot}: " + ", ".join(f"{k} ({v})" for k, v in vc.items()))
         L.append("")

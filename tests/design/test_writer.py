@@ -38,3 +38,23 @@ def test_yaml_round_trip(tmp_path_factory, stroke, mass, speed, load, inline, mo
     back = load_design(path)
     _same(d, back)
     assert np.allclose(evaluate(back)["k_total"], evaluate(d)["k_total"], rtol=1e-10)
+
+
+@pytest.mark.parametrize("inline", [False, True])
+def test_yaml_round_trip_with_a_reduction(tmp_path, inline):
+    """A design with a reduction part writes it (id or inline, vendor units) and leaves out the axis's reduction
+    values (the part sets them; the reader refuses both): load(dump(d)) evaluates the same."""
+    from axisopt.catalog import default_catalog
+
+    red = default_catalog().part("reductions", "BK-NPT035-MF-4")
+    d = dataclasses.replace(BASE, reduction=red,
+                            axis=dataclasses.replace(BASE.axis, reduction_ratio=2.0),
+                            assumed=tuple(k for k in BASE.assumed if k != "reduction_ratio"))
+    path = tmp_path / "d.yaml"
+    text = design_to_yaml(d, inline_parts=inline)
+    assert "reduction_ratio" not in text
+    path.write_text(text)
+    back = load_design(path)
+    assert back.part_ids()["reduction"] == "BK-NPT035-MF-4"
+    for k in ("k_total", "margin_reduction_accel_torque", "backlash", "cost"):
+        assert np.allclose(evaluate(back)[k], evaluate(d)[k], rtol=1e-10), k

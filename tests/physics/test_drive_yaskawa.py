@@ -32,7 +32,10 @@ def _params(mass_lead_screw, coupling_inertia, ratio, reduction_inertia, rotor, 
          "coupling_inertia": coupling_inertia, "rotor_inertia": rotor, "gravity_axial": 0.0,
          "axial_load": 0.0, "mean_axial_load": 0.0, "has_motor": 1.0, "has_coupling": 0.0,
          "max_inertia_ratio": 35.0, "brake_safety": 2.0, "motor_brake_torque": 0.0,
-         "coupling_rated_torque": 1.0, "coupling_max_speed": 1.0}
+         "coupling_rated_torque": 1.0, "coupling_max_speed": 1.0,
+         # no reduction part (issue 39): its checks do not apply
+         "has_reduction": 0.0, "reduction_rated_torque": 1.0, "reduction_accel_torque": 1.0,
+         "reduction_max_speed": 1.0}
     # Yaskawa's selection rule: RMS torque within the rated torque (no margin, sec. 2.4.1)
     p.update({"motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0, "rms_torque_ratio": 1.0,
               "motor_peak_corner_speed": 1.0, "motor_peak_at_max_speed": 1.0})

@@ -134,6 +134,24 @@ def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2) -> 
     return catalog.replace(motors=df(motors, "motors"), couplings=df(couplings, "couplings"))
 
 
+def add_reductions(catalog, rng: np.random.Generator, n=3) -> Catalog:
+    """Give a synthetic catalog reductions (planetary and belt rows, ratio 1.5-5, T2B 1.5-2.5 x T2N, torsional
+    stiffness 1e4-1e6 N.m/rad, input speed limit 3000-8000 rpm): the search chooses one or none per drive."""
+    rows = []
+    for i in range(n):
+        t = rng.uniform(20.0, 200.0)
+        rows.append({"id": f"R{i}", "vendor": "V", "series": "synthetic", "kind": ("planetary", "belt")[i % 2],
+                     "ratio": float(rng.choice([1.5, 2.0, 3.0, 5.0])), "efficiency": rng.uniform(0.9, 0.98),
+                     "inertia": rng.uniform(1e-5, 5e-4), "rated_torque": t, "accel_torque": t * rng.uniform(1.5, 2.5),
+                     "torsional_stiffness": 10 ** rng.uniform(4, 6),
+                     "backlash": rng.uniform(1.0, 10.0) * math.pi / 10800,  # 1-10 arcmin
+                     "max_input_speed": rng.uniform(3000, 8000) * RPM, "mass": math.nan,
+                     "price": rng.uniform(100, 800)})
+    d = pd.DataFrame.from_records(rows, columns=list(SCHEMA["reductions"]))
+    d["_source"] = "synthetic"
+    return catalog.replace(reductions=d.set_index("id", drop=False))
+
+
 def assert_same_answer(a, b, preload: bool = True):
     """Two SolveResults give the same answer: status, objective, combination (and nut preload)."""
     import pytest

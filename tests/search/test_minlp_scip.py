@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from search_synthetic import add_drives, make_catalog, make_double, make_problem
+from search_synthetic import add_drives, add_reductions, make_catalog, make_double, make_problem
 
 from axisopt.cli import main
 from axisopt.errors import InputError
@@ -91,6 +91,25 @@ def test_random_catalog_with_drive_and_frequency_equals_exhaustive():
     p = make_problem(cat, mode="frequency", limits={"max_cost": 5000.0, "max_drag_torque": 1.5},
                      moving_mass=200.0)
     _agrees(solve(p, "scip", time_limit=20), solve(p, "exhaustive", top=1, sensitivities=False))
+
+
+def test_random_catalog_with_reductions_equals_exhaustive():
+    """(motor, coupling, reduction or none) drives: the one-hot MINLP over the guide-and-drive entries sees the
+    reduction's parameters (ratio, efficiency, input inertia, T2B/T2N, n1Max, Ct21, backlash, price) as the
+    default method does."""
+    from dataclasses import replace
+
+    rng = np.random.default_rng(106)
+    cat = make_catalog(rng, n_screws=3, nuts_per_screw=2, n_bearings=3, n_guides=2)
+    make_double(cat)
+    cat = add_reductions(add_drives(cat, rng, n_motors=2, n_couplings=2), rng, n=2)
+    p = make_problem(cat, mode="stiffness", limits={"max_cost": 5000.0, "max_drag_torque": 1.5},
+                     moving_mass=200.0, backlash=40e-6)
+    p = replace(p, restrictions=replace(p.restrictions, drive=True))
+    from axisopt.search.parts import build_space
+
+    assert any(r is not None for _, _, r in build_space(p).drives)
+    _agrees(solve(p, "scip", time_limit=30), solve(p, "exhaustive", top=1, sensitivities=False))
 
 
 def test_infeasible_problem_is_reported_infeasible():

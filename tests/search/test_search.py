@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from search_synthetic import add_drives, assert_same_answer, make_catalog, make_double, make_problem
+from search_synthetic import add_drives, add_reductions, assert_same_answer, make_catalog, make_double, make_problem
 
 from axisopt import model
 from axisopt.cli import main
@@ -76,6 +76,68 @@ def test_default_equals_exhaustive_carriage(seed, mode):
         ev = d.best.design
         out = model.evaluate(ev).values
         assert model.passes(out["margin_guide_static"]) and model.passes(out["margin_nut_static"])
+
+
+REDUCTION_SEEDS = (0, 1, 2, 3, 5, 7)
+
+
+@pytest.mark.parametrize("seed", REDUCTION_SEEDS)
+def test_default_equals_exhaustive_with_reductions(seed):
+    """(motor, coupling, reduction or none) triples as search choices on randomized catalogs: the default
+    method equals exhaustive enumeration (the reduction's torque checks are convex in the preload, its
+    stiffness is in series with the coupling's in the chain the bounds relax, its price in the cost)."""
+    _reduction_case(seed)
+
+
+_REDUCTION_RESULTS: dict = {}
+
+
+def _reduction_case(seed):
+    if seed in _REDUCTION_RESULTS:
+        return _REDUCTION_RESULTS[seed]
+    from dataclasses import replace
+
+    from axisopt.physics.motion import Segment
+
+    rng = np.random.default_rng(300 + seed)
+    cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
+    make_double(cat)
+    cat = add_reductions(add_drives(cat, rng, n_motors=3, n_couplings=2), rng, n=3)
+    vertical = seed % 2 == 1
+    duty = () if seed < 2 else (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+                                Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=2500.0),
+                                Segment("dwell", duration=1.0),
+                                Segment("move", distance=-0.2, speed=0.3, acceleration=4.0))
+    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
+    if seed % 3 == 0:
+        limits["min_frequency"] = float(rng.uniform(40, 120))
+    mass = rng.uniform(60, 150) if vertical else rng.uniform(150, 400)
+    p = make_problem(cat, limits=limits, moving_mass=float(mass), axial_load=1500.0 if vertical else 3000.0,
+                     orientation="vertical" if vertical else "horizontal", duty_cycle=duty,
+                     mode="frequency" if seed in (2, 5) else "stiffness",
+                     # a reduction's backlash is lost motion (jt P_h / 2 pi): some drives pass, some do not
+                     backlash=float(rng.uniform(5e-6, 40e-6)))
+    p = replace(p, restrictions=replace(p.restrictions, drive=True),
+                margins=tuple((c, 1.0) for c in model.CHECKS))
+    sp = build_space(p)
+    assert sp.reductions is not None and any(ri is not None for _, _, ri in sp.drives)
+    d = solve(p, "default", top=2, sensitivities=False)
+    e = solve(p, "exhaustive", top=2, sensitivities=False)
+    assert (d.best is None) == (e.best is None)
+    if d.best is not None:
+        assert_same_answer(d, e)
+        ev = model.evaluate(d.best.design)
+        for c in model.DRIVE_CHECKS:
+            assert model.passes(ev.values[f"margin_{c}"]), c
+    _REDUCTION_RESULTS[seed] = d
+    return d
+
+
+def test_reductions_are_chosen_on_some_randomized_catalog():
+    """The randomized cases above exercise both choices: some optimum has a reduction, some has none."""
+    chosen = [_reduction_case(s) for s in REDUCTION_SEEDS]
+    reds = {bool(r.best.reduction) for r in chosen if r.best is not None}
+    assert reds == {True, False}, reds
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 5, 7])

@@ -2,7 +2,8 @@
 combinations and the parameter layouts the stages evaluate the axis model on.
 
 A combination is (mounting, nut, bearing arrangement, guide, drive); the nut fixes the screw and a drive
-is a (motor, coupling) pair.  The drive shares the last part axis with the guide: its index is
+is a (motor, coupling, reduction) triple (the reduction None: the axis's reduction values).  The drive shares the
+last part axis with the guide: its index is
 ``g * D + d`` over G guides and D drives, so combinations are numbered ``((m * N + n) * B + b) * (G D) + g D + d``
 and every layout below holds with "guide" read as "guide and drive".  Without drive search D = 1 (the
 axis's motor inertia and coupling values, drive checks off).  :mod:`.parts` builds a :class:`Space`.
@@ -51,8 +52,14 @@ def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = Tru
                                    regen=regen)
 
 
-# Outputs the motor and coupling change (all others are the same for every drive of a mechanical combination).
-DRIVE_KEYS = frozenset({"cost", "inertia_ratio", "regen_power"} | {f"margin_{c}" for c in model.DRIVE_CHECKS})
+# Outputs the motor, coupling and reduction change (all others are the same for every drive of a mechanical
+# combination); the lost motion takes a reduction's backlash.
+DRIVE_KEYS = frozenset({"cost", "inertia_ratio", "regen_power", "backlash"}
+                       | {f"margin_{c}" for c in model.DRIVE_CHECKS})
+# Drive outputs whose value with the mechanics layout (no motor, coupling or reduction; the bounds: the cheapest
+# drive's price) is the most favourable over every drive: the mechanical stages test them too, the drive stage
+# again per drive (the cost is never more than with the cheapest drive, the lost motion never less than the nut's)
+MECHANICS_BOUNDED = frozenset({"cost", "backlash"})
 # Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain); the motor's
 # inertia enters only the axial-torsional modes, which no limit or objective reads.
 COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1", "k_tool", "kv"})
@@ -84,9 +91,12 @@ class Space:
     g_arr: dict = field(repr=False, default_factory=dict)  # guide columns, each guide repeated D times
     motors: object = None  # PartTable of the searched motors (None: no drive search)
     couplings: object = None
-    drives: tuple = ((None, None),)  # (motor position, coupling position) pairs; None: axis values
+    reductions: object = None  # PartTable of the searched reductions (None: none searched)
+    # (motor, coupling, reduction) positions; None: axis values (no reduction: the axis's reduction values)
+    drives: tuple = ((None, None, None),)
     m_arr: dict | None = field(repr=False, default=None)  # motor columns over the G*D axis
     c_arr: dict | None = field(repr=False, default=None)
+    r_arr: dict | None = field(repr=False, default=None)  # reduction columns over G*D (NaN: no reduction)
     # (motor, coupling) pairs never formed: a coupling another beats on every count, or one that cannot carry
     # the motor's peak torque (a limit of the pair alone)
     pairs_left_out: int = 0
@@ -147,7 +157,8 @@ class Space:
         g = shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
         mo = None if self.m_arr is None or mechanics else shaped(self.m_arr, (1, 1, -1, 1), dtype)
         cp = None if self.c_arr is None or mechanics else shaped(self.c_arr, (1, 1, -1, 1), dtype)
-        ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp)
+        rd = None if self.r_arr is None or mechanics else shaped(self.r_arr, (1, 1, -1, 1), dtype)
+        ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp, rd)
         if mechanics and coupling_stiffness is not None:
             ps["coupling_stiffness"] = coupling_stiffness
         ps = as_dtype(ps, dtype)
@@ -172,4 +183,5 @@ class Space:
         return model.axis_params(self.problem.axis_for(mounting), pick(self.s_arr, n), pick(self.n_arr, n),
                                  pick(self.b_arr, b), pick(self.g_arr, g),
                                  None if self.m_arr is None else pick(self.m_arr, g),
-                                 None if self.c_arr is None else pick(self.c_arr, g))
+                                 None if self.c_arr is None else pick(self.c_arr, g),
+                                 None if self.r_arr is None else pick(self.r_arr, g))
