@@ -163,13 +163,15 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     brake_needed = p["gravity_axial"] > 0.5
     # the reduction's output torques (screw side): the cycle's largest against T2B, its RMS against T2N
     red = p["has_reduction"] > 0.5
-    if isinstance(red, (bool, np.bool_)) and not red:  # numbers without a reduction: nothing at an output
+    if isinstance(red, (bool, np.bool_)) and not red:  # numbers without a reduction: no output torques to compute
         out_torques, out_thrust, out_thrust_mean = [(0.0 * friction, 0.0 * friction)] * len(phases), \
             0.0 * friction, 0.0 * friction
     else:
         out_torques, out_thrust, out_thrust_mean = output_torques(p, moving_mass, drag, phases, hold_friction)
-    out_peak = mx.fmax(_pair_peaks(out_torques), out_thrust) if phases else out_thrust
-    out_rms = mx.fmax(pd.linear_rms_torque(out_torques, durations), out_thrust_mean) if phases else out_thrust_mean
+    # reported where a reduction is (0 without one, on every backend)
+    out_peak = mx.if_else(red, mx.fmax(_pair_peaks(out_torques), out_thrust) if phases else out_thrust, 0.0)
+    out_rms = mx.if_else(red, mx.fmax(pd.linear_rms_torque(out_torques, durations), out_thrust_mean)
+                         if phases else out_thrust_mean, 0.0)
     screw_speed = 2.0 * math.pi * v_max / p["lead"]
     margins = {
         "motor_peak_torque": mx.if_else(has, p["motor_peak_torque"] / use, NOT_APPLICABLE),

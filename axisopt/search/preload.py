@@ -20,11 +20,12 @@ from dataclasses import fields
 
 import numpy as np
 
+from .. import model
 from ..units import N_PER_UM
 from .result import Exact
 from .task.constraints import Constraint, as_vector, ok_all, reads_regen
 from .task.objective import ObjectiveSpec
-from .task.space import Space, respond, respond_drive
+from .task.space import DRIVE_KEYS, Space, respond, respond_drive
 
 SEARCH_ROWS = 4096  # threshold search: combinations times preloads per model evaluation, about
 GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a convex limit
@@ -136,8 +137,12 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
             pr = repeat_rows(subset(p, j, k), len(j), P - 1)
             upc = [c for c in up if not c.profile]
 
-            def good(pre, pr=pr, upc=upc, x1=x1, mounting=mounting):
-                return ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1)), pre.size)
+            # only the sub-assemblies these limits read (the chain, the drive block, the regenerated energy)
+            parts = dict(drive_block=any(c.key in DRIVE_KEYS for c in upc),
+                         chain=any(c.key in model.CHAIN_OUTPUTS for c in upc), regen=reads_regen(upc))
+
+            def good(pre, pr=pr, upc=upc, x1=x1, mounting=mounting, parts=parts):
+                return ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1), **parts), pre.size)
 
             a[j] = kary_threshold(good, a[j], bb[j], P)
         pstar = np.where(ok_up_hi, hi[:, 0], a)

@@ -91,8 +91,12 @@ def test_reduction_checks_and_stiffness_in_series():
     assert v["margin_reduction_rated_torque"] == pytest.approx(337.0 / v["output_rms_torque"])
     assert v["margin_reduction_speed"] == pytest.approx(5000.0 / 6000.0)
     assert v0["margin_reduction_speed"] >= 1e9  # no reduction: not applicable
-    # the output torques are the screw side's: the same with or without the gear (the coupling and load are)
-    assert v["output_peak_torque"] == pytest.approx(v0["output_peak_torque"])
+    # the output torques are the screw side's: the same whatever the gear's ratio (the coupling and load are); a
+    # design without a reduction reports none
+    v7 = evaluate(replace(d, reduction=default_catalog().part("reductions", "BK-TP050-MF-7")),
+                  use_casadi=False).values
+    assert v["output_peak_torque"] == pytest.approx(v7["output_peak_torque"])
+    assert v["output_peak_torque"] > 0.0 and v0["output_peak_torque"] == 0.0
     # torsional stiffness: coupling and gear in series (k_coupling is the axial equivalent through the lead)
     k_c = float(d.coupling["torsional_stiffness"])
     k_t = 1.0 / (1.0 / k_c + 1.0 / 642_858.6461)
