@@ -46,6 +46,10 @@ class Column:
                 (derived by a rule or illustrative, catalogs/SOURCES.md); ``estimated_how`` says how
     derived_marker : a row whose ``source`` names this value as derived (``'<marker> ... derived'`` within
                 one ``;``-separated part) holds an estimate here whatever its status
+    blank     : for an optional column that is no estimate: what an empty cell (or the column left out of the
+                header) means, e.g. the nut's ``rotating`` flag (empty: a nut on a rotating screw)
+    applies   : a flag column of the same table: this column means something (and its estimate stands in)
+                only on rows whose flag is 1 (the driven rotating-nut unit's columns)
     """
 
     name: str
@@ -57,6 +61,8 @@ class Column:
     estimated_when: tuple = ()
     estimated_how: str = ""
     derived_marker: str = ""
+    blank: str = ""
+    applies: str = ""
 
     def estimated_in(self, status: str, source: str = "") -> str:
         """How this column's value is estimated in a row of ``status`` and ``source`` ('' : the vendor's)."""
@@ -83,6 +89,22 @@ _DERIVED = {"estimated_when": ("derived",)}
 
 
 _TEXT = ("id", "vendor", "series")
+_UNIT = {"optional": True, "applies": "rotating"}
+# the rotating-nut unit's own values (read through rules in model.params.rotating_nut_params): required on a
+# rotating row (row_problem) except where an estimate stands in
+_UNIT_COLUMNS = (
+    _c("unit_inertia", "inertia", **_UNIT),
+    _c("unit_max_speed", "angular_speed", **_UNIT,
+       estimate="the screw vendor's DN rule for the nut's rotation, DN limit / d (THK A-697; H-BS 3.7.6)"),
+    _c("unit_bearing_dynamic_load", "force", **_UNIT),
+    _c("unit_bearing_static_load", "force", **_UNIT),
+    _c("unit_bearing_rigidity", "stiffness", **_UNIT,
+       estimate="11.2 N/um per kN of the unit bearing's Ca, the lowest of the ZKLF rows (H-BS 8.8.2)"),
+    _c("unit_starting_torque", "torque", **_UNIT,
+       estimate="support-set envelope 3.72e-3 x (0.05 Ca) x 2.5 d (catalogs/SOURCES.md)"),
+)
+# columns a rotating-nut row must fill (no estimate stands in for them)
+UNIT_REQUIRED = tuple(c.name for c in _UNIT_COLUMNS if not c.estimate)
 COLUMNS = MappingProxyType({
     "screws": (
         *(_c(n, "str") for n in _TEXT),
@@ -108,6 +130,10 @@ COLUMNS = MappingProxyType({
         _c("contact_angle", "angle"),
         _c("axial_play", "length", "nut_axial_play"), _c("mass", "mass", "nut_mass"),
         _c("price", "money", "nut_price", **_PRICE),
+        # a driven rotating-nut unit (THK DIR/BLR, HIWIN AME): the nut turns in its own support bearing on a
+        # stationary screw fixed at both ends (model.rotnut); the unit columns apply to its rows only
+        _c("rotating", "int", optional=True, blank="0: a nut on a rotating screw"),
+        *_UNIT_COLUMNS,
     ),
     "bearings": (
         *(_c(n, "str") for n in _TEXT), _c("arrangement", "str"), _c("rows", "int", positive=True),
@@ -347,6 +373,27 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
     for a, b in _ORDERED.get(name, ()):
         if rec[a] > rec[b]:  # NaN (an optional cell left empty) compares False
             return b, f"{b} is below {a}"
+    if name == "nuts":
+        return _unit_problem(rec)
+    return None
+
+
+def _unit_problem(rec: dict) -> tuple[str, str] | None:
+    """A nut's ``rotating`` flag is 0 or 1 (empty: 0); a rotating-nut unit fills its unit columns that have no
+    estimate (:data:`UNIT_REQUIRED`), which then must be positive."""
+    flag = rec.get("rotating", math.nan)
+    if isinstance(flag, float) and math.isnan(flag):
+        return None
+    if flag not in (0, 1):
+        return "rotating", "must be 0 or 1"
+    if flag == 1:
+        for c in UNIT_REQUIRED + tuple(c.name for c in _UNIT_COLUMNS if c.estimate):
+            v = rec.get(c, math.nan)
+            empty = v is None or (isinstance(v, float) and math.isnan(v))
+            if empty and c in UNIT_REQUIRED:
+                return c, "missing value (a rotating-nut unit needs it)"
+            if not empty and v <= 0:
+                return c, "must be positive"
     return None
 
 
@@ -381,7 +428,7 @@ def _read_records(path: Path, name: str) -> list[dict]:
     cols = [(c.name, c.factor, "str" if c.name in PROVENANCE else schema[c.name]) for c in header_cols]
     seen = {c.name for c in header_cols}
     # an optional column with an estimate may be left out of the header: every row then takes the estimate
-    omitted = [c.name for c in COLUMNS[name] if c.optional and c.estimate and c.name not in seen]
+    omitted = [c.name for c in COLUMNS[name] if c.optional and (c.estimate or c.blank) and c.name not in seen]
     missing = [c for c in schema if c not in seen and c not in omitted]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)}", source=src, where="line 1")

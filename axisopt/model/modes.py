@@ -26,8 +26,11 @@ def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None) -> dict:
 
 
 def drive_inertias(p):
-    """(motor side, screw side) rotary inertia [kg*m^2]: rotor plus half the coupling; screw plus the other half."""
-    j_screw = ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"])
+    """(motor side, screw side) rotary inertia [kg*m^2]: rotor plus half the coupling; screw plus the other half
+    (a driven rotating nut: the unit's rotating parts instead of the screw)."""
+    r = p["nut_rotating"]
+    j_screw = (1.0 - r) * ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"]) \
+        + r * p["unit_inertia"]
     return p["motor_inertia"] + 0.5 * p["coupling_inertia"], j_screw + 0.5 * p["coupling_inertia"]
 
 

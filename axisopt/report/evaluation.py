@@ -160,7 +160,7 @@ def evaluation_table(ev: Evaluation) -> str:
     housing = "housing estimated" if a.bearing_housing_stiffness is None else housing
     labels = {"bearings": f"bearings ({sets} set{'s' if sets > 1 else ''}, {housing})",
               "screw": "screw tension", "screw torsion": "screw torsion (lead)", "coupling": "coupling (lead)",
-              "nut": f"nut at {v['max_axial_force'] / 1e3:.1f} kN",
+              "nut": f"nut at {v['max_axial_force'] / 1e3:.1f} kN", "unit bearing": "rotating-nut unit bearing",
               "nut bracket": "nut bracket (estimate)" if a.nut_bracket_stiffness is None else "nut bracket"}
     lines.append(f"axial stiffness chain at its softest point ({(ev.x[i_min] - a.start_offset) * 1e3:.0f} mm "
                  f"along the stroke)")
