@@ -427,8 +427,10 @@ def _read_records(path: Path, name: str) -> list[dict]:
     # (name, SI factor or None, kind) per column
     cols = [(c.name, c.factor, "str" if c.name in PROVENANCE else schema[c.name]) for c in header_cols]
     seen = {c.name for c in header_cols}
-    # an optional column with an estimate may be left out of the header: every row then takes the estimate
-    omitted = [c.name for c in COLUMNS[name] if c.optional and (c.estimate or c.blank) and c.name not in seen]
+    # an optional column with an estimate (or a meaning when empty, or one that applies only under a flag) may be
+    # left out of the header: every row then takes the estimate (is empty)
+    omitted = [c.name for c in COLUMNS[name]
+               if c.optional and (c.estimate or c.blank or c.applies) and c.name not in seen]
     missing = [c for c in schema if c not in seen and c not in omitted]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)}", source=src, where="line 1")

@@ -63,5 +63,6 @@ __all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_part
            "GUIDE_STATIC_SAFETY", "MAX_INERTIA_RATIO", "NUT_STATIC_SAFETY", "ORIENTATIONS", "PART_SLOTS",
            "PRETENSION_RISE", "RMS_TORQUE_RATIO", "SPACING_SHARE", "TEMPERATURE_RISE", "TOOL_HEIGHT_SHARE",
            "AXIS_SPEC", "CATALOGS_KEY", "DESCRIPTION_KEY", "DESIGN_SPEC", "DWELL_SPEC", "MOVE_SPEC", "NAME_KEY",
-           "PART_SPECS", "PARTS_SPEC", "catalog_for", "fitting_nuts", "inline_part", "read_duty_cycle", "read_part", "rotating_nut",
+           "PART_SPECS", "PARTS_SPEC", "catalog_for", "fitting_nuts", "inline_part", "read_duty_cycle", "read_part",
+           "rotating_nut",
            "design_to_dict", "design_to_yaml"]
