@@ -28,7 +28,7 @@ from .. import mathx as mx
 from ..physics import nut as pn
 from ..physics import screw as ps
 from ..physics import thermal as pt
-from .loads import bearing_set_stiffness
+from .loads import bearing_set_stiffness, unit
 
 
 def nut_stiffness(p, preload, axial_force, mean_force):
@@ -54,8 +54,9 @@ def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
     k_cpl = ps.torsion_axial_stiffness(p["coupling_stiffness"], lead)
     k_n0, k_n = nut_stiffness(p, preload, axial_force, mean_force)
     # a driven rotating nut: the unit's built-in bearing between the nut and its housing on the table, in series
-    k_unit = p["unit_bearing_stiffness"]
-    k_drive = 1.0 / (1.0 / k_sb + 1.0 / k_tors + 1.0 / k_n + p["nut_rotating"] / k_unit + p["bracket_compliance"])
+    k_unit, c_unit = unit(p, "unit_bearing_stiffness"), unit(p, "nut_rotating")
+    c_unit = c_unit / k_unit
+    k_drive = 1.0 / (1.0 / k_sb + 1.0 / k_tors + 1.0 / k_n + c_unit + p["bracket_compliance"])
     k_tot = ps.series_stiffness(k_drive, k_cpl)
     u_th = pt.thermal_displacement(x, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0)
     # largest thermal growth at the nut over the stroke: u is linear in x, so at one of the stroke's ends
@@ -65,7 +66,7 @@ def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
         "k_screw": k_screw, "k_screw_bearings": k_sb, "k_torsion": k_tors, "k_coupling": k_cpl,
         "k_nut": k_n, "k_nut_unloaded": k_n0, "c_bracket": p["bracket_compliance"] + 0.0 * k_n,
         "c_housing": p["housing_compliance"] + 0.0 * k_n,
-        "c_unit_bearing": p["nut_rotating"] / k_unit + 0.0 * k_n,
+        "c_unit_bearing": c_unit + 0.0 * k_n,
         "k_bearing": p["bearing_sets"] * k_set, "k_drive": k_drive, "k_total": k_tot,
         "thermal_displacement": u_th, "thermal_growth": mx.fmax(ends[0], ends[1]),
     }

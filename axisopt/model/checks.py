@@ -12,6 +12,7 @@ from ..physics import life as pl
 from ..physics import nut as pn
 from ..physics import screw as ps
 from .limits import CHECK_TABLE
+from .loads import unit
 
 # The checks, their labels and units are declared once in model.limits (CHECK_TABLE).
 CHECKS = tuple(c.name for c in CHECK_TABLE)
@@ -107,27 +108,27 @@ def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
     * ``rotating_mount`` (a compatibility rule): the stationary screw is held and tensioned at both ends (THK
       A-779's mountings hold the shaft at its ends), so a unit fits only a fixed-fixed screw.
     """
-    r = p["nut_rotating"] > 0.5
-    ca = p["unit_bearing_dynamic_load"]
+    r = unit(p, "nut_rotating") > 0.5
+    ca, c0 = unit(p, "unit_bearing_dynamic_load"), unit(p, "unit_bearing_static_load")
     q = dict(p)
     q.update({"bearing_dynamic_load": ca, "bearing_rows_strong": 1.0, "bearing_rows_weak": 1.0,
-              "bearing_preload": p["unit_bearing_preload"]})
+              "bearing_preload": unit(p, "unit_bearing_preload")})
     load = bearing_life_load(q, loads["life_loads"], loads["life_travels"], 0.0)
     life = pc.life_time(ca, load, mean_omega, p["load_factor"])
     f_max = loads["max_axial_force"]
     s0 = pb.STATIC_SAFETY_MACHINE_TOOL
     held = 1.0 if mounting == "fixed-fixed" else 0.0
     margins = {
-        "unit_speed": mx.if_else(r, p["unit_max_speed"] / omega, NOT_APPLICABLE),
+        "unit_speed": mx.if_else(r, unit(p, "unit_max_speed") / omega, NOT_APPLICABLE),
         "unit_bearing_life": mx.if_else(r, life / p["required_life"], NOT_APPLICABLE),
-        "unit_bearing_static": mx.if_else(r, p["unit_bearing_static_load"] / (s0 * f_max), NOT_APPLICABLE),
+        "unit_bearing_static": mx.if_else(r, c0 / (s0 * f_max), NOT_APPLICABLE),
         "rotating_mount": mx.if_else(r, held + 0.0 * omega, NOT_APPLICABLE),
     }
     out = {f"margin_{k}": v for k, v in margins.items()}
     out["unit_bearing_life"] = life
     out.update(check_pairs({
-        "unit_speed": (p["unit_max_speed"], omega), "unit_bearing_life": (life, p["required_life"]),
-        "unit_bearing_static": (p["unit_bearing_static_load"], s0 * f_max), "rotating_mount": (held, 1.0),
+        "unit_speed": (unit(p, "unit_max_speed"), omega), "unit_bearing_life": (life, p["required_life"]),
+        "unit_bearing_static": (c0, s0 * f_max), "rotating_mount": (held, 1.0),
     }))
     return out
 
@@ -169,7 +170,7 @@ def checks(p, mounting, preload, loads) -> dict:
     ceiling = pn.preload_ceiling(p["nut_dynamic_load"])
     brg_static, brg_c0, brg_c0_need = bearing_static(p, f_max, loads["bearing_static_load"])
     lift_need = p["nut_lift_off_safety"] * f_max
-    turning = p["nut_rotating"] < 0.5  # the screw turns (a nut on a rotating screw)
+    turning = unit(p, "nut_rotating") < 0.5  # the screw turns (a nut on a rotating screw)
     margins = {
         "critical_speed": mx.if_else(turning, crit / omega, NOT_APPLICABLE),
         "buckling": buck / compression,
