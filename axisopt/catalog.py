@@ -89,7 +89,7 @@ _DERIVED = {"estimated_when": ("derived",)}
 
 
 _TEXT = ("id", "vendor", "series")
-_UNIT = {"optional": True, "applies": "rotating"}
+_UNIT = {"optional": True, "applies": "rotating", "positive": True}
 # the rotating-nut unit's own values (read through rules in model.params.rotating_nut_params): required on a
 # rotating row (row_problem) except where an estimate stands in
 _UNIT_COLUMNS = (
@@ -131,7 +131,7 @@ COLUMNS = MappingProxyType({
         _c("axial_play", "length", "nut_axial_play"), _c("mass", "mass", "nut_mass"),
         _c("price", "money", "nut_price", **_PRICE),
         # a driven rotating-nut unit (THK DIR/BLR, HIWIN AME): the nut turns in its own support bearing on a
-        # stationary screw fixed at both ends (model.rotnut); the unit columns apply to its rows only
+        # stationary screw fixed at both ends (model.checks.unit_checks); the unit columns apply to its rows only
         _c("rotating", "int", optional=True, blank="0: a nut on a rotating screw"),
         *_UNIT_COLUMNS,
     ),
@@ -379,22 +379,13 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
 
 
 def _unit_problem(rec: dict) -> tuple[str, str] | None:
-    """A nut's ``rotating`` flag is 0 or 1 (empty: 0); a rotating-nut unit fills its unit columns that have no
-    estimate (:data:`UNIT_REQUIRED`), which then must be positive."""
+    """A nut's ``rotating`` flag is 0 or 1 (empty: 0); a rotating-nut unit fills the unit columns no estimate
+    stands in for (:data:`UNIT_REQUIRED`)."""
     flag = rec.get("rotating", math.nan)
-    if isinstance(flag, float) and math.isnan(flag):
-        return None
-    if flag not in (0, 1):
-        return "rotating", "must be 0 or 1"
     if flag == 1:
-        for c in UNIT_REQUIRED + tuple(c.name for c in _UNIT_COLUMNS if c.estimate):
-            v = rec.get(c, math.nan)
-            empty = v is None or (isinstance(v, float) and math.isnan(v))
-            if empty and c in UNIT_REQUIRED:
-                return c, "missing value (a rotating-nut unit needs it)"
-            if not empty and v <= 0:
-                return c, "must be positive"
-    return None
+        missing = [c for c in UNIT_REQUIRED if math.isnan(rec.get(c, math.nan))]
+        return (missing[0], "missing value (a rotating-nut unit needs it)") if missing else None
+    return None if math.isnan(flag) or flag == 0 else ("rotating", "must be 0 or 1")
 
 
 def _read_records(path: Path, name: str) -> list[dict]:

@@ -65,7 +65,9 @@ def test_rotating_nut_on_fixed_fixed_evaluates(tmp_path, capsys):
     ({"unit_inertia [kg.cm^2]": "nan"}, ("unit_inertia", "not a finite number")),
     ({"unit_inertia [kg.cm^2]": ""}, ("unit_inertia", "missing value")),
     ({"unit_bearing_dynamic_load [kN]": "inf"}, ("unit_bearing_dynamic_load", "not a finite number")),
-    ({"unit_bearing_rigidity [N/um]": "-5"}, ("unit_bearing_rigidity", "negative")),
+    ({"unit_bearing_rigidity [N/um]": "-5"}, ("unit_bearing_rigidity", "must be positive")),
+    ({"unit_inertia [kg.cm^2]": "0"}, ("unit_inertia", "must be positive")),
+    ({"unit_max_speed [rpm]": "1e300"}, ("unit_max_speed", "out of range")),
     ({"rotating": "2"}, ("rotating", "0 or 1")),
 ])
 def test_bad_unit_values_in_a_catalog(tmp_path, capsys, cells, words):
