@@ -47,6 +47,10 @@ class Column:
     derived_marker : a row whose ``source`` names this value as derived (``'<marker> ... derived'`` within
                 one ``;``-separated part) holds an estimate here whatever its status
     at_most   : the largest meaningful value in SI (an efficiency: 1), or None
+    blank     : for an optional column that is no estimate: what an empty cell (or the column left out of the
+                header) means, e.g. the nut's ``rotating`` flag (empty: a nut on a rotating screw)
+    applies   : a flag column of the same table: this column means something (and its estimate stands in)
+                only on rows whose flag is 1 (the driven rotating-nut unit's columns)
     """
 
     name: str
@@ -59,6 +63,8 @@ class Column:
     estimated_how: str = ""
     derived_marker: str = ""
     at_most: float | None = None
+    blank: str = ""
+    applies: str = ""
 
     def estimated_in(self, status: str, source: str = "") -> str:
         """How this column's value is estimated in a row of ``status`` and ``source`` ('' : the vendor's)."""
@@ -85,6 +91,22 @@ _DERIVED = {"estimated_when": ("derived",)}
 
 
 _TEXT = ("id", "vendor", "series")
+_UNIT = {"optional": True, "applies": "rotating", "positive": True}
+# the rotating-nut unit's own values (read through rules in model.params.rotating_nut_params): required on a
+# rotating row (row_problem) except where an estimate stands in
+_UNIT_COLUMNS = (
+    _c("unit_inertia", "inertia", **_UNIT),
+    _c("unit_max_speed", "angular_speed", **_UNIT,
+       estimate="the screw vendor's DN rule for the nut's rotation, DN limit / d (THK A-697; H-BS 3.7.6)"),
+    _c("unit_bearing_dynamic_load", "force", **_UNIT),
+    _c("unit_bearing_static_load", "force", **_UNIT),
+    _c("unit_bearing_rigidity", "stiffness", **_UNIT,
+       estimate="11.2 N/um per kN of the unit bearing's Ca, the lowest of the ZKLF rows (H-BS 8.8.2)"),
+    _c("unit_starting_torque", "torque", **_UNIT,
+       estimate="support-set envelope 3.72e-3 x (0.05 Ca) x 2.5 d (catalogs/SOURCES.md)"),
+)
+# columns a rotating-nut row must fill (no estimate stands in for them)
+UNIT_REQUIRED = tuple(c.name for c in _UNIT_COLUMNS if not c.estimate)
 COLUMNS = MappingProxyType({
     "screws": (
         *(_c(n, "str") for n in _TEXT),
@@ -110,6 +132,10 @@ COLUMNS = MappingProxyType({
         _c("contact_angle", "angle"),
         _c("axial_play", "length", "nut_axial_play"), _c("mass", "mass", "nut_mass"),
         _c("price", "money", "nut_price", **_PRICE),
+        # a driven rotating-nut unit (THK DIR/BLR, HIWIN AME): the nut turns in its own support bearing on a
+        # stationary screw fixed at both ends (model.checks.unit_checks); the unit columns apply to its rows only
+        _c("rotating", "int", optional=True, blank="0: a nut on a rotating screw"),
+        *_UNIT_COLUMNS,
     ),
     "bearings": (
         *(_c(n, "str") for n in _TEXT), _c("arrangement", "str"), _c("rows", "int", positive=True),
@@ -372,7 +398,19 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
     for a, b in _ORDERED.get(name, ()):
         if rec[a] > rec[b]:  # NaN (an optional cell left empty) compares False
             return b, f"{b} is below {a}"
+    if name == "nuts":
+        return _unit_problem(rec)
     return None
+
+
+def _unit_problem(rec: dict) -> tuple[str, str] | None:
+    """A nut's ``rotating`` flag is 0 or 1 (empty: 0); a rotating-nut unit fills the unit columns no estimate
+    stands in for (:data:`UNIT_REQUIRED`)."""
+    flag = rec.get("rotating", math.nan)
+    if flag == 1:
+        missing = [c for c in UNIT_REQUIRED if math.isnan(rec.get(c, math.nan))]
+        return (missing[0], "missing value (a rotating-nut unit needs it)") if missing else None
+    return None if math.isnan(flag) or flag == 0 else ("rotating", "must be 0 or 1")
 
 
 def _read_records(path: Path, name: str) -> list[dict]:
@@ -405,8 +443,10 @@ def _read_records(path: Path, name: str) -> list[dict]:
     # (name, SI factor or None, kind) per column
     cols = [(c.name, c.factor, "str" if c.name in PROVENANCE else schema[c.name]) for c in header_cols]
     seen = {c.name for c in header_cols}
-    # an optional column with an estimate may be left out of the header: every row then takes the estimate
-    omitted = [c.name for c in COLUMNS[name] if c.optional and c.estimate and c.name not in seen]
+    # an optional column with an estimate (or a meaning when empty, or one that applies only under a flag) may be
+    # left out of the header: every row then takes the estimate (is empty)
+    omitted = [c.name for c in COLUMNS[name]
+               if c.optional and (c.estimate or c.blank or c.applies) and c.name not in seen]
     missing = [c for c in schema if c not in seen and c not in omitted]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)}", source=src, where="line 1")

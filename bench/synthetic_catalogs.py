@@ -43,9 +43,14 @@ def _vendor(rng):
 
 
 def catalog(n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100, n_motors=0, n_couplings=0,
-            seed=0, n_reductions=0) -> Catalog:
+            seed=0, n_reductions=0, rotating_share=0.0) -> Catalog:
+    """``rotating_share``: the share of nuts made driven rotating-nut units (THK DIR-like: the unit's inertia
+    about J = 1.5e-5 kg.cm^2 x (d/mm)^3.8, a fit of THK DIR B-721, its bearing's Ca 0.5-0.7 x the nut's; max
+    speed, bearing rigidity and drag left to the model's estimates), drawn from a generator of their own so the
+    other rows stay as they are."""
     rng = np.random.default_rng(seed)
     reductions = _reductions(n_reductions, np.random.default_rng(1000 + seed))  # the other draws keep their order
+    unit_rng = np.random.default_rng(seed + 104729)
     screws, nuts, bearings, guides, motors, couplings = [], [], [], [], [], []
     for i in range(n_screws):
         vend, lvl = _vendor(rng)
@@ -71,6 +76,11 @@ def catalog(n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100, n_motor
                          "dynamic_load_rating": c, "static_load_rating": 2.5 * c, "contact_angle": math.radians(45),
                          "axial_play": 0.0 if double else 2e-5, "mass": 3e-5 * d ** 2.2 * rng.uniform(0.8, 1.2),
                          "price": (120 + 9 * d) * lvl * (1.6 if double else 1.0) * rng.uniform(0.9, 1.1)})
+            if rotating_share > 0 and unit_rng.random() < rotating_share:
+                cb = c * unit_rng.uniform(0.5, 0.7)
+                nuts[-1].update({"rotating": 1, "unit_inertia": 1.5e-9 * d ** 3.8 * unit_rng.uniform(0.8, 1.2),
+                                 "unit_bearing_dynamic_load": cb, "unit_bearing_static_load": 1.5 * cb,
+                                 "price": nuts[-1]["price"] + 180 + 6 * d})
     for i in range(n_bearings):
         vend, lvl = _vendor(rng)
         bore = float(rng.choice([12, 15, 17, 20, 25, 30, 35, 40]))

@@ -53,6 +53,7 @@ from .reader import (
     read_duty_cycle,
     read_part,
     read_parts,
+    rotating_nut,
 )
 from .writer import design_to_dict, design_to_yaml
 
@@ -63,4 +64,5 @@ __all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_part
            "PRETENSION_RISE", "RMS_TORQUE_RATIO", "SPACING_SHARE", "TEMPERATURE_RISE", "TOOL_HEIGHT_SHARE",
            "AXIS_SPEC", "CATALOGS_KEY", "DESCRIPTION_KEY", "DESIGN_SPEC", "DWELL_SPEC", "MOVE_SPEC", "NAME_KEY",
            "PART_SPECS", "PARTS_SPEC", "catalog_for", "fitting_nuts", "inline_part", "read_duty_cycle", "read_part",
+           "rotating_nut",
            "design_to_dict", "design_to_yaml"]

@@ -152,9 +152,10 @@ def _part_key(table: str, col: str, kind: str) -> Key:
         optional = col in ("vendor", "series")
         return Key("string", doc + (" (default: custom)" if optional else ""), required=not optional,
                    default="custom" if optional else None, choices=CHOICES.get((table, col)))
-    if kind == "int":
-        return Key("number", doc, required=True, integer=True, minimum=1)
     optional = col in OPTIONAL_COLUMNS.get(table, ())
+    if kind == "int":  # a count (>= 1), or an optional 0/1 flag (the nut's ``rotating``)
+        return Key("number", doc + (" (optional: 0 or 1)" if optional else ""), required=not optional,
+                   integer=True, minimum=0 if optional else 1)
     if kind == "dimensionless":
         top = next((c.at_most for c in COLUMNS[table] if c.name == col), None)  # an efficiency: at most 1
         return Key("number", doc + (" (optional: the vendor lists none)" if optional else ""),

@@ -138,7 +138,7 @@ def inline_part(sec: Section, table: str):
     for col, kind in SCHEMA[table].items():
         v = sec.read(col)
         if kind == "int":
-            v = int(v)
+            v = math.nan if v is None else int(v)
         elif kind != "str" and v is None:
             v = math.nan
         rec[col] = float(v) if kind == "dimensionless" else v
@@ -172,6 +172,15 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
                         f"{nut['preload_min']:.0f}..{nut['preload_max']:.0f} N")
     parts["nut_preload"] = pre
     return parts
+
+
+def rotating_nut(nut) -> bool:
+    """True for a driven rotating-nut unit (the nut row's ``rotating`` flag is 1; empty or absent: 0)."""
+    try:
+        v = float(nut["rotating"])
+    except (KeyError, TypeError, ValueError):
+        return False
+    return v == 1.0
 
 
 def fitting_nuts(catalog: Catalog, screw_id: str, shown: int = 6) -> str:
@@ -210,6 +219,9 @@ def load_design(path) -> Design:
     if parts.get("reduction") is not None and given:
         raise psec.error("reduction", f"the reduction part sets the ratio, efficiency and inertia: leave "
                          f"axis.{given[0]} out (it applies only without a reduction part)")
+    if rotating_nut(parts["nut"]) and axis.mounting != "fixed-fixed":
+        raise psec.error("nut", f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: it runs on a stationary "
+                         f"screw fixed at both ends (axis.mounting: fixed-fixed), not {axis.mounting}")
     if parts.get("motor") is not None and axis.acceleration <= 0 and not axis.duty_cycle:
         raise psec.error("motor", "sizing a motor needs axis.acceleration (or an axis.duty_cycle)")
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)

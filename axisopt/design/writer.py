@@ -56,9 +56,11 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
             continue
         part = {}
         for col, kind in SCHEMA[table].items():
-            v = row[col]
+            v = row.get(col, math.nan) if hasattr(row, "get") else row[col]
             if kind == "str":
                 part[col] = str(v)
+            elif kind == "int" and not math.isfinite(float(v)):
+                continue  # an optional flag left empty (the nut's rotating)
             elif kind == "int":
                 part[col] = int(v)
             elif not math.isfinite(float(v)):

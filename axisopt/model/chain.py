@@ -1,6 +1,6 @@
 r"""The axial stiffness chain at the nut, component by component (seed eq. 1-2 and the vendors' sum).
 
-.. math:: 1/k = 1/k_{SB}(x) + 1/k_{tors}(x) + 1/k_{cpl} + 1/k_N + 1/k_{bracket}
+.. math:: 1/k = 1/k_{SB}(x) + 1/k_{tors}(x) + 1/k_{cpl} + 1/k_N + r/k_{unit} + 1/k_{bracket}
 
 * ``k_SB``: screw shaft and support-bearing sets (each in series with its housing).  One fixed end:
   set in series with the segment x.  Fixed-fixed: the two load paths in parallel (seed eq. 3-5, 10;
@@ -11,6 +11,11 @@ r"""The axial stiffness chain at the nut, component by component (seed eq. 1-2 a
 * ``k_N``: nut.  Double nut: eq. 9 at the preload (HIWIN F 3.34), then the Hertz curve with lift-off at the
   largest axial load the axis sees (its softest point).  Single nut with play: HIWIN F 3.35 at the mean
   operating load, 0.8 K (F_bm / 0.28 C)^(1/3).
+* ``k_unit``: a driven rotating nut's built-in support bearing (its vendor's rigidity, else the estimate of
+  :func:`axisopt.model.params.rotating_nut_params`), between the nut and its housing: in series (THK A-709 sums
+  the nut's and the support bearing's compliances the same way); absent (0 compliance) for a nut on a turning
+  screw.  The screw's torsion stays in the chain: the stationary screw is held against the nut's torque at its
+  end, and its twist between there and the nut turns the nut relative to the thread as a turning screw's would.
 * ``k_bracket``: nut bracket; ``k_SB`` includes the bearing housings (axis values, else the estimates of
   :func:`axisopt.model.params.mount_compliances`).
 
@@ -24,7 +29,7 @@ from .. import mathx as mx
 from ..physics import nut as pn
 from ..physics import screw as ps
 from ..physics import thermal as pt
-from .loads import bearing_set_stiffness
+from .loads import bearing_set_stiffness, unit
 
 
 def drive_torsional_stiffness(p):
@@ -59,7 +64,10 @@ def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
     k_tors = ps.torsion_axial_stiffness(ps.screw_torsional_stiffness(d_r, x), lead)
     k_cpl = ps.torsion_axial_stiffness(drive_torsional_stiffness(p), lead)
     k_n0, k_n = nut_stiffness(p, preload, axial_force, mean_force)
-    k_drive = 1.0 / (1.0 / k_sb + 1.0 / k_tors + 1.0 / k_n + p["bracket_compliance"])
+    # a driven rotating nut: the unit's built-in bearing between the nut and its housing on the table, in series
+    k_unit, c_unit = unit(p, "unit_bearing_stiffness"), unit(p, "nut_rotating")
+    c_unit = c_unit / k_unit
+    k_drive = 1.0 / (1.0 / k_sb + 1.0 / k_tors + 1.0 / k_n + c_unit + p["bracket_compliance"])
     k_tot = ps.series_stiffness(k_drive, k_cpl)
     u_th = pt.thermal_displacement(x, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0)
     # largest thermal growth at the nut over the stroke: u is linear in x, so at one of the stroke's ends
@@ -69,6 +77,7 @@ def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
         "k_screw": k_screw, "k_screw_bearings": k_sb, "k_torsion": k_tors, "k_coupling": k_cpl,
         "k_nut": k_n, "k_nut_unloaded": k_n0, "c_bracket": p["bracket_compliance"] + 0.0 * k_n,
         "c_housing": p["housing_compliance"] + 0.0 * k_n,
+        "c_unit_bearing": c_unit + 0.0 * k_n,
         "k_bearing": p["bearing_sets"] * k_set, "k_drive": k_drive, "k_total": k_tot,
         "thermal_displacement": u_th, "thermal_growth": mx.fmax(ends[0], ends[1]),
     }

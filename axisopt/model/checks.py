@@ -10,7 +10,9 @@ from ..physics import bearings as pb
 from ..physics import checks as pc
 from ..physics import life as pl
 from ..physics import nut as pn
+from ..physics import screw as ps
 from .limits import CHECK_TABLE
+from .loads import unit
 
 # The checks, their labels and units are declared once in model.limits (CHECK_TABLE).
 CHECKS = tuple(c.name for c in CHECK_TABLE)
@@ -27,6 +29,10 @@ BUCKLING_END_CONDITION = "fixed-fixed"
 MARGIN_CAP = 1e3
 # THK catalog A15 eq. 6: permissible tensile/compressive load of the shaft, P2 = sigma A, sigma = 147 MPa.
 SCREW_YIELD_STRESS = 147e6
+
+# Margin of a check that does not apply to the design (a rotating-nut check on a nut that does not turn, the whirl
+# of a screw that does not turn)
+NOT_APPLICABLE = 1e9
 
 # A margin passes at >= 1 less float rounding: the search holds each limit exactly by bisection, and the
 # evaluation path may round the same ratio (e.g. 19 999.999999999996 h against 20 000 h) one ulp lower.
@@ -86,8 +92,55 @@ def bearing_static(p, f_max, static):
             s0 * mx.if_else(strong_governs, push, f_max))
 
 
+def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
+    """The driven rotating-nut unit's own checks (margins, available and needed values; :data:`NOT_APPLICABLE`
+    for a nut on a rotating screw).  THK DIR/BLR (T-GC A-772-A-779) and HIWIN AME (H-BS 7.1) turn the nut in a
+    built-in support bearing on a stationary screw:
+
+    * ``unit_speed``: the unit's max speed (HIWIN's n max; THK prints none for DIR/BLR: the screw's DN rule for
+      the nut's rotation, an estimate, model.params.rotating_nut_params) over the nut's speed 2 pi v / P_h;
+    * ``unit_bearing_life``: the built-in bearing (a preloaded pair: THK "two rows of DB type angular bearings",
+      B-721) rated as the end sets are (:func:`bearing_life_load`: its printed Ca, one row each way, its preload
+      the 5 % Ca estimate, no static set load: the screw's pretension stays in the screw); L10 at the cycle's mean
+      nut speed, the life rule of physics.checks (THK A-704);
+    * ``unit_bearing_static``: its printed C0a against the largest axial force with Rexroth's machine-tool static
+      safety (a true C0a whose vendor names no factor, physics.bearings.STATIC_SAFETY_MACHINE_TOOL);
+    * ``rotating_mount`` (a compatibility rule): the stationary screw is held and tensioned at both ends (THK
+      A-779's mountings hold the shaft at its ends), so a unit fits only a fixed-fixed screw.
+    """
+    r = unit(p, "nut_rotating") > 0.5
+    ca, c0 = unit(p, "unit_bearing_dynamic_load"), unit(p, "unit_bearing_static_load")
+    q = dict(p)
+    q.update({"bearing_dynamic_load": ca, "bearing_rows_strong": 1.0, "bearing_rows_weak": 1.0,
+              "bearing_preload": unit(p, "unit_bearing_preload")})
+    load = bearing_life_load(q, loads["life_loads"], loads["life_travels"], 0.0)
+    life = pc.life_time(ca, load, mean_omega, p["load_factor"])
+    f_max = loads["max_axial_force"]
+    s0 = pb.STATIC_SAFETY_MACHINE_TOOL
+    held = 1.0 if mounting == "fixed-fixed" else 0.0
+    margins = {
+        "unit_speed": mx.if_else(r, unit(p, "unit_max_speed") / omega, NOT_APPLICABLE),
+        "unit_bearing_life": mx.if_else(r, life / p["required_life"], NOT_APPLICABLE),
+        "unit_bearing_static": mx.if_else(r, c0 / (s0 * f_max), NOT_APPLICABLE),
+        "rotating_mount": mx.if_else(r, held + 0.0 * omega, NOT_APPLICABLE),
+    }
+    out = {f"margin_{k}": v for k, v in margins.items()}
+    out["unit_bearing_life"] = life
+    out.update(check_pairs({
+        "unit_speed": (unit(p, "unit_max_speed"), omega), "unit_bearing_life": (life, p["required_life"]),
+        "unit_bearing_static": (c0, s0 * f_max), "rotating_mount": (held, 1.0),
+    }))
+    return out
+
+
 def checks(p, mounting, preload, loads) -> dict:
-    """Check margins ``margin_<check>`` and the physical values they compare (SI)."""
+    """Check margins ``margin_<check>`` and the physical values they compare (SI).
+
+    A driven rotating nut (``nut_rotating`` 1, :func:`unit_checks`) leaves the screw standing: no whirl (the
+    critical speed does not apply; THK A-774: "the screw shaft does not rotate ... this model does not show
+    skipping"), and the end bearings do not turn (their life and speed checks do not apply; their static check
+    stays).  The DN check stays: the balls run at the nut's speed relative to the screw.  ``screw_sag``: the sag
+    of a horizontal screw under its own weight (physics.screw.screw_sag; 0 on a vertical axis)."""
     span = p["span"]
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
     mean_omega = 2.0 * math.pi * p["mean_speed"] / p["lead"]
@@ -117,12 +170,13 @@ def checks(p, mounting, preload, loads) -> dict:
     ceiling = pn.preload_ceiling(p["nut_dynamic_load"])
     brg_static, brg_c0, brg_c0_need = bearing_static(p, f_max, loads["bearing_static_load"])
     lift_need = p["nut_lift_off_safety"] * f_max
+    turning = unit(p, "nut_rotating") < 0.5  # the screw turns (a nut on a rotating screw)
     margins = {
-        "critical_speed": crit / omega,
+        "critical_speed": mx.if_else(turning, crit / omega, NOT_APPLICABLE),
         "buckling": buck / compression,
         "screw_yield": yield_load / tension,
         "nut_life": life / p["required_life"],
-        "bearing_life": brg_life / p["required_life"],
+        "bearing_life": mx.if_else(turning, brg_life / p["required_life"], NOT_APPLICABLE),
         "guide_life": guide_life / (p["required_life"] * p["mean_speed"]),
         "dn": p["dn_limit"] / dn,
         # a single nut has no preload to lose: the check does not apply (margin reported as inf)
@@ -130,7 +184,7 @@ def checks(p, mounting, preload, loads) -> dict:
         # the vendors' preload ceiling (10 % Ca); a nut with play carries no preload
         "nut_preload": mx.if_else(p["nut_double"] > 0.5, ceiling / mx.fmax(preload, 1e-9), 1e9),
         "bearing_lift_off": p["bearing_lift_off"] / brg_max,
-        "bearing_speed": p["bearing_limiting_speed"] / omega,
+        "bearing_speed": mx.if_else(turning, p["bearing_limiting_speed"] / omega, NOT_APPLICABLE),
         # the bearing journal is machined on the screw end: its vendor lists the bores it takes
         "bearing_fit": mx.fmin(p["support_bore_max"] / bore, bore / p["support_bore_min"]),
         "screw_length": p["screw_max_length"] / span,
@@ -143,6 +197,8 @@ def checks(p, mounting, preload, loads) -> dict:
         "critical_speed": crit, "buckling_load": buck, "yield_load": yield_load, "life": life,
         "bearing_life": brg_life, "guide_life": guide_life, "dn": dn, "nut_lift_off_force": lift,
         "bearing_max_load": brg_max, "nut_static_safety": p["nut_static_load"] / f_max,
+        "screw_sag": (1.0 - p["gravity_axial"]) * ps.screw_sag(p["screw_mass_per_length"], p["root_diameter"],
+                                                               span, mounting),
     }
     # what each margin compares, in SI: the available capacity and the needed value (margin = available /
     # needed, except bearing_fit, whose "needed" is the bore and "available" the largest bore the end takes)
@@ -162,6 +218,7 @@ def checks(p, mounting, preload, loads) -> dict:
     out = {f"margin_{k}": v for k, v in margins.items()}
     out.update(values)
     out.update(check_pairs(pairs))
+    out.update(unit_checks(p, mounting, loads, omega, mean_omega))
     return out
 
 

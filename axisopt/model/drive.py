@@ -40,15 +40,19 @@ from ..physics import drive as pd
 from ..physics import screw as ps
 from .checks import check_pairs
 from .drag import SCREW_EFFICIENCY
-from .loads import G, phase_moving_mass
+from .loads import G, phase_moving_mass, unit
 
 NOT_APPLICABLE = 1e9  # margin of a check that does not apply (no motor, horizontal axis for the brake)
 
 
 def drive_inertias(p, moving_mass):
-    """(load inertia at the motor without the rotor, rotor inertia) [kg m^2]."""
+    """(load inertia at the motor without the rotor, rotor inertia) [kg m^2].  A driven rotating nut
+    (``nut_rotating`` 1): the unit's rotating parts (THK prints them, T-GC B-721/B-723 "nut inertia") turn
+    instead of the screw."""
     a = 1.0 / p["reduction_ratio"]
-    j_screw = ps.screw_rotary_inertia(p["nominal_diameter"], p["span"])
+    r = unit(p, "nut_rotating")
+    j_screw = (1.0 - r) * ps.screw_rotary_inertia(p["nominal_diameter"], p["span"]) \
+        + r * unit(p, "unit_inertia")
     j_load = pd.reflected_inertia(moving_mass, p["lead"], j_screw, p["coupling_inertia"], a,
                                   p["reduction_inertia"])
     return j_load, p["rotor_inertia"]

@@ -129,6 +129,8 @@ def design_estimates(design) -> list:
                 continue
             val = row.get(col.name, math.nan) if hasattr(row, "get") else math.nan
             empty = val is None or (isinstance(val, float) and math.isnan(val))
+            if col.applies and (row.get(col.applies) if hasattr(row, "get") else None) != 1:
+                continue  # a rotating-nut unit's column on a nut that does not turn
             if getattr(design.axis, OVERRIDDEN_BY_AXIS.get((table, col.name), "_none_"), None) is not None:
                 continue
             how = col.estimate if (empty and col.estimate) else col.estimated_in(status, row.get("source", ""))

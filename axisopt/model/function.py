@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from ..design import Design
+from ..design import Design, rotating_nut
 from ..display import fmt, frame, html_fields, html_table, one_line
 from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes
 from .limits import CHECK_RECORDS
@@ -29,7 +29,8 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "gravity_torque", "regen_energy", "regen_power", "output_peak_torque", "output_rms_torque",
                   "duty_time", "guide_max_load", "guide_static_safety", "guide_mean_load", "nut_static_safety",
                   "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking", "friction_power", "heat_transfer",
-                  "heat_balance_rise", "temperature_rise", "thermal_growth",
+                  "heat_balance_rise", "temperature_rise", "thermal_growth", "c_unit_bearing", "screw_sag",
+                  "unit_bearing_life",
                   ) + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
 
 
@@ -97,7 +98,8 @@ def design_params(design: Design) -> dict:
 
 
 COMPONENTS = (("bearings", "k_bearing"), ("screw", "k_screw"), ("screw torsion", "k_torsion"),
-              ("coupling", "k_coupling"), ("nut", "k_nut"), ("nut bracket", "c_bracket"))
+              ("coupling", "k_coupling"), ("nut", "k_nut"), ("unit bearing", "c_unit_bearing"),
+              ("nut bracket", "c_bracket"))
 
 
 @dataclass(frozen=True, repr=False)
@@ -130,6 +132,8 @@ class Evaluation:
         out = {}
         for name, key in COMPONENTS:
             v = self.at(key, i)
+            if key == "c_unit_bearing" and v == 0:  # a nut on a turning screw: no unit bearing
+                continue
             if key.startswith("c_"):  # given as compliance: 0 is rigid
                 v = 1.0 / v if v > 0 else float("inf")
             out[name] = v
@@ -243,6 +247,8 @@ def check_rows(ev: Evaluation) -> list:
         if c == "brake_holding" and d.axis.orientation != "vertical":
             continue
         rec = CHECK_RECORDS[c]
+        if rec.rotating_nut and not rotating_nut(d.nut):
+            continue
         unit, f = rec.unit, rec.factor
         row = {"check": c, "label": CHECK_LABELS[c], "unit": unit,
                "available": _finite(float(v[f"available_{c}"]) * f), "needed": _finite(float(v[f"needed_{c}"]) * f),

@@ -31,6 +31,7 @@ from .. import mathx as mx
 from ..physics import nut as pn
 from ..physics import thermal as pt
 from ..physics.motion import mean_speed, phase_travel
+from .loads import unit
 
 NUT_BRACKET_SHAPE = 1.0  # bracket section / length per metre of screw diameter [-] (estimate)
 END_CONDUCTANCE = 2.0  # [W/K] per held shaft end (estimate)
@@ -61,9 +62,13 @@ def heat_balance(p, preload) -> dict:
     v_mean = mean_speed(phases) if phases else p["mean_speed"]
     omega = 2.0 * math.pi * v_mean / p["lead"]
     d, d_r = p["nominal_diameter"], p["root_diameter"]
-    p_nut = pn.nut_preload_drag_torque(preload, p["lead"], d) * omega
-    p_bearings = p["bearing_sets"] * p["bearing_torque"] * omega
+    r = unit(p, "nut_rotating")  # a bare parameter dict without the unit: a nut on a turning screw
+    # a driven rotating nut: the unit's bearing heats the nut housing (its heat takes the nut's path), the end
+    # bearings and the shaft stand still (no drag, no rotating film: free convection alone)
+    p_nut = (pn.nut_preload_drag_torque(preload, p["lead"], d) + r * unit(p, "unit_bearing_torque")) * omega
+    p_bearings = (1.0 - r) * p["bearing_sets"] * p["bearing_torque"] * omega
     h_rot = cycle_film(phases, p["lead"], 0.5 * d) if phases else pt.rotating_shaft_heat_transfer(omega, 0.5 * d)
+    h_rot = (1.0 - r) * h_rot
     h_mixed = pt.mixed_convection_film(h_rot, pt.horizontal_cylinder_free_film(FREE_CONVECTION_RISE, d))
     given = p["heat_transfer"] > 0.0
     h = mx.if_else(given, mx.fmax(p["heat_transfer"], 1e-12), h_mixed)

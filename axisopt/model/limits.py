@@ -92,6 +92,9 @@ LIMIT_TABLE = (
     Limit("max_regen_power", "regen_power", "<=", "power", "W", 1.0,
           "mean power the motor returns to the drive over the duty cycle (braking, lowering) at most this: what "
           "the drive's regenerative resistor takes (Yaskawa Sigma-7 12.8.6)"),
+    Limit("max_screw_sag", "screw_sag", "<=", "length", "mm", 1e-3,
+          "sag of a horizontal screw under its own weight at most this (beam deflection q L^4 / (k E I) on the root "
+          "diameter, untensioned: conservative; 0 on a vertical axis)"),
     Limit("min_kv", "kv", ">=", "frequency", "1/s", 1.0,
           "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, model.servo)"),
 )
@@ -110,6 +113,7 @@ class Check:
                checks: a reduction)
     relaxable: a rule with a margin one may trade (False: a compatibility rule, parts that fit or not; an
                infeasible problem's explanation never proposes relaxing it)
+    rotating_nut : a check of a driven rotating-nut unit (model.checks.unit_checks): shown for such a nut only
     """
 
     name: str
@@ -120,6 +124,7 @@ class Check:
     preload: int = 0
     drive: bool = False
     relaxable: bool = True
+    rotating_nut: bool = False
 
 
 CHECK_TABLE = (
@@ -161,6 +166,15 @@ CHECK_TABLE = (
     # the static set load (pretension, thermal force) rises with the nut preload through the heat balance
     Check("bearing_static", "bearing C0a / (least S0 x largest axial load)", "bearing static", "kN", 1e-3,
           preload=-1),
+    # a driven rotating-nut unit (model.checks.unit_checks): its speed, its built-in bearing, its mounting
+    Check("unit_speed", "rotating-nut unit max speed / max nut speed", "unit speed", "rpm", RPM,
+          rotating_nut=True),
+    Check("unit_bearing_life", "unit bearing L10 life / required life", "unit bearing life", "h", 1 / 3600,
+          rotating_nut=True),
+    Check("unit_bearing_static", "unit bearing C0a / (S0 4 x largest axial force)", "unit bearing static", "kN",
+          1e-3, rotating_nut=True),
+    Check("rotating_mount", "rotating-nut unit on a screw fixed at both ends", "rotating nut mount", "", 1.0,
+          relaxable=False, rotating_nut=True),
 )
 CHECK_RECORDS = MappingProxyType({c.name: c for c in CHECK_TABLE})
 

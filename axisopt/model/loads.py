@@ -12,6 +12,17 @@ from ..physics import thermal as pt
 
 G = 9.80665
 
+# The driven rotating-nut unit's parameters for a nut on a turning screw (model.params.rotating_nut_params gives
+# the same): what a bare parameter dict without them (a test's, an older caller's) stands for
+NUT_ON_TURNING_SCREW = {"nut_rotating": 0.0, "unit_inertia": 0.0, "unit_max_speed": 1.0,
+                        "unit_bearing_dynamic_load": 1.0, "unit_bearing_static_load": 1.0,
+                        "unit_bearing_preload": 0.05, "unit_bearing_stiffness": 1.0, "unit_bearing_torque": 0.0}
+
+
+def unit(p, name):
+    """A rotating-nut unit parameter of ``p``, or its value for a nut on a turning screw when ``p`` has none."""
+    return p[name] if name in p else NUT_ON_TURNING_SCREW[name]
+
 
 @lru_cache(maxsize=64)
 def phase_groups(phases: tuple) -> tuple:

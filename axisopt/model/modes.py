@@ -9,6 +9,7 @@ from ..physics import damping as pdm
 from ..physics import dynamics as pdy
 from ..physics import screw as ps
 from .chain import drive_torsional_stiffness
+from .loads import unit
 
 # Material damping ratio of steel structures, seed Table 5 (0.001-0.002).
 STEEL_DAMPING = 0.002
@@ -27,8 +28,11 @@ def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None) -> dict:
 
 
 def drive_inertias(p):
-    """(motor side, screw side) rotary inertia [kg*m^2]: rotor plus half the coupling; screw plus the other half."""
-    j_screw = ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"])
+    """(motor side, screw side) rotary inertia [kg*m^2]: rotor plus half the coupling; screw plus the other half
+    (a driven rotating nut: the unit's rotating parts instead of the screw)."""
+    r = unit(p, "nut_rotating")
+    j_screw = (1.0 - r) * ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"]) \
+        + r * unit(p, "unit_inertia")
     return p["motor_inertia"] + 0.5 * p["coupling_inertia"], j_screw + 0.5 * p["coupling_inertia"]
 
 

@@ -57,6 +57,9 @@ PARAM_NAMES = (
     # output-side ratings, its torsional compliance (in series with the coupling) and its input speed limit
     "has_reduction", "reduction_rated_torque", "reduction_accel_torque", "reduction_compliance",
     "reduction_max_speed", "reduction_price", "reduction_backlash",
+    # driven rotating-nut unit (model.rotnut; 0 / neutral values for a nut on a rotating screw)
+    "nut_rotating", "unit_inertia", "unit_max_speed", "unit_bearing_dynamic_load", "unit_bearing_static_load",
+    "unit_bearing_stiffness", "unit_bearing_torque", "unit_bearing_preload",
 )
 
 
@@ -67,7 +70,9 @@ PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.pa
 # columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice; the text
 # columns type and arrangement as the numbers they stand for)
 _RULE_COLUMNS = MappingProxyType({
-    "screws": (), "nuts": ("type",), "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement",
+    "screws": (), "nuts": ("type", "rotating", "unit_inertia", "unit_max_speed", "unit_bearing_dynamic_load",
+                           "unit_bearing_static_load", "unit_bearing_rigidity", "unit_starting_torque"),
+    "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement",
                                                 "static_safety"),
     "guides": ("type", "rating_distance"),
     "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
@@ -79,6 +84,9 @@ _RULE_COLUMNS = MappingProxyType({
 
 # rule columns and the parameter each one ends in (for naming the estimates a result rests on, model.estimates)
 RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque",
+                                ("nuts", "unit_max_speed"): "unit_max_speed",
+                                ("nuts", "unit_bearing_rigidity"): "unit_bearing_stiffness",
+                                ("nuts", "unit_starting_torque"): "unit_bearing_torque",
                                 ("bearings", "static_safety"): "bearing_static_safety",
                                 ("guides", "rating_distance"): "guide_rating_distance",
                                 ("motors", "peak_corner_speed"): "motor_peak_corner_speed",
@@ -145,11 +153,52 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
         if axis.bearing_static_safety is None else axis.bearing_static_safety,
         "nut_lift_off_safety": axis.nut_lift_off_safety,
     })
+    p.update(rotating_nut_params(p, nut))
     p.update(mount_compliances(axis, p))
     p.update(carriage_params(axis))
     p.update(drive_params(axis, motor, coupling, reduction))
     p["duty"] = axis.phases
     return p
+
+
+# Estimates for a rotating-nut unit whose vendor prints no figure (catalogs/SOURCES.md, docs/assumptions.md):
+# the built-in bearing's axial rigidity per kN of its dynamic rating, the lowest ratio of the Schaeffler ZKLF rows
+# HIWIN reprints (H-BS 8.8.2: ZKLF50140 1 400 N/um at Cdyn 125 kN); its preload as the ZKLN/ZKLF rule of
+# catalogs/SOURCES.md (5 % Cdyn); its mean diameter as 2.5 x the screw's nominal diameter (the THK DIR/BLR unit
+# housings D are 2.4-3.0 d, T-GC B-721/B-723; the bearing sits inside D, so the drag read from it is high)
+UNIT_RIGIDITY_PER_RATING = 1400e6 / 125e3  # [N/m per N] = 11.2 N/um per kN
+UNIT_PRELOAD_FRACTION = 0.05  # [-] of the unit bearing's Ca
+UNIT_MEAN_DIAMETER_RATIO = 2.5  # [-] of the screw's nominal diameter
+
+
+def rotating_nut_params(p: dict, nut) -> dict:
+    """The driven rotating-nut unit's parameters (SI), one part or arrays: ``nut_rotating`` 1.0 for a unit (the
+    nut row's ``rotating`` flag), else 0.0 with neutral finite values (so one formula evaluates a mix of rows on
+    floats, arrays and CasADi without NaN).  Where the unit's vendor prints no figure the estimates above stand
+    in: max speed = the screw's DN limit / d (THK A-697, H-BS 3.7.6: the balls run at the nut's speed relative to
+    the screw, the same on a turning nut); the bearing's rigidity, preload and starting torque
+    (:func:`axisopt.physics.bearings.support_starting_torque_envelope`).  Needs ``p``'s screw and nut values."""
+    col = _optional
+    flag = _listed_or(col(nut, "rotating"), 0.0)
+    r = np.where(flag == 1.0, 1.0, 0.0)
+    r = r if np.ndim(r) else float(r)
+    on = r == 1.0
+    ca = np.where(on, _listed_or(col(nut, "unit_bearing_dynamic_load"), 1.0), 1.0)
+    c0 = np.where(on, _listed_or(col(nut, "unit_bearing_static_load"), 1.0), 1.0)
+    preload = UNIT_PRELOAD_FRACTION * ca
+    dm = UNIT_MEAN_DIAMETER_RATIO * p["nominal_diameter"]
+    q = {
+        "nut_rotating": r,
+        "unit_inertia": np.where(on, _listed_or(col(nut, "unit_inertia"), 0.0), 0.0),
+        "unit_max_speed": np.where(on, _listed_or(col(nut, "unit_max_speed"), p["dn_limit"] / p["nominal_diameter"]),
+                                   1.0),
+        "unit_bearing_dynamic_load": ca, "unit_bearing_static_load": c0, "unit_bearing_preload": preload,
+        "unit_bearing_stiffness": np.where(on, _listed_or(col(nut, "unit_bearing_rigidity"),
+                                                          UNIT_RIGIDITY_PER_RATING * ca), 1.0),
+        "unit_bearing_torque": np.where(on, _listed_or(col(nut, "unit_starting_torque"),
+                                                       support_starting_torque_envelope(preload, dm)), 0.0),
+    }
+    return {k: (v if np.ndim(v) else float(v)) for k, v in q.items()}
 
 
 def one_design(p: dict, i: int = 0) -> dict:
@@ -261,6 +310,15 @@ def mount_compliances(axis, p) -> dict:
 def _getter(row, name):
     v = row[name]
     return float(v) if np.ndim(v) == 0 else np.asarray(v, dtype=float)
+
+
+def _optional(row, name):
+    """An optional column of one part or of arrays of parts; NaN (empty) where the table has no such column (a
+    table written before the column existed; a scalar, which broadcasts against arrays of parts)."""
+    try:
+        return _getter(row, name)
+    except KeyError:
+        return float("nan")
 
 
 def _arrangement_rows(row, i):

@@ -27,7 +27,8 @@ from .modes import axial_modes, damping, drive_train_modes
 
 # The outputs of the stiffness chain and the axial modes (``chain=False`` leaves them out).
 CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupling", "k_nut", "k_nut_unloaded",
-                           "c_bracket", "c_housing", "k_bearing", "k_drive", "k_total", "thermal_displacement",
+                           "c_bracket", "c_housing", "c_unit_bearing", "k_bearing", "k_drive", "k_total",
+                           "thermal_displacement",
                            "m_eff", "f_axial", "f_table", "f1", "k_tool", "c_rocking", "k_pitch", "k_yaw",
                            "f_pitch", "f_yaw", "kv", "thermal_growth"})
 

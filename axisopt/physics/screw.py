@@ -11,6 +11,7 @@ __all__ = [
     "series_stiffness", "parallel_stiffness", "screw_stiffness", "screw_stiffness_catalog",
     "screw_axial_rigidity", "two_path_stiffness", "screw_bearing_stiffness",
     "screw_torsional_stiffness", "torsion_axial_stiffness", "screw_rotary_inertia", "screw_mass", "lead_angle",
+    "SAG_FACTORS", "screw_sag",
 ]
 
 E_STEEL = 206e9  # [Pa] THK catalog A15-30 (2.06e5 N/mm^2)
@@ -195,3 +196,30 @@ def lead_angle(lead, nominal_diameter):
     lead : P_h [m];  nominal_diameter : d, ball centre diameter [m].  Returns beta [rad].
     """
     return mx.atan(lead / (mx.pi * nominal_diameter))
+
+
+# k of the largest deflection q L^4 / (k E I) of a uniform beam under its own weight, by end conditions: AISC Steel
+# Construction Manual, Table 3-23 "Shears, moments and deflections", case 1 (simple beam, 5/384), case 12 (fixed at
+# one end, supported at the other, 1/185), case 15 (fixed at both ends, 1/384) and case 22 (cantilever, 1/8); the
+# same figures as Roark's Formulas for Stress and Strain, Table 8.1 case 2 with the load over the whole span.
+SAG_FACTORS = MappingProxyType({"fixed-free": 8.0, "fixed-supported": 185.0, "fixed-fixed": 384.0,
+                                "supported-supported": 384.0 / 5.0})
+
+
+def screw_sag(mass_per_length, root_diameter, span, mounting, youngs_modulus=E_STEEL, gravity=9.80665):
+    r"""Largest sag of a horizontal screw under its own weight, the shaft as a uniform beam between its ends.
+
+    .. math:: \delta = q L^4 / (k E I),\quad q = m' g,\quad I = \pi d_r^4 / 64
+
+    mass_per_length : m' [kg/m] (the catalog's shaft mass per metre);  root_diameter : d_r [m] (the root
+    section carries the bending: the threads are left out, the weight kept, so the sag is slightly high)
+    span : L, between the end supports [m];  mounting : key of :data:`SAG_FACTORS` (k: 8 fixed-free, 185
+    fixed-supported, 384 fixed-fixed, 384/5 supported-supported; AISC Table 3-23 cases 22, 12, 15, 1).
+    Returns delta [m].  A support that holds the shaft in a bearing set (the vendors' "fixed" end) is taken as
+    clamped, as the critical-speed factors take it (THK A-695); the nut, which also carries the shaft, is left
+    out, and so is the pretension of a fixed-fixed screw (a tensioned beam sags less): both leave the value
+    conservative (docs/assumptions.md).
+    """
+    k = choose(SAG_FACTORS, mounting, "mounting")
+    inertia = 3.141592653589793 * root_diameter**4 / 64.0
+    return mass_per_length * gravity * span**4 / (k * youngs_modulus * inertia)

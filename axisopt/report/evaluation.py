@@ -8,7 +8,7 @@ import textwrap
 
 import numpy as np
 
-from ..design import PRETENSION_RISE
+from ..design import PRETENSION_RISE, rotating_nut
 from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.limits import CHECK_TABLE
@@ -163,6 +163,7 @@ def evaluation_table(ev: Evaluation) -> str:
               "screw": "screw tension", "screw torsion": "screw torsion (lead)",
               "coupling": "coupling (lead)" if d.reduction is None else "coupling + reduction (lead)",
               "nut": f"nut at {v['max_axial_force'] / 1e3:.1f} kN",
+              "unit bearing": "rotating-nut unit bearing" + (" (estimate)" if _unit_rigidity_estimated(d) else ""),
               "nut bracket": "nut bracket (estimate)" if a.nut_bracket_stiffness is None else "nut bracket"}
     lines.append(f"axial stiffness chain at its softest point ({(ev.x[i_min] - a.start_offset) * 1e3:.0f} mm "
                  f"along the stroke)")
@@ -338,6 +339,12 @@ def drive_lines(ev: Evaluation) -> list:
     return lines
 
 
+def _unit_rigidity_estimated(design) -> bool:
+    """A rotating-nut unit whose row lists no bearing rigidity (the model's estimate stands in)."""
+    v = design.nut.get("unit_bearing_rigidity", math.nan) if hasattr(design.nut, "get") else math.nan
+    return not (isinstance(v, float) and math.isfinite(v))
+
+
 def _thermal_line(ev: Evaluation) -> str:
     a, v = ev.design.axis, ev.values
     u = np.asarray(v["thermal_displacement"])
@@ -347,8 +354,9 @@ def _thermal_line(ev: Evaluation) -> str:
     how = ("rise from the heat balance of the duty cycle" if used else
            "rise as given; the heat balance" if a.temperature_rise is not None else
            "rise: default (THK A-715), no duty cycle; the heat balance of continuous rapids")
-    film = ("Jungnickel rotating shaft over the cycle, with free convection" if a.heat_transfer is None
-            else "axis.heat_transfer")
+    film = ("axis.heat_transfer" if a.heat_transfer is not None else
+            "free convection: a standing screw under a rotating nut" if rotating_nut(ev.design.nut) else
+            "Jungnickel rotating shaft over the cycle, with free convection")
     rise = "" if used else f" would give +{float(v['heat_balance_rise']):.3g} K"
     balance = (f"{how}: friction power {float(v['friction_power']):.3g} W (nut and bearings at the cycle's mean "
                f"screw speed) through a lumped network (Jungnickel 2010): shaft film "

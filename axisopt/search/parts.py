@@ -46,7 +46,9 @@ def vendor_filled(t: PartTable, table: str) -> PartTable:
     keep = np.ones(len(t), dtype=bool)
     for c in COLUMNS[table]:
         if c.estimate and c.name in t:
-            keep &= np.isfinite(t.number(c.name))
+            # a column that applies only where a flag is set (a rotating-nut unit's) counts on those rows only
+            off = (t.number(c.applies) != 1.0) if c.applies and c.applies in t else False
+            keep &= np.isfinite(t.number(c.name)) | off
     return t.take(keep)
 
 

@@ -92,6 +92,8 @@ CASES = [
                                              nominal_diameter=0.04, root_diameter=0.034, span=1.0, ends=2.0,
                                              nut_conductance=1.9, end_conductance=2.0, housing_conductance=5.0)),
     case(screw.screw_rotary_inertia, kw=dict(diameter=0.025, length=1.0)),
+    *(case(screw.screw_sag, kw=dict(mass_per_length=8.2, root_diameter=0.0347, span=2.2), fixed=dict(mounting=m),
+           label=f"-{m}") for m in ("fixed-free", "fixed-supported", "fixed-fixed", "supported-supported")),
     case(screw.screw_mass, kw=dict(diameter=0.025, length=1.0)),
     case(screw.lead_angle, kw=dict(lead=0.01, nominal_diameter=0.032)),
     case(nut.nut_stiffness_catalog, kw=dict(k_catalog=8e8, preload=1500.0, dynamic_load_rating=30e3)),

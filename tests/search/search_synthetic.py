@@ -16,7 +16,9 @@ RPM = 2 * math.pi / 60
 
 
 def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_bearings=4, n_guides=4,
-                 carriage: bool = False) -> Catalog:
+                 carriage: bool = False, rotating: bool = False) -> Catalog:
+    """``rotating``: about half the nuts are driven rotating-nut units (THK DIR/BLR-like unit values; some leave
+    the max speed, bearing rigidity and starting torque to the model's estimates)."""
     screws, nuts, bearings, guides = [], [], [], []
     for i in range(n_screws):
         d = rng.choice([20, 25, 32, 40, 50]) * 1e-3
@@ -38,6 +40,15 @@ def make_catalog(rng: np.random.Generator, n_screws=3, nuts_per_screw=2, n_beari
                          "dynamic_load_rating": c, "static_load_rating": 2 * c, "contact_angle": math.radians(45),
                          "axial_play": 0.0 if double else 2e-5,
                          "mass": rng.uniform(0.5, 4), "price": rng.uniform(200, 900)})
+            if rotating and rng.random() < 0.5:
+                cb = rng.uniform(8e3, 60e3)
+                nuts[-1].update({
+                    "rotating": 1, "unit_inertia": rng.uniform(0.5, 30) * 1e-4,
+                    "unit_max_speed": rng.uniform(1500, 4000) * RPM if rng.random() < 0.5 else math.nan,
+                    "unit_bearing_dynamic_load": cb, "unit_bearing_static_load": rng.uniform(1.1, 1.5) * cb,
+                    "unit_bearing_rigidity": rng.uniform(200, 1500) * 1e6 if rng.random() < 0.5 else math.nan,
+                    "unit_starting_torque": rng.uniform(0.1, 0.8) if rng.random() < 0.5 else math.nan,
+                    "price": nuts[-1]["price"] + rng.uniform(200, 500)})
     for i in range(n_bearings):
         bore = rng.choice([12, 15, 17, 20, 25, 30]) * 1e-3
         bearings.append({"id": f"B{i}", "vendor": "V", "series": "synthetic", "arrangement": "DB", "rows": 2,

@@ -52,6 +52,32 @@ def test_default_equals_exhaustive_randomized(seed, mode):
 
 
 @pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("mode", ["stiffness", "frequency"])
+def test_default_equals_exhaustive_rotating_nut(seed, mode):
+    """Catalogs where about half the nuts are driven rotating-nut units (no whirl, the unit's inertia, bearing,
+    drag and speed; only on a fixed-fixed screw) and some parts use the unit estimates: default == exhaustive,
+    and no proposed design puts a unit on another mounting."""
+    rng = np.random.default_rng(300 + seed)
+    cat = make_catalog(rng, n_screws=4, nuts_per_screw=3, n_bearings=6, n_guides=5, rotating=True)
+    if seed % 2:
+        cat = add_drives(cat, rng)
+    limits = {"max_cost": float(rng.uniform(2500, 5000)), "max_drag_torque": float(rng.uniform(0.6, 2.0))}
+    if seed % 3 == 1:
+        limits["max_screw_sag"] = float(rng.uniform(5e-6, 5e-5))
+    p = make_problem(cat, mode=mode, limits=limits, backlash=5e-5 if seed % 2 else None,
+                     mountings=("fixed-free", "fixed-supported", "fixed-fixed"))
+    d = solve(p, "default", top=3, sensitivities=False)
+    e = solve(p, "exhaustive", top=3, sensitivities=False)
+    assert_same_answer(d, e)
+    rot = {str(i) for i, r in cat.nuts["rotating"].items() if r == 1}
+    for c in ([d.best] if d.best is not None else []) + list(d.runners_up):
+        assert c.nut not in rot or c.mounting == "fixed-fixed"
+    if d.best is not None:
+        assert d.certificate.proven and d.certificate.gap == 0.0
+        assert [c.combination for c in d.runners_up] == [c.combination for c in e.runners_up]
+
+
+@pytest.mark.parametrize("seed", range(6))
 @pytest.mark.parametrize("mode", ["tool_stiffness", "frequency"])
 def test_default_equals_exhaustive_carriage(seed, mode):
     """The carriage's checks (guide and nut static safety, guide life under the cutting loads), the tool-stiffness
