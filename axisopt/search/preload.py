@@ -118,7 +118,7 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
     low = [c for c in constraints if c.direction != 0 and c.lower_type]
     cvx = [c for c in constraints if c.convex]
     indep = [c for c in constraints if c.direction == 0]
-    for mounting, sel, n, b, _g, p, x in space.by_mounting(idx):
+    for mounting, sel, n, b, g, p, x in space.by_mounting(idx):
         k = len(sel)
         x1 = x[-1:]
         lo = space.preload_lo[n][:, None]
@@ -133,9 +133,18 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
         need_bis = ok & ok_up_lo & ~ok_up_hi
         if need_bis.any():
             j = np.nonzero(need_bis)[0]
+            upc = [c for c in up if not c.profile]
+            # the threshold of limits the drive does not change is the mechanical combination's: searched once
+            # per (nut, bearing, guide) and shared by its drives (guide-and-drive index g = guide * D + drive)
+            inv = np.arange(len(j))
+            if space.n_drives > 1 and not any(c.key in DRIVE_KEYS for c in upc):
+                mech = (n[j] * space.shape[2] + b[j]) * (space.shape[3] // space.n_drives) + g[j] // space.n_drives
+                _, first, inv = np.unique(mech, return_index=True, return_inverse=True)
+                j_all, j = j, j[first]
+            else:
+                j_all = j
             P = search_points(len(j))
             pr = repeat_rows(subset(p, j, k), len(j), P - 1)
-            upc = [c for c in up if not c.profile]
 
             # only the sub-assemblies these limits read (the chain, the drive block, the regenerated energy)
             parts = dict(drive_block=any(c.key in DRIVE_KEYS for c in upc),
@@ -144,7 +153,7 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
             def good(pre, pr=pr, upc=upc, x1=x1, mounting=mounting, parts=parts):
                 return ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1), **parts), pre.size)
 
-            a[j] = kary_threshold(good, a[j], bb[j], P)
+            a[j_all] = kary_threshold(good, a[j], bb[j], P)[inv]
         pstar = np.where(ok_up_hi, hi[:, 0], a)
         ok &= ok_up_lo
         for c in cvx:  # lower the preload into each motor-torque interval (drag and life stay met)
