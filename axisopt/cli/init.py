@@ -1,4 +1,4 @@
-"""``axisopt init design|problem|study [--machine vmc|lathe|gantry|vertical] [--out FILE] [--force]``: a
+"""``axisopt init design|problem|study [--machine vmc|lathe|gantry|vertical|boring|laser] [--out FILE] [--force]``: a
 commented YAML template for a named machine type that loads, solves or evaluates as it is written.
 
 The templates say what each value means and in which unit, and in particular where the process (cutting)
@@ -18,7 +18,7 @@ from ..errors import InputError
 from .common import EXIT_OK
 
 KINDS = ("design", "problem", "study")
-MACHINES = ("vmc", "lathe", "gantry", "vertical")
+MACHINES = ("vmc", "lathe", "gantry", "vertical", "boring", "laser")
 
 _FORCE_NOTE = """\
   # Where the process (cutting) force goes -- two places, forces in N or kN:
@@ -281,6 +281,117 @@ continuous:
 """,
         sweep=("limits.max_cost", "[5000 EUR, 6000 EUR, 8000 EUR]", "budgets"),
     ),
+    "boring": dict(
+        title="horizontal boring-mill table, long heavy X axis",
+        name="boring-table",
+        description="Boring-mill table: 2 t table and workpiece, 3 m stroke, 15 m/min, 15 kN feed force.",
+        axis="""\
+  stroke: 3000 mm             # nut travel (required)
+  moving_mass: 2000 kg        # table and the heaviest workpiece (required)
+  mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
+  orientation: horizontal
+  max_speed: 15 m/min         # rapid traverse (required)
+  mean_speed: 5 m/min         # for the life (default: half of max_speed)
+  acceleration: 1 m/s^2       # of the moves (default 0)
+{force}
+  axial_load: 15 kN           # largest process force: roughing with a long boring bar
+  mean_axial_load: 5 kN       # mean process force, for the life
+  normal_load: 10 kN          # cut onto the rails; our assumption
+  cross_load: 6 kN            # cut across the rails; our assumption
+  tool_height: 700 mm         # cutting point above the guide mounting plane
+  tool_offset: 300 mm         # cutting point across the rails from the carriage centre
+  cg_height: 300 mm           # table and workpiece's centre of gravity above the guide plane
+  duty_cycle:                 # the motor is sized on this cycle
+    - {{move: 1000 mm}}                                  # rapid approach
+    - {{move: 1500 mm, speed: 0.5 m/min, force: 12 kN}}  # boring pass against 12 kN
+    - {{move: -2500 mm}}                                 # rapid return
+    - {{dwell: 20 s}}                                    # measuring, tool change
+  required_life: 20000 h      # nut, bearing, guide life needed (default 20000 h)
+  guide_blocks: 6             # three blocks per rail under a long table
+  rails: 2
+  table_length: 1600 mm       # rail length = stroke + table_length
+  table_width: 1250 mm
+  block_spacing: 1200 mm      # outer block to outer block along a rail
+  rail_spacing: 1000 mm
+""",
+        problem="""\
+objective: stiffness          # maximise the lowest axial stiffness over the stroke
+limits:
+  min_life: 20000 h
+  max_backlash: 10 um         # a gearbox may be chosen: its backlash at the table
+  margins:                    # vendor checks: available / needed at least this (default 1)
+    critical_speed: 1.2       # on top of the vendors' own 0.8: a 3 m screw whirls
+catalog:                      # parts the search may choose (axisopt parts)
+  mountings: [fixed-supported, fixed-fixed]  # tries each
+  nut_types: [double]         # preloaded double nuts: no backlash
+  drive: yes                  # motor, coupling and a planetary gearbox (or none) are chosen too
+continuous:
+  nut_preload: {min: 200 N, max: 40 kN}
+""",
+        parts="""\
+  screw: HIWIN-G-100x20-b9p525
+  nut: HIWIN-R100-20T4-FDI
+  bearing: NSK-80TAC03AM-DFF-M
+  guide: HIWIN-HG30-ZA
+  motor: SGM7A-50A
+  coupling: SFU-140SS-1000N
+  reduction: BK-TP010-MF-7    # Beckhoff planetary 7:1 (axisopt parts reductions)
+  nut_preload: 12500 N
+""",
+        sweep=("axis.moving_mass", "[1500 kg, 2000 kg, 2500 kg]", "workpiece masses"),
+    ),
+    "laser": dict(
+        title="high-dynamics laser-cutting axis (1.5 g, jerk-limited)",
+        name="laser-y",
+        description="Laser-cutting Y axis: 100 kg carriage and head, 1 m stroke, 80 m/min, 1.5 g, no cutting force.",
+        axis="""\
+  stroke: 1000 mm             # nut travel (required)
+  moving_mass: 100 kg         # carriage with the cutting head and its Z (required)
+  mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
+  orientation: horizontal
+  max_speed: 80 m/min         # rapid traverse (required)
+  mean_speed: 10 m/min        # for the life (default: half of max_speed)
+  acceleration: 15 m/s^2      # 1.5 g
+  jerk: 300 m/s^3             # jerk-limited (S-curve) moves
+{force}
+  axial_load: 200 N           # no cut: gas jet and cable chain; our assumption
+  mean_axial_load: 100 N
+  normal_load: 0 N            # no cutting force on the guides
+  cross_load: 0 N
+  tool_height: 150 mm
+  duty_cycle:                 # the motor is sized on this cycle: a contour
+    - {{move: 800 mm}}                    # rapid
+    - {{move: -200 mm, speed: 20 m/min}}  # contouring
+    - {{move: 400 mm, speed: 10 m/min}}   # contouring
+    - {{move: -1000 mm}}                  # rapid return
+    - {{dwell: 0.5 s}}                    # pierce
+  required_life: 20000 h      # nut, bearing, guide life needed (default 20000 h)
+  table_length: 500 mm        # rail length = stroke + table_length
+""",
+        problem="""\
+objective: frequency          # maximise the lowest 1st natural frequency (contouring bandwidth)
+limits:
+  min_life: 20000 h
+  margins:                    # vendor checks: available / needed at least this (default 1)
+    critical_speed: 1.25
+catalog:                      # parts the search may choose (axisopt parts)
+  mountings: [fixed-supported, fixed-fixed]  # tries each
+  nut_types: [double]         # preloaded double nuts: no backlash
+  drive: yes                  # motor and coupling chosen too (direct: no backlash allowed)
+continuous:
+  nut_preload: {min: 200 N, max: 20 kN}
+""",
+        parts="""\
+  screw: HIWIN-G-40x40-b6p35
+  nut: HIWIN-R40-40K2-FDC
+  bearing: NSK-30TAC62B-DF-C9
+  guide: NBS-SNC15-P1
+  motor: SGM7G-20A
+  coupling: RINGFEDER-GWB-AKN-30
+  nut_preload: 1000 N
+""",
+        sweep=("axis.acceleration", "[10 m/s^2, 12 m/s^2, 15 m/s^2]", "accelerations"),
+    ),
 }
 
 _HEADER = """\
@@ -324,8 +435,8 @@ def register(sub) -> None:
     p = sub.add_parser("init", help="write a commented design, problem or study YAML for a machine type")
     p.add_argument("kind", choices=KINDS, help="the kind of YAML file")
     p.add_argument("--machine", choices=MACHINES, default="vmc",
-                   help="machine type: vmc (machining centre X), lathe (Z), gantry (long X), vertical (Z); "
-                        "default vmc")
+                   help="machine type: vmc (machining centre X), lathe (Z), gantry (long X), vertical (Z), boring "
+                        "(boring-mill table, 3 m, 2 t), laser (1.5 g contouring); default vmc")
     p.add_argument("--out", metavar="FILE",
                    help="file to write ('-' for stdout; default <machine>_<kind>.yaml in this directory)")
     p.add_argument("--force", action="store_true", help="overwrite an existing file")
