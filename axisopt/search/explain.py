@@ -76,12 +76,14 @@ class _Tally:
             self.best[c.name] = bv
 
 
-def _favourable(c, out_lo, out_hi, shape):
+def _favourable(c, out_lo, out_hi, shape, positions: bool = True):
     """The limit's value at the preload end that favours it (for a limit met on an interval of preloads,
     the better of the two ends), broadcast to ``shape``; only the end(s) it needs are read (``out_lo`` may
-    be None, or without the chain outputs, when no limit read there needs them)."""
+    be None, or without the chain outputs, when no limit read there needs them).  ``positions``: the outputs
+    have a trailing position axis (not the drive layout's, whose last axis is the drives)."""
     def val(o):
-        return np.broadcast_to(_last(c, c.value(o)), shape)
+        v = c.value(o)
+        return np.broadcast_to(_last(c, v) if positions else np.asarray(v, dtype=float), shape)
     end = c.favourable
     if end is End.INTERVAL:
         v_lo, v_hi = val(out_lo), val(out_hi)
@@ -379,10 +381,10 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
             score += weight(c) * miss
             tally.add(c, v, miss, fits_d)
         if drive:
-            pd = params(mechanics=False)
+            pd = space.params_drives(mounting, nut_idx, bearing_idx)  # the mechanics once per guide
             d_lo, d_hi = respond_drive(pd, lo, regen), respond_drive(pd, hi, regen)
             for c in drive:
-                v = _favourable(c, d_lo, d_hi, (nc, Bx, G)).reshape(shape_d)
+                v = _favourable(c, d_lo, d_hi, shape_d, positions=False)
                 miss = c.violation(v)
                 score += weight(c) * miss
                 tally.add(c, v, miss, fits_d)

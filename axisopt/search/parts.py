@@ -63,9 +63,14 @@ SPACES_KEPT = 4
 def build_space(problem: Problem) -> Space:
     """The filtered part tables of ``problem`` as a :class:`Space` (reused from an earlier problem on the same
     catalog object with the same restrictions, preload range, reduction ratio and coupling margin)."""
+    # everything the filters and the drive pruning read (_add_drives: the cycle's top speed, the speed margins and
+    # the lost-motion limit prune drives): a study case differing in any of them builds its own
     key = (id(problem.catalog), problem.restrictions, tuple(problem.mountings), problem.preload_min,
            problem.preload_max, float(problem.axis.reduction_ratio),
-           float(problem.margin_map.get("coupling_torque", 1.0)))
+           float(problem.margin_map.get("coupling_torque", 1.0)),
+           max([ph.speed for ph in problem.axis.phases] + [0.0]),
+           tuple(float(problem.margin_map.get(k, 1.0)) for k in ("motor_speed", "reduction_speed")),
+           float(problem.limit_map.get("max_backlash", np.inf)))
     hit = _SPACES.get(key)
     if hit is None or hit[0] is not problem.catalog:
         sp = _build_space(problem)

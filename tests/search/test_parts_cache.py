@@ -43,3 +43,24 @@ def test_other_restrictions_build_anew():
     assert b.n_arr is not a.n_arr or not np.array_equal(a.preload_hi, b.preload_hi)
     _same(b, S._build_space(q))
     assert b.preload_hi.max() <= q.preload_max
+
+
+def test_what_prunes_drives_builds_anew(tmp_path):
+    """The drive pruning reads the cycle's top speed, the speed margins and the lost-motion limit (parts._add_drives):
+    a case differing in one of them must not take a space pruned for another (issue 39: a laser case's space,
+    built without reductions under max_backlash 0, was reused for a lathe case that admits 10 um)."""
+    src = ROOT / "problems" / "lathe_z_problem.yaml"
+    p = load_problem(src)  # admits 10 um: gearboxes are formed
+    tight = p.with_limit("max_backlash", 1e-9)  # no gearbox's backlash fits
+    fast_file = tmp_path / "fast.yaml"  # 45 m/min: fewer (motor, gearbox) pairs fast enough
+    fast_file.write_text(src.read_text(encoding="utf-8").replace("max_speed: 30 m/min", "max_speed: 45 m/min"),
+                         encoding="utf-8")
+    fast = load_problem(fast_file)
+    assert fast.catalog is p.catalog
+    a = S.build_space(p)
+    for q in (tight, fast):
+        b = S.build_space(q)
+        assert len(b.drives) < len(a.drives)
+        _same(b, S._build_space(q))
+    assert any(ri is not None for _, _, ri in a.drives)
+    assert all(ri is None for _, _, ri in S.build_space(tight).drives)

@@ -168,6 +168,21 @@ class Space:
             self._cache[key] = ps
         return ps
 
+    def params_drives(self, mounting: str, nut_sel, bearings=None, dtype=float) -> dict:
+        """Parameters over (nuts, bearings, guides, drives) for the drive block alone: the mechanical guides on the
+        third axis, the searched drives on the fourth (the drive block reads no position), so that the mechanics
+        the drive takes (moving mass, drag, guide friction) are evaluated once per guide and the drive block once
+        per drive; element (.., g, d) is guide-and-drive ``g * D + d``.  ``nut_sel`` and ``bearings`` as in
+        :meth:`params_structured`."""
+        D = self.n_drives
+        s, nt, b = self.nut_bearing_arrays(nut_sel, dtype, bearings)
+        g = shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
+
+        def drives(d):
+            return None if d is None else shaped({k: v[:D] for k, v in d.items()}, (1, 1, 1, -1), dtype)
+        return as_dtype(model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, drives(self.m_arr),
+                                          drives(self.c_arr), drives(self.r_arr)), dtype)
+
     def nut_bearing_arrays(self, nut_sel, dtype=float, bearings=None) -> tuple:
         """Screw and nut columns of the nuts ``nut_sel`` on the first axis, every bearing on the second (or,
         with ``bearings`` aligned with the nuts, those bearings on the first axis too)."""
