@@ -290,8 +290,7 @@ continuous:
   moving_mass: 2000 kg        # table and the heaviest workpiece (required)
   mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
   orientation: horizontal
-  max_speed: 15 m/min         # rapid traverse (required)
-  mean_speed: 5 m/min         # for the life (default: half of max_speed)
+  max_speed: 15 m/min         # rapid traverse (required); the life's mean speed: the duty cycle's
   acceleration: 1 m/s^2       # of the moves (default 0)
 {force}
   axial_load: 15 kN           # largest process force: roughing with a long boring bar
@@ -336,7 +335,7 @@ continuous:
   motor: SGM7A-50A
   coupling: SFU-140SS-1000N
   reduction: BK-TP010-MF-7    # Beckhoff planetary 7:1 (axisopt parts reductions)
-  nut_preload: 12500 N
+  nut_preload: 13500 N
 """,
         sweep=("axis.moving_mass", "[1500 kg, 2000 kg, 2500 kg]", "workpiece masses"),
     ),
