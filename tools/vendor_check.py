@@ -21,7 +21,9 @@ Linear Guideway G99TE20-1808; NSK-SP NSK super-precision bearings; IBC TI-I-5010
 
 Estimates of this checker (no vendor figure; printed in the notes): the screw axis at the rail mounting plane
 under the table centre (the block loads); the cross and normal cutting components scale with a phase's feed
-force; screw length for the inertia = bearing span (journals not known); trapezoidal moves (jerk ignored).
+force; screw length for the inertia = bearing span (journals not known); trapezoidal moves (jerk ignored); with a
+gearbox, the feed thrust (axis.axial_load) and the mean thrust (axis.mean_axial_load) as steady output torques
+beside the cycle's (T2B, T2N rows).
 """
 
 from __future__ import annotations

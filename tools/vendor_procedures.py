@@ -523,7 +523,8 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
         # one the larger of the cycle's RMS and the mean thrust's (T-GC A-725/A-733, eta 0.9)
         steady = [(f + friction + weight) * lead / (2 * math.pi * ETA_THK) + drag for f in (ax.axial_load,
                                                                                            ax.mean_load)]
-        rows += reduction_rows(red, motor, max(out_peak, steady[0]), max(math.sqrt(out_sq / tt), steady[1]), ax.v_max / lead * 60 * i,
+        rows += reduction_rows(red, motor, max(out_peak, steady[0]), max(math.sqrt(out_sq / tt), steady[1]),
+                               ax.v_max / lead * 60 * i,
                                ev.get("checks", {}))
     return rows
 
@@ -575,8 +576,8 @@ def nut_rotation_speed_limit(d0, dn_limit):
 
 def unit_bearing_life_h(ca, phases, fw, nm):
     """L10 life of a rotating-nut unit's support bearing [h]: L = (Ca / (fw F_m))^3 x 10^6 rev (ball bearing; T-GC
-    B-720 sends the DIR/BLR service life to A-704), F_m the cubic mean of the axial load by revolutions (A-730), L_h = L / (60 N_m), N_m the mean
-    nut speed [rpm].  ca [N] (the DIR/BLR table's support-bearing Ca, B-721)."""
+    B-720 sends the DIR/BLR service life to A-704), F_m the cubic mean of the axial load by revolutions (A-730),
+    L_h = L / (60 N_m), N_m the mean nut speed [rpm].  ca [N] (the DIR/BLR table's support-bearing Ca, B-721)."""
     dist = sum(p.dist for p in phases if p.sign)
     fm = (sum(abs(p.load) ** 3 * p.dist for p in phases if p.sign) / dist) ** (1 / 3)
     return (ca / (fw * fm)) ** 3 * 1e6 / (60 * nm)
