@@ -293,6 +293,11 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     same_basis=g_ax))
     # 7 axial rigidity of the feed system (THK A-707 eq. 32)
     k_v, src, knote = vp.feed_rigidity(ax, screw, nut, brg, preload, f_max)
+    if rotating:  # the unit's bearing is in series with the nut (A-707's K_B of the nut's own support)
+        k_u = nut.get("unit_bearing_rigidity")
+        k_v = 1 / (1 / k_v + 1e6 / k_u) if k_u else k_v
+        knote += (f"; unit bearing {k_u / 1e6:.0f} N/um in series" if k_u else
+                  "; unit bearing rigidity not printed (THK A-707: ask the maker): left out")
     chain = ev.get("chain_at_minimum_N_per_um", {})
     k_them = None
     if chain:
