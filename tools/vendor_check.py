@@ -21,7 +21,9 @@ Linear Guideway G99TE20-1808; NSK-SP NSK super-precision bearings; IBC TI-I-5010
 
 Estimates of this checker (no vendor figure; printed in the notes): the screw axis at the rail mounting plane
 under the table centre (the block loads); the cross and normal cutting components scale with a phase's feed
-force; screw length for the inertia = bearing span (journals not known); trapezoidal moves (jerk ignored).
+force; screw length for the inertia = bearing span (journals not known); trapezoidal moves (jerk ignored); with a
+gearbox, the feed thrust (axis.axial_load) and the mean thrust (axis.mean_axial_load) as steady output torques
+beside the cycle's (T2B, T2N rows).
 """
 
 from __future__ import annotations
@@ -167,6 +169,10 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     brg, guide = catalog_row("bearings", parts["bearing"]), catalog_row("guides", parts["guide"])
     motor = catalog_row("motors", parts["motor"]) if "motor" in parts else None
     coupling = catalog_row("couplings", parts["coupling"]) if "coupling" in parts else None
+    red = catalog_row("reductions", parts["reduction"]) if parts.get("reduction") else None
+    if red:  # the part's row takes the place of the axis keys (ratio, efficiency, input inertia)
+        ax.ratio, ax.red_eff, ax.red_inertia = red["ratio"], red["efficiency"], red["inertia"]
+    rotating = str(nut.get("rotating") or "").strip() in ("1", "1.0")
     preload = quantity(parts["nut_preload"]) if "nut_preload" in parts else ev["nut_preload_N"]
     chk = ev["checks"]
     rows: list[Row] = []
@@ -194,12 +200,19 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     x_far = (ax.start + ax.stroke) * 1e3
     span = ax.span * 1e3
 
-    # 1 permissible rotational speed (critical speed, mounting factor) and DN
-    n1, src = vp.critical_speed(svendor, d1, span, ax.mounting)
-    rows.append(Row("critical speed", "rpm", n1, n_max, n1 / n_max, theirs("critical_speed"),
-                    their_margin("critical_speed"), "", src, f"l_b = bearing span {span:.0f} mm"))
-    dn_lim, dn, src, note = vp.dn_check(svendor, d0, d1, screw["ball_diameter"] * 1e3, n_max, screw["dn_limit"])
-    rows.append(Row("DN value", "mm.rpm", dn_lim, dn, dn_lim / dn, theirs("dn"), their_margin("dn"), "", src, note))
+    # 1 permissible rotational speed (critical speed, mounting factor) and DN; a rotating nut: the nut's DN only
+    if rotating:
+        n_nut, dp = vp.nut_rotation_speed_limit(d0, screw["dn_limit"])
+        rows.append(Row("rotating nut permissible speed", "rpm", n_nut, n_max, n_nut / n_max, theirs("unit_speed"),
+                        their_margin("unit_speed"), "", "T-GC A-697 DN <= 70 000 on the nut's rotation; "
+                        "A-772..A-774: standing screw, no critical speed", f"ball centre diameter {dp:.2f} mm"))
+    else:
+        n1, src = vp.critical_speed(svendor, d1, span, ax.mounting)
+        rows.append(Row("critical speed", "rpm", n1, n_max, n1 / n_max, theirs("critical_speed"),
+                        their_margin("critical_speed"), "", src, f"l_b = bearing span {span:.0f} mm"))
+        dn_lim, dn, src, note = vp.dn_check(svendor, d0, d1, screw["ball_diameter"] * 1e3, n_max, screw["dn_limit"])
+        rows.append(Row("DN value", "mm.rpm", dn_lim, dn, dn_lim / dn, theirs("dn"), their_margin("dn"), "", src,
+                        note))
     # 2 buckling and 3 permissible tensile/compressive load (147 MPa)
     la = max(x_far, span - ax.start * 1e3) if ff else x_far
     p1, src = vp.buckling_load(svendor, d1, la)
@@ -239,13 +252,23 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     their_margin("nut_life"), "", src, f"{fw_src}; mean speed {nm:.0f} rpm"
                     + ("" if cycle_given else "; loads: axis.mean_axial_load + friction each way")
                     + f"; at axisopt's fw {fw_ax}: {life_ax:,.0f} h", same_basis=life_ax))
+    if rotating:  # the unit's own support bearing carries the nut's load and turns with it (T-GC A-776, B-721)
+        ca_u = nut["unit_bearing_dynamic_load"]
+        u_life = vp.unit_bearing_life_h(ca_u, phases, fw_nut, nm)
+        u_ax = vp.unit_bearing_life_h(ca_u, phases, fw_ax, nm)
+        rows.append(Row("unit support bearing L10 life", "h", u_life, ax.life_h, u_life / ax.life_h,
+                        theirs("unit_bearing_life"), their_margin("unit_bearing_life"), "",
+                        "T-GC A-730: L = (Ca/(fw Fm))^3 x 10^6 rev, Ca of the DIR/BLR table (B-721)",
+                        f"Ca {ca_u / 1e3:.1f} kN; {fw_src}; mean nut speed {nm:.0f} rpm; at axisopt's fw {fw_ax}: "
+                        f"{u_ax:,.0f} h", same_basis=u_ax))
     # 5 support bearings: life per direction by the rows carrying it, static safety
     n_sets = 2 if ff else 1
     blife, src, bnote = vp.bearing_life_h(brg, phases, pre_vendor, nm)
     b_ax = vp.bearing_life_h(brg, phases, pre_vendor, nm, fw_ax)[0]
     bnote += f"; with axisopt's fw {fw_ax} on the loads: {b_ax:,.0f} h"
-    rows.append(Row("support bearing L10 life", "h", blife, ax.life_h, blife / ax.life_h, theirs("bearing_life"),
-                    their_margin("bearing_life"), "", src, bnote))
+    if not rotating:  # a standing screw's end bearings do not turn: no rolling life (T-GC A-772..A-774)
+        rows.append(Row("support bearing L10 life", "h", blife, ax.life_h, blife / ax.life_h,
+                        theirs("bearing_life"), their_margin("bearing_life"), "", src, bnote))
     perm, src, generic = vp.bearing_permissible_load(brg)
     load_b = f_max + pre_vendor
     # generic: a plain C0a without its vendor's factor, where each side picks a general S0
@@ -270,6 +293,11 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     same_basis=g_ax))
     # 7 axial rigidity of the feed system (THK A-707 eq. 32)
     k_v, src, knote = vp.feed_rigidity(ax, screw, nut, brg, preload, f_max)
+    if rotating:  # the unit's bearing is in series with the nut (A-707's K_B of the nut's own support)
+        k_u = nut.get("unit_bearing_rigidity")
+        k_v = 1 / (1 / k_v + 1e6 / k_u) if k_u else k_v
+        knote += (f"; unit bearing {k_u / 1e6:.0f} N/um in series" if k_u else
+                  "; unit bearing rigidity not printed (THK A-707: ask the maker): left out")
     chain = ev.get("chain_at_minimum_N_per_um", {})
     k_them = None
     if chain:
@@ -280,16 +308,23 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     # 8 drive: inertia ratio, RMS torque, holding torque
     if motor is not None:
         rows += vp.drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, phases, preload,
-                              n_sets, ev, cycle_given)
+                              n_sets, ev, cycle_given, red, nut["unit_inertia"] if rotating else None)
+    # 9 own-weight sag of a horizontal screw (beam formula, INFO: no vendor limit)
+    if not (ax.vertical or ax.wall) and screw.get("mass_per_length"):
+        sag = vp.screw_sag(screw["mass_per_length"], screw["root_diameter"], ax.span, ax.mounting)
+        rows.append(Row("screw sag (own weight)", "um", sag * 1e6, None, None, None, None, "INFO",
+                        "AISC Table 3-23: delta = q L^4 / (k E I), I = pi d1^4/64, k by the mounting",
+                        f"q = {screw['mass_per_length'] * G:.1f} N/m over the span {span:.0f} mm; no vendor limit"))
     for r in rows:
         if r.kind == "CONV":  # set where the row is made: a convention of this design's parts
             continue
         same = not any(r.check.startswith(c) for c in vp.CONVENTIONS)
         if r.same_basis is not None:
             r.kind = compare(r.same_basis, r.axisopt, same)
-            continue
-        r.kind = compare(r.margin if r.margin is not None and r.axis_margin is not None else r.vendor,
-                         r.axis_margin if r.margin is not None and r.axis_margin is not None else r.axisopt, same)
+        else:
+            r.kind = compare(r.margin if r.margin is not None and r.axis_margin is not None else r.vendor,
+                             r.axis_margin if r.margin is not None and r.axis_margin is not None else r.axisopt,
+                             same)
         if r.kind == "CONV":
             r.note = (r.note + "; " if r.note else "") + "convention: " + vp.CONVENTIONS[
                 next(c for c in vp.CONVENTIONS if r.check.startswith(c))]

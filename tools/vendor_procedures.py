@@ -33,6 +33,11 @@ CONVENTIONS = {
     "RMS torque": "THK's friction f is constant (A-725); axisopt adds the guides' viscous friction at speed, and "
     "moves jerk-limited where the design gives a jerk (this checker: trapezoidal)",
     "holding torque": "THK A-745 credits the guide friction and divides by eta 0.9; axisopt: m g P_h / 2 pi",
+    "unit support bearing L10 life": "THK gives the rotating-nut unit's bearing no procedure of its own (B-720 "
+    "points to A-704): its printed Ca on the cycle's cubic-mean load, no preload; axisopt: a preloaded DB pair with "
+    "an estimated 5 % Ca preload (the 2^(3/2) law), several times shorter",
+    "reduction T2N": "the mean thrust's output torque with THK's constant guide friction (A-725: mu (m g + normal) "
+    "+ seals); axisopt's guide friction at the mean speed is its own (larger: its life_loads)",
     "guide static safety": "the largest block load with full feed, cross and normal forces and the peak "
     "acceleration together (this checker's load case); axisopt's load cases are its own",
 }
@@ -44,7 +49,9 @@ UNITS = {
     "m/s^2": 1.0, "m/s2": 1.0, "m/s^3": 1.0, "N/um": 1e6, "N/m": 1.0, "K": 1.0, "deg": 1.0, "rpm": 1 / 60,
     "N.m": 1.0, "Nm": 1.0, "kg.cm^2": 1e-4, "kg.m^2": 1.0, "mm.rpm": 1.0, "km": 1e3, "EUR": 1.0, "W": 1.0,
     "N.m/rad": 1.0, "N.s/m": 1.0, "kg/m": 1.0, "EUR/m": 1.0, "mm^2/s": 1e-6, "W/(m^2.K)": 1.0,
+    "%": 0.01, "arcmin": math.pi / 10800, "N.m/arcmin": 10800 / math.pi,
 }
+BECKHOFF_COMMISSIONING = "https://infosys.beckhoff.com/content/1033/ag2300_ba/8712251019.html"
 
 
 def quantity(value) -> float:
@@ -452,13 +459,16 @@ def holding_torque(weight, friction, lead):
 
 
 def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, phases, preload, n_sets, ev,
-               cycle_given):
+               cycle_given, red=None, unit_inertia=None):
     """Inertia ratio (T-GC A-718 with J = m D^2 / 8 of the nominal diameter, FANUC/HIWIN F 3.20), RMS torque
     (T-GC A-734/A-746: T_rms = sqrt(sum T_i^2 t_i / sum t_i) <= rated) and the holding torque at a stop on a
-    vertical axis (T-GC A-745: T_s = (m g - f) P_h / (2 pi eta))."""
+    vertical axis (T-GC A-745: T_s = (m g - f) P_h / (2 pi eta)).  A reduction row ``red`` (catalogs/
+    reductions.csv) gives i, eta_G and its input inertia (T-GC A-717..A-720 with A = 1/i: J_load / i^2 + J_G on
+    the motor, T_motor = T_out / (i eta_G)) and its rows (:func:`reduction_rows`); a rotating-nut unit's printed
+    inertia ``unit_inertia`` [kg.m^2] (T-GC B-721) takes the place of the standing screw's."""
     lead = screw["lead"]                             # [m]
     d0, d1 = screw["nominal_diameter"], screw["root_diameter"]
-    j_screw = screw_inertia(d0, ax.span)
+    j_screw = screw_inertia(d0, ax.span) if unit_inertia is None else unit_inertia
     j_table = moving * (lead / (2 * math.pi)) ** 2
     j_coup = coupling["inertia"] if coupling else 0.29e-3
     i = ax.ratio
@@ -469,22 +479,31 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
     drive = ev.get("drive", {})
     rows = [Row("inertia ratio load/rotor", "-", ratio, ax.max_inertia_ratio, ax.max_inertia_ratio / ratio,
                 drive.get("inertia_ratio"), None, "", "T-GC A-718 (J = m D^2/8, D outer), H-BS F 3.20",
-                f"screw {j_screw * 1e4:.1f} kg.cm^2 (nominal {d0 * 1e3:.0f} mm over the span {ax.span * 1e3:.0f} mm,"
-                f" journals not known); limit axis.max_inertia_ratio")]
-    drag = preload_torque(preload, lead * 1e3, (d1 + screw["ball_diameter"]) * 1e3) if nut["type"] == "double" \
-        else 0.0
+                (f"screw {j_screw * 1e4:.1f} kg.cm^2 (nominal {d0 * 1e3:.0f} mm over the span {ax.span * 1e3:.0f} mm,"
+                 " journals not known)" if unit_inertia is None else
+                 f"rotating-nut unit {j_screw * 1e4:.1f} kg.cm^2 (THK's printed J, T-GC B-721), screw standing")
+                + (f"; reduction i {i:g}, its input J {ax.red_inertia * 1e4:.2f} kg.cm^2 (A-718, A = 1/i)"
+                   if red else "") + "; limit axis.max_inertia_ratio")]
+    # ball centre diameter: d1 + ball diameter, or, where the row prints no ball, THK's D from its DN rule (A-697)
+    d_pcd = (d1 + screw["ball_diameter"]) * 1e3 if screw.get("ball_diameter") else \
+        nut_rotation_speed_limit(d0 * 1e3, screw["dn_limit"])[1]
+    drag = preload_torque(preload, lead * 1e3, d_pcd) if nut["type"] == "double" else 0.0
     drag += n_sets * (brg.get("starting_torque") or 0.0)
     hold = holding_torque(weight, friction if ax.vertical else 0.0, lead) / (i * ax.red_eff)
     drv = phases if cycle_given else default_drive_phases(ax, moving, friction, weight)
-    sq, tt = 0.0, 0.0
+    sq, tt, out_sq, out_peak = 0.0, 0.0, 0.0, 0.0
     for p in drv:
         if p.sign == 0:
             t = hold
+            t_out = hold * i * ax.red_eff
         else:
             f_ext = p.load - moving * p.acc                # friction, process force, weight
             t_screw = f_ext * lead / (2 * math.pi * ETA_THK) + p.sign * drag
             alpha = p.acc * 2 * math.pi / lead * i         # motor angular acceleration
             t = t_screw / (i * ax.red_eff) + (j_load + j_rotor) * alpha
+            t_out = t_screw + (j_table + j_screw + j_coup) * alpha / i   # at the reduction's output (A-720)
+        out_sq += t_out * t_out * p.time
+        out_peak = max(out_peak, abs(t_out))
         sq += t * t * p.time
         tt += p.time
     trms = math.sqrt(sq / tt)
@@ -498,4 +517,78 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
         rows.append(Row("holding torque at a stop", "N.m", hold, cap, (cap / hold) if cap and hold else None,
                         drive.get("holding_torque_Nm"), None, "", "T-GC A-745: T_s = (m g - f) P_h / (2 pi eta)",
                         "f = guide friction credited; limit: " + ("brake torque" if brake else "rated torque")))
+    if red:
+        # the feed thrust at feed speed (axis.axial_load) and the mean thrust (axis.mean_axial_load) as steady
+        # output torques: the largest output torque is the larger of the cycle's and the thrust's, the continuous
+        # one the larger of the cycle's RMS and the mean thrust's (T-GC A-725/A-733, eta 0.9)
+        steady = [(f + friction + weight) * lead / (2 * math.pi * ETA_THK) + drag for f in (ax.axial_load,
+                                                                                           ax.mean_load)]
+        rows += reduction_rows(red, motor, max(out_peak, steady[0]), max(math.sqrt(out_sq / tt), steady[1]),
+                               ax.v_max / lead * 60 * i,
+                               ev.get("checks", {}))
     return rows
+
+
+def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
+    """A planetary gearbox by Beckhoff's data (AG2400 'Mechanical data'): T2B, 'maximum acceleration torque,
+    maximum 1000 cycles per hour' >= the cycle's largest output torque; T2N, 'nominal output torque' >= the
+    cycle's RMS output torque; n1Max >= the largest input (motor) speed.  Torques [N.m], speed [rpm].  And
+    Beckhoff's commissioning rule (AG2300 manual, 'Commissioning', :data:`BECKHOFF_COMMISSIONING`) as an INFO row:
+    :func:`gearbox_current_limits`."""
+    t2b, t2n, n1 = red["accel_torque"], red["rated_torque"], red["max_input_speed"] * 60
+    src = f"Beckhoff AG2400 mechanical data ({red['id']})"
+    def theirs(name):
+        c = checks.get(name) or {}
+        return c.get("available"), c.get("margin")
+
+    peak, rated = gearbox_current_limits(motor["peak_torque"], motor["rated_torque"], red["ratio"], t2b, t2n)
+    return [Row("reduction T2B / peak output torque", "N.m", t2b, t_out_peak, t2b / t_out_peak,
+                *theirs("reduction_accel_torque"), "", src + ": T2B, max. 1000 cycles/h",
+                "the larger of the cycle's (screw torque, eta 0.9, + load-side J x alpha, trapezoidal moves) and "
+                "the feed thrust's (axis.axial_load + friction)"),
+            Row("reduction T2N / RMS output torque", "N.m", t2n, t_out_rms, t2n / t_out_rms,
+                *theirs("reduction_rated_torque"), "", src + ": T2N nominal output torque",
+                "the larger of the drive cycle's RMS (the duty cycle, else the rapid over the stroke and back) and "
+                "the mean thrust's (axis.mean_axial_load + friction)"),
+            Row("reduction n1Max / motor speed", "rpm", n1, n_motor, n1 / n_motor,
+                *theirs("reduction_speed"), "", src + ": n1Max max. input speed"),
+            Row("reduction commissioning current limits", "%", 100 * peak, None, None, None, None, "INFO",
+                "Beckhoff AG2300 'Commissioning': limit peak (rated) current to T2B / (M_pmax i) (T2N / (M i)); "
+                + BECKHOFF_COMMISSIONING,
+                f"peak current limit {100 * peak:.0f} %, rated current limit {100 * rated:.0f} % "
+                "(rated torque in place of Beckhoff's M0)")]
+
+
+def gearbox_current_limits(m_peak, m_rated, ratio, t2b, t2n):
+    """Beckhoff's current limits for a motor on a gearbox (AG2300 manual, 'Commissioning'): the motor torque times i
+    must not exceed the gearbox's, else the current is limited to the fraction T2B / (M_pmax i) (peak) and
+    T2N / (M0 i) (rated), at most 1.  Torques [N.m].  Returns (peak, rated) fractions."""
+    return min(1.0, t2b / (m_peak * ratio)), min(1.0, t2n / (m_rated * ratio))
+
+
+def nut_rotation_speed_limit(d0, dn_limit):
+    """Permissible speed of a rotating nut [rpm] by THK's DN rule (T-GC A-697: D n <= 70 000, D the ball centre
+    diameter [mm]) applied to the nut's rotation; the screw row stores 70 000 d0 / D, so D = 70 000 d0 / dn_limit.
+    A standing screw has no critical speed (T-GC A-772..A-774: the nut turns, the shaft does not)."""
+    dp = 70000.0 * d0 / dn_limit
+    return 70000.0 / dp, dp
+
+
+def unit_bearing_life_h(ca, phases, fw, nm):
+    """L10 life of a rotating-nut unit's support bearing [h]: L = (Ca / (fw F_m))^3 x 10^6 rev (ball bearing; T-GC
+    B-720 sends the DIR/BLR service life to A-704), F_m the cubic mean of the axial load by revolutions (A-730),
+    L_h = L / (60 N_m), N_m the mean nut speed [rpm].  ca [N] (the DIR/BLR table's support-bearing Ca, B-721)."""
+    dist = sum(p.dist for p in phases if p.sign)
+    fm = (sum(abs(p.load) ** 3 * p.dist for p in phases if p.sign) / dist) ** (1 / 3)
+    return (ca / (fw * fm)) ** 3 * 1e6 / (60 * nm)
+
+
+SAG_K = {"fixed-free": 8.0, "fixed-supported": 185.0, "fixed-fixed": 384.0, "supported-supported": 384.0 / 5}
+
+
+def screw_sag(mass_per_length, d1, span, mounting):
+    """Own-weight sag of a horizontal screw [m]: delta = q L^4 / (k E I), q = m' g, I = pi d1^4 / 64 (root diameter),
+    k 8 cantilever, 185 propped cantilever, 384 both ends fixed, 384/5 simply supported (AISC Steel Construction
+    Manual Table 3-23 cases 22, 12, 15, 1; E 206 GPa, T-GC A-694).  mass_per_length [kg/m]; d1, span [m]."""
+    i_sec = math.pi * d1**4 / 64
+    return mass_per_length * G * span**4 / (SAG_K[mounting] * E_THK * 1e6 * i_sec)
