@@ -100,6 +100,7 @@ class Axis:
     axial_load: float
     mean_load: float
     mean_speed: float
+    mean_speed_given: bool
     life_h: float
     load_factor: float | None
     blocks: int
@@ -140,6 +141,7 @@ def read_axis(design: dict) -> Axis:
         vertical=a.get("orientation") == "vertical", wall=a.get("orientation") == "wall",
         v_max=q("max_speed"), a_max=q("acceleration", 0.0), axial_load=axial,
         mean_load=q("mean_axial_load", axial / 3.0), mean_speed=q("mean_speed", q("max_speed") / 2.0),
+        mean_speed_given="mean_speed" in a,
         life_h=q("required_life", 20000 * 3600.0) / 3600.0,
         load_factor=float(a["load_factor"]) if "load_factor" in a else None,
         blocks=int(a.get("guide_blocks", 4)), normal=q("normal_load", 0.0), cross=q("cross_load", 0.0),
@@ -243,7 +245,10 @@ def check_design(design: dict, ev: dict) -> list[Row]:
         ceiling = 0.1 * nut["dynamic_load_rating"]
         rows.append(Row("nut preload ceiling", "kN", ceiling / 1e3, preload / 1e3, ceiling / preload,
                         theirs("nut_preload"), their_margin("nut_preload"), "", "T-GC A-687, H-BS F 3.5: <= 10 % Ca"))
-    nm = vp.mean_speed_rpm(phases, lead) if cycle_given else ax.mean_speed * 60 / (lead * 1e-3)
+    # the life's mean speed: the designer's stated one (the machine's hours include time off the cycle), else the
+    # cycle's (THK A-705: the phases' speeds and times), else half the rapid speed (docs/files.md's default)
+    use_cycle = cycle_given and not ax.mean_speed_given
+    nm = vp.mean_speed_rpm(phases, lead) if use_cycle else ax.mean_speed * 60 / (lead * 1e-3)
     fw_nut, fw_src = vp.nut_load_factor(nut["vendor"], ax.v_max, ax.load_factor)
     life, src = vp.nut_life_h(nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_nut, nm)
     fw_ax = float(ev["load_factor"])  # the fw axisopt's life checks read (its output), for the same-basis rows
@@ -284,7 +289,7 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     guide["static_load_rating"] / blocks / fs_g, ev.get("guide_static_safety"), None, "", src,
                     f"largest block load {blocks / 1e3:.2f} kN (axisopt "
                     f"{ev.get('guide_max_block_load_N', float('nan')) / 1e3:.2f} kN)"))
-    travel_speed = vp.mean_travel_speed(phases) if cycle_given else ax.mean_speed
+    travel_speed = vp.mean_travel_speed(phases) if use_cycle else ax.mean_speed
     need_km = ax.life_h * 3600 * travel_speed / 1e3
     g_km, src, gnote = vp.guide_life_km(guide, ax, phases, cycle_given, moving)
     g_ax = vp.guide_life_km(guide, ax, phases, cycle_given, moving, fw_ax)[0]
