@@ -52,8 +52,9 @@ def test_what_prunes_drives_builds_anew(tmp_path):
     src = ROOT / "problems" / "lathe_z_problem.yaml"
     p = load_problem(src)  # admits 10 um: gearboxes are formed
     tight = p.with_limit("max_backlash", 1e-9)  # no gearbox's backlash fits
-    fast_file = tmp_path / "fast.yaml"  # 45 m/min: fewer (motor, gearbox) pairs fast enough
-    fast_file.write_text(src.read_text(encoding="utf-8").replace("max_speed: 30 m/min", "max_speed: 45 m/min"),
+    assert "max_speed: 40 m/min" in src.read_text(encoding="utf-8")
+    fast_file = tmp_path / "fast.yaml"  # 60 m/min: fewer (motor, gearbox) pairs fast enough
+    fast_file.write_text(src.read_text(encoding="utf-8").replace("max_speed: 40 m/min", "max_speed: 60 m/min"),
                          encoding="utf-8")
     fast = load_problem(fast_file)
     assert fast.catalog is p.catalog
