@@ -115,6 +115,17 @@ def test_default_equals_exhaustive_with_reductions(seed):
     _reduction_case(seed)
 
 
+def _random_duty(seed: int) -> tuple:
+    """The randomized drive tests' duty cycle: none for seeds 0 and 1, else a jerk-limited rapid, a feed against
+    2.5 kN, a dwell and a return."""
+    from axisopt.physics.motion import Segment
+
+    return () if seed < 2 else (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+                                Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=2500.0),
+                                Segment("dwell", duration=1.0),
+                                Segment("move", distance=-0.2, speed=0.3, acceleration=4.0))
+
+
 _REDUCTION_RESULTS: dict = {}
 
 
@@ -123,17 +134,13 @@ def _reduction_case(seed):
         return _REDUCTION_RESULTS[seed]
     from dataclasses import replace
 
-    from axisopt.physics.motion import Segment
 
     rng = np.random.default_rng(300 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
     make_double(cat)
     cat = add_reductions(add_drives(cat, rng, n_motors=3, n_couplings=2), rng, n=3)
     vertical = seed % 2 == 1
-    duty = () if seed < 2 else (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
-                                Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=2500.0),
-                                Segment("dwell", duration=1.0),
-                                Segment("move", distance=-0.2, speed=0.3, acceleration=4.0))
+    duty = _random_duty(seed)
     limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
     if seed % 3 == 0:
         limits["min_frequency"] = float(rng.uniform(40, 120))
@@ -173,17 +180,13 @@ def test_default_equals_exhaustive_with_drive(seed):
     drag helps when lowering) and with a duty cycle of cutting moves and dwells."""
     from dataclasses import replace
 
-    from axisopt.physics.motion import Segment
 
     rng = np.random.default_rng(100 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
     make_double(cat)
     cat = add_drives(cat, rng, n_motors=4, n_couplings=2)
     vertical = seed % 2 == 1
-    duty = () if seed < 2 else (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
-                                Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=2500.0),
-                                Segment("dwell", duration=1.0),
-                                Segment("move", distance=-0.2, speed=0.3, acceleration=4.0))
+    duty = _random_duty(seed)
     limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
     mass = rng.uniform(60, 150) if vertical else rng.uniform(150, 400)
     p = make_problem(cat, limits=limits, moving_mass=float(mass), axial_load=1500.0 if vertical else 3000.0,
