@@ -181,9 +181,14 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float) -> So
 
         why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive")
         why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
+        message = "no catalog combination meets every limit"
+        if space.reductions_by_backlash:
+            lim = problem.limit_map.get("max_backlash", 0.0)
+            message += (f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each one's "
+                        f"backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) even on the shortest "
+                        "lead; admit some lost motion to let the search choose one")
         return SolveResult(INFEASIBLE, method, problem.name, spec.label, spec.unit, None, [], Certificate.of(stats),
-                           time.perf_counter() - t0, message="no catalog combination meets every limit",
-                           infeasibility=why)
+                           time.perf_counter() - t0, message=message, infeasibility=why)
     cands, nlps, failed_ranks, notes = polish(space, ex, constraints, spec, top)
     cert = Certificate.of(stats, nlps, len(failed_ranks), notes)
     status = OPTIMAL if cert.proven else TIME_LIMIT

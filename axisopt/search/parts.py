@@ -257,6 +257,7 @@ def _add_drives(sp: Space, problem: Problem) -> None:
         lost = reductions.number("backlash") * lead_min / (2.0 * np.pi)
         keep = lost <= backlash_max * (1.0 + 1e-9) + 1e-15
         if not r.required("reduction") or keep.any():
+            sp.reductions_by_backlash = int(np.count_nonzero(~keep))
             reductions = reductions.take(keep)
         choices = ([] if r.required("reduction") else [None]) + list(range(len(reductions)))
         ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])

@@ -118,3 +118,15 @@ def test_solve_uses_the_block_explanation_and_agrees_with_exhaustive():
     e = solve(p, "exhaustive", sensitivities=False)
     assert d.status == e.status == "infeasible"
     assert d.infeasibility.to_dict() == e.infeasibility.to_dict()
+
+
+def test_infeasible_says_when_the_lost_motion_limit_left_the_reductions_out():
+    """A problem that admits no lost motion (max_backlash 0, the default) forms no gearbox: an infeasible answer says
+    so, with the count, so that a designer knows the limit, not the catalog, ruled them out; admitting lost motion
+    forms them and the note goes."""
+    p = load_problem(Path(__file__).resolve().parents[2] / "problems" / "infeasible_drive_problem.yaml")
+    n = len(p.catalog.rows("reductions"))
+    r = solve(p, sensitivities=False)
+    assert r.best is None and f"{n} reductions (gearboxes, belts) were left out" in r.message
+    r2 = solve(p.with_limit("max_backlash", 1e-3), sensitivities=False)  # 1 mm: every gearbox is formed
+    assert "were left out" not in (r2.message or "")

@@ -100,6 +100,9 @@ class Space:
     # (motor, coupling) pairs never formed: a coupling another beats on every count, or one that cannot carry
     # the motor's peak torque (a limit of the pair alone)
     pairs_left_out: int = 0
+    # reductions never formed because their backlash, at the table through the shortest lead, exceeds the
+    # problem's max_backlash (an infeasible result says so: the limit, not the catalog, left them out)
+    reductions_by_backlash: int = 0
     # the numbering of the combinations (:mod:`.parts` sets them once the tables are final)
     n_drives: int = 1  # drive pairs D
     shape: tuple = ()  # (mountings, nuts, bearings, guides x drives)
