@@ -225,8 +225,11 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> li
         # the optimum meets the relaxed limit too: only designs that can reach it are searched (none: no gain)
         relaxed_problem = problem.with_limit(key, relaxed)
         loose = build_constraints(relaxed_problem)
-        # a limit that is also an axis value (min_life: the life the checks need) changes the part parameters
-        sp = space if relaxed_problem.axis == problem.axis else build_space(relaxed_problem)
+        # a limit that is also an axis value (min_life: the life the checks need) changes the part parameters, and
+        # a max_backlash that left reductions out (parts._add_drives) may admit them relaxed: either builds the
+        # relaxed problem's own space
+        rebuild = relaxed_problem.axis != problem.axis or (key == "max_backlash" and space.reductions_by_backlash)
+        sp = build_space(relaxed_problem) if rebuild else space
         ex, _stats = bound_order_search(sp, loose, spec, top=1, incumbent=best.objective)
         if np.isfinite(ex.objective).any():
             gain = polish(sp, ex, loose, spec, 1)[0][0].objective - best.objective

@@ -5,6 +5,7 @@ restrictions or preload range builds anew.  Reference: the uncached build."""
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from axisopt.problem import load_problem
 from axisopt.search import parts as S
@@ -65,3 +66,20 @@ def test_what_prunes_drives_builds_anew(tmp_path):
         _same(b, S._build_space(q))
     assert any(ri is not None for _, _, ri in a.drives)
     assert all(ri is None for _, _, ri in S.build_space(tight).drives)
+
+
+def test_relaxing_a_backlash_limit_that_left_reductions_out_builds_anew(monkeypatch):
+    """The sensitivity of max_backlash re-solves on the relaxed problem's own space when the limit left reductions
+    out (a relaxed limit may admit them; the space prunes on it), and on the same space when it left none out."""
+    from axisopt.search import front, solve
+
+    p = load_problem(ROOT / "problems" / "teaching_problem.yaml").with_limit("max_backlash", 1e-6)
+    built = []
+    real = S.build_space
+    monkeypatch.setattr(S, "build_space", lambda q: built.append(q.limit_map.get("max_backlash")) or real(q))
+    res = solve(p, sensitivities=False)
+    space = real(p)
+    assert res.best is not None and space.reductions_by_backlash > 0  # the 8-arcmin NPT rows left out at 1 um
+    built.clear()
+    front.limit_sensitivities(p, res, space=space)
+    assert pytest.approx(1.1e-6) in built  # the relaxed max_backlash built its own space
