@@ -45,15 +45,18 @@ from .loads import G, phase_moving_mass, unit
 NOT_APPLICABLE = 1e9  # margin of a check that does not apply (no motor, horizontal axis for the brake)
 
 
-def drive_inertias(p, moving_mass):
-    """(load inertia at the motor without the rotor, rotor inertia) [kg m^2].  A driven rotating nut
-    (``nut_rotating`` 1): the unit's rotating parts (THK prints them, T-GC B-721/B-723 "nut inertia") turn
-    instead of the screw."""
-    a = 1.0 / p["reduction_ratio"]
+def turning_inertia(p):
+    """Inertia of what the drive turns on the screw side [kg m^2]: the screw, or for a driven rotating nut
+    (``nut_rotating`` 1) the unit's rotating parts instead (THK prints them, T-GC B-721/B-723 "nut inertia")."""
     r = unit(p, "nut_rotating")
-    j_screw = (1.0 - r) * ps.screw_rotary_inertia(p["nominal_diameter"], p["span"]) \
-        + r * unit(p, "unit_inertia")
-    j_load = pd.reflected_inertia(moving_mass, p["lead"], j_screw, p["coupling_inertia"], a,
+    return (1.0 - r) * ps.screw_rotary_inertia(p["nominal_diameter"], p["span"]) + r * unit(p, "unit_inertia")
+
+
+def drive_inertias(p, moving_mass):
+    """(load inertia at the motor without the rotor, rotor inertia) [kg m^2] (:func:`turning_inertia` through the
+    reduction)."""
+    a = 1.0 / p["reduction_ratio"]
+    j_load = pd.reflected_inertia(moving_mass, p["lead"], turning_inertia(p), p["coupling_inertia"], a,
                                   p["reduction_inertia"])
     return j_load, p["rotor_inertia"]
 
@@ -76,18 +79,20 @@ def output_torques(p, moving_mass, drag, phases, hold_friction=0.0):
 
     .. math:: T_2 = (m (P_h/2\pi)^2 + J_S + J_{cpl}) \frac{2\pi}{P_h} a + s\,(T_f + \frac{F P_h}{2\pi\eta_s}) + T_g
 
+    (J_S: :func:`turning_inertia`, the screw or a rotating-nut unit's turning parts)
+
     p : parameters (lead, nominal_diameter, span, coupling_inertia, gravity_axial, table_mass);  moving_mass [kg];
     drag : friction torque at the screw T_f [N m];  phases : the duty cycle;  hold_friction : guide friction at
     standstill [N].  Returns (phase torques [(T_start, T_end)], steady thrust at the largest axial load, at the
     mean axial load) [N m].  What the motor torque is less the rotor's and the reduction's inertia and loss,
     referred to the output: what the gearbox's T2B and T2N rate (Beckhoff AG2400 Mechanical data)."""
-    j_screw = ps.screw_rotary_inertia(p["nominal_diameter"], p["span"])
+    j_turn = turning_inertia(p)
     by_mass = {}
     for ph in phases:
         if ph.moving_mass not in by_mass:
             m = phase_moving_mass(p, moving_mass, ph.moving_mass)
             by_mass[ph.moving_mass] = (
-                pd.reflected_inertia(m, p["lead"], j_screw, p["coupling_inertia"], 1.0),
+                pd.reflected_inertia(m, p["lead"], j_turn, p["coupling_inertia"], 1.0),
                 pd.force_torque(p["gravity_axial"] * m * G, p["lead"], SCREW_EFFICIENCY, 1.0))
     torques = pd.phase_torques(phases, [by_mass[ph.moving_mass][0] for ph in phases], p["lead"], drag,
                                [by_mass[ph.moving_mass][1] for ph in phases], SCREW_EFFICIENCY, 1.0, hold_friction)

@@ -123,3 +123,20 @@ def test_sag_only_on_a_horizontal_axis():
     h = evaluate(_design())
     v = evaluate(_design(orientation="vertical"))
     assert h["screw_sag"] > 0 and v["screw_sag"] == 0.0
+
+
+def test_a_reductions_output_torque_turns_the_unit_not_the_screw():
+    """A gearbox driving a rotating-nut unit accelerates the unit's turning parts (THK B-721 "nut inertia"), not the
+    standing screw: its output torque (T2B, T2N checks) takes the same inertia as the motor torque does."""
+    from axisopt.model.drive import output_torques
+
+    p = design_params(_design())
+    plain = dict(p, nut_rotating=0.0)
+    drag, a = 0.5, 2.0
+    rot_t = output_torques(p, 300.0, drag, p["duty"])[0]
+    plain_t = output_torques(plain, 300.0, drag, p["duty"])[0]
+    j_screw = screw_rotary_inertia(p["nominal_diameter"], p["span"])
+    lead = p["lead"]
+    accel = [i for i, ph in enumerate(p["duty"]) if ph.a0 == a and ph.direction > 0][0]
+    assert rot_t[accel][0] - plain_t[accel][0] == pytest.approx((20.6e-4 - j_screw) * 2 * math.pi / lead * a,
+                                                                rel=1e-9)
