@@ -130,11 +130,9 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     durations = [ph.duration for ph in phases]
     t_rms = pd.linear_rms_torque(torques, durations) if phases else 0.0 * friction
     # each distinct torque pair's largest |torque|, and the largest over the pairs that run at each phase speed
-    pair_peak: dict = {}
+    pair_peak = _pair_peaks(torques)
     at_speed: dict = {}
     for pair, ph in zip(torques, phases):
-        if id(pair) not in pair_peak:
-            pair_peak[id(pair)] = mx.fmax(mx.fabs(pair[0]), mx.fabs(pair[1]))
         at_speed.setdefault(ph.speed, {})[id(pair)] = pair_peak[id(pair)]
     t_peak_cycle = _largest(pair_peak.values()) if phases else 0.0 * friction
     # each phase's largest |torque| against the peak torque the motor gives at the phase's largest speed (the
@@ -178,7 +176,8 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     else:
         out_torques, out_thrust, out_thrust_mean = output_torques(p, moving_mass, drag, phases, hold_friction)
     # reported where a reduction is (0 without one, on every backend)
-    out_peak = mx.if_else(red, mx.fmax(_pair_peaks(out_torques), out_thrust) if phases else out_thrust, 0.0)
+    out_peak = mx.if_else(red, mx.fmax(_largest(_pair_peaks(out_torques).values()), out_thrust) if phases
+                          else out_thrust, 0.0)
     out_rms = mx.if_else(red, mx.fmax(pd.linear_rms_torque(out_torques, durations), out_thrust_mean)
                          if phases else out_thrust_mean, 0.0)
     screw_speed = 2.0 * math.pi * v_max / p["lead"]
@@ -230,9 +229,14 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     return out
 
 
-def _pair_peaks(torques):
-    """The largest |torque| over the ends of the (shared, :func:`axisopt.physics.drive.phase_torques`) pairs."""
-    return _largest({id(pair): mx.fmax(mx.fabs(pair[0]), mx.fabs(pair[1])) for pair in torques}.values())
+def _pair_peaks(torques) -> dict:
+    """{id of a torque pair: its largest |torque|}, once per distinct pair (phases share pairs,
+    :func:`axisopt.physics.drive.phase_torques`)."""
+    peaks: dict = {}
+    for pair in torques:
+        if id(pair) not in peaks:
+            peaks[id(pair)] = mx.fmax(mx.fabs(pair[0]), mx.fabs(pair[1]))
+    return peaks
 
 
 def _largest(values):

@@ -445,12 +445,6 @@ def drive_pair_params(space: Space, mounting: str, nut_sel) -> dict:
     """Parameters over (nuts ``nut_sel``, bearings, drive pairs, 1) with the first guide's columns: for the
     drive block (:func:`axisopt.model.drive.drive`), which takes the guide only through the moving mass
     and the drag torque passed to it (the explanation's interval bounds over the guides)."""
-    D = space.n_drives
     s, nt, b = space.nut_bearing_arrays(nut_sel, float)
     g = shaped({k: v[:1] for k, v in space.g_arr.items()}, (1, 1, 1, 1), float)
-    mo = None if space.m_arr is None else shaped({k: v[:D] for k, v in space.m_arr.items()}, (1, 1, -1, 1), float)
-    cp = None if space.c_arr is None else shaped({k: v[:D] for k, v in space.c_arr.items()}, (1, 1, -1, 1),
-                                                 float)
-    rd = None if space.r_arr is None else shaped({k: v[:D] for k, v in space.r_arr.items()}, (1, 1, -1, 1),
-                                                 float)
-    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, mo, cp, rd)
+    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, *space.drive_columns((1, 1, -1, 1)))

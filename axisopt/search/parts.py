@@ -18,6 +18,7 @@ import numpy as np
 from .. import model
 from ..catalog import COLUMNS, USER_STATUS
 from ..errors import InputError
+from ..model.chain import drive_torsional_stiffness
 from ..model.params import columns_read
 from ..parttable import PartTable
 from ..physics import nut as pnut
@@ -68,7 +69,7 @@ def build_space(problem: Problem) -> Space:
     key = (id(problem.catalog), problem.restrictions, tuple(problem.mountings), problem.preload_min,
            problem.preload_max, float(problem.axis.reduction_ratio),
            float(problem.margin_map.get("coupling_torque", 1.0)),
-           max([ph.speed for ph in problem.axis.phases] + [0.0]),
+           _top_speed(problem),
            tuple(float(problem.margin_map.get(k, 1.0)) for k in ("motor_speed", "reduction_speed")),
            float(problem.limit_map.get("max_backlash", np.inf)))
     hit = _SPACES.get(key)
@@ -83,6 +84,11 @@ def build_space(problem: Problem) -> Space:
     sp.coupling_k = np.unique(drive_stiffnesses(sp)) if sp.m_arr is not None else \
         np.array([float(problem.axis.coupling_stiffness)])
     return sp
+
+
+def _top_speed(problem: Problem) -> float:
+    """The duty cycle's largest table speed [m/s] (0 without a move): what the drives' speed pruning reads."""
+    return max([ph.speed for ph in problem.axis.phases] + [0.0])
 
 
 def _build_space(problem: Problem) -> Space:
@@ -174,7 +180,7 @@ def drive_stiffnesses(sp: Space) -> np.ndarray:
         return k
     with np.errstate(divide="ignore", invalid="ignore"):
         c_red = np.nan_to_num(1.0 / sp.r_arr["torsional_stiffness"][:D], nan=0.0)
-    return 1.0 / (1.0 / k + c_red)
+    return drive_torsional_stiffness({"coupling_stiffness": k, "reduction_compliance": c_red})
 
 
 def _filtered(t, r, slot, series=None, vendors=None):
@@ -236,19 +242,6 @@ def _add_drives(sp: Space, problem: Problem) -> None:
             reductions = reductions.take(reductions.isin("status", tuple(r.status)))
     else:
         reductions = reductions.take(np.zeros(len(reductions), dtype=bool))
-    # the drive's reduction: none (the axis's values; left out when the problem requires reduction parts) or a row
-    choices = ([] if r.required("reduction") else [None]) + list(range(len(reductions)))
-    ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])
-              for ri in choices]
-    need = problem.margin_map.get("coupling_torque", 1.0)
-    # the motor speed the cycle asks is smallest on the longest lead of the space (model.drive: 2 pi v / P_h x
-    # ratio); a (motor, reduction) that fails the motor-speed or reduction-speed check even there fails it on
-    # every screw, and is never formed (a check disabled by a margin of 0 prunes nothing)
-    v_max = max([ph.speed for ph in problem.axis.phases] + [0.0])
-    lead_max = float(np.max(sp.s_arr["lead"])) if len(sp.s_arr["lead"]) else np.inf
-    speed_need = {k: problem.margin_map.get(k, 1.0) for k in ("motor_speed", "reduction_speed")}
-    red_speed = reductions.number("max_input_speed") if len(reductions) else np.zeros(0)
-
     # a reduction's backlash is lost motion at the table (model.drive.lost_motion), least on the shortest lead: a
     # reduction that exceeds the problem's max_backlash even there is never formed
     backlash_max = problem.limit_map.get("max_backlash", np.inf)
@@ -259,10 +252,18 @@ def _add_drives(sp: Space, problem: Problem) -> None:
         if not r.required("reduction") or keep.any():
             sp.reductions_by_backlash = int(np.count_nonzero(~keep))
             reductions = reductions.take(keep)
-        choices = ([] if r.required("reduction") else [None]) + list(range(len(reductions)))
-        ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])
-                  for ri in choices]
-        red_speed = reductions.number("max_input_speed")
+    # the drive's reduction: none (the axis's values; left out when the problem requires reduction parts) or a row
+    choices = ([] if r.required("reduction") else [None]) + list(range(len(reductions)))
+    ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])
+              for ri in choices]
+    need = problem.margin_map.get("coupling_torque", 1.0)
+    # the motor speed the cycle asks is smallest on the longest lead of the space (model.drive: 2 pi v / P_h x
+    # ratio); a (motor, reduction) that fails the motor-speed or reduction-speed check even there fails it on
+    # every screw, and is never formed (a check disabled by a margin of 0 prunes nothing)
+    v_max = _top_speed(problem)
+    lead_max = float(np.max(sp.s_arr["lead"])) if len(sp.s_arr["lead"]) else np.inf
+    speed_need = {k: problem.margin_map.get(k, 1.0) for k in ("motor_speed", "reduction_speed")}
+    red_speed = reductions.number("max_input_speed") if len(reductions) else np.zeros(0)
 
     def too_fast(mi, ri, ratio):
         n_min = 2.0 * np.pi * v_max / lead_max * ratio

@@ -171,12 +171,9 @@ def drive_params(space: Space, mounting: str, n, b, g, dtype=float) -> dict:
     def pick(d, i):
         return {k: v[i][:, None, None] for k, v in d.items()}
 
-    def pairs(d):
-        return None if d is None else {k: v[:D][None, :, None] for k, v in d.items()}
-
     ps = model.axis_params(space.problem.axis_for(mounting), pick(space.s_arr, n), pick(space.n_arr, n),
-                           pick(space.b_arr, b), pick(space.g_arr, np.asarray(g) * D), pairs(space.m_arr),
-                           pairs(space.c_arr), pairs(space.r_arr))
+                           pick(space.b_arr, b), pick(space.g_arr, np.asarray(g) * D),
+                           *space.drive_columns((1, -1, 1)))
     return as_dtype(ps, dtype)
 
 

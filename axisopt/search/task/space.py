@@ -177,14 +177,18 @@ class Space:
         the drive takes (moving mass, drag, guide friction) are evaluated once per guide and the drive block once
         per drive; element (.., g, d) is guide-and-drive ``g * D + d``.  ``nut_sel`` and ``bearings`` as in
         :meth:`params_structured`."""
-        D = self.n_drives
         s, nt, b = self.nut_bearing_arrays(nut_sel, dtype, bearings)
-        g = shaped({k: v[::D] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
+        g = shaped({k: v[::self.n_drives] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
+        return as_dtype(model.axis_params(self.problem.axis_for(mounting), s, nt, b, g,
+                                          *self.drive_columns((1, 1, 1, -1), dtype)), dtype)
 
-        def drives(d):
-            return None if d is None else shaped({k: v[:D] for k, v in d.items()}, (1, 1, 1, -1), dtype)
-        return as_dtype(model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, drives(self.m_arr),
-                                          drives(self.c_arr), drives(self.r_arr)), dtype)
+    def drive_columns(self, shape, dtype=float) -> tuple:
+        """The searched drives' (motor, coupling, reduction) columns, each the D drives in order reshaped to
+        ``shape`` (one -1 axis), or None where that part is not searched: the drive arguments of
+        :func:`axisopt.model.axis_params` for a layout with the drives on one axis."""
+        D = self.n_drives
+        return tuple(None if d is None else shaped({k: v[:D] for k, v in d.items()}, shape, dtype)
+                     for d in (self.m_arr, self.c_arr, self.r_arr))
 
     def nut_bearing_arrays(self, nut_sel, dtype=float, bearings=None) -> tuple:
         """Screw and nut columns of the nuts ``nut_sel`` on the first axis, every bearing on the second (or,
