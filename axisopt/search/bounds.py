@@ -137,5 +137,10 @@ def screen_ok(c, out):
     v = c.value(out)
     if not c.profile:
         v = np.asarray(v)[..., 0] if np.ndim(v) else v
+    return relaxed_ok(c, v)
+
+
+def relaxed_ok(c, v):
+    """Whether the value ``v`` of limit ``c`` meets it, relaxed by :data:`SCREEN_RTOL`."""
     lim = c.limit * (1.0 + SCREEN_RTOL) if c.sense == "<=" else c.limit * (1.0 - SCREEN_RTOL)
     return np.asarray(v <= lim if c.sense == "<=" else v >= lim, dtype=bool)

@@ -24,15 +24,14 @@ from __future__ import annotations
 import numpy as np
 
 from .. import model
-from ..model.drive import drive as drive_block
 from ..model.limits import CHECK_RECORDS
 from .bounds import bound_positions, optimistic_guide_params
 from .candidates import candidate_values
-from .interval import Interval, ends
+from .drivebounds import drive_box, drive_hull
 from .parts import drive_stiffnesses
 from .result import Infeasibility
 from .task.constraints import End, as_vector, reads_regen
-from .task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive, shaped
+from .task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block
@@ -53,7 +52,6 @@ def weight(c) -> float:
     return 1.0
 
 
-DRIVE_BEARING_GROUPS = 8  # bearings taken together in the drive limits' interval bounds (module docstring)
 DRIVE_NUTS = 64  # nuts per evaluation of the drive limits' interval bounds (memory: nuts x bearings x guides)
 FIRST_BATCH = 4  # blocks scored in the first round of the best-first explanation; doubles each round (4: 16 %
 # faster than 32 over 16 vmc_random_1000 variants, fewer blocks scored before the bounds prune)
@@ -187,44 +185,12 @@ def _drive_bounds(space: Space, mounting: str, drive) -> dict:
 def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict:
     """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the drive block),
     per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at the limit's
-    favourable preload end.  The guide enters the drive block only through the moving mass, the drag torque and
-    the standstill guide friction (:func:`axisopt.model.drive_inputs`), so the drive block is evaluated once per
-    drive pair in interval arithmetic over the range of the three that the guides give (a box holding every
-    guide's triple).  The
-    bearings are taken in :data:`DRIVE_BEARING_GROUPS` groups of neighbouring drag torque, each bearing
-    parameter an interval over its group: a group's bound holds each of its bearings' blocks.  The best over
-    the drive pairs bounds the block.  Returns {limit name: (nuts, bearings)}."""
-    pm = space.params_structured(mounting, nut_slice, mechanics=True)  # (nuts, bearings, guides, 1)
-    pd = drive_pair_params(space, mounting, nut_slice)  # (nuts, bearings, drive pairs, 1)
-    B = space.shape[2]
-    full = (nut_slice.stop - nut_slice.start, B, space.shape[3] // max(space.n_drives, 1), 1)
-    torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[0, :, 0, 0]
-    order = np.argsort(torque, kind="stable")
-    starts = np.unique(np.linspace(0, B, min(B, DRIVE_BEARING_GROUPS) + 1).astype(int)[:-1])
-    group = np.empty(B, dtype=np.int64)
-    group[order] = np.searchsorted(starts, np.arange(B), side="right") - 1
-
-    def over_groups(lo, hi):
-        """(lo, hi) along the bearing axis reduced to each group's range."""
-        lo, hi = np.take(lo, order, axis=1), np.take(hi, order, axis=1)
-        return np.minimum.reduceat(lo, starts, axis=1), np.maximum.reduceat(hi, starts, axis=1)
-
-    def by_group(v):
-        a = np.asarray(v)
-        if B > 1 and a.ndim >= 2 and a.shape[1] == B and a.dtype.kind == "f":
-            return Interval(*over_groups(a, a))
-        return v
-    pg = {k: (v if k == "duty" else by_group(v)) for k, v in pd.items()}
-    opt = []  # per preload end: (lower ends, upper ends) of the drive outputs
-    for pre in (space.preload_lo[nut_slice], space.preload_hi[nut_slice]):
-        with np.errstate(divide="ignore"):
-            moving, drag, hold_friction = model.drive_inputs(pm, pre.reshape(-1, 1, 1, 1))
-            ranges = []
-            for v in (moving, drag["drag_torque"], hold_friction):
-                v = np.broadcast_to(v, full)
-                ranges.append(Interval(*over_groups(v.min(axis=2, keepdims=True), v.max(axis=2, keepdims=True))))
-            opt.append(ends(drive_block(pg, *ranges, regen=reads_regen(drive))))
-    shape = (full[0], len(starts), space.n_drives)
+    favourable preload end: the drive block in interval arithmetic over the block's guides at each preload end
+    (:func:`.drivebounds.drive_box`); the best over the drives bounds the block.  Returns {limit name: (nuts,
+    bearings)}."""
+    opt, group = drive_box(space, mounting, nut_slice, reads_regen(drive))
+    nc = nut_slice.stop - nut_slice.start
+    shape = (nc, int(group.max()) + 1, space.n_drives)
     out = {}
     for c in drive:
         i = 1 if c.sense == ">=" else 0  # the optimistic end of the interval
@@ -285,8 +251,9 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
         for mi in range(M):
             n_sel, b_sel = np.nonzero(want[mi])
             for s0 in range(0, len(n_sel), rows):
+                kth = np.partition(scores, n_closest - 1)[n_closest - 1] if len(scores) >= n_closest else np.inf
                 for idx, score in _score_nuts(space, constraints, tally, mi, n_sel[s0:s0 + rows],
-                                              b_sel[s0:s0 + rows]):
+                                              b_sel[s0:s0 + rows], kth=kth, n_closest=n_closest):
                     scores = np.concatenate([scores, np.sort(score)[:n_closest]])
                     yield idx, score
         done |= want
@@ -317,10 +284,14 @@ def miss_scores(space: Space, constraints, tally: _Tally | None = None):
             yield from _score_nuts(space, constraints, tally, mi, np.arange(n0, min(N, n0 + step)))
 
 
-def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bearing_idx=None):
+def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bearing_idx=None, kth=np.inf,
+                n_closest: int = CLOSEST):
     """(combination numbers, miss scores) of mounting ``mi`` over every guide and drive of either the nuts
     ``nut_idx`` times every bearing, or, with ``bearing_idx`` (aligned with ``nut_idx``), the (nut, bearing)
-    blocks of those pairs only.
+    blocks of those pairs only.  ``kth``: the score a design must not exceed to be among the ``n_closest``
+    (the best-first order's current n-th): a drive whose bounds (:func:`.drivebounds.drive_hull`) show that
+    it can neither score that low nor improve or meet a drive limit not met yet is not evaluated, and its
+    combinations score inf (:func:`_score_drives`).
 
     Structured like the screening: the limits the drive does not change are evaluated once per (screw, nut,
     bearing, guide) combination, the ones the coupling's stiffness changes (:data:`COUPLING_KEYS`) once per
@@ -381,13 +352,8 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
             score += weight(c) * miss
             tally.add(c, v, miss, fits_d)
         if drive:
-            pd = space.params_drives(mounting, nut_idx, bearing_idx)  # the mechanics once per guide
-            d_lo, d_hi = respond_drive(pd, lo, regen), respond_drive(pd, hi, regen)
-            for c in drive:
-                v = _favourable(c, d_lo, d_hi, shape_d, positions=False)
-                miss = c.violation(v)
-                score += weight(c) * miss
-                tally.add(c, v, miss, fits_d)
+            score = _score_drives(space, mounting, drive, tally, nut_idx, bearing_idx, score, fits_d, lo, hi,
+                                  regen, kth, n_closest)
     score = np.broadcast_to(score, shape_d if two_stage else shape).reshape(nc, Bx, G)
     if pairs:
         nn = np.repeat(nut_idx, G)
@@ -397,6 +363,72 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         n3, bb, gg = np.meshgrid(nut_idx, np.arange(B), np.arange(G), indexing="ij")
         nn, bb, gg = n3.ravel(), bb.ravel(), gg.ravel()
     yield np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), score.reshape(-1)
+
+
+FIRST_DRIVES = 32  # drives of lowest bound scored first when no n-th score is known yet (:func:`_score_drives`)
+
+
+def _score_drives(space: Space, mounting: str, drive, tally: _Tally, nut_idx, bearing_idx, score, fits, lo, hi,
+                  regen: bool, kth: float, n_closest: int):
+    """The miss scores of :func:`_score_nuts` with the drive limits added, (nuts, bearings, guides, drives):
+    ``score`` holds the mechanical part.  A drive is evaluated (at both preload ends, every guide) only if its
+    bounds over the block (:func:`.drivebounds.drive_hull`: every guide and preload) leave a score not above
+    ``kth``, or could meet, or improve the best value of, a drive limit no combination meets yet; the others
+    score inf.  Without a ``kth`` (fewer than ``n_closest`` scores known), the :data:`FIRST_DRIVES` drives of
+    lowest bound are scored first and give it."""
+    D = space.n_drives
+    out = np.full(score.shape, np.inf)
+    hull, group = drive_hull(space, mounting, nut_idx, drive, bearings=bearing_idx)
+    if any(c.name not in hull for c in drive):  # a limit the bounds do not cover (the cost): every drive
+        cols_of = [lambda _k: np.arange(D)]
+        low = None
+    else:
+        lb = 0.0
+        for c in drive:
+            lb = lb + weight(c) * c.violation(hull[c.name])
+        lb = np.broadcast_to(lb, hull[drive[0].name].shape)[:, group]  # (nuts, bearings, drives)
+        low = score.min(axis=2) + lb
+        cols_of = [lambda k: np.nonzero(_worth(drive, tally, hull, low, k))[0]]
+        if not np.isfinite(kth) and D > FIRST_DRIVES:
+            first = np.argsort(low.reshape(-1, D).min(axis=0), kind="stable")[:FIRST_DRIVES]
+            cols_of.insert(0, lambda _k: np.sort(first))
+    done = np.zeros(D, dtype=bool)
+    for pick in cols_of:
+        cols = pick(kth)
+        cols = cols[~done[cols]]
+        done[cols] = True
+        if not len(cols):
+            continue
+        sub = score.shape[:3] + (len(cols),)
+        pd = space.params_drives(mounting, nut_idx, bearing_idx, drives=cols)  # the mechanics once per guide
+        d_lo, d_hi = respond_drive(pd, lo, regen), respond_drive(pd, hi, regen)
+        part = score[..., cols]
+        for c in drive:
+            v = _favourable(c, d_lo, d_hi, sub, positions=False)
+            miss = c.violation(v)
+            part = part + weight(c) * miss
+            tally.add(c, v, miss, fits[..., cols])
+        out[..., cols] = part
+        if not np.isfinite(kth):  # the n-th score of this block bounds what the closest need
+            flat = out.ravel()
+            if np.isfinite(flat).sum() >= n_closest:
+                kth = float(np.partition(flat, n_closest - 1)[n_closest - 1])
+    return out
+
+
+def _worth(drive, tally: _Tally, hull: dict, low, kth: float):
+    """Per drive: whether its bounds (``hull``; ``low``: the least score it could reach per (nut, bearing))
+    leave a score not above ``kth``, or could meet, or improve the best value of, a limit not met yet."""
+    D = low.shape[-1]
+    need = (low <= kth + BOUND_RTOL * max(abs(kth), 1.0)).reshape(-1, D).any(axis=0) if np.isfinite(kth) else \
+        np.ones(D, dtype=bool)
+    for c in drive:
+        if not tally.met[c.name]:
+            v, b = hull[c.name], tally.best[c.name]
+            better = np.ones_like(v, dtype=bool) if b is None else \
+                (v > b - BOUND_RTOL * abs(b) if c.sense == ">=" else v < b + BOUND_RTOL * abs(b))
+            need |= (better | c.ok(v)).reshape(-1, D).any(axis=0)
+    return need
 
 
 def _last(c, v):
@@ -439,12 +471,3 @@ def _closest_designs(space: Space, constraints, objective, combos) -> list:
         cand.misses = misses
         out.append(cand)
     return out
-
-
-def drive_pair_params(space: Space, mounting: str, nut_sel) -> dict:
-    """Parameters over (nuts ``nut_sel``, bearings, drive pairs, 1) with the first guide's columns: for the
-    drive block (:func:`axisopt.model.drive.drive`), which takes the guide only through the moving mass
-    and the drag torque passed to it (the explanation's interval bounds over the guides)."""
-    s, nt, b = space.nut_bearing_arrays(nut_sel, float)
-    g = shaped({k: v[:1] for k, v in space.g_arr.items()}, (1, 1, 1, 1), float)
-    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, *space.drive_columns((1, 1, -1, 1)))

@@ -15,7 +15,8 @@ import time
 import numpy as np
 
 from .. import model
-from .bounds import SCREEN_RTOL, bound_positions, screen_ok
+from .bounds import SCREEN_RTOL, bound_positions, relaxed_ok, screen_ok
+from .drivebounds import DRIVE_BEARING_GROUPS, drive_hull
 from .task.constraints import Constraint, End, reads_regen
 from .task.objective import ObjectiveSpec
 from .task.space import DRIVE_KEYS, Space, as_dtype
@@ -52,6 +53,32 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     return idx, bound, time.perf_counter() - t0
 
 
+HULL_BLOCK = 400_000  # (nut, bearing group, drive) elements per interval evaluation of viable_drives
+
+
+def viable_drives(space: Space, mounting: str, nut_idx, constraints):
+    """Per (nut, bearing group, drive) of the nuts ``nut_idx`` (sorted), whether the drive could meet every
+    drive limit with some guide and preload of the block (:func:`.drivebounds.drive_hull`, relaxed as the
+    screening), and each bearing's group; None without a drive search or drive limits.  A necessary
+    condition: the drive stage then evaluates only the drives that pass it."""
+    cons = [c for c in constraints if c.key in DRIVE_KEYS]
+    if space.m_arr is None or not cons or not len(nut_idx):
+        return None
+    D = space.n_drives
+    rows = max(1, HULL_BLOCK // max(D * min(space.shape[2], DRIVE_BEARING_GROUPS), 1))
+    parts, group = [], None
+    for s0 in range(0, len(nut_idx), rows):
+        hull, group = drive_hull(space, mounting, nut_idx[s0:s0 + rows], cons)
+        ok = True
+        for c in cons:
+            if c.name in hull:
+                ok = ok & relaxed_ok(c, hull[c.name])
+        if ok is True:
+            return None
+        parts.append(ok)
+    return np.concatenate(parts), group
+
+
 def _mechanical(constraints):
     """The limits of the mechanical stage: every limit the drive does not change, and the lost motion (its value
     without a reduction, the nut's play, is the least over every drive: the drive stage tests it again)."""
@@ -73,6 +100,10 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
     Gm = G // D  # guide axis of the mechanical stage
     phases = space.problem.axis_for(mounting).phases
     nut_idx = np.arange(N)[nuts] if isinstance(nuts, slice) else np.asarray(nuts, dtype=np.int64)
+    viable = viable_drives(space, mounting, nut_idx, constraints)
+    if viable is not None:  # a (nut, bearing) block no drive could meet the drive's limits with: left out
+        block = viable[0].any(axis=-1)[:, viable[1]]
+        premask = block if premask is None else premask & block
     step = max(1, CACHE_BLOCK // max(B * Gm, 1))
     parts = []
     for s0 in range(0, len(nut_idx), step):
@@ -87,7 +118,11 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
         nn, bb, gg, bnd = (np.concatenate([q[i] for q in parts]) for i in range(4))
     else:
         nn, bb, gg, bnd = (np.zeros(0, np.int64),) * 3 + (np.zeros(0),)
-    nn, bb, gg, bnd = _screen_drives(space, mounting, constraints, phases, nn, bb, gg, bnd)
+    if viable is not None:  # each survivor's drives that pass the drive limits' bounds of its block
+        first = viable[0][np.searchsorted(nut_idx, nn), viable[1][bb]] if len(nn) else np.zeros((0, D), bool)
+    else:
+        first = None
+    nn, bb, gg, bnd = _screen_drives(space, mounting, constraints, phases, nn, bb, gg, bnd, first)
     return np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), bnd
 
 
@@ -126,30 +161,35 @@ def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, o
 DRIVE_CHUNK = 50_000  # (combination, drive) pairs per block of the drive stage (cache-sized float64 arrays)
 
 
-def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg, bound):
+def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg, bound, first=None):
     """The drive stage of :func:`screen`: each mechanical survivor (nut nn, bearing bb, guide gg) times
     every (motor, coupling) pair, checked on the limits the drive changes at the lowest and highest allowed
     preload (float64, same slack), structured over (survivor, drive pair) (:func:`drive_params`:
-    the mechanics once per survivor, the drive once per pair).  Returns the survivors' (nut, bearing,
-    guide-and-drive, bound)."""
+    the mechanics once per survivor, the drive once per pair).  ``first`` (survivors x drives, optional):
+    the pairs worth checking (:func:`viable_drives`); each block of survivors evaluates the drives any of
+    them keeps.  Returns the survivors' (nut, bearing, guide-and-drive, bound)."""
     D = space.n_drives
     cons = [c for c in constraints if c.key in DRIVE_KEYS]
     if not cons or len(nn) == 0:
         g_full = (gg[:, None] * D + np.arange(D)[None]).ravel()
         return np.repeat(nn, D), np.repeat(bb, D), g_full, np.repeat(bound, D)
     cvx = [c for c in cons if c.convex]
-    out_parts = []
+    out_parts = [(np.zeros(0, np.int64),) * 3 + (np.zeros(0),)]
+    if first is not None:  # survivors left no drive: none formed
+        keep = first.any(axis=1)
+        nn, bb, gg, bound, first = nn[keep], bb[keep], gg[keep], bound[keep], first[keep]
     rows = max(1, DRIVE_CHUNK // D)
     for s0 in range(0, len(nn), rows):
         n_, b_, g_, bd = nn[s0:s0 + rows], bb[s0:s0 + rows], gg[s0:s0 + rows], bound[s0:s0 + rows]
         K = len(n_)
-        p = drive_params(space, mounting, n_, b_, g_)
+        cols = np.arange(D) if first is None else np.nonzero(first[s0:s0 + rows].any(axis=0))[0]
+        p = drive_params(space, mounting, n_, b_, g_, drives=None if first is None else cols)
         lo, hi = space.preload_lo[n_][:, None, None], space.preload_hi[n_][:, None, None]
         with np.errstate(all="ignore"):
             regen = reads_regen(cons)
             out_lo = model.drive_response(p, lo, regen)
             out_hi = model.drive_response(p, hi, regen) if cvx or any(c.lower_type for c in cons) else None
-            ok = np.ones((K, D), dtype=bool)
+            ok = np.ones((K, len(cols)), dtype=bool) if first is None else first[s0:s0 + rows][:, cols].copy()
             for c in cons:
                 if c.convex:
                     ub = np.asarray(convex_margin_bound(c, out_lo, out_hi, phases))
@@ -158,14 +198,15 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
                 else:  # at the preload end that favours it (the regenerated power falls with the preload)
                     ok &= screen_ok(c, out_hi if c.favourable is End.HIGH else out_lo)
         k, d = np.nonzero(ok)
-        out_parts.append((n_[k], b_[k], g_[k] * D + d, bd[k]))
+        out_parts.append((n_[k], b_[k], g_[k] * D + cols[d], bd[k]))
     return tuple(np.concatenate([o[i] for o in out_parts]) for i in range(4))
 
 
-def drive_params(space: Space, mounting: str, n, b, g, dtype=float) -> dict:
+def drive_params(space: Space, mounting: str, n, b, g, dtype=float, drives=None) -> dict:
     """Parameters over (K mechanical combinations, D drive pairs, 1 position): screw, nut, bearing and guide
     columns of the combinations (nut ``n``, bearing ``b``, mechanical guide ``g``) shaped (K, 1, 1), the
-    searched (motor, coupling) pairs (1, D, 1); element (k, d) is guide-and-drive ``g[k] * D + d``."""
+    searched (motor, coupling) pairs (1, D, 1); element (k, d) is guide-and-drive ``g[k] * D + d``.
+    ``drives``: those drive numbers only, in that order, on the second axis."""
     D = space.n_drives
 
     def pick(d, i):
@@ -173,7 +214,7 @@ def drive_params(space: Space, mounting: str, n, b, g, dtype=float) -> dict:
 
     ps = model.axis_params(space.problem.axis_for(mounting), pick(space.s_arr, n), pick(space.n_arr, n),
                            pick(space.b_arr, b), pick(space.g_arr, np.asarray(g) * D),
-                           *space.drive_columns((1, -1, 1)))
+                           *space.drive_columns((1, -1, 1), drives=drives))
     return as_dtype(ps, dtype)
 
 

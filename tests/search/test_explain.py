@@ -56,6 +56,23 @@ def test_best_first_explanation_equals_every_combination(seed, kind):
     assert [c.misses for c in fast.closest] == [c.misses for c in full.closest]
 
 
+@pytest.mark.parametrize("seed,kind", [c for c in CASES if c[1] != "mechanics"])
+def test_drives_scored_in_two_passes_give_the_same_explanation(seed, kind, monkeypatch):
+    """The best-first explanation scores a block's drives in two passes when no n-th score is known yet (the
+    FIRST_DRIVES of lowest bound, then the ones the n-th score they give cannot rule out): with one drive in
+    the first pass it still equals the explanation over every combination."""
+    monkeypatch.setattr(E, "FIRST_DRIVES", 1)
+    p = _case(seed, kind)
+    sp, cons = build_space(p), build_constraints(p)
+    assert sp.n_drives > 1
+    spec = objective_spec(p.objective.mode, p)
+    full = E.explain_infeasible(sp, cons, spec, every_combination=True)
+    fast = E.explain_infeasible(sp, cons, spec)
+    assert [u[0] for u in fast.unmeetable] == [u[0] for u in full.unmeetable]
+    assert [u[1] for u in fast.unmeetable] == pytest.approx([u[1] for u in full.unmeetable], rel=1e-9)
+    assert [c.combination for c in fast.closest] == [c.combination for c in full.closest]
+
+
 def _scored(sp, cons, spec, monkeypatch):
     scored = []
     orig = E._score_nuts

@@ -13,10 +13,11 @@ from hypothesis import strategies as st
 from axisopt import mathx as mx
 from axisopt.physics import drive as pdr
 from axisopt.search import explain as E
+from axisopt.search import drivebounds
 from axisopt.search.interval import Interval, ends
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
-from axisopt.search.task.space import respond_drive
+from axisopt.search.task.space import DRIVE_KEYS, respond_drive
 
 finite = st.floats(-1e3, 1e3, allow_nan=False)
 
@@ -70,7 +71,7 @@ def test_drive_bounds_hold_every_combination(seed, groups, monkeypatch):
     guide and drive pair in it at the favourable preload end (weak motors: the drive limits are active); with
     the bearings taken one by one (8 groups of these 5 bearings) and together (2 groups, 1 group)."""
     from test_explain import _case
-    monkeypatch.setattr(E, "DRIVE_BEARING_GROUPS", groups)
+    monkeypatch.setattr(drivebounds, "DRIVE_BEARING_GROUPS", groups)
     p = _case(seed, "drive")
     sp, cons = build_space(p), build_constraints(p)
     drive = [c for c in cons if not E._bounded(c)]
@@ -123,3 +124,32 @@ def test_drive_block_in_intervals_holds_every_mass_and_drag():
                     assert lo * (1 - 1e-12) - 1e-12 <= float(v) <= hi * (1 + 1e-12) + 1e-12, (k, m, t, v, lo, hi)
         if not vertical:  # the premise: the best peak-torque margin is not at the corner of least mass and drag
             assert max(peak) > peak[0] * 1.001
+
+
+@pytest.mark.parametrize("seed,groups", [(1, 8), (3, 2), (5, 1)])
+def test_drive_hull_holds_every_guide_drive_and_preload(seed, groups, monkeypatch):
+    """drivebounds.drive_hull: per (nut, bearing group, drive), each drive limit's bound is at least as good as
+    its value with every guide at every allowed preload (the two ends and three points between them), so the
+    screening may leave out a drive that fails it and the explanation a drive it shows cannot score low."""
+    from test_explain import _case
+    monkeypatch.setattr(drivebounds, "DRIVE_BEARING_GROUPS", groups)
+    p = _case(seed, "drive")
+    sp, cons = build_space(p), build_constraints(p)
+    drive = [c for c in cons if c.key in DRIVE_KEYS and c.key != "cost"]
+    assert drive
+    _, N, B, G = sp.shape
+    D = sp.n_drives
+    for mounting in sp.mountings:
+        hull, group = drivebounds.drive_hull(sp, mounting, np.arange(N), drive)
+        assert set(hull) == {c.name for c in drive}
+        pd = sp.params_structured(mounting, slice(0, N))
+        for t in (0.0, 0.2, 0.5, 0.9, 1.0):
+            pre = (sp.preload_lo + t * (sp.preload_hi - sp.preload_lo)).reshape(-1, 1, 1, 1)
+            out = respond_drive(pd, pre)
+            for c in drive:
+                v = np.broadcast_to(np.asarray(c.value(out), dtype=float), (N, B, G, 1))[..., 0]
+                v = v.reshape(N, B, G // D, D)
+                b = hull[c.name][:, group][:, :, None, :]
+                tol = 1e-9 * np.maximum(np.abs(v), 1.0)
+                held = v <= b + tol if c.sense == ">=" else v >= b - tol
+                assert held.all(), (c.name, t, np.argwhere(~held)[:3])

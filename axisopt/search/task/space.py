@@ -171,23 +171,23 @@ class Space:
             self._cache[key] = ps
         return ps
 
-    def params_drives(self, mounting: str, nut_sel, bearings=None, dtype=float) -> dict:
+    def params_drives(self, mounting: str, nut_sel, bearings=None, dtype=float, drives=None) -> dict:
         """Parameters over (nuts, bearings, guides, drives) for the drive block alone: the mechanical guides on the
         third axis, the searched drives on the fourth (the drive block reads no position), so that the mechanics
         the drive takes (moving mass, drag, guide friction) are evaluated once per guide and the drive block once
         per drive; element (.., g, d) is guide-and-drive ``g * D + d``.  ``nut_sel`` and ``bearings`` as in
-        :meth:`params_structured`."""
+        :meth:`params_structured`; ``drives``: those drive numbers only, in that order, on the fourth axis."""
         s, nt, b = self.nut_bearing_arrays(nut_sel, dtype, bearings)
         g = shaped({k: v[::self.n_drives] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
         return as_dtype(model.axis_params(self.problem.axis_for(mounting), s, nt, b, g,
-                                          *self.drive_columns((1, 1, 1, -1), dtype)), dtype)
+                                          *self.drive_columns((1, 1, 1, -1), dtype, drives)), dtype)
 
-    def drive_columns(self, shape, dtype=float) -> tuple:
-        """The searched drives' (motor, coupling, reduction) columns, each the D drives in order reshaped to
-        ``shape`` (one -1 axis), or None where that part is not searched: the drive arguments of
-        :func:`axisopt.model.axis_params` for a layout with the drives on one axis."""
-        D = self.n_drives
-        return tuple(None if d is None else shaped({k: v[:D] for k, v in d.items()}, shape, dtype)
+    def drive_columns(self, shape, dtype=float, drives=None) -> tuple:
+        """The searched drives' (motor, coupling, reduction) columns, each the D drives in order (or the drive
+        numbers ``drives``) reshaped to ``shape`` (one -1 axis), or None where that part is not searched: the
+        drive arguments of :func:`axisopt.model.axis_params` for a layout with the drives on one axis."""
+        sel = slice(0, self.n_drives) if drives is None else drives
+        return tuple(None if d is None else shaped({k: v[sel] for k, v in d.items()}, shape, dtype)
                      for d in (self.m_arr, self.c_arr, self.r_arr))
 
     def nut_bearing_arrays(self, nut_sel, dtype=float, bearings=None) -> tuple:

@@ -1,0 +1,101 @@
+"""Bounds of the drive's limits, per drive, over the guides of a (nut, bearing) block, before any (guide, drive)
+combination is formed.
+
+The guide enters the drive block (:func:`axisopt.model.drive.drive`) only through the moving mass, the drag torque
+and the guide friction at standstill (:func:`axisopt.model.drive_inputs`), so the block is evaluated once per
+drive in interval arithmetic (:mod:`.interval`) over the range of those three that the block's guides give (a
+box holding every guide's triple).  The bearings are taken in :data:`DRIVE_BEARING_GROUPS` groups of
+neighbouring drag torque, each bearing parameter an interval over its group.
+
+Two uses: :func:`drive_box` at each preload end (the explanation's block bounds, which read each limit at its
+favourable end), and :func:`drive_hull` over the whole allowed preload range at once (the drag torque is affine
+in the nut preload, so every preload between the ends lies in the box): a value no combination of the block
+beats at any allowed preload, for each drive -- the screening's and the explanation's per-drive test.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import model
+from ..model.drive import drive as drive_block
+from ..model.drive import lost_motion
+from .interval import Interval, ends
+from .task.constraints import reads_regen
+from .task.space import Space, shaped
+
+DRIVE_BEARING_GROUPS = 8  # bearings taken together in the drive limits' interval bounds (module docstring)
+
+
+def drive_pair_params(space: Space, mounting: str, nut_sel, bearings=None) -> dict:
+    """Parameters over (nuts ``nut_sel``, bearings, drives, 1) with the first guide's columns (or, with
+    ``bearings`` aligned with the nuts, over ((nut, bearing) pairs, 1, drives, 1)): for the drive block, which
+    takes the guide only through the moving mass, the drag torque and the standstill friction passed to it."""
+    s, nt, b = space.nut_bearing_arrays(nut_sel, float, bearings)
+    g = shaped({k: v[:1] for k, v in space.g_arr.items()}, (1, 1, 1, 1), float)
+    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, *space.drive_columns((1, 1, -1, 1)))
+
+
+def drive_box(space: Space, mounting: str, nut_sel, regen: bool, bearings=None, across: bool = False):
+    """The drive block's outputs in interval arithmetic per (nut, bearing group, drive) of the nuts
+    ``nut_sel`` (or per (nut, bearing) pair of ``bearings``, one group each): a list of (lower ends, upper
+    ends) dicts, one per preload end (lowest, highest), or one over the whole preload range if ``across``;
+    with ``group``, each bearing's group.  The lost motion (``backlash``: nut and reduction alone) is exact."""
+    pm = space.params_structured(mounting, nut_sel, mechanics=True, bearings=bearings)  # (n, B, guides, 1)
+    pd = drive_pair_params(space, mounting, nut_sel, bearings)  # (n, B, drives, 1)
+    nc = len(np.arange(space.shape[1])[nut_sel]) if isinstance(nut_sel, slice) else len(nut_sel)
+    B = 1 if bearings is not None else space.shape[2]
+    full = (nc, B, space.shape[3] // max(space.n_drives, 1), 1)
+    if B > 1:
+        torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[0, :, 0, 0]
+        order = np.argsort(torque, kind="stable")
+        starts = np.unique(np.linspace(0, B, min(B, DRIVE_BEARING_GROUPS) + 1).astype(int)[:-1])
+    else:
+        order, starts = np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64)
+    group = np.empty(B, dtype=np.int64)
+    group[order] = np.searchsorted(starts, np.arange(B), side="right") - 1
+
+    def over_groups(lo, hi):
+        """(lo, hi) along the bearing axis reduced to each group's range."""
+        lo, hi = np.take(lo, order, axis=1), np.take(hi, order, axis=1)
+        return np.minimum.reduceat(lo, starts, axis=1), np.maximum.reduceat(hi, starts, axis=1)
+
+    def by_group(v):
+        a = np.asarray(v)
+        if B > 1 and a.ndim >= 2 and a.shape[1] == B and a.dtype.kind == "f":
+            return Interval(*over_groups(a, a))
+        return v
+    pg = {k: (v if k == "duty" else by_group(v)) for k, v in pd.items()}
+    backlash = np.broadcast_to(lost_motion(pd), (nc, 1, space.n_drives, 1))
+    inputs = []
+    for pre in (space.preload_lo[nut_sel], space.preload_hi[nut_sel]):
+        with np.errstate(divide="ignore"):
+            moving, drag, hold_friction = model.drive_inputs(pm, pre.reshape(-1, 1, 1, 1))
+        inputs.append([np.broadcast_to(v, full) for v in (moving, drag["drag_torque"], hold_friction)])
+    if across:  # every preload between the ends: the drag is affine in it, so the two ends' hull holds it
+        inputs = [[np.concatenate([a, b], axis=2) for a, b in zip(*inputs)]]
+    out = []
+    for vals in inputs:
+        ranges = [Interval(*over_groups(v.min(axis=2, keepdims=True), v.max(axis=2, keepdims=True))) for v in vals]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            lo, hi = ends(drive_block(pg, *ranges, regen=regen))
+        lo["backlash"] = hi["backlash"] = backlash
+        out.append((lo, hi))
+    return out, group
+
+
+def drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None):
+    """Per (nut, bearing group, drive) of the nuts ``nut_sel`` (or per (nut, bearing) pair of ``bearings``),
+    for each limit of ``constraints`` the drive block bounds (not the cost), a value no (guide, preload) of the
+    block beats with that drive: {limit name: (nuts, groups, drives)}, and each bearing's group."""
+    cons = [c for c in constraints if c.key != "cost"]
+    if not cons:
+        return {}, None
+    (box,), group = drive_box(space, mounting, nut_sel, reads_regen(cons), bearings, across=True)
+    shape = (len(box[0]["backlash"]), len(np.unique(group)), space.n_drives, 1)
+    out = {}
+    for c in cons:
+        end = box[1] if c.sense == ">=" else box[0]
+        if c.key in end:
+            out[c.name] = np.broadcast_to(np.asarray(c.value(end), dtype=float), shape)[..., 0]
+    return out, group
