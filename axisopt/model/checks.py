@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 from types import MappingProxyType
 
+import numpy as np
+
 from .. import mathx as mx
 from ..physics import bearings as pb
 from ..physics import checks as pc
@@ -110,11 +112,15 @@ def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
     """
     r = unit(p, "nut_rotating") > 0.5
     ca, c0 = unit(p, "unit_bearing_dynamic_load"), unit(p, "unit_bearing_static_load")
-    q = dict(p)
-    q.update({"bearing_dynamic_load": ca, "bearing_rows_strong": 1.0, "bearing_rows_weak": 1.0,
-              "bearing_preload": unit(p, "unit_bearing_preload")})
-    load = bearing_life_load(q, loads["life_loads"], loads["life_travels"], 0.0)
-    life = pc.life_time(ca, load, mean_omega, p["load_factor"])
+    absent = NOT_APPLICABLE * p["required_life"] + 0.0 * mean_omega  # no unit: no bearing of its own
+    if not mx.is_symbolic(r) and not np.any(r):  # numbers without a unit: the life is not computed
+        life = absent
+    else:
+        q = dict(p)
+        q.update({"bearing_dynamic_load": ca, "bearing_rows_strong": 1.0, "bearing_rows_weak": 1.0,
+                  "bearing_preload": unit(p, "unit_bearing_preload")})
+        load = bearing_life_load(q, loads["life_loads"], loads["life_travels"], 0.0)
+        life = mx.if_else(r, pc.life_time(ca, load, mean_omega, p["load_factor"]), absent)
     f_max = loads["max_axial_force"]
     s0 = pb.STATIC_SAFETY_MACHINE_TOOL
     held = 1.0 if mounting == "fixed-fixed" else 0.0

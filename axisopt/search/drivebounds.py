@@ -25,6 +25,9 @@ from .task.constraints import reads_regen
 from .task.space import Space, shaped
 
 DRIVE_BEARING_GROUPS = 8  # bearings taken together in the drive limits' interval bounds (module docstring)
+# fewer searched drives than this: the screening and the explanation evaluate every drive without the per-drive
+# bounds first (on the 1000-case study, 10 drives per case, the bounds cost more than they saved)
+PER_DRIVE_MIN = 64
 
 
 def drive_pair_params(space: Space, mounting: str, nut_sel, bearings=None) -> dict:
@@ -45,7 +48,6 @@ def drive_box(space: Space, mounting: str, nut_sel, regen: bool, bearings=None, 
     pd = drive_pair_params(space, mounting, nut_sel, bearings)  # (n, B, drives, 1)
     nc = len(np.arange(space.shape[1])[nut_sel]) if isinstance(nut_sel, slice) else len(nut_sel)
     B = 1 if bearings is not None else space.shape[2]
-    full = (nc, B, space.shape[3] // max(space.n_drives, 1), 1)
     if B > 1:
         torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[0, :, 0, 0]
         order = np.argsort(torque, kind="stable")
@@ -67,21 +69,70 @@ def drive_box(space: Space, mounting: str, nut_sel, regen: bool, bearings=None, 
         return v
     pg = {k: (v if k == "duty" else by_group(v)) for k, v in pd.items()}
     backlash = np.broadcast_to(lost_motion(pd), (nc, 1, space.n_drives, 1))
+    red = (nc, B, 1, 1)  # the guide axis reduced
+
+    def guide_range(v):
+        """(least, largest) over the guides, as (nuts, bearings, 1, 1): reduced before any broadcast."""
+        v = np.asarray(v, dtype=float)
+        if v.ndim == 4 and v.shape[2] > 1:
+            return (np.broadcast_to(v.min(axis=2, keepdims=True), red),
+                    np.broadcast_to(v.max(axis=2, keepdims=True), red))
+        v = np.broadcast_to(v, red) if v.ndim < 4 or v.shape[2] == 1 else v
+        return v, v
     inputs = []
     for pre in (space.preload_lo[nut_sel], space.preload_hi[nut_sel]):
         with np.errstate(divide="ignore"):
             moving, drag, hold_friction = model.drive_inputs(pm, pre.reshape(-1, 1, 1, 1))
-        inputs.append([np.broadcast_to(v, full) for v in (moving, drag["drag_torque"], hold_friction)])
+        inputs.append([guide_range(v) for v in (moving, drag["drag_torque"], hold_friction)])
     if across:  # every preload between the ends: the drag is affine in it, so the two ends' hull holds it
-        inputs = [[np.concatenate([a, b], axis=2) for a, b in zip(*inputs)]]
+        inputs = [[(np.minimum(a[0], b[0]), np.maximum(a[1], b[1])) for a, b in zip(*inputs)]]
     out = []
     for vals in inputs:
-        ranges = [Interval(*over_groups(v.min(axis=2, keepdims=True), v.max(axis=2, keepdims=True))) for v in vals]
+        ranges = [Interval(*over_groups(lo, hi)) for lo, hi in vals]
         with np.errstate(divide="ignore", invalid="ignore"):
             lo, hi = ends(drive_block(pg, *ranges, regen=regen))
         lo["backlash"] = hi["backlash"] = backlash
         out.append((lo, hi))
     return out, group
+
+
+# a mounting's hull is computed once for every nut and kept up to this many (nut, bearing group, drive) elements
+# (the interval drive block, about 2 us each: 3.4 s for the laser axis's 2 M) and this many (nut, bearing, guide)
+# elements of the mechanics it takes; above, each caller's nuts are evaluated when asked
+HULL_CACHE = 100_000
+HULL_CACHE_MECHANICS = 4_000_000
+
+
+def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
+    """:func:`drive_box` over the whole preload range (lower ends, upper ends) for the nuts ``nut_sel`` (or
+    the (nut, bearing) pairs of ``bearings``), and each bearing's group.  Where the mounting's every nut fits in
+    :data:`HULL_CACHE`, the box of every nut is evaluated once per space and these rows are taken from it (the
+    screening, the explanation's block bounds and its scored blocks read the same values)."""
+    N, B = space.shape[1], space.shape[2]
+    nut_idx = np.arange(N)[nut_sel] if isinstance(nut_sel, slice) else np.asarray(nut_sel, dtype=np.int64)
+    Gm = space.shape[3] // max(space.n_drives, 1)
+    if N * min(B, DRIVE_BEARING_GROUPS) * space.n_drives > HULL_CACHE or N * B * Gm > HULL_CACHE_MECHANICS:
+        (box,), group = drive_box(space, mounting, nut_idx, regen, bearings, across=True)
+        return box, group
+    key = ("drive hull", mounting, regen, DRIVE_BEARING_GROUPS)
+    hit = space._cache.get(key)
+    if hit is None:
+        hit = drive_box(space, mounting, slice(0, N), regen, across=True)
+        space._cache[key] = hit
+    (box,), group = hit
+
+    def rows(v):
+        v = np.asarray(v)
+        if v.ndim == 0:
+            return v
+        if v.shape[0] > 1:
+            v = v[nut_idx]
+        if bearings is not None and v.shape[1] > 1:  # each pair's own bearing group
+            first = np.arange(len(v)) if v.shape[0] > 1 else np.zeros(len(nut_idx), dtype=np.int64)
+            v = v[first, group[np.asarray(bearings, dtype=np.int64)]][:, None]
+        return v
+    box = tuple({k: rows(v) for k, v in end.items() if isinstance(v, (np.ndarray, float))} for end in box)
+    return box, (np.zeros(1, dtype=np.int64) if bearings is not None else group)
 
 
 def drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None):
@@ -91,8 +142,9 @@ def drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None)
     cons = [c for c in constraints if c.key != "cost"]
     if not cons:
         return {}, None
-    (box,), group = drive_box(space, mounting, nut_sel, reads_regen(cons), bearings, across=True)
-    shape = (len(box[0]["backlash"]), len(np.unique(group)), space.n_drives, 1)
+    box, group = hull_ends(space, mounting, nut_sel, reads_regen(cons), bearings)
+    nc = len(np.arange(space.shape[1])[nut_sel]) if isinstance(nut_sel, slice) else len(nut_sel)
+    shape = (nc, int(group.max()) + 1, space.n_drives, 1)
     out = {}
     for c in cons:
         end = box[1] if c.sense == ">=" else box[0]

@@ -27,7 +27,7 @@ from .. import model
 from ..model.limits import CHECK_RECORDS
 from .bounds import bound_positions, optimistic_guide_params
 from .candidates import candidate_values
-from .drivebounds import drive_box, drive_hull
+from .drivebounds import PER_DRIVE_MIN, drive_hull
 from .parts import drive_stiffnesses
 from .result import Infeasibility
 from .task.constraints import End, as_vector, reads_regen
@@ -184,20 +184,17 @@ def _drive_bounds(space: Space, mounting: str, drive) -> dict:
 
 def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict:
     """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the drive block),
-    per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at the limit's
-    favourable preload end: the drive block in interval arithmetic over the block's guides at each preload end
-    (:func:`.drivebounds.drive_box`); the best over the drives bounds the block.  Returns {limit name: (nuts,
+    per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at any allowed preload:
+    the drive block in interval arithmetic over the block's guides and preloads
+    (:func:`.drivebounds.drive_hull`); the best over the drives bounds the block.  Returns {limit name: (nuts,
     bearings)}."""
-    opt, group = drive_box(space, mounting, nut_slice, reads_regen(drive))
-    nc = nut_slice.stop - nut_slice.start
-    shape = (nc, int(group.max()) + 1, space.n_drives)
+    hull, group = drive_hull(space, mounting, nut_slice, drive)
     out = {}
     for c in drive:
-        i = 1 if c.sense == ">=" else 0  # the optimistic end of the interval
-        if c.key not in opt[0][i]:
+        if c.name not in hull:
             raise KeyError(f"limit {c.name} reads {c.key}, which neither the optimistic guide nor the drive "
                            "block bounds")
-        v = _favourable(c, opt[0][i], opt[1][i], shape)
+        v = hull[c.name]
         out[c.name] = (v.max(axis=-1) if c.sense == ">=" else v.min(axis=-1))[:, group]
     return out
 
@@ -374,12 +371,14 @@ def _score_drives(space: Space, mounting: str, drive, tally: _Tally, nut_idx, be
     ``score`` holds the mechanical part.  A drive is evaluated (at both preload ends, every guide) only if its
     bounds over the block (:func:`.drivebounds.drive_hull`: every guide and preload) leave a score not above
     ``kth``, or could meet, or improve the best value of, a drive limit no combination meets yet; the others
-    score inf.  Without a ``kth`` (fewer than ``n_closest`` scores known), the :data:`FIRST_DRIVES` drives of
-    lowest bound are scored first and give it."""
+    score inf.  A first pass scores the :data:`FIRST_DRIVES` drives of lowest score bound (without a ``kth``,
+    fewer than ``n_closest`` scores known: they give it) and of most favourable bound on each limit not met
+    yet (they set its best value), so that the second leaves out what they rule out."""
     D = space.n_drives
     out = np.full(score.shape, np.inf)
-    hull, group = drive_hull(space, mounting, nut_idx, drive, bearings=bearing_idx)
-    if any(c.name not in hull for c in drive):  # a limit the bounds do not cover (the cost): every drive
+    hull, group = drive_hull(space, mounting, nut_idx, drive, bearings=bearing_idx) if D >= PER_DRIVE_MIN else \
+        ({}, None)
+    if any(c.name not in hull for c in drive):  # a few drives, or a limit the bounds do not cover: every drive
         cols_of = [lambda _k: np.arange(D)]
         low = None
     else:
@@ -389,9 +388,16 @@ def _score_drives(space: Space, mounting: str, drive, tally: _Tally, nut_idx, be
         lb = np.broadcast_to(lb, hull[drive[0].name].shape)[:, group]  # (nuts, bearings, drives)
         low = score.min(axis=2) + lb
         cols_of = [lambda k: np.nonzero(_worth(drive, tally, hull, low, k))[0]]
-        if not np.isfinite(kth) and D > FIRST_DRIVES:
-            first = np.argsort(low.reshape(-1, D).min(axis=0), kind="stable")[:FIRST_DRIVES]
-            cols_of.insert(0, lambda _k: np.sort(first))
+        if D > FIRST_DRIVES:  # a first pass that sets the n-th score and the best values the second prunes by
+            first = [np.argsort(low.reshape(-1, D).min(axis=0), kind="stable")[:FIRST_DRIVES]] \
+                if not np.isfinite(kth) else []
+            for c in drive:
+                if not tally.met[c.name]:  # the drives of most favourable bound on a limit not met yet
+                    v = hull[c.name].reshape(-1, D)
+                    v = v.max(axis=0) if c.sense == ">=" else -v.min(axis=0)
+                    first.append(np.argsort(-v, kind="stable")[:FIRST_DRIVES])
+            if first:
+                cols_of.insert(0, lambda _k: np.unique(np.concatenate(first)))
     done = np.zeros(D, dtype=bool)
     for pick in cols_of:
         cols = pick(kth)

@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import model
 from .bounds import SCREEN_RTOL, bound_positions, relaxed_ok, screen_ok
-from .drivebounds import DRIVE_BEARING_GROUPS, drive_hull
+from .drivebounds import DRIVE_BEARING_GROUPS, PER_DRIVE_MIN, drive_hull
 from .task.constraints import Constraint, End, reads_regen
 from .task.objective import ObjectiveSpec
 from .task.space import DRIVE_KEYS, Space, as_dtype
@@ -62,7 +62,7 @@ def viable_drives(space: Space, mounting: str, nut_idx, constraints):
     screening), and each bearing's group; None without a drive search or drive limits.  A necessary
     condition: the drive stage then evaluates only the drives that pass it."""
     cons = [c for c in constraints if c.key in DRIVE_KEYS]
-    if space.m_arr is None or not cons or not len(nut_idx):
+    if space.m_arr is None or not cons or not len(nut_idx) or space.n_drives < PER_DRIVE_MIN:
         return None
     D = space.n_drives
     rows = max(1, HULL_BLOCK // max(D * min(space.shape[2], DRIVE_BEARING_GROUPS), 1))
