@@ -83,19 +83,16 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
     low_end = [c for c in mech if c.favourable is not End.HIGH]
     high_end = [c for c in mech if c.favourable is End.HIGH]
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
-    step = max(1, SCREEN_CHUNK // max(B, 1))
+    step = block_chunk(space)
     out = []
     for mounting in space.mountings:
-        xs = bound_positions(space, mounting).astype(np.float32)
         ok_all = np.zeros((N, B), dtype=bool)
         bound_all = np.full((N, B), -np.inf)
-        # the model's outputs here do not depend on the limits: kept for the sensitivities' re-solves
-        keep = N * B * len(xs) <= BOUNDS_KEPT
         for n0 in range(0, N, step):
             sl = slice(n0, min(N, n0 + step))
             for t in types:
                 with np.errstate(all="ignore"):
-                    out_lo, o = _block_outputs(space, mounting, sl, str(t), xs, keep)
+                    out_lo, o = block_outputs(space, mounting, sl, str(t))
                     ok = np.broadcast_to(space.fits[sl][:, :, None], (sl.stop - sl.start, B, 1)).copy()
                     for c in low_end:
                         ok &= screen_ok(c, out_lo)
@@ -113,9 +110,18 @@ def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
 BOUNDS_KEPT = 200_000  # block-bound model values kept per space up to this many (nut, bearing, position)s
 
 
-def _block_outputs(space: Space, mounting: str, sl: slice, guide_type: str, xs, keep: bool):
-    """The optimistic guide's model outputs over the nuts ``sl`` and every bearing, at the lowest preload
-    (last position) and at the highest (positions ``xs``): what :func:`block_bounds` tests and bounds."""
+def block_chunk(space: Space) -> int:
+    """Nuts per evaluation of :func:`block_outputs` (the slices :func:`block_bounds` takes)."""
+    return max(1, SCREEN_CHUNK // max(space.shape[2], 1))
+
+
+def block_outputs(space: Space, mounting: str, sl: slice, guide_type: str):
+    """The optimistic guide's model outputs over the nuts ``sl`` and every bearing in float32, at the lowest
+    preload (last of :func:`bound_positions`) and at the highest (those positions): what :func:`block_bounds`
+    tests and bounds (and the explanation's block bounds, relaxed for the rounding).  The outputs do not depend
+    on the limits: kept per space (the sensitivities' re-solves) where they are small."""
+    xs = bound_positions(space, mounting).astype(np.float32)
+    keep = space.shape[1] * space.shape[2] * len(xs) <= BOUNDS_KEPT
     key = ("block outputs", mounting, sl.start, sl.stop, guide_type)
     hit = space._cache.get(key) if keep else None
     if hit is not None:

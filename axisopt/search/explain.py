@@ -25,7 +25,7 @@ import numpy as np
 
 from .. import model
 from ..model.limits import CHECK_RECORDS
-from .bounds import bound_positions, optimistic_guide_params
+from .bounds import SCREEN_RTOL, block_chunk, block_outputs, bound_positions, optimistic_guide_params
 from .candidates import candidate_values
 from .drivebounds import PER_DRIVE_MIN, drive_hull
 from .parts import drive_stiffnesses
@@ -56,6 +56,7 @@ DRIVE_NUTS = 64  # nuts per evaluation of the drive limits' interval bounds (mem
 FIRST_BATCH = 4  # blocks scored in the first round of the best-first explanation; doubles each round (4: 16 %
 # faster than 32 over 16 vmc_random_1000 variants, fewer blocks scored before the bounds prune)
 BOUND_RTOL = 1e-9  # slack on the block bounds (rounding of the same sums in another order)
+FLOAT32_RTOL = 2.0 * SCREEN_RTOL  # slack on block bounds read from the search's float32 outputs (as its bound)
 
 
 class _Tally:
@@ -146,7 +147,7 @@ def block_optimism(space: Space, constraints, drive: bool = True):
     out = []
     for mounting in space.mountings:
         x = bound_positions(space, mounting) if few else space.grid[mounting]
-        step = max(1, CHUNK // max(B * len(x), 1))
+        step = block_chunk(space) if few else max(1, CHUNK // max(B * len(x), 1))
         best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints}
         for n0 in range(0, N, step):
             sl = slice(n0, min(N, n0 + step))
@@ -154,12 +155,19 @@ def block_optimism(space: Space, constraints, drive: bool = True):
             hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
             shape = (sl.stop - sl.start, B)
             for t in types if bounded else ():
-                p = optimistic_guide_params(space, mounting, sl, str(t))
-                out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
-                out_hi = respond(p, x, mounting, hi, drive_block=False)
+                if few:  # the search's block bounds' float32 outputs (the lowest preload at one position: a
+                    # ">=" profile's minimum over fewer positions is no lower), relaxed below for the rounding
+                    with np.errstate(all="ignore"):
+                        out_lo, out_hi = block_outputs(space, mounting, sl, str(t))
+                else:
+                    p = optimistic_guide_params(space, mounting, sl, str(t))
+                    out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
+                    out_hi = respond(p, x, mounting, hi, drive_block=False)
                 for c in bounded:
-                    v = _favourable(c, out_lo, out_hi, shape + (1,))[..., 0]
+                    v = np.asarray(_favourable(c, out_lo, out_hi, shape + (1,))[..., 0], dtype=float)
                     pick = np.maximum if c.sense == ">=" else np.minimum
+                    if few:
+                        v = v + (1.0 if c.sense == ">=" else -1.0) * FLOAT32_RTOL * np.abs(v)
                     best[c.name][sl] = pick(best[c.name][sl], v)
         if drive:
             best.update(_drive_bounds(space, mounting, drive))
