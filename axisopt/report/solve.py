@@ -118,8 +118,8 @@ def format_result(res, top: int | None = None, problem=None) -> str:
         rate = ""
     elif c.screened is None:  # every combination screened
         rate = f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"
-    else:  # the blocks' bounds, then the combinations of the opened blocks one by one
-        rate = f"; screening {c.screening_time:.3f} s (block bounds, {c.screened:,} combinations one by one)"
+    else:  # the blocks' bounds, then the combinations of the opened blocks (one by one, or a drive at a time)
+        rate = f"; screening {c.screening_time:.3f} s (block bounds, {c.screened:,} combinations in opened blocks)"
     L.append(f"  optimality gap {gap}{rate}")
     for n in c.notes:
         L.append(f"  {n}")

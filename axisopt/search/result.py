@@ -47,7 +47,7 @@ class SearchStats:
     screening_time: float = 0.0  # [s]
     screening_rate: float = 0.0  # combinations / s
     pruned_by_block: int = 0  # default method: combinations never screened (their block cannot win)
-    screened: int | None = None  # default method: combinations screened one by one
+    screened: int | None = None  # default method: combinations in the blocks screened
     pruned_by_dominance: int = 0  # combinations never formed (dominated drive pairs)
 
 
@@ -165,7 +165,8 @@ class Certificate:
     screening_rate: float = 0.0  # combinations / s
     notes: tuple = ()
     # default method: combinations never screened (their (mounting, nut, bearing) block cannot meet the limits
-    # or reach the incumbent with any guide and drive), and combinations screened one by one
+    # or reach the incumbent with any guide and drive), and combinations in the blocks screened (one by one, or a
+    # drive at a time where its bounds over the block rule it out: search.drivebounds)
     pruned_by_block: int = 0
     screened: int | None = None
     # combinations never formed (not in ``combinations``): a (motor, coupling) pair whose coupling is dominated
