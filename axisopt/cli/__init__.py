@@ -65,6 +65,9 @@ def main(argv=None) -> int:
     out = sys.stdout = GuardedStdout(saved)
     try:
         parser = build_parser()
+        if not (sys.argv[1:] if argv is None else argv):  # `axisopt` alone: the commands and what each does
+            print(parser.format_help(), end="")
+            return 0
         args = parser.parse_args(argv)
         _one_output_on_stdout(args)
         code = args.func(args)

@@ -120,7 +120,10 @@ def format_result(res, top: int | None = None, problem=None) -> str:
         rate = f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"
     else:  # the blocks' bounds, then the combinations of the opened blocks (one by one, or a drive at a time)
         rate = f"; screening {c.screening_time:.3f} s (block bounds, {c.screened:,} combinations in opened blocks)"
-    L.append(f"  optimality gap {gap}{rate}")
+    if res.best is None and c.proven:  # no design: there is no optimum to have a gap to
+        L.append(f"  infeasibility proven (every combination is accounted for){rate}")
+    else:
+        L.append(f"  optimality gap {gap}{rate}")
     for n in c.notes:
         L.append(f"  {n}")
     L.extend(estimated_lines(c.estimated))

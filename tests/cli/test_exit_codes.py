@@ -66,3 +66,12 @@ def test_closed_pipe_keeps_the_code_quietly():
     with p.stderr:
         err = p.stderr.read().decode()
     assert p.wait(timeout=120) == 1 and err.strip() == ""
+
+
+def test_axisopt_alone_lists_the_commands(capsys):
+    """`axisopt` with no command prints the commands and what each does (exit 0), not an argparse error."""
+    assert main([]) == 0
+    out = capsys.readouterr()
+    assert out.err == ""
+    for command in ("evaluate", "solve", "diagnose", "compare", "study", "parts", "schema", "init"):
+        assert f"\n    {command} " in out.out, command
