@@ -12,7 +12,7 @@ from ..catalog import SCHEMA, Catalog, default_catalog, row_problem
 from ..errors import InputError
 from ..parttable import Row
 from ..physics import motion
-from ..yamlio import Section, read_yaml
+from ..yamlio import Section, close_matches, read_yaml
 from .axis import BRAKE_MODES, Axis, Counterbalance, Design
 from .keys import (
     AXIS_KINDS,
@@ -64,7 +64,8 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
         if cb is not None:
             kw["counterbalance"] = cb
     sec.done()
-    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw)
+    # a counterbalance left out is no assumption of a value: the axis has none
+    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw and f.name != "counterbalance")
     return Axis(**kw), assumed
 
 
@@ -75,6 +76,11 @@ def read_counterbalance(sec: Section, kw: dict) -> Counterbalance | None:
     other kind is refused."""
     s = sec.read("counterbalance")
     kind = s.read("kind")
+    for key in s.keys():  # a typo first, before a missing key of the kind is asked for
+        if key not in s.spec.keys:
+            near = close_matches(key, COUNTERBALANCE_KEYS[kind], n=1)
+            hint = f"; did you mean '{near[0]}'?" if near else ""
+            raise s.error(key, f"unknown key '{s.key_path(key)}'{hint}")
     if kind != "none" and kw.get("orientation") != "vertical":
         raise sec.error("counterbalance", f"a counterbalance takes the weight of a vertical axis; this axis is "
                         f"{kw.get('orientation')} (axis.orientation: vertical)")
