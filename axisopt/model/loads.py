@@ -45,6 +45,16 @@ def balance_force(p, direction):
                                                          direction) + balance(p, "balance_force"))
 
 
+def balance_summary(p, moving) -> dict:
+    """What a counterbalance takes off the head [N]: its force up at rest, rising and lowering
+    (:func:`balance_force`), the head's weight (``moving`` [kg]: table + workpiece, nut and blocks) and the net
+    weight the screw carries at rest."""
+    weight = p["gravity_axial"] * moving * G
+    rest = balance_force(p, 0.0)
+    return {"rest": rest, "rising": balance_force(p, 1.0), "lowering": balance_force(p, -1.0), "weight": weight,
+            "net": weight - rest}
+
+
 def unit(p, name):
     """A rotating-nut unit parameter of ``p``, or its value for a nut on a turning screw when ``p`` has none."""
     return p[name] if name in p else NUT_ON_TURNING_SCREW[name]

@@ -87,3 +87,23 @@ def test_counterbalance_in_a_problem_is_read_the_same_way(tmp_path, capsys):
                                 "{kind: none}"])
 def test_good_counterbalance_evaluates(tmp_path, capsys, cb):
     assert main(["evaluate", write_file(tmp_path, "d.yaml", _text(cb))]) == 0
+    out = capsys.readouterr().out
+    if "none" in cb:
+        assert "counterbalance:" not in out
+        return
+    line = " ".join(out.split("counterbalance: ")[1].split(" at rest")[:2])
+    # the balance force and the net weight on the screw, with units
+    assert ("counterweight 250 kg" in line or "cylinder 2,500..2,800 N" in line) and "the screw carries" in line
+    taken = 250 * 9.80665 if "counterweight" in cb else 2500 * 0.95
+    assert f"{taken:,.0f} N" in line, line
+
+
+def test_counterbalance_in_json(tmp_path, capsys):
+    import json
+
+    path = write_file(tmp_path, "d.yaml", _text("{kind: counterweight, mass: 250 kg, efficiency: 0.9}"))
+    assert main(["evaluate", path, "--json", "-"]) == 0
+    cb = json.loads(capsys.readouterr().out)["counterbalance"]
+    assert cb["force_rising_N"] == pytest.approx(250 * 9.80665 * 0.9)
+    assert cb["force_lowering_N"] == pytest.approx(250 * 9.80665 / 0.9)
+    assert cb["net_weight_on_screw_N"] == pytest.approx(cb["head_weight_N"] - 250 * 9.80665)
