@@ -286,5 +286,6 @@ def load_design(path) -> Design:
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)
 
 
-__all__ = ["load_design", "read_axis", "read_counterbalance", "read_duty_cycle", "read_parts", "read_part", "inline_part", "fitting_nuts",
+__all__ = ["load_design", "read_axis", "read_counterbalance",
+           "read_duty_cycle", "read_parts", "read_part", "inline_part", "fitting_nuts",
            "catalog_for"]
