@@ -16,6 +16,8 @@ from .axis import (
     BRAKE_MODES,
     BRAKE_SAFETY,
     CG_HEIGHT_SHARE,
+    CHAIN_EFFICIENCY,
+    COUNTERBALANCE_KINDS,
     COUPLING_INERTIA,
     COUPLING_STIFFNESS,
     GUIDE_STATIC_SAFETY,
@@ -30,6 +32,7 @@ from .axis import (
     TEMPERATURE_RISE,
     TOOL_HEIGHT_SHARE,
     Axis,
+    Counterbalance,
     Design,
     G,
 )
@@ -57,7 +60,8 @@ from .reader import (
 )
 from .writer import design_to_dict, design_to_yaml
 
-__all__ = ["Axis", "Design", "MOUNTINGS", "load_design", "read_axis", "read_parts", "G",
+__all__ = ["Axis", "Counterbalance", "CHAIN_EFFICIENCY", "COUNTERBALANCE_KINDS", "Design", "MOUNTINGS", "load_design",
+           "read_axis", "read_parts", "G",
            # besides: the defaults, the YAML key tables, the other readers and the writer
            "BRAKE_MODES", "BRAKE_SAFETY", "CG_HEIGHT_SHARE", "COUPLING_INERTIA", "COUPLING_STIFFNESS",
            "GUIDE_STATIC_SAFETY", "MAX_INERTIA_RATIO", "NUT_STATIC_SAFETY", "ORIENTATIONS", "PART_SLOTS",

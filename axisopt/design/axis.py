@@ -62,6 +62,33 @@ SPACING_SHARE = 0.6
 CG_HEIGHT_SHARE = 0.2
 TOOL_HEIGHT_SHARE = 0.4
 BRAKE_MODES = ("auto", "yes", "no")
+# Counterbalance of a vertical axis (issue 40): a counterweight on a chain over a sprocket, or a balance cylinder.
+# Chain efficiency over its sprocket when not given: 0.95, an estimate (roller-chain drives are quoted at 0.95-0.98;
+# the lower end, so the counterweight's pull lifting is not overstated).
+COUNTERBALANCE_KINDS = ("none", "counterweight", "cylinder")
+CHAIN_EFFICIENCY = 0.95
+
+
+@dataclass(frozen=True)
+class Counterbalance:
+    """A vertical axis's counterbalance (SI).  ``counterweight``: ``mass`` on a chain over a sprocket of
+    ``efficiency``, with the chain's ``chain_mass`` moving too; ``cylinder``: ``force`` at the stroke's start and
+    ``force_at_end`` at its end (None: a regulator keeps it constant), within +/- ``tolerance`` (a fraction), its
+    ``piston_mass`` moving with the head."""
+
+    kind: str
+    mass: float = 0.0  # counterweight [kg]
+    efficiency: float = CHAIN_EFFICIENCY  # chain or cable over its sprocket or pulley [-]
+    chain_mass: float = 0.0  # [kg]
+    force: float = 0.0  # cylinder force at the stroke's start [N]
+    force_at_end: float | None = None  # ... at its end [N]; None: the same (constant pressure)
+    tolerance: float = 0.0  # pressure tolerance, +/- a fraction [-]
+    piston_mass: float = 0.0  # [kg]
+
+    @property
+    def force_end(self) -> float:
+        """The cylinder's force at the stroke's end [N] (``force`` when not given)."""
+        return self.force if self.force_at_end is None else self.force_at_end
 
 
 @dataclass(frozen=True)
@@ -130,6 +157,7 @@ class Axis:
     # (catalogs bearings static_safety: NSK limiting load 1/0.7, THK permissible load 1, else Rexroth's 4)
     bearing_static_safety: float | None = None
     nut_lift_off_safety: float = NUT_LIFT_OFF_SAFETY  # least nut lift-off force / largest axial force
+    counterbalance: Counterbalance | None = None  # a vertical axis's counterweight or balance cylinder
 
     @property
     def load_factor_eff(self) -> float:

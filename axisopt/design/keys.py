@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..catalog import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
 from ..yamlio import Key, Spec
-from .axis import BRAKE_MODES, MOUNTINGS, ORIENTATIONS
+from .axis import BRAKE_MODES, COUNTERBALANCE_KINDS, MOUNTINGS, ORIENTATIONS
 
 # Each table below is the one declaration of its section's keys: the readers read them by it (Section.read)
 # and `axisopt schema` writes it out as a JSON Schema.  Unset axis keys take the Axis defaults (.axis).
@@ -41,6 +41,24 @@ DWELL_SPEC = Spec("dwell", "a dwell of the duty cycle", {
     "force": _FORCE,
     "moving_mass": _MASS,
 })
+COUNTERBALANCE_SPEC = Spec("counterbalance", "a vertical axis's counterweight or balance cylinder", {
+    "kind": Key("choice", "counterweight (a mass on a chain over a sprocket), cylinder (a pneumatic or hydraulic "
+                "balance cylinder) or none", required=True, choices=COUNTERBALANCE_KINDS),
+    "mass": _axis_q("mass", "counterweight: its mass, at most the axis's moving_mass"),
+    "efficiency": Key("number", "counterweight: efficiency of the chain or cable over its sprocket or pulley, in "
+                      "(0, 1] (default 0.95, an estimate)", positive=True, maximum=1.0),
+    "chain_mass": _axis_q("mass", "counterweight: the chain's or cable's mass, moving with it (default 0 kg)",
+                          zero=True),
+    "force": _axis_q("force", "cylinder: its force on the head at the stroke's start"),
+    "force_at_end": _axis_q("force", "cylinder: its force at the stroke's end (default: force, a constant-pressure "
+                            "regulator)"),
+    "tolerance": Key("quantity", "cylinder: pressure tolerance, +/- (default 0 %)", kind="dimensionless",
+                     non_negative=True, maximum=(0.5, "50 %"), example="5 %"),
+    "piston_mass": _axis_q("mass", "cylinder: piston and rod, moving with the head (default 0 kg)", zero=True),
+})
+# the keys of each kind (the others are refused: a counterweight has no force)
+COUNTERBALANCE_KEYS = {"none": ("kind",), "counterweight": ("kind", "mass", "efficiency", "chain_mass"),
+                       "cylinder": ("kind", "force", "force_at_end", "tolerance", "piston_mass")}
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
 # operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible
 # drive ranges: a belt or gear stage of a feed drive reduces by at most about 1:20 either way (1:50 allowed);
@@ -137,6 +155,9 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                                  "tools)", minimum=1.0, maximum=100.0),
     "nut_lift_off_safety": Key("number", "least nut lift-off force (2.83 x preload) / largest axial force (default "
                                "1: THK A-687, HIWIN F 3.6)", minimum=1.0, maximum=100.0),
+    "counterbalance": Key("section", "vertical axes: a counterweight {kind: counterweight, mass: 450 kg, efficiency: "
+                          "0.95} or a balance cylinder {kind: cylinder, force: 5000 N, force_at_end: 5600 N, "
+                          "tolerance: 5 %} taking the head's weight (default: none)", spec=COUNTERBALANCE_SPEC),
 })
 AXIS_KINDS = {name: k.kind for name, k in AXIS_SPEC.keys.items() if k.type == "quantity"}
 AXIS_REQUIRED = tuple(name for name, k in AXIS_SPEC.keys.items() if k.required)

@@ -12,9 +12,19 @@ from ..catalog import SCHEMA, Catalog, default_catalog, row_problem
 from ..errors import InputError
 from ..parttable import Row
 from ..physics import motion
-from ..yamlio import Section, read_yaml
-from .axis import BRAKE_MODES, Axis, Design
-from .keys import AXIS_KINDS, AXIS_NUMBERS, AXIS_SPEC, DESIGN_SPEC, DWELL_SPEC, MOVE_SPEC, PART_SPECS, SEGMENT_LIMIT
+from ..yamlio import Section, close_matches, read_yaml
+from .axis import BRAKE_MODES, Axis, Counterbalance, Design
+from .keys import (
+    AXIS_KINDS,
+    AXIS_NUMBERS,
+    AXIS_SPEC,
+    COUNTERBALANCE_KEYS,
+    DESIGN_SPEC,
+    DWELL_SPEC,
+    MOVE_SPEC,
+    PART_SPECS,
+    SEGMENT_LIMIT,
+)
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:
@@ -49,9 +59,58 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     if v is not None:
         kw["load_factor"] = float(v)
     _check_carriage(sec, kw)
+    if sec.has("counterbalance"):
+        cb = read_counterbalance(sec, kw)
+        if cb is not None:
+            kw["counterbalance"] = cb
     sec.done()
-    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw)
+    # a counterbalance left out is no assumption of a value: the axis has none
+    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw and f.name != "counterbalance")
     return Axis(**kw), assumed
+
+
+def read_counterbalance(sec: Section, kw: dict) -> Counterbalance | None:
+    """``counterbalance``: ``{kind: counterweight, mass:, efficiency:, chain_mass:}`` or ``{kind: cylinder, force:,
+    force_at_end:, tolerance:, piston_mass:}`` (``{kind: none}``: None).  Only on a vertical axis; a counterweight
+    at most the head (axis.moving_mass: an overbalanced head would rise with the brake released); a key of the
+    other kind is refused."""
+    s = sec.read("counterbalance")
+    kind = s.read("kind")
+    for key in s.keys():  # a typo first, before a missing key of the kind is asked for
+        if key not in s.spec.keys:
+            near = close_matches(key, COUNTERBALANCE_KEYS[kind], n=1)
+            hint = f"; did you mean '{near[0]}'?" if near else ""
+            raise s.error(key, f"unknown key '{s.key_path(key)}'{hint}")
+    if kind != "none" and kw.get("orientation") != "vertical":
+        raise sec.error("counterbalance", f"a counterbalance takes the weight of a vertical axis; this axis is "
+                        f"{kw.get('orientation')} (axis.orientation: vertical)")
+    for key in s.keys():
+        if key in COUNTERBALANCE_KEYS[kind]:
+            continue
+        if key in s.spec.keys:
+            raise s.error(key, f"'{key}' does not apply to a {kind} counterbalance (its keys: "
+                          f"{', '.join(COUNTERBALANCE_KEYS[kind])})")
+    if kind == "none":
+        s.done()
+        return None
+    if kind == "counterweight":
+        mass = s.read("mass")
+        if mass is None:
+            raise s.error("kind", f"a counterweight needs its mass ('{s.key_path('mass')}')")
+        head = kw.get("moving_mass")
+        if head is not None and mass > head * (1 + 1e-9):
+            raise s.error("mass", f"{mass:g} kg is heavier than the head (axis.moving_mass {head:g} kg): the head "
+                          "would rise with the brake released")
+        out = Counterbalance(kind, mass=mass, efficiency=float(s.read("efficiency", Counterbalance.efficiency)),
+                             chain_mass=s.read("chain_mass", 0.0))
+    else:
+        force = s.read("force")
+        if force is None:
+            raise s.error("kind", f"a balance cylinder needs its force ('{s.key_path('force')}')")
+        out = Counterbalance(kind, force=force, force_at_end=s.read("force_at_end"),
+                             tolerance=s.read("tolerance", 0.0), piston_mass=s.read("piston_mass", 0.0))
+    s.done()
+    return out
 
 
 def _check_carriage(sec: Section, kw: dict) -> None:
@@ -227,5 +286,6 @@ def load_design(path) -> Design:
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)
 
 
-__all__ = ["load_design", "read_axis", "read_duty_cycle", "read_parts", "read_part", "inline_part", "fitting_nuts",
+__all__ = ["load_design", "read_axis", "read_counterbalance",
+           "read_duty_cycle", "read_parts", "read_part", "inline_part", "fitting_nuts",
            "catalog_for"]

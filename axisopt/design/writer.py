@@ -43,6 +43,8 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
             axis[f.name] = float(v)
         elif f.name == "duty_cycle":
             axis[f.name] = [_segment_dict(sg) for sg in v]
+        elif f.name == "counterbalance":
+            axis[f.name] = _counterbalance_dict(v)
         else:
             axis[f.name] = v
     parts: dict = {}
@@ -73,6 +75,22 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
     if design.nut_preload is not None:
         parts["nut_preload"] = _q(design.nut_preload, "force")
     return {"name": design.name, "axis": axis, "parts": parts}
+
+
+def _counterbalance_dict(cb) -> dict:
+    if cb.kind == "counterweight":
+        d = {"kind": cb.kind, "mass": _q(cb.mass, "mass"), "efficiency": float(cb.efficiency)}
+        if cb.chain_mass:
+            d["chain_mass"] = _q(cb.chain_mass, "mass")
+        return d
+    d = {"kind": cb.kind, "force": _q(cb.force, "force")}
+    if cb.force_at_end is not None:
+        d["force_at_end"] = _q(cb.force_at_end, "force")
+    if cb.tolerance:
+        d["tolerance"] = f"{cb.tolerance * 100:.12g} %"
+    if cb.piston_mass:
+        d["piston_mass"] = _q(cb.piston_mass, "mass")
+    return d
 
 
 def _segment_dict(sg) -> dict:

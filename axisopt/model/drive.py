@@ -40,7 +40,7 @@ from ..physics import drive as pd
 from ..physics import screw as ps
 from .checks import check_pairs
 from .drag import SCREW_EFFICIENCY
-from .loads import G, phase_moving_mass, unit
+from .loads import G, balance, balance_force, phase_moving_mass, unit
 
 NOT_APPLICABLE = 1e9  # margin of a check that does not apply (no motor, horizontal axis for the brake)
 
@@ -54,9 +54,11 @@ def turning_inertia(p):
 
 def drive_inertias(p, moving_mass):
     """(load inertia at the motor without the rotor, rotor inertia) [kg m^2] (:func:`turning_inertia` through the
-    reduction)."""
+    reduction; a counterbalance's moving mass, a counterweight and its chain, with the head's: Yaskawa Sigma-7
+    11.2.1, J_L1 = (M + M_c)(P_B / 2 pi R)^2)."""
     a = 1.0 / p["reduction_ratio"]
-    j_load = pd.reflected_inertia(moving_mass, p["lead"], turning_inertia(p), p["coupling_inertia"], a,
+    j_load = pd.reflected_inertia(moving_mass + balance(p, "balance_moving_mass"), p["lead"], turning_inertia(p),
+                                  p["coupling_inertia"], a,
                                   p["reduction_inertia"])
     return j_load, p["rotor_inertia"]
 
@@ -92,11 +94,15 @@ def output_torques(p, moving_mass, drag, phases, hold_friction=0.0):
         if ph.moving_mass not in by_mass:
             m = phase_moving_mass(p, moving_mass, ph.moving_mass)
             by_mass[ph.moving_mass] = (
-                pd.reflected_inertia(m, p["lead"], j_turn, p["coupling_inertia"], 1.0),
-                pd.force_torque(p["gravity_axial"] * m * G, p["lead"], SCREW_EFFICIENCY, 1.0))
+                pd.reflected_inertia(m + balance(p, "balance_moving_mass"), p["lead"], j_turn, p["coupling_inertia"],
+                                     1.0), m)
+    weights = _net_weights(p, phases, {k: v[1] for k, v in by_mass.items()},
+                           lambda w: pd.force_torque(w, p["lead"], SCREW_EFFICIENCY, 1.0))
     torques = pd.phase_torques(phases, [by_mass[ph.moving_mass][0] for ph in phases], p["lead"], drag,
-                               [by_mass[ph.moving_mass][1] for ph in phases], SCREW_EFFICIENCY, 1.0, hold_friction)
-    gravity = pd.force_torque(p["gravity_axial"] * moving_mass * G, p["lead"], SCREW_EFFICIENCY, 1.0)
+                               [weights[ph.moving_mass, ph.direction] for ph in phases], SCREW_EFFICIENCY, 1.0,
+                               hold_friction)
+    gravity = pd.force_torque(p["gravity_axial"] * moving_mass * G - balance_force(p, 1.0), p["lead"],
+                              SCREW_EFFICIENCY, 1.0)
     thrust = drag + pd.force_torque(p["axial_load"], p["lead"], SCREW_EFFICIENCY, 1.0) + gravity
     thrust_mean = drag + pd.force_torque(p["mean_axial_load"], p["lead"], SCREW_EFFICIENCY, 1.0) + gravity
     return torques, thrust, thrust_mean
@@ -116,17 +122,20 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     j_tot = j_load + j_rotor
     friction = drag * a / p["reduction_efficiency"]
     weight = p["gravity_axial"] * moving_mass * G
-    gravity = pd.force_torque(weight, p["lead"], eta, a)
+    # a counterbalance's force: the least (head rising) for the steady thrust, at rest for the holding torque
+    gravity = pd.force_torque(weight - balance_force(p, 1.0), p["lead"], eta, a)
     phases = p.get("duty", ())  # no cycle (a bare parameter dict): the steady thrusts alone
-    # per phase: the inertia and the weight of the mass the phase carries (one evaluation per distinct mass)
-    by_mass = {None: (j_tot, gravity)}
+    # per phase: the inertia and the weight of the mass the phase carries (one evaluation per distinct mass), the
+    # weight net of a counterbalance's force in the phase's direction (one per distinct mass and direction)
+    by_mass = {None: (j_tot, moving_mass)}
     for ph in phases:
         if ph.moving_mass not in by_mass:
             m = phase_moving_mass(p, moving_mass, ph.moving_mass)
-            by_mass[ph.moving_mass] = (drive_inertias(p, m)[0] + j_rotor,
-                                       pd.force_torque(p["gravity_axial"] * m * G, p["lead"], eta, a))
+            by_mass[ph.moving_mass] = (drive_inertias(p, m)[0] + j_rotor, m)
+    weights = _net_weights(p, phases, {k: v[1] for k, v in by_mass.items()},
+                           lambda w: pd.force_torque(w, p["lead"], eta, a))
     torques = pd.phase_torques(phases, [by_mass[ph.moving_mass][0] for ph in phases], p["lead"], friction,
-                               [by_mass[ph.moving_mass][1] for ph in phases], eta, a, hold_friction)
+                               [weights[ph.moving_mass, ph.direction] for ph in phases], eta, a, hold_friction)
     durations = [ph.duration for ph in phases]
     t_rms = pd.linear_rms_torque(torques, durations) if phases else 0.0 * friction
     # each distinct torque pair's largest |torque|, and the largest over the pairs that run at each phase speed
@@ -162,7 +171,7 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     # holding a vertical axis at standstill (THK A-745: T_S = (m g - f) P_h / 2 pi eta, guide friction
     # credited): the brake holds wherever the power fails, so with the heaviest mass the table carries (the
     # axis's moving_mass), or a dwell's weight and force if larger; times the brake safety factor
-    hold = p["gravity_axial"] * pd.holding_torque(weight, hold_friction, p["lead"], eta, a)
+    hold = p["gravity_axial"] * pd.holding_torque(weight - balance_force(p, 0.0), hold_friction, p["lead"], eta, a)
     for ph, (t0, _) in zip(phases, torques):
         if ph.direction == 0.0:
             hold = mx.fmax(hold, t0)
@@ -226,6 +235,18 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
         "output_peak_torque": out_peak, "output_rms_torque": out_rms, "output_thrust_torque": out_thrust,
         "output_mean_thrust_torque": out_thrust_mean, "output_torques": out_torques,
     })
+    return out
+
+
+def _net_weights(p, phases, masses: dict, torque) -> dict:
+    """{(entry mass, direction): the torque ``torque(F)`` of the weight of the phase's mass less a counterbalance's
+    force in the phase's direction (:func:`axisopt.model.loads.balance_force`)}, one object per distinct pair (the
+    phases that share one share their torque pair, physics.drive.phase_torques)."""
+    out: dict = {}
+    for ph in phases:
+        key = (ph.moving_mass, ph.direction)
+        if key not in out:
+            out[key] = torque(p["gravity_axial"] * masses[ph.moving_mass] * G - balance_force(p, ph.direction))
     return out
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 from .. import mathx as mx
+from ..physics import counterbalance as pcb
 from ..physics import guides as pg
 from ..physics import motion
 from ..physics import thermal as pt
@@ -17,6 +18,41 @@ G = 9.80665
 NUT_ON_TURNING_SCREW = {"nut_rotating": 0.0, "unit_inertia": 0.0, "unit_max_speed": 1.0,
                         "unit_bearing_dynamic_load": 1.0, "unit_bearing_static_load": 1.0,
                         "unit_bearing_preload": 0.05, "unit_bearing_stiffness": 1.0, "unit_bearing_torque": 0.0}
+
+
+# No counterbalance: what a parameter dict without the counterbalance parameters (a test's, an older caller's)
+# stands for (model.params.counterbalance_params gives the same for an axis without one)
+NO_COUNTERBALANCE = {"balance_mass": 0.0, "balance_efficiency": 1.0, "balance_moving_mass": 0.0, "balance_force": 0.0}
+
+
+def balance(p, name):
+    """A counterbalance parameter of ``p``, or its value without a counterbalance when ``p`` has none."""
+    return p[name] if name in p else NO_COUNTERBALANCE[name]
+
+
+def balance_force(p, direction):
+    r"""Force of the counterbalance on the head along the axis (up) [N], the head moving in ``direction`` (+1 up,
+    -1 down, 0 at rest): the counterweight's pull through its chain's efficiency
+    (:func:`axisopt.physics.counterbalance.counterweight_force`) plus a cylinder's force at the worst end of its
+    range (chosen once for the axis, model.params.counterbalance_params); 0 on a horizontal axis.
+
+    .. math:: F_b = g_{ax} (m_c\,g\,\eta_p^{s} + F_{cyl})
+
+    The counterweight's inertia is not in it: its mass (and the chain's, a cylinder's piston) moves with the head,
+    so it joins the mass the drive accelerates (``balance_moving_mass``, Yaskawa Sigma-7 11.2.1:
+    J_L1 = (M + M_c)(P_B / 2 pi)^2)."""
+    return p["gravity_axial"] * (pcb.counterweight_force(balance(p, "balance_mass"), balance(p, "balance_efficiency"),
+                                                         direction) + balance(p, "balance_force"))
+
+
+def balance_summary(p, moving) -> dict:
+    """What a counterbalance takes off the head [N]: its force up at rest, rising and lowering
+    (:func:`balance_force`), the head's weight (``moving`` [kg]: table + workpiece, nut and blocks) and the net
+    weight the screw carries at rest."""
+    weight = p["gravity_axial"] * moving * G
+    rest = balance_force(p, 0.0)
+    return {"rest": rest, "rising": balance_force(p, 1.0), "lowering": balance_force(p, -1.0), "weight": weight,
+            "net": weight - rest}
 
 
 def unit(p, name):
@@ -61,7 +97,9 @@ def life_rows(p, moving, f_guides) -> list[dict]:
     """The life checks' load cases, one per duty-cycle phase group that travels: ``load`` the signed axial load on
     the nut [N] (+ along the axis's positive direction, up on a vertical axis), ``travel`` the travel under it [m],
     and what makes the load: ``direction`` (+1/-1), ``acceleration`` (the phases' mean) [m/s^2], ``mass`` the
-    moving mass [kg], ``friction`` the guide friction [N], ``process`` the process force [N] and ``weight`` [N].
+    moving mass [kg], ``friction`` the guide friction [N], ``process`` the process force [N] and ``weight`` [N]
+    (the weight less a counterbalance's force in the phase's direction, :func:`balance_force`; the
+    counterbalance's moving mass accelerates with the head).
 
     A duty cycle of the user's: per phase, with the phase's moving mass m (an entry's own ``moving_mass``, a
     workpiece loaded or unloaded, else the axis's), the inertia force at the phase's mean acceleration, the
@@ -78,13 +116,14 @@ def life_rows(p, moving, f_guides) -> list[dict]:
             m = phase_moving_mass(p, moving, mass)
             f_fric = f_guides if mass is None else guide_friction(p, mass, p["max_speed"])[1]
             f_proc = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
-            weight = p["gravity_axial"] * m * G
-            rows.append({"load": m * mean_acc + direction * (f_fric + f_proc) + weight, "travel": dist,
+            weight = p["gravity_axial"] * m * G - balance_force(p, direction)  # net of a counterbalance
+            accelerated = m + balance(p, "balance_moving_mass")
+            rows.append({"load": accelerated * mean_acc + direction * (f_fric + f_proc) + weight, "travel": dist,
                          "direction": direction, "acceleration": mean_acc, "mass": m, "friction": f_fric,
                          "process": f_proc, "weight": weight})
     if not rows:
-        weight = p["gravity_axial"] * moving * G
         for direction in (1.0, -1.0):
+            weight = p["gravity_axial"] * moving * G - balance_force(p, direction)
             rows.append({"load": direction * (p["mean_axial_load"] + f_guides) + weight, "travel": 0.5,
                          "direction": direction, "acceleration": 0.0, "mass": moving, "friction": f_guides,
                          "process": p["mean_axial_load"], "weight": weight})
@@ -115,11 +154,15 @@ def axial_loads(p, moving) -> dict:
     """Axial forces on the screw [N]: the largest (cutting + inertia + friction + weight) and the mean one
     for life; guide friction at max speed and the normal load per block; the screw pretension and the
     thermal force of a fixed-fixed screw; the static load this leaves on a support-bearing set; the guide
-    friction at standstill (THK's f, credited to the holding torque, A-745)."""
+    friction at standstill (THK's f, credited to the holding torque, A-745).  With a counterbalance the weight
+    is net of its force (:func:`balance_force`): the largest load the larger of the head rising (the least
+    balance) and lowering (the most, an overbalanced head pushing up), the mean one at rest; its moving mass
+    accelerates with the head."""
     n_block, f_guides = guide_friction(p, p["table_mass"], p["max_speed"])
     gravity = p["gravity_axial"] * moving * G
-    f_max = p["axial_load"] + moving * p["acceleration"] + f_guides + gravity
-    f_mean = p["mean_axial_load"] + f_guides + gravity
+    net = mx.fmax(gravity - balance_force(p, 1.0), balance_force(p, -1.0) - gravity)  # = gravity without one
+    f_max = p["axial_load"] + (moving + balance(p, "balance_moving_mass")) * p["acceleration"] + f_guides + net
+    f_mean = p["mean_axial_load"] + f_guides + mx.fmax(gravity - balance_force(p, 0.0), balance_force(p, 0.0) - gravity)
     ff = p["bearing_sets"] - 1.0  # 1 for fixed-fixed
     k_set = bearing_set_stiffness(p)
     # pretension, fixed-fixed only: 'auto' is the force that absorbs the vendor's design rise, E A alpha dT_design

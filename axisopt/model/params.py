@@ -8,6 +8,7 @@ import numpy as np
 
 from ..catalog import ARRANGEMENT_ROWS, COLUMNS
 from ..design import PRETENSION_RISE, TEMPERATURE_RISE
+from ..physics import counterbalance as pcb
 from ..physics.bearings import STATIC_SAFETY_MACHINE_TOOL, housing_stiffness_default, support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
 from ..physics.nut import bracket_stiffness_default, nut_stiffness_catalog
@@ -60,6 +61,9 @@ PARAM_NAMES = (
     # driven rotating-nut unit (model.rotnut; 0 / neutral values for a nut on a rotating screw)
     "nut_rotating", "unit_inertia", "unit_max_speed", "unit_bearing_dynamic_load", "unit_bearing_static_load",
     "unit_bearing_stiffness", "unit_bearing_torque", "unit_bearing_preload",
+    # counterbalance of a vertical axis (issue 40; model.loads.balance_force): the counterweight and its chain's
+    # efficiency, the mass moving with the head besides it, a balance cylinder's force at its worst end
+    "balance_mass", "balance_efficiency", "balance_moving_mass", "balance_force",
 )
 
 
@@ -157,8 +161,28 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
     p.update(mount_compliances(axis, p))
     p.update(carriage_params(axis))
     p.update(drive_params(axis, motor, coupling, reduction))
+    p.update(counterbalance_params(axis))
     p["duty"] = axis.phases
     return p
+
+
+def counterbalance_params(axis) -> dict:
+    """The counterbalance's parameters (SI; model.loads.balance_force): a counterweight's mass m_c and its chain's
+    efficiency, the mass that moves with the head besides it (the counterweight and its chain, a cylinder's
+    piston), and a balance cylinder's force at the end of its range (over the stroke, with the pressure
+    tolerance, physics.counterbalance.cylinder_force_range) that leaves the screw the largest net weight
+    (physics.counterbalance.cylinder_worst_force), chosen with the head's weight from axis.moving_mass (table +
+    workpiece; nut and blocks, a few per cent, left out of the choice).  Without a counterbalance: 0, 1, 0, 0."""
+    cb = axis.counterbalance
+    if cb is None:
+        return {"balance_mass": 0.0, "balance_efficiency": 1.0, "balance_moving_mass": 0.0, "balance_force": 0.0}
+    if cb.kind == "counterweight":
+        return {"balance_mass": cb.mass, "balance_efficiency": cb.efficiency,
+                "balance_moving_mass": cb.mass + cb.chain_mass, "balance_force": 0.0}
+    lo, hi = pcb.cylinder_force_range(cb.force, cb.force_end, cb.tolerance)
+    worst = pcb.cylinder_worst_force(axis.moving_mass * pcb.G, lo, hi)
+    return {"balance_mass": 0.0, "balance_efficiency": 1.0, "balance_moving_mass": cb.piston_mass,
+            "balance_force": float(worst)}
 
 
 # Estimates for a rotating-nut unit whose vendor prints no figure (catalogs/SOURCES.md, docs/assumptions.md):

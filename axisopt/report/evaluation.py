@@ -12,6 +12,8 @@ from ..design import PRETENSION_RISE, rotating_nut
 from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.limits import CHECK_TABLE
+from ..model.loads import balance_summary
+from ..model.params import axis_params
 from ..model.servo import servo_response
 from ..units import N_PER_UM
 from .lifeloads import life_dict, life_lines
@@ -119,7 +121,43 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "guide_mean_block_load_N": v["guide_mean_load"], "nut_static_safety": v["nut_static_safety"],
         "servo": servo_dict(servo_response(ev), v["kv"]),
         "estimated": [e.to_dict() | {"moves": w} for e, w in estimates(ev) if w],
-    }
+    } | ({"counterbalance": counterbalance_dict(ev)} if axis.counterbalance is not None else {})
+
+
+def _balance(ev: Evaluation) -> dict:
+    d = ev.design
+    p = axis_params(d.axis, d.screw, d.nut, d.bearing, d.guide, d.motor, d.coupling, d.reduction)
+    return {k: float(x) for k, x in balance_summary(p, float(ev.values["moving_mass"])).items()}
+
+
+def counterbalance_dict(ev: Evaluation) -> dict:
+    """A counterbalance's kind and sizes and what it takes off the head [N] (JSON)."""
+    cb = ev.design.axis.counterbalance
+    b = _balance(ev)
+    sizes = ({"mass_kg": cb.mass, "efficiency": cb.efficiency, "chain_mass_kg": cb.chain_mass}
+             if cb.kind == "counterweight" else
+             {"force_N": cb.force, "force_at_end_N": cb.force_end, "tolerance": cb.tolerance,
+              "piston_mass_kg": cb.piston_mass})
+    return {"kind": cb.kind, **sizes, "force_at_rest_N": b["rest"], "force_rising_N": b["rising"],
+            "force_lowering_N": b["lowering"], "head_weight_N": b["weight"], "net_weight_on_screw_N": b["net"]}
+
+
+def counterbalance_lines(ev: Evaluation) -> list:
+    """``evaluate``'s counterbalance line: what it is and the weight it leaves on the screw."""
+    cb = ev.design.axis.counterbalance
+    if cb is None:
+        return []
+    b = _balance(ev)
+    if cb.kind == "counterweight":
+        what = (f"counterweight {cb.mass:,.0f} kg (chain efficiency {cb.efficiency:g}"
+                + (f", chain {cb.chain_mass:g} kg" if cb.chain_mass else "") + f"): {b['rest']:,.0f} N up at rest, "
+                f"{b['rising']:,.0f} N rising, {b['lowering']:,.0f} N lowering")
+    else:
+        what = (f"cylinder {cb.force:,.0f}..{cb.force_end:,.0f} N over the stroke +/- {cb.tolerance * 100:g} %: "
+                f"{b['rest']:,.0f} N taken (the end that loads the drive most)")
+    text = (f"counterbalance: {what}; the screw carries {b['net']:,.0f} N of the head's {b['weight']:,.0f} N "
+            "at rest")
+    return textwrap.wrap(text, WIDTH, initial_indent="  ", subsequent_indent="    ")
 
 
 def _finite(x):
@@ -136,6 +174,7 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.append(f"design {d.name}")
     lines.append(f"  {a.mounting}, stroke {a.stroke * 1e3:.0f} mm, span {a.span * 1e3:.0f} mm, "
                  f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks)")
+    lines.extend(counterbalance_lines(ev))
     parts = [f"screw {ids['screw']}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
              f"bearings {ids['bearing']}", f"guides {ids['guide']} x{a.guide_blocks}"]
     parts += [f"{slot} {ids[slot]}" for slot in ("motor", "coupling", "reduction") if slot in ids]

@@ -93,6 +93,26 @@ def test_random_catalog_with_drive_and_frequency_equals_exhaustive():
     _agrees(solve(p, "scip", time_limit=20), solve(p, "exhaustive", top=1, sensitivities=False))
 
 
+def test_random_catalog_with_counterweight_equals_exhaustive():
+    """A counterweighted vertical axis with a drive: the one-hot MINLP sees the balance force in the loads and the
+    counterweight's inertia and weight in the motor torques as the default method does."""
+    from dataclasses import replace
+
+    from axisopt.design import Counterbalance
+
+    rng = np.random.default_rng(105)
+    cat = make_catalog(rng, n_screws=3, nuts_per_screw=2, n_bearings=3, n_guides=2)
+    make_double(cat)
+    cat = add_drives(cat, rng, n_motors=3, n_couplings=2)
+    p = make_problem(cat, mode="stiffness", limits={"max_cost": 5000.0, "max_drag_torque": 1.5},
+                     moving_mass=200.0, orientation="vertical", axial_load=1500.0,
+                     counterbalance=Counterbalance("counterweight", mass=150.0, efficiency=0.9, chain_mass=5.0))
+    p = replace(p, restrictions=replace(p.restrictions, drive=True))
+    e = solve(p, "exhaustive", top=1, sensitivities=False)
+    assert e.best is not None
+    _agrees(solve(p, "scip", time_limit=20), e)
+
+
 def test_random_catalog_with_reductions_equals_exhaustive():
     """(motor, coupling, reduction or none) drives: the one-hot MINLP over the guide-and-drive entries sees the
     reduction's parameters (ratio, efficiency, input inertia, T2B/T2N, n1Max, Ct21, backlash, price) as the

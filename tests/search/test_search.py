@@ -241,6 +241,46 @@ def test_default_equals_exhaustive_with_phase_masses_and_forces(seed):
     assert d.best.design.axis.load_factor_eff == pytest.approx(1.5)  # THK Table 19 at 18 m/min
 
 
+@pytest.mark.parametrize("seed", [1, 2, 3, 4, 5, 6])
+def test_default_equals_exhaustive_with_counterbalance(seed):
+    """A counterweighted (even seeds, its chain's efficiency and mass drawn) or cylinder-balanced (odd seeds, a force
+    over the stroke with its tolerance, over- or underbalanced) vertical axis with a duty cycle of phase masses,
+    motor and coupling searched: the balance force in every phase load, the motor torques, inertia, holding
+    torque and lift-off; the default method still equals exhaustive enumeration."""
+    from dataclasses import replace
+
+    from axisopt.design import Counterbalance
+    from axisopt.physics.motion import Segment
+
+    rng = np.random.default_rng(700 + seed)
+    cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
+    make_double(cat)
+    cat = add_drives(cat, rng, n_motors=4, n_couplings=2)
+    mass = float(rng.uniform(100, 250))
+    if seed % 2 == 0:
+        cb = Counterbalance("counterweight", mass=float(rng.uniform(0.3, 0.95)) * mass,
+                            efficiency=float(rng.uniform(0.85, 1.0)), chain_mass=float(rng.uniform(0, 10)))
+    else:
+        f0 = float(rng.uniform(0.5, 1.2)) * mass * 9.80665
+        cb = Counterbalance("cylinder", force=f0, force_at_end=f0 * float(rng.uniform(1.0, 1.2)),
+                            tolerance=float(rng.uniform(0.0, 0.1)), piston_mass=float(rng.uniform(0, 5)))
+    duty = (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+            Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=float(rng.uniform(500, 2500))),
+            Segment("dwell", duration=1.0, moving_mass=0.8 * mass),
+            Segment("move", distance=-0.2, speed=0.3, acceleration=4.0, moving_mass=0.8 * mass))
+    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
+    p = make_problem(cat, limits=limits, moving_mass=mass, axial_load=1500.0, orientation="vertical",
+                     duty_cycle=duty, counterbalance=cb, required_life=float(rng.uniform(3e3, 1e4)) * 3600)
+    p = replace(p, restrictions=replace(p.restrictions, drive=True),
+                margins=tuple((c, 1.0) for c in model.CHECKS))
+    d = solve(p, "default", top=2, sensitivities=False)
+    e = solve(p, "exhaustive", top=2, sensitivities=False)
+    assert (d.best is None) == (e.best is None)
+    assert d.best is not None  # the seeds are chosen so that each case has an optimum
+    assert_same_answer(d, e)
+    assert d.best.design.axis.counterbalance == cb
+
+
 def _drive_problem(seed, axis_coupling):
     """A synthetic drive problem whose two couplings are both stiffer than the axis's stand-in value."""
     from dataclasses import replace
