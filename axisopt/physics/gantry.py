@@ -5,25 +5,24 @@ papers: a rigid bridge of mass :math:`m_b` and yaw inertia :math:`J_b` (about it
 the axis (:math:`x`) and yawing (:math:`\theta`, racking), a cross carriage of mass :math:`m_c` on it at the
 cross position :math:`y` (from the bridge centre), two axial drives at :math:`y_1 = -L/2` and
 :math:`y_2 = +L/2` modelled as springs :math:`k_1, k_2` (each side's axial chain: screw, nut, bearings), and
-optionally the guides' yaw stiffness :math:`k_g`.  References (model structure; their equations of motion
-in :math:`(x, \theta)` with the cross carriage's position entering the mass matrix and the two drive
-forces acting at :math:`\pm L/2`):
+optionally the guides' yaw stiffness :math:`k_g`.  References (model structure):
 
-[1] K. K. Tan, S. Y. Lim, S. Huang, H. F. Dou, T. S. Giam, "Coordinated motion control of moving gantry
-    stages for precision applications based on an observer-augmented composite controller", IEEE Trans.
-    Control Systems Technology 12(6), 2004 (the H-type gantry with the yaw DOF).
-[2] C. S. Teo, K. K. Tan, S. Y. Lim, S. Huang, E. B. Tay, "Dynamic modeling and adaptive control of a H-type
-    gantry stage", Mechatronics 17(7), 2007, 361-367 (the rigid-body model with the cross carriage's
-    position in the inertia terms).
-[3] M. Garcia-Herreros, X. Kestelyn, J. Gomand, R. Coleman, P.-J. Barre, "Model-based decoupling control
+[1] M. Garcia-Herreros, X. Kestelyn, J. Gomand, R. Coleman, P.-J. Barre, "Model-based decoupling control
     method for dual-drive gantry stages: a case study with experimental validations", Control Engineering
-    Practice 21(3), 2013, 298-307 (the flexible yaw: the drives' axial stiffnesses at +/-L/2 giving a
-    translation and a racking mode).
+    Practice 21(3), 2013 (lumped-parameter model in (X, Theta, Y) by Lagrange: the beam's yaw inertia
+    :math:`M_{22} = J_t + m_h Y^2` with the head at Y from the beam's centre, the drives at +/-L_b/2; as
+    summarised at https://a-lab.ee/edu/node/942).
+[2] H. Lu, W. Fan, X. Zhang, Y. Zhang, S. Wang, M. Duan, "Dynamic characteristics analysis and test of
+    dual-driving feed system driven by center of gravity", Mathematical Problems in Engineering 2018,
+    9490826 (twin ball-screw drives, Lagrange model with the rotation from the moving centre of gravity).
+[3] C. S. Teo, K. K. Tan, S. Y. Lim, S. Huang, E. B. Tay, "Dynamic modeling and adaptive control of a H-type
+    gantry stage", Mechatronics 17(7), 2007 (the rigid-body H-type gantry with the yaw DOF).
 
-The papers' equations were not available to us verbatim: the equations below are DERIVED here (rigid-body
-statics of a beam on two supports and a 2-DOF vibration by Lagrange) in the structure of [1]-[3]; the tests
-check them against closed-form limits (load at the centre = two independent halves; one drive alone = a
-free rigid body on one spring).
+The papers' full equations were not available to us verbatim: the equations below are DERIVED here (rigid-body
+statics of a beam on two supports and a 2-DOF vibration by Lagrange) in the structure of [1] and [2] (their
+mass matrix with the cross carriage's m_c y and m_c y^2 terms; here the drives' axial springs in place of
+[1]'s beam joints); the tests check them against closed-form limits (load at the centre = two independent
+halves; one drive alone = a free rigid body on one spring).
 
 Kinetic energy :math:`T = \tfrac12 m_b \dot x^2 + \tfrac12 J_b \dot\theta^2 + \tfrac12 m_c(\dot x +
 y\dot\theta)^2`, potential energy :math:`V = \tfrac12 k_1 (x - \theta L/2)^2 + \tfrac12 k_2 (x + \theta
