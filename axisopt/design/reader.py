@@ -13,8 +13,18 @@ from ..errors import InputError
 from ..parttable import Row
 from ..physics import motion
 from ..yamlio import Section, read_yaml
-from .axis import BRAKE_MODES, Axis, Design
-from .keys import AXIS_KINDS, AXIS_NUMBERS, AXIS_SPEC, DESIGN_SPEC, DWELL_SPEC, MOVE_SPEC, PART_SPECS, SEGMENT_LIMIT
+from .axis import BRAKE_MODES, Axis, Design, TwinDrive
+from .keys import (
+    AXIS_KINDS,
+    AXIS_NUMBERS,
+    AXIS_SPEC,
+    DESIGN_SPEC,
+    DWELL_SPEC,
+    MOVE_SPEC,
+    PART_SPECS,
+    SEGMENT_LIMIT,
+    TWIN_SPEC,
+)
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:
@@ -49,9 +59,29 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     if v is not None:
         kw["load_factor"] = float(v)
     _check_carriage(sec, kw)
+    if sec.has("twin_drive"):
+        kw["twin_drive"] = read_twin_drive(sec, kw)
     sec.done()
-    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw)
+    # twin_drive: one drive when absent, not a default value the results name
+    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw and f.name != "twin_drive")
     return Axis(**kw), assumed
+
+
+def read_twin_drive(sec: Section, kw: dict) -> TwinDrive:
+    """``twin_drive: {span, cross_stroke, cross_mass, bridge_yaw_inertia}`` (:class:`TwinDrive`).  A horizontal
+    axis only: on a vertical axis the drives would carry the weight and a wall-mounted bridge hangs across its
+    rails, neither in the model (:mod:`axisopt.model.gantry`); the cross stroke stays between the drives."""
+    sub = sec.read("twin_drive")
+    tw = {name: sub.read(name) for name in TWIN_SPEC.keys}
+    sub.done()
+    orientation = kw.get("orientation", "horizontal")
+    if orientation != "horizontal":
+        raise sec.error("twin_drive", f"a twin drive is a horizontal gantry's; this axis is {orientation} (the "
+                        "model has no share of the weight per drive)")
+    if tw["cross_stroke"] > tw["span"] * (1 + 1e-9):
+        raise sub.error("cross_stroke", f"{tw['cross_stroke'] * 1e3:g} mm is more than the span between the drives "
+                        f"({tw['span'] * 1e3:g} mm): the cross carriage would leave the bridge")
+    return TwinDrive(**{k: v for k, v in tw.items() if v is not None})
 
 
 def _check_carriage(sec: Section, kw: dict) -> None:

@@ -107,7 +107,7 @@ def masses(p) -> dict:
     screw_mass = p["screw_mass_per_length"] * p["span"]
     moving = p["table_mass"] + (1.0 + twin) * p["nut_mass"] + p["guide_blocks"] * p["guide_block_mass"]
     rails_mass = p["rails"] * p["rail_length"] * p["guide_rail_mass_per_length"]
-    total = moving + (1.0 + twin) * (screw_mass + p["bearing_sets"] * p["bearing_mass"]) + rails_mass
+    total = moving + (1.0 + twin) * screw_mass + rails_mass + (1.0 + twin) * (p["bearing_sets"] * p["bearing_mass"])
     return {"moving_mass": side_moving_mass(p, moving), "gantry_moving_mass": moving, "screw_mass": screw_mass,
             "total_mass": total}
 
