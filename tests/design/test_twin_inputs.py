@@ -14,7 +14,6 @@ from axisopt.cli import main
 from axisopt.design import load_design
 from axisopt.design.writer import design_to_yaml
 from axisopt.physics import gantry as pg
-from axisopt.problem import load_problem
 
 ROOT = Path(__file__).resolve().parents[2]
 TWIN = ("  twin_drive:\n    span: 1000 mm\n    cross_stroke: 600 mm\n    cross_mass: 150 kg\n")
