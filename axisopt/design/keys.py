@@ -43,8 +43,12 @@ DWELL_SPEC = Spec("dwell", "a dwell of the duty cycle", {
 })
 # A twin-drive gantry (issue 40, model.gantry): two synchronised drives with the same parts under one bridge (the
 # axis's moving_mass) with a cross carriage; the bounds keep machine-tool sizes (a bridge up to 50 m wide)
-TWIN_SPEC = Spec("twin_drive", "two synchronised screw drives (the same parts on both sides) under a bridge with a "
-                 "cross carriage: a horizontal gantry only", {
+TWIN_SPEC = Spec("twin_drive", "two synchronised screw drives (the same parts on both sides) under a bridge (the "
+                 "axis's moving_mass) with a cross carriage: a horizontal gantry only (refused on a vertical or wall "
+                 "axis).  Each drive is checked on the governing side with the cross carriage at the end of its "
+                 "stroke nearest it (its share 1/2 + cross_stroke / 2 span of the process force, half the bridge and "
+                 "that share of the cross carriage); the gantry's translation and racking (yaw) modes enter the 1st "
+                 "frequency; cost and mass count both drives", {
     "span": _axis_q("length", "between the two drives (screw axes)", required=True, maximum=(50.0, "50 m")),
     "cross_stroke": _axis_q("length", "the cross carriage's travel across the bridge, centred, at most span",
                             required=True, zero=True, maximum=(50.0, "50 m")),
