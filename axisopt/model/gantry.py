@@ -22,6 +22,8 @@ model exactly (x * 1.0, x + 0.0, min(f, 1e30)), with no branch on a value that m
 
 from __future__ import annotations
 
+import numpy as np
+
 from .. import mathx as mx
 from ..physics import gantry as pg
 
@@ -36,6 +38,14 @@ TWIN_PARAMS = tuple(SINGLE)
 def tp(p, name):
     """A twin-drive parameter of ``p``, or its single-drive value when ``p`` has none (a bare parameter dict)."""
     return p[name] if name in p else SINGLE[name]
+
+
+def single_drive(p) -> bool:
+    """True when ``p`` is certainly one drive: ``twin`` a number (not a CasADi symbol) that is 0 everywhere.  The
+    gantry's modes are then left out of the expressions (no 2-DOF eigenvalues on millions of screened
+    combinations, no 1e30 terms in a MINLP's relaxation); a symbolic ``twin`` keeps them."""
+    t = tp(p, "twin")
+    return not mx.is_symbolic(t) and not np.any(np.asarray(t) != 0.0)
 
 
 def gantry_params(axis) -> dict:
@@ -87,9 +97,11 @@ def gantry_modes(p, k_total, moving, moving_side, m_eff, k_guides) -> dict:
     f_low = lows[0]
     for f in lows[1:]:
         f_low = mx.fmin(f_low, f)
+    k_rack = pg.yaw_stiffness(k_total, k_total, span, k_guides)
+    if not mx.is_symbolic(t):  # a twin drive (one drive never comes here as numbers: model.modes)
+        return {"f_gantry": f_low, "f_racking": hi, "k_racking": k_rack}
     off = (1.0 - t) * NO_MODE
-    return {"f_gantry": f_low + off, "f_racking": hi + off,
-            "k_racking": pg.yaw_stiffness(k_total, k_total, span, k_guides) + off}
+    return {"f_gantry": f_low + off, "f_racking": hi + off, "k_racking": k_rack + off}
 
 
 def pair_cost(p):

@@ -9,7 +9,7 @@ from ..physics import damping as pdm
 from ..physics import dynamics as pdy
 from ..physics import screw as ps
 from .chain import drive_torsional_stiffness
-from .gantry import NO_MODE, gantry_modes, tp
+from .gantry import NO_MODE, gantry_modes, single_drive, tp
 from .loads import unit
 
 # Material damping ratio of steel structures, seed Table 5 (0.001-0.002).
@@ -28,8 +28,13 @@ def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None, whole=None
     f_table = mx.sqrt(p["guide_blocks"] * p["guide_normal_stiffness"] / whole) / (2.0 * math.pi)
     f1 = mx.fmin(f_axial, f_table)
     out = {"m_eff": m_eff, "f_axial": f_axial, "f_table": f_table}
-    if rock is not None:
-        f1 = mx.fmin(f1, mx.fmin(rock["f_pitch"], rock["f_yaw"] + tp(p, "twin") * NO_MODE))
+    if rock is not None and single_drive(p):
+        f1 = mx.fmin(f1, mx.fmin(rock["f_pitch"], rock["f_yaw"]))
+        out.update({k: NO_MODE + 0.0 * chain["k_total"] for k in ("f_gantry", "f_racking", "k_racking")})
+    elif rock is not None:
+        t = tp(p, "twin")  # a twin drive: its racking takes the place of the guides-only yaw mode
+        yaw = rock["f_yaw"] + t * NO_MODE if mx.is_symbolic(t) else NO_MODE
+        f1 = mx.fmin(f1, mx.fmin(rock["f_pitch"], yaw))
         gm = gantry_modes(p, chain["k_total"], whole, moving, m_eff, rock["k_yaw"])
         f1 = mx.fmin(f1, gm["f_gantry"])
         out.update(gm)
