@@ -5,12 +5,13 @@ dataclasses; the YAML keys are declared in :mod:`.keys`, read in :mod:`.reader`,
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 from ..display import fmt, one_line
 from ..physics import motion
 from ..physics.checks import load_factor_default
+from ..physics.gantry import side_shares
 
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
 
@@ -92,6 +93,23 @@ class Counterbalance:
 
 
 @dataclass(frozen=True)
+class TwinDrive:
+    """A twin-drive gantry (issue 40, :mod:`axisopt.model.gantry`): two synchronised screw drives with the same
+    parts, ``span`` apart, under a bridge (the axis's ``moving_mass``) with a cross carriage of ``cross_mass`` moving
+    ``cross_stroke`` across it, centred between the drives.  SI units."""
+
+    span: float  # between the two drives (screw axes) [m]
+    cross_stroke: float  # the cross carriage's travel, centred on the bridge, at most span [m]
+    cross_mass: float = 0.0  # cross carriage with its head [kg]
+    bridge_yaw_inertia: float | None = None  # bridge about its centre [kg m^2]; None: m L^2 / 12 (an estimate)
+
+    @property
+    def force_share(self) -> float:
+        """The governing side's share of a force on the cross carriage at the end of its stroke [-]."""
+        return float(side_shares(self.cross_stroke, self.span))
+
+
+@dataclass(frozen=True)
 class Axis:
     """What the machine asks of the axis.  SI units."""
 
@@ -158,6 +176,8 @@ class Axis:
     bearing_static_safety: float | None = None
     nut_lift_off_safety: float = NUT_LIFT_OFF_SAFETY  # least nut lift-off force / largest axial force
     counterbalance: Counterbalance | None = None  # a vertical axis's counterweight or balance cylinder
+    # a twin-drive gantry (two drives under one bridge, TwinDrive); None: one drive
+    twin_drive: TwinDrive | None = None
 
     @property
     def load_factor_eff(self) -> float:
@@ -199,7 +219,11 @@ class Axis:
         """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move.  ``heat``:
         the heat balance sets the temperature rise (a duty cycle and no ``temperature_rise``)."""
         segs = self.duty_cycle or motion.rapid_cycle(self.stroke, self.max_speed, self.acceleration, self.jerk)
-        return motion.Phases(motion.cycle_phases(segs), heat=self.temperature_rise is None and bool(self.duty_cycle),
+        phases = motion.cycle_phases(segs)
+        if self.twin_drive is not None:  # each drive: the governing side's share of the process force
+            share = self.twin_drive.force_share
+            phases = [replace(ph, force=share * ph.force) for ph in phases]
+        return motion.Phases(phases, heat=self.temperature_rise is None and bool(self.duty_cycle),
                              given=bool(self.duty_cycle))
 
     @property

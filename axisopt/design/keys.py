@@ -59,6 +59,22 @@ COUNTERBALANCE_SPEC = Spec("counterbalance", "a vertical axis's counterweight or
 # the keys of each kind (the others are refused: a counterweight has no force)
 COUNTERBALANCE_KEYS = {"none": ("kind",), "counterweight": ("kind", "mass", "efficiency", "chain_mass"),
                        "cylinder": ("kind", "force", "force_at_end", "tolerance", "piston_mass")}
+# A twin-drive gantry (issue 40, model.gantry): two synchronised drives with the same parts under one bridge (the
+# axis's moving_mass) with a cross carriage; the bounds keep machine-tool sizes (a bridge up to 50 m wide)
+TWIN_SPEC = Spec("twin_drive", "two synchronised screw drives (the same parts on both sides) under a bridge (the "
+                 "axis's moving_mass) with a cross carriage: a horizontal gantry only (refused on a vertical or wall "
+                 "axis).  Each drive is checked on the governing side with the cross carriage at the end of its "
+                 "stroke nearest it (its share 1/2 + cross_stroke / 2 span of the process force, half the bridge and "
+                 "that share of the cross carriage); the gantry's translation and racking (yaw) modes enter the 1st "
+                 "frequency; cost and mass count both drives", {
+    "span": _axis_q("length", "between the two drives (screw axes)", required=True, maximum=(50.0, "50 m")),
+    "cross_stroke": _axis_q("length", "the cross carriage's travel across the bridge, centred, at most span",
+                            required=True, zero=True, maximum=(50.0, "50 m")),
+    "cross_mass": _axis_q("mass", "cross carriage with its head (default 0 kg); axis.moving_mass is the bridge",
+                          zero=True, maximum=(1e5, "100 t")),
+    "bridge_yaw_inertia": _axis_q("inertia", "bridge about its centre, normal axis (default, an estimate: a uniform "
+                                  "beam of axis.moving_mass over span, m L^2 / 12)", maximum=(1e7, "1e7 kg.m^2")),
+})
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
 # operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible
 # drive ranges: a belt or gear stage of a feed drive reduces by at most about 1:20 either way (1:50 allowed);
@@ -158,6 +174,8 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "counterbalance": Key("section", "vertical axes: a counterweight {kind: counterweight, mass: 450 kg, efficiency: "
                           "0.95} or a balance cylinder {kind: cylinder, force: 5000 N, force_at_end: 5600 N, "
                           "tolerance: 5 %} taking the head's weight (default: none)", spec=COUNTERBALANCE_SPEC),
+    "twin_drive": Key("section", "a twin-drive gantry: two drives under one bridge (default: one drive)",
+                      spec=TWIN_SPEC),
 })
 AXIS_KINDS = {name: k.kind for name, k in AXIS_SPEC.keys.items() if k.type == "quantity"}
 AXIS_REQUIRED = tuple(name for name, k in AXIS_SPEC.keys.items() if k.required)
@@ -219,5 +237,5 @@ DESIGN_SPEC = Spec("design", "an axis design: the machine's requirements and one
 })
 
 
-__all__ = ["AXIS_SPEC", "MOVE_SPEC", "DWELL_SPEC", "PART_SPECS", "PARTS_SPEC", "DESIGN_SPEC", "NAME_KEY",
+__all__ = ["AXIS_SPEC", "TWIN_SPEC", "MOVE_SPEC", "DWELL_SPEC", "PART_SPECS", "PARTS_SPEC", "DESIGN_SPEC", "NAME_KEY",
            "DESCRIPTION_KEY", "CATALOGS_KEY", "AXIS_KINDS", "AXIS_NUMBERS", "SEGMENT_LIMIT"]

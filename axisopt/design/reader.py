@@ -13,7 +13,7 @@ from ..errors import InputError
 from ..parttable import Row
 from ..physics import motion
 from ..yamlio import Section, close_matches, read_yaml
-from .axis import BRAKE_MODES, Axis, Counterbalance, Design
+from .axis import BRAKE_MODES, Axis, Counterbalance, Design, TwinDrive
 from .keys import (
     AXIS_KINDS,
     AXIS_NUMBERS,
@@ -24,6 +24,7 @@ from .keys import (
     MOVE_SPEC,
     PART_SPECS,
     SEGMENT_LIMIT,
+    TWIN_SPEC,
 )
 
 
@@ -63,9 +64,11 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
         cb = read_counterbalance(sec, kw)
         if cb is not None:
             kw["counterbalance"] = cb
+    if sec.has("twin_drive"):
+        kw["twin_drive"] = read_twin_drive(sec, kw)
     sec.done()
-    # a counterbalance left out is no assumption of a value: the axis has none
-    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw and f.name != "counterbalance")
+    # a counterbalance or twin drive left out is no assumption of a value: the axis has none (one drive)
+    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw and f.name not in ("counterbalance", "twin_drive"))
     return Axis(**kw), assumed
 
 
@@ -111,6 +114,23 @@ def read_counterbalance(sec: Section, kw: dict) -> Counterbalance | None:
                              tolerance=s.read("tolerance", 0.0), piston_mass=s.read("piston_mass", 0.0))
     s.done()
     return out
+
+
+def read_twin_drive(sec: Section, kw: dict) -> TwinDrive:
+    """``twin_drive: {span, cross_stroke, cross_mass, bridge_yaw_inertia}`` (:class:`TwinDrive`).  A horizontal
+    axis only: on a vertical axis the drives would carry the weight and a wall-mounted bridge hangs across its
+    rails, neither in the model (:mod:`axisopt.model.gantry`); the cross stroke stays between the drives."""
+    sub = sec.read("twin_drive")
+    tw = {name: sub.read(name) for name in TWIN_SPEC.keys}
+    sub.done()
+    orientation = kw.get("orientation", "horizontal")
+    if orientation != "horizontal":
+        raise sec.error("twin_drive", f"a twin drive is a horizontal gantry's; this axis is {orientation} (the "
+                        "model has no share of the weight per drive)")
+    if tw["cross_stroke"] > tw["span"] * (1 + 1e-9):
+        raise sub.error("cross_stroke", f"{tw['cross_stroke'] * 1e3:g} mm is more than the span between the drives "
+                        f"({tw['span'] * 1e3:g} mm): the cross carriage would leave the bridge")
+    return TwinDrive(**{k: v for k, v in tw.items() if v is not None})
 
 
 def _check_carriage(sec: Section, kw: dict) -> None:

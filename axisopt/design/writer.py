@@ -10,7 +10,9 @@ from dataclasses import fields
 from ..catalog import SCHEMA, SHIPPED_DIR
 from ..units import DISPLAY_UNITS, unit_factor
 from .axis import Axis, Design
-from .keys import AXIS_KINDS
+from .keys import AXIS_KINDS, TWIN_SPEC
+
+TWIN_KINDS = {name: k.kind for name, k in TWIN_SPEC.keys.items()}
 
 
 def _q(value: float, kind: str) -> str:
@@ -45,6 +47,8 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
             axis[f.name] = [_segment_dict(sg) for sg in v]
         elif f.name == "counterbalance":
             axis[f.name] = _counterbalance_dict(v)
+        elif f.name == "twin_drive":
+            axis[f.name] = {k: _q(getattr(v, k), TWIN_KINDS[k]) for k in TWIN_KINDS if getattr(v, k) is not None}
         else:
             axis[f.name] = v
     parts: dict = {}

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from .. import mathx as mx
 from ..physics import carriage as pcr
+from .gantry import tp
 from .loads import phase_groups, phase_moving_mass
 
 G = 9.80665
@@ -61,7 +62,10 @@ def carriage_loads(p, moving) -> dict:
 
     weight = weight_of(moving)
     y_t, h_t, y_g, h_g = p["tool_offset"], p["tool_height"], p["cg_offset"], p["cg_height"]
-    f_feed, f_cross, f_norm = p["axial_load"], p["cross_load"], p["normal_load"]
+    # a twin drive's parameters carry the governing side's share of the process force (model.gantry): the guides
+    # carry the whole gantry and the whole force (force_share 1 for one drive)
+    fs = tp(p, "force_share")
+    f_feed, f_cross, f_norm = p["axial_load"] / fs, p["cross_load"], p["normal_load"]
 
     def pe_max(forces):
         fn, fy, mp, mr, my = _sum(forces)
@@ -78,10 +82,10 @@ def carriage_loads(p, moving) -> dict:
     for (force, peak, _, direction, mass), _ in groups:
         if force:
             m = phase_moving_mass(p, moving, mass)
-            scale = p["duty_process"] * force * ratio
+            scale = p["duty_process"] * (force / fs) * ratio
             sign = -direction if direction else 1.0
             cases.append([weight_of(m), (-m * peak, 0.0, 0.0, y_g, h_g),
-                          (sign * p["duty_process"] * force, scale * f_cross, scale * f_norm, y_t, h_t)])
+                          (sign * p["duty_process"] * (force / fs), scale * f_cross, scale * f_norm, y_t, h_t)])
     p_max = pe_max(cases[0])
     for c in cases[1:]:
         p_max = mx.fmax(p_max, pe_max(c))
@@ -93,7 +97,7 @@ def carriage_loads(p, moving) -> dict:
         if dist <= 0.0:
             continue
         m = phase_moving_mass(p, moving, mass)
-        f = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
+        f = (p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]) / fs
         scale = f * ratio
         fn, fy, mp, mr, my = _sum([weight_of(m), (-m * mean_acc, 0.0, 0.0, y_g, h_g),
                                    (-direction * f, scale * f_cross, scale * f_norm, y_t, h_t)])

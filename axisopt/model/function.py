@@ -17,7 +17,8 @@ from .response import axis_response
 
 PROFILE_OUTPUTS = ("k_screw", "k_screw_bearings", "k_torsion", "k_drive", "k_total", "f_axial", "f1", "m_eff",
                    "thermal_displacement", "f_axial_torsional", "f_axial_torsional_2", "damping_ratio",
-                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure", "k_tool", "kv")
+                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure", "k_tool", "kv",
+                   "f_gantry", "f_racking", "k_racking")
 SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_bracket", "c_housing", "f_table",
                   "drag_torque", "drag_nut", "drag_bearings", "drag_guides", "moving_mass", "total_mass",
                   "screw_mass", "cost",
@@ -30,7 +31,7 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "duty_time", "guide_max_load", "guide_static_safety", "guide_mean_load", "nut_static_safety",
                   "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking", "friction_power", "heat_transfer",
                   "heat_balance_rise", "temperature_rise", "thermal_growth", "c_unit_bearing", "screw_sag",
-                  "unit_bearing_life",
+                  "unit_bearing_life", "gantry_moving_mass",
                   ) + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
 
 

@@ -10,6 +10,7 @@ from ..physics import counterbalance as pcb
 from ..physics import guides as pg
 from ..physics import motion
 from ..physics import thermal as pt
+from .gantry import side_moving_mass, tp
 
 G = 9.80665
 
@@ -93,7 +94,7 @@ def guide_friction(p, table_mass, speed):
     return n_block, f
 
 
-def life_rows(p, moving, f_guides) -> list[dict]:
+def life_rows(p, moving, f_guides, share=1.0) -> list[dict]:
     """The life checks' load cases, one per duty-cycle phase group that travels: ``load`` the signed axial load on
     the nut [N] (+ along the axis's positive direction, up on a vertical axis), ``travel`` the travel under it [m],
     and what makes the load: ``direction`` (+1/-1), ``acceleration`` (the phases' mean) [m/s^2], ``mass`` the
@@ -114,7 +115,7 @@ def life_rows(p, moving, f_guides) -> list[dict]:
             if dist <= 0.0 or not direction:
                 continue
             m = phase_moving_mass(p, moving, mass)
-            f_fric = f_guides if mass is None else guide_friction(p, mass, p["max_speed"])[1]
+            f_fric = f_guides if mass is None else share * guide_friction(p, mass, p["max_speed"])[1]
             f_proc = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
             weight = p["gravity_axial"] * m * G - balance_force(p, direction)  # net of a counterbalance
             accelerated = m + balance(p, "balance_moving_mass")
@@ -130,19 +131,24 @@ def life_rows(p, moving, f_guides) -> list[dict]:
     return rows
 
 
-def life_loads(p, moving, f_guides) -> tuple[list, list]:
+def life_loads(p, moving, f_guides, share=1.0) -> tuple[list, list]:
     """The signed axial loads [N] and travels [m] of :func:`life_rows`, for the life checks (physics.life)."""
-    rows = life_rows(p, moving, f_guides)
+    rows = life_rows(p, moving, f_guides, share)
     return [r["load"] for r in rows], [r["travel"] for r in rows]
 
 
 def masses(p) -> dict:
-    """Moving mass (table + nut + blocks), screw mass and total mass [kg]."""
+    """Moving mass (table + nut + blocks), screw mass and total mass [kg].  A twin drive (:mod:`.gantry`): the
+    second nut moves too and the second screw and bearing sets count in the total; ``moving_mass`` is then the
+    governing side's share (what each drive moves, :func:`axisopt.model.gantry.side_moving_mass`) and
+    ``gantry_moving_mass`` the whole (what the guides carry; the same as ``moving_mass`` for one drive)."""
+    twin = tp(p, "twin")
     screw_mass = p["screw_mass_per_length"] * p["span"]
-    moving = p["table_mass"] + p["nut_mass"] + p["guide_blocks"] * p["guide_block_mass"]
+    moving = p["table_mass"] + (1.0 + twin) * p["nut_mass"] + p["guide_blocks"] * p["guide_block_mass"]
     rails_mass = p["rails"] * p["rail_length"] * p["guide_rail_mass_per_length"]
-    total = moving + screw_mass + rails_mass + p["bearing_sets"] * p["bearing_mass"]
-    return {"moving_mass": moving, "screw_mass": screw_mass, "total_mass": total}
+    total = moving + (1.0 + twin) * screw_mass + rails_mass + (1.0 + twin) * (p["bearing_sets"] * p["bearing_mass"])
+    return {"moving_mass": side_moving_mass(p, moving), "gantry_moving_mass": moving, "screw_mass": screw_mass,
+            "total_mass": total}
 
 
 def bearing_set_stiffness(p):
@@ -150,15 +156,19 @@ def bearing_set_stiffness(p):
     return 1.0 / (1.0 / p["bearing_stiffness"] + p["housing_compliance"])
 
 
-def axial_loads(p, moving) -> dict:
+def axial_loads(p, moving, whole=None) -> dict:
     """Axial forces on the screw [N]: the largest (cutting + inertia + friction + weight) and the mean one
     for life; guide friction at max speed and the normal load per block; the screw pretension and the
     thermal force of a fixed-fixed screw; the static load this leaves on a support-bearing set; the guide
     friction at standstill (THK's f, credited to the holding torque, A-745).  With a counterbalance the weight
     is net of its force (:func:`balance_force`): the largest load the larger of the head rising (the least
     balance) and lowering (the most, an overbalanced head pushing up), the mean one at rest; its moving mass
-    accelerates with the head."""
+    accelerates with the head.  ``moving`` is the mass the drive
+    moves [kg], ``whole`` the whole moving mass on the guides (default ``moving``): a twin drive's side takes the
+    guide friction in the share moving / whole (:mod:`.gantry`; ``axial_load`` is already the side's share)."""
+    share = 1.0 if whole is None else moving / whole
     n_block, f_guides = guide_friction(p, p["table_mass"], p["max_speed"])
+    f_guides = share * f_guides
     gravity = p["gravity_axial"] * moving * G
     net = mx.fmax(gravity - balance_force(p, 1.0), balance_force(p, -1.0) - gravity)  # = gravity without one
     f_max = p["axial_load"] + (moving + balance(p, "balance_moving_mass")) * p["acceleration"] + f_guides + net
@@ -180,10 +190,10 @@ def axial_loads(p, moving) -> dict:
     # pretension above the thermal push is not credited against the load: conservative, and monotone in the
     # temperature rise, which rises with the nut preload through the heat balance)
     compression = f_max + mx.fmax(d_thermal - pre, 0.0)
-    life, travel = life_loads(p, moving, f_guides)
+    life, travel = life_loads(p, moving, f_guides, share)
     return {"life_loads": life, "life_travels": travel,
             "block_load": n_block, "guide_friction": f_guides,
-            "guide_friction_static": guide_friction(p, p["table_mass"], 0.0)[1], "max_axial_force": f_max,
+            "guide_friction_static": share * guide_friction(p, p["table_mass"], 0.0)[1], "max_axial_force": f_max,
             "mean_axial_force": f_mean, "pretension": pre, "thermal_force": d_thermal,
             "bearing_static_load": static, "screw_compression": compression,
             "screw_tension": f_max + pre}

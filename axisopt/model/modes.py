@@ -9,22 +9,37 @@ from ..physics import damping as pdm
 from ..physics import dynamics as pdy
 from ..physics import screw as ps
 from .chain import drive_torsional_stiffness
+from .gantry import NO_MODE, gantry_modes, single_drive, tp
 from .loads import unit
 
 # Material damping ratio of steel structures, seed Table 5 (0.001-0.002).
 STEEL_DAMPING = 0.002
 
 
-def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None) -> dict:
+def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None, whole=None) -> dict:
     """Axial mode (motor held, Rayleigh screw mass), the table's bounce mode on the guide blocks and, given the
-    rocking modes (``model.carriage.rocking``: pitch and yaw), the first of them all [Hz]."""
+    rocking modes (``model.carriage.rocking``: pitch and yaw), the first of them all [Hz].  ``moving`` is the mass
+    the drive moves, ``whole`` the whole moving mass (default ``moving``; a twin drive: its side's share and the
+    gantry, whose 2-DOF translation and racking modes take the place of the guides-only yaw mode in the minimum,
+    :func:`axisopt.model.gantry.gantry_modes`)."""
+    whole = moving if whole is None else whole
     m_eff = pdy.effective_axial_mass(moving, screw_mass, x, p["span"], mounting)
     f_axial = pdy.axial_natural_frequency(chain["k_total"], m_eff)
-    f_table = mx.sqrt(p["guide_blocks"] * p["guide_normal_stiffness"] / moving) / (2.0 * math.pi)
+    f_table = mx.sqrt(p["guide_blocks"] * p["guide_normal_stiffness"] / whole) / (2.0 * math.pi)
     f1 = mx.fmin(f_axial, f_table)
-    if rock is not None:
+    out = {"m_eff": m_eff, "f_axial": f_axial, "f_table": f_table}
+    if rock is not None and single_drive(p):
         f1 = mx.fmin(f1, mx.fmin(rock["f_pitch"], rock["f_yaw"]))
-    return {"m_eff": m_eff, "f_axial": f_axial, "f_table": f_table, "f1": f1}
+        out.update({k: NO_MODE + 0.0 * chain["k_total"] for k in ("f_gantry", "f_racking", "k_racking")})
+    elif rock is not None:
+        t = tp(p, "twin")  # a twin drive: its racking takes the place of the guides-only yaw mode
+        yaw = rock["f_yaw"] + t * NO_MODE if mx.is_symbolic(t) else NO_MODE
+        f1 = mx.fmin(f1, mx.fmin(rock["f_pitch"], yaw))
+        gm = gantry_modes(p, chain["k_total"], whole, moving, m_eff, rock["k_yaw"])
+        f1 = mx.fmin(f1, gm["f_gantry"])
+        out.update(gm)
+    out["f1"] = f1
+    return out
 
 
 def drive_inertias(p):

@@ -12,6 +12,7 @@ from ..physics import counterbalance as pcb
 from ..physics.bearings import STATIC_SAFETY_MACHINE_TOOL, housing_stiffness_default, support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
 from ..physics.nut import bracket_stiffness_default, nut_stiffness_catalog
+from .gantry import TWIN_PARAMS, gantry_params
 
 # A guide row without a rating basis: 50 km, the shorter of the vendors' two bases (a C defined for 100 km and
 # read as a 50 km rating halves the life, never doubles it)
@@ -64,7 +65,8 @@ PARAM_NAMES = (
     # counterbalance of a vertical axis (issue 40; model.loads.balance_force): the counterweight and its chain's
     # efficiency, the mass moving with the head besides it, a balance cylinder's force at its worst end
     "balance_mass", "balance_efficiency", "balance_moving_mass", "balance_force",
-)
+    # twin-drive gantry (model.gantry; neutral values for one drive)
+) + TWIN_PARAMS
 
 
 # part table -> ((column, parameter), ...): the columns that feed a model parameter as they are, from the one
@@ -116,9 +118,8 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
     torque = col(bearing, "starting_torque")
     p = {
         "stroke": axis.stroke, "start_offset": axis.start_offset, "span": axis.span,
-        "table_mass": axis.moving_mass, "acceleration": axis.top_acceleration, "max_speed": axis.top_speed,
-        "mean_speed": axis.mean_speed_eff, "axial_load": axis.axial_load,
-        "mean_axial_load": axis.mean_axial_load_eff, "required_life": axis.required_life,
+        "acceleration": axis.top_acceleration, "max_speed": axis.top_speed, "mean_speed": axis.mean_speed_eff,
+        "required_life": axis.required_life,
         "load_factor": axis.load_factor_eff, "guide_blocks": float(axis.guide_blocks), "rails": float(axis.rails),
         "rail_length": axis.stroke + axis.table_length, "normal_load": axis.normal_load,
         "viscosity": axis.lubricant_viscosity,
@@ -162,6 +163,12 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
     p.update(carriage_params(axis))
     p.update(drive_params(axis, motor, coupling, reduction))
     p.update(counterbalance_params(axis))
+    # a twin drive (model.gantry): the guides carry bridge and cross carriage; each drive the governing side's
+    # share of the process force (as the duty cycle's phases, design.Axis.phases)
+    p.update(gantry_params(axis))
+    p["table_mass"] = axis.moving_mass + p["cross_mass"]
+    p["axial_load"] = p["force_share"] * axis.axial_load
+    p["mean_axial_load"] = p["force_share"] * axis.mean_axial_load_eff
     p["duty"] = axis.phases
     return p
 

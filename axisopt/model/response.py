@@ -30,7 +30,7 @@ CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupli
                            "c_bracket", "c_housing", "c_unit_bearing", "k_bearing", "k_drive", "k_total",
                            "thermal_displacement",
                            "m_eff", "f_axial", "f_table", "f1", "k_tool", "c_rocking", "k_pitch", "k_yaw",
-                           "f_pitch", "f_yaw", "kv", "thermal_growth"})
+                           "f_pitch", "f_yaw", "kv", "thermal_growth", "f_gantry", "f_racking", "k_racking"})
 
 
 def loaded(p: dict, preload) -> tuple:
@@ -40,7 +40,7 @@ def loaded(p: dict, preload) -> tuple:
     heat = heat_balance(p, preload)
     p = with_temperature(p, heat)
     m = masses(p)
-    return p, heat, m, axial_loads(p, m["moving_mass"])
+    return p, heat, m, axial_loads(p, m["moving_mass"], m["gantry_moving_mass"])
 
 
 def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive_block: bool = True,
@@ -63,7 +63,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     ``margin_<check>`` for each of :data:`CHECKS` (>= 1 passes).
     """
     p, heat, m, loads = loaded(p, preload)
-    loads.update(carriage_loads(p, m["moving_mass"]))
+    loads.update(carriage_loads(p, m["gantry_moving_mass"]))
     out = {}
     out.update(heat)
     out.update(m)
@@ -71,7 +71,7 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
     if chain or extras:
         k = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
         rock = rocking(p)
-        modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"], rock)
+        modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"], rock, m["gantry_moving_mass"])
         out.update(k)
         out.update(rock)
         out.update(tool_stiffness(p, k["k_total"], rock))

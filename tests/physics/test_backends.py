@@ -19,6 +19,7 @@ from axisopt.physics import (
     damping,
     dynamics,
     friction,
+    gantry,
     guides,
     nut,
     screw,
@@ -251,6 +252,20 @@ CASES = [
                                                      per_other=2.0, moment_factor=150.0)),
     case(carriage.rocking_frequency, kw=dict(rocking_stiffness=2e7, inertia=30.0)),
     case(carriage.box_inertia, kw=dict(mass=500.0, length=0.8, depth=0.3, offset=0.15)),
+    case(gantry.side_force_share, kw=dict(force=6e3, y=(-0.9, 0.0, 0.4), span=2.2)),
+    case(gantry.side_mass_share, kw=dict(bridge_mass=900.0, cross_mass=400.0, y=(-0.9, 0.0, 0.4), span=2.2)),
+    case(gantry.side_shares, kw=dict(cross_stroke=1.8, span=2.2)),
+    case(gantry.yaw_stiffness, kw=dict(k1=2e8, k2=(1.5e8, 2e8, 2.5e8), span=2.2, k_guides=1e7)),
+    case(gantry.bridge_yaw_inertia_estimate, kw=dict(bridge_mass=900.0, span=2.2)),
+    case(gantry.gantry_matrices, kw=dict(bridge_mass=900.0, bridge_inertia=363.0, cross_mass=400.0,
+                                         y=(-0.9, 0.0, 0.4), k1=2e8, k2=(1.5e8, 2e8, 2.5e8), span=2.2,
+                                         k_guides=1e7)),
+    case(gantry.gantry_eigenvalues, kw=dict(bridge_mass=900.0, bridge_inertia=363.0, cross_mass=400.0,
+                                            y=(-0.9, 0.0, 0.4), k1=2e8, k2=(1.5e8, 2e8, 2.5e8), span=2.2,
+                                            k_guides=1e7)),
+    case(gantry.gantry_frequencies, kw=dict(bridge_mass=900.0, bridge_inertia=363.0, cross_mass=400.0,
+                                            y=(-0.9, 0.0, 0.4), k1=2e8, k2=(1.5e8, 2e8, 2.5e8), span=2.2,
+                                            k_guides=1e7)),
 ]
 
 

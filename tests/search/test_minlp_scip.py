@@ -196,3 +196,17 @@ def test_highspeed_problem_never_a_wrong_proof():
         assert s.status == "optimal" and s.best.objective == pytest.approx(99.3745, rel=1e-4)
     if s.status == "solver_failed":
         assert not s.certificate.proven and "proof is wrong" in s.message
+
+
+
+@pytest.mark.parametrize("method", ["scip", "bonmin"])
+def test_twin_drive_is_refused(method, tmp_path, capsys):
+    """A twin-drive gantry (issue 40): SCIP's relaxation of the gantry's 2-DOF eigenvalues contradicted
+    enumeration on a synthetic case (proof 'contradicted by a feasible design'), so the MINLP references refuse
+    it with a one-line error (exit 2) instead of answering."""
+    p = load_problem(PROBLEMS / "gantry_twin_problem.yaml")
+    with pytest.raises(InputError, match="twin-drive"):
+        solve(p, method)
+    rc = main(["solve", str(PROBLEMS / "gantry_twin_problem.yaml"), "--method", method])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and len(err.splitlines()) == 1 and "twin_drive" in err
