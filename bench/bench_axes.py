@@ -1,5 +1,5 @@
-"""Wall time of the shipped long, heavy and fast axes and of an infeasible variant of each (a benchmark, not a
-test; issue 39: each under 2 s).
+"""Wall time of the shipped long, heavy and fast axes, the twin-drive gantry and the counterweighted vertical Z,
+and of an infeasible variant of each (a benchmark, not a test; target: each under 2 s).
 
     python bench/bench_axes.py [--repeat N]
 
@@ -13,7 +13,9 @@ The variants, each infeasible for a reason an engineer would try:
 
 * lathe Z, direct drive forced: ``max_backlash`` 1 um leaves every gearbox out (its backlash at the table);
 * boring-mill table at 20 m/min rapids instead of 15 (the motors' speed with the gearboxes' ratios);
-* laser axis with 150 kg instead of 100 (the direct drives' peak torque at 1.5 g).
+* laser axis with 150 kg instead of 100 (the direct drives' peak torque at 1.5 g);
+* twin-drive gantry at 20 m/min instead of 15 (the 4 m screws' critical speed);
+* counterweighted vertical Z with a 600 kg head on the same 250 kg counterweight (the nut's lift-off).
 """
 
 from __future__ import annotations
@@ -40,6 +42,11 @@ CASES = (
     ("boring-mill table at 20 m/min", "boring_mill_problem.yaml", ("max_speed", "20 m/min")),
     ("laser axis with 150 kg", "laser_problem.yaml", ("moving_mass", "150 kg")),
     ("lathe Z, max_backlash 1 um", "lathe_z_problem.yaml", ("max_backlash", "1 um")),
+    # issue 40's arrangements: the twin-drive gantry and the counterweighted vertical Z
+    ("twin-drive gantry", "gantry_twin_problem.yaml", None),
+    ("vertical Z, counterweight", "vertical_counterweight_problem.yaml", None),
+    ("twin-drive gantry at 20 m/min", "gantry_twin_problem.yaml", ("max_speed", "20 m/min")),
+    ("vertical Z, 600 kg head", "vertical_counterweight_problem.yaml", ("moving_mass", "600 kg")),
 )
 
 

@@ -174,12 +174,13 @@ continuous:
         sweep=("axis.axial_load", "[3000 N, 5000 N, 6000 N]", "light, medium and heavy roughing"),
     ),
     "gantry": dict(
-        title="gantry, long X axis",
+        title="twin-drive gantry, long X axis",
         name="gantry-x",
-        description="Gantry X axis: 800 kg gantry, 2000 mm stroke, 30 m/min; long screws whirl and are soft.",
+        description="Twin-drive gantry X: 500 kg bridge, 300 kg cross carriage, drives 2 m apart, 30 m/min.",
         axis="""\
   stroke: 2000 mm             # nut travel (required)
-  moving_mass: 800 kg         # gantry with Y, Z and spindle (required)
+  moving_mass: 500 kg         # the bridge (required); its cross carriage below
+  twin_drive: {{span: 2000 mm, cross_stroke: 1600 mm, cross_mass: 300 kg}}  # screw, motor each side
   mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
   orientation: horizontal     # horizontal | vertical (gravity on the screw, holding brake)
   max_speed: 30 m/min         # rapid traverse (required)
@@ -230,13 +231,14 @@ continuous:
     "vertical": dict(
         title="vertical Z axis (gravity on the screw, holding brake)",
         name="vertical-z",
-        description="Vertical Z axis: 300 kg spindle head, 500 mm stroke, 24 m/min, brake holds twice gravity.",
+        description="Vertical Z: 300 kg head on a 240 kg counterweight, 500 mm stroke, 24 m/min, brake 2x.",
         axis="""\
   stroke: 500 mm              # nut travel (required)
   moving_mass: 300 kg         # spindle head (required)
   mounting: fixed-supported   # fixed-free | fixed-supported | fixed-fixed (required)
   orientation: vertical       # gravity acts along the screw; the motor needs a holding brake
   brake_safety: 2             # brake torque / gravity torque (default 2)
+  counterbalance: {{kind: counterweight, mass: 240 kg, efficiency: 0.95}}  # 80 % of the head
   max_speed: 24 m/min         # rapid traverse (required)
   acceleration: 3 m/s^2       # of the moves (default 0)
 {force}
