@@ -61,6 +61,7 @@ from pathlib import Path
 from types import MappingProxyType
 
 from .catalog import STATUSES, USER_STATUS, Catalog
+from .design.choices import SEARCH_SPEC, read_arrangements
 from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, MOUNTINGS, NAME_KEY, Axis, catalog_for, read_axis
 from .display import fmt, one_line
 from .errors import InputError
@@ -225,6 +226,8 @@ class Problem:
     # the checks' required life (axis.required_life) follows limits.min_life: the YAML set min_life, not
     # required_life (one life requirement, not a stricter hidden default beside the user's limit)
     life_from_limit: bool = False
+    # search.counterbalance / search.twin_drive: ((label, Axis), ...) the search chooses among (empty: the axis)
+    arrangements: tuple = field(default=(), repr=False)
 
     @property
     def limit_map(self) -> dict:
@@ -341,6 +344,7 @@ PROBLEM_SPEC = Spec("problem", "a sizing problem: the axis, the objective, limit
     "limits": Key("section", spec=LIMITS_SPEC),
     "catalog": Key("section", spec=RESTRICTIONS_SPEC),
     "continuous": Key("section", spec=CONTINUOUS_SPEC),
+    "search": Key("section", spec=SEARCH_SPEC),
 })
 
 
@@ -367,6 +371,7 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
         raise asec.error("acceleration", "sizing a motor (the search chooses the drive) needs axis.acceleration "
                          "> 0 or an axis.duty_cycle: without one the drive would carry no inertia torque")
     pmin, pmax = _read_continuous(root.read("continuous"))
+    ssec = root.read("search")
     root.done()
     min_life = dict(limits).get("min_life")
     follows = min_life is not None and "required_life" in assumed
@@ -375,7 +380,8 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
         assumed = tuple(k for k in assumed if k != "required_life")
     return Problem(axis=axis, catalog=catalog, objective=objective, limits=limits, margins=margins,
                    restrictions=restr, preload_min=pmin, preload_max=pmax, name=name,
-                   source=root.source, assumed=assumed, life_from_limit=follows)
+                   source=root.source, assumed=assumed, life_from_limit=follows,
+                   arrangements=read_arrangements(ssec, asec, axis))
 
 
 def _read_objective(root: Section) -> Objective:

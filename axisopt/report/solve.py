@@ -51,6 +51,9 @@ def format_result(res, top: int | None = None, problem=None) -> str:
          f"method {res.method}: status {res.status}"
          + (" (proven global optimum over the catalog)" if res.status == OPTIMAL and c.proven else "")
          + f", {res.time:.2f} s" + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else "")]
+    if res.arrangements:  # search.counterbalance / search.twin_drive options
+        L.append(f"arrangement: {res.arrangement} ({'best' if res.best is not None else 'closest'} of "
+                 f"{res.arrangements} arrangements)")
     if res.message:
         L.append(f"  note: {res.message}")
     comp = None if problem is None else load_components(problem.axis, problem.assumed)

@@ -107,6 +107,10 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     if method not in METHODS_BY_NAME:
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
     m = METHODS_BY_NAME[method]
+    if problem.arrangements:  # search.counterbalance / search.twin_drive: each arrangement solved, the best kept
+        from .arrangements import solve_arrangements
+
+        return solve_arrangements(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
     t0 = time.perf_counter()
     ob = problem.objective
     if problem.axis.twin_drive is not None and not m.pareto:

@@ -315,6 +315,10 @@ class SolveResult:
     infeasibility: Infeasibility | None = None
     pareto: ParetoFront | None = None
     solver_status: str = ""  # raw status of the underlying solver (Bonmin / IPOPT)
+    # a problem with search.counterbalance / search.twin_drive options: the winning arrangement's label and how
+    # many arrangements were solved (0: the problem has none; not in the JSON then)
+    arrangement: str = ""
+    arrangements: int = 0
 
     @property
     def objective(self) -> float:
@@ -332,7 +336,7 @@ class SolveResult:
             "binding": [b.to_dict() for b in self.binding],
             "infeasibility": self.infeasibility.to_dict() if self.infeasibility else None,
             "pareto": self.pareto.to_dict() if self.pareto else None,
-        }
+        } | ({"arrangement": {"chosen": self.arrangement, "of": self.arrangements}} if self.arrangements else {})
 
     def designs(self) -> list:
         """The designs shown: the Pareto front's points, else best and runners-up, else (infeasible) the

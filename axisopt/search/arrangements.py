@@ -1,0 +1,118 @@
+"""A problem that lists axis arrangements (``search.counterbalance`` / ``search.twin_drive``,
+:mod:`axisopt.design.choices`): each arrangement is solved as its own problem with the chosen method and the
+answers are combined.  The best objective wins (ties: the shared tie rule, lower cost then mass, then the
+arrangement listed first); the runners-up are merged in objective order; the certificate's counts are summed and
+proven only if every arrangement's solve is; infeasible only if every arrangement is.  The limit sensitivities
+are the best gain over all arrangements, each re-solved with the limit relaxed (:func:`.front.limit_sensitivities`
+for an arrangement with a design, a relaxed solve for one without).  A Pareto objective is refused."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import fields, replace
+
+import numpy as np
+
+from ..errors import InputError
+from ..model.limits import LIMITS
+from ..problem import Problem
+from .result import INFEASIBLE, OPTIMAL, Certificate, SolveResult
+from .task.objective import rank_order
+
+_SUMMED = ("combinations", "pruned_by_bound", "exact_evaluations", "nlps_solved", "nlp_failures", "pruned_by_block",
+           "pruned_by_dominance")
+
+
+def _miss(res: SolveResult) -> float:
+    """How far the closest design of an infeasible arrangement misses (sum of its relative misses)."""
+    inf = res.infeasibility
+    if inf is None or not inf.closest:
+        return float("inf")
+    return float(sum(abs(v) for v in inf.closest[0].misses.values()))
+
+
+def _certificate(results) -> Certificate:
+    certs = [r.certificate for r in results]
+    kw = {f.name: getattr(certs[0], f.name) for f in fields(Certificate)}
+    for name in _SUMMED:
+        kw[name] = sum(getattr(c, name) for c in certs)
+    kw["feasible"] = None if any(c.feasible is None for c in certs) else sum(c.feasible for c in certs)
+    kw["screened"] = None if any(c.screened is None for c in certs) else sum(c.screened for c in certs)
+    kw["proven"] = all(c.proven for c in certs)
+    kw["gap"] = max(c.gap for c in certs)
+    kw["screening_time"] = sum(c.screening_time for c in certs)
+    kw["notes"] = tuple(dict.fromkeys(n for c in certs for n in c.notes))
+    return Certificate(**kw)
+
+
+def _sensitivities(problem: Problem, subs, results, win: int, method: str) -> list:
+    """The winner's limits, each with the best gain over every arrangement relaxed by front.RELAX."""
+    from .front import RELAX, limit_sensitivities, solve
+
+    best = results[win].best.objective
+    per = [limit_sensitivities(sub, r) if r.best is not None else None for sub, r in zip(subs, results)]
+    out = []
+    for b in per[win]:
+        reach = best + (b.objective_gain or 0.0)
+        for i, (sub, r) in enumerate(zip(subs, results)):
+            if i == win:
+                continue
+            if r.best is not None:
+                g = next((x.objective_gain or 0.0 for x in per[i] if x.limit == b.limit), 0.0)
+                reach = max(reach, r.best.objective + g)
+                continue
+            lim, value = LIMITS[b.limit], sub.limit_map[b.limit]
+            relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
+            rr = solve(sub.with_limit(b.limit, relaxed), method, top=1, sensitivities=False)
+            if rr.best is not None:
+                reach = max(reach, rr.best.objective)
+        gain = reach - best
+        out.append(replace(b, objective_gain=gain, binding=bool(gain > 1e-6 * max(abs(best), 1e-9))))
+    return out
+
+
+def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: float,
+                       sensitivities: bool) -> SolveResult:
+    """Solve every arrangement of ``problem`` with ``method`` and combine (see the module)."""
+    from .front import METHODS_BY_NAME, solve
+
+    if problem.objective.mode == "pareto":
+        raise InputError("a Pareto objective with search.counterbalance / search.twin_drive options is not supported "
+                         "yet: solve each arrangement as its own problem", source=problem.source)
+    t0 = time.perf_counter()
+    labels = [lab for lab, _ in problem.arrangements]
+    subs = [replace(problem, axis=ax, arrangements=()) for _, ax in problem.arrangements]
+    results = [solve(sub, method, top=top, time_limit=time_limit, sensitivities=False) for sub in subs]
+    n = len(results)
+    cert = _certificate(results)
+    found = [i for i, r in enumerate(results) if r.best is not None]
+    tried = f"{n} arrangements tried ({'; '.join(labels)})"
+    if not found:
+        close = min(range(n), key=lambda i: _miss(results[i]))
+        r = results[close]
+        msg = f"{tried}, none feasible; closest: {labels[close]}: {r.message}"
+        return replace(r, message=msg, certificate=cert, time=time.perf_counter() - t0, arrangement=labels[close],
+                       arrangements=n)
+    # every design found, ranked by the shared tie rule (the arrangement listed first wins an exact tie)
+    cands = [(i, c) for i in found for c in [results[i].best] + list(results[i].runners_up)]
+    obj = np.array([c.objective for _, c in cands])
+    cost = np.array([c.cost for _, c in cands])
+    mass = np.array([c.total_mass for _, c in cands])
+    order = rank_order(obj, cost, mass, np.arange(len(cands)), min(top, len(cands)) if top > 0 else 1)
+    win = cands[order[0]][0]
+    ranked = [replace(cands[k][1], rank=r + 1) for r, k in enumerate(order)]
+    res = results[win]
+    status = res.status
+    if any(results[i].status != OPTIMAL for i in found if i != win) and status == OPTIMAL:
+        status = next(results[i].status for i in found if results[i].status != OPTIMAL)
+    notes = [f"{labels[i]}: infeasible" for i in range(n) if results[i].status == INFEASIBLE]
+    out = replace(res, status=status, best=ranked[0], runners_up=ranked[1:], certificate=cert,
+                  message="; ".join(x for x in [res.message] + notes if x), arrangement=labels[win], arrangements=n)
+    if sensitivities and METHODS_BY_NAME[method].sensitivities and problem.objective.mode != "lexicographic":
+        out.binding = _sensitivities(problem, subs, results, win, method)
+    out.certificate.estimated = results[win].certificate.estimated
+    out.time = time.perf_counter() - t0
+    return out
+
+
+__all__ = ["solve_arrangements"]
