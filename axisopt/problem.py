@@ -61,8 +61,8 @@ from pathlib import Path
 from types import MappingProxyType
 
 from .catalog import STATUSES, USER_STATUS, Catalog
-from .design.choices import SEARCH_SPEC, read_arrangements
 from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, MOUNTINGS, NAME_KEY, Axis, catalog_for, read_axis
+from .design.choices import SEARCH_SPEC, read_arrangements
 from .display import fmt, one_line
 from .errors import InputError
 from .model import CHECKS
