@@ -46,7 +46,8 @@ def _gantry(seed: int):
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=4, carriage=True)
     make_double(cat)
     span = float(rng.uniform(0.8, 2.0))
-    twin = TwinDrive(span=span, cross_stroke=float(rng.uniform(0.3, 1.0)) * span, cross_mass=float(rng.uniform(30, 150)))
+    twin = TwinDrive(span=span, cross_stroke=float(rng.uniform(0.3, 1.0)) * span,
+                     cross_mass=float(rng.uniform(30, 150)))
     p = make_problem(cat, mode="frequency", limits={"max_cost": float(rng.uniform(3000, 12000))},
                      moving_mass=float(rng.uniform(150, 350)), axial_load=float(rng.uniform(1500, 4000)),
                      table_length=0.6, rail_spacing=0.5 * span, table_width=0.6 * span)
