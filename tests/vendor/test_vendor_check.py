@@ -56,7 +56,8 @@ WIDER = {
 KNOWN_FAILS = {"teaching_design": {"nut L10 life", "support bearing L10 life"}}
 FILES = ["teaching_problem", "highspeed_problem", "gantry_problem", "vertical_problem", "vmc_x_problem",
          "duty_cycle_problem", "teaching_design", "vmc_x_design", "boring_mill_problem", "laser_problem",
-         "lathe_z_problem", "vertical_counterweight_problem", "gantry_twin_problem"]
+         "lathe_z_problem", "vertical_counterweight_problem", "gantry_twin_problem",
+         "vertical_z600_problem"]
 _CACHE: dict = {}
 
 
@@ -137,7 +138,8 @@ COLUMNS = {"teaching_problem": "teaching", "highspeed_problem": "highspeed", "ga
            "vertical_problem": "vertical", "vmc_x_problem": "vmc_x", "duty_cycle_problem": "duty_cycle",
            "teaching_design": "teaching design", "vmc_x_design": "vmc_x design", "boring_mill_problem": "boring mill",
            "laser_problem": "laser", "lathe_z_problem": "lathe Z",
-           "vertical_counterweight_problem": "vertical counterweight", "gantry_twin_problem": "twin gantry"}
+           "vertical_counterweight_problem": "vertical counterweight", "gantry_twin_problem": "twin gantry",
+           "vertical_z600_problem": "Z 600 kg"}
 
 
 def test_docs_results_table_is_what_the_checker_prints(tmp_path_factory):
