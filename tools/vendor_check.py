@@ -36,7 +36,7 @@ import re
 import subprocess
 import sys
 import tempfile
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -191,10 +191,26 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     moving = ax.table_mass + nut["mass"] + ax.blocks * guide["block_mass"]
     on_rails = 0.0 if (ax.vertical or ax.wall) else moving * G
     friction = guide["friction_coefficient"] * (on_rails + ax.normal) + ax.blocks * guide["friction_force"]
+    ax_guides, moving_guides, friction_guides = replace(ax), moving, friction  # what the guides carry
+    tw = design["axis"].get("twin_drive")
+    if tw:  # each drive checked as its governing side: its share of the mass, friction and process force
+        r, side, whole = vp.twin_side(tw, ax.table_mass, nut["mass"], ax.blocks * guide["block_mass"])
+        moving_guides = whole
+        friction_guides = guide["friction_coefficient"] * (whole * G + ax.normal) + ax.blocks * guide["friction_force"]
+        ax_guides = replace(ax, table_mass=whole - 2 * nut["mass"] - ax.blocks * guide["block_mass"])
+        moving, friction = side, friction_guides * side / whole
+        ax.axial_load, ax.mean_load, ax.force_share = r * ax.axial_load, r * ax.mean_load, r
     weight = moving * G if ax.vertical else 0.0
-    phases, cycle_given = vp.duty_phases(ax, moving, friction, weight)
+    weights, accel = weight, moving  # the weight on the screw by direction; the mass the drive accelerates
+    cb = design["axis"].get("counterbalance")
+    if cb and cb.get("kind", "none") != "none" and ax.vertical:
+        weights, extra = vp.counterbalance_weights(cb, weight)
+        accel = moving + extra
+        weight = weights(0)  # at rest: the holding torque
+    phases, cycle_given = vp.duty_phases(ax, accel, friction, weights)
     a_peak = max([ax.a_max] + [abs(p.acc) for p in phases])
-    f_max = ax.axial_load + moving * a_peak + friction + weight
+    net = max(abs(weights(1)), abs(weights(-1))) if callable(weights) else weight
+    f_max = ax.axial_load + accel * a_peak + friction + net
     lead, d1, d0 = screw["lead"] * 1e3, screw["root_diameter"] * 1e3, screw["nominal_diameter"] * 1e3
     n_max = ax.v_max * 60.0 / (lead * 1e-3)                           # [rpm]
     svendor = screw["vendor"]
@@ -283,7 +299,11 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     + ("; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
                        "Rexroth's S0 4 for machine tools" if generic else "")))
     # 6 guides: static safety and travel life at the vendor's rating distance
-    blocks = vp.block_loads_max(ax, moving, a_peak)
+    if tw:  # the guides carry the whole gantry and the whole force
+        ph_guides = vp.duty_phases(ax_guides, moving_guides, friction_guides, 0.0)[0]
+    else:
+        ph_guides = phases
+    blocks = vp.block_loads_max(ax_guides, moving_guides, a_peak)
     fs_g, src = vp.guide_static_safety(guide["vendor"], guide["type"])
     rows.append(Row("guide static safety C0/P", "-", guide["static_load_rating"] / blocks, fs_g,
                     guide["static_load_rating"] / blocks / fs_g, ev.get("guide_static_safety"), None, "", src,
@@ -291,8 +311,8 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     f"{ev.get('guide_max_block_load_N', float('nan')) / 1e3:.2f} kN)"))
     travel_speed = vp.mean_travel_speed(phases) if use_cycle else ax.mean_speed
     need_km = ax.life_h * 3600 * travel_speed / 1e3
-    g_km, src, gnote = vp.guide_life_km(guide, ax, phases, cycle_given, moving)
-    g_ax = vp.guide_life_km(guide, ax, phases, cycle_given, moving, fw_ax)[0]
+    g_km, src, gnote = vp.guide_life_km(guide, ax_guides, ph_guides, cycle_given, moving_guides)
+    g_ax = vp.guide_life_km(guide, ax_guides, ph_guides, cycle_given, moving_guides, fw_ax)[0]
     rows.append(Row("guide L10 travel", "km", g_km, need_km, g_km / need_km, theirs("guide_life"),
                     their_margin("guide_life"), "", src, gnote + f"; at axisopt's fw {fw_ax}: {g_ax:,.0f} km",
                     same_basis=g_ax))
@@ -312,7 +332,7 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     knote))
     # 8 drive: inertia ratio, RMS torque, holding torque
     if motor is not None:
-        rows += vp.drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, phases, preload,
+        rows += vp.drive_rows(ax, screw, nut, brg, motor, coupling, accel, friction, weights, phases, preload,
                               n_sets, ev, cycle_given, red, nut["unit_inertia"] if rotating else None)
     # 9 own-weight sag of a horizontal screw (beam formula, INFO: no vendor limit)
     if not (ax.vertical or ax.wall) and screw.get("mass_per_length"):

@@ -100,6 +100,7 @@ def move_phases(d, v, a, proc, moving, friction, weight):
     """A rest-to-rest move (trapezoidal profile, THK A-722) as accelerate / constant / decelerate phases with the
     nut load of each (T-GC A-725, A-739: Fa = m a + mu m g + f + process force, + m g vertical)."""
     s = 1 if d > 0 else -1
+    weight = weight(s) if callable(weight) else weight  # a counterbalanced head: the net weight by direction
     d = abs(d)
     v = min(v, math.sqrt(a * d)) if a > 0 else v
     ta = v / a if a > 0 else 0.0
@@ -114,20 +115,22 @@ def move_phases(d, v, a, proc, moving, friction, weight):
 def duty_phases(ax, moving, friction, weight):
     """The duty cycle's phases (axis.duty_cycle), or, without one, the design's stated mean axial load with
     friction each way over the stroke (what the design says the nut sees on average).  Returns (phases, given)."""
+    w = weight if callable(weight) else (lambda _s: weight)  # net weight by direction (+1 up, -1 down, 0 rest)
     if not ax.duty:
         f = ax.mean_load + friction
         v = ax.mean_speed
-        return [Phase(ax.stroke, ax.stroke / v, v, 0.0, 1, ax.mean_load, f + weight),
-                Phase(ax.stroke, ax.stroke / v, v, 0.0, -1, ax.mean_load, -f + weight)], False
+        return [Phase(ax.stroke, ax.stroke / v, v, 0.0, 1, ax.mean_load, f + w(1)),
+                Phase(ax.stroke, ax.stroke / v, v, 0.0, -1, ax.mean_load, -f + w(-1))], False
     out = []
     for step in ax.duty:
         if "dwell" in step:
             t = quantity(step["dwell"])
-            out.append(Phase(0.0, t, 0.0, 0.0, 0, 0.0, weight))
+            out.append(Phase(0.0, t, 0.0, 0.0, 0, 0.0, w(0)))
             continue
         v = quantity(step.get("speed", ax.v_max))
         a = quantity(step.get("acceleration", ax.a_max))
-        out += move_phases(quantity(step["move"]), v, a, quantity(step.get("force", 0.0)), moving, friction, weight)
+        force = quantity(step.get("force", 0.0)) * getattr(ax, "force_share", 1.0)  # a twin drive's side: its share
+        out += move_phases(quantity(step["move"]), v, a, force, moving, friction, w)
     return out, True
 
 
@@ -489,7 +492,8 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
         nut_rotation_speed_limit(d0 * 1e3, screw["dn_limit"])[1]
     drag = preload_torque(preload, lead * 1e3, d_pcd) if nut["type"] == "double" else 0.0
     drag += n_sets * (brg.get("starting_torque") or 0.0)
-    hold = holding_torque(weight, friction if ax.vertical else 0.0, lead) / (i * ax.red_eff)
+    w_rest = weight(0) if callable(weight) else weight  # a counterbalanced head: its net weight at rest
+    hold = holding_torque(w_rest, friction if ax.vertical else 0.0, lead) / (i * ax.red_eff)
     drv = phases if cycle_given else default_drive_phases(ax, moving, friction, weight)
     sq, tt, out_sq, out_peak = 0.0, 0.0, 0.0, 0.0
     for p in drv:
@@ -521,7 +525,7 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
         # the feed thrust at feed speed (axis.axial_load) and the mean thrust (axis.mean_axial_load) as steady
         # output torques: the largest output torque is the larger of the cycle's and the thrust's, the continuous
         # one the larger of the cycle's RMS and the mean thrust's (T-GC A-725/A-733, eta 0.9)
-        steady = [(f + friction + weight) * lead / (2 * math.pi * ETA_THK) + drag for f in (ax.axial_load,
+        steady = [(f + friction + w_rest) * lead / (2 * math.pi * ETA_THK) + drag for f in (ax.axial_load,
                                                                                            ax.mean_load)]
         rows += reduction_rows(red, motor, max(out_peak, steady[0]), max(math.sqrt(out_sq / tt), steady[1]),
                                ax.v_max / lead * 60 * i,
@@ -592,3 +596,35 @@ def screw_sag(mass_per_length, d1, span, mounting):
     Manual Table 3-23 cases 22, 12, 15, 1; E 206 GPa, T-GC A-694).  mass_per_length [kg/m]; d1, span [m]."""
     i_sec = math.pi * d1**4 / 64
     return mass_per_length * G * span**4 / (SAG_K[mounting] * E_THK * 1e6 * i_sec)
+
+
+def counterbalance_weights(cb, head_weight):
+    """The weight a counterbalanced vertical head leaves on the screw [N], by direction (+1 rising, -1 lowering, 0
+    at rest), and the mass moving with the head besides it [kg].  A counterweight M_c on a chain of efficiency
+    eta_c: Mitsubishi MR-J2S-A 11 (eq. 11-18..21) and Yaskawa Sigma-7 11.2.1 take the unbalanced load as
+    (M - M_c) g; the chain's friction opposes the motion, so it balances M_c g eta_c rising and M_c g / eta_c
+    lowering (at rest M_c g); the counterweight and its chain accelerate with the head (Yaskawa: J_L with
+    M + M_c).  A balance cylinder F(x) = F_0 .. F_1 over the stroke, pressure tolerance +/- t: the end of its
+    range that leaves the screw the largest net weight, in every phase; its piston moves with the head."""
+    kind = cb.get("kind", "none")
+    if kind == "counterweight":
+        mc, eta = quantity(cb["mass"]), float(cb.get("efficiency", 0.95))
+        chain = quantity(cb.get("chain_mass", 0.0))
+        net = {1: head_weight - mc * G * eta, -1: head_weight - mc * G / eta, 0: head_weight - mc * G}
+        return (lambda s: net[s]), mc + chain
+    f0 = quantity(cb["force"])
+    f1 = quantity(cb["force_at_end"]) if "force_at_end" in cb else f0
+    tol = quantity(cb.get("tolerance", 0.0))
+    ends = (min(f0, f1) * (1 - tol), max(f0, f1) * (1 + tol))
+    net = max((head_weight - f for f in ends), key=abs)
+    return (lambda _s: net), quantity(cb.get("piston_mass", 0.0))
+
+
+def twin_side(tw, bridge, nut_mass, block_mass_total):
+    """A twin-drive gantry's governing side (statics of a beam on two supports, the cross carriage at the end of
+    its stroke nearest the side): force share r = 1/2 + s/2L, and the side's moving mass m/2 + m_c s/2L of the
+    whole m (bridge, cross carriage, both nuts, the blocks).  Returns (r, side mass, whole mass) [-, kg, kg]."""
+    span, s = quantity(tw["span"]), quantity(tw["cross_stroke"])
+    mc = quantity(tw.get("cross_mass", 0.0))
+    whole = bridge + mc + 2 * nut_mass + block_mass_total
+    return 0.5 + s / (2 * span), 0.5 * whole + mc * s / (2 * span), whole

@@ -138,10 +138,13 @@ def format_result(res, top: int | None = None, problem=None) -> str:
 
 
 def relax_lines(inf) -> list:
-    """The first lines of an infeasible answer: what to relax, by how much, for which closest design."""
+    """The first lines of an infeasible answer: an axis change that the search verified makes it feasible (first:
+    a design change before a vendor's rule), then what to relax, by how much, for which closest design."""
+    L0 = [f"  change the axis: {'lower' if d.to < d.value else 'raise'} {d.key} from {_v(d.value)} to {_v(d.to)} "
+          f"{d.unit}: the catalogs then hold a design (re-solved)" for d in inf.design_changes]
     rel = inf.relax
     if not rel:
-        return []
+        return L0
 
     def amount(r):
         u = f" {r.unit}" if r.unit else ""
@@ -167,7 +170,9 @@ def relax_lines(inf) -> list:
         L += [f"    {amount(r)}" for r in rel]
     for rank, rules in inf.not_relaxable:
         L.append(f"  design #{rank} left out: it breaks {', '.join(rules)} (a compatibility rule, not relaxable)")
-    return L
+    if L0:
+        L[0] = "  or " + L[0].lstrip()
+    return L0 + L
 
 
 def _cand_table(cands, unit) -> str:

@@ -18,7 +18,7 @@ from .task.space import Space
 
 
 def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top: int = 1, *,
-                       max_evaluations: int | None = None, incumbent: float = -np.inf):
+                       max_evaluations: int | None = None, incumbent: float = -np.inf, first_feasible: bool = False):
     """Default method core: best-first over blocks of combinations, never forming the whole product.
 
     1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives -- gets a
@@ -31,7 +31,8 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
        never screened are the certificate's ``pruned_by_block``; survivors never solved its
        ``pruned_by_bound``.
     ``incumbent``: an objective some design is known to reach (top 1): what cannot tie with it is pruned from
-    the start, and the Exact returned may then be empty.
+    the start, and the Exact returned may then be empty.  ``first_feasible``: stop at the first exact solve that
+    finds a feasible design (a feasibility test, no optimum: search.advice).
     Returns (Exact of evaluated combinations, :class:`.result.SearchStats`)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
@@ -75,6 +76,8 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
             pool_idx, pool_bnd = pool_idx[keep], pool_bnd[keep]
             allobj = np.concatenate([p.objective for p in parts])
             fin = allobj[np.isfinite(allobj)]
+            if first_feasible and len(fin):
+                break
             if len(fin) >= top:
                 thr = np.partition(fin, len(fin) - top)[len(fin) - top]
             continue

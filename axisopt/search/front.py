@@ -190,6 +190,9 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float) -> So
 
         why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive")
         why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
+        if method == "default":  # a change of the axis the search verifies, before any limit is relaxed
+            from .advice import design_changes
+            why.design_changes = design_changes(problem, constraints, why)
         message = "no catalog combination meets every limit"
         if space.reductions_by_backlash:
             lim = problem.limit_map.get("max_backlash", 0.0)

@@ -240,6 +240,20 @@ class ParetoFront:
         return html_table([p.row() for p in self.points], repr(self))
 
 
+@dataclass(frozen=True)
+class DesignChange:
+    """An axis input changed (search.advice) after which the catalogs hold a design: ``key`` (``axis.max_speed``),
+    its unit, the value and the proposed one in that unit."""
+
+    key: str
+    unit: str
+    value: float
+    to: float
+
+    def to_dict(self) -> dict:
+        return {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to)}
+
+
 @dataclass
 class Relaxation:
     """A limit to relax so that a design becomes feasible (:func:`axisopt.search.relax.rank_relaxations`)."""
@@ -275,6 +289,8 @@ class Infeasibility:
     relax: list = field(default_factory=list)
     not_relaxable: list = field(default_factory=list)
     relax_blocked_by: list = field(default_factory=list)
+    # axis changes verified to make the problem feasible (search.advice), offered before any relaxation
+    design_changes: list = field(default_factory=list)
 
     def to_dict(self) -> dict:
         return {"unmeetable": [{"limit": n, "best_achievable": _clean(b), "limit_value": _clean(v), "unit": u}
@@ -282,7 +298,8 @@ class Infeasibility:
                 "closest": [c.to_dict() for c in self.closest],
                 "relax": [r.to_dict() for r in self.relax],
                 "not_relaxable": [{"rank": r, "breaks": list(k)} for r, k in self.not_relaxable],
-                "relax_blocked_by": list(self.relax_blocked_by)}
+                "relax_blocked_by": list(self.relax_blocked_by),
+                "design_changes": [d.to_dict() for d in self.design_changes]}
 
     def to_frame(self):
         """pandas DataFrame of the closest designs, with ``miss <limit> [%]`` per missed limit."""
