@@ -16,7 +16,7 @@ ROOT = Path(__file__).resolve().parents[2]
 def _variant(tmp_path, name, **values):
     text = (ROOT / "problems" / name).read_text(encoding="utf-8")
     for key, value in values.items():
-        text, n = re.subn(rf"^(\s*{key}:\s*)[^#\n]*", lambda m: m.group(1) + value, text, flags=re.M)
+        text, n = re.subn(rf"^(\s*{key}:\s*)[^#\n]*", lambda m, v=value: m.group(1) + v, text, flags=re.M)
         assert n == 1, key
     path = tmp_path / f"{key}.yaml"
     path.write_text(text, encoding="utf-8")
