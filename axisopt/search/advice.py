@@ -8,7 +8,9 @@ meets L at the rapid speed times (1 - m).  A torque check of the motor or reduct
 the acceleration sets with the mass: the acceleration is lowered by the same factor (more than is needed, since
 the friction and process force do not scale with it).  Each proposal is verified by the default method's search
 on the changed problem, stopped at its first feasible design (no optimum, no explanation), so it is offered only
-when the catalogs then hold a design; its value is rounded down to three significant figures.
+when the catalogs then hold a design; its value is rounded down to three significant figures.  The first kind
+that a search verifies is the advice (one search per kind, the speed first: an answer within the 2 s of an
+infeasible one).
 """
 
 from __future__ import annotations
@@ -38,7 +40,8 @@ def _round_down(x: float) -> float:
 
 def _factors(constraints, infeasibility, checks) -> list[float]:
     """Per closest design that misses a limit of ``checks``: 1 - its largest miss among those (the change may
-    also free its other misses, or another design: the search verifies it)."""
+    also free its other misses, or another design: the search verifies it).  The advice takes the least of
+    them: the largest change any closest design needs."""
     by_label = {c.label: c for c in constraints}
     out = []
     for cand in infeasibility.closest:
@@ -75,19 +78,18 @@ def design_changes(problem, constraints, infeasibility) -> list:
         factors = _factors(constraints, infeasibility, checks)
         if not value or not factors:
             continue
-        # the smallest change the closest designs suggest, then the largest: the first the search verifies
-        for f in sorted({max(factors), min(factors)}, reverse=True):
-            to = _round_down(value * scale * f * SAFETY) / scale
-            if to <= 0:
-                continue
-            changed = replace(problem, axis=_with(axis, key, to))
-            try:
-                space = build_space(changed)
-            except Exception:  # noqa: BLE001 - a change the inputs refuse (a duty cycle it breaks) is no advice
-                continue
-            spec = objective_spec(changed.objective.mode, changed)
-            ex, _ = bound_order_search(space, build_constraints(changed), spec, top=1, first_feasible=True)
-            if np.isfinite(ex.objective).any():
-                out.append(DesignChange(f"axis.{key}", unit, value * scale, to * scale))
-                break
+        # the largest change the closest designs suggest (the likeliest to free one of them), one search each
+        to = _round_down(value * scale * min(factors) * SAFETY) / scale
+        if to <= 0:
+            continue
+        changed = replace(problem, axis=_with(axis, key, to))
+        try:
+            space = build_space(changed)
+        except Exception:  # noqa: BLE001 - a change the inputs refuse (a duty cycle it breaks) is no advice
+            continue
+        spec = objective_spec(changed.objective.mode, changed)
+        ex, _ = bound_order_search(space, build_constraints(changed), spec, top=1, first_feasible=True)
+        if np.isfinite(ex.objective).any():
+            out.append(DesignChange(f"axis.{key}", unit, value * scale, to * scale))
+            break  # one verified change is the advice; the limits to relax follow it
     return out

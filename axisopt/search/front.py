@@ -102,7 +102,9 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     method        : a :data:`METHOD_TABLE` name: 'default' | 'exhaustive' | 'bonmin' | 'scip'
     top           : number of designs returned (best + runners-up; a method without runners-up notes it)
     time_limit    : Bonmin / SCIP wall-clock limit [s]
-    sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that allow it)
+    sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that allow it);
+                    and, when nothing fits (default method), the design change a search verifies
+                    (:mod:`.advice`); a batch study leaves both out
     """
     if method not in METHODS_BY_NAME:
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
@@ -135,6 +137,10 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
         res = m.run(task, method, top, time_limit, t0)
         if sensitivities and res.best is not None and m.sensitivities:
             res.binding = limit_sensitivities(problem, res, space=task.space)
+        if sensitivities and res.infeasibility is not None and method == "default":
+            # the infeasible answer's what-if: an axis change the search verifies, before any limit is relaxed
+            from .advice import design_changes
+            res.infeasibility.design_changes = design_changes(problem, task.constraints, res.infeasibility)
             res.time = time.perf_counter() - t0
         if res.best is not None and res.best.design is not None:
             res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in task.objective.terms])
@@ -190,9 +196,6 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float) -> So
 
         why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive")
         why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
-        if method == "default":  # a change of the axis the search verifies, before any limit is relaxed
-            from .advice import design_changes
-            why.design_changes = design_changes(problem, constraints, why)
         message = "no catalog combination meets every limit"
         if space.reductions_by_backlash:
             lim = problem.limit_map.get("max_backlash", 0.0)
