@@ -189,14 +189,17 @@ def check_design(design: dict, ev: dict) -> list[Row]:
 
     # masses and loads (THK A-725: Fa = mu m g + f + m alpha, + m g on a vertical axis, A-739)
     moving = ax.table_mass + nut["mass"] + ax.blocks * guide["block_mass"]
-    on_rails = 0.0 if (ax.vertical or ax.wall) else moving * G
-    friction = guide["friction_coefficient"] * (on_rails + ax.normal) + ax.blocks * guide["friction_force"]
+
+    def guide_friction(mass):  # the guides' resistance under a moving mass (THK A-725: mu (m g + N) + f)
+        on_rails = 0.0 if (ax.vertical or ax.wall) else mass * G
+        return guide["friction_coefficient"] * (on_rails + ax.normal) + ax.blocks * guide["friction_force"]
+    friction = guide_friction(moving)
     ax_guides, moving_guides, friction_guides = replace(ax), moving, friction  # what the guides carry
     tw = design["axis"].get("twin_drive")
     if tw:  # each drive checked as its governing side: its share of the mass, friction and process force
         r, side, whole = vp.twin_side(tw, ax.table_mass, nut["mass"], ax.blocks * guide["block_mass"])
         moving_guides = whole
-        friction_guides = guide["friction_coefficient"] * (whole * G + ax.normal) + ax.blocks * guide["friction_force"]
+        friction_guides = guide_friction(whole)
         ax_guides = replace(ax, table_mass=whole - 2 * nut["mass"] - ax.blocks * guide["block_mass"])
         moving, friction = side, friction_guides * side / whole
         ax.axial_load, ax.mean_load, ax.force_share = r * ax.axial_load, r * ax.mean_load, r

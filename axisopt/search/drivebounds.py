@@ -46,7 +46,7 @@ def drive_box(space: Space, mounting: str, nut_sel, regen: bool, bearings=None, 
     with ``group``, each bearing's group.  The lost motion (``backlash``: nut and reduction alone) is exact."""
     pm = space.params_structured(mounting, nut_sel, mechanics=True, bearings=bearings)  # (n, B, guides, 1)
     pd = drive_pair_params(space, mounting, nut_sel, bearings)  # (n, B, drives, 1)
-    nc = len(np.arange(space.shape[1])[nut_sel]) if isinstance(nut_sel, slice) else len(nut_sel)
+    nc = len(space.nut_numbers(nut_sel))
     B = 1 if bearings is not None else space.shape[2]
     if B > 1:
         torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[0, :, 0, 0]
@@ -109,7 +109,7 @@ def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
     :data:`HULL_CACHE`, the box of every nut is evaluated once per space and these rows are taken from it (the
     screening, the explanation's block bounds and its scored blocks read the same values)."""
     N, B = space.shape[1], space.shape[2]
-    nut_idx = np.arange(N)[nut_sel] if isinstance(nut_sel, slice) else np.asarray(nut_sel, dtype=np.int64)
+    nut_idx = space.nut_numbers(nut_sel)
     Gm = space.shape[3] // max(space.n_drives, 1)
     if N * min(B, DRIVE_BEARING_GROUPS) * space.n_drives > HULL_CACHE or N * B * Gm > HULL_CACHE_MECHANICS:
         (box,), group = drive_box(space, mounting, nut_idx, regen, bearings, across=True)
@@ -143,8 +143,7 @@ def drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None)
     if not cons:
         return {}, None
     box, group = hull_ends(space, mounting, nut_sel, reads_regen(cons), bearings)
-    nc = len(np.arange(space.shape[1])[nut_sel]) if isinstance(nut_sel, slice) else len(nut_sel)
-    shape = (nc, int(group.max()) + 1, space.n_drives, 1)
+    shape = (len(space.nut_numbers(nut_sel)), int(group.max()) + 1, space.n_drives, 1)
     out = {}
     for c in cons:
         end = box[1] if c.sense == ">=" else box[0]

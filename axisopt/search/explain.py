@@ -386,16 +386,15 @@ def _score_drives(space: Space, mounting: str, drive, tally: _Tally, nut_idx, be
     out = np.full(score.shape, np.inf)
     hull, group = drive_hull(space, mounting, nut_idx, drive, bearings=bearing_idx) if D >= PER_DRIVE_MIN else \
         ({}, None)
+    passes = [None]  # drive numbers per pass; None: those the bounds leave worth scoring once the first is done
     if any(c.name not in hull for c in drive):  # a few drives, or a limit the bounds do not cover: every drive
-        cols_of = [lambda _k: np.arange(D)]
-        low = None
+        passes = [np.arange(D)]
     else:
         lb = 0.0
         for c in drive:
             lb = lb + weight(c) * c.violation(hull[c.name])
         lb = np.broadcast_to(lb, hull[drive[0].name].shape)[:, group]  # (nuts, bearings, drives)
         low = score.min(axis=2) + lb
-        cols_of = [lambda k: np.nonzero(_worth(drive, tally, hull, low, k))[0]]
         if D > FIRST_DRIVES:  # a first pass that sets the n-th score and the best values the second prunes by
             first = [np.argsort(low.reshape(-1, D).min(axis=0), kind="stable")[:FIRST_DRIVES]] \
                 if not np.isfinite(kth) else []
@@ -405,10 +404,11 @@ def _score_drives(space: Space, mounting: str, drive, tally: _Tally, nut_idx, be
                     v = v.max(axis=0) if c.sense == ">=" else -v.min(axis=0)
                     first.append(np.argsort(-v, kind="stable")[:FIRST_DRIVES])
             if first:
-                cols_of.insert(0, lambda _k: np.unique(np.concatenate(first)))
+                passes.insert(0, np.unique(np.concatenate(first)))
     done = np.zeros(D, dtype=bool)
-    for pick in cols_of:
-        cols = pick(kth)
+    for cols in passes:
+        if cols is None:
+            cols = np.nonzero(_worth(drive, tally, hull, low, kth))[0]
         cols = cols[~done[cols]]
         done[cols] = True
         if not len(cols):

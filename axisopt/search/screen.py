@@ -99,7 +99,7 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
     D = space.n_drives
     Gm = G // D  # guide axis of the mechanical stage
     phases = space.problem.axis_for(mounting).phases
-    nut_idx = np.arange(N)[nuts] if isinstance(nuts, slice) else np.asarray(nuts, dtype=np.int64)
+    nut_idx = space.nut_numbers(nuts)
     viable = viable_drives(space, mounting, nut_idx, constraints)
     if viable is not None:  # a (nut, bearing) block no drive could meet the drive's limits with: left out
         block = viable[0].any(axis=-1)[:, viable[1]]

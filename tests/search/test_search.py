@@ -107,6 +107,21 @@ def test_default_equals_exhaustive_carriage(seed, mode):
 REDUCTION_SEEDS = (0, 1, 2, 3, 5, 7)
 
 
+def _default_vs_exhaustive(p):
+    """``p`` with motor and coupling searched and every vendor margin at 1, solved by the default method and by
+    exhaustive enumeration (top 2): both find a design or neither, and the same answer.  Returns the problem
+    and the default method's result."""
+    from dataclasses import replace
+
+    p = replace(p, restrictions=replace(p.restrictions, drive=True), margins=tuple((c, 1.0) for c in model.CHECKS))
+    d = solve(p, "default", top=2, sensitivities=False)
+    e = solve(p, "exhaustive", top=2, sensitivities=False)
+    assert (d.best is None) == (e.best is None)
+    if d.best is not None:
+        assert_same_answer(d, e)
+    return p, d
+
+
 @pytest.mark.parametrize("seed", REDUCTION_SEEDS)
 def test_default_equals_exhaustive_with_reductions(seed):
     """(motor, coupling, reduction or none) triples as search choices on randomized catalogs: the default
@@ -132,7 +147,6 @@ _REDUCTION_RESULTS: dict = {}
 def _reduction_case(seed):
     if seed in _REDUCTION_RESULTS:
         return _REDUCTION_RESULTS[seed]
-    from dataclasses import replace
 
 
     rng = np.random.default_rng(300 + seed)
@@ -150,15 +164,10 @@ def _reduction_case(seed):
                      mode="frequency" if seed in (2, 5) else "stiffness",
                      # a reduction's backlash is lost motion (jt P_h / 2 pi): some drives pass, some do not
                      backlash=float(rng.uniform(5e-6, 40e-6)))
-    p = replace(p, restrictions=replace(p.restrictions, drive=True),
-                margins=tuple((c, 1.0) for c in model.CHECKS))
+    p, d = _default_vs_exhaustive(p)
     sp = build_space(p)
     assert sp.reductions is not None and any(ri is not None for _, _, ri in sp.drives)
-    d = solve(p, "default", top=2, sensitivities=False)
-    e = solve(p, "exhaustive", top=2, sensitivities=False)
-    assert (d.best is None) == (e.best is None)
     if d.best is not None:
-        assert_same_answer(d, e)
         ev = model.evaluate(d.best.design)
         for c in model.DRIVE_CHECKS:
             assert model.passes(ev.values[f"margin_{c}"]), c
@@ -178,7 +187,6 @@ def test_default_equals_exhaustive_with_drive(seed):
     """Motor and coupling as search choices: the default method equals exhaustive enumeration, on horizontal
     and vertical axes (gravity makes the motor-torque limits convex, not monotone, in the nut preload: the
     drag helps when lowering) and with a duty cycle of cutting moves and dwells."""
-    from dataclasses import replace
 
 
     rng = np.random.default_rng(100 + seed)
@@ -191,16 +199,11 @@ def test_default_equals_exhaustive_with_drive(seed):
     mass = rng.uniform(60, 150) if vertical else rng.uniform(150, 400)
     p = make_problem(cat, limits=limits, moving_mass=float(mass), axial_load=1500.0 if vertical else 3000.0,
                      orientation="vertical" if vertical else "horizontal", duty_cycle=duty)
-    p = replace(p, restrictions=replace(p.restrictions, drive=True),
-                margins=tuple((c, 1.0) for c in model.CHECKS))
+    p, d = _default_vs_exhaustive(p)
     sp = build_space(p)
     assert sp.n_drives > 1 and sp.size == 2 * 8 * 4 * 3 * sp.n_drives
-    d = solve(p, "default", top=2, sensitivities=False)
-    e = solve(p, "exhaustive", top=2, sensitivities=False)
-    assert (d.best is None) == (e.best is None)
     assert d.best is not None  # the seeds are chosen so that each case has a drive-limited optimum
     if d.best is not None:
-        assert_same_answer(d, e)
         assert d.best.motor and d.best.coupling
         ev = model.evaluate(d.best.design)
         for c in model.DRIVE_CHECKS:
@@ -213,7 +216,6 @@ def test_default_equals_exhaustive_with_phase_masses_and_forces(seed):
     moving mass), a cutting move's process force and a dwell held against a force, horizontal and vertical,
     motor and coupling searched, the vendors' load factor by speed and the estimated mounts: the default method
     still equals exhaustive enumeration."""
-    from dataclasses import replace
 
     from axisopt.physics.motion import Segment
 
@@ -231,13 +233,8 @@ def test_default_equals_exhaustive_with_phase_masses_and_forces(seed):
     p = make_problem(cat, limits=limits, moving_mass=mass, axial_load=1500.0 if vertical else 3000.0,
                      orientation="vertical" if vertical else "horizontal", duty_cycle=duty, load_factor=None,
                      required_life=float(rng.uniform(5e3, 2e4)) * 3600)
-    p = replace(p, restrictions=replace(p.restrictions, drive=True),
-                margins=tuple((c, 1.0) for c in model.CHECKS))
-    d = solve(p, "default", top=2, sensitivities=False)
-    e = solve(p, "exhaustive", top=2, sensitivities=False)
-    assert (d.best is None) == (e.best is None)
+    _, d = _default_vs_exhaustive(p)
     assert d.best is not None  # the seeds are chosen so that each case has an optimum
-    assert_same_answer(d, e)
     assert d.best.design.axis.load_factor_eff == pytest.approx(1.5)  # THK Table 19 at 18 m/min
 
 
@@ -247,7 +244,6 @@ def test_default_equals_exhaustive_with_counterbalance(seed):
     over the stroke with its tolerance, over- or underbalanced) vertical axis with a duty cycle of phase masses,
     motor and coupling searched: the balance force in every phase load, the motor torques, inertia, holding
     torque and lift-off; the default method still equals exhaustive enumeration."""
-    from dataclasses import replace
 
     from axisopt.design import Counterbalance
     from axisopt.physics.motion import Segment
@@ -271,13 +267,8 @@ def test_default_equals_exhaustive_with_counterbalance(seed):
     limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
     p = make_problem(cat, limits=limits, moving_mass=mass, axial_load=1500.0, orientation="vertical",
                      duty_cycle=duty, counterbalance=cb, required_life=float(rng.uniform(3e3, 1e4)) * 3600)
-    p = replace(p, restrictions=replace(p.restrictions, drive=True),
-                margins=tuple((c, 1.0) for c in model.CHECKS))
-    d = solve(p, "default", top=2, sensitivities=False)
-    e = solve(p, "exhaustive", top=2, sensitivities=False)
-    assert (d.best is None) == (e.best is None)
+    _, d = _default_vs_exhaustive(p)
     assert d.best is not None  # the seeds are chosen so that each case has an optimum
-    assert_same_answer(d, e)
     assert d.best.design.axis.counterbalance == cb
 
 

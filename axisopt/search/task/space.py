@@ -190,6 +190,10 @@ class Space:
         return tuple(None if d is None else shaped({k: v[sel] for k, v in d.items()}, shape, dtype)
                      for d in (self.m_arr, self.c_arr, self.r_arr))
 
+    def nut_numbers(self, nut_sel) -> np.ndarray:
+        """The nut numbers a selection (a slice or an index array) takes."""
+        return np.arange(self.shape[1])[nut_sel] if isinstance(nut_sel, slice) else np.asarray(nut_sel, np.int64)
+
     def nut_bearing_arrays(self, nut_sel, dtype=float, bearings=None) -> tuple:
         """Screw and nut columns of the nuts ``nut_sel`` on the first axis, every bearing on the second (or,
         with ``bearings`` aligned with the nuts, those bearings on the first axis too)."""
