@@ -137,11 +137,24 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     return fit_lines("\n".join(L))
 
 
+def _change_text(d) -> str:
+    """One design change (search.advice): 'lower axis.max_speed from 20 to 15.5 m/min', 'add a balance cylinder
+    ...', with its note in brackets."""
+    note = f" ({d.note})" if d.note else ""
+    if d.key == "axis.counterbalance" and d.value == 0:
+        return f"add axis.counterbalance {{kind: cylinder, force: {_v(d.to)} {d.unit}}}{note}"
+    verb = "lower" if d.to < d.value else "raise"
+    return f"{verb} {d.key} from {_v(d.value)} to {_v(d.to)} {d.unit}{note}"
+
+
 def relax_lines(inf) -> list:
     """The first lines of an infeasible answer: an axis change that the search verified makes it feasible (first:
     a design change before a vendor's rule), then what to relax, by how much, for which closest design."""
-    L0 = [f"  change the axis: {'lower' if d.to < d.value else 'raise'} {d.key} from {_v(d.value)} to {_v(d.to)} "
-          f"{d.unit}: the catalogs then hold a design (re-solved)" for d in inf.design_changes]
+    L0 = []
+    if inf.design_changes:
+        texts = [_change_text(d) for d in inf.design_changes]
+        head = "  change the axis: " if len(texts) == 1 else "  change the axis, together: "
+        L0 = [head + "; ".join(texts) + ": the catalogs then hold a design (re-solved)"]
     rel = inf.relax
     if not rel:
         return L0

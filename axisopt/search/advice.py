@@ -1,25 +1,38 @@
-"""A design change that makes an infeasible problem feasible, proposed before any limit is relaxed: the axis's
-rapid speed or acceleration lowered as far as the closest designs' misses say (the duty cycle's moves capped at
-it), each proposal re-solved to check that the catalogs then hold a design (:func:`design_changes`).
+"""Design changes that make an infeasible problem feasible, proposed before any limit is relaxed, each verified by
+a search on the changed problem (:func:`design_changes`).
 
-A margin of a speed check (critical speed, DN, the motor's, coupling's, reduction's or rotating-nut unit's
-speed: available / needed >= L) needs the speed it is short of in proportion: a design that reaches L (1 - m)
-meets L at the rapid speed times (1 - m).  A torque check of the motor or reduction is short of torque, which
-the acceleration sets with the mass: the acceleration is lowered by the same factor (more than is needed, since
-the friction and process force do not scale with it).  Each proposal is verified by the default method's search
-on the changed problem, stopped at its first feasible design (no optimum, no explanation), so it is offered only
-when the catalogs then hold a design; its value is rounded down to three significant figures.  The first kind
-that a search verifies is the advice (one search per kind, the speed first: an answer within the 2 s of an
-infeasible one).
+The kinds of change, each offered only where the closest designs' misses call for it:
+
+- **rapid speed** lowered: a margin of a speed check (critical speed, DN, the motor's, coupling's, reduction's or
+  rotating-nut unit's speed: available / needed >= L) needs the speed it is short of in proportion: a design that
+  reaches L (1 - m) meets L at the rapid speed times (1 - m);
+- **acceleration** lowered: a torque check of the motor or reduction is short of torque, a lift-off check of the
+  nut or support bearings short of preload against the largest axial force, both of which the acceleration sets
+  with the mass: the acceleration is lowered by the same factor (more than is needed, since the friction, the
+  weight and the process force do not scale with it);
+- **a reduction admitted**: the problem's ``max_backlash`` left every gearbox and belt out, and the closest
+  designs miss the inertia ratio, a torque or a motor speed, which a reduction changes by its ratio: the
+  least lost motion at the table that admits the least-backlash reduction on every screw of the catalogs;
+- **a counterbalance** on a vertical axis whose closest designs miss a torque, a lift-off or a life: a balance
+  cylinder taking :data:`BALANCE_SHARE` of the head's weight where there is none, or the counterweight or
+  cylinder raised to that share (a design rule of thumb, an estimate: docs/assumptions.md).
+
+Single changes are tried first (the speed and acceleration once more 10 % further), then each structural
+change (reduction, counterbalance) with the speed and acceleration changes on top: the first that a search
+verifies is the advice.  A verifying search is the default method's, stopped at its first feasible design (no
+optimum, no explanation); the whole advice stops after :data:`BUDGET` seconds of searching (an answer within the
+2 s of an infeasible one).  Values are rounded to three significant figures, down for what is lowered and up for what is raised.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import replace
+import time
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..design.axis import Counterbalance, G
 from .result import DesignChange
 
 # the checks whose needed value grows with the rapid speed, and with the acceleration (margin_<check>)
@@ -27,30 +40,49 @@ SPEED_CHECKS = frozenset({"critical_speed", "dn", "motor_speed", "coupling_speed
                           "unit_speed"})
 TORQUE_CHECKS = frozenset({"motor_peak_torque", "motor_rated_torque", "reduction_accel_torque",
                            "reduction_rated_torque"})
+LIFT_OFF_CHECKS = frozenset({"nut_lift_off", "bearing_lift_off"})
+ACCEL_CHECKS = TORQUE_CHECKS | LIFT_OFF_CHECKS
+# a reduction's ratio scales the reflected inertia, the torque and the motor speed
+REDUCTION_CHECKS = TORQUE_CHECKS | {"inertia_ratio", "motor_speed"}
+# what a counterbalance relieves on a vertical axis: the weight in the torques, lift-off and the lives
+BALANCE_CHECKS = TORQUE_CHECKS | LIFT_OFF_CHECKS | {"holding_torque", "brake_torque"}
+BALANCE_LIMITS = frozenset({"min_life"})
+# the share of the head's weight a proposed counterbalance takes: an estimate (machine builders balance 80-100 %
+# of the weight; the shipped balanced Zs take 83 and 90 %)
+BALANCE_SHARE = 0.9
+FURTHER = 0.9  # the second proposal of a speed or acceleration: 10 % below the first
 SAFETY = 0.98  # the proposal a little below the closest designs' bare need (their misses are at one preload)
+BUDGET = 1.0  # [s] of verifying searches
 
 
-def _round_down(x: float) -> float:
-    """x rounded down to three significant figures."""
+def _round(x: float, up: bool = False) -> float:
+    """x rounded to three significant figures, down (or up)."""
     if x <= 0:
         return x
     e = math.floor(math.log10(x)) - 2
-    return math.floor(x / 10**e) * 10**e
+    return (math.ceil if up else math.floor)(x / 10**e - (1e-9 if up else -1e-9)) * 10**e
 
 
-def _factors(constraints, infeasibility, checks) -> list[float]:
-    """Per closest design that misses a limit of ``checks``: 1 - its largest miss among those (the change may
-    also free its other misses, or another design: the search verifies it).  The advice takes the least of
-    them: the largest change any closest design needs."""
+def _misses(constraints, infeasibility) -> list[dict]:
+    """Per closest design: {check or limit name: relative miss} (a margin's name without ``margin_``)."""
     by_label = {c.label: c for c in constraints}
     out = []
     for cand in infeasibility.closest:
-        misses = [m for label, m in cand.misses.items()
-                  if (c := by_label.get(label)) is not None and c.name.startswith("margin_")
-                  and c.name[len("margin_"):] in checks]
-        if misses:
-            out.append(1.0 - max(misses))
-    return [f for f in out if 0.0 < f < 1.0]
+        named = {}
+        for label, m in cand.misses.items():
+            c = by_label.get(label)
+            if c is not None:
+                named[c.name[len("margin_"):] if c.name.startswith("margin_") else c.name] = m
+        out.append(named)
+    return out
+
+
+def _factor(misses, checks) -> float | None:
+    """1 - the largest miss among ``checks`` of the closest design that misses them most (the largest change any
+    closest design needs; the search verifies it), None when no closest design misses one."""
+    need = [max(m for k, m in d.items() if k in checks) for d in misses if checks & d.keys()]
+    f = [1.0 - m for m in need if 0.0 < 1.0 - m < 1.0]
+    return min(f) if f else None
 
 
 def _with(axis, key: str, to: float):
@@ -62,34 +94,120 @@ def _with(axis, key: str, to: float):
     return replace(axis, **{key: to}, **({"duty_cycle": cycle} if axis.duty_cycle else {}))
 
 
-def design_changes(problem, constraints, infeasibility) -> list:
-    """The axis changes (:class:`.result.DesignChange`) that make ``problem`` feasible, each verified by a search;
-    empty when none of the kinds applies or none is verified."""
+@dataclass(frozen=True)
+class _Step:
+    """One change: what it says (DesignChange rows) and what it does to the problem."""
+
+    changes: tuple
+    apply: object  # Problem -> Problem
+
+
+def _scalar_step(problem, key, unit, scale, factor) -> _Step | None:
+    value = getattr(problem.axis, key, None)
+    if not value or factor is None:
+        return None
+    to = _round(value * scale * factor * SAFETY) / scale
+    if to <= 0:
+        return None
+    return _Step((DesignChange(f"axis.{key}", unit, value * scale, to * scale),),
+                 lambda p, k=key, t=to: replace(p, axis=_with(p.axis, k, t)))
+
+
+def _reduction_step(problem, misses) -> _Step | None:
+    """Admit the reductions the problem's max_backlash left out (parts: lost motion = backlash x lead / 2 pi at
+    the table), when the closest designs miss what a reduction's ratio changes."""
+    from .parts import build_space
+
+    if not any(REDUCTION_CHECKS & d.keys() for d in misses):
+        return None
+    limit = problem.limit_map.get("max_backlash")
+    if limit is None:
+        return None
+    try:
+        wide = build_space(problem.with_limit("max_backlash", None))
+    except Exception:  # noqa: BLE001 - the problem without the limit refused: no advice of this kind
+        return None
+    if wide.reductions is None or not len(wide.s_arr["lead"]):
+        return None
+    lost = float(np.nanmin(wide.reductions.number("backlash"))) * float(np.max(wide.s_arr["lead"])) / (2 * np.pi)
+    to = _round(lost * 1e6, up=True) * 1e-6
+    if not to > limit:
+        return None
+    return _Step((DesignChange("limits.max_backlash", "um", limit * 1e6, to * 1e6,
+                               "admits a gearbox or belt: its lost motion at the table"),),
+                 lambda p: p.with_limit("max_backlash", to))
+
+
+def _balance_step(problem, misses, constraints) -> _Step | None:
+    """A vertical axis: a balance cylinder taking BALANCE_SHARE of the head's weight, or the counterbalance raised
+    to it, when the closest designs miss what the weight sets."""
+    a = problem.axis
+    names = {c.name for c in constraints}
+    if a.orientation != "vertical" or problem.arrangements:
+        return None
+    if not any((BALANCE_CHECKS | (BALANCE_LIMITS & names)) & d.keys() for d in misses):
+        return None
+    target = BALANCE_SHARE * a.moving_mass * G
+    cb = a.counterbalance
+    if cb is None or cb.kind == "none":
+        force = _round(target, up=True)
+        new = Counterbalance("cylinder", force=force)
+        change = DesignChange("axis.counterbalance", "N", 0.0, force)
+    elif cb.kind == "cylinder":
+        if cb.force >= target:
+            return None
+        force = _round(target, up=True)
+        end = None if cb.force_at_end is None else _round(cb.force_at_end * force / cb.force, up=True)
+        new = replace(cb, force=force, force_at_end=end)
+        change = DesignChange("axis.counterbalance.force", "N", cb.force, force,
+                              "" if end is None else f"force_at_end {cb.force_at_end:g} to {end:g} N")
+    else:
+        mass = _round(BALANCE_SHARE * a.moving_mass, up=True)
+        if cb.mass >= mass:
+            return None
+        new = replace(cb, mass=mass)
+        change = DesignChange("axis.counterbalance.mass", "kg", cb.mass, mass)
+    return _Step((change,), lambda p: replace(p, axis=replace(p.axis, counterbalance=new)))
+
+
+def _feasible(problem) -> bool:
     from .bestfirst import bound_order_search
     from .parts import build_space
     from .task.constraints import build_constraints
     from .task.objective import objective_spec
 
-    axis = problem.axis
-    out = []
-    for key, checks, unit, scale in (("max_speed", SPEED_CHECKS, "m/min", 60.0),
-                                     ("acceleration", TORQUE_CHECKS, "m/s^2", 1.0)):
-        value = getattr(axis, key, None)
-        factors = _factors(constraints, infeasibility, checks)
-        if not value or not factors:
-            continue
-        # the largest change the closest designs suggest (the likeliest to free one of them), one search each
-        to = _round_down(value * scale * min(factors) * SAFETY) / scale
-        if to <= 0:
-            continue
-        changed = replace(problem, axis=_with(axis, key, to))
-        try:
-            space = build_space(changed)
-        except Exception:  # noqa: BLE001 - a change the inputs refuse (a duty cycle it breaks) is no advice
-            continue
-        spec = objective_spec(changed.objective.mode, changed)
-        ex, _ = bound_order_search(space, build_constraints(changed), spec, top=1, first_feasible=True)
-        if np.isfinite(ex.objective).any():
-            out.append(DesignChange(f"axis.{key}", unit, value * scale, to * scale))
-            break  # one verified change is the advice; the limits to relax follow it
-    return out
+    try:
+        space = build_space(problem)
+    except Exception:  # noqa: BLE001 - a change the inputs refuse (a duty cycle it breaks) is no advice
+        return False
+    spec = objective_spec(problem.objective.mode, problem)
+    ex, _ = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True)
+    return bool(np.isfinite(ex.objective).any())
+
+
+def design_changes(problem, constraints, infeasibility, budget: float = BUDGET) -> list:
+    """The changes (:class:`.result.DesignChange`, to be made together) that make ``problem`` feasible, verified
+    by a search; empty when no kind applies, none is verified or the budget is spent."""
+    misses = _misses(constraints, infeasibility)
+    if not misses:
+        return []
+    f_speed, f_accel = _factor(misses, SPEED_CHECKS), _factor(misses, ACCEL_CHECKS)
+    speed = _scalar_step(problem, "max_speed", "m/min", 60.0, f_speed)
+    accel = _scalar_step(problem, "acceleration", "m/s^2", 1.0, f_accel)
+    # one step further each (the closest designs' misses are at one preload and one screw: another may need more)
+    further = [_scalar_step(problem, k, u, sc, f and f * FURTHER) for k, u, sc, f in
+               (("max_speed", "m/min", 60.0, f_speed), ("acceleration", "m/s^2", 1.0, f_accel))]
+    structural = [s for s in (_reduction_step(problem, misses), _balance_step(problem, misses, constraints)) if s]
+    singles = [s for s in [speed, accel, *further] if s] + structural
+    # a structural change with the speed and acceleration on top (the misses it leaves need them)
+    pairs = [(s, t) for s in structural for t in (speed, accel) if t]
+    t0 = time.perf_counter()
+    for combo in [(s,) for s in singles] + pairs:
+        if time.perf_counter() - t0 > budget:
+            break
+        changed = problem
+        for step in combo:
+            changed = step.apply(changed)
+        if _feasible(changed):
+            return [c for step in combo for c in step.changes]
+    return []

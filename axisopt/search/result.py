@@ -243,15 +243,18 @@ class ParetoFront:
 @dataclass(frozen=True)
 class DesignChange:
     """An axis input changed (search.advice) after which the catalogs hold a design: ``key`` (``axis.max_speed``),
-    its unit, the value and the proposed one in that unit."""
+    its unit, the value and the proposed one in that unit, and what it means where the key does not say it
+    (``note``: 'admits a gearbox or belt ...')."""
 
     key: str
     unit: str
     value: float
     to: float
+    note: str = ""
 
     def to_dict(self) -> dict:
-        return {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to)}
+        return {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to),
+                "note": self.note}
 
 
 @dataclass

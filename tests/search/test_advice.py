@@ -50,3 +50,48 @@ def test_batch_solves_leave_the_advice_out(tmp_path):
     res = solve(load_problem(_variant(tmp_path, "lathe_z_problem.yaml", max_backlash="1 um")), "default",
                 sensitivities=False)
     assert res.best is None and res.infeasibility.design_changes == []
+
+
+def test_twin_gantry_too_fast_gets_a_verified_speed(tmp_path):
+    """The 4 m twin gantry at 20 m/min misses the critical speed and the inertia ratio (the closest designs'
+    63 mm screws): the advice's first proposal (the closest design's need) does not hold for every screw, the one
+    10 % further does; the problem at that speed solves."""
+    res = solve(load_problem(_variant(tmp_path, "gantry_twin_problem.yaml", max_speed="20 m/min")), "default")
+    assert res.best is None
+    [c] = res.infeasibility.design_changes
+    assert c.key == "axis.max_speed" and 10.0 < c.to < 16.0
+    fixed = _variant(tmp_path, "gantry_twin_problem.yaml", max_speed=f"{c.to:g} m/min")
+    again = solve(load_problem(fixed), "default", sensitivities=False)
+    assert again.best is not None and again.certificate.proven
+
+
+def test_heavier_balanced_ram_gets_a_stronger_cylinder(tmp_path):
+    """The balanced Z with its ram doubled to 1200 kg and the cylinder kept (5.3-5.6 kN, 45 % of the weight)
+    misses the motor's RMS torque and the support set's lift-off: neither speed nor acceleration is offered
+    first; the cylinder raised to 90 % of the weight is, with its force rise kept in proportion, and the
+    problem with that cylinder solves."""
+    res = solve(load_problem(_variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="1200 kg")), "default")
+    assert res.best is None
+    [c] = res.infeasibility.design_changes
+    assert c.key == "axis.counterbalance.force" and c.value == pytest.approx(5300.0)
+    assert c.to == pytest.approx(0.9 * 1200 * 9.80665, rel=2e-3)
+    end = round(5600.0 * c.to / 5300.0, -1)
+    cylinder = f"{{kind: cylinder, force: {c.to:g} N, force_at_end: {end:g} N, tolerance: 5 %, piston_mass: 15 kg}}"
+    fixed = _variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="1200 kg", counterbalance=cylinder)
+    again = solve(load_problem(fixed), "default", sensitivities=False)
+    assert again.best is not None and again.certificate.proven
+
+
+def test_unbalanced_vertical_gets_a_cylinder(tmp_path):
+    """An 800 kg Z without a balance cylinder misses torque and lift-off for every catalog drive: the advice adds
+    a balance cylinder (90 % of the weight), and the problem with it solves."""
+    res = solve(load_problem(_variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="800 kg",
+                                      counterbalance="{kind: none}")), "default")
+    assert res.best is None
+    [c] = res.infeasibility.design_changes
+    assert c.key == "axis.counterbalance" and c.value == 0
+    assert c.to == pytest.approx(0.9 * 800 * 9.80665, rel=2e-3)
+    fixed = _variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="800 kg",
+                     counterbalance=f"{{kind: cylinder, force: {c.to:g} N}}")
+    again = solve(load_problem(fixed), "default", sensitivities=False)
+    assert again.best is not None and again.certificate.proven
