@@ -21,7 +21,8 @@ Single changes are tried first (the speed and acceleration once more 10 % furthe
 change (reduction, counterbalance) with the speed and acceleration changes on top: the first that a search
 verifies is the advice.  A verifying search is the default method's, stopped at its first feasible design (no
 optimum, no explanation); the whole advice stops after :data:`BUDGET` seconds of searching (an answer within the
-2 s of an infeasible one).  Values are rounded to three significant figures, down for what is lowered and up for what is raised.
+2 s of an infeasible one).  Values are rounded to three significant figures, down for what is lowered and
+up for what is raised.
 """
 
 from __future__ import annotations
