@@ -102,11 +102,16 @@ class TwinDrive:
     cross_stroke: float  # the cross carriage's travel, centred on the bridge, at most span [m]
     cross_mass: float = 0.0  # cross carriage with its head [kg]
     bridge_yaw_inertia: float | None = None  # bridge about its centre [kg m^2]; None: m L^2 / 12 (an estimate)
+    # the side a model of this axis is: 'governing' (nearest the cross carriage at the end of its stroke: the
+    # limits are checked on it) or 'far' (the other side at that moment); not a YAML key (model.evaluate's side)
+    side: str = "governing"
 
     @property
     def force_share(self) -> float:
-        """The governing side's share of a force on the cross carriage at the end of its stroke [-]."""
-        return float(side_shares(self.cross_stroke, self.span))
+        """This side's share of a force on the cross carriage at the end of its stroke [-]: r = 1/2 + s/2L on the
+        governing side, 1 - r on the far side."""
+        r = float(side_shares(self.cross_stroke, self.span))
+        return 1.0 - r if self.side == "far" else r
 
 
 @dataclass(frozen=True)

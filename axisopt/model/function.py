@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import casadi as ca
 import numpy as np
@@ -281,8 +281,18 @@ def drive_dict(ev: Evaluation) -> dict | None:
             "regen_energy_J": v["regen_energy"], "regen_power_W": v["regen_power"]}
 
 
-def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool = True) -> Evaluation:
-    """Evaluate a design with the CasADi axis Function (or directly on numpy with use_casadi=False)."""
+def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool = True,
+             side: str = "governing") -> Evaluation:
+    """Evaluate a design with the CasADi axis Function (or directly on numpy with use_casadi=False).
+
+    ``side`` (a twin-drive gantry, :mod:`.gantry`): 'governing' (the side nearest the cross carriage at the end of
+    its stroke: what the limits are checked on) or 'far' (the other side at that moment: share 1 - r of the
+    process force and of the cross carriage's weight over the half).  One drive: both are the drive."""
+    if side not in ("governing", "far"):
+        raise ValueError(f"side must be 'governing' or 'far', not {side!r}")
+    tw = design.axis.twin_drive
+    if tw is not None and tw.side != side:
+        design = replace(design, axis=replace(design.axis, twin_drive=replace(tw, side=side)))
     x = positions(design.axis, n_positions)
     params = design_params(design)
     if use_casadi:

@@ -59,7 +59,7 @@ def gantry_params(axis) -> dict:
     inertia = tw.bridge_yaw_inertia
     if inertia is None:
         inertia = pg.bridge_yaw_inertia_estimate(axis.moving_mass, tw.span)
-    return {"twin": 1.0, "force_share": float(pg.side_shares(tw.cross_stroke, tw.span)),
+    return {"twin": 1.0, "force_share": tw.force_share,
             "cross_mass": tw.cross_mass, "cross_stroke": tw.cross_stroke, "twin_span": tw.span,
             "bridge_yaw_inertia": float(inertia)}
 

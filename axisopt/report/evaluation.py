@@ -11,12 +11,12 @@ import numpy as np
 from ..design import PRETENSION_RISE, rotating_nut
 from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
-from ..model.gantry import gantry_params
 from ..model.limits import CHECK_TABLE
 from ..model.loads import balance_summary
 from ..model.params import axis_params
 from ..model.servo import servo_response
 from ..units import N_PER_UM
+from .gantry import twin_dict, twin_lines
 from .lifeloads import life_dict, life_lines
 from .servo import servo_dict, servo_lines
 
@@ -159,40 +159,6 @@ def counterbalance_lines(ev: Evaluation) -> list:
     text = (f"counterbalance: {what}; the screw carries {b['net']:,.0f} N of the head's {b['weight']:,.0f} N "
             "at rest")
     return textwrap.wrap(text, WIDTH, initial_indent="  ", subsequent_indent="    ")
-
-
-def twin_dict(ev: Evaluation) -> dict:
-    """A twin-drive gantry's entries (model.gantry): the governing side's shares and the gantry's modes; none for
-    one drive."""
-    tw = ev.design.axis.twin_drive
-    if tw is None:
-        return {}
-    v = ev.values
-    return {"twin_drive": {
-        "span_mm": tw.span * 1e3, "cross_stroke_mm": tw.cross_stroke * 1e3, "cross_mass_kg": tw.cross_mass,
-        "bridge_yaw_inertia_kgm2": gantry_params(ev.design.axis)["bridge_yaw_inertia"],
-        "bridge_yaw_inertia_estimated": tw.bridge_yaw_inertia is None,
-        "governing_side_force_share": tw.force_share, "governing_side_moving_mass_kg": v["moving_mass"],
-        "gantry_moving_mass_kg": v["gantry_moving_mass"],
-        "min_gantry_frequency_Hz": float(np.min(v["f_gantry"])),
-        "racking_frequency_Hz": np.asarray(v["f_racking"]).tolist(),
-        "min_racking_stiffness_Nm_per_urad": float(np.min(v["k_racking"])) * 1e-6}}
-
-
-def twin_lines(ev: Evaluation) -> list:
-    """The text lines of :func:`twin_dict` (none for one drive)."""
-    d = twin_dict(ev).get("twin_drive")
-    if d is None:
-        return []
-    est = " (estimate m L^2/12)" if d["bridge_yaw_inertia_estimated"] else ""
-    return [f"twin drive: 2 drives {d['span_mm']:.0f} mm apart, cross carriage {d['cross_mass_kg']:.0f} kg over "
-            f"{d['cross_stroke_mm']:.0f} mm; governing side at the stroke end: "
-            f"{d['governing_side_force_share'] * 100:.1f} % of the process force, "
-            f"{d['governing_side_moving_mass_kg']:.1f} of {d['gantry_moving_mass_kg']:.1f} kg",
-            f"  gantry modes (2-DOF translation + yaw, both chains): lowest {d['min_gantry_frequency_Hz']:.1f} Hz; "
-            f"racking {min(d['racking_frequency_Hz']):.1f} Hz at its lowest, yaw stiffness "
-            f"{d['min_racking_stiffness_Nm_per_urad']:.1f} N.m/urad{est}; the guides-only yaw mode is not in the "
-            "1st frequency"]
 
 
 def _finite(x):

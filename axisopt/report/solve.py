@@ -70,7 +70,8 @@ def format_result(res, top: int | None = None, problem=None) -> str:
         L.append(evaluation_table(evaluate(b.design)))
         if res.binding:
             L.append("")
-            L.append("limits at the optimum (what relaxing each by 10 % buys, re-solved)")
+            L.append("limits at the optimum (what relaxing each by 10 % buys, re-solved)"
+                     + ("; on the governing side" if b.design.axis.twin_drive else ""))
             L.append(f"  {'limit':<18}{'value':>12}{'at optimum':>12}{'relaxed to':>12}  {'unit':<6}"
                      f"{'gain ' + res.objective_unit:>14}")
             for bd in res.binding:
