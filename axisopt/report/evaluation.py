@@ -27,6 +27,8 @@ WIDTH = 100  # terminal columns the text tables fit
 # short names for tables with one column per design (both declared with the check in model.limits).
 CHECK_UNITS = {c.name: (c.unit, c.factor) for c in CHECK_TABLE}
 CHECK_SHORT = {c.name: c.short for c in CHECK_TABLE}
+# a horizontal screw's own-weight sag shown in the text from this [m] (long screws; the JSON always has it)
+SAG_SHOWN = 1e-4
 
 
 def fmt_value(x) -> str:
@@ -96,6 +98,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "total_mass_kg": v["total_mass"],
         "cost": v["cost"],
         "cost_currency": "EUR",
+        "screw_sag_mm": float(v["screw_sag"]) * 1e3,
         "drag_torque_Nm": v["drag_torque"],
         "drag_torque_parts_Nm": {"nut": v["drag_nut"], "bearings": v["drag_bearings"],
                                  "guides": v["drag_guides"]},
@@ -250,6 +253,12 @@ def evaluation_table(ev: Evaluation) -> str:
                  f"{v['drag_bearings']:.3f}, guides {v['drag_guides']:.3f}) at {a.max_speed * 60:.0f} m/min")
     lines.append(f"moving mass {v['moving_mass']:.1f} kg   total mass {v['total_mass']:.1f} kg   "
                  f"cost {v['cost']:,.0f} EUR (illustrative prices)")
+    sag = float(v["screw_sag"])
+    if sag >= SAG_SHOWN:
+        lines.extend(textwrap.wrap(
+            f"screw sag under its own weight {sag * 1e3:.2f} mm between the supports {a.span * 1e3:.0f} mm apart "
+            "(a beam; the nut carries the shaft where it stands, and a pretension, gone when warm, is not "
+            "counted; no vendor gives a limit: limits.max_screw_sag)", WIDTH, subsequent_indent="  "))
     lines.extend(twin_lines(ev))
     lines.append(_thermal_line(ev))
     z = {k: float(np.asarray(v[k])[i_min]) * 100

@@ -57,3 +57,20 @@ def test_unknown_side_is_refused(best):
     _, design = best
     with pytest.raises(ValueError, match="side must be"):
         evaluate(design, side="left")
+
+
+def test_the_long_screw_sag_is_shown(best):
+    """The 4.28 m screw's own-weight sag is in the text and the JSON: q L^4 / (384 E I) for the fixed-fixed
+    screw (AISC Table 3-23 case 15), written here from the catalog row (mass per metre, root diameter) and
+    THK's E = 2.06e5 N/mm^2."""
+    import math
+
+    from axisopt.report.evaluation import evaluation_dict, evaluation_table
+
+    _, design = best
+    ev = evaluate(design)
+    q = float(design.screw["mass_per_length"]) * 9.80665
+    d_r = float(design.screw["root_diameter"])
+    expected = q * design.axis.span ** 4 / (384 * 206e9 * math.pi * d_r ** 4 / 64)
+    assert evaluation_dict(ev)["screw_sag_mm"] == pytest.approx(expected * 1e3, rel=1e-6)
+    assert f"screw sag under its own weight {expected * 1e3:.2f} mm" in evaluation_table(ev)
