@@ -4,7 +4,8 @@ answers are combined.  The best objective wins (ties: the shared tie rule, lower
 arrangement listed first); the runners-up are merged in objective order; the certificate's counts are summed and
 proven only if every arrangement's solve is; infeasible only if every arrangement is.  The limit sensitivities
 are the best gain over all arrangements, each re-solved with the limit relaxed (:func:`.front.limit_sensitivities`
-for an arrangement with a design, a relaxed solve for one without).  A Pareto objective is refused."""
+for an arrangement with a design, a relaxed solve for one without).  A Pareto objective merges the arrangements' fronts
+and keeps the designs no design of another arrangement dominates."""
 
 from __future__ import annotations
 
@@ -13,7 +14,6 @@ from dataclasses import fields, replace
 
 import numpy as np
 
-from ..errors import InputError
 from ..model.limits import LIMITS
 from ..problem import Problem
 from .result import INFEASIBLE, OPTIMAL, Certificate, SolveResult
@@ -71,17 +71,52 @@ def _sensitivities(problem: Problem, subs, results, win: int, method: str) -> li
     return out
 
 
+def _pareto(problem: Problem, method: str, subs, labels, t0: float) -> SolveResult:
+    """A Pareto objective over the arrangements: each arrangement's front, merged and filtered to the designs no
+    design of any arrangement dominates (each point names its arrangement)."""
+    from .front import solve
+    from .pareto import FIELD, SENSE, nondominated
+
+    results = [solve(sub, method, sensitivities=False) for sub in subs]
+    n = len(results)
+    cert = _certificate(results)
+    fronts = [r.pareto for r in results]
+    pts = [replace(c, arrangement=labels[i]) for i, f in enumerate(fronts) if f is not None for c in f.points]
+    keys = problem.objective.pareto
+    first = next((f for f in fronts if f is not None), None)
+    if not pts or first is None:
+        r = results[0]
+        return replace(r, message=f"{n} arrangements tried ({'; '.join(labels)}), none feasible", certificate=cert,
+                       time=time.perf_counter() - t0, arrangements=n)
+    P = np.array([[getattr(c, FIELD[k]) * (1.0 if SENSE[k] == "max" else -1.0) for k in keys] for c in pts])
+    keep = nondominated(P)
+    lead = np.array([P[j, 0] for j in keep])
+    keep = [int(keep[j]) for j in np.argsort(-lead, kind="stable")]
+    points = [replace(pts[j], rank=r + 1) for r, j in enumerate(keep)]
+    clouds = [np.asarray(f.cloud, dtype=float) for f in fronts if f is not None and f.cloud is not None]
+    front = replace(first, points=points, feasible=sum(f.feasible for f in fronts if f is not None),
+                    cloud=np.vstack(clouds) if clouds else None)
+    counts = {lab: sum(p.arrangement == lab for p in points) for lab in labels}
+    msg = f"{n} arrangements tried; front points by arrangement: " + "; ".join(f"{k} {v}" for k, v in counts.items())
+    notes = tuple(n for n in cert.notes if not n.startswith("front size"))
+    cert = replace(cert, notes=notes + (f"front size {len(points)} (the arrangements' fronts merged: "
+                                        + ", ".join(str(len(f.points)) for f in fronts if f is not None) + ")",))
+    return replace(results[0], status=OPTIMAL if all(r.status in (OPTIMAL, INFEASIBLE) for r in results)
+                   else next(r.status for r in results if r.status not in (OPTIMAL, INFEASIBLE)),
+                   best=points[0], runners_up=[], pareto=front, certificate=cert, message=msg,
+                   time=time.perf_counter() - t0, arrangements=n)
+
+
 def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: float,
                        sensitivities: bool) -> SolveResult:
     """Solve every arrangement of ``problem`` with ``method`` and combine (see the module)."""
     from .front import METHODS_BY_NAME, solve
 
-    if problem.objective.mode == "pareto":
-        raise InputError("a Pareto objective with search.counterbalance / search.twin_drive options is not supported "
-                         "yet: solve each arrangement as its own problem", source=problem.source)
     t0 = time.perf_counter()
     labels = [lab for lab, _ in problem.arrangements]
     subs = [replace(problem, axis=ax, arrangements=()) for _, ax in problem.arrangements]
+    if problem.objective.mode == "pareto":
+        return _pareto(problem, method, subs, labels, t0)
     results = [solve(sub, method, top=top, time_limit=time_limit, sensitivities=False) for sub in subs]
     n = len(results)
     cert = _certificate(results)

@@ -112,6 +112,9 @@ class Candidate:
     # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their minimum over
     # the stroke.  Not in the JSON (the display fields above carry the same values in vendor units).
     outputs: dict = field(default_factory=dict, repr=False, compare=False)
+    # a problem with search.counterbalance / search.twin_drive options, Pareto objective: the arrangement this
+    # design is of ('' otherwise; not in the JSON then)
+    arrangement: str = ""
 
     def parts(self) -> dict:
         out = {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
@@ -127,14 +130,17 @@ class Candidate:
         d = asdict(self)
         d.pop("design")
         d.pop("outputs")
+        if not d["arrangement"]:
+            d.pop("arrangement")
         return {k: _clean(v) for k, v in d.items()}
 
     def row(self, objective_unit: str | None = None) -> dict:
         """One table row: rank, mounting, parts, the objective (when ``objective_unit`` is given) and the
         values in display units, each unit in its column name; an infeasible problem's closest designs add
         ``miss <limit> [%]`` per missed limit."""
-        r = {"rank": self.rank, "mounting": self.mounting, "screw": self.screw, "nut": self.nut,
-             "bearing": self.bearing, "guide": self.guide}
+        r = {"rank": self.rank, "mounting": self.mounting} | ({"arrangement": self.arrangement}
+                                                              if self.arrangement else {})
+        r |= {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
         if self.motor:
             r["motor"] = self.motor
         if self.coupling:

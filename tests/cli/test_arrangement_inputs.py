@@ -76,12 +76,17 @@ search: {counterbalance: [none]}
     assert "search" in err and "unknown key" in err, err
 
 
-def test_pareto_with_options_is_refused(tmp_path, capsys):
+def test_pareto_with_options_names_each_point_arrangement(tmp_path, capsys):
     text = VERTICAL.replace("objective: tool_stiffness", "objective: {mode: pareto, pareto: [stiffness, cost]}")
     path = write_file(tmp_path, "p.yaml", _problem("counterbalance: [none, {kind: counterweight, mass: 200 kg}]",
                                                    text))
-    assert main(["solve", path]) == 2
-    assert "Pareto objective with search.counterbalance" in one_line_error(capsys)
+    assert main(["solve", path, "--json", "-"]) == 0
+    res = json.loads(capsys.readouterr().out)
+    points = res["pareto"]["points"]
+    assert points and all(pt["arrangement"] in ("none", "counterweight 200 kg") for pt in points)
+    assert main(["solve", path]) == 0
+    out = capsys.readouterr().out
+    assert "arrangements tried; front points by arrangement" in out and "arrangement" in out
 
 
 def test_options_solve_and_name_the_winner(tmp_path, capsys):

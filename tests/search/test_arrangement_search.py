@@ -98,3 +98,42 @@ def test_twin_drive_choice_default_equals_exhaustive():
 
     assert len(won) >= 2
     assert any(w != 0 for w, _ax in won)
+
+
+def _brute_front(p):
+    """Every feasible design of every arrangement (exhaustive enumeration, exact per combination), filtered to the
+    non-dominated ones by pairwise comparison: {(arrangement, combination)}."""
+    from axisopt.search.exhaustive import exhaustive_search
+    from axisopt.search.parts import build_space
+    from axisopt.search.task.constraints import build_constraints
+    from axisopt.search.task.objective import objective_spec
+
+    rows, keys = [], []
+    for label, ax in p.arrangements:
+        sub = replace(p, axis=ax, arrangements=())
+        ex, _ = exhaustive_search(build_space(sub), build_constraints(sub), objective_spec("stiffness"))
+        ok = np.nonzero(ex.feasible)[0]
+        rows.append(np.column_stack([ex.min_stiffness[ok], -ex.cost[ok]]))
+        keys += [(label, int(i)) for i in ex.idx[ok]]
+    P = np.vstack(rows)
+    ge = (P[:, None, :] >= P[None, :, :]).all(-1)
+    gt = (P[:, None, :] > P[None, :, :]).any(-1)
+    return {k for k, dominated in zip(keys, (ge & gt).any(0)) if not dominated}
+
+
+@pytest.mark.parametrize("make,seed", [(_vertical, 0), (_vertical, 2), (_gantry, 0), (_gantry, 1)])
+def test_pareto_over_arrangements_is_the_front_of_all_their_designs(make, seed):
+    """A Pareto objective with arrangements: the merged front equals the non-dominated set of every feasible design
+    of every arrangement (brute force), each point naming its arrangement; default == exhaustive."""
+    from axisopt.problem import Objective
+
+    p = replace(make(seed), objective=Objective(mode="pareto", pareto=("stiffness", "cost")))
+    d, e = solve(p, "default"), solve(p, "exhaustive")
+    got = {(c.arrangement, c.combination) for c in d.pareto.points}
+    assert got == {(c.arrangement, c.combination) for c in e.pareto.points}
+    assert got == _brute_front(p)
+    assert d.arrangements == len(p.arrangements) and d.pareto.feasible == e.pareto.feasible
+    firsts = [c.min_stiffness for c in d.pareto.points]
+    assert firsts == sorted(firsts, reverse=True)
+    if make is _gantry:  # both arrangements on the front: one drive cheap, two stiff
+        assert len({c.arrangement for c in d.pareto.points}) == 2
