@@ -40,9 +40,10 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
                                                       # allows user rows; add derived or paper to search those
       require: {screw: [id, ...], nut: id, bearing: [...], guide: [...], motor: [...], coupling: [...]}
       exclude: {guide: [id, ...]}
-      drive: yes                       # motor and coupling are search choices (default: yes when a motor or
-                                       # coupling filter/requirement below is given; 'no' keeps the axis's
-                                       # motor_inertia and coupling values and skips the drive checks)
+      drive: yes                       # motor, coupling and reduction are search choices (default: yes when
+                                       # the catalogs have motors and the axis an acceleration or duty cycle;
+                                       # 'no' keeps the axis's motor_inertia and coupling values, skips the
+                                       # drive checks, and every answer says so)
       motor_vendors: [Yaskawa]         # the drive parts' own vendor and series filters ('vendors' is for
       motor_series: [Sigma-7 SGM7G]    # the mechanical parts)
       coupling_series: [...]
@@ -193,6 +194,8 @@ class Restrictions:
     require: tuple = ()  # ((slot, (ids...)), ...)
     exclude: tuple = ()
     drive: bool = False  # motor and coupling are search choices
+    # why the drive is not searched ('' when it is): stated on its own line in every answer
+    drive_left_out: str = ""
     motor_vendors: tuple | None = None
     motor_series: tuple | None = None
     coupling_series: tuple | None = None
@@ -314,8 +317,9 @@ RESTRICTIONS_SPEC = Spec("catalog", "which catalog parts and mountings the searc
                   choices=STATUSES, minimum=1),
     "require": Key("section", "only these part ids per slot", spec=SLOT_IDS_SPEC),
     "exclude": Key("section", "never these part ids per slot", spec=SLOT_IDS_SPEC),
-    "drive": Key("choice", "motor and coupling are search choices (default: yes when a motor or coupling "
-                 "filter or requirement is given)", choices=(True, False, "yes", "no")),
+    "drive": Key("choice", "motor, coupling and reduction are search choices (default: yes when the catalogs have "
+                 "motors and the axis an acceleration or duty cycle; 'no' is stated in every answer)",
+                 choices=(True, False, "yes", "no")),
     "motor_vendors": Key("names", f"motor vendors {_CATALOG_NAMES}", minimum=1),
     "motor_series": Key("names", f"motor series {_CATALOG_NAMES}", minimum=1),
     "coupling_series": Key("names", f"coupling series {_CATALOG_NAMES}", minimum=1),
@@ -473,17 +477,34 @@ def _catalog_names(sec: Section, key: str, known) -> tuple | None:
     return tuple(vals)
 
 
+def _default_drive(catalog: Catalog, axis: Axis) -> tuple:
+    """(searched, why not): the drive is sized whenever the catalogs have motors and the axis a motion to size it
+    on (an acceleration or a duty cycle), unless the problem says 'drive: no'."""
+    if not len(catalog.rows("motors")):
+        return False, "the catalogs have no motors (motors.csv)"
+    if axis.acceleration <= 0 and not axis.duty_cycle:
+        return False, ("axis.acceleration is 0 and there is no axis.duty_cycle: no inertia torque to size a "
+                       "motor on")
+    return True, ""
+
+
 def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Restrictions:
     has_motors = len(catalog.rows("motors")) > 0
+    default, why = _default_drive(catalog, axis)
     if sec is None:
-        return Restrictions(mountings=(axis.mounting,))
+        return Restrictions(mountings=(axis.mounting,), drive=default, drive_left_out=why)
     kw: dict = {}
     drive = sec.read("drive")
-    # the drive is searched when asked for: 'drive: yes', or a motor/coupling filter or requirement
-    req = sec.node.value.get("require")
-    asked = any(sec.has(k) for k in ("motor_vendors", "motor_series", "coupling_series")) or (
-        req is not None and isinstance(req.value, dict) and bool(set(DRIVE_SLOTS) & set(req.value)))
-    kw["drive"] = drive in (True, "yes") if drive is not None else asked
+    # the drive is searched unless the problem says 'drive: no' (or nothing can size it: the reason is stated)
+    if drive is not None:
+        kw["drive"] = drive in (True, "yes")
+        kw["drive_left_out"] = "" if kw["drive"] else "catalog.drive: no"
+    else:
+        # a motor/coupling filter or requirement asks for the drive (an axis without motion is then an error)
+        req = sec.node.value.get("require")
+        asked = any(sec.has(k) for k in ("motor_vendors", "motor_series", "coupling_series", "max_motor_flange")) or (
+            req is not None and isinstance(req.value, dict) and bool(set(DRIVE_SLOTS) & set(req.value)))
+        kw["drive"], kw["drive_left_out"] = (True, "") if asked else (default, why)
     if kw["drive"] and not has_motors:
         raise sec.error("drive", "the catalogs have no motors (motors.csv)")
     for key, table, col in (("motor_vendors", "motors", "vendor"), ("motor_series", "motors", "series"),
@@ -500,7 +521,6 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
     flange = sec.read("max_motor_flange")
     if flange is not None:
         kw["max_motor_flange"] = flange
-        kw["drive"] = kw["drive"] or drive is None
     mounts = sec.read("mountings")
     if mounts is not None:
         for m in mounts:

@@ -56,6 +56,8 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     elif res.arrangements:  # search.counterbalance / search.twin_drive options
         L.append(f"arrangement: {res.arrangement} ({'best' if res.best is not None else 'closest'} of "
                  f"{res.arrangements} arrangements)")
+    for what in res.left_out:  # a part of the design the search left out, each on its own line
+        L.append(f"  left out: {what}")
     if res.message:
         L.append(f"  note: {res.message}")
     comp = None if problem is None else load_components(problem.axis, problem.assumed)

@@ -105,7 +105,20 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that allow it);
                     and, when nothing fits (default method), the design change a search verifies
                     (:mod:`.advice`); a batch study leaves both out
+
+    What the search left out of the design (the drive, and why) is on the answer's ``left_out``.
     """
+    res = _solve(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
+    why = problem.restrictions.drive_left_out
+    if why and not res.left_out:
+        res.left_out = (f"the drive (motor, coupling, reduction) is not sized: {why}; the axis's motor_inertia and "
+                        "coupling values stand in and no motor check is made",)
+    return res
+
+
+def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit: float = 100.0,
+           sensitivities: bool = True) -> SolveResult:
+    """:func:`solve` without the left-out statement."""
     if method not in METHODS_BY_NAME:
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
     m = METHODS_BY_NAME[method]

@@ -229,7 +229,8 @@ def _add_drives(sp: Space, problem: Problem) -> None:
                 f"'exclude' removed all {before} motors the other filters left, so the drive search has nothing to "
                 "choose from (the peak-torque zone above the corner speed is estimated for "
                 "every motor without peak_corner_speed and peak_torque_at_max_speed read from its vendor's "
-                "torque-speed curve); add those columns to a motors table, or allow estimated values",
+                "torque-speed curve); add those columns to a motors table, allow estimated values, or leave the "
+                "drive out (catalog.drive: no)",
                 source=problem.source, where="key 'catalog.estimated'")
     couplings = _filtered(cat.rows("couplings"), r, "coupling", r.coupling_series)
     n_couplings = len(couplings)

@@ -345,6 +345,9 @@ class SolveResult:
     # many arrangements were solved (0: the problem has none; not in the JSON then)
     arrangement: str = ""
     arrangements: int = 0
+    # what the search left out of the design and why, a sentence each (the drive with 'drive: no'); not in the
+    # JSON when empty
+    left_out: tuple = ()
 
     @property
     def objective(self) -> float:
@@ -362,7 +365,8 @@ class SolveResult:
             "binding": [b.to_dict() for b in self.binding],
             "infeasibility": self.infeasibility.to_dict() if self.infeasibility else None,
             "pareto": self.pareto.to_dict() if self.pareto else None,
-        } | ({"arrangement": {"chosen": self.arrangement, "of": self.arrangements}} if self.arrangements else {})
+        } | ({"arrangement": {"chosen": self.arrangement, "of": self.arrangements}} if self.arrangements else {}) \
+            | ({"left_out": list(self.left_out)} if self.left_out else {})
 
     def designs(self) -> list:
         """The designs shown: the Pareto front's points, else best and runners-up, else (infeasible) the
