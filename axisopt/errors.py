@@ -23,3 +23,8 @@ class InputError(AxisoptError):
         elif where:
             prefix = f"{where}: "
         super().__init__(prefix + message)
+
+
+class ImplausibleInput(UserWarning):
+    """A value far outside machine-tool practice (axisopt.design.plausible): used as given, and said.  The CLI
+    prints each as one 'warning:' line on stderr naming the file, line and key."""

@@ -27,7 +27,6 @@ def _registry():
 
     ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     ureg.define("EUR = [currency]")
-    ureg.define("USD = 0.92 EUR")  # illustrative fixed rate; catalogs here are in EUR
     ureg.define("percent_ = 0.01 = pct")
     return ureg
 
@@ -100,6 +99,9 @@ def unit_factor(unit: str, kind: str) -> float:
     """
     dim, si = KINDS[kind]
     text = _normalise(unit)
+    if kind.startswith("money") and "EUR" not in text:  # no exchange rate is assumed (issue 42)
+        raise ValueError(f"'{unit}' is not EUR, the catalogs' currency, and no exchange rate is assumed: convert "
+                         "at your rate")
     known = KNOWN.get((text, kind))
     return known if known is not None else _pint_factor(unit, text, kind)
 
@@ -151,7 +153,6 @@ KNOWN: dict[tuple[str, str], float] = {
     ('N/m', 'stiffness'): 1.0,
     ('N/um', 'stiffness'): 1000000.0,
     ('Pa', 'pressure'): 1.0,
-    ('USD', 'money'): 0.92,
     ('W', 'power'): 1.0,
     ('cSt', 'kinematic_viscosity'): 1.0000000000000002e-06,
     ('cm', 'length'): 0.01,

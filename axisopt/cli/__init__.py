@@ -12,8 +12,9 @@ from __future__ import annotations
 import argparse
 import logging
 import sys
+import warnings
 
-from ..errors import InputError
+from ..errors import ImplausibleInput, InputError
 from .common import EXIT_INPUT, EXIT_INTERRUPTED, GuardedStdout, Parser, error_line
 
 
@@ -59,10 +60,26 @@ def _one_output_on_stdout(args) -> None:
         raise InputError(f"{' and '.join(taken)} would {both} write to standard output; give all but one a file name")
 
 
+def _show_implausible(message, category, filename, lineno, file=None, line=None):
+    """warnings.showwarning for the CLI: an ImplausibleInput is one 'warning:' line on stderr (file, line, key and
+    what is off); any other warning as Python prints it."""
+    if issubclass(category, ImplausibleInput):
+        print(f"warning: {message}", file=sys.stderr)
+    else:
+        _PYTHON_SHOWWARNING(message, category, filename, lineno, file, line)
+
+
+_PYTHON_SHOWWARNING = warnings.showwarning
+
+
 def main(argv=None) -> int:
     _show_progress()
     saved = sys.stdout
     out = sys.stdout = GuardedStdout(saved)
+    caught = warnings.catch_warnings()  # restores the filters and showwarning when main returns
+    caught.__enter__()
+    warnings.simplefilter("always", ImplausibleInput)
+    warnings.showwarning = _show_implausible
     try:
         parser = build_parser()
         if not (sys.argv[1:] if argv is None else argv):  # `axisopt` alone: the commands and what each does
@@ -80,6 +97,7 @@ def main(argv=None) -> int:
     finally:
         out.flush()
         sys.stdout = saved
+        caught.__exit__(None, None, None)
     return code
 
 

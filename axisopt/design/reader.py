@@ -5,11 +5,12 @@ share (:func:`read_axis`, :func:`read_parts`, :func:`catalog_for`).  Every error
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import fields
 from pathlib import Path
 
 from ..catalog import SCHEMA, Catalog, default_catalog, row_problem
-from ..errors import InputError
+from ..errors import ImplausibleInput, InputError
 from ..parttable import Row
 from ..physics import motion
 from ..yamlio import Section, close_matches, read_yaml
@@ -26,6 +27,7 @@ from .keys import (
     SEGMENT_LIMIT,
     TWIN_SPEC,
 )
+from .plausible import implausible
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:
@@ -67,6 +69,9 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     if sec.has("twin_drive"):
         kw["twin_drive"] = read_twin_drive(sec, kw)
     sec.done()
+    for key, message in implausible(kw):
+        warnings.warn(str(InputError(message, source=sec.source, where=sec.where(key))), ImplausibleInput,
+                      stacklevel=2)
     # a counterbalance or twin drive left out is no assumption of a value: the axis has none (one drive)
     assumed = tuple(f.name for f in fields(Axis) if f.name not in kw and f.name not in ("counterbalance", "twin_drive"))
     return Axis(**kw), assumed

@@ -51,3 +51,32 @@ def test_an_axis_without_motion_says_why_the_drive_is_not_sized(tmp_path, capsys
     text = re.sub(r"(?m)^(  acceleration:).*$", r"\1 0 m/s^2", text)
     res = _solve_json(_write(tmp_path, text), capsys)
     assert res["left_out"] and "axis.acceleration is 0 and there is no axis.duty_cycle" in res["left_out"][0]
+
+
+# ----------------------------------------------------------------------------- plausibility and currency
+TEACHING = (ROOT / "problems" / "teaching_problem.yaml").read_text(encoding="utf-8")
+
+
+def test_an_acceleration_in_the_wrong_unit_is_warned_about(tmp_path, capsys):
+    """5 mm/s^2 (meant: 5 m/s^2) solves, with one warning line naming the file, line and key."""
+    text, n = re.subn(r"(?m)^(  acceleration:).*$", r"\1 5 mm/s^2", TEACHING)
+    assert n == 1
+    path = _write(tmp_path, text)
+    assert main(["solve", path, "--top", "1"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    [line] = [ln for ln in err if ln.startswith("warning:")]
+    assert f"{path}: line " in line and "key 'axis.acceleration'" in line
+    assert "0.005 m/s^2 is far below machine-tool practice (0.1-50 m/s^2)" in line
+
+
+def test_plausible_values_give_no_warning(tmp_path, capsys):
+    assert main(["solve", str(ROOT / "problems" / "teaching_problem.yaml"), "--top", "1"]) == 0
+    assert "warning:" not in capsys.readouterr().err
+
+
+def test_a_budget_in_usd_needs_a_rate(tmp_path, capsys):
+    text, n = re.subn(r"(?m)^(  max_cost:).*$", r"\1 3000 USD", TEACHING)
+    assert n == 1
+    assert main(["solve", _write(tmp_path, text)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "key 'limits.max_cost'" in err[0] and "no exchange rate is assumed" in err[0]
