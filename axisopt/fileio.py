@@ -301,9 +301,8 @@ def tidy_layout(fig) -> None:
 
 def save_figure(fig, path, dpi: int = 110) -> None:
     """Save and close a matplotlib figure, atomically (:func:`atomic_file`); a bad path or format is an
-    InputError (one line, exit 2)."""
-    import matplotlib.pyplot as plt
-
+    InputError (one line, exit 2).  A figure outside pyplot (axisopt's own) is saved without importing
+    pyplot."""
     ext = Path(path).suffix.lower().lstrip(".")
     try:
         if ext not in PLOT_FORMATS:
@@ -313,4 +312,7 @@ def save_figure(fig, path, dpi: int = 110) -> None:
     except ValueError as exc:
         raise InputError(f"cannot write plot ({exc})", source=str(path)) from None
     finally:
-        plt.close(fig)
+        if getattr(fig.canvas, "manager", None) is not None:  # a pyplot figure: released from pyplot's list
+            import matplotlib.pyplot as plt
+
+            plt.close(fig)

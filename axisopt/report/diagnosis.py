@@ -435,11 +435,7 @@ def categories(name: str, values) -> list | None:
 
 def write_report(diag, outdir) -> Path:
     """Markdown report with residual plots before/after; returns the report path."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from ..figure import Figure  # outside pyplot: no backend is chosen (a notebook's stays as it was)
     from . import make_output_dir
 
     out = make_output_dir(outdir)
@@ -520,7 +516,8 @@ def write_report(diag, outdir) -> Path:
     for k, (o, rb, ra) in enumerate(zip(diag.obs, before, after)):
         facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
         unit, f = Y_UNIT[o.kind]
-        fig, axes = plt.subplots(1, len(facs), figsize=(3.6 * len(facs), 3.2), squeeze=False)
+        fig = Figure(figsize=(3.6 * len(facs), 3.2))
+        axes = fig.subplots(1, len(facs), squeeze=False)
         for ax, (name, v) in zip(axes[0], facs):
             fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
             v = np.asarray(v) * fs + fo

@@ -227,8 +227,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
     its non-dominated cases joined within each machine (cases of different axis inputs are not joined)."""
     import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..figure import Figure  # outside pyplot: no backend is chosen (a notebook's stays as it was)
 
     files = {}
     ok = df[df["status"].isin(OK_STATUSES)]
@@ -242,7 +241,8 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         if conv is not _number or df[name].nunique() < 2:
             continue
         by = _line_groups(df, cols, name, group)
-        fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+        fig = Figure(figsize=(7, 6))
+        a1, a2 = fig.subplots(2, 1, sharex=True)
         for j, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
             # best over the cases that share this x and this line's inputs; each line its own dash pattern and
             # marker, so lines that coincide stay visible
@@ -279,10 +279,11 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
     # trade-off over all cases: cost against minimum stiffness, non-dominated cases joined per machine
     pts = ok[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
     if len(pts) >= 2:
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        fig = Figure(figsize=(7, 4.5))
+        ax = fig.subplots()
         machines = _machine_columns(df, cols)
         by = machines or [group]
-        colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
         for i, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
             col = colors[i % len(colors)]
             sub = sub[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
@@ -317,7 +318,8 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         kx, ky = p0["keys"][:2]
         attr = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost",
                 "total_mass": "total_mass", "moving_mass": "moving_mass"}
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        fig = Figure(figsize=(7, 4.5))
+        ax = fig.subplots()
         for r in fronts[:12]:
             xs = [p[attr[kx]] for p in r["pareto"]["points"]]
             ys = [p[attr[ky]] for p in r["pareto"]["points"]]
