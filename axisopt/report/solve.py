@@ -241,7 +241,8 @@ def plot_pareto(front, path: str | None = None):
     """Scatter matrix of every objective pair: the non-dominated designs in colour (by the first
     objective), a sample of the feasible designs they dominate in grey, each axis labelled with its unit
     and whether it is maximised or minimised; the diagonal shows each objective's spread over the front.
-    Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image); written to ``path`` only when given."""
+    Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image); written to
+    ``path`` only when given."""
     from ..figure import Figure
     from ..search.pareto import FIELD
 

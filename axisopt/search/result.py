@@ -147,6 +147,21 @@ class Candidate:
         r.update({f"miss {k} [%]": 100.0 * v for k, v in self.misses.items()})
         return r
 
+    def to_frame(self):
+        """pandas DataFrame of this design: one row as :meth:`row` (units in the column names)."""
+        return frame([self.row()])
+
+    def __repr__(self) -> str:
+        misses = ", ".join(f"{k} by {fmt(100 * v)} %" for k, v in self.misses.items())
+        return one_line("Candidate", f"rank {self.rank}, {self.mounting} {' / '.join(self.parts().values())}", {
+            "objective": fmt(self.objective), "preload": fmt(self.nut_preload, "N"),
+            "min stiffness": fmt(self.min_stiffness, "N/um"), "1st frequency": fmt(self.min_frequency, "Hz"),
+            "cost": fmt(self.cost, "EUR"), "moving mass": fmt(self.moving_mass, "kg"),
+            "drag": fmt(self.drag_torque, "N.m"), "nut life": fmt(self.life_h, "h"), "misses": misses})
+
+    def _repr_html_(self) -> str:
+        return html_table([self.row()], repr(self))
+
 
 @dataclass
 class Certificate:
@@ -200,6 +215,54 @@ class Binding:
 
     def to_dict(self) -> dict:
         return {k: _clean(v) for k, v in asdict(self).items()}
+
+    def row(self, objective_unit: str = "") -> dict:
+        """One table row, the units in the column names (``objective_unit``: the objective's unit)."""
+        u = f" [{self.unit}]" if self.unit else ""
+        gain = f"objective gain [{objective_unit}]" if objective_unit not in ("", "-") else "objective gain"
+        return {"limit": self.limit, f"value{u}": self.value, f"at optimum{u}": self.at_optimum,
+                f"relaxed to{u}": self.relaxed_to, gain: self.objective_gain, "binding": self.binding}
+
+    def to_frame(self):
+        """pandas DataFrame of this limit: one row as :meth:`row` (units in the column names)."""
+        return frame([self.row()])
+
+    def __repr__(self) -> str:
+        u = self.unit if self.unit not in ("", "-") else ""
+        gain = "" if self.objective_gain is None else \
+            f"relaxed to {fmt(self.relaxed_to, u)} the objective changes by {self.objective_gain:+.4g}"
+        return one_line("Binding", f"{self.limit} {fmt(self.value, u)}", {
+            "at optimum": fmt(self.at_optimum, u), "": "binding" if self.binding else "not binding",
+            "gain": gain})
+
+
+class Bindings(list):
+    """``SolveResult.binding``: a list of :class:`Binding` that also gives a table (``to_frame()``, units in the
+    column names, the objective gain in the objective's unit) and an HTML table in Jupyter."""
+
+    def __init__(self, items=(), objective_unit: str = ""):
+        super().__init__(items)
+        self.objective_unit = objective_unit
+
+    def to_frame(self):
+        """pandas DataFrame, one row per limit: its name and ``unit`` (the limits differ in unit), the limit, the
+        best design's value and the relaxed limit in that unit, the objective gain in the objective's unit."""
+        cols = ("limit", "unit", "value", "at optimum", "relaxed to", self._gain(), "binding")
+        return frame([dict(zip(cols, (b.limit, b.unit, b.value, b.at_optimum, b.relaxed_to, b.objective_gain,
+                                      b.binding))) for b in self], cols)
+
+    def _gain(self) -> str:
+        return f"objective gain [{self.objective_unit}]" if self.objective_unit not in ("", "-") else \
+            "objective gain"
+
+    def __repr__(self) -> str:
+        binding = [b.limit for b in self if b.binding]
+        return one_line("Bindings", f"{len(self)} limits", {"binding": ", ".join(binding) or "none"})
+
+    def _repr_html_(self) -> str:
+        rows = [{"limit": b.limit, "unit": b.unit, "value": b.value, "at optimum": b.at_optimum,
+                 "relaxed to": b.relaxed_to, self._gain(): b.objective_gain, "binding": b.binding} for b in self]
+        return html_table(rows, repr(self))
 
 
 @dataclass(repr=False)
@@ -336,6 +399,11 @@ class SolveResult:
     # many arrangements were solved (0: the problem has none; not in the JSON then)
     arrangement: str = ""
     arrangements: int = 0
+
+    def __setattr__(self, name, value):
+        if name == "binding":  # a list of Binding, assigned here or later: a Bindings (to_frame, units)
+            value = Bindings(value, getattr(self, "objective_unit", ""))
+        object.__setattr__(self, name, value)
 
     @property
     def objective(self) -> float:
