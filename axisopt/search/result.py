@@ -88,10 +88,10 @@ CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"), ("min_stiffness", "min_
 class Candidate:
     """One design: parts, continuous values and its evaluation summary (display units)."""
 
-    rank: int
+    rank: int  # 1: the best
     combination: int  # combination number in the search space
-    mounting: str
-    screw: str
+    mounting: str  # 'fixed-free' | 'fixed-supported' | 'fixed-fixed'
+    screw: str  # catalog part ids
     nut: str
     bearing: str
     guide: str
@@ -205,13 +205,13 @@ class Certificate:
 class Binding:
     """A limit at the optimum and what relaxing it would buy."""
 
-    limit: str
-    unit: str
-    value: float  # limit value (display units)
-    at_optimum: float  # the design's value (display units)
-    relaxed_to: float | None = None
-    objective_gain: float | None = None  # objective change when relaxed
-    binding: bool = False
+    limit: str  # the problem's limit key, e.g. 'min_frequency'
+    unit: str  # the limit's display unit (N/um, Hz, EUR, ...)
+    value: float  # limit value, in ``unit``
+    at_optimum: float  # the best design's value, in ``unit``
+    relaxed_to: float | None = None  # the limit relaxed by 10 %, in ``unit``
+    objective_gain: float | None = None  # objective change when relaxed, in SolveResult.objective_unit
+    binding: bool = False  # relaxing it improves the objective
 
     def to_dict(self) -> dict:
         return {k: _clean(v) for k, v in asdict(self).items()}
@@ -267,11 +267,14 @@ class Bindings(list):
 
 @dataclass(repr=False)
 class ParetoFront:
+    """The non-dominated designs of a multi-objective problem (``objective.mode: pareto``): a sequence of
+    :class:`Candidate`, each objective's key, sense and unit."""
+
     keys: tuple  # objective keys, e.g. ('stiffness', 'cost')
     senses: tuple  # 'max' | 'min' per key
-    units: tuple
+    units: tuple  # display unit per key (N/um, EUR, ...)
     points: list  # list[Candidate], sorted by the first key
-    feasible: int = 0
+    feasible: int = 0  # feasible designs the front was drawn from
     # objective values (columns in ``keys`` order, display units) of up to 4000 feasible designs drawn at
     # random with a fixed seed, for plotting the front against what it dominates; not in the JSON
     cloud: object = None
@@ -308,10 +311,10 @@ class DesignChange:
     """An axis input changed (search.advice) after which the catalogs hold a design: ``key`` (``axis.max_speed``),
     its unit, the value and the proposed one in that unit."""
 
-    key: str
-    unit: str
-    value: float
-    to: float
+    key: str  # the axis input, e.g. 'axis.max_speed'
+    unit: str  # its display unit (m/min, kg, ...)
+    value: float  # the input now, in ``unit``
+    to: float  # the proposed value, in ``unit``
 
     def to_dict(self) -> dict:
         return {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to)}
@@ -382,16 +385,16 @@ class SolveResult:
     """
 
     status: str
-    method: str
-    problem: str
-    objective_label: str
-    objective_unit: str
-    best: Candidate | None
-    runners_up: list
+    method: str  # 'default' | 'exhaustive' | 'bonmin' | 'scip'
+    problem: str  # the problem's name
+    objective_label: str  # e.g. 'minimum axial stiffness'
+    objective_unit: str  # the objective's display unit (N/um, Hz, EUR ...; '-' for none)
+    best: Candidate | None  # the best design (None: infeasible or failed)
+    runners_up: list  # list[Candidate], next best designs in rank order
     certificate: Certificate
     time: float  # wall clock [s]
     message: str = ""
-    binding: list = field(default_factory=list)
+    binding: list = field(default_factory=list)  # Bindings: each limit at the optimum, relaxed by 10 %
     infeasibility: Infeasibility | None = None
     pareto: ParetoFront | None = None
     solver_status: str = ""  # raw status of the underlying solver (Bonmin / IPOPT)
@@ -407,6 +410,7 @@ class SolveResult:
 
     @property
     def objective(self) -> float:
+        """The best design's objective [objective_unit] (NaN without one)."""
         return self.best.objective if self.best else float("nan")
 
     def to_dict(self) -> dict:
