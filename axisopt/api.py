@@ -34,7 +34,7 @@ def evaluate(design: Design | str | PathLike, *, calibration: str | PathLike | N
              n_positions: int | None = None):
     """Evaluate a design (a :class:`Design` or a design YAML path) over the stroke -> :class:`Evaluation`.
 
-    calibration : a calibration YAML saved by ``diagnose`` (as ``axisopt evaluate --calibration``)
+    calibration : a calibration YAML saved by ``diagnose`` (as ``axisopt evaluate DESIGN --calibration FILE`` takes it)
     n_positions : nut positions on the stroke (default: the model grid the search uses)
     """
     from .model import evaluate as _evaluate

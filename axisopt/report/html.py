@@ -1,15 +1,20 @@
-"""Self-contained HTML reports: one file with the summary first, then sections, figures drawn with plotly
-(its JavaScript inlined once, so the file opens offline and can be mailed on), readable on a phone.
+"""Self-contained HTML reports: one file with the summary first, then sections, readable on a phone.  The
+figures are static SVG by default (matplotlib, :mod:`axisopt.report.static`: the file opens offline, needs no
+plotly and stays well under 1.5 MB); with ``interactive=True`` they are plotly figures (zoom, hover), its
+JavaScript inlined once (offline, about 5 MB) or loaded from the plotly CDN.
 
-:class:`Page` collects blocks (key figures, text, preformatted tables, plotly figures) under headings; the
-``*_page`` builders turn an evaluation, a solve result, a comparison, a study table or a diagnosis into a
-Page.  plotly is an optional dependency (``pip install 'axisopt[html]'``); without it :func:`require_plotly`
-is a one-line error.  Nothing here prints; :func:`write_page` writes atomically."""
+:class:`Page` collects blocks (key figures, text, tables, figures) under headings; the ``*_page`` builders turn
+an evaluation, a solve result, a comparison, a study table or a diagnosis into a Page.  plotly is an optional
+dependency (``pip install 'axisopt[html]'``), needed only for interactive figures; without it
+:func:`require_plotly` is a one-line error.  Tables wrap their text and part ids to fit a 1280 px window;
+on a phone a table wider than the screen scrolls inside its own box (no column is ever hidden).  Nothing
+here prints; :func:`write_page` writes atomically."""
 
 from __future__ import annotations
 
 import html
 import math
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -23,27 +28,33 @@ _CSS = """
 :root { color-scheme: light; --ink:#1d2330; --muted:#5b6475; --line:#d9dee7; --ok:#1a7f37; --bad:#c62828; }
 * { box-sizing: border-box; }
 body { font: 15px/1.45 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; color: var(--ink);
-       margin: 0 auto; padding: 12px; max-width: 1100px; }
+       margin: 0 auto; padding: 12px; max-width: 1240px; }
 h1 { font-size: 1.35em; margin: .3em 0; } h2 { font-size: 1.1em; margin: 1.4em 0 .4em;
      border-bottom: 1px solid var(--line); padding-bottom: .2em; }
 p.sub { color: var(--muted); margin: 0 0 .8em; }
 nav { font-size: .9em; margin: .4em 0 1em; } nav a { display: inline-block; margin: 0 .9em .2em 0; }
 .cards { display: grid; grid-template-columns: repeat(auto-fill, minmax(150px, 1fr)); gap: 8px; }
 .card { border: 1px solid var(--line); border-radius: 6px; padding: 6px 9px; }
-.card .k { color: var(--muted); font-size: .8em; } .card .v { font-size: 1.15em; font-weight: 600; }
+.card .k { color: var(--muted); font-size: .8em; }
+.card .v { font-size: 1.15em; font-weight: 600; overflow-wrap: anywhere; }
 .card.bad { border-color: var(--bad); } .card.bad .v { color: var(--bad); }
 .card.ok .v { color: var(--ok); }
 pre { overflow-x: auto; font-size: 12px; line-height: 1.3; background: #f6f8fa; padding: 8px; border-radius: 6px; }
-.scroll { overflow-x: auto; }
-table { border-collapse: collapse; font-size: 13px; } th, td { padding: 3px 8px; border-bottom: 1px solid var(--line);
-        text-align: right; white-space: nowrap; } th:first-child, td:first-child { text-align: left; }
+.scroll { overflow-x: auto; max-width: 100%; }
+table { border-collapse: collapse; font-size: 13px; } th, td { padding: 3px 6px; border-bottom: 1px solid var(--line);
+        text-align: right; white-space: normal; overflow-wrap: break-word; vertical-align: top; }
+th { vertical-align: bottom; } td.n { white-space: nowrap; } td.t { text-align: left; }
+span.id { white-space: nowrap; } th:first-child, td:first-child { text-align: left; }
 td.bad { color: var(--bad); font-weight: 600; } td.ok { color: var(--ok); }
 td.m-fail { background: #fde2e1; color: var(--bad); font-weight: 600; } td.m-tight { background: #fff1cc; }
 td.m-fair { background: #eef7e4; } td.m-ample { color: var(--ok); }
 p.key { font-size: .8em; color: var(--muted); }
 td.wrap, th.wrap { white-space: normal; text-align: left; min-width: 12em; }
-.fig { width: 100%; min-height: 320px; }
+.fig { width: 100%; min-height: 320px; } .fig.static { min-height: 0; margin: .4em 0; }
+.fig.static svg { display: block; max-width: 100%; height: auto; }
 footer { color: var(--muted); font-size: .8em; margin-top: 2em; }
+@media (max-width: 600px) { body { padding: 8px; } table { font-size: 12px; } th, td { padding: 3px 4px; }
+  td.wrap, th.wrap { min-width: 7em; } td.n { white-space: normal; } }
 """
 
 
@@ -62,6 +73,7 @@ class Page:
     subtitle: str = ""
     cards: list = field(default_factory=list)
     sections: list = field(default_factory=list)  # (heading, [html fragments])
+    interactive: bool = False  # plotly figures (else static SVG)
 
     def card(self, label: str, value: str, state: str = "") -> None:
         self.cards.append((label, value, state))
@@ -71,22 +83,20 @@ class Page:
         self.sections.append((heading, body))
         return body
 
+    def figure(self, heading: str, interactive, static, height: int = 420) -> None:
+        """A section ``heading`` holding one figure: ``interactive()`` (a plotly figure) on an interactive page,
+        else ``static()`` (a matplotlib Figure) as SVG; each is only built when used."""
+        body = self.section(heading)
+        body.append(figure(interactive(), height) if self.interactive else _svg(static(), heading))
+
     def render(self, plotly_js: str = "inline") -> str:
-        """The page; ``plotly_js`` 'inline' (plotly.js in the file: offline) or 'cdn' (a script tag loading the
-        installed plotly's version from the plotly CDN: a small file that needs the network)."""
-        import plotly
-        from plotly.offline import get_plotlyjs
-
-        if plotly_js == "inline":
-            script, note = f"<script>{get_plotlyjs()}</script>", "inlined, works offline"
-        elif plotly_js == "cdn":
-            from plotly.offline.offline import get_plotlyjs_version
-
-            src = f"https://cdn.plot.ly/plotly-{get_plotlyjs_version()}.min.js"
-            script, note = f'<script src="{src}" charset="utf-8"></script>', f"loaded from {src}"
+        """The page; on an interactive page ``plotly_js`` 'inline' (plotly.js in the file: offline) or 'cdn' (a
+        script tag loading the installed plotly's version from the plotly CDN: a small file that needs the
+        network).  A static page has no script at all."""
+        if not self.interactive:
+            script, credit = "", "static SVG figures (matplotlib); --plotly inline for interactive ones"
         else:
-            raise ValueError(f"plotly_js must be 'inline' or 'cdn', not {plotly_js!r}")
-
+            script, credit = _plotly_script(plotly_js)
         cards = "".join(f'<div class="card {s}"><div class="k">{_e(k)}</div><div class="v">{_e(v)}</div></div>'
                         for k, v, s in self.cards)
         nav = "".join(f'<a href="#s{i}">{_e(h)}</a>' for i, (h, _) in enumerate(self.sections))
@@ -97,8 +107,30 @@ class Page:
                 f"{script}</head><body>"
                 f"<h1>{_e(self.title)}</h1>" + (f'<p class="sub">{_e(self.subtitle)}</p>' if self.subtitle else "")
                 + f'<div class="cards">{cards}</div><nav>{nav}</nav>{body}'
-                f"<footer>axisopt report; figures by plotly {plotly.__version__} ({note})"
-                "</footer></body></html>\n")
+                f"<footer>axisopt report; {_e(credit)}</footer></body></html>\n")
+
+
+def _plotly_script(plotly_js: str) -> tuple[str, str]:
+    """The plotly.js script tag and the footer's credit."""
+    import plotly
+    from plotly.offline import get_plotlyjs
+
+    if plotly_js == "inline":
+        script, note = f"<script>{get_plotlyjs()}</script>", "inlined, works offline"
+    elif plotly_js == "cdn":
+        from plotly.offline.offline import get_plotlyjs_version
+
+        src = f"https://cdn.plot.ly/plotly-{get_plotlyjs_version()}.min.js"
+        script, note = f'<script src="{src}" charset="utf-8"></script>', f"loaded from {src}"
+    else:
+        raise ValueError(f"plotly_js must be 'inline' or 'cdn', not {plotly_js!r}")
+    return script, f"figures by plotly {plotly.__version__} ({note})"
+
+
+def _svg(fig, alt: str) -> str:
+    from .static import svg
+
+    return svg(fig, alt)
 
 
 def _e(text) -> str:
@@ -116,16 +148,33 @@ def para(text: str) -> str:
 def table(head, rows, states=None, classes=None) -> str:
     """A table in its own horizontal scroller (the page never scrolls sideways); ``states`` (optional) gives
     per row the class of its last cell ('ok' / 'bad'), ``classes`` (optional) per row a list of cell classes
-    ('' for none)."""
-    th = "".join(f"<th>{_e(h)}</th>" for h in head)
+    ('' for none).  Text and part ids wrap (a 1280 px window shows every column); a number with its unit
+    stays on one line."""
+    # a heading may break after a dot or underscore (axis.<wbr>moving_<wbr>mass [kg]): long key names fit
+    th = "".join("<th>" + _BREAK.sub(r"\1<wbr>", _e(h)) + "</th>" for h in head)
     trs = []
     for i, r in enumerate(rows):
         cls = classes[i] if classes is not None else [""] * len(r)
-        cells = [f'<td class="{c}">{_e(v)}</td>' if c else f"<td>{_e(v)}</td>" for v, c in zip(r, cls)]
+        cls = [(c + " n").strip() if _NUMBER.match(str(v)) else
+               (c + " t").strip() if isinstance(v, (list, tuple)) or not _NUMBER.match(str(v)) and str(v) != "-"
+               else c for v, c in zip(r, cls)]
+        cells = [f'<td class="{c}">{_html(v)}</td>' if c else f"<td>{_html(v)}</td>" for v, c in zip(r, cls)]
         if states is not None and states[i]:
-            cells[-1] = f'<td class="{states[i]}">{_e(r[-1])}</td>'
+            cells[-1] = f'<td class="{states[i]}">{_html(r[-1])}</td>'
         trs.append("<tr>" + "".join(cells) + "</tr>")
     return f'<div class="scroll"><table><thead><tr>{th}</tr></thead><tbody>{"".join(trs)}</tbody></table></div>'
+
+
+def _html(v) -> str:
+    """A cell's text, escaped; a list (a design's part ids) one unbroken id after the other, wrapping only
+    between ids."""
+    if isinstance(v, (list, tuple)):
+        return " / ".join(f'<span class="id">{_e(x)}</span>' for x in v)
+    return _e(v)
+
+
+_BREAK = re.compile(r"([._/])(?=\w)")
+_NUMBER = re.compile(r"^[-+]?[\d.,]+(e[-+]?\d+)?( ?[^\s\d]{1,6})?$")  # 1,234.5 / 0.97 / 12 N/um / 5 %
 
 
 def figure(fig, height: int = 420) -> str:
@@ -136,20 +185,26 @@ def figure(fig, height: int = 420) -> str:
                                              config={"responsive": True, "displaylogo": False}) + "</div>"
 
 
-def check_report_path(path) -> None:
-    """A --report target must end in .html and plotly must be installed (one-line InputError otherwise)."""
+def check_report_path(path, interactive: bool = False) -> None:
+    """A --report target must end in .html, and plotly must be installed for interactive figures (one-line
+    InputError otherwise)."""
     if not str(path).lower().endswith((".html", ".htm")):
         raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
     from ..fileio import check_output_path
 
     check_output_path(path, what="HTML report", where="--report")
-    require_plotly()
+    if interactive:
+        require_plotly()
 
 
-def write_page(page: Page, path, plotly: str = "inline") -> None:
+PLOTLY_CHOICES = ("no", "inline", "cdn")  # --plotly: static SVG figures (default), plotly.js inlined or linked
+
+
+def write_page(page: Page, path, plotly: str = "no") -> None:
+    """Write ``page`` to ``path``; ``plotly`` as :meth:`Page.render` takes it ('no' on a static page)."""
     from ..fileio import write_text_atomic
 
-    check_report_path(path)
+    check_report_path(path, page.interactive)
     write_text_atomic(str(path), page.render(plotly), what="HTML report")
 
 
@@ -304,39 +359,46 @@ def frf_figure(ev):
     return fig
 
 
-def evaluation_page(ev, title: str | None = None) -> Page:
+def evaluation_page(ev, title: str | None = None, interactive: bool = False) -> Page:
+    from . import static
     from .evaluation import evaluation_table
+    from .plots import plot_profiles
 
     d = ev.design
     page = Page(title or f"Axis evaluation: {d.name}",
                 f"{d.axis.mounting}, stroke {d.axis.stroke * 1e3:.0f} mm; parts "
-                + ", ".join(f"{k} {v}" for k, v in d.part_ids().items()))
+                + ", ".join(f"{k} {v}" for k, v in d.part_ids().items()), interactive=interactive)
     evaluation_cards(page, ev)
-    page.section("Stiffness and frequency over the stroke").append(figure(profiles_figure([ev], [d.name])))
-    page.section("Stiffness chain").append(figure(chain_figure(ev), 300))
-    drive = drive_figure(ev)
-    if drive is not None:
-        page.section("Drive: duty cycle against the motor").append(figure(drive, 460))
-    page.section("Dynamic compliance of the table (FRF)").append(figure(frf_figure(ev), 560))
+    drive = d.motor is not None
+    # the static profile figure carries the duty cycle against the motor limits in its right-hand panel
+    page.figure("Stiffness and frequency over the stroke" + ("; drive against the motor" if drive and
+                                                              not interactive else ""),
+                lambda: profiles_figure([ev], [d.name]), lambda: plot_profiles([ev]))
+    page.figure("Stiffness chain", lambda: chain_figure(ev), lambda: static.chain_figure(ev), 300)
+    if drive and interactive:
+        page.figure("Drive: duty cycle against the motor", lambda: drive_figure(ev), None, 460)
+    page.figure("Dynamic compliance of the table (FRF)", lambda: frf_figure(ev), lambda: static.frf_figure(ev),
+                560)
     page.section("Checks").append(checks_table(ev))
     page.section("Full evaluation (as printed)").append(pre(evaluation_table(ev)))
     return page
 
 
-def solve_page(res, problem, text: str) -> Page:
+def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
     """A solve: status and certificate first, the best design's profile (with the runners-up) or the Pareto
     front as a scatter matrix, the checks of the best design, and the printed result."""
     from ..model import evaluate
-    from .plots import distinct_labels
+    from .plots import distinct_labels, plot_profiles
+    from .solve import plot_pareto
 
-    page = Page(f"Sizing: {res.problem}", f"{res.objective_label}; method {res.method}")
+    page = Page(f"Sizing: {res.problem}", f"{res.objective_label}; method {res.method}", interactive=interactive)
     page.card("status", res.status, "ok" if res.status == OPTIMAL else "bad")
     page.card("proven", "yes" if res.certificate.proven else "no", "ok" if res.certificate.proven else "")
     page.card("combinations", f"{res.certificate.combinations:,}")
     page.card("time", f"{res.time:.2f} s")
     if res.pareto is not None:
         page.card("Pareto points", str(len(res.pareto.points)))
-        page.section("Pareto front").append(figure(pareto_figure(res.pareto), 560))
+        page.figure("Pareto front", lambda: pareto_figure(res.pareto), lambda: plot_pareto(res.pareto), 560)
         page.section(f"Every point of the front ({len(res.pareto.points)})").append(pareto_table(res.pareto))
     elif res.best is not None and res.best.design is not None:
         page.card("objective", f"{res.best.objective:,.3f} {res.objective_unit}")
@@ -345,7 +407,8 @@ def solve_page(res, problem, text: str) -> Page:
         labels = distinct_labels(parts, [f"#{c.rank}" for c in cands]) if len(cands) > 1 else ["best"]
         evs = [evaluate(c.design) for c in cands]
         limits = {k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")}
-        page.section("Best designs over the stroke").append(figure(profiles_figure(evs, labels, limits)))
+        page.figure("Best designs over the stroke", lambda: profiles_figure(evs, labels, limits),
+                    lambda: plot_profiles(evs, labels=labels, limits=limits))
         page.section("Checks of the best design").append(checks_table(evs[0]))
     page.section("Result (as printed)").append(pre(text))
     return page
@@ -378,21 +441,19 @@ def pareto_table(front) -> str:
     from ..search.pareto import FIELD
 
     head = ["#"] + [f"{k.replace('_', ' ')} [{u}]" if u else k for k, u in zip(front.keys, front.units)] + \
-        ["mounting", "screw", "nut", "bearing", "guide", "motor", "preload [N]"]
+        ["mounting", "parts: screw / nut / bearing / guide / motor ...", "preload [N]"]
     rows = []
     for i, pt in enumerate(front.points, start=1):
-        parts = pt.parts() if hasattr(pt, "parts") else {}
         rows.append([str(i)] + [f"{float(getattr(pt, FIELD[k])):,.4g}" for k in front.keys]
-                    + [pt.mounting, pt.screw, pt.nut, pt.bearing, pt.guide, parts.get("motor") or "-",
-                       f"{pt.nut_preload:,.0f}"])
+                    + [pt.mounting, list(pt.parts().values()), f"{pt.nut_preload:,.0f}"])
     return table(head, rows)
 
 
-def compare_page(items, text: str) -> Page:
+def compare_page(items, text: str, interactive: bool = False) -> Page:
     from .evaluation import check_rows
-    from .plots import distinct_labels
+    from .plots import distinct_labels, plot_profiles
 
-    page = Page("Comparison", ", ".join(c.label for c in items))
+    page = Page("Comparison", ", ".join(c.label for c in items), interactive=interactive)
     evs = [c.evaluation for c in items if c.evaluation is not None]
     head = ["design", "min stiffness [N/um]", "min 1st frequency [Hz]", "drag [N.m]", "total mass [kg]",
             "cost [EUR]", "motor", "least margin", "failed checks"]
@@ -421,49 +482,62 @@ def compare_page(items, text: str) -> Page:
         parts = [{"mounting": e.design.axis.mounting, **e.design.part_ids()} for e in evs]
         if len(set(labels)) < len(labels):
             labels = distinct_labels(parts)
-        page.section("Stiffness and frequency over the stroke").append(figure(profiles_figure(evs, labels)))
+        page.figure("Stiffness and frequency over the stroke", lambda: profiles_figure(evs, labels),
+                    lambda: plot_profiles(evs, labels=labels))
     page.section("Side by side (as printed)").append(pre(text))
     return page
 
 
-def study_page(study, df, text: str) -> Page:
+def study_page(study, df, text: str, interactive: bool = False) -> Page:
     """A study: counts by status, the objective against each numeric swept input, the results table."""
     import pandas as pd
-    import plotly.graph_objects as go
 
     from ..study.table import input_columns
+    from .static import objective_figure
 
-    page = Page(f"Trade study: {study.name}", f"{len(df)} cases")
+    page = Page(f"Trade study: {study.name}", f"{len(df)} cases", interactive=interactive)
     for status, n in df["status"].value_counts().items():
         page.card(str(status), str(int(n)), "ok" if status == OPTIMAL else "bad")
     unit = df["objective_unit"].dropna().iloc[0] if df["objective_unit"].notna().any() else ""
     for key, (name, _) in input_columns(study).items():
         if name not in df or not pd.api.types.is_numeric_dtype(df[name]):
             continue
-        fig = go.Figure()
         ok = df["status"] == OPTIMAL
-        fig.add_scatter(x=df.loc[ok, name], y=df.loc[ok, "objective"], mode="markers", name="optimal",
-                        text=df.loc[ok, "case_id"] + ": " + df.loc[ok, "screw"].astype(str) + " / "
-                        + df.loc[ok, "nut"].astype(str), hovertemplate="%{text}<br>%{x}: %{y:.4g}<extra></extra>")
-        if (~ok).any():  # no objective to draw: the inputs of the cases without a design are shaded
-            for x in sorted(set(df.loc[~ok, name].dropna())):
-                fig.add_vline(x=x, line=dict(color="#c62828", width=6), opacity=0.2)
-            fig.add_scatter(x=[None], y=[None], mode="lines", line=dict(color="#c62828", width=6), opacity=0.3,
-                            name=f"no design here ({int((~ok).sum())} cases; reasons in the table)")
-        fig.update_layout(title=f"objective against {key}", xaxis_title=name, yaxis_title=f"objective [{unit}]")
-        page.section(f"Objective against {key}").append(figure(fig, 380))
+        page.figure(f"Objective against {key}", lambda n=name, k=key, o=ok: _objective_plotly(df, n, k, unit, o),
+                    lambda n=name, k=key, o=ok: objective_figure(df, n, k, unit, o), 380)
+    slots = [c for c in ("screw", "nut", "bearing", "guide", "motor", "coupling") if c in df]
     shown = [c for c in ("case_id", *[n for n, _ in input_columns(study).values()], "status", "reason", "objective",
-                         "screw", "nut", "bearing", "guide", "motor", "min_stiffness [N/um]", "min_frequency [Hz]",
-                         "cost [EUR]") if c in df]
-    sub = df[shown].head(200)
-    rows = [[_cell(v) for v in r] for r in sub.itertuples(index=False)]
+                         "parts", "min_stiffness [N/um]", "min_frequency [Hz]", "cost [EUR]") if c in df or
+             c == "parts" and slots]
+    sub = df.head(200)
+    # the parts in one column (each id unbroken, wrapping between ids): a 1280 px window shows every column
+    rows = [[[str(x) for x in r[slots] if isinstance(x, str) and x] or "-" if c == "parts" else _cell(r[c])
+             for c in shown] for _, r in sub.iterrows()]
     classes = [["wrap" if c == "reason" else ("bad" if c == "status" and st not in OK_STATUSES else "")
                 for c in shown] for st in sub["status"]]
+    head = [f"parts: {' / '.join(slots)}" if c == "parts" else c for c in shown]
     page.section("Cases" + (" (first 200; all in results.csv)" if len(df) > 200 else "")).append(
-        table(shown, rows, classes=classes))
+        table(head, rows, classes=classes))
     summary = "\n".join(ln for ln in text.splitlines() if not ln.lstrip().startswith("!["))  # no image links
     page.section("Summary (as written to report.md, figures above)").append(pre(summary))
     return page
+
+
+def _objective_plotly(df, name: str, key: str, unit: str, ok):
+    """The interactive twin of :func:`axisopt.report.static.objective_figure`."""
+    import plotly.graph_objects as go
+
+    fig = go.Figure()
+    fig.add_scatter(x=df.loc[ok, name], y=df.loc[ok, "objective"], mode="markers", name="optimal",
+                    text=df.loc[ok, "case_id"] + ": " + df.loc[ok, "screw"].astype(str) + " / "
+                    + df.loc[ok, "nut"].astype(str), hovertemplate="%{text}<br>%{x}: %{y:.4g}<extra></extra>")
+    if (~ok).any():  # no objective to draw: the inputs of the cases without a design are shaded
+        for x in sorted(set(df.loc[~ok, name].dropna())):
+            fig.add_vline(x=x, line=dict(color="#c62828", width=6), opacity=0.2)
+        fig.add_scatter(x=[None], y=[None], mode="lines", line=dict(color="#c62828", width=6), opacity=0.3,
+                        name=f"input of a case without a design ({int((~ok).sum())} cases; reasons in the table)")
+    fig.update_layout(title=f"objective against {key}", xaxis_title=name, yaxis_title=f"objective [{unit}]")
+    return fig
 
 
 def _cell(v) -> str:
@@ -472,35 +546,45 @@ def _cell(v) -> str:
     return str(v)
 
 
-def diagnose_page(diag, text: str) -> Page:
-    """A diagnosis: the verdict first, then residuals against each factor before and after, and the text."""
-    from plotly.subplots import make_subplots
-
+def diagnose_page(diag, text: str, interactive: bool = False) -> Page:
+    """A diagnosis: the verdict first (an effect named and confirmed on held-out data is the diagnosis's
+    success: green, never red), then residuals against each factor before and after, and the text."""
     from ..identify.diagnose import split_by_observation as _split
-    from .diagnosis import FACTOR_DISPLAY, Y_UNIT, diagnosis_dict
+    from .diagnosis import diagnosis_dict, residual_figures
 
     d = diagnosis_dict(diag)
-    page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why")
-    page.card("verdict", d["verdict"], "bad" if d["accepted"] else "ok")
+    page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why", interactive=interactive)
+    page.card("verdict", d["verdict"], "ok" if d["accepted"] else "")
     page.card("held-out gain", f"{d['gain_percent']:.0f} %")
     for a in d["accepted"]:
         page.card(a["effect"], "; ".join(p["text"] for p in a["parameters"]) or a["finding"])
     before = _split(diag.obs, diag.baseline.prediction - diag.y)
     after = _split(diag.obs, diag.final.prediction - diag.y)
+    static = residual_figures(diag, d["verdict"]) if not interactive else None
     for o, rb, ra in zip(diag.obs, before, after):
-        facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
-        unit, f = Y_UNIT[o.kind]
-        fig = make_subplots(rows=1, cols=len(facs), shared_yaxes=True)
-        for j, (name, v) in enumerate(facs, start=1):
-            fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
-            x = np.asarray(v) * fs + fo
-            fig.add_scatter(x=x, y=rb * f, mode="markers", name="baseline", marker=dict(size=4, color="#9aa3b2"),
-                            showlegend=j == 1, row=1, col=j)
-            fig.add_scatter(x=x, y=ra * f, mode="markers", name=f"with {d['verdict']}", showlegend=j == 1,
-                            marker=dict(size=4, color="#d62728"), row=1, col=j)
-            fig.update_xaxes(title_text=f"{name} [{fu}]" if fu else name, row=1, col=j)
-        fig.update_yaxes(title_text=f"model - measured [{unit}]", row=1, col=1)
         name = str(o.dataset.source).replace("\\", "/").rsplit("/", 1)[-1]
-        page.section(f"Residuals: {name}").append(figure(fig, 360))
+        page.figure(f"Residuals: {name}", lambda o=o, rb=rb, ra=ra: _residuals_plotly(o, rb, ra, d["verdict"]),
+                    lambda: next(static)[1], 360)
     page.section("Diagnosis (as printed)").append(pre(text))
     return page
+
+
+def _residuals_plotly(o, rb, ra, verdict: str):
+    """Residuals of one observation against each recorded factor, baseline and final (plotly)."""
+    from plotly.subplots import make_subplots
+
+    from .diagnosis import FACTOR_DISPLAY, Y_UNIT
+
+    facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
+    unit, f = Y_UNIT[o.kind]
+    fig = make_subplots(rows=1, cols=len(facs), shared_yaxes=True)
+    for j, (name, v) in enumerate(facs, start=1):
+        fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
+        x = np.asarray(v) * fs + fo
+        fig.add_scatter(x=x, y=rb * f, mode="markers", name="baseline", marker=dict(size=4, color="#9aa3b2"),
+                        showlegend=j == 1, row=1, col=j)
+        fig.add_scatter(x=x, y=ra * f, mode="markers", name=f"with {verdict}", showlegend=j == 1,
+                        marker=dict(size=4, color="#d62728"), row=1, col=j)
+        fig.update_xaxes(title_text=f"{name} [{fu}]" if fu else name, row=1, col=j)
+    fig.update_yaxes(title_text=f"model - measured [{unit}]", row=1, col=1)
+    return fig

@@ -263,7 +263,7 @@ def plot_pareto(front, path: str | None = None):
                 ax.set_yticks([])
             else:
                 if len(C):
-                    ax.scatter(C[:, j], C[:, i], s=4, color="0.75", alpha=0.5, linewidths=0,
+                    ax.scatter(C[:, j], C[:, i], s=4, color="0.75", alpha=0.5, linewidths=0, rasterized=True,
                                label="feasible (sample)" if (i, j) == (1, 0) else None)
                 sc = ax.scatter(F[:, j], F[:, i], c=F[:, 0], s=14, cmap="viridis",
                                 label="Pareto front" if (i, j) == (1, 0) else None)
