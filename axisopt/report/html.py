@@ -17,12 +17,11 @@ import math
 import re
 from dataclasses import dataclass, field
 
-import numpy as np
-
 from ..errors import InputError
 from ..search.result import OPTIMAL
 from ..study.store import OK_STATUSES
 from ..units import N_PER_UM
+from . import interactive as ifig  # plotly itself is imported only when a figure is drawn
 
 _CSS = """
 :root { color-scheme: light; --ink:#1d2330; --muted:#5b6475; --line:#d9dee7; --ok:#1a7f37; --bad:#c62828; }
@@ -209,46 +208,6 @@ def write_page(page: Page, path, plotly: str = "no") -> None:
 
 
 # ------------------------------------------------------------------------------------------- figures
-def profiles_figure(evaluations, labels, limits=None):
-    """Axial stiffness and first natural frequency over the stroke, one line per evaluation."""
-    from plotly.subplots import make_subplots
-
-    fig = make_subplots(rows=1, cols=2, subplot_titles=("axial stiffness [N/um]", "1st natural frequency [Hz]"))
-    for i, (ev, lab) in enumerate(zip(evaluations, labels)):
-        s = (ev.x - ev.design.axis.start_offset) * 1e3
-        color = _COLORS[i % len(_COLORS)]
-        fig.add_scatter(x=s, y=np.asarray(ev["k_total"]) / N_PER_UM, name=lab, line=dict(color=color),
-                        legendgroup=lab, row=1, col=1,
-                        hovertemplate="%{x:.0f} mm: %{y:.1f} N/um<extra>" + _e(lab) + "</extra>")
-        fig.add_scatter(x=s, y=np.asarray(ev["f1"]), name=lab, line=dict(color=color), legendgroup=lab,
-                        showlegend=False, row=1, col=2,
-                        hovertemplate="%{x:.0f} mm: %{y:.1f} Hz<extra>" + _e(lab) + "</extra>")
-    for key, col, scale, unit in (("min_stiffness", 1, N_PER_UM, "N/um"), ("min_frequency", 2, 1.0, "Hz")):
-        if limits and limits.get(key) is not None:
-            fig.add_hline(y=limits[key] / scale, line=dict(dash="dash", color="#c62828"), row=1, col=col,
-                          annotation_text=f"limit {limits[key] / scale:g} {unit}")
-    fig.update_xaxes(title_text="nut position from stroke start [mm]")
-    return fig
-
-
-_COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
-
-
-def chain_figure(ev):
-    """The axial stiffness chain at the softest point: compliance per component [um/kN]."""
-    import plotly.graph_objects as go
-
-    comps = {k: v for k, v in ev.components().items() if math.isfinite(v) and v > 0}
-    names = list(comps)
-    c = [1e9 / comps[n] for n in names]
-    fig = go.Figure(go.Bar(x=c, y=names, orientation="h", marker_color=["#c62828" if n == ev.weakest else "#1f77b4"
-                                                                         for n in names],
-                           hovertemplate="%{y}: %{x:.2f} um/kN<extra></extra>"))
-    fig.update_layout(title="compliance at the softest point [um/kN] (weakest link in red)",
-                      xaxis_title="um/kN", yaxis=dict(autorange="reversed"))
-    return fig
-
-
 # ------------------------------------------------------------------------------------------- pages
 def evaluation_cards(page: Page, ev) -> None:
     from .evaluation import check_rows
@@ -268,14 +227,15 @@ def evaluation_cards(page: Page, ev) -> None:
 MARGIN_CLASSES = ((1.0, "m-fail"), (1.1, "m-tight"), (1.5, "m-fair"))  # below each bound its class; above: ample
 
 
-def margin_class(m) -> str:
+def margin_class(m, passed: bool | None = None) -> str:
     """How close a margin (available / needed) is to failing: m-fail < 1 <= m-tight < 1.1 <= m-fair < 1.5 <=
-    m-ample."""
+    m-ample.  A check that passes (``passed``: a margin the solver put on its limit, 0.9999999 printed as 1.00)
+    is tight, never coloured as failing."""
     if m is None or not math.isfinite(m):
         return ""
     for bound, cls in MARGIN_CLASSES:
         if m < bound:
-            return cls
+            return "m-tight" if cls == "m-fail" and passed else cls
     return "m-ample"
 
 
@@ -294,69 +254,8 @@ def checks_table(ev) -> str:
                 else ("n/a" if r["available"] is None else fmt_value(r["available"]) + u))
         body.append([r["label"], have, (fmt_value(r["needed"]) + u) if r["needed"] else "none",
                      "n/a" if r["margin"] is None else f"{r['margin']:.2f}", "pass" if r["pass"] else "FAIL"])
-        classes.append(["wrap", "", "", margin_class(r["margin"]), "ok" if r["pass"] else "bad"])
+        classes.append(["wrap", "", "", margin_class(r["margin"], r["pass"]), "ok" if r["pass"] else "bad"])
     return table(head, body, classes=classes) + MARGIN_KEY
-
-
-def drive_figure(ev):
-    """The duty cycle on the motor's torque-speed plane (plotly twin of report.plots' panel), or None."""
-    import plotly.graph_objects as go
-
-    from .plots import duty_points
-
-    pts = duty_points(ev)
-    if pts is None:
-        return None
-    fig = go.Figure()
-    rms = max(pts["rms_torque_Nm"], pts["mean_thrust_torque_Nm"])
-    nr, nm = pts["rated_speed_rpm"], pts["max_speed_rpm"]
-    how = "corner estimated" if pts["zone_estimated"] else "vendor corner points"
-    fig.add_scatter(x=pts["zone_speed_rpm"], y=pts["zone_torque_Nm"], mode="lines", line=dict(dash="dash"),
-                    name=f"{pts['motor']} peak zone ({how})")
-    fig.add_scatter(x=[0, nr], y=[pts["rated_torque_Nm"]] * 2, mode="lines", line=dict(width=4),
-                    opacity=0.5, name=f"rated {pts['rated_torque_Nm']:.3g} N.m to {nr:.0f} rpm")
-    fig.add_scatter(x=[0, nm], y=[pts["rms_limit_Nm"]] * 2, mode="lines", line=dict(dash="dot"),
-                    name=f"RMS limit {pts['rms_limit_Nm']:.3g} N.m")
-    fig.add_scatter(x=[nm, nm], y=[0, pts["zone_torque_Nm"][-1]], mode="lines", line=dict(dash="dashdot"),
-                    name=f"max speed {nm:.0f} rpm")
-    fig.add_scatter(x=pts["speed_rpm"], y=np.abs(pts["torque_Nm"]), mode="lines+markers",
-                    name="duty cycle |T| by phase")
-    fig.add_scatter(x=[0.0], y=[pts["thrust_torque_Nm"]], mode="markers", marker=dict(symbol="triangle-up", size=12),
-                    name=f"steady thrust at feed {pts['thrust_torque_Nm']:.1f} N.m")
-    fig.add_scatter(x=[pts["mean_speed_rpm"]], y=[rms], mode="markers", marker=dict(symbol="square-open", size=11),
-                    name=f"RMS checked {rms:.2f} N.m")
-    fig.update_layout(title="duty cycle against the motor limits", xaxis_title="motor speed [rpm]",
-                      yaxis_title="motor torque magnitude [N.m]")
-    return fig
-
-
-def frf_figure(ev):
-    """Table compliance over frequency at stroke start, middle and end: motor held (the headline first
-    frequency's model), motor free and with the tuned servo."""
-    from plotly.subplots import make_subplots
-
-    from ..model.frf import frf
-    from .methods import closed_loop_frf
-
-    free = frf(ev)
-    f = np.asarray(free["frequency_Hz"], float)
-    held = frf(ev, f, motor_held=True)
-    closed = closed_loop_frf(ev, f)
-    fig = make_subplots(rows=2, cols=1, shared_xaxes=True, subplot_titles=("compliance [um/N]", "phase [deg]"))
-    sets = ((held, "solid", "motor held"), (free, "dash", "motor free"), (closed, "dot", "servo"))
-    for j, q0 in enumerate(free["positions"]):
-        color = _COLORS[j % len(_COLORS)]
-        for res, dash, what in sets:
-            q = res["positions"][j]
-            name = f"{q0['position_mm']:.0f} mm, {what}"
-            fig.add_scatter(x=f, y=q["magnitude_um_per_N"], mode="lines", line=dict(color=color, dash=dash),
-                            name=name, legendgroup=name, row=1, col=1)
-            fig.add_scatter(x=f, y=q["phase_deg"], mode="lines", line=dict(color=color, dash=dash), name=name,
-                            legendgroup=name, showlegend=False, row=2, col=1)
-    fig.update_xaxes(type="log", title_text="frequency [Hz]", row=2, col=1)
-    fig.update_xaxes(type="log", row=1, col=1)
-    fig.update_yaxes(type="log", row=1, col=1)
-    return fig
 
 
 def evaluation_page(ev, title: str | None = None, interactive: bool = False) -> Page:
@@ -373,11 +272,11 @@ def evaluation_page(ev, title: str | None = None, interactive: bool = False) -> 
     # the static profile figure carries the duty cycle against the motor limits in its right-hand panel
     page.figure("Stiffness and frequency over the stroke" + ("; drive against the motor" if drive and
                                                               not interactive else ""),
-                lambda: profiles_figure([ev], [d.name]), lambda: plot_profiles([ev]))
-    page.figure("Stiffness chain", lambda: chain_figure(ev), lambda: static.chain_figure(ev), 300)
+                lambda: ifig.profiles_figure([ev], [d.name]), lambda: plot_profiles([ev]))
+    page.figure("Stiffness chain", lambda: ifig.chain_figure(ev), lambda: static.chain_figure(ev), 300)
     if drive and interactive:
-        page.figure("Drive: duty cycle against the motor", lambda: drive_figure(ev), None, 460)
-    page.figure("Dynamic compliance of the table (FRF)", lambda: frf_figure(ev), lambda: static.frf_figure(ev),
+        page.figure("Drive: duty cycle against the motor", lambda: ifig.drive_figure(ev), None, 460)
+    page.figure("Dynamic compliance of the table (FRF)", lambda: ifig.frf_figure(ev), lambda: static.frf_figure(ev),
                 560)
     page.section("Checks").append(checks_table(ev))
     page.section("Full evaluation (as printed)").append(pre(evaluation_table(ev)))
@@ -388,6 +287,7 @@ def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
     """A solve: status and certificate first, the best design's profile (with the runners-up) or the Pareto
     front as a scatter matrix, the checks of the best design, and the printed result."""
     from ..model import evaluate
+    from . import static
     from .plots import distinct_labels, plot_profiles
     from .solve import plot_pareto
 
@@ -398,7 +298,7 @@ def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
     page.card("time", f"{res.time:.2f} s")
     if res.pareto is not None:
         page.card("Pareto points", str(len(res.pareto.points)))
-        page.figure("Pareto front", lambda: pareto_figure(res.pareto), lambda: plot_pareto(res.pareto), 560)
+        page.figure("Pareto front", lambda: ifig.pareto_figure(res.pareto), lambda: plot_pareto(res.pareto), 560)
         page.section(f"Every point of the front ({len(res.pareto.points)})").append(pareto_table(res.pareto))
     elif res.best is not None and res.best.design is not None:
         page.card("objective", f"{res.best.objective:,.3f} {res.objective_unit}")
@@ -407,33 +307,22 @@ def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
         labels = distinct_labels(parts, [f"#{c.rank}" for c in cands]) if len(cands) > 1 else ["best"]
         evs = [evaluate(c.design) for c in cands]
         limits = {k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")}
-        page.figure("Best designs over the stroke", lambda: profiles_figure(evs, labels, limits),
-                    lambda: plot_profiles(evs, labels=labels, limits=limits))
+        page.figure("Best designs over the stroke" + ("; drive against the motor" if evs[0].design.motor is not None
+                                                       and not interactive else ""),
+                    lambda: ifig.profiles_figure(evs, labels, limits), lambda: plot_profiles(evs, labels=labels,
+                                                                                        limits=limits))
+        # the winning design as the evaluate report shows it: its stiffness chain, drive and FRF
+        best = evs[0]
+        page.figure("Stiffness chain of the best design", lambda: ifig.chain_figure(best),
+                    lambda: static.chain_figure(best), 300)
+        if interactive and best.design.motor is not None:
+            page.figure("Drive of the best design: duty cycle against the motor", lambda: ifig.drive_figure(best), None,
+                        460)
+        page.figure("Dynamic compliance of the best design's table (FRF)", lambda: ifig.frf_figure(best),
+                    lambda: static.frf_figure(best), 560)
         page.section("Checks of the best design").append(checks_table(evs[0]))
     page.section("Result (as printed)").append(pre(text))
     return page
-
-
-def pareto_figure(front):
-    """Scatter matrix of the chosen objectives: sampled feasible designs in grey, the front in colour."""
-    import plotly.graph_objects as go
-
-    from ..search.pareto import FIELD
-
-    dims_front = [dict(label=f"{k.replace('_', ' ')} [{u}]" if u else k,
-                       values=[float(getattr(p, FIELD[k])) for p in front.points])
-                  for k, u in zip(front.keys, front.units)]
-    fig = go.Figure()
-    if front.cloud is not None and len(front.cloud):
-        cloud = np.asarray(front.cloud)
-        fig.add_trace(go.Splom(dimensions=[dict(label=d["label"], values=cloud[:, i]) for i, d in
-                                           enumerate(dims_front)], name="feasible designs (sample)",
-                               marker=dict(size=3, color="#b0b7c3", opacity=0.4), diagonal_visible=False))
-    fig.add_trace(go.Splom(dimensions=dims_front, name="Pareto front", diagonal_visible=False,
-                           marker=dict(size=7, color="#d62728", line=dict(width=0.5, color="white")),
-                           text=[f"{p.screw} / {p.nut} / {p.bearing} / {p.guide}" for p in front.points]))
-    fig.update_layout(title="objectives pairwise (front in red, hover for parts)")
-    return fig
 
 
 def pareto_table(front) -> str:
@@ -475,14 +364,14 @@ def compare_page(items, text: str, interactive: bool = False) -> Page:
                      f"{float(e['drag_torque']):.3f}", f"{float(e['total_mass']):,.1f}", f"{float(e['cost']):,.0f}",
                      str(e.design.motor["id"]) if e.design.motor is not None else "no drive",
                      "n/a" if least is None else f"{least:.2f}", ", ".join(failed) or "none"])
-        classes.append(["wrap", "", "", "", "", "", "", margin_class(least), "bad wrap" if failed else "ok"])
+        classes.append(["wrap"] + [""] * 6 + [margin_class(least, not failed), "bad wrap" if failed else "ok"])
     page.section("Side by side").append(table(head, rows, classes=classes) + MARGIN_KEY)
     if evs:
         labels = [c.label for c in items if c.evaluation is not None]
         parts = [{"mounting": e.design.axis.mounting, **e.design.part_ids()} for e in evs]
         if len(set(labels)) < len(labels):
             labels = distinct_labels(parts)
-        page.figure("Stiffness and frequency over the stroke", lambda: profiles_figure(evs, labels),
+        page.figure("Stiffness and frequency over the stroke", lambda: ifig.profiles_figure(evs, labels),
                     lambda: plot_profiles(evs, labels=labels))
     page.section("Side by side (as printed)").append(pre(text))
     return page
@@ -503,7 +392,7 @@ def study_page(study, df, text: str, interactive: bool = False) -> Page:
         if name not in df or not pd.api.types.is_numeric_dtype(df[name]):
             continue
         ok = df["status"] == OPTIMAL
-        page.figure(f"Objective against {key}", lambda n=name, k=key, o=ok: _objective_plotly(df, n, k, unit, o),
+        page.figure(f"Objective against {key}", lambda n=name, k=key, o=ok: ifig.objective_figure(df, n, k, unit, o),
                     lambda n=name, k=key, o=ok: objective_figure(df, n, k, unit, o), 380)
     slots = [c for c in ("screw", "nut", "bearing", "guide", "motor", "coupling") if c in df]
     shown = [c for c in ("case_id", *[n for n, _ in input_columns(study).values()], "status", "reason", "objective",
@@ -521,23 +410,6 @@ def study_page(study, df, text: str, interactive: bool = False) -> Page:
     summary = "\n".join(ln for ln in text.splitlines() if not ln.lstrip().startswith("!["))  # no image links
     page.section("Summary (as written to report.md, figures above)").append(pre(summary))
     return page
-
-
-def _objective_plotly(df, name: str, key: str, unit: str, ok):
-    """The interactive twin of :func:`axisopt.report.static.objective_figure`."""
-    import plotly.graph_objects as go
-
-    fig = go.Figure()
-    fig.add_scatter(x=df.loc[ok, name], y=df.loc[ok, "objective"], mode="markers", name="optimal",
-                    text=df.loc[ok, "case_id"] + ": " + df.loc[ok, "screw"].astype(str) + " / "
-                    + df.loc[ok, "nut"].astype(str), hovertemplate="%{text}<br>%{x}: %{y:.4g}<extra></extra>")
-    if (~ok).any():  # no objective to draw: the inputs of the cases without a design are shaded
-        for x in sorted(set(df.loc[~ok, name].dropna())):
-            fig.add_vline(x=x, line=dict(color="#c62828", width=6), opacity=0.2)
-        fig.add_scatter(x=[None], y=[None], mode="lines", line=dict(color="#c62828", width=6), opacity=0.3,
-                        name=f"input of a case without a design ({int((~ok).sum())} cases; reasons in the table)")
-    fig.update_layout(title=f"objective against {key}", xaxis_title=name, yaxis_title=f"objective [{unit}]")
-    return fig
 
 
 def _cell(v) -> str:
@@ -563,28 +435,8 @@ def diagnose_page(diag, text: str, interactive: bool = False) -> Page:
     static = residual_figures(diag, d["verdict"]) if not interactive else None
     for o, rb, ra in zip(diag.obs, before, after):
         name = str(o.dataset.source).replace("\\", "/").rsplit("/", 1)[-1]
-        page.figure(f"Residuals: {name}", lambda o=o, rb=rb, ra=ra: _residuals_plotly(o, rb, ra, d["verdict"]),
+        page.figure(f"Residuals: {name}", lambda o=o, rb=rb, ra=ra: ifig.residuals_figure(o, rb, ra, d["verdict"]),
                     lambda: next(static)[1], 360)
     page.section("Diagnosis (as printed)").append(pre(text))
     return page
 
-
-def _residuals_plotly(o, rb, ra, verdict: str):
-    """Residuals of one observation against each recorded factor, baseline and final (plotly)."""
-    from plotly.subplots import make_subplots
-
-    from .diagnosis import FACTOR_DISPLAY, Y_UNIT
-
-    facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
-    unit, f = Y_UNIT[o.kind]
-    fig = make_subplots(rows=1, cols=len(facs), shared_yaxes=True)
-    for j, (name, v) in enumerate(facs, start=1):
-        fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
-        x = np.asarray(v) * fs + fo
-        fig.add_scatter(x=x, y=rb * f, mode="markers", name="baseline", marker=dict(size=4, color="#9aa3b2"),
-                        showlegend=j == 1, row=1, col=j)
-        fig.add_scatter(x=x, y=ra * f, mode="markers", name=f"with {verdict}", showlegend=j == 1,
-                        marker=dict(size=4, color="#d62728"), row=1, col=j)
-        fig.update_xaxes(title_text=f"{name} [{fu}]" if fu else name, row=1, col=j)
-    fig.update_yaxes(title_text=f"model - measured [{unit}]", row=1, col=1)
-    return fig

@@ -257,14 +257,17 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
             # sweep of many distinct inputs, e.g. random: a rug of ticks along the bottom of the panel, one artist)
             xs = sorted(set(bad[name].dropna()))
             what = f"for {len(bad)} cases ({', '.join(sorted(set(bad['status'])))})"
+            short = key.split(".")[-1]
+            # with other inputs swept, the mark says where such a case sits, not that this input is the cause
+            text = (f"no design at this {short} {what}" if len(cols) == 1 else
+                    f"{short} of a case without a design {what}; the cause may be another input (its reason)")
             for ax in (a1, a2):
                 if len(xs) > SHADED_INPUTS:
                     ax.plot(xs, [0.0] * len(xs), "|", color="tab:red", ms=10, alpha=0.6,
-                            transform=ax.get_xaxis_transform(), label=f"no design at these inputs {what}")
+                            transform=ax.get_xaxis_transform(), label=text)
                     continue
                 for i, x in enumerate(xs):
-                    ax.axvline(x, color="tab:red", alpha=0.25, lw=4,
-                               label=f"no design at this {key.split('.')[-1]} {what}" if i == 0 else None)
+                    ax.axvline(x, color="tab:red", alpha=0.25, lw=4, label=text if i == 0 else None)
         a1.set_ylabel("best min. axial stiffness [N/um]")
         a2.set_ylabel("best min. 1st frequency [Hz]")
         a2.set_xlabel(name.replace(" [", " [", 1))

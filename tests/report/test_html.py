@@ -43,7 +43,8 @@ def reports(tmp_path_factory):
     runs = {
         "evaluate": (["evaluate", str(P / "vmc_x_design.yaml")], 3),  # profiles with the drive, chain, FRF
         "interactive": (["evaluate", str(P / "vmc_x_design.yaml"), "--plotly", "inline"], 4),  # + drive
-        "solve": (["solve", str(P / "teaching_problem.yaml"), "--top", "3", "--no-sensitivity"], 1),
+        # the best designs' profiles and drive, the winner's chain and FRF
+        "solve": (["solve", str(P / "teaching_problem.yaml"), "--top", "3", "--no-sensitivity"], 3),
         "pareto": (["solve", str(P / "pareto_problem.yaml"), "--no-sensitivity"], 1),
         "compare": (["compare", str(P / "vmc_x_design.yaml"), str(P / "paper_3_1_3_d40.yaml")], 1),
         "study": (["study", str(P / "studies" / "teaching_random.yaml"), "--out", str(d / "study"),
@@ -196,6 +197,8 @@ def test_margins_are_coloured_by_how_close_they_are():
     assert [margin_class(m) for m in (0.5, 0.999, 1.0, 1.05, 1.1, 1.49, 1.5, 76.0)] == \
         ["m-fail", "m-fail", "m-tight", "m-tight", "m-fair", "m-fair", "m-ample", "m-ample"]
     assert margin_class(None) == "" and margin_class(float("nan")) == ""
+    # a check that passes on its limit (the solver's 0.9999999, printed 1.00) is tight, not red
+    assert margin_class(0.9999999, True) == "m-tight" and margin_class(0.9999999, False) == "m-fail"
 
 
 def _rows(html_text, heading):
@@ -215,7 +218,7 @@ def test_evaluate_page_colours_every_margin(reports):
     text = reports["evaluate"][0].read_text(encoding="utf-8")
     for r in check_rows(evaluate(load_design(P / "vmc_x_design.yaml"))):
         if r["margin"] is not None:
-            cell = f'<td class="{margin_class(r["margin"])} n">{r["margin"]:.2f}</td>'
+            cell = f'<td class="{margin_class(r["margin"], r["pass"])} n">{r["margin"]:.2f}</td>'
             assert cell in text.split(h.escape(r["label"]), 1)[1].split("</tr>", 1)[0], r["check"]
     assert "drive against the motor" in text and "Dynamic compliance of the table" in text
     interactive = reports["interactive"][0].read_text(encoding="utf-8")
