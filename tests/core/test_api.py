@@ -263,3 +263,22 @@ def test_tables_show_digits_enough_to_tell_designs_apart():
     assert fmt_column([1, 2, None, "x"]) == ["1", "2", "-", "x"]
     html = html_table([{"k [N/um]": 161.24}, {"k [N/um]": 161.38}])
     assert "161.2" in html and "161.4" in html
+
+
+def test_design_parts_table_in_vendor_units():
+    # issue 42: every part has a unit-bearing table; the values as the catalog file quotes them
+    import csv
+
+    import axisopt
+
+    d = axisopt.load_design(PROBLEMS / "vmc_x_design.yaml")
+    df = d.to_frame()
+    assert list(df.columns) == ["part", "id", "column", "value", "unit"]
+    assert set(df["part"]) == set(d.part_ids())
+    nut = df[(df["part"] == "nut") & (df["column"] == "stiffness")].iloc[0]
+    with open(ROOT / "catalogs" / "nuts.csv", encoding="utf-8") as fh:
+        row = next(r for r in csv.DictReader(fh) if r["id"] == nut["id"])
+    assert nut["unit"] == "N/um" and nut["value"] == pytest.approx(float(row["stiffness [N/um]"]))
+    lead = df[(df["part"] == "screw") & (df["column"] == "lead")].iloc[0]
+    assert lead["unit"] == "mm" and lead["value"] == pytest.approx(d.screw["lead"] * 1e3)
+    assert "N/um" in d._repr_html_()
