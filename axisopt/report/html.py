@@ -150,7 +150,7 @@ def table(head, rows, states=None, classes=None) -> str:
     ('' for none).  Text and part ids wrap (a 1280 px window shows every column); a number with its unit
     stays on one line."""
     # a heading may break after a dot or underscore (axis.<wbr>moving_<wbr>mass [kg]): long key names fit
-    th = "".join("<th>" + _BREAK.sub(r"\1<wbr>", _e(h)) + "</th>" for h in head)
+    th = "".join(f"<th>{_breakable(h)}</th>" for h in head)
     trs = []
     for i, r in enumerate(rows):
         cls = classes[i] if classes is not None else [""] * len(r)
@@ -172,7 +172,14 @@ def _html(v) -> str:
     return _e(v)
 
 
-_BREAK = re.compile(r"([._/])(?=\w)")
+_BREAK = re.compile(r"([._])(?=\w)")
+
+
+def _breakable(heading: str) -> str:
+    """A heading escaped, with a break opportunity after each dot and underscore of its name (not of its unit:
+    ``axis.<wbr>moving_<wbr>mass [kg]``, ``drag [N.m]`` whole)."""
+    name, sep, unit = str(heading).partition(" [")
+    return _BREAK.sub(r"\1<wbr>", _e(name)) + _e(sep + unit)
 _NUMBER = re.compile(r"^[-+]?[\d.,]+(e[-+]?\d+)?( ?[^\s\d]{1,6})?$")  # 1,234.5 / 0.97 / 12 N/um / 5 %
 
 
