@@ -250,6 +250,16 @@ MARGIN_KEY = ('<p class="key">margin = available / needed: <span class="m">below
               '(amber), 1.1-1.5 fair (pale green), from 1.5 ample (green)</span></p>')
 
 
+def parts_table(design) -> str:
+    """The parts list to order (:func:`axisopt.report.partslist.parts_list`)."""
+    from .partslist import parts_list
+
+    rows = parts_list(design)
+    return table(["part", "id", "vendor", "quantity", "order"],
+                 [[r["part"], r["id"], r["vendor"], str(r["quantity"]), r["order"] or "-"] for r in rows],
+                 classes=[["", "", "", "", "wrap"]] * len(rows))
+
+
 def checks_table(ev) -> str:
     from .evaluation import check_rows, fmt_value
 
@@ -286,6 +296,7 @@ def evaluation_page(ev, title: str | None = None, interactive: bool = False) -> 
     page.figure("Dynamic compliance of the table (FRF)", lambda: ifig.frf_figure(ev), lambda: static.frf_figure(ev),
                 560)
     page.section("Checks").append(checks_table(ev))
+    page.section("Parts to order").append(parts_table(d))
     page.section("Full evaluation (as printed)").append(pre(evaluation_table(ev)))
     return page
 
@@ -328,6 +339,7 @@ def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
         page.figure("Dynamic compliance of the best design's table (FRF)", lambda: ifig.frf_figure(best),
                     lambda: static.frf_figure(best), 560)
         page.section("Checks of the best design").append(checks_table(evs[0]))
+        page.section("Parts of the best design to order").append(parts_table(evs[0].design))
     page.section("Result (as printed)").append(pre(text))
     return page
 
