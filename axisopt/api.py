@@ -34,7 +34,7 @@ def evaluate(design: Design | str | PathLike, *, calibration: str | PathLike | N
              n_positions: int | None = None):
     """Evaluate a design (a :class:`Design` or a design YAML path) over the stroke -> :class:`Evaluation`.
 
-    calibration : a calibration YAML saved by ``diagnose`` (as ``axisopt evaluate --calibration``)
+    calibration : a calibration YAML saved by ``diagnose`` (as ``axisopt evaluate DESIGN --calibration FILE`` takes it)
     n_positions : nut positions on the stroke (default: the model grid the search uses)
     """
     from .model import evaluate as _evaluate
@@ -71,20 +71,22 @@ def compare(*files, method: str = "default"):
 
 
 def study(spec, out: str | PathLike | None = None, *, workers: int | None = 0, resume: bool = False,
-          scheduler=None):
+          overwrite: bool = False, scheduler=None):
     """Run a trade study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult` (its
     ``to_frame()`` is the results table, one row per case).
 
-    out     : output directory (default ``<study file stem>-results`` as on the command line)
-    workers : local worker processes; 0 (the default here) solves in this process, None uses every core
-    resume  : continue a run in ``out``
+    out       : output directory (default ``<study file stem>-results`` as on the command line)
+    workers   : local worker processes; 0 (the default here) solves in this process, None uses every core
+    resume    : continue a run in ``out`` (its finished cases are kept)
+    overwrite : solve every case again (the case results in ``out`` are deleted first); a re-run with
+                neither is an error that names both
 
     ``axisopt.study`` is also the package :mod:`axisopt.study`; the package is callable with these
     arguments, so ``axisopt.study(spec)`` works before and after the package is imported.
     """
     from .study.result import run_spec
 
-    return run_spec(spec, out, workers=workers, resume=resume, scheduler=scheduler)
+    return run_spec(spec, out, workers=workers, resume=resume, overwrite=overwrite, scheduler=scheduler)
 
 
 def diagnose(data, design: Design | str | PathLike, *, effects=None, max_effects: int = 2,

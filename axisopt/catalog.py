@@ -419,9 +419,10 @@ def _read_records(path: Path, name: str) -> list[dict]:
     schema = SCHEMA[name]
     src = str(path)
     try:
-        from .fileio import read_input  # regular files only, at most MAX_CATALOG_BYTES
+        from .fileio import read_input, refuse_nul  # regular files only, at most MAX_CATALOG_BYTES
 
-        with io.StringIO(read_input(path, "catalog", what="catalog", encoding="utf-8-sig"), newline="") as fh:
+        text = refuse_nul(read_input(path, "catalog", what="catalog", encoding="utf-8-sig"), src)
+        with io.StringIO(text, newline="") as fh:
             reader = csv.reader(fh)
             try:
                 rows = list(reader)

@@ -34,6 +34,48 @@ def fmt(x, unit: str = "") -> str:
     return f"{text} {unit}" if unit else text
 
 
+def fmt_column(values) -> list[str]:
+    """A table column as an engineer writes it: the numbers with one number of decimals (three significant
+    digits for the smallest, none from 100 up, thousands separators), more decimals where that would write
+    different numbers alike (five designs of 161.24, 161.38 ... N/um read as 161.2, 161.4, not five times
+    '161'), up to six more; text, whole numbers and missing values as in a repr.
+
+    >>> fmt_column([161.24, 161.38, 0.5])
+    ['161.240', '161.380', '0.500']
+    >>> fmt_column([161.24, 161.38, 162.0])
+    ['161.2', '161.4', '162.0']
+    """
+    out = [_cell(v) for v in values]
+    nums = {i: float(v) for i, v in enumerate(values) if isinstance(v, (int, float, np_number()))
+            and not isinstance(v, bool) and math.isfinite(float(v))}
+    if not any(isinstance(values[i], float) for i in nums):
+        return out  # counts and ids: as they are
+    tiny = any(0 < abs(v) < 1e-3 for v in nums.values())
+    first = 0 if tiny else min(max(_decimals(v) for v in nums.values()), 6)
+    distinct = len({float(f"{v:.9g}") for v in nums.values()})
+    for extra in range(7):
+        d = first + extra
+        texts = {i: (f"{v:.{3 + extra}g}" if tiny else f"{v:,.{d}f}") for i, v in nums.items()}
+        if len(set(texts.values())) >= distinct or extra == 6:
+            break
+    for i, t in texts.items():
+        out[i] = t
+    return out
+
+
+def np_number():
+    """numpy's scalar base class when numpy is loaded (a table of numpy floats), else float."""
+    import sys
+
+    np = sys.modules.get("numpy")
+    return np.number if np is not None else float
+
+
+def _decimals(v: float) -> int:
+    """The decimals :func:`fmt` gives ``v``: none from 100 up, three significant digits below."""
+    return 0 if v == 0 or abs(v) >= 100 else max(0, 2 - math.floor(math.log10(abs(v))))
+
+
 def frame(rows, columns=None):
     """pandas DataFrame of ``rows`` (a list of dicts; ``columns`` fixes the order and keeps the columns of
     an empty table)."""
@@ -43,7 +85,8 @@ def frame(rows, columns=None):
 
 
 def html_table(rows, caption: str = "", columns=None, max_rows: int = 30) -> str:
-    """A small HTML table of ``rows`` (list of dicts): numbers as :func:`fmt` writes them, text escaped;
+    """A small HTML table of ``rows`` (list of dicts): numbers as :func:`fmt_column` writes them (enough
+    digits to tell the rows apart), text escaped;
     ``max_rows`` rows at most (a last row says how many were left off)."""
     rows = list(rows)
     cols = list(columns) if columns is not None else list(dict.fromkeys(k for r in rows for k in r))
@@ -51,8 +94,10 @@ def html_table(rows, caption: str = "", columns=None, max_rows: int = 30) -> str
     if caption:
         out.append(f"<caption style='text-align:left'>{html.escape(caption)}</caption>")
     out.append("<thead><tr>" + "".join(f"<th>{html.escape(str(c))}</th>" for c in cols) + "</tr></thead><tbody>")
-    for r in rows[:max_rows]:
-        out.append("<tr>" + "".join(f"<td>{html.escape(_cell(r.get(c)))}</td>" for c in cols) + "</tr>")
+    shown = rows[:max_rows]
+    texts = {c: fmt_column([r.get(c) for r in shown]) for c in cols}  # digits enough to tell rows apart
+    for i in range(len(shown)):
+        out.append("<tr>" + "".join(f"<td>{html.escape(texts[c][i])}</td>" for c in cols) + "</tr>")
     if len(rows) > max_rows:
         out.append(f"<tr><td colspan='{len(cols)}'>... {len(rows) - max_rows} more rows (to_frame() has them "
                    "all)</td></tr>")
@@ -83,4 +128,4 @@ def _cell(v) -> str:
     return str(v)
 
 
-__all__ = ["fmt", "frame", "html_table", "html_fields", "one_line", "REPR_WIDTH"]
+__all__ = ["fmt", "fmt_column", "frame", "html_table", "html_fields", "one_line", "REPR_WIDTH"]

@@ -80,6 +80,15 @@ def read_input(path, kind: str, *, what: str = "file", encoding: str = "utf-8", 
                          f"{exc.start:,})", source=src) from None
 
 
+def refuse_nul(text: str, source: str) -> str:
+    """``text`` unchanged, or a one-line InputError naming the line of its first NUL character (the csv module
+    reads a NUL inside a cell as text, so a catalog with one would be accepted)."""
+    if "\0" in text:
+        line = text.count("\n", 0, text.index("\0")) + 1
+        raise InputError("a NUL byte in the file (is it plain text?)", source=source, where=f"line {line}")
+    return text
+
+
 # CSV injection (OWASP, "CSV Injection"): a text cell starting with one of these is read by a spreadsheet as
 # a formula; it is written with a leading single quote.  Numbers (also negative ones) stay numbers.
 CSV_FORMULA_CHARS = ("=", "+", "-", "@", "\t", "\r")
@@ -292,9 +301,8 @@ def tidy_layout(fig) -> None:
 
 def save_figure(fig, path, dpi: int = 110) -> None:
     """Save and close a matplotlib figure, atomically (:func:`atomic_file`); a bad path or format is an
-    InputError (one line, exit 2)."""
-    import matplotlib.pyplot as plt
-
+    InputError (one line, exit 2).  A figure outside pyplot (axisopt's own) is saved without importing
+    pyplot."""
     ext = Path(path).suffix.lower().lstrip(".")
     try:
         if ext not in PLOT_FORMATS:
@@ -304,4 +312,7 @@ def save_figure(fig, path, dpi: int = 110) -> None:
     except ValueError as exc:
         raise InputError(f"cannot write plot ({exc})", source=str(path)) from None
     finally:
-        plt.close(fig)
+        if getattr(fig.canvas, "manager", None) is not None:  # a pyplot figure: released from pyplot's list
+            import matplotlib.pyplot as plt
+
+            plt.close(fig)

@@ -15,21 +15,26 @@ EXIT_OK, EXIT_NEGATIVE, EXIT_INPUT, EXIT_UNPROVEN, EXIT_INTERRUPTED = 0, 1, 2, 3
 
 
 def add_html_report(parser, what: str) -> None:
-    """The ``--report FILE.html`` option (a self-contained HTML report, needs axisopt[html])."""
+    """The ``--report FILE.html`` option (a self-contained HTML report) and its ``--plotly`` choice."""
     parser.add_argument("--report", metavar="FILE.html",
-                        help=f"write {what} as one self-contained HTML file (interactive figures; needs plotly)")
-    parser.add_argument("--plotly", choices=("inline", "cdn"), default="inline",
-                        help="with --report: plotly.js inlined (default; about 4.7 MB, works offline) or loaded "
-                             "from the plotly CDN (about 0.1 MB, needs the network to show the figures)")
+                        help=f"write {what} as one self-contained HTML file (static SVG figures: offline, small)")
+    parser.add_argument("--plotly", choices=("no", "inline", "cdn"), default="no", help=PLOTLY_HELP)
 
 
-def check_html_report(path) -> None:
-    """Refuse a --report target before the work starts: not .html, or plotly missing (one line, exit 2)."""
+PLOTLY_HELP = ("with --report: 'no' (default) draws static SVG figures (no plotly needed, works offline, a few "
+               "hundred kB); interactive plotly figures (zoom, hover; needs axisopt[html]) with plotly.js "
+               "'inline' (about 5 MB, works offline) or from the plotly 'cdn' (a small file that needs the "
+               "network)")
+
+
+def check_html_report(path, plotly: str = "no") -> None:
+    """Refuse a --report target before the work starts: not .html, or plotly missing for interactive figures
+    (one line, exit 2)."""
     if path is None:
         return
     from ..report.html import check_report_path
 
-    check_report_path(path)
+    check_report_path(path, interactive=plotly != "no")
 
 
 def colour_wanted() -> bool:

@@ -30,7 +30,7 @@ def cmd_compare(args) -> int:
     from ..report.compare import compare_dict, compare_table, write_compare_csv
     from ..study.compare import load_compared
 
-    check_html_report(args.report)
+    check_html_report(args.report, args.plotly)
     items = load_compared(args.files)
     text = compare_table(items)
     if not stdout_taken(args.json, args.csv):
@@ -49,7 +49,7 @@ def cmd_compare(args) -> int:
     if args.report:
         from ..report.html import compare_page, write_page
 
-        write_page(compare_page(items, text), args.report, plotly=args.plotly)
+        write_page(compare_page(items, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
         wrote(args.report, stdout_taken(args.json, args.csv))
     failed = [c for c in items if not c.ok]
     for c in failed:

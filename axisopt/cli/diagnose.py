@@ -8,7 +8,7 @@ text and JSON of either diagnosis come from :mod:`axisopt.report`."""
 from __future__ import annotations
 
 from ..errors import InputError
-from .common import EXIT_OK, stdout_taken, write_json
+from .common import EXIT_OK, PLOTLY_HELP, stdout_taken, write_json
 
 
 def cmd_diagnose(args) -> int:
@@ -23,7 +23,7 @@ def cmd_diagnose(args) -> int:
     from ..report.diagnosis import diagnosis_dict, diagnosis_text, write_report
 
     html = args.report is not None and str(args.report).lower().endswith((".html", ".htm"))
-    if html:
+    if html and args.plotly != "no":
         from ..report.html import require_plotly
 
         require_plotly()
@@ -45,7 +45,7 @@ def cmd_diagnose(args) -> int:
     if html:
         from ..report.html import diagnose_page, write_page
 
-        write_page(diagnose_page(diag, text), args.report, plotly=args.plotly)
+        write_page(diagnose_page(diag, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
         if not quiet:
             print(f"report written to {args.report}")
     elif args.report:
@@ -94,11 +94,9 @@ def register(sub) -> None:
     d.add_argument("data", nargs="+", help="measured test CSV file(s) (units in headers)")
     d.add_argument("--design", required=True, help="design YAML of the measured axis")
     d.add_argument("--report", metavar="FILE.html|DIR",
-                   help="a self-contained HTML report (FILE.html, needs plotly), or report.md with residual "
+                   help="a self-contained HTML report (FILE.html), or report.md with residual "
                         "plots in DIR")
-    d.add_argument("--plotly", choices=("inline", "cdn"), default="inline",
-                   help="with --report FILE.html: plotly.js inlined (default; works offline) or loaded from the "
-                        "plotly CDN (a small file that needs the network)")
+    d.add_argument("--plotly", choices=("no", "inline", "cdn"), default="no", help=PLOTLY_HELP)
     d.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
     d.add_argument("--save-calibration", metavar="FILE.yaml", help="save the calibrated model for evaluate")
     d.add_argument(

@@ -33,7 +33,7 @@ def cmd_evaluate(args) -> int:
     from ..model import evaluate
     from ..report import evaluation_dict, evaluation_table, plot_profiles
 
-    check_html_report(args.report)
+    check_html_report(args.report, args.plotly)
     design = load_design(args.design)
     if args.calibration:
         from ..identify.calibration import apply_calibration
@@ -91,7 +91,7 @@ def cmd_evaluate(args) -> int:
     if args.report:
         from ..report.html import evaluation_page, write_page
 
-        write_page(evaluation_page(ev), args.report, plotly=args.plotly)
+        write_page(evaluation_page(ev, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
         wrote(args.report, stdout_taken(args.json))
     if args.fail_on_check:
         from ..report.evaluation import check_rows

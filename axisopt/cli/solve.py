@@ -48,7 +48,7 @@ def cmd_solve(args) -> int:
         raise InputError(f"--top must be at least 1, got {args.top}")
     if not (math.isfinite(args.time_limit) and args.time_limit > 0):
         raise InputError(f"--time-limit must be positive, got {args.time_limit}")
-    check_html_report(args.report)
+    check_html_report(args.report, args.plotly)
     problem = load_problem(args.problem)
     if args.save_design and _single_file(args.save_design) and problem.objective.mode == "pareto":
         raise InputError("a Pareto front has several designs: give a directory, not a .yaml file",
@@ -89,7 +89,8 @@ def cmd_solve(args) -> int:
     if args.report:
         from ..report.html import solve_page, write_page
 
-        write_page(solve_page(res, problem, text), args.report, plotly=args.plotly)
+        write_page(solve_page(res, problem, text, interactive=args.plotly != "no"), args.report,
+                   plotly=args.plotly)
         wrote(args.report, quiet)
     if args.save_design:
         written = save_designs(res, args.save_design, args.top, args.problem)

@@ -85,7 +85,7 @@ def cmd_study(args) -> int:
 
     from ..study import load_study, run_study
 
-    check_html_report(args.report)
+    check_html_report(args.report, args.plotly)
     study = load_study(args.study)
     if args.workers is not None and args.workers < 0:
         raise InputError(f"--workers must be 0 or more, got {args.workers}")
@@ -117,7 +117,8 @@ def cmd_study(args) -> int:
         from ..study.table import results_table
 
         md = Path(s.files["report"]).read_text(encoding="utf-8") if "report" in s.files else ""
-        write_page(study_page(study, results_table(study, out), md), args.report, plotly=args.plotly)
+        write_page(study_page(study, results_table(study, out), md, interactive=args.plotly != "no"),
+                   args.report, plotly=args.plotly)
         s.files["html report"] = args.report
     for name, path in s.files.items():
         print(f"  {name}: {path}")

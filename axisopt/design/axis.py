@@ -260,14 +260,14 @@ class Axis:
 
 @dataclass(frozen=True)
 class Design:
-    """An axis with one chosen part per slot.  Parts are catalog rows (pandas Series) in SI."""
+    """An axis with one chosen part per slot.  Parts are catalog rows (``parttable.Row``: a dict per part) in SI."""
 
     axis: Axis
     screw: object
     nut: object
     bearing: object
     guide: object
-    nut_preload: float | None = None  # None: the catalog's quoted preload
+    nut_preload: float | None = None  # [N]; None: the catalog's quoted preload
     motor: object = None  # servo motor row, or None (the axis's motor_inertia; drive checks off)
     coupling: object = None  # coupling row, or None (the axis's coupling values)
     reduction: object = None  # reduction row (gearbox or belt stage), or None (the axis's reduction_* values)
@@ -277,13 +277,50 @@ class Design:
 
     @property
     def preload(self) -> float:
+        """The nut preload [N]: ``nut_preload``, else the catalog's (a double nut's stiffness preload, a single
+        nut's least preload)."""
         if self.nut_preload is not None:
             return self.nut_preload
         return float(self.nut["stiffness_preload"]) if self.nut["type"] == "double" \
             else float(self.nut["preload_min"])
 
     def part_ids(self) -> dict:
+        """Slot -> catalog part id of each part the design has."""
         return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
+
+    def part_rows(self) -> list[dict]:
+        """The parts as rows of (part, id, column, value, unit): each catalog value in the unit vendors quote
+        (mm, N/um, N.m, EUR ...), text as it is in the catalog; ``to_frame()`` is these rows as a table."""
+        from ..catalog import SCHEMA
+        from ..units import DISPLAY_UNITS, unit_factor
+
+        tables = {"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides", "motor": "motors",
+                  "coupling": "couplings", "reduction": "reductions"}
+        rows = []
+        for slot in PART_SLOTS:
+            part = getattr(self, slot)
+            if part is None:
+                continue
+            kinds = SCHEMA.get(tables[slot], {})
+            for col, v in part.items():
+                if col in ("id", "_source") or col not in kinds and col not in ("status", "source"):
+                    continue
+                unit = DISPLAY_UNITS.get(kinds.get(col) or "", "")
+                value = v / unit_factor(unit, kinds[col]) if unit and isinstance(v, (int, float)) else v
+                rows.append({"part": slot, "id": str(part["id"]), "column": col, "value": value, "unit": unit})
+        return rows
+
+    def to_frame(self):
+        """pandas DataFrame of the parts, one row per catalog value: ``part``, ``id``, ``column``, ``value``
+        and ``unit`` (the unit vendors quote; the axis's own inputs are in the repr and the design file)."""
+        from ..display import frame
+
+        return frame(self.part_rows(), ("part", "id", "column", "value", "unit"))
+
+    def _repr_html_(self) -> str:
+        from ..display import html_table
+
+        return html_table(self.part_rows(), repr(self), max_rows=200)
 
     def __repr__(self) -> str:  # the parts are catalog rows: a dataclass repr would print them whole
         a = self.axis

@@ -108,8 +108,8 @@ class Evaluation:
     """A design evaluated over the stroke (SI)."""
 
     design: Design
-    x: np.ndarray
-    values: dict
+    x: np.ndarray  # nut positions of the model grid [m] (the stroke starts at design.axis.start_offset)
+    values: dict  # model output name -> value or profile over ``x``, in SI (k_total in N/m, f1 in Hz, ...)
 
     def __getitem__(self, key):
         return self.values[key]

@@ -433,13 +433,42 @@ def categories(name: str, values) -> list | None:
     return [(float(x), names.get(float(x), f"{x:g}")) for x in u]
 
 
+def residual_figures(diag, verdict: str):
+    """Per observation of ``diag``: (observation, matplotlib Figure of its residuals, model - measured, against
+    each recorded factor, before (baseline) and after (with ``verdict``)); a category factor one tick each."""
+    from ..figure import Figure  # outside pyplot: no backend is chosen (a notebook's stays as it was)
+
+    before = _split(diag.obs, diag.baseline.prediction - diag.y)
+    after = _split(diag.obs, diag.final.prediction - diag.y)
+    for o, rb, ra in zip(diag.obs, before, after):
+        facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
+        unit, f = Y_UNIT[o.kind]
+        fig = Figure(figsize=(3.6 * len(facs), 3.2))
+        axes = fig.subplots(1, len(facs), squeeze=False)
+        for ax, (name, v) in zip(axes[0], facs):
+            fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
+            v = np.asarray(v) * fs + fo
+            cats = categories(name, v)
+            if cats is None:
+                ax.plot(v, rb * f, ".", ms=3, alpha=0.6, label="baseline")
+                ax.plot(v, ra * f, ".", ms=3, alpha=0.8, label=f"with {verdict}")
+            else:  # a category per tick, baseline left and extended model right of it, points spread
+                jit = np.random.default_rng(0).uniform(-0.08, 0.08, len(v))
+                pos = np.searchsorted([c for c, _ in cats], v).astype(float)
+                ax.plot(pos - 0.18 + jit, rb * f, ".", ms=3, alpha=0.6, label="baseline")
+                ax.plot(pos + 0.18 + jit, ra * f, ".", ms=3, alpha=0.8, label=f"with {verdict}")
+                ax.set_xticks(range(len(cats)), [lab for _, lab in cats])
+                ax.set_xlim(-0.6, len(cats) - 0.4)
+            ax.axhline(0.0, color="k", lw=0.5)
+            ax.set_xlabel(f"{name} [{fu}]" if fu else name)
+            ax.set_ylabel(f"model - measured [{unit}]")
+        axes[0][0].legend(fontsize=7)
+        tidy_layout(fig)
+        yield o, fig
+
+
 def write_report(diag, outdir) -> Path:
     """Markdown report with residual plots before/after; returns the report path."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     from . import make_output_dir
 
     out = make_output_dir(outdir)
@@ -515,31 +544,7 @@ def write_report(diag, outdir) -> Path:
             md.append(f"- `{name}`: RMS {u['rms_over_noise']:.2g}x the noise floor, no structure along a recorded "
                       "factor")
     md += ["", "## Residual plots", ""]
-    before = _split(diag.obs, diag.baseline.prediction - diag.y)
-    after = _split(diag.obs, diag.final.prediction - diag.y)
-    for k, (o, rb, ra) in enumerate(zip(diag.obs, before, after)):
-        facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
-        unit, f = Y_UNIT[o.kind]
-        fig, axes = plt.subplots(1, len(facs), figsize=(3.6 * len(facs), 3.2), squeeze=False)
-        for ax, (name, v) in zip(axes[0], facs):
-            fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
-            v = np.asarray(v) * fs + fo
-            cats = categories(name, v)
-            if cats is None:
-                ax.plot(v, rb * f, ".", ms=3, alpha=0.6, label="baseline")
-                ax.plot(v, ra * f, ".", ms=3, alpha=0.8, label=f"with {d['verdict']}")
-            else:  # a category per tick, baseline left and extended model right of it, points spread
-                jit = np.random.default_rng(0).uniform(-0.08, 0.08, len(v))
-                pos = np.searchsorted([c for c, _ in cats], v).astype(float)
-                ax.plot(pos - 0.18 + jit, rb * f, ".", ms=3, alpha=0.6, label="baseline")
-                ax.plot(pos + 0.18 + jit, ra * f, ".", ms=3, alpha=0.8, label=f"with {d['verdict']}")
-                ax.set_xticks(range(len(cats)), [lab for _, lab in cats])
-                ax.set_xlim(-0.6, len(cats) - 0.4)
-            ax.axhline(0.0, color="k", lw=0.5)
-            ax.set_xlabel(f"{name} [{fu}]" if fu else name)
-            ax.set_ylabel(f"model - measured [{unit}]")
-        axes[0][0].legend(fontsize=7)
-        tidy_layout(fig)
+    for k, (o, fig) in enumerate(residual_figures(diag, d["verdict"])):
         png = out / f"residuals_{k + 1}.png"
         save_figure(fig, png, dpi=90)
         md += [f"![residuals {Path(o.dataset.source).name}]({png.name})", ""]

@@ -1,49 +1,59 @@
-"""Self-contained HTML reports: one file with the summary first, then sections, figures drawn with plotly
-(its JavaScript inlined once, so the file opens offline and can be mailed on), readable on a phone.
+"""Self-contained HTML reports: one file with the summary first, then sections, readable on a phone.  The
+figures are static SVG by default (matplotlib, :mod:`axisopt.report.static`: the file opens offline, needs no
+plotly and stays well under 1.5 MB); with ``interactive=True`` they are plotly figures (zoom, hover), its
+JavaScript inlined once (offline, about 5 MB) or loaded from the plotly CDN.
 
-:class:`Page` collects blocks (key figures, text, preformatted tables, plotly figures) under headings; the
-``*_page`` builders turn an evaluation, a solve result, a comparison, a study table or a diagnosis into a
-Page.  plotly is an optional dependency (``pip install 'axisopt[html]'``); without it :func:`require_plotly`
-is a one-line error.  Nothing here prints; :func:`write_page` writes atomically."""
+:class:`Page` collects blocks (key figures, text, tables, figures) under headings; the ``*_page`` builders turn
+an evaluation, a solve result, a comparison, a study table or a diagnosis into a Page.  plotly is an optional
+dependency (``pip install 'axisopt[html]'``), needed only for interactive figures; without it
+:func:`require_plotly` is a one-line error.  Tables wrap their text and part ids to fit a 1280 px window;
+on a phone a table wider than the screen scrolls inside its own box (no column is ever hidden).  Nothing
+here prints; :func:`write_page` writes atomically."""
 
 from __future__ import annotations
 
 import html
 import math
+import re
 from dataclasses import dataclass, field
-
-import numpy as np
 
 from ..errors import InputError
 from ..search.result import OPTIMAL
 from ..study.store import OK_STATUSES
 from ..units import N_PER_UM
+from . import interactive as ifig  # plotly itself is imported only when a figure is drawn
 
 _CSS = """
 :root { color-scheme: light; --ink:#1d2330; --muted:#5b6475; --line:#d9dee7; --ok:#1a7f37; --bad:#c62828; }
 * { box-sizing: border-box; }
 body { font: 15px/1.45 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; color: var(--ink);
-       margin: 0 auto; padding: 12px; max-width: 1100px; }
+       margin: 0 auto; padding: 12px; max-width: 1240px; }
 h1 { font-size: 1.35em; margin: .3em 0; } h2 { font-size: 1.1em; margin: 1.4em 0 .4em;
      border-bottom: 1px solid var(--line); padding-bottom: .2em; }
 p.sub { color: var(--muted); margin: 0 0 .8em; }
 nav { font-size: .9em; margin: .4em 0 1em; } nav a { display: inline-block; margin: 0 .9em .2em 0; }
 .cards { display: grid; grid-template-columns: repeat(auto-fill, minmax(150px, 1fr)); gap: 8px; }
 .card { border: 1px solid var(--line); border-radius: 6px; padding: 6px 9px; }
-.card .k { color: var(--muted); font-size: .8em; } .card .v { font-size: 1.15em; font-weight: 600; }
+.card .k { color: var(--muted); font-size: .8em; }
+.card .v { font-size: 1.15em; font-weight: 600; overflow-wrap: anywhere; }
 .card.bad { border-color: var(--bad); } .card.bad .v { color: var(--bad); }
 .card.ok .v { color: var(--ok); }
 pre { overflow-x: auto; font-size: 12px; line-height: 1.3; background: #f6f8fa; padding: 8px; border-radius: 6px; }
-.scroll { overflow-x: auto; }
-table { border-collapse: collapse; font-size: 13px; } th, td { padding: 3px 8px; border-bottom: 1px solid var(--line);
-        text-align: right; white-space: nowrap; } th:first-child, td:first-child { text-align: left; }
+.scroll { overflow-x: auto; max-width: 100%; }
+table { border-collapse: collapse; font-size: 13px; } th, td { padding: 3px 6px; border-bottom: 1px solid var(--line);
+        text-align: right; white-space: normal; overflow-wrap: break-word; vertical-align: top; }
+th { vertical-align: bottom; } td.n { white-space: nowrap; } td.t { text-align: left; }
+span.id { white-space: nowrap; } th:first-child, td:first-child { text-align: left; }
 td.bad { color: var(--bad); font-weight: 600; } td.ok { color: var(--ok); }
 td.m-fail { background: #fde2e1; color: var(--bad); font-weight: 600; } td.m-tight { background: #fff1cc; }
 td.m-fair { background: #eef7e4; } td.m-ample { color: var(--ok); }
 p.key { font-size: .8em; color: var(--muted); }
 td.wrap, th.wrap { white-space: normal; text-align: left; min-width: 12em; }
-.fig { width: 100%; min-height: 320px; }
+.fig { width: 100%; min-height: 320px; } .fig.static { min-height: 0; margin: .4em 0; }
+.fig.static svg { display: block; max-width: 100%; height: auto; }
 footer { color: var(--muted); font-size: .8em; margin-top: 2em; }
+@media (max-width: 600px) { body { padding: 8px; } table { font-size: 12px; } th, td { padding: 3px 4px; }
+  td.wrap, th.wrap { min-width: 7em; } td.n { white-space: normal; } }
 """
 
 
@@ -62,6 +72,7 @@ class Page:
     subtitle: str = ""
     cards: list = field(default_factory=list)
     sections: list = field(default_factory=list)  # (heading, [html fragments])
+    interactive: bool = False  # plotly figures (else static SVG)
 
     def card(self, label: str, value: str, state: str = "") -> None:
         self.cards.append((label, value, state))
@@ -71,22 +82,20 @@ class Page:
         self.sections.append((heading, body))
         return body
 
+    def figure(self, heading: str, interactive, static, height: int = 420) -> None:
+        """A section ``heading`` holding one figure: ``interactive()`` (a plotly figure) on an interactive page,
+        else ``static()`` (a matplotlib Figure) as SVG; each is only built when used."""
+        body = self.section(heading)
+        body.append(figure(interactive(), height) if self.interactive else _svg(static(), heading))
+
     def render(self, plotly_js: str = "inline") -> str:
-        """The page; ``plotly_js`` 'inline' (plotly.js in the file: offline) or 'cdn' (a script tag loading the
-        installed plotly's version from the plotly CDN: a small file that needs the network)."""
-        import plotly
-        from plotly.offline import get_plotlyjs
-
-        if plotly_js == "inline":
-            script, note = f"<script>{get_plotlyjs()}</script>", "inlined, works offline"
-        elif plotly_js == "cdn":
-            from plotly.offline.offline import get_plotlyjs_version
-
-            src = f"https://cdn.plot.ly/plotly-{get_plotlyjs_version()}.min.js"
-            script, note = f'<script src="{src}" charset="utf-8"></script>', f"loaded from {src}"
+        """The page; on an interactive page ``plotly_js`` 'inline' (plotly.js in the file: offline) or 'cdn' (a
+        script tag loading the installed plotly's version from the plotly CDN: a small file that needs the
+        network).  A static page has no script at all."""
+        if not self.interactive:
+            script, credit = "", "static SVG figures (matplotlib); --plotly inline for interactive ones"
         else:
-            raise ValueError(f"plotly_js must be 'inline' or 'cdn', not {plotly_js!r}")
-
+            script, credit = _plotly_script(plotly_js)
         cards = "".join(f'<div class="card {s}"><div class="k">{_e(k)}</div><div class="v">{_e(v)}</div></div>'
                         for k, v, s in self.cards)
         nav = "".join(f'<a href="#s{i}">{_e(h)}</a>' for i, (h, _) in enumerate(self.sections))
@@ -97,8 +106,30 @@ class Page:
                 f"{script}</head><body>"
                 f"<h1>{_e(self.title)}</h1>" + (f'<p class="sub">{_e(self.subtitle)}</p>' if self.subtitle else "")
                 + f'<div class="cards">{cards}</div><nav>{nav}</nav>{body}'
-                f"<footer>axisopt report; figures by plotly {plotly.__version__} ({note})"
-                "</footer></body></html>\n")
+                f"<footer>axisopt report; {_e(credit)}</footer></body></html>\n")
+
+
+def _plotly_script(plotly_js: str) -> tuple[str, str]:
+    """The plotly.js script tag and the footer's credit."""
+    import plotly
+    from plotly.offline import get_plotlyjs
+
+    if plotly_js == "inline":
+        script, note = f"<script>{get_plotlyjs()}</script>", "inlined, works offline"
+    elif plotly_js == "cdn":
+        from plotly.offline.offline import get_plotlyjs_version
+
+        src = f"https://cdn.plot.ly/plotly-{get_plotlyjs_version()}.min.js"
+        script, note = f'<script src="{src}" charset="utf-8"></script>', f"loaded from {src}"
+    else:
+        raise ValueError(f"plotly_js must be 'inline' or 'cdn', not {plotly_js!r}")
+    return script, f"figures by plotly {plotly.__version__} ({note})"
+
+
+def _svg(fig, alt: str) -> str:
+    from .static import svg
+
+    return svg(fig, alt)
 
 
 def _e(text) -> str:
@@ -116,16 +147,40 @@ def para(text: str) -> str:
 def table(head, rows, states=None, classes=None) -> str:
     """A table in its own horizontal scroller (the page never scrolls sideways); ``states`` (optional) gives
     per row the class of its last cell ('ok' / 'bad'), ``classes`` (optional) per row a list of cell classes
-    ('' for none)."""
-    th = "".join(f"<th>{_e(h)}</th>" for h in head)
+    ('' for none).  Text and part ids wrap (a 1280 px window shows every column); a number with its unit
+    stays on one line."""
+    # a heading may break after a dot or underscore (axis.<wbr>moving_<wbr>mass [kg]): long key names fit
+    th = "".join(f"<th>{_breakable(h)}</th>" for h in head)
     trs = []
     for i, r in enumerate(rows):
         cls = classes[i] if classes is not None else [""] * len(r)
-        cells = [f'<td class="{c}">{_e(v)}</td>' if c else f"<td>{_e(v)}</td>" for v, c in zip(r, cls)]
+        cls = [(c + " n").strip() if _NUMBER.match(str(v)) else
+               (c + " t").strip() if isinstance(v, (list, tuple)) or not _NUMBER.match(str(v)) and str(v) != "-"
+               else c for v, c in zip(r, cls)]
+        cells = [f'<td class="{c}">{_html(v)}</td>' if c else f"<td>{_html(v)}</td>" for v, c in zip(r, cls)]
         if states is not None and states[i]:
-            cells[-1] = f'<td class="{states[i]}">{_e(r[-1])}</td>'
+            cells[-1] = f'<td class="{states[i]}">{_html(r[-1])}</td>'
         trs.append("<tr>" + "".join(cells) + "</tr>")
     return f'<div class="scroll"><table><thead><tr>{th}</tr></thead><tbody>{"".join(trs)}</tbody></table></div>'
+
+
+def _html(v) -> str:
+    """A cell's text, escaped; a list (a design's part ids) one unbroken id after the other, wrapping only
+    between ids."""
+    if isinstance(v, (list, tuple)):
+        return " / ".join(f'<span class="id">{_e(x)}</span>' for x in v)
+    return _e(v)
+
+
+_BREAK = re.compile(r"([._])(?=\w)")
+
+
+def _breakable(heading: str) -> str:
+    """A heading escaped, with a break opportunity after each dot and underscore of its name (not of its unit:
+    ``axis.<wbr>moving_<wbr>mass [kg]``, ``drag [N.m]`` whole)."""
+    name, sep, unit = str(heading).partition(" [")
+    return _BREAK.sub(r"\1<wbr>", _e(name)) + _e(sep + unit)
+_NUMBER = re.compile(r"^[-+]?[\d.,]+(e[-+]?\d+)?( ?[^\s\d]{1,6})?$")  # 1,234.5 / 0.97 / 12 N/um / 5 %
 
 
 def figure(fig, height: int = 420) -> str:
@@ -136,64 +191,30 @@ def figure(fig, height: int = 420) -> str:
                                              config={"responsive": True, "displaylogo": False}) + "</div>"
 
 
-def check_report_path(path) -> None:
-    """A --report target must end in .html and plotly must be installed (one-line InputError otherwise)."""
+def check_report_path(path, interactive: bool = False) -> None:
+    """A --report target must end in .html, and plotly must be installed for interactive figures (one-line
+    InputError otherwise)."""
     if not str(path).lower().endswith((".html", ".htm")):
         raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
     from ..fileio import check_output_path
 
     check_output_path(path, what="HTML report", where="--report")
-    require_plotly()
+    if interactive:
+        require_plotly()
 
 
-def write_page(page: Page, path, plotly: str = "inline") -> None:
+PLOTLY_CHOICES = ("no", "inline", "cdn")  # --plotly: static SVG figures (default), plotly.js inlined or linked
+
+
+def write_page(page: Page, path, plotly: str = "no") -> None:
+    """Write ``page`` to ``path``; ``plotly`` as :meth:`Page.render` takes it ('no' on a static page)."""
     from ..fileio import write_text_atomic
 
-    check_report_path(path)
+    check_report_path(path, page.interactive)
     write_text_atomic(str(path), page.render(plotly), what="HTML report")
 
 
 # ------------------------------------------------------------------------------------------- figures
-def profiles_figure(evaluations, labels, limits=None):
-    """Axial stiffness and first natural frequency over the stroke, one line per evaluation."""
-    from plotly.subplots import make_subplots
-
-    fig = make_subplots(rows=1, cols=2, subplot_titles=("axial stiffness [N/um]", "1st natural frequency [Hz]"))
-    for i, (ev, lab) in enumerate(zip(evaluations, labels)):
-        s = (ev.x - ev.design.axis.start_offset) * 1e3
-        color = _COLORS[i % len(_COLORS)]
-        fig.add_scatter(x=s, y=np.asarray(ev["k_total"]) / N_PER_UM, name=lab, line=dict(color=color),
-                        legendgroup=lab, row=1, col=1,
-                        hovertemplate="%{x:.0f} mm: %{y:.1f} N/um<extra>" + _e(lab) + "</extra>")
-        fig.add_scatter(x=s, y=np.asarray(ev["f1"]), name=lab, line=dict(color=color), legendgroup=lab,
-                        showlegend=False, row=1, col=2,
-                        hovertemplate="%{x:.0f} mm: %{y:.1f} Hz<extra>" + _e(lab) + "</extra>")
-    for key, col, scale, unit in (("min_stiffness", 1, N_PER_UM, "N/um"), ("min_frequency", 2, 1.0, "Hz")):
-        if limits and limits.get(key) is not None:
-            fig.add_hline(y=limits[key] / scale, line=dict(dash="dash", color="#c62828"), row=1, col=col,
-                          annotation_text=f"limit {limits[key] / scale:g} {unit}")
-    fig.update_xaxes(title_text="nut position from stroke start [mm]")
-    return fig
-
-
-_COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
-
-
-def chain_figure(ev):
-    """The axial stiffness chain at the softest point: compliance per component [um/kN]."""
-    import plotly.graph_objects as go
-
-    comps = {k: v for k, v in ev.components().items() if math.isfinite(v) and v > 0}
-    names = list(comps)
-    c = [1e9 / comps[n] for n in names]
-    fig = go.Figure(go.Bar(x=c, y=names, orientation="h", marker_color=["#c62828" if n == ev.weakest else "#1f77b4"
-                                                                         for n in names],
-                           hovertemplate="%{y}: %{x:.2f} um/kN<extra></extra>"))
-    fig.update_layout(title="compliance at the softest point [um/kN] (weakest link in red)",
-                      xaxis_title="um/kN", yaxis=dict(autorange="reversed"))
-    return fig
-
-
 # ------------------------------------------------------------------------------------------- pages
 def evaluation_cards(page: Page, ev) -> None:
     from .evaluation import check_rows
@@ -213,19 +234,30 @@ def evaluation_cards(page: Page, ev) -> None:
 MARGIN_CLASSES = ((1.0, "m-fail"), (1.1, "m-tight"), (1.5, "m-fair"))  # below each bound its class; above: ample
 
 
-def margin_class(m) -> str:
+def margin_class(m, passed: bool | None = None) -> str:
     """How close a margin (available / needed) is to failing: m-fail < 1 <= m-tight < 1.1 <= m-fair < 1.5 <=
-    m-ample."""
+    m-ample.  A check that passes (``passed``: a margin the solver put on its limit, 0.9999999 printed as 1.00)
+    is tight, never coloured as failing."""
     if m is None or not math.isfinite(m):
         return ""
     for bound, cls in MARGIN_CLASSES:
         if m < bound:
-            return cls
+            return "m-tight" if cls == "m-fail" and passed else cls
     return "m-ample"
 
 
 MARGIN_KEY = ('<p class="key">margin = available / needed: <span class="m">below 1 fails (red), 1-1.1 tight '
               '(amber), 1.1-1.5 fair (pale green), from 1.5 ample (green)</span></p>')
+
+
+def parts_table(design) -> str:
+    """The parts list to order (:func:`axisopt.report.partslist.parts_list`)."""
+    from .partslist import parts_list
+
+    rows = parts_list(design)
+    return table(["part", "id", "vendor", "quantity", "order"],
+                 [[r["part"], r["id"], r["vendor"], str(r["quantity"]), r["order"] or "-"] for r in rows],
+                 classes=[["", "", "", "", "wrap"]] * len(rows))
 
 
 def checks_table(ev) -> str:
@@ -239,104 +271,52 @@ def checks_table(ev) -> str:
                 else ("n/a" if r["available"] is None else fmt_value(r["available"]) + u))
         body.append([r["label"], have, (fmt_value(r["needed"]) + u) if r["needed"] else "none",
                      "n/a" if r["margin"] is None else f"{r['margin']:.2f}", "pass" if r["pass"] else "FAIL"])
-        classes.append(["wrap", "", "", margin_class(r["margin"]), "ok" if r["pass"] else "bad"])
+        classes.append(["wrap", "", "", margin_class(r["margin"], r["pass"]), "ok" if r["pass"] else "bad"])
     return table(head, body, classes=classes) + MARGIN_KEY
 
 
-def drive_figure(ev):
-    """The duty cycle on the motor's torque-speed plane (plotly twin of report.plots' panel), or None."""
-    import plotly.graph_objects as go
-
-    from .plots import duty_points
-
-    pts = duty_points(ev)
-    if pts is None:
-        return None
-    fig = go.Figure()
-    rms = max(pts["rms_torque_Nm"], pts["mean_thrust_torque_Nm"])
-    nr, nm = pts["rated_speed_rpm"], pts["max_speed_rpm"]
-    how = "corner estimated" if pts["zone_estimated"] else "vendor corner points"
-    fig.add_scatter(x=pts["zone_speed_rpm"], y=pts["zone_torque_Nm"], mode="lines", line=dict(dash="dash"),
-                    name=f"{pts['motor']} peak zone ({how})")
-    fig.add_scatter(x=[0, nr], y=[pts["rated_torque_Nm"]] * 2, mode="lines", line=dict(width=4),
-                    opacity=0.5, name=f"rated {pts['rated_torque_Nm']:.3g} N.m to {nr:.0f} rpm")
-    fig.add_scatter(x=[0, nm], y=[pts["rms_limit_Nm"]] * 2, mode="lines", line=dict(dash="dot"),
-                    name=f"RMS limit {pts['rms_limit_Nm']:.3g} N.m")
-    fig.add_scatter(x=[nm, nm], y=[0, pts["zone_torque_Nm"][-1]], mode="lines", line=dict(dash="dashdot"),
-                    name=f"max speed {nm:.0f} rpm")
-    fig.add_scatter(x=pts["speed_rpm"], y=np.abs(pts["torque_Nm"]), mode="lines+markers",
-                    name="duty cycle |T| by phase")
-    fig.add_scatter(x=[0.0], y=[pts["thrust_torque_Nm"]], mode="markers", marker=dict(symbol="triangle-up", size=12),
-                    name=f"steady thrust at feed {pts['thrust_torque_Nm']:.1f} N.m")
-    fig.add_scatter(x=[pts["mean_speed_rpm"]], y=[rms], mode="markers", marker=dict(symbol="square-open", size=11),
-                    name=f"RMS checked {rms:.2f} N.m")
-    fig.update_layout(title="duty cycle against the motor limits", xaxis_title="motor speed [rpm]",
-                      yaxis_title="motor torque magnitude [N.m]")
-    return fig
-
-
-def frf_figure(ev):
-    """Table compliance over frequency at stroke start, middle and end: motor held (the headline first
-    frequency's model), motor free and with the tuned servo."""
-    from plotly.subplots import make_subplots
-
-    from ..model.frf import frf
-    from .methods import closed_loop_frf
-
-    free = frf(ev)
-    f = np.asarray(free["frequency_Hz"], float)
-    held = frf(ev, f, motor_held=True)
-    closed = closed_loop_frf(ev, f)
-    fig = make_subplots(rows=2, cols=1, shared_xaxes=True, subplot_titles=("compliance [um/N]", "phase [deg]"))
-    sets = ((held, "solid", "motor held"), (free, "dash", "motor free"), (closed, "dot", "servo"))
-    for j, q0 in enumerate(free["positions"]):
-        color = _COLORS[j % len(_COLORS)]
-        for res, dash, what in sets:
-            q = res["positions"][j]
-            name = f"{q0['position_mm']:.0f} mm, {what}"
-            fig.add_scatter(x=f, y=q["magnitude_um_per_N"], mode="lines", line=dict(color=color, dash=dash),
-                            name=name, legendgroup=name, row=1, col=1)
-            fig.add_scatter(x=f, y=q["phase_deg"], mode="lines", line=dict(color=color, dash=dash), name=name,
-                            legendgroup=name, showlegend=False, row=2, col=1)
-    fig.update_xaxes(type="log", title_text="frequency [Hz]", row=2, col=1)
-    fig.update_xaxes(type="log", row=1, col=1)
-    fig.update_yaxes(type="log", row=1, col=1)
-    return fig
-
-
-def evaluation_page(ev, title: str | None = None) -> Page:
+def evaluation_page(ev, title: str | None = None, interactive: bool = False) -> Page:
+    from . import static
     from .evaluation import evaluation_table
+    from .plots import plot_profiles
 
     d = ev.design
     page = Page(title or f"Axis evaluation: {d.name}",
                 f"{d.axis.mounting}, stroke {d.axis.stroke * 1e3:.0f} mm; parts "
-                + ", ".join(f"{k} {v}" for k, v in d.part_ids().items()))
+                + ", ".join(f"{k} {v}" for k, v in d.part_ids().items()), interactive=interactive)
     evaluation_cards(page, ev)
-    page.section("Stiffness and frequency over the stroke").append(figure(profiles_figure([ev], [d.name])))
-    page.section("Stiffness chain").append(figure(chain_figure(ev), 300))
-    drive = drive_figure(ev)
-    if drive is not None:
-        page.section("Drive: duty cycle against the motor").append(figure(drive, 460))
-    page.section("Dynamic compliance of the table (FRF)").append(figure(frf_figure(ev), 560))
+    drive = d.motor is not None
+    # the static profile figure carries the duty cycle against the motor limits in its right-hand panel
+    page.figure("Stiffness and frequency over the stroke" + ("; drive against the motor" if drive and
+                                                              not interactive else ""),
+                lambda: ifig.profiles_figure([ev], [d.name]), lambda: plot_profiles([ev]))
+    page.figure("Stiffness chain", lambda: ifig.chain_figure(ev), lambda: static.chain_figure(ev), 300)
+    if drive and interactive:
+        page.figure("Drive: duty cycle against the motor", lambda: ifig.drive_figure(ev), None, 460)
+    page.figure("Dynamic compliance of the table (FRF)", lambda: ifig.frf_figure(ev), lambda: static.frf_figure(ev),
+                560)
     page.section("Checks").append(checks_table(ev))
+    page.section("Parts to order").append(parts_table(d))
     page.section("Full evaluation (as printed)").append(pre(evaluation_table(ev)))
     return page
 
 
-def solve_page(res, problem, text: str) -> Page:
+def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
     """A solve: status and certificate first, the best design's profile (with the runners-up) or the Pareto
     front as a scatter matrix, the checks of the best design, and the printed result."""
     from ..model import evaluate
-    from .plots import distinct_labels
+    from . import static
+    from .plots import distinct_labels, plot_profiles
+    from .solve import plot_pareto
 
-    page = Page(f"Sizing: {res.problem}", f"{res.objective_label}; method {res.method}")
+    page = Page(f"Sizing: {res.problem}", f"{res.objective_label}; method {res.method}", interactive=interactive)
     page.card("status", res.status, "ok" if res.status == OPTIMAL else "bad")
     page.card("proven", "yes" if res.certificate.proven else "no", "ok" if res.certificate.proven else "")
     page.card("combinations", f"{res.certificate.combinations:,}")
     page.card("time", f"{res.time:.2f} s")
     if res.pareto is not None:
         page.card("Pareto points", str(len(res.pareto.points)))
-        page.section("Pareto front").append(figure(pareto_figure(res.pareto), 560))
+        page.figure("Pareto front", lambda: ifig.pareto_figure(res.pareto), lambda: plot_pareto(res.pareto), 560)
         page.section(f"Every point of the front ({len(res.pareto.points)})").append(pareto_table(res.pareto))
     elif res.best is not None and res.best.design is not None:
         page.card("objective", f"{res.best.objective:,.3f} {res.objective_unit}")
@@ -345,32 +325,23 @@ def solve_page(res, problem, text: str) -> Page:
         labels = distinct_labels(parts, [f"#{c.rank}" for c in cands]) if len(cands) > 1 else ["best"]
         evs = [evaluate(c.design) for c in cands]
         limits = {k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")}
-        page.section("Best designs over the stroke").append(figure(profiles_figure(evs, labels, limits)))
+        page.figure("Best designs over the stroke" + ("; drive against the motor" if evs[0].design.motor is not None
+                                                       and not interactive else ""),
+                    lambda: ifig.profiles_figure(evs, labels, limits), lambda: plot_profiles(evs, labels=labels,
+                                                                                        limits=limits))
+        # the winning design as the evaluate report shows it: its stiffness chain, drive and FRF
+        best = evs[0]
+        page.figure("Stiffness chain of the best design", lambda: ifig.chain_figure(best),
+                    lambda: static.chain_figure(best), 300)
+        if interactive and best.design.motor is not None:
+            page.figure("Drive of the best design: duty cycle against the motor", lambda: ifig.drive_figure(best), None,
+                        460)
+        page.figure("Dynamic compliance of the best design's table (FRF)", lambda: ifig.frf_figure(best),
+                    lambda: static.frf_figure(best), 560)
         page.section("Checks of the best design").append(checks_table(evs[0]))
+        page.section("Parts of the best design to order").append(parts_table(evs[0].design))
     page.section("Result (as printed)").append(pre(text))
     return page
-
-
-def pareto_figure(front):
-    """Scatter matrix of the chosen objectives: sampled feasible designs in grey, the front in colour."""
-    import plotly.graph_objects as go
-
-    from ..search.pareto import FIELD
-
-    dims_front = [dict(label=f"{k.replace('_', ' ')} [{u}]" if u else k,
-                       values=[float(getattr(p, FIELD[k])) for p in front.points])
-                  for k, u in zip(front.keys, front.units)]
-    fig = go.Figure()
-    if front.cloud is not None and len(front.cloud):
-        cloud = np.asarray(front.cloud)
-        fig.add_trace(go.Splom(dimensions=[dict(label=d["label"], values=cloud[:, i]) for i, d in
-                                           enumerate(dims_front)], name="feasible designs (sample)",
-                               marker=dict(size=3, color="#b0b7c3", opacity=0.4), diagonal_visible=False))
-    fig.add_trace(go.Splom(dimensions=dims_front, name="Pareto front", diagonal_visible=False,
-                           marker=dict(size=7, color="#d62728", line=dict(width=0.5, color="white")),
-                           text=[f"{p.screw} / {p.nut} / {p.bearing} / {p.guide}" for p in front.points]))
-    fig.update_layout(title="objectives pairwise (front in red, hover for parts)")
-    return fig
 
 
 def pareto_table(front) -> str:
@@ -378,21 +349,19 @@ def pareto_table(front) -> str:
     from ..search.pareto import FIELD
 
     head = ["#"] + [f"{k.replace('_', ' ')} [{u}]" if u else k for k, u in zip(front.keys, front.units)] + \
-        ["mounting", "screw", "nut", "bearing", "guide", "motor", "preload [N]"]
+        ["mounting", "parts: screw / nut / bearing / guide / motor ...", "preload [N]"]
     rows = []
     for i, pt in enumerate(front.points, start=1):
-        parts = pt.parts() if hasattr(pt, "parts") else {}
         rows.append([str(i)] + [f"{float(getattr(pt, FIELD[k])):,.4g}" for k in front.keys]
-                    + [pt.mounting, pt.screw, pt.nut, pt.bearing, pt.guide, parts.get("motor") or "-",
-                       f"{pt.nut_preload:,.0f}"])
+                    + [pt.mounting, list(pt.parts().values()), f"{pt.nut_preload:,.0f}"])
     return table(head, rows)
 
 
-def compare_page(items, text: str) -> Page:
+def compare_page(items, text: str, interactive: bool = False) -> Page:
     from .evaluation import check_rows
-    from .plots import distinct_labels
+    from .plots import distinct_labels, plot_profiles
 
-    page = Page("Comparison", ", ".join(c.label for c in items))
+    page = Page("Comparison", ", ".join(c.label for c in items), interactive=interactive)
     evs = [c.evaluation for c in items if c.evaluation is not None]
     head = ["design", "min stiffness [N/um]", "min 1st frequency [Hz]", "drag [N.m]", "total mass [kg]",
             "cost [EUR]", "motor", "least margin", "failed checks"]
@@ -414,53 +383,49 @@ def compare_page(items, text: str) -> Page:
                      f"{float(e['drag_torque']):.3f}", f"{float(e['total_mass']):,.1f}", f"{float(e['cost']):,.0f}",
                      str(e.design.motor["id"]) if e.design.motor is not None else "no drive",
                      "n/a" if least is None else f"{least:.2f}", ", ".join(failed) or "none"])
-        classes.append(["wrap", "", "", "", "", "", "", margin_class(least), "bad wrap" if failed else "ok"])
+        classes.append(["wrap"] + [""] * 6 + [margin_class(least, not failed), "bad wrap" if failed else "ok"])
     page.section("Side by side").append(table(head, rows, classes=classes) + MARGIN_KEY)
     if evs:
         labels = [c.label for c in items if c.evaluation is not None]
         parts = [{"mounting": e.design.axis.mounting, **e.design.part_ids()} for e in evs]
         if len(set(labels)) < len(labels):
             labels = distinct_labels(parts)
-        page.section("Stiffness and frequency over the stroke").append(figure(profiles_figure(evs, labels)))
+        page.figure("Stiffness and frequency over the stroke", lambda: ifig.profiles_figure(evs, labels),
+                    lambda: plot_profiles(evs, labels=labels))
     page.section("Side by side (as printed)").append(pre(text))
     return page
 
 
-def study_page(study, df, text: str) -> Page:
+def study_page(study, df, text: str, interactive: bool = False) -> Page:
     """A study: counts by status, the objective against each numeric swept input, the results table."""
     import pandas as pd
-    import plotly.graph_objects as go
 
     from ..study.table import input_columns
+    from .static import objective_figure
 
-    page = Page(f"Trade study: {study.name}", f"{len(df)} cases")
+    page = Page(f"Trade study: {study.name}", f"{len(df)} cases", interactive=interactive)
     for status, n in df["status"].value_counts().items():
         page.card(str(status), str(int(n)), "ok" if status == OPTIMAL else "bad")
     unit = df["objective_unit"].dropna().iloc[0] if df["objective_unit"].notna().any() else ""
     for key, (name, _) in input_columns(study).items():
         if name not in df or not pd.api.types.is_numeric_dtype(df[name]):
             continue
-        fig = go.Figure()
         ok = df["status"] == OPTIMAL
-        fig.add_scatter(x=df.loc[ok, name], y=df.loc[ok, "objective"], mode="markers", name="optimal",
-                        text=df.loc[ok, "case_id"] + ": " + df.loc[ok, "screw"].astype(str) + " / "
-                        + df.loc[ok, "nut"].astype(str), hovertemplate="%{text}<br>%{x}: %{y:.4g}<extra></extra>")
-        if (~ok).any():  # no objective to draw: the inputs of the cases without a design are shaded
-            for x in sorted(set(df.loc[~ok, name].dropna())):
-                fig.add_vline(x=x, line=dict(color="#c62828", width=6), opacity=0.2)
-            fig.add_scatter(x=[None], y=[None], mode="lines", line=dict(color="#c62828", width=6), opacity=0.3,
-                            name=f"no design here ({int((~ok).sum())} cases; reasons in the table)")
-        fig.update_layout(title=f"objective against {key}", xaxis_title=name, yaxis_title=f"objective [{unit}]")
-        page.section(f"Objective against {key}").append(figure(fig, 380))
+        page.figure(f"Objective against {key}", lambda n=name, k=key, o=ok: ifig.objective_figure(df, n, k, unit, o),
+                    lambda n=name, k=key, o=ok: objective_figure(df, n, k, unit, o), 380)
+    slots = [c for c in ("screw", "nut", "bearing", "guide", "motor", "coupling") if c in df]
     shown = [c for c in ("case_id", *[n for n, _ in input_columns(study).values()], "status", "reason", "objective",
-                         "screw", "nut", "bearing", "guide", "motor", "min_stiffness [N/um]", "min_frequency [Hz]",
-                         "cost [EUR]") if c in df]
-    sub = df[shown].head(200)
-    rows = [[_cell(v) for v in r] for r in sub.itertuples(index=False)]
+                         "parts", "min_stiffness [N/um]", "min_frequency [Hz]", "cost [EUR]") if c in df or
+             c == "parts" and slots]
+    sub = df.head(200)
+    # the parts in one column (each id unbroken, wrapping between ids): a 1280 px window shows every column
+    rows = [[[str(x) for x in r[slots] if isinstance(x, str) and x] or "-" if c == "parts" else _cell(r[c])
+             for c in shown] for _, r in sub.iterrows()]
     classes = [["wrap" if c == "reason" else ("bad" if c == "status" and st not in OK_STATUSES else "")
                 for c in shown] for st in sub["status"]]
+    head = [f"parts: {' / '.join(slots)}" if c == "parts" else c for c in shown]
     page.section("Cases" + (" (first 200; all in results.csv)" if len(df) > 200 else "")).append(
-        table(shown, rows, classes=classes))
+        table(head, rows, classes=classes))
     summary = "\n".join(ln for ln in text.splitlines() if not ln.lstrip().startswith("!["))  # no image links
     page.section("Summary (as written to report.md, figures above)").append(pre(summary))
     return page
@@ -472,35 +437,25 @@ def _cell(v) -> str:
     return str(v)
 
 
-def diagnose_page(diag, text: str) -> Page:
-    """A diagnosis: the verdict first, then residuals against each factor before and after, and the text."""
-    from plotly.subplots import make_subplots
-
+def diagnose_page(diag, text: str, interactive: bool = False) -> Page:
+    """A diagnosis: the verdict first (an effect named and confirmed on held-out data is the diagnosis's
+    success: green, never red), then residuals against each factor before and after, and the text."""
     from ..identify.diagnose import split_by_observation as _split
-    from .diagnosis import FACTOR_DISPLAY, Y_UNIT, diagnosis_dict
+    from .diagnosis import diagnosis_dict, residual_figures
 
     d = diagnosis_dict(diag)
-    page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why")
-    page.card("verdict", d["verdict"], "bad" if d["accepted"] else "ok")
+    page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why", interactive=interactive)
+    page.card("verdict", d["verdict"], "ok" if d["accepted"] else "")
     page.card("held-out gain", f"{d['gain_percent']:.0f} %")
     for a in d["accepted"]:
         page.card(a["effect"], "; ".join(p["text"] for p in a["parameters"]) or a["finding"])
     before = _split(diag.obs, diag.baseline.prediction - diag.y)
     after = _split(diag.obs, diag.final.prediction - diag.y)
+    static = residual_figures(diag, d["verdict"]) if not interactive else None
     for o, rb, ra in zip(diag.obs, before, after):
-        facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
-        unit, f = Y_UNIT[o.kind]
-        fig = make_subplots(rows=1, cols=len(facs), shared_yaxes=True)
-        for j, (name, v) in enumerate(facs, start=1):
-            fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
-            x = np.asarray(v) * fs + fo
-            fig.add_scatter(x=x, y=rb * f, mode="markers", name="baseline", marker=dict(size=4, color="#9aa3b2"),
-                            showlegend=j == 1, row=1, col=j)
-            fig.add_scatter(x=x, y=ra * f, mode="markers", name=f"with {d['verdict']}", showlegend=j == 1,
-                            marker=dict(size=4, color="#d62728"), row=1, col=j)
-            fig.update_xaxes(title_text=f"{name} [{fu}]" if fu else name, row=1, col=j)
-        fig.update_yaxes(title_text=f"model - measured [{unit}]", row=1, col=1)
         name = str(o.dataset.source).replace("\\", "/").rsplit("/", 1)[-1]
-        page.section(f"Residuals: {name}").append(figure(fig, 360))
+        page.figure(f"Residuals: {name}", lambda o=o, rb=rb, ra=ra: ifig.residuals_figure(o, rb, ra, d["verdict"]),
+                    lambda: next(static)[1], 360)
     page.section("Diagnosis (as printed)").append(pre(text))
     return page
+

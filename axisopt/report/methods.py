@@ -104,7 +104,7 @@ def plot_frf(result: dict, path: str | None = None, held: dict | None = None, cl
     as vertical lines in the same colour.  With ``held`` and ``closed``: the motor-held curve (solid, its
     first mode the headline first frequency), the motor-free one (dashed) and the closed loop with the tuned
     servo (dotted), each labelled.  Returns the matplotlib Figure; written to ``path`` only when given."""
-    from matplotlib.figure import Figure
+    from ..figure import Figure
 
     f = np.asarray(result["frequency_Hz"], dtype=float)
     fig = Figure(figsize=(7, 6.5 if held is not None else 6))

@@ -117,10 +117,11 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
     peak torque and speed limits (the limits the checks use: the intermittent zone falling from its corner
     speed to max speed), each motor's limits drawn once, a design without a motor named as such.  ``limits``
     (optional) maps 'min_stiffness' [N/m] and 'min_frequency' [Hz] to the problem's limits, drawn as
-    dashed lines.  Returns the matplotlib Figure (not registered with pyplot); written to ``path`` only when
-    one is given."""
+    dashed lines.  Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image);
+    written to ``path`` only when one is given."""
     import matplotlib
-    from matplotlib.figure import Figure
+
+    from ..figure import Figure
 
     pts = [duty_points(ev) for ev in evaluations]
     drive = any(p is not None for p in pts)

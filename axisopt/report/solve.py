@@ -259,9 +259,9 @@ def plot_pareto(front, path: str | None = None):
     """Scatter matrix of every objective pair: the non-dominated designs in colour (by the first
     objective), a sample of the feasible designs they dominate in grey, each axis labelled with its unit
     and whether it is maximised or minimised; the diagonal shows each objective's spread over the front.
-    Returns the matplotlib Figure (not registered with pyplot); written to ``path`` only when given."""
-    from matplotlib.figure import Figure
-
+    Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image); written to
+    ``path`` only when given."""
+    from ..figure import Figure
     from ..search.pareto import FIELD
 
     keys, d = front.keys, len(front.keys)
@@ -281,7 +281,7 @@ def plot_pareto(front, path: str | None = None):
                 ax.set_yticks([])
             else:
                 if len(C):
-                    ax.scatter(C[:, j], C[:, i], s=4, color="0.75", alpha=0.5, linewidths=0,
+                    ax.scatter(C[:, j], C[:, i], s=4, color="0.75", alpha=0.5, linewidths=0, rasterized=True,
                                label="feasible (sample)" if (i, j) == (1, 0) else None)
                 sc = ax.scatter(F[:, j], F[:, i], c=F[:, 0], s=14, cmap="viridis",
                                 label="Pareto front" if (i, j) == (1, 0) else None)

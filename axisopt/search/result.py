@@ -88,10 +88,10 @@ CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"), ("min_stiffness", "min_
 class Candidate:
     """One design: parts, continuous values and its evaluation summary (display units)."""
 
-    rank: int
+    rank: int  # 1: the best
     combination: int  # combination number in the search space
-    mounting: str
-    screw: str
+    mounting: str  # 'fixed-free' | 'fixed-supported' | 'fixed-fixed'
+    screw: str  # catalog part ids
     nut: str
     bearing: str
     guide: str
@@ -153,6 +153,21 @@ class Candidate:
         r.update({f"miss {k} [%]": 100.0 * v for k, v in self.misses.items()})
         return r
 
+    def to_frame(self):
+        """pandas DataFrame of this design: one row as :meth:`row` (units in the column names)."""
+        return frame([self.row()])
+
+    def __repr__(self) -> str:
+        misses = ", ".join(f"{k} by {fmt(100 * v)} %" for k, v in self.misses.items())
+        return one_line("Candidate", f"rank {self.rank}, {self.mounting} {' / '.join(self.parts().values())}", {
+            "objective": fmt(self.objective), "preload": fmt(self.nut_preload, "N"),
+            "min stiffness": fmt(self.min_stiffness, "N/um"), "1st frequency": fmt(self.min_frequency, "Hz"),
+            "cost": fmt(self.cost, "EUR"), "moving mass": fmt(self.moving_mass, "kg"),
+            "drag": fmt(self.drag_torque, "N.m"), "nut life": fmt(self.life_h, "h"), "misses": misses})
+
+    def _repr_html_(self) -> str:
+        return html_table([self.row()], repr(self))
+
 
 @dataclass
 class Certificate:
@@ -196,25 +211,76 @@ class Certificate:
 class Binding:
     """A limit at the optimum and what relaxing it would buy."""
 
-    limit: str
-    unit: str
-    value: float  # limit value (display units)
-    at_optimum: float  # the design's value (display units)
-    relaxed_to: float | None = None
-    objective_gain: float | None = None  # objective change when relaxed
-    binding: bool = False
+    limit: str  # the problem's limit key, e.g. 'min_frequency'
+    unit: str  # the limit's display unit (N/um, Hz, EUR, ...)
+    value: float  # limit value, in ``unit``
+    at_optimum: float  # the best design's value, in ``unit``
+    relaxed_to: float | None = None  # the limit relaxed by 10 %, in ``unit``
+    objective_gain: float | None = None  # objective change when relaxed, in SolveResult.objective_unit
+    binding: bool = False  # relaxing it improves the objective
 
     def to_dict(self) -> dict:
         return {k: _clean(v) for k, v in asdict(self).items()}
 
+    def row(self, objective_unit: str = "") -> dict:
+        """One table row, the units in the column names (``objective_unit``: the objective's unit)."""
+        u = f" [{self.unit}]" if self.unit else ""
+        gain = f"objective gain [{objective_unit}]" if objective_unit not in ("", "-") else "objective gain"
+        return {"limit": self.limit, f"value{u}": self.value, f"at optimum{u}": self.at_optimum,
+                f"relaxed to{u}": self.relaxed_to, gain: self.objective_gain, "binding": self.binding}
+
+    def to_frame(self):
+        """pandas DataFrame of this limit: one row as :meth:`row` (units in the column names)."""
+        return frame([self.row()])
+
+    def __repr__(self) -> str:
+        u = self.unit if self.unit not in ("", "-") else ""
+        gain = "" if self.objective_gain is None else \
+            f"relaxed to {fmt(self.relaxed_to, u)} the objective changes by {self.objective_gain:+.4g}"
+        return one_line("Binding", f"{self.limit} {fmt(self.value, u)}", {
+            "at optimum": fmt(self.at_optimum, u), "": "binding" if self.binding else "not binding",
+            "gain": gain})
+
+
+class Bindings(list):
+    """``SolveResult.binding``: a list of :class:`Binding` that also gives a table (``to_frame()``, units in the
+    column names, the objective gain in the objective's unit) and an HTML table in Jupyter."""
+
+    def __init__(self, items=(), objective_unit: str = ""):
+        super().__init__(items)
+        self.objective_unit = objective_unit
+
+    def to_frame(self):
+        """pandas DataFrame, one row per limit: its name and ``unit`` (the limits differ in unit), the limit, the
+        best design's value and the relaxed limit in that unit, the objective gain in the objective's unit."""
+        cols = ("limit", "unit", "value", "at optimum", "relaxed to", self._gain(), "binding")
+        return frame([dict(zip(cols, (b.limit, b.unit, b.value, b.at_optimum, b.relaxed_to, b.objective_gain,
+                                      b.binding))) for b in self], cols)
+
+    def _gain(self) -> str:
+        return f"objective gain [{self.objective_unit}]" if self.objective_unit not in ("", "-") else \
+            "objective gain"
+
+    def __repr__(self) -> str:
+        binding = [b.limit for b in self if b.binding]
+        return one_line("Bindings", f"{len(self)} limits", {"binding": ", ".join(binding) or "none"})
+
+    def _repr_html_(self) -> str:
+        rows = [{"limit": b.limit, "unit": b.unit, "value": b.value, "at optimum": b.at_optimum,
+                 "relaxed to": b.relaxed_to, self._gain(): b.objective_gain, "binding": b.binding} for b in self]
+        return html_table(rows, repr(self))
+
 
 @dataclass(repr=False)
 class ParetoFront:
+    """The non-dominated designs of a multi-objective problem (``objective.mode: pareto``): a sequence of
+    :class:`Candidate`, each objective's key, sense and unit."""
+
     keys: tuple  # objective keys, e.g. ('stiffness', 'cost')
     senses: tuple  # 'max' | 'min' per key
-    units: tuple
+    units: tuple  # display unit per key (N/um, EUR, ...)
     points: list  # list[Candidate], sorted by the first key
-    feasible: int = 0
+    feasible: int = 0  # feasible designs the front was drawn from
     # objective values (columns in ``keys`` order, display units) of up to 4000 feasible designs drawn at
     # random with a fixed seed, for plotting the front against what it dominates; not in the JSON
     cloud: object = None
@@ -252,11 +318,11 @@ class DesignChange:
     its unit, the value and the proposed one in that unit, and what it means where the key does not say it
     (``note``: 'admits a gearbox or belt ...')."""
 
-    key: str
-    unit: str
-    value: float
-    to: float
-    note: str = ""
+    key: str  # the axis input, e.g. 'axis.max_speed'
+    unit: str  # its display unit (m/min, kg, ...)
+    value: float  # the input now, in ``unit``
+    to: float  # the proposed value, in ``unit``
+    note: str = ""  # what the change means where the key does not say it
 
     def to_dict(self) -> dict:
         return {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to),
@@ -328,16 +394,16 @@ class SolveResult:
     """
 
     status: str
-    method: str
-    problem: str
-    objective_label: str
-    objective_unit: str
-    best: Candidate | None
-    runners_up: list
+    method: str  # 'default' | 'exhaustive' | 'bonmin' | 'scip'
+    problem: str  # the problem's name
+    objective_label: str  # e.g. 'minimum axial stiffness'
+    objective_unit: str  # the objective's display unit (N/um, Hz, EUR ...; '-' for none)
+    best: Candidate | None  # the best design (None: infeasible or failed)
+    runners_up: list  # list[Candidate], next best designs in rank order
     certificate: Certificate
     time: float  # wall clock [s]
     message: str = ""
-    binding: list = field(default_factory=list)
+    binding: list = field(default_factory=list)  # Bindings: each limit at the optimum, relaxed by 10 %
     infeasibility: Infeasibility | None = None
     pareto: ParetoFront | None = None
     solver_status: str = ""  # raw status of the underlying solver (Bonmin / IPOPT)
@@ -349,8 +415,14 @@ class SolveResult:
     # JSON when empty
     left_out: tuple = ()
 
+    def __setattr__(self, name, value):
+        if name == "binding":  # a list of Binding, assigned here or later: a Bindings (to_frame, units)
+            value = Bindings(value, getattr(self, "objective_unit", ""))
+        object.__setattr__(self, name, value)
+
     @property
     def objective(self) -> float:
+        """The best design's objective [objective_unit] (NaN without one)."""
         return self.best.objective if self.best else float("nan")
 
     def to_dict(self) -> dict:

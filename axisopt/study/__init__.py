@@ -28,10 +28,11 @@ class _CallablePackage(types.ModuleType):
     (:func:`axisopt.api.study`): once the package is imported it is the attribute, so the package itself runs a
     study when called, ``axisopt.study("problems/studies/teaching_random.yaml", "out")``."""
 
-    def __call__(self, spec, out=None, *, workers: int | None = 0, resume: bool = False, scheduler=None):
+    def __call__(self, spec, out=None, *, workers: int | None = 0, resume: bool = False, overwrite: bool = False,
+                 scheduler=None):
         from .result import run_spec
 
-        return run_spec(spec, out, workers=workers, resume=resume, scheduler=scheduler)
+        return run_spec(spec, out, workers=workers, resume=resume, overwrite=overwrite, scheduler=scheduler)
 
 
 sys.modules[__name__].__class__ = _CallablePackage

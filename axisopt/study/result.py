@@ -5,8 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..display import html_table, one_line
+from .lock import StudyLock
 from .run import RunSummary, run_study
 from .spec import Study
+from .store import CaseStore
 from .table import results_table
 
 # columns of the notebook's HTML view (the table itself has every column)
@@ -46,23 +48,40 @@ class StudyResult:
         return html_table(df[cols].to_dict("records"), repr(self), columns=cols)
 
 
-def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, scheduler=None,
-             progress=None) -> StudyResult:
+def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, overwrite: bool = False,
+             scheduler=None, progress=None) -> StudyResult:
     """Run a study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult`.
 
-    out     : output directory (default ``<study file stem>-results``, as on the command line)
-    workers : local worker processes; 0 (the default here) solves in this process, None uses every core
-    resume  : continue a run in ``out``
+    out       : output directory (default ``<study file stem>-results``, as on the command line)
+    workers   : local worker processes; 0 (the default here) solves in this process, None uses every core
+    resume    : continue a run in ``out`` (its finished cases are kept)
+    overwrite : solve every case again: the case results already in ``out`` are deleted first
+
+    An ``out`` that holds case results, with neither ``resume`` nor ``overwrite``, is an InputError that says
+    so in these words (``axisopt.study(..., resume=True)``), not in the command line's.
     """
     from os import PathLike
     from pathlib import Path
 
+    from ..errors import InputError
     from .spec import load_study
 
+    if resume and overwrite:
+        raise InputError("resume=True continues a run, overwrite=True starts it again: give one of them")
     path = isinstance(spec, (str, PathLike))
     study = load_study(spec) if path else spec
     if out is None:
         out = f"{Path(spec).stem if path else study.name}-results"
+    store = CaseStore(out)
+    have = store.existing()
+    if have and overwrite:
+        with StudyLock(out):
+            for case_id in have:
+                (store.dir / f"{case_id}.json").unlink(missing_ok=True)
+    elif have and not resume:
+        raise InputError(f"already holds {len(have)} case results; call axisopt.study(..., resume=True) to "
+                         "continue that study, overwrite=True to solve it again, or give another out",
+                         source=str(out))
     return run(study, out, workers=workers, resume=resume, scheduler=scheduler, progress=progress)
 
 

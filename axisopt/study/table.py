@@ -227,8 +227,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
     its non-dominated cases joined within each machine (cases of different axis inputs are not joined)."""
     import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..figure import Figure  # outside pyplot: no backend is chosen (a notebook's stays as it was)
 
     files = {}
     ok = df[df["status"].isin(OK_STATUSES)]
@@ -242,7 +241,8 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         if conv is not _number or df[name].nunique() < 2:
             continue
         by = _line_groups(df, cols, name, group)
-        fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+        fig = Figure(figsize=(7, 6))
+        a1, a2 = fig.subplots(2, 1, sharex=True)
         for j, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
             # best over the cases that share this x and this line's inputs; each line its own dash pattern and
             # marker, so lines that coincide stay visible
@@ -257,14 +257,17 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
             # sweep of many distinct inputs, e.g. random: a rug of ticks along the bottom of the panel, one artist)
             xs = sorted(set(bad[name].dropna()))
             what = f"for {len(bad)} cases ({', '.join(sorted(set(bad['status'])))})"
+            short = key.split(".")[-1]
+            # with other inputs swept, the mark says where such a case sits, not that this input is the cause
+            text = (f"no design at this {short} {what}" if len(cols) == 1 else
+                    f"{short} of a case without a design {what}; the cause may be another input (its reason)")
             for ax in (a1, a2):
                 if len(xs) > SHADED_INPUTS:
                     ax.plot(xs, [0.0] * len(xs), "|", color="tab:red", ms=10, alpha=0.6,
-                            transform=ax.get_xaxis_transform(), label=f"no design at these inputs {what}")
+                            transform=ax.get_xaxis_transform(), label=text)
                     continue
                 for i, x in enumerate(xs):
-                    ax.axvline(x, color="tab:red", alpha=0.25, lw=4,
-                               label=f"no design at this {key.split('.')[-1]} {what}" if i == 0 else None)
+                    ax.axvline(x, color="tab:red", alpha=0.25, lw=4, label=text if i == 0 else None)
         a1.set_ylabel("best min. axial stiffness [N/um]")
         a2.set_ylabel("best min. 1st frequency [Hz]")
         a2.set_xlabel(name.replace(" [", " [", 1))
@@ -279,10 +282,11 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
     # trade-off over all cases: cost against minimum stiffness, non-dominated cases joined per machine
     pts = ok[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
     if len(pts) >= 2:
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        fig = Figure(figsize=(7, 4.5))
+        ax = fig.subplots()
         machines = _machine_columns(df, cols)
         by = machines or [group]
-        colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
         for i, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
             col = colors[i % len(colors)]
             sub = sub[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
@@ -317,7 +321,8 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         kx, ky = p0["keys"][:2]
         attr = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost",
                 "total_mass": "total_mass", "moving_mass": "moving_mass"}
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        fig = Figure(figsize=(7, 4.5))
+        ax = fig.subplots()
         for r in fronts[:12]:
             xs = [p[attr[kx]] for p in r["pareto"]["points"]]
             ys = [p[attr[ky]] for p in r["pareto"]["points"]]

@@ -35,7 +35,8 @@ def test_evaluate_servo_ss_and_frf(tmp_path, capsys, monkeypatch):
     assert held[-1]["modes_Hz"][0] == pytest.approx(out["min_natural_frequency_Hz"], rel=1e-3)
     assert frf["positions"][-1]["modes_Hz"][0] == pytest.approx(123.5, abs=0.1)  # motor free
     assert len(frf["closed_loop"]["positions"][1]["magnitude_um_per_N"]) == len(frf["frequency_Hz"])
-    z = np.load(ss)
+    with np.load(ss) as npz:  # closed here: an open NpzFile collected in a later test is a ResourceWarning there
+        z = {k: npz[k] for k in npz.files}
     assert z["A"].shape == (3, 6, 6) and z["B"].shape == (3, 6, 2) and z["C"].shape == (3, 3, 6)
     assert list(z["inputs"]) == ["motor_torque", "process_force"]
     assert float(z["kv_per_s"]) == pytest.approx(s["kv_per_s"])

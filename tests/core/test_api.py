@@ -208,3 +208,77 @@ def test_design_and_problem_reprs_are_short_and_in_engineering_units():
     p = repr(axisopt.load_problem(PROBLEMS / "vmc_x_problem.yaml"))
     assert p.startswith("Problem('vmc-x'; objective maximise minimum first natural frequency; limits ")
     assert "max_cost 7,000 EUR" in p and "min_stiffness 140 N/um" in p and "critical_speed 1.25" in p
+
+
+def test_study_rerun_speaks_python(tmp_path):
+    # issue 42: re-running axisopt.study(...) told the Python user to "pass --resume"
+    import axisopt
+    from axisopt.errors import InputError
+
+    spec = tmp_path / "s.yaml"
+    spec.write_text(STUDY)
+    axisopt.study(spec, tmp_path / "out")
+    with pytest.raises(InputError) as exc:
+        axisopt.study(spec, tmp_path / "out")
+    msg = str(exc.value)
+    assert "resume=True" in msg and "overwrite=True" in msg and "--resume" not in msg
+    assert repr(axisopt.study(spec, tmp_path / "out", resume=True)).startswith(
+        "StudyResult('api-study'; cases 2; solved now 0; kept 2")
+    again = axisopt.study(spec, tmp_path / "out", overwrite=True)
+    assert again.summary.solved == 2 and len(again.to_frame()) == 2
+    with pytest.raises(InputError, match="give one of them"):
+        axisopt.study(spec, tmp_path / "out", resume=True, overwrite=True)
+
+
+def test_best_design_and_binding_limits_have_units_and_frames():
+    # issue 42: res.best and res.binding had no units and no to_frame()
+    import axisopt
+
+    res = axisopt.solve(PROBLEMS / "teaching_problem.yaml")
+    b = res.best
+    assert repr(b).startswith(f"Candidate(rank 1, {b.mounting} {b.screw} / ")
+    assert f"min stiffness {b.min_stiffness:.3g} N/um" in repr(b) and " EUR" in repr(b) and "\n" not in repr(b)
+    row = b.to_frame()
+    assert row.shape[0] == 1 and row["min_stiffness [N/um]"].iloc[0] == b.min_stiffness
+    assert "cost [EUR]" in b._repr_html_()
+    assert len(res.binding) >= 1 and repr(res.binding).startswith(f"Bindings({len(res.binding)} limits")
+    df = res.binding.to_frame()
+    assert list(df.columns) == ["limit", "unit", "value", "at optimum", "relaxed to", "objective gain [N/um]",
+                                "binding"]
+    assert df["limit"].tolist() == [x.limit for x in res.binding] and df["unit"].tolist() == [x.unit for x in
+                                                                                                res.binding]
+    first = res.binding[0]
+    assert repr(first).startswith(f"Binding({first.limit} ") and (first.unit in repr(first))
+    assert f"value [{first.unit}]" in first.to_frame().columns
+    assert [x.to_dict() for x in res.binding] == res.to_dict()["binding"]
+
+
+def test_tables_show_digits_enough_to_tell_designs_apart():
+    # issue 42: the SolveResult table rounded to 3 figures, five designs all "161"
+    from axisopt.display import fmt_column, html_table
+
+    assert fmt_column([161.24, 161.38, 161.02]) == ["161.2", "161.4", "161.0"]
+    assert fmt_column([71.4818, 71.4818, 71.4612]) == ["71.48", "71.48", "71.46"]
+    assert fmt_column([2536.4, 2836.6]) == ["2,536", "2,837"]
+    assert fmt_column([1, 2, None, "x"]) == ["1", "2", "-", "x"]
+    html = html_table([{"k [N/um]": 161.24}, {"k [N/um]": 161.38}])
+    assert "161.2" in html and "161.4" in html
+
+
+def test_design_parts_table_in_vendor_units():
+    # issue 42: every part has a unit-bearing table; the values as the catalog file quotes them
+    import csv
+
+    import axisopt
+
+    d = axisopt.load_design(PROBLEMS / "vmc_x_design.yaml")
+    df = d.to_frame()
+    assert list(df.columns) == ["part", "id", "column", "value", "unit"]
+    assert set(df["part"]) == set(d.part_ids())
+    nut = df[(df["part"] == "nut") & (df["column"] == "stiffness")].iloc[0]
+    with open(ROOT / "catalogs" / "nuts.csv", encoding="utf-8") as fh:
+        row = next(r for r in csv.DictReader(fh) if r["id"] == nut["id"])
+    assert nut["unit"] == "N/um" and nut["value"] == pytest.approx(float(row["stiffness [N/um]"]))
+    lead = df[(df["part"] == "screw") & (df["column"] == "lead")].iloc[0]
+    assert lead["unit"] == "mm" and lead["value"] == pytest.approx(d.screw["lead"] * 1e3)
+    assert "N/um" in d._repr_html_()

@@ -134,3 +134,18 @@ def test_user_catalog_directory_adds_parts(tmp_path):
     (d / "guides.csv").write_text(header[0] + "\n" + header[1] + "\n")
     with pytest.raises(InputError, match="duplicate id 'HIWIN-HG15-ZA' across catalog"):
         load_catalogs([d])
+
+
+@pytest.mark.parametrize("old, new", [("HIWIN,ground", "HIWIN\x00,ground"),  # a text cell (was accepted)
+                                      (",16,5,", ",16\x00,5,")])             # a number cell
+def test_nul_byte_is_refused_naming_file_and_line(tmp_path, capsys, old, new):
+    # issue 42 item 7: the fuzz harness found a NUL in a catalog text cell accepted
+    from cli_helpers import one_line_error
+
+    from axisopt.cli import main
+
+    d = _copy(tmp_path)
+    _edit(d / "screws.csv", old, new)
+    assert main(["parts", "screws", "--catalogs", str(d)]) == 2
+    err = one_line_error(capsys)
+    assert "NUL byte" in err and "screws.csv" in err and "line 2" in err and "\x00" not in err

@@ -46,6 +46,25 @@ def test_cli_reference_has_every_command():
         assert f"## `axisopt {cmd}`" in text and f"usage: axisopt {cmd}" in text
 
 
+def _gen_api():
+    spec = importlib.util.spec_from_file_location("gen_api", ROOT / "tools" / "gen_api.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_api_reference_is_up_to_date_and_gives_units():
+    # issue 42: an API reference page generated from the docstrings, with each field's unit
+    gen = _gen_api()
+    text = gen.generate()
+    assert gen.PAGE.read_text(encoding="utf-8") == text, "stale: run python tools/gen_api.py"
+    for name in gen.FUNCTIONS:
+        assert f"### `axisopt.{name}(" in text, name
+    assert "| `min_stiffness` | N/um | `float` |" in text and "| `cost` | EUR | `float` |" in text
+    assert "| `time` | s | `float` |" in text and "| `objective` | as `objective_unit` |" in text
+    assert "- `to_frame()`: pandas DataFrame of this design" in text  # Candidate's own table
+
+
 def test_site_builds_strict(tmp_path):
     mkdocs = shutil.which("mkdocs") or str(Path(sys.executable).with_name("mkdocs"))
     if not Path(mkdocs).exists():
