@@ -17,6 +17,7 @@ from ..model.loads import balance_summary
 from ..model.params import axis_params
 from ..model.servo import servo_response
 from ..units import N_PER_UM
+from .accuracy import budget_dict, budget_lines
 from .lifeloads import life_dict, life_lines
 from .servo import servo_dict, servo_lines
 
@@ -71,6 +72,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
     return {
         "design": ev.design.name,
         "parts": ev.design.part_ids(),
+        "screw_grade": ev.design.grade,
         "mounting": axis.mounting,
         "nut_preload_N": ev.design.preload,
         "min_axial_stiffness_N_per_um": kmin / N_PER_UM,
@@ -121,6 +123,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "guide_max_block_load_N": v["guide_max_load"], "guide_static_safety": v["guide_static_safety"],
         "guide_mean_block_load_N": v["guide_mean_load"], "nut_static_safety": v["nut_static_safety"],
         "servo": servo_dict(servo_response(ev), v["kv"]),
+        "positioning_budget": budget_dict(ev),
         "estimated": [e.to_dict() | {"moves": w} for e, w in estimates(ev) if w],
     } | ({"counterbalance": counterbalance_dict(ev)} if axis.counterbalance is not None else {}) | twin_dict(ev)
 
@@ -286,6 +289,7 @@ def evaluation_table(ev: Evaluation) -> str:
                  f"cost {v['cost']:,.0f} EUR (illustrative prices)")
     lines.extend(twin_lines(ev))
     lines.append(_thermal_line(ev))
+    lines.extend(budget_lines(ev))
     z = {k: float(np.asarray(v[k])[i_min]) * 100
          for k in ("zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure")}
     lines.append(f"damping of the axial mode {float(np.asarray(v['damping_ratio'])[i_min]) * 100:.1f} %  (guides "

@@ -109,6 +109,7 @@ class Candidate:
     motor: str = ""  # servo motor id ('' without drive search)
     coupling: str = ""
     reduction: str = ""  # reduction id ('' : none, the axis's reduction values)
+    screw_grade: str = ""  # lead accuracy grade the search chose or the problem fixed ('' : the screw's cheapest)
     # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their minimum over
     # the stroke.  Not in the JSON (the display fields above carry the same values in vendor units).
     outputs: dict = field(default_factory=dict, repr=False, compare=False)
@@ -133,8 +134,10 @@ class Candidate:
         """One table row: rank, mounting, parts, the objective (when ``objective_unit`` is given) and the
         values in display units, each unit in its column name; an infeasible problem's closest designs add
         ``miss <limit> [%]`` per missed limit."""
-        r = {"rank": self.rank, "mounting": self.mounting, "screw": self.screw, "nut": self.nut,
-             "bearing": self.bearing, "guide": self.guide}
+        r = {"rank": self.rank, "mounting": self.mounting, "screw": self.screw}
+        if self.screw_grade:
+            r["grade"] = self.screw_grade
+        r.update({"nut": self.nut, "bearing": self.bearing, "guide": self.guide})
         if self.motor:
             r["motor"] = self.motor
         if self.coupling:

@@ -113,6 +113,9 @@ class Space:
     # coupling), ascending, and the model position grid of each mounting [m] (of the problem's axis)
     coupling_k: np.ndarray = field(repr=False, default=None)
     grid: dict = field(repr=False, default_factory=dict)
+    # the lead accuracy grade of each nut row (screw x grade: parts.screw_grade_rows), or None: every screw at
+    # the cheapest grade it is made in (no positioning limit, no catalog.screw_grades)
+    grades: np.ndarray | None = field(repr=False, default=None)
     _cache: dict = field(repr=False, default_factory=dict)
 
     def unravel(self, idx):
