@@ -22,17 +22,16 @@ def budget_rows(ev) -> list:
     """(label, value [m], source) of each row, the total and the repeatability."""
     d, v = ev.design, ev.values
     a = d.axis
-    rise = "heat balance at the nut's highest preload" if a.temperature_rise is None and a.duty_cycle else \
-        "the rise as used"
+    rise = "heat balance, nut's top preload" if a.temperature_rise is None and a.duty_cycle else "the rise used"
     pitch, yaw = a.guide_pitch / ARCSEC, a.guide_yaw / ARCSEC
     return [
         (f"lead error, grade {d.grade}", float(v["lead_error"]), lead_source(d.grade, a.stroke)),
         ("thermal growth at the nut", float(v["thermal_error"]), f"{rise}; THK A-715"),
         (f"deflection at the tool under {a.axial_load:.0f} N", float(v["elastic_error"]),
-         "softest point, chain + table rocking; THK A-713"),
+         "softest point, chain + rocking; THK A-713"),
         (f"Abbe: pitch {pitch:.3g}\" x {a.tool_height_eff * 1e3:.0f} mm, yaw {yaw:.3g}\" x "
          f"{a.tool_offset * 1e3:.0f} mm", float(v["abbe_error"]), "THK A-716 eq. 39"),
-        ("lost motion (nut play, reduction backlash)", float(v["lost_motion"]), "0 for a preloaded nut; THK A-712"),
+        ("lost motion (nut play, reduction backlash)", float(v["lost_motion"]), "0: preloaded nut; THK A-712"),
         ("total, arithmetic worst case", float(v["positioning_error"]), "every row at its worst at once"),
         ("repeatability (estimate)", float(v["repeatability"]), "lost motion + thermal growth"),
     ]

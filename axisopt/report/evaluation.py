@@ -213,7 +213,8 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.append(f"  {a.mounting}, stroke {a.stroke * 1e3:.0f} mm, span {a.span * 1e3:.0f} mm, "
                  f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks)")
     lines.extend(counterbalance_lines(ev))
-    parts = [f"screw {ids['screw']}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
+    grade = f" grade {d.screw_grade}" if d.screw_grade is not None else ""
+    parts = [f"screw {ids['screw']}{grade}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
              f"bearings {ids['bearing']}", f"guides {ids['guide']} x{a.guide_blocks}"]
     parts += [f"{slot} {ids[slot]}" for slot in ("motor", "coupling", "reduction") if slot in ids]
     glued = "  ".join(p.replace(" ", "\0") for p in parts)  # break between parts, never inside one

@@ -178,7 +178,7 @@ def relax_lines(inf) -> list:
 def _cand_table(cands, unit) -> str:
     """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
     design, only the parts in which it differs from the one above)."""
-    slots = ("screw", "nut", "bearing", "guide", "motor", "coupling", "reduction")
+    slots = ("screw", "grade", "nut", "bearing", "guide", "motor", "coupling", "reduction")
     obj = f"obj {unit}" if unit != "-" else ""
     L = [f"  {'#':>3} {'mounting':<17}{obj:>12}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"
          f"{'preload N':>11}"]
@@ -187,7 +187,7 @@ def _cand_table(cands, unit) -> str:
         val = f"{c.objective:,.3f}" if obj else ""
         L.append(f"  {c.rank:>3} {c.mounting:<17}{val:>12}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}"
                  f"{c.cost:>10,.0f}{c.total_mass:>9.1f}{c.nut_preload:>11.0f}")
-        parts = c.parts()
+        parts = c.parts() | ({"grade": c.screw_grade} if getattr(c, "screw_grade", "") else {})
         if prev is None:
             shown = [f"{k} {parts[k]}" for k in slots if parts.get(k)]
         else:
