@@ -55,7 +55,10 @@ def positioning_budget(p, mounting: str, preload, axial_force, mean_force, rock)
     """The budget's rows, total and repeatability [m] (module docstring).  ``p`` at the model's temperature rise
     (:func:`.response.loaded`), ``axial_force`` and ``mean_force`` as the stiffness chain takes them, ``rock`` the
     table's rocking (:func:`.carriage.rocking`).  Floats, numpy arrays or CasADi like the model."""
-    hot = heat_balance(p, p["nut_preload_max"])["temperature_rise"]
+    # the rise the model uses where no heat balance sets it (a stated rise, or no duty cycle: Python-level flag,
+    # as model.heat), else the balance at the nut's highest preload
+    flag = getattr(p.get("duty", ()), "heat", None)
+    hot = p["temperature_rise"] if flag is False else heat_balance(p, p["nut_preload_max"])["temperature_rise"]
     thermal = thermal_growth_at(p, hot)
     k_soft = None
     for xw in softest_positions(p, mounting):

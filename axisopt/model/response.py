@@ -79,8 +79,11 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
         out.update(tool_stiffness(p, k["k_total"], rock))
         out.update(modes)
         out["kv"] = kv_rule(modes["f_axial"])  # achievable position-loop gain [1/s] (model.servo)
-        # the positioning-error budget (model.accuracy): its rows at the softest points of the stroke
-        out.update(positioning_budget(p, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"], rock))
+        # the positioning-error budget (model.accuracy): its rows at the softest points of the stroke (a search
+        # none of whose limits reads it says so: p["budget"] False)
+        if p.get("budget", True):
+            out.update(positioning_budget(p, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"],
+                                          rock))
     out.update(drag_torque(p, preload, loads))
     out["cost"] = cost(p)
     out["backlash"] = lost_motion(p)

@@ -81,11 +81,15 @@ def build_space(problem: Problem) -> Space:
             _SPACES.pop(next(iter(_SPACES)))
         _SPACES[key] = hit = (problem.catalog, sp)
     sp = replace(hit[1], problem=problem, _cache={})
+    sp.budget = any(k in problem.limit_map for k in BUDGET_LIMITS)
     sp.grid = {m: model.positions(problem.axis_for(m)) for m in sp.mountings}
     # the drives' torsional stiffnesses (a drive without a coupling takes this problem's axis value)
     sp.coupling_k = np.unique(drive_stiffnesses(sp)) if sp.m_arr is not None else \
         np.array([float(problem.axis.coupling_stiffness)])
     return sp
+
+
+BUDGET_LIMITS = ("max_positioning_error", "max_repeatability")  # the limits that read the positioning budget
 
 
 def _grades_chosen(problem: Problem) -> bool:
