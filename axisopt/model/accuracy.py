@@ -3,8 +3,9 @@ General Catalog A-712..A-716; :mod:`axisopt.physics.accuracy`), each the largest
 
 * ``lead_error``: the screw's lead error over the stroke by its grade (a parameter: :mod:`axisopt.grades`);
 * ``thermal_error``: the thermal growth at the nut over the stroke (:mod:`.chain`) at the temperature rise of the
-  heat balance with the nut at its highest catalog preload (the hottest it runs; a stated
-  ``axis.temperature_rise`` instead where the axis gives one), so that the row does not fall with the preload;
+  heat balance with the nut at its highest catalog preload (the hottest it runs: conservative; a stated
+  ``axis.temperature_rise`` instead where the axis gives one), so that the row does not rise with the preload
+  and the search's one-sided preload solve stays exact (model.limits.OUTPUT_PRELOAD);
 * ``elastic_error``: the deflection at the tool under the process force (``axis.axial_load``), at the softest
   point of the stroke (the stroke's far end, and mid-span for a fixed-fixed screw): the stiffness chain in series
   with the table's rocking (:func:`.carriage.tool_stiffness`);
@@ -14,7 +15,8 @@ General Catalog A-712..A-716; :mod:`axisopt.physics.accuracy`), each the largest
 
 ``positioning_error`` adds them arithmetically (worst case: :func:`axisopt.physics.accuracy.worst_case_total`);
 it does not rise with the nut preload (the elastic row falls, the others stay), as model.limits declares.
-``repeatability`` is an estimate: lost motion plus the thermal row (:func:`axisopt.physics.accuracy.repeatability_estimate`).
+``repeatability`` is an estimate: lost motion plus the thermal row
+(:func:`axisopt.physics.accuracy.repeatability_estimate`).
 """
 
 from __future__ import annotations
