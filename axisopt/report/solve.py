@@ -175,18 +175,19 @@ def relax_lines(inf) -> list:
     return L0 + L
 
 
-def _cand_table(cands, unit) -> str:
+def _cand_table(cands, unit, accuracy: bool = False) -> str:
     """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
-    design, only the parts in which it differs from the one above)."""
+    design, only the parts in which it differs from the one above); ``accuracy``: the positioning error too."""
     slots = ("screw", "grade", "nut", "bearing", "guide", "motor", "coupling", "reduction")
     obj = f"obj {unit}" if unit != "-" else ""
     L = [f"  {'#':>3} {'mounting':<17}{obj:>12}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"
-         f"{'preload N':>11}"]
+         f"{'preload N':>11}" + (f"{'error um':>10}" if accuracy else "")]
     prev = None
     for c in cands:
         val = f"{c.objective:,.3f}" if obj else ""
         L.append(f"  {c.rank:>3} {c.mounting:<17}{val:>12}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}"
-                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}{c.nut_preload:>11.0f}")
+                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}{c.nut_preload:>11.0f}"
+                 + (f"{c.positioning_error:>10.1f}" if accuracy else ""))
         parts = c.parts() | ({"grade": c.screw_grade} if getattr(c, "screw_grade", "") else {})
         if prev is None:
             shown = [f"{k} {parts[k]}" for k in slots if parts.get(k)]
@@ -221,7 +222,7 @@ def format_pareto(front, top: int | None = None) -> str:
          f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"]
     if len(shown) < len(front.points):
         L.append(f"  the first {len(shown)} by {front.keys[0]} shown (--top N for more, --json for all)")
-    L.append(_cand_table(shown, "-"))
+    L.append(_cand_table(shown, "-", accuracy="positioning_error" in front.keys))
     return "\n".join(L)
 
 

@@ -81,7 +81,7 @@ def build_space(problem: Problem) -> Space:
             _SPACES.pop(next(iter(_SPACES)))
         _SPACES[key] = hit = (problem.catalog, sp)
     sp = replace(hit[1], problem=problem, _cache={})
-    sp.budget = any(k in problem.limit_map for k in BUDGET_LIMITS)
+    sp.budget = reads_budget(problem)
     sp.grid = {m: model.positions(problem.axis_for(m)) for m in sp.mountings}
     # the drives' torsional stiffnesses (a drive without a coupling takes this problem's axis value)
     sp.coupling_k = np.unique(drive_stiffnesses(sp)) if sp.m_arr is not None else \
@@ -92,11 +92,18 @@ def build_space(problem: Problem) -> Space:
 BUDGET_LIMITS = ("max_positioning_error", "max_repeatability")  # the limits that read the positioning budget
 
 
+def reads_budget(problem: Problem) -> bool:
+    """Whether a limit or the Pareto front reads the positioning budget (model.accuracy)."""
+    return any(k in problem.limit_map for k in BUDGET_LIMITS) or \
+        "positioning_error" in (problem.objective.pareto or ())
+
+
 def _grades_chosen(problem: Problem) -> bool:
-    """Whether the screw's grade is a choice of the search (or fixed by the problem): a positioning limit reads
-    the grade's lead error, or the problem names the grades.  Otherwise every screw takes the cheapest grade it is
-    made in (C5 for every shipped series: the catalog price), which needs no expansion."""
-    return "max_positioning_error" in problem.limit_map or problem.restrictions.screw_grades is not None
+    """Whether the screw's grade is a choice of the search (or fixed by the problem): a positioning limit or front
+    reads the grade's lead error, or the problem names the grades.  Otherwise every screw takes the cheapest grade
+    it is made in (C5 for every shipped series: the catalog price), which needs no expansion."""
+    return ("max_positioning_error" in problem.limit_map or "positioning_error" in (problem.objective.pareto or ())
+            or problem.restrictions.screw_grades is not None)
 
 
 def screw_grade_rows(problem: Problem, screws) -> tuple:

@@ -65,6 +65,7 @@ class Exact:
     moving_mass: np.ndarray  # [kg]
     min_stiffness: np.ndarray  # [N/um] at the chosen preload
     min_frequency: np.ndarray  # [Hz]
+    positioning_error: np.ndarray  # [um] at the chosen preload (NaN where no limit or front reads the budget)
 
 
 @dataclass
@@ -113,6 +114,11 @@ class Candidate:
     # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their minimum over
     # the stroke.  Not in the JSON (the display fields above carry the same values in vendor units).
     outputs: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def positioning_error(self) -> float:
+        """The positioning budget's worst-case total [um] (model.accuracy; NaN where not evaluated)."""
+        return self.outputs.get("positioning_error", float("nan")) * 1e6
 
     def parts(self) -> dict:
         out = {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}

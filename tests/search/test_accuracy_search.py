@@ -86,3 +86,31 @@ def test_no_accuracy_limit_keeps_the_space_and_the_catalog_price():
     d = solve(p, "default", top=1, sensitivities=False)
     if d.best is not None:
         assert d.best.screw_grade == "" and d.best.design.grade == "C5"
+
+
+@pytest.mark.parametrize("keys", [("positioning_error", "cost"), ("positioning_error", "stiffness", "cost")])
+def test_pareto_with_positioning_error_default_equals_exhaustive(keys):
+    """A front of the positioning error against cost (and stiffness): the grade is a choice, every point names
+    its grade, and the front is the brute-force non-dominated set of the exact per-combination values."""
+    from axisopt.problem import Objective
+    from axisopt.search.exhaustive import exhaustive_search
+    from axisopt.search.task.constraints import build_constraints
+    from axisopt.search.task.objective import objective_spec
+
+    rng = np.random.default_rng(4)
+    cat = make_catalog(rng)
+    p = make_problem(cat, objective=Objective(mode="pareto", pareto=keys), limits={"max_drag_torque": 1.5},
+                     backlash=5e-5, guide_pitch=5 * ARCSEC, tool_height=0.2, temperature_rise=1.0)
+    d, e = solve(p, "default"), solve(p, "exhaustive")
+    assert d.status == e.status == "optimal"
+    assert sorted(c.combination for c in d.pareto.points) == sorted(c.combination for c in e.pareto.points)
+    assert all(c.screw_grade for c in d.pareto.points)
+    assert len({c.screw_grade for c in d.pareto.points}) > 1  # the front trades grades against cost
+    sp = build_space(p)
+    ex, _ = exhaustive_search(sp, build_constraints(p), objective_spec("stiffness"))
+    ok = np.nonzero(ex.feasible)[0]
+    cols = {"positioning_error": -ex.positioning_error[ok], "cost": -ex.cost[ok], "stiffness": ex.min_stiffness[ok]}
+    P = np.column_stack([cols[k] for k in keys])
+    ge = (P[:, None, :] >= P[None, :, :]).all(-1)
+    gt = (P[:, None, :] > P[None, :, :]).any(-1)
+    assert sorted(ex.idx[ok][~(ge & gt).any(0)].tolist()) == sorted(c.combination for c in d.pareto.points)
