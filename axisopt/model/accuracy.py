@@ -6,9 +6,9 @@ General Catalog A-712..A-716; :mod:`axisopt.physics.accuracy`), each the largest
   heat balance with the nut at its highest catalog preload (the hottest it runs: conservative; a stated
   ``axis.temperature_rise`` instead where the axis gives one), so that the row does not rise with the preload
   and the search's one-sided preload solve stays exact (model.limits.OUTPUT_PRELOAD);
-* ``elastic_error``: the deflection at the tool under the process force (``axis.axial_load``), at the softest
-  point of the stroke (the stroke's far end, and mid-span for a fixed-fixed screw): the stiffness chain in series
-  with the table's rocking (:func:`.carriage.tool_stiffness`);
+* ``elastic_error``: the deflection at the tool under the process force (``axis.axial_load``) at the softest
+  point of the stroke (:func:`softest_compliance`): the stiffness chain in series with the table's rocking
+  (:func:`.carriage.tool_stiffness`);
 * ``abbe_error``: the guides' running pitch times the tool's height above the screw axis plus their yaw times the
   tool's offset across it (THK A-716 eq. 39; ``axis.guide_pitch`` / ``axis.guide_yaw``, default 0);
 * ``lost_motion``: the nut's axial play (0 for a preloaded nut) and a reduction's backlash (:func:`.drive.lost_motion`).
@@ -34,15 +34,20 @@ BUDGET_ROWS = ("lead_error", "thermal_error", "elastic_error", "abbe_error", "lo
 BUDGET_OUTPUTS = BUDGET_ROWS + ("positioning_error", "repeatability")
 
 
-def softest_positions(p, mounting: str) -> list:
-    """Nut positions [m] where the stiffness chain is least over the stroke: its far end (the screw and its
-    torsion soften with the distance from the fixed bearing), and for a fixed-fixed screw mid-span too, within
-    the stroke."""
-    start, end = p["start_offset"], p["start_offset"] + p["stroke"]
-    xs = [end]
+def softest_compliance(p, mounting: str, preload, axial_force, mean_force, rock):
+    """The largest compliance at the tool over the stroke [m/N]: the chain's, each position-dependent term at its
+    worst, plus the table's rocking.  The screw's torsion softens with the distance from the fixed bearing (worst
+    at the stroke's far end); the screw with its bearings is softest there too, except on a fixed-fixed screw, where
+    it is softest at mid-span (within the stroke).  Exact for fixed-free and fixed-supported; for fixed-fixed the
+    two worst terms come from two positions, a slight overestimate (conservative)."""
+    end = p["start_offset"] + p["stroke"]
+    k_end = stiffness_chain(p, end, mounting, preload, axial_force, mean_force)
+    c = 1.0 / k_end["k_total"]
     if mounting == "fixed-fixed":
-        xs.append(mx.fmin(mx.fmax(0.5 * p["span"], start), end))
-    return xs
+        mid = mx.fmin(mx.fmax(0.5 * p["span"], p["start_offset"]), end)
+        k_mid = stiffness_chain(p, mid, mounting, preload, axial_force, mean_force)
+        c = c + mx.fmax(1.0 / k_mid["k_screw_bearings"] - 1.0 / k_end["k_screw_bearings"], 0.0)
+    return 1.0 / tool_stiffness(p, 1.0 / c, rock)["k_tool"]
 
 
 def thermal_growth_at(p, rise):
@@ -62,11 +67,7 @@ def positioning_budget(p, mounting: str, preload, axial_force, mean_force, rock)
     flag = getattr(p.get("duty", ()), "heat", None)
     hot = p["temperature_rise"] if flag is False else heat_balance(p, p["nut_preload_max"])["temperature_rise"]
     thermal = thermal_growth_at(p, hot)
-    k_soft = None
-    for xw in softest_positions(p, mounting):
-        k = tool_stiffness(p, stiffness_chain(p, xw, mounting, preload, axial_force, mean_force)["k_total"],
-                           rock)["k_tool"]
-        k_soft = k if k_soft is None else mx.fmin(k_soft, k)
+    k_soft = 1.0 / softest_compliance(p, mounting, preload, axial_force, mean_force, rock)
     elastic = pa.stiffness_positioning_error(p["axial_load"], k_soft)
     abbe = pa.abbe_error(p["tool_height"], p["guide_pitch"]) + pa.abbe_error(p["tool_offset"], p["guide_yaw"])
     lost = lost_motion(p)
