@@ -71,13 +71,14 @@ def format_result(res, top: int | None = None, problem=None) -> str:
         if res.binding:
             L.append("")
             L.append("limits at the optimum (what relaxing each by 10 % buys, re-solved)")
-            L.append(f"  {'limit':<18}{'value':>12}{'at optimum':>12}{'relaxed to':>12}  {'unit':<6}"
+            w = max([18] + [len(bd.limit) + 1 for bd in res.binding])  # max_positioning_error: 21 + 1
+            L.append(f"  {'limit':<{w}}{'value':>12}{'at optimum':>12}{'relaxed to':>12}  {'unit':<6}"
                      f"{'gain ' + res.objective_unit:>14}")
             for bd in res.binding:
                 # a gain within the re-solve's tolerance (not binding) is none: "+0", not a rounding residue
                 gain = "-" if bd.objective_gain is None or not math.isfinite(bd.objective_gain) else \
                     f"{bd.objective_gain:+.4g}" if bd.binding else "+0"
-                L.append(f"  {bd.limit:<18}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
+                L.append(f"  {bd.limit:<{w}}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
                          f"{_v(bd.relaxed_to):>12}  {bd.unit:<6}{gain:>14}{'  BINDING' if bd.binding else ''}")
             for bd in res.binding:
                 if bd.binding:
