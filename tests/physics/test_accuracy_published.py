@@ -107,3 +107,11 @@ def test_worst_case_total_adds_rows():
     assert pa.lead_error_tolerance(40 * UM, 27 * UM) == pytest.approx(67 * UM)
     # a C7 screw keeps its whole +-50 um on a travel under 300 mm
     assert pa.lead_error_per_300(50 * UM, 0.1) == pytest.approx(50 * UM)
+
+
+@pytest.mark.published
+def test_hiwin_table_4_3_jis_row_agrees_with_thk():
+    # HIWIN S99TE20-1610 Table 4.3 "International standard of accuracy grade for ballscrews", JIS row, V300p
+    # (0.001 mm): C0 3.5, C1 5, C3 8, C5 18, C7 50, C10 210 -- the same figures as THK A-678 (per 300 mm)
+    t = grade_table()
+    assert [round(t.error_per_300(n) / UM, 3) for n in ("C0", "C1", "C3", "C5", "C7", "C10")] == [3.5, 5, 8, 18, 50, 210]
