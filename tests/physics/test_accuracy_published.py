@@ -114,4 +114,5 @@ def test_hiwin_table_4_3_jis_row_agrees_with_thk():
     # HIWIN S99TE20-1610 Table 4.3 "International standard of accuracy grade for ballscrews", JIS row, V300p
     # (0.001 mm): C0 3.5, C1 5, C3 8, C5 18, C7 50, C10 210 -- the same figures as THK A-678 (per 300 mm)
     t = grade_table()
-    assert [round(t.error_per_300(n) / UM, 3) for n in ("C0", "C1", "C3", "C5", "C7", "C10")] == [3.5, 5, 8, 18, 50, 210]
+    names = ("C0", "C1", "C3", "C5", "C7", "C10")
+    assert [round(t.error_per_300(n) / UM, 3) for n in names] == [3.5, 5, 8, 18, 50, 210]
