@@ -66,6 +66,7 @@ from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, MOUNTINGS, NAME_KE
 from .design.choices import SEARCH_SPEC, read_arrangements
 from .display import fmt, one_line
 from .errors import InputError
+from .grades import grade_table
 from .model import CHECKS
 from .model.limits import LIMITS
 from .yamlio import Key, Section, Spec, close_matches, read_yaml
@@ -129,6 +130,9 @@ OBJECTIVE_TABLE = (
     Goal("cost", "max_cost", "cost", pareto=True),
     Goal("total_mass", "max_total_mass", "total_mass", pareto=True),
     Goal("moving_mass", "max_moving_mass", "moving_mass", pareto=True),
+    # the positioning budget's worst-case total (model.accuracy), minimised: it falls with the nut preload, so a
+    # combination's front point stays its highest feasible preload; the search chooses the screw's grade
+    Goal("positioning_error", "max_positioning_error", "positioning_error", pareto=True),
 )
 GOALS = MappingProxyType({g.key: g for g in OBJECTIVE_TABLE})
 PARETO_ALIASES = MappingProxyType({"mass": "total_mass"})
@@ -202,6 +206,7 @@ class Restrictions:
     reductions: bool = True  # a searched drive chooses a reduction part too (or none: the axis's reduction values)
     max_motor_flange: float | None = None  # [m]
     estimated: str = "allow"  # 'exclude': no part whose empty catalog cell the model would estimate
+    screw_grades: tuple | None = None  # lead accuracy grades the search may give a screw (None: those it is made in)
 
     def required(self, slot):
         return dict(self.require).get(slot)
@@ -328,6 +333,9 @@ RESTRICTIONS_SPEC = Spec("catalog", "which catalog parts and mountings the searc
                       choices=(True, False, "yes", "no")),
     "max_motor_flange": Key("quantity", "the motor's (square) flange size at most this", kind="length",
                             positive=True, example="130 mm"),
+    "screw_grades": Key("names", "lead accuracy grades (JIS B 1192: C0 C1 C2 C3 C5 C7 C8 C10) a screw may have, "
+                        "among those its series is made in (catalogs/screw_grades.csv); default: the search "
+                        "chooses among them when a positioning limit is set, else the cheapest", minimum=1),
     "estimated": Key("choice", "parts whose empty catalog cell the model fills with an estimate (a support "
                      "bearing's starting torque, a motor's torque-speed corner points): 'allow' (default; results "
                      "say when one binds) or 'exclude' (vendor values only)", choices=ESTIMATED_CHOICES),
@@ -512,6 +520,9 @@ def _read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Res
         vals = _catalog_names(sec, key, lambda t=table, c=col: sorted(set(catalog.rows(t)[c])))
         if vals is not None:
             kw[key] = vals
+    grades = _catalog_names(sec, "screw_grades", lambda: list(grade_table().names))
+    if grades is not None:
+        kw["screw_grades"] = grades
     est = sec.read("estimated")
     if est is not None:
         kw["estimated"] = est

@@ -167,6 +167,9 @@ class Axis:
     cross_load: float = 0.0  # [N]
     tool_height: float | None = None  # cutting point above the guide mounting plane [m]
     tool_offset: float = 0.0  # cutting point across the rail from the carriage centre [m]
+    # the guides' running pitch and yaw over the stroke [rad] (the Abbe rows of the positioning budget)
+    guide_pitch: float = 0.0
+    guide_yaw: float = 0.0
     cg_height: float | None = None  # centre of gravity of the moving mass above the mounting plane [m]
     cg_offset: float = 0.0  # ... across the rail from the carriage centre [m]
     table_width: float | None = None  # [m]; None: table_length
@@ -271,6 +274,7 @@ class Design:
     motor: object = None  # servo motor row, or None (the axis's motor_inertia; drive checks off)
     coupling: object = None  # coupling row, or None (the axis's coupling values)
     reduction: object = None  # reduction row (gearbox or belt stage), or None (the axis's reduction_* values)
+    screw_grade: str | None = None  # lead accuracy grade (C0..C10); None: the cheapest the screw is made in
     name: str = "design"
     source: str = ""
     assumed: tuple = field(default=())  # axis keys left at their defaults, for reports
@@ -283,6 +287,17 @@ class Design:
             return self.nut_preload
         return float(self.nut["stiffness_preload"]) if self.nut["type"] == "double" \
             else float(self.nut["preload_min"])
+
+    @property
+    def grade(self) -> str:
+        """The screw's lead accuracy grade: the design's, else the cheapest its series is made in
+        (:meth:`axisopt.grades.GradeTable.cheapest`; C5 for every shipped series)."""
+        if self.screw_grade is not None:
+            return self.screw_grade
+        from ..grades import grade_table
+
+        t = grade_table()
+        return t.cheapest(t.orderable(str(self.screw["vendor"]), str(self.screw["series"])))
 
     def part_ids(self) -> dict:
         """Slot -> catalog part id of each part the design has."""

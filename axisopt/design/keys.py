@@ -149,6 +149,12 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "tool_height": _axis_q("length", "cutting point above the guide mounting plane (default 0.4 x table_length)",
                            zero=True),
     "tool_offset": _axis_q("length", "cutting point across the rail from the carriage centre", zero=True),
+    "guide_pitch": _axis_q("angle", "running pitch of the guides over the stroke (e.g. 10 arcsec; default 0): its "
+                           "Abbe error at the tool_height enters the positioning budget (THK A-716)", zero=True,
+                           maximum=(0.01, "0.01 rad")),
+    "guide_yaw": _axis_q("angle", "running yaw of the guides over the stroke (default 0): its Abbe error at the "
+                         "tool_offset enters the positioning budget (THK A-716)", zero=True,
+                         maximum=(0.01, "0.01 rad")),
     "cg_height": _axis_q("length", "moving mass's centre of gravity above the guide mounting plane "
                          "(default 0.2 x table_length)", zero=True),
     "cg_offset": _axis_q("length", "moving mass's centre of gravity across the rail from the carriage centre",
@@ -227,6 +233,9 @@ PARTS_SPEC = Spec("parts", "one part per slot: a catalog id, or an inline mappin
                        "direct drive by default)", False),
     "nut_preload": Key("quantity", "nut preload within the nut's range (default: the catalog's)", kind="force",
                        non_negative=True),
+    "screw_grade": Key("string", "lead accuracy grade of the screw, one its series is made in (JIS B 1192: C0 C1 "
+                       "C2 C3 C5 C7 C8 C10; catalogs/screw_grades.csv; default: the cheapest, C5 for the shipped "
+                       "screws)"),
 })
 NAME_KEY = Key("string", "name of the file's subject (default: the file name)")
 DESCRIPTION_KEY = Key("string", "free text")

@@ -11,6 +11,7 @@ from pathlib import Path
 
 from ..catalog import SCHEMA, Catalog, default_catalog, row_problem
 from ..errors import ImplausibleInput, InputError
+from ..grades import grade_table
 from ..parttable import Row
 from ..physics import motion
 from ..yamlio import Section, close_matches, read_yaml
@@ -246,6 +247,7 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
         if sec.has(slot):
             parts[slot] = read_part(sec, slot, table, catalog)
     pre = sec.read("nut_preload")
+    grade = sec.read("screw_grade")
     sec.done()
     nut, screw = parts["nut"], parts["screw"]
     if nut["screw_id"] != screw["id"]:
@@ -255,6 +257,15 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
         raise sec.error("nut_preload", f"{pre:.0f} N is outside nut '{nut['id']}' range "
                         f"{nut['preload_min']:.0f}..{nut['preload_max']:.0f} N")
     parts["nut_preload"] = pre
+    if grade is not None:
+        t = grade_table()
+        if grade not in t.names:
+            raise sec.error("screw_grade", f"unknown grade '{grade}' (JIS B 1192: {', '.join(t.names)})")
+        made = t.orderable(str(screw["vendor"]), str(screw["series"]))
+        if grade not in made:
+            raise sec.error("screw_grade", f"screw '{screw['id']}' is not made in grade {grade} (its series: "
+                            f"{' '.join(made)}; catalogs/screw_grades.csv)")
+    parts["screw_grade"] = grade
     return parts
 
 
@@ -306,6 +317,10 @@ def load_design(path) -> Design:
     if rotating_nut(parts["nut"]) and axis.mounting != "fixed-fixed":
         raise psec.error("nut", f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: it runs on a stationary "
                          f"screw fixed at both ends (axis.mounting: fixed-fixed), not {axis.mounting}")
+    grade = parts.get("screw_grade")
+    if grade is not None and not math.isfinite(grade_table().lead_error(grade, axis.stroke)):
+        raise psec.error("screw_grade", f"grade {grade} has no lead tolerance over a {axis.stroke * 1e3:.0f} mm "
+                         "stroke (THK A-678 Table 1)")
     if parts.get("motor") is not None and axis.acceleration <= 0 and not axis.duty_cycle:
         raise psec.error("motor", "sizing a motor needs axis.acceleration (or an axis.duty_cycle)")
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)

@@ -78,6 +78,8 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
         parts[slot] = part
     if design.nut_preload is not None:
         parts["nut_preload"] = _q(design.nut_preload, "force")
+    if design.screw_grade is not None:
+        parts["screw_grade"] = design.screw_grade
     return {"name": design.name, "axis": axis, "parts": parts}
 
 

@@ -32,6 +32,8 @@ SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_brack
                   "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking", "friction_power", "heat_transfer",
                   "heat_balance_rise", "temperature_rise", "thermal_growth", "c_unit_bearing", "screw_sag",
                   "unit_bearing_life", "gantry_moving_mass",
+                  "lead_error", "thermal_error", "elastic_error", "abbe_error", "lost_motion", "positioning_error",
+                  "repeatability",
                   ) + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
 
 
@@ -95,7 +97,7 @@ def model_for(mounting: str, n_positions: int, duty: tuple = ()) -> AxisModel:
 
 def design_params(design: Design) -> dict:
     return axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                       design.coupling, design.reduction)
+                       design.coupling, design.reduction, grade=design.grade)
 
 
 COMPONENTS = (("bearings", "k_bearing"), ("screw", "k_screw"), ("screw torsion", "k_torsion"),

@@ -106,6 +106,6 @@ def gantry_modes(p, k_total, moving, moving_side, m_eff, k_guides) -> dict:
 
 def pair_cost(p):
     """The second drive's parts [EUR]: screw, nut, bearing sets, motor, coupling and reduction (``twin`` x)."""
-    return tp(p, "twin") * (p["screw_price_per_length"] * p["span"] + p["screw_price_fixed"] + p["nut_price"]
-                        + p["bearing_sets"] * p["bearing_price"] + p["motor_price"] + p["coupling_price"]
-                        + p["reduction_price"])
+    screw = (p["screw_price_per_length"] * p["span"] + p["screw_price_fixed"]) * p["grade_price_factor"]
+    return tp(p, "twin") * (screw + p["nut_price"] + p["bearing_sets"] * p["bearing_price"] + p["motor_price"]
+                            + p["coupling_price"] + p["reduction_price"])

@@ -30,6 +30,9 @@ OUTPUT_PRELOAD = MappingProxyType({
     "k_total": 1, "k_tool": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
     "life": -1, "kv": 1,
     "friction_power": 1, "heat_balance_rise": 1, "temperature_rise": 1, "thermal_growth": 1,
+    # the positioning budget (model.accuracy): the deflection falls with the preload, every other row is independent
+    # of it (the thermal row at the nut's highest preload)
+    "elastic_error": -1, "positioning_error": -1,
     # the nut's drag brakes every move: the energy the motor returns falls with the preload
     "regen_energy": -1, "regen_power": -1,
 })
@@ -95,6 +98,12 @@ LIMIT_TABLE = (
     Limit("max_screw_sag", "screw_sag", "<=", "length", "mm", 1e-3,
           "sag of a horizontal screw under its own weight at most this (beam deflection q L^4 / (k E I) on the root "
           "diameter, untensioned: conservative; 0 on a vertical axis)"),
+    Limit("max_positioning_error", "positioning_error", "<=", "length", "um", 1e-6,
+          "positioning error at most this: lead error of the screw's grade over the stroke + thermal growth + "
+          "deflection at the tool under axial_load + Abbe error of the guides' pitch and yaw + lost motion, "
+          "added as a worst case (THK A-712..A-716); the search chooses the grade (catalog.screw_grades)"),
+    Limit("max_repeatability", "repeatability", "<=", "length", "um", 1e-6,
+          "repeatability at most this (an estimate: lost motion + thermal growth at the nut)"),
     Limit("min_kv", "kv", ">=", "frequency", "1/s", 1.0,
           "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, model.servo)"),
 )

@@ -8,6 +8,7 @@ import numpy as np
 
 from ..catalog import ARRANGEMENT_ROWS, COLUMNS
 from ..design import PRETENSION_RISE, TEMPERATURE_RISE
+from ..grades import lead_errors, price_factors
 from ..physics import counterbalance as pcb
 from ..physics.bearings import STATIC_SAFETY_MACHINE_TOOL, housing_stiffness_default, support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
@@ -17,6 +18,7 @@ from .gantry import TWIN_PARAMS, gantry_params
 # A guide row without a rating basis: 50 km, the shorter of the vendors' two bases (a C defined for 100 km and
 # read as a 50 km rating halves the life, never doubles it)
 GUIDE_RATING_DISTANCE = 50e3  # [m]
+DEFAULT_GRADE = "C5"  # a screw row without a grade: the grade its catalog price is for (catalogs/SOURCES.md)
 
 PARAM_NAMES = (
     # axis
@@ -55,6 +57,9 @@ PARAM_NAMES = (
     "pitch_inertia", "yaw_inertia", "guide_static_safety", "nut_static_safety", "duty_process",
     "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed", "temperature_rise_auto",
     "heat_transfer", "shaft_ends", "pretension_rise",
+    # accuracy (issue 43): the screw's lead error over the stroke by its grade and the grade's price factor on the
+    # shaft; the guides' running pitch and yaw (model.accuracy)
+    "lead_error", "grade_price_factor", "guide_pitch", "guide_yaw",
     # reduction (issue 39): a catalog part, or none (the axis's reduction_* values above, its checks off); its
     # output-side ratings, its torsional compliance (in series with the coupling) and its input speed limit
     "has_reduction", "reduction_rated_torque", "reduction_accel_torque", "reduction_compliance",
@@ -105,12 +110,14 @@ def columns_read(table: str) -> tuple:
     return direct + tuple(c for c in _RULE_COLUMNS[table] if c not in direct)
 
 
-def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, reduction=None) -> dict:
+def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, reduction=None, grade=None) -> dict:
     """Flat SI parameter dict for :func:`axisopt.model.axis_response` from an Axis and its part rows.
 
     Part rows may be pandas Series (one design) or DataFrames / dicts of arrays (many designs).  Without a
     motor (or coupling) row the axis's ``motor_inertia`` (``coupling_*``) values stand in and the drive
-    checks do not apply.  ``p["duty"]`` holds the axis's duty-cycle phases (not a parameter: the same for
+    checks do not apply.  ``grade``: the screw's lead accuracy grade (a name, or an array of names like the
+    rows; default the screw row's ``grade`` where it has one, else C5, the grade of the catalog price).
+    ``p["duty"]`` holds the axis's duty-cycle phases (not a parameter: the same for
     every design).
     """
     col = _getter
@@ -158,6 +165,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
         if axis.bearing_static_safety is None else axis.bearing_static_safety,
         "nut_lift_off_safety": axis.nut_lift_off_safety,
     })
+    p.update(grade_params(axis, screw, grade))
     p.update(rotating_nut_params(p, nut))
     p.update(mount_compliances(axis, p))
     p.update(carriage_params(axis))
@@ -171,6 +179,21 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
     p["mean_axial_load"] = p["force_share"] * axis.mean_axial_load_eff
     p["duty"] = axis.phases
     return p
+
+
+def grade_params(axis, screw, grade=None) -> dict:
+    """The lead accuracy grade's parameters: the lead error over the stroke [m] and the price factor on the screw
+    shaft [-] (:mod:`axisopt.grades`; the catalog price is the C5 price), and the guides' running pitch and yaw
+    [rad].  ``grade``: a name or an array of names (default: the screw row's ``grade``, else C5)."""
+    if grade is None:
+        try:
+            grade = screw["grade"]
+        except (KeyError, IndexError, ValueError):
+            grade = DEFAULT_GRADE
+    err, factor = lead_errors(grade, axis.stroke), price_factors(grade)
+    return {"lead_error": err if np.ndim(err) else float(err),
+            "grade_price_factor": factor if np.ndim(factor) else float(factor),
+            "guide_pitch": axis.guide_pitch, "guide_yaw": axis.guide_yaw}
 
 
 def counterbalance_params(axis) -> dict:

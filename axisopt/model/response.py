@@ -15,6 +15,7 @@ and ``identify`` builds its plant from it.  Sub-assemblies: :mod:`.loads` (masse
 from __future__ import annotations
 
 from ..physics.servo import kv_rule
+from .accuracy import BUDGET_OUTPUTS, positioning_budget
 from .carriage import carriage_loads, rocking, tool_stiffness
 from .chain import stiffness_chain
 from .checks import checks
@@ -30,7 +31,8 @@ CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupli
                            "c_bracket", "c_housing", "c_unit_bearing", "k_bearing", "k_drive", "k_total",
                            "thermal_displacement",
                            "m_eff", "f_axial", "f_table", "f1", "k_tool", "c_rocking", "k_pitch", "k_yaw",
-                           "f_pitch", "f_yaw", "kv", "thermal_growth", "f_gantry", "f_racking", "k_racking"})
+                           "f_pitch", "f_yaw", "kv", "thermal_growth", "f_gantry", "f_racking", "k_racking"}
+                          | set(BUDGET_OUTPUTS))
 
 
 def loaded(p: dict, preload) -> tuple:
@@ -77,6 +79,11 @@ def axis_response(p: dict, x, mounting: str, preload, extras: bool = True, drive
         out.update(tool_stiffness(p, k["k_total"], rock))
         out.update(modes)
         out["kv"] = kv_rule(modes["f_axial"])  # achievable position-loop gain [1/s] (model.servo)
+        # the positioning-error budget (model.accuracy): its rows at the softest points of the stroke (a search
+        # none of whose limits reads it says so: p["budget"] False)
+        if p.get("budget", True):
+            out.update(positioning_budget(p, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"],
+                                          rock))
     out.update(drag_torque(p, preload, loads))
     out["cost"] = cost(p)
     out["backlash"] = lost_motion(p)

@@ -16,6 +16,7 @@ from ..model.loads import balance_summary
 from ..model.params import axis_params
 from ..model.servo import servo_response
 from ..units import N_PER_UM
+from .accuracy import budget_dict, budget_lines
 from .gantry import twin_dict, twin_lines
 from .lifeloads import life_dict, life_lines
 from .servo import servo_dict, servo_lines
@@ -73,6 +74,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
     return {
         "design": ev.design.name,
         "parts": ev.design.part_ids(),
+        "screw_grade": ev.design.grade,
         "mounting": axis.mounting,
         "nut_preload_N": ev.design.preload,
         "min_axial_stiffness_N_per_um": kmin / N_PER_UM,
@@ -124,6 +126,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "guide_max_block_load_N": v["guide_max_load"], "guide_static_safety": v["guide_static_safety"],
         "guide_mean_block_load_N": v["guide_mean_load"], "nut_static_safety": v["nut_static_safety"],
         "servo": servo_dict(servo_response(ev), v["kv"]),
+        "positioning_budget": budget_dict(ev),
         "estimated": [e.to_dict() | {"moves": w} for e, w in estimates(ev) if w],
     } | ({"counterbalance": counterbalance_dict(ev)} if axis.counterbalance is not None else {}) | twin_dict(ev)
 
@@ -179,7 +182,8 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.append(f"  {a.mounting}, stroke {a.stroke * 1e3:.0f} mm, span {a.span * 1e3:.0f} mm, "
                  f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks)")
     lines.extend(counterbalance_lines(ev))
-    parts = [f"screw {ids['screw']}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
+    grade = f" grade {d.screw_grade}" if d.screw_grade is not None else ""
+    parts = [f"screw {ids['screw']}{grade}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
              f"bearings {ids['bearing']}", f"guides {ids['guide']} x{a.guide_blocks}"]
     parts += [f"{slot} {ids[slot]}" for slot in ("motor", "coupling", "reduction") if slot in ids]
     glued = "  ".join(p.replace(" ", "\0") for p in parts)  # break between parts, never inside one
@@ -261,6 +265,7 @@ def evaluation_table(ev: Evaluation) -> str:
             "counted; no vendor gives a limit: limits.max_screw_sag)", WIDTH, subsequent_indent="  "))
     lines.extend(twin_lines(ev))
     lines.append(_thermal_line(ev))
+    lines.extend(budget_lines(ev))
     z = {k: float(np.asarray(v[k])[i_min]) * 100
          for k in ("zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure")}
     lines.append(f"damping of the axial mode {float(np.asarray(v['damping_ratio'])[i_min]) * 100:.1f} %  (guides "

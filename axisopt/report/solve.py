@@ -76,13 +76,14 @@ def format_result(res, top: int | None = None, problem=None) -> str:
             L.append("")
             L.append("limits at the optimum (what relaxing each by 10 % buys, re-solved)"
                      + ("; on the governing side" if b.design.axis.twin_drive else ""))
-            L.append(f"  {'limit':<18}{'value':>12}{'at optimum':>12}{'relaxed to':>12}  {'unit':<6}"
+            w = max([18] + [len(bd.limit) + 1 for bd in res.binding])  # max_positioning_error: 21 + 1
+            L.append(f"  {'limit':<{w}}{'value':>12}{'at optimum':>12}{'relaxed to':>12}  {'unit':<6}"
                      f"{'gain ' + res.objective_unit:>14}")
             for bd in res.binding:
                 # a gain within the re-solve's tolerance (not binding) is none: "+0", not a rounding residue
                 gain = "-" if bd.objective_gain is None or not math.isfinite(bd.objective_gain) else \
                     f"{bd.objective_gain:+.4g}" if bd.binding else "+0"
-                L.append(f"  {bd.limit:<18}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
+                L.append(f"  {bd.limit:<{w}}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
                          f"{_v(bd.relaxed_to):>12}  {bd.unit:<6}{gain:>14}{'  BINDING' if bd.binding else ''}")
             for bd in res.binding:
                 if bd.binding:
@@ -193,19 +194,21 @@ def relax_lines(inf) -> list:
     return L0 + L
 
 
-def _cand_table(cands, unit) -> str:
+def _cand_table(cands, unit, accuracy: bool = False) -> str:
     """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
-    design, only the parts in which it differs from the one above)."""
-    slots = ("arrangement", "screw", "nut", "bearing", "guide", "motor", "coupling", "reduction")
+    design, only the parts in which it differs from the one above); ``accuracy``: the positioning error too."""
+    slots = ("arrangement", "screw", "grade", "nut", "bearing", "guide", "motor", "coupling", "reduction")
     obj = f"obj {unit}" if unit != "-" else ""
     L = [f"  {'#':>3} {'mounting':<17}{obj:>12}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"
-         f"{'preload N':>11}"]
+         f"{'preload N':>11}" + (f"{'error um':>10}" if accuracy else "")]
     prev = None
     for c in cands:
         val = f"{c.objective:,.3f}" if obj else ""
         L.append(f"  {c.rank:>3} {c.mounting:<17}{val:>12}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}"
-                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}{c.nut_preload:>11.0f}")
-        parts = c.parts() | ({"arrangement": c.arrangement} if c.arrangement else {})
+                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}{c.nut_preload:>11.0f}"
+                 + (f"{c.positioning_error:>10.1f}" if accuracy else ""))
+        parts = c.parts() | ({"grade": c.screw_grade} if getattr(c, "screw_grade", "") else {}) \
+            | ({"arrangement": c.arrangement} if c.arrangement else {})
         if prev is None:
             shown = [f"{k} {parts[k]}" for k in slots if parts.get(k)]
         else:
@@ -239,7 +242,7 @@ def format_pareto(front, top: int | None = None) -> str:
          f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"]
     if len(shown) < len(front.points):
         L.append(f"  the first {len(shown)} by {front.keys[0]} shown (--top N for more, --json for all)")
-    L.append(_cand_table(shown, "-"))
+    L.append(_cand_table(shown, "-", accuracy="positioning_error" in front.keys))
     return "\n".join(L)
 
 

@@ -30,6 +30,7 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
     preload = float(min(max(preload, lo), hi))
     design = Design(axis=space.problem.axis_for(mounting), screw=screw, nut=nut, bearing=bearing, guide=guide,
                     motor=motor, coupling=coupling, reduction=reduction, nut_preload=preload,
+                    screw_grade=None if space.grades is None else str(space.grades[n]),
                     name=name or f"{space.problem.name}-{rank or 'design'}",
                     source=space.problem.source, assumed=space.problem.assumed)
     # the model on numpy: the same formula as the CasADi Function (tests/model/test_model.py holds them to 1e-10)
@@ -42,6 +43,7 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
                      motor="" if motor is None else str(motor["id"]),
                      coupling="" if coupling is None else str(coupling["id"]),
                      reduction="" if reduction is None else str(reduction["id"]),
+                     screw_grade="" if space.grades is None else str(space.grades[n]),
                      objective=J, min_stiffness=float(np.min(v["k_total"])) / N_PER_UM,
                      min_frequency=float(np.min(v["f1"])), cost=float(v["cost"]),
                      moving_mass=float(v["moving_mass"]), total_mass=float(v["total_mass"]),

@@ -101,14 +101,17 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
         res.feasible[sel] = feas
         res.objective[sel] = best_obj
         res.preload[sel] = best_pre
-        ks, fs = np.full(k, np.nan), np.full(k, np.nan)
+        ks, fs, pe = np.full(k, np.nan), np.full(k, np.nan), np.full(k, np.nan)
         f = np.nonzero(feas)[0]
         if len(f):
             out = respond(subset(p, f, k), x, mounting, best_pre[f][:, None])
             ks[f] = as_vector(np.min(out["k_total"], axis=-1), len(f)) / N_PER_UM
             fs[f] = as_vector(np.min(out["f1"], axis=-1), len(f))
+            if "positioning_error" in out:
+                pe[f] = as_vector(out["positioning_error"], len(f)) / 1e-6
         res.min_stiffness[sel] = ks
         res.min_frequency[sel] = fs
+        res.positioning_error[sel] = pe
     return res
 
 

@@ -18,6 +18,7 @@ import numpy as np
 from .. import model
 from ..catalog import COLUMNS, USER_STATUS
 from ..errors import InputError
+from ..grades import grade_table
 from ..model.chain import drive_torsional_stiffness
 from ..model.params import columns_read
 from ..parttable import PartTable
@@ -71,7 +72,8 @@ def build_space(problem: Problem) -> Space:
            float(problem.margin_map.get("coupling_torque", 1.0)),
            _top_speed(problem),
            tuple(float(problem.margin_map.get(k, 1.0)) for k in ("motor_speed", "reduction_speed")),
-           float(problem.limit_map.get("max_backlash", np.inf)))
+           float(problem.limit_map.get("max_backlash", np.inf)), _grades_chosen(problem),
+           float(problem.axis.stroke) if _grades_chosen(problem) else 0.0)
     hit = _SPACES.get(key)
     if hit is None or hit[0] is not problem.catalog:
         sp = _build_space(problem)
@@ -79,11 +81,57 @@ def build_space(problem: Problem) -> Space:
             _SPACES.pop(next(iter(_SPACES)))
         _SPACES[key] = hit = (problem.catalog, sp)
     sp = replace(hit[1], problem=problem, _cache={})
+    sp.budget = reads_budget(problem)
     sp.grid = {m: model.positions(problem.axis_for(m)) for m in sp.mountings}
     # the drives' torsional stiffnesses (a drive without a coupling takes this problem's axis value)
     sp.coupling_k = np.unique(drive_stiffnesses(sp)) if sp.m_arr is not None else \
         np.array([float(problem.axis.coupling_stiffness)])
     return sp
+
+
+BUDGET_LIMITS = ("max_positioning_error", "max_repeatability")  # the limits that read the positioning budget
+
+
+def reads_budget(problem: Problem) -> bool:
+    """Whether a limit or the Pareto front reads the positioning budget (model.accuracy)."""
+    return any(k in problem.limit_map for k in BUDGET_LIMITS) or \
+        "positioning_error" in (problem.objective.pareto or ())
+
+
+def _grades_chosen(problem: Problem) -> bool:
+    """Whether the screw's grade is a choice of the search (or fixed by the problem): a positioning limit or front
+    reads the grade's lead error, or the problem names the grades.  Otherwise every screw takes the cheapest grade
+    it is made in (C5 for every shipped series: the catalog price), which needs no expansion."""
+    return ("max_positioning_error" in problem.limit_map or "positioning_error" in (problem.objective.pareto or ())
+            or problem.restrictions.screw_grades is not None)
+
+
+def screw_grade_rows(problem: Problem, screws) -> tuple:
+    """(row positions, grade names): each screw row repeated once per grade the search may give it -- those its
+    series is made in (catalogs/screw_grades.csv), within the problem's ``catalog.screw_grades``, with a
+    tolerance over the stroke (THK lists no C0 beyond 1600 mm), and not dominated (a grade that costs as much
+    as a more accurate one is left out: C7 on a precision shaft, priced as C5)."""
+    t = grade_table()
+    allowed = problem.restrictions.screw_grades
+    stroke = problem.axis.stroke
+    rep, names = [], []
+    cache: dict = {}
+    for i, (vendor, series) in enumerate(zip(screws["vendor"], screws["series"])):
+        key = (str(vendor), str(series))
+        if key not in cache:
+            opts = [g for g in t.orderable(*key) if allowed is None or g in allowed]
+            opts = [(t.grade(g).price_factor, t.lead_error(g, stroke), g) for g in opts]
+            opts = sorted((o for o in opts if np.isfinite(o[1])), key=lambda o: (o[0], o[1]))
+            kept, best = [], np.inf
+            for _, err, g in opts:
+                if err < best:
+                    kept.append(g)
+                    best = err
+            cache[key] = kept
+        for g in cache[key]:
+            rep.append(i)
+            names.append(g)
+    return np.asarray(rep, dtype=np.int64), np.asarray(names, dtype=str)
 
 
 def _top_speed(problem: Problem) -> float:
@@ -149,11 +197,23 @@ def _build_space(problem: Problem) -> Space:
             raise InputError(f"the search has nothing to choose from: no {what} is left after the filters "
                              f"(catalog: {filters})", source=problem.source)
     screws_al = cat.rows("screws").by_id(list(nuts["screw_id"]))
+    grades = None
+    if _grades_chosen(problem):  # each nut row once per grade of its screw the search may choose (screw x grade)
+        rep, grades = screw_grade_rows(problem, screws_al)
+        nuts, lo, hi, screws_al = nuts.take(rep), lo[rep], hi[rep], screws_al.take(rep)
+        if len(nuts) == 0:
+            raise InputError("the search has nothing to choose from: no screw left is made in the grades "
+                             f"catalog.screw_grades allows ({', '.join(r.screw_grades or ())}) over a "
+                             f"{problem.axis.stroke * 1e3:.0f} mm stroke (catalogs/screw_grades.csv, "
+                             "lead_tolerances.csv)", source=problem.source)
     # the bearing journal rule is the model's margin_bearing_fit check; no extra pairing rule here
     fits = np.ones((len(nuts), len(bearings)), dtype=bool)
     sp = Space(problem=problem, mountings=tuple(problem.mountings), screws=screws_al, nuts=nuts,
                bearings=bearings, guides=guides, preload_lo=lo, preload_hi=hi, fits=fits)
     sp.s_arr = _arrays(screws_al, _SCREW_COLS)
+    if grades is not None:
+        sp.grades = grades
+        sp.s_arr["grade"] = grades
     sp.n_arr = _arrays(nuts, _NUT_COLS)
     sp.b_arr = _arrays(bearings, _BEARING_COLS)
     sp.g_arr = _arrays(guides, _GUIDE_COLS)

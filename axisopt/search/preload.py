@@ -92,7 +92,7 @@ def new_exact(idx) -> Exact:
     """An Exact of the combinations ``idx`` with nothing solved yet (infeasible, objective -inf)."""
     K = len(idx)
     return Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf), np.zeros(K), np.zeros(K),
-                 np.zeros(K), np.full(K, np.nan), np.full(K, np.nan))
+                 np.zeros(K), np.full(K, np.nan), np.full(K, np.nan), np.full(K, np.nan))
 
 
 def concat_exact(parts) -> Exact:
@@ -175,6 +175,8 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
         res.moving_mass[sel] = as_vector(out["moving_mass"], k)
         res.min_stiffness[sel] = as_vector(np.min(out["k_total"], axis=-1), k) / N_PER_UM
         res.min_frequency[sel] = as_vector(np.min(out["f1"], axis=-1), k)
+        if "positioning_error" in out:
+            res.positioning_error[sel] = as_vector(out["positioning_error"], k) / 1e-6
     return res
 
 

@@ -65,6 +65,7 @@ class Exact:
     moving_mass: np.ndarray  # [kg]
     min_stiffness: np.ndarray  # [N/um] at the chosen preload
     min_frequency: np.ndarray  # [Hz]
+    positioning_error: np.ndarray  # [um] at the chosen preload (NaN where no limit or front reads the budget)
 
 
 @dataclass
@@ -109,12 +110,18 @@ class Candidate:
     motor: str = ""  # servo motor id ('' without drive search)
     coupling: str = ""
     reduction: str = ""  # reduction id ('' : none, the axis's reduction values)
+    screw_grade: str = ""  # lead accuracy grade the search chose or the problem fixed ('' : the screw's cheapest)
     # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their minimum over
     # the stroke.  Not in the JSON (the display fields above carry the same values in vendor units).
     outputs: dict = field(default_factory=dict, repr=False, compare=False)
     # a problem with search.counterbalance / search.twin_drive options, Pareto objective: the arrangement this
     # design is of ('' otherwise; not in the JSON then)
     arrangement: str = ""
+
+    @property
+    def positioning_error(self) -> float:
+        """The positioning budget's worst-case total [um] (model.accuracy; NaN where not evaluated)."""
+        return self.outputs.get("positioning_error", float("nan")) * 1e6
 
     def parts(self) -> dict:
         out = {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
@@ -140,7 +147,10 @@ class Candidate:
         ``miss <limit> [%]`` per missed limit."""
         r = {"rank": self.rank, "mounting": self.mounting} | ({"arrangement": self.arrangement}
                                                               if self.arrangement else {})
-        r |= {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
+        r["screw"] = self.screw
+        if self.screw_grade:
+            r["grade"] = self.screw_grade
+        r.update({"nut": self.nut, "bearing": self.bearing, "guide": self.guide})
         if self.motor:
             r["motor"] = self.motor
         if self.coupling:

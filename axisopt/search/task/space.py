@@ -113,6 +113,12 @@ class Space:
     # coupling), ascending, and the model position grid of each mounting [m] (of the problem's axis)
     coupling_k: np.ndarray = field(repr=False, default=None)
     grid: dict = field(repr=False, default_factory=dict)
+    # the lead accuracy grade of each nut row (screw x grade: parts.screw_grade_rows), or None: every screw at
+    # the cheapest grade it is made in (no positioning limit, no catalog.screw_grades)
+    grades: np.ndarray | None = field(repr=False, default=None)
+    # whether a limit reads the positioning budget (model.accuracy): the parameter dicts say so (``p["budget"]``),
+    # and the model leaves the budget out otherwise (its extra stiffness-chain points cost the screening time)
+    budget: bool = True
     _cache: dict = field(repr=False, default_factory=dict)
 
     def unravel(self, idx):
@@ -162,6 +168,7 @@ class Space:
         cp = None if self.c_arr is None or mechanics else shaped(self.c_arr, (1, 1, -1, 1), dtype)
         rd = None if self.r_arr is None or mechanics else shaped(self.r_arr, (1, 1, -1, 1), dtype)
         ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp, rd)
+        ps["budget"] = self.budget
         if mechanics and coupling_stiffness is not None:
             ps["coupling_stiffness"] = coupling_stiffness
         ps = as_dtype(ps, dtype)
@@ -179,8 +186,10 @@ class Space:
         :meth:`params_structured`; ``drives``: those drive numbers only, in that order, on the fourth axis."""
         s, nt, b = self.nut_bearing_arrays(nut_sel, dtype, bearings)
         g = shaped({k: v[::self.n_drives] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
-        return as_dtype(model.axis_params(self.problem.axis_for(mounting), s, nt, b, g,
-                                          *self.drive_columns((1, 1, 1, -1), dtype, drives)), dtype)
+        ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g,
+                               *self.drive_columns((1, 1, 1, -1), dtype, drives))
+        ps["budget"] = self.budget
+        return as_dtype(ps, dtype)
 
     def drive_columns(self, shape, dtype=float, drives=None) -> tuple:
         """The searched drives' (motor, coupling, reduction) columns, each the D drives in order (or the drive
@@ -206,8 +215,10 @@ class Space:
     def params_flat(self, mounting: str, n, b, g) -> dict:
         def pick(d, i):
             return {k: v[i][:, None] for k, v in d.items()}
-        return model.axis_params(self.problem.axis_for(mounting), pick(self.s_arr, n), pick(self.n_arr, n),
-                                 pick(self.b_arr, b), pick(self.g_arr, g),
-                                 None if self.m_arr is None else pick(self.m_arr, g),
-                                 None if self.c_arr is None else pick(self.c_arr, g),
-                                 None if self.r_arr is None else pick(self.r_arr, g))
+        ps = model.axis_params(self.problem.axis_for(mounting), pick(self.s_arr, n), pick(self.n_arr, n),
+                               pick(self.b_arr, b), pick(self.g_arr, g),
+                               None if self.m_arr is None else pick(self.m_arr, g),
+                               None if self.c_arr is None else pick(self.c_arr, g),
+                               None if self.r_arr is None else pick(self.r_arr, g))
+        ps["budget"] = self.budget
+        return ps

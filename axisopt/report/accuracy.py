@@ -1,0 +1,52 @@
+"""The positioning-error budget of an evaluated design as text rows (um), each with its source
+(:mod:`axisopt.model.accuracy`)."""
+
+from __future__ import annotations
+
+import math
+
+from ..grades import grade_table
+
+ARCSEC = math.pi / 180.0 / 3600.0
+
+
+def lead_source(grade: str, stroke: float) -> str:
+    """How the lead row is read from the grade tables (THK A-678)."""
+    g = grade_table().grade(grade)
+    if math.isfinite(g.travel_error_300):
+        return f"+-{g.travel_error_300 * 1e6:.0f} um/300 mm over the stroke, THK A-678 Table 1"
+    return f"e_p + v_u over {stroke * 1e3:.0f} mm, THK A-678 Table 1"
+
+
+def budget_rows(ev) -> list:
+    """(label, value [m], source) of each row, the total and the repeatability."""
+    d, v = ev.design, ev.values
+    a = d.axis
+    rise = "heat balance, nut's top preload" if a.temperature_rise is None and a.duty_cycle else "the rise used"
+    pitch, yaw = a.guide_pitch / ARCSEC, a.guide_yaw / ARCSEC
+    return [
+        (f"lead error, grade {d.grade}", float(v["lead_error"]), lead_source(d.grade, a.stroke)),
+        ("thermal growth at the nut", float(v["thermal_error"]), f"{rise}; THK A-715"),
+        (f"deflection at the tool under {a.axial_load:.0f} N", float(v["elastic_error"]),
+         "softest point, chain + rocking; THK A-713"),
+        (f"Abbe: pitch {pitch:.3g}\" x {a.tool_height_eff * 1e3:.0f} mm, yaw {yaw:.3g}\" x "
+         f"{a.tool_offset * 1e3:.0f} mm", float(v["abbe_error"]), "THK A-716 eq. 39"),
+        ("lost motion (nut play, reduction backlash)", float(v["lost_motion"]), "0: preloaded nut; THK A-712"),
+        ("total, arithmetic worst case", float(v["positioning_error"]), "every row at its worst at once"),
+        ("repeatability (estimate)", float(v["repeatability"]), "lost motion + thermal growth"),
+    ]
+
+
+def budget_lines(ev) -> list:
+    """The budget as the text lines ``axisopt evaluate`` prints."""
+    lines = [f"positioning error budget over the {ev.design.axis.stroke * 1e3:.0f} mm stroke (um, largest "
+             f"deviation; THK A-712)"]
+    for label, value, source in budget_rows(ev):
+        lines.append(f"  {label:<44}{value * 1e6:>8.1f}  ({source})")
+    return lines
+
+
+def budget_dict(ev) -> dict:
+    """The budget for the JSON report: each row in um, the grade."""
+    rows = {label: round(value * 1e6, 3) for label, value, _ in budget_rows(ev)}
+    return {"grade": ev.design.grade, "rows_um": rows}
