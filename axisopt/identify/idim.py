@@ -130,7 +130,11 @@ def fit_candidate(est_rows: Rows, terms, effect: TimeModel, shape: dict) -> tupl
     """LS fit of ``terms`` with the effect's shape parameter found on the estimation run: (estimate, shape)."""
     shape = dict(shape)
     sh = effect.shape
-    if sh is not None and sh.bounds is not None:
+    if sh is not None and sh.search is not None:
+        own = [t for t in terms if t not in effect.terms]
+        r0 = est_rows.y - matrix(est_rows, own, shape) @ least_squares(est_rows, own, shape).theta
+        shape.update(sh.search(est_rows, r0, lambda v: least_squares(est_rows, terms, {**shape, **v}).rss))
+    elif sh is not None and sh.bounds is not None:
         lo, hi = sh.bounds(est_rows.sig, est_rows.proc)
         shape[sh.name] = search_shape(est_rows, terms, shape, lo, hi, sh.name)
     elif sh is not None and sh.choices is not None:
@@ -248,8 +252,9 @@ def _shape_flags(final: Estimate, rows: Rows, effects, quantity: str) -> list:
         if not 1.05 * lo < final.shape[sh.name] < 0.95 * hi:
             u, f = UNITS[quantity][sh.unit]
             out.append(f"{sh.name} = {final.shape[sh.name] * f:.3g} {u} is at the end of its search range "
-                       f"({lo * f:.3g}..{hi * f:.3g} {u}): the Stribeck velocity is not identifiable from "
-                       "this record")
+                       f"({lo * f:.3g}..{hi * f:.3g} {u}): the "
+                       + ("Stribeck velocity" if sh.name == "vs" else sh.label.split(" (")[0])
+                       + " is not identifiable from this record")
     return out
 
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from . import residual as rs
 from .effects.friction import RIPPLE_HARMONICS
-from .estimators import Estimate
+from .estimators import Estimate, predict
 from .timemodel import Rows, decimate, full_matrix, matrix
 from .timerecord import lowpass, welch
 
@@ -100,8 +100,7 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
     run, between runs and acceleration; see :mod:`.residual`."""
     proc = runs[0].proc
     W = np.vstack([matrix(r, est.terms, est.shape) for r in runs])
-    y = np.concatenate([r.y for r in runs])
-    r = y - W @ est.theta
+    r = np.concatenate([rw.y - predict(rw, est) for rw in runs])  # a per-run phase is each run's own
     W = rs.Span(W)
     breaks = np.concatenate([np.append(np.diff(rw.keep) != proc.nd, True) for rw in runs])[:-1]
     rho = rs.lag1(r, breaks)

@@ -37,14 +37,18 @@ class Term:
 @dataclass(frozen=True)
 class Shape:
     """A shape parameter of a time-record effect: found on the least-squares residual, then held fixed.
-    Either ``bounds`` ((sig, proc) -> (lo, hi): log grid, then golden section) or ``choices`` (proc -> values:
-    the one with the least residual)."""
+    Either ``bounds`` ((sig, proc) -> (lo, hi): log grid, then golden section), ``choices`` (proc -> values:
+    the one with the least residual) or ``search`` ((rows, r0, rss) -> {name: value, ...}: a scan of ``r0``,
+    the residual of the model so far on the estimation rows, refined on ``rss(values)``, the joint fit's RSS);
+    ``also``: further shape values a search returns, as (name, label, unit kind)."""
 
     name: str
     label: str
     unit: str
     bounds: Callable | None = None
     choices: Callable | None = None
+    search: Callable | None = None
+    also: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -56,6 +60,8 @@ class TimeModel:
     shape: Shape | None = None
     skip: Callable | None = None  # (ctx) -> why the record cannot show the effect ('' when it can)
     implausible: Callable | None = None  # (value, fc, fv) -> [texts]: fitted values outside the physical range
+    per_run: bool = False  # its columns are one sin, cos pair whose phase is each run's own: a held-out run keeps
+    #                        the amplitude and takes its own phase (:func:`..estimators.predict`)
     name: str = ""  # the effect's name (filled in by register_effect)
 
     @property
