@@ -56,6 +56,16 @@ def terms_by_name() -> dict:
     return out
 
 
+def shape_params() -> dict:
+    """Every shape parameter the registered effects search: name -> (label, unit kind)."""
+    out = {}
+    for eff in time_effects().values():
+        if eff.shape is not None:
+            out[eff.shape.name] = (eff.shape.label, eff.shape.unit)
+            out.update((n, (lab, u)) for n, lab, u in eff.shape.also)
+    return out
+
+
 def term(name: str) -> Term:
     return terms_by_name()[name]
 

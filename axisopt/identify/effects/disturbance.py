@@ -111,6 +111,8 @@ class TimePeriodic(Effect):
                     search=_freq_search),
         skip=_periodic_skip,
         implausible=_periodic_implausible,
+        derived=(("amp", "amplitude of the periodic force sqrt(ps^2 + pc^2)", "effort",
+                  lambda value: math.hypot(value("ps"), value("pc"))),),
         per_run=True,
     )
 
@@ -122,8 +124,8 @@ def bump(q: np.ndarray, x0: float, w: float) -> np.ndarray:
 
 
 def width_range(stroke_q: float) -> tuple:
-    """Widths a local spot is searched over: 0.25 % to 4 % of the stroke (2 to 32 mm on 0.8 m)."""
-    return 0.0025 * stroke_q, 0.04 * stroke_q
+    """Widths a local spot is searched over: 0.5 % to 4 % of the stroke (4 to 32 mm on 0.8 m)."""
+    return 0.005 * stroke_q, 0.04 * stroke_q
 
 
 def spot_scan(q: np.ndarray, cols: np.ndarray, r: np.ndarray, stroke_q: float) -> tuple:
