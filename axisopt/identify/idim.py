@@ -39,6 +39,7 @@ from .lostmotion import LostMotion, lost_motion
 from .selection import TIME_RULE as RULE
 from .timemodel import BASE, UNITS, Rows, make_rows, matrix, processing_for, symbol, terms_by_name, unit_of
 from .timeresidual import Unexplained, analyse_residual, noise_floor, periodic_peak, residual_peak
+from .timesignature import steady_line
 
 
 @dataclass
@@ -117,6 +118,11 @@ class TimeContext:
     def periodic_peak(self):
         """(period, share) when the baseline residual is mostly periodic in position, else None."""
         return periodic_peak(self.rows, self.base)
+
+    def steady_line(self):
+        """(frequency, share) when the baseline residual's spectral peak is a steady line in time (one phase
+        through the run: a periodic disturbance, not a resonance the moves excite), else None."""
+        return steady_line(self.rows, self.base, self.peak[0])
 
 
 def implausible(effects, est: Estimate, base: Estimate) -> str:

@@ -16,10 +16,11 @@ import math
 import numpy as np
 
 from . import residual as rs
-from .effects.disturbance import bump, frequency_band, line_scan, spot_scan
+from .estimators import predict
+from .effects.disturbance import bump, frequency_band, golden, line_scan, spot_scan
 
 TIED_RATIO = 0.5  # a line is at a fixed frequency when every speed group holds at least this share of its amplitude
-PASSES_MIN, AGREE_MIN = 4, 0.8  # a spot: at least this many passes over it, this share of them agreeing in sign
+PASSES_MIN, AGREE_MIN = 3, 0.8  # a spot: at least this many passes over it, this share of them agreeing in sign
 DECAY_TAUS = np.geomspace(0.3, 30.0, 13)  # [s] time constants the decay probe tries
 
 
@@ -48,7 +49,7 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
     seen at v/P) and the period in position v/f is given."""
     proc = runs[0].proc
     spans = [float(np.ptp(rw.sig["t"][rw.keep])) for rw in runs]
-    lo, hi = frequency_band(max(spans), proc)
+    lo, hi = frequency_band(max(spans), proc, fit=False)
     if hi <= lo:
         return rs.Probe("line", 0.0, 0.0, 2, {})
     i0, score, freqs = 0, None, None
@@ -60,13 +61,16 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
         score = s[:m] * rr if score is None else score[:m] + s[:m] * rr
         freqs = f[:m]
         i0 += rw.n
-    f0 = float(freqs[int(np.argmax(score))])
     scans = max(1, int(len(freqs) / 4))
 
-    def cols(rw):
-        ph = 2.0 * np.pi * f0 * rw.sig["t"]
-        return np.column_stack([np.sin(ph), np.cos(ph)])
-    G = _blocks(runs, pooled, cols)
+    def lines(f):
+        def cols(rw):
+            ph = 2.0 * np.pi * f * rw.sig["t"]
+            return np.column_stack([np.sin(ph), np.cos(ph)])
+        return _blocks(runs, pooled, cols)
+    f0, df = float(freqs[int(np.argmax(score))]), 1.0 / max(spans)
+    f0 = golden(lambda f: -rs.share(r, lines(f), W), f0 - 0.5 * df, f0 + 0.5 * df, 16)
+    G = lines(f0)
     p = rs.probe("line", r, G, W, neff, scans=scans, frequency=f0)
     coef = _joint(r, G, W)
     p.detail["amplitude"] = float(math.hypot(coef[0], coef[1]))  # the estimation run's
@@ -85,6 +89,7 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
     p.detail["speed"] = speeds[k]
     p.detail["group_amplitudes"] = amps
     p.detail["period"] = speeds[k] / f0
+    p.detail["fit_band"] = frequency_band(max(spans), proc)[1]  # a line above it is seen, not fitted
     return p
 
 
@@ -105,8 +110,12 @@ def spot_probe(runs, r, W, neff, pooled) -> rs.Probe:
         return np.column_stack([b * (sg > 0), b * (sg < 0)])
     G = pooled(runs, gcols)
     p = rs.probe("spot", r, G, W, neff, scans=scans, x0=x0, width=w)
-    coef = _joint(r, G, W)
+    seen = [float(G[:, k] @ G[:, k]) >= 1.0 for k in (0, 1)]  # a direction the rows cross the spot in
+    coef = np.zeros(2)
+    if any(seen):
+        coef[np.array(seen)] = _joint(r, G[:, np.array(seen)], W)
     up, down = float(coef[0]), -float(coef[1])  # the friction each direction adds (opposing the motion)
+    p.detail["crossed"] = "both" if all(seen) else "+" if seen[0] else "-"
     p.detail.update(height_plus=up, height_minus=down)
     # a spot is crossed on every pass: the height fitted on each pass over x0 +- 2w alone must agree in sign
     # (a transient of one move that happens to end there does not)
@@ -127,7 +136,8 @@ def spot_probe(runs, r, W, neff, pooled) -> rs.Probe:
     big = max(abs(up), abs(down))
     p.detail["directions"] = ("both" if min(abs(up), abs(down)) >= 0.3 * big else
                               "+" if abs(up) > abs(down) else "-")
-    p.detail["friction"] = up * down > 0  # opposes the motion both ways (a force in one sign does not)
+    # opposes the motion both ways (a force of one sign does not); when crossed one way only, its sign there
+    p.detail["friction"] = up * down > 0 if all(seen) else up + down > 0
     return p
 
 
@@ -147,6 +157,31 @@ def decay_probe(runs, r, W, neff, pooled) -> rs.Probe:
         if best is None or p.log10_p < best[0].log10_p:
             best = (p, G)
     p, G = best
-    s_force = rs.share(r, G[:, :1], W)
-    p.detail["friction_share"] = max(0.0, 1.0 - s_force / p.share) if p.share > 0 else 0.0
+    force, fric = _joint(r, G, W)
+    p.detail.update(amplitude=float(fric), force_amplitude=float(force))
+    p.detail["friction_share"] = fric**2 / (fric**2 + force**2) if fric or force else 0.0
     return p
+
+
+STEADY_SHARE = 0.5  # a spectral peak is a steady line when one sin, cos pair through the run holds this share
+
+
+def steady_line(rows, est, f_peak: float):
+    """(frequency, share) when one sin, cos pair near ``f_peak`` (refined on a fine scan) holds at least
+    :data:`STEADY_SHARE` of the residual of ``est`` on ``rows``: a line with one phase through the run (a
+    periodic disturbance), which a resonance excited by each move (its own phase each time) is not; else None."""
+    if not f_peak > 0:
+        return None
+    t = rows.sig["t"][rows.keep]
+    r = rows.y - predict(rows, est)
+    df = 1.0 / max(float(np.ptp(t)), 1e-9)
+
+    def share(f):
+        ph = 2.0 * np.pi * f * t
+        return rs.share(r, np.column_stack([np.sin(ph), np.cos(ph)]), None)
+    bin_ = rows.proc.fs / 512.0  # the resolution of the spectrum the peak comes from (Welch, 512 samples)
+    freqs, sc = line_scan(t, r, max(f_peak - 2.0 * bin_, df), f_peak + 2.0 * bin_)
+    f1 = float(freqs[int(np.argmax(sc))])
+    f0 = golden(lambda f: -share(f), f1 - 0.5 * df, f1 + 0.5 * df, 16)
+    s = share(f0)
+    return (f0, s) if s >= STEADY_SHARE else None

@@ -357,6 +357,9 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
             what = (f"holds a line at {f:.4g} Hz (amplitude {a:.3g} {unit}) that stays at that frequency at "
                     "every speed (not tied to speed or position)")
             key = "line_fixed"
+            if f > d.get("fit_band", f):
+                what += (f"; above {d['fit_band']:.3g} Hz, 0.6x the position filter's cut-off, where time_periodic "
+                         "is fitted (a record sampled faster, or a finer scale, raises the cut-off)")
         else:
             what = (f"holds a line at {f:.4g} Hz (amplitude {a:.3g} {unit}) seen only at speeds near "
                     f"{_mm(diag, d['speed']):.3g} mm/s: tied to speed, a period in position of "
@@ -365,6 +368,8 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
     elif p.kind == "spot":
         x0, w = _mm(diag, d["x0"]), _mm(diag, d["width"])
         dirs = {"both": "in both directions", "+": "in + travel only", "-": "in - travel only"}[d["directions"]]
+        if d.get("crossed", "both") != "both":
+            dirs = f"seen in {d['crossed']} travel (the record crosses it one way only)"
         kind = "a friction (opposes the motion)" if d.get("friction") else "a force of one sign"
         what = (f"has a bump at {x0:.1f} mm on the stroke, {w:.3g} mm wide (standard width), {dirs}, {kind}: "
                 f"+{d['height_plus']:.3g} {unit} in + travel, {d['height_minus']:.3g} {unit} in - travel")

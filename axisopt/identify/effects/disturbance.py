@@ -47,10 +47,15 @@ def golden(f, a: float, b: float, it: int = 22) -> float:
 
 
 # ------------------------------------------------------------------------------------------ time-periodic
-def frequency_band(t_span: float, proc) -> tuple:
+def frequency_band(t_span: float, proc, fit: bool = True) -> tuple:
     """(lo, hi) [Hz] a record can show a line in: at least 5 periods in the run and above the motion
-    bandwidth (the moves themselves fill the spectrum below it), below 0.9x the decimation cut-off."""
-    return max(5.0 / t_span, 1.5 * proc.f_motion), 0.9 * proc.fdec
+    bandwidth (the moves themselves fill the spectrum below it); below 0.6x the position filter's cut-off,
+    where its |H|^2 = 1/(1 + (f/f_c)^8) still passes 98 % (a line above the loop's bandwidth moves the table,
+    and an acceleration the filter attenuates would leave part of it in the line) and below 0.9x the
+    decimation cut-off.  ``fit=False``: the band a line can be seen in (its frequency, not its amplitude), up
+    to 0.9x the decimation cut-off."""
+    hi = min(0.6 * proc.fc, 0.9 * proc.fdec) if fit else 0.9 * proc.fdec
+    return max(5.0 / t_span, 1.5 * proc.f_motion), hi
 
 
 def line_scan(t: np.ndarray, r: np.ndarray, lo: float, hi: float, oversample: float = 4.0) -> tuple:
