@@ -176,6 +176,9 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     ctx = TimeContext(est_rows, base_ls, peak, span, stroke_q, lead_q, UNITS[est.quantity]["position"])
     for nm in names:
         e = effects[nm]
+        short = e.too_short(ctx) if e.too_short is not None and candidates else ""
+        if short:
+            raise InputError(f"--effects {nm}: {short}", source=est.source)
         why = e.skip(ctx) if e.skip is not None else ""
         if why:
             skipped[nm] = why

@@ -16,8 +16,8 @@ import math
 import numpy as np
 
 from . import residual as rs
-from .estimators import predict
 from .effects.disturbance import bump, frequency_band, golden, line_scan, spot_scan
+from .estimators import predict
 
 TIED_RATIO = 0.5  # a line is at a fixed frequency when every speed group holds at least this share of its amplitude
 PASSES_MIN, AGREE_MIN = 3, 0.8  # a spot: at least this many passes over it, this share of them agreeing in sign

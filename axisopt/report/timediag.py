@@ -420,8 +420,8 @@ def _unexplained_lines(diag: TimeDiagnosis) -> list:
                       "measures it") + ")", indent="", cont="  ")
     else:
         L += _wrap(f"residual: no structure beyond noise (RMS {u.rms:.3g} {unit} against a {u.noise:.3g} {unit} "
-                   "noise floor; tested over position incl. its period and spots, velocity, time incl. lines and decays, "
-                   "reversals and acceleration)",
+                   "noise floor; tested over position incl. its period and spots, velocity, time incl. lines and "
+                   "decays, reversals and acceleration)",
                    indent="", cont="  ")
     return L
 

@@ -11,10 +11,10 @@ constant).  Null and decoy records name none of the three and show none of the t
 import math
 
 import pytest
-from identify_helpers import LEAD, records, truth_for, unexplained
+from identify_helpers import DESIGN, LEAD, records, truth_for, unexplained
 
 from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import LoopSettings
+from axisopt.identify.timesynth import LoopSettings, simulate_axis
 from axisopt.report.timediag import time_diagnosis_dict, time_diagnosis_text
 
 NEW = ("time_periodic", "local_friction", "friction_drift")
@@ -208,3 +208,30 @@ def test_null_and_decoy_records_name_none_of_the_new_classes(tmp_path, plant, se
     assert not set(kinds) & set(SIGNATURES), kinds
     if not kw:
         assert diag.verdict == [] and not unexplained(diag)["remaining"]
+
+
+# ------------------------------------------------------------------------------------------------ bad input
+def test_a_run_too_short_for_the_line_asked_is_an_input_error(tmp_path, capsys):
+    """time_periodic asked by name on 0.8 s of record: no line can be resolved (20 periods at the highest
+    frequency fitted need more motion): one line naming the file, exit 2."""
+    from axisopt.cli import main
+
+    truth = truth_for(35, extra_force=periodic_force(12.0, 60.0, 0.0))
+    path = tmp_path / "short.csv"
+    simulate_axis(truth, duration=0.8, seed=35).write_csv(path)
+    assert main(["diagnose", str(path), "--design", str(DESIGN), "--effects", "time_periodic"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "short.csv" in err[0] and "resolves no line" in err[0]
+
+
+def test_nan_time_stamps_are_an_input_error(tmp_path, capsys):
+    from axisopt.cli import main
+
+    path = tmp_path / "nan.csv"
+    simulate_axis(truth_for(36), duration=1.0, seed=36).write_csv(path)
+    lines = path.read_text().splitlines()
+    lines[5] = "nan" + lines[5][lines[5].index(","):]
+    path.write_text("\n".join(lines) + "\n")
+    assert main(["diagnose", str(path), "--design", str(DESIGN)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "line 6, column 1 (time)" in err[0] and "not a finite number" in err[0]

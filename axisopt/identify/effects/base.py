@@ -60,6 +60,8 @@ class TimeModel:
     shape: Shape | None = None
     skip: Callable | None = None  # (ctx) -> why the record cannot show the effect ('' when it can)
     implausible: Callable | None = None  # (value, fc, fv) -> [texts]: fitted values outside the physical range
+    too_short: Callable | None = None  # (ctx) -> why the run is too short to resolve the effect ('' when it is
+    #                                     not): not tried; an input error when the effect is asked by name
     derived: tuple = ()  # (name, label, unit kind, value -> SI): quantities shown beside the terms (an amplitude)
     per_run: bool = False  # its columns are one sin, cos pair whose phase is each run's own: a held-out run keeps
     #                        the amplitude and takes its own phase (:func:`..estimators.predict`)

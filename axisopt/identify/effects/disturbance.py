@@ -28,6 +28,7 @@ import numpy as np
 from .base import Effect, Shape, Term, TimeModel, register_effect
 
 GOLDEN = (math.sqrt(5) - 1) / 2
+PERIODS = 20.0  # a line is resolved when the run holds this many of its periods
 
 
 def golden(f, a: float, b: float, it: int = 22) -> float:
@@ -48,14 +49,15 @@ def golden(f, a: float, b: float, it: int = 22) -> float:
 
 # ------------------------------------------------------------------------------------------ time-periodic
 def frequency_band(t_span: float, proc, fit: bool = True) -> tuple:
-    """(lo, hi) [Hz] a record can show a line in: at least 5 periods in the run and above the motion
+    """(lo, hi) [Hz] a record can show a line in: at least 20 periods in the run (its frequency bin 1/span is
+    then 5 % of the frequency, which the refinement narrows to better than 2 %) and above the motion
     bandwidth (the moves themselves fill the spectrum below it); below 0.6x the position filter's cut-off,
     where its |H|^2 = 1/(1 + (f/f_c)^8) still passes 98 % (a line above the loop's bandwidth moves the table,
     and an acceleration the filter attenuates would leave part of it in the line) and below 0.9x the
     decimation cut-off.  ``fit=False``: the band a line can be seen in (its frequency, not its amplitude), up
     to 0.9x the decimation cut-off."""
     hi = min(0.6 * proc.fc, 0.9 * proc.fdec) if fit else 0.9 * proc.fdec
-    return max(5.0 / t_span, 1.5 * proc.f_motion), hi
+    return max(PERIODS / t_span, 1.5 * proc.f_motion), hi
 
 
 def line_scan(t: np.ndarray, r: np.ndarray, lo: float, hi: float, oversample: float = 4.0) -> tuple:
@@ -87,10 +89,13 @@ def _freq_search(rows, r0, rss) -> dict:
     return {"freq": golden(lambda f: rss({"freq": f}), f0 - 0.5 * df, f0 + 0.5 * df)}
 
 
-def _periodic_skip(ctx) -> str:
+def _periodic_short(ctx) -> str:
     t = ctx.rows.sig["t"][ctx.rows.keep]
-    lo, hi = frequency_band(float(np.ptp(t)), ctx.rows.proc)
-    return "" if hi > lo else f"the run is too short for a line above {lo:.3g} Hz and below {hi:.3g} Hz"
+    span = float(np.ptp(t))
+    lo, hi = frequency_band(span, ctx.rows.proc)
+    return "" if hi > lo else (f"{span:.3g} s of motion resolves no line: {PERIODS:g} periods need "
+                               f"{PERIODS / hi:.3g} s at the "
+                               f"highest frequency fitted, {hi:.3g} Hz (0.6x the position filter's cut-off)")
 
 
 def _periodic_implausible(value, fc, fv) -> list:
@@ -114,7 +119,8 @@ class TimePeriodic(Effect):
          Term("pc", "periodic force, cos(2 pi f t) coefficient", "effort", _periodic(np.cos), simulated=False)),
         shape=Shape("freq", "frequency of the periodic force (line spectrum, then refined)", "frequency",
                     search=_freq_search),
-        skip=_periodic_skip,
+        skip=_periodic_short,
+        too_short=_periodic_short,
         implausible=_periodic_implausible,
         derived=(("amp", "amplitude of the periodic force sqrt(ps^2 + pc^2)", "effort",
                   lambda value: math.hypot(value("ps"), value("pc"))),),
@@ -161,8 +167,8 @@ def _spot_search(rows, r0, rss) -> dict:
     step = math.log(widths[1] / widths[0])
     for _ in range(2):  # coordinate refinement on the joint RSS: position, then width
         w = math.exp(lw)
-        x0 = golden(lambda x: rss({"x0": x, "width": w}), x0 - w, x0 + w, 16)
-        lw = golden(lambda a: rss({"x0": x0, "width": math.exp(a)}), lw - step, lw + step, 14)
+        x0 = golden(lambda x, w=w: rss({"x0": x, "width": w}), x0 - w, x0 + w, 16)
+        lw = golden(lambda a, x0=x0: rss({"x0": x0, "width": math.exp(a)}), lw - step, lw + step, 14)
     return {"x0": x0, "width": math.exp(lw)}
 
 
