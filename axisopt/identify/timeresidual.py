@@ -192,7 +192,9 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
         a, sg = rw.sig["a"], np.sign(rw.sig["v"])
         return np.column_stack([sg * a, np.abs(a), a * np.abs(a)])
     probes.append(rs.probe("acceleration", r, pooled(runs, acc_cols), W, neff))
-    probes += [f(runs, r, W, neff, pooled) for f in (line_probe, spot_probe, decay_probe)]
+    def neff_of(res):
+        return rs.n_effective(len(res), rs.lag1(res, breaks))
+    probes += [f(runs, r, W, neff_of, pooled) for f in (line_probe, spot_probe, decay_probe)]
     probes.sort(key=lambda p: p.log10_p)
     noise = math.sqrt(sum(noise_floor(rw) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs))
     return Unexplained(probes, float(np.sqrt(np.mean(r**2))), noise, rho, len(r))

@@ -5,7 +5,10 @@ wide, in which directions) and a decay within the run (time constant, a friction
 Each is an added-variable probe of :mod:`.residual` (share of the residual against the model's columns,
 chi-square with the effective number of rows) scanned over its nonlinear parameter, and pays for the scan
 with a Bonferroni factor of the number of independent trials: frequencies 1/span apart, positions a
-narrowest width apart times the widths, the time constants tried.  The scans reuse the effects' own
+narrowest width apart times the widths, the time constants tried.  The effective number of rows is that of the
+residual with the probe's fit taken out (``neff``, a function of a residual): the noise's correlation, not that
+of the structure tested (a slow drift left in the residual would make its own lag-1 correlation near one and
+hide itself).  The scans reuse the effects' own
 (:mod:`.effects.disturbance`); the probe's columns are computed as the regression's (filtered, decimated).
 """
 
@@ -34,6 +37,16 @@ def _blocks(runs, pooled, cols):
         out[i0 : i0 + rw.n, j * k : (j + 1) * k] = G[i0 : i0 + rw.n]
         i0 += rw.n
     return out
+
+
+def _rescore(p: rs.Probe, r, G, W, neff, scans: int) -> rs.Probe:
+    """``p`` with its significance on the effective rows of the residual with its own fit taken out."""
+    Go = rs.orthogonal(G, W)
+    coef, *_ = np.linalg.lstsq(Go, r, rcond=None)
+    n = neff(r - Go @ coef)
+    chi = n * p.share / max(1.0 - p.share, 1e-12)
+    p.log10_p = min(rs.log10_p_chi2(chi, p.k) + math.log10(max(scans, 1)), 0.0)
+    return p
 
 
 def _joint(r, G, W) -> np.ndarray:
@@ -71,7 +84,7 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
     f0, df = float(freqs[int(np.argmax(score))]), 1.0 / max(spans)
     f0 = golden(lambda f: -rs.share(r, lines(f), W), f0 - 0.5 * df, f0 + 0.5 * df, 16)
     G = lines(f0)
-    p = rs.probe("line", r, G, W, neff, scans=scans, frequency=f0)
+    p = _rescore(rs.probe("line", r, G, W, 1.0, scans=scans, frequency=f0), r, G, W, neff, scans)
     coef = _joint(r, G, W)
     p.detail["amplitude"] = float(math.hypot(coef[0], coef[1]))  # the estimation run's
     v = np.abs(np.concatenate([rw.sig["v"][rw.keep] for rw in runs]))
@@ -109,7 +122,7 @@ def spot_probe(runs, r, W, neff, pooled) -> rs.Probe:
         b, sg = bump(rw.sig["q"], x0, w), np.sign(rw.sig["v"])
         return np.column_stack([b * (sg > 0), b * (sg < 0)])
     G = pooled(runs, gcols)
-    p = rs.probe("spot", r, G, W, neff, scans=scans, x0=x0, width=w)
+    p = _rescore(rs.probe("spot", r, G, W, 1.0, scans=scans, x0=x0, width=w), r, G, W, neff, scans)
     seen = [float(G[:, k] @ G[:, k]) >= 1.0 for k in (0, 1)]  # a direction the rows cross the spot in
     coef = np.zeros(2)
     if any(seen):
@@ -153,10 +166,11 @@ def decay_probe(runs, r, W, neff, pooled) -> rs.Probe:
             e = np.exp(-rw.sig["t"] / tau)
             return np.column_stack([e, np.sign(rw.sig["v"]) * e])
         G = pooled(runs, cols)
-        p = rs.probe("decay", r, G, W, neff, scans=len(taus), tau=float(tau))
-        if best is None or p.log10_p < best[0].log10_p:
+        p = rs.probe("decay", r, G, W, 1.0, scans=len(taus), tau=float(tau))
+        if best is None or p.share > best[0].share:
             best = (p, G)
     p, G = best
+    p = _rescore(p, r, G, W, neff, len(taus))
     force, fric = _joint(r, G, W)
     p.detail.update(amplitude=float(fric), force_amplitude=float(force))
     p.detail["friction_share"] = fric**2 / (fric**2 + force**2) if fric or force else 0.0

@@ -117,7 +117,7 @@ class TimePeriodic(Effect):
         "a force periodic in time, not in position (a pump, spindle or fan unbalance, mains hum)",
         (Term("ps", "periodic force, sin(2 pi f t) coefficient", "effort", _periodic(np.sin), simulated=False),
          Term("pc", "periodic force, cos(2 pi f t) coefficient", "effort", _periodic(np.cos), simulated=False)),
-        shape=Shape("freq", "frequency of the periodic force (line spectrum, then refined)", "frequency",
+        shape=Shape("freq", "frequency of the periodic force (spectrum, refined)", "frequency",
                     search=_freq_search),
         skip=_periodic_short,
         too_short=_periodic_short,
@@ -165,10 +165,12 @@ def _spot_search(rows, r0, rss) -> dict:
     i, j = np.unravel_index(int(np.argmax(score)), score.shape)
     x0, lw = float(xs[i]), math.log(float(widths[j]))
     step = math.log(widths[1] / widths[0])
-    for _ in range(2):  # coordinate refinement on the joint RSS: position, then width
+    a_lo, a_hi = math.log(widths[0]), math.log(widths[-1])
+    for _ in range(2):  # coordinate refinement on the joint RSS: position, then width (within its range)
         w = math.exp(lw)
         x0 = golden(lambda x, w=w: rss({"x0": x, "width": w}), x0 - w, x0 + w, 16)
-        lw = golden(lambda a, x0=x0: rss({"x0": x0, "width": math.exp(a)}), lw - step, lw + step, 14)
+        lw = golden(lambda a, x0=x0: rss({"x0": x0, "width": math.exp(a)}), max(lw - step, a_lo),
+                    min(lw + step, a_hi), 14)
     return {"x0": x0, "width": math.exp(lw)}
 
 
