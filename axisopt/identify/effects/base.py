@@ -117,7 +117,8 @@ class Effect:
 _REGISTRY: dict[str, Effect] = {}
 
 # The built-in time-record effects in the order they are tried and listed; an effect registered later follows.
-TIME_ORDER = ("direction_asymmetry", "stribeck", "position_friction", "extra_mode", "lead_ripple", "quadratic_drag")
+TIME_ORDER = ("direction_asymmetry", "stribeck", "position_friction", "extra_mode", "lead_ripple", "quadratic_drag",
+              "time_periodic", "local_friction", "friction_drift")
 
 
 def register_effect(effect):
@@ -139,6 +140,11 @@ def unregister_effect(name: str) -> None:
 def library() -> MappingProxyType:
     """The effects reduced tables can show (those with table ``kinds``), by name, in registration order."""
     return MappingProxyType({n: e for n, e in _REGISTRY.items() if e.kinds})
+
+
+def all_effects() -> MappingProxyType:
+    """Every registered effect by name, tables' and time records' (a calibration file may name either)."""
+    return MappingProxyType(dict(_REGISTRY))
 
 
 def time_effects() -> dict:
