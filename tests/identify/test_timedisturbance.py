@@ -235,3 +235,30 @@ def test_nan_time_stamps_are_an_input_error(tmp_path, capsys):
     assert main(["diagnose", str(path), "--design", str(DESIGN)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "line 6, column 1 (time)" in err[0] and "not a finite number" in err[0]
+
+
+# ------------------------------------------------------------------------------------------ --save-calibration
+@pytest.mark.parametrize("name, effect, key, true, unit", [
+    ("pump", "time_periodic", "freq", 14.5, "Hz"),
+    ("spot", "local_friction", "x0", 400.0, "mm"),
+])
+def test_save_calibration_of_a_time_record_is_read_by_evaluate(tmp_path, capsys, name, effect, key, true, unit):
+    """The shipped example (problems/data/generate_timerecord.py) saved as a calibration: the effect with its
+    parameters in units; evaluate applies the Coulomb friction and lists the effect as not representable."""
+    import yaml
+
+    from axisopt.cli import main
+
+    data = DESIGN.parent
+    cal = tmp_path / "cal.yaml"
+    assert main(["diagnose", str(data / f"table_x_{name}_est.csv"), str(data / f"table_x_{name}_val.csv"),
+                 "--design", str(DESIGN), "--save-calibration", str(cal)]) == 0
+    out = capsys.readouterr().out
+    assert f"not applied: {effect}: not representable in evaluate" in out
+    saved = yaml.safe_load(cal.read_text())
+    assert saved["verdict"] == effect and saved["effects"][0]["name"] == effect
+    value, u = saved["effects"][0]["parameters"][key]["value"].split()
+    assert u == unit and float(value) == pytest.approx(true, rel=0.02)
+    assert "coulomb_friction" in saved["baseline"]
+    assert main(["evaluate", str(DESIGN), "--calibration", str(cal)]) == 0
+    assert "(calibrated)" in capsys.readouterr().out
