@@ -73,6 +73,8 @@ class TimeDiagnosis:
     unexplained: Unexplained | None = None  # structure left in the final residual
     flags: dict = field(default_factory=dict)  # 'baseline' / 'final' -> [plausibility or identifiability notes]
     lost: LostMotion | None = None  # lost motion between motor and table (records with motor_position)
+    equivalent: list = field(default_factory=list)  # (round, accepted, alternative, % apart): equally good
+    top_speed: float = 0.0  # the record's top table speed [m/s] (the regime effects' plausibility is judged in)
 
     @property
     def verdict(self) -> list:
@@ -188,7 +190,7 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     terms, shape = list(BASE), {}
     cur = base_ls
     cur_ho = heldout_rmse(est_rows, val_rows, terms, shape)
-    accepted, rounds, rejected, pairs = [], [], [], []
+    accepted, rounds, rejected, pairs, equivalent = [], [], [], [], []
     while len(accepted) < max_effects:
         scored = []
         for e in pool:
@@ -213,6 +215,11 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
                 top = c
         if top is not None:
             top.reason = ""
+            ho_top = cur_ho * (1.0 - top.gain / 100.0)
+            for c in scored:  # another that passes too and predicts as well: the data do not tell them apart
+                d = RULE.equivalent(ho_top, cur_ho * (1.0 - c.gain / 100.0)) if c is not top and not c.reason else None
+                if d is not None:
+                    equivalent.append((len(rounds), top, c, d))
             for c in scored:
                 if c is not top and not c.reason:
                     c.reason = f"{top.effect.name} explains more (dBIC {top.dbic:.1f})"
@@ -244,10 +251,15 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     un = analyse_residual([est_rows] + val_rows, final)
     flags = {"baseline": baseline_flags(base_iv, est.quantity), "final": baseline_flags(final, est.quantity)}
     flags["final"] += _shape_flags(final, est_rows, effects.values(), est.quantity)
+    vmax = float(np.max(np.abs(est_rows.sig["v"][est_rows.keep]))) * (1.0 if est.quantity == "force" else
+                                                                       lead_q / (2.0 * math.pi) if lead_q else 0.0)
+    flags["final"] += [f"{c.effect.name}: {why}" for c in accepted if c.effect.regime is not None
+                       for why in [c.effect.regime(vmax)] if why]
     lost = lost_motion(est_rows, val_rows, final_ls, noise_floor(est_rows), (design or {}).get("lead", 0.0))
     times = {"ls": t_ls, "iv": t_iv, "diagnose": time.perf_counter() - t0}
     return TimeDiagnosis(est.quantity, est_rows, val_rows, ctrl, base_ls, base_iv, final, final_ls, accepted,
-                         rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags, lost)
+                         rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags, lost,
+                         equivalent, vmax)
 
 
 def _shape_flags(final: Estimate, rows: Rows, effects, quantity: str) -> list:

@@ -195,6 +195,7 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         L += _wrap(f"{q} error: {_errors(diag, diag.final)}", indent="    ")
         for f in diag.flags.get("final", []):
             L += _wrap(f"! {f}", indent="  ", cont="      ")
+        L += _equivalent_lines(diag)
     elif not (diag.lost and diag.lost.accepted):
         L += _wrap("verdict: nothing named beyond the baseline: " + _why_none(diag), indent="", cont="  ")
     L += _lost_motion_lines(diag)
@@ -202,6 +203,24 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
     L += _wrap(f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves the two "
                "are the same column")
     return "\n".join(L)
+
+
+def _equivalent_text(diag: TimeDiagnosis, a, b, apart: float) -> str:
+    top = diag.top_speed
+    notes = [f"{e.name}: {w}" for e in (a.effect, b.effect) if e.regime is not None for w in [e.regime(top)] if w]
+    return (f"{a.effect.name} and {b.effect.name} explain the data equally well: held-out RMSE {apart:.2f} % "
+            f"apart, within the rule's {TIME_RULE.resolution:g} % resolution (dBIC {a.dbic:.1f} against "
+            f"{b.dbic:.1f}); {a.effect.name} is named for its lower dBIC, not because the data tell them apart. "
+            + (" ".join(n[0].upper() + n[1:] + "." for n in notes) + " " if notes else "")
+            + f"To separate them: for {a.effect.name}, {a.effect.evidence or 'a test that shows it alone'}; "
+            f"for {b.effect.name}, {b.effect.evidence or 'a test that shows it alone'}.")
+
+
+def _equivalent_lines(diag: TimeDiagnosis) -> list:
+    out = []
+    for _k, a, b, apart in diag.equivalent:
+        out += _wrap("~ " + _equivalent_text(diag, a, b, apart), indent="  ", cont="      ")
+    return out
 
 
 def _lost_motion_lines(diag: TimeDiagnosis) -> list:
@@ -476,6 +495,11 @@ def time_diagnosis_dict(diag: TimeDiagnosis) -> dict:
         "pairs": [{"round": k, "effects": [a.effect.name, b.effect.name], "dBIC": dbic, "gain_percent": gain,
                    "accepted": not why, "reason": why} for k, a, b, _e, dbic, gain, why in diag.pairs],
         "flags": diag.flags,
+        "equivalent": [{"round": k, "named": a.effect.name, "alternative": b.effect.name, "percent_apart": apart,
+                        "dBIC": [a.dbic, b.dbic], "text": _equivalent_text(diag, a, b, apart),
+                        "to_separate": {a.effect.name: a.effect.evidence, b.effect.name: b.effect.evidence}}
+                       for k, a, b, apart in diag.equivalent],
+        "top_speed_mm_s": diag.top_speed * 1e3,
         "unexplained": _unexplained_dict(diag),
         "lost_motion": None if diag.lost is None else {
             "accepted": diag.lost.accepted, "reason": diag.lost.reason,

@@ -262,3 +262,49 @@ def test_save_calibration_of_a_time_record_is_read_by_evaluate(tmp_path, capsys,
     assert "coulomb_friction" in saved["baseline"]
     assert main(["evaluate", str(DESIGN), "--calibration", str(cal)]) == 0
     assert "(calibrated)" in capsys.readouterr().out
+
+
+# ------------------------------------------------------------------ equally good explanations, and the regime
+@pytest.fixture
+def twin_of_stribeck():
+    """A second effect with Stribeck's columns under another name and its own evidence: the data cannot tell the
+    two apart, whatever the record."""
+    from dataclasses import replace as dc_replace
+
+    from axisopt.identify.effects import Effect, register_effect, time_effects, unregister_effect
+
+    class Twin(Effect):
+        name = "stribeck_twin"
+        time = dc_replace(time_effects()["stribeck"], evidence="the twin's own test")
+
+    register_effect(Twin)
+    yield
+    unregister_effect("stribeck_twin")
+
+
+def test_two_effects_that_explain_the_data_equally_are_said_to_be_and_separated(tmp_path, plant, twin_of_stribeck):
+    truth = truth_for(21, stribeck=150.0, stribeck_v=0.005)
+    diag = diagnose_time_files(records(tmp_path, truth, 21), plant=plant)
+    assert len(diag.verdict) == 1 and diag.verdict[0] in ("stribeck", "stribeck_twin")
+    (k, a, b, apart), = diag.equivalent
+    assert {a.effect.name, b.effect.name} == {"stribeck", "stribeck_twin"} and apart < 1.0
+    text = time_diagnosis_text(diag)
+    assert "explain the data equally well" in text and "the twin's own test" in text
+    assert "constant speeds below 10 mm/s" in text  # stribeck's evidence
+    eq = time_diagnosis_dict(diag)["equivalent"][0]
+    assert eq["percent_apart"] == pytest.approx(apart) and set(eq["to_separate"]) == {"stribeck", "stribeck_twin"}
+
+
+def test_an_effect_named_outside_its_plausible_regime_is_flagged(tmp_path, plant, monkeypatch):
+    """A drag c v|v| hidden in a record that never exceeds 7 mm/s: when quadratic_drag is named, its declaration
+    says the reading is implausible at that speed (churning and seal drag show from tens of mm/s)."""
+    from axisopt.identify import timesynth
+
+    monkeypatch.setattr(timesynth.trapezoid_reference, "__defaults__",
+                        ((0.001, 0.002, 0.004, 0.007), timesynth.ACCELS))
+    truth = truth_for(26, quadratic_drag=4.0e6)
+    diag = diagnose_time_files(records(tmp_path, truth, 26), plant=plant)
+    assert diag.top_speed < 0.0075 and diag.verdict == ["quadratic_drag"]
+    assert any(f.startswith("quadratic_drag: a drag growing with v|v| at a top speed of 7.") for f in
+               diag.flags["final"])
+    assert "is the less plausible" in time_diagnosis_text(diag)

@@ -62,6 +62,8 @@ class TimeModel:
     implausible: Callable | None = None  # (value, fc, fv) -> [texts]: fitted values outside the physical range
     too_short: Callable | None = None  # (ctx) -> why the run is too short to resolve the effect ('' when it is
     #                                     not): not tried; an input error when the effect is asked by name
+    evidence: str = ""  # the measurement that shows this effect apart from the others
+    regime: Callable | None = None  # (top table speed [m/s]) -> why the effect is implausible at such speeds, or ''
     derived: tuple = ()  # (name, label, unit kind, value -> SI): quantities shown beside the terms (an amplitude)
     per_run: bool = False  # its columns are one sin, cos pair whose phase is each run's own: a held-out run keeps
     #                        the amplitude and takes its own phase (:func:`..estimators.predict`)

@@ -122,6 +122,7 @@ class TimePeriodic(Effect):
         skip=_periodic_short,
         too_short=_periodic_short,
         implausible=_periodic_implausible,
+        evidence="a record at rest in position control with the suspected source running: the line stays",
         derived=(("amp", "amplitude of the periodic force sqrt(ps^2 + pc^2)", "effort",
                   lambda value: math.hypot(value("ps"), value("pc"))),),
         per_run=True,
@@ -199,6 +200,7 @@ class LocalFriction(Effect):
                     also=(("width", "standard width of the local friction", "position"),)),
         skip=_spot_skip,
         implausible=_spot_implausible,
+        evidence="slow constant-speed passes over the place in both directions: the bump stays at the same millimetres",
     )
 
 
@@ -225,4 +227,5 @@ class FrictionDrift(Effect):
               lambda sig, proc, shape: np.sign(sig["v"]) * np.exp(-sig["t"] / shape["tau"])),),
         shape=Shape("tau", "time constant of the friction drift (1-D search)", "time", bounds=_tau_bounds),
         implausible=_drift_implausible,
+        evidence="the same run repeated warm (after a warm-up cycle): the drift is gone",
     )

@@ -92,6 +92,7 @@ class ExtraMode(Effect):
         (Term("beta", "m1 m2/k of the extra mode", "snap", lambda sig, proc, shape: sig["snap"], simulated=False),),
         skip=_mode_skip,
         implausible=_mode_implausible,
+        evidence="a frequency response (tap test or sine sweep) of the table: a peak at the resonance",
     )
 
     def _peak(self, ctx):
