@@ -130,7 +130,12 @@ def _read(path) -> dict:
     lib = all_effects()
     for item in node.value if node is not None and node.value else []:
         s = Section(item, str(path), "effects", EFFECT_SPEC)
-        name = s.choice("name", tuple(lib), required=True)  # the library now (effects may be registered)
+        node = s.raw("name", None, required=True)  # the library now (effects may be registered)
+        name = node.value
+        if name not in lib:  # the hint first: the library is long and an error is one line
+            near = close_matches(str(name), list(lib), n=1)
+            raise s.error("name", f"unknown effect '{str(name)[:60]}'" + (f"; did you mean '{near[0]}'?" if near
+                                                                          else "") + f" (known: {', '.join(lib)})")
         ps = s.read("parameters")
         vals = values(ps)
         if not vals:
