@@ -132,7 +132,7 @@ def _read(path) -> dict:
         s = Section(item, str(path), "effects", EFFECT_SPEC)
         node = s.raw("name", None, required=True)  # the library now (effects may be registered)
         name = node.value
-        if name not in lib:  # the hint first: the library is long and an error is one line
+        if not isinstance(name, str) or name not in lib:  # the hint first: the library is long, an error one line
             near = close_matches(str(name), list(lib), n=1)
             raise s.error("name", f"unknown effect '{str(name)[:60]}'" + (f"; did you mean '{near[0]}'?" if near
                                                                           else "") + f" (known: {', '.join(lib)})")

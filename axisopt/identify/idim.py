@@ -5,15 +5,16 @@ its columns, shape search, when a record can show it and its physical range) is 
 baseline, and effects are selected forward by :data:`.selection.TIME_RULE`.
 
 Selection: each round the candidates are sorted by dBIC = n ln(RSS1/RSS0) + dp ln n on the estimation run; a
-candidate passes when dBIC < -10, the RMSE of the effort predicted on the validation runs (or, with no
-validation run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %, and its
-values are physical; the best that passes is accepted and every other candidate keeps the first criterion it
-failed as its reason.  When no single effect passes, pairs of the candidates that lower BIC alone are fitted
-together and accepted on the same tests when each member is needed (:func:`best_pair`).  The baseline and
-final fits carry plausibility and identifiability flags (:func:`baseline_flags`), the final residual is tested
-for structure (:mod:`.timeresidual`) and, with a motor encoder, the lost motion measured (:mod:`.lostmotion`).
-The text and JSON of a :class:`TimeDiagnosis` are in :mod:`axisopt.report.timediag`.  Nothing here imports the
-CLI or YAML.
+candidate passes when dBIC < -10, the RMSE of the effort predicted on the validation runs (or, with no validation
+run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %, and its values are
+physical; the best that passes is accepted and every other candidate keeps the first criterion it failed as its
+reason; another candidate that passes too and predicts the held-out data within the rule's resolution is recorded
+as an equally good explanation (``equivalent``). When no single effect passes, pairs of the candidates that lower
+BIC alone are fitted together and accepted on the same tests when each member is needed (:func:`best_pair`). The
+baseline and final fits carry plausibility and identifiability flags (:func:`baseline_flags`), the final residual
+is tested for structure (:mod:`.timeresidual`) and, with a motor encoder, the lost motion measured
+(:mod:`.lostmotion`). The text and JSON of a :class:`TimeDiagnosis` are in :mod:`axisopt.report.timediag`. Nothing
+here imports the CLI or YAML.
 """
 
 from __future__ import annotations
