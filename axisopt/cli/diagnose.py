@@ -53,17 +53,22 @@ def cmd_diagnose(args) -> int:
         if not quiet:
             print(f"report written to {path}")
     if args.save_calibration:
-        cal = save_calibration(diag, args.save_calibration, design, args.data)
-        if not quiet:
-            print(f"calibration written to {args.save_calibration}")
-            import textwrap
-
-            for head, key in (("applied by evaluate", "applied"), ("not applied", "not_applied")):
-                for a in cal.get(key, []):
-                    print("\n".join(textwrap.wrap(f"  {head}: {a}", 100, subsequent_indent="      ")))
+        _print_calibration(save_calibration(diag, args.save_calibration, design, args.data), args.save_calibration,
+                           quiet)
     if args.json:
         write_json(diagnosis_dict(diag), args.json)
     return EXIT_OK
+
+
+def _print_calibration(cal: dict, path, quiet: bool) -> None:
+    if quiet:
+        return
+    import textwrap
+
+    print(f"calibration written to {path}")
+    for head, key in (("applied by evaluate", "applied"), ("not applied", "not_applied")):
+        for a in cal.get(key, []):
+            print("\n".join(textwrap.wrap(f"  {head}: {a}", 100, subsequent_indent="      ")))
 
 
 def _cmd_diagnose_time(args) -> int:
@@ -72,18 +77,24 @@ def _cmd_diagnose_time(args) -> int:
     from ..identify.idim import diagnose_time_files
     from ..report.timediag import time_diagnosis_dict, time_diagnosis_text
 
-    for opt, val in (("--report", args.report), ("--save-calibration", args.save_calibration)):
-        if val:
-            raise InputError(f"{opt} is not available for time records (use --json)")
+    if args.report:
+        raise InputError("--report is not available for time records (use --json)")
     if args.gain is not None:  # refused when malformed, whether or not the record is a current record
         from ..identify.timerecord import parse_gain
 
         parse_gain(args.gain, source="--gain")
     names = [n.strip() for n in args.effects.split(",") if n.strip()] if args.effects else None
-    diag = diagnose_time_files(args.data, plant=plant_from_design(load_design(args.design)), gain=args.gain,
+    design = load_design(args.design)
+    diag = diagnose_time_files(args.data, plant=plant_from_design(design), gain=args.gain,
                                candidates=names, max_effects=args.max_effects)
-    if not stdout_taken(args.json):
+    quiet = stdout_taken(args.json, args.save_calibration)
+    if not quiet:
         print(time_diagnosis_text(diag))
+    if args.save_calibration:
+        from ..identify.timecalibration import save_time_calibration
+
+        _print_calibration(save_time_calibration(diag, args.save_calibration, design, args.data),
+                           args.save_calibration, quiet)
     if args.json:
         write_json(time_diagnosis_dict(diag), args.json)
     return EXIT_OK

@@ -14,7 +14,8 @@ File layout (values carry units; ``kind`` names the quantity so the value parses
     applied: [...]          # informational, recomputed on apply
     not_applied: [...]
 
-What ``evaluate`` cannot represent (Stribeck, backlash, thermal drift, damping ...) is listed as not applied.
+What ``evaluate`` cannot represent (Stribeck, backlash, thermal drift, damping, a periodic force ...) is listed as
+not applied.  Time records write theirs with :func:`.timecalibration.time_calibration_dict` in the same layout.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from ..errors import InputError
 from ..physics.screw import E_STEEL
 from ..units import KINDS
 from ..yamlio import Key, Section, Spec, close_matches, read_yaml
-from .effects import library
+from .effects import all_effects
 
 FORMAT = 1
 
@@ -126,10 +127,15 @@ def _read(path) -> dict:
     node = root.raw("effects")
     if node is not None and node.value is not None and not isinstance(node.value, list):
         raise root.error("effects", "expected a list of effects")
-    lib = library()
+    lib = all_effects()
     for item in node.value if node is not None and node.value else []:
         s = Section(item, str(path), "effects", EFFECT_SPEC)
-        name = s.choice("name", tuple(lib), required=True)  # the library now (effects may be registered)
+        node = s.raw("name", None, required=True)  # the library now (effects may be registered)
+        name = node.value
+        if not isinstance(name, str) or name not in lib:  # the hint first: the library is long, an error one line
+            near = close_matches(str(name), list(lib), n=1)
+            raise s.error("name", f"unknown effect '{str(name)[:60]}'" + (f"; did you mean '{near[0]}'?" if near
+                                                                          else "") + f" (known: {', '.join(lib)})")
         ps = s.read("parameters")
         vals = values(ps)
         if not vals:
@@ -173,7 +179,7 @@ PARAMETERS_SPEC = Spec("parameters", "the effect's calibrated parameters, by the
                        extra=Key("section", spec=_param_spec("parameter", "a calibrated effect parameter", None)),
                        extra_doc="a parameter name of the effect")
 EFFECT_SPEC = Spec("effect", "an accepted effect with its calibrated parameters", {
-    "name": Key("choice", "the effect (axisopt's effect library)", required=True, choices=tuple(library())),
+    "name": Key("choice", "the effect (axisopt's effect library)", required=True, choices=tuple(all_effects())),
     "parameters": Key("section", required=True, spec=PARAMETERS_SPEC),
 })
 CALIBRATION_SPEC = Spec("calibration", "a calibration saved by axisopt diagnose (applied by evaluate "
@@ -216,7 +222,8 @@ def calibrate_design(design, cal) -> tuple:
     """Apply a calibration (dict as written, or as read by ``_read``) to a Design.
 
     Returns (design, applied descriptions, not-applied descriptions)."""
-    if "baseline" in cal and cal["baseline"] and isinstance(next(iter(cal["baseline"].values())), dict):
+    written = [*(cal.get("baseline") or {}).values(), *cal.get("effects", [])]
+    if any(isinstance(v, dict) for v in written):  # as written (values with units), not as read
         cal = _parse_dict(cal)
     applied, skipped = [], []
     base = cal["baseline"]
@@ -249,7 +256,7 @@ def calibrate_design(design, cal) -> tuple:
         )
     if "damping_ratio" in base:
         skipped.append(f"damping_ratio {base['damping_ratio']:.3f}: evaluate has no damping output")
-    lib = library()
+    lib = all_effects()
     for name, vals, *where in cal["effects"]:
         vals = _Reads(vals)
         try:

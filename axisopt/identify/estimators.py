@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .effects import time_effects
 from .timemodel import Processing, Rows, decimate, full_matrix, matrix, signals, term
 from .timerecord import TimeRecord, derivatives, lowpass
 
@@ -235,7 +236,7 @@ def instrumental_variables(rows: Rows, terms, shape=None, ctrl: Controller | Non
                 note = f"closed-loop simulation diverged at iteration {it}; LS kept"
                 th, V = ls.theta.copy(), W
                 break
-            V = matrix(rows, terms, shape, sig=signals(qs, rows.proc))
+            V = matrix(rows, terms, shape, sig={**signals(qs, rows.proc), "t": rows.sig["t"]})
             for j in own:
                 V[:, j] = W[:, j]
             new = solve(V)
@@ -262,7 +263,21 @@ def instrumental_variables(rows: Rows, terms, shape=None, ctrl: Controller | Non
 
 
 def predict(rows: Rows, est: Estimate) -> np.ndarray:
-    return matrix(rows, est.terms, est.shape) @ est.theta
+    """The effort ``est`` predicts at the rows.  An effect whose phase is each run's own (``per_run``: a sin,
+    cos pair) keeps its fitted amplitude and takes the phase that fits the run best given the other terms (on
+    the run it was fitted on that is its fitted phase: the LS normal equations make them equal)."""
+    W = matrix(rows, est.terms, est.shape)
+    y = W @ est.theta
+    for eff in time_effects().values():
+        if not eff.per_run or not all(t in est.terms for t in eff.terms):
+            continue
+        idx = [est.terms.index(t) for t in eff.terms]
+        part = W[:, idx] @ est.theta[idx]
+        ab = lstsq(W[:, idx], rows.y - (y - part))
+        amp, n = float(np.linalg.norm(est.theta[idx])), float(np.linalg.norm(ab))
+        if n > 0.0:
+            y = y - part + W[:, idx] @ (ab * amp / n)
+    return y
 
 
 def rel_error(rows: Rows, est: Estimate) -> float:

@@ -5,15 +5,16 @@ its columns, shape search, when a record can show it and its physical range) is 
 baseline, and effects are selected forward by :data:`.selection.TIME_RULE`.
 
 Selection: each round the candidates are sorted by dBIC = n ln(RSS1/RSS0) + dp ln n on the estimation run; a
-candidate passes when dBIC < -10, the RMSE of the effort predicted on the validation runs (or, with no
-validation run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %, and its
-values are physical; the best that passes is accepted and every other candidate keeps the first criterion it
-failed as its reason.  When no single effect passes, pairs of the candidates that lower BIC alone are fitted
-together and accepted on the same tests when each member is needed (:func:`best_pair`).  The baseline and
-final fits carry plausibility and identifiability flags (:func:`baseline_flags`), the final residual is tested
-for structure (:mod:`.timeresidual`) and, with a motor encoder, the lost motion measured (:mod:`.lostmotion`).
-The text and JSON of a :class:`TimeDiagnosis` are in :mod:`axisopt.report.timediag`.  Nothing here imports the
-CLI or YAML.
+candidate passes when dBIC < -10, the RMSE of the effort predicted on the validation runs (or, with no validation
+run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %, and its values are
+physical; the best that passes is accepted and every other candidate keeps the first criterion it failed as its
+reason; another candidate that passes too and predicts the held-out data within the rule's resolution is recorded
+as an equally good explanation (``equivalent``). When no single effect passes, pairs of the candidates that lower
+BIC alone are fitted together and accepted on the same tests when each member is needed (:func:`best_pair`). The
+baseline and final fits carry plausibility and identifiability flags (:func:`baseline_flags`), the final residual
+is tested for structure (:mod:`.timeresidual`) and, with a motor encoder, the lost motion measured
+(:mod:`.lostmotion`). The text and JSON of a :class:`TimeDiagnosis` are in :mod:`axisopt.report.timediag`. Nothing
+here imports the CLI or YAML.
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ from .lostmotion import LostMotion, lost_motion
 from .selection import TIME_RULE as RULE
 from .timemodel import BASE, UNITS, Rows, make_rows, matrix, processing_for, symbol, terms_by_name, unit_of
 from .timeresidual import Unexplained, analyse_residual, noise_floor, periodic_peak, residual_peak
+from .timesignature import steady_line
 
 
 @dataclass
@@ -72,6 +74,8 @@ class TimeDiagnosis:
     unexplained: Unexplained | None = None  # structure left in the final residual
     flags: dict = field(default_factory=dict)  # 'baseline' / 'final' -> [plausibility or identifiability notes]
     lost: LostMotion | None = None  # lost motion between motor and table (records with motor_position)
+    equivalent: list = field(default_factory=list)  # (round, accepted, alternative, % apart): equally good
+    top_speed: float = 0.0  # the record's top table speed [m/s] (the regime effects' plausibility is judged in)
 
     @property
     def verdict(self) -> list:
@@ -118,6 +122,11 @@ class TimeContext:
         """(period, share) when the baseline residual is mostly periodic in position, else None."""
         return periodic_peak(self.rows, self.base)
 
+    def steady_line(self):
+        """(frequency, share) when the baseline residual's spectral peak is a steady line in time (one phase
+        through the run: a periodic disturbance, not a resonance the moves excite), else None."""
+        return steady_line(self.rows, self.base, self.peak[0])
+
 
 def implausible(effects, est: Estimate, base: Estimate) -> str:
     """Why the effects' fitted values leave their physical range ('' when they do not); every range is
@@ -130,7 +139,11 @@ def fit_candidate(est_rows: Rows, terms, effect: TimeModel, shape: dict) -> tupl
     """LS fit of ``terms`` with the effect's shape parameter found on the estimation run: (estimate, shape)."""
     shape = dict(shape)
     sh = effect.shape
-    if sh is not None and sh.bounds is not None:
+    if sh is not None and sh.search is not None:
+        own = [t for t in terms if t not in effect.terms]
+        r0 = est_rows.y - matrix(est_rows, own, shape) @ least_squares(est_rows, own, shape).theta
+        shape.update(sh.search(est_rows, r0, lambda v: least_squares(est_rows, terms, {**shape, **v}).rss))
+    elif sh is not None and sh.bounds is not None:
         lo, hi = sh.bounds(est_rows.sig, est_rows.proc)
         shape[sh.name] = search_shape(est_rows, terms, shape, lo, hi, sh.name)
     elif sh is not None and sh.choices is not None:
@@ -166,6 +179,9 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     ctx = TimeContext(est_rows, base_ls, peak, span, stroke_q, lead_q, UNITS[est.quantity]["position"])
     for nm in names:
         e = effects[nm]
+        short = e.too_short(ctx) if e.too_short is not None and candidates else ""
+        if short:
+            raise InputError(f"--effects {nm}: {short}", source=est.source)
         why = e.skip(ctx) if e.skip is not None else ""
         if why:
             skipped[nm] = why
@@ -175,7 +191,7 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     terms, shape = list(BASE), {}
     cur = base_ls
     cur_ho = heldout_rmse(est_rows, val_rows, terms, shape)
-    accepted, rounds, rejected, pairs = [], [], [], []
+    accepted, rounds, rejected, pairs, equivalent = [], [], [], [], []
     while len(accepted) < max_effects:
         scored = []
         for e in pool:
@@ -200,6 +216,11 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
                 top = c
         if top is not None:
             top.reason = ""
+            ho_top = cur_ho * (1.0 - top.gain / 100.0)
+            for c in scored:  # another that passes too and predicts as well: the data do not tell them apart
+                d = RULE.equivalent(ho_top, cur_ho * (1.0 - c.gain / 100.0)) if c is not top and not c.reason else None
+                if d is not None:
+                    equivalent.append((len(rounds), top, c, d))
             for c in scored:
                 if c is not top and not c.reason:
                     c.reason = f"{top.effect.name} explains more (dBIC {top.dbic:.1f})"
@@ -231,10 +252,15 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     un = analyse_residual([est_rows] + val_rows, final)
     flags = {"baseline": baseline_flags(base_iv, est.quantity), "final": baseline_flags(final, est.quantity)}
     flags["final"] += _shape_flags(final, est_rows, effects.values(), est.quantity)
+    vmax = float(np.max(np.abs(est_rows.sig["v"][est_rows.keep]))) * (1.0 if est.quantity == "force" else
+                                                                       lead_q / (2.0 * math.pi) if lead_q else 0.0)
+    flags["final"] += [f"{c.effect.name}: {why}" for c in accepted if c.effect.regime is not None
+                       for why in [c.effect.regime(vmax)] if why]
     lost = lost_motion(est_rows, val_rows, final_ls, noise_floor(est_rows), (design or {}).get("lead", 0.0))
     times = {"ls": t_ls, "iv": t_iv, "diagnose": time.perf_counter() - t0}
     return TimeDiagnosis(est.quantity, est_rows, val_rows, ctrl, base_ls, base_iv, final, final_ls, accepted,
-                         rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags, lost)
+                         rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags, lost,
+                         equivalent, vmax)
 
 
 def _shape_flags(final: Estimate, rows: Rows, effects, quantity: str) -> list:
@@ -248,8 +274,9 @@ def _shape_flags(final: Estimate, rows: Rows, effects, quantity: str) -> list:
         if not 1.05 * lo < final.shape[sh.name] < 0.95 * hi:
             u, f = UNITS[quantity][sh.unit]
             out.append(f"{sh.name} = {final.shape[sh.name] * f:.3g} {u} is at the end of its search range "
-                       f"({lo * f:.3g}..{hi * f:.3g} {u}): the Stribeck velocity is not identifiable from "
-                       "this record")
+                       f"({lo * f:.3g}..{hi * f:.3g} {u}): the "
+                       + ("Stribeck velocity" if sh.name == "vs" else sh.label.split(" (")[0])
+                       + " is not identifiable from this record")
     return out
 
 

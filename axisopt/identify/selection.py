@@ -31,6 +31,16 @@ class SelectionRule:
     order: tuple = (DBIC, PLAUSIBLE, GAIN)  # criteria in the order judged: the first failed is the reason
     pair_pool: int = 5  # pairs are tried among at most this many single candidates (the best by dBIC)
     pair_needs_signal: bool = False  # True: a pair's members must each lower BIC alone (dBIC < 0)
+    resolution: float = 1.0  # [%] two accepted explanations whose held-out RMSE differ by less are equivalent
+
+    def equivalent(self, rmse_a: float, rmse_b: float) -> float | None:
+        """How far apart [%] two explanations that both pass predict the held-out data, when that is within
+        ``resolution`` (the data do not tell them apart: say so and name the separating measurement), else
+        None."""
+        if not rmse_a > 0:
+            return None
+        d = 100.0 * abs(rmse_b - rmse_a) / rmse_a
+        return d if d < self.resolution else None
 
     def gain(self, before: float, after: float) -> float:
         """Held-out gain [%]: how much the held-out RMSE falls from ``before`` to ``after``."""

@@ -38,10 +38,12 @@ BASE = tuple(t.name for t in BASE_TERMS)
 # unit kind -> (unit, factor from SI) of the record's coordinate
 UNITS = {
     "force": {"mass": ("kg", 1.0), "damping": ("N.s/m", 1.0), "effort": ("N", 1.0), "snap": ("kg.s^2", 1.0),
-              "speed": ("mm/s", 1e3), "position": ("mm", 1e3), "drag2": ("N.s^2/m^2", 1.0)},
+              "speed": ("mm/s", 1e3), "position": ("mm", 1e3), "drag2": ("N.s^2/m^2", 1.0),
+              "frequency": ("Hz", 1.0), "time": ("s", 1.0)},
     "torque": {"mass": ("kg.m^2", 1.0), "damping": ("N.m.s/rad", 1.0), "effort": ("N.m", 1.0),
                "snap": ("kg.m^2.s^2", 1.0), "speed": ("rad/s", 1.0), "position": ("rad", 1.0),
-               "drag2": ("N.m.s^2/rad^2", 1.0)},
+               "drag2": ("N.m.s^2/rad^2", 1.0),
+               "frequency": ("Hz", 1.0), "time": ("s", 1.0)},
 }
 SYMBOL = {"force": {"M": "M"}, "torque": {"M": "J"}}
 
@@ -51,6 +53,16 @@ def terms_by_name() -> dict:
     out = {t.name: t for t in BASE_TERMS}
     for eff in time_effects().values():
         out.update((t.name, t) for t in eff.columns)
+    return out
+
+
+def shape_params() -> dict:
+    """Every shape parameter the registered effects search: name -> (label, unit kind)."""
+    out = {}
+    for eff in time_effects().values():
+        if eff.shape is not None:
+            out[eff.shape.name] = (eff.shape.label, eff.shape.unit)
+            out.update((n, (lab, u)) for n, lab, u in eff.shape.also)
     return out
 
 
@@ -87,7 +99,7 @@ class Rows:
     """Filtered full-rate signals of one record and the kept decimated rows."""
 
     record: TimeRecord
-    sig: dict  # q, v, a, snap (full rate, filtered)
+    sig: dict  # q, v, a, snap (full rate, filtered); t from the run's start
     keep: np.ndarray  # full-rate indices of the kept rows
     y: np.ndarray  # effort at the kept rows after the decimation filter
     proc: Processing
@@ -133,6 +145,7 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
         raise InputError(f"sampled at {rec.fs:.6g} Hz, the estimation run at {proc.fs:.6g} Hz (the same filters "
                          "are applied to every run)", source=rec.source, where="column time")
     sig = signals(rec.q, proc)
+    sig["t"] = rec.t - rec.t[0]  # time from the run's start
     v = sig["v"]
     sf = lowpass(np.sign(v), proc.fs, proc.fdec)
     edge = int(2.0 * proc.fs / min(proc.fc, proc.fdec)) + proc.nd

@@ -1,8 +1,9 @@
 """What a time-record fit leaves unexplained: the residual of the final fit (estimation and validation rows
 pooled) tested for structure over position (a period scan, the lead and its harmonics named in advance),
 velocity, position along the stroke, time within a run, between runs, the external force, travel since a
-reversal and acceleration (:mod:`.residual`: added-variable shares against the noise floor); and the baseline
-residual's spectral peak that makes an extra mode a candidate.
+reversal and acceleration (:mod:`.residual`: added-variable shares against the noise floor), a line in time, a
+spot on the stroke and a decay within the run (:mod:`.timesignature`); and the baseline residual's spectral peak
+that makes an extra mode a candidate.
 """
 
 from __future__ import annotations
@@ -14,9 +15,10 @@ import numpy as np
 
 from . import residual as rs
 from .effects.friction import RIPPLE_HARMONICS
-from .estimators import Estimate
+from .estimators import Estimate, predict
 from .timemodel import Rows, decimate, full_matrix, matrix
 from .timerecord import lowpass, welch
+from .timesignature import decay_probe, line_probe, spot_probe
 
 
 def residual_peak(rows: Rows, est: Estimate) -> tuple:
@@ -100,8 +102,7 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
     run, between runs and acceleration; see :mod:`.residual`."""
     proc = runs[0].proc
     W = np.vstack([matrix(r, est.terms, est.shape) for r in runs])
-    y = np.concatenate([r.y for r in runs])
-    r = y - W @ est.theta
+    r = np.concatenate([rw.y - predict(rw, est) for rw in runs])  # a per-run phase is each run's own
     W = rs.Span(W)
     breaks = np.concatenate([np.append(np.diff(rw.keep) != proc.nd, True) for rw in runs])[:-1]
     rho = rs.lag1(r, breaks)
@@ -191,6 +192,9 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
         a, sg = rw.sig["a"], np.sign(rw.sig["v"])
         return np.column_stack([sg * a, np.abs(a), a * np.abs(a)])
     probes.append(rs.probe("acceleration", r, pooled(runs, acc_cols), W, neff))
+    def neff_of(res):
+        return rs.n_effective(len(res), rs.lag1(res, breaks))
+    probes += [f(runs, r, W, neff_of, pooled) for f in (line_probe, spot_probe, decay_probe)]
     probes.sort(key=lambda p: p.log10_p)
     noise = math.sqrt(sum(noise_floor(rw) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs))
     return Unexplained(probes, float(np.sqrt(np.mean(r**2))), noise, rho, len(r))

@@ -22,8 +22,10 @@ Effects the identification library may lack: a ripple periodic in position ``rip
 ``ripple_period`` + ``ripple_phase``), as a force in -x (the drive supplies it both ways) or, with
 ``ripple_friction``, added to the Coulomb level (it follows the direction); a drag ``quadratic_drag`` v|v|;
 lost motion ``backlash`` between the motor-side and table masses (a dead zone of the spring; needs the
-second mass); and a seeded piecewise-constant process force on the table, ``process_force`` (recorded as
-``extra['external_force']`` and written as the ``external_force [N]`` column).
+second mass); a seeded piecewise-constant process force on the table, ``process_force`` (recorded as
+``extra['external_force']`` and written as the ``external_force [N]`` column); and a caller's own force
+``extra_force(t, x, v)`` or Coulomb level ``extra_friction(t, x)`` (tests write the physics of the effect they
+hide there, apart from the identification's columns).
 
 The controller (sampled at ``fs``): PD on the measured position, the velocity from the backward difference
 of the measured position through a first-order low-pass (``vel_filter_hz``),
@@ -38,6 +40,7 @@ from __future__ import annotations
 import csv
 import math
 from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 
@@ -70,6 +73,11 @@ class AxisTruth:
     backlash: float = 0.0  # [m] total lost motion between motor and table (needs mode_hz > 0: the motor
     #                        side mass crosses the gap with the table left behind)
     process_force: float = 0.0  # [N] amplitude of a seeded piecewise-constant external force on the table
+    # effects a caller writes itself (tests hide their own physics this way): ``extra_force(t, x, v)`` [N] a
+    # force in -x the drive must supply; ``extra_friction(t, x)`` [N] added to the Coulomb level of both
+    # directions (it opposes the motion and widens the breakaway band at rest)
+    extra_force: Callable | None = None
+    extra_friction: Callable | None = None
 
 
 @dataclass
@@ -229,6 +237,7 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
     meas = np.empty(n)
     force = np.empty(n)
     motor = np.empty(n) if record_motor else None
+    xf, xr = truth.extra_force, truth.extra_friction
     for k in range(n):
         xm = round((x + pos_noise[k]) / q) * q
         if k:
@@ -239,7 +248,7 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
         force[k] = u + f_noise[k]
         if motor is not None:
             motor[k] = round((x1 if two else x) / 1e-7) * 1e-7
-        for _ in range(ns):
+        for j in range(ns):
             if two:
                 stretch = x1 - x
                 if gap > 0.0:  # dead zone of the lost motion: no spring force inside the gap
@@ -256,6 +265,10 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
                 drive += f_ext[k]
             xi = 2 * x / truth.stroke - 1
             dpos = c1 * xi + c2 * (1.5 * xi * xi - 0.5)
+            if xf is not None:
+                drive -= xf(t[k] + j * h, x, v)
+            if xr is not None:
+                dpos += xr(t[k] + j * h, x)
             if rip:
                 wave = rip * math.sin(rip_k * x + rip_ph)
                 if rip_fr:

@@ -11,10 +11,11 @@ from __future__ import annotations
 import math
 import textwrap
 
+from ..identify.effects import time_effects
 from ..identify.estimators import Estimate, mode_frequency, rel_error
 from ..identify.idim import TimeDiagnosis
 from ..identify.selection import TIME_RULE
-from ..identify.timemodel import UNITS, symbol, term, unit_of
+from ..identify.timemodel import UNITS, shape_params, symbol, term, unit_of
 from ..identify.timerecord import BUTTER_ORDER
 
 
@@ -36,9 +37,51 @@ def _param_lines(q, est: Estimate, only=None, indent="    ") -> list:
     if "vs" in est.shape and (only is None or "Fs" in only):
         u, f = UNITS[q]["speed"]
         out.append(f"{indent}{'vs':<7}{est.shape['vs'] * f:>22.4g} {u:<10} Stribeck velocity (1-D search)")
+    for nm, (label, u, f) in _shapes(q, est, only):
+        out.append(f"{indent}{nm:<7}{est.shape[nm] * f:>22.5g} {u:<10} {label}")
+    for nm, v, u, label in _derived(q, est, only):
+        out.append(f"{indent}{nm:<7}{v:>22.4g} {u:<10} {label}")
     fr = mode_frequency(est)
     if fr is not None and (only is None or "beta" in only):
         out.append(f"{indent}{'f_r':<7}{fr:>22.4g} {'Hz':<10} resonance sqrt(M/beta)/2pi")
+    return out
+
+
+SHAPES_APART = ("vs", "period")  # the Stribeck velocity has its own line; the ripple's period is the lead's
+
+
+def _shapes(q, est: Estimate, only=None) -> list:
+    """(name, (label, unit, factor)) of the searched shape parameters of ``est`` (the effects' own terms in
+    ``only`` when given) shown beside its terms."""
+    known = shape_params()
+    owners = {}
+    for eff in time_effects().values():
+        if eff.shape is not None:
+            for nm in (eff.shape.name, *(a[0] for a in eff.shape.also)):
+                owners[nm] = eff.terms
+    out = []
+    for nm in est.shape:
+        if nm in SHAPES_APART or nm not in known:
+            continue
+        if only is not None and not set(owners.get(nm, ())) & set(only):
+            continue
+        label, kind = known[nm]
+        u, f = UNITS[q][kind]
+        out.append((nm, (label, u, f)))
+    return out
+
+
+def _derived(q, est: Estimate, only=None) -> list:
+    """(name, value, unit, label) of the quantities the effects of ``est`` derive from their terms."""
+    out = []
+    for eff in time_effects().values():
+        if not eff.derived or not all(t in est.terms for t in eff.terms):
+            continue
+        if only is not None and not set(eff.terms) & set(only):
+            continue
+        for nm, label, kind, fn in eff.derived:
+            u, f = UNITS[q][kind]
+            out.append((nm, fn(est.value) * f, u, label))
     return out
 
 
@@ -64,6 +107,10 @@ def _compact(q, est: Estimate, terms) -> str:
     if "vs" in est.shape and "Fs" in terms:
         u, f = UNITS[q]["speed"]
         out.append(f"vs {est.shape['vs'] * f:.3g} {u}")
+    for nm, (_label, u, f) in _shapes(q, est, terms):
+        out.append(f"{nm} {est.shape[nm] * f:.5g} {u}")
+    for nm, v, u, _label in _derived(q, est, terms):
+        out.append(f"{nm} {v:.4g} {u}")
     fr = mode_frequency(est)
     if fr is not None and "beta" in terms:
         out.append(f"f_r {fr:.3g} Hz")
@@ -148,6 +195,7 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         L += _wrap(f"{q} error: {_errors(diag, diag.final)}", indent="    ")
         for f in diag.flags.get("final", []):
             L += _wrap(f"! {f}", indent="  ", cont="      ")
+        L += _equivalent_lines(diag)
     elif not (diag.lost and diag.lost.accepted):
         L += _wrap("verdict: nothing named beyond the baseline: " + _why_none(diag), indent="", cont="  ")
     L += _lost_motion_lines(diag)
@@ -155,6 +203,24 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
     L += _wrap(f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves the two "
                "are the same column")
     return "\n".join(L)
+
+
+def _equivalent_text(diag: TimeDiagnosis, a, b, apart: float) -> str:
+    top = diag.top_speed
+    notes = [f"{e.name}: {w}" for e in (a.effect, b.effect) if e.regime is not None for w in [e.regime(top)] if w]
+    return (f"{a.effect.name} and {b.effect.name} explain the data equally well: held-out RMSE {apart:.2f} % "
+            f"apart, within the rule's {TIME_RULE.resolution:g} % resolution (dBIC {a.dbic:.1f} against "
+            f"{b.dbic:.1f}); {a.effect.name} is named for its lower dBIC, not because the data tell them apart. "
+            + (" ".join(n[0].upper() + n[1:] + "." for n in notes) + " " if notes else "")
+            + f"To separate them: for {a.effect.name}, {a.effect.evidence or 'a test that shows it alone'}; "
+            f"for {b.effect.name}, {b.effect.evidence or 'a test that shows it alone'}.")
+
+
+def _equivalent_lines(diag: TimeDiagnosis) -> list:
+    out = []
+    for _k, a, b, apart in diag.equivalent:
+        out += _wrap("~ " + _equivalent_text(diag, a, b, apart), indent="  ", cont="      ")
+    return out
 
 
 def _lost_motion_lines(diag: TimeDiagnosis) -> list:
@@ -242,6 +308,29 @@ SIGNATURE_WORDS = {
         "exciting the drive, or the elastic windup of a compliant transmission",
         "record the motor encoder's position beside the table position (a motor_position column): the "
         "diagnosis then measures the lost motion and the windup; or a reversal test per ISO 230-2 at low speed"),
+    "line_fixed": (
+        "a force periodic in time from a rotating or pulsing source coupled into the table (a pump, a spindle or "
+        "a fan's unbalance: rpm/60 or a multiple), mains hum in the current sensor (50/60 Hz or twice that) or "
+        "a resonance of the machine that the moves excite",
+        "record the axis at rest in position control with the other sources running, then with each of them "
+        "off: a disturbance stays at rest and goes with its source, a resonance the moves excite does not; "
+        "compare the frequency with the spindle speed, the pump's stroke rate and the mains"),
+    "line_speed": (
+        "a ripple fixed in position seen in time at v/P (ball recirculation, guide-ball pitch, motor cogging "
+        "through the lead)",
+        "repeat at two other speeds: a ripple fixed in millimetres moves its frequency in proportion to the "
+        "speed; measure the position error or the force over a slow constant-speed pass"),
+    "spot": (
+        "a local defect of the guide rail or the screw (a dent, a contaminated or dry spot, a chip under a "
+        "wiper), a cable-chain kink or a hose that catches at this place",
+        "a slow constant-speed pass over the spot in both directions at two speeds (a friction spot opposes "
+        "the motion both ways and keeps its width in millimetres), then inspect the rail and the screw there "
+        "and move the cable chain by hand"),
+    "decay": (
+        "a warm-up of the lubricant (friction high at the start, settling as the nut and guides warm) or a "
+        "load or temperature that settles within the run",
+        "repeat the run cold and after a warm-up cycle with a temperature sensor on the nut: a warm-up drift "
+        "is gone when warm and its time constant follows the heating"),
     "acceleration": (
         "a dependence on acceleration beyond M a: a compliant transmission (the motor side lags), lost motion, "
         "or an inertia that differs by direction",
@@ -252,6 +341,7 @@ SIGNATURE_WORDS = {
 def signature_text(diag: TimeDiagnosis, p) -> tuple:
     """(what the residual does, candidate causes, separating measurement) of a probe, in words."""
     d = p.detail
+    unit = UNITS[diag.quantity]["effort"][0]
     if p.kind == "position_periodic":
         P = _mm(diag, d["period"])
         lead_mm = _mm(diag, diag.estimation.proc.lead_q)
@@ -280,6 +370,34 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         key = "position"
     elif p.kind == "time":
         what, key = "drifts with time within a run", "time"
+    elif p.kind == "line":
+        f, a = d["frequency"], d["amplitude"]
+        if d.get("fixed"):
+            what = (f"holds a line at {f:.4g} Hz (amplitude {a:.3g} {unit}) that stays at that frequency at "
+                    "every speed (not tied to speed or position)")
+            key = "line_fixed"
+            if f > d.get("fit_band", f):
+                what += (f"; above {d['fit_band']:.3g} Hz, 0.6x the position filter's cut-off, where time_periodic "
+                         "is fitted (a record sampled faster, or a finer scale, raises the cut-off)")
+        else:
+            what = (f"holds a line at {f:.4g} Hz (amplitude {a:.3g} {unit}) seen only at speeds near "
+                    f"{_mm(diag, d['speed']):.3g} mm/s: tied to speed, a period in position of "
+                    f"{_mm(diag, d['period']):.3g} mm")
+            key = "line_speed"
+    elif p.kind == "spot":
+        x0, w = _mm(diag, d["x0"]), _mm(diag, d["width"])
+        dirs = {"both": "in both directions", "+": "in + travel only", "-": "in - travel only"}[d["directions"]]
+        if d.get("crossed", "both") != "both":
+            dirs = f"seen in {d['crossed']} travel (the record crosses it one way only)"
+        kind = "a friction (opposes the motion)" if d.get("friction") else "a force of one sign"
+        what = (f"has a bump at {x0:.1f} mm on the stroke, {w:.3g} mm wide (standard width), {dirs}, {kind}: "
+                f"+{d['height_plus']:.3g} {unit} in + travel, {d['height_minus']:.3g} {unit} in - travel")
+        key = "spot"
+    elif p.kind == "decay":
+        kind = ("a friction (follows the direction)" if d.get("friction_share", 0) > 0.5 else
+                "a force (the same sign both ways)")
+        what = f"decays within each run like exp(-t/tau), tau {d['tau']:.2g} s, {kind}"
+        key = "decay"
     elif p.kind == "run":
         what, key = "differs between the estimation and validation runs", "run"
     elif p.kind == "load":
@@ -321,7 +439,8 @@ def _unexplained_lines(diag: TimeDiagnosis) -> list:
                       "measures it") + ")", indent="", cont="  ")
     else:
         L += _wrap(f"residual: no structure beyond noise (RMS {u.rms:.3g} {unit} against a {u.noise:.3g} {unit} "
-                   "noise floor; tested over position incl. its period, velocity, time, reversals and acceleration)",
+                   "noise floor; tested over position incl. its period and spots, velocity, time incl. lines and "
+                   "decays, reversals and acceleration)",
                    indent="", cont="  ")
     return L
 
@@ -335,6 +454,10 @@ def _est_dict(q, est: Estimate) -> dict:
         u, f = UNITS[q]["speed"]
         d["parameters"].append({"name": "vs", "value": est.shape["vs"] * f, "std": None, "unit": u,
                                 "label": "Stribeck velocity (1-D search)"})
+    for nm, (label, u, f) in _shapes(q, est):
+        d["parameters"].append({"name": nm, "value": est.shape[nm] * f, "std": None, "unit": u, "label": label})
+    for nm, v, u, label in _derived(q, est):
+        d["parameters"].append({"name": nm, "value": v, "std": None, "unit": u, "label": label})
     fr = mode_frequency(est)
     if fr is not None:
         d["parameters"].append({"name": "f_r", "value": fr, "std": None, "unit": "Hz", "label": "resonance"})
@@ -372,6 +495,11 @@ def time_diagnosis_dict(diag: TimeDiagnosis) -> dict:
         "pairs": [{"round": k, "effects": [a.effect.name, b.effect.name], "dBIC": dbic, "gain_percent": gain,
                    "accepted": not why, "reason": why} for k, a, b, _e, dbic, gain, why in diag.pairs],
         "flags": diag.flags,
+        "equivalent": [{"round": k, "named": a.effect.name, "alternative": b.effect.name, "percent_apart": apart,
+                        "dBIC": [a.dbic, b.dbic], "text": _equivalent_text(diag, a, b, apart),
+                        "to_separate": {a.effect.name: a.effect.evidence, b.effect.name: b.effect.evidence}}
+                       for k, a, b, apart in diag.equivalent],
+        "top_speed_mm_s": diag.top_speed * 1e3,
         "unexplained": _unexplained_dict(diag),
         "lost_motion": None if diag.lost is None else {
             "accepted": diag.lost.accepted, "reason": diag.lost.reason,
@@ -390,8 +518,11 @@ def _unexplained_dict(diag: TimeDiagnosis) -> dict | None:
     for p in u.remaining:
         what, causes, measure = signature_text(diag, p)
         det = {k: v for k, v in p.detail.items() if isinstance(v, (int, float, str))}
-        if "period" in det:
-            det["period_mm"] = _mm(diag, det.pop("period"))
+        for k in ("period", "x0", "width", "speed"):
+            if k in det:
+                det[f"{k}_mm" if k != "speed" else "speed_mm_s"] = _mm(diag, det.pop(k))
+        if "group_amplitudes" in p.detail:
+            det["speed_group_amplitudes"] = list(p.detail["group_amplitudes"])
         out.append({"kind": p.kind, "share": p.share, "log10_p": p.log10_p, "signature": what, "causes": causes,
                     "to_separate": measure, **det})
     return {"remaining": bool(out) or (u.noise > 0 and u.rms / u.noise > NOISE_RATIO), "rms": u.rms,

@@ -1,5 +1,6 @@
 """The effect library of both diagnosis pipelines: the registry and the declaration (:mod:`.base`) and the
-built-in effects by what they act on (:mod:`.stiffness`, :mod:`.dynamics`, :mod:`.friction`; imported here in
+built-in effects by what they act on (:mod:`.stiffness`, :mod:`.dynamics`, :mod:`.friction`,
+:mod:`.disturbance`; imported here in
 the order they are registered, which is the order tables try them)."""
 
 # isort: off
@@ -7,6 +8,7 @@ the order they are registered, which is the order tables try them)."""
 from . import stiffness  # noqa: F401
 from . import dynamics  # noqa: F401
 from . import friction  # noqa: F401
+from . import disturbance  # noqa: F401
 
 # isort: on
 from .base import (
@@ -15,6 +17,7 @@ from .base import (
     Shape,
     Term,
     TimeModel,
+    all_effects,
     library,
     register_effect,
     replace_part,
@@ -31,6 +34,7 @@ __all__ = [
     "Shape",
     "Term",
     "TimeModel",
+    "all_effects",
     "library",
     "register_effect",
     "replace_part",

@@ -37,14 +37,18 @@ class Term:
 @dataclass(frozen=True)
 class Shape:
     """A shape parameter of a time-record effect: found on the least-squares residual, then held fixed.
-    Either ``bounds`` ((sig, proc) -> (lo, hi): log grid, then golden section) or ``choices`` (proc -> values:
-    the one with the least residual)."""
+    Either ``bounds`` ((sig, proc) -> (lo, hi): log grid, then golden section), ``choices`` (proc -> values:
+    the one with the least residual) or ``search`` ((rows, r0, rss) -> {name: value, ...}: a scan of ``r0``,
+    the residual of the model so far on the estimation rows, refined on ``rss(values)``, the joint fit's RSS);
+    ``also``: further shape values a search returns, as (name, label, unit kind)."""
 
     name: str
     label: str
     unit: str
     bounds: Callable | None = None
     choices: Callable | None = None
+    search: Callable | None = None
+    also: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -56,6 +60,13 @@ class TimeModel:
     shape: Shape | None = None
     skip: Callable | None = None  # (ctx) -> why the record cannot show the effect ('' when it can)
     implausible: Callable | None = None  # (value, fc, fv) -> [texts]: fitted values outside the physical range
+    too_short: Callable | None = None  # (ctx) -> why the run is too short to resolve the effect ('' when it is
+    #                                     not): not tried; an input error when the effect is asked by name
+    evidence: str = ""  # the measurement that shows this effect apart from the others
+    regime: Callable | None = None  # (top table speed [m/s]) -> why the effect is implausible at such speeds, or ''
+    derived: tuple = ()  # (name, label, unit kind, value -> SI): quantities shown beside the terms (an amplitude)
+    per_run: bool = False  # its columns are one sin, cos pair whose phase is each run's own: a held-out run keeps
+    #                        the amplitude and takes its own phase (:func:`..estimators.predict`)
     name: str = ""  # the effect's name (filled in by register_effect)
 
     @property
@@ -108,7 +119,8 @@ class Effect:
 _REGISTRY: dict[str, Effect] = {}
 
 # The built-in time-record effects in the order they are tried and listed; an effect registered later follows.
-TIME_ORDER = ("direction_asymmetry", "stribeck", "position_friction", "extra_mode", "lead_ripple", "quadratic_drag")
+TIME_ORDER = ("direction_asymmetry", "stribeck", "position_friction", "extra_mode", "lead_ripple", "quadratic_drag",
+              "time_periodic", "local_friction", "friction_drift")
 
 
 def register_effect(effect):
@@ -130,6 +142,11 @@ def unregister_effect(name: str) -> None:
 def library() -> MappingProxyType:
     """The effects reduced tables can show (those with table ``kinds``), by name, in registration order."""
     return MappingProxyType({n: e for n, e in _REGISTRY.items() if e.kinds})
+
+
+def all_effects() -> MappingProxyType:
+    """Every registered effect by name, tables' and time records' (a calibration file may name either)."""
+    return MappingProxyType(dict(_REGISTRY))
 
 
 def time_effects() -> dict:

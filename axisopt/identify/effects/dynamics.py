@@ -23,6 +23,10 @@ def _mode_skip(ctx) -> str:
     freq, ratio = ctx.peak
     if ratio < PEAK_RATIO:
         return f"no residual spectral peak (at most {ratio:.1f}x the median, {freq:.0f} Hz)"
+    line = ctx.steady_line()
+    if line is not None:
+        return (f"the residual's spectral peak is a steady line at {line[0]:.4g} Hz, one phase through the run "
+                f"({100 * line[1]:.0f} % of the residual): a periodic disturbance, not a resonance")
     per = ctx.periodic_peak()
     if per is not None:
         u, f = ctx.position_unit
@@ -88,6 +92,7 @@ class ExtraMode(Effect):
         (Term("beta", "m1 m2/k of the extra mode", "snap", lambda sig, proc, shape: sig["snap"], simulated=False),),
         skip=_mode_skip,
         implausible=_mode_implausible,
+        evidence="a frequency response (tap test or sine sweep) of the table: a peak at the resonance",
     )
 
     def _peak(self, ctx):

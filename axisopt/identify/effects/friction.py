@@ -53,6 +53,7 @@ class Stribeck(Effect):
               lambda sig, proc, shape: np.sign(sig["v"]) * np.exp(-np.abs(sig["v"]) / shape["vs"])),),
         shape=Shape("vs", "Stribeck velocity (1-D search)", "speed", bounds=_stribeck_bounds),
         implausible=_stribeck_implausible,
+        evidence="a friction curve with many constant speeds below 10 mm/s in both directions: the rise at low speed",
     )
 
     def _speeds(self, ctx):
@@ -198,6 +199,7 @@ class DirectionAsymmetry(Effect):
         "viscous friction differs by direction",
         (Term("dFv", "viscous asymmetry Fv+ - Fv-", "damping", lambda sig, proc, shape: 0.5 * np.abs(sig["v"])),),
         implausible=_asymmetry_implausible,
+        evidence="constant-speed runs at several speeds in both directions: the slopes differ",
     )
 
     def applicable(self, ctx):
@@ -230,6 +232,17 @@ class DirectionAsymmetry(Effect):
         )
 
 
+DRAG_SPEED = 0.05  # [m/s] below this top speed a v|v| drag (churning, seals) is the less plausible reading (estimate)
+
+
+def _drag_regime(vmax: float) -> str:
+    """Churning and seal drag that grows with v|v| shows at tens of mm/s and above (an estimate: DRAG_SPEED)."""
+    if vmax >= DRAG_SPEED:
+        return ""
+    return (f"a drag growing with v|v| at a top speed of {vmax * 1e3:.3g} mm/s is the less plausible reading: "
+            f"lubricant churning and seal drag show from about {DRAG_SPEED * 1e3:.0f} mm/s (an estimate)")
+
+
 @register_effect
 class QuadraticDrag(Effect):
     name = "quadratic_drag"
@@ -240,6 +253,8 @@ class QuadraticDrag(Effect):
         "drag growing with v|v| (seals, lubricant churning)",
         (Term("Cq", "quadratic drag c v|v|", "drag2", lambda sig, proc, shape: sig["v"] * np.abs(sig["v"])),),
         implausible=_drag_implausible,
+        evidence="steady-state friction at constant speeds up to the maximum: the curve bends upward with v|v|",
+        regime=_drag_regime,
     )
 
     def params(self, ctx):
@@ -297,6 +312,7 @@ class PositionFriction(Effect):
               lambda sig, proc, shape: np.sign(sig["v"]) * (1.5 * _stroke_xi(sig, proc) ** 2 - 0.5))),
         skip=_position_skip,
         implausible=_position_implausible,
+        evidence="a slow constant-speed pass over the whole stroke in both directions: the level follows the position",
     )
 
 
@@ -341,4 +357,5 @@ class LeadRipple(Effect):
                     choices=lambda proc: [proc.lead_q / k for k in RIPPLE_HARMONICS]),
         skip=_ripple_skip,
         implausible=_ripple_implausible,
+        evidence="the force over a slow constant-speed pass at two speeds: the ripple keeps its period in millimetres",
     )
