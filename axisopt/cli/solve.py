@@ -28,7 +28,9 @@ def register(sub) -> None:
     s.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     s.add_argument("--plot", metavar="FILE.png", help="plot the best designs (or the Pareto front)")
     s.add_argument("--top", type=int, default=5, metavar="N", help="designs to show (best + runners-up)")
-    s.add_argument("--time-limit", type=float, default=100.0, metavar="S", help="Bonmin / SCIP time limit [s]")
+    s.add_argument("--time-limit", type=float, default=100.0, metavar="S",
+                   help="time limit [s] of every method (default 100): the best found so far, its gap, and a "
+                   "note when it cuts the search")
     s.add_argument("--no-sensitivity", action="store_true",
                    help="skip re-solving with each limit relaxed by 10 %%")
     s.add_argument("--save-design", metavar="FILE.yaml|DIR",

@@ -5,6 +5,7 @@ preload solve (:mod:`.preload`); the winners are polished after it (:mod:`.polis
 
 from __future__ import annotations
 
+import logging
 import time
 
 import numpy as np
@@ -16,9 +17,13 @@ from .screen import screen_nuts
 from .task.objective import ObjectiveSpec, objective_floor
 from .task.space import Space
 
+LOG = logging.getLogger("axisopt")
+PROGRESS = 2.0  # [s] between progress records of a long search
+
 
 def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top: int = 1, *,
-                       max_evaluations: int | None = None, incumbent: float = -np.inf, first_feasible: bool = False):
+                       max_evaluations: int | None = None, incumbent: float = -np.inf, first_feasible: bool = False,
+                       deadline: float | None = None):
     """Default method core: best-first over blocks of combinations, never forming the whole product.
 
     1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives -- gets a
@@ -31,7 +36,10 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
        never screened are the certificate's ``pruned_by_block``; survivors never solved its
        ``pruned_by_bound``.
     ``incumbent``: an objective some design is known to reach (top 1): what cannot tie with it is pruned from
-    the start, and the Exact returned may then be empty.  ``first_feasible``: stop at the first exact solve that
+    the start, and the Exact returned may then be empty.  ``deadline`` (a time.perf_counter() value): stop there
+    with what is solved so far (``stats.timed_out``; the gap is the bound of what is left against the best found),
+    and every :data:`PROGRESS` seconds a progress record goes to the "axisopt" logger (a terminal shows it).
+    ``first_feasible``: stop at the first exact solve that
     finds a feasible design (a feasibility test, no optimum: search.advice).
     Returns (Exact of evaluated combinations, :class:`.result.SearchStats`)."""
     t0 = time.perf_counter()
@@ -56,7 +64,17 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     group = 1  # distinct nuts per screened group: grows as long as no incumbent prunes
     pool_idx, pool_bnd = np.zeros(0, np.int64), np.zeros(0)
     parts, thr = [], (incumbent if top == 1 else -np.inf)
+    timed_out, shown = False, time.perf_counter()
     while True:
+        now = time.perf_counter()
+        if deadline is not None and now > deadline:
+            timed_out = True
+            break
+        if now - shown > PROGRESS:
+            shown = now
+            found = sum(int(np.isfinite(p.objective).sum()) for p in parts)
+            LOG.info(f"  searching: {pos:,} of {len(bv):,} blocks screened, {n_eval:,} combinations solved, "
+                     f"{found:,} feasible, {now - t0:.0f} s")
         floor = objective_floor(thr)
         nxt = bv[pos] if pos < len(bv) else -np.inf
         best_pool = pool_bnd.max() if len(pool_bnd) else -np.inf
@@ -121,6 +139,6 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     stats = SearchStats(combinations=space.size, feasible=int(feasible), pruned_by_bound=int(feasible - n_eval),
                         exact_evaluations=int(n_eval), gap=gap, proven=gap == 0.0,
                         screening_time=t_screen, screening_rate=space.size / max(t_screen, 1e-9),
-                        pruned_by_block=int(space.size - screened), screened=int(screened))
+                        pruned_by_block=int(space.size - screened), screened=int(screened), timed_out=timed_out)
     return ex, stats
 

@@ -21,6 +21,8 @@ Two ways to the same answer:
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 
 from .. import model
@@ -105,21 +107,27 @@ def _closest(top_idx, top_score, idx, score, n):
 
 
 def explain_infeasible(space: Space, constraints, objective, n_closest: int = CLOSEST, *,
-                       every_combination: bool = False) -> Infeasibility:
+                       every_combination: bool = False, deadline: float | None = None) -> Infeasibility:
     """Limits no combination meets (with the best value any reaches) and the ``n_closest`` designs of
     lowest miss score (ties: lowest combination number).  Best-first over blocks unless
-    ``every_combination`` (module docstring); both give the same answer."""
+    ``every_combination`` (module docstring); both give the same answer.  ``deadline`` (a time.perf_counter()
+    value): the explanation stops there with the closest designs found so far (``Infeasibility.cut``)."""
     tally = _Tally(constraints)
     top_idx, top_score = np.zeros(0, np.int64), np.zeros(0)
     scores = miss_scores(space, constraints, tally) if every_combination else \
         _best_first_scores(space, constraints, tally, n_closest)
+    cut = False
     for idx, score in scores:
         top_idx, top_score = _closest(top_idx, top_score, idx, score, n_closest)
+        if deadline is not None and time.perf_counter() > deadline:
+            cut = True
+            break
     unmeetable = []
     for c in constraints:
         if not tally.met[c.name] and tally.best[c.name] is not None:
             unmeetable.append((c.label, tally.best[c.name] / c.factor, c.limit / c.factor, c.unit))
-    return Infeasibility(unmeetable, _closest_designs(space, constraints, objective, [int(c) for c in top_idx]))
+    return Infeasibility(unmeetable, _closest_designs(space, constraints, objective, [int(c) for c in top_idx]),
+                         cut=cut)
 
 
 def _bounded(c) -> bool:

@@ -49,8 +49,9 @@ def _run_search(task: Task, method: str, top: int, time_limit: float, t0: float)
     else:
         from .bestfirst import bound_order_search
 
-        ex, stats = bound_order_search(task.space, task.constraints, task.objective, top=top)
-    return scalar_result(task, method, ex, stats, top, t0)
+        ex, stats = bound_order_search(task.space, task.constraints, task.objective, top=top,
+                                       deadline=t0 + time_limit)
+    return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit if method == "default" else None)
 
 
 def _run_bonmin(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
@@ -101,7 +102,8 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     problem       : :class:`axisopt.problem.Problem`
     method        : a :data:`METHOD_TABLE` name: 'default' | 'exhaustive' | 'bonmin' | 'scip'
     top           : number of designs returned (best + runners-up; a method without runners-up notes it)
-    time_limit    : Bonmin / SCIP wall-clock limit [s]
+    time_limit    : wall-clock limit [s] of every method: the default method then returns the best design found
+                    with its gap (status 'time_limit'), or an infeasible answer's explanation so far
     sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that allow it);
                     and, when nothing fits (default method), the design change a search verifies
                     (:mod:`.advice`); a batch study leaves both out
@@ -196,20 +198,29 @@ def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0:
     return res
 
 
-def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float) -> SolveResult:
+def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
+                  deadline: float | None = None) -> SolveResult:
     """The SolveResult of a search that ends in the exact solves ``ex`` with statistics ``stats``: infeasible
-    (with the explanation and what to relax), or the ``top`` best polished by IPOPT."""
+    (with the explanation, cut at ``deadline``, and what to relax), or the ``top`` best polished by IPOPT."""
     from .polish import polish
 
     problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
     stats.pruned_by_dominance = space.pruned_by_dominance
+    if not np.isfinite(ex.objective).any() and stats.timed_out:
+        return SolveResult(TIME_LIMIT, method, problem.name, spec.label, spec.unit, None, [], Certificate.of(stats),
+                           time.perf_counter() - t0, message="the time limit came before any design was found: not "
+                           "proven infeasible (a longer --time-limit searches on)")
     if not np.isfinite(ex.objective).any():
         from .explain import explain_infeasible
         from .relax import rank_relaxations
 
-        why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive")
+        why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive",
+                                 deadline=deadline)
         why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
         message = "no catalog combination meets every limit"
+        if why.cut:
+            message += ("; the explanation stopped at the time limit: the closest designs are those found by then "
+                        "(a longer --time-limit explains further)")
         if space.reductions_by_backlash:
             lim = problem.limit_map.get("max_backlash", 0.0)
             message += (f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each one's "

@@ -49,6 +49,7 @@ class SearchStats:
     pruned_by_block: int = 0  # default method: combinations never screened (their block cannot win)
     screened: int | None = None  # default method: combinations in the blocks screened
     pruned_by_dominance: int = 0  # combinations never formed (dominated drive pairs)
+    timed_out: bool = False  # default method: stopped at the time limit (the gap says how far from proven)
 
 
 @dataclass
@@ -210,8 +211,9 @@ class Certificate:
     @classmethod
     def of(cls, stats: SearchStats, nlps: int = 0, fails: int = 0, notes=()) -> Certificate:
         """The certificate of a search's statistics, its NLP solves and failures and its notes."""
-        return cls(nlps_solved=nlps, nlp_failures=fails, notes=tuple(notes),
-                   **{f.name: getattr(stats, f.name) for f in fields(SearchStats)})
+        notes = tuple(notes) + (("the search stopped at the time limit (--time-limit)",) if stats.timed_out else ())
+        return cls(nlps_solved=nlps, nlp_failures=fails, notes=notes,
+                   **{f.name: getattr(stats, f.name) for f in fields(SearchStats) if f.name != "timed_out"})
 
     def to_dict(self) -> dict:
         return {k: _clean(v) for k, v in asdict(self).items()}
@@ -376,6 +378,9 @@ class Infeasibility:
     relax_blocked_by: list = field(default_factory=list)
     # axis changes verified to make the problem feasible (search.advice), offered before any relaxation
     design_changes: list = field(default_factory=list)
+    # the explanation stopped at the time limit: the closest designs are those found by then, the unmeetable
+    # limits' best values those reached by then
+    cut: bool = False
 
     def to_dict(self) -> dict:
         return {"unmeetable": [{"limit": n, "best_achievable": _clean(b), "limit_value": _clean(v), "unit": u}
