@@ -342,3 +342,15 @@ def test_known_bug(bug):
         assert cls == "clean error", f"{cls}: exit {out.rc}; {detail}"
         return
     assert cls not in BAD, f"{cls}: {detail}"
+
+
+def test_a_plausibility_warning_is_part_of_the_contract():
+    """The one-line plausibility warning (design.plausible) beside a success or an error is no stray warning."""
+    from fuzz_inputs import Outcome
+
+    c = Case("problem", "acceleration scaled 1e-3", ["solve", "p.yaml"])
+    warn = ("warning: p.yaml: line 14, key 'axis.acceleration': 0.003 m/s^2 is far below machine-tool practice "
+            "(0.1-50 m/s^2): check the value and its unit\n")
+    assert classify(c, Outcome(0, "ok\n", warn, 0.1))[0] != "warning"
+    assert classify(c, Outcome(2, "", warn + "error: p.yaml: bad\n", 0.1))[0] == "clean error"
+    assert classify(c, Outcome(0, "ok\n", "warning: something else\n", 0.1))[0] == "warning"
