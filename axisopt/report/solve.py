@@ -159,7 +159,8 @@ def relax_lines(inf) -> list:
     L0 = []
     if inf.design_changes:
         texts = [_change_text(d) for d in inf.design_changes]
-        head = "  change the axis: " if len(texts) == 1 else "  change the axis, together: "
+        what = "the axis" if all(d.key.startswith("axis.") for d in inf.design_changes) else "the design"
+        head = f"  change {what}: " if len(texts) == 1 else f"  change {what}, together: "
         L0 = [head + "; ".join(texts) + ": the catalogs then hold a design (re-solved)"]
     rel = inf.relax
     if not rel:

@@ -3,6 +3,9 @@ a search on the changed problem (:func:`design_changes`).
 
 The kinds of change, each offered only where the closest designs' misses call for it:
 
+- **a budget or mass raised**: every closest design misses ``max_cost`` (or a mass limit): the least value at
+  which the catalogs hold a design meeting every other limit, bisected between the limit and the closest designs'
+  need (up to 1 + :data:`BISECT` searches), first of all;
 - **rapid speed** lowered: a margin of a speed check (critical speed, DN, the motor's, coupling's, reduction's or
   rotating-nut unit's speed: available / needed >= L) needs the speed it is short of in proportion: a design that
   reaches L (1 - m) meets L at the rapid speed times (1 - m);
@@ -51,6 +54,9 @@ BALANCE_LIMITS = frozenset({"min_life"})
 # of the weight; the shipped balanced Zs take 83 and 90 %)
 BALANCE_SHARE = 0.9
 FURTHER = 0.9  # the second proposal of a speed or acceleration: 10 % below the first
+# a budget or mass limit every closest design misses: raised (bisected) before any other change
+RAISED_LIMITS = ("max_cost", "max_total_mass", "max_moving_mass")
+BISECT = 4  # halvings of the raise (after the verified need)
 SAFETY = 0.98  # the proposal a little below the closest designs' bare need (their misses are at one preload)
 BUDGET = 6  # verifying searches at most (a count, not a time: the same answer on any machine)
 
@@ -185,12 +191,40 @@ def _feasible(problem) -> bool:
     return bool(np.isfinite(ex.objective).any())
 
 
+def _raise_limit(problem, constraints, misses, name: str) -> list:
+    """The least value of the budget or mass limit ``name`` (max_cost, max_total_mass, max_moving_mass) at which
+    the catalogs hold a design meeting every other limit: the closest designs' need first (the limit times one plus
+    their largest miss of it, verified), then halved toward the limit :data:`BISECT` times; [] when even the need
+    is not verified.  Rounded up to three significant figures."""
+    c = next((c for c in constraints if c.name == name), None)
+    need = [d[name] for d in misses if name in d]
+    if c is None or not need or not c.limit > 0:
+        return []
+    lo, hi = c.limit, c.limit * (1.0 + max(need)) / SAFETY
+    hi = _round(hi / c.factor, up=True) * c.factor
+    if not _feasible(problem.with_limit(name, hi)):
+        return []
+    for _ in range(BISECT):
+        mid = _round(0.5 * (lo + hi) / c.factor, up=True) * c.factor
+        if not lo < mid < hi:
+            break
+        if _feasible(problem.with_limit(name, mid)):
+            hi = mid
+        else:
+            lo = mid
+    return [DesignChange(f"limits.{name}", c.unit, c.limit / c.factor, hi / c.factor,
+                         "every other limit kept")]
+
+
 def design_changes(problem, constraints, infeasibility, budget: int = BUDGET) -> list:
     """The changes (:class:`.result.DesignChange`, to be made together) that make ``problem`` feasible, verified
     by a search; empty when no kind applies, none is verified or the budget is spent."""
     misses = _misses(constraints, infeasibility)
     if not misses:
         return []
+    for name in RAISED_LIMITS:  # a budget or mass the closest designs all need more of: how much more, first
+        if all(name in d for d in misses) and (found := _raise_limit(problem, constraints, misses, name)):
+            return found
     f_speed, f_accel = _factor(misses, SPEED_CHECKS), _factor(misses, ACCEL_CHECKS)
     speed = _scalar_step(problem, "max_speed", "m/min", 60.0, f_speed)
     accel = _scalar_step(problem, "acceleration", "m/s^2", 1.0, f_accel)

@@ -95,3 +95,18 @@ def test_unbalanced_vertical_gets_a_cylinder(tmp_path):
                      counterbalance=f"{{kind: cylinder, force: {c.to:g} N}}")
     again = solve(load_problem(fixed), "default", sensitivities=False)
     assert again.best is not None and again.certificate.proven
+
+
+def test_an_impossible_budget_is_raised_to_what_the_catalogs_need(tmp_path):
+    """The teaching problem at 1 500 EUR (it needs about 2 500): the advice raises the budget to the least value
+    that a search verifies (bisected, three figures), and the problem with it solves while 10 % less does not."""
+    res = solve(load_problem(_variant(tmp_path, "teaching_problem.yaml", max_cost="1500 EUR")), "default")
+    assert res.best is None
+    [c] = res.infeasibility.design_changes
+    assert c.key == "limits.max_cost" and c.unit == "EUR" and c.value == pytest.approx(1500.0)
+    assert 1500.0 < c.to < 3500.0
+    ok = solve(load_problem(_variant(tmp_path, "teaching_problem.yaml", max_cost=f"{c.to:g} EUR")), "default",
+               sensitivities=False)
+    short = solve(load_problem(_variant(tmp_path, "teaching_problem.yaml", max_cost=f"{0.9 * c.to:g} EUR")),
+                  "default", sensitivities=False)
+    assert ok.best is not None and ok.certificate.proven and short.best is None
