@@ -72,7 +72,7 @@ LIMIT_TABLE = (
     Limit("max_total_mass", "total_mass", "<=", "mass", "kg", 1.0, "total mass of the axis parts at most this"),
     Limit("max_cost", "cost", "<=", "money", "EUR", 1.0, "cost of the parts at most this"),
     Limit("max_drag_torque", "drag_torque", "<=", "torque", "N.m", 1.0,
-          "drag torque (nut and bearings) at most this"),
+          "drag torque (nut, support bearings and guides, at the rapid speed) at most this"),
     Limit("min_life", "life", ">=", "time", "h", 3600.0,
           "nut L10 life at least this; without axis.required_life also the need of the nut, bearing and "
           "guide life checks"),

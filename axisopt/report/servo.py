@@ -28,7 +28,7 @@ def servo_lines(r: ServoResult) -> list:
         ("velocity loop", f"{g.velocity_hz:.1f} Hz, Ti {g.ti * 1e3:.2f} ms, filter {g.tf * 1e3:.2f} ms"
                           f"{notch}, current {1 / (2 * math.pi * g.tc):.0f} Hz"),
         ("following error v/Kv", f"{r.following_error_rapid * 1e3:.3f} mm at {r.rapid_speed * 60:.0f} m/min rapid, "
-                                 f"{r.following_error_feed * 1e3:.3f} mm at {r.feed_speed * 60:.0f} m/min feed"),
+                                 f"{r.following_error_feed * 1e3:.3f} mm at {r.feed_speed * 60:.0f} m/min mean"),
         ("closed loop on model", f"{stable} at {' / '.join(f'{p:.0f}' for p in r.position_mm)} mm (least damping "
                                  f"{min(r.min_damping) * 100:.1f} %)"),
         ("  -3 dB bandwidth", "velocity " + " / ".join(f"{b:.0f}" for b in r.velocity_bandwidth_Hz)
