@@ -248,7 +248,8 @@ class Binding:
     def __repr__(self) -> str:
         u = self.unit if self.unit not in ("", "-") else ""
         gain = "" if self.objective_gain is None else \
-            f"relaxed to {fmt(self.relaxed_to, u)} the objective changes by {self.objective_gain:+.4g}"
+            f"relaxed to {fmt(self.relaxed_to, u)} the objective changes by " \
+            + (f"{self.objective_gain:+.4g}" if self.binding else "+0")  # a residue within tolerance is none
         return one_line("Binding", f"{self.limit} {fmt(self.value, u)}", {
             "at optimum": fmt(self.at_optimum, u), "": "binding" if self.binding else "not binding",
             "gain": gain})

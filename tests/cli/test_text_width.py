@@ -36,3 +36,16 @@ def test_solve_with_sensitivities_and_advice_fits(name, capsys):
 def test_evaluate_text_fits(path, capsys):
     assert main(["evaluate", str(path)]) == 0
     assert not _wide(capsys.readouterr().out)
+
+
+def test_a_gain_within_tolerance_reads_plus_zero():
+    """A limit that does not bind shows '+0', not a rounding residue such as '+1.421e-14' (issue 42)."""
+    from dataclasses import replace
+
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+
+    res = solve(load_problem(ROOT / "teaching_problem.yaml"))
+    loose = next(b for b in res.binding if not b.binding)
+    text = repr(replace(loose, objective_gain=1.421e-14))
+    assert "changes by +0" in text and "e-14" not in text
