@@ -46,6 +46,8 @@ TORQUE_CHECKS = frozenset({"motor_peak_torque", "motor_rated_torque", "reduction
 LIFT_OFF_CHECKS = frozenset({"nut_lift_off", "bearing_lift_off"})
 ACCEL_CHECKS = TORQUE_CHECKS | LIFT_OFF_CHECKS
 # a reduction's ratio scales the reflected inertia, the torque and the motor speed
+# the axis values lowered: (key, display unit, display per SI, the checks whose misses set the factor)
+SCALARS = (("max_speed", "m/min", 60.0, SPEED_CHECKS), ("acceleration", "m/s^2", 1.0, ACCEL_CHECKS))
 REDUCTION_CHECKS = TORQUE_CHECKS | {"inertia_ratio", "motor_speed"}
 # what a counterbalance relieves on a vertical axis: the weight in the torques, lift-off and the lives
 BALANCE_CHECKS = TORQUE_CHECKS | LIFT_OFF_CHECKS | {"holding_torque", "brake_torque"}
@@ -119,12 +121,12 @@ def _scalar_step(problem, key, unit, scale, factor) -> _Step | None:
                  lambda p, k=key, t=to: replace(p, axis=_with(p.axis, k, t)))
 
 
-def _reduction_step(problem, misses) -> _Step | None:
-    """Admit the reductions the problem's max_backlash left out (parts: lost motion = backlash x lead / 2 pi at
-    the table), when the closest designs miss what a reduction's ratio changes."""
+def _reduction_step(problem, misses, space) -> _Step | None:
+    """Admit the reductions the problem's max_backlash left out of ``space`` (parts: lost motion = backlash x lead
+    / 2 pi at the table), when the closest designs miss what a reduction's ratio changes."""
     from .parts import build_space
 
-    if not any(REDUCTION_CHECKS & d.keys() for d in misses):
+    if not space.reductions_by_backlash or not any(REDUCTION_CHECKS & d.keys() for d in misses):
         return None
     limit = problem.limit_map.get("max_backlash")
     if limit is None:
@@ -176,14 +178,16 @@ def _balance_step(problem, misses, constraints) -> _Step | None:
     return _Step((change,), lambda p: replace(p, axis=replace(p.axis, counterbalance=new)))
 
 
-def _feasible(problem) -> bool:
+def _feasible(problem, space=None) -> bool:
+    """Whether the catalogs hold a design of ``problem`` (the default search, stopped at its first feasible
+    design); ``space``: its search space when the change left the parts as they were (a limit, not the axis)."""
     from .bestfirst import bound_order_search
     from .parts import build_space
     from .task.constraints import build_constraints
     from .task.objective import objective_spec
 
     try:
-        space = build_space(problem)
+        space = build_space(problem) if space is None else space
     except Exception:  # noqa: BLE001 - a change the inputs refuse (a duty cycle it breaks) is no advice
         return False
     spec = objective_spec(problem.objective.mode, problem)
@@ -191,24 +195,25 @@ def _feasible(problem) -> bool:
     return bool(np.isfinite(ex.objective).any())
 
 
-def _raise_limit(problem, constraints, misses, name: str) -> list:
+def _raise_limit(problem, constraints, misses, name: str, space) -> list:
     """The least value of the budget or mass limit ``name`` (max_cost, max_total_mass, max_moving_mass) at which
     the catalogs hold a design meeting every other limit: the closest designs' need first (the limit times one plus
     their largest miss of it, verified), then halved toward the limit :data:`BISECT` times; [] when even the need
-    is not verified.  Rounded up to three significant figures."""
+    is not verified.  Rounded up to three significant figures.  A budget or mass limit leaves the parts as they
+    are: every search reuses ``space``."""
     c = next((c for c in constraints if c.name == name), None)
     need = [d[name] for d in misses if name in d]
     if c is None or not need or not c.limit > 0:
         return []
     lo, hi = c.limit, c.limit * (1.0 + max(need)) / SAFETY
     hi = _round(hi / c.factor, up=True) * c.factor
-    if not _feasible(problem.with_limit(name, hi)):
+    if not _feasible(problem.with_limit(name, hi), space):
         return []
     for _ in range(BISECT):
         mid = _round(0.5 * (lo + hi) / c.factor, up=True) * c.factor
         if not lo < mid < hi:
             break
-        if _feasible(problem.with_limit(name, mid)):
+        if _feasible(problem.with_limit(name, mid), space):
             hi = mid
         else:
             lo = mid
@@ -216,22 +221,26 @@ def _raise_limit(problem, constraints, misses, name: str) -> list:
                          "every other limit kept")]
 
 
-def design_changes(problem, constraints, infeasibility, budget: int = BUDGET) -> list:
+def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *, space=None) -> list:
     """The changes (:class:`.result.DesignChange`, to be made together) that make ``problem`` feasible, verified
-    by a search; empty when no kind applies, none is verified or the budget is spent."""
+    by a search; empty when no kind applies, none is verified or the budget is spent.  ``space``: the problem's
+    search space, if built."""
+    from .parts import build_space
+
     misses = _misses(constraints, infeasibility)
     if not misses:
         return []
+    space = build_space(problem) if space is None else space
     for name in RAISED_LIMITS:  # a budget or mass the closest designs all need more of: how much more, first
-        if all(name in d for d in misses) and (found := _raise_limit(problem, constraints, misses, name)):
+        if all(name in d for d in misses) and (found := _raise_limit(problem, constraints, misses, name, space)):
             return found
-    f_speed, f_accel = _factor(misses, SPEED_CHECKS), _factor(misses, ACCEL_CHECKS)
-    speed = _scalar_step(problem, "max_speed", "m/min", 60.0, f_speed)
-    accel = _scalar_step(problem, "acceleration", "m/s^2", 1.0, f_accel)
-    # one step further each (the closest designs' misses are at one preload and one screw: another may need more)
-    further = [_scalar_step(problem, k, u, sc, f and f * FURTHER) for k, u, sc, f in
-               (("max_speed", "m/min", 60.0, f_speed), ("acceleration", "m/s^2", 1.0, f_accel))]
-    structural = [s for s in (_reduction_step(problem, misses), _balance_step(problem, misses, constraints)) if s]
+    # the speed and the acceleration as the closest designs' misses say, and one step further each (their misses
+    # are at one preload and one screw: another may need more)
+    factors = [(key, unit, scale, _factor(misses, checks)) for key, unit, scale, checks in SCALARS]
+    speed, accel = (_scalar_step(problem, k, u, sc, f) for k, u, sc, f in factors)
+    further = [_scalar_step(problem, k, u, sc, f and f * FURTHER) for k, u, sc, f in factors]
+    structural = [s for s in (_reduction_step(problem, misses, space), _balance_step(problem, misses, constraints))
+                  if s]
     singles = [s for s in [speed, accel, *further] if s] + structural
     # a structural change with the speed and acceleration on top (the misses it leaves need them)
     pairs = [(s, t) for s in structural for t in (speed, accel) if t]

@@ -155,7 +155,8 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
         if sensitivities and res.infeasibility is not None and method == "default":
             # the infeasible answer's what-if: an axis change the search verifies, before any limit is relaxed
             from .advice import design_changes
-            res.infeasibility.design_changes = design_changes(problem, task.constraints, res.infeasibility)
+            res.infeasibility.design_changes = design_changes(problem, task.constraints, res.infeasibility,
+                                                              space=task.space)
             res.time = time.perf_counter() - t0
         if res.best is not None and res.best.design is not None:
             res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in task.objective.terms])
