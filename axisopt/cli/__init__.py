@@ -60,26 +60,28 @@ def _one_output_on_stdout(args) -> None:
         raise InputError(f"{' and '.join(taken)} would {both} write to standard output; give all but one a file name")
 
 
-def _show_implausible(message, category, filename, lineno, file=None, line=None):
+def _warning_lines(other):
     """warnings.showwarning for the CLI: an ImplausibleInput is one 'warning:' line on stderr (file, line, key and
-    what is off); any other warning as Python prints it."""
-    if issubclass(category, ImplausibleInput):
-        print(f"warning: {message}", file=sys.stderr)
-    else:
-        _PYTHON_SHOWWARNING(message, category, filename, lineno, file, line)
-
-
-_PYTHON_SHOWWARNING = warnings.showwarning
+    what is off); any other warning goes to ``other`` (the showwarning in place)."""
+    def show(message, category, filename, lineno, file=None, line=None):
+        if issubclass(category, ImplausibleInput):
+            print(f"warning: {message}", file=sys.stderr)
+        else:
+            other(message, category, filename, lineno, file, line)
+    return show
 
 
 def main(argv=None) -> int:
+    with warnings.catch_warnings():  # the filters and showwarning as they were when main returns
+        warnings.simplefilter("always", ImplausibleInput)
+        warnings.showwarning = _warning_lines(warnings.showwarning)
+        return _main(argv)
+
+
+def _main(argv) -> int:
     _show_progress()
     saved = sys.stdout
     out = sys.stdout = GuardedStdout(saved)
-    caught = warnings.catch_warnings()  # restores the filters and showwarning when main returns
-    caught.__enter__()
-    warnings.simplefilter("always", ImplausibleInput)
-    warnings.showwarning = _show_implausible
     try:
         parser = build_parser()
         if not (sys.argv[1:] if argv is None else argv):  # `axisopt` alone: the commands and what each does
@@ -97,7 +99,6 @@ def main(argv=None) -> int:
     finally:
         out.flush()
         sys.stdout = saved
-        caught.__exit__(None, None, None)
     return code
 
 
