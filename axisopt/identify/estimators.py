@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .effects import time_effects
+from .effects.disturbance import golden
 from .timemodel import Processing, Rows, decimate, full_matrix, matrix, signals, term
 from .timerecord import TimeRecord, derivatives, lowpass
 
@@ -88,19 +89,7 @@ def search_shape(rows: Rows, terms, shape: dict, lo: float, hi: float, name: str
     vals = [rss(g) for g in grid]
     k = int(np.argmin(vals))
     a, b = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
-    g = (math.sqrt(5) - 1) / 2
-    c, d = b - g * (b - a), a + g * (b - a)
-    fc_, fd = rss(c), rss(d)
-    for _ in range(18):
-        if fc_ < fd:
-            b, d, fd = d, c, fc_
-            c = b - g * (b - a)
-            fc_ = rss(c)
-        else:
-            a, c, fc_ = c, d, fd
-            d = a + g * (b - a)
-            fd = rss(d)
-    return math.exp((a + b) / 2)
+    return math.exp(golden(rss, a, b, 18))
 
 
 
