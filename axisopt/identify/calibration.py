@@ -79,12 +79,16 @@ def calibration_dict(diag, design=None, sources=()) -> dict:
     return out
 
 
-def save_calibration(diag, path, design=None, sources=()) -> dict:
-    d = calibration_dict(diag, design, sources)
+def write_calibration(d: dict, path) -> dict:
+    """Write a calibration record ``d`` (a table's or a time record's) as YAML to ``path``; returns ``d``."""
     from ..fileio import write_text_atomic
 
     write_text_atomic(path, yaml.safe_dump(d, sort_keys=False, allow_unicode=True), what="calibration")
     return d
+
+
+def save_calibration(diag, path, design=None, sources=()) -> dict:
+    return write_calibration(calibration_dict(diag, design, sources), path)
 
 
 def _read(path) -> dict:

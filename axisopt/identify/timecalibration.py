@@ -10,9 +10,7 @@ from __future__ import annotations
 
 import math
 
-import yaml
-
-from .calibration import FORMAT, calibrate_design
+from .calibration import FORMAT, calibrate_design, write_calibration
 from .timemodel import shape_params, term
 
 # unit kind of a time-record term -> (quantity kind, unit, factor from SI), per record quantity
@@ -68,8 +66,4 @@ def time_calibration_dict(diag, design=None, sources=()) -> dict:
 
 
 def save_time_calibration(diag, path, design=None, sources=()) -> dict:
-    d = time_calibration_dict(diag, design, sources)
-    from ..fileio import write_text_atomic
-
-    write_text_atomic(path, yaml.safe_dump(d, sort_keys=False, allow_unicode=True), what="calibration")
-    return d
+    return write_calibration(time_calibration_dict(diag, design, sources), path)
