@@ -22,8 +22,10 @@ def _wide(out: str) -> list:
 
 @pytest.mark.parametrize("path", PROBLEMS, ids=[p.stem for p in PROBLEMS])
 def test_solve_text_fits(path, capsys):
-    main(["solve", str(path), "--top", "3", "--no-sensitivity"])
+    """... and every shipped problem but the two infeasible examples has a design (exit 0)."""
+    rc = main(["solve", str(path), "--top", "3", "--no-sensitivity"])
     assert not _wide(capsys.readouterr().out)
+    assert rc == (1 if path.stem.startswith("infeasible") else 0)
 
 
 @pytest.mark.parametrize("name", ["teaching_problem.yaml", "infeasible_problem.yaml"])
