@@ -19,11 +19,13 @@ from .function import (
     model_for,
 )
 from .modes import STEEL_DAMPING
+from .outputs import CHAIN_OUTPUTS, OUTPUT_TABLE, OUTPUTS
 from .params import PARAM_NAMES, axis_params, one_design, positions
-from .response import CHAIN_OUTPUTS, axis_response, drive_inputs, drive_response
+from .response import axis_response, drive_inputs, drive_response
 
 __all__ = [
-    "CHAIN_OUTPUTS", "CHECKS", "CHECK_LABELS", "DRIVE_CHECKS", "COMPONENTS", "passes", "PARAM_NAMES", "PROFILE_OUTPUTS",
+    "CHAIN_OUTPUTS", "OUTPUT_TABLE", "OUTPUTS",
+    "CHECKS", "CHECK_LABELS", "DRIVE_CHECKS", "COMPONENTS", "passes", "PARAM_NAMES", "PROFILE_OUTPUTS",
     "SCALAR_OUTPUTS",
     "SCREW_EFFICIENCY",
     "STEEL_DAMPING", "AxisModel", "Evaluation", "axis_params", "axis_response", "design_params", "drive_inputs",

@@ -12,29 +12,14 @@ from ..design import Design, rotating_nut
 from ..display import fmt, frame, html_fields, html_table, one_line
 from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes
 from .limits import CHECK_RECORDS
+from .outputs import PROFILE, SCALAR
 from .params import PARAM_NAMES, axis_params, positions
 from .response import axis_response
 
-PROFILE_OUTPUTS = ("k_screw", "k_screw_bearings", "k_torsion", "k_drive", "k_total", "f_axial", "f1", "m_eff",
-                   "thermal_displacement", "f_axial_torsional", "f_axial_torsional_2", "damping_ratio",
-                   "zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure", "k_tool", "kv",
-                   "f_gantry", "f_racking", "k_racking")
-SCALAR_OUTPUTS = ("k_nut", "k_nut_unloaded", "k_bearing", "k_coupling", "c_bracket", "c_housing", "f_table",
-                  "drag_torque", "drag_nut", "drag_bearings", "drag_guides", "moving_mass", "total_mass",
-                  "screw_mass", "cost",
-                  "max_axial_force", "mean_axial_force", "guide_friction", "pretension", "thermal_force",
-                  "bearing_static_load", "screw_compression", "backlash", "life", "bearing_life", "guide_life",
-                  "screw_speed", "critical_speed", "buckling_load", "yield_load", "dn", "nut_lift_off_force",
-                  "bearing_max_load", "load_inertia", "total_inertia", "inertia_ratio", "motor_speed", "peak_torque",
-                  "rms_torque", "thrust_torque", "mean_thrust_torque", "holding_torque", "friction_torque",
-                  "gravity_torque", "regen_energy", "regen_power", "output_peak_torque", "output_rms_torque",
-                  "duty_time", "guide_max_load", "guide_static_safety", "guide_mean_load", "nut_static_safety",
-                  "k_pitch", "k_yaw", "f_pitch", "f_yaw", "c_rocking", "friction_power", "heat_transfer",
-                  "heat_balance_rise", "temperature_rise", "thermal_growth", "c_unit_bearing", "screw_sag",
-                  "unit_bearing_life", "gantry_moving_mass",
-                  "lead_error", "thermal_error", "elastic_error", "abbe_error", "lost_motion", "positioning_error",
-                  "repeatability",
-                  ) + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
+# the CasADi Function's outputs, in order: the declared outputs (model.outputs.OUTPUT_TABLE), then each vendor
+# check's margin, available and needed values (model.limits.CHECK_TABLE)
+PROFILE_OUTPUTS = PROFILE
+SCALAR_OUTPUTS = SCALAR + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
 
 
 @dataclass

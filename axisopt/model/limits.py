@@ -14,28 +14,9 @@ import math
 from dataclasses import dataclass
 from types import MappingProxyType
 
-RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
-CONVEX = 2  # a preload direction: the output is convex in the nut preload (met on an interval of preloads)
+from .outputs import CONVEX, OUTPUT_PRELOAD
 
-# How model outputs move with the nut preload (+1 nondecreasing, -1 nonincreasing, CONVEX; absent: independent).
-# The search's exact 1-D solve rests on it (default == exhaustive in tests/search checks it): the minimum
-# stiffness and frequency, the drag torque and the nut lift-off margin rise with the preload, the nut life
-# falls, and the motor torques are convex (the nut's drag raises the torque of some phases of the cycle and
-# lowers that of others: deceleration, lowering a vertical axis).
-# The heat balance (model.heat) makes the temperature rise grow with the preload (nut drag x speed), and with it
-# the thermal growth, the thermal push of a fixed-fixed screw beyond its pretension (which absorbs a fixed design
-# rise) and the bearing set's static load: the bearing life,
-# bearing lift-off, screw yield and buckling margins fall with the preload (independent without a duty cycle).
-OUTPUT_PRELOAD = MappingProxyType({
-    "k_total": 1, "k_tool": 1, "f1": 1, "k_nut": 1, "k_drive": 1, "f_axial": 1, "drag_torque": 1, "drag_nut": 1,
-    "life": -1, "kv": 1,
-    "friction_power": 1, "heat_balance_rise": 1, "temperature_rise": 1, "thermal_growth": 1,
-    # the positioning budget (model.accuracy): the deflection falls with the preload, every other row is independent
-    # of it (the thermal row at the nut's highest preload)
-    "elastic_error": -1, "positioning_error": -1,
-    # the nut's drag brakes every move: the energy the motor returns falls with the preload
-    "regen_energy": -1, "regen_power": -1,
-})
+RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
 
 
 @dataclass(frozen=True)
@@ -123,6 +104,10 @@ class Check:
     relaxable: a rule with a margin one may trade (False: a compatibility rule, parts that fit or not; an
                infeasible problem's explanation never proposes relaxing it)
     rotating_nut : a check of a driven rotating-nut unit (model.checks.unit_checks): shown for such a nut only
+    set_by   : what of the axis sets its needed value, for the advice on an infeasible problem
+               (search.advice): 'speed' (the rapid speed: the need grows in proportion), 'acceleration' (with the
+               moving mass), 'weight' (on a vertical axis: what a counterbalance relieves), 'ratio' (what a
+               reduction's ratio changes: reflected inertia, torque, motor speed)
     """
 
     name: str
@@ -134,42 +119,57 @@ class Check:
     drive: bool = False
     relaxable: bool = True
     rotating_nut: bool = False
+    set_by: tuple = ()
 
 
+SPEED, ACCEL, WEIGHT, RATIO = "speed", "acceleration", "weight", "ratio"
+TORQUE_SET_BY = (ACCEL, WEIGHT, RATIO)  # a motor or reduction torque
+
+# How the margins move with the nut preload (``preload``): the nut lift-off margin rises with it, the nut life
+# falls, and the motor and reduction torques are convex (the nut's drag raises the torque of some phases of the
+# cycle and lowers that of others: deceleration, lowering a vertical axis).  Through the heat balance the bearing
+# life, bearing lift-off, screw yield and buckling margins fall with it (independent without a duty cycle).
 CHECK_TABLE = (
-    Check("critical_speed", "critical speed / max screw speed", "critical speed", "rpm", RPM),
+    Check("critical_speed", "critical speed / max screw speed", "critical speed", "rpm", RPM, set_by=(SPEED,)),
     Check("buckling", "buckling load / max screw compression", "buckling load", "kN", 1e-3, preload=-1),
     Check("screw_yield", "yield load (THK P2) / max screw tension", "screw yield load", "kN", 1e-3, preload=-1),
-    Check("nut_life", "nut L10 life / required life", "nut life", "h", 1 / 3600, preload=-1),
-    Check("bearing_life", "support bearing L10 life / required life", "bearing life", "h", 1 / 3600, preload=-1),
+    Check("nut_life", "nut L10 life / required life", "nut life", "h", 1 / 3600, preload=-1, set_by=(WEIGHT,)),
+    Check("bearing_life", "support bearing L10 life / required life", "bearing life", "h", 1 / 3600, preload=-1,
+          set_by=(WEIGHT,)),
     Check("guide_life", "guide block L10 travel / required travel", "guide travel", "km", 1e-3),
-    Check("dn", "DN limit / DN at max speed", "DN value", "mm.rpm", 1e3 * RPM),
-    Check("nut_lift_off", "nut lift-off force / max axial force", "nut lift-off", "kN", 1e-3, preload=1),
+    Check("dn", "DN limit / DN at max speed", "DN value", "mm.rpm", 1e3 * RPM, set_by=(SPEED,)),
+    Check("nut_lift_off", "nut lift-off force / max axial force", "nut lift-off", "kN", 1e-3, preload=1,
+          set_by=(ACCEL, WEIGHT)),
     Check("nut_preload", "preload ceiling (10 % Ca, THK A-687) / nut preload", "nut preload ceiling", "kN", 1e-3,
           preload=-1),
     Check("bearing_lift_off", "bearing lift-off load / max bearing load", "bearing lift-off", "kN", 1e-3,
-          preload=-1),
-    Check("bearing_speed", "bearing limiting speed / max screw speed", "bearing speed", "rpm", RPM),
+          preload=-1, set_by=(ACCEL, WEIGHT)),
+    Check("bearing_speed", "bearing limiting speed / max screw speed", "bearing speed", "rpm", RPM, set_by=(SPEED,)),
     Check("bearing_fit", "bearing bore within the screw end's range", "bearing bore (max)", "mm", 1e3,
           relaxable=False),
     Check("screw_length", "screw max length / needed length", "screw length", "mm", 1e3, relaxable=False),
     Check("motor_peak_torque", "motor peak zone / peak torque (cycle, thrust)", "motor peak torque", "N.m", 1.0,
-          preload=CONVEX, drive=True),
+          preload=CONVEX, drive=True, set_by=TORQUE_SET_BY),
     Check("motor_rated_torque", "rated x RMS ratio / RMS torque, mean thrust", "motor rated torque", "N.m", 1.0,
-          preload=CONVEX, drive=True),
-    Check("motor_speed", "motor max speed / needed motor speed", "motor speed", "rpm", RPM, drive=True),
-    Check("inertia_ratio", "inertia ratio limit / load-to-rotor ratio", "inertia ratio", "", 1.0, drive=True),
-    Check("brake_holding", "brake torque / safety x gravity torque", "brake holding", "N.m", 1.0, drive=True),
+          preload=CONVEX, drive=True, set_by=TORQUE_SET_BY),
+    Check("motor_speed", "motor max speed / needed motor speed", "motor speed", "rpm", RPM, drive=True,
+          set_by=(SPEED, RATIO)),
+    Check("inertia_ratio", "inertia ratio limit / load-to-rotor ratio", "inertia ratio", "", 1.0, drive=True,
+          set_by=(RATIO,)),
+    Check("brake_holding", "brake torque / safety x gravity torque", "brake holding", "N.m", 1.0, drive=True,
+          set_by=(WEIGHT,)),
     Check("coupling_torque", "coupling rated torque / motor peak torque", "coupling torque", "N.m", 1.0,
           drive=True),
-    Check("coupling_speed", "coupling max speed / max screw speed", "coupling speed", "rpm", RPM, drive=True),
+    Check("coupling_speed", "coupling max speed / max screw speed", "coupling speed", "rpm", RPM, drive=True,
+          set_by=(SPEED,)),
     # a reduction part (Beckhoff AG2400/AG3400 Mechanical data): the output torques of the cycle against T2B and
     # T2N, the motor speed against n1Max; convex in the nut preload like the motor torques
     Check("reduction_accel_torque", "reduction T2B / peak output torque (cycle, thrust)", "reduction T2B", "N.m",
-          1.0, preload=CONVEX, drive=True),
+          1.0, preload=CONVEX, drive=True, set_by=TORQUE_SET_BY),
     Check("reduction_rated_torque", "reduction T2N / RMS output torque, mean thrust", "reduction T2N", "N.m",
-          1.0, preload=CONVEX, drive=True),
-    Check("reduction_speed", "reduction n1Max / max motor speed", "reduction speed", "rpm", RPM, drive=True),
+          1.0, preload=CONVEX, drive=True, set_by=TORQUE_SET_BY),
+    Check("reduction_speed", "reduction n1Max / max motor speed", "reduction speed", "rpm", RPM, drive=True,
+          set_by=(SPEED,)),
     Check("guide_static", "guide block C0 / (least f_S x largest block load)", "guide static", "kN", 1e-3),
     Check("nut_static", "nut C0a / (least f_S x largest axial force)", "nut static", "kN", 1e-3),
     # the static set load (pretension, thermal force) rises with the nut preload through the heat balance
@@ -177,7 +177,7 @@ CHECK_TABLE = (
           preload=-1),
     # a driven rotating-nut unit (model.checks.unit_checks): its speed, its built-in bearing, its mounting
     Check("unit_speed", "rotating-nut unit max speed / max nut speed", "unit speed", "rpm", RPM,
-          rotating_nut=True),
+          rotating_nut=True, set_by=(SPEED,)),
     Check("unit_bearing_life", "unit bearing L10 life / required life", "unit bearing life", "h", 1 / 3600,
           rotating_nut=True),
     Check("unit_bearing_static", "unit bearing C0a / (S0 4 x largest axial force)", "unit bearing static", "kN",

@@ -15,7 +15,7 @@ and ``identify`` builds its plant from it.  Sub-assemblies: :mod:`.loads` (masse
 from __future__ import annotations
 
 from ..physics.servo import kv_rule
-from .accuracy import BUDGET_OUTPUTS, positioning_budget
+from .accuracy import positioning_budget
 from .carriage import carriage_loads, rocking, tool_stiffness
 from .chain import stiffness_chain
 from .checks import checks
@@ -25,14 +25,6 @@ from .drive import drive, lost_motion
 from .heat import heat_balance, with_temperature
 from .loads import axial_loads, masses
 from .modes import axial_modes, damping, drive_train_modes
-
-# The outputs of the stiffness chain and the axial modes (``chain=False`` leaves them out).
-CHAIN_OUTPUTS = frozenset({"k_screw", "k_screw_bearings", "k_torsion", "k_coupling", "k_nut", "k_nut_unloaded",
-                           "c_bracket", "c_housing", "c_unit_bearing", "k_bearing", "k_drive", "k_total",
-                           "thermal_displacement",
-                           "m_eff", "f_axial", "f_table", "f1", "k_tool", "c_rocking", "k_pitch", "k_yaw",
-                           "f_pitch", "f_yaw", "kv", "thermal_growth", "f_gantry", "f_racking", "k_racking"}
-                          | set(BUDGET_OUTPUTS))
 
 
 def loaded(p: dict, preload) -> tuple:

@@ -23,6 +23,7 @@ import numpy as np
 
 from ... import mathx, model
 from ...model.limits import CHECK_RECORDS, CONVEX, LIMITS
+from ...model.outputs import REGEN_OUTPUTS
 from ...problem import Problem
 from .objective import min_last
 
@@ -101,9 +102,6 @@ class Constraint:
         if limit is None and self.limit <= 0:
             return v / self.factor
         return v / lim - 1.0
-
-
-REGEN_OUTPUTS = frozenset({"regen_energy", "regen_power"})
 
 
 def reads_regen(constraints) -> bool:

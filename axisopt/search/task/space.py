@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ... import model
+from ...model.outputs import COUPLING_OUTPUTS, DRIVE_OUTPUTS
 from ...problem import Problem
 
 SCREEN_CHUNK = 4_000_000  # combinations per structured screening block (memory)
@@ -52,17 +53,19 @@ def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = Tru
                                    regen=regen)
 
 
-# Outputs the motor, coupling and reduction change (all others are the same for every drive of a mechanical
-# combination); the lost motion takes a reduction's backlash.
-DRIVE_KEYS = frozenset({"cost", "inertia_ratio", "regen_power", "backlash"}
-                       | {f"margin_{c}" for c in model.DRIVE_CHECKS})
+# Outputs the motor, coupling and reduction change that the drive block computes without the stiffness chain
+# (model.drive_response; all others are the same for every drive of a mechanical combination, or, like the
+# positioning budget's lost motion, computed with the chain on the whole design), and the drive checks' margins:
+# declared in model.outputs.
+DRIVE_KEYS = frozenset(o for o in DRIVE_OUTPUTS if o not in model.CHAIN_OUTPUTS) | \
+    {f"margin_{c}" for c in model.DRIVE_CHECKS}
 # Drive outputs whose value with the mechanics layout (no motor, coupling or reduction; the bounds: the cheapest
 # drive's price) is the most favourable over every drive: the mechanical stages test them too, the drive stage
 # again per drive (the cost is never more than with the cheapest drive, the lost motion never less than the nut's)
 MECHANICS_BOUNDED = frozenset({"cost", "backlash"})
-# Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain); the motor's
-# inertia enters only the axial-torsional modes, which no limit or objective reads.
-COUPLING_KEYS = frozenset({"k_coupling", "k_total", "f_axial", "f1", "k_tool", "kv"})
+# Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain; model.outputs); the
+# motor's inertia enters only the axial-torsional modes, which no limit or objective reads.
+COUPLING_KEYS = COUPLING_OUTPUTS
 
 
 def respond_drive(p, preload, regen: bool = True) -> dict:
