@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ... import model
+from ...model.accuracy import BUDGET_OUTPUTS
 from ...model.outputs import COUPLING_OUTPUTS, DRIVE_OUTPUTS
 from ...problem import Problem
 
@@ -63,9 +64,12 @@ DRIVE_KEYS = frozenset(o for o in DRIVE_OUTPUTS if o not in model.CHAIN_OUTPUTS)
 # drive's price) is the most favourable over every drive: the mechanical stages test them too, the drive stage
 # again per drive (the cost is never more than with the cheapest drive, the lost motion never less than the nut's)
 MECHANICS_BOUNDED = frozenset({"cost", "backlash"})
-# Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain; model.outputs); the
-# motor's inertia enters only the axial-torsional modes, which no limit or objective reads.
-COUPLING_KEYS = COUPLING_OUTPUTS
+# Outputs the coupling's torsional stiffness changes (it is in series in the stiffness chain; model.outputs), which
+# the explanation evaluates once per coupling stiffness; the motor's inertia enters only the axial-torsional modes,
+# which no limit or objective reads.  The positioning budget's elastic row and total also change with it: the
+# explanation's mechanical stage evaluates them with the axis's coupling value, so its ranking of the closest designs
+# is approximate there (their misses are then computed on the whole design, exact).
+COUPLING_KEYS = COUPLING_OUTPUTS - frozenset(BUDGET_OUTPUTS)
 
 
 def respond_drive(p, preload, regen: bool = True) -> dict:
