@@ -130,7 +130,8 @@ def main(argv=None):
         if args.skip_exhaustive or (name == "synthetic-1M" and args.skip_exhaustive_large):
             e, te = None, float("nan")
         else:
-            e, te = timed(lambda prob=prob: solve(prob, "exhaustive", top=1, sensitivities=False))
+            e, te = timed(lambda prob=prob: solve(prob, "exhaustive", top=1, sensitivities=False,
+                                                    time_limit=math.inf))
         if args.skip_bonmin or pareto:
             b, tb = None, float("nan")
         else:

@@ -15,6 +15,7 @@ import time
 import numpy as np
 
 from ..units import N_PER_UM
+from . import bestfirst
 from .preload import BISECTION_STEPS, concat_exact, convex_interval, new_exact, subset
 from .result import Exact, SearchStats
 from .task.constraints import as_vector, ok_all
@@ -115,14 +116,27 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
     return res
 
 
-def exhaustive_search(space: Space, constraints, objective: ObjectiveSpec, chunk: int = 20000):
-    t0 = time.perf_counter()
-    parts = []
+def exhaustive_search(space: Space, constraints, objective: ObjectiveSpec, chunk: int = 20000, *,
+                      deadline: float | None = None):
+    """Every combination of ``space``, ``chunk`` at a time (:func:`grid_solve`).  ``deadline`` (a
+    time.perf_counter() value): stop there with the chunks solved so far (``stats.timed_out``, not proven, gap
+    unknown: no bound covers the rest); every :data:`.bestfirst.PROGRESS` seconds a progress record goes to the
+    "axisopt" logger (a terminal shows it).  Returns (Exact of the evaluated combinations, SearchStats)."""
+    t0 = shown = time.perf_counter()
+    parts, done, timed_out = [], 0, False
     for s in range(0, space.size, chunk):
+        now = time.perf_counter()
+        if deadline is not None and now > deadline:
+            timed_out = True
+            break
+        if now - shown > bestfirst.PROGRESS:
+            shown = now
+            bestfirst.LOG.info(f"  exhaustive: {done:,} of {space.size:,} combinations solved, {now - t0:.0f} s")
         parts.append(grid_solve(space, np.arange(s, min(space.size, s + chunk)), constraints, objective))
+        done = min(space.size, s + chunk)
     ex = concat_exact(parts) if parts else grid_solve(space, [], constraints, objective)
     stats = SearchStats(combinations=space.size, feasible=int(ex.feasible.sum()), pruned_by_bound=0,
-                        exact_evaluations=space.size, gap=0.0, proven=True, screening_time=0.0,
-                        screening_rate=space.size / max(time.perf_counter() - t0, 1e-9))
+                        exact_evaluations=done, gap=float("nan") if timed_out else 0.0, proven=not timed_out,
+                        screening_time=0.0, screening_rate=done / max(time.perf_counter() - t0, 1e-9),
+                        timed_out=timed_out)
     return ex, stats
-

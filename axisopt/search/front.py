@@ -45,13 +45,13 @@ def _run_search(task: Task, method: str, top: int, time_limit: float, t0: float)
     if method == "exhaustive":
         from .exhaustive import exhaustive_search
 
-        ex, stats = exhaustive_search(task.space, task.constraints, task.objective)
+        ex, stats = exhaustive_search(task.space, task.constraints, task.objective, deadline=t0 + time_limit)
     else:
         from .bestfirst import bound_order_search
 
         ex, stats = bound_order_search(task.space, task.constraints, task.objective, top=top,
                                        deadline=t0 + time_limit)
-    return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit if method == "default" else None)
+    return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit)
 
 
 def _run_bonmin(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:

@@ -46,3 +46,22 @@ def test_a_long_search_reports_progress(monkeypatch, caplog):
         solve(load_problem(ROOT / "problems" / "teaching_problem.yaml"), "default", sensitivities=False)
     lines = [r.getMessage() for r in caplog.records if "searching:" in r.getMessage()]
     assert lines and "blocks screened" in lines[0] and "combinations solved" in lines[0]
+
+
+def test_the_exhaustive_method_stops_at_the_limit_unproven():
+    p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
+    full = solve(p, "exhaustive", top=1, sensitivities=False)
+    res = solve(p, "exhaustive", top=1, sensitivities=False, time_limit=1e-3)
+    assert full.status == "optimal" and full.certificate.proven
+    assert res.status in ("time_limit",) and not res.certificate.proven
+    assert res.certificate.exact_evaluations < full.certificate.exact_evaluations
+    assert "stopped at the time limit" in " ".join(res.certificate.notes)
+
+
+def test_a_long_exhaustive_search_reports_progress(monkeypatch, caplog):
+    monkeypatch.setattr(bestfirst, "PROGRESS", 0.0)
+    p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
+    with caplog.at_level(logging.INFO, logger="axisopt"):
+        solve(p, "exhaustive", top=1, sensitivities=False)
+    lines = [r.getMessage() for r in caplog.records if "exhaustive:" in r.getMessage()]
+    assert lines and "combinations solved" in lines[-1]
