@@ -7,12 +7,17 @@ its solve status).  The table, JSON and CSV forms are made in :mod:`axisopt.repo
 
 from __future__ import annotations
 
+import logging
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import InputError
 from ..model import Evaluation, evaluate
 from ..yamlio import read_yaml
+
+LOG = logging.getLogger("axisopt")
+PROGRESS = 2.0  # [s] a comparison running longer reports each file done to the "axisopt" logger (a terminal)
 
 
 @dataclass
@@ -59,10 +64,16 @@ def file_kind(path) -> str:
 
 
 def load_compared(paths, method: str = "default") -> list:
+    """Each file of ``paths`` evaluated (a design) or solved and its best design evaluated (a problem), as
+    :class:`Compared`; once the comparison has run :data:`PROGRESS` seconds, each file done is reported to the
+    "axisopt" logger."""
     from ..design import load_design
 
     out = []
-    for p in paths:
+    t0 = time.perf_counter()
+    for i, p in enumerate(paths):
+        if i and time.perf_counter() - t0 > PROGRESS:
+            LOG.info(f"  compare: {i} of {len(paths)} files done, {time.perf_counter() - t0:.0f} s; next {p}")
         kind = file_kind(p)
         if kind == "design":
             d = load_design(p)

@@ -78,3 +78,16 @@ def test_compare_shows_the_drive_side_by_side(tmp_path, capsys):
     df = pd.read_csv(csv)
     assert df.loc[0, "motor"] == motor["id"] and pd.isna(df.loc[1, "motor"])
     assert abs(df.loc[0, "drive_rms_torque_Nm"] - ev["rms_torque"]) < 1e-9
+
+
+def test_a_long_comparison_reports_each_file_done(monkeypatch, caplog):
+    import logging
+
+    from axisopt.study import compare
+
+    monkeypatch.setattr(compare, "PROGRESS", 0.0)
+    files = [str(PROBLEMS / "vmc_x_design.yaml"), str(PROBLEMS / "teaching_design.yaml")]
+    with caplog.at_level(logging.INFO, logger="axisopt"):
+        compare.load_compared(files)
+    lines = [r.getMessage() for r in caplog.records if "compare:" in r.getMessage()]
+    assert lines == [lines[0]] and "1 of 2 files done" in lines[0] and "teaching_design.yaml" in lines[0]
