@@ -99,7 +99,7 @@ def unit_factor(unit: str, kind: str) -> float:
     """
     dim, si = KINDS[kind]
     text = _normalise(unit)
-    if kind.startswith("money") and "EUR" not in text:  # no exchange rate is assumed (issue 42)
+    if kind.startswith("money") and "EUR" not in text:  # no exchange rate is assumed
         raise ValueError(f"'{unit}' is not EUR, the catalogs' currency, and no exchange rate is assumed: convert "
                          "at your rate")
     known = KNOWN.get((text, kind))

@@ -16,7 +16,7 @@ from ..physics.gantry import side_shares
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
 
 # Defaults of the axis values no catalog row carries, with their sources (docs/assumptions.md).
-# Bearing housing and nut bracket (issue 38): no vendor publishes a value for the machine's own parts (THK A-708:
+# Bearing housing and nut bracket: no vendor publishes a value for the machine's own parts (THK A-708:
 # "set the rigidity as high as possible"; THK and NSK rigidities exclude them).  Never rigid: without a YAML
 # value the housing is 26 x its bearing set (IBC's bearing units against their bare sets,
 # physics.bearings.housing_stiffness_default) and the bracket 4 x its nut (THK's 80 % nut-mounting allowance
@@ -46,9 +46,9 @@ G = 9.80665
 MAX_INERTIA_RATIO = 5.0
 BRAKE_SAFETY = 2.0
 # RMS torque / rated torque: Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <=
-# 0.8 Tst" (stall torque); taken against the rated torque, which is at most the stall torque (issue 26).
+# 0.8 Tst" (stall torque); taken against the rated torque, which is at most the stall torque.
 RMS_TORQUE_RATIO = 0.8
-# Carriage (issue 25).  Static safety factors: THK's current selection pages give the lower limit of f_S "with
+# Carriage.  Static safety factors: THK's current selection pages give the lower limit of f_S "with
 # vibrations or impacts" as 5 for the LM Guide (thk.com/in/en/products/lm_guide/selection/0005/, Table 10) and
 # for the ball screw (LM Guide Actuator pages, "Ball Screw Unit/Bearing Unit": 5); a feed axis of a cutting
 # machine has both (THK names "vibrations due to a cutting load" and acceleration).  The older General Catalog
@@ -63,7 +63,7 @@ SPACING_SHARE = 0.6
 CG_HEIGHT_SHARE = 0.2
 TOOL_HEIGHT_SHARE = 0.4
 BRAKE_MODES = ("auto", "yes", "no")
-# Counterbalance of a vertical axis (issue 40): a counterweight on a chain over a sprocket, or a balance cylinder.
+# Counterbalance of a vertical axis: a counterweight on a chain over a sprocket, or a balance cylinder.
 # Chain efficiency over its sprocket when not given: 0.95, an estimate (roller-chain drives are quoted at 0.95-0.98;
 # the lower end, so the counterweight's pull lifting is not overstated).
 COUNTERBALANCE_KINDS = ("none", "counterweight", "cylinder")
@@ -94,7 +94,7 @@ class Counterbalance:
 
 @dataclass(frozen=True)
 class TwinDrive:
-    """A twin-drive gantry (issue 40, :mod:`axisopt.model.gantry`): two synchronised screw drives with the same
+    """A twin-drive gantry (:mod:`axisopt.model.gantry`): two synchronised screw drives with the same
     parts, ``span`` apart, under a bridge (the axis's ``moving_mass``) with a cross carriage of ``cross_mass`` moving
     ``cross_stroke`` across it, centred between the drives.  SI units."""
 

@@ -1,4 +1,4 @@
-"""A problem's ``search:`` section: the counterbalance and the twin drive as search choices (issue 40).
+"""A problem's ``search:`` section: the counterbalance and the twin drive as search choices.
 
 ``search: {counterbalance: [none, {kind: counterweight, mass: 200 kg}, ...], twin_drive: [none, {span: ...}]}``
 lists the options; each one is read exactly as the single ``axis.counterbalance`` / ``axis.twin_drive`` key

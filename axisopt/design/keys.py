@@ -59,7 +59,7 @@ COUNTERBALANCE_SPEC = Spec("counterbalance", "a vertical axis's counterweight or
 # the keys of each kind (the others are refused: a counterweight has no force)
 COUNTERBALANCE_KEYS = {"none": ("kind",), "counterweight": ("kind", "mass", "efficiency", "chain_mass"),
                        "cylinder": ("kind", "force", "force_at_end", "tolerance", "piston_mass")}
-# A twin-drive gantry (issue 40, model.gantry): two synchronised drives with the same parts under one bridge (the
+# A twin-drive gantry (model.gantry): two synchronised drives with the same parts under one bridge (the
 # axis's moving_mass) with a cross carriage; the bounds keep machine-tool sizes (a bridge up to 50 m wide)
 TWIN_SPEC = Spec("twin_drive", "two synchronised screw drives (the same parts on both sides) under a bridge (the "
                  "axis's moving_mass) with a cross carriage: a horizontal gantry only (refused on a vertical or wall "
@@ -142,7 +142,7 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
                             "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
                             maximum=1.0),
-    # carriage (issue 25): the cutting force's cross component and where it acts, the centre of gravity, the
+    # carriage: the cutting force's cross component and where it acts, the centre of gravity, the
     # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
     "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load; default "
                           "0 N: solve then says the guides were sized without it)", zero=True),

@@ -1,4 +1,4 @@
-"""Twin-drive gantry sub-assembly (issue 40): two synchronised screw drives, the same parts on both sides, under
+"""Twin-drive gantry sub-assembly: two synchronised screw drives, the same parts on both sides, under
 one bridge with a cross carriage on it (:mod:`axisopt.physics.gantry`).
 
 The single-drive model stays the model of one side: the parameters of a twin-drive axis (:func:`gantry_params`)

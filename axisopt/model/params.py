@@ -49,7 +49,7 @@ PARAM_NAMES = (
     "motor_brake_torque", "motor_price", "has_coupling", "coupling_rated_torque", "coupling_max_speed",
     "coupling_price", "reduction_ratio", "reduction_efficiency", "reduction_inertia", "max_inertia_ratio",
     "brake_safety",
-    # carriage (issue 25): the guide's static rating and moment ratings, the cutting force's cross component, the
+    # carriage: the guide's static rating and moment ratings, the cutting force's cross component, the
     # lever arms, the block pattern, gravity across the rails (wall mounting), the table's rocking inertias, the
     # least static safety of guide and nut, and whether the duty cycle's phases carry the process force
     "guide_static_load", "guide_moment_roll", "guide_moment_pitch", "guide_moment_yaw", "cross_load",
@@ -57,17 +57,17 @@ PARAM_NAMES = (
     "pitch_inertia", "yaw_inertia", "guide_static_safety", "nut_static_safety", "duty_process",
     "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed", "temperature_rise_auto",
     "heat_transfer", "shaft_ends", "pretension_rise",
-    # accuracy (issue 43): the screw's lead error over the stroke by its grade and the grade's price factor on the
+    # accuracy: the screw's lead error over the stroke by its grade and the grade's price factor on the
     # shaft; the guides' running pitch and yaw (model.accuracy)
     "lead_error", "grade_price_factor", "guide_pitch", "guide_yaw",
-    # reduction (issue 39): a catalog part, or none (the axis's reduction_* values above, its checks off); its
+    # reduction: a catalog part, or none (the axis's reduction_* values above, its checks off); its
     # output-side ratings, its torsional compliance (in series with the coupling) and its input speed limit
     "has_reduction", "reduction_rated_torque", "reduction_accel_torque", "reduction_compliance",
     "reduction_max_speed", "reduction_price", "reduction_backlash",
     # driven rotating-nut unit (model.rotnut; 0 / neutral values for a nut on a rotating screw)
     "nut_rotating", "unit_inertia", "unit_max_speed", "unit_bearing_dynamic_load", "unit_bearing_static_load",
     "unit_bearing_stiffness", "unit_bearing_torque", "unit_bearing_preload",
-    # counterbalance of a vertical axis (issue 40; model.loads.balance_force): the counterweight and its chain's
+    # counterbalance of a vertical axis (model.loads.balance_force): the counterweight and its chain's
     # efficiency, the mass moving with the head besides it, a balance cylinder's force at its worst end
     "balance_mass", "balance_efficiency", "balance_moving_mass", "balance_force",
     # twin-drive gantry (model.gantry; neutral values for one drive)

@@ -184,7 +184,7 @@ def support_starting_torque_envelope(preload, mean_diameter, coefficient=SUPPORT
     return coefficient * preload * mean_diameter
 
 
-# Static safety of support-bearing sets (issue 38).  The vendors rate the sets' static capacity three ways:
+# Static safety of support-bearing sets.  The vendors rate the sets' static capacity three ways:
 # NSK TAC B (and HIWIN WBK, which carry them) print a "limiting axial load" whose permissible share is 0.7
 # (NSK super-precision bearings, p. 111 footnote 2: "the permissible axial load equals 0.7 x the limiting
 # axial load"); THK prints the support unit's "permissible load", which "indicates the static permissible

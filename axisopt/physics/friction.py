@@ -37,6 +37,7 @@ def motor_drag_torque(preload_torque, bearing_torque, guide_force, lead, efficie
     bearing_torque : T_brg, support bearings (bearings.bearing_friction_torque, all bearings) [N*m]
     guide_force    : F_guide, sum of guide block friction (guides.guide_friction_force) [N]
     lead : P_h [m];  efficiency : eta [-];  seal_torque : T_seal [N*m].  Returns T [N*m].
-    Source: model-discrepancy.md sec. 1.2 (friction torque at the motor), THK torque study.
+    Source: THK General Catalog, ball screw torque calculation (A-743..A-746): the drive torque at
+    constant speed is the preload drag, the bearings' and seals' torques and the guide friction through the lead.
     """
     return preload_torque + bearing_torque + seal_torque + axial_force_torque(guide_force, lead, efficiency)

@@ -171,7 +171,7 @@ def double_nut_stiffness_under_load(k0, preload, axial_load):
     .. math:: (1+s)^{3/2} - (1-s)_+^{3/2} = f,\qquad k/k_0 = \tfrac12[(1+s)^{1/2} + (1-s)_+^{1/2}]
 
     solved by :func:`double_nut_shift`.  k/k0 = 0.707 at lift-off (f = 2.83) and
-    f^(1/3)/2 beyond it.  Source: model-discrepancy.md row 3 (Hertz contact); seed eq. 12-18 power law.
+    f^(1/3)/2 beyond it.  Source: Hertz point contact (delta ~ F^(2/3)); the power law of the seed paper, eq. 12-18.
 
     k0         : stiffness at zero external load [N/m]
     preload    : F_a0 [N] (> 0)

@@ -118,7 +118,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
         "damping_ratio": np.asarray(v["damping_ratio"]).tolist(),
         "assumed_defaults": list(ev.design.assumed),
         "load_factor": axis.load_factor_eff,  # the fw the life checks read (given, or THK A-704 Table 19)
-        # carriage (issue 25)
+        # carriage
         "min_tool_stiffness_N_per_um": ev.minimum("k_tool")[0] / N_PER_UM,
         "tool_stiffness_N_per_um": (np.asarray(v["k_tool"]) / N_PER_UM).tolist(),
         "guide_rocking_compliance_um_per_kN": v["c_rocking"] * 1e9,
@@ -227,7 +227,7 @@ def evaluation_table(ev: Evaluation) -> str:
                      f"{k_tot / k_sb * 100:>7.0f}%  (in place of the two rows above)")
     lines.append(f"  {'total':<34}{k_tot / N_PER_UM:>10,.1f}{1e9 / k_tot:>9.2f}")
     lines.append(f"  {'table on guides':<34}{'':>10}  (table mode {v['f_table']:.0f} Hz)")
-    # the stiffness at the cutting point: the chain in series with the table rocking on its blocks (issue 25)
+    # the stiffness at the cutting point: the chain in series with the table rocking on its blocks
     k_tool = float(np.asarray(v["k_tool"])[i_min])
     c_rock = float(v["c_rocking"])
     rock = f"{1 / c_rock / N_PER_UM:>10,.1f}{c_rock * 1e9:>9.2f}" if c_rock > 0 else f"{'rigid':>10}{'0':>9}"

@@ -132,7 +132,7 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
     ob = problem.objective
     if problem.axis.twin_drive is not None and not m.pareto:
         # the MINLP references are built on the same model, but SCIP's LP relaxation of the gantry's 2-DOF
-        # eigenvalues contradicted enumeration on a synthetic twin-drive problem (issue 40): refused, not trusted
+        # eigenvalues contradicted enumeration on a synthetic twin-drive problem: refused, not trusted
         raise InputError(f"--method {method} does not take a twin-drive gantry (axis.twin_drive) yet; use --method "
                          "default or exhaustive", source=problem.source)
     if ob.mode == "pareto":

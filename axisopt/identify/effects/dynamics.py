@@ -85,7 +85,7 @@ class ExtraMode(Effect):
     name = "extra_mode"
     title = "a resonance the axial model lacks (e.g. table pitch on the guides)"
     kinds = ("frf",)
-    signature = "extra peak in the FRF residual that does not move with x (model-discrepancy.md #12)"
+    signature = "extra peak in the FRF residual that does not move with x"
     time = TimeModel(
         "a second mass behind a spring (resonance)",
         # its IV instrument is the measured column itself: a rigid-body simulation has no mode

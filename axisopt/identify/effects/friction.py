@@ -46,7 +46,7 @@ class Stribeck(Effect):
     name = "stribeck"
     title = "Stribeck friction rise at low speed"
     kinds = ("friction",)
-    signature = "positive bump at |v| below a few v_s (model-discrepancy.md #6)"
+    signature = "positive bump at |v| below a few v_s"
     time = TimeModel(
         "friction rises at low speed (Stribeck)",
         (Term("Fs", "Stribeck excess Fs - Fc", "effort",
@@ -116,7 +116,7 @@ class Viscous(Effect):
     name = "viscous"
     title = "viscous (speed-proportional) friction differs from catalog"
     kinds = ("friction",)
-    signature = "residual linear and odd in v (model-discrepancy.md #7)"
+    signature = "residual linear and odd in v"
 
     def params(self, ctx):
         v = _top_friction_speed(ctx)
@@ -155,7 +155,7 @@ class LoadDependentFriction(Effect):
     name = "load_dependent_friction"
     title = "guide friction growing with block load (seed Table 9)"
     kinds = ("friction",)
-    signature = "residual proportional to sgn(v) N (model-discrepancy.md #9)"
+    signature = "residual proportional to sgn(v) N"
     needs = (("friction", "normal_load"),)
 
     def params(self, ctx):

@@ -24,7 +24,7 @@ class SupportCondition(Effect):
     name = "support_condition"
     title = "declared support condition does not hold"
     kinds = ("stiffness", "frequency", "frf")
-    signature = "arch in x after the screw modulus is refitted (model-discrepancy.md #2)"
+    signature = "arch in x after the screw modulus is refitted"
 
     def params(self, ctx):
         kb = ctx.plant.k_bearing
@@ -78,7 +78,7 @@ class HertzContact(Effect):
     name = "hertz_contact"
     title = "load-dependent nut contact stiffness (Hertz, preload lift-off at 2.83 x preload)"
     kinds = ("stiffness",)
-    signature = "compliance vs |F| flat, knee near 2.83 Fa0, then F^(-1/3) (model-discrepancy.md #3)"
+    signature = "compliance vs |F| flat, knee near 2.83 Fa0, then F^(-1/3)"
 
     def params(self, ctx):
         fa = ctx.plant.preload
@@ -126,7 +126,7 @@ class Backlash(Effect):
     name = "backlash"
     title = "backlash: lost motion at load reversal, constant over the stroke"
     kinds = ("stiffness",)
-    signature = "step of +-b/2 with the load sign, flat in x (model-discrepancy.md #4)"
+    signature = "step of +-b/2 with the load sign, flat in x"
 
     def applicable(self, ctx):
         return any(o.kind == "stiffness" and np.ptp(np.sign(o.feature("force"))) > 0 for o in ctx.obs)
@@ -159,7 +159,7 @@ class FrictionHysteresis(Effect):
     name = "friction_hysteresis"
     title = "elastic lost motion from friction (grows with compliance along the stroke)"
     kinds = ("stiffness",)
-    signature = "reversal error 2 F_f c(x), growing with x (model-discrepancy.md #5)"
+    signature = "reversal error 2 F_f c(x), growing with x"
 
     def applicable(self, ctx):
         return any(o.kind == "stiffness" and np.ptp(o.feature("direction")) > 0 for o in ctx.obs)
@@ -193,7 +193,7 @@ class ThermalDrift(Effect):
     name = "thermal_drift"
     title = "thermal drift of the screw (proportional to screw length to the nut)"
     kinds = ("stiffness",)
-    signature = "residual proportional to x dT, growing over the test (model-discrepancy.md #10)"
+    signature = "residual proportional to x dT, growing over the test"
     needs = (("stiffness", "temperature"), ("stiffness", "time"))
 
     @staticmethod
@@ -248,7 +248,7 @@ class ComplianceOffset(Effect):
     name = "compliance_offset"
     title = "a component softer than its catalog value (constant compliance)"
     kinds = ("stiffness", "frequency", "frf")
-    signature = "constant compliance offset, no x-dependence (model-discrepancy.md #11)"
+    signature = "constant compliance offset, no x-dependence"
 
     def params(self, ctx):
         c = 1.0 / ctx.plant.k_bearing + 1.0 / ctx.plant.k_nut
@@ -297,7 +297,7 @@ class PreloadLoss(Effect):
     name = "preload_loss"
     title = "nut preload loss: friction or stiffness trending down with cycle count"
     kinds = ("stiffness", "friction")
-    signature = "residual trending with cycle, not with x, F or v (model-discrepancy.md #13)"
+    signature = "residual trending with cycle, not with x, F or v"
     needs = (("stiffness", "cycle"), ("friction", "cycle"))
 
     def params(self, ctx):
