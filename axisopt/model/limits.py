@@ -188,6 +188,12 @@ CHECK_TABLE = (
 CHECK_RECORDS = MappingProxyType({c.name: c for c in CHECK_TABLE})
 
 
+def checks_set_by(what: str) -> frozenset:
+    """The names of the checks whose need ``what`` (:data:`SPEED`, :data:`ACCEL`, :data:`WEIGHT`, :data:`RATIO`)
+    sets."""
+    return frozenset(c.name for c in CHECK_TABLE if what in c.set_by)
+
+
 def preload_direction(output: str) -> int:
     """How a model output (or ``margin_<check>``) moves with the nut preload."""
     if output.startswith("margin_") and output[7:] in CHECK_RECORDS:

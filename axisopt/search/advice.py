@@ -36,21 +36,19 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..design.axis import Counterbalance, G
+from ..model.limits import ACCEL, RATIO, SPEED, WEIGHT, checks_set_by
 from .result import DesignChange
 
-# the checks whose needed value grows with the rapid speed, and with the acceleration (margin_<check>)
-SPEED_CHECKS = frozenset({"critical_speed", "dn", "motor_speed", "coupling_speed", "reduction_speed",
-                          "unit_speed"})
-TORQUE_CHECKS = frozenset({"motor_peak_torque", "motor_rated_torque", "reduction_accel_torque",
-                           "reduction_rated_torque"})
-LIFT_OFF_CHECKS = frozenset({"nut_lift_off", "bearing_lift_off"})
-ACCEL_CHECKS = TORQUE_CHECKS | LIFT_OFF_CHECKS
-# a reduction's ratio scales the reflected inertia, the torque and the motor speed
+# the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio sets
+# (model.limits.CHECK_TABLE's set_by), as the advice's miss names (margin_<check> without margin_)
+SPEED_CHECKS = checks_set_by(SPEED)
+ACCEL_CHECKS = checks_set_by(ACCEL)  # the motor and reduction torques, the nut and bearing lift-off
 # the axis values lowered: (key, display unit, display per SI, the checks whose misses set the factor)
 SCALARS = (("max_speed", "m/min", 60.0, SPEED_CHECKS), ("acceleration", "m/s^2", 1.0, ACCEL_CHECKS))
-REDUCTION_CHECKS = TORQUE_CHECKS | {"inertia_ratio", "motor_speed"}
-# what a counterbalance relieves on a vertical axis: the weight in the torques, lift-off and the lives
-BALANCE_CHECKS = TORQUE_CHECKS | LIFT_OFF_CHECKS | {"holding_torque", "brake_torque"}
+# a reduction's ratio scales the reflected inertia, the torque and the motor speed
+REDUCTION_CHECKS = checks_set_by(RATIO)
+# what a counterbalance relieves on a vertical axis: the weight in the torques, lift-off, the brake and the lives
+BALANCE_CHECKS = checks_set_by(WEIGHT)
 BALANCE_LIMITS = frozenset({"min_life"})
 # the share of the head's weight a proposed counterbalance takes: an estimate (machine builders balance 80-100 %
 # of the weight; the shipped balanced Zs take 83 and 90 %)
