@@ -6,9 +6,9 @@ The kinds of change, each offered only where the closest designs' misses call fo
 - **a budget or mass raised**: every closest design misses ``max_cost`` (or a mass limit): the least value at
   which the catalogs hold a design meeting every other limit, bisected between the limit and the closest designs'
   need (up to 1 + :data:`BISECT` searches), first of all;
-- **rapid speed** lowered: a margin of a speed check (critical speed, DN, the motor's, coupling's, reduction's or
-  rotating-nut unit's speed: available / needed >= L) needs the speed it is short of in proportion: a design that
-  reaches L (1 - m) meets L at the rapid speed times (1 - m);
+- **rapid speed** lowered: a margin of a speed check (critical speed, DN, the support bearings', the motor's,
+  coupling's, reduction's or rotating-nut unit's speed: available / needed >= L) needs the speed it is short of
+  in proportion: a design that reaches L (1 - m) meets L at the rapid speed times (1 - m);
 - **acceleration** lowered: a torque check of the motor or reduction is short of torque, a lift-off check of the
   nut or support bearings short of preload against the largest axial force, both of which the acceleration sets
   with the mass: the acceleration is lowered by the same factor (more than is needed, since the friction, the
