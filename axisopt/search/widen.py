@@ -1,32 +1,37 @@
 """What the problem's screw mountings and ``catalog:`` filters left out that would make an infeasible problem
-feasible (:func:`widened`, one kind of :func:`.advice.design_changes`).
+feasible (:func:`widened`, one kind of :func:`.advice.design_changes`): another mounting, the next part size or
+series, before any axis value is lowered.
 
-The groups widened, each on its own and in this order, then all of those that apply together:
+The groups of filters, each offered where the closest designs' misses call for it:
 
-- **the mountings** (``catalog.mountings``, or ``axis.mounting`` alone): every mounting admitted, when the closest
-  designs miss a check or limit other than the drive's.  A screw fixed at both ends runs to
+- **the mountings** (``catalog.mountings``, or ``axis.mounting`` alone): the stronger mountings admitted, when the
+  closest designs miss a check or limit other than the drive's (fixed-free is never proposed: it only saves the
+  support bearing's cost, which a raised budget says better).  A screw fixed at both ends runs to
   (lambda_ff / lambda_fs)^2 = (4.730 / 3.927)^2 = 1.45 times the critical speed and carries eta_ff / eta_fs =
   4 / 2 = 2 times the buckling load of a fixed-supported one on the same span (THK A15-32 eq. 7, A15-30 eq. 5:
   :data:`axisopt.physics.checks.CRITICAL_SPEED_LAMBDA1`, :data:`~axisopt.physics.checks.BUCKLING_ETA1`);
 - **the drive's parts**, when the closest designs miss a drive check (motor, coupling or reduction: torque,
   speed, inertia ratio, brake) or a limit: ``motor_vendors``, ``motor_series``, ``coupling_series`` and the
-  drive slots of ``require``/``exclude`` left out, ``max_motor_flange`` raised to the largest flange listed,
-  ``reductions: no`` turned to yes;
-- **the mechanical parts**: ``vendors``, ``nut_types``, ``bearing_arrangements``, ``bearing_preload``,
-  ``guide_types``, ``guide_preload``, ``screw_grades`` and the mechanical slots of ``require``/``exclude`` left
-  out.
+  motor and coupling slots of ``require``/``exclude`` left out, ``max_motor_flange`` raised to the largest flange
+  listed, ``reductions: no`` turned to yes;
+- **the mechanical parts**, as the mountings: ``vendors``, ``nut_types``, ``bearing_arrangements``,
+  ``bearing_preload``, ``guide_types``, ``guide_preload``, ``screw_grades`` and the mechanical slots of
+  ``require``/``exclude`` left out.
 
 Not widened: ``status`` and ``estimated`` (which rows the user trusts: derived and paper rows, estimated cells),
-``drive: no``, and a required reduction (a lost-motion limit that leaves reductions out is
-:func:`.advice.design_changes`' own kind).
+``drive: no``, a required reduction, and a lost-motion limit that leaves reductions out
+(:func:`.advice.design_changes`' own kind).
 
-Each widened problem gets one search, the default method's stopped at its first feasible design (ordered by
-the problem's objective; no optimum).  The advice is what that design needs of the widened filters: the mounting,
-vendor, series, type, grade or part id to add (``catalog.motor_series: add Sigma-7 SGM7G``), the id to take out
-of ``exclude``, the flange limit to raise.  The design is one of the problem changed by exactly these edits, so
-the edits alone make it feasible (the verification is the search itself).  The first design found is not the
-least change: a filter may be widened further than the least part that would fit (a larger motor, another
-vendor's screw), which the user may narrow again.
+Two searches at most find a design: the group whose checks the closest designs miss most, widened alone, then
+every group the misses call for at once (which holds any design of each group alone).  A search is the default
+method's stopped at its first feasible design (in the order of the problem's objective; no optimum).  The advice
+is what that design needs of the widened filters: the mounting, vendor, series, type, grade or part id to add
+(``add Sigma-7 SGM7G to catalog.motor_series``), the id to take out of ``exclude``, the flange limit to raise.  The
+design is one of the problem changed by exactly these edits, so the edits alone make it feasible: the search is
+the verification.  The first design found need not be the least change; while the budget lasts, each value it
+adds is left out in turn and a search looks for a design without it (its edits, fewer, are then taken).  A
+value may still be further than the least part that fits (a larger motor than needed), which the user may
+narrow again.
 """
 
 from __future__ import annotations
@@ -61,7 +66,8 @@ def _widen(problem, group: str):
     """The problem's restrictions with ``group``'s filters widened (the same object when it has none set)."""
     r = problem.restrictions
     if group == "mounting":
-        return replace(r, mountings=MOUNTINGS) if set(problem.mountings) != set(MOUNTINGS) else r
+        stronger = _stronger(problem.mountings)
+        return replace(r, mountings=tuple(problem.mountings) + stronger) if stronger else r
     if group == "drive":
         if not r.drive:
             return r
@@ -75,6 +81,13 @@ def _widen(problem, group: str):
     grades = r.screw_grades if r.screw_grades is None else tuple(grade_table().names)
     return replace(r, **dict.fromkeys(MECH_FILTERS), screw_grades=grades,
                    require=_slots_left(r.require, MECH_SLOTS), exclude=_slots_left(r.exclude, MECH_SLOTS))
+
+
+def _stronger(mountings) -> tuple:
+    """The mountings whose screw runs faster before it whirls than the strongest of ``mountings`` (its critical-
+    speed factor lambda larger; the buckling factor eta ranks them alike)."""
+    best = max(CRITICAL_SPEED_LAMBDA1[m] for m in mountings)
+    return tuple(m for m in MOUNTINGS if CRITICAL_SPEED_LAMBDA1[m] > best)
 
 
 def _groups(misses) -> list:
@@ -176,29 +189,77 @@ def first_design(problem):
     return (space, int(ex.idx[ok[0]])) if len(ok) else None
 
 
+def with_edits(problem, edits):
+    """``problem`` with the catalog edits (:func:`design_edits` rows) made: its restrictions as the YAML edited so
+    would read them."""
+    r = problem.restrictions
+    kw: dict = {}
+    for e in edits:
+        field = e.key.split(".")[1]
+        if field in ("require", "exclude"):
+            slot = e.key.split(".")[2]
+            pairs = dict(kw.get(field, getattr(r, field)))
+            ids = pairs.get(slot, ())
+            pairs[slot] = tuple(i for i in ids if i not in e.values) if e.edit == "remove" else ids + e.values
+            kw[field] = tuple((k, v) for k, v in pairs.items() if v)
+        elif field == "max_motor_flange":
+            kw[field] = e.to * 1e-3
+        elif field == "reductions":
+            kw[field] = True
+        else:
+            have = problem.mountings if field == "mountings" else getattr(r, field)
+            kw[field] = tuple(have) + e.values
+    return replace(problem, restrictions=replace(r, **kw))
+
+
+def _without(edits, key: str, value: str) -> list:
+    """The edits with ``value`` no longer added to ``key`` (an edit left empty dropped)."""
+    out = []
+    for e in edits:
+        if e.key == key and e.edit == "add":
+            e = replace(e, values=tuple(v for v in e.values if v != value))
+            if not e.values:
+                continue
+        out.append(e)
+    return out
+
+
 def widened(problem, misses, budget: int) -> tuple:
     """(edits, searches): the mounting and catalog-filter edits that make ``problem`` feasible (the module
     docstring), [] when none is found within ``budget`` searches; ``misses``: per closest design,
-    {check or limit name: relative miss} (a check's name without ``margin_``)."""
-    tries = []
+    {check or limit name: relative miss} (a check's name without ``margin_``).  A design that needs more than one
+    value added is narrowed while the budget lasts: each value left out in turn, the design a search finds without
+    it taken when there is one (its edits are fewer)."""
+    tries, every = [], problem.restrictions
     for group in _groups(misses):
         r = _widen(problem, group)
         if r != problem.restrictions:
-            tries.append((group, r))
-    if len(tries) > 1:  # every group at once: a design may need parts of two groups
-        r = problem.restrictions
-        for group, _ in tries:
-            r = _widen(replace(problem, restrictions=r), group)
-        tries.append(("all", r))
-    used = 0
-    for _, r in tries[:max(budget, 0)]:
+            tries.append(r)
+            every = _widen(replace(problem, restrictions=every), group)
+    # the group the misses call for most, then every group at once (a superset of each group alone: a design
+    # of any one group is in it, and one may need parts of two groups); the narrowing finds the fewer edits
+    tries = tries[:1] + ([every] if len(tries) > 1 else [])
+    used, edits = 0, []
+    for r in tries:
+        if used >= budget:
+            return [], used
         used += 1
         found = first_design(replace(problem, restrictions=r))
+        edits = design_edits(problem, *found) if found is not None else []
+        if edits:
+            break
+    tried: set = set()
+    while used < budget:
+        adds = [(e.key, v) for e in edits if e.edit == "add" for v in e.values if (e.key, v) not in tried]
+        if sum(len(e.values) for e in edits) < 2 or not adds:
+            break
+        key, value = adds[0]
+        tried.add((key, value))
+        used += 1
+        found = first_design(with_edits(problem, _without(edits, key, value)))
         if found is not None:
-            edits = design_edits(problem, *found)
-            if edits:
-                return edits, used
-    return [], used
+            edits = design_edits(problem, *found) or edits
+    return edits, used
 
 
-__all__ = ["widened", "design_edits", "first_design", "DRIVE_CHECKS"]
+__all__ = ["widened", "design_edits", "first_design", "with_edits", "DRIVE_CHECKS"]
