@@ -149,8 +149,7 @@ def _change_text(d) -> str:
     note = f" ({d.note})" if d.note else ""
     if d.edit:  # a list of the catalog section (search.widen)
         what = ", ".join(d.values)
-        return {"add": f"add {what} to {d.key}", "remove": f"remove {what} from {d.key}",
-                "set": f"set {d.key}: {what}"}[d.edit] + note
+        return (f"add {what} to {d.key}" if d.edit == "add" else f"remove {what} from {d.key}") + note
     if d.key == "axis.counterbalance" and d.value == 0:
         return f"add axis.counterbalance {{kind: cylinder, force: {_v(d.to)} {d.unit}}}{note}"
     verb = "lower" if d.to < d.value else "raise"

@@ -330,16 +330,16 @@ class DesignChange:
     """An input changed (search.advice) after which the catalogs hold a design: ``key`` (``axis.max_speed``),
     its unit, the value and the proposed one in that unit, and what it means where the key does not say it
     (``note``: 'admits a gearbox or belt ...'); or a list of the ``catalog:`` section edited (search.widen):
-    ``edit`` 'add' (``values`` added to the list at ``key``), 'remove' (taken out of it) or 'set' (the key set
-    to ``values[0]``), ``value`` and ``to`` NaN."""
+    ``edit`` 'add' (``values`` added to the list at ``key``) or 'remove' (taken out of it), ``value`` and ``to``
+    NaN."""
 
     key: str  # the input, e.g. 'axis.max_speed', 'catalog.mountings'
     unit: str  # its display unit (m/min, kg, ...; '' for a list)
     value: float  # the input now, in ``unit``
     to: float  # the proposed value, in ``unit``
     note: str = ""  # what the change means where the key does not say it
-    edit: str = ""  # a list of the catalog section: 'add', 'remove' or 'set' ('' : a value changed)
-    values: tuple = ()  # what the edit adds, removes or sets
+    edit: str = ""  # a list of the catalog section: 'add' or 'remove' ('' : a value changed)
+    values: tuple = ()  # what the edit adds or removes
 
     def to_dict(self) -> dict:
         d = {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to),
@@ -382,7 +382,7 @@ class Infeasibility:
     relax: list = field(default_factory=list)
     not_relaxable: list = field(default_factory=list)
     relax_blocked_by: list = field(default_factory=list)
-    # axis changes verified to make the problem feasible (search.advice), offered before any relaxation
+    # axis or catalog changes verified to make the problem feasible (search.advice), offered before any relaxation
     design_changes: list = field(default_factory=list)
     # checks the closest designs fail because a catalog row gives no value (search.relax.missing_values): what to
     # give or choose instead, one sentence per check (never a margin relaxed to 0)

@@ -12,21 +12,21 @@ The groups of filters, each offered where the closest designs' misses call for i
   :data:`axisopt.physics.checks.CRITICAL_SPEED_LAMBDA1`, :data:`~axisopt.physics.checks.BUCKLING_ETA1`);
 - **the drive's parts**, when the closest designs miss a drive check (motor, coupling or reduction: torque,
   speed, inertia ratio, brake) or a limit: ``motor_vendors``, ``motor_series``, ``coupling_series`` and the
-  motor and coupling slots of ``require``/``exclude`` left out, ``max_motor_flange`` raised to the largest flange
-  listed, ``reductions: no`` turned to yes;
+  motor and coupling slots of ``require``/``exclude`` left out;
 - **the mechanical parts**, as the mountings: ``vendors``, ``nut_types``, ``bearing_arrangements``,
   ``bearing_preload``, ``guide_types``, ``guide_preload``, ``screw_grades`` and the mechanical slots of
   ``require``/``exclude`` left out.
 
 Not widened: ``status`` and ``estimated`` (which rows the user trusts: derived and paper rows, estimated cells),
-``drive: no``, a required reduction, and a lost-motion limit that leaves reductions out
-(:func:`.advice.design_changes`' own kind).
+``drive: no``, ``max_motor_flange`` (the room the machine has; no shipped motor lists its flange), and the
+reductions (``reductions: no``, a required reduction; a lost-motion limit that leaves reductions out is
+:func:`.advice.design_changes`' own kind).
 
 Two searches at most find a design: the group whose checks the closest designs miss most, widened alone, then
 every group the misses call for at once (which holds any design of each group alone).  A search is the default
 method's stopped at its first feasible design (in the order of the problem's objective; no optimum).  The advice
 is what that design needs of the widened filters: the mounting, vendor, series, type, grade or part id to add
-(``add Sigma-7 SGM7G to catalog.motor_series``), the id to take out of ``exclude``, the flange limit to raise.  The
+(``add Sigma-7 SGM7G to catalog.motor_series``), the id to take out of ``exclude``.  The
 design is one of the problem changed by exactly these edits, so the edits alone make it feasible: the search is
 the verification.  The first design found need not be the least change; while the budget lasts, each value it
 adds is left out in turn and a search looks for a design without it (its edits, fewer, are then taken).  A
@@ -71,12 +71,7 @@ def _widen(problem, group: str):
     if group == "drive":
         if not r.drive:
             return r
-        flange = r.max_motor_flange
-        if flange is not None:
-            listed = problem.catalog.rows("motors").number("flange")
-            top = float(np.nanmax(listed)) if np.isfinite(listed).any() else flange
-            flange = max(flange, top)
-        return replace(r, **dict.fromkeys(DRIVE_FILTERS), max_motor_flange=flange, reductions=True,
+        return replace(r, **dict.fromkeys(DRIVE_FILTERS),
                        require=_slots_left(r.require, DRIVE_SLOTS), exclude=_slots_left(r.exclude, DRIVE_SLOTS))
     grades = r.screw_grades if r.screw_grades is None else tuple(grade_table().names)
     return replace(r, **dict.fromkeys(MECH_FILTERS), screw_grades=grades,
@@ -151,14 +146,8 @@ def design_edits(problem, space, combo: int) -> list:
     if motor is not None:
         out += _listed("catalog.motor_vendors", outside(r.motor_vendors, [motor["vendor"]]))
         out += _listed("catalog.motor_series", outside(r.motor_series, [motor["series"]]))
-        if r.max_motor_flange is not None and float(motor["flange"]) > r.max_motor_flange * (1 + 1e-9):
-            out.append(DesignChange("catalog.max_motor_flange", "mm", r.max_motor_flange * 1e3,
-                                    float(motor["flange"]) * 1e3, f"motor {motor['id']}"))
     if coupling is not None:
         out += _listed("catalog.coupling_series", outside(r.coupling_series, [coupling["series"]]))
-    if reduction is not None and not r.reductions:
-        out.append(DesignChange("catalog.reductions", "", math.nan, math.nan, f"reduction {reduction['id']}",
-                                "set", ("yes",)))
     for slot, row in rows.items():
         if row is None:
             continue
@@ -202,10 +191,6 @@ def with_edits(problem, edits):
             ids = pairs.get(slot, ())
             pairs[slot] = tuple(i for i in ids if i not in e.values) if e.edit == "remove" else ids + e.values
             kw[field] = tuple((k, v) for k, v in pairs.items() if v)
-        elif field == "max_motor_flange":
-            kw[field] = e.to * 1e-3
-        elif field == "reductions":
-            kw[field] = True
         else:
             have = problem.mountings if field == "mountings" else getattr(r, field)
             kw[field] = tuple(have) + e.values

@@ -124,6 +124,20 @@ def test_vertical_axis_without_brake_torque_is_told_so(tmp_path):
     assert again.best is not None and again.certificate.proven and again.best.motor.startswith("SGM7G")
 
 
+def test_an_excluded_part_is_taken_out_of_exclude(tmp_path):
+    """The vertical axis with the SGM7G motors listed but every one of them excluded: the advice takes one out of
+    catalog.exclude.motor, and the problem without that exclusion solves with it."""
+    sgm7g = ["SGM7G-03A", "SGM7G-05A", "SGM7G-09A", "SGM7G-13A", "SGM7G-20A"]
+    text = VERTICAL.format(series="Sigma-7 SGM7J, Sigma-7 SGM7G") + "  exclude: {{motor: [{}]}}\n"
+    res = _solve(tmp_path, text.format(", ".join(sgm7g)))
+    assert res.best is None
+    [(key, edit, (motor,))] = _edits(res)
+    assert key == "catalog.exclude.motor" and edit == "remove" and motor in sgm7g
+    assert f"remove {motor} from catalog.exclude.motor" in "\n".join(relax_lines(res.infeasibility))
+    again = _solve(tmp_path, text.format(", ".join(m for m in sgm7g if m != motor)), "kept", advice=False)
+    assert again.best is not None and again.certificate.proven and again.best.motor == motor
+
+
 def test_shipped_drive_example_gets_a_motor_series_and_a_coupling(tmp_path):
     """infeasible_drive_problem.yaml (400 kg vertical on SGM7J motors and one small coupling): the advice adds a
     motor series and a coupling that carries it (both needed: the narrowing's searches without either find
