@@ -147,6 +147,9 @@ def _change_text(d) -> str:
     """One design change (search.advice): 'lower axis.max_speed from 20 to 15.5 m/min', 'add a balance cylinder
     ...', with its note in brackets."""
     note = f" ({d.note})" if d.note else ""
+    if d.edit:  # a list of the catalog section (search.widen)
+        what = ", ".join(d.values)
+        return (f"add {what} to {d.key}" if d.edit == "add" else f"remove {what} from {d.key}") + note
     if d.key == "axis.counterbalance" and d.value == 0:
         return f"add axis.counterbalance {{kind: cylinder, force: {_v(d.to)} {d.unit}}}{note}"
     verb = "lower" if d.to < d.value else "raise"
@@ -162,6 +165,8 @@ def relax_lines(inf) -> list:
         what = "the axis" if all(d.key.startswith("axis.") for d in inf.design_changes) else "the design"
         head = f"  change {what}: " if len(texts) == 1 else f"  change {what}, together: "
         L0 = [head + "; ".join(texts) + ": the catalogs then hold a design (re-solved)"]
+    # a check no margin frees (its available value is 0: a catalog value missing): said, never relaxed to 0
+    L0 += [f"  no limit frees this: {m}" for m in inf.missing]
     rel = inf.relax
     if not rel:
         return L0
@@ -174,8 +179,9 @@ def relax_lines(inf) -> list:
 
     d = rel[0].design
     who = f"design #{rel[0].design_rank}" + (f" ({d.mounting} {' / '.join(d.parts().values())})" if d else "")
+    rule = "a compatibility rule or a check no limit frees" if inf.missing else "a compatibility rule"
     if inf.relax_blocked_by:
-        head = (f"  no relaxation of the limits is enough: every closest design breaks a compatibility rule; "
+        head = (f"  no relaxation of the limits is enough: every closest design breaks {rule}; "
                 f"{who} breaks {', '.join(inf.relax_blocked_by)} and besides needs ")
     else:
         head = "  to make it feasible, relax "
@@ -189,8 +195,8 @@ def relax_lines(inf) -> list:
              + ("" if inf.relax_blocked_by else f"; {who} then meets every limit") + ":"]
         L += [f"    {amount(r)}" for r in rel]
     for rank, rules in inf.not_relaxable:
-        L.append(f"  design #{rank} left out: it breaks {', '.join(rules)} (a compatibility rule, not relaxable)")
-    if L0:
+        L.append(f"  design #{rank} left out: it breaks {', '.join(rules)} ({rule}, not relaxable)")
+    if inf.design_changes:
         L[0] = "  or " + L[0].lstrip()
     return L0 + L
 

@@ -6,6 +6,9 @@ The kinds of change, each offered only where the closest designs' misses call fo
 - **a budget or mass raised**: every closest design misses ``max_cost`` (or a mass limit): the least value at
   which the catalogs hold a design meeting every other limit, bisected between the limit and the closest designs'
   need (up to 1 + :data:`BISECT` searches), first of all;
+- **another mounting, or parts a catalog filter left out** (:mod:`.widen`): the mounting, vendor, series, type,
+  grade or part id to add to the problem's ``catalog:`` section, with the axis as asked, before any axis value
+  is lowered (a search per group of filters, counted in :data:`BUDGET`);
 - **rapid speed** lowered: a margin of a speed check (critical speed, DN, the support bearings', the motor's,
   coupling's, reduction's or rotating-nut unit's speed: available / needed >= L) needs the speed it is short of
   in proportion: a design that reaches L (1 - m) meets L at the rapid speed times (1 - m);
@@ -38,6 +41,7 @@ import numpy as np
 from ..design.axis import Counterbalance, G
 from ..model.limits import ACCEL, RATIO, SPEED, WEIGHT, checks_set_by
 from .result import DesignChange
+from .widen import widened
 
 # the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio sets
 # (model.limits.CHECK_TABLE's set_by), as the advice's miss names (margin_<check> without margin_)
@@ -232,6 +236,11 @@ def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *,
     for name in RAISED_LIMITS:  # a budget or mass the closest designs all need more of: how much more, first
         if all(name in d for d in misses) and (found := _raise_limit(problem, constraints, misses, name, space)):
             return found
+    # another mounting, or parts a catalog filter left out (search.widen): the axis as asked, before it is lowered
+    edits, used = widened(problem, misses, budget)
+    if edits:
+        return edits
+    budget -= used
     # the speed and the acceleration as the closest designs' misses say, and one step further each (their misses
     # are at one preload and one screw: another may need more)
     factors = [(key, unit, scale, _factor(misses, checks)) for key, unit, scale, checks in SCALARS]

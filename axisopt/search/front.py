@@ -213,11 +213,12 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
                            "proven infeasible (a longer --time-limit searches on)")
     if not np.isfinite(ex.objective).any():
         from .explain import explain_infeasible
-        from .relax import rank_relaxations
+        from .relax import missing_values, rank_relaxations
 
         why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive",
                                  deadline=deadline)
         why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
+        why.missing = missing_values(constraints, why, space)
         message = "no catalog combination meets every limit"
         if why.cut:
             message += ("; the explanation stopped at the time limit: the closest designs are those found by then "

@@ -137,11 +137,12 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
                       cert, time.perf_counter() - t0, pareto=pf)
     if not len(front):
         from .explain import explain_infeasible
-        from .relax import rank_relaxations
+        from .relax import missing_values, rank_relaxations
 
         exhaustive = method == "exhaustive"
         res.infeasibility = explain_infeasible(space, constraints, spec, every_combination=exhaustive)
         inf = res.infeasibility
         inf.relax, inf.not_relaxable, inf.relax_blocked_by = rank_relaxations(constraints, inf)
+        inf.missing = missing_values(constraints, inf, space)
         res.message = "no catalog combination meets every limit"
     return res

@@ -13,15 +13,49 @@ be left out (the amounts are then upper bounds of what is needed).
 
 A relative miss m of a limit ``value >= L`` is met by L (1 - m), of ``value <= L`` by L (1 + m); a margin (a
 vendor check, available / needed >= margin) relaxed below 1 ignores the vendor's own rule, which the
-relaxation says (change the axis instead: speed, stroke, loads).
+relaxation says (change the axis instead: speed, stroke, loads).  A margin is never proposed at 0 or below (a
+miss of 100 % or more: the check disabled, not relaxed): such a miss counts as a rule no limit frees, like a
+compatibility rule.  Where the available value is 0 because the catalog row gives none (a motor without a brake
+torque on an axis that needs a holding brake: :data:`MISSING`), :func:`missing_values` says which rows lack it
+and what to do instead.
 """
 
 from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+
+import numpy as np
 
 from ..model.limits import CHECK_RECORDS, LIMITS
 from .result import Relaxation
 
 FIT = "bearing bore fits screw"  # the explanation's miss key for a bearing that does not fit the screw end
+
+
+@dataclass(frozen=True)
+class Missing:
+    """A check whose available value is a catalog cell that a row may leave empty (the model then takes 0)."""
+
+    check: str  # the check (model.limits.CHECK_RECORDS)
+    slot: str  # the design's part slot (Design attribute)
+    table: str  # the catalog table (catalogs/<table>.csv)
+    column: str  # its column header, with the unit
+    what: str  # what the cell is
+    instead: str  # the other way out
+
+
+# model.params: a motor row without brake_torque holds with 0 N.m (the brake check then fails on a vertical axis)
+MISSING = MappingProxyType({m.check: m for m in (
+    Missing("brake_holding", "motor", "motors", "brake_torque [N.m]", "brake torque",
+            "pick a motor with a holding brake"),
+)})
+
+
+def _unfreed(constraint, miss: float) -> bool:
+    """A margin that only 0 or less would free (a miss of 100 % or more): never proposed."""
+    return constraint.name.startswith("margin_") and constraint.sense == ">=" and miss >= 1.0 - 1e-12
 
 
 def relaxable(constraint) -> bool:
@@ -47,7 +81,8 @@ def rank_relaxations(constraints, infeasibility) -> tuple[list, list, list]:
     by_label = {c.label: c for c in constraints}
     options, left_out = [], []
     for cand in infeasibility.closest:
-        fixed = [k for k in cand.misses if k not in by_label or not relaxable(by_label[k])]
+        fixed = [k for k, m in cand.misses.items()
+                 if k not in by_label or not relaxable(by_label[k]) or _unfreed(by_label[k], float(m))]
         need = [(by_label[k], float(m)) for k, m in cand.misses.items() if m > 0 and k not in fixed]
         options.append((len(fixed), len(need), sum(m for _, m in need), cand.rank, cand, need, fixed))
     if not options:
@@ -64,4 +99,50 @@ def rank_relaxations(constraints, infeasibility) -> tuple[list, list, list]:
     return out, left_out, fixed if blocked else []
 
 
-__all__ = ["rank_relaxations", "relaxable", "problem_key"]
+def _rows_named(need: Missing, series: dict, space) -> tuple:
+    """(the rows that give no ``need.what``, by series: every searched row of a series when ``space`` shows none of
+    them gives it, else the part ids; whether more than one)."""
+    col = need.column.split(" ")[0]
+    table = getattr(space, f"{need.slot}s", None) if space is not None else None
+    named, many = [], len(series) > 1
+    for name, ids in sorted(series.items()):
+        of = table.isin("series", (name,)) if table is not None and len(table) else None
+        if of is not None and of.any() and not np.isfinite(table.number(col)[of]).any():
+            named.append(f"the {need.slot} rows of series {name}")
+            many = True
+        else:
+            named.append(f"{need.slot} {', '.join(sorted(ids))} ({name})")
+            many = many or len(ids) > 1
+    return " and ".join(named), many
+
+
+def missing_values(constraints, infeasibility, space=None) -> list:
+    """The checks the closest designs fail by 100 % or more (their available value is 0: no margin above 0 frees
+    them), one sentence per check: where the value is a catalog cell the rows leave empty (:data:`MISSING`), which
+    rows (``space``: the search space, to say when every searched row of a series lacks it) and the two ways out;
+    otherwise which design reaches 0.  [] when no closest design fails one so."""
+    by_label = {c.label: c for c in constraints}
+    rows: dict = {}
+    other: dict = {}
+    for cand in infeasibility.closest:
+        for label, m in cand.misses.items():
+            c = by_label.get(label)
+            if c is None or not _unfreed(c, float(m)):
+                continue
+            need = MISSING.get(c.name[len("margin_"):])
+            row = getattr(cand.design, need.slot, None) if need is not None and cand.design is not None else None
+            if row is not None and not math.isfinite(float(row[need.column.split(" ")[0]])):
+                rows.setdefault(need, {}).setdefault(str(row["series"]), set()).add(str(row["id"]))
+            else:
+                other.setdefault(c.label, cand.rank)
+    out = []
+    for need, series in rows.items():
+        named, many = _rows_named(need, series, space)
+        out.append(f"{named} give{'' if many else 's'} no {need.what} (catalogs/{need.table}.csv {need.column}): "
+                   f"the {CHECK_RECORDS[need.check].short} check cannot pass at any margin above 0; give it, or "
+                   f"{need.instead}")
+    out += [f"{label} is 0 on design #{rank}: no margin above 0 frees it" for label, rank in other.items()]
+    return out
+
+
+__all__ = ["rank_relaxations", "relaxable", "problem_key", "missing_values", "MISSING"]

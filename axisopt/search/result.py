@@ -327,19 +327,24 @@ class ParetoFront:
 
 @dataclass(frozen=True)
 class DesignChange:
-    """An axis input changed (search.advice) after which the catalogs hold a design: ``key`` (``axis.max_speed``),
+    """An input changed (search.advice) after which the catalogs hold a design: ``key`` (``axis.max_speed``),
     its unit, the value and the proposed one in that unit, and what it means where the key does not say it
-    (``note``: 'admits a gearbox or belt ...')."""
+    (``note``: 'admits a gearbox or belt ...'); or a list of the ``catalog:`` section edited (search.widen):
+    ``edit`` 'add' (``values`` added to the list at ``key``) or 'remove' (taken out of it), ``value`` and ``to``
+    NaN."""
 
-    key: str  # the axis input, e.g. 'axis.max_speed'
-    unit: str  # its display unit (m/min, kg, ...)
+    key: str  # the input, e.g. 'axis.max_speed', 'catalog.mountings'
+    unit: str  # its display unit (m/min, kg, ...; '' for a list)
     value: float  # the input now, in ``unit``
     to: float  # the proposed value, in ``unit``
     note: str = ""  # what the change means where the key does not say it
+    edit: str = ""  # a list of the catalog section: 'add' or 'remove' ('' : a value changed)
+    values: tuple = ()  # what the edit adds or removes
 
     def to_dict(self) -> dict:
-        return {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to),
-                "note": self.note}
+        d = {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to),
+             "note": self.note}
+        return d | ({"edit": self.edit, "values": list(self.values)} if self.edit else {})
 
 
 @dataclass
@@ -377,8 +382,11 @@ class Infeasibility:
     relax: list = field(default_factory=list)
     not_relaxable: list = field(default_factory=list)
     relax_blocked_by: list = field(default_factory=list)
-    # axis changes verified to make the problem feasible (search.advice), offered before any relaxation
+    # axis or catalog changes verified to make the problem feasible (search.advice), offered before any relaxation
     design_changes: list = field(default_factory=list)
+    # checks the closest designs fail because a catalog row gives no value (search.relax.missing_values): what to
+    # give or choose instead, one sentence per check (never a margin relaxed to 0)
+    missing: list = field(default_factory=list)
     # the explanation stopped at the time limit: the closest designs are those found by then, the unmeetable
     # limits' best values those reached by then
     cut: bool = False
@@ -390,7 +398,8 @@ class Infeasibility:
                 "relax": [r.to_dict() for r in self.relax],
                 "not_relaxable": [{"rank": r, "breaks": list(k)} for r, k in self.not_relaxable],
                 "relax_blocked_by": list(self.relax_blocked_by),
-                "design_changes": [d.to_dict() for d in self.design_changes]}
+                "design_changes": [d.to_dict() for d in self.design_changes]} \
+            | ({"missing": list(self.missing)} if self.missing else {})
 
     def to_frame(self):
         """pandas DataFrame of the closest designs, with ``miss <limit> [%]`` per missed limit."""

@@ -47,13 +47,18 @@ def test_infeasible_problem_first_lines_name_the_limit_and_the_amount(capsys):
 
 
 def test_the_relaxations_free_the_design():
+    """The SGM7J motors give no brake torque: the holding-brake check, failed by 100 %, is never proposed at a
+    margin of 0; it blocks the relaxation and the answer says which rows lack the value (issue 42).  The other
+    relaxations free the design once that check is switched off by hand (what the answer leaves to the user)."""
     problem = load_problem(PROBLEMS / "infeasible_drive_problem.yaml")
     res = solve(problem, sensitivities=False)
     inf = res.infeasibility
-    assert res.status == "infeasible" and inf.relax and not inf.relax_blocked_by
+    brake = next(c.label for c in build_constraints(problem) if c.name == "margin_brake_holding")
+    assert res.status == "infeasible" and inf.relax and inf.relax_blocked_by == [brake]
+    assert len(inf.missing) == 1 and "Sigma-7 SGM7J give no brake torque" in inf.missing[0]
     assert {r.key for r in inf.relax} >= {"limits.margins.motor_peak_torque", "limits.margins.inertia_ratio"}
-    assert all(r.below_vendor_rule for r in inf.relax)  # only the motor's checks miss
-    margins = dict(problem.margins)
+    assert all(r.below_vendor_rule and r.relaxed_to > 0 for r in inf.relax)  # only the motor's checks miss
+    margins = dict(problem.margins) | {"brake_holding": 0.0}
     relaxed = problem
     for r in inf.relax:
         name = r.key.split(".")[-1]
@@ -85,3 +90,23 @@ def test_one_limit_alone_beats_several_and_compatibility_rules_are_left_out():
     assert [(r.key, r.design_rank, r.together) for r in relax] == [("limits.max_drag_torque", 3, False)]
     assert relax[0].value == pytest.approx(1.2) and relax[0].relaxed_to == pytest.approx(1.2 * 1.3)
     assert left_out == [(1, [label["margin_bearing_fit"]]), (4, ["bearing bore fits screw"])] and blocked == []
+
+
+def test_no_margin_is_proposed_at_zero():
+    """A check missed by 100 % (its available value is 0) is never a relaxation to a margin of 0 (issue 42): the
+    design that misses it is left out like one that breaks a compatibility rule, and the answer says which check
+    no margin frees; with every closest design so, the relaxation is blocked by it."""
+    from axisopt.search.relax import missing_values
+
+    problem = load_problem(PROBLEMS / "teaching_problem.yaml")
+    cons = build_constraints(problem)
+    label = {c.name: c.label for c in cons}
+    zero = _cand(1, {label["margin_nut_life"]: 1.0})
+    inf = Infeasibility([], [zero, _cand(2, {label["max_cost"]: 0.4, label["margin_nut_life"]: 0.5})])
+    relax, left_out, blocked = rank_relaxations(cons, inf)
+    assert [(r.key, r.design_rank) for r in relax] == [("limits.max_cost", 2), ("limits.margins.nut_life", 2)]
+    assert relax[1].relaxed_to == pytest.approx(0.5) and relax[1].below_vendor_rule
+    assert left_out == [(1, [label["margin_nut_life"]])] and blocked == []
+    assert missing_values(cons, inf) == [f"{label['margin_nut_life']} is 0 on design #1: no margin above 0 frees it"]
+    relax, _, blocked = rank_relaxations(cons, Infeasibility([], [zero]))
+    assert relax == [] and blocked == [label["margin_nut_life"]]
