@@ -250,11 +250,12 @@ MARGIN_KEY = ('<p class="key">margin = available / needed: <span class="m">below
               '(amber), 1.1-1.5 fair (pale green), from 1.5 ample (green)</span></p>')
 
 
-def parts_table(design) -> str:
-    """The parts list to order (:func:`axisopt.report.partslist.parts_list`)."""
+def parts_table(design, problem=None) -> str:
+    """The parts list to order (:func:`axisopt.report.partslist.parts_list`; the preload kept within
+    ``problem``'s limits)."""
     from .partslist import parts_list
 
-    rows = parts_list(design)
+    rows = parts_list(design, problem)
     return table(["part", "id", "vendor", "quantity", "order"],
                  [[r["part"], r["id"], r["vendor"], str(r["quantity"]), r["order"] or "-"] for r in rows],
                  classes=[["", "", "", "", "wrap"]] * len(rows))
@@ -339,7 +340,7 @@ def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
         page.figure("Dynamic compliance of the best design's table (FRF)", lambda: ifig.frf_figure(best),
                     lambda: static.frf_figure(best), 560)
         page.section("Checks of the best design").append(checks_table(evs[0]))
-        page.section("Parts of the best design to order").append(parts_table(evs[0].design))
+        page.section("Parts of the best design to order").append(parts_table(evs[0].design, problem))
     page.section("Result (as printed)").append(pre(text))
     return page
 

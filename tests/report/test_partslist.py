@@ -3,7 +3,7 @@
 from pathlib import Path
 
 from axisopt.design import load_design
-from axisopt.report.partslist import PRELOAD_STEP, parts_list
+from axisopt.report.partslist import parts_list, preload_step
 
 P = Path(__file__).resolve().parents[2] / "problems"
 
@@ -16,7 +16,8 @@ def test_parts_list_of_the_vmc_axis():
     rail_mm = (d.axis.stroke + d.axis.table_length) * 1e3
     assert f"length {10 * -(-round(rail_mm) // 10):,} mm" in rows["guide rail"]["order"]
     preload = float(rows["nut"]["order"].split()[1].replace(",", ""))
-    assert preload % PRELOAD_STEP == 0 and abs(preload - d.preload) <= PRELOAD_STEP / 2
+    step = preload_step(d.preload)
+    assert preload % step == 0 and abs(preload - d.preload) < step
     assert rows["bearing"]["quantity"] == (2 if d.axis.mounting == "fixed-fixed" else 1)
     assert rows["screw"]["id"] == d.part_ids()["screw"] and f"{d.axis.span * 1e3:,.0f} mm" in rows["screw"]["order"]
 
