@@ -85,7 +85,8 @@ def cmd_solve(args) -> int:
             labels = distinct_labels(parts, [f"#{c.rank}" for c in cands]) if len(cands) > 1 else \
                 [" / ".join(str(v) for v in parts[0].values() if v)]
             plot_profiles([evaluate(c.design) for c in cands], args.plot, labels=labels,
-                          limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")})
+                          limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")},
+                          margins=problem.margin_map)
         if not quiet:
             print(f"\nplot written to {args.plot}")
     if args.report:
