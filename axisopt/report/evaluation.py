@@ -59,12 +59,17 @@ def judged_rows(ev: Evaluation, margins: dict | None = None) -> list:
     return out
 
 
+def allowed_list(rows) -> str:
+    """'bearing life 0.5, critical speed 1.2': the rows :func:`judged_rows` judged on another margin than 1, with
+    that margin ('off' for 0); '' when none."""
+    return ", ".join(f"{r['check'].replace('_', ' ')} " + ("off" if r["allowed"] == 0 else f"{r['allowed']:g}")
+                     for r in rows if "allowed" in r)
+
+
 def allowed_note(rows) -> str:
-    """'* against the problem's margins: ...' for the rows :func:`judged_rows` judged on another margin than 1
-    ('' when none)."""
-    judged = [f"{r['check'].replace('_', ' ')} " + ("off" if r["allowed"] == 0 else f"{r['allowed']:g}")
-              for r in rows if "allowed" in r]
-    return f"* against the problem's least margin (limits.margins): {', '.join(judged)}" if judged else ""
+    """'* against the problem's least margin (limits.margins): ...' (:func:`allowed_list`; '' when none)."""
+    judged = allowed_list(rows)
+    return f"* against the problem's least margin (limits.margins): {judged}" if judged else ""
 
 
 def check_lines(ev: Evaluation, margins: dict | None = None) -> list:

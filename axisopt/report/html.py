@@ -364,7 +364,7 @@ def pareto_table(front) -> str:
 
 
 def compare_page(items, text: str, interactive: bool = False) -> Page:
-    from .evaluation import check_rows
+    from .evaluation import judged_rows
     from .plots import distinct_labels, plot_profiles
 
     page = Page("Comparison", ", ".join(c.label for c in items), interactive=interactive)
@@ -379,7 +379,7 @@ def compare_page(items, text: str, interactive: bool = False) -> Page:
             rows.append([c.label] + ["-"] * 7 + [f"no design ({c.solve['status'] if c.solve else '-'})"])
             classes.append(["wrap"] + [""] * 7 + ["bad wrap"])
             continue
-        checks = check_rows(e)
+        checks = judged_rows(e, c.margins)  # a solved problem's checks against its limits.margins
         failed = [r["check"] for r in checks if not r["pass"]]
         margins = [r["margin"] for r in checks if r["margin"] is not None]
         least = min(margins) if margins else None
