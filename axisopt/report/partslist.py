@@ -95,9 +95,21 @@ def _constraints(problem):
     return cons
 
 
+def _preload_range(design, problem) -> tuple:
+    """The preloads [N] the search allows the design's nut: its catalog range, within the problem's
+    ``continuous.nut_preload`` for a preloaded nut (``axisopt.search.parts``)."""
+    nut = design.nut
+    lo, hi = float(nut.get("preload_min", 0.0)), float(nut.get("preload_max", math.inf))
+    lo, hi = (0.0 if not math.isfinite(lo) else lo), (math.inf if not math.isfinite(hi) else hi)
+    if problem is not None and nut.get("type") != "single":
+        lo, hi = max(lo, problem.preload_min), min(hi, problem.preload_max)
+    return lo, hi
+
+
 def order_preload(design, problem=None) -> OrderedPreload:
     """The nut preload of ``design`` in round figures (module docstring) that keeps every limit of ``problem``
-    (None: every vendor check) the design's exact preload meets, within the problem's preload range.  A design
+    (None: every vendor check) the design's exact preload meets, within the nut's catalog preload range (and the
+    problem's ``continuous.nut_preload``).  A design
     without its own preload (the catalog's) keeps it."""
     from ..model import evaluate
 
@@ -105,7 +117,9 @@ def order_preload(design, problem=None) -> OrderedPreload:
     if design.nut_preload is None or not (math.isfinite(exact) and exact > 0):
         return OrderedPreload(exact, exact, preload_step(exact))
     cons = _constraints(problem)
-    lo, hi = (problem.preload_min, problem.preload_max) if problem is not None else (0.0, math.inf)
+    lo, hi = _preload_range(design, problem)
+    if not lo <= exact <= hi:
+        lo, hi = 0.0, math.inf  # a design given outside the range: the rounding keeps the limits only
 
     def values(p):
         return evaluate(replace(design, nut_preload=p)).values
@@ -115,7 +129,7 @@ def order_preload(design, problem=None) -> OrderedPreload:
 
     def broken(p) -> tuple:
         if not lo <= p <= hi or p <= 0:
-            return ("the problem's nut_preload range",)
+            return ("the nut's preload range",)
         v = values(p)
         return tuple(_name(c.name) for c in keep if not c.ok(c.value(v)))
 
