@@ -109,8 +109,7 @@ def _preload_range(design, problem) -> tuple:
 def order_preload(design, problem=None) -> OrderedPreload:
     """The nut preload of ``design`` in round figures (module docstring) that keeps every limit of ``problem``
     (None: every vendor check) the design's exact preload meets, within the nut's catalog preload range (and the
-    problem's ``continuous.nut_preload``).  A design
-    without its own preload (the catalog's) keeps it."""
+    problem's ``continuous.nut_preload``).  A design without its own preload (the catalog's) keeps it."""
     from ..model import evaluate
 
     exact = float(design.preload)
@@ -124,7 +123,7 @@ def order_preload(design, problem=None) -> OrderedPreload:
     def values(p):
         return evaluate(replace(design, nut_preload=p)).values
 
-    base = values(exact)
+    base = values(exact)  # what the exact preload meets (an optimum may sit on a limit within rounding)
     keep = [c for c in cons if c.ok(c.value(base)) or float(c.violation(c.value(base))) <= TOLERANCE]
 
     def broken(p) -> tuple:
