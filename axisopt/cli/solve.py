@@ -35,8 +35,8 @@ def register(sub) -> None:
                    help="skip re-solving with each limit relaxed by 10 %%")
     s.add_argument("--save-design", metavar="FILE.yaml|DIR",
                    help="write the best design as a design YAML (evaluate and compare read it); a directory "
-                        "gets the --top designs shown (or every Pareto point) as 1.yaml, 2.yaml, ... (01.yaml from 10); "
-                        "the nut preload in round figures that keep every limit met")
+                        "gets the --top designs shown (or every Pareto point) as 1.yaml, 2.yaml, ... (01.yaml from "
+                        "10); the nut preload in round figures that keep every limit met")
     add_html_report(s, "the result")
     s.set_defaults(func=cmd_solve)
 
