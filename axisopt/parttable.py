@@ -16,7 +16,9 @@ import numpy as np
 
 
 class Row(dict):
-    """One part: its columns (SI numbers, text) as a dict, the part id as ``name``."""
+    """One part: its columns (SI numbers, text) as a dict, the part id as ``name``.  Its repr, ``to_frame()`` and
+    notebook table show the numbers in the units of the vendor's catalog (``dynamic_load_rating 51.3 kN``, the
+    shipped catalog file's header; :mod:`axisopt.partrow`)."""
 
     __slots__ = ("name",)
 
@@ -25,10 +27,29 @@ class Row(dict):
         self.name = self.get("id") if name is None else name
 
     def copy(self) -> Row:
+        """A copy with the same ``name``."""
         return Row(self, self.name)
 
     def to_dict(self) -> dict:
+        """The columns as a plain dict (SI numbers, as the model reads them)."""
         return dict(self)
+
+    def to_frame(self):
+        """pandas DataFrame of the part, one row per column: ``column``, ``value`` (numbers in the unit the
+        vendor's catalog quotes, as the catalog file writes them) and ``unit`` (:mod:`axisopt.partrow`)."""
+        from .partrow import row_frame
+
+        return row_frame(self)
+
+    def __repr__(self) -> str:  # the values in vendor units, not SI (axisopt.partrow)
+        from .partrow import row_repr
+
+        return row_repr(self)
+
+    def _repr_html_(self) -> str:
+        from .partrow import row_html
+
+        return row_html(self)
 
 
 def _column(values: list) -> np.ndarray:

@@ -35,7 +35,8 @@ def register(sub) -> None:
                    help="skip re-solving with each limit relaxed by 10 %%")
     s.add_argument("--save-design", metavar="FILE.yaml|DIR",
                    help="write the best design as a design YAML (evaluate and compare read it); a directory "
-                        "gets the --top designs shown (or every Pareto point) as 1.yaml, 2.yaml, ... (01.yaml from 10)")
+                        "gets the --top designs shown (or every Pareto point) as 1.yaml, 2.yaml, ... (01.yaml from "
+                        "10); the nut preload in round figures that keep every limit met")
     add_html_report(s, "the result")
     s.set_defaults(func=cmd_solve)
 
@@ -85,7 +86,8 @@ def cmd_solve(args) -> int:
             labels = distinct_labels(parts, [f"#{c.rank}" for c in cands]) if len(cands) > 1 else \
                 [" / ".join(str(v) for v in parts[0].values() if v)]
             plot_profiles([evaluate(c.design) for c in cands], args.plot, labels=labels,
-                          limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")})
+                          limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")},
+                          margins=problem.margin_map)
         if not quiet:
             print(f"\nplot written to {args.plot}")
     if args.report:
@@ -95,7 +97,7 @@ def cmd_solve(args) -> int:
                    plotly=args.plotly)
         wrote(args.report, quiet)
     if args.save_design:
-        written = save_designs(res, args.save_design, args.top, args.problem)
+        written = save_designs(res, args.save_design, args.top, args.problem, problem)
         if not written:
             print(f"axisopt: no design saved: the problem is {res.status}", file=sys.stderr)
         elif not quiet:
@@ -104,13 +106,18 @@ def cmd_solve(args) -> int:
     return exit_code(res.status)
 
 
-def save_designs(res, target: str, top: int, problem_path: str) -> list:
+def save_designs(res, target: str, top: int, problem_path: str, problem=None) -> list:
     """Write the best design to ``target`` (a .yaml file) or the shown designs into ``target`` (a directory,
-    ranks as 1.yaml, 2.yaml ...; Pareto points in front order).  Returns the paths written."""
+    ranks as 1.yaml, 2.yaml ...; Pareto points in front order).  Returns the paths written.
+
+    The nut preload is written in round figures, rounded the way that keeps ``problem``'s limits met
+    (:func:`axisopt.report.partslist.order_preload`), with a comment saying from what."""
+    from dataclasses import replace
     from pathlib import Path
 
     from ..design import design_to_yaml
     from ..fileio import make_output_dir, write_text_atomic
+    from ..report.partslist import order_preload
 
     cands = list(res.pareto.points) if res.pareto is not None else \
         ([res.best] + list(res.runners_up))[:top] if res.best is not None else []
@@ -129,7 +136,9 @@ def save_designs(res, target: str, top: int, problem_path: str) -> list:
         head = (f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}, "
                 f"{res.objective_label} = {c.objective:.6g} {res.objective_unit}\n") if res.pareto is None else \
             f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}\n"
-        write_text_atomic(str(path), head + design_to_yaml(c.design), what="design YAML")
+        ordered = order_preload(c.design, problem)
+        design = replace(c.design, nut_preload=ordered.value) if ordered.moved else c.design
+        write_text_atomic(str(path), head + design_to_yaml(design, preload_note=ordered.note()), what="design YAML")
         out.append(str(path))
     return out
 

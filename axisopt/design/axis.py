@@ -304,10 +304,10 @@ class Design:
         return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
 
     def part_rows(self) -> list[dict]:
-        """The parts as rows of (part, id, column, value, unit): each catalog value in the unit vendors quote
-        (mm, N/um, N.m, EUR ...), text as it is in the catalog; ``to_frame()`` is these rows as a table."""
-        from ..catalog import SCHEMA
-        from ..units import DISPLAY_UNITS, unit_factor
+        """The parts as rows of (part, id, column, value, unit): each catalog value in the unit its vendor quotes
+        (the shipped catalog file's header: mm, N/um, kN, kg.cm^2, EUR ...; :mod:`axisopt.partrow`), text as it
+        is in the catalog, an empty optional cell left out; ``to_frame()`` is these rows as a table."""
+        from ..partrow import row_rows
 
         tables = {"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides", "motor": "motors",
                   "coupling": "couplings", "reduction": "reductions"}
@@ -316,13 +316,8 @@ class Design:
             part = getattr(self, slot)
             if part is None:
                 continue
-            kinds = SCHEMA.get(tables[slot], {})
-            for col, v in part.items():
-                if col in ("id", "_source") or col not in kinds and col not in ("status", "source"):
-                    continue
-                unit = DISPLAY_UNITS.get(kinds.get(col) or "", "")
-                value = v / unit_factor(unit, kinds[col]) if unit and isinstance(v, (int, float)) else v
-                rows.append({"part": slot, "id": str(part["id"]), "column": col, "value": value, "unit": unit})
+            rows.extend({"part": slot, "id": str(part["id"]), **r} for r in row_rows(part, tables[slot])
+                        if r["column"] != "id")
         return rows
 
     def to_frame(self):

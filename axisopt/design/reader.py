@@ -299,10 +299,17 @@ def catalog_for(root: Section, base_dir: Path) -> Catalog:
     return default_catalog(tuple(resolved))
 
 
+PROBLEM_KEYS = ("objective", "limits", "continuous")  # top-level keys of a problem file (axisopt.problem)
+
+
 def load_design(path) -> Design:
     """Read a design YAML file into a :class:`Design`; every error names the file and key."""
     path = Path(path)
     root = Section(read_yaml(path), str(path), spec=DESIGN_SPEC)
+    problem_key = next((k for k in PROBLEM_KEYS if root.has(k)), None)
+    if problem_key is not None and not root.has("parts"):  # a problem file given where a design is read
+        raise InputError(f"a problem file, not a design (it has '{problem_key}', no 'parts'): size it with "
+                         "`axisopt solve`", source=str(path))
     catalog = catalog_for(root, path.parent)
     name = root.read("name", path.stem)
     root.read("description")

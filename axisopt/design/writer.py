@@ -15,9 +15,17 @@ from .keys import AXIS_KINDS, TWIN_SPEC
 TWIN_KINDS = {name: k.kind for name, k in TWIN_SPEC.keys.items()}
 
 
+# other units a kind may be written in, where the display unit gives a long figure (3 arcsec is 0.000833333 deg)
+OTHER_UNITS = {"angle": ("arcmin", "arcsec")}
+
+
 def _q(value: float, kind: str) -> str:
-    unit = DISPLAY_UNITS[kind]
-    return f"{value / unit_factor(unit, kind):.12g} {unit}"
+    """``value`` [SI] in the kind's display unit, or in one of :data:`OTHER_UNITS` where its figure has fewer
+    significant digits (then a figure of 1 or more, then the first unit)."""
+    units = (DISPLAY_UNITS[kind],) + OTHER_UNITS.get(kind, ())
+    figures = [(f"{value / unit_factor(u, kind):.12g}", i) for i, u in enumerate(units)]
+    text, i = min(figures, key=lambda f: (len(f[0].lstrip("-0.").replace(".", "")), abs(float(f[0])) < 1, f[1]))
+    return f"{text} {units[i]}"
 
 
 def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
@@ -114,10 +122,17 @@ def _segment_dict(sg) -> dict:
     return d
 
 
-def design_to_yaml(design: Design, **kw) -> str:
+def design_to_yaml(design: Design, *, preload_note: str = "", **kw) -> str:
+    """:func:`design_to_dict` as YAML text; ``preload_note`` (one line) is written as a comment beside the nut
+    preload (how a saved optimum's preload was rounded, ``axisopt.report.partslist.order_preload``)."""
     import yaml
 
-    return yaml.safe_dump(design_to_dict(design, **kw), sort_keys=False, allow_unicode=True)
+    text = yaml.safe_dump(design_to_dict(design, **kw), sort_keys=False, allow_unicode=True)
+    note = " ".join(preload_note.split())
+    if note and design.nut_preload is not None:
+        line = f"  nut_preload: {_q(design.nut_preload, 'force')}\n"
+        text = text.replace(line, f"{line[:-1]}  # {note}\n", 1)
+    return text
 
 
 __all__ = ["design_to_dict", "design_to_yaml"]

@@ -7,6 +7,7 @@ lowest stiffness where the total is lowest) is marked.
 from __future__ import annotations
 
 import math
+import textwrap
 from dataclasses import dataclass
 
 import numpy as np
@@ -14,7 +15,16 @@ import numpy as np
 from ..display import fmt, html_table, one_line
 from ..model import CHECKS, Evaluation
 from ..units import N_PER_UM
-from .evaluation import CHECK_SHORT, CHECK_UNITS, RPM, check_rows, drive_dict, evaluation_dict, fmt_value
+from .evaluation import (
+    CHECK_SHORT,
+    CHECK_UNITS,
+    RPM,
+    allowed_list,
+    drive_dict,
+    evaluation_dict,
+    fmt_value,
+    judged_rows,
+)
 
 
 @dataclass(repr=False)
@@ -152,7 +162,9 @@ def compare_table(items) -> str:
                 f"{(m['brake_torque'] if math.isfinite(float(m['brake_torque'])) else 0.0):.3g}"))
     rows.append("")
     rows.append("checks: margin (available / needed), >= 1 passes, ! fails")
-    tables = [{r["check"]: r for r in check_rows(e)} if e is not None else None for e in evs]
+    # a solved problem's checks judged against its limits.margins (marked *)
+    tables = [{r["check"]: r for r in judged_rows(e, c.margins)} if e is not None else None
+              for c, e in zip(items, evs)]
     for c in CHECKS:
         if not any(t is not None and c in t for t in tables):
             continue
@@ -163,9 +175,19 @@ def compare_table(items) -> str:
                 return "-"
             r = t[c]
             m = "n/a" if r["margin"] is None else f"{r['margin']:.2f}"
-            return f"{m} ({fmt_value(r['available'])}/{fmt_value(r['needed'])})" + ("  " if r["pass"] else " !")
+            return f"{m} ({fmt_value(r['available'])}/{fmt_value(r['needed'])})" + ("" if "allowed" not in r else
+                                                                                  "*") + ("  " if r["pass"] else " !")
         row(f"  {CHECK_SHORT[c]}" + (f" [{unit}]" if unit else ""), [cell(t) for t in tables])
-    row("all checks pass", each(lambda e: "yes" if min(e.checks().values()) >= 1.0 else "NO"))
+    # the checks that apply, as the rows above judge them (not every margin the model computes: a horizontal
+    # axis's brake, an unloaded check)
+    row("all checks pass", [("yes" if all(r["pass"] for r in t.values()) else "NO") if t is not None else "-"
+                            for t in tables])
+    notes = [f"{c.label}: {allowed_list(t.values())}" for c, t in zip(items, tables)
+             if t is not None and allowed_list(t.values())]
+    if notes:
+        rows.append("* against the problem's least margin (limits.margins)")
+        for n in notes:
+            rows.extend(textwrap.wrap(n, TEXT_WIDTH, initial_indent="  ", subsequent_indent="    "))
     per = max(1, (TEXT_WIDTH - w0) // width)  # designs side by side
     blocks = []
     for j in range(0, len(items), per):

@@ -42,10 +42,42 @@ def fmt_value(x) -> str:
     return f"{x:.3g}"
 
 
-def check_lines(ev: Evaluation) -> list:
-    """The checks block of ``evaluate``: available, needed and margin with units (fits 100 columns)."""
-    lines = [f"{'checks (margin = available / needed, >= 1 passes)':<50}{'available':>15}{'needed':>15}{'margin':>8}"]
+def judged_rows(ev: Evaluation, margins: dict | None = None) -> list:
+    """:func:`check_rows`, each judged against the least margin a problem sets for it (``margins``: check ->
+    margin, the problem's ``limits.margins``; 0 switches a check off): where that is not 1, ``pass`` reads the
+    margin against it and ``allowed`` holds it (a table must not say FAIL for a margin the problem allowed)."""
+    from ..model.checks import MARGIN_RTOL
+
+    out = []
     for r in check_rows(ev):
+        m = (margins or {}).get(r["check"], 1.0)
+        if m != 1.0:
+            r = {**r, "allowed": m,
+                 "pass": m == 0 or r["margin"] is None and r["pass"] or r["margin"] is not None
+                 and r["margin"] >= m * (1.0 - MARGIN_RTOL)}
+        out.append(r)
+    return out
+
+
+def allowed_list(rows) -> str:
+    """'bearing life 0.5, critical speed 1.2': the rows :func:`judged_rows` judged on another margin than 1, with
+    that margin ('off' for 0); '' when none."""
+    return ", ".join(f"{r['check'].replace('_', ' ')} " + ("off" if r["allowed"] == 0 else f"{r['allowed']:g}")
+                     for r in rows if "allowed" in r)
+
+
+def allowed_note(rows) -> str:
+    """'* against the problem's least margin (limits.margins): ...' (:func:`allowed_list`; '' when none)."""
+    judged = allowed_list(rows)
+    return f"* against the problem's least margin (limits.margins): {judged}" if judged else ""
+
+
+def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
+    """The checks block of ``evaluate``: available, needed and margin with units (fits 100 columns); with a
+    problem's ``margins`` (check -> least margin), pass or FAIL against them (:func:`judged_rows`)."""
+    lines = [f"{'checks (margin = available / needed, >= 1 passes)':<50}{'available':>15}{'needed':>15}{'margin':>8}"]
+    rows = judged_rows(ev, margins)
+    for r in rows:
         unit = f" {r['unit']}" if r["unit"] else ""
         if r["check"] == "bearing_fit":
             have = f"{fmt_value(r['available_min'])}-{fmt_value(r['available'])}{unit}"
@@ -55,7 +87,11 @@ def check_lines(ev: Evaluation) -> list:
             label = r["label"]
         need = fmt_value(r["needed"]) + unit if r["needed"] else "none"
         margin = "n/a" if r["margin"] is None else f"{r['margin']:.2f}"
-        lines.append(f"  {label:<48}{have:>15}{need:>15}{margin:>8}  {'pass' if r['pass'] else 'FAIL'}")
+        lines.append(f"  {label:<48}{have:>15}{need:>15}{margin:>8}  {'pass' if r['pass'] else 'FAIL'}"
+                     + ("*" if "allowed" in r else ""))
+    note = allowed_note(rows)
+    if note:
+        lines.extend(textwrap.wrap(note, WIDTH, initial_indent="  ", subsequent_indent="    "))
     return lines
 
 def _fmt(v, nd=1):
@@ -171,8 +207,9 @@ def _finite(x):
     return float(x) if math.isfinite(x) and abs(x) < 1e8 else None
 
 
-def evaluation_table(ev: Evaluation) -> str:
-    """The text table ``axisopt evaluate`` prints."""
+def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
+    """The text table ``axisopt evaluate`` prints; ``margins``: a problem's least check margins (``axisopt solve``:
+    the checks pass or fail against them, :func:`judged_rows`)."""
     d = ev.design
     v = ev.values
     a = d.axis
@@ -279,7 +316,7 @@ def evaluation_table(ev: Evaluation) -> str:
     lines.extend(servo_lines(servo_response(ev)))
     lines.extend(life_lines(ev))
     lines.append("")
-    lines.extend(check_lines(ev))
+    lines.extend(check_lines(ev, margins))
     lines.extend(estimate_lines(ev))
     return "\n".join(lines)
 

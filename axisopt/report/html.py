@@ -250,27 +250,32 @@ MARGIN_KEY = ('<p class="key">margin = available / needed: <span class="m">below
               '(amber), 1.1-1.5 fair (pale green), from 1.5 ample (green)</span></p>')
 
 
-def parts_table(design) -> str:
-    """The parts list to order (:func:`axisopt.report.partslist.parts_list`)."""
+def parts_table(design, problem=None) -> str:
+    """The parts list to order (:func:`axisopt.report.partslist.parts_list`; the preload kept within
+    ``problem``'s limits)."""
     from .partslist import parts_list
 
-    rows = parts_list(design)
+    rows = parts_list(design, problem)
     return table(["part", "id", "vendor", "quantity", "order"],
                  [[r["part"], r["id"], r["vendor"], str(r["quantity"]), r["order"] or "-"] for r in rows],
                  classes=[["", "", "", "", "wrap"]] * len(rows))
 
 
-def checks_table(ev) -> str:
-    from .evaluation import check_rows, fmt_value
+def checks_table(ev, margins: dict | None = None) -> str:
+    """The checks with their values and margins; ``margins``: a problem's least margins (pass or FAIL against
+    them, :func:`axisopt.report.evaluation.judged_rows`)."""
+    from .evaluation import fmt_value, judged_rows
 
     head = ["check", "available", "needed", "margin", "result"]
     body, classes = [], []
-    for r in check_rows(ev):
+    for r in judged_rows(ev, margins):
         u = f" {r['unit']}" if r["unit"] else ""
         have = (f"{fmt_value(r['available_min'])}-{fmt_value(r['available'])}{u}" if r["check"] == "bearing_fit"
                 else ("n/a" if r["available"] is None else fmt_value(r["available"]) + u))
         body.append([r["label"], have, (fmt_value(r["needed"]) + u) if r["needed"] else "none",
-                     "n/a" if r["margin"] is None else f"{r['margin']:.2f}", "pass" if r["pass"] else "FAIL"])
+                     "n/a" if r["margin"] is None else f"{r['margin']:.2f}", ("pass" if r["pass"] else "FAIL")
+                     + ("" if "allowed" not in r else " (check off)" if r["allowed"] == 0 else
+                        f" (margin {r['allowed']:g} allowed)")])
         classes.append(["wrap", "", "", margin_class(r["margin"], r["pass"]), "ok" if r["pass"] else "bad"])
     return table(head, body, classes=classes) + MARGIN_KEY
 
@@ -328,7 +333,8 @@ def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
         page.figure("Best designs over the stroke" + ("; drive against the motor" if evs[0].design.motor is not None
                                                        and not interactive else ""),
                     lambda: ifig.profiles_figure(evs, labels, limits), lambda: plot_profiles(evs, labels=labels,
-                                                                                        limits=limits))
+                                                                                        limits=limits,
+                                                                                        margins=problem.margin_map))
         # the winning design as the evaluate report shows it: its stiffness chain, drive and FRF
         best = evs[0]
         page.figure("Stiffness chain of the best design", lambda: ifig.chain_figure(best),
@@ -338,8 +344,8 @@ def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
                         460)
         page.figure("Dynamic compliance of the best design's table (FRF)", lambda: ifig.frf_figure(best),
                     lambda: static.frf_figure(best), 560)
-        page.section("Checks of the best design").append(checks_table(evs[0]))
-        page.section("Parts of the best design to order").append(parts_table(evs[0].design))
+        page.section("Checks of the best design").append(checks_table(evs[0], problem.margin_map))
+        page.section("Parts of the best design to order").append(parts_table(evs[0].design, problem))
     page.section("Result (as printed)").append(pre(text))
     return page
 
@@ -358,7 +364,7 @@ def pareto_table(front) -> str:
 
 
 def compare_page(items, text: str, interactive: bool = False) -> Page:
-    from .evaluation import check_rows
+    from .evaluation import judged_rows
     from .plots import distinct_labels, plot_profiles
 
     page = Page("Comparison", ", ".join(c.label for c in items), interactive=interactive)
@@ -373,7 +379,7 @@ def compare_page(items, text: str, interactive: bool = False) -> Page:
             rows.append([c.label] + ["-"] * 7 + [f"no design ({c.solve['status'] if c.solve else '-'})"])
             classes.append(["wrap"] + [""] * 7 + ["bad wrap"])
             continue
-        checks = check_rows(e)
+        checks = judged_rows(e, c.margins)  # a solved problem's checks against its limits.margins
         failed = [r["check"] for r in checks if not r["pass"]]
         margins = [r["margin"] for r in checks if r["margin"] is not None]
         least = min(margins) if margins else None

@@ -10,7 +10,7 @@ import numpy as np
 from ..fileio import save_figure, tidy_layout
 from ..model import Evaluation
 from ..units import N_PER_UM
-from .evaluation import RPM
+from .evaluation import RPM, judged_rows
 
 
 def duty_points(ev: Evaluation) -> dict | None:
@@ -110,14 +110,15 @@ def distinct_labels(items, prefix=None) -> list:
     return out
 
 
-def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None):
+def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None, margins=None):
     """Stiffness and first natural frequency over the stroke, one line per evaluation (its own dash pattern,
     so coinciding curves stay visible; a design that fails a check is marked x and its legend entry names the
     failed checks); with a motor, a torque-speed panel: the duty-cycle points against the motor's rated and
     peak torque and speed limits (the limits the checks use: the intermittent zone falling from its corner
     speed to max speed), each motor's limits drawn once, a design without a motor named as such.  ``limits``
     (optional) maps 'min_stiffness' [N/m] and 'min_frequency' [Hz] to the problem's limits, drawn as
-    dashed lines.  Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image);
+    dashed lines; ``margins`` (optional) a problem's least check margins, the failed checks judged against them.
+    Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image);
     written to ``path`` only when one is given."""
     import matplotlib
 
@@ -149,7 +150,7 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
         ev = evaluations[i]
         s = (ev.x - ev.design.axis.start_offset) * 1e3
         col = colors[i % len(colors)]
-        failed = sorted({r["check"] for m in members for r in evaluations[m].check_rows() if not r["pass"]})
+        failed = sorted({r["check"] for m in members for r in judged_rows(evaluations[m], margins) if not r["pass"]})
         name = tags[i] if len(members) == 1 else \
             f"{', '.join(short[m] for m in members)}: the same curves ({tags[i]} ...)"
         name += f" - FAILS {', '.join(failed)}" if failed else ""

@@ -71,7 +71,7 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     elif res.best is not None:
         b = res.best
         L.append(f"best: {b.objective:,.3f} {res.objective_unit}")
-        L.append(evaluation_table(evaluate(b.design)))
+        L.append(evaluation_table(evaluate(b.design), None if problem is None else problem.margin_map))
         if res.binding:
             L.append("")
             L.append("limits at the optimum (what relaxing each by 10 % buys, re-solved)"

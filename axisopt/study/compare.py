@@ -27,6 +27,7 @@ class Compared:
     kind: str  # 'design' | 'problem'
     evaluation: Evaluation | None
     solve: dict | None = None  # for a problem: status, objective, certificate
+    margins: dict | None = None  # for a problem: its least check margins (limits.margins), what its checks meet
 
     @property
     def ok(self) -> bool:
@@ -92,7 +93,7 @@ def load_compared(paths, method: str = "default") -> list:
             out.append(Compared(f"{prob.name} (solved)", str(p), kind, None, info))
             continue
         d = res.best.design
-        out.append(Compared(f"{prob.name} (solved)", str(p), kind, evaluate(d), info))
+        out.append(Compared(f"{prob.name} (solved)", str(p), kind, evaluate(d), info, prob.margin_map))
     labels = [c.label for c in out]
     for c in out:  # two files with one name: tell them apart by file name
         if labels.count(c.label) > 1:
