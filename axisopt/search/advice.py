@@ -195,15 +195,35 @@ def _feasible(problem, space=None) -> bool:
     return bool(np.isfinite(ex.objective).any())
 
 
-def _raise_limit(problem, constraints, misses, name: str, space) -> list:
+def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) -> list:
     """The least value of the budget or mass limit ``name`` (max_cost, max_total_mass, max_moving_mass) at which
-    the catalogs hold a design meeting every other limit: the closest designs' need first (the limit times one plus
-    their largest miss of it, verified), then halved toward the limit :data:`BISECT` times; [] when even the need
-    is not verified.  Rounded up to three significant figures.  A budget or mass limit leaves the parts as they
-    are: every search reuses ``space``."""
+    the catalogs hold a design meeting every other limit, when no combination meets the limit on its own (the
+    explanation's single-limit check) or every closest design misses it; [] otherwise, or when none is found.
+    Rounded up to three significant figures.  A budget or mass limit leaves the parts as they are: every search
+    reuses ``space``.
+
+    The budget: the least cost of a design meeting every other limit, found by its own search
+    (:func:`.budget.least_cost`, proven least), apart from the closest designs (which the miss sum ranks, and which
+    an explanation cut short leaves poor).  A mass: the closest designs' need first (the limit times one plus their
+    largest miss of it, verified), then halved toward the limit :data:`BISECT` times."""
+    from .budget import least_cost
+
     c = next((c for c in constraints if c.name == name), None)
+    if c is None or not c.limit > 0:
+        return []
+    alone = c.label in {u[0] for u in infeasibility.unmeetable}
     need = [d[name] for d in misses if name in d]
-    if c is None or not need or not c.limit > 0:
+    if not alone and not (need and len(need) == len(misses)):
+        return []
+    if name == "max_cost":
+        found = least_cost(problem, space)
+        if found is None:  # no design even without the budget: not the budget alone
+            return []
+        to = _round(found[0] / c.factor, up=True)
+        return [DesignChange(f"limits.{name}", c.unit, c.limit / c.factor, to,
+                             f"every other limit kept; the cheapest such design costs {found[0] / c.factor:,.0f} "
+                             f"{c.unit}")]
+    if not need:
         return []
     lo, hi = c.limit, c.limit * (1.0 + max(need)) / SAFETY
     hi = _round(hi / c.factor, up=True) * c.factor
@@ -232,7 +252,7 @@ def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *,
         return []
     space = build_space(problem) if space is None else space
     for name in RAISED_LIMITS:  # a budget or mass the closest designs all need more of: how much more, first
-        if all(name in d for d in misses) and (found := _raise_limit(problem, constraints, misses, name, space)):
+        if found := _raise_limit(problem, constraints, infeasibility, misses, name, space):
             return found
     # the speed and the acceleration as the closest designs' misses say, and one step further each (their misses
     # are at one preload and one screw: another may need more)
