@@ -66,10 +66,8 @@ def least_cost(problem, space, max_screens: int = MAX_SCREENS) -> tuple[float, i
     while True:
         nxt = lb[pos] if pos < len(lb) else np.inf
         cheapest = pool_cost.min() if len(pool_cost) else np.inf
-        if min(nxt, cheapest) >= best:
-            return float(best), int(best_idx)
-        if pos >= len(lb) and not len(pool_cost):
-            return None
+        if min(nxt, cheapest) >= best:  # nothing left could cost less (inf: nothing left at all)
+            return (float(best), int(best_idx)) if best_idx >= 0 else None
         # the cheapest survivors, solved exactly: as soon as there are some while no design is known (its cost
         # then caps the screening), else when they cost no more than the next block's bound
         if len(pool_cost) and (cheapest <= nxt or best == np.inf):

@@ -161,7 +161,14 @@ def least_cost(space: Space, mounting: str, nut_sel, group, bearings=None) -> np
     group (``group``: each bearing's), per (nut, group, drive) of the nuts ``nut_sel`` (or per (nut, bearing)
     pair of ``bearings``, one group).  The cost is a sum of part prices (:func:`axisopt.model.cost.cost`, the
     drive's counted once per drive of the axis) and reads no preload, so this is exact: the least over guides and
-    bearings with the first drive, plus each drive's price difference from it."""
+    bearings with the first drive, plus each drive's price difference from it (:func:`cost_parts`)."""
+    by_group, per_drive = cost_parts(space, mounting, nut_sel, group, bearings)
+    return by_group[..., None] + per_drive[None, None, :]
+
+
+def cost_parts(space: Space, mounting: str, nut_sel, group, bearings=None) -> tuple:
+    """(the least cost [EUR] with the first searched drive per (nut, group) as in :func:`least_cost`, each drive's
+    price difference from the first (drives,))."""
     from ..model.cost import cost
 
     nut_idx = space.nut_numbers(nut_sel)
@@ -174,4 +181,4 @@ def least_cost(space: Space, mounting: str, nut_sel, group, bearings=None) -> np
     per = np.broadcast_to(per, per.shape[:3] + (space.n_drives,))[0, 0, 0]  # one combination, every drive
     n_groups = int(group.max()) + 1
     by_group = np.stack([mech[:, group == k].min(axis=1) for k in range(n_groups)], axis=1)  # (nuts, groups)
-    return by_group[..., None] + (per - per[0])[None, None, :]
+    return by_group, per - per[0]
