@@ -10,8 +10,9 @@ the objective (minimised) and the problem's ``max_cost`` left out:
    design found so far, which prunes the drives per block: :func:`.drivebounds.least_cost`), the survivors'
    costs computed exactly (the cost reads no preload: a sum of part prices, :func:`axisopt.model.cost.cost`);
 3. the cheapest survivors are solved exactly (:func:`.preload.exact_solve`, every other limit) whenever they
-   cost no more than the next block's bound, or no design is known yet; the search stops when no block or survivor left could cost less
-   than the cheapest feasible design found.  The answer is proven least (the bounds are exact or below).
+   cost no more than the next block's bound, or no design is known yet; the search stops when no block or
+   survivor left could cost less than the cheapest feasible design found.  The answer is proven least (the
+   bounds are exact or below).
 
 The work is counted, not timed: at most :data:`MAX_SCREENS` screened groups of blocks (the same answer on any
 machine); a search cut there returns None (no advice), as one that finds no design.

@@ -5,6 +5,7 @@ rounding step below it), and the search itself against every combination (the ex
 catalogs.  No formula is new here: the reference is the exhaustive enumeration, not a published number."""
 
 import math
+
 import numpy as np
 import pytest
 from test_bounds import _problem
