@@ -3,9 +3,9 @@ a search on the changed problem (:func:`design_changes`).
 
 The kinds of change, each offered only where the closest designs' misses call for it:
 
-- **a budget or mass raised**: every closest design misses ``max_cost`` (or a mass limit): the least value at
-  which the catalogs hold a design meeting every other limit, bisected between the limit and the closest designs'
-  need (up to 1 + :data:`BISECT` searches), first of all;
+- **a budget or mass raised**: no combination meets ``max_cost`` (or a mass limit) on its own, or every closest
+  design misses it: the least value at which the catalogs hold a design meeting every other limit (the budget by
+  its own least-cost search, :mod:`.budget`; a mass bisected toward the closest designs' need), first of all;
 - **rapid speed** lowered: a margin of a speed check (critical speed, DN, the motor's, coupling's, reduction's or
   rotating-nut unit's speed: available / needed >= L) needs the speed it is short of in proportion: a design that
   reaches L (1 - m) meets L at the rapid speed times (1 - m);
