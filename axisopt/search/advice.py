@@ -219,10 +219,11 @@ def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) 
         found = least_cost(problem, space)
         if found is None:  # no design even without the budget: not the budget alone
             return []
-        to = _round(found[0] / c.factor, up=True)
+        least, _, proven = found
+        to = _round(least / c.factor, up=True)
+        what = "the cheapest such design costs" if proven else "the search for a cheaper one was cut; a design costs"
         return [DesignChange(f"limits.{name}", c.unit, c.limit / c.factor, to,
-                             f"every other limit kept; the cheapest such design costs {found[0] / c.factor:,.0f} "
-                             f"{c.unit}")]
+                             f"every other limit kept; {what} {least / c.factor:,.0f} {c.unit}")]
     if not need:
         return []
     lo, hi = c.limit, c.limit * (1.0 + max(need)) / SAFETY
