@@ -3,9 +3,9 @@ a search on the changed problem (:func:`design_changes`).
 
 The kinds of change, each offered only where the closest designs' misses call for it:
 
-- **a budget or mass raised**: every closest design misses ``max_cost`` (or a mass limit): the least value at
-  which the catalogs hold a design meeting every other limit, bisected between the limit and the closest designs'
-  need (up to 1 + :data:`BISECT` searches), first of all;
+- **a budget or mass raised**: no combination meets ``max_cost`` (or a mass limit) on its own, or every closest
+  design misses it: the least value at which the catalogs hold a design meeting every other limit (the budget by
+  its own least-cost search, :mod:`.budget`; a mass bisected toward the closest designs' need), first of all;
 - **another mounting, or parts a catalog filter left out** (:mod:`.widen`): the mounting, vendor, series, type,
   grade or part id to add to the problem's ``catalog:`` section, with the axis as asked, before any axis value
   is lowered (a search per group of filters, counted in :data:`BUDGET`);
@@ -197,15 +197,36 @@ def _feasible(problem, space=None) -> bool:
     return bool(np.isfinite(ex.objective).any())
 
 
-def _raise_limit(problem, constraints, misses, name: str, space) -> list:
+def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) -> list:
     """The least value of the budget or mass limit ``name`` (max_cost, max_total_mass, max_moving_mass) at which
-    the catalogs hold a design meeting every other limit: the closest designs' need first (the limit times one plus
-    their largest miss of it, verified), then halved toward the limit :data:`BISECT` times; [] when even the need
-    is not verified.  Rounded up to three significant figures.  A budget or mass limit leaves the parts as they
-    are: every search reuses ``space``."""
+    the catalogs hold a design meeting every other limit, when no combination meets the limit on its own (the
+    explanation's single-limit check) or every closest design misses it; [] otherwise, or when none is found.
+    Rounded up to three significant figures.  A budget or mass limit leaves the parts as they are: every search
+    reuses ``space``.
+
+    The budget: the least cost of a design meeting every other limit, found by its own search
+    (:func:`.budget.least_cost`, proven least), apart from the closest designs (which the miss sum ranks, and which
+    an explanation cut short leaves poor).  A mass: the closest designs' need first (the limit times one plus their
+    largest miss of it, verified), then halved toward the limit :data:`BISECT` times."""
+    from .budget import least_cost
+
     c = next((c for c in constraints if c.name == name), None)
+    if c is None or not c.limit > 0:
+        return []
+    alone = c.label in {u[0] for u in infeasibility.unmeetable}
     need = [d[name] for d in misses if name in d]
-    if c is None or not need or not c.limit > 0:
+    if not alone and not (need and len(need) == len(misses)):
+        return []
+    if name == "max_cost":
+        found = least_cost(problem, space)
+        if found is None:  # no design even without the budget: not the budget alone
+            return []
+        least, _, proven = found
+        to = _round(least / c.factor, up=True)
+        what = "the cheapest such design costs" if proven else "the search for a cheaper one was cut; a design costs"
+        return [DesignChange(f"limits.{name}", c.unit, c.limit / c.factor, to,
+                             f"every other limit kept; {what} {least / c.factor:,.0f} {c.unit}")]
+    if not need:
         return []
     lo, hi = c.limit, c.limit * (1.0 + max(need)) / SAFETY
     hi = _round(hi / c.factor, up=True) * c.factor
@@ -234,7 +255,7 @@ def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *,
         return []
     space = build_space(problem) if space is None else space
     for name in RAISED_LIMITS:  # a budget or mass the closest designs all need more of: how much more, first
-        if all(name in d for d in misses) and (found := _raise_limit(problem, constraints, misses, name, space)):
+        if found := _raise_limit(problem, constraints, infeasibility, misses, name, space):
             return found
     # another mounting, or parts a catalog filter left out (search.widen): the axis as asked, before it is lowered
     edits, used = widened(problem, misses, budget)

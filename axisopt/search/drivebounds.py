@@ -137,11 +137,12 @@ def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
 
 def drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None):
     """Per (nut, bearing group, drive) of the nuts ``nut_sel`` (or per (nut, bearing) pair of ``bearings``),
-    for each limit of ``constraints`` the drive block bounds (not the cost), a value no (guide, preload) of the
-    block beats with that drive: {limit name: (nuts, groups, drives)}, and each bearing's group."""
-    cons = [c for c in constraints if c.key != "cost"]
-    if not cons:
+    for each limit of ``constraints`` a value no (guide, preload) of the block beats with that drive: the drive
+    block's limits from its interval bounds, the cost its least value (:func:`least_cost`):
+    {limit name: (nuts, groups, drives)}, and each bearing's group."""
+    if not constraints:
         return {}, None
+    cons = [c for c in constraints if c.key != "cost"]
     box, group = hull_ends(space, mounting, nut_sel, reads_regen(cons), bearings)
     shape = (len(space.nut_numbers(nut_sel)), int(group.max()) + 1, space.n_drives, 1)
     out = {}
@@ -149,4 +150,35 @@ def drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None)
         end = box[1] if c.sense == ">=" else box[0]
         if c.key in end:
             out[c.name] = np.broadcast_to(np.asarray(c.value(end), dtype=float), shape)[..., 0]
+    if len(cons) < len(constraints):
+        least = least_cost(space, mounting, nut_sel, group, bearings)
+        out.update({c.name: least for c in constraints if c.key == "cost"})
     return out, group
+
+
+def least_cost(space: Space, mounting: str, nut_sel, group, bearings=None) -> np.ndarray:
+    """The least cost [EUR] of a block's combinations with each drive, over its guides and the bearings of each
+    group (``group``: each bearing's), per (nut, group, drive) of the nuts ``nut_sel`` (or per (nut, bearing)
+    pair of ``bearings``, one group).  The cost is a sum of part prices (:func:`axisopt.model.cost.cost`, the
+    drive's counted once per drive of the axis) and reads no preload, so this is exact: the least over guides and
+    bearings with the first drive, plus each drive's price difference from it (:func:`cost_parts`)."""
+    by_group, per_drive = cost_parts(space, mounting, nut_sel, group, bearings)
+    return by_group[..., None] + per_drive[None, None, :]
+
+
+def cost_parts(space: Space, mounting: str, nut_sel, group, bearings=None) -> tuple:
+    """(the least cost [EUR] with the first searched drive per (nut, group) as in :func:`least_cost`, each drive's
+    price difference from the first (drives,))."""
+    from ..model.cost import cost
+
+    nut_idx = space.nut_numbers(nut_sel)
+    first = np.zeros(1, dtype=np.int64)
+    mech = np.asarray(cost(space.params_drives(mounting, nut_idx, bearings, drives=first)), dtype=float)
+    nb = (len(nut_idx), len(group))
+    mech = np.broadcast_to(mech, nb + mech.shape[2:]).min(axis=(2, 3))  # (nuts, bearings), the first drive
+    one = space.params_drives(mounting, nut_idx[:1], np.zeros(1, dtype=np.int64))  # one nut and bearing
+    per = np.asarray(cost(one), dtype=float)
+    per = np.broadcast_to(per, per.shape[:3] + (space.n_drives,))[0, 0, 0]  # one combination, every drive
+    n_groups = int(group.max()) + 1
+    by_group = np.stack([mech[:, group == k].min(axis=1) for k in range(n_groups)], axis=1)  # (nuts, groups)
+    return by_group, per - per[0]

@@ -29,7 +29,7 @@ from .. import model
 from ..model.limits import CHECK_RECORDS
 from .bounds import SCREEN_RTOL, block_chunk, block_outputs, bound_positions, optimistic_guide_params
 from .candidates import candidate_values
-from .drivebounds import PER_DRIVE_MIN, drive_hull
+from .drivebounds import PER_DRIVE_MIN, cost_parts, drive_hull
 from .parts import drive_stiffnesses
 from .result import Infeasibility
 from .task.constraints import End, as_vector, reads_regen
@@ -43,6 +43,13 @@ CHUNK = 2_000_000  # response elements per block
 # does not fit is not a design).  1000 gave the same proposals on the shipped variants but let fewer blocks be
 # pruned: the explanation of the slowest vmc_random_1000 cases took 1.5x as long.
 RULE_WEIGHT = 10.0
+# A limit that no combination meets on its own (the block bounds show it: a budget below the cheapest parts) adds
+# its miss to every design's score, so the scores lie close together and the bounds leave many blocks open: the
+# best-first explanation then stops once the blocks it scored hold this many combinations (a count of work, not a
+# time: the same answer on any machine; Infeasibility.cut).  The shipped infeasible examples score 20 000 and
+# 6 300; a lathe Z with a budget of a quarter of its cheapest combination would score 580 M in 1 400 blocks
+# (35 s): it stops after 10 of its blocks of 420 000 (guides x drives)
+MAX_OPENED = 4_000_000
 
 
 def weight(c) -> float:
@@ -67,6 +74,7 @@ class _Tally:
     def __init__(self, constraints):
         self.best = {c.name: None for c in constraints}
         self.met = {c.name: False for c in constraints}
+        self.hopeless = False  # the block bounds show a limit no combination meets (best-first explanation)
 
     def add(self, c, v, miss, fits):
         self.met[c.name] = self.met[c.name] or bool(((miss <= 0) & fits).any())
@@ -107,27 +115,47 @@ def _closest(top_idx, top_score, idx, score, n):
 
 
 def explain_infeasible(space: Space, constraints, objective, n_closest: int = CLOSEST, *,
-                       every_combination: bool = False, deadline: float | None = None) -> Infeasibility:
+                       every_combination: bool = False, deadline: float | None = None,
+                       max_opened: int | None = MAX_OPENED) -> Infeasibility:
     """Limits no combination meets (with the best value any reaches) and the ``n_closest`` designs of
     lowest miss score (ties: lowest combination number).  Best-first over blocks unless
     ``every_combination`` (module docstring); both give the same answer.  ``deadline`` (a time.perf_counter()
-    value): the explanation stops there with the closest designs found so far (``Infeasibility.cut``)."""
+    value): the explanation stops there with the closest designs found so far (``Infeasibility.cut``); so does the
+    best-first one, when the block bounds show a limit that no combination meets on its own, once the blocks it
+    scored hold ``max_opened`` combinations (None: no such limit; see :data:`MAX_OPENED`)."""
     tally = _Tally(constraints)
     top_idx, top_score = np.zeros(0, np.int64), np.zeros(0)
     scores = miss_scores(space, constraints, tally) if every_combination else \
         _best_first_scores(space, constraints, tally, n_closest)
-    cut = False
+    cut, opened = False, 0
     for idx, score in scores:
         top_idx, top_score = _closest(top_idx, top_score, idx, score, n_closest)
-        if deadline is not None and time.perf_counter() > deadline:
+        opened += len(idx)
+        if (deadline is not None and time.perf_counter() > deadline) or \
+                (tally.hopeless and max_opened is not None and opened >= max_opened):
             cut = True
             break
     unmeetable = []
     for c in constraints:
         if not tally.met[c.name] and tally.best[c.name] is not None:
-            unmeetable.append((c.label, tally.best[c.name] / c.factor, c.limit / c.factor, c.unit))
+            best = tally.best[c.name]
+            if cut and c.key == "cost" and space.m_arr is not None:  # the blocks left out may hold cheaper ones
+                best = min(best, _cheapest(space))
+            unmeetable.append((c.label, best / c.factor, c.limit / c.factor, c.unit))
     return Infeasibility(unmeetable, _closest_designs(space, constraints, objective, [int(c) for c in top_idx]),
                          cut=cut)
+
+
+def _cheapest(space: Space) -> float:
+    """The least cost [EUR] of any (fitting, if any fits) combination of a space with a drive search, exact
+    (:func:`.drivebounds.cost_parts`): the budget's single-limit check when the explanation was cut."""
+    B = space.shape[2]
+    usable = space.fits if space.fits.any() else np.ones_like(space.fits)
+    best = np.inf
+    for mounting in space.mountings:
+        by_bearing, per_drive = cost_parts(space, mounting, slice(0, space.shape[1]), np.arange(B))
+        best = min(best, float(np.min(np.where(usable, by_bearing, np.inf)) + per_drive.min()))
+    return best
 
 
 def _bounded(c) -> bool:
@@ -226,6 +254,7 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     M, (_, N, B, _) = len(space.mountings), space.shape
     lb = np.stack([o[1] for o in opt])  # (M, N, B)
     vals = {name: np.stack([o[0][name] for o in opt]) for name in opt[0][0]}
+    tally.hopeless = any(c.name in vals and not c.ok(vals[c.name]).any() for c in constraints)
     G, X = space.shape[3], max(len(space.grid[m]) for m in space.mountings)
     rows = max(1, CHUNK // max(G * X, 1))  # (nut, bearing) pairs scored per evaluation
     fits = np.broadcast_to(space.fits, (M, N, B))
