@@ -70,7 +70,11 @@ class Exact:
 
 
 def _exact_goal(g):
-    return property(lambda self: self.goals[g.key], doc=f"{g.field} [{g.unit}] of each combination (goal {g.key!r})")
+    def values(self) -> np.ndarray:
+        return self.goals[g.key]
+
+    values.__doc__ = f"The goal {g.key!r} [{g.unit}] of each combination (``goals[{g.key!r}]``)."
+    return property(values)
 
 
 for _g in RESULT_GOALS:
@@ -201,8 +205,11 @@ def goal_value(outputs: dict, g) -> float:
 
 
 def _candidate_goal(g):
-    return property(lambda self: self.goal(g.key), doc=f"{g.field} [{g.unit}] (goal {g.key!r}; model output "
-                    f"{g.output}, NaN where not evaluated)")
+    def value(self) -> float:
+        return self.goal(g.key)
+
+    value.__doc__ = f"The goal {g.key!r} [{g.unit}] (model output {g.output}; NaN where not evaluated)."
+    return property(value)
 
 
 # a goal whose value is not a Candidate field (not in the JSON) reads the outputs under its field name
