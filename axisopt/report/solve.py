@@ -9,6 +9,7 @@ import textwrap
 
 import numpy as np
 
+from ..problem import OBJECTIVE_TABLE
 from ..search.result import OPTIMAL
 
 # The cutting force's components beside the feed force, as a rule of thumb for turning: feed F_f = 0.50 F_c and
@@ -201,19 +202,22 @@ def relax_lines(inf) -> list:
     return L0 + L
 
 
-def _cand_table(cands, unit, accuracy: bool = False) -> str:
+def _cand_table(cands, unit, keys=()) -> str:
     """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
-    design, only the parts in which it differs from the one above); ``accuracy``: the positioning error too."""
+    design, only the parts in which it differs from the one above).  The goals' columns come from
+    ``problem.OBJECTIVE_TABLE`` (``Goal.column``): those shown always, the preload, then those of the front's
+    ``keys`` (the positioning error)."""
     slots = ("arrangement", "screw", "grade", "nut", "bearing", "guide", "motor", "coupling", "reduction")
     obj = f"obj {unit}" if unit != "-" else ""
-    L = [f"  {'#':>3} {'mounting':<17}{obj:>12}{'k N/um':>9}{'f Hz':>8}{'cost EUR':>10}{'mass kg':>9}"
-         f"{'preload N':>11}" + (f"{'error um':>10}" if accuracy else "")]
+    always = [g for g in OBJECTIVE_TABLE if g.column is not None and g.column.always]
+    extra = [g for g in OBJECTIVE_TABLE if g.column is not None and not g.column.always and g.key in keys]
+    L = [f"  {'#':>3} {'mounting':<17}{obj:>12}" + "".join(f"{g.column.header:>{g.column.width}}" for g in always)
+         + f"{'preload N':>11}" + "".join(f"{g.column.header:>{g.column.width}}" for g in extra)]
     prev = None
     for c in cands:
         val = f"{c.objective:,.3f}" if obj else ""
-        L.append(f"  {c.rank:>3} {c.mounting:<17}{val:>12}{c.min_stiffness:>9.1f}{c.min_frequency:>8.1f}"
-                 f"{c.cost:>10,.0f}{c.total_mass:>9.1f}{c.nut_preload:>11.0f}"
-                 + (f"{c.positioning_error:>10.1f}" if accuracy else ""))
+        L.append(f"  {c.rank:>3} {c.mounting:<17}{val:>12}" + "".join(_goal_cell(c, g) for g in always)
+                 + f"{c.nut_preload:>11.0f}" + "".join(_goal_cell(c, g) for g in extra))
         parts = c.parts() | ({"grade": c.screw_grade} if getattr(c, "screw_grade", "") else {}) \
             | ({"arrangement": c.arrangement} if c.arrangement else {})
         if prev is None:
@@ -226,6 +230,11 @@ def _cand_table(cands, unit, accuracy: bool = False) -> str:
                                break_on_hyphens=False))
         prev = parts
     return "\n".join(L)
+
+
+def _goal_cell(c, g) -> str:
+    """The goal ``g``'s value of the design ``c`` in its column (``Goal.column``)."""
+    return format(c.goal(g.key), f">{g.column.width}{g.column.spec}")
 
 
 def estimated_lines(estimated) -> list:
@@ -249,7 +258,7 @@ def format_pareto(front, top: int | None = None) -> str:
          f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"]
     if len(shown) < len(front.points):
         L.append(f"  the first {len(shown)} by {front.keys[0]} shown (--top N for more, --json for all)")
-    L.append(_cand_table(shown, "-", accuracy="positioning_error" in front.keys))
+    L.append(_cand_table(shown, "-", front.keys))
     return "\n".join(L)
 
 
@@ -272,10 +281,9 @@ def plot_pareto(front, path: str | None = None):
     Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image); written to
     ``path`` only when given."""
     from ..figure import Figure
-    from ..search.pareto import FIELD
 
     keys, d = front.keys, len(front.keys)
-    F = np.array([[getattr(p, FIELD[k]) for k in keys] for p in front.points]).reshape(-1, d)
+    F = np.array([[p.goal(k) for k in keys] for p in front.points]).reshape(-1, d)
     C = np.asarray(front.cloud, dtype=float).reshape(-1, d) if front.cloud is not None else np.zeros((0, d))
     size = 2.6 * d if d > 2 else 5.5
     fig = Figure(figsize=(size + 1.0, size))

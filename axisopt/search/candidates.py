@@ -8,8 +8,8 @@ import numpy as np
 from .. import model
 from ..design import Design
 from ..model.limits import LIMITS
-from ..units import N_PER_UM
-from .result import Candidate
+from ..problem import RESULT_GOALS
+from .result import CANDIDATE_FIELDS, Candidate, goal_value
 from .task.objective import ObjectiveSpec
 from .task.space import Space
 
@@ -38,18 +38,17 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
     ev = model.evaluate(design, use_casadi=False)
     v = ev.values
     J = float(objective.value({k: np.asarray(v[k]) for k, _ in objective.terms}))
+    outputs = {lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v}
+    # the goals' values that are Candidate fields (the others the Candidate reads from ``outputs``)
+    goals = {g.field: goal_value(outputs, g) for g in RESULT_GOALS if g.field in CANDIDATE_FIELDS}
     return Candidate(rank=rank, combination=int(combo), mounting=mounting, screw=str(screw["id"]),
                      nut=str(nut["id"]), bearing=str(bearing["id"]), guide=str(guide["id"]), nut_preload=preload,
                      motor="" if motor is None else str(motor["id"]),
                      coupling="" if coupling is None else str(coupling["id"]),
                      reduction="" if reduction is None else str(reduction["id"]),
                      screw_grade="" if space.grades is None else str(space.grades[n]),
-                     objective=J, min_stiffness=float(np.min(v["k_total"])) / N_PER_UM,
-                     min_frequency=float(np.min(v["f1"])), cost=float(v["cost"]),
-                     moving_mass=float(v["moving_mass"]), total_mass=float(v["total_mass"]),
-                     drag_torque=float(v["drag_torque"]), life_h=float(v["life"]) / 3600.0, design=design,
-                     outputs={lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v}
-                     ), v
+                     objective=J, drag_torque=float(v["drag_torque"]), life_h=float(v["life"]) / 3600.0,
+                     design=design, outputs=outputs, **goals), v
 
 
 def part_rows(space: Space, n, b, g):

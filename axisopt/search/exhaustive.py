@@ -14,13 +14,18 @@ import time
 
 import numpy as np
 
-from ..units import N_PER_UM
+from ..model.limits import OUTPUT_PRELOAD
+from ..problem import RESULT_GOALS
 from . import bestfirst
-from .preload import BISECTION_STEPS, concat_exact, convex_interval, new_exact, subset
+from .preload import BISECTION_STEPS, concat_exact, convex_interval, goal_arrays, new_exact, subset
 from .result import Exact, SearchStats
-from .task.constraints import as_vector, ok_all
+from .task.constraints import ok_all
 from .task.objective import ObjectiveSpec
 from .task.space import Space, respond
+
+# the goals a result carries, by whether their output moves with the nut preload (model.limits.OUTPUT_PRELOAD)
+PRELOAD_GOALS = tuple(g for g in RESULT_GOALS if OUTPUT_PRELOAD.get(g.output, 0))
+FIXED_GOALS = tuple(g for g in RESULT_GOALS if not OUTPUT_PRELOAD.get(g.output, 0))
 
 
 def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid: int = 9) -> Exact:
@@ -41,9 +46,8 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
         out_lo = respond(p, x, mounting, lo[:, None])
         out_hi = respond(p, x, mounting, hi[:, None])
         ok = ok_all(indep, out_lo, k) & space.fits[n, b]
-        res.cost[sel] = as_vector(out_lo["cost"], k)
-        res.total_mass[sel] = as_vector(out_lo["total_mass"], k)
-        res.moving_mass[sel] = as_vector(out_lo["moving_mass"], k)
+        for key, v in goal_arrays(out_lo, k, FIXED_GOALS).items():  # the same at every preload
+            res.goals[key][sel] = v
         low, up = lo.copy(), hi.copy()
         for c in dep:
             w = np.nonzero(ok)[0]  # only the combinations every limit so far allows (exact, not a bound)
@@ -102,17 +106,14 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
         res.feasible[sel] = feas
         res.objective[sel] = best_obj
         res.preload[sel] = best_pre
-        ks, fs, pe = np.full(k, np.nan), np.full(k, np.nan), np.full(k, np.nan)
         f = np.nonzero(feas)[0]
+        vals = {g.key: np.full(k, np.nan) for g in PRELOAD_GOALS}  # at the best preload, NaN where infeasible
         if len(f):
             out = respond(subset(p, f, k), x, mounting, best_pre[f][:, None])
-            ks[f] = as_vector(np.min(out["k_total"], axis=-1), len(f)) / N_PER_UM
-            fs[f] = as_vector(np.min(out["f1"], axis=-1), len(f))
-            if "positioning_error" in out:
-                pe[f] = as_vector(out["positioning_error"], len(f)) / 1e-6
-        res.min_stiffness[sel] = ks
-        res.min_frequency[sel] = fs
-        res.positioning_error[sel] = pe
+            for key, v in goal_arrays(out, len(f), PRELOAD_GOALS).items():
+                vals[key][f] = v
+        for key, v in vals.items():
+            res.goals[key][sel] = v
     return res
 
 

@@ -1,10 +1,11 @@
-"""Exact Pareto front over two or more of {minimum stiffness, minimum frequency, cost, mass}.
+"""Exact Pareto front over two or more of the Pareto goals (``axisopt.problem.OBJECTIVE_TABLE``: minimum
+stiffness, minimum frequency, cost, masses, positioning error).
 
-Both performance measures grow with the nut preload and cost and mass do not depend on it, so each
-combination contributes one point: its best preload (the upper end of its feasible preload interval).
-Every screened combination is solved exactly (vectorized), then :func:`nondominated` keeps the exact
-non-dominated set (a point is dropped only if another is at least as good in every objective and
-strictly better in one; equal points are all kept).
+The performance measures improve with the nut preload (stiffness and frequency grow, the positioning error
+falls) and cost and mass do not depend on it, so each combination contributes one point: its best preload (the
+upper end of its feasible preload interval).  Every screened combination is solved exactly (vectorized), then
+:func:`nondominated` keeps the exact non-dominated set (a point is dropped only if another is at least as good in
+every objective and strictly better in one; equal points are all kept).
 """
 
 from __future__ import annotations
@@ -24,7 +25,8 @@ from .screen import screen_nuts
 from .task.constraints import build_constraints
 from .task.objective import objective_spec
 
-# per Pareto key (axisopt.problem.OBJECTIVE_TABLE): maximised or minimised, display unit, Candidate field
+# per Pareto key (axisopt.problem.OBJECTIVE_TABLE): maximised or minimised, display unit, the name of its value
+# on a Candidate or Exact (``Candidate.goal(key)`` and ``Exact.goals[key]`` read it by key)
 SENSE = {k: g.sense for k, g in GOALS.items() if g.pareto}
 UNIT = {k: g.unit for k, g in GOALS.items() if g.pareto}
 FIELD = {k: g.field for k, g in GOALS.items() if g.pareto}
@@ -113,12 +115,12 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     ok = np.nonzero(ex.feasible)[0]
     cols = []
     for k in keys:
-        v = getattr(ex, FIELD[k])[ok]
+        v = ex.goals[k][ok]
         cols.append(v if SENSE[k] == "max" else -v)
     P = np.column_stack(cols) if len(ok) else np.zeros((0, len(keys)))
     front = ok[nondominated(P)] if len(ok) else np.zeros(0, np.int64)
     # sort by the first objective (best first)
-    first = getattr(ex, FIELD[keys[0]])[front]
+    first = ex.goals[keys[0]][front]
     front = front[np.argsort(-first if SENSE[keys[0]] == "max" else first, kind="stable")]
     notes = []
     if len(front) > max_points:
@@ -129,7 +131,7 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     info.feasible = int(len(ok))
     cert = Certificate.of(info, 0, 0, notes + [f"front size {len(front)}"])
     sample = ok if len(ok) <= CLOUD else np.random.default_rng(0).choice(ok, CLOUD, replace=False)
-    cloud = np.column_stack([getattr(ex, FIELD[k])[sample] for k in keys]) if len(ok) else None
+    cloud = np.column_stack([ex.goals[k][sample] for k in keys]) if len(ok) else None
     pf = ParetoFront(tuple(keys), tuple(SENSE[k] for k in keys), tuple(UNIT[k] for k in keys), pts,
                      feasible=int(len(ok)), cloud=cloud)
     status = OPTIMAL if len(front) else INFEASIBLE

@@ -21,7 +21,7 @@ from dataclasses import fields
 import numpy as np
 
 from .. import model
-from ..units import N_PER_UM
+from ..problem import RESULT_GOALS
 from .result import Exact
 from .task.constraints import Constraint, as_vector, ok_all, reads_regen
 from .task.objective import ObjectiveSpec
@@ -89,15 +89,24 @@ def repeat_rows(p: dict, k: int, r: int) -> dict:
 
 
 def new_exact(idx) -> Exact:
-    """An Exact of the combinations ``idx`` with nothing solved yet (infeasible, objective -inf)."""
+    """An Exact of the combinations ``idx`` with nothing solved yet (infeasible, objective -inf, goals NaN)."""
     K = len(idx)
-    return Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf), np.zeros(K), np.zeros(K),
-                 np.zeros(K), np.full(K, np.nan), np.full(K, np.nan), np.full(K, np.nan))
+    return Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf),
+                 {g.key: np.full(K, np.nan) for g in RESULT_GOALS})
 
 
 def concat_exact(parts) -> Exact:
     """One Exact of the combinations of ``parts`` (in order)."""
-    return Exact(*(np.concatenate([getattr(p, f.name) for p in parts]) for f in fields(Exact)))
+    return Exact(*(np.concatenate([getattr(p, f.name) for p in parts]) for f in fields(Exact) if f.name != "goals"),
+                 {g.key: np.concatenate([p.goals[g.key] for p in parts]) for g in RESULT_GOALS})
+
+
+def goal_arrays(out: dict, K: int, goals=RESULT_GOALS) -> dict:
+    """Goal key -> (K,) value in the goal's display unit of the model outputs ``out`` of K combinations, for each
+    of ``goals`` whose output ``out`` holds: the minimum over the stroke of a profile, divided by the display
+    factor (the values :class:`.result.Exact` carries)."""
+    return {g.key: as_vector(np.min(out[g.output], axis=-1) if g.profile else out[g.output], K) / g.factor
+            for g in goals if g.output in out}
 
 
 def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, need=("k_total", "f1")) -> Exact:
@@ -170,13 +179,8 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
         res.feasible[sel] = ok
         res.preload[sel] = pstar
         res.objective[sel] = np.where(ok, J, -np.inf)
-        res.cost[sel] = as_vector(out["cost"], k)
-        res.total_mass[sel] = as_vector(out["total_mass"], k)
-        res.moving_mass[sel] = as_vector(out["moving_mass"], k)
-        res.min_stiffness[sel] = as_vector(np.min(out["k_total"], axis=-1), k) / N_PER_UM
-        res.min_frequency[sel] = as_vector(np.min(out["f1"], axis=-1), k)
-        if "positioning_error" in out:
-            res.positioning_error[sel] = as_vector(out["positioning_error"], k) / 1e-6
+        for key, v in goal_arrays(out, k).items():
+            res.goals[key][sel] = v
     return res
 
 

@@ -11,6 +11,7 @@ from types import MappingProxyType
 import numpy as np
 
 from ..display import fmt, frame, html_fields, html_table, one_line
+from ..problem import GOALS, RESULT_GOALS
 
 
 @dataclass(frozen=True)
@@ -55,18 +56,29 @@ class SearchStats:
 @dataclass
 class Exact:
     """The exact per-combination optimum of the continuous problem, over K combinations
-    (:func:`.preload.exact_solve`, :func:`.exhaustive.grid_solve`)."""
+    (:func:`.preload.exact_solve`, :func:`.exhaustive.grid_solve`).
+
+    ``goals`` holds, per goal of :data:`axisopt.problem.RESULT_GOALS` (its key), the (K,) values at the chosen
+    preload in the goal's display unit (NaN where not evaluated: no limit or front reads the output); each is
+    also the attribute named by the goal's ``field`` (``ex.min_stiffness``, ``ex.cost``, ...)."""
 
     idx: np.ndarray  # combination numbers
     feasible: np.ndarray
     preload: np.ndarray  # [N]
     objective: np.ndarray  # display units, -inf where infeasible
-    cost: np.ndarray  # [EUR]
-    total_mass: np.ndarray  # [kg]
-    moving_mass: np.ndarray  # [kg]
-    min_stiffness: np.ndarray  # [N/um] at the chosen preload
-    min_frequency: np.ndarray  # [Hz]
-    positioning_error: np.ndarray  # [um] at the chosen preload (NaN where no limit or front reads the budget)
+    goals: dict  # goal key -> (K,) display values
+
+
+def _exact_goal(g):
+    def values(self) -> np.ndarray:
+        return self.goals[g.key]
+
+    values.__doc__ = f"The goal {g.key!r} [{g.unit}] of each combination (``goals[{g.key!r}]``)."
+    return property(values)
+
+
+for _g in RESULT_GOALS:
+    setattr(Exact, _g.field, _exact_goal(_g))
 
 
 @dataclass
@@ -119,10 +131,13 @@ class Candidate:
     # design is of ('' otherwise; not in the JSON then)
     arrangement: str = ""
 
-    @property
-    def positioning_error(self) -> float:
-        """The positioning budget's worst-case total [um] (model.accuracy; NaN where not evaluated)."""
-        return self.outputs.get("positioning_error", float("nan")) * 1e6
+    def goal(self, key: str) -> float:
+        """The value of the goal ``key`` (:data:`axisopt.problem.OBJECTIVE_TABLE`) in its display unit: its field
+        where the Candidate has one (in the JSON), else from the model's outputs (NaN where not evaluated)."""
+        g = GOALS[key]
+        if g.field in CANDIDATE_FIELDS:
+            return getattr(self, g.field)
+        return goal_value(self.outputs, g)
 
     def parts(self) -> dict:
         out = {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
@@ -178,6 +193,29 @@ class Candidate:
 
     def _repr_html_(self) -> str:
         return html_table([self.row()], repr(self))
+
+
+CANDIDATE_FIELDS = frozenset(f.name for f in fields(Candidate))
+
+
+def goal_value(outputs: dict, g) -> float:
+    """The value of the goal ``g`` in its display unit from a design's model outputs (SI, a profile's minimum over
+    the stroke: ``Candidate.outputs``); NaN where the output was not evaluated."""
+    return outputs.get(g.output, math.nan) / g.factor
+
+
+def _candidate_goal(g):
+    def value(self) -> float:
+        return self.goal(g.key)
+
+    value.__doc__ = f"The goal {g.key!r} [{g.unit}] (model output {g.output}; NaN where not evaluated)."
+    return property(value)
+
+
+# a goal whose value is not a Candidate field (not in the JSON) reads the outputs under its field name
+for _g in RESULT_GOALS:
+    if _g.field not in CANDIDATE_FIELDS:
+        setattr(Candidate, _g.field, _candidate_goal(_g))
 
 
 @dataclass
