@@ -13,7 +13,7 @@ import numpy as np
 from .bounds import block_bounds
 from .preload import concat_exact, exact_solve
 from .result import SearchStats
-from .screen import screen_nuts
+from .screen import screen_blocks
 from .task.objective import ObjectiveSpec, objective_floor
 from .task.space import Space
 
@@ -58,7 +58,6 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     order = np.argsort(-bv, kind="stable")
     bm, bn, bb, bv = bm[order].astype(int), bn[order].astype(int), bb[order].astype(int), bv[order]
     t_screen = time.perf_counter() - t0
-    _, N, B, _ = space.shape
     per_group = space.nuts_per_block
     pos, batch, n_eval, screened_blocks, feasible = 0, 64, 0, 0, 0
     group = 1  # distinct nuts per screened group: grows as long as no incumbent prunes
@@ -114,13 +113,7 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
         screened_blocks += end - pos
         pos = end
         new_idx, new_bnd = [], []
-        for mi in np.unique(bm[grp]):
-            sel = bm[grp] == mi
-            gn, gb = bn[grp][sel], bb[grp][sel]
-            nuts = np.unique(gn)
-            premask = np.zeros((len(nuts), B), dtype=bool)
-            premask[np.searchsorted(nuts, gn), gb] = True
-            i, bnd = screen_nuts(space, int(mi), nuts, constraints, objective, premask=premask)
+        for i, bnd in screen_blocks(space, bm[grp], bn[grp], bb[grp], constraints, objective):
             new_idx.append(i)
             new_bnd.append(bnd)
         add_i = np.concatenate(new_idx) if new_idx else np.zeros(0, np.int64)

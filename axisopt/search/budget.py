@@ -25,7 +25,7 @@ import numpy as np
 from ..model.cost import cost
 from .bounds import block_bounds
 from .preload import exact_solve
-from .screen import screen_nuts
+from .screen import screen_blocks
 from .task.constraints import build_constraints
 from .task.objective import ObjectiveSpec
 
@@ -61,7 +61,6 @@ def least_cost(problem, space, max_blocks: int = MAX_BLOCKS) -> tuple[float, int
     bm, bn, bb, lb = (np.concatenate(x) for x in (bm, bn, bb, lb))
     order = np.argsort(lb, kind="stable")
     bm, bn, bb, lb = bm[order].astype(int), bn[order].astype(int), bb[order].astype(int), lb[order]
-    B = space.shape[2]
     best, best_idx = np.inf, -1
     pool_idx, pool_cost = np.zeros(0, np.int64), np.zeros(0)
     pos, screened, group, batch = 0, 0, 1, FIRST_SOLVES
@@ -100,13 +99,7 @@ def least_cost(problem, space, max_blocks: int = MAX_BLOCKS) -> tuple[float, int
         grp = slice(pos, end)
         screened += end - pos
         pos, group = end, group * 2
-        for mi in np.unique(bm[grp]):
-            sel = bm[grp] == mi
-            gn, gb = bn[grp][sel], bb[grp][sel]
-            nuts = np.unique(gn)
-            premask = np.zeros((len(nuts), B), dtype=bool)
-            premask[np.searchsorted(nuts, gn), gb] = True
-            idx, _ = screen_nuts(space, int(mi), nuts, capped, LEAST_COST, premask=premask)
+        for idx, _ in screen_blocks(space, bm[grp], bn[grp], bb[grp], capped, LEAST_COST):
             c = _costs(space, idx)
             fine = c < best
             pool_idx, pool_cost = np.concatenate([pool_idx, idx[fine]]), np.concatenate([pool_cost, c[fine]])

@@ -88,6 +88,20 @@ def _mechanical(constraints):
 CACHE_BLOCK = 200_000  # (nut, bearing, guide) combinations per evaluation inside screen_nuts (cache-sized arrays)
 
 
+def screen_blocks(space: Space, bm, bn, bb, constraints, objective: ObjectiveSpec):
+    """:func:`screen_nuts` over a group of (mounting ``bm``, nut ``bn``, bearing ``bb``) blocks, one mounting at a
+    time, each mounting's nuts with the bearings of its blocks only.  Yields (survivors' combination numbers,
+    bounds) per mounting."""
+    B = space.shape[2]
+    for mi in np.unique(bm):
+        sel = bm == mi
+        gn, gb = bn[sel], bb[sel]
+        nuts = np.unique(gn)
+        premask = np.zeros((len(nuts), B), dtype=bool)
+        premask[np.searchsorted(nuts, gn), gb] = True
+        yield screen_nuts(space, int(mi), nuts, constraints, objective, premask=premask)
+
+
 def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSpec, premask=None):
     """:func:`screen` over the nuts ``nuts`` (a slice or an index array) of mounting ``mi``, every bearing
     and guide (and drive); ``premask`` (nuts x bearings, optional) leaves out (nut, bearing) blocks.
