@@ -27,6 +27,7 @@ import numpy as np
 
 from .. import model
 from ..model.limits import CHECK_RECORDS
+from . import bestfirst
 from .bounds import SCREEN_RTOL, block_chunk, block_outputs, bound_positions, optimistic_guide_params
 from .candidates import candidate_values
 from .drivebounds import PER_DRIVE_MIN, cost_parts, drive_hull
@@ -128,9 +129,14 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
     scores = miss_scores(space, constraints, tally) if every_combination else \
         _best_first_scores(space, constraints, tally, n_closest)
     cut, opened = False, 0
+    t0 = shown = time.perf_counter()
     for idx, score in scores:
         top_idx, top_score = _closest(top_idx, top_score, idx, score, n_closest)
         opened += len(idx)
+        if (now := time.perf_counter()) - shown > bestfirst.PROGRESS:
+            shown = now
+            bestfirst.LOG.info(f"  explaining: {opened:,} combinations scored for the closest designs, "
+                               f"{now - t0:.0f} s")
         if (deadline is not None and time.perf_counter() > deadline) or \
                 (tally.hopeless and max_opened is not None and opened >= max_opened):
             cut = True

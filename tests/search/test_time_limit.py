@@ -65,3 +65,12 @@ def test_a_long_exhaustive_search_reports_progress(monkeypatch, caplog):
         solve(p, "exhaustive", top=1, sensitivities=False)
     lines = [r.getMessage() for r in caplog.records if "exhaustive:" in r.getMessage()]
     assert lines and "combinations solved" in lines[-1]
+
+
+def test_a_long_explanation_reports_progress(monkeypatch, caplog):
+    monkeypatch.setattr(bestfirst, "PROGRESS", 0.0)
+    p = load_problem(ROOT / "problems" / "infeasible_problem.yaml")
+    with caplog.at_level(logging.INFO, logger="axisopt"):
+        explain_infeasible(build_space(p), build_constraints(p), objective_spec("stiffness"))
+    lines = [r.getMessage() for r in caplog.records if "explaining:" in r.getMessage()]
+    assert lines and "combinations scored" in lines[-1]
