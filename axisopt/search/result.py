@@ -337,8 +337,11 @@ class ParetoFront:
     cloud: object = None
 
     def to_dict(self) -> dict:
+        """The front as JSON: each point's fields and its ``objectives`` (the value of each key, in ``keys`` order
+        and display units: a goal without a field of its own, the positioning error, is there too)."""
         return {"keys": list(self.keys), "senses": list(self.senses), "units": list(self.units),
-                "feasible": self.feasible, "points": [p.to_dict() for p in self.points]}
+                "feasible": self.feasible,
+                "points": [p.to_dict() | {"objectives": [_clean(p.goal(k)) for k in self.keys]} for p in self.points]}
 
     def __len__(self) -> int:
         return len(self.points)

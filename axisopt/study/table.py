@@ -15,6 +15,7 @@ import re
 from pathlib import Path
 
 from ..fileio import atomic_file, csv_safe, make_output_dir, save_figure, tidy_layout, write_text_atomic
+from ..problem import GOALS
 from .store import OK_STATUSES, CaseStore
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
@@ -319,13 +320,17 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
     if fronts:
         p0 = fronts[0]["pareto"]
         kx, ky = p0["keys"][:2]
-        attr = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost",
-                "total_mass": "total_mass", "moving_mass": "moving_mass"}
         fig = Figure(figsize=(7, 4.5))
         ax = fig.subplots()
         for r in fronts[:12]:
-            xs = [p[attr[kx]] for p in r["pareto"]["points"]]
-            ys = [p[attr[ky]] for p in r["pareto"]["points"]]
+            # each point's objective values in the front's key order (a record written before they were stored:
+            # the Candidate field of the goal)
+            if not {kx, ky} <= set(r["pareto"]["keys"]):  # a case with other objectives: not on these axes
+                continue
+            at = [r["pareto"]["keys"].index(k) for k in (kx, ky)]
+            vals = [p["objectives"] if "objectives" in p else [p[GOALS[k].field] for k in r["pareto"]["keys"]]
+                    for p in r["pareto"]["points"]]
+            xs, ys = [v[at[0]] for v in vals], [v[at[1]] for v in vals]
             ax.plot(xs, ys, ".", label=_label(r, cols))
         ax.set_xlabel(f"{kx} [{p0['units'][0]}]")
         ax.set_ylabel(f"{ky} [{p0['units'][1]}]")

@@ -33,3 +33,30 @@ def test_large_examples_first_cases(tmp_path, name):
     st = replace(st, cases=st.cases[:3])
     s = run_study(st, tmp_path / "o", workers=0)
     assert s.solved == 3 and s.lost == 0
+
+
+def test_a_study_of_fronts_in_the_positioning_error(tmp_path):
+    """A front whose keys include a goal without a JSON field of its own (the positioning error) is stored with
+    each point's objective values and drawn (the study's plot read a hand map that lacked it)."""
+    import json
+
+    from study_helpers import PROBLEMS
+
+    text = (PROBLEMS / "precision_problem.yaml").read_text()
+    assert "\nobjective: stiffness\n" in text
+    prob = tmp_path / "prec_front.yaml"
+    prob.write_text(text.replace("\nobjective: stiffness\n",
+                                 "\nobjective:\n  mode: pareto\n  pareto: [stiffness, positioning_error]\n"))
+    spec = tmp_path / "study.yaml"
+    spec.write_text(f"name: prec-front\nbase: {prob}\nsweep:\n  axis.stroke: [450 mm, 500 mm]\n")
+    out = tmp_path / "out"
+    rc = main(["study", str(spec), "--out", str(out), "--workers", "0", "--quiet"])
+    assert rc == 0 and (out / "plots" / "pareto_fronts.png").exists()
+    fronts = [json.loads(f.read_text())["pareto"] for f in sorted(out.rglob("*.json"))
+              if "pareto" in json.loads(f.read_text())]
+    assert fronts
+    for fr in fronts:
+        assert fr["keys"] == ["stiffness", "positioning_error"]
+        for p in fr["points"]:
+            k, err = p["objectives"]
+            assert k == p["min_stiffness"] and 0 < err <= 40.0  # um, within the problem's limit
