@@ -428,8 +428,9 @@ class Infeasibility:
     # checks the closest designs fail because a catalog row gives no value (search.relax.missing_values): what to
     # give or choose instead, one sentence per check (never a margin relaxed to 0)
     missing: list = field(default_factory=list)
-    # the explanation stopped at the time limit: the closest designs are those found by then, the unmeetable
-    # limits' best values those reached by then
+    # the explanation stopped before every block was scored (at the time limit, or after explain.MAX_OPENED
+    # combinations where a limit no combination meets makes every design miss): the closest designs are those found
+    # by then, the unmeetable limits' best values those reached by then (the least cost exact)
     cut: bool = False
 
     def to_dict(self) -> dict:
