@@ -41,7 +41,7 @@ import numpy as np
 from ..design.axis import Counterbalance, G
 from ..model.limits import ACCEL, RATIO, SPEED, WEIGHT, checks_set_by
 from .result import DesignChange
-from .widen import widened
+from .widen import first_design, widened
 
 # the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio sets
 # (model.limits.CHECK_TABLE's set_by), as the advice's miss names (margin_<check> without margin_)
@@ -181,20 +181,10 @@ def _balance_step(problem, misses, constraints) -> _Step | None:
 
 
 def _feasible(problem, space=None) -> bool:
-    """Whether the catalogs hold a design of ``problem`` (the default search, stopped at its first feasible
-    design); ``space``: its search space when the change left the parts as they were (a limit, not the axis)."""
-    from .bestfirst import bound_order_search
-    from .parts import build_space
-    from .task.constraints import build_constraints
-    from .task.objective import objective_spec
-
-    try:
-        space = build_space(problem) if space is None else space
-    except Exception:  # noqa: BLE001 - a change the inputs refuse (a duty cycle it breaks) is no advice
-        return False
-    spec = objective_spec(problem.objective.mode, problem)
-    ex, _ = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True)
-    return bool(np.isfinite(ex.objective).any())
+    """Whether the catalogs hold a design of ``problem`` (:func:`.widen.first_design`: the default search, stopped
+    at its first feasible design); ``space``: its search space when the change left the parts as they were (a
+    limit, not the axis)."""
+    return first_design(problem, space) is not None
 
 
 def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) -> list:

@@ -13,7 +13,7 @@ import numpy as np
 from .bounds import block_bounds
 from .preload import concat_exact, exact_solve
 from .result import SearchStats
-from .screen import screen_blocks
+from .screen import group_end, screen_blocks
 from .task.objective import ObjectiveSpec, objective_floor
 from .task.space import Space
 
@@ -100,14 +100,7 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
             continue
         # screen the next group of blocks: up to per_group distinct nuts, in bound order
         t1 = time.perf_counter()
-        end, seen = pos, set()
-        while end < len(bv) and bv[end] >= floor:
-            key = (bm[end], bn[end])
-            if key not in seen and len(seen) >= min(group, per_group):
-                break
-            seen.add(key)
-            end += 1
-        end = max(end, pos + 1)
+        end = group_end(bm, bn, pos, lambda i, f=floor: bv[i] >= f, min(group, per_group))
         grp = slice(pos, end)
         group = min(group * 2, per_group)
         screened_blocks += end - pos

@@ -25,7 +25,7 @@ import numpy as np
 from ..model.cost import cost
 from .bounds import block_bounds
 from .preload import exact_solve
-from .screen import screen_blocks
+from .screen import group_end, screen_blocks
 from .task.constraints import build_constraints
 from .task.objective import ObjectiveSpec
 
@@ -88,14 +88,7 @@ def least_cost(problem, space, max_blocks: int = MAX_BLOCKS) -> tuple[float, int
             continue
         if screened >= max_blocks:  # cut: the cheapest design found so far, if any, not proven least
             return (float(best), int(best_idx), False) if best_idx >= 0 else None
-        end, seen = pos, set()  # the next blocks, up to ``group`` distinct nuts
-        while end < len(lb) and lb[end] < best:
-            key = (bm[end], bn[end])
-            if key not in seen and len(seen) >= group:
-                break
-            seen.add(key)
-            end += 1
-        end = max(end, pos + 1)
+        end = group_end(bm, bn, pos, lambda i, c=best: lb[i] < c, group)  # the next blocks: ``group`` nuts
         grp = slice(pos, end)
         screened += end - pos
         pos, group = end, group * 2

@@ -88,6 +88,20 @@ def _mechanical(constraints):
 CACHE_BLOCK = 200_000  # (nut, bearing, guide) combinations per evaluation inside screen_nuts (cache-sized arrays)
 
 
+def group_end(bm, bn, pos: int, reach, nuts: int) -> int:
+    """The end of the next group of blocks to screen, from ``pos`` of the blocks in search order (mounting
+    ``bm``, nut ``bn``): the blocks ``i`` with ``reach(i)``, up to ``nuts`` distinct (mounting, nut) pairs, and at
+    least one block."""
+    end, seen = pos, set()
+    while end < len(bm) and reach(end):
+        key = (bm[end], bn[end])
+        if key not in seen and len(seen) >= nuts:
+            break
+        seen.add(key)
+        end += 1
+    return max(end, pos + 1)
+
+
 def screen_blocks(space: Space, bm, bn, bb, constraints, objective: ObjectiveSpec):
     """:func:`screen_nuts` over a group of (mounting ``bm``, nut ``bn``, bearing ``bb``) blocks, one mounting at a
     time, each mounting's nuts with the bearings of its blocks only.  Yields (survivors' combination numbers,

@@ -41,14 +41,14 @@ from dataclasses import replace
 
 import numpy as np
 
+from .. import model
 from ..design import MOUNTINGS
 from ..grades import grade_table
-from ..model.limits import CHECK_RECORDS, LIMITS
+from ..model.limits import LIMITS
 from ..physics.checks import BUCKLING_ETA1, CRITICAL_SPEED_LAMBDA1
 from .result import DesignChange
 
-# the checks of the drive's parts (model.limits: Check.drive)
-DRIVE_CHECKS = frozenset(name for name, c in CHECK_RECORDS.items() if c.drive)
+DRIVE_CHECKS = frozenset(model.DRIVE_CHECKS)  # the checks of the drive's parts (model.limits: Check.drive)
 DRIVE_SLOTS = ("motor", "coupling")  # require/exclude slots the drive group widens
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")
 # the filters each group widens to 'every value' (None)
@@ -160,17 +160,19 @@ def design_edits(problem, space, combo: int) -> list:
     return out
 
 
-def first_design(problem):
+def first_design(problem, space=None):
     """(space, combination) of the first feasible design the default search finds for ``problem`` (stopped
-    there), or None: none, or the problem's inputs refuse the widened filters."""
+    there), or None: none, or the problem's inputs refuse the change (widened filters with nothing left to choose
+    from, a duty cycle a lowered speed breaks).  ``space``: the problem's search space when the change left the
+    parts as they were (a limit, not the axis or the filters)."""
     from .bestfirst import bound_order_search
     from .parts import build_space
     from .task.constraints import build_constraints
     from .task.objective import objective_spec
 
     try:
-        space = build_space(problem)
-    except Exception:  # noqa: BLE001 - filters the inputs refuse (nothing left to choose from) give no advice
+        space = build_space(problem) if space is None else space
+    except Exception:  # noqa: BLE001 - a change the inputs refuse gives no advice
         return None
     spec = objective_spec(problem.objective.mode, problem)
     ex, _ = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True)
