@@ -89,6 +89,9 @@ def _main(argv) -> int:
             return 0
         args = parser.parse_args(argv)
         _one_output_on_stdout(args)
+        from .outputs import check_outputs
+
+        check_outputs(args)  # every output path before any work: never onto an input
         code = args.func(args)
     except InputError as exc:
         error_line(str(exc))
