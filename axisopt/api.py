@@ -61,17 +61,18 @@ def solve(problem: Problem | str | PathLike, method: str = "default", *, top: in
     return _solve(p, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
 
 
-def compare(*files, method: str = "default"):
+def compare(*files, method: str = "default", time_limit: float = 100.0):
     """Designs side by side -> :class:`axisopt.report.compare.Comparison`.  Each argument is a design or
-    problem YAML path (a problem is solved to its best design) or a :class:`Design`."""
+    problem YAML path (a problem is solved to its best design, within ``time_limit`` seconds) or a
+    :class:`Design`."""
     from .report.compare import Comparison
     from .study.compare import compare_designs
 
-    return Comparison(compare_designs(files, method=method))
+    return Comparison(compare_designs(files, method=method, time_limit=time_limit))
 
 
 def study(spec, out: str | PathLike | None = None, *, workers: int | None = 0, resume: bool = False,
-          overwrite: bool = False, scheduler=None):
+          overwrite: bool = False, scheduler=None, time_limit: float = 100.0):
     """Run a trade study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult` (its
     ``to_frame()`` is the results table, one row per case).
 
@@ -80,16 +81,18 @@ def study(spec, out: str | PathLike | None = None, *, workers: int | None = 0, r
     resume    : continue a run in ``out`` (its finished cases are kept)
     overwrite : solve every case again (the case results in ``out`` are deleted first); a re-run with
                 neither is an error that names both
+    time_limit: [s] of each case's solve (``axisopt study --time-limit``)
 
     ``axisopt.study`` is also the package :mod:`axisopt.study`; the package is callable with these
     arguments, so ``axisopt.study(spec)`` works before and after the package is imported.
     """
     from .study.result import run_spec
 
-    return run_spec(spec, out, workers=workers, resume=resume, overwrite=overwrite, scheduler=scheduler)
+    return run_spec(spec, out, workers=workers, resume=resume, overwrite=overwrite, scheduler=scheduler,
+                    time_limit=time_limit)
 
 
-def diagnose(data, design: Design | str | PathLike, *, effects=None, max_effects: int = 2,
+def diagnose(data, design: Design | str | PathLike, *, effects=None, max_effects: int = 3,
              gain: str | None = None):
     """Diagnose measured data of an axis -> :class:`axisopt.identify.Diagnosis` (time records:
     ``TimeDiagnosis``).

@@ -77,7 +77,7 @@ from .restrictions import (  # noqa: F401  (the slot names are the problem's voc
     Restrictions,
     read_restrictions,
 )
-from .yamlio import Key, Section, Spec, close_matches, read_yaml
+from .yamlio import Key, Section, Spec, close_matches, read_yaml, require_kind
 
 
 @dataclass(frozen=True)
@@ -160,9 +160,11 @@ OBJECTIVE_TABLE = (
          mode=True),
     Goal("kv", "min_kv", "", "achievable position-loop gain Kv", "minimum achievable position-loop gain Kv",
          mode=True),
-    Goal("cost", "max_cost", "cost", pareto=True, column=Column("cost EUR", 10, ",.0f", always=True)),
+    Goal("cost", "max_cost", "cost", "cost", "least cost", mode=True, performance=True, pareto=True,
+         column=Column("cost EUR", 10, ",.0f", always=True)),
     Goal("total_mass", "max_total_mass", "total_mass", pareto=True, column=Column("mass kg", 9, ".1f", always=True)),
-    Goal("moving_mass", "max_moving_mass", "moving_mass", pareto=True),
+    Goal("moving_mass", "max_moving_mass", "moving_mass", "moving mass", "least moving mass", mode=True,
+         performance=True, pareto=True),
     # the positioning budget's worst-case total (model.accuracy), minimised: it falls with the nut preload, so a
     # combination's front point stays its highest feasible preload; the search chooses the screw's grade
     Goal("positioning_error", "max_positioning_error", "positioning_error", pareto=True,
@@ -173,6 +175,8 @@ RESULT_GOALS = tuple(g for g in OBJECTIVE_TABLE if g.field)  # the goals whose v
 PARETO_ALIASES = MappingProxyType({"mass": "total_mass"})
 COMBINED_MODES = ("weighted", "lexicographic", "pareto")  # modes built from the goals
 PERFORMANCE = tuple(g.key for g in OBJECTIVE_TABLE if g.performance)
+# the goals a weighted sum adds (each maximised; a least cost or mass is a mode or a lexicographic stage)
+WEIGHTED = tuple(g.key for g in OBJECTIVE_TABLE if g.performance and g.sense == "max")
 OBJECTIVE_MODES = PERFORMANCE + COMBINED_MODES + tuple(g.key for g in OBJECTIVE_TABLE
                                                        if g.mode and not g.performance)
 PARETO_KEYS = tuple(g.key for g in OBJECTIVE_TABLE if g.pareto) + tuple(PARETO_ALIASES)
@@ -196,10 +200,12 @@ class Objective:
         if self.mode == "weighted":
             return " + ".join(f"{w:g}*{k}/{_fmt_si(k, s)}" for (k, w), (_, s) in zip(self.weights, self.scale))
         if self.mode == "lexicographic":
-            return " then ".join(f"max min {k}" for k in self.order) + f" (tolerance {self.tolerance:g})"
+            return " then ".join(f"max min {k}" if GOALS[k].sense == "max" else f"least {k}" for k in self.order) \
+                + f" (tolerance {self.tolerance:g})"
         if self.mode == "pareto":
             return "Pareto front of " + ", ".join(self.pareto)
-        return f"maximise minimum {GOALS[self.mode].what}"
+        g = GOALS[self.mode]
+        return f"maximise minimum {g.what}" if g.sense == "max" else f"minimise {g.what}"
 
 
 def _fmt_si(key, value):
@@ -282,7 +288,7 @@ LIMITS_SPEC = Spec("limits", "limits on the model's outputs (each with its unit)
     "margins": Key("section", spec=MARGINS_SPEC),
 })
 WEIGHTS_SPEC = Spec("weights", "weighted objective: weight per performance value", {
-    k: Key("number", f"weight of the {k}", minimum=0.0) for k in PERFORMANCE})
+    k: Key("number", f"weight of the {k}", minimum=0.0) for k in WEIGHTED})
 SCALE_SPEC = Spec("scale", "weighted objective: the scale of each weighted value (one per weight)", {
     "stiffness": Key("quantity", "stiffness scale", kind="stiffness", positive=True, example="100 N/um"),
     "frequency": Key("quantity", "frequency scale", kind="frequency", positive=True, example="100 Hz"),
@@ -291,9 +297,10 @@ OBJECTIVE_SPEC = Spec("objective", "what to maximise", {
     "mode": Key("choice", "objective mode", required=True, choices=OBJECTIVE_MODES),
     "weights": Key("section", "weighted: sum of weight * value / scale", spec=WEIGHTS_SPEC),
     "scale": Key("section", "weighted: the scale of each weighted value", spec=SCALE_SPEC),
-    "order": Key("names", "lexicographic: stiffness and frequency, first the primary", choices=PERFORMANCE,
-                 minimum=2, maximum=2),
-    "tolerance": Key("number", "lexicographic: keep designs within this fraction of the best primary (below 1)",
+    "order": Key("names", "lexicographic: two of the goals (stiffness, frequency, cost, moving_mass) in any order, "
+                 "first the primary", choices=PERFORMANCE, minimum=2, maximum=2),
+    "tolerance": Key("number", "lexicographic: keep designs within this fraction of the best primary (below 1; "
+                     "above it for a least cost or mass)",
                      minimum=0.0, default=0.0),
     "pareto": Key("names", "pareto: two or more objectives", choices=PARETO_KEYS, minimum=2),
 })
@@ -322,7 +329,7 @@ PROBLEM_SPEC = Spec("problem", "a sizing problem: the axis, the objective, limit
 def load_problem(path, catalog: Catalog | None = None) -> Problem:
     """Read a problem YAML; every error names the file and key (InputError)."""
     path = Path(path)
-    root = Section(read_yaml(path), str(path), spec=PROBLEM_SPEC)
+    root = Section(require_kind(read_yaml(path), str(path), "problem"), str(path), spec=PROBLEM_SPEC)
     cat = catalog if catalog is not None else catalog_for(root, path.parent)
     return read_problem(root, cat, name=path.stem)
 
@@ -334,7 +341,13 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
     asec = root.read("axis")
     axis, assumed = read_axis(asec)
     objective = _read_objective(root)
-    limits, margins = _read_limits(root.read("limits"))
+    lsec = root.read("limits")
+    limits, margins = _read_limits(lsec)
+    for key in ("max_moving_mass", "max_total_mass"):  # the table alone already weighs more
+        cap = dict(limits).get(key)
+        if lsec is not None and cap is not None and lsec.has(key) and cap < axis.moving_mass * (1 - 1e-9):
+            raise lsec.error(key, f"{cap:g} kg is below axis.moving_mass ({axis.moving_mass:g} kg, the table alone, "
+                             "before nut and blocks): no design can meet it")
     restr = read_restrictions(root.read("catalog"), catalog, axis)
     if restr.drive and axis.acceleration <= 0 and not axis.duty_cycle:  # as a design with a motor: no default
         raise asec.error("acceleration", "sizing a motor (the search chooses the drive) needs axis.acceleration "
@@ -369,8 +382,9 @@ def _read_objective(root: Section) -> Objective:
         wsec = sec.section("weights", required=True)  # required in this mode only
         weights = []
         for k in wsec.keys():
-            if k not in PERFORMANCE:
-                raise wsec.error(k, f"unknown objective '{k}'; use {', '.join(PERFORMANCE)}")
+            if k not in WEIGHTED:
+                raise wsec.error(k, f"unknown objective '{k}'; use {', '.join(WEIGHTED)} (a least cost or mass: "
+                                    "mode cost or moving_mass, or a lexicographic order)")
             w = wsec.read(k)
             weights.append((k, float(w)))
         wsec.done()
@@ -384,9 +398,9 @@ def _read_objective(root: Section) -> Objective:
         kw.update(weights=tuple(weights), scale=tuple(scale))
     elif mode == "lexicographic":
         order = sec.read("order")
-        if not order or len(order) != 2 or set(order) != set(PERFORMANCE):
-            raise sec.error("order", "lexicographic order must list stiffness and frequency, e.g. "
-                                     "[frequency, stiffness]")
+        if not order or len(order) != 2 or len(set(order)) != 2 or not set(order) <= set(PERFORMANCE):
+            raise sec.error("order", f"lexicographic order must list two different goals of "
+                                     f"{', '.join(PERFORMANCE)}, e.g. [frequency, stiffness] or [stiffness, cost]")
         tol = sec.read("tolerance")
         if tol >= 1:
             raise sec.error("tolerance", f"relative tolerance must be below 1, got {tol}")
@@ -411,10 +425,19 @@ def _read_limits(sec: Section | None):
     limits = dict(DEFAULT_LIMITS)
     if sec is None:
         return tuple(sorted(limits.items())), tuple(margins.items())
+    given = {}
     for key in LIMITS:
         v = sec.read(key)
         if v is not None:
-            limits[key] = v
+            limits[key] = given[key] = v
+    import warnings
+
+    from .design.plausible import LIMIT_RANGES, implausible
+    from .errors import ImplausibleInput
+
+    for key, message in implausible(given, LIMIT_RANGES):
+        warnings.warn(str(InputError(message, source=sec.source, where=sec.where(key))), ImplausibleInput,
+                      stacklevel=2)
     msec = sec.read("margins")
     if msec is not None:
         for k in msec.keys():

@@ -99,6 +99,8 @@ def unit_factor(unit: str, kind: str) -> float:
     """
     dim, si = KINDS[kind]
     text = _normalise(unit)
+    if kind.startswith("money") and text in _EURO_WORDS:
+        raise ValueError(f"unknown unit '{unit}'")
     if kind.startswith("money") and "EUR" not in text:  # no exchange rate is assumed
         raise ValueError(f"'{unit}' is not EUR, the catalogs' currency, and no exchange rate is assumed: convert "
                          "at your rate")
@@ -296,11 +298,45 @@ def parse_quantity(text, kind: str, *, source: str | None = None, key: str | Non
     if unit.strip() in PREFIX_ONLY:
         raise InputError(f"'{unit}' in '{text}' is a metric prefix without its unit; write the whole unit, "
                          f"e.g. '{m.group(1)} {_example_unit(kind)}'", source=source, where=key)
+    if kind == "acceleration" and unit.strip() in GRAVITY_WORDS:  # '0.4 g': standard gravity, not grams
+        return check_plausible(number * STANDARD_GRAVITY, kind, text, source=source, key=key)
     try:
         v = to_si(number, unit, kind)
     except ValueError as exc:
-        raise InputError(f"{exc} in '{text}'", source=source, where=key) from None
+        hint = unit_hint(m.group(1), unit, kind)
+        raise InputError(f"{exc} in '{text}'" + (f"; {hint}" if hint else ""), source=source, where=key) from None
     return check_plausible(v, kind, text, source=source, key=key)
+
+
+# '0.4 g' where an acceleration is asked: standard gravity (ISO 80000-3, 9.80665 m/s^2), never grams
+STANDARD_GRAVITY = 9.80665
+GRAVITY_WORDS = ("g", "G", "gn", "g0", "g_n", "g_0")
+_POWER_DIGIT = re.compile(r"([A-Za-z])([23])(?![0-9])")
+_SUPERSCRIPTS = {"\u00b2": "^2", "\u00b3": "^3"}
+_EURO_WORDS = ("\u20ac", "euro", "euros", "eur", "Euro", "Euros", "Eur")
+
+
+def unit_hint(number: str, unit: str, kind: str) -> str:
+    """What a person most likely meant by a unit text that could not be read (a thousands separator, a decimal
+    comma, a power written without '^', a currency symbol), or ''."""
+    u = unit.strip()
+    grouped = re.match(r"^([,.' ]\d{3})+(?=\s|$)", u) or re.match(r"^\d{3}(\s\d{3})*(?=\s|$)", u)
+    if grouped:
+        rest = u[grouped.end():].strip()
+        digits = number + re.sub(r"\D", "", grouped.group(0))
+        return f"write the number without digit groups: '{digits} {rest or _example_unit(kind)}'"
+    dec = re.match(r"^,(\d+)\s*(.*)$", u)
+    if dec:
+        return f"write the decimal point: '{number}.{dec.group(1)} {dec.group(2) or _example_unit(kind)}'"
+    if u in _EURO_WORDS or "\u20ac" in u:
+        return f"write the currency as EUR: '{number} EUR'"
+    fixed = u
+    for sup, rep in _SUPERSCRIPTS.items():
+        fixed = fixed.replace(sup, rep)
+    fixed = _POWER_DIGIT.sub(r"\1^\2", fixed)
+    if fixed != u:
+        return f"write a power with '^': '{number} {fixed}'"
+    return ""
 
 
 _EXAMPLES = {

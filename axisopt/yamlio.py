@@ -397,3 +397,37 @@ def plain(node: Node):
     if isinstance(v, list):
         return [plain(x) for x in v]
     return v
+
+
+# ------------------------------------------------------------------------------ which kind of file
+# The top-level keys that tell the YAML files apart, and the command that reads each: a file given to the
+# wrong command is named as what it is, with the command to use (not "unknown key 'parts'").
+KIND_COMMANDS = {"design": "axisopt evaluate {file}", "problem": "axisopt solve {file}",
+                 "study": "axisopt study {file}"}
+
+
+def file_kind(node: Node) -> str | None:
+    """'design', 'problem' or 'study' by the top-level keys of a YAML tree (None: none of them)."""
+    if not isinstance(node.value, dict):
+        return None
+    keys = set(node.value)
+    if keys & {"base", "sweep"}:
+        return "study"
+    if "parts" in keys:
+        return "design"
+    if keys & {"objective", "limits", "continuous", "search", "catalog"}:
+        return "problem"
+    return None
+
+
+def require_kind(node: Node, src: str, wanted: str) -> Node:
+    """``node`` unchanged when it can be a ``wanted`` file; else a one-line InputError naming what it is and the
+    command that reads it (a CSV, e.g. measured data, given where a YAML file is read, too)."""
+    if not isinstance(node.value, dict) and str(src).lower().endswith((".csv", ".txt", ".tsv")):
+        raise InputError(f"a CSV file, not a {wanted} YAML: measured data go to `axisopt diagnose {src} --design "
+                         "DESIGN.yaml`, catalog tables to --catalogs DIR", source=src)
+    kind = file_kind(node)
+    if kind is None or kind == wanted:
+        return node
+    return_cmd = KIND_COMMANDS[kind].format(file=src)
+    raise InputError(f"a {kind} file, not a {wanted}: use `{return_cmd}`", source=src)

@@ -22,16 +22,23 @@ def register(sub) -> None:
     c.add_argument("--json", metavar="FILE", help="write the comparison as JSON ('-' for stdout)")
     c.add_argument("--csv", metavar="FILE", help="write one row per design as CSV")
     c.add_argument("--plot", metavar="FILE.png", help="overlay stiffness and frequency over the stroke")
+    c.add_argument("--time-limit", type=float, default=100.0, metavar="S",
+                   help="time limit [s] of each problem's solve (default 100, as solve's)")
     add_html_report(c, "the comparison")
     c.set_defaults(func=cmd_compare)
 
 
 def cmd_compare(args) -> int:
+    import math
+
+    from ..errors import InputError
     from ..report.compare import compare_dict, compare_table, write_compare_csv
     from ..study.compare import load_compared
 
+    if not (math.isfinite(args.time_limit) and args.time_limit > 0):
+        raise InputError(f"--time-limit must be positive, got {args.time_limit}")
     check_html_report(args.report, args.plotly)
-    items = load_compared(args.files)
+    items = load_compared(args.files, time_limit=args.time_limit)
     text = compare_table(items)
     if not stdout_taken(args.json, args.csv):
         show(text)

@@ -138,8 +138,16 @@ def rows_table(rows, kind, screws=None) -> str:
     right = [False] + [f is not None for _, _, f, _ in cols]
     rows = _rows(rows)
     body = [[str(r["id"])] + [_cell(r, c, f, fmt) for _, c, f, fmt in cols] for r in rows]
+    if kind == "screws" and rows:  # the lead accuracy grades each screw is made in (catalogs/screw_grades.csv)
+        heads, right = heads + ["grades"], right + [False]
+        body = [b + [_grades(r)] for b, r in zip(body, rows)]
+    legend = []
+    if kind == "nuts" and any(_rotating(r) for r in rows):
+        body = [[b[0] + (" R" if _rotating(r) else "")] + b[1:] for b, r in zip(body, rows)]
+        legend = textwrap.wrap("R: a driven rotating-nut unit (the nut turns in its own bearings, driven by the "
+                               "motor; the screw stands, fixed at both ends; docs/catalogs.md)", 100)
     if kind != "nuts" or not rows:
-        return "\n".join(_grid(heads, body, right))
+        return "\n".join(_grid(heads, body, right) + legend)
     screws = {r["id"]: r for r in _rows(screws)} if screws is not None else {}
     grid = _grid(heads, body, right)
     lines = grid[:2]
@@ -151,7 +159,25 @@ def rows_table(rows, kind, screws=None) -> str:
         size = f" ({s['nominal_diameter'] * 1e3:.0f} x {s['lead'] * 1e3:g} mm)" if s is not None else ""
         lines.append(f"screw {screw_id}{size}")
         lines.extend(g)
-    return "\n".join(lines)
+    return "\n".join(lines + legend)
+
+
+def _rotating(row) -> bool:
+    from ..design import rotating_nut
+
+    return rotating_nut(row)
+
+
+def _grades(row) -> str:
+    """The grades a screw row is made in: 'C0-C5' when they run on in the table's order, else 'C1,C3,C5'."""
+    from ..grades import grade_table
+
+    t = grade_table()
+    have = t.orderable(str(row.get("vendor", "")), str(row.get("series", "")))
+    pos = [t.names.index(g) for g in have if g in t.names]
+    if len(have) > 2 and pos == list(range(pos[0], pos[0] + len(pos))):
+        return f"{have[0]}-{have[-1]}"
+    return ",".join(have)
 
 
 def rows_dicts(rows, kind) -> list[dict]:
@@ -169,6 +195,10 @@ def rows_dicts(rows, kind) -> list[dict]:
             unit, f = _vendor_unit(k)
             key = f"{c} [{unit}]" if unit else c
             rec[key] = None if v != v else (int(v) if k == "int" else float(f"{v * f:.10g}"))
+        if kind == "screws":  # the lead accuracy grades the screw is made in
+            from ..grades import grade_table
+
+            rec["grades"] = ",".join(grade_table().orderable(str(r.get("vendor", "")), str(r.get("series", ""))))
         rec.update({"status": r["status"], "source": r["source"]})
         out.append(rec)
     return out

@@ -138,9 +138,24 @@ def save_designs(res, target: str, top: int, problem_path: str, problem=None) ->
             f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}\n"
         ordered = order_preload(c.design, problem)
         design = replace(c.design, nut_preload=ordered.value) if ordered.moved else c.design
+        if ordered.moved and res.pareto is None and problem is not None:  # what the file evaluates to
+            head = (f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}, "
+                    f"{res.objective_label} = {_file_objective(design, problem):.6g} {res.objective_unit} with "
+                    f"the preload as written ({c.objective:.6g} at the search's {c.nut_preload:.5g} N)\n")
         write_text_atomic(str(path), head + design_to_yaml(design, preload_note=ordered.note()), what="design YAML")
         out.append(str(path))
     return out
+
+
+def _file_objective(design, problem) -> float:
+    """The objective of ``design`` as written (the nut preload rounded for ordering), evaluated by the model:
+    the value ``axisopt evaluate`` of the saved file shows."""
+    from ..model import evaluate
+    from ..search.task.objective import objective_spec
+
+    ob = problem.objective
+    spec = objective_spec(ob.order[1] if ob.mode == "lexicographic" else ob.mode, problem)
+    return spec.sign * float(spec.value(evaluate(design).values))
 
 
 def _single_file(target: str) -> bool:

@@ -19,6 +19,10 @@ def register(sub) -> None:
                    help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])")
     s.add_argument("--resume", action="store_true",
                    help="continue an interrupted study in --out, solving only the missing cases")
+    s.add_argument("--overwrite", action="store_true",
+                   help="solve every case again: the case results already in --out are deleted first")
+    s.add_argument("--time-limit", type=float, default=100.0, metavar="S",
+                   help="time limit [s] of each case's solve (default 100, as solve's)")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
     add_html_report(s, "the study (figures, cases table, summary)")
     s.set_defaults(func=cmd_study)
@@ -81,12 +85,19 @@ def _hms(s: float) -> str:
 
 
 def cmd_study(args) -> int:
+    import math
+    from dataclasses import replace
     from pathlib import Path
 
     from ..study import load_study, run_study
+    from ..study.result import clear_cases
 
+    if not (math.isfinite(args.time_limit) and args.time_limit > 0):
+        raise InputError(f"--time-limit must be positive, got {args.time_limit}")
+    if args.resume and args.overwrite:
+        raise InputError("--resume continues a run, --overwrite starts it again: give one of them")
     check_html_report(args.report, args.plotly)
-    study = load_study(args.study)
+    study = replace(load_study(args.study), time_limit=args.time_limit)
     if args.workers is not None and args.workers < 0:
         raise InputError(f"--workers must be 0 or more, got {args.workers}")
     if args.scheduler and args.workers is not None:
@@ -94,6 +105,8 @@ def cmd_study(args) -> int:
     out = args.out or f"{Path(args.study).stem}-results"
     if args.scheduler is not None and not args.scheduler.strip():
         raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
+    if args.overwrite and Path(out).is_dir():
+        clear_cases(out)
     bar = _Bar(not args.quiet and _is_terminal(sys.stderr))
     try:
         summary = run_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,

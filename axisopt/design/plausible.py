@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..display import fmt
+
 
 @dataclass(frozen=True)
 class Range:
@@ -21,23 +23,44 @@ class Range:
     factor: float  # SI -> display
 
 
+# forces: a feed axis's cutting force is tens of N (a laser head) to about 100 kN (a heavy boring mill); lives: a
+# machine is specified for about 5 000-50 000 h (THK A-704's examples; 20 000 h is the common one).  A force in
+# MN, a life in s or min, an acceleration in mm/s^2 read as m/s^2 fall outside.
 RANGES = (
     Range("acceleration", 0.1, 50.0, "m/s^2", 1.0),
     Range("max_speed", 0.5 / 60.0, 200.0 / 60.0, "m/min", 60.0),
+    Range("mean_speed", 0.05 / 60.0, 200.0 / 60.0, "m/min", 60.0),
     Range("moving_mass", 0.5, 100e3, "kg", 1.0),
     Range("stroke", 5e-3, 30.0, "mm", 1e3),
+    Range("axial_load", 1.0, 500e3, "N", 1.0),
+    Range("mean_axial_load", 1.0, 500e3, "N", 1.0),
+    Range("normal_load", 1.0, 500e3, "N", 1.0),
+    Range("cross_load", 1.0, 500e3, "N", 1.0),
+    Range("required_life", 100 * 3600.0, 300e3 * 3600.0, "h", 1 / 3600.0),
+)
+# the problem's limits with a typical unit slip (the same ranges where the quantity is the same)
+LIMIT_RANGES = (
+    Range("min_life", 100 * 3600.0, 300e3 * 3600.0, "h", 1 / 3600.0),
+    Range("max_moving_mass", 0.5, 100e3, "kg", 1.0),
+    Range("max_total_mass", 0.5, 200e3, "kg", 1.0),
+    Range("min_stiffness", 0.5e6, 50e3 * 1e6, "N/um", 1e-6),
+    Range("min_tool_stiffness", 0.5e6, 50e3 * 1e6, "N/um", 1e-6),
+    Range("min_frequency", 1.0, 5e3, "Hz", 1.0),
+    Range("max_cost", 50.0, 5e6, "EUR", 1.0),
 )
 
 
-def implausible(values: dict) -> list:
+def implausible(values: dict, ranges=RANGES) -> list:
     """(key, message) for each given value of ``values`` ({axis key: SI value}) outside :data:`RANGES` (0 and
-    absent values are left to the readers: 0 means 'none' where a key allows it)."""
+    absent values are left to the readers: 0 means 'none' where a key allows it); ``ranges``: another table
+    (:data:`LIMIT_RANGES`)."""
     out = []
-    for r in RANGES:
+    for r in ranges:
         v = values.get(r.key)
         if v is None or v == 0 or r.low <= v <= r.high:
             continue
         side = "below" if v < r.low else "above"
-        out.append((r.key, f"{v * r.factor:.4g} {r.unit} is far {side} machine-tool practice "
-                           f"({r.low * r.factor:g}-{r.high * r.factor:g} {r.unit}): check the value and its unit"))
+        out.append((r.key, f"{fmt(v * r.factor, r.unit)} is far {side} machine-tool practice "
+                           f"({fmt(r.low * r.factor)} to {fmt(r.high * r.factor, r.unit)}): check the value and its "
+                           f"unit"))
     return out

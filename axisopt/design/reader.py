@@ -14,7 +14,7 @@ from ..errors import ImplausibleInput, InputError
 from ..grades import grade_table
 from ..parttable import Row
 from ..physics import motion
-from ..yamlio import Section, close_matches, read_yaml
+from ..yamlio import Section, close_matches, file_kind, read_yaml, require_kind
 from .axis import BRAKE_MODES, Axis, Counterbalance, Design, TwinDrive
 from .keys import (
     AXIS_KINDS,
@@ -63,6 +63,7 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     if v is not None:
         kw["load_factor"] = float(v)
     _check_carriage(sec, kw)
+    _check_pairs(sec, kw)
     if sec.has("counterbalance"):
         cb = read_counterbalance(sec, kw)
         if cb is not None:
@@ -155,6 +156,21 @@ def _check_carriage(sec: Section, kw: dict) -> None:
         key = "guide_blocks" if sec.has("guide_blocks") else "rails"
         raise sec.error(key, f"{blocks} blocks on {rails} rail(s): give every rail the same number of blocks, "
                         "at least two")
+
+
+def _check_pairs(sec: Section, kw: dict) -> None:
+    """Values that bound one another: a mean speed at most the top speed, a mean axial load at most the
+    largest (the axial load, or a duty cycle's largest force)."""
+    top, mean = kw.get("max_speed"), kw.get("mean_speed")
+    if top is not None and mean is not None and mean > top * (1 + 1e-9):
+        raise sec.error("mean_speed", f"{mean * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min): "
+                        "the mean speed over the machine's hours cannot exceed the rapid speed")
+    load, mean = kw.get("axial_load"), kw.get("mean_axial_load")
+    if load is not None and mean is not None:
+        largest = max([load] + [abs(s.force) for s in kw.get("duty_cycle", ()) if s.force is not None])
+        if mean > largest * (1 + 1e-9):
+            raise sec.error("mean_axial_load", f"{mean:g} N is more than the largest axial load ({largest:g} N, "
+                            "axis.axial_load or the duty cycle's largest force): a mean cannot exceed it")
 
 
 def read_duty_cycle(sec: Section, kw: dict) -> tuple:
@@ -305,7 +321,10 @@ PROBLEM_KEYS = ("objective", "limits", "continuous")  # top-level keys of a prob
 def load_design(path) -> Design:
     """Read a design YAML file into a :class:`Design`; every error names the file and key."""
     path = Path(path)
-    root = Section(read_yaml(path), str(path), spec=DESIGN_SPEC)
+    node = read_yaml(path)
+    if file_kind(node) == "study" or not isinstance(node.value, dict):
+        require_kind(node, str(path), "design")
+    root = Section(node, str(path), spec=DESIGN_SPEC)
     problem_key = next((k for k in PROBLEM_KEYS if root.has(k)), None)
     if problem_key is not None and not root.has("parts"):  # a problem file given where a design is read
         raise InputError(f"a problem file, not a design (it has '{problem_key}', no 'parts'): size it with "

@@ -251,7 +251,11 @@ def _fit_effects(ctx, effects, base, theta_prev, prev_names):
     return prob, best
 
 
-def diagnose(datasets, plant, *, candidates=None, max_effects: int = 3) -> Diagnosis:
+# effects accepted at most by default: one default for the command line (--max-effects), Python and both pipelines
+MAX_EFFECTS = 3
+
+
+def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS) -> Diagnosis:
     """Diagnose measured ``datasets`` (list of :class:`~.data.Dataset`) against ``plant``."""
     for ds in datasets:
         _check_positions(ds, plant)

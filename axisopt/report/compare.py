@@ -14,11 +14,11 @@ import numpy as np
 
 from ..display import fmt, html_table, one_line
 from ..model import CHECKS, Evaluation
+from ..model.limits import CHECK_RECORDS
 from ..units import N_PER_UM
 from .evaluation import (
     CHECK_SHORT,
     CHECK_UNITS,
-    RPM,
     allowed_list,
     drive_dict,
     evaluation_dict,
@@ -148,13 +148,20 @@ def compare_table(items) -> str:
         def motor(fn):
             return each(lambda e: fn(e, e.design.motor) if e.design.motor is not None else "no motor")
 
-        row("  peak torque [N.m]", motor(lambda e, m: f"{e['peak_torque']:.2f} / {m['peak_torque']:.3g}"))
-        row("  RMS or mean thrust torque [N.m]",
-            motor(lambda e, m: f"{max(e['rms_torque'], e['mean_thrust_torque']):.2f} / {m['rated_torque']:.3g}"))
-        row("  motor speed [rpm]",
-            motor(lambda e, m: f"{e['motor_speed'] * RPM:,.0f} / {m['max_speed'] * RPM:,.0f}"))
-        row("  inertia ratio load/rotor",
-            motor(lambda e, m: f"{e['inertia_ratio']:.2f} / {e.design.axis.max_inertia_ratio:g}"))
+        def pair(name, digits=".2f"):  # the check's own needed / available values, in its vendor unit
+            def cell(e, m):
+                rec = CHECK_RECORDS[name]
+                need = float(e.values[f"needed_{name}"]) * rec.factor
+                have = float(e.values[f"available_{name}"]) * rec.factor
+                return f"{need:{digits}} / {have:{'.3g' if digits != ',.0f' else digits}}"
+            return motor(cell)
+
+        # what the checks compare: the cycle's peak scaled to the motor's zone at its speed, the RMS (or mean
+        # thrust) torque against the rule's allowed share of the rated torque
+        row("  peak torque (zone-scaled) [N.m]", pair("motor_peak_torque"))
+        row("  RMS torque / allowed [N.m]", pair("motor_rated_torque"))
+        row("  motor speed [rpm]", pair("motor_speed", ",.0f"))
+        row("  inertia ratio load/rotor", pair("inertia_ratio"))
         if any(e.design.axis.orientation == "vertical" for e in drives):
             row("  holding torque x safety [N.m]", motor(
                 lambda e, m: "-" if e.design.axis.orientation != "vertical" else
@@ -174,7 +181,9 @@ def compare_table(items) -> str:
             if t is None or c not in t:
                 return "-"
             r = t[c]
-            m = "n/a" if r["margin"] is None else f"{r['margin']:.2f}"
+            if r["margin"] is None:  # the check does not apply to this design: no values compared
+                return "n/a  "
+            m = f"{r['margin']:.2f}"
             return f"{m} ({fmt_value(r['available'])}/{fmt_value(r['needed'])})" + ("" if "allowed" not in r else
                                                                                   "*") + ("  " if r["pass"] else " !")
         row(f"  {CHECK_SHORT[c]}" + (f" [{unit}]" if unit else ""), [cell(t) for t in tables])
@@ -188,12 +197,29 @@ def compare_table(items) -> str:
         rows.append("* against the problem's least margin (limits.margins)")
         for n in notes:
             rows.extend(textwrap.wrap(n, TEXT_WIDTH, initial_indent="  ", subsequent_indent="    "))
+    # the columns as wide as their widest cell (a check's 'margin (available/needed)' included), up to 32: two
+    # designs side by side at least; a wider cell is cut with a mark and given in full under the table
+    longest = max([len(str(c).rstrip()) for r in rows if not isinstance(r, str) for c in r[1]] + [0])
+    width = max(width, min(32, longest + 3))
     per = max(1, (TEXT_WIDTH - w0) // width)  # designs side by side
+    cut: list = []
+
+    def fit(text) -> str:  # a cell wider than its column: cut with a '~' mark, given in full under the table
+        text = str(text)
+        if len(text.rstrip()) <= width - 1:
+            return text if len(text) <= width - 1 else text.rstrip()
+        if text not in cut:
+            cut.append(text)
+        return text[:width - 2] + "~"
+
     blocks = []
     for j in range(0, len(items), per):
         lines = [r if isinstance(r, str) else
-                 f"{r[0]:<{w0}}" + "".join(f"{str(c)[:width - 1]:>{width}}" for c in r[1][j:j + per]) for r in rows]
+                 f"{r[0]:<{w0}}" + "".join(f"{fit(c):>{width}}" for c in r[1][j:j + per]) for r in rows]
         blocks.append("\n".join(ln.rstrip() for ln in lines))
+    if cut:
+        blocks.append("\n".join(textwrap.wrap("~ cut to fit the column; in full: " + ", ".join(cut), TEXT_WIDTH,
+                                               subsequent_indent="    ")))
     solved = [c for c in items if c.solve is not None]
     if solved:
         tail = ["solved problems"]

@@ -9,6 +9,7 @@ import textwrap
 import numpy as np
 
 from ..design import PRETENSION_RISE, rotating_nut
+from ..display import fmt
 from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.limits import CHECK_TABLE
@@ -72,6 +73,10 @@ def allowed_note(rows) -> str:
     return f"* against the problem's least margin (limits.margins): {judged}" if judged else ""
 
 
+# checks whose needed value means nothing when the check does not apply (a rotating nut's screw stands still)
+NOT_LOADED = ("critical_speed", "dn_limit", "bearing_speed", "coupling_speed")
+
+
 def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
     """The checks block of ``evaluate``: available, needed and margin with units (fits 100 columns); with a
     problem's ``margins`` (check -> least margin), pass or FAIL against them (:func:`judged_rows`)."""
@@ -87,8 +92,12 @@ def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
             label = r["label"]
         need = fmt_value(r["needed"]) + unit if r["needed"] else "none"
         margin = "n/a" if r["margin"] is None else f"{r['margin']:.2f}"
-        lines.append(f"  {label:<48}{have:>15}{need:>15}{margin:>8}  {'pass' if r['pass'] else 'FAIL'}"
-                     + ("*" if "allowed" in r else ""))
+        verdict = "pass" if r["pass"] else "FAIL"
+        if r["margin"] is None:  # the check does not apply (a standing screw's critical speed, a single nut's
+            # preload): no values compared, no verdict
+            have, verdict = "n/a", "does not apply"
+            need = "-" if r["check"] in NOT_LOADED else need
+        lines.append(f"  {label:<48}{have:>15}{need:>15}{margin:>8}  {verdict}" + ("*" if "allowed" in r else ""))
     note = allowed_note(rows)
     if note:
         lines.extend(textwrap.wrap(note, WIDTH, initial_indent="  ", subsequent_indent="    "))
@@ -308,9 +317,11 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
     lines.append(f"damping of the axial mode {float(np.asarray(v['damping_ratio'])[i_min]) * 100:.1f} %  (guides "
                  f"{z['zeta_guides']:.1f}, nut {z['zeta_nut']:.2f}, bearings {z['zeta_bearings']:.2f}, structure "
                  f"{z['zeta_structure']:.1f}; seed T. 5-7)")
-    lines.append(f"drive-train modes (motor free) {float(np.asarray(v['f_axial_torsional'])[i_min]):.0f} and "
-                 f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  nut backlash "
-                 f"{v['backlash'] * 1e6:.0f} um")
+    lines.extend(textwrap.wrap(
+        f"drive-train modes (motor free) {float(np.asarray(v['f_axial_torsional'])[i_min]):.0f} and "
+        f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  lost motion {v['backlash'] * 1e6:.0f} um "
+        + ("(nut play and the reduction's backlash)" if ev.design.reduction is not None else "(nut play)"),
+        WIDTH, subsequent_indent="  "))
     lines.append("")
     lines.extend(drive_lines(ev))
     lines.extend(servo_lines(servo_response(ev)))
@@ -379,7 +390,7 @@ def drive_lines(ev: Evaluation) -> list:
     d, v, a = ev.design, ev.values, ev.design.axis
     if d.motor is None:
         return ["drive: no motor given (parts.motor); rotor inertia "
-                f"{a.motor_inertia:.3g} kg.m^2 assumed for the drive-train modes", ""]
+                f"{fmt(a.motor_inertia, 'kg.m^2')} assumed for the drive-train modes", ""]
     m = d.motor
     r = d.reduction
     ratio = a.reduction_ratio if r is None else float(r["ratio"])
@@ -387,41 +398,48 @@ def drive_lines(ev: Evaluation) -> list:
         red = (f"reduction {r['id']} ({r['vendor']} {r['kind']}; {ratio:g}:1, efficiency {float(r['efficiency']):g}, "
                f"{float(r['inertia']) * 1e4:.3g} kg.cm^2 at the input, {float(r['torsional_stiffness']):,.0f} "
                f"N.m/rad, backlash {float(r['backlash']) * 10800 / math.pi:g} arcmin"
-               + (f", {float(r['mass']):.3g} kg" if math.isfinite(float(r["mass"])) else "") + ")")
+               + (f", {fmt(float(r['mass']), 'kg')}" if math.isfinite(float(r["mass"])) else "") + ")")
     else:
         red = "direct" if ratio == 1 else f"reduction {ratio:g}:1, efficiency {a.reduction_efficiency:g}"
     cpl = f"coupling {d.coupling['id']}" if d.coupling is not None else "coupling from the axis values"
     cycle = (f"{len(a.duty_cycle)}-entry duty cycle" if a.duty_cycle
              else "rapid move over the stroke and back, no dwell (default)")
-    lines = [f"drive: motor {m['id']} ({m['vendor']}; rated {m['rated_torque']:.3g} N.m, peak "
-             f"{m['peak_torque']:.3g} N.m, max {m['max_speed'] * RPM:.0f} rpm)",
+    lines = [*textwrap.wrap(f"drive: motor {m['id']} ({m['vendor']}; rated {fmt(m['rated_torque'], 'N.m')}, peak "
+                            f"{fmt(m['peak_torque'], 'N.m')}, max {m['max_speed'] * RPM:,.0f} rpm)", WIDTH,
+                            subsequent_indent="    "),
              *textwrap.wrap(f"{cpl}, {red}", WIDTH, initial_indent="  ", subsequent_indent="    "),
-             f"  {cycle}: {v['duty_time']:.2f} s;  friction {v['friction_torque']:.3f} N.m"
-             + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else "")]
-    zone = "" if abs(v["needed_motor_peak_torque"] - v["peak_torque"]) <= 1e-9 * v["peak_torque"] else \
-        f" ({v['needed_motor_peak_torque']:.3f} scaled to the flat peak: the zone falls at speed)"
-    rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m{zone}",
-             f"{m['peak_torque']:.3g} N.m (motor peak, zone by speed)"),
+             *textwrap.wrap(f"{cycle}: {v['duty_time']:.2f} s;  friction {v['friction_torque']:.3f} N.m"
+                            + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else ""),
+                            WIDTH, initial_indent="  ", subsequent_indent="    ")]
+    scaled = abs(v["needed_motor_peak_torque"] - v["peak_torque"]) > 1e-9 * v["peak_torque"]
+    # the needed column holds what the check compares: the cycle's peak scaled to the flat peak where the motor's
+    # zone falls at speed (the cycle's own peak on the line below)
+    rows = [("peak torque (cycle, thrust)", f"{v['needed_motor_peak_torque']:.3f} N.m" + (" *" if scaled else ""),
+             f"{fmt(m['peak_torque'], 'N.m')} (motor peak, zone by speed)"),
             ("RMS torque, mean thrust", f"{v['rms_torque']:.3f}, {v['mean_thrust_torque']:.3f} N.m",
-             f"{a.rms_torque_ratio:g} x {m['rated_torque']:.3g} N.m (rated)"),
-            ("motor speed", f"{v['motor_speed'] * RPM:.0f} rpm", f"{m['max_speed'] * RPM:.0f} rpm (max)"),
-            ("inertia ratio load/rotor", f"{v['inertia_ratio']:.2f} ({v['load_inertia'] * 1e4:.3g} kg.cm^2)",
+             f"{a.rms_torque_ratio:g} x {fmt(m['rated_torque'], 'N.m')} (rated)"),
+            ("motor speed", f"{v['motor_speed'] * RPM:,.0f} rpm", f"{m['max_speed'] * RPM:,.0f} rpm (max)"),
+            ("inertia ratio load/rotor", f"{v['inertia_ratio']:.2f} ({fmt(v['load_inertia'] * 1e4, 'kg.cm^2')})",
              f"{a.max_inertia_ratio:g} (axis.max_inertia_ratio)")]
     if a.orientation == "vertical":
         brake = float(m["brake_torque"]) if math.isfinite(float(m["brake_torque"])) else 0.0
         rows.append(("holding torque at a stop", f"{v['holding_torque']:.3f} N.m",
-                     f"{brake:.3g} N.m brake / {a.brake_safety:g}" if brake else "no brake listed"))
+                     f"{fmt(brake, 'N.m')} brake / {a.brake_safety:g}" if brake else "no brake listed"))
     if d.coupling is not None:
-        rows.append(("coupling torque", f"{m['peak_torque'] * ratio:.3g} N.m (motor peak)",
-                     f"{d.coupling['rated_torque']:.3g} N.m (rated)"))
+        rows.append(("coupling torque", f"{fmt(m['peak_torque'] * ratio, 'N.m')} (motor peak)",
+                     f"{fmt(d.coupling['rated_torque'], 'N.m')} (rated)"))
     if r is not None:
-        rows.append(("output torque peak (cycle)", f"{v['output_peak_torque']:.3g} N.m",
-                     f"{float(r['accel_torque']):.3g} N.m (T2B)"))
-        rows.append(("output torque RMS, thrust", f"{v['output_rms_torque']:.3g} N.m",
-                     f"{float(r['rated_torque']):.3g} N.m (T2N)"))
+        rows.append(("output torque peak (cycle)", fmt(v["output_peak_torque"], "N.m"),
+                     f"{fmt(float(r['accel_torque']), 'N.m')} (T2B)"))
+        rows.append(("output torque RMS, thrust", fmt(v["output_rms_torque"], "N.m"),
+                     f"{fmt(float(r['rated_torque']), 'N.m')} (T2N)"))
     lines.append(f"  {'':<28}{'needed':>26}   available")
     for name, need, have in rows:
-        lines.append(f"  {name:<28}{need:>26}   {have}")
+        lines.extend(textwrap.wrap(f"  {name:<28}{need:>26}   {have}", WIDTH, subsequent_indent=" " * 59))
+    if scaled:
+        lines.extend(textwrap.wrap(f"    * the cycle's peak {v['peak_torque']:.3f} N.m scaled to the motor's flat "
+                                   "peak (its zone falls at the speed of that peak): what the check compares",
+                                   WIDTH, subsequent_indent="      "))
     lines.extend(textwrap.wrap(
         f"regeneration {v['regen_energy']:,.0f} J per cycle back from the motor, {v['regen_power']:,.0f} W mean "
         "(braking" + (", lowering" if a.orientation == "vertical" else "") + "; before winding and drive losses): "

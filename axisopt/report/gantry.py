@@ -10,6 +10,8 @@ carriage at the other end swaps them: each side is in turn the governing one.
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 
 from ..model import Evaluation, evaluate
@@ -59,6 +61,9 @@ def twin_dict(ev: Evaluation) -> dict:
         "sides": side_rows(ev)}}
 
 
+WIDTH = 100  # terminal columns the text fits
+
+
 def twin_lines(ev: Evaluation) -> list:
     """The text lines of :func:`twin_dict` (none for one drive)."""
     d = twin_dict(ev).get("twin_drive")
@@ -79,9 +84,19 @@ def twin_lines(ev: Evaluation) -> list:
         L.append(f"  each side with the cross carriage at the end of its stroke (governing side {share * 100:.1f} %,"
                  f" far side {(1 - share) * 100:.1f} % of the process force; the limits are checked on the "
                  "governing side, and the sides swap when the carriage crosses):")
-        w = max(len(r["label"]) for r in rows)
+        w = min(WIDTH - 30, max(len(r["label"]) for r in rows))  # a longer label is wrapped above its numbers
         L.append(f"    {'margin (available / needed)':<{w}}  {'governing':>9}  {'far':>9}")
         for r in rows:
-            L.append(f"    {r['label']:<{w}}  {r['margin_governing']:>9.3g}  {r['margin_far']:>9.3g}"
+            label = textwrap.wrap(r["label"], w) or [""]
+            L.extend(f"    {x}" for x in label[:-1])
+            L.append(f"    {label[-1]:<{w}}  {r['margin_governing']:>9.3g}  {r['margin_far']:>9.3g}"
                      + ("" if r["pass"] else "  FAIL"))
-    return L
+    # the sentences wrapped at the text width (the table rows above fit it)
+    out = []
+    for line in L:
+        if len(line) <= WIDTH:
+            out.append(line)
+            continue
+        lead = len(line) - len(line.lstrip())
+        out.extend(textwrap.wrap(line, WIDTH, initial_indent=" " * lead, subsequent_indent=" " * (lead + 2)))
+    return out

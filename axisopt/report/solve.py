@@ -39,6 +39,22 @@ def load_components(axis, assumed) -> dict | None:
             "text": text}
 
 
+def cheaper_lines(res) -> list:
+    """A stiffness or frequency optimum's cheaper neighbour (``res.cheaper``: a design within the problem's
+    tolerance that costs markedly less), wrapped at 100 columns; [] without one."""
+    ch = getattr(res, "cheaper", None)
+    if not ch:
+        return []
+    saved = ch["best_cost"] - ch["cost"]
+    parts = "  ".join(f"{k} {v}" for k, v in ch["parts"].items() if v)
+    text = (f"cheaper: {ch['objective']:,.3f} {ch['unit']} (within {100 * ch['tolerance']:g} % of the best) costs "
+            f"{ch['cost']:,.0f} EUR, {saved:,.0f} EUR ({100 * saved / ch['best_cost']:.0f} %) less than the "
+            f"optimum's {ch['best_cost']:,.0f} EUR: {ch['mounting']}  {parts}; to choose it: objective {{mode: "
+            f"lexicographic, order: [{'stiffness' if ch['unit'] == 'N/um' else 'frequency'}, cost], tolerance: "
+            f"{ch['tolerance']:g}}}")
+    return textwrap.wrap(text, 100, subsequent_indent="  ")
+
+
 def format_result(res, top: int | None = None, problem=None) -> str:
     """The text ``axisopt solve`` prints: status, the best design's evaluation (or the Pareto front, or why
     the problem is infeasible), the limits at the optimum, the runners-up and the certificate.  With the
@@ -57,21 +73,24 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     elif res.arrangements:  # search.counterbalance / search.twin_drive options
         L.append(f"arrangement: {res.arrangement} ({'best' if res.best is not None else 'closest'} of "
                  f"{res.arrangements} arrangements)")
-    for what in res.left_out:  # a part of the design the search left out, each on its own line
-        L.append(f"  left out: {what}")
+    notes = [f"  left out: {what}" for what in res.left_out]  # a part the search left out, each on its own line
     if res.message:
-        L.append(f"  note: {res.message}")
+        notes.append(f"  note: {res.message}")
     comp = None if problem is None else load_components(problem.axis, problem.assumed)
     if comp is not None:
-        L.extend(textwrap.wrap(f"note: {comp['text']}", 100, initial_indent="  ", subsequent_indent="    "))
-    if res.infeasibility is not None:
+        notes.extend(textwrap.wrap(f"note: {comp['text']}", 100, initial_indent="  ", subsequent_indent="    "))
+    if res.infeasibility is not None:  # the misses that decide and what to change first, the notes after
+        L.extend(textwrap.wrap(f"misses: {res.infeasibility.deciding()}", 100, initial_indent="  ",
+                               subsequent_indent="      "))
         L.extend(relax_lines(res.infeasibility))
+    L.extend(notes)
     L.append("")
     if res.pareto is not None:
         L.append(format_pareto(res.pareto, top))
     elif res.best is not None:
         b = res.best
         L.append(f"best: {b.objective:,.3f} {res.objective_unit}")
+        L.extend(cheaper_lines(res))
         L.append(evaluation_table(evaluate(b.design), None if problem is None else problem.margin_map))
         if res.binding:
             L.append("")

@@ -25,6 +25,10 @@ if TYPE_CHECKING:
     from .task.objective import ObjectiveSpec
 
 RELAX = 0.10  # sensitivities: relax each limit by 10 %
+# a stiffness or frequency optimum is compared with the cheapest design within the problem's tolerance of it
+# (objective.tolerance, or this when the problem gives none) and said when that one costs at least MARKEDLY less
+CHEAPER_TOLERANCE = 0.01
+MARKEDLY = 0.05
 
 
 def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task:
@@ -111,11 +115,31 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     What the search left out of the design (the drive, and why) is on the answer's ``left_out``.
     """
     res = _solve(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
+    _shown_sign(problem, res)
     why = problem.restrictions.drive_left_out
     if why and not res.left_out:
         res.left_out = (f"the drive (motor, coupling, reduction) is not sized: {why}; the axis's motor_inertia and "
                         "coupling values stand in and no motor check is made",)
     return res
+
+
+def _shown_sign(problem: Problem, res: SolveResult) -> None:
+    """A least cost or mass is searched as its negative, maximised: the designs' objectives and the limits'
+    gains turned back into the value itself (a gain then reads as the change of cost or mass: negative, cheaper
+    or lighter)."""
+    from .task.objective import objective_spec
+
+    ob = problem.objective
+    if ob.mode == "pareto" or res.pareto is not None:
+        return
+    key = ob.order[1] if ob.mode == "lexicographic" else ob.mode
+    if objective_spec(key, problem).sign > 0:
+        return
+    for c in [res.best] + list(res.runners_up):
+        if c is not None:
+            c.objective = -c.objective
+    res.binding = [replace(b, objective_gain=None if b.objective_gain is None else -b.objective_gain)
+                   for b in res.binding]  # SolveResult wraps the list in a Bindings
 
 
 def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit: float = 100.0,
@@ -160,6 +184,9 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
             res.time = time.perf_counter() - t0
         if res.best is not None and res.best.design is not None:
             res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in task.objective.terms])
+        if sensitivities and m.pareto and res.best is not None and ob.mode in ("stiffness", "frequency"):
+            res.cheaper = cheaper_near(task, res, m, time_limit, t0)
+            res.time = time.perf_counter() - t0
     if top > 1 and not m.runners_up:
         res.certificate.notes = res.certificate.notes + (
             f"--method {method} returns the best design only (top {top} asked: no runners-up)",)
@@ -176,13 +203,14 @@ def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0:
     first = m.run(replace(task, objective=objective_spec(primary)), m.name, 1, time_limit, t0)
     if first.best is None:
         return first
-    j1 = first.best.objective
-    floor = j1 * (1.0 - max(ob.tolerance, 1e-9))
+    j1 = first.best.objective  # the search's value: a least cost or mass is its negative
+    sign = objective_spec(primary).sign
+    bound = sign * (j1 - max(ob.tolerance, 1e-9) * abs(j1))  # a floor (maximised goal) or a ceiling (least)
     lim = LIMITS[GOALS[primary].limit]
-    extra = limit_constraint(lim.key, floor * lim.factor, f"lexicographic {primary}",
-                             f"{primary} within {ob.tolerance:g} of its best {j1:.6g}")
+    extra = limit_constraint(lim.key, bound * lim.factor, f"lexicographic {primary}",
+                             f"{primary} within {ob.tolerance:g} of its best {sign * j1:.6g}")
     res = m.run(replace(task, constraints=task.constraints + (extra,)), m.name, top, time_limit, t0)
-    res.objective_label = f"{ob.label}: primary best {j1:.6g} {first.objective_unit}; " + res.objective_label
+    res.objective_label = f"{ob.label}: primary best {sign * j1:.6g} {first.objective_unit}; " + res.objective_label
     res.certificate.notes = res.certificate.notes + (
         f"stage 1 ({primary}): {first.certificate.exact_evaluations} exact evaluations, "
         f"{first.certificate.nlps_solved} NLPs, gap {first.certificate.gap:g}",)
@@ -197,6 +225,30 @@ def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0:
         res.certificate.estimated = estimated_at_optimum(problem, res, terms)
     res.time = time.perf_counter() - t0
     return res
+
+
+def cheaper_near(task: Task, res: SolveResult, m: Method, time_limit: float, t0: float) -> dict | None:
+    """The cheapest design whose objective is within the problem's tolerance (``objective.tolerance``, else
+    :data:`CHEAPER_TOLERANCE`) of the optimum ``res.best``, when it costs at least :data:`MARKEDLY` less; else
+    None.  The lexicographic solve's second stage: the least cost with the objective floored, same method."""
+    from .task.constraints import limit_constraint
+    from .task.objective import objective_spec
+
+    problem, best = task.problem, res.best
+    tol = problem.objective.tolerance or CHEAPER_TOLERANCE
+    goal = GOALS[problem.objective.mode]
+    lim = LIMITS[goal.limit]
+    floor = best.objective * (1.0 - tol)
+    extra = limit_constraint(lim.key, floor * lim.factor, f"within {tol:g} of the best",
+                             f"{goal.key} within {tol:g} of its best {best.objective:.6g}")
+    cheap = m.run(replace(task, objective=objective_spec("cost"), constraints=task.constraints + (extra,)),
+                  m.name, 1, time_limit, t0)
+    c = cheap.best
+    if c is None or not c.cost < best.cost * (1.0 - MARKEDLY):
+        return None
+    return {"tolerance": tol, "objective": c.goal(goal.key), "unit": goal.unit, "cost": c.cost,
+            "best_cost": best.cost, "proven": bool(cheap.certificate.proven), "mounting": c.mounting,
+            "parts": c.parts(), "nut_preload": c.nut_preload}
 
 
 def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,

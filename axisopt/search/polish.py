@@ -27,7 +27,11 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
     the ranks whose NLP failed (their 1-D solution is kept).  A combination whose 1-D solution is the top of
     its preload range needs no NLP: the objective does not fall with the preload (the exact solve rests on
     it), so no preload in the range does better."""
+    from ..model.limits import preload_direction
+
     pick = rank_order(ex.objective, ex.cost, ex.total_mass, ex.idx, top)
+    # an objective the preload does not move (a least cost or mass): the exact solve's preload is as good as any
+    flat = all(preload_direction(k) == 0 for k, _ in objective.terms)
     cands, fails, notes = [], [], []
     solved = 0
     for r, j in enumerate(pick, start=1):
@@ -36,7 +40,7 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
         mounting = space.mountings[mi]
         lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])
         pre = float(ex.preload[j])
-        if pre >= hi:
+        if pre >= hi or flat:
             cands.append(make_candidate(space, combo, pre, objective, rank=r))
             continue
         p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))

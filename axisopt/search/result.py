@@ -186,7 +186,7 @@ class Candidate:
     def __repr__(self) -> str:
         misses = ", ".join(f"{k} by {fmt(100 * v)} %" for k, v in self.misses.items())
         return one_line("Candidate", f"rank {self.rank}, {self.mounting} {' / '.join(self.parts().values())}", {
-            "objective": fmt(self.objective), "preload": fmt(self.nut_preload, "N"),
+            "objective": _objective_text(self.objective), "preload": fmt(self.nut_preload, "N"),
             "min stiffness": fmt(self.min_stiffness, "N/um"), "1st frequency": fmt(self.min_frequency, "Hz"),
             "cost": fmt(self.cost, "EUR"), "moving mass": fmt(self.moving_mass, "kg"),
             "drag": fmt(self.drag_torque, "N.m"), "nut life": fmt(self.life_h, "h"), "misses": misses})
@@ -447,6 +447,21 @@ class Infeasibility:
         """pandas DataFrame of the closest designs, with ``miss <limit> [%]`` per missed limit."""
         return frame([c.row() for c in self.closest])
 
+    def deciding(self, most: int = 3) -> str:
+        """The misses that decide, one clause: the limits no combination meets (with the best any reaches), else
+        what the closest design misses and by how much (at most ``most`` named); what an infeasible answer and a
+        study's reason lead with, before any note."""
+        if self.unmeetable:
+            shown = [f"{n} (limit {fmt(v, u)}, best any reaches {fmt(b, u)})" for n, b, v, u in self.unmeetable]
+            return "no combination meets " + ", ".join(shown[:most]) + \
+                (f" and {len(shown) - most} more" if len(shown) > most else "")
+        c = self.closest[0] if self.closest else None
+        if c is None or not c.misses:
+            return "no combination meets every limit"
+        miss = [f"{k} by {fmt(100 * v)} %" for k, v in c.misses.items()]
+        return "the closest design misses " + ", ".join(miss[:most]) + \
+            (f" and {len(miss) - most} more" if len(miss) > most else "")
+
     def __repr__(self) -> str:
         unmet = {n: f"limit {fmt(v, u)}, best {fmt(b, u)}" for n, b, v, u in self.unmeetable}
         return one_line("Infeasibility", f"{len(self.unmeetable)} limits no combination meets" if unmet else
@@ -481,6 +496,9 @@ class SolveResult:
     # what the search left out of the design and why, a sentence each (the drive with 'drive: no'); not in the
     # JSON when empty
     left_out: tuple = ()
+    # a stiffness or frequency optimum: a design within the tolerance of it that costs markedly less
+    # (front.cheaper_near: value, cost, best_cost, tolerance, parts), else None
+    cheaper: dict | None = None
 
     def __setattr__(self, name, value):
         if name == "binding":  # a list of Binding, assigned here or later: a Bindings (to_frame, units)
@@ -505,7 +523,8 @@ class SolveResult:
             "infeasibility": self.infeasibility.to_dict() if self.infeasibility else None,
             "pareto": self.pareto.to_dict() if self.pareto else None,
         } | ({"arrangement": {"chosen": self.arrangement, "of": self.arrangements}} if self.arrangements else {}) \
-            | ({"left_out": list(self.left_out)} if self.left_out else {})
+            | ({"left_out": list(self.left_out)} if self.left_out else {}) \
+            | ({"cheaper": _clean(self.cheaper)} if self.cheaper else {})
 
     def designs(self) -> list:
         """The designs shown: the Pareto front's points, else best and runners-up, else (infeasible) the
@@ -530,8 +549,8 @@ class SolveResult:
             fields["Pareto front"] = f"{len(self.pareto)} designs of {self.pareto.feasible:,} feasible"
         elif self.best is not None:
             b = self.best
-            fields[self.objective_label] = fmt(b.objective, self.objective_unit if self.objective_unit != "-"
-                                               else "")
+            unit = self.objective_unit if self.objective_unit != "-" else ""
+            fields[self.objective_label] = _objective_text(b.objective, unit)
             fields["best"] = f"{b.mounting} {' / '.join(b.parts().values())}, preload {fmt(b.nut_preload, 'N')}"
             fields["min stiffness"] = fmt(b.min_stiffness, "N/um")
             fields["1st frequency"] = fmt(b.min_frequency, "Hz")
@@ -560,6 +579,18 @@ class SolveResult:
                             "method": self.method, "proven": self.certificate.proven,
                             "time [s]": round(self.time, 2)}, "SolveResult") + \
             html_table([c.row(None if self.best is None else self.objective_unit) for c in self.designs()], head)
+
+
+def _objective_text(x, unit: str = "") -> str:
+    """An objective in a repr with the digits the solve text shows (``best: 186.085 N/um``): designs a few
+    thousandths apart read apart, not all as '186'."""
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    if not math.isfinite(v):
+        return "-"
+    return f"{v:,.3f}" + (f" {unit}" if unit else "")
 
 
 def _clean(v):

@@ -29,10 +29,11 @@ class _CallablePackage(types.ModuleType):
     study when called, ``axisopt.study("problems/studies/teaching_random.yaml", "out")``."""
 
     def __call__(self, spec, out=None, *, workers: int | None = 0, resume: bool = False, overwrite: bool = False,
-                 scheduler=None):
+                 scheduler=None, time_limit: float = 100.0):
         from .result import run_spec
 
-        return run_spec(spec, out, workers=workers, resume=resume, overwrite=overwrite, scheduler=scheduler)
+        return run_spec(spec, out, workers=workers, resume=resume, overwrite=overwrite, scheduler=scheduler,
+                        time_limit=time_limit)
 
 
 sys.modules[__name__].__class__ = _CallablePackage

@@ -34,7 +34,7 @@ class Compared:
         return self.evaluation is not None
 
 
-def compare_designs(files, method: str = "default") -> list:
+def compare_designs(files, method: str = "default", time_limit: float = 100.0) -> list:
     """Designs to compare, one :class:`Compared` each in argument order: each of ``files`` a design or problem
     YAML path (a problem is solved to its best design with ``method``) or a :class:`axisopt.design.Design`
     (:class:`axisopt.report.compare.Comparison` shows them side by side)."""
@@ -47,7 +47,7 @@ def compare_designs(files, method: str = "default") -> list:
         else:
             items.append(None)
             paths.append(f)
-    loaded = iter(load_compared(paths, method) if paths else [])
+    loaded = iter(load_compared(paths, method, time_limit) if paths else [])
     items = [c if c is not None else next(loaded) for c in items]
     labels = [c.label for c in items]
     for i, c in enumerate(items):  # two with one name: number them
@@ -58,13 +58,18 @@ def compare_designs(files, method: str = "default") -> list:
 
 def file_kind(path) -> str:
     """'design' when the YAML names its parts, else 'problem'."""
+    from ..yamlio import file_kind as kind_of
+    from ..yamlio import require_kind
+
     root = read_yaml(path)
+    if kind_of(root) == "study" or not isinstance(root.value, dict):
+        require_kind(root, str(path), "design or problem")
     if not isinstance(root.value, dict):
         raise InputError("expected a design or problem mapping", source=str(path))
     return "design" if "parts" in root.value else "problem"
 
 
-def load_compared(paths, method: str = "default") -> list:
+def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> list:
     """Each file of ``paths`` evaluated (a design) or solved and its best design evaluated (a problem), as
     :class:`Compared`; once the comparison has run :data:`PROGRESS` seconds, each file done is reported to the
     "axisopt" logger."""
@@ -84,7 +89,7 @@ def load_compared(paths, method: str = "default") -> list:
         from ..search import solve
 
         prob = load_problem(p)
-        res = solve(prob, method, top=1, sensitivities=False)
+        res = solve(prob, method, top=1, sensitivities=False, time_limit=time_limit)
         info = {"status": res.status, "method": res.method, "objective": res.objective_label,
                 "objective_value": None if res.best is None else res.best.objective,
                 "objective_unit": res.objective_unit, "proven": bool(res.certificate.proven),

@@ -45,7 +45,8 @@ def solve_case(context: dict, case: Case) -> dict:
         return rec
     try:
         with _SOLVE_LOCK:
-            res = solve(problem, context["method"], top=1, sensitivities=False)
+            res = solve(problem, context["method"], top=1, sensitivities=False,
+                        time_limit=context.get("time_limit", 100.0))
             # on numpy: the CasADi Function of a case's duty cycle would be built for this one evaluation
             ev = evaluate(res.best.design, use_casadi=False) if res.best is not None and res.best.design is not None \
                 else None
@@ -56,9 +57,9 @@ def solve_case(context: dict, case: Case) -> dict:
     rec["status"] = res.status
     rec["objective"] = {"label": res.objective_label, "unit": res.objective_unit, "value": _num(res.objective)}
     reason = res.message
-    if res.infeasibility is not None and res.infeasibility.unmeetable:
-        reason = (reason + "; " if reason else "") + "no combination meets " + ", ".join(
-            f"{n} (limit {lim:.4g}, best {b:.4g} {u})" for n, b, lim, u in res.infeasibility.unmeetable)
+    if res.infeasibility is not None:  # the misses that decide first, the notes after
+        reason = res.infeasibility.deciding(most=len(res.infeasibility.unmeetable) or 3) + \
+            (f"; {reason}" if reason else "")
     rec["reason"] = reason if res.status not in OK_STATUSES else ""
     rec["note"] = res.message if res.status in OK_STATUSES else ""
     if res.best is not None:

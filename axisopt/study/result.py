@@ -49,17 +49,20 @@ class StudyResult:
 
 
 def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, overwrite: bool = False,
-             scheduler=None, progress=None) -> StudyResult:
+             scheduler=None, progress=None, time_limit: float = 100.0) -> StudyResult:
     """Run a study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult`.
 
     out       : output directory (default ``<study file stem>-results``, as on the command line)
     workers   : local worker processes; 0 (the default here) solves in this process, None uses every core
     resume    : continue a run in ``out`` (its finished cases are kept)
     overwrite : solve every case again: the case results already in ``out`` are deleted first
+    time_limit: [s] of each case's solve (as ``axisopt study --time-limit``, default 100)
 
     An ``out`` that holds case results, with neither ``resume`` nor ``overwrite``, is an InputError that says
     so in these words (``axisopt.study(..., resume=True)``), not in the command line's.
     """
+    import math
+    from dataclasses import replace
     from os import PathLike
     from pathlib import Path
 
@@ -70,19 +73,31 @@ def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, o
         raise InputError("resume=True continues a run, overwrite=True starts it again: give one of them")
     path = isinstance(spec, (str, PathLike))
     study = load_study(spec) if path else spec
+    if not (math.isfinite(time_limit) and time_limit > 0):
+        raise InputError(f"time_limit must be positive, got {time_limit}")
+    study = replace(study, time_limit=float(time_limit))
     if out is None:
         out = f"{Path(spec).stem if path else study.name}-results"
     store = CaseStore(out)
     have = store.existing()
     if have and overwrite:
-        with StudyLock(out):
-            for case_id in have:
-                (store.dir / f"{case_id}.json").unlink(missing_ok=True)
+        clear_cases(out)
     elif have and not resume:
         raise InputError(f"already holds {len(have)} case results; call axisopt.study(..., resume=True) to "
                          "continue that study, overwrite=True to solve it again, or give another out",
                          source=str(out))
     return run(study, out, workers=workers, resume=resume, scheduler=scheduler, progress=progress)
+
+
+def clear_cases(out) -> int:
+    """Delete the case results in ``out`` (a study run again from the start: ``--overwrite``); their count."""
+    store = CaseStore(out)
+    have = store.existing()
+    if have:
+        with StudyLock(out):
+            for case_id in have:
+                (store.dir / f"{case_id}.json").unlink(missing_ok=True)
+    return len(have)
 
 
 def run(study: Study, out_dir, *, workers: int | None = 0, resume: bool = False, scheduler=None,
@@ -94,4 +109,4 @@ def run(study: Study, out_dir, *, workers: int | None = 0, resume: bool = False,
     return StudyResult(study, str(out_dir), summary)
 
 
-__all__ = ["StudyResult", "run", "run_spec"]
+__all__ = ["StudyResult", "clear_cases", "run", "run_spec"]

@@ -121,8 +121,8 @@ def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, r
     have = store.existing()
     ids = {c.case_id for c in study.cases}
     if have and not resume:
-        raise InputError(f"already holds {len(have)} case results; pass --resume to continue that study or "
-                         f"choose another --out", source=str(out))
+        raise InputError(f"already holds {len(have)} case results; pass --resume to continue that study, "
+                         f"--overwrite to solve it again, or choose another --out", source=str(out))
     store.prepare()
     sweep_temporaries(out)
     if (out / "plots").is_dir():

@@ -38,7 +38,7 @@ import numpy as np
 from ..design import DESCRIPTION_KEY, NAME_KEY, catalog_for
 from ..errors import InputError
 from ..problem import PROBLEM_SPEC, read_problem
-from ..yamlio import Key, Node, Section, Spec, plain, read_yaml
+from ..yamlio import Key, Node, Section, Spec, plain, read_yaml, require_kind
 
 METHODS = ("default", "exhaustive", "bonmin")
 COMBINE = ("product", "zip")
@@ -80,6 +80,7 @@ class Study:
     combine: str = "product"
     sweeps: tuple = ()
     cases: tuple = ()
+    time_limit: float = 100.0  # [s] of each case's solve (the command's --time-limit; not in the fingerprint)
 
     @property
     def keys(self) -> tuple:
@@ -91,7 +92,7 @@ class Study:
     def context(self) -> dict:
         """What a worker needs besides the cases: small, picklable, no catalog or solver objects."""
         return {"base": self.base, "base_source": self.base_source, "base_dir": self.base_dir,
-                "method": self.method, "name": self.name}
+                "method": self.method, "name": self.name, "time_limit": self.time_limit}
 
 
 # ------------------------------------------------------------------------------ the YAML keys (one table)
@@ -150,7 +151,7 @@ def load_study(path) -> Study:
     """Read a study YAML into a :class:`Study` with its expanded cases (InputError naming the key)."""
     path = Path(path)
     src = str(path)
-    root = Section(read_yaml(path), src, spec=STUDY_SPEC)
+    root = Section(require_kind(read_yaml(path), src, "study"), src, spec=STUDY_SPEC)
     name = root.read("name", path.stem)
     description = root.read("description", "") or ""
     method = root.read("method")

@@ -52,6 +52,12 @@ class ObjectiveSpec:
     label: str
     unit: str
 
+    @property
+    def sign(self) -> float:
+        """-1 for a least cost or mass (the search maximises its negative), else 1: the sign that turns the
+        search's objective into the value shown."""
+        return -1.0 if self.terms and all(w < 0 for _, w in self.terms) else 1.0
+
     def value(self, out, axis=-1):
         total = 0.0
         for key, w in self.terms:
@@ -63,8 +69,8 @@ def objective_spec(kind: str, problem: Problem | None = None) -> ObjectiveSpec:
     """The objective of the mode ``kind`` (a scalar goal of ``OBJECTIVE_TABLE``, or ``'weighted'`` with the
     weights and scales of ``problem``)."""
     g = GOALS.get(kind)
-    if g is not None and g.mode:
-        return ObjectiveSpec(((g.output, 1.0),), g.label, g.unit)
+    if g is not None and g.mode:  # a least cost or mass is maximised as its negative (ObjectiveSpec.sign)
+        return ObjectiveSpec(((g.output, 1.0 if g.sense == "max" else -1.0),), g.label, g.unit)
     if kind == "weighted":
         ob = problem.objective
         scale = dict(ob.scale)
