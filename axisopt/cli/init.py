@@ -39,7 +39,9 @@ _FORCE_NOTE = """\
   #  normal_load: onto the rails;  cross_load: across them (0 N unless given:
   #               the guides are then sized without them, and solve says so);
   #  tool_height: cutting point above the guide mounting plane;
-  #  tool_offset: cutting point across the rails from the carriage centre.
+  #  tool_offset: cutting point across the rails from the carriage centre."""
+# a lathe's template only: the rule of thumb is for turning (other processes split their forces otherwise)
+_TURNING_NOTE = """
   #  Unknown?  Turning rule of thumb (Isakov, Cutting Tool Engineering 2013):
   #  feed Ff = 0.5 Fc and passive Fp = 0.25 Fc of the tangential force Fc; a rough
   #  guide, not a measurement."""
@@ -416,7 +418,8 @@ def template(kind: str, machine: str = "vmc") -> str:
         raise InputError(f"unknown machine '{machine}'; use one of {', '.join(MACHINES)}", where="--machine")
     m = _MACHINE[machine]
     head = _HEADER.format(kind=kind, title=m["title"], machine=machine, next=_NEXT[kind])
-    axis = "axis:\n" + m["axis"].format(force=_FORCE_NOTE) + _MOUNT_NOTE
+    force = _FORCE_NOTE + (_TURNING_NOTE if machine == "lathe" else "")
+    axis = "axis:\n" + m["axis"].format(force=force) + _MOUNT_NOTE
     if kind == "design":
         return (f"{head}name: {m['name']}\ndescription: >\n  {m['description']}\n{axis}"
                 "parts:                        # catalog ids (axisopt parts lists them)\n"
