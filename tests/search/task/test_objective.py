@@ -14,10 +14,12 @@ def test_every_scalar_mode_has_an_objective_in_its_goals_unit():
     for g in OBJECTIVE_TABLE:
         if g.mode:
             spec = objective_spec(g.key)
-            assert spec.terms == ((g.output, 1.0),) and spec.unit == g.unit
+            # a least cost or mass is maximised as its negative, shown as itself (ObjectiveSpec.sign)
+            w = 1.0 if g.sense == "max" else -1.0
+            assert spec.terms == ((g.output, w),) and spec.unit == g.unit and spec.sign == w
             assert g.key in OBJECTIVE_MODES
     with pytest.raises(ValueError):
-        objective_spec("cost")
+        objective_spec("total_mass")  # a Pareto key, no mode of its own
 
 
 def test_pareto_keys_senses_units_and_fields_come_from_the_table():
