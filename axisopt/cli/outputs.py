@@ -130,7 +130,17 @@ def check_outputs(args) -> None:
             if os.path.realpath(f) == os.path.realpath(value):
                 raise InputError(f"{other} writes a file where {option} wants a directory ({value}); give each "
                                  f"its own name", where=option)
+    # directories the command itself creates first (a --report or --out directory and its parents): a file output
+    # in one of them is written after they exist
+    made = set()
+    for _, value in dirs:
+        d = os.path.abspath(value)
+        while d and not os.path.exists(d):
+            made.add(d)
+            d = os.path.dirname(d)
     for option, value in given:
         if (option, value) in dirs:
+            continue
+        if output_target(value) == "atomic" and os.path.dirname(os.path.abspath(value)) in made:
             continue
         check_output_path(value, what=_WHAT.get(option, "file"), where=option)
