@@ -36,7 +36,8 @@ def test_compare_drive_rows_show_what_the_checks_compare():
     ev = evaluate(d)
     v = ev.values
     assert float(v["needed_motor_peak_torque"]) > 1.2 * float(v["peak_torque"])  # scaled: the case that matters
-    text = compare_table([Compared("fast", "x", "design", ev), Compared("vmc", "y", "design", evaluate(load_design(VMC)))])
+    base = evaluate(load_design(VMC))
+    text = compare_table([Compared("fast", "x", "design", ev), Compared("vmc", "y", "design", base)])
     peak = next(x for x in text.splitlines() if x.startswith("  peak torque"))
     assert f"{float(v['needed_motor_peak_torque']):.2f} / {d.motor['peak_torque']:.3g}" in peak
     rms = next(x for x in text.splitlines() if x.startswith("  RMS torque"))
@@ -64,7 +65,8 @@ def test_compare_never_cuts_an_id_silently():
     nut = dict(long_id.nut)
     nut["id"] = "VENDOR-NUT-" + "X" * 40
     ev = evaluate(replace(long_id, nut=nut))
-    text = compare_table([Compared("a", "a", "design", ev), Compared("b", "b", "design", evaluate(load_design(VMC)))])
+    other = evaluate(load_design(VMC))
+    text = compare_table([Compared("a", "a", "design", ev), Compared("b", "b", "design", other)])
     assert "~" in text and nut["id"] in text.replace("\n    ", " ")  # marked, and given in full below
     assert max(len(x) for x in text.splitlines()) <= 100
 
