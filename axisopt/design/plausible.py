@@ -38,6 +38,8 @@ RANGES = (
     Range("cross_load", 1.0, 500e3, "N", 1.0),
     Range("required_life", 100 * 3600.0, 300e3 * 3600.0, "h", 1 / 3600.0),
 )
+# a duty cycle's largest process force (the same range as axis.axial_load)
+CYCLE_RANGES = (Range("duty_cycle", 0.0, 500e3, "N", 1.0),)
 # the problem's limits with a typical unit slip (the same ranges where the quantity is the same)
 LIMIT_RANGES = (
     Range("min_life", 100 * 3600.0, 300e3 * 3600.0, "h", 1 / 3600.0),

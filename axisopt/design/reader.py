@@ -28,7 +28,7 @@ from .keys import (
     SEGMENT_LIMIT,
     TWIN_SPEC,
 )
-from .plausible import implausible
+from .plausible import CYCLE_RANGES, implausible
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:
@@ -71,7 +71,8 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     if sec.has("twin_drive"):
         kw["twin_drive"] = read_twin_drive(sec, kw)
     sec.done()
-    for key, message in implausible(kw):
+    cycle_force = max([abs(s.force) for s in kw.get("duty_cycle", ()) if s.force is not None] + [0.0])
+    for key, message in implausible(kw) + implausible({"duty_cycle": cycle_force}, CYCLE_RANGES):
         warnings.warn(str(InputError(message, source=sec.source, where=sec.where(key))), ImplausibleInput,
                       stacklevel=2)
     # a counterbalance or twin drive left out is no assumption of a value: the axis has none (one drive)

@@ -226,7 +226,7 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
     ids = d.part_ids()
     lines.append(f"design {d.name}")
     lines.append(f"  {a.mounting}, stroke {a.stroke * 1e3:.0f} mm, span {a.span * 1e3:.0f} mm, "
-                 f"moving mass {a.moving_mass:.0f} kg (+ nut and blocks)")
+                 f"moving mass {a.moving_mass:,.0f} kg (+ nut and blocks)")
     lines.extend(counterbalance_lines(ev))
     grade = f" grade {d.screw_grade}" if d.screw_grade is not None else ""
     parts = [f"screw {ids['screw']}{grade}", f"nut {ids['nut']} (preload {d.preload:.0f} N)",
@@ -301,7 +301,7 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
     lines.append("")
     lines.append(f"drag torque {v['drag_torque']:.3f} N.m  (nut {v['drag_nut']:.3f}, bearings "
                  f"{v['drag_bearings']:.3f}, guides {v['drag_guides']:.3f}) at {a.max_speed * 60:.0f} m/min")
-    lines.append(f"moving mass {v['moving_mass']:.1f} kg   total mass {v['total_mass']:.1f} kg   "
+    lines.append(f"moving mass {v['moving_mass']:,.1f} kg   total mass {v['total_mass']:,.1f} kg   "
                  f"cost {v['cost']:,.0f} EUR (illustrative prices)")
     sag = float(v["screw_sag"])
     if sag >= SAG_SHOWN:

@@ -104,3 +104,14 @@ def test_csv_copied_to_yaml_name_still_refused(tmp_path, capsys):
     one_line_error(capsys)
     with pytest.raises(InputError):
         load_problem(f)
+
+
+def test_a_duty_cycle_force_in_kn_for_n_is_warned(tmp_path):
+    text = (ROOT / "problems" / "duty_cycle_problem.yaml").read_text(encoding="utf-8")
+    assert "force: 2500 N}" in text
+    f = tmp_path / "dc.yaml"
+    f.write_text(text.replace("force: 2500 N}", "force: 2500 kN}"), encoding="utf-8")
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always")
+        load_problem(f)
+    assert any("'axis.duty_cycle': 2,500,000 N is far above" in str(w.message) for w in got)
