@@ -45,8 +45,9 @@ G = 9.80665
 # safety: no vendor figure was retrieved; 2 x the gravity torque is our assumption, set axis.brake_safety.
 MAX_INERTIA_RATIO = 5.0
 BRAKE_SAFETY = 2.0
-# RMS torque / rated torque: Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <=
-# 0.8 Tst" (stall torque); taken against the rated torque, which is at most the stall torque.
+# RMS torque / rated torque where a motor row names no vendor rule (model.motorrule holds the vendors' rules):
+# Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <= 0.8 Tst" (stall torque),
+# taken against the rated torque, which is at most the stall torque: the harshest of the vendors' rules.
 RMS_TORQUE_RATIO = 0.8
 # Carriage.  Static safety factors: THK's current selection pages give the lower limit of f_S "with
 # vibrations or impacts" as 5 for the LM Guide (thk.com/in/en/products/lm_guide/selection/0005/, Table 10) and
@@ -159,7 +160,10 @@ class Axis:
     max_inertia_ratio: float = MAX_INERTIA_RATIO  # load / rotor inertia at the motor
     brake: str = "auto"  # holding brake: auto (vertical axes), yes, no
     brake_safety: float = BRAKE_SAFETY  # brake holding torque / gravity torque
-    rms_torque_ratio: float = RMS_TORQUE_RATIO  # largest RMS torque / rated torque of the motor
+    # largest RMS torque / rated torque of the motor; None: the motor vendor's rule (model.motorrule)
+    rms_torque_ratio: float | None = None
+    torque_limit: float | None = None  # the drive's torque limit at the motor shaft [N m]; None: the motor's peak
+    cut_while_accelerating: bool = False  # the largest process force acts while accelerating (nut lift-off)
     heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
     # carriage: cutting force across the rail (the feed component is axial_load, the normal one normal_load),
     # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the defaults

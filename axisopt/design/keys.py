@@ -139,9 +139,17 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw shaft for the heat balance "
                              "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4, over the "
                              "cycle, with free convection)"),
-    "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
-                            "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
-                            maximum=1.0),
+    "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default: the motor "
+                            "vendor's rule, model.motorrule: Yaskawa and Siemens 1, Mitsubishi 0.8 (MDS-D-SVJ3 "
+                            "sec. 7-1 eq. 7-10), FANUC 0.9; e.g. 0.8 to hold every motor to Mitsubishi's)",
+                            positive=True, maximum=1.0),
+    "torque_limit": _axis_q("torque", "the drive's torque (current) limit at the motor shaft (default: none, the "
+                            "motor's peak torque): what the motor gives at most, through the coupling and a "
+                            "reduction to its emergency-stop torque (apexdyna current limitation; SEW)"),
+    "cut_while_accelerating": Key("choice", "the largest process force acts while the axis accelerates (default "
+                                  "no: the cut at feed speed and the inertia in the rapid are separate load cases "
+                                  "of the nut lift-off check, THK A-725; yes: both at once)",
+                                  choices=(True, False), default=False),
     # carriage: the cutting force's cross component and where it acts, the centre of gravity, the
     # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
     "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load; default "

@@ -62,6 +62,8 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     v = sec.read("load_factor")
     if v is not None:
         kw["load_factor"] = float(v)
+    if sec.has("cut_while_accelerating"):
+        kw["cut_while_accelerating"] = sec.read("cut_while_accelerating") is True
     _check_carriage(sec, kw)
     if sec.has("counterbalance"):
         cb = read_counterbalance(sec, kw)

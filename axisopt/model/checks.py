@@ -175,7 +175,8 @@ def checks(p, mounting, preload, loads) -> dict:
     bore = p["bearing_bore"]
     ceiling = pn.preload_ceiling(p["nut_dynamic_load"])
     brg_static, brg_c0, brg_c0_need = bearing_static(p, f_max, loads["bearing_static_load"])
-    lift_need = p["nut_lift_off_safety"] * f_max
+    # each load case with its own load (model.loads.lift_off_load: THK A-725's phases), not all at once
+    lift_need = p["nut_lift_off_safety"] * loads["lift_off_load"]
     turning = unit(p, "nut_rotating") < 0.5  # the screw turns (a nut on a rotating screw)
     margins = {
         "critical_speed": mx.if_else(turning, crit / omega, NOT_APPLICABLE),

@@ -138,7 +138,7 @@ CHECK_TABLE = (
           set_by=(WEIGHT,)),
     Check("guide_life", "guide block L10 travel / required travel", "guide travel", "km", 1e-3),
     Check("dn", "DN limit / DN at max speed", "DN value", "mm.rpm", 1e3 * RPM, set_by=(SPEED,)),
-    Check("nut_lift_off", "nut lift-off force / max axial force", "nut lift-off", "kN", 1e-3, preload=1,
+    Check("nut_lift_off", "nut lift-off force / largest load case", "nut lift-off", "kN", 1e-3, preload=1,
           set_by=(ACCEL, WEIGHT)),
     Check("nut_preload", "preload ceiling (10 % Ca, THK A-687) / nut preload", "nut preload ceiling", "kN", 1e-3,
           preload=-1),
@@ -170,6 +170,8 @@ CHECK_TABLE = (
           1.0, preload=CONVEX, drive=True, set_by=TORQUE_SET_BY),
     Check("reduction_speed", "reduction n1Max / max motor speed", "reduction speed", "rpm", RPM, drive=True,
           set_by=(SPEED,)),
+    Check("reduction_emergency_torque", "reduction T2Stop / motor peak (or torque limit) x ratio",
+          "reduction T2Stop", "N.m", 1.0, drive=True, set_by=(RATIO,)),
     Check("guide_static", "guide block C0 / (least f_S x largest block load)", "guide static", "kN", 1e-3),
     Check("nut_static", "nut C0a / (least f_S x largest axial force)", "nut static", "kN", 1e-3),
     # the static set load (pretension, thermal force) rises with the nut preload through the heat balance

@@ -132,6 +132,7 @@ OUTPUT_TABLE = (
     _s("rms_torque", "N*m", "RMS motor torque of the duty cycle", drive=True),
     _s("thrust_torque", "N*m", "motor torque under the largest process force", drive=True),
     _s("mean_thrust_torque", "N*m", "motor torque under the mean process force", drive=True),
+    _s("unbalance_torque", "N*m", "steady load torque of an unbalanced (vertical) axis at the motor", drive=True),
     _s("holding_torque", "N*m", "torque that holds a vertical axis at rest", drive=True),
     _s("friction_torque", "N*m", "friction torque at the motor", drive=True),
     _s("gravity_torque", "N*m", "gravity torque at the motor of a vertical axis", drive=True),

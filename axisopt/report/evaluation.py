@@ -13,6 +13,7 @@ from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.limits import CHECK_TABLE
 from ..model.loads import balance_summary
+from ..model.motorrule import DEFAULT_RULE, rule_text
 from ..model.params import axis_params
 from ..model.servo import servo_response
 from ..units import N_PER_UM
@@ -400,28 +401,38 @@ def drive_lines(ev: Evaluation) -> list:
              + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else "")]
     zone = "" if abs(v["needed_motor_peak_torque"] - v["peak_torque"]) <= 1e-9 * v["peak_torque"] else \
         f" ({v['needed_motor_peak_torque']:.3f} scaled to the flat peak: the zone falls at speed)"
+    rms_ratio = float(v["available_motor_rated_torque"]) / float(m["rated_torque"])
+    unb_ratio = _row_number(m, "unbalance_ratio", DEFAULT_RULE.unbalance)
+    peak = float(v["available_motor_peak_torque"])
+    limited = "" if a.torque_limit is None else f", axis.torque_limit {a.torque_limit:.3g} N.m"
     rows = [("peak torque (cycle, thrust)", f"{v['peak_torque']:.3f} N.m{zone}",
-             f"{m['peak_torque']:.3g} N.m (motor peak, zone by speed)"),
+             f"{peak:.3g} N.m (motor peak, zone by speed{limited})"),
             ("RMS torque, mean thrust", f"{v['rms_torque']:.3f}, {v['mean_thrust_torque']:.3f} N.m",
-             f"{a.rms_torque_ratio:g} x {m['rated_torque']:.3g} N.m (rated)"),
+             f"{rms_ratio:g} x {m['rated_torque']:.3g} N.m (rated)"),
             ("motor speed", f"{v['motor_speed'] * RPM:.0f} rpm", f"{m['max_speed'] * RPM:.0f} rpm (max)"),
             ("inertia ratio load/rotor", f"{v['inertia_ratio']:.2f} ({v['load_inertia'] * 1e4:.3g} kg.cm^2)",
              f"{a.max_inertia_ratio:g} (axis.max_inertia_ratio)")]
     if a.orientation == "vertical":
+        rows.append(("unbalanced load torque", f"{v['unbalance_torque']:.3f} N.m",
+                     f"{unb_ratio:g} x {m['rated_torque']:.3g} N.m (rated)"))
         brake = float(m["brake_torque"]) if math.isfinite(float(m["brake_torque"])) else 0.0
         rows.append(("holding torque at a stop", f"{v['holding_torque']:.3f} N.m",
                      f"{brake:.3g} N.m brake / {a.brake_safety:g}" if brake else "no brake listed"))
     if d.coupling is not None:
-        rows.append(("coupling torque", f"{m['peak_torque'] * ratio:.3g} N.m (motor peak)",
+        rows.append(("coupling torque", f"{peak * ratio:.3g} N.m (motor peak)",
                      f"{d.coupling['rated_torque']:.3g} N.m (rated)"))
     if r is not None:
         rows.append(("output torque peak (cycle)", f"{v['output_peak_torque']:.3g} N.m",
                      f"{float(r['accel_torque']):.3g} N.m (T2B)"))
         rows.append(("output torque RMS, thrust", f"{v['output_rms_torque']:.3g} N.m",
                      f"{float(r['rated_torque']):.3g} N.m (T2N)"))
+        stop = "T2Stop" if math.isfinite(_row_number(r, "emergency_torque", math.nan)) else "T2B, no T2Stop listed"
+        rows.append(("E-stop: motor peak x ratio", f"{v['needed_reduction_emergency_torque']:.3g} N.m",
+                     f"{v['available_reduction_emergency_torque']:.3g} N.m ({stop})"))
     lines.append(f"  {'':<28}{'needed':>26}   available")
     for name, need, have in rows:
         lines.append(f"  {name:<28}{need:>26}   {have}")
+    lines.append("  motor rule: " + rule_text(str(m["vendor"]), rms_ratio, unb_ratio, a.rms_torque_ratio))
     lines.extend(textwrap.wrap(
         f"regeneration {v['regen_energy']:,.0f} J per cycle back from the motor, {v['regen_power']:,.0f} W mean "
         "(braking" + (", lowering" if a.orientation == "vertical" else "") + "; before winding and drive losses): "
@@ -429,6 +440,15 @@ def drive_lines(ev: Evaluation) -> list:
         initial_indent="  ", subsequent_indent="    "))
     lines.append("")
     return lines
+
+
+def _row_number(row, col: str, default: float) -> float:
+    """A part row's number in ``col``; ``default`` where it is empty or the table has no such column."""
+    try:
+        v = float(row[col])
+    except (KeyError, TypeError, ValueError):
+        return default
+    return v if math.isfinite(v) else default
 
 
 def _unit_rigidity_estimated(design) -> bool:
