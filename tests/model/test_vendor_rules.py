@@ -2,6 +2,7 @@
 torque), against the vendors' published rules and numbers, computed here apart from the model."""
 
 import math
+from pathlib import Path
 
 import pytest
 
@@ -31,7 +32,7 @@ def test_motor_rows_carry_their_vendors_rule():
 def test_yaskawa_motor_held_to_its_rated_torque(tmp_path):
     """The teaching design's SGM7G-13A (rated 8.34 N.m, YSK-S7): Yaskawa's rule holds it to 8.34 N.m, not the
     6.67 N.m of Mitsubishi's 0.8; a problem may still ask 0.8 (axis.rms_torque_ratio)."""
-    text = open(TEACHING, encoding="utf-8").read().replace("\naxis:\n", "\naxis:\n  acceleration: 2 m/s^2\n", 1)
+    text = Path(TEACHING).read_text(encoding="utf-8").replace("\naxis:\n", "\naxis:\n  acceleration: 2 m/s^2\n", 1)
     text += "  motor: SGM7G-13A\n"
     f = tmp_path / "d.yaml"
     f.write_text(text, encoding="utf-8")
