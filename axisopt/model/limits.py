@@ -170,7 +170,7 @@ CHECK_TABLE = (
           1.0, preload=CONVEX, drive=True, set_by=TORQUE_SET_BY),
     Check("reduction_speed", "reduction n1Max / max motor speed", "reduction speed", "rpm", RPM, drive=True,
           set_by=(SPEED,)),
-    Check("reduction_emergency_torque", "reduction T2Stop / motor peak (or torque limit) x ratio",
+    Check("reduction_emergency_torque", "reduction T2Stop / motor peak x ratio",
           "reduction T2Stop", "N.m", 1.0, drive=True, set_by=(RATIO,)),
     Check("guide_static", "guide block C0 / (least f_S x largest block load)", "guide static", "kN", 1e-3),
     Check("nut_static", "nut C0a / (least f_S x largest axial force)", "nut static", "kN", 1e-3),

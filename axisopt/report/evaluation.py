@@ -17,7 +17,7 @@ from ..model.motorrule import DEFAULT_RULE, rule_text
 from ..model.params import axis_params
 from ..model.servo import servo_response
 from ..units import N_PER_UM
-from .accuracy import budget_dict, budget_lines
+from .accuracy import budget_dict, budget_lines, reduction_lost_motion
 from .gantry import twin_dict, twin_lines
 from .lifeloads import life_dict, life_lines
 from .servo import servo_dict, servo_lines
@@ -310,8 +310,7 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
                  f"{z['zeta_guides']:.1f}, nut {z['zeta_nut']:.2f}, bearings {z['zeta_bearings']:.2f}, structure "
                  f"{z['zeta_structure']:.1f}; seed T. 5-7)")
     lines.append(f"drive-train modes (motor free) {float(np.asarray(v['f_axial_torsional'])[i_min]):.0f} and "
-                 f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  nut backlash "
-                 f"{v['backlash'] * 1e6:.0f} um")
+                 f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  " + _lost_motion_text(ev))
     lines.append("")
     lines.extend(drive_lines(ev))
     lines.extend(servo_lines(servo_response(ev)))
@@ -440,6 +439,15 @@ def drive_lines(ev: Evaluation) -> list:
         initial_indent="  ", subsequent_indent="    "))
     lines.append("")
     return lines
+
+
+def _lost_motion_text(ev) -> str:
+    """The lost motion at the table by its cause: the nut's play and a reduction's backlash, each named."""
+    red = reduction_lost_motion(ev.design)
+    nut = float(ev.values["backlash"]) - red
+    if ev.design.reduction is None:
+        return f"nut backlash {nut * 1e6:.0f} um"
+    return f"lost motion: nut {nut * 1e6:.0f} um, reduction {red * 1e6:.0f} um"
 
 
 def _row_number(row, col: str, default: float) -> float:
