@@ -32,6 +32,17 @@ MARGIN_CAP = 1e3
 # THK catalog A15 eq. 6: permissible tensile/compressive load of the shaft, P2 = sigma A, sigma = 147 MPa.
 SCREW_YIELD_STRESS = 147e6
 
+# DN: each screw vendor states its limit on its own diameter (catalogs/SOURCES.md stores every row's limit on
+# the nominal diameter the model divides by): THK on the ball centre-to-centre diameter dp (A-697, stored as
+# limit x d / dp), HIWIN GmbH (H-BS 3.7.6) and Rexroth (R310RU 3301 p. 99) on the nominal diameter, HIWIN
+# Taiwan (S99TE20 p. 33) on the pitch-circle diameter.
+DN_RULES = MappingProxyType({
+    "THK": "THK A-697: DN on the ball centre diameter dp",
+    "HIWIN": "HIWIN H-BS 3.7.6: d0 x n on the nominal diameter",
+    "Bosch Rexroth": "Rexroth R310 p. 99: d0 x n on the nominal diameter",
+})
+DN_RULE_OTHER = "d x n on the nominal diameter (the row's own limit)"
+
 # Margin of a check that does not apply to the design (a rotating-nut check on a nut that does not turn, the whirl
 # of a screw that does not turn)
 NOT_APPLICABLE = 1e9

@@ -11,6 +11,7 @@ import numpy as np
 from ..design import PRETENSION_RISE, rotating_nut
 from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
+from ..model.checks import DN_RULE_OTHER, DN_RULES
 from ..model.limits import CHECK_TABLE
 from ..model.loads import balance_summary
 from ..model.motorrule import DEFAULT_RULE, rule_text
@@ -93,7 +94,21 @@ def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
     note = allowed_note(rows)
     if note:
         lines.extend(textwrap.wrap(note, WIDTH, initial_indent="  ", subsequent_indent="    "))
+    lines.extend(textwrap.wrap("  rules: " + "; ".join(rule_notes(ev)), WIDTH, subsequent_indent="    "))
     return lines
+
+
+def rule_notes(ev: Evaluation) -> list:
+    """Whose rule each vendor-dependent check applies: the DN by the screw's vendor, the nut lift-off's load
+    cases (model.loads.lift_off_load)."""
+    d = ev.design
+    out = ["DN " + DN_RULES.get(str(d.screw["vendor"]), DN_RULE_OTHER)]
+    if d.nut["type"] == "double":
+        out.append("lift-off: the cut and the inertia at once (axis.cut_while_accelerating)"
+                   if d.axis.cut_while_accelerating else
+                   "lift-off: each load case its own load (THK A-725: the cut at feed speed, the inertia in the "
+                   + ("duty cycle's phases)" if d.axis.duty_cycle else "rapid)"))
+    return out
 
 def _fmt(v, nd=1):
     if v is None or (isinstance(v, float) and not math.isfinite(v)):
