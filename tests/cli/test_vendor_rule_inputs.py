@@ -1,0 +1,28 @@
+"""Bad input on the vendor-rule keys (axis.torque_limit, axis.cut_while_accelerating): one line, exit 2; a
+torque limit below the coupling's need admits the smaller coupling (the limit caps the motor's torque)."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _run(tmp_path, line):
+    text = (ROOT / "problems/teaching_problem.yaml").read_text(encoding="utf-8")
+    f = tmp_path / "p.yaml"
+    f.write_text(text.replace("\naxis:\n", f"\naxis:\n  {line}\n", 1), encoding="utf-8")
+    return subprocess.run([sys.executable, "-m", "axisopt", "solve", str(f)], capture_output=True, text=True,
+                          cwd=ROOT, timeout=300)
+
+
+@pytest.mark.parametrize("line, word", [("torque_limit: -5 N.m", "must be positive"),
+                                        ("torque_limit: 0 N.m", "must be positive"),
+                                        ("torque_limit: 5 kg", "torque_limit"),
+                                        ("cut_while_accelerating: maybe", "cut_while_accelerating")])
+def test_bad_vendor_rule_keys_one_line_exit_2(tmp_path, line, word):
+    r = _run(tmp_path, line)
+    assert r.returncode == 2
+    assert r.stderr.count("\n") == 1 and word in r.stderr and "Traceback" not in r.stderr
