@@ -44,6 +44,7 @@ import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import vendor_procedures as vp  # noqa: E402  (this checker's own formulas, no axisopt)
+import vendor_rules as vr  # noqa: E402  (the per-vendor rules: servo, lift-off load cases, gearbox E-stop)
 from vendor_procedures import UNITS, Row, quantity  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -123,6 +124,9 @@ class Axis:
     brake: str
     duty: list
     table_mass: float
+    rms_asked: float | None = None       # axis.rms_torque_ratio (None: the motor vendor's rule)
+    torque_limit: float | None = None    # axis.torque_limit [N.m]
+    cut_while_accelerating: bool = False
 
 
 def read_axis(design: dict) -> Axis:
@@ -152,7 +156,9 @@ def read_axis(design: dict) -> Axis:
         temp_rise=q("temperature_rise") if "temperature_rise" in a else None,
         ratio=float(a.get("reduction_ratio", 1.0)), red_eff=float(a.get("reduction_efficiency", 1.0)),
         red_inertia=q("reduction_inertia", 0.0), max_inertia_ratio=float(a.get("max_inertia_ratio", 5.0)),
-        brake=str(a.get("brake", "auto")), duty=list(a.get("duty_cycle") or []), table_mass=q("moving_mass"))
+        brake=str(a.get("brake", "auto")), duty=list(a.get("duty_cycle") or []), table_mass=q("moving_mass"),
+        rms_asked=float(a["rms_torque_ratio"]) if "rms_torque_ratio" in a else None,
+        torque_limit=vr.torque_limit(a), cut_while_accelerating=a.get("cut_while_accelerating") is True)
 
 
 def compare(vendor, theirs, same_method=True) -> str:
@@ -259,8 +265,13 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     double = nut["type"] == "double"
     if double:
         lift = 2 ** 1.5 * preload
-        rows.append(Row("nut lift-off", "kN", lift / 1e3, f_max / 1e3, lift / f_max, theirs("nut_lift_off"),
-                        their_margin("nut_lift_off"), "", "H-BS F 3.6 / T-GC A-687: F_lim = 2^(3/2) F_pr"))
+        rapid = [] if cycle_given else vp.default_drive_phases(ax, accel, friction, weights)
+        dwell_force = max([quantity(st.get("force", 0.0)) * getattr(ax, "force_share", 1.0)
+                           for st in ax.duty if "dwell" in st] + [0.0])
+        lift_need, how = vr.lift_off_need(ax, phases, rapid, friction, net, f_max, ax.cut_while_accelerating)
+        lift_need = max(lift_need, abs(weights(0) if callable(weights) else weight) + dwell_force)
+        rows.append(Row("nut lift-off", "kN", lift / 1e3, lift_need / 1e3, lift / lift_need, theirs("nut_lift_off"),
+                        their_margin("nut_lift_off"), "", "H-BS F 3.6 / T-GC A-687: F_lim = 2^(3/2) F_pr", how))
         ceiling = 0.1 * nut["dynamic_load_rating"]
         rows.append(Row("nut preload ceiling", "kN", ceiling / 1e3, preload / 1e3, ceiling / preload,
                         theirs("nut_preload"), their_margin("nut_preload"), "", "T-GC A-687, H-BS F 3.5: <= 10 % Ca"))
