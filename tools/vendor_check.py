@@ -242,7 +242,10 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                         note))
     # 2 buckling and 3 permissible tensile/compressive load (147 MPa)
     la = max(x_far, span - ax.start * 1e3) if ff else x_far
-    p1, src = vp.buckling_load(svendor, d1, la)
+    if design["axis"].get("buckling_nut_end") == "supported":
+        p1, src = vr.misumi_buckling(d1, la)
+    else:
+        p1, src = vp.buckling_load(svendor, d1, la)
     rows.append(Row("buckling", "kN", p1 / 1e3, f_max / 1e3, p1 / f_max, theirs("buckling"), their_margin("buckling"),
                     "", src, f"l_a = thrust bearing to nut at the far end {la:.0f} mm, nut as fixed end (THK A-726);"
                     " load: feed force + m a + friction (+ weight)"))

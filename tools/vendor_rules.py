@@ -79,3 +79,9 @@ def lift_off_need(ax, phases, rapid_phases, friction, net, f_max, cut_while_acce
 def torque_limit(axis_yaml: dict):
     """The design's axis.torque_limit [N.m] or None."""
     return quantity(axis_yaml["torque_limit"]) if "torque_limit" in axis_yaml else None
+
+
+def misumi_buckling(d1, la):
+    """MiSUMi "Selection of Ball Screws 2" (Economy catalog p. 1676): P = m d^4 / l^2 x 1e4 [N] with m = 10 for
+    a fixed-support shaft, l the distance between the points of buckling load [mm]: the nut a supported end."""
+    return 10.0 * d1**4 / la**2 * 1e4, "MiSUMi p. 1676: P = m d^4 / l^2 x 1e4, m 10 (nut a supported end)"

@@ -164,6 +164,7 @@ class Axis:
     rms_torque_ratio: float | None = None
     torque_limit: float | None = None  # the drive's torque limit at the motor shaft [N m]; None: the motor's peak
     cut_while_accelerating: bool = False  # the largest process force acts while accelerating (nut lift-off)
+    buckling_nut_end: str = "fixed"  # how the nut holds the shaft for buckling: fixed (THK) or supported (MiSUMi)
     heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
     # carriage: cutting force across the rail (the feed component is axial_load, the normal one normal_load),
     # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the defaults

@@ -150,6 +150,10 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                                   "no: the cut at feed speed and the inertia in the rapid are separate load cases "
                                   "of the nut lift-off check, THK A-725; yes: both at once)",
                                   choices=(True, False), default=False),
+    "buckling_nut_end": Key("choice", "how the nut holds the shaft in the buckling check: fixed (a long nut in a "
+                            "rigid bracket, THK A-726's examples; default) or supported (a pinned end, MiSUMi "
+                            "'Selection of Ball Screws 2': half the load)", choices=("fixed", "supported"),
+                            default="fixed"),
     # carriage: the cutting force's cross component and where it acts, the centre of gravity, the
     # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
     "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load; default "

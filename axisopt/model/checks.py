@@ -27,6 +27,11 @@ CHECK_LABELS = MappingProxyType({c.name: c.label for c in CHECK_TABLE})
 # A-738..A-740 take "fixed-fixed" (eta_2 = 20) for a fixed-supported screw, with l_a the distance between the
 # mounting positions.  The critical speed keeps the screw's own mounting (lambda_2 of the mounting).
 BUCKLING_END_CONDITION = "fixed-fixed"
+# How the nut holds the shaft (axis.buckling_nut_end): "fixed" (a long nut in a rigid bracket on a guided table:
+# the THK examples above, the default), or "supported" (the nut a pinned end: MiSUMi "Selection of Ball Screws 2"
+# p. 1676, whose example takes a fixed-support shaft's m = 10 over the distance between the points of buckling
+# load, d 12.5 mm, l 820 mm: 3 630 N, half the fixed-end figure)
+BUCKLING_NUT_ENDS = {"fixed": "fixed-fixed", "supported": "fixed-supported"}
 # Above this a margin says only "not limiting" (e.g. buckling when pretension keeps the screw in tension).
 MARGIN_CAP = 1e3
 # THK catalog A15 eq. 6: permissible tensile/compressive load of the shaft, P2 = sigma A, sigma = 147 MPa.
@@ -167,7 +172,9 @@ def checks(p, mounting, preload, loads) -> dict:
     # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK "evaluate
     # both"), nut counted as fixed (BUCKLING_END_CONDITION)
     buck_len = x_far if mounting != "fixed-fixed" else mx.fmax(x_far, span - p["start_offset"])
-    buck = pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_END_CONDITION)
+    held = p.get("buckling_nut_fixed", 1.0)  # 1: the nut a fixed end, 0: a supported one (BUCKLING_NUT_ENDS)
+    buck = held * pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_END_CONDITION) \
+        + (1.0 - held) * pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_NUT_ENDS["supported"])
     compression = mx.fmax(loads["screw_compression"], buck / MARGIN_CAP)
     yield_load = SCREW_YIELD_STRESS * math.pi * p["root_diameter"] ** 2 / 4.0
     tension = mx.fmax(loads["screw_tension"], f_max)

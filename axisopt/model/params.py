@@ -60,7 +60,7 @@ PARAM_NAMES = (
     "heat_transfer", "shaft_ends", "pretension_rise",
     # the motor vendor's rule on an unbalanced axis's load torque (model.motorrule), a reduction's emergency-stop
     # torque, the nut lift-off check's load case (1: the cut while accelerating)
-    "unbalance_torque_ratio", "reduction_emergency_torque", "cut_while_accelerating",
+    "unbalance_torque_ratio", "reduction_emergency_torque", "cut_while_accelerating", "buckling_nut_fixed",
     # accuracy: the screw's lead error over the stroke by its grade and the grade's price factor on the
     # shaft; the guides' running pitch and yaw (model.accuracy)
     "lead_error", "grade_price_factor", "guide_pitch", "guide_yaw",
@@ -169,6 +169,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
         if axis.bearing_static_safety is None else axis.bearing_static_safety,
         "nut_lift_off_safety": axis.nut_lift_off_safety,
         "cut_while_accelerating": 1.0 if axis.cut_while_accelerating else 0.0,
+        "buckling_nut_fixed": 1.0 if axis.buckling_nut_end == "fixed" else 0.0,
     })
     p.update(grade_params(axis, screw, grade))
     p.update(rotating_nut_params(p, nut))

@@ -102,7 +102,9 @@ def rule_notes(ev: Evaluation) -> list:
     """Whose rule each vendor-dependent check applies: the DN by the screw's vendor, the nut lift-off's load
     cases (model.loads.lift_off_load)."""
     d = ev.design
-    out = ["DN " + DN_RULES.get(str(d.screw["vendor"]), DN_RULE_OTHER)]
+    out = ["DN " + DN_RULES.get(str(d.screw["vendor"]), DN_RULE_OTHER),
+           "buckling with the nut a " + ("fixed end (THK A-726)" if d.axis.buckling_nut_end == "fixed" else
+                                        "supported end (MiSUMi Selection of Ball Screws 2)")]
     if d.nut["type"] == "double":
         out.append("lift-off: the cut and the inertia at once (axis.cut_while_accelerating)"
                    if d.axis.cut_while_accelerating else
