@@ -165,6 +165,9 @@ class Axis:
     torque_limit: float | None = None  # the drive's torque limit at the motor shaft [N m]; None: the motor's peak
     cut_while_accelerating: bool = False  # the largest process force acts while accelerating (nut lift-off)
     buckling_nut_end: str = "fixed"  # how the nut holds the shaft for buckling: fixed (THK) or supported (MiSUMi)
+    # the temperature rise without a duty cycle (and no temperature_rise): "practice", THK A-715's planning rise
+    # (TEMPERATURE_RISE), or "balance", the heat balance of the default cycle (continuous rapids)
+    rise_without_cycle: str = "practice"
     heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
     # carriage: cutting force across the rail (the feed component is axial_load, the normal one normal_load),
     # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the defaults
@@ -236,8 +239,13 @@ class Axis:
         if self.twin_drive is not None:  # each drive: the governing side's share of the process force
             share = self.twin_drive.force_share
             phases = [replace(ph, force=share * ph.force) for ph in phases]
-        return motion.Phases(phases, heat=self.temperature_rise is None and bool(self.duty_cycle),
-                             given=bool(self.duty_cycle))
+        return motion.Phases(phases, heat=self.rise_from_balance, given=bool(self.duty_cycle))
+
+    @property
+    def rise_from_balance(self) -> bool:
+        """The heat balance (model.heat) sets the temperature rise: no temperature_rise given, and a duty cycle
+        or ``rise_without_cycle: balance`` (the default cycle's balance)."""
+        return self.temperature_rise is None and (bool(self.duty_cycle) or self.rise_without_cycle == "balance")
 
     @property
     def top_speed(self) -> float:

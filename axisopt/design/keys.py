@@ -150,6 +150,10 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                                   "no: the cut at feed speed and the inertia in the rapid are separate load cases "
                                   "of the nut lift-off check, THK A-725; yes: both at once)",
                                   choices=(True, False), default=False),
+    "rise_without_cycle": Key("choice", "the screw's temperature rise where the axis gives no duty_cycle and no "
+                              "temperature_rise: practice (THK A-715's 2-5 degC planning range: 3 K; default) or "
+                              "balance (the heat balance of the default cycle, continuous rapids: conservative)",
+                              choices=("practice", "balance"), default="practice"),
     "buckling_nut_end": Key("choice", "how the nut holds the shaft in the buckling check: fixed (a long nut in a "
                             "rigid bracket, THK A-726's examples; default) or supported (a pinned end, MiSUMi "
                             "'Selection of Ball Screws 2': half the load)", choices=("fixed", "supported"),

@@ -63,6 +63,7 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     if v is not None:
         kw["load_factor"] = float(v)
     kw["buckling_nut_end"] = sec.choice("buckling_nut_end", ("fixed", "supported"), "fixed")
+    kw["rise_without_cycle"] = sec.choice("rise_without_cycle", ("practice", "balance"), "practice")
     if sec.has("cut_while_accelerating"):
         kw["cut_while_accelerating"] = sec.read("cut_while_accelerating") is True
     _check_carriage(sec, kw)

@@ -138,7 +138,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
         "gravity_axial": 1.0 if axis.orientation == "vertical" else 0.0,
         # a duty cycle and no temperature_rise given: the heat balance (model.heat) sets the rise
         "temperature_rise": TEMPERATURE_RISE if axis.temperature_rise is None else axis.temperature_rise,
-        "temperature_rise_auto": 1.0 if (axis.temperature_rise is None and axis.duty_cycle) else 0.0,
+        "temperature_rise_auto": 1.0 if axis.rise_from_balance else 0.0,
         "heat_transfer": 0.0 if axis.heat_transfer is None else axis.heat_transfer,
         "pretension": 0.0 if axis.pretension is None else axis.pretension,
         "pretension_auto": 1.0 if (axis.pretension is None and mounting == "fixed-fixed") else 0.0,

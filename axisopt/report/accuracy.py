@@ -31,7 +31,7 @@ def budget_rows(ev) -> list:
     """(label, value [m], source) of each row, the total and the repeatability."""
     d, v = ev.design, ev.values
     a = d.axis
-    rise = "heat balance, nut's top preload" if a.temperature_rise is None and a.duty_cycle else "the rise used"
+    rise = "heat balance, nut's top preload" if a.rise_from_balance else "the rise used"
     pitch, yaw = a.guide_pitch / ARCSEC, a.guide_yaw / ARCSEC
     red = reduction_lost_motion(d)
     return [

@@ -8,7 +8,7 @@ import textwrap
 
 import numpy as np
 
-from ..design import PRETENSION_RISE, rotating_nut
+from ..design import PRETENSION_RISE, TEMPERATURE_RISE, rotating_nut
 from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.checks import DN_RULE_OTHER, DN_RULES
@@ -72,6 +72,12 @@ def allowed_note(rows) -> str:
     """'* against the problem's least margin (limits.margins): ...' (:func:`allowed_list`; '' when none)."""
     judged = allowed_list(rows)
     return f"* against the problem's least margin (limits.margins): {judged}" if judged else ""
+
+
+# THK A-715: "set a negative target value for the reference travel distance assuming a temperature increase of 2
+# to 5 degC (-0.02 mm to -0.06 mm/m)": growth beyond 0.06 mm per metre (a rise beyond 5 K) leaves that practice
+PRACTICE_GROWTH = 0.06e-3  # [m/m]
+PRACTICE_RISE_MAX = 5.0  # [K]
 
 
 def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
@@ -482,15 +488,39 @@ def _unit_rigidity_estimated(design) -> bool:
     return not (isinstance(v, float) and math.isfinite(v))
 
 
+def thermal_warning(ev: Evaluation) -> str:
+    """A warning where the thermal growth at the nut exceeds THK A-715's planning range (a negative target
+    travel of -0.02 to -0.06 mm/m for a 2-5 degC rise: PRACTICE_GROWTH per metre from the fixed bearing), or
+    where the practice rise is used but the heat balance of the default cycle would exceed it ('' if neither)."""
+    a, v = ev.design.axis, ev.values
+    x_far = a.start_offset + a.stroke
+    allowed = PRACTICE_GROWTH * x_far
+    growth = float(v["thermal_growth"])
+    out = []
+    if growth > allowed * (1 + 1e-9):
+        out.append(f"thermal growth {growth * 1e6:.0f} um exceeds THK A-715's planning range (0.06 mm/m, a "
+                   f"5 degC rise: {allowed * 1e6:.0f} um at {x_far * 1e3:.0f} mm from the fixed bearing); "
+                   "limits.max_thermal_growth bounds it, a cooled screw (axis.heat_transfer), a lower preload "
+                   "or a scale (feedback) takes it out")
+    balance = float(v["heat_balance_rise"])
+    if not a.rise_from_balance and a.temperature_rise is None and balance > PRACTICE_RISE_MAX:
+        out.append(f"the heat balance of continuous rapids gives +{balance:.3g} K, above THK A-715's 2-5 degC "
+                   "planning range the practice rise assumes (axis.rise_without_cycle: balance uses it)")
+    return ("warning: " + "; ".join(out)) if out else ""
+
+
 def _thermal_line(ev: Evaluation) -> str:
     a, v = ev.design.axis, ev.values
     u = np.asarray(v["thermal_displacement"])
     text = (f"thermal: +{float(v['temperature_rise']):.3g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
             f"(alpha 11.6e-6/K, HIWIN F 3.36)")
-    used = a.temperature_rise is None and a.duty_cycle
-    how = ("rise from the heat balance of the duty cycle" if used else
+    used = a.rise_from_balance
+    how = ("rise from the heat balance of the duty cycle" if used and a.duty_cycle else
+           f"rise from the heat balance of the default cycle (axis.rise_without_cycle: balance; the practice rise "
+           f"would be {TEMPERATURE_RISE:g} K), continuous rapids" if used else
            "rise as given; the heat balance" if a.temperature_rise is not None else
-           "rise: default (THK A-715), no duty cycle; the heat balance of continuous rapids")
+           "rise: THK A-715's practice rise (axis.rise_without_cycle: practice), no duty cycle; the heat balance "
+           "of continuous rapids")
     film = ("axis.heat_transfer" if a.heat_transfer is not None else
             "free convection: a standing screw under a rotating nut" if rotating_nut(ev.design.nut) else
             "Jungnickel rotating shaft over the cycle, with free convection")
@@ -500,6 +530,9 @@ def _thermal_line(ev: Evaluation) -> str:
                f"{float(v['heat_transfer']):.3g} W/(m^2.K) ({film}), conduction through the nut bracket and the "
                f"shaft ends (estimated conductances, docs/assumptions.md){rise}")
     text += "\n" + "\n".join(textwrap.wrap(balance, WIDTH, initial_indent="  ", subsequent_indent="    "))
+    warn = thermal_warning(ev)
+    if warn:
+        text += "\n" + "\n".join(textwrap.wrap(warn, WIDTH, initial_indent="  ", subsequent_indent="    "))
     if a.mounting == "fixed-fixed":
         pre, push = float(v["pretension"]), float(v["thermal_force"])
         design = PRETENSION_RISE if a.pretension_rise is None else a.pretension_rise

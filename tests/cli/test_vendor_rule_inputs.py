@@ -22,7 +22,8 @@ def _run(tmp_path, line):
                                         ("torque_limit: 0 N.m", "must be positive"),
                                         ("torque_limit: 5 kg", "torque_limit"),
                                         ("cut_while_accelerating: maybe", "cut_while_accelerating"),
-                                        ("buckling_nut_end: clamped", "buckling_nut_end")])
+                                        ("buckling_nut_end: clamped", "buckling_nut_end"),
+                                        ("rise_without_cycle: hot", "rise_without_cycle")])
 def test_bad_vendor_rule_keys_one_line_exit_2(tmp_path, line, word):
     r = _run(tmp_path, line)
     assert r.returncode == 2

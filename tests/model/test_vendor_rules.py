@@ -148,3 +148,17 @@ def test_buckling_by_how_the_nut_is_held(tmp_path):
     la = (a.start_offset + a.stroke) * 1e3  # fixed-free: the fixed bearing to the nut at the far end [mm]
     assert values["supported"] == pytest.approx(10 * d1**4 / la**2 * 1e4, rel=0.02)
     assert values["fixed"] == pytest.approx(20 * d1**4 / la**2 * 1e4, rel=0.02)
+
+
+def test_rise_without_cycle_chooses_practice_or_balance(tmp_path):
+    """Without a duty cycle the rise is THK A-715's practice 3 K by default; ``rise_without_cycle: balance`` takes
+    the heat balance of the default cycle (the same balance the practice case prints as 'would give')."""
+    text = Path(TEACHING).read_text(encoding="utf-8")
+    f = tmp_path / "d.yaml"
+    f.write_text(text, encoding="utf-8")
+    practice = evaluate(load_design(f)).values
+    assert practice["temperature_rise"] == pytest.approx(3.0)
+    f.write_text(text.replace("\naxis:\n", "\naxis:\n  rise_without_cycle: balance\n", 1), encoding="utf-8")
+    balance = evaluate(load_design(f)).values
+    assert balance["temperature_rise"] == pytest.approx(practice["heat_balance_rise"], rel=1e-9)
+    assert balance["temperature_rise"] != pytest.approx(3.0)

@@ -32,6 +32,11 @@ def test_default_equals_exhaustive_vendor_rules(seed):
         extra["torque_limit"] = float(rng.uniform(8.0, 25.0))
     if seed in (0, 3):
         extra["cut_while_accelerating"] = True
+    if seed in (0, 1):  # no duty cycle: the heat balance of the default cycle, bounded by max_thermal_growth
+        extra["rise_without_cycle"] = "balance"
+        limits["max_thermal_growth"] = float(rng.uniform(20e-6, 80e-6))
+    if seed == 5:
+        extra["buckling_nut_end"] = "supported"
     p = make_problem(cat, limits=limits, moving_mass=mass, axial_load=1500.0 if vertical else 3000.0,
                      orientation="vertical" if vertical else "horizontal", duty_cycle=duty,
                      backlash=float(rng.uniform(5e-6, 40e-6)), **extra)
