@@ -32,6 +32,11 @@ CONVENTIONS = {
     "coupling; axisopt's chain at its own least-stiff point without torsion and coupling terms",
     "RMS torque": "THK's friction f is constant (A-725); axisopt adds the guides' viscous friction at speed, and "
     "moves jerk-limited where the design gives a jerk (this checker: trapezoidal)",
+    "unbalanced load torque": "THK's friction f is constant and the screw's eta 0.9 (A-725, A-745); axisopt's "
+    "friction torque is its drag at the rapid speed (the guides' viscous term, the nut's preload torque by its "
+    "own coefficient) through its screw efficiency",
+    "nut lift-off": "THK's friction f is constant in each phase (A-725); axisopt takes the guides' friction at the "
+    "rapid speed (with their viscous term) in every load case, as its life loads do",
     "holding torque": "THK A-745 credits the guide friction and divides by eta 0.9; axisopt: m g P_h / 2 pi",
     "unit support bearing L10 life": "THK gives the rotating-nut unit's bearing no procedure of its own (B-720 "
     "points to A-704): its printed Ca on the cycle's cubic-mean load, no preload; axisopt: a preloaded DB pair with "
@@ -520,7 +525,8 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
                     ("the duty cycle" if cycle_given else "default: rapid over the stroke and back")
                     + f"; trapezoidal moves; limit {rms_f:g} x rated {rated:.3g} N.m"))
     if ax.vertical:
-        rows.append(vr.unbalance_row(motor, w_rest, friction, lead, drag, ETA_THK, i, ax.red_eff,
+        w_worst = max(abs(weight(1)), abs(weight(-1))) if callable(weight) else w_rest  # rising or lowering
+        rows.append(vr.unbalance_row(motor, w_worst, friction, lead, drag, ETA_THK, i, ax.red_eff,
                                      drive.get("unbalance_torque_Nm"), rated))
     if ax.vertical:
         cap = motor.get("brake_torque") if brake else rated
