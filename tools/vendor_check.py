@@ -54,9 +54,10 @@ G = 9.80665
 
 def catalog_row(kind: str, part) -> dict:
     """A part's row from catalogs/<kind>.csv in SI (units from the headers), or an inline mapping."""
-    if isinstance(part, dict):
-        return {k: (quantity(v) if not isinstance(v, str) or re.match(r"^[-0-9.]", v) else v)
-                for k, v in part.items()}
+    if isinstance(part, dict):  # an inline part: vendor and series default to 'custom' (as axisopt reads it)
+        row = {k: (quantity(v) if not isinstance(v, str) or re.match(r"^[-0-9.]", v) else v)
+               for k, v in part.items()}
+        return {"vendor": "custom", "series": "custom"} | row
     with open(ROOT / "catalogs" / f"{kind}.csv", newline="", encoding="utf-8") as fh:
         for row in csv.DictReader(fh):
             if row["id"] != part:

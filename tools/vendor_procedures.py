@@ -296,7 +296,7 @@ def bearing_life_h(brg, phases, pretension, nm, fw=1.0):
             lives = []
             for face, count in ((1, np_), (-1, nm_)):
                 pm = (cubes[face] / total) ** (1 / 3)
-                lives += [(c_single / pm) ** 3 * 1e6] * count
+                lives += [(c_single / pm) ** 3 * 1e6 if pm > 0 else math.inf] * count  # unloaded rows
             rev = sum(life ** -WEIBULL_IBC for life in lives) ** (-1 / WEIBULL_IBC)
             best = max(best, rev / (60 * nm))
         worst = min(worst, best)
