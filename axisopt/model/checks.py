@@ -222,6 +222,7 @@ def checks(p, mounting, preload, loads) -> dict:
         "critical_speed": crit, "buckling_load": buck, "yield_load": yield_load, "life": life,
         "bearing_life": brg_life, "guide_life": guide_life, "dn": dn, "nut_lift_off_force": lift,
         "bearing_max_load": brg_max, "nut_static_safety": p["nut_static_load"] / f_max,
+        "screw_slenderness": span / p["nominal_diameter"],
         "screw_sag": (1.0 - p["gravity_axial"]) * ps.screw_sag(p["screw_mass_per_length"], p["root_diameter"],
                                                                span, mounting),
     }

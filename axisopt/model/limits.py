@@ -76,6 +76,9 @@ LIMIT_TABLE = (
     Limit("max_regen_power", "regen_power", "<=", "power", "W", 1.0,
           "mean power the motor returns to the drive over the duty cycle (braking, lowering) at most this: what "
           "the drive's regenerative resistor takes (Yaskawa Sigma-7 12.8.6)"),
+    Limit("max_slenderness", "screw_slenderness", "<=", "dimensionless", "", 1.0,
+          "bearing span / nominal screw diameter at most this (Schneeberger: consult the maker above 40, an "
+          "intermediate support above 50; evaluate warns above 50)"),
     Limit("max_screw_sag", "screw_sag", "<=", "length", "mm", 1e-3,
           "sag of a horizontal screw under its own weight at most this (beam deflection q L^4 / (k E I) on the root "
           "diameter, untensioned: conservative; 0 on a vertical axis)"),

@@ -157,6 +157,7 @@ OUTPUT_TABLE = (
     _s("thermal_growth", "m", "largest thermal growth of the screw at the nut", preload=1, chain=True),
     _s("c_unit_bearing", "m/N", "compliance of a rotating-nut unit's bearing", chain=True),
     _s("screw_sag", "m", "sag of a horizontal screw under its own weight"),
+    _s("screw_slenderness", "", "bearing span over the nominal screw diameter"),
     _s("unit_bearing_life", "s", "L10 life of a rotating-nut unit's bearing"),
     _s("gantry_moving_mass", "kg", "moving mass of the whole gantry"),
     _s("lead_error", "m", "positioning budget: lead error of the screw's grade over the stroke", chain=True),

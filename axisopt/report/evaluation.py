@@ -78,6 +78,9 @@ def allowed_note(rows) -> str:
 # to 5 degC (-0.02 mm to -0.06 mm/m)": growth beyond 0.06 mm per metre (a rise beyond 5 K) leaves that practice
 PRACTICE_GROWTH = 0.06e-3  # [m/m]
 PRACTICE_RISE_MAX = 5.0  # [K]
+# Schneeberger ball screws, permissible speed: "if Ln/d0 > 50 an intermediate support is needed; consult the maker
+# above 40" (tech-doc pages, docs/assumptions.md)
+SLENDERNESS_SUPPORT, SLENDERNESS_CONSULT = 50.0, 40.0
 
 
 def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
@@ -324,6 +327,12 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
             f"screw sag under its own weight {sag * 1e3:.2f} mm between the supports {a.span * 1e3:.0f} mm apart "
             "(a beam; the nut carries the shaft where it stands, and a pretension, gone when warm, is not "
             "counted; no vendor gives a limit: limits.max_screw_sag)", WIDTH, subsequent_indent="  "))
+    slender = float(v["screw_slenderness"])
+    if slender > SLENDERNESS_SUPPORT:
+        lines.extend(textwrap.wrap(
+            f"warning: the screw is {slender:.0f} diameters long between its supports (span {a.span * 1e3:.0f} mm): "
+            f"Schneeberger asks an intermediate support above {SLENDERNESS_SUPPORT:g} (consult the maker above "
+            f"{SLENDERNESS_CONSULT:g}); limits.max_slenderness bounds it", WIDTH, subsequent_indent="  "))
     lines.extend(twin_lines(ev))
     lines.append(_thermal_line(ev))
     lines.extend(budget_lines(ev))

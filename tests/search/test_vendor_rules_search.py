@@ -37,6 +37,8 @@ def test_default_equals_exhaustive_vendor_rules(seed):
         limits["max_thermal_growth"] = float(rng.uniform(20e-6, 80e-6))
     if seed == 5:
         extra["buckling_nut_end"] = "supported"
+    if seed in (2, 4):  # Schneeberger's slenderness guidance as a limit
+        limits["max_slenderness"] = float(rng.uniform(25.0, 45.0))
     p = make_problem(cat, limits=limits, moving_mass=mass, axial_load=1500.0 if vertical else 3000.0,
                      orientation="vertical" if vertical else "horizontal", duty_cycle=duty,
                      backlash=float(rng.uniform(5e-6, 40e-6)), **extra)
