@@ -168,6 +168,12 @@ class Axis:
     # the temperature rise without a duty cycle (and no temperature_rise): "practice", THK A-715's planning rise
     # (TEMPERATURE_RISE), or "balance", the heat balance of the default cycle (continuous rapids)
     rise_without_cycle: str = "practice"
+    # position feedback: "motor_encoder" (semi-closed loop) or "linear_scale" (closed loop on the table: the
+    # scale's grade, grades.SCALE_GRADES, in place of the screw's lead and thermal rows); pitch-error compensation
+    # of a semi-closed loop (the controller's table: the lead row becomes the residual, grades.compensated_error)
+    feedback: str = "motor_encoder"
+    scale_grade: str | None = None
+    pitch_compensation: bool = False
     heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
     # carriage: cutting force across the rail (the feed component is axial_load, the normal one normal_load),
     # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the defaults

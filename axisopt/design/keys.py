@@ -7,6 +7,7 @@ as a JSON Schema.
 from __future__ import annotations
 
 from ..catalog import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
+from ..grades import SCALE_GRADES
 from ..yamlio import Key, Spec
 from .axis import BRAKE_MODES, COUNTERBALANCE_KINDS, MOUNTINGS, ORIENTATIONS
 
@@ -150,6 +151,16 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                                   "no: the cut at feed speed and the inertia in the rapid are separate load cases "
                                   "of the nut lift-off check, THK A-725; yes: both at once)",
                                   choices=(True, False), default=False),
+    "feedback": Key("choice", "position feedback: motor_encoder (semi-closed loop; default) or linear_scale (a "
+                    "scale on the table closes the loop: its grade's error in place of the screw's lead and thermal "
+                    "rows of the positioning budget; needs scale_grade)", choices=("motor_encoder", "linear_scale"),
+                    default="motor_encoder"),
+    "scale_grade": Key("choice", "the linear scale's accuracy grade (grades.SCALE_GRADES: AMO LMB +-3 / +-5 um/m, "
+                       "HIWIN PMS magnetic +-20 um/m)", choices=tuple(SCALE_GRADES)),
+    "pitch_compensation": Key("choice", "the controller compensates the screw's pitch error (a semi-closed loop): "
+                              "the lead row becomes what compensation leaves, the fluctuation v_u about the "
+                              "representative travel (THK A-677; C7-C10: the error per 300 mm); default no",
+                              choices=(True, False), default=False),
     "rise_without_cycle": Key("choice", "the screw's temperature rise where the axis gives no duty_cycle and no "
                               "temperature_rise: practice (THK A-715's 2-5 degC planning range: 3 K; default) or "
                               "balance (the heat balance of the default cycle, continuous rapids: conservative)",

@@ -64,6 +64,16 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
         kw["load_factor"] = float(v)
     kw["buckling_nut_end"] = sec.choice("buckling_nut_end", ("fixed", "supported"), "fixed")
     kw["rise_without_cycle"] = sec.choice("rise_without_cycle", ("practice", "balance"), "practice")
+    kw["feedback"] = sec.choice("feedback", ("motor_encoder", "linear_scale"), "motor_encoder")
+    if sec.has("scale_grade"):
+        if kw["feedback"] != "linear_scale":
+            raise sec.error("scale_grade", "a scale grade needs axis.feedback: linear_scale")
+        kw["scale_grade"] = sec.read("scale_grade")
+    elif kw["feedback"] == "linear_scale":
+        raise sec.error("feedback", "a linear scale needs its accuracy grade: axis.scale_grade (one of "
+                        "AMO-LMB-3, AMO-LMB-5, HIWIN-PMS)")
+    if sec.has("pitch_compensation"):
+        kw["pitch_compensation"] = sec.read("pitch_compensation") is True
     if sec.has("cut_while_accelerating"):
         kw["cut_while_accelerating"] = sec.read("cut_while_accelerating") is True
     _check_carriage(sec, kw)
@@ -328,6 +338,10 @@ def load_design(path) -> Design:
     if rotating_nut(parts["nut"]) and axis.mounting != "fixed-fixed":
         raise psec.error("nut", f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: it runs on a stationary "
                          f"screw fixed at both ends (axis.mounting: fixed-fixed), not {axis.mounting}")
+    if rotating_nut(parts["nut"]) and axis.feedback == "linear_scale":
+        raise psec.error("nut", f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: axis.feedback: "
+                         "linear_scale is not supported on it (its standing screw's positioning rows are the "
+                         "unit's; use the motor encoder)")
     grade = parts.get("screw_grade")
     if grade is not None and not math.isfinite(grade_table().lead_error(grade, axis.stroke)):
         raise psec.error("screw_grade", f"grade {grade} has no lead tolerance over a {axis.stroke * 1e3:.0f} mm "

@@ -87,7 +87,8 @@ LIMIT_TABLE = (
           "deflection at the tool under axial_load + Abbe error of the guides' pitch and yaw + lost motion, "
           "added as a worst case (THK A-712..A-716); the search chooses the grade (catalog.screw_grades)"),
     Limit("max_repeatability", "repeatability", "<=", "length", "um", 1e-6,
-          "repeatability at most this (an estimate: lost motion + thermal growth at the nut)"),
+          "repeatability at most this (ISO 230-2 scatter: the reversal, lost motion, + a scale read head's "
+          "noise band; the thermal drift is its own row of the budget)"),
     Limit("min_kv", "kv", ">=", "frequency", "1/s", 1.0,
           "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, model.servo)"),
 )

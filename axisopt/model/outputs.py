@@ -167,7 +167,7 @@ OUTPUT_TABLE = (
     _s("lost_motion", "m", "positioning budget: lost motion", chain=True, drive=True),
     _s("positioning_error", "m", "positioning budget: worst-case total", preload=-1, chain=True,
        coupling=True, drive=True),
-    _s("repeatability", "m", "repeatability (an estimate: lost motion + thermal growth at the nut)", chain=True,
+    _s("repeatability", "m", "repeatability (ISO 230-2: reversal + noise band)", chain=True,
        drive=True),
 )
 OUTPUTS = MappingProxyType({o.name: o for o in OUTPUT_TABLE})

@@ -8,7 +8,7 @@ import numpy as np
 
 from ..catalog import ARRANGEMENT_ROWS, COLUMNS
 from ..design import PRETENSION_RISE, TEMPERATURE_RISE
-from ..grades import lead_errors, price_factors
+from ..grades import SCALE_GRADES, lead_errors, price_factors, scale_error
 from ..physics import counterbalance as pcb
 from ..physics.bearings import STATIC_SAFETY_MACHINE_TOOL, housing_stiffness_default, support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
@@ -63,7 +63,8 @@ PARAM_NAMES = (
     "unbalance_torque_ratio", "reduction_emergency_torque", "cut_while_accelerating", "buckling_nut_fixed",
     # accuracy: the screw's lead error over the stroke by its grade and the grade's price factor on the
     # shaft; the guides' running pitch and yaw (model.accuracy)
-    "lead_error", "grade_price_factor", "guide_pitch", "guide_yaw",
+    "lead_error", "grade_price_factor", "guide_pitch", "guide_yaw", "scale_feedback", "scale_error",
+    "scale_repeatability",
     # reduction: a catalog part, or none (the axis's reduction_* values above, its checks off); its
     # output-side ratings, its torsional compliance (in series with the coupling) and its input speed limit
     "has_reduction", "reduction_rated_torque", "reduction_accel_torque", "reduction_compliance",
@@ -196,10 +197,16 @@ def grade_params(axis, screw, grade=None) -> dict:
             grade = screw["grade"]
         except (KeyError, IndexError, ValueError):
             grade = DEFAULT_GRADE
-    err, factor = lead_errors(grade, axis.stroke), price_factors(grade)
+    err, factor = lead_errors(grade, axis.stroke, axis.pitch_compensation), price_factors(grade)
+    scale = axis.feedback == "linear_scale"
     return {"lead_error": err if np.ndim(err) else float(err),
             "grade_price_factor": factor if np.ndim(factor) else float(factor),
-            "guide_pitch": axis.guide_pitch, "guide_yaw": axis.guide_yaw}
+            "guide_pitch": axis.guide_pitch, "guide_yaw": axis.guide_yaw,
+            # a linear scale on the table (closed loop): its grade's error over the stroke and its read head's
+            # repeatability (grades.SCALE_GRADES) take the place of the screw's lead and thermal rows
+            "scale_feedback": 1.0 if scale else 0.0,
+            "scale_error": scale_error(axis.scale_grade, axis.stroke) if scale else 0.0,
+            "scale_repeatability": SCALE_GRADES[axis.scale_grade].repeatability if scale else 0.0}
 
 
 def counterbalance_params(axis) -> dict:
