@@ -102,7 +102,8 @@ class TwinDrive:
     span: float  # between the two drives (screw axes) [m]
     cross_stroke: float  # the cross carriage's travel, centred on the bridge, at most span [m]
     cross_mass: float = 0.0  # cross carriage with its head [kg]
-    bridge_yaw_inertia: float | None = None  # bridge about its centre [kg m^2]; None: m L^2 / 12 (an estimate)
+    bridge_yaw_inertia: float | None = None  # bridge about its centre [kg m^2]; None: from its parts
+    upright_mass: float | None = None  # both uprights (at the drives) [kg]; None: half the bridge (an estimate)
     # the side a model of this axis is: 'governing' (nearest the cross carriage at the end of its stroke: the
     # limits are checked on it) or 'far' (the other side at that moment); not a YAML key (model.evaluate's side)
     side: str = "governing"

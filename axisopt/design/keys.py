@@ -73,8 +73,11 @@ TWIN_SPEC = Spec("twin_drive", "two synchronised screw drives (the same parts on
                             required=True, zero=True, maximum=(50.0, "50 m")),
     "cross_mass": _axis_q("mass", "cross carriage with its head (default 0 kg); axis.moving_mass is the bridge",
                           zero=True, maximum=(1e5, "100 t")),
-    "bridge_yaw_inertia": _axis_q("inertia", "bridge about its centre, normal axis (default, an estimate: a uniform "
-                                  "beam of axis.moving_mass over span, m L^2 / 12)", maximum=(1e7, "1e7 kg.m^2")),
+    "bridge_yaw_inertia": _axis_q("inertia", "bridge about its centre, normal axis (default: from its parts, a "
+                                  "beam over span and the uprights at the drives)", maximum=(1e7, "1e7 kg.m^2")),
+    "upright_mass": _axis_q("mass", "both uprights (side columns) of the bridge, at the drives, part of "
+                            "axis.moving_mass (default, an estimate: half of it, J = m L^2 / 6, conservative "
+                            "for the racking mode)", zero=True, maximum=(1e5, "100 t")),
 })
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
 # operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible

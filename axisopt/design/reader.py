@@ -150,6 +150,9 @@ def read_twin_drive(sec: Section, kw: dict) -> TwinDrive:
     if tw["cross_stroke"] > tw["span"] * (1 + 1e-9):
         raise sub.error("cross_stroke", f"{tw['cross_stroke'] * 1e3:g} mm is more than the span between the drives "
                         f"({tw['span'] * 1e3:g} mm): the cross carriage would leave the bridge")
+    if tw.get("upright_mass") is not None and tw["upright_mass"] > kw.get("moving_mass", float("inf")) * (1 + 1e-9):
+        raise sub.error("upright_mass", f"{tw['upright_mass']:g} kg is more than the bridge's axis.moving_mass "
+                        f"({kw['moving_mass']:g} kg) it is part of")
     return TwinDrive(**{k: v for k, v in tw.items() if v is not None})
 
 
