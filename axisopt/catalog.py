@@ -198,6 +198,12 @@ COLUMNS = MappingProxyType({
         _c("peak_corner_speed", "angular_speed", optional=True,
            estimate="min(rated speed, max speed / 2): Mitsubishi MDS-D-SVJ3 sec. 7-1 (2)"),
         _c("peak_torque_at_max_speed", "torque", optional=True, estimate="rated torque (peak falls to rated)"),
+        # the motor vendor's selection rule (model.motorrule): RMS torque <= rms_ratio x rated, and on an
+        # unbalanced (vertical) axis the steady load torque <= unbalance_ratio x rated
+        _c("rms_ratio", "dimensionless", optional=True, at_most=1.0,
+           estimate="no vendor rule: Mitsubishi's 0.8 (MDS-D-SVJ3 sec. 7-1 eq. 7-10), the harshest"),
+        _c("unbalance_ratio", "dimensionless", optional=True, at_most=1.0,
+           estimate="no vendor rule: 0.6 (Mitsubishi MDS-D-SVJ3 eq. 7-12, FANUC B-65262EN 3.1), the harshest"),
     ),
     "couplings": (
         *(_c(n, "str") for n in _TEXT),
@@ -218,6 +224,10 @@ COLUMNS = MappingProxyType({
         _c("inertia", "inertia", "reduction_inertia"),
         _c("rated_torque", "torque", "reduction_rated_torque", positive=True),
         _c("accel_torque", "torque", "reduction_accel_torque", positive=True),
+        # the emergency-stop torque (Beckhoff AG2400 "T2Em.stop ... 1000 times during the service life"): what the
+        # motor's peak (or the drive's torque limit) through the ratio may reach at a collision or an E-stop
+        _c("emergency_torque", "torque", optional=True,
+           estimate="T2B (the acceleration torque, never above the emergency torque)"),
         _c("torsional_stiffness", "torsional_stiffness", positive=True),
         _c("backlash", "angle", "reduction_backlash"),
         _c("max_input_speed", "angular_speed", "reduction_max_speed", positive=True),

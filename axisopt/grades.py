@@ -90,6 +90,20 @@ class GradeTable:
                 return float(lead_error_tolerance(ep, vu))
         return math.nan
 
+    def compensated_error(self, name: str, travel: float) -> float:
+        """The lead error left after pitch-error compensation [m]: the controller's table removes the
+        representative travel line's deviation e_p (THK A-677 Fig. 1: what ISO 230-2's compensation measures),
+        not the fluctuation v_u about it, which is what remains for C0-C5; for C7-C10 (no v_u) the error per
+        300 mm, unscaled (the compensation points are tens of mm apart; within them the error stays).  NaN where
+        the grade's table stops short of the travel."""
+        g = self.grade(name)
+        if math.isfinite(g.travel_error_300):
+            return float(g.travel_error_300)
+        for lo, hi, _ep, vu in g.bands:
+            if lo < travel <= hi or (lo == 0.0 and travel <= hi):
+                return float(vu)
+        return math.nan
+
     def error_per_300(self, name: str) -> float:
         """The grade's lead error per 300 mm [m]: v_300 for C0-C5, the travel error per 300 mm for C7-C10."""
         g = self.grade(name)
@@ -192,13 +206,42 @@ def grade_table() -> GradeTable:
     return load_grade_table(SHIPPED_DIR)
 
 
-def lead_errors(names, travel: float) -> np.ndarray:
-    """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over ``travel`` [m]."""
+def lead_errors(names, travel: float, compensated: bool = False) -> np.ndarray:
+    """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over ``travel`` [m]
+    (``compensated``: :meth:`GradeTable.compensated_error`, what pitch-error compensation leaves)."""
     t = grade_table()
     names = np.asarray(names)
     uniq, inv = np.unique(names, return_inverse=True)
-    vals = np.array([t.lead_error(str(n), travel) for n in uniq])
+    how = t.compensated_error if compensated else t.lead_error
+    vals = np.array([how(str(n), travel) for n in uniq])
     return vals[inv].reshape(names.shape)
+
+
+@dataclass(frozen=True)
+class ScaleGrade:
+    """A linear scale's accuracy grade: +-``accuracy`` per metre of travel (at least one metre: Heidenhain's grade
+    bounds any section up to 1 m) and its read head's repeatability band [m], with the source."""
+
+    accuracy: float  # [m per m]
+    repeatability: float  # [m], the band (2 x the +- figure); 0 where the vendor states none
+    source: str
+
+
+# Linear-scale grades for ``axis.feedback: linear_scale`` (vendor-data-sources-drives.md sec. 7): AMO LMB
+# (amosin.com/lmb-100: "accuracy after linear compensation down to +-3 um/m / +-5 um/m"), HIWIN Positioning
+# Measurement System magnetic scale PS (accuracy at 20 degC +-20 um/m, read head repeatability +-3 um).  How a
+# grade reads over a travel: Heidenhain's definition, the extreme values over any section of at most 1 m lie within
+# +-a (content.heidenhain.de, accuracy grade); a longer travel takes a per metre (conservative).
+SCALE_GRADES = {
+    "AMO-LMB-3": ScaleGrade(3e-6, 0.0, "AMO LMB +-3 um/m"),
+    "AMO-LMB-5": ScaleGrade(5e-6, 0.0, "AMO LMB +-5 um/m"),
+    "HIWIN-PMS": ScaleGrade(20e-6, 6e-6, "HIWIN PMS +-20 um/m, head +-3 um"),
+}
+
+
+def scale_error(grade: str, travel: float) -> float:
+    """The scale's largest error over ``travel`` [m]: its grade's +-a per metre, at least one metre's."""
+    return SCALE_GRADES[grade].accuracy * max(travel, 1.0)
 
 
 def price_factors(names) -> np.ndarray:
@@ -210,5 +253,5 @@ def price_factors(names) -> np.ndarray:
     return vals[inv].reshape(names.shape)
 
 
-__all__ = ["Grade", "GradeTable", "PRECISION_GRADES", "grade_table", "lead_errors", "load_grade_table",
-           "price_factors"]
+__all__ = ["Grade", "GradeTable", "PRECISION_GRADES", "SCALE_GRADES", "ScaleGrade", "grade_table", "lead_errors",
+           "load_grade_table", "price_factors", "scale_error"]

@@ -44,6 +44,7 @@ import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import vendor_procedures as vp  # noqa: E402  (this checker's own formulas, no axisopt)
+import vendor_rules as vr  # noqa: E402  (the per-vendor rules: servo, lift-off load cases, gearbox E-stop)
 from vendor_procedures import UNITS, Row, quantity  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -53,9 +54,10 @@ G = 9.80665
 
 def catalog_row(kind: str, part) -> dict:
     """A part's row from catalogs/<kind>.csv in SI (units from the headers), or an inline mapping."""
-    if isinstance(part, dict):
-        return {k: (quantity(v) if not isinstance(v, str) or re.match(r"^[-0-9.]", v) else v)
-                for k, v in part.items()}
+    if isinstance(part, dict):  # an inline part: vendor and series default to 'custom' (as axisopt reads it)
+        row = {k: (quantity(v) if not isinstance(v, str) or re.match(r"^[-0-9.]", v) else v)
+               for k, v in part.items()}
+        return {"vendor": "custom", "series": "custom"} | row
     with open(ROOT / "catalogs" / f"{kind}.csv", newline="", encoding="utf-8") as fh:
         for row in csv.DictReader(fh):
             if row["id"] != part:
@@ -123,6 +125,9 @@ class Axis:
     brake: str
     duty: list
     table_mass: float
+    rms_asked: float | None = None       # axis.rms_torque_ratio (None: the motor vendor's rule)
+    torque_limit: float | None = None    # axis.torque_limit [N.m]
+    cut_while_accelerating: bool = False
 
 
 def read_axis(design: dict) -> Axis:
@@ -152,7 +157,9 @@ def read_axis(design: dict) -> Axis:
         temp_rise=q("temperature_rise") if "temperature_rise" in a else None,
         ratio=float(a.get("reduction_ratio", 1.0)), red_eff=float(a.get("reduction_efficiency", 1.0)),
         red_inertia=q("reduction_inertia", 0.0), max_inertia_ratio=float(a.get("max_inertia_ratio", 5.0)),
-        brake=str(a.get("brake", "auto")), duty=list(a.get("duty_cycle") or []), table_mass=q("moving_mass"))
+        brake=str(a.get("brake", "auto")), duty=list(a.get("duty_cycle") or []), table_mass=q("moving_mass"),
+        rms_asked=float(a["rms_torque_ratio"]) if "rms_torque_ratio" in a else None,
+        torque_limit=vr.torque_limit(a), cut_while_accelerating=a.get("cut_while_accelerating") is True)
 
 
 def compare(vendor, theirs, same_method=True) -> str:
@@ -236,7 +243,10 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                         note))
     # 2 buckling and 3 permissible tensile/compressive load (147 MPa)
     la = max(x_far, span - ax.start * 1e3) if ff else x_far
-    p1, src = vp.buckling_load(svendor, d1, la)
+    if design["axis"].get("buckling_nut_end") == "supported":
+        p1, src = vr.misumi_buckling(d1, la)
+    else:
+        p1, src = vp.buckling_load(svendor, d1, la)
     rows.append(Row("buckling", "kN", p1 / 1e3, f_max / 1e3, p1 / f_max, theirs("buckling"), their_margin("buckling"),
                     "", src, f"l_a = thrust bearing to nut at the far end {la:.0f} mm, nut as fixed end (THK A-726);"
                     " load: feed force + m a + friction (+ weight)"))
@@ -259,8 +269,13 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     double = nut["type"] == "double"
     if double:
         lift = 2 ** 1.5 * preload
-        rows.append(Row("nut lift-off", "kN", lift / 1e3, f_max / 1e3, lift / f_max, theirs("nut_lift_off"),
-                        their_margin("nut_lift_off"), "", "H-BS F 3.6 / T-GC A-687: F_lim = 2^(3/2) F_pr"))
+        rapid = [] if cycle_given else vp.default_drive_phases(ax, accel, friction, weights)
+        dwell_force = max([quantity(st.get("force", 0.0)) * getattr(ax, "force_share", 1.0)
+                           for st in ax.duty if "dwell" in st] + [0.0])
+        lift_need, how = vr.lift_off_need(ax, phases, rapid, friction, net, f_max, ax.cut_while_accelerating)
+        lift_need = max(lift_need, abs(weights(0) if callable(weights) else weight) + dwell_force)
+        rows.append(Row("nut lift-off", "kN", lift / 1e3, lift_need / 1e3, lift / lift_need, theirs("nut_lift_off"),
+                        their_margin("nut_lift_off"), "", "H-BS F 3.6 / T-GC A-687: F_lim = 2^(3/2) F_pr", how))
         ceiling = 0.1 * nut["dynamic_load_rating"]
         rows.append(Row("nut preload ceiling", "kN", ceiling / 1e3, preload / 1e3, ceiling / preload,
                         theirs("nut_preload"), their_margin("nut_preload"), "", "T-GC A-687, H-BS F 3.5: <= 10 % Ca"))

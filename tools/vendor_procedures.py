@@ -32,6 +32,11 @@ CONVENTIONS = {
     "coupling; axisopt's chain at its own least-stiff point without torsion and coupling terms",
     "RMS torque": "THK's friction f is constant (A-725); axisopt adds the guides' viscous friction at speed, and "
     "moves jerk-limited where the design gives a jerk (this checker: trapezoidal)",
+    "unbalanced load torque": "THK's friction f is constant and the screw's eta 0.9 (A-725, A-745); axisopt's "
+    "friction torque is its drag at the rapid speed (the guides' viscous term, the nut's preload torque by its "
+    "own coefficient) through its screw efficiency",
+    "nut lift-off": "THK's friction f is constant in each phase (A-725); axisopt takes the guides' friction at the "
+    "rapid speed (with their viscous term) in every load case, as its life loads do",
     "holding torque": "THK A-745 credits the guide friction and divides by eta 0.9; axisopt: m g P_h / 2 pi",
     "unit support bearing L10 life": "THK gives the rotating-nut unit's bearing no procedure of its own (B-720 "
     "points to A-704): its printed Ca on the cycle's cubic-mean load, no preload; axisopt: a preloaded DB pair with "
@@ -291,7 +296,7 @@ def bearing_life_h(brg, phases, pretension, nm, fw=1.0):
             lives = []
             for face, count in ((1, np_), (-1, nm_)):
                 pm = (cubes[face] / total) ** (1 / 3)
-                lives += [(c_single / pm) ** 3 * 1e6] * count
+                lives += [(c_single / pm) ** 3 * 1e6 if pm > 0 else math.inf] * count  # unloaded rows
             rev = sum(life ** -WEIBULL_IBC for life in lives) ** (-1 / WEIBULL_IBC)
             best = max(best, rev / (60 * nm))
         worst = min(worst, best)
@@ -469,6 +474,8 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
     reductions.csv) gives i, eta_G and its input inertia (T-GC A-717..A-720 with A = 1/i: J_load / i^2 + J_G on
     the motor, T_motor = T_out / (i eta_G)) and its rows (:func:`reduction_rows`); a rotating-nut unit's printed
     inertia ``unit_inertia`` [kg.m^2] (T-GC B-721) takes the place of the standing screw's."""
+    import vendor_rules as vr  # the per-vendor servo and gearbox rules (imports this module: here, not on top)
+
     lead = screw["lead"]                             # [m]
     d0, d1 = screw["nominal_diameter"], screw["root_diameter"]
     j_screw = screw_inertia(d0, ax.span) if unit_inertia is None else unit_inertia
@@ -512,10 +519,15 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
         tt += p.time
     trms = math.sqrt(sq / tt)
     rated = motor["rated_torque"]
-    rows.append(Row("RMS torque", "N.m", trms, rated, rated / trms, drive.get("rms_torque_Nm"), None, "",
-                    "T-GC A-734/A-746: T_rms <= rated torque (eta 0.9, preload torque A-688 eq. 5)",
+    rms_f, _, rule = vr.servo_rule(motor["vendor"], getattr(ax, "rms_asked", None))
+    rows.append(Row("RMS torque", "N.m", trms, rms_f * rated, rms_f * rated / trms, drive.get("rms_torque_Nm"),
+                    None, "", f"T-GC A-734/A-746: T_rms (eta 0.9, preload torque A-688 eq. 5); limit: {rule}",
                     ("the duty cycle" if cycle_given else "default: rapid over the stroke and back")
-                    + f"; trapezoidal moves; axisopt limits it to {ax.max_inertia_ratio and 0.8} x rated"))
+                    + f"; trapezoidal moves; limit {rms_f:g} x rated {rated:.3g} N.m"))
+    if ax.vertical:
+        w_worst = max(abs(weight(1)), abs(weight(-1))) if callable(weight) else w_rest  # rising or lowering
+        rows.append(vr.unbalance_row(motor, w_worst, friction, lead, drag, ETA_THK, i, ax.red_eff,
+                                     drive.get("unbalance_torque_Nm"), rated))
     if ax.vertical:
         cap = motor.get("brake_torque") if brake else rated
         rows.append(Row("holding torque at a stop", "N.m", hold, cap, (cap / hold) if cap and hold else None,
@@ -530,6 +542,8 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
         rows += reduction_rows(red, motor, max(out_peak, steady[0]), max(math.sqrt(out_sq / tt), steady[1]),
                                ax.v_max / lead * 60 * i,
                                ev.get("checks", {}))
+        rows.append(vr.emergency_row(red, motor, getattr(ax, "torque_limit", None),
+                                     ev.get("checks", {}).get("reduction_emergency_torque") or {}))
     return rows
 
 

@@ -45,8 +45,9 @@ G = 9.80665
 # safety: no vendor figure was retrieved; 2 x the gravity torque is our assumption, set axis.brake_safety.
 MAX_INERTIA_RATIO = 5.0
 BRAKE_SAFETY = 2.0
-# RMS torque / rated torque: Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <=
-# 0.8 Tst" (stall torque); taken against the rated torque, which is at most the stall torque.
+# RMS torque / rated torque where a motor row names no vendor rule (model.motorrule holds the vendors' rules):
+# Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <= 0.8 Tst" (stall torque),
+# taken against the rated torque, which is at most the stall torque: the harshest of the vendors' rules.
 RMS_TORQUE_RATIO = 0.8
 # Carriage.  Static safety factors: THK's current selection pages give the lower limit of f_S "with
 # vibrations or impacts" as 5 for the LM Guide (thk.com/in/en/products/lm_guide/selection/0005/, Table 10) and
@@ -101,7 +102,8 @@ class TwinDrive:
     span: float  # between the two drives (screw axes) [m]
     cross_stroke: float  # the cross carriage's travel, centred on the bridge, at most span [m]
     cross_mass: float = 0.0  # cross carriage with its head [kg]
-    bridge_yaw_inertia: float | None = None  # bridge about its centre [kg m^2]; None: m L^2 / 12 (an estimate)
+    bridge_yaw_inertia: float | None = None  # bridge about its centre [kg m^2]; None: from its parts
+    upright_mass: float | None = None  # both uprights (at the drives) [kg]; None: half the bridge (an estimate)
     # the side a model of this axis is: 'governing' (nearest the cross carriage at the end of its stroke: the
     # limits are checked on it) or 'far' (the other side at that moment); not a YAML key (model.evaluate's side)
     side: str = "governing"
@@ -159,7 +161,20 @@ class Axis:
     max_inertia_ratio: float = MAX_INERTIA_RATIO  # load / rotor inertia at the motor
     brake: str = "auto"  # holding brake: auto (vertical axes), yes, no
     brake_safety: float = BRAKE_SAFETY  # brake holding torque / gravity torque
-    rms_torque_ratio: float = RMS_TORQUE_RATIO  # largest RMS torque / rated torque of the motor
+    # largest RMS torque / rated torque of the motor; None: the motor vendor's rule (model.motorrule)
+    rms_torque_ratio: float | None = None
+    torque_limit: float | None = None  # the drive's torque limit at the motor shaft [N m]; None: the motor's peak
+    cut_while_accelerating: bool = False  # the largest process force acts while accelerating (nut lift-off)
+    buckling_nut_end: str = "fixed"  # how the nut holds the shaft for buckling: fixed (THK) or supported (MiSUMi)
+    # the temperature rise without a duty cycle (and no temperature_rise): "practice", THK A-715's planning rise
+    # (TEMPERATURE_RISE), or "balance", the heat balance of the default cycle (continuous rapids)
+    rise_without_cycle: str = "practice"
+    # position feedback: "motor_encoder" (semi-closed loop) or "linear_scale" (closed loop on the table: the
+    # scale's grade, grades.SCALE_GRADES, in place of the screw's lead and thermal rows); pitch-error compensation
+    # of a semi-closed loop (the controller's table: the lead row becomes the residual, grades.compensated_error)
+    feedback: str = "motor_encoder"
+    scale_grade: str | None = None
+    pitch_compensation: bool = False
     heat_transfer: float | None = None  # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
     # carriage: cutting force across the rail (the feed component is axial_load, the normal one normal_load),
     # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the defaults
@@ -231,8 +246,13 @@ class Axis:
         if self.twin_drive is not None:  # each drive: the governing side's share of the process force
             share = self.twin_drive.force_share
             phases = [replace(ph, force=share * ph.force) for ph in phases]
-        return motion.Phases(phases, heat=self.temperature_rise is None and bool(self.duty_cycle),
-                             given=bool(self.duty_cycle))
+        return motion.Phases(phases, heat=self.rise_from_balance, given=bool(self.duty_cycle))
+
+    @property
+    def rise_from_balance(self) -> bool:
+        """The heat balance (model.heat) sets the temperature rise: no temperature_rise given, and a duty cycle
+        or ``rise_without_cycle: balance`` (the default cycle's balance)."""
+        return self.temperature_rise is None and (bool(self.duty_cycle) or self.rise_without_cycle == "balance")
 
     @property
     def top_speed(self) -> float:

@@ -7,6 +7,7 @@ as a JSON Schema.
 from __future__ import annotations
 
 from ..catalog import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
+from ..grades import SCALE_GRADES
 from ..yamlio import Key, Spec
 from .axis import BRAKE_MODES, COUNTERBALANCE_KINDS, MOUNTINGS, ORIENTATIONS
 
@@ -72,8 +73,11 @@ TWIN_SPEC = Spec("twin_drive", "two synchronised screw drives (the same parts on
                             required=True, zero=True, maximum=(50.0, "50 m")),
     "cross_mass": _axis_q("mass", "cross carriage with its head (default 0 kg); axis.moving_mass is the bridge",
                           zero=True, maximum=(1e5, "100 t")),
-    "bridge_yaw_inertia": _axis_q("inertia", "bridge about its centre, normal axis (default, an estimate: a uniform "
-                                  "beam of axis.moving_mass over span, m L^2 / 12)", maximum=(1e7, "1e7 kg.m^2")),
+    "bridge_yaw_inertia": _axis_q("inertia", "bridge about its centre, normal axis (default: from its parts, a "
+                                  "beam over span and the uprights at the drives)", maximum=(1e7, "1e7 kg.m^2")),
+    "upright_mass": _axis_q("mass", "both uprights (side columns) of the bridge, at the drives, part of "
+                            "axis.moving_mass (default, an estimate: half of it, J = m L^2 / 6, conservative "
+                            "for the racking mode)", zero=True, maximum=(1e5, "100 t")),
 })
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
 # operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible
@@ -139,9 +143,35 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
     "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw shaft for the heat balance "
                              "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4, over the "
                              "cycle, with free convection)"),
-    "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default 0.8: Mitsubishi "
-                            "MDS-D-SVJ3 sec. 7-1 eq. 7-10, Trms <= 0.8 x stall torque)", positive=True,
-                            maximum=1.0),
+    "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default: the motor "
+                            "vendor's rule, model.motorrule: Yaskawa and Siemens 1, Mitsubishi 0.8 (MDS-D-SVJ3 "
+                            "sec. 7-1 eq. 7-10), FANUC 0.9; e.g. 0.8 to hold every motor to Mitsubishi's)",
+                            positive=True, maximum=1.0),
+    "torque_limit": _axis_q("torque", "the drive's torque (current) limit at the motor shaft (default: none, the "
+                            "motor's peak torque): what the motor gives at most, through the coupling and a "
+                            "reduction to its emergency-stop torque (apexdyna current limitation; SEW)"),
+    "cut_while_accelerating": Key("choice", "the largest process force acts while the axis accelerates (default "
+                                  "no: the cut at feed speed and the inertia in the rapid are separate load cases "
+                                  "of the nut lift-off check, THK A-725; yes: both at once)",
+                                  choices=(True, False), default=False),
+    "feedback": Key("choice", "position feedback: motor_encoder (semi-closed loop; default) or linear_scale (a "
+                    "scale on the table closes the loop: its grade's error in place of the screw's lead and thermal "
+                    "rows of the positioning budget; needs scale_grade)", choices=("motor_encoder", "linear_scale"),
+                    default="motor_encoder"),
+    "scale_grade": Key("choice", "the linear scale's accuracy grade (grades.SCALE_GRADES: AMO LMB +-3 / +-5 um/m, "
+                       "HIWIN PMS magnetic +-20 um/m)", choices=tuple(SCALE_GRADES)),
+    "pitch_compensation": Key("choice", "the controller compensates the screw's pitch error (a semi-closed loop): "
+                              "the lead row becomes what compensation leaves, the fluctuation v_u about the "
+                              "representative travel (THK A-677; C7-C10: the error per 300 mm); default no",
+                              choices=(True, False), default=False),
+    "rise_without_cycle": Key("choice", "the screw's temperature rise where the axis gives no duty_cycle and no "
+                              "temperature_rise: practice (THK A-715's 2-5 degC planning range: 3 K; default) or "
+                              "balance (the heat balance of the default cycle, continuous rapids: conservative)",
+                              choices=("practice", "balance"), default="practice"),
+    "buckling_nut_end": Key("choice", "how the nut holds the shaft in the buckling check: fixed (a long nut in a "
+                            "rigid bracket, THK A-726's examples; default) or supported (a pinned end, MiSUMi "
+                            "'Selection of Ball Screws 2': half the load)", choices=("fixed", "supported"),
+                            default="fixed"),
     # carriage: the cutting force's cross component and where it acts, the centre of gravity, the
     # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
     "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load; default "

@@ -62,6 +62,20 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     v = sec.read("load_factor")
     if v is not None:
         kw["load_factor"] = float(v)
+    kw["buckling_nut_end"] = sec.choice("buckling_nut_end", ("fixed", "supported"), "fixed")
+    kw["rise_without_cycle"] = sec.choice("rise_without_cycle", ("practice", "balance"), "practice")
+    kw["feedback"] = sec.choice("feedback", ("motor_encoder", "linear_scale"), "motor_encoder")
+    if sec.has("scale_grade"):
+        if kw["feedback"] != "linear_scale":
+            raise sec.error("scale_grade", "a scale grade needs axis.feedback: linear_scale")
+        kw["scale_grade"] = sec.read("scale_grade")
+    elif kw["feedback"] == "linear_scale":
+        raise sec.error("feedback", "a linear scale needs its accuracy grade: axis.scale_grade (one of "
+                        "AMO-LMB-3, AMO-LMB-5, HIWIN-PMS)")
+    if sec.has("pitch_compensation"):
+        kw["pitch_compensation"] = sec.read("pitch_compensation") is True
+    if sec.has("cut_while_accelerating"):
+        kw["cut_while_accelerating"] = sec.read("cut_while_accelerating") is True
     _check_carriage(sec, kw)
     _check_pairs(sec, kw)
     if sec.has("counterbalance"):
@@ -138,6 +152,9 @@ def read_twin_drive(sec: Section, kw: dict) -> TwinDrive:
     if tw["cross_stroke"] > tw["span"] * (1 + 1e-9):
         raise sub.error("cross_stroke", f"{tw['cross_stroke'] * 1e3:g} mm is more than the span between the drives "
                         f"({tw['span'] * 1e3:g} mm): the cross carriage would leave the bridge")
+    if tw.get("upright_mass") is not None and tw["upright_mass"] > kw.get("moving_mass", float("inf")) * (1 + 1e-9):
+        raise sub.error("upright_mass", f"{tw['upright_mass']:g} kg is more than the bridge's axis.moving_mass "
+                        f"({kw['moving_mass']:g} kg) it is part of")
     return TwinDrive(**{k: v for k, v in tw.items() if v is not None})
 
 
@@ -344,6 +361,10 @@ def load_design(path) -> Design:
     if rotating_nut(parts["nut"]) and axis.mounting != "fixed-fixed":
         raise psec.error("nut", f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: it runs on a stationary "
                          f"screw fixed at both ends (axis.mounting: fixed-fixed), not {axis.mounting}")
+    if rotating_nut(parts["nut"]) and axis.feedback == "linear_scale":
+        raise psec.error("nut", f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: axis.feedback: "
+                         "linear_scale is not supported on it (its standing screw's positioning rows are the "
+                         "unit's; use the motor encoder)")
     grade = parts.get("screw_grade")
     if grade is not None and not math.isfinite(grade_table().lead_error(grade, axis.stroke)):
         raise psec.error("screw_grade", f"grade {grade} has no lead tolerance over a {axis.stroke * 1e3:.0f} mm "

@@ -15,8 +15,9 @@ General Catalog A-712..A-716; :mod:`axisopt.physics.accuracy`), each the largest
 
 ``positioning_error`` adds them arithmetically (worst case: :func:`axisopt.physics.accuracy.worst_case_total`);
 it does not rise with the nut preload (the elastic row falls, the others stay), as model.limits declares.
-``repeatability`` is an estimate: lost motion plus the thermal row
-(:func:`axisopt.physics.accuracy.repeatability_estimate`).
+``repeatability`` is ISO 230-2's scatter (:func:`axisopt.physics.accuracy.repeatability_iso`): the reversal (lost
+motion) and the noise band (a scale's read head; a motor encoder's counts, negligible); the thermal drift is its
+own row, not repeatability.
 """
 
 from __future__ import annotations
@@ -71,8 +72,13 @@ def positioning_budget(p, mounting: str, preload, axial_force, mean_force, rock)
     elastic = pa.stiffness_positioning_error(p["axial_load"], k_soft)
     abbe = pa.abbe_error(p["tool_height"], p["guide_pitch"]) + pa.abbe_error(p["tool_offset"], p["guide_yaw"])
     lost = lost_motion(p)
-    lead = p["lead_error"] + 0.0 * elastic
+    # a linear scale on the table (p["scale_feedback"] 1): its error in place of the lead row, and the screw's
+    # thermal growth out of the loop (the scale measures the table, not the screw)
+    scale = p.get("scale_feedback", 0.0)
+    lead = (1.0 - scale) * p["lead_error"] + scale * p.get("scale_error", 0.0) + 0.0 * elastic
+    thermal = (1.0 - scale) * thermal
+    noise = scale * p.get("scale_repeatability", 0.0) + 0.0 * elastic
     return {"lead_error": lead, "thermal_error": thermal, "elastic_error": elastic, "abbe_error": abbe + 0.0 * elastic,
             "lost_motion": lost + 0.0 * elastic,
             "positioning_error": pa.worst_case_total(lead, thermal, elastic, abbe, lost),
-            "repeatability": pa.repeatability_estimate(lost, thermal)}
+            "repeatability": pa.repeatability_iso(lost, noise)}

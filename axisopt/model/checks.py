@@ -27,10 +27,26 @@ CHECK_LABELS = MappingProxyType({c.name: c.label for c in CHECK_TABLE})
 # A-738..A-740 take "fixed-fixed" (eta_2 = 20) for a fixed-supported screw, with l_a the distance between the
 # mounting positions.  The critical speed keeps the screw's own mounting (lambda_2 of the mounting).
 BUCKLING_END_CONDITION = "fixed-fixed"
+# How the nut holds the shaft (axis.buckling_nut_end): "fixed" (a long nut in a rigid bracket on a guided table:
+# the THK examples above, the default), or "supported" (the nut a pinned end: MiSUMi "Selection of Ball Screws 2"
+# p. 1676, whose example takes a fixed-support shaft's m = 10 over the distance between the points of buckling
+# load, d 12.5 mm, l 820 mm: 3 630 N, half the fixed-end figure)
+BUCKLING_NUT_ENDS = {"fixed": "fixed-fixed", "supported": "fixed-supported"}
 # Above this a margin says only "not limiting" (e.g. buckling when pretension keeps the screw in tension).
 MARGIN_CAP = 1e3
 # THK catalog A15 eq. 6: permissible tensile/compressive load of the shaft, P2 = sigma A, sigma = 147 MPa.
 SCREW_YIELD_STRESS = 147e6
+
+# DN: each screw vendor states its limit on its own diameter (catalogs/SOURCES.md stores every row's limit on
+# the nominal diameter the model divides by): THK on the ball centre-to-centre diameter dp (A-697, stored as
+# limit x d / dp), HIWIN GmbH (H-BS 3.7.6) and Rexroth (R310RU 3301 p. 99) on the nominal diameter, HIWIN
+# Taiwan (S99TE20 p. 33) on the pitch-circle diameter.
+DN_RULES = MappingProxyType({
+    "THK": "THK A-697: DN on the ball centre diameter dp",
+    "HIWIN": "HIWIN H-BS 3.7.6: d0 x n on the nominal diameter",
+    "Bosch Rexroth": "Rexroth R310 p. 99: d0 x n on the nominal diameter",
+})
+DN_RULE_OTHER = "d x n on the nominal diameter (the row's own limit)"
 
 # Margin of a check that does not apply to the design (a rotating-nut check on a nut that does not turn, the whirl
 # of a screw that does not turn)
@@ -156,7 +172,9 @@ def checks(p, mounting, preload, loads) -> dict:
     # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK "evaluate
     # both"), nut counted as fixed (BUCKLING_END_CONDITION)
     buck_len = x_far if mounting != "fixed-fixed" else mx.fmax(x_far, span - p["start_offset"])
-    buck = pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_END_CONDITION)
+    held = p.get("buckling_nut_fixed", 1.0)  # 1: the nut a fixed end, 0: a supported one (BUCKLING_NUT_ENDS)
+    buck = held * pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_END_CONDITION) \
+        + (1.0 - held) * pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_NUT_ENDS["supported"])
     compression = mx.fmax(loads["screw_compression"], buck / MARGIN_CAP)
     yield_load = SCREW_YIELD_STRESS * math.pi * p["root_diameter"] ** 2 / 4.0
     tension = mx.fmax(loads["screw_tension"], f_max)
@@ -175,7 +193,8 @@ def checks(p, mounting, preload, loads) -> dict:
     bore = p["bearing_bore"]
     ceiling = pn.preload_ceiling(p["nut_dynamic_load"])
     brg_static, brg_c0, brg_c0_need = bearing_static(p, f_max, loads["bearing_static_load"])
-    lift_need = p["nut_lift_off_safety"] * f_max
+    # each load case with its own load (model.loads.lift_off_load: THK A-725's phases), not all at once
+    lift_need = p["nut_lift_off_safety"] * loads["lift_off_load"]
     turning = unit(p, "nut_rotating") < 0.5  # the screw turns (a nut on a rotating screw)
     margins = {
         "critical_speed": mx.if_else(turning, crit / omega, NOT_APPLICABLE),
@@ -203,6 +222,7 @@ def checks(p, mounting, preload, loads) -> dict:
         "critical_speed": crit, "buckling_load": buck, "yield_load": yield_load, "life": life,
         "bearing_life": brg_life, "guide_life": guide_life, "dn": dn, "nut_lift_off_force": lift,
         "bearing_max_load": brg_max, "nut_static_safety": p["nut_static_load"] / f_max,
+        "screw_slenderness": span / p["nominal_diameter"],
         "screw_sag": (1.0 - p["gravity_axial"]) * ps.screw_sag(p["screw_mass_per_length"], p["root_diameter"],
                                                                span, mounting),
     }

@@ -41,6 +41,7 @@ from ..physics import screw as ps
 from .checks import check_pairs
 from .drag import SCREW_EFFICIENCY
 from .loads import G, balance, balance_force, phase_moving_mass, unit
+from .motorrule import DEFAULT_RULE
 
 NOT_APPLICABLE = 1e9  # margin of a check that does not apply (no motor, horizontal axis for the brake)
 
@@ -156,7 +157,12 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     thrust = friction + pd.force_torque(p["axial_load"], p["lead"], eta, a) + gravity
     thrust_mean = friction + pd.force_torque(p["mean_axial_load"], p["lead"], eta, a) + gravity
     t_peak = mx.fmax(t_peak_cycle, thrust)
-    t_cont = mx.fmax(t_rms, thrust_mean)
+    # an unbalanced (vertical) axis's steady load torque, friction and the weight less a counterbalance (either
+    # way: an overbalanced head pushes up), against the vendor's share of the rated torque (Mitsubishi
+    # MDS-D-SVJ3 eq. 7-12: TL <= 0.6 Tst; model.motorrule), referred to the RMS ratio so one check holds both
+    unbalance = p["gravity_axial"] * (friction + mx.fabs(gravity))
+    unbalance_need = unbalance * p["rms_torque_ratio"] / p.get("unbalance_torque_ratio", DEFAULT_RULE.unbalance)
+    t_cont = mx.fmax(mx.fmax(t_rms, thrust_mean), unbalance_need)
     # peak torque needed, referred to the flat (low-speed) peak: max over phases of |T| T_pk / T_pk(n); convex in
     # the nut preload like |T| (the zone does not depend on it), so the margin holds on an interval of preloads
     factor_of = {s: p["motor_peak_torque"] / mx.fmax(avail, 1e-9) for s, avail in by_speed.items()}  # >= 1
@@ -190,6 +196,7 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     out_rms = mx.if_else(red, mx.fmax(pd.linear_rms_torque(out_torques, durations), out_thrust_mean)
                          if phases else out_thrust_mean, 0.0)
     screw_speed = 2.0 * math.pi * v_max / p["lead"]
+    emergency = p.get("reduction_emergency_torque", p["reduction_accel_torque"])  # T2Stop (params: T2B if none)
     margins = {
         "motor_peak_torque": mx.if_else(has, p["motor_peak_torque"] / use, NOT_APPLICABLE),
         "motor_rated_torque": mx.if_else(has, thrust_ratio / t_cont, NOT_APPLICABLE),
@@ -208,6 +215,10 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
         "reduction_rated_torque": mx.if_else(red, p["reduction_rated_torque"] / mx.fmax(out_rms, 1e-9),
                                              NOT_APPLICABLE),
         "reduction_speed": mx.if_else(red, p["reduction_max_speed"] / mx.fmax(n_motor, 1e-9), NOT_APPLICABLE),
+        # an emergency stop or a collision: the motor's peak (or the drive's torque limit) through the ratio
+        # against the reduction's emergency-stop torque (Beckhoff AG2400 T2Em.stop; Siemens 1FT7 5.4.1)
+        "reduction_emergency_torque": mx.if_else(red * has > 0.5, emergency
+                                                 / (p["motor_peak_torque"] * p["reduction_ratio"]), NOT_APPLICABLE),
     }
     out = {f"margin_{k}": v for k, v in margins.items()}
     out.update(check_pairs({
@@ -219,6 +230,8 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
         "reduction_accel_torque": (p["reduction_accel_torque"], out_peak),
         "reduction_rated_torque": (p["reduction_rated_torque"], out_rms),
         "reduction_speed": (p["reduction_max_speed"], n_motor),
+        "reduction_emergency_torque": (emergency,
+                                       p["motor_peak_torque"] * p["reduction_ratio"]),
     }))
     # energy the motor returns to the drive over one cycle (braking, lowering a vertical axis) and its mean power:
     # what the drive's regenerative resistor must take (Yaskawa 12.8.6), before winding and drive losses
@@ -229,7 +242,7 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     out.update({
         "load_inertia": j_load, "total_inertia": j_tot, "inertia_ratio": ratio, "motor_speed": n_motor,
         "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean,
-        "holding_torque": hold,
+        "holding_torque": hold, "unbalance_torque": unbalance,
         "friction_torque": friction, "gravity_torque": gravity, "duty_time": sum(durations),
         "duty_torques": torques, "zone_factors": factors,
         "output_peak_torque": out_peak, "output_rms_torque": out_rms, "output_thrust_torque": out_thrust,

@@ -94,7 +94,7 @@ ASSUMED_DEFAULTS = (
     ("mean_speed", "mean_speed", "m/min", 1 / 60, "default: half of max_speed",
      lambda a: a.mean_speed is None and not a.duty_cycle),
     ("temperature_rise", "temperature_rise", "K", 1.0, "default without a duty cycle; THK plans for 2-5 degC",
-     lambda a: a.temperature_rise is None and not a.duty_cycle),
+     lambda a: a.temperature_rise is None and not a.rise_from_balance),
     ("pretension_rise", "pretension_rise", "K", 1.0, "default design rise of the auto pretension; THK plans for "
      "2-5 degC", lambda a: a.pretension_rise is None and a.pretension is None and a.mounting == "fixed-fixed"),
     ("load_factor", "load_factor", "", 1.0, "default: THK A-704 Table 19 by max speed, the upper end of the row",

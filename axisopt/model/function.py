@@ -262,7 +262,8 @@ def drive_dict(ev: Evaluation) -> dict | None:
             "peak_torque_Nm": v["peak_torque"],
             "rms_torque_Nm": v["rms_torque"], "thrust_torque_Nm": v["thrust_torque"],
             "mean_thrust_torque_Nm": v["mean_thrust_torque"],
-            "holding_torque_Nm": v["holding_torque"], "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
+            "holding_torque_Nm": v["holding_torque"], "unbalance_torque_Nm": v["unbalance_torque"],
+            "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
             "load_inertia_kgm2": v["load_inertia"], "inertia_ratio": v["inertia_ratio"],
             "duty_time_s": v["duty_time"], "friction_torque_Nm": v["friction_torque"],
             "regen_energy_J": v["regen_energy"], "regen_power_W": v["regen_power"]}

@@ -50,15 +50,16 @@ def single_drive(p) -> bool:
 
 def gantry_params(axis) -> dict:
     """The twin-drive parameters of an :class:`axisopt.design.Axis` (SI floats; :data:`SINGLE` without
-    ``axis.twin_drive``).  The bridge's yaw inertia, when the YAML gives none, is the ESTIMATE of
-    :func:`axisopt.physics.gantry.bridge_yaw_inertia_estimate` (a uniform beam of the bridge's mass,
-    ``axis.moving_mass``, over the span)."""
+    ``axis.twin_drive``).  The bridge's yaw inertia, when the YAML gives none, from its parts
+    (:func:`axisopt.physics.gantry.bridge_yaw_inertia`: a beam over the span and the uprights at the drives,
+    ``twin_drive.upright_mass``, else the ESTIMATE of half the bridge's mass, ``UPRIGHT_SHARE``)."""
     tw = getattr(axis, "twin_drive", None)
     if tw is None:
         return dict(SINGLE)
     inertia = tw.bridge_yaw_inertia
-    if inertia is None:
-        inertia = pg.bridge_yaw_inertia_estimate(axis.moving_mass, tw.span)
+    if inertia is None:  # from the bridge's parts: its uprights as given, else the estimate pg.UPRIGHT_SHARE
+        uprights = pg.UPRIGHT_SHARE * axis.moving_mass if tw.upright_mass is None else tw.upright_mass
+        inertia = pg.bridge_yaw_inertia(axis.moving_mass, tw.span, uprights)
     return {"twin": 1.0, "force_share": tw.force_share,
             "cross_mass": tw.cross_mass, "cross_stroke": tw.cross_stroke, "twin_span": tw.span,
             "bridge_yaw_inertia": float(inertia)}

@@ -76,6 +76,9 @@ LIMIT_TABLE = (
     Limit("max_regen_power", "regen_power", "<=", "power", "W", 1.0,
           "mean power the motor returns to the drive over the duty cycle (braking, lowering) at most this: what "
           "the drive's regenerative resistor takes (Yaskawa Sigma-7 12.8.6)"),
+    Limit("max_slenderness", "screw_slenderness", "<=", "dimensionless", "", 1.0,
+          "bearing span / nominal screw diameter at most this (Schneeberger: consult the maker above 40, an "
+          "intermediate support above 50; evaluate warns above 50)"),
     Limit("max_screw_sag", "screw_sag", "<=", "length", "mm", 1e-3,
           "sag of a horizontal screw under its own weight at most this (beam deflection q L^4 / (k E I) on the root "
           "diameter, untensioned: conservative; 0 on a vertical axis)"),
@@ -84,7 +87,8 @@ LIMIT_TABLE = (
           "deflection at the tool under axial_load + Abbe error of the guides' pitch and yaw + lost motion, "
           "added as a worst case (THK A-712..A-716); the search chooses the grade (catalog.screw_grades)"),
     Limit("max_repeatability", "repeatability", "<=", "length", "um", 1e-6,
-          "repeatability at most this (an estimate: lost motion + thermal growth at the nut)"),
+          "repeatability at most this (ISO 230-2 scatter: the reversal, lost motion, + a scale read head's "
+          "noise band; the thermal drift is its own row of the budget)"),
     Limit("min_kv", "kv", ">=", "frequency", "1/s", 1.0,
           "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, model.servo)"),
 )
@@ -138,7 +142,7 @@ CHECK_TABLE = (
           set_by=(WEIGHT,)),
     Check("guide_life", "guide block L10 travel / required travel", "guide travel", "km", 1e-3),
     Check("dn", "DN limit / DN at max speed", "DN value", "mm.rpm", 1e3 * RPM, set_by=(SPEED,)),
-    Check("nut_lift_off", "nut lift-off force / max axial force", "nut lift-off", "kN", 1e-3, preload=1,
+    Check("nut_lift_off", "nut lift-off force / largest load case", "nut lift-off", "kN", 1e-3, preload=1,
           set_by=(ACCEL, WEIGHT)),
     Check("nut_preload", "preload ceiling (10 % Ca, THK A-687) / nut preload", "nut preload ceiling", "kN", 1e-3,
           preload=-1),
@@ -170,6 +174,8 @@ CHECK_TABLE = (
           1.0, preload=CONVEX, drive=True, set_by=TORQUE_SET_BY),
     Check("reduction_speed", "reduction n1Max / max motor speed", "reduction speed", "rpm", RPM, drive=True,
           set_by=(SPEED,)),
+    Check("reduction_emergency_torque", "reduction T2Stop / motor peak x ratio",
+          "reduction T2Stop", "N.m", 1.0, drive=True, set_by=(RATIO,)),
     Check("guide_static", "guide block C0 / (least f_S x largest block load)", "guide static", "kN", 1e-3),
     Check("nut_static", "nut C0a / (least f_S x largest axial force)", "nut static", "kN", 1e-3),
     # the static set load (pretension, thermal force) rises with the nut preload through the heat balance

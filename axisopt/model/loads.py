@@ -131,6 +131,41 @@ def life_rows(p, moving, f_guides, share=1.0) -> list[dict]:
     return rows
 
 
+def lift_off_load(p, moving, f_guides, f_max, net, share=1.0):
+    """The largest axial load [N] the nut lift-off check holds the preload against, each load case with its own
+    load (THK A-725, A-739: the cut at feed speed, the inertia in the rapid, each phase of a duty cycle with its
+    own acceleration, process force, friction and weight):
+
+    * the axis's largest process force at feed speed (no inertia), with the guide friction and the weight
+      ``net`` (less a counterbalance), always;
+    * a duty cycle of the user's: each phase group's peak inertia force, friction and process force against the
+      motion and its weight (a dwell: its weight and process force); the default cycle: the rapid's inertia
+      force at the axis's acceleration with friction and weight;
+    * ``cut_while_accelerating`` 1 (the user says the cut happens while the axis accelerates): ``f_max``, both
+      at once."""
+    cut = p["axial_load"] + f_guides + net
+    phases = p.get("duty", ())
+    cases = []
+    if getattr(phases, "given", False):
+        for (force, peak, _, direction, mass), _dist in phase_groups(tuple(phases)):
+            m = phase_moving_mass(p, moving, mass)
+            f_fric = f_guides if mass is None else share * guide_friction(p, mass, p["max_speed"])[1]
+            f_proc = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
+            if direction:
+                weight = p["gravity_axial"] * m * G - balance_force(p, direction)
+                accelerated = m + balance(p, "balance_moving_mass")
+                cases.append(mx.fabs(accelerated * peak + direction * (f_fric + f_proc) + weight))
+            else:
+                cases.append(mx.fabs(p["gravity_axial"] * m * G - balance_force(p, 0.0)) + f_proc)
+    else:
+        cases.append((moving + balance(p, "balance_moving_mass")) * p["acceleration"] + f_guides + net)
+    need = cut
+    for c in cases:
+        need = mx.fmax(need, c)
+    flag = p.get("cut_while_accelerating", 0.0)
+    return flag * f_max + (1.0 - flag) * need
+
+
 def life_loads(p, moving, f_guides, share=1.0) -> tuple[list, list]:
     """The signed axial loads [N] and travels [m] of :func:`life_rows`, for the life checks (physics.life)."""
     rows = life_rows(p, moving, f_guides, share)
@@ -194,6 +229,7 @@ def axial_loads(p, moving, whole=None) -> dict:
     return {"life_loads": life, "life_travels": travel,
             "block_load": n_block, "guide_friction": f_guides,
             "guide_friction_static": share * guide_friction(p, p["table_mass"], 0.0)[1], "max_axial_force": f_max,
+            "lift_off_load": lift_off_load(p, moving, f_guides, f_max, net, share),
             "mean_axial_force": f_mean, "pretension": pre, "thermal_force": d_thermal,
             "bearing_static_load": static, "screw_compression": compression,
             "screw_tension": f_max + pre}

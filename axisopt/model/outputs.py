@@ -132,6 +132,7 @@ OUTPUT_TABLE = (
     _s("rms_torque", "N*m", "RMS motor torque of the duty cycle", drive=True),
     _s("thrust_torque", "N*m", "motor torque under the largest process force", drive=True),
     _s("mean_thrust_torque", "N*m", "motor torque under the mean process force", drive=True),
+    _s("unbalance_torque", "N*m", "steady load torque of an unbalanced (vertical) axis at the motor", drive=True),
     _s("holding_torque", "N*m", "torque that holds a vertical axis at rest", drive=True),
     _s("friction_torque", "N*m", "friction torque at the motor", drive=True),
     _s("gravity_torque", "N*m", "gravity torque at the motor of a vertical axis", drive=True),
@@ -156,6 +157,7 @@ OUTPUT_TABLE = (
     _s("thermal_growth", "m", "largest thermal growth of the screw at the nut", preload=1, chain=True),
     _s("c_unit_bearing", "m/N", "compliance of a rotating-nut unit's bearing", chain=True),
     _s("screw_sag", "m", "sag of a horizontal screw under its own weight"),
+    _s("screw_slenderness", "", "bearing span over the nominal screw diameter"),
     _s("unit_bearing_life", "s", "L10 life of a rotating-nut unit's bearing"),
     _s("gantry_moving_mass", "kg", "moving mass of the whole gantry"),
     _s("lead_error", "m", "positioning budget: lead error of the screw's grade over the stroke", chain=True),
@@ -165,7 +167,7 @@ OUTPUT_TABLE = (
     _s("lost_motion", "m", "positioning budget: lost motion", chain=True, drive=True),
     _s("positioning_error", "m", "positioning budget: worst-case total", preload=-1, chain=True,
        coupling=True, drive=True),
-    _s("repeatability", "m", "repeatability (an estimate: lost motion + thermal growth at the nut)", chain=True,
+    _s("repeatability", "m", "repeatability (ISO 230-2: reversal + noise band)", chain=True,
        drive=True),
 )
 OUTPUTS = MappingProxyType({o.name: o for o in OUTPUT_TABLE})

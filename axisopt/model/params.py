@@ -8,12 +8,13 @@ import numpy as np
 
 from ..catalog import ARRANGEMENT_ROWS, COLUMNS
 from ..design import PRETENSION_RISE, TEMPERATURE_RISE
-from ..grades import lead_errors, price_factors
+from ..grades import SCALE_GRADES, lead_errors, price_factors, scale_error
 from ..physics import counterbalance as pcb
 from ..physics.bearings import STATIC_SAFETY_MACHINE_TOOL, housing_stiffness_default, support_starting_torque_envelope
 from ..physics.drive import PEAK_CORNER_FRACTION
 from ..physics.nut import bracket_stiffness_default, nut_stiffness_catalog
 from .gantry import TWIN_PARAMS, gantry_params
+from .motorrule import DEFAULT_RULE
 
 # A guide row without a rating basis: 50 km, the shorter of the vendors' two bases (a C defined for 100 km and
 # read as a 50 km rating halves the life, never doubles it)
@@ -57,9 +58,13 @@ PARAM_NAMES = (
     "pitch_inertia", "yaw_inertia", "guide_static_safety", "nut_static_safety", "duty_process",
     "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed", "temperature_rise_auto",
     "heat_transfer", "shaft_ends", "pretension_rise",
+    # the motor vendor's rule on an unbalanced axis's load torque (model.motorrule), a reduction's emergency-stop
+    # torque, the nut lift-off check's load case (1: the cut while accelerating)
+    "unbalance_torque_ratio", "reduction_emergency_torque", "cut_while_accelerating", "buckling_nut_fixed",
     # accuracy: the screw's lead error over the stroke by its grade and the grade's price factor on the
     # shaft; the guides' running pitch and yaw (model.accuracy)
-    "lead_error", "grade_price_factor", "guide_pitch", "guide_yaw",
+    "lead_error", "grade_price_factor", "guide_pitch", "guide_yaw", "scale_feedback", "scale_error",
+    "scale_repeatability",
     # reduction: a catalog part, or none (the axis's reduction_* values above, its checks off); its
     # output-side ratings, its torsional compliance (in series with the coupling) and its input speed limit
     "has_reduction", "reduction_rated_torque", "reduction_accel_torque", "reduction_compliance",
@@ -87,9 +92,9 @@ _RULE_COLUMNS = MappingProxyType({
                                                 "static_safety"),
     "guides": ("type", "rating_distance"),
     "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
-               "peak_corner_speed", "peak_torque_at_max_speed"),
+               "peak_corner_speed", "peak_torque_at_max_speed", "rms_ratio", "unbalance_ratio"),
     "couplings": ("torsional_stiffness", "inertia"),
-    "reductions": ("torsional_stiffness",),
+    "reductions": ("torsional_stiffness", "emergency_torque"),
 })
 
 
@@ -134,7 +139,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
         "gravity_axial": 1.0 if axis.orientation == "vertical" else 0.0,
         # a duty cycle and no temperature_rise given: the heat balance (model.heat) sets the rise
         "temperature_rise": TEMPERATURE_RISE if axis.temperature_rise is None else axis.temperature_rise,
-        "temperature_rise_auto": 1.0 if (axis.temperature_rise is None and axis.duty_cycle) else 0.0,
+        "temperature_rise_auto": 1.0 if axis.rise_from_balance else 0.0,
         "heat_transfer": 0.0 if axis.heat_transfer is None else axis.heat_transfer,
         "pretension": 0.0 if axis.pretension is None else axis.pretension,
         "pretension_auto": 1.0 if (axis.pretension is None and mounting == "fixed-fixed") else 0.0,
@@ -164,6 +169,8 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
         "bearing_static_safety": _listed_or(col(bearing, "static_safety"), STATIC_SAFETY_MACHINE_TOOL)
         if axis.bearing_static_safety is None else axis.bearing_static_safety,
         "nut_lift_off_safety": axis.nut_lift_off_safety,
+        "cut_while_accelerating": 1.0 if axis.cut_while_accelerating else 0.0,
+        "buckling_nut_fixed": 1.0 if axis.buckling_nut_end == "fixed" else 0.0,
     })
     p.update(grade_params(axis, screw, grade))
     p.update(rotating_nut_params(p, nut))
@@ -190,10 +197,16 @@ def grade_params(axis, screw, grade=None) -> dict:
             grade = screw["grade"]
         except (KeyError, IndexError, ValueError):
             grade = DEFAULT_GRADE
-    err, factor = lead_errors(grade, axis.stroke), price_factors(grade)
+    err, factor = lead_errors(grade, axis.stroke, axis.pitch_compensation), price_factors(grade)
+    scale = axis.feedback == "linear_scale"
     return {"lead_error": err if np.ndim(err) else float(err),
             "grade_price_factor": factor if np.ndim(factor) else float(factor),
-            "guide_pitch": axis.guide_pitch, "guide_yaw": axis.guide_yaw}
+            "guide_pitch": axis.guide_pitch, "guide_yaw": axis.guide_yaw,
+            # a linear scale on the table (closed loop): its grade's error over the stroke and its read head's
+            # repeatability (grades.SCALE_GRADES) take the place of the screw's lead and thermal rows
+            "scale_feedback": 1.0 if scale else 0.0,
+            "scale_error": scale_error(axis.scale_grade, axis.stroke) if scale else 0.0,
+            "scale_repeatability": SCALE_GRADES[axis.scale_grade].repeatability if scale else 0.0}
 
 
 def counterbalance_params(axis) -> dict:
@@ -289,7 +302,8 @@ def drive_params(axis, motor, coupling, reduction=None) -> dict:
     (the search's direct-drive choice beside the catalog's reductions): the axis's reduction values then."""
     col = _getter
     q = {"max_inertia_ratio": axis.max_inertia_ratio, "brake_safety": axis.brake_safety,
-         "rms_torque_ratio": axis.rms_torque_ratio}
+         "rms_torque_ratio": DEFAULT_RULE.rms if axis.rms_torque_ratio is None else axis.rms_torque_ratio,
+         "unbalance_torque_ratio": DEFAULT_RULE.unbalance}
     q.update(reduction_params(axis, reduction))
     ratio = q["reduction_ratio"]
     if motor is None:
@@ -309,6 +323,14 @@ def drive_params(axis, motor, coupling, reduction=None) -> dict:
             col(motor, "peak_corner_speed"),
             np.minimum(col(motor, "rated_speed"), PEAK_CORNER_FRACTION * col(motor, "max_speed")))
         q["motor_peak_at_max_speed"] = _listed_or(col(motor, "peak_torque_at_max_speed"), col(motor, "rated_torque"))
+        # the motor vendor's selection rule (model.motorrule; a row without one: the harshest), unless the
+        # problem asks its own RMS ratio
+        if axis.rms_torque_ratio is None:
+            q["rms_torque_ratio"] = _listed_or(_optional(motor, "rms_ratio"), DEFAULT_RULE.rms)
+        q["unbalance_torque_ratio"] = _listed_or(_optional(motor, "unbalance_ratio"), DEFAULT_RULE.unbalance)
+        if axis.torque_limit is not None:  # the drive's torque limit caps what the motor gives at every speed
+            q["motor_peak_torque"] = np.minimum(q["motor_peak_torque"], axis.torque_limit)
+            q["motor_peak_at_max_speed"] = np.minimum(q["motor_peak_at_max_speed"], axis.torque_limit)
     if coupling is None:
         q.update({"has_coupling": 0.0, "coupling_stiffness": axis.coupling_stiffness,
                   "coupling_inertia": axis.coupling_inertia, "coupling_rated_torque": 1.0,
@@ -329,13 +351,17 @@ def reduction_params(axis, reduction) -> dict:
     none = {"has_reduction": 0.0, "reduction_ratio": axis.reduction_ratio,
             "reduction_efficiency": axis.reduction_efficiency, "reduction_inertia": axis.reduction_inertia,
             "reduction_rated_torque": 1.0, "reduction_accel_torque": 1.0, "reduction_compliance": 0.0,
-            "reduction_max_speed": 1.0, "reduction_price": 0.0, "reduction_backlash": 0.0}
+            "reduction_max_speed": 1.0, "reduction_price": 0.0, "reduction_backlash": 0.0,
+            "reduction_emergency_torque": 1.0}
     if reduction is None:
         return none
     col = _getter
     has = np.isfinite(col(reduction, "ratio"))
     q = {param: _listed_or(col(reduction, column), none[param]) for column, param in PART_PARAMS["reductions"]}
     q["has_reduction"] = has * 1.0 if np.ndim(has) else float(has)
+    # the emergency-stop torque where the vendor lists it, else T2B (never above it)
+    q["reduction_emergency_torque"] = _listed_or(_optional(reduction, "emergency_torque"),
+                                                 q["reduction_accel_torque"])
     # the stage's torsional stiffness (output side) as a compliance, in series with the coupling's (model.chain)
     q["reduction_compliance"] = _listed_or(1.0 / col(reduction, "torsional_stiffness"), 0.0)
     return q

@@ -16,7 +16,7 @@ from __future__ import annotations
 from axisopt import mathx as mx
 
 __all__ = ["lead_error_tolerance", "lead_error_per_300", "required_error_per_300", "stiffness_positioning_error",
-           "abbe_error", "worst_case_total", "repeatability_estimate"]
+           "abbe_error", "worst_case_total", "repeatability_estimate", "repeatability_iso"]
 
 
 def lead_error_tolerance(travel_deviation, variation):
@@ -97,6 +97,18 @@ def worst_case_total(*rows):
     for r in rows:
         total = total + r
     return total
+
+
+def repeatability_iso(reversal, noise_band):
+    r"""Bidirectional repeatability of the axis as ISO 230-2 defines it, the scatter of repeated approaches.
+
+    .. math:: R = \max(2 s_\uparrow + 2 s_\downarrow + |B|,\ 4 s) = |B| + 4 s \quad (s_\uparrow = s_\downarrow = s)
+
+    reversal : B, the reversal value (the lost motion: axial clearance, a reduction's backlash) [m];
+    noise_band : 4 s, the band of the random scatter of one direction's approaches [m] (a scale's read-head
+    repeatability band; a motor encoder's quantization, negligible: 0).  Returns R [m].  The thermal drift is a
+    systematic change over time, not scatter: ISO 230-3 measures it apart (its own row of the budget)."""
+    return reversal + noise_band
 
 
 def repeatability_estimate(lost_motion, thermal):

@@ -90,6 +90,22 @@ def yaw_stiffness(k1, k2, span, k_guides=0.0):
     return (k1 + k2) * (0.25 * span * span) + k_guides
 
 
+def bridge_yaw_inertia(bridge_mass, span, upright_mass):
+    r"""The bridge's yaw inertia about its centre from its parts [kg m^2]: the beam (the bridge's mass less its
+    uprights) as a uniform slender beam over the span, the uprights (both together) as masses at the drives,
+    :math:`J_b = (m_b - m_u) L^2 / 12 + m_u (L/2)^2` (rigid-body inertia of a beam and two end masses).
+    bridge_mass : m_b, the whole bridge [kg];  span : L [m];  upright_mass : m_u, both uprights [kg], at most
+    m_b."""
+    beam = bridge_mass - upright_mass
+    return beam * span * span / 12.0 + upright_mass * 0.25 * span * span
+
+
+# Where the problem gives neither the bridge's inertia nor its uprights: half the bridge's mass in its uprights
+# at the drives (an ESTIMATE, conservative for the racking mode against the uniform beam: J = m L^2 / 6, twice
+# m L^2 / 12; a bridge with its uprights as light as a beam section would sit between)
+UPRIGHT_SHARE = 0.5
+
+
 def bridge_yaw_inertia_estimate(bridge_mass, span):
     r"""ESTIMATE of the bridge's yaw inertia about its centre [kg m^2]: a uniform slender beam of the bridge's
     mass over the span between the drives, :math:`J_b = m_b L^2 / 12` (no published figure for a machine's

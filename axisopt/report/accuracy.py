@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-from ..grades import grade_table
+from ..grades import SCALE_GRADES, grade_table
 
 ARCSEC = math.pi / 180.0 / 3600.0
 
@@ -18,22 +18,49 @@ def lead_source(grade: str, stroke: float) -> str:
     return f"e_p + v_u over {stroke * 1e3:.0f} mm, THK A-678 Table 1"
 
 
+def reduction_lost_motion(design) -> float:
+    """A reduction part's torsional backlash through the lead at the table [m] (model.drive.lost_motion's
+    second term; 0 without a reduction part)."""
+    r = design.reduction
+    if r is None:
+        return 0.0
+    return float(r["backlash"]) * float(design.screw["lead"]) / (2.0 * math.pi)
+
+
 def budget_rows(ev) -> list:
     """(label, value [m], source) of each row, the total and the repeatability."""
     d, v = ev.design, ev.values
     a = d.axis
-    rise = "heat balance, nut's top preload" if a.temperature_rise is None and a.duty_cycle else "the rise used"
+    rise = "heat balance, nut's top preload" if a.rise_from_balance else "the rise used"
     pitch, yaw = a.guide_pitch / ARCSEC, a.guide_yaw / ARCSEC
+    red = reduction_lost_motion(d)
+    if a.feedback == "linear_scale":
+        g = SCALE_GRADES[a.scale_grade]
+        lead_row = (f"linear scale {a.scale_grade}", float(v["lead_error"]),
+                    f"{g.source} per m, at least 1 m")
+        thermal_row = ("thermal growth at the nut (outside the loop)", float(v["thermal_error"]),
+                       "the scale measures the table")
+    else:
+        if a.pitch_compensation:
+            lead_row = (f"lead error, grade {d.grade}, compensated", float(v["lead_error"]),
+                        "what compensation leaves: v_u, THK A-677")
+        else:
+            lead_row = (f"lead error, grade {d.grade}", float(v["lead_error"]), lead_source(d.grade, a.stroke))
+        thermal_row = ("thermal drift at the nut", float(v["thermal_error"]), f"{rise}; THK A-715")
+    noise = ("scale head" if a.feedback == "linear_scale" else "encoder: negligible")
     return [
-        (f"lead error, grade {d.grade}", float(v["lead_error"]), lead_source(d.grade, a.stroke)),
-        ("thermal growth at the nut", float(v["thermal_error"]), f"{rise}; THK A-715"),
+        lead_row,
+        thermal_row,
         (f"deflection at the tool under {a.axial_load:.0f} N", float(v["elastic_error"]),
          "softest point, chain + rocking; THK A-713"),
         (f"Abbe: pitch {pitch:.3g}\" x {a.tool_height_eff * 1e3:.0f} mm, yaw {yaw:.3g}\" x "
          f"{a.tool_offset * 1e3:.0f} mm", float(v["abbe_error"]), "THK A-716 eq. 39"),
-        ("lost motion (nut play, reduction backlash)", float(v["lost_motion"]), "0: preloaded nut; THK A-712"),
+        ("lost motion, nut play", float(v["lost_motion"]) - red, "0: preloaded nut; THK A-712"),
+        *([(f"lost motion, reduction {d.reduction['id']}", red,
+            f"backlash {float(d.reduction['backlash']) * 10800 / math.pi:g} arcmin x lead / 2 pi")]
+          if d.reduction is not None else []),
         ("total, arithmetic worst case", float(v["positioning_error"]), "every row at its worst at once"),
-        ("repeatability (estimate)", float(v["repeatability"]), "lost motion + thermal growth"),
+        ("repeatability (ISO 230-2)", float(v["repeatability"]), f"reversal + noise, {noise}"),
     ]
 
 

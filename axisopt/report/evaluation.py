@@ -8,16 +8,18 @@ import textwrap
 
 import numpy as np
 
-from ..design import PRETENSION_RISE, rotating_nut
+from ..design import PRETENSION_RISE, TEMPERATURE_RISE, rotating_nut
 from ..display import fmt
 from ..model import CHECKS, Evaluation, passes
+from ..model.checks import DN_RULE_OTHER, DN_RULES
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.limits import CHECK_TABLE
 from ..model.loads import balance_summary
+from ..model.motorrule import DEFAULT_RULE, rule_text
 from ..model.params import axis_params
 from ..model.servo import servo_response
 from ..units import N_PER_UM
-from .accuracy import budget_dict, budget_lines
+from .accuracy import budget_dict, budget_lines, reduction_lost_motion
 from .gantry import twin_dict, twin_lines
 from .lifeloads import life_dict, life_lines
 from .servo import servo_dict, servo_lines
@@ -75,6 +77,13 @@ def allowed_note(rows) -> str:
 
 # checks whose needed value means nothing when the check does not apply (a rotating nut's screw stands still)
 NOT_LOADED = ("critical_speed", "dn_limit", "bearing_speed", "coupling_speed")
+# THK A-715: "set a negative target value for the reference travel distance assuming a temperature increase of 2
+# to 5 degC (-0.02 mm to -0.06 mm/m)": growth beyond 0.06 mm per metre (a rise beyond 5 K) leaves that practice
+PRACTICE_GROWTH = 0.06e-3  # [m/m]
+PRACTICE_RISE_MAX = 5.0  # [K]
+# Schneeberger ball screws, permissible speed: "if Ln/d0 > 50 an intermediate support is needed; consult the maker
+# above 40" (tech-doc pages, docs/assumptions.md)
+SLENDERNESS_SUPPORT, SLENDERNESS_CONSULT = 50.0, 40.0
 
 
 def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
@@ -101,7 +110,23 @@ def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
     note = allowed_note(rows)
     if note:
         lines.extend(textwrap.wrap(note, WIDTH, initial_indent="  ", subsequent_indent="    "))
+    lines.extend(textwrap.wrap("  rules: " + "; ".join(rule_notes(ev)), WIDTH, subsequent_indent="    "))
     return lines
+
+
+def rule_notes(ev: Evaluation) -> list:
+    """Whose rule each vendor-dependent check applies: the DN by the screw's vendor, the nut lift-off's load
+    cases (model.loads.lift_off_load)."""
+    d = ev.design
+    out = ["DN " + DN_RULES.get(str(d.screw["vendor"]), DN_RULE_OTHER),
+           "buckling with the nut a " + ("fixed end (THK A-726)" if d.axis.buckling_nut_end == "fixed" else
+                                        "supported end (MiSUMi Selection of Ball Screws 2)")]
+    if d.nut["type"] == "double":
+        out.append("lift-off: the cut and the inertia at once (axis.cut_while_accelerating)"
+                   if d.axis.cut_while_accelerating else
+                   "lift-off: each load case its own load (THK A-725: the cut at feed speed, the inertia in the "
+                   + ("duty cycle's phases)" if d.axis.duty_cycle else "rapid)"))
+    return out
 
 def _fmt(v, nd=1):
     if v is None or (isinstance(v, float) and not math.isfinite(v)):
@@ -309,6 +334,12 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
             f"screw sag under its own weight {sag * 1e3:.2f} mm between the supports {a.span * 1e3:.0f} mm apart "
             "(a beam; the nut carries the shaft where it stands, and a pretension, gone when warm, is not "
             "counted; no vendor gives a limit: limits.max_screw_sag)", WIDTH, subsequent_indent="  "))
+    slender = float(v["screw_slenderness"])
+    if slender > SLENDERNESS_SUPPORT:
+        lines.extend(textwrap.wrap(
+            f"warning: the screw is {slender:.0f} diameters long between its supports (span {a.span * 1e3:.0f} mm): "
+            f"Schneeberger asks an intermediate support above {SLENDERNESS_SUPPORT:g} (consult the maker above "
+            f"{SLENDERNESS_CONSULT:g}); limits.max_slenderness bounds it", WIDTH, subsequent_indent="  "))
     lines.extend(twin_lines(ev))
     lines.append(_thermal_line(ev))
     lines.extend(budget_lines(ev))
@@ -319,8 +350,7 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
                  f"{z['zeta_structure']:.1f}; seed T. 5-7)")
     lines.extend(textwrap.wrap(
         f"drive-train modes (motor free) {float(np.asarray(v['f_axial_torsional'])[i_min]):.0f} and "
-        f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  lost motion {v['backlash'] * 1e6:.0f} um "
-        + ("(nut play and the reduction's backlash)" if ev.design.reduction is not None else "(nut play)"),
+        f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  " + _lost_motion_text(ev),
         WIDTH, subsequent_indent="  "))
     lines.append("")
     lines.extend(drive_lines(ev))
@@ -412,27 +442,36 @@ def drive_lines(ev: Evaluation) -> list:
                             + (f", gravity {v['gravity_torque']:.3f} N.m" if a.orientation == "vertical" else ""),
                             WIDTH, initial_indent="  ", subsequent_indent="    ")]
     scaled = abs(v["needed_motor_peak_torque"] - v["peak_torque"]) > 1e-9 * v["peak_torque"]
+    rms_ratio = float(v["available_motor_rated_torque"]) / float(m["rated_torque"])
+    unb_ratio = _row_number(m, "unbalance_ratio", DEFAULT_RULE.unbalance)
+    peak = float(v["available_motor_peak_torque"])
+    limited = "" if a.torque_limit is None else f", axis.torque_limit {fmt(a.torque_limit, 'N.m')}"
     # the needed column holds what the check compares: the cycle's peak scaled to the flat peak where the motor's
     # zone falls at speed (the cycle's own peak on the line below)
     rows = [("peak torque (cycle, thrust)", f"{v['needed_motor_peak_torque']:.3f} N.m" + (" *" if scaled else ""),
-             f"{fmt(m['peak_torque'], 'N.m')} (motor peak, zone by speed)"),
+             f"{fmt(peak, 'N.m')} (motor peak, zone by speed{limited})"),
             ("RMS torque, mean thrust", f"{v['rms_torque']:.3f}, {v['mean_thrust_torque']:.3f} N.m",
-             f"{a.rms_torque_ratio:g} x {fmt(m['rated_torque'], 'N.m')} (rated)"),
+             f"{rms_ratio:g} x {fmt(m['rated_torque'], 'N.m')} (rated)"),
             ("motor speed", f"{v['motor_speed'] * RPM:,.0f} rpm", f"{m['max_speed'] * RPM:,.0f} rpm (max)"),
             ("inertia ratio load/rotor", f"{v['inertia_ratio']:.2f} ({fmt(v['load_inertia'] * 1e4, 'kg.cm^2')})",
              f"{a.max_inertia_ratio:g} (axis.max_inertia_ratio)")]
     if a.orientation == "vertical":
+        rows.append(("unbalanced load torque", f"{v['unbalance_torque']:.3f} N.m",
+                     f"{unb_ratio:g} x {fmt(m['rated_torque'], 'N.m')} (rated)"))
         brake = float(m["brake_torque"]) if math.isfinite(float(m["brake_torque"])) else 0.0
         rows.append(("holding torque at a stop", f"{v['holding_torque']:.3f} N.m",
                      f"{fmt(brake, 'N.m')} brake / {a.brake_safety:g}" if brake else "no brake listed"))
     if d.coupling is not None:
-        rows.append(("coupling torque", f"{fmt(m['peak_torque'] * ratio, 'N.m')} (motor peak)",
+        rows.append(("coupling torque", f"{fmt(peak * ratio, 'N.m')} (motor peak)",
                      f"{fmt(d.coupling['rated_torque'], 'N.m')} (rated)"))
     if r is not None:
         rows.append(("output torque peak (cycle)", fmt(v["output_peak_torque"], "N.m"),
                      f"{fmt(float(r['accel_torque']), 'N.m')} (T2B)"))
         rows.append(("output torque RMS, thrust", fmt(v["output_rms_torque"], "N.m"),
                      f"{fmt(float(r['rated_torque']), 'N.m')} (T2N)"))
+        stop = "T2Stop" if math.isfinite(_row_number(r, "emergency_torque", math.nan)) else "T2B, no T2Stop listed"
+        rows.append(("E-stop: motor peak x ratio", fmt(v["needed_reduction_emergency_torque"], "N.m"),
+                     f"{fmt(v['available_reduction_emergency_torque'], 'N.m')} ({stop})"))
     lines.append(f"  {'':<28}{'needed':>26}   available")
     for name, need, have in rows:
         lines.extend(textwrap.wrap(f"  {name:<28}{need:>26}   {have}", WIDTH, subsequent_indent=" " * 59))
@@ -440,6 +479,9 @@ def drive_lines(ev: Evaluation) -> list:
         lines.extend(textwrap.wrap(f"    * the cycle's peak {v['peak_torque']:.3f} N.m scaled to the motor's flat "
                                    "peak (its zone falls at the speed of that peak): what the check compares",
                                    WIDTH, subsequent_indent="      "))
+    lines.extend(textwrap.wrap("motor rule: " + rule_text(str(m["vendor"]), rms_ratio, unb_ratio,
+                                                          a.rms_torque_ratio),
+                               WIDTH, initial_indent="  ", subsequent_indent="    "))
     lines.extend(textwrap.wrap(
         f"regeneration {v['regen_energy']:,.0f} J per cycle back from the motor, {v['regen_power']:,.0f} W mean "
         "(braking" + (", lowering" if a.orientation == "vertical" else "") + "; before winding and drive losses): "
@@ -449,10 +491,49 @@ def drive_lines(ev: Evaluation) -> list:
     return lines
 
 
+def _lost_motion_text(ev) -> str:
+    """The lost motion at the table by its cause: the nut's play and a reduction's backlash, each named."""
+    red = reduction_lost_motion(ev.design)
+    nut = float(ev.values["backlash"]) - red
+    if ev.design.reduction is None:
+        return f"nut backlash {nut * 1e6:.0f} um"
+    return f"lost motion: nut {nut * 1e6:.0f} um, reduction {red * 1e6:.0f} um"
+
+
+def _row_number(row, col: str, default: float) -> float:
+    """A part row's number in ``col``; ``default`` where it is empty or the table has no such column."""
+    try:
+        v = float(row[col])
+    except (KeyError, TypeError, ValueError):
+        return default
+    return v if math.isfinite(v) else default
+
+
 def _unit_rigidity_estimated(design) -> bool:
     """A rotating-nut unit whose row lists no bearing rigidity (the model's estimate stands in)."""
     v = design.nut.get("unit_bearing_rigidity", math.nan) if hasattr(design.nut, "get") else math.nan
     return not (isinstance(v, float) and math.isfinite(v))
+
+
+def thermal_warning(ev: Evaluation) -> str:
+    """A warning where the thermal growth at the nut exceeds THK A-715's planning range (a negative target
+    travel of -0.02 to -0.06 mm/m for a 2-5 degC rise: PRACTICE_GROWTH per metre from the fixed bearing), or
+    where the practice rise is used but the heat balance of the default cycle would exceed it ('' if neither)."""
+    a, v = ev.design.axis, ev.values
+    x_far = a.start_offset + a.stroke
+    allowed = PRACTICE_GROWTH * x_far
+    growth = float(v["thermal_growth"])
+    out = []
+    if growth > allowed * (1 + 1e-9):
+        out.append(f"thermal growth {growth * 1e6:.0f} um exceeds THK A-715's planning range (0.06 mm/m, a "
+                   f"5 degC rise: {allowed * 1e6:.0f} um at {x_far * 1e3:.0f} mm from the fixed bearing); "
+                   "limits.max_thermal_growth bounds it, a cooled screw (axis.heat_transfer), a lower preload "
+                   "or a scale (feedback) takes it out")
+    balance = float(v["heat_balance_rise"])
+    if not a.rise_from_balance and a.temperature_rise is None and balance > PRACTICE_RISE_MAX:
+        out.append(f"the heat balance of continuous rapids gives +{balance:.3g} K, above THK A-715's 2-5 degC "
+                   "planning range the practice rise assumes (axis.rise_without_cycle: balance uses it)")
+    return ("warning: " + "; ".join(out)) if out else ""
 
 
 def _thermal_line(ev: Evaluation) -> str:
@@ -460,10 +541,13 @@ def _thermal_line(ev: Evaluation) -> str:
     u = np.asarray(v["thermal_displacement"])
     text = (f"thermal: +{float(v['temperature_rise']):.3g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
             f"(alpha 11.6e-6/K, HIWIN F 3.36)")
-    used = a.temperature_rise is None and a.duty_cycle
-    how = ("rise from the heat balance of the duty cycle" if used else
+    used = a.rise_from_balance
+    how = ("rise from the heat balance of the duty cycle" if used and a.duty_cycle else
+           f"rise from the heat balance of the default cycle (axis.rise_without_cycle: balance; the practice rise "
+           f"would be {TEMPERATURE_RISE:g} K), continuous rapids" if used else
            "rise as given; the heat balance" if a.temperature_rise is not None else
-           "rise: default (THK A-715), no duty cycle; the heat balance of continuous rapids")
+           "rise: THK A-715's practice rise (axis.rise_without_cycle: practice), no duty cycle; the heat balance "
+           "of continuous rapids")
     film = ("axis.heat_transfer" if a.heat_transfer is not None else
             "free convection: a standing screw under a rotating nut" if rotating_nut(ev.design.nut) else
             "Jungnickel rotating shaft over the cycle, with free convection")
@@ -473,6 +557,9 @@ def _thermal_line(ev: Evaluation) -> str:
                f"{float(v['heat_transfer']):.3g} W/(m^2.K) ({film}), conduction through the nut bracket and the "
                f"shaft ends (estimated conductances, docs/assumptions.md){rise}")
     text += "\n" + "\n".join(textwrap.wrap(balance, WIDTH, initial_indent="  ", subsequent_indent="    "))
+    warn = thermal_warning(ev)
+    if warn:
+        text += "\n" + "\n".join(textwrap.wrap(warn, WIDTH, initial_indent="  ", subsequent_indent="    "))
     if a.mounting == "fixed-fixed":
         pre, push = float(v["pretension"]), float(v["thermal_force"])
         design = PRETENSION_RISE if a.pretension_rise is None else a.pretension_rise

@@ -69,7 +69,9 @@ def twin_lines(ev: Evaluation) -> list:
     d = twin_dict(ev).get("twin_drive")
     if d is None:
         return []
-    est = " (estimate m L^2/12)" if d["bridge_yaw_inertia_estimated"] else ""
+    tw = ev.design.axis.twin_drive
+    est = ((" (uprights estimated: half the bridge at the drives)" if tw.upright_mass is None else
+            " (beam + uprights at the drives)") if d["bridge_yaw_inertia_estimated"] else "")
     L = [f"twin drive: 2 drives {d['span_mm']:.0f} mm apart, cross carriage {d['cross_mass_kg']:.0f} kg over "
          f"{d['cross_stroke_mm']:.0f} mm; governing side at the stroke end: "
          f"{d['governing_side_force_share'] * 100:.1f} % of the process force, "

@@ -69,7 +69,7 @@ def build_space(problem: Problem) -> Space:
     # the lost-motion limit prune drives): a study case differing in any of them builds its own
     key = (id(problem.catalog), problem.restrictions, tuple(problem.mountings), problem.preload_min,
            problem.preload_max, float(problem.axis.reduction_ratio),
-           float(problem.margin_map.get("coupling_torque", 1.0)),
+           float(problem.margin_map.get("coupling_torque", 1.0)), problem.axis.torque_limit,
            _top_speed(problem),
            tuple(float(problem.margin_map.get(k, 1.0)) for k in ("motor_speed", "reduction_speed")),
            float(problem.limit_map.get("max_backlash", np.inf)), _grades_chosen(problem),
@@ -318,6 +318,7 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     ratios = [float(problem.axis.reduction_ratio) if ri is None else float(reductions.number("ratio")[ri])
               for ri in choices]
     need = problem.margin_map.get("coupling_torque", 1.0)
+    limit = np.inf if problem.axis.torque_limit is None else float(problem.axis.torque_limit)
     # the motor speed the cycle asks is smallest on the longest lead of the space (model.drive: 2 pi v / P_h x
     # ratio); a (motor, reduction) that fails the motor-speed or reduction-speed check even there fails it on
     # every screw, and is never formed (a check disabled by a margin of 0 prunes nothing)
@@ -340,7 +341,7 @@ def _add_drives(sp: Space, problem: Problem) -> None:
             if len(couplings) == 0:
                 pairs.append((mi, None, ri))
                 continue
-            peak = float(motors.number("peak_torque")[mi]) * ratio
+            peak = min(float(motors.number("peak_torque")[mi]), limit) * ratio  # a torque limit caps it
             # the coupling-torque check depends on the drive only: drives that fail it are never formed
             ok = couplings.number("rated_torque") >= need * peak * (1.0 - 1e-12)
             pairs.extend((mi, int(ci), ri) for ci in np.nonzero(ok)[0])

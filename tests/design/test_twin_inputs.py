@@ -75,8 +75,9 @@ def test_round_trip_and_estimate(tmp_path):
     g.write_text(design_to_yaml(d))
     assert load_design(g).axis.twin_drive == tw
     p = model.design_params(d)
-    # no inertia given: the estimate m L^2 / 12 of the bridge (axis.moving_mass)
-    assert p["bridge_yaw_inertia"] == pytest.approx(450.0 * 1.0**2 / 12.0)
+    # no inertia or uprights given: the estimate of half the bridge (axis.moving_mass) in its uprights at the
+    # drives, m/2 L^2/12 + m/2 (L/2)^2 = m L^2 / 6
+    assert p["bridge_yaw_inertia"] == pytest.approx(450.0 * 1.0**2 / 6.0)
     assert "twin_drive" not in load_design(tmp_path / "d.yaml").assumed
 
 
@@ -107,7 +108,7 @@ def test_twin_outputs_against_one_side(tmp_path):
     assert tv["guide_max_load"] > ov["guide_max_load"]
     # the gantry modes: the 2-DOF model with both chains at every position
     m_r = tv["m_eff"] - tv["moving_mass"]
-    j_b = 450.0 / 12.0 + 2 * m_r * 0.25
+    j_b = 450.0 / 6.0 + 2 * m_r * 0.25
     lo_end, hi_end = pg.gantry_frequencies(whole - 150.0 + 2 * m_r, j_b, 150.0, 0.3, tv["k_total"], tv["k_total"],
                                            1.0, tv["k_yaw"])
     np.testing.assert_allclose(tv["f_racking"], hi_end, rtol=1e-9)

@@ -112,8 +112,10 @@ def make_problem(catalog, *, mode="stiffness", mountings=("fixed-supported", "fi
 
 
 
-def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2) -> Catalog:
-    """Give a synthetic catalog servo motors (peak 3 x rated, some with a holding brake) and couplings."""
+def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2, rules=False) -> Catalog:
+    """Give a synthetic catalog servo motors (peak 3 x rated, some with a holding brake) and couplings.
+    ``rules``: each motor also names a vendor's selection rule (model.motorrule: Yaskawa 1 / 1, Mitsubishi
+    0.8 / 0.6, FANUC 0.9 / 0.6, or none), drawn from a generator of its own."""
     motors, couplings = [], []
     for i in range(n_motors):
         t = rng.uniform(2.0, 15.0)
@@ -131,6 +133,9 @@ def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2) -> 
                        "price": 200 + 80 * t,
                        "peak_corner_speed": zr.uniform(1000, 2500) * RPM if listed else math.nan,
                        "peak_torque_at_max_speed": zr.uniform(1.0, 2.0) * t if listed else math.nan})
+        if rules:
+            rms, unb = ((1.0, 1.0), (0.8, 0.6), (0.9, 0.6), (math.nan, math.nan))[int(zr.integers(4))]
+            motors[-1].update({"rms_ratio": rms, "unbalance_ratio": unb})
     for i in range(n_couplings):
         couplings.append({"id": f"C{i}", "vendor": "V", "series": "synthetic", "rated_torque": rng.uniform(30, 200),
                           "torsional_stiffness": rng.uniform(2e4, 3e5), "inertia": rng.uniform(1e-4, 1e-3),
@@ -145,7 +150,7 @@ def add_drives(catalog, rng: np.random.Generator, n_motors=4, n_couplings=2) -> 
     return catalog.replace(motors=df(motors, "motors"), couplings=df(couplings, "couplings"))
 
 
-def add_reductions(catalog, rng: np.random.Generator, n=3) -> Catalog:
+def add_reductions(catalog, rng: np.random.Generator, n=3, rules=False) -> Catalog:
     """Give a synthetic catalog reductions (planetary and belt rows, ratio 1.5-5, T2B 1.5-2.5 x T2N, torsional
     stiffness 1e4-1e6 N.m/rad, input speed limit 3000-8000 rpm): the search chooses one or none per drive."""
     rows = []
@@ -158,6 +163,10 @@ def add_reductions(catalog, rng: np.random.Generator, n=3) -> Catalog:
                      "backlash": rng.uniform(1.0, 10.0) * math.pi / 10800,  # 1-10 arcmin
                      "max_input_speed": rng.uniform(3000, 8000) * RPM, "mass": math.nan,
                      "price": rng.uniform(100, 800)})
+        if rules:  # an emergency-stop torque 1-2.5 x T2B, or none listed (T2B stands in)
+            er = np.random.default_rng(104729 + i)
+            rows[-1]["emergency_torque"] = (rows[-1]["accel_torque"] * er.uniform(1.0, 2.5)
+                                            if er.random() < 0.7 else math.nan)
     d = pd.DataFrame.from_records(rows, columns=list(SCHEMA["reductions"]))
     d["_source"] = "synthetic"
     return catalog.replace(reductions=d.set_index("id", drop=False))

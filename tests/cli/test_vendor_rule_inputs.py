@@ -1,0 +1,57 @@
+"""Bad input on the vendor-rule keys (axis.torque_limit, axis.cut_while_accelerating): one line, exit 2; a
+torque limit below the coupling's need admits the smaller coupling (the limit caps the motor's torque)."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _run(tmp_path, line):
+    text = (ROOT / "problems/teaching_problem.yaml").read_text(encoding="utf-8")
+    f = tmp_path / "p.yaml"
+    f.write_text(text.replace("\naxis:\n", f"\naxis:\n  {line}\n", 1), encoding="utf-8")
+    return subprocess.run([sys.executable, "-m", "axisopt", "solve", str(f)], capture_output=True, text=True,
+                          cwd=ROOT, timeout=300)
+
+
+@pytest.mark.parametrize("line, word", [("torque_limit: -5 N.m", "must be positive"),
+                                        ("torque_limit: 0 N.m", "must be positive"),
+                                        ("torque_limit: 5 kg", "torque_limit"),
+                                        ("cut_while_accelerating: maybe", "cut_while_accelerating"),
+                                        ("buckling_nut_end: clamped", "buckling_nut_end"),
+                                        ("rise_without_cycle: hot", "rise_without_cycle"),
+                                        ("feedback: linear_scale", "scale_grade"),
+                                        ("scale_grade: HEIDENHAIN-1", "scale_grade"),
+                                        ("feedback: glass", "feedback")])
+def test_bad_vendor_rule_keys_one_line_exit_2(tmp_path, line, word):
+    r = _run(tmp_path, line)
+    assert r.returncode == 2
+    assert r.stderr.count("\n") == 1 and word in r.stderr and "Traceback" not in r.stderr
+
+
+def test_scale_on_a_rotating_nut_unit_one_line_exit_2(tmp_path):
+    text = """name: rotating nut with a scale
+axis:
+  stroke: 600 mm
+  moving_mass: 200 kg
+  mounting: fixed-fixed
+  max_speed: 10 m/min
+  axial_load: 500 N
+  feedback: linear_scale
+  scale_grade: AMO-LMB-5
+parts:
+  screw: THK-DIR-40x10
+  nut: THK-DIR4010-6
+  bearing: THK-BK30
+  guide: HIWIN-HG20-ZA
+"""
+    f = tmp_path / "d.yaml"
+    f.write_text(text, encoding="utf-8")
+    r = subprocess.run([sys.executable, "-m", "axisopt", "evaluate", str(f)], capture_output=True, text=True,
+                       cwd=ROOT, timeout=300)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    assert "rotating-nut" in r.stderr and "linear_scale" in r.stderr
