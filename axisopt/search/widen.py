@@ -37,6 +37,8 @@ narrow again.
 from __future__ import annotations
 
 import math
+import time
+from contextvars import ContextVar
 from dataclasses import replace
 
 import numpy as np
@@ -55,6 +57,10 @@ MECH_SLOTS = ("screw", "nut", "bearing", "guide")
 DRIVE_FILTERS = ("motor_vendors", "motor_series", "coupling_series")
 MECH_FILTERS = ("vendors", "nut_types", "bearing_arrangements", "bearing_preload", "guide_types", "guide_preload")
 GROUPS = ("mounting", "drive", "mechanical")
+# the command's deadline (time.perf_counter()) for the advice's verifying searches, None: none; set by
+# advice.design_changes for the searches it runs (a search cut by it finds nothing; ``CUT`` records that one was)
+DEADLINE: ContextVar = ContextVar("advice_deadline", default=None)
+CUT: ContextVar = ContextVar("advice_cut", default=None)
 
 
 def _slots_left(pairs: tuple, slots) -> tuple:
@@ -165,19 +171,38 @@ def first_design(problem, space=None):
     there), or None: none, or the problem's inputs refuse the change (widened filters with nothing left to choose
     from, a duty cycle a lowered speed breaks).  ``space``: the problem's search space when the change left the
     parts as they were (a limit, not the axis or the filters)."""
+    found = first_feasible(problem, space)
+    return None if found is None else found[:2]
+
+
+def first_feasible(problem, space=None):
+    """:func:`first_design` with the design's preload: (space, combination, preload [N]) or None."""
     from .bestfirst import bound_order_search
     from .parts import build_space
     from .task.constraints import build_constraints
     from .task.objective import objective_spec
 
+    deadline = DEADLINE.get()
+    if deadline is not None and time.perf_counter() >= deadline:
+        _cut()
+        return None
     try:
         space = build_space(problem) if space is None else space
     except Exception:  # noqa: BLE001 - a change the inputs refuse gives no advice
         return None
     spec = objective_spec(problem.objective.mode, problem)
-    ex, _ = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True)
+    ex, stats = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True,
+                                   deadline=deadline)
     ok = np.nonzero(np.isfinite(ex.objective))[0]
-    return (space, int(ex.idx[ok[0]])) if len(ok) else None
+    if not len(ok) and stats.timed_out:
+        _cut()
+    return (space, int(ex.idx[ok[0]]), float(ex.preload[ok[0]])) if len(ok) else None
+
+
+def _cut() -> None:
+    flag = CUT.get()
+    if flag is not None:
+        flag.append(True)
 
 
 def with_edits(problem, edits):
@@ -249,4 +274,4 @@ def widened(problem, misses, budget: int) -> tuple:
     return edits, used
 
 
-__all__ = ["widened", "design_edits", "first_design", "with_edits", "DRIVE_CHECKS"]
+__all__ = ["widened", "design_edits", "first_design", "first_feasible", "with_edits", "DRIVE_CHECKS"]

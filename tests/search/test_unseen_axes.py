@@ -56,3 +56,43 @@ def test_coupling_filter_below_peak_torque_is_infeasible_not_input_error(tmp_pat
     text = capsys.readouterr().out
     assert "coupling rated torque / motor peak torque" in text
     assert "to catalog.require.coupling" in text
+
+
+def test_time_limit_bounds_every_arrangement_and_never_claims_a_proof(tmp_path):
+    """Three counterbalance options: the time limit is the whole command's (each arrangement gets what the ones
+    before it left), and an arrangement it cuts makes the answer unproven, never 'optimal' (issue 52)."""
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+
+    problem = load_problem(HERE / "ram_three_counterbalances.yaml")
+    res = solve(problem, time_limit=1e-3)
+    assert res.status == "time_limit" and res.certificate.proven is False
+
+
+def test_what_ifs_stop_at_the_deadline_and_say_so():
+    """The sensitivities and the advice's verifying searches take the command's deadline: past it, each limit
+    is named as cut (none reported unproven), and the advice verifies nothing and says it was cut."""
+    import time
+
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+    from axisopt.search.advice import design_changes
+    from axisopt.search.front import limit_sensitivities
+    from axisopt.search.task.constraints import build_constraints
+
+    root = HERE.parents[2] / "problems"
+    teaching = load_problem(root / "teaching_problem.yaml")
+    res = solve(teaching, sensitivities=False)
+    cut: list = []
+    assert limit_sensitivities(teaching, res, deadline=time.perf_counter(), cut=cut) == []
+    assert sorted(cut) == sorted(k for k, v in teaching.limits if v)
+    full = limit_sensitivities(teaching, res)
+    assert {b.limit for b in full} == set(cut)
+
+    bad = load_problem(root / "infeasible_drive_problem.yaml")
+    r = solve(bad, sensitivities=False)
+    flag: list = []
+    assert design_changes(bad, build_constraints(bad), r.infeasibility, deadline=time.perf_counter(),
+                          cut=flag) == []
+    assert flag == [True]
+    assert design_changes(bad, build_constraints(bad), r.infeasibility)  # without the deadline: a change
