@@ -18,6 +18,9 @@ E_STEEL = 206e9  # [Pa] THK catalog A15-30 (2.06e5 N/mm^2)
 G_STEEL = 79.3e9  # [Pa]
 RHO_STEEL = 7850.0  # [kg/m^3] THK catalog A15-32 (7.85e-6 kg/mm^3)
 
+# x (L - x) of a fixed-fixed screw at its smallest [m^2]: the nut at a bearing (end margin 0)
+MIN_SEGMENT_PRODUCT = 1e-12
+
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed", "supported-supported")
 
 # k = c * E * A / L, catalog forms of seed eq. 7-8 (c = 4: fixed-fixed, nut at mid-span; c = 1: one fixed end
@@ -83,12 +86,14 @@ def screw_stiffness(root_diameter, x, span, mounting, youngs_modulus=E_STEEL):
     mounting       : one of MOUNTINGS (plain string)
     youngs_modulus : E [Pa]
     Returns k_s [N/m].  Source: seed eq. 3-5, 10; THK "axial rigidity of the feed screw system".
-    Valid for a slender elastic bar (bearing and nut compliance excluded).
+    Valid for a slender elastic bar (bearing and nut compliance excluded).  Fixed-fixed with the nut at a
+    bearing (x = L, an end margin of 0) is rigid: the product x (L - x) is held at 1e-12 m^2 or more, a
+    finite stiffness far above any chain's (1/k then adds nothing in series) on floats and CasADi alike.
     """
     choose(CATALOG_STIFFNESS_FACTOR, mounting, "mounting")
     ea = youngs_modulus * mx.pi * root_diameter**2 / 4.0
     if mounting == "fixed-fixed":
-        return ea * span / (x * (span - x))
+        return ea * span / mx.fmax(x * (span - x), MIN_SEGMENT_PRODUCT)
     return ea / x
 
 

@@ -199,7 +199,9 @@ def relax_lines(inf) -> list:
 
     d = rel[0].design
     who = f"design #{rel[0].design_rank}" + (f" ({d.mounting} {' / '.join(d.parts().values())})" if d else "")
-    rule = "a compatibility rule or a check no limit frees" if inf.missing else "a compatibility rule"
+    # search.relax: a vendor margin is never proposed below 0.95 (MARGIN_FLOOR); a design needing one lower breaks
+    # a rule no relaxation frees, as a compatibility rule
+    rule = "a compatibility rule or a vendor's rule no margin down to 0.95 frees"
     if inf.relax_blocked_by:
         head = (f"  no relaxation of the limits is enough: every closest design breaks {rule}; "
                 f"{who} breaks {', '.join(inf.relax_blocked_by)} and besides needs ")

@@ -21,7 +21,12 @@ The kinds of change, each offered only where the closest designs' misses call fo
   least lost motion at the table that admits the least-backlash reduction on every screw of the catalogs;
 - **a counterbalance** on a vertical axis whose closest designs miss a torque, a lift-off or a life: a balance
   cylinder taking :data:`BALANCE_SHARE` of the head's weight where there is none, or the counterweight or
-  cylinder raised to that share (a design rule of thumb, an estimate: docs/assumptions.md).
+  cylinder raised to that share (a design rule of thumb, an estimate: docs/assumptions.md);
+- **the user's own limits** (cost, stiffness, mass, positioning error, ...: :data:`axisopt.model.limits.LIMITS`)
+  the closest designs miss, last, with the speed or acceleration change on top where the misses call for one:
+  each set to what the first design a search finds without them reaches (rounded outward), so that every vendor
+  rule holds as the vendor wrote it (:func:`_limits_step`; the vendor margins are relaxed only in the list that
+  follows the advice, :mod:`.relax`, never below 0.95).
 
 Single changes are tried first (the speed and acceleration once more 10 % further), then each structural
 change (reduction, counterbalance) with the speed and acceleration changes on top: the first that a search
@@ -34,14 +39,15 @@ up for what is raised.
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..design.axis import Counterbalance, G
-from ..model.limits import ACCEL, RATIO, SPEED, WEIGHT, checks_set_by
+from ..model.limits import ACCEL, LIMITS, RATIO, SPEED, WEIGHT, checks_set_by
 from .result import DesignChange
-from .widen import first_design, widened
+from .widen import first_design, first_feasible, widened
 
 # the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio sets
 # (model.limits.CHECK_TABLE's set_by), as the advice's miss names (margin_<check> without margin_)
@@ -49,6 +55,9 @@ SPEED_CHECKS = checks_set_by(SPEED)
 ACCEL_CHECKS = checks_set_by(ACCEL)  # the motor and reduction torques, the nut and bearing lift-off
 # the axis values lowered: (key, display unit, display per SI, the checks whose misses set the factor)
 SCALARS = (("max_speed", "m/min", 60.0, SPEED_CHECKS), ("acceleration", "m/s^2", 1.0, ACCEL_CHECKS))
+# the process's axial load sets the largest axial force with the acceleration: the nut's and support bearings'
+# lift-off and static checks (the advice's last resort before the user's own limits, with speed and acceleration)
+LOAD_CHECKS = frozenset({"nut_lift_off", "bearing_lift_off", "nut_static", "bearing_static"})
 # a reduction's ratio scales the reflected inertia, the torque and the motor speed
 REDUCTION_CHECKS = checks_set_by(RATIO)
 # what a counterbalance relieves on a vertical axis: the weight in the torques, lift-off, the brake and the lives
@@ -63,6 +72,8 @@ RAISED_LIMITS = ("max_cost", "max_total_mass", "max_moving_mass")
 BISECT = 4  # halvings of the raise (after the verified need)
 SAFETY = 0.98  # the proposal a little below the closest designs' bare need (their misses are at one preload)
 BUDGET = 6  # verifying searches at most (a count, not a time: the same answer on any machine)
+WIDE_MOUNTINGS = ("fixed-supported", "fixed-fixed")  # the mountings the last kind admits (fixed-free: too weak)
+LIMITS_BUDGET = 3  # searches of the last kind, the user's own limits (with a speed or acceleration change on top)
 
 
 def _round(x: float, up: bool = False) -> float:
@@ -96,10 +107,13 @@ def _factor(misses, checks) -> float | None:
 
 
 def _with(axis, key: str, to: float):
-    """``axis`` with ``key`` (max_speed or acceleration) lowered to ``to``, and the duty cycle's moves capped at it
-    (a move's speed or acceleration left out in the YAML is the axis's, filled in when read)."""
-    field = "speed" if key == "max_speed" else "acceleration"
-    cycle = tuple(replace(sg, **{field: min(getattr(sg, field), to)}) if sg.kind == "move" else sg
+    """``axis`` with ``key`` (max_speed, acceleration or axial_load) lowered to ``to``, and the duty cycle's moves
+    capped at it (a move's speed, acceleration or force left out in the YAML is the axis's, filled in when read)."""
+    field = {"max_speed": "speed", "acceleration": "acceleration", "axial_load": "force"}[key]
+    def cap(v):
+        return v if v is None else math.copysign(min(abs(v), to), v)
+
+    cycle = tuple(replace(sg, **{field: cap(getattr(sg, field))}) if sg.kind == "move" else sg
                   for sg in (axis.duty_cycle or ()))
     return replace(axis, **{key: to}, **({"duty_cycle": cycle} if axis.duty_cycle else {}))
 
@@ -234,10 +248,82 @@ def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) 
                          "every other limit kept")]
 
 
-def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *, space=None) -> list:
+def _limits_step(problem, constraints, misses, combos, budget: int) -> list:
+    """The user's own limits the closest designs miss, set to what a design reaches, on top of each change of
+    ``combos`` (tuples of :class:`_Step`, the empty one first) in turn, with the screw's other mountings admitted
+    (a mounting the design needs is added to ``catalog.mountings``): the first design the default search finds
+    with those limits left out gives each limit's new value (rounded outward to three significant figures), and a
+    search on the problem so changed verifies it.  [] when the misses name no such limit, or no design is found
+    within ``budget`` searches.  The design the search finds is the verification: it meets every vendor check and
+    the other limits, and the limits at their new values (its own values, rounded outward)."""
+    from .candidates import make_candidate
+    from .task.objective import objective_spec
+    from .widen import design_edits, with_edits
+
+    names = [c for c in constraints if c.name in LIMITS and any(c.name in d for d in misses)]
+    if not names:
+        return []
+    mountings = tuple(dict.fromkeys(tuple(problem.mountings) + WIDE_MOUNTINGS))
+    used = 0
+    for combo in combos:
+        if used >= budget:
+            break
+        changed = problem
+        for step in combo:
+            changed = step.apply(changed)
+        free = replace(changed, restrictions=replace(changed.restrictions, mountings=mountings))
+        for c in names:
+            free = free.with_limit(c.name, None)
+        used += 1
+        found = first_feasible(free)
+        if found is None:
+            continue
+        space, idx, preload = found
+        edits = design_edits(changed, space, idx)
+        cand = make_candidate(space, idx, preload, objective_spec(problem.objective.mode, problem))
+        rows, relaxed = [], with_edits(changed, edits)
+        for c in names:
+            lim = LIMITS[c.name]
+            v = cand.outputs.get(lim.output)
+            if v is None or not math.isfinite(v):
+                break
+            up = c.sense == "<="
+            if (v <= c.limit) if up else (v >= c.limit):
+                continue  # this design meets the limit as asked
+            to = _round(v / c.factor, up=up)
+            relaxed = relaxed.with_limit(c.name, to * c.factor)
+            rows.append(DesignChange(f"limits.{c.name}", c.unit, c.limit / c.factor, to, "your own limit"))
+        else:
+            # the design found is the witness: it meets every vendor check and the other limits (the search), and
+            # these limits as rounded outward (its own values); tests/search/test_unseen_axes.py re-solves
+            return [ch for step in combo for ch in step.changes] + edits + rows
+    return []
+
+
+def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *, space=None,
+                   deadline: float | None = None, cut: list | None = None) -> list:
     """The changes (:class:`.result.DesignChange`, to be made together) that make ``problem`` feasible, verified
     by a search; empty when no kind applies, none is verified or the budget is spent.  ``space``: the problem's
-    search space, if built."""
+    search space, if built.  ``deadline`` (a time.perf_counter() value): no verifying search runs past it (one it
+    cuts finds nothing); ``cut``, a list: True is appended when it cut one."""
+    from .widen import CUT, DEADLINE
+
+    if deadline is not None and time.perf_counter() >= deadline:
+        if cut is not None:
+            cut.append(True)
+        return []
+    flags: list = []
+    tokens = DEADLINE.set(deadline), CUT.set(flags)
+    try:
+        return _design_changes(problem, constraints, infeasibility, budget, space)
+    finally:
+        DEADLINE.reset(tokens[0])
+        CUT.reset(tokens[1])
+        if cut is not None and flags:
+            cut.append(True)
+
+
+def _design_changes(problem, constraints, infeasibility, budget: int, space) -> list:
     from .parts import build_space
 
     misses = _misses(constraints, infeasibility)
@@ -268,4 +354,13 @@ def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *,
             changed = step.apply(changed)
         if _feasible(changed):
             return [c for step in combo for c in step.changes]
-    return []
+    # last, the user's own limits, with the speed and acceleration changes on top where the misses call for them,
+    # and then the process's axial load lowered with the acceleration (a lighter cut: lift-off, static checks)
+    f_load = _factor(misses, LOAD_CHECKS)
+    load = _scalar_step(problem, "axial_load", "N", 1.0, f_load and f_load * FURTHER)
+    # the limits alone, then with the speed and acceleration as the misses say, then one step further with the
+    # lighter cut (each one search)
+    both = tuple(s for s in (speed, accel) if s)
+    far = tuple(s for s in further if s) + ((load,) if load else ())
+    combos = [c for c in (both, far) if c]
+    return _limits_step(problem, constraints, misses, [()] + combos, LIMITS_BUDGET)

@@ -45,14 +45,18 @@ def _certificate(results) -> Certificate:
     return Certificate(**kw)
 
 
-def _sensitivities(problem: Problem, subs, results, win: int, method: str) -> list:
-    """The winner's limits, each with the best gain over every arrangement relaxed by front.RELAX."""
+def _sensitivities(problem: Problem, subs, results, win: int, method: str, deadline: float, cut: list) -> list:
+    """The winner's limits, each with the best gain over every arrangement relaxed by front.RELAX (a limit the
+    ``deadline`` cuts in any arrangement is left out, its key in ``cut``)."""
     from .front import RELAX, limit_sensitivities, solve
 
     best = results[win].best.objective
-    per = [limit_sensitivities(sub, r) if r.best is not None else None for sub, r in zip(subs, results)]
+    per = [limit_sensitivities(sub, r, deadline=deadline, cut=cut) if r.best is not None else None
+           for sub, r in zip(subs, results)]
     out = []
     for b in per[win]:
+        if b.limit in cut:
+            continue
         reach = best + (b.objective_gain or 0.0)
         for i, (sub, r) in enumerate(zip(subs, results)):
             if i == win:
@@ -63,21 +67,30 @@ def _sensitivities(problem: Problem, subs, results, win: int, method: str) -> li
                 continue
             lim, value = LIMITS[b.limit], sub.limit_map[b.limit]
             relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
-            rr = solve(sub.with_limit(b.limit, relaxed), method, top=1, sensitivities=False)
+            left = deadline - time.perf_counter()
+            rr = solve(sub.with_limit(b.limit, relaxed), method, top=1, sensitivities=False,
+                       time_limit=max(left, 1e-3))
+            if rr.status not in (OPTIMAL, INFEASIBLE):
+                cut.append(b.limit)
+                break
             if rr.best is not None:
                 reach = max(reach, rr.best.objective)
+        if b.limit in cut:
+            continue
         gain = reach - best
         out.append(replace(b, objective_gain=gain, binding=bool(gain > 1e-6 * max(abs(best), 1e-9))))
     return out
 
 
-def _pareto(problem: Problem, method: str, subs, labels, t0: float) -> SolveResult:
+def _pareto(problem: Problem, method: str, subs, labels, t0: float, time_limit: float = 100.0) -> SolveResult:
     """A Pareto objective over the arrangements: each arrangement's front, merged and filtered to the designs no
     design of any arrangement dominates (each point names its arrangement)."""
     from .front import solve
     from .pareto import FIELD, SENSE, nondominated
 
-    results = [solve(sub, method, sensitivities=False) for sub in subs]
+    deadline = t0 + time_limit
+    results = [solve(sub, method, sensitivities=False, time_limit=max(deadline - time.perf_counter(), 1e-3))
+               for sub in subs]
     n = len(results)
     cert = _certificate(results)
     fronts = [r.pareto for r in results]
@@ -116,8 +129,11 @@ def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: f
     labels = [lab for lab, _ in problem.arrangements]
     subs = [replace(problem, axis=ax, arrangements=()) for _, ax in problem.arrangements]
     if problem.objective.mode == "pareto":
-        return _pareto(problem, method, subs, labels, t0)
-    results = [solve(sub, method, top=top, time_limit=time_limit, sensitivities=False) for sub in subs]
+        return _pareto(problem, method, subs, labels, t0, time_limit)
+    # one time limit for the whole command: each arrangement gets what the ones before it left
+    deadline = t0 + time_limit
+    results = [solve(sub, method, top=top, time_limit=max(deadline - time.perf_counter(), 1e-3),
+                     sensitivities=False) for sub in subs]
     n = len(results)
     cert = _certificate(results)
     found = [i for i, r in enumerate(results) if r.best is not None]
@@ -138,13 +154,23 @@ def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: f
     ranked = [replace(cands[k][1], rank=r + 1) for r, k in enumerate(order)]
     res = results[win]
     status = res.status
-    if any(results[i].status != OPTIMAL for i in found if i != win) and status == OPTIMAL:
-        status = next(results[i].status for i in found if results[i].status != OPTIMAL)
+    # optimal only if every arrangement is proven: solved to its optimum or proven infeasible (an arrangement
+    # the time limit cut before any design may hold a better one)
+    unproven = [r.status for r in results if r.status not in (OPTIMAL, INFEASIBLE)]
+    if unproven and status == OPTIMAL:
+        status = unproven[0]
     notes = [f"{labels[i]}: infeasible" for i in range(n) if results[i].status == INFEASIBLE]
+    notes += [f"{labels[i]}: {results[i].status} (not proven)" for i in range(n)
+              if results[i].status not in (OPTIMAL, INFEASIBLE) and i != win]
     out = replace(res, status=status, best=ranked[0], runners_up=ranked[1:], certificate=cert,
                   message="; ".join(x for x in [res.message] + notes if x), arrangement=labels[win], arrangements=n)
     if sensitivities and METHODS_BY_NAME[method].sensitivities and problem.objective.mode != "lexicographic":
-        out.binding = _sensitivities(problem, subs, results, win, method)
+        from .front import cut_note
+
+        cut: list = []
+        out.binding = _sensitivities(problem, subs, results, win, method, deadline, cut)
+        if cut:
+            out.message = "; ".join(x for x in (out.message, cut_note("sensitivities", sorted(set(cut)))) if x)
     out.certificate.estimated = results[win].certificate.estimated
     out.time = time.perf_counter() - t0
     return out

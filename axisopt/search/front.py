@@ -174,13 +174,20 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
     else:
         task = build_task(problem)
         res = m.run(task, method, top, time_limit, t0)
+        deadline = t0 + time_limit  # the whole command's: the what-ifs below stop there too, and say so
         if sensitivities and res.best is not None and m.sensitivities:
-            res.binding = limit_sensitivities(problem, res, space=task.space)
+            cut: list = []
+            res.binding = limit_sensitivities(problem, res, space=task.space, deadline=deadline, cut=cut)
+            if cut:
+                res.message = "; ".join(x for x in (res.message, cut_note("sensitivities", cut)) if x)
         if sensitivities and res.infeasibility is not None and method == "default":
             # the infeasible answer's what-if: an axis change the search verifies, before any limit is relaxed
             from .advice import design_changes
+            cut = []
             res.infeasibility.design_changes = design_changes(problem, task.constraints, res.infeasibility,
-                                                              space=task.space)
+                                                              space=task.space, deadline=deadline, cut=cut)
+            if cut:
+                res.message = "; ".join(x for x in (res.message, cut_note("advice", cut)) if x)
             res.time = time.perf_counter() - t0
         if res.best is not None and res.best.design is not None:
             res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in task.objective.terms])
@@ -297,9 +304,23 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
                        time.perf_counter() - t0, message="; ".join(notes), solver_status="ipopt")
 
 
-def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> list:
+def cut_note(what: str, cut: list) -> str:
+    """What the time limit cut after the search: the sensitivities (``cut``: the limits not re-solved) or the
+    advice (its verifying searches)."""
+    if what == "sensitivities":
+        return (f"the time limit cut the limit sensitivities: {', '.join(cut)} not re-solved (a longer "
+                "--time-limit, or --no-sensitivity)")
+    return ("the time limit cut the design-change advice: the changes it could not verify in time are not "
+            "proposed (a longer --time-limit searches further)")
+
+
+def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None, deadline: float | None = None,
+                        cut: list | None = None) -> list:
     """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
     (re-solved with the default method; a discrete problem has no meaningful multipliers).
+
+    ``deadline`` (a time.perf_counter() value): a limit whose re-solve it cuts, or that comes after it, is left
+    out and its key appended to ``cut`` (a list).
 
     ``space``: the problem's search space, if built (the part tables do not depend on the limits, so a re-solve
     reuses it and its cached parameter arrays, unless the relaxed limit is also an axis value the parts' checks
@@ -320,6 +341,10 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> li
         if value == 0.0 or at is None or not np.isfinite(at):
             continue  # e.g. max_backlash 0: relaxing it by 10 % changes nothing; an output the design lacks
         unit, factor = lim.unit, lim.factor
+        if deadline is not None and time.perf_counter() >= deadline:
+            if cut is not None:
+                cut.append(key)
+            continue
         relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
         # the optimum meets the relaxed limit too: only designs that can reach it are searched (none: no gain)
         relaxed_problem = problem.with_limit(key, relaxed)
@@ -329,7 +354,11 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None) -> li
         # relaxed problem's own space
         rebuild = relaxed_problem.axis != problem.axis or (key == "max_backlash" and space.reductions_by_backlash)
         sp = build_space(relaxed_problem) if rebuild else space
-        ex, _stats = bound_order_search(sp, loose, spec, top=1, incumbent=best.objective)
+        ex, stats = bound_order_search(sp, loose, spec, top=1, incumbent=best.objective, deadline=deadline)
+        if stats.timed_out:  # an unproven gain is not reported
+            if cut is not None:
+                cut.append(key)
+            continue
         if np.isfinite(ex.objective).any():
             gain = polish(sp, ex, loose, spec, 1)[0][0].objective - best.objective
         else:

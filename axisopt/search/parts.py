@@ -333,22 +333,32 @@ def _add_drives(sp: Space, problem: Problem) -> None:
             return True
         return ri is not None and n_min * speed_need["reduction_speed"] > float(red_speed[ri]) * (1.0 + 1e-12)
 
-    pairs = []
-    for mi in range(len(motors)):
-        for ri, ratio in zip(choices, ratios):
-            if too_fast(mi, ri, ratio):
-                continue
-            if len(couplings) == 0:
-                pairs.append((mi, None, ri))
-                continue
-            peak = min(float(motors.number("peak_torque")[mi]), limit) * ratio  # a torque limit caps it
-            # the coupling-torque check depends on the drive only: drives that fail it are never formed
-            ok = couplings.number("rated_torque") >= need * peak * (1.0 - 1e-12)
-            pairs.extend((mi, int(ci), ri) for ci in np.nonzero(ok)[0])
+    def drive_pairs(prune: bool):
+        pairs = []
+        for mi in range(len(motors)):
+            for ri, ratio in zip(choices, ratios):
+                if prune and too_fast(mi, ri, ratio):
+                    continue
+                if len(couplings) == 0:
+                    pairs.append((mi, None, ri))
+                    continue
+                peak = min(float(motors.number("peak_torque")[mi]), limit) * ratio  # a torque limit caps it
+                # the coupling-torque check depends on the drive only: drives that fail it are never formed
+                ok = couplings.number("rated_torque") >= need * peak * (1.0 - 1e-12)
+                if not prune:
+                    ok = np.ones(len(couplings), dtype=bool)
+                pairs.extend((mi, int(ci), ri) for ci in np.nonzero(ok)[0])
+        return pairs
+
+    pairs = drive_pairs(prune=True)
+    if not pairs:
+        # every drive fails its speed or coupling-torque check: a valid problem no design meets, not an input
+        # error; every drive is formed, the model's checks then prove the infeasibility and the explanation
+        # names the check (and the advice the filter to widen)
+        pairs = drive_pairs(prune=False)
     if not pairs:
         why = ("no motor is left after the motor filters" if len(motors) == 0 else
-               "no reduction is left after the filters" if not choices else
-               "no coupling left after the filters carries the peak torque of any allowed motor")
+               "no reduction is left after the filters")
         raise InputError(f"the drive search has nothing to choose from: {why} (catalog: motor_vendors, "
                          "motor_series, max_motor_flange, reductions, require/exclude)", source=problem.source)
     sp.motors, sp.couplings = motors, couplings

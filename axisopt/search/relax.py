@@ -13,7 +13,9 @@ be left out (the amounts are then upper bounds of what is needed).
 
 A relative miss m of a limit ``value >= L`` is met by L (1 - m), of ``value <= L`` by L (1 + m); a margin (a
 vendor check, available / needed >= margin) relaxed below 1 ignores the vendor's own rule, which the
-relaxation says (change the axis instead: speed, stroke, loads).  A margin is never proposed at 0 or below (a
+relaxation says (change the axis instead: speed, stroke, loads).  The user's own limits are listed first, the
+vendor margins last, and no margin is proposed below :data:`MARGIN_FLOOR` (0.95): a design that needs one lower
+breaks a rule no relaxation frees, as a compatibility rule.  A margin is never proposed at 0 or below (a
 miss of 100 % or more: the check disabled, not relaxed): such a miss counts as a rule no limit frees, like a
 compatibility rule.  Where the available value is 0 because the catalog row gives none (a motor without a brake
 torque on an axis that needs a holding brake: :data:`MISSING`), :func:`missing_values` says which rows lack it
@@ -58,6 +60,19 @@ def _unfreed(constraint, miss: float) -> bool:
     return constraint.name.startswith("margin_") and constraint.sense == ">=" and miss >= 1.0 - 1e-12
 
 
+# the lowest vendor margin ever proposed: 5 % below the vendor's rule (a rule relaxed further is a different part,
+# speed or load, which the design changes of search.advice propose first)
+MARGIN_FLOOR = 0.95
+
+
+def _beyond_floor(constraint, miss: float) -> bool:
+    """A vendor margin that only a value below :data:`MARGIN_FLOOR` would free: never proposed (the design breaks
+    a vendor's rule no relaxation frees, as a compatibility rule)."""
+    if not (constraint.name.startswith("margin_") and constraint.sense == ">="):
+        return False
+    return constraint.limit / constraint.factor * (1.0 - miss) < MARGIN_FLOOR - 1e-12
+
+
 def relaxable(constraint) -> bool:
     """A problem limit, or the margin of a check that is not a compatibility rule."""
     if constraint.name.startswith("margin_"):
@@ -82,7 +97,8 @@ def rank_relaxations(constraints, infeasibility) -> tuple[list, list, list]:
     options, left_out = [], []
     for cand in infeasibility.closest:
         fixed = [k for k, m in cand.misses.items()
-                 if k not in by_label or not relaxable(by_label[k]) or _unfreed(by_label[k], float(m))]
+                 if k not in by_label or not relaxable(by_label[k]) or _unfreed(by_label[k], float(m))
+                 or _beyond_floor(by_label[k], float(m))]
         need = [(by_label[k], float(m)) for k, m in cand.misses.items() if m > 0 and k not in fixed]
         options.append((len(fixed), len(need), sum(m for _, m in need), cand.rank, cand, need, fixed))
     if not options:
@@ -90,7 +106,8 @@ def rank_relaxations(constraints, infeasibility) -> tuple[list, list, list]:
     blocked, _, _, rank, cand, need, fixed = min(options, key=lambda o: o[:4])
     left_out = [(o[3], o[6]) for o in options if o[6] and not blocked]
     out = []
-    for c, m in sorted(need, key=lambda cm: (cm[1], cm[0].name)):
+    # the user's own limits first, the vendor margins last (labelled, never below MARGIN_FLOOR); each smallest first
+    for c, m in sorted(need, key=lambda cm: (cm[0].name.startswith("margin_"), cm[1], cm[0].name)):
         lim = c.limit / c.factor
         to = lim * (1.0 - m) if c.sense == ">=" else (lim * (1.0 + m) if c.limit > 0 else m)
         margin = c.name.startswith("margin_")
@@ -145,4 +162,4 @@ def missing_values(constraints, infeasibility, space=None) -> list:
     return out
 
 
-__all__ = ["rank_relaxations", "relaxable", "problem_key", "missing_values", "MISSING"]
+__all__ = ["rank_relaxations", "relaxable", "problem_key", "missing_values", "MISSING", "MARGIN_FLOOR"]

@@ -37,6 +37,8 @@ narrow again.
 from __future__ import annotations
 
 import math
+import time
+from contextvars import ContextVar
 from dataclasses import replace
 
 import numpy as np
@@ -55,6 +57,10 @@ MECH_SLOTS = ("screw", "nut", "bearing", "guide")
 DRIVE_FILTERS = ("motor_vendors", "motor_series", "coupling_series")
 MECH_FILTERS = ("vendors", "nut_types", "bearing_arrangements", "bearing_preload", "guide_types", "guide_preload")
 GROUPS = ("mounting", "drive", "mechanical")
+# the command's deadline (time.perf_counter()) for the advice's verifying searches, None: none; set by
+# advice.design_changes for the searches it runs (a search cut by it finds nothing; ``CUT`` records that one was)
+DEADLINE: ContextVar = ContextVar("advice_deadline", default=None)
+CUT: ContextVar = ContextVar("advice_cut", default=None)
 
 
 def _slots_left(pairs: tuple, slots) -> tuple:
@@ -62,8 +68,13 @@ def _slots_left(pairs: tuple, slots) -> tuple:
     return tuple((s, ids) for s, ids in pairs if s not in slots)
 
 
-def _widen(problem, group: str):
-    """The problem's restrictions with ``group``'s filters widened (the same object when it has none set)."""
+COUPLING_CHECKS = frozenset({"coupling_torque", "coupling_speed"})
+
+
+def _widen(problem, group: str, misses=()):
+    """The problem's restrictions with ``group``'s filters widened (the same object when it has none set).  The
+    drive group keeps the coupling filters unless the closest designs (``misses``) miss a coupling check: every
+    coupling times every motor is the largest drive space, and the one a widened search spends its time on."""
     r = problem.restrictions
     if group == "mounting":
         stronger = _stronger(problem.mountings)
@@ -71,8 +82,11 @@ def _widen(problem, group: str):
     if group == "drive":
         if not r.drive:
             return r
-        return replace(r, **dict.fromkeys(DRIVE_FILTERS),
-                       require=_slots_left(r.require, DRIVE_SLOTS), exclude=_slots_left(r.exclude, DRIVE_SLOTS))
+        couplings = any(COUPLING_CHECKS & d.keys() for d in misses)
+        filters = DRIVE_FILTERS if couplings else tuple(f for f in DRIVE_FILTERS if f != "coupling_series")
+        slots = DRIVE_SLOTS if couplings else ("motor",)
+        return replace(r, **dict.fromkeys(filters),
+                       require=_slots_left(r.require, slots), exclude=_slots_left(r.exclude, slots))
     grades = r.screw_grades if r.screw_grades is None else tuple(grade_table().names)
     return replace(r, **dict.fromkeys(MECH_FILTERS), screw_grades=grades,
                    require=_slots_left(r.require, MECH_SLOTS), exclude=_slots_left(r.exclude, MECH_SLOTS))
@@ -165,19 +179,38 @@ def first_design(problem, space=None):
     there), or None: none, or the problem's inputs refuse the change (widened filters with nothing left to choose
     from, a duty cycle a lowered speed breaks).  ``space``: the problem's search space when the change left the
     parts as they were (a limit, not the axis or the filters)."""
+    found = first_feasible(problem, space)
+    return None if found is None else found[:2]
+
+
+def first_feasible(problem, space=None):
+    """:func:`first_design` with the design's preload: (space, combination, preload [N]) or None."""
     from .bestfirst import bound_order_search
     from .parts import build_space
     from .task.constraints import build_constraints
     from .task.objective import objective_spec
 
+    deadline = DEADLINE.get()
+    if deadline is not None and time.perf_counter() >= deadline:
+        _cut()
+        return None
     try:
         space = build_space(problem) if space is None else space
     except Exception:  # noqa: BLE001 - a change the inputs refuse gives no advice
         return None
     spec = objective_spec(problem.objective.mode, problem)
-    ex, _ = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True)
+    ex, stats = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True,
+                                   deadline=deadline)
     ok = np.nonzero(np.isfinite(ex.objective))[0]
-    return (space, int(ex.idx[ok[0]])) if len(ok) else None
+    if not len(ok) and stats.timed_out:
+        _cut()
+    return (space, int(ex.idx[ok[0]]), float(ex.preload[ok[0]])) if len(ok) else None
+
+
+def _cut() -> None:
+    flag = CUT.get()
+    if flag is not None:
+        flag.append(True)
 
 
 def with_edits(problem, edits):
@@ -219,10 +252,10 @@ def widened(problem, misses, budget: int) -> tuple:
     it taken when there is one (its edits are fewer)."""
     tries, every = [], problem.restrictions
     for group in _groups(misses):
-        r = _widen(problem, group)
+        r = _widen(problem, group, misses)
         if r != problem.restrictions:
             tries.append(r)
-            every = _widen(replace(problem, restrictions=every), group)
+            every = _widen(replace(problem, restrictions=every), group, misses)
     # the group the misses call for most, then every group at once (a superset of each group alone: a design
     # of any one group is in it, and one may need parts of two groups); the narrowing finds the fewer edits
     tries = tries[:1] + ([every] if len(tries) > 1 else [])
@@ -249,4 +282,4 @@ def widened(problem, misses, budget: int) -> tuple:
     return edits, used
 
 
-__all__ = ["widened", "design_edits", "first_design", "with_edits", "DRIVE_CHECKS"]
+__all__ = ["widened", "design_edits", "first_design", "first_feasible", "with_edits", "DRIVE_CHECKS"]

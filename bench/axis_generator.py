@@ -1,0 +1,241 @@
+"""Realistic axis problems for the generalisation benchmark (bench/bench_generalize.py) and the fuzz harness.
+
+    from axis_generator import generate
+    for case in generate(300, seed=0): ...   # case.name, case.kind, case.text (a problem YAML)
+
+Written from the problem file reference (docs/reference/yaml.md) and published selection practice, not from the
+shipped problems: every key used is one the reference documents, every value carries its unit.  Case ``i`` of
+seed ``s`` is drawn from ``random.Random(s * 1_000_003 + i)`` and is the same on every machine.
+
+Where the ranges come from (each range spans the published example(s) named, widened to the machine kind; the
+spans themselves are our estimate):
+
+* masses, speeds, accelerations of transfer axes: THK General Catalog A15 ball screw selection example
+  (horizontal transfer: table 60 kg + work 20 kg, 1 m/s = 60 m/min reached in 0.15 s, 6.7 m/s^2, 1 000 mm stroke,
+  30 000 h) and its vertical example (same masses, 0.3 m/s);
+* machine-tool feed axes: rapids 15-48 m/min and 1-6 m/s^2 (THK A-704 Table 19 groups machine tools' speeds up
+  to 60 m/min: fw 1.5; Rexroth R310EN load factor table: 1-2 m/s fw 1.5-2.0); required lives 10 000-30 000 h
+  (THK A15: 30 000 h; HIWIN ballscrew catalog's life examples 10 000-20 000 h);
+* cutting (feed) forces 1-12 kN: turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (Isakov, Cutting Data for
+  Turning of Steel, the rule axisopt's notes print), F_c of 2-20 kN for roughing cuts on 10-40 kW spindles;
+* load / rotor inertia ratios and the motor checks: THK's motor selection page (inertia ratio normally 3-10);
+* counterbalances: a cylinder or counterweight taking 80-100 % of the head's weight (vertical ram practice; the
+  counterbalance keys of the reference);
+* twin-drive gantries: bridge 300-1 500 kg over 2-6 m, 15-40 m/min (router and gantry-mill brochures; our
+  estimate);
+* precision stages: positioning errors 5-40 um (THK A-678 accuracy grades C1-C7 over 300-1 000 mm);
+* thermal growth limits 10-60 um (THK A-715: 12 um/m/degC, a 2-5 degC rise).
+
+Boundary values the reference allows are drawn on purpose (``end_margin: 0 mm``, ``guide_blocks`` equal to
+``rails``, ``axial_load: 0 N``, ``acceleration: 0 m/s^2`` without a drive, one mounting only), and about one case in
+twelve carries a unit slip (m/s for m/min, t for kg, kN for N, m for mm).  Tight limits make about a third of the
+cases infeasible (the benchmark prints the share).
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+__all__ = ["Case", "KINDS", "generate", "make"]
+
+KINDS = ("vmc_x", "vmc_y", "vmc_z", "lathe_x", "lathe_z", "gantry_twin", "vertical_cb", "boring_table",
+         "laser", "router", "precision_stage")
+
+# HIWIN lists every mechanical slot; the others add screws and nuts (THK, Bosch Rexroth), bearings (NSK,
+# Schaeffler, THK) or guides (IKO, NBS): a vendors filter without HIWIN mostly leaves a slot empty (an input error)
+MECH_VENDORS = ("THK", "NSK", "Bosch Rexroth", "Schaeffler", "IKO", "NBS")
+MOTOR_SERIES = ("Sigma-7 SGM7G", "Sigma-7 SGM7A", "Sigma-7 SGM7J", "MELDAS HC (2000 r/min)",
+                "MELDAS HC-R (3000 r/min)", "MELSERVO-JE HG-KN", "SIMOTICS S-1FT7 (6000 r/min)")
+COUPLINGS_SMALL = ("SFS-05S", "RINGFEDER-GWB-AKN-18", "RINGFEDER-GWB-AKN-30")
+COUPLINGS = ("SFS-06S", "SFS-08S", "RINGFEDER-GWB-AKN-60", "RINGFEDER-GWB-AKN-150", "RINGFEDER-GWB-AKN-300")
+
+
+@dataclass
+class Case:
+    name: str
+    kind: str
+    text: str
+    slip: str = ""  # the unit slip drawn, if any
+
+
+def _r(rnd, lo, hi, step=1.0):
+    """A value in [lo, hi] rounded to ``step`` (engineers write round figures)."""
+    v = rnd.uniform(lo, hi)
+    return round(round(v / step) * step, 6)
+
+
+def _fmt(v):
+    return f"{v:g}"
+
+
+# per machine kind: stroke [mm], moving mass [kg], max speed [m/min], acceleration [m/s^2], axial load [N],
+# table length [mm], orientation
+SPECS = {
+    "vmc_x": dict(stroke=(500, 1600), mass=(200, 1200), speed=(20, 48), acc=(2, 6), force=(1000, 8000),
+                  table=(500, 1000), orient="horizontal"),
+    "vmc_y": dict(stroke=(400, 800), mass=(400, 2000), speed=(20, 48), acc=(2, 5), force=(1000, 8000),
+                  table=(500, 900), orient="horizontal"),
+    "vmc_z": dict(stroke=(400, 700), mass=(150, 600), speed=(15, 36), acc=(2, 5), force=(1000, 6000),
+                  table=(400, 700), orient="vertical"),
+    "lathe_x": dict(stroke=(150, 400), mass=(60, 300), speed=(15, 36), acc=(2, 8), force=(500, 6000),
+                    table=(250, 450), orient="horizontal"),
+    "lathe_z": dict(stroke=(400, 2000), mass=(150, 800), speed=(15, 36), acc=(2, 6), force=(1500, 10000),
+                    table=(350, 700), orient="horizontal"),
+    "gantry_twin": dict(stroke=(2000, 6000), mass=(300, 1500), speed=(15, 40), acc=(1, 4), force=(500, 6000),
+                        table=(600, 1000), orient="horizontal"),
+    "vertical_cb": dict(stroke=(500, 1200), mass=(400, 1500), speed=(10, 24), acc=(1, 3), force=(2000, 8000),
+                        table=(500, 900), orient="vertical"),
+    "boring_table": dict(stroke=(1000, 3000), mass=(1000, 3000), speed=(8, 20), acc=(0.5, 2),
+                         force=(3000, 12000), table=(900, 1600), orient="horizontal"),
+    "laser": dict(stroke=(1000, 3000), mass=(50, 250), speed=(30, 60), acc=(5, 15), force=(0, 300),
+                  table=(300, 600), orient="horizontal"),
+    "router": dict(stroke=(1000, 3000), mass=(100, 500), speed=(20, 50), acc=(2, 6), force=(200, 2000),
+                   table=(400, 800), orient="horizontal"),
+    "precision_stage": dict(stroke=(100, 600), mass=(20, 200), speed=(5, 30), acc=(0.5, 5), force=(50, 1000),
+                            table=(200, 500), orient="horizontal"),
+}
+
+
+def _axis(rnd, kind, s, lines, span=0.0):
+    stroke = _r(rnd, *s["stroke"], 50)
+    mass = _r(rnd, *s["mass"], 10)
+    speed = _r(rnd, *s["speed"], 1)
+    acc = _r(rnd, *s["acc"], 0.5)
+    force = _r(rnd, *s["force"], 100)
+    table = _r(rnd, *s["table"], 50)
+    mounting = rnd.choice(("fixed-supported", "fixed-fixed")) if stroke > 300 else rnd.choice(
+        ("fixed-free", "fixed-supported", "fixed-fixed"))
+    lines += [f"  stroke: {_fmt(stroke)} mm", f"  moving_mass: {_fmt(mass)} kg", f"  mounting: {mounting}",
+              f"  max_speed: {_fmt(speed)} m/min", f"  axial_load: {_fmt(force)} N"]
+    if rnd.random() < 0.97:  # a few axes size the mechanics only: no acceleration, no drive
+        lines.append(f"  acceleration: {_fmt(acc)} m/s^2")
+    if rnd.random() < 0.5:
+        lines.append(f"  mean_speed: {_fmt(round(speed * rnd.uniform(0.2, 0.5), 1))} m/min")
+    if s["orient"] == "vertical":
+        lines.append("  orientation: vertical")
+    if rnd.random() < 0.12:
+        lines.append("  end_margin: 0 mm")  # the nut reaches the far bearing (boundary the reference allows)
+    elif rnd.random() < 0.3:
+        lines.append(f"  end_margin: {_fmt(_r(rnd, 30, 200, 10))} mm")
+    if rnd.random() < 0.7:
+        width = span + 400 if span else _r(rnd, 0.6 * table, 1.2 * table, 10)
+        lines += [f"  table_length: {_fmt(table)} mm", f"  table_width: {_fmt(width)} mm",
+                  f"  block_spacing: {_fmt(round(0.7 * table))} mm", f"  rail_spacing: {_fmt(round(0.7 * width))} mm",
+                  f"  cg_height: {_fmt(round(0.3 * table))} mm", f"  tool_height: {_fmt(round(0.6 * table))} mm"]
+        if force > 0 and rnd.random() < 0.6:
+            lines += [f"  cross_load: {_fmt(round(0.5 * force))} N", f"  normal_load: {_fmt(round(0.5 * force))} N"]
+    if rnd.random() < 0.15:  # the fewest blocks the readers allow: one rail with two, or two blocks a rail
+        lines += rnd.choice((["  rails: 1", "  guide_blocks: 2"], ["  rails: 2", "  guide_blocks: 4"]))
+    if kind == "lathe_z" and rnd.random() < 0.6:  # a turning cycle: rapid, cut against the feed force, back
+        cut = round(0.6 * stroke)
+        lines += ["  duty_cycle:", f"    - {{move: {_fmt(stroke - cut)} mm}}",
+                  f"    - {{move: {_fmt(cut)} mm, speed: {_fmt(_r(rnd, 0.2, 2, 0.1))} m/min, force: "
+                  f"{_fmt(force)} N}}", f"    - {{move: {_fmt(-stroke)} mm}}",
+                  f"    - {{dwell: {_fmt(_r(rnd, 1, 10))} s}}"]
+    return dict(stroke=stroke, mass=mass, speed=speed, acc=acc, force=force, mounting=mounting)
+
+
+def make(seed: int, index: int) -> Case:
+    rnd = random.Random(seed * 1_000_003 + index)
+    kind = KINDS[index % len(KINDS)]
+    s = SPECS[kind]
+    lines = [f"name: gen-{seed}-{index}-{kind}", "axis:"]
+    span = _r(rnd, 1500, 3500, 100) if kind == "gantry_twin" else 0.0
+    a = _axis(rnd, kind, s, lines, span)
+    weight = a["mass"] * 9.81
+    search = []
+    if kind == "vertical_cb":
+        share = rnd.uniform(0.8, 1.0)
+        if rnd.random() < 0.5:
+            lines.append(f"  counterbalance: {{kind: cylinder, force: {_fmt(round(share * weight, -1))} N, "
+                         "tolerance: 5 %}")
+        else:
+            options = ["none", f"{{kind: counterweight, mass: {_fmt(round(share * a['mass'], -1))} kg}}",
+                       f"{{kind: cylinder, force: {_fmt(round(share * weight, -1))} N}}"]
+            search.append(f"  counterbalance: [{', '.join(options)}]")
+    if kind == "gantry_twin":
+        lines += ["  twin_drive:", f"    span: {_fmt(span)} mm", f"    cross_stroke: {_fmt(round(0.8 * span))} mm",
+                  f"    cross_mass: {_fmt(_r(rnd, 100, 600, 10))} kg"]
+        if rnd.random() < 0.3:
+            cross = _fmt(round(0.8 * span))
+            search.append(f"  twin_drive: [none, {{span: {_fmt(span)} mm, cross_stroke: {cross} mm}}]")
+            lines = [ln for ln in lines if not ln.startswith(("  twin_drive:", "    span", "    cross_"))]
+    # objective
+    obj = rnd.choices(("stiffness", "tool_stiffness", "frequency", "cost", "weighted"), (5, 2, 2, 1, 1))[0]
+    if obj == "cost":
+        lines.append("objective: {mode: pareto, pareto: [stiffness, cost]}")
+    elif obj == "weighted":
+        lines += ["objective:", "  mode: weighted", "  weights: {stiffness: 1.0, frequency: 1.0}",
+                  "  scale: {stiffness: 100 N/um, frequency: 50 Hz}"]
+    else:
+        lines.append(f"objective: {obj}")
+    # limits: from loose to tight (tight limits make the infeasible third)
+    tight = rnd.random() < 0.35
+    lim = []
+    cost = {"precision_stage": 3000, "laser": 4000, "lathe_x": 3000}.get(kind, 6000)
+    cost *= 2 if kind == "gantry_twin" else 1
+    lim.append(f"  max_cost: {_fmt(round(cost * (rnd.uniform(0.1, 0.5) if tight else rnd.uniform(1, 3)), -1))} EUR")
+    lim.append(f"  min_life: {_fmt(_r(rnd, 10000, 30000, 1000))} h")
+    if rnd.random() < 0.4:
+        k = rnd.uniform(200, 800) if tight else rnd.uniform(20, 150)
+        lim.append(f"  min_stiffness: {_fmt(round(k))} N/um")
+    if rnd.random() < 0.3:
+        f = rnd.uniform(150, 400) if tight else rnd.uniform(20, 60)
+        lim.append(f"  min_frequency: {_fmt(round(f))} Hz")
+    if kind == "precision_stage" or rnd.random() < 0.2:
+        e = rnd.uniform(3, 8) if tight else rnd.uniform(15, 60)
+        lim.append(f"  max_positioning_error: {_fmt(round(e, 1))} um")
+    if rnd.random() < 0.2:
+        t = rnd.uniform(2, 6) if tight else rnd.uniform(20, 80)
+        lim.append(f"  max_thermal_growth: {_fmt(round(t))} um")
+    if rnd.random() < 0.2:
+        lim.append(f"  max_total_mass: {_fmt(round(a['mass'] * (0.05 if tight else 1.0) + 50, -1))} kg")
+    if rnd.random() < 0.2:
+        lim.append(f"  max_drag_torque: {_fmt(round(rnd.uniform(0.3, 1.0) if tight else rnd.uniform(2, 6), 1))} N.m")
+    if rnd.random() < 0.2:
+        lim.append(f"  max_backlash: {_fmt(rnd.choice((0, 1, 5, 20)))} um")
+    lines += ["limits:"] + lim
+    # catalog filters
+    cat = []
+    if rnd.random() < 0.6:
+        cat.append(f"  vendors: [{', '.join(['HIWIN'] + rnd.sample(MECH_VENDORS, rnd.randint(0, 3)))}]")
+    if rnd.random() < 0.5:
+        cat.append("  mountings: [fixed-supported, fixed-fixed]")
+    if rnd.random() < 0.4:
+        cat.append(f"  nut_types: [{rnd.choice(('double', 'single'))}]")
+    if rnd.random() < 0.5:
+        cat.append(f"  motor_series: [{', '.join(rnd.sample(MOTOR_SERIES, rnd.randint(1, 3)))}]")
+    elif rnd.random() < 0.03:  # the shipped motors list no flange: this filter leaves none (a clean input error)
+        cat.append("  max_motor_flange: 130 mm")
+    if rnd.random() < 0.3:
+        pool = COUPLINGS_SMALL if rnd.random() < 0.3 else COUPLINGS
+        cat.append(f"  require: {{coupling: [{', '.join(rnd.sample(pool, 2))}]}}")
+    if rnd.random() < 0.15:
+        cat.append(f"  screw_grades: [{rnd.choice(('C3', 'C5', 'C7'))}]")
+    if cat:
+        lines += ["catalog:"] + cat
+    if search:
+        lines += ["search:"] + search
+    text = "\n".join(lines) + "\n"
+    slip = ""
+    if rnd.random() < 1 / 12:  # a unit slip an engineer makes
+        slips = [(f"max_speed: {_fmt(a['speed'])} m/min", f"max_speed: {_fmt(a['speed'])} m/s"),
+                 (f"moving_mass: {_fmt(a['mass'])} kg", f"moving_mass: {_fmt(a['mass'])} t"),
+                 (f"stroke: {_fmt(a['stroke'])} mm", f"stroke: {_fmt(a['stroke'])} m"),
+                 (f"axial_load: {_fmt(a['force'])} N", f"axial_load: {_fmt(a['force'])} kN")]
+        old, new = rnd.choice(slips)
+        if old in text:
+            text, slip = text.replace(old, new, 1), new
+    return Case(name=f"gen-{seed}-{index}-{kind}", kind=kind, text=text, slip=slip)
+
+
+def generate(n: int, seed: int = 0) -> list[Case]:
+    return [make(seed, i) for i in range(n)]
+
+
+if __name__ == "__main__":
+    import sys
+
+    i = int(sys.argv[1]) if len(sys.argv) > 1 else 0
+    print(make(int(sys.argv[2]) if len(sys.argv) > 2 else 0, i).text)

@@ -1,0 +1,98 @@
+"""Axes written outside the project (issue 52): each answers with its status and exit code, no traceback.
+
+The files are in tests/search/unseen/: the fixed-fixed screw with ``end_margin: 0 mm`` (the nut reaches the far
+bearing: the screw's stiffness there divided by zero in the positioning budget), the coupling filter that leaves
+no coupling for any motor's peak torque (a valid infeasible problem, not an input error), and the slowest
+problems of bench/axis_generator.py (their times are measured in bench/bench_generalize.py, not here)."""
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from axisopt.cli import main
+from axisopt.physics import screw as ps
+
+HERE = Path(__file__).resolve().parent / "unseen"
+
+
+def _solve(tmp_path, name, *extra, advice=False):
+    out = tmp_path / "r.json"
+    rc = main(["solve", str(HERE / name), "--json", str(out), *(() if advice else ("--no-sensitivity",)), *extra])
+    return rc, json.loads(out.read_text())
+
+
+def test_fixed_fixed_screw_is_rigid_at_its_bearing():
+    """x (L - x) = 0 at the far bearing: a finite stiffness far above the mid-span one, on floats and arrays."""
+    d_r, span = 0.02, 0.8
+    k_end = ps.screw_stiffness(d_r, span, span, "fixed-fixed")
+    k_mid = ps.screw_stiffness(d_r, span / 2, span, "fixed-fixed")
+    assert np.isfinite(k_end) and k_end > 1e6 * k_mid
+    ks = ps.screw_stiffness(d_r, np.array([0.1, span]), span, "fixed-fixed")
+    assert np.all(np.isfinite(ks))
+    # away from the bearing the formula is THK's A E L / (a b) unchanged
+    ea = ps.E_STEEL * np.pi * d_r**2 / 4
+    assert ps.screw_stiffness(d_r, 0.2, span, "fixed-fixed") == pytest.approx(ea * span / (0.2 * 0.6))
+
+
+def test_end_margin_zero_infeasible_answers(tmp_path, capsys):
+    rc, r = _solve(tmp_path, "fixed_fixed_end_margin0.yaml")
+    assert rc == 1 and r["status"] == "infeasible"
+    text = capsys.readouterr().out
+    assert "closest designs" in text and "Traceback" not in text
+
+
+def test_end_margin_zero_feasible_design(tmp_path):
+    """A lighter axis with the nut reaching the bearing has a design, its stiffness finite."""
+    rc, r = _solve(tmp_path, "fixed_fixed_end_margin0_feasible.yaml")
+    assert rc == 0 and r["status"] == "optimal"
+    assert np.isfinite(r["best"]["objective"]) and r["best"]["objective"] > 0
+
+
+def test_coupling_filter_below_peak_torque_is_infeasible_not_input_error(tmp_path, capsys):
+    rc, r = _solve(tmp_path, "coupling_filter_too_small.yaml", advice=True)
+    assert rc == 1 and r["status"] == "infeasible"
+    text = capsys.readouterr().out
+    assert "coupling rated torque / motor peak torque" in text
+    assert "to catalog.require.coupling" in text
+
+
+def test_time_limit_bounds_every_arrangement_and_never_claims_a_proof(tmp_path):
+    """Three counterbalance options: the time limit is the whole command's (each arrangement gets what the ones
+    before it left), and an arrangement it cuts makes the answer unproven, never 'optimal' (issue 52)."""
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+
+    problem = load_problem(HERE / "ram_three_counterbalances.yaml")
+    res = solve(problem, time_limit=1e-3)
+    assert res.status == "time_limit" and res.certificate.proven is False
+
+
+def test_what_ifs_stop_at_the_deadline_and_say_so():
+    """The sensitivities and the advice's verifying searches take the command's deadline: past it, each limit
+    is named as cut (none reported unproven), and the advice verifies nothing and says it was cut."""
+    import time
+
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+    from axisopt.search.advice import design_changes
+    from axisopt.search.front import limit_sensitivities
+    from axisopt.search.task.constraints import build_constraints
+
+    root = HERE.parents[2] / "problems"
+    teaching = load_problem(root / "teaching_problem.yaml")
+    res = solve(teaching, sensitivities=False)
+    cut: list = []
+    assert limit_sensitivities(teaching, res, deadline=time.perf_counter(), cut=cut) == []
+    assert sorted(cut) == sorted(k for k, v in teaching.limits if v)
+    full = limit_sensitivities(teaching, res)
+    assert {b.limit for b in full} == set(cut)
+
+    bad = load_problem(root / "infeasible_drive_problem.yaml")
+    r = solve(bad, sensitivities=False)
+    flag: list = []
+    assert design_changes(bad, build_constraints(bad), r.infeasibility, deadline=time.perf_counter(),
+                          cut=flag) == []
+    assert flag == [True]
+    assert design_changes(bad, build_constraints(bad), r.infeasibility)  # without the deadline: a change
