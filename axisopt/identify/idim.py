@@ -179,6 +179,11 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     ctx = TimeContext(est_rows, base_ls, peak, span, stroke_q, lead_q, UNITS[est.quantity]["position"])
     for nm in names:
         e = effects[nm]
+        if any(k not in est_rows.sig for k in e.needs):  # the record lacks the signal: not a candidate at all
+            if candidates:
+                raise InputError(f"--effects {nm}: the record has no {', '.join(e.needs)} signal "
+                                 f"({e.summary})", source=est.source)
+            continue
         short = e.too_short(ctx) if e.too_short is not None and candidates else ""
         if short:
             raise InputError(f"--effects {nm}: {short}", source=est.source)

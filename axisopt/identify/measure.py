@@ -13,7 +13,7 @@ Terms (all SI; ``x`` = fixed bearing to nut, ``L`` = span, ``EA`` = screw sectio
 * static stiffness test: ``delta = F (c_SB + c_extra) + delta_N(F) + offsets``;
 * natural frequency: ``f = 1 / (2 pi sqrt(c_total m_eff(x)))`` (m_eff as the axis model);
 * frequency response: ``G = 1/(k - m w^2 + 2 i zeta sqrt(k m) w)`` plus any extra modes;
-* friction at the table: ``F = sgn(v) (F_c s(cycle) + mu N + Stribeck) + c_v v + c_q v|v| + a/2``.
+* friction at the table: ``F = sgn(v) (F_c s(cycle) + mu N + k_a |F_a| + Stribeck) + c_v v + c_q v|v| + a/2``.
 
 Effects (``effects.py``) change the fields of the :class:`Terms` record before the output is formed.
 """
@@ -33,7 +33,7 @@ from .fit import Param
 
 FEATURES = {
     "stiffness": ("x", "force", "direction", "time", "dtemp", "cycle"),
-    "friction": ("velocity", "normal", "axial", "x", "cycle"),
+    "friction": ("velocity", "normal", "axial", "x", "cycle", "temperature"),
     "frequency": ("x",),
     "frf": ("x", "omega", "part"),
 }
@@ -96,7 +96,8 @@ def observations(ds: Dataset, plant) -> Obs:
             y = c["drag_torque"] * 2.0 * math.pi * plant.efficiency / plant.lead
         normal = plant.weight_on_guides + c.get("normal_load", zeros)
         x = plant.nut_x(c["position"]) if "position" in c else zeros + plant.start_offset
-        Z = np.vstack([c["velocity"], normal, c.get("axial_load", zeros), x, c.get("cycle", zeros)])
+        temp = c.get("temperature", zeros + 293.15)  # [K]; 20 degC when not recorded
+        Z = np.vstack([c["velocity"], normal, c.get("axial_load", zeros), x, c.get("cycle", zeros), temp])
         groups, gname = _friction_groups(c)
     elif ds.kind == "frequency":
         Z = plant.nut_x(c["position"])[None, :]
@@ -150,6 +151,8 @@ class Terms:
     stribeck: object = 0.0
     asymmetry: object = 0.0
     drag: object = 0.0  # quadratic drag coefficient c of c v|v| [N s^2/m^2]
+    axial_ratio: object = 0.0  # nut friction per axial force, 1/eta - 1 [-] (of |axial_load|, sgn v)
+    coulomb_t: object = 0.0  # Coulomb friction change with temperature [N] (already times T - T_ref)
 
 
 def baseline_params(kinds, plant) -> list:
@@ -253,7 +256,8 @@ def output(kind: str, q: Terms, Z: dict, plant):
     if kind == "friction":
         v = Z["velocity"]
         return (
-            mx.sign(v) * (q.coulomb * q.coulomb_factor + q.mu * Z["normal"] + q.stribeck)
+            mx.sign(v) * (q.coulomb * q.coulomb_factor + q.mu * Z["normal"] + q.stribeck + q.coulomb_t
+                          + q.axial_ratio * mx.fabs(Z["axial"]))
             + q.viscous * v
             + q.drag * v * mx.fabs(v)
             + 0.5 * q.asymmetry
