@@ -30,6 +30,7 @@ from ..physics import nut as pn
 from ..physics import screw as ps
 from .data import Dataset
 from .fit import Param
+from .levels import cluster_levels
 
 FEATURES = {
     "stiffness": ("x", "force", "direction", "time", "dtemp", "cycle"),
@@ -88,7 +89,7 @@ def observations(ds: Dataset, plant) -> Obs:
         dtemp = c["temperature"] - c["temperature"][0] if "temperature" in c else zeros
         Z = np.vstack([x, f, direction, t, dtemp, c.get("cycle", zeros)])
         y = c["displacement"]
-        groups, gname = c["position"], "position"
+        groups, gname = cluster_levels(c["position"], "position"), "position"
     elif ds.kind == "friction":
         if "friction_force" in c:
             y = c["friction_force"]
@@ -119,9 +120,9 @@ def observations(ds: Dataset, plant) -> Obs:
 
 
 def _friction_groups(c):
-    for name in ("normal_load", "cycle", "position"):
-        if name in c and len(np.unique(c[name])) >= 3:
-            return c[name], name
+    for name in ("normal_load", "axial_load", "temperature", "cycle", "position"):
+        if name in c and len(np.unique(lv := cluster_levels(c[name], name))) >= 3:
+            return lv, name
     v = np.abs(c["velocity"])
     edges = np.quantile(v, [0.2, 0.4, 0.6, 0.8])
     return np.searchsorted(edges, v, side="right").astype(float), "speed band"

@@ -57,10 +57,12 @@ class Loop:
     rho: float = 0.0  # AR(1) coefficient of the force noise (0: white)
     quantum: float = 1e-7  # 0.1 um scale
     substeps: int = 4
+    current_hz: float = 0.0  # bandwidth of the current loop (0: the force is the command, held per sample)
 
 
 def reference(rng, duration, fs, stroke, vmax=0.3):
-    """Trapezoidal moves of random speed (log-uniform 3..vmax mm/s... m/s) and acceleration with dwells."""
+    """Trapezoidal moves of random speed (log-uniform 3 mm/s..vmax) and acceleration, at most 1.2 s each,
+    with dwells of 0.15-0.4 s, jerk limited."""
     n = int(duration * fs)
     r = np.empty(n)
     x, k = 0.5 * stroke, 0
@@ -71,9 +73,14 @@ def reference(rng, duration, fs, stroke, vmax=0.3):
         v = math.exp(rng.uniform(math.log(0.003), math.log(vmax)))
         acc = rng.uniform(0.8, 3.0)
         lo, hi = 0.08 * stroke, 0.92 * stroke
-        target = rng.uniform(lo, hi)
+        # a move of at most 1.2 s at its speed, either way inside the stroke
+        reach = min(rng.uniform(0.3, 1.2) * v, 0.5 * (hi - lo))
+        sign = rng.choice([-1.0, 1.0])
+        if not lo <= x + sign * reach <= hi:
+            sign = -sign
+        target = x + sign * reach
         d = target - x
-        if abs(d) < 0.01:
+        if abs(d) < 1e-4:
             continue
         ta = v / acc
         if abs(d) < v * ta:
@@ -90,11 +97,12 @@ def reference(rng, duration, fs, stroke, vmax=0.3):
         r[k:k + m] = seg[: max(0, min(m, n - k))]
         k += m
         x = target
-    return r
+    w = max(1, int(0.04 * fs))  # jerk limited: the acceleration ramps over 40 ms (a moving average)
+    return np.convolve(np.r_[np.full(w, r[0]), r, np.full(w, r[-1])], np.ones(w) / w, "same")[w:-w]
 
 
 def _steps(rng, n, fs, amp, lo_frac=-1.0):
-    """Levels held 0.5-2 s, uniform in amp*[lo_frac, 1], changing by linear ramps of 0.1 s (a process force
+    """Levels held 0.5-2 s, uniform in amp*[lo_frac, 1], changing by linear ramps of 0.3 s (a process force
     builds up over a tool's entry, a payload is set down)."""
     out = np.empty(n)
     k = 0
@@ -102,7 +110,7 @@ def _steps(rng, n, fs, amp, lo_frac=-1.0):
         m = int(rng.uniform(0.5, 2.0) * fs)
         out[k:k + m] = amp * rng.uniform(lo_frac, 1.0)
         k += m
-    w = max(1, int(0.1 * fs))
+    w = max(1, int(0.3 * fs))
     return np.convolve(np.r_[np.full(w, out[0]), out, np.full(w, out[-1])], np.ones(w) / w, "same")[w:-w]
 
 
@@ -122,6 +130,8 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
     kv = ax.mass * 2 * math.pi * loop.bw_v
     ki = kv / loop.ti
     h = dt / loop.substeps
+    cl = 1.0 - math.exp(-2.0 * math.pi * loop.current_hz * h) if loop.current_hz else 1.0
+    fa = 0.0
     x, v, integ, vf, xm_prev = r[0], 0.0, 0.0, 0.0, r[0]
     aw = math.exp(-2 * math.pi * 150.0 * dt)
     xs, us = np.empty(n), np.empty(n)
@@ -131,7 +141,7 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
         e = loop.rho * e + rng.standard_normal() * loop.noise * math.sqrt(1 - loop.rho**2)
         noise[k] = e
     for k in range(n):
-        xs[k] = x  # measured at the sample instant; u then acts until the next (zero-order hold)
+        xs[k] = x  # measured at the sample instant
         xm = round(x / loop.quantum) * loop.quantum
         vraw = (xm - xm_prev) / dt if k else 0.0
         vf = aw * vf + (1 - aw) * vraw
@@ -141,15 +151,17 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
         ev = vcmd - vf
         integ += ki * ev * dt
         u = kv * ev + integ
+        us[k] = u if not loop.current_hz else fa  # the recorded force: the command, or the current loop's
         dT = temp_c[k] - (ax.temp[0] if ax.temp else 20.0)
         fc_t = ax.fc + ax.dfc_dT * dT
         fv_t = ax.fv * math.exp(-ax.beta * dT)
         for _ in range(loop.substeps):
+            fa += (u - fa) * cl  # the current loop: the force follows the command
             cog = 0.0
             if ax.cog_amp:
                 cog = ax.cog_amp * math.sin(2 * math.pi * ax.cog_order * x / ax.travel_per_motor_turn)
-            drive = u - load[k] - ax.offset - cog
-            level = fc_t + ax.mu * normal[k] + ax.nut_loss * abs(u)
+            drive = fa - load[k] - ax.offset - cog
+            level = fc_t + ax.mu * normal[k] + ax.nut_loss * abs(fa)
             if v == 0.0:
                 brk = level + ax.fs_excess
                 if abs(drive) <= brk:
@@ -165,7 +177,8 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
                 vn = 0.0
             v = vn
             x += v * h
-        us[k] = u
+    if not loop.current_hz:  # the current sensor averages over the sample period centred on the instant
+        us = np.r_[us[0], 0.5 * (us[1:] + us[:-1])]
     pos = np.round(xs / loop.quantum) * loop.quantum
     return {"time": tt, "position": pos, "reference": r, "force": us + noise, "external_force": -load,
             "normal_load": normal, "temperature": temp_c}

@@ -67,6 +67,7 @@ class TimeModel:
     derived: tuple = ()  # (name, label, unit kind, value -> SI): quantities shown beside the terms (an amplitude)
     per_run: bool = False  # its columns are one sin, cos pair whose phase is each run's own: a held-out run keeps
     #                        the amplitude and takes its own phase (:func:`..estimators.predict`)
+    resolved: Callable | None = None  # (value, proc) -> why the record cannot resolve the fitted values ('' none)
     needs: tuple = ()  # signals (keys of the record's ``sig``: fext, normal, temperature) it needs; a record
     #                    without them does not list the effect at all
     name: str = ""  # the effect's name (filled in by register_effect)

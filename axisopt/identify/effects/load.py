@@ -200,7 +200,7 @@ class ViscousTemperature(_TemperatureEffect):
             Param("viscous_at_20C", "viscous friction at 20 degC", "N.s/m", "damping",
                   max(ctx.plant.viscous, 100.0), 0.0, 1e9, typical=max(ctx.plant.viscous, 100.0),
                   plausible=(0.0, 1e7), plausible_note="a positive viscous friction"),
-            Param("viscosity_beta", "viscosity-temperature coefficient beta", "1/K", "dimensionless",
+            Param("viscosity_beta", "viscosity-temperature coefficient beta", "1/K", "thermal_expansion",
                   0.03, 1e-4, 0.5, typical=0.03, plausible=BETA_RANGE,
                   plausible_note="lubricants 0.005-0.2 /K (mineral greases about 0.02-0.05)"),
         ]
@@ -235,7 +235,7 @@ class CoulombTemperature(_TemperatureEffect):
 
     def params(self, ctx):
         fc = max(ctx.plant.coulomb, 10.0)
-        return [Param("coulomb_per_kelvin", "Coulomb friction change per kelvin", "N/K", "dimensionless",
+        return [Param("coulomb_per_kelvin", "Coulomb friction change per kelvin [N/K]", "-", "dimensionless",
                       0.0, -1e6, 1e6, typical=0.01 * fc, plausible=(-0.1 * fc, 0.1 * fc),
                       plausible_note="up to 10 % of the Coulomb level per kelvin")]
 
