@@ -9,11 +9,12 @@ import math
 import numpy as np
 
 G = 9.80665
+SPEEDS = np.geomspace(0.002, 0.3, 10)  # [m/s]
 
 
 def friction_rows(rng, *, fc=300.0, fv=800.0, stribeck=0.0, vs=0.004, delta=1.0, drag=0.0, axial_ratio=0.0,
                   mu=0.0, axial_levels=(), normal_levels=(), temps=(), beta=0.0, dfc_dT=0.0,
-                  speeds=np.geomspace(0.002, 0.3, 10), rep=2, noise=3.0, speed_jitter=0.0, pos_jitter=0.0,
+                  speeds=SPEEDS, rep=2, noise=3.0, speed_jitter=0.0, pos_jitter=0.0,
                   positions=(0.2, 0.5)):
     """Rows (dict of columns, SI) of a friction test: every speed both ways at every axial load, normal load,
     temperature and position, ``rep`` readings each.  The logged speed and position carry a relative
