@@ -143,6 +143,19 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
     kq = 2.0 * math.pi / shape["period"] if ripple else 0.0
     cq = params.get("Cq", 0.0)
     ext = rec.external.tolist() if rec.external is not None else None
+    # load and temperature friction (:mod:`.effects.load`) as Coulomb and viscous levels per sample
+    n = rec.n
+    lev = np.zeros(n)
+    visc = np.zeros(n)
+    if params.get("mu_g") and "normal" in rec.aux:
+        lev += params["mu_g"] * rec.aux["normal"]
+    if "temperature" in rec.aux:
+        dt_ref = rec.aux["temperature"] - 293.15
+        lev += params.get("dFc_dT", 0.0) * dt_ref
+        if params.get("Fvt"):
+            visc += params["Fvt"] * (np.exp(-shape["beta"] * dt_ref) - 1.0)
+    kload = params.get("ka", 0.0)
+    levl, viscl = lev.tolist(), visc.tolist()
     sin, cos = math.sin, math.cos
     fvp, fvn = fv + dfv / 2, fv - dfv / 2
     kp, kd, kv, ka = ctrl.kp, ctrl.kd, ctrl.kv, ctrl.ka
@@ -157,11 +170,12 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
     for k in range(rec.n):
         out[k] = q
         u = kp * (rl[k] - q) + kd * (drl[k] - v) + kv * drl[k] + ka * ddrl[k] - off
+        load = levl[k] + kload * abs(u)
         if ext is not None:
             u += ext[k]
         for _ in range(substeps):
             xi = sq * q - 1.0
-            dpos = c1 * xi + c2 * (1.5 * xi * xi - 0.5)
+            dpos = c1 * xi + c2 * (1.5 * xi * xi - 0.5) + load
             uk = u
             if ripple:
                 sn, cn = sin(kq * q), cos(kq * q)
@@ -177,9 +191,9 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
                     v = hm * (uk + brk)
             else:
                 if v > 0:
-                    fr = fc + fvp * v + fsx * exp(-v / vs) + dpos + cq * v * v
+                    fr = fc + (fvp + viscl[k]) * v + fsx * exp(-v / vs) + dpos + cq * v * v
                 else:
-                    fr = -fc + fvn * v - fsx * exp(v / vs) - dpos - cq * v * v
+                    fr = -fc + (fvn + viscl[k]) * v - fsx * exp(v / vs) - dpos - cq * v * v
                 vn = v + hm * (uk - fr)
                 v = 0.0 if vn * v < 0 else vn
             q += h * v
@@ -225,7 +239,7 @@ def instrumental_variables(rows: Rows, terms, shape=None, ctrl: Controller | Non
                 note = f"closed-loop simulation diverged at iteration {it}; LS kept"
                 th, V = ls.theta.copy(), W
                 break
-            V = matrix(rows, terms, shape, sig={**signals(qs, rows.proc), "t": rows.sig["t"]})
+            V = matrix(rows, terms, shape, sig={**rows.sig, **signals(qs, rows.proc)})  # conditions as measured
             for j in own:
                 V[:, j] = W[:, j]
             new = solve(V)

@@ -128,11 +128,15 @@ class TimeContext:
         return steady_line(self.rows, self.base, self.peak[0])
 
 
-def implausible(effects, est: Estimate, base: Estimate) -> str:
+def implausible(effects, est: Estimate, base: Estimate, proc=None) -> str:
     """Why the effects' fitted values leave their physical range ('' when they do not); every range is
-    relative to the baseline's own friction (each effect declares its range, :class:`.effects.TimeModel`)."""
+    relative to the baseline's own friction (each effect declares its range, :class:`.effects.TimeModel`);
+    with ``proc``, also values the record cannot resolve (``resolved``)."""
     fc, fv = abs(base.value("Fc")), abs(base.value("Fv"))
-    return "; ".join(t for e in effects for t in e.why_implausible(est.value, fc, fv))
+    out = [t for e in effects for t in e.why_implausible(est.value, fc, fv)]
+    if proc is not None:
+        out += [t for e in effects if e.resolved is not None for t in [e.resolved(est.value, proc)] if t]
+    return "; ".join(out)
 
 
 def fit_candidate(est_rows: Rows, terms, effect: TimeModel, shape: dict) -> tuple:
@@ -179,6 +183,11 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     ctx = TimeContext(est_rows, base_ls, peak, span, stroke_q, lead_q, UNITS[est.quantity]["position"])
     for nm in names:
         e = effects[nm]
+        if any(k not in est_rows.sig for k in e.needs):  # the record lacks the signal: not a candidate at all
+            if candidates:
+                raise InputError(f"--effects {nm}: the record has no {', '.join(e.needs)} signal "
+                                 f"({e.summary})", source=est.source)
+            continue
         short = e.too_short(ctx) if e.too_short is not None and candidates else ""
         if short:
             raise InputError(f"--effects {nm}: {short}", source=est.source)
@@ -208,7 +217,7 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
         rounds.append(scored)
         top = None
         for c in scored:  # the best candidate by dBIC that is physical and predicts held-out data better
-            why = implausible([c.effect], c.estimate, base_ls)
+            why = implausible([c.effect], c.estimate, base_ls, est_rows.proc)
             if why:
                 rejected.append((len(rounds), c, why))
             c.reason = RULE.reason(c.dbic, c.gain, why)
@@ -298,7 +307,7 @@ def best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, rn
             dbic = fit.bic - cur.bic
             ho = heldout_rmse(est_rows, val_rows, tt, sh)
             gain = RULE.gain(cur_ho, ho)
-            why = implausible([a.effect, b.effect], fit, base_ls)
+            why = implausible([a.effect, b.effect], fit, base_ls, est_rows.proc)
             reason = RULE.pair_reason(dbic, gain, why, max(a.gain, b.gain))
             entry = [rnd, a, b, fit, dbic, gain, reason]
             log.append(entry)

@@ -13,7 +13,7 @@ Terms (all SI; ``x`` = fixed bearing to nut, ``L`` = span, ``EA`` = screw sectio
 * static stiffness test: ``delta = F (c_SB + c_extra) + delta_N(F) + offsets``;
 * natural frequency: ``f = 1 / (2 pi sqrt(c_total m_eff(x)))`` (m_eff as the axis model);
 * frequency response: ``G = 1/(k - m w^2 + 2 i zeta sqrt(k m) w)`` plus any extra modes;
-* friction at the table: ``F = sgn(v) (F_c s(cycle) + mu N + Stribeck) + c_v v + c_q v|v| + a/2``.
+* friction at the table: ``F = sgn(v) (F_c s(cycle) + mu N + k_a |F_a| + Stribeck) + c_v v + c_q v|v| + a/2``.
 
 Effects (``effects.py``) change the fields of the :class:`Terms` record before the output is formed.
 """
@@ -30,10 +30,11 @@ from ..physics import nut as pn
 from ..physics import screw as ps
 from .data import Dataset
 from .fit import Param
+from .levels import cluster_levels
 
 FEATURES = {
     "stiffness": ("x", "force", "direction", "time", "dtemp", "cycle"),
-    "friction": ("velocity", "normal", "axial", "x", "cycle"),
+    "friction": ("velocity", "normal", "axial", "x", "cycle", "temperature"),
     "frequency": ("x",),
     "frf": ("x", "omega", "part"),
 }
@@ -88,7 +89,7 @@ def observations(ds: Dataset, plant) -> Obs:
         dtemp = c["temperature"] - c["temperature"][0] if "temperature" in c else zeros
         Z = np.vstack([x, f, direction, t, dtemp, c.get("cycle", zeros)])
         y = c["displacement"]
-        groups, gname = c["position"], "position"
+        groups, gname = cluster_levels(c["position"], "position"), "position"
     elif ds.kind == "friction":
         if "friction_force" in c:
             y = c["friction_force"]
@@ -96,7 +97,8 @@ def observations(ds: Dataset, plant) -> Obs:
             y = c["drag_torque"] * 2.0 * math.pi * plant.efficiency / plant.lead
         normal = plant.weight_on_guides + c.get("normal_load", zeros)
         x = plant.nut_x(c["position"]) if "position" in c else zeros + plant.start_offset
-        Z = np.vstack([c["velocity"], normal, c.get("axial_load", zeros), x, c.get("cycle", zeros)])
+        temp = c.get("temperature", zeros + 293.15)  # [K]; 20 degC when not recorded
+        Z = np.vstack([c["velocity"], normal, c.get("axial_load", zeros), x, c.get("cycle", zeros), temp])
         groups, gname = _friction_groups(c)
     elif ds.kind == "frequency":
         Z = plant.nut_x(c["position"])[None, :]
@@ -118,9 +120,9 @@ def observations(ds: Dataset, plant) -> Obs:
 
 
 def _friction_groups(c):
-    for name in ("normal_load", "cycle", "position"):
-        if name in c and len(np.unique(c[name])) >= 3:
-            return c[name], name
+    for name in ("normal_load", "axial_load", "temperature", "cycle", "position"):
+        if name in c and len(np.unique(lv := cluster_levels(c[name], name))) >= 3:
+            return lv, name
     v = np.abs(c["velocity"])
     edges = np.quantile(v, [0.2, 0.4, 0.6, 0.8])
     return np.searchsorted(edges, v, side="right").astype(float), "speed band"
@@ -150,6 +152,8 @@ class Terms:
     stribeck: object = 0.0
     asymmetry: object = 0.0
     drag: object = 0.0  # quadratic drag coefficient c of c v|v| [N s^2/m^2]
+    axial_ratio: object = 0.0  # nut friction per axial force, 1/eta - 1 [-] (of |axial_load|, sgn v)
+    coulomb_t: object = 0.0  # Coulomb friction change with temperature [N] (already times T - T_ref)
 
 
 def baseline_params(kinds, plant) -> list:
@@ -253,7 +257,8 @@ def output(kind: str, q: Terms, Z: dict, plant):
     if kind == "friction":
         v = Z["velocity"]
         return (
-            mx.sign(v) * (q.coulomb * q.coulomb_factor + q.mu * Z["normal"] + q.stribeck)
+            mx.sign(v) * (q.coulomb * q.coulomb_factor + q.mu * Z["normal"] + q.stribeck + q.coulomb_t
+                          + q.axial_ratio * mx.fabs(Z["axial"]))
             + q.viscous * v
             + q.drag * v * mx.fabs(v)
             + 0.5 * q.asymmetry

@@ -15,7 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import residual as rs
-from .measure import Y_UNIT, Obs
+from .levels import cluster_levels
+from .measure import FEATURES, Y_UNIT, Obs
 
 # Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode): the noise
 # floor never takes differences across them.
@@ -36,7 +37,10 @@ def noise_sigma_rel(o: Obs, resid: np.ndarray) -> tuple[float, str]:
     r = resid / o.scale
     if o.factors:
         # every model feature too: an FRF's real and imaginary rows share their factors but are no replicates
-        keys = np.column_stack([np.asarray(v, dtype=float) for v in o.factors.values()] + list(o.Z))
+        # levels logged with jitter are one level (:mod:`.levels`)
+        feats = FEATURES[o.kind]
+        keys = np.column_stack([cluster_levels(v, k) for k, v in o.factors.items()]
+                               + [cluster_levels(z, feats[i] if i < len(feats) else "") for i, z in enumerate(o.Z)])
         _, inv, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
         inv = np.asarray(inv).ravel()
         rep = counts[inv] >= 2
@@ -114,7 +118,7 @@ def table_unexplained(obs, resid_w, effects=()) -> list:
     out = []
     for o, r in zip(obs, resid_w):
         r = np.asarray(r, dtype=float)
-        probes = [rs.factor_probe(name, r, vals, max_bins=8 if name == "velocity" else 6)
+        probes = [rs.factor_probe(name, signed(o, name, r), vals, max_bins=8 if name == "velocity" else 6)
                   for name, vals in o.factors.items() if len(np.unique(vals)) > 1]
         if o.kind == "friction":
             v = o.feature("velocity")
@@ -153,6 +157,20 @@ def table_signature(p, disp) -> tuple:
     return what + where, causes, measure
 
 
+# Factors of a friction test whose friction follows the direction of motion (a load or temperature raises the
+# friction both ways, so the signed residual changes sign with v): their level means are taken of sgn(v) r,
+# or the two directions would average the effect away.
+SIGNED_FACTORS = ("axial_load", "normal_load", "temperature")
+
+
+def signed(o: Obs, name: str, r: np.ndarray) -> np.ndarray:
+    """The residual as a factor's level means should see it: times sgn(v) for the friction test's loads and
+    temperature (:data:`SIGNED_FACTORS`), as it is otherwise."""
+    if o.kind == "friction" and name in SIGNED_FACTORS:
+        return r * np.sign(o.feature("velocity"))
+    return r
+
+
 def residual_table(o: Obs, resid: np.ndarray, max_bins: int = 6) -> list:
     """Where misfit concentrates: for every recorded factor, the share of residual variance explained by
     its levels (eta^2), the worst level and its RMS.  ``resid`` = prediction - y (SI)."""
@@ -165,7 +183,9 @@ def residual_table(o: Obs, resid: np.ndarray, max_bins: int = 6) -> list:
         unit = "um/N"
     total = float(np.sum((r - r.mean()) ** 2)) or 1e-300
     rows = []
+    r_all = r
     for name, vals in o.factors.items():
+        r = signed(o, name, r_all)
         levels = np.unique(vals)
         if len(levels) < 2:
             continue

@@ -39,11 +39,13 @@ BASE = tuple(t.name for t in BASE_TERMS)
 UNITS = {
     "force": {"mass": ("kg", 1.0), "damping": ("N.s/m", 1.0), "effort": ("N", 1.0), "snap": ("kg.s^2", 1.0),
               "speed": ("mm/s", 1e3), "position": ("mm", 1e3), "drag2": ("N.s^2/m^2", 1.0),
-              "frequency": ("Hz", 1.0), "time": ("s", 1.0)},
+              "frequency": ("Hz", 1.0), "time": ("s", 1.0), "ratio": ("-", 1.0), "per_kelvin": ("1/K", 1.0),
+              "effort_per_kelvin": ("N/K", 1.0)},
     "torque": {"mass": ("kg.m^2", 1.0), "damping": ("N.m.s/rad", 1.0), "effort": ("N.m", 1.0),
                "snap": ("kg.m^2.s^2", 1.0), "speed": ("rad/s", 1.0), "position": ("rad", 1.0),
                "drag2": ("N.m.s^2/rad^2", 1.0),
-               "frequency": ("Hz", 1.0), "time": ("s", 1.0)},
+               "frequency": ("Hz", 1.0), "time": ("s", 1.0), "ratio": ("-", 1.0), "per_kelvin": ("1/K", 1.0),
+               "effort_per_kelvin": ("N.m/K", 1.0)},
 }
 SYMBOL = {"force": {"M": "M"}, "torque": {"M": "J"}}
 
@@ -146,6 +148,10 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
                          "are applied to every run)", source=rec.source, where="column time")
     sig = signals(rec.q, proc)
     sig["t"] = rec.t - rec.t[0]  # time from the run's start
+    sig["effort"] = rec.effort  # the force the drive transmits (measured: its own instrument)
+    for key, val in (("fext", rec.external), *rec.aux.items()):
+        if val is not None:
+            sig[key] = val
     v = sig["v"]
     sf = lowpass(np.sign(v), proc.fs, proc.fdec)
     edge = int(2.0 * proc.fs / min(proc.fc, proc.fdec)) + proc.nd

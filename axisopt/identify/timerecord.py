@@ -15,6 +15,9 @@ Format (units in the headers, any unit of the quantity)::
 * ``motor_position`` (optional): the motor encoder's position, in a length unit (converted through the
   lead by the drive) or an angle unit, beside a ``position`` measured at the table (a linear scale).  The
   two together measure the lost motion (backlash) and the windup of the transmission (:mod:`.idim`).
+* ``normal_load [N]`` (optional): a normal load on the guide carriages besides the table's weight (a payload,
+  a vertical process force); ``temperature [degC]`` (or K, optional): the axis's temperature (nut, guides or
+  lubricant), for the friction laws in temperature (:mod:`.effects.load`).
 * ``external_force [N]`` (optional): a process force acting on the table (cutting, a spring, a weight),
   positive in +x.  The drive then supplies f = M a + F(v) - F_ext, so the identification fits f + F_ext;
   for torque records the force is taken to the motor as F_ext p / (2 pi eta) (lead p, screw efficiency eta).
@@ -29,7 +32,7 @@ from __future__ import annotations
 import csv
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -40,7 +43,8 @@ from ..units import check_plausible, check_width, read_header, read_number, spli
 
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
-COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force", "motor_position")
+COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force", "motor_position", "normal_load",
+                                                          "temperature")
 # angle units spelled as revolutions that the unit library does not know (it knows 'turn')
 _REV = {"rev": "turn", "revs": "turn", "revolution": "turn", "revolutions": "turn"}
 CURRENT_UNITS = {"A": 1.0, "mA": 1e-3, "kA": 1e3}
@@ -66,6 +70,7 @@ class TimeRecord:
     gain_note: str = ""
     external: np.ndarray | None = None  # external force on the table in the effort's coordinate [N] or [N m]
     motor_q: np.ndarray | None = None  # motor encoder position in the record's coordinate (as ``q``)
+    aux: dict = field(default_factory=dict)  # normal_load [N] on the guides, temperature [K]: conditions
 
     @property
     def n(self) -> int:
@@ -101,7 +106,8 @@ def is_time_record(path) -> bool:
 
 # SI kind of each column, for the range check of every cell (current has no kind: its gain gives it one)
 _KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque",
-         "external_force": "force", "motor_position": "length"}
+         "external_force": "force", "motor_position": "length", "normal_load": "force",
+         "temperature": "temperature"}
 
 
 def parse_gain(text: str, *, source=None, where=None) -> tuple:
@@ -229,7 +235,16 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     ext = None
     if "external_force" in col:
         ext = col["external_force"] * (1.0 if quantity == "force" else lead / (2.0 * math.pi * efficiency))
-    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext, motor_q)
+    aux = {}
+    if "normal_load" in col:
+        aux["normal"] = col["normal_load"]
+    if "temperature" in col:  # absolute [K]: the column's unit is a temperature, its offset applied
+        aux["temperature"] = col["temperature"] + _KELVIN.get(cols[names.index("temperature")][1].strip(), 0.0)
+    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext, motor_q,
+                      aux)
+
+
+_KELVIN = {"degC": 273.15, "C": 273.15, "celsius": 273.15}
 
 
 def _factor(name, unit, src, where, lead) -> float:
@@ -242,8 +257,12 @@ def _factor(name, unit, src, where, lead) -> float:
                 return unit_factor(unit, "length")
             except ValueError:
                 return unit_factor(_REV.get(unit.strip(), unit), "angle") * lead / (2.0 * math.pi)
-        if name in ("force", "external_force"):
+        if name in ("force", "external_force", "normal_load"):
             return unit_factor(unit, "force")
+        if name == "temperature":
+            if unit.strip() not in ("degC", "K", "C", "celsius"):
+                raise ValueError(f"temperature unit '{unit}' (degC or K)")
+            return 1.0
         if name == "torque":
             return unit_factor(unit, "torque")
     except ValueError as exc:

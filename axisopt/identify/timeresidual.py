@@ -57,14 +57,78 @@ class Unexplained:
         return sorted([p for p in self.probes if p.significant], key=lambda p: -p.share)
 
 
-def noise_floor(rows: Rows) -> float:
-    """Sensor noise of the effort at the regression rows: the white part of the raw effort from its second
-    differences (median absolute deviation, var(e1 - 2 e2 + e3) = 6 sigma^2), through the decimation low-pass
-    (equivalent noise bandwidth of |H|^2 = 1/(1 + (f/f_d)^8): 1.026 f_d)."""
+def noise_floor(rows: Rows, est: Estimate | None = None) -> float:
+    """Sensor noise of the effort at the regression rows, the larger of two estimates:
+
+    * white: the raw effort's second differences (median absolute deviation, var(e1 - 2 e2 + e3) =
+      6 sigma^2) through the decimation low-pass (equivalent noise bandwidth of |H|^2 = 1/(1 + (f/f_d)^8):
+      1.026 f_d).  Correlated (coloured) noise hides from second differences: its power sits at low
+      frequencies, where the regression rows keep it;
+    * coloured (:func:`ar_noise`): an AR(1) spectrum fitted to the effort above the motion's band, through the
+      same low-pass -- the noise as the rows see it when it is correlated."""
     e = rows.record.effort
     d2 = e[2:] - 2.0 * e[1:-1] + e[:-2]
     s = 1.4826 * float(np.median(np.abs(d2 - np.median(d2)))) / math.sqrt(6.0)
-    return s * math.sqrt(min(1.0, 2.0 * 1.026 * rows.proc.fdec / rows.proc.fs))
+    white = s * math.sqrt(min(1.0, 2.0 * 1.026 * rows.proc.fdec / rows.proc.fs))
+    coloured = ar_noise(rows, est)
+    return max(white, coloured) if coloured is not None else white
+
+
+AR_RHO = np.linspace(-0.5, 0.98, 149)  # the grid of the AR(1) coefficient fitted to the noise's spectrum
+
+
+def ar_noise(rows: Rows, est: Estimate | None = None):
+    """RMS of the effort's noise through the decimation low-pass when the noise is coloured: an AR(1) spectrum
+    S(f) = s^2 / (1 - 2 rho cos(2 pi f/fs) + rho^2) is fitted (least squares on the log of the averaged
+    periodogram, a running median over 9 bins first so lines do not count) to the full-rate residual of
+    ``est`` over windows of 0.256 s where the axis moves one way (the kept rows), above twice the motion
+    bandwidth (where the model's own misfit, which follows the motion, is small); the fitted spectrum is then
+    integrated under |H|^2 of the decimation filter, the band the regression rows keep.  None without an
+    estimate or with fewer than 4 windows."""
+    if est is None:
+        return None
+    proc = rows.proc
+    rec = rows.record
+    y = rec.effort + rec.external if rec.external is not None else rec.effort
+    res = y - full_matrix(rows.sig, est.terms, proc, est.shape) @ est.theta
+    m = 256
+    good = np.zeros(rec.n, dtype=bool)
+    good[rows.keep] = True
+    good = np.convolve(good.astype(float), np.ones(2 * proc.nd + 1), mode="same") > 0
+    win = np.hanning(m)
+    ps, count, k = np.zeros(m // 2 + 1), 0, 0
+    while k + m <= rec.n:
+        if good[k : k + m].all():
+            seg = res[k : k + m]
+            ps += np.abs(np.fft.rfft((seg - seg.mean()) * win)) ** 2
+            count += 1
+            k += m // 2
+        else:
+            k += m // 4
+    if count < 4:
+        return None
+    ps /= count * proc.fs * float(win @ win)
+    f = np.fft.rfftfreq(m, 1.0 / proc.fs)
+    band = (f >= max(2.0 * proc.f_motion, 4.0 * f[1])) & (f <= 0.95 * proc.fs / 2.0)
+    if int(band.sum()) < 8:
+        return None
+    pad = np.pad(ps, 4, mode="edge")
+    smooth = np.median(np.lib.stride_tricks.sliding_window_view(pad, 9), axis=1)[band]
+    w = 2.0 * np.pi * f[band] / proc.fs
+    logp = np.log(np.maximum(smooth, 1e-300))
+    best = None
+    for rho in AR_RHO:
+        shape = -np.log(1.0 - 2.0 * rho * np.cos(w) + rho * rho)
+        c = float(np.mean(logp - shape))
+        err = float(np.sum((logp - shape - c) ** 2))
+        if best is None or err < best[0]:
+            best = (err, rho, c)
+    _, rho, c = best
+    fa = np.linspace(0.0, proc.fs / 2.0, 2049)
+    wa = 2.0 * np.pi * fa / proc.fs
+    sa = math.exp(c) / (1.0 - 2.0 * rho * np.cos(wa) + rho * rho)
+    h2 = 1.0 / (1.0 + (fa / proc.fdec) ** 8)
+    return math.sqrt(2.0 * float(np.sum(sa * h2)) * (fa[1] - fa[0]))  # welch: the two-sided density
 
 
 def pooled(runs: list, full_cols) -> np.ndarray:
@@ -196,7 +260,7 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
         return rs.n_effective(len(res), rs.lag1(res, breaks))
     probes += [f(runs, r, W, neff_of, pooled) for f in (line_probe, spot_probe, decay_probe)]
     probes.sort(key=lambda p: p.log10_p)
-    noise = math.sqrt(sum(noise_floor(rw) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs))
+    noise = math.sqrt(sum(noise_floor(rw, est) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs))
     return Unexplained(probes, float(np.sqrt(np.mean(r**2))), noise, rho, len(r))
 
 

@@ -1,6 +1,6 @@
 """The effect library of both diagnosis pipelines: the registry and the declaration (:mod:`.base`) and the
 built-in effects by what they act on (:mod:`.stiffness`, :mod:`.dynamics`, :mod:`.friction`,
-:mod:`.disturbance`; imported here in
+:mod:`.disturbance`, :mod:`.load`; imported here in
 the order they are registered, which is the order tables try them)."""
 
 # isort: off
@@ -9,6 +9,7 @@ from . import stiffness  # noqa: F401
 from . import dynamics  # noqa: F401
 from . import friction  # noqa: F401
 from . import disturbance  # noqa: F401
+from . import load  # noqa: F401
 
 # isort: on
 from .base import (

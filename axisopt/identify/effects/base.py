@@ -67,6 +67,9 @@ class TimeModel:
     derived: tuple = ()  # (name, label, unit kind, value -> SI): quantities shown beside the terms (an amplitude)
     per_run: bool = False  # its columns are one sin, cos pair whose phase is each run's own: a held-out run keeps
     #                        the amplitude and takes its own phase (:func:`..estimators.predict`)
+    resolved: Callable | None = None  # (value, proc) -> why the record cannot resolve the fitted values ('' none)
+    needs: tuple = ()  # signals (keys of the record's ``sig``: fext, normal, temperature) it needs; a record
+    #                    without them does not list the effect at all
     name: str = ""  # the effect's name (filled in by register_effect)
 
     @property
@@ -120,7 +123,8 @@ _REGISTRY: dict[str, Effect] = {}
 
 # The built-in time-record effects in the order they are tried and listed; an effect registered later follows.
 TIME_ORDER = ("direction_asymmetry", "stribeck", "position_friction", "extra_mode", "lead_ripple", "quadratic_drag",
-              "time_periodic", "local_friction", "friction_drift")
+              "time_periodic", "local_friction", "friction_drift", "nut_axial_friction", "guide_load_friction",
+              "viscous_temperature", "coulomb_temperature")
 
 
 def register_effect(effect):

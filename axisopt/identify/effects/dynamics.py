@@ -40,6 +40,22 @@ def _mode_implausible(value, fc, fv) -> list:
     return [f"beta = {v:.4g} not positive (no mass-spring pair has m1 m2/k <= 0)"] if v <= 0.0 else []
 
 
+RESOLVED_FC = 0.8  # a resonance is resolved up to this share of the position filter's cut-off
+
+
+def _mode_resolved(value, proc) -> str:
+    """A resonance above 0.8x the position filter's cut-off is not resolved: there the filter bends the
+    acceleration and the snap (|H|^2 below 86 %), and a term in the fourth derivative then fits the filter's
+    and the sampling's own lag rather than a mode."""
+    m, beta = value("M"), value("beta")
+    if not (m > 0 and beta > 0):
+        return ""
+    fr = math.sqrt(m / beta) / (2.0 * math.pi)
+    lim = RESOLVED_FC * proc.fc
+    return (f"a resonance at {fr:.3g} Hz, above {lim:.3g} Hz (0.8x the position filter's cut-off), where the "
+            "record does not resolve one") if fr > lim else ""
+
+
 @register_effect
 class AddedMass(Effect):
     name = "added_mass"
@@ -92,6 +108,7 @@ class ExtraMode(Effect):
         (Term("beta", "m1 m2/k of the extra mode", "snap", lambda sig, proc, shape: sig["snap"], simulated=False),),
         skip=_mode_skip,
         implausible=_mode_implausible,
+        resolved=_mode_resolved,
         evidence="a frequency response (tap test or sine sweep) of the table: a peak at the resonance",
     )
 
