@@ -105,9 +105,11 @@ def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool
         loads = np.unique(O["M"])
         if len(loads) > 1 and monotone_in_load(ax) and not designs.exhaustive:
             designs.get(ax, float(loads[0]), at)  # the lightest first: its feasible set bounds the others
-        for L in loads:
+        for L in loads:  # ascending
             D = designs.get(ax, float(L), at)
             sel = np.nonzero(O["M"] == L)[0]
+            if not len(D) and monotone_in_load(ax) and not designs.exhaustive:
+                break  # nothing fits this load: nothing fits a heavier one
             if not len(D) or not len(sel):
                 continue
             oi, dj = (a.ravel() for a in np.meshgrid(sel, np.arange(len(D)), indexing="ij"))
