@@ -82,14 +82,68 @@ class _Designs:
             d = axis_designs(ax, load, at, exhaustive=self.exhaustive, superset=None if sup is None else sup[1])
             self.solves += 1
             self.combinations[ax.name] = max(self.combinations.get(ax.name, 0), d.combinations)
-            if not self.exhaustive and (ax.name not in self.superset or load < self.superset[ax.name][0]):
+            if not self.exhaustive and ax.name not in self.superset:
+                self.superset[ax.name] = (load, feasible_sets(d))
+            elif not self.exhaustive and load >= self.superset[ax.name][0]:
+                # the loads come lightest first: the designs feasible here bound every heavier load, and fewer
                 self.superset[ax.name] = (load, feasible_sets(d))
             self.cache[key] = d if self.exhaustive else pareto_designs(d)
         return self.cache[key]
 
 
-def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool, kept: dict) -> dict:
-    """The offers of one chain on the frame (arrays, one row per offer)."""
+def _join(ax, own: float, O: dict, sel, D) -> dict:
+    """The offers ``sel`` of ``O`` (the axes above) each joined with each design of ``D`` (the axis below)."""
+    oi, dj = (a.ravel() for a in np.meshgrid(sel, np.arange(len(D)), indexing="ij"))
+    klink = link_with_frame(ax, D.k[dj])
+    lumped = own + D.moving_parts[dj] + O["stat"][oi]
+    return {"oi": oi, "dj": dj, "cost": O["cost"][oi] + D.cost[dj],
+            "M": own + D.parts[dj] + D.counterweight[dj] + O["M"][oi], "stat": D.stationary[dj],
+            "c": O["c"][oi] + 1.0 / klink, "mm": O["mm"][oi] + lumped, "m": np.column_stack([lumped, O["m"][oi]]),
+            "k": np.concatenate([klink[:, None, :], O["k"][oi]], axis=1)}
+
+
+def _within_limits(machine: Machine, J: dict, cmax) -> np.ndarray:
+    """The joined offers ``J`` of part of a chain that do not yet miss a machine limit (costs, masses and
+    compliances only grow further down; the frequency of the sub-chain on a rigid base bounds the whole's)."""
+    ok = (J["cost"] <= machine.max_cost * (1 + 1e-9)) & (J["mm"] <= machine.max_moving_mass * (1 + 1e-9))
+    ok &= (J["c"] <= cmax * (1 + 1e-9)).all(1)
+    if machine.min_frequency > 0 and ok.any():
+        f = np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
+        ok &= f >= machine.min_frequency * (1 - 1e-9)
+    return ok
+
+
+def _tol(v: float) -> float:
+    return 1e-9 * max(abs(v), 1.0)
+
+
+def _completion(machine: Machine, J: dict, other: dict) -> np.ndarray:
+    """The best machine objective (larger is better) each joined offer ``J`` of a whole chain reaches with the
+    other chain's offers ``other`` within the machine limits (-inf: none)."""
+    f = (np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
+         if _reads_frequency(machine) else np.full(len(J["cost"]), np.inf))
+    kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
+    out = np.full(len(J["cost"]), -np.inf)
+    for s in range(0, len(J["cost"]), 2048):
+        r = slice(s, s + 2048)
+        cost = J["cost"][r, None] + other["cost"][None, :]
+        c = J["c"][r, None, :] + other["c"][None, :, :]
+        mm = J["mm"][r, None] + other["mm"][None, :]
+        ff = np.minimum(f[r, None], other["f"][None, :])
+        ok = (cost <= machine.max_cost * (1 + 1e-9)) & (mm <= machine.max_moving_mass * (1 + 1e-9))
+        ok &= ((1.0 / c) >= kmin * (1 - 1e-9)).all(-1)
+        if machine.min_frequency > 0:
+            ok &= ff >= machine.min_frequency * (1 - 1e-9)
+        obj = np.where(ok, _objective(machine, cost, c, ff, mm), -np.inf)
+        out[r] = obj.max(axis=1, initial=-np.inf)
+    return out
+
+
+def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool, kept: dict,
+                   other: dict | None = None, incumbent: list | None = None) -> dict:
+    """The offers of one chain on the frame (arrays, one row per offer).  ``other``: the other chain's offers
+    (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (a list
+    of one value, the best machine objective found, larger is better)."""
     freq = _reads_frequency(machine)
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     cmax = np.where(kmin > 0, 1.0 / np.where(kmin > 0, kmin, 1.0), np.inf)
@@ -105,24 +159,32 @@ def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool
         loads = np.unique(O["M"])
         if len(loads) > 1 and monotone_in_load(ax) and not designs.exhaustive:
             designs.get(ax, float(loads[0]), at)  # the lightest first: its feasible set bounds the others
+        bound = prune and i == 0 and other is not None and monotone_in_load(ax)
         for L in loads:  # ascending
-            D = designs.get(ax, float(L), at)
             sel = np.nonzero(O["M"] == L)[0]
+            if prune and monotone_in_load(ax) and len(sel) and not bound:
+                # the same with the machine limits only: no design at the lightest load meets them with these
+                # offers -> none at this load does
+                J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
+                if not _within_limits(machine, J, cmax).any():
+                    continue
+            if bound and len(sel) and np.isfinite(incumbent[0]):
+                # what this load's offers could reach with the axis's designs at the lightest load (a superset,
+                # each at least as stiff): none beats the incumbent -> the load is never solved
+                J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
+                if _completion(machine, J, other).max(initial=-np.inf) < incumbent[0] - _tol(incumbent[0]):
+                    continue
+            D = designs.get(ax, float(L), at)
             if not len(D) and monotone_in_load(ax) and not designs.exhaustive:
                 break  # nothing fits this load: nothing fits a heavier one
             if not len(D) or not len(sel):
                 continue
-            oi, dj = (a.ravel() for a in np.meshgrid(sel, np.arange(len(D)), indexing="ij"))
-            klink = link_with_frame(ax, D.k[dj])
-            lumped = own + D.moving_parts[dj] + O["stat"][oi]
-            parts["cost"].append(O["cost"][oi] + D.cost[dj])
-            parts["M"].append(own + D.parts[dj] + D.counterweight[dj] + O["M"][oi])
-            parts["stat"].append(D.stationary[dj])
-            parts["c"].append(O["c"][oi] + 1.0 / klink)
-            parts["mm"].append(O["mm"][oi] + lumped)
-            parts["m"].append(np.column_stack([lumped, O["m"][oi]]))
-            parts["k"].append(np.concatenate([klink[:, None, :], O["k"][oi]], axis=1))
-            refs.extend((D, int(j)) + O["refs"][o] for o, j in zip(oi, dj))
+            J = _join(ax, own, O, sel, D)
+            if bound:
+                incumbent[0] = max(incumbent[0], _completion(machine, J, other).max(initial=-np.inf))
+            for k in parts:
+                parts[k].append(J[k])
+            refs.extend((D, int(j)) + O["refs"][o] for o, j in zip(J["oi"], J["dj"]))
         if not refs:
             return {"cost": np.zeros(0), "c": np.zeros((0, 3)), "mm": np.zeros(0), "f": np.zeros(0), "refs": []}
         N = {k: np.concatenate(v) for k, v in parts.items()}
@@ -193,7 +255,17 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
     designs = _Designs(exhaustive)
     kept: dict = {}
     branches = machine.branches()
-    offers = [_branch_offers(machine, ch, designs, not exhaustive, kept) for ch in branches]
+    # the shorter chains first; the longest last, bounded by the best machine the others complete
+    order = sorted(range(len(branches)), key=lambda b: len(branches[b]))
+    offers = [None] * len(branches)
+    for b in order[:-1]:
+        offers[b] = _branch_offers(machine, branches[b], designs, not exhaustive, kept)
+    rest = offers[order[0]] if len(branches) > 1 else _EMPTY
+    if rest is None or not len(rest["refs"]):
+        rest = None
+    last = order[-1]
+    offers[last] = _branch_offers(machine, branches[last], designs, not exhaustive, kept, other=rest,
+                                  incumbent=[-np.inf])
     best = _combine(machine, branches, offers)
     notes = [f"exact Pareto sets: below {ch[i - 1].name} offers of different carried mass are not compared "
              f"({ch[i - 1].name} is counterbalanced: more carried mass may help it); every load screened in full"
@@ -207,13 +279,15 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
                          designs.solves, kept, time.perf_counter() - t0, notes)
 
 
+_EMPTY = {"cost": np.zeros(1), "c": np.zeros((1, 3)), "mm": np.zeros(1), "f": np.full(1, np.inf), "refs": [()]}
+
+
 def _combine(machine: Machine, branches: list, offers: list) -> MachineDesign | None:
     """The best combination of the chains' offers (one or two chains)."""
     if any(not len(o["refs"]) for o in offers):
         return None
     A = offers[0]
-    B = offers[1] if len(offers) > 1 else {"cost": np.zeros(1), "c": np.zeros((1, 3)), "mm": np.zeros(1),
-                                           "f": np.full(1, np.inf), "refs": [()]}
+    B = offers[1] if len(offers) > 1 else _EMPTY
     ia, ib = (a.ravel() for a in np.meshgrid(np.arange(len(A["refs"])), np.arange(len(B["refs"])), indexing="ij"))
     cost = A["cost"][ia] + B["cost"][ib]
     c = A["c"][ia] + B["c"][ib]

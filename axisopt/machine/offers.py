@@ -19,10 +19,10 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..search.exhaustive import exhaustive_search
 from ..search.candidates import make_candidate
-from ..search.parts import build_space
+from ..search.exhaustive import exhaustive_search
 from ..search.pareto import nondominated, screen_feasible_blocks
+from ..search.parts import build_space
 from ..search.preload import exact_solve
 from ..search.task.constraints import build_constraints
 from ..search.task.objective import objective_spec

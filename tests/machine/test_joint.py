@@ -1,10 +1,9 @@
 """The joint machine search against every combination of every axis (small catalogs), and the sequential sizing."""
 
 import pytest
+from machinegen import random_machine
 
 from axisopt.machine import load_machine, solve_machine
-
-from machinegen import random_machine
 
 SEEDS = range(100)
 
