@@ -341,4 +341,6 @@ axes:
                   HIWIN-G-40x10-b6p35, HIWIN-G-40x20-b6p35], guide: [HIWIN-HG20-ZA, HIWIN-HG25-ZA]}
 """,
 })
-SHIPPED = MappingProxyType({'vmc': 'vmc_machine.yaml', 'moving-column': 'moving_column_machine.yaml', 'gantry': 'gantry_machine.yaml'})  # kind -> file name in problems/machines
+# kind -> file name in problems/machines
+SHIPPED = MappingProxyType({"vmc": "vmc_machine.yaml", "moving-column": "moving_column_machine.yaml",
+                            "gantry": "gantry_machine.yaml"})
