@@ -11,7 +11,8 @@ FILE_KINDS = ("design", "problem", "study", "calibration", "machine")
 
 
 def register(sub) -> None:
-    p = sub.add_parser("schema", help="JSON Schema of a design, problem, study, calibration or machine YAML (for editors)")
+    p = sub.add_parser("schema", help="JSON Schema of a design, problem, study, calibration or machine YAML "
+                       "(for editors)")
     p.add_argument("kind", choices=FILE_KINDS, help="the kind of YAML file")
     p.add_argument("--out", metavar="FILE", help="write the schema to FILE (default: print it)")
     p.set_defaults(func=cmd_schema)
