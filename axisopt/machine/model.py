@@ -58,6 +58,9 @@ class MachineDesign:
     cost: float  # [EUR]
     moving_mass: float  # every lumped mass [kg]
     misses: list = field(default_factory=list)  # machine limits missed: (key, value, limit) in SI
+    tool_point: dict = field(default_factory=dict)  # axis name -> nut position on its stroke [m]
+    k_axial_at_point: dict = field(default_factory=dict)  # axis name -> its drive chain there [N/m]
+    k_tool_at_point: tuple = ()  # the stiffness at the tool at the tool point, x, y, z [N/m]
     branches: list = field(default_factory=list)  # axis names per chain, the one on the frame first
 
     @property
@@ -139,4 +142,27 @@ def evaluate_choice(machine: Machine, picks: dict) -> MachineDesign:
     if moving > machine.max_moving_mass * (1 + 1e-9):
         md.misses.append(("max_moving_mass", moving, machine.max_moving_mass))
     del by
+    _at_tool_point(machine, md)
     return md
+
+
+def _at_tool_point(machine: Machine, md: MachineDesign) -> None:
+    """The stiffness chain at the tool point (each axis's nut at ``machine.tool_point``, mid-stroke where not
+    given): each drive chain's stiffness there from its design's evaluation, the guides and frame as before."""
+    from ..model import evaluate
+
+    pts = dict(machine.tool_point)
+    comp = np.zeros(3)
+    for a in md.axes:
+        ax = machine.by_name[a.name]
+        s = pts.get(a.name, 0.5 * ax.problem.axis.stroke)
+        ev = evaluate(a.candidate.design)
+        x0 = a.candidate.design.axis.start_offset
+        k_side = float(np.interp(x0 + s, ev.x, np.asarray(ev["k_total"], dtype=float)))
+        tw = ax.problem.axis.twin_drive
+        k_ax = k_side / ((tw.force_share ** 2 + (1 - tw.force_share) ** 2)) if tw is not None else k_side
+        md.tool_point[a.name] = s
+        md.k_axial_at_point[a.name] = k_ax
+        k = [k_ax if a.roles[i] == "axial" else a.k_axis[i] for i in range(3)]
+        comp += 1.0 / link_with_frame(ax, np.asarray(k))
+    md.k_tool_at_point = tuple(float(v) for v in 1.0 / comp)

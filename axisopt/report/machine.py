@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import textwrap
+
 from ..machine.spec import DIRECTIONS
+
+WIDTH = 100
 
 _UNIT = {"cost": ("EUR", 1.0), "tool_stiffness": ("N/um", 1e-6), "frequency": ("Hz", 1.0),
          "moving_mass": ("kg", 1.0)}
@@ -17,12 +21,13 @@ def _val(objective: str, v: float) -> str:
 
 def _design_lines(md, objective: str) -> list:
     L = []
-    L.append(f"  {'axis':<5} {'screw':<22} {'nut':<22} {'guide':<16} {'motor':<10} {'preload N':>9} "
-             f"{'carries kg':>10} {'cost EUR':>9}")
     for a in md.axes:
         c = a.candidate
-        L.append(f"  {a.name:<5} {c.screw:<22} {c.nut:<22} {c.guide:<16} {c.motor or '-':<10} "
-                 f"{c.nut_preload:>9,.0f} {a.carried:>10,.1f} {a.cost:>9,.0f}")
+        arr = f", {c.arrangement}" if c.arrangement else ""
+        L.append(f"  {a.name:<5} screw {c.screw}, nut {c.nut}, preload {c.nut_preload:,.0f} N")
+        L.append(f"  {'':<5} bearing {c.bearing}, guide {c.guide}{arr}")
+        L.append(f"  {'':<5} motor {c.motor or '-'}, coupling {c.coupling or '-'}, reduction {c.reduction or '-'}")
+        L.append(f"  {'':<5} carries {a.carried:,.1f} kg, moves {a.lumped:,.1f} kg, cost {a.cost:,.0f} EUR")
     L.append("  stiffness at the tool, each link in N/um (axis part, frame under it; * an estimate):")
     L.append(f"  {'axis':<5} " + " ".join(f"{d + ' (' + 'role' + ')':>24}" for d in DIRECTIONS))
     for a in md.axes:
@@ -35,6 +40,10 @@ def _design_lines(md, objective: str) -> list:
     for i, d in enumerate(DIRECTIONS):
         who, part = md.weakest(i)
         L.append(f"  k_{d} {md.k_tool[i] * 1e-6:.1f} N/um: most compliant link {who} ({part})")
+    if md.k_tool_at_point:
+        pts = ", ".join(f"{n} {s * 1e3:g} mm" for n, s in md.tool_point.items())
+        L.append(f"  at the tool point ({pts}): "
+                 + ", ".join(f"k_{d} {k * 1e-6:.1f}" for d, k in zip(DIRECTIONS, md.k_tool_at_point)) + " N/um")
     d, who, role = md.lowest_at
     L.append(f"  lowest natural frequency {md.f_lowest:.1f} Hz ({d}-direction mode, most strain energy in "
              f"{who}'s {role} link); Dunkerley's bound {md.f_dunkerley:.1f} Hz")
@@ -51,7 +60,8 @@ def format_machine(res) -> str:
     L = [f"machine {m.name}: {len(m.axes)} axes ({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
          f" on the frame), objective {m.objective}, method {res.method}"]
     L.append(f"status {res.status}: {res.nominal_combinations:.3g} nominal joint combinations, {res.axis_solves} "
-             f"axis solves, offers kept {', '.join(f'{k} {v}' for k, v in res.offers.items())}, {res.time:.1f} s")
+             f"axis solves, offers kept {', '.join(f'{k} {v}' for k, v in res.offers.items())}")
+    L.append(f"time {res.time:.1f} s")
     if res.best is None:
         L.append("no combination of the axes' designs meets every machine and axis limit")
     else:
@@ -77,7 +87,8 @@ def format_machine(res) -> str:
                          f"({'less' if m.objective in ('cost', 'moving_mass') else 'more'})")
     for n in res.notes:
         L.append(f"note: {n}")
-    return "\n".join(L)
+    return "\n".join(w for line in L for w in (textwrap.wrap(line, WIDTH, subsequent_indent="    ")
+                                                  if len(line) > WIDTH else [line]))
 
 
 def _design_dict(md) -> dict:
@@ -88,6 +99,8 @@ def _design_dict(md) -> dict:
         "lowest_mode": {"direction": md.lowest_at[0], "axis": md.lowest_at[1], "link": md.lowest_at[2]},
         "frequencies_hz": {f"{'/'.join(md.branches[b])}:{d}": list(f) for (b, d), f in md.frequencies.items()},
         "misses": [{"limit": k, "value": v, "bound": b} for k, v, b in md.misses],
+        "tool_point_mm": {n: v * 1e3 for n, v in md.tool_point.items()},
+        "k_tool_at_point_n_per_um": dict(zip(DIRECTIONS, (k * 1e-6 for k in md.k_tool_at_point))),
         "axes": [{"name": a.name, **a.candidate.parts(), "nut_preload_n": a.candidate.nut_preload,
                   "arrangement": a.candidate.arrangement, "carried_kg": a.carried, "lumped_mass_kg": a.lumped,
                   "cost_eur": a.cost, "parts_mass_kg": a.parts_mass, "counterweight_kg": a.counterweight,
