@@ -32,10 +32,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _commands():
     """One module per subcommand, each with ``register(sub)``; they import their heavy parts lazily."""
-    from . import compare, diagnose, evaluate, init, parts, schema, solve, study
+    from . import compare, diagnose, evaluate, init, machine, parts, schema, solve, study
 
     return [evaluate.register, solve.register, diagnose.register, compare.register, study.register,
-            parts.register, schema.register, init.register]
+            parts.register, schema.register, init.register, machine.register]
 
 
 def _show_progress() -> None:

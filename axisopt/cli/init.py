@@ -17,7 +17,7 @@ from pathlib import Path
 from ..errors import InputError
 from .common import EXIT_OK
 
-KINDS = ("design", "problem", "study")
+KINDS = ("design", "problem", "study", "machine")
 MACHINES = ("vmc", "lathe", "gantry", "vertical", "boring", "laser")
 
 _FORCE_NOTE = """\
@@ -411,9 +411,16 @@ _NEXT = {"design": "Evaluate it: axisopt evaluate FILE",
 
 
 def template(kind: str, machine: str = "vmc") -> str:
-    """The commented YAML text of a ``kind`` file (design, problem, study) for ``machine``."""
+    """The commented YAML text of a ``kind`` file (design, problem, study) for ``machine``; a machine file
+    (``kind`` 'machine'): ``machine`` is its kind, vmc | moving-column | gantry."""
     if kind not in KINDS:
         raise InputError(f"unknown file kind '{kind}'; use one of {', '.join(KINDS)}")
+    if kind == "machine":
+        from ..machine.templates import TEMPLATES
+
+        if machine not in TEMPLATES:
+            raise InputError(f"unknown machine kind '{machine}'; use one of {', '.join(TEMPLATES)}", where="--kind")
+        return TEMPLATES[machine]
     if machine not in _MACHINE:
         raise InputError(f"unknown machine '{machine}'; use one of {', '.join(MACHINES)}", where="--machine")
     m = _MACHINE[machine]
@@ -441,6 +448,9 @@ def register(sub) -> None:
     p.add_argument("--machine", choices=MACHINES, default="vmc",
                    help="machine type: vmc (machining centre X), lathe (Z), gantry (long X), vertical (Z), boring "
                         "(boring-mill table, 3 m, 2 t), laser (1.5 g contouring); default vmc")
+    p.add_argument("--kind", choices=("vmc", "moving-column", "gantry"), default="vmc", dest="machine_kind",
+                   help="init machine: the machine's kind (default vmc): a VMC (X on Y, Z on the column), a "
+                        "moving-column machine, a gantry with a twin-drive bridge and a counterbalanced Z")
     p.add_argument("--out", metavar="FILE",
                    help="file to write ('-' for stdout; default <machine>_<kind>.yaml in this directory)")
     p.add_argument("--force", action="store_true", help="overwrite an existing file")
@@ -448,8 +458,9 @@ def register(sub) -> None:
 
 
 def cmd_init(args) -> int:
-    text = template(args.kind, args.machine)
-    out = args.out or f"{args.machine}_{args.kind}.yaml"
+    which = args.machine_kind if args.kind == "machine" else args.machine
+    text = template(args.kind, which)
+    out = args.out or f"{which.replace('-', '_')}_{args.kind}.yaml"
     if out == "-":
         sys.stdout.write(text)
         return EXIT_OK
@@ -461,7 +472,9 @@ def cmd_init(args) -> int:
     from ..fileio import write_text_atomic
 
     write_text_atomic(str(path), text, what=f"{args.kind} YAML")
-    nxt = {"design": "axisopt evaluate", "problem": "axisopt solve", "study": "axisopt study"}[args.kind]
-    print(f"{args.kind} template for a {_MACHINE[args.machine]['title']} written to {path}")
+    nxt = {"design": "axisopt evaluate", "problem": "axisopt solve", "study": "axisopt study",
+           "machine": "axisopt machine solve"}[args.kind]
+    title = f"{which} machine" if args.kind == "machine" else f"a {_MACHINE[args.machine]['title']}"
+    print(f"{args.kind} template for {title} written to {path}")
     print(f"next: {nxt} {path}")
     return EXIT_OK

@@ -20,6 +20,7 @@ from axisopt.cli import main
 from axisopt.design import AXIS_SPEC, load_design
 from axisopt.errors import InputError
 from axisopt.identify.calibration import apply_calibration
+from axisopt.machine import load_machine
 from axisopt.problem import load_problem
 from axisopt.schema import KINDS_OF_FILE, json_schema, quantity_pattern, spec_of, units_of
 from axisopt.study.spec import load_study
@@ -51,6 +52,8 @@ def _kind_of(path: Path) -> str:
     name = path.name
     if path.parent.name == "studies":
         return "study"
+    if path.parent.name == "machines":
+        return "machine"
     if "design" in name or name.startswith("paper_") or "data" in path.parent.parts:
         return "design"
     if "problem" in name:
@@ -58,7 +61,7 @@ def _kind_of(path: Path) -> str:
     raise AssertionError(f"cannot tell the kind of {path}")
 
 
-LOADERS = {"design": load_design, "problem": load_problem, "study": load_study}
+LOADERS = {"design": load_design, "problem": load_problem, "study": load_study, "machine": load_machine}
 SHIPPED = sorted(p for p in PROBLEMS.rglob("*.yaml"))
 
 

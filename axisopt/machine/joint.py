@@ -1,0 +1,341 @@
+"""The joint search over every axis's designs, proven; the sequential sizing beside it.
+
+Per chain on the frame, from the top axis down: the top axis's designs at no carried load, reduced to the exact
+Pareto set of what the machine reads (:mod:`.offers`), are its *offers*.  The axis below is solved at each
+distinct mass an offer hangs on it, and each of its designs joins each offer of that mass: the new offers of the
+sub-tree (cost, the mass it hangs on its own carrier, what of it stays on the carrier, the compliance it adds at
+the tool, the chain's masses and springs where a frequency is read).  An offer is dropped when
+
+- a machine limit is already missed: the costs, masses and compliances only grow further down, and the lowest
+  frequency of the whole chain is at most that of the sub-chain on a rigid base (a constraint raises the
+  eigenvalues, Rayleigh), or
+- another offer is at least as good in everything the rest of the machine reads (the exact Pareto set).  That is
+  exact where the axis below never gains from more carried mass (:func:`.offers.monotone_in_load`), where the
+  compliances add in series and the chain's frequencies fall with mass and rise with stiffness.  Below a
+  counterbalanced vertical axis it is not: there offers of different carried mass are never compared, and that
+  axis is screened in full at every mass (the proven enumeration).
+
+``method='exhaustive'`` drops nothing and solves every combination of every axis at every load: the ground truth.
+The result's ``sequential`` is the designer's way: the top axis alone at its best for the machine objective, its
+mass carried down, and so on.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..search.pareto import nondominated
+from .chain import lowest_frequency
+from .model import MachineDesign, evaluate_choice, link_with_frame
+from .offers import axis_designs, feasible_sets, monotone_in_load, pareto_designs
+from .spec import Machine
+
+METHODS = ("default", "exhaustive")
+
+
+@dataclass
+class MachineResult:
+    """A machine solve: the joint optimum, the sequential sizing beside it, and how the search went."""
+
+    machine: Machine
+    method: str
+    status: str  # 'optimal' | 'infeasible'
+    best: MachineDesign | None
+    sequential: MachineDesign | None
+    nominal_combinations: float  # product of every axis's catalog combinations
+    axis_solves: int  # axis searches (one per axis and carried load)
+    offers: dict  # axis name -> offers kept after it
+    time: float  # [s]
+    notes: list = field(default_factory=list)
+
+    @property
+    def gain(self) -> float | None:
+        """The joint optimum's objective over the sequential one (None: either missing or infeasible)."""
+        if self.best is None or self.sequential is None or not self.sequential.feasible:
+            return None
+        return self.best.value(self.machine.objective) - self.sequential.value(self.machine.objective)
+
+
+def _reads_frequency(machine: Machine) -> bool:
+    return machine.min_frequency > 0 or machine.objective == "frequency"
+
+
+class _Designs:
+    """Every axis's designs per carried load, solved once (the lightest load first where monotone)."""
+
+    def __init__(self, exhaustive: bool):
+        self.exhaustive = exhaustive
+        self.cache: dict = {}
+        self.superset: dict = {}
+        self.solves = 0
+        self.combinations: dict = {}
+
+    def get(self, ax, load: float, at: tuple):
+        key = (ax.name, round(load, 9))
+        if key not in self.cache:
+            sup = None if self.exhaustive or not monotone_in_load(ax) else self.superset.get(ax.name)
+            if sup is not None and load < sup[0]:
+                sup = None  # a superset holds for heavier loads only
+            d = axis_designs(ax, load, at, exhaustive=self.exhaustive, superset=None if sup is None else sup[1])
+            self.solves += 1
+            self.combinations[ax.name] = max(self.combinations.get(ax.name, 0), d.combinations)
+            if not self.exhaustive and ax.name not in self.superset:
+                self.superset[ax.name] = (load, feasible_sets(d))
+            elif not self.exhaustive and load >= self.superset[ax.name][0]:
+                # the loads come lightest first: the designs feasible here bound every heavier load, and fewer
+                self.superset[ax.name] = (load, feasible_sets(d))
+            self.cache[key] = d if self.exhaustive else pareto_designs(d)
+        return self.cache[key]
+
+
+def _join(ax, own: float, O: dict, sel, D) -> dict:
+    """The offers ``sel`` of ``O`` (the axes above) each joined with each design of ``D`` (the axis below)."""
+    oi, dj = (a.ravel() for a in np.meshgrid(sel, np.arange(len(D)), indexing="ij"))
+    klink = link_with_frame(ax, D.k[dj])
+    lumped = own + D.moving_parts[dj] + O["stat"][oi]
+    return {"oi": oi, "dj": dj, "cost": O["cost"][oi] + D.cost[dj],
+            "M": own + D.parts[dj] + D.counterweight[dj] + O["M"][oi], "stat": D.stationary[dj],
+            "c": O["c"][oi] + 1.0 / klink, "mm": O["mm"][oi] + lumped, "m": np.column_stack([lumped, O["m"][oi]]),
+            "k": np.concatenate([klink[:, None, :], O["k"][oi]], axis=1)}
+
+
+def _within_limits(machine: Machine, J: dict, cmax) -> np.ndarray:
+    """The joined offers ``J`` of part of a chain that do not yet miss a machine limit (costs, masses and
+    compliances only grow further down; the frequency of the sub-chain on a rigid base bounds the whole's)."""
+    ok = (J["cost"] <= machine.max_cost * (1 + 1e-9)) & (J["mm"] <= machine.max_moving_mass * (1 + 1e-9))
+    ok &= (J["c"] <= cmax * (1 + 1e-9)).all(1)
+    if machine.min_frequency > 0 and ok.any():
+        f = np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
+        ok &= f >= machine.min_frequency * (1 - 1e-9)
+    return ok
+
+
+def _tol(v: float) -> float:
+    return 1e-9 * max(abs(v), 1.0)
+
+
+def _completion(machine: Machine, J: dict, other: dict) -> np.ndarray:
+    """The best machine objective (larger is better) each joined offer ``J`` of a whole chain reaches with the
+    other chain's offers ``other`` within the machine limits (-inf: none)."""
+    f = (np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
+         if _reads_frequency(machine) else np.full(len(J["cost"]), np.inf))
+    kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
+    out = np.full(len(J["cost"]), -np.inf)
+    for s in range(0, len(J["cost"]), 2048):
+        r = slice(s, s + 2048)
+        cost = J["cost"][r, None] + other["cost"][None, :]
+        c = J["c"][r, None, :] + other["c"][None, :, :]
+        mm = J["mm"][r, None] + other["mm"][None, :]
+        ff = np.minimum(f[r, None], other["f"][None, :])
+        ok = (cost <= machine.max_cost * (1 + 1e-9)) & (mm <= machine.max_moving_mass * (1 + 1e-9))
+        ok &= ((1.0 / c) >= kmin * (1 - 1e-9)).all(-1)
+        if machine.min_frequency > 0:
+            ok &= ff >= machine.min_frequency * (1 - 1e-9)
+        obj = np.where(ok, _objective(machine, cost, c, ff, mm), -np.inf)
+        out[r] = obj.max(axis=1, initial=-np.inf)
+    return out
+
+
+def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool, kept: dict,
+                   other: dict | None = None, incumbent: list | None = None) -> dict:
+    """The offers of one chain on the frame (arrays, one row per offer).  ``other``: the other chain's offers
+    (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (a list
+    of one value, the best machine objective found, larger is better)."""
+    freq = _reads_frequency(machine)
+    kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
+    cmax = np.where(kmin > 0, 1.0 / np.where(kmin > 0, kmin, 1.0), np.inf)
+    O = {"cost": np.zeros(1), "M": np.zeros(1), "stat": np.zeros(1), "c": np.zeros((1, 3)), "mm": np.zeros(1),
+         "m": np.zeros((1, 0)), "k": np.zeros((1, 0, 3)), "refs": [()]}
+    for i in range(len(chain) - 1, -1, -1):
+        ax = chain[i]
+        at = chain[i + 1].carried_at if i + 1 < len(chain) else (0.0, 0.0)
+        own = ax.problem.axis.moving_mass + (ax.problem.axis.twin_drive.cross_mass
+                                             if ax.problem.axis.twin_drive is not None else 0.0)
+        parts = {k: [] for k in ("cost", "M", "stat", "c", "mm", "m", "k")}
+        refs = []
+        loads = np.unique(O["M"])
+        if len(loads) > 1 and monotone_in_load(ax) and not designs.exhaustive:
+            designs.get(ax, float(loads[0]), at)  # the lightest first: its feasible set bounds the others
+        bound = prune and i == 0 and other is not None and monotone_in_load(ax)
+        for L in loads:  # ascending
+            sel = np.nonzero(O["M"] == L)[0]
+            if prune and monotone_in_load(ax) and len(sel) and not bound:
+                # the same with the machine limits only: no design at the lightest load meets them with these
+                # offers -> none at this load does
+                J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
+                if not _within_limits(machine, J, cmax).any():
+                    continue
+            if bound and len(sel) and np.isfinite(incumbent[0]):
+                # what this load's offers could reach with the axis's designs at the lightest load (a superset,
+                # each at least as stiff): none beats the incumbent -> the load is never solved
+                J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
+                if _completion(machine, J, other).max(initial=-np.inf) < incumbent[0] - _tol(incumbent[0]):
+                    continue
+            D = designs.get(ax, float(L), at)
+            if not len(D) and monotone_in_load(ax) and not designs.exhaustive:
+                break  # nothing fits this load: nothing fits a heavier one
+            if not len(D) or not len(sel):
+                continue
+            J = _join(ax, own, O, sel, D)
+            if bound:
+                incumbent[0] = max(incumbent[0], _completion(machine, J, other).max(initial=-np.inf))
+            for k in parts:
+                parts[k].append(J[k])
+            refs.extend((D, int(j)) + O["refs"][o] for o, j in zip(J["oi"], J["dj"]))
+        if not refs:
+            return {"cost": np.zeros(0), "c": np.zeros((0, 3)), "mm": np.zeros(0), "f": np.zeros(0), "refs": []}
+        N = {k: np.concatenate(v) for k, v in parts.items()}
+        N["refs"] = refs
+        keep = np.ones(len(refs), bool)
+        if prune:  # limits already missed (everything further down only adds)
+            keep &= N["cost"] <= machine.max_cost * (1 + 1e-9)
+            keep &= N["mm"] <= machine.max_moving_mass * (1 + 1e-9)
+            keep &= (N["c"] <= cmax * (1 + 1e-9)).all(1)
+        f_sub = None
+        if freq:
+            f_sub = np.min([lowest_frequency(N["m"], N["k"][:, :, d]) for d in range(3)], axis=0)
+            if prune and machine.min_frequency > 0:
+                keep &= f_sub >= machine.min_frequency * (1 - 1e-9)
+        N = _take(N, np.nonzero(keep)[0])
+        if f_sub is not None:
+            f_sub = f_sub[keep]
+        if prune and len(N["refs"]):
+            N = _take(N, _pareto(N, f_sub, freq, i == 0, monotone_in_load(chain[i - 1]) if i > 0 else True))
+        kept[ax.name] = len(N["refs"])
+        O = N
+    O["f"] = (np.min([lowest_frequency(O["m"], O["k"][:, :, d]) for d in range(3)], axis=0)
+              if len(O["refs"]) else np.zeros(0))
+    return O
+
+
+def _take(N: dict, keep) -> dict:
+    out = {k: v[keep] for k, v in N.items() if k != "refs"}
+    out["refs"] = [N["refs"][int(i)] for i in keep]
+    return out
+
+
+def _pareto(N: dict, f_sub, freq: bool, root: bool, monotone: bool) -> np.ndarray:
+    """The offers no other beats in what the rest of the machine reads (see the module docstring)."""
+    cols = [-N["cost"], -N["c"], -N["mm"]]
+    if root:
+        if freq:
+            cols.append(f_sub)
+    else:
+        cols += [-N["stat"]]
+        if freq:
+            cols += [-N["m"], N["k"].reshape(len(N["cost"]), -1)]
+        if monotone:
+            cols.append(-N["M"])
+    P = np.column_stack([np.asarray(c).reshape(len(N["cost"]), -1) for c in cols])
+    if root or monotone:
+        return nondominated(P)
+    out = []  # below a counterbalanced axis: only offers of the same carried mass are compared
+    for L in np.unique(N["M"]):
+        sel = np.nonzero(N["M"] == L)[0]
+        out.append(sel[nondominated(P[sel])])
+    return np.sort(np.concatenate(out))
+
+
+def _objective(machine: Machine, cost, c, f, mm) -> np.ndarray:
+    """The machine objective, larger is better."""
+    return {"cost": -cost, "tool_stiffness": (1.0 / c).min(-1), "frequency": f, "moving_mass": -mm}[
+        machine.objective]
+
+
+def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
+    """The machine's joint optimum over every axis's catalog combinations (``default``: proven through the exact
+    Pareto sets; ``exhaustive``: every combination of every axis) and the sequential sizing beside it."""
+    if method not in METHODS:
+        raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
+    t0 = time.perf_counter()
+    exhaustive = method == "exhaustive"
+    designs = _Designs(exhaustive)
+    kept: dict = {}
+    branches = machine.branches()
+    # the shorter chains first; the longest last, bounded by the best machine the others complete
+    order = sorted(range(len(branches)), key=lambda b: len(branches[b]))
+    offers = [None] * len(branches)
+    for b in order[:-1]:
+        offers[b] = _branch_offers(machine, branches[b], designs, not exhaustive, kept)
+    rest = offers[order[0]] if len(branches) > 1 else _EMPTY
+    if rest is None or not len(rest["refs"]):
+        rest = None
+    last = order[-1]
+    offers[last] = _branch_offers(machine, branches[last], designs, not exhaustive, kept, other=rest,
+                                  incumbent=[-np.inf])
+    best = _combine(machine, branches, offers)
+    notes = [f"exact Pareto sets: below {ch[i - 1].name} offers of different carried mass are not compared "
+             f"({ch[i - 1].name} is counterbalanced: more carried mass may help it); every load screened in full"
+             for ch in branches for i in range(1, len(ch)) if not monotone_in_load(ch[i - 1])]
+    for name in machine.estimated_frames:
+        notes.append(f"the frame under {name} is the stated estimate (as stiff as the axis link: its compliance "
+                     "doubled); give axes.{name}.frame_stiffness when known".replace("{name}", name))
+    seq = sequential(machine, designs)
+    nominal = float(np.prod([float(designs.combinations.get(a.name, 0)) for a in machine.axes]))
+    return MachineResult(machine, method, "optimal" if best is not None else "infeasible", best, seq, nominal,
+                         designs.solves, kept, time.perf_counter() - t0, notes)
+
+
+_EMPTY = {"cost": np.zeros(1), "c": np.zeros((1, 3)), "mm": np.zeros(1), "f": np.full(1, np.inf), "refs": [()]}
+
+
+def _combine(machine: Machine, branches: list, offers: list) -> MachineDesign | None:
+    """The best combination of the chains' offers (one or two chains)."""
+    if any(not len(o["refs"]) for o in offers):
+        return None
+    A = offers[0]
+    B = offers[1] if len(offers) > 1 else _EMPTY
+    ia, ib = (a.ravel() for a in np.meshgrid(np.arange(len(A["refs"])), np.arange(len(B["refs"])), indexing="ij"))
+    cost = A["cost"][ia] + B["cost"][ib]
+    c = A["c"][ia] + B["c"][ib]
+    mm = A["mm"][ia] + B["mm"][ib]
+    f = np.minimum(A["f"][ia], B["f"][ib]) if _reads_frequency(machine) else np.full(len(ia), np.inf)
+    kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
+    ok = (cost <= machine.max_cost * (1 + 1e-9)) & (mm <= machine.max_moving_mass * (1 + 1e-9))
+    ok &= ((1.0 / c) >= kmin * (1 - 1e-9)).all(1)
+    if machine.min_frequency > 0:
+        ok &= f >= machine.min_frequency * (1 - 1e-9)
+    if not ok.any():
+        return None
+    obj = _objective(machine, cost, c, f, mm)
+    w = np.nonzero(ok)[0]
+    top = obj[w].max()
+    tied = w[obj[w] >= top - 1e-9 * max(abs(top), 1.0)]
+    j = tied[np.lexsort((mm[tied], cost[tied]))[0]]  # ties: cheaper, then lighter
+    picks = {}
+    for chain, o, r in zip(branches, offers, (ia[j], ib[j])):
+        for ax, (D, row) in zip(chain, _pairs(o["refs"][r])):
+            picks[ax.name] = (D, row)
+    return evaluate_choice(machine, picks)
+
+
+def _pairs(ref: tuple) -> list:
+    return [(ref[i], ref[i + 1]) for i in range(0, len(ref), 2)]
+
+
+def sequential(machine: Machine, designs: _Designs) -> MachineDesign | None:
+    """The designer's sizing: each chain's top axis first, alone, at its best for the machine objective (cost:
+    the cheapest; tool stiffness or frequency: the stiffest link along its travel; moving mass: the lightest), its
+    mass carried to the axis below, and so on; the machine limits are checked only at the end."""
+    picks = {}
+    for chain in machine.branches():
+        load = 0.0
+        for i in range(len(chain) - 1, -1, -1):
+            ax = chain[i]
+            at = chain[i + 1].carried_at if i + 1 < len(chain) else (0.0, 0.0)
+            D = designs.get(ax, load, at)
+            if not len(D):
+                return None
+            di = "xyz".index(ax.direction)
+            score = {"cost": -D.cost, "moving_mass": -D.parts}.get(machine.objective, D.k[:, di])
+            top = score.max()
+            tied = np.nonzero(score >= top - 1e-9 * max(abs(top), 1.0))[0]
+            j = int(tied[np.lexsort((D.parts[tied], D.cost[tied]))[0]])
+            picks[ax.name] = (D, j)
+            own = ax.problem.axis.moving_mass + (ax.problem.axis.twin_drive.cross_mass
+                                                 if ax.problem.axis.twin_drive is not None else 0.0)
+            load = load + own + float(D.parts[j] + D.counterweight[j])
+    return evaluate_choice(machine, picks)

@@ -1,0 +1,123 @@
+"""A machine solve (:class:`axisopt.machine.joint.MachineResult`) as text and as a dict for JSON."""
+
+from __future__ import annotations
+
+import textwrap
+
+from ..machine.spec import DIRECTIONS
+
+WIDTH = 100
+
+_UNIT = {"cost": ("EUR", 1.0), "tool_stiffness": ("N/um", 1e-6), "frequency": ("Hz", 1.0),
+         "moving_mass": ("kg", 1.0)}
+_LIMIT_UNIT = {"min_tool_stiffness": ("N/um", 1e-6), "min_frequency": ("Hz", 1.0), "max_cost": ("EUR", 1.0),
+               "max_moving_mass": ("kg", 1.0)}
+
+
+def _val(objective: str, v: float) -> str:
+    unit, f = _UNIT[objective]
+    return f"{v * f:,.1f} {unit}"
+
+
+def _design_lines(md, objective: str) -> list:
+    L = []
+    for a in md.axes:
+        c = a.candidate
+        arr = f", {c.arrangement}" if c.arrangement else ""
+        L.append(f"  {a.name:<5} screw {c.screw}, nut {c.nut}, preload {c.nut_preload:,.0f} N")
+        L.append(f"  {'':<5} bearing {c.bearing}, guide {c.guide}{arr}")
+        L.append(f"  {'':<5} motor {c.motor or '-'}, coupling {c.coupling or '-'}, reduction {c.reduction or '-'}")
+        L.append(f"  {'':<5} carries {a.carried:,.1f} kg, moves {a.lumped:,.1f} kg, cost {a.cost:,.0f} EUR")
+    L.append("  stiffness at the tool, each link in N/um (axis part, frame under it; * an estimate):")
+    L.append(f"  {'axis':<5} " + " ".join(f"{d + ' (' + 'role' + ')':>24}" for d in DIRECTIONS))
+    for a in md.axes:
+        cells = []
+        for i, _d in enumerate(DIRECTIONS):
+            mark = "*" if a.frame_estimated else ""
+            cells.append(f"{a.roles[i][:3]} {a.k_axis[i] * 1e-6:7.1f} | frm {a.k_frame[i] * 1e-6:6.0f}{mark}")
+        L.append(f"  {a.name:<5} " + " ".join(f"{c:>24}" for c in cells))
+    L.append(f"  {'tool':<5} " + " ".join(f"{k * 1e-6:>24.1f}" for k in md.k_tool))
+    for i, d in enumerate(DIRECTIONS):
+        who, part = md.weakest(i)
+        L.append(f"  k_{d} {md.k_tool[i] * 1e-6:.1f} N/um: most compliant link {who} ({part})")
+    if md.k_tool_at_point:
+        pts = ", ".join(f"{n} {s * 1e3:g} mm" for n, s in md.tool_point.items())
+        L.append(f"  at the tool point ({pts}): "
+                 + ", ".join(f"k_{d} {k * 1e-6:.1f}" for d, k in zip(DIRECTIONS, md.k_tool_at_point)) + " N/um")
+    d, who, role = md.lowest_at
+    L.append(f"  lowest natural frequency {md.f_lowest:.1f} Hz ({d}-direction mode, most strain energy in "
+             f"{who}'s {role} link); Dunkerley's bound {md.f_dunkerley:.1f} Hz")
+    L.append(f"  cost {md.cost:,.0f} EUR, moving masses {md.moving_mass:,.1f} kg")
+    for key, v, lim in md.misses:
+        unit, f = _LIMIT_UNIT[key.split(".")[0]]
+        L.append(f"  misses {key}: {v * f:,.1f} against {lim * f:,.1f} {unit}")
+    return L
+
+
+def format_machine(res) -> str:
+    """The joint optimum, the sequential sizing beside it and what the joint search gained."""
+    m = res.machine
+    L = [f"machine {m.name}: {len(m.axes)} axes ({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
+         f" on the frame), objective {m.objective}, method {res.method}"]
+    L.append(f"status {res.status}: {res.nominal_combinations:.3g} nominal joint combinations, {res.axis_solves} "
+             f"axis solves, offers kept {', '.join(f'{k} {v}' for k, v in res.offers.items())}")
+    L.append(f"time {res.time:.1f} s")
+    if res.best is None:
+        L.append("no combination of the axes' designs meets every machine and axis limit")
+    else:
+        L.append("")
+        L.append(f"joint optimum: {_val(m.objective, res.best.value(m.objective))}")
+        L += _design_lines(res.best, m.objective)
+    L.append("")
+    if res.sequential is None:
+        L.append("sequential sizing (top axis first): an axis has no feasible design at the mass carried to it")
+    else:
+        seq = res.sequential
+        L.append(f"sequential sizing (top axis first, each alone at its best, its mass carried down): "
+                 f"{_val(m.objective, seq.value(m.objective))}{'' if seq.feasible else ', misses the machine limits'}")
+        L += _design_lines(seq, m.objective)
+        if res.best is not None:
+            L.append("")
+            if not seq.feasible:
+                L.append("the joint search gained: a machine that meets every limit (the sequential one does not)")
+            elif abs(res.gain) <= 1e-9 * max(1.0, abs(res.best.value(m.objective))):
+                L.append("the joint search gained: the same")
+            else:
+                L.append(f"the joint search gained: {_val(m.objective, abs(res.gain))} "
+                         f"({'less' if m.objective in ('cost', 'moving_mass') else 'more'})")
+    for n in res.notes:
+        L.append(f"note: {n}")
+    return "\n".join(w for line in L for w in (textwrap.wrap(line, WIDTH, subsequent_indent="    ")
+                                                  if len(line) > WIDTH else [line]))
+
+
+def _design_dict(md) -> dict:
+    return {
+        "feasible": md.feasible, "cost_eur": md.cost, "moving_mass_kg": md.moving_mass,
+        "k_tool_n_per_um": dict(zip(DIRECTIONS, (k * 1e-6 for k in md.k_tool))),
+        "lowest_frequency_hz": md.f_lowest, "dunkerley_hz": md.f_dunkerley,
+        "lowest_mode": {"direction": md.lowest_at[0], "axis": md.lowest_at[1], "link": md.lowest_at[2]},
+        "frequencies_hz": {f"{'/'.join(md.branches[b])}:{d}": list(f) for (b, d), f in md.frequencies.items()},
+        "misses": [{"limit": k, "value": v, "bound": b} for k, v, b in md.misses],
+        "tool_point_mm": {n: v * 1e3 for n, v in md.tool_point.items()},
+        "k_tool_at_point_n_per_um": dict(zip(DIRECTIONS, (k * 1e-6 for k in md.k_tool_at_point))),
+        "axes": [{"name": a.name, **a.candidate.parts(), "nut_preload_n": a.candidate.nut_preload,
+                  "arrangement": a.candidate.arrangement, "carried_kg": a.carried, "lumped_mass_kg": a.lumped,
+                  "cost_eur": a.cost, "parts_mass_kg": a.parts_mass, "counterweight_kg": a.counterweight,
+                  "link_n_per_um": {d: {"role": a.roles[i], "axis": a.k_axis[i] * 1e-6,
+                                        "frame": a.k_frame[i] * 1e-6, "frame_estimated": a.frame_estimated,
+                                        "link": a.k_link[i] * 1e-6} for i, d in enumerate(DIRECTIONS)}}
+                 for a in md.axes],
+    }
+
+
+def machine_dict(res) -> dict:
+    m = res.machine
+    return {
+        "machine": m.name, "objective": m.objective, "method": res.method, "status": res.status,
+        "nominal_combinations": res.nominal_combinations, "axis_solves": res.axis_solves,
+        "offers_kept": dict(res.offers), "time_s": res.time, "notes": list(res.notes),
+        "best": None if res.best is None else _design_dict(res.best),
+        "sequential": None if res.sequential is None else _design_dict(res.sequential),
+        "gain": res.gain,
+    }
