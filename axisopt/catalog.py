@@ -145,6 +145,10 @@ COLUMNS = MappingProxyType({
         _c("axial_rigidity", "stiffness", "bearing_stiffness", positive=True, **_RIGIDITY),
         _c("lift_off_load", "force", "bearing_lift_off", estimated_when=_CATALOG_ROWS,
            estimated_how="2.83 x preload (DB/DF/DFF, SKF-LF) or 2.08 x preload (DBD), catalogs/SOURCES.md"),
+        # the lift-off load of the stronger direction (its rows loaded, the others unloading) where it differs
+        # from the other's: a 3-against-1 set (DFT) mounted with its three rows facing the screw's pretension
+        _c("lift_off_load_strong", "force", optional=True, positive=True,
+           blank="the set lifts off at lift_off_load both ways (the weaker direction's value: conservative)"),
         _c("dynamic_load_rating", "force", "bearing_dynamic_load", positive=True, **_DERIVED),
         # the static (or limiting, or permissible) axial rating of the rows carrying the stronger direction, and
         # the least static safety its vendor asks on it (physics.bearings: NSK/HIWIN WBK limiting load 1/0.7,
@@ -263,7 +267,7 @@ _AT_MOST = {t: tuple((c.name, c.at_most) for c in cols if c.at_most is not None)
 # direction: (the stronger direction, the other); the vendors print the set's rating for the stronger one (NSK
 # TAC B: DFD in the "2 rows" column; HIWIN WBK DFD 46.5 kN)
 ARRANGEMENT_ROWS = MappingProxyType({"DB": (1, 1), "DF": (1, 1), "DBD": (2, 1), "DFD": (2, 1), "DBB": (2, 2),
-                                     "DFF": (2, 2)})
+                                     "DFF": (2, 2), "DBT": (3, 1), "DFT": (3, 1)})
 CHOICES = {
     ("nuts", "type"): ("single", "double"),
     ("guides", "type"): ("ball", "roller"),
