@@ -40,8 +40,8 @@ ATL5 = {25: (2530, 632500, 0.10), 32: (3080, 770000, 0.12), 50: (5060, 1265000, 
 STAGES = [(w, z1, i) for w in (25, 50, 75, 100) for z1 in (32,) for i in (1.0, 1.5, 2.0, 3.0)]
 EFFICIENCY = 98  # [%] an estimate (Siegling ref. 202: synchronous belt drives up to 98 %)
 SOURCE = ("ELATECH PU belts cat. p. 20 (ATL5: FTzul, Cspez, weight, FUspez at 3000 rpm), 52-54 (F_U = FUspez "
-          "z_e b, z_e <= 12); BRECOflex zero-gap AT5 pulleys (backlash); torque, stiffness, inertia derived "
-          "(physics.belt); pulley inertia estimate; efficiency estimate; price illustrative")
+          "z_e b, z_e <= 12); BRECOflex zero-gap AT5 pulleys (backlash); torque by the vendor's rule; stiffness "
+          "and inertia derived (physics.belt, steel pulleys); efficiency estimate; price illustrative")
 
 
 def _fmt(x: float, digits: int = 4) -> str:
@@ -72,7 +72,7 @@ def stage(width_mm: int, z1: int, ratio: float) -> dict:
         "inertia [kg.cm^2]": _fmt(j_in * 1e4), "rated_torque [N.m]": _fmt(torque),
         "accel_torque [N.m]": _fmt(torque), "torsional_stiffness [N.m/arcmin]": _fmt(kt * math.pi / (180 * 60)),
         "backlash [arcmin]": "0", "max_input_speed [rpm]": _fmt(TOP_SPEED), "mass [kg]": _fmt(mass, 3),
-        "price [EUR]": _fmt(60 + 2.0 * width_mm + 0.8 * (z1 + z2), 3), "status": "derived", "source": SOURCE,
+        "price [EUR]": _fmt(60 + 2.0 * width_mm + 0.8 * (z1 + z2), 3), "status": "stiffness-derived", "source": SOURCE,
     }
 
 

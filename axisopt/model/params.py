@@ -101,7 +101,9 @@ RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque
                                 ("bearings", "static_safety"): "bearing_static_safety",
                                 ("guides", "rating_distance"): "guide_rating_distance",
                                 ("motors", "peak_corner_speed"): "motor_peak_corner_speed",
-                                ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed"})
+                                ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed",
+                                ("bearings", "lift_off_load_strong"): "bearing_lift_off_strong",
+                                ("reductions", "torsional_stiffness"): "reduction_compliance"})
 
 
 def columns_read(table: str) -> tuple:
