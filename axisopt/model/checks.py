@@ -65,15 +65,19 @@ def bearing_life_load(p, loads, travels, static):
     printed set rating for the stronger direction, i^0.7 scaled for the other: NSK TAC B, IBC), the static set
     load (pretension, thermal force) pressing the weaker rows, and the rows' lives summed as NSK sums a
     preloaded set's (e = 1.1).  The set is mounted with its stronger rows facing the direction that gives the
-    longer life (the designer's choice)."""
+    longer life (the designer's choice): either way round against the cycle's loads, and with either group of
+    rows facing the static load (a 3-against-1 set's three rows take a pretension, IBC TI-I-5010.2; for a set
+    of as many rows each way both choices are one)."""
     c_strong = p["bearing_dynamic_load"]
-    ratings = (c_strong, pl.row_group_rating(c_strong, p["bearing_rows_weak"], p["bearing_rows_strong"]))
+    c_weak = pl.row_group_rating(c_strong, p["bearing_rows_weak"], p["bearing_rows_strong"])
     best = None
-    for orient in (1.0, -1.0):
-        halves = [pl.preloaded_halves(p["bearing_preload"], orient * f - static) for f in loads]
-        means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
-        load = pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT)
-        best = load if best is None else mx.fmin(best, load)
+    for ratings in ((c_strong, c_weak), (c_weak, c_strong)):
+        for orient in (1.0, -1.0):
+            halves = [pl.preloaded_halves(p["bearing_preload"], orient * f - static) for f in loads]
+            means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
+            # the equivalent load on the printed (stronger) rating
+            load = pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT) * (c_strong / ratings[0])
+            best = load if best is None else mx.fmin(best, load)
     return best
 
 
