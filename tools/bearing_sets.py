@@ -42,7 +42,10 @@ def dft_rows(rows: list[dict]) -> list[dict]:
     k_pre, k_rig = set_preload_ratio(3.0, 1.0), set_rigidity_ratio(3.0, 1.0)
     for r in rows:
         name = r["id"].removeprefix("NSK-").split("-")[0]
-        if not (r["id"].startswith("NSK-") and r["arrangement"] == "DF" and name in THREE_ROWS):
+        # the standard preload (C10) only: a 3-against-1 set is there to carry a pretension or one heavy
+        # direction, which the light preload's lift-off load gives away
+        if not (r["id"].startswith("NSK-") and r["arrangement"] == "DF" and name in THREE_ROWS
+                and r["id"].endswith("-C10")):
             continue
         ca, c0 = THREE_ROWS[name]
         pre = float(r["preload [N]"]) * k_pre
@@ -74,6 +77,7 @@ def main(argv: list[str]) -> int:
         bad = [n["id"] for n in new if {k: have.get(n["id"], {}).get(k) for k in n} != n]
         print("catalog current" if not bad else f"rows missing or different: {', '.join(bad)}")
         return 1 if bad else 0
+    rows = [r for r in rows if r["arrangement"] != "DFT" or r["id"] in {n["id"] for n in new}]
     rows = [r for r in rows if r["id"] not in {n["id"] for n in new}]
     at = {r["id"]: i for i, r in enumerate(rows)}
     for n in new:  # after the DFF row of the same bearing and class

@@ -37,7 +37,9 @@ FU_SPEZ_TOP = 19.85  # ATL5 tooth shear strength at 3000 min^-1 [N/cm] (ELATECH 
 # ATL5 type M (ELATECH cat. p. 20): width [mm] -> (F_Tzul [N], Cspez [N], weight [kg/m])
 ATL5 = {25: (2530, 632500, 0.10), 32: (3080, 770000, 0.12), 50: (5060, 1265000, 0.19),
         75: (7590, 1897500, 0.29), 100: (10120, 2530000, 0.38)}
-STAGES = [(w, z1, i) for w in (25, 50, 75, 100) for z1 in (32,) for i in (1.0, 1.5, 2.0, 3.0)]
+# 50 and 100 mm wide, 1.5:1 to 3:1 (a 1:1 stage is a direct drive with more inertia and less stiffness: the
+# search would never choose it; folding the motor beside the screw is no value the model weighs)
+STAGES = [(w, z1, i) for w in (50, 100) for z1 in (32,) for i in (1.5, 2.0, 3.0)]
 EFFICIENCY = 98  # [%] an estimate (Siegling ref. 202: synchronous belt drives up to 98 %)
 SOURCE = ("ELATECH PU belts cat. p. 20 (ATL5: FTzul, Cspez, weight, FUspez at 3000 rpm), 52-54 (F_U = FUspez "
           "z_e b, z_e <= 12); BRECOflex zero-gap AT5 pulleys (backlash); torque by the vendor's rule; stiffness "
