@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import mathx as mx
 from ..physics import bearings as pb
+from ..physics import bearingsets as psets
 from ..physics import checks as pc
 from ..physics import life as pl
 from ..physics import nut as pn
@@ -67,18 +68,35 @@ def bearing_life_load(p, loads, travels, static):
     preloaded set's (e = 1.1).  The set is mounted with its stronger rows facing the direction that gives the
     longer life (the designer's choice): either way round against the cycle's loads, and with either group of
     rows facing the static load (a 3-against-1 set's three rows take a pretension, IBC TI-I-5010.2; for a set
-    of as many rows each way both choices are one)."""
+    of as many rows each way both choices are one).  A screw held at both ends has a set at each, mirrored: the
+    cycle's loads press one end's set the way the other's is spared, so the worse of the two governs there."""
     c_strong = p["bearing_dynamic_load"]
-    c_weak = pl.row_group_rating(c_strong, p["bearing_rows_weak"], p["bearing_rows_strong"])
+    n_s, n_w = p["bearing_rows_strong"], p["bearing_rows_weak"]
+    c_weak = pl.row_group_rating(c_strong, n_w, n_s)
+    pre = p["bearing_preload"]
+    two_ends = p["bearing_sets"] > 1.5
     best = None
-    for ratings in ((c_strong, c_weak), (c_weak, c_strong)):
+    for ratings, rows in (((c_strong, c_weak), (n_s, n_w)), ((c_weak, c_strong), (n_w, n_s))):
+        ends = []
         for orient in (1.0, -1.0):
-            halves = [pl.preloaded_halves(p["bearing_preload"], orient * f - static) for f in loads]
+            # the groups' loads: HIWIN's pair law, with the set's own lift-off where the groups differ in rows
+            # (physics.bearingsets.set_halves; a set of as many rows each way: the pair law as it is)
+            halves = [_set_halves(pre, orient * f - static, rows, n_s == n_w) for f in loads]
             means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
             # the equivalent load on the printed (stronger) rating
-            load = pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT) * (c_strong / ratings[0])
-            best = load if best is None else mx.fmin(best, load)
+            ends.append(pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT) * (c_strong / ratings[0]))
+        load = mx.if_else(two_ends, mx.fmax(*ends), mx.fmin(*ends))
+        best = load if best is None else mx.fmin(best, load)
     return best
+
+
+def _set_halves(preload, load, rows, symmetric):
+    """The two row groups' loads of a support set (see :func:`bearing_life_load`)."""
+    pair = pl.preloaded_halves(preload, load)
+    if isinstance(symmetric, (bool, np.bool_)) and symmetric:
+        return pair
+    rows_halves = psets.set_halves(preload, load, rows[0], rows[1])
+    return tuple(mx.if_else(symmetric, a, b) for a, b in zip(pair, rows_halves))
 
 
 def bearing_static(p, f_max, static):
@@ -137,6 +155,7 @@ def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
     else:
         q = dict(p)
         q.update({"bearing_dynamic_load": ca, "bearing_rows_strong": 1.0, "bearing_rows_weak": 1.0,
+                  "bearing_sets": 1.0,
                   "bearing_preload": unit(p, "unit_bearing_preload")})
         load = bearing_life_load(q, loads["life_loads"], loads["life_travels"], 0.0)
         life = mx.if_else(r, pc.life_time(ca, load, mean_omega, p["load_factor"]), absent)

@@ -14,11 +14,17 @@ when the ``n_a`` group has taken up the whole gap.  Three published tables follo
 * NSK super-precision bearings p. 168 (TAC B): triplex and quadruplex preload 1.37 and 1.98 times the duplex's
   and rigidity 1.46 and 1.96 times: :func:`set_preload_ratio`, :func:`set_rigidity_ratio`.
 
-All functions take floats, numpy arrays or CasADi symbols (powers and sums only).
+The load on each group under an external load (:func:`set_halves`) follows HIWIN's preloaded-pair law (H-BS
+F 3.7, F_b = F_pr (1 + F / (2^{3/2} F_pr))^{3/2}) written with the set's own lift-off load; it is that law for
+a set of as many bearings each way and within 5 % of the exact Hertz split for 3 against 1.
+
+All functions take floats, numpy arrays or CasADi symbols.
 """
 from __future__ import annotations
 
-__all__ = ["set_preload_ratio", "set_lift_off", "set_rigidity_ratio"]
+from .. import mathx as mx
+
+__all__ = ["set_preload_ratio", "set_lift_off", "set_rigidity_ratio", "set_pressed_load", "set_halves"]
 
 
 def set_preload_ratio(n_a, n_b):
@@ -43,3 +49,24 @@ def set_rigidity_ratio(n_a, n_b):
     (:func:`set_preload_ratio`): (n_a^{2/3} + n_b^{2/3}) / 2 * ratio^{1/3}.  2 against 1: 1.43, 2 against 2: 2
     (NSK p. 168: 1.46 and 1.96); 3 against 1: 1.79."""
     return 0.5 * (n_a ** (2.0 / 3.0) + n_b ** (2.0 / 3.0)) * set_preload_ratio(n_a, n_b) ** (1.0 / 3.0)
+
+
+def set_pressed_load(preload, load, n_load, n_other):
+    r"""Load [N] on the group of ``n_load`` bearings an axial ``load`` >= 0 [N] presses, in a set of preload
+    ``preload`` against ``n_other``: F_pr (1 + c F / L)^{3/2} up to the lift-off load L (:func:`set_lift_off`),
+    with c = (L / F_pr)^{2/3} - 1 so that it reaches L there, and F beyond.  1 against 1: c = 1, L = 2^{3/2}
+    F_pr, HIWIN H-BS F 3.7's preloaded-pair law."""
+    lift = set_lift_off(preload, n_load, n_other)
+    c = (lift / preload) ** (2.0 / 3.0) - 1.0
+    below = preload * (1.0 + c * mx.fmin(load, lift) / lift) ** 1.5
+    return mx.if_else(load < lift, below, load)
+
+
+def set_halves(preload, load, n_plus, n_minus):
+    """Loads [N] on the '+' group (``n_plus`` bearings) and the '-' group of a preloaded set under a signed axial
+    ``load`` [N] (+ presses the '+' group): the pressed group :func:`set_pressed_load`, the other that less the
+    load (zero after lift-off).  Returns (F_+, F_-)."""
+    plus = set_pressed_load(preload, mx.fmax(load, 0.0), n_plus, n_minus)
+    minus = set_pressed_load(preload, mx.fmax(-load, 0.0), n_minus, n_plus)
+    pressed_plus = load >= 0.0
+    return (mx.if_else(pressed_plus, plus, minus + load), mx.if_else(pressed_plus, plus - load, minus))
