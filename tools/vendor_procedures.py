@@ -359,21 +359,26 @@ def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
     total = sum(p.dist for p in moving)
     best = 0.0
     for a, b in ((n1, n2), (n2, n1)):  # a: the rows facing the pretension (+)
-        cubes = [0.0, 0.0]
-        for p in moving:
-            for f in (p.load + pretension, -p.load + pretension):  # the phase either way along the axis
+        ends = []
+        # with a pretension (both ends held) the two ends' sets see the cycle in opposite senses: the worse
+        # governs; one set alone is turned the way that lives longer
+        for sign in (1, -1):
+            cubes = [0.0, 0.0]
+            for p in moving:
+                f = sign * p.load + pretension
                 if f >= 0:
                     qa, qb = hertz_group_loads(brg["preload"], a, b, f)
                 else:
                     qb, qa = hertz_group_loads(brg["preload"], b, a, -f)
-                cubes[0] += (qa * fw) ** 3 * p.dist / 2
-                cubes[1] += (qb * fw) ** 3 * p.dist / 2
-        lives = [(rating[n] / (c / total) ** (1 / 3)) ** 3 * 1e6 for n, c in zip((a, b), cubes) if c > 0]
-        rev = sum(life ** -1.1 for life in lives) ** (-1 / 1.1)
-        best = max(best, rev / (60 * nm))
+                cubes[0] += (qa * fw) ** 3 * p.dist
+                cubes[1] += (qb * fw) ** 3 * p.dist
+            lives = [(rating[n] / (c / total) ** (1 / 3)) ** 3 * 1e6 for n, c in zip((a, b), cubes) if c > 0]
+            ends.append(sum(life ** -1.1 for life in lives) ** (-1 / 1.1) / (60 * nm))
+        best = max(best, min(ends) if pretension else max(ends))
     return best, "NSK-SP pp. 110-111 (Ca by rows loaded), Hertz load split", (
-        f"{brg['arrangement']}: groups {n1}/{n2}, Ca {rating[n1] / 1e3:.1f} / {rating[n2] / 1e3:.1f} kN; the cycle "
-        "taken either way along the axis (one end's set)")
+        f"{brg['arrangement']}: groups {n1}/{n2}, Ca {rating[n1] / 1e3:.1f} / {rating[n2] / 1e3:.1f} kN; "
+        + ("the worse end's set (the cycle against the pretension one way at each end)" if pretension
+           else "the set turned the way that lives longer"))
 
 
 def bearing_permissible_load(brg):

@@ -79,8 +79,8 @@ def bearing_life_load(p, loads, travels, static):
     for ratings, rows in (((c_strong, c_weak), (n_s, n_w)), ((c_weak, c_strong), (n_w, n_s))):
         ends = []
         for orient in (1.0, -1.0):
-            # the groups' loads: HIWIN's pair law, with the set's own lift-off where the groups differ in rows
-            # (physics.bearingsets.set_halves; a set of as many rows each way: the pair law as it is)
+            # the groups' loads: HIWIN's pair law for as many rows each way; where the groups differ in rows, IBC's
+            # linear split up to the set's own lift-off load (physics.bearingsets.set_halves)
             halves = [_set_halves(pre, orient * f - static, rows, n_s == n_w) for f in loads]
             means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
             # the equivalent load on the printed (stronger) rating

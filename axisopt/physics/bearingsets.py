@@ -14,9 +14,8 @@ when the ``n_a`` group has taken up the whole gap.  Three published tables follo
 * NSK super-precision bearings p. 168 (TAC B): triplex and quadruplex preload 1.37 and 1.98 times the duplex's
   and rigidity 1.46 and 1.96 times: :func:`set_preload_ratio`, :func:`set_rigidity_ratio`.
 
-The load on each group under an external load (:func:`set_halves`) follows HIWIN's preloaded-pair law (H-BS
-F 3.7, F_b = F_pr (1 + F / (2^{3/2} F_pr))^{3/2}) written with the set's own lift-off load; it is that law for
-a set of as many bearings each way and within 5 % of the exact Hertz split for 3 against 1.
+The load on each group under an external load (:func:`set_halves`) is IBC's linear split between the preload
+and the set's own lift-off load (Table 2.2's form), above Hertz's exact (convex) split: conservative.
 
 All functions take floats, numpy arrays or CasADi symbols.
 """
@@ -53,13 +52,12 @@ def set_rigidity_ratio(n_a, n_b):
 
 def set_pressed_load(preload, load, n_load, n_other):
     r"""Load [N] on the group of ``n_load`` bearings an axial ``load`` >= 0 [N] presses, in a set of preload
-    ``preload`` against ``n_other``: F_pr (1 + c F / L)^{3/2} up to the lift-off load L (:func:`set_lift_off`),
-    with c = (L / F_pr)^{2/3} - 1 so that it reaches L there, and F beyond.  1 against 1: c = 1, L = 2^{3/2}
-    F_pr, HIWIN H-BS F 3.7's preloaded-pair law."""
+    ``preload`` against ``n_other``: IBC's linear split (TI-I-5010.2/E Table 2.2: A = a0 Fv + a1 Fae up to the
+    unloading point), the line from the preload at no load to the lift-off load L (:func:`set_lift_off`) where
+    the group carries it all, F beyond.  Hertz's exact split is convex in F, so the line lies above it (by at
+    most 7 % of the load for 3 against 1): conservative for the life."""
     lift = set_lift_off(preload, n_load, n_other)
-    c = (lift / preload) ** (2.0 / 3.0) - 1.0
-    below = preload * (1.0 + c * mx.fmin(load, lift) / lift) ** 1.5
-    return mx.if_else(load < lift, below, load)
+    return mx.if_else(load < lift, preload + load * (lift - preload) / lift, load)
 
 
 def set_halves(preload, load, n_plus, n_minus):
