@@ -110,6 +110,10 @@ BACKEND_CASES = [
     (bearingsets.set_preload_ratio, (3.0, 1.0)),
     (bearingsets.set_lift_off, (1.0e4, 3.0, 1.0)),
     (bearingsets.set_rigidity_ratio, (2.0, 1.0)),
+    (bearingsets.set_pressed_load, (1.0e4, 2.0e4, 3.0, 1.0)),
+    (bearingsets.set_pressed_load, (1.0e4, 7.0e4, 3.0, 1.0)),
+    (bearingsets.set_halves, (1.0e4, -1.2e4, 3.0, 1.0)),
+    (bearingsets.set_halves, (1.0e4, 2.0e4, 3.0, 1.0)),
     (belt.pitch_diameter, (5e-3, 32.0)),
     (belt.belt_length, (0.05, 0.076, 0.13)),
     (belt.span_length, (0.05, 0.076, 0.13)),
@@ -125,16 +129,43 @@ BACKEND_CASES = [
 ]
 
 
+def _outs(v):
+    return list(v) if isinstance(v, tuple) else [v]
+
+
 @pytest.mark.parametrize(("func", "args"), BACKEND_CASES, ids=[f.__name__ for f, _ in BACKEND_CASES])
 def test_float_numpy_casadi_agree(func, args):
     scale = (0.9, 1.0, 1.1)
-    refs = [float(func(*(a * s for a in args))) for s in scale]
-    arr = func(*(np.array([a * s for s in scale]) for a in args))
-    np.testing.assert_allclose(np.asarray(arr, dtype=float), refs, rtol=1e-12)
+    refs = [[float(o) for o in _outs(func(*(a * s for a in args)))] for s in scale]
+    arr = _outs(func(*(np.array([a * s for s in scale]) for a in args)))
+    for j, out in enumerate(arr):
+        np.testing.assert_allclose(np.asarray(out, dtype=float), [r[j] for r in refs], rtol=1e-12)
     syms = [ca.SX.sym(f"a{i}") for i in range(len(args))]
-    f = ca.Function("f", syms, [ca.SX(func(*syms))])
+    f = ca.Function("f", syms, [ca.SX(o) for o in _outs(func(*syms))])
     for s, ref in zip(scale, refs):
-        assert float(f(*(a * s for a in args))) == pytest.approx(ref, rel=1e-9)
+        got = f(*(a * s for a in args))
+        got = [float(g) for g in (got if isinstance(got, tuple) else (got,))]
+        np.testing.assert_allclose(got, ref, rtol=1e-9)
+
+
+def test_set_split_bounds_hertz():
+    """The linear split (IBC's form) against Hertz's exact split of a 3-against-1 set, solved here by bisection
+    from delta ~ (Q/n)^(2/3): never below it, at most 8 % above, equal at no load and at lift-off."""
+    p0 = 1.0e4
+    lift = bearingsets.set_lift_off(p0, 3, 1)
+    for frac in np.linspace(0.0, 1.0, 11):
+        f = frac * lift
+        da, db = (p0 / 3) ** (2 / 3), p0 ** (2 / 3)
+        lo, hi = 0.0, db  # the single unloads at u = db
+        for _ in range(200):
+            u = 0.5 * (lo + hi)
+            qa, qb = 3 * (da + u) ** 1.5, max(db - u, 0.0) ** 1.5
+            lo, hi = (u, hi) if qa - qb < f else (lo, u)
+        exact = 3 * (da + 0.5 * (lo + hi)) ** 1.5
+        got = float(bearingsets.set_pressed_load(p0, f, 3, 1))
+        assert exact * (1 - 1e-9) <= got <= 1.08 * exact, (frac, got, exact)
+    plus, minus = bearingsets.set_halves(p0, 2.0e4, 3, 1)
+    assert float(plus) - float(minus) == pytest.approx(2.0e4)
 
 
 def test_every_public_function_is_covered():
