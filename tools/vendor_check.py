@@ -252,7 +252,8 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     if ff:
         rows.append(Row("thermal pretension", "kN", pre_vendor / 1e3, None, None, ev.get("pretension_N", 0.0) / 1e3,
                         None, "", "T-GC A-715 eq. 38, H-BS F 3.36 (alpha) x E A: stretch for a "
-                        f"{ax.temp_rise or vp.DESIGN_RISE:.0f} K rise", "axis.pretension_rise, else axis.temperature_rise if given, else 3 K"))
+                        f"{ax.temp_rise or vp.DESIGN_RISE:.0f} K rise",
+                        "axis.pretension_rise, else axis.temperature_rise if given, else 3 K"))
     # 4 nut: static safety, lift-off, preload ceiling, L10 life
     fs_nut = vp.NUT_STATIC_SAFETY
     rows.append(Row("nut static safety C0a/Famax", "-", nut["static_load_rating"] / f_max, fs_nut,

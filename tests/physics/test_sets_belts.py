@@ -9,8 +9,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from axisopt.physics import belt, bearingsets
-
+from axisopt.physics import bearingsets, belt
 
 # IBC TI-I-5010.2/E Table 2.2: the unloading point Fae > X Fv of each arrangement (bearings loaded against the
 # opposite ones; Fv the bearings' preload as a DB pair) and the single bearing's preload in a set against one

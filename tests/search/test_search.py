@@ -8,8 +8,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from search_synthetic import (add_belt_stages, add_drives, add_reductions, add_support_sets, assert_same_answer,
-                              make_catalog, make_double, make_problem)
+from search_synthetic import (
+    add_belt_stages,
+    add_drives,
+    add_reductions,
+    add_support_sets,
+    assert_same_answer,
+    make_catalog,
+    make_double,
+    make_problem,
+)
 
 from axisopt import model
 from axisopt.cli import main
