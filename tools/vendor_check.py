@@ -308,12 +308,20 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     lnote + "; load: max axial force" + (" (+ pretension on the rows facing it)" if ff else "")))
     perm, src, generic = vp.bearing_permissible_load(brg)
     load_b = f_max + pre_vendor
+    n_a, n_b = vp.ROWS[brg["arrangement"]]
+    how = "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")
+    if n_a != n_b and ff:  # a 3:1 set: its stronger rows face the pretension, the single the force alone
+        strong = perm * max(n_a, n_b) / min(n_a, n_b)
+        if strong / load_b <= perm / f_max:
+            perm = strong
+        else:
+            load_b = f_max
+        how = "the stronger rows against max axial force + pretension, the weaker against the force alone"
     # generic: a plain C0a without its vendor's factor, where each side picks a general S0
     rows.append(Row("support bearing static", "kN", perm / 1e3, load_b / 1e3, perm / load_b,
                     theirs("bearing_static"), their_margin("bearing_static"), "CONV" if generic else "", src,
-                    "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")
-                    + ("; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
-                       "Rexroth's S0 4 for machine tools" if generic else "")))
+                    how + ("; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
+                           "Rexroth's S0 4 for machine tools" if generic else "")))
     # 6 guides: static safety and travel life at the vendor's rating distance
     if tw:  # the guides carry the whole gantry and the whole force
         ph_guides = vp.duty_phases(ax_guides, moving_guides, friction_guides, 0.0)[0]
