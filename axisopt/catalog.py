@@ -145,6 +145,11 @@ COLUMNS = MappingProxyType({
         _c("axial_rigidity", "stiffness", "bearing_stiffness", positive=True, **_RIGIDITY),
         _c("lift_off_load", "force", "bearing_lift_off", estimated_when=_CATALOG_ROWS,
            estimated_how="2.83 x preload (DB/DF/DFF, SKF-LF) or 2.08 x preload (DBD), catalogs/SOURCES.md"),
+        # the lift-off load of the stronger direction (its rows loaded, the others unloading) where it differs
+        # from the other's: a 3-against-1 set (DFT) mounted with its three rows facing the screw's pretension
+        _c("lift_off_load_strong", "force", optional=True, positive=True, estimated_when=_CATALOG_ROWS,
+           estimated_how="Hertz set rule, 8.49 x the DB pair's preload for 3 against 1 (IBC Table 2.2)",
+           blank="the set lifts off at lift_off_load both ways (the weaker direction's value: conservative)"),
         _c("dynamic_load_rating", "force", "bearing_dynamic_load", positive=True, **_DERIVED),
         # the static (or limiting, or permissible) axial rating of the rows carrying the stronger direction, and
         # the least static safety its vendor asks on it (physics.bearings: NSK/HIWIN WBK limiting load 1/0.7,
@@ -221,14 +226,16 @@ COLUMNS = MappingProxyType({
         *(_c(n, "str") for n in _TEXT), _c("kind", "str"),
         _c("ratio", "dimensionless", "reduction_ratio", positive=True),
         _c("efficiency", "dimensionless", "reduction_efficiency", positive=True, at_most=1.0),
-        _c("inertia", "inertia", "reduction_inertia"),
+        # a belt stage's inertia is the vendor's pulley geometry as steel discs ('inertia ... derived' in its
+        # source), its stiffness the belt spans' (catalogs/SOURCES.md, "Timing-belt stages")
+        _c("inertia", "inertia", "reduction_inertia", derived_marker="inertia"),
         _c("rated_torque", "torque", "reduction_rated_torque", positive=True),
         _c("accel_torque", "torque", "reduction_accel_torque", positive=True),
         # the emergency-stop torque (Beckhoff AG2400 "T2Em.stop ... 1000 times during the service life"): what the
         # motor's peak (or the drive's torque limit) through the ratio may reach at a collision or an E-stop
         _c("emergency_torque", "torque", optional=True,
            estimate="T2B (the acceleration torque, never above the emergency torque)"),
-        _c("torsional_stiffness", "torsional_stiffness", positive=True),
+        _c("torsional_stiffness", "torsional_stiffness", positive=True, **_RIGIDITY),
         _c("backlash", "angle", "reduction_backlash"),
         _c("max_input_speed", "angular_speed", "reduction_max_speed", positive=True),
         _c("mass", "mass", optional=True), _c("price", "money", "reduction_price", **_PRICE),
@@ -273,7 +280,7 @@ _AT_MOST = {t: tuple((c.name, c.at_most) for c in cols if c.at_most is not None)
 # direction: (the stronger direction, the other); the vendors print the set's rating for the stronger one (NSK
 # TAC B: DFD in the "2 rows" column; HIWIN WBK DFD 46.5 kN)
 ARRANGEMENT_ROWS = MappingProxyType({"DB": (1, 1), "DF": (1, 1), "DBD": (2, 1), "DFD": (2, 1), "DBB": (2, 2),
-                                     "DFF": (2, 2)})
+                                     "DFF": (2, 2), "DBT": (3, 1), "DFT": (3, 1)})
 CHOICES = {
     ("nuts", "type"): ("single", "double"),
     ("guides", "type"): ("ball", "roller"),

@@ -81,6 +81,7 @@ def catalog(n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100, n_motor
                 nuts[-1].update({"rotating": 1, "unit_inertia": 1.5e-9 * d ** 3.8 * unit_rng.uniform(0.8, 1.2),
                                  "unit_bearing_dynamic_load": cb, "unit_bearing_static_load": 1.5 * cb,
                                  "price": nuts[-1]["price"] + 180 + 6 * d})
+    set_rng = np.random.default_rng(2000 + seed)  # the DFT draws: the other draws keep their order
     for i in range(n_bearings):
         vend, lvl = _vendor(rng)
         bore = float(rng.choice([12, 15, 17, 20, 25, 30, 35, 40]))
@@ -97,6 +98,9 @@ def catalog(n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100, n_motor
                          "starting_torque": 0.008 * bore * f * rows / 2, "f0": 1.5, "f1": 0.0003,
                          "mass": 0.02 * bore * rows / 2,
                          "price": (8 * bore + 60) * lvl * rows / 2 * rng.uniform(0.9, 1.1)})
+        if rows == 4 and set_rng.random() < 0.5:  # issue 54: a 3-against-1 set, 3 x lift-off its strong way
+            bearings[-1].update({"arrangement": "DFT", "lift_off_load_strong": 3 * bearings[-1]["lift_off_load"],
+                                 "lift_off_load": 0.64 * bearings[-1]["lift_off_load"]})
     for i in range(n_guides):
         vend, lvl = _vendor(rng)
         size = float(rng.choice([15, 20, 25, 30, 35, 45]))
@@ -151,8 +155,9 @@ def _reductions(n, rng) -> list:
         out.append({"id": f"R{i}", "vendor": vend, "series": "synthetic", "kind": "belt" if belt else "planetary",
                     "ratio": ratio, "efficiency": 0.95 if belt else 0.97, "inertia": 3e-6 * t ** 0.8,
                     "rated_torque": t, "accel_torque": 2.3 * t,
-                    "torsional_stiffness": 0.5 * t * 10800 / math.pi * rng.uniform(0.7, 1.3),
-                    "backlash": (5.0 if belt else 3.0) * math.pi / 10800,
+                    # issue 54: a belt stage's spans are softer than a gearbox, its zero-gap pulleys play-free
+                    "torsional_stiffness": (0.1 if belt else 0.5) * t * 10800 / math.pi * rng.uniform(0.7, 1.3),
+                    "backlash": (0.0 if belt else 3.0) * math.pi / 10800,
                     "max_input_speed": (6000 if t < 500 else 3000) * RPM, "mass": 0.05 * t ** 0.8,
                     "price": (200 + 2.5 * t) * lvl})
     return out

@@ -154,7 +154,10 @@ def read_axis(design: dict) -> Axis:
         y_cg=q("cg_offset", 0.0), block_spacing=q("block_spacing", 0.6 * table_len),
         rail_spacing=q("rail_spacing", 0.6 * width), rails=int(a.get("rails", 2)),
         housing_k=q("bearing_housing_stiffness"), bracket_k=q("nut_bracket_stiffness"),
-        temp_rise=q("temperature_rise") if "temperature_rise" in a else None,
+        # the rise the pretension is designed for: axis.pretension_rise where given (the shaft's design rise),
+        # else axis.temperature_rise, else THK's 3 K
+        temp_rise=(q("pretension_rise") if "pretension_rise" in a
+                   else q("temperature_rise") if "temperature_rise" in a else None),
         ratio=float(a.get("reduction_ratio", 1.0)), red_eff=float(a.get("reduction_efficiency", 1.0)),
         red_inertia=q("reduction_inertia", 0.0), max_inertia_ratio=float(a.get("max_inertia_ratio", 5.0)),
         brake=str(a.get("brake", "auto")), duty=list(a.get("duty_cycle") or []), table_mass=q("moving_mass"),
@@ -259,7 +262,8 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     if ff:
         rows.append(Row("thermal pretension", "kN", pre_vendor / 1e3, None, None, ev.get("pretension_N", 0.0) / 1e3,
                         None, "", "T-GC A-715 eq. 38, H-BS F 3.36 (alpha) x E A: stretch for a "
-                        f"{ax.temp_rise or vp.DESIGN_RISE:.0f} K rise", "axis.temperature_rise if given, else 3 K"))
+                        f"{ax.temp_rise or vp.DESIGN_RISE:.0f} K rise",
+                        "axis.pretension_rise, else axis.temperature_rise if given, else 3 K"))
     # 4 nut: static safety, lift-off, preload ceiling, L10 life
     fs_nut = vp.NUT_STATIC_SAFETY
     rows.append(Row("nut static safety C0a/Famax", "-", nut["static_load_rating"] / f_max, fs_nut,
@@ -308,14 +312,31 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     if not rotating:  # a standing screw's end bearings do not turn: no rolling life (T-GC A-772..A-774)
         rows.append(Row("support bearing L10 life", "h", blife, ax.life_h, blife / ax.life_h,
                         theirs("bearing_life"), their_margin("bearing_life"), "", src, bnote))
+    if not rotating and str(brg.get("vendor")) == "NSK":  # the bearing maker's own group ratings, Hertz split
+        nlife, nsrc, nnote = vp.nsk_set_life_h(brg, phases, pre_vendor, nm, fw_ax)
+        rows.append(Row("support bearing L10 life (NSK ratings)", "h", nlife, ax.life_h, nlife / ax.life_h,
+                        theirs("bearing_life"), their_margin("bearing_life"), "", nsrc,
+                        nnote + f"; axisopt's fw {fw_ax} on the loads"))
+    avail, need, m_lift, lnote = vp.bearing_lift_off(brg, f_max, pre_vendor)
+    rows.append(Row("support bearing lift-off", "kN", avail / 1e3, need / 1e3, m_lift, theirs("bearing_lift_off"),
+                    their_margin("bearing_lift_off"), "", "IBC Table 2.2: unloading at Fae > X Fv",
+                    lnote + "; load: max axial force" + (" (+ pretension on the rows facing it)" if ff else "")))
     perm, src, generic = vp.bearing_permissible_load(brg)
     load_b = f_max + pre_vendor
+    n_a, n_b = vp.ROWS[brg["arrangement"]]
+    how = "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")
+    if n_a != n_b and ff:  # a 3:1 set: its stronger rows face the pretension, the single the force alone
+        strong = perm * max(n_a, n_b) / min(n_a, n_b)
+        if strong / load_b <= perm / f_max:
+            perm = strong
+        else:
+            load_b = f_max
+        how = "the stronger rows against max axial force + pretension, the weaker against the force alone"
     # generic: a plain C0a without its vendor's factor, where each side picks a general S0
     rows.append(Row("support bearing static", "kN", perm / 1e3, load_b / 1e3, perm / load_b,
                     theirs("bearing_static"), their_margin("bearing_static"), "CONV" if generic else "", src,
-                    "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")
-                    + ("; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
-                       "Rexroth's S0 4 for machine tools" if generic else "")))
+                    how + ("; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
+                           "Rexroth's S0 4 for machine tools" if generic else "")))
     # 6 guides: static safety and travel life at the vendor's rating distance
     if tw:  # the guides carry the whole gantry and the whole force
         ph_guides = vp.duty_phases(ax_guides, moving_guides, friction_guides, 0.0)[0]

@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import mathx as mx
 from ..physics import bearings as pb
+from ..physics import bearingsets as psets
 from ..physics import checks as pc
 from ..physics import life as pl
 from ..physics import nut as pn
@@ -81,16 +82,37 @@ def bearing_life_load(p, loads, travels, static):
     printed set rating for the stronger direction, i^0.7 scaled for the other: NSK TAC B, IBC), the static set
     load (pretension, thermal force) pressing the weaker rows, and the rows' lives summed as NSK sums a
     preloaded set's (e = 1.1).  The set is mounted with its stronger rows facing the direction that gives the
-    longer life (the designer's choice)."""
+    longer life (the designer's choice): either way round against the cycle's loads, and with either group of
+    rows facing the static load (a 3-against-1 set's three rows take a pretension, IBC TI-I-5010.2; for a set
+    of as many rows each way both choices are one).  A screw held at both ends has a set at each, mirrored: the
+    cycle's loads press one end's set the way the other's is spared, so the worse of the two governs there."""
     c_strong = p["bearing_dynamic_load"]
-    ratings = (c_strong, pl.row_group_rating(c_strong, p["bearing_rows_weak"], p["bearing_rows_strong"]))
+    n_s, n_w = p["bearing_rows_strong"], p["bearing_rows_weak"]
+    c_weak = pl.row_group_rating(c_strong, n_w, n_s)
+    pre = p["bearing_preload"]
+    two_ends = p["bearing_sets"] > 1.5
     best = None
-    for orient in (1.0, -1.0):
-        halves = [pl.preloaded_halves(p["bearing_preload"], orient * f - static) for f in loads]
-        means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
-        load = pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT)
+    for ratings, rows in (((c_strong, c_weak), (n_s, n_w)), ((c_weak, c_strong), (n_w, n_s))):
+        ends = []
+        for orient in (1.0, -1.0):
+            # the groups' loads: HIWIN's pair law for as many rows each way; where the groups differ in rows, IBC's
+            # linear split up to the set's own lift-off load (physics.bearingsets.set_halves)
+            halves = [_set_halves(pre, orient * f - static, rows, n_s == n_w) for f in loads]
+            means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
+            # the equivalent load on the printed (stronger) rating
+            ends.append(pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT) * (c_strong / ratings[0]))
+        load = mx.if_else(two_ends, mx.fmax(*ends), mx.fmin(*ends))
         best = load if best is None else mx.fmin(best, load)
     return best
+
+
+def _set_halves(preload, load, rows, symmetric):
+    """The two row groups' loads of a support set (see :func:`bearing_life_load`)."""
+    pair = pl.preloaded_halves(preload, load)
+    if isinstance(symmetric, (bool, np.bool_)) and symmetric:
+        return pair
+    rows_halves = psets.set_halves(preload, load, rows[0], rows[1])
+    return tuple(mx.if_else(symmetric, a, b) for a, b in zip(pair, rows_halves))
 
 
 def bearing_static(p, f_max, static):
@@ -108,6 +130,21 @@ def bearing_static(p, f_max, static):
     strong_governs = c_strong / push <= c_weak / f_max
     return (margin, mx.if_else(strong_governs, c_strong, c_weak),
             s0 * mx.if_else(strong_governs, push, f_max))
+
+
+def bearing_lift_off(p, f_max, static):
+    """(margin, available, needed) of the support set's lift-off check [N]: the rows facing the static set load
+    (pretension, thermal force) carry it with the largest axial force up to the set's stronger lift-off load
+    (``bearing_lift_off_strong``, a 3-against-1 set's 8.49 Fv, physics.bearingsets); the other rows carry the
+    largest axial force alone (a warm pretensioned screw leaves the sets nearly unloaded, as in
+    :func:`bearing_static`) up to the weaker direction's ``bearing_lift_off``.  A set that lists one lift-off
+    load has it both ways: its margin is the stronger direction's, lift-off / (largest force + static)."""
+    push = f_max + static
+    strong = p["bearing_lift_off_strong"] / push
+    weak = p["bearing_lift_off"] / f_max
+    strong_governs = strong <= weak
+    return (mx.fmin(strong, weak), mx.if_else(strong_governs, p["bearing_lift_off_strong"], p["bearing_lift_off"]),
+            mx.if_else(strong_governs, push, f_max))
 
 
 def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
@@ -134,6 +171,7 @@ def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
     else:
         q = dict(p)
         q.update({"bearing_dynamic_load": ca, "bearing_rows_strong": 1.0, "bearing_rows_weak": 1.0,
+                  "bearing_sets": 1.0,
                   "bearing_preload": unit(p, "unit_bearing_preload")})
         load = bearing_life_load(q, loads["life_loads"], loads["life_travels"], 0.0)
         life = mx.if_else(r, pc.life_time(ca, load, mean_omega, p["load_factor"]), absent)
@@ -195,6 +233,7 @@ def checks(p, mounting, preload, loads) -> dict:
     brg_static, brg_c0, brg_c0_need = bearing_static(p, f_max, loads["bearing_static_load"])
     # each load case with its own load (model.loads.lift_off_load: THK A-725's phases), not all at once
     lift_need = p["nut_lift_off_safety"] * loads["lift_off_load"]
+    lift_margin, lift_avail, lift_load = bearing_lift_off(p, f_max, loads["bearing_static_load"])
     turning = unit(p, "nut_rotating") < 0.5  # the screw turns (a nut on a rotating screw)
     margins = {
         "critical_speed": mx.if_else(turning, crit / omega, NOT_APPLICABLE),
@@ -208,7 +247,7 @@ def checks(p, mounting, preload, loads) -> dict:
         "nut_lift_off": mx.if_else(p["nut_double"] > 0.5, lift / lift_need, 1e9),
         # the vendors' preload ceiling (10 % Ca); a nut with play carries no preload
         "nut_preload": mx.if_else(p["nut_double"] > 0.5, ceiling / mx.fmax(preload, 1e-9), 1e9),
-        "bearing_lift_off": p["bearing_lift_off"] / brg_max,
+        "bearing_lift_off": lift_margin,
         "bearing_speed": mx.if_else(turning, p["bearing_limiting_speed"] / omega, NOT_APPLICABLE),
         # the bearing journal is machined on the screw end: its vendor lists the bores it takes
         "bearing_fit": mx.fmin(p["support_bore_max"] / bore, bore / p["support_bore_min"]),
@@ -234,7 +273,7 @@ def checks(p, mounting, preload, loads) -> dict:
         "bearing_life": (brg_life, p["required_life"]),
         "guide_life": (guide_life, p["required_life"] * p["mean_speed"]), "dn": (p["dn_limit"], dn),
         "nut_lift_off": (lift, lift_need), "nut_preload": (ceiling, preload),
-        "bearing_lift_off": (p["bearing_lift_off"], brg_max),
+        "bearing_lift_off": (lift_avail, lift_load),
         "bearing_speed": (p["bearing_limiting_speed"], omega), "bearing_fit": (p["support_bore_max"], bore),
         "screw_length": (p["screw_max_length"], span),
         "guide_static": (p["guide_static_load"], p["guide_static_safety"] * loads["guide_max_load"]),

@@ -35,7 +35,7 @@ PARAM_NAMES = (
     "nut_stiffness", "nut_stiffness_preload", "nut_double", "nut_dynamic_load", "nut_static_load",
     "nut_mass", "nut_price", "nut_preload_min", "nut_preload_max", "nut_axial_play",
     # bearing arrangement (per screw end)
-    "bearing_stiffness", "bearing_lift_off", "bearing_preload", "bearing_f0", "bearing_f1",
+    "bearing_stiffness", "bearing_lift_off", "bearing_lift_off_strong", "bearing_preload", "bearing_f0", "bearing_f1",
     "bearing_mean_diameter", "bearing_limiting_speed", "bearing_mass", "bearing_price",
     "bearing_dynamic_load", "bearing_bore", "bearing_torque", "bearing_torque_listed",
     # guide block and rail
@@ -89,7 +89,7 @@ _RULE_COLUMNS = MappingProxyType({
     "screws": (), "nuts": ("type", "rotating", "unit_inertia", "unit_max_speed", "unit_bearing_dynamic_load",
                            "unit_bearing_static_load", "unit_bearing_rigidity", "unit_starting_torque"),
     "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement",
-                                                "static_safety"),
+                                                "static_safety", "lift_off_load_strong"),
     "guides": ("type", "rating_distance"),
     "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
                "peak_corner_speed", "peak_torque_at_max_speed", "rms_ratio", "unbalance_ratio"),
@@ -106,7 +106,9 @@ RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque
                                 ("bearings", "static_safety"): "bearing_static_safety",
                                 ("guides", "rating_distance"): "guide_rating_distance",
                                 ("motors", "peak_corner_speed"): "motor_peak_corner_speed",
-                                ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed"})
+                                ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed",
+                                ("bearings", "lift_off_load_strong"): "bearing_lift_off_strong",
+                                ("reductions", "torsional_stiffness"): "reduction_compliance"})
 
 
 def columns_read(table: str) -> tuple:
@@ -162,6 +164,9 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
         "guide_roller": _is_type(guide, "roller"),
         # rows of the bearing set that carry each load direction (catalog.ARRANGEMENT_ROWS)
         "bearing_rows_strong": _arrangement_rows(bearing, 0), "bearing_rows_weak": _arrangement_rows(bearing, 1),
+        # the lift-off load of the stronger direction where the catalog lists one (a 3-against-1 set), else the
+        # set's one lift-off load (the weaker direction's)
+        "bearing_lift_off_strong": _listed_or(col(bearing, "lift_off_load_strong"), p["bearing_lift_off"]),
         # the guide's rating basis where its vendor states it, else 50 km (the shorter basis: conservative)
         "guide_rating_distance": _listed_or(col(guide, "rating_distance"), GUIDE_RATING_DISTANCE),
         # the least static safety of the set on its static rating: the axis's, else the rating's vendor's

@@ -172,6 +172,44 @@ def add_reductions(catalog, rng: np.random.Generator, n=3, rules=False) -> Catal
     return catalog.replace(reductions=d.set_index("id", drop=False))
 
 
+def add_support_sets(catalog, rng: np.random.Generator) -> Catalog:
+    """Make about half the bearings of a synthetic catalog 3-against-1 sets (DFT: three rows each way's rating
+    3^0.7 / 1, the stronger direction's lift-off load three times the weaker's, as the Hertz set rule gives
+    5.41 / 1.80, physics.bearingsets) and some 2-against-1 (DFD), the rest DB pairs."""
+    b = catalog.bearings.copy()
+    b["lift_off_load_strong"] = math.nan
+    for i in b.index:
+        u = rng.random()
+        if u < 0.5:
+            b.loc[i, ["arrangement", "rows"]] = ["DFT", 4]
+            b.loc[i, "dynamic_load_rating"] *= 3**0.7
+            b.loc[i, "lift_off_load_strong"] = 3.0 * b.loc[i, "lift_off_load"]
+        elif u < 0.75:
+            b.loc[i, ["arrangement", "rows"]] = ["DFD", 3]
+            b.loc[i, "dynamic_load_rating"] *= 2**0.7
+    return catalog.replace(bearings=b)
+
+
+def add_belt_stages(catalog, rng: np.random.Generator, n=2) -> Catalog:
+    """Add ``n`` timing-belt stages to a synthetic catalog's reductions: ratio 1-3, no backlash, torsional
+    stiffness 2e3-3e4 N.m/rad (a belt's spans: softer than a gearbox), T2B = T2N (the teeth's shear)."""
+    rows = []
+    for i in range(n):
+        t = rng.uniform(15.0, 120.0)
+        rows.append({"id": f"BELT{i}", "vendor": "V", "series": "synthetic", "kind": "belt",
+                     "ratio": float(rng.choice([1.0, 1.5, 2.0, 3.0])), "efficiency": rng.uniform(0.95, 0.98),
+                     "inertia": rng.uniform(2e-4, 2e-3), "rated_torque": t, "accel_torque": t,
+                     "torsional_stiffness": 10 ** rng.uniform(3.3, 4.5), "backlash": 0.0,
+                     "max_input_speed": rng.uniform(3000, 5000) * RPM, "mass": math.nan,
+                     "price": rng.uniform(150, 400)})
+    d = pd.DataFrame.from_records(rows, columns=list(SCHEMA["reductions"]))
+    d["_source"] = "synthetic"
+    red = d.set_index("id", drop=False)
+    if catalog.reductions is not None:
+        red = pd.concat([catalog.reductions, red])
+    return catalog.replace(reductions=red)
+
+
 def assert_same_answer(a, b, preload: bool = True):
     """Two SolveResults give the same answer: status, objective, combination (and nut preload)."""
     import pytest

@@ -8,7 +8,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from search_synthetic import add_drives, add_reductions, assert_same_answer, make_catalog, make_double, make_problem
+from search_synthetic import (
+    add_belt_stages,
+    add_drives,
+    add_reductions,
+    add_support_sets,
+    assert_same_answer,
+    make_catalog,
+    make_double,
+    make_problem,
+)
 
 from axisopt import model
 from axisopt.cli import main
@@ -153,6 +162,10 @@ def _reduction_case(seed):
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
     make_double(cat)
     cat = add_reductions(add_drives(cat, rng, n_motors=3, n_couplings=2), rng, n=3)
+    # issue 54: belt stages (ratio 1-3, no backlash) and 3-against-1 support sets beside them, drawn from a
+    # stream of their own (the cases' other draws unchanged)
+    extra = np.random.default_rng(700 + seed)
+    cat = add_belt_stages(add_support_sets(cat, extra), extra)
     vertical = seed % 2 == 1
     duty = _random_duty(seed)
     limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
