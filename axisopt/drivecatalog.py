@@ -94,7 +94,7 @@ def read_table(path: Path, table: str) -> list:
         raise InputError("empty file", source=source)
     cols = [split_header(h) for h in header]
     names = [c[0] for c in cols]
-    for name, (kind, fixed, required) in spec.items():
+    for name, (kind, _fixed, required) in spec.items():
         if name not in names and required:
             raise InputError(f"missing column '{name}'", source=source, where="line 1")
         if name in names:

@@ -43,6 +43,7 @@ def lm_response(p, cycle) -> dict:
         "peak_current": mx.if_else(has_kf, plm.current(f_peak / n, kf), 0.0),
         "rms_current": mx.if_else(has_kf, plm.current(f_rms / n, kf), 0.0),
         "stiffness": k, "frequency": table_mode_frequency(p["k_n"], p["blocks"], m),
+        "lost_motion": 0.0 * m,
         "positioning_error": p["accuracy"],
     }
     margins = {

@@ -20,7 +20,7 @@ friction), normal (normal force on this side's blocks), vertical (0/1), d (pinio
 (permissible feed force), k_o (overload factor), face (face width), err (pitch error per metre), stroke,
 ratio, eta, j_motor, j_red, t_rated, t_peak, n_max (motor, rad/s), t2b, t2n, n1max (rad/s), backlash (rad),
 kt_red (N m/rad), twin (0/1), bias, rms_ratio, max_inertia_ratio, k_n (guide normal stiffness per block),
-blocks (per side).
+blocks (per side), v_max (the cycle's top speed).
 """
 
 from __future__ import annotations
@@ -74,6 +74,7 @@ def rack_response(p, cycle) -> dict:
         "motor_speed": n_motor, "inertia_ratio": j_load / p["j_motor"],
         "stiffness": k, "mesh_stiffness": k_mesh, "gearbox_stiffness": k_gear,
         "frequency": mx.fmin(f_axial, f_table), "axial_frequency": f_axial,
+        "lost_motion": pr.lost_motion(p["backlash"], p["d"], p["twin"]),
         "positioning_error": pr.pitch_error(p["err"], p["stroke"])
         + pr.lost_motion(p["backlash"], p["d"], p["twin"]),
     }

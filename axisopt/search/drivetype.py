@@ -31,7 +31,9 @@ OBJECTIVES = {  # mode: (output, factor to display, unit, sense)
 LIMITS = {  # limit key: (output, sense)
     "min_stiffness": ("stiffness", ">="), "min_frequency": ("frequency", ">="), "max_cost": ("cost", "<="),
     "max_moving_mass": ("moving_mass", "<="), "max_positioning_error": ("positioning_error", "<="),
+    "max_backlash": ("lost_motion", "<="),  # the gearbox's backlash at the rack (0: a preloaded twin pinion)
 }
+LIMIT_FLOOR = {"max_backlash": 1e-6}  # a limit of 0: misses relative to 1 um
 HANDLED = set(LIMITS) | {"min_life"}  # min_life: the guides' life (Side.life_needed)
 CLOSEST = 50  # designs per type the design change is verified on
 
@@ -156,6 +158,9 @@ def _limit_arrays(problem, outputs: dict, cost):
             continue
         name, sense = LIMITS[key]
         v = np.asarray(vals[name], dtype=float)
+        if value <= 0.0:  # nothing allowed: the miss relative to LIMIT_FLOOR
+            out[key] = -v / LIMIT_FLOOR.get(key, 1.0)
+            continue
         out[key] = v / value - 1.0 if sense == ">=" else 1.0 - v / value
     return out
 
@@ -179,14 +184,18 @@ def _scores(problem, space, res, spec):
     return obj, ok, miss
 
 
-def _design(space, flat, one, spec) -> DriveDesign:
+def _design(space, flat, one, spec, problem=None) -> DriveDesign:
     name, factor, _, _ = spec
     o = one["outputs"]
     value = one["cost"] if name == "cost" else o[name]
     parts = space.parts(flat)
-    return DriveDesign(space.kind, parts, value / factor, one["cost"], o["moving_mass"], o["stiffness"] / 1e6,
-                       o["frequency"], o["positioning_error"] * 1e6, margins=one["margins"],
-                       outputs={**o, "cost": one["cost"]})
+    d = DriveDesign(space.kind, parts, value / factor, one["cost"], o["moving_mass"], o["stiffness"] / 1e6,
+                    o["frequency"], o["positioning_error"] * 1e6, margins=one["margins"],
+                    outputs={**o, "cost": one["cost"]})
+    if problem is not None:  # an infeasible problem's closest design: the limits it misses, as margins
+        lim = _limit_arrays(problem, {k: np.array([v]) for k, v in o.items()}, np.array([one["cost"]]))
+        d.margins = {**d.margins, **{k: float(1.0 + v[0]) for k, v in lim.items()}}
+    return d
 
 
 def _rank(designs: list, sense: str) -> list:
