@@ -15,7 +15,7 @@ from ..yamlio import Key, Section, Spec
 DRIVE_TYPES = ("screw", "rack_pinion", "linear_motor")
 RACK_SPEC = Spec("rack_pinion", "rack-and-pinion drives (catalogs racks.csv, with the motors and reductions)", {
     "twin_pinion": Key("choice", "two electrically preloaded pinions per rack (no backlash): no, yes or search "
-                       "(both)", choices=("no", "yes", "search"), default="search"),
+                       "(both)", choices=("no", "yes", "search", True, False), default="search"),
     "overload": Key("choice", "impact from the driven machine (THK A-241 Table 4, JGMA 401-01): uniform 1.0, "
                     "medium 1.25, large 1.75", choices=tuple(OVERLOAD_FACTORS), default="medium"),
     "preload_bias": Key("number", "twin pinion: bias force of each pinion as a fraction of the peak feed force",
@@ -27,7 +27,7 @@ LM_SPEC = Spec("linear_motor", "linear-motor drives (catalogs linear_motors.csv)
     "servo_bandwidth": Key("quantity", "position-loop bandwidth the servo stiffness is estimated at",
                            kind="frequency", positive=True, default=50.0, example="50 Hz"),
     "brake": Key("choice", "a holding brake or clamp on the carriage (a vertical linear-motor axis needs it or "
-                 "a counterbalance)", choices=("yes", "no"), default="no"),
+                 "a counterbalance)", choices=("yes", "no", True, False), default="no"),
 })
 DRIVE_KEYS = {
     "drive_types": Key("names", "drive types the search chooses among (default: screw)", choices=DRIVE_TYPES),
@@ -61,13 +61,16 @@ def read_drive_choice(sec: Section | None, axis, dirs=(), base: Path | None = No
     if sec is None or not any(sec.has(k) for k in DRIVE_KEYS):
         return None
     types = tuple(sec.read("drive_types") or ("screw",))
+    for t in types:
+        if t not in DRIVE_TYPES:
+            raise sec.error("drive_types", f"'{t}' is not a drive type (one of {', '.join(DRIVE_TYPES)})")
     if len(set(types)) < len(types):
         raise sec.error("drive_types", "a drive type is listed twice")
     kw = {}
     rs = sec.read("rack_pinion")
     if rs is not None:
         twin = rs.read("twin_pinion")
-        kw["twin_pinion"] = {"no": (0,), "yes": (1,), "search": (0, 1)}[twin]
+        kw["twin_pinion"] = {"no": (0,), "yes": (1,), "search": (0, 1), False: (0,), True: (1,)}[twin]
         kw["overload_factor"] = OVERLOAD_FACTORS[rs.read("overload")]
         kw["preload_bias"] = float(rs.read("preload_bias"))
         rs.done()
@@ -75,7 +78,7 @@ def read_drive_choice(sec: Section | None, axis, dirs=(), base: Path | None = No
     if ls is not None:
         kw["max_forcers"] = int(ls.read("max_forcers"))
         kw["servo_bandwidth"] = float(ls.read("servo_bandwidth"))
-        kw["brake"] = ls.read("brake") == "yes"
+        kw["brake"] = ls.read("brake") in ("yes", True)
         ls.done()
     brake = kw.get("brake", False)
     if "linear_motor" in types and axis.orientation == "vertical" and not brake and axis.counterbalance is None:

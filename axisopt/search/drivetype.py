@@ -138,6 +138,8 @@ def spaces(problem, axis=None) -> list:
     mk = keep(mot, "motor", np.isfinite(np.asarray(mot["price"], dtype=float)))
     if rs.motor_vendors:
         mk &= np.isin(np.asarray(mot["vendor"]), list(rs.motor_vendors))
+    if rs.motor_series:
+        mk &= np.isin(np.asarray(mot["series"]), list(rs.motor_series))
     rk = keep(red, "reduction", np.isfinite(np.asarray(red["mass"], dtype=float)))
     side = side_of(axis)
     out = []
