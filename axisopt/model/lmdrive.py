@@ -4,7 +4,8 @@ side (a twin-drive gantry: the governing side).
 
 HIWIN MM99TE07-1701 Appendix A: the force over the duty cycle, F = M a + (M g + Fa) mu (+ seal friction,
 process force, weight on a vertical axis), its peak against the forcers' peak force and its RMS against
-0.7 x their continuous force (HIWIN: Ie / Ic "had better be less than 0.7"); the peak force for at most about
+0.7 x their continuous force (HIWIN: Ie / Ic "had better be less than 0.7") -- or the steady thrust at feed
+where larger (the largest axial load against the peak, the mean one against the RMS); the peak force for at most about
 1 s (the longest acceleration phase, checked when the peak exceeds the continuous force); the currents
 Ip = Fp / Kf, Ie = Fe / Kf where the row gives Kf.  ``forcers`` forcers on one track add their forces
 (Siemens 1FN3 5.2).  The iron-core motor's attraction Fa loads the guides (HIWIN: "must be taken up by the
@@ -13,7 +14,8 @@ position loop's, M (2 pi f_bw)^2 at the servo bandwidth (an estimate); the first
 table's on its guides.  The positioning error is the stage's accuracy after compensation (the row's).
 
 Keys of ``p`` (SI): m_axis, m_blocks, mu, f_seal, normal, vertical, forcers, fc, fp, kf (0: not given),
-m_forcer, fa (per forcer), accuracy, t_acc (longest acceleration phase of the cycle), bandwidth, k_n, blocks.
+m_forcer, fa (per forcer), accuracy, t_acc (longest acceleration phase of the cycle), bandwidth, k_n, blocks,
+thrust, mean_thrust.
 """
 
 from __future__ import annotations
@@ -33,8 +35,8 @@ def lm_response(p, cycle) -> dict:
     horiz = 1.0 - p["vertical"]
     resist = plm.friction_force(m * horiz, fa, p["mu"], p["normal"]) + p["f_seal"]
     weight = m * plm.G * p["vertical"]
-    f_peak = pr.peak_linear(cycle, m, resist, 1.0, weight)
-    f_rms = pr.rms_linear(cycle, m, resist, 1.0, weight)
+    f_peak = mx.fmax(pr.peak_linear(cycle, m, resist, 1.0, weight), resist + p["thrust"] + weight)
+    f_rms = mx.fmax(pr.rms_linear(cycle, m, resist, 1.0, weight), resist + p["mean_thrust"] + weight)
     k = plm.servo_stiffness(m, p["bandwidth"])
     has_kf = p["kf"] > 0.0
     kf = mx.fmax(p["kf"], 1e-9)

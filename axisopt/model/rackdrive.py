@@ -20,7 +20,8 @@ friction), normal (normal force on this side's blocks), vertical (0/1), d (pinio
 (permissible feed force), k_o (overload factor), face (face width), err (pitch error per metre), stroke,
 ratio, eta, j_motor, j_red, t_rated, t_peak, n_max (motor, rad/s), t2b, t2n, n1max (rad/s), backlash (rad),
 kt_red (N m/rad), twin (0/1), bias, rms_ratio, max_inertia_ratio, k_n (guide normal stiffness per block),
-blocks (per side), v_max (the cycle's top speed).
+blocks (per side), v_max (the cycle's top speed), thrust and mean_thrust (this side's share of the axis's
+largest and mean axial load: the steady feed force).
 """
 
 from __future__ import annotations
@@ -46,8 +47,12 @@ def rack_response(p, cycle) -> dict:
     resist = p["mu"] * (m * g * horiz + p["normal"]) + p["f_seal"]
     weight = m * g * p["vertical"]
     r = p["d"] / 2.0
-    f_peak = pr.peak_linear(cycle, m, resist, 1.0, weight)
-    f_rms = pr.rms_linear(cycle, m, resist, 1.0, weight)
+    # the cycle (rapids with the duty cycle's forces), and the steady thrust at feed: the largest axial load
+    # against the peak, the mean axial load against the RMS (as model.drive rates a screw drive's motor)
+    thrust = resist + p["thrust"] + weight
+    mean_thrust = resist + p["mean_thrust"] + weight
+    f_peak = mx.fmax(pr.peak_linear(cycle, m, resist, 1.0, weight), thrust)
+    f_rms = mx.fmax(pr.rms_linear(cycle, m, resist, 1.0, weight), mean_thrust)
     h = _halves(p)
     f_bias = p["twin"] * p["bias"] * f_peak
     tooth = h * f_peak + f_bias
@@ -55,10 +60,10 @@ def rack_response(p, cycle) -> dict:
     out_rms = (h * f_rms + f_bias) * r
     through = r / (p["ratio"] * p["eta"])
     j_rot = (p["j_motor"] + p["j_red"]) * p["ratio"] / r  # motor-side inertia per unit table acceleration
-    t_peak = pr.peak_linear(cycle, j_rot + h * m * through, h * resist * through, h * through,
-                            h * weight * through) + f_bias * through
-    t_rms = pr.rms_linear(cycle, j_rot + h * m * through, h * resist * through, h * through,
-                          h * weight * through) + f_bias * through
+    t_peak = mx.fmax(pr.peak_linear(cycle, j_rot + h * m * through, h * resist * through, h * through,
+                                    h * weight * through), h * thrust * through) + f_bias * through
+    t_rms = mx.fmax(pr.rms_linear(cycle, j_rot + h * m * through, h * resist * through, h * through,
+                                  h * weight * through), h * mean_thrust * through) + f_bias * through
     v_max = p["v_max"]
     n_motor = pr.pinion_speed(v_max, p["d"]) * p["ratio"]
     j_load = h * m * r * r / (p["ratio"] * p["ratio"])

@@ -35,6 +35,8 @@ class Side:
     static_safety: float
     rms_ratio: float
     max_inertia_ratio: float
+    thrust: float  # steady feed force of this side at feed [N] (axis.axial_load x share)
+    mean_thrust: float  # ... at the mean axial load [N]
     blocks: float  # per side
     rails: float  # per side
     rail_length: float
@@ -61,7 +63,7 @@ def side_of(axis) -> Side:
         axis.orientation == "vertical"), cycle=pr.cycle_gram(phases), v_max=v_max, t_acc=max(t_acc, 1e-3),
         life_needed=axis.required_life * mean, fw=axis.load_factor_eff, static_safety=axis.guide_static_safety,
         rms_ratio=axis.rms_torque_ratio, max_inertia_ratio=axis.max_inertia_ratio,
-        blocks=axis.guide_blocks / sides, rails=axis.rails / sides, rail_length=axis.stroke + axis.table_length,
+        thrust=axis.axial_load * share, mean_thrust=axis.mean_axial_load_eff * share, blocks=axis.guide_blocks / sides, rails=axis.rails / sides, rail_length=axis.stroke + axis.table_length,
         stroke=axis.stroke)
 
 
@@ -137,7 +139,8 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
         "t2n": red("rated_torque"), "n1max": red("max_input_speed"), "backlash": red("backlash"),
         "kt_red": red("torsional_stiffness"), "twin": twin, "bias": choice.preload_bias,
         "rms_ratio": side.rms_ratio, "max_inertia_ratio": side.max_inertia_ratio, "k_n": g["k_n"],
-        "blocks": side.blocks, "v_max": side.v_max, **_guide_params(g, side)}
+        "blocks": side.blocks, "v_max": side.v_max, "thrust": side.thrust, "mean_thrust": side.mean_thrust,
+        **_guide_params(g, side)}
     rack_len = side.sides * side.rail_length
     drive_cost = (side.sides * pinions * (R("pinion_price") + red("price") + mot("price"))
                   + rack_len * R("rack_price_per_length"))
@@ -158,7 +161,8 @@ def lm_space(lms, guides, side: Side, choice) -> DriveSpace:
          "normal": side.normal, "vertical": side.vertical, "forcers": forcers, "fc": L("continuous_force"),
          "fp": L("peak_force"), "kf": L("force_constant"), "m_forcer": L("forcer_mass"),
          "fa": L("attraction_force"), "accuracy": L("accuracy"), "t_acc": side.t_acc,
-         "bandwidth": choice.servo_bandwidth, "k_n": g["k_n"], "blocks": side.blocks, **_guide_params(g, side)}
+         "bandwidth": choice.servo_bandwidth, "k_n": g["k_n"], "blocks": side.blocks, "thrust": side.thrust,
+         "mean_thrust": side.mean_thrust, **_guide_params(g, side)}
     drive_cost = side.sides * (forcers * L("forcer_price") + side.rail_length * L("track_price_per_length"))
     cost = drive_cost + g["guide_cost"]
     axes = (("linear_motor", tuple(r["id"] for r in lms)),
