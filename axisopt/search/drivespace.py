@@ -59,12 +59,14 @@ def side_of(axis) -> Side:
         else:
             run = 0.0
     mean = axis.mean_speed_eff
-    return Side(sides=sides, m_axis=m_axis, normal=axis.normal_load * share, vertical=float(
-        axis.orientation == "vertical"), cycle=pr.cycle_gram(phases), v_max=v_max, t_acc=max(t_acc, 1e-3),
-        life_needed=axis.required_life * mean, fw=axis.load_factor_eff, static_safety=axis.guide_static_safety,
-        rms_ratio=axis.rms_torque_ratio, max_inertia_ratio=axis.max_inertia_ratio,
-        thrust=axis.axial_load * share, mean_thrust=axis.mean_axial_load_eff * share, blocks=axis.guide_blocks / sides, rails=axis.rails / sides, rail_length=axis.stroke + axis.table_length,
-        stroke=axis.stroke)
+    return Side(
+        sides=sides, m_axis=m_axis, normal=axis.normal_load * share,
+        vertical=float(axis.orientation == "vertical"), cycle=pr.cycle_gram(phases), v_max=v_max,
+        t_acc=max(t_acc, 1e-3), life_needed=axis.required_life * mean, fw=axis.load_factor_eff,
+        static_safety=axis.guide_static_safety, rms_ratio=axis.rms_torque_ratio,
+        max_inertia_ratio=axis.max_inertia_ratio, thrust=axis.axial_load * share,
+        mean_thrust=axis.mean_axial_load_eff * share, blocks=axis.guide_blocks / sides,
+        rails=axis.rails / sides, rail_length=axis.stroke + axis.table_length, stroke=axis.stroke)
 
 
 def _guides(table, side: Side) -> dict:

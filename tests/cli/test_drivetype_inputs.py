@@ -36,8 +36,8 @@ def test_a_pinion_with_zero_teeth(tmp_path, capsys):
 
 
 def test_a_nan_force_constant(tmp_path, capsys):
-    path = _with_catalog(tmp_path, "linear_motors", "HIWIN-LMCA6,HIWIN,LMC ironless (Appendix A example),ironless,62,187,33.8,",
-                         "HIWIN-LMCA6,HIWIN,LMC ironless (Appendix A example),ironless,62,187,nan,", LASER)
+    row = "HIWIN-LMCA6,HIWIN,LMC ironless (Appendix A example),ironless,62,187,"
+    path = _with_catalog(tmp_path, "linear_motors", row + "33.8,", row + "nan,", LASER)
     assert main(["solve", path]) == 2
     err = one_line_error(capsys)
     assert "linear_motors.csv" in err and "force_constant" in err and "finite" in err, err

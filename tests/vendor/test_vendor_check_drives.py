@@ -22,6 +22,6 @@ def test_the_vendor_steps_pass_and_agree(name, kind, monkeypatch):
     lines, res = vcd.check(ROOT / "problems" / f"{name}.yaml")
     assert res["best"]["drive_type"] == kind
     assert len(lines) >= 5
-    for check, value, limit, margin, verdict, model, agree in lines:
+    for check, value, limit, margin, verdict, model, _agree in lines:
         assert verdict == "PASS", (check, value, limit, margin)
         assert model == pytest.approx(margin, rel=5e-3), check  # the sampled cycle against the exact integrals
