@@ -2,6 +2,16 @@
 
 from __future__ import annotations
 
+import textwrap
+
+WIDTH = 100  # the text fits 100 columns (tests/cli/test_text_width.py)
+
+
+def _wrap(line: str) -> list:
+    """A long line broken at spaces within WIDTH, the continuation indented two more than the line."""
+    indent = " " * (len(line) - len(line.lstrip()) + 2)
+    return textwrap.wrap(line, WIDTH, subsequent_indent=indent, break_on_hyphens=False) or [line]
+
 LABELS = {"screw": "screw", "rack_pinion": "rack and pinion", "linear_motor": "linear motor"}
 MARGIN_LABELS = {
     "pinion_tooth": "pinion tooth (THK A-241)", "motor_peak": "motor peak", "motor_rms": "motor RMS",
@@ -43,4 +53,4 @@ def format_drive_result(res, top: int = 5) -> str:
         if res.change:
             out.append(f"design change: {res.change}")
     out += [f"note: {n}" for n in res.notes]
-    return "\n".join(out)
+    return "\n".join(w for line in out for w in _wrap(line))

@@ -266,6 +266,9 @@ def _screw(problem, method: str, top: int, time_limit: float, spec):
 def solve_drive_types(problem, method: str = "default", *, top: int = 5, time_limit: float = 100.0):
     """Solve ``problem`` over its drive types (see the module); a :class:`DriveTypeResult`."""
     t0 = time.perf_counter()
+    if method not in ("default", "exhaustive"):
+        raise InputError(f"method '{method}': a search over drive types runs the default or exhaustive method",
+                         source=problem.source, where="method")
     mode, spec = _objective(problem)
     unit, sense = spec[2], spec[3]
     designs, types, notes, closest = [], [], [], {}

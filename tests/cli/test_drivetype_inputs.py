@@ -83,6 +83,6 @@ def test_the_router_solves_and_writes_json(tmp_path, capsys):
 
 
 def test_the_infeasible_laser_answers_with_a_verified_change(capsys):
-    assert main(["solve", str(ROOT / "problems" / "laser_lm_infeasible_problem.yaml")]) == 1
+    assert main(["solve", str(ROOT / "problems" / "infeasible_laser_lm_problem.yaml")]) == 1
     text = capsys.readouterr().out
     assert "design change: lower acceleration to" in text and "verified" in text
