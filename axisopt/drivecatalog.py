@@ -66,18 +66,26 @@ def _number(text: str, name: str, kind: str, fixed, unit, where, source) -> floa
     try:
         v = float(text)
     except ValueError:
-        raise InputError(f"column '{name}': '{text}' is not a number", source=source, where=where) from None
+        raise InputError(
+            f"column '{name}': '{text}' is not a number", source=source, where=where
+        ) from None
     if not math.isfinite(v):
-        raise InputError(f"column '{name}': {text} is not a finite number", source=source, where=where)
+        raise InputError(
+            f"column '{name}': {text} is not a finite number", source=source, where=where
+        )
     if v < 0 or (v == 0 and name not in ZERO_OK):
         raise InputError(f"column '{name}': {text} must be positive", source=source, where=where)
     if kind == "count":
         if v != int(v):
-            raise InputError(f"column '{name}': {text} must be a whole number", source=source, where=where)
+            raise InputError(
+                f"column '{name}': {text} must be a whole number", source=source, where=where
+            )
         return v
     if fixed is not None:
         if unit != fixed:
-            raise InputError(f"column '{name}' must be in [{fixed}], got [{unit}]", source=source, where=where)
+            raise InputError(
+                f"column '{name}' must be in [{fixed}], got [{unit}]", source=source, where=where
+            )
         return v
     return v * unit_factor(unit, kind)
 
@@ -100,12 +108,16 @@ def read_table(path: Path, table: str) -> list:
         if name in names:
             unit = cols[names.index(name)][1]
             if kind not in ("text", "count") and unit is None:
-                raise InputError(f"column '{name}' needs a unit in brackets", source=source, where="line 1")
+                raise InputError(
+                    f"column '{name}' needs a unit in brackets", source=source, where="line 1"
+                )
             if kind not in ("text", "count", "ratio"):
                 try:
                     unit_factor(unit, kind)
                 except ValueError as e:
-                    raise InputError(f"column '{name}': {e}", source=source, where="line 1") from None
+                    raise InputError(
+                        f"column '{name}': {e}", source=source, where="line 1"
+                    ) from None
     if "id" not in names:
         raise InputError("missing column 'id'", source=source, where="line 1")
     rows = []
@@ -113,11 +125,20 @@ def read_table(path: Path, table: str) -> list:
         if not any(c.strip() for c in cells):
             continue
         if len(cells) != len(names):
-            raise InputError(f"{len(cells)} cells, the header has {len(names)}", source=source,
-                             where=f"line {line}")
+            raise InputError(
+                f"{len(cells)} cells, the header has {len(names)}",
+                source=source,
+                where=f"line {line}",
+            )
         raw = dict(zip(names, (c.strip() for c in cells)))
-        row = {"id": raw["id"], "vendor": raw.get("vendor", ""), "series": raw.get("series", ""),
-               "status": raw.get("status", ""), "source": raw.get("source", ""), "estimated": []}
+        row = {
+            "id": raw["id"],
+            "vendor": raw.get("vendor", ""),
+            "series": raw.get("series", ""),
+            "status": raw.get("status", ""),
+            "source": raw.get("source", ""),
+            "estimated": [],
+        }
         if not row["id"]:
             raise InputError("empty id", source=source, where=f"line {line}")
         for name, (kind, fixed, required) in spec.items():
@@ -125,8 +146,11 @@ def read_table(path: Path, table: str) -> list:
             text = raw.get(name, "")
             if kind == "text":
                 if text not in KINDS[table]:
-                    raise InputError(f"column '{name}': '{text}' is not one of {', '.join(KINDS[table])}",
-                                     source=source, where=where)
+                    raise InputError(
+                        f"column '{name}': '{text}' is not one of {', '.join(KINDS[table])}",
+                        source=source,
+                        where=where,
+                    )
                 row[name] = text
                 continue
             if text == "":
@@ -139,15 +163,22 @@ def read_table(path: Path, table: str) -> list:
         if table == "linear_motors":
             if row["attraction_force"] is None:
                 iron = row["kind"] == "iron-core"
-                row["attraction_force"] = ATTRACTION_PER_FC * row["continuous_force"] if iron else 0.0
+                row["attraction_force"] = (
+                    ATTRACTION_PER_FC * row["continuous_force"] if iron else 0.0
+                )
                 if iron:
                     row["estimated"].append("attraction_force")
             if row["peak_force"] < row["continuous_force"]:
-                raise InputError("peak_force below continuous_force", source=source, where=f"line {line}")
+                raise InputError(
+                    "peak_force below continuous_force", source=source, where=f"line {line}"
+                )
         else:
             if row["teeth"] < 6:
-                raise InputError(f"column 'teeth': a pinion needs at least 6 teeth, got {row['teeth']:g}",
-                                 source=source, where=f"line {line}, column teeth")
+                raise InputError(
+                    f"column 'teeth': a pinion needs at least 6 teeth, got {row['teeth']:g}",
+                    source=source,
+                    where=f"line {line}, column teeth",
+                )
         rows.append(row)
     return rows
 

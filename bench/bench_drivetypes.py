@@ -28,16 +28,29 @@ from axisopt.search.drivetype import solve_drive_types  # noqa: E402
 SHAPES = {1e7: (40, 40, 40, 2, 80), 1e8: (80, 80, 80, 2, 100), 1e9: (160, 150, 160, 2, 130)}
 
 
-def _tables(problem, shape, rng):
+def part_tables(problem, shape, rng):
     n_rack, n_red, n_mot, _, n_guide = shape
     racks = []
     for i in range(n_rack):
         d = rng.uniform(0.03, 0.12)
-        racks.append({"id": f"R{i}", "kind": "helical", "quality": 6.0, "module": d / 20, "teeth": 20.0,
-                      "helix_angle": 0.34, "pitch_diameter": d, "face_width": rng.uniform(0.015, 0.06),
-                      "permissible_force": rng.uniform(1e3, 3e4), "pitch_error": rng.uniform(1e-5, 6e-5),
-                      "pinion_price": rng.uniform(50, 500), "rack_price_per_length": rng.uniform(80, 600),
-                      "rack_mass_per_length": 4.0, "estimated": []})
+        racks.append(
+            {
+                "id": f"R{i}",
+                "kind": "helical",
+                "quality": 6.0,
+                "module": d / 20,
+                "teeth": 20.0,
+                "helix_angle": 0.34,
+                "pitch_diameter": d,
+                "face_width": rng.uniform(0.015, 0.06),
+                "permissible_force": rng.uniform(1e3, 3e4),
+                "pitch_error": rng.uniform(1e-5, 6e-5),
+                "pinion_price": rng.uniform(50, 500),
+                "rack_price_per_length": rng.uniform(80, 600),
+                "rack_mass_per_length": 4.0,
+                "estimated": [],
+            }
+        )
     cat = problem.catalog
 
     def grow(name, n):
@@ -64,23 +77,34 @@ def main(argv=None) -> int:
     print(f"{'size':>6s} {'combinations':>14s} {'time s':>8s}  best")
     for size in args.sizes:
         rng = np.random.default_rng(int(size) % 1000)
-        racks, red, mot, gd = _tables(base, SHAPES[size], rng)
-        prob = replace(base, drives=replace(base.drives, tables=DriveTables(racks, base.drives.tables.linear_motors)))
-        orig = dt._tables
-        dt._tables = lambda _p: (_Table(red), _Table(mot), _Table(gd))  # synthetic parts in place of the catalog's
+        racks, red, mot, gd = part_tables(base, SHAPES[size], rng)
+        prob = replace(
+            base,
+            drives=replace(
+                base.drives, tables=DriveTables(racks, base.drives.tables.linear_motors)
+            ),
+        )
+        orig = dt.part_tables
+        dt.part_tables = lambda _p, t=(red, mot, gd): tuple(_Table(x) for x in t)  # synthetic parts
         try:
             t0 = time.perf_counter()
             res = solve_drive_types(prob, "default", top=1)
             t = time.perf_counter() - t0
             n = sum(x.combinations for x in res.types)
-            best = "" if res.best is None else f"{res.best.objective:.6g} {res.objective_unit} {res.best.parts}"
+            best = (
+                ""
+                if res.best is None
+                else f"{res.best.objective:.6g} {res.objective_unit} {res.best.parts}"
+            )
             print(f"{size:6.0e} {n:14,d} {t:8.2f}  {best}")
             if args.exhaustive_check and size == min(args.sizes):
                 ex = solve_drive_types(prob, "exhaustive", top=1)
-                same = (ex.best is None) == (res.best is None) and (ex.best is None or ex.best.parts == res.best.parts)
+                same = (ex.best is None) == (res.best is None) and (
+                    ex.best is None or ex.best.parts == res.best.parts
+                )
                 print(f"       exhaustive agrees: {same}")
         finally:
-            dt._tables = orig
+            dt.part_tables = orig
     return 0
 
 

@@ -34,12 +34,46 @@ import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 G = 9.80665
-UNITS = {"mm": 1e-3, "m": 1.0, "um": 1e-6, "kN": 1e3, "N": 1.0, "kg": 1.0, "EUR": 1.0, "EUR/m": 1.0, "kg/m": 1.0,
-         "kg.cm^2": 1e-4, "N.m": 1.0, "rpm": 2 * math.pi / 60, "%": 0.01, "arcmin": math.pi / 180 / 60,
-         "N.m/arcmin": 180 * 60 / math.pi, "N/um": 1e6, "km": 1e3, "N/A": 1.0, "A": 1.0, "deg": math.pi / 180,
-         "-": 1.0, "W": 1.0, "N.s/m": 1.0}
-QTY = {"mm": 1e-3, "m": 1.0, "kg": 1.0, "N": 1.0, "kN": 1e3, "m/min": 1 / 60, "m/s^2": 1.0, "s": 1.0,
-       "h": 3600.0, "EUR": 1.0, "um": 1e-6, "N/um": 1e6, "Hz": 1.0}
+UNITS = {
+    "mm": 1e-3,
+    "m": 1.0,
+    "um": 1e-6,
+    "kN": 1e3,
+    "N": 1.0,
+    "kg": 1.0,
+    "EUR": 1.0,
+    "EUR/m": 1.0,
+    "kg/m": 1.0,
+    "kg.cm^2": 1e-4,
+    "N.m": 1.0,
+    "rpm": 2 * math.pi / 60,
+    "%": 0.01,
+    "arcmin": math.pi / 180 / 60,
+    "N.m/arcmin": 180 * 60 / math.pi,
+    "N/um": 1e6,
+    "km": 1e3,
+    "N/A": 1.0,
+    "A": 1.0,
+    "deg": math.pi / 180,
+    "-": 1.0,
+    "W": 1.0,
+    "N.s/m": 1.0,
+}
+QTY = {
+    "mm": 1e-3,
+    "m": 1.0,
+    "kg": 1.0,
+    "N": 1.0,
+    "kN": 1e3,
+    "m/min": 1 / 60,
+    "m/s^2": 1.0,
+    "s": 1.0,
+    "h": 3600.0,
+    "EUR": 1.0,
+    "um": 1e-6,
+    "N/um": 1e6,
+    "Hz": 1.0,
+}
 
 
 def rows(table: str) -> dict:
@@ -73,7 +107,10 @@ def profile(axis: dict) -> list:
     (:func:`check`), as Yaskawa's selection adds the load torque of the feed."""
     a = qty(axis["acceleration"])
     vmax = qty(axis["max_speed"])
-    cycle = axis.get("duty_cycle") or [{"move": axis["stroke"]}, {"move": "-" + str(axis["stroke"])}]
+    cycle = axis.get("duty_cycle") or [
+        {"move": axis["stroke"]},
+        {"move": "-" + str(axis["stroke"])},
+    ]
     dt = 2e-4
     out = []
     for seg in cycle:
@@ -116,8 +153,21 @@ def fw_thk(v: float) -> float:
 def check(problem: Path) -> tuple[list, dict]:
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "r.json"
-        subprocess.run([sys.executable, "-m", "axisopt", "solve", str(problem), "--json", str(out), "--top", "1"],
-                       check=False, capture_output=True)
+        subprocess.run(
+            [
+                sys.executable,
+                "-m",
+                "axisopt",
+                "solve",
+                str(problem),
+                "--json",
+                str(out),
+                "--top",
+                "1",
+            ],
+            check=False,
+            capture_output=True,
+        )
         res = json.loads(out.read_text(encoding="utf-8"))
     best = res["best"]
     if best is None:
@@ -159,44 +209,88 @@ def check(problem: Path) -> tuple[list, dict]:
         pinions = 2 if twin else 1
         m_motor = mot["mass"] if mot["mass"] else 2.0 + 0.7 * mot["rated_torque"]  # CONV
         m = m_axis + blocks * guide["block_mass"] + pinions * (m_motor + red["mass"])
-        friction = guide["friction_coefficient"] * (m * G + normal) + blocks * guide["friction_force"]
+        friction = (
+            guide["friction_coefficient"] * (m * G + normal) + blocks * guide["friction_force"]
+        )
         f_peak, f_rms = peak_rms(samples, lambda acc, s, q: m * acc + s * (friction + q))
         f_peak, f_rms = max(f_peak, friction + thrust), max(f_rms, friction + mean_thrust)
         h = 0.5 if twin else 1.0
         bias = 0.15 * f_peak if twin else 0.0  # CONV
         tooth = h * f_peak + bias
-        k_o = {"uniform": 1.0, "medium": 1.25, "large": 1.75}[doc["search"].get("rack_pinion", {}).get("overload",
-                                                                                                     "medium")]
-        add("pinion thrust (THK A-241) [N]", tooth, rk["permissible_force"] / k_o, 1.0, "pinion_tooth")
+        k_o = {"uniform": 1.0, "medium": 1.25, "large": 1.75}[
+            doc["search"].get("rack_pinion", {}).get("overload", "medium")
+        ]
+        add(
+            "pinion thrust (THK A-241) [N]",
+            tooth,
+            rk["permissible_force"] / k_o,
+            1.0,
+            "pinion_tooth",
+        )
         r = rk["pitch_diameter"] / 2
         i, eta = red["ratio"], red["efficiency"]
         j = mot["rotor_inertia"] + red["inertia"]
-        tm_peak, tm_rms = peak_rms(samples, lambda acc, s, q: j * acc * i / r
-                                   + h * (m * acc + s * (friction + q)) * r / (i * eta))
+        tm_peak, tm_rms = peak_rms(
+            samples,
+            lambda acc, s, q: j * acc * i / r + h * (m * acc + s * (friction + q)) * r / (i * eta),
+        )
         tm_peak = max(tm_peak, h * (friction + thrust) * r / (i * eta)) + bias * r / (i * eta)
         tm_rms = max(tm_rms, h * (friction + mean_thrust) * r / (i * eta)) + bias * r / (i * eta)
         add("motor peak torque (Yaskawa) [N m]", tm_peak, mot["peak_torque"], 1.0, "motor_peak")
-        add("motor RMS torque (0.8 rated) [N m]", tm_rms, 0.8 * mot["rated_torque"], 1.0, "motor_rms")
+        add(
+            "motor RMS torque (0.8 rated) [N m]",
+            tm_rms,
+            0.8 * mot["rated_torque"],
+            1.0,
+            "motor_rms",
+        )
         n_motor = vmax / r * i
         add("motor speed [rad/s]", n_motor, mot["max_speed"], 1.0, "motor_speed")
         add("gearbox speed n1Max [rad/s]", n_motor, red["max_input_speed"], 1.0, "gearbox_speed")
         add("gearbox output T2B [N m]", tooth * r, red["accel_torque"], 1.0, "gearbox_peak")
-        add("gearbox output T2N [N m]", (h * f_rms + bias) * r, red["rated_torque"], 1.0, "gearbox_rated")
-        add("inertia ratio [-]", h * m * r * r / i / i / mot["rotor_inertia"], 5.0, 1.0, "inertia_ratio")
+        add(
+            "gearbox output T2N [N m]",
+            (h * f_rms + bias) * r,
+            red["rated_torque"],
+            1.0,
+            "gearbox_rated",
+        )
+        add(
+            "inertia ratio [-]",
+            h * m * r * r / i / i / mot["rotor_inertia"],
+            5.0,
+            1.0,
+            "inertia_ratio",
+        )
         attraction = 0.0
     else:
         lm = rows("linear_motors")[best["parts"]["linear_motor"]]
         n = int(best["parts"]["forcers"])
-        fa = lm["attraction_force"] if lm["attraction_force"] is not None else (
-            5.0 * lm["continuous_force"] if lm["kind"] == "iron-core" else 0.0)  # CONV
+        fa = (
+            lm["attraction_force"]
+            if lm["attraction_force"] is not None
+            else (5.0 * lm["continuous_force"] if lm["kind"] == "iron-core" else 0.0)
+        )  # CONV
         attraction = n * fa
         m = m_axis + blocks * guide["block_mass"] + n * lm["forcer_mass"]
-        friction = guide["friction_coefficient"] * (m * G + attraction + normal) + blocks * guide["friction_force"]
+        friction = (
+            guide["friction_coefficient"] * (m * G + attraction + normal)
+            + blocks * guide["friction_force"]
+        )
         f_peak, f_rms = peak_rms(samples, lambda acc, s, q: m * acc + s * (friction + q))
         f_peak, f_rms = max(f_peak, friction + thrust), max(f_rms, friction + mean_thrust)
         add("peak force (HIWIN Fp) [N]", f_peak, n * lm["peak_force"], 1.0, "motor_peak")
-        add("effective force (HIWIN Fe <= 0.7 Fc) [N]", f_rms, 0.7 * n * lm["continuous_force"], 1.0, "motor_rms")
-        t_acc, run = 0.0, 0.0  # CONV: a reversal (braking into accelerating back) is one stretch at peak
+        add(
+            "effective force (HIWIN Fe <= 0.7 Fc) [N]",
+            f_rms,
+            0.7 * n * lm["continuous_force"],
+            1.0,
+            "motor_rms",
+        )
+        t_acc, run = (
+            0.0,
+            0.0,
+        )  # CONV: a reversal (braking into accelerating back) is one stretch at peak
         for dt, acc, _, _ in samples:
             run = run + dt if acc != 0.0 else 0.0
             t_acc = max(t_acc, run)
@@ -204,11 +298,19 @@ def check(problem: Path) -> tuple[list, dict]:
             add("acceleration time at peak force (HIWIN ~1 s) [s]", t_acc, 1.0, 1.0, "peak_time")
     load = (m * G + normal + attraction) / blocks
     fw = fw_thk(vmax)
-    life = (guide["dynamic_load_rating"] / (fw * load)) ** (10 / 3 if guide["type"] == "roller" else 3) \
-        * guide["rating_distance"]
+    life = (guide["dynamic_load_rating"] / (fw * load)) ** (
+        10 / 3 if guide["type"] == "roller" else 3
+    ) * guide["rating_distance"]
     if life_needed > 0:
         add("guide L10 travel [m]", life, life_needed, 1.0, "guide_life", sense=">=")
-    add("guide static safety C0/P [-]", guide["static_load_rating"] / load, 5.0, 1.0, "guide_static", sense=">=")
+    add(
+        "guide static safety C0/P [-]",
+        guide["static_load_rating"] / load,
+        5.0,
+        1.0,
+        "guide_static",
+        sense=">=",
+    )
     return lines, res
 
 
@@ -224,7 +326,9 @@ def main(argv=None) -> int:
     print(f"{b['drive_type']}: " + ", ".join(f"{k} {v}" for k, v in b["parts"].items()))
     print(f"{'check':50s} {'value':>12s} {'limit':>12s} {'margin':>7s}       axisopt")
     for name, value, limit, margin, verdict, model, agree in lines:
-        print(f"{name:50s} {value:12.4g} {limit:12.4g} {margin:7.3f} {verdict}  {model or float('nan'):7.3f} {agree}")
+        print(
+            f"{name:50s} {value:12.4g} {limit:12.4g} {margin:7.3f} {verdict}  {model or float('nan'):7.3f} {agree}"
+        )
     return 0 if all(v == "PASS" for *_, v, _m, _a in lines) else 1
 
 

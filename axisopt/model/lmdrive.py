@@ -36,15 +36,21 @@ def lm_response(p, cycle) -> dict:
     resist = plm.friction_force(m * horiz, fa, p["mu"], p["normal"]) + p["f_seal"]
     weight = m * plm.G * p["vertical"]
     f_peak = mx.fmax(pr.peak_linear(cycle, m, resist, 1.0, weight), resist + p["thrust"] + weight)
-    f_rms = mx.fmax(pr.rms_linear(cycle, m, resist, 1.0, weight), resist + p["mean_thrust"] + weight)
+    f_rms = mx.fmax(
+        pr.rms_linear(cycle, m, resist, 1.0, weight), resist + p["mean_thrust"] + weight
+    )
     k = plm.servo_stiffness(m, p["bandwidth"])
     has_kf = p["kf"] > 0.0
     kf = mx.fmax(p["kf"], 1e-9)
     out = {
-        "moving_mass": m, "feed_force": f_peak, "feed_force_rms": f_rms, "attraction_force": fa,
+        "moving_mass": m,
+        "feed_force": f_peak,
+        "feed_force_rms": f_rms,
+        "attraction_force": fa,
         "peak_current": mx.if_else(has_kf, plm.current(f_peak / n, kf), 0.0),
         "rms_current": mx.if_else(has_kf, plm.current(f_rms / n, kf), 0.0),
-        "stiffness": k, "frequency": table_mode_frequency(p["k_n"], p["blocks"], m),
+        "stiffness": k,
+        "frequency": table_mode_frequency(p["k_n"], p["blocks"], m),
         "lost_motion": 0.0 * m,
         "positioning_error": p["accuracy"],
     }

@@ -59,11 +59,35 @@ def rack_response(p, cycle) -> dict:
     out_peak = tooth * r  # gearbox output (pinion) torque
     out_rms = (h * f_rms + f_bias) * r
     through = r / (p["ratio"] * p["eta"])
-    j_rot = (p["j_motor"] + p["j_red"]) * p["ratio"] / r  # motor-side inertia per unit table acceleration
-    t_peak = mx.fmax(pr.peak_linear(cycle, j_rot + h * m * through, h * resist * through, h * through,
-                                    h * weight * through), h * thrust * through) + f_bias * through
-    t_rms = mx.fmax(pr.rms_linear(cycle, j_rot + h * m * through, h * resist * through, h * through,
-                                  h * weight * through), h * mean_thrust * through) + f_bias * through
+    j_rot = (
+        (p["j_motor"] + p["j_red"]) * p["ratio"] / r
+    )  # motor-side inertia per unit table acceleration
+    t_peak = (
+        mx.fmax(
+            pr.peak_linear(
+                cycle,
+                j_rot + h * m * through,
+                h * resist * through,
+                h * through,
+                h * weight * through,
+            ),
+            h * thrust * through,
+        )
+        + f_bias * through
+    )
+    t_rms = (
+        mx.fmax(
+            pr.rms_linear(
+                cycle,
+                j_rot + h * m * through,
+                h * resist * through,
+                h * through,
+                h * weight * through,
+            ),
+            h * mean_thrust * through,
+        )
+        + f_bias * through
+    )
     v_max = p["v_max"]
     n_motor = pr.pinion_speed(v_max, p["d"]) * p["ratio"]
     j_load = h * m * r * r / (p["ratio"] * p["ratio"])
@@ -74,11 +98,20 @@ def rack_response(p, cycle) -> dict:
     f_axial = mx.sqrt(k / m) / (2.0 * mx.pi)
     f_table = table_mode_frequency(p["k_n"], p["blocks"], m)
     out = {
-        "moving_mass": m, "feed_force": f_peak, "feed_force_rms": f_rms, "tooth_force": tooth,
-        "pinion_torque": out_peak, "motor_peak_torque": t_peak, "motor_rms_torque": t_rms,
-        "motor_speed": n_motor, "inertia_ratio": j_load / p["j_motor"],
-        "stiffness": k, "mesh_stiffness": k_mesh, "gearbox_stiffness": k_gear,
-        "frequency": mx.fmin(f_axial, f_table), "axial_frequency": f_axial,
+        "moving_mass": m,
+        "feed_force": f_peak,
+        "feed_force_rms": f_rms,
+        "tooth_force": tooth,
+        "pinion_torque": out_peak,
+        "motor_peak_torque": t_peak,
+        "motor_rms_torque": t_rms,
+        "motor_speed": n_motor,
+        "inertia_ratio": j_load / p["j_motor"],
+        "stiffness": k,
+        "mesh_stiffness": k_mesh,
+        "gearbox_stiffness": k_gear,
+        "frequency": mx.fmin(f_axial, f_table),
+        "axial_frequency": f_axial,
         "lost_motion": pr.lost_motion(p["backlash"], p["d"], p["twin"]),
         "positioning_error": pr.pitch_error(p["err"], p["stroke"])
         + pr.lost_motion(p["backlash"], p["d"], p["twin"]),
@@ -107,6 +140,10 @@ def guide_response(p, m, attraction=0.0) -> dict:
     load = (m * plm.G * (1.0 - p["vertical"]) + p["normal"] + attraction) / p["blocks"]
     load = mx.fmax(load, 1.0)
     life = guide_life_distance(p["c_block"], load, p["fw"], p["roller"], p["rating_distance"])
-    return {"outputs": {"block_load": load, "guide_life": life},
-            "margins": {"guide_life": life / p["life_needed"],
-                        "guide_static": p["c0_block"] / load / p["static_safety"]}}
+    return {
+        "outputs": {"block_load": load, "guide_life": life},
+        "margins": {
+            "guide_life": life / p["life_needed"],
+            "guide_static": p["c0_block"] / load / p["static_safety"],
+        },
+    }

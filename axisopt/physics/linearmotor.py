@@ -28,18 +28,26 @@ def friction_force(mass, attraction, friction_coefficient, normal_force=0.0):
 
 def peak_force(mass, acceleration, attraction, friction_coefficient, process_force=0.0):
     """HIWIN Appendix A: Fp = M a + (M g + Fa) mu (+ a process force) [N]."""
-    return mass * acceleration + friction_force(mass, attraction, friction_coefficient) + process_force
+    return (
+        mass * acceleration + friction_force(mass, attraction, friction_coefficient) + process_force
+    )
 
 
 def effective_force(inertia_force, friction, t1, t2, t3, t4):
     """HIWIN Appendix A: the RMS force of a cyclic move (accelerate t1, cruise t2, decelerate t3, dwell t4) [N]."""
-    return mx.sqrt(((inertia_force + friction) ** 2 * t1 + friction ** 2 * t2
-                    + (inertia_force - friction) ** 2 * t3) / (t1 + t2 + t3 + t4))
+    return mx.sqrt(
+        (
+            (inertia_force + friction) ** 2 * t1
+            + friction**2 * t2
+            + (inertia_force - friction) ** 2 * t3
+        )
+        / (t1 + t2 + t3 + t4)
+    )
 
 
 def trapezoid_profile(distance, time):
     """HIWIN Appendix A 1/3-1/3-1/3 trapezoid: (Vmax, a) = (1.5 X / T, 4.5 X / T^2)."""
-    return 1.5 * distance / time, 4.5 * distance / time ** 2
+    return 1.5 * distance / time, 4.5 * distance / time**2
 
 
 def current(force, force_constant):

@@ -14,11 +14,19 @@ from __future__ import annotations
 
 from .. import mathx as mx
 
-MESH_STIFFNESS_PER_WIDTH = 20e9  # c_gamma [N/m per m of face width] = 20 N/(mm um), ISO 6336-1 (an estimate)
-OVERLOAD_FACTORS = {"uniform": 1.0, "medium": 1.25, "large": 1.75}  # THK A-241 Table 4 (JGMA 401-01)
+MESH_STIFFNESS_PER_WIDTH = (
+    20e9  # c_gamma [N/m per m of face width] = 20 N/(mm um), ISO 6336-1 (an estimate)
+)
+OVERLOAD_FACTORS = {
+    "uniform": 1.0,
+    "medium": 1.25,
+    "large": 1.75,
+}  # THK A-241 Table 4 (JGMA 401-01)
 
 
-def feed_force(mass, acceleration, friction_coefficient, normal_force, process_force, weight_along=0.0):
+def feed_force(
+    mass, acceleration, friction_coefficient, normal_force, process_force, weight_along=0.0
+):
     r"""Force the pinion pushes the axis with (Apex Dynamics, Yaskawa 11.2.4).
 
     .. math:: F = m a + \mu (m g + F_n) + F_p + W_\parallel
@@ -27,8 +35,12 @@ def feed_force(mass, acceleration, friction_coefficient, normal_force, process_f
     normal_force : F_n, load pressing on the guides besides the weight [N];  process_force : F_p [N];
     weight_along : the weight's component along the axis (vertical axis: m g) [N].  Returns F [N].
     """
-    return mass * acceleration + friction_coefficient * (mass * 9.80665 + normal_force) + process_force \
+    return (
+        mass * acceleration
+        + friction_coefficient * (mass * 9.80665 + normal_force)
+        + process_force
         + weight_along
+    )
 
 
 def pinion_torque(force, pitch_diameter):

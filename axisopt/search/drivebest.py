@@ -23,7 +23,13 @@ def _reduced(space, which: str) -> dict:
     p = dict(space.p)
     for k in ("mu", "f_seal"):
         p[k] = np.min(p[k], axis=-1, keepdims=True)
-    for k in ("k_n", "c_block", "c0_block", "roller", "rating_distance"):  # the guide checks are not bounded here
+    for k in (
+        "k_n",
+        "c_block",
+        "c0_block",
+        "roller",
+        "rating_distance",
+    ):  # the guide checks are not bounded here
         p[k] = np.max(p[k], axis=-1, keepdims=True)
     p["m_blocks"] = (np.min if which == "light" else np.max)(p["m_blocks"], axis=-1, keepdims=True)
     return p
@@ -35,7 +41,7 @@ def _flat(v, shape) -> np.ndarray:
 
 def drive_bounds(problem, space, spec):
     """Per drive (flat over the drive axes): the optimistic objective, whether it may pass, its least miss."""
-    from .drivetype import _limit_arrays
+    from .drivetype import limit_arrays
 
     name, factor, _, sense = spec
     dshape = space.shape[:-1] + (1,)
@@ -44,7 +50,9 @@ def drive_bounds(problem, space, spec):
     for which in ("light", "heavy"):
         res = respond(space, _reduced(space, which))
         out = {k: _flat(v, dshape) for k, v in res["outputs"].items()}
-        marg = {k: _flat(v, dshape) for k, v in res["margins"].items() if not k.startswith("guide_")}
+        marg = {
+            k: _flat(v, dshape) for k, v in res["margins"].items() if not k.startswith("guide_")
+        }
         runs.append((out, marg))
     c = _flat(cost, dshape)
     pick = np.maximum if sense == "max" else np.minimum
@@ -55,7 +63,7 @@ def drive_bounds(problem, space, spec):
     for m in runs[0][1].values():  # light blocks: every drive check at its easiest
         ok &= m >= 1.0
         miss += np.maximum(0.0, 1.0 - m)
-    lims = [_limit_arrays(problem, out, c) for out, _ in runs]
+    lims = [limit_arrays(problem, out, c) for out, _ in runs]
     for key in lims[0]:
         v = np.maximum(lims[0][key], lims[1][key])
         ok &= v >= 0.0
@@ -65,7 +73,7 @@ def drive_bounds(problem, space, spec):
 
 def best_first(problem, space, spec, top: int):
     """(best ``top`` designs, evaluated pairs, closest combinations if none is feasible)."""
-    from .drivetype import _design, _rank, _scores
+    from .drivetype import design_of, rank_designs, scores
 
     sense = spec[3]
     obj, ok, miss = drive_bounds(problem, space, spec)
@@ -77,7 +85,7 @@ def best_first(problem, space, spec, top: int):
     best: list = []  # (ranking key, flat)
     evaluated = 0
     for start in range(0, alive.size, CHUNK):
-        drives = alive[start:start + CHUNK]
+        drives = alive[start : start + CHUNK]
         if len(best) >= top:
             kth = sign * best[top - 1][0][0]
             bound = obj[drives[0]]
@@ -86,19 +94,21 @@ def best_first(problem, space, spec, top: int):
                 break
         flats = (drives[:, None] * G + np.arange(G)[None, :]).reshape(-1)
         res = _evaluate_flats(space, flats)
-        o, k, _ = _scores(problem, space, res, spec)
+        o, k, _ = scores(problem, space, res, spec)
         evaluated += flats.size
         mass = res["outputs"]["moving_mass"]
         for i in np.flatnonzero(k):
             best.append((rank_key(o[i], res["cost"][i], mass[i], sign), int(flats[i])))
         best = sorted(best)[:top]
     if best:
-        designs = _rank([_design(space, f, evaluate_one(space, f), spec) for _, f in best], sense)
+        designs = rank_designs(
+            [design_of(space, f, evaluate_one(space, f), spec) for _, f in best], sense
+        )
         return designs[:top], evaluated, []
     near_drives = np.argsort(miss, kind="stable")[:50]
     flats = (near_drives[:, None] * G + np.arange(G)[None, :]).reshape(-1)
     res = _evaluate_flats(space, flats)
-    _, _, m = _scores(problem, space, res, spec)
+    _, _, m = scores(problem, space, res, spec)
     return [], evaluated + flats.size, [int(flats[i]) for i in np.argsort(m, kind="stable")[:50]]
 
 
@@ -121,6 +131,12 @@ def _evaluate_flats(space, flats) -> dict:
     p = {k: _take(v, idx) for k, v in space.p.items()}
     res = respond(space, p)
     n = flats.size
-    return {"outputs": {k: np.broadcast_to(np.asarray(v, dtype=float), (n,)) for k, v in res["outputs"].items()},
-            "margins": {k: np.broadcast_to(np.asarray(v, dtype=float), (n,)) for k, v in res["margins"].items()},
-            "cost": np.broadcast_to(np.asarray(_take(space.cost, idx), dtype=float), (n,))}
+    return {
+        "outputs": {
+            k: np.broadcast_to(np.asarray(v, dtype=float), (n,)) for k, v in res["outputs"].items()
+        },
+        "margins": {
+            k: np.broadcast_to(np.asarray(v, dtype=float), (n,)) for k, v in res["margins"].items()
+        },
+        "cost": np.broadcast_to(np.asarray(_take(space.cost, idx), dtype=float), (n,)),
+    }

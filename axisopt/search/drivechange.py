@@ -30,20 +30,22 @@ def scaled(axis, key: str, factor: float):
 def design_change(problem, closest: dict, spec):
     """(closest designs, design change text) for an infeasible drive-type problem (see the module)."""
     from .drivebest import best_first
-    from .drivetype import _design, spaces
+    from .drivetype import design_of, spaces
 
     shown = []
     for space, flats in closest.values():
         for i in flats[:1]:
-            d = _design(space, i, evaluate_one(space, i), spec, problem)
+            d = design_of(space, i, evaluate_one(space, i), spec, problem)
             d.margins = {k: v for k, v in d.margins.items() if v < 1.0}
             shown.append(d)
     if not closest:
         return shown, ""
     best = None
     axis = problem.axis
-    for key, label, unit, scale in (("acceleration", "acceleration", "m/s^2", 1.0),
-                                    ("max_speed", "rapid speed", "m/min", 60.0)):
+    for key, label, unit, scale in (
+        ("acceleration", "acceleration", "m/s^2", 1.0),
+        ("max_speed", "rapid speed", "m/min", 60.0),
+    ):
         if getattr(axis, key) <= 0:
             continue
         lo, hi = 0.0, 1.0
@@ -63,12 +65,16 @@ def design_change(problem, closest: dict, spec):
                 hi = mid
         if found is not None:
             value = getattr(axis, key) * found[0]
-            text = (f"lower {label} to {value * scale:.3g} {unit} (from {getattr(axis, key) * scale:.3g}): "
-                    f"verified, {found[1][0].replace('_', ' ')} {' / '.join(str(v) for v in found[1][1].values())} "
-                    "then meets every check and limit (the best design there)")
+            text = (
+                f"lower {label} to {value * scale:.3g} {unit} (from {getattr(axis, key) * scale:.3g}): "
+                f"verified, {found[1][0].replace('_', ' ')} {' / '.join(str(v) for v in found[1][1].values())} "
+                "then meets every check and limit (the best design there)"
+            )
             if best is None or found[0] > best[0]:
                 best = (found[0], text)
     if best is None:
-        return shown, ("no lower acceleration or rapid speed lets a design fit: a limit or a part rating "
-                       "stands in the way (see the checks missed)")
+        return shown, (
+            "no lower acceleration or rapid speed lets a design fit: a limit or a part rating "
+            "stands in the way (see the checks missed)"
+        )
     return shown, best[1]

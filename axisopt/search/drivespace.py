@@ -15,7 +15,9 @@ from ..model.lmdrive import lm_response
 from ..model.rackdrive import guide_response, rack_response
 from ..physics import rack as pr
 
-MOTOR_MASS_BASE = 2.0  # [kg] a servo motor without a catalog mass: 2 kg + 0.7 kg per N m rated (an estimate)
+MOTOR_MASS_BASE = (
+    2.0  # [kg] a servo motor without a catalog mass: 2 kg + 0.7 kg per N m rated (an estimate)
+)
 MOTOR_MASS_PER_NM = 0.7
 
 
@@ -60,23 +62,44 @@ def side_of(axis) -> Side:
             run = 0.0
     mean = axis.mean_speed_eff
     return Side(
-        sides=sides, m_axis=m_axis, normal=axis.normal_load * share,
-        vertical=float(axis.orientation == "vertical"), cycle=pr.cycle_gram(phases), v_max=v_max,
-        t_acc=max(t_acc, 1e-3), life_needed=axis.required_life * mean, fw=axis.load_factor_eff,
-        static_safety=axis.guide_static_safety, rms_ratio=axis.rms_torque_ratio,
-        max_inertia_ratio=axis.max_inertia_ratio, thrust=axis.axial_load * share,
-        mean_thrust=axis.mean_axial_load_eff * share, blocks=axis.guide_blocks / sides,
-        rails=axis.rails / sides, rail_length=axis.stroke + axis.table_length, stroke=axis.stroke)
+        sides=sides,
+        m_axis=m_axis,
+        normal=axis.normal_load * share,
+        vertical=float(axis.orientation == "vertical"),
+        cycle=pr.cycle_gram(phases),
+        v_max=v_max,
+        t_acc=max(t_acc, 1e-3),
+        life_needed=axis.required_life * mean,
+        fw=axis.load_factor_eff,
+        static_safety=axis.guide_static_safety,
+        rms_ratio=axis.rms_torque_ratio,
+        max_inertia_ratio=axis.max_inertia_ratio,
+        thrust=axis.axial_load * share,
+        mean_thrust=axis.mean_axial_load_eff * share,
+        blocks=axis.guide_blocks / sides,
+        rails=axis.rails / sides,
+        rail_length=axis.stroke + axis.table_length,
+        stroke=axis.stroke,
+    )
 
 
 def _guides(table, side: Side) -> dict:
     roller = np.array([t == "roller" for t in table["type"]], dtype=float)
-    return {"mu": table["friction_coefficient"], "f_seal": table["friction_force"] * side.blocks,
-            "m_blocks": table["block_mass"] * side.blocks, "k_n": table["normal_rigidity"],
-            "c_block": table["dynamic_load_rating"], "c0_block": table["static_load_rating"],
-            "roller": roller, "rating_distance": table["rating_distance"],
-            "guide_cost": side.sides * (table["block_price"] * side.blocks
-                                        + table["rail_price_per_length"] * side.rails * side.rail_length)}
+    return {
+        "mu": table["friction_coefficient"],
+        "f_seal": table["friction_force"] * side.blocks,
+        "m_blocks": table["block_mass"] * side.blocks,
+        "k_n": table["normal_rigidity"],
+        "c_block": table["dynamic_load_rating"],
+        "c0_block": table["static_load_rating"],
+        "roller": roller,
+        "rating_distance": table["rating_distance"],
+        "guide_cost": side.sides
+        * (
+            table["block_price"] * side.blocks
+            + table["rail_price_per_length"] * side.rails * side.rail_length
+        ),
+    }
 
 
 @dataclass
@@ -107,8 +130,10 @@ class DriveSpace:
     def at(self, flat: int) -> dict:
         """The parameters of one combination, floats."""
         idx = np.unravel_index(flat, self.shape)
-        return {k: float(np.broadcast_to(v, self.shape)[idx]) if isinstance(v, np.ndarray) else float(v)
-                for k, v in self.p.items()}
+        return {
+            k: float(np.broadcast_to(v, self.shape)[idx]) if isinstance(v, np.ndarray) else float(v)
+            for k, v in self.p.items()
+        }
 
     def cost_at(self, flat: int) -> float:
         return float(np.broadcast_to(self.cost, self.shape)[np.unravel_index(flat, self.shape)])
@@ -127,29 +152,62 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
     mot = lambda col: _shape(motors[col], 2, nd)  # noqa: E731
     twin = _shape(choice.twin_pinion, 3, nd)
     g = {k: _shape(v, 4, nd) for k, v in _guides(guides, side).items()}
-    m_motor = np.where(np.isfinite(motors["mass"]), motors["mass"],
-                       MOTOR_MASS_BASE + MOTOR_MASS_PER_NM * motors["rated_torque"])
+    m_motor = np.where(
+        np.isfinite(motors["mass"]),
+        motors["mass"],
+        MOTOR_MASS_BASE + MOTOR_MASS_PER_NM * motors["rated_torque"],
+    )
     pinions = 1.0 + twin
     m_parts = pinions * (_shape(m_motor, 2, nd) + red("mass"))
     p = {
-        "m_axis": side.m_axis, "m_parts": m_parts, "m_blocks": g["m_blocks"], "mu": g["mu"],
-        "f_seal": g["f_seal"], "normal": side.normal, "vertical": side.vertical, "d": R("pitch_diameter"),
-        "perm": R("permissible_force"), "k_o": choice.overload_factor, "face": R("face_width"),
-        "err": R("pitch_error"), "stroke": side.stroke, "ratio": red("ratio"), "eta": red("efficiency"),
-        "j_motor": mot("rotor_inertia"), "j_red": red("inertia"), "t_rated": mot("rated_torque"),
-        "t_peak": mot("peak_torque"), "n_max": mot("max_speed"), "t2b": red("accel_torque"),
-        "t2n": red("rated_torque"), "n1max": red("max_input_speed"), "backlash": red("backlash"),
-        "kt_red": red("torsional_stiffness"), "twin": twin, "bias": choice.preload_bias,
-        "rms_ratio": side.rms_ratio, "max_inertia_ratio": side.max_inertia_ratio, "k_n": g["k_n"],
-        "blocks": side.blocks, "v_max": side.v_max, "thrust": side.thrust, "mean_thrust": side.mean_thrust,
-        **_guide_params(g, side)}
+        "m_axis": side.m_axis,
+        "m_parts": m_parts,
+        "m_blocks": g["m_blocks"],
+        "mu": g["mu"],
+        "f_seal": g["f_seal"],
+        "normal": side.normal,
+        "vertical": side.vertical,
+        "d": R("pitch_diameter"),
+        "perm": R("permissible_force"),
+        "k_o": choice.overload_factor,
+        "face": R("face_width"),
+        "err": R("pitch_error"),
+        "stroke": side.stroke,
+        "ratio": red("ratio"),
+        "eta": red("efficiency"),
+        "j_motor": mot("rotor_inertia"),
+        "j_red": red("inertia"),
+        "t_rated": mot("rated_torque"),
+        "t_peak": mot("peak_torque"),
+        "n_max": mot("max_speed"),
+        "t2b": red("accel_torque"),
+        "t2n": red("rated_torque"),
+        "n1max": red("max_input_speed"),
+        "backlash": red("backlash"),
+        "kt_red": red("torsional_stiffness"),
+        "twin": twin,
+        "bias": choice.preload_bias,
+        "rms_ratio": side.rms_ratio,
+        "max_inertia_ratio": side.max_inertia_ratio,
+        "k_n": g["k_n"],
+        "blocks": side.blocks,
+        "v_max": side.v_max,
+        "thrust": side.thrust,
+        "mean_thrust": side.mean_thrust,
+        **_guide_params(g, side),
+    }
     rack_len = side.sides * side.rail_length
-    drive_cost = (side.sides * pinions * (R("pinion_price") + red("price") + mot("price"))
-                  + rack_len * R("rack_price_per_length"))
+    drive_cost = side.sides * pinions * (
+        R("pinion_price") + red("price") + mot("price")
+    ) + rack_len * R("rack_price_per_length")
     cost = drive_cost + g["guide_cost"]
-    axes = (("rack", tuple(r["id"] for r in racks)), ("reduction", tuple(reductions["id"])),
-            ("motor", tuple(motors["id"])), ("twin_pinion", tuple("yes" if t else "no" for t in choice.twin_pinion)),
-            ("guide", tuple(guides["id"])))
+    axes = (
+        ("rack", tuple(r["id"] for r in racks)),
+        ("reduction", tuple(reductions["id"])),
+        ("motor", tuple(motors["id"])),
+        ("twin_pinion", tuple("yes" if t else "no" for t in choice.twin_pinion)),
+        ("guide", tuple(guides["id"])),
+    )
     return DriveSpace("rack_pinion", axes, p, side, cost, g["guide_cost"], drive_cost)
 
 
@@ -159,23 +217,50 @@ def lm_space(lms, guides, side: Side, choice) -> DriveSpace:
     L = lambda col: _shape([0.0 if r[col] is None else r[col] for r in lms], 0, nd)  # noqa: E731
     forcers = _shape(np.arange(1, choice.max_forcers + 1), 1, nd)
     g = {k: _shape(v, 2, nd) for k, v in _guides(guides, side).items()}
-    p = {"m_axis": side.m_axis, "m_blocks": g["m_blocks"], "mu": g["mu"], "f_seal": g["f_seal"],
-         "normal": side.normal, "vertical": side.vertical, "forcers": forcers, "fc": L("continuous_force"),
-         "fp": L("peak_force"), "kf": L("force_constant"), "m_forcer": L("forcer_mass"),
-         "fa": L("attraction_force"), "accuracy": L("accuracy"), "t_acc": side.t_acc,
-         "bandwidth": choice.servo_bandwidth, "k_n": g["k_n"], "blocks": side.blocks, "thrust": side.thrust,
-         "mean_thrust": side.mean_thrust, **_guide_params(g, side)}
-    drive_cost = side.sides * (forcers * L("forcer_price") + side.rail_length * L("track_price_per_length"))
+    p = {
+        "m_axis": side.m_axis,
+        "m_blocks": g["m_blocks"],
+        "mu": g["mu"],
+        "f_seal": g["f_seal"],
+        "normal": side.normal,
+        "vertical": side.vertical,
+        "forcers": forcers,
+        "fc": L("continuous_force"),
+        "fp": L("peak_force"),
+        "kf": L("force_constant"),
+        "m_forcer": L("forcer_mass"),
+        "fa": L("attraction_force"),
+        "accuracy": L("accuracy"),
+        "t_acc": side.t_acc,
+        "bandwidth": choice.servo_bandwidth,
+        "k_n": g["k_n"],
+        "blocks": side.blocks,
+        "thrust": side.thrust,
+        "mean_thrust": side.mean_thrust,
+        **_guide_params(g, side),
+    }
+    drive_cost = side.sides * (
+        forcers * L("forcer_price") + side.rail_length * L("track_price_per_length")
+    )
     cost = drive_cost + g["guide_cost"]
-    axes = (("linear_motor", tuple(r["id"] for r in lms)),
-            ("forcers", tuple(str(i) for i in range(1, choice.max_forcers + 1))), ("guide", tuple(guides["id"])))
+    axes = (
+        ("linear_motor", tuple(r["id"] for r in lms)),
+        ("forcers", tuple(str(i) for i in range(1, choice.max_forcers + 1))),
+        ("guide", tuple(guides["id"])),
+    )
     return DriveSpace("linear_motor", axes, p, side, cost, g["guide_cost"], drive_cost)
 
 
 def _guide_params(g, side: Side) -> dict:
-    return {"c_block": g["c_block"], "c0_block": g["c0_block"], "roller": g["roller"],
-            "rating_distance": g["rating_distance"], "fw": side.fw, "life_needed": side.life_needed,
-            "static_safety": side.static_safety}
+    return {
+        "c_block": g["c_block"],
+        "c0_block": g["c0_block"],
+        "roller": g["roller"],
+        "rating_distance": g["rating_distance"],
+        "fw": side.fw,
+        "life_needed": side.life_needed,
+        "static_safety": side.static_safety,
+    }
 
 
 def respond(space: DriveSpace, p: dict) -> dict:
@@ -187,15 +272,22 @@ def respond(space: DriveSpace, p: dict) -> dict:
         res = lm_response(p, space.side.cycle)
         attraction = res["outputs"]["attraction_force"]
     gr = guide_response(p, res["outputs"]["moving_mass"], attraction)
-    return {"outputs": {**res["outputs"], **gr["outputs"]}, "margins": {**res["margins"], **gr["margins"]}}
+    return {
+        "outputs": {**res["outputs"], **gr["outputs"]},
+        "margins": {**res["margins"], **gr["margins"]},
+    }
 
 
 def evaluate_space(space: DriveSpace) -> dict:
     """Every combination at once: outputs and margins as arrays of ``space.shape``."""
     res = respond(space, space.p)
     shape = space.shape
-    res["outputs"] = {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in res["outputs"].items()}
-    res["margins"] = {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in res["margins"].items()}
+    res["outputs"] = {
+        k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in res["outputs"].items()
+    }
+    res["margins"] = {
+        k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in res["margins"].items()
+    }
     res["cost"] = np.broadcast_to(np.asarray(space.cost, dtype=float), shape)
     return res
 
@@ -203,5 +295,8 @@ def evaluate_space(space: DriveSpace) -> dict:
 def evaluate_one(space: DriveSpace, flat: int) -> dict:
     """One combination in floats (the exhaustive method)."""
     res = respond(space, space.at(flat))
-    return {"outputs": {k: float(v) for k, v in res["outputs"].items()},
-            "margins": {k: float(v) for k, v in res["margins"].items()}, "cost": space.cost_at(flat)}
+    return {
+        "outputs": {k: float(v) for k, v in res["outputs"].items()},
+        "margins": {k: float(v) for k, v in res["margins"].items()},
+        "cost": space.cost_at(flat),
+    }

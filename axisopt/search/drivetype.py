@@ -29,9 +29,15 @@ OBJECTIVES = {  # mode: (output, factor to display, unit, sense)
     "positioning_error": ("positioning_error", 1e-6, "um", "min"),
 }
 LIMITS = {  # limit key: (output, sense)
-    "min_stiffness": ("stiffness", ">="), "min_frequency": ("frequency", ">="), "max_cost": ("cost", "<="),
-    "max_moving_mass": ("moving_mass", "<="), "max_positioning_error": ("positioning_error", "<="),
-    "max_backlash": ("lost_motion", "<="),  # the gearbox's backlash at the rack (0: a preloaded twin pinion)
+    "min_stiffness": ("stiffness", ">="),
+    "min_frequency": ("frequency", ">="),
+    "max_cost": ("cost", "<="),
+    "max_moving_mass": ("moving_mass", "<="),
+    "max_positioning_error": ("positioning_error", "<="),
+    "max_backlash": (
+        "lost_motion",
+        "<=",
+    ),  # the gearbox's backlash at the rack (0: a preloaded twin pinion)
 }
 LIMIT_FLOOR = {"max_backlash": 1e-6}  # a limit of 0: misses relative to 1 um
 HANDLED = set(LIMITS) | {"min_life"}  # min_life: the guides' life (Side.life_needed)
@@ -55,10 +61,17 @@ class DriveDesign:
     candidate: object = field(default=None, repr=False)  # the screw search's Candidate
 
     def to_dict(self) -> dict:
-        return {"drive_type": self.drive_type, "parts": dict(self.parts), "objective": self.objective,
-                "cost": self.cost, "moving_mass": self.moving_mass, "stiffness": self.stiffness,
-                "frequency": self.frequency, "positioning_error": self.positioning_error,
-                "margins": {k: float(v) for k, v in self.margins.items()}}
+        return {
+            "drive_type": self.drive_type,
+            "parts": dict(self.parts),
+            "objective": self.objective,
+            "cost": self.cost,
+            "moving_mass": self.moving_mass,
+            "stiffness": self.stiffness,
+            "frequency": self.frequency,
+            "positioning_error": self.positioning_error,
+            "margins": {k: float(v) for k, v in self.margins.items()},
+        }
 
 
 @dataclass
@@ -85,29 +98,39 @@ class DriveTypeResult:
     change: str = ""  # infeasible: a verified design change
 
     def to_dict(self) -> dict:
-        return {"status": self.status, "method": self.method, "objective": self.objective_label,
-                "objective_unit": self.objective_unit, "time": self.time,
-                "best": self.best.to_dict() if self.best else None,
-                "runners_up": [d.to_dict() for d in self.runners_up],
-                "types": [vars(t) for t in self.types], "notes": list(self.notes),
-                "closest": [d.to_dict() for d in self.closest], "design_change": self.change}
+        return {
+            "status": self.status,
+            "method": self.method,
+            "objective": self.objective_label,
+            "objective_unit": self.objective_unit,
+            "time": self.time,
+            "best": self.best.to_dict() if self.best else None,
+            "runners_up": [d.to_dict() for d in self.runners_up],
+            "types": [vars(t) for t in self.types],
+            "notes": list(self.notes),
+            "closest": [d.to_dict() for d in self.closest],
+            "design_change": self.change,
+        }
 
 
-def _objective(problem):
+def objective_of(problem):
     mode = problem.objective.mode
     if mode not in OBJECTIVES:
-        raise InputError(f"objective '{mode}': a search over drive types maximises stiffness or frequency or "
-                         f"minimises {', '.join(k for k, v in OBJECTIVES.items() if v[3] == 'min')}",
-                         source=problem.source, where="objective")
+        raise InputError(
+            f"objective '{mode}': a search over drive types maximises stiffness or frequency or "
+            f"minimises {', '.join(k for k, v in OBJECTIVES.items() if v[3] == 'min')}",
+            source=problem.source,
+            where="objective",
+        )
     return mode, OBJECTIVES[mode]
 
 
-def _tables(problem):
+def part_tables(problem):
     cat = problem.catalog
     return cat.rows("reductions"), cat.rows("motors"), cat.rows("guides")
 
 
-def _subset(table, keep):
+def subset(table, keep):
     """A PartTable's columns restricted to the rows ``keep`` (a bool mask), as a dict of arrays."""
     return {c: np.asarray(table[c])[keep] for c in table.columns}
 
@@ -117,7 +140,7 @@ def spaces(problem, axis=None) -> list:
     guide types, require/exclude of the guide, motor and reduction slots)."""
     axis = problem.axis if axis is None else axis
     ch = problem.drives
-    red, mot, gd = _tables(problem)
+    red, mot, gd = part_tables(problem)
     rs = problem.restrictions
 
     def keep(table, slot, extra=None):
@@ -143,15 +166,15 @@ def spaces(problem, axis=None) -> list:
     rk = keep(red, "reduction", np.isfinite(np.asarray(red["mass"], dtype=float)))
     side = side_of(axis)
     out = []
-    guides = _subset(gd, gk)
+    guides = subset(gd, gk)
     if "rack_pinion" in ch.types and rk.any() and mk.any() and gk.any():
-        out.append(rack_space(ch.tables.racks, _subset(red, rk), _subset(mot, mk), guides, side, ch))
+        out.append(rack_space(ch.tables.racks, subset(red, rk), subset(mot, mk), guides, side, ch))
     if "linear_motor" in ch.types and gk.any():
         out.append(lm_space(ch.tables.linear_motors, guides, side, ch))
     return out
 
 
-def _limit_arrays(problem, outputs: dict, cost):
+def limit_arrays(problem, outputs: dict, cost):
     """Relative misses of the handled limits, arrays (>= 0 feasible)."""
     vals = {**outputs, "cost": cost}
     out = {}
@@ -167,7 +190,7 @@ def _limit_arrays(problem, outputs: dict, cost):
     return out
 
 
-def _scores(problem, space, res, spec):
+def scores(problem, space, res, spec):
     """Objective (display units) and feasibility of every combination of ``space`` (flat arrays)."""
     name, factor, _, sense = spec
     vals = res["cost"] if name == "cost" else res["outputs"][name]
@@ -178,7 +201,7 @@ def _scores(problem, space, res, spec):
         m = np.asarray(m, dtype=float).ravel()
         ok &= m >= 1.0
         miss += np.maximum(0.0, 1.0 - m)
-    for v in _limit_arrays(problem, res["outputs"], res["cost"]).values():
+    for v in limit_arrays(problem, res["outputs"], res["cost"]).values():
         v = np.asarray(v).ravel()
         ok &= v >= 0.0
         miss += np.maximum(0.0, -v)
@@ -186,21 +209,34 @@ def _scores(problem, space, res, spec):
     return obj, ok, miss
 
 
-def _design(space, flat, one, spec, problem=None) -> DriveDesign:
+def design_of(space, flat, one, spec, problem=None) -> DriveDesign:
     name, factor, _, _ = spec
     o = one["outputs"]
     value = one["cost"] if name == "cost" else o[name]
     parts = space.parts(flat)
-    d = DriveDesign(space.kind, parts, value / factor, one["cost"], o["moving_mass"], o["stiffness"] / 1e6,
-                    o["frequency"], o["positioning_error"] * 1e6, margins=one["margins"],
-                    outputs={**o, "cost": one["cost"]})
-    if problem is not None:  # an infeasible problem's closest design: the limits it misses, as margins
-        lim = _limit_arrays(problem, {k: np.array([v]) for k, v in o.items()}, np.array([one["cost"]]))
+    d = DriveDesign(
+        space.kind,
+        parts,
+        value / factor,
+        one["cost"],
+        o["moving_mass"],
+        o["stiffness"] / 1e6,
+        o["frequency"],
+        o["positioning_error"] * 1e6,
+        margins=one["margins"],
+        outputs={**o, "cost": one["cost"]},
+    )
+    if (
+        problem is not None
+    ):  # an infeasible problem's closest design: the limits it misses, as margins
+        lim = limit_arrays(
+            problem, {k: np.array([v]) for k, v in o.items()}, np.array([one["cost"]])
+        )
         d.margins = {**d.margins, **{k: float(1.0 + v[0]) for k, v in lim.items()}}
     return d
 
 
-def _rank(designs: list, sense: str) -> list:
+def rank_designs(designs: list, sense: str) -> list:
     from .drivebest import rank_key
 
     sign = -1.0 if sense == "max" else 1.0
@@ -218,7 +254,7 @@ def search_space(problem, space, spec, method: str, top: int):
     from .drivebest import rank_key
 
     res = evaluate_space(space)
-    objs, oks, misses = _scores(problem, space, res, spec)
+    objs, oks, misses = scores(problem, space, res, spec)
     sense = spec[3]
     sign = -1.0 if sense == "max" else 1.0
     idx = np.flatnonzero(oks)
@@ -226,7 +262,9 @@ def search_space(problem, space, spec, method: str, top: int):
         cost = np.asarray(res["cost"]).ravel()
         mass = np.asarray(res["outputs"]["moving_mass"]).ravel()
         keys = sorted((rank_key(objs[i], cost[i], mass[i], sign), int(i)) for i in idx)[:top]
-        designs = _rank([_design(space, i, evaluate_one(space, i), spec) for _, i in keys], sense)
+        designs = rank_designs(
+            [design_of(space, i, evaluate_one(space, i), spec) for _, i in keys], sense
+        )
         return designs[:top], int(idx.size), []
     order = np.argsort(misses, kind="stable")[:CLOSEST]
     return [], 0, [int(i) for i in order]
@@ -240,26 +278,43 @@ def scalar_search(problem, space, spec, top: int):
     found = []
     for i in range(space.size):
         one = evaluate_one(space, i)
-        res = {"outputs": {k: np.array([v]) for k, v in one["outputs"].items()},
-               "margins": {k: np.array([v]) for k, v in one["margins"].items()}, "cost": np.array([one["cost"]])}
-        o, k, _ = _scores(problem, space, res, spec)
+        res = {
+            "outputs": {k: np.array([v]) for k, v in one["outputs"].items()},
+            "margins": {k: np.array([v]) for k, v in one["margins"].items()},
+            "cost": np.array([one["cost"]]),
+        }
+        o, k, _ = scores(problem, space, res, spec)
         if k[0]:
             found.append((rank_key(o[0], one["cost"], one["outputs"]["moving_mass"], sign), i))
     found.sort()
-    return _rank([_design(space, i, evaluate_one(space, i), spec) for _, i in found[:top]], spec[3]), len(found)
+    return rank_designs(
+        [design_of(space, i, evaluate_one(space, i), spec) for _, i in found[:top]], spec[3]
+    ), len(found)
 
 
 def _screw(problem, method: str, top: int, time_limit: float, spec):
     from .front import solve
 
-    res = solve(replace(problem, drives=None), method, top=top, time_limit=time_limit, sensitivities=False)
+    res = solve(
+        replace(problem, drives=None), method, top=top, time_limit=time_limit, sensitivities=False
+    )
     designs = []
     for c in ([res.best] + list(res.runners_up)) if res.best is not None else []:
         out = c.outputs or {}
         perr = out.get("positioning_error")
-        designs.append(DriveDesign("screw", {"mounting": c.mounting, **c.parts()}, c.objective, c.cost,
-                                   c.moving_mass, c.min_stiffness, c.min_frequency,
-                                   float(perr) * 1e6 if perr is not None else float("nan"), candidate=c))
+        designs.append(
+            DriveDesign(
+                "screw",
+                {"mounting": c.mounting, **c.parts()},
+                c.objective,
+                c.cost,
+                c.moving_mass,
+                c.min_stiffness,
+                c.min_frequency,
+                float(perr) * 1e6 if perr is not None else float("nan"),
+                candidate=c,
+            )
+        )
     return res, designs
 
 
@@ -267,18 +322,30 @@ def solve_drive_types(problem, method: str = "default", *, top: int = 5, time_li
     """Solve ``problem`` over its drive types (see the module); a :class:`DriveTypeResult`."""
     t0 = time.perf_counter()
     if method not in ("default", "exhaustive"):
-        raise InputError(f"method '{method}': a search over drive types runs the default or exhaustive method",
-                         source=problem.source, where="method")
-    mode, spec = _objective(problem)
+        raise InputError(
+            f"method '{method}': a search over drive types runs the default or exhaustive method",
+            source=problem.source,
+            where="method",
+        )
+    mode, spec = objective_of(problem)
     unit, sense = spec[2], spec[3]
     designs, types, notes, closest = [], [], [], {}
     status = "optimal"
     for kind in problem.drives.types:
         if kind == "screw":
-            res, ds = _screw(problem, method, top, max(time_limit - (time.perf_counter() - t0), 1.0), spec)
+            res, ds = _screw(
+                problem, method, top, max(time_limit - (time.perf_counter() - t0), 1.0), spec
+            )
             designs += ds
-            types.append(TypeSummary("screw", res.status, res.certificate.combinations, res.certificate.feasible,
-                                     ds[0].objective if ds else None))
+            types.append(
+                TypeSummary(
+                    "screw",
+                    res.status,
+                    res.certificate.combinations,
+                    res.certificate.feasible,
+                    ds[0].objective if ds else None,
+                )
+            )
             if res.status not in ("optimal", "infeasible"):
                 status = res.status
             continue
@@ -288,19 +355,39 @@ def solve_drive_types(problem, method: str = "default", *, top: int = 5, time_li
             ds, nfeas, near = search_space(problem, space, spec, method, top)
             designs += ds
             closest[kind] = (space, near)
-            types.append(TypeSummary(kind, "optimal" if ds else "infeasible", space.size, nfeas,
-                                     ds[0].objective if ds else None))
+            types.append(
+                TypeSummary(
+                    kind,
+                    "optimal" if ds else "infeasible",
+                    space.size,
+                    nfeas,
+                    ds[0].objective if ds else None,
+                )
+            )
     left = sorted(k for k, _ in problem.limits if k not in HANDLED)
     if left and any(t != "screw" for t in problem.drives.types):
         notes.append(f"limits on screw-drive outputs bind the screw drive only: {', '.join(left)}")
     from .drivebest import rank_key
 
     sign = -1.0 if sense == "max" else 1.0
-    ranked = sorted(designs, key=lambda d: (rank_key(d.objective, d.cost, d.moving_mass, sign),
-                                            problem.drives.types.index(d.drive_type)))
-    out = DriveTypeResult(status if ranked else "infeasible", method, f"{'maximise' if sense == 'max' else 'minimise'}"
-                          f" {mode.replace('_', ' ')}", unit, ranked[0] if ranked else None, ranked[1:top], types,
-                          0.0, tuple(notes))
+    ranked = sorted(
+        designs,
+        key=lambda d: (
+            rank_key(d.objective, d.cost, d.moving_mass, sign),
+            problem.drives.types.index(d.drive_type),
+        ),
+    )
+    out = DriveTypeResult(
+        status if ranked else "infeasible",
+        method,
+        f"{'maximise' if sense == 'max' else 'minimise'} {mode.replace('_', ' ')}",
+        unit,
+        ranked[0] if ranked else None,
+        ranked[1:top],
+        types,
+        0.0,
+        tuple(notes),
+    )
     if not ranked:
         from .drivechange import design_change
 

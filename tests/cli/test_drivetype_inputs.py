@@ -28,8 +28,13 @@ def _with_catalog(tmp_path, table: str, line_from: str, line_to: str, text: str)
 
 
 def test_a_pinion_with_zero_teeth(tmp_path, capsys):
-    path = _with_catalog(tmp_path, "racks", "THK-GP6-20A,THK,GSR-R rack with GP pinion,spur,7,1.91,20,",
-                         "THK-GP6-20A,THK,GSR-R rack with GP pinion,spur,7,1.91,0,", ROUTER)
+    path = _with_catalog(
+        tmp_path,
+        "racks",
+        "THK-GP6-20A,THK,GSR-R rack with GP pinion,spur,7,1.91,20,",
+        "THK-GP6-20A,THK,GSR-R rack with GP pinion,spur,7,1.91,0,",
+        ROUTER,
+    )
     assert main(["solve", path]) == 2
     err = one_line_error(capsys)
     assert "racks.csv" in err and "line 2" in err and "teeth" in err and "positive" in err, err
@@ -46,25 +51,44 @@ def test_a_nan_force_constant(tmp_path, capsys):
 @pytest.mark.parametrize("extra, ok", [("", False), ("\n  linear_motor: {brake: yes}", True)])
 def test_a_vertical_linear_motor_needs_a_brake_or_counterbalance(tmp_path, capsys, extra, ok):
     text = LASER.replace("orientation: horizontal", "orientation: vertical").replace(
-        "  linear_motor: {max_forcers: 2, servo_bandwidth: 50 Hz}\n", "")
-    text = text.replace("  drive_types: [linear_motor, rack_pinion]", "  drive_types: [linear_motor]" + extra)
+        "  linear_motor: {max_forcers: 2, servo_bandwidth: 50 Hz}\n", ""
+    )
+    text = text.replace(
+        "  drive_types: [linear_motor, rack_pinion]", "  drive_types: [linear_motor]" + extra
+    )
     code = main(["solve", write_file(tmp_path, "p.yaml", text)])
     if ok:
         assert code in (0, 1)
         return
     assert code == 2
     err = one_line_error(capsys)
-    assert "p.yaml" in err and "search.drive_types" in err and "brake or a counterbalance" in err, err
+    assert "p.yaml" in err and "search.drive_types" in err and "brake or a counterbalance" in err, (
+        err
+    )
 
 
-@pytest.mark.parametrize("old, new, words", [
-    ("drive_types: [rack_pinion, linear_motor]", "drive_types: [rack_pinion, belt]", "belt"),
-    ("drive_types: [rack_pinion, linear_motor]", "drive_types: [rack_pinion, rack_pinion]", "listed twice"),
-    ("rack_pinion: {twin_pinion: search, overload: medium}", "rack_pinion: {twin_pinion: search, overload: huge}",
-     "huge"),
-    ("rack_pinion: {twin_pinion: search, overload: medium}", "rack_pinion: {twin_pinon: yes}", "twin_pinon"),
-    ("objective: stiffness", "objective: kv", "drive types"),
-])
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        ("drive_types: [rack_pinion, linear_motor]", "drive_types: [rack_pinion, belt]", "belt"),
+        (
+            "drive_types: [rack_pinion, linear_motor]",
+            "drive_types: [rack_pinion, rack_pinion]",
+            "listed twice",
+        ),
+        (
+            "rack_pinion: {twin_pinion: search, overload: medium}",
+            "rack_pinion: {twin_pinion: search, overload: huge}",
+            "huge",
+        ),
+        (
+            "rack_pinion: {twin_pinion: search, overload: medium}",
+            "rack_pinion: {twin_pinon: yes}",
+            "twin_pinon",
+        ),
+        ("objective: stiffness", "objective: kv", "drive types"),
+    ],
+)
 def test_bad_drive_type_keys(tmp_path, capsys, old, new, words):
     assert old in ROUTER
     assert main(["solve", write_file(tmp_path, "p.yaml", ROUTER.replace(old, new))]) == 2
@@ -74,7 +98,10 @@ def test_bad_drive_type_keys(tmp_path, capsys, old, new, words):
 
 def test_the_router_solves_and_writes_json(tmp_path, capsys):
     out = tmp_path / "r.json"
-    assert main(["solve", str(ROOT / "problems" / "router_rack_problem.yaml"), "--json", str(out)]) == 0
+    assert (
+        main(["solve", str(ROOT / "problems" / "router_rack_problem.yaml"), "--json", str(out)])
+        == 0
+    )
     text = capsys.readouterr().out
     assert "rack and pinion" in text and "best design" in text
     d = json.loads(out.read_text(encoding="utf-8"))

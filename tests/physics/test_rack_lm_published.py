@@ -36,7 +36,9 @@ def test_apex_and_yaskawa_rack_formulas():
     assert pr.pinion_torque(fn, d_mm * 1e-3) == pytest.approx(fn * d_mm / 2000.0, rel=1e-12)
     rpm = pr.pinion_speed(v, d_mm * 1e-3) * 60.0 / (2.0 * math.pi)
     assert rpm == pytest.approx(v * 19100.0 / d_mm, rel=2e-4)  # 19100 is 60000/pi rounded
-    assert 4.0 * pr.linear_inertia(m, d_mm * 1e-3) == pytest.approx(m * (d_mm / 1000.0) ** 2, rel=1e-12)
+    assert 4.0 * pr.linear_inertia(m, d_mm * 1e-3) == pytest.approx(
+        m * (d_mm / 1000.0) ** 2, rel=1e-12
+    )
 
 
 @pytest.mark.published
@@ -63,8 +65,12 @@ def test_hiwin_appendix_a_linear_motor_sizing_example():
     assert lm.current(fe, 33.8) / 1.8 == pytest.approx(0.6889, abs=0.001)
     # the same cycle through the model's integrals (cycle_gram): accelerate, cruise, decelerate, dwell
     t = 0.4 / 3
-    phases = [Phase(t, a, a, 1.0, 0.0, v), Phase(t, 0.0, 0.0, 1.0, 0.0, v, v0=v),
-              Phase(t, -a, -a, 1.0, 0.0, v, v0=v), Phase(0.35, 0.0, 0.0, 0.0, 0.0, 0.0)]
+    phases = [
+        Phase(t, a, a, 1.0, 0.0, v),
+        Phase(t, 0.0, 0.0, 1.0, 0.0, v, v0=v),
+        Phase(t, -a, -a, 1.0, 0.0, v, v0=v),
+        Phase(0.35, 0.0, 0.0, 0.0, 0.0, 0.0),
+    ]
     cyc = pr.cycle_gram(phases)
     assert pr.rms_linear(cyc, 5.0, ff) == pytest.approx(41.92, abs=0.02)
     assert pr.peak_linear(cyc, 5.0, ff) == pytest.approx(70.79, abs=0.02)
@@ -83,30 +89,46 @@ def _numeric_rms(phases, alpha, beta, phi, gamma, n=4000):
 
 
 def test_cycle_gram_matches_a_numerical_integration_of_a_jerk_limited_cycle():
-    segs = (Segment("move", distance=0.8, speed=1.3, acceleration=14.7, jerk=300.0, force=200.0),
-            Segment("move", distance=-0.2, speed=0.33, acceleration=14.7, jerk=300.0, force=150.0),
-            Segment("move", distance=-0.6, speed=1.3, acceleration=14.7, jerk=300.0),
-            Segment("dwell", duration=0.5))
+    segs = (
+        Segment("move", distance=0.8, speed=1.3, acceleration=14.7, jerk=300.0, force=200.0),
+        Segment("move", distance=-0.2, speed=0.33, acceleration=14.7, jerk=300.0, force=150.0),
+        Segment("move", distance=-0.6, speed=1.3, acceleration=14.7, jerk=300.0),
+        Segment("dwell", duration=0.5),
+    )
     phases = cycle_phases(segs)
     cyc = pr.cycle_gram(phases)
     for c in [(130.0, 40.0, 1.0, 0.0), (2.0, -3.0, 0.5, 7.0), (0.0, 1.0, 0.0, 0.0)]:
         assert pr.rms_linear(cyc, *c) == pytest.approx(_numeric_rms(phases, *c), rel=1e-5)
     # the peak: the largest |X| of a fine sampling is reached at a phase corner
-    sampled = max(abs(c * (ph.a0 + (ph.a1 - ph.a0) * s) + 40.0 * ph.direction + ph.force * ph.direction)
-                  for ph in phases for s in np.linspace(0, 1, 50) for c in (130.0,))
+    sampled = max(
+        abs(c * (ph.a0 + (ph.a1 - ph.a0) * s) + 40.0 * ph.direction + ph.force * ph.direction)
+        for ph in phases
+        for s in np.linspace(0, 1, 50)
+        for c in (130.0,)
+    )
     assert float(pr.peak_linear(cyc, 130.0, 40.0)) == pytest.approx(sampled, rel=1e-12)
 
 
 def test_float_numpy_casadi_agree():
-    phases = cycle_phases((Segment("move", distance=1.0, speed=1.0, acceleration=5.0, force=100.0),
-                           Segment("move", distance=-1.0, speed=1.0, acceleration=5.0), Segment("dwell", duration=0.3)))
+    phases = cycle_phases(
+        (
+            Segment("move", distance=1.0, speed=1.0, acceleration=5.0, force=100.0),
+            Segment("move", distance=-1.0, speed=1.0, acceleration=5.0),
+            Segment("dwell", duration=0.3),
+        )
+    )
     cyc = pr.cycle_gram(phases)
 
     def f(m, mu, d, kt):
-        return [pr.rms_linear(cyc, m, mu * m * 9.81), pr.peak_linear(cyc, m, mu * m * 9.81),
-                pr.series(pr.mesh_stiffness(d), pr.torsion_at_rack(kt, d)), pr.tooth_margin(5e3, 1.25, m * 5.0),
-                lm.effective_force(m * 5.0, mu * m, 0.2, 0.5, 0.2, 0.3), lm.servo_stiffness(m, 50.0),
-                lm.block_load(m, 3000.0, 100.0, 4.0)]
+        return [
+            pr.rms_linear(cyc, m, mu * m * 9.81),
+            pr.peak_linear(cyc, m, mu * m * 9.81),
+            pr.series(pr.mesh_stiffness(d), pr.torsion_at_rack(kt, d)),
+            pr.tooth_margin(5e3, 1.25, m * 5.0),
+            lm.effective_force(m * 5.0, mu * m, 0.2, 0.5, 0.2, 0.3),
+            lm.servo_stiffness(m, 50.0),
+            lm.block_load(m, 3000.0, 100.0, 4.0),
+        ]
 
     args = (300.0, 0.05, 0.04, 2e5)
     floats = [float(v) for v in f(*args)]
