@@ -54,10 +54,16 @@ def solve(problem: Problem | str | PathLike, method: str = "default", *, top: in
     method : 'default' (proven optimum) | 'exhaustive' | 'bonmin' | 'scip'; ``top`` designs returned;
     ``sensitivities`` re-solves with each limit relaxed by 10 % (``res.binding``).
     ``res.best.design`` is the best :class:`Design` (``evaluate`` it for the full evaluation).
+    A problem with ``search.drive_types`` returns the drive types' answer
+    (:class:`axisopt.search.drivetype.DriveTypeResult`, method 'default' or 'exhaustive').
     """
     from .search import solve as _solve
 
     p = problem if isinstance(problem, Problem) else load_problem(problem)
+    if p.drives is not None:
+        from .search.drivetype import solve_drive_types
+
+        return solve_drive_types(p, method, top=top, time_limit=time_limit)
     return _solve(p, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
 
 

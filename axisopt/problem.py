@@ -64,6 +64,7 @@ from types import MappingProxyType
 from .catalog import Catalog
 from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, NAME_KEY, Axis, catalog_for, read_axis
 from .design.choices import SEARCH_SPEC, read_arrangements
+from .design.drivechoice import read_drive_choice
 from .display import fmt, one_line
 from .errors import InputError
 from .model import CHECKS, PROFILE_OUTPUTS
@@ -234,6 +235,9 @@ class Problem:
     life_from_limit: bool = False
     # search.counterbalance / search.twin_drive: ((label, Axis), ...) the search chooses among (empty: the axis)
     arrangements: tuple = field(default=(), repr=False)
+    # search.drive_types (design.drivechoice.DriveChoice): rack and pinion, linear motors beside the screw;
+    # None: the screw drive alone
+    drives: object = field(default=None, repr=False, compare=False)
 
     @property
     def limit_map(self) -> dict:
@@ -354,6 +358,7 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
                          "> 0 or an axis.duty_cycle: without one the drive would carry no inertia torque")
     pmin, pmax = _read_continuous(root.read("continuous"))
     ssec = root.read("search")
+    drives = read_drive_choice(ssec, axis, root.string_list("catalogs", []), base=Path(root.source).parent)
     root.done()
     min_life = dict(limits).get("min_life")
     follows = min_life is not None and "required_life" in assumed
@@ -363,7 +368,8 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
     return Problem(axis=axis, catalog=catalog, objective=objective, limits=limits, margins=margins,
                    restrictions=restr, preload_min=pmin, preload_max=pmax, name=name,
                    source=root.source, assumed=assumed, life_from_limit=follows,
-                   arrangements=read_arrangements(ssec, asec, axis))
+                   arrangements=read_arrangements(ssec, asec, axis),
+                   drives=None if drives is None or drives.screw_only else drives)
 
 
 def _read_objective(root: Section) -> Objective:

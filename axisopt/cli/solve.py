@@ -56,6 +56,8 @@ def cmd_solve(args) -> int:
     if args.save_design and _single_file(args.save_design) and problem.objective.mode == "pareto":
         raise InputError("a Pareto front has several designs: give a directory, not a .yaml file",
                          where="--save-design")
+    if problem.drives is not None:
+        return _solve_drive_types(args, problem)
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
                 sensitivities=not args.no_sensitivity)
     quiet = stdout_taken(args.json, args.save_design)
@@ -103,6 +105,29 @@ def cmd_solve(args) -> int:
         elif not quiet:
             print(f"\n{len(written)} design YAML written: {', '.join(written)}" if len(written) < 4 else
                   f"\n{len(written)} design YAMLs written to {args.save_design}")
+    return exit_code(res.status)
+
+
+def _solve_drive_types(args, problem) -> int:
+    """A problem with ``search.drive_types``: the drive types' search and its text (and --json)."""
+    from ..errors import InputError
+    from ..report.drivetype import format_drive_result
+    from ..search.drivetype import solve_drive_types
+
+    for opt in ("plot", "save_design", "report"):
+        if getattr(args, opt):
+            raise InputError(f"--{opt.replace('_', '-')} is not made for a search over drive types yet",
+                             where=f"--{opt.replace('_', '-')}")
+    if args.method not in ("default", "exhaustive"):
+        raise InputError(f"--method {args.method}: a search over drive types runs the default or exhaustive "
+                         "method", where="--method")
+    res = solve_drive_types(problem, args.method,
+                            top=args.top, time_limit=args.time_limit)
+    quiet = stdout_taken(args.json, None)
+    if not quiet:
+        show(format_drive_result(res, top=args.top))
+    if args.json:
+        write_json(res.to_dict(), args.json)
     return exit_code(res.status)
 
 

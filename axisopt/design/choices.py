@@ -13,6 +13,7 @@ from dataclasses import replace
 from ..display import fmt
 from ..errors import InputError
 from ..yamlio import Key, Node, Section, Spec
+from .drivechoice import DRIVE_KEYS
 from .keys import AXIS_SPEC, COUNTERBALANCE_SPEC, TWIN_SPEC
 from .reader import read_counterbalance, read_twin_drive
 
@@ -27,6 +28,7 @@ SEARCH_SPEC = Spec("search", "axis arrangements the search chooses among (a prob
                       minimum=1, maximum=MAX_OPTIONS,
                       items=Key("one_of", options=(Key("choice", "one drive", choices=("none",)),
                                                    Key("section", spec=TWIN_SPEC)))),
+    **DRIVE_KEYS,
 })
 
 
@@ -73,7 +75,10 @@ def read_arrangements(sec: Section | None, asec: Section, axis) -> tuple:
     beside a single axis key is refused)."""
     if sec is None:
         return ()
-    for key in SEARCH_SPEC.keys:
+    if not (sec.has("counterbalance") or sec.has("twin_drive")):  # drive types only (design.drivechoice)
+        sec.done()
+        return ()
+    for key in ("counterbalance", "twin_drive"):
         if sec.has(key) and asec.has(key):
             raise sec.error(key, f"axis.{key} and search.{key} both given: list the options in search.{key} only")
     cbs = _options(sec, "counterbalance", axis, read_counterbalance)

@@ -114,6 +114,10 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
 
     What the search left out of the design (the drive, and why) is on the answer's ``left_out``.
     """
+    if getattr(problem, "drives", None) is not None:
+        raise InputError("a problem with search.drive_types is solved over its drive types "
+                         "(search.drivetype.solve_drive_types; axisopt solve and axisopt.solve do)",
+                         source=problem.source, where="search.drive_types")
     res = _solve(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
     _shown_sign(problem, res)
     why = problem.restrictions.drive_left_out
