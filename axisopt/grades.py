@@ -25,8 +25,6 @@ from functools import lru_cache
 from pathlib import Path
 from types import MappingProxyType
 
-import numpy as np
-
 from .errors import InputError
 
 SHIPPED_DIR = Path(__file__).resolve().parent.parent / "catalogs"
@@ -192,18 +190,22 @@ def grade_table() -> GradeTable:
     return load_grade_table(SHIPPED_DIR)
 
 
-def lead_errors(names, travel: float) -> np.ndarray:
+def lead_errors(names, travel: float):
     """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over ``travel`` [m]."""
     t = grade_table()
+    import numpy as np  # here: `axisopt parts screws` reads the grade tables without numpy
+
     names = np.asarray(names)
     uniq, inv = np.unique(names, return_inverse=True)
     vals = np.array([t.lead_error(str(n), travel) for n in uniq])
     return vals[inv].reshape(names.shape)
 
 
-def price_factors(names) -> np.ndarray:
+def price_factors(names):
     """The price factor of each grade name of ``names``."""
     t = grade_table()
+    import numpy as np
+
     names = np.asarray(names)
     uniq, inv = np.unique(names, return_inverse=True)
     vals = np.array([t.grade(str(n)).price_factor for n in uniq])
