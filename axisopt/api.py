@@ -87,7 +87,7 @@ def study(spec, out: str | PathLike | None = None, *, workers: int | None = 0, r
     resume    : continue a run in ``out`` (its finished cases are kept)
     overwrite : solve every case again (the case results in ``out`` are deleted first); a re-run with
                 neither is an error that names both
-    time_limit: [s] of each case's solve (``axisopt study --time-limit``)
+    time_limit: [s] of each case's solve (the study command's --time-limit option)
 
     ``axisopt.study`` is also the package :mod:`axisopt.study`; the package is callable with these
     arguments, so ``axisopt.study(spec)`` works before and after the package is imported.

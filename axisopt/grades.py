@@ -25,8 +25,6 @@ from functools import lru_cache
 from pathlib import Path
 from types import MappingProxyType
 
-import numpy as np
-
 from .errors import InputError
 
 SHIPPED_DIR = Path(__file__).resolve().parent.parent / "catalogs"
@@ -210,6 +208,8 @@ def lead_errors(names, travel: float, compensated: bool = False) -> np.ndarray:
     """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over ``travel`` [m]
     (``compensated``: :meth:`GradeTable.compensated_error`, what pitch-error compensation leaves)."""
     t = grade_table()
+    import numpy as np  # here: `axisopt parts screws` reads the grade tables without numpy
+
     names = np.asarray(names)
     uniq, inv = np.unique(names, return_inverse=True)
     how = t.compensated_error if compensated else t.lead_error
@@ -247,6 +247,8 @@ def scale_error(grade: str, travel: float) -> float:
 def price_factors(names) -> np.ndarray:
     """The price factor of each grade name of ``names``."""
     t = grade_table()
+    import numpy as np
+
     names = np.asarray(names)
     uniq, inv = np.unique(names, return_inverse=True)
     vals = np.array([t.grade(str(n)).price_factor for n in uniq])

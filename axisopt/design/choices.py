@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from ..display import fmt
 from ..errors import InputError
 from ..yamlio import Key, Node, Section, Spec
 from .drivechoice import DRIVE_KEYS
@@ -63,10 +62,9 @@ def _options(sec: Section, key: str, axis, reader) -> list:
 def _label(cb, tw) -> str:
     parts = []
     if cb is not None:
-        parts.append(f"counterweight {fmt(cb.mass, 'kg')}" if cb.kind == "counterweight" else
-                     f"cylinder {fmt(cb.force, 'N')}")
+        parts.append(f"counterweight {cb.mass:g} kg" if cb.kind == "counterweight" else f"cylinder {cb.force:g} N")
     if tw is not None:
-        parts.append(f"twin drive {fmt(tw.span * 1e3, 'mm')} apart, cross carriage {fmt(tw.cross_mass, 'kg')}")
+        parts.append(f"twin drive {tw.span * 1e3:g} mm apart, cross carriage {tw.cross_mass:g} kg")
     return ", ".join(parts) or "none"
 
 

@@ -63,6 +63,6 @@ def implausible(values: dict, ranges=RANGES) -> list:
             continue
         side = "below" if v < r.low else "above"
         out.append((r.key, f"{fmt(v * r.factor, r.unit)} is far {side} machine-tool practice "
-                           f"({fmt(r.low * r.factor)} to {fmt(r.high * r.factor, r.unit)}): check the value and its "
+                           f"({fmt(r.low * r.factor)}-{fmt(r.high * r.factor, r.unit)}): check the value and its "
                            f"unit"))
     return out

@@ -195,7 +195,7 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
             res.time = time.perf_counter() - t0
         if res.best is not None and res.best.design is not None:
             res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in task.objective.terms])
-        if sensitivities and m.pareto and res.best is not None and ob.mode in ("stiffness", "frequency"):
+        if sensitivities and method == "default" and res.best is not None and ob.mode in ("stiffness", "frequency"):
             res.cheaper = cheaper_near(task, res, m, time_limit, t0)
             res.time = time.perf_counter() - t0
     if top > 1 and not m.runners_up:

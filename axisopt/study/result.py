@@ -56,7 +56,7 @@ def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, o
     workers   : local worker processes; 0 (the default here) solves in this process, None uses every core
     resume    : continue a run in ``out`` (its finished cases are kept)
     overwrite : solve every case again: the case results already in ``out`` are deleted first
-    time_limit: [s] of each case's solve (as ``axisopt study --time-limit``, default 100)
+    time_limit: [s] of each case's solve (the study command's --time-limit option, default 100)
 
     An ``out`` that holds case results, with neither ``resume`` nor ``overwrite``, is an InputError that says
     so in these words (``axisopt.study(..., resume=True)``), not in the command line's.

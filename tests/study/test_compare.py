@@ -72,8 +72,9 @@ def test_compare_shows_the_drive_side_by_side(tmp_path, capsys):
     motor = ev.design.motor
     rows = {ln[:52].strip(): ln[52:].split() for ln in out.splitlines() if ln.startswith(("motor", "coupling", "  "))}
     assert rows["motor"] == [str(motor["id"]), "-"]
-    peak = rows["peak torque [N.m]"]
-    assert float(peak[0]) == round(ev["peak_torque"], 2) and float(peak[2]) == float(f"{motor['peak_torque']:.3g}")
+    peak = rows["peak torque (zone-scaled) [N.m]"]  # what the check compares: the peak scaled to the zone
+    assert float(peak[0]) == round(float(ev["needed_motor_peak_torque"]), 2)
+    assert float(peak[2]) == float(f"{motor['peak_torque']:.3g}")
     assert peak[3:] == ["no", "motor"]
     df = pd.read_csv(csv)
     assert df.loc[0, "motor"] == motor["id"] and pd.isna(df.loc[1, "motor"])
