@@ -204,7 +204,7 @@ def grade_table() -> GradeTable:
     return load_grade_table(SHIPPED_DIR)
 
 
-def lead_errors(names, travel: float, compensated: bool = False) -> np.ndarray:
+def lead_errors(names, travel: float, compensated: bool = False):
     """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over ``travel`` [m]
     (``compensated``: :meth:`GradeTable.compensated_error`, what pitch-error compensation leaves)."""
     t = grade_table()
@@ -244,7 +244,7 @@ def scale_error(grade: str, travel: float) -> float:
     return SCALE_GRADES[grade].accuracy * max(travel, 1.0)
 
 
-def price_factors(names) -> np.ndarray:
+def price_factors(names):
     """The price factor of each grade name of ``names``."""
     t = grade_table()
     import numpy as np
