@@ -10,8 +10,8 @@ import numpy as np
 
 from ..design import PRETENSION_RISE, TEMPERATURE_RISE, rotating_nut
 from ..model import CHECKS, Evaluation, passes
-from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.checks import DN_RULE_OTHER, DN_RULES
+from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
 from ..model.limits import CHECK_TABLE
 from ..model.loads import balance_summary
 from ..model.motorrule import DEFAULT_RULE, rule_text
