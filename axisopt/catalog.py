@@ -88,8 +88,6 @@ _CATALOG_ROWS = ("vendor", "stiffness-derived", "paper", "derived")
 _PRICE = {"estimated_when": _CATALOG_ROWS, "estimated_how": "illustrative price (catalogs/SOURCES.md)"}
 _RIGIDITY = {"estimated_when": ("stiffness-derived", "derived")}
 _DERIVED = {"estimated_when": ("derived",)}
-
-
 _TEXT = ("id", "vendor", "series")
 _UNIT = {"optional": True, "applies": "rotating", "positive": True}
 # the rotating-nut unit's own values (read through rules in model.params.rotating_nut_params): required on a
@@ -203,12 +201,8 @@ COLUMNS = MappingProxyType({
         _c("peak_corner_speed", "angular_speed", optional=True,
            estimate="min(rated speed, max speed / 2): Mitsubishi MDS-D-SVJ3 sec. 7-1 (2)"),
         _c("peak_torque_at_max_speed", "torque", optional=True, estimate="rated torque (peak falls to rated)"),
-        # the motor vendor's selection rule (model.motorrule): RMS torque <= rms_ratio x rated, and on an
-        # unbalanced (vertical) axis the steady load torque <= unbalance_ratio x rated
-        _c("rms_ratio", "dimensionless", optional=True, at_most=1.0,
-           estimate="no vendor rule: Mitsubishi's 0.8 (MDS-D-SVJ3 sec. 7-1 eq. 7-10), the harshest"),
-        _c("unbalance_ratio", "dimensionless", optional=True, at_most=1.0,
-           estimate="no vendor rule: 0.6 (Mitsubishi MDS-D-SVJ3 eq. 7-12, FANUC B-65262EN 3.1), the harshest"),
+        *(_c(n, "dimensionless", optional=True, at_most=1.0, estimate="no vendor rule: Mitsubishi's, the harshest")
+          for n in ("rms_ratio", "unbalance_ratio")),  # the vendor's selection rule (model.motorrule)
     ),
     "couplings": (
         *(_c(n, "str") for n in _TEXT),
@@ -290,8 +284,6 @@ CHOICES = {
     ("bearings", "arrangement"): tuple(ARRANGEMENT_ROWS),
     ("reductions", "kind"): ("planetary", "belt"),
 }
-
-
 TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings", "reductions")
 
 

@@ -16,6 +16,7 @@ A row without a rule: Mitsubishi's, the harshest (catalog.COLUMNS estimate).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from types import MappingProxyType
 
@@ -45,6 +46,7 @@ def rule_text(vendor: str, rms: float, unbalance: float, asked: float | None = N
     if asked is not None:
         return f"axis.rms_torque_ratio {asked:g} x rated"
     rule = MOTOR_RULES.get(vendor)
-    if rule is not None and (rule.rms, rule.unbalance) == (rms, unbalance):
+    if rule is not None and math.isclose(rule.rms, rms, rel_tol=1e-9) \
+            and math.isclose(rule.unbalance, unbalance, rel_tol=1e-9):
         return rule.source
     return f"{rms:g} x rated (RMS), {unbalance:g} x rated (unbalanced load)"

@@ -1,7 +1,6 @@
 """Closed-loop feedback and pitch-error compensation in the positioning budget, and ISO 230-2 repeatability,
 against the vendors' published figures (grades.SCALE_GRADES, THK A-678 Table 1)."""
 
-from pathlib import Path
 
 import pytest
 
