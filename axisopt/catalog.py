@@ -143,9 +143,7 @@ COLUMNS = MappingProxyType({
         _c("axial_rigidity", "stiffness", "bearing_stiffness", positive=True, **_RIGIDITY),
         _c("lift_off_load", "force", "bearing_lift_off", estimated_when=_CATALOG_ROWS,
            estimated_how="2.83 x preload (DB/DF/DFF, SKF-LF) or 2.08 x preload (DBD), catalogs/SOURCES.md"),
-        # the lift-off load of the stronger direction (its rows loaded, the others unloading) where it differs
-        # from the other's: a 3-against-1 set (DFT) mounted with its three rows facing the screw's pretension
-        _c("lift_off_load_strong", "force", optional=True, positive=True, estimated_when=_CATALOG_ROWS,
+        _c("lift_off_load_strong", "force", optional=True, positive=True, estimated_when=_CATALOG_ROWS,  # DFT
            estimated_how="Hertz set rule, 8.49 x the DB pair's preload for 3 against 1 (IBC Table 2.2)",
            blank="the set lifts off at lift_off_load both ways (the weaker direction's value: conservative)"),
         _c("dynamic_load_rating", "force", "bearing_dynamic_load", positive=True, **_DERIVED),
@@ -220,9 +218,7 @@ COLUMNS = MappingProxyType({
         *(_c(n, "str") for n in _TEXT), _c("kind", "str"),
         _c("ratio", "dimensionless", "reduction_ratio", positive=True),
         _c("efficiency", "dimensionless", "reduction_efficiency", positive=True, at_most=1.0),
-        # a belt stage's inertia is the vendor's pulley geometry as steel discs ('inertia ... derived' in its
-        # source), its stiffness the belt spans' (catalogs/SOURCES.md, "Timing-belt stages")
-        _c("inertia", "inertia", "reduction_inertia", derived_marker="inertia"),
+        _c("inertia", "inertia", "reduction_inertia", derived_marker="inertia"),  # belt: SOURCES.md
         _c("rated_torque", "torque", "reduction_rated_torque", positive=True),
         _c("accel_torque", "torque", "reduction_accel_torque", positive=True),
         # the emergency-stop torque (Beckhoff AG2400 "T2Em.stop ... 1000 times during the service life"): what the
@@ -269,10 +265,8 @@ _ORDERED = {
 }
 # Largest meaningful values (an efficiency of at most 1), from COLUMNS
 _AT_MOST = {t: tuple((c.name, c.at_most) for c in cols if c.at_most is not None) for t, cols in COLUMNS.items()}
-# The sets of 60-degree thrust bearings for screw ends: pairs (DB back-to-back, DF face-to-face), three rows (two
-# in tandem against one: DBD, DFD) and four (two against two: DBB, DFF), with the rows that carry each load
-# direction: (the stronger direction, the other); the vendors print the set's rating for the stronger one (NSK
-# TAC B: DFD in the "2 rows" column; HIWIN WBK DFD 46.5 kN)
+# Screw-end sets of 60-degree bearings: DB/DF pairs, DBD/DFD (2 against 1), DBB/DFF (2 against 2), DBT/DFT (3
+# against 1), as (rows of the stronger direction, the other's); vendors rate the stronger (NSK TAC B, HIWIN WBK)
 ARRANGEMENT_ROWS = MappingProxyType({"DB": (1, 1), "DF": (1, 1), "DBD": (2, 1), "DFD": (2, 1), "DBB": (2, 2),
                                      "DFF": (2, 2), "DBT": (3, 1), "DFT": (3, 1)})
 CHOICES = {

@@ -314,13 +314,19 @@ def test_support_bearing_life_in_the_model():
     f = d.axis.mean_axial_load_eff + float(ev["guide_friction"])  # the mean load each way (no duty cycle)
     pre, c2 = 4500.0, 47.5e3
     c1 = c2 * 0.5 ** 0.7
-    lift = 2 ** 1.5 * pre
-    pressed = pre * (1 + f / lift) ** 1.5 if f < lift else f
-    other = pressed - f
+    # issue 54: a 2-against-1 set's groups by IBC Table 2.2's linear split, from the set's preload (1.36 Fv)
+    # to its unloading point: 5.66 Fv pressing the pair, 2.83 Fv pressing the single (Fv = pre / 1.36)
+    def split(lift):
+        pressed = pre + f * (lift - pre) / lift if f < lift else f
+        return pressed, pressed - f
+
+    pair_pressed, single_relieved = split(5.66 / 1.36 * pre)
+    single_pressed, pair_relieved = split(2.83 / 1.36 * pre)
     # half the travel each way: each group is pressed half the time and relieved the other half
-    mean = ((pressed ** 3 + other ** 3) / 2) ** (1 / 3)
-    rev = [(c / (1.2 * mean)) ** 3 * 1e6 for c in (c2, c1)]
+    means = (((pair_pressed ** 3 + pair_relieved ** 3) / 2) ** (1 / 3),
+             ((single_pressed ** 3 + single_relieved ** 3) / 2) ** (1 / 3))
+    rev = [(c / (1.2 * m)) ** 3 * 1e6 for c, m in zip((c2, c1), means)]
     rev_set = (rev[0] ** -1.1 + rev[1] ** -1.1) ** (-1 / 1.1)
     n = (8 / 60) / 0.020  # mean speed 8 m/min, lead 20 mm [rev/s]
-    assert ev["bearing_life"] == pytest.approx(rev_set / n, rel=1e-9)
-    assert rev_set < 0.3 * (c2 / (1.2 * pressed)) ** 3 * 1e6  # well below the pair rating at the loaded half
+    assert ev["bearing_life"] == pytest.approx(rev_set / n, rel=2e-3)  # IBC's factors in 3 digits
+    assert rev_set < 0.3 * (c2 / (1.2 * pair_pressed)) ** 3 * 1e6  # well below the pair rating, pressed

@@ -149,3 +149,24 @@ def test_block_reactions_thk_rule_for_a_centred_table():
     expect = [1000 + s1 * 4000 * 0.1 / (2 * 0.4) + s2 * 4000 * 0.05 / (2 * 0.3) for s2 in (-1, 1) for s1 in (-1, 1)]
     assert sorted(loads) == pytest.approx(sorted(expect))
     assert math.isclose(sum(loads), 4000.0)
+
+
+@pytest.mark.published
+@pytest.mark.parametrize(("n_load", "n_other", "x"), [(1, 1, 2.83), (2, 1, 5.66), (3, 1, 8.49), (2, 2, 5.66)])
+def test_hertz_group_split_unloads_at_ibc_table_2_2(n_load, n_other, x):
+    """The checker's exact Hertz split (issue 54): the opposite group unloads at IBC Table 2.2's X Fv, Fv the
+    bearings' preload as a DB pair (the set's preload over 1, 1.36, 1.57, 2 for 1:1, 2:1, 3:1, 2:2)."""
+    fv = 1000.0
+    pre = fv * {(1, 1): 1.0, (2, 1): 1.36, (3, 1): 1.57, (2, 2): 2.0}[(n_load, n_other)]
+    _, below = vp.hertz_group_loads(pre, n_load, n_other, 0.98 * x * fv)
+    _, above = vp.hertz_group_loads(pre, n_load, n_other, 1.02 * x * fv)
+    assert below > 0.0 and above == 0.0
+
+
+def test_lift_off_of_a_3_1_set_against_its_pretension():
+    """A DFT set at a fixed-fixed end: three rows against force + pretension (8.49 Fv), the single against the
+    force alone (2.83 Fv); the checker's margin is the smaller of the two, the set turned the better way."""
+    brg = {"arrangement": "DFT", "preload": 1.57 * 6650.0}
+    avail, need, margin, _ = vp.bearing_lift_off(brg, 17.0e3, 30.0e3)
+    assert margin == pytest.approx(min(8.49 * 6650 / 47.0e3, 2.83 * 6650 / 17.0e3), rel=1e-3)
+    assert avail / need == pytest.approx(margin)
