@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .drivespace import evaluate_one, respond
+from .drivespace import evaluate_one, respond, take
 
 CHUNK = 64  # drives evaluated with all their guides at a time
 GUIDE_KEYS = ("mu", "f_seal", "m_blocks", "k_n", "c_block", "c0_block", "roller", "rating_distance")
@@ -41,7 +41,7 @@ def _flat(v, shape) -> np.ndarray:
 
 def _subset(p: dict, idx) -> dict:
     """The parameters at the multi-index ``idx`` (a size-1 axis stays at 0)."""
-    return {k: _take(v, idx) for k, v in p.items()}
+    return {k: take(v, idx) for k, v in p.items()}
 
 
 def drive_bounds(problem, space, spec, drives=None):
@@ -65,7 +65,7 @@ def drive_bounds(problem, space, spec, drives=None):
             k: _flat(v, dshape) for k, v in res["margins"].items() if not k.startswith("guide_")
         }
         runs.append((out, marg))
-    c = _flat(cost if idx is None else _take(np.asarray(cost), idx), dshape)
+    c = _flat(cost if idx is None else take(np.asarray(cost), idx), dshape)
     pick = np.maximum if sense == "max" else np.minimum
     vals = [c if name == "cost" else out[name] for out, _ in runs]
     obj = pick(vals[0], vals[1]) / factor
@@ -207,18 +207,11 @@ def rank_key(objective, cost, mass, sign) -> tuple:
     return (round(float(sign * objective), 9), round(float(cost), 6), round(float(mass), 9))
 
 
-def _take(v, idx):
-    """The entries of a broadcastable array at the multi-index ``idx`` (a size-1 axis stays at 0)."""
-    if not isinstance(v, np.ndarray) or v.ndim == 0:
-        return v
-    return v[tuple(ix if v.shape[d] != 1 else 0 for d, ix in enumerate(idx))]
-
-
 def _evaluate_flats(space, flats) -> dict:
     """The model on the combinations ``flats`` (1-D arrays of parameters)."""
     shape = space.shape
     idx = np.unravel_index(flats, shape)
-    p = {k: _take(v, idx) for k, v in space.p.items()}
+    p = {k: take(v, idx) for k, v in space.p.items()}
     res = respond(space, p)
     n = flats.size
     return {
@@ -228,5 +221,5 @@ def _evaluate_flats(space, flats) -> dict:
         "margins": {
             k: np.broadcast_to(np.asarray(v, dtype=float), (n,)) for k, v in res["margins"].items()
         },
-        "cost": np.broadcast_to(np.asarray(_take(space.cost, idx), dtype=float), (n,)),
+        "cost": np.broadcast_to(np.asarray(space.cost_of(idx), dtype=float), (n,)),
     }

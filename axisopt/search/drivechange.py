@@ -10,6 +10,7 @@ from dataclasses import replace
 from .drivespace import evaluate_one
 
 STEPS = 8  # bisection steps (a factor resolved to 1/256)
+TYPE_LABELS = {"rack_pinion": "rack and pinion", "linear_motor": "linear motor"}
 
 
 def scaled(axis, key: str, factor: float):
@@ -67,7 +68,7 @@ def design_change(problem, closest: dict, spec):
             value = getattr(axis, key) * found[0]
             text = (
                 f"lower {label} to {value * scale:.3g} {unit} (from {getattr(axis, key) * scale:.3g}): "
-                f"verified, {found[1][0].replace('_', ' ')} {' / '.join(str(v) for v in found[1][1].values())} "
+                f"verified, {TYPE_LABELS[found[1][0]]} {' / '.join(str(v) for v in found[1][1].values())} "
                 "then meets every check and limit (the best design there)"
             )
             if best is None or found[0] > best[0]:

@@ -111,9 +111,17 @@ class DriveSpace:
     axes: tuple  # ((slot, ids), ...) in broadcast order
     p: dict
     side: Side
-    cost: object
-    guide_cost: object = 0.0  # the guides' share of ``cost`` (broadcast over the guide axis)
+    guide_cost: object = 0.0  # the guides' share of the cost (broadcast over the guide axis)
     drive_cost: object = 0.0  # the rest (a size-1 guide axis)
+
+    @property
+    def cost(self):
+        """The parts' price of every combination (a full array: the exhaustive method's)."""
+        return self.drive_cost + self.guide_cost
+
+    def cost_of(self, idx):
+        """The price at the multi-index ``idx`` (arrays of indices per axis)."""
+        return take(self.drive_cost, idx) + take(self.guide_cost, idx)
 
     @property
     def shape(self) -> tuple:
@@ -136,7 +144,14 @@ class DriveSpace:
         }
 
     def cost_at(self, flat: int) -> float:
-        return float(np.broadcast_to(self.cost, self.shape)[np.unravel_index(flat, self.shape)])
+        return float(self.cost_of(np.unravel_index(flat, self.shape)))
+
+
+def take(v, idx):
+    """The entries of a broadcastable array at the multi-index ``idx`` (a size-1 axis stays at 0)."""
+    if not isinstance(v, np.ndarray) or v.ndim == 0:
+        return v
+    return v[tuple(ix if v.shape[d] != 1 else 0 for d, ix in enumerate(idx))]
 
 
 def _shape(values, axis: int, ndim: int) -> np.ndarray:
@@ -200,7 +215,6 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
     drive_cost = side.sides * pinions * (
         R("pinion_price") + red("price") + mot("price")
     ) + rack_len * R("rack_price_per_length")
-    cost = drive_cost + g["guide_cost"]
     axes = (
         ("rack", tuple(r["id"] for r in racks)),
         ("reduction", tuple(reductions["id"])),
@@ -208,7 +222,7 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
         ("twin_pinion", tuple("yes" if t else "no" for t in choice.twin_pinion)),
         ("guide", tuple(guides["id"])),
     )
-    return DriveSpace("rack_pinion", axes, p, side, cost, g["guide_cost"], drive_cost)
+    return DriveSpace("rack_pinion", axes, p, side, g["guide_cost"], drive_cost)
 
 
 def lm_space(lms, guides, side: Side, choice) -> DriveSpace:
@@ -242,13 +256,12 @@ def lm_space(lms, guides, side: Side, choice) -> DriveSpace:
     drive_cost = side.sides * (
         forcers * L("forcer_price") + side.rail_length * L("track_price_per_length")
     )
-    cost = drive_cost + g["guide_cost"]
     axes = (
         ("linear_motor", tuple(r["id"] for r in lms)),
         ("forcers", tuple(str(i) for i in range(1, choice.max_forcers + 1))),
         ("guide", tuple(guides["id"])),
     )
-    return DriveSpace("linear_motor", axes, p, side, cost, g["guide_cost"], drive_cost)
+    return DriveSpace("linear_motor", axes, p, side, g["guide_cost"], drive_cost)
 
 
 def _guide_params(g, side: Side) -> dict:
