@@ -76,17 +76,15 @@ class _Designs:
     def get(self, ax, load: float, at: tuple):
         key = (ax.name, round(load, 9))
         if key not in self.cache:
-            sup = None if self.exhaustive or not monotone_in_load(ax) else self.superset.get(ax.name)
-            if sup is not None and load < sup[0]:
-                sup = None  # a superset holds for heavier loads only
-            d = axis_designs(ax, load, at, exhaustive=self.exhaustive, superset=None if sup is None else sup[1])
+            sup = None
+            if not self.exhaustive and monotone_in_load(ax):  # the feasible set of the heaviest lighter load
+                lighter = [x for x in self.superset.get(ax.name, []) if x[0] <= load]
+                sup = max(lighter, key=lambda x: x[0])[1] if lighter else None
+            d = axis_designs(ax, load, at, exhaustive=self.exhaustive, superset=sup)
             self.solves += 1
             self.combinations[ax.name] = max(self.combinations.get(ax.name, 0), d.combinations)
-            if not self.exhaustive and ax.name not in self.superset:
-                self.superset[ax.name] = (load, feasible_sets(d))
-            elif not self.exhaustive and load >= self.superset[ax.name][0]:
-                # the loads come lightest first: the designs feasible here bound every heavier load, and fewer
-                self.superset[ax.name] = (load, feasible_sets(d))
+            if not self.exhaustive:
+                self.superset.setdefault(ax.name, []).append((load, feasible_sets(d)))
             self.cache[key] = d if self.exhaustive else pareto_designs(d)
         return self.cache[key]
 
@@ -111,6 +109,55 @@ def _within_limits(machine: Machine, J: dict, cmax) -> np.ndarray:
         f = np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
         ok &= f >= machine.min_frequency * (1 - 1e-9)
     return ok
+
+
+def _best_below(machine: Machine, chain: list, designs: _Designs, i: int) -> dict | None:
+    """What the axes under ``chain[i]`` offer at best, each in every criterion on its own: its designs at the
+    lightest load it could carry (the own moving masses above it, no parts: a superset of its designs at any real
+    load, each at least as stiff), the least cost, compliance per direction and moving mass.  None: an axis
+    below is not monotone in its load (no such bound)."""
+    out = {"cost": 0.0, "c": np.zeros(3), "mm": 0.0}
+    for j in range(i):
+        ax = chain[j]
+        if not monotone_in_load(ax):
+            return None
+        load = sum(_own(a) for a in chain[j + 1:])
+        at = chain[j + 1].carried_at
+        D = designs.get(ax, load, at)
+        if not len(D):
+            return {"cost": np.inf, "c": np.full(3, np.inf), "mm": np.inf}
+        out["cost"] += D.cost.min()
+        out["c"] += (1.0 / link_with_frame(ax, D.k)).min(0)
+        out["mm"] += _own(ax) + D.moving_parts.min()
+    return out
+
+
+def _own(ax) -> float:
+    a = ax.problem.axis
+    return a.moving_mass + (a.twin_drive.cross_mass if a.twin_drive is not None else 0.0)
+
+
+def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict) -> float:
+    """An upper bound of the machine objective (larger is better) of the joined offers ``J`` (rows ``ok``)
+    completed by the axes below at their best (``rest``) and the other chain's offers ``other``: each criterion
+    at its best on its own (cost, compliance per direction, moving mass), the frequency that of the sub-chain on
+    a rigid base.  +inf: no bound."""
+    if rest is None:
+        return np.inf
+    J = {k: v[ok] for k, v in J.items()}
+    cost = J["cost"] + rest["cost"] + other["cost"].min()
+    c = J["c"] + rest["c"] + other["c"].min(0)
+    mm = J["mm"] + rest["mm"] + other["mm"].min()
+    f = (np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
+         if _reads_frequency(machine) else np.full(len(cost), np.inf))
+    f = np.minimum(f, other["f"].max())
+    kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
+    good = (cost <= machine.max_cost * (1 + 1e-9)) & (mm <= machine.max_moving_mass * (1 + 1e-9))
+    good &= ((1.0 / c) >= kmin * (1 - 1e-9)).all(-1)
+    if machine.min_frequency > 0:
+        good &= f >= machine.min_frequency * (1 - 1e-9)
+    obj = _objective(machine, cost, c, f, mm)
+    return float(obj[good].max()) if good.any() else -np.inf
 
 
 def _tol(v: float) -> float:
@@ -140,10 +187,11 @@ def _completion(machine: Machine, J: dict, other: dict) -> np.ndarray:
 
 
 def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool, kept: dict,
-                   other: dict | None = None, incumbent: list | None = None) -> dict:
+                   other: dict | None = None, incumbent: list | None = None, below=None) -> dict:
     """The offers of one chain on the frame (arrays, one row per offer).  ``other``: the other chain's offers
     (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (a list
-    of one value, the best machine objective found, larger is better)."""
+    of one value, the best machine objective found, larger is better); ``below(i)``: the best each axis under
+    chain[i] can offer (:func:`_best_below`), for the bound of the loads of the axes above the frame's."""
     freq = _reads_frequency(machine)
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     cmax = np.where(kmin > 0, 1.0 / np.where(kmin > 0, kmin, 1.0), np.inf)
@@ -164,9 +212,13 @@ def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool
             sel = np.nonzero(O["M"] == L)[0]
             if prune and monotone_in_load(ax) and len(sel) and not bound:
                 # the same with the machine limits only: no design at the lightest load meets them with these
-                # offers -> none at this load does
+                # offers -> none at this load does; and with the incumbent, each axis below at its best
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
-                if not _within_limits(machine, J, cmax).any():
+                ok = _within_limits(machine, J, cmax)
+                if not ok.any():
+                    continue
+                if below is not None and np.isfinite(incumbent[0]) and \
+                        _optimistic(machine, J, ok, below(i), other) < incumbent[0] - _tol(incumbent[0]):
                     continue
             if bound and len(sel) and np.isfinite(incumbent[0]):
                 # what this load's offers could reach with the axis's designs at the lightest load (a superset,
@@ -264,8 +316,23 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
     if rest is None or not len(rest["refs"]):
         rest = None
     last = order[-1]
+    incumbent = [-np.inf]
+    below = None
+    if not exhaustive and rest is not None:
+        # the designer's sizing first: where it meets every limit, its value is the first incumbent
+        seq = sequential(machine, designs)
+        if seq is not None and seq.feasible:
+            v = seq.value(machine.objective)
+            incumbent[0] = -v if machine.objective in ("cost", "moving_mass") else v
+        chain = branches[last]
+        cache: dict = {}
+
+        def below(i):
+            if i not in cache:
+                cache[i] = _best_below(machine, chain, designs, i)
+            return cache[i]
     offers[last] = _branch_offers(machine, branches[last], designs, not exhaustive, kept, other=rest,
-                                  incumbent=[-np.inf])
+                                  incumbent=incumbent, below=below)
     best = _combine(machine, branches, offers)
     notes = [f"exact Pareto sets: below {ch[i - 1].name} offers of different carried mass are not compared "
              f"({ch[i - 1].name} is counterbalanced: more carried mass may help it); every load screened in full"

@@ -24,3 +24,20 @@ def test_default_equals_every_combination_of_every_axis(seed, tmp_path):
     # never worse than the sequential sizing where that one meets every limit
     if a.sequential is not None and a.sequential.feasible:
         assert a.gain >= -1e-9 * max(1.0, abs(va))
+
+
+def test_the_random_machines_cover_counterweights_twin_drives_and_the_non_monotone_case(tmp_path):
+    from axisopt.machine.offers import monotone_in_load
+
+    seen = {"counterweight": 0, "below a counterweighted axis": 0, "twin drive": 0, "two chains": 0}
+    for seed in SEEDS:
+        path = tmp_path / f"m{seed}.yaml"
+        path.write_text(random_machine(seed))
+        m = load_machine(path)
+        chains = m.branches()
+        seen["counterweight"] += any(a.problem.axis.counterbalance is not None for a in m.axes)
+        seen["below a counterweighted axis"] += any(not monotone_in_load(c[i - 1]) for c in chains
+                                                    for i in range(1, len(c)))
+        seen["twin drive"] += any(a.problem.axis.twin_drive is not None for a in m.axes)
+        seen["two chains"] += len(chains) > 1
+    assert min(seen.values()) >= 15, seen
