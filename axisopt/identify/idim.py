@@ -373,6 +373,7 @@ def diagnose_time_files(paths, *, plant, gain: str | None = None, candidates=Non
             raise InputError(f"a {r.quantity} record cannot validate the {recs[0].quantity} record {recs[0].name}",
                              source=r.source)
     to_q = 1.0 if recs[0].quantity == "force" else 2.0 * math.pi / plant.lead
-    design = {"name": plant.name, "lead": plant.lead, "efficiency": plant.efficiency}
+    design = {"name": plant.name, "lead": plant.lead, "efficiency": plant.efficiency,
+              "reduction": plant.reduction}
     return diagnose_time(recs, stroke_q=plant.stroke * to_q, candidates=candidates, max_effects=max_effects,
                          design=design, lead_q=plant.lead * to_q)

@@ -43,6 +43,7 @@ class Plant:
     youngs_modulus: float = E_STEEL
     c_series: float = 0.0  # position-independent compliance besides bearings and nut: bracket, coupling [m/N]
     torsion: bool = False  # screw torsion through the lead in the chain (as the axis model)
+    reduction: float = 1.0  # motor turns per screw turn (a belt or gear between motor and screw)
     name: str = "design"
 
     @property
@@ -100,5 +101,6 @@ def plant_from_design(design) -> Plant:
         efficiency=SCREW_EFFICIENCY,
         c_series=float(out["c_bracket"]) + 1.0 / float(out["k_coupling"]),
         torsion=True,
+        reduction=float(p["reduction_ratio"]),
         name=design.name,
     )

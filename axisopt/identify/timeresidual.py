@@ -74,6 +74,7 @@ def noise_floor(rows: Rows, est: Estimate | None = None) -> float:
     return max(white, coloured) if coloured is not None else white
 
 
+SHORT_PERIODS = 16  # periods down to the lead / 16 are scanned (a belt tooth or motor cogging through a reduction)
 AR_RHO = np.linspace(-0.5, 0.98, 149)  # the grid of the AR(1) coefficient fitted to the noise's spectrum
 
 
@@ -183,7 +184,7 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
         q_rows = np.concatenate([rw.sig["q"][rw.keep] for rw in runs])
         s_rows = np.concatenate([np.sign(rw.sig["v"][rw.keep]) for rw in runs])
         hi = max(float(np.ptp(q_rows)) / 3.0, proc.lead_q)
-        probes.append(rs.period_scan(r, q_rows, s_rows, periodic, proc.lead_q / 4.0, hi, W, neff,
+        probes.append(rs.period_scan(r, q_rows, s_rows, periodic, proc.lead_q / SHORT_PERIODS, hi, W, neff,
                                      fixed=[proc.lead_q / k for k in RIPPLE_HARMONICS]))
     if kinds is not None:
         return Unexplained(probes, float(np.sqrt(np.mean(r**2))), 0.0, rho, len(r))

@@ -254,6 +254,32 @@ def _why_none(diag: TimeDiagnosis) -> str:
     return "; ".join(out)
 
 
+def motor_orders(diag: TimeDiagnosis, period_mm: float) -> str:
+    """A period in table travel stated in orders: per mm, per screw turn (the lead over the period) and per motor
+    turn (through the design's reduction, motor turns per screw turn), with the sources an integer order
+    names: motor cogging or torque ripple (an integer order of the motor turn, the slot count or a multiple of
+    the pole pairs), the ball circulation or the lead (an order of the screw turn), a belt's tooth mesh (the
+    pulley's tooth count per pulley turn)."""
+    lead_mm = diag.design.get("lead", 0.0) * 1e3
+    if not (period_mm > 0 and lead_mm > 0):
+        return ""
+    red = diag.design.get("reduction", 1.0) or 1.0
+    per_screw = lead_mm / period_mm
+    per_motor = per_screw / red
+    text = (f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.3g} of the screw turn, order {per_motor:.3g} "
+            f"of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)")
+    near = [(name, o) for name, o in (("motor", per_motor), ("screw", per_screw))
+            if o >= 0.9 and abs(o - round(o)) <= 0.03 + 0.005 * o]
+    for name, o in near:
+        k = int(round(o))
+        if name == "motor":
+            text += (f"; order {k} of the motor turn: motor cogging or torque ripple ({k} slots, or a multiple "
+                     "of the pole pairs), or a belt's tooth mesh on the motor pulley if it has " + f"{k} teeth")
+        else:
+            text += f"; order {k} of the screw turn: the lead or the ball circulation"
+    return text
+
+
 def _mm(diag: TimeDiagnosis, q_len: float) -> float:
     """A length in the record's coordinate as table travel [mm]."""
     if diag.quantity == "force":
@@ -351,8 +377,9 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         name = "the lead" if k == 1 else f"the lead / {k}"
         kind = ("a friction (changes sign with the direction)" if d.get("friction_share", 0) > 0.5 else
                 "a force (the same sign both ways)")
-        what = f"periodic in position with period {P:.1f} mm" + (f" = {name}" if at_lead else
+        what = f"periodic in position with period {P:.3g} mm" + (f" = {name}" if at_lead else
                                                                   f" (the lead is {lead_mm:.3g} mm)") + f", {kind}"
+        what += motor_orders(diag, P)
         key = "position_periodic_lead" if at_lead else "position_periodic"
     elif p.kind == "velocity":
         shape = d.get("shape", "")
@@ -382,7 +409,7 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         else:
             what = (f"holds a line at {f:.4g} Hz (amplitude {a:.3g} {unit}) seen only at speeds near "
                     f"{_mm(diag, d['speed']):.3g} mm/s: tied to speed, a period in position of "
-                    f"{_mm(diag, d['period']):.3g} mm")
+                    f"{_mm(diag, d['period']):.3g} mm" + motor_orders(diag, _mm(diag, d["period"])))
             key = "line_speed"
     elif p.kind == "spot":
         x0, w = _mm(diag, d["x0"]), _mm(diag, d["width"])

@@ -86,6 +86,31 @@ def _viscous_t_column(sig, proc, shape):
     return sig["v"] * (np.exp(-shape["beta"] * (sig["temperature"] - T_REF)) - 1.0)
 
 
+def _beta_search(rows, r0, rss) -> dict:
+    """beta of the pure law F_v(T) = F_v(20 degC) exp(-beta (T - 20 degC)): the baseline's viscous column
+    replaced by v exp(-beta (T - 20 degC)) and the RSS of that fit minimised over beta (log grid, then golden
+    section).  A free constant viscous part beside the exponential trades with beta over the few tens of
+    kelvin of a warm-up; the joint fit then frees it at this beta."""
+    from ..estimators import lstsq
+    from ..timemodel import matrix
+    from .disturbance import golden
+
+    W = matrix(rows, ("M", "Fc", "offset"), {})
+    y = rows.y
+
+    def cost(logb):
+        col = matrix(rows, ("Fvt",), {"beta": math.exp(logb)})[:, 0] + matrix(rows, ("Fv",), {})[:, 0]
+        A = np.column_stack([W, col])
+        e = y - A @ lstsq(A, y)
+        return float(e @ e)
+
+    grid = np.linspace(math.log(BETA_RANGE[0]), math.log(BETA_RANGE[1]), 16)
+    vals = [cost(g) for g in grid]
+    k = int(np.argmin(vals))
+    lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
+    return {"beta": math.exp(golden(cost, lo, hi, 20))}
+
+
 def _coulomb_t_column(sig, proc, shape):
     return np.sign(sig["v"]) * (sig["temperature"] - T_REF)
 
@@ -186,8 +211,8 @@ class ViscousTemperature(_TemperatureEffect):
     time = TimeModel(
         "viscous friction follows the lubricant's viscosity with temperature: Fv(T) = Fvt exp(-beta (T - 20 C))",
         (Term("Fvt", "viscous friction at 20 degC", "damping", _viscous_t_column),),
-        shape=Shape("beta", "viscosity-temperature coefficient (1-D search)", "per_kelvin",
-                    bounds=lambda sig, proc: BETA_RANGE),
+        shape=Shape("beta", "viscosity-temperature coefficient (1-D search of the pure law)", "per_kelvin",
+                    search=_beta_search),
         skip=_needs_temperature,
         implausible=_viscous_t_implausible,
         evidence="friction curves at two temperatures (cold and warm): the slope with speed changes, the "
