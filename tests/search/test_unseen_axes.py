@@ -154,3 +154,23 @@ def test_unit_slip_30_m_s_gets_lower_max_speed(tmp_path):
     g.write_text(_apply(f.read_text(), [c]))
     again = solve(load_problem(g), sensitivities=False)
     assert again.best is not None and again.status == "optimal"
+
+
+# the ten generated problems (bench/axis_generator.py, seed 0) that took the longest CPU time in
+# bench/bench_generalize.py on the base commit (bd0fcfd), as the generator then wrote them: each answered with its
+# status, proven, and an explanation whose relaxations keep every vendor margin at 0.95 or more
+SLOWEST = ("gen-0-2-vmc_z", "gen-0-3-lathe_x", "gen-0-4-lathe_z", "gen-0-36-lathe_x", "gen-0-37-lathe_z",
+           "gen-0-38-gantry_twin", "gen-0-39-vertical_cb", "gen-0-41-laser", "gen-0-42-router", "gen-0-53-router")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", SLOWEST)
+def test_slowest_generated_problems_answer(name):
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+
+    res = solve(load_problem(HERE / f"{name}.yaml"), sensitivities=False)
+    assert res.status == "infeasible" and res.certificate.proven
+    inf = res.infeasibility
+    assert inf.closest or inf.unmeetable
+    assert all(r.relaxed_to >= 0.95 for r in inf.relax if r.key.startswith("limits.margins."))
