@@ -6,7 +6,8 @@
 Every case is one shipped input (design, problem, study with a tiny sweep, saved calibration, diagnose data
 CSV, user catalog directory, compare pair, or command-line flags) with a mutation, or one of the hardening
 cases of issue 24 (FIFO and device paths, '-', oversized or degenerate data, ...), from
-``tests/core/fuzz_inputs.py``, or a realistic axis of ``bench/axis_generator.py`` (kind ``generated``), run as a subprocess ``python -m axisopt ...`` in its own empty directory with a
+``tests/core/fuzz_inputs.py``, or a realistic axis of ``bench/axis_generator.py`` (kind ``generated``),
+run as a subprocess ``python -m axisopt ...`` in its own empty directory with a
 time limit.  Each outcome is classified against the CLI contract:
 
   ok                exit 0, --json output finite and without negative masses, stiffnesses, lengths
