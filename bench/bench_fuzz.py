@@ -6,7 +6,8 @@
 Every case is one shipped input (design, problem, study with a tiny sweep, saved calibration, diagnose data
 CSV, user catalog directory, compare pair, or command-line flags) with a mutation, or one of the hardening
 cases of issue 24 (FIFO and device paths, '-', oversized or degenerate data, ...), from
-``tests/core/fuzz_inputs.py``, run as a subprocess ``python -m axisopt ...`` in its own empty directory with a
+``tests/core/fuzz_inputs.py``, or a realistic axis of ``bench/axis_generator.py`` (kind ``generated``),
+run as a subprocess ``python -m axisopt ...`` in its own empty directory with a
 time limit.  Each outcome is classified against the CLI contract:
 
   ok                exit 0, --json output finite and without negative masses, stiffnesses, lengths
@@ -41,11 +42,29 @@ sys.path.insert(0, str(ROOT / "tests" / "core"))
 
 import fuzz_inputs as F  # noqa: E402
 
+sys.path.insert(0, str(ROOT / "bench"))
+import axis_generator  # noqa: E402
+
+# besides the shipped inputs' mutations: a realistic axis of bench/axis_generator.py (its own seed and index),
+# solved as a user solves it (sensitivities and advice on), sometimes with one of the flags a user adds
+GENERATED = "generated"
+KINDS = F.KINDS + (GENERATED,)
+
+
+def generated_case(rnd: random.Random, index: int) -> F.Case:
+    gen = axis_generator.make(rnd.randrange(1_000_000), index)
+    extra = rnd.choice(([], [], ["--top", "3"], ["--time-limit", "1"], ["--no-sensitivity"],
+                        ["--method", "exhaustive", "--time-limit", "20"]))
+    return F.Case(GENERATED, f"{gen.name}{' slip ' + gen.slip if gen.slip else ''}",
+                  ["solve", "axis.yaml", "--json", "out.json", *extra], files={"axis.yaml": gen.text.encode()})
+
 
 def make(seed: int, index: int, kinds) -> F.Case:
     rnd = random.Random(seed * 1_000_003 + index)
     ch = F.RandomChooser(rnd)
     kind = kinds[index % len(kinds)]
+    if kind == GENERATED:
+        return generated_case(rnd, index)
     if kind == "flags" and rnd.random() < 0.02:
         return F.fifo_case()
     case = F.make_case(ch, kind, fast=False)
@@ -89,16 +108,16 @@ def main(argv=None) -> int:
     ap.add_argument("--seed", type=int, default=0, help="seed of the run (default 0)")
     ap.add_argument("--workers", type=int, default=2, help="parallel subprocesses (default 2)")
     ap.add_argument("--timeout", type=float, default=60.0, help="seconds per case before it counts as a hang")
-    ap.add_argument("--kinds", default=",".join(F.KINDS), help=f"input kinds to fuzz (default {','.join(F.KINDS)})")
+    ap.add_argument("--kinds", default=",".join(KINDS), help=f"input kinds to fuzz (default {','.join(KINDS)})")
     ap.add_argument("--details", metavar="FILE", help="write every bad case (command, mutation, stderr) to FILE")
     ap.add_argument("--replay", type=int, metavar="INDEX", help="only write case INDEX's files and print it")
     ap.add_argument("--keep", metavar="DIR", help="with --replay: directory for the case's files")
     ap.add_argument("--run", action="store_true", help="with --replay: also run the case and show its outcome")
     args = ap.parse_args(argv)
     kinds = tuple(k.strip() for k in args.kinds.split(",") if k.strip())
-    bad_kind = [k for k in kinds if k not in F.KINDS]
+    bad_kind = [k for k in kinds if k not in KINDS]
     if bad_kind or not kinds:
-        ap.error(f"unknown kind {bad_kind[0] if bad_kind else '(none)'}; kinds are {', '.join(F.KINDS)}")
+        ap.error(f"unknown kind {bad_kind[0] if bad_kind else '(none)'}; kinds are {', '.join(KINDS)}")
     if args.cases < 1 or args.workers < 1 or args.timeout <= 0:
         ap.error("--cases and --workers must be at least 1, --timeout positive")
 

@@ -271,7 +271,8 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
     problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
     stats.pruned_by_dominance = space.pruned_by_dominance
     if not np.isfinite(ex.objective).any() and stats.timed_out:
-        return SolveResult(TIME_LIMIT, method, problem.name, spec.label, spec.unit, None, [], Certificate.of(stats),
+        return SolveResult(TIME_LIMIT, method, problem.name, spec.label, spec.unit, None, [],
+                           replace(Certificate.of(stats), proven=False),
                            time.perf_counter() - t0, message="the time limit came before any design was found: not "
                            "proven infeasible (a longer --time-limit searches on)")
     if not np.isfinite(ex.objective).any():

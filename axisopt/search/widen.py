@@ -68,13 +68,8 @@ def _slots_left(pairs: tuple, slots) -> tuple:
     return tuple((s, ids) for s, ids in pairs if s not in slots)
 
 
-COUPLING_CHECKS = frozenset({"coupling_torque", "coupling_speed"})
-
-
-def _widen(problem, group: str, misses=()):
-    """The problem's restrictions with ``group``'s filters widened (the same object when it has none set).  The
-    drive group keeps the coupling filters unless the closest designs (``misses``) miss a coupling check: every
-    coupling times every motor is the largest drive space, and the one a widened search spends its time on."""
+def _widen(problem, group: str):
+    """The problem's restrictions with ``group``'s filters widened (the same object when it has none set)."""
     r = problem.restrictions
     if group == "mounting":
         stronger = _stronger(problem.mountings)
@@ -82,11 +77,8 @@ def _widen(problem, group: str, misses=()):
     if group == "drive":
         if not r.drive:
             return r
-        couplings = any(COUPLING_CHECKS & d.keys() for d in misses)
-        filters = DRIVE_FILTERS if couplings else tuple(f for f in DRIVE_FILTERS if f != "coupling_series")
-        slots = DRIVE_SLOTS if couplings else ("motor",)
-        return replace(r, **dict.fromkeys(filters),
-                       require=_slots_left(r.require, slots), exclude=_slots_left(r.exclude, slots))
+        return replace(r, **dict.fromkeys(DRIVE_FILTERS),
+                       require=_slots_left(r.require, DRIVE_SLOTS), exclude=_slots_left(r.exclude, DRIVE_SLOTS))
     grades = r.screw_grades if r.screw_grades is None else tuple(grade_table().names)
     return replace(r, **dict.fromkeys(MECH_FILTERS), screw_grades=grades,
                    require=_slots_left(r.require, MECH_SLOTS), exclude=_slots_left(r.exclude, MECH_SLOTS))
@@ -252,10 +244,10 @@ def widened(problem, misses, budget: int) -> tuple:
     it taken when there is one (its edits are fewer)."""
     tries, every = [], problem.restrictions
     for group in _groups(misses):
-        r = _widen(problem, group, misses)
+        r = _widen(problem, group)
         if r != problem.restrictions:
             tries.append(r)
-            every = _widen(replace(problem, restrictions=every), group, misses)
+            every = _widen(replace(problem, restrictions=every), group)
     # the group the misses call for most, then every group at once (a superset of each group alone: a design
     # of any one group is in it, and one may need parts of two groups); the narrowing finds the fewer edits
     tries = tries[:1] + ([every] if len(tries) > 1 else [])
