@@ -78,4 +78,4 @@ def test_the_budget_names_its_grade(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "screw HIWIN-G-25x5-b3p175 grade C3" in out
     assert "lead error, grade C3                            20.0" in out  # THK A-678 T.1: 12 + 8 um over 300 mm
-    assert "total, arithmetic worst case" in out and "repeatability (estimate)" in out
+    assert "total, arithmetic worst case" in out and "repeatability (ISO 230-2)" in out
