@@ -265,13 +265,19 @@ IBC_SPLIT = {(1, 1): (2.83, 1.00, 0.67, 1.00, 0.33, 1.0), (2, 1): (5.66, 0.84, 0
 IBC_SET_PRELOAD = {(1, 1): 1.0, (2, 1): 1.36, (2, 2): 1.68, (3, 1): 1.57}
 
 
+LIFT_SET_PRELOAD = {(1, 1): 1.0, (2, 1): 1.36, (3, 1): 1.57, (2, 2): 2.0}
+
+
 def bearing_lift_off(brg, f_max, pretension):
     """Lift-off of the support set by IBC Table 2.2 (unloading at Fae > X Fv, X of the bearings loaded against
     the opposite ones), each direction: the static pretension with the largest axial force on the rows facing it,
     the largest axial force alone on the others (a warm screw loses its pretension); the set mounted the way
     round that gives the larger margin.  Returns (available, needed, margin, note) [N]."""
     n1, n2 = ROWS[brg["arrangement"]]
-    fv = brg["preload"] / IBC_SET_PRELOAD[(max(n1, n2), min(n1, n2))]
+    # the set's preload over the DB pair's for the unloading point: NSK p. 168 prints a quadruplex (2:2) at
+    # 1.98 x its duplex, a triplex (2:1) at 1.37 x (IBC's single bearing of 2:1 / 3:1: 1.36 / 1.57 Fv); the
+    # 1.68 of IBC_SET_PRELOAD is the 2:2 set's per-bearing load factor (2 x 0.84) the life reads, not its preload
+    fv = brg["preload"] / LIFT_SET_PRELOAD[(max(n1, n2), min(n1, n2))]
     best = None
     for a, b in ((n1, n2), (n2, n1)):  # a: rows facing the pretension
         push, back = IBC_SPLIT[(a, b)][0] * fv, IBC_SPLIT[(b, a)][0] * fv
