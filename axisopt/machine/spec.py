@@ -155,6 +155,9 @@ def load_machine(path) -> Machine:
     """Read a machine YAML; every error names the file and key (InputError)."""
     path = Path(path)
     root = Section(read_yaml(path), str(path), spec=MACHINE_FILE_SPEC)
+    if root.has("axis") and not root.has("axes"):
+        raise InputError("an axis's problem or design, not a machine (it has 'axis', no 'axes'): size it with "
+                         "`axisopt solve`", source=str(path))
     return read_machine(root, path)
 
 
