@@ -34,6 +34,18 @@ def fmt(x, unit: str = "") -> str:
     return f"{text} {unit}" if unit else text
 
 
+def fmt_objective(x, unit: str = "") -> str:
+    """An objective in a repr with the digits the solve text shows (``best: 186.085 N/um``): designs a few
+    thousandths apart read apart, not all as '186'; '-' for a missing or non-finite value."""
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    if not math.isfinite(v):
+        return "-"
+    return f"{v:,.3f}" + (f" {unit}" if unit else "")
+
+
 def fmt_column(values) -> list[str]:
     """A table column as an engineer writes it: the numbers with one number of decimals (three significant
     digits for the smallest, none from 100 up, thousands separators), more decimals where that would write

@@ -10,7 +10,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..display import fmt, frame, html_fields, html_table, one_line
+from ..display import fmt, fmt_objective, frame, html_fields, html_table, one_line
 from ..problem import GOALS, RESULT_GOALS
 
 
@@ -186,7 +186,7 @@ class Candidate:
     def __repr__(self) -> str:
         misses = ", ".join(f"{k} by {fmt(100 * v)} %" for k, v in self.misses.items())
         return one_line("Candidate", f"rank {self.rank}, {self.mounting} {' / '.join(self.parts().values())}", {
-            "objective": _objective_text(self.objective), "preload": fmt(self.nut_preload, "N"),
+            "objective": fmt_objective(self.objective), "preload": fmt(self.nut_preload, "N"),
             "min stiffness": fmt(self.min_stiffness, "N/um"), "1st frequency": fmt(self.min_frequency, "Hz"),
             "cost": fmt(self.cost, "EUR"), "moving mass": fmt(self.moving_mass, "kg"),
             "drag": fmt(self.drag_torque, "N.m"), "nut life": fmt(self.life_h, "h"), "misses": misses})
@@ -550,7 +550,7 @@ class SolveResult:
         elif self.best is not None:
             b = self.best
             unit = self.objective_unit if self.objective_unit != "-" else ""
-            fields[self.objective_label] = _objective_text(b.objective, unit)
+            fields[self.objective_label] = fmt_objective(b.objective, unit)
             fields["best"] = f"{b.mounting} {' / '.join(b.parts().values())}, preload {fmt(b.nut_preload, 'N')}"
             fields["min stiffness"] = fmt(b.min_stiffness, "N/um")
             fields["1st frequency"] = fmt(b.min_frequency, "Hz")
@@ -579,18 +579,6 @@ class SolveResult:
                             "method": self.method, "proven": self.certificate.proven,
                             "time [s]": round(self.time, 2)}, "SolveResult") + \
             html_table([c.row(None if self.best is None else self.objective_unit) for c in self.designs()], head)
-
-
-def _objective_text(x, unit: str = "") -> str:
-    """An objective in a repr with the digits the solve text shows (``best: 186.085 N/um``): designs a few
-    thousandths apart read apart, not all as '186'."""
-    try:
-        v = float(x)
-    except (TypeError, ValueError):
-        return str(x)
-    if not math.isfinite(v):
-        return "-"
-    return f"{v:,.3f}" + (f" {unit}" if unit else "")
 
 
 def _clean(v):
