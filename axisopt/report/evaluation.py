@@ -100,10 +100,10 @@ def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
         margin = "n/a" if r["margin"] is None else f"{r['margin']:.2f}"
         lines.append(f"  {label:<48}{have:>15}{need:>15}{margin:>8}  {'pass' if r['pass'] else 'FAIL'}"
                      + ("*" if "allowed" in r else ""))
+    lines.extend(textwrap.wrap("  rules: " + "; ".join(rule_notes(ev)), WIDTH, subsequent_indent="    "))
     note = allowed_note(rows)
     if note:
         lines.extend(textwrap.wrap(note, WIDTH, initial_indent="  ", subsequent_indent="    "))
-    lines.extend(textwrap.wrap("  rules: " + "; ".join(rule_notes(ev)), WIDTH, subsequent_indent="    "))
     return lines
 
 
