@@ -107,10 +107,10 @@ def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
             have, verdict = "n/a", "does not apply"
             need = "-" if r["check"] in NOT_LOADED else need
         lines.append(f"  {label:<48}{have:>15}{need:>15}{margin:>8}  {verdict}" + ("*" if "allowed" in r else ""))
+    lines.extend(textwrap.wrap("  rules: " + "; ".join(rule_notes(ev)), WIDTH, subsequent_indent="    "))
     note = allowed_note(rows)
     if note:
         lines.extend(textwrap.wrap(note, WIDTH, initial_indent="  ", subsequent_indent="    "))
-    lines.extend(textwrap.wrap("  rules: " + "; ".join(rule_notes(ev)), WIDTH, subsequent_indent="    "))
     return lines
 
 

@@ -15,7 +15,7 @@ from axisopt.cli import main
 ROOT = Path(__file__).resolve().parents[2]
 VMC = (ROOT / "problems" / "vmc_x_design.yaml").read_text(encoding="utf-8")
 HEADER = (SHIPPED_DIR / "reductions.csv").read_text(encoding="utf-8").splitlines()[0]
-GOOD = "U-1,User,belt 2:1,belt,2,95,1.5,40,80,20,5,6000,1.2,150,vendor,user row"
+GOOD = "U-1,User,belt 2:1,belt,2,95,1.5,40,80,,20,5,6000,1.2,150,vendor,user row"
 INLINE = """  reduction:
     id: U-2
     kind: belt
