@@ -377,8 +377,8 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         name = "the lead" if k == 1 else f"the lead / {k}"
         kind = ("a friction (changes sign with the direction)" if d.get("friction_share", 0) > 0.5 else
                 "a force (the same sign both ways)")
-        what = f"periodic in position with period {P:.3g} mm" + (f" = {name}" if at_lead else
-                                                                  f" (the lead is {lead_mm:.3g} mm)") + f", {kind}"
+        what = "periodic in position with period " + (f"{P:.1f}" if P >= 1.0 else f"{P:.3g}") + " mm"
+        what += (f" = {name}" if at_lead else f" (the lead is {lead_mm:.3g} mm)") + f", {kind}"
         what += motor_orders(diag, P)
         key = "position_periodic_lead" if at_lead else "position_periodic"
     elif p.kind == "velocity":
