@@ -269,7 +269,7 @@ def motor_orders(diag: TimeDiagnosis, period_mm: float) -> str:
     text = (f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.3g} of the screw turn, order {per_motor:.3g} "
             f"of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)")
     near = [(name, o) for name, o in (("motor", per_motor), ("screw", per_screw))
-            if o >= 0.9 and abs(o - round(o)) <= 0.03 + 0.005 * o]
+            if o >= 1.5 and abs(o - round(o)) <= 0.03 + 0.005 * o]
     for name, o in near:
         k = int(round(o))
         if name == "motor":
