@@ -269,7 +269,7 @@ def motor_orders(diag: TimeDiagnosis, period_mm: float) -> str:
     text = (f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.3g} of the screw turn, order {per_motor:.3g} "
             f"of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)")
     near = [(name, o) for name, o in (("motor", per_motor), ("screw", per_screw))
-            if o >= 0.9 and abs(o - round(o)) <= 0.03 + 0.005 * o]
+            if o >= 1.5 and abs(o - round(o)) <= 0.03 + 0.005 * o]
     for name, o in near:
         k = int(round(o))
         if name == "motor":
@@ -377,8 +377,8 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         name = "the lead" if k == 1 else f"the lead / {k}"
         kind = ("a friction (changes sign with the direction)" if d.get("friction_share", 0) > 0.5 else
                 "a force (the same sign both ways)")
-        what = f"periodic in position with period {P:.3g} mm" + (f" = {name}" if at_lead else
-                                                                  f" (the lead is {lead_mm:.3g} mm)") + f", {kind}"
+        what = "periodic in position with period " + (f"{P:.1f}" if P >= 1.0 else f"{P:.3g}") + " mm"
+        what += (f" = {name}" if at_lead else f" (the lead is {lead_mm:.3g} mm)") + f", {kind}"
         what += motor_orders(diag, P)
         key = "position_periodic_lead" if at_lead else "position_periodic"
     elif p.kind == "velocity":
