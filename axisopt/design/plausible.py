@@ -32,10 +32,10 @@ RANGES = (
     Range("mean_speed", 0.05 / 60.0, 200.0 / 60.0, "m/min", 60.0),
     Range("moving_mass", 0.5, 100e3, "kg", 1.0),
     Range("stroke", 5e-3, 30.0, "mm", 1e3),
-    Range("axial_load", 1.0, 500e3, "N", 1.0),
-    Range("mean_axial_load", 1.0, 500e3, "N", 1.0),
-    Range("normal_load", 1.0, 500e3, "N", 1.0),
-    Range("cross_load", 1.0, 500e3, "N", 1.0),
+    Range("axial_load", 0.0, 500e3, "N", 1.0),
+    Range("mean_axial_load", 0.0, 500e3, "N", 1.0),
+    Range("normal_load", 0.0, 500e3, "N", 1.0),
+    Range("cross_load", 0.0, 500e3, "N", 1.0),
     Range("required_life", 100 * 3600.0, 300e3 * 3600.0, "h", 1 / 3600.0),
 )
 # a duty cycle's largest process force (the same range as axis.axial_load)
