@@ -336,9 +336,9 @@ continuous:
   nut: HIWIN-R100-20T4-FDI
   bearing: NSK-80TAC03AM-DFF-M
   guide: HIWIN-HG30-ZA
-  motor: SGM7A-50A
+  motor: SGM7A-70A
   coupling: SFU-140SS-1000N
-  reduction: BK-TP010-MF-7    # Beckhoff planetary 7:1 (axisopt parts reductions)
+  reduction: BK-NPT035-MF-8   # Beckhoff planetary 8:1 (axisopt parts reductions)
   nut_preload: 13500 N
 """,
         sweep=("axis.moving_mass", "[1500 kg, 2000 kg, 2500 kg]", "workpiece masses"),
