@@ -11,9 +11,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from .catalog import STATUSES, USER_STATUS, Catalog
+from .catalog.columns import STATUSES, USER_STATUS
+from .catalog.grades import grade_table
+from .catalog.loading import Catalog
 from .design import MOUNTINGS, Axis
-from .grades import grade_table
 from .yamlio import Key, Section, Spec
 
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")

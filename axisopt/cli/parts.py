@@ -63,7 +63,7 @@ def register(sub) -> None:
 
 
 def _rows(table) -> list[dict]:
-    """The rows of a table as records (a list from :func:`axisopt.catalog.load_records`, or a pandas table)."""
+    """The rows of a table as records (a list from :func:`axisopt.catalog.loading.load_records`, or a pandas table)."""
     return table.to_dict("records") if hasattr(table, "to_dict") else list(table)
 
 
@@ -83,7 +83,7 @@ def _filtered(cat, kind, vendors, status):
 
 def counts(cat, vendors=None, status=None) -> list[dict]:
     """One record per (kind, vendor): rows by provenance."""
-    from ..catalog import STATUSES
+    from ..catalog.columns import STATUSES
 
     out = []
     for kind in KINDS:
@@ -156,7 +156,7 @@ def rows_table(rows, kind, screws=None) -> str:
 
 def rows_dicts(rows, kind) -> list[dict]:
     """Every column of the rows, in vendor units (the unit in the key), with vendor, provenance and source."""
-    from ..catalog import SCHEMA
+    from ..catalog.columns import SCHEMA
 
     out = []
     for r in _rows(rows):
@@ -223,7 +223,8 @@ def apply_filters(cat, kind, rows, args):
 
 
 def cmd_parts(args) -> int:
-    from ..catalog import STATUSES, load_records
+    from ..catalog.columns import STATUSES
+    from ..catalog.loading import load_records
 
     if args.status is not None and args.status not in STATUSES:
         raise InputError(f"'{args.status}' is not one of {', '.join(STATUSES)}", where="--status")

@@ -6,7 +6,7 @@ as a JSON Schema.
 
 from __future__ import annotations
 
-from ..catalog import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
+from ..catalog.columns import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
 from ..yamlio import Key, Spec
 from .axis import BRAKE_MODES, COUNTERBALANCE_KINDS, MOUNTINGS, ORIENTATIONS
 

@@ -2,7 +2,7 @@
 
 The optimizer goes wherever the model is optimistic, so a value the vendor does not list must never read
 better than the vendor values it stands in for, and a result that depends on one must say so.  Where a value
-is estimated is declared once with the part columns (:data:`axisopt.catalog.COLUMNS`: ``estimate`` for an
+is estimated is declared once with the part columns (:data:`axisopt.catalog.columns.COLUMNS`: ``estimate`` for an
 optional column left empty, ``estimated_when`` for the row statuses whose value is derived or illustrative,
 catalogs/SOURCES.md); :func:`design_estimates` lists them for one design and :func:`resting_on` finds, by
 perturbing each estimated parameter, the outputs (a binding limit, a check at its limit, the objective)
@@ -16,7 +16,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from ..catalog import COLUMNS, USER_STATUS
+from ..catalog.columns import COLUMNS, USER_STATUS
 from ..units import DISPLAY_UNITS, unit_factor
 from .params import PART_PARAMS, RULE_PARAMS, axis_params, positions
 from .response import axis_response

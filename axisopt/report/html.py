@@ -446,7 +446,7 @@ def _cell(v) -> str:
 def diagnose_page(diag, text: str, interactive: bool = False) -> Page:
     """A diagnosis: the verdict first (an effect named and confirmed on held-out data is the diagnosis's
     success: green, never red), then residuals against each factor before and after, and the text."""
-    from ..identify.diagnose import split_by_observation as _split
+    from ..identify.tables.diagnose import split_by_observation as _split
     from .diagnosis import diagnosis_dict, residual_figures
 
     d = diagnosis_dict(diag)

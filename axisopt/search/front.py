@@ -18,7 +18,15 @@ import numpy as np
 from ..errors import InputError
 from ..model.limits import LIMITS
 from ..problem import GOALS, Problem
-from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, Binding, Certificate, SolveResult
+from .result import (
+    INFEASIBLE,
+    OPTIMAL,
+    SOLVER_FAILED,
+    TIME_LIMIT,
+    Binding,
+    Certificate,
+    SolveResult,
+)
 from .task import Task
 
 if TYPE_CHECKING:
@@ -154,7 +162,7 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
             res.binding = limit_sensitivities(problem, res, space=task.space)
         if sensitivities and res.infeasibility is not None and method == "default":
             # the infeasible answer's what-if: an axis change the search verifies, before any limit is relaxed
-            from .advice import design_changes
+            from .infeasible.advice import design_changes
             res.infeasibility.design_changes = design_changes(problem, task.constraints, res.infeasibility,
                                                               space=task.space)
             res.time = time.perf_counter() - t0
@@ -212,8 +220,8 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
                            time.perf_counter() - t0, message="the time limit came before any design was found: not "
                            "proven infeasible (a longer --time-limit searches on)")
     if not np.isfinite(ex.objective).any():
-        from .explain import explain_infeasible
-        from .relax import missing_values, rank_relaxations
+        from .infeasible.explain import explain_infeasible
+        from .infeasible.relax import missing_values, rank_relaxations
 
         why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive",
                                  deadline=deadline)
@@ -224,7 +232,7 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
             message += ("; the explanation stopped at the time limit: the closest designs are those found by then "
                         "(a longer --time-limit explains further)")
         elif why.cut:
-            from .explain import MAX_OPENED
+            from .infeasible.explain import MAX_OPENED
 
             message += (f"; a limit no combination meets on its own makes every design miss: the explanation stopped "
                         f"after scoring {MAX_OPENED:,} combinations, and the closest designs (and what to relax for "

@@ -390,7 +390,7 @@ class DesignChange:
 
 @dataclass
 class Relaxation:
-    """A limit to relax so that a design becomes feasible (:func:`axisopt.search.relax.rank_relaxations`)."""
+    """A limit to relax so that a design becomes feasible (:func:`axisopt.search.infeasible.relax.rank_relaxations`)."""
 
     key: str  # where it sits in the problem file, e.g. 'limits.max_cost', 'limits.margins.critical_speed'
     label: str

@@ -14,7 +14,14 @@ import math
 import re
 from pathlib import Path
 
-from ..fileio import atomic_file, csv_safe, make_output_dir, save_figure, tidy_layout, write_text_atomic
+from ..fileio import (
+    atomic_file,
+    csv_safe,
+    make_output_dir,
+    save_figure,
+    tidy_layout,
+    write_text_atomic,
+)
 from ..problem import GOALS
 from .store import OK_STATUSES, CaseStore
 
@@ -228,7 +235,9 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
     its non-dominated cases joined within each machine (cases of different axis inputs are not joined)."""
     import matplotlib
 
-    from ..figure import Figure  # outside pyplot: no backend is chosen (a notebook's stays as it was)
+    from ..figure import (
+        Figure,  # outside pyplot: no backend is chosen (a notebook's stays as it was)
+    )
 
     files = {}
     ok = df[df["status"].isin(OK_STATUSES)]

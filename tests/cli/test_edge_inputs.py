@@ -6,7 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from axisopt.catalog import SHIPPED_DIR, load_catalogs
+from axisopt.catalog.columns import SHIPPED_DIR
+from axisopt.catalog.loading import load_catalogs
 from axisopt.cli import main
 from axisopt.units import parse_quantity, unit_factor
 

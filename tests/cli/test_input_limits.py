@@ -89,7 +89,7 @@ def test_catalog_cells_follow_the_row_rules(tmp_path, capsys, table, column, cel
     import csv
     import shutil
 
-    from axisopt.catalog import SHIPPED_DIR
+    from axisopt.catalog.columns import SHIPPED_DIR
 
     d = tmp_path / "cat"
     shutil.copytree(SHIPPED_DIR, d)

@@ -5,7 +5,8 @@ import shutil
 import numpy as np
 import pytest
 
-from axisopt.catalog import SHIPPED_DIR, load_catalogs
+from axisopt.catalog.columns import SHIPPED_DIR
+from axisopt.catalog.loading import load_catalogs
 from axisopt.errors import InputError
 
 N_PER_UM = 1e6

@@ -10,7 +10,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from axisopt.catalog import SHIPPED_DIR, load_catalogs
+from axisopt.catalog.columns import SHIPPED_DIR
+from axisopt.catalog.loading import load_catalogs
 
 N_PER_UM = 1e6
 SOURCES = (SHIPPED_DIR / "SOURCES.md").read_text(encoding="utf-8")

@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from axisopt.catalog import load_catalogs
+from axisopt.catalog.loading import load_catalogs
 
 pytestmark = pytest.mark.published
 

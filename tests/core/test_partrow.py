@@ -7,8 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from axisopt.catalog import SCHEMA, default_catalog
-from axisopt.partrow import table_of, vendor_units
+from axisopt.catalog.columns import SCHEMA
+from axisopt.catalog.loading import default_catalog
+from axisopt.catalog.partrow import table_of, vendor_units
 from axisopt.units import split_header
 
 CATALOGS = Path(__file__).resolve().parents[2] / "catalogs"

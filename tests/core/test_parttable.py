@@ -1,4 +1,4 @@
-"""The pandas-free part tables (axisopt.parttable) against the pandas tables they stand in for."""
+"""The pandas-free part tables (axisopt.catalog.parttable) against the pandas tables they stand in for."""
 
 import math
 import pickle
@@ -7,9 +7,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from axisopt.catalog import PROVENANCE, SCHEMA, TABLES, Catalog, load_catalogs, load_records
+from axisopt.catalog.columns import PROVENANCE, SCHEMA, TABLES
+from axisopt.catalog.loading import Catalog, load_catalogs, load_records
+from axisopt.catalog.parttable import PartTable, Row
 from axisopt.errors import InputError
-from axisopt.parttable import PartTable, Row
 
 
 @pytest.fixture(scope="module")

@@ -1,4 +1,4 @@
-"""Measured-table reader (:mod:`axisopt.identify.data`): units converted and the test type detected, strict
+"""Measured-table reader (:mod:`axisopt.identify.tables.data`): units converted and the test type detected, strict
 one-line errors naming file, line and column, excluded rows, the friction sign convention."""
 
 import re

@@ -1,10 +1,10 @@
-"""Diagnosis of reduced tables (:mod:`axisopt.identify.diagnose`): the CLI end to end, test types sharing
+"""Diagnosis of reduced tables (:mod:`axisopt.identify.tables.diagnose`): the CLI end to end, test types sharing
 parameters, null cases, implausible fits never accepted, quantities kept, friction tables (quadratic drag,
 effects that only help together, per-file gains, unidentifiable parameters).
 
 The friction tables are written here from a friction law of a few lines (sgn(v) levels, a Gaussian
 Stribeck rise, viscous, v|v| drag, a constant), apart from the library's measurement model; other data come
-from :func:`axisopt.identify.synth.simulate` with hidden effects of known size."""
+from :func:`axisopt.identify.tables.synth.simulate` with hidden effects of known size."""
 
 from __future__ import annotations
 
@@ -23,8 +23,8 @@ from axisopt.cli import main
 from axisopt.design import load_design
 from axisopt.identify import diagnose, plant_from_design, read_dataset
 from axisopt.identify.calibration import apply_calibration
-from axisopt.identify.data import Dataset
-from axisopt.identify.synth import simulate
+from axisopt.identify.tables.data import Dataset
+from axisopt.identify.tables.synth import simulate
 from axisopt.model import evaluate
 from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 

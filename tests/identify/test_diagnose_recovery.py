@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from axisopt.identify import diagnose
-from axisopt.identify.synth import simulate
+from axisopt.identify.tables.synth import simulate
 
 
 def stiffness_doe(temperature=False, cycles=1):

@@ -8,7 +8,7 @@ import pytest
 from axisopt.design import load_design
 from axisopt.identify import Effect, diagnose, library, plant_from_design, register_effect
 from axisopt.identify.effects import unregister_effect
-from axisopt.identify.synth import simulate
+from axisopt.identify.tables.synth import simulate
 
 DATA = Path(__file__).resolve().parents[2] / "problems" / "data"
 

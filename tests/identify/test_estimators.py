@@ -1,11 +1,11 @@
-"""Time-record estimators (:mod:`axisopt.identify.estimators`): without a reference column IV uses
+"""Time-record estimators (:mod:`axisopt.identify.records.estimators`): without a reference column IV uses
 delayed regressors as instruments."""
 
 import pytest
 from identify_helpers import assert_timesynth_axis, close, records
 
-from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import AxisTruth
+from axisopt.identify.records.idim import diagnose_time_files
+from axisopt.identify.records.synth import AxisTruth
 
 
 @pytest.fixture(scope="module")

@@ -1,7 +1,7 @@
-"""Time-record identification (:mod:`axisopt.identify.idim`, LS and IV): baseline recovery, hidden effects
+"""Time-record identification (:mod:`axisopt.identify.records.idim`, LS and IV): baseline recovery, hidden effects
 named with their parameters, null cases and decoys, implausible effects not accepted.
 
-The records come from :mod:`axisopt.identify.timesynth`, a closed-loop simulator written apart from the
+The records come from :mod:`axisopt.identify.records.synth`, a closed-loop simulator written apart from the
 identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 1 kHz)."""
 
 import math
@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 from identify_helpers import assert_timesynth_axis, baseline_truth, close, records
 
-from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import AxisTruth, LoopSettings
+from axisopt.identify.records.idim import diagnose_time_files
+from axisopt.identify.records.synth import AxisTruth, LoopSettings
 
 
 @pytest.fixture(scope="module")

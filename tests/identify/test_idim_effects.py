@@ -1,8 +1,8 @@
-"""Time-record effects at the edge of the library (:mod:`axisopt.identify.idim`): a ripple at the lead and a
+"""Time-record effects at the edge of the library (:mod:`axisopt.identify.records.idim`): a ripple at the lead and a
 quadratic drag named (not an extra mode, an asymmetry or a position friction), baseline plausibility and
 identifiability flags, the external-force column in the dynamics.
 
-The records come from :mod:`axisopt.identify.timesynth`, the closed-loop simulator written apart from the
+The records come from :mod:`axisopt.identify.records.synth`, the closed-loop simulator written apart from the
 identification (its ripple is ``sin(2 pi x / period + phase)`` on the simulated table, its drag ``c v|v|``);
 nothing here builds data with the columns of the time-record effects (:mod:`axisopt.identify.effects`)."""
 
@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 from identify_helpers import LEAD, records, truth_for, unexplained
 
-from axisopt.identify.estimators import Estimate
-from axisopt.identify.idim import baseline_flags, diagnose_time_files
-from axisopt.identify.timesynth import AxisTruth, simulate_axis
+from axisopt.identify.records.estimators import Estimate
+from axisopt.identify.records.idim import baseline_flags, diagnose_time_files
+from axisopt.identify.records.synth import AxisTruth, simulate_axis
 from axisopt.report.timediag import time_diagnosis_text
 
 
@@ -94,7 +94,7 @@ def test_external_force_column_is_used_in_the_dynamics(tmp_path, plant):
     simulate_axis(truth, duration=12.0, seed=7).write_csv(bare)
     without = diagnose_time_files([bare], plant=plant, candidates=["stribeck"])
     with_col = diagnose_time_files(paths[:1], plant=plant, candidates=["stribeck"])
-    from axisopt.identify.estimators import rel_error
+    from axisopt.identify.records.estimators import rel_error
 
     assert rel_error(without.estimation, without.baseline_ls) > 3 * rel_error(with_col.estimation,
                                                                                  with_col.baseline_ls)

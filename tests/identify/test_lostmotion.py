@@ -1,7 +1,7 @@
-"""Lost motion (backlash) between motor and table in time records (:mod:`axisopt.identify.lostmotion`): hidden in
-records simulated by identify/timesynth (a motor-side mass tied to the table by a spring with a dead zone, closed
-loop on the table's scale; written apart from the identification code), measured from a motor_position column beside
-the table's position, never named on records without lost motion."""
+"""Lost motion (backlash) between motor and table in time records (:mod:`axisopt.identify.records.lostmotion`):
+hidden in records simulated by identify/records/synth (a motor-side mass tied to the table by a spring with a
+dead zone, closed loop on the table's scale; written apart from the identification code), measured from a
+motor_position column beside the table's position, never named on records without lost motion."""
 
 from __future__ import annotations
 
@@ -12,8 +12,8 @@ import pytest
 from identify_helpers import DESIGN
 
 from axisopt.cli import main
-from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import AxisTruth, LoopSettings, simulate_axis
+from axisopt.identify.records.idim import diagnose_time_files
+from axisopt.identify.records.synth import AxisTruth, LoopSettings, simulate_axis
 from axisopt.report.timediag import time_diagnosis_text
 
 COLS = ("time", "position", "force", "reference", "motor_position")

@@ -1,4 +1,4 @@
-"""The reduced tables' residuals (:mod:`axisopt.identify.tableresidual`): the noise floor is the noise, not
+"""The reduced tables' residuals (:mod:`axisopt.identify.tables.unexplained`): the noise floor is the noise, not
 the misfit (replicates, second differences); a drag outside the library is left unexplained with its shape."""
 
 import numpy as np
@@ -7,7 +7,7 @@ from identify_helpers import coulomb, friction_table
 from test_diagnose_recovery import BASELINE, frequency_doe, friction_doe, stiffness_doe
 
 from axisopt.identify import diagnose, read_dataset
-from axisopt.identify.synth import simulate
+from axisopt.identify.tables.synth import simulate
 from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 
 

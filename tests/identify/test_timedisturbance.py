@@ -1,11 +1,11 @@
 """Effects that only time records show (:mod:`axisopt.identify.effects.disturbance`): a force periodic in time,
 friction local to one place on the stroke and friction that drifts within a run.  Each is hidden in records
-simulated by :mod:`axisopt.identify.timesynth` (the closed loop written apart from the identification) with
+simulated by :mod:`axisopt.identify.records.synth` (the closed loop written apart from the identification) with
 its physics written here, in this file, as the simulator's ``extra_force`` / ``extra_friction``: alone and
 beside an effect of the library, over several seeds, noise levels and parameter values.  The diagnosis must
 name it with its parameters within 10 % (frequency within 2 % of itself, position within 2 % of the stroke),
 give it no other effect's name, and leave no unexplained structure; with the class left out of the library
-the residual signature (:mod:`axisopt.identify.timesignature`) must locate it (frequency, position, time
+the residual signature (:mod:`axisopt.identify.records.signature`) must locate it (frequency, position, time
 constant).  Null and decoy records name none of the three and show none of the three signatures."""
 
 import math
@@ -13,8 +13,8 @@ import math
 import pytest
 from identify_helpers import LEAD, records, truth_for, unexplained
 
-from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import LoopSettings
+from axisopt.identify.records.idim import diagnose_time_files
+from axisopt.identify.records.synth import LoopSettings
 from axisopt.report.timediag import time_diagnosis_dict, time_diagnosis_text
 
 NEW = ("time_periodic", "local_friction", "friction_drift")

@@ -7,8 +7,8 @@ import pytest
 from identify_helpers import DESIGN, LEAD, records, truth_for, unexplained
 from test_timedisturbance import NEW, SIGNATURES, periodic_force
 
-from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import simulate_axis
+from axisopt.identify.records.idim import diagnose_time_files
+from axisopt.identify.records.synth import simulate_axis
 from axisopt.report.timediag import time_diagnosis_dict, time_diagnosis_text
 
 # --------------------------------------------------------------------------------------- null and decoys
@@ -122,7 +122,7 @@ def test_two_effects_that_explain_the_data_equally_are_said_to_be_and_separated(
 def test_an_effect_named_outside_its_plausible_regime_is_flagged(tmp_path, plant, monkeypatch):
     """A drag c v|v| hidden in a record that never exceeds 7 mm/s: when quadratic_drag is named, its declaration
     says the reading is implausible at that speed (churning and seal drag show from tens of mm/s)."""
-    from axisopt.identify import timesynth
+    from axisopt.identify.records import synth as timesynth
 
     monkeypatch.setattr(timesynth.trapezoid_reference, "__defaults__",
                         ((0.001, 0.002, 0.004, 0.007), timesynth.ACCELS))

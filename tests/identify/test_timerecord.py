@@ -1,8 +1,8 @@
-"""Time-record reader (:mod:`axisopt.identify.timerecord`): current records with a gain (motor side and
+"""Time-record reader (:mod:`axisopt.identify.records.record`): current records with a gain (motor side and
 table equivalents), position in revolutions, bad input as one line naming file, line and column, validation
 runs with other columns, a bad external-force column.
 
-The records come from :mod:`axisopt.identify.timesynth`, a closed-loop simulator written apart from the
+The records come from :mod:`axisopt.identify.records.synth`, a closed-loop simulator written apart from the
 identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 1 kHz)."""
 
 import json
@@ -14,8 +14,8 @@ from identify_helpers import DESIGN, LEAD, assert_timesynth_axis, records, truth
 
 from axisopt.cli import main
 from axisopt.errors import InputError
-from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timesynth import AxisTruth, simulate_axis
+from axisopt.identify.records.idim import diagnose_time_files
+from axisopt.identify.records.synth import AxisTruth, simulate_axis
 
 
 @pytest.fixture(scope="module")

@@ -1,17 +1,17 @@
-"""What a time-record fit leaves unexplained (:mod:`axisopt.identify.timeresidual`): an effect the library
+"""What a time-record fit leaves unexplained (:mod:`axisopt.identify.records.unexplained`): an effect the library
 does not have is reported with the residual's signature (a drag outside the library, a ripple off the lead or
 at the lead, an external force at the wrong scale); null cases and effects in the library leave nothing; the
 tests are quiet on white noise.
 
-The records come from :mod:`axisopt.identify.timesynth`, the closed-loop simulator written apart from the
+The records come from :mod:`axisopt.identify.records.synth`, the closed-loop simulator written apart from the
 identification."""
 
 import pytest
 from identify_helpers import LEAD, records, truth_for, unexplained
 
-from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timeresidual import analyse_residual
-from axisopt.identify.timesynth import AxisTruth, simulate_axis
+from axisopt.identify.records.idim import diagnose_time_files
+from axisopt.identify.records.synth import AxisTruth, simulate_axis
+from axisopt.identify.records.unexplained import analyse_residual
 from axisopt.report.timediag import time_diagnosis_text
 
 LIBRARY_BEFORE = ["stribeck", "direction_asymmetry", "position_friction", "extra_mode"]

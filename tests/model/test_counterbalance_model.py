@@ -16,7 +16,14 @@ import pytest
 from test_duty_mass import THK_CYCLE, _design
 
 from axisopt.design import load_design
-from axisopt.model import PARAM_NAMES, PROFILE_OUTPUTS, SCALAR_OUTPUTS, axis_response, design_params, evaluate
+from axisopt.model import (
+    PARAM_NAMES,
+    PROFILE_OUTPUTS,
+    SCALAR_OUTPUTS,
+    axis_response,
+    design_params,
+    evaluate,
+)
 from axisopt.physics import counterbalance as pcb
 
 G = 9.80665

@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parents[2]
 def vmc():
     """The shipped VMC design on the HIWIN WBK30-DFD set the hand calculations below use (HIWIN Table 8.12:
     1520 N/um; the shipped file has an NSK light-preload set, which outlives the WBK's single row)."""
-    from axisopt.catalog import load_catalogs
+    from axisopt.catalog.loading import load_catalogs
 
     d = load_design(ROOT / "problems" / "vmc_x_design.yaml")
     return dataclasses.replace(d, bearing=load_catalogs().bearings.loc["HIWIN-WBK30-DFD"])
@@ -178,7 +178,11 @@ def test_evaluate_and_diagnose_agree_on_the_chain(vmc, mounting):
     """The same design in evaluate and in diagnose's plant gives the same compliance at every position
     (nut taken at the same stiffness), and both equal the two-path chain written out by hand."""
     from axisopt.identify import plant_from_design
-    from axisopt.identify.measure import baseline_terms, drive_compliance, screw_bearing_compliance
+    from axisopt.identify.tables.measure import (
+        baseline_terms,
+        drive_compliance,
+        screw_bearing_compliance,
+    )
 
     d = replace(vmc, axis=replace(vmc.axis, mounting=mounting, bearing_housing_stiffness=4000e6,
                                   nut_bracket_stiffness=2500e6))
@@ -214,7 +218,7 @@ def test_single_nut_follows_hiwin_f335_and_has_play():
     R_n = 0.8 K (F_bm / (0.28 C_dyn))^(1/3); R40-20K4-FSC: K = 870 N/um, C_dyn = 51 300 N (Table 6.4)."""
     d = load_design(ROOT / "problems" / "vmc_x_design.yaml")
     cat = d.screw  # same screw (40x20, ball 6.35)
-    from axisopt.catalog import default_catalog
+    from axisopt.catalog.loading import default_catalog
 
     nut = default_catalog().nuts.loc["HIWIN-R40-20K4-FSC"]
     assert nut["screw_id"] == cat["id"]

@@ -12,7 +12,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from axisopt.catalog import default_catalog
+from axisopt.catalog.loading import default_catalog
 from axisopt.design import load_design
 from axisopt.model import evaluate
 from axisopt.model.chain import drive_torsional_stiffness

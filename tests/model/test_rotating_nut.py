@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from axisopt.catalog import default_catalog
+from axisopt.catalog.loading import default_catalog
 from axisopt.design import Axis, Design
 from axisopt.model import PARAM_NAMES, axis_response
 from axisopt.model.function import design_params, evaluate

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from axisopt.catalog import load_catalogs
+from axisopt.catalog.loading import load_catalogs
 from axisopt.design import load_design
 from axisopt.model import evaluate
 from axisopt.model.estimates import design_estimates

@@ -4,7 +4,8 @@ import shutil
 
 import pytest
 
-from axisopt.catalog import SHIPPED_DIR, load_catalogs
+from axisopt.catalog.columns import SHIPPED_DIR
+from axisopt.catalog.loading import load_catalogs
 from axisopt.cli import main
 from axisopt.errors import InputError
 from axisopt.physics.drive import PEAK_CORNER_FRACTION, peak_torque_available

@@ -304,7 +304,7 @@ def test_thermal_growth_vendor_coefficients():
 def test_support_bearing_life_in_the_model():
     import dataclasses
 
-    from axisopt.catalog import load_catalogs
+    from axisopt.catalog.loading import load_catalogs
     from axisopt.design import load_design
     from axisopt.model import evaluate
 

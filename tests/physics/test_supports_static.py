@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from axisopt.catalog import load_catalogs
+from axisopt.catalog.loading import load_catalogs
 from axisopt.model.checks import bearing_static
 from axisopt.physics import bearings as pb
 from axisopt.physics import checks as pc

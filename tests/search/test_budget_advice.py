@@ -14,10 +14,10 @@ from axisopt.model.cost import cost
 from axisopt.problem import load_problem
 from axisopt.report.solve import relax_lines
 from axisopt.search import solve
-from axisopt.search.budget import least_cost
 from axisopt.search.drivebounds import hull_ends
 from axisopt.search.drivebounds import least_cost as drive_least_cost
 from axisopt.search.exhaustive import exhaustive_search
+from axisopt.search.infeasible.budget import least_cost
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
 from axisopt.search.task.objective import objective_spec

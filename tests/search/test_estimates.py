@@ -5,7 +5,8 @@ import csv
 import numpy as np
 import pytest
 
-from axisopt.catalog import SHIPPED_DIR, default_catalog
+from axisopt.catalog.columns import SHIPPED_DIR
+from axisopt.catalog.loading import default_catalog
 from axisopt.physics.bearings import SUPPORT_TORQUE_ENVELOPE, support_starting_torque_envelope
 from axisopt.problem import load_problem
 from axisopt.search import solve

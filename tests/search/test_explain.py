@@ -12,8 +12,8 @@ import pytest
 from test_bounds import _problem
 
 from axisopt.problem import load_problem
-from axisopt.search import explain as E
 from axisopt.search import solve
+from axisopt.search.infeasible import explain as E
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
 from axisopt.search.task.objective import objective_spec

@@ -12,7 +12,14 @@ import pytest
 
 from axisopt.problem import load_problem
 from axisopt.search.minlp import formulation
-from axisopt.search.minlp.formulation import SLOTS, integral, one_hot_params, one_hot_symbols, recover, slot_params
+from axisopt.search.minlp.formulation import (
+    SLOTS,
+    integral,
+    one_hot_params,
+    one_hot_symbols,
+    recover,
+    slot_params,
+)
 from axisopt.search.parts import build_space
 
 TEACHING = Path(__file__).resolve().parents[2] / "problems" / "teaching_problem.yaml"

@@ -13,7 +13,7 @@ import pytest
 from axisopt.cli import main
 from axisopt.problem import load_problem
 from axisopt.search import solve
-from axisopt.search.relax import rank_relaxations
+from axisopt.search.infeasible.relax import rank_relaxations
 from axisopt.search.result import Candidate, Infeasibility
 from axisopt.search.task.constraints import build_constraints
 
@@ -96,7 +96,7 @@ def test_no_margin_is_proposed_at_zero():
     """A check missed by 100 % (its available value is 0) is never a relaxation to a margin of 0 (issue 42): the
     design that misses it is left out like one that breaks a compatibility rule, and the answer says which check
     no margin frees; with every closest design so, the relaxation is blocked by it."""
-    from axisopt.search.relax import missing_values
+    from axisopt.search.infeasible.relax import missing_values
 
     problem = load_problem(PROBLEMS / "teaching_problem.yaml")
     cons = build_constraints(problem)

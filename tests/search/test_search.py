@@ -8,7 +8,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from search_synthetic import add_drives, add_reductions, assert_same_answer, make_catalog, make_double, make_problem
+from search_synthetic import (
+    add_drives,
+    add_reductions,
+    assert_same_answer,
+    make_catalog,
+    make_double,
+    make_problem,
+)
 
 from axisopt import model
 from axisopt.cli import main
@@ -311,7 +318,7 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
     """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
     the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
     combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
-    from axisopt.search.explain import RULE_WEIGHT, miss_scores, weight
+    from axisopt.search.infeasible.explain import RULE_WEIGHT, miss_scores, weight
     from axisopt.search.task.constraints import as_vector
     from axisopt.search.task.space import respond
 

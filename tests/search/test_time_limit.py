@@ -10,7 +10,7 @@ from pathlib import Path
 
 from axisopt.problem import load_problem
 from axisopt.search import bestfirst, solve
-from axisopt.search.explain import explain_infeasible
+from axisopt.search.infeasible.explain import explain_infeasible
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
 from axisopt.search.task.objective import objective_spec

@@ -158,7 +158,7 @@ def test_shipped_drive_example_gets_a_motor_series_and_a_coupling(tmp_path):
 def test_the_widening_counts_in_the_budget(tmp_path, monkeypatch):
     """The widening's searches count in design_changes' budget: with one search the 5 m axis still gets its
     mounting (the first search finds it), and with none no search runs and nothing is offered."""
-    from axisopt.search import advice, widen
+    from axisopt.search.infeasible import advice, widen
     from axisopt.search.task.constraints import build_constraints
 
     calls = []

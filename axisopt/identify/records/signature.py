@@ -18,8 +18,8 @@ import math
 
 import numpy as np
 
-from . import residual as rs
-from .effects.disturbance import bump, frequency_band, golden, line_scan, spot_scan
+from .. import residual as rs
+from ..effects.disturbance import bump, frequency_band, golden, line_scan, spot_scan
 from .estimators import predict
 
 TIED_RATIO = 0.5  # a line is at a fixed frequency when every speed group holds at least this share of its amplitude

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..selection import TIME_RULE
 from .estimators import Estimate
-from .selection import TIME_RULE
-from .timemodel import Rows, decimate, signals
+from .regression import Rows, decimate, signals
 
 LOST_MOTION_MAX = 0.2e-3  # [m] table travel: a preloaded ball-screw axis loses at most a few um; a lost motion
 #                          above 0.2 mm is a loose coupling, key or nut, reported as implausible, not fitted

@@ -126,7 +126,7 @@ class Record:
         if "motor_position" in self.extra:
             mp = self.extra["motor_position"] * (1e3 if position_unit == "mm" else 2 * math.pi / lead)
             data["motor_position"] = (mp, f"motor_position [{ph}]", "{:.9g}")
-        from ..fileio import open_output
+        from ...fileio import open_output
 
         with open_output(path, "w", what="time record") as fh:
             if effort == "current" and gain is not None:

@@ -24,8 +24,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import InputError
-from .effects import TimeModel, time_effects
+from ...errors import InputError
+from ..effects import TimeModel, time_effects
+from ..selection import TIME_RULE as RULE
 from .estimators import (
     Controller,
     Estimate,
@@ -37,10 +38,19 @@ from .estimators import (
     search_shape,
 )
 from .lostmotion import LostMotion, lost_motion
-from .selection import TIME_RULE as RULE
-from .timemodel import BASE, UNITS, Rows, make_rows, matrix, processing_for, symbol, terms_by_name, unit_of
-from .timeresidual import Unexplained, analyse_residual, noise_floor, periodic_peak, residual_peak
-from .timesignature import steady_line
+from .regression import (
+    BASE,
+    UNITS,
+    Rows,
+    make_rows,
+    matrix,
+    processing_for,
+    symbol,
+    terms_by_name,
+    unit_of,
+)
+from .signature import steady_line
+from .unexplained import Unexplained, analyse_residual, noise_floor, periodic_peak, residual_peak
 
 
 @dataclass
@@ -348,7 +358,7 @@ def diagnose_time_files(paths, *, plant, gain: str | None = None, candidates=Non
                         max_effects: int = 3) -> TimeDiagnosis:
     """Read the records (the first the estimation run, the others validation runs) and diagnose them against
     ``plant`` (:class:`.plant.Plant`: lead, efficiency and stroke are used)."""
-    from .timerecord import check_same_columns, read_time_record
+    from .record import check_same_columns, read_time_record
 
     if candidates:
         effects = time_effects()

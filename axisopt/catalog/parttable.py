@@ -18,7 +18,7 @@ import numpy as np
 class Row(dict):
     """One part: its columns (SI numbers, text) as a dict, the part id as ``name``.  Its repr, ``to_frame()`` and
     notebook table show the numbers in the units of the vendor's catalog (``dynamic_load_rating 51.3 kN``, the
-    shipped catalog file's header; :mod:`axisopt.partrow`)."""
+    shipped catalog file's header; :mod:`axisopt.catalog.partrow`)."""
 
     __slots__ = ("name",)
 
@@ -36,12 +36,12 @@ class Row(dict):
 
     def to_frame(self):
         """pandas DataFrame of the part, one row per column: ``column``, ``value`` (numbers in the unit the
-        vendor's catalog quotes, as the catalog file writes them) and ``unit`` (:mod:`axisopt.partrow`)."""
+        vendor's catalog quotes, as the catalog file writes them) and ``unit`` (:mod:`axisopt.catalog.partrow`)."""
         from .partrow import row_frame
 
         return row_frame(self)
 
-    def __repr__(self) -> str:  # the values in vendor units, not SI (axisopt.partrow)
+    def __repr__(self) -> str:  # the values in vendor units, not SI (axisopt.catalog.partrow)
         from .partrow import row_repr
 
         return row_repr(self)

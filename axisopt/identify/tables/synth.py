@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..effects import library
 from .data import Dataset
 from .diagnose import Context, build_problem
-from .effects import library
 from .measure import baseline_params, observations
 
 MEASURED = {

@@ -1,5 +1,5 @@
 """A catalog part shown in the units its vendor quotes: the repr, table and HTML of a
-:class:`~axisopt.parttable.Row` (which holds SI numbers).
+:class:`~axisopt.catalog.parttable.Row` (which holds SI numbers).
 
 Each column's unit is the one the shipped catalog file declares in its header (``catalogs/nuts.csv``:
 ``dynamic_load_rating [kN]``, ``catalogs/motors.csv``: ``rotor_inertia [kg.cm^2]``): the vendor's unit, written
@@ -14,8 +14,8 @@ import functools
 import math
 from types import MappingProxyType
 
-from .catalog import SCHEMA, SHIPPED_DIR
-from .units import DISPLAY_UNITS, split_header, unit_factor
+from ..units import DISPLAY_UNITS, split_header, unit_factor
+from .columns import SCHEMA, SHIPPED_DIR
 
 NO_UNIT = ("", "-")  # a header's unit of a plain number (``ratio [-]``)
 COLUMNS = ("column", "value", "unit")  # the table of a row (:func:`row_rows`)
@@ -47,7 +47,7 @@ def table_of(row) -> str | None:
 
 
 def _optional(table: str, column: str) -> bool:
-    from .catalog import OPTIONAL_COLUMNS
+    from .columns import OPTIONAL_COLUMNS
 
     return column in OPTIONAL_COLUMNS.get(table, ())
 
@@ -88,14 +88,14 @@ def row_repr(row, table: str | None = None) -> str:
 
 def row_frame(row, table: str | None = None):
     """pandas DataFrame of :func:`row_rows` (columns ``column``, ``value``, ``unit``)."""
-    from .display import frame
+    from ..display import frame
 
     return frame(row_rows(row, table), COLUMNS)
 
 
 def row_html(row, table: str | None = None) -> str:
     """An HTML table of :func:`row_rows`, each number as its catalog line writes it."""
-    from .display import html_table
+    from ..display import html_table
 
     table = table or table_of(row)
     rows = [{**r, "value": _figure(r["value"]) if isinstance(r["value"], float) else str(r["value"])}

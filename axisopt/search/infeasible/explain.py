@@ -25,16 +25,22 @@ import time
 
 import numpy as np
 
-from .. import model
-from ..model.limits import CHECK_RECORDS
-from . import bestfirst
-from .bounds import SCREEN_RTOL, block_chunk, block_outputs, bound_positions, optimistic_guide_params
-from .candidates import candidate_values
-from .drivebounds import PER_DRIVE_MIN, cost_parts, drive_hull
-from .parts import drive_stiffnesses
-from .result import Infeasibility
-from .task.constraints import End, as_vector, reads_regen
-from .task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive
+from ... import model
+from ...model.limits import CHECK_RECORDS
+from .. import bestfirst
+from ..bounds import (
+    SCREEN_RTOL,
+    block_chunk,
+    block_outputs,
+    bound_positions,
+    optimistic_guide_params,
+)
+from ..candidates import candidate_values
+from ..drivebounds import PER_DRIVE_MIN, cost_parts, drive_hull
+from ..parts import drive_stiffnesses
+from ..result import Infeasibility
+from ..task.constraints import End, as_vector, reads_regen
+from ..task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block

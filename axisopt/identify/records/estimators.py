@@ -23,10 +23,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .effects import time_effects
-from .effects.disturbance import golden
-from .timemodel import Processing, Rows, decimate, full_matrix, matrix, signals, term
-from .timerecord import TimeRecord, derivatives, lowpass
+from ..effects import time_effects
+from ..effects.disturbance import golden
+from .record import TimeRecord, derivatives, lowpass
+from .regression import Processing, Rows, decimate, full_matrix, matrix, signals, term
 
 IV_TOL = 1e-4
 IV_MAXIT = 30

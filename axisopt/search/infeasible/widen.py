@@ -41,12 +41,12 @@ from dataclasses import replace
 
 import numpy as np
 
-from .. import model
-from ..design import MOUNTINGS
-from ..grades import grade_table
-from ..model.limits import LIMITS
-from ..physics.checks import BUCKLING_ETA1, CRITICAL_SPEED_LAMBDA1
-from .result import DesignChange
+from ... import model
+from ...catalog.grades import grade_table
+from ...design import MOUNTINGS
+from ...model.limits import LIMITS
+from ...physics.checks import BUCKLING_ETA1, CRITICAL_SPEED_LAMBDA1
+from ..result import DesignChange
 
 DRIVE_CHECKS = frozenset(model.DRIVE_CHECKS)  # the checks of the drive's parts (model.limits: Check.drive)
 DRIVE_SLOTS = ("motor", "coupling")  # require/exclude slots the drive group widens
@@ -120,7 +120,7 @@ def _mounting_note(old: tuple, new: str) -> str:
 def design_edits(problem, space, combo: int) -> list:
     """The edits of ``problem``'s mountings and catalog filters that admit combination ``combo`` of ``space`` (a
     space of the problem with filters widened): :class:`.result.DesignChange` rows, empty when it needs none."""
-    from .candidates import part_rows
+    from ..candidates import part_rows
 
     r = problem.restrictions
     mi, n, b, g = (int(v) for v in space.unravel(combo))
@@ -165,10 +165,10 @@ def first_design(problem, space=None):
     there), or None: none, or the problem's inputs refuse the change (widened filters with nothing left to choose
     from, a duty cycle a lowered speed breaks).  ``space``: the problem's search space when the change left the
     parts as they were (a limit, not the axis or the filters)."""
-    from .bestfirst import bound_order_search
-    from .parts import build_space
-    from .task.constraints import build_constraints
-    from .task.objective import objective_spec
+    from ..bestfirst import bound_order_search
+    from ..parts import build_space
+    from ..task.constraints import build_constraints
+    from ..task.objective import objective_spec
 
     try:
         space = build_space(problem) if space is None else space

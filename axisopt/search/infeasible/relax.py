@@ -28,8 +28,8 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..model.limits import CHECK_RECORDS, LIMITS
-from .result import Relaxation
+from ...model.limits import CHECK_RECORDS, LIMITS
+from ..result import Relaxation
 
 FIT = "bearing bore fits screw"  # the explanation's miss key for a bearing that does not fit the screw end
 

@@ -25,10 +25,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import InputError
-from ..fileio import MAX_DATA_ROWS, read_input
-from ..units import check_plausible, check_width, read_header, read_number, to_si, unit_factor
-from ..yamlio import close_matches
+from ...errors import InputError
+from ...fileio import MAX_DATA_ROWS, read_input
+from ...units import check_plausible, check_width, read_header, read_number, to_si, unit_factor
+from ...yamlio import close_matches
 
 # column -> quantity kind (None: a plain number without unit)
 COLUMNS = {
@@ -298,7 +298,7 @@ def write_dataset(ds: Dataset, path, units: dict | None = None) -> None:
         )
         heads.append(f"{n} [{u}]")
         factors.append((1.0 / unit_factor(u, q), -273.15 if q == "temperature" else 0.0))
-    from ..fileio import atomic_file
+    from ...fileio import atomic_file
 
     with atomic_file(path, "w", what="data CSV") as fh:
         w = csv.writer(fh)

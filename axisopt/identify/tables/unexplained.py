@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import residual as rs
+from .. import residual as rs
 from .measure import Y_UNIT, Obs
 
 # Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode): the noise

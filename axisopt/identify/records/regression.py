@@ -19,9 +19,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError
-from .effects import Term, time_effects
-from .timerecord import TimeRecord, choose_cutoff, decimation_factor, derivatives, lowpass
+from ...errors import InputError
+from ..effects import Term, time_effects
+from .record import TimeRecord, choose_cutoff, decimation_factor, derivatives, lowpass
 
 VMIN_REL = 0.005  # rows slower than this share of the peak speed are left out
 SIGN_KEEP = 0.98  # a row is kept when the filtered sgn(v) is at least this far from zero

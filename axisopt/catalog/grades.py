@@ -27,9 +27,9 @@ from types import MappingProxyType
 
 import numpy as np
 
-from .errors import InputError
+from ..errors import InputError
 
-SHIPPED_DIR = Path(__file__).resolve().parent.parent / "catalogs"
+SHIPPED_DIR = Path(__file__).resolve().parent.parent.parent / "catalogs"
 UM = 1e-6
 PER_LENGTH = 0.300  # [m] the 300 mm of v_300 and of the C7-C10 travel error
 # a screw series not in screw_grades.csv (a user's or an inline screw): the precision grades of THK A-678 Table 3
@@ -80,7 +80,7 @@ class GradeTable:
         (:func:`axisopt.physics.accuracy.lead_error`): e_p + v_u of the band holding the travel for C0-C5, the
         error per 300 mm scaled to the travel (at least one 300 mm) for C7-C10.  NaN where the grade's table stops
         short of the travel (THK lists no C0 beyond 1600 mm)."""
-        from .physics.accuracy import lead_error_per_300, lead_error_tolerance
+        from ..physics.accuracy import lead_error_per_300, lead_error_tolerance
 
         g = self.grade(name)
         if math.isfinite(g.travel_error_300):
@@ -99,7 +99,7 @@ class GradeTable:
         """The least accurate grade of ``names`` (default: all) whose error per 300 mm meets a positioning
         accuracy (+-) over a travel [m], as THK's selection examples choose it (A-723, A-737:
         :func:`axisopt.physics.accuracy.required_error_per_300`); None if none does."""
-        from .physics.accuracy import required_error_per_300
+        from ..physics.accuracy import required_error_per_300
 
         need = required_error_per_300(accuracy, travel)
         ok = [n for n in self.names if (names is None or n in names) and self.error_per_300(n) <= need]
@@ -114,7 +114,7 @@ class GradeTable:
 def _rows(path: Path, header: tuple) -> list:
     src = str(path)
     try:
-        from .fileio import read_input
+        from ..fileio import read_input
 
         text = read_input(path, "catalog", what="catalog", encoding="utf-8-sig")
     except (OSError, UnicodeDecodeError) as exc:

@@ -13,12 +13,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import residual as rs
-from .effects.friction import RIPPLE_HARMONICS
+from .. import residual as rs
+from ..effects.friction import RIPPLE_HARMONICS
 from .estimators import Estimate, predict
-from .timemodel import Rows, decimate, full_matrix, matrix
-from .timerecord import lowpass, welch
-from .timesignature import decay_probe, line_probe, spot_probe
+from .record import lowpass, welch
+from .regression import Rows, decimate, full_matrix, matrix
+from .signature import decay_probe, line_probe, spot_probe
 
 
 def residual_peak(rows: Rows, est: Estimate) -> tuple:

@@ -22,12 +22,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..model.cost import cost
-from .bounds import block_bounds
-from .preload import exact_solve
-from .screen import group_end, screen_blocks
-from .task.constraints import build_constraints
-from .task.objective import ObjectiveSpec
+from ...model.cost import cost
+from ..bounds import block_bounds
+from ..preload import exact_solve
+from ..screen import group_end, screen_blocks
+from ..task.constraints import build_constraints
+from ..task.objective import ObjectiveSpec
 
 LEAST_COST = ObjectiveSpec((("cost", -1.0),), "least cost", "EUR")
 MAX_BLOCKS = 400  # (mounting, nut, bearing) blocks screened at most (a count of work; the lathe Z at 500 EUR

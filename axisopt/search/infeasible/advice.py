@@ -38,9 +38,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..design.axis import Counterbalance, G
-from ..model.limits import ACCEL, RATIO, SPEED, WEIGHT, checks_set_by
-from .result import DesignChange
+from ...design.axis import Counterbalance, G
+from ...model.limits import ACCEL, RATIO, SPEED, WEIGHT, checks_set_by
+from ..result import DesignChange
 from .widen import first_design, widened
 
 # the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio sets
@@ -126,7 +126,7 @@ def _scalar_step(problem, key, unit, scale, factor) -> _Step | None:
 def _reduction_step(problem, misses, space) -> _Step | None:
     """Admit the reductions the problem's max_backlash left out of ``space`` (parts: lost motion = backlash x lead
     / 2 pi at the table), when the closest designs miss what a reduction's ratio changes."""
-    from .parts import build_space
+    from ..parts import build_space
 
     if not space.reductions_by_backlash or not any(REDUCTION_CHECKS & d.keys() for d in misses):
         return None
@@ -238,7 +238,7 @@ def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *,
     """The changes (:class:`.result.DesignChange`, to be made together) that make ``problem`` feasible, verified
     by a search; empty when no kind applies, none is verified or the budget is spent.  ``space``: the problem's
     search space, if built."""
-    from .parts import build_space
+    from ..parts import build_space
 
     misses = _misses(constraints, infeasibility)
     if not misses:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from .calibration import FORMAT, calibrate_design, write_calibration
-from .timemodel import shape_params, term
+from .regression import shape_params, term
 
 # unit kind of a time-record term -> (quantity kind, unit, factor from SI), per record quantity
 KIND_UNITS = {

@@ -26,13 +26,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..display import frame, html_table, one_line
-from ..errors import InputError
-from .effects import library
-from .fit import Block, FitResult, Problem, fit, row_function
+from ...display import frame, html_table, one_line
+from ...errors import InputError
+from ..effects import library
+from ..fit import Block, FitResult, Problem, fit, row_function
+from ..selection import TABLE_RULE as RULE
 from .measure import FEATURES, baseline_params, baseline_terms, observations, output
-from .selection import TABLE_RULE as RULE
-from .tableresidual import noise_sigma_rel, table_unexplained
+from .unexplained import noise_sigma_rel, table_unexplained
 
 MAX_FOLDS = 8
 

@@ -34,9 +34,16 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import InputError
-from ..fileio import MAX_TIME_SAMPLES, read_input
-from ..units import check_plausible, check_width, read_header, read_number, split_header, unit_factor
+from ...errors import InputError
+from ...fileio import MAX_TIME_SAMPLES, read_input
+from ...units import (
+    check_plausible,
+    check_width,
+    read_header,
+    read_number,
+    split_header,
+    unit_factor,
+)
 
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")

@@ -25,11 +25,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import mathx as mx
-from ..physics import nut as pn
-from ..physics import screw as ps
+from ... import mathx as mx
+from ...physics import nut as pn
+from ...physics import screw as ps
+from ..fit import Param
 from .data import Dataset
-from .fit import Param
 
 FEATURES = {
     "stiffness": ("x", "force", "direction", "time", "dtemp", "cycle"),
