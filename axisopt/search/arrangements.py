@@ -10,7 +10,8 @@ and keeps the designs no design of another arrangement dominates."""
 from __future__ import annotations
 
 import time
-from dataclasses import fields, replace
+from dataclasses import dataclass, fields, replace
+from typing import Callable
 
 import numpy as np
 
@@ -21,6 +22,17 @@ from .task.objective import rank_order
 
 _SUMMED = ("combinations", "pruned_by_bound", "exact_evaluations", "nlps_solved", "nlp_failures", "pruned_by_block",
            "pruned_by_dominance")
+
+
+@dataclass(frozen=True)
+class Door:
+    """What solving the arrangements needs of the front door, handed in by it (:func:`.front.solve` calls this
+    stage; the stage calls back through these, so it imports nothing of the front door)."""
+
+    solve: Callable  # front.solve: one arrangement (a problem without arrangements)
+    limit_sensitivities: Callable  # front.limit_sensitivities
+    relax: float  # front.RELAX: the relative relaxation of a limit for its sensitivity
+    sensitivities: bool  # the method's capability (front.METHOD_TABLE)
 
 
 def _miss(res: SolveResult) -> float:
@@ -45,10 +57,9 @@ def _certificate(results) -> Certificate:
     return Certificate(**kw)
 
 
-def _sensitivities(problem: Problem, subs, results, win: int, method: str) -> list:
+def _sensitivities(problem: Problem, subs, results, win: int, method: str, door: Door) -> list:
     """The winner's limits, each with the best gain over every arrangement relaxed by front.RELAX."""
-    from .front import RELAX, limit_sensitivities, solve
-
+    RELAX, limit_sensitivities, solve = door.relax, door.limit_sensitivities, door.solve
     best = results[win].best.objective
     per = [limit_sensitivities(sub, r) if r.best is not None else None for sub, r in zip(subs, results)]
     out = []
@@ -71,11 +82,12 @@ def _sensitivities(problem: Problem, subs, results, win: int, method: str) -> li
     return out
 
 
-def _pareto(problem: Problem, method: str, subs, labels, t0: float) -> SolveResult:
+def _pareto(problem: Problem, method: str, subs, labels, t0: float, door: Door) -> SolveResult:
     """A Pareto objective over the arrangements: each arrangement's front, merged and filtered to the designs no
     design of any arrangement dominates (each point names its arrangement)."""
-    from .front import solve
     from .pareto import FIELD, SENSE, nondominated
+
+    solve = door.solve
 
     results = [solve(sub, method, sensitivities=False) for sub in subs]
     n = len(results)
@@ -108,15 +120,15 @@ def _pareto(problem: Problem, method: str, subs, labels, t0: float) -> SolveResu
 
 
 def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: float,
-                       sensitivities: bool) -> SolveResult:
-    """Solve every arrangement of ``problem`` with ``method`` and combine (see the module)."""
-    from .front import METHODS_BY_NAME, solve
-
+                       sensitivities: bool, door: Door) -> SolveResult:
+    """Solve every arrangement of ``problem`` with ``method`` (through ``door.solve``) and combine (see the
+    module)."""
+    solve = door.solve
     t0 = time.perf_counter()
     labels = [lab for lab, _ in problem.arrangements]
     subs = [replace(problem, axis=ax, arrangements=()) for _, ax in problem.arrangements]
     if problem.objective.mode == "pareto":
-        return _pareto(problem, method, subs, labels, t0)
+        return _pareto(problem, method, subs, labels, t0, door)
     results = [solve(sub, method, top=top, time_limit=time_limit, sensitivities=False) for sub in subs]
     n = len(results)
     cert = _certificate(results)
@@ -143,11 +155,11 @@ def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: f
     notes = [f"{labels[i]}: infeasible" for i in range(n) if results[i].status == INFEASIBLE]
     out = replace(res, status=status, best=ranked[0], runners_up=ranked[1:], certificate=cert,
                   message="; ".join(x for x in [res.message] + notes if x), arrangement=labels[win], arrangements=n)
-    if sensitivities and METHODS_BY_NAME[method].sensitivities and problem.objective.mode != "lexicographic":
-        out.binding = _sensitivities(problem, subs, results, win, method)
+    if sensitivities and door.sensitivities and problem.objective.mode != "lexicographic":
+        out.binding = _sensitivities(problem, subs, results, win, method, door)
     out.certificate.estimated = results[win].certificate.estimated
     out.time = time.perf_counter() - t0
     return out
 
 
-__all__ = ["solve_arrangements"]
+__all__ = ["Door", "solve_arrangements"]

@@ -133,9 +133,11 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
     m = METHODS_BY_NAME[method]
     if problem.arrangements:  # search.counterbalance / search.twin_drive: each arrangement solved, the best kept
-        from .arrangements import solve_arrangements
+        from .arrangements import Door, solve_arrangements
 
-        return solve_arrangements(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
+        door = Door(solve, limit_sensitivities, RELAX, m.sensitivities)
+        return solve_arrangements(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities,
+                                  door=door)
     t0 = time.perf_counter()
     ob = problem.objective
     if problem.axis.twin_drive is not None and not m.pareto:
