@@ -33,7 +33,7 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
                     screw_grade=None if space.grades is None else str(space.grades[n]),
                     name=name or f"{space.problem.name}-{rank or 'design'}",
                     source=space.problem.source, assumed=space.problem.assumed)
-    # the model on numpy: the same formula as the CasADi Function (tests/model/test_model.py holds them to 1e-10)
+    # the model on numpy: the same formula as the CasADi Function (tests/model/test_function.py holds them to 1e-10)
     # without building that Function for every new axis (a study's cases, the closest designs)
     ev = model.evaluate(design, use_casadi=False)
     v = ev.values

@@ -5,7 +5,7 @@ hidden physics is in test_timedisturbance.py (written apart from the identificat
 
 import pytest
 from identify_helpers import DESIGN, LEAD, records, truth_for, unexplained
-from test_timedisturbance import NEW, SIGNATURES, periodic_force
+from test_disturbance import NEW, SIGNATURES, periodic_force
 
 from axisopt.identify.records.idim import diagnose_time_files
 from axisopt.identify.records.synth import simulate_axis

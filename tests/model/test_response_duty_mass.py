@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_life_duty_cycle import DESIGN as THK_VERTICAL
+from test_checks_life_duty_cycle import DESIGN as THK_VERTICAL
 
 from axisopt.cli import main
 from axisopt.design import design_to_yaml, load_design

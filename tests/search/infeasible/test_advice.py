@@ -41,7 +41,7 @@ def test_lower_rapid_speed_is_offered_and_holds(tmp_path):
 def test_no_change_offered_where_speed_and_torque_do_not_bind(tmp_path):
     """The teaching problem at 65 m/min misses the support set's life and the nut's lift-off: no speed or
     torque check, so no axis change is offered (the limits to relax still are; another vendor's support set is,
-    tests/search/test_widen.py)."""
+    tests/search/infeasible/test_widen.py)."""
     res = solve(load_problem(_variant(tmp_path, "teaching_problem.yaml", max_speed="65 m/min")), "default")
     assert res.best is None and res.infeasibility.relax
     assert not [c for c in res.infeasibility.design_changes if c.key.startswith("axis.")]

@@ -13,7 +13,7 @@ import math
 import casadi as ca
 import numpy as np
 import pytest
-from test_duty_mass import THK_CYCLE, _design
+from test_response_duty_mass import THK_CYCLE, _design
 
 from axisopt.design import load_design
 from axisopt.model import (
@@ -36,7 +36,7 @@ def _with(cycle: str, cb: str) -> str:
 
 
 def _thk(tmp_path, cb: str | None, name="d.yaml"):
-    """THK's example through the model as tests/model/test_duty_mass.py runs it (its screw, no coupling, no
+    """THK's example through the model as tests/model/test_response_duty_mass.py runs it (its screw, no coupling, no
     support-bearing drag, no nut preload), with a counterbalance."""
     cycle = THK_CYCLE if cb is None else _with(THK_CYCLE, cb)
     p = design_params(load_design(_design(tmp_path, cycle, name)))

@@ -32,7 +32,7 @@ def test_saved_designs_evaluate_to_the_solved_numbers(tmp_path, capsys):
         assert main(["evaluate", str(f), "--json", str(ev_json)]) == 0
         ev = json.loads(ev_json.read_text())
         # the preload is written in round figures (order_preload: within one step, every limit kept,
-        # tests/cli/test_saved_preload.py); the rest is the solved design's
+        # tests/cli/test_solve_saved_preload.py); the rest is the solved design's
         assert abs(ev["nut_preload_N"] - cand["nut_preload"]) < preload_step(cand["nut_preload"])
         ordered = evaluate(replace(load_design(f), nut_preload=cand["nut_preload"]))
         assert ordered.minimum("k_total")[0] / 1e6 == pytest.approx(cand["min_stiffness"], rel=1e-9)
