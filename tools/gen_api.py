@@ -125,7 +125,8 @@ def _unit(note: str, has_unit_field: bool) -> str:
 def _fields(cls) -> list[str]:
     if not dataclasses.is_dataclass(cls):
         return []
-    notes = field_comments(cls)
+    # a field's comment in the source, or the meaning a table declares (search.result.REPORTED)
+    notes = field_comments(cls) | dict(getattr(cls, "FIELD_NOTES", {}))
     names = {f.name for f in dataclasses.fields(cls)}
     rows = ["| field | unit | type | meaning |", "|---|---|---|---|"]
     for f in dataclasses.fields(cls):
