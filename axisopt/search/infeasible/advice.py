@@ -39,6 +39,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ...design.axis import Counterbalance, G
+from ...errors import InputError
 from ...model.limits import ACCEL, RATIO, SPEED, WEIGHT, checks_set_by
 from ..result import DesignChange
 from .widen import first_design, widened
@@ -135,7 +136,7 @@ def _reduction_step(problem, misses, space) -> _Step | None:
         return None
     try:
         wide = build_space(problem.with_limit("max_backlash", None))
-    except Exception:  # noqa: BLE001 - the problem without the limit refused: no advice of this kind
+    except InputError:  # the search space without the limit has nothing to choose from: no advice of this kind
         return None
     if wide.reductions is None or not len(wide.s_arr["lead"]):
         return None

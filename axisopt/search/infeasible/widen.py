@@ -44,6 +44,7 @@ import numpy as np
 from ... import model
 from ...catalog.grades import grade_table
 from ...design import MOUNTINGS
+from ...errors import InputError
 from ...model.limits import LIMITS
 from ...physics.checks import BUCKLING_ETA1, CRITICAL_SPEED_LAMBDA1
 from ..result import DesignChange
@@ -172,7 +173,7 @@ def first_design(problem, space=None):
 
     try:
         space = build_space(problem) if space is None else space
-    except Exception:  # noqa: BLE001 - a change the inputs refuse gives no advice
+    except InputError:  # a change the inputs refuse (build_space: nothing left to choose from) gives no advice
         return None
     spec = objective_spec(problem.objective.mode, problem)
     ex, _ = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True)
