@@ -256,6 +256,11 @@ CHOICES = {
 
 
 TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings", "reductions")
+# the part slots of a design, declared once (one per table, in TABLES' order): the mechanical parts, then the
+# drive's (design.axis.PART_SLOTS, the problem's restrictions)
+MECH_SLOTS = ("screw", "nut", "bearing", "guide")
+DRIVE_SLOTS = ("motor", "coupling", "reduction")
+PART_SLOTS = MECH_SLOTS + DRIVE_SLOTS
 
 
 def row_problem(name: str, rec: dict) -> tuple[str, str] | None:

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
+from ..catalog.columns import DRIVE_SLOTS, MECH_SLOTS, PART_SLOTS
 from ..display import fmt, one_line
 from ..physics import motion
 from ..physics.checks import load_factor_default
@@ -341,7 +342,6 @@ class Design:
             "axial load": fmt(a.axial_load, "N"), "parts": f"{parts} (nut preload {fmt(self.preload, 'N')})"})
 
 
-PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling", "reduction")
 
 
-__all__ = ["Axis", "Design", "PART_SLOTS", "MOUNTINGS", "ORIENTATIONS", "BRAKE_MODES", "G"]
+__all__ = ["Axis", "Design", "PART_SLOTS", "MECH_SLOTS", "DRIVE_SLOTS", "MOUNTINGS", "ORIENTATIONS", "BRAKE_MODES", "G"]

@@ -242,8 +242,8 @@ def binding_estimates(design, limits=(), objective_outputs=(), checks: bool = Tr
             wanted.append((key, lim.output))
     if checks:
         for c in CHECK_TABLE:
-            m = out.get(f"margin_{c.name}")
+            m = out.get(c.output)
             if m is not None and _scalar(m) <= 1.0 + ACTIVE_RTOL:
-                wanted.append((f"check {c.name}", f"margin_{c.name}"))
+                wanted.append((f"check {c.name}", c.output))
     found = resting_on(design, [o for _, o in wanted])
     return [Resting(what, o, tuple(found[o])) for what, o in wanted if found.get(o)]

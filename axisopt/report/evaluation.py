@@ -11,7 +11,7 @@ import numpy as np
 from ..design import PRETENSION_RISE, rotating_nut
 from ..model import CHECKS, Evaluation, passes
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
-from ..model.limits import CHECK_TABLE
+from ..model.limits import CHECK_TABLE, check_name, margin_output
 from ..model.loads import balance_summary
 from ..model.params import axis_params
 from ..model.servo import servo_response
@@ -144,7 +144,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
                    for r in check_rows(ev)},
         "drive": drive_dict(ev),
         "life_loads": life_dict(ev),
-        "all_checks_pass": bool(all(passes(v[f"margin_{c}"]) for c in CHECKS)),
+        "all_checks_pass": bool(all(passes(v[margin_output(c)]) for c in CHECKS)),
         "positions_mm": (s * 1e3).tolist(),
         "axial_stiffness_N_per_um": (np.asarray(v["k_total"]) / N_PER_UM).tolist(),
         "screw_stiffness_N_per_um": (np.asarray(v["k_screw"]) / N_PER_UM).tolist(),
@@ -355,8 +355,8 @@ def estimates(ev: Evaluation) -> list:
     est = [e for e in design_estimates(ev.design) if "price" not in e.column]
     if not est:
         return []
-    near = [f"margin_{c}" for c in CHECKS if float(ev.values[f"margin_{c}"]) < NEAR_LIMIT]
-    names = dict(_EST_OUTPUTS) | {m: f"check {m[7:].replace('_', ' ')}" for m in near}
+    near = [margin_output(c) for c in CHECKS if float(ev.values[margin_output(c)]) < NEAR_LIMIT]
+    names = dict(_EST_OUTPUTS) | {m: f"check {check_name(m).replace('_', ' ')}" for m in near}
     moved = resting_on(ev.design, list(names), est)
     return [(e, [names[o] for o in names if any(x is e for x in moved.get(o, ()))]) for e in est]
 

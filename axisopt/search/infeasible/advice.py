@@ -40,7 +40,7 @@ import numpy as np
 
 from ...design.axis import Counterbalance, G
 from ...errors import InputError
-from ...model.limits import ACCEL, RATIO, SPEED, WEIGHT, checks_set_by
+from ...model.limits import ACCEL, RATIO, SPEED, WEIGHT, check_name, checks_set_by
 from ..result import DesignChange
 from .widen import first_design, widened
 
@@ -83,7 +83,7 @@ def _misses(constraints, infeasibility) -> list[dict]:
         for label, m in cand.misses.items():
             c = by_label.get(label)
             if c is not None:
-                named[c.name[len("margin_"):] if c.name.startswith("margin_") else c.name] = m
+                named[check_name(c.name) or c.name] = m
         out.append(named)
     return out
 

@@ -26,7 +26,7 @@ import time
 import numpy as np
 
 from ... import model
-from ...model.limits import CHECK_RECORDS
+from ...model.limits import CHECK_RECORDS, check_name
 from .. import bestfirst
 from ..bounds import (
     SCREEN_RTOL,
@@ -61,8 +61,8 @@ MAX_OPENED = 4_000_000
 
 def weight(c) -> float:
     """The weight of constraint ``c``'s relative miss in the miss score."""
-    if c.name.startswith("margin_"):
-        rec = CHECK_RECORDS.get(c.name[len("margin_"):])
+    if check_name(c.name) is not None:
+        rec = CHECK_RECORDS.get(check_name(c.name))
         if rec is not None and not rec.relaxable:
             return RULE_WEIGHT
     return 1.0

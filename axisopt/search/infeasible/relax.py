@@ -28,7 +28,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ...model.limits import CHECK_RECORDS, LIMITS
+from ...model.limits import CHECK_RECORDS, LIMITS, check_name
 from ..result import Relaxation
 
 FIT = "bearing bore fits screw"  # the explanation's miss key for a bearing that does not fit the screw end
@@ -55,21 +55,21 @@ MISSING = MappingProxyType({m.check: m for m in (
 
 def _unfreed(constraint, miss: float) -> bool:
     """A margin that only 0 or less would free (a miss of 100 % or more): never proposed."""
-    return constraint.name.startswith("margin_") and constraint.sense == ">=" and miss >= 1.0 - 1e-12
+    return check_name(constraint.name) is not None and constraint.sense == ">=" and miss >= 1.0 - 1e-12
 
 
 def relaxable(constraint) -> bool:
     """A problem limit, or the margin of a check that is not a compatibility rule."""
-    if constraint.name.startswith("margin_"):
-        rec = CHECK_RECORDS.get(constraint.name[len("margin_"):])
+    if check_name(constraint.name) is not None:
+        rec = CHECK_RECORDS.get(check_name(constraint.name))
         return rec is not None and rec.relaxable
     return constraint.name in LIMITS
 
 
 def problem_key(constraint) -> str:
     """Where the limit sits in the problem file: ``limits.max_cost``, ``limits.margins.critical_speed``."""
-    if constraint.name.startswith("margin_"):
-        return f"limits.margins.{constraint.name[len('margin_'):]}"
+    if check_name(constraint.name) is not None:
+        return f"limits.margins.{check_name(constraint.name)}"
     return f"limits.{constraint.name}"
 
 
@@ -93,7 +93,7 @@ def rank_relaxations(constraints, infeasibility) -> tuple[list, list, list]:
     for c, m in sorted(need, key=lambda cm: (cm[1], cm[0].name)):
         lim = c.limit / c.factor
         to = lim * (1.0 - m) if c.sense == ">=" else (lim * (1.0 + m) if c.limit > 0 else m)
-        margin = c.name.startswith("margin_")
+        margin = check_name(c.name) is not None
         out.append(Relaxation(problem_key(c), c.label, c.unit, lim, to, m, rank, cand,
                               together=len(need) > 1, below_vendor_rule=margin and to < 1.0))
     return out, left_out, fixed if blocked else []
@@ -129,7 +129,7 @@ def missing_values(constraints, infeasibility, space=None) -> list:
             c = by_label.get(label)
             if c is None or not _unfreed(c, float(m)):
                 continue
-            need = MISSING.get(c.name[len("margin_"):])
+            need = MISSING.get(check_name(c.name))
             row = getattr(cand.design, need.slot, None) if need is not None and cand.design is not None else None
             if row is not None and not math.isfinite(float(row[need.column.split(" ")[0]])):
                 rows.setdefault(need, {}).setdefault(str(row["series"]), set()).add(str(row["id"]))

@@ -42,6 +42,7 @@ from dataclasses import replace
 import numpy as np
 
 from ... import model
+from ...catalog.columns import MECH_SLOTS
 from ...catalog.grades import grade_table
 from ...design import MOUNTINGS
 from ...errors import InputError
@@ -51,7 +52,6 @@ from ..result import DesignChange
 
 DRIVE_CHECKS = frozenset(model.DRIVE_CHECKS)  # the checks of the drive's parts (model.limits: Check.drive)
 DRIVE_SLOTS = ("motor", "coupling")  # require/exclude slots the drive group widens
-MECH_SLOTS = ("screw", "nut", "bearing", "guide")
 # the filters each group widens to 'every value' (None)
 DRIVE_FILTERS = ("motor_vendors", "motor_series", "coupling_series")
 MECH_FILTERS = ("vendors", "nut_types", "bearing_arrangements", "bearing_preload", "guide_types", "guide_preload")
