@@ -10,7 +10,7 @@ from axisopt.identify import Effect, diagnose, library, plant_from_design, regis
 from axisopt.identify.effects import unregister_effect
 from axisopt.identify.tables.synth import simulate
 
-DATA = Path(__file__).resolve().parents[2] / "problems" / "data"
+DATA = Path(__file__).resolve().parents[3] / "problems" / "data"
 
 
 DESIGN = DATA / "table_x.yaml"

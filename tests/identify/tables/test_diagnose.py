@@ -28,13 +28,13 @@ from axisopt.identify.tables.synth import simulate
 from axisopt.model import evaluate
 from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 
-DATA = Path(__file__).resolve().parents[2] / "problems" / "data"
+DATA = Path(__file__).resolve().parents[3] / "problems" / "data"
 
 
 STIFF = DATA / "table_x_stiffness.csv"
 
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 
 def test_cli_shipped_example_end_to_end(tmp_path, capsys):

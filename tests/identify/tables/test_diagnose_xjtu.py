@@ -11,7 +11,7 @@ from axisopt.design import load_design
 from axisopt.identify import diagnose, plant_from_design, read_dataset
 from axisopt.report.diagnosis import diagnosis_dict
 
-DATA = Path(__file__).resolve().parents[2] / "problems" / "data" / "xjtu"
+DATA = Path(__file__).resolve().parents[3] / "problems" / "data" / "xjtu"
 
 
 @pytest.mark.parametrize("screw", ["up", "down"])

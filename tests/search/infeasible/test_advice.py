@@ -11,7 +11,7 @@ import pytest
 from axisopt.problem import load_problem
 from axisopt.search import solve
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 
 def _variant(tmp_path, name, **values):

@@ -18,7 +18,7 @@ from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
 from axisopt.search.task.objective import objective_spec
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 
 def _weak_motors(p, factor):
@@ -141,7 +141,7 @@ def test_infeasible_says_when_the_lost_motion_limit_left_the_reductions_out():
     """A problem that admits no lost motion (max_backlash 0, the default) forms no gearbox: an infeasible answer says
     so, with the count, so that a designer knows the limit, not the catalog, ruled them out; admitting lost motion
     forms them and the note goes."""
-    p = load_problem(Path(__file__).resolve().parents[2] / "problems" / "infeasible_drive_problem.yaml")
+    p = load_problem(Path(__file__).resolve().parents[3] / "problems" / "infeasible_drive_problem.yaml")
     n = len(p.catalog.rows("reductions"))
     r = solve(p, sensitivities=False)
     assert r.best is None and f"{n} reductions (gearboxes, belts) were left out" in r.message

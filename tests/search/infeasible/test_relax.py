@@ -17,7 +17,7 @@ from axisopt.search.infeasible.relax import rank_relaxations
 from axisopt.search.result import Candidate, Infeasibility
 from axisopt.search.task.constraints import build_constraints
 
-PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
+PROBLEMS = Path(__file__).resolve().parents[3] / "problems"
 
 
 def test_infeasible_problem_first_lines_name_the_limit_and_the_amount(capsys):

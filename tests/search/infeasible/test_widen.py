@@ -11,7 +11,7 @@ from axisopt.problem import load_problem
 from axisopt.report.solve import relax_lines
 from axisopt.search import solve
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 # 5 m of stroke, 300 kg: the 63 mm screws' critical speed fixed-supported is below the rapid speed.  The screw's
 # design rise for the pretension is 2 K (THK plans 2-5 degC, A-715): at the default 3 K the pretension of a

@@ -42,7 +42,7 @@ def test_bonmin_on_the_vmc_catalog_stops_near_its_time_limit():
     # 21 M combinations: before the fix the MINLP construction alone ran 9 min past a 5 s limit
     import time as _time
 
-    p = load_problem(Path(__file__).parents[2] / "problems" / "vmc_x_problem.yaml")
+    p = load_problem(Path(__file__).parents[3] / "problems" / "vmc_x_problem.yaml")
     t = _time.perf_counter()
     b = solve(p, "bonmin", time_limit=3)
     assert _time.perf_counter() - t < 60

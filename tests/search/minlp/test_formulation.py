@@ -22,7 +22,7 @@ from axisopt.search.minlp.formulation import (
 )
 from axisopt.search.parts import build_space
 
-TEACHING = Path(__file__).resolve().parents[2] / "problems" / "teaching_problem.yaml"
+TEACHING = Path(__file__).resolve().parents[3] / "problems" / "teaching_problem.yaml"
 
 
 @pytest.fixture(scope="module")

@@ -17,7 +17,7 @@ from axisopt.search import solve
 
 pytest.importorskip("pyscipopt")
 
-PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
+PROBLEMS = Path(__file__).resolve().parents[3] / "problems"
 
 
 def _teaching_yaskawa_rule(tmp_path) -> Path:

@@ -57,7 +57,7 @@ def test_kv_rises_with_preload_on_the_model():
     from axisopt.design import load_design
     from axisopt.model import axis_response, design_params, positions
 
-    d = load_design(Path(__file__).resolve().parents[2] / "problems" / "vmc_x_design.yaml")
+    d = load_design(Path(__file__).resolve().parents[3] / "problems" / "vmc_x_design.yaml")
     p = design_params(d)
     x = positions(d.axis)
     pre = np.linspace(float(d.nut["preload_min"]), float(d.nut["preload_max"]), 25)

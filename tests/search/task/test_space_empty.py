@@ -14,7 +14,7 @@ from axisopt.errors import InputError
 from axisopt.problem import Objective
 from axisopt.search import solve
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 
 def _problem(drive: bool, mode: str = "stiffness"):
