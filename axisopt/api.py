@@ -116,10 +116,10 @@ def diagnose(data, design: Design | str | PathLike, *, effects=None, max_effects
         raise InputError("diagnose needs at least one measured data file")
     names = list(effects) if effects is not None else None
     plant = plant_from_design(_design(design))
-    from .identify.timerecord import is_time_record
+    from .identify.records.record import is_time_record
 
     if is_time_record(paths[0]):
-        from .identify.idim import diagnose_time_files
+        from .identify.records.idim import diagnose_time_files
 
         return diagnose_time_files(paths, plant=plant, gain=gain, candidates=names, max_effects=max_effects)
     from .identify import diagnose as _diagnose

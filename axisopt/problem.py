@@ -61,7 +61,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
 
-from .catalog import Catalog
+from .catalog.loading import Catalog
 from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, NAME_KEY, Axis, catalog_for, read_axis
 from .design.choices import SEARCH_SPEC, read_arrangements
 from .design.drivechoice import read_drive_choice

@@ -11,14 +11,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from .catalog import STATUSES, USER_STATUS, Catalog
+from .catalog.columns import DRIVE_SLOTS, MECH_SLOTS, PART_SLOTS, STATUSES, USER_STATUS
+from .catalog.grades import grade_table
+from .catalog.loading import Catalog
 from .design import MOUNTINGS, Axis
-from .grades import grade_table
 from .yamlio import Key, Section, Spec
 
-MECH_SLOTS = ("screw", "nut", "bearing", "guide")
-DRIVE_SLOTS = ("motor", "coupling", "reduction")
-SLOTS = MECH_SLOTS + DRIVE_SLOTS
+SLOTS = PART_SLOTS  # a design's part slots (catalog.columns: MECH_SLOTS, then DRIVE_SLOTS)
 SLOT_TABLE = MappingProxyType({"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides",
                                "motor": "motors", "coupling": "couplings", "reduction": "reductions"})
 

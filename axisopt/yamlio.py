@@ -87,7 +87,9 @@ def _construct(loader, node, count=None):
 def read_yaml(path) -> Node:
     path = Path(path)
     src = str(path)
-    from .fileio import read_input  # regular files only (a FIFO or device is never opened), size cap
+    from .fileio import (
+        read_input,  # regular files only (a FIFO or device is never opened), size cap
+    )
 
     text = read_input(path, "yaml", what="file")
     return parse_yaml_text(text, src)

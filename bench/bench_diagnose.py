@@ -9,7 +9,7 @@ import numpy as np
 
 from axisopt.design import load_design
 from axisopt.identify import diagnose, plant_from_design
-from axisopt.identify.synth import simulate
+from axisopt.identify.tables.synth import simulate
 
 BUDGET = 5.0
 DESIGN = Path(__file__).resolve().parents[1] / "problems" / "data" / "table_x.yaml"

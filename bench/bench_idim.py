@@ -9,10 +9,10 @@ from pathlib import Path
 
 from axisopt.design import load_design
 from axisopt.identify import plant_from_design
-from axisopt.identify.estimators import instrumental_variables, least_squares
-from axisopt.identify.idim import diagnose_time_files
-from axisopt.identify.timemodel import BASE
-from axisopt.identify.timesynth import AxisTruth, simulate_axis
+from axisopt.identify.records.estimators import instrumental_variables, least_squares
+from axisopt.identify.records.idim import diagnose_time_files
+from axisopt.identify.records.regression import BASE
+from axisopt.identify.records.synth import AxisTruth, simulate_axis
 
 BUDGET = 5.0
 DESIGN = Path(__file__).resolve().parents[1] / "problems" / "data" / "table_x.yaml"

@@ -23,7 +23,8 @@ import pandas as pd
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from axisopt.catalog import SCHEMA, Catalog  # noqa: E402
+from axisopt.catalog.columns import SCHEMA  # noqa: E402
+from axisopt.catalog.loading import Catalog  # noqa: E402
 from axisopt.design import Axis  # noqa: E402
 from axisopt.model import CHECKS  # noqa: E402
 from axisopt.problem import Objective, Problem, Restrictions, load_problem  # noqa: E402

@@ -20,7 +20,7 @@ show, plus a vendor factor and scatter.  Anchors (checked against the shipped ca
   (i = 1.5-3; no vendor stage data: illustrative).
 
 ``catalog(n_screws, nuts_per_screw, n_bearings, n_guides, n_motors, n_couplings, seed, n_reductions)`` returns a
-:class:`axisopt.catalog.Catalog`; the combination count of a problem over it is about
+:class:`axisopt.catalog.loading.Catalog`; the combination count of a problem over it is about
 nuts x bearings x guides x (motor, coupling, reduction or none) drives.
 """
 
@@ -31,7 +31,8 @@ import math
 import numpy as np
 import pandas as pd
 
-from axisopt.catalog import SCHEMA, Catalog
+from axisopt.catalog.columns import SCHEMA
+from axisopt.catalog.loading import Catalog
 
 RPM = 2 * math.pi / 60
 VENDORS = ("VA", "VB", "VC")

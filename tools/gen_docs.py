@@ -21,7 +21,7 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from axisopt.catalog import COLUMNS  # noqa: E402
+from axisopt.catalog.columns import COLUMNS  # noqa: E402
 from axisopt.model.limits import CHECK_TABLE, LIMIT_TABLE  # noqa: E402
 from axisopt.schema import KINDS_OF_FILE, spec_of  # noqa: E402
 from axisopt.units import DISPLAY_UNITS  # noqa: E402

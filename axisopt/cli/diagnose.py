@@ -2,7 +2,7 @@
 [--save-calibration FILE.yaml] [--effects a,b,...] [--max-effects N] [--gain '0.85 N.m/A']``
 
 A first file with a ``time`` column (and no reduced-table columns) is a time record: the files go to the
-inverse dynamic identification of :mod:`axisopt.identify.idim` (first file estimation, others validation); the
+inverse dynamic identification of :mod:`axisopt.identify.records.idim` (first file estimation, others validation); the
 text and JSON of either diagnosis come from :mod:`axisopt.report`."""
 
 from __future__ import annotations
@@ -12,9 +12,9 @@ from .common import EXIT_OK, PLOTLY_HELP, stdout_taken, write_json
 
 
 def cmd_diagnose(args) -> int:
-    from ..identify.timerecord import is_time_record
+    from ..identify.records.record import is_time_record
 
-    if args.data and is_time_record(args.data[0]):  # time records: IDIM (LS and IV), axisopt.identify.idim
+    if args.data and is_time_record(args.data[0]):  # time records: IDIM (LS and IV), axisopt.identify.records.idim
         return _cmd_diagnose_time(args)
     from ..design import load_design
     from ..identify import diagnose, plant_from_design, read_dataset
@@ -74,13 +74,13 @@ def _print_calibration(cal: dict, path, quiet: bool) -> None:
 def _cmd_diagnose_time(args) -> int:
     from ..design import load_design
     from ..identify import plant_from_design
-    from ..identify.idim import diagnose_time_files
+    from ..identify.records.idim import diagnose_time_files
     from ..report.timediag import time_diagnosis_dict, time_diagnosis_text
 
     if args.report:
         raise InputError("--report is not available for time records (use --json)")
     if args.gain is not None:  # refused when malformed, whether or not the record is a current record
-        from ..identify.timerecord import parse_gain
+        from ..identify.records.record import parse_gain
 
         parse_gain(args.gain, source="--gain")
     names = [n.strip() for n in args.effects.split(",") if n.strip()] if args.effects else None
@@ -91,7 +91,7 @@ def _cmd_diagnose_time(args) -> int:
     if not quiet:
         print(time_diagnosis_text(diag))
     if args.save_calibration:
-        from ..identify.timecalibration import save_time_calibration
+        from ..identify.records.calibration import save_time_calibration
 
         _print_calibration(save_time_calibration(diag, args.save_calibration, design, args.data),
                            args.save_calibration, quiet)

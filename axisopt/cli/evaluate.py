@@ -4,7 +4,16 @@ from __future__ import annotations
 
 import sys
 
-from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, stdout_taken, write_json, wrote
+from .common import (
+    EXIT_NEGATIVE,
+    EXIT_OK,
+    add_html_report,
+    check_html_report,
+    show,
+    stdout_taken,
+    write_json,
+    wrote,
+)
 
 
 def register(sub) -> None:

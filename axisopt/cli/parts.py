@@ -63,7 +63,7 @@ def register(sub) -> None:
 
 
 def _rows(table) -> list[dict]:
-    """The rows of a table as records (a list from :func:`axisopt.catalog.load_records`, or a pandas table)."""
+    """The rows of a table as records (a list from :func:`axisopt.catalog.loading.load_records`, or a pandas table)."""
     return table.to_dict("records") if hasattr(table, "to_dict") else list(table)
 
 
@@ -83,7 +83,7 @@ def _filtered(cat, kind, vendors, status):
 
 def counts(cat, vendors=None, status=None) -> list[dict]:
     """One record per (kind, vendor): rows by provenance."""
-    from ..catalog import STATUSES
+    from ..catalog.columns import STATUSES
 
     out = []
     for kind in KINDS:
@@ -170,7 +170,7 @@ def _rotating(row) -> bool:
 
 def _grades(row) -> str:
     """The grades a screw row is made in: 'C0-C5' when they run on in the table's order, else 'C1,C3,C5'."""
-    from ..grades import grade_table
+    from ..catalog.grades import grade_table
 
     t = grade_table()
     have = t.orderable(str(row.get("vendor", "")), str(row.get("series", "")))
@@ -182,7 +182,7 @@ def _grades(row) -> str:
 
 def rows_dicts(rows, kind) -> list[dict]:
     """Every column of the rows, in vendor units (the unit in the key), with vendor, provenance and source."""
-    from ..catalog import SCHEMA
+    from ..catalog.columns import SCHEMA
 
     out = []
     for r in _rows(rows):
@@ -196,7 +196,7 @@ def rows_dicts(rows, kind) -> list[dict]:
             key = f"{c} [{unit}]" if unit else c
             rec[key] = None if v != v else (int(v) if k == "int" else float(f"{v * f:.10g}"))
         if kind == "screws":  # the lead accuracy grades the screw is made in
-            from ..grades import grade_table
+            from ..catalog.grades import grade_table
 
             rec["grades"] = ",".join(grade_table().orderable(str(r.get("vendor", "")), str(r.get("series", ""))))
         rec.update({"status": r["status"], "source": r["source"]})
@@ -253,7 +253,8 @@ def apply_filters(cat, kind, rows, args):
 
 
 def cmd_parts(args) -> int:
-    from ..catalog import STATUSES, load_records
+    from ..catalog.columns import STATUSES
+    from ..catalog.loading import load_records
 
     if args.status is not None and args.status not in STATUSES:
         raise InputError(f"'{args.status}' is not one of {', '.join(STATUSES)}", where="--status")

@@ -19,12 +19,31 @@ from .common import (
 )
 
 
+class _MethodNames:
+    """The ``--method`` choices: the names of ``search.front.METHOD_TABLE``, read when the parser first asks
+    (the command line's start-up imports no search code)."""
+
+    def __contains__(self, name) -> bool:
+        return name in self._names()
+
+    def __iter__(self):
+        return iter(self._names())
+
+    @staticmethod
+    def _names() -> tuple:
+        from ..search import METHODS
+
+        return METHODS
+
+
 def register(sub) -> None:
     s = sub.add_parser("solve", help="choose parts and preload that maximise stiffness/frequency (proven)")
     s.add_argument("problem", help="problem YAML file")
-    s.add_argument("--method", choices=("default", "exhaustive", "bonmin", "scip"), default="default",
-                   help="default: proven optimum (bounds); exhaustive: every combination; bonmin: MINLP; "
-                        "scip: global MINLP (pip install 'axisopt[scip]')")
+    # the choices are read when a --method is given or the help printed: a metavar, so that building the parser
+    # does not list them (argparse would import the search at every start-up)
+    s.add_argument("--method", choices=_MethodNames(), default="default", metavar="METHOD",
+                   help="%(choices)s; default: proven optimum (bounds); exhaustive: every combination; bonmin: "
+                        "MINLP; scip: global MINLP (pip install 'axisopt[scip]')")
     s.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     s.add_argument("--plot", metavar="FILE.png", help="plot the best designs (or the Pareto front)")
     s.add_argument("--top", type=int, default=5, metavar="N", help="designs to show (best + runners-up)")

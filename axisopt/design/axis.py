@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
+from ..catalog.columns import DRIVE_SLOTS, MECH_SLOTS, PART_SLOTS
 from ..display import fmt, one_line
 from ..physics import motion
 from ..physics.checks import load_factor_default
@@ -311,10 +312,10 @@ class Design:
     @property
     def grade(self) -> str:
         """The screw's lead accuracy grade: the design's, else the cheapest its series is made in
-        (:meth:`axisopt.grades.GradeTable.cheapest`; C5 for every shipped series)."""
+        (:meth:`axisopt.catalog.grades.GradeTable.cheapest`; C5 for every shipped series)."""
         if self.screw_grade is not None:
             return self.screw_grade
-        from ..grades import grade_table
+        from ..catalog.grades import grade_table
 
         t = grade_table()
         return t.cheapest(t.orderable(str(self.screw["vendor"]), str(self.screw["series"])))
@@ -325,9 +326,9 @@ class Design:
 
     def part_rows(self) -> list[dict]:
         """The parts as rows of (part, id, column, value, unit): each catalog value in the unit its vendor quotes
-        (the shipped catalog file's header: mm, N/um, kN, kg.cm^2, EUR ...; :mod:`axisopt.partrow`), text as it
+        (the shipped catalog file's header: mm, N/um, kN, kg.cm^2, EUR ...; :mod:`axisopt.catalog.partrow`), text as it
         is in the catalog, an empty optional cell left out; ``to_frame()`` is these rows as a table."""
-        from ..partrow import row_rows
+        from ..catalog.partrow import row_rows
 
         tables = {"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides", "motor": "motors",
                   "coupling": "couplings", "reduction": "reductions"}
@@ -361,7 +362,6 @@ class Design:
             "axial load": fmt(a.axial_load, "N"), "parts": f"{parts} (nut preload {fmt(self.preload, 'N')})"})
 
 
-PART_SLOTS = ("screw", "nut", "bearing", "guide", "motor", "coupling", "reduction")
 
 
-__all__ = ["Axis", "Design", "PART_SLOTS", "MOUNTINGS", "ORIENTATIONS", "BRAKE_MODES", "G"]
+__all__ = ["Axis", "Design", "PART_SLOTS", "MECH_SLOTS", "DRIVE_SLOTS", "MOUNTINGS", "ORIENTATIONS", "BRAKE_MODES", "G"]

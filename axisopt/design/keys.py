@@ -6,8 +6,8 @@ as a JSON Schema.
 
 from __future__ import annotations
 
-from ..catalog import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
-from ..grades import SCALE_GRADES
+from ..catalog.columns import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
+from ..catalog.grades import SCALE_GRADES
 from ..yamlio import Key, Spec
 from .axis import BRAKE_MODES, COUNTERBALANCE_KINDS, MOUNTINGS, ORIENTATIONS
 

@@ -9,10 +9,11 @@ import warnings
 from dataclasses import fields
 from pathlib import Path
 
-from ..catalog import SCHEMA, Catalog, default_catalog, row_problem
+from ..catalog.columns import SCHEMA, row_problem
+from ..catalog.grades import grade_table
+from ..catalog.loading import Catalog, default_catalog
+from ..catalog.parttable import Row
 from ..errors import ImplausibleInput, InputError
-from ..grades import grade_table
-from ..parttable import Row
 from ..physics import motion
 from ..yamlio import Section, close_matches, file_kind, read_yaml, require_kind
 from .axis import BRAKE_MODES, Axis, Counterbalance, Design, TwinDrive

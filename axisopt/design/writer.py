@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from dataclasses import fields
 
-from ..catalog import SCHEMA, SHIPPED_DIR
+from ..catalog.columns import SCHEMA, SHIPPED_DIR
 from ..units import DISPLAY_UNITS, unit_factor
 from .axis import Axis, Design
 from .keys import AXIS_KINDS, TWIN_SPEC

@@ -1,7 +1,7 @@
 """The positioning-error budget of the axis: one row per cause THK lists ("Studying the Positioning Accuracy",
 General Catalog A-712..A-716; :mod:`axisopt.physics.accuracy`), each the largest deviation over the stroke [m]:
 
-* ``lead_error``: the screw's lead error over the stroke by its grade (a parameter: :mod:`axisopt.grades`);
+* ``lead_error``: the screw's lead error over the stroke by its grade (a parameter: :mod:`axisopt.catalog.grades`);
 * ``thermal_error``: the thermal growth at the nut over the stroke (:mod:`.chain`) at the temperature rise of the
   heat balance with the nut at its highest catalog preload (the hottest it runs: conservative; a stated
   ``axis.temperature_rise`` instead where the axis gives one), so that the row does not rise with the preload

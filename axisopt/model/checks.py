@@ -14,7 +14,7 @@ from ..physics import checks as pc
 from ..physics import life as pl
 from ..physics import nut as pn
 from ..physics import screw as ps
-from .limits import CHECK_TABLE
+from .limits import CHECK_TABLE, margin_output
 from .loads import unit
 
 # The checks, their labels and units are declared once in model.limits (CHECK_TABLE).
@@ -184,7 +184,7 @@ def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
         "unit_bearing_static": mx.if_else(r, c0 / (s0 * f_max), NOT_APPLICABLE),
         "rotating_mount": mx.if_else(r, held + 0.0 * omega, NOT_APPLICABLE),
     }
-    out = {f"margin_{k}": v for k, v in margins.items()}
+    out = {margin_output(k): v for k, v in margins.items()}
     out["unit_bearing_life"] = life
     out.update(check_pairs({
         "unit_speed": (unit(p, "unit_max_speed"), omega), "unit_bearing_life": (life, p["required_life"]),
@@ -280,7 +280,7 @@ def checks(p, mounting, preload, loads) -> dict:
         "nut_static": (p["nut_static_load"], p["nut_static_safety"] * f_max),
         "bearing_static": (brg_c0, brg_c0_need),
     }
-    out = {f"margin_{k}": v for k, v in margins.items()}
+    out = {margin_output(k): v for k, v in margins.items()}
     out.update(values)
     out.update(check_pairs(pairs))
     out.update(unit_checks(p, mounting, loads, omega, mean_omega))

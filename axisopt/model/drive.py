@@ -40,6 +40,7 @@ from ..physics import drive as pd
 from ..physics import screw as ps
 from .checks import check_pairs
 from .drag import SCREW_EFFICIENCY
+from .limits import margin_output
 from .loads import G, balance, balance_force, phase_moving_mass, unit
 from .motorrule import DEFAULT_RULE
 
@@ -220,7 +221,7 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
         "reduction_emergency_torque": mx.if_else(red * has > 0.5, emergency
                                                  / (p["motor_peak_torque"] * p["reduction_ratio"]), NOT_APPLICABLE),
     }
-    out = {f"margin_{k}": v for k, v in margins.items()}
+    out = {margin_output(k): v for k, v in margins.items()}
     out.update(check_pairs({
         "motor_peak_torque": (p["motor_peak_torque"], use), "motor_rated_torque": (thrust_ratio, t_cont),
         "motor_speed": (p["motor_max_speed"], n_motor), "inertia_ratio": (p["max_inertia_ratio"], ratio),

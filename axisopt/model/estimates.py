@@ -2,7 +2,7 @@
 
 The optimizer goes wherever the model is optimistic, so a value the vendor does not list must never read
 better than the vendor values it stands in for, and a result that depends on one must say so.  Where a value
-is estimated is declared once with the part columns (:data:`axisopt.catalog.COLUMNS`: ``estimate`` for an
+is estimated is declared once with the part columns (:data:`axisopt.catalog.columns.COLUMNS`: ``estimate`` for an
 optional column left empty, ``estimated_when`` for the row statuses whose value is derived or illustrative,
 catalogs/SOURCES.md); :func:`design_estimates` lists them for one design and :func:`resting_on` finds, by
 perturbing each estimated parameter, the outputs (a binding limit, a check at its limit, the objective)
@@ -16,7 +16,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from ..catalog import COLUMNS, USER_STATUS
+from ..catalog.columns import COLUMNS, USER_STATUS
 from ..units import DISPLAY_UNITS, unit_factor
 from .params import PART_PARAMS, RULE_PARAMS, axis_params, positions
 from .response import axis_response
@@ -242,8 +242,8 @@ def binding_estimates(design, limits=(), objective_outputs=(), checks: bool = Tr
             wanted.append((key, lim.output))
     if checks:
         for c in CHECK_TABLE:
-            m = out.get(f"margin_{c.name}")
+            m = out.get(c.output)
             if m is not None and _scalar(m) <= 1.0 + ACTIVE_RTOL:
-                wanted.append((f"check {c.name}", f"margin_{c.name}"))
+                wanted.append((f"check {c.name}", c.output))
     found = resting_on(design, [o for _, o in wanted])
     return [Resting(what, o, tuple(found[o])) for what, o in wanted if found.get(o)]

@@ -11,7 +11,7 @@ import numpy as np
 from ..design import Design, rotating_nut
 from ..display import fmt, frame, html_fields, html_table, one_line
 from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes
-from .limits import CHECK_RECORDS
+from .limits import CHECK_RECORDS, margin_output
 from .outputs import PROFILE, SCALAR
 from .params import PARAM_NAMES, axis_params, positions
 from .response import axis_response
@@ -141,7 +141,7 @@ class Evaluation:
 
     def checks(self) -> dict:
         """Check name -> margin (available / needed, >= 1 passes), every check (see :meth:`check_table`)."""
-        return {c: float(self.values[f"margin_{c}"]) for c in CHECKS}
+        return {c: float(self.values[margin_output(c)]) for c in CHECKS}
 
     def check_rows(self) -> list:
         """The checks that apply to the design, one dict each (see :func:`check_rows`)."""
@@ -231,7 +231,7 @@ def check_rows(ev: Evaluation) -> list:
                                   or c.startswith("coupling_") and d.coupling is None
                                   or d.motor is None and not c.startswith(("coupling_", "reduction_"))):
             continue
-        m = float(v[f"margin_{c}"])
+        m = float(v[margin_output(c)])
         if c == "brake_holding" and d.axis.orientation != "vertical":
             continue
         rec = CHECK_RECORDS[c]

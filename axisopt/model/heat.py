@@ -11,7 +11,7 @@ sets none; the thermal growth at the nut and the thermal force of a fixed-fixed 
 with the nut preload (through the drag), and so do the outputs that read it (model.limits.OUTPUT_PRELOAD).
 
 The network's conductances are estimates (no vendor or paper publishes them for a general axis; measured check:
-tests/physics/test_heat.py against THK's heat-generation tests A-821 and A-671; docs/assumptions.md):
+tests/physics/test_thermal.py against THK's heat-generation tests A-821 and A-671; docs/assumptions.md):
 
 * ``NUT_BRACKET_SHAPE``: the nut bracket conducts like a cast-iron block whose section over length equals the
   screw's nominal diameter (e.g. 40 x 80 mm over 80 mm for a 40 mm screw: 1.9 W/K), the table beyond it at ambient;

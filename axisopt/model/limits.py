@@ -95,6 +95,19 @@ LIMIT_TABLE = (
 LIMITS = MappingProxyType({lim.key: lim for lim in LIMIT_TABLE})
 
 
+MARGIN = "margin_"  # a check's model output is MARGIN + its name (Check.output)
+
+
+def margin_output(check: str) -> str:
+    """The model output of check ``check``: its margin (available / needed), ``margin_<check>``."""
+    return MARGIN + check
+
+
+def check_name(output: str) -> str | None:
+    """The check whose margin the model output (or constraint) ``output`` is; None: not a check's margin."""
+    return output[len(MARGIN):] if output.startswith(MARGIN) else None
+
+
 @dataclass(frozen=True)
 class Check:
     """A vendor check the model evaluates as ``margin_<name>`` = available / needed (>= 1 passes).
@@ -124,6 +137,11 @@ class Check:
     relaxable: bool = True
     rotating_nut: bool = False
     set_by: tuple = ()
+
+    @property
+    def output(self) -> str:
+        """The model output of this check: its margin, ``margin_<name>``."""
+        return margin_output(self.name)
 
 
 SPEED, ACCEL, WEIGHT, RATIO = "speed", "acceleration", "weight", "ratio"
@@ -202,6 +220,6 @@ def checks_set_by(what: str) -> frozenset:
 
 def preload_direction(output: str) -> int:
     """How a model output (or ``margin_<check>``) moves with the nut preload."""
-    if output.startswith("margin_") and output[7:] in CHECK_RECORDS:
-        return CHECK_RECORDS[output[7:]].preload
+    if check_name(output) in CHECK_RECORDS:
+        return CHECK_RECORDS[check_name(output)].preload
     return OUTPUT_PRELOAD.get(output, 0)

@@ -6,11 +6,15 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..catalog import ARRANGEMENT_ROWS, COLUMNS
+from ..catalog.columns import ARRANGEMENT_ROWS, COLUMNS
+from ..catalog.grades import SCALE_GRADES, lead_errors, price_factors, scale_error
 from ..design import PRETENSION_RISE, TEMPERATURE_RISE
-from ..grades import SCALE_GRADES, lead_errors, price_factors, scale_error
 from ..physics import counterbalance as pcb
-from ..physics.bearings import STATIC_SAFETY_MACHINE_TOOL, housing_stiffness_default, support_starting_torque_envelope
+from ..physics.bearings import (
+    STATIC_SAFETY_MACHINE_TOOL,
+    housing_stiffness_default,
+    support_starting_torque_envelope,
+)
 from ..physics.drive import PEAK_CORNER_FRACTION
 from ..physics.nut import bracket_stiffness_default, nut_stiffness_catalog
 from .gantry import TWIN_PARAMS, gantry_params
@@ -80,7 +84,7 @@ PARAM_NAMES = (
 
 
 # part table -> ((column, parameter), ...): the columns that feed a model parameter as they are, from the one
-# declaration of the part columns (axisopt.catalog.COLUMNS).  A new part column the model reads needs its
+# declaration of the part columns (axisopt.catalog.columns.COLUMNS).  A new part column the model reads needs its
 # ``param`` there and its name in PARAM_NAMES above.
 PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.param) for t, cols in COLUMNS.items()})
 # columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice; the text
@@ -195,7 +199,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
 
 def grade_params(axis, screw, grade=None) -> dict:
     """The lead accuracy grade's parameters: the lead error over the stroke [m] and the price factor on the screw
-    shaft [-] (:mod:`axisopt.grades`; the catalog price is the C5 price), and the guides' running pitch and yaw
+    shaft [-] (:mod:`axisopt.catalog.grades`; the catalog price is the C5 price), and the guides' running pitch and yaw
     [rad].  ``grade``: a name or an array of names (default: the screw row's ``grade``, else C5)."""
     if grade is None:
         try:

@@ -165,7 +165,7 @@ def bearing_friction_torque(f0, f1, viscosity, speed, mean_diameter, load):
 # diameter, T_start / (F_pr d_m), over every shipped catalog row that lists both (HIWIN WBK H-BS Table 8.12,
 # NSK TAC B NSK-SP p. 168, Schaeffler ZKLN M_RL H-BS Tables 8.38/8.40; catalogs/SOURCES.md "Estimated support
 # drag").  Largest observed: INA ZKLN1034, 0.06 N.m / (735 N x 22 mm) = 3.71e-3; rounded up.
-# tests/core/test_catalog.py checks that no vendor row lies above it.
+# tests/catalog/test_loading.py checks that no vendor row lies above it.
 SUPPORT_TORQUE_ENVELOPE = 3.72e-3
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-from ..grades import SCALE_GRADES, grade_table
+from ..catalog.grades import SCALE_GRADES, grade_table
 
 ARCSEC = math.pi / 180.0 / 3600.0
 

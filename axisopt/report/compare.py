@@ -15,6 +15,7 @@ import numpy as np
 from ..display import fmt, html_table, one_line
 from ..model import CHECKS, Evaluation
 from ..model.limits import CHECK_RECORDS
+from ..search.reported import REPORTED
 from ..units import N_PER_UM
 from .evaluation import (
     CHECK_SHORT,
@@ -69,12 +70,14 @@ class Comparison:
         return one_line("Comparison", f"{len(self.items)} designs", {"": " | ".join(cells)})
 
     def _repr_html_(self) -> str:
-        keys = ("label", "kind", "mounting", "min_stiffness [N/um]", "weakest_link", "min_frequency [Hz]",
-                "drag_torque [N.m]", "total_mass [kg]", "cost [EUR]", "all_checks_pass")
+        col = COLUMN
+        keys = ("label", "kind", "mounting", col["min_stiffness"], "weakest_link", col["min_frequency"],
+                col["drag_torque"], col["total_mass"], col["cost"], "all_checks_pass")
         return html_table(compare_rows(self.items), f"Comparison of {len(self.items)} designs", columns=keys)
 
 
 TEXT_WIDTH = 100  # the terminal columns the table fits
+COLUMN = {r.field: r.column for r in REPORTED}  # the reported values' columns (search.result.REPORTED)
 
 
 def component_stiffness(ev: Evaluation) -> dict:
@@ -261,14 +264,14 @@ def compare_rows(items) -> list:
                       "screw_stiffness_at_min [N/um]": comp["screw"] / N_PER_UM,
                       "nut_stiffness [N/um]": comp["nut"] / N_PER_UM,
                       "bearing_stiffness [N/um]": comp["bearings"] / N_PER_UM,
-                      "min_stiffness [N/um]": d["min_axial_stiffness_N_per_um"],
+                      COLUMN["min_stiffness"]: d["min_axial_stiffness_N_per_um"],
                       "min_stiffness_at [mm]": d["min_axial_stiffness_position_mm"],
                       "weakest_link": d["weakest_link"],
-                      "min_frequency [Hz]": d["min_natural_frequency_Hz"],
+                      COLUMN["min_frequency"]: d["min_natural_frequency_Hz"],
                       "min_frequency_at [mm]": d["min_natural_frequency_position_mm"],
                       "table_mode [Hz]": d["table_mode_Hz"],
-                      "drag_torque [N.m]": d["drag_torque_Nm"], "moving_mass [kg]": d["moving_mass_kg"],
-                      "total_mass [kg]": d["total_mass_kg"], "cost [EUR]": d["cost"],
+                      COLUMN["drag_torque"]: d["drag_torque_Nm"], COLUMN["moving_mass"]: d["moving_mass_kg"],
+                      COLUMN["total_mass"]: d["total_mass_kg"], COLUMN["cost"]: d["cost"],
                       "all_checks_pass": d["all_checks_pass"]})
             for k, v in (drive_dict(e) or {}).items():
                 if k not in ("motor", "coupling", "reduction"):

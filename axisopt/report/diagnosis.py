@@ -1,4 +1,4 @@
-"""Diagnosis output (:class:`axisopt.identify.diagnose.Diagnosis`): JSON-ready dict, console text, Markdown
+"""Diagnosis output (:class:`axisopt.identify.tables.diagnose.Diagnosis`): JSON-ready dict, console text, Markdown
 report with residual plots (Agg).
 Nothing here prints."""
 
@@ -10,10 +10,10 @@ from pathlib import Path
 import numpy as np
 
 from ..fileio import tidy_layout
-from ..identify.diagnose import param_rows, plausibility
-from ..identify.diagnose import split_by_observation as _split
-from ..identify.measure import Y_UNIT
-from ..identify.tableresidual import display_value, residual_table, table_signature
+from ..identify.tables.diagnose import param_rows, plausibility
+from ..identify.tables.diagnose import split_by_observation as _split
+from ..identify.tables.measure import Y_UNIT
+from ..identify.tables.unexplained import display_value, residual_table, table_signature
 from . import save_figure, write_text_atomic
 from .evaluation import fit_lines
 
@@ -270,7 +270,7 @@ def frf_modes(diag) -> list:
 def data_notes(o) -> list:
     """What looks odd in the measured column itself: three or more consecutive identical readings (a held
     or copied value) are named with their lines; they are kept in the fit."""
-    from ..identify.measure import MEASURED_COLUMNS
+    from ..identify.tables.measure import MEASURED_COLUMNS
 
     out = []
     for col in MEASURED_COLUMNS.get(o.kind, ()):
@@ -436,7 +436,9 @@ def categories(name: str, values) -> list | None:
 def residual_figures(diag, verdict: str):
     """Per observation of ``diag``: (observation, matplotlib Figure of its residuals, model - measured, against
     each recorded factor, before (baseline) and after (with ``verdict``)); a category factor one tick each."""
-    from ..figure import Figure  # outside pyplot: no backend is chosen (a notebook's stays as it was)
+    from ..figure import (
+        Figure,  # outside pyplot: no backend is chosen (a notebook's stays as it was)
+    )
 
     before = _split(diag.obs, diag.baseline.prediction - diag.y)
     after = _split(diag.obs, diag.final.prediction - diag.y)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import textwrap
 
-WIDTH = 100  # the text fits 100 columns (tests/cli/test_text_width.py)
+WIDTH = 100  # the text fits 100 columns (tests/cli/test_solve_text_width.py)
 
 
 def _wrap(line: str) -> list:

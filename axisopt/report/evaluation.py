@@ -13,7 +13,7 @@ from ..display import fmt
 from ..model import CHECKS, Evaluation, passes
 from ..model.checks import DN_RULE_OTHER, DN_RULES
 from ..model.function import NOT_APPLICABLE, check_rows, drive_dict  # noqa: F401  (one per check; drive values: in model)
-from ..model.limits import CHECK_TABLE
+from ..model.limits import CHECK_TABLE, check_name, margin_output
 from ..model.loads import balance_summary
 from ..model.motorrule import DEFAULT_RULE, rule_text
 from ..model.params import axis_params
@@ -178,7 +178,7 @@ def evaluation_dict(ev: Evaluation) -> dict:
                    for r in check_rows(ev)},
         "drive": drive_dict(ev),
         "life_loads": life_dict(ev),
-        "all_checks_pass": bool(all(passes(v[f"margin_{c}"]) for c in CHECKS)),
+        "all_checks_pass": bool(all(passes(v[margin_output(c)]) for c in CHECKS)),
         "positions_mm": (s * 1e3).tolist(),
         "axial_stiffness_N_per_um": (np.asarray(v["k_total"]) / N_PER_UM).tolist(),
         "screw_stiffness_N_per_um": (np.asarray(v["k_screw"]) / N_PER_UM).tolist(),
@@ -396,8 +396,8 @@ def estimates(ev: Evaluation) -> list:
     est = [e for e in design_estimates(ev.design) if "price" not in e.column]
     if not est:
         return []
-    near = [f"margin_{c}" for c in CHECKS if float(ev.values[f"margin_{c}"]) < NEAR_LIMIT]
-    names = dict(_EST_OUTPUTS) | {m: f"check {m[7:].replace('_', ' ')}" for m in near}
+    near = [margin_output(c) for c in CHECKS if float(ev.values[margin_output(c)]) < NEAR_LIMIT]
+    names = dict(_EST_OUTPUTS) | {m: f"check {check_name(m).replace('_', ' ')}" for m in near}
     moved = resting_on(ev.design, list(names), est)
     return [(e, [names[o] for o in names if any(x is e for x in moved.get(o, ()))]) for e in est]
 

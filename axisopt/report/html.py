@@ -18,6 +18,7 @@ import re
 from dataclasses import dataclass, field
 
 from ..errors import InputError
+from ..search.reported import REPORTED_BY_FIELD
 from ..search.result import OPTIMAL
 from ..study.store import OK_STATUSES
 from ..units import N_PER_UM
@@ -421,8 +422,8 @@ def study_page(study, df, text: str, interactive: bool = False) -> Page:
                     lambda n=name, k=key, o=ok: objective_figure(df, n, k, unit, o), 380)
     slots = [c for c in ("screw", "nut", "bearing", "guide", "motor", "coupling") if c in df]
     shown = [c for c in ("case_id", *[n for n, _ in input_columns(study).values()], "status", "reason", "objective",
-                         "parts", "min_stiffness [N/um]", "min_frequency [Hz]", "cost [EUR]") if c in df or
-             c == "parts" and slots]
+                         "parts", *(REPORTED_BY_FIELD[f].column for f in ("min_stiffness", "min_frequency", "cost")))
+             if c in df or c == "parts" and slots]
     sub = df.head(200)
     # the parts in one column (each id unbroken, wrapping between ids): a 1280 px window shows every column
     rows = [[[str(x) for x in r[slots] if isinstance(x, str) and x] or "-" if c == "parts" else _cell(r[c])
@@ -446,7 +447,7 @@ def _cell(v) -> str:
 def diagnose_page(diag, text: str, interactive: bool = False) -> Page:
     """A diagnosis: the verdict first (an effect named and confirmed on held-out data is the diagnosis's
     success: green, never red), then residuals against each factor before and after, and the text."""
-    from ..identify.diagnose import split_by_observation as _split
+    from ..identify.tables.diagnose import split_by_observation as _split
     from .diagnosis import diagnosis_dict, residual_figures
 
     d = diagnosis_dict(diag)

@@ -70,27 +70,27 @@ class OrderedPreload:
 
 def _name(name: str) -> str:
     """A limit's key as the problem file writes it, a check as 'the <check> check'."""
-    from ..model.limits import CHECK_RECORDS
+    from ..model.limits import CHECK_RECORDS, check_name
 
-    return f"the {CHECK_RECORDS[name[7:]].short} check" if name.startswith("margin_") else name
+    return f"the {CHECK_RECORDS[check_name(name)].short} check" if check_name(name) else name
 
 
 def _constraints(problem):
     """What the ordered preload must keep: the problem's limits and check margins (``problem`` None: every
     vendor check at margin 1), the preload ceiling's check included."""
     from ..model import CHECK_LABELS, CHECKS
-    from ..model.limits import CHECK_RECORDS
+    from ..model.limits import CHECK_RECORDS, margin_output
     from ..search.task.constraints import Constraint, build_constraints
 
     def margin(check, m):
-        name = f"margin_{check}"
+        name = margin_output(check)
         return Constraint(name, name, ">=", m, CHECK_RECORDS[check].preload, CHECK_LABELS[check], "", 1.0)
 
     if problem is None:
         return tuple(margin(c, 1.0) for c in CHECKS)
     cons = build_constraints(problem)
     m = problem.margin_map.get("nut_preload", 1.0)
-    if m > 0 and not any(c.name == "margin_nut_preload" for c in cons):
+    if m > 0 and not any(c.name == margin_output("nut_preload") for c in cons):
         cons += (margin("nut_preload", m),)
     return cons
 

@@ -1,7 +1,7 @@
-"""Time-record diagnosis output (:class:`axisopt.identify.idim.TimeDiagnosis`): console text, at most 100
+"""Time-record diagnosis output (:class:`axisopt.identify.records.idim.TimeDiagnosis`): console text, at most 100
 columns, and a JSON-ready dict.  Nothing here prints.
 
-Parameters are shown in the record's coordinate (:data:`axisopt.identify.timemodel.UNITS`); lengths of the
+Parameters are shown in the record's coordinate (:data:`axisopt.identify.records.regression.UNITS`); lengths of the
 lost motion and of residual signatures as table travel through the lead.  A residual signature is put in words
 with its candidate causes and the measurement that would separate them (:data:`SIGNATURE_WORDS`).
 """
@@ -12,11 +12,11 @@ import math
 import textwrap
 
 from ..identify.effects import time_effects
-from ..identify.estimators import Estimate, mode_frequency, rel_error
-from ..identify.idim import TimeDiagnosis
+from ..identify.records.estimators import Estimate, mode_frequency, rel_error
+from ..identify.records.idim import TimeDiagnosis
+from ..identify.records.record import BUTTER_ORDER
+from ..identify.records.regression import UNITS, shape_params, symbol, term, unit_of
 from ..identify.selection import TIME_RULE
-from ..identify.timemodel import UNITS, shape_params, symbol, term, unit_of
-from ..identify.timerecord import BUTTER_ORDER
 
 
 def _fmt(v, s=None):

@@ -10,7 +10,8 @@ and keeps the designs no design of another arrangement dominates."""
 from __future__ import annotations
 
 import time
-from dataclasses import fields, replace
+from dataclasses import dataclass, fields, replace
+from typing import Callable
 
 import numpy as np
 
@@ -21,6 +22,18 @@ from .task.objective import rank_order
 
 _SUMMED = ("combinations", "pruned_by_bound", "exact_evaluations", "nlps_solved", "nlp_failures", "pruned_by_block",
            "pruned_by_dominance")
+
+
+@dataclass(frozen=True)
+class Door:
+    """What solving the arrangements needs of the front door, handed in by it (:func:`.front.solve` calls this
+    stage; the stage calls back through these, so it imports nothing of the front door)."""
+
+    solve: Callable  # front.solve: one arrangement (a problem without arrangements)
+    limit_sensitivities: Callable  # front.limit_sensitivities
+    relax: float  # front.RELAX: the relative relaxation of a limit for its sensitivity
+    sensitivities: bool  # the method's capability (front.METHOD_TABLE)
+    cut_note: Callable  # front.cut_note: what a time limit cut, in words
 
 
 def _miss(res: SolveResult) -> float:
@@ -46,10 +59,11 @@ def _certificate(results) -> Certificate:
     return Certificate(**kw)
 
 
-def _sensitivities(problem: Problem, subs, results, win: int, method: str, deadline: float, cut: list) -> list:
+def _sensitivities(problem: Problem, subs, results, win: int, method: str, deadline: float, cut: list,
+                   door: Door) -> list:
     """The winner's limits, each with the best gain over every arrangement relaxed by front.RELAX (a limit the
     ``deadline`` cuts in any arrangement is left out, its key in ``cut``)."""
-    from .front import RELAX, limit_sensitivities, solve
+    RELAX, limit_sensitivities, solve = door.relax, door.limit_sensitivities, door.solve
 
     best = results[win].best.objective
     per = [limit_sensitivities(sub, r, deadline=deadline, cut=cut) if r.best is not None else None
@@ -83,10 +97,11 @@ def _sensitivities(problem: Problem, subs, results, win: int, method: str, deadl
     return out
 
 
-def _pareto(problem: Problem, method: str, subs, labels, t0: float, time_limit: float = 100.0) -> SolveResult:
+def _pareto(problem: Problem, method: str, subs, labels, t0: float, door: Door,
+            time_limit: float = 100.0) -> SolveResult:
     """A Pareto objective over the arrangements: each arrangement's front, merged and filtered to the designs no
     design of any arrangement dominates (each point names its arrangement)."""
-    from .front import solve
+    solve = door.solve
     from .pareto import FIELD, SENSE, nondominated
 
     deadline = t0 + time_limit
@@ -122,15 +137,15 @@ def _pareto(problem: Problem, method: str, subs, labels, t0: float, time_limit: 
 
 
 def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: float,
-                       sensitivities: bool) -> SolveResult:
+                       sensitivities: bool, door: Door) -> SolveResult:
     """Solve every arrangement of ``problem`` with ``method`` and combine (see the module)."""
-    from .front import METHODS_BY_NAME, solve
+    solve = door.solve
 
     t0 = time.perf_counter()
     labels = [lab for lab, _ in problem.arrangements]
     subs = [replace(problem, axis=ax, arrangements=()) for _, ax in problem.arrangements]
     if problem.objective.mode == "pareto":
-        return _pareto(problem, method, subs, labels, t0, time_limit)
+        return _pareto(problem, method, subs, labels, t0, door, time_limit)
     # one time limit for the whole command: each arrangement gets what the ones before it left
     deadline = t0 + time_limit
     results = [solve(sub, method, top=top, time_limit=max(deadline - time.perf_counter(), 1e-3),
@@ -165,11 +180,10 @@ def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: f
               if results[i].status not in (OPTIMAL, INFEASIBLE) and i != win]
     out = replace(res, status=status, best=ranked[0], runners_up=ranked[1:], certificate=cert,
                   message="; ".join(x for x in [res.message] + notes if x), arrangement=labels[win], arrangements=n)
-    if sensitivities and METHODS_BY_NAME[method].sensitivities and problem.objective.mode != "lexicographic":
-        from .front import cut_note
-
+    if sensitivities and door.sensitivities and problem.objective.mode != "lexicographic":
+        cut_note = door.cut_note
         cut: list = []
-        out.binding = _sensitivities(problem, subs, results, win, method, deadline, cut)
+        out.binding = _sensitivities(problem, subs, results, win, method, deadline, cut, door)
         if cut:
             out.message = "; ".join(x for x in (out.message, cut_note("sensitivities", sorted(set(cut)))) if x)
     out.certificate.estimated = results[win].certificate.estimated
@@ -177,4 +191,4 @@ def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: f
     return out
 
 
-__all__ = ["solve_arrangements"]
+__all__ = ["Door", "solve_arrangements"]

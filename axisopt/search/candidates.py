@@ -9,6 +9,7 @@ from .. import model
 from ..design import Design
 from ..model.limits import LIMITS
 from ..problem import RESULT_GOALS
+from .reported import REPORTED
 from .result import CANDIDATE_FIELDS, Candidate, goal_value
 from .task.objective import ObjectiveSpec
 from .task.space import Space
@@ -33,7 +34,7 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
                     screw_grade=None if space.grades is None else str(space.grades[n]),
                     name=name or f"{space.problem.name}-{rank or 'design'}",
                     source=space.problem.source, assumed=space.problem.assumed)
-    # the model on numpy: the same formula as the CasADi Function (tests/model/test_model.py holds them to 1e-10)
+    # the model on numpy: the same formula as the CasADi Function (tests/model/test_function.py holds them to 1e-10)
     # without building that Function for every new axis (a study's cases, the closest designs)
     ev = model.evaluate(design, use_casadi=False)
     v = ev.values
@@ -41,14 +42,15 @@ def candidate_values(space: Space, combo: int, preload: float, objective: Object
     outputs = {lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v}
     # the goals' values that are Candidate fields (the others the Candidate reads from ``outputs``)
     goals = {g.field: goal_value(outputs, g) for g in RESULT_GOALS if g.field in CANDIDATE_FIELDS}
+    # the reported values read from a model output (the others are goals' fields)
+    reported = {r.field: float(np.min(v[r.output])) / r.per for r in REPORTED if r.output}
     return Candidate(rank=rank, combination=int(combo), mounting=mounting, screw=str(screw["id"]),
                      nut=str(nut["id"]), bearing=str(bearing["id"]), guide=str(guide["id"]), nut_preload=preload,
                      motor="" if motor is None else str(motor["id"]),
                      coupling="" if coupling is None else str(coupling["id"]),
                      reduction="" if reduction is None else str(reduction["id"]),
                      screw_grade="" if space.grades is None else str(space.grades[n]),
-                     objective=J, drag_torque=float(v["drag_torque"]), life_h=float(v["life"]) / 3600.0,
-                     design=design, outputs=outputs, **goals), v
+                     objective=J, design=design, outputs=outputs, **goals, **reported), v
 
 
 def part_rows(space: Space, n, b, g):

@@ -18,7 +18,15 @@ import numpy as np
 from ..errors import InputError
 from ..model.limits import LIMITS
 from ..problem import GOALS, Problem
-from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, Binding, Certificate, SolveResult
+from .result import (
+    INFEASIBLE,
+    OPTIMAL,
+    SOLVER_FAILED,
+    TIME_LIMIT,
+    Binding,
+    Certificate,
+    SolveResult,
+)
 from .task import Task
 
 if TYPE_CHECKING:
@@ -153,9 +161,11 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
     m = METHODS_BY_NAME[method]
     if problem.arrangements:  # search.counterbalance / search.twin_drive: each arrangement solved, the best kept
-        from .arrangements import solve_arrangements
+        from .arrangements import Door, solve_arrangements
 
-        return solve_arrangements(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
+        door = Door(solve, limit_sensitivities, RELAX, m.sensitivities, cut_note)
+        return solve_arrangements(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities,
+                                  door=door)
     t0 = time.perf_counter()
     ob = problem.objective
     if problem.axis.twin_drive is not None and not m.pareto:
@@ -186,7 +196,7 @@ def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limi
                 res.message = "; ".join(x for x in (res.message, cut_note("sensitivities", cut)) if x)
         if sensitivities and res.infeasibility is not None and method == "default":
             # the infeasible answer's what-if: an axis change the search verifies, before any limit is relaxed
-            from .advice import design_changes
+            from .infeasible.advice import design_changes
             cut = []
             res.infeasibility.design_changes = design_changes(problem, task.constraints, res.infeasibility,
                                                               space=task.space, deadline=deadline, cut=cut)
@@ -276,8 +286,8 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
                            time.perf_counter() - t0, message="the time limit came before any design was found: not "
                            "proven infeasible (a longer --time-limit searches on)")
     if not np.isfinite(ex.objective).any():
-        from .explain import explain_infeasible
-        from .relax import missing_values, rank_relaxations
+        from .infeasible.explain import explain_infeasible
+        from .infeasible.relax import missing_values, rank_relaxations
 
         why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive",
                                  deadline=deadline)
@@ -288,7 +298,7 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
             message += ("; the explanation stopped at the time limit: the closest designs are those found by then "
                         "(a longer --time-limit explains further)")
         elif why.cut:
-            from .explain import MAX_OPENED
+            from .infeasible.explain import MAX_OPENED
 
             message += (f"; a limit no combination meets on its own makes every design miss: the explanation stopped "
                         f"after scoring {MAX_OPENED:,} combinations, and the closest designs (and what to relax for "

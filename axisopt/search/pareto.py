@@ -138,8 +138,8 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     res = SolveResult(status, method, problem.name, problem.objective.label, "-", pts[0] if pts else None, [],
                       cert, time.perf_counter() - t0, pareto=pf)
     if not len(front):
-        from .explain import explain_infeasible
-        from .relax import missing_values, rank_relaxations
+        from .infeasible.explain import explain_infeasible
+        from .infeasible.relax import missing_values, rank_relaxations
 
         exhaustive = method == "exhaustive"
         res.infeasibility = explain_infeasible(space, constraints, spec, every_combination=exhaustive)

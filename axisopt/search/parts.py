@@ -16,12 +16,12 @@ from dataclasses import replace
 import numpy as np
 
 from .. import model
-from ..catalog import COLUMNS, USER_STATUS
+from ..catalog.columns import COLUMNS, USER_STATUS
+from ..catalog.grades import grade_table
+from ..catalog.parttable import PartTable
 from ..errors import InputError
-from ..grades import grade_table
 from ..model.chain import drive_torsional_stiffness
 from ..model.params import columns_read
-from ..parttable import PartTable
 from ..physics import nut as pnut
 from ..problem import Problem
 from .task.space import SCREEN_CHUNK, Space
@@ -43,7 +43,7 @@ def _arrays(t, cols):
 def vendor_filled(t: PartTable, table: str) -> PartTable:
     """The rows of a part table with a vendor value in every column the model would otherwise estimate
     (``catalog.COLUMNS``: an optional column with an ``estimate``)."""
-    from ..catalog import COLUMNS
+    from ..catalog.columns import COLUMNS
 
     keep = np.ones(len(t), dtype=bool)
     for c in COLUMNS[table]:

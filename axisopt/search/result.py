@@ -12,6 +12,7 @@ import numpy as np
 
 from ..display import fmt, fmt_objective, frame, html_fields, html_table, one_line
 from ..problem import GOALS, RESULT_GOALS
+from .reported import REPORTED
 
 
 @dataclass(frozen=True)
@@ -92,15 +93,26 @@ class NLPResult:
 
 
 # Candidate fields as table columns, the display unit in the name (Candidate's fields are in these units).
-CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"), ("min_stiffness", "min_stiffness [N/um]"),
-                     ("min_frequency", "min_frequency [Hz]"), ("cost", "cost [EUR]"),
-                     ("moving_mass", "moving_mass [kg]"), ("total_mass", "total_mass [kg]"),
-                     ("drag_torque", "drag_torque [N.m]"), ("life_h", "life [h]"))
+CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"),) + tuple((r.field, r.column) for r in REPORTED)
+
+
+def _reported_fields(cls):
+    """The :data:`REPORTED` values as fields of ``cls`` right after its ``objective`` (before ``dataclass``)."""
+    ann = {}
+    for k, t in cls.__dict__["__annotations__"].items():
+        ann[k] = t
+        if k == "objective":
+            ann.update({r.field: "float" for r in REPORTED})
+    cls.__annotations__ = ann
+    cls.FIELD_NOTES = MappingProxyType({r.field: r.doc for r in REPORTED})  # the API reference's meanings
+    return cls
 
 
 @dataclass
+@_reported_fields
 class Candidate:
-    """One design: parts, continuous values and its evaluation summary (display units)."""
+    """One design: parts, continuous values and its evaluation summary (display units): after ``objective``
+    one float field per :data:`REPORTED` value (``min_stiffness``, ``min_frequency``, ``cost``, ...)."""
 
     rank: int  # 1: the best
     combination: int  # combination number in the search space
@@ -111,13 +123,6 @@ class Candidate:
     guide: str
     nut_preload: float  # [N]
     objective: float  # in SolveResult.objective_unit
-    min_stiffness: float  # [N/um], minimum over the model position grid
-    min_frequency: float  # [Hz]
-    cost: float  # [EUR]
-    moving_mass: float  # [kg]
-    total_mass: float  # [kg]
-    drag_torque: float  # [N*m]
-    life_h: float  # nut L10 life [h]
     design: object = field(default=None, repr=False, compare=False)  # axisopt.design.Design
     misses: dict = field(default_factory=dict)  # infeasible problems: limit -> relative miss
     motor: str = ""  # servo motor id ('' without drive search)
@@ -185,11 +190,10 @@ class Candidate:
 
     def __repr__(self) -> str:
         misses = ", ".join(f"{k} by {fmt(100 * v)} %" for k, v in self.misses.items())
-        return one_line("Candidate", f"rank {self.rank}, {self.mounting} {' / '.join(self.parts().values())}", {
-            "objective": fmt_objective(self.objective), "preload": fmt(self.nut_preload, "N"),
-            "min stiffness": fmt(self.min_stiffness, "N/um"), "1st frequency": fmt(self.min_frequency, "Hz"),
-            "cost": fmt(self.cost, "EUR"), "moving mass": fmt(self.moving_mass, "kg"),
-            "drag": fmt(self.drag_torque, "N.m"), "nut life": fmt(self.life_h, "h"), "misses": misses})
+        shown = {"objective": fmt_objective(self.objective), "preload": fmt(self.nut_preload, "N")}
+        shown.update({r.label: fmt(getattr(self, r.field), r.unit) for r in REPORTED if r.label})
+        return one_line("Candidate", f"rank {self.rank}, {self.mounting} {' / '.join(self.parts().values())}",
+                        shown | {"misses": misses})
 
     def _repr_html_(self) -> str:
         return html_table([self.row()], repr(self))
@@ -390,7 +394,7 @@ class DesignChange:
 
 @dataclass
 class Relaxation:
-    """A limit to relax so that a design becomes feasible (:func:`axisopt.search.relax.rank_relaxations`)."""
+    """A limit to relax so that a design becomes feasible (:func:`axisopt.search.infeasible.relax.rank_relaxations`)."""
 
     key: str  # where it sits in the problem file, e.g. 'limits.max_cost', 'limits.margins.critical_speed'
     label: str

@@ -15,6 +15,7 @@ import time
 import numpy as np
 
 from .. import model
+from ..model.limits import margin_output
 from .bounds import SCREEN_RTOL, bound_positions, relaxed_ok, screen_ok
 from .drivebounds import DRIVE_BEARING_GROUPS, PER_DRIVE_MIN, drive_hull
 from .task.constraints import Constraint, End, reads_regen
@@ -255,12 +256,14 @@ def interval_min_abs(t_lo, t_hi):
 # The torque checks convex in the nut preload (model.limits CONVEX), each with the model outputs its margin reads:
 # (phase torques, the steady thrust that bounds it from below, the needed value, zone factors or None, peak or RMS)
 CONVEX_TORQUES = {
-    "margin_motor_peak_torque": ("duty_torques", "thrust_torque", "needed_motor_peak_torque", "zone_factors", True),
-    "margin_motor_rated_torque": ("duty_torques", "mean_thrust_torque", "needed_motor_rated_torque", None, False),
-    "margin_reduction_accel_torque": ("output_torques", "output_thrust_torque", "needed_reduction_accel_torque",
-                                      None, True),
-    "margin_reduction_rated_torque": ("output_torques", "output_mean_thrust_torque",
-                                      "needed_reduction_rated_torque", None, False),
+    margin_output("motor_peak_torque"): ("duty_torques", "thrust_torque", "needed_motor_peak_torque",
+                                         "zone_factors", True),
+    margin_output("motor_rated_torque"): ("duty_torques", "mean_thrust_torque", "needed_motor_rated_torque",
+                                          None, False),
+    margin_output("reduction_accel_torque"): ("output_torques", "output_thrust_torque",
+                                              "needed_reduction_accel_torque", None, True),
+    margin_output("reduction_rated_torque"): ("output_torques", "output_mean_thrust_torque",
+                                              "needed_reduction_rated_torque", None, False),
 }
 
 

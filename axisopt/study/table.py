@@ -14,8 +14,16 @@ import math
 import re
 from pathlib import Path
 
-from ..fileio import atomic_file, csv_safe, make_output_dir, save_figure, tidy_layout, write_text_atomic
+from ..fileio import (
+    atomic_file,
+    csv_safe,
+    make_output_dir,
+    save_figure,
+    tidy_layout,
+    write_text_atomic,
+)
 from ..problem import GOALS
+from ..search.reported import REPORTED
 from .store import OK_STATUSES, CaseStore
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
@@ -26,14 +34,8 @@ RESULT_COLUMNS = (
     ("bearing", ("best", "bearing")), ("guide", ("best", "guide")),
     ("motor", ("best", "motor")), ("coupling", ("best", "coupling")), ("reduction", ("best", "reduction")),
     ("nut_preload [N]", ("best", "nut_preload")),
-    ("min_stiffness [N/um]", ("best", "min_stiffness")),
-    ("min_stiffness_at [mm]", ("profile", "min_stiffness_position_mm")),
-    ("min_frequency [Hz]", ("best", "min_frequency")),
-    ("min_frequency_at [mm]", ("profile", "min_frequency_position_mm")),
-    ("weakest_link", ("profile", "weakest_link")),
-    ("cost [EUR]", ("best", "cost")), ("moving_mass [kg]", ("best", "moving_mass")),
-    ("total_mass [kg]", ("best", "total_mass")), ("drag_torque [N.m]", ("best", "drag_torque")),
-    ("life [h]", ("best", "life_h")),
+    # the values a result reports of its best design (search.result.REPORTED), each with its profile columns
+    *((col, key) for r in REPORTED for col, key in ((r.column, ("best", r.field)), *r.profile)),
     ("peak_torque [N.m]", ("drive", "peak_torque_Nm")), ("rms_torque [N.m]", ("drive", "rms_torque_Nm")),
     ("motor_speed [rpm]", ("drive", "motor_speed_rpm")), ("inertia_ratio", ("drive", "inertia_ratio")),
     ("proven", ("certificate", "proven")), ("gap", ("certificate", "gap")),
@@ -228,7 +230,9 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
     its non-dominated cases joined within each machine (cases of different axis inputs are not joined)."""
     import matplotlib
 
-    from ..figure import Figure  # outside pyplot: no backend is chosen (a notebook's stays as it was)
+    from ..figure import (
+        Figure,  # outside pyplot: no backend is chosen (a notebook's stays as it was)
+    )
 
     files = {}
     ok = df[df["status"].isin(OK_STATUSES)]

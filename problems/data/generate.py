@@ -12,8 +12,8 @@ import numpy as np
 
 from axisopt.design import load_design
 from axisopt.identify import plant_from_design
-from axisopt.identify.data import write_dataset
-from axisopt.identify.synth import simulate
+from axisopt.identify.tables.data import write_dataset
+from axisopt.identify.tables.synth import simulate
 
 HERE = Path(__file__).resolve().parent
 

@@ -5,7 +5,7 @@ loop, 1 kHz, trapezoidal moves of 2..350 mm/s in both directions.  Recorded: tim
 scale, quantised), motor force at the table (the drive's current times its force constant) and the position
 reference.  The axis: 620 kg moving (table 306 kg plus the screw and motor inertia reflected through the
 10 mm lead), Coulomb 500 N, viscous 1200 N s/m, and a hidden Stribeck rise of 160 N decaying with
-3 mm/s -- the friction the design model does not have.  Simulated by axisopt.identify.timesynth.
+3 mm/s -- the friction the design model does not have.  Simulated by axisopt.identify.records.synth.
 
 table_x_ripple_est.csv (8 s) and table_x_ripple_val.csv (5 s): the same axis without the Stribeck rise but
 with a force ripple of 45 N over 25 mm of travel (a nut whose ball circuit spans 2.5 turns of the 10 mm
@@ -34,7 +34,7 @@ import math
 from dataclasses import replace
 from pathlib import Path
 
-from axisopt.identify.timesynth import AxisTruth, LoopSettings, simulate_axis
+from axisopt.identify.records.synth import AxisTruth, LoopSettings, simulate_axis
 
 HERE = Path(__file__).resolve().parent
 TRUTH = AxisTruth(mass=620.0, viscous=1200.0, coulomb=500.0, stribeck=160.0, stribeck_v=0.003)

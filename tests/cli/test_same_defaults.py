@@ -36,8 +36,8 @@ def test_python_and_command_line_defaults_agree(fn, param, command, dest):
 
 
 def test_the_identify_pipelines_take_the_same_default():
-    from axisopt.identify.diagnose import MAX_EFFECTS, diagnose
-    from axisopt.identify.idim import diagnose_time_files
+    from axisopt.identify.records.idim import diagnose_time_files
+    from axisopt.identify.tables.diagnose import MAX_EFFECTS, diagnose
 
     assert inspect.signature(diagnose).parameters["max_effects"].default == MAX_EFFECTS
     assert inspect.signature(diagnose_time_files).parameters["max_effects"].default == MAX_EFFECTS

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 from cli_helpers import one_line_error, write_file
 
-from axisopt.catalog import SHIPPED_DIR
+from axisopt.catalog.columns import SHIPPED_DIR
 from axisopt.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]

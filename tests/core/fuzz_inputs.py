@@ -754,14 +754,14 @@ _DATA_CACHE: dict = {}
 
 def synthetic_datasets() -> dict:
     """Natural-frequency, friction and frequency-response tests of the shipped table_x axis (made once per
-    process with ``axisopt.identify.synth``, as problems/data/generate.py makes the stiffness test)."""
+    process with ``axisopt.identify.tables.synth``, as problems/data/generate.py makes the stiffness test)."""
     if not _DATA_CACHE:
         import numpy as np
 
         from axisopt.design import load_design
         from axisopt.identify import plant_from_design
-        from axisopt.identify.data import write_dataset
-        from axisopt.identify.synth import simulate
+        from axisopt.identify.tables.data import write_dataset
+        from axisopt.identify.tables.synth import simulate
 
         plant = plant_from_design(load_design(PROBLEMS / DATA_DESIGN))
         v = np.r_[np.linspace(-0.5, -0.005, 8), np.linspace(0.005, 0.5, 8)]

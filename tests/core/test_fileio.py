@@ -220,7 +220,7 @@ def test_size_caps_are_checked_before_reading(tmp_path, monkeypatch):
 
 
 def test_diagnose_row_cap(tmp_path, capsys, monkeypatch):
-    import axisopt.identify.data as data
+    import axisopt.identify.tables.data as data
 
     monkeypatch.setattr(data, "MAX_DATA_ROWS", 20)
     src = (PROBLEMS / "data" / "table_x_stiffness.csv").read_text()
@@ -231,7 +231,7 @@ def test_diagnose_row_cap(tmp_path, capsys, monkeypatch):
 
 
 def test_time_record_sample_cap(capsys, monkeypatch):
-    import axisopt.identify.timerecord as tr
+    import axisopt.identify.records.record as tr
 
     monkeypatch.setattr(tr, "MAX_TIME_SAMPLES", 300)
     data = PROBLEMS / "data"

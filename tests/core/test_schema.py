@@ -352,31 +352,6 @@ def test_the_schema_is_json_and_describes_each_key():
     assert "length" in stroke["description"] and "e.g." in stroke["description"]
 
 
-# ----------------------------------------------------------------------------------------------------- the CLI
-
-def test_cli_prints_and_writes_the_schema(tmp_path, capsys):
-    assert main(["schema", "design"]) == 0
-    assert json.loads(capsys.readouterr().out) == json_schema("design")
-    out = tmp_path / "design.schema.json"
-    assert main(["schema", "problem", "--out", str(out)]) == 0
-    assert json.loads(out.read_text()) == json_schema("problem")
-    assert capsys.readouterr().out == ""
-
-
-@pytest.mark.parametrize("argv", [["schema", "nope"], ["schema"], ["schema", "design", "--out",
-                                                                    "/nonexistent/dir/x.json"]])
-def test_cli_bad_input_is_one_line_and_exit_2(capsys, argv):
-    assert main(argv) == 2
-    err = capsys.readouterr().err.strip()
-    assert err.startswith("error:") and "\n" not in err, err
-
-
-def test_cli_kinds_are_the_schema_kinds():
-    from axisopt.cli.schema import FILE_KINDS
-
-    assert FILE_KINDS == KINDS_OF_FILE
-
-
 def test_schema_ids_are_urns_and_a_wrong_unit_reads_well(validators):
     """Issue 30 item 6: no example domain as $id; an editor shows the quantity's patternErrorMessage (kind,
     example, units) in place of the 200-character regular expression."""

@@ -46,7 +46,7 @@ def test_yaml_round_trip(tmp_path_factory, stroke, mass, speed, load, inline, mo
 def test_yaml_round_trip_with_a_reduction(tmp_path, inline):
     """A design with a reduction part writes it (id or inline, vendor units) and leaves out the axis's reduction
     values (the part sets them; the reader refuses both): load(dump(d)) evaluates the same."""
-    from axisopt.catalog import default_catalog
+    from axisopt.catalog.loading import default_catalog
 
     red = default_catalog().part("reductions", "BK-NPT035-MF-4")
     d = dataclasses.replace(BASE, reduction=red,

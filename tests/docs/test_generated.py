@@ -28,7 +28,7 @@ def test_generated_page_is_up_to_date(page):
 
 
 def test_yaml_reference_lists_every_limit_check_and_column():
-    from axisopt.catalog import COLUMNS
+    from axisopt.catalog.columns import COLUMNS
     from axisopt.model.limits import CHECK_TABLE, LIMIT_TABLE
 
     text = _gen().yaml_reference()

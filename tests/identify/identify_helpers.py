@@ -1,5 +1,5 @@
 """Helpers of the identify tests: the shipped table_x axis, measured tables written from a law or a simulated
-data set, and time records simulated by :mod:`axisopt.identify.timesynth` (an estimation run and a validation
+data set, and time records simulated by :mod:`axisopt.identify.records.synth` (an estimation run and a validation
 run, seeds ``seed`` and ``seed + 500``).  The module-scoped ``plant`` fixture is in conftest.py."""
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from axisopt.identify.timesynth import AxisTruth, simulate_axis
+from axisopt.identify.records.synth import AxisTruth, simulate_axis
 from axisopt.report.timediag import time_diagnosis_dict
 
 DATA = Path(__file__).resolve().parents[2] / "problems" / "data"

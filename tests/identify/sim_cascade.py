@@ -1,5 +1,5 @@
 """A feed axis simulated by the tests' own physics, written apart from axisopt (neither the identification's
-columns nor axisopt.identify.timesynth): a P-PI cascade (position P, velocity PI on a filtered backward
+columns nor axisopt.identify.records.synth): a P-PI cascade (position P, velocity PI on a filtered backward
 difference of the quantised position), a generalised Stribeck curve, friction growing with the nut's axial
 force and the guides' normal load, viscous and Coulomb levels in temperature, a cogging force periodic in the
 motor angle, and coloured (AR(1)) noise on the recorded force.  Records are written as the CSV the

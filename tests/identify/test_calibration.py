@@ -14,7 +14,7 @@ from axisopt.design import load_design
 from axisopt.errors import InputError
 from axisopt.identify import diagnose, plant_from_design
 from axisopt.identify.calibration import apply_calibration
-from axisopt.identify.synth import simulate
+from axisopt.identify.tables.synth import simulate
 
 GOOD_CAL = """axisopt_calibration: 1
 design: {design}
@@ -89,7 +89,7 @@ def test_calibration_file_is_validated(tmp_path, capsys, old, new, words):
 def test_calibration_baseline_names_match_the_fit():
     """The names and kinds a calibration may carry are the ones diagnose fits (measure.baseline_params)."""
     from axisopt.identify.calibration import BASELINE_KINDS
-    from axisopt.identify.measure import baseline_params
+    from axisopt.identify.tables.measure import baseline_params
 
     params = baseline_params({"stiffness", "friction", "frf"}, plant_from_design(load_design(DESIGN)))
     assert {p.name: p.kind for p in params} == BASELINE_KINDS

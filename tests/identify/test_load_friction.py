@@ -11,7 +11,7 @@ from sim_cascade import Axis, Loop, simulate, write
 from sim_tables import friction_rows, write_table
 
 from axisopt.identify import diagnose, read_dataset
-from axisopt.identify.idim import diagnose_time_files
+from axisopt.identify.records.idim import diagnose_time_files
 from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 from axisopt.report.timediag import NOISE_RATIO, time_diagnosis_text
 

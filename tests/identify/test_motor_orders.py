@@ -12,7 +12,7 @@ from sim_cascade import Axis, Loop, simulate, write
 
 from axisopt.design import load_design
 from axisopt.identify import plant_from_design
-from axisopt.identify.idim import diagnose_time_files
+from axisopt.identify.records.idim import diagnose_time_files
 from axisopt.report.timediag import time_diagnosis_text
 
 

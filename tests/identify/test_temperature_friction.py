@@ -10,7 +10,7 @@ from sim_cascade import Axis, Loop, simulate, write
 from sim_tables import friction_rows, write_table
 
 from axisopt.identify import diagnose, read_dataset
-from axisopt.identify.idim import diagnose_time_files
+from axisopt.identify.records.idim import diagnose_time_files
 
 
 def _names(diag):

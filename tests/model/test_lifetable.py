@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from test_life_duty_cycle import DESIGN
+from test_checks_life_duty_cycle import DESIGN
 
 from axisopt.cli import main
 from axisopt.design import load_design

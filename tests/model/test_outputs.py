@@ -9,11 +9,24 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from axisopt.catalog import load_catalogs
+from axisopt.catalog.loading import load_catalogs
 from axisopt.design import load_design
-from axisopt.model import OUTPUT_TABLE, OUTPUTS, PROFILE_OUTPUTS, SCALAR_OUTPUTS, axis_response, design_params
+from axisopt.model import (
+    OUTPUT_TABLE,
+    OUTPUTS,
+    PROFILE_OUTPUTS,
+    SCALAR_OUTPUTS,
+    axis_response,
+    design_params,
+)
 from axisopt.model import positions as stroke_positions
-from axisopt.model.outputs import CHAIN_OUTPUTS, COUPLING_OUTPUTS, DRIVE_OUTPUTS, EXTRA_OUTPUTS, REGEN_OUTPUTS
+from axisopt.model.outputs import (
+    CHAIN_OUTPUTS,
+    COUPLING_OUTPUTS,
+    DRIVE_OUTPUTS,
+    EXTRA_OUTPUTS,
+    REGEN_OUTPUTS,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 CHECK_PREFIXES = ("margin_", "available_", "needed_")

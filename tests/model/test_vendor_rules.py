@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from axisopt.catalog import default_catalog
+from axisopt.catalog.loading import default_catalog
 from axisopt.design import load_design
 from axisopt.model import evaluate
 from axisopt.model.drive import drive

@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from axisopt.grades import grade_table
+from axisopt.catalog.grades import grade_table
 from axisopt.physics import accuracy as pa
 from axisopt.physics.screw import screw_stiffness
 from axisopt.physics.thermal import thermal_growth

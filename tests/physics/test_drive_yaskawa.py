@@ -17,7 +17,7 @@ from math import pi
 
 import pytest
 
-from axisopt.catalog import default_catalog
+from axisopt.catalog.loading import default_catalog
 from axisopt.model.drive import drive
 from axisopt.physics import drive as pdrive
 from axisopt.physics import motion

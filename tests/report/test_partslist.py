@@ -32,7 +32,7 @@ def test_ordered_preload_stays_in_the_nuts_catalog_range():
     # a nut whose catalog range starts at 1534 N: 1534.5 N is nearest 1530 N, below the range, so it goes up
     from dataclasses import replace
 
-    from axisopt.parttable import Row
+    from axisopt.catalog.parttable import Row
     from axisopt.report.partslist import order_preload
 
     d = load_design(P / "vmc_x_design.yaml")
@@ -47,7 +47,7 @@ def test_ordered_preload_stays_in_the_nuts_catalog_range():
 def test_ordered_preload_keeps_a_digit_more_when_both_round_neighbours_break():
     from dataclasses import replace
 
-    from axisopt.parttable import Row
+    from axisopt.catalog.parttable import Row
     from axisopt.report.partslist import order_preload, preload_step
 
     assert [preload_step(p) for p in (95.0, 245.0, 3183.3, 12345.0)] == [10.0, 10.0, 10.0, 100.0]

@@ -7,7 +7,8 @@ import math
 import numpy as np
 import pandas as pd
 
-from axisopt.catalog import SCHEMA, Catalog
+from axisopt.catalog.columns import SCHEMA
+from axisopt.catalog.loading import Catalog
 from axisopt.design import Axis
 from axisopt.model import CHECKS
 from axisopt.problem import Objective, Problem, Restrictions

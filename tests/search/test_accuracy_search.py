@@ -11,7 +11,7 @@ import pytest
 from search_synthetic import add_drives, assert_same_answer, make_catalog, make_problem
 
 from axisopt import model
-from axisopt.grades import PRECISION_GRADES, grade_table
+from axisopt.catalog.grades import PRECISION_GRADES, grade_table
 from axisopt.search import solve
 from axisopt.search.parts import build_space
 

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from axisopt import mathx as mx
 from axisopt.physics import drive as pdr
 from axisopt.search import drivebounds
-from axisopt.search import explain as E
+from axisopt.search.infeasible import explain as E
 from axisopt.search.interval import Interval, ends
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints

@@ -3,7 +3,7 @@ whose turning screw would whirl), and never puts one on a screw not fixed at bot
 
 from __future__ import annotations
 
-from axisopt.catalog import default_catalog
+from axisopt.catalog.loading import default_catalog
 from axisopt.problem import load_problem
 from axisopt.search import solve
 

@@ -24,12 +24,8 @@ from axisopt.cli import main
 from axisopt.errors import InputError
 from axisopt.problem import Objective, load_problem
 from axisopt.search import solve
-from axisopt.search.exhaustive import exhaustive_search
-from axisopt.search.pareto import nondominated
 from axisopt.search.parts import build_space
-from axisopt.search.preload import exact_solve
 from axisopt.search.task.constraints import build_constraints
-from axisopt.search.task.objective import objective_spec
 
 PROBLEMS = sorted((Path(__file__).resolve().parents[2] / "problems").glob("*_problem.yaml"))
 
@@ -324,7 +320,7 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
     """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
     the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
     combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
-    from axisopt.search.explain import RULE_WEIGHT, miss_scores, weight
+    from axisopt.search.infeasible.explain import RULE_WEIGHT, miss_scores, weight
     from axisopt.search.task.constraints import as_vector
     from axisopt.search.task.space import respond
 
@@ -383,26 +379,6 @@ def test_life_limit_makes_preload_interior():
     assert b.life_h == pytest.approx(free.life_h * 1.5, rel=1e-4)
 
 
-def test_ipopt_agrees_with_exact_1d_solve():
-    from axisopt.search import polish as nlp
-
-    cat = make_catalog(np.random.default_rng(3))
-    make_double(cat)
-    p = make_problem(cat, axial_load=800.0, limits={"max_drag_torque": 0.6})
-    sp, cons, spec = build_space(p), build_constraints(p), objective_spec("stiffness")
-    ex = exact_solve(sp, np.arange(sp.size), cons, spec)
-    rng = np.random.default_rng(0)
-    for j in rng.choice(np.nonzero(ex.feasible)[0], size=4, replace=False):
-        m, n, b, g = (int(v) for v in sp.unravel(ex.idx[j]))
-        prm = sp.params_flat(sp.mountings[m], np.array([n]), np.array([b]), np.array([g]))
-        prm = model.one_design(prm)
-        r = nlp.solve_preload(sp.mountings[m], sp.positions(sp.mountings[m]), prm, sp.preload_lo[n],
-                              sp.preload_hi[n], cons, spec, guess=0.5 * (sp.preload_lo[n] + sp.preload_hi[n]))
-        assert r.success, r.status
-        assert r.objective == pytest.approx(ex.objective[j], rel=1e-6)
-        assert r.preload == pytest.approx(ex.preload[j], rel=1e-5)
-
-
 def test_lexicographic_equals_exhaustive():
     cat = make_catalog(np.random.default_rng(11))
     ob = Objective(mode="lexicographic", order=("frequency", "stiffness"), tolerance=0.05)
@@ -436,32 +412,6 @@ def test_sensitivity_reports_binding_drag_limit():
     by = {b.limit: b for b in r.binding}
     assert by["max_drag_torque"].binding and by["max_drag_torque"].objective_gain > 0
     assert not by["max_cost"].binding
-
-
-def test_nondominated_matches_pairwise():
-    rng = np.random.default_rng(2)
-    P = np.round(rng.normal(size=(700, 4)), 1)  # rounding makes ties and duplicates
-    ge = (P[:, None, :] >= P[None, :, :]).all(-1)
-    gt = (P[:, None, :] > P[None, :, :]).any(-1)
-    naive = np.nonzero(~(ge & gt).any(0))[0]
-    np.testing.assert_array_equal(nondominated(P, block=64), naive)
-
-
-def test_pareto_default_equals_exhaustive():
-    cat = make_catalog(np.random.default_rng(4))
-    ob = Objective(mode="pareto", pareto=("stiffness", "frequency", "cost", "total_mass"))
-    p = make_problem(cat, objective=ob, limits={"max_drag_torque": 1.0})
-    d, e = solve(p, "default"), solve(p, "exhaustive")
-    assert d.status == e.status == "optimal"
-    assert sorted(c.combination for c in d.pareto.points) == sorted(c.combination for c in e.pareto.points)
-    # brute force over the exact per-combination values
-    sp = build_space(p)
-    ex, _ = exhaustive_search(sp, build_constraints(p), objective_spec("stiffness"))
-    ok = np.nonzero(ex.feasible)[0]
-    P = np.column_stack([ex.min_stiffness[ok], ex.min_frequency[ok], -ex.cost[ok], -ex.total_mass[ok]])
-    ge = (P[:, None, :] >= P[None, :, :]).all(-1)
-    gt = (P[:, None, :] > P[None, :, :]).any(-1)
-    assert sorted(ex.idx[ok][~(ge & gt).any(0)].tolist()) == sorted(c.combination for c in d.pareto.points)
 
 
 # ----------------------------------------------------------------------------- YAML and CLI
@@ -545,18 +495,6 @@ def test_motor_flange_restriction(tmp_path, capsys):
             assert "\n" not in err and "max_motor_flange" in err
             continue
         assert sorted(build_space(load_problem(f)).motors["id"]) == want
-
-
-def test_top_limits_the_printed_pareto_front(capsys):
-    from axisopt.cli.solve import format_pareto
-
-    p = make_problem(make_catalog(np.random.default_rng(4), n_screws=3, nuts_per_screw=2, n_bearings=3, n_guides=3),
-                     objective=Objective(mode="pareto", pareto=("stiffness", "cost")))
-    front = solve(p, "default").pareto
-    assert len(front.points) >= 3
-    rows = [ln for ln in format_pareto(front, 2).splitlines() if ln[:5].strip().isdigit()]
-    assert [int(r.split()[0]) for r in rows] == [1, 2]
-    assert len([ln for ln in format_pareto(front).splitlines() if ln[:5].strip().isdigit()]) == len(front.points)
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 3])

@@ -6,7 +6,14 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
-from search_synthetic import add_drives, add_reductions, assert_same_answer, make_catalog, make_double, make_problem
+from search_synthetic import (
+    add_drives,
+    add_reductions,
+    assert_same_answer,
+    make_catalog,
+    make_double,
+    make_problem,
+)
 
 from axisopt import model
 from axisopt.search import solve

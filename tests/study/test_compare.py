@@ -43,21 +43,6 @@ def test_compare_designs_and_a_problem(tmp_path, capsys):
     assert png.stat().st_size > 10_000
 
 
-def test_compare_json_to_stdout_and_errors(tmp_path, capsys):
-    assert main(["compare", str(PROBLEMS / "teaching_design.yaml"), "--json", "-"]) == 0
-    assert json.loads(capsys.readouterr().out)["designs"][0]["label"] == "teaching axis 25x5"
-    bad = tmp_path / "bad.yaml"
-    bad.write_text("name: x\naxis: {stroke: 800}\nparts: {}\n")
-    assert main(["compare", str(bad)]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "stroke" in err
-
-
-def test_compare_infeasible_problem_exits_1(capsys):
-    assert main(["compare", str(PROBLEMS / "teaching_design.yaml"), str(PROBLEMS / "infeasible_problem.yaml")]) == 1
-    assert "no design to compare" in capsys.readouterr().err
-
-
 def test_compare_shows_the_drive_side_by_side(tmp_path, capsys):
     """A design with a motor next to one without: motor and coupling rows, the torques needed against the
     motor's catalog values, and the drive figures in the CSV, the same numbers ``evaluate`` computes."""

@@ -91,8 +91,8 @@ def _beta_search(rows, r0, rss) -> dict:
     replaced by v exp(-beta (T - 20 degC)) and the RSS of that fit minimised over beta (log grid, then golden
     section).  A free constant viscous part beside the exponential trades with beta over the few tens of
     kelvin of a warm-up; the joint fit then frees it at this beta."""
-    from ..estimators import lstsq
-    from ..timemodel import matrix
+    from ..records.estimators import lstsq
+    from ..records.regression import matrix
     from .disturbance import golden
 
     W = matrix(rows, ("M", "Fc", "offset"), {})

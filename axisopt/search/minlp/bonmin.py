@@ -17,6 +17,7 @@ import logging
 import os
 import sys
 import time
+import traceback
 
 import casadi as ca
 import numpy as np
@@ -72,6 +73,10 @@ def _build(space, mounting, constraints, objective):
 # Seconds Bonmin may run past the time limit before it is stopped: its own limit is checked between
 # branch-and-bound nodes, and one node's NLP can run for minutes.
 DEADLINE_GRACE = 2.0
+class ChildError(Exception):
+    """What the Bonmin child raised that is not a solver failure (a bug), with the child's traceback."""
+
+
 LOG = logging.getLogger("axisopt.search")
 PROGRESS_EVERY = 10.0  # [s] progress lines on a terminal's stderr
 
@@ -92,11 +97,16 @@ def _solve_with_deadline(work, deadline: float, label: str):
 
     def child():
         recv.close()
+        sent = False
         try:
             send.send(work())
-        except BaseException as exc:  # noqa: BLE001 - the parent reports it
+            sent = True
+        except (RuntimeError, MemoryError) as exc:  # CasADi's errors building the problem, no memory for it
             send.send(("error", f"{type(exc).__name__}: {exc}"))
+            sent = True
         finally:
+            if not sent:  # anything else is a bug, not a solver failure: the parent raises it (ChildError)
+                send.send(("raised", traceback.format_exc()))
             send.close()
             os._exit(0)
 
@@ -112,9 +122,12 @@ def _solve_with_deadline(work, deadline: float, label: str):
                 return "timeout", None
             if recv.poll(min(left, PROGRESS_EVERY)):
                 try:
-                    return recv.recv()
+                    status, value = recv.recv()
                 except EOFError:
                     return "error", "the Bonmin process ended without a result"
+                if status == "raised":  # what the work raised in the child, as it would have here
+                    raise ChildError(value)
+                return status, value
             if tty:  # the CLI shows the "axisopt" logger's records on a terminal (only cli prints)
                 LOG.info("bonmin %s: running, %.0f s of at most %.0f s", label, time.perf_counter() - start,
                          deadline)

@@ -21,12 +21,14 @@ from typing import Any, Callable
 
 import casadi as ca
 
+from ...model.limits import check_name
+
 LOG_FLOOR = 1e-300  # a life or margin of 0 (or below) still has a logarithm
 
 
 def log_scaled(key: str) -> bool:
     """A life or a safety margin: compared on a logarithmic scale (its ratio to the limit spans decades)."""
-    return key == "life" or key.startswith("margin_")
+    return key == "life" or check_name(key) is not None
 
 
 def reciprocal_times(value, divisor: float):

@@ -26,6 +26,7 @@ import time
 import numpy as np
 
 from ...errors import InputError
+from ...model.limits import margin_output
 from ...units import N_PER_UM
 from ..bestfirst import bound_order_search
 from ..candidates import make_candidate
@@ -50,7 +51,7 @@ INSTALL = "pip install 'axisopt[scip]'"
 MOVES = tuple(step * rel for rel in (1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3) for step in (-1.0, 1.0))
 
 PAIR_CHUNK = 20000  # (nut, guide) pairs per model evaluation of the carriage's limits
-_PAIR_KEYS = ("margin_guide_static", "margin_guide_life", "margin_nut_static")
+_PAIR_KEYS = tuple(margin_output(c) for c in ("guide_static", "guide_life", "nut_static"))
 _CONTINUOUS = 8 | 16  # dependency bits of the preload and the nut shifts (translate.Graph)
 
 

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ... import mathx, model
-from ...model.limits import CHECK_RECORDS, CONVEX, LIMITS
+from ...model.limits import CHECK_RECORDS, CONVEX, LIMITS, check_name, margin_output
 from ...model.outputs import REGEN_OUTPUTS
 from ...problem import Problem
 from .objective import min_last
@@ -97,7 +97,7 @@ class Constraint:
         a limit of 0 (``max_backlash: 0``) the value in display units.  ``limit``: the limit as a solver
         parameter (default: :attr:`limit`).  ``v`` numpy or CasADi."""
         lim = self.limit if limit is None else limit
-        if self.key == "life" or self.key.startswith("margin_"):
+        if self.key == "life" or check_name(self.key) is not None:
             return mathx.log(mathx.fmax(v, 1e-300) / lim)
         if limit is None and self.limit <= 0:
             return v / self.factor
@@ -137,7 +137,7 @@ def build_constraints(problem: Problem) -> tuple[Constraint, ...]:
         if check in RANGE_CHECKS and m <= 1.0:
             continue  # the search's preload range holds it (build_space)
         if m > 0:
-            k = f"margin_{check}"
+            k = margin_output(check)
             out.append(Constraint(k, k, ">=", m, CHECK_RECORDS[check].preload, model.CHECK_LABELS[check], "", 1.0))
     return tuple(out)
 

@@ -25,6 +25,7 @@ import numpy as np
 
 from ... import model
 from ...model.accuracy import BUDGET_OUTPUTS
+from ...model.limits import margin_output
 from ...model.outputs import COUPLING_OUTPUTS, DRIVE_OUTPUTS
 from ...problem import Problem
 
@@ -59,7 +60,7 @@ def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = Tru
 # positioning budget's lost motion, computed with the chain on the whole design), and the drive checks' margins:
 # declared in model.outputs.
 DRIVE_KEYS = frozenset(o for o in DRIVE_OUTPUTS if o not in model.CHAIN_OUTPUTS) | \
-    {f"margin_{c}" for c in model.DRIVE_CHECKS}
+    {margin_output(c) for c in model.DRIVE_CHECKS}
 # Drive outputs whose value with the mechanics layout (no motor, coupling or reduction; the bounds: the cheapest
 # drive's price) is the most favourable over every drive: the mechanical stages test them too, the drive stage
 # again per drive (the cost is never more than with the cheapest drive, the lost motion never less than the nut's)

@@ -1,0 +1,536 @@
+"""Why a problem is infeasible: limits no combination meets, and the closest designs.
+
+Each limit is taken on its own at its most favourable allowed preload end; a limit no (fitting) combination
+meets is reported with the best value any combination reaches, and the closest designs minimise the sum of
+relative misses (:func:`miss_scores`).
+
+Two ways to the same answer:
+
+* *best-first over blocks* (default method): every (mounting, nut, bearing) block -- all its guides and
+  drives -- gets the best value any of its combinations could reach on each limit, and so a lower bound of
+  its combinations' miss scores: for the mechanical limits from one evaluation with the optimistic guide of
+  each guide type (:func:`.bounds.optimistic_guide_params`); for the drive's (motor and coupling checks,
+  inertia ratio), which the optimistic guide does not bound (less friction can raise a deceleration
+  torque), from the drive block evaluated in interval arithmetic (:mod:`.interval`) per drive pair over the
+  range of moving mass and drag torque the block's guides give (:func:`drive_optimism`).  Blocks are scored
+  one by one only while they could still improve a limit's best value, meet a limit not met yet, or hold
+  one of the closest designs.
+* *every combination* (exhaustive method, and the reference of the tests): :func:`miss_scores` over the
+  whole product.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from ... import model
+from ...model.limits import CHECK_RECORDS, check_name
+from .. import bestfirst
+from ..bounds import (
+    SCREEN_RTOL,
+    block_chunk,
+    block_outputs,
+    bound_positions,
+    optimistic_guide_params,
+)
+from ..candidates import candidate_values
+from ..drivebounds import PER_DRIVE_MIN, cost_parts, drive_hull
+from ..parts import drive_stiffnesses
+from ..result import Infeasibility
+from ..task.constraints import End, as_vector, reads_regen
+from ..task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive
+
+CLOSEST = 5
+CHUNK = 2_000_000  # response elements per block
+# A compatibility rule (the bearing bore does not fit the screw end, the screw is too short: Check.relaxable
+# False) weighs this much more than a limit in the miss score, so the closest designs are ones the user can
+# free by relaxing their own limits whenever such designs miss by less than ten limits' worth (a bearing that
+# does not fit is not a design).  1000 gave the same proposals on the shipped variants but let fewer blocks be
+# pruned: the explanation of the slowest vmc_random_1000 cases took 1.5x as long.
+RULE_WEIGHT = 10.0
+# A limit that no combination meets on its own (the block bounds show it: a budget below the cheapest parts) adds
+# its miss to every design's score, so the scores lie close together and the bounds leave many blocks open: the
+# best-first explanation then stops once the blocks it scored hold this many combinations (a count of work, not a
+# time: the same answer on any machine; Infeasibility.cut).  The shipped infeasible examples score 20 000 and
+# 6 300; a lathe Z with a budget of a quarter of its cheapest combination would score 580 M in 1 400 blocks
+# (35 s): it stops after 10 of its blocks of 420 000 (guides x drives)
+MAX_OPENED = 4_000_000
+
+
+def weight(c) -> float:
+    """The weight of constraint ``c``'s relative miss in the miss score."""
+    if check_name(c.name) is not None:
+        rec = CHECK_RECORDS.get(check_name(c.name))
+        if rec is not None and not rec.relaxable:
+            return RULE_WEIGHT
+    return 1.0
+
+
+DRIVE_NUTS = 64  # nuts per evaluation of the drive limits' interval bounds (memory: nuts x bearings x guides)
+FIRST_BATCH = 4  # blocks scored in the first round of the best-first explanation; doubles each round (4: 16 %
+# faster than 32 over 16 vmc_random_1000 variants, fewer blocks scored before the bounds prune)
+BOUND_RTOL = 1e-9  # slack on the block bounds (rounding of the same sums in another order)
+FLOAT32_RTOL = 2.0 * SCREEN_RTOL  # slack on block bounds read from the search's float32 outputs (as its bound)
+
+
+class _Tally:
+    """Per limit: whether any fitting combination meets it, and the best value any combination reaches."""
+
+    def __init__(self, constraints):
+        self.best = {c.name: None for c in constraints}
+        self.met = {c.name: False for c in constraints}
+        self.hopeless = False  # the block bounds show a limit no combination meets (best-first explanation)
+
+    def add(self, c, v, miss, fits):
+        self.met[c.name] = self.met[c.name] or bool(((miss <= 0) & fits).any())
+        cand = v[fits] if fits.any() else v.ravel()
+        bv = float(cand.max() if c.sense == ">=" else cand.min())
+        old = self.best[c.name]
+        if old is None or (bv > old if c.sense == ">=" else bv < old):
+            self.best[c.name] = bv
+
+
+def _favourable(c, out_lo, out_hi, shape, positions: bool = True):
+    """The limit's value at the preload end that favours it (for a limit met on an interval of preloads,
+    the better of the two ends), broadcast to ``shape``; only the end(s) it needs are read (``out_lo`` may
+    be None, or without the chain outputs, when no limit read there needs them).  ``positions``: the outputs
+    have a trailing position axis (not the drive layout's, whose last axis is the drives)."""
+    def val(o):
+        v = c.value(o)
+        return np.broadcast_to(_last(c, v) if positions else np.asarray(v, dtype=float), shape)
+    end = c.favourable
+    if end is End.INTERVAL:
+        v_lo, v_hi = val(out_lo), val(out_hi)
+        return np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
+    return val(out_hi) if end is End.HIGH else val(out_lo)
+
+
+def _closest(top_idx, top_score, idx, score, n):
+    """Merge a block's scores into the running n closest (lowest score, then lowest combination)."""
+    if len(score) > n:
+        part = np.argpartition(score, n - 1)[:n]
+        # ties at the n-th score: keep every tied row so the lowest combination numbers win
+        cut = score[part].max()
+        part = np.nonzero(score <= cut)[0]
+        idx, score = idx[part], score[part]
+    allidx = np.concatenate([top_idx, idx])
+    allsc = np.concatenate([top_score, score])
+    keep = np.lexsort((allidx, allsc))[:n]
+    return allidx[keep], allsc[keep]
+
+
+def explain_infeasible(space: Space, constraints, objective, n_closest: int = CLOSEST, *,
+                       every_combination: bool = False, deadline: float | None = None,
+                       max_opened: int | None = MAX_OPENED) -> Infeasibility:
+    """Limits no combination meets (with the best value any reaches) and the ``n_closest`` designs of
+    lowest miss score (ties: lowest combination number).  Best-first over blocks unless
+    ``every_combination`` (module docstring); both give the same answer.  ``deadline`` (a time.perf_counter()
+    value): the explanation stops there with the closest designs found so far (``Infeasibility.cut``); so does the
+    best-first one, when the block bounds show a limit that no combination meets on its own, once the blocks it
+    scored hold ``max_opened`` combinations (None: no such limit; see :data:`MAX_OPENED`)."""
+    tally = _Tally(constraints)
+    top_idx, top_score = np.zeros(0, np.int64), np.zeros(0)
+    scores = miss_scores(space, constraints, tally) if every_combination else \
+        _best_first_scores(space, constraints, tally, n_closest)
+    cut, opened = False, 0
+    t0 = shown = time.perf_counter()
+    for idx, score in scores:
+        top_idx, top_score = _closest(top_idx, top_score, idx, score, n_closest)
+        opened += len(idx)
+        if (now := time.perf_counter()) - shown > bestfirst.PROGRESS:
+            shown = now
+            bestfirst.LOG.info(f"  explaining: {opened:,} combinations scored for the closest designs, "
+                               f"{now - t0:.0f} s")
+        if (deadline is not None and time.perf_counter() > deadline) or \
+                (tally.hopeless and max_opened is not None and opened >= max_opened):
+            cut = True
+            break
+    unmeetable = []
+    for c in constraints:
+        if not tally.met[c.name] and tally.best[c.name] is not None:
+            best = tally.best[c.name]
+            if cut and c.key == "cost" and space.m_arr is not None:  # the blocks left out may hold cheaper ones
+                best = min(best, _cheapest(space))
+            unmeetable.append((c.label, best / c.factor, c.limit / c.factor, c.unit))
+    return Infeasibility(unmeetable, _closest_designs(space, constraints, objective, [int(c) for c in top_idx]),
+                         cut=cut)
+
+
+def _cheapest(space: Space) -> float:
+    """The least cost [EUR] of any (fitting, if any fits) combination of a space with a drive search, exact
+    (:func:`.drivebounds.cost_parts`): the budget's single-limit check when the explanation was cut."""
+    B = space.shape[2]
+    usable = space.fits if space.fits.any() else np.ones_like(space.fits)
+    best = np.inf
+    for mounting in space.mountings:
+        by_bearing, per_drive = cost_parts(space, mounting, slice(0, space.shape[1]), np.arange(B))
+        best = min(best, float(np.min(np.where(usable, by_bearing, np.inf)) + per_drive.min()))
+    return best
+
+
+def _bounded(c) -> bool:
+    """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
+    limits of :func:`axisopt.search.bounds.block_bounds`: not the drive's, except the cost)."""
+    return not c.convex and (c.key not in DRIVE_KEYS or c.key in MECHANICS_BOUNDED)
+
+
+def block_optimism(space: Space, constraints, drive: bool = True):
+    """Per mounting and (nut, bearing) block: for each limit a value no combination of the block beats at the
+    limit's favourable preload end -- the limits the optimistic guide bounds from it (profiles on
+    :func:`.bounds.bound_positions`), the drive's from :func:`drive_optimism` (unless not ``drive``) -- and a
+    lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
+    _, N, B, _ = space.shape
+    bounded = [c for c in constraints if _bounded(c)]
+    drive = [c for c in constraints if not _bounded(c)] if drive else []
+    constraints = bounded + drive
+    types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
+    # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped there
+    # unless one of those reads them (as in _score_nuts)
+    chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in bounded if c.convex or not c.lower_type)
+    # a minimum over a few positions bounds the minimum over the grid from above: optimistic for a ">=" limit,
+    # so the few suffice unless a "<=" limit reads a profile
+    few = all(c.sense == ">=" for c in bounded if c.profile)
+    out = []
+    for mounting in space.mountings:
+        x = bound_positions(space, mounting) if few else space.grid[mounting]
+        step = block_chunk(space) if few else max(1, CHUNK // max(B * len(x), 1))
+        best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints}
+        for n0 in range(0, N, step):
+            sl = slice(n0, min(N, n0 + step))
+            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1)
+            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
+            shape = (sl.stop - sl.start, B)
+            for t in types if bounded else ():
+                if few:  # the search's block bounds' float32 outputs (the lowest preload at one position: a
+                    # ">=" profile's minimum over fewer positions is no lower), relaxed below for the rounding
+                    with np.errstate(all="ignore"):
+                        out_lo, out_hi = block_outputs(space, mounting, sl, str(t))
+                else:
+                    p = optimistic_guide_params(space, mounting, sl, str(t))
+                    out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
+                    out_hi = respond(p, x, mounting, hi, drive_block=False)
+                for c in bounded:
+                    v = np.asarray(_favourable(c, out_lo, out_hi, shape + (1,))[..., 0], dtype=float)
+                    pick = np.maximum if c.sense == ">=" else np.minimum
+                    if few:
+                        v = v + (1.0 if c.sense == ">=" else -1.0) * FLOAT32_RTOL * np.abs(v)
+                    best[c.name][sl] = pick(best[c.name][sl], v)
+        if drive:
+            best.update(_drive_bounds(space, mounting, drive))
+        lb = np.where(space.fits, 0.0, RULE_WEIGHT)
+        for c in constraints:
+            lb = lb + weight(c) * c.violation(best[c.name])
+        out.append((best, lb))
+    return out
+
+
+def _drive_bounds(space: Space, mounting: str, drive) -> dict:
+    """:func:`drive_optimism` over every nut of ``mounting``, :data:`DRIVE_NUTS` nuts at a time:
+    {limit name: (nuts, bearings)}."""
+    N, B = space.shape[1], space.shape[2]
+    out = {c.name: np.empty((N, B)) for c in drive}
+    for n0 in range(0, N, DRIVE_NUTS):
+        sl = slice(n0, min(N, n0 + DRIVE_NUTS))
+        for name, v in drive_optimism(space, mounting, sl, drive).items():
+            out[name][sl] = v
+    return out
+
+
+def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict:
+    """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the drive block),
+    per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at any allowed preload:
+    the drive block in interval arithmetic over the block's guides and preloads
+    (:func:`.drivebounds.drive_hull`); the best over the drives bounds the block.  Returns {limit name: (nuts,
+    bearings)}."""
+    hull, group = drive_hull(space, mounting, nut_slice, drive)
+    out = {}
+    for c in drive:
+        if c.name not in hull:
+            raise KeyError(f"limit {c.name} reads {c.key}, which neither the optimistic guide nor the drive "
+                           "block bounds")
+        v = hull[c.name]
+        out[c.name] = (v.max(axis=-1) if c.sense == ">=" else v.min(axis=-1))[:, group]
+    return out
+
+
+def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int):
+    """Blocks of (combination numbers, miss scores) in best-first order, until no block left out could
+    change the explanation: improve the best value of a limit no block meets yet (or meet it), or hold a
+    design among the ``n_closest`` (its score lower bound not above the current ``n_closest``-th score)."""
+    # the drive limits' bounds (interval arithmetic over every block) wait until a drive limit is left unmet by
+    # the first round: most explanations never need them
+    opt = block_optimism(space, constraints, drive=False)
+    drive = [c for c in constraints if not _bounded(c)]
+    M, (_, N, B, _) = len(space.mountings), space.shape
+    lb = np.stack([o[1] for o in opt])  # (M, N, B)
+    vals = {name: np.stack([o[0][name] for o in opt]) for name in opt[0][0]}
+    tally.hopeless = any(c.name in vals and not c.ok(vals[c.name]).any() for c in constraints)
+    G, X = space.shape[3], max(len(space.grid[m]) for m in space.mountings)
+    rows = max(1, CHUNK // max(G * X, 1))  # (nut, bearing) pairs scored per evaluation
+    fits = np.broadcast_to(space.fits, (M, N, B))
+    usable = fits if fits.any() else np.ones_like(fits)  # the tally counts fitting combinations if any fit
+    done = np.zeros((M, N, B), dtype=bool)
+    scores = np.zeros(0)
+    batch = FIRST_BATCH
+    while not done.all():
+        if done.any() and any(c.name not in vals and not tally.met[c.name] for c in drive):
+            for mi, mounting in enumerate(space.mountings):
+                for name, v in _drive_bounds(space, mounting, drive).items():
+                    vals.setdefault(name, np.empty((M, N, B)))[mi] = v
+            for c in drive:
+                lb = lb + weight(c) * c.violation(vals[c.name])
+        want = np.zeros((M, N, B), dtype=bool)
+        open_ = ~done
+        for c in constraints if done.any() else ():  # first round: the lowest score bounds only (below)
+            if tally.met[c.name]:
+                continue
+            cand = open_ & usable
+            if c.name not in vals:  # a drive limit before its bounds: could be met anywhere
+                want |= _first(cand, lb, batch)
+                continue
+            v = vals[c.name]
+            b = tally.best[c.name]
+            if b is not None:
+                tol = BOUND_RTOL * max(abs(b), 1e-30)
+                # a block that could meet the limit stays a candidate whatever the tolerance
+                cand &= (v > b + tol if c.sense == ">=" else v < b - tol) | c.ok(v)
+            want |= _first(cand, -v if c.sense == ">=" else v, batch)
+        kth = np.partition(scores, n_closest - 1)[n_closest - 1] if len(scores) >= n_closest else np.inf
+        cand = open_ & (lb <= kth + BOUND_RTOL * max(abs(kth), 1.0) if np.isfinite(kth) else open_)
+        want |= _first(cand, lb, batch)
+        if not want.any():
+            break
+        for mi in range(M):
+            n_sel, b_sel = np.nonzero(want[mi])
+            for s0 in range(0, len(n_sel), rows):
+                kth = np.partition(scores, n_closest - 1)[n_closest - 1] if len(scores) >= n_closest else np.inf
+                for idx, score in _score_nuts(space, constraints, tally, mi, n_sel[s0:s0 + rows],
+                                              b_sel[s0:s0 + rows], kth=kth, n_closest=n_closest):
+                    scores = np.concatenate([scores, np.sort(score)[:n_closest]])
+                    yield idx, score
+        done |= want
+        batch *= 2
+
+
+def _first(cand, key, n):
+    """``n`` blocks of ``cand`` of lowest ``key`` (blocks tied with the n-th wait for a later round)."""
+    k = np.nonzero(cand.ravel())[0]
+    if len(k) > n:
+        k = k[np.argpartition(key.ravel()[k], n - 1)[:n]]
+    out = np.zeros(cand.size, dtype=bool)
+    out[k] = True
+    return out.reshape(cand.shape)
+
+
+def miss_scores(space: Space, constraints, tally: _Tally | None = None):
+    """Blocks of (combination numbers, sum of relative misses) over every combination: each limit at its
+    favourable preload end, plus RULE_WEIGHT when the bearing does not fit the screw, a compatibility rule
+    weighted by RULE_WEIGHT (:func:`_score_nuts`)."""
+    tally = tally or _Tally(constraints)
+    _, N, B, G = space.shape
+    D = space.n_drives if space.m_arr is not None else 1
+    for mi, mounting in enumerate(space.mountings):
+        x = space.grid[mounting]
+        step = max(1, CHUNK // max(B * (G // D) * len(x), B * G, 1))
+        for n0 in range(0, N, step):
+            yield from _score_nuts(space, constraints, tally, mi, np.arange(n0, min(N, n0 + step)))
+
+
+def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bearing_idx=None, kth=np.inf,
+                n_closest: int = CLOSEST):
+    """(combination numbers, miss scores) of mounting ``mi`` over every guide and drive of either the nuts
+    ``nut_idx`` times every bearing, or, with ``bearing_idx`` (aligned with ``nut_idx``), the (nut, bearing)
+    blocks of those pairs only.  ``kth``: the score a design must not exceed to be among the ``n_closest``
+    (the best-first order's current n-th): a drive whose bounds (:func:`.drivebounds.drive_hull`) show that
+    it can neither score that low nor improve or meet a drive limit not met yet is not evaluated, and its
+    combinations score inf (:func:`_score_drives`).
+
+    Structured like the screening: the limits the drive does not change are evaluated once per (screw, nut,
+    bearing, guide) combination, the ones the coupling's stiffness changes (:data:`COUPLING_KEYS`) once per
+    distinct coupling stiffness, the drive's limits (:data:`DRIVE_KEYS`) on the drive sub-assembly alone for
+    each (motor, coupling) pair."""
+    mounting = space.mountings[mi]
+    _, N, B, G = space.shape
+    two_stage = space.m_arr is not None
+    D = space.n_drives if two_stage else 1
+    Gm = G // D
+    drive = [c for c in constraints if two_stage and c.key in DRIVE_KEYS]
+    # limits the coupling's stiffness changes: evaluated once per distinct stiffness, mapped to the pairs
+    k_cpl = space.coupling_k if two_stage else np.zeros(0)
+    cpl = [c for c in constraints if two_stage and c.key in COUPLING_KEYS]
+    mech = [c for c in constraints if c not in drive and c not in cpl]
+    if two_stage:
+        group = np.searchsorted(k_cpl, drive_stiffnesses(space))
+    x = space.grid[mounting]
+    nut_idx = np.asarray(nut_idx, dtype=np.int64)
+    nc = len(nut_idx)
+    pairs = bearing_idx is not None
+    Bx = 1 if pairs else B  # the bearing axis: merged into the pair axis, or every bearing
+
+    def params(**kw):
+        return space.params_structured(mounting, nut_idx, bearings=bearing_idx, **kw)
+
+    shape = (nc, Bx, Gm)
+    lo = space.preload_lo[nut_idx].reshape(-1, 1, 1, 1)
+    hi = space.preload_hi[nut_idx].reshape(-1, 1, 1, 1)
+    fit_nb = space.fits[nut_idx, bearing_idx][:, None] if pairs else space.fits[nut_idx]
+    fits = np.broadcast_to(fit_nb[:, :, None], shape)
+    score = np.where(fits, 0.0, RULE_WEIGHT)
+    p = params(mechanics=two_stage)
+    # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped
+    # there unless one of those reads them
+    chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in mech if not c.lower_type)
+    regen = reads_regen(constraints)
+    out_lo = respond(p, x, mounting, lo, drive_block=not two_stage, chain=chain_lo, regen=regen)
+    out_hi = respond(p, x, mounting, hi, drive_block=not two_stage, regen=regen)
+    for c in mech:
+        v = _favourable(c, out_lo, out_hi, shape)
+        miss = c.violation(v)
+        score = score + weight(c) * miss
+        tally.add(c, v, miss, fits)
+    if two_stage:
+        shape_d = (nc, Bx, Gm, D)
+        fits_d = np.broadcast_to(fits[..., None], shape_d)
+        score = np.broadcast_to(score[..., None], shape_d).copy()
+        by_k = []
+        cpl_lo = any(not c.lower_type for c in cpl)  # minimum stiffness and frequency: the highest preload only
+        for k in k_cpl if cpl else ():
+            pk = params(mechanics=True, coupling_stiffness=float(k))
+            by_k.append((respond(pk, x, mounting, lo, drive_block=False) if cpl_lo else None,
+                         respond(pk, x, mounting, hi, drive_block=False)))
+        for c in cpl:
+            v = np.stack([_favourable(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
+            miss = c.violation(v)
+            score += weight(c) * miss
+            tally.add(c, v, miss, fits_d)
+        if drive:
+            score = _score_drives(space, mounting, drive, tally, nut_idx, bearing_idx, score, fits_d, lo, hi,
+                                  regen, kth, n_closest)
+    score = np.broadcast_to(score, shape_d if two_stage else shape).reshape(nc, Bx, G)
+    if pairs:
+        nn = np.repeat(nut_idx, G)
+        bb = np.repeat(np.asarray(bearing_idx, dtype=np.int64), G)
+        gg = np.tile(np.arange(G), nc)
+    else:
+        n3, bb, gg = np.meshgrid(nut_idx, np.arange(B), np.arange(G), indexing="ij")
+        nn, bb, gg = n3.ravel(), bb.ravel(), gg.ravel()
+    yield np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), score.reshape(-1)
+
+
+FIRST_DRIVES = 32  # drives of lowest bound scored first when no n-th score is known yet (:func:`_score_drives`)
+
+
+def _score_drives(space: Space, mounting: str, drive, tally: _Tally, nut_idx, bearing_idx, score, fits, lo, hi,
+                  regen: bool, kth: float, n_closest: int):
+    """The miss scores of :func:`_score_nuts` with the drive limits added, (nuts, bearings, guides, drives):
+    ``score`` holds the mechanical part.  A drive is evaluated (at both preload ends, every guide) only if its
+    bounds over the block (:func:`.drivebounds.drive_hull`: every guide and preload) leave a score not above
+    ``kth``, or could meet, or improve the best value of, a drive limit no combination meets yet; the others
+    score inf.  A first pass scores the :data:`FIRST_DRIVES` drives of lowest score bound (without a ``kth``,
+    fewer than ``n_closest`` scores known: they give it) and of most favourable bound on each limit not met
+    yet (they set its best value), so that the second leaves out what they rule out."""
+    D = space.n_drives
+    out = np.full(score.shape, np.inf)
+    hull, group = drive_hull(space, mounting, nut_idx, drive, bearings=bearing_idx) if D >= PER_DRIVE_MIN else \
+        ({}, None)
+    passes = [None]  # drive numbers per pass; None: those the bounds leave worth scoring once the first is done
+    if any(c.name not in hull for c in drive):  # a few drives, or a limit the bounds do not cover: every drive
+        passes = [np.arange(D)]
+    else:
+        lb = 0.0
+        for c in drive:
+            lb = lb + weight(c) * c.violation(hull[c.name])
+        lb = np.broadcast_to(lb, hull[drive[0].name].shape)[:, group]  # (nuts, bearings, drives)
+        low = score.min(axis=2) + lb
+        if D > FIRST_DRIVES:  # a first pass that sets the n-th score and the best values the second prunes by
+            first = [np.argsort(low.reshape(-1, D).min(axis=0), kind="stable")[:FIRST_DRIVES]] \
+                if not np.isfinite(kth) else []
+            for c in drive:
+                if not tally.met[c.name]:  # the drives of most favourable bound on a limit not met yet
+                    v = hull[c.name].reshape(-1, D)
+                    v = v.max(axis=0) if c.sense == ">=" else -v.min(axis=0)
+                    first.append(np.argsort(-v, kind="stable")[:FIRST_DRIVES])
+            if first:
+                passes.insert(0, np.unique(np.concatenate(first)))
+    done = np.zeros(D, dtype=bool)
+    for cols in passes:
+        if cols is None:
+            cols = np.nonzero(_worth(drive, tally, hull, low, kth))[0]
+        cols = cols[~done[cols]]
+        done[cols] = True
+        if not len(cols):
+            continue
+        sub = score.shape[:3] + (len(cols),)
+        pd = space.params_drives(mounting, nut_idx, bearing_idx, drives=cols)  # the mechanics once per guide
+        d_lo, d_hi = respond_drive(pd, lo, regen), respond_drive(pd, hi, regen)
+        part = score[..., cols]
+        for c in drive:
+            v = _favourable(c, d_lo, d_hi, sub, positions=False)
+            miss = c.violation(v)
+            part = part + weight(c) * miss
+            tally.add(c, v, miss, fits[..., cols])
+        out[..., cols] = part
+        if not np.isfinite(kth):  # the n-th score of this block bounds what the closest need
+            flat = out.ravel()
+            if np.isfinite(flat).sum() >= n_closest:
+                kth = float(np.partition(flat, n_closest - 1)[n_closest - 1])
+    return out
+
+
+def _worth(drive, tally: _Tally, hull: dict, low, kth: float):
+    """Per drive: whether its bounds (``hull``; ``low``: the least score it could reach per (nut, bearing))
+    leave a score not above ``kth``, or could meet, or improve the best value of, a limit not met yet."""
+    D = low.shape[-1]
+    need = (low <= kth + BOUND_RTOL * max(abs(kth), 1.0)).reshape(-1, D).any(axis=0) if np.isfinite(kth) else \
+        np.ones(D, dtype=bool)
+    for c in drive:
+        if not tally.met[c.name]:
+            v, b = hull[c.name], tally.best[c.name]
+            better = np.ones_like(v, dtype=bool) if b is None else \
+                (v > b - BOUND_RTOL * abs(b) if c.sense == ">=" else v < b + BOUND_RTOL * abs(b))
+            need |= (better | c.ok(v)).reshape(-1, D).any(axis=0)
+    return need
+
+
+def _last(c, v):
+    """A limit's value over the block without the trailing position axis (profiles are reduced already)."""
+    v = np.asarray(v, dtype=float)
+    return v[..., 0] if (not c.profile and v.ndim == 4) else v
+
+
+def _closest_designs(space: Space, constraints, objective, combos) -> list:
+    """The candidates of ``combos`` (ranked 1, 2, ...), each at the preload that minimises its total miss on a
+    grid of its allowed range (one model evaluation per mounting for all of them), with their misses."""
+    G = 33
+    pre = np.zeros(len(combos))
+    parts = [tuple(int(v) for v in space.unravel(int(c))) for c in combos]
+    for mi in {p[0] for p in parts}:
+        rows = [k for k, p in enumerate(parts) if p[0] == mi]
+        n = np.array([parts[k][1] for k in rows])
+        b = np.array([parts[k][2] for k in rows])
+        g = np.array([parts[k][3] for k in rows])
+        grid = np.linspace(space.preload_lo[n], space.preload_hi[n], G, axis=1)  # as np.linspace(lo, hi, G) each
+        mounting = space.mountings[mi]
+        p = space.params_flat(mounting, np.repeat(n, G), np.repeat(b, G), np.repeat(g, G))
+        out = respond(p, space.grid[mounting], mounting, grid.reshape(-1, 1))
+        tot = np.zeros(len(rows) * G)
+        for c in constraints:
+            tot += c.violation(as_vector(c.value(out), len(rows) * G))
+        best = np.argmin(tot.reshape(len(rows), G), axis=1)  # first of equal misses, as one design alone
+        pre[rows] = grid[np.arange(len(rows)), best]
+    out = []
+    for rank, (combo, (_mi, n, b, _g)) in enumerate(zip(combos, parts), start=1):
+        cand, vals = candidate_values(space, int(combo), float(pre[rank - 1]), objective, rank=rank)
+        misses = {}
+        for c in constraints:
+            v = float(np.min(vals[c.key]))
+            miss = float(c.violation(np.asarray(v)))
+            if miss > 0:
+                misses[c.label] = miss
+        if not space.fits[n, b]:
+            misses["bearing bore fits screw"] = 1.0
+        cand.misses = misses
+        out.append(cand)
+    return out

@@ -1,0 +1,142 @@
+"""An impossible budget (issue 42, item 2): the advice leads with the least budget at which the catalogs hold a
+design meeting every other limit, found by its own search (search.budget), whatever the explanation's closest
+designs are; checked against the default search on the changed problem (a design at that budget, none one
+rounding step below it), and the search itself against every combination (the exhaustive method) on random
+catalogs.  No formula is new here: the reference is the exhaustive enumeration, not a published number."""
+
+import math
+
+import numpy as np
+import pytest
+from test_bounds import _problem
+
+from axisopt.model.cost import cost
+from axisopt.problem import load_problem
+from axisopt.report.solve import relax_lines
+from axisopt.search import solve
+from axisopt.search.drivebounds import hull_ends
+from axisopt.search.drivebounds import least_cost as drive_least_cost
+from axisopt.search.exhaustive import exhaustive_search
+from axisopt.search.infeasible.budget import least_cost
+from axisopt.search.parts import build_space
+from axisopt.search.task.constraints import build_constraints
+from axisopt.search.task.objective import objective_spec
+
+# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about 1 500 EUR,
+# the cheapest design meeting every other limit about 4 000 EUR)
+LATHE = """name: lathe-z
+description: >
+  Turning-centre Z axis with its three cutting-force components: 1.5 m stroke, a 250 kg carriage and turret,
+  40 m/min, 8 kN feed force when roughing.  Maximise the minimum axial stiffness over the stroke; the search
+  chooses the mounting, parts and the drive (motor, coupling, a planetary gearbox or none).
+axis:
+  stroke: 1500 mm
+  moving_mass: 250 kg
+  mounting: fixed-fixed
+  orientation: horizontal
+  max_speed: 40 m/min
+  acceleration: 4 m/s^2
+  # Roughing steel (our assumption): feed force Ff 8 kN along Z, the tangential force Fc 12 kN pressing the
+  # carriage onto its ways, the passive force Fp 4 kN across them (Ff : Fc : Fp near the rule of thumb
+  # 0.5 : 1 : 0.25, Isakov, CTE 2013), at the tool tip 250 mm above the guides, 150 mm off the centre line.
+  axial_load: 8 kN
+  mean_axial_load: 2.5 kN
+  normal_load: 12 kN
+  cross_load: 4 kN
+  tool_height: 250 mm
+  tool_offset: 150 mm
+  table_length: 600 mm
+  duty_cycle:
+    - {move: 200 mm}
+    - {move: 1000 mm, speed: 0.3 m/min, force: 6 kN}
+    - {move: -1000 mm}
+    - {move: 1000 mm, speed: 0.2 m/min, force: 1.5 kN}
+    - {move: -1200 mm}
+    - {dwell: 10 s}
+  required_life: 20000 h
+objective: stiffness
+limits:
+  max_cost: 500 EUR
+  min_life: 20000 h
+  # a gearbox's backlash at the carriage within 10 um (compensated by the control)
+  max_backlash: 10 um
+  margins:
+    critical_speed: 1.25
+catalog:
+  mountings: [fixed-supported, fixed-fixed]
+  nut_types: [double]
+  drive: yes
+continuous:
+  nut_preload: {min: 200 N, max: 20 kN}
+"""
+
+
+def _lathe(tmp_path, budget: str):
+    text = LATHE.replace("max_cost: 500 EUR", f"max_cost: {budget}")
+    assert text != LATHE or budget == "500 EUR"
+    path = tmp_path / "lathe.yaml"
+    path.write_text(text, encoding="utf-8")
+    return load_problem(path)
+
+
+def _step_below(v: float) -> float:
+    """The three-significant-figure value one step below ``v`` (the advice rounds up to three figures)."""
+    return v - 10.0 ** (math.floor(math.log10(v)) - 2)
+
+
+def test_impossible_budget_leads_with_the_least_budget(tmp_path):
+    res = solve(_lathe(tmp_path, "500 EUR"), "default")
+    assert res.best is None
+    inf = res.infeasibility
+    first = inf.design_changes[0]
+    assert first.key == "limits.max_cost" and first.unit == "EUR" and first.value == pytest.approx(500.0)
+    v = first.to
+    assert relax_lines(inf)[0].startswith(f"  change the design: raise limits.max_cost from 500 to {v:,.0f} EUR")
+    ok = solve(_lathe(tmp_path, f"{v:g} EUR"), "default", sensitivities=False)
+    assert ok.best is not None and ok.best.cost <= v
+    short = solve(_lathe(tmp_path, f"{_step_below(v):g} EUR"), "default", sensitivities=False)
+    assert short.best is None and short.certificate.proven
+
+
+def test_least_cost_per_drive_is_the_least_over_guides_and_bearings(tmp_path):
+    """The screening's and the explanation's per-drive cost bound (drivebounds.least_cost) is the least cost
+    over the block's guides and each group's bearings, for every drive of the lathe's 4 531: every (guide,
+    drive) combination evaluated."""
+    sp = build_space(_lathe(tmp_path, "500 EUR"))
+    B = sp.shape[2]
+    for mounting in sp.mountings:
+        nuts = np.array([0, sp.shape[1] // 2, sp.shape[1] - 1])
+        _, group = hull_ends(sp, mounting, nuts, False)
+        got = drive_least_cost(sp, mounting, nuts, group)
+        for k in range(len(nuts)):
+            every = np.asarray(cost(sp.params_drives(mounting, nuts[k:k + 1])), dtype=float)
+            every = np.broadcast_to(every, (1, B) + every.shape[2:]).min(axis=2)[0]  # (bearings, drives)
+            for g in range(group.max() + 1):
+                np.testing.assert_allclose(got[k, g], every[group == g].min(axis=0), rtol=1e-12)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_least_cost_equals_every_combination(seed):
+    """search.budget.least_cost against the cheapest feasible combination of the exhaustive method, the problem's
+    own budget left out (random catalogs, with and without a drive search)."""
+    p = _problem(seed)
+    free = p.with_limit("max_cost", None)
+    sp = build_space(p)
+    ex, _ = exhaustive_search(sp, build_constraints(free), objective_spec(p.objective.mode, p))
+    ok = np.isfinite(ex.objective)
+    found = least_cost(p, sp)
+    if not ok.any():
+        assert found is None
+        return
+    assert found is not None and found[2]
+    assert found[0] == pytest.approx(float(ex.cost[ok].min()), rel=1e-12)
+    cut = least_cost(p, sp, max_blocks=1)  # one block screened: a design found then costs no less
+    assert cut is None or cut[0] >= found[0] * (1.0 - 1e-12)
+
+
+def test_a_budget_that_is_not_the_only_problem_gets_no_raise(tmp_path):
+    """Without the budget nothing fits either (a first natural frequency of 10 kHz no axis reaches): no budget."""
+    p = _problem(1).with_limit("min_frequency", 1e4)
+    assert least_cost(p, build_space(p)) is None
+    res = solve(p, "default")
+    assert res.best is None and all(c.key != "limits.max_cost" for c in res.infeasibility.design_changes)

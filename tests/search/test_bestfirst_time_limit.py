@@ -1,0 +1,76 @@
+"""The default method honours the time limit (issue 42): it stops there with what it has found, says so (status
+'time_limit', a certificate note, the gap unproven), and an infeasible answer's explanation is cut there too;
+a long search reports its progress to the "axisopt" logger (a terminal shows it)."""
+
+from __future__ import annotations
+
+import logging
+import time
+from pathlib import Path
+
+from axisopt.problem import load_problem
+from axisopt.search import bestfirst, solve
+from axisopt.search.infeasible.explain import explain_infeasible
+from axisopt.search.parts import build_space
+from axisopt.search.task.constraints import build_constraints
+from axisopt.search.task.objective import objective_spec
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_a_limit_before_any_design_is_no_infeasibility():
+    res = solve(load_problem(ROOT / "problems" / "lathe_z_problem.yaml"), "default", time_limit=1e-3)
+    assert res.status == "time_limit" and res.best is None and res.infeasibility is None
+    assert "not proven infeasible" in res.message
+    assert not res.certificate.proven and "stopped at the time limit" in " ".join(res.certificate.notes)
+
+
+def test_without_a_limit_in_reach_the_answer_is_proven():
+    res = solve(load_problem(ROOT / "problems" / "teaching_problem.yaml"), "default", time_limit=100.0,
+                sensitivities=False)
+    assert res.status == "optimal" and res.certificate.proven
+    assert not any("time limit" in n for n in res.certificate.notes)
+
+
+def test_the_explanation_stops_at_its_deadline():
+    p = load_problem(ROOT / "problems" / "infeasible_problem.yaml")
+    space, cons = build_space(p), build_constraints(p)
+    full = explain_infeasible(space, cons, objective_spec("stiffness"))
+    cut = explain_infeasible(space, cons, objective_spec("stiffness"), deadline=time.perf_counter() - 1.0)
+    assert not full.cut and cut.cut and cut.closest  # what it found by then, said to be partial
+
+
+def test_a_long_search_reports_progress(monkeypatch, caplog):
+    monkeypatch.setattr(bestfirst, "PROGRESS", 0.0)
+    with caplog.at_level(logging.INFO, logger="axisopt"):
+        solve(load_problem(ROOT / "problems" / "teaching_problem.yaml"), "default", sensitivities=False)
+    lines = [r.getMessage() for r in caplog.records if "searching:" in r.getMessage()]
+    assert lines and "blocks screened" in lines[0] and "combinations solved" in lines[0]
+
+
+def test_the_exhaustive_method_stops_at_the_limit_unproven():
+    p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
+    full = solve(p, "exhaustive", top=1, sensitivities=False)
+    res = solve(p, "exhaustive", top=1, sensitivities=False, time_limit=1e-3)
+    assert full.status == "optimal" and full.certificate.proven
+    assert res.status in ("time_limit",) and not res.certificate.proven
+    assert res.certificate.exact_evaluations < full.certificate.exact_evaluations
+    assert "stopped at the time limit" in " ".join(res.certificate.notes)
+
+
+def test_a_long_exhaustive_search_reports_progress(monkeypatch, caplog):
+    monkeypatch.setattr(bestfirst, "PROGRESS", 0.0)
+    p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
+    with caplog.at_level(logging.INFO, logger="axisopt"):
+        solve(p, "exhaustive", top=1, sensitivities=False)
+    lines = [r.getMessage() for r in caplog.records if "exhaustive:" in r.getMessage()]
+    assert lines and "combinations solved" in lines[-1]
+
+
+def test_a_long_explanation_reports_progress(monkeypatch, caplog):
+    monkeypatch.setattr(bestfirst, "PROGRESS", 0.0)
+    p = load_problem(ROOT / "problems" / "infeasible_problem.yaml")
+    with caplog.at_level(logging.INFO, logger="axisopt"):
+        explain_infeasible(build_space(p), build_constraints(p), objective_spec("stiffness"))
+    lines = [r.getMessage() for r in caplog.records if "explaining:" in r.getMessage()]
+    assert lines and "combinations scored" in lines[-1]
