@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .drivedesigns import design_of, limit_arrays, rank_designs, rank_key, scores
 from .drivespace import evaluate_one, respond, take
 
 CHUNK = 64  # drives evaluated with all their guides at a time
@@ -47,8 +48,6 @@ def _subset(p: dict, idx) -> dict:
 def drive_bounds(problem, space, spec, drives=None):
     """Per drive (flat over the drive axes, or the flat indices ``drives`` of them): the optimistic objective,
     whether it may pass, its least miss."""
-    from .drivetype import limit_arrays
-
     name, factor, _, sense = spec
     dshape = space.shape[:-1] + (1,)
     cost = space.drive_cost + np.min(space.guide_cost, axis=-1, keepdims=True)
@@ -123,8 +122,6 @@ def best_first(problem, space, spec, top: int):
     is opened block by block: the (rack, reduction, twin pinion) blocks in the order of their bound
     (:func:`block_bounds`), each block's drives bounded and evaluated as a space's, until no block left can
     reach the ``top``-th best design."""
-    from .drivetype import design_of, rank_designs
-
     sense = spec[3]
     sign = -1.0 if sense == "max" else 1.0
     state = {"best": [], "evaluated": 0}
@@ -161,8 +158,6 @@ def _visit(problem, space, spec, top, drives, state):
     """Bound ``drives`` (all when None) with the optimistic guide, then evaluate those that may still win
     with every guide in bound order, updating ``state``; returns the closest combinations when none is
     feasible and ``drives`` is None."""
-    from .drivetype import scores
-
     sense = spec[3]
     sign = -1.0 if sense == "max" else 1.0
     obj, ok, miss = drive_bounds(problem, space, spec, drives)
@@ -191,8 +186,6 @@ def _visit(problem, space, spec, top, drives, state):
 
 def _closest(problem, space, spec, miss):
     """The 50 combinations of least summed miss among the 50 drives of least optimistic miss."""
-    from .drivetype import scores
-
     if miss is None:
         _, _, miss = drive_bounds(problem, space, spec)
     G = space.shape[-1]
@@ -200,11 +193,6 @@ def _closest(problem, space, spec, miss):
     flats = (near_drives[:, None] * G + np.arange(G)[None, :]).reshape(-1)
     _, _, m = scores(problem, space, _evaluate_flats(space, flats), spec)
     return [int(flats[i]) for i in np.argsort(m, kind="stable")[:50]]
-
-
-def rank_key(objective, cost, mass, sign) -> tuple:
-    """The tie rule: the objective, then lower cost, then lower mass (rounded so float noise is no rank)."""
-    return (round(float(sign * objective), 9), round(float(cost), 6), round(float(mass), 9))
 
 
 def _evaluate_flats(space, flats) -> dict:

@@ -31,7 +31,7 @@ def scaled(axis, key: str, factor: float):
 def design_change(problem, closest: dict, spec):
     """(closest designs, design change text) for an infeasible drive-type problem (see the module)."""
     from .drivebest import best_first
-    from .drivetype import design_of, spaces
+    from .drivedesigns import design_of, spaces
 
     shown = []
     for space, flats in closest.values():

@@ -12,6 +12,7 @@ from math import prod
 import numpy as np
 
 from ..model.lmdrive import lm_response
+from ..model.motorrule import DEFAULT_RULE
 from ..model.rackdrive import guide_response, rack_response
 from ..physics import rack as pr
 
@@ -35,7 +36,7 @@ class Side:
     life_needed: float  # travel [m]
     fw: float
     static_safety: float
-    rms_ratio: float
+    rms_ratio: float | None  # None: each motor's vendor rule
     max_inertia_ratio: float
     thrust: float  # steady feed force of this side at feed [N] (axis.axial_load x share)
     mean_thrust: float  # ... at the mean axial load [N]
@@ -165,6 +166,11 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
     R = lambda col: _shape([r[col] for r in racks], 0, nd)  # noqa: E731
     red = lambda col: _shape(reductions[col], 1, nd)  # noqa: E731
     mot = lambda col: _shape(motors[col], 2, nd)  # noqa: E731
+    # each motor by its vendor's rule (model.motorrule; a row without one: the harshest), unless the problem asks
+    # one RMS ratio of every motor (axis.rms_torque_ratio)
+    mot_rule = lambda col, default: _shape(  # noqa: E731
+        np.where(np.isfinite(np.asarray(motors[col], float)), motors[col], default) if col in motors else
+        np.full(len(motors["rated_torque"]), default), 2, nd)
     twin = _shape(choice.twin_pinion, 3, nd)
     g = {k: _shape(v, 4, nd) for k, v in _guides(guides, side).items()}
     m_motor = np.where(
@@ -202,7 +208,7 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
         "kt_red": red("torsional_stiffness"),
         "twin": twin,
         "bias": choice.preload_bias,
-        "rms_ratio": side.rms_ratio,
+        "rms_ratio": side.rms_ratio if side.rms_ratio is not None else mot_rule("rms_ratio", DEFAULT_RULE.rms),
         "max_inertia_ratio": side.max_inertia_ratio,
         "k_n": g["k_n"],
         "blocks": side.blocks,

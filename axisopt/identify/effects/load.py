@@ -91,17 +91,18 @@ def _beta_search(rows, r0, rss) -> dict:
     replaced by v exp(-beta (T - 20 degC)) and the RSS of that fit minimised over beta (log grid, then golden
     section).  A free constant viscous part beside the exponential trades with beta over the few tens of
     kelvin of a warm-up; the joint fit then frees it at this beta."""
-    from ..records.estimators import lstsq
-    from ..records.regression import matrix
     from .disturbance import golden
 
-    W = matrix(rows, ("M", "Fc", "offset"), {})
+    W = rows.columns(("M", "Fc", "offset"), {})
     y = rows.y
 
     def cost(logb):
-        col = matrix(rows, ("Fvt",), {"beta": math.exp(logb)})[:, 0] + matrix(rows, ("Fv",), {})[:, 0]
+        col = rows.columns(("Fvt",), {"beta": math.exp(logb)})[:, 0] + rows.columns(("Fv",), {})[:, 0]
         A = np.column_stack([W, col])
-        e = y - A @ lstsq(A, y)
+        sc = np.linalg.norm(A, axis=0)  # columns scaled to unit norm, as the records' least squares does
+        sc[sc == 0] = 1.0
+        th, *_ = np.linalg.lstsq(A / sc, y, rcond=None)
+        e = y - A @ (th / sc)
         return float(e @ e)
 
     grid = np.linspace(math.log(BETA_RANGE[0]), math.log(BETA_RANGE[1]), 16)

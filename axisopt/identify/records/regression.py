@@ -110,6 +110,11 @@ class Rows:
     def n(self) -> int:
         return len(self.keep)
 
+    def columns(self, terms, shape: dict) -> np.ndarray:
+        """The regression columns of ``terms`` at the kept rows (:func:`matrix`): what an effect's own shape
+        search (``Shape.search``) fits with, without importing this pipeline."""
+        return matrix(self, terms, shape)
+
 
 def full_matrix(sig: dict, terms, proc: Processing, shape: dict) -> np.ndarray:
     """The regression columns of ``terms`` at full rate."""
