@@ -235,7 +235,10 @@ def generate(n: int, seed: int = 0) -> list[Case]:
 
 
 if __name__ == "__main__":
-    import sys
+    import argparse
 
-    i = int(sys.argv[1]) if len(sys.argv) > 1 else 0
-    print(make(int(sys.argv[2]) if len(sys.argv) > 2 else 0, i).text)
+    ap = argparse.ArgumentParser(description="Print one generated axis problem (YAML) to stdout.")
+    ap.add_argument("index", nargs="?", type=int, default=0, help="the case's index within its seed (default 0)")
+    ap.add_argument("seed", nargs="?", type=int, default=0, help="the seed (default 0)")
+    args = ap.parse_args()
+    print(make(args.seed, args.index).text)

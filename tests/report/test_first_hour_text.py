@@ -33,6 +33,8 @@ def _fast_vmc(speed_m_min: float):
 
 def test_compare_drive_rows_show_what_the_checks_compare():
     d = _fast_vmc(45)
+    # a problem that asks 0.8 x rated of every motor (axis.rms_torque_ratio; the Yaskawa rule alone is the rated)
+    d = replace(d, axis=replace(d.axis, rms_torque_ratio=0.8))
     ev = evaluate(d)
     v = ev.values
     assert float(v["needed_motor_peak_torque"]) > 1.2 * float(v["peak_torque"])  # scaled: the case that matters
@@ -111,7 +113,9 @@ def test_study_reason_leads_with_the_misses(tmp_path):
     rec = json.loads(next((out / "cases").glob("*.json")).read_text(encoding="utf-8"))
     assert rec["status"] == "infeasible"
     assert rec["reason"].startswith("the closest design misses min stiffness by ")
-    assert "reductions (gearboxes, belts) were left out" in rec["reason"].split("; ", 1)[1]
+    # the notes after the misses (the teaching problem leaves reductions out itself since issue 54: no note on
+    # what max_backlash left out, the enumeration's own note follows)
+    assert rec["reason"].split("; ", 1)[1].startswith("no catalog combination meets every limit")
 
 
 def test_parts_marks_rotating_nuts_and_lists_grades(capsys):
@@ -146,7 +150,7 @@ def test_a_gearbox_lost_motion_is_the_reductions(tmp_path, capsys):
 
     text = " ".join(evaluation_table(evaluate(d)).split())  # the line wraps at 100 columns
     assert d.reduction is not None
-    assert "lost motion" in text and "(nut play and the reduction's backlash)" in text
+    assert re.search(r"lost motion: nut \d+ um, reduction \d+ um", text)  # each by its cause
     assert "nut backlash" not in text
 
 

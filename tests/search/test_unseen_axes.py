@@ -53,7 +53,7 @@ def test_end_margin_zero_feasible_design(tmp_path):
 def test_coupling_filter_below_peak_torque_is_infeasible_not_input_error(tmp_path, capsys):
     rc, r = _solve(tmp_path, "coupling_filter_too_small.yaml", advice=True)
     assert rc == 1 and r["status"] == "infeasible"
-    text = capsys.readouterr().out
+    text = " ".join(capsys.readouterr().out.split())  # the text wraps at 100 columns
     assert "coupling rated torque / motor peak torque" in text
     assert "to catalog.require.coupling" in text
 
@@ -145,7 +145,7 @@ def test_unit_slip_30_m_s_gets_lower_max_speed(tmp_path):
     text = (HERE.parents[2] / "problems" / "teaching_problem.yaml").read_text()
     f = tmp_path / "slip.yaml"
     f.write_text(text.replace("max_speed: 30 m/min", "max_speed: 30 m/s"))
-    with pytest.warns(ImplausibleInput, match="1800 m/min is far above machine-tool practice"):
+    with pytest.warns(ImplausibleInput, match="1,?800 m/min is far above machine-tool practice"):
         problem = load_problem(f)
     res = solve(problem)
     [c] = res.infeasibility.design_changes
