@@ -387,7 +387,10 @@ class Section:
         extra = [k for k in self.node.value if k not in self.used]
         if extra:
             k = extra[0]
-            near = close_matches(k, sorted(self.used), n=1)
+            # the keys read, and those the table declares (a section whose reader asks a key only when another
+            # is there: search.counterbalance beside search.drive_types)
+            known = set(self.used) | (set(self.spec.keys) if self.spec is not None else set())
+            near = close_matches(k, sorted(known - set(extra)), n=1)
             hint = f"; did you mean '{near[0]}'?" if near else ""
             raise self.error(k, f"unknown key '{self.key_path(k)}'{hint}")
 
