@@ -58,11 +58,12 @@ def test_batch_solves_leave_the_advice_out(tmp_path):
 def test_twin_gantry_too_fast_gets_a_verified_speed(tmp_path):
     """The 4 m twin gantry at 20 m/min misses the critical speed and the inertia ratio (the closest designs'
     63 mm screws): the advice's first proposal (the closest design's need) does not hold for every screw, the one
-    10 % further does; the problem at that speed solves."""
+    10 % further does; the problem at that speed solves (17.5 m/min since the nut lift-off takes each load
+    case alone, THK A-725)."""
     res = solve(load_problem(_variant(tmp_path, "gantry_twin_problem.yaml", max_speed="20 m/min")), "default")
     assert res.best is None
     [c] = res.infeasibility.design_changes
-    assert c.key == "axis.max_speed" and 10.0 < c.to < 16.0
+    assert c.key == "axis.max_speed" and 10.0 < c.to < 20.0
     fixed = _variant(tmp_path, "gantry_twin_problem.yaml", max_speed=f"{c.to:g} m/min")
     again = solve(load_problem(fixed), "default", sensitivities=False)
     assert again.best is not None and again.certificate.proven
@@ -86,15 +87,16 @@ def test_heavier_balanced_ram_gets_a_stronger_cylinder(tmp_path):
 
 
 def test_unbalanced_vertical_gets_a_cylinder(tmp_path):
-    """An 800 kg Z without a balance cylinder misses torque and lift-off for every catalog drive: the advice adds
-    a balance cylinder (90 % of the weight), and the problem with it solves."""
-    res = solve(load_problem(_variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="800 kg",
+    """A 1200 kg Z without a balance cylinder misses torque and lift-off for every catalog drive: the advice adds
+    a balance cylinder (90 % of the weight), and the problem with it solves.  (800 kg, this test's head before
+    each motor was held to its own vendor's rule, now solves at a lower speed: the speed comes first.)"""
+    res = solve(load_problem(_variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="1200 kg",
                                       counterbalance="{kind: none}")), "default")
     assert res.best is None
     [c] = res.infeasibility.design_changes
     assert c.key == "axis.counterbalance" and c.value == 0
-    assert c.to == pytest.approx(0.9 * 800 * 9.80665, rel=2e-3)
-    fixed = _variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="800 kg",
+    assert c.to == pytest.approx(0.9 * 1200 * 9.80665, rel=2e-3)
+    fixed = _variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="1200 kg",
                      counterbalance=f"{{kind: cylinder, force: {c.to:g} N}}")
     again = solve(load_problem(fixed), "default", sensitivities=False)
     assert again.best is not None and again.certificate.proven
