@@ -65,7 +65,11 @@ KNOWN_FAILS = {"teaching_design": {"nut L10 life", "support bearing L10 life"},
                # load of each of the three rows, then eq. 2.39 over the three) gives 15 300 h; the bearing
                # maker's own three-row rating with an exact Hertz split at the worse end 27 700 h (the row
                # "support bearing L10 life (NSK ratings)", which passes); axisopt 20 000 h
-               "boring_table_problem": {"support bearing L10 life"}}
+               "boring_table_problem": {"support bearing L10 life"},
+               # the same reading on the twin gantry, whose optimum moved onto NSK 50TAC100B-DFT-C10 sets with the
+               # belt stages (issue 54): IBC per bearing 7 534 h, NSK's three-row rating 14 183 h (passes), axisopt
+               # 11 134 h, against 10 000 h
+               "gantry_twin_problem": {"support bearing L10 life"}}
 FILES = ["teaching_problem", "highspeed_problem", "gantry_problem", "vertical_problem", "vmc_x_problem",
          "duty_cycle_problem", "teaching_design", "vmc_x_design", "boring_mill_problem", "laser_problem",
          "lathe_z_problem", "vertical_counterweight_problem", "gantry_twin_problem",
@@ -151,7 +155,8 @@ COLUMNS = {"teaching_problem": "teaching", "highspeed_problem": "highspeed", "ga
            "teaching_design": "teaching design", "vmc_x_design": "vmc_x design", "boring_mill_problem": "boring mill",
            "laser_problem": "laser", "lathe_z_problem": "lathe Z",
            "vertical_counterweight_problem": "vertical counterweight", "gantry_twin_problem": "twin gantry",
-           "vertical_z600_problem": "Z 600 kg"}
+           "vertical_z600_problem": "Z 600 kg", "lathe_z_belt_problem": "lathe Z belt",
+           "boring_table_problem": "boring table"}
 
 
 def test_docs_results_table_is_what_the_checker_prints(tmp_path_factory):
