@@ -24,25 +24,29 @@ def fmt(x, unit: str = "") -> str:
     """
     if x is None:
         return "-"
+    v = _number(x)
+    if isinstance(v, str):
+        return v
+    text = f"{v:,.0f}" if abs(v) >= 100 else f"{v:.3g}"
+    return f"{text} {unit}" if unit else text
+
+
+def _number(x) -> float | str:
+    """``x`` as a finite float, or the text that stands for it: ``str(x)`` where it is no number, '-' where it
+    is not finite."""
     try:
         v = float(x)
     except (TypeError, ValueError):
         return str(x)
-    if not math.isfinite(v):
-        return "-"
-    text = f"{v:,.0f}" if abs(v) >= 100 else f"{v:.3g}"
-    return f"{text} {unit}" if unit else text
+    return v if math.isfinite(v) else "-"
 
 
 def fmt_objective(x, unit: str = "") -> str:
     """An objective in a repr with the digits the solve text shows (``best: 186.085 N/um``): designs a few
     thousandths apart read apart, not all as '186'; '-' for a missing or non-finite value."""
-    try:
-        v = float(x)
-    except (TypeError, ValueError):
-        return str(x)
-    if not math.isfinite(v):
-        return "-"
+    v = _number(x)
+    if isinstance(v, str):
+        return v
     return f"{v:,.3f}" + (f" {unit}" if unit else "")
 
 
