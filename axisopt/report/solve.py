@@ -9,6 +9,7 @@ import textwrap
 
 import numpy as np
 
+from ..catalog.columns import PART_SLOTS
 from ..problem import OBJECTIVE_TABLE
 from ..search.result import OPTIMAL
 
@@ -228,7 +229,7 @@ def _cand_table(cands, unit, keys=()) -> str:
     design, only the parts in which it differs from the one above).  The goals' columns come from
     ``problem.OBJECTIVE_TABLE`` (``Goal.column``): those shown always, the preload, then those of the front's
     ``keys`` (the positioning error)."""
-    slots = ("arrangement", "screw", "grade", "nut", "bearing", "guide", "motor", "coupling", "reduction")
+    slots = ("arrangement", "screw", "grade", *PART_SLOTS[1:])
     obj = f"obj {unit}" if unit != "-" else ""
     always = [g for g in OBJECTIVE_TABLE if g.column is not None and g.column.always]
     extra = [g for g in OBJECTIVE_TABLE if g.column is not None and not g.column.always and g.key in keys]
