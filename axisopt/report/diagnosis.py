@@ -15,7 +15,7 @@ from ..identify.tables.diagnose import split_by_observation as _split
 from ..identify.tables.measure import Y_UNIT
 from ..identify.tables.unexplained import display_value, residual_table, table_signature
 from . import save_figure, write_text_atomic
-from .evaluation import fit_lines
+from .text import fit_lines
 
 
 def _rmse_units(diag, pred):

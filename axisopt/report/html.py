@@ -265,7 +265,8 @@ def parts_table(design, problem=None) -> str:
 def checks_table(ev, margins: dict | None = None) -> str:
     """The checks with their values and margins; ``margins``: a problem's least margins (pass or FAIL against
     them, :func:`axisopt.report.evaluation.judged_rows`)."""
-    from .evaluation import fmt_value, judged_rows
+    from .checktext import judged_rows
+    from .text import fmt_value
 
     head = ["check", "available", "needed", "margin", "result"]
     body, classes = [], []
@@ -365,7 +366,7 @@ def pareto_table(front) -> str:
 
 
 def compare_page(items, text: str, interactive: bool = False) -> Page:
-    from .evaluation import judged_rows
+    from .checktext import judged_rows
     from .plots import distinct_labels, plot_profiles
 
     page = Page("Comparison", ", ".join(c.label for c in items), interactive=interactive)

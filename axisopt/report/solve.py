@@ -158,7 +158,7 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     for n in c.notes:
         L.append(f"  {n}")
     L.extend(estimated_lines(c.estimated))
-    from .evaluation import fit_lines
+    from .text import fit_lines
 
     return fit_lines("\n".join(L))
 
