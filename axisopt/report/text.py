@@ -7,8 +7,6 @@ import math
 import textwrap
 
 RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rpm
-
-
 WIDTH = 100  # terminal columns the text tables fit
 
 
@@ -34,3 +32,8 @@ def fit_lines(text: str, width: int = 100) -> str:
         out.extend(textwrap.wrap(line, width, initial_indent="", subsequent_indent=lead + "    ",
                                  break_on_hyphens=False, drop_whitespace=True) or [line])
     return "\n".join(out)
+
+
+def wrap_words(text: str, indent: str = "  ", cont: str = "      ") -> list:
+    """Prose wrapped to WIDTH, the first line indented by ``indent``, the rest by ``cont``."""
+    return textwrap.wrap(text, WIDTH, initial_indent=indent, subsequent_indent=cont, break_on_hyphens=False)
