@@ -17,7 +17,8 @@ import numpy as np
 
 from ..model.limits import LIMITS
 from ..problem import Problem
-from .result import INFEASIBLE, OPTIMAL, Certificate, SolveResult
+from .certificate import Certificate
+from .result import INFEASIBLE, OPTIMAL, SolveResult
 from .task.objective import rank_order
 
 _SUMMED = ("combinations", "pruned_by_bound", "exact_evaluations", "nlps_solved", "nlp_failures", "pruned_by_block",

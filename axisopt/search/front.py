@@ -18,15 +18,8 @@ import numpy as np
 from ..errors import InputError
 from ..model.limits import LIMITS
 from ..problem import GOALS, Problem
-from .result import (
-    INFEASIBLE,
-    OPTIMAL,
-    SOLVER_FAILED,
-    TIME_LIMIT,
-    Binding,
-    Certificate,
-    SolveResult,
-)
+from .certificate import Binding, Certificate
+from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, SolveResult
 from .task import Task
 
 if TYPE_CHECKING:

@@ -17,10 +17,11 @@ import numpy as np
 from ..problem import GOALS
 from .bounds import block_bounds
 from .candidates import make_candidate
+from .certificate import Certificate, SearchStats
 from .exhaustive import exhaustive_search
 from .parts import build_space
 from .preload import concat_exact, exact_solve
-from .result import INFEASIBLE, OPTIMAL, Certificate, ParetoFront, SearchStats, SolveResult
+from .result import INFEASIBLE, OPTIMAL, ParetoFront, SolveResult
 from .screen import screen_nuts
 from .task.constraints import build_constraints
 from .task.objective import objective_spec

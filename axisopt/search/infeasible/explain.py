@@ -38,9 +38,9 @@ from ..bounds import (
 from ..candidates import candidate_values
 from ..drivebounds import PER_DRIVE_MIN, cost_parts, drive_hull
 from ..parts import drive_stiffnesses
-from ..result import Infeasibility
 from ..task.constraints import End, as_vector, reads_regen
 from ..task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive
+from .answer import Infeasibility
 
 CLOSEST = 5
 CHUNK = 2_000_000  # response elements per block

@@ -30,7 +30,8 @@ from ...model.limits import margin_output
 from ...units import N_PER_UM
 from ..bestfirst import bound_order_search
 from ..candidates import make_candidate
-from ..result import Certificate, SolveResult
+from ..certificate import Certificate
+from ..result import SolveResult
 from ..task.objective import STIFFNESS_OUTPUTS
 from ..task.space import respond
 from .formulation import SLOTS, recover
