@@ -9,7 +9,7 @@ import textwrap
 
 import numpy as np
 
-from ..problem import OBJECTIVE_TABLE
+from ..model.goals import OBJECTIVE_TABLE
 from ..search.result import OPTIMAL
 
 # The cutting force's components beside the feed force, as a rule of thumb for turning: feed F_f = 0.50 F_c and
@@ -226,7 +226,7 @@ def relax_lines(inf) -> list:
 def _cand_table(cands, unit, keys=()) -> str:
     """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
     design, only the parts in which it differs from the one above).  The goals' columns come from
-    ``problem.OBJECTIVE_TABLE`` (``Goal.column``): those shown always, the preload, then those of the front's
+    ``model.goals.OBJECTIVE_TABLE`` (``Goal.column``): those shown always, the preload, then those of the front's
     ``keys`` (the positioning error)."""
     slots = ("arrangement", "screw", "grade", "nut", "bearing", "guide", "motor", "coupling", "reduction")
     obj = f"obj {unit}" if unit != "-" else ""

@@ -14,8 +14,8 @@ import time
 
 import numpy as np
 
+from ..model.goals import RESULT_GOALS
 from ..model.limits import OUTPUT_PRELOAD
-from ..problem import RESULT_GOALS
 from . import bestfirst
 from .certificate import SearchStats
 from .preload import BISECTION_STEPS, concat_exact, convex_interval, goal_arrays, new_exact, subset

@@ -16,8 +16,9 @@ from typing import TYPE_CHECKING, Callable
 import numpy as np
 
 from ..errors import InputError
+from ..model.goals import GOALS
 from ..model.limits import LIMITS
-from ..problem import GOALS, Problem
+from ..problem import Problem
 from .certificate import Binding, Certificate
 from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, SolveResult
 from .task import Task

@@ -11,7 +11,7 @@ from types import MappingProxyType
 import numpy as np
 
 from ..display import fmt, fmt_objective, frame, html_fields, html_table, json_value, one_line
-from ..problem import GOALS, RESULT_GOALS
+from ..model.goals import GOALS, RESULT_GOALS
 from .certificate import Bindings, Certificate
 from .infeasible.answer import Infeasibility
 from .reported import REPORTED
@@ -43,7 +43,7 @@ class Exact:
     """The exact per-combination optimum of the continuous problem, over K combinations
     (:func:`.preload.exact_solve`, :func:`.exhaustive.grid_solve`).
 
-    ``goals`` holds, per goal of :data:`axisopt.problem.RESULT_GOALS` (its key), the (K,) values at the chosen
+    ``goals`` holds, per goal of :data:`axisopt.model.goals.RESULT_GOALS` (its key), the (K,) values at the chosen
     preload in the goal's display unit (NaN where not evaluated: no limit or front reads the output); each is
     also the attribute named by the goal's ``field`` (``ex.min_stiffness``, ``ex.cost``, ...)."""
 
@@ -121,7 +121,7 @@ class Candidate:
     arrangement: str = ""
 
     def goal(self, key: str) -> float:
-        """The value of the goal ``key`` (:data:`axisopt.problem.OBJECTIVE_TABLE`) in its display unit: its field
+        """The value of the goal ``key`` (:data:`axisopt.model.goals.OBJECTIVE_TABLE`) in its display unit: its field
         where the Candidate has one (in the JSON), else from the model's outputs (NaN where not evaluated)."""
         g = GOALS[key]
         if g.field in CANDIDATE_FIELDS:

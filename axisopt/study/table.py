@@ -22,7 +22,7 @@ from ..fileio import (
     tidy_layout,
     write_text_atomic,
 )
-from ..problem import GOALS
+from ..model.goals import GOALS
 from ..search.reported import REPORTED
 from .store import OK_STATUSES, CaseStore
 
