@@ -449,7 +449,8 @@ def diagnose_page(diag, text: str, interactive: bool = False) -> Page:
     """A diagnosis: the verdict first (an effect named and confirmed on held-out data is the diagnosis's
     success: green, never red), then residuals against each factor before and after, and the text."""
     from ..identify.tables.diagnose import split_by_observation as _split
-    from .diagnosis import diagnosis_dict, residual_figures
+    from .diagfiles import residual_figures
+    from .diagnosis import diagnosis_dict
 
     d = diagnosis_dict(diag)
     page = Page(f"Diagnosis: {d['design']}", "what the model gets wrong and why", interactive=interactive)
