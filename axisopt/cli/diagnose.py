@@ -44,7 +44,8 @@ def cmd_diagnose(args) -> int:
     if not quiet:
         print(text)
     if html:
-        from ..report.html import diagnose_page, write_page
+        from ..report.html import write_page
+        from ..report.htmlpages import diagnose_page
 
         write_page(diagnose_page(diag, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
         if not quiet:
