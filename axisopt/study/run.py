@@ -174,7 +174,7 @@ def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, r
                          resumed=prog.resumed, failed=prog.failed, lost=lost, lost_reason=lost_reason,
                          time=prog.elapsed, backend=backend, workers=nw, died=died, redone=len(redo))
     if report:
-        from .table import write_outputs
+        from .outputs import write_outputs
 
         summary.files = write_outputs(study, out, summary)
     return summary
