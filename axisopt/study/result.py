@@ -5,9 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..display import html_table, one_line
+from .cases import Study
 from .lock import StudyLock
 from .run import RunSummary, run_study
-from .spec import Study
 from .store import CaseStore
 from .table import results_table
 

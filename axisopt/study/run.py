@@ -38,10 +38,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import InputError
+from .cases import Study
 from .lock import StudyLock
 from .pool import run_dask, run_pool
 from .record import INFRA_STATUSES, LEGACY_WORKER_DIED, run_batch, solve_case
-from .spec import Study
 from .store import OK_STATUSES, CaseStore, sweep_temporaries
 
 
