@@ -69,12 +69,12 @@ from .display import fmt, one_line
 from .errors import InputError
 from .model import CHECKS
 from .model.goals import (
-    GOALS,
     OBJECTIVE_MODES,
     PARETO_ALIASES,
     PARETO_KEYS,
     PERFORMANCE,
     WEIGHTED,
+    Objective,
 )
 from .model.limits import LIMITS
 from .restrictions import (  # noqa: F401  (the slot names are the problem's vocabulary too)
@@ -90,35 +90,6 @@ from .yamlio import Key, Section, Spec, close_matches, read_yaml, require_kind
 
 # limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once there
 DEFAULT_LIMITS = MappingProxyType({k: lim.default for k, lim in LIMITS.items() if lim.default is not None})
-
-
-@dataclass(frozen=True)
-class Objective:
-    """What to maximise.  Performance values are the minima over the stroke (model position grid)."""
-
-    mode: str = "stiffness"
-    weights: tuple = (("stiffness", 1.0), ("frequency", 1.0))  # weighted
-    scale: tuple = (("stiffness", 100e6), ("frequency", 100.0))  # weighted, SI
-    order: tuple = ("stiffness", "frequency")  # lexicographic
-    tolerance: float = 0.0  # lexicographic, relative
-    pareto: tuple = ()  # pareto keys
-
-    @property
-    def label(self) -> str:
-        if self.mode == "weighted":
-            return " + ".join(f"{w:g}*{k}/{_fmt_si(k, s)}" for (k, w), (_, s) in zip(self.weights, self.scale))
-        if self.mode == "lexicographic":
-            return " then ".join(f"max min {k}" if GOALS[k].sense == "max" else f"least {k}" for k in self.order) \
-                + f" (tolerance {self.tolerance:g})"
-        if self.mode == "pareto":
-            return "Pareto front of " + ", ".join(self.pareto)
-        g = GOALS[self.mode]
-        return f"maximise minimum {g.what}" if g.sense == "max" else f"minimise {g.what}"
-
-
-def _fmt_si(key, value):
-    g = GOALS[key]
-    return f"{value / g.factor:g} {g.unit}"
 
 
 @dataclass(frozen=True)

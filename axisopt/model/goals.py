@@ -13,6 +13,36 @@ from .outputs import PROFILE as PROFILE_OUTPUTS
 
 
 @dataclass(frozen=True)
+class Objective:
+    """What to maximise.  Performance values are the minima over the stroke (model position grid)."""
+
+    mode: str = "stiffness"
+    weights: tuple = (("stiffness", 1.0), ("frequency", 1.0))  # weighted
+    scale: tuple = (("stiffness", 100e6), ("frequency", 100.0))  # weighted, SI
+    order: tuple = ("stiffness", "frequency")  # lexicographic
+    tolerance: float = 0.0  # lexicographic, relative
+    pareto: tuple = ()  # pareto keys
+
+    @property
+    def label(self) -> str:
+        if self.mode == "weighted":
+            return " + ".join(f"{w:g}*{k}/{_fmt_si(k, s)}" for (k, w), (_, s) in zip(self.weights, self.scale))
+        if self.mode == "lexicographic":
+            return " then ".join(f"max min {k}" if GOALS[k].sense == "max" else f"least {k}" for k in self.order) \
+                + f" (tolerance {self.tolerance:g})"
+        if self.mode == "pareto":
+            return "Pareto front of " + ", ".join(self.pareto)
+        g = GOALS[self.mode]
+        return f"maximise minimum {g.what}" if g.sense == "max" else f"minimise {g.what}"
+
+
+def _fmt_si(key, value):
+    g = GOALS[key]
+    return f"{value / g.factor:g} {g.unit}"
+
+
+
+@dataclass(frozen=True)
 class Column:
     """A goal's column in the printed candidate and Pareto tables (``report.solve``): ``format(value,
     f">{width}{spec}")`` under ``header``, in every table (``always``) or only in a front's that has the goal

@@ -22,7 +22,8 @@ from search_synthetic import (
 from axisopt import model
 from axisopt.cli import main
 from axisopt.errors import InputError
-from axisopt.problem import Objective, load_problem
+from axisopt.model.goals import Objective
+from axisopt.problem import load_problem
 from axisopt.search import solve
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
