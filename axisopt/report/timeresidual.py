@@ -239,7 +239,7 @@ def unexplained_dict(diag: TimeDiagnosis) -> dict | None:
         det = {k: v for k, v in p.detail.items() if isinstance(v, (int, float, str))}
         for k in ("period", "x0", "width", "speed"):
             if k in det:
-                det[f"{k}as_mm" if k != "speed" else "speed_mm_s"] = as_mm(diag, det.pop(k))
+                det[f"{k}_mm" if k != "speed" else "speed_mm_s"] = as_mm(diag, det.pop(k))
         if "group_amplitudes" in p.detail:
             det["speed_group_amplitudes"] = list(p.detail["group_amplitudes"])
         out.append({"kind": p.kind, "share": p.share, "log10_p": p.log10_p, "signature": what, "causes": causes,
