@@ -10,7 +10,8 @@ from dataclasses import fields
 from ..catalog.columns import SCHEMA, SHIPPED_DIR, SLOT_TABLES
 from ..units import DISPLAY_UNITS, unit_factor
 from .axis import Axis, Design
-from .keys import AXIS_KINDS, TWIN_SPEC
+from .keys import AXIS_KINDS
+from .sectionkeys import TWIN_SPEC
 
 TWIN_KINDS = {name: k.kind for name, k in TWIN_SPEC.keys.items()}
 

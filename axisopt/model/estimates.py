@@ -18,7 +18,8 @@ import numpy as np
 
 from ..catalog.columns import COLUMNS, SLOT_TABLES, USER_STATUS
 from ..units import DISPLAY_UNITS, unit_factor
-from .params import PART_PARAMS, RULE_PARAMS, axis_params, positions
+from .paramnames import PART_PARAMS, RULE_PARAMS
+from .params import axis_params, positions
 from .response import axis_response
 
 _STEP = 0.05  # relative perturbation of an estimated parameter

@@ -18,15 +18,9 @@ from ..model import CHECKS, Evaluation
 from ..model.limits import CHECK_RECORDS
 from ..search.reported import REPORTED
 from ..units import N_PER_UM
-from .evaluation import (
-    CHECK_SHORT,
-    CHECK_UNITS,
-    allowed_list,
-    drive_dict,
-    evaluation_dict,
-    fmt_value,
-    judged_rows,
-)
+from .checktext import allowed_list, judged_rows
+from .evaluation import CHECK_SHORT, CHECK_UNITS, drive_dict, evaluation_dict
+from .text import fmt_value
 
 
 @dataclass(repr=False)

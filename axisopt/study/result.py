@@ -6,9 +6,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..display import html_table, one_line
+from .cases import Study
 from .lock import StudyLock
 from .run import RunSummary, run_study
-from .spec import Study
 from .store import CaseStore
 from .table import results_table
 

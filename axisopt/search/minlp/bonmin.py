@@ -25,7 +25,8 @@ import numpy as np
 from ... import model
 from ...units import N_PER_UM
 from ..candidates import make_candidate
-from ..result import FEASIBLE, SOLVER_FAILED, Certificate, SolveResult
+from ..certificate import Certificate
+from ..result import FEASIBLE, SOLVER_FAILED, SolveResult
 from ..task.objective import STIFFNESS_OUTPUTS
 from .formulation import SLOTS, integral, one_hot_params, one_hot_symbols, recover
 from .scaling import scaled_limit

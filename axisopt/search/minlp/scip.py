@@ -30,15 +30,8 @@ from ...model.limits import margin_output
 from ...units import N_PER_UM
 from ..bestfirst import bound_order_search
 from ..candidates import make_candidate
-from ..result import (
-    INFEASIBLE,
-    OPTIMAL,
-    SOLVER_FAILED,
-    STATUSES,
-    TIME_LIMIT,
-    Certificate,
-    SolveResult,
-)
+from ..certificate import Certificate
+from ..result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, STATUSES, TIME_LIMIT, SolveResult
 from ..task.objective import STIFFNESS_OUTPUTS
 from ..task.space import respond
 from .formulation import SLOTS, recover
