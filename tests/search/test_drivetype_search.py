@@ -223,3 +223,24 @@ def test_default_offer_equals_exhaustive_over_every_type(tmp_path, monkeypatch):
                                     else best[0] >= screw.best.objective)
     # the cases are not all one way: some types pruned by bound, some searched, some won
     assert seen["bounded"] and seen["searched"] and seen["winners"], seen
+
+
+def test_default_offer_leaves_out_what_does_not_apply(tmp_path):
+    """A vertical axis without a counterbalance is offered no linear motor (the vendors ask a brake; listed
+    explicitly it is an input error), a short stroke no rack, a screw-only limit nothing."""
+    from axisopt.drivecatalog import default_drive_tables
+    from axisopt.search import drivedefault
+
+    rng = np.random.default_rng(7)
+    prob, tables = _default_problem(tmp_path, rng, "stiffness")
+    assert drivedefault.offered(prob, tables)[0] == ("linear_motor",)  # 400 mm: no rack by default
+    long = replace(prob, axis=replace(prob.axis, stroke=5.0))
+    assert drivedefault.offered(long, tables)[0] == ("rack_pinion", "linear_motor")
+    vertical = replace(long, axis=replace(long.axis, orientation="vertical"))
+    types, why, _ = drivedefault.offered(vertical, tables)
+    assert types == ("rack_pinion",) and "brake" in why["linear_motor"]
+    teaching = load_problem(ROOT / "problems" / "teaching_problem.yaml")
+    assert "max_drag_torque" in drivedefault.left_out(teaching, "default")
+    assert drivedefault.left_out(prob, "scip") and not drivedefault.left_out(prob, "default")
+    assert default_drive_tables().racks  # the shipped catalogs offer both
+    assert default_drive_tables().linear_motors
