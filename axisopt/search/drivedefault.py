@@ -28,7 +28,7 @@ import numpy as np
 
 from ..design.drivechoice import DriveChoice
 from ..drivecatalog import DriveTables, default_drive_tables
-from .drivebest import LEVEL1_MIN, _beaten, block_bounds, drive_bounds
+from .drivebest import LEVEL1_MIN, beaten, block_bounds, drive_bounds
 from .drivedesigns import (
     HANDLED,
     OBJECTIVES,
@@ -178,7 +178,7 @@ def offer(problem, screw_res, method: str = "default", *, top: int = 5, tables=N
         if not may:
             reasons[space.kind] = "no drive passes its checks even with the optimistic guide"
             continue
-        if best is not None and _beaten(bound, best, sense):
+        if best is not None and beaten(bound, best, sense):
             reasons[space.kind] = (
                 f"bounded out: at most {bound:.6g} {spec[2]}, the screw drive reaches {best:.6g}"
             )
