@@ -32,10 +32,10 @@ from .drivebest import LEVEL1_MIN, beaten, block_bounds, drive_bounds
 from .drivedesigns import (
     HANDLED,
     OBJECTIVES,
-    DriveDesign,
     DriveTypeResult,
     TypeSummary,
     rank_key,
+    screw_designs,
     spaces,
 )
 
@@ -132,27 +132,6 @@ def space_bound(problem, space, spec) -> tuple[float, bool]:
     return (float(np.max(v)) if sense == "max" else float(np.min(v))), True
 
 
-def _screw_designs(res) -> list:
-    designs = []
-    for c in ([res.best] + list(res.runners_up)) if res.best is not None else []:
-        out = c.outputs or {}
-        perr = out.get("positioning_error")
-        designs.append(
-            DriveDesign(
-                "screw",
-                {"mounting": c.mounting, **c.parts()},
-                c.objective,
-                c.cost,
-                c.moving_mass,
-                c.min_stiffness,
-                c.min_frequency,
-                float(perr) * 1e6 if perr is not None else float("nan"),
-                candidate=c,
-            )
-        )
-    return designs
-
-
 def offer(problem, screw_res, method: str = "default", *, top: int = 5, tables=None) -> Offer:
     """Offer rack and pinion and linear motors beside the screw answer ``screw_res`` of ``problem`` (see the
     module); ``tables``: the drive-type catalogs (default: the shipped ones)."""
@@ -170,7 +149,7 @@ def offer(problem, screw_res, method: str = "default", *, top: int = 5, tables=N
     sense = spec[3]
     sign = -1.0 if sense == "max" else 1.0
     p2 = replace(problem, drives=DriveChoice(types=("screw", *types), tables=tables))
-    screw = _screw_designs(screw_res)
+    screw = screw_designs(screw_res)
     best = screw[0].objective if screw else None
     designs, summaries = list(screw), []
     for space in spaces(p2):
