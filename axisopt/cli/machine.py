@@ -1,5 +1,6 @@
 """``axisopt machine solve MACHINE.yaml``: a whole machine's axes sized together, proven, with the sequential
-sizing beside it."""
+sizing beside it; ``axisopt machine study STUDY.yaml``: sweeps over a machine file, one joint solve per case,
+locally or on a Dask cluster (the axis study's runner)."""
 
 from __future__ import annotations
 
@@ -17,6 +18,20 @@ def register(sub) -> None:
                         "every combination of every axis (small catalogs only)")
     m.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     m.set_defaults(func=cmd_machine_solve)
+    st = msub.add_parser("study", help="sweeps over a machine file: one joint solve per case, resumable, "
+                         "locally or on a Dask cluster")
+    st.add_argument("study", help="machine study YAML file (base: a machine file)")
+    st.add_argument("--out", metavar="DIR", help="output directory (default: <study file stem>-results)")
+    st.add_argument("--workers", type=int, metavar="N",
+                    help="local worker processes (default: all cores; 0 solves in this process)")
+    st.add_argument("--scheduler", metavar="ADDRESS",
+                    help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])")
+    st.add_argument("--resume", action="store_true",
+                    help="continue an interrupted study in --out, solving only the missing cases")
+    st.add_argument("--overwrite", action="store_true",
+                    help="solve every case again: the case results already in --out are deleted first")
+    st.add_argument("--quiet", action="store_true", help="no progress bar")
+    st.set_defaults(func=cmd_machine_study)
 
 
 def cmd_machine_solve(args) -> int:
@@ -31,3 +46,47 @@ def cmd_machine_solve(args) -> int:
     if args.json:
         write_json(machine_dict(res), args.json)
     return EXIT_OK if res.best is not None else EXIT_NEGATIVE
+
+
+def cmd_machine_study(args) -> int:
+    import sys
+    from pathlib import Path
+
+    from ..errors import InputError
+    from ..study.machine import load_machine_study, run_machine_study
+    from ..study.result import clear_cases
+    from .common import one_line
+    from .study import _Bar, _is_terminal
+
+    if args.resume and args.overwrite:
+        raise InputError("--resume continues a run, --overwrite starts it again: give one of them")
+    if args.workers is not None and args.workers < 0:
+        raise InputError(f"--workers must be 0 or more, got {args.workers}")
+    if args.scheduler is not None and args.workers is not None:
+        raise InputError("--workers and --scheduler exclude each other (the cluster has its own workers)")
+    if args.scheduler is not None and not args.scheduler.strip():
+        raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
+    study = load_machine_study(args.study)
+    out = args.out or f"{Path(args.study).stem}-results"
+    if args.overwrite and Path(out).is_dir():
+        clear_cases(out)
+    bar = _Bar(not args.quiet and _is_terminal(sys.stderr))
+    try:
+        s = run_machine_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,
+                              progress=bar)
+    except KeyboardInterrupt:
+        bar.close()
+        print(one_line(f"interrupted: finished cases are saved in {out}/cases; continue with "
+                       f"'axisopt machine study {args.study} --out {out} --resume'"), file=sys.stderr)
+        return 130
+    finally:
+        bar.close()
+    print(f"machine study {study.name}: {s.total} cases; {s.solved} solved now on {s.backend}"
+          + (f" ({s.workers} workers)" if s.workers else "")
+          + (f", {s.resumed} kept from an earlier run" if s.resumed else "") + f"; {s.failed} without a machine")
+    for name, path in s.files.items():
+        print(f"  {name}: {path}")
+    if s.lost or s.died:
+        print(one_line(f"note: {s.lost + s.died} cases not solved ({s.lost_reason or 'worker died'}); rerun with "
+                       f"'axisopt machine study {args.study} --out {out} --resume'"), file=sys.stderr)
+    return EXIT_NEGATIVE if s.lost or s.died or s.failed else EXIT_OK
