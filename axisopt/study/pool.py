@@ -203,9 +203,10 @@ def _stop_workers(pool: list, gently: bool) -> None:
 
 
 def run_dask(scheduler, ctx: dict, batches: list, sink, max_tasks: int | None = None):
-    """Solve ``batches`` (tuples of cases) on a Dask cluster, each finished batch's records to ``sink``; at most
-    ``max_tasks`` (default :data:`MAX_TASKS`) batches are submitted at a time (the scheduler's memory and bookkeeping grow with its tasks), the
-    next one as each ends.  Returns (cases lost, the reason, workers)."""
+    """Solve ``batches`` (tuples of cases) on a Dask cluster, each finished batch's records to ``sink``.
+
+    At most ``max_tasks`` (default :data:`MAX_TASKS`) batches are submitted at a time (the scheduler's memory
+    and bookkeeping grow with its tasks), the next one as each ends.  Returns (cases lost, reason, workers)."""
     try:
         from dask.distributed import Client, as_completed
     except ImportError:
