@@ -4,7 +4,7 @@ locally or on a Dask cluster (the axis study's runner)."""
 
 from __future__ import annotations
 
-from .common import EXIT_NEGATIVE, EXIT_OK, show, write_json
+from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json
 
 
 def register(sub) -> None:
@@ -17,6 +17,7 @@ def register(sub) -> None:
                    help="default: exact Pareto sets of what each axis offers the one below (proven); exhaustive: "
                         "every combination of every axis (small catalogs only)")
     m.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
+    add_html_report(m, "the joint optimum, the stiffness chain at the tool and the sequential sizing")
     m.set_defaults(func=cmd_machine_solve)
     st = msub.add_parser("study", help="sweeps over a machine file: one joint solve per case, resumable, "
                          "locally or on a Dask cluster")
@@ -39,12 +40,19 @@ def cmd_machine_solve(args) -> int:
     from ..machine import load_machine, solve_machine
     from ..report.machine import format_machine, machine_dict
 
+    check_html_report(args.report, args.plotly)
     machine = load_machine(args.machine)
     res = solve_machine(machine, args.method)
+    text = format_machine(res)
     if not (args.json and is_stdout(args.json)):
-        show(format_machine(res))
+        show(text)
     if args.json:
         write_json(machine_dict(res), args.json)
+    if args.report:
+        from ..report.html import write_page
+        from ..report.machine_html import machine_page
+
+        write_page(machine_page(res, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
     return EXIT_OK if res.best is not None else EXIT_NEGATIVE
 
 
