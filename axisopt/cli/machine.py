@@ -19,6 +19,11 @@ def register(sub) -> None:
     m.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     add_html_report(m, "the joint optimum, the stiffness chain at the tool and the sequential sizing")
     m.set_defaults(func=cmd_machine_solve)
+    c = msub.add_parser("compare", help="machines side by side: each a machine file (solved now) or a machine "
+                        "result JSON (from machine solve --json)")
+    c.add_argument("machines", nargs="+", metavar="FILE", help="machine YAML files or machine result JSON files")
+    c.add_argument("--json", metavar="FILE", help="write the machines' results as one JSON list ('-' for stdout)")
+    c.set_defaults(func=cmd_machine_compare)
     st = msub.add_parser("study", help="sweeps over a machine file: one joint solve per case, resumable, "
                          "locally or on a Dask cluster")
     st.add_argument("study", help="machine study YAML file (base: a machine file)")
@@ -98,3 +103,35 @@ def cmd_machine_study(args) -> int:
         print(one_line(f"note: {s.lost + s.died} cases not solved ({s.lost_reason or 'worker died'}); rerun with "
                        f"'axisopt machine study {args.study} --out {out} --resume'"), file=sys.stderr)
     return EXIT_NEGATIVE if s.lost or s.died or s.failed else EXIT_OK
+
+
+def _machine_result(path: str) -> dict:
+    """A machine result: a JSON file as written by machine solve --json, or a machine file solved now."""
+    import json
+
+    from ..errors import InputError
+    from ..fileio import read_input
+    from ..machine import load_machine, solve_machine
+    from ..machine.record import result_dict
+    from ..report.machine_compare import check_result
+
+    if path.lower().endswith(".json"):
+        try:
+            d = json.loads(read_input(path, "case", what="machine result"))
+        except ValueError as exc:
+            raise InputError(f"not JSON ({exc})", source=path) from None
+        return check_result(d, path)
+    return result_dict(solve_machine(load_machine(path)))
+
+
+def cmd_machine_compare(args) -> int:
+    from ..report.machine_compare import format_compare
+
+    results = [_machine_result(p) for p in args.machines]
+    from ..fileio import is_stdout
+
+    if not (args.json and is_stdout(args.json)):
+        show(format_compare(results))
+    if args.json:
+        write_json(results, args.json)
+    return EXIT_OK if all(r["best"] is not None for r in results) else EXIT_NEGATIVE
