@@ -69,7 +69,7 @@ def cmd_machine_study(args) -> int:
     from ..study.machine import load_machine_study, run_machine_study
     from ..study.result import clear_cases
     from .common import one_line
-    from .study import _Bar, _is_terminal
+    from .study import ProgressBar, is_terminal
 
     if args.resume and args.overwrite:
         raise InputError("--resume continues a run, --overwrite starts it again: give one of them")
@@ -83,7 +83,7 @@ def cmd_machine_study(args) -> int:
     out = args.out or f"{Path(args.study).stem}-results"
     if args.overwrite and Path(out).is_dir():
         clear_cases(out)
-    bar = _Bar(not args.quiet and _is_terminal(sys.stderr))
+    bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
     try:
         s = run_machine_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,
                               progress=bar)
