@@ -70,3 +70,25 @@ def random_machine(seed: int) -> str:
     if rng.random() < 0.15:
         lines += _axis(rng, "W", "frame", "x" if dirs[0][0] != "x" else "y", "z")
     return "\n".join(lines) + "\n"
+
+
+def check_default_equals_exhaustive(seed: int, tmp_path) -> None:
+    """The default machine search against every combination of every axis on random machine ``seed``: the same
+    status and optimum, both feasible, and never worse than the sequential sizing where that one is feasible."""
+    import pytest
+
+    from axisopt.machine import load_machine, solve_machine
+
+    path = tmp_path / "machine.yaml"
+    path.write_text(random_machine(seed))
+    m = load_machine(path)
+    a = solve_machine(m)
+    b = solve_machine(m, "exhaustive")
+    assert a.status == b.status
+    if b.best is None:
+        return
+    va, vb = a.best.value(m.objective), b.best.value(m.objective)
+    assert va == pytest.approx(vb, rel=1e-9)
+    assert a.best.feasible and b.best.feasible
+    if a.sequential is not None and a.sequential.feasible:
+        assert a.gain >= -1e-9 * max(1.0, abs(va))
