@@ -19,6 +19,12 @@ def register(sub) -> None:
     m.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     add_html_report(m, "the joint optimum, the stiffness chain at the tool and the sequential sizing")
     m.set_defaults(func=cmd_machine_solve)
+    e = msub.add_parser("evaluate", help="a machine whose axes name one part per slot (catalog.require): the "
+                        "stiffness at the tool with every link, the frequencies, the machine limits")
+    e.add_argument("machine", help="machine YAML file, every axis's parts named")
+    e.add_argument("--json", metavar="FILE", help="write the machine as JSON ('-' for stdout)")
+    add_html_report(e, "the machine: the stiffness chain at the tool, every axis, the frequencies")
+    e.set_defaults(func=cmd_machine_evaluate)
     c = msub.add_parser("compare", help="machines side by side: each a machine file (solved now) or a machine "
                         "result JSON (from machine solve --json)")
     c.add_argument("machines", nargs="+", metavar="FILE", help="machine YAML files or machine result JSON files")
@@ -135,3 +141,26 @@ def cmd_machine_compare(args) -> int:
     if args.json:
         write_json(results, args.json)
     return EXIT_OK if all(r["best"] is not None for r in results) else EXIT_NEGATIVE
+
+
+def cmd_machine_evaluate(args) -> int:
+    from ..fileio import is_stdout
+    from ..machine import load_machine
+    from ..machine.evaluate import evaluate_machine
+    from ..machine.record import design_dict
+    from ..report.machine import format_evaluation
+
+    check_html_report(args.report, args.plotly)
+    ev = evaluate_machine(load_machine(args.machine))
+    text = format_evaluation(ev)
+    if not (args.json and is_stdout(args.json)):
+        show(text)
+    if args.json:
+        write_json({"machine": ev.machine.name, "failed": [{"axis": n, "carried_kg": c} for n, c in ev.failed],
+                    "design": None if ev.design is None else design_dict(ev.design)}, args.json)
+    if args.report:
+        from ..report.html import write_page
+        from ..report.machine_html import evaluation_page
+
+        write_page(evaluation_page(ev, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
+    return EXIT_OK if ev.design is not None and ev.design.feasible else EXIT_NEGATIVE

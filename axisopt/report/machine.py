@@ -91,6 +91,23 @@ def format_machine(res) -> str:
                                                   if len(line) > WIDTH else [line]))
 
 
+def format_evaluation(ev) -> str:
+    """A machine of chosen parts (:class:`axisopt.machine.evaluate.MachineEvaluation`): every axis, the
+    stiffness chain at the tool with each link, the frequencies and the machine limits it misses."""
+    m = ev.machine
+    L = [f"machine {m.name}: {len(m.axes)} axes ({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
+         " on the frame), its parts as chosen"]
+    if ev.design is None:
+        for name, load in ev.failed:
+            L.append(f"axis {name}: its parts miss its own limits carrying {load:,.1f} kg (evaluate it alone with "
+                     "`axisopt solve`, whose answer says which limit)")
+    else:
+        L += _design_lines(ev.design, m.objective)
+        L.append("meets every machine limit" if ev.design.feasible else "misses a machine limit (above)")
+    return "\n".join(w for line in L for w in (textwrap.wrap(line, WIDTH, subsequent_indent="    ")
+                                                  if len(line) > WIDTH else [line]))
+
+
 def machine_dict(res) -> dict:
     """The result as plain data for JSON (:func:`axisopt.machine.record.result_dict`)."""
     from ..machine.record import result_dict

@@ -193,4 +193,24 @@ def machine_page(res, text: str, interactive: bool = False):
     return page
 
 
-__all__ = ["machine_page", "link_rows", "axis_rows", "compliance_figure"]
+def evaluation_page(ev, text: str, interactive: bool = False):
+    """The report of a machine of chosen parts (:class:`axisopt.machine.evaluate.MachineEvaluation`)."""
+    m = ev.machine
+    page = H.Page(f"Machine: {m.name}", "its parts as chosen", interactive=interactive)
+    md = ev.design
+    if md is None:
+        page.card("status", "an axis misses its own limits", "bad")
+    else:
+        page.card("machine limits", "met" if md.feasible else "missed", "ok" if md.feasible else "bad")
+        for i, d in enumerate(DIRECTIONS):
+            page.card(f"k_{d} at the tool", f"{md.k_tool[i] * 1e-6:,.1f} N/um")
+        page.card("lowest frequency", f"{md.f_lowest:,.1f} Hz")
+        page.card("cost", f"{md.cost:,.0f} EUR")
+        page.figure("Compliance at the tool, each link", lambda: _compliance_plotly(md),
+                    lambda: compliance_figure(md), 320)
+        _design_sections(page, md, "The machine")
+    page.section("Result (as printed)").append(H.pre(text))
+    return page
+
+
+__all__ = ["machine_page", "evaluation_page", "link_rows", "axis_rows", "compliance_figure"]
