@@ -28,8 +28,9 @@ from pathlib import Path
 from ..errors import InputError
 from ..machine.spec import DIRECTIONS
 from ..yamlio import Key, Section, Spec, read_yaml
+from .cases import Case, Study, expand, short_message
 from .machinecase import build_machine, solve_machine_case
-from .spec import COMBINE, SWEEP_SPEC, Case, Study, _read_sweep, expand, short_message
+from .spec import COMBINE, SWEEP_SPEC, read_sweep
 from .store import CaseStore
 
 METHODS = ("default", "exhaustive")
@@ -95,7 +96,7 @@ def load_machine_study(path) -> MachineStudy:
             "study is `axisopt study`",
         )
     sweep_sec = root.read("sweep")
-    sweeps = tuple(_read_sweep(sweep_sec, k) for k in sweep_sec.keys())
+    sweeps = tuple(read_sweep(sweep_sec, k) for k in sweep_sec.keys())
     if not sweeps:
         raise root.error("sweep", "list at least one key to sweep")
     root.done()

@@ -12,7 +12,7 @@ from pathlib import Path
 from ..errors import InputError
 from ..machine.spec import MACHINE_FILE_SPEC, read_machine
 from ..yamlio import Section
-from .spec import Case, apply_overrides, short_message
+from .cases import Case, apply_overrides, short_message
 from .store import RECORD_VERSION
 
 OBJECTIVE_UNITS = {

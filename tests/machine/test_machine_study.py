@@ -9,8 +9,8 @@ from machinegen import random_machine
 
 from axisopt.cli import main
 from axisopt.machine import load_machine, solve_machine
+from axisopt.study.cases import Case
 from axisopt.study.machine import build_machine, load_machine_study, run_machine_study
-from axisopt.study.spec import Case
 
 SWEEP = """sweep:
   axes.A.problem.axis.moving_mass: [200 kg, 300 kg, 400 kg]
