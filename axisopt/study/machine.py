@@ -31,7 +31,7 @@ from ..yamlio import Key, Section, Spec, read_yaml
 from .cases import Case, Study, expand, short_message
 from .machinecase import build_machine, solve_machine_case
 from .spec import COMBINE, SWEEP_SPEC, read_sweep
-from .store import CaseStore
+from .store import CaseStore, refuse_inputs_in
 
 METHODS = ("default", "exhaustive")
 TABLE = "machines.csv"
@@ -209,6 +209,7 @@ def run_machine_study(
     Dask) and write the table; the :class:`.run.RunSummary`."""
     from .run import run_study
 
+    refuse_inputs_in(out_dir, [study.source, study.base_source], ("study.json", TABLE))
     summary = run_study(
         study,
         out_dir,
