@@ -27,9 +27,12 @@ parts:
 TOP = 6340.0  # HIWIN-R40-10K5-FDC's highest catalog preload [N] (H-BS Table 6.5)
 
 
-def _rows(tmp_path, preload):
-    f = tmp_path / f"d{preload:.0f}.yaml"
-    f.write_text(AXIS.format(preload=f"{preload:g} N"), encoding="utf-8")
+def _rows(tmp_path, preload, rise="balance"):
+    f = tmp_path / f"d{preload:.0f}{rise}.yaml"
+    text = AXIS.format(preload=f"{preload:g} N").replace(
+        "rise_without_cycle: balance", f"rise_without_cycle: {rise}"
+    )
+    f.write_text(text, encoding="utf-8")
     ev = evaluate(load_design(f))
     return ev, {label: value for label, value, _ in budget_rows(ev)}
 
@@ -61,3 +64,28 @@ def test_thermal_row_follows_the_designs_preload(tmp_path):
         r_low["total the limit holds (thermal at top preload)"]
         > r_low["total, arithmetic worst case"]
     )
+
+
+@pytest.mark.published
+def test_thermal_warning_at_thk_planning_range(tmp_path):
+    """THK A-715: a 2-5 degC rise is planned for with a target travel of -0.02 to -0.06 mm/m; a growth beyond
+    0.06 mm/m over the far end's distance from the fixed bearing is warned of, naming the key that bounds it."""
+    from axisopt.report.evaluation import thermal_warning
+
+    seen = set()
+    for preload, rise in ((2000.0, "balance"), (TOP, "balance"), (2000.0, "practice")):
+        ev, _ = _rows(tmp_path, preload, rise)
+        growth = float(ev.values["thermal_growth"])
+        far = ev.design.axis.start_offset + ev.design.axis.stroke
+        warn = thermal_warning(ev)
+        assert ("exceeds THK A-715's planning range" in warn) == (growth > 0.06e-3 * far), (
+            preload,
+            growth,
+        )
+        seen.add(growth > 0.06e-3 * far)
+        if growth > 0.06e-3 * far:
+            assert "limits.max_thermal_growth" in warn
+    assert seen == {
+        True,
+        False,
+    }  # both sides of the planning range met: 104 / 324 um and the practice 3 K
