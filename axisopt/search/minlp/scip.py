@@ -359,9 +359,9 @@ def solve_scip(problem, space, constraints, objective, *, time_limit: float = 10
         if wrong and retry and time_limit - (time.perf_counter() - t0) > 0.1:
             again = solve_scip(problem, space, constraints, objective, time_limit=time_limit, top=top, t0=t0,
                                retry=False)
-            notes = ("; ".join(statuses) + f"; {wrong}; solved again with presolving off "
+            first = ("; ".join(statuses) + f"; {wrong}; solved again with presolving off "
                      f"({', '.join(f'{k} {v}' for k, v in RETRY_PARAMS.items())})")
-            cert = replace(again.certificate, notes=again.certificate.notes + (notes,))
+            cert = replace(again.certificate, notes=again.certificate.notes + (first,))
             return replace(again, certificate=cert)
         if wrong:
             status = SOLVER_FAILED
