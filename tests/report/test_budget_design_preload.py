@@ -70,7 +70,7 @@ def test_thermal_row_follows_the_designs_preload(tmp_path):
 def test_thermal_warning_at_thk_planning_range(tmp_path):
     """THK A-715: a 2-5 degC rise is planned for with a target travel of -0.02 to -0.06 mm/m; a growth beyond
     0.06 mm/m over the far end's distance from the fixed bearing is warned of, naming the key that bounds it."""
-    from axisopt.report.evaluation import thermal_warning
+    from axisopt.report.drivetext import thermal_warning
 
     seen = set()
     for preload, rise in ((2000.0, "balance"), (TOP, "balance"), (2000.0, "practice")):
