@@ -85,6 +85,7 @@ def test_missing_pyscipopt_names_the_extra(monkeypatch):
         solve(p, "scip")
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_contradicted_proof_is_detected():
     """A proof of infeasibility, or of an optimum below a design the search finds, is contradicted (the check
     that turns SCIP's numerically wrong proofs into a failure)."""
