@@ -47,6 +47,9 @@ KINDS = ("vmc_x", "vmc_y", "vmc_z", "lathe_x", "lathe_z", "gantry_twin", "vertic
 MECH_VENDORS = ("THK", "NSK", "Bosch Rexroth", "Schaeffler", "IKO", "NBS")
 MOTOR_SERIES = ("Sigma-7 SGM7G", "Sigma-7 SGM7A", "Sigma-7 SGM7J", "MELDAS HC (2000 r/min)",
                 "MELDAS HC-R (3000 r/min)", "MELSERVO-JE HG-KN", "SIMOTICS S-1FT7 (6000 r/min)")
+BEARING_VENDORS = ("NSK", "Schaeffler")
+COUPLING_SERIES = ("SERVOFLEX SFS-S (single steel disc element; pilot-bore/key hubs)",
+                   "GWB AKN metal bellows (clamping hubs; short; higher torsional stiffness)")
 COUPLINGS_SMALL = ("SFS-05S", "RINGFEDER-GWB-AKN-18", "RINGFEDER-GWB-AKN-30")
 COUPLINGS = ("SFS-06S", "SFS-08S", "RINGFEDER-GWB-AKN-60", "RINGFEDER-GWB-AKN-150", "RINGFEDER-GWB-AKN-300")
 
@@ -195,23 +198,47 @@ def make(seed: int, index: int) -> Case:
         lim.append(f"  max_drag_torque: {_fmt(round(rnd.uniform(0.3, 1.0) if tight else rnd.uniform(2, 6), 1))} N.m")
     if rnd.random() < 0.2:
         lim.append(f"  max_backlash: {_fmt(rnd.choice((0, 1, 5, 20)))} um")
-    lines += ["limits:"] + lim
-    # catalog filters
+    # catalog filters: an approved-vendor list covers every part kind the buyer orders (HIWIN's screws, nuts
+    # and guides; a bearing maker's angular-contact sets: HIWIN's own support units are its light-duty WBK
+    # sizes), single nuts come with the axial play their catalogs list (HIWIN up to 0.05 mm, THK 0.01 mm:
+    # catalogs/nuts.csv), and one case in five is a shortlist: one supplier per part kind, one series each, as
+    # a machine builder with framework contracts writes it (at most 10^6 combinations: the benchmark compares
+    # these with exhaustive enumeration)
     cat = []
-    if rnd.random() < 0.6:
-        cat.append(f"  vendors: [{', '.join(['HIWIN'] + rnd.sample(MECH_VENDORS, rnd.randint(0, 3)))}]")
-    if rnd.random() < 0.5:
+    shortlist = rnd.random() < 0.2
+    if shortlist:
+        maker = rnd.choice(BEARING_VENDORS)
+        sets = ("DF", "DFD", "DFF") if maker == "NSK" else ("DB",)  # what each lists from its catalog
+        cat += [f"  vendors: [HIWIN, {maker}]", "  nut_types: [double]",
+                f"  bearing_arrangements: [{rnd.choice(sets)}]",
+                f"  screw_grades: [{rnd.choice(('C3', 'C5'))}]",
+                f"  guide_types: [{rnd.choice(('ball', 'roller'))}]",
+                f"  guide_preload: [{rnd.choice(('medium', 'heavy'))}]",
+                f"  motor_series: [{rnd.choice(MOTOR_SERIES)}]",
+                f"  coupling_series: [{rnd.choice(COUPLING_SERIES)}]", "  reductions: no"]
+    elif rnd.random() < 0.6:
+        others = rnd.sample(MECH_VENDORS, rnd.randint(0, 3))
+        if not set(others) & set(BEARING_VENDORS):
+            others.append(rnd.choice(BEARING_VENDORS))
+        cat.append(f"  vendors: [{', '.join(['HIWIN'] + others)}]")
+    if not shortlist and rnd.random() < 0.5:
         cat.append("  mountings: [fixed-supported, fixed-fixed]")
-    if rnd.random() < 0.4:
-        cat.append(f"  nut_types: [{rnd.choice(('double', 'single'))}]")
-    if rnd.random() < 0.5:
+    if not shortlist and rnd.random() < 0.4:
+        nut = rnd.choice(("double", "single"))
+        cat.append(f"  nut_types: [{nut}]")
+        if nut == "single":
+            lim = [ln for ln in lim if not ln.startswith("  max_backlash:")] + ["  max_backlash: 50 um"]
+    lines += ["limits:"] + lim
+    if shortlist:
+        pass
+    elif rnd.random() < 0.5:
         cat.append(f"  motor_series: [{', '.join(rnd.sample(MOTOR_SERIES, rnd.randint(1, 3)))}]")
     elif rnd.random() < 0.03:  # the shipped motors list no flange: this filter leaves none (a clean input error)
         cat.append("  max_motor_flange: 130 mm")
-    if rnd.random() < 0.3:
+    if not shortlist and rnd.random() < 0.3:
         pool = COUPLINGS_SMALL if rnd.random() < 0.3 else COUPLINGS
         cat.append(f"  require: {{coupling: [{', '.join(rnd.sample(pool, 2))}]}}")
-    if rnd.random() < 0.15:
+    if not shortlist and rnd.random() < 0.15:
         cat.append(f"  screw_grades: [{rnd.choice(('C3', 'C5', 'C7'))}]")
     if cat:
         lines += ["catalog:"] + cat

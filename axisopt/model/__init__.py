@@ -21,7 +21,7 @@ from .function import (
 from .modes import STEEL_DAMPING
 from .outputs import CHAIN_OUTPUTS, OUTPUT_TABLE, OUTPUTS
 from .params import PARAM_NAMES, axis_params, one_design, positions
-from .response import axis_response, drive_inputs, drive_response
+from .response import axis_response, chain_response, drive_inputs, drive_response
 
 __all__ = [
     "CHAIN_OUTPUTS", "OUTPUT_TABLE", "OUTPUTS",
@@ -29,7 +29,7 @@ __all__ = [
     "SCALAR_OUTPUTS",
     "SCREW_EFFICIENCY",
     "STEEL_DAMPING", "AxisModel", "Evaluation", "axis_params", "axis_response", "design_params", "drive_inputs",
-    "drive_response",
+    "chain_response", "drive_response",
     "evaluate",
     "model_for", "one_design", "positions",
 ]
