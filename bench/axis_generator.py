@@ -45,6 +45,10 @@ KINDS = ("vmc_x", "vmc_y", "vmc_z", "lathe_x", "lathe_z", "gantry_twin", "vertic
 # HIWIN lists every mechanical slot; the others add screws and nuts (THK, Bosch Rexroth), bearings (NSK,
 # Schaeffler, THK) or guides (IKO, NBS): a vendors filter without HIWIN mostly leaves a slot empty (an input error)
 MECH_VENDORS = ("THK", "NSK", "Bosch Rexroth", "Schaeffler", "IKO", "NBS")
+# the largest rated power [W] of each motor series in catalogs/motors.csv: a buyer lists series that reach the
+# axis's power (below)
+SERIES_POWER = {"Sigma-7 SGM7G": 1800, "Sigma-7 SGM7A": 7000, "Sigma-7 SGM7J": 750, "MELDAS HC (2000 r/min)": 7000,
+                "MELDAS HC-R (3000 r/min)": 5000, "MELSERVO-JE HG-KN": 750, "SIMOTICS S-1FT7 (6000 r/min)": 1257}
 MOTOR_SERIES = ("Sigma-7 SGM7G", "Sigma-7 SGM7A", "Sigma-7 SGM7J", "MELDAS HC (2000 r/min)",
                 "MELDAS HC-R (3000 r/min)", "MELSERVO-JE HG-KN", "SIMOTICS S-1FT7 (6000 r/min)")
 BEARING_VENDORS = ("NSK", "Schaeffler")
@@ -104,7 +108,10 @@ def _axis(rnd, kind, s, lines, span=0.0):
     stroke = _r(rnd, *s["stroke"], 50)
     mass = _r(rnd, *s["mass"], 10)
     speed = _r(rnd, *s["speed"], 1)
-    acc = _r(rnd, *s["acc"], 0.5)
+    # heavier tables accelerate less (the upper end of the kind's range scaled by sqrt(lightest / this mass):
+    # our estimate of the published spread, light tables at 1 g, heavy ones at 0.1-0.3 g)
+    lo_a, hi_a = s["acc"]
+    acc = _r(rnd, lo_a, max(lo_a, hi_a * (s["mass"][0] / mass) ** 0.5), 0.5)
     force = _r(rnd, *s["force"], 100)
     table = _r(rnd, *s["table"], 50)
     mounting = rnd.choice(("fixed-supported", "fixed-fixed")) if stroke > 300 else rnd.choice(
@@ -193,7 +200,8 @@ def make(seed: int, index: int) -> Case:
         t = rnd.uniform(2, 6) if tight else rnd.uniform(20, 80)
         lim.append(f"  max_thermal_growth: {_fmt(round(t))} um")
     if rnd.random() < 0.2:
-        lim.append(f"  max_total_mass: {_fmt(round(a['mass'] * (0.05 if tight else 1.0) + 50, -1))} kg")
+        # the total mass includes the moving mass (a limit below it is refused): tight leaves 10 kg for the parts
+        lim.append(f"  max_total_mass: {_fmt(round(a['mass'] + (10 if tight else a['mass'] + 50), -1))} kg")
     if rnd.random() < 0.2:
         lim.append(f"  max_drag_torque: {_fmt(round(rnd.uniform(0.3, 1.0) if tight else rnd.uniform(2, 6), 1))} N.m")
     if rnd.random() < 0.2:
@@ -205,6 +213,10 @@ def make(seed: int, index: int) -> Case:
     # a machine builder with framework contracts writes it (at most 10^6 combinations: the benchmark compares
     # these with exhaustive enumeration)
     cat = []
+    # the motor series a buyer lists reach the axis's peak mechanical power (m a + F) v with a rated power of a
+    # third of it (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi HG/HC catalogs)
+    need = (a["mass"] * a["acc"] + a["force"]) * a["speed"] / 60.0 / 3.0
+    series = [m for m in MOTOR_SERIES if SERIES_POWER[m] >= need] or ["Sigma-7 SGM7A", "MELDAS HC (2000 r/min)"]
     shortlist = rnd.random() < 0.2
     if shortlist:
         maker = rnd.choice(BEARING_VENDORS)
@@ -214,7 +226,7 @@ def make(seed: int, index: int) -> Case:
                 f"  screw_grades: [{rnd.choice(('C3', 'C5'))}]",
                 f"  guide_types: [{rnd.choice(('ball', 'roller'))}]",
                 f"  guide_preload: [{rnd.choice(('medium', 'heavy'))}]",
-                f"  motor_series: [{rnd.choice(MOTOR_SERIES)}]",
+                f"  motor_series: [{rnd.choice(series)}]",
                 f"  coupling_series: [{rnd.choice(COUPLING_SERIES)}]", "  reductions: no"]
     elif rnd.random() < 0.6:
         others = rnd.sample(MECH_VENDORS, rnd.randint(0, 3))
@@ -232,7 +244,7 @@ def make(seed: int, index: int) -> Case:
     if shortlist:
         pass
     elif rnd.random() < 0.5:
-        cat.append(f"  motor_series: [{', '.join(rnd.sample(MOTOR_SERIES, rnd.randint(1, 3)))}]")
+        cat.append(f"  motor_series: [{', '.join(rnd.sample(series, rnd.randint(1, min(3, len(series)))))}]")
     elif rnd.random() < 0.03:  # the shipped motors list no flange: this filter leaves none (a clean input error)
         cat.append("  max_motor_flange: 130 mm")
     if not shortlist and rnd.random() < 0.3:

@@ -96,13 +96,17 @@ def _chain(p, x, mounting, preload, m, loads) -> tuple:
     return out, k, rock, modes
 
 
-def chain_response(p: dict, x, mounting: str, preload) -> dict:
+def chain_response(p: dict, x, mounting: str, preload, coupling_stiffnesses=None):
     """The outputs of :func:`axis_response` that the coupling's torsional stiffness changes (the stiffness
     chain, the stiffness at the tool, the axial modes and the achievable Kv), from the same sub-assemblies
     without the guides' loads, the checks, the drag, the cost and the positioning budget: what the
-    infeasibility explanation evaluates once per distinct coupling stiffness (search.infeasible.explain)."""
-    p, _, m, loads = loaded(p, preload)
-    return _chain(p, x, mounting, preload, m, loads)[0]
+    infeasibility explanation evaluates once per distinct coupling stiffness (search.infeasible.explain).
+    ``coupling_stiffnesses``: a list of values of ``p["coupling_stiffness"]`` [N m/rad]: a list of outputs, one
+    per value, sharing the heat balance and the loads (which the coupling does not change)."""
+    q, _, m, loads = loaded(p, preload)
+    if coupling_stiffnesses is None:
+        return _chain(q, x, mounting, preload, m, loads)[0]
+    return [_chain(dict(q, coupling_stiffness=k), x, mounting, preload, m, loads)[0] for k in coupling_stiffnesses]
 
 
 def drive_inputs(p: dict, preload) -> tuple:

@@ -21,7 +21,7 @@ from axisopt.search import solve
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
 from axis_generator import make  # noqa: E402
 
-SAMPLE = (35, 42, 53, 60, 70)
+SAMPLE = (35, 42, 53, 60, 78)
 
 
 @pytest.mark.slow
