@@ -26,10 +26,20 @@ spans themselves are our estimate):
 * precision stages: positioning errors 5-40 um (THK A-678 accuracy grades C1-C7 over 300-1 000 mm);
 * thermal growth limits 10-60 um (THK A-715: 12 um/m/degC, a 2-5 degC rise).
 
+* heavier tables accelerate less: the acceleration's upper end falls with sqrt(lightest / this mass) of the kind
+  (our estimate of the spread between light tables near 1 g and heavy ones at 0.1-0.3 g);
+* motor series: a buyer lists series that reach a rated power of a third of the axis's peak mechanical power
+  (m a + F) v (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi catalogs);
+* vendor lists cover every part kind bought (a bearing maker's angular-contact sets beside HIWIN's screws and
+  guides), single nuts come with the axial play their catalogs list (up to 0.05 mm), and one case in five is a
+  shortlist (one supplier and one series per part kind, one grade, no reduction: a machine builder's framework
+  contracts), which keeps it at 10^6 combinations or fewer: the benchmark's default == exhaustive sample.
+
 Boundary values the reference allows are drawn on purpose (``end_margin: 0 mm``, ``guide_blocks`` equal to
 ``rails``, ``axial_load: 0 N``, ``acceleration: 0 m/s^2`` without a drive, one mounting only), and about one case in
-twelve carries a unit slip (m/s for m/min, t for kg, kN for N, m for mm).  Tight limits make about a third of the
-cases infeasible (the benchmark prints the share).
+twelve carries a unit slip (m/s for m/min, t for kg, kN for N, m for mm).  About a third of the cases draw their
+limits from the stringent end (tight); the benchmark prints the share of infeasible answers, which is higher: the
+vendor checks (support-bearing life, lift-off, motor RMS torque) fail on many of the heavier draws as well.
 """
 
 from __future__ import annotations
