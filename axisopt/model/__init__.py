@@ -23,7 +23,7 @@ from .outputs import CHAIN_OUTPUTS, OUTPUT_TABLE, OUTPUTS
 from .paramnames import PARAM_NAMES
 from .params import axis_params, one_design, positions
 from .request import FULL, MECHANICS, SCREEN, Request
-from .response import axis_response, drive_inputs, drive_response
+from .response import axis_response, chain_response, drive_inputs, drive_response
 
 __all__ = [
     "CHAIN_OUTPUTS", "OUTPUT_TABLE", "OUTPUTS",
@@ -31,7 +31,7 @@ __all__ = [
     "SCALAR_OUTPUTS",
     "SCREW_EFFICIENCY",
     "STEEL_DAMPING", "AxisModel", "Evaluation", "axis_params", "axis_response", "design_params", "drive_inputs",
-    "drive_response",
+    "chain_response", "drive_response",
     "evaluate",
     "model_for", "one_design", "positions",
     "FULL", "MECHANICS", "SCREEN", "Request",

@@ -63,14 +63,8 @@ def axis_response(p: dict, x, mounting: str, preload, request: Request = FULL) -
     out.update(m)
     out.update({k: v for k, v in loads.items() if not isinstance(v, list)})  # per-phase lists: no outputs
     if request.chain or request.extras:
-        k = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
-        rock = rocking(p)
-        modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"], rock, m["gantry_moving_mass"])
-        out.update(k)
-        out.update(rock)
-        out.update(tool_stiffness(p, k["k_total"], rock))
-        out.update(modes)
-        out["kv"] = kv_rule(modes["f_axial"])  # achievable position-loop gain [1/s] (model.servo)
+        chained, k, rock, modes = _chain(p, x, mounting, preload, m, loads)
+        out.update(chained)
         # the positioning-error budget (model.accuracy): its rows at the stroke's softest points
         if request.budget:
             out.update(positioning_budget(p, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"],
@@ -86,6 +80,33 @@ def axis_response(p: dict, x, mounting: str, preload, request: Request = FULL) -
         out.update(drive_train_modes(p, k, modes["m_eff"]))
         out.update(damping(p, k, modes["m_eff"]))
     return out
+
+
+def _chain(p, x, mounting, preload, m, loads) -> tuple:
+    """The stiffness chain, the table's rocking, the stiffness at the tool, the axial modes and the achievable
+    Kv: (their outputs, the chain, the rocking, the modes)."""
+    k = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
+    rock = rocking(p)
+    modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"], rock, m["gantry_moving_mass"])
+    out = dict(k)
+    out.update(rock)
+    out.update(tool_stiffness(p, k["k_total"], rock))
+    out.update(modes)
+    out["kv"] = kv_rule(modes["f_axial"])  # achievable position-loop gain [1/s] (model.servo)
+    return out, k, rock, modes
+
+
+def chain_response(p: dict, x, mounting: str, preload, coupling_stiffnesses=None):
+    """The outputs of :func:`axis_response` that the coupling's torsional stiffness changes (the stiffness
+    chain, the stiffness at the tool, the axial modes and the achievable Kv), from the same sub-assemblies
+    without the guides' loads, the checks, the drag, the cost and the positioning budget: what the
+    infeasibility explanation evaluates once per distinct coupling stiffness (search.infeasible.explain).
+    ``coupling_stiffnesses``: a list of values of ``p["coupling_stiffness"]`` [N m/rad]: a list of outputs, one
+    per value, sharing the heat balance and the loads (which the coupling does not change)."""
+    q, _, m, loads = loaded(p, preload)
+    if coupling_stiffnesses is None:
+        return _chain(q, x, mounting, preload, m, loads)[0]
+    return [_chain(dict(q, coupling_stiffness=k), x, mounting, preload, m, loads)[0] for k in coupling_stiffnesses]
 
 
 def drive_inputs(p: dict, preload) -> tuple:

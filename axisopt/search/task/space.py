@@ -55,6 +55,13 @@ def respond(p, x, mounting, preload, request: model.Request) -> dict:
         return model.axis_response(p, x, mounting, preload, request)
 
 
+def respond_chain(p, x, mounting, preload, coupling_stiffnesses=None):
+    """:func:`axisopt.model.chain_response` on numpy: the outputs the coupling's stiffness changes
+    (:data:`COUPLING_KEYS`) without the rest of the model (a list, one per value of ``coupling_stiffnesses``)."""
+    with np.errstate(divide="ignore"):
+        return model.chain_response(p, x, mounting, preload, coupling_stiffnesses)
+
+
 # Outputs the motor, coupling and reduction change that the drive block computes without the stiffness chain
 # (model.drive_response; all others are the same for every drive of a mechanical combination, or, like the
 # positioning budget's lost motion, computed with the chain on the whole design), and the drive checks' margins:
