@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from axisopt.design import load_design
-from axisopt.model import axis_response, chain_response, design_params
+from axisopt.model import SCREEN, axis_response, chain_response, design_params
 from axisopt.model.params import positions
 from axisopt.search.task.space import COUPLING_KEYS
 
@@ -20,7 +20,7 @@ def test_chain_response_equals_axis_response(name):
     p = design_params(design)
     x = positions(design.axis)
     for preload in (800.0, 1500.0):
-        full = axis_response(p, x, design.axis.mounting, preload, extras=False)
+        full = axis_response(p, x, design.axis.mounting, preload, SCREEN)
         part = chain_response(p, x, design.axis.mounting, preload)
         keys = [k for k in COUPLING_KEYS if k in full]
         assert {"k_total", "k_tool", "f1", "kv"} <= set(keys)
