@@ -19,10 +19,9 @@ def mirrors(module: Path) -> list[Path]:
     """The test files mirroring one module (a path relative to axisopt/)."""
     folder = ROOT / "tests" / (module.parent if module.parent != Path(".") else Path("core"))
     stem = module.stem
+    found = folder.glob(f"test_{stem}*.py")
     return sorted(
-        p
-        for p in folder.glob(f"test_{stem}*.py")
-        if p.stem in (f"test_{stem}",) or p.stem.startswith(f"test_{stem}_")
+        p for p in found if p.stem == f"test_{stem}" or p.stem.startswith(f"test_{stem}_")
     )
 
 
