@@ -3,7 +3,7 @@
 One set of pure functions, one per sub-assembly (:mod:`.loads`, :mod:`.chain`, :mod:`.modes`,
 :mod:`.drag`, :mod:`.cost`, :mod:`.checks`), put together by :func:`axis_response`.  ``evaluate``, the
 search (screening on numpy, exact solves, IPOPT on the CasADi Function) and ``diagnose`` (its plant) all
-call it.
+call it, each asking for the sub-assemblies it needs (:class:`Request`, :mod:`.request`).
 """
 
 from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes
@@ -22,6 +22,7 @@ from .modes import STEEL_DAMPING
 from .outputs import CHAIN_OUTPUTS, OUTPUT_TABLE, OUTPUTS
 from .paramnames import PARAM_NAMES
 from .params import axis_params, one_design, positions
+from .request import FULL, MECHANICS, SCREEN, Request
 from .response import axis_response, drive_inputs, drive_response
 
 __all__ = [
@@ -33,4 +34,5 @@ __all__ = [
     "drive_response",
     "evaluate",
     "model_for", "one_design", "positions",
+    "FULL", "MECHANICS", "SCREEN", "Request",
 ]

@@ -255,8 +255,8 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     # there unless one of those reads them
     chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in mech if not c.lower_type)
     regen = reads_regen(constraints)
-    out_lo = respond(p, x, mounting, lo, drive_block=not two_stage, chain=chain_lo, regen=regen)
-    out_hi = respond(p, x, mounting, hi, drive_block=not two_stage, regen=regen)
+    out_lo = respond(p, x, mounting, lo, space.request.but(drive=not two_stage, chain=chain_lo, regen=regen))
+    out_hi = respond(p, x, mounting, hi, space.request.but(drive=not two_stage, regen=regen))
     for c in mech:
         v = favourable_bound(c, out_lo, out_hi, shape)
         miss = c.violation(v)
@@ -270,8 +270,8 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         cpl_lo = any(not c.lower_type for c in cpl)  # minimum stiffness and frequency: the highest preload only
         for k in k_cpl if cpl else ():
             pk = params(mechanics=True, coupling_stiffness=float(k))
-            by_k.append((respond(pk, x, mounting, lo, drive_block=False) if cpl_lo else None,
-                         respond(pk, x, mounting, hi, drive_block=False)))
+            by_k.append((respond(pk, x, mounting, lo, space.request.but(drive=False)) if cpl_lo else None,
+                         respond(pk, x, mounting, hi, space.request.but(drive=False))))
         for c in cpl:
             v = np.stack([favourable_bound(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
             miss = c.violation(v)

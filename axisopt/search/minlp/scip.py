@@ -131,7 +131,7 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
     K = N + B + G
     pick_n, pick_b, pick_g = (np.argmax(zj[:, :K], axis=0) for zj in zs)
     exact = respond(space.params_flat(mounting, pick_n, pick_b, pick_g), space.positions(mounting), mounting,
-                    pre_row[0, :K][:, None])
+                    pre_row[0, :K][:, None], space.request)
     for ci, c in enumerate(constraints):
         nodes = graph.outputs[nt + ci]
         a = np.asarray(exact[c.key], dtype=float)
@@ -202,7 +202,7 @@ def _failing_pairs(space, mounting, pair_limits, N, G) -> np.ndarray:
         sl = slice(lo, min(N * G, lo + PAIR_CHUNK))
         k = sl.stop - sl.start
         out = respond(space.params_flat(mounting, n_idx[sl], np.zeros(k, dtype=int), g_idx[sl]), x, mounting,
-                      np.asarray(space.preload_lo, float)[n_idx[sl]][:, None], chain=False)
+                      np.asarray(space.preload_lo, float)[n_idx[sl]][:, None], space.request.but(chain=False))
         for _ci, c, _j in pair_limits:
             v = np.broadcast_to(np.asarray(out[c.key], dtype=float).reshape(-1), (k,))
             bad[sl] |= ~np.asarray(c.ok(v), dtype=bool)
@@ -229,7 +229,7 @@ def _failing_combinations(space, mounting, limits, allowed):
         sl = slice(lo, min(len(n_idx), lo + PAIR_CHUNK))
         k = sl.stop - sl.start
         out = respond(space.params_flat(mounting, n_idx[sl], b_idx[sl], g_idx[sl]), x, mounting,
-                      np.asarray(space.preload_lo, float)[n_idx[sl]][:, None])
+                      np.asarray(space.preload_lo, float)[n_idx[sl]][:, None], space.request)
         for c in limits:
             v = np.asarray(c.value(out), dtype=float)
             v = v.reshape(k, -1) if v.ndim and v.shape[0] == k else np.broadcast_to(v.reshape(1, -1), (k, v.size))
