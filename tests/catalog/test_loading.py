@@ -156,20 +156,6 @@ def test_the_cached_catalog_reads_a_changed_file_again(tmp_path):
     assert "MY-GUIDE-16" not in default_catalog((d,)).guides.index
 
 
-def test_the_cached_drive_tables_read_a_changed_file_again(tmp_path):
-    from axisopt.drivecatalog import default_drive_tables
-
-    d = tmp_path / "mine"
-    d.mkdir()
-    lines = (SHIPPED_DIR / "racks.csv").read_text().splitlines()
-    rack = lines[0] + "\n" + lines[1].replace(lines[1].split(",")[0], "MY-RACK-A", 1) + "\n"
-    (d / "racks.csv").write_text(rack)
-    assert "MY-RACK-A" in {r["id"] for r in default_drive_tables((d,)).racks}
-    (d / "racks.csv").write_text(rack.replace("MY-RACK-A", "MY-RACK-B"))
-    ids = {r["id"] for r in default_drive_tables((d,)).racks}
-    assert "MY-RACK-B" in ids and "MY-RACK-A" not in ids
-
-
 @pytest.mark.parametrize("old, new", [("HIWIN,ground", "HIWIN\x00,ground"),  # a text cell (was accepted)
                                       (",16,5,", ",16\x00,5,")])             # a number cell
 def test_nul_byte_is_refused_naming_file_and_line(tmp_path, capsys, old, new):

@@ -86,15 +86,6 @@ def test_calibration_file_is_validated(tmp_path, capsys, old, new, words):
         assert rc == 2 and "\n" not in err and words in err, err
 
 
-def test_calibration_baseline_names_match_the_fit():
-    """The names and kinds a calibration may carry are the ones diagnose fits (measure.baseline_params)."""
-    from axisopt.identify.calibration import BASELINE_KINDS
-    from axisopt.identify.tables.measure import baseline_params
-
-    params = baseline_params({"stiffness", "friction", "frf"}, plant_from_design(load_design(DESIGN)))
-    assert {p.name: p.kind for p in params} == BASELINE_KINDS
-
-
 @pytest.mark.parametrize("old, new", [
     ("value: 200 GPa", "value: 0 GPa"),
     ("value: 200 GPa", "value: -202.7 GPa"),

@@ -1,9 +1,11 @@
-"""The joint machine search against every combination of every axis (small catalogs), and the sequential sizing."""
+"""The joint machine search against every combination of every axis (small catalogs), and never worse than
+the sequential sizing on the shipped machines."""
 
 import pytest
 from machinegen import check_default_equals_exhaustive, random_machine
 
-from axisopt.machine import load_machine
+from axisopt.machine import load_machine, solve_machine
+from axisopt.machine.templates import SHIPPED, TEMPLATES
 
 SEEDS = range(100)
 
@@ -28,3 +30,21 @@ def test_the_random_machines_cover_counterweights_twin_drives_and_the_non_monoto
         seen["twin drive"] += any(a.problem.axis.twin_drive is not None for a in m.axes)
         seen["two chains"] += len(chains) > 1
     assert min(seen.values()) >= 15, seen
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("kind", list(TEMPLATES))
+def test_shipped_machine_joint_never_worse_than_sequential(kind):
+    m = load_machine(f"problems/machines/{SHIPPED[kind]}")
+    res = solve_machine(m)
+    assert res.status == "optimal" and res.best.feasible
+    seq = res.sequential
+    assert seq is not None
+    if seq.feasible:
+        assert res.gain >= -1e-9 * max(1.0, abs(res.best.value(m.objective)))
+    # the stiffness at the tool: every link's compliance (axis part and frame) in series, by hand
+    for d in range(3):
+        c = sum(1.0 / a.k_axis[d] + 1.0 / a.k_frame[d] for a in res.best.axes)
+        assert res.best.k_tool[d] == pytest.approx(1.0 / c, rel=1e-12)
+    assert res.best.f_dunkerley <= res.best.f_lowest * (1 + 1e-12)
+

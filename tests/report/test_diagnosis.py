@@ -4,34 +4,16 @@ encountered in scalar divide' warnings): repeated frequencies count once, and th
 magnitude sampled around its resonance is found near the true frequency."""
 
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from axisopt.cli import main
 from axisopt.report.diagnosis import frf_peak
 
 
 def _single_mode(f, fn=120.0, zeta=0.05):
     r = f / fn
     return 1.0 / np.sqrt((1 - r**2) ** 2 + (2 * zeta * r) ** 2)
-
-
-def test_residual_plot_draws_direction_as_categories(tmp_path, monkeypatch):
-    # direction is +-1: a category per tick, not a continuous axis from -1 to 1
-    import axisopt.report.diagfiles as rep
-
-    figs = []
-    monkeypatch.setattr(rep, "save_figure", lambda fig, path, dpi=90: figs.append(fig))
-    root = Path(__file__).resolve().parents[2] / "problems" / "data"
-    assert main(["diagnose", str(root / "table_x_stiffness.csv"), "--design", str(root / "table_x.yaml"),
-                 "--report", str(tmp_path / "r")]) == 0
-    axes = {ax.get_xlabel(): ax for fig in figs for ax in fig.axes}
-    d = axes["direction"]
-    assert [t.get_text() for t in d.get_xticklabels()] == ["-1", "+1"]
-    assert axes["position [mm]"].get_xticklabels()[0].get_text() != "-1"
-    assert rep.categories("position", [0.0, 100.0, 200.0, 300.0]) is None
 
 
 def test_peak_with_every_reading_twice_equals_the_single_readings():

@@ -26,10 +26,8 @@ from axisopt.model.goals import Objective
 from axisopt.problem import load_problem
 from axisopt.search import solve
 from axisopt.search.parts import build_space
-from axisopt.search.task.constraints import build_constraints
 
 PROBLEMS = sorted((Path(__file__).resolve().parents[2] / "problems").glob("*_problem.yaml"))
-
 
 
 @pytest.mark.parametrize("seed", range(6))
@@ -317,37 +315,6 @@ def test_coupling_stiffness_in_chain_is_bounded_over_drive_pairs(seed):
     assert d2.best.objective == pytest.approx(e2.best.objective, rel=1e-6)
 
 
-def test_infeasibility_scores_equal_per_combination_evaluation():
-    """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
-    the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
-    combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
-    from axisopt.search.infeasible.explain import miss_scores
-    from axisopt.search.infeasible.optimism import RULE_WEIGHT, weight
-    from axisopt.search.task.constraints import as_vector
-    from axisopt.search.task.space import respond
-
-    p = _drive_problem(2, axis_coupling=2e3).with_limit("min_stiffness", 400e6)
-    sp, cons = build_space(p), build_constraints(p)
-    assert sp.n_drives > 1 and len(sp.coupling_stiffnesses()) == 2
-    new = np.full(sp.size, np.nan)
-    for idx, score in miss_scores(sp, cons):
-        new[idx] = score
-    ref = np.zeros(sp.size)
-    for mounting, sel, n, b, _g, prm, x in sp.by_mounting(np.arange(sp.size)):
-        k = len(sel)
-        lo = respond(prm, x, mounting, sp.preload_lo[n][:, None], sp.request)
-        hi = respond(prm, x, mounting, sp.preload_hi[n][:, None], sp.request)
-        ref[sel] += np.where(sp.fits[n, b], 0.0, RULE_WEIGHT)  # a compatibility rule outweighs every limit
-        for c in cons:
-            v_lo, v_hi = as_vector(c.value(lo), k), as_vector(c.value(hi), k)
-            if c.convex:
-                v = np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
-            else:
-                v = v_hi if c.lower_type else v_lo
-            ref[sel] += weight(c) * c.violation(v)
-    np.testing.assert_allclose(new, ref, rtol=1e-9, atol=1e-12)
-
-
 def _interior(p, key):
     d = solve(p, "default", top=1, sensitivities=False)
     e = solve(p, "exhaustive", top=1, sensitivities=False)
@@ -401,19 +368,6 @@ def test_infeasible_problem_is_explained():
     names = [u[0] for u in r.infeasibility.unmeetable]
     assert "max cost" in names and "min stiffness" in names
     assert r.infeasibility.closest and all(c.misses for c in r.infeasibility.closest)
-
-
-def test_sensitivity_reports_binding_drag_limit():
-    cat = make_catalog(np.random.default_rng(9), n_bearings=8)
-    make_double(cat)
-    # 0.8 N.m: since issue 26 the bearings without a listed starting torque take the vendor envelope (0.6 was
-    # infeasible)
-    p = make_problem(cat, axial_load=800.0, limits={"max_drag_torque": 0.8, "max_cost": 1e5})
-    r = solve(p, "default", top=1)
-    assert r.status == "optimal"
-    by = {b.limit: b for b in r.binding}
-    assert by["max_drag_torque"].binding and by["max_drag_torque"].objective_gain > 0
-    assert not by["max_cost"].binding
 
 
 # ----------------------------------------------------------------------------- YAML and CLI

@@ -69,35 +69,6 @@ def test_time_limit_bounds_every_arrangement_and_never_claims_a_proof(tmp_path):
     assert res.status == "time_limit" and res.certificate.proven is False
 
 
-def test_what_ifs_stop_at_the_deadline_and_say_so():
-    """The sensitivities and the advice's verifying searches take the command's deadline: past it, each limit
-    is named as cut (none reported unproven), and the advice verifies nothing and says it was cut."""
-    import time
-
-    from axisopt.problem import load_problem
-    from axisopt.search import solve
-    from axisopt.search.infeasible.advice import design_changes
-    from axisopt.search.sensitivity import limit_sensitivities
-    from axisopt.search.task.constraints import build_constraints
-
-    root = HERE.parents[2] / "problems"
-    teaching = load_problem(root / "teaching_problem.yaml")
-    res = solve(teaching, sensitivities=False)
-    cut: list = []
-    assert limit_sensitivities(teaching, res, deadline=time.perf_counter(), cut=cut) == []
-    assert sorted(cut) == sorted(k for k, v in teaching.limits if v)
-    full = limit_sensitivities(teaching, res)
-    assert {b.limit for b in full} == set(cut)
-
-    bad = load_problem(root / "infeasible_drive_problem.yaml")
-    r = solve(bad, sensitivities=False)
-    flag: list = []
-    assert design_changes(bad, build_constraints(bad), r.infeasibility, deadline=time.perf_counter(),
-                          cut=flag) == []
-    assert flag == [True]
-    assert design_changes(bad, build_constraints(bad), r.infeasibility)  # without the deadline: a change
-
-
 def _apply(text: str, changes) -> str:
     """The problem YAML text with the advice's changes written in as a user would write them."""
     import re

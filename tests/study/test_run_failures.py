@@ -8,7 +8,6 @@ import json
 import os
 import shutil
 import signal
-import socket
 import subprocess
 import time
 from pathlib import Path
@@ -50,8 +49,6 @@ def _finished_copy(reference, tmp_path) -> tuple:
 
 def _resume(src, out, *more) -> int:
     return main(["study", str(src), "--out", str(out), "--resume", "--workers", "0", "--quiet", *more])
-
-
 
 
 def _temporaries(d: Path) -> list:
@@ -182,30 +179,6 @@ def test_second_run_on_the_same_directory_is_refused(reference, tmp_path, capsys
     assert not (out / ".lock").exists()
     with StudyLock(out):
         assert json.loads((out / ".lock").read_text(encoding="utf-8"))["pid"] == os.getpid()
-
-
-@pytest.mark.parametrize("holder", ["dead", "garbled", "reused", "other host"])
-def test_stale_lock_is_taken_over_and_foreign_one_is_not(tmp_path, holder):
-    dead = subprocess.run([PYTHON, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
-    me = {"pid": int(dead.stdout), "host": socket.gethostname(), "start": 1, "since": "earlier"}
-    if holder == "garbled":  # killed between creating the file and writing it
-        text = ""
-    elif holder == "reused":  # the pid now belongs to another process (this one), started at another time
-        text = json.dumps({**me, "pid": os.getpid()})
-    elif holder == "other host":  # its process may be alive: never taken over
-        text = json.dumps({**me, "pid": os.getpid(), "host": "elsewhere.example"})
-    else:
-        text = json.dumps(me)
-    lock = tmp_path / ".lock"
-    lock.write_text(text, encoding="utf-8")
-    if holder == "other host":
-        with pytest.raises(InputError, match="elsewhere.example"):
-            StudyLock(tmp_path).acquire()
-        assert lock.read_text(encoding="utf-8") == text
-    else:
-        with StudyLock(tmp_path):
-            assert json.loads(lock.read_text(encoding="utf-8"))["pid"] == os.getpid()
-        assert not lock.exists()
 
 
 # ------------------------------------------------------------------------------ dead pool workers

@@ -3,8 +3,6 @@ floats, numpy arrays and CasADi symbols, and their sizing follows the vendors' s
 
 from __future__ import annotations
 
-import math
-
 import casadi as ca
 import numpy as np
 import pytest
@@ -148,19 +146,3 @@ def test_rack_sizing_restated_by_hand():
     one = rack_response({**p, "twin": 0.0}, CYCLE)
     assert one["outputs"]["lost_motion"] == pytest.approx(8.7e-4 * r, rel=1e-12)
     assert one["margins"]["pinion_tooth"] == pytest.approx(20.1e3 / 1.25 / f_acc, rel=1e-12)
-
-
-def test_linear_motor_attraction_loads_friction_and_guides():
-    p = LM
-    res = lm_response(p, CYCLE)
-    m = p["m_axis"] + p["m_blocks"] + 2 * p["m_forcer"]
-    ff = p["mu"] * (m * 9.80665 + 2 * p["fa"]) + p["f_seal"]  # HIWIN: (M g + Fa) mu
-    assert res["outputs"]["feed_force"] == pytest.approx(m * 3.0 + ff + 750.0, rel=1e-12)
-    assert res["margins"]["motor_peak"] == pytest.approx(
-        2 * 2469.0 / (m * 3.0 + ff + 750.0), rel=1e-12
-    )
-    assert res["outputs"]["stiffness"] == pytest.approx(m * (2 * math.pi * 50.0) ** 2, rel=1e-12)
-    g = guide_response(
-        {**GUIDE, "normal": 0.0, "blocks": 4.0}, m, res["outputs"]["attraction_force"]
-    )
-    assert g["outputs"]["block_load"] == pytest.approx((m * 9.80665 + 2 * 4375.0) / 4, rel=1e-12)

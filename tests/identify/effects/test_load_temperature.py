@@ -93,7 +93,7 @@ def test_a_temperature_column_with_nan_is_a_one_line_error(tmp_path, plant):
     lines[50] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n")
     from pathlib import Path
-    design = Path(__file__).resolve().parents[2] / "problems" / "data" / "table_x.yaml"
+    design = Path(__file__).resolve().parents[3] / "problems" / "data" / "table_x.yaml"
     out = subprocess.run([sys.executable, "-m", "axisopt", "diagnose", str(path), "--design", str(design)],
                          capture_output=True, text=True)
     assert out.returncode == 2
