@@ -40,6 +40,7 @@ import numpy as np
 from ...errors import InputError
 from ...fileio import MAX_TIME_SAMPLES, read_input
 from ...units import (
+    PLAUSIBLE_MAX,
     check_plausible,
     check_width,
     read_header,
@@ -78,6 +79,7 @@ class TimeRecord:
     external: np.ndarray | None = None  # external force on the table in the effort's coordinate [N] or [N m]
     motor_q: np.ndarray | None = None  # motor encoder position in the record's coordinate (as ``q``)
     aux: dict = field(default_factory=dict)  # normal_load [N] on the guides, temperature [K]: conditions
+    segments: tuple = ()  # (start, end) of each window a long record is read in (:func:`windowed`); () whole
 
     @property
     def n(self) -> int:
@@ -192,9 +194,12 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     n = len(rows) - 1
     if n > MAX_TIME_SAMPLES:
         raise InputError(f"too many samples ({n:,}; at most {MAX_TIME_SAMPLES:,})", source=src)
-    data = np.empty((n, len(cols)))
-    lines = np.empty(n, dtype=int)
-    for r, (i, text) in enumerate(rows[1:]):
+    data = _fast_cells(rows[1:], cols, names)
+    lines = np.fromiter((i for i, _ in rows[1:]), dtype=int, count=n)
+    slow = data is None
+    if slow:
+        data = np.empty((n, len(cols)))
+    for r, (i, text) in enumerate(rows[1:] if slow else ()):  # the cell by cell check names the bad cell
         cells = text.split(",")
         check_width(cells, len(cols), source=src, line=i)
         lines[r] = i
@@ -254,6 +259,25 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
 _KELVIN = {"degC": 273.15, "C": 273.15, "celsius": 273.15}
 
 
+def _fast_cells(rows: list, cols: list, names: list):
+    """The data cells as an (n, columns) array when every row has the header's width and every cell is a
+    finite number within the plausible range of its column; else None, and the caller's cell-by-cell reading
+    names the first bad cell."""
+    k = len(cols)
+    if not rows or any(text.count(",") != k - 1 for _, text in rows):
+        return None
+    try:
+        data = np.array(",".join(text for _, text in rows).split(","), dtype=float).reshape(len(rows), k)
+    except ValueError:
+        return None
+    if not np.isfinite(data).all():
+        return None
+    for j, name in enumerate(names):
+        if name in _KIND and np.max(np.abs(data[:, j])) * abs(cols[j][2]) > PLAUSIBLE_MAX.get(_KIND[name], 1e12):
+            return None
+    return data
+
+
 def _factor(name, unit, src, where, lead) -> float:
     """SI factor of a column; positions in an angle unit become table travel [m] through the lead."""
     try:
@@ -293,11 +317,14 @@ def check_same_columns(est: TimeRecord, other: TimeRecord) -> None:
 BUTTER_ORDER = 4
 
 
-def lowpass(x, fs: float, fc: float, order: int = BUTTER_ORDER) -> np.ndarray:
+def lowpass(x, fs: float, fc: float, order: int = BUTTER_ORDER, segments=()) -> np.ndarray:
     """Zero-phase Butterworth low-pass: the squared magnitude :math:`|H|^2 = 1/(1 + (f/f_c)^{2n})` that a
     forward-backward (filtfilt) pass of an order-``n`` Butterworth applies, applied exactly by FFT.  The
     ends are extended by odd reflection over ``3 fs/fc`` samples (as filtfilt pads) so they do not ring.
-    ``x``: (n,) or (n, k) along axis 0."""
+    ``x``: (n,) or (n, k) along axis 0; ``segments``: (start, end) index ranges filtered each on its own (the
+    windows of a long record, :func:`windowed`)."""
+    if len(segments) > 1:
+        return np.concatenate([lowpass(x[a:b], fs, fc, order) for a, b in segments], axis=0)
     x = np.asarray(x, dtype=float)
     one = x.ndim == 1
     X = x[:, None] if one else x
@@ -332,12 +359,12 @@ class CutoffChoice:
     rule: str
 
 
-def choose_cutoff(q, fs: float) -> CutoffChoice:
+def choose_cutoff(q, fs: float, segments=()) -> CutoffChoice:
     """Cut-off from the data: the velocity spectrum (backward differences of the position) is compared with
     its noise floor -- white position noise (quantisation) gives :math:`N_0 \\sin^2(\\pi f/f_s)`, fitted on
     the upper half of the band -- and the cut-off is the highest frequency where the signal is still 10x
     that floor, but at least 5x the motion bandwidth (99 % of the signal power) and at most fs/8."""
-    v = np.diff(q) * fs
+    v = np.concatenate([np.diff(q[a:b]) for a, b in segments]) * fs if segments else np.diff(q) * fs
     f, ps = welch(v, fs)
     shape = np.sin(np.pi * f / fs) ** 2 + 1e-30
     upper = f > fs / 4
@@ -355,8 +382,12 @@ def choose_cutoff(q, fs: float) -> CutoffChoice:
     return CutoffChoice(fc, f99, f_snr, rule)
 
 
-def derivatives(q, fs: float, fc: float, orders: int = 2) -> list:
-    """[q_f, v, a, ...] up to ``orders`` (central differences of the zero-phase filtered position)."""
+def derivatives(q, fs: float, fc: float, orders: int = 2, segments=()) -> list:
+    """[q_f, v, a, ...] up to ``orders`` (central differences of the zero-phase filtered position), each of
+    ``segments`` on its own."""
+    if len(segments) > 1:
+        parts = [derivatives(q[a:b], fs, fc, orders) for a, b in segments]
+        return [np.concatenate([p[i] for p in parts]) for i in range(orders + 1)]
     out = [lowpass(q, fs, fc)]
     for _ in range(orders):
         out.append(np.gradient(out[-1]) * fs)
@@ -367,3 +398,47 @@ def decimation_factor(fs: float, fc: float) -> int:
     """Parallel decimation keeps every nd-th row after a low-pass at 0.8 of the new Nyquist frequency; nd is
     the largest with that cut-off still at or above ``fc``."""
     return max(1, int(0.8 * fs / (2.0 * fc)))
+
+
+# ------------------------------------------------------------------------------------------ long records
+LONG_SAMPLES = 150_000  # a record longer than this is identified in windows spread over it
+WINDOWS = 8  # how many
+WINDOW_SAMPLES = 8_000  # samples in each (8 s at 1 kHz), a window starts where the axis rests
+
+
+def windowed(rec: TimeRecord, long_samples: int = LONG_SAMPLES, count: int = WINDOWS,
+             size: int = WINDOW_SAMPLES) -> TimeRecord:
+    """``rec`` itself when it has at most ``long_samples`` samples; else ``count`` windows of ``size``
+    samples spread evenly over it, each starting at the first rest (the position still for 50 ms) at or after
+    its nominal start, as one record whose ``segments`` keep them apart: every filter, derivative and
+    closed-loop simulation then runs in each window on its own, and the times stay those of the record (a
+    warm-up's temperature, a drift's time from the start, a line's phase).  The slow physics a long record
+    is taken for (a warm-up over minutes) is sampled by the windows; the cost is that of ``count x size``
+    samples.  Windows on a record: :attr:`TimeRecord.segments`."""
+    n = rec.n
+    if n <= long_samples:
+        return rec
+    size = min(size, n // count)
+    m = max(1, int(0.05 * rec.fs))
+    still = np.abs(rec.q[m:] - rec.q[:-m]) <= 1e-4 * max(float(np.ptp(rec.q)), 1e-12)
+    starts = []
+    for k in range(count):
+        a = (k * (n - size)) // max(count - 1, 1)
+        rest = np.nonzero(still[a : a + size // 2])[0]
+        a = a + int(rest[0]) if len(rest) else a
+        starts.append(min(a, n - size))
+    idx = np.concatenate([np.arange(a, a + size) for a in starts])
+    segs, pos = [], 0
+    for _ in starts:
+        segs.append((pos, pos + size))
+        pos += size
+
+    def cut(x):
+        return None if x is None else x[idx]
+
+    note = (f"{count} windows of {size / rec.fs:.3g} s fitted, spread over its {n:,} samples "
+            f"({float(np.ptp(rec.t)):.4g} s)")
+    note = f"{rec.gain_note}; {note}" if rec.gain_note else note
+    return TimeRecord(rec.source, rec.t[idx], rec.q[idx], rec.effort[idx], rec.quantity, cut(rec.reference),
+                      rec.header, rec.effort_column, rec.lines[idx], note, cut(rec.external),
+                      cut(rec.motor_q), {k: v[idx] for k, v in rec.aux.items()}, tuple(segs))
