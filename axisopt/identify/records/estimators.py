@@ -134,7 +134,7 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
     every sample, or None if the simulation diverges.  Exact sticking (implicit Coulomb step)."""
     r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2, rec.segments)
     starts = {a for a, _ in rec.segments}  # a long record's windows: the loop restarts at rest in each
-    m = params.get("M", 0.0)
+    m = params.get("M", 0.0) + (float(rec.aux["payload"][0]) if "payload" in rec.aux else 0.0)
     if not m > 0:
         return None
     fv, fc, off = params.get("Fv", 0.0), params.get("Fc", 0.0), params.get("offset", 0.0)

@@ -18,6 +18,9 @@ Format (units in the headers, any unit of the quantity)::
 * ``normal_load [N]`` (optional): a normal load on the guide carriages besides the table's weight (a payload,
   a vertical process force); ``temperature [degC]`` (or K, optional): the axis's temperature (nut, guides or
   lubricant), for the friction laws in temperature (:mod:`.effects.load`).
+* ``payload [kg]`` (optional): a mass the run carries besides the axis's own, one value through a run (a
+  validation run with 350 kg more): taken as known, M a of it is moved to the effort's side, so the fitted
+  mass is the axis's own and runs with different payloads share one model.
 * ``external_force [N]`` (optional): a process force acting on the table (cutting, a spring, a weight),
   positive in +x.  The drive then supplies f = M a + F(v) - F_ext, so the identification fits f + F_ext;
   for torque records the force is taken to the motor as F_ext p / (2 pi eta) (lead p, screw efficiency eta).
@@ -52,7 +55,7 @@ from ...units import (
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
 COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force", "motor_position", "normal_load",
-                                                          "temperature")
+                                                          "temperature", "payload")
 # angle units spelled as revolutions that the unit library does not know (it knows 'turn')
 _REV = {"rev": "turn", "revs": "turn", "revolution": "turn", "revolutions": "turn"}
 CURRENT_UNITS = {"A": 1.0, "mA": 1e-3, "kA": 1e3}
@@ -116,7 +119,7 @@ def is_time_record(path) -> bool:
 # SI kind of each column, for the range check of every cell (current has no kind: its gain gives it one)
 _KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque",
          "external_force": "force", "motor_position": "length", "normal_load": "force",
-         "temperature": "temperature"}
+         "temperature": "temperature", "payload": "mass"}
 
 
 def parse_gain(text: str, *, source=None, where=None) -> tuple:
@@ -250,6 +253,8 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     aux = {}
     if "normal_load" in col:
         aux["normal"] = col["normal_load"]
+    if "payload" in col:  # a known mass the run carries, constant through the run
+        aux["payload"] = _payload(col["payload"], data, names, lines, lead, quantity, src)
     if "temperature" in col:  # absolute [K]: the column's unit is a temperature, its offset applied
         aux["temperature"] = col["temperature"] + _KELVIN.get(cols[names.index("temperature")][1].strip(), 0.0)
     return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext, motor_q,
@@ -257,6 +262,21 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
 
 
 _KELVIN = {"degC": 273.15, "C": 273.15, "celsius": 273.15}
+
+
+def _payload(m: np.ndarray, data, names, lines, lead: float, quantity: str, src: str) -> np.ndarray:
+    """The payload column [kg] in the record's coordinate (a torque record's motor side: m (p/2 pi)^2); one
+    value through a run: a payload that changes within it conflicts (InputError naming the line)."""
+    j = names.index("payload")
+    change = np.nonzero(m != m[0])[0]
+    if len(change):
+        k = int(change[0])
+        raise InputError(f"conflicting payloads in one run: {data[0, j]:g} at the start, {data[k, j]:g} here; a "
+                         "run carries one payload (give each payload its own record)", source=src,
+                         where=f"line {lines[k]}, column {j + 1} (payload)")
+    if m[0] < 0:
+        raise InputError(f"payload {data[0, j]:g} is negative", source=src, where=f"column {j + 1} (payload)")
+    return m * (1.0 if quantity == "force" else (lead / (2.0 * math.pi)) ** 2)
 
 
 def _fast_cells(rows: list, cols: list, names: list):
@@ -296,6 +316,8 @@ def _factor(name, unit, src, where, lead) -> float:
             return 1.0
         if name == "torque":
             return unit_factor(unit, "torque")
+        if name == "payload":
+            return unit_factor(unit, "mass")
     except ValueError as exc:
         raise InputError(f"{exc} in column '{name}'", source=src, where=where) from None
     if unit.strip() not in CURRENT_UNITS:

@@ -173,8 +173,10 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
     if len(keep) < 20:
         raise InputError(f"only {len(keep)} usable rows after filtering and decimation (the axis must move: "
                          f"speeds above {proc.vmin:.3g} in the record's unit/s)", source=rec.source)
-    y = lowpass(rec.effort + rec.external if rec.external is not None else rec.effort, proc.fs, proc.fdec,
-                segments=segs)[keep]
+    f = rec.effort + rec.external if rec.external is not None else rec.effort
+    if "payload" in rec.aux:  # a known mass: its inertial force leaves the effort, M stays the axis's own
+        f = f - rec.aux["payload"] * sig["a"]
+    y = lowpass(f, proc.fs, proc.fdec, segments=segs)[keep]
     return Rows(rec, sig, keep, y, proc)
 
 

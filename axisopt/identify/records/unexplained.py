@@ -26,7 +26,10 @@ def residual_peak(rows: Rows, est: Estimate) -> tuple:
     proc = rows.proc
     segs = rows.record.segments
     W = lowpass(full_matrix(rows.sig, est.terms, proc, est.shape), proc.fs, proc.fdec, segments=segs)
-    y = lowpass(rows.record.effort, proc.fs, proc.fdec, segments=segs)
+    e = rows.record.effort
+    if "payload" in rows.record.aux:  # a known mass's inertial force is not the model's misfit
+        e = e - rows.record.aux["payload"] * rows.sig["a"]
+    y = lowpass(e, proc.fs, proc.fdec, segments=segs)
     r = np.zeros(len(y))
     r[rows.keep[0] : rows.keep[-1]] = (y - W @ est.theta)[rows.keep[0] : rows.keep[-1]]
     moving = np.zeros(len(y), bool)
