@@ -144,4 +144,15 @@ def _cell(v) -> str:
     return str(v)
 
 
-__all__ = ["fmt", "fmt_column", "frame", "html_table", "html_fields", "one_line", "REPR_WIDTH"]
+__all__ = ["fmt", "fmt_column", "frame", "html_table", "html_fields", "one_line", "REPR_WIDTH", "json_value"]
+
+
+def json_value(v):
+    """``v`` ready for JSON: a non-finite float (and one inside a list, tuple or dict) becomes None."""
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    if isinstance(v, (list, tuple)):
+        return [json_value(x) for x in v]
+    if isinstance(v, dict):
+        return {k: json_value(x) for k, x in v.items()}
+    return v

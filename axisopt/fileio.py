@@ -187,6 +187,25 @@ def check_output_path(path, *, what: str = "file", where: str | None = None) -> 
                          where=where)
 
 
+def same_file(a, b) -> bool:
+    """Whether two paths name one existing file (hard and symbolic links included)."""
+    try:
+        return os.path.samefile(str(a), str(b))
+    except (OSError, ValueError):
+        return False
+
+
+def refuse_inputs(path, inputs, *, what: str = "file", where: str | None = None,
+                  hint: str = "give another file name") -> None:
+    """Refuse (InputError, one line) an output ``path`` that is one of ``inputs`` (the files the work read):
+    the Python functions' counterpart of the command line's output check, so that a call such as
+    ``save_calibration(diag, "run1.csv", sources=["run1.csv"])`` cannot replace the measured data."""
+    for src in inputs:
+        if src and same_file(path, src):
+            raise InputError(f"would overwrite the input {src} with the {what}; {hint}",
+                             source=str(path), where=where)
+
+
 class _NoClose:
     """Standard output lent to a writer: flushed, never closed."""
 

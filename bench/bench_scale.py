@@ -43,7 +43,8 @@ def problem(size: float):
 
     from axisopt.design import Axis
     from axisopt.model import CHECKS
-    from axisopt.problem import Objective, Problem, Restrictions
+    from axisopt.model.goals import Objective
+    from axisopt.problem import Problem, Restrictions
 
     s, n, b, g, m, c, r = SHAPES[size]
     cat = catalog(s, n, b, g, m, c, seed=int(math.log10(size)), n_reductions=r)
@@ -59,7 +60,7 @@ def problem(size: float):
 def one(size: float, method: str) -> dict:
     from dataclasses import replace
 
-    from axisopt.problem import Objective
+    from axisopt.model.goals import Objective
     from axisopt.search import solve
 
     p = problem(size)

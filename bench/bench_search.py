@@ -27,7 +27,8 @@ from axisopt.catalog.columns import SCHEMA  # noqa: E402
 from axisopt.catalog.loading import Catalog  # noqa: E402
 from axisopt.design import Axis  # noqa: E402
 from axisopt.model import CHECKS  # noqa: E402
-from axisopt.problem import Objective, Problem, Restrictions, load_problem  # noqa: E402
+from axisopt.model.goals import Objective  # noqa: E402
+from axisopt.problem import Problem, Restrictions, load_problem  # noqa: E402
 from axisopt.search import solve  # noqa: E402
 from axisopt.search.parts import build_space  # noqa: E402
 from axisopt.search.screen import screen  # noqa: E402

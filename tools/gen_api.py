@@ -32,10 +32,11 @@ FUNCTIONS = ("load_design", "load_problem", "evaluate", "solve", "compare", "stu
 # (module, class) in the order a notebook meets them
 CLASSES = (("axisopt.design", "Design"), ("axisopt.catalog.parttable", "Row"), ("axisopt.model.function", "Evaluation"),
            ("axisopt.search.result", "SolveResult"),
-           ("axisopt.search.result", "Candidate"), ("axisopt.search.result", "Binding"),
-           ("axisopt.search.result", "Bindings"), ("axisopt.search.result", "Certificate"),
-           ("axisopt.search.result", "ParetoFront"), ("axisopt.search.result", "Infeasibility"),
-           ("axisopt.search.result", "Relaxation"), ("axisopt.search.result", "DesignChange"),
+           ("axisopt.search.result", "Candidate"), ("axisopt.search.certificate", "Binding"),
+           ("axisopt.search.certificate", "Bindings"), ("axisopt.search.certificate", "Certificate"),
+           ("axisopt.search.result", "ParetoFront"), ("axisopt.search.infeasible.answer", "Infeasibility"),
+           ("axisopt.search.infeasible.answer", "Relaxation"),
+           ("axisopt.search.infeasible.answer", "DesignChange"),
            ("axisopt.report.compare", "Comparison"), ("axisopt.study.result", "StudyResult"),
            ("axisopt.figure", "Figure"))
 _UNIT = re.compile(r"(?<![\w\]])\[([^\]\[(),]{1,12})\]")  # [N/um], not list[Candidate] or [(name, value)]

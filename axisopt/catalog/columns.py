@@ -264,6 +264,8 @@ TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings", "reduct
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")
 DRIVE_SLOTS = ("motor", "coupling", "reduction")
 PART_SLOTS = MECH_SLOTS + DRIVE_SLOTS
+# each slot with its catalog table: (slot, table) in that order
+SLOT_TABLES = tuple(zip(PART_SLOTS, TABLES))
 
 
 def row_problem(name: str, rec: dict) -> tuple[str, str] | None:

@@ -54,7 +54,8 @@ def cmd_compare(args) -> int:
         if not stdout_taken(args.json, args.csv):
             print(f"\nplot written to {args.plot}")
     if args.report:
-        from ..report.html import compare_page, write_page
+        from ..report.html import write_page
+        from ..report.htmlpages import compare_page
 
         write_page(compare_page(items, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
         wrote(args.report, stdout_taken(args.json, args.csv))

@@ -20,7 +20,8 @@ def cmd_diagnose(args) -> int:
     from ..identify import diagnose, plant_from_design, read_dataset
     from ..identify.calibration import save_calibration
     from ..identify.effects import library
-    from ..report.diagnosis import diagnosis_dict, diagnosis_text, write_report
+    from ..report.diagfiles import write_report
+    from ..report.diagnosis import diagnosis_dict, diagnosis_text
 
     html = args.report is not None and str(args.report).lower().endswith((".html", ".htm"))
     if html and args.plotly != "no":
@@ -43,7 +44,8 @@ def cmd_diagnose(args) -> int:
     if not quiet:
         print(text)
     if html:
-        from ..report.html import diagnose_page, write_page
+        from ..report.html import write_page
+        from ..report.htmlpages import diagnose_page
 
         write_page(diagnose_page(diag, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
         if not quiet:

@@ -10,7 +10,7 @@ import re
 import stat as _stat
 
 from ..errors import InputError
-from ..fileio import PLOT_FORMATS, check_output_path, output_target
+from ..fileio import PLOT_FORMATS, check_output_path, output_target, same_file
 from .common import OUTPUT_OPTIONS
 
 # output options beyond the shared list: evaluate's state-space file
@@ -73,11 +73,7 @@ def _inputs(args, outputs: set) -> list:
     return found
 
 
-def _same(a: str, b: str) -> bool:
-    try:
-        return os.path.samefile(a, b)
-    except (OSError, ValueError):
-        return False
+_same = same_file
 
 
 def _named(name: str) -> str:

@@ -112,7 +112,8 @@ def cmd_solve(args) -> int:
         if not quiet:
             print(f"\nplot written to {args.plot}")
     if args.report:
-        from ..report.html import solve_page, write_page
+        from ..report.html import write_page
+        from ..report.htmlpages import solve_page
 
         write_page(solve_page(res, problem, text, interactive=args.plotly != "no"), args.report,
                    plotly=args.plotly)

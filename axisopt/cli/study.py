@@ -126,7 +126,8 @@ def cmd_study(args) -> int:
           + (f" ({s.workers} workers)" if s.workers else "")
           + (f", {s.resumed} kept from an earlier run" if s.resumed else "") + f"; {s.failed} failed")
     if args.report:
-        from ..report.html import study_page, write_page
+        from ..report.html import write_page
+        from ..report.htmlpages import study_page
         from ..study.table import results_table
 
         md = Path(s.files["report"]).read_text(encoding="utf-8") if "report" in s.files else ""

@@ -36,17 +36,8 @@ from .axis import (
     Design,
     G,
 )
-from .keys import (
-    AXIS_SPEC,
-    CATALOGS_KEY,
-    DESCRIPTION_KEY,
-    DESIGN_SPEC,
-    DWELL_SPEC,
-    MOVE_SPEC,
-    NAME_KEY,
-    PART_SPECS,
-    PARTS_SPEC,
-)
+from .keys import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, DESIGN_SPEC, NAME_KEY
+from .partkeys import PART_SPECS, PARTS_SPEC
 from .reader import (
     catalog_for,
     fitting_nuts,
@@ -58,6 +49,7 @@ from .reader import (
     read_parts,
     rotating_nut,
 )
+from .sectionkeys import DWELL_SPEC, MOVE_SPEC
 from .writer import design_to_dict, design_to_yaml
 
 __all__ = ["Axis", "Counterbalance", "CHAIN_EFFICIENCY", "COUNTERBALANCE_KINDS", "Design", "MOUNTINGS", "load_design",

@@ -13,8 +13,9 @@ from dataclasses import replace
 from ..errors import InputError
 from ..yamlio import Key, Node, Section, Spec
 from .drivechoice import DRIVE_KEYS
-from .keys import AXIS_SPEC, COUNTERBALANCE_SPEC, TWIN_SPEC
+from .keys import AXIS_SPEC
 from .reader import read_counterbalance, read_twin_drive
+from .sectionkeys import COUNTERBALANCE_SPEC, TWIN_SPEC
 
 MAX_OPTIONS = 12  # options per list (each arrangement is one full solve)
 SEARCH_SPEC = Spec("search", "axis arrangements the search chooses among (a problem only): each arrangement "

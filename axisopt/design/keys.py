@@ -6,126 +6,70 @@ as a JSON Schema.
 
 from __future__ import annotations
 
-from ..catalog.columns import CHOICES, COLUMNS, OPTIONAL_COLUMNS, SCHEMA
 from ..catalog.grades import SCALE_GRADES
 from ..yamlio import Key, Spec
-from .axis import BRAKE_MODES, COUNTERBALANCE_KINDS, MOUNTINGS, ORIENTATIONS
+from .axis import BRAKE_MODES, MOUNTINGS, ORIENTATIONS
+from .partkeys import PARTS_SPEC
+from .sectionkeys import (
+    COUNTERBALANCE_SPEC,
+    DWELL_SPEC,
+    MOVE_SPEC,
+    SEGMENT_LIMIT,
+    TWIN_SPEC,
+    axis_q,
+)
 
 # Each table below is the one declaration of its section's keys: the readers read them by it (Section.read)
 # and `axisopt schema` writes it out as a JSON Schema.  Unset axis keys take the Axis defaults (.axis).
 
-def _axis_q(kind: str, doc: str, *, required: bool = False, zero: bool = False, maximum=None) -> Key:
-    """An axis quantity: positive, or non-negative when ``zero``."""
-    return Key("quantity", doc, required=required, kind=kind, positive=not zero, non_negative=zero,
-               maximum=maximum)
 
-
-SEGMENT_LIMIT = 1000  # duty-cycle entries
-_FORCE = Key("quantity", "axial (process) force during the entry", kind="force", non_negative=True, default=0.0)
-# a workpiece loaded or unloaded: the entry's own moving mass (no inheritance from the entry before: a cycle repeats,
-# and each entry that differs from axis.moving_mass says so)
-_MASS = Key("quantity", "table + workpiece during the entry (default: axis.moving_mass, the heaviest the table "
-            "carries: an entry may be lighter, e.g. the workpiece unloaded)", kind="mass", positive=True,
-            example="300 kg")
-MOVE_SPEC = Spec("move", "a move of the duty cycle", {
-    "move": Key("quantity", "signed distance (+ forward, - back), at most the stroke", required=True,
-                kind="length", example="400 mm"),
-    "speed": Key("quantity", "top speed (default: axis.max_speed)", kind="speed", positive=True),
-    "acceleration": Key("quantity", "acceleration (default: axis.acceleration)", kind="acceleration",
-                        positive=True),
-    "jerk": Key("quantity", "jerk limit (default: axis.jerk)", kind="jerk", positive=True),
-    "force": _FORCE,
-    "moving_mass": _MASS,
-})
-DWELL_SPEC = Spec("dwell", "a dwell of the duty cycle", {
-    "dwell": Key("quantity", "duration", required=True, kind="time", positive=True, example="2 s"),
-    "force": _FORCE,
-    "moving_mass": _MASS,
-})
-COUNTERBALANCE_SPEC = Spec("counterbalance", "a vertical axis's counterweight or balance cylinder", {
-    "kind": Key("choice", "counterweight (a mass on a chain over a sprocket), cylinder (a pneumatic or hydraulic "
-                "balance cylinder) or none", required=True, choices=COUNTERBALANCE_KINDS),
-    "mass": _axis_q("mass", "counterweight: its mass, at most the axis's moving_mass"),
-    "efficiency": Key("number", "counterweight: efficiency of the chain or cable over its sprocket or pulley, in "
-                      "(0, 1] (default 0.95, an estimate)", positive=True, maximum=1.0),
-    "chain_mass": _axis_q("mass", "counterweight: the chain's or cable's mass, moving with it (default 0 kg)",
-                          zero=True),
-    "force": _axis_q("force", "cylinder: its force on the head at the stroke's start"),
-    "force_at_end": _axis_q("force", "cylinder: its force at the stroke's end (default: force, a constant-pressure "
-                            "regulator)"),
-    "tolerance": Key("quantity", "cylinder: pressure tolerance, +/- (default 0 %)", kind="dimensionless",
-                     non_negative=True, maximum=(0.5, "50 %"), example="5 %"),
-    "piston_mass": _axis_q("mass", "cylinder: piston and rod, moving with the head (default 0 kg)", zero=True),
-})
-# the keys of each kind (the others are refused: a counterweight has no force)
-COUNTERBALANCE_KEYS = {"none": ("kind",), "counterweight": ("kind", "mass", "efficiency", "chain_mass"),
-                       "cylinder": ("kind", "force", "force_at_end", "tolerance", "piston_mass")}
-# A twin-drive gantry (model.gantry): two synchronised drives with the same parts under one bridge (the
-# axis's moving_mass) with a cross carriage; the bounds keep machine-tool sizes (a bridge up to 50 m wide)
-TWIN_SPEC = Spec("twin_drive", "two synchronised screw drives (the same parts on both sides) under a bridge (the "
-                 "axis's moving_mass) with a cross carriage: a horizontal gantry only (refused on a vertical or wall "
-                 "axis).  Each drive is checked on the governing side with the cross carriage at the end of its "
-                 "stroke nearest it (its share 1/2 + cross_stroke / 2 span of the process force, half the bridge and "
-                 "that share of the cross carriage); the gantry's translation and racking (yaw) modes enter the 1st "
-                 "frequency; cost and mass count both drives", {
-    "span": _axis_q("length", "between the two drives (screw axes)", required=True, maximum=(50.0, "50 m")),
-    "cross_stroke": _axis_q("length", "the cross carriage's travel across the bridge, centred, at most span",
-                            required=True, zero=True, maximum=(50.0, "50 m")),
-    "cross_mass": _axis_q("mass", "cross carriage with its head (default 0 kg); axis.moving_mass is the bridge",
-                          zero=True, maximum=(1e5, "100 t")),
-    "bridge_yaw_inertia": _axis_q("inertia", "bridge about its centre, normal axis (default: from its parts, a "
-                                  "beam over span and the uprights at the drives)", maximum=(1e7, "1e7 kg.m^2")),
-    "upright_mass": _axis_q("mass", "both uprights (side columns) of the bridge, at the drives, part of "
-                            "axis.moving_mass (default, an estimate: half of it, J = m L^2 / 6, conservative "
-                            "for the racking mode)", zero=True, maximum=(1e5, "100 t")),
-})
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is not in
 # operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.  Plausible
 # drive ranges: a belt or gear stage of a feed drive reduces by at most about 1:20 either way (1:50 allowed);
 # an inertia-ratio limit beyond 1000 or a brake safety factor beyond 10 is no limit at all.
 AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional value with its unit)", {
-    "stroke": _axis_q("length", "travel of the table", required=True),
-    "moving_mass": _axis_q("mass", "table + workpiece, without nut and guide blocks", required=True),
+    "stroke": axis_q("length", "travel of the table", required=True),
+    "moving_mass": axis_q("mass", "table + workpiece, without nut and guide blocks", required=True),
     "mounting": Key("choice", "screw end supports (a problem: the default mounting)", required=True,
                     choices=MOUNTINGS),
-    "max_speed": _axis_q("speed", "rapid traverse speed", required=True),
-    "axial_load": _axis_q("force", "largest external axial (cutting) load", required=True, zero=True),
-    "start_offset": _axis_q("length", "fixed bearing to nut at stroke start, l0"),
-    "end_margin": _axis_q("length", "nut at stroke end to the far bearing", zero=True),
-    "mean_speed": _axis_q("speed", "mean speed for the life (default: half of max_speed)"),
-    "mean_axial_load": _axis_q("force", "mean axial load for the life (default: a third of axial_load)", zero=True),
-    "acceleration": _axis_q("acceleration", "acceleration of the moves", zero=True),
-    "required_life": _axis_q("time", "required life of the nut, bearings and guides (problem default: its "
+    "max_speed": axis_q("speed", "rapid traverse speed", required=True),
+    "axial_load": axis_q("force", "largest external axial (cutting) load", required=True, zero=True),
+    "start_offset": axis_q("length", "fixed bearing to nut at stroke start, l0"),
+    "end_margin": axis_q("length", "nut at stroke end to the far bearing", zero=True),
+    "mean_speed": axis_q("speed", "mean speed for the life (default: half of max_speed)"),
+    "mean_axial_load": axis_q("force", "mean axial load for the life (default: a third of axial_load)", zero=True),
+    "acceleration": axis_q("acceleration", "acceleration of the moves", zero=True),
+    "required_life": axis_q("time", "required life of the nut, bearings and guides (problem default: its "
                              "limits.min_life, else 20000 h)"),
     "load_factor": Key("number", "load factor fw of the life calculation (default: THK A-704 Table 19 by "
                        "max_speed, the upper end of its row: 1.2 up to 15 m/min, 1.5 to 60, 2 to 120, else 3.5)",
                        minimum=1.0, maximum=10.0),
     "guide_blocks": Key("number", "guide blocks carrying the table", integer=True, minimum=1, maximum=64),
     "rails": Key("number", "guide rails", integer=True, minimum=1, maximum=8),
-    "table_length": _axis_q("length", "table length (rail length = stroke + table_length)"),
-    "normal_load": _axis_q("force", "cutting force pressing onto the guide blocks, besides gravity (default 0 N: "
+    "table_length": axis_q("length", "table length (rail length = stroke + table_length)"),
+    "normal_load": axis_q("force", "cutting force pressing onto the guide blocks, besides gravity (default 0 N: "
                            "solve then says the guides were sized without it)", zero=True),
-    "lubricant_viscosity": _axis_q("kinematic_viscosity", "lubricant viscosity at working temperature"),
-    "motor_inertia": _axis_q("inertia", "motor rotor inertia (when no motor part is chosen)"),
-    "bearing_housing_stiffness": _axis_q("stiffness", "one support-bearing housing (default, an estimate: 26 x "
+    "lubricant_viscosity": axis_q("kinematic_viscosity", "lubricant viscosity at working temperature"),
+    "motor_inertia": axis_q("inertia", "motor rotor inertia (when no motor part is chosen)"),
+    "bearing_housing_stiffness": axis_q("stiffness", "one support-bearing housing (default, an estimate: 26 x "
                                          "the bearing set, IBC's units against their bare sets)"),
-    "nut_bracket_stiffness": _axis_q("stiffness", "nut bracket / table connection (default, an estimate: 4 x the "
+    "nut_bracket_stiffness": axis_q("stiffness", "nut bracket / table connection (default, an estimate: 4 x the "
                                      "nut, THK's 80 % nut-mounting allowance taken once more)"),
-    "coupling_stiffness": _axis_q("torsional_stiffness", "coupling torsional stiffness (when no coupling part)"),
-    "coupling_inertia": _axis_q("inertia", "coupling inertia (when no coupling part)"),
-    "temperature_rise": _axis_q("temperature_difference", "screw temperature rise in operation (default: the "
+    "coupling_stiffness": axis_q("torsional_stiffness", "coupling torsional stiffness (when no coupling part)"),
+    "coupling_inertia": axis_q("inertia", "coupling inertia (when no coupling part)"),
+    "temperature_rise": axis_q("temperature_difference", "screw temperature rise in operation (default: the "
                                 "heat balance of the duty cycle when the axis has one, else 3 K)", zero=True,
                            maximum=(100.0, "100 K")),
     "pretension": Key("one_of", "fixed-fixed screw pretension (default auto: absorbs pretension_rise)",
                       options=(Key("choice", choices=("auto",)),
                                Key("quantity", kind="force", non_negative=True))),
-    "pretension_rise": _axis_q("temperature_difference", "design temperature rise the auto pretension of a "
+    "pretension_rise": axis_q("temperature_difference", "design temperature rise the auto pretension of a "
                                "fixed-fixed screw absorbs, E A alpha dT (default 3 K: THK A-715 plans for 2-5 degC; "
                                "HIWIN-style guidance about 3 degC)", zero=True, maximum=(10.0, "10 K")),
     "orientation": Key("choice", "axis orientation", choices=ORIENTATIONS, default="horizontal"),
     "positions": Key("number", "nut positions evaluated over the stroke", integer=True, minimum=3,
                      maximum=2001),
-    "jerk": _axis_q("jerk", "jerk limit (default: trapezoidal moves)"),
+    "jerk": axis_q("jerk", "jerk limit (default: trapezoidal moves)"),
     "duty_cycle": Key("list", "moves and dwells (default: the rapid move over the stroke and back)",
                       minimum=1, maximum=SEGMENT_LIMIT,
                       items=Key("one_of", options=(Key("section", spec=MOVE_SPEC), Key("section", spec=DWELL_SPEC)))),
@@ -133,21 +77,21 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                            positive=True,
                            minimum=0.02, maximum=50.0),
     "reduction_efficiency": Key("number", "efficiency of the reduction, in (0, 1]", positive=True, maximum=1.0),
-    "reduction_inertia": _axis_q("inertia", "inertia of the reduction at the motor shaft"),
+    "reduction_inertia": axis_q("inertia", "inertia of the reduction at the motor shaft"),
     "max_inertia_ratio": Key("number", "largest load / rotor inertia ratio at the motor", positive=True,
                              maximum=1000.0),
     "brake": Key("one_of", "holding brake (auto: vertical axes)", default="auto",
                  options=(Key("choice", choices=BRAKE_MODES), Key("choice", choices=(True, False)))),
     "brake_safety": Key("number", "brake holding torque / holding torque at the heaviest stop (THK A-745)",
                         positive=True, minimum=1.0, maximum=10.0),
-    "heat_transfer": _axis_q("heat_transfer", "film coefficient of the screw shaft for the heat balance "
+    "heat_transfer": axis_q("heat_transfer", "film coefficient of the screw shaft for the heat balance "
                              "(default: Jungnickel's rotating shaft in still air, 3.75 omega^0.7 r^0.4, over the "
                              "cycle, with free convection)"),
     "rms_torque_ratio": Key("number", "largest RMS torque / rated torque of the motor (default: the motor "
                             "vendor's rule, model.motorrule: Yaskawa and Siemens 1, Mitsubishi 0.8 (MDS-D-SVJ3 "
                             "sec. 7-1 eq. 7-10), FANUC 0.9; e.g. 0.8 to hold every motor to Mitsubishi's)",
                             positive=True, maximum=1.0),
-    "torque_limit": _axis_q("torque", "the drive's torque (current) limit at the motor shaft (default: none, the "
+    "torque_limit": axis_q("torque", "the drive's torque (current) limit at the motor shaft (default: none, the "
                             "motor's peak torque): what the motor gives at most, through the coupling and a "
                             "reduction to its emergency-stop torque (apexdyna current limitation; SEW)"),
     "cut_while_accelerating": Key("choice", "the largest process force acts while the axis accelerates (default "
@@ -174,28 +118,28 @@ AXIS_SPEC = Spec("axis", "what the machine asks of the axis (every dimensional v
                             default="fixed"),
     # carriage: the cutting force's cross component and where it acts, the centre of gravity, the
     # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in it)
-    "cross_load": _axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load; default "
+    "cross_load": axis_q("force", "cutting force across the rail (feed: axial_load, normal: normal_load; default "
                           "0 N: solve then says the guides were sized without it)", zero=True),
-    "tool_height": _axis_q("length", "cutting point above the guide mounting plane (default 0.4 x table_length)",
+    "tool_height": axis_q("length", "cutting point above the guide mounting plane (default 0.4 x table_length)",
                            zero=True),
-    "tool_offset": _axis_q("length", "cutting point across the rail from the carriage centre", zero=True),
-    "guide_pitch": _axis_q("angle", "running pitch of the guides over the stroke (e.g. 10 arcsec; default 0): its "
+    "tool_offset": axis_q("length", "cutting point across the rail from the carriage centre", zero=True),
+    "guide_pitch": axis_q("angle", "running pitch of the guides over the stroke (e.g. 10 arcsec; default 0): its "
                            "Abbe error at the tool_height enters the positioning budget (THK A-716)", zero=True,
                            maximum=(0.01, "0.01 rad")),
-    "guide_yaw": _axis_q("angle", "running yaw of the guides over the stroke (default 0): its Abbe error at the "
+    "guide_yaw": axis_q("angle", "running yaw of the guides over the stroke (default 0): its Abbe error at the "
                          "tool_offset enters the positioning budget (THK A-716)", zero=True,
                          maximum=(0.01, "0.01 rad")),
-    "cg_height": _axis_q("length", "moving mass's centre of gravity above the guide mounting plane "
+    "cg_height": axis_q("length", "moving mass's centre of gravity above the guide mounting plane "
                          "(default 0.2 x table_length)", zero=True),
-    "cg_offset": _axis_q("length", "moving mass's centre of gravity across the rail from the carriage centre",
+    "cg_offset": axis_q("length", "moving mass's centre of gravity across the rail from the carriage centre",
                          zero=True),
-    "table_width": _axis_q("length", "table width across the rails (default: table_length)"),
-    "block_spacing": _axis_q("length", "outer block to outer block along a rail, at most table_length "
+    "table_width": axis_q("length", "table width across the rails (default: table_length)"),
+    "block_spacing": axis_q("length", "outer block to outer block along a rail, at most table_length "
                              "(default 0.6 x table_length)"),
-    "rail_spacing": _axis_q("length", "outer rail to outer rail, at most table_width (default 0.6 x table_width)"),
-    "pitch_inertia": _axis_q("inertia", "moving mass about the cross axis in the mounting plane (default: a box "
+    "rail_spacing": axis_q("length", "outer rail to outer rail, at most table_width (default 0.6 x table_width)"),
+    "pitch_inertia": axis_q("inertia", "moving mass about the cross axis in the mounting plane (default: a box "
                              "table_length long, 2 x cg_height high)"),
-    "yaw_inertia": _axis_q("inertia", "moving mass about the normal axis (default: a box table_length x "
+    "yaw_inertia": axis_q("inertia", "moving mass about the normal axis (default: a box table_length x "
                            "table_width)"),
     "guide_static_safety": Key("number", "least guide static safety C0 / largest block load (default 5: THK, "
                                "with vibrations or impacts)", minimum=1.0, maximum=100.0),
@@ -220,53 +164,6 @@ AXIS_NUMBERS = ("reduction_ratio", "max_inertia_ratio", "brake_safety", "reducti
                  "nut_lift_off_safety")
 
 
-def _part_key(table: str, col: str, kind: str) -> Key:
-    """How an inline part gives catalog column ``col`` (the catalog loader's column kinds and choices)."""
-    doc = col.replace("_", " ")
-    if kind == "str":
-        optional = col in ("vendor", "series")
-        return Key("string", doc + (" (default: custom)" if optional else ""), required=not optional,
-                   default="custom" if optional else None, choices=CHOICES.get((table, col)))
-    optional = col in OPTIONAL_COLUMNS.get(table, ())
-    if kind == "int":  # a count (>= 1), or an optional 0/1 flag (the nut's ``rotating``)
-        return Key("number", doc + (" (optional: 0 or 1)" if optional else ""), required=not optional,
-                   integer=True, minimum=0 if optional else 1)
-    if kind == "dimensionless":
-        top = next((c.at_most for c in COLUMNS[table] if c.name == col), None)  # an efficiency: at most 1
-        return Key("number", doc + (" (optional: the vendor lists none)" if optional else ""),
-                   required=not optional, minimum=0, maximum=top)
-    return Key("quantity", doc + (" (optional: the vendor lists none)" if optional else ""),
-               required=not optional, kind=kind, non_negative=True)
-
-
-# An inline (custom) part: the columns of its catalog table, with units.
-PART_SPECS = {table: Spec(table[:-1], f"a custom {table[:-1]}: the columns of catalogs/{table}.csv, with units",
-                          {col: _part_key(table, col, kind) for col, kind in cols.items()})
-              for table, cols in SCHEMA.items()}
-
-
-def _slot(table: str, doc: str, required: bool) -> Key:
-    return Key("one_of", doc, required=required,
-               options=(Key("string", f"a {table[:-1]} id from the catalogs"), Key("number", integer=True),
-                        Key("section", spec=PART_SPECS[table])))
-
-
-PARTS_SPEC = Spec("parts", "one part per slot: a catalog id, or an inline mapping of a custom part", {
-    "screw": _slot("screws", "ball screw", True),
-    "nut": _slot("nuts", "ball nut (fits the screw)", True),
-    "bearing": _slot("bearings", "support bearing set", True),
-    "guide": _slot("guides", "linear guide block and rail", True),
-    "motor": _slot("motors", "servo motor (optional; needs axis.acceleration or axis.duty_cycle)", False),
-    "coupling": _slot("couplings", "shaft coupling (optional)", False),
-    "reduction": _slot("reductions", "reduction between motor and coupling: planetary gearbox or belt stage "
-                       "(optional; without it the axis's reduction_ratio, reduction_efficiency and reduction_inertia, "
-                       "direct drive by default)", False),
-    "nut_preload": Key("quantity", "nut preload within the nut's range (default: the catalog's)", kind="force",
-                       non_negative=True),
-    "screw_grade": Key("string", "lead accuracy grade of the screw, one its series is made in (JIS B 1192: C0 C1 "
-                       "C2 C3 C5 C7 C8 C10; catalogs/screw_grades.csv; default: the cheapest, C5 for the shipped "
-                       "screws)"),
-})
 NAME_KEY = Key("string", "name of the file's subject (default: the file name)")
 DESCRIPTION_KEY = Key("string", "free text")
 CATALOGS_KEY = Key("names", "extra catalog directories, relative to this file")
@@ -276,5 +173,4 @@ DESIGN_SPEC = Spec("design", "an axis design: the machine's requirements and one
 })
 
 
-__all__ = ["AXIS_SPEC", "TWIN_SPEC", "MOVE_SPEC", "DWELL_SPEC", "PART_SPECS", "PARTS_SPEC", "DESIGN_SPEC", "NAME_KEY",
-           "DESCRIPTION_KEY", "CATALOGS_KEY", "AXIS_KINDS", "AXIS_NUMBERS", "SEGMENT_LIMIT"]
+__all__ = ["AXIS_SPEC", "DESIGN_SPEC", "NAME_KEY", "DESCRIPTION_KEY", "CATALOGS_KEY", "AXIS_KINDS", "AXIS_NUMBERS"]

@@ -17,19 +17,10 @@ from ..errors import ImplausibleInput, InputError
 from ..physics import motion
 from ..yamlio import Section, close_matches, file_kind, read_yaml, require_kind
 from .axis import BRAKE_MODES, Axis, Counterbalance, Design, TwinDrive
-from .keys import (
-    AXIS_KINDS,
-    AXIS_NUMBERS,
-    AXIS_SPEC,
-    COUNTERBALANCE_KEYS,
-    DESIGN_SPEC,
-    DWELL_SPEC,
-    MOVE_SPEC,
-    PART_SPECS,
-    SEGMENT_LIMIT,
-    TWIN_SPEC,
-)
+from .keys import AXIS_KINDS, AXIS_NUMBERS, AXIS_SPEC, DESIGN_SPEC
+from .partkeys import PART_SPECS
 from .plausible import CYCLE_RANGES, implausible
+from .sectionkeys import COUNTERBALANCE_KEYS, DWELL_SPEC, MOVE_SPEC, SEGMENT_LIMIT, TWIN_SPEC
 
 
 def read_axis(sec: Section) -> tuple[Axis, tuple]:

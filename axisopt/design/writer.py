@@ -7,10 +7,11 @@ from __future__ import annotations
 import math
 from dataclasses import fields
 
-from ..catalog.columns import SCHEMA, SHIPPED_DIR
+from ..catalog.columns import SCHEMA, SHIPPED_DIR, SLOT_TABLES
 from ..units import DISPLAY_UNITS, unit_factor
 from .axis import Axis, Design
-from .keys import AXIS_KINDS, TWIN_SPEC
+from .keys import AXIS_KINDS
+from .sectionkeys import TWIN_SPEC
 
 TWIN_KINDS = {name: k.kind for name, k in TWIN_SPEC.keys.items()}
 
@@ -60,8 +61,7 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
         else:
             axis[f.name] = v
     parts: dict = {}
-    for slot, table in (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides"),
-                        ("motor", "motors"), ("coupling", "couplings"), ("reduction", "reductions")):
+    for slot, table in SLOT_TABLES:
         row = getattr(design, slot)
         if row is None:
             continue

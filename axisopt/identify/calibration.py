@@ -87,7 +87,18 @@ def write_calibration(d: dict, path) -> dict:
     return d
 
 
+def check_calibration_path(path, design=None, sources=()) -> None:
+    """Refuse, before anything is computed or written, a calibration ``path`` that is one of the measured
+    files (``sources``) or the design file the calibration is fitted to, or that cannot be written."""
+    from ..fileio import check_output_path, refuse_inputs
+
+    refuse_inputs(path, [*map(str, sources), getattr(design, "source", "")], what="calibration")
+    check_output_path(path, what="calibration")
+
+
 def save_calibration(diag, path, design=None, sources=()) -> dict:
+    """Save a friction-table diagnosis as a calibration YAML (never over its data or design file)."""
+    check_calibration_path(path, design, sources)
     return write_calibration(calibration_dict(diag, design, sources), path)
 
 

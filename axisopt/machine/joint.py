@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..search.pareto import nondominated
+from ..search.result import INFEASIBLE, OPTIMAL
 from .chain import lowest_frequency
 from .model import MachineDesign, evaluate_choice, link_with_frame
 from .offers import axis_designs, feasible_sets, monotone_in_load, pareto_designs
@@ -342,7 +343,7 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
                      "doubled); give axes.{name}.frame_stiffness when known".replace("{name}", name))
     seq = sequential(machine, designs)
     nominal = float(np.prod([float(designs.combinations.get(a.name, 0)) for a in machine.axes]))
-    return MachineResult(machine, method, "optimal" if best is not None else "infeasible", best, seq, nominal,
+    return MachineResult(machine, method, OPTIMAL if best is not None else INFEASIBLE, best, seq, nominal,
                          designs.solves, kept, time.perf_counter() - t0, notes)
 
 

@@ -20,7 +20,8 @@ from .function import (
 )
 from .modes import STEEL_DAMPING
 from .outputs import CHAIN_OUTPUTS, OUTPUT_TABLE, OUTPUTS
-from .params import PARAM_NAMES, axis_params, one_design, positions
+from .paramnames import PARAM_NAMES
+from .params import axis_params, one_design, positions
 from .response import axis_response, drive_inputs, drive_response
 
 __all__ = [

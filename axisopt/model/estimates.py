@@ -16,13 +16,12 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from ..catalog.columns import COLUMNS, USER_STATUS
+from ..catalog.columns import COLUMNS, SLOT_TABLES, USER_STATUS
 from ..units import DISPLAY_UNITS, unit_factor
-from .params import PART_PARAMS, RULE_PARAMS, axis_params, positions
+from .paramnames import PART_PARAMS, RULE_PARAMS
+from .params import axis_params, positions
 from .response import axis_response
 
-SLOT_TABLES = (("screw", "screws"), ("nut", "nuts"), ("bearing", "bearings"), ("guide", "guides"),
-               ("motor", "motors"), ("coupling", "couplings"), ("reduction", "reductions"))
 _STEP = 0.05  # relative perturbation of an estimated parameter
 _MOVES = 1e-7  # relative change of an output that counts as "rests on it"
 

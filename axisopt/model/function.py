@@ -13,7 +13,8 @@ from ..display import fmt, frame, html_fields, html_table, one_line
 from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes
 from .limits import CHECK_RECORDS, margin_output
 from .outputs import PROFILE, SCALAR
-from .params import PARAM_NAMES, axis_params, positions
+from .paramnames import PARAM_NAMES
+from .params import axis_params, positions
 from .response import axis_response
 
 # the CasADi Function's outputs, in order: the declared outputs (model.outputs.OUTPUT_TABLE), then each vendor

@@ -2,11 +2,9 @@
 
 from __future__ import annotations
 
-from types import MappingProxyType
-
 import numpy as np
 
-from ..catalog.columns import ARRANGEMENT_ROWS, COLUMNS
+from ..catalog.columns import ARRANGEMENT_ROWS
 from ..catalog.grades import SCALE_GRADES, lead_errors, price_factors, scale_error
 from ..design import PRETENSION_RISE, TEMPERATURE_RISE
 from ..physics import counterbalance as pcb
@@ -15,110 +13,21 @@ from ..physics.bearings import (
     housing_stiffness_default,
     support_starting_torque_envelope,
 )
-from ..physics.drive import PEAK_CORNER_FRACTION
 from ..physics.nut import bracket_stiffness_default, nut_stiffness_catalog
-from .gantry import TWIN_PARAMS, gantry_params
-from .motorrule import DEFAULT_RULE
+from .driveparams import drive_params
+from .gantry import gantry_params
+from .paramnames import (
+    PARAM_NAMES,
+    PART_PARAMS,
+    column_value,
+    listed_or,
+    optional_column,
+)
 
 # A guide row without a rating basis: 50 km, the shorter of the vendors' two bases (a C defined for 100 km and
 # read as a 50 km rating halves the life, never doubles it)
 GUIDE_RATING_DISTANCE = 50e3  # [m]
 DEFAULT_GRADE = "C5"  # a screw row without a grade: the grade its catalog price is for (catalogs/SOURCES.md)
-
-PARAM_NAMES = (
-    # axis
-    "stroke", "start_offset", "span", "table_mass", "acceleration", "max_speed", "mean_speed",
-    "axial_load", "mean_axial_load", "required_life", "load_factor", "guide_blocks", "rails",
-    "rail_length", "normal_load", "viscosity", "motor_inertia", "bearing_sets", "gravity_axial",
-    "housing_compliance", "bracket_compliance", "coupling_stiffness", "coupling_inertia",
-    "temperature_rise", "pretension", "pretension_auto",
-    # screw
-    "root_diameter", "nominal_diameter", "lead", "screw_max_length", "screw_mass_per_length",
-    "dn_limit", "screw_price_per_length", "screw_price_fixed", "support_bore_min", "support_bore_max",
-    # nut
-    "nut_stiffness", "nut_stiffness_preload", "nut_double", "nut_dynamic_load", "nut_static_load",
-    "nut_mass", "nut_price", "nut_preload_min", "nut_preload_max", "nut_axial_play",
-    # bearing arrangement (per screw end)
-    "bearing_stiffness", "bearing_lift_off", "bearing_lift_off_strong", "bearing_preload", "bearing_f0", "bearing_f1",
-    "bearing_mean_diameter", "bearing_limiting_speed", "bearing_mass", "bearing_price",
-    "bearing_dynamic_load", "bearing_bore", "bearing_torque", "bearing_torque_listed",
-    # guide block and rail
-    "guide_normal_stiffness", "guide_tangential_stiffness", "guide_friction_force",
-    "guide_friction_coefficient", "guide_friction_viscous", "guide_damping", "guide_block_mass",
-    "guide_rail_mass_per_length", "guide_block_price", "guide_rail_price_per_length", "guide_dynamic_load",
-    "guide_preload", "guide_roller", "guide_rating_distance", "bearing_rows_strong", "bearing_rows_weak",
-    "bearing_static_load", "bearing_static_safety", "nut_lift_off_safety",
-    # drive: motor, coupling, reduction (rotor_inertia at the motor; motor_inertia above is the motor side
-    # reflected to the screw for the drive-train modes)
-    "rotor_inertia", "has_motor", "motor_rated_torque", "motor_peak_torque", "motor_max_speed",
-    "motor_brake_torque", "motor_price", "has_coupling", "coupling_rated_torque", "coupling_max_speed",
-    "coupling_price", "reduction_ratio", "reduction_efficiency", "reduction_inertia", "max_inertia_ratio",
-    "brake_safety",
-    # carriage: the guide's static rating and moment ratings, the cutting force's cross component, the
-    # lever arms, the block pattern, gravity across the rails (wall mounting), the table's rocking inertias, the
-    # least static safety of guide and nut, and whether the duty cycle's phases carry the process force
-    "guide_static_load", "guide_moment_roll", "guide_moment_pitch", "guide_moment_yaw", "cross_load",
-    "tool_height", "tool_offset", "cg_height", "cg_offset", "block_spacing", "rail_spacing", "gravity_cross",
-    "pitch_inertia", "yaw_inertia", "guide_static_safety", "nut_static_safety", "duty_process",
-    "rms_torque_ratio", "motor_peak_corner_speed", "motor_peak_at_max_speed", "temperature_rise_auto",
-    "heat_transfer", "shaft_ends", "pretension_rise",
-    # the motor vendor's rule on an unbalanced axis's load torque (model.motorrule), a reduction's emergency-stop
-    # torque, the nut lift-off check's load case (1: the cut while accelerating)
-    "unbalance_torque_ratio", "reduction_emergency_torque", "cut_while_accelerating", "buckling_nut_fixed",
-    # accuracy: the screw's lead error over the stroke by its grade and the grade's price factor on the
-    # shaft; the guides' running pitch and yaw (model.accuracy)
-    "lead_error", "grade_price_factor", "guide_pitch", "guide_yaw", "scale_feedback", "scale_error",
-    "scale_repeatability",
-    # reduction: a catalog part, or none (the axis's reduction_* values above, its checks off); its
-    # output-side ratings, its torsional compliance (in series with the coupling) and its input speed limit
-    "has_reduction", "reduction_rated_torque", "reduction_accel_torque", "reduction_compliance",
-    "reduction_max_speed", "reduction_price", "reduction_backlash",
-    # driven rotating-nut unit (model.rotnut; 0 / neutral values for a nut on a rotating screw)
-    "nut_rotating", "unit_inertia", "unit_max_speed", "unit_bearing_dynamic_load", "unit_bearing_static_load",
-    "unit_bearing_stiffness", "unit_bearing_torque", "unit_bearing_preload",
-    # counterbalance of a vertical axis (model.loads.balance_force): the counterweight and its chain's
-    # efficiency, the mass moving with the head besides it, a balance cylinder's force at its worst end
-    "balance_mass", "balance_efficiency", "balance_moving_mass", "balance_force",
-    # twin-drive gantry (model.gantry; neutral values for one drive)
-) + TWIN_PARAMS
-
-
-# part table -> ((column, parameter), ...): the columns that feed a model parameter as they are, from the one
-# declaration of the part columns (axisopt.catalog.columns.COLUMNS).  A new part column the model reads needs its
-# ``param`` there and its name in PARAM_NAMES above.
-PART_PARAMS = MappingProxyType({t: tuple((c.name, c.param) for c in cols if c.param) for t, cols in COLUMNS.items()})
-# columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a choice; the text
-# columns type and arrangement as the numbers they stand for)
-_RULE_COLUMNS = MappingProxyType({
-    "screws": (), "nuts": ("type", "rotating", "unit_inertia", "unit_max_speed", "unit_bearing_dynamic_load",
-                           "unit_bearing_static_load", "unit_bearing_rigidity", "unit_starting_torque"),
-    "bearings": ("bore", "outer_diameter", "starting_torque", "arrangement",
-                                                "static_safety", "lift_off_load_strong"),
-    "guides": ("type", "rating_distance"),
-    "motors": ("rotor_inertia", "rotor_inertia_brake", "brake_torque", "rated_speed", "rated_torque",
-               "peak_corner_speed", "peak_torque_at_max_speed", "rms_ratio", "unbalance_ratio"),
-    "couplings": ("torsional_stiffness", "inertia"),
-    "reductions": ("torsional_stiffness", "emergency_torque"),
-})
-
-
-# rule columns and the parameter each one ends in (for naming the estimates a result rests on, model.estimates)
-RULE_PARAMS = MappingProxyType({("bearings", "starting_torque"): "bearing_torque",
-                                ("nuts", "unit_max_speed"): "unit_max_speed",
-                                ("nuts", "unit_bearing_rigidity"): "unit_bearing_stiffness",
-                                ("nuts", "unit_starting_torque"): "unit_bearing_torque",
-                                ("bearings", "static_safety"): "bearing_static_safety",
-                                ("guides", "rating_distance"): "guide_rating_distance",
-                                ("motors", "peak_corner_speed"): "motor_peak_corner_speed",
-                                ("motors", "peak_torque_at_max_speed"): "motor_peak_at_max_speed",
-                                ("bearings", "lift_off_load_strong"): "bearing_lift_off_strong",
-                                ("reductions", "torsional_stiffness"): "reduction_compliance"})
-
-
-def columns_read(table: str) -> tuple:
-    """The columns of a part table the model reads (what a vectorized search keeps as arrays)."""
-    direct = tuple(c for c, _ in PART_PARAMS[table])
-    return direct + tuple(c for c in _RULE_COLUMNS[table] if c not in direct)
 
 
 def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, reduction=None, grade=None) -> dict:
@@ -131,7 +40,7 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
     ``p["duty"]`` holds the axis's duty-cycle phases (not a parameter: the same for
     every design).
     """
-    col = _getter
+    col = column_value
     mounting = axis.mounting
     torque = col(bearing, "starting_torque")
     p = {
@@ -163,19 +72,19 @@ def axis_params(axis, screw, nut, bearing, guide, motor=None, coupling=None, red
         "bearing_mean_diameter": dm,
         # starting torque of the support unit where its vendor lists it; else the upper envelope of the vendor
         # values per preload and mean diameter (physics.bearings.support_starting_torque_envelope)
-        "bearing_torque": _listed_or(torque, support_starting_torque_envelope(p["bearing_preload"], dm)),
+        "bearing_torque": listed_or(torque, support_starting_torque_envelope(p["bearing_preload"], dm)),
         "bearing_torque_listed": np.isfinite(torque) * 1.0,
         "guide_roller": _is_type(guide, "roller"),
         # rows of the bearing set that carry each load direction (catalog.ARRANGEMENT_ROWS)
         "bearing_rows_strong": _arrangement_rows(bearing, 0), "bearing_rows_weak": _arrangement_rows(bearing, 1),
         # the lift-off load of the stronger direction where the catalog lists one (a 3-against-1 set), else the
         # set's one lift-off load (the weaker direction's)
-        "bearing_lift_off_strong": _listed_or(col(bearing, "lift_off_load_strong"), p["bearing_lift_off"]),
+        "bearing_lift_off_strong": listed_or(col(bearing, "lift_off_load_strong"), p["bearing_lift_off"]),
         # the guide's rating basis where its vendor states it, else 50 km (the shorter basis: conservative)
-        "guide_rating_distance": _listed_or(col(guide, "rating_distance"), GUIDE_RATING_DISTANCE),
+        "guide_rating_distance": listed_or(col(guide, "rating_distance"), GUIDE_RATING_DISTANCE),
         # the least static safety of the set on its static rating: the axis's, else the rating's vendor's
         # (catalog column static_safety), else Rexroth's machine-tool S0 (physics.bearings)
-        "bearing_static_safety": _listed_or(col(bearing, "static_safety"), STATIC_SAFETY_MACHINE_TOOL)
+        "bearing_static_safety": listed_or(col(bearing, "static_safety"), STATIC_SAFETY_MACHINE_TOOL)
         if axis.bearing_static_safety is None else axis.bearing_static_safety,
         "nut_lift_off_safety": axis.nut_lift_off_safety,
         "cut_while_accelerating": 1.0 if axis.cut_while_accelerating else 0.0,
@@ -254,24 +163,24 @@ def rotating_nut_params(p: dict, nut) -> dict:
     in: max speed = the screw's DN limit / d (THK A-697, H-BS 3.7.6: the balls run at the nut's speed relative to
     the screw, the same on a turning nut); the bearing's rigidity, preload and starting torque
     (:func:`axisopt.physics.bearings.support_starting_torque_envelope`).  Needs ``p``'s screw and nut values."""
-    col = _optional
-    flag = _listed_or(col(nut, "rotating"), 0.0)
+    col = optional_column
+    flag = listed_or(col(nut, "rotating"), 0.0)
     r = np.where(flag == 1.0, 1.0, 0.0)
     r = r if np.ndim(r) else float(r)
     on = r == 1.0
-    ca = np.where(on, _listed_or(col(nut, "unit_bearing_dynamic_load"), 1.0), 1.0)
-    c0 = np.where(on, _listed_or(col(nut, "unit_bearing_static_load"), 1.0), 1.0)
+    ca = np.where(on, listed_or(col(nut, "unit_bearing_dynamic_load"), 1.0), 1.0)
+    c0 = np.where(on, listed_or(col(nut, "unit_bearing_static_load"), 1.0), 1.0)
     preload = UNIT_PRELOAD_FRACTION * ca
     dm = UNIT_MEAN_DIAMETER_RATIO * p["nominal_diameter"]
     q = {
         "nut_rotating": r,
-        "unit_inertia": np.where(on, _listed_or(col(nut, "unit_inertia"), 0.0), 0.0),
-        "unit_max_speed": np.where(on, _listed_or(col(nut, "unit_max_speed"), p["dn_limit"] / p["nominal_diameter"]),
+        "unit_inertia": np.where(on, listed_or(col(nut, "unit_inertia"), 0.0), 0.0),
+        "unit_max_speed": np.where(on, listed_or(col(nut, "unit_max_speed"), p["dn_limit"] / p["nominal_diameter"]),
                                    1.0),
         "unit_bearing_dynamic_load": ca, "unit_bearing_static_load": c0, "unit_bearing_preload": preload,
-        "unit_bearing_stiffness": np.where(on, _listed_or(col(nut, "unit_bearing_rigidity"),
+        "unit_bearing_stiffness": np.where(on, listed_or(col(nut, "unit_bearing_rigidity"),
                                                           UNIT_RIGIDITY_PER_RATING * ca), 1.0),
-        "unit_bearing_torque": np.where(on, _listed_or(col(nut, "unit_starting_torque"),
+        "unit_bearing_torque": np.where(on, listed_or(col(nut, "unit_starting_torque"),
                                                        support_starting_torque_envelope(preload, dm)), 0.0),
     }
     return {k: (v if np.ndim(v) else float(v)) for k, v in q.items()}
@@ -304,84 +213,6 @@ def carriage_params(axis) -> dict:
     }
 
 
-def drive_params(axis, motor, coupling, reduction=None) -> dict:
-    """Motor, coupling and reduction parameters (SI).  Missing parts: the axis values, checks off.
-
-    ``reduction``: a reductions row (or arrays of them); a row whose ``ratio`` is NaN stands for no reduction
-    (the search's direct-drive choice beside the catalog's reductions): the axis's reduction values then."""
-    col = _getter
-    q = {"max_inertia_ratio": axis.max_inertia_ratio, "brake_safety": axis.brake_safety,
-         "rms_torque_ratio": DEFAULT_RULE.rms if axis.rms_torque_ratio is None else axis.rms_torque_ratio,
-         "unbalance_torque_ratio": DEFAULT_RULE.unbalance}
-    q.update(reduction_params(axis, reduction))
-    ratio = q["reduction_ratio"]
-    if motor is None:
-        rotor = axis.motor_inertia
-        q.update({"has_motor": 0.0, "motor_rated_torque": 1.0, "motor_peak_torque": 1.0, "motor_max_speed": 1.0,
-                  "motor_brake_torque": 0.0, "motor_price": 0.0, "motor_peak_corner_speed": 1.0,
-                  "motor_peak_at_max_speed": 1.0})
-    else:
-        rotor = col(motor, "rotor_inertia")
-        if axis.brake_used:  # the brake adds its inertia (catalog value; the plain rotor where none is listed)
-            rotor = _listed_or(col(motor, "rotor_inertia_brake"), rotor)
-        brake = _listed_or(col(motor, "brake_torque"), 0.0)
-        q.update({"has_motor": 1.0, "motor_brake_torque": brake})
-        q.update({param: col(motor, column) for column, param in PART_PARAMS["motors"]})
-        # the intermittent zone's corner points where the vendor lists them, else the conservative estimate
-        q["motor_peak_corner_speed"] = _listed_or(
-            col(motor, "peak_corner_speed"),
-            np.minimum(col(motor, "rated_speed"), PEAK_CORNER_FRACTION * col(motor, "max_speed")))
-        q["motor_peak_at_max_speed"] = _listed_or(col(motor, "peak_torque_at_max_speed"), col(motor, "rated_torque"))
-        # the motor vendor's selection rule (model.motorrule; a row without one: the harshest), unless the
-        # problem asks its own RMS ratio
-        if axis.rms_torque_ratio is None:
-            q["rms_torque_ratio"] = _listed_or(_optional(motor, "rms_ratio"), DEFAULT_RULE.rms)
-        q["unbalance_torque_ratio"] = _listed_or(_optional(motor, "unbalance_ratio"), DEFAULT_RULE.unbalance)
-        if axis.torque_limit is not None:  # the drive's torque limit caps what the motor gives at every speed
-            q["motor_peak_torque"] = np.minimum(q["motor_peak_torque"], axis.torque_limit)
-            q["motor_peak_at_max_speed"] = np.minimum(q["motor_peak_at_max_speed"], axis.torque_limit)
-    if coupling is None:
-        q.update({"has_coupling": 0.0, "coupling_stiffness": axis.coupling_stiffness,
-                  "coupling_inertia": axis.coupling_inertia, "coupling_rated_torque": 1.0,
-                  "coupling_max_speed": 1.0, "coupling_price": 0.0})
-    else:
-        q.update({"has_coupling": 1.0, "coupling_stiffness": col(coupling, "torsional_stiffness"),
-                  "coupling_inertia": col(coupling, "inertia")})
-        q.update({param: col(coupling, column) for column, param in PART_PARAMS["couplings"]})
-    q["rotor_inertia"] = rotor
-    # motor side of the drive-train model, seen from the screw through the reduction
-    q["motor_inertia"] = (rotor + q["reduction_inertia"]) * ratio**2
-    return q
-
-
-def reduction_params(axis, reduction) -> dict:
-    """The reduction's parameters (SI): its catalog row where there is one (a NaN ratio: none), else the axis's
-    ratio, efficiency and input inertia with a rigid stage (compliance 0) and the reduction checks off."""
-    none = {"has_reduction": 0.0, "reduction_ratio": axis.reduction_ratio,
-            "reduction_efficiency": axis.reduction_efficiency, "reduction_inertia": axis.reduction_inertia,
-            "reduction_rated_torque": 1.0, "reduction_accel_torque": 1.0, "reduction_compliance": 0.0,
-            "reduction_max_speed": 1.0, "reduction_price": 0.0, "reduction_backlash": 0.0,
-            "reduction_emergency_torque": 1.0}
-    if reduction is None:
-        return none
-    col = _getter
-    has = np.isfinite(col(reduction, "ratio"))
-    q = {param: _listed_or(col(reduction, column), none[param]) for column, param in PART_PARAMS["reductions"]}
-    q["has_reduction"] = has * 1.0 if np.ndim(has) else float(has)
-    # the emergency-stop torque where the vendor lists it, else T2B (never above it)
-    q["reduction_emergency_torque"] = _listed_or(_optional(reduction, "emergency_torque"),
-                                                 q["reduction_accel_torque"])
-    # the stage's torsional stiffness (output side) as a compliance, in series with the coupling's (model.chain)
-    q["reduction_compliance"] = _listed_or(1.0 / col(reduction, "torsional_stiffness"), 0.0)
-    return q
-
-
-def _listed_or(value, fallback):
-    """A catalog column where it is listed (finite), ``fallback`` where it is empty; float or array."""
-    out = np.where(np.isfinite(value), value, fallback)
-    return out if np.ndim(out) else float(out)
-
-
 def mount_compliances(axis, p) -> dict:
     """Compliance [m/N] of one bearing housing and of the nut bracket: the axis's values, else the published
     estimates (never rigid): the housing 26 x its bearing set (IBC TI-I-5010.2 units against their bare sets,
@@ -394,20 +225,6 @@ def mount_compliances(axis, p) -> dict:
                                 reference_preload=p["nut_stiffness_preload"])
     bracket = bracket_stiffness_default(nut) if axis.nut_bracket_stiffness is None else axis.nut_bracket_stiffness
     return {"housing_compliance": 1.0 / housing, "bracket_compliance": 1.0 / bracket}
-
-
-def _getter(row, name):
-    v = row[name]
-    return float(v) if np.ndim(v) == 0 else np.asarray(v, dtype=float)
-
-
-def _optional(row, name):
-    """An optional column of one part or of arrays of parts; NaN (empty) where the table has no such column (a
-    table written before the column existed; a scalar, which broadcasts against arrays of parts)."""
-    try:
-        return _getter(row, name)
-    except KeyError:
-        return float("nan")
 
 
 def _arrangement_rows(row, i):

@@ -9,8 +9,10 @@
 
 from ..fileio import PLOT_FORMATS, atomic_file, make_output_dir, save_figure, write_text_atomic
 from ..units import N_PER_UM
-from .evaluation import RPM, drive_dict, drive_lines, evaluation_dict, evaluation_table
+from .drivetext import drive_lines
+from .evaluation import drive_dict, evaluation_dict, evaluation_table
 from .plots import duty_points, plot_profiles
+from .text import RPM
 
 __all__ = ["evaluation_dict", "evaluation_table", "drive_dict", "drive_lines", "plot_profiles", "duty_points",
            "atomic_file", "make_output_dir", "save_figure", "write_text_atomic", "PLOT_FORMATS", "N_PER_UM", "RPM"]

@@ -12,20 +12,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..catalog.columns import DRIVE_SLOTS, MECH_SLOTS
 from ..display import fmt, html_table, one_line
 from ..model import CHECKS, Evaluation
 from ..model.limits import CHECK_RECORDS
 from ..search.reported import REPORTED
 from ..units import N_PER_UM
-from .evaluation import (
-    CHECK_SHORT,
-    CHECK_UNITS,
-    allowed_list,
-    drive_dict,
-    evaluation_dict,
-    fmt_value,
-    judged_rows,
-)
+from .checktext import allowed_list, judged_rows
+from .evaluation import CHECK_SHORT, CHECK_UNITS, drive_dict, evaluation_dict
+from .text import fmt_value
 
 
 @dataclass(repr=False)
@@ -112,8 +107,7 @@ def compare_table(items) -> str:
     row("stroke [mm]", each(lambda e: num(e.design.axis.stroke * 1e3, 0)))
     drives = [e for e in evs if e is not None and e.design.motor is not None]
     reds = [e for e in evs if e is not None and e.design.reduction is not None]
-    for slot in ("screw", "nut", "bearing", "guide") + (("motor", "coupling") if drives else ()) + \
-            (("reduction",) if reds else ()):
+    for slot in MECH_SLOTS + (DRIVE_SLOTS[:2] if drives else ()) + (DRIVE_SLOTS[2:] if reds else ()):
         row(slot, each(lambda e, s=slot: e.design.part_ids().get(s, "-")))
     row("nut preload [N]", each(lambda e: num(e.design.preload, 0)))
     rows.append("")
@@ -274,7 +268,7 @@ def compare_rows(items) -> list:
                       COLUMN["total_mass"]: d["total_mass_kg"], COLUMN["cost"]: d["cost"],
                       "all_checks_pass": d["all_checks_pass"]})
             for k, v in (drive_dict(e) or {}).items():
-                if k not in ("motor", "coupling", "reduction"):
+                if k not in DRIVE_SLOTS:
                     r[f"drive_{k}"] = v
             for k, v in d["checks"].items():
                 u = f" [{v['unit']}]" if v["unit"] else ""

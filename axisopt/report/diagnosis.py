@@ -9,13 +9,19 @@ from pathlib import Path
 
 import numpy as np
 
-from ..fileio import tidy_layout
 from ..identify.tables.diagnose import param_rows, plausibility
 from ..identify.tables.diagnose import split_by_observation as _split
 from ..identify.tables.measure import Y_UNIT
-from ..identify.tables.unexplained import display_value, residual_table, table_signature
-from . import save_figure, write_text_atomic
-from .evaluation import fit_lines
+from ..identify.tables.unexplained import residual_table
+from .diagexplain import (
+    other_explanations,
+    plausibility_flags,
+    undetermined_notes,
+    unexplained_dicts,
+    unidentifiable,
+    why_none,
+)
+from .text import fit_lines
 
 
 def _rmse_units(diag, pred):
@@ -47,7 +53,7 @@ def diagnosis_dict(diag) -> dict:
         "baseline": {
             "parameters": param_rows(diag.baseline),
             "status": diag.baseline.status,
-            "plausibility": _flags(diag.baseline),
+            "plausibility": plausibility_flags(diag.baseline),
         },
         "residuals_baseline": [
             residual_table(o, r)
@@ -117,7 +123,7 @@ def diagnosis_dict(diag) -> dict:
                 "cv_rmse_after": a.cv_after,
                 "gain_percent": a.gain,
                 "together_with": a.together or None,
-                "plausibility": plausibility(diag.final, [], names=names) + _undetermined(diag.final, names)
+                "plausibility": plausibility(diag.final, [], names=names) + undetermined_notes(diag.final, names)
                 + unidentifiable(diag.final, names),
                 "runner_up": None
                 if r is None
@@ -125,27 +131,6 @@ def diagnosis_dict(diag) -> dict:
             }
         )
     return d
-
-
-def unexplained_dicts(diag) -> list:
-    """Per dataset: is structure left in the final residual, and its signatures in words."""
-    out = []
-    for u in diag.unexplained:
-        sigs = []
-        for p in u.remaining:
-            what, causes, measure = table_signature(p, display_value)
-            sigs.append({"factor": p.kind, "share": p.share, "log10_p": p.log10_p, "signature": what,
-                         "causes": causes, "to_separate": measure})
-        out.append({"file": u.source, "test": u.kind, "rms_over_noise": u.rms, "remaining": bool(sigs),
-                    "signatures": sigs})
-    return out
-
-
-def _why_none(d) -> str:
-    first = [c for c in d["not_accepted"] if c["round"] == 1][:3]
-    if not first:
-        return "no candidate effect applies to these data"
-    return "; ".join(f"{c['effect']}: {c['reason']}" for c in first)
 
 
 def _file_gains(diag) -> list:
@@ -156,52 +141,6 @@ def _file_gains(diag) -> list:
         rb = float(np.sqrt(np.mean(((pb - o.y) * o.w) ** 2)))
         rf = float(np.sqrt(np.mean(((pf - o.y) * o.w) ** 2)))
         out.append(100.0 * (1.0 - rf / rb) if rb > 0 else 0.0)
-    return out
-
-
-def _flags(res):
-    return plausibility(res, []) + unidentifiable(res)
-
-
-def unidentifiable(res, names=None) -> list:
-    """Parameters the data do not fix (infinite variance: a zero or dependent Jacobian column)."""
-    return [f"{p.name} is not identifiable from these data: the fit does not change with it (it is reported "
-            "at the value the search stopped at, without an uncertainty)"
-            for p, s in zip(res.params, res.sigma) if not math.isfinite(s) and (names is None or p.name in names)]
-
-
-def _undetermined(res, names) -> list:
-    """Parameters whose standard deviation exceeds their value: the data do not fix them."""
-    out = []
-    for p, v, s in zip(res.params, res.theta, res.sigma):
-        if p.name in names and math.isfinite(s) and v != 0 and s > abs(v):
-            out.append(f"{p.name} not determined by these data (+-{p.show(s):.3g} on {p.show(v):.4g} {p.unit})")
-    return out
-
-
-def other_explanations(diag) -> list:
-    """What else the fit points to: a screw modulus outside steel's range means the chain is softer (or
-    stiffer) than the model, which a component off its catalog value explains as well; name each component
-    and the stiffness it would need to carry the same compliance at mid-stroke."""
-    out = []
-    vals = diag.final.values()
-    E = vals.get("screw_modulus")
-    pl = diag.plant
-    if E is None or 0.9 * pl.youngs_modulus <= E <= 1.1 * pl.youngs_modulus:
-        return out
-    x = pl.start_offset + 0.5 * pl.stroke
-    dc = x / (E * pl.area) - x / (pl.youngs_modulus * pl.area)  # extra compliance the modulus absorbs [m/N]
-    side = "softer" if dc > 0 else "stiffer"
-    text = (f"the screw modulus fitted at {E / 1e9:.0f} GPa (steel {pl.youngs_modulus / 1e9:.0f} GPa) makes the chain "
-            f"{abs(dc) * 1e9:.2f} um/kN {side} at mid-stroke; the same would follow from")
-    alts = []
-    for name, k in (("the support bearing set", pl.k_bearing), ("the nut", pl.k_nut)):
-        c_new = 1.0 / k + dc
-        if c_new > 0:
-            alts.append(f"{name} at {1.0 / c_new / 1e6:,.0f} N/um instead of its catalog {k / 1e6:,.0f} N/um")
-    alts.append("an unlisted compliance (housing, nut bracket, coupling) of "
-                f"{1.0 / abs(dc) / 1e6:,.0f} N/um in series" if dc > 0 else "a stiffer structure than modelled")
-    out.append(text + " " + "; or ".join(alts) + " (test: --effects compliance_offset)")
     return out
 
 
@@ -354,7 +293,7 @@ def diagnosis_text(diag) -> str:
             L.append(f"pair (round {e['round']}): {' + '.join(e['effects'])} (dBIC {e['dBIC']:.1f}{g}): "
                      + ("accepted, neither passes alone" if e["accepted"] else e["reason"]))
     L.append(f"verdict: {d['verdict']}" + ("  (values of the final joint fit, as saved by --save-calibration)"
-                                             if d["accepted"] else f" -- {_why_none(d)}"))
+                                             if d["accepted"] else f" -- {why_none(d)}"))
     for a in d["accepted"]:
         tog = f" (together with {a['together_with']}: neither passes alone)" if a["together_with"] else ""
         L.append(f"  {a['effect']}: {a['finding']}{tog}")
@@ -411,145 +350,3 @@ def diagnosis_text(diag) -> str:
     return fit_lines("\n".join(L))
 
 
-# SI factor -> (display unit, scale, offset) for residual plots
-FACTOR_DISPLAY = {
-    "position": ("mm", 1e3, 0.0), "force": ("N", 1.0, 0.0), "velocity": ("mm/s", 1e3, 0.0),
-    "speed": ("mm/s", 1e3, 0.0), "time": ("s", 1.0, 0.0), "temperature": ("degC", 1.0, -273.15),
-    "frequency": ("Hz", 1.0, 0.0), "normal_load": ("N", 1.0, 0.0), "axial_load": ("N", 1.0, 0.0),
-}
-
-
-CATEGORICAL = {"direction": {-1.0: "-1", 1.0: "+1"}, "cycle": {},
-               "mode": {}, "exclude": {}}
-
-
-def categories(name: str, values) -> list | None:
-    """[(value, tick label), ...] when a factor is categorical (direction, cycle, mode, or at most three
-    distinct values), else None (plotted on a continuous axis)."""
-    u = np.unique(np.asarray(values, dtype=float))
-    if name not in CATEGORICAL and len(u) > 3:
-        return None
-    names = CATEGORICAL.get(name, {})
-    return [(float(x), names.get(float(x), f"{x:g}")) for x in u]
-
-
-def residual_figures(diag, verdict: str):
-    """Per observation of ``diag``: (observation, matplotlib Figure of its residuals, model - measured, against
-    each recorded factor, before (baseline) and after (with ``verdict``)); a category factor one tick each."""
-    from ..figure import (
-        Figure,  # outside pyplot: no backend is chosen (a notebook's stays as it was)
-    )
-
-    before = _split(diag.obs, diag.baseline.prediction - diag.y)
-    after = _split(diag.obs, diag.final.prediction - diag.y)
-    for o, rb, ra in zip(diag.obs, before, after):
-        facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
-        unit, f = Y_UNIT[o.kind]
-        fig = Figure(figsize=(3.6 * len(facs), 3.2))
-        axes = fig.subplots(1, len(facs), squeeze=False)
-        for ax, (name, v) in zip(axes[0], facs):
-            fu, fs, fo = FACTOR_DISPLAY.get(name, ("", 1.0, 0.0))
-            v = np.asarray(v) * fs + fo
-            cats = categories(name, v)
-            if cats is None:
-                ax.plot(v, rb * f, ".", ms=3, alpha=0.6, label="baseline")
-                ax.plot(v, ra * f, ".", ms=3, alpha=0.8, label=f"with {verdict}")
-            else:  # a category per tick, baseline left and extended model right of it, points spread
-                jit = np.random.default_rng(0).uniform(-0.08, 0.08, len(v))
-                pos = np.searchsorted([c for c, _ in cats], v).astype(float)
-                ax.plot(pos - 0.18 + jit, rb * f, ".", ms=3, alpha=0.6, label="baseline")
-                ax.plot(pos + 0.18 + jit, ra * f, ".", ms=3, alpha=0.8, label=f"with {verdict}")
-                ax.set_xticks(range(len(cats)), [lab for _, lab in cats])
-                ax.set_xlim(-0.6, len(cats) - 0.4)
-            ax.axhline(0.0, color="k", lw=0.5)
-            ax.set_xlabel(f"{name} [{fu}]" if fu else name)
-            ax.set_ylabel(f"model - measured [{unit}]")
-        axes[0][0].legend(fontsize=7)
-        tidy_layout(fig)
-        yield o, fig
-
-
-def write_report(diag, outdir) -> Path:
-    """Markdown report with residual plots before/after; returns the report path."""
-    from . import make_output_dir
-
-    out = make_output_dir(outdir)
-    d = diagnosis_dict(diag)
-    md = [f"# Diagnosis of {d['design']}", "", f"**Verdict: {d['verdict']}**", ""]
-    for a in d["accepted"]:
-        md.append(
-            f"- **{a['effect']}** — {a['finding']}. "
-            + "; ".join(f"{p['name']} = {p['text']}" for p in a["parameters"])
-            + f". dBIC {a['dBIC']:.1f}, held-out gain {a['gain_percent']:.0f} %"
-            + (
-                f", beat {a['runner_up']['effect']} by {a['runner_up']['margin']:.1f} BIC"
-                if a["runner_up"]
-                else ""
-            )
-        )
-        md += [f"  - check: {f}" for f in a["plausibility"]]
-    md += ["", "## Data", ""]
-    for ds in d["datasets"]:
-        md.append(
-            f"- `{ds['file']}` ({ds['test']}): {ds['rows']} rows, noise floor {ds['noise_floor']:.3g} "
-            f"{ds['unit']}; cross-validation leaves one {ds['cv_groups']} out"
-        )
-        md += [f"  - excluded line {e['line']}: {e['reason']}" for e in ds["excluded_rows"]]
-    md += ["", "## Baseline fit", "", "| parameter | value |", "|---|---|"]
-    md += [f"| {p['name']} | {p['text']} |" for p in d["baseline"]["parameters"]]
-    md += [f"\ncheck: {f}" for f in d["baseline"]["plausibility"]]
-    md += ["", "## Where the baseline misfits", ""]
-    for ds, rows in zip(d["datasets"], d["residuals_baseline"]):
-        md += [
-            f"`{Path(ds['file']).name}`",
-            "",
-            "| factor | share of residual variance | worst level | rms there |",
-            "|---|---|---|---|",
-        ]
-        md += [
-            f"| {r['factor']} | {100 * r['eta2']:.1f} % | {r['worst_level']} "
-            f"| {r['worst_rms']:.3g} {r['unit']} |"
-            for r in rows
-        ]
-        md.append("")
-    md += ["## Candidates", ""]
-    for i, rnd in enumerate(d["candidates"], start=1):
-        md += [f"Round {i}", "", "| effect | dBIC | held-out gain | parameters |", "|---|---|---|---|"]
-        for c in rnd:
-            g = f"{c['cv_gain_percent']:.0f} %" if c["cv_gain_percent"] is not None else "-"
-            md.append(
-                f"| {c['effect']} | {c['dBIC']:.1f} | {g} | "
-                + "; ".join(f"{p['name']} = {p['text']}" for p in c["parameters"])
-                + " |"
-            )
-        md.append("")
-    md += ["## Gain", "", "| data | held-out RMSE before | after | gain |", "|---|---|---|---|"]
-    md += [
-        f"| {Path(h['file']).name} | {h['baseline']:.4g} {h['unit']} | {h['final']:.4g} {h['unit']} | "
-        f"{h['gain_percent']:.0f} % |"
-        for h in d["holdout_rmse_units"]
-    ]
-    md += [
-        "",
-        f"Gain {d['gain_percent']:.0f} % (grouped cross-validation, noise-weighted RMSE "
-        f"{d['holdout_rmse_baseline']:.3g} -> {d['holdout_rmse_final']:.3g}; about 1 is the noise floor).",
-        "",
-    ]
-    md += ["## What the final fit leaves", ""]
-    for u in d["unexplained"]:
-        name = Path(u["file"]).name
-        if u["remaining"]:
-            md.append(f"- `{name}`: **unexplained** structure (RMS {u['rms_over_noise']:.2g}x the noise floor)")
-            md += [f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual variance. Candidates: "
-                   f"{sg['causes']}. To separate them: {sg['to_separate']}." for sg in u["signatures"]]
-        else:
-            md.append(f"- `{name}`: RMS {u['rms_over_noise']:.2g}x the noise floor, no structure along a recorded "
-                      "factor")
-    md += ["", "## Residual plots", ""]
-    for k, (o, fig) in enumerate(residual_figures(diag, d["verdict"])):
-        png = out / f"residuals_{k + 1}.png"
-        save_figure(fig, png, dpi=90)
-        md += [f"![residuals {Path(o.dataset.source).name}]({png.name})", ""]
-    path = out / "report.md"
-    write_text_atomic(path, "\n".join(md) + "\n", what="report")
-    return path

@@ -160,7 +160,8 @@ def residuals_figure(o, rb, ra, verdict: str):
     """Residuals of one observation against each recorded factor, baseline and final (plotly)."""
     from plotly.subplots import make_subplots
 
-    from .diagnosis import FACTOR_DISPLAY, Y_UNIT
+    from .diagfiles import FACTOR_DISPLAY
+    from .diagnosis import Y_UNIT
 
     facs = [(n, v) for n, v in o.factors.items() if np.ptp(v) > 0] or [("row", np.arange(o.n))]
     unit, f = Y_UNIT[o.kind]

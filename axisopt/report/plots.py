@@ -10,7 +10,8 @@ import numpy as np
 from ..fileio import save_figure, tidy_layout
 from ..model import Evaluation
 from ..units import N_PER_UM
-from .evaluation import RPM, judged_rows
+from .checktext import judged_rows
+from .text import RPM
 
 
 def duty_points(ev: Evaluation) -> dict | None:

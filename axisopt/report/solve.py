@@ -9,7 +9,8 @@ import textwrap
 
 import numpy as np
 
-from ..problem import OBJECTIVE_TABLE
+from ..catalog.columns import PART_SLOTS
+from ..model.goals import OBJECTIVE_TABLE
 from ..search.result import OPTIMAL
 
 # The cutting force's components beside the feed force, as a rule of thumb for turning: feed F_f = 0.50 F_c and
@@ -158,7 +159,7 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     for n in c.notes:
         L.append(f"  {n}")
     L.extend(estimated_lines(c.estimated))
-    from .evaluation import fit_lines
+    from .text import fit_lines
 
     return fit_lines("\n".join(L))
 
@@ -226,9 +227,9 @@ def relax_lines(inf) -> list:
 def _cand_table(cands, unit, keys=()) -> str:
     """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
     design, only the parts in which it differs from the one above).  The goals' columns come from
-    ``problem.OBJECTIVE_TABLE`` (``Goal.column``): those shown always, the preload, then those of the front's
+    ``model.goals.OBJECTIVE_TABLE`` (``Goal.column``): those shown always, the preload, then those of the front's
     ``keys`` (the positioning error)."""
-    slots = ("arrangement", "screw", "grade", "nut", "bearing", "guide", "motor", "coupling", "reduction")
+    slots = ("arrangement", "screw", "grade", *PART_SLOTS[1:])
     obj = f"obj {unit}" if unit != "-" else ""
     always = [g for g in OBJECTIVE_TABLE if g.column is not None and g.column.always]
     extra = [g for g in OBJECTIVE_TABLE if g.column is not None and not g.column.always and g.key in keys]

@@ -22,16 +22,11 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from .front import METHOD_TABLE, METHODS, estimated_at_optimum, limit_sensitivities, solve
-from .result import (
-           Binding,
-           Candidate,
-           Certificate,
-           Infeasibility,
-           ParetoFront,
-           Relaxation,
-           SolveResult,
-)
+from .certificate import Binding, Certificate
+from .front import METHOD_TABLE, METHODS, solve
+from .infeasible.answer import Infeasibility, Relaxation
+from .result import Candidate, ParetoFront, SolveResult
+from .sensitivity import estimated_at_optimum, limit_sensitivities
 
 __all__ = ["solve", "METHODS", "METHOD_TABLE", "SolveResult", "Candidate", "Certificate", "Binding",
            "Infeasibility", "ParetoFront", "Relaxation", "replace", "estimated_at_optimum", "limit_sensitivities"]

@@ -3,7 +3,7 @@
 answers are combined.  The best objective wins (ties: the shared tie rule, lower cost then mass, then the
 arrangement listed first); the runners-up are merged in objective order; the certificate's counts are summed and
 proven only if every arrangement's solve is; infeasible only if every arrangement is.  The limit sensitivities
-are the best gain over all arrangements, each re-solved with the limit relaxed (:func:`.front.limit_sensitivities`
+are the best gain over all arrangements, each re-solved with the limit relaxed (:func:`.sensitivity.limit_sensitivities`
 for an arrangement with a design, a relaxed solve for one without).  A Pareto objective merges the arrangements' fronts
 and keeps the designs no design of another arrangement dominates."""
 
@@ -17,7 +17,8 @@ import numpy as np
 
 from ..model.limits import LIMITS
 from ..problem import Problem
-from .result import INFEASIBLE, OPTIMAL, Certificate, SolveResult
+from .certificate import Certificate
+from .result import INFEASIBLE, OPTIMAL, SolveResult
 from .task.objective import rank_order
 
 _SUMMED = ("combinations", "pruned_by_bound", "exact_evaluations", "nlps_solved", "nlp_failures", "pruned_by_block",
@@ -30,10 +31,10 @@ class Door:
     stage; the stage calls back through these, so it imports nothing of the front door)."""
 
     solve: Callable  # front.solve: one arrangement (a problem without arrangements)
-    limit_sensitivities: Callable  # front.limit_sensitivities
-    relax: float  # front.RELAX: the relative relaxation of a limit for its sensitivity
+    limit_sensitivities: Callable  # sensitivity.limit_sensitivities
+    relax: float  # sensitivity.RELAX: the relative relaxation of a limit for its sensitivity
     sensitivities: bool  # the method's capability (front.METHOD_TABLE)
-    cut_note: Callable  # front.cut_note: what a time limit cut, in words
+    cut_note: Callable  # sensitivity.cut_note: what a time limit cut, in words
 
 
 def _miss(res: SolveResult) -> float:
@@ -61,7 +62,7 @@ def _certificate(results) -> Certificate:
 
 def _sensitivities(problem: Problem, subs, results, win: int, method: str, deadline: float, cut: list,
                    door: Door) -> list:
-    """The winner's limits, each with the best gain over every arrangement relaxed by front.RELAX (a limit the
+    """The winner's limits, each with the best gain over every arrangement relaxed by sensitivity.RELAX (a limit the
     ``deadline`` cuts in any arrangement is left out, its key in ``cut``)."""
     RELAX, limit_sensitivities, solve = door.relax, door.limit_sensitivities, door.solve
 

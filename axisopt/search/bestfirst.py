@@ -11,8 +11,8 @@ import time
 import numpy as np
 
 from .bounds import block_bounds
+from .certificate import SearchStats
 from .preload import concat_exact, exact_solve
-from .result import SearchStats
 from .screen import group_end, screen_blocks
 from .task.objective import ObjectiveSpec, objective_floor
 from .task.space import Space
@@ -41,7 +41,7 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     and every :data:`PROGRESS` seconds a progress record goes to the "axisopt" logger (a terminal shows it).
     ``first_feasible``: stop at the first exact solve that
     finds a feasible design (a feasibility test, no optimum: search.advice).
-    Returns (Exact of evaluated combinations, :class:`.result.SearchStats`)."""
+    Returns (Exact of evaluated combinations, :class:`.certificate.SearchStats`)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
     blocks = block_bounds(space, constraints, objective)

@@ -7,8 +7,8 @@ import numpy as np
 
 from .. import model
 from ..design import Design
+from ..model.goals import RESULT_GOALS
 from ..model.limits import LIMITS
-from ..problem import RESULT_GOALS
 from .reported import REPORTED
 from .result import CANDIDATE_FIELDS, Candidate, goal_value
 from .task.objective import ObjectiveSpec

@@ -39,6 +39,7 @@ from .drivedesigns import (  # noqa: F401  (the vocabulary, read from here too)
     subset,
 )
 from .drivespace import evaluate_one, evaluate_space
+from .result import INFEASIBLE, OPTIMAL, STATUSES
 
 
 def search_space(problem, space, spec, method: str, top: int):
@@ -124,7 +125,7 @@ def solve_drive_types(problem, method: str = "default", *, top: int = 5, time_li
     mode, spec = objective_of(problem)
     unit, sense = spec[2], spec[3]
     designs, types, notes, closest = [], [], [], {}
-    status = "optimal"
+    status = OPTIMAL
     for kind in problem.drives.types:
         if kind == "screw":
             res, ds = _screw(
@@ -140,7 +141,7 @@ def solve_drive_types(problem, method: str = "default", *, top: int = 5, time_li
                     ds[0].objective if ds else None,
                 )
             )
-            if res.status not in ("optimal", "infeasible"):
+            if not STATUSES[res.status].proven:
                 status = res.status
             continue
         for space in spaces(problem):
@@ -152,7 +153,7 @@ def solve_drive_types(problem, method: str = "default", *, top: int = 5, time_li
             types.append(
                 TypeSummary(
                     kind,
-                    "optimal" if ds else "infeasible",
+                    OPTIMAL if ds else INFEASIBLE,
                     space.size,
                     nfeas,
                     ds[0].objective if ds else None,
@@ -170,7 +171,7 @@ def solve_drive_types(problem, method: str = "default", *, top: int = 5, time_li
         ),
     )
     out = DriveTypeResult(
-        status if ranked else "infeasible",
+        status if ranked else INFEASIBLE,
         method,
         f"{'maximise' if sense == 'max' else 'minimise'} {mode.replace('_', ' ')}",
         unit,

@@ -14,11 +14,12 @@ import time
 
 import numpy as np
 
+from ..model.goals import RESULT_GOALS
 from ..model.limits import OUTPUT_PRELOAD
-from ..problem import RESULT_GOALS
 from . import bestfirst
+from .certificate import SearchStats
 from .preload import BISECTION_STEPS, concat_exact, convex_interval, goal_arrays, new_exact, subset
-from .result import Exact, SearchStats
+from .result import Exact
 from .task.constraints import ok_all
 from .task.objective import ObjectiveSpec
 from .task.space import Space, respond

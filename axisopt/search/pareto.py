@@ -1,4 +1,4 @@
-"""Exact Pareto front over two or more of the Pareto goals (``axisopt.problem.OBJECTIVE_TABLE``: minimum
+"""Exact Pareto front over two or more of the Pareto goals (``axisopt.model.goals.OBJECTIVE_TABLE``: minimum
 stiffness, minimum frequency, cost, masses, positioning error).
 
 The performance measures improve with the nut preload (stiffness and frequency grow, the positioning error
@@ -14,18 +14,19 @@ import time
 
 import numpy as np
 
-from ..problem import GOALS
+from ..model.goals import GOALS
 from .bounds import block_bounds
 from .candidates import make_candidate
+from .certificate import Certificate, SearchStats
 from .exhaustive import exhaustive_search
 from .parts import build_space
 from .preload import concat_exact, exact_solve
-from .result import INFEASIBLE, OPTIMAL, Certificate, ParetoFront, SearchStats, SolveResult
+from .result import INFEASIBLE, OPTIMAL, ParetoFront, SolveResult
 from .screen import screen_nuts
 from .task.constraints import build_constraints
 from .task.objective import objective_spec
 
-# per Pareto key (axisopt.problem.OBJECTIVE_TABLE): maximised or minimised, display unit, the name of its value
+# per Pareto key (axisopt.model.goals.OBJECTIVE_TABLE): maximised or minimised, display unit, the name of its value
 # on a Candidate or Exact (``Candidate.goal(key)`` and ``Exact.goals[key]`` read it by key)
 SENSE = {k: g.sense for k, g in GOALS.items() if g.pareto}
 UNIT = {k: g.unit for k, g in GOALS.items() if g.pareto}

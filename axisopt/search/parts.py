@@ -21,7 +21,7 @@ from ..catalog.grades import grade_table
 from ..catalog.parttable import PartTable
 from ..errors import InputError
 from ..model.chain import drive_torsional_stiffness
-from ..model.params import columns_read
+from ..model.paramnames import columns_read
 from ..physics import nut as pnut
 from ..problem import Problem
 from .task.space import SCREEN_CHUNK, Space

@@ -21,7 +21,7 @@ from dataclasses import fields
 import numpy as np
 
 from .. import model
-from ..problem import RESULT_GOALS
+from ..model.goals import RESULT_GOALS
 from .result import Exact
 from .task.constraints import Constraint, as_vector, ok_all, reads_regen
 from .task.objective import ObjectiveSpec

@@ -14,7 +14,7 @@ class Reported:
     """One value a result reports of each design, declared once: the :class:`Candidate` field (and JSON key) of
     that name, its column in the candidate tables (:data:`CANDIDATE_COLUMNS`, ``Candidate.row``) and the study
     table (``study.table.RESULT_COLUMNS``), its label in ``Candidate.__repr__``, its meaning in the API
-    reference, and where its value comes from (a goal of ``problem.OBJECTIVE_TABLE`` whose ``field`` it is, or a
+    reference, and where its value comes from (a goal of ``model.goals.OBJECTIVE_TABLE`` whose ``field`` it is, or a
     model output's minimum over the stroke).  Adding a reported value is one entry of :data:`REPORTED`."""
 
     field: str  # the Candidate attribute and JSON key

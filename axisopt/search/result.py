@@ -10,8 +10,10 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..display import fmt, fmt_objective, frame, html_fields, html_table, one_line
-from ..problem import GOALS, RESULT_GOALS
+from ..display import fmt, fmt_objective, frame, html_fields, html_table, json_value, one_line
+from ..model.goals import GOALS, RESULT_GOALS
+from .certificate import Bindings, Certificate
+from .infeasible.answer import Infeasibility
 from .reported import REPORTED
 
 
@@ -37,29 +39,11 @@ OPTIMAL, FEASIBLE, TIME_LIMIT, SOLVER_FAILED, INFEASIBLE = (st.name for st in ST
 
 
 @dataclass
-class SearchStats:
-    """What a search stage counted (the certificate's search fields; :meth:`Certificate.of`)."""
-
-    combinations: int  # in the search space
-    feasible: int | None  # passed screening (exhaustive: exactly feasible); None: not counted
-    pruned_by_bound: int  # feasible combinations never solved because their bound cannot win
-    exact_evaluations: int  # combinations whose continuous problem was solved
-    gap: float  # relative optimality gap; 0 when proven
-    proven: bool
-    screening_time: float = 0.0  # [s]
-    screening_rate: float = 0.0  # combinations / s
-    pruned_by_block: int = 0  # default method: combinations never screened (their block cannot win)
-    screened: int | None = None  # default method: combinations in the blocks screened
-    pruned_by_dominance: int = 0  # combinations never formed (dominated drive pairs)
-    timed_out: bool = False  # default method: stopped at the time limit (the gap says how far from proven)
-
-
-@dataclass
 class Exact:
     """The exact per-combination optimum of the continuous problem, over K combinations
     (:func:`.preload.exact_solve`, :func:`.exhaustive.grid_solve`).
 
-    ``goals`` holds, per goal of :data:`axisopt.problem.RESULT_GOALS` (its key), the (K,) values at the chosen
+    ``goals`` holds, per goal of :data:`axisopt.model.goals.RESULT_GOALS` (its key), the (K,) values at the chosen
     preload in the goal's display unit (NaN where not evaluated: no limit or front reads the output); each is
     also the attribute named by the goal's ``field`` (``ex.min_stiffness``, ``ex.cost``, ...)."""
 
@@ -137,7 +121,7 @@ class Candidate:
     arrangement: str = ""
 
     def goal(self, key: str) -> float:
-        """The value of the goal ``key`` (:data:`axisopt.problem.OBJECTIVE_TABLE`) in its display unit: its field
+        """The value of the goal ``key`` (:data:`axisopt.model.goals.OBJECTIVE_TABLE`) in its display unit: its field
         where the Candidate has one (in the JSON), else from the model's outputs (NaN where not evaluated)."""
         g = GOALS[key]
         if g.field in CANDIDATE_FIELDS:
@@ -160,7 +144,7 @@ class Candidate:
         d.pop("outputs")
         if not d["arrangement"]:
             d.pop("arrangement")
-        return {k: _clean(v) for k, v in d.items()}
+        return {k: json_value(v) for k, v in d.items()}
 
     def row(self, objective_unit: str | None = None) -> dict:
         """One table row: rank, mounting, parts, the objective (when ``objective_unit`` is given) and the
@@ -222,110 +206,6 @@ for _g in RESULT_GOALS:
         setattr(Candidate, _g.field, _candidate_goal(_g))
 
 
-@dataclass
-class Certificate:
-    """How the answer was obtained and how sure it is."""
-
-    combinations: int  # in the search space (mountings x nuts x bearings x guides)
-    feasible: int | None  # combinations that pass the preload-independent limits and the preload-dependent
-    #                ones at their most favourable preload (exhaustive: exactly feasible); None: not counted (Bonmin)
-    pruned_by_bound: int  # feasible combinations never solved because their bound cannot win
-    exact_evaluations: int  # combinations whose continuous problem was solved (vectorized 1-D solve)
-    nlps_solved: int  # IPOPT solves
-    nlp_failures: int
-    gap: float  # relative optimality gap; 0 when proven
-    proven: bool
-    screening_time: float = 0.0  # [s]
-    screening_rate: float = 0.0  # combinations / s
-    notes: tuple = ()
-    # default method: combinations never screened (their (mounting, nut, bearing) block cannot meet the limits
-    # or reach the incumbent with any guide and drive), and combinations in the blocks screened (one by one, or a
-    # drive at a time where its bounds over the block rule it out: search.drivebounds)
-    pruned_by_block: int = 0
-    screened: int | None = None
-    # combinations never formed (not in ``combinations``): a (motor, coupling) pair whose coupling is dominated
-    # by another or cannot carry the motor's peak torque
-    pruned_by_dominance: int = 0
-    # the objective and the active limits and checks of the best design that rest on estimated part values (not
-    # the vendor's table): model.estimates.Resting.to_dict() each; empty when every active value is a vendor's
-    estimated: tuple = ()
-
-    @classmethod
-    def of(cls, stats: SearchStats, nlps: int = 0, fails: int = 0, notes=()) -> Certificate:
-        """The certificate of a search's statistics, its NLP solves and failures and its notes."""
-        notes = tuple(notes) + (("the search stopped at the time limit (--time-limit)",) if stats.timed_out else ())
-        return cls(nlps_solved=nlps, nlp_failures=fails, notes=notes,
-                   **{f.name: getattr(stats, f.name) for f in fields(SearchStats) if f.name != "timed_out"})
-
-    def to_dict(self) -> dict:
-        return {k: _clean(v) for k, v in asdict(self).items()}
-
-
-@dataclass
-class Binding:
-    """A limit at the optimum and what relaxing it would buy."""
-
-    limit: str  # the problem's limit key, e.g. 'min_frequency'
-    unit: str  # the limit's display unit (N/um, Hz, EUR, ...)
-    value: float  # limit value, in ``unit``
-    at_optimum: float  # the best design's value, in ``unit``
-    relaxed_to: float | None = None  # the limit relaxed by 10 %, in ``unit``
-    objective_gain: float | None = None  # objective change when relaxed, in SolveResult.objective_unit
-    binding: bool = False  # relaxing it improves the objective
-
-    def to_dict(self) -> dict:
-        return {k: _clean(v) for k, v in asdict(self).items()}
-
-    def row(self, objective_unit: str = "") -> dict:
-        """One table row, the units in the column names (``objective_unit``: the objective's unit)."""
-        u = f" [{self.unit}]" if self.unit else ""
-        gain = f"objective gain [{objective_unit}]" if objective_unit not in ("", "-") else "objective gain"
-        return {"limit": self.limit, f"value{u}": self.value, f"at optimum{u}": self.at_optimum,
-                f"relaxed to{u}": self.relaxed_to, gain: self.objective_gain, "binding": self.binding}
-
-    def to_frame(self):
-        """pandas DataFrame of this limit: one row as :meth:`row` (units in the column names)."""
-        return frame([self.row()])
-
-    def __repr__(self) -> str:
-        u = self.unit if self.unit not in ("", "-") else ""
-        gain = "" if self.objective_gain is None else \
-            f"relaxed to {fmt(self.relaxed_to, u)} the objective changes by " \
-            + (f"{self.objective_gain:+.4g}" if self.binding else "+0")  # a residue within tolerance is none
-        return one_line("Binding", f"{self.limit} {fmt(self.value, u)}", {
-            "at optimum": fmt(self.at_optimum, u), "": "binding" if self.binding else "not binding",
-            "gain": gain})
-
-
-class Bindings(list):
-    """``SolveResult.binding``: a list of :class:`Binding` that also gives a table (``to_frame()``, units in the
-    column names, the objective gain in the objective's unit) and an HTML table in Jupyter."""
-
-    def __init__(self, items=(), objective_unit: str = ""):
-        super().__init__(items)
-        self.objective_unit = objective_unit
-
-    def to_frame(self):
-        """pandas DataFrame, one row per limit: its name and ``unit`` (the limits differ in unit), the limit, the
-        best design's value and the relaxed limit in that unit, the objective gain in the objective's unit."""
-        cols = ("limit", "unit", "value", "at optimum", "relaxed to", self._gain(), "binding")
-        return frame([dict(zip(cols, (b.limit, b.unit, b.value, b.at_optimum, b.relaxed_to, b.objective_gain,
-                                      b.binding))) for b in self], cols)
-
-    def _gain(self) -> str:
-        return f"objective gain [{self.objective_unit}]" if self.objective_unit not in ("", "-") else \
-            "objective gain"
-
-    def __repr__(self) -> str:
-        binding = [b.limit for b in self if b.binding]
-        return one_line("Bindings", f"{len(self)} limits", {"binding": ", ".join(binding) or "none"})
-
-    def _repr_html_(self) -> str:
-        rows = [{"limit": b.limit, "unit": b.unit, "value": b.value, "at optimum": b.at_optimum,
-                 "relaxed to": b.relaxed_to, self._gain(): b.objective_gain, "binding": b.binding} for b in self]
-        return html_table(rows, repr(self))
-
-
 @dataclass(repr=False)
 class ParetoFront:
     """The non-dominated designs of a multi-objective problem (``objective.mode: pareto``): a sequence of
@@ -345,7 +225,8 @@ class ParetoFront:
         and display units: a goal without a field of its own, the positioning error, is there too)."""
         return {"keys": list(self.keys), "senses": list(self.senses), "units": list(self.units),
                 "feasible": self.feasible,
-                "points": [p.to_dict() | {"objectives": [_clean(p.goal(k)) for k in self.keys]} for p in self.points]}
+                "points": [p.to_dict() | {"objectives": [json_value(p.goal(k)) for k in self.keys]}
+                           for p in self.points]}
 
     def __len__(self) -> int:
         return len(self.points)
@@ -368,108 +249,6 @@ class ParetoFront:
 
     def _repr_html_(self) -> str:
         return html_table([p.row() for p in self.points], repr(self))
-
-
-@dataclass(frozen=True)
-class DesignChange:
-    """An input changed (search.advice) after which the catalogs hold a design: ``key`` (``axis.max_speed``),
-    its unit, the value and the proposed one in that unit, and what it means where the key does not say it
-    (``note``: 'admits a gearbox or belt ...'); or a list of the ``catalog:`` section edited (search.widen):
-    ``edit`` 'add' (``values`` added to the list at ``key``) or 'remove' (taken out of it), ``value`` and ``to``
-    NaN."""
-
-    key: str  # the input, e.g. 'axis.max_speed', 'catalog.mountings'
-    unit: str  # its display unit (m/min, kg, ...; '' for a list)
-    value: float  # the input now, in ``unit``
-    to: float  # the proposed value, in ``unit``
-    note: str = ""  # what the change means where the key does not say it
-    edit: str = ""  # a list of the catalog section: 'add' or 'remove' ('' : a value changed)
-    values: tuple = ()  # what the edit adds or removes
-
-    def to_dict(self) -> dict:
-        d = {"key": self.key, "unit": self.unit, "value": _clean(self.value), "to": _clean(self.to),
-             "note": self.note}
-        return d | ({"edit": self.edit, "values": list(self.values)} if self.edit else {})
-
-
-@dataclass
-class Relaxation:
-    """A limit to relax so that a design becomes feasible (:func:`axisopt.search.infeasible.relax.rank_relaxations`)."""
-
-    key: str  # where it sits in the problem file, e.g. 'limits.max_cost', 'limits.margins.critical_speed'
-    label: str
-    unit: str  # display unit ('' for a margin)
-    value: float  # the limit now (display units)
-    relaxed_to: float  # the value the design reaches: the limit relaxed to it makes the design meet it
-    change: float  # relative change of the limit (0.25: 25 %)
-    design_rank: int  # the closest design (Infeasibility.closest rank) it frees
-    design: object = field(default=None, repr=False, compare=False)  # that Candidate
-    together: bool = False  # the design needs other limits relaxed too (the other Relaxations)
-    below_vendor_rule: bool = False  # a check's margin relaxed below 1: the vendor's own rule would not hold
-
-    def to_dict(self) -> dict:
-        d = asdict(self)
-        d.pop("design")
-        d["parts"] = self.design.parts() if self.design is not None else None
-        d["mounting"] = self.design.mounting if self.design is not None else None
-        return {k: _clean(v) for k, v in d.items()}
-
-
-@dataclass(repr=False)
-class Infeasibility:
-    """Why no combination meets the limits."""
-
-    unmeetable: list  # [(limit name, best achievable value, limit value, unit)] met by no combination
-    closest: list  # list[Candidate] with .misses filled
-    # what to relax: list[Relaxation], smallest change first, all for one design (search.relax); the closest
-    # designs left out because they break a compatibility rule: [(rank, [rules])]; and when every closest
-    # design breaks one, the rules the proposed design breaks (relaxing the limits is then not enough)
-    relax: list = field(default_factory=list)
-    not_relaxable: list = field(default_factory=list)
-    relax_blocked_by: list = field(default_factory=list)
-    # axis or catalog changes verified to make the problem feasible (search.advice), offered before any relaxation
-    design_changes: list = field(default_factory=list)
-    # checks the closest designs fail because a catalog row gives no value (search.relax.missing_values): what to
-    # give or choose instead, one sentence per check (never a margin relaxed to 0)
-    missing: list = field(default_factory=list)
-    # the explanation stopped before every block was scored (at the time limit, or after explain.MAX_OPENED
-    # combinations where a limit no combination meets makes every design miss): the closest designs are those found
-    # by then, the unmeetable limits' best values those reached by then (the least cost exact)
-    cut: bool = False
-
-    def to_dict(self) -> dict:
-        return {"unmeetable": [{"limit": n, "best_achievable": _clean(b), "limit_value": _clean(v), "unit": u}
-                               for n, b, v, u in self.unmeetable],
-                "closest": [c.to_dict() for c in self.closest],
-                "relax": [r.to_dict() for r in self.relax],
-                "not_relaxable": [{"rank": r, "breaks": list(k)} for r, k in self.not_relaxable],
-                "relax_blocked_by": list(self.relax_blocked_by),
-                "design_changes": [d.to_dict() for d in self.design_changes]} \
-            | ({"missing": list(self.missing)} if self.missing else {})
-
-    def to_frame(self):
-        """pandas DataFrame of the closest designs, with ``miss <limit> [%]`` per missed limit."""
-        return frame([c.row() for c in self.closest])
-
-    def deciding(self, most: int = 3) -> str:
-        """The misses that decide, one clause: the limits no combination meets (with the best any reaches), else
-        what the closest design misses and by how much (at most ``most`` named); what an infeasible answer and a
-        study's reason lead with, before any note."""
-        if self.unmeetable:
-            shown = [f"{n} (limit {fmt(v, u)}, best any reaches {fmt(b, u)})" for n, b, v, u in self.unmeetable]
-            return "no combination meets " + ", ".join(shown[:most]) + \
-                (f" and {len(shown) - most} more" if len(shown) > most else "")
-        c = self.closest[0] if self.closest else None
-        if c is None or not c.misses:
-            return "no combination meets every limit"
-        miss = [f"{k} by {fmt(100 * v)} %" for k, v in c.misses.items()]
-        return "the closest design misses " + ", ".join(miss[:most]) + \
-            (f" and {len(miss) - most} more" if len(miss) > most else "")
-
-    def __repr__(self) -> str:
-        unmet = {n: f"limit {fmt(v, u)}, best {fmt(b, u)}" for n, b, v, u in self.unmeetable}
-        return one_line("Infeasibility", f"{len(self.unmeetable)} limits no combination meets" if unmet else
-                        "every limit met by some combination, not all together", unmet)
 
 
 @dataclass(repr=False)
@@ -518,7 +297,7 @@ class SolveResult:
         return {
             "status": self.status, "method": self.method, "problem": self.problem,
             "objective": {"label": self.objective_label, "unit": self.objective_unit,
-                          "value": _clean(self.objective)},
+                          "value": json_value(self.objective)},
             "best": self.best.to_dict() if self.best else None,
             "runners_up": [c.to_dict() for c in self.runners_up],
             "certificate": self.certificate.to_dict(),
@@ -528,7 +307,7 @@ class SolveResult:
             "pareto": self.pareto.to_dict() if self.pareto else None,
         } | ({"arrangement": {"chosen": self.arrangement, "of": self.arrangements}} if self.arrangements else {}) \
             | ({"left_out": list(self.left_out)} if self.left_out else {}) \
-            | ({"cheaper": _clean(self.cheaper)} if self.cheaper else {})
+            | ({"cheaper": json_value(self.cheaper)} if self.cheaper else {})
 
     def designs(self) -> list:
         """The designs shown: the Pareto front's points, else best and runners-up, else (infeasible) the
@@ -583,13 +362,3 @@ class SolveResult:
                             "method": self.method, "proven": self.certificate.proven,
                             "time [s]": round(self.time, 2)}, "SolveResult") + \
             html_table([c.row(None if self.best is None else self.objective_unit) for c in self.designs()], head)
-
-
-def _clean(v):
-    if isinstance(v, float) and not math.isfinite(v):
-        return None
-    if isinstance(v, (list, tuple)):
-        return [_clean(x) for x in v]
-    if isinstance(v, dict):
-        return {k: _clean(x) for k, x in v.items()}
-    return v

@@ -14,10 +14,12 @@ from __future__ import annotations
 import sys
 import types
 
+from .cases import Case, Study, Sweep, apply_overrides, build_problem
+from .outputs import write_outputs
 from .run import Progress, RunSummary, run_study, solve_case
-from .spec import Case, Study, Sweep, apply_overrides, build_problem, load_study
+from .spec import load_study
 from .store import OK_STATUSES, CaseStore
-from .table import results_table, write_outputs
+from .table import results_table
 
 __all__ = ["load_study", "run_study", "results_table", "write_outputs", "Study", "Sweep", "Case", "Progress",
            "RunSummary", "CaseStore", "solve_case", "build_problem", "apply_overrides", "OK_STATUSES"]

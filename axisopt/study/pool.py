@@ -19,8 +19,8 @@ from collections import Counter
 from dataclasses import dataclass
 
 from ..errors import InputError
+from .cases import Case
 from .record import run_batch
-from .spec import Case
 from .store import RECORD_VERSION
 
 WORKER_DEATHS = 2  # a case whose worker dies this often while solving it is recorded as worker_died

@@ -15,7 +15,7 @@ import threading
 import time
 
 from ..errors import InputError
-from .spec import Case, build_problem, short_message
+from .cases import Case, build_problem, short_message
 from .store import OK_STATUSES, RECORD_VERSION
 
 # failures of the machinery, not of the case: not a result, solved again by a resumed run

@@ -38,10 +38,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import InputError
+from .cases import Study
 from .lock import StudyLock
 from .pool import run_dask, run_pool
 from .record import INFRA_STATUSES, LEGACY_WORKER_DIED, run_batch, solve_case
-from .spec import Study
 from .store import OK_STATUSES, CaseStore, sweep_temporaries
 
 
@@ -174,7 +174,7 @@ def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, r
                          resumed=prog.resumed, failed=prog.failed, lost=lost, lost_reason=lost_reason,
                          time=prog.elapsed, backend=backend, workers=nw, died=died, redone=len(redo))
     if report:
-        from .table import write_outputs
+        from .outputs import write_outputs
 
         summary.files = write_outputs(study, out, summary)
     return summary

@@ -13,7 +13,8 @@ from sim_tables import friction_rows, write_table
 from axisopt.identify import diagnose, read_dataset
 from axisopt.identify.records.idim import diagnose_time_files
 from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
-from axisopt.report.timediag import NOISE_RATIO, time_diagnosis_text
+from axisopt.report.timediag import time_diagnosis_text
+from axisopt.report.timeresidual import NOISE_RATIO
 
 
 def _table(tmp_path, plant, seed, **law):

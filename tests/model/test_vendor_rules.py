@@ -110,7 +110,7 @@ def test_reduction_emergency_torque_against_motor_peak_times_ratio():
     from dataclasses import replace
 
     from axisopt.design import Axis
-    from axisopt.model.params import drive_params
+    from axisopt.model.driveparams import drive_params
 
     cat = default_catalog()
     motor, red = cat.part("motors", "SGM7A-70A"), cat.part("reductions", "BK-NPT035-MF-8")

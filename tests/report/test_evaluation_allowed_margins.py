@@ -7,7 +7,7 @@ from pathlib import Path
 from axisopt.design import load_design
 from axisopt.model import evaluate
 from axisopt.problem import load_problem
-from axisopt.report.evaluation import check_lines, judged_rows
+from axisopt.report.checktext import check_lines, judged_rows
 from axisopt.report.html import checks_table
 from axisopt.report.solve import format_result
 from axisopt.search import solve

@@ -11,7 +11,8 @@ from axisopt.catalog.columns import SCHEMA
 from axisopt.catalog.loading import Catalog
 from axisopt.design import Axis
 from axisopt.model import CHECKS
-from axisopt.problem import Objective, Problem, Restrictions
+from axisopt.model.goals import Objective
+from axisopt.problem import Problem, Restrictions
 
 RPM = 2 * math.pi / 60
 

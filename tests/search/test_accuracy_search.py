@@ -92,7 +92,7 @@ def test_no_accuracy_limit_keeps_the_space_and_the_catalog_price():
 def test_pareto_with_positioning_error_default_equals_exhaustive(keys):
     """A front of the positioning error against cost (and stiffness): the grade is a choice, every point names
     its grade, and the front is the brute-force non-dominated set of the exact per-combination values."""
-    from axisopt.problem import Objective
+    from axisopt.model.goals import Objective
     from axisopt.search.exhaustive import exhaustive_search
     from axisopt.search.task.constraints import build_constraints
     from axisopt.search.task.objective import objective_spec

@@ -125,7 +125,7 @@ def _brute_front(p):
 def test_pareto_over_arrangements_is_the_front_of_all_their_designs(make, seed):
     """A Pareto objective with arrangements: the merged front equals the non-dominated set of every feasible design
     of every arrangement (brute force), each point naming its arrangement; default == exhaustive."""
-    from axisopt.problem import Objective
+    from axisopt.model.goals import Objective
 
     p = replace(make(seed), objective=Objective(mode="pareto", pareto=("stiffness", "cost")))
     d, e = solve(p, "default"), solve(p, "exhaustive")

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from axisopt import mathx as mx
 from axisopt.physics import drive as pdr
 from axisopt.search import drivebounds
-from axisopt.search.infeasible import explain as E
+from axisopt.search.infeasible import optimism as E
 from axisopt.search.interval import Interval, ends
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
@@ -74,7 +74,7 @@ def test_drive_bounds_hold_every_combination(seed, groups, monkeypatch):
     monkeypatch.setattr(drivebounds, "DRIVE_BEARING_GROUPS", groups)
     p = _case(seed, "drive")
     sp, cons = build_space(p), build_constraints(p)
-    drive = [c for c in cons if not E._bounded(c)]
+    drive = [c for c in cons if not E.is_bounded(c)]
     assert drive
     _, N, B, G = sp.shape
     for mounting in sp.mountings:
@@ -84,7 +84,7 @@ def test_drive_bounds_hold_every_combination(seed, groups, monkeypatch):
         hi = sp.preload_hi.reshape(-1, 1, 1, 1)
         d_lo, d_hi = respond_drive(pd, lo), respond_drive(pd, hi)
         for c in drive:
-            v = E._favourable(c, d_lo, d_hi, (N, B, G))
+            v = E.favourable_bound(c, d_lo, d_hi, (N, B, G))
             b = bound[c.name][:, :, None]
             tol = 1e-9 * np.maximum(np.abs(v), 1.0)
             held = v <= b + tol if c.sense == ">=" else v >= b - tol

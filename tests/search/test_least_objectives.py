@@ -14,7 +14,8 @@ from search_synthetic import assert_same_answer
 from test_bounds import _problem
 
 from axisopt.errors import InputError
-from axisopt.problem import Objective, load_problem
+from axisopt.model.goals import Objective
+from axisopt.problem import load_problem
 from axisopt.search import solve
 
 ROOT = Path(__file__).resolve().parents[2]

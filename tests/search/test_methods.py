@@ -10,7 +10,7 @@ import pytest
 from search_synthetic import make_catalog, make_double, make_problem
 
 from axisopt.errors import InputError
-from axisopt.problem import Objective
+from axisopt.model.goals import Objective
 from axisopt.search import solve
 from axisopt.search.front import METHODS_BY_NAME
 from axisopt.search.result import STATUSES

@@ -9,7 +9,7 @@ from search_synthetic import (
     make_problem,
 )
 
-from axisopt.problem import Objective
+from axisopt.model.goals import Objective
 from axisopt.search import solve
 from axisopt.search.exhaustive import exhaustive_search
 from axisopt.search.pareto import nondominated

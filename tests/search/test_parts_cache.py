@@ -73,7 +73,7 @@ def test_what_prunes_drives_builds_anew(tmp_path):
 def test_relaxing_a_backlash_limit_that_left_reductions_out_builds_anew(monkeypatch, tmp_path):
     """The sensitivity of max_backlash re-solves on the relaxed problem's own space when the limit left reductions
     out (a relaxed limit may admit them; the space prunes on it), and on the same space when it left none out."""
-    from axisopt.search import front, solve
+    from axisopt.search import sensitivity, solve
 
     # the teaching problem with reductions admitted (the shipped file leaves them out since issue 54)
     f = tmp_path / "teaching.yaml"
@@ -87,5 +87,5 @@ def test_relaxing_a_backlash_limit_that_left_reductions_out_builds_anew(monkeypa
     space = real(p)
     assert res.best is not None and space.reductions_by_backlash > 0  # the 8-arcmin NPT rows left out at 1 um
     built.clear()
-    front.limit_sensitivities(p, res, space=space)
+    sensitivity.limit_sensitivities(p, res, space=space)
     assert pytest.approx(1.1e-6) in built  # the relaxed max_backlash built its own space

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 from dataclasses import fields
 
+from axisopt.model.goals import RESULT_GOALS
 from axisopt.model.outputs import OUTPUTS
-from axisopt.problem import RESULT_GOALS
 from axisopt.search.reported import REPORTED
 from axisopt.search.result import CANDIDATE_COLUMNS, Candidate
 from axisopt.study.table import RESULT_COLUMNS

@@ -22,7 +22,8 @@ from search_synthetic import (
 from axisopt import model
 from axisopt.cli import main
 from axisopt.errors import InputError
-from axisopt.problem import Objective, load_problem
+from axisopt.model.goals import Objective
+from axisopt.problem import load_problem
 from axisopt.search import solve
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
@@ -320,7 +321,8 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
     """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
     the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
     combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
-    from axisopt.search.infeasible.explain import RULE_WEIGHT, miss_scores, weight
+    from axisopt.search.infeasible.explain import miss_scores
+    from axisopt.search.infeasible.optimism import RULE_WEIGHT, weight
     from axisopt.search.task.constraints import as_vector
     from axisopt.search.task.space import respond
 

@@ -12,7 +12,7 @@ from search_synthetic import add_drives, assert_same_answer, make_catalog, make_
 
 from axisopt import model
 from axisopt.design.axis import TwinDrive
-from axisopt.problem import Objective
+from axisopt.model.goals import Objective
 from axisopt.search import solve
 
 

@@ -76,8 +76,8 @@ def test_what_ifs_stop_at_the_deadline_and_say_so():
 
     from axisopt.problem import load_problem
     from axisopt.search import solve
-    from axisopt.search.front import limit_sensitivities
     from axisopt.search.infeasible.advice import design_changes
+    from axisopt.search.sensitivity import limit_sensitivities
     from axisopt.search.task.constraints import build_constraints
 
     root = HERE.parents[2] / "problems"

@@ -8,7 +8,7 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 
-import axisopt.study.table as table
+import axisopt.study.plots as table
 
 
 def _study():

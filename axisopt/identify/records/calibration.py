@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from ..calibration import FORMAT, calibrate_design, write_calibration
+from ..calibration import FORMAT, calibrate_design, check_calibration_path, write_calibration
 from .regression import shape_params, term
 
 # unit kind of a time-record term -> (quantity kind, unit, factor from SI), per record quantity
@@ -66,4 +66,6 @@ def time_calibration_dict(diag, design=None, sources=()) -> dict:
 
 
 def save_time_calibration(diag, path, design=None, sources=()) -> dict:
+    """Save a time-record diagnosis as a calibration YAML (never over its data or design file)."""
+    check_calibration_path(path, design, sources)
     return write_calibration(time_calibration_dict(diag, design, sources), path)

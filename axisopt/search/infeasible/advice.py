@@ -47,7 +47,7 @@ import numpy as np
 from ...design.axis import Counterbalance, G
 from ...errors import InputError
 from ...model.limits import ACCEL, LIMITS, RATIO, SPEED, WEIGHT, check_name, checks_set_by
-from ..result import DesignChange
+from .answer import DesignChange
 from .widen import first_design, first_feasible, widened
 
 # the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio sets
@@ -303,7 +303,7 @@ def _limits_step(problem, constraints, misses, combos, budget: int) -> list:
 
 def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *, space=None,
                    deadline: float | None = None, cut: list | None = None) -> list:
-    """The changes (:class:`.result.DesignChange`, to be made together) that make ``problem`` feasible, verified
+    """The changes (:class:`.answer.DesignChange`, to be made together) that make ``problem`` feasible, verified
     by a search; empty when no kind applies, none is verified or the budget is spent.  ``space``: the problem's
     search space, if built.  ``deadline`` (a time.perf_counter() value): no verifying search runs past it (one it
     cuts finds nothing); ``cut``, a list: True is appended when it cut one."""

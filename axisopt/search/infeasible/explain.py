@@ -26,30 +26,25 @@ import time
 import numpy as np
 
 from ... import model
-from ...model.limits import CHECK_RECORDS, check_name
 from .. import bestfirst
-from ..bounds import (
-    SCREEN_RTOL,
-    block_chunk,
-    block_outputs,
-    bound_positions,
-    optimistic_guide_params,
-)
-from ..candidates import candidate_values
-from ..drivebounds import PER_DRIVE_MIN, cost_parts, drive_hull
+from ..drivebounds import PER_DRIVE_MIN, drive_hull
 from ..parts import drive_stiffnesses
-from ..result import Infeasibility
-from ..task.constraints import End, as_vector, reads_regen
-from ..task.space import COUPLING_KEYS, DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond, respond_drive
+from ..task.constraints import reads_regen
+from ..task.space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive
+from .answer import Infeasibility
+from .closest import closest_designs
+from .optimism import (
+    CHUNK,
+    RULE_WEIGHT,
+    block_optimism,
+    cheapest_cost,
+    drive_bounds_of,
+    favourable_bound,
+    is_bounded,
+    weight,
+)
 
 CLOSEST = 5
-CHUNK = 2_000_000  # response elements per block
-# A compatibility rule (the bearing bore does not fit the screw end, the screw is too short: Check.relaxable
-# False) weighs this much more than a limit in the miss score, so the closest designs are ones the user can
-# free by relaxing their own limits whenever such designs miss by less than ten limits' worth (a bearing that
-# does not fit is not a design).  1000 gave the same proposals on the shipped variants but let fewer blocks be
-# pruned: the explanation of the slowest vmc_random_1000 cases took 1.5x as long.
-RULE_WEIGHT = 10.0
 # A limit that no combination meets on its own (the block bounds show it: a budget below the cheapest parts) adds
 # its miss to every design's score, so the scores lie close together and the bounds leave many blocks open: the
 # best-first explanation then stops once the blocks it scored hold this many combinations (a count of work, not a
@@ -59,20 +54,9 @@ RULE_WEIGHT = 10.0
 MAX_OPENED = 4_000_000
 
 
-def weight(c) -> float:
-    """The weight of constraint ``c``'s relative miss in the miss score."""
-    if check_name(c.name) is not None:
-        rec = CHECK_RECORDS.get(check_name(c.name))
-        if rec is not None and not rec.relaxable:
-            return RULE_WEIGHT
-    return 1.0
-
-
-DRIVE_NUTS = 64  # nuts per evaluation of the drive limits' interval bounds (memory: nuts x bearings x guides)
 FIRST_BATCH = 4  # blocks scored in the first round of the best-first explanation; doubles each round (4: 16 %
 # faster than 32 over 16 vmc_random_1000 variants, fewer blocks scored before the bounds prune)
 BOUND_RTOL = 1e-9  # slack on the block bounds (rounding of the same sums in another order)
-FLOAT32_RTOL = 2.0 * SCREEN_RTOL  # slack on block bounds read from the search's float32 outputs (as its bound)
 
 
 class _Tally:
@@ -90,21 +74,6 @@ class _Tally:
         old = self.best[c.name]
         if old is None or (bv > old if c.sense == ">=" else bv < old):
             self.best[c.name] = bv
-
-
-def _favourable(c, out_lo, out_hi, shape, positions: bool = True):
-    """The limit's value at the preload end that favours it (for a limit met on an interval of preloads,
-    the better of the two ends), broadcast to ``shape``; only the end(s) it needs are read (``out_lo`` may
-    be None, or without the chain outputs, when no limit read there needs them).  ``positions``: the outputs
-    have a trailing position axis (not the drive layout's, whose last axis is the drives)."""
-    def val(o):
-        v = c.value(o)
-        return np.broadcast_to(_last(c, v) if positions else np.asarray(v, dtype=float), shape)
-    end = c.favourable
-    if end is End.INTERVAL:
-        v_lo, v_hi = val(out_lo), val(out_hi)
-        return np.maximum(v_lo, v_hi) if c.sense == ">=" else np.minimum(v_lo, v_hi)
-    return val(out_hi) if end is End.HIGH else val(out_lo)
 
 
 def _closest(top_idx, top_score, idx, score, n):
@@ -152,107 +121,10 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
         if not tally.met[c.name] and tally.best[c.name] is not None:
             best = tally.best[c.name]
             if cut and c.key == "cost" and space.m_arr is not None:  # the blocks left out may hold cheaper ones
-                best = min(best, _cheapest(space))
+                best = min(best, cheapest_cost(space))
             unmeetable.append((c.label, best / c.factor, c.limit / c.factor, c.unit))
-    return Infeasibility(unmeetable, _closest_designs(space, constraints, objective, [int(c) for c in top_idx]),
+    return Infeasibility(unmeetable, closest_designs(space, constraints, objective, [int(c) for c in top_idx]),
                          cut=cut)
-
-
-def _cheapest(space: Space) -> float:
-    """The least cost [EUR] of any (fitting, if any fits) combination of a space with a drive search, exact
-    (:func:`.drivebounds.cost_parts`): the budget's single-limit check when the explanation was cut."""
-    B = space.shape[2]
-    usable = space.fits if space.fits.any() else np.ones_like(space.fits)
-    best = np.inf
-    for mounting in space.mountings:
-        by_bearing, per_drive = cost_parts(space, mounting, slice(0, space.shape[1]), np.arange(B))
-        best = min(best, float(np.min(np.where(usable, by_bearing, np.inf)) + per_drive.min()))
-    return best
-
-
-def _bounded(c) -> bool:
-    """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
-    limits of :func:`axisopt.search.bounds.block_bounds`: not the drive's, except the cost)."""
-    return not c.convex and (c.key not in DRIVE_KEYS or c.key in MECHANICS_BOUNDED)
-
-
-def block_optimism(space: Space, constraints, drive: bool = True):
-    """Per mounting and (nut, bearing) block: for each limit a value no combination of the block beats at the
-    limit's favourable preload end -- the limits the optimistic guide bounds from it (profiles on
-    :func:`.bounds.bound_positions`), the drive's from :func:`drive_optimism` (unless not ``drive``) -- and a
-    lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
-    _, N, B, _ = space.shape
-    bounded = [c for c in constraints if _bounded(c)]
-    drive = [c for c in constraints if not _bounded(c)] if drive else []
-    constraints = bounded + drive
-    types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
-    # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped there
-    # unless one of those reads them (as in _score_nuts)
-    chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in bounded if c.convex or not c.lower_type)
-    # a minimum over a few positions bounds the minimum over the grid from above: optimistic for a ">=" limit,
-    # so the few suffice unless a "<=" limit reads a profile
-    few = all(c.sense == ">=" for c in bounded if c.profile)
-    out = []
-    for mounting in space.mountings:
-        x = bound_positions(space, mounting) if few else space.grid[mounting]
-        step = block_chunk(space) if few else max(1, CHUNK // max(B * len(x), 1))
-        best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints}
-        for n0 in range(0, N, step):
-            sl = slice(n0, min(N, n0 + step))
-            lo = space.preload_lo[sl].reshape(-1, 1, 1, 1)
-            hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
-            shape = (sl.stop - sl.start, B)
-            for t in types if bounded else ():
-                if few:  # the search's block bounds' float32 outputs (the lowest preload at one position: a
-                    # ">=" profile's minimum over fewer positions is no lower), relaxed below for the rounding
-                    with np.errstate(all="ignore"):
-                        out_lo, out_hi = block_outputs(space, mounting, sl, str(t))
-                else:
-                    p = optimistic_guide_params(space, mounting, sl, str(t))
-                    out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
-                    out_hi = respond(p, x, mounting, hi, drive_block=False)
-                for c in bounded:
-                    v = np.asarray(_favourable(c, out_lo, out_hi, shape + (1,))[..., 0], dtype=float)
-                    pick = np.maximum if c.sense == ">=" else np.minimum
-                    if few:
-                        v = v + (1.0 if c.sense == ">=" else -1.0) * FLOAT32_RTOL * np.abs(v)
-                    best[c.name][sl] = pick(best[c.name][sl], v)
-        if drive:
-            best.update(_drive_bounds(space, mounting, drive))
-        lb = np.where(space.fits, 0.0, RULE_WEIGHT)
-        for c in constraints:
-            lb = lb + weight(c) * c.violation(best[c.name])
-        out.append((best, lb))
-    return out
-
-
-def _drive_bounds(space: Space, mounting: str, drive) -> dict:
-    """:func:`drive_optimism` over every nut of ``mounting``, :data:`DRIVE_NUTS` nuts at a time:
-    {limit name: (nuts, bearings)}."""
-    N, B = space.shape[1], space.shape[2]
-    out = {c.name: np.empty((N, B)) for c in drive}
-    for n0 in range(0, N, DRIVE_NUTS):
-        sl = slice(n0, min(N, n0 + DRIVE_NUTS))
-        for name, v in drive_optimism(space, mounting, sl, drive).items():
-            out[name][sl] = v
-    return out
-
-
-def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict:
-    """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the drive block),
-    per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at any allowed preload:
-    the drive block in interval arithmetic over the block's guides and preloads
-    (:func:`.drivebounds.drive_hull`); the best over the drives bounds the block.  Returns {limit name: (nuts,
-    bearings)}."""
-    hull, group = drive_hull(space, mounting, nut_slice, drive)
-    out = {}
-    for c in drive:
-        if c.name not in hull:
-            raise KeyError(f"limit {c.name} reads {c.key}, which neither the optimistic guide nor the drive "
-                           "block bounds")
-        v = hull[c.name]
-        out[c.name] = (v.max(axis=-1) if c.sense == ">=" else v.min(axis=-1))[:, group]
-    return out
 
 
 def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int):
@@ -262,7 +134,7 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     # the drive limits' bounds (interval arithmetic over every block) wait until a drive limit is left unmet by
     # the first round: most explanations never need them
     opt = block_optimism(space, constraints, drive=False)
-    drive = [c for c in constraints if not _bounded(c)]
+    drive = [c for c in constraints if not is_bounded(c)]
     M, (_, N, B, _) = len(space.mountings), space.shape
     lb = np.stack([o[1] for o in opt])  # (M, N, B)
     vals = {name: np.stack([o[0][name] for o in opt]) for name in opt[0][0]}
@@ -277,7 +149,7 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     while not done.all():
         if done.any() and any(c.name not in vals and not tally.met[c.name] for c in drive):
             for mi, mounting in enumerate(space.mountings):
-                for name, v in _drive_bounds(space, mounting, drive).items():
+                for name, v in drive_bounds_of(space, mounting, drive).items():
                     vals.setdefault(name, np.empty((M, N, B)))[mi] = v
             for c in drive:
                 lb = lb + weight(c) * c.violation(vals[c.name])
@@ -386,7 +258,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     out_lo = respond(p, x, mounting, lo, drive_block=not two_stage, chain=chain_lo, regen=regen)
     out_hi = respond(p, x, mounting, hi, drive_block=not two_stage, regen=regen)
     for c in mech:
-        v = _favourable(c, out_lo, out_hi, shape)
+        v = favourable_bound(c, out_lo, out_hi, shape)
         miss = c.violation(v)
         score = score + weight(c) * miss
         tally.add(c, v, miss, fits)
@@ -401,7 +273,7 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
             by_k.append((respond(pk, x, mounting, lo, drive_block=False) if cpl_lo else None,
                          respond(pk, x, mounting, hi, drive_block=False)))
         for c in cpl:
-            v = np.stack([_favourable(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
+            v = np.stack([favourable_bound(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
             miss = c.violation(v)
             score += weight(c) * miss
             tally.add(c, v, miss, fits_d)
@@ -467,7 +339,7 @@ def _score_drives(space: Space, mounting: str, drive, tally: _Tally, nut_idx, be
         d_lo, d_hi = respond_drive(pd, lo, regen), respond_drive(pd, hi, regen)
         part = score[..., cols]
         for c in drive:
-            v = _favourable(c, d_lo, d_hi, sub, positions=False)
+            v = favourable_bound(c, d_lo, d_hi, sub, positions=False)
             miss = c.violation(v)
             part = part + weight(c) * miss
             tally.add(c, v, miss, fits[..., cols])
@@ -494,43 +366,3 @@ def _worth(drive, tally: _Tally, hull: dict, low, kth: float):
     return need
 
 
-def _last(c, v):
-    """A limit's value over the block without the trailing position axis (profiles are reduced already)."""
-    v = np.asarray(v, dtype=float)
-    return v[..., 0] if (not c.profile and v.ndim == 4) else v
-
-
-def _closest_designs(space: Space, constraints, objective, combos) -> list:
-    """The candidates of ``combos`` (ranked 1, 2, ...), each at the preload that minimises its total miss on a
-    grid of its allowed range (one model evaluation per mounting for all of them), with their misses."""
-    G = 33
-    pre = np.zeros(len(combos))
-    parts = [tuple(int(v) for v in space.unravel(int(c))) for c in combos]
-    for mi in {p[0] for p in parts}:
-        rows = [k for k, p in enumerate(parts) if p[0] == mi]
-        n = np.array([parts[k][1] for k in rows])
-        b = np.array([parts[k][2] for k in rows])
-        g = np.array([parts[k][3] for k in rows])
-        grid = np.linspace(space.preload_lo[n], space.preload_hi[n], G, axis=1)  # as np.linspace(lo, hi, G) each
-        mounting = space.mountings[mi]
-        p = space.params_flat(mounting, np.repeat(n, G), np.repeat(b, G), np.repeat(g, G))
-        out = respond(p, space.grid[mounting], mounting, grid.reshape(-1, 1))
-        tot = np.zeros(len(rows) * G)
-        for c in constraints:
-            tot += c.violation(as_vector(c.value(out), len(rows) * G))
-        best = np.argmin(tot.reshape(len(rows), G), axis=1)  # first of equal misses, as one design alone
-        pre[rows] = grid[np.arange(len(rows)), best]
-    out = []
-    for rank, (combo, (_mi, n, b, _g)) in enumerate(zip(combos, parts), start=1):
-        cand, vals = candidate_values(space, int(combo), float(pre[rank - 1]), objective, rank=rank)
-        misses = {}
-        for c in constraints:
-            v = float(np.min(vals[c.key]))
-            miss = float(c.violation(np.asarray(v)))
-            if miss > 0:
-                misses[c.label] = miss
-        if not space.fits[n, b]:
-            misses["bearing bore fits screw"] = 1.0
-        cand.misses = misses
-        out.append(cand)
-    return out

@@ -1,7 +1,7 @@
 """What to relax when no design meets every limit: the user's relaxable limits ranked by the smallest relative
 change that makes a design feasible, with that design.
 
-Read from the explanation's closest designs (:class:`.result.Infeasibility`, their relative misses at the
+Read from the explanation's closest designs (:class:`.answer.Infeasibility`, their relative misses at the
 preload that minimises the total miss): a design becomes feasible when each limit it misses is relaxed by its
 miss.  A design that breaks a compatibility rule (the bearing bore does not fit the screw end, the screw is
 shorter than the axis needs: :attr:`axisopt.model.limits.Check.relaxable` False) cannot be freed by any
@@ -31,7 +31,7 @@ from types import MappingProxyType
 import numpy as np
 
 from ...model.limits import CHECK_RECORDS, LIMITS, check_name
-from ..result import Relaxation
+from .answer import Relaxation
 
 FIT = "bearing bore fits screw"  # the explanation's miss key for a bearing that does not fit the screw end
 

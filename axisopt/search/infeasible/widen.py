@@ -50,7 +50,7 @@ from ...design import MOUNTINGS
 from ...errors import InputError
 from ...model.limits import LIMITS
 from ...physics.checks import BUCKLING_ETA1, CRITICAL_SPEED_LAMBDA1
-from ..result import DesignChange
+from .answer import DesignChange
 
 DRIVE_CHECKS = frozenset(model.DRIVE_CHECKS)  # the checks of the drive's parts (model.limits: Check.drive)
 DRIVE_SLOTS = ("motor", "coupling")  # require/exclude slots the drive group widens
@@ -126,7 +126,7 @@ def _mounting_note(old: tuple, new: str) -> str:
 
 def design_edits(problem, space, combo: int) -> list:
     """The edits of ``problem``'s mountings and catalog filters that admit combination ``combo`` of ``space`` (a
-    space of the problem with filters widened): :class:`.result.DesignChange` rows, empty when it needs none."""
+    space of the problem with filters widened): :class:`.answer.DesignChange` rows, empty when it needs none."""
     from ..candidates import part_rows
 
     r = problem.restrictions

@@ -25,10 +25,12 @@ import numpy as np
 from ... import model
 from ...units import N_PER_UM
 from ..candidates import make_candidate
-from ..result import Certificate, SolveResult
+from ..certificate import Certificate
+from ..result import FEASIBLE, SOLVER_FAILED, SolveResult
 from ..task.objective import STIFFNESS_OUTPUTS
 from .formulation import SLOTS, integral, one_hot_params, one_hot_symbols, recover
 from .scaling import scaled_limit
+from .statuses import BONMIN_INFEASIBLE, BONMIN_SUCCESS
 from .streams import quiet_stdout
 
 FLOOR = 1e-6  # of each column's mean added to the one-hot mixtures (no stiffness or diameter exactly 0)
@@ -212,16 +214,16 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
         cand = make_candidate(space, combo, pre, objective, rank=1)
         if best is None or cand.objective > best.objective:
             best = cand
-    all_success = all(s.split(": ", 1)[-1] == "SUCCESS" for s in statuses) and bool(statuses)
+    all_success = all(s.split(": ", 1)[-1] == BONMIN_SUCCESS for s in statuses) and bool(statuses)
     if best is None:
         # Bonmin's INFEASIBLE on a nonconvex problem is not a proof (it says so on feasible problems too)
-        status = "solver_failed"
-        if statuses and all(s.endswith("INFEASIBLE") for s in statuses):
+        status = SOLVER_FAILED
+        if statuses and all(s.endswith(BONMIN_INFEASIBLE) for s in statuses):
             notes.append("Bonmin reports INFEASIBLE; not a proof on this nonconvex problem "
                          "(the default method proves feasibility or infeasibility)")
     else:
-        status = "feasible"  # Bonmin's B-BB on a nonconvex problem proves nothing
-    failed = sum(1 for s in statuses if not s.endswith(("SUCCESS", "(time limit)")))
+        status = FEASIBLE  # Bonmin's B-BB on a nonconvex problem proves nothing
+    failed = sum(1 for s in statuses if not s.endswith((BONMIN_SUCCESS, "(time limit)")))
     cert = Certificate(combinations=space.size, feasible=None, pruned_by_bound=0, exact_evaluations=0,
                        nlps_solved=n_solves, nlp_failures=failed,
                        gap=float("nan"), proven=False,

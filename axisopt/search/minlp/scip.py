@@ -30,11 +30,13 @@ from ...model.limits import margin_output
 from ...units import N_PER_UM
 from ..bestfirst import bound_order_search
 from ..candidates import make_candidate
-from ..result import Certificate, SolveResult
+from ..certificate import Certificate
+from ..result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, STATUSES, TIME_LIMIT, SolveResult
 from ..task.objective import STIFFNESS_OUTPUTS
 from ..task.space import respond
 from .formulation import SLOTS, recover
 from .scaling import reciprocal_times, scaled_limit
+from .statuses import PROVED, UNEXPECTED, scip_outcome
 from .streams import c_stderr_to_file
 from .translate import Graph, Translator, casadi_model
 
@@ -317,10 +319,10 @@ def solve_scip(problem, space, constraints, objective, *, time_limit: float = 10
         st = m.getStatus()
         nodes += int(m.getNNodes())
         statuses.append(f"{mounting}: {st}")
-        if st in ("timelimit", "userinterrupt", "memlimit", "nodelimit", "stallnodelimit"):
+        outcome = scip_outcome(st)
+        if outcome != PROVED:
             stopped = True
-        elif st not in ("optimal", "gaplimit", "infeasible"):
-            stopped = True
+        if outcome == UNEXPECTED:
             notes.append(f"{mounting}: SCIP status {st}")
         if m.getNSols() == 0:
             continue
@@ -336,30 +338,30 @@ def solve_scip(problem, space, constraints, objective, *, time_limit: float = 10
             best = cand
     failed = any("ERROR" in s for s in statuses)
     if failed:
-        status = "solver_failed"
+        status = SOLVER_FAILED
     elif stopped:
-        status = "time_limit"
+        status = TIME_LIMIT
     elif best is None:
-        status = "infeasible"
+        status = INFEASIBLE
     else:
-        status = "optimal"
-    if status in ("optimal", "infeasible"):
+        status = OPTIMAL
+    if STATUSES[status].proven:
         wrong = _contradiction(space, constraints, objective, best)
         if wrong:
-            status = "solver_failed"
+            status = SOLVER_FAILED
             notes.append(wrong)
             statuses.append("proof contradicted by a feasible design")
         else:
             notes.append("proof cross-checked against the default method's best design: consistent")
-    gap = max(gaps) if gaps else (0.0 if status in ("optimal", "infeasible") else float("nan"))
+    gap = max(gaps) if gaps else (0.0 if STATUSES[status].proven else float("nan"))
     cert = Certificate(combinations=space.size, feasible=None, pruned_by_bound=0, exact_evaluations=0,
                        nlps_solved=solves, nlp_failures=int(failed), gap=gap,
-                       proven=status in ("optimal", "infeasible"),
+                       proven=STATUSES[status].proven,
                        notes=tuple([f"SCIP spatial branch-and-bound (global up to its tolerances: feasibility "
                                     f"1e-6, gap {GAP:g}); {nodes} nodes"] + notes))
     msg = "; ".join(statuses + notes)
     return SolveResult(status, "scip", problem.name, objective.label, objective.unit, best, [], cert,
-                       time.perf_counter() - t0, message=msg if status != "optimal" else "",
+                       time.perf_counter() - t0, message=msg if status != OPTIMAL else "",
                        solver_status="; ".join(statuses))
 
 

@@ -1,7 +1,7 @@
 """The scalar objective of a search and its tie rule.
 
 :class:`ObjectiveSpec` (a weighted sum of performance minima, maximised, in display units) is derived from
-:data:`axisopt.problem.OBJECTIVE_TABLE` by :func:`objective_spec`; :func:`rank_order` and
+:data:`axisopt.model.goals.OBJECTIVE_TABLE` by :func:`objective_spec`; :func:`rank_order` and
 :func:`objective_floor` are the tie rule every method shares: objective values within :data:`TIE_RTOL` count as
 equal and go to the lower cost, then the lower total mass, then the lower combination number.
 """
@@ -14,7 +14,8 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ...problem import GOALS, OBJECTIVE_TABLE, Problem
+from ...model.goals import GOALS, OBJECTIVE_TABLE
+from ...problem import Problem
 from ...units import N_PER_UM
 
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass

@@ -13,8 +13,9 @@ import pytest
 from axisopt.cli import main
 from axisopt.problem import load_problem
 from axisopt.search import solve
+from axisopt.search.infeasible.answer import Infeasibility
 from axisopt.search.infeasible.relax import rank_relaxations
-from axisopt.search.result import Candidate, Infeasibility
+from axisopt.search.result import Candidate
 from axisopt.search.task.constraints import build_constraints
 
 PROBLEMS = Path(__file__).resolve().parents[3] / "problems"

@@ -9,7 +9,7 @@ import pytest
 from scip_agree import agrees_with_exhaustive
 from search_synthetic import add_drives, add_reductions, make_catalog, make_double, make_problem
 
-from axisopt.problem import Objective
+from axisopt.model.goals import Objective
 from axisopt.search import solve
 
 pytest.importorskip("pyscipopt")

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from axisopt.problem import GOALS, OBJECTIVE_MODES, OBJECTIVE_TABLE, PARETO_KEYS, Objective
+from axisopt.model.goals import GOALS, OBJECTIVE_MODES, OBJECTIVE_TABLE, PARETO_KEYS, Objective
 from axisopt.search.pareto import FIELD, SENSE, UNIT
 from axisopt.search.task.objective import objective_spec, rank_order
 

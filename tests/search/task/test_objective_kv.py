@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 from search_synthetic import add_drives, assert_same_answer, make_catalog, make_double, make_problem
 
+from axisopt.model.goals import Objective
 from axisopt.model.limits import LIMITS, preload_direction
-from axisopt.problem import Objective
 from axisopt.search import solve
 
 

@@ -11,7 +11,7 @@ from search_synthetic import add_drives, make_catalog, make_double, make_problem
 
 from axisopt.cli import main
 from axisopt.errors import InputError
-from axisopt.problem import Objective
+from axisopt.model.goals import Objective
 from axisopt.search import solve
 
 ROOT = Path(__file__).resolve().parents[3]

@@ -1,0 +1,98 @@
+"""What a solved optimum is told with: each limit's sensitivity (the optimum re-solved with the limit relaxed by
+10 %, the note when the time limit cut them) and the estimated part values the optimum rests on."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from ..model.limits import LIMITS
+from ..problem import Problem
+from .certificate import Binding
+from .result import SolveResult
+
+RELAX = 0.10  # sensitivities: relax each limit by 10 %
+
+
+
+def cut_note(what: str, cut: list) -> str:
+    """What the time limit cut after the search: the sensitivities (``cut``: the limits not re-solved) or the
+    advice (its verifying searches)."""
+    if what == "sensitivities":
+        return (f"the time limit cut the limit sensitivities: {', '.join(cut)} not re-solved (a longer "
+                "--time-limit, or --no-sensitivity)")
+    return ("the time limit cut the design-change advice: the changes it could not verify in time are not "
+            "proposed (a longer --time-limit searches further)")
+
+
+def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None, deadline: float | None = None,
+                        cut: list | None = None) -> list:
+    """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
+    (re-solved with the default method; a discrete problem has no meaningful multipliers).
+
+    ``deadline`` (a time.perf_counter() value): a limit whose re-solve it cuts, or that comes after it, is left
+    out and its key appended to ``cut`` (a list).
+
+    ``space``: the problem's search space, if built (the part tables do not depend on the limits, so a re-solve
+    reuses it and its cached parameter arrays, unless the relaxed limit is also an axis value the parts' checks
+    read, as ``min_life`` is when the axis sets no ``required_life``)."""
+    from .bestfirst import bound_order_search
+    from .parts import build_space
+    from .polish import polish
+    from .task.constraints import build_constraints
+    from .task.objective import objective_spec
+
+    best = res.best
+    space = build_space(problem) if space is None else space
+    spec = objective_spec(problem.objective.mode, problem)
+    out = []
+    for key, value in problem.limits:
+        lim = LIMITS[key]
+        at = best.outputs.get(lim.output)
+        if value == 0.0 or at is None or not np.isfinite(at):
+            continue  # e.g. max_backlash 0: relaxing it by 10 % changes nothing; an output the design lacks
+        unit, factor = lim.unit, lim.factor
+        if deadline is not None and time.perf_counter() >= deadline:
+            if cut is not None:
+                cut.append(key)
+            continue
+        relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
+        # the optimum meets the relaxed limit too: only designs that can reach it are searched (none: no gain)
+        relaxed_problem = problem.with_limit(key, relaxed)
+        loose = build_constraints(relaxed_problem)
+        # a limit that is also an axis value (min_life: the life the checks need) changes the part parameters, and
+        # a max_backlash that left reductions out (parts._add_drives) may admit them relaxed: either builds the
+        # relaxed problem's own space
+        rebuild = relaxed_problem.axis != problem.axis or (key == "max_backlash" and space.reductions_by_backlash)
+        sp = build_space(relaxed_problem) if rebuild else space
+        ex, stats = bound_order_search(sp, loose, spec, top=1, incumbent=best.objective, deadline=deadline)
+        if stats.timed_out:  # an unproven gain is not reported
+            if cut is not None:
+                cut.append(key)
+            continue
+        if np.isfinite(ex.objective).any():
+            gain = polish(sp, ex, loose, spec, 1)[0][0].objective - best.objective
+        else:
+            gain = 0.0
+        tol = 1e-6 * max(abs(best.objective), 1e-9)
+        out.append(Binding(key, unit, value / factor, at / factor, relaxed / factor, gain,
+                           bool(gain > tol)))
+    return out
+
+
+def estimated_at_optimum(problem: Problem, res: SolveResult, objective_outputs) -> tuple:
+    """What of the optimum rests on estimated part values (``Certificate.estimated``): the objective, the
+    limits at their bound or binding by the sensitivities, the checks at their limit."""
+    from ..model.estimates import Resting, binding_estimates, resting_on
+
+    binding = {b.limit for b in res.binding if b.binding}
+    limits = [(k, v) for k, v in problem.limits]
+    found = binding_estimates(res.best.design, limits, objective_outputs)
+    seen = {r.what for r in found}
+    extra = [(k, v) for k, v in limits if k in binding and k not in seen]
+    if extra:  # binding by relaxation though not at its bound (a discrete step): its output's estimates
+        outs = {k: LIMITS[k].output for k, _ in extra}
+        moved = resting_on(res.best.design, list(outs.values()))
+        found += [Resting(k, o, tuple(moved[o])) for k, o in outs.items() if moved.get(o)]
+    return tuple(r.to_dict() for r in found)
