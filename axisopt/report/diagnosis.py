@@ -21,7 +21,7 @@ from .diagexplain import (
     unidentifiable,
     why_none,
 )
-from .text import fit_lines
+from .text import fit_lines, wrap_words
 
 
 def _rmse_units(diag, pred):
@@ -75,6 +75,9 @@ def diagnosis_dict(diag) -> dict:
             for rnd in diag.rounds
         ],
         "verdict": diag.verdict,
+        "equivalent": [{"round": k, "named": a, "alternative": b, "percent_apart": apart,
+                        "text": equivalent_text(a, b, apart, eff, diag)} for k, a, b, apart, eff in diag.equivalent],
+        "regime": list(diag.regime),
         "accepted": [],
         "holdout_rmse_baseline": diag.cv_baseline,
         "holdout_rmse_final": diag.cv_final,
@@ -237,6 +240,17 @@ def _torque_of(diag):
     return None
 
 
+def equivalent_text(a: str, b: str, apart: float, effects, diag) -> str:
+    """Two explanations of a table (effects or pairs) the held-out data do not tell apart, and what would."""
+    from ..identify.selection import TABLE_RULE
+
+    ev = "; ".join(f"for {e.name}, {getattr(e.time, 'evidence', '') or 'a test that shows it alone'}"
+                   for e in dict.fromkeys(effects))
+    return (f"{a} and {b} explain the data equally well: held-out RMSE {apart:.2f} % apart, within the rule's "
+            f"{TABLE_RULE.resolution:g} % resolution; {a} is named for its lower dBIC, not because the data tell "
+            f"them apart. To separate them: {ev}.")
+
+
 def diagnosis_text(diag) -> str:
     d = diagnosis_dict(diag)
     torque = _torque_of(diag)
@@ -314,6 +328,10 @@ def diagnosis_text(diag) -> str:
             L.append(f"  check: {f}")
     for e in d["other_explanations"]:
         L.append(f"  also consider: {e}")
+    for f in d["regime"]:
+        L.append(f"  ! {f}")
+    for e in d["equivalent"]:
+        L += wrap_words("~ " + e["text"], indent="  ", cont="      ")
     if d["frf_modes"]:
         L.append(f"resonance by position (peak of |G|){'measured':>15}{'|G| um/N':>10}{'baseline':>11}{'model':>10}"
                  f"{'damping':>9}")
