@@ -76,7 +76,8 @@ def diagnosis_dict(diag) -> dict:
         ],
         "verdict": diag.verdict,
         "equivalent": [{"round": k, "named": a, "alternative": b, "percent_apart": apart,
-                        "text": equivalent_text(a, b, apart, eff, diag)} for k, a, b, apart, eff in diag.equivalent],
+                        "text": equivalent_text(a, b, apart, eff, floor)}
+                       for k, a, b, apart, eff, floor in diag.equivalent],
         "regime": list(diag.regime),
         "accepted": [],
         "holdout_rmse_baseline": diag.cv_baseline,
@@ -240,15 +241,17 @@ def _torque_of(diag):
     return None
 
 
-def equivalent_text(a: str, b: str, apart: float, effects, diag) -> str:
-    """Two explanations of a table (effects or pairs) the held-out data do not tell apart, and what would."""
+def equivalent_text(a: str, b: str, apart: float, effects, floor) -> str:
+    """Two explanations of a table (effects or pairs) the held-out data do not tell apart, and what would;
+    ``floor``: their held-out RMSE in noise floors when both are at it (else None: within the resolution)."""
     from ..identify.selection import TABLE_RULE
 
-    ev = "; ".join(f"for {e.name}, {getattr(e.time, 'evidence', '') or 'a test that shows it alone'}"
+    ev = "; ".join(f"for {e.name}, {getattr(e.time, 'evidence', '') or e.evidence or 'a test that shows it alone'}"
                    for e in dict.fromkeys(effects))
-    return (f"{a} and {b} explain the data equally well: held-out RMSE {apart:.2f} % apart, within the rule's "
-            f"{TABLE_RULE.resolution:g} % resolution; {a} is named for its lower dBIC, not because the data tell "
-            f"them apart. To separate them: {ev}.")
+    why = (f"within the rule's {TABLE_RULE.resolution:g} % resolution" if floor is None else
+           f"both at the noise floor ({floor[0]:.2f}x and {floor[1]:.2f}x)")
+    return (f"{a} and {b} explain the data equally well: held-out RMSE {apart:.2f} % apart, {why}; {a} is named "
+            f"for its lower dBIC, not because the data tell them apart. To separate them: {ev}.")
 
 
 def diagnosis_text(diag) -> str:

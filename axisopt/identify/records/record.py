@@ -83,6 +83,19 @@ class TimeRecord:
     motor_q: np.ndarray | None = None  # motor encoder position in the record's coordinate (as ``q``)
     aux: dict = field(default_factory=dict)  # normal_load [N] on the guides, temperature [K]: conditions
     segments: tuple = ()  # (start, end) of each window a long record is read in (:func:`windowed`); () whole
+    whole: tuple = ()  # a windowed record's (samples, seconds) as read
+
+    def run_note(self) -> str:
+        """The run's payload and windows, for the report's line of the run ('' when neither)."""
+        out = []
+        if "payload" in self.aux:
+            out.append(f"payload {self.aux['payload'][0]:g} kg" + (" (a known mass)" if self.quantity == "force"
+                                                                    else " as motor inertia [kg.m^2]"))
+        if self.segments:
+            size = self.segments[0][1] - self.segments[0][0]
+            out.append(f"{len(self.segments)} windows of {size / self.fs:.3g} s fitted, spread over its "
+                       f"{self.whole[0]:,} samples ({self.whole[1]:.4g} s)")
+        return "; ".join(out)
 
     @property
     def n(self) -> int:
@@ -458,9 +471,7 @@ def windowed(rec: TimeRecord, long_samples: int = LONG_SAMPLES, count: int = WIN
     def cut(x):
         return None if x is None else x[idx]
 
-    note = (f"{count} windows of {size / rec.fs:.3g} s fitted, spread over its {n:,} samples "
-            f"({float(np.ptp(rec.t)):.4g} s)")
-    note = f"{rec.gain_note}; {note}" if rec.gain_note else note
     return TimeRecord(rec.source, rec.t[idx], rec.q[idx], rec.effort[idx], rec.quantity, cut(rec.reference),
-                      rec.header, rec.effort_column, rec.lines[idx], note, cut(rec.external),
-                      cut(rec.motor_q), {k: v[idx] for k, v in rec.aux.items()}, tuple(segs))
+                      rec.header, rec.effort_column, rec.lines[idx], rec.gain_note, cut(rec.external),
+                      cut(rec.motor_q), {k: v[idx] for k, v in rec.aux.items()}, tuple(segs),
+                      (n, float(np.ptp(rec.t))))

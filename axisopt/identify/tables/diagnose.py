@@ -333,10 +333,14 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
             a_, b_, p_fit, p_cv, p_ho = pair["a"], pair["b"], pair["fit"], pair["cv"], pair["holdout"]
             for e in pairs:  # another pair that passes and predicts as well: the data do not tell them apart
                 d = RULE.equivalent(p_cv, e["cv"]) if e.get("passed") and e["round"] == len(rounds) else None
+                if d is None and e.get("passed") and e["round"] == len(rounds) and max(p_cv, e["cv"]) <= AT_FLOOR:
+                    d, floor = 100.0 * abs(e["cv"] - p_cv) / p_cv, (p_cv, e["cv"])
+                else:
+                    floor = None
                 if d is not None:
                     equivalent.append((len(rounds), f"{a_.effect.name} + {b_.effect.name}",
                                        f"{e['a'].effect.name} + {e['b'].effect.name}", d,
-                                       (a_.effect, b_.effect, e["a"].effect, e["b"].effect)))
+                                       (a_.effect, b_.effect, e["a"].effect, e["b"].effect), floor))
             effects += [a_.effect, b_.effect]
             plaus = plausibility(p_fit, effects)
             for c, other in ((a_, b_), (b_, a_)):
@@ -352,9 +356,14 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
             if c.cv_gain is None:
                 c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
                 c.cv_gain = RULE.gain(cur_cv, c.cv_rmse)
-            d = RULE.equivalent(top.cv_rmse, c.cv_rmse) if c.cv_gain >= RULE.min_gain else None
-            if d is not None:
-                equivalent.append((len(rounds), top.effect.name, c.effect.name, d, (top.effect, c.effect)))
+            if c.cv_gain < RULE.min_gain:
+                continue
+            d = RULE.equivalent(top.cv_rmse, c.cv_rmse)
+            floor = max(top.cv_rmse, c.cv_rmse) <= AT_FLOOR  # both leave only noise in the held-out readings
+            if d is not None or floor:
+                apart = 100.0 * abs(c.cv_rmse - top.cv_rmse) / top.cv_rmse
+                equivalent.append((len(rounds), top.effect.name, c.effect.name, apart, (top.effect, c.effect),
+                                   (top.cv_rmse, c.cv_rmse) if d is None else None))
         runner = next((c for c in scored if c is not top), None)
         if runner is not None and runner.cv_gain is None and runner.dbic < RULE.accept_dbic:
             runner.cv_rmse, runner.holdout = cv_rmse(runner.problem, runner.fit.theta, folds)
@@ -389,6 +398,11 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
         equivalent,
         regime_flags(obs, effects),
     )
+
+
+# held-out RMSE (weighted: in noise floors) at or below which an explanation leaves only noise; two that both
+# do are not told apart by the held-out readings, however far apart their RMSE (a few readings' scatter)
+AT_FLOOR = 1.1
 
 
 def top_speed(obs) -> float:
