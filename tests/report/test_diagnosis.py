@@ -20,7 +20,7 @@ def _single_mode(f, fn=120.0, zeta=0.05):
 
 def test_residual_plot_draws_direction_as_categories(tmp_path, monkeypatch):
     # direction is +-1: a category per tick, not a continuous axis from -1 to 1
-    import axisopt.report.diagnosis as rep
+    import axisopt.report.diagfiles as rep
 
     figs = []
     monkeypatch.setattr(rep, "save_figure", lambda fig, path, dpi=90: figs.append(fig))
