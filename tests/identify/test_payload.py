@@ -81,3 +81,26 @@ def test_a_reduction_of_zero_is_a_one_line_error(tmp_path, capsys):
     assert main(["diagnose", str(DESIGN.parent / "table_x_run_est.csv"), "--design", str(bad)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "axis.reduction_ratio" in err[0] and "got 0" in err[0]
+
+
+def test_a_long_record_is_read_in_windows_that_start_at_rest(tmp_path, plant):
+    """The windows of a long record (thresholds lowered here): each starts where the axis rests, the times
+    stay the record's, and the filters see each window on its own."""
+    from axisopt.identify.records.record import windowed
+    from axisopt.identify.records.regression import make_rows, processing_for
+
+    rec = read_time_record(
+        _run(tmp_path / "e.csv", 0.0, 15, 0.0, fs=500.0, duration=24.0), lead=plant.lead
+    )
+    w = windowed(rec, long_samples=6000, count=3, size=2500)
+    assert [b - a for a, b in w.segments] == [2500] * 3 and w.n == 7500
+    starts = [a for a, _ in w.segments]
+    assert np.all(
+        np.diff(w.t)[np.array(starts[1:]) - 1] > 1.0
+    )  # gaps in time between windows: times kept
+    for a in starts:  # at rest: still over the first 50 ms
+        assert abs(w.q[a + 25] - w.q[a]) <= 1e-4 * float(np.ptp(rec.q))
+    rows = make_rows(w, processing_for(w, plant.stroke, plant.lead))
+    assert all(any(a < k < b for a, b in w.segments) for k in rows.keep)
+    assert "3 windows of 5 s fitted" in w.run_note()
+    assert windowed(rec) is rec  # a record under the threshold is itself
