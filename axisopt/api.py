@@ -55,7 +55,9 @@ def solve(problem: Problem | str | PathLike, method: str = "default", *, top: in
     ``sensitivities`` re-solves with each limit relaxed by 10 % (``res.binding``).
     ``res.best.design`` is the best :class:`Design` (``evaluate`` it for the full evaluation).
     A problem with ``search.drive_types`` returns the drive types' answer
-    (:class:`axisopt.search.drivetype.DriveTypeResult`, method 'default' or 'exhaustive').
+    (:class:`axisopt.search.drivetype.DriveTypeResult`, method 'default' or 'exhaustive'); so does one
+    without, when a rack-and-pinion or linear-motor design the catalogs offer by default beats the screw
+    drive (:mod:`axisopt.search.drivedefault`).
     """
     from .search import solve as _solve
 
@@ -64,7 +66,14 @@ def solve(problem: Problem | str | PathLike, method: str = "default", *, top: in
         from .search.drivetype import solve_drive_types
 
         return solve_drive_types(p, method, top=top, time_limit=time_limit)
-    return _solve(p, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
+    res = _solve(p, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
+    if res.pareto is None:  # the drive types the catalogs offer by default (search.drivedefault)
+        from .search.drivedefault import offer
+
+        other = offer(p, res, method, top=top).result
+        if other is not None:
+            return other
+    return res
 
 
 def compare(*files, method: str = "default", time_limit: float = 100.0):

@@ -206,7 +206,14 @@ _CACHE: dict = {}
 
 
 def default_drive_tables(extra_dirs=()) -> DriveTables:
-    key = tuple(str(Path(d).resolve()) for d in extra_dirs)
+    """Cached :func:`load_drive_tables`, keyed by the directories and the contents of the files read (an
+    edited file is read again)."""
+    from .catalog.loading import files_state
+
+    dirs = [Path(d).resolve() for d in extra_dirs]
+    key = (tuple(map(str, dirs)), files_state([SHIPPED_DIR, *dirs], ("racks", "linear_motors")))
     if key not in _CACHE:
+        if len(_CACHE) > 16:
+            _CACHE.clear()
         _CACHE[key] = load_drive_tables(extra_dirs)
     return _CACHE[key]

@@ -22,7 +22,7 @@ from .yamlio import MAX_TEXT, Key, Spec
 
 SCHEMA_DIALECT = "https://json-schema.org/draft/2020-12/schema"
 SCHEMA_BASE = "urn:axisopt:schema:"  # $id of a kind's schema: urn:axisopt:schema:<kind> (no web address to fetch)
-KINDS_OF_FILE = ("design", "problem", "study", "calibration", "machine")
+KINDS_OF_FILE = ("design", "problem", "study", "calibration", "machine", "machine-study")
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"  # units._QTY's number
 _ANY_UNIT = r"[A-Za-z0-9_/*.^()%·µμ-]*"  # units._ALLOWED's characters
@@ -53,6 +53,10 @@ def spec_of(kind: str) -> Spec:
         from .machine.spec import MACHINE_FILE_SPEC
 
         return MACHINE_FILE_SPEC
+    if kind == "machine-study":
+        from .study.machine import MACHINE_STUDY_SPEC
+
+        return MACHINE_STUDY_SPEC
     raise ValueError(f"unknown file kind '{kind}' (one of {', '.join(KINDS_OF_FILE)})")
 
 

@@ -26,10 +26,20 @@ spans themselves are our estimate):
 * precision stages: positioning errors 5-40 um (THK A-678 accuracy grades C1-C7 over 300-1 000 mm);
 * thermal growth limits 10-60 um (THK A-715: 12 um/m/degC, a 2-5 degC rise).
 
+* heavier tables accelerate less: the acceleration's upper end falls with sqrt(lightest / this mass) of the kind
+  (our estimate of the spread between light tables near 1 g and heavy ones at 0.1-0.3 g);
+* motor series: a buyer lists series that reach a rated power of a third of the axis's peak mechanical power
+  (m a + F) v (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi catalogs);
+* vendor lists cover every part kind bought (a bearing maker's angular-contact sets beside HIWIN's screws and
+  guides), single nuts come with the axial play their catalogs list (up to 0.05 mm), and one case in five is a
+  shortlist (one supplier and one series per part kind, one grade, no reduction: a machine builder's framework
+  contracts), which keeps it at 10^6 combinations or fewer: the benchmark's default == exhaustive sample.
+
 Boundary values the reference allows are drawn on purpose (``end_margin: 0 mm``, ``guide_blocks`` equal to
 ``rails``, ``axial_load: 0 N``, ``acceleration: 0 m/s^2`` without a drive, one mounting only), and about one case in
-twelve carries a unit slip (m/s for m/min, t for kg, kN for N, m for mm).  Tight limits make about a third of the
-cases infeasible (the benchmark prints the share).
+twelve carries a unit slip (m/s for m/min, t for kg, kN for N, m for mm).  About a third of the cases draw their
+limits from the stringent end (tight); the benchmark prints the share of infeasible answers, which is higher: the
+vendor checks (support-bearing life, lift-off, motor RMS torque) fail on many of the heavier draws as well.
 """
 
 from __future__ import annotations
@@ -45,8 +55,15 @@ KINDS = ("vmc_x", "vmc_y", "vmc_z", "lathe_x", "lathe_z", "gantry_twin", "vertic
 # HIWIN lists every mechanical slot; the others add screws and nuts (THK, Bosch Rexroth), bearings (NSK,
 # Schaeffler, THK) or guides (IKO, NBS): a vendors filter without HIWIN mostly leaves a slot empty (an input error)
 MECH_VENDORS = ("THK", "NSK", "Bosch Rexroth", "Schaeffler", "IKO", "NBS")
+# the largest rated power [W] of each motor series in catalogs/motors.csv: a buyer lists series that reach the
+# axis's power (below)
+SERIES_POWER = {"Sigma-7 SGM7G": 1800, "Sigma-7 SGM7A": 7000, "Sigma-7 SGM7J": 750, "MELDAS HC (2000 r/min)": 7000,
+                "MELDAS HC-R (3000 r/min)": 5000, "MELSERVO-JE HG-KN": 750, "SIMOTICS S-1FT7 (6000 r/min)": 1257}
 MOTOR_SERIES = ("Sigma-7 SGM7G", "Sigma-7 SGM7A", "Sigma-7 SGM7J", "MELDAS HC (2000 r/min)",
                 "MELDAS HC-R (3000 r/min)", "MELSERVO-JE HG-KN", "SIMOTICS S-1FT7 (6000 r/min)")
+BEARING_VENDORS = ("NSK", "Schaeffler")
+COUPLING_SERIES = ("SERVOFLEX SFS-S (single steel disc element; pilot-bore/key hubs)",
+                   "GWB AKN metal bellows (clamping hubs; short; higher torsional stiffness)")
 COUPLINGS_SMALL = ("SFS-05S", "RINGFEDER-GWB-AKN-18", "RINGFEDER-GWB-AKN-30")
 COUPLINGS = ("SFS-06S", "SFS-08S", "RINGFEDER-GWB-AKN-60", "RINGFEDER-GWB-AKN-150", "RINGFEDER-GWB-AKN-300")
 
@@ -101,7 +118,10 @@ def _axis(rnd, kind, s, lines, span=0.0):
     stroke = _r(rnd, *s["stroke"], 50)
     mass = _r(rnd, *s["mass"], 10)
     speed = _r(rnd, *s["speed"], 1)
-    acc = _r(rnd, *s["acc"], 0.5)
+    # heavier tables accelerate less (the upper end of the kind's range scaled by sqrt(lightest / this mass):
+    # our estimate of the published spread, light tables at 1 g, heavy ones at 0.1-0.3 g)
+    lo_a, hi_a = s["acc"]
+    acc = _r(rnd, lo_a, max(lo_a, hi_a * (s["mass"][0] / mass) ** 0.5), 0.5)
     force = _r(rnd, *s["force"], 100)
     table = _r(rnd, *s["table"], 50)
     mounting = rnd.choice(("fixed-supported", "fixed-fixed")) if stroke > 300 else rnd.choice(
@@ -190,28 +210,57 @@ def make(seed: int, index: int) -> Case:
         t = rnd.uniform(2, 6) if tight else rnd.uniform(20, 80)
         lim.append(f"  max_thermal_growth: {_fmt(round(t))} um")
     if rnd.random() < 0.2:
-        lim.append(f"  max_total_mass: {_fmt(round(a['mass'] * (0.05 if tight else 1.0) + 50, -1))} kg")
+        # the total mass includes the moving mass (a limit below it is refused): tight leaves 10 kg for the parts
+        lim.append(f"  max_total_mass: {_fmt(round(a['mass'] + (10 if tight else a['mass'] + 50), -1))} kg")
     if rnd.random() < 0.2:
         lim.append(f"  max_drag_torque: {_fmt(round(rnd.uniform(0.3, 1.0) if tight else rnd.uniform(2, 6), 1))} N.m")
     if rnd.random() < 0.2:
         lim.append(f"  max_backlash: {_fmt(rnd.choice((0, 1, 5, 20)))} um")
-    lines += ["limits:"] + lim
-    # catalog filters
+    # catalog filters: an approved-vendor list covers every part kind the buyer orders (HIWIN's screws, nuts
+    # and guides; a bearing maker's angular-contact sets: HIWIN's own support units are its light-duty WBK
+    # sizes), single nuts come with the axial play their catalogs list (HIWIN up to 0.05 mm, THK 0.01 mm:
+    # catalogs/nuts.csv), and one case in five is a shortlist: one supplier per part kind, one series each, as
+    # a machine builder with framework contracts writes it (at most 10^6 combinations: the benchmark compares
+    # these with exhaustive enumeration)
     cat = []
-    if rnd.random() < 0.6:
-        cat.append(f"  vendors: [{', '.join(['HIWIN'] + rnd.sample(MECH_VENDORS, rnd.randint(0, 3)))}]")
-    if rnd.random() < 0.5:
+    # the motor series a buyer lists reach the axis's peak mechanical power (m a + F) v with a rated power of a
+    # third of it (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi HG/HC catalogs)
+    need = (a["mass"] * a["acc"] + a["force"]) * a["speed"] / 60.0 / 3.0
+    series = [m for m in MOTOR_SERIES if SERIES_POWER[m] >= need] or ["Sigma-7 SGM7A", "MELDAS HC (2000 r/min)"]
+    shortlist = rnd.random() < 0.2
+    if shortlist:
+        maker = rnd.choice(BEARING_VENDORS)
+        sets = ("DF", "DFD", "DFF") if maker == "NSK" else ("DB",)  # what each lists from its catalog
+        cat += [f"  vendors: [HIWIN, {maker}]", "  nut_types: [double]",
+                f"  bearing_arrangements: [{rnd.choice(sets)}]",
+                f"  screw_grades: [{rnd.choice(('C3', 'C5'))}]",
+                f"  guide_types: [{rnd.choice(('ball', 'roller'))}]",
+                f"  guide_preload: [{rnd.choice(('medium', 'heavy'))}]",
+                f"  motor_series: [{rnd.choice(series)}]",
+                f"  coupling_series: [{rnd.choice(COUPLING_SERIES)}]", "  reductions: no"]
+    elif rnd.random() < 0.6:
+        others = rnd.sample(MECH_VENDORS, rnd.randint(0, 3))
+        if not set(others) & set(BEARING_VENDORS):
+            others.append(rnd.choice(BEARING_VENDORS))
+        cat.append(f"  vendors: [{', '.join(['HIWIN'] + others)}]")
+    if not shortlist and rnd.random() < 0.5:
         cat.append("  mountings: [fixed-supported, fixed-fixed]")
-    if rnd.random() < 0.4:
-        cat.append(f"  nut_types: [{rnd.choice(('double', 'single'))}]")
-    if rnd.random() < 0.5:
-        cat.append(f"  motor_series: [{', '.join(rnd.sample(MOTOR_SERIES, rnd.randint(1, 3)))}]")
+    if not shortlist and rnd.random() < 0.4:
+        nut = rnd.choice(("double", "single"))
+        cat.append(f"  nut_types: [{nut}]")
+        if nut == "single":
+            lim = [ln for ln in lim if not ln.startswith("  max_backlash:")] + ["  max_backlash: 50 um"]
+    lines += ["limits:"] + lim
+    if shortlist:
+        pass
+    elif rnd.random() < 0.5:
+        cat.append(f"  motor_series: [{', '.join(rnd.sample(series, rnd.randint(1, min(3, len(series)))))}]")
     elif rnd.random() < 0.03:  # the shipped motors list no flange: this filter leaves none (a clean input error)
         cat.append("  max_motor_flange: 130 mm")
-    if rnd.random() < 0.3:
+    if not shortlist and rnd.random() < 0.3:
         pool = COUPLINGS_SMALL if rnd.random() < 0.3 else COUPLINGS
         cat.append(f"  require: {{coupling: [{', '.join(rnd.sample(pool, 2))}]}}")
-    if rnd.random() < 0.15:
+    if not shortlist and rnd.random() < 0.15:
         cat.append(f"  screw_grades: [{rnd.choice(('C3', 'C5', 'C7'))}]")
     if cat:
         lines += ["catalog:"] + cat

@@ -81,7 +81,8 @@ def compare_case(job):
     with tempfile.TemporaryDirectory(prefix="gex-") as d:
         f = Path(d) / f"{name}.yaml"
         f.write_text(text)
-        r = solve(f, Path(d) / "r.json", "--method", "exhaustive", "--no-sensitivity", timeout=600)
+        r = solve(f, Path(d) / "r.json", "--method", "exhaustive", "--no-sensitivity", "--time-limit", "3600",
+                  timeout=3600)
         e = r["result"] or {}
     e_obj = (e.get("objective") or {}).get("value")
     same = e.get("status") in ("optimal", "infeasible") and (

@@ -342,7 +342,11 @@ def check_design(design: dict, ev: dict) -> list[Row]:
         ph_guides = vp.duty_phases(ax_guides, moving_guides, friction_guides, 0.0)[0]
     else:
         ph_guides = phases
-    blocks = vp.block_loads_max(ax_guides, moving_guides, a_peak)
+    ends = [ax_guides]
+    if tw:  # the cross carriage at either end of its stroke: its weight and inertia there, as separate forces
+        ends = [vr.cross_carriage_at(ax_guides, moving_guides, quantity(tw.get("cross_mass", 0.0)), y)
+                for y in (0.5 * quantity(tw["cross_stroke"]), -0.5 * quantity(tw["cross_stroke"]))]
+    blocks = max(vp.block_loads_max(a, moving_guides, a_peak) for a in ends)
     fs_g, src = vp.guide_static_safety(guide["vendor"], guide["type"])
     rows.append(Row("guide static safety C0/P", "-", guide["static_load_rating"] / blocks, fs_g,
                     guide["static_load_rating"] / blocks / fs_g, ev.get("guide_static_safety"), None, "", src,
@@ -350,8 +354,9 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     f"{ev.get('guide_max_block_load_N', float('nan')) / 1e3:.2f} kN)"))
     travel_speed = vp.mean_travel_speed(phases) if use_cycle else ax.mean_speed
     need_km = ax.life_h * 3600 * travel_speed / 1e3
-    g_km, src, gnote = vp.guide_life_km(guide, ax_guides, ph_guides, cycle_given, moving_guides)
-    g_ax = vp.guide_life_km(guide, ax_guides, ph_guides, cycle_given, moving_guides, fw_ax)[0]
+    g_km, src, gnote = min((vp.guide_life_km(guide, a, ph_guides, cycle_given, moving_guides) for a in ends),
+                           key=lambda t: t[0])
+    g_ax = min(vp.guide_life_km(guide, a, ph_guides, cycle_given, moving_guides, fw_ax)[0] for a in ends)
     rows.append(Row("guide L10 travel", "km", g_km, need_km, g_km / need_km, theirs("guide_life"),
                     their_margin("guide_life"), "", src, gnote + f"; at axisopt's fw {fw_ax}: {g_ax:,.0f} km",
                     same_basis=g_ax))

@@ -17,6 +17,7 @@ Sources (the rule as each vendor prints it):
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from vendor_procedures import Row, quantity
 
@@ -85,3 +86,12 @@ def misumi_buckling(d1, la):
     """MiSUMi "Selection of Ball Screws 2" (Economy catalog p. 1676): P = m d^4 / l^2 x 1e4 [N] with m = 10 for
     a fixed-support shaft, l the distance between the points of buckling load [mm]: the nut a supported end."""
     return 10.0 * d1**4 / la**2 * 1e4, "MiSUMi p. 1676: P = m d^4 / l^2 x 1e4, m 10 (nut a supported end)"
+
+
+def cross_carriage_at(ax, whole, cross_mass, y):
+    """The axis as the guides see a twin gantry with its cross carriage at y across the rails [m]: the whole
+    moving mass's centre of gravity moved by the carriage's moment m_c y / m (the bridge stays where it is);
+    the block statics then take the weight and the inertia there (THK A-16..A-20, A-84: P = W/4 + W l3 / 2 l1).
+    """
+    return replace(ax, y_cg=ax.y_cg + cross_mass * y / whole)
+

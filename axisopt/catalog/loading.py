@@ -306,9 +306,30 @@ def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
 _CACHE: dict[tuple, Catalog] = {}
 
 
+def files_state(dirs, names) -> tuple:
+    """What a load reads, as a cache key: each directory's ``<name>.csv`` files with a digest of their bytes
+    (None for an absent one), so an edited, added or removed file is read again, never served stale."""
+    import hashlib
+
+    out = []
+    for d in dirs:
+        for name in names:
+            p = Path(d) / f"{name}.csv"
+            try:
+                digest = hashlib.blake2b(p.read_bytes(), digest_size=16).hexdigest()
+            except OSError:
+                digest = None
+            out.append((str(p), digest))
+    return tuple(out)
+
+
 def default_catalog(extra_dirs=()) -> Catalog:
-    """Cached :func:`load_catalogs` (the tables are treated as read-only)."""
-    key = tuple(str(Path(d).resolve()) for d in extra_dirs)
+    """Cached :func:`load_catalogs` (the tables are treated as read-only), keyed by the directories and the
+    contents of the files read (:func:`files_state`): a catalog file changed in a running process is reloaded."""
+    dirs = [Path(d).resolve() for d in extra_dirs]
+    key = (tuple(map(str, dirs)), files_state([SHIPPED_DIR, *dirs], SCHEMA))
     if key not in _CACHE:
+        if len(_CACHE) > 16:
+            _CACHE.clear()
         _CACHE[key] = load_catalogs(extra_dirs)
     return _CACHE[key]

@@ -1,9 +1,10 @@
 """``axisopt machine solve MACHINE.yaml``: a whole machine's axes sized together, proven, with the sequential
-sizing beside it."""
+sizing beside it; ``axisopt machine study STUDY.yaml``: sweeps over a machine file, one joint solve per case,
+locally or on a Dask cluster (the axis study's runner)."""
 
 from __future__ import annotations
 
-from .common import EXIT_NEGATIVE, EXIT_OK, show, write_json
+from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json
 
 
 def register(sub) -> None:
@@ -16,7 +17,33 @@ def register(sub) -> None:
                    help="default: exact Pareto sets of what each axis offers the one below (proven); exhaustive: "
                         "every combination of every axis (small catalogs only)")
     m.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
+    add_html_report(m, "the joint optimum, the stiffness chain at the tool and the sequential sizing")
     m.set_defaults(func=cmd_machine_solve)
+    e = msub.add_parser("evaluate", help="a machine whose axes name one part per slot (catalog.require): the "
+                        "stiffness at the tool with every link, the frequencies, the machine limits")
+    e.add_argument("machine", help="machine YAML file, every axis's parts named")
+    e.add_argument("--json", metavar="FILE", help="write the machine as JSON ('-' for stdout)")
+    add_html_report(e, "the machine: the stiffness chain at the tool, every axis, the frequencies")
+    e.set_defaults(func=cmd_machine_evaluate)
+    c = msub.add_parser("compare", help="machines side by side: each a machine file (solved now) or a machine "
+                        "result JSON (from machine solve --json)")
+    c.add_argument("machines", nargs="+", metavar="FILE", help="machine YAML files or machine result JSON files")
+    c.add_argument("--json", metavar="FILE", help="write the machines' results as one JSON list ('-' for stdout)")
+    c.set_defaults(func=cmd_machine_compare)
+    st = msub.add_parser("study", help="sweeps over a machine file: one joint solve per case, resumable, "
+                         "locally or on a Dask cluster")
+    st.add_argument("study", help="machine study YAML file (base: a machine file)")
+    st.add_argument("--out", metavar="DIR", help="output directory (default: <study file stem>-results)")
+    st.add_argument("--workers", type=int, metavar="N",
+                    help="local worker processes (default: all cores; 0 solves in this process)")
+    st.add_argument("--scheduler", metavar="ADDRESS",
+                    help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])")
+    st.add_argument("--resume", action="store_true",
+                    help="continue an interrupted study in --out, solving only the missing cases")
+    st.add_argument("--overwrite", action="store_true",
+                    help="solve every case again: the case results already in --out are deleted first")
+    st.add_argument("--quiet", action="store_true", help="no progress bar")
+    st.set_defaults(func=cmd_machine_study)
 
 
 def cmd_machine_solve(args) -> int:
@@ -24,10 +51,116 @@ def cmd_machine_solve(args) -> int:
     from ..machine import load_machine, solve_machine
     from ..report.machine import format_machine, machine_dict
 
+    check_html_report(args.report, args.plotly)
     machine = load_machine(args.machine)
     res = solve_machine(machine, args.method)
+    text = format_machine(res)
     if not (args.json and is_stdout(args.json)):
-        show(format_machine(res))
+        show(text)
     if args.json:
         write_json(machine_dict(res), args.json)
+    if args.report:
+        from ..report.html import write_page
+        from ..report.machine_html import machine_page
+
+        write_page(machine_page(res, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
     return EXIT_OK if res.best is not None else EXIT_NEGATIVE
+
+
+def cmd_machine_study(args) -> int:
+    import sys
+    from pathlib import Path
+
+    from ..errors import InputError
+    from ..study.machine import load_machine_study, run_machine_study
+    from ..study.result import clear_cases
+    from .common import one_line
+    from .study import ProgressBar, is_terminal
+
+    if args.resume and args.overwrite:
+        raise InputError("--resume continues a run, --overwrite starts it again: give one of them")
+    if args.workers is not None and args.workers < 0:
+        raise InputError(f"--workers must be 0 or more, got {args.workers}")
+    if args.scheduler is not None and args.workers is not None:
+        raise InputError("--workers and --scheduler exclude each other (the cluster has its own workers)")
+    if args.scheduler is not None and not args.scheduler.strip():
+        raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
+    study = load_machine_study(args.study)
+    out = args.out or f"{Path(args.study).stem}-results"
+    if args.overwrite and Path(out).is_dir():
+        clear_cases(out)
+    bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
+    try:
+        s = run_machine_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,
+                              progress=bar)
+    except KeyboardInterrupt:
+        bar.close()
+        print(one_line(f"interrupted: finished cases are saved in {out}/cases; continue with "
+                       f"'axisopt machine study {args.study} --out {out} --resume'"), file=sys.stderr)
+        return 130
+    finally:
+        bar.close()
+    print(f"machine study {study.name}: {s.total} cases; {s.solved} solved now on {s.backend}"
+          + (f" ({s.workers} workers)" if s.workers else "")
+          + (f", {s.resumed} kept from an earlier run" if s.resumed else "") + f"; {s.failed} without a machine")
+    for name, path in s.files.items():
+        print(f"  {name}: {path}")
+    if s.lost or s.died:
+        print(one_line(f"note: {s.lost + s.died} cases not solved ({s.lost_reason or 'worker died'}); rerun with "
+                       f"'axisopt machine study {args.study} --out {out} --resume'"), file=sys.stderr)
+    return EXIT_NEGATIVE if s.lost or s.died or s.failed else EXIT_OK
+
+
+def _machine_result(path: str) -> dict:
+    """A machine result: a JSON file as written by machine solve --json, or a machine file solved now."""
+    import json
+
+    from ..errors import InputError
+    from ..fileio import read_input
+    from ..machine import load_machine, solve_machine
+    from ..machine.record import result_dict
+    from ..report.machine_compare import check_result
+
+    if path.lower().endswith(".json"):
+        try:
+            d = json.loads(read_input(path, "case", what="machine result"))
+        except ValueError as exc:
+            raise InputError(f"not JSON ({exc})", source=path) from None
+        return check_result(d, path)
+    return result_dict(solve_machine(load_machine(path)))
+
+
+def cmd_machine_compare(args) -> int:
+    from ..report.machine_compare import format_compare
+
+    results = [_machine_result(p) for p in args.machines]
+    from ..fileio import is_stdout
+
+    if not (args.json and is_stdout(args.json)):
+        show(format_compare(results))
+    if args.json:
+        write_json(results, args.json)
+    return EXIT_OK if all(r["best"] is not None for r in results) else EXIT_NEGATIVE
+
+
+def cmd_machine_evaluate(args) -> int:
+    from ..fileio import is_stdout
+    from ..machine import load_machine
+    from ..machine.evaluate import evaluate_machine
+    from ..machine.record import design_dict
+    from ..report.machine import format_evaluation
+
+    check_html_report(args.report, args.plotly)
+    ev = evaluate_machine(load_machine(args.machine))
+    text = format_evaluation(ev)
+    if not (args.json and is_stdout(args.json)):
+        show(text)
+    if args.json:
+        write_json({"machine": ev.machine.name, "failed": [{"axis": n, "carried_kg": c} for n, c in ev.failed],
+                    "design": None if ev.design is None else design_dict(ev.design)}, args.json)
+    if args.report:
+        from ..report.html import write_page
+        from ..report.machine_html import evaluation_page
+
+        write_page(evaluation_page(ev, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
+    return EXIT_OK if ev.design is not None and ev.design.feasible else EXIT_NEGATIVE

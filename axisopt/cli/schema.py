@@ -5,14 +5,13 @@ from __future__ import annotations
 
 import json
 
+from ..schema import KINDS_OF_FILE as FILE_KINDS  # the schema module's list: one declaration
 from .common import EXIT_OK
-
-FILE_KINDS = ("design", "problem", "study", "calibration", "machine")
 
 
 def register(sub) -> None:
-    p = sub.add_parser("schema", help="JSON Schema of a design, problem, study, calibration or machine YAML "
-                       "(for editors)")
+    p = sub.add_parser("schema", help="JSON Schema of a design, problem, study, calibration, machine or machine "
+                       "study YAML (for editors)")
     p.add_argument("kind", choices=FILE_KINDS, help="the kind of YAML file")
     p.add_argument("--out", metavar="FILE", help="write the schema to FILE (default: print it)")
     p.set_defaults(func=cmd_schema)

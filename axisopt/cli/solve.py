@@ -79,6 +79,17 @@ def cmd_solve(args) -> int:
         return _solve_drive_types(args, problem)
     res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
                 sensitivities=not args.no_sensitivity)
+    if res.pareto is None:  # the drive types the catalogs offer by default (search.drivedefault)
+        from ..search.drivedefault import offer
+
+        other = offer(problem, res, args.method, top=args.top).result
+        files = [f"--{o.replace('_', '-')}" for o in ("plot", "save_design", "report") if getattr(args, o)]
+        if other is not None and not files:
+            return _show_drive_types(args, other)
+        if other is not None:  # the files are made for screw drives: the best screw drive's, said so
+            print(f"axisopt: a {other.best.drive_type} design beats the screw drive "
+                  f"({other.best.objective:.6g} {other.objective_unit}); {', '.join(files)} "
+                  "written for the best screw drive (without them the answer shows it)", file=sys.stderr)
     quiet = stdout_taken(args.json, args.save_design)
     text = format_result(res, top=args.top, problem=problem) if not quiet or args.report else ""
     if not quiet:
@@ -131,7 +142,6 @@ def cmd_solve(args) -> int:
 def _solve_drive_types(args, problem) -> int:
     """A problem with ``search.drive_types``: the drive types' search and its text (and --json)."""
     from ..errors import InputError
-    from ..report.drivetype import format_drive_result
     from ..search.drivetype import solve_drive_types
 
     for opt in ("plot", "save_design", "report"):
@@ -143,6 +153,20 @@ def _solve_drive_types(args, problem) -> int:
                          "method", where="--method")
     res = solve_drive_types(problem, args.method,
                             top=args.top, time_limit=args.time_limit)
+    return _show_drive_types(args, res)
+
+
+def _show_drive_types(args, res) -> int:
+    """The text (and --json) of a drive types' answer (:class:`axisopt.search.drivetype.DriveTypeResult`)."""
+    from ..errors import InputError
+    from ..report.drivetype import format_drive_result
+
+    for opt in ("plot", "save_design", "report"):
+        if getattr(args, opt):
+            raise InputError(f"--{opt.replace('_', '-')} is not made for a {res.best.drive_type} design yet "
+                             "(it wins over the screw drive)" if res.best is not None else
+                             f"--{opt.replace('_', '-')} is not made for a search over drive types yet",
+                             where=f"--{opt.replace('_', '-')}")
     quiet = stdout_taken(args.json, None)
     if not quiet:
         show(format_drive_result(res, top=args.top))

@@ -28,7 +28,7 @@ def register(sub) -> None:
     s.set_defaults(func=cmd_study)
 
 
-class _Bar:
+class ProgressBar:
     """Progress on stderr: tqdm when installed, else one rewritten line."""
 
     def __init__(self, enabled: bool):
@@ -71,7 +71,7 @@ class _Bar:
             print(file=sys.stderr, flush=True)
 
 
-def _is_terminal(stream) -> bool:
+def is_terminal(stream) -> bool:
     """The bar is drawn only on a terminal: a log file or pipe gets no carriage-return lines."""
     try:
         return bool(stream.isatty())
@@ -107,7 +107,7 @@ def cmd_study(args) -> int:
         raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
     if args.overwrite and Path(out).is_dir():
         clear_cases(out)
-    bar = _Bar(not args.quiet and _is_terminal(sys.stderr))
+    bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
     try:
         summary = run_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,
                             progress=bar)

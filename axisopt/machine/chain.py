@@ -48,11 +48,53 @@ def chain_modes(m, k):
 
 
 def lowest_frequency(m, k) -> np.ndarray:
-    """The chain's lowest natural frequency [Hz] (..., )."""
+    """The chain's lowest natural frequency [Hz] (..., ).  Chains of up to three masses (every machine's here)
+    by the closed form of the symmetric 3x3 eigenvalue problem (:func:`_lowest_eigenvalue_3`), longer ones by
+    LAPACK; the closed form is polished by Newton steps on the chain's characteristic polynomial."""
     m = np.asarray(m, dtype=float)
-    s = 1.0 / np.sqrt(m)
-    A = chain_stiffness_matrix(k) * s[..., :, None] * s[..., None, :]
-    return np.sqrt(np.clip(np.linalg.eigvalsh(A)[..., 0], 0.0, None)) / TWO_PI
+    k = np.asarray(k, dtype=float)
+    n = m.shape[-1]
+    if n == 1:
+        return np.sqrt(np.clip(k[..., 0] / m[..., 0], 0.0, None)) / TWO_PI
+    if n <= 3:  # M^-1/2 K M^-1/2: its diagonal and off-diagonal
+        d = [(k[..., i] + (k[..., i + 1] if i + 1 < n else 0.0)) / m[..., i] for i in range(n)]
+        e = [-k[..., i + 1] / np.sqrt(m[..., i] * m[..., i + 1]) for i in range(n - 1)]
+        lam = _lowest_eigenvalue_3(d, e)
+    else:
+        s = 1.0 / np.sqrt(m)
+        lam = np.linalg.eigvalsh(chain_stiffness_matrix(k) * s[..., :, None] * s[..., None, :])[..., 0]
+    return np.sqrt(np.clip(lam, 0.0, None)) / TWO_PI
+
+
+def _lowest_eigenvalue_3(d: list, e: list) -> np.ndarray:
+    """The least eigenvalue of symmetric tridiagonal matrices, n = 2 or 3 (``d`` the n diagonals, ``e`` the n - 1
+    off-diagonals, each an array (...,)): the trigonometric closed
+    form of the cubic (O. K. Smith, "Eigenvalues of a symmetric 3 x 3 matrix", Comm. ACM 4 (1961) 168; n = 2 its
+    quadratic), then two Newton steps on det(A - lambda I) by the tridiagonal recurrence (to round-off)."""
+    n = len(d)
+    if n == 2:
+        h = 0.5 * (d[0] - d[1])
+        lam = 0.5 * (d[0] + d[1]) - np.sqrt(h * h + e[0] ** 2)
+    else:
+        q = (d[0] + d[1] + d[2]) / 3.0
+        p1 = e[0] ** 2 + e[1] ** 2
+        p = np.sqrt(((d[0] - q) ** 2 + (d[1] - q) ** 2 + (d[2] - q) ** 2 + 2.0 * p1) / 6.0)
+        ps = np.where(p > 0, p, 1.0)
+        b0, b1, b2 = (d[0] - q) / ps, (d[1] - q) / ps, (d[2] - q) / ps
+        f0, f1 = e[0] / ps, e[1] / ps
+        r = 0.5 * (b0 * (b1 * b2 - f1 * f1) - f0 * (f0 * b2))
+        phi = np.arccos(np.clip(r, -1.0, 1.0)) / 3.0
+        lam = np.where(p > 0, q + 2.0 * p * np.cos(phi + 2.0 * np.pi / 3.0), q)
+    for _ in range(2):  # det(A - x I) and its derivative by the three-term recurrence
+        p0, dp0 = np.ones_like(lam), np.zeros_like(lam)
+        p_1, dp_1 = d[0] - lam, -np.ones_like(lam)
+        for i in range(1, n):
+            p_2 = (d[i] - lam) * p_1 - e[i - 1] ** 2 * p0
+            dp_2 = -p_1 + (d[i] - lam) * dp_1 - e[i - 1] ** 2 * dp0
+            p0, dp0, p_1, dp_1 = p_1, dp_1, p_2, dp_2
+        step = np.where(dp_1 != 0, p_1 / np.where(dp_1 != 0, dp_1, 1.0), 0.0)
+        lam = lam - step
+    return lam
 
 
 def dunkerley_frequency(m, k) -> np.ndarray:

@@ -219,10 +219,7 @@ axes:
         vendors: [HIWIN, THK, NSK]
         nut_types: [double]
         motor_series: [Sigma-7 SGM7G]
-        # the ram's screw and guides from a short list (the designer's shortlist keeps the joint search
-        # within seconds: every Z design is a distinct mass the axis below is solved at)
-        require: {coupling: [RINGFEDER-GWB-AKN-150], screw: [HIWIN-G-32x10-b6p35, HIWIN-G-32x20-b6p35,
-                  HIWIN-G-40x10-b6p35, HIWIN-G-40x20-b6p35], guide: [HIWIN-HG20-ZA, HIWIN-HG25-ZA]}
+        require: {coupling: [RINGFEDER-GWB-AKN-150]}
 """,
     "gantry": """\
 # A gantry: the bridge (Y) on two synchronised screw drives, the cross carriage (X) across the bridge, the ram (Z)
@@ -335,10 +332,7 @@ axes:
         vendors: [HIWIN, NSK]
         nut_types: [double]
         motor_series: [Sigma-7 SGM7G]
-        # the ram's screw and guides from a short list (the designer's shortlist keeps the joint search
-        # within seconds: every Z design is a distinct mass the axis below is solved at)
-        require: {coupling: [RINGFEDER-GWB-AKN-150], screw: [HIWIN-G-32x10-b6p35, HIWIN-G-32x20-b6p35,
-                  HIWIN-G-40x10-b6p35, HIWIN-G-40x20-b6p35], guide: [HIWIN-HG20-ZA, HIWIN-HG25-ZA]}
+        require: {coupling: [RINGFEDER-GWB-AKN-150]}
 """,
 })
 # kind -> file name in problems/machines

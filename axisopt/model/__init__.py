@@ -3,7 +3,7 @@
 One set of pure functions, one per sub-assembly (:mod:`.loads`, :mod:`.chain`, :mod:`.modes`,
 :mod:`.drag`, :mod:`.cost`, :mod:`.checks`), put together by :func:`axis_response`.  ``evaluate``, the
 search (screening on numpy, exact solves, IPOPT on the CasADi Function) and ``diagnose`` (its plant) all
-call it.
+call it, each asking for the sub-assemblies it needs (:class:`Request`, :mod:`.request`).
 """
 
 from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes
@@ -22,7 +22,8 @@ from .modes import STEEL_DAMPING
 from .outputs import CHAIN_OUTPUTS, OUTPUT_TABLE, OUTPUTS
 from .paramnames import PARAM_NAMES
 from .params import axis_params, one_design, positions
-from .response import axis_response, drive_inputs, drive_response
+from .request import FULL, MECHANICS, SCREEN, Request
+from .response import axis_response, chain_response, drive_inputs, drive_response
 
 __all__ = [
     "CHAIN_OUTPUTS", "OUTPUT_TABLE", "OUTPUTS",
@@ -30,7 +31,8 @@ __all__ = [
     "SCALAR_OUTPUTS",
     "SCREW_EFFICIENCY",
     "STEEL_DAMPING", "AxisModel", "Evaluation", "axis_params", "axis_response", "design_params", "drive_inputs",
-    "drive_response",
+    "chain_response", "drive_response",
     "evaluate",
     "model_for", "one_design", "positions",
+    "FULL", "MECHANICS", "SCREEN", "Request",
 ]

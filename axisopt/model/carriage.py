@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from .. import mathx as mx
 from ..physics import carriage as pcr
-from .gantry import tp
+from .gantry import single_drive, tp
 from .loads import phase_groups, phase_moving_mass
 
 G = 9.80665
@@ -57,11 +57,22 @@ def carriage_loads(p, moving) -> dict:
     n = sh["n"]
     ga, gc = p["gravity_axial"], p["gravity_cross"]
 
-    def weight_of(m):
-        return (-ga * m * G, gc * m * G, (1.0 - ga - gc) * m * G, p["cg_offset"], p["cg_height"])
+    y_t, h_t, h_g = p["tool_offset"], p["tool_height"], p["cg_height"]
+    # a twin gantry's cross carriage (m_c) at either end of its stroke across the rails (+-s/2): the weight and
+    # the inertia force of the moving mass m act at the centre of gravity y_g + m_c y_c / m (statics; the
+    # vendors' load distribution, THK A-82..A-89, HIWIN G99TE20 1-5, then takes the moments); one drive: y_c 0
+    ends = [0.0]
+    if not single_drive(p):
+        half = 0.5 * tp(p, "cross_stroke")
+        ends = [half, -half]
+    m_c = tp(p, "cross_mass")
 
-    weight = weight_of(moving)
-    y_t, h_t, y_g, h_g = p["tool_offset"], p["tool_height"], p["cg_offset"], p["cg_height"]
+    def cg(m, y_c):
+        return p["cg_offset"] + m_c * y_c / m if len(ends) > 1 else p["cg_offset"]
+
+    def weight_of(m, y_c):
+        return (-ga * m * G, gc * m * G, (1.0 - ga - gc) * m * G, cg(m, y_c), h_g)
+
     # a twin drive's parameters carry the governing side's share of the process force (model.gantry): the guides
     # carry the whole gantry and the whole force (force_share 1 for one drive)
     fs = tp(p, "force_share")
@@ -71,47 +82,53 @@ def carriage_loads(p, moving) -> dict:
         fn, fy, mp, mr, my = _sum(forces)
         return pcr.max_block_load(fn, fy, mp, mr, my, n, sh["pitch"], sh["roll"], sh["yaw"])
 
-    cases = [[weight]]
-    for s in (1.0, -1.0):
-        cases.append([weight, (s * moving * p["acceleration"], 0.0, 0.0, y_g, h_g)])
-        for t in (1.0, -1.0):
-            cases.append([weight, (s * f_feed, t * f_cross, f_norm, y_t, h_t)])
     groups = phase_groups(tuple(p.get("duty", ())))
-    # the phases' own process forces (a duty cycle that gives them): the cut with the phase's inertia force
     ratio = mx.if_else(f_feed > 0.0, 1.0 / mx.fmax(f_feed, 1e-12), 0.0)
-    for (force, peak, _, direction, mass), _ in groups:
-        if force:
-            m = phase_moving_mass(p, moving, mass)
-            scale = p["duty_process"] * (force / fs) * ratio
-            sign = -direction if direction else 1.0
-            cases.append([weight_of(m), (-m * peak, 0.0, 0.0, y_g, h_g),
-                          (sign * p["duty_process"] * (force / fs), scale * f_cross, scale * f_norm, y_t, h_t)])
+    cases = []
+    for y_c in ends:
+        weight, y_g = weight_of(moving, y_c), cg(moving, y_c)
+        cases.append([weight])
+        for s in (1.0, -1.0):
+            cases.append([weight, (s * moving * p["acceleration"], 0.0, 0.0, y_g, h_g)])
+            for t in (1.0, -1.0):
+                cases.append([weight, (s * f_feed, t * f_cross, f_norm, y_t, h_t)])
+        # the phases' own process forces (a duty cycle that gives them): the cut with the phase's inertia force
+        for (force, peak, _, direction, mass), _ in groups:
+            if force:
+                m = phase_moving_mass(p, moving, mass)
+                scale = p["duty_process"] * (force / fs) * ratio
+                sign = -direction if direction else 1.0
+                cases.append([weight_of(m, y_c), (-m * peak, 0.0, 0.0, cg(m, y_c), h_g),
+                              (sign * p["duty_process"] * (force / fs), scale * f_cross, scale * f_norm, y_t,
+                               h_t)])
     p_max = pe_max(cases[0])
     for c in cases[1:]:
         p_max = mx.fmax(p_max, pe_max(c))
 
-    # mean load per block over the travel: the phase's process force, or the mean axial load (rapid cycle)
-    loads = {corner: [] for corner in pcr.CORNERS}
-    travel = []
-    for (force, _, mean_acc, direction, mass), dist in groups:
-        if dist <= 0.0:
-            continue
-        m = phase_moving_mass(p, moving, mass)
-        f = (p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]) / fs
-        scale = f * ratio
-        fn, fy, mp, mr, my = _sum([weight_of(m), (-m * mean_acc, 0.0, 0.0, y_g, h_g),
-                                   (-direction * f, scale * f_cross, scale * f_norm, y_t, h_t)])
-        for corner, pe in zip(pcr.CORNERS, pcr.corner_block_loads(fn, fy, mp, mr, my, n, sh["pitch"],
-                                                                   sh["roll"], sh["yaw"])):
-            loads[corner].append(pe)
-        travel.append(dist)
-    if travel:
-        means = [pcr.mean_load(v, travel) for v in loads.values()]
-        p_mean = means[0]
-        for m in means[1:]:
-            p_mean = mx.fmax(p_mean, m)
-    else:  # a cycle without travel: the standstill load
-        p_mean = pe_max(cases[0])
+    # mean load per block over the travel: the phase's process force, or the mean axial load (rapid cycle); a
+    # twin gantry's cross carriage at the end that loads the block most (conservative: it may stand there)
+    p_mean = None
+    for y_c in ends:
+        loads = {corner: [] for corner in pcr.CORNERS}
+        travel = []
+        for (force, _, mean_acc, direction, mass), dist in groups:
+            if dist <= 0.0:
+                continue
+            m = phase_moving_mass(p, moving, mass)
+            f = (p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]) / fs
+            scale = f * ratio
+            fn, fy, mp, mr, my = _sum([weight_of(m, y_c), (-m * mean_acc, 0.0, 0.0, cg(m, y_c), h_g),
+                                       (-direction * f, scale * f_cross, scale * f_norm, y_t, h_t)])
+            for corner, pe in zip(pcr.CORNERS, pcr.corner_block_loads(fn, fy, mp, mr, my, n, sh["pitch"],
+                                                                       sh["roll"], sh["yaw"])):
+                loads[corner].append(pe)
+            travel.append(dist)
+        if travel:
+            means = [pcr.mean_load(v, travel) for v in loads.values()]
+        else:  # a cycle without travel: the standstill load
+            means = [pe_max([weight_of(moving, y_c)])]
+        for m in means:
+            p_mean = m if p_mean is None else mx.fmax(p_mean, m)
     return {"guide_max_load": p_max, "guide_static_safety": pcr.static_safety(p["guide_static_load"], p_max),
             "guide_mean_load": p_mean}
 

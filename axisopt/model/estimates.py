@@ -101,6 +101,9 @@ ASSUMED_DEFAULTS = (
     ("nut_lift_off_safety", "nut_lift_off_safety", "", 1.0,
      "default: lift-off at 2.83 x preload, THK A-687, HIWIN F 3.6", lambda a: a.nut_lift_off_safety == 1.0),
 )
+# Parameters the model holds as the reciprocal of their column (RULE_PARAMS): an estimate shows the column's
+# value (a reduction's torsional stiffness, not the compliance the model sums)
+RECIPROCAL = frozenset({"reduction_compliance"})
 # Part columns whose estimate an axis value replaces: (table, column) -> axis attribute.
 OVERRIDDEN_BY_AXIS = {("bearings", "static_safety"): "bearing_static_safety"}
 
@@ -136,7 +139,8 @@ def design_estimates(design) -> list:
             if how:
                 v = float(np.ravel(p[param])[0])
                 unit = DISPLAY_UNITS.get(col.kind, "")
-                shown = v / unit_factor(unit, col.kind) if unit else v
+                cv = (1.0 / v if v else math.inf) if param in RECIPROCAL else v
+                shown = cv / unit_factor(unit, col.kind) if unit else cv
                 out.append(Estimate(slot, pid, col.name, param, v, how, unit, shown))
     for key, param, how in ASSUMED_MOUNTS:
         if getattr(design.axis, key) is None:

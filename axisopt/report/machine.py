@@ -91,33 +91,25 @@ def format_machine(res) -> str:
                                                   if len(line) > WIDTH else [line]))
 
 
-def _design_dict(md) -> dict:
-    return {
-        "feasible": md.feasible, "cost_eur": md.cost, "moving_mass_kg": md.moving_mass,
-        "k_tool_n_per_um": dict(zip(DIRECTIONS, (k * 1e-6 for k in md.k_tool))),
-        "lowest_frequency_hz": md.f_lowest, "dunkerley_hz": md.f_dunkerley,
-        "lowest_mode": {"direction": md.lowest_at[0], "axis": md.lowest_at[1], "link": md.lowest_at[2]},
-        "frequencies_hz": {f"{'/'.join(md.branches[b])}:{d}": list(f) for (b, d), f in md.frequencies.items()},
-        "misses": [{"limit": k, "value": v, "bound": b} for k, v, b in md.misses],
-        "tool_point_mm": {n: v * 1e3 for n, v in md.tool_point.items()},
-        "k_tool_at_point_n_per_um": dict(zip(DIRECTIONS, (k * 1e-6 for k in md.k_tool_at_point))),
-        "axes": [{"name": a.name, **a.candidate.parts(), "nut_preload_n": a.candidate.nut_preload,
-                  "arrangement": a.candidate.arrangement, "carried_kg": a.carried, "lumped_mass_kg": a.lumped,
-                  "cost_eur": a.cost, "parts_mass_kg": a.parts_mass, "counterweight_kg": a.counterweight,
-                  "link_n_per_um": {d: {"role": a.roles[i], "axis": a.k_axis[i] * 1e-6,
-                                        "frame": a.k_frame[i] * 1e-6, "frame_estimated": a.frame_estimated,
-                                        "link": a.k_link[i] * 1e-6} for i, d in enumerate(DIRECTIONS)}}
-                 for a in md.axes],
-    }
+def format_evaluation(ev) -> str:
+    """A machine of chosen parts (:class:`axisopt.machine.evaluate.MachineEvaluation`): every axis, the
+    stiffness chain at the tool with each link, the frequencies and the machine limits it misses."""
+    m = ev.machine
+    L = [f"machine {m.name}: {len(m.axes)} axes ({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
+         " on the frame), its parts as chosen"]
+    if ev.design is None:
+        for name, load in ev.failed:
+            L.append(f"axis {name}: its parts miss its own limits carrying {load:,.1f} kg (evaluate it alone with "
+                     "`axisopt solve`, whose answer says which limit)")
+    else:
+        L += _design_lines(ev.design, m.objective)
+        L.append("meets every machine limit" if ev.design.feasible else "misses a machine limit (above)")
+    return "\n".join(w for line in L for w in (textwrap.wrap(line, WIDTH, subsequent_indent="    ")
+                                                  if len(line) > WIDTH else [line]))
 
 
 def machine_dict(res) -> dict:
-    m = res.machine
-    return {
-        "machine": m.name, "objective": m.objective, "method": res.method, "status": res.status,
-        "nominal_combinations": res.nominal_combinations, "axis_solves": res.axis_solves,
-        "offers_kept": dict(res.offers), "time_s": res.time, "notes": list(res.notes),
-        "best": None if res.best is None else _design_dict(res.best),
-        "sequential": None if res.sequential is None else _design_dict(res.sequential),
-        "gain": res.gain,
-    }
+    """The result as plain data for JSON (:func:`axisopt.machine.record.result_dict`)."""
+    from ..machine.record import result_dict
+
+    return result_dict(res)

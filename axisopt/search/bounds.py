@@ -130,8 +130,8 @@ def block_outputs(space: Space, mounting: str, sl: slice, guide_type: str):
     hi = space.preload_hi[sl].reshape(-1, 1, 1, 1).astype(np.float32)
     p = optimistic_guide_params(space, mounting, sl, guide_type, dtype=np.float32)
     # the drive block is left out: block_bounds reads no limit the drive changes but the cost (outside it)
-    res = (model.axis_response(p, xs[-1:], mounting, lo, extras=False, drive_block=False),
-           model.axis_response(p, xs, mounting, hi, extras=False, drive_block=False))
+    res = (model.axis_response(p, xs[-1:], mounting, lo, model.MECHANICS),
+           model.axis_response(p, xs, mounting, hi, model.MECHANICS))
     if keep:
         space._cache[key] = res
     return res

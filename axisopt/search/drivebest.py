@@ -112,7 +112,8 @@ def block_bounds(space, spec):
     return (np.maximum if sense == "max" else np.minimum)(out[0], out[1]) / factor
 
 
-def _beaten(bound, kth, sense) -> bool:
+def beaten(bound, kth, sense) -> bool:
+    """Whether an optimistic ``bound`` cannot reach the value ``kth`` (1e-9 relative: a tie is not beaten)."""
     tol = 1e-9 * max(abs(kth), 1.0)
     return bool((sense == "max" and bound < kth - tol) or (sense == "min" and bound > kth + tol))
 
@@ -134,7 +135,7 @@ def best_first(problem, space, spec, top: int):
         for start in range(0, order.size, LEVEL1_BATCH):
             blocks = order[start : start + LEVEL1_BATCH]
             best = state["best"]
-            if len(best) >= top and _beaten(bound[blocks[0]], sign * best[top - 1][0][0], sense):
+            if len(best) >= top and beaten(bound[blocks[0]], sign * best[top - 1][0][0], sense):
                 break
             r, rd, t = np.unravel_index(blocks, bshape)
             drives = np.ravel_multi_index(
@@ -168,7 +169,7 @@ def _visit(problem, space, spec, top, drives, state):
     best = state["best"]
     for start in range(0, alive.size, CHUNK):
         sel = alive[start : start + CHUNK]
-        if len(best) >= top and _beaten(obj[sel[0]], sign * best[top - 1][0][0], sense):
+        if len(best) >= top and beaten(obj[sel[0]], sign * best[top - 1][0][0], sense):
             break
         flats = (ids[sel][:, None] * G + np.arange(G)[None, :]).reshape(-1)
         res = _evaluate_flats(space, flats)

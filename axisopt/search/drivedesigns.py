@@ -103,6 +103,28 @@ class DriveTypeResult:
         }
 
 
+def screw_designs(res) -> list:
+    """The screw search's best and runners-up (a :class:`~axisopt.search.result.SolveResult`) as designs."""
+    designs = []
+    for c in ([res.best] + list(res.runners_up)) if res.best is not None else []:
+        out = c.outputs or {}
+        perr = out.get("positioning_error")
+        designs.append(
+            DriveDesign(
+                "screw",
+                {"mounting": c.mounting, **c.parts()},
+                c.objective,
+                c.cost,
+                c.moving_mass,
+                c.min_stiffness,
+                c.min_frequency,
+                float(perr) * 1e6 if perr is not None else float("nan"),
+                candidate=c,
+            )
+        )
+    return designs
+
+
 def objective_of(problem):
     mode = problem.objective.mode
     if mode not in OBJECTIVES:

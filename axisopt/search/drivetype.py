@@ -35,6 +35,7 @@ from .drivedesigns import (  # noqa: F401  (the vocabulary, read from here too)
     rank_designs,
     rank_key,
     scores,
+    screw_designs,
     spaces,
     subset,
 )
@@ -93,24 +94,7 @@ def _screw(problem, method: str, top: int, time_limit: float, spec):
     res = solve(
         replace(problem, drives=None), method, top=top, time_limit=time_limit, sensitivities=False
     )
-    designs = []
-    for c in ([res.best] + list(res.runners_up)) if res.best is not None else []:
-        out = c.outputs or {}
-        perr = out.get("positioning_error")
-        designs.append(
-            DriveDesign(
-                "screw",
-                {"mounting": c.mounting, **c.parts()},
-                c.objective,
-                c.cost,
-                c.moving_mass,
-                c.min_stiffness,
-                c.min_frequency,
-                float(perr) * 1e6 if perr is not None else float("nan"),
-                candidate=c,
-            )
-        )
-    return res, designs
+    return res, screw_designs(res)
 
 
 def solve_drive_types(problem, method: str = "default", *, top: int = 5, time_limit: float = 100.0):

@@ -44,8 +44,8 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
     for mounting, sel, n, b, _g, p, x in space.by_mounting(idx):
         k = len(sel)
         lo, hi = space.preload_lo[n], space.preload_hi[n]
-        out_lo = respond(p, x, mounting, lo[:, None])
-        out_hi = respond(p, x, mounting, hi[:, None])
+        out_lo = respond(p, x, mounting, lo[:, None], space.request)
+        out_hi = respond(p, x, mounting, hi[:, None], space.request)
         ok = ok_all(indep, out_lo, k) & space.fits[n, b]
         for key, v in goal_arrays(out_lo, k, FIXED_GOALS).items():  # the same at every preload
             res.goals[key][sel] = v
@@ -78,7 +78,7 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
                 aj, zj = a[j], z[j]
                 for _ in range(BISECTION_STEPS):
                     mid = 0.5 * (aj + zj)
-                    good = ok_all([c], respond(pj, xc, mounting, mid[:, None]), len(j))
+                    good = ok_all([c], respond(pj, xc, mounting, mid[:, None], space.request), len(j))
                     aj = np.where(good, mid, aj)
                     zj = np.where(good, zj, mid)
                 a[j] = aj
@@ -96,7 +96,7 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
             for t in np.linspace(0.0, 1.0, n_grid):
                 # clipped: low + 1.0 * (up - low) can round one ulp above up, past a threshold
                 pre = np.clip(low[w] + t * (up[w] - low[w]), low[w], up[w])
-                out = respond(pw, x, mounting, pre[:, None])
+                out = respond(pw, x, mounting, pre[:, None], space.request)
                 good = ok_all(constraints, out, len(w))
                 J = np.broadcast_to(objective.value(out), (len(w),))
                 better = good & (J > bo)
@@ -110,7 +110,7 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
         f = np.nonzero(feas)[0]
         vals = {g.key: np.full(k, np.nan) for g in PRELOAD_GOALS}  # at the best preload, NaN where infeasible
         if len(f):
-            out = respond(subset(p, f, k), x, mounting, best_pre[f][:, None])
+            out = respond(subset(p, f, k), x, mounting, best_pre[f][:, None], space.request)
             for key, v in goal_arrays(out, len(f), PRELOAD_GOALS).items():
                 vals[key][f] = v
         for key, v in vals.items():

@@ -288,15 +288,10 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
         why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
         why.missing = missing_values(constraints, why, space)
         message = "no catalog combination meets every limit"
-        if why.cut and deadline is not None and time.perf_counter() > deadline:
-            message += ("; the explanation stopped at the time limit: the closest designs are those found by then "
-                        "(a longer --time-limit explains further)")
-        elif why.cut:
-            from .infeasible.explain import MAX_OPENED
+        if why.cut:
+            from .infeasible.explain import cut_note
 
-            message += (f"; a limit no combination meets on its own makes every design miss: the explanation stopped "
-                        f"after scoring {MAX_OPENED:,} combinations, and the closest designs (and what to relax for "
-                        "them) are those found by then, perhaps not the closest of all")
+            message += "; " + cut_note(why)
         if space.reductions_by_backlash:
             lim = problem.limit_map.get("max_backlash", 0.0)
             message += (f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each one's "

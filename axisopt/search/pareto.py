@@ -148,4 +148,8 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
         inf.relax, inf.not_relaxable, inf.relax_blocked_by = rank_relaxations(constraints, inf)
         inf.missing = missing_values(constraints, inf, space)
         res.message = "no catalog combination meets every limit"
+        if inf.cut:
+            from .infeasible.explain import cut_note
+
+            res.message += "; " + cut_note(inf)
     return res

@@ -81,7 +81,7 @@ def build_space(problem: Problem) -> Space:
             _SPACES.pop(next(iter(_SPACES)))
         _SPACES[key] = hit = (problem.catalog, sp)
     sp = replace(hit[1], problem=problem, _cache={})
-    sp.budget = reads_budget(problem)
+    sp.request = model.SCREEN.but(budget=reads_budget(problem))
     sp.grid = {m: model.positions(problem.axis_for(m)) for m in sp.mountings}
     # the drives' torsional stiffnesses (a drive without a coupling takes this problem's axis value)
     sp.coupling_k = np.unique(drive_stiffnesses(sp)) if sp.m_arr is not None else \

@@ -66,7 +66,7 @@ def feasible_at(space: Space, combo: int, preload: float, constraints) -> bool:
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
     p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))
-    out = respond(p, space.grid[mounting], mounting, np.array([[preload]]))
+    out = respond(p, space.grid[mounting], mounting, np.array([[preload]]), space.request)
     return bool(ok_all(constraints, out, 1)[0])
 
 

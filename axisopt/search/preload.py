@@ -132,10 +132,10 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
         x1 = x[-1:]
         lo = space.preload_lo[n][:, None]
         hi = space.preload_hi[n][:, None]
-        out_lo = respond(p, x1, mounting, lo)
+        out_lo = respond(p, x1, mounting, lo, space.request)
         ok = ok_all(indep, out_lo, k) & space.fits[n, b]
         ok_up_lo = ok_all([c for c in up if not c.profile], out_lo, k)
-        out_hi = respond(p, x1, mounting, hi)
+        out_hi = respond(p, x1, mounting, hi, space.request)
         ok_up_hi = ok_all([c for c in up if not c.profile], out_hi, k)
         a = lo[:, 0].copy()  # feasible end
         bb = hi[:, 0].copy()  # infeasible end (unless ok_up_hi)
@@ -156,11 +156,11 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
             pr = repeat_rows(subset(p, j, k), len(j), P - 1)
 
             # only the sub-assemblies these limits read (the chain, the drive block, the regenerated energy)
-            parts = dict(drive_block=any(c.key in DRIVE_KEYS for c in upc),
-                         chain=any(c.key in model.CHAIN_OUTPUTS for c in upc), regen=reads_regen(upc))
+            parts = space.request.but(drive=any(c.key in DRIVE_KEYS for c in upc),
+                                      chain=any(c.key in model.CHAIN_OUTPUTS for c in upc), regen=reads_regen(upc))
 
             def good(pre, pr=pr, upc=upc, x1=x1, mounting=mounting, parts=parts):
-                return ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1), **parts), pre.size)
+                return ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1), parts), pre.size)
 
             a[j_all] = kary_threshold(good, a[j], bb[j], P)[inv]
         pstar = np.where(ok_up_hi, hi[:, 0], a)
@@ -171,7 +171,7 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
                 ex, top = convex_feasible_top(c, subset(p, j, k), x1, mounting, lo[j, 0], pstar[j])
                 ok[j] &= ex
                 pstar[j] = np.where(ex, top, pstar[j])
-        out = respond(p, x, mounting, pstar[:, None])
+        out = respond(p, x, mounting, pstar[:, None], space.request)
         ok &= ok_all(cvx, out, k)
         ok &= ok_all(low, out, k)
         ok &= ok_all([c for c in up if c.profile], out, k)

@@ -174,10 +174,10 @@ def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, o
     mask = np.broadcast_to(fits[:, :, None], (nc, B, Gm)).copy()
     with np.errstate(all="ignore"):
         chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in low_end)
-        out_lo = model.axis_response(p, x1, mounting, lo, extras=False, drive_block=False, chain=chain_lo)
+        out_lo = model.axis_response(p, x1, mounting, lo, space.request.but(drive=False, chain=chain_lo))
         for c in low_end:
             mask &= screen_ok(c, out_lo)
-        out = model.axis_response(p, xs, mounting, hi, extras=False, drive_block=False)
+        out = model.axis_response(p, xs, mounting, hi, space.request.but(drive=False))
         for c in high_end:
             mask &= screen_ok(c, out)
         bound = objective.value(out)
@@ -215,7 +215,7 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
         p = drive_params(space, mounting, n_, b_, g_, drives=None if first is None else cols)
         lo, hi = space.preload_lo[n_][:, None, None], space.preload_hi[n_][:, None, None]
         with np.errstate(all="ignore"):
-            regen = reads_regen(cons)
+            regen = model.SCREEN.but(regen=reads_regen(cons))  # the drive block's request
             out_lo = model.drive_response(p, lo, regen)
             out_hi = model.drive_response(p, hi, regen) if cvx or any(c.lower_type for c in cons) else None
             ok = np.ones((K, len(cols)), dtype=bool) if first is None else first[s0:s0 + rows][:, cols].copy()

@@ -26,6 +26,9 @@ from .store import RECORD_VERSION
 WORKER_DEATHS = 2  # a case whose worker dies this often while solving it is recorded as worker_died
 
 
+MAX_TASKS = 10_000  # batches a Dask scheduler holds at a time (run_dask)
+
+
 def _pool_worker(conn, ctx: dict, solve, parent_pid: int) -> None:
     """A local pool worker: receive a case, acknowledge it, solve it, send the record; None ends it."""
     _init_worker(parent_pid)
@@ -199,7 +202,11 @@ def _stop_workers(pool: list, gently: bool) -> None:
         w.conn.close()
 
 
-def run_dask(scheduler, ctx: dict, batches: list, sink):
+def run_dask(scheduler, ctx: dict, batches: list, sink, max_tasks: int | None = None):
+    """Solve ``batches`` (tuples of cases) on a Dask cluster, each finished batch's records to ``sink``.
+
+    At most ``max_tasks`` (default :data:`MAX_TASKS`) batches are submitted at a time (the scheduler's memory
+    and bookkeeping grow with its tasks), the next one as each ends.  Returns (cases lost, reason, workers)."""
     try:
         from dask.distributed import Client, as_completed
     except ImportError:
@@ -217,11 +224,20 @@ def run_dask(scheduler, ctx: dict, batches: list, sink):
     try:
         nw = len(client.scheduler_info().get("workers", {}))
         ctx_f = client.scatter(ctx, broadcast=True)
-        futs = {}
-        for b in batches:
-            futs[client.submit(run_batch, ctx_f, b, pure=False)] = b
-        for f in as_completed(list(futs)):
-            b = futs[f]
+        futs, todo, done = {}, iter(batches), as_completed()
+
+        def submit() -> None:  # the next batch, if any
+            b = next(todo, None)
+            if b is not None:
+                f = client.submit(run_batch, ctx_f, b, pure=False)
+                futs[f] = b
+                done.add(f)
+
+        for _ in range(max_tasks or MAX_TASKS):  # the scheduler holds at most max_tasks tasks; one more as each ends
+            submit()
+        for f in done:
+            b = futs.pop(f)
+            submit()
             try:
                 recs = f.result()
             except Exception as exc:  # worker lost after the scheduler's retries, connection lost...
@@ -236,4 +252,4 @@ def run_dask(scheduler, ctx: dict, batches: list, sink):
     return lost, reason, nw
 
 
-__all__ = ["run_pool", "run_dask", "WORKER_DEATHS"]
+__all__ = ["run_pool", "run_dask", "WORKER_DEATHS", "MAX_TASKS"]

@@ -28,7 +28,13 @@ _SOLVE_LOCK = threading.Lock()
 
 
 def solve_case(context: dict, case: Case) -> dict:
-    """Build and solve one case; never raises for a case-level failure (the reason is recorded)."""
+    """Build and solve one case; never raises for a case-level failure (the reason is recorded).  A machine
+    study's case (``context['kind'] == 'machine'``) is a joint machine solve (:mod:`.machinecase`)."""
+    if context.get("kind") == "machine":
+        from .machinecase import solve_machine_case
+
+        with _SOLVE_LOCK:
+            return solve_machine_case(context, case)
     from ..model import evaluate
     from ..model.function import check_rows, drive_dict
     from ..search import solve

@@ -9,7 +9,7 @@ from ..display import html_table, one_line
 from .cases import Study
 from .lock import StudyLock
 from .run import RunSummary, run_study
-from .store import CaseStore
+from .store import CaseStore, refuse_inputs_in
 from .table import results_table
 
 # columns of the notebook's HTML view (the table itself has every column)
@@ -49,25 +49,8 @@ class StudyResult:
         return html_table(df[cols].to_dict("records"), repr(self), columns=cols)
 
 
-# what a study writes in its output directory (study/run.py, study/table.py), and the folders it fills
+# what an axis study writes in its output directory (study/run.py, study/outputs.py)
 OUTPUT_FILES = ("study.json", "results.csv", "results.parquet", "report.md")
-OUTPUT_DIRS = ("cases", "plots")
-
-
-def _refuse_inputs_in(out, inputs) -> None:
-    """Refuse an output directory where the study would write over (or, resumed with overwrite, delete) one of
-    the files it reads: the study file or its base problem (the command line checks the same)."""
-    from ..errors import InputError
-    from ..fileio import refuse_inputs, same_file
-
-    inputs = [i for i in inputs if i and Path(i).is_file()]
-    for name in OUTPUT_FILES:
-        refuse_inputs(out / name, inputs, what=f"study's {name}", where="out", hint="give another out")
-    for name in OUTPUT_DIRS:
-        for i in inputs:
-            if any(same_file(parent, out / name) for parent in Path(i).resolve().parents):
-                raise InputError(f"the study's {name}/ folder holds the input {i}; give another out",
-                                 source=str(out), where="out")
 
 
 def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, overwrite: bool = False,
@@ -86,7 +69,6 @@ def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, o
     import math
     from dataclasses import replace
     from os import PathLike
-    from pathlib import Path
 
     from ..errors import InputError
     from .spec import load_study
@@ -100,7 +82,7 @@ def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, o
     study = replace(study, time_limit=float(time_limit))
     if out is None:
         out = f"{Path(spec).stem if path else study.name}-results"
-    _refuse_inputs_in(Path(out), [str(spec) if path else study.source, study.base_source])
+    refuse_inputs_in(Path(out), [str(spec) if path else study.source, study.base_source], OUTPUT_FILES)
     store = CaseStore(out)
     have = store.existing()
     if have and overwrite:

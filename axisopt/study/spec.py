@@ -121,7 +121,7 @@ def load_study(path) -> Study:
     else:
         raise root.error("base", "expected the path of a problem YAML or an inline problem mapping")
     sweep_sec = root.read("sweep")
-    sweeps = tuple(_read_sweep(sweep_sec, k) for k in sweep_sec.keys())
+    sweeps = tuple(read_sweep(sweep_sec, k) for k in sweep_sec.keys())
     if not sweeps:
         raise root.error("sweep", "list at least one key to sweep")
     root.done()
@@ -134,7 +134,7 @@ def load_study(path) -> Study:
 
 # ------------------------------------------------------------------------------------------ sweeps
 
-def _read_sweep(sec: Section, key: str) -> Sweep:
+def read_sweep(sec: Section, key: str) -> Sweep:
     node = sec.raw(key)
     where = sec.where(key)
     if not re.fullmatch(SWEEP_KEY, key):
@@ -224,5 +224,5 @@ def _fmt(x: float, unit: str, integer: bool):
 # ------------------------------------------------------------------------------------------- cases
 
 
-__all__ = ["STUDY_SPEC", "load_study"]
+__all__ = ["STUDY_SPEC", "load_study", "read_sweep"]
 

@@ -7,6 +7,8 @@ import json
 import re
 from pathlib import Path
 
+from ..errors import InputError
+from ..fileio import refuse_inputs, same_file
 from ..search.result import FEASIBLE, INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT
 
 OK_STATUSES = (OPTIMAL, FEASIBLE)
@@ -101,3 +103,19 @@ def _json_default(o):
     if isinstance(o, np.generic):
         return o.item()
     raise TypeError(f"not JSON serialisable: {type(o).__name__}")
+
+
+def refuse_inputs_in(out, inputs, files, folders=("cases", "plots")) -> None:
+    """Refuse an output directory ``out`` where a study would write over (or, run again with overwrite, delete)
+    one of the files it reads (``inputs``: the study file, its base problem or machine): one of the ``files``
+    it writes there, or a file inside one of the ``folders`` it fills.  The command line checks the same
+    (cli/outputs.py); this is the check for the Python functions."""
+    out = Path(out)
+    inputs = [i for i in inputs if i and Path(i).is_file()]
+    for name in files:
+        refuse_inputs(out / name, inputs, what=f"study's {name}", where="out", hint="give another out")
+    for name in folders:
+        for i in inputs:
+            if any(same_file(parent, out / name) for parent in Path(i).resolve().parents):
+                raise InputError(f"the study's {name}/ folder holds the input {i}; give another out",
+                                 source=str(out), where="out")

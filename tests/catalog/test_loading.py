@@ -137,6 +137,39 @@ def test_user_catalog_directory_adds_parts(tmp_path):
         load_catalogs([d])
 
 
+def test_the_cached_catalog_reads_a_changed_file_again(tmp_path):
+    """default_catalog keeps one load per process (shared by every problem and design read), keyed by the
+    contents of the files: a user file rewritten at the same path, even to the same size at once, is read
+    again; an unchanged one is served from the cache."""
+    from axisopt.catalog.loading import default_catalog
+
+    d = tmp_path / "mine"
+    d.mkdir()
+    header = (SHIPPED_DIR / "guides.csv").read_text().splitlines()
+    (d / "guides.csv").write_text(header[0] + "\n" + header[1].replace("HIWIN-HG15-ZA", "MY-GUIDE-15") + "\n")
+    first = default_catalog((d,))
+    assert "MY-GUIDE-15" in first.guides.index and default_catalog((d,)) is first
+    (d / "guides.csv").write_text(header[0] + "\n" + header[1].replace("HIWIN-HG15-ZA", "MY-GUIDE-16") + "\n")
+    again = default_catalog((d,))
+    assert "MY-GUIDE-16" in again.guides.index and "MY-GUIDE-15" not in again.guides.index
+    (d / "guides.csv").unlink()
+    assert "MY-GUIDE-16" not in default_catalog((d,)).guides.index
+
+
+def test_the_cached_drive_tables_read_a_changed_file_again(tmp_path):
+    from axisopt.drivecatalog import default_drive_tables
+
+    d = tmp_path / "mine"
+    d.mkdir()
+    lines = (SHIPPED_DIR / "racks.csv").read_text().splitlines()
+    rack = lines[0] + "\n" + lines[1].replace(lines[1].split(",")[0], "MY-RACK-A", 1) + "\n"
+    (d / "racks.csv").write_text(rack)
+    assert "MY-RACK-A" in {r["id"] for r in default_drive_tables((d,)).racks}
+    (d / "racks.csv").write_text(rack.replace("MY-RACK-A", "MY-RACK-B"))
+    ids = {r["id"] for r in default_drive_tables((d,)).racks}
+    assert "MY-RACK-B" in ids and "MY-RACK-A" not in ids
+
+
 @pytest.mark.parametrize("old, new", [("HIWIN,ground", "HIWIN\x00,ground"),  # a text cell (was accepted)
                                       (",16,5,", ",16\x00,5,")])             # a number cell
 def test_nul_byte_is_refused_naming_file_and_line(tmp_path, capsys, old, new):

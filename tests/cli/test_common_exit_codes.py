@@ -21,6 +21,7 @@ def test_solve_status_maps_to_its_exit_code(status, code):
     assert exit_code(status) == code
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_bonmin_point_is_unproven_exit_3(capsys):
     # Bonmin's branch and bound on this nonconvex MINLP proves nothing: never exit 0 (optimal) or 1 (infeasible)
     rc = main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--method", "bonmin", "--time-limit", "20",

@@ -35,12 +35,14 @@ def test_widening_the_search_keeps_the_drive(tmp_path, capsys):
 
 def test_drive_no_is_stated_on_its_own_line(tmp_path, capsys):
     path = _write(tmp_path, LATHE.replace("  drive: yes\n", "  drive: no\n"))
-    res = _solve_json(path, capsys)
+    # one solve for both: the JSON to a file, the text on stdout
+    rj = tmp_path / "r.json"
+    main(["solve", path, "--json", str(rj), "--top", "1"])
+    lines = capsys.readouterr().out.splitlines()
+    res = json.loads(rj.read_text(encoding="utf-8"))
     assert res["best"]["motor"] == "" and res["left_out"] == [
         "the drive (motor, coupling, reduction) is not sized: catalog.drive: no; the axis's motor_inertia and "
         "coupling values stand in and no motor check is made"]
-    main(["solve", path, "--top", "1"])
-    lines = capsys.readouterr().out.splitlines()
     assert any(ln.startswith("  left out: the drive (motor, coupling, reduction) is not sized: catalog.drive: no")
                for ln in lines)
 

@@ -23,6 +23,7 @@ from axisopt.identify.calibration import apply_calibration
 from axisopt.machine import load_machine
 from axisopt.problem import load_problem
 from axisopt.schema import KINDS_OF_FILE, json_schema, quantity_pattern, spec_of, units_of
+from axisopt.study.machine import load_machine_study
 from axisopt.study.spec import load_study
 from axisopt.units import KINDS, parse_quantity
 from axisopt.yamlio import Spec
@@ -53,7 +54,7 @@ def _kind_of(path: Path) -> str:
     if path.parent.name == "studies":
         return "study"
     if path.parent.name == "machines":
-        return "machine"
+        return "machine-study" if name.endswith("_study.yaml") else "machine"
     if "design" in name or name.startswith("paper_") or "data" in path.parent.parts:
         return "design"
     if "problem" in name:
@@ -61,7 +62,8 @@ def _kind_of(path: Path) -> str:
     raise AssertionError(f"cannot tell the kind of {path}")
 
 
-LOADERS = {"design": load_design, "problem": load_problem, "study": load_study, "machine": load_machine}
+LOADERS = {"design": load_design, "problem": load_problem, "study": load_study, "machine": load_machine,
+           "machine-study": load_machine_study}
 SHIPPED = sorted(p for p in PROBLEMS.rglob("*.yaml"))
 
 

@@ -387,8 +387,14 @@ def _inline_problems(cmd: str) -> list[str]:
     argv = shlex.split(cmd)[1:]
     if not argv or argv[0] not in subs:
         return [f"no command {argv[:1]}"]
-    options = {s for a in subs[argv[0]]._actions for s in a.option_strings}
-    bad = [f"unknown option {t.split('=')[0]}" for t in argv[1:]
+    sub, rest = subs[argv[0]], argv[1:]
+    while True:  # a command's own subcommands (axisopt machine solve ...)
+        inner = next((a for a in sub._actions if isinstance(a, argparse._SubParsersAction)), None)
+        if inner is None or not rest or rest[0] not in inner.choices:
+            break
+        sub, rest = inner.choices[rest[0]], rest[1:]
+    options = {s for a in sub._actions for s in a.option_strings}
+    bad = [f"unknown option {t.split('=')[0]}" for t in rest
            if t.startswith("--") and t.split("=")[0] not in options]
     alternatives = [t.split("|") if "|" in t and not t.startswith("-") else [t] for t in argv]
     for variant in itertools.product(*alternatives):

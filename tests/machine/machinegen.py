@@ -4,6 +4,12 @@ import numpy as np
 
 SCREWS = ["HIWIN-G-32x20-b4p763", "HIWIN-G-40x20-b6p35", "HIWIN-G-50x20-b6p35"]
 GUIDES = ["HIWIN-HG20-ZA", "HIWIN-HG25-ZA", "HIWIN-HG30-ZA"]
+# the support bearings that fit each screw's journal (two of them per axis: a few designs, a cheap brute force)
+BEARINGS = {
+    SCREWS[0]: ["HIWIN-WBK20-DF", "HIWIN-WBK25-DF", "HIWIN-WBK25-DFD"],
+    SCREWS[1]: ["HIWIN-WBK25-DF", "HIWIN-WBK30-DF", "HIWIN-WBK25-DFD", "HIWIN-WBK30-DFD"],
+    SCREWS[2]: ["HIWIN-WBK40-DF", "HIWIN-WBK40-DFD", "HIWIN-WBK40-DFF"],
+}
 
 
 def _axis(rng, name, carried_by, direction, normal, *, vertical=False, counterweight=False, twin=False,
@@ -11,6 +17,7 @@ def _axis(rng, name, carried_by, direction, normal, *, vertical=False, counterwe
     mass = float(rng.uniform(150, 400))
     screws = list(rng.choice(SCREWS, size=1))
     guides = list(rng.choice(GUIDES, size=2, replace=False))
+    bearings = list(rng.choice(BEARINGS[screws[0]], size=2, replace=False))
     lines = [f"  {name}:", f"    carried_by: {carried_by}", f"    direction: {direction}", f"    normal: {normal}"]
     if frame:
         kf = rng.uniform(500, 3000, 3)
@@ -32,7 +39,8 @@ def _axis(rng, name, carried_by, direction, normal, *, vertical=False, counterwe
                   "        twin_drive: {span: 1200 mm, cross_stroke: 800 mm}"]
     lines += ["      limits:", f"        min_life: {rng.choice([1000, 3000])} h",
               "      catalog:", "        vendors: [HIWIN]", "        nut_types: [double]", "        drive: no",
-              f"        require: {{screw: [{', '.join(screws)}], guide: [{', '.join(guides)}]}}"]
+              f"        require: {{screw: [{', '.join(screws)}], guide: [{', '.join(guides)}],",
+              f"                  bearing: [{', '.join(bearings)}]}}"]
     return lines
 
 
@@ -62,3 +70,25 @@ def random_machine(seed: int) -> str:
     if rng.random() < 0.15:
         lines += _axis(rng, "W", "frame", "x" if dirs[0][0] != "x" else "y", "z")
     return "\n".join(lines) + "\n"
+
+
+def check_default_equals_exhaustive(seed: int, tmp_path) -> None:
+    """The default machine search against every combination of every axis on random machine ``seed``: the same
+    status and optimum, both feasible, and never worse than the sequential sizing where that one is feasible."""
+    import pytest
+
+    from axisopt.machine import load_machine, solve_machine
+
+    path = tmp_path / "machine.yaml"
+    path.write_text(random_machine(seed))
+    m = load_machine(path)
+    a = solve_machine(m)
+    b = solve_machine(m, "exhaustive")
+    assert a.status == b.status
+    if b.best is None:
+        return
+    va, vb = a.best.value(m.objective), b.best.value(m.objective)
+    assert va == pytest.approx(vb, rel=1e-9)
+    assert a.best.feasible and b.best.feasible
+    if a.sequential is not None and a.sequential.feasible:
+        assert a.gain >= -1e-9 * max(1.0, abs(va))

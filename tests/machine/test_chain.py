@@ -55,3 +55,15 @@ def test_softest_spring_carries_most_strain_energy():
     share = strain_shares([500.0, 300.0], [1e9, 50e6])
     assert share.sum() == pytest.approx(1.0)
     assert np.argmax(share) == 1
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4])
+def test_lowest_frequency_closed_form_equals_the_eigenvalue_solve(n):
+    """Chains of up to three masses take the 3x3 closed form (Smith 1961), longer ones LAPACK: the same."""
+    rng = np.random.default_rng(n)
+    m = rng.uniform(20, 5000, (500, n))
+    k = rng.uniform(1e6, 1e10, (500, n))
+    k[:50] = k[:50, :1]  # equal springs and masses too
+    m[:50] = m[:50, :1]
+    ref = np.array([chain_modes(mi, ki)[0][0] for mi, ki in zip(m, k)])
+    assert lowest_frequency(m, k) == pytest.approx(ref, rel=1e-11)

@@ -164,3 +164,26 @@ def test_estimated_exclude_names_itself_when_it_removes_every_motor(tmp_path, ca
     assert main(["solve", str(path), "--no-sensitivity", "--top", "1"]) in (0, 1)
     out = capsys.readouterr()
     assert "nothing to choose from" not in out.err and "motor SGM7G" in out.out
+
+
+def test_a_reduction_estimate_shows_its_stiffness_not_the_compliance(tmp_path):
+    """Issue 54: the belt stage's torsional stiffness is derived (physics.belt); the estimate shows the
+    catalog's value in N.m/rad (16.68 N.m/arcmin x 60 x 180 / pi), not the compliance the model sums."""
+    import math
+    from pathlib import Path
+
+    from axisopt.design.reader import load_design
+    from axisopt.model.estimates import design_estimates
+
+    rid = "ELATECH-ATL5-100-32x48"
+    with open(Path(SHIPPED_DIR) / "reductions.csv", encoding="utf-8") as f:
+        row = next(r for r in csv.DictReader(f) if r["id"] == rid)
+    per_arcmin = float(row["torsional_stiffness [N.m/arcmin]"])
+    src = (Path(SHIPPED_DIR).parent / "problems" / "vmc_x_design.yaml").read_text(encoding="utf-8")
+    path = tmp_path / "d.yaml"
+    path.write_text(src.replace("  coupling:", f"  reduction: {rid}\n  coupling:", 1), encoding="utf-8")
+    est = {(e.slot, e.column): e for e in design_estimates(load_design(path))}
+    e = est[("reduction", "torsional_stiffness")]
+    assert e.unit == "N.m/rad"
+    assert e.shown == pytest.approx(per_arcmin * 60 * 180 / math.pi, rel=1e-9)
+    assert f"{e.shown:.4g} N.m/rad" in e.text() and "e-05" not in e.text()

@@ -12,6 +12,7 @@ import pytest
 from axisopt.catalog.loading import load_catalogs
 from axisopt.design import load_design
 from axisopt.model import (
+    FULL,
     OUTPUT_TABLE,
     OUTPUTS,
     PROFILE_OUTPUTS,
@@ -46,7 +47,8 @@ DESIGNS = _designs()
 def _response(design, preload=None, **kw):
     p = design_params(design)
     x = stroke_positions(design.axis)
-    return x, axis_response(p, x, design.axis.mounting, design.preload if preload is None else preload, **kw)
+    return x, axis_response(p, x, design.axis.mounting, design.preload if preload is None else preload,
+                            FULL.but(**kw))
 
 
 def _changed(a, b, keys):

@@ -84,6 +84,7 @@ def _won(make, seeds):
     return [w for w in (_check(make(s)) for s in seeds) if w is not None]
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_counterbalance_choice_default_equals_exhaustive():
     won = _won(_vertical, range(7))
 
@@ -93,6 +94,7 @@ def test_counterbalance_choice_default_equals_exhaustive():
     assert any(ax.counterbalance is not None for _w, ax in won)
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_twin_drive_choice_default_equals_exhaustive():
     won = _won(_gantry, range(4))
 
@@ -121,7 +123,13 @@ def _brute_front(p):
     return {k for k, dominated in zip(keys, (ge & gt).any(0)) if not dominated}
 
 
-@pytest.mark.parametrize("make,seed", [(_vertical, 0), (_vertical, 2), (_gantry, 0), (_gantry, 1)])
+# the vertical axis's two cases take over 10 s each on an idle core: marked slow (`pytest -m slow`)
+@pytest.mark.parametrize("make,seed", [
+    pytest.param(_vertical, 0, marks=pytest.mark.slow),
+    pytest.param(_vertical, 2, marks=pytest.mark.slow),
+    (_gantry, 0),
+    (_gantry, 1),
+])
 def test_pareto_over_arrangements_is_the_front_of_all_their_designs(make, seed):
     """A Pareto objective with arrangements: the merged front equals the non-dominated set of every feasible design
     of every arrangement (brute force), each point naming its arrangement; default == exhaustive."""

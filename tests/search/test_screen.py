@@ -100,11 +100,11 @@ def test_chain_outputs_are_what_chain_false_leaves_out():
     ps = sp.params_structured(m, slice(0, 3), dtype=np.float32)
     lo = sp.preload_lo[:3].reshape(-1, 1, 1, 1).astype(np.float32)
     x = sp.positions(m)[-1:]
-    full = model.axis_response(ps, x, m, lo, extras=False)
-    part = model.axis_response(ps, x, m, lo, extras=False, chain=False)
+    full = model.axis_response(ps, x, m, lo, sp.request)
+    part = model.axis_response(ps, x, m, lo, sp.request.but(chain=False))
     # the positioning budget (model.accuracy) is in the chain block, and only where a limit reads it
-    budget = set() if sp.budget else set(BUDGET_OUTPUTS)
+    budget = set() if sp.request.budget else set(BUDGET_OUTPUTS)
     assert set(full) - set(part) == model.CHAIN_OUTPUTS - budget
-    with_budget = model.axis_response(dict(ps, budget=True), x, m, lo, extras=False)
+    with_budget = model.axis_response(ps, x, m, lo, sp.request.but(budget=True))
     assert set(with_budget) - set(part) == model.CHAIN_OUTPUTS
     assert all(np.array_equal(full[k], part[k]) for k in part if k != "duty_torques")

@@ -335,8 +335,8 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
     ref = np.zeros(sp.size)
     for mounting, sel, n, b, _g, prm, x in sp.by_mounting(np.arange(sp.size)):
         k = len(sel)
-        lo = respond(prm, x, mounting, sp.preload_lo[n][:, None])
-        hi = respond(prm, x, mounting, sp.preload_hi[n][:, None])
+        lo = respond(prm, x, mounting, sp.preload_lo[n][:, None], sp.request)
+        hi = respond(prm, x, mounting, sp.preload_hi[n][:, None], sp.request)
         ref[sel] += np.where(sp.fits[n, b], 0.0, RULE_WEIGHT)  # a compatibility rule outweighs every limit
         for c in cons:
             v_lo, v_hi = as_vector(c.value(lo), k), as_vector(c.value(hi), k)

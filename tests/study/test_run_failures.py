@@ -275,6 +275,7 @@ def _wait_for(cond, proc, what, timeout=60.0):
     raise AssertionError(f"timed out waiting for {what}")
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_two_dead_workers_and_a_killed_run_resume_to_the_uninterrupted_rows(reference, tmp_path, capsys):
     st, _, ref = reference
     src = copy_study(tmp_path)

@@ -72,9 +72,11 @@ class Infeasibility:
     # give or choose instead, one sentence per check (never a margin relaxed to 0)
     missing: list = field(default_factory=list)
     # the explanation stopped before every block was scored (at the time limit, or after explain.MAX_OPENED
-    # combinations where a limit no combination meets makes every design miss): the closest designs are those found
-    # by then, the unmeetable limits' best values those reached by then (the least cost exact)
+    # combinations where a limit no combination meets makes every design miss, or after explain.MAX_WORK model
+    # evaluations): the closest designs are those found by then, the unmeetable limits' best values those reached by
+    # then (the least cost exact); ``cut_by`` says which: 'time', 'opened' or 'work' ('' : not cut)
     cut: bool = False
+    cut_by: str = ""
 
     def to_dict(self) -> dict:
         return {"unmeetable": [{"limit": n, "best_achievable": json_value(b), "limit_value": json_value(v), "unit": u}

@@ -24,7 +24,7 @@ def closest_designs(space: Space, constraints, objective, combos) -> list:
         grid = np.linspace(space.preload_lo[n], space.preload_hi[n], G, axis=1)  # as np.linspace(lo, hi, G) each
         mounting = space.mountings[mi]
         p = space.params_flat(mounting, np.repeat(n, G), np.repeat(b, G), np.repeat(g, G))
-        out = respond(p, space.grid[mounting], mounting, grid.reshape(-1, 1))
+        out = respond(p, space.grid[mounting], mounting, grid.reshape(-1, 1), space.request)
         tot = np.zeros(len(rows) * G)
         for c in constraints:
             tot += c.violation(as_vector(c.value(out), len(rows) * G))

@@ -30,7 +30,7 @@ from .. import bestfirst
 from ..drivebounds import PER_DRIVE_MIN, drive_hull
 from ..parts import drive_stiffnesses
 from ..task.constraints import reads_regen
-from ..task.space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_drive
+from ..task.space import COUPLING_KEYS, DRIVE_KEYS, Space, respond, respond_chain, respond_drive
 from .answer import Infeasibility
 from .closest import closest_designs
 from .optimism import (
@@ -52,6 +52,14 @@ CLOSEST = 5
 # 6 300; a lathe Z with a budget of a quarter of its cheapest combination would score 580 M in 1 400 blocks
 # (35 s): it stops after 10 of its blocks of 420 000 (guides x drives)
 MAX_OPENED = 4_000_000
+# The best-first explanation's work in any case: it stops once it has made this many model evaluations
+# (combinations x nut positions, at each preload end and, for the stiffness chain, each coupling stiffness; a count,
+# not a time: the same answer on any machine; Infeasibility.cut).  Where the bounds are weak (every limit met by
+# some combination, the closest designs missing several by a few per cent) the explanation otherwise scores block
+# after block until the time limit: a generated 6 m twin-drive gantry of 2 x 10^10 combinations scored 18 blocks
+# of 330 000 in 100 s (its closest designs settled after the fourth, 7.2 M evaluations; issue 52).  The shipped
+# infeasible examples make 0.2 M (infeasible_drive_problem) and 2.5 M (infeasible_problem).
+MAX_WORK = 8_000_000
 
 
 FIRST_BATCH = 4  # blocks scored in the first round of the best-first explanation; doubles each round (4: 16 %
@@ -66,6 +74,7 @@ class _Tally:
         self.best = {c.name: None for c in constraints}
         self.met = {c.name: False for c in constraints}
         self.hopeless = False  # the block bounds show a limit no combination meets (best-first explanation)
+        self.work = 0  # model evaluations made (combinations x positions, each preload end and coupling value)
 
     def add(self, c, v, miss, fits):
         self.met[c.name] = self.met[c.name] or bool(((miss <= 0) & fits).any())
@@ -92,13 +101,15 @@ def _closest(top_idx, top_score, idx, score, n):
 
 def explain_infeasible(space: Space, constraints, objective, n_closest: int = CLOSEST, *,
                        every_combination: bool = False, deadline: float | None = None,
-                       max_opened: int | None = MAX_OPENED) -> Infeasibility:
+                       max_opened: int | None = MAX_OPENED, max_work: int | None = MAX_WORK) -> Infeasibility:
     """Limits no combination meets (with the best value any reaches) and the ``n_closest`` designs of
     lowest miss score (ties: lowest combination number).  Best-first over blocks unless
     ``every_combination`` (module docstring); both give the same answer.  ``deadline`` (a time.perf_counter()
     value): the explanation stops there with the closest designs found so far (``Infeasibility.cut``); so does the
     best-first one, when the block bounds show a limit that no combination meets on its own, once the blocks it
-    scored hold ``max_opened`` combinations (None: no such limit; see :data:`MAX_OPENED`)."""
+    scored hold ``max_opened`` combinations (None: no such limit; see :data:`MAX_OPENED`), and in any case once it
+    has made ``max_work`` model evaluations (:data:`MAX_WORK`; None: no bound).  ``Infeasibility.cut_by`` says
+    which stopped it: 'time', 'opened' or 'work'."""
     tally = _Tally(constraints)
     top_idx, top_score = np.zeros(0, np.int64), np.zeros(0)
     scores = miss_scores(space, constraints, tally) if every_combination else \
@@ -112,9 +123,13 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
             shown = now
             bestfirst.LOG.info(f"  explaining: {opened:,} combinations scored for the closest designs, "
                                f"{now - t0:.0f} s")
-        if (deadline is not None and time.perf_counter() > deadline) or \
-                (tally.hopeless and max_opened is not None and opened >= max_opened):
-            cut = True
+        if deadline is not None and time.perf_counter() > deadline:
+            cut = "time"
+        elif tally.hopeless and max_opened is not None and opened >= max_opened:
+            cut = "opened"
+        elif max_work is not None and not every_combination and tally.work >= max_work:
+            cut = "work"
+        if cut:
             break
     unmeetable = []
     for c in constraints:
@@ -124,7 +139,23 @@ def explain_infeasible(space: Space, constraints, objective, n_closest: int = CL
                 best = min(best, cheapest_cost(space))
             unmeetable.append((c.label, best / c.factor, c.limit / c.factor, c.unit))
     return Infeasibility(unmeetable, closest_designs(space, constraints, objective, [int(c) for c in top_idx]),
-                         cut=cut)
+                         cut=bool(cut), cut_by=cut or "")
+
+
+def cut_note(why: Infeasibility) -> str:
+    """What stopped the explanation ``why``, one clause for the answer's message ('' : it was not cut)."""
+    if why.cut_by == "time":
+        return ("the explanation stopped at the time limit: the closest designs are those found by then (a longer "
+                "--time-limit explains further)")
+    if why.cut_by == "opened":
+        return (f"a limit no combination meets on its own makes every design miss: the explanation stopped after "
+                f"scoring {MAX_OPENED:,} combinations, and the closest designs (and what to relax for them) are "
+                "those found by then, perhaps not the closest of all")
+    if why.cut_by == "work":
+        return (f"the explanation stopped after {MAX_WORK:,} model evaluations (its bound of work, the same on any "
+                "machine): the closest designs (and what to relax for them) are those found by then, perhaps not "
+                "the closest of all")
+    return ""
 
 
 def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int):
@@ -255,8 +286,9 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
     # there unless one of those reads them
     chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in mech if not c.lower_type)
     regen = reads_regen(constraints)
-    out_lo = respond(p, x, mounting, lo, drive_block=not two_stage, chain=chain_lo, regen=regen)
-    out_hi = respond(p, x, mounting, hi, drive_block=not two_stage, regen=regen)
+    tally.work += 2 * nc * Bx * Gm * len(x)
+    out_lo = respond(p, x, mounting, lo, space.request.but(drive=not two_stage, chain=chain_lo, regen=regen))
+    out_hi = respond(p, x, mounting, hi, space.request.but(drive=not two_stage, regen=regen))
     for c in mech:
         v = favourable_bound(c, out_lo, out_hi, shape)
         miss = c.violation(v)
@@ -268,10 +300,11 @@ def _score_nuts(space: Space, constraints, tally: _Tally, mi: int, nut_idx, bear
         score = np.broadcast_to(score[..., None], shape_d).copy()
         by_k = []
         cpl_lo = any(not c.lower_type for c in cpl)  # minimum stiffness and frequency: the highest preload only
-        for k in k_cpl if cpl else ():
-            pk = params(mechanics=True, coupling_stiffness=float(k))
-            by_k.append((respond(pk, x, mounting, lo, drive_block=False) if cpl_lo else None,
-                         respond(pk, x, mounting, hi, drive_block=False)))
+        if cpl:  # p: params(mechanics=True); the chain alone, once per coupling stiffness (one heat balance)
+            ks = [float(k) for k in k_cpl]
+            tally.work += (1 + cpl_lo) * len(ks) * nc * Bx * Gm * len(x)
+            by_lo = respond_chain(p, x, mounting, lo, ks) if cpl_lo else [None] * len(ks)
+            by_k = list(zip(by_lo, respond_chain(p, x, mounting, hi, ks)))
         for c in cpl:
             v = np.stack([favourable_bound(c, *outs, shape) for outs in by_k], axis=-1)[..., group]
             miss = c.violation(v)
@@ -336,6 +369,7 @@ def _score_drives(space: Space, mounting: str, drive, tally: _Tally, nut_idx, be
             continue
         sub = score.shape[:3] + (len(cols),)
         pd = space.params_drives(mounting, nut_idx, bearing_idx, drives=cols)  # the mechanics once per guide
+        tally.work += 2 * int(np.prod(sub))
         d_lo, d_hi = respond_drive(pd, lo, regen), respond_drive(pd, hi, regen)
         part = score[..., cols]
         for c in drive:

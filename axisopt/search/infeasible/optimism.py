@@ -118,8 +118,8 @@ def block_optimism(space: Space, constraints, drive: bool = True):
                         out_lo, out_hi = block_outputs(space, mounting, sl, str(t))
                 else:
                     p = optimistic_guide_params(space, mounting, sl, str(t))
-                    out_lo = respond(p, x, mounting, lo, drive_block=False, chain=chain_lo)
-                    out_hi = respond(p, x, mounting, hi, drive_block=False)
+                    out_lo = respond(p, x, mounting, lo, model.MECHANICS.but(chain=chain_lo))
+                    out_hi = respond(p, x, mounting, hi, model.MECHANICS)
                 for c in bounded:
                     v = np.asarray(favourable_bound(c, out_lo, out_hi, shape + (1,))[..., 0], dtype=float)
                     pick = np.maximum if c.sense == ">=" else np.minimum

@@ -48,7 +48,7 @@ def _build(space, mounting, constraints, objective):
     lo = ca.dot(ca.DM(space.preload_lo), z["nut"]) + FLOOR * float(np.mean(space.preload_hi))
     hi = ca.dot(ca.DM(space.preload_hi), z["nut"]) + FLOOR * float(np.mean(space.preload_hi))
     x = space.positions(mounting)
-    out = model.axis_response(p, ca.DM(x), mounting, lo + w * (hi - lo))
+    out = model.axis_response(p, ca.DM(x), mounting, lo + w * (hi - lo), space.request.but(extras=True))
     g, lbg, ubg = [], [], []
     for s in SLOTS:
         g.append(ca.sum1(z[s]))

@@ -61,7 +61,8 @@ def casadi_model(space, mounting, constraints, objective):
     p = one_hot_params(space, mounting, z)
     record = []
     with implicit_shift(record) as shift:
-        out = model.axis_response(p, ca.DM(space.positions(mounting)), mounting, pre)
+        out = model.axis_response(p, ca.DM(space.positions(mounting)), mounting, pre,
+                                     space.request.but(extras=True))
     outs = [ca.SX(out[key]) for key, _w in objective.terms] + [ca.SX(out[c.key]) for c in constraints]
     s = ca.vertcat(*[ca.vec(sym) for sym, _f in record]) if record else ca.SX(0, 1)
     ratios = ca.vertcat(*[ca.vec(f) for _s, f in record]) if record else ca.SX(0, 1)

@@ -47,12 +47,19 @@ def as_dtype(ps: dict, dtype) -> dict:
 
 
 
-def respond(p, x, mounting, preload, drive_block: bool = True, chain: bool = True, regen: bool = True) -> dict:
-    """:func:`axisopt.model.axis_response` on numpy, without the outputs no limit or objective uses
-    (axial-torsional frequency, damping ratio); ``drive_block``, ``chain`` and ``regen`` as there."""
+def respond(p, x, mounting, preload, request: model.Request) -> dict:
+    """:func:`axisopt.model.axis_response` on numpy for ``request`` (a stage's:
+    :attr:`Space.request`, or that narrowed with :meth:`~axisopt.model.Request.but`), division by
+    zero silent."""
     with np.errstate(divide="ignore"):
-        return model.axis_response(p, x, mounting, preload, extras=False, drive_block=drive_block, chain=chain,
-                                   regen=regen)
+        return model.axis_response(p, x, mounting, preload, request)
+
+
+def respond_chain(p, x, mounting, preload, coupling_stiffnesses=None):
+    """:func:`axisopt.model.chain_response` on numpy: the outputs the coupling's stiffness changes
+    (:data:`COUPLING_KEYS`) without the rest of the model (a list, one per value of ``coupling_stiffnesses``)."""
+    with np.errstate(divide="ignore"):
+        return model.chain_response(p, x, mounting, preload, coupling_stiffnesses)
 
 
 # Outputs the motor, coupling and reduction change that the drive block computes without the stiffness chain
@@ -77,7 +84,7 @@ def respond_drive(p, preload, regen: bool = True) -> dict:
     """:func:`axisopt.model.drive_response` on numpy: the motor-torque limits without the stiffness chain
     (``regen``: also the regenerated energy and power)."""
     with np.errstate(divide="ignore"):
-        return model.drive_response(p, preload, regen)
+        return model.drive_response(p, preload, model.SCREEN.but(regen=regen))
 
 
 @dataclass
@@ -124,9 +131,10 @@ class Space:
     # the lead accuracy grade of each nut row (screw x grade: parts.screw_grade_rows), or None: every screw at
     # the cheapest grade it is made in (no positioning limit, no catalog.screw_grades)
     grades: np.ndarray | None = field(repr=False, default=None)
-    # whether a limit reads the positioning budget (model.accuracy): the parameter dicts say so (``p["budget"]``),
-    # and the model leaves the budget out otherwise (its extra stiffness-chain points cost the screening time)
-    budget: bool = True
+    # what the stages ask the model for (:func:`respond`): every output a limit or objective can
+    # read, the positioning budget (model.accuracy) only if a limit reads it (its extra
+    # stiffness-chain points cost the screening time; search.parts sets it)
+    request: model.Request = model.SCREEN
     _cache: dict = field(repr=False, default_factory=dict)
 
     def unravel(self, idx):
@@ -176,7 +184,6 @@ class Space:
         cp = None if self.c_arr is None or mechanics else shaped(self.c_arr, (1, 1, -1, 1), dtype)
         rd = None if self.r_arr is None or mechanics else shaped(self.r_arr, (1, 1, -1, 1), dtype)
         ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g, mo, cp, rd)
-        ps["budget"] = self.budget
         if mechanics and coupling_stiffness is not None:
             ps["coupling_stiffness"] = coupling_stiffness
         ps = as_dtype(ps, dtype)
@@ -196,7 +203,6 @@ class Space:
         g = shaped({k: v[::self.n_drives] for k, v in self.g_arr.items()}, (1, 1, -1, 1), dtype)
         ps = model.axis_params(self.problem.axis_for(mounting), s, nt, b, g,
                                *self.drive_columns((1, 1, 1, -1), dtype, drives))
-        ps["budget"] = self.budget
         return as_dtype(ps, dtype)
 
     def drive_columns(self, shape, dtype=float, drives=None) -> tuple:
@@ -228,5 +234,4 @@ class Space:
                                None if self.m_arr is None else pick(self.m_arr, g),
                                None if self.c_arr is None else pick(self.c_arr, g),
                                None if self.r_arr is None else pick(self.r_arr, g))
-        ps["budget"] = self.budget
         return ps

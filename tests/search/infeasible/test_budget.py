@@ -84,6 +84,7 @@ def _step_below(v: float) -> float:
     return v - 10.0 ** (math.floor(math.log10(v)) - 2)
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_impossible_budget_leads_with_the_least_budget(tmp_path):
     res = solve(_lathe(tmp_path, "500 EUR"), "default")
     assert res.best is None
@@ -98,6 +99,7 @@ def test_impossible_budget_leads_with_the_least_budget(tmp_path):
     assert short.best is None and short.certificate.proven
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_least_cost_per_drive_is_the_least_over_guides_and_bearings(tmp_path):
     """The screening's and the explanation's per-drive cost bound (drivebounds.least_cost) is the least cost
     over the block's guides and each group's bearings, for every drive of the lathe's 4 531: every (guide,

@@ -147,3 +147,20 @@ def test_infeasible_says_when_the_lost_motion_limit_left_the_reductions_out():
     assert r.best is None and f"{n} reductions (gearboxes, belts) were left out" in r.message
     r2 = solve(p.with_limit("max_backlash", 1e-3), sensitivities=False)  # 1 mm: every gearbox is formed
     assert "were left out" not in (r2.message or "")
+
+
+def test_explanation_work_is_bounded_and_said():
+    """The best-first explanation stops after MAX_WORK model evaluations whatever the bounds (issue 52: a
+    gantry's weak bounds scored block after block until the time limit): cut by a small bound of work it still
+    names closest designs, none closer than the uncut ones, and says what stopped it; the shipped infeasible
+    problem (2.5 M evaluations) is explained uncut, the default bound equal to none."""
+    p, sp, cons, spec = _shipped("infeasible_drive_problem.yaml")
+    full = E.explain_infeasible(sp, cons, spec, max_work=None)
+    assert not full.cut and full.cut_by == ""
+    cut = E.explain_infeasible(sp, cons, spec, max_work=1)
+    assert cut.cut and cut.cut_by == "work" and cut.closest
+    assert "model evaluations" in E.cut_note(cut) and f"{E.MAX_WORK:,}" in E.cut_note(cut)
+    assert sum(cut.closest[0].misses.values()) >= sum(full.closest[0].misses.values()) - 1e-12
+    assert E.explain_infeasible(sp, cons, spec).to_dict() == full.to_dict()
+    p, sp, cons, spec = _shipped("infeasible_problem.yaml")
+    assert not E.explain_infeasible(sp, cons, spec).cut

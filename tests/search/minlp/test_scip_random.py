@@ -30,6 +30,7 @@ def test_random_catalogs_equal_exhaustive(seed):
     agrees_with_exhaustive(solve(p, "scip", time_limit=20), solve(p, "exhaustive", top=1, sensitivities=False))
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_random_catalog_with_drive_and_frequency_equals_exhaustive():
     rng = np.random.default_rng(105)
     cat = make_catalog(rng, n_screws=3, nuts_per_screw=2, n_bearings=3, n_guides=2)
@@ -40,6 +41,7 @@ def test_random_catalog_with_drive_and_frequency_equals_exhaustive():
     agrees_with_exhaustive(solve(p, "scip", time_limit=20), solve(p, "exhaustive", top=1, sensitivities=False))
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_random_catalog_with_counterweight_equals_exhaustive():
     """A counterweighted vertical axis with a drive: the one-hot MINLP sees the balance force in the loads and the
     counterweight's inertia and weight in the motor torques as the default method does."""
@@ -60,6 +62,7 @@ def test_random_catalog_with_counterweight_equals_exhaustive():
     agrees_with_exhaustive(solve(p, "scip", time_limit=20), e)
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_random_catalog_with_reductions_equals_exhaustive():
     """(motor, coupling, reduction or none) drives: the one-hot MINLP over the guide-and-drive entries sees the
     reduction's parameters (ratio, efficiency, input inertia, T2B/T2N, n1Max, Ct21, backlash, price) as the

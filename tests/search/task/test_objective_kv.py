@@ -55,11 +55,11 @@ def test_kv_rises_with_preload_on_the_model():
     from pathlib import Path
 
     from axisopt.design import load_design
-    from axisopt.model import axis_response, design_params, positions
+    from axisopt.model import SCREEN, axis_response, design_params, positions
 
     d = load_design(Path(__file__).resolve().parents[3] / "problems" / "vmc_x_design.yaml")
     p = design_params(d)
     x = positions(d.axis)
     pre = np.linspace(float(d.nut["preload_min"]), float(d.nut["preload_max"]), 25)
-    kv = [np.min(axis_response(p, x, d.axis.mounting, q, extras=False)["kv"]) for q in pre]
+    kv = [np.min(axis_response(p, x, d.axis.mounting, q, SCREEN)["kv"]) for q in pre]
     assert np.all(np.diff(kv) >= -1e-12 * max(kv))
