@@ -21,12 +21,12 @@ INPUT_LIMITS = {
     "yaml": 20_000_000,  # design, problem, study, calibration YAML
     "catalog": 50_000_000,  # one catalog CSV
     "data": 10_000_000,  # a reduced-table diagnose CSV (static, friction, frequency, FRF)
-    "time record": 40_000_000,  # a diagnose time record
+    "time record": 250_000_000,  # a diagnose time record (a 20-minute record at 1 kHz is about 70 MB)
     "case": 20_000_000,  # a study's case record (JSON)
 }
 # Rows of the diagnose files (the fits grow faster than linearly with them)
 MAX_DATA_ROWS = 50_000
-MAX_TIME_SAMPLES = 500_000
+MAX_TIME_SAMPLES = 3_000_000  # 50 minutes at 1 kHz; beyond 150 000 samples a record is fitted in windows
 
 _KIND_NAMES = {_stat.S_IFIFO: "a FIFO (named pipe)", _stat.S_IFCHR: "a character device",
                _stat.S_IFBLK: "a block device", _stat.S_IFSOCK: "a socket", _stat.S_IFDIR: "a directory",

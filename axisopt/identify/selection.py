@@ -87,6 +87,6 @@ class SelectionRule:
 
 
 # reduced tables: plausibility before the (costly) cross-validation; 5 candidates give 10 pair fits
-TABLE_RULE = SelectionRule(order=(DBIC, PLAUSIBLE, GAIN), pair_pool=5, pair_needs_signal=False)
+TABLE_RULE = SelectionRule(order=(DBIC, PLAUSIBLE, GAIN), pair_pool=5, pair_needs_signal=False, resolution=2.0)
 # time records: the held-out gain of every candidate is known; 6 candidates that lower BIC alone give 15 pair fits
 TIME_RULE = SelectionRule(order=(DBIC, GAIN, PLAUSIBLE), pair_pool=6, pair_needs_signal=True)

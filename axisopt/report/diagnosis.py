@@ -21,7 +21,7 @@ from .diagexplain import (
     unidentifiable,
     why_none,
 )
-from .text import fit_lines
+from .text import fit_lines, wrap_words
 
 
 def _rmse_units(diag, pred):
@@ -75,6 +75,10 @@ def diagnosis_dict(diag) -> dict:
             for rnd in diag.rounds
         ],
         "verdict": diag.verdict,
+        "equivalent": [{"round": k, "named": a, "alternative": b, "percent_apart": apart,
+                        "text": equivalent_text(a, b, apart, eff, floor)}
+                       for k, a, b, apart, eff, floor in diag.equivalent],
+        "regime": list(diag.regime),
         "accepted": [],
         "holdout_rmse_baseline": diag.cv_baseline,
         "holdout_rmse_final": diag.cv_final,
@@ -237,6 +241,19 @@ def _torque_of(diag):
     return None
 
 
+def equivalent_text(a: str, b: str, apart: float, effects, floor) -> str:
+    """Two explanations of a table (effects or pairs) the held-out data do not tell apart, and what would;
+    ``floor``: their held-out RMSE in noise floors when both are at it (else None: within the resolution)."""
+    from ..identify.selection import TABLE_RULE
+
+    ev = "; ".join(f"for {e.name}, {getattr(e.time, 'evidence', '') or e.evidence or 'a test that shows it alone'}"
+                   for e in dict.fromkeys(effects))
+    why = (f"within the rule's {TABLE_RULE.resolution:g} % resolution" if floor is None else
+           f"both at the noise floor ({floor[0]:.2f}x and {floor[1]:.2f}x)")
+    return (f"{a} and {b} explain the data equally well: held-out RMSE {apart:.2f} % apart, {why}; {a} is named "
+            f"for its lower dBIC, not because the data tell them apart. To separate them: {ev}.")
+
+
 def diagnosis_text(diag) -> str:
     d = diagnosis_dict(diag)
     torque = _torque_of(diag)
@@ -314,6 +331,10 @@ def diagnosis_text(diag) -> str:
             L.append(f"  check: {f}")
     for e in d["other_explanations"]:
         L.append(f"  also consider: {e}")
+    for f in d["regime"]:
+        L.append(f"  ! {f}")
+    for e in d["equivalent"]:
+        L += wrap_words("~ " + e["text"], indent="  ", cont="      ")
     if d["frf_modes"]:
         L.append(f"resonance by position (peak of |G|){'measured':>15}{'|G| um/N':>10}{'baseline':>11}{'model':>10}"
                  f"{'damping':>9}")

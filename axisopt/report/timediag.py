@@ -126,9 +126,12 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
     L = [f"time-record identification (IDIM) of {diag.design.get('name', 'the axis')}: {q} data, "
          + ("table coordinate" if q == "force" else "motor angle coordinate")]
     L += wrap_words(f"estimation  {rec.name}: {rec.n} samples at {p.fs:.6g} Hz, {er.n} regression rows"
-               + (f"; {rec.gain_note}" if rec.gain_note else ""), cont="              ")
+               + (f"; {rec.gain_note}" if rec.gain_note else "")
+               + (f"; {rec.run_note()}" if rec.run_note() else ""), cont="              ")
     for v in diag.validation:
-        L.append(f"  validation  {v.record.name}: {v.record.n} samples, {v.n} regression rows")
+        note = v.record.run_note()
+        L += wrap_words(f"validation  {v.record.name}: {v.record.n} samples, {v.n} regression rows"
+                        + (f"; {note}" if note else ""), cont="              ")
     L += wrap_words(f"filter      zero-phase Butterworth, order {BUTTER_ORDER} (|H|^2 by FFT, as forward-backward), "
                f"cut-off {p.fc:.1f} Hz: {p.rule}; motion bandwidth {p.f_motion:.1f} Hz", cont="              ")
     L += wrap_words(f"decimation  parallel: every column and the {q} low-passed at {p.fdec:.1f} Hz, every {p.nd}th "

@@ -9,6 +9,10 @@ of a real test (speeds +-0.5 %, positions +-1 mm); the nut loses 6 % of the axia
 
 table_x_warm_friction.csv: the same axis at four temperatures of a warm-up (20-42 degC); the viscous friction,
 1 200 N.s/m at 20 degC, halves every 20 K (the grease's viscosity, beta = ln 2 / 20 K = 0.0347 /K).
+
+table_x_two_speeds.csv: a slow friction test at two speeds only (2 and 7 mm/s both ways, three readings each)
+of the axis with a drag growing with v|v| (4e6 N.s^2/m^2, 196 N at 7 mm/s): two speeds fit a slope in v as
+well as one in v|v|, the example of two explanations the data do not tell apart.
 """
 
 import math
@@ -22,15 +26,15 @@ FV = 137.0  # [N.s/m] the design's viscous friction (guides)
 SPEEDS = np.geomspace(0.002, 0.3, 10)  # [m/s]
 
 
-def rows(rng, *, axial=(None,), temps=(None,), ka=0.0, fv20=FV, beta=0.0):
+def rows(rng, *, axial=(None,), temps=(None,), ka=0.0, fv20=FV, beta=0.0, speeds=SPEEDS, drag=0.0, rep=2):
     out = []
     for fa in axial:
         for tc in temps:
             for x in (0.2, 0.5):
-                for v in np.r_[SPEEDS, -SPEEDS]:
-                    for _ in range(2):
+                for v in np.r_[speeds, -speeds]:
+                    for _ in range(rep):
                         dT = (tc - 20.0) if tc is not None else 0.0
-                        f = math.copysign(FC + ka * abs(fa or 0.0), v) + fv20 * math.exp(-beta * dT) * v
+                        f = math.copysign(FC + ka * abs(fa or 0.0), v) + fv20 * math.exp(-beta * dT) * v + drag * v * abs(v)
                         f += 3.0 * rng.standard_normal()
                         row = [v * (1 + 0.005 * rng.uniform(-1, 1)) * 1e3, f]
                         row += [fa] if fa is not None else []
@@ -48,6 +52,8 @@ def main():
           rows(np.random.default_rng(56), axial=(-3000.0, -1500.0, 0.0, 1500.0, 3000.0), ka=0.06))
     write(HERE / "table_x_warm_friction.csv", "velocity [mm/s],friction_force [N],temperature [degC],position [mm]",
           rows(np.random.default_rng(57), temps=(20.0, 27.0, 34.0, 42.0), fv20=1200.0, beta=math.log(2) / 20.0))
+    write(HERE / "table_x_two_speeds.csv", "velocity [mm/s],friction_force [N],position [mm]",
+          rows(np.random.default_rng(58), speeds=np.array([0.002, 0.007]), drag=4.0e6, rep=3))
 
 
 if __name__ == "__main__":

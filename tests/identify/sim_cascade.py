@@ -193,7 +193,7 @@ def write(path, rec: dict, columns=("external_force",), header_lines=(), current
     else:
         cols.append("force [N]")
         data.append(rec["force"])
-    units = {"external_force": "N", "normal_load": "N", "temperature": "degC"}
+    units = {"external_force": "N", "normal_load": "N", "temperature": "degC", "payload": "kg"}
     for c in columns:
         cols.append(f"{c} [{units[c]}]")
         data.append(rec[c])

@@ -91,6 +91,7 @@ class Effect:
     kinds: tuple = ()
     signature = ""
     needs: tuple = ()  # (kind, column) pairs that must vary for the effect to be testable
+    evidence: str = ""  # for tables: the measurement that shows it apart (time records: ``time.evidence``)
     time: TimeModel | None = None
 
     def applicable(self, ctx) -> bool:

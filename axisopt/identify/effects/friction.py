@@ -117,6 +117,8 @@ class Viscous(Effect):
     title = "viscous (speed-proportional) friction differs from catalog"
     kinds = ("friction",)
     signature = "residual linear and odd in v"
+    evidence = ("steady-state friction at constant speeds over a decade or more up to the top speed: a straight "
+                "line in v")
 
     def params(self, ctx):
         v = _top_friction_speed(ctx)

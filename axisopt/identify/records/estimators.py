@@ -112,11 +112,13 @@ def fit_controller(rows: Rows) -> Controller | None:
     rec, proc = rows.record, rows.proc
     if rec.reference is None:
         return None
-    r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2)
+    segs = rec.segments
+    r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2, segs)
     X = np.column_stack([r - rows.sig["q"], dr - rows.sig["v"], dr, ddr])
-    y = lowpass(rec.effort, proc.fs, proc.fc)
+    y = lowpass(rec.effort, proc.fs, proc.fc, segments=segs)
     e = int(2.0 * proc.fs / proc.fc)
-    X, y = X[e:-e], y[e:-e]
+    inner = np.concatenate([np.arange(a + e, b - e) for a, b in segs or ((0, rec.n),)])
+    X, y = X[inner], y[inner]
     th = lstsq(X, y)
     res = y - X @ th
     ss = float(np.sum((y - y.mean()) ** 2))
@@ -130,8 +132,9 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
                   substeps: int = 2) -> np.ndarray | None:
     """Closed loop of the identified rigid model driven by the record's reference; the position [q units] at
     every sample, or None if the simulation diverges.  Exact sticking (implicit Coulomb step)."""
-    r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2)
-    m = params.get("M", 0.0)
+    r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2, rec.segments)
+    starts = {a for a, _ in rec.segments}  # a long record's windows: the loop restarts at rest in each
+    m = params.get("M", 0.0) + (float(rec.aux["payload"][0]) if "payload" in rec.aux else 0.0)
     if not m > 0:
         return None
     fv, fc, off = params.get("Fv", 0.0), params.get("Fc", 0.0), params.get("offset", 0.0)
@@ -167,7 +170,10 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
     rl, drl, ddrl = r.tolist(), dr.tolist(), ddr.tolist()
     exp = math.exp
     bound = 1e3 * (float(np.ptp(rec.q)) + 1.0)
+    ql = rec.q.tolist()
     for k in range(rec.n):
+        if k in starts:
+            q, v = ql[k], 0.0
         out[k] = q
         u = kp * (rl[k] - q) + kd * (drl[k] - v) + kv * drl[k] + ka * ddrl[k] - off
         load = levl[k] + kload * abs(u)
@@ -226,7 +232,7 @@ def instrumental_variables(rows: Rows, terms, shape=None, ctrl: Controller | Non
         lag = 2 * rows.proc.nd
         Wf = full_matrix(rows.sig, terms, rows.proc, shape)
         Vf = np.vstack([np.repeat(Wf[:1], lag, axis=0), Wf[:-lag]])
-        V = decimate(Vf, rows.proc, rows.keep)
+        V = decimate(Vf, rows.proc, rows.keep, rows.record.segments)
         th = solve(V)
         note = "delayed-regressor instrument (no reference column: the closed loop cannot be re-simulated)"
         it = 1
@@ -239,7 +245,8 @@ def instrumental_variables(rows: Rows, terms, shape=None, ctrl: Controller | Non
                 note = f"closed-loop simulation diverged at iteration {it}; LS kept"
                 th, V = ls.theta.copy(), W
                 break
-            V = matrix(rows, terms, shape, sig={**rows.sig, **signals(qs, rows.proc)})  # conditions as measured
+            sim = signals(qs, rows.proc, rows.record.segments)
+            V = matrix(rows, terms, shape, sig={**rows.sig, **sim})  # conditions as measured
             for j in own:
                 V[:, j] = W[:, j]
             new = solve(V)

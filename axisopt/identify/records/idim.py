@@ -367,7 +367,7 @@ def diagnose_time_files(paths, *, plant, gain: str | None = None, candidates=Non
                         max_effects: int = 3) -> TimeDiagnosis:
     """Read the records (the first the estimation run, the others validation runs) and diagnose them against
     ``plant`` (:class:`.plant.Plant`: lead, efficiency and stroke are used)."""
-    from .record import check_same_columns, read_time_record
+    from .record import check_same_columns, read_time_record, windowed
 
     if candidates:
         effects = time_effects()
@@ -385,5 +385,6 @@ def diagnose_time_files(paths, *, plant, gain: str | None = None, candidates=Non
     to_q = 1.0 if recs[0].quantity == "force" else 2.0 * math.pi / plant.lead
     design = {"name": plant.name, "lead": plant.lead, "efficiency": plant.efficiency,
               "reduction": plant.reduction}
+    recs = [windowed(r) for r in recs]
     return diagnose_time(recs, stroke_q=plant.stroke * to_q, candidates=candidates, max_effects=max_effects,
                          design=design, lead_q=plant.lead * to_q)

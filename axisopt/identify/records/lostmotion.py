@@ -49,8 +49,9 @@ def lost_motion_rows(rows: Rows, m1: float, fmin: float):
     certain there): e = e0 + (b/2) sgn F + f/k - (m1/k) a1 - (c/k) de/dt."""
     rec = rows.record
     if "lost_motion" not in rows.sig:  # e, the motor side's own acceleration and de/dt, filtered as the effort is
-        sm, se = signals(rec.motor_q, rows.proc), signals(rec.motor_q - rec.q, rows.proc)
-        rows.sig["lost_motion"] = decimate(np.column_stack([se["q"], sm["a"], se["v"]]), rows.proc, rows.keep)
+        segs = rec.segments
+        sm, se = signals(rec.motor_q, rows.proc, segs), signals(rec.motor_q - rec.q, rows.proc, segs)
+        rows.sig["lost_motion"] = decimate(np.column_stack([se["q"], sm["a"], se["v"]]), rows.proc, rows.keep, segs)
     e, a1, de = rows.sig["lost_motion"].T
     F = rows.y - m1 * a1
     ok = np.abs(F) > fmin

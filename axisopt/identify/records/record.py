@@ -18,6 +18,9 @@ Format (units in the headers, any unit of the quantity)::
 * ``normal_load [N]`` (optional): a normal load on the guide carriages besides the table's weight (a payload,
   a vertical process force); ``temperature [degC]`` (or K, optional): the axis's temperature (nut, guides or
   lubricant), for the friction laws in temperature (:mod:`.effects.load`).
+* ``payload [kg]`` (optional): a mass the run carries besides the axis's own, one value through a run (a
+  validation run with 350 kg more): taken as known, M a of it is moved to the effort's side, so the fitted
+  mass is the axis's own and runs with different payloads share one model.
 * ``external_force [N]`` (optional): a process force acting on the table (cutting, a spring, a weight),
   positive in +x.  The drive then supplies f = M a + F(v) - F_ext, so the identification fits f + F_ext;
   for torque records the force is taken to the motor as F_ext p / (2 pi eta) (lead p, screw efficiency eta).
@@ -40,6 +43,7 @@ import numpy as np
 from ...errors import InputError
 from ...fileio import MAX_TIME_SAMPLES, read_input
 from ...units import (
+    PLAUSIBLE_MAX,
     check_plausible,
     check_width,
     read_header,
@@ -51,7 +55,7 @@ from ...units import (
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
 COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force", "motor_position", "normal_load",
-                                                          "temperature")
+                                                          "temperature", "payload")
 # angle units spelled as revolutions that the unit library does not know (it knows 'turn')
 _REV = {"rev": "turn", "revs": "turn", "revolution": "turn", "revolutions": "turn"}
 CURRENT_UNITS = {"A": 1.0, "mA": 1e-3, "kA": 1e3}
@@ -78,6 +82,20 @@ class TimeRecord:
     external: np.ndarray | None = None  # external force on the table in the effort's coordinate [N] or [N m]
     motor_q: np.ndarray | None = None  # motor encoder position in the record's coordinate (as ``q``)
     aux: dict = field(default_factory=dict)  # normal_load [N] on the guides, temperature [K]: conditions
+    segments: tuple = ()  # (start, end) of each window a long record is read in (:func:`windowed`); () whole
+    whole: tuple = ()  # a windowed record's (samples, seconds) as read
+
+    def run_note(self) -> str:
+        """The run's payload and windows, for the report's line of the run ('' when neither)."""
+        out = []
+        if "payload" in self.aux:
+            out.append(f"payload {self.aux['payload'][0]:g} kg" + (" (a known mass)" if self.quantity == "force"
+                                                                    else " as motor inertia [kg.m^2]"))
+        if self.segments:
+            size = self.segments[0][1] - self.segments[0][0]
+            out.append(f"{len(self.segments)} windows of {size / self.fs:.3g} s fitted, spread over its "
+                       f"{self.whole[0]:,} samples ({self.whole[1]:.4g} s)")
+        return "; ".join(out)
 
     @property
     def n(self) -> int:
@@ -114,7 +132,7 @@ def is_time_record(path) -> bool:
 # SI kind of each column, for the range check of every cell (current has no kind: its gain gives it one)
 _KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque",
          "external_force": "force", "motor_position": "length", "normal_load": "force",
-         "temperature": "temperature"}
+         "temperature": "temperature", "payload": "mass"}
 
 
 def parse_gain(text: str, *, source=None, where=None) -> tuple:
@@ -192,9 +210,12 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     n = len(rows) - 1
     if n > MAX_TIME_SAMPLES:
         raise InputError(f"too many samples ({n:,}; at most {MAX_TIME_SAMPLES:,})", source=src)
-    data = np.empty((n, len(cols)))
-    lines = np.empty(n, dtype=int)
-    for r, (i, text) in enumerate(rows[1:]):
+    data = _fast_cells(rows[1:], cols, names)
+    lines = np.fromiter((i for i, _ in rows[1:]), dtype=int, count=n)
+    slow = data is None
+    if slow:
+        data = np.empty((n, len(cols)))
+    for r, (i, text) in enumerate(rows[1:] if slow else ()):  # the cell by cell check names the bad cell
         cells = text.split(",")
         check_width(cells, len(cols), source=src, line=i)
         lines[r] = i
@@ -245,6 +266,8 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     aux = {}
     if "normal_load" in col:
         aux["normal"] = col["normal_load"]
+    if "payload" in col:  # a known mass the run carries, constant through the run
+        aux["payload"] = _payload(col["payload"], data, names, lines, lead, quantity, src)
     if "temperature" in col:  # absolute [K]: the column's unit is a temperature, its offset applied
         aux["temperature"] = col["temperature"] + _KELVIN.get(cols[names.index("temperature")][1].strip(), 0.0)
     return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext, motor_q,
@@ -252,6 +275,40 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
 
 
 _KELVIN = {"degC": 273.15, "C": 273.15, "celsius": 273.15}
+
+
+def _payload(m: np.ndarray, data, names, lines, lead: float, quantity: str, src: str) -> np.ndarray:
+    """The payload column [kg] in the record's coordinate (a torque record's motor side: m (p/2 pi)^2); one
+    value through a run: a payload that changes within it conflicts (InputError naming the line)."""
+    j = names.index("payload")
+    change = np.nonzero(m != m[0])[0]
+    if len(change):
+        k = int(change[0])
+        raise InputError(f"conflicting payloads in one run: {data[0, j]:g} at the start, {data[k, j]:g} here; a "
+                         "run carries one payload (give each payload its own record)", source=src,
+                         where=f"line {lines[k]}, column {j + 1} (payload)")
+    if m[0] < 0:
+        raise InputError(f"payload {data[0, j]:g} is negative", source=src, where=f"column {j + 1} (payload)")
+    return m * (1.0 if quantity == "force" else (lead / (2.0 * math.pi)) ** 2)
+
+
+def _fast_cells(rows: list, cols: list, names: list):
+    """The data cells as an (n, columns) array when every row has the header's width and every cell is a
+    finite number within the plausible range of its column; else None, and the caller's cell-by-cell reading
+    names the first bad cell."""
+    k = len(cols)
+    if not rows or any(text.count(",") != k - 1 for _, text in rows):
+        return None
+    try:
+        data = np.array(",".join(text for _, text in rows).split(","), dtype=float).reshape(len(rows), k)
+    except ValueError:
+        return None
+    if not np.isfinite(data).all():
+        return None
+    for j, name in enumerate(names):
+        if name in _KIND and np.max(np.abs(data[:, j])) * abs(cols[j][2]) > PLAUSIBLE_MAX.get(_KIND[name], 1e12):
+            return None
+    return data
 
 
 def _factor(name, unit, src, where, lead) -> float:
@@ -272,6 +329,8 @@ def _factor(name, unit, src, where, lead) -> float:
             return 1.0
         if name == "torque":
             return unit_factor(unit, "torque")
+        if name == "payload":
+            return unit_factor(unit, "mass")
     except ValueError as exc:
         raise InputError(f"{exc} in column '{name}'", source=src, where=where) from None
     if unit.strip() not in CURRENT_UNITS:
@@ -293,11 +352,14 @@ def check_same_columns(est: TimeRecord, other: TimeRecord) -> None:
 BUTTER_ORDER = 4
 
 
-def lowpass(x, fs: float, fc: float, order: int = BUTTER_ORDER) -> np.ndarray:
+def lowpass(x, fs: float, fc: float, order: int = BUTTER_ORDER, segments=()) -> np.ndarray:
     """Zero-phase Butterworth low-pass: the squared magnitude :math:`|H|^2 = 1/(1 + (f/f_c)^{2n})` that a
     forward-backward (filtfilt) pass of an order-``n`` Butterworth applies, applied exactly by FFT.  The
     ends are extended by odd reflection over ``3 fs/fc`` samples (as filtfilt pads) so they do not ring.
-    ``x``: (n,) or (n, k) along axis 0."""
+    ``x``: (n,) or (n, k) along axis 0; ``segments``: (start, end) index ranges filtered each on its own (the
+    windows of a long record, :func:`windowed`)."""
+    if len(segments) > 1:
+        return np.concatenate([lowpass(x[a:b], fs, fc, order) for a, b in segments], axis=0)
     x = np.asarray(x, dtype=float)
     one = x.ndim == 1
     X = x[:, None] if one else x
@@ -332,12 +394,12 @@ class CutoffChoice:
     rule: str
 
 
-def choose_cutoff(q, fs: float) -> CutoffChoice:
+def choose_cutoff(q, fs: float, segments=()) -> CutoffChoice:
     """Cut-off from the data: the velocity spectrum (backward differences of the position) is compared with
     its noise floor -- white position noise (quantisation) gives :math:`N_0 \\sin^2(\\pi f/f_s)`, fitted on
     the upper half of the band -- and the cut-off is the highest frequency where the signal is still 10x
     that floor, but at least 5x the motion bandwidth (99 % of the signal power) and at most fs/8."""
-    v = np.diff(q) * fs
+    v = np.concatenate([np.diff(q[a:b]) for a, b in segments]) * fs if segments else np.diff(q) * fs
     f, ps = welch(v, fs)
     shape = np.sin(np.pi * f / fs) ** 2 + 1e-30
     upper = f > fs / 4
@@ -355,8 +417,12 @@ def choose_cutoff(q, fs: float) -> CutoffChoice:
     return CutoffChoice(fc, f99, f_snr, rule)
 
 
-def derivatives(q, fs: float, fc: float, orders: int = 2) -> list:
-    """[q_f, v, a, ...] up to ``orders`` (central differences of the zero-phase filtered position)."""
+def derivatives(q, fs: float, fc: float, orders: int = 2, segments=()) -> list:
+    """[q_f, v, a, ...] up to ``orders`` (central differences of the zero-phase filtered position), each of
+    ``segments`` on its own."""
+    if len(segments) > 1:
+        parts = [derivatives(q[a:b], fs, fc, orders) for a, b in segments]
+        return [np.concatenate([p[i] for p in parts]) for i in range(orders + 1)]
     out = [lowpass(q, fs, fc)]
     for _ in range(orders):
         out.append(np.gradient(out[-1]) * fs)
@@ -367,3 +433,45 @@ def decimation_factor(fs: float, fc: float) -> int:
     """Parallel decimation keeps every nd-th row after a low-pass at 0.8 of the new Nyquist frequency; nd is
     the largest with that cut-off still at or above ``fc``."""
     return max(1, int(0.8 * fs / (2.0 * fc)))
+
+
+# ------------------------------------------------------------------------------------------ long records
+LONG_SAMPLES = 150_000  # a record longer than this is identified in windows spread over it
+WINDOWS = 8  # how many
+WINDOW_SAMPLES = 8_000  # samples in each (8 s at 1 kHz), a window starts where the axis rests
+
+
+def windowed(rec: TimeRecord, long_samples: int = LONG_SAMPLES, count: int = WINDOWS,
+             size: int = WINDOW_SAMPLES) -> TimeRecord:
+    """``rec`` itself when it has at most ``long_samples`` samples; else ``count`` windows of ``size``
+    samples spread evenly over it, each starting at the first rest (the position still for 50 ms) at or after
+    its nominal start, as one record whose ``segments`` keep them apart: every filter, derivative and
+    closed-loop simulation then runs in each window on its own, and the times stay those of the record (a
+    warm-up's temperature, a drift's time from the start, a line's phase).  The slow physics a long record
+    is taken for (a warm-up over minutes) is sampled by the windows; the cost is that of ``count x size``
+    samples.  Windows on a record: :attr:`TimeRecord.segments`."""
+    n = rec.n
+    if n <= long_samples:
+        return rec
+    size = min(size, n // count)
+    m = max(1, int(0.05 * rec.fs))
+    still = np.abs(rec.q[m:] - rec.q[:-m]) <= 1e-4 * max(float(np.ptp(rec.q)), 1e-12)
+    starts = []
+    for k in range(count):
+        a = (k * (n - size)) // max(count - 1, 1)
+        rest = np.nonzero(still[a : a + size // 2])[0]
+        a = a + int(rest[0]) if len(rest) else a
+        starts.append(min(a, n - size))
+    idx = np.concatenate([np.arange(a, a + size) for a in starts])
+    segs, pos = [], 0
+    for _ in starts:
+        segs.append((pos, pos + size))
+        pos += size
+
+    def cut(x):
+        return None if x is None else x[idx]
+
+    return TimeRecord(rec.source, rec.t[idx], rec.q[idx], rec.effort[idx], rec.quantity, cut(rec.reference),
+                      rec.header, rec.effort_column, rec.lines[idx], rec.gain_note, cut(rec.external),
+                      cut(rec.motor_q), {k: v[idx] for k, v in rec.aux.items()}, tuple(segs),
+                      (n, float(np.ptp(rec.t))))

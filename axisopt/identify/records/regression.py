@@ -15,7 +15,7 @@ axis, are left out.  An ``external_force`` column is added to the effort before 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -105,6 +105,7 @@ class Rows:
     keep: np.ndarray  # full-rate indices of the kept rows
     y: np.ndarray  # effort at the kept rows after the decimation filter
     proc: Processing
+    cache: dict = field(default_factory=dict, repr=False)  # shape-free columns at the kept rows, by term
 
     @property
     def n(self) -> int:
@@ -127,23 +128,24 @@ def full_matrix(sig: dict, terms, proc: Processing, shape: dict) -> np.ndarray:
     return np.column_stack(cols)
 
 
-def decimate(rows_full: np.ndarray, proc: Processing, keep: np.ndarray) -> np.ndarray:
-    """Parallel decimation: the same low-pass on every column, then the kept rows."""
-    return lowpass(rows_full, proc.fs, proc.fdec)[keep]
+def decimate(rows_full: np.ndarray, proc: Processing, keep: np.ndarray, segments=()) -> np.ndarray:
+    """Parallel decimation: the same low-pass on every column (in each window of a long record), then the
+    kept rows."""
+    return lowpass(rows_full, proc.fs, proc.fdec, segments=segments)[keep]
 
 
 def processing_for(rec: TimeRecord, stroke_q: float, lead_q: float = 0.0) -> Processing:
     fs = rec.fs
-    cut = choose_cutoff(rec.q, fs)
+    cut = choose_cutoff(rec.q, fs, rec.segments)
     nd = decimation_factor(fs, cut.fc)
     fdec = 0.8 * fs / (2.0 * nd)
-    q, v = derivatives(rec.q, fs, cut.fc, 1)
+    q, v = derivatives(rec.q, fs, cut.fc, 1, rec.segments)
     vmin = VMIN_REL * float(np.max(np.abs(v)))
     return Processing(fs, cut.fc, nd, fdec, cut.f_motion, cut.rule, vmin, stroke_q, lead_q)
 
 
-def signals(q: np.ndarray, proc: Processing) -> dict:
-    qf, v, a, j, snap = derivatives(q, proc.fs, proc.fc, 4)
+def signals(q: np.ndarray, proc: Processing, segments=()) -> dict:
+    qf, v, a, j, snap = derivatives(q, proc.fs, proc.fc, 4, segments)
     return {"q": qf, "v": v, "a": a, "snap": snap}
 
 
@@ -151,16 +153,17 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
     if abs(rec.fs - proc.fs) > 1e-3 * proc.fs:
         raise InputError(f"sampled at {rec.fs:.6g} Hz, the estimation run at {proc.fs:.6g} Hz (the same filters "
                          "are applied to every run)", source=rec.source, where="column time")
-    sig = signals(rec.q, proc)
+    segs = rec.segments
+    sig = signals(rec.q, proc, segs)
     sig["t"] = rec.t - rec.t[0]  # time from the run's start
     sig["effort"] = rec.effort  # the force the drive transmits (measured: its own instrument)
     for key, val in (("fext", rec.external), *rec.aux.items()):
         if val is not None:
             sig[key] = val
     v = sig["v"]
-    sf = lowpass(np.sign(v), proc.fs, proc.fdec)
+    sf = lowpass(np.sign(v), proc.fs, proc.fdec, segments=segs)
     edge = int(2.0 * proc.fs / min(proc.fc, proc.fdec)) + proc.nd
-    idx = np.arange(edge, rec.n - edge, proc.nd)
+    idx = np.concatenate([np.arange(a + edge, b - edge, proc.nd) for a, b in segs or ((0, rec.n),)])
     # a row is kept when the axis moves one way for a whole filter window around it: the zero-phase filters
     # smear starts and stops, where sgn(v) of the estimate leads the axis's
     w = int(proc.fs / proc.fdec)
@@ -170,9 +173,34 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
     if len(keep) < 20:
         raise InputError(f"only {len(keep)} usable rows after filtering and decimation (the axis must move: "
                          f"speeds above {proc.vmin:.3g} in the record's unit/s)", source=rec.source)
-    y = lowpass(rec.effort + rec.external if rec.external is not None else rec.effort, proc.fs, proc.fdec)[keep]
+    f = rec.effort + rec.external if rec.external is not None else rec.effort
+    if "payload" in rec.aux:  # a known mass: its inertial force leaves the effort, M stays the axis's own
+        f = f - rec.aux["payload"] * sig["a"]
+    y = lowpass(f, proc.fs, proc.fdec, segments=segs)[keep]
     return Rows(rec, sig, keep, y, proc)
 
 
 def matrix(rows: Rows, terms, shape: dict, sig: dict | None = None) -> np.ndarray:
-    return decimate(full_matrix(sig or rows.sig, terms, rows.proc, shape), rows.proc, rows.keep)
+    """The regression columns of ``terms`` at the kept rows (filtered and decimated).  On the record's own
+    signals, the columns no shape parameter moves are filtered once and kept with the rows."""
+    if sig is not None:
+        return decimate(full_matrix(sig, terms, rows.proc, shape), rows.proc, rows.keep, rows.record.segments)
+    fixed = _shape_free()
+    cache = rows.cache
+    need = [t for t in terms if t not in cache or t not in fixed]
+    if need:
+        new = decimate(full_matrix(rows.sig, need, rows.proc, shape), rows.proc, rows.keep, rows.record.segments)
+        got = dict(zip(need, new.T))
+        cache.update((t, c) for t, c in got.items() if t in fixed)
+    else:
+        got = {}
+    return np.column_stack([got[t] if t in got else cache[t] for t in terms])
+
+
+def _shape_free() -> set:
+    """Terms whose column no shape parameter changes: the baseline's and those of effects without a shape."""
+    out = {t.name for t in BASE_TERMS}
+    for eff in time_effects().values():
+        if eff.shape is None:
+            out.update(t.name for t in eff.columns)
+    return out

@@ -24,8 +24,12 @@ from .signature import decay_probe, line_probe, spot_probe
 def residual_peak(rows: Rows, est: Estimate) -> tuple:
     """Peak of the baseline residual spectrum between 3x the motion bandwidth and the cut-off."""
     proc = rows.proc
-    W = lowpass(full_matrix(rows.sig, est.terms, proc, est.shape), proc.fs, proc.fdec)
-    y = lowpass(rows.record.effort, proc.fs, proc.fdec)
+    segs = rows.record.segments
+    W = lowpass(full_matrix(rows.sig, est.terms, proc, est.shape), proc.fs, proc.fdec, segments=segs)
+    e = rows.record.effort
+    if "payload" in rows.record.aux:  # a known mass's inertial force is not the model's misfit
+        e = e - rows.record.aux["payload"] * rows.sig["a"]
+    y = lowpass(e, proc.fs, proc.fdec, segments=segs)
     r = np.zeros(len(y))
     r[rows.keep[0] : rows.keep[-1]] = (y - W @ est.theta)[rows.keep[0] : rows.keep[-1]]
     moving = np.zeros(len(y), bool)
@@ -134,7 +138,8 @@ def ar_noise(rows: Rows, est: Estimate | None = None):
 
 def pooled(runs: list, full_cols) -> np.ndarray:
     """Columns computed at full rate on each run (``full_cols(rows) -> (N, k)``), decimated alike, stacked."""
-    return np.vstack([decimate(np.asarray(full_cols(r)).reshape(r.record.n, -1), r.proc, r.keep) for r in runs])
+    return np.vstack([decimate(np.asarray(full_cols(r)).reshape(r.record.n, -1), r.proc, r.keep, r.record.segments)
+                      for r in runs])
 
 
 def since_reversal(rw: Rows) -> np.ndarray:

@@ -92,6 +92,8 @@ class Diagnosis:
     rejected: list = field(default_factory=list)  # (round, Candidate, [implausibility texts]) never accepted
     pairs: list = field(default_factory=list)  # dicts: round, a, b, fit, dbic, gain, reason (pairs tried)
     unexplained: list = field(default_factory=list)  # per obs: TableUnexplained of the final residual
+    equivalent: list = field(default_factory=list)  # (round, named, alternative, % apart): equally good
+    regime: list = field(default_factory=list)  # texts: an accepted effect outside its plausible regime
 
     @property
     def y(self) -> np.ndarray:
@@ -274,7 +276,7 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
     folds = folds_for(obs)
     cv_base, ho_base = cv_rmse(prob, base_fit.theta, folds)
 
-    accepted, rounds, effects, rejected = [], [], [], []
+    accepted, rounds, effects, rejected, equivalent = [], [], [], [], []
     cur_fit, cur_cv, cur_ho = base_fit, cv_base, ho_base
     ctx.resid = _split(obs, base_fit.prediction - prob.y)
     active = [e for e in pool if e.applicable(ctx)]
@@ -329,6 +331,16 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
             if pair is None:
                 break
             a_, b_, p_fit, p_cv, p_ho = pair["a"], pair["b"], pair["fit"], pair["cv"], pair["holdout"]
+            for e in pairs:  # another pair that passes and predicts as well: the data do not tell them apart
+                d = RULE.equivalent(p_cv, e["cv"]) if e.get("passed") and e["round"] == len(rounds) else None
+                if d is None and e.get("passed") and e["round"] == len(rounds) and max(p_cv, e["cv"]) <= AT_FLOOR:
+                    d, floor = 100.0 * abs(e["cv"] - p_cv) / p_cv, (p_cv, e["cv"])
+                else:
+                    floor = None
+                if d is not None:
+                    equivalent.append((len(rounds), f"{a_.effect.name} + {b_.effect.name}",
+                                       f"{e['a'].effect.name} + {e['b'].effect.name}", d,
+                                       (a_.effect, b_.effect, e["a"].effect, e["b"].effect), floor))
             effects += [a_.effect, b_.effect]
             plaus = plausibility(p_fit, effects)
             for c, other in ((a_, b_), (b_, a_)):
@@ -338,6 +350,20 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
             cur_fit, cur_cv, cur_ho = p_fit, p_cv, p_ho
             ctx.resid = _split(obs, cur_fit.prediction - prob.y)
             continue
+        for c in scored:  # another single that passes and predicts as well: say so, with what separates them
+            if c is top or c.dbic >= RULE.accept_dbic or plausibility(c.fit, effects + [c.effect], names=c.names):
+                continue
+            if c.cv_gain is None:
+                c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
+                c.cv_gain = RULE.gain(cur_cv, c.cv_rmse)
+            if c.cv_gain < RULE.min_gain:
+                continue
+            d = RULE.equivalent(top.cv_rmse, c.cv_rmse)
+            floor = max(top.cv_rmse, c.cv_rmse) <= AT_FLOOR  # both leave only noise in the held-out readings
+            if d is not None or floor:
+                apart = 100.0 * abs(c.cv_rmse - top.cv_rmse) / top.cv_rmse
+                equivalent.append((len(rounds), top.effect.name, c.effect.name, apart, (top.effect, c.effect),
+                                   (top.cv_rmse, c.cv_rmse) if d is None else None))
         runner = next((c for c in scored if c is not top), None)
         if runner is not None and runner.cv_gain is None and runner.dbic < RULE.accept_dbic:
             runner.cv_rmse, runner.holdout = cv_rmse(runner.problem, runner.fit.theta, folds)
@@ -369,7 +395,30 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
         rejected,
         pairs,
         table_unexplained(obs, _split(obs, cur_fit.residual), effects),
+        equivalent,
+        regime_flags(obs, effects),
     )
+
+
+# held-out RMSE (weighted: in noise floors) at or below which an explanation leaves only noise; two that both
+# do are not told apart by the held-out readings, however far apart their RMSE (a few readings' scatter)
+AT_FLOOR = 1.1
+
+
+def top_speed(obs) -> float:
+    """The highest table speed [m/s] in the friction tables (0 without one)."""
+    return max((float(np.max(np.abs(o.dataset.columns["velocity"]))) for o in obs if o.kind == "friction"),
+               default=0.0)
+
+
+def regime_flags(obs, effects) -> list:
+    """An accepted effect named outside the regime it is plausible in (its declaration's ``regime``, judged
+    at the tables' top speed, as for time records)."""
+    v = top_speed(obs)
+    if not v > 0:
+        return []
+    return [f"{e.name}: {w}" for e in effects if e.time is not None and e.time.regime is not None
+            for w in [e.time.regime(v)] if w]
 
 
 def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
@@ -406,6 +455,7 @@ def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
         for e in log:
             if e is not best and e["round"] == rnd and not e["reason"]:
                 e["reason"] = f"{best['a'].effect.name} + {best['b'].effect.name} predicts better"
+                e["passed"] = True
     return best
 
 
