@@ -14,9 +14,22 @@ command line's start-up) pays for none of them.
 __version__ = "0.1.0"
 
 # name -> module that defines it, imported on first access
-_LAZY = {"load_design": "axisopt.design", "load_problem": "axisopt.problem",
-         **{name: "axisopt.api" for name in ("evaluate", "solve", "compare", "study", "diagnose", "plot_profiles",
-                                             "plot_pareto")}}
+_LAZY = {
+    "load_design": "axisopt.design",
+    "load_problem": "axisopt.problem",
+    **{
+        name: "axisopt.api"
+        for name in (
+            "evaluate",
+            "solve",
+            "compare",
+            "study",
+            "diagnose",
+            "plot_profiles",
+            "plot_pareto",
+        )
+    },
+}
 
 __all__ = ["__version__", *_LAZY]
 

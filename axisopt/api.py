@@ -22,16 +22,29 @@ from os import PathLike
 from .design import Design, load_design
 from .problem import Problem, load_problem
 
-__all__ = ["load_design", "load_problem", "evaluate", "solve", "compare", "study", "diagnose", "plot_profiles",
-           "plot_pareto"]
+__all__ = [
+    "load_design",
+    "load_problem",
+    "evaluate",
+    "solve",
+    "compare",
+    "study",
+    "diagnose",
+    "plot_profiles",
+    "plot_pareto",
+]
 
 
 def _design(design) -> Design:
     return design if isinstance(design, Design) else load_design(design)
 
 
-def evaluate(design: Design | str | PathLike, *, calibration: str | PathLike | None = None,
-             n_positions: int | None = None):
+def evaluate(
+    design: Design | str | PathLike,
+    *,
+    calibration: str | PathLike | None = None,
+    n_positions: int | None = None,
+):
     """Evaluate a design (a :class:`Design` or a design YAML path) over the stroke -> :class:`Evaluation`.
 
     calibration : a calibration YAML saved by ``diagnose`` (as ``axisopt evaluate DESIGN --calibration FILE`` takes it)
@@ -47,8 +60,14 @@ def evaluate(design: Design | str | PathLike, *, calibration: str | PathLike | N
     return _evaluate(d, n_positions)
 
 
-def solve(problem: Problem | str | PathLike, method: str = "default", *, top: int = 5,
-          time_limit: float = 100.0, sensitivities: bool = True):
+def solve(
+    problem: Problem | str | PathLike,
+    method: str = "default",
+    *,
+    top: int = 5,
+    time_limit: float = 100.0,
+    sensitivities: bool = True,
+):
     """Solve a sizing problem (a :class:`Problem` or a problem YAML path) -> :class:`SolveResult`.
 
     method : 'default' (proven optimum) | 'exhaustive' | 'bonmin' | 'scip'; ``top`` designs returned;
@@ -86,8 +105,16 @@ def compare(*files, method: str = "default", time_limit: float = 100.0):
     return Comparison(compare_designs(files, method=method, time_limit=time_limit))
 
 
-def study(spec, out: str | PathLike | None = None, *, workers: int | None = 0, resume: bool = False,
-          overwrite: bool = False, scheduler=None, time_limit: float = 100.0):
+def study(
+    spec,
+    out: str | PathLike | None = None,
+    *,
+    workers: int | None = 0,
+    resume: bool = False,
+    overwrite: bool = False,
+    scheduler=None,
+    time_limit: float = 100.0,
+):
     """Run a trade study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult` (its
     ``to_frame()`` is the results table, one row per case).
 
@@ -103,12 +130,25 @@ def study(spec, out: str | PathLike | None = None, *, workers: int | None = 0, r
     """
     from .study.result import run_spec
 
-    return run_spec(spec, out, workers=workers, resume=resume, overwrite=overwrite, scheduler=scheduler,
-                    time_limit=time_limit)
+    return run_spec(
+        spec,
+        out,
+        workers=workers,
+        resume=resume,
+        overwrite=overwrite,
+        scheduler=scheduler,
+        time_limit=time_limit,
+    )
 
 
-def diagnose(data, design: Design | str | PathLike, *, effects=None, max_effects: int = 3,
-             gain: str | None = None):
+def diagnose(
+    data,
+    design: Design | str | PathLike,
+    *,
+    effects=None,
+    max_effects: int = 3,
+    gain: str | None = None,
+):
     """Diagnose measured data of an axis -> :class:`axisopt.identify.Diagnosis` (time records:
     ``TimeDiagnosis``).
 
@@ -130,7 +170,9 @@ def diagnose(data, design: Design | str | PathLike, *, effects=None, max_effects
     if is_time_record(paths[0]):
         from .identify.records.idim import diagnose_time_files
 
-        return diagnose_time_files(paths, plant=plant, gain=gain, candidates=names, max_effects=max_effects)
+        return diagnose_time_files(
+            paths, plant=plant, gain=gain, candidates=names, max_effects=max_effects
+        )
     from .identify import diagnose as _diagnose
     from .identify import read_dataset
     from .identify.effects import library
@@ -138,10 +180,14 @@ def diagnose(data, design: Design | str | PathLike, *, effects=None, max_effects
     if names:
         unknown = [n for n in names if n not in library()]
         if unknown:
-            raise InputError(f"effects: unknown effect '{unknown[0]}'; known: {', '.join(library())}")
+            raise InputError(
+                f"effects: unknown effect '{unknown[0]}'; known: {', '.join(library())}"
+            )
     if max_effects < 0:
         raise InputError("max_effects must not be negative")
-    return _diagnose([read_dataset(p) for p in paths], plant, candidates=names, max_effects=max_effects)
+    return _diagnose(
+        [read_dataset(p) for p in paths], plant, candidates=names, max_effects=max_effects
+    )
 
 
 def plot_profiles(evaluations, path: str | PathLike | None = None, *, labels=None, limits=None):

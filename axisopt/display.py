@@ -62,8 +62,13 @@ def fmt_column(values) -> list[str]:
     ['161.2', '161.4', '162.0']
     """
     out = [_cell(v) for v in values]
-    nums = {i: float(v) for i, v in enumerate(values) if isinstance(v, (int, float, np_number()))
-            and not isinstance(v, bool) and math.isfinite(float(v))}
+    nums = {
+        i: float(v)
+        for i, v in enumerate(values)
+        if isinstance(v, (int, float, np_number()))
+        and not isinstance(v, bool)
+        and math.isfinite(float(v))
+    }
     if not any(isinstance(values[i], float) for i in nums):
         return out  # counts and ids: as they are
     tiny = any(0 < abs(v) < 1e-3 for v in nums.values())
@@ -109,29 +114,40 @@ def html_table(rows, caption: str = "", columns=None, max_rows: int = 30) -> str
     out = ["<table>"]
     if caption:
         out.append(f"<caption style='text-align:left'>{html.escape(caption)}</caption>")
-    out.append("<thead><tr>" + "".join(f"<th>{html.escape(str(c))}</th>" for c in cols) + "</tr></thead><tbody>")
+    out.append(
+        "<thead><tr>"
+        + "".join(f"<th>{html.escape(str(c))}</th>" for c in cols)
+        + "</tr></thead><tbody>"
+    )
     shown = rows[:max_rows]
-    texts = {c: fmt_column([r.get(c) for r in shown]) for c in cols}  # digits enough to tell rows apart
+    # digits enough to tell rows apart
+    texts = {c: fmt_column([r.get(c) for r in shown]) for c in cols}
     for i in range(len(shown)):
         out.append("<tr>" + "".join(f"<td>{html.escape(texts[c][i])}</td>" for c in cols) + "</tr>")
     if len(rows) > max_rows:
-        out.append(f"<tr><td colspan='{len(cols)}'>... {len(rows) - max_rows} more rows (to_frame() has them "
-                   "all)</td></tr>")
+        out.append(
+            f"<tr><td colspan='{len(cols)}'>... {len(rows) - max_rows} more rows (to_frame() has them "
+            "all)</td></tr>"
+        )
     out.append("</tbody></table>")
     return "".join(out)
 
 
 def html_fields(fields: dict, caption: str = "") -> str:
     """A two-column HTML table (name, value) of a result's headline values."""
-    return html_table([{"": k, "value": v} for k, v in fields.items()], caption, columns=("", "value"))
+    return html_table(
+        [{"": k, "value": v} for k, v in fields.items()], caption, columns=("", "value")
+    )
 
 
 def one_line(name: str, head: str, fields: dict) -> str:
     """``Name(head; key value; key value ...)`` (an empty key: the value alone) cut at :data:`REPR_WIDTH`
     characters."""
-    body = "; ".join(f"{k} {_cell(v)}" if k else _cell(v) for k, v in fields.items() if v not in (None, ""))
+    body = "; ".join(
+        f"{k} {_cell(v)}" if k else _cell(v) for k, v in fields.items() if v not in (None, "")
+    )
     text = f"{name}({head}{'; ' if head and body else ''}{body})"
-    return text if len(text) <= REPR_WIDTH else text[:REPR_WIDTH - 4] + " ...)"
+    return text if len(text) <= REPR_WIDTH else text[: REPR_WIDTH - 4] + " ...)"
 
 
 def _cell(v) -> str:
@@ -144,7 +160,16 @@ def _cell(v) -> str:
     return str(v)
 
 
-__all__ = ["fmt", "fmt_column", "frame", "html_table", "html_fields", "one_line", "REPR_WIDTH", "json_value"]
+__all__ = [
+    "fmt",
+    "fmt_column",
+    "frame",
+    "html_table",
+    "html_fields",
+    "one_line",
+    "REPR_WIDTH",
+    "json_value",
+]
 
 
 def json_value(v):

@@ -21,7 +21,8 @@ from .units import split_header, unit_factor
 SHIPPED_DIR = Path(__file__).resolve().parent.parent / "catalogs"
 MAX_BYTES = 2_000_000
 
-# column -> (unit kind, fixed unit or None, required); every number is finite and positive unless noted
+# column -> (unit kind, fixed unit or None, required); every number is finite and positive unless
+# noted
 RACK_COLUMNS = {
     "kind": ("text", None, True),
     "quality": ("count", None, True),
@@ -51,7 +52,8 @@ LM_COLUMNS = {
 }
 KINDS = {"racks": ("spur", "helical"), "linear_motors": ("iron-core", "ironless")}
 ZERO_OK = {"helix_angle", "attraction_force"}
-# an iron-core motor's magnetic attraction where the data sheet gives none: ATTRACTION_PER_FC x its continuous
+# an iron-core motor's magnetic attraction where the data sheet gives none: ATTRACTION_PER_FC x its
+# continuous
 # force -- an estimate of ours (no reachable vendor row lists it, catalogs/SOURCES.md)
 ATTRACTION_PER_FC = 5.0
 

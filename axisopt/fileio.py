@@ -15,22 +15,30 @@ from .errors import InputError
 
 PLOT_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg")
 
-# Size caps of input files by kind [bytes], checked on the file's stat before it is opened (and again
+# Size caps of input files by kind [bytes], checked on the file's stat before it is opened (and
+# again
 # while reading: a file that grows past its cap is refused too).
 INPUT_LIMITS = {
     "yaml": 20_000_000,  # design, problem, study, calibration YAML
     "catalog": 50_000_000,  # one catalog CSV
     "data": 10_000_000,  # a reduced-table diagnose CSV (static, friction, frequency, FRF)
-    "time record": 250_000_000,  # a diagnose time record (a 20-minute record at 1 kHz is about 70 MB)
+    # a diagnose time record (a 20-minute record at 1 kHz is about 70 MB)
+    "time record": 250_000_000,
     "case": 20_000_000,  # a study's case record (JSON)
 }
 # Rows of the diagnose files (the fits grow faster than linearly with them)
 MAX_DATA_ROWS = 50_000
-MAX_TIME_SAMPLES = 3_000_000  # 50 minutes at 1 kHz; beyond 150 000 samples a record is fitted in windows
+# 50 minutes at 1 kHz; beyond 150 000 samples a record is fitted in windows
+MAX_TIME_SAMPLES = 3_000_000
 
-_KIND_NAMES = {_stat.S_IFIFO: "a FIFO (named pipe)", _stat.S_IFCHR: "a character device",
-               _stat.S_IFBLK: "a block device", _stat.S_IFSOCK: "a socket", _stat.S_IFDIR: "a directory",
-               _stat.S_IFLNK: "a symbolic link"}
+_KIND_NAMES = {
+    _stat.S_IFIFO: "a FIFO (named pipe)",
+    _stat.S_IFCHR: "a character device",
+    _stat.S_IFBLK: "a block device",
+    _stat.S_IFSOCK: "a socket",
+    _stat.S_IFDIR: "a directory",
+    _stat.S_IFLNK: "a symbolic link",
+}
 
 
 def _kind_name(mode: int) -> str:
@@ -46,15 +54,21 @@ def check_input(path, kind: str, *, what: str = "file"):
     try:
         st = os.stat(path)
     except (OSError, ValueError) as exc:
-        raise InputError(f"cannot read {what} ({getattr(exc, 'strerror', None) or exc})", source=src) from None
+        raise InputError(
+            f"cannot read {what} ({getattr(exc, 'strerror', None) or exc})", source=src
+        ) from None
     if not _stat.S_ISREG(st.st_mode):
-        raise InputError(f"cannot read {what}: not a regular file ({_kind_name(st.st_mode)})", source=src)
+        raise InputError(
+            f"cannot read {what}: not a regular file ({_kind_name(st.st_mode)})", source=src
+        )
     if st.st_size > limit:
         raise InputError(f"{what} too large ({st.st_size:,} bytes; at most {limit:,})", source=src)
     return st
 
 
-def read_input(path, kind: str, *, what: str = "file", encoding: str = "utf-8", head: int | None = None) -> str:
+def read_input(
+    path, kind: str, *, what: str = "file", encoding: str = "utf-8", head: int | None = None
+) -> str:
     """The text of input file ``path``, read whole (or its first ``head`` bytes), through
     :func:`check_input` first: nothing but a regular file within its size cap is opened.  After opening, the
     descriptor is checked again and at most the cap is read, so a file swapped or growing meanwhile is
@@ -76,8 +90,11 @@ def read_input(path, kind: str, *, what: str = "file", encoding: str = "utf-8", 
     try:
         return data.decode(encoding, errors="strict" if head is None else "ignore")
     except UnicodeDecodeError as exc:
-        raise InputError(f"cannot read {what} (UnicodeDecodeError: not {encoding.upper()} text, byte "
-                         f"{exc.start:,})", source=src) from None
+        raise InputError(
+            f"cannot read {what} (UnicodeDecodeError: not {encoding.upper()} text, byte "
+            f"{exc.start:,})",
+            source=src,
+        ) from None
 
 
 def refuse_nul(text: str, source: str) -> str:
@@ -85,11 +102,14 @@ def refuse_nul(text: str, source: str) -> str:
     reads a NUL inside a cell as text, so a catalog with one would be accepted)."""
     if "\0" in text:
         line = text.count("\n", 0, text.index("\0")) + 1
-        raise InputError("a NUL byte in the file (is it plain text?)", source=source, where=f"line {line}")
+        raise InputError(
+            "a NUL byte in the file (is it plain text?)", source=source, where=f"line {line}"
+        )
     return text
 
 
-# CSV injection (OWASP, "CSV Injection"): a text cell starting with one of these is read by a spreadsheet as
+# CSV injection (OWASP, "CSV Injection"): a text cell starting with one of these is read by a
+# spreadsheet as
 # a formula; it is written with a leading single quote.  Numbers (also negative ones) stay numbers.
 CSV_FORMULA_CHARS = ("=", "+", "-", "@", "\t", "\r")
 _PLAIN_NUMBER = None
@@ -125,14 +145,20 @@ def make_output_dir(path):
     if str(path) == "":
         raise InputError("empty output directory name")
     if str(path) == "-":
-        raise InputError("'-' (standard output) cannot be an output directory; give a directory name")
+        raise InputError(
+            "'-' (standard output) cannot be an output directory; give a directory name"
+        )
     d = Path(path)
     if d.exists() and not d.is_dir():
-        raise InputError("cannot create output directory: a file of that name is in the way", source=str(d))
+        raise InputError(
+            "cannot create output directory: a file of that name is in the way", source=str(d)
+        )
     try:
         d.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise InputError(f"cannot create output directory ({exc.strerror or exc})", source=str(d)) from None
+        raise InputError(
+            f"cannot create output directory ({exc.strerror or exc})", source=str(d)
+        ) from None
     return d
 
 
@@ -161,11 +187,15 @@ def output_target(path) -> str:
     except FileNotFoundError:
         return "atomic"
     except (OSError, ValueError) as exc:
-        raise InputError(f"cannot write to this path ({getattr(exc, 'strerror', None) or exc})", source=p) from None
+        raise InputError(
+            f"cannot write to this path ({getattr(exc, 'strerror', None) or exc})", source=p
+        ) from None
     if _stat.S_ISDIR(st.st_mode):
         raise InputError("cannot write: a directory of that name is in the way", source=p)
     real = os.path.realpath(p)
-    if not _stat.S_ISREG(st.st_mode) or any(x.startswith(("/dev/", "/proc/")) for x in (os.path.abspath(p), real)):
+    if not _stat.S_ISREG(st.st_mode) or any(
+        x.startswith(("/dev/", "/proc/")) for x in (os.path.abspath(p), real)
+    ):
         return "stream"
     return "atomic"
 
@@ -181,10 +211,17 @@ def check_output_path(path, *, what: str = "file", where: str | None = None) -> 
         return
     parent = os.path.dirname(os.path.abspath(os.path.realpath(str(path)))) or "."
     if not os.path.isdir(parent):
-        raise InputError(f"cannot write {what}: directory '{parent}' does not exist", source=str(path), where=where)
+        raise InputError(
+            f"cannot write {what}: directory '{parent}' does not exist",
+            source=str(path),
+            where=where,
+        )
     if not os.access(parent, os.W_OK | os.X_OK):
-        raise InputError(f"cannot write {what}: no permission to write in '{parent}'", source=str(path),
-                         where=where)
+        raise InputError(
+            f"cannot write {what}: no permission to write in '{parent}'",
+            source=str(path),
+            where=where,
+        )
 
 
 def same_file(a, b) -> bool:
@@ -195,15 +232,24 @@ def same_file(a, b) -> bool:
         return False
 
 
-def refuse_inputs(path, inputs, *, what: str = "file", where: str | None = None,
-                  hint: str = "give another file name") -> None:
+def refuse_inputs(
+    path,
+    inputs,
+    *,
+    what: str = "file",
+    where: str | None = None,
+    hint: str = "give another file name",
+) -> None:
     """Refuse (InputError, one line) an output ``path`` that is one of ``inputs`` (the files the work read):
     the Python functions' counterpart of the command line's output check, so that a call such as
     ``save_calibration(diag, "run1.csv", sources=["run1.csv"])`` cannot replace the measured data."""
     for src in inputs:
         if src and same_file(path, src):
-            raise InputError(f"would overwrite the input {src} with the {what}; {hint}",
-                             source=str(path), where=where)
+            raise InputError(
+                f"would overwrite the input {src} with the {what}; {hint}",
+                source=str(path),
+                where=where,
+            )
 
 
 class _NoClose:
@@ -249,7 +295,9 @@ def open_output(path, mode: str = "w", *, what: str = "file", fsync: bool = True
             if mode == "wb":
                 raw = getattr(out, "buffer", None)
                 if raw is None:
-                    raise InputError(f"cannot write {what} to standard output (not a byte stream)", source=p)
+                    raise InputError(
+                        f"cannot write {what} to standard output (not a byte stream)", source=p
+                    )
                 yield _NoClose(raw)
                 raw.flush()
             else:
@@ -264,13 +312,17 @@ def open_output(path, mode: str = "w", *, what: str = "file", fsync: bool = True
             st = os.fstat(fd)
             if _stat.S_ISREG(st.st_mode):
                 os.ftruncate(fd, 0)
-            with open(fd, mode, **({"encoding": "utf-8", "newline": ""} if mode == "w" else {})) as fh:
+            with open(
+                fd, mode, **({"encoding": "utf-8", "newline": ""} if mode == "w" else {})
+            ) as fh:
                 yield fh
                 fh.flush()
         except OSError as exc:
             raise InputError(f"cannot write {what} ({exc.strerror or exc})", source=p) from None
         return
-    yield from _atomic(Path(os.path.realpath(p)) if os.path.islink(p) else Path(p), mode, what, fsync, p)
+    yield from _atomic(
+        Path(os.path.realpath(p)) if os.path.islink(p) else Path(p), mode, what, fsync, p
+    )
 
 
 def _atomic(p: Path, mode: str, what: str, fsync: bool, shown: str):
@@ -279,7 +331,8 @@ def _atomic(p: Path, mode: str, what: str, fsync: bool, shown: str):
     tmp = p.with_name(f".{p.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp")
     done = False
     try:
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # 0o666 & ~umask, as open() would
+        # 0o666 & ~umask, as open() would
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
         with open(fd, mode, **({"encoding": "utf-8", "newline": ""} if mode == "w" else {})) as fh:
             yield fh
             fh.flush()
@@ -325,13 +378,16 @@ def save_figure(fig, path, dpi: int = 110) -> None:
     ext = Path(path).suffix.lower().lstrip(".")
     try:
         if ext not in PLOT_FORMATS:
-            raise InputError(f"plot file needs one of the extensions {', '.join(PLOT_FORMATS)}", source=str(path))
+            raise InputError(
+                f"plot file needs one of the extensions {', '.join(PLOT_FORMATS)}", source=str(path)
+            )
         with open_output(path, "wb", what="plot") as fh:
             fig.savefig(fh, format=ext, dpi=dpi)
     except ValueError as exc:
         raise InputError(f"cannot write plot ({exc})", source=str(path)) from None
     finally:
-        if getattr(fig.canvas, "manager", None) is not None:  # a pyplot figure: released from pyplot's list
+        # a pyplot figure: released from pyplot's list
+        if getattr(fig.canvas, "manager", None) is not None:
             import matplotlib.pyplot as plt
 
             plt.close(fig)

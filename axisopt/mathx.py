@@ -19,7 +19,8 @@ _CASADI_TYPES = (ca.SX, ca.MX, ca.DM)
 
 def is_symbolic(*values) -> bool:
     """True when any argument is a CasADi SX/MX/DM object."""
-    for v in values:  # a loop, not any(generator): called on every elementary operation of the model
+    # a loop, not any(generator): called on every elementary operation of the model
+    for v in values:
         if isinstance(v, _CASADI_TYPES):
             return True
     return False
@@ -70,11 +71,19 @@ def sign(x):
 
 
 def fmin(a, b):
-    return ca.fmin(a, b) if isinstance(a, _CASADI_TYPES) or isinstance(b, _CASADI_TYPES) else np.minimum(a, b)
+    return (
+        ca.fmin(a, b)
+        if isinstance(a, _CASADI_TYPES) or isinstance(b, _CASADI_TYPES)
+        else np.minimum(a, b)
+    )
 
 
 def fmax(a, b):
-    return ca.fmax(a, b) if isinstance(a, _CASADI_TYPES) or isinstance(b, _CASADI_TYPES) else np.maximum(a, b)
+    return (
+        ca.fmax(a, b)
+        if isinstance(a, _CASADI_TYPES) or isinstance(b, _CASADI_TYPES)
+        else np.maximum(a, b)
+    )
 
 
 def power(x, p):

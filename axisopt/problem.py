@@ -37,18 +37,22 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
       guide_types: [ball, roller]
       guide_preload: [medium, heavy]                  # guide preload levels or vendor classes (ZA, Z0, ...)
       status: [vendor, stiffness-derived]             # row provenance (catalogs/SOURCES.md); the default also
-                                                      # allows user rows; add derived or paper to search those
+                                                      # allows user rows; add derived or paper to
+                                                      # search those
       require: {screw: [id, ...], nut: id, bearing: [...], guide: [...], motor: [...], coupling: [...]}
       exclude: {guide: [id, ...]}
       drive: yes                       # motor, coupling and reduction are search choices (default: yes when
-                                       # the catalogs have motors and the axis an acceleration or duty cycle;
-                                       # 'no' keeps the axis's motor_inertia and coupling values, skips the
+                                       # the catalogs have motors and the axis an acceleration or
+                                       # duty cycle;
+                                       # 'no' keeps the axis's motor_inertia and coupling values,
+                                       # skips the
                                        # drive checks, and every answer says so)
       motor_vendors: [Yaskawa]         # the drive parts' own vendor and series filters ('vendors' is for
       motor_series: [Sigma-7 SGM7G]    # the mechanical parts)
       coupling_series: [...]
       reductions: yes                  # a searched drive also chooses a reduction (catalogs' reductions.csv) or
-                                       # none (default yes when the table has rows; 'no': direct drive, or the
+                                       # none (default yes when the table has rows; 'no': direct
+                                       # drive, or the
                                        # axis's reduction_ratio, only)
       max_motor_flange: 130 mm         # the motor must fit the machine: flange (square) size at most this
     continuous:
@@ -88,8 +92,11 @@ from .restrictions import (  # noqa: F401  (the slot names are the problem's voc
 )
 from .yamlio import Key, Section, Spec, close_matches, read_yaml, require_kind
 
-# limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once there
-DEFAULT_LIMITS = MappingProxyType({k: lim.default for k, lim in LIMITS.items() if lim.default is not None})
+# limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once
+# there
+DEFAULT_LIMITS = MappingProxyType(
+    {k: lim.default for k, lim in LIMITS.items() if lim.default is not None}
+)
 
 
 @dataclass(frozen=True)
@@ -108,12 +115,15 @@ class Problem:
     name: str = "problem"
     source: str = ""
     assumed: tuple = ()
-    # the checks' required life (axis.required_life) follows limits.min_life: the YAML set min_life, not
+    # the checks' required life (axis.required_life) follows limits.min_life: the YAML set min_life,
+    # not
     # required_life (one life requirement, not a stricter hidden default beside the user's limit)
     life_from_limit: bool = False
-    # search.counterbalance / search.twin_drive: ((label, Axis), ...) the search chooses among (empty: the axis)
+    # search.counterbalance / search.twin_drive: ((label, Axis), ...) the search chooses among
+    # (empty: the axis)
     arrangements: tuple = field(default=(), repr=False)
-    # search.drive_types (design.drivechoice.DriveChoice): rack and pinion, linear motors beside the screw;
+    # search.drive_types (design.drivechoice.DriveChoice): rack and pinion, linear motors beside the
+    # screw;
     # None: the screw drive alone
     drives: object = field(default=None, repr=False, compare=False)
 
@@ -139,8 +149,11 @@ class Problem:
         else:
             lim[key] = float(value)
         if key == "min_life" and self.life_from_limit and value is not None:
-            return replace(self, limits=tuple(sorted(lim.items())),
-                           axis=replace(self.axis, required_life=float(value)))
+            return replace(
+                self,
+                limits=tuple(sorted(lim.items())),
+                axis=replace(self.axis, required_life=float(value)),
+            )
         return replace(self, limits=tuple(sorted(lim.items())))
 
     def with_objective(self, objective: Objective) -> Problem:
@@ -150,68 +163,151 @@ class Problem:
         a = self.axis
         lims = ", ".join(f"{k} {fmt(v / LIMITS[k].factor, LIMITS[k].unit)}" for k, v in self.limits)
         margins = ", ".join(f"{c} {m:g}" for c, m in self.margins if m != 1.0)
-        return one_line("Problem", repr(self.name), {
-            "objective": self.objective.label, "limits": lims, "margins": margins,
-            "axis": f"{', '.join(self.mountings)}, stroke {fmt(a.stroke * 1e3, 'mm')}, moving mass "
-                    f"{fmt(a.moving_mass, 'kg')}, {fmt(a.max_speed * 60, 'm/min')}"})
+        return one_line(
+            "Problem",
+            repr(self.name),
+            {
+                "objective": self.objective.label,
+                "limits": lims,
+                "margins": margins,
+                "axis": f"{', '.join(self.mountings)}, stroke {fmt(a.stroke * 1e3, 'mm')}, moving mass "
+                f"{fmt(a.moving_mass, 'kg')}, {fmt(a.max_speed * 60, 'm/min')}",
+            },
+        )
 
 
-# ------------------------------------------------------------------------------ the YAML keys (one table)
+# ------------------------------------------------------------------------------ the YAML keys (one
+# table)
 # The one declaration of a problem file's keys: the readers below read them by it (Section.read) and
-# `axisopt schema problem` writes it out.  What a Key cannot say (a weight's scale follows its weight, catalog
+# `axisopt schema problem` writes it out.  What a Key cannot say (a weight's scale follows its
+# weight, catalog
 # names are checked against the catalogs loaded) stays in the readers.
 
-MARGINS_SPEC = Spec("margins", "smallest accepted margin per check (default 1.0; 0 disables the check)",
-                    {c: Key("number", f"smallest accepted {c.replace('_', ' ')} margin", minimum=0.0)
-                     for c in CHECKS})
-LIMITS_SPEC = Spec("limits", "limits on the model's outputs (each with its unit)", {
-    **{key: Key("quantity", lim.doc, kind=lim.kind, positive=not lim.zero_ok, non_negative=lim.zero_ok)
-       for key, lim in LIMITS.items()},
-    "margins": Key("section", spec=MARGINS_SPEC),
-})
-WEIGHTS_SPEC = Spec("weights", "weighted objective: weight per performance value", {
-    k: Key("number", f"weight of the {k}", minimum=0.0) for k in WEIGHTED})
-SCALE_SPEC = Spec("scale", "weighted objective: the scale of each weighted value (one per weight)", {
-    "stiffness": Key("quantity", "stiffness scale", kind="stiffness", positive=True, example="100 N/um"),
-    "frequency": Key("quantity", "frequency scale", kind="frequency", positive=True, example="100 Hz"),
-})
-OBJECTIVE_SPEC = Spec("objective", "what to maximise", {
-    "mode": Key("choice", "objective mode", required=True, choices=OBJECTIVE_MODES),
-    "weights": Key("section", "weighted: sum of weight * value / scale", spec=WEIGHTS_SPEC),
-    "scale": Key("section", "weighted: the scale of each weighted value", spec=SCALE_SPEC),
-    "order": Key("names", "lexicographic: two of the goals (stiffness, frequency, cost, moving_mass) in any order, "
-                 "first the primary", choices=PERFORMANCE, minimum=2, maximum=2),
-    "tolerance": Key("number", "lexicographic: keep designs within this fraction of the best primary (below 1; "
-                     "above it for a least cost or mass)",
-                     minimum=0.0, default=0.0),
-    "pareto": Key("names", "pareto: two or more objectives", choices=PARETO_KEYS, minimum=2),
-})
-PRELOAD_RANGE_SPEC = Spec("nut_preload", "nut preload range (intersected with each nut's preload range)", {
-    "min": Key("quantity", "lowest preload", kind="force", non_negative=True, default=0.0),
-    "max": Key("quantity", "highest preload", kind="force", positive=True, default=float("inf"), example="5 kN"),
-})
-CONTINUOUS_SPEC = Spec("continuous", "bounds of the continuous variables", {
-    "nut_preload": Key("section", spec=PRELOAD_RANGE_SPEC)})
-PROBLEM_SPEC = Spec("problem", "a sizing problem: the axis, the objective, limits and catalog restrictions", {
-    "name": NAME_KEY, "description": DESCRIPTION_KEY, "catalogs": CATALOGS_KEY,
-    "axis": Key("section", "as in a design (axis.mounting is the default mounting)", required=True,
-                spec=AXIS_SPEC),
-    "objective": Key("one_of", "what to maximise (default: stiffness)",
-                     options=(Key("choice", "a mode without options", choices=PERFORMANCE + ("tool_stiffness",)),
-                              Key("section", spec=OBJECTIVE_SPEC))),
-    "limits": Key("section", spec=LIMITS_SPEC),
-    "catalog": Key("section", spec=RESTRICTIONS_SPEC),
-    "continuous": Key("section", spec=CONTINUOUS_SPEC),
-    "search": Key("section", spec=SEARCH_SPEC),
-})
+MARGINS_SPEC = Spec(
+    "margins",
+    "smallest accepted margin per check (default 1.0; 0 disables the check)",
+    {
+        c: Key("number", f"smallest accepted {c.replace('_', ' ')} margin", minimum=0.0)
+        for c in CHECKS
+    },
+)
+LIMITS_SPEC = Spec(
+    "limits",
+    "limits on the model's outputs (each with its unit)",
+    {
+        **{
+            key: Key(
+                "quantity",
+                lim.doc,
+                kind=lim.kind,
+                positive=not lim.zero_ok,
+                non_negative=lim.zero_ok,
+            )
+            for key, lim in LIMITS.items()
+        },
+        "margins": Key("section", spec=MARGINS_SPEC),
+    },
+)
+WEIGHTS_SPEC = Spec(
+    "weights",
+    "weighted objective: weight per performance value",
+    {k: Key("number", f"weight of the {k}", minimum=0.0) for k in WEIGHTED},
+)
+SCALE_SPEC = Spec(
+    "scale",
+    "weighted objective: the scale of each weighted value (one per weight)",
+    {
+        "stiffness": Key(
+            "quantity", "stiffness scale", kind="stiffness", positive=True, example="100 N/um"
+        ),
+        "frequency": Key(
+            "quantity", "frequency scale", kind="frequency", positive=True, example="100 Hz"
+        ),
+    },
+)
+OBJECTIVE_SPEC = Spec(
+    "objective",
+    "what to maximise",
+    {
+        "mode": Key("choice", "objective mode", required=True, choices=OBJECTIVE_MODES),
+        "weights": Key("section", "weighted: sum of weight * value / scale", spec=WEIGHTS_SPEC),
+        "scale": Key("section", "weighted: the scale of each weighted value", spec=SCALE_SPEC),
+        "order": Key(
+            "names",
+            "lexicographic: two of the goals (stiffness, frequency, cost, moving_mass) in any order, "
+            "first the primary",
+            choices=PERFORMANCE,
+            minimum=2,
+            maximum=2,
+        ),
+        "tolerance": Key(
+            "number",
+            "lexicographic: keep designs within this fraction of the best primary (below 1; "
+            "above it for a least cost or mass)",
+            minimum=0.0,
+            default=0.0,
+        ),
+        "pareto": Key("names", "pareto: two or more objectives", choices=PARETO_KEYS, minimum=2),
+    },
+)
+PRELOAD_RANGE_SPEC = Spec(
+    "nut_preload",
+    "nut preload range (intersected with each nut's preload range)",
+    {
+        "min": Key("quantity", "lowest preload", kind="force", non_negative=True, default=0.0),
+        "max": Key(
+            "quantity",
+            "highest preload",
+            kind="force",
+            positive=True,
+            default=float("inf"),
+            example="5 kN",
+        ),
+    },
+)
+CONTINUOUS_SPEC = Spec(
+    "continuous",
+    "bounds of the continuous variables",
+    {"nut_preload": Key("section", spec=PRELOAD_RANGE_SPEC)},
+)
+PROBLEM_SPEC = Spec(
+    "problem",
+    "a sizing problem: the axis, the objective, limits and catalog restrictions",
+    {
+        "name": NAME_KEY,
+        "description": DESCRIPTION_KEY,
+        "catalogs": CATALOGS_KEY,
+        "axis": Key(
+            "section",
+            "as in a design (axis.mounting is the default mounting)",
+            required=True,
+            spec=AXIS_SPEC,
+        ),
+        "objective": Key(
+            "one_of",
+            "what to maximise (default: stiffness)",
+            options=(
+                Key("choice", "a mode without options", choices=PERFORMANCE + ("tool_stiffness",)),
+                Key("section", spec=OBJECTIVE_SPEC),
+            ),
+        ),
+        "limits": Key("section", spec=LIMITS_SPEC),
+        "catalog": Key("section", spec=RESTRICTIONS_SPEC),
+        "continuous": Key("section", spec=CONTINUOUS_SPEC),
+        "search": Key("section", spec=SEARCH_SPEC),
+    },
+)
 
 
 # ----------------------------------------------------------------------------------------- reading
 
+
 def load_problem(path, catalog: Catalog | None = None) -> Problem:
     """Read a problem YAML; every error names the file and key (InputError)."""
     path = Path(path)
-    root = Section(require_kind(read_yaml(path), str(path), "problem"), str(path), spec=PROBLEM_SPEC)
+    root = Section(
+        require_kind(read_yaml(path), str(path), "problem"), str(path), spec=PROBLEM_SPEC
+    )
     cat = catalog if catalog is not None else catalog_for(root, path.parent)
     return read_problem(root, cat, name=path.stem)
 
@@ -227,34 +323,60 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
     limits, margins = _read_limits(lsec)
     for key in ("max_moving_mass", "max_total_mass"):  # the table alone already weighs more
         cap = dict(limits).get(key)
-        if lsec is not None and cap is not None and lsec.has(key) and cap < axis.moving_mass * (1 - 1e-9):
-            raise lsec.error(key, f"{cap:g} kg is below axis.moving_mass ({axis.moving_mass:g} kg, the table alone, "
-                             "before nut and blocks): no design can meet it")
+        if (
+            lsec is not None
+            and cap is not None
+            and lsec.has(key)
+            and cap < axis.moving_mass * (1 - 1e-9)
+        ):
+            raise lsec.error(
+                key,
+                f"{cap:g} kg is below axis.moving_mass ({axis.moving_mass:g} kg, the table alone, "
+                "before nut and blocks): no design can meet it",
+            )
     restr = read_restrictions(root.read("catalog"), catalog, axis)
-    if restr.drive and axis.acceleration <= 0 and not axis.duty_cycle:  # as a design with a motor: no default
-        raise asec.error("acceleration", "sizing a motor (the search chooses the drive) needs axis.acceleration "
-                         "> 0 or an axis.duty_cycle: without one the drive would carry no inertia torque")
+    # as a design with a motor: no default
+    if restr.drive and axis.acceleration <= 0 and not axis.duty_cycle:
+        raise asec.error(
+            "acceleration",
+            "sizing a motor (the search chooses the drive) needs axis.acceleration "
+            "> 0 or an axis.duty_cycle: without one the drive would carry no inertia torque",
+        )
     pmin, pmax = _read_continuous(root.read("continuous"))
     ssec = root.read("search")
-    drives = read_drive_choice(ssec, axis, root.string_list("catalogs", []), base=Path(root.source).parent)
+    drives = read_drive_choice(
+        ssec, axis, root.string_list("catalogs", []), base=Path(root.source).parent
+    )
     root.done()
     min_life = dict(limits).get("min_life")
     follows = min_life is not None and "required_life" in assumed
     if follows:  # the user's life limit is the life the nut, bearing and guide checks need
         axis = replace(axis, required_life=min_life)
         assumed = tuple(k for k in assumed if k != "required_life")
-    return Problem(axis=axis, catalog=catalog, objective=objective, limits=limits, margins=margins,
-                   restrictions=restr, preload_min=pmin, preload_max=pmax, name=name,
-                   source=root.source, assumed=assumed, life_from_limit=follows,
-                   arrangements=read_arrangements(ssec, asec, axis),
-                   drives=None if drives is None or drives.screw_only else drives)
+    return Problem(
+        axis=axis,
+        catalog=catalog,
+        objective=objective,
+        limits=limits,
+        margins=margins,
+        restrictions=restr,
+        preload_min=pmin,
+        preload_max=pmax,
+        name=name,
+        source=root.source,
+        assumed=assumed,
+        life_from_limit=follows,
+        arrangements=read_arrangements(ssec, asec, axis),
+        drives=None if drives is None or drives.screw_only else drives,
+    )
 
 
 def _read_objective(root: Section) -> Objective:
     node = root.raw("objective")
     if node is None:
         return Objective()
-    if isinstance(node.value, str):  # all modes, so that the options-taking ones get a helpful message
+    # all modes, so that the options-taking ones get a helpful message
+    if isinstance(node.value, str):
         mode = root.choice("objective", OBJECTIVE_MODES)
         if mode in ("weighted", "lexicographic", "pareto"):
             raise root.error("objective", f"mode '{mode}' needs a mapping (see the problem format)")
@@ -267,24 +389,37 @@ def _read_objective(root: Section) -> Objective:
         weights = []
         for k in wsec.keys():
             if k not in WEIGHTED:
-                raise wsec.error(k, f"unknown objective '{k}'; use {', '.join(WEIGHTED)} (a least cost or mass: "
-                                    "mode cost or moving_mass, or a lexicographic order)")
+                raise wsec.error(
+                    k,
+                    f"unknown objective '{k}'; use {', '.join(WEIGHTED)} (a least cost or mass: "
+                    "mode cost or moving_mass, or a lexicographic order)",
+                )
             w = wsec.read(k)
             weights.append((k, float(w)))
         wsec.done()
         ssec = sec.section("scale", required=True)
         scale = []
         for k, _ in weights:
-            scale.append((k, ssec.quantity(k, SCALE_SPEC.keys[k].kind, required=True, positive=True)))
+            scale.append(
+                (k, ssec.quantity(k, SCALE_SPEC.keys[k].kind, required=True, positive=True))
+            )
         ssec.done()
         if not weights or sum(w for _, w in weights) <= 0:
             raise sec.error("weights", "at least one weight must be positive")
         kw.update(weights=tuple(weights), scale=tuple(scale))
     elif mode == "lexicographic":
         order = sec.read("order")
-        if not order or len(order) != 2 or len(set(order)) != 2 or not set(order) <= set(PERFORMANCE):
-            raise sec.error("order", f"lexicographic order must list two different goals of "
-                                     f"{', '.join(PERFORMANCE)}, e.g. [frequency, stiffness] or [stiffness, cost]")
+        if (
+            not order
+            or len(order) != 2
+            or len(set(order)) != 2
+            or not set(order) <= set(PERFORMANCE)
+        ):
+            raise sec.error(
+                "order",
+                f"lexicographic order must list two different goals of "
+                f"{', '.join(PERFORMANCE)}, e.g. [frequency, stiffness] or [stiffness, cost]",
+            )
         tol = sec.read("tolerance")
         if tol >= 1:
             raise sec.error("tolerance", f"relative tolerance must be below 1, got {tol}")
@@ -295,7 +430,9 @@ def _read_objective(root: Section) -> Objective:
             raise sec.error("pareto", f"list two or more of {', '.join(PARETO_KEYS)}")
         for k in keys:
             if k not in PARETO_KEYS:
-                raise sec.error("pareto", f"unknown Pareto objective '{k}'; use {', '.join(PARETO_KEYS)}")
+                raise sec.error(
+                    "pareto", f"unknown Pareto objective '{k}'; use {', '.join(PARETO_KEYS)}"
+                )
         keys = [PARETO_ALIASES.get(k, k) for k in keys]
         if len(set(keys)) != len(keys):
             raise sec.error("pareto", "Pareto objectives repeat")
@@ -320,8 +457,11 @@ def _read_limits(sec: Section | None):
     from .errors import ImplausibleInput
 
     for key, message in implausible(given, LIMIT_RANGES):
-        warnings.warn(str(InputError(message, source=sec.source, where=sec.where(key))), ImplausibleInput,
-                      stacklevel=2)
+        warnings.warn(
+            str(InputError(message, source=sec.source, where=sec.where(key))),
+            ImplausibleInput,
+            stacklevel=2,
+        )
     msec = sec.read("margins")
     if msec is not None:
         for k in msec.keys():
@@ -350,5 +490,13 @@ def _read_continuous(sec: Section | None):
     return lo, hi
 
 
-__all__ = ["Problem", "Objective", "Restrictions", "LIMITS", "PROBLEM_SPEC", "load_problem", "read_problem",
-           "InputError"]
+__all__ = [
+    "Problem",
+    "Objective",
+    "Restrictions",
+    "LIMITS",
+    "PROBLEM_SPEC",
+    "load_problem",
+    "read_problem",
+    "InputError",
+]

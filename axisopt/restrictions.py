@@ -18,8 +18,17 @@ from .design import MOUNTINGS, Axis
 from .yamlio import Key, Section, Spec
 
 SLOTS = PART_SLOTS  # a design's part slots (catalog.columns: MECH_SLOTS, then DRIVE_SLOTS)
-SLOT_TABLE = MappingProxyType({"screw": "screws", "nut": "nuts", "bearing": "bearings", "guide": "guides",
-                               "motor": "motors", "coupling": "couplings", "reduction": "reductions"})
+SLOT_TABLE = MappingProxyType(
+    {
+        "screw": "screws",
+        "nut": "nuts",
+        "bearing": "bearings",
+        "guide": "guides",
+        "motor": "motors",
+        "coupling": "couplings",
+        "reduction": "reductions",
+    }
+)
 
 DEFAULT_STATUS = ("vendor", "stiffness-derived", USER_STATUS)
 
@@ -35,8 +44,10 @@ class Restrictions:
     bearing_preload: tuple | None = None
     guide_types: tuple | None = None
     guide_preload: tuple | None = None
-    # parts you can buy: catalog rows with vendor ratings, and user-catalog rows; 'derived' and 'paper' rows
-    # (a preload class or stack a vendor does not list, the seed's catalog [21] nuts) only when asked for
+    # parts you can buy: catalog rows with vendor ratings, and user-catalog rows; 'derived' and
+    # 'paper' rows
+    # (a preload class or stack a vendor does not list, the seed's catalog [21] nuts) only when
+    # asked for
     status: tuple = DEFAULT_STATUS
     require: tuple = ()  # ((slot, (ids...)), ...)
     exclude: tuple = ()
@@ -46,10 +57,12 @@ class Restrictions:
     motor_vendors: tuple | None = None
     motor_series: tuple | None = None
     coupling_series: tuple | None = None
-    reductions: bool = True  # a searched drive chooses a reduction part too (or none: the axis's reduction values)
+    # a searched drive chooses a reduction part too (or none: the axis's reduction values)
+    reductions: bool = True
     max_motor_flange: float | None = None  # [m]
     estimated: str = "allow"  # 'exclude': no part whose empty catalog cell the model would estimate
-    screw_grades: tuple | None = None  # lead accuracy grades the search may give a screw (None: those it is made in)
+    # lead accuracy grades the search may give a screw (None: those it is made in)
+    screw_grades: tuple | None = None
 
     def required(self, slot):
         return dict(self.require).get(slot)
@@ -58,41 +71,78 @@ class Restrictions:
         return dict(self.exclude).get(slot, ())
 
 
-SLOT_IDS_SPEC = Spec("slots", "part ids per slot", {
-    slot: Key("names", f"{slot} ids from the catalogs") for slot in SLOTS})
+SLOT_IDS_SPEC = Spec(
+    "slots",
+    "part ids per slot",
+    {slot: Key("names", f"{slot} ids from the catalogs") for slot in SLOTS},
+)
 _CATALOG_NAMES = "(each one the catalogs hold)"
 ESTIMATED_CHOICES = ("allow", "exclude")
-RESTRICTIONS_SPEC = Spec("catalog", "which catalog parts and mountings the search may use", {
-    "mountings": Key("names", "screw mountings to search (default: [axis.mounting])", choices=MOUNTINGS,
-                     minimum=1),
-    "vendors": Key("names", f"vendors of the mechanical parts {_CATALOG_NAMES}", minimum=1),
-    "nut_types": Key("names", f"nut types {_CATALOG_NAMES}", minimum=1),
-    "bearing_arrangements": Key("names", f"bearing arrangements {_CATALOG_NAMES}", minimum=1),
-    "bearing_preload": Key("names", f"bearing preload classes {_CATALOG_NAMES}", minimum=1),
-    "guide_types": Key("names", f"guide types {_CATALOG_NAMES}", minimum=1),
-    "guide_preload": Key("names", f"guide preload levels or vendor classes {_CATALOG_NAMES}", minimum=1),
-    "status": Key("names", "row provenance (catalogs/SOURCES.md; default: vendor, stiffness-derived, user)",
-                  choices=STATUSES, minimum=1),
-    "require": Key("section", "only these part ids per slot", spec=SLOT_IDS_SPEC),
-    "exclude": Key("section", "never these part ids per slot", spec=SLOT_IDS_SPEC),
-    "drive": Key("choice", "motor, coupling and reduction are search choices (default: yes when the catalogs have "
-                 "motors and the axis an acceleration or duty cycle; 'no' is stated in every answer)",
-                 choices=(True, False, "yes", "no")),
-    "motor_vendors": Key("names", f"motor vendors {_CATALOG_NAMES}", minimum=1),
-    "motor_series": Key("names", f"motor series {_CATALOG_NAMES}", minimum=1),
-    "coupling_series": Key("names", f"coupling series {_CATALOG_NAMES}", minimum=1),
-    "reductions": Key("choice", "a searched drive chooses a reduction (reductions.csv) or none, beside motor and "
-                      "coupling (default yes; no: the axis's reduction values only)",
-                      choices=(True, False, "yes", "no")),
-    "max_motor_flange": Key("quantity", "the motor's (square) flange size at most this", kind="length",
-                            positive=True, example="130 mm"),
-    "screw_grades": Key("names", "lead accuracy grades (JIS B 1192: C0 C1 C2 C3 C5 C7 C8 C10) a screw may have, "
-                        "among those its series is made in (catalogs/screw_grades.csv); default: the search "
-                        "chooses among them when a positioning limit is set, else the cheapest", minimum=1),
-    "estimated": Key("choice", "parts whose empty catalog cell the model fills with an estimate (a support "
-                     "bearing's starting torque, a motor's torque-speed corner points): 'allow' (default; results "
-                     "say when one binds) or 'exclude' (vendor values only)", choices=ESTIMATED_CHOICES),
-})
+RESTRICTIONS_SPEC = Spec(
+    "catalog",
+    "which catalog parts and mountings the search may use",
+    {
+        "mountings": Key(
+            "names",
+            "screw mountings to search (default: [axis.mounting])",
+            choices=MOUNTINGS,
+            minimum=1,
+        ),
+        "vendors": Key("names", f"vendors of the mechanical parts {_CATALOG_NAMES}", minimum=1),
+        "nut_types": Key("names", f"nut types {_CATALOG_NAMES}", minimum=1),
+        "bearing_arrangements": Key("names", f"bearing arrangements {_CATALOG_NAMES}", minimum=1),
+        "bearing_preload": Key("names", f"bearing preload classes {_CATALOG_NAMES}", minimum=1),
+        "guide_types": Key("names", f"guide types {_CATALOG_NAMES}", minimum=1),
+        "guide_preload": Key(
+            "names", f"guide preload levels or vendor classes {_CATALOG_NAMES}", minimum=1
+        ),
+        "status": Key(
+            "names",
+            "row provenance (catalogs/SOURCES.md; default: vendor, stiffness-derived, user)",
+            choices=STATUSES,
+            minimum=1,
+        ),
+        "require": Key("section", "only these part ids per slot", spec=SLOT_IDS_SPEC),
+        "exclude": Key("section", "never these part ids per slot", spec=SLOT_IDS_SPEC),
+        "drive": Key(
+            "choice",
+            "motor, coupling and reduction are search choices (default: yes when the catalogs have "
+            "motors and the axis an acceleration or duty cycle; 'no' is stated in every answer)",
+            choices=(True, False, "yes", "no"),
+        ),
+        "motor_vendors": Key("names", f"motor vendors {_CATALOG_NAMES}", minimum=1),
+        "motor_series": Key("names", f"motor series {_CATALOG_NAMES}", minimum=1),
+        "coupling_series": Key("names", f"coupling series {_CATALOG_NAMES}", minimum=1),
+        "reductions": Key(
+            "choice",
+            "a searched drive chooses a reduction (reductions.csv) or none, beside motor and "
+            "coupling (default yes; no: the axis's reduction values only)",
+            choices=(True, False, "yes", "no"),
+        ),
+        "max_motor_flange": Key(
+            "quantity",
+            "the motor's (square) flange size at most this",
+            kind="length",
+            positive=True,
+            example="130 mm",
+        ),
+        "screw_grades": Key(
+            "names",
+            "lead accuracy grades (JIS B 1192: C0 C1 C2 C3 C5 C7 C8 C10) a screw may have, "
+            "among those its series is made in (catalogs/screw_grades.csv); default: the search "
+            "chooses among them when a positioning limit is set, else the cheapest",
+            minimum=1,
+        ),
+        "estimated": Key(
+            "choice",
+            "parts whose empty catalog cell the model fills with an estimate (a support "
+            "bearing's starting torque, a motor's torque-speed corner points): 'allow' (default; results "
+            "say when one binds) or 'exclude' (vendor values only)",
+            choices=ESTIMATED_CHOICES,
+        ),
+    },
+)
+
 
 def _catalog_names(sec: Section, key: str, known) -> tuple | None:
     """A non-empty list of names under ``key``, each one of ``known()`` (None when the key is absent)."""
@@ -114,8 +164,10 @@ def _default_drive(catalog: Catalog, axis: Axis) -> tuple:
     if not len(catalog.rows("motors")):
         return False, "the catalogs have no motors (motors.csv)"
     if axis.acceleration <= 0 and not axis.duty_cycle:
-        return False, ("axis.acceleration is 0 and there is no axis.duty_cycle: no inertia torque to size a "
-                       "motor on")
+        return False, (
+            "axis.acceleration is 0 and there is no axis.duty_cycle: no inertia torque to size a "
+            "motor on"
+        )
     return True, ""
 
 
@@ -126,20 +178,31 @@ def read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Rest
         return Restrictions(mountings=(axis.mounting,), drive=default, drive_left_out=why)
     kw: dict = {}
     drive = sec.read("drive")
-    # the drive is searched unless the problem says 'drive: no' (or nothing can size it: the reason is stated)
+    # the drive is searched unless the problem says 'drive: no' (or nothing can size it: the reason
+    # is stated)
     if drive is not None:
         kw["drive"] = drive in (True, "yes")
         kw["drive_left_out"] = "" if kw["drive"] else "catalog.drive: no"
     else:
-        # a motor/coupling filter or requirement asks for the drive (an axis without motion is then an error)
+        # a motor/coupling filter or requirement asks for the drive (an axis without motion is then
+        # an error)
         req = sec.node.value.get("require")
-        asked = any(sec.has(k) for k in ("motor_vendors", "motor_series", "coupling_series", "max_motor_flange")) or (
-            req is not None and isinstance(req.value, dict) and bool(set(DRIVE_SLOTS) & set(req.value)))
+        asked = any(
+            sec.has(k)
+            for k in ("motor_vendors", "motor_series", "coupling_series", "max_motor_flange")
+        ) or (
+            req is not None
+            and isinstance(req.value, dict)
+            and bool(set(DRIVE_SLOTS) & set(req.value))
+        )
         kw["drive"], kw["drive_left_out"] = (True, "") if asked else (default, why)
     if kw["drive"] and not has_motors:
         raise sec.error("drive", "the catalogs have no motors (motors.csv)")
-    for key, table, col in (("motor_vendors", "motors", "vendor"), ("motor_series", "motors", "series"),
-                            ("coupling_series", "couplings", "series")):
+    for key, table, col in (
+        ("motor_vendors", "motors", "vendor"),
+        ("motor_series", "motors", "series"),
+        ("coupling_series", "couplings", "series"),
+    ):
         vals = _catalog_names(sec, key, lambda t=table, c=col: sorted(set(catalog.rows(t)[c])))
         if vals is not None:
             kw[key] = vals
@@ -165,12 +228,19 @@ def read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Rest
         kw["mountings"] = tuple(dict.fromkeys(mounts))
     else:
         kw["mountings"] = (axis.mounting,)
-    vendors_all = sorted(set().union(*(set(catalog.rows(SLOT_TABLE[t])["vendor"]) for t in MECH_SLOTS)))
-    for key, table, col in (("vendors", None, "vendor"), ("nut_types", "nuts", "type"),
-                            ("bearing_arrangements", "bearings", "arrangement"),
-                            ("bearing_preload", "bearings", "preload_class"),
-                            ("guide_types", "guides", "type"),
-                            ("guide_preload", "guides", None), ("status", "status", None)):
+    vendors_all = sorted(
+        set().union(*(set(catalog.rows(SLOT_TABLE[t])["vendor"]) for t in MECH_SLOTS))
+    )
+    for key, table, col in (
+        ("vendors", None, "vendor"),
+        ("nut_types", "nuts", "type"),
+        ("bearing_arrangements", "bearings", "arrangement"),
+        ("bearing_preload", "bearings", "preload_class"),
+        ("guide_types", "guides", "type"),
+        ("guide_preload", "guides", None),
+        ("status", "status", None),
+    ):
+
         def known(table=table, col=col):
             if table is None:
                 return vendors_all
@@ -193,7 +263,8 @@ def read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Rest
             if slot not in SLOTS:
                 raise s.error(slot, f"unknown part slot '{slot}'; use {', '.join(SLOTS)}")
             ids = s.read(slot, [])
-            if key == "require" and not ids:  # as 'vendors: []': an empty list would allow no part at all
+            # as 'vendors: []': an empty list would allow no part at all
+            if key == "require" and not ids:
                 raise s.error(slot, "list at least one part id (or leave the slot out)")
             for i in ids:
                 catalog.part(SLOT_TABLE[slot], i, source=s.source, key=s.where(slot))
@@ -203,6 +274,8 @@ def read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Rest
     sec.done()
     if not kw["drive"] and any(slot in DRIVE_SLOTS for slot, _ in kw.get("require", ())):
         raise sec.error("require", "motor/coupling/reduction parts are required but 'drive' is off")
-    if not kw.get("reductions", True) and any(slot == "reduction" for slot, _ in kw.get("require", ())):
+    if not kw.get("reductions", True) and any(
+        slot == "reduction" for slot, _ in kw.get("require", ())
+    ):
         raise sec.error("require", "reduction parts are required but 'reductions' is off")
     return Restrictions(**kw)

@@ -21,7 +21,8 @@ import re
 from .yamlio import MAX_TEXT, Key, Spec
 
 SCHEMA_DIALECT = "https://json-schema.org/draft/2020-12/schema"
-SCHEMA_BASE = "urn:axisopt:schema:"  # $id of a kind's schema: urn:axisopt:schema:<kind> (no web address to fetch)
+# $id of a kind's schema: urn:axisopt:schema:<kind> (no web address to fetch)
+SCHEMA_BASE = "urn:axisopt:schema:"
 KINDS_OF_FILE = ("design", "problem", "study", "calibration", "machine", "machine-study")
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"  # units._QTY's number
@@ -60,12 +61,28 @@ def spec_of(kind: str) -> Spec:
     raise ValueError(f"unknown file kind '{kind}' (one of {', '.join(KINDS_OF_FILE)})")
 
 
-# ------------------------------------------------------------------------------------------------ units
+# ------------------------------------------------------------------------------------------------
+# units
 # Candidate spellings per kind; each is kept only if units.unit_factor accepts it for that kind.
 _LEN = ("m", "mm", "um", "µm", "μm", "nm", "cm", "dm", "km", "in", "inch", "ft", "micron")
 _LEN_SHORT = ("m", "mm", "um", "µm", "μm", "cm", "in")
 _MASS = ("kg", "g", "mg", "t", "tonne", "lb")
-_TIME = ("s", "ms", "us", "µs", "min", "h", "hr", "hour", "hours", "d", "day", "days", "year", "years")
+_TIME = (
+    "s",
+    "ms",
+    "us",
+    "µs",
+    "min",
+    "h",
+    "hr",
+    "hour",
+    "hours",
+    "d",
+    "day",
+    "days",
+    "year",
+    "years",
+)
 _FORCE = ("N", "kN", "MN", "mN", "daN", "lbf", "kgf")
 _PER_TIME = ("s", "min", "h")
 _TIMES = (".", "*", "·")
@@ -92,7 +109,18 @@ def _candidates(kind: str) -> list:
         "speed": _compound(_LEN, ("/",), _PER_TIME) + ["mps"],
         "acceleration": _compound(_LEN_SHORT, ("/",), ("s",), _SQUARE) + ["g0", "gravity"],
         "jerk": _compound(_LEN_SHORT, ("/",), ("s",), _CUBE),
-        "angular_speed": ["rpm", "rps", "r/min", "rev/min", "rev/s", "rad/s", "deg/s", "1/s", "1/min", "Hz"],
+        "angular_speed": [
+            "rpm",
+            "rps",
+            "r/min",
+            "rev/min",
+            "rev/s",
+            "rad/s",
+            "deg/s",
+            "1/s",
+            "1/min",
+            "Hz",
+        ],
         "frequency": ["Hz", "kHz", "mHz", "1/s", "1/min", "rpm", "r/min", "rev/min", "rad/s"],
         "angle": ["rad", "mrad", "urad", "deg", "degree", "arcmin", "arcsec", "rev", "turn"],
         "mass_per_length": _compound(("kg", "g"), ("/",), ("m", "mm", "cm")),
@@ -100,8 +128,17 @@ def _candidates(kind: str) -> list:
         "pressure": ["Pa", "kPa", "MPa", "GPa", "bar", "mbar", "psi", "ksi"]
         + _compound(("N", "kN"), ("/",), ("m", "mm", "cm"), _SQUARE),
         "temperature": ["K", "degC", "degF", "celsius"],
-        "temperature_difference": ["K", "mK", "degC", "delta_degC", "degF", "delta_degF", "celsius"],
-        "kinematic_viscosity": ["cSt", "St"] + _compound(("m", "mm", "cm"), _SQUARE, ("/",), ("s",)),
+        "temperature_difference": [
+            "K",
+            "mK",
+            "degC",
+            "delta_degC",
+            "degF",
+            "delta_degF",
+            "celsius",
+        ],
+        "kinematic_viscosity": ["cSt", "St"]
+        + _compound(("m", "mm", "cm"), _SQUARE, ("/",), ("s",)),
         "inertia": _compound(("kg", "g", "t"), _TIMES, ("m", "cm", "mm"), _SQUARE),
         "power": ["W", "kW", "mW", "MW", "hp"],
         "money": ["EUR"],
@@ -109,7 +146,14 @@ def _candidates(kind: str) -> list:
         "dn": _compound(("mm", "m"), _TIMES, ("rpm", "rad/s", "r/min")),
         "thermal_expansion": ["1/K", "1/degC", "ppm/K", "um/m/K", "1/delta_degC"],
         "dimensionless": ["%", "percent", "pct", "ppm"],
-        "heat_transfer": ["W/(m^2.K)", "W/(m^2*K)", "W/m^2/K", "W/(m2.K)", "kW/(m^2.K)", "W/(cm^2.K)"],
+        "heat_transfer": [
+            "W/(m^2.K)",
+            "W/(m^2*K)",
+            "W/m^2/K",
+            "W/(m2.K)",
+            "kW/(m^2.K)",
+            "W/(cm^2.K)",
+        ],
     }
     return c.get(kind, [])
 
@@ -143,13 +187,32 @@ def quantity_pattern(kind: str | None) -> str:
 
 # Example values per kind for the descriptions (in the vendor units users write).
 _EXAMPLES = {
-    "length": "800 mm", "mass": "300 kg", "time": "20000 h", "force": "4000 N", "stiffness": "150 N/um",
-    "compliance": "0.002 um/N", "torque": "1.2 N.m", "torsional_stiffness": "75000 N.m/rad",
-    "speed": "30 m/min", "acceleration": "3 m/s^2", "jerk": "50 m/s^3", "angular_speed": "3000 rpm",
-    "frequency": "100 Hz", "angle": "1 deg", "mass_per_length": "5.6 kg/m", "damping": "500 N.s/m",
-    "pressure": "200 GPa", "temperature": "20 degC", "temperature_difference": "3 K",
-    "kinematic_viscosity": "32 mm^2/s", "inertia": "0.29 kg.cm^2", "power": "750 W", "money": "4000 EUR",
-    "money_per_length": "120 EUR/m", "dn": "70000 mm.rpm", "thermal_expansion": "1.2e-5 1/K",
+    "length": "800 mm",
+    "mass": "300 kg",
+    "time": "20000 h",
+    "force": "4000 N",
+    "stiffness": "150 N/um",
+    "compliance": "0.002 um/N",
+    "torque": "1.2 N.m",
+    "torsional_stiffness": "75000 N.m/rad",
+    "speed": "30 m/min",
+    "acceleration": "3 m/s^2",
+    "jerk": "50 m/s^3",
+    "angular_speed": "3000 rpm",
+    "frequency": "100 Hz",
+    "angle": "1 deg",
+    "mass_per_length": "5.6 kg/m",
+    "damping": "500 N.s/m",
+    "pressure": "200 GPa",
+    "temperature": "20 degC",
+    "temperature_difference": "3 K",
+    "kinematic_viscosity": "32 mm^2/s",
+    "inertia": "0.29 kg.cm^2",
+    "power": "750 W",
+    "money": "4000 EUR",
+    "money_per_length": "120 EUR/m",
+    "dn": "70000 mm.rpm",
+    "thermal_expansion": "1.2e-5 1/K",
     "dimensionless": "0.03",
 }
 
@@ -166,12 +229,19 @@ def unit_message(kind: str | None) -> str:
         return "a number and a unit, e.g. 500 mm"
     units = [u for u in units_of(kind) if u.isascii()]
     shown = ", ".join(units[:6]) + (", ..." if len(units) > 6 else "")
-    what = "a number" + (", optionally with %, percent or ppm" if kind == "dimensionless" else " and a unit of "
-                                                                                           f"{kind.replace('_', ' ')}")
-    return f"expected {what}, e.g. {example_of(kind)}" + (f" (units: {shown})" if kind != "dimensionless" else "")
+    what = "a number" + (
+        ", optionally with %, percent or ppm"
+        if kind == "dimensionless"
+        else f" and a unit of {kind.replace('_', ' ')}"
+    )
+    return f"expected {what}, e.g. {example_of(kind)}" + (
+        f" (units: {shown})" if kind != "dimensionless" else ""
+    )
 
 
-# ----------------------------------------------------------------------------------------------- schema
+# -----------------------------------------------------------------------------------------------
+# schema
+
 
 class _Writer:
     """Writes one Spec tree; Specs used more than once go to ``$defs`` (by their name)."""
@@ -224,7 +294,10 @@ class _Writer:
         else:
             extra = self.key(spec.extra)
             if spec.extra_doc:
-                extra = {**extra, "description": _join(spec.extra_doc, extra.get("description", ""), ": ")}
+                extra = {
+                    **extra,
+                    "description": _join(spec.extra_doc, extra.get("description", ""), ": "),
+                }
             if spec.extra_pattern:
                 out["patternProperties"] = {spec.extra_pattern: extra}
                 out["additionalProperties"] = False
@@ -239,14 +312,28 @@ class _Writer:
 
     def _quantity(self, k: Key) -> dict:
         if k.kind is None:
-            return {"description": "a number with a unit, e.g. 500 mm",
-                    "anyOf": [{"type": "number"}, {"type": "string", "pattern": quantity_pattern(None),
-                                                   "patternErrorMessage": unit_message(None)}]}
+            return {
+                "description": "a number with a unit, e.g. 500 mm",
+                "anyOf": [
+                    {"type": "number"},
+                    {
+                        "type": "string",
+                        "pattern": quantity_pattern(None),
+                        "patternErrorMessage": unit_message(None),
+                    },
+                ],
+            }
         name = f"quantity_{k.kind}"
         if name not in self.defs:
-            text = {"type": "string", "pattern": quantity_pattern(k.kind),
-                    "patternErrorMessage": unit_message(k.kind), "examples": [example_of(k.kind)]}
-            self.defs[name] = ({"anyOf": [{"type": "number"}, text]} if k.kind == "dimensionless" else text)
+            text = {
+                "type": "string",
+                "pattern": quantity_pattern(k.kind),
+                "patternErrorMessage": unit_message(k.kind),
+                "examples": [example_of(k.kind)],
+            }
+            self.defs[name] = (
+                {"anyOf": [{"type": "number"}, text]} if k.kind == "dimensionless" else text
+            )
         words = k.kind.replace("_", " ")
         sign = ""
         out: dict = {"$ref": f"#/$defs/{name}"}
@@ -321,11 +408,22 @@ def json_schema(kind: str) -> dict:
     spec = spec_of(kind)
     w = _Writer(spec)
     body = w.spec(spec, top=True)
-    out = {"$schema": SCHEMA_DIALECT, "$id": f"{SCHEMA_BASE}{kind}", "title": f"axisopt {kind} file"}
+    out = {
+        "$schema": SCHEMA_DIALECT,
+        "$id": f"{SCHEMA_BASE}{kind}",
+        "title": f"axisopt {kind} file",
+    }
     out.update(body)
     if w.defs:
         out["$defs"] = dict(sorted(w.defs.items()))
     return out
 
 
-__all__ = ["json_schema", "spec_of", "units_of", "quantity_pattern", "unit_message", "KINDS_OF_FILE"]
+__all__ = [
+    "json_schema",
+    "spec_of",
+    "units_of",
+    "quantity_pattern",
+    "unit_message",
+    "KINDS_OF_FILE",
+]

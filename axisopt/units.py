@@ -30,10 +30,12 @@ def _registry():
     ureg.define("percent_ = 0.01 = pct")
     return ureg
 
+
 # Expected dimension of each quantity kind, as a pint dimensionality string, and its SI unit.
 KINDS: dict[str, tuple[str, str]] = {
     "length": ("[length]", "m"),
-    "distance": ("[length]", "m"),  # a travel (a guide's rating basis, a life in km): lengths beyond an axis
+    # a travel (a guide's rating basis, a life in km): lengths beyond an axis
+    "distance": ("[length]", "m"),
     "mass": ("[mass]", "kg"),
     "time": ("[time]", "s"),
     "force": ("[force]", "N"),
@@ -80,14 +82,33 @@ def _normalise(unit: str) -> str:
     return unit
 
 
-# The unit each kind is written in at the edges (design YAML written back, catalog exports): vendor units,
+# The unit each kind is written in at the edges (design YAML written back, catalog exports): vendor
+# units,
 # as users write them.
 DISPLAY_UNITS = {
-    "length": "mm", "mass": "kg", "time": "h", "force": "N", "stiffness": "N/um", "speed": "m/min",
-    "acceleration": "m/s^2", "jerk": "m/s^3", "angle": "deg", "mass_per_length": "kg/m", "dn": "mm.rpm",
-    "money_per_length": "EUR/m", "money": "EUR", "kinematic_viscosity": "mm^2/s", "inertia": "kg.m^2",
-    "angular_speed": "rpm", "damping": "N.s/m", "torque": "N.m", "torsional_stiffness": "N.m/rad",
-    "temperature_difference": "K", "power": "W", "heat_transfer": "W/(m^2.K)", "distance": "km",
+    "length": "mm",
+    "mass": "kg",
+    "time": "h",
+    "force": "N",
+    "stiffness": "N/um",
+    "speed": "m/min",
+    "acceleration": "m/s^2",
+    "jerk": "m/s^3",
+    "angle": "deg",
+    "mass_per_length": "kg/m",
+    "dn": "mm.rpm",
+    "money_per_length": "EUR/m",
+    "money": "EUR",
+    "kinematic_viscosity": "mm^2/s",
+    "inertia": "kg.m^2",
+    "angular_speed": "rpm",
+    "damping": "N.s/m",
+    "torque": "N.m",
+    "torsional_stiffness": "N.m/rad",
+    "temperature_difference": "K",
+    "power": "W",
+    "heat_transfer": "W/(m^2.K)",
+    "distance": "km",
 }
 
 
@@ -102,8 +123,10 @@ def unit_factor(unit: str, kind: str) -> float:
     if kind.startswith("money") and text in _EURO_WORDS:
         raise ValueError(f"unknown unit '{unit}'")
     if kind.startswith("money") and "EUR" not in text:  # no exchange rate is assumed
-        raise ValueError(f"'{unit}' is not EUR, the catalogs' currency, and no exchange rate is assumed: convert "
-                         "at your rate")
+        raise ValueError(
+            f"'{unit}' is not EUR, the catalogs' currency, and no exchange rate is assumed: convert "
+            "at your rate"
+        )
     known = KNOWN.get((text, kind))
     return known if known is not None else _pint_factor(unit, text, kind)
 
@@ -132,70 +155,73 @@ def _pint_factor(unit: str, text: str, kind: str) -> float:
     return float(q.to(target).magnitude)
 
 
-# (unit as :func:`_normalise` writes it, kind) -> factor to SI, as :func:`_pint_factor` computes it.  The units of
-# the shipped catalogs, problems, studies and reports, and a few common others; tests/core/test_units.py checks
-# every entry against pint.  A unit missing here is still read (by pint), only slower the first time.
+# (unit as :func:`_normalise` writes it, kind) -> factor to SI, as :func:`_pint_factor` computes it.
+# The units of
+# the shipped catalogs, problems, studies and reports, and a few common others;
+# tests/core/test_units.py checks
+# every entry against pint.  A unit missing here is still read (by pint), only slower the first
+# time.
 KNOWN: dict[tuple[str, str], float] = {
-    ('1/K', 'thermal_expansion'): 1.0,
-    ('1/s', 'frequency'): 1.0,
-    ('EUR', 'money'): 1.0,
-    ('EUR/m', 'money_per_length'): 1.0,
-    ('GPa', 'pressure'): 1000000000.0,
-    ('Hz', 'frequency'): 1.0,
-    ('K', 'temperature'): 1.0,
-    ('K', 'temperature_difference'): 1.0,
-    ('MPa', 'pressure'): 1000000.0,
-    ('N', 'force'): 1.0,
-    ('N*m', 'torque'): 1.0,
-    ('N*m', 'torsional_stiffness'): 1.0,
-    ('N*m/arcmin', 'torsional_stiffness'): 3437.7467707849396,
-    ('N*m/rad', 'torsional_stiffness'): 1.0,
-    ('N*mm', 'torque'): 0.001,
-    ('N*s/m', 'damping'): 1.0,
-    ('N/m', 'stiffness'): 1.0,
-    ('N/um', 'stiffness'): 1000000.0,
-    ('Pa', 'pressure'): 1.0,
-    ('W', 'power'): 1.0,
-    ('cSt', 'kinematic_viscosity'): 1.0000000000000002e-06,
-    ('cm', 'length'): 0.01,
-    ('arcmin', 'angle'): 0.00029088820866572163,
-    ('deg', 'angle'): 0.017453292519943295,
-    ('degC', 'temperature'): 1.0,
-    ('degC', 'temperature_difference'): 1.0,
-    ('%', 'dimensionless'): 0.01,
-    ('dimensionless', 'dimensionless'): 1.0,
-    ('g', 'mass'): 0.001,
-    ('h', 'time'): 3600.0,
-    ('kN', 'force'): 1000.0,
-    ('kW', 'power'): 1000.0,
-    ('kg', 'mass'): 1.0,
-    ('kg*cm**2', 'inertia'): 0.0001,
-    ('kg*m**2', 'inertia'): 1.0,
-    ('kg*mm**2', 'inertia'): 1e-06,
-    ('kg/m', 'mass_per_length'): 1.0,
-    ('km', 'distance'): 1000.0,
-    ('m', 'length'): 1.0,
-    ('m**2/s', 'kinematic_viscosity'): 1.0,
-    ('m*rad/s', 'dn'): 1.0,
-    ('m/N', 'compliance'): 1.0,
-    ('m/min', 'speed'): 0.016666666666666666,
-    ('m/s', 'speed'): 1.0,
-    ('m/s**2', 'acceleration'): 1.0,
-    ('m/s**3', 'jerk'): 1.0,
-    ('min', 'time'): 60.0,
-    ('mm', 'length'): 0.001,
-    ('mm**2/s', 'kinematic_viscosity'): 1e-06,
-    ('mm*rpm', 'dn'): 0.00010471975511965978,
-    ('mm/min', 'speed'): 1.6666666666666667e-05,
-    ('mm/s', 'speed'): 0.001,
-    ('mm/s**2', 'acceleration'): 0.001,
-    ('ms', 'time'): 0.001,
-    ('rad', 'angle'): 1.0,
-    ('rad/s', 'angular_speed'): 1.0,
-    ('rpm', 'angular_speed'): 0.10471975511965977,
-    ('s', 'time'): 1.0,
-    ('um', 'length'): 1e-06,
-    ('um/N', 'compliance'): 1e-06,
+    ("1/K", "thermal_expansion"): 1.0,
+    ("1/s", "frequency"): 1.0,
+    ("EUR", "money"): 1.0,
+    ("EUR/m", "money_per_length"): 1.0,
+    ("GPa", "pressure"): 1000000000.0,
+    ("Hz", "frequency"): 1.0,
+    ("K", "temperature"): 1.0,
+    ("K", "temperature_difference"): 1.0,
+    ("MPa", "pressure"): 1000000.0,
+    ("N", "force"): 1.0,
+    ("N*m", "torque"): 1.0,
+    ("N*m", "torsional_stiffness"): 1.0,
+    ("N*m/arcmin", "torsional_stiffness"): 3437.7467707849396,
+    ("N*m/rad", "torsional_stiffness"): 1.0,
+    ("N*mm", "torque"): 0.001,
+    ("N*s/m", "damping"): 1.0,
+    ("N/m", "stiffness"): 1.0,
+    ("N/um", "stiffness"): 1000000.0,
+    ("Pa", "pressure"): 1.0,
+    ("W", "power"): 1.0,
+    ("cSt", "kinematic_viscosity"): 1.0000000000000002e-06,
+    ("cm", "length"): 0.01,
+    ("arcmin", "angle"): 0.00029088820866572163,
+    ("deg", "angle"): 0.017453292519943295,
+    ("degC", "temperature"): 1.0,
+    ("degC", "temperature_difference"): 1.0,
+    ("%", "dimensionless"): 0.01,
+    ("dimensionless", "dimensionless"): 1.0,
+    ("g", "mass"): 0.001,
+    ("h", "time"): 3600.0,
+    ("kN", "force"): 1000.0,
+    ("kW", "power"): 1000.0,
+    ("kg", "mass"): 1.0,
+    ("kg*cm**2", "inertia"): 0.0001,
+    ("kg*m**2", "inertia"): 1.0,
+    ("kg*mm**2", "inertia"): 1e-06,
+    ("kg/m", "mass_per_length"): 1.0,
+    ("km", "distance"): 1000.0,
+    ("m", "length"): 1.0,
+    ("m**2/s", "kinematic_viscosity"): 1.0,
+    ("m*rad/s", "dn"): 1.0,
+    ("m/N", "compliance"): 1.0,
+    ("m/min", "speed"): 0.016666666666666666,
+    ("m/s", "speed"): 1.0,
+    ("m/s**2", "acceleration"): 1.0,
+    ("m/s**3", "jerk"): 1.0,
+    ("min", "time"): 60.0,
+    ("mm", "length"): 0.001,
+    ("mm**2/s", "kinematic_viscosity"): 1e-06,
+    ("mm*rpm", "dn"): 0.00010471975511965978,
+    ("mm/min", "speed"): 1.6666666666666667e-05,
+    ("mm/s", "speed"): 0.001,
+    ("mm/s**2", "acceleration"): 0.001,
+    ("ms", "time"): 0.001,
+    ("rad", "angle"): 1.0,
+    ("rad/s", "angular_speed"): 1.0,
+    ("rpm", "angular_speed"): 0.10471975511965977,
+    ("s", "time"): 1.0,
+    ("um", "length"): 1e-06,
+    ("um/N", "compliance"): 1e-06,
 }
 _KELVIN_OFFSET = {"K": 0.0, "degC": 273.15}  # temperature units read without pint
 
@@ -231,34 +257,69 @@ def to_si(value: float, unit: str, kind: str) -> float:
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
-# The largest magnitude (SI) any input of a kind may have: far beyond every machine-tool axis, well inside
+# The largest magnitude (SI) any input of a kind may have: far beyond every machine-tool axis, well
+# inside
 # float range, so that no product or power of inputs in the model overflows to inf or NaN.
 PLAUSIBLE_MAX = {
-    "length": 1e3, "distance": 1e12, "mass": 1e7, "time": 1e10, "force": 1e9, "stiffness": 1e14, "torque": 1e7,
+    "length": 1e3,
+    "distance": 1e12,
+    "mass": 1e7,
+    "time": 1e10,
+    "force": 1e9,
+    "stiffness": 1e14,
+    "torque": 1e7,
     "speed": 1e3,
-    "acceleration": 1e5, "jerk": 1e8, "angular_speed": 1e6, "angle": 1e3, "dimensionless": 1e9,
-    "mass_per_length": 1e6, "damping": 1e12, "pressure": 1e13, "temperature": 1e4,
-    "temperature_difference": 1e4, "torsional_stiffness": 1e12, "kinematic_viscosity": 1e2, "inertia": 1e5,
-    "power": 1e9, "money": 1e12, "money_per_length": 1e10, "dn": 1e6, "frequency": 1e7, "compliance": 1e3,
-    "thermal_expansion": 1.0, "heat_transfer": 1e6,
+    "acceleration": 1e5,
+    "jerk": 1e8,
+    "angular_speed": 1e6,
+    "angle": 1e3,
+    "dimensionless": 1e9,
+    "mass_per_length": 1e6,
+    "damping": 1e12,
+    "pressure": 1e13,
+    "temperature": 1e4,
+    "temperature_difference": 1e4,
+    "torsional_stiffness": 1e12,
+    "kinematic_viscosity": 1e2,
+    "inertia": 1e5,
+    "power": 1e9,
+    "money": 1e12,
+    "money_per_length": 1e10,
+    "dn": 1e6,
+    "frequency": 1e7,
+    "compliance": 1e3,
+    "thermal_expansion": 1.0,
+    "heat_transfer": 1e6,
 }
 PLAUSIBLE_MIN = 1e-15  # the smallest non-zero magnitude (SI) of any input
 MAX_UNIT_CHARS = 40  # 'kg.m^2/s' is 8; a longer unit text is refused before pint parses it
-PREFIX_ONLY = {"u", "µ", "μ", "k"}  # '450 u' is a metric prefix without its unit (pint: 'u' is the dalton)
+# '450 u' is a metric prefix without its unit (pint: 'u' is the dalton)
+PREFIX_ONLY = {"u", "µ", "μ", "k"}
 
 
-def check_plausible(value: float, kind: str, text, *, source=None, key=None, tiny: bool = True) -> float:
+def check_plausible(
+    value: float, kind: str, text, *, source=None, key=None, tiny: bool = True
+) -> float:
     """``value`` (SI) unless it is non-finite or outside what an axis input can be (one-line InputError).
     ``tiny=False``: values close to zero pass (measured data, where they are noise around zero)."""
     if not math.isfinite(value):
         raise InputError(f"'{text}' is not a finite number", source=source, where=key)
     top = PLAUSIBLE_MAX.get(kind, 1e12)
     if abs(value) > top:
-        raise InputError(f"'{text}' is out of range: at most {top:g} {KINDS.get(kind, ('', ''))[1] or ''}"
-                         f"".rstrip() + " in magnitude", source=source, where=key)
+        raise InputError(
+            f"'{text}' is out of range: at most {top:g} {KINDS.get(kind, ('', ''))[1] or ''}"
+            f"".rstrip()
+            + " in magnitude",
+            source=source,
+            where=key,
+        )
     if tiny and 0 < abs(value) < PLAUSIBLE_MIN:
-        raise InputError(f"'{text}' is too small to be meant (below {PLAUSIBLE_MIN:g} in SI units); write 0 "
-                         "if it is zero", source=source, where=key)
+        raise InputError(
+            f"'{text}' is too small to be meant (below {PLAUSIBLE_MIN:g} in SI units); write 0 "
+            "if it is zero",
+            source=source,
+            where=key,
+        )
     return value
 
 
@@ -278,11 +339,17 @@ def parse_quantity(text, kind: str, *, source: str | None = None, key: str | Non
             where=key,
         )
     if not isinstance(text, str):
-        raise InputError(f"expected a {kind} such as '1 {_example_unit(kind)}', got {text!r}",
-                         source=source, where=key)
+        raise InputError(
+            f"expected a {kind} such as '1 {_example_unit(kind)}', got {text!r}",
+            source=source,
+            where=key,
+        )
     if len(text) > MAX_UNIT_CHARS + 40:
-        raise InputError(f"cannot read '{text[:40]}...' ({len(text):,} characters) as a number with a unit",
-                         source=source, where=key)
+        raise InputError(
+            f"cannot read '{text[:40]}...' ({len(text):,} characters) as a number with a unit",
+            source=source,
+            where=key,
+        )
     m = _QTY.match(text)
     if not m:
         raise InputError(f"cannot read '{text}' as a number with a unit", source=source, where=key)
@@ -296,15 +363,22 @@ def parse_quantity(text, kind: str, *, source: str | None = None, key: str | Non
             where=key,
         )
     if unit.strip() in PREFIX_ONLY:
-        raise InputError(f"'{unit}' in '{text}' is a metric prefix without its unit; write the whole unit, "
-                         f"e.g. '{m.group(1)} {_example_unit(kind)}'", source=source, where=key)
-    if kind == "acceleration" and unit.strip() in GRAVITY_WORDS:  # '0.4 g': standard gravity, not grams
+        raise InputError(
+            f"'{unit}' in '{text}' is a metric prefix without its unit; write the whole unit, "
+            f"e.g. '{m.group(1)} {_example_unit(kind)}'",
+            source=source,
+            where=key,
+        )
+    # '0.4 g': standard gravity, not grams
+    if kind == "acceleration" and unit.strip() in GRAVITY_WORDS:
         return check_plausible(number * STANDARD_GRAVITY, kind, text, source=source, key=key)
     try:
         v = to_si(number, unit, kind)
     except ValueError as exc:
         hint = unit_hint(m.group(1), unit, kind)
-        raise InputError(f"{exc} in '{text}'" + (f"; {hint}" if hint else ""), source=source, where=key) from None
+        raise InputError(
+            f"{exc} in '{text}'" + (f"; {hint}" if hint else ""), source=source, where=key
+        ) from None
     return check_plausible(v, kind, text, source=source, key=key)
 
 
@@ -322,7 +396,7 @@ def unit_hint(number: str, unit: str, kind: str) -> str:
     u = unit.strip()
     grouped = re.match(r"^([,.' ]\d{3})+(?=\s|$)", u) or re.match(r"^\d{3}(\s\d{3})*(?=\s|$)", u)
     if grouped:
-        rest = u[grouped.end():].strip()
+        rest = u[grouped.end() :].strip()
         digits = number + re.sub(r"\D", "", grouped.group(0))
         return f"write the number without digit groups: '{digits} {rest or _example_unit(kind)}'"
     dec = re.match(r"^,(\d+)\s*(.*)$", u)
@@ -340,11 +414,28 @@ def unit_hint(number: str, unit: str, kind: str) -> str:
 
 
 _EXAMPLES = {
-    "length": "mm", "mass": "kg", "time": "s", "force": "N", "stiffness": "N/um", "torque": "N.m",
-    "speed": "m/min", "acceleration": "m/s^2", "jerk": "m/s^3", "angular_speed": "rpm", "angle": "deg",
-    "mass_per_length": "kg/m", "damping": "N.s/m", "temperature": "degC", "money": "EUR",
-    "inertia": "kg.m^2", "frequency": "Hz", "dn": "mm.rpm", "money_per_length": "EUR/m",
-    "temperature_difference": "K", "torsional_stiffness": "N.m/rad", "heat_transfer": "W/(m^2.K)",
+    "length": "mm",
+    "mass": "kg",
+    "time": "s",
+    "force": "N",
+    "stiffness": "N/um",
+    "torque": "N.m",
+    "speed": "m/min",
+    "acceleration": "m/s^2",
+    "jerk": "m/s^3",
+    "angular_speed": "rpm",
+    "angle": "deg",
+    "mass_per_length": "kg/m",
+    "damping": "N.s/m",
+    "temperature": "degC",
+    "money": "EUR",
+    "inertia": "kg.m^2",
+    "frequency": "Hz",
+    "dn": "mm.rpm",
+    "money_per_length": "EUR/m",
+    "temperature_difference": "K",
+    "torsional_stiffness": "N.m/rad",
+    "heat_transfer": "W/(m^2.K)",
     "distance": "km",
 }
 
@@ -366,9 +457,12 @@ N_PER_UM = 1e6
 
 
 # ------------------------------------------------------------------------------ strict unit CSV
-# The readers of unit-headed CSV files (measured tables, time records, catalogs) share the header's and the
-# cells' rules here: a header cell is ``name [unit]``, every column known and once, a unit in brackets exactly
-# when the column has a quantity kind, every cell one finite number; each problem is an InputError naming the
+# The readers of unit-headed CSV files (measured tables, time records, catalogs) share the header's
+# and the
+# cells' rules here: a header cell is ``name [unit]``, every column known and once, a unit in
+# brackets exactly
+# when the column has a quantity kind, every cell one finite number; each problem is an InputError
+# naming the
 # file, line and column.
 
 
@@ -401,11 +495,18 @@ def read_header(header, *, line: int, source: str, kinds: dict, unknown, factor=
             if unit not in (None, "", "-"):
                 raise InputError(f"column '{name}' takes no unit", source=source, where=where)
         elif unit is None:
-            raise InputError(f"column '{name}' needs a unit in brackets, e.g. '{name} [..]'", source=source,
-                             where=where)
+            raise InputError(
+                f"column '{name}' needs a unit in brackets, e.g. '{name} [..]'",
+                source=source,
+                where=where,
+            )
         else:
             try:
-                f = factor(name, unit, kind, where) if factor is not None else unit_factor(unit, kind)
+                f = (
+                    factor(name, unit, kind, where)
+                    if factor is not None
+                    else unit_factor(unit, kind)
+                )
             except ValueError as exc:
                 raise InputError(f"{exc} in column '{name}'", source=source, where=where) from None
         cols.append(CsvColumn(name, unit, kind, f))
@@ -415,7 +516,9 @@ def read_header(header, *, line: int, source: str, kinds: dict, unknown, factor=
 def check_width(cells, columns: int, *, source: str, line: int) -> None:
     """A data row must have as many cells as the header."""
     if len(cells) != columns:
-        raise InputError(f"has {len(cells)} cells, header has {columns}", source=source, where=f"line {line}")
+        raise InputError(
+            f"has {len(cells)} cells, header has {columns}", source=source, where=f"line {line}"
+        )
 
 
 def read_number(cell: str, *, source: str, where: str) -> float:
@@ -424,7 +527,9 @@ def read_number(cell: str, *, source: str, where: str) -> float:
         val = float(cell)
     except ValueError:
         c = cell.strip()
-        raise InputError("empty cell" if not c else f"'{c}' is not a number", source=source, where=where) from None
+        raise InputError(
+            "empty cell" if not c else f"'{c}' is not a number", source=source, where=where
+        ) from None
     if not math.isfinite(val):
         raise InputError(f"'{cell.strip()}' is not a finite number", source=source, where=where)
     return val

@@ -30,7 +30,8 @@ class Node:
     value: Any  # dict[str, Node] | list[Node] | scalar
     line: int
 
-    def __repr__(self) -> str:  # as the user wrote it: error messages never show Node(value=..., line=...)
+    # as the user wrote it: error messages never show Node(value=..., line=...)
+    def __repr__(self) -> str:
         return repr(plain(self))
 
     def __str__(self) -> str:
@@ -43,15 +44,19 @@ MAX_VALUES = 200_000  # values after expanding aliases (a YAML "billion laughs" 
 MAX_BYTES = 20_000_000  # file size (fileio.INPUT_LIMITS["yaml"])
 
 
-_PLAIN_TAGS = ("tag:yaml.org,2002:map", "tag:yaml.org,2002:seq")  # a mapping or list without an explicit tag
+# a mapping or list without an explicit tag
+_PLAIN_TAGS = ("tag:yaml.org,2002:map", "tag:yaml.org,2002:seq")
 
 
 class _Loader(yaml.SafeLoader):
-    def compose_node(self, parent, index):  # PyYAML composes recursively: bound the depth before Python does
+    # PyYAML composes recursively: bound the depth before Python does
+    def compose_node(self, parent, index):
         depth = getattr(self, "_depth", 0) + 1
         if depth > MAX_DEPTH:
-            raise InputError(f"malformed YAML: nested deeper than {MAX_DEPTH} levels",
-                             where=f"line {self.peek_event().start_mark.line + 1}")
+            raise InputError(
+                f"malformed YAML: nested deeper than {MAX_DEPTH} levels",
+                where=f"line {self.peek_event().start_mark.line + 1}",
+            )
         self._depth = depth
         try:
             return super().compose_node(parent, index)
@@ -63,12 +68,16 @@ def _construct(loader, node, count=None):
     count = [0] if count is None else count
     count[0] += 1
     if count[0] > MAX_VALUES:
-        raise InputError(f"YAML too large: more than {MAX_VALUES:,} values once its aliases are expanded",
-                         where=f"line {node.start_mark.line + 1}")
+        raise InputError(
+            f"YAML too large: more than {MAX_VALUES:,} values once its aliases are expanded",
+            where=f"line {node.start_mark.line + 1}",
+        )
     line = node.start_mark.line + 1
     if isinstance(node, (yaml.MappingNode, yaml.SequenceNode)) and node.tag not in _PLAIN_TAGS:
-        raise InputError(f"YAML tag '{node.tag}' is not supported here (write a plain mapping or list)",
-                         where=f"line {line}")
+        raise InputError(
+            f"YAML tag '{node.tag}' is not supported here (write a plain mapping or list)",
+            where=f"line {line}",
+        )
     if isinstance(node, yaml.MappingNode):
         out: dict[str, Node] = {}
         for k, v in node.value:
@@ -110,7 +119,9 @@ def parse_yaml_text(text: str, src: str) -> Node:
     except InputError as exc:
         raise InputError(exc.message, source=src, where=exc.where) from None
     except RecursionError:
-        raise InputError(f"malformed YAML: nested deeper than {MAX_DEPTH} levels", source=src) from None
+        raise InputError(
+            f"malformed YAML: nested deeper than {MAX_DEPTH} levels", source=src
+        ) from None
     if root is None:
         raise InputError("empty YAML file", source=src)
     try:
@@ -137,7 +148,8 @@ def close_matches(word: str, options, n: int = 1) -> list:
 MAX_TEXT = 10_000  # characters of any text value (names, descriptions)
 
 # Key types: what a key's value is in the YAML file.
-#   quantity  a number with its unit ('800 mm'), of units.KINDS kind ``kind``; a bare number if dimensionless
+#   quantity  a number with its unit ('800 mm'), of units.KINDS kind ``kind``; a bare number if
+#   dimensionless
 #   number    a plain number (``integer``: a whole one) within [minimum, maximum]
 #   choice    one of ``choices``
 #   string    text
@@ -161,7 +173,8 @@ class Key:
     positive: bool = False  # quantity, number
     non_negative: bool = False  # quantity
     minimum: float | None = None  # number; list: fewest items
-    maximum: Any = None  # number: a float (default 1e9); quantity: (SI value, text shown); list: most items
+    # number: a float (default 1e9); quantity: (SI value, text shown); list: most items
+    maximum: Any = None
     integer: bool = False  # number
     choices: tuple | None = None  # choice; names: the allowed names (None: any)
     default: Any = None  # returned by Section.read when the key is absent (SI for a quantity)
@@ -200,8 +213,10 @@ class Spec:
         k = self.keys.get(name)
         if k is None:
             if self.extra is None:
-                raise UndeclaredKey(f"the reader of '{self.name}' reads key '{name}', which its Spec does not "
-                                    "declare: add it to the table")
+                raise UndeclaredKey(
+                    f"the reader of '{self.name}' reads key '{name}', which its Spec does not "
+                    "declare: add it to the table"
+                )
             return self.extra
         return k
 
@@ -229,7 +244,9 @@ class Section:
 
     def __init__(self, node: Node, source: str, path: str = "", spec: Spec | None = None):
         if not isinstance(node.value, dict):
-            raise InputError("expected a mapping of keys", source=source, where=self._loc(path, node.line))
+            raise InputError(
+                "expected a mapping of keys", source=source, where=self._loc(path, node.line)
+            )
         self.node = node
         self.source = source
         self.path = path
@@ -247,7 +264,11 @@ class Section:
         return f"line {line}, key '{path}'" if path else f"line {line}"
 
     def key_path(self, key: str) -> str:
-        key = str(key) if len(str(key)) <= 60 else str(key)[:40] + f"...({len(str(key)):,} characters)"
+        key = (
+            str(key)
+            if len(str(key)) <= 60
+            else str(key)[:40] + f"...({len(str(key)):,} characters)"
+        )
         return f"{self.path}.{key}" if self.path else key
 
     def where(self, key: str) -> str:
@@ -271,9 +292,14 @@ class Section:
             if required:
                 typo = close_matches(key, [k for k in self.node.value if k not in self.used], n=1)
                 if typo:
-                    raise self.error(typo[0], f"unknown key '{self.key_path(typo[0])}'; did you mean '{key}'?")
-                raise InputError(f"missing required key '{self.key_path(key)}'", source=self.source,
-                                 where=self._loc(self.path, self.node.line) if self.path else None)
+                    raise self.error(
+                        typo[0], f"unknown key '{self.key_path(typo[0])}'; did you mean '{key}'?"
+                    )
+                raise InputError(
+                    f"missing required key '{self.key_path(key)}'",
+                    source=self.source,
+                    where=self._loc(self.path, self.node.line) if self.path else None,
+                )
             return default
         return self.node.value[key]
 
@@ -281,8 +307,17 @@ class Section:
         n = self.raw(key, None, required=required)
         return default if n is None else plain(n)
 
-    def quantity(self, key: str, kind: str, default=None, *, required: bool = False, positive: bool = False,
-                 non_negative: bool = False, maximum: tuple | None = None):
+    def quantity(
+        self,
+        key: str,
+        kind: str,
+        default=None,
+        *,
+        required: bool = False,
+        positive: bool = False,
+        non_negative: bool = False,
+        maximum: tuple | None = None,
+    ):
         """A quantity in SI; ``maximum`` = (SI value, text shown) bounds it from above."""
         n = self.raw(key, None, required=required)
         if n is None:
@@ -296,15 +331,27 @@ class Section:
             raise self.error(key, f"must be at most {maximum[1]}, got '{n.value}'")
         return v
 
-    def number(self, key: str, default=None, *, required: bool = False, integer: bool = False,
-               minimum: float | None = None, maximum: float | None = None):
+    def number(
+        self,
+        key: str,
+        default=None,
+        *,
+        required: bool = False,
+        integer: bool = False,
+        minimum: float | None = None,
+        maximum: float | None = None,
+    ):
         """A plain number: finite, within [minimum, maximum] (``maximum`` defaults to 1e9, which no count
         or factor of an axis input reaches)."""
         n = self.raw(key, None, required=required)
         if n is None:
             return default
         v = n.value
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or (integer and not isinstance(v, int)):
+        if (
+            isinstance(v, bool)
+            or not isinstance(v, (int, float))
+            or (integer and not isinstance(v, int))
+        ):
             shown = repr(v) if len(repr(v)) <= 60 else repr(v)[:60] + "..."
             raise self.error(key, f"expected a {'whole ' if integer else ''}number, got {shown}")
         if not math.isfinite(v):
@@ -335,7 +382,9 @@ class Section:
         if not isinstance(n.value, str):
             raise self.error(key, f"expected text, got {str(n.value)[:60]!r}")
         if len(n.value) > MAX_TEXT:
-            raise self.error(key, f"text too long ({len(n.value):,} characters; at most {MAX_TEXT:,})")
+            raise self.error(
+                key, f"text too long ({len(n.value):,} characters; at most {MAX_TEXT:,})"
+            )
         return n.value
 
     def string_list(self, key: str, default=None):
@@ -365,11 +414,24 @@ class Section:
             raise UndeclaredKey(f"Section.read('{key}') needs a Spec")
         default = k.default if default is None else default
         if k.type == "quantity":
-            return self.quantity(key, k.kind, default, required=k.required, positive=k.positive,
-                                 non_negative=k.non_negative, maximum=k.maximum)
+            return self.quantity(
+                key,
+                k.kind,
+                default,
+                required=k.required,
+                positive=k.positive,
+                non_negative=k.non_negative,
+                maximum=k.maximum,
+            )
         if k.type == "number":
-            v = self.number(key, default, required=k.required, integer=k.integer, minimum=k.minimum,
-                            maximum=k.maximum)
+            v = self.number(
+                key,
+                default,
+                required=k.required,
+                integer=k.integer,
+                minimum=k.minimum,
+                maximum=k.maximum,
+            )
             if k.positive and v is not None and not v > 0:
                 raise self.error(key, f"must be a positive finite number, got {v}")
             return v
@@ -387,7 +449,8 @@ class Section:
         extra = [k for k in self.node.value if k not in self.used]
         if extra:
             k = extra[0]
-            # the keys read, and those the table declares (a section whose reader asks a key only when another
+            # the keys read, and those the table declares (a section whose reader asks a key only
+            # when another
             # is there: search.counterbalance beside search.drive_types)
             known = set(self.used) | (set(self.spec.keys) if self.spec is not None else set())
             near = close_matches(k, sorted(known - set(extra)), n=1)
@@ -405,10 +468,14 @@ def plain(node: Node):
 
 
 # ------------------------------------------------------------------------------ which kind of file
-# The top-level keys that tell the YAML files apart, and the command that reads each: a file given to the
+# The top-level keys that tell the YAML files apart, and the command that reads each: a file given
+# to the
 # wrong command is named as what it is, with the command to use (not "unknown key 'parts'").
-KIND_COMMANDS = {"design": "axisopt evaluate {file}", "problem": "axisopt solve {file}",
-                 "study": "axisopt study {file}"}
+KIND_COMMANDS = {
+    "design": "axisopt evaluate {file}",
+    "problem": "axisopt solve {file}",
+    "study": "axisopt study {file}",
+}
 
 
 def file_kind(node: Node) -> str | None:
@@ -429,8 +496,11 @@ def require_kind(node: Node, src: str, wanted: str) -> Node:
     """``node`` unchanged when it can be a ``wanted`` file; else a one-line InputError naming what it is and the
     command that reads it (a CSV, e.g. measured data, given where a YAML file is read, too)."""
     if not isinstance(node.value, dict) and str(src).lower().endswith((".csv", ".txt", ".tsv")):
-        raise InputError(f"a CSV file, not a {wanted} YAML: measured data go to `axisopt diagnose {src} --design "
-                         "DESIGN.yaml`, catalog tables to --catalogs DIR", source=src)
+        raise InputError(
+            f"a CSV file, not a {wanted} YAML: measured data go to `axisopt diagnose {src} --design "
+            "DESIGN.yaml`, catalog tables to --catalogs DIR",
+            source=src,
+        )
     kind = file_kind(node)
     if kind is None or kind == wanted:
         return node

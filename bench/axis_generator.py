@@ -49,23 +49,59 @@ from dataclasses import dataclass
 
 __all__ = ["Case", "KINDS", "generate", "make"]
 
-KINDS = ("vmc_x", "vmc_y", "vmc_z", "lathe_x", "lathe_z", "gantry_twin", "vertical_cb", "boring_table",
-         "laser", "router", "precision_stage")
+KINDS = (
+    "vmc_x",
+    "vmc_y",
+    "vmc_z",
+    "lathe_x",
+    "lathe_z",
+    "gantry_twin",
+    "vertical_cb",
+    "boring_table",
+    "laser",
+    "router",
+    "precision_stage",
+)
 
-# HIWIN lists every mechanical slot; the others add screws and nuts (THK, Bosch Rexroth), bearings (NSK,
-# Schaeffler, THK) or guides (IKO, NBS): a vendors filter without HIWIN mostly leaves a slot empty (an input error)
+# HIWIN lists every mechanical slot; the others add screws and nuts (THK, Bosch Rexroth), bearings
+# (NSK,
+# Schaeffler, THK) or guides (IKO, NBS): a vendors filter without HIWIN mostly leaves a slot empty
+# (an input error)
 MECH_VENDORS = ("THK", "NSK", "Bosch Rexroth", "Schaeffler", "IKO", "NBS")
-# the largest rated power [W] of each motor series in catalogs/motors.csv: a buyer lists series that reach the
+# the largest rated power [W] of each motor series in catalogs/motors.csv: a buyer lists series that
+# reach the
 # axis's power (below)
-SERIES_POWER = {"Sigma-7 SGM7G": 1800, "Sigma-7 SGM7A": 7000, "Sigma-7 SGM7J": 750, "MELDAS HC (2000 r/min)": 7000,
-                "MELDAS HC-R (3000 r/min)": 5000, "MELSERVO-JE HG-KN": 750, "SIMOTICS S-1FT7 (6000 r/min)": 1257}
-MOTOR_SERIES = ("Sigma-7 SGM7G", "Sigma-7 SGM7A", "Sigma-7 SGM7J", "MELDAS HC (2000 r/min)",
-                "MELDAS HC-R (3000 r/min)", "MELSERVO-JE HG-KN", "SIMOTICS S-1FT7 (6000 r/min)")
+SERIES_POWER = {
+    "Sigma-7 SGM7G": 1800,
+    "Sigma-7 SGM7A": 7000,
+    "Sigma-7 SGM7J": 750,
+    "MELDAS HC (2000 r/min)": 7000,
+    "MELDAS HC-R (3000 r/min)": 5000,
+    "MELSERVO-JE HG-KN": 750,
+    "SIMOTICS S-1FT7 (6000 r/min)": 1257,
+}
+MOTOR_SERIES = (
+    "Sigma-7 SGM7G",
+    "Sigma-7 SGM7A",
+    "Sigma-7 SGM7J",
+    "MELDAS HC (2000 r/min)",
+    "MELDAS HC-R (3000 r/min)",
+    "MELSERVO-JE HG-KN",
+    "SIMOTICS S-1FT7 (6000 r/min)",
+)
 BEARING_VENDORS = ("NSK", "Schaeffler")
-COUPLING_SERIES = ("SERVOFLEX SFS-S (single steel disc element; pilot-bore/key hubs)",
-                   "GWB AKN metal bellows (clamping hubs; short; higher torsional stiffness)")
+COUPLING_SERIES = (
+    "SERVOFLEX SFS-S (single steel disc element; pilot-bore/key hubs)",
+    "GWB AKN metal bellows (clamping hubs; short; higher torsional stiffness)",
+)
 COUPLINGS_SMALL = ("SFS-05S", "RINGFEDER-GWB-AKN-18", "RINGFEDER-GWB-AKN-30")
-COUPLINGS = ("SFS-06S", "SFS-08S", "RINGFEDER-GWB-AKN-60", "RINGFEDER-GWB-AKN-150", "RINGFEDER-GWB-AKN-300")
+COUPLINGS = (
+    "SFS-06S",
+    "SFS-08S",
+    "RINGFEDER-GWB-AKN-60",
+    "RINGFEDER-GWB-AKN-150",
+    "RINGFEDER-GWB-AKN-300",
+)
 
 
 @dataclass
@@ -86,31 +122,109 @@ def _fmt(v):
     return f"{v:g}"
 
 
-# per machine kind: stroke [mm], moving mass [kg], max speed [m/min], acceleration [m/s^2], axial load [N],
+# per machine kind: stroke [mm], moving mass [kg], max speed [m/min], acceleration [m/s^2], axial
+# load [N],
 # table length [mm], orientation
 SPECS = {
-    "vmc_x": dict(stroke=(500, 1600), mass=(200, 1200), speed=(20, 48), acc=(2, 6), force=(1000, 8000),
-                  table=(500, 1000), orient="horizontal"),
-    "vmc_y": dict(stroke=(400, 800), mass=(400, 2000), speed=(20, 48), acc=(2, 5), force=(1000, 8000),
-                  table=(500, 900), orient="horizontal"),
-    "vmc_z": dict(stroke=(400, 700), mass=(150, 600), speed=(15, 36), acc=(2, 5), force=(1000, 6000),
-                  table=(400, 700), orient="vertical"),
-    "lathe_x": dict(stroke=(150, 400), mass=(60, 300), speed=(15, 36), acc=(2, 8), force=(500, 6000),
-                    table=(250, 450), orient="horizontal"),
-    "lathe_z": dict(stroke=(400, 2000), mass=(150, 800), speed=(15, 36), acc=(2, 6), force=(1500, 10000),
-                    table=(350, 700), orient="horizontal"),
-    "gantry_twin": dict(stroke=(2000, 6000), mass=(300, 1500), speed=(15, 40), acc=(1, 4), force=(500, 6000),
-                        table=(600, 1000), orient="horizontal"),
-    "vertical_cb": dict(stroke=(500, 1200), mass=(400, 1500), speed=(10, 24), acc=(1, 3), force=(2000, 8000),
-                        table=(500, 900), orient="vertical"),
-    "boring_table": dict(stroke=(1000, 3000), mass=(1000, 3000), speed=(8, 20), acc=(0.5, 2),
-                         force=(3000, 12000), table=(900, 1600), orient="horizontal"),
-    "laser": dict(stroke=(1000, 3000), mass=(50, 250), speed=(30, 60), acc=(5, 15), force=(0, 300),
-                  table=(300, 600), orient="horizontal"),
-    "router": dict(stroke=(1000, 3000), mass=(100, 500), speed=(20, 50), acc=(2, 6), force=(200, 2000),
-                   table=(400, 800), orient="horizontal"),
-    "precision_stage": dict(stroke=(100, 600), mass=(20, 200), speed=(5, 30), acc=(0.5, 5), force=(50, 1000),
-                            table=(200, 500), orient="horizontal"),
+    "vmc_x": dict(
+        stroke=(500, 1600),
+        mass=(200, 1200),
+        speed=(20, 48),
+        acc=(2, 6),
+        force=(1000, 8000),
+        table=(500, 1000),
+        orient="horizontal",
+    ),
+    "vmc_y": dict(
+        stroke=(400, 800),
+        mass=(400, 2000),
+        speed=(20, 48),
+        acc=(2, 5),
+        force=(1000, 8000),
+        table=(500, 900),
+        orient="horizontal",
+    ),
+    "vmc_z": dict(
+        stroke=(400, 700),
+        mass=(150, 600),
+        speed=(15, 36),
+        acc=(2, 5),
+        force=(1000, 6000),
+        table=(400, 700),
+        orient="vertical",
+    ),
+    "lathe_x": dict(
+        stroke=(150, 400),
+        mass=(60, 300),
+        speed=(15, 36),
+        acc=(2, 8),
+        force=(500, 6000),
+        table=(250, 450),
+        orient="horizontal",
+    ),
+    "lathe_z": dict(
+        stroke=(400, 2000),
+        mass=(150, 800),
+        speed=(15, 36),
+        acc=(2, 6),
+        force=(1500, 10000),
+        table=(350, 700),
+        orient="horizontal",
+    ),
+    "gantry_twin": dict(
+        stroke=(2000, 6000),
+        mass=(300, 1500),
+        speed=(15, 40),
+        acc=(1, 4),
+        force=(500, 6000),
+        table=(600, 1000),
+        orient="horizontal",
+    ),
+    "vertical_cb": dict(
+        stroke=(500, 1200),
+        mass=(400, 1500),
+        speed=(10, 24),
+        acc=(1, 3),
+        force=(2000, 8000),
+        table=(500, 900),
+        orient="vertical",
+    ),
+    "boring_table": dict(
+        stroke=(1000, 3000),
+        mass=(1000, 3000),
+        speed=(8, 20),
+        acc=(0.5, 2),
+        force=(3000, 12000),
+        table=(900, 1600),
+        orient="horizontal",
+    ),
+    "laser": dict(
+        stroke=(1000, 3000),
+        mass=(50, 250),
+        speed=(30, 60),
+        acc=(5, 15),
+        force=(0, 300),
+        table=(300, 600),
+        orient="horizontal",
+    ),
+    "router": dict(
+        stroke=(1000, 3000),
+        mass=(100, 500),
+        speed=(20, 50),
+        acc=(2, 6),
+        force=(200, 2000),
+        table=(400, 800),
+        orient="horizontal",
+    ),
+    "precision_stage": dict(
+        stroke=(100, 600),
+        mass=(20, 200),
+        speed=(5, 30),
+        acc=(0.5, 5),
+        force=(50, 1000),
+        table=(200, 500),
+        orient="horizontal",
+    ),
 }
 
 
@@ -118,16 +232,25 @@ def _axis(rnd, kind, s, lines, span=0.0):
     stroke = _r(rnd, *s["stroke"], 50)
     mass = _r(rnd, *s["mass"], 10)
     speed = _r(rnd, *s["speed"], 1)
-    # heavier tables accelerate less (the upper end of the kind's range scaled by sqrt(lightest / this mass):
+    # heavier tables accelerate less (the upper end of the kind's range scaled by sqrt(lightest /
+    # this mass):
     # our estimate of the published spread, light tables at 1 g, heavy ones at 0.1-0.3 g)
     lo_a, hi_a = s["acc"]
     acc = _r(rnd, lo_a, max(lo_a, hi_a * (s["mass"][0] / mass) ** 0.5), 0.5)
     force = _r(rnd, *s["force"], 100)
     table = _r(rnd, *s["table"], 50)
-    mounting = rnd.choice(("fixed-supported", "fixed-fixed")) if stroke > 300 else rnd.choice(
-        ("fixed-free", "fixed-supported", "fixed-fixed"))
-    lines += [f"  stroke: {_fmt(stroke)} mm", f"  moving_mass: {_fmt(mass)} kg", f"  mounting: {mounting}",
-              f"  max_speed: {_fmt(speed)} m/min", f"  axial_load: {_fmt(force)} N"]
+    mounting = (
+        rnd.choice(("fixed-supported", "fixed-fixed"))
+        if stroke > 300
+        else rnd.choice(("fixed-free", "fixed-supported", "fixed-fixed"))
+    )
+    lines += [
+        f"  stroke: {_fmt(stroke)} mm",
+        f"  moving_mass: {_fmt(mass)} kg",
+        f"  mounting: {mounting}",
+        f"  max_speed: {_fmt(speed)} m/min",
+        f"  axial_load: {_fmt(force)} N",
+    ]
     if rnd.random() < 0.97:  # a few axes size the mechanics only: no acceleration, no drive
         lines.append(f"  acceleration: {_fmt(acc)} m/s^2")
     if rnd.random() < 0.5:
@@ -135,24 +258,41 @@ def _axis(rnd, kind, s, lines, span=0.0):
     if s["orient"] == "vertical":
         lines.append("  orientation: vertical")
     if rnd.random() < 0.12:
-        lines.append("  end_margin: 0 mm")  # the nut reaches the far bearing (boundary the reference allows)
+        # the nut reaches the far bearing (boundary the reference allows)
+        lines.append("  end_margin: 0 mm")
     elif rnd.random() < 0.3:
         lines.append(f"  end_margin: {_fmt(_r(rnd, 30, 200, 10))} mm")
     if rnd.random() < 0.7:
         width = span + 400 if span else _r(rnd, 0.6 * table, 1.2 * table, 10)
-        lines += [f"  table_length: {_fmt(table)} mm", f"  table_width: {_fmt(width)} mm",
-                  f"  block_spacing: {_fmt(round(0.7 * table))} mm", f"  rail_spacing: {_fmt(round(0.7 * width))} mm",
-                  f"  cg_height: {_fmt(round(0.3 * table))} mm", f"  tool_height: {_fmt(round(0.6 * table))} mm"]
+        lines += [
+            f"  table_length: {_fmt(table)} mm",
+            f"  table_width: {_fmt(width)} mm",
+            f"  block_spacing: {_fmt(round(0.7 * table))} mm",
+            f"  rail_spacing: {_fmt(round(0.7 * width))} mm",
+            f"  cg_height: {_fmt(round(0.3 * table))} mm",
+            f"  tool_height: {_fmt(round(0.6 * table))} mm",
+        ]
         if force > 0 and rnd.random() < 0.6:
-            lines += [f"  cross_load: {_fmt(round(0.5 * force))} N", f"  normal_load: {_fmt(round(0.5 * force))} N"]
-    if rnd.random() < 0.15:  # the fewest blocks the readers allow: one rail with two, or two blocks a rail
-        lines += rnd.choice((["  rails: 1", "  guide_blocks: 2"], ["  rails: 2", "  guide_blocks: 4"]))
-    if kind == "lathe_z" and rnd.random() < 0.6:  # a turning cycle: rapid, cut against the feed force, back
+            lines += [
+                f"  cross_load: {_fmt(round(0.5 * force))} N",
+                f"  normal_load: {_fmt(round(0.5 * force))} N",
+            ]
+    # the fewest blocks the readers allow: one rail with two, or two blocks a rail
+    if rnd.random() < 0.15:
+        lines += rnd.choice(
+            (["  rails: 1", "  guide_blocks: 2"], ["  rails: 2", "  guide_blocks: 4"])
+        )
+    # a turning cycle: rapid, cut against the feed force, back
+    if kind == "lathe_z" and rnd.random() < 0.6:
         cut = round(0.6 * stroke)
-        lines += ["  duty_cycle:", f"    - {{move: {_fmt(stroke - cut)} mm}}",
-                  f"    - {{move: {_fmt(cut)} mm, speed: {_fmt(_r(rnd, 0.2, 2, 0.1))} m/min, force: "
-                  f"{_fmt(force)} N}}", f"    - {{move: {_fmt(-stroke)} mm}}",
-                  f"    - {{dwell: {_fmt(_r(rnd, 1, 10))} s}}"]
+        lines += [
+            "  duty_cycle:",
+            f"    - {{move: {_fmt(stroke - cut)} mm}}",
+            f"    - {{move: {_fmt(cut)} mm, speed: {_fmt(_r(rnd, 0.2, 2, 0.1))} m/min, force: "
+            f"{_fmt(force)} N}}",
+            f"    - {{move: {_fmt(-stroke)} mm}}",
+            f"    - {{dwell: {_fmt(_r(rnd, 1, 10))} s}}",
+        ]
     return dict(stroke=stroke, mass=mass, speed=speed, acc=acc, force=force, mounting=mounting)
 
 
@@ -168,26 +308,45 @@ def make(seed: int, index: int) -> Case:
     if kind == "vertical_cb":
         share = rnd.uniform(0.8, 1.0)
         if rnd.random() < 0.5:
-            lines.append(f"  counterbalance: {{kind: cylinder, force: {_fmt(round(share * weight, -1))} N, "
-                         "tolerance: 5 %}")
+            lines.append(
+                f"  counterbalance: {{kind: cylinder, force: {_fmt(round(share * weight, -1))} N, "
+                "tolerance: 5 %}"
+            )
         else:
-            options = ["none", f"{{kind: counterweight, mass: {_fmt(round(share * a['mass'], -1))} kg}}",
-                       f"{{kind: cylinder, force: {_fmt(round(share * weight, -1))} N}}"]
+            options = [
+                "none",
+                f"{{kind: counterweight, mass: {_fmt(round(share * a['mass'], -1))} kg}}",
+                f"{{kind: cylinder, force: {_fmt(round(share * weight, -1))} N}}",
+            ]
             search.append(f"  counterbalance: [{', '.join(options)}]")
     if kind == "gantry_twin":
-        lines += ["  twin_drive:", f"    span: {_fmt(span)} mm", f"    cross_stroke: {_fmt(round(0.8 * span))} mm",
-                  f"    cross_mass: {_fmt(_r(rnd, 100, 600, 10))} kg"]
+        lines += [
+            "  twin_drive:",
+            f"    span: {_fmt(span)} mm",
+            f"    cross_stroke: {_fmt(round(0.8 * span))} mm",
+            f"    cross_mass: {_fmt(_r(rnd, 100, 600, 10))} kg",
+        ]
         if rnd.random() < 0.3:
             cross = _fmt(round(0.8 * span))
-            search.append(f"  twin_drive: [none, {{span: {_fmt(span)} mm, cross_stroke: {cross} mm}}]")
-            lines = [ln for ln in lines if not ln.startswith(("  twin_drive:", "    span", "    cross_"))]
+            search.append(
+                f"  twin_drive: [none, {{span: {_fmt(span)} mm, cross_stroke: {cross} mm}}]"
+            )
+            lines = [
+                ln for ln in lines if not ln.startswith(("  twin_drive:", "    span", "    cross_"))
+            ]
     # objective
-    obj = rnd.choices(("stiffness", "tool_stiffness", "frequency", "cost", "weighted"), (5, 2, 2, 1, 1))[0]
+    obj = rnd.choices(
+        ("stiffness", "tool_stiffness", "frequency", "cost", "weighted"), (5, 2, 2, 1, 1)
+    )[0]
     if obj == "cost":
         lines.append("objective: {mode: pareto, pareto: [stiffness, cost]}")
     elif obj == "weighted":
-        lines += ["objective:", "  mode: weighted", "  weights: {stiffness: 1.0, frequency: 1.0}",
-                  "  scale: {stiffness: 100 N/um, frequency: 50 Hz}"]
+        lines += [
+            "objective:",
+            "  mode: weighted",
+            "  weights: {stiffness: 1.0, frequency: 1.0}",
+            "  scale: {stiffness: 100 N/um, frequency: 50 Hz}",
+        ]
     else:
         lines.append(f"objective: {obj}")
     # limits: from loose to tight (tight limits make the infeasible third)
@@ -195,7 +354,9 @@ def make(seed: int, index: int) -> Case:
     lim = []
     cost = {"precision_stage": 3000, "laser": 4000, "lathe_x": 3000}.get(kind, 6000)
     cost *= 2 if kind == "gantry_twin" else 1
-    lim.append(f"  max_cost: {_fmt(round(cost * (rnd.uniform(0.1, 0.5) if tight else rnd.uniform(1, 3)), -1))} EUR")
+    lim.append(
+        f"  max_cost: {_fmt(round(cost * (rnd.uniform(0.1, 0.5) if tight else rnd.uniform(1, 3)), -1))} EUR"
+    )
     lim.append(f"  min_life: {_fmt(_r(rnd, 10000, 30000, 1000))} h")
     if rnd.random() < 0.4:
         k = rnd.uniform(200, 800) if tight else rnd.uniform(20, 150)
@@ -210,34 +371,53 @@ def make(seed: int, index: int) -> Case:
         t = rnd.uniform(2, 6) if tight else rnd.uniform(20, 80)
         lim.append(f"  max_thermal_growth: {_fmt(round(t))} um")
     if rnd.random() < 0.2:
-        # the total mass includes the moving mass (a limit below it is refused): tight leaves 10 kg for the parts
-        lim.append(f"  max_total_mass: {_fmt(round(a['mass'] + (10 if tight else a['mass'] + 50), -1))} kg")
+        # the total mass includes the moving mass (a limit below it is refused): tight leaves 10 kg
+        # for the parts
+        lim.append(
+            f"  max_total_mass: {_fmt(round(a['mass'] + (10 if tight else a['mass'] + 50), -1))} kg"
+        )
     if rnd.random() < 0.2:
-        lim.append(f"  max_drag_torque: {_fmt(round(rnd.uniform(0.3, 1.0) if tight else rnd.uniform(2, 6), 1))} N.m")
+        lim.append(
+            f"  max_drag_torque: {_fmt(round(rnd.uniform(0.3, 1.0) if tight else rnd.uniform(2, 6), 1))} N.m"
+        )
     if rnd.random() < 0.2:
         lim.append(f"  max_backlash: {_fmt(rnd.choice((0, 1, 5, 20)))} um")
-    # catalog filters: an approved-vendor list covers every part kind the buyer orders (HIWIN's screws, nuts
-    # and guides; a bearing maker's angular-contact sets: HIWIN's own support units are its light-duty WBK
-    # sizes), single nuts come with the axial play their catalogs list (HIWIN up to 0.05 mm, THK 0.01 mm:
-    # catalogs/nuts.csv), and one case in five is a shortlist: one supplier per part kind, one series each, as
-    # a machine builder with framework contracts writes it (at most 10^6 combinations: the benchmark compares
+    # catalog filters: an approved-vendor list covers every part kind the buyer orders (HIWIN's
+    # screws, nuts
+    # and guides; a bearing maker's angular-contact sets: HIWIN's own support units are its light-
+    # duty WBK
+    # sizes), single nuts come with the axial play their catalogs list (HIWIN up to 0.05 mm, THK
+    # 0.01 mm:
+    # catalogs/nuts.csv), and one case in five is a shortlist: one supplier per part kind, one
+    # series each, as
+    # a machine builder with framework contracts writes it (at most 10^6 combinations: the benchmark
+    # compares
     # these with exhaustive enumeration)
     cat = []
-    # the motor series a buyer lists reach the axis's peak mechanical power (m a + F) v with a rated power of a
+    # the motor series a buyer lists reach the axis's peak mechanical power (m a + F) v with a rated
+    # power of a
     # third of it (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi HG/HC catalogs)
     need = (a["mass"] * a["acc"] + a["force"]) * a["speed"] / 60.0 / 3.0
-    series = [m for m in MOTOR_SERIES if SERIES_POWER[m] >= need] or ["Sigma-7 SGM7A", "MELDAS HC (2000 r/min)"]
+    series = [m for m in MOTOR_SERIES if SERIES_POWER[m] >= need] or [
+        "Sigma-7 SGM7A",
+        "MELDAS HC (2000 r/min)",
+    ]
     shortlist = rnd.random() < 0.2
     if shortlist:
         maker = rnd.choice(BEARING_VENDORS)
-        sets = ("DF", "DFD", "DFF") if maker == "NSK" else ("DB",)  # what each lists from its catalog
-        cat += [f"  vendors: [HIWIN, {maker}]", "  nut_types: [double]",
-                f"  bearing_arrangements: [{rnd.choice(sets)}]",
-                f"  screw_grades: [{rnd.choice(('C3', 'C5'))}]",
-                f"  guide_types: [{rnd.choice(('ball', 'roller'))}]",
-                f"  guide_preload: [{rnd.choice(('medium', 'heavy'))}]",
-                f"  motor_series: [{rnd.choice(series)}]",
-                f"  coupling_series: [{rnd.choice(COUPLING_SERIES)}]", "  reductions: no"]
+        # what each lists from its catalog
+        sets = ("DF", "DFD", "DFF") if maker == "NSK" else ("DB",)
+        cat += [
+            f"  vendors: [HIWIN, {maker}]",
+            "  nut_types: [double]",
+            f"  bearing_arrangements: [{rnd.choice(sets)}]",
+            f"  screw_grades: [{rnd.choice(('C3', 'C5'))}]",
+            f"  guide_types: [{rnd.choice(('ball', 'roller'))}]",
+            f"  guide_preload: [{rnd.choice(('medium', 'heavy'))}]",
+            f"  motor_series: [{rnd.choice(series)}]",
+            f"  coupling_series: [{rnd.choice(COUPLING_SERIES)}]",
+            "  reductions: no",
+        ]
     elif rnd.random() < 0.6:
         others = rnd.sample(MECH_VENDORS, rnd.randint(0, 3))
         if not set(others) & set(BEARING_VENDORS):
@@ -249,13 +429,18 @@ def make(seed: int, index: int) -> Case:
         nut = rnd.choice(("double", "single"))
         cat.append(f"  nut_types: [{nut}]")
         if nut == "single":
-            lim = [ln for ln in lim if not ln.startswith("  max_backlash:")] + ["  max_backlash: 50 um"]
+            lim = [ln for ln in lim if not ln.startswith("  max_backlash:")] + [
+                "  max_backlash: 50 um"
+            ]
     lines += ["limits:"] + lim
     if shortlist:
         pass
     elif rnd.random() < 0.5:
-        cat.append(f"  motor_series: [{', '.join(rnd.sample(series, rnd.randint(1, min(3, len(series)))))}]")
-    elif rnd.random() < 0.03:  # the shipped motors list no flange: this filter leaves none (a clean input error)
+        cat.append(
+            f"  motor_series: [{', '.join(rnd.sample(series, rnd.randint(1, min(3, len(series)))))}]"
+        )
+    # the shipped motors list no flange: this filter leaves none (a clean input error)
+    elif rnd.random() < 0.03:
         cat.append("  max_motor_flange: 130 mm")
     if not shortlist and rnd.random() < 0.3:
         pool = COUPLINGS_SMALL if rnd.random() < 0.3 else COUPLINGS
@@ -269,10 +454,12 @@ def make(seed: int, index: int) -> Case:
     text = "\n".join(lines) + "\n"
     slip = ""
     if rnd.random() < 1 / 12:  # a unit slip an engineer makes
-        slips = [(f"max_speed: {_fmt(a['speed'])} m/min", f"max_speed: {_fmt(a['speed'])} m/s"),
-                 (f"moving_mass: {_fmt(a['mass'])} kg", f"moving_mass: {_fmt(a['mass'])} t"),
-                 (f"stroke: {_fmt(a['stroke'])} mm", f"stroke: {_fmt(a['stroke'])} m"),
-                 (f"axial_load: {_fmt(a['force'])} N", f"axial_load: {_fmt(a['force'])} kN")]
+        slips = [
+            (f"max_speed: {_fmt(a['speed'])} m/min", f"max_speed: {_fmt(a['speed'])} m/s"),
+            (f"moving_mass: {_fmt(a['mass'])} kg", f"moving_mass: {_fmt(a['mass'])} t"),
+            (f"stroke: {_fmt(a['stroke'])} mm", f"stroke: {_fmt(a['stroke'])} m"),
+            (f"axial_load: {_fmt(a['force'])} N", f"axial_load: {_fmt(a['force'])} kN"),
+        ]
         old, new = rnd.choice(slips)
         if old in text:
             text, slip = text.replace(old, new, 1), new
@@ -287,7 +474,9 @@ if __name__ == "__main__":
     import argparse
 
     ap = argparse.ArgumentParser(description="Print one generated axis problem (YAML) to stdout.")
-    ap.add_argument("index", nargs="?", type=int, default=0, help="the case's index within its seed (default 0)")
+    ap.add_argument(
+        "index", nargs="?", type=int, default=0, help="the case's index within its seed (default 0)"
+    )
     ap.add_argument("seed", nargs="?", type=int, default=0, help="the seed (default 0)")
     args = ap.parse_args()
     print(make(args.seed, args.index).text)

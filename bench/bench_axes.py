@@ -49,7 +49,11 @@ CASES = (
     ("vertical Z 600 kg, cylinder", "vertical_z600_problem.yaml", None),
     ("twin-drive gantry at 20 m/min", "gantry_twin_problem.yaml", ("max_speed", "20 m/min")),
     ("vertical Z, 600 kg head", "vertical_counterweight_problem.yaml", ("moving_mass", "600 kg")),
-    ("vertical Z, 1200 kg ram, same cylinder", "vertical_z600_problem.yaml", ("moving_mass", "1200 kg")),
+    (
+        "vertical Z, 1200 kg ram, same cylinder",
+        "vertical_z600_problem.yaml",
+        ("moving_mass", "1200 kg"),
+    ),
 )
 
 
@@ -71,8 +75,13 @@ def run(args) -> tuple[float, float, int, str]:
     """(wall s, CPU s of the child, exit code, the solve's own time as printed) of one fresh process."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    proc = subprocess.run([sys.executable, *args], cwd=ROOT, capture_output=True, text=True,
-                          env={**os.environ, "PYTHONPATH": str(ROOT)})
+    proc = subprocess.run(
+        [sys.executable, *args],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        env={**os.environ, "PYTHONPATH": str(ROOT)},
+    )
     wall = time.perf_counter() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
@@ -86,7 +95,8 @@ def main(argv=None) -> int:
     a = ap.parse_args(argv)
     with tempfile.TemporaryDirectory() as d:
         files = [(name, variant(PROBLEMS / src, change, Path(d))) for name, src, change in CASES]
-        for _, path in files:  # one untimed run each: compiled modules written, as on a user's machine
+        # one untimed run each: compiled modules written, as on a user's machine
+        for _, path in files:
             run(["-m", "axisopt", "solve", str(path)])
         base, rows = [], {name: [] for name, _ in files}
         for _ in range(a.repeat):

@@ -27,9 +27,18 @@ COMMANDS = {
     "python -c pass": ["-c", "pass"],
     'python -c "import numpy"': ["-c", "import numpy"],
     "axisopt --help": ["-m", "axisopt", "--help"],
-    "axisopt solve problems/teaching_problem.yaml": ["-m", "axisopt", "solve", "problems/teaching_problem.yaml"],
-    "axisopt evaluate problems/teaching_design.yaml": ["-m", "axisopt", "evaluate",
-                                                       "problems/teaching_design.yaml"],
+    "axisopt solve problems/teaching_problem.yaml": [
+        "-m",
+        "axisopt",
+        "solve",
+        "problems/teaching_problem.yaml",
+    ],
+    "axisopt evaluate problems/teaching_design.yaml": [
+        "-m",
+        "axisopt",
+        "evaluate",
+        "problems/teaching_design.yaml",
+    ],
     "axisopt parts screws": ["-m", "axisopt", "parts", "screws"],
 }
 HEAVY = ("numpy", "pint", "pandas", "pyarrow", "matplotlib", "scipy", "casadi", "dask", "plotly")
@@ -43,15 +52,29 @@ def _cpu() -> float:
 def _run(args, env) -> tuple[float, float]:
     """(wall, CPU) seconds of one run."""
     c, t = _cpu(), time.perf_counter()
-    subprocess.run([sys.executable, *args], cwd=ROOT, env=env, stdout=subprocess.DEVNULL,
-                   stderr=subprocess.DEVNULL)
+    subprocess.run(
+        [sys.executable, *args],
+        cwd=ROOT,
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
     return time.perf_counter() - t, _cpu() - c
 
 
 def _imports(args, env) -> str:
-    err = subprocess.run([sys.executable, "-X", "importtime", *args], cwd=ROOT, env=env, capture_output=True,
-                         text=True).stderr
-    mods = {line.rsplit("|", 1)[-1].strip() for line in err.splitlines() if line.startswith("import time:")}
+    err = subprocess.run(
+        [sys.executable, "-X", "importtime", *args],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+    ).stderr
+    mods = {
+        line.rsplit("|", 1)[-1].strip()
+        for line in err.splitlines()
+        if line.startswith("import time:")
+    }
     return " ".join(h for h in HEAVY if h in mods) or "-"
 
 
@@ -60,8 +83,10 @@ def main(argv=None) -> int:
     ap.add_argument("--repeat", type=int, default=5, help="runs of each command (5)")
     args = ap.parse_args(argv)
     env = dict(os.environ, PYTHONPATH=str(ROOT), AXISOPT_COLOR="never")
-    # as on a user's machine: Python keeps the compiled modules (some sandboxes set PYTHONDONTWRITEBYTECODE,
-    # and then every run compiles axisopt's modules again, about 0.09 s); one untimed run of each writes them
+    # as on a user's machine: Python keeps the compiled modules (some sandboxes set
+    # PYTHONDONTWRITEBYTECODE,
+    # and then every run compiles axisopt's modules again, about 0.09 s); one untimed run of each
+    # writes them
     env.pop("PYTHONDONTWRITEBYTECODE", None)
     for cmd in COMMANDS.values():
         _run(cmd, env)
@@ -74,11 +99,15 @@ def main(argv=None) -> int:
             cpu[name].append(used)
     ref = statistics.median(times["python -c pass"])
     ref_np = statistics.median(times['python -c "import numpy"'])
-    print(f"{'command':<48}{'median s':>9}{'min s':>7}{'CPU s':>7}{'/ pass':>8}{'/ numpy':>8}  heavy imports")
+    print(
+        f"{'command':<48}{'median s':>9}{'min s':>7}{'CPU s':>7}{'/ pass':>8}{'/ numpy':>8}  heavy imports"
+    )
     for name, cmd in COMMANDS.items():
         med = statistics.median(times[name])
-        print(f"{name:<48}{med:>9.3f}{min(times[name]):>7.3f}{statistics.median(cpu[name]):>7.3f}{med / ref:>8.1f}"
-              f"{med / ref_np:>8.2f}  {_imports(cmd, env)}")
+        print(
+            f"{name:<48}{med:>9.3f}{min(times[name]):>7.3f}{statistics.median(cpu[name]):>7.3f}{med / ref:>8.1f}"
+            f"{med / ref_np:>8.2f}  {_imports(cmd, env)}"
+        )
     return 0
 
 

@@ -24,20 +24,33 @@ def main(rows: int = 10_000) -> None:
     t = np.arange(rows) * 2.0
     temp = 293.15 + 2.0 * (1.0 - np.exp(-t / t[-1] * 3.0))
     cycle = np.floor(np.arange(rows) / (rows / 10))
-    cols = dict(position=pos, force=force, direction=direction, time=t, temperature=temp, cycle=cycle)
-    ds = simulate(plant, "stiffness", cols, effects={"backlash": {"backlash": 6e-6}},
-                  baseline={"screw_modulus": 200e9}, noise=0.015, seed=1)
+    cols = dict(
+        position=pos, force=force, direction=direction, time=t, temperature=temp, cycle=cycle
+    )
+    ds = simulate(
+        plant,
+        "stiffness",
+        cols,
+        effects={"backlash": {"backlash": 6e-6}},
+        baseline={"screw_modulus": 200e9},
+        noise=0.015,
+        seed=1,
+    )
     t0 = time.perf_counter()
     diag = diagnose([ds], plant)
     dt = time.perf_counter() - t0
-    print(f"diagnose {rows} rows, {len(diag.rounds[0])} candidates, verdict {diag.verdict}, "
-          f"gain {diag.gain:.0f} %")
+    print(
+        f"diagnose {rows} rows, {len(diag.rounds[0])} candidates, verdict {diag.verdict}, "
+        f"gain {diag.gain:.0f} %"
+    )
     print(f"time {dt:.2f} s  budget {BUDGET:.1f} s  ratio {dt / BUDGET:.2f}")
 
 
 def cli(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("rows", nargs="?", type=int, default=10_000, help="rows of the synthetic test (10 000)")
+    ap.add_argument(
+        "rows", nargs="?", type=int, default=10_000, help="rows of the synthetic test (10 000)"
+    )
     main(ap.parse_args(argv).rows)
     return 0
 

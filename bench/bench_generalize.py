@@ -47,7 +47,8 @@ def solve(path: Path, out: Path, *extra: str, timeout: float = 60.0) -> dict:
     except subprocess.TimeoutExpired:
         rc, err, text = None, "", ""
     wall = time.perf_counter() - t0
-    u1 = resource.getrusage(resource.RUSAGE_CHILDREN)  # the one child this process ran (reaped): its CPU time
+    # the one child this process ran (reaped): its CPU time
+    u1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (u1.ru_utime - u0.ru_utime) + (u1.ru_stime - u0.ru_stime)
     result = None
     if rc in (0, 1) and out.exists():
@@ -81,16 +82,35 @@ def compare_case(job):
     with tempfile.TemporaryDirectory(prefix="gex-") as d:
         f = Path(d) / f"{name}.yaml"
         f.write_text(text)
-        r = solve(f, Path(d) / "r.json", "--method", "exhaustive", "--no-sensitivity", "--time-limit", "3600",
-                  timeout=3600)
+        r = solve(
+            f,
+            Path(d) / "r.json",
+            "--method",
+            "exhaustive",
+            "--no-sensitivity",
+            "--time-limit",
+            "3600",
+            timeout=3600,
+        )
         e = r["result"] or {}
     e_obj = (e.get("objective") or {}).get("value")
     same = e.get("status") in ("optimal", "infeasible") and (
         (status == "infeasible" and e.get("status") == "infeasible")
-        or (e_obj is not None and default_obj is not None
-            and abs(e_obj - default_obj) <= 1e-6 * max(1.0, abs(e_obj))))
-    return {"name": name, "default": default_obj, "exhaustive": e_obj, "status": status,
-            "exhaustive_status": e.get("status"), "same": same, "wall": r["wall"]}
+        or (
+            e_obj is not None
+            and default_obj is not None
+            and abs(e_obj - default_obj) <= 1e-6 * max(1.0, abs(e_obj))
+        )
+    )
+    return {
+        "name": name,
+        "default": default_obj,
+        "exhaustive": e_obj,
+        "status": status,
+        "exhaustive_status": e.get("status"),
+        "same": same,
+        "wall": r["wall"],
+    }
 
 
 def pct(xs, q):
@@ -111,9 +131,11 @@ def reference_time(repeat=3) -> tuple:
 def line(label, xs, ref):
     if not xs:
         return f"  {label:<11} n=0"
-    return (f"  {label:<11} n={len(xs):<4} p50 {pct(xs, .5):5.2f} s  p95 {pct(xs, .95):5.2f} s  "
-            f"max {max(xs):5.2f} s   (x reference: {pct(xs, .5) / ref:4.1f} / {pct(xs, .95) / ref:4.1f} / "
-            f"{max(xs) / ref:4.1f})")
+    return (
+        f"  {label:<11} n={len(xs):<4} p50 {pct(xs, 0.5):5.2f} s  p95 {pct(xs, 0.95):5.2f} s  "
+        f"max {max(xs):5.2f} s   (x reference: {pct(xs, 0.5) / ref:4.1f} / {pct(xs, 0.95) / ref:4.1f} / "
+        f"{max(xs) / ref:4.1f})"
+    )
 
 
 def main(argv=None):
@@ -121,9 +143,16 @@ def main(argv=None):
     ap.add_argument("--cases", type=int, default=300)
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--workers", type=int, default=2)
-    ap.add_argument("--timeout", type=float, default=600.0, help="wall seconds before a case counts as a hang "
-                    "(generous: a loaded machine stretches wall time ten-fold)")
-    ap.add_argument("--compare", type=int, default=20, help="cases compared with --method exhaustive")
+    ap.add_argument(
+        "--timeout",
+        type=float,
+        default=600.0,
+        help="wall seconds before a case counts as a hang "
+        "(generous: a loaded machine stretches wall time ten-fold)",
+    )
+    ap.add_argument(
+        "--compare", type=int, default=20, help="cases compared with --method exhaustive"
+    )
     ap.add_argument("--keep", type=Path, help="write every case's YAML and the results (JSON) here")
     ap.add_argument("--only", help="comma-separated case indices")
     a = ap.parse_args(argv)
@@ -132,7 +161,10 @@ def main(argv=None):
         keep = {int(i) for i in a.only.split(",")}
         cases = [c for i, c in enumerate(cases) if i in keep]
     ref0 = reference_time()
-    print(f"reference (teaching problem, fresh process): wall {ref0[0]:.2f} s, CPU {ref0[1]:.2f} s", flush=True)
+    print(
+        f"reference (teaching problem, fresh process): wall {ref0[0]:.2f} s, CPU {ref0[1]:.2f} s",
+        flush=True,
+    )
     jobs = [(a.seed, int(c.name.split("-")[2]), c.text, c.name, a.timeout) for c in cases]
     t0 = time.perf_counter()
     with mp.Pool(a.workers) as pool:
@@ -140,16 +172,22 @@ def main(argv=None):
         for r in pool.imap_unordered(run_case, jobs):
             rs.append(r)
             if len(rs) % 25 == 0:
-                print(f"  {len(rs)}/{len(jobs)} cases, {time.perf_counter() - t0:.0f} s", flush=True)
+                print(
+                    f"  {len(rs)}/{len(jobs)} cases, {time.perf_counter() - t0:.0f} s", flush=True
+                )
     total = time.perf_counter() - t0
     ref1 = reference_time()
     rs.sort(key=lambda r: r["index"])
     errs = [r for r in rs if r["rc"] == 2]
     crashes = [r for r in rs if r["crash"]]
-    print(f"\n{len(rs)} cases in {total:.0f} s on {a.workers} workers; reference wall {ref0[0]:.2f} s before, "
-          f"{ref1[0]:.2f} s after (CPU {ref0[1]:.2f} / {ref1[1]:.2f} s)")
-    print(f"  exit 0 {sum(r['rc'] == 0 for r in rs)}, exit 1 {sum(r['rc'] == 1 for r in rs)}, exit 2 {len(errs)}, "
-          f"crashes {len(crashes)}, timeouts {sum(r['rc'] is None for r in rs)}")
+    print(
+        f"\n{len(rs)} cases in {total:.0f} s on {a.workers} workers; reference wall {ref0[0]:.2f} s before, "
+        f"{ref1[0]:.2f} s after (CPU {ref0[1]:.2f} / {ref1[1]:.2f} s)"
+    )
+    print(
+        f"  exit 0 {sum(r['rc'] == 0 for r in rs)}, exit 1 {sum(r['rc'] == 1 for r in rs)}, exit 2 {len(errs)}, "
+        f"crashes {len(crashes)}, timeouts {sum(r['rc'] is None for r in rs)}"
+    )
     for key, ref in (("wall", 0.5 * (ref0[0] + ref1[0])), ("cpu", 0.5 * (ref0[1] + ref1[1]))):
         print(f"{key} time [s] (and as multiples of the reference's {ref:.2f} s):")
         print(line("all (0, 1)", [r[key] for r in rs if r["rc"] in (0, 1)], ref))
@@ -158,8 +196,10 @@ def main(argv=None):
         print(line("input err", [r[key] for r in errs], ref))
     print("slowest ten (CPU time):")
     for r in sorted(rs, key=lambda r: -r["cpu"])[:10]:
-        print(f"  CPU {r['cpu']:6.2f} s  wall {r['wall']:6.2f} s  exit {r['rc']}  {r['status'] or '-':<12} "
-              f"{r['name']}")
+        print(
+            f"  CPU {r['cpu']:6.2f} s  wall {r['wall']:6.2f} s  exit {r['rc']}  {r['status'] or '-':<12} "
+            f"{r['name']}"
+        )
     if errs:
         print("input errors (first 8):")
         for r in errs[:8]:
@@ -175,16 +215,45 @@ def main(argv=None):
         a.keep.mkdir(parents=True, exist_ok=True)
         for r in rs:
             (a.keep / f"{r['name']}.yaml").write_text(r["text"])
-        (a.keep / "results.json").write_text(json.dumps(
-            [{k: r[k] for k in ("name", "rc", "wall", "cpu", "status", "combinations", "objective", "stderr")}
-             for r in rs], indent=1))
+        (a.keep / "results.json").write_text(
+            json.dumps(
+                [
+                    {
+                        k: r[k]
+                        for k in (
+                            "name",
+                            "rc",
+                            "wall",
+                            "cpu",
+                            "status",
+                            "combinations",
+                            "objective",
+                            "stderr",
+                        )
+                    }
+                    for r in rs
+                ],
+                indent=1,
+            )
+        )
     if a.compare:
-        sample = [r for r in rs if r["rc"] in (0, 1) and r["combinations"] and r["combinations"] <= 1e6
-                  and not r["pareto"] and r["status"] in ("optimal", "infeasible")][:a.compare]
+        sample = [
+            r
+            for r in rs
+            if r["rc"] in (0, 1)
+            and r["combinations"]
+            and r["combinations"] <= 1e6
+            and not r["pareto"]
+            and r["status"] in ("optimal", "infeasible")
+        ][: a.compare]
         with mp.Pool(a.workers) as pool:
-            cs = pool.map(compare_case, [(r["name"], r["text"], r["objective"], r["status"]) for r in sample])
+            cs = pool.map(
+                compare_case, [(r["name"], r["text"], r["objective"], r["status"]) for r in sample]
+            )
         bad = [c for c in cs if not c["same"]]
-        print(f"default == exhaustive on {len(cs) - len(bad)} of {len(cs)} cases with <= 1e6 combinations")
+        print(
+            f"default == exhaustive on {len(cs) - len(bad)} of {len(cs)} cases with <= 1e6 combinations"
+        )
         for c in bad:
             print(f"  DIFFERS {c}")
     return 1 if crashes else 0

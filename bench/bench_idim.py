@@ -37,15 +37,27 @@ def main(samples: int = 25_000) -> None:
     t0 = time.perf_counter()
     iv = instrumental_variables(rows, BASE, ctrl=diag.controller, start=ls)
     t_iv = time.perf_counter() - t0
-    print(f"{rows.record.n} samples -> {rows.n} regression rows (cut-off {rows.proc.fc:.1f} Hz, decimation "
-          f"{rows.proc.nd}); verdict {diag.verdict or 'nothing'}")
-    print(f"LS {t_ls * 1e3:.1f} ms  IV {t_iv * 1e3:.0f} ms ({iv.iterations} iterations)  IV/LS {t_iv / t_ls:.0f}")
-    print(f"read + identify + diagnose {total:.2f} s  budget {BUDGET:.1f} s  ratio {total / BUDGET:.2f}")
+    print(
+        f"{rows.record.n} samples -> {rows.n} regression rows (cut-off {rows.proc.fc:.1f} Hz, decimation "
+        f"{rows.proc.nd}); verdict {diag.verdict or 'nothing'}"
+    )
+    print(
+        f"LS {t_ls * 1e3:.1f} ms  IV {t_iv * 1e3:.0f} ms ({iv.iterations} iterations)  IV/LS {t_iv / t_ls:.0f}"
+    )
+    print(
+        f"read + identify + diagnose {total:.2f} s  budget {BUDGET:.1f} s  ratio {total / BUDGET:.2f}"
+    )
 
 
 def cli(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("samples", nargs="?", type=int, default=25_000, help="samples of the estimation record (25 000)")
+    ap.add_argument(
+        "samples",
+        nargs="?",
+        type=int,
+        default=25_000,
+        help="samples of the estimation record (25 000)",
+    )
     main(ap.parse_args(argv).samples)
     return 0
 

@@ -1,7 +1,7 @@
 """Benchmark: a 20-minute warm-up record at 1 kHz (1 200 000 samples, viscous friction halving every 20 K as the
 axis warms from 20 to 40 degC) and a 30 s validation run that starts warm, simulated by the tests' own cascade
 (tests/identify/sim_cascade.py, physics written apart from the fitted model).  Budget: 60 s of CPU on 2 cores
-for reading and diagnosing (the record is fitted in windows, :func:`axisopt.identify.records.record.windowed`).
+for reading and diagnosing (the record is fitted in windows, :func:`axisopt.identify.records.signal.windowed`).
 Prints the CPU time, the verdict and beta.  ``python bench/bench_long_record.py [minutes]``; not run as a test
 (simulating the record takes a few minutes)."""
 

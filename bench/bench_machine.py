@@ -23,8 +23,10 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--only", nargs="*", choices=list(SHIPPED))
     args = ap.parse_args(argv)
-    print(f"{'machine':<15} {'nominal':>9} {'solves':>6} {'wall s':>7} {'cpu s':>6}  {'joint':>14}  "
-          f"{'sequential':>14}  gained")
+    print(
+        f"{'machine':<15} {'nominal':>9} {'solves':>6} {'wall s':>7} {'cpu s':>6}  {'joint':>14}  "
+        f"{'sequential':>14}  gained"
+    )
     for kind, name in SHIPPED.items():
         if args.only and kind not in args.only:
             continue
@@ -34,13 +36,19 @@ def main(argv=None) -> int:
         wall, cpu = time.perf_counter() - w0, time.process_time() - c0
         joint = f"{res.best.value(m.objective):,.1f}" if res.best else "infeasible"
         seq = res.sequential
-        seqs = "-" if seq is None else f"{seq.value(m.objective):,.1f}" + ("" if seq.feasible else " (misses)")
+        seqs = (
+            "-"
+            if seq is None
+            else f"{seq.value(m.objective):,.1f}" + ("" if seq.feasible else " (misses)")
+        )
         if res.gain is None:
             gained = "a feasible machine" if res.best and (seq is None or not seq.feasible) else "-"
         else:
             gained = "the same" if abs(res.gain) < 1e-6 else f"{abs(res.gain):,.1f}"
-        print(f"{kind:<15} {res.nominal_combinations:>9.2e} {res.axis_solves:>6} {wall:>7.1f} {cpu:>6.1f}  "
-              f"{joint:>14}  {seqs:>14}  {gained}   ({m.objective})")
+        print(
+            f"{kind:<15} {res.nominal_combinations:>9.2e} {res.axis_solves:>6} {wall:>7.1f} {cpu:>6.1f}  "
+            f"{joint:>14}  {seqs:>14}  {gained}   ({m.objective})"
+        )
     return 0
 
 

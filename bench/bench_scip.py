@@ -20,11 +20,15 @@ PROBLEMS = sorted((Path(__file__).resolve().parents[1] / "problems").glob("*_pro
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--time-limit", type=float, default=60.0, help="SCIP time limit per problem [s]")
+    ap.add_argument(
+        "--time-limit", type=float, default=60.0, help="SCIP time limit per problem [s]"
+    )
     ap.add_argument("--max-combinations", type=float, default=5e6, help="skip larger search spaces")
     args = ap.parse_args(argv)
-    print(f"{'problem':<22}{'combinations':>13}{'default s':>11}{'default obj':>13}{'scip s':>9}"
-          f"{'status':>12}{'scip obj':>12}{'nodes':>9}{'scip/default':>14}")
+    print(
+        f"{'problem':<22}{'combinations':>13}{'default s':>11}{'default obj':>13}{'scip s':>9}"
+        f"{'status':>12}{'scip obj':>12}{'nodes':>9}{'scip/default':>14}"
+    )
     for path in PROBLEMS:
         p = load_problem(path)
         if p.objective.mode == "pareto":
@@ -36,14 +40,19 @@ def main(argv=None) -> int:
         d = solve(p, "default", top=1, sensitivities=False)
         td = time.perf_counter() - t
         if size > args.max_combinations:
-            print(f"{name:<22}{size:>13,}{td:>11.2f}{d.objective:>13.4g}  scip skipped (> --max-combinations)")
+            print(
+                f"{name:<22}{size:>13,}{td:>11.2f}{d.objective:>13.4g}  scip skipped (> --max-combinations)"
+            )
             continue
         t = time.perf_counter()
         s = solve(p, "scip", top=1, time_limit=args.time_limit)
         ts = time.perf_counter() - t
         nodes = s.certificate.notes[0].split("; ")[-1].split()[0] if s.certificate.notes else "-"
-        print(f"{name:<22}{size:>13,}{td:>11.2f}{d.objective:>13.4g}{ts:>9.1f}{s.status:>12}{s.objective:>12.4g}"
-              f"{nodes:>9}{ts / td:>14.0f}", flush=True)
+        print(
+            f"{name:<22}{size:>13,}{td:>11.2f}{d.objective:>13.4g}{ts:>9.1f}{s.status:>12}{s.objective:>12.4g}"
+            f"{nodes:>9}{ts / td:>14.0f}",
+            flush=True,
+        )
     return 0
 
 

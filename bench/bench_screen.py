@@ -42,7 +42,9 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--synthetic", nargs="*", type=float, default=[1e6, 1e7])
-    ap.add_argument("--check", help="npz file of survivors and bounds: written if absent, else compared")
+    ap.add_argument(
+        "--check", help="npz file of survivors and bounds: written if absent, else compared"
+    )
     args = ap.parse_args(argv)
     from axisopt.search.parts import build_space
     from axisopt.search.screen import screen
@@ -55,7 +57,9 @@ def main(argv=None):
     for name, p in cases(args.synthetic):
         sp, cons = build_space(p), build_constraints(p)
         mode = p.objective.mode
-        spec = objective_spec(mode if mode in ("stiffness", "frequency", "weighted") else "stiffness", p)
+        spec = objective_spec(
+            mode if mode in ("stiffness", "frequency", "weighted") else "stiffness", p
+        )
         screen(sp, cons, spec)  # warm the parameter cache and the imports
         best = np.inf
         for _ in range(args.repeat):
@@ -72,7 +76,9 @@ def main(argv=None):
                 same = f"  same survivors, bounds within {rel:.1e}"
             else:
                 same = f"  DIFFERENT survivors: {len(si)} -> {len(idx)}"
-        print(f"{name:>20}{sp.size:>15,}{len(idx):>12,}{best:>9.3f}{sp.size / best / 1e6:>13.1f}{same}")
+        print(
+            f"{name:>20}{sp.size:>15,}{len(idx):>12,}{best:>9.3f}{sp.size / best / 1e6:>13.1f}{same}"
+        )
     if args.check and saved is None:
         np.savez(args.check, **new)
         print(f"saved survivors and bounds to {args.check}")

@@ -45,7 +45,8 @@ def plain_loop(study) -> tuple[float, dict]:
         t, cpu = time.perf_counter(), time.process_time()
         r = solve(p, study.method, top=1, sensitivities=False)
         per["feasible" if r.best is not None else "infeasible"].append(
-            (time.perf_counter() - t, time.process_time() - cpu))
+            (time.perf_counter() - t, time.process_time() - cpu)
+        )
     return time.perf_counter() - t0, per
 
 
@@ -57,11 +58,15 @@ def print_medians(per: dict) -> None:
         wall = [w for w, _ in per[k]] or [float("nan")]
         cpu = [c for _, c in per[k]] or [float("nan")]
         med[k] = (statistics.median(wall), statistics.median(cpu))
-        print(f"  {k + ' cases':<18}{len(per[k]):>5}   median {1e3 * med[k][0]:7.1f} ms wall "
-              f"{1e3 * med[k][1]:7.1f} ms CPU   mean {1e3 * statistics.fmean(wall):7.1f} ms wall "
-              f"{1e3 * statistics.fmean(cpu):7.1f} ms CPU   slowest {max(wall):6.2f} s   total {sum(wall):6.1f} s")
-    print(f"  infeasible / feasible median: {med['infeasible'][0] / med['feasible'][0]:.2f} wall, "
-          f"{med['infeasible'][1] / med['feasible'][1]:.2f} CPU  (target <= 2)")
+        print(
+            f"  {k + ' cases':<18}{len(per[k]):>5}   median {1e3 * med[k][0]:7.1f} ms wall "
+            f"{1e3 * med[k][1]:7.1f} ms CPU   mean {1e3 * statistics.fmean(wall):7.1f} ms wall "
+            f"{1e3 * statistics.fmean(cpu):7.1f} ms CPU   slowest {max(wall):6.2f} s   total {sum(wall):6.1f} s"
+        )
+    print(
+        f"  infeasible / feasible median: {med['infeasible'][0] / med['feasible'][0]:.2f} wall, "
+        f"{med['infeasible'][1] / med['feasible'][1]:.2f} CPU  (target <= 2)"
+    )
 
 
 def timed_study(study, workers: int) -> tuple[float, object]:
@@ -76,7 +81,9 @@ def main(argv=None) -> int:
     ap.add_argument("--study", default=str(ROOT / "problems/studies/vmc_random_1000.yaml"))
     ap.add_argument("--n", type=int, default=1000, help="use the first N cases")
     ap.add_argument("--skip-loop", action="store_true", help="skip the plain loop")
-    ap.add_argument("--loop-only", action="store_true", help="only the plain loop and its per-case medians")
+    ap.add_argument(
+        "--loop-only", action="store_true", help="only the plain loop and its per-case medians"
+    )
     args = ap.parse_args(argv)
     study = load_study(args.study)
     study = replace(study, cases=study.cases[: args.n])
@@ -92,15 +99,21 @@ def main(argv=None) -> int:
         if args.loop_only:
             return 0
     t1, s1 = timed_study(study, 1)
-    print(f"study, 1 worker process       {t1:7.1f} s   {1e3 * t1 / n:6.1f} ms/case   ({s1.failed} failed cases)")
+    print(
+        f"study, 1 worker process       {t1:7.1f} s   {1e3 * t1 / n:6.1f} ms/case   ({s1.failed} failed cases)"
+    )
     t2, s2 = timed_study(study, 2)
     print(f"study, 2 worker processes     {t2:7.1f} s   {1e3 * t2 / n:6.1f} ms/case")
     if t_loop:
-        print(f"overhead of the study over the plain loop (1 worker): {100 * (t1 / t_loop - 1):+.1f} %  "
-              f"(target <= +10 %)")
+        print(
+            f"overhead of the study over the plain loop (1 worker): {100 * (t1 / t_loop - 1):+.1f} %  "
+            f"(target <= +10 %)"
+        )
     print(f"speed-up 2 workers / 1 worker: {t1 / t2:.2f}x  (target >= 1.7x)")
-    print(f"{n} cases on 2 workers: {t2:.1f} s  (target for 1000: <= 60 s; "
-          f"scaled to 1000: {t2 * 1000 / n:.1f} s)")
+    print(
+        f"{n} cases on 2 workers: {t2:.1f} s  (target for 1000: <= 60 s; "
+        f"scaled to 1000: {t2 * 1000 / n:.1f} s)"
+    )
     return 0
 
 

@@ -10,6 +10,7 @@ records as estimation and validation pairs) with each tree on ``PYTHONPATH``, dr
 1 otherwise.  ``--allow KEY`` ignores a top-level path prefix (e.g. a report section
 that the change is meant to add).
 """
+
 from __future__ import annotations
 
 import argparse
@@ -24,7 +25,8 @@ ROOT = Path(__file__).resolve().parent.parent
 TIMING = ("time_s", "screening_time", "screening_rate", "seconds")
 
 
-# The shipped measured data sets, each with the design it was taken on (docs/diagnose.md runs the same).
+# The shipped measured data sets, each with the design it was taken on (docs/diagnose.md runs the
+# same).
 DIAGNOSE = (
     (("data/table_x_stiffness.csv",), "data/table_x.yaml"),
     (("data/xjtu/xjtu_up_friction.csv",), "data/xjtu/xjtu_rig.yaml"),
@@ -37,8 +39,11 @@ DIAGNOSE = (
 
 def _files(tree: Path):
     probs = sorted(p.name for p in (tree / "problems").glob("*.yaml"))
-    return ([("solve", f) for f in probs if "problem" in f] + [("evaluate", f) for f in probs if "problem" not in f]
-            + [("diagnose", data) for data in DIAGNOSE])
+    return (
+        [("solve", f) for f in probs if "problem" in f]
+        + [("evaluate", f) for f in probs if "problem" not in f]
+        + [("diagnose", data) for data in DIAGNOSE]
+    )
 
 
 def _strip(obj):
@@ -61,8 +66,13 @@ def _run(tree: Path, cmd: str, name, out: Path) -> object:
         args = [f"problems/{f}" for f in files] + ["--design", f"problems/{design}"]
     else:
         args = [f"problems/{name}"]
-    proc = subprocess.run([sys.executable, "-m", "axisopt", cmd, *args, "--json", str(target)],
-                          cwd=tree, env=env, capture_output=True, text=True)
+    proc = subprocess.run(
+        [sys.executable, "-m", "axisopt", cmd, *args, "--json", str(target)],
+        cwd=tree,
+        env=env,
+        capture_output=True,
+        text=True,
+    )
     if not target.exists():
         return {"exit": proc.returncode, "stderr": proc.stderr.strip()[-300:]}
     return _strip(json.loads(target.read_text()))
@@ -89,13 +99,19 @@ def _diff(a, b, path=""):
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("ref", help="commit to compare against (e.g. a commit before the refactor)")
-    ap.add_argument("--allow", action="append", default=[], help="ignore differences under this path prefix")
+    ap.add_argument(
+        "--allow", action="append", default=[], help="ignore differences under this path prefix"
+    )
     ap.add_argument("--only", action="append", default=[], help="compare only these problem files")
     args = ap.parse_args(argv)
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         ref_tree = tmp / "ref"
-        subprocess.run(["git", "worktree", "add", "--detach", "-q", str(ref_tree), args.ref], cwd=ROOT, check=True)
+        subprocess.run(
+            ["git", "worktree", "add", "--detach", "-q", str(ref_tree), args.ref],
+            cwd=ROOT,
+            check=True,
+        )
         try:
             (tmp / "a").mkdir()
             (tmp / "b").mkdir()
@@ -106,7 +122,9 @@ def main(argv=None) -> int:
                 a = _run(ref_tree, cmd, name, tmp / "a")
                 b = _run(ROOT, cmd, name, tmp / "b")
                 diffs = [d for d in _diff(a, b) if not any(d[0].startswith(p) for p in args.allow)]
-                print(f"{cmd:8s} {_label(name):34s} {'same' if not diffs else f'{len(diffs)} differences'}")
+                print(
+                    f"{cmd:8s} {_label(name):34s} {'same' if not diffs else f'{len(diffs)} differences'}"
+                )
                 for path, x, y in diffs[:8]:
                     print(f"    {path}: {str(x)[:70]} -> {str(y)[:70]}")
                 bad += bool(diffs)

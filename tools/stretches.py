@@ -12,6 +12,7 @@ modules read as many.
 The task's vocabulary (``axisopt.search.task``: the space, the constraints and the objective every stage reads)
 is not a stage: its first entries are listed, and counted, apart (``--all`` counts them as stretches too).
 """
+
 from __future__ import annotations
 
 import argparse
@@ -28,7 +29,8 @@ def first_entries(problem: str) -> list[tuple[str, str]]:
     import axisopt
     import axisopt.search
 
-    # every search module imported first: the walk is the solve's, not the class bodies an import runs
+    # every search module imported first: the walk is the solve's, not the class bodies an import
+    # runs
     for info in pkgutil.walk_packages(axisopt.search.__path__, "axisopt.search."):
         importlib.import_module(info.name)
 
@@ -39,7 +41,12 @@ def first_entries(problem: str) -> list[tuple[str, str]]:
             return
         mod = frame.f_globals.get("__name__", "")
         if mod.startswith("axisopt.search"):
-            key = (mod, frame.f_code.co_qualname if hasattr(frame.f_code, "co_qualname") else frame.f_code.co_name)
+            key = (
+                mod,
+                frame.f_code.co_qualname
+                if hasattr(frame.f_code, "co_qualname")
+                else frame.f_code.co_name,
+            )
             # comprehensions, lambdas and nested functions belong to their caller
             if "<" not in key[1] and key not in seen:
                 seen[key] = None
@@ -71,8 +78,12 @@ def stretches(entries, stages_only: bool = True) -> list[tuple[str, int]]:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("problem", nargs="?", default=str(ROOT / "problems" / "teaching_problem.yaml"))
-    ap.add_argument("--list", action="store_true", help="print every function in the order of first entry")
-    ap.add_argument("--all", action="store_true", help="count the task's vocabulary modules as stretches too")
+    ap.add_argument(
+        "--list", action="store_true", help="print every function in the order of first entry"
+    )
+    ap.add_argument(
+        "--all", action="store_true", help="count the task's vocabulary modules as stretches too"
+    )
     args = ap.parse_args(argv)
     entries = first_entries(args.problem)
     runs = stretches(entries, stages_only=not args.all)
@@ -85,10 +96,17 @@ def main(argv=None) -> int:
         mods[m] = mods.get(m, 0) + 1
     vocab = [e for e in entries if e[0].startswith(VOCABULARY)]
     if not args.all:
-        print(f"task vocabulary: {len(vocab)} functions of "
-              + ", ".join(sorted({m.removeprefix(VOCABULARY + '.') for m, _ in vocab})))
-    print(f"{len(entries)} search functions in {len(runs)} stretches; stretches per module: "
-          + ", ".join(f"{m.removeprefix('axisopt.search.')} {n}" for m, n in sorted(mods.items(), key=lambda t: -t[1])))
+        print(
+            f"task vocabulary: {len(vocab)} functions of "
+            + ", ".join(sorted({m.removeprefix(VOCABULARY + ".") for m, _ in vocab}))
+        )
+    print(
+        f"{len(entries)} search functions in {len(runs)} stretches; stretches per module: "
+        + ", ".join(
+            f"{m.removeprefix('axisopt.search.')} {n}"
+            for m, n in sorted(mods.items(), key=lambda t: -t[1])
+        )
+    )
     return 0
 
 

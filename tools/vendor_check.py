@@ -54,9 +54,12 @@ G = 9.80665
 
 def catalog_row(kind: str, part) -> dict:
     """A part's row from catalogs/<kind>.csv in SI (units from the headers), or an inline mapping."""
-    if isinstance(part, dict):  # an inline part: vendor and series default to 'custom' (as axisopt reads it)
-        row = {k: (quantity(v) if not isinstance(v, str) or re.match(r"^[-0-9.]", v) else v)
-               for k, v in part.items()}
+    # an inline part: vendor and series default to 'custom' (as axisopt reads it)
+    if isinstance(part, dict):
+        row = {
+            k: (quantity(v) if not isinstance(v, str) or re.match(r"^[-0-9.]", v) else v)
+            for k, v in part.items()
+        }
         return {"vendor": "custom", "series": "custom"} | row
     with open(ROOT / "catalogs" / f"{kind}.csv", newline="", encoding="utf-8") as fh:
         for row in csv.DictReader(fh):
@@ -71,7 +74,8 @@ def catalog_row(kind: str, part) -> dict:
     raise KeyError(f"{part} not in catalogs/{kind}.csv")
 
 
-# --- axisopt as a program -------------------------------------------------------------------------------------
+# --- axisopt as a program
+# -------------------------------------------------------------------------------------
 def run_axisopt(path: Path, workdir: Path) -> tuple[Path, dict]:
     """Solve a problem (saving its optimum as a design) or take a design; evaluate it.  Returns the design file
     and the evaluate JSON."""
@@ -80,15 +84,24 @@ def run_axisopt(path: Path, workdir: Path) -> tuple[Path, dict]:
     cmd = [sys.executable, "-m", "axisopt"]
     if re.search(r"^objective:", text, re.M):
         design = workdir / "optimum.yaml"
-        subprocess.run(cmd + ["solve", str(path), "--no-sensitivity", "--save-design", str(design)],
-                       check=True, capture_output=True, text=True)
+        subprocess.run(
+            cmd + ["solve", str(path), "--no-sensitivity", "--save-design", str(design)],
+            check=True,
+            capture_output=True,
+            text=True,
+        )
     out = workdir / "evaluate.json"
-    subprocess.run(cmd + ["evaluate", str(design), "--json", str(out)], check=True, capture_output=True,
-                   text=True)
+    subprocess.run(
+        cmd + ["evaluate", str(design), "--json", str(out)],
+        check=True,
+        capture_output=True,
+        text=True,
+    )
     return design, json.loads(out.read_text(encoding="utf-8"))
 
 
-# --- the axis as the vendor's procedure needs it ------------------------------------------------------------
+# --- the axis as the vendor's procedure needs it
+# ------------------------------------------------------------
 @dataclass
 class Axis:
     stroke: float
@@ -125,8 +138,8 @@ class Axis:
     brake: str
     duty: list
     table_mass: float
-    rms_asked: float | None = None       # axis.rms_torque_ratio (None: the motor vendor's rule)
-    torque_limit: float | None = None    # axis.torque_limit [N.m]
+    rms_asked: float | None = None  # axis.rms_torque_ratio (None: the motor vendor's rule)
+    torque_limit: float | None = None  # axis.torque_limit [N.m]
     cut_while_accelerating: bool = False
 
 
@@ -142,27 +155,53 @@ def read_axis(design: dict) -> Axis:
     width = q("table_width", table_len)
     axial = q("axial_load")
     return Axis(
-        stroke=stroke, start=start, span=start + stroke + q("end_margin", 0.150), mounting=a["mounting"],
-        vertical=a.get("orientation") == "vertical", wall=a.get("orientation") == "wall",
-        v_max=q("max_speed"), a_max=q("acceleration", 0.0), axial_load=axial,
-        mean_load=q("mean_axial_load", axial / 3.0), mean_speed=q("mean_speed", q("max_speed") / 2.0),
+        stroke=stroke,
+        start=start,
+        span=start + stroke + q("end_margin", 0.150),
+        mounting=a["mounting"],
+        vertical=a.get("orientation") == "vertical",
+        wall=a.get("orientation") == "wall",
+        v_max=q("max_speed"),
+        a_max=q("acceleration", 0.0),
+        axial_load=axial,
+        mean_load=q("mean_axial_load", axial / 3.0),
+        mean_speed=q("mean_speed", q("max_speed") / 2.0),
         mean_speed_given="mean_speed" in a,
         life_h=q("required_life", 20000 * 3600.0) / 3600.0,
         load_factor=float(a["load_factor"]) if "load_factor" in a else None,
-        blocks=int(a.get("guide_blocks", 4)), normal=q("normal_load", 0.0), cross=q("cross_load", 0.0),
-        h_tool=q("tool_height", 0.4 * table_len), y_tool=q("tool_offset", 0.0), h_cg=q("cg_height", 0.2 * table_len),
-        y_cg=q("cg_offset", 0.0), block_spacing=q("block_spacing", 0.6 * table_len),
-        rail_spacing=q("rail_spacing", 0.6 * width), rails=int(a.get("rails", 2)),
-        housing_k=q("bearing_housing_stiffness"), bracket_k=q("nut_bracket_stiffness"),
-        # the rise the pretension is designed for: axis.pretension_rise where given (the shaft's design rise),
+        blocks=int(a.get("guide_blocks", 4)),
+        normal=q("normal_load", 0.0),
+        cross=q("cross_load", 0.0),
+        h_tool=q("tool_height", 0.4 * table_len),
+        y_tool=q("tool_offset", 0.0),
+        h_cg=q("cg_height", 0.2 * table_len),
+        y_cg=q("cg_offset", 0.0),
+        block_spacing=q("block_spacing", 0.6 * table_len),
+        rail_spacing=q("rail_spacing", 0.6 * width),
+        rails=int(a.get("rails", 2)),
+        housing_k=q("bearing_housing_stiffness"),
+        bracket_k=q("nut_bracket_stiffness"),
+        # the rise the pretension is designed for: axis.pretension_rise where given (the shaft's
+        # design rise),
         # else axis.temperature_rise, else THK's 3 K
-        temp_rise=(q("pretension_rise") if "pretension_rise" in a
-                   else q("temperature_rise") if "temperature_rise" in a else None),
-        ratio=float(a.get("reduction_ratio", 1.0)), red_eff=float(a.get("reduction_efficiency", 1.0)),
-        red_inertia=q("reduction_inertia", 0.0), max_inertia_ratio=float(a.get("max_inertia_ratio", 5.0)),
-        brake=str(a.get("brake", "auto")), duty=list(a.get("duty_cycle") or []), table_mass=q("moving_mass"),
+        temp_rise=(
+            q("pretension_rise")
+            if "pretension_rise" in a
+            else q("temperature_rise")
+            if "temperature_rise" in a
+            else None
+        ),
+        ratio=float(a.get("reduction_ratio", 1.0)),
+        red_eff=float(a.get("reduction_efficiency", 1.0)),
+        red_inertia=q("reduction_inertia", 0.0),
+        max_inertia_ratio=float(a.get("max_inertia_ratio", 5.0)),
+        brake=str(a.get("brake", "auto")),
+        duty=list(a.get("duty_cycle") or []),
+        table_mass=q("moving_mass"),
         rms_asked=float(a["rms_torque_ratio"]) if "rms_torque_ratio" in a else None,
-        torque_limit=vr.torque_limit(a), cut_while_accelerating=a.get("cut_while_accelerating") is True)
+        torque_limit=vr.torque_limit(a),
+        cut_while_accelerating=a.get("cut_while_accelerating") is True,
+    )
 
 
 def compare(vendor, theirs, same_method=True) -> str:
@@ -200,21 +239,33 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     # masses and loads (THK A-725: Fa = mu m g + f + m alpha, + m g on a vertical axis, A-739)
     moving = ax.table_mass + nut["mass"] + ax.blocks * guide["block_mass"]
 
-    def guide_friction(mass):  # the guides' resistance under a moving mass (THK A-725: mu (m g + N) + f)
+    # the guides' resistance under a moving mass (THK A-725: mu (m g + N) + f)
+    def guide_friction(mass):
         on_rails = 0.0 if (ax.vertical or ax.wall) else mass * G
-        return guide["friction_coefficient"] * (on_rails + ax.normal) + ax.blocks * guide["friction_force"]
+        return (
+            guide["friction_coefficient"] * (on_rails + ax.normal)
+            + ax.blocks * guide["friction_force"]
+        )
+
     friction = guide_friction(moving)
-    ax_guides, moving_guides, friction_guides = replace(ax), moving, friction  # what the guides carry
+    # what the guides carry
+    ax_guides, moving_guides, friction_guides = replace(ax), moving, friction
     tw = design["axis"].get("twin_drive")
-    if tw:  # each drive checked as its governing side: its share of the mass, friction and process force
-        r, side, whole = vp.twin_side(tw, ax.table_mass, nut["mass"], ax.blocks * guide["block_mass"])
+    # each drive checked as its governing side: its share of the mass, friction and process force
+    if tw:
+        r, side, whole = vp.twin_side(
+            tw, ax.table_mass, nut["mass"], ax.blocks * guide["block_mass"]
+        )
         moving_guides = whole
         friction_guides = guide_friction(whole)
-        ax_guides = replace(ax, table_mass=whole - 2 * nut["mass"] - ax.blocks * guide["block_mass"])
+        ax_guides = replace(
+            ax, table_mass=whole - 2 * nut["mass"] - ax.blocks * guide["block_mass"]
+        )
         moving, friction = side, friction_guides * side / whole
         ax.axial_load, ax.mean_load, ax.force_share = r * ax.axial_load, r * ax.mean_load, r
     weight = moving * G if ax.vertical else 0.0
-    weights, accel = weight, moving  # the weight on the screw by direction; the mass the drive accelerates
+    # the weight on the screw by direction; the mass the drive accelerates
+    weights, accel = weight, moving
     cb = design["axis"].get("counterbalance")
     if cb and cb.get("kind", "none") != "none" and ax.vertical:
         weights, extra = vp.counterbalance_weights(cb, weight)
@@ -224,108 +275,297 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     a_peak = max([ax.a_max] + [abs(p.acc) for p in phases])
     net = max(abs(weights(1)), abs(weights(-1))) if callable(weights) else weight
     f_max = ax.axial_load + accel * a_peak + friction + net
-    lead, d1, d0 = screw["lead"] * 1e3, screw["root_diameter"] * 1e3, screw["nominal_diameter"] * 1e3
-    n_max = ax.v_max * 60.0 / (lead * 1e-3)                           # [rpm]
+    lead, d1, d0 = (
+        screw["lead"] * 1e3,
+        screw["root_diameter"] * 1e3,
+        screw["nominal_diameter"] * 1e3,
+    )
+    n_max = ax.v_max * 60.0 / (lead * 1e-3)  # [rpm]
     svendor = screw["vendor"]
     ff = ax.mounting == "fixed-fixed"
     x_far = (ax.start + ax.stroke) * 1e3
     span = ax.span * 1e3
 
-    # 1 permissible rotational speed (critical speed, mounting factor) and DN; a rotating nut: the nut's DN only
+    # 1 permissible rotational speed (critical speed, mounting factor) and DN; a rotating nut: the
+    # nut's DN only
     if rotating:
         n_nut, dp = vp.nut_rotation_speed_limit(d0, screw["dn_limit"])
-        rows.append(Row("rotating nut permissible speed", "rpm", n_nut, n_max, n_nut / n_max, theirs("unit_speed"),
-                        their_margin("unit_speed"), "", "T-GC A-697 DN <= 70 000 on the nut's rotation; "
-                        "A-772..A-774: standing screw, no critical speed", f"ball centre diameter {dp:.2f} mm"))
+        rows.append(
+            Row(
+                "rotating nut permissible speed",
+                "rpm",
+                n_nut,
+                n_max,
+                n_nut / n_max,
+                theirs("unit_speed"),
+                their_margin("unit_speed"),
+                "",
+                "T-GC A-697 DN <= 70 000 on the nut's rotation; "
+                "A-772..A-774: standing screw, no critical speed",
+                f"ball centre diameter {dp:.2f} mm",
+            )
+        )
     else:
         n1, src = vp.critical_speed(svendor, d1, span, ax.mounting)
-        rows.append(Row("critical speed", "rpm", n1, n_max, n1 / n_max, theirs("critical_speed"),
-                        their_margin("critical_speed"), "", src, f"l_b = bearing span {span:.0f} mm"))
-        dn_lim, dn, src, note = vp.dn_check(svendor, d0, d1, screw["ball_diameter"] * 1e3, n_max, screw["dn_limit"])
-        rows.append(Row("DN value", "mm.rpm", dn_lim, dn, dn_lim / dn, theirs("dn"), their_margin("dn"), "", src,
-                        note))
+        rows.append(
+            Row(
+                "critical speed",
+                "rpm",
+                n1,
+                n_max,
+                n1 / n_max,
+                theirs("critical_speed"),
+                their_margin("critical_speed"),
+                "",
+                src,
+                f"l_b = bearing span {span:.0f} mm",
+            )
+        )
+        dn_lim, dn, src, note = vp.dn_check(
+            svendor, d0, d1, screw["ball_diameter"] * 1e3, n_max, screw["dn_limit"]
+        )
+        rows.append(
+            Row(
+                "DN value",
+                "mm.rpm",
+                dn_lim,
+                dn,
+                dn_lim / dn,
+                theirs("dn"),
+                their_margin("dn"),
+                "",
+                src,
+                note,
+            )
+        )
     # 2 buckling and 3 permissible tensile/compressive load (147 MPa)
     la = max(x_far, span - ax.start * 1e3) if ff else x_far
     if design["axis"].get("buckling_nut_end") == "supported":
         p1, src = vr.misumi_buckling(d1, la)
     else:
         p1, src = vp.buckling_load(svendor, d1, la)
-    rows.append(Row("buckling", "kN", p1 / 1e3, f_max / 1e3, p1 / f_max, theirs("buckling"), their_margin("buckling"),
-                    "", src, f"l_a = thrust bearing to nut at the far end {la:.0f} mm, nut as fixed end (THK A-726);"
-                    " load: feed force + m a + friction (+ weight)"))
+    rows.append(
+        Row(
+            "buckling",
+            "kN",
+            p1 / 1e3,
+            f_max / 1e3,
+            p1 / f_max,
+            theirs("buckling"),
+            their_margin("buckling"),
+            "",
+            src,
+            f"l_a = thrust bearing to nut at the far end {la:.0f} mm, nut as fixed end (THK A-726);"
+            " load: feed force + m a + friction (+ weight)",
+        )
+    )
     pre_vendor = vp.thermal_pretension(d1, ax.temp_rise, svendor) if ff else 0.0
     p2 = vp.permissible_tension(d1)
     tension = f_max + pre_vendor
-    rows.append(Row("tensile/compressive load", "kN", p2 / 1e3, tension / 1e3, p2 / tension, theirs("screw_yield"),
-                    their_margin("screw_yield"), "", "T-GC A-694 eq. 7: P2 = 116 d1^2 (147 MPa)",
-                    "max axial force" + (" + thermal pretension" if ff else "")))
+    rows.append(
+        Row(
+            "tensile/compressive load",
+            "kN",
+            p2 / 1e3,
+            tension / 1e3,
+            p2 / tension,
+            theirs("screw_yield"),
+            their_margin("screw_yield"),
+            "",
+            "T-GC A-694 eq. 7: P2 = 116 d1^2 (147 MPa)",
+            "max axial force" + (" + thermal pretension" if ff else ""),
+        )
+    )
     if ff:
-        rows.append(Row("thermal pretension", "kN", pre_vendor / 1e3, None, None, ev.get("pretension_N", 0.0) / 1e3,
-                        None, "", "T-GC A-715 eq. 38, H-BS F 3.36 (alpha) x E A: stretch for a "
-                        f"{ax.temp_rise or vp.DESIGN_RISE:.0f} K rise",
-                        "axis.pretension_rise, else axis.temperature_rise if given, else 3 K"))
+        rows.append(
+            Row(
+                "thermal pretension",
+                "kN",
+                pre_vendor / 1e3,
+                None,
+                None,
+                ev.get("pretension_N", 0.0) / 1e3,
+                None,
+                "",
+                "T-GC A-715 eq. 38, H-BS F 3.36 (alpha) x E A: stretch for a "
+                f"{ax.temp_rise or vp.DESIGN_RISE:.0f} K rise",
+                "axis.pretension_rise, else axis.temperature_rise if given, else 3 K",
+            )
+        )
     # 4 nut: static safety, lift-off, preload ceiling, L10 life
     fs_nut = vp.NUT_STATIC_SAFETY
-    rows.append(Row("nut static safety C0a/Famax", "-", nut["static_load_rating"] / f_max, fs_nut,
-                    nut["static_load_rating"] / f_max / fs_nut, ev.get("nut_static_safety"), None, "",
-                    "T-GC A-703 Table 18 (machine tool, vibration/impact: 2.5-7), H-BS F 3.3",
-                    f"criterion f_S >= {fs_nut} (vendor's lower bound; axisopt's default 5)"))
+    rows.append(
+        Row(
+            "nut static safety C0a/Famax",
+            "-",
+            nut["static_load_rating"] / f_max,
+            fs_nut,
+            nut["static_load_rating"] / f_max / fs_nut,
+            ev.get("nut_static_safety"),
+            None,
+            "",
+            "T-GC A-703 Table 18 (machine tool, vibration/impact: 2.5-7), H-BS F 3.3",
+            f"criterion f_S >= {fs_nut} (vendor's lower bound; axisopt's default 5)",
+        )
+    )
     double = nut["type"] == "double"
     if double:
-        lift = 2 ** 1.5 * preload
+        lift = 2**1.5 * preload
         rapid = [] if cycle_given else vp.default_drive_phases(ax, accel, friction, weights)
-        dwell_force = max([quantity(st.get("force", 0.0)) * getattr(ax, "force_share", 1.0)
-                           for st in ax.duty if "dwell" in st] + [0.0])
-        lift_need, how = vr.lift_off_need(ax, phases, rapid, friction, net, f_max, ax.cut_while_accelerating)
+        dwell_force = max(
+            [
+                quantity(st.get("force", 0.0)) * getattr(ax, "force_share", 1.0)
+                for st in ax.duty
+                if "dwell" in st
+            ]
+            + [0.0]
+        )
+        lift_need, how = vr.lift_off_need(
+            ax, phases, rapid, friction, net, f_max, ax.cut_while_accelerating
+        )
         lift_need = max(lift_need, abs(weights(0) if callable(weights) else weight) + dwell_force)
-        rows.append(Row("nut lift-off", "kN", lift / 1e3, lift_need / 1e3, lift / lift_need, theirs("nut_lift_off"),
-                        their_margin("nut_lift_off"), "", "H-BS F 3.6 / T-GC A-687: F_lim = 2^(3/2) F_pr", how))
+        rows.append(
+            Row(
+                "nut lift-off",
+                "kN",
+                lift / 1e3,
+                lift_need / 1e3,
+                lift / lift_need,
+                theirs("nut_lift_off"),
+                their_margin("nut_lift_off"),
+                "",
+                "H-BS F 3.6 / T-GC A-687: F_lim = 2^(3/2) F_pr",
+                how,
+            )
+        )
         ceiling = 0.1 * nut["dynamic_load_rating"]
-        rows.append(Row("nut preload ceiling", "kN", ceiling / 1e3, preload / 1e3, ceiling / preload,
-                        theirs("nut_preload"), their_margin("nut_preload"), "", "T-GC A-687, H-BS F 3.5: <= 10 % Ca"))
-    # the life's mean speed: the designer's stated one (the machine's hours include time off the cycle), else the
-    # cycle's (THK A-705: the phases' speeds and times), else half the rapid speed (docs/files.md's default)
+        rows.append(
+            Row(
+                "nut preload ceiling",
+                "kN",
+                ceiling / 1e3,
+                preload / 1e3,
+                ceiling / preload,
+                theirs("nut_preload"),
+                their_margin("nut_preload"),
+                "",
+                "T-GC A-687, H-BS F 3.5: <= 10 % Ca",
+            )
+        )
+    # the life's mean speed: the designer's stated one (the machine's hours include time off the
+    # cycle), else the
+    # cycle's (THK A-705: the phases' speeds and times), else half the rapid speed (docs/files.md's
+    # default)
     use_cycle = cycle_given and not ax.mean_speed_given
     nm = vp.mean_speed_rpm(phases, lead) if use_cycle else ax.mean_speed * 60 / (lead * 1e-3)
     fw_nut, fw_src = vp.nut_load_factor(nut["vendor"], ax.v_max, ax.load_factor)
-    life, src = vp.nut_life_h(nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_nut, nm)
-    fw_ax = float(ev["load_factor"])  # the fw axisopt's life checks read (its output), for the same-basis rows
-    life_ax = vp.nut_life_h(nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_ax, nm)[0]
-    rows.append(Row("nut L10 life", "h", life, ax.life_h, life / ax.life_h, theirs("nut_life"),
-                    their_margin("nut_life"), "", src, f"{fw_src}; mean speed {nm:.0f} rpm"
-                    + ("" if cycle_given else "; loads: axis.mean_axial_load + friction each way")
-                    + f"; at axisopt's fw {fw_ax}: {life_ax:,.0f} h", same_basis=life_ax))
-    if rotating:  # the unit's own support bearing carries the nut's load and turns with it (T-GC A-776, B-721)
+    life, src = vp.nut_life_h(
+        nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_nut, nm
+    )
+    # the fw axisopt's life checks read (its output), for the same-basis rows
+    fw_ax = float(ev["load_factor"])
+    life_ax = vp.nut_life_h(
+        nut["dynamic_load_rating"], preload if double else 0.0, phases, fw_ax, nm
+    )[0]
+    rows.append(
+        Row(
+            "nut L10 life",
+            "h",
+            life,
+            ax.life_h,
+            life / ax.life_h,
+            theirs("nut_life"),
+            their_margin("nut_life"),
+            "",
+            src,
+            f"{fw_src}; mean speed {nm:.0f} rpm"
+            + ("" if cycle_given else "; loads: axis.mean_axial_load + friction each way")
+            + f"; at axisopt's fw {fw_ax}: {life_ax:,.0f} h",
+            same_basis=life_ax,
+        )
+    )
+    # the unit's own support bearing carries the nut's load and turns with it (T-GC A-776, B-721)
+    if rotating:
         ca_u = nut["unit_bearing_dynamic_load"]
         u_life = vp.unit_bearing_life_h(ca_u, phases, fw_nut, nm)
         u_ax = vp.unit_bearing_life_h(ca_u, phases, fw_ax, nm)
-        rows.append(Row("unit support bearing L10 life", "h", u_life, ax.life_h, u_life / ax.life_h,
-                        theirs("unit_bearing_life"), their_margin("unit_bearing_life"), "",
-                        "T-GC A-730: L = (Ca/(fw Fm))^3 x 10^6 rev, Ca of the DIR/BLR table (B-721)",
-                        f"Ca {ca_u / 1e3:.1f} kN; {fw_src}; mean nut speed {nm:.0f} rpm; at axisopt's fw {fw_ax}: "
-                        f"{u_ax:,.0f} h", same_basis=u_ax))
+        rows.append(
+            Row(
+                "unit support bearing L10 life",
+                "h",
+                u_life,
+                ax.life_h,
+                u_life / ax.life_h,
+                theirs("unit_bearing_life"),
+                their_margin("unit_bearing_life"),
+                "",
+                "T-GC A-730: L = (Ca/(fw Fm))^3 x 10^6 rev, Ca of the DIR/BLR table (B-721)",
+                f"Ca {ca_u / 1e3:.1f} kN; {fw_src}; mean nut speed {nm:.0f} rpm; at axisopt's fw {fw_ax}: "
+                f"{u_ax:,.0f} h",
+                same_basis=u_ax,
+            )
+        )
     # 5 support bearings: life per direction by the rows carrying it, static safety
     n_sets = 2 if ff else 1
     blife, src, bnote = vp.bearing_life_h(brg, phases, pre_vendor, nm)
     b_ax = vp.bearing_life_h(brg, phases, pre_vendor, nm, fw_ax)[0]
     bnote += f"; with axisopt's fw {fw_ax} on the loads: {b_ax:,.0f} h"
-    if not rotating:  # a standing screw's end bearings do not turn: no rolling life (T-GC A-772..A-774)
-        rows.append(Row("support bearing L10 life", "h", blife, ax.life_h, blife / ax.life_h,
-                        theirs("bearing_life"), their_margin("bearing_life"), "", src, bnote))
-    if not rotating and str(brg.get("vendor")) == "NSK":  # the bearing maker's own group ratings, Hertz split
+    # a standing screw's end bearings do not turn: no rolling life (T-GC A-772..A-774)
+    if not rotating:
+        rows.append(
+            Row(
+                "support bearing L10 life",
+                "h",
+                blife,
+                ax.life_h,
+                blife / ax.life_h,
+                theirs("bearing_life"),
+                their_margin("bearing_life"),
+                "",
+                src,
+                bnote,
+            )
+        )
+    # the bearing maker's own group ratings, Hertz split
+    if not rotating and str(brg.get("vendor")) == "NSK":
         nlife, nsrc, nnote = vp.nsk_set_life_h(brg, phases, pre_vendor, nm, fw_ax)
-        rows.append(Row("support bearing L10 life (NSK ratings)", "h", nlife, ax.life_h, nlife / ax.life_h,
-                        theirs("bearing_life"), their_margin("bearing_life"), "", nsrc,
-                        nnote + f"; axisopt's fw {fw_ax} on the loads"))
+        rows.append(
+            Row(
+                "support bearing L10 life (NSK ratings)",
+                "h",
+                nlife,
+                ax.life_h,
+                nlife / ax.life_h,
+                theirs("bearing_life"),
+                their_margin("bearing_life"),
+                "",
+                nsrc,
+                nnote + f"; axisopt's fw {fw_ax} on the loads",
+            )
+        )
     avail, need, m_lift, lnote = vp.bearing_lift_off(brg, f_max, pre_vendor)
-    rows.append(Row("support bearing lift-off", "kN", avail / 1e3, need / 1e3, m_lift, theirs("bearing_lift_off"),
-                    their_margin("bearing_lift_off"), "", "IBC Table 2.2: unloading at Fae > X Fv",
-                    lnote + "; load: max axial force" + (" (+ pretension on the rows facing it)" if ff else "")))
+    rows.append(
+        Row(
+            "support bearing lift-off",
+            "kN",
+            avail / 1e3,
+            need / 1e3,
+            m_lift,
+            theirs("bearing_lift_off"),
+            their_margin("bearing_lift_off"),
+            "",
+            "IBC Table 2.2: unloading at Fae > X Fv",
+            lnote
+            + "; load: max axial force"
+            + (" (+ pretension on the rows facing it)" if ff else ""),
+        )
+    )
     perm, src, generic = vp.bearing_permissible_load(brg)
     load_b = f_max + pre_vendor
     n_a, n_b = vp.ROWS[brg["arrangement"]]
     how = "weaker direction's rows; load: max axial force" + (" + pretension" if ff else "")
-    if n_a != n_b and ff:  # a 3:1 set: its stronger rows face the pretension, the single the force alone
+    # a 3:1 set: its stronger rows face the pretension, the single the force alone
+    if n_a != n_b and ff:
         strong = perm * max(n_a, n_b) / min(n_a, n_b)
         if strong / load_b <= perm / f_max:
             perm = strong
@@ -333,57 +573,149 @@ def check_design(design: dict, ev: dict) -> list[Row]:
             load_b = f_max
         how = "the stronger rows against max axial force + pretension, the weaker against the force alone"
     # generic: a plain C0a without its vendor's factor, where each side picks a general S0
-    rows.append(Row("support bearing static", "kN", perm / 1e3, load_b / 1e3, perm / load_b,
-                    theirs("bearing_static"), their_margin("bearing_static"), "CONV" if generic else "", src,
-                    how + ("; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
-                           "Rexroth's S0 4 for machine tools" if generic else "")))
+    rows.append(
+        Row(
+            "support bearing static",
+            "kN",
+            perm / 1e3,
+            load_b / 1e3,
+            perm / load_b,
+            theirs("bearing_static"),
+            their_margin("bearing_static"),
+            "CONV" if generic else "",
+            src,
+            how
+            + (
+                "; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
+                "Rexroth's S0 4 for machine tools"
+                if generic
+                else ""
+            ),
+        )
+    )
     # 6 guides: static safety and travel life at the vendor's rating distance
     if tw:  # the guides carry the whole gantry and the whole force
         ph_guides = vp.duty_phases(ax_guides, moving_guides, friction_guides, 0.0)[0]
     else:
         ph_guides = phases
     ends = [ax_guides]
-    if tw:  # the cross carriage at either end of its stroke: its weight and inertia there, as separate forces
-        ends = [vr.cross_carriage_at(ax_guides, moving_guides, quantity(tw.get("cross_mass", 0.0)), y)
-                for y in (0.5 * quantity(tw["cross_stroke"]), -0.5 * quantity(tw["cross_stroke"]))]
+    # the cross carriage at either end of its stroke: its weight and inertia there, as separate
+    # forces
+    if tw:
+        ends = [
+            vr.cross_carriage_at(ax_guides, moving_guides, quantity(tw.get("cross_mass", 0.0)), y)
+            for y in (0.5 * quantity(tw["cross_stroke"]), -0.5 * quantity(tw["cross_stroke"]))
+        ]
     blocks = max(vp.block_loads_max(a, moving_guides, a_peak) for a in ends)
     fs_g, src = vp.guide_static_safety(guide["vendor"], guide["type"])
-    rows.append(Row("guide static safety C0/P", "-", guide["static_load_rating"] / blocks, fs_g,
-                    guide["static_load_rating"] / blocks / fs_g, ev.get("guide_static_safety"), None, "", src,
-                    f"largest block load {blocks / 1e3:.2f} kN (axisopt "
-                    f"{ev.get('guide_max_block_load_N', float('nan')) / 1e3:.2f} kN)"))
+    rows.append(
+        Row(
+            "guide static safety C0/P",
+            "-",
+            guide["static_load_rating"] / blocks,
+            fs_g,
+            guide["static_load_rating"] / blocks / fs_g,
+            ev.get("guide_static_safety"),
+            None,
+            "",
+            src,
+            f"largest block load {blocks / 1e3:.2f} kN (axisopt "
+            f"{ev.get('guide_max_block_load_N', float('nan')) / 1e3:.2f} kN)",
+        )
+    )
     travel_speed = vp.mean_travel_speed(phases) if use_cycle else ax.mean_speed
     need_km = ax.life_h * 3600 * travel_speed / 1e3
-    g_km, src, gnote = min((vp.guide_life_km(guide, a, ph_guides, cycle_given, moving_guides) for a in ends),
-                           key=lambda t: t[0])
-    g_ax = min(vp.guide_life_km(guide, a, ph_guides, cycle_given, moving_guides, fw_ax)[0] for a in ends)
-    rows.append(Row("guide L10 travel", "km", g_km, need_km, g_km / need_km, theirs("guide_life"),
-                    their_margin("guide_life"), "", src, gnote + f"; at axisopt's fw {fw_ax}: {g_ax:,.0f} km",
-                    same_basis=g_ax))
+    g_km, src, gnote = min(
+        (vp.guide_life_km(guide, a, ph_guides, cycle_given, moving_guides) for a in ends),
+        key=lambda t: t[0],
+    )
+    g_ax = min(
+        vp.guide_life_km(guide, a, ph_guides, cycle_given, moving_guides, fw_ax)[0] for a in ends
+    )
+    rows.append(
+        Row(
+            "guide L10 travel",
+            "km",
+            g_km,
+            need_km,
+            g_km / need_km,
+            theirs("guide_life"),
+            their_margin("guide_life"),
+            "",
+            src,
+            gnote + f"; at axisopt's fw {fw_ax}: {g_ax:,.0f} km",
+            same_basis=g_ax,
+        )
+    )
     # 7 axial rigidity of the feed system (THK A-707 eq. 32)
     k_v, src, knote = vp.feed_rigidity(ax, screw, nut, brg, preload, f_max)
-    if rotating:  # the unit's bearing is in series with the nut (A-707's K_B of the nut's own support)
+    # the unit's bearing is in series with the nut (A-707's K_B of the nut's own support)
+    if rotating:
         k_u = nut.get("unit_bearing_rigidity")
         k_v = 1 / (1 / k_v + 1e6 / k_u) if k_u else k_v
-        knote += (f"; unit bearing {k_u / 1e6:.0f} N/um in series" if k_u else
-                  "; unit bearing rigidity not printed (THK A-707: ask the maker): left out")
+        knote += (
+            f"; unit bearing {k_u / 1e6:.0f} N/um in series"
+            if k_u
+            else "; unit bearing rigidity not printed (THK A-707: ask the maker): left out"
+        )
     chain = ev.get("chain_at_minimum_N_per_um", {})
     k_them = None
     if chain:
-        parts_k = [v for k, v in chain.items() if k not in ("screw torsion", "coupling") and v != "rigid"]
+        parts_k = [
+            v for k, v in chain.items() if k not in ("screw torsion", "coupling") and v != "rigid"
+        ]
         k_them = 1.0 / sum(1.0 / v for v in parts_k)
-    rows.append(Row("axial rigidity (screw, nut, bearing, K_H)", "N/um", k_v, None, None, k_them, None, "", src,
-                    knote))
+    rows.append(
+        Row(
+            "axial rigidity (screw, nut, bearing, K_H)",
+            "N/um",
+            k_v,
+            None,
+            None,
+            k_them,
+            None,
+            "",
+            src,
+            knote,
+        )
+    )
     # 8 drive: inertia ratio, RMS torque, holding torque
     if motor is not None:
-        rows += vp.drive_rows(ax, screw, nut, brg, motor, coupling, accel, friction, weights, phases, preload,
-                              n_sets, ev, cycle_given, red, nut["unit_inertia"] if rotating else None)
+        rows += vp.drive_rows(
+            ax,
+            screw,
+            nut,
+            brg,
+            motor,
+            coupling,
+            accel,
+            friction,
+            weights,
+            phases,
+            preload,
+            n_sets,
+            ev,
+            cycle_given,
+            red,
+            nut["unit_inertia"] if rotating else None,
+        )
     # 9 own-weight sag of a horizontal screw (beam formula, INFO: no vendor limit)
     if not (ax.vertical or ax.wall) and screw.get("mass_per_length"):
         sag = vp.screw_sag(screw["mass_per_length"], screw["root_diameter"], ax.span, ax.mounting)
-        rows.append(Row("screw sag (own weight)", "um", sag * 1e6, None, None, None, None, "INFO",
-                        "AISC Table 3-23: delta = q L^4 / (k E I), I = pi d1^4/64, k by the mounting",
-                        f"q = {screw['mass_per_length'] * G:.1f} N/m over the span {span:.0f} mm; no vendor limit"))
+        rows.append(
+            Row(
+                "screw sag (own weight)",
+                "um",
+                sag * 1e6,
+                None,
+                None,
+                None,
+                None,
+                "INFO",
+                "AISC Table 3-23: delta = q L^4 / (k E I), I = pi d1^4/64, k by the mounting",
+                f"q = {screw['mass_per_length'] * G:.1f} N/m over the span {span:.0f} mm; no vendor limit",
+            )
+        )
     for r in rows:
         if r.kind == "CONV":  # set where the row is made: a convention of this design's parts
             continue
@@ -391,12 +723,17 @@ def check_design(design: dict, ev: dict) -> list[Row]:
         if r.same_basis is not None:
             r.kind = compare(r.same_basis, r.axisopt, same)
         else:
-            r.kind = compare(r.margin if r.margin is not None and r.axis_margin is not None else r.vendor,
-                             r.axis_margin if r.margin is not None and r.axis_margin is not None else r.axisopt,
-                             same)
+            r.kind = compare(
+                r.margin if r.margin is not None and r.axis_margin is not None else r.vendor,
+                r.axis_margin if r.margin is not None and r.axis_margin is not None else r.axisopt,
+                same,
+            )
         if r.kind == "CONV":
-            r.note = (r.note + "; " if r.note else "") + "convention: " + vp.CONVENTIONS[
-                next(c for c in vp.CONVENTIONS if r.check.startswith(c))]
+            r.note = (
+                (r.note + "; " if r.note else "")
+                + "convention: "
+                + vp.CONVENTIONS[next(c for c in vp.CONVENTIONS if r.check.startswith(c))]
+            )
     return rows
 
 
@@ -410,27 +747,47 @@ def fmt(x) -> str:
 
 
 def table(rows: list[Row]) -> str:
-    head = f"{'check':<42} {'unit':>6} {'vendor':>10} {'limit':>10} {'margin':>7} {'':4} {'axisopt':>10} " \
-           f"{'ax.marg':>7} {'ratio':>6} {'':5}"
+    head = (
+        f"{'check':<42} {'unit':>6} {'vendor':>10} {'limit':>10} {'margin':>7} {'':4} {'axisopt':>10} "
+        f"{'ax.marg':>7} {'ratio':>6} {'':5}"
+    )
     lines = [head, "-" * len(head)]
     for r in rows:
-        ratio = (r.margin / r.axis_margin if r.margin is not None and r.axis_margin
-                 else r.vendor / r.axisopt if r.axisopt else None)
+        ratio = (
+            r.margin / r.axis_margin
+            if r.margin is not None and r.axis_margin
+            else r.vendor / r.axisopt
+            if r.axisopt
+            else None
+        )
         verdict = "" if r.margin is None else ("PASS" if r.passes else "FAIL")
-        lines.append(f"{r.check:<42} {r.unit:>6} {fmt(r.vendor):>10} {fmt(r.limit):>10} {fmt(r.margin):>7} "
-                     f"{verdict:4} {fmt(r.axisopt):>10} {fmt(r.axis_margin):>7} {fmt(ratio):>6} {r.kind:5}")
+        lines.append(
+            f"{r.check:<42} {r.unit:>6} {fmt(r.vendor):>10} {fmt(r.limit):>10} {fmt(r.margin):>7} "
+            f"{verdict:4} {fmt(r.axisopt):>10} {fmt(r.axis_margin):>7} {fmt(ratio):>6} {r.kind:5}"
+        )
         lines.append(f"    {r.source}" + (f"  [{r.note}]" if r.note else ""))
     return "\n".join(lines)
 
 
 # the results table of docs/validation.md: (short label, the checker's check name)
-SUMMARY = (("crit. speed", "critical speed"), ("DN", "DN value"), ("buckling", "buckling"),
-           ("P2 147 MPa", "tensile/compressive load"), ("nut C0a/F", "nut static safety C0a/Famax"),
-           ("lift-off", "nut lift-off"), ("preload<=10%Ca", "nut preload ceiling"), ("nut life", "nut L10 life"),
-           ("brg life", "support bearing L10 life"), ("brg static", "support bearing static"),
-           ("guide C0/P", "guide static safety C0/P"), ("guide km", "guide L10 travel"),
-           ("K axial", "axial rigidity (screw, nut, bearing, K_H)"), ("J ratio", "inertia ratio load/rotor"),
-           ("T rms", "RMS torque"), ("T hold", "holding torque at a stop"))
+SUMMARY = (
+    ("crit. speed", "critical speed"),
+    ("DN", "DN value"),
+    ("buckling", "buckling"),
+    ("P2 147 MPa", "tensile/compressive load"),
+    ("nut C0a/F", "nut static safety C0a/Famax"),
+    ("lift-off", "nut lift-off"),
+    ("preload<=10%Ca", "nut preload ceiling"),
+    ("nut life", "nut L10 life"),
+    ("brg life", "support bearing L10 life"),
+    ("brg static", "support bearing static"),
+    ("guide C0/P", "guide static safety C0/P"),
+    ("guide km", "guide L10 travel"),
+    ("K axial", "axial rigidity (screw, nut, bearing, K_H)"),
+    ("J ratio", "inertia ratio load/rotor"),
+    ("T rms", "RMS torque"),
+    ("T hold", "holding torque at a stop"),
+)
 
 
 def summary_cell(r: dict | None) -> str:
@@ -450,7 +807,9 @@ def summary_table(results: dict) -> str:
     names = list(results)
     lines = ["| check | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
     for label, check in SUMMARY:
-        cells = [summary_cell(next((r for r in results[n] if r["check"] == check), None)) for n in names]
+        cells = [
+            summary_cell(next((r for r in results[n] if r["check"] == check), None)) for n in names
+        ]
         lines.append(f"| {label} | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
@@ -464,15 +823,21 @@ def main(argv=None) -> int:
         design_path, ev = run_axisopt(Path(args.file), Path(tmp))
         design = yaml.safe_load(design_path.read_text(encoding="utf-8"))
     rows = check_design(design, ev)
-    print(f"{args.file}: design {ev['design']}, {ev['mounting']}, parts "
-          + "  ".join(f"{k} {v}" for k, v in ev["parts"].items()))
+    print(
+        f"{args.file}: design {ev['design']}, {ev['mounting']}, parts "
+        + "  ".join(f"{k} {v}" for k, v in ev["parts"].items())
+    )
     print(table(rows))
     fails = [r.check for r in rows if not r.passes]
     diffs = [r.check for r in rows if r.kind == "DIFF"]
-    print(f"vendor criterion: {'all pass' if not fails else 'FAIL ' + ', '.join(fails)};  "
-          f"disagreements > {TOLERANCE:.0%} (same method): {', '.join(diffs) or 'none'}")
+    print(
+        f"vendor criterion: {'all pass' if not fails else 'FAIL ' + ', '.join(fails)};  "
+        f"disagreements > {TOLERANCE:.0%} (same method): {', '.join(diffs) or 'none'}"
+    )
     if args.json:
-        Path(args.json).write_text(json.dumps([asdict(r) | {"passes": r.passes} for r in rows], indent=1))
+        Path(args.json).write_text(
+            json.dumps([asdict(r) | {"passes": r.passes} for r in rows], indent=1)
+        )
     return 0
 
 

@@ -15,14 +15,15 @@ from dataclasses import dataclass
 import numpy as np
 
 G = 9.80665
-E_THK = 2.06e5          # [N/mm^2] T-GC A-694, A-696, A-707
-RHO_THK = 7.85e-6       # [kg/mm^3] T-GC A-696
-ALPHA_THK = 12e-6       # [1/K] T-GC A-715 eq. 38
-ETA_THK = 0.9           # screw efficiency in THK's torque examples (A-733, A-743)
-DESIGN_RISE = 3.0       # [K] pretension target rise (T-GC A-715: 2-5 K; vendor practice 2-3 K)
-NUT_STATIC_SAFETY = 2.5  # T-GC A-703 Table 18: machine tool with vibration or impact, 2.5 to 7 (lower bound)
+E_THK = 2.06e5  # [N/mm^2] T-GC A-694, A-696, A-707
+RHO_THK = 7.85e-6  # [kg/mm^3] T-GC A-696
+ALPHA_THK = 12e-6  # [1/K] T-GC A-715 eq. 38
+ETA_THK = 0.9  # screw efficiency in THK's torque examples (A-733, A-743)
+DESIGN_RISE = 3.0  # [K] pretension target rise (T-GC A-715: 2-5 K; vendor practice 2-3 K)
+# T-GC A-703 Table 18: machine tool with vibration or impact, 2.5 to 7 (lower bound)
+NUT_STATIC_SAFETY = 2.5
 WEIBULL_NUT = 10.0 / 9.0  # H-BS F 3.12
-WEIBULL_IBC = 1.11       # IBC eq. 2.39
+WEIBULL_IBC = 1.11  # IBC eq. 2.39
 
 # conventions where the vendor's procedure and axisopt's differ on purpose (docs/validation.md)
 CONVENTIONS = {
@@ -49,12 +50,47 @@ CONVENTIONS = {
 
 
 UNITS = {
-    "": 1.0, "-": 1.0, "mm": 1e-3, "m": 1.0, "um": 1e-6, "N": 1.0, "kN": 1e3, "kg": 1.0, "g": 1e-3,
-    "h": 3600.0, "s": 1.0, "min": 60.0, "ms": 1e-3, "m/min": 1 / 60, "m/s": 1.0, "mm/s": 1e-3,
-    "m/s^2": 1.0, "m/s2": 1.0, "m/s^3": 1.0, "N/um": 1e6, "N/m": 1.0, "K": 1.0, "deg": 1.0, "rpm": 1 / 60,
-    "N.m": 1.0, "Nm": 1.0, "kg.cm^2": 1e-4, "kg.m^2": 1.0, "mm.rpm": 1.0, "km": 1e3, "EUR": 1.0, "W": 1.0,
-    "N.m/rad": 1.0, "N.s/m": 1.0, "kg/m": 1.0, "EUR/m": 1.0, "mm^2/s": 1e-6, "W/(m^2.K)": 1.0,
-    "%": 0.01, "arcmin": math.pi / 10800, "N.m/arcmin": 10800 / math.pi,
+    "": 1.0,
+    "-": 1.0,
+    "mm": 1e-3,
+    "m": 1.0,
+    "um": 1e-6,
+    "N": 1.0,
+    "kN": 1e3,
+    "kg": 1.0,
+    "g": 1e-3,
+    "h": 3600.0,
+    "s": 1.0,
+    "min": 60.0,
+    "ms": 1e-3,
+    "m/min": 1 / 60,
+    "m/s": 1.0,
+    "mm/s": 1e-3,
+    "m/s^2": 1.0,
+    "m/s2": 1.0,
+    "m/s^3": 1.0,
+    "N/um": 1e6,
+    "N/m": 1.0,
+    "K": 1.0,
+    "deg": 1.0,
+    "rpm": 1 / 60,
+    "N.m": 1.0,
+    "Nm": 1.0,
+    "kg.cm^2": 1e-4,
+    "kg.m^2": 1.0,
+    "mm.rpm": 1.0,
+    "km": 1e3,
+    "EUR": 1.0,
+    "W": 1.0,
+    "N.m/rad": 1.0,
+    "N.s/m": 1.0,
+    "kg/m": 1.0,
+    "EUR/m": 1.0,
+    "mm^2/s": 1e-6,
+    "W/(m^2.K)": 1.0,
+    "%": 0.01,
+    "arcmin": math.pi / 10800,
+    "N.m/arcmin": 10800 / math.pi,
 }
 BECKHOFF_COMMISSIONING = "https://infosys.beckhoff.com/content/1033/ag2300_ba/8712251019.html"
 
@@ -69,43 +105,44 @@ def quantity(value) -> float:
     return float(m.group(1)) * UNITS[m.group(2)]
 
 
-
 @dataclass
 class Row:
     check: str
     unit: str
-    vendor: float          # the vendor's value (capacity or the quantity itself)
-    limit: float | None    # what the vendor's criterion compares it with
-    margin: float | None   # vendor value / limit (>= 1 passes), or limit / value for "needed" quantities
+    vendor: float  # the vendor's value (capacity or the quantity itself)
+    limit: float | None  # what the vendor's criterion compares it with
+    # vendor value / limit (>= 1 passes), or limit / value for "needed" quantities
+    margin: float | None
     axisopt: float | None  # axisopt's value of the same quantity
     axis_margin: float | None
-    kind: str              # AGREE / DIFF / CONV / INFO
+    kind: str  # AGREE / DIFF / CONV / INFO
     source: str
     note: str = ""
-    same_basis: float | None = None  # the vendor's procedure on axisopt's stated basis (its fw), compared instead
+    # the vendor's procedure on axisopt's stated basis (its fw), compared instead
+    same_basis: float | None = None
 
     @property
     def passes(self) -> bool:
         return bool(self.margin is None or self.margin >= 1.0 - 1e-9)
 
 
-
 @dataclass
 class Phase:
-    dist: float    # travel [m] (>= 0)
-    time: float    # [s]
-    speed: float   # mean table speed in the phase [m/s]
-    acc: float     # table acceleration [m/s^2], signed
-    sign: int      # direction of motion (+1, -1, 0 at a dwell)
-    proc: float    # process (feed) force against the motion [N] (>= 0)
-    load: float    # axial force on the nut [N], signed, + along the axis (up on a vertical axis)
+    dist: float  # travel [m] (>= 0)
+    time: float  # [s]
+    speed: float  # mean table speed in the phase [m/s]
+    acc: float  # table acceleration [m/s^2], signed
+    sign: int  # direction of motion (+1, -1, 0 at a dwell)
+    proc: float  # process (feed) force against the motion [N] (>= 0)
+    load: float  # axial force on the nut [N], signed, + along the axis (up on a vertical axis)
 
 
 def move_phases(d, v, a, proc, moving, friction, weight):
     """A rest-to-rest move (trapezoidal profile, THK A-722) as accelerate / constant / decelerate phases with the
     nut load of each (T-GC A-725, A-739: Fa = m a + mu m g + f + process force, + m g vertical)."""
     s = 1 if d > 0 else -1
-    weight = weight(s) if callable(weight) else weight  # a counterbalanced head: the net weight by direction
+    # a counterbalanced head: the net weight by direction
+    weight = weight(s) if callable(weight) else weight
     d = abs(d)
     v = min(v, math.sqrt(a * d)) if a > 0 else v
     ta = v / a if a > 0 else 0.0
@@ -113,19 +150,26 @@ def move_phases(d, v, a, proc, moving, friction, weight):
     out = []
     for acc, dist, t in ((s * a, da, ta), (0.0, d - 2 * da, (d - 2 * da) / v), (-s * a, da, ta)):
         if t > 0:
-            out.append(Phase(dist, t, dist / t, acc, s, proc, moving * acc + s * (friction + proc) + weight))
+            out.append(
+                Phase(
+                    dist, t, dist / t, acc, s, proc, moving * acc + s * (friction + proc) + weight
+                )
+            )
     return out
 
 
 def duty_phases(ax, moving, friction, weight):
     """The duty cycle's phases (axis.duty_cycle), or, without one, the design's stated mean axial load with
     friction each way over the stroke (what the design says the nut sees on average).  Returns (phases, given)."""
-    w = weight if callable(weight) else (lambda _s: weight)  # net weight by direction (+1 up, -1 down, 0 rest)
+    # net weight by direction (+1 up, -1 down, 0 rest)
+    w = weight if callable(weight) else (lambda _s: weight)
     if not ax.duty:
         f = ax.mean_load + friction
         v = ax.mean_speed
-        return [Phase(ax.stroke, ax.stroke / v, v, 0.0, 1, ax.mean_load, f + w(1)),
-                Phase(ax.stroke, ax.stroke / v, v, 0.0, -1, ax.mean_load, -f + w(-1))], False
+        return [
+            Phase(ax.stroke, ax.stroke / v, v, 0.0, 1, ax.mean_load, f + w(1)),
+            Phase(ax.stroke, ax.stroke / v, v, 0.0, -1, ax.mean_load, -f + w(-1)),
+        ], False
     out = []
     for step in ax.duty:
         if "dwell" in step:
@@ -134,15 +178,17 @@ def duty_phases(ax, moving, friction, weight):
             continue
         v = quantity(step.get("speed", ax.v_max))
         a = quantity(step.get("acceleration", ax.a_max))
-        force = quantity(step.get("force", 0.0)) * getattr(ax, "force_share", 1.0)  # a twin drive's side: its share
+        # a twin drive's side: its share
+        force = quantity(step.get("force", 0.0)) * getattr(ax, "force_share", 1.0)
         out += move_phases(quantity(step["move"]), v, a, force, moving, friction, w)
     return out, True
 
 
 def default_drive_phases(ax, moving, friction, weight):
     """axisopt's documented default duty for the drive: the rapid move over the stroke and back, no dwell."""
-    return (move_phases(ax.stroke, ax.v_max, ax.a_max, 0.0, moving, friction, weight)
-            + move_phases(-ax.stroke, ax.v_max, ax.a_max, 0.0, moving, friction, weight))
+    return move_phases(ax.stroke, ax.v_max, ax.a_max, 0.0, moving, friction, weight) + move_phases(
+        -ax.stroke, ax.v_max, ax.a_max, 0.0, moving, friction, weight
+    )
 
 
 def mean_speed_rpm(phases, lead_mm):
@@ -175,7 +221,12 @@ def dn_check(vendor, d0, d1, dw, n_max, dn_limit):
     Returns (limit, value, source, note) in mm.rpm."""
     if vendor == "THK":
         d = d1 + dw
-        return 70000.0, d * n_max, "T-GC A-697 eq. 11: D n <= 70 000", f"D = d1 + Dw = {d:.1f} mm (estimate)"
+        return (
+            70000.0,
+            d * n_max,
+            "T-GC A-697 eq. 11: D n <= 70 000",
+            f"D = d1 + Dw = {d:.1f} mm (estimate)",
+        )
     return dn_limit, d0 * n_max, "H-BS F 3.29: d_s n_max <= catalog DN limit", ""
 
 
@@ -185,7 +236,10 @@ def buckling_load(vendor, d1, la):
     THK T-GC A-694 eq. 6 (0.5 included): P1 = eta_2 d1^4 / l_a^2 * 1e4, eta_2 = 20 (fixed-fixed)."""
     if vendor == "HIWIN":
         return 0.5 * 4.072e5 * d1**4 / la**2, "H-BS F 3.25/3.26 (f_k 1.0, 0.5 safety)"
-    return 20.0 * d1**4 / la**2 * 1e4, "T-GC A-694 eq. 6 (eta_2 20: nut-bearing section fixed-fixed, A-726)"
+    return (
+        20.0 * d1**4 / la**2 * 1e4,
+        "T-GC A-694 eq. 6 (eta_2 20: nut-bearing section fixed-fixed, A-726)",
+    )
 
 
 def permissible_tension(d1):
@@ -236,31 +290,57 @@ def nut_life_h(c_dyn, preload, phases, fw, nm):
     if preload > 0:
         lives = []
         for k in (0, 1):
-            fbm = (sum((preloaded_halves(preload, p.load)[k] * fw) ** 3 * p.dist for p in moving) / total) ** (1 / 3)
+            fbm = (
+                sum((preloaded_halves(preload, p.load)[k] * fw) ** 3 * p.dist for p in moving)
+                / total
+            ) ** (1 / 3)
             lives.append((c_dyn / fbm) ** 3 * 1e6)
-        rev = sum(life ** -WEIBULL_NUT for life in lives) ** (-1 / WEIBULL_NUT)
+        rev = sum(life**-WEIBULL_NUT for life in lives) ** (-1 / WEIBULL_NUT)
         return rev / (60 * nm), "H-BS F 3.7-3.13 (both halves, Weibull 10/9)"
-    fm = max((sum(max(s * p.load, 0.0) ** 3 * p.dist for p in moving) / total) ** (1 / 3) for s in (1, -1))
-    return (c_dyn / (fw * fm)) ** 3 * 1e6 / (60 * nm), "T-GC A-704..A-706 eqs. 27, 28, 30 (greater direction)"
+    fm = max(
+        (sum(max(s * p.load, 0.0) ** 3 * p.dist for p in moving) / total) ** (1 / 3)
+        for s in (1, -1)
+    )
+    return (c_dyn / (fw * fm)) ** 3 * 1e6 / (
+        60 * nm
+    ), "T-GC A-704..A-706 eqs. 27, 28, 30 (greater direction)"
 
 
-ROWS = {"DB": (1, 1), "DF": (1, 1), "DBD": (2, 1), "DFD": (2, 1), "DBB": (2, 2), "DFF": (2, 2), "DBT": (3, 1),
-        "DFT": (3, 1)}
-# IBC TI-I-5010.2/E Table 2.2 (eqs. 2.8-2.31): per single bearing, (bearings in the load direction, opposite):
-# unloading at X Fv; until then A = a0 Fv + a1 F (each loaded bearing), B = b0 Fv - b1 F (each opposite one);
+ROWS = {
+    "DB": (1, 1),
+    "DF": (1, 1),
+    "DBD": (2, 1),
+    "DFD": (2, 1),
+    "DBB": (2, 2),
+    "DFF": (2, 2),
+    "DBT": (3, 1),
+    "DFT": (3, 1),
+}
+# IBC TI-I-5010.2/E Table 2.2 (eqs. 2.8-2.31): per single bearing, (bearings in the load direction,
+# opposite):
+# unloading at X Fv; until then A = a0 Fv + a1 F (each loaded bearing), B = b0 Fv - b1 F (each
+# opposite one);
 # after: A = after F, B = 0
-IBC_SPLIT = {(1, 1): (2.83, 1.00, 0.67, 1.00, 0.33, 1.0), (2, 1): (5.66, 0.84, 0.47, 1.36, 0.24, 0.617),
-             (1, 2): (2.83, 1.36, 0.52, 0.84, 0.30, 1.0), (2, 2): (5.66, 0.84, 0.40, 0.84, 0.22, 0.617),
-             (3, 1): (8.49, 0.73, 0.38, 1.57, 0.18, 0.463),
-             # the single of 3:1 loaded is not a row of Table 2.2: this checker's line through its end points,
-             # the single's 1.57 Fv at no load and the unloading at 2.83 Fv (X = 2.83 x the bearings loaded,
-             # as every row of the table), the opposite three's 0.73 Fv (the 3:1 row's A) falling to 0 there
-             (1, 3): (2.83, 1.57, 0.445, 0.73, 0.258, 1.0)}
+IBC_SPLIT = {
+    (1, 1): (2.83, 1.00, 0.67, 1.00, 0.33, 1.0),
+    (2, 1): (5.66, 0.84, 0.47, 1.36, 0.24, 0.617),
+    (1, 2): (2.83, 1.36, 0.52, 0.84, 0.30, 1.0),
+    (2, 2): (5.66, 0.84, 0.40, 0.84, 0.22, 0.617),
+    (3, 1): (8.49, 0.73, 0.38, 1.57, 0.18, 0.463),
+    # the single of 3:1 loaded is not a row of Table 2.2: this checker's line through its end
+    # points,
+    # the single's 1.57 Fv at no load and the unloading at 2.83 Fv (X = 2.83 x the bearings loaded,
+    # as every row of the table), the opposite three's 0.73 Fv (the 3:1 row's A) falling to 0 there
+    (1, 3): (2.83, 1.57, 0.445, 0.73, 0.258, 1.0),
+}
 
 
-# the preload force the set's catalog value names (the axial force across the set at no load) in units of IBC's
-# Fv: the side of the set that carries it at Fae = 0 is 1 bearing x 1.0 Fv (DB/DF), the single bearing of a 2:1
-# set 1.36 Fv (IBC eq. 2.11/2.13), 2 bearings x 0.84 Fv (2:2, eq. 2.22/2.23).  NSK-SP p. 168 prints for 25TAC62B
+# the preload force the set's catalog value names (the axial force across the set at no load) in
+# units of IBC's
+# Fv: the side of the set that carries it at Fae = 0 is 1 bearing x 1.0 Fv (DB/DF), the single
+# bearing of a 2:1
+# set 1.36 Fv (IBC eq. 2.11/2.13), 2 bearings x 0.84 Fv (2:2, eq. 2.22/2.23).  NSK-SP p. 168 prints
+# for 25TAC62B
 # DF 3 150 N, DFD 4 300 N (4 300 / 1.36 = 3 162 N, the DF value: the reading holds), DFF 6 250 N.
 IBC_SET_PRELOAD = {(1, 1): 1.0, (2, 1): 1.36, (2, 2): 1.68, (3, 1): 1.57}
 
@@ -274,18 +354,27 @@ def bearing_lift_off(brg, f_max, pretension):
     the largest axial force alone on the others (a warm screw loses its pretension); the set mounted the way
     round that gives the larger margin.  Returns (available, needed, margin, note) [N]."""
     n1, n2 = ROWS[brg["arrangement"]]
-    # the set's preload over the DB pair's for the unloading point: NSK p. 168 prints a quadruplex (2:2) at
-    # 1.98 x its duplex, a triplex (2:1) at 1.37 x (IBC's single bearing of 2:1 / 3:1: 1.36 / 1.57 Fv); the
-    # 1.68 of IBC_SET_PRELOAD is the 2:2 set's per-bearing load factor (2 x 0.84) the life reads, not its preload
+    # the set's preload over the DB pair's for the unloading point: NSK p. 168 prints a quadruplex
+    # (2:2) at
+    # 1.98 x its duplex, a triplex (2:1) at 1.37 x (IBC's single bearing of 2:1 / 3:1: 1.36 / 1.57
+    # Fv); the
+    # 1.68 of IBC_SET_PRELOAD is the 2:2 set's per-bearing load factor (2 x 0.84) the life reads,
+    # not its preload
     fv = brg["preload"] / LIFT_SET_PRELOAD[(max(n1, n2), min(n1, n2))]
     best = None
     for a, b in ((n1, n2), (n2, n1)):  # a: rows facing the pretension
         push, back = IBC_SPLIT[(a, b)][0] * fv, IBC_SPLIT[(b, a)][0] * fv
         m = min(push / (f_max + pretension), back / f_max)
-        cand = (push, f_max + pretension, m) if push / (f_max + pretension) <= back / f_max else (back, f_max, m)
+        cand = (
+            (push, f_max + pretension, m)
+            if push / (f_max + pretension) <= back / f_max
+            else (back, f_max, m)
+        )
         if best is None or m > best[2]:
-            best = cand + (f"{a} rows face the pretension: X {IBC_SPLIT[(a, b)][0]} / {IBC_SPLIT[(b, a)][0]}"
-                           f" x Fv {fv:.0f} N",)
+            best = cand + (
+                f"{a} rows face the pretension: X {IBC_SPLIT[(a, b)][0]} / {IBC_SPLIT[(b, a)][0]}"
+                f" x Fv {fv:.0f} N",
+            )
     return best
 
 
@@ -310,7 +399,7 @@ def bearing_life_h(brg, phases, pretension, nm, fw=1.0):
     moving = [p for p in phases if p.dist > 0]
     total = sum(p.dist for p in moving)
     worst = math.inf
-    for pre_sign in ((1, -1) if pretension else (1,)):
+    for pre_sign in (1, -1) if pretension else (1,):
         best = 0.0
         for orient in (1, -1):
             np_, nm_ = (n_plus, n_minus) if orient == 1 else (n_minus, n_plus)
@@ -326,14 +415,17 @@ def bearing_life_h(brg, phases, pretension, nm, fw=1.0):
             lives = []
             for face, count in ((1, np_), (-1, nm_)):
                 pm = (cubes[face] / total) ** (1 / 3)
-                lives += [(c_single / pm) ** 3 * 1e6 if pm > 0 else math.inf] * count  # unloaded rows
-            rev = sum(life ** -WEIBULL_IBC for life in lives) ** (-1 / WEIBULL_IBC)
+                # unloaded rows
+                lives += [(c_single / pm) ** 3 * 1e6 if pm > 0 else math.inf] * count
+            rev = sum(life**-WEIBULL_IBC for life in lives) ** (-1 / WEIBULL_IBC)
             best = max(best, rev / (60 * nm))
         worst = min(worst, best)
     angle = brg.get("contact_angle") or 60.0
-    note = (f"{brg['arrangement']}: {n_plus}/{n_minus} rows, Ca single {c_single / 1e3:.1f} kN, set preload "
-            f"{brg['preload']:.0f} N = IBC Fv {fv:.0f} N"
-            + ("" if angle >= 59 else f"; IBC's table is for 60 deg, this set {angle:.0f} deg"))
+    note = (
+        f"{brg['arrangement']}: {n_plus}/{n_minus} rows, Ca single {c_single / 1e3:.1f} kN, set preload "
+        f"{brg['preload']:.0f} N = IBC Fv {fv:.0f} N"
+        + ("" if angle >= 59 else f"; IBC's table is for 60 deg, this set {angle:.0f} deg")
+    )
     return worst, "IBC Table 2.2, eqs. 2.4, 2.34, 2.37, 2.39", note
 
 
@@ -370,7 +462,8 @@ def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
     best = 0.0
     for a, b in ((n1, n2), (n2, n1)):  # a: the rows facing the pretension (+)
         ends = []
-        # with a pretension (both ends held) the two ends' sets see the cycle in opposite senses: the worse
+        # with a pretension (both ends held) the two ends' sets see the cycle in opposite senses:
+        # the worse
         # governs; one set alone is turned the way that lives longer
         for sign in (1, -1):
             cubes = [0.0, 0.0]
@@ -382,13 +475,25 @@ def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
                     qb, qa = hertz_group_loads(brg["preload"], b, a, -f)
                 cubes[0] += (qa * fw) ** 3 * p.dist
                 cubes[1] += (qb * fw) ** 3 * p.dist
-            lives = [(rating[n] / (c / total) ** (1 / 3)) ** 3 * 1e6 for n, c in zip((a, b), cubes) if c > 0]
-            ends.append(sum(life ** -1.1 for life in lives) ** (-1 / 1.1) / (60 * nm))
+            lives = [
+                (rating[n] / (c / total) ** (1 / 3)) ** 3 * 1e6
+                for n, c in zip((a, b), cubes)
+                if c > 0
+            ]
+            ends.append(sum(life**-1.1 for life in lives) ** (-1 / 1.1) / (60 * nm))
         best = max(best, min(ends) if pretension else max(ends))
-    return best, "NSK-SP pp. 110-111 (Ca by rows loaded), Hertz load split", (
-        f"{brg['arrangement']}: groups {n1}/{n2}, Ca {rating[n1] / 1e3:.1f} / {rating[n2] / 1e3:.1f} kN; "
-        + ("the worse end's set (the cycle against the pretension one way at each end)" if pretension
-           else "the set turned the way that lives longer"))
+    return (
+        best,
+        "NSK-SP pp. 110-111 (Ca by rows loaded), Hertz load split",
+        (
+            f"{brg['arrangement']}: groups {n1}/{n2}, Ca {rating[n1] / 1e3:.1f} / {rating[n2] / 1e3:.1f} kN; "
+            + (
+                "the worse end's set (the cycle against the pretension one way at each end)"
+                if pretension
+                else "the set turned the way that lives longer"
+            )
+        ),
+    )
 
 
 def bearing_permissible_load(brg):
@@ -411,13 +516,17 @@ def block_reactions(ax, forces):
     (force (x, y, z) [N], point (x, y, z) [m]); x along the axis, z up from the rail mounting plane; the screw
     takes the axial force at the origin (an estimate: screw axis at the rail plane under the table centre)."""
     per_rail = max(ax.blocks // 2, 1)
-    xs = np.linspace(-ax.block_spacing / 2, ax.block_spacing / 2, per_rail) if per_rail > 1 else np.zeros(1)
+    xs = (
+        np.linspace(-ax.block_spacing / 2, ax.block_spacing / 2, per_rail)
+        if per_rail > 1
+        else np.zeros(1)
+    )
     pos = [(x, y) for y in (-ax.rail_spacing / 2, ax.rail_spacing / 2) for x in xs]
     n = len(pos)
     a = np.zeros((5, 2 * n))
     for i, (x, y) in enumerate(pos):
-        a[:, i] = (1, 0, y, -x, 0)          # vertical reaction: sum, moment about x, about y
-        a[:, n + i] = (0, 1, 0, 0, x)       # lateral reaction: sum, moment about z
+        a[:, i] = (1, 0, y, -x, 0)  # vertical reaction: sum, moment about x, about y
+        a[:, n + i] = (0, 1, 0, 0, x)  # lateral reaction: sum, moment about z
     total = np.zeros(3)
     moment = np.zeros(3)
     for f, p in forces:
@@ -426,7 +535,7 @@ def block_reactions(ax, forces):
         moment += np.cross(p, f)
     b = -np.array([total[2], total[1], moment[0], moment[1], moment[2]])
     r = np.linalg.lstsq(a, b, rcond=None)[0]
-    return np.abs(r[:n]) + np.abs(r[n:])     # P_E = |P_R| + |P_T| (T-GC A-16, H-LG 1-4)
+    return np.abs(r[:n]) + np.abs(r[n:])  # P_E = |P_R| + |P_T| (T-GC A-16, H-LG 1-4)
 
 
 def table_forces(ax, moving, acc, feed, scale, sign_cross=1.0):
@@ -435,8 +544,11 @@ def table_forces(ax, moving, acc, feed, scale, sign_cross=1.0):
     gvec = (-G, 0, 0) if ax.vertical else (0, -G, 0) if ax.wall else (0, 0, -G)
     cg = (0.0, ax.y_cg, ax.h_cg)
     tool = (0.0, ax.y_tool, ax.h_tool)
-    return [(tuple(moving * g for g in gvec), cg), ((-moving * acc, 0, 0), cg),
-            ((feed, sign_cross * ax.cross * scale, -ax.normal * scale), tool)]
+    return [
+        (tuple(moving * g for g in gvec), cg),
+        ((-moving * acc, 0, 0), cg),
+        ((feed, sign_cross * ax.cross * scale, -ax.normal * scale), tool),
+    ]
 
 
 def block_loads_max(ax, moving, a_peak):
@@ -445,13 +557,24 @@ def block_loads_max(ax, moving, a_peak):
     for fs in (1, -1):
         for ac in (1, -1):
             for cs in (1, -1):
-                worst = max(worst, block_reactions(ax, table_forces(ax, moving, ac * a_peak, fs * ax.axial_load,
-                                                                    1.0, cs)).max())
+                worst = max(
+                    worst,
+                    block_reactions(
+                        ax, table_forces(ax, moving, ac * a_peak, fs * ax.axial_load, 1.0, cs)
+                    ).max(),
+                )
     return worst
 
 
-GUIDE_BASIS = {("HIWIN", "ball"): 50, ("HIWIN", "roller"): 100, ("THK", "ball"): 50, ("THK", "roller"): 100,
-               ("IKO", "ball"): 50, ("IKO", "roller"): 50, ("NBS", "ball"): 50}
+GUIDE_BASIS = {
+    ("HIWIN", "ball"): 50,
+    ("HIWIN", "roller"): 100,
+    ("THK", "ball"): 50,
+    ("THK", "roller"): 100,
+    ("IKO", "ball"): 50,
+    ("IKO", "roller"): 50,
+    ("NBS", "ball"): 50,
+}
 
 
 def guide_rating_life(c, p, kind, basis):
@@ -465,8 +588,11 @@ def guide_static_safety(vendor, kind):
     HIWIN H-LG Table 1-1 3.0; THK T-GC A-9 Table 1 (normal motion, impact) 2.5; IKO Table 2.1/2.2 (vibration
     and shock) ball 3, roller 4; others 3."""
     fs = {"HIWIN": 3.0, "THK": 2.5, "IKO": 3.0 if kind == "ball" else 4.0}.get(vendor, 3.0)
-    return fs, {"HIWIN": "H-LG Table 1-1", "THK": "T-GC A-9 Table 1", "IKO": "IKO CAT-1578E Tables 2.1/2.2"}.get(
-        vendor, "H-LG Table 1-1 (no vendor table)") + f": f_S >= {fs}"
+    return fs, {
+        "HIWIN": "H-LG Table 1-1",
+        "THK": "T-GC A-9 Table 1",
+        "IKO": "IKO CAT-1578E Tables 2.1/2.2",
+    }.get(vendor, "H-LG Table 1-1 (no vendor table)") + f": f_S >= {fs}"
 
 
 def guide_life_km(guide, ax, phases, cycle_given, moving, fw_given=None):
@@ -477,8 +603,13 @@ def guide_life_km(guide, ax, phases, cycle_given, moving, fw_given=None):
     operation 1.2).  Returns (km, source, note)."""
     kind, vendor = guide["type"], guide["vendor"]
     basis = GUIDE_BASIS.get((vendor, kind), 50)
-    fw = 1.2 if vendor == "IKO" else (1.0 if ax.v_max <= 0.25 else 1.2 if ax.v_max <= 1.0 else 1.5
-                                      if ax.v_max <= 2.0 else 2.0)
+    fw = (
+        1.2
+        if vendor == "IKO"
+        else (
+            1.0 if ax.v_max <= 0.25 else 1.2 if ax.v_max <= 1.0 else 1.5 if ax.v_max <= 2.0 else 2.0
+        )
+    )
     if ax.load_factor is not None and ax.load_factor > fw:
         fw = ax.load_factor
     fw = fw if fw_given is None else fw_given
@@ -490,13 +621,17 @@ def guide_life_km(guide, ax, phases, cycle_given, moving, fw_given=None):
         cubes = loads**3 * p.dist if cubes is None else cubes + loads**3 * p.dist
     pm_ext = (cubes.max() / sum(p.dist for p in moving_phases)) ** (1 / 3)
     p0 = guide.get("preload") or 0.0
-    # preload (T-GC A-112: "calculate the service life while taking into account the magnitude of the preload";
-    # its effect lasts to about 2.8 x the preload): the block's balls as a preloaded pair (H-BS F 3.7 form)
+    # preload (T-GC A-112: "calculate the service life while taking into account the magnitude of
+    # the preload";
+    # its effect lasts to about 2.8 x the preload): the block's balls as a preloaded pair (H-BS F
+    # 3.7 form)
     pm = preloaded_halves(p0, pm_ext)[0] if p0 > 0 else pm_ext
     km = guide_rating_life(guide["dynamic_load_rating"], fw * pm, kind, basis)
-    note = (f"basis {basis} km ({vendor} {kind}; csv column {guide.get('rating_distance', 0) / 1e3:.0f} km), "
-            f"fW {fw}, Pm {pm_ext:.0f} N, with preload {p0:.0f} N: {pm:.0f} N"
-            + ("" if cycle_given else "; no cycle: feed at mean_axial_load"))
+    note = (
+        f"basis {basis} km ({vendor} {kind}; csv column {guide.get('rating_distance', 0) / 1e3:.0f} km), "
+        f"fW {fw}, Pm {pm_ext:.0f} N, with preload {p0:.0f} N: {pm:.0f} N"
+        + ("" if cycle_given else "; no cycle: feed at mean_axial_load")
+    )
     return km, "T-GC A-10/A-32, H-LG eq. 1.4/1.5, IKO III-7", note
 
 
@@ -526,8 +661,12 @@ def feed_rigidity(ax, screw, nut, brg, preload, f_max):
             paths.append(1 / (1000 * (span - x) / ae + 1 / kb + 1 / kh))
         k = 1 / (1 / sum(paths) + 1 / kn + 1 / kbr)
         worst = min(worst, k)
-    missing = [n for n, v in (("bearing housing", ax.housing_k), ("nut bracket", ax.bracket_k)) if not v]
-    note = f"K_N {kn:.0f}, K_B {kb:.0f} N/um" + (f"; K_H of {', '.join(missing)} not given: rigid" if missing else "")
+    missing = [
+        n for n, v in (("bearing housing", ax.housing_k), ("nut bracket", ax.bracket_k)) if not v
+    ]
+    note = f"K_N {kn:.0f}, K_B {kb:.0f} N/um" + (
+        f"; K_H of {', '.join(missing)} not given: rigid" if missing else ""
+    )
     return worst, "T-GC A-707 eqs. 32-34, A-710", note
 
 
@@ -550,17 +689,34 @@ def holding_torque(weight, friction, lead):
     return max(weight - friction, 0.0) * lead / (2 * math.pi * ETA_THK)
 
 
-def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, phases, preload, n_sets, ev,
-               cycle_given, red=None, unit_inertia=None):
+def drive_rows(
+    ax,
+    screw,
+    nut,
+    brg,
+    motor,
+    coupling,
+    moving,
+    friction,
+    weight,
+    phases,
+    preload,
+    n_sets,
+    ev,
+    cycle_given,
+    red=None,
+    unit_inertia=None,
+):
     """Inertia ratio (T-GC A-718 with J = m D^2 / 8 of the nominal diameter, FANUC/HIWIN F 3.20), RMS torque
     (T-GC A-734/A-746: T_rms = sqrt(sum T_i^2 t_i / sum t_i) <= rated) and the holding torque at a stop on a
     vertical axis (T-GC A-745: T_s = (m g - f) P_h / (2 pi eta)).  A reduction row ``red`` (catalogs/
     reductions.csv) gives i, eta_G and its input inertia (T-GC A-717..A-720 with A = 1/i: J_load / i^2 + J_G on
     the motor, T_motor = T_out / (i eta_G)) and its rows (:func:`reduction_rows`); a rotating-nut unit's printed
     inertia ``unit_inertia`` [kg.m^2] (T-GC B-721) takes the place of the standing screw's."""
-    import vendor_rules as vr  # the per-vendor servo and gearbox rules (imports this module: here, not on top)
+    # the per-vendor servo and gearbox rules (imports this module: here, not on top)
+    import vendor_rules as vr
 
-    lead = screw["lead"]                             # [m]
+    lead = screw["lead"]  # [m]
     d0, d1 = screw["nominal_diameter"], screw["root_diameter"]
     j_screw = screw_inertia(d0, ax.span) if unit_inertia is None else unit_inertia
     j_table = moving * (lead / (2 * math.pi)) ** 2
@@ -568,22 +724,49 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
     i = ax.ratio
     j_load = (j_table + j_screw + j_coup) / i**2 + ax.red_inertia
     brake = ax.brake == "yes" or (ax.brake == "auto" and ax.vertical)
-    j_rotor = motor["rotor_inertia_brake"] if brake and motor.get("rotor_inertia_brake") else motor["rotor_inertia"]
+    j_rotor = (
+        motor["rotor_inertia_brake"]
+        if brake and motor.get("rotor_inertia_brake")
+        else motor["rotor_inertia"]
+    )
     ratio = j_load / j_rotor
     drive = ev.get("drive", {})
-    rows = [Row("inertia ratio load/rotor", "-", ratio, ax.max_inertia_ratio, ax.max_inertia_ratio / ratio,
-                drive.get("inertia_ratio"), None, "", "T-GC A-718 (J = m D^2/8, D outer), H-BS F 3.20",
-                (f"screw {j_screw * 1e4:.1f} kg.cm^2 (nominal {d0 * 1e3:.0f} mm over the span {ax.span * 1e3:.0f} mm,"
-                 " journals not known)" if unit_inertia is None else
-                 f"rotating-nut unit {j_screw * 1e4:.1f} kg.cm^2 (THK's printed J, T-GC B-721), screw standing")
-                + (f"; reduction i {i:g}, its input J {ax.red_inertia * 1e4:.2f} kg.cm^2 (A-718, A = 1/i)"
-                   if red else "") + "; limit axis.max_inertia_ratio")]
-    # ball centre diameter: d1 + ball diameter, or, where the row prints no ball, THK's D from its DN rule (A-697)
-    d_pcd = (d1 + screw["ball_diameter"]) * 1e3 if screw.get("ball_diameter") else \
-        nut_rotation_speed_limit(d0 * 1e3, screw["dn_limit"])[1]
+    rows = [
+        Row(
+            "inertia ratio load/rotor",
+            "-",
+            ratio,
+            ax.max_inertia_ratio,
+            ax.max_inertia_ratio / ratio,
+            drive.get("inertia_ratio"),
+            None,
+            "",
+            "T-GC A-718 (J = m D^2/8, D outer), H-BS F 3.20",
+            (
+                f"screw {j_screw * 1e4:.1f} kg.cm^2 (nominal {d0 * 1e3:.0f} mm over the span {ax.span * 1e3:.0f} mm,"
+                " journals not known)"
+                if unit_inertia is None
+                else f"rotating-nut unit {j_screw * 1e4:.1f} kg.cm^2 (THK's printed J, T-GC B-721), screw standing"
+            )
+            + (
+                f"; reduction i {i:g}, its input J {ax.red_inertia * 1e4:.2f} kg.cm^2 (A-718, A = 1/i)"
+                if red
+                else ""
+            )
+            + "; limit axis.max_inertia_ratio",
+        )
+    ]
+    # ball centre diameter: d1 + ball diameter, or, where the row prints no ball, THK's D from its
+    # DN rule (A-697)
+    d_pcd = (
+        (d1 + screw["ball_diameter"]) * 1e3
+        if screw.get("ball_diameter")
+        else nut_rotation_speed_limit(d0 * 1e3, screw["dn_limit"])[1]
+    )
     drag = preload_torque(preload, lead * 1e3, d_pcd) if nut["type"] == "double" else 0.0
     drag += n_sets * (brg.get("starting_torque") or 0.0)
-    w_rest = weight(0) if callable(weight) else weight  # a counterbalanced head: its net weight at rest
+    # a counterbalanced head: its net weight at rest
+    w_rest = weight(0) if callable(weight) else weight
     hold = holding_torque(w_rest, friction if ax.vertical else 0.0, lead) / (i * ax.red_eff)
     drv = phases if cycle_given else default_drive_phases(ax, moving, friction, weight)
     sq, tt, out_sq, out_peak = 0.0, 0.0, 0.0, 0.0
@@ -592,11 +775,12 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
             t = hold
             t_out = hold * i * ax.red_eff
         else:
-            f_ext = p.load - moving * p.acc                # friction, process force, weight
+            f_ext = p.load - moving * p.acc  # friction, process force, weight
             t_screw = f_ext * lead / (2 * math.pi * ETA_THK) + p.sign * drag
-            alpha = p.acc * 2 * math.pi / lead * i         # motor angular acceleration
+            alpha = p.acc * 2 * math.pi / lead * i  # motor angular acceleration
             t = t_screw / (i * ax.red_eff) + (j_load + j_rotor) * alpha
-            t_out = t_screw + (j_table + j_screw + j_coup) * alpha / i   # at the reduction's output (A-720)
+            # at the reduction's output (A-720)
+            t_out = t_screw + (j_table + j_screw + j_coup) * alpha / i
         out_sq += t_out * t_out * p.time
         out_peak = max(out_peak, abs(t_out))
         sq += t * t * p.time
@@ -604,30 +788,81 @@ def drive_rows(ax, screw, nut, brg, motor, coupling, moving, friction, weight, p
     trms = math.sqrt(sq / tt)
     rated = motor["rated_torque"]
     rms_f, _, rule = vr.servo_rule(motor["vendor"], getattr(ax, "rms_asked", None))
-    rows.append(Row("RMS torque", "N.m", trms, rms_f * rated, rms_f * rated / trms, drive.get("rms_torque_Nm"),
-                    None, "", f"T-GC A-734/A-746: T_rms (eta 0.9, preload torque A-688 eq. 5); limit: {rule}",
-                    ("the duty cycle" if cycle_given else "default: rapid over the stroke and back")
-                    + f"; trapezoidal moves; limit {rms_f:g} x rated {rated:.3g} N.m"))
+    rows.append(
+        Row(
+            "RMS torque",
+            "N.m",
+            trms,
+            rms_f * rated,
+            rms_f * rated / trms,
+            drive.get("rms_torque_Nm"),
+            None,
+            "",
+            f"T-GC A-734/A-746: T_rms (eta 0.9, preload torque A-688 eq. 5); limit: {rule}",
+            ("the duty cycle" if cycle_given else "default: rapid over the stroke and back")
+            + f"; trapezoidal moves; limit {rms_f:g} x rated {rated:.3g} N.m",
+        )
+    )
     if ax.vertical:
-        w_worst = max(abs(weight(1)), abs(weight(-1))) if callable(weight) else w_rest  # rising or lowering
-        rows.append(vr.unbalance_row(motor, w_worst, friction, lead, drag, ETA_THK, i, ax.red_eff,
-                                     drive.get("unbalance_torque_Nm"), rated))
+        # rising or lowering
+        w_worst = max(abs(weight(1)), abs(weight(-1))) if callable(weight) else w_rest
+        rows.append(
+            vr.unbalance_row(
+                motor,
+                w_worst,
+                friction,
+                lead,
+                drag,
+                ETA_THK,
+                i,
+                ax.red_eff,
+                drive.get("unbalance_torque_Nm"),
+                rated,
+            )
+        )
     if ax.vertical:
         cap = motor.get("brake_torque") if brake else rated
-        rows.append(Row("holding torque at a stop", "N.m", hold, cap, (cap / hold) if cap and hold else None,
-                        drive.get("holding_torque_Nm"), None, "", "T-GC A-745: T_s = (m g - f) P_h / (2 pi eta)",
-                        "f = guide friction credited; limit: " + ("brake torque" if brake else "rated torque")))
+        rows.append(
+            Row(
+                "holding torque at a stop",
+                "N.m",
+                hold,
+                cap,
+                (cap / hold) if cap and hold else None,
+                drive.get("holding_torque_Nm"),
+                None,
+                "",
+                "T-GC A-745: T_s = (m g - f) P_h / (2 pi eta)",
+                "f = guide friction credited; limit: "
+                + ("brake torque" if brake else "rated torque"),
+            )
+        )
     if red:
-        # the feed thrust at feed speed (axis.axial_load) and the mean thrust (axis.mean_axial_load) as steady
-        # output torques: the largest output torque is the larger of the cycle's and the thrust's, the continuous
+        # the feed thrust at feed speed (axis.axial_load) and the mean thrust (axis.mean_axial_load)
+        # as steady
+        # output torques: the largest output torque is the larger of the cycle's and the thrust's,
+        # the continuous
         # one the larger of the cycle's RMS and the mean thrust's (T-GC A-725/A-733, eta 0.9)
-        steady = [(f + friction + w_rest) * lead / (2 * math.pi * ETA_THK) + drag for f in (ax.axial_load,
-                                                                                           ax.mean_load)]
-        rows += reduction_rows(red, motor, max(out_peak, steady[0]), max(math.sqrt(out_sq / tt), steady[1]),
-                               ax.v_max / lead * 60 * i,
-                               ev.get("checks", {}))
-        rows.append(vr.emergency_row(red, motor, getattr(ax, "torque_limit", None),
-                                     ev.get("checks", {}).get("reduction_emergency_torque") or {}))
+        steady = [
+            (f + friction + w_rest) * lead / (2 * math.pi * ETA_THK) + drag
+            for f in (ax.axial_load, ax.mean_load)
+        ]
+        rows += reduction_rows(
+            red,
+            motor,
+            max(out_peak, steady[0]),
+            max(math.sqrt(out_sq / tt), steady[1]),
+            ax.v_max / lead * 60 * i,
+            ev.get("checks", {}),
+        )
+        rows.append(
+            vr.emergency_row(
+                red,
+                motor,
+                getattr(ax, "torque_limit", None),
+                ev.get("checks", {}).get("reduction_emergency_torque") or {},
+            )
+        )
     return rows
 
 
@@ -639,26 +874,64 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
     :func:`gearbox_current_limits`."""
     t2b, t2n, n1 = red["accel_torque"], red["rated_torque"], red["max_input_speed"] * 60
     src = f"Beckhoff AG2400 mechanical data ({red['id']})"
+
     def theirs(name):
         c = checks.get(name) or {}
         return c.get("available"), c.get("margin")
 
-    peak, rated = gearbox_current_limits(motor["peak_torque"], motor["rated_torque"], red["ratio"], t2b, t2n)
-    return [Row("reduction T2B / peak output torque", "N.m", t2b, t_out_peak, t2b / t_out_peak,
-                *theirs("reduction_accel_torque"), "", src + ": T2B, max. 1000 cycles/h",
-                "the larger of the cycle's (screw torque, eta 0.9, + load-side J x alpha, trapezoidal moves) and "
-                "the feed thrust's (axis.axial_load + friction)"),
-            Row("reduction T2N / RMS output torque", "N.m", t2n, t_out_rms, t2n / t_out_rms,
-                *theirs("reduction_rated_torque"), "", src + ": T2N nominal output torque",
-                "the larger of the drive cycle's RMS (the duty cycle, else the rapid over the stroke and back) and "
-                "the mean thrust's (axis.mean_axial_load + friction)"),
-            Row("reduction n1Max / motor speed", "rpm", n1, n_motor, n1 / n_motor,
-                *theirs("reduction_speed"), "", src + ": n1Max max. input speed"),
-            Row("reduction commissioning current limits", "%", 100 * peak, None, None, None, None, "INFO",
-                "Beckhoff AG2300 'Commissioning': limit peak (rated) current to T2B / (M_pmax i) (T2N / (M i)); "
-                + BECKHOFF_COMMISSIONING,
-                f"peak current limit {100 * peak:.0f} %, rated current limit {100 * rated:.0f} % "
-                "(rated torque in place of Beckhoff's M0)")]
+    peak, rated = gearbox_current_limits(
+        motor["peak_torque"], motor["rated_torque"], red["ratio"], t2b, t2n
+    )
+    return [
+        Row(
+            "reduction T2B / peak output torque",
+            "N.m",
+            t2b,
+            t_out_peak,
+            t2b / t_out_peak,
+            *theirs("reduction_accel_torque"),
+            "",
+            src + ": T2B, max. 1000 cycles/h",
+            "the larger of the cycle's (screw torque, eta 0.9, + load-side J x alpha, trapezoidal moves) and "
+            "the feed thrust's (axis.axial_load + friction)",
+        ),
+        Row(
+            "reduction T2N / RMS output torque",
+            "N.m",
+            t2n,
+            t_out_rms,
+            t2n / t_out_rms,
+            *theirs("reduction_rated_torque"),
+            "",
+            src + ": T2N nominal output torque",
+            "the larger of the drive cycle's RMS (the duty cycle, else the rapid over the stroke and back) and "
+            "the mean thrust's (axis.mean_axial_load + friction)",
+        ),
+        Row(
+            "reduction n1Max / motor speed",
+            "rpm",
+            n1,
+            n_motor,
+            n1 / n_motor,
+            *theirs("reduction_speed"),
+            "",
+            src + ": n1Max max. input speed",
+        ),
+        Row(
+            "reduction commissioning current limits",
+            "%",
+            100 * peak,
+            None,
+            None,
+            None,
+            None,
+            "INFO",
+            "Beckhoff AG2300 'Commissioning': limit peak (rated) current to T2B / (M_pmax i) (T2N / (M i)); "
+            + BECKHOFF_COMMISSIONING,
+            f"peak current limit {100 * peak:.0f} %, rated current limit {100 * rated:.0f} % "
+            "(rated torque in place of Beckhoff's M0)",
+        ),
+    ]
 
 
 def gearbox_current_limits(m_peak, m_rated, ratio, t2b, t2n):
@@ -685,7 +958,12 @@ def unit_bearing_life_h(ca, phases, fw, nm):
     return (ca / (fw * fm)) ** 3 * 1e6 / (60 * nm)
 
 
-SAG_K = {"fixed-free": 8.0, "fixed-supported": 185.0, "fixed-fixed": 384.0, "supported-supported": 384.0 / 5}
+SAG_K = {
+    "fixed-free": 8.0,
+    "fixed-supported": 185.0,
+    "fixed-fixed": 384.0,
+    "supported-supported": 384.0 / 5,
+}
 
 
 def screw_sag(mass_per_length, d1, span, mounting):
@@ -708,7 +986,11 @@ def counterbalance_weights(cb, head_weight):
     if kind == "counterweight":
         mc, eta = quantity(cb["mass"]), float(cb.get("efficiency", 0.95))
         chain = quantity(cb.get("chain_mass", 0.0))
-        net = {1: head_weight - mc * G * eta, -1: head_weight - mc * G / eta, 0: head_weight - mc * G}
+        net = {
+            1: head_weight - mc * G * eta,
+            -1: head_weight - mc * G / eta,
+            0: head_weight - mc * G,
+        }
         return (lambda s: net[s]), mc + chain
     f0 = quantity(cb["force"])
     f1 = quantity(cb["force_at_end"]) if "force_at_end" in cb else f0

@@ -30,12 +30,28 @@ from ..errors import InputError
 SHIPPED_DIR = Path(__file__).resolve().parent.parent.parent / "catalogs"
 UM = 1e-6
 PER_LENGTH = 0.300  # [m] the 300 mm of v_300 and of the C7-C10 travel error
-# a screw series not in screw_grades.csv (a user's or an inline screw): the precision grades of THK A-678 Table 3
+# a screw series not in screw_grades.csv (a user's or an inline screw): the precision grades of THK
+# A-678 Table 3
 PRECISION_GRADES = ("C0", "C1", "C2", "C3", "C5", "C7")
 
-_TOL_HEADER = ("grade", "length_over [mm]", "length_upto [mm]", "travel_deviation [um]", "variation [um]", "source")
-_GRADE_HEADER = ("grade", "variation_300 [um]", "variation_2pi [um]", "travel_error_300 [um]", "axial_play [um]",
-                 "price_factor [-]", "status", "source")
+_TOL_HEADER = (
+    "grade",
+    "length_over [mm]",
+    "length_upto [mm]",
+    "travel_deviation [um]",
+    "variation [um]",
+    "source",
+)
+_GRADE_HEADER = (
+    "grade",
+    "variation_300 [um]",
+    "variation_2pi [um]",
+    "travel_error_300 [um]",
+    "axial_play [um]",
+    "price_factor [-]",
+    "status",
+    "source",
+)
 _SERIES_HEADER = ("vendor", "series", "grades", "source")
 
 
@@ -47,7 +63,8 @@ class Grade:
     variation_300: float  # v_300 [m] (C0-C5)
     variation_2pi: float  # v_2pi [m] (C0-C5)
     travel_error_300: float  # e_300 [m] per 300 mm (C7-C10)
-    axial_play: float  # standard axial play of a single nut of the grade [m] (HIWIN; NaN: none listed)
+    # standard axial play of a single nut of the grade [m] (HIWIN; NaN: none listed)
+    axial_play: float
     price_factor: float  # on the screw shaft's price [-] (illustrative)
     bands: tuple  # ((length_over, length_upto, e_p, v_u) [m], ...) ascending (C0-C5)
 
@@ -114,7 +131,9 @@ class GradeTable:
         from ..physics.accuracy import required_error_per_300
 
         need = required_error_per_300(accuracy, travel)
-        ok = [n for n in self.names if (names is None or n in names) and self.error_per_300(n) <= need]
+        ok = [
+            n for n in self.names if (names is None or n in names) and self.error_per_300(n) <= need
+        ]
         return ok[-1] if ok else None
 
     def cheapest(self, names) -> str:
@@ -130,7 +149,9 @@ def _rows(path: Path, header: tuple) -> list:
 
         text = read_input(path, "catalog", what="catalog", encoding="utf-8-sig")
     except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read grade table ({exc.__class__.__name__})", source=src) from None
+        raise InputError(
+            f"cannot read grade table ({exc.__class__.__name__})", source=src
+        ) from None
     rows = list(csv.reader(io.StringIO(text, newline="")))
     if not rows or tuple(c.strip() for c in rows[0]) != header:
         raise InputError(f"header must be: {','.join(header)}", source=src, where="line 1")
@@ -139,7 +160,9 @@ def _rows(path: Path, header: tuple) -> list:
         if not row or all(not c.strip() for c in row):
             continue
         if len(row) != len(header):
-            raise InputError(f"has {len(row)} cells, header has {len(header)}", source=src, where=f"line {i}")
+            raise InputError(
+                f"has {len(row)} cells, header has {len(header)}", source=src, where=f"line {i}"
+            )
         out.append((i, [c.strip() for c in row]))
     return out
 
@@ -165,35 +188,55 @@ def load_grade_table(directory=SHIPPED_DIR) -> GradeTable:
     bands: dict = {}
     p = d / "lead_tolerances.csv"
     for i, r in _rows(p, _TOL_HEADER):
-        vals = [_number(r[j], str(p), i, j + 1, _TOL_HEADER[j]) * (1e-3 if j < 3 else UM) for j in range(1, 5)]
+        vals = [
+            _number(r[j], str(p), i, j + 1, _TOL_HEADER[j]) * (1e-3 if j < 3 else UM)
+            for j in range(1, 5)
+        ]
         if vals[0] >= vals[1]:
-            raise InputError("length_upto must exceed length_over", source=str(p), where=f"line {i}")
+            raise InputError(
+                "length_upto must exceed length_over", source=str(p), where=f"line {i}"
+            )
         bands.setdefault(r[0], []).append(tuple(vals))
     grades = {}
     p = d / "lead_grades.csv"
     for i, r in _rows(p, _GRADE_HEADER):
         name = r[0]
         if name in grades:
-            raise InputError(f"duplicate grade '{name}'", source=str(p), where=f"line {i}, column 1 (grade)")
-        v = [_number(r[j], str(p), i, j + 1, _GRADE_HEADER[j], optional=j != 5) for j in range(1, 6)]
+            raise InputError(
+                f"duplicate grade '{name}'", source=str(p), where=f"line {i}, column 1 (grade)"
+            )
+        v = [
+            _number(r[j], str(p), i, j + 1, _GRADE_HEADER[j], optional=j != 5) for j in range(1, 6)
+        ]
         if v[4] <= 0:
-            raise InputError("price_factor must be positive", source=str(p), where=f"line {i}, column 6")
+            raise InputError(
+                "price_factor must be positive", source=str(p), where=f"line {i}, column 6"
+            )
         b = tuple(sorted(bands.pop(name, ())))
         if math.isnan(v[2]) == (len(b) == 0):
-            raise InputError(f"grade '{name}' needs either travel_error_300 or rows in lead_tolerances.csv "
-                             "(not both)", source=str(p), where=f"line {i}")
+            raise InputError(
+                f"grade '{name}' needs either travel_error_300 or rows in lead_tolerances.csv "
+                "(not both)",
+                source=str(p),
+                where=f"line {i}",
+            )
         grades[name] = Grade(name, v[0] * UM, v[1] * UM, v[2] * UM, v[3] * UM, v[4], b)
     if bands:
-        raise InputError(f"grade '{next(iter(bands))}' of lead_tolerances.csv is not in lead_grades.csv",
-                         source=str(d / "lead_tolerances.csv"))
+        raise InputError(
+            f"grade '{next(iter(bands))}' of lead_tolerances.csv is not in lead_grades.csv",
+            source=str(d / "lead_tolerances.csv"),
+        )
     series = {}
     p = d / "screw_grades.csv"
     for i, r in _rows(p, _SERIES_HEADER):
         names = tuple(r[2].split())
         bad = [n for n in names if n not in grades]
         if not names or bad:
-            raise InputError(f"unknown grade '{bad[0] if bad else ''}' (known: {', '.join(grades)})",
-                             source=str(p), where=f"line {i}, column 3 (grades)")
+            raise InputError(
+                f"unknown grade '{bad[0] if bad else ''}' (known: {', '.join(grades)})",
+                source=str(p),
+                where=f"line {i}, column 3 (grades)",
+            )
         series[(r[0], r[1])] = names
     return GradeTable(MappingProxyType(grades), MappingProxyType(series))
 
@@ -227,10 +270,14 @@ class ScaleGrade:
     source: str
 
 
-# Linear-scale grades for ``axis.feedback: linear_scale`` (vendor-data-sources-drives.md sec. 7): AMO LMB
-# (amosin.com/lmb-100: "accuracy after linear compensation down to +-3 um/m / +-5 um/m"), HIWIN Positioning
-# Measurement System magnetic scale PS (accuracy at 20 degC +-20 um/m, read head repeatability +-3 um).  How a
-# grade reads over a travel: Heidenhain's definition, the extreme values over any section of at most 1 m lie within
+# Linear-scale grades for ``axis.feedback: linear_scale`` (vendor-data-sources-drives.md sec. 7):
+# AMO LMB
+# (amosin.com/lmb-100: "accuracy after linear compensation down to +-3 um/m / +-5 um/m"), HIWIN
+# Positioning
+# Measurement System magnetic scale PS (accuracy at 20 degC +-20 um/m, read head repeatability +-3
+# um).  How a
+# grade reads over a travel: Heidenhain's definition, the extreme values over any section of at most
+# 1 m lie within
 # +-a (content.heidenhain.de, accuracy grade); a longer travel takes a per metre (conservative).
 SCALE_GRADES = {
     "AMO-LMB-3": ScaleGrade(3e-6, 0.0, "AMO LMB +-3 um/m"),
@@ -255,5 +302,15 @@ def price_factors(names):
     return vals[inv].reshape(names.shape)
 
 
-__all__ = ["Grade", "GradeTable", "PRECISION_GRADES", "SCALE_GRADES", "ScaleGrade", "grade_table", "lead_errors",
-           "load_grade_table", "price_factors", "scale_error"]
+__all__ = [
+    "Grade",
+    "GradeTable",
+    "PRECISION_GRADES",
+    "SCALE_GRADES",
+    "ScaleGrade",
+    "grade_table",
+    "lead_errors",
+    "load_grade_table",
+    "price_factors",
+    "scale_error",
+]

@@ -52,7 +52,9 @@ class Catalog:
 
     __slots__ = ("_given", "_rows", "_frames")
 
-    def __init__(self, screws, nuts, bearings, guides, motors=None, couplings=None, reductions=None):
+    def __init__(
+        self, screws, nuts, bearings, guides, motors=None, couplings=None, reductions=None
+    ):
         given = dict(zip(TABLES, (screws, nuts, bearings, guides, motors, couplings, reductions)))
         self._given = {k: (_empty_table(k) if v is None else v) for k, v in given.items()}
         self._rows: dict = {}
@@ -89,16 +91,26 @@ class Catalog:
 
     screws = property(lambda self: self.table("screws"), doc="screws (pandas DataFrame by part id)")
     nuts = property(lambda self: self.table("nuts"), doc="nuts (pandas DataFrame by part id)")
-    bearings = property(lambda self: self.table("bearings"), doc="support bearings (pandas DataFrame by part id)")
-    guides = property(lambda self: self.table("guides"), doc="linear guides (pandas DataFrame by part id)")
+    bearings = property(
+        lambda self: self.table("bearings"), doc="support bearings (pandas DataFrame by part id)"
+    )
+    guides = property(
+        lambda self: self.table("guides"), doc="linear guides (pandas DataFrame by part id)"
+    )
     motors = property(lambda self: self.table("motors"), doc="motors (pandas DataFrame by part id)")
-    couplings = property(lambda self: self.table("couplings"), doc="couplings (pandas DataFrame by part id)")
-    reductions = property(lambda self: self.table("reductions"), doc="reductions (pandas DataFrame by part id)")
+    couplings = property(
+        lambda self: self.table("couplings"), doc="couplings (pandas DataFrame by part id)"
+    )
+    reductions = property(
+        lambda self: self.table("reductions"), doc="reductions (pandas DataFrame by part id)"
+    )
 
     def __repr__(self) -> str:
         return "Catalog(" + ", ".join(f"{n}: {len(self.rows(n))}" for n in TABLES) + ")"
 
-    def part(self, table: str, part_id: str, *, source: str | None = None, key: str | None = None) -> Row:
+    def part(
+        self, table: str, part_id: str, *, source: str | None = None, key: str | None = None
+    ) -> Row:
         """The row of ``part_id`` in ``table`` as a :class:`~axisopt.catalog.parttable.Row`; an unknown id is a one-line
         error with the closest id."""
         t = self.rows(table)
@@ -142,27 +154,42 @@ def _read_records(path: Path, name: str) -> list[dict]:
             try:
                 rows = list(reader)
             except csv.Error as exc:
-                raise InputError(f"malformed CSV ({exc})", source=src, where=f"line {reader.line_num}") from None
+                raise InputError(
+                    f"malformed CSV ({exc})", source=src, where=f"line {reader.line_num}"
+                ) from None
     except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read catalog ({exc.__class__.__name__}: "
-                         f"{getattr(exc, 'strerror', None) or exc})", source=src) from None
+        raise InputError(
+            f"cannot read catalog ({exc.__class__.__name__}: "
+            f"{getattr(exc, 'strerror', None) or exc})",
+            source=src,
+        ) from None
     if not rows:
         raise InputError("empty catalog file", source=src)
     header = rows[0]
+
     def unknown(col: str) -> str:
         near = _closest(col, schema)
         return f"unknown column '{col}'" + (f"; did you mean '{near}'?" if near else "")
 
-    # the header by the strict unit-CSV rules (units.read_header): text and count columns take no unit
-    kinds = {c: (None if k in ("str", "int") else k) for c, k in schema.items()} | dict.fromkeys(PROVENANCE)
+    # the header by the strict unit-CSV rules (units.read_header): text and count columns take no
+    # unit
+    kinds = {c: (None if k in ("str", "int") else k) for c, k in schema.items()} | dict.fromkeys(
+        PROVENANCE
+    )
     header_cols = read_header(header, line=1, source=src, kinds=kinds, unknown=unknown)
     # (name, SI factor or None, kind) per column
-    cols = [(c.name, c.factor, "str" if c.name in PROVENANCE else schema[c.name]) for c in header_cols]
+    cols = [
+        (c.name, c.factor, "str" if c.name in PROVENANCE else schema[c.name]) for c in header_cols
+    ]
     seen = {c.name for c in header_cols}
-    # an optional column with an estimate (or a meaning when empty, or one that applies only under a flag) may be
+    # an optional column with an estimate (or a meaning when empty, or one that applies only under a
+    # flag) may be
     # left out of the header: every row then takes the estimate (is empty)
-    omitted = [c.name for c in COLUMNS[name]
-               if c.optional and (c.estimate or c.blank or c.applies) and c.name not in seen]
+    omitted = [
+        c.name
+        for c in COLUMNS[name]
+        if c.optional and (c.estimate or c.blank or c.applies) and c.name not in seen
+    ]
     missing = [c for c in schema if c not in seen and c not in omitted]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)}", source=src, where="line 1")
@@ -173,7 +200,9 @@ def _read_records(path: Path, name: str) -> list[dict]:
         if not row or all(not c.strip() for c in row):
             continue
         if len(row) != len(cols):
-            raise InputError(f"has {len(row)} cells, header has {len(cols)}", source=src, where=f"line {i}")
+            raise InputError(
+                f"has {len(row)} cells, header has {len(cols)}", source=src, where=f"line {i}"
+            )
         rec = dict.fromkeys(omitted, math.nan)
         for j, ((col, factor, kind), cell) in enumerate(zip(cols, row), start=1):
             cell = cell.strip()
@@ -201,8 +230,11 @@ def _read_records(path: Path, name: str) -> list[dict]:
         names = [n for n, _, _ in cols]
         if "status" in rec and rec["status"] not in PROVENANCE["status"]:
             j = names.index("status") + 1
-            raise InputError(f"status '{rec['status']}' is not one of {', '.join(PROVENANCE['status'])}",
-                             source=src, where=f"line {i}, column {j} (status)")
+            raise InputError(
+                f"status '{rec['status']}' is not one of {', '.join(PROVENANCE['status'])}",
+                source=src,
+                where=f"line {i}, column {j} (status)",
+            )
         bad = row_problem(name, rec)
         if bad is not None:
             c, msg = bad
@@ -215,8 +247,11 @@ def _read_records(path: Path, name: str) -> list[dict]:
                 text = f"{c} {msg}, got {row[j].strip()}"
             raise InputError(text, source=src, where=f"line {i}, column {j + 1} ({c})")
         if rec["id"] in ids:
-            raise InputError(f"duplicate id '{rec['id']}' (first on line {ids[rec['id']]})", source=src,
-                             where=f"line {i}, column 1 (id)")
+            raise InputError(
+                f"duplicate id '{rec['id']}' (first on line {ids[rec['id']]})",
+                source=src,
+                where=f"line {i}, column 1 (id)",
+            )
         ids[rec["id"]] = i
         rec["_source"] = f"{src}:{i}"
         rec.setdefault("status", USER_STATUS)
@@ -237,7 +272,9 @@ class PartRows:
     def table(self, name: str) -> list[dict]:
         return self._tables[name]
 
-    def part(self, table: str, part_id: str, *, source: str | None = None, key: str | None = None) -> dict:
+    def part(
+        self, table: str, part_id: str, *, source: str | None = None, key: str | None = None
+    ) -> dict:
         """The row of ``part_id`` (same error as :meth:`Catalog.part` for an unknown id)."""
         rows = self._ids[table]
         if part_id not in rows:
@@ -265,7 +302,9 @@ def load_records(extra_dirs=(), *, shipped: bool = True) -> PartRows:
             if name not in REQUIRED_TABLES:
                 out[name] = []
                 continue
-            raise InputError(f"no {name}.csv found in catalog directories", source=", ".join(map(str, dirs)))
+            raise InputError(
+                f"no {name}.csv found in catalog directories", source=", ".join(map(str, dirs))
+            )
         rows = [r for part in parts for r in part]
         last: dict[str, dict] = {}
         first_dup = None
@@ -274,20 +313,28 @@ def load_records(extra_dirs=(), *, shipped: bool = True) -> PartRows:
                 first_dup = r["id"]
             last[r["id"]] = r
         if first_dup is not None:
-            raise InputError(f"duplicate id '{first_dup}' across catalog directories",
-                             source=last[first_dup]["_source"])
+            raise InputError(
+                f"duplicate id '{first_dup}' across catalog directories",
+                source=last[first_dup]["_source"],
+            )
         out[name] = rows
     screws = {r["id"]: r for r in out["screws"]}
     for r in out["nuts"]:
         if r["screw_id"] not in screws:
-            raise InputError(f"screw_id '{r['screw_id']}' is not in screws.csv", source=r["_source"],
-                             where="column screw_id")
+            raise InputError(
+                f"screw_id '{r['screw_id']}' is not in screws.csv",
+                source=r["_source"],
+                where="column screw_id",
+            )
     for r in out["nuts"]:
         v = screws[r["screw_id"]]["vendor"]
         if r["vendor"] != v:
-            raise InputError(f"nut '{r['id']}' of vendor {r['vendor']} is listed on screw '{r['screw_id']}' of "
-                             f"vendor {v}: a nut runs only on its own vendor's shaft", source=r["_source"],
-                             where="column screw_id")
+            raise InputError(
+                f"nut '{r['id']}' of vendor {r['vendor']} is listed on screw '{r['screw_id']}' of "
+                f"vendor {v}: a nut runs only on its own vendor's shaft",
+                source=r["_source"],
+                where="column screw_id",
+            )
     return PartRows(out)
 
 

@@ -81,8 +81,11 @@ def row_repr(row, table: str | None = None) -> str:
     rows = [r for r in row_rows(row, table) if r["column"] != "id"]
     width = max((len(r["column"]) for r in rows), default=0)
     what = f"{table[:-1]} " if table else ""
-    lines = [f"  {r['column']:<{width}}  {_figure(r['value']) if isinstance(r['value'], float) else r['value']}"
-             + (f" {r['unit']}" if r["unit"] else "") for r in rows]
+    lines = [
+        f"  {r['column']:<{width}}  {_figure(r['value']) if isinstance(r['value'], float) else r['value']}"
+        + (f" {r['unit']}" if r["unit"] else "")
+        for r in rows
+    ]
     return f"Row({what}{str(row.name)!r}:\n" + "\n".join(lines) + ")"
 
 
@@ -98,9 +101,13 @@ def row_html(row, table: str | None = None) -> str:
     from ..display import html_table
 
     table = table or table_of(row)
-    rows = [{**r, "value": _figure(r["value"]) if isinstance(r["value"], float) else str(r["value"])}
-            for r in row_rows(row, table)]
-    return html_table(rows, f"{table[:-1] if table else 'part'} {row.name}", columns=COLUMNS, max_rows=100)
+    rows = [
+        {**r, "value": _figure(r["value"]) if isinstance(r["value"], float) else str(r["value"])}
+        for r in row_rows(row, table)
+    ]
+    return html_table(
+        rows, f"{table[:-1] if table else 'part'} {row.name}", columns=COLUMNS, max_rows=100
+    )
 
 
 __all__ = ["vendor_units", "table_of", "row_rows", "row_repr", "row_frame", "row_html"]

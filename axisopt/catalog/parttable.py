@@ -54,7 +54,10 @@ class Row(dict):
 
 def _column(values: list) -> np.ndarray:
     """float64 when every value is a number (None: NaN), else object (text)."""
-    if all(isinstance(v, (int, float, np.number)) and not isinstance(v, bool) or v is None for v in values):
+    if all(
+        isinstance(v, (int, float, np.number)) and not isinstance(v, bool) or v is None
+        for v in values
+    ):
         return np.array([math.nan if v is None else v for v in values], dtype=float)
     return np.array(values, dtype=object)
 
@@ -68,9 +71,14 @@ class PartTable:
 
     def __init__(self, records: list[dict], names=None, *, ids=None):
         self._records = list(records)
-        self._names = list(names) if names is not None else (list(self._records[0]) if self._records else [])
-        self.ids = (np.array([r["id"] for r in self._records], dtype=object) if ids is None
-                    else np.asarray(ids, dtype=object))
+        self._names = (
+            list(names) if names is not None else (list(self._records[0]) if self._records else [])
+        )
+        self.ids = (
+            np.array([r["id"] for r in self._records], dtype=object)
+            if ids is None
+            else np.asarray(ids, dtype=object)
+        )
         self._columns: dict[str, np.ndarray] = {}
         self._pos: dict | None = None
 
@@ -80,7 +88,10 @@ class PartTable:
         """The rows of a pandas table (index: part id)."""
         names = [str(c) for c in df.columns]
         cols = [df[c].to_numpy() for c in df.columns]
-        records = [Row({n: _scalar(col[i]) for n, col in zip(names, cols)}, df.index[i]) for i in range(len(df))]
+        records = [
+            Row({n: _scalar(col[i]) for n, col in zip(names, cols)}, df.index[i])
+            for i in range(len(df))
+        ]
         return cls(records, names, ids=[str(i) for i in df.index])
 
     def to_frame(self):

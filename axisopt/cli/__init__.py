@@ -34,8 +34,17 @@ def _commands():
     """One module per subcommand, each with ``register(sub)``; they import their heavy parts lazily."""
     from . import compare, diagnose, evaluate, init, machine, parts, schema, solve, study
 
-    return [evaluate.register, solve.register, diagnose.register, compare.register, study.register,
-            parts.register, schema.register, init.register, machine.register]
+    return [
+        evaluate.register,
+        solve.register,
+        diagnose.register,
+        compare.register,
+        study.register,
+        parts.register,
+        schema.register,
+        init.register,
+        machine.register,
+    ]
 
 
 def _show_progress() -> None:
@@ -53,21 +62,29 @@ def _one_output_on_stdout(args) -> None:
     from ..fileio import is_stdout
     from .common import OUTPUT_OPTIONS
 
-    taken = [o for o in OUTPUT_OPTIONS if isinstance(getattr(args, o[2:].replace("-", "_"), None), str)
-             and is_stdout(getattr(args, o[2:].replace("-", "_")))]
+    taken = [
+        o
+        for o in OUTPUT_OPTIONS
+        if isinstance(getattr(args, o[2:].replace("-", "_"), None), str)
+        and is_stdout(getattr(args, o[2:].replace("-", "_")))
+    ]
     if len(taken) > 1:
         both = "both" if len(taken) == 2 else "all"
-        raise InputError(f"{' and '.join(taken)} would {both} write to standard output; give all but one a file name")
+        raise InputError(
+            f"{' and '.join(taken)} would {both} write to standard output; give all but one a file name"
+        )
 
 
 def _warning_lines(other):
     """warnings.showwarning for the CLI: an ImplausibleInput is one 'warning:' line on stderr (file, line, key and
     what is off); any other warning goes to ``other`` (the showwarning in place)."""
+
     def show(message, category, filename, lineno, file=None, line=None):
         if issubclass(category, ImplausibleInput):
             print(f"warning: {message}", file=sys.stderr)
         else:
             other(message, category, filename, lineno, file, line)
+
     return show
 
 
@@ -84,7 +101,8 @@ def _main(argv) -> int:
     out = sys.stdout = GuardedStdout(saved)
     try:
         parser = build_parser()
-        if not (sys.argv[1:] if argv is None else argv):  # `axisopt` alone: the commands and what each does
+        # `axisopt` alone: the commands and what each does
+        if not (sys.argv[1:] if argv is None else argv):
             print(parser.format_help(), end="")
             return 0
         args = parser.parse_args(argv)

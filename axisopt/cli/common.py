@@ -8,23 +8,30 @@ import math
 
 from ..errors import InputError
 
-# 0 success (solve: proven optimum), 1 a proven negative answer (an infeasible problem, a failed check with
-# --fail-on-check), 2 bad input, 3 no proof either way (Bonmin's unproven point, a time limit, a solver
+# 0 success (solve: proven optimum), 1 a proven negative answer (an infeasible problem, a failed
+# check with
+# --fail-on-check), 2 bad input, 3 no proof either way (Bonmin's unproven point, a time limit, a
+# solver
 # failure), 130 interrupted.
 EXIT_OK, EXIT_NEGATIVE, EXIT_INPUT, EXIT_UNPROVEN, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
 
 
 def add_html_report(parser, what: str) -> None:
     """The ``--report FILE.html`` option (a self-contained HTML report) and its ``--plotly`` choice."""
-    parser.add_argument("--report", metavar="FILE.html",
-                        help=f"write {what} as one self-contained HTML file (static SVG figures: offline, small)")
+    parser.add_argument(
+        "--report",
+        metavar="FILE.html",
+        help=f"write {what} as one self-contained HTML file (static SVG figures: offline, small)",
+    )
     parser.add_argument("--plotly", choices=("no", "inline", "cdn"), default="no", help=PLOTLY_HELP)
 
 
-PLOTLY_HELP = ("with --report: 'no' (default) draws static SVG figures (no plotly needed, works offline, a few "
-               "hundred kB); interactive plotly figures (zoom, hover; needs axisopt[html]) with plotly.js "
-               "'inline' (about 5 MB, works offline) or from the plotly 'cdn' (a small file that needs the "
-               "network)")
+PLOTLY_HELP = (
+    "with --report: 'no' (default) draws static SVG figures (no plotly needed, works offline, a few "
+    "hundred kB); interactive plotly figures (zoom, hover; needs axisopt[html]) with plotly.js "
+    "'inline' (about 5 MB, works offline) or from the plotly 'cdn' (a small file that needs the "
+    "network)"
+)
 
 
 def check_html_report(path, plotly: str = "no") -> None:
@@ -72,8 +79,13 @@ def show(text: str) -> None:
     t.highlight_regex(r"\bFAIL\b| !(?=\n|$)|\bNO\b$", "bold red")
     t.highlight_regex(r"(?<=  )pass\b", "green")
     t.highlight_regex(r"<- weakest link|\bBINDING\b", "yellow")
-    Console(file=sys.stdout, highlight=False, soft_wrap=True,
-            force_terminal=True, color_system="standard").print(t)
+    Console(
+        file=sys.stdout,
+        highlight=False,
+        soft_wrap=True,
+        force_terminal=True,
+        color_system="standard",
+    ).print(t)
 
 
 def stdout_taken(*targets) -> bool:
@@ -103,7 +115,7 @@ def one_line(text: str) -> str:
             out.append(ch)
     line = " ".join("".join(out).split())
     if len(line) > MAX_ERROR_CHARS:
-        line = line[:MAX_ERROR_CHARS - 25] + f" ... ({len(line):,} characters)"
+        line = line[: MAX_ERROR_CHARS - 25] + f" ... ({len(line):,} characters)"
     return line
 
 
@@ -161,7 +173,16 @@ class GuardedStdout:
 
 
 # options that name an output file or directory: an empty name is a usage error, never "not given"
-OUTPUT_OPTIONS = ("--json", "--csv", "--plot", "--out", "--report", "--save-design", "--save-calibration", "--frf")
+OUTPUT_OPTIONS = (
+    "--json",
+    "--csv",
+    "--plot",
+    "--out",
+    "--report",
+    "--save-design",
+    "--save-calibration",
+    "--frf",
+)
 
 
 def _output_path(text: str) -> str:
@@ -175,7 +196,11 @@ class Parser(argparse.ArgumentParser):
     empty name (``--save-design ""``) is such an error."""
 
     def add_argument(self, *names, **kw):
-        if any(n in OUTPUT_OPTIONS for n in names) and "type" not in kw and kw.get("action") in (None, "store"):
+        if (
+            any(n in OUTPUT_OPTIONS for n in names)
+            and "type" not in kw
+            and kw.get("action") in (None, "store")
+        ):
             kw["type"] = _output_path
         return super().add_argument(*names, **kw)
 

@@ -17,13 +17,24 @@ from .common import (
 
 def register(sub) -> None:
     c = sub.add_parser("compare", help="compare designs (or solved problems) side by side")
-    c.add_argument("files", nargs="+", metavar="FILE.yaml",
-                   help="design YAMLs, or problem YAMLs (solved with the default method; the best design is used)")
+    c.add_argument(
+        "files",
+        nargs="+",
+        metavar="FILE.yaml",
+        help="design YAMLs, or problem YAMLs (solved with the default method; the best design is used)",
+    )
     c.add_argument("--json", metavar="FILE", help="write the comparison as JSON ('-' for stdout)")
     c.add_argument("--csv", metavar="FILE", help="write one row per design as CSV")
-    c.add_argument("--plot", metavar="FILE.png", help="overlay stiffness and frequency over the stroke")
-    c.add_argument("--time-limit", type=float, default=100.0, metavar="S",
-                   help="time limit [s] of each problem's solve (default 100, as solve's)")
+    c.add_argument(
+        "--plot", metavar="FILE.png", help="overlay stiffness and frequency over the stroke"
+    )
+    c.add_argument(
+        "--time-limit",
+        type=float,
+        default=100.0,
+        metavar="S",
+        help="time limit [s] of each problem's solve (default 100, as solve's)",
+    )
     add_html_report(c, "the comparison")
     c.set_defaults(func=cmd_compare)
 
@@ -57,7 +68,11 @@ def cmd_compare(args) -> int:
         from ..report.html import write_page
         from ..report.htmlpages import compare_page
 
-        write_page(compare_page(items, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
+        write_page(
+            compare_page(items, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
         wrote(args.report, stdout_taken(args.json, args.csv))
     failed = [c for c in items if not c.ok]
     for c in failed:

@@ -14,7 +14,8 @@ from .common import EXIT_OK, PLOTLY_HELP, stdout_taken, write_json
 def cmd_diagnose(args) -> int:
     from ..identify.records.record import is_time_record
 
-    if args.data and is_time_record(args.data[0]):  # time records: IDIM (LS and IV), axisopt.identify.records.idim
+    # time records: IDIM (LS and IV), axisopt.identify.records.idim
+    if args.data and is_time_record(args.data[0]):
         return _cmd_diagnose_time(args)
     from ..design import load_design
     from ..identify import diagnose, plant_from_design, read_dataset
@@ -35,10 +36,14 @@ def cmd_diagnose(args) -> int:
         names = [n.strip() for n in args.effects.split(",") if n.strip()]
         unknown = [n for n in names if n not in library()]
         if unknown:
-            raise InputError(f"--effects: unknown effect '{unknown[0]}'; known: {', '.join(library())}")
+            raise InputError(
+                f"--effects: unknown effect '{unknown[0]}'; known: {', '.join(library())}"
+            )
     if args.max_effects < 0:
         raise InputError("--max-effects must not be negative")
-    diag = diagnose(datasets, plant_from_design(design), candidates=names, max_effects=args.max_effects)
+    diag = diagnose(
+        datasets, plant_from_design(design), candidates=names, max_effects=args.max_effects
+    )
     quiet = stdout_taken(args.json, args.save_calibration)
     text = diagnosis_text(diag)
     if not quiet:
@@ -47,7 +52,11 @@ def cmd_diagnose(args) -> int:
         from ..report.html import write_page
         from ..report.htmlpages import diagnose_page
 
-        write_page(diagnose_page(diag, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
+        write_page(
+            diagnose_page(diag, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
         if not quiet:
             print(f"report written to {args.report}")
     elif args.report:
@@ -55,8 +64,11 @@ def cmd_diagnose(args) -> int:
         if not quiet:
             print(f"report written to {path}")
     if args.save_calibration:
-        _print_calibration(save_calibration(diag, args.save_calibration, design, args.data), args.save_calibration,
-                           quiet)
+        _print_calibration(
+            save_calibration(diag, args.save_calibration, design, args.data),
+            args.save_calibration,
+            quiet,
+        )
     if args.json:
         write_json(diagnosis_dict(diag), args.json)
     return EXIT_OK
@@ -81,42 +93,62 @@ def _cmd_diagnose_time(args) -> int:
 
     if args.report:
         raise InputError("--report is not available for time records (use --json)")
-    if args.gain is not None:  # refused when malformed, whether or not the record is a current record
+    # refused when malformed, whether or not the record is a current record
+    if args.gain is not None:
         from ..identify.records.record import parse_gain
 
         parse_gain(args.gain, source="--gain")
     names = [n.strip() for n in args.effects.split(",") if n.strip()] if args.effects else None
     design = load_design(args.design)
-    diag = diagnose_time_files(args.data, plant=plant_from_design(design), gain=args.gain,
-                               candidates=names, max_effects=args.max_effects)
+    diag = diagnose_time_files(
+        args.data,
+        plant=plant_from_design(design),
+        gain=args.gain,
+        candidates=names,
+        max_effects=args.max_effects,
+    )
     quiet = stdout_taken(args.json, args.save_calibration)
     if not quiet:
         print(time_diagnosis_text(diag))
     if args.save_calibration:
         from ..identify.records.calibration import save_time_calibration
 
-        _print_calibration(save_time_calibration(diag, args.save_calibration, design, args.data),
-                           args.save_calibration, quiet)
+        _print_calibration(
+            save_time_calibration(diag, args.save_calibration, design, args.data),
+            args.save_calibration,
+            quiet,
+        )
     if args.json:
         write_json(time_diagnosis_dict(diag), args.json)
     return EXIT_OK
 
 
 def register(sub) -> None:
-    d = sub.add_parser("diagnose", help="fit measured data, name what the model gets wrong, measure the gain")
+    d = sub.add_parser(
+        "diagnose", help="fit measured data, name what the model gets wrong, measure the gain"
+    )
     d.add_argument("data", nargs="+", help="measured test CSV file(s) (units in headers)")
     d.add_argument("--design", required=True, help="design YAML of the measured axis")
-    d.add_argument("--report", metavar="FILE.html|DIR",
-                   help="a self-contained HTML report (FILE.html), or report.md with residual "
-                        "plots in DIR")
+    d.add_argument(
+        "--report",
+        metavar="FILE.html|DIR",
+        help="a self-contained HTML report (FILE.html), or report.md with residual plots in DIR",
+    )
     d.add_argument("--plotly", choices=("no", "inline", "cdn"), default="no", help=PLOTLY_HELP)
     d.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
-    d.add_argument("--save-calibration", metavar="FILE.yaml", help="save the calibrated model for evaluate")
+    d.add_argument(
+        "--save-calibration", metavar="FILE.yaml", help="save the calibrated model for evaluate"
+    )
     d.add_argument(
         "--effects", metavar="A,B", help="only consider these effects (default: the whole library)"
     )
-    d.add_argument("--max-effects", type=int, default=3, metavar="N", help="accept at most N effects (3)")
-    d.add_argument("--gain", metavar="'0.85 N.m/A'",
-                   help="time records with a current column: torque (N.m/A) or force (N/A) per ampere, for files "
-                        "without a '# gain:' line")
+    d.add_argument(
+        "--max-effects", type=int, default=3, metavar="N", help="accept at most N effects (3)"
+    )
+    d.add_argument(
+        "--gain",
+        metavar="'0.85 N.m/A'",
+        help="time records with a current column: torque (N.m/A) or force (N/A) per ampere, for files "
+        "without a '# gain:' line",
+    )
     d.set_defaults(func=cmd_diagnose)

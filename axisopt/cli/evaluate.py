@@ -20,19 +20,37 @@ def register(sub) -> None:
     e = sub.add_parser("evaluate", help="evaluate one design over the stroke")
     e.add_argument("design", help="design YAML file")
     e.add_argument("--json", metavar="FILE", help="write results as JSON ('-' for stdout)")
-    e.add_argument("--plot", metavar="FILE.png", help="plot stiffness and frequency over the stroke")
-    e.add_argument("--calibration", metavar="FILE.yaml", help="apply a calibration saved by 'diagnose'")
-    e.add_argument("--methods", nargs="?", const="all", metavar="NAMES",
-                   help="stiffness of nut, bearings and screw by every method of the seed paper, or only the "
-                        "named ones (e.g. nut:hertz,bearings:palmgren)")
-    e.add_argument("--frf", metavar="FILE.png",
-                   help="plot the table's dynamic compliance at stroke start, middle and end: motor held (the "
-                        "first frequency's model), motor free and with the tuned servo (also in --json)")
-    e.add_argument("--ss", metavar="FILE.npz",
-                   help="write the linear state-space model (A, B, C, D; motor free and held) at stroke start, "
-                        "middle and end and the tuned servo gains as a numpy .npz")
-    e.add_argument("--fail-on-check", action="store_true",
-                   help="exit 1 when any check fails (for scripts; default: exit 0 with FAIL in the table)")
+    e.add_argument(
+        "--plot", metavar="FILE.png", help="plot stiffness and frequency over the stroke"
+    )
+    e.add_argument(
+        "--calibration", metavar="FILE.yaml", help="apply a calibration saved by 'diagnose'"
+    )
+    e.add_argument(
+        "--methods",
+        nargs="?",
+        const="all",
+        metavar="NAMES",
+        help="stiffness of nut, bearings and screw by every method of the seed paper, or only the "
+        "named ones (e.g. nut:hertz,bearings:palmgren)",
+    )
+    e.add_argument(
+        "--frf",
+        metavar="FILE.png",
+        help="plot the table's dynamic compliance at stroke start, middle and end: motor held (the "
+        "first frequency's model), motor free and with the tuned servo (also in --json)",
+    )
+    e.add_argument(
+        "--ss",
+        metavar="FILE.npz",
+        help="write the linear state-space model (A, B, C, D; motor free and held) at stroke start, "
+        "middle and end and the tuned servo gains as a numpy .npz",
+    )
+    e.add_argument(
+        "--fail-on-check",
+        action="store_true",
+        help="exit 1 when any check fails (for scripts; default: exit 0 with FAIL in the table)",
+    )
     add_html_report(e, "the evaluation")
     e.set_defaults(func=cmd_evaluate)
 
@@ -93,14 +111,20 @@ def cmd_evaluate(args) -> int:
         from ..model.statespace import stroke_state_spaces
         from ..report.servo import write_state_space
 
-        write_state_space(stroke_state_spaces(ev), tune(ev), args.ss,
-                          held=stroke_state_spaces(ev, motor_held=True))
+        write_state_space(
+            stroke_state_spaces(ev),
+            tune(ev),
+            args.ss,
+            held=stroke_state_spaces(ev, motor_held=True),
+        )
         if not stdout_taken(args.json):
             print(f"\nstate-space model written to {args.ss}")
     if args.report:
         from ..report.html import evaluation_page, write_page
 
-        write_page(evaluation_page(ev, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
+        write_page(
+            evaluation_page(ev, interactive=args.plotly != "no"), args.report, plotly=args.plotly
+        )
         wrote(args.report, stdout_taken(args.json))
     if args.fail_on_check:
         from ..report.evaluation import check_rows

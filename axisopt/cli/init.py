@@ -40,7 +40,8 @@ _FORCE_NOTE = """\
   #               the guides are then sized without them, and solve says so);
   #  tool_height: cutting point above the guide mounting plane;
   #  tool_offset: cutting point across the rails from the carriage centre."""
-# a lathe's template only: the rule of thumb is for turning (other processes split their forces otherwise)
+# a lathe's template only: the rule of thumb is for turning (other processes split their forces
+# otherwise)
 _TURNING_NOTE = """
   #  Unknown?  Turning rule of thumb (Isakov, Cutting Tool Engineering 2013):
   #  feed Ff = 0.5 Fc and passive Fp = 0.25 Fc of the tangential force Fc; a rough
@@ -56,7 +57,8 @@ _MOUNT_NOTE = """\
   #                                        #   THK's 80 % nut-mounting allowance once more)
 """
 
-# Per machine: title, name, the axis section (after 'axis:'), the problem's objective to continuous sections,
+# Per machine: title, name, the axis section (after 'axis:'), the problem's objective to continuous
+# sections,
 # the design's parts, and the study's sweep.
 _MACHINE = {
     "vmc": dict(
@@ -405,9 +407,11 @@ _HEADER = """\
 # Editor completion and checks: axisopt schema {kind} --out axisopt-{kind}.json
 # (docs/files.md, "Editor support").
 """
-_NEXT = {"design": "Evaluate it: axisopt evaluate FILE",
-         "problem": "Solve it: axisopt solve FILE (exit 0 optimal, 1 infeasible)",
-         "study": "Run it: axisopt study FILE --out DIR"}
+_NEXT = {
+    "design": "Evaluate it: axisopt evaluate FILE",
+    "problem": "Solve it: axisopt solve FILE (exit 0 optimal, 1 infeasible)",
+    "study": "Run it: axisopt study FILE --out DIR",
+}
 
 
 def template(kind: str, machine: str = "vmc") -> str:
@@ -419,40 +423,63 @@ def template(kind: str, machine: str = "vmc") -> str:
         from ..machine.templates import TEMPLATES
 
         if machine not in TEMPLATES:
-            raise InputError(f"unknown machine kind '{machine}'; use one of {', '.join(TEMPLATES)}", where="--kind")
+            raise InputError(
+                f"unknown machine kind '{machine}'; use one of {', '.join(TEMPLATES)}",
+                where="--kind",
+            )
         return TEMPLATES[machine]
     if machine not in _MACHINE:
-        raise InputError(f"unknown machine '{machine}'; use one of {', '.join(MACHINES)}", where="--machine")
+        raise InputError(
+            f"unknown machine '{machine}'; use one of {', '.join(MACHINES)}", where="--machine"
+        )
     m = _MACHINE[machine]
     head = _HEADER.format(kind=kind, title=m["title"], machine=machine, next=_NEXT[kind])
     force = _FORCE_NOTE + (_TURNING_NOTE if machine == "lathe" else "")
     axis = "axis:\n" + m["axis"].format(force=force) + _MOUNT_NOTE
     if kind == "design":
-        return (f"{head}name: {m['name']}\ndescription: >\n  {m['description']}\n{axis}"
-                "parts:                        # catalog ids (axisopt parts lists them)\n"
-                f"{m['parts']}")
+        return (
+            f"{head}name: {m['name']}\ndescription: >\n  {m['description']}\n{axis}"
+            "parts:                        # catalog ids (axisopt parts lists them)\n"
+            f"{m['parts']}"
+        )
     problem = f"name: {m['name']}\ndescription: >\n  {m['description']}\n{axis}{m['problem']}"
     if kind == "problem":
         return head + problem
     key, values, what = m["sweep"]
     base = "".join(("  " + line) if line else line for line in problem.splitlines(True))
-    return (f"{head}name: {m['name']}-study\ndescription: >\n  {m['description']}\n  Swept over {what}.\n"
-            f"base:                         # a problem as 'init problem' writes (or base: FILE)\n"
-            f"{base}sweep:                        # each key a dotted path into the base problem\n"
-            f"  {key}: {values}   # {what}\n")
+    return (
+        f"{head}name: {m['name']}-study\ndescription: >\n  {m['description']}\n  Swept over {what}.\n"
+        f"base:                         # a problem as 'init problem' writes (or base: FILE)\n"
+        f"{base}sweep:                        # each key a dotted path into the base problem\n"
+        f"  {key}: {values}   # {what}\n"
+    )
 
 
 def register(sub) -> None:
-    p = sub.add_parser("init", help="write a commented design, problem or study YAML for a machine type")
+    p = sub.add_parser(
+        "init", help="write a commented design, problem or study YAML for a machine type"
+    )
     p.add_argument("kind", choices=KINDS, help="the kind of YAML file")
-    p.add_argument("--machine", choices=MACHINES, default="vmc",
-                   help="machine type: vmc (machining centre X), lathe (Z), gantry (long X), vertical (Z), boring "
-                        "(boring-mill table, 3 m, 2 t), laser (1.5 g contouring); default vmc")
-    p.add_argument("--kind", choices=("vmc", "moving-column", "gantry"), default="vmc", dest="machine_kind",
-                   help="init machine: the machine's kind (default vmc): a VMC (X on Y, Z on the column), a "
-                        "moving-column machine, a gantry with a twin-drive bridge and a counterbalanced Z")
-    p.add_argument("--out", metavar="FILE",
-                   help="file to write ('-' for stdout; default <machine>_<kind>.yaml in this directory)")
+    p.add_argument(
+        "--machine",
+        choices=MACHINES,
+        default="vmc",
+        help="machine type: vmc (machining centre X), lathe (Z), gantry (long X), vertical (Z), boring "
+        "(boring-mill table, 3 m, 2 t), laser (1.5 g contouring); default vmc",
+    )
+    p.add_argument(
+        "--kind",
+        choices=("vmc", "moving-column", "gantry"),
+        default="vmc",
+        dest="machine_kind",
+        help="init machine: the machine's kind (default vmc): a VMC (X on Y, Z on the column), a "
+        "moving-column machine, a gantry with a twin-drive bridge and a counterbalanced Z",
+    )
+    p.add_argument(
+        "--out",
+        metavar="FILE",
+        help="file to write ('-' for stdout; default <machine>_<kind>.yaml in this directory)",
+    )
     p.add_argument("--force", action="store_true", help="overwrite an existing file")
     p.set_defaults(func=cmd_init)
 
@@ -466,14 +493,20 @@ def cmd_init(args) -> int:
         return EXIT_OK
     path = Path(out)
     if path.exists() and not args.force:
-        raise InputError("file exists; use --force to overwrite it, or --out another file", source=str(path))
+        raise InputError(
+            "file exists; use --force to overwrite it, or --out another file", source=str(path)
+        )
     if path.is_dir():
         raise InputError("is a directory; give a file name", source=str(path))
     from ..fileio import write_text_atomic
 
     write_text_atomic(str(path), text, what=f"{args.kind} YAML")
-    nxt = {"design": "axisopt evaluate", "problem": "axisopt solve", "study": "axisopt study",
-           "machine": "axisopt machine solve"}[args.kind]
+    nxt = {
+        "design": "axisopt evaluate",
+        "problem": "axisopt solve",
+        "study": "axisopt study",
+        "machine": "axisopt machine solve",
+    }[args.kind]
     title = f"{which} machine" if args.kind == "machine" else f"a {_MACHINE[args.machine]['title']}"
     print(f"{args.kind} template for {title} written to {path}")
     print(f"next: {nxt} {path}")

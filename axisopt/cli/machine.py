@@ -8,40 +8,83 @@ from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, 
 
 
 def register(sub) -> None:
-    s = sub.add_parser("machine", help="size every axis of a machine together (proven), beside the sequential "
-                       "sizing")
+    s = sub.add_parser(
+        "machine",
+        help="size every axis of a machine together (proven), beside the sequential sizing",
+    )
     msub = s.add_subparsers(dest="machine_command", required=True)
-    m = msub.add_parser("solve", help="the joint optimum of a machine file and the sequential sizing beside it")
+    m = msub.add_parser(
+        "solve", help="the joint optimum of a machine file and the sequential sizing beside it"
+    )
     m.add_argument("machine", help="machine YAML file (top-level 'axes:')")
-    m.add_argument("--method", choices=("default", "exhaustive"), default="default",
-                   help="default: exact Pareto sets of what each axis offers the one below (proven); exhaustive: "
-                        "every combination of every axis (small catalogs only)")
+    m.add_argument(
+        "--method",
+        choices=("default", "exhaustive"),
+        default="default",
+        help="default: exact Pareto sets of what each axis offers the one below (proven); exhaustive: "
+        "every combination of every axis (small catalogs only)",
+    )
     m.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
-    add_html_report(m, "the joint optimum, the stiffness chain at the tool and the sequential sizing")
+    add_html_report(
+        m, "the joint optimum, the stiffness chain at the tool and the sequential sizing"
+    )
     m.set_defaults(func=cmd_machine_solve)
-    e = msub.add_parser("evaluate", help="a machine whose axes name one part per slot (catalog.require): the "
-                        "stiffness at the tool with every link, the frequencies, the machine limits")
+    e = msub.add_parser(
+        "evaluate",
+        help="a machine whose axes name one part per slot (catalog.require): the "
+        "stiffness at the tool with every link, the frequencies, the machine limits",
+    )
     e.add_argument("machine", help="machine YAML file, every axis's parts named")
     e.add_argument("--json", metavar="FILE", help="write the machine as JSON ('-' for stdout)")
     add_html_report(e, "the machine: the stiffness chain at the tool, every axis, the frequencies")
     e.set_defaults(func=cmd_machine_evaluate)
-    c = msub.add_parser("compare", help="machines side by side: each a machine file (solved now) or a machine "
-                        "result JSON (from machine solve --json)")
-    c.add_argument("machines", nargs="+", metavar="FILE", help="machine YAML files or machine result JSON files")
-    c.add_argument("--json", metavar="FILE", help="write the machines' results as one JSON list ('-' for stdout)")
+    c = msub.add_parser(
+        "compare",
+        help="machines side by side: each a machine file (solved now) or a machine "
+        "result JSON (from machine solve --json)",
+    )
+    c.add_argument(
+        "machines",
+        nargs="+",
+        metavar="FILE",
+        help="machine YAML files or machine result JSON files",
+    )
+    c.add_argument(
+        "--json",
+        metavar="FILE",
+        help="write the machines' results as one JSON list ('-' for stdout)",
+    )
     c.set_defaults(func=cmd_machine_compare)
-    st = msub.add_parser("study", help="sweeps over a machine file: one joint solve per case, resumable, "
-                         "locally or on a Dask cluster")
+    st = msub.add_parser(
+        "study",
+        help="sweeps over a machine file: one joint solve per case, resumable, "
+        "locally or on a Dask cluster",
+    )
     st.add_argument("study", help="machine study YAML file (base: a machine file)")
-    st.add_argument("--out", metavar="DIR", help="output directory (default: <study file stem>-results)")
-    st.add_argument("--workers", type=int, metavar="N",
-                    help="local worker processes (default: all cores; 0 solves in this process)")
-    st.add_argument("--scheduler", metavar="ADDRESS",
-                    help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])")
-    st.add_argument("--resume", action="store_true",
-                    help="continue an interrupted study in --out, solving only the missing cases")
-    st.add_argument("--overwrite", action="store_true",
-                    help="solve every case again: the case results already in --out are deleted first")
+    st.add_argument(
+        "--out", metavar="DIR", help="output directory (default: <study file stem>-results)"
+    )
+    st.add_argument(
+        "--workers",
+        type=int,
+        metavar="N",
+        help="local worker processes (default: all cores; 0 solves in this process)",
+    )
+    st.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])",
+    )
+    st.add_argument(
+        "--resume",
+        action="store_true",
+        help="continue an interrupted study in --out, solving only the missing cases",
+    )
+    st.add_argument(
+        "--overwrite",
+        action="store_true",
+        help="solve every case again: the case results already in --out are deleted first",
+    )
     st.add_argument("--quiet", action="store_true", help="no progress bar")
     st.set_defaults(func=cmd_machine_study)
 
@@ -63,7 +106,11 @@ def cmd_machine_solve(args) -> int:
         from ..report.html import write_page
         from ..report.machine_html import machine_page
 
-        write_page(machine_page(res, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
+        write_page(
+            machine_page(res, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
     return EXIT_OK if res.best is not None else EXIT_NEGATIVE
 
 
@@ -82,7 +129,9 @@ def cmd_machine_study(args) -> int:
     if args.workers is not None and args.workers < 0:
         raise InputError(f"--workers must be 0 or more, got {args.workers}")
     if args.scheduler is not None and args.workers is not None:
-        raise InputError("--workers and --scheduler exclude each other (the cluster has its own workers)")
+        raise InputError(
+            "--workers and --scheduler exclude each other (the cluster has its own workers)"
+        )
     if args.scheduler is not None and not args.scheduler.strip():
         raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
     study = load_machine_study(args.study)
@@ -91,23 +140,42 @@ def cmd_machine_study(args) -> int:
         clear_cases(out)
     bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
     try:
-        s = run_machine_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,
-                              progress=bar)
+        s = run_machine_study(
+            study,
+            out,
+            workers=args.workers,
+            scheduler=args.scheduler,
+            resume=args.resume,
+            progress=bar,
+        )
     except KeyboardInterrupt:
         bar.close()
-        print(one_line(f"interrupted: finished cases are saved in {out}/cases; continue with "
-                       f"'axisopt machine study {args.study} --out {out} --resume'"), file=sys.stderr)
+        print(
+            one_line(
+                f"interrupted: finished cases are saved in {out}/cases; continue with "
+                f"'axisopt machine study {args.study} --out {out} --resume'"
+            ),
+            file=sys.stderr,
+        )
         return 130
     finally:
         bar.close()
-    print(f"machine study {study.name}: {s.total} cases; {s.solved} solved now on {s.backend}"
-          + (f" ({s.workers} workers)" if s.workers else "")
-          + (f", {s.resumed} kept from an earlier run" if s.resumed else "") + f"; {s.failed} without a machine")
+    print(
+        f"machine study {study.name}: {s.total} cases; {s.solved} solved now on {s.backend}"
+        + (f" ({s.workers} workers)" if s.workers else "")
+        + (f", {s.resumed} kept from an earlier run" if s.resumed else "")
+        + f"; {s.failed} without a machine"
+    )
     for name, path in s.files.items():
         print(f"  {name}: {path}")
     if s.lost or s.died:
-        print(one_line(f"note: {s.lost + s.died} cases not solved ({s.lost_reason or 'worker died'}); rerun with "
-                       f"'axisopt machine study {args.study} --out {out} --resume'"), file=sys.stderr)
+        print(
+            one_line(
+                f"note: {s.lost + s.died} cases not solved ({s.lost_reason or 'worker died'}); rerun with "
+                f"'axisopt machine study {args.study} --out {out} --resume'"
+            ),
+            file=sys.stderr,
+        )
     return EXIT_NEGATIVE if s.lost or s.died or s.failed else EXIT_OK
 
 
@@ -156,11 +224,21 @@ def cmd_machine_evaluate(args) -> int:
     if not (args.json and is_stdout(args.json)):
         show(text)
     if args.json:
-        write_json({"machine": ev.machine.name, "failed": [{"axis": n, "carried_kg": c} for n, c in ev.failed],
-                    "design": None if ev.design is None else design_dict(ev.design)}, args.json)
+        write_json(
+            {
+                "machine": ev.machine.name,
+                "failed": [{"axis": n, "carried_kg": c} for n, c in ev.failed],
+                "design": None if ev.design is None else design_dict(ev.design),
+            },
+            args.json,
+        )
     if args.report:
         from ..report.html import write_page
         from ..report.machine_html import evaluation_page
 
-        write_page(evaluation_page(ev, text, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
+        write_page(
+            evaluation_page(ev, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
     return EXIT_OK if ev.design is not None and ev.design.feasible else EXIT_NEGATIVE

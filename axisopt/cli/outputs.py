@@ -18,12 +18,38 @@ EXTRA_OUTPUTS = ("--ss",)
 # options that name a figure (their extension must be one matplotlib writes)
 PLOT_OPTIONS = ("--plot", "--frf")
 # argparse attributes that are never paths
-_NOT_PATHS = {"command", "func", "method", "plotly", "machine", "kind", "vendor", "status", "fits", "diameter",
-              "lead", "preload_class", "effects", "gain", "scheduler", "time_limit", "top", "workers"}
+_NOT_PATHS = {
+    "command",
+    "func",
+    "method",
+    "plotly",
+    "machine",
+    "kind",
+    "vendor",
+    "status",
+    "fits",
+    "diameter",
+    "lead",
+    "preload_class",
+    "effects",
+    "gain",
+    "scheduler",
+    "time_limit",
+    "top",
+    "workers",
+}
 # what each output is, in the error (the writers' own words)
-_WHAT = {"--json": "JSON", "--csv": "CSV", "--plot": "plot", "--frf": "plot", "--report": "HTML report",
-         "--save-design": "design YAML", "--save-calibration": "calibration", "--ss": "state-space file",
-         "--out": "file"}
+_WHAT = {
+    "--json": "JSON",
+    "--csv": "CSV",
+    "--plot": "plot",
+    "--frf": "plot",
+    "--report": "HTML report",
+    "--save-design": "design YAML",
+    "--save-calibration": "calibration",
+    "--ss": "state-space file",
+    "--out": "file",
+}
 # a --save-design directory gets 1.yaml, 2.yaml ... (01.yaml from 10 designs)
 _RANKED_YAML = re.compile(r"^\d+\.yaml$")
 
@@ -66,8 +92,11 @@ def _inputs(args, outputs: set) -> list:
                 found.append((name, v))
             elif os.path.isdir(v):
                 try:
-                    found += [(name, os.path.join(v, f)) for f in sorted(os.listdir(v))
-                              if _regular(os.path.join(v, f))]
+                    found += [
+                        (name, os.path.join(v, f))
+                        for f in sorted(os.listdir(v))
+                        if _regular(os.path.join(v, f))
+                    ]
                 except OSError:
                     pass
     return found
@@ -77,9 +106,15 @@ _same = same_file
 
 
 def _named(name: str) -> str:
-    return {"problem": "the problem file", "design": "the design file", "files": "an input file",
-            "study": "the study file", "data": "a data file", "calibration": "the calibration file",
-            "catalogs": "a catalog file"}.get(name, f"an input ({name})")
+    return {
+        "problem": "the problem file",
+        "design": "the design file",
+        "files": "an input file",
+        "study": "the study file",
+        "data": "a data file",
+        "calibration": "the calibration file",
+        "catalogs": "a catalog file",
+    }.get(name, f"an input ({name})")
 
 
 def check_outputs(args) -> None:
@@ -87,8 +122,11 @@ def check_outputs(args) -> None:
     two outputs naming one file, a file output whose directory is missing or not writable, a figure with an
     extension matplotlib does not write, a directory output that is a file."""
     command = getattr(args, "command", "") or ""
-    given = [(o, getattr(args, _attr(o))) for o in OUTPUT_OPTIONS + EXTRA_OUTPUTS
-             if isinstance(getattr(args, _attr(o), None), str)]
+    given = [
+        (o, getattr(args, _attr(o)))
+        for o in OUTPUT_OPTIONS + EXTRA_OUTPUTS
+        if isinstance(getattr(args, _attr(o), None), str)
+    ]
     if not given:
         return
     inputs = _inputs(args, {_attr(o) for o, _ in given})
@@ -96,37 +134,58 @@ def check_outputs(args) -> None:
     for option, value in given:
         if _is_dir_output(command, option, value):
             if os.path.exists(value) and not os.path.isdir(value):
-                raise InputError("cannot create output directory: a file of that name is in the way",
-                                 source=value, where=option)
+                raise InputError(
+                    "cannot create output directory: a file of that name is in the way",
+                    source=value,
+                    where=option,
+                )
             for name, path in inputs:
-                if option == "--save-design" and _RANKED_YAML.match(os.path.basename(path)) and \
-                        _same(os.path.dirname(path) or ".", value):
-                    raise InputError(f"would write over {_named(name)} {path} of this command; give another "
-                                     f"directory", where=option)
+                if (
+                    option == "--save-design"
+                    and _RANKED_YAML.match(os.path.basename(path))
+                    and _same(os.path.dirname(path) or ".", value)
+                ):
+                    raise InputError(
+                        f"would write over {_named(name)} {path} of this command; give another "
+                        f"directory",
+                        where=option,
+                    )
             dirs.append((option, value))
             continue
         if option in PLOT_OPTIONS:  # save_figure refuses these too, but only after the work
             ext = os.path.splitext(value)[1].lower().lstrip(".")
             if ext not in PLOT_FORMATS:
-                raise InputError(f"plot file needs one of the extensions {', '.join(PLOT_FORMATS)}",
-                                 source=value, where=option)
+                raise InputError(
+                    f"plot file needs one of the extensions {', '.join(PLOT_FORMATS)}",
+                    source=value,
+                    where=option,
+                )
         how = output_target(value)
         if how == "atomic":
             for name, path in inputs:
                 if _same(path, value):
-                    raise InputError(f"would overwrite {_named(name)} {path} of this command; give another "
-                                     f"file name", where=option)
+                    raise InputError(
+                        f"would overwrite {_named(name)} {path} of this command; give another "
+                        f"file name",
+                        where=option,
+                    )
             for other, earlier in files:
                 if os.path.realpath(earlier) == os.path.realpath(value) or _same(earlier, value):
-                    raise InputError(f"{other} and {option} name the same file {value}; give each its own",
-                                     where=option)
+                    raise InputError(
+                        f"{other} and {option} name the same file {value}; give each its own",
+                        where=option,
+                    )
             files.append((option, value))
     for option, value in dirs:
         for other, f in files:
             if os.path.realpath(f) == os.path.realpath(value):
-                raise InputError(f"{other} writes a file where {option} wants a directory ({value}); give each "
-                                 f"its own name", where=option)
-    # directories the command itself creates first (a --report or --out directory and its parents): a file output
+                raise InputError(
+                    f"{other} writes a file where {option} wants a directory ({value}); give each "
+                    f"its own name",
+                    where=option,
+                )
+    # directories the command itself creates first (a --report or --out directory and its parents):
+    # a file output
     # in one of them is written after they exist
     made = set()
     for _, value in dirs:

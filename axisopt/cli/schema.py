@@ -10,8 +10,11 @@ from .common import EXIT_OK
 
 
 def register(sub) -> None:
-    p = sub.add_parser("schema", help="JSON Schema of a design, problem, study, calibration, machine or machine "
-                       "study YAML (for editors)")
+    p = sub.add_parser(
+        "schema",
+        help="JSON Schema of a design, problem, study, calibration, machine or machine "
+        "study YAML (for editors)",
+    )
     p.add_argument("kind", choices=FILE_KINDS, help="the kind of YAML file")
     p.add_argument("--out", metavar="FILE", help="write the schema to FILE (default: print it)")
     p.set_defaults(func=cmd_schema)

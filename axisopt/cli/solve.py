@@ -37,25 +37,46 @@ class _MethodNames:
 
 
 def register(sub) -> None:
-    s = sub.add_parser("solve", help="choose parts and preload that maximise stiffness/frequency (proven)")
+    s = sub.add_parser(
+        "solve", help="choose parts and preload that maximise stiffness/frequency (proven)"
+    )
     s.add_argument("problem", help="problem YAML file")
-    # the choices are read when a --method is given or the help printed: a metavar, so that building the parser
+    # the choices are read when a --method is given or the help printed: a metavar, so that building
+    # the parser
     # does not list them (argparse would import the search at every start-up)
-    s.add_argument("--method", choices=_MethodNames(), default="default", metavar="METHOD",
-                   help="%(choices)s; default: proven optimum (bounds); exhaustive: every combination; bonmin: "
-                        "MINLP; scip: global MINLP (pip install 'axisopt[scip]')")
+    s.add_argument(
+        "--method",
+        choices=_MethodNames(),
+        default="default",
+        metavar="METHOD",
+        help="%(choices)s; default: proven optimum (bounds); exhaustive: every combination; bonmin: "
+        "MINLP; scip: global MINLP (pip install 'axisopt[scip]')",
+    )
     s.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     s.add_argument("--plot", metavar="FILE.png", help="plot the best designs (or the Pareto front)")
-    s.add_argument("--top", type=int, default=5, metavar="N", help="designs to show (best + runners-up)")
-    s.add_argument("--time-limit", type=float, default=100.0, metavar="S",
-                   help="time limit [s] of every method (default 100): the best found so far, its gap, and a "
-                   "note when it cuts the search")
-    s.add_argument("--no-sensitivity", action="store_true",
-                   help="skip re-solving with each limit relaxed by 10 %%")
-    s.add_argument("--save-design", metavar="FILE.yaml|DIR",
-                   help="write the best design as a design YAML (evaluate and compare read it); a directory "
-                        "gets the --top designs shown (or every Pareto point) as 1.yaml, 2.yaml, ... (01.yaml from "
-                        "10); the nut preload in round figures that keep every limit met")
+    s.add_argument(
+        "--top", type=int, default=5, metavar="N", help="designs to show (best + runners-up)"
+    )
+    s.add_argument(
+        "--time-limit",
+        type=float,
+        default=100.0,
+        metavar="S",
+        help="time limit [s] of every method (default 100): the best found so far, its gap, and a "
+        "note when it cuts the search",
+    )
+    s.add_argument(
+        "--no-sensitivity",
+        action="store_true",
+        help="skip re-solving with each limit relaxed by 10 %%",
+    )
+    s.add_argument(
+        "--save-design",
+        metavar="FILE.yaml|DIR",
+        help="write the best design as a design YAML (evaluate and compare read it); a directory "
+        "gets the --top designs shown (or every Pareto point) as 1.yaml, 2.yaml, ... (01.yaml from "
+        "10); the nut preload in round figures that keep every limit met",
+    )
     add_html_report(s, "the result")
     s.set_defaults(func=cmd_solve)
 
@@ -73,23 +94,38 @@ def cmd_solve(args) -> int:
     check_html_report(args.report, args.plotly)
     problem = load_problem(args.problem)
     if args.save_design and _single_file(args.save_design) and problem.objective.mode == "pareto":
-        raise InputError("a Pareto front has several designs: give a directory, not a .yaml file",
-                         where="--save-design")
+        raise InputError(
+            "a Pareto front has several designs: give a directory, not a .yaml file",
+            where="--save-design",
+        )
     if problem.drives is not None:
         return _solve_drive_types(args, problem)
-    res = solve(problem, args.method, top=args.top, time_limit=args.time_limit,
-                sensitivities=not args.no_sensitivity)
+    res = solve(
+        problem,
+        args.method,
+        top=args.top,
+        time_limit=args.time_limit,
+        sensitivities=not args.no_sensitivity,
+    )
     if res.pareto is None:  # the drive types the catalogs offer by default (search.drivedefault)
         from ..search.drivedefault import offer
 
         other = offer(problem, res, args.method, top=args.top).result
-        files = [f"--{o.replace('_', '-')}" for o in ("plot", "save_design", "report") if getattr(args, o)]
+        files = [
+            f"--{o.replace('_', '-')}"
+            for o in ("plot", "save_design", "report")
+            if getattr(args, o)
+        ]
         if other is not None and not files:
             return _show_drive_types(args, other)
-        if other is not None:  # the files are made for screw drives: the best screw drive's, said so
-            print(f"axisopt: a {other.best.drive_type} design beats the screw drive "
-                  f"({other.best.objective:.6g} {other.objective_unit}); {', '.join(files)} "
-                  "written for the best screw drive (without them the answer shows it)", file=sys.stderr)
+        # the files are made for screw drives: the best screw drive's, said so
+        if other is not None:
+            print(
+                f"axisopt: a {other.best.drive_type} design beats the screw drive "
+                f"({other.best.objective:.6g} {other.objective_unit}); {', '.join(files)} "
+                "written for the best screw drive (without them the answer shows it)",
+                file=sys.stderr,
+            )
     quiet = stdout_taken(args.json, args.save_design)
     text = format_result(res, top=args.top, problem=problem) if not quiet or args.report else ""
     if not quiet:
@@ -115,27 +151,40 @@ def cmd_solve(args) -> int:
 
             cands = [res.best] + list(res.runners_up)
             parts = [{"mounting": c.mounting, **c.parts()} for c in cands]
-            labels = distinct_labels(parts, [f"#{c.rank}" for c in cands]) if len(cands) > 1 else \
-                [" / ".join(str(v) for v in parts[0].values() if v)]
-            plot_profiles([evaluate(c.design) for c in cands], args.plot, labels=labels,
-                          limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")},
-                          margins=problem.margin_map)
+            labels = (
+                distinct_labels(parts, [f"#{c.rank}" for c in cands])
+                if len(cands) > 1
+                else [" / ".join(str(v) for v in parts[0].values() if v)]
+            )
+            plot_profiles(
+                [evaluate(c.design) for c in cands],
+                args.plot,
+                labels=labels,
+                limits={k: v for k, v in problem.limits if k in ("min_stiffness", "min_frequency")},
+                margins=problem.margin_map,
+            )
         if not quiet:
             print(f"\nplot written to {args.plot}")
     if args.report:
         from ..report.html import write_page
         from ..report.htmlpages import solve_page
 
-        write_page(solve_page(res, problem, text, interactive=args.plotly != "no"), args.report,
-                   plotly=args.plotly)
+        write_page(
+            solve_page(res, problem, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
         wrote(args.report, quiet)
     if args.save_design:
         written = save_designs(res, args.save_design, args.top, args.problem, problem)
         if not written:
             print(f"axisopt: no design saved: the problem is {res.status}", file=sys.stderr)
         elif not quiet:
-            print(f"\n{len(written)} design YAML written: {', '.join(written)}" if len(written) < 4 else
-                  f"\n{len(written)} design YAMLs written to {args.save_design}")
+            print(
+                f"\n{len(written)} design YAML written: {', '.join(written)}"
+                if len(written) < 4
+                else f"\n{len(written)} design YAMLs written to {args.save_design}"
+            )
     return exit_code(res.status)
 
 
@@ -146,13 +195,17 @@ def _solve_drive_types(args, problem) -> int:
 
     for opt in ("plot", "save_design", "report"):
         if getattr(args, opt):
-            raise InputError(f"--{opt.replace('_', '-')} is not made for a search over drive types yet",
-                             where=f"--{opt.replace('_', '-')}")
+            raise InputError(
+                f"--{opt.replace('_', '-')} is not made for a search over drive types yet",
+                where=f"--{opt.replace('_', '-')}",
+            )
     if args.method not in ("default", "exhaustive"):
-        raise InputError(f"--method {args.method}: a search over drive types runs the default or exhaustive "
-                         "method", where="--method")
-    res = solve_drive_types(problem, args.method,
-                            top=args.top, time_limit=args.time_limit)
+        raise InputError(
+            f"--method {args.method}: a search over drive types runs the default or exhaustive "
+            "method",
+            where="--method",
+        )
+    res = solve_drive_types(problem, args.method, top=args.top, time_limit=args.time_limit)
     return _show_drive_types(args, res)
 
 
@@ -163,10 +216,13 @@ def _show_drive_types(args, res) -> int:
 
     for opt in ("plot", "save_design", "report"):
         if getattr(args, opt):
-            raise InputError(f"--{opt.replace('_', '-')} is not made for a {res.best.drive_type} design yet "
-                             "(it wins over the screw drive)" if res.best is not None else
-                             f"--{opt.replace('_', '-')} is not made for a search over drive types yet",
-                             where=f"--{opt.replace('_', '-')}")
+            raise InputError(
+                f"--{opt.replace('_', '-')} is not made for a {res.best.drive_type} design yet "
+                "(it wins over the screw drive)"
+                if res.best is not None
+                else f"--{opt.replace('_', '-')} is not made for a search over drive types yet",
+                where=f"--{opt.replace('_', '-')}",
+            )
     quiet = stdout_taken(args.json, None)
     if not quiet:
         show(format_drive_result(res, top=args.top))
@@ -188,30 +244,51 @@ def save_designs(res, target: str, top: int, problem_path: str, problem=None) ->
     from ..fileio import make_output_dir, write_text_atomic
     from ..report.partslist import order_preload
 
-    cands = list(res.pareto.points) if res.pareto is not None else \
-        ([res.best] + list(res.runners_up))[:top] if res.best is not None else []
+    cands = (
+        list(res.pareto.points)
+        if res.pareto is not None
+        else ([res.best] + list(res.runners_up))[:top]
+        if res.best is not None
+        else []
+    )
     cands = [c for c in cands if c is not None and c.design is not None]
-    problem_path = one_line(problem_path)  # a comment line: no line break in a file name may inject YAML
+    # a comment line: no line break in a file name may inject YAML
+    problem_path = one_line(problem_path)
     if not cands:
         return []
     single = _single_file(target)
     out = []
-    paths = [Path(target)] if single else [Path(target) / f"{i:0{len(str(len(cands)))}d}.yaml"
-                                                 for i in range(1, len(cands) + 1)]
+    paths = (
+        [Path(target)]
+        if single
+        else [Path(target) / f"{i:0{len(str(len(cands)))}d}.yaml" for i in range(1, len(cands) + 1)]
+    )
     if not single:
         make_output_dir(target)
     for c, path in zip(cands if not single else cands[:1], paths):
         what = "Pareto point" if res.pareto is not None else f"rank {c.rank}"
-        head = (f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}, "
-                f"{res.objective_label} = {c.objective:.6g} {res.objective_unit}\n") if res.pareto is None else \
-            f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}\n"
+        head = (
+            (
+                f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}, "
+                f"{res.objective_label} = {c.objective:.6g} {res.objective_unit}\n"
+            )
+            if res.pareto is None
+            else f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}\n"
+        )
         ordered = order_preload(c.design, problem)
         design = replace(c.design, nut_preload=ordered.value) if ordered.moved else c.design
-        if ordered.moved and res.pareto is None and problem is not None:  # what the file evaluates to
-            head = (f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}, "
-                    f"{res.objective_label} = {_file_objective(design, problem):.6g} {res.objective_unit} with "
-                    f"the preload as written ({c.objective:.6g} at the search's {c.nut_preload:.5g} N)\n")
-        write_text_atomic(str(path), head + design_to_yaml(design, preload_note=ordered.note()), what="design YAML")
+        # what the file evaluates to
+        if ordered.moved and res.pareto is None and problem is not None:
+            head = (
+                f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}, "
+                f"{res.objective_label} = {_file_objective(design, problem):.6g} {res.objective_unit} with "
+                f"the preload as written ({c.objective:.6g} at the search's {c.nut_preload:.5g} N)\n"
+            )
+        write_text_atomic(
+            str(path),
+            head + design_to_yaml(design, preload_note=ordered.note()),
+            what="design YAML",
+        )
         out.append(str(path))
     return out
 

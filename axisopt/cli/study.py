@@ -12,17 +12,37 @@ from .common import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK, add_html_report, check_h
 def register(sub) -> None:
     s = sub.add_parser("study", help="run a batch trade study (sweeps over a base problem)")
     s.add_argument("study", help="study YAML file")
-    s.add_argument("--out", metavar="DIR", help="output directory (default: <study file stem>-results)")
-    s.add_argument("--workers", type=int, metavar="N",
-                   help="local worker processes (default: all cores; 0 solves in this process)")
-    s.add_argument("--scheduler", metavar="ADDRESS",
-                   help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])")
-    s.add_argument("--resume", action="store_true",
-                   help="continue an interrupted study in --out, solving only the missing cases")
-    s.add_argument("--overwrite", action="store_true",
-                   help="solve every case again: the case results already in --out are deleted first")
-    s.add_argument("--time-limit", type=float, default=100.0, metavar="S",
-                   help="time limit [s] of each case's solve (default 100, as solve's)")
+    s.add_argument(
+        "--out", metavar="DIR", help="output directory (default: <study file stem>-results)"
+    )
+    s.add_argument(
+        "--workers",
+        type=int,
+        metavar="N",
+        help="local worker processes (default: all cores; 0 solves in this process)",
+    )
+    s.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])",
+    )
+    s.add_argument(
+        "--resume",
+        action="store_true",
+        help="continue an interrupted study in --out, solving only the missing cases",
+    )
+    s.add_argument(
+        "--overwrite",
+        action="store_true",
+        help="solve every case again: the case results already in --out are deleted first",
+    )
+    s.add_argument(
+        "--time-limit",
+        type=float,
+        default=100.0,
+        metavar="S",
+        help="time limit [s] of each case's solve (default 100, as solve's)",
+    )
     s.add_argument("--quiet", action="store_true", help="no progress bar")
     add_html_report(s, "the study (figures, cases table, summary)")
     s.set_defaults(func=cmd_study)
@@ -58,8 +78,13 @@ class ProgressBar:
         self.last = now
         eta = p.eta
         left = "--" if eta is None else _hms(eta)
-        print(f"\r  {p.done}/{p.total} cases done, {p.failed} failed, {_hms(p.elapsed)} elapsed, "
-              f"{left} left   ", end="", file=sys.stderr, flush=True)
+        print(
+            f"\r  {p.done}/{p.total} cases done, {p.failed} failed, {_hms(p.elapsed)} elapsed, "
+            f"{left} left   ",
+            end="",
+            file=sys.stderr,
+            flush=True,
+        )
 
     def close(self) -> None:
         if not self.enabled:
@@ -81,7 +106,9 @@ def is_terminal(stream) -> bool:
 
 def _hms(s: float) -> str:
     s = int(round(s))
-    return f"{s // 3600}:{s // 60 % 60:02d}:{s % 60:02d}" if s >= 3600 else f"{s // 60}:{s % 60:02d}"
+    return (
+        f"{s // 3600}:{s // 60 % 60:02d}:{s % 60:02d}" if s >= 3600 else f"{s // 60}:{s % 60:02d}"
+    )
 
 
 def cmd_study(args) -> int:
@@ -101,7 +128,9 @@ def cmd_study(args) -> int:
     if args.workers is not None and args.workers < 0:
         raise InputError(f"--workers must be 0 or more, got {args.workers}")
     if args.scheduler and args.workers is not None:
-        raise InputError("--workers and --scheduler exclude each other (the cluster has its own workers)")
+        raise InputError(
+            "--workers and --scheduler exclude each other (the cluster has its own workers)"
+        )
     out = args.out or f"{Path(args.study).stem}-results"
     if args.scheduler is not None and not args.scheduler.strip():
         raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
@@ -109,43 +138,65 @@ def cmd_study(args) -> int:
         clear_cases(out)
     bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
     try:
-        summary = run_study(study, out, workers=args.workers, scheduler=args.scheduler, resume=args.resume,
-                            progress=bar)
+        summary = run_study(
+            study,
+            out,
+            workers=args.workers,
+            scheduler=args.scheduler,
+            resume=args.resume,
+            progress=bar,
+        )
     except KeyboardInterrupt:
         bar.close()
-        print(one_line(f"interrupted: finished cases are saved in {out}/cases; continue with "
-                       f"'axisopt study {args.study} --out {out} --resume'"), file=sys.stderr)
+        print(
+            one_line(
+                f"interrupted: finished cases are saved in {out}/cases; continue with "
+                f"'axisopt study {args.study} --out {out} --resume'"
+            ),
+            file=sys.stderr,
+        )
         return 130
     finally:  # the bar's line ends before anything else is printed (an error included)
         bar.close()
     s = summary
     if s.redone:
-        print(f"resume: {s.redone} case{'s' if s.redone != 1 else ''} recorded as worker_died (an "
-              f"infrastructure failure) by an earlier run solved again")
-    print(f"study {study.name}: {s.total} cases; {s.solved} solved now in {s.time:.1f} s on {s.backend}"
-          + (f" ({s.workers} workers)" if s.workers else "")
-          + (f", {s.resumed} kept from an earlier run" if s.resumed else "") + f"; {s.failed} failed")
+        print(
+            f"resume: {s.redone} case{'s' if s.redone != 1 else ''} recorded as worker_died (an "
+            f"infrastructure failure) by an earlier run solved again"
+        )
+    print(
+        f"study {study.name}: {s.total} cases; {s.solved} solved now in {s.time:.1f} s on {s.backend}"
+        + (f" ({s.workers} workers)" if s.workers else "")
+        + (f", {s.resumed} kept from an earlier run" if s.resumed else "")
+        + f"; {s.failed} failed"
+    )
     if args.report:
         from ..report.html import write_page
         from ..report.htmlpages import study_page
         from ..study.table import results_table
 
         md = Path(s.files["report"]).read_text(encoding="utf-8") if "report" in s.files else ""
-        write_page(study_page(study, results_table(study, out), md, interactive=args.plotly != "no"),
-                   args.report, plotly=args.plotly)
+        write_page(
+            study_page(study, results_table(study, out), md, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
         s.files["html report"] = args.report
     for name, path in s.files.items():
         print(f"  {name}: {path}")
     notes = []
     if s.died:
-        notes.append(f"{s.died} case{'s' if s.died != 1 else ''} not solved because the worker process died "
-                     f"twice while solving {'them' if s.died != 1 else 'it'} (status worker_died)")
+        notes.append(
+            f"{s.died} case{'s' if s.died != 1 else ''} not solved because the worker process died "
+            f"twice while solving {'them' if s.died != 1 else 'it'} (status worker_died)"
+        )
     if s.lost:
         notes.append(f"{s.lost} cases not run ({s.lost_reason})")
     if notes:
         note = "; ".join(notes) + f"; rerun with 'axisopt study {args.study} --out {out} --resume'"
         print("note: " + one_line(note), file=sys.stderr)  # one line
-    # 1 when any case has no design (infeasible, invalid combination, solver failure, worker died) or was not
+    # 1 when any case has no design (infeasible, invalid combination, solver failure, worker died)
+    # or was not
     # run; 0 only when every case found its design
     return EXIT_NEGATIVE if s.lost or s.died or s.failed else EXIT_OK
 

@@ -18,18 +18,40 @@ from .reader import read_counterbalance, read_twin_drive
 from .sectionkeys import COUNTERBALANCE_SPEC, TWIN_SPEC
 
 MAX_OPTIONS = 12  # options per list (each arrangement is one full solve)
-SEARCH_SPEC = Spec("search", "axis arrangements the search chooses among (a problem only): each arrangement "
-                   "(the product of the lists) is solved and the best design wins", {
-    "counterbalance": Key("list", "vertical axes: counterbalance options, each 'none' or as axis.counterbalance",
-                          minimum=1, maximum=MAX_OPTIONS,
-                          items=Key("one_of", options=(Key("choice", "no counterbalance", choices=("none",)),
-                                                       Key("section", spec=COUNTERBALANCE_SPEC)))),
-    "twin_drive": Key("list", "horizontal axes: twin-drive options, each 'none' (one drive) or as axis.twin_drive",
-                      minimum=1, maximum=MAX_OPTIONS,
-                      items=Key("one_of", options=(Key("choice", "one drive", choices=("none",)),
-                                                   Key("section", spec=TWIN_SPEC)))),
-    **DRIVE_KEYS,
-})
+SEARCH_SPEC = Spec(
+    "search",
+    "axis arrangements the search chooses among (a problem only): each arrangement "
+    "(the product of the lists) is solved and the best design wins",
+    {
+        "counterbalance": Key(
+            "list",
+            "vertical axes: counterbalance options, each 'none' or as axis.counterbalance",
+            minimum=1,
+            maximum=MAX_OPTIONS,
+            items=Key(
+                "one_of",
+                options=(
+                    Key("choice", "no counterbalance", choices=("none",)),
+                    Key("section", spec=COUNTERBALANCE_SPEC),
+                ),
+            ),
+        ),
+        "twin_drive": Key(
+            "list",
+            "horizontal axes: twin-drive options, each 'none' (one drive) or as axis.twin_drive",
+            minimum=1,
+            maximum=MAX_OPTIONS,
+            items=Key(
+                "one_of",
+                options=(
+                    Key("choice", "one drive", choices=("none",)),
+                    Key("section", spec=TWIN_SPEC),
+                ),
+            ),
+        ),
+        **DRIVE_KEYS,
+    },
+)
 
 
 def _options(sec: Section, key: str, axis, reader) -> list:
@@ -40,7 +62,9 @@ def _options(sec: Section, key: str, axis, reader) -> list:
     if not isinstance(node.value, list) or not node.value:
         raise sec.error(key, f"expected a list of options (e.g. [none, ...]), got {node!r}"[:200])
     if len(node.value) > MAX_OPTIONS:
-        raise sec.error(key, f"{len(node.value)} options; at most {MAX_OPTIONS} (each arrangement is one solve)")
+        raise sec.error(
+            key, f"{len(node.value)} options; at most {MAX_OPTIONS} (each arrangement is one solve)"
+        )
     kw = {"orientation": axis.orientation, "moving_mass": axis.moving_mass}
     out = []
     for i, item in enumerate(node.value):
@@ -48,9 +72,15 @@ def _options(sec: Section, key: str, axis, reader) -> list:
             out.append(None)
             continue
         if not isinstance(item.value, dict):
-            raise sec.error(key, f"option {i}: expected 'none' or a mapping of keys, got {item!r}"[:200])
-        holder = Section(Node({key: item}, item.line), sec.source, sec.path,
-                         spec=Spec(key, "", {key: AXIS_SPEC.keys[key]}))
+            raise sec.error(
+                key, f"option {i}: expected 'none' or a mapping of keys, got {item!r}"[:200]
+            )
+        holder = Section(
+            Node({key: item}, item.line),
+            sec.source,
+            sec.path,
+            spec=Spec(key, "", {key: AXIS_SPEC.keys[key]}),
+        )
         try:
             out.append(reader(holder, kw))
         except InputError as e:
@@ -63,7 +93,11 @@ def _options(sec: Section, key: str, axis, reader) -> list:
 def _label(cb, tw) -> str:
     parts = []
     if cb is not None:
-        parts.append(f"counterweight {cb.mass:g} kg" if cb.kind == "counterweight" else f"cylinder {cb.force:g} N")
+        parts.append(
+            f"counterweight {cb.mass:g} kg"
+            if cb.kind == "counterweight"
+            else f"cylinder {cb.force:g} N"
+        )
     if tw is not None:
         parts.append(f"twin drive {tw.span * 1e3:g} mm apart, cross carriage {tw.cross_mass:g} kg")
     return ", ".join(parts) or "none"
@@ -74,16 +108,24 @@ def read_arrangements(sec: Section | None, asec: Section, axis) -> tuple:
     beside a single axis key is refused)."""
     if sec is None:
         return ()
-    if not (sec.has("counterbalance") or sec.has("twin_drive")):  # drive types only (design.drivechoice)
+    # drive types only (design.drivechoice)
+    if not (sec.has("counterbalance") or sec.has("twin_drive")):
         sec.done()
         return ()
     for key in ("counterbalance", "twin_drive"):
         if sec.has(key) and asec.has(key):
-            raise sec.error(key, f"axis.{key} and search.{key} both given: list the options in search.{key} only")
+            raise sec.error(
+                key,
+                f"axis.{key} and search.{key} both given: list the options in search.{key} only",
+            )
     cbs = _options(sec, "counterbalance", axis, read_counterbalance)
     tws = _options(sec, "twin_drive", axis, read_twin_drive)
     sec.done()
-    return tuple((_label(cb, tw), replace(axis, counterbalance=cb, twin_drive=tw)) for cb in cbs for tw in tws)
+    return tuple(
+        (_label(cb, tw), replace(axis, counterbalance=cb, twin_drive=tw))
+        for cb in cbs
+        for tw in tws
+    )
 
 
 __all__ = ["SEARCH_SPEC", "read_arrangements"]

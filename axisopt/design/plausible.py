@@ -23,8 +23,10 @@ class Range:
     factor: float  # SI -> display
 
 
-# forces: a feed axis's cutting force is tens of N (a laser head) to about 100 kN (a heavy boring mill); lives: a
-# machine is specified for about 5 000-50 000 h (THK A-704's examples; 20 000 h is the common one).  A force in
+# forces: a feed axis's cutting force is tens of N (a laser head) to about 100 kN (a heavy boring
+# mill); lives: a
+# machine is specified for about 5 000-50 000 h (THK A-704's examples; 20 000 h is the common one).
+# A force in
 # MN, a life in s or min, an acceleration in mm/s^2 read as m/s^2 fall outside.
 RANGES = (
     Range("acceleration", 0.1, 50.0, "m/s^2", 1.0),
@@ -62,7 +64,12 @@ def implausible(values: dict, ranges=RANGES) -> list:
         if v is None or v == 0 or r.low <= v <= r.high:
             continue
         side = "below" if v < r.low else "above"
-        out.append((r.key, f"{fmt(v * r.factor, r.unit)} is far {side} machine-tool practice "
-                           f"({fmt(r.low * r.factor)}-{fmt(r.high * r.factor, r.unit)}): check the value and its "
-                           f"unit"))
+        out.append(
+            (
+                r.key,
+                f"{fmt(v * r.factor, r.unit)} is far {side} machine-tool practice "
+                f"({fmt(r.low * r.factor)}-{fmt(r.high * r.factor, r.unit)}): check the value and its "
+                f"unit",
+            )
+        )
     return out

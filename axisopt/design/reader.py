@@ -37,7 +37,8 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
         if node.value != "auto":
             kw["pretension"] = sec.quantity("pretension", "force", non_negative=True)
     kw["orientation"] = sec.read("orientation")
-    if sec.has("brake") and isinstance(sec.raw("brake").value, bool):  # YAML reads a bare yes/no as a boolean
+    # YAML reads a bare yes/no as a boolean
+    if sec.has("brake") and isinstance(sec.raw("brake").value, bool):
         kw["brake"] = "yes" if sec.raw("brake").value else "no"
     else:
         kw["brake"] = sec.choice("brake", BRAKE_MODES, AXIS_SPEC.keys["brake"].default)
@@ -62,8 +63,11 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
             raise sec.error("scale_grade", "a scale grade needs axis.feedback: linear_scale")
         kw["scale_grade"] = sec.read("scale_grade")
     elif kw["feedback"] == "linear_scale":
-        raise sec.error("feedback", "a linear scale needs its accuracy grade: axis.scale_grade (one of "
-                        "AMO-LMB-3, AMO-LMB-5, HIWIN-PMS)")
+        raise sec.error(
+            "feedback",
+            "a linear scale needs its accuracy grade: axis.scale_grade (one of "
+            "AMO-LMB-3, AMO-LMB-5, HIWIN-PMS)",
+        )
     if sec.has("pitch_compensation"):
         kw["pitch_compensation"] = sec.read("pitch_compensation") is True
     if sec.has("cut_while_accelerating"):
@@ -77,12 +81,22 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     if sec.has("twin_drive"):
         kw["twin_drive"] = read_twin_drive(sec, kw)
     sec.done()
-    cycle_force = max([abs(s.force) for s in kw.get("duty_cycle", ()) if s.force is not None] + [0.0])
+    cycle_force = max(
+        [abs(s.force) for s in kw.get("duty_cycle", ()) if s.force is not None] + [0.0]
+    )
     for key, message in implausible(kw) + implausible({"duty_cycle": cycle_force}, CYCLE_RANGES):
-        warnings.warn(str(InputError(message, source=sec.source, where=sec.where(key))), ImplausibleInput,
-                      stacklevel=2)
-    # a counterbalance or twin drive left out is no assumption of a value: the axis has none (one drive)
-    assumed = tuple(f.name for f in fields(Axis) if f.name not in kw and f.name not in ("counterbalance", "twin_drive"))
+        warnings.warn(
+            str(InputError(message, source=sec.source, where=sec.where(key))),
+            ImplausibleInput,
+            stacklevel=2,
+        )
+    # a counterbalance or twin drive left out is no assumption of a value: the axis has none (one
+    # drive)
+    assumed = tuple(
+        f.name
+        for f in fields(Axis)
+        if f.name not in kw and f.name not in ("counterbalance", "twin_drive")
+    )
     return Axis(**kw), assumed
 
 
@@ -99,14 +113,20 @@ def read_counterbalance(sec: Section, kw: dict) -> Counterbalance | None:
             hint = f"; did you mean '{near[0]}'?" if near else ""
             raise s.error(key, f"unknown key '{s.key_path(key)}'{hint}")
     if kind != "none" and kw.get("orientation") != "vertical":
-        raise sec.error("counterbalance", f"a counterbalance takes the weight of a vertical axis; this axis is "
-                        f"{kw.get('orientation')} (axis.orientation: vertical)")
+        raise sec.error(
+            "counterbalance",
+            f"a counterbalance takes the weight of a vertical axis; this axis is "
+            f"{kw.get('orientation')} (axis.orientation: vertical)",
+        )
     for key in s.keys():
         if key in COUNTERBALANCE_KEYS[kind]:
             continue
         if key in s.spec.keys:
-            raise s.error(key, f"'{key}' does not apply to a {kind} counterbalance (its keys: "
-                          f"{', '.join(COUNTERBALANCE_KEYS[kind])})")
+            raise s.error(
+                key,
+                f"'{key}' does not apply to a {kind} counterbalance (its keys: "
+                f"{', '.join(COUNTERBALANCE_KEYS[kind])})",
+            )
     if kind == "none":
         s.done()
         return None
@@ -116,16 +136,28 @@ def read_counterbalance(sec: Section, kw: dict) -> Counterbalance | None:
             raise s.error("kind", f"a counterweight needs its mass ('{s.key_path('mass')}')")
         head = kw.get("moving_mass")
         if head is not None and mass > head * (1 + 1e-9):
-            raise s.error("mass", f"{mass:g} kg is heavier than the head (axis.moving_mass {head:g} kg): the head "
-                          "would rise with the brake released")
-        out = Counterbalance(kind, mass=mass, efficiency=float(s.read("efficiency", Counterbalance.efficiency)),
-                             chain_mass=s.read("chain_mass", 0.0))
+            raise s.error(
+                "mass",
+                f"{mass:g} kg is heavier than the head (axis.moving_mass {head:g} kg): the head "
+                "would rise with the brake released",
+            )
+        out = Counterbalance(
+            kind,
+            mass=mass,
+            efficiency=float(s.read("efficiency", Counterbalance.efficiency)),
+            chain_mass=s.read("chain_mass", 0.0),
+        )
     else:
         force = s.read("force")
         if force is None:
             raise s.error("kind", f"a balance cylinder needs its force ('{s.key_path('force')}')")
-        out = Counterbalance(kind, force=force, force_at_end=s.read("force_at_end"),
-                             tolerance=s.read("tolerance", 0.0), piston_mass=s.read("piston_mass", 0.0))
+        out = Counterbalance(
+            kind,
+            force=force,
+            force_at_end=s.read("force_at_end"),
+            tolerance=s.read("tolerance", 0.0),
+            piston_mass=s.read("piston_mass", 0.0),
+        )
     s.done()
     return out
 
@@ -139,14 +171,25 @@ def read_twin_drive(sec: Section, kw: dict) -> TwinDrive:
     sub.done()
     orientation = kw.get("orientation", "horizontal")
     if orientation != "horizontal":
-        raise sec.error("twin_drive", f"a twin drive is a horizontal gantry's; this axis is {orientation} (the "
-                        "model has no share of the weight per drive)")
+        raise sec.error(
+            "twin_drive",
+            f"a twin drive is a horizontal gantry's; this axis is {orientation} (the "
+            "model has no share of the weight per drive)",
+        )
     if tw["cross_stroke"] > tw["span"] * (1 + 1e-9):
-        raise sub.error("cross_stroke", f"{tw['cross_stroke'] * 1e3:g} mm is more than the span between the drives "
-                        f"({tw['span'] * 1e3:g} mm): the cross carriage would leave the bridge")
-    if tw.get("upright_mass") is not None and tw["upright_mass"] > kw.get("moving_mass", float("inf")) * (1 + 1e-9):
-        raise sub.error("upright_mass", f"{tw['upright_mass']:g} kg is more than the bridge's axis.moving_mass "
-                        f"({kw['moving_mass']:g} kg) it is part of")
+        raise sub.error(
+            "cross_stroke",
+            f"{tw['cross_stroke'] * 1e3:g} mm is more than the span between the drives "
+            f"({tw['span'] * 1e3:g} mm): the cross carriage would leave the bridge",
+        )
+    if tw.get("upright_mass") is not None and tw["upright_mass"] > kw.get(
+        "moving_mass", float("inf")
+    ) * (1 + 1e-9):
+        raise sub.error(
+            "upright_mass",
+            f"{tw['upright_mass']:g} kg is more than the bridge's axis.moving_mass "
+            f"({kw['moving_mass']:g} kg) it is part of",
+        )
     return TwinDrive(**{k: v for k, v in tw.items() if v is not None})
 
 
@@ -156,16 +199,25 @@ def _check_carriage(sec: Section, kw: dict) -> None:
     length = kw.get("table_length", Axis.table_length)
     width = kw.get("table_width", length)
     if kw.get("block_spacing", 0.0) > length * (1 + 1e-9):
-        raise sec.error("block_spacing", f"{kw['block_spacing'] * 1e3:g} mm is larger than the table "
-                        f"(table_length {length * 1e3:g} mm)")
+        raise sec.error(
+            "block_spacing",
+            f"{kw['block_spacing'] * 1e3:g} mm is larger than the table "
+            f"(table_length {length * 1e3:g} mm)",
+        )
     if kw.get("rail_spacing", 0.0) > width * (1 + 1e-9):
-        raise sec.error("rail_spacing", f"{kw['rail_spacing'] * 1e3:g} mm is larger than the table "
-                        f"(table_width {width * 1e3:g} mm)")
+        raise sec.error(
+            "rail_spacing",
+            f"{kw['rail_spacing'] * 1e3:g} mm is larger than the table "
+            f"(table_width {width * 1e3:g} mm)",
+        )
     blocks, rails = kw.get("guide_blocks", Axis.guide_blocks), kw.get("rails", Axis.rails)
     if blocks % rails or blocks < 2 * rails:
         key = "guide_blocks" if sec.has("guide_blocks") else "rails"
-        raise sec.error(key, f"{blocks} blocks on {rails} rail(s): give every rail the same number of blocks, "
-                        "at least two")
+        raise sec.error(
+            key,
+            f"{blocks} blocks on {rails} rail(s): give every rail the same number of blocks, "
+            "at least two",
+        )
 
 
 def _check_pairs(sec: Section, kw: dict) -> None:
@@ -173,14 +225,22 @@ def _check_pairs(sec: Section, kw: dict) -> None:
     largest (the axial load, or a duty cycle's largest force)."""
     top, mean = kw.get("max_speed"), kw.get("mean_speed")
     if top is not None and mean is not None and mean > top * (1 + 1e-9):
-        raise sec.error("mean_speed", f"{mean * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min): "
-                        "the mean speed over the machine's hours cannot exceed the rapid speed")
+        raise sec.error(
+            "mean_speed",
+            f"{mean * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min): "
+            "the mean speed over the machine's hours cannot exceed the rapid speed",
+        )
     load, mean = kw.get("axial_load"), kw.get("mean_axial_load")
     if load is not None and mean is not None:
-        largest = max([load] + [abs(s.force) for s in kw.get("duty_cycle", ()) if s.force is not None])
+        largest = max(
+            [load] + [abs(s.force) for s in kw.get("duty_cycle", ()) if s.force is not None]
+        )
         if mean > largest * (1 + 1e-9):
-            raise sec.error("mean_axial_load", f"{mean:g} N is more than the largest axial load ({largest:g} N, "
-                            "axis.axial_load or the duty cycle's largest force): a mean cannot exceed it")
+            raise sec.error(
+                "mean_axial_load",
+                f"{mean:g} N is more than the largest axial load ({largest:g} N, "
+                "axis.axial_load or the duty cycle's largest force): a mean cannot exceed it",
+            )
 
 
 def read_duty_cycle(sec: Section, kw: dict) -> tuple:
@@ -199,18 +259,26 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
     for i, item in enumerate(node.value):
         s = Section(item, sec.source, f"{where}[{i}]")
         if s.has("dwell") == s.has("move"):
-            raise InputError("each entry is a 'move' or a 'dwell'", source=sec.source,
-                             where=Section._loc(f"{where}[{i}]", item.line))
+            raise InputError(
+                "each entry is a 'move' or a 'dwell'",
+                source=sec.source,
+                where=Section._loc(f"{where}[{i}]", item.line),
+            )
         s = Section(item, sec.source, f"{where}[{i}]", DWELL_SPEC if s.has("dwell") else MOVE_SPEC)
         force = s.read("force")
         mass = s.read("moving_mass")
         heaviest = kw.get("moving_mass")
         if mass is not None and heaviest is not None and mass > heaviest * (1 + 1e-9):
-            raise s.error("moving_mass", f"{mass:g} kg is heavier than axis.moving_mass ({heaviest:g} kg); give "
-                          "the axis the heaviest mass the table carries (the largest inertia force, the modes, "
-                          "the guides' static load and the brake are taken with it)")
+            raise s.error(
+                "moving_mass",
+                f"{mass:g} kg is heavier than axis.moving_mass ({heaviest:g} kg); give "
+                "the axis the heaviest mass the table carries (the largest inertia force, the modes, "
+                "the guides' static load and the brake are taken with it)",
+            )
         if s.has("dwell"):
-            out.append(motion.Segment("dwell", duration=s.read("dwell"), force=force, moving_mass=mass))
+            out.append(
+                motion.Segment("dwell", duration=s.read("dwell"), force=force, moving_mass=mass)
+            )
         else:
             dist = s.read("move")
             if dist == 0:
@@ -219,16 +287,29 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
                 raise s.error("move", f"{abs(dist) * 1e3:g} mm is longer than the stroke")
             speed = s.read("speed", kw.get("max_speed"))
             top = kw.get("max_speed")
-            if top is not None and speed > top * (1 + 1e-9):  # the speed checks are taken at max_speed
-                raise s.error("speed", f"{speed * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min); "
-                              "raise max_speed to the fastest move (critical speed, DN and bearing speed are "
-                              "checked at it)")
+            # the speed checks are taken at max_speed
+            if top is not None and speed > top * (1 + 1e-9):
+                raise s.error(
+                    "speed",
+                    f"{speed * 60:g} m/min is faster than axis.max_speed ({top * 60:g} m/min); "
+                    "raise max_speed to the fastest move (critical speed, DN and bearing speed are "
+                    "checked at it)",
+                )
             acc = s.read("acceleration", kw.get("acceleration", 0.0))
             if not acc:
                 raise s.error("move", "needs an acceleration (here or in axis.acceleration)")
             jerk = s.read("jerk", kw.get("jerk"))
-            out.append(motion.Segment("move", distance=dist, speed=speed, acceleration=acc, jerk=jerk, force=force,
-                                      moving_mass=mass))
+            out.append(
+                motion.Segment(
+                    "move",
+                    distance=dist,
+                    speed=speed,
+                    acceleration=acc,
+                    jerk=jerk,
+                    force=force,
+                    moving_mass=mass,
+                )
+            )
         s.done()
     return tuple(out)
 
@@ -254,7 +335,8 @@ def inline_part(sec: Section, table: str):
             v = math.nan
         rec[col] = float(v) if kind == "dimensionless" else v
     sec.done()
-    bad = row_problem(table, rec)  # the catalog loader's rules: positive geometry, choices, ordered pairs
+    # the catalog loader's rules: positive geometry, choices, ordered pairs
+    bad = row_problem(table, rec)
     if bad is not None:
         col, msg = bad
         raise sec.error(col, msg if msg.startswith(col) else f"{col} {msg}")
@@ -269,7 +351,11 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
         "bearing": read_part(sec, "bearing", "bearings", catalog),
         "guide": read_part(sec, "guide", "guides", catalog),
     }
-    for slot, table in (("motor", "motors"), ("coupling", "couplings"), ("reduction", "reductions")):
+    for slot, table in (
+        ("motor", "motors"),
+        ("coupling", "couplings"),
+        ("reduction", "reductions"),
+    ):
         if sec.has(slot):
             parts[slot] = read_part(sec, slot, table, catalog)
     pre = sec.read("nut_preload")
@@ -277,20 +363,31 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
     sec.done()
     nut, screw = parts["nut"], parts["screw"]
     if nut["screw_id"] != screw["id"]:
-        raise sec.error("nut", f"nut '{nut['id']}' fits screw '{nut['screw_id']}', not '{screw['id']}'; "
-                        + fitting_nuts(catalog, screw["id"]))
+        raise sec.error(
+            "nut",
+            f"nut '{nut['id']}' fits screw '{nut['screw_id']}', not '{screw['id']}'; "
+            + fitting_nuts(catalog, screw["id"]),
+        )
     if pre is not None and not (nut["preload_min"] - 1e-9 <= pre <= nut["preload_max"] + 1e-9):
-        raise sec.error("nut_preload", f"{pre:.0f} N is outside nut '{nut['id']}' range "
-                        f"{nut['preload_min']:.0f}..{nut['preload_max']:.0f} N")
+        raise sec.error(
+            "nut_preload",
+            f"{pre:.0f} N is outside nut '{nut['id']}' range "
+            f"{nut['preload_min']:.0f}..{nut['preload_max']:.0f} N",
+        )
     parts["nut_preload"] = pre
     if grade is not None:
         t = grade_table()
         if grade not in t.names:
-            raise sec.error("screw_grade", f"unknown grade '{grade}' (JIS B 1192: {', '.join(t.names)})")
+            raise sec.error(
+                "screw_grade", f"unknown grade '{grade}' (JIS B 1192: {', '.join(t.names)})"
+            )
         made = t.orderable(str(screw["vendor"]), str(screw["series"]))
         if grade not in made:
-            raise sec.error("screw_grade", f"screw '{screw['id']}' is not made in grade {grade} (its series: "
-                            f"{' '.join(made)}; catalogs/screw_grades.csv)")
+            raise sec.error(
+                "screw_grade",
+                f"screw '{screw['id']}' is not made in grade {grade} (its series: "
+                f"{' '.join(made)}; catalogs/screw_grades.csv)",
+            )
     parts["screw_grade"] = grade
     return parts
 
@@ -325,7 +422,8 @@ def catalog_for(root: Section, base_dir: Path) -> Catalog:
     return default_catalog(tuple(resolved))
 
 
-PROBLEM_KEYS = ("objective", "limits", "continuous")  # top-level keys of a problem file (axisopt.problem)
+# top-level keys of a problem file (axisopt.problem)
+PROBLEM_KEYS = ("objective", "limits", "continuous")
 
 
 def load_design(path) -> Design:
@@ -336,9 +434,13 @@ def load_design(path) -> Design:
         require_kind(node, str(path), "design")
     root = Section(node, str(path), spec=DESIGN_SPEC)
     problem_key = next((k for k in PROBLEM_KEYS if root.has(k)), None)
-    if problem_key is not None and not root.has("parts"):  # a problem file given where a design is read
-        raise InputError(f"a problem file, not a design (it has '{problem_key}', no 'parts'): size it with "
-                         "`axisopt solve`", source=str(path))
+    # a problem file given where a design is read
+    if problem_key is not None and not root.has("parts"):
+        raise InputError(
+            f"a problem file, not a design (it has '{problem_key}', no 'parts'): size it with "
+            "`axisopt solve`",
+            source=str(path),
+        )
     catalog = catalog_for(root, path.parent)
     name = root.read("name", path.stem)
     root.read("description")
@@ -346,26 +448,50 @@ def load_design(path) -> Design:
     psec = root.read("parts")
     parts = read_parts(psec, catalog)
     root.done()
-    given = [k for k in ("reduction_ratio", "reduction_efficiency", "reduction_inertia") if k not in assumed]
+    given = [
+        k
+        for k in ("reduction_ratio", "reduction_efficiency", "reduction_inertia")
+        if k not in assumed
+    ]
     if parts.get("reduction") is not None and given:
-        raise psec.error("reduction", f"the reduction part sets the ratio, efficiency and inertia: leave "
-                         f"axis.{given[0]} out (it applies only without a reduction part)")
+        raise psec.error(
+            "reduction",
+            f"the reduction part sets the ratio, efficiency and inertia: leave "
+            f"axis.{given[0]} out (it applies only without a reduction part)",
+        )
     if rotating_nut(parts["nut"]) and axis.mounting != "fixed-fixed":
-        raise psec.error("nut", f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: it runs on a stationary "
-                         f"screw fixed at both ends (axis.mounting: fixed-fixed), not {axis.mounting}")
+        raise psec.error(
+            "nut",
+            f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: it runs on a stationary "
+            f"screw fixed at both ends (axis.mounting: fixed-fixed), not {axis.mounting}",
+        )
     if rotating_nut(parts["nut"]) and axis.feedback == "linear_scale":
-        raise psec.error("nut", f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: axis.feedback: "
-                         "linear_scale is not supported on it (its standing screw's positioning rows are the "
-                         "unit's; use the motor encoder)")
+        raise psec.error(
+            "nut",
+            f"nut '{parts['nut']['id']}' is a driven rotating-nut unit: axis.feedback: "
+            "linear_scale is not supported on it (its standing screw's positioning rows are the "
+            "unit's; use the motor encoder)",
+        )
     grade = parts.get("screw_grade")
     if grade is not None and not math.isfinite(grade_table().lead_error(grade, axis.stroke)):
-        raise psec.error("screw_grade", f"grade {grade} has no lead tolerance over a {axis.stroke * 1e3:.0f} mm "
-                         "stroke (THK A-678 Table 1)")
+        raise psec.error(
+            "screw_grade",
+            f"grade {grade} has no lead tolerance over a {axis.stroke * 1e3:.0f} mm "
+            "stroke (THK A-678 Table 1)",
+        )
     if parts.get("motor") is not None and axis.acceleration <= 0 and not axis.duty_cycle:
         raise psec.error("motor", "sizing a motor needs axis.acceleration (or an axis.duty_cycle)")
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)
 
 
-__all__ = ["load_design", "read_axis", "read_counterbalance",
-           "read_duty_cycle", "read_parts", "read_part", "inline_part", "fitting_nuts",
-           "catalog_for"]
+__all__ = [
+    "load_design",
+    "read_axis",
+    "read_counterbalance",
+    "read_duty_cycle",
+    "read_parts",
+    "read_part",
+    "inline_part",
+    "fitting_nuts",
+    "catalog_for",
+]

@@ -16,7 +16,8 @@ from .sectionkeys import TWIN_SPEC
 TWIN_KINDS = {name: k.kind for name, k in TWIN_SPEC.keys.items()}
 
 
-# other units a kind may be written in, where the display unit gives a long figure (3 arcsec is 0.000833333 deg)
+# other units a kind may be written in, where the display unit gives a long figure (3 arcsec is
+# 0.000833333 deg)
 OTHER_UNITS = {"angle": ("arcmin", "arcsec")}
 
 
@@ -25,7 +26,10 @@ def _q(value: float, kind: str) -> str:
     significant digits (then a figure of 1 or more, then the first unit)."""
     units = (DISPLAY_UNITS[kind],) + OTHER_UNITS.get(kind, ())
     figures = [(f"{value / unit_factor(u, kind):.12g}", i) for i, u in enumerate(units)]
-    text, i = min(figures, key=lambda f: (len(f[0].lstrip("-0.").replace(".", "")), abs(float(f[0])) < 1, f[1]))
+    text, i = min(
+        figures,
+        key=lambda f: (len(f[0].lstrip("-0.").replace(".", "")), abs(float(f[0])) < 1, f[1]),
+    )
     return f"{text} {units[i]}"
 
 
@@ -57,7 +61,9 @@ def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
         elif f.name == "counterbalance":
             axis[f.name] = _counterbalance_dict(v)
         elif f.name == "twin_drive":
-            axis[f.name] = {k: _q(getattr(v, k), TWIN_KINDS[k]) for k in TWIN_KINDS if getattr(v, k) is not None}
+            axis[f.name] = {
+                k: _q(getattr(v, k), TWIN_KINDS[k]) for k in TWIN_KINDS if getattr(v, k) is not None
+            }
         else:
             axis[f.name] = v
     parts: dict = {}
@@ -111,8 +117,11 @@ def _segment_dict(sg) -> dict:
     if sg.kind == "dwell":
         d = {"dwell": f"{sg.duration:.12g} s"}
     else:
-        d = {"move": _q(sg.distance, "length"), "speed": _q(sg.speed, "speed"),
-             "acceleration": _q(sg.acceleration, "acceleration")}
+        d = {
+            "move": _q(sg.distance, "length"),
+            "speed": _q(sg.speed, "speed"),
+            "acceleration": _q(sg.acceleration, "acceleration"),
+        }
         if sg.jerk is not None:
             d["jerk"] = _q(sg.jerk, "jerk")
     if sg.force:

@@ -43,7 +43,9 @@ def _entry(p, value, sigma) -> dict:
     }
     if math.isfinite(sigma):
         d["sigma"] = (
-            f"{p.show(sigma):.3g} {p.unit}".strip() if p.unit not in ("", "-") else float(f"{sigma:.3g}")
+            f"{p.show(sigma):.3g} {p.unit}".strip()
+            if p.unit not in ("", "-")
+            else float(f"{sigma:.3g}")
         )
     return d
 
@@ -53,7 +55,9 @@ def calibration_dict(diag, design=None, sources=()) -> dict:
     res = diag.final
     sig = dict(zip([p.name for p in res.params], res.sigma))
     owner = diag.param_owner
-    base = {p.name: _entry(p, res.value(p.name), sig[p.name]) for p in res.params if p.name not in owner}
+    base = {
+        p.name: _entry(p, res.value(p.name), sig[p.name]) for p in res.params if p.name not in owner
+    }
     effects = [
         {
             "name": e.name,
@@ -83,7 +87,9 @@ def write_calibration(d: dict, path) -> dict:
     """Write a calibration record ``d`` (a table's or a time record's) as YAML to ``path``; returns ``d``."""
     from ..fileio import write_text_atomic
 
-    write_text_atomic(path, yaml.safe_dump(d, sort_keys=False, allow_unicode=True), what="calibration")
+    write_text_atomic(
+        path, yaml.safe_dump(d, sort_keys=False, allow_unicode=True), what="calibration"
+    )
     return d
 
 
@@ -106,9 +112,12 @@ def _read(path) -> dict:
     from ..units import parse_quantity
 
     root = Section(read_yaml(path), str(path), spec=CALIBRATION_SPEC)
-    ver = root.number("axisopt_calibration", required=True, integer=True)  # any whole number: a clear message
+    # any whole number: a clear message
+    ver = root.number("axisopt_calibration", required=True, integer=True)
     if ver != FORMAT:
-        raise root.error("axisopt_calibration", f"unsupported calibration format {ver} (expected {FORMAT})")
+        raise root.error(
+            "axisopt_calibration", f"unsupported calibration format {ver} (expected {FORMAT})"
+        )
     design = root.read("design")
     root.read("verdict")
     root.raw("data")
@@ -121,7 +130,10 @@ def _read(path) -> dict:
             if allowed is not None and key not in allowed:
                 near = close_matches(key, sorted(allowed))
                 hint = f"; did you mean '{near[0]}'?" if near else ""
-                raise sec.error(key, f"unknown {where} parameter '{key}'{hint} (known: {', '.join(sorted(allowed))})")
+                raise sec.error(
+                    key,
+                    f"unknown {where} parameter '{key}'{hint} (known: {', '.join(sorted(allowed))})",
+                )
             s = sec.section(key)
             kind = s.choice("kind", tuple(KINDS), required=True)
             if allowed is not None and allowed[key] != kind:
@@ -129,15 +141,21 @@ def _read(path) -> dict:
             raw = s.value("value", required=True)
             v = parse_quantity(raw, kind, source=str(path), key=s.where("value"))
             if v < 0 and kind in NON_NEGATIVE_KINDS or (key in POSITIVE_PARAMS and not v > 0):
-                raise s.error("value", f"'{raw}' is not physical for {key} (must be "
-                                       f"{'positive' if key in POSITIVE_PARAMS else 'non-negative'})")
+                raise s.error(
+                    "value",
+                    f"'{raw}' is not physical for {key} (must be "
+                    f"{'positive' if key in POSITIVE_PARAMS else 'non-negative'})",
+                )
             out[key] = v
             s.raw("sigma")
             s.done()
         return out
 
-    base = values(root.read("baseline") or Section(_empty(), str(path), spec=BASELINE_SPEC), BASELINE_KINDS,
-                  "baseline")
+    base = values(
+        root.read("baseline") or Section(_empty(), str(path), spec=BASELINE_SPEC),
+        BASELINE_KINDS,
+        "baseline",
+    )
     effects = []
     node = root.raw("effects")
     if node is not None and node.value is not None and not isinstance(node.value, list):
@@ -147,10 +165,15 @@ def _read(path) -> dict:
         s = Section(item, str(path), "effects", EFFECT_SPEC)
         node = s.raw("name", None, required=True)  # the library now (effects may be registered)
         name = node.value
-        if not isinstance(name, str) or name not in lib:  # the hint first: the library is long, an error one line
+        # the hint first: the library is long, an error one line
+        if not isinstance(name, str) or name not in lib:
             near = close_matches(str(name), list(lib), n=1)
-            raise s.error("name", f"unknown effect '{str(name)[:60]}'" + (f"; did you mean '{near[0]}'?" if near
-                                                                          else "") + f" (known: {', '.join(lib)})")
+            raise s.error(
+                "name",
+                f"unknown effect '{str(name)[:60]}'"
+                + (f"; did you mean '{near[0]}'?" if near else "")
+                + f" (known: {', '.join(lib)})",
+            )
         ps = s.read("parameters")
         vals = values(ps)
         if not vals:
@@ -161,54 +184,111 @@ def _read(path) -> dict:
     return {"design": design, "baseline": base, "effects": effects, "source": str(path)}
 
 
-# Calibrated values that cannot be negative (a stiffness, damping coefficient, modulus, mass ...) and the
+# Calibrated values that cannot be negative (a stiffness, damping coefficient, modulus, mass ...)
+# and the
 # ones that must be positive: a negative or zero one is refused, not applied.
-NON_NEGATIVE_KINDS = frozenset({"stiffness", "damping", "pressure", "mass", "inertia", "torsional_stiffness"})
+NON_NEGATIVE_KINDS = frozenset(
+    {"stiffness", "damping", "pressure", "mass", "inertia", "torsional_stiffness"}
+)
 POSITIVE_PARAMS = frozenset({"screw_modulus", "damping_ratio"})
 
-# The baseline parameters a calibration may carry (identify.measure.baseline_params) and their kinds.
-BASELINE_KINDS = {"screw_modulus": "pressure", "coulomb_friction": "force", "damping_ratio": "dimensionless"}
+# The baseline parameters a calibration may carry (identify.measure.baseline_params) and their
+# kinds.
+BASELINE_KINDS = {
+    "screw_modulus": "pressure",
+    "coulomb_friction": "force",
+    "damping_ratio": "dimensionless",
+}
 
 
-# ------------------------------------------------------------------------------ the YAML keys (one table)
-# The one declaration of a calibration file's keys: _read reads them by it and `axisopt schema calibration`
-# writes it out.  An effect's parameter names are the effect's own (the library checks them on apply).
+# ------------------------------------------------------------------------------ the YAML keys (one
+# table)
+# The one declaration of a calibration file's keys: _read reads them by it and `axisopt schema
+# calibration`
+# writes it out.  An effect's parameter names are the effect's own (the library checks them on
+# apply).
+
 
 def _param_spec(name: str, doc: str, kind: str | None) -> Spec:
     """A calibrated value: {value, sigma, kind}; ``kind`` None: any units.KINDS kind, named in the file."""
     positive = name in POSITIVE_PARAMS
-    return Spec(name, doc, {
-        "value": Key("quantity", "the calibrated value, with a unit of its kind" + (
-            " (positive)" if positive else " (not negative)" if kind in NON_NEGATIVE_KINDS else ""),
-            required=True, kind=kind, positive=positive, non_negative=not positive and kind in NON_NEGATIVE_KINDS),
-        "sigma": Key("any", "its standard uncertainty (informational)"),
-        "kind": Key("choice", "the quantity kind the value is read as", required=True,
-                    choices=(kind,) if kind is not None else tuple(KINDS)),
-    })
+    return Spec(
+        name,
+        doc,
+        {
+            "value": Key(
+                "quantity",
+                "the calibrated value, with a unit of its kind"
+                + (
+                    " (positive)"
+                    if positive
+                    else " (not negative)"
+                    if kind in NON_NEGATIVE_KINDS
+                    else ""
+                ),
+                required=True,
+                kind=kind,
+                positive=positive,
+                non_negative=not positive and kind in NON_NEGATIVE_KINDS,
+            ),
+            "sigma": Key("any", "its standard uncertainty (informational)"),
+            "kind": Key(
+                "choice",
+                "the quantity kind the value is read as",
+                required=True,
+                choices=(kind,) if kind is not None else tuple(KINDS),
+            ),
+        },
+    )
 
 
-BASELINE_SPEC = Spec("baseline", "calibrated baseline parameters (those diagnose fits)", {
-    name: Key("section", spec=_param_spec(name, f"baseline {name.replace('_', ' ')}", kind))
-    for name, kind in BASELINE_KINDS.items()})
-PARAMETERS_SPEC = Spec("parameters", "the effect's calibrated parameters, by the effect's parameter names", {},
-                       extra=Key("section", spec=_param_spec("parameter", "a calibrated effect parameter", None)),
-                       extra_doc="a parameter name of the effect")
-EFFECT_SPEC = Spec("effect", "an accepted effect with its calibrated parameters", {
-    "name": Key("choice", "the effect (axisopt's effect library)", required=True, choices=tuple(all_effects())),
-    "parameters": Key("section", required=True, spec=PARAMETERS_SPEC),
-})
-CALIBRATION_SPEC = Spec("calibration", "a calibration saved by axisopt diagnose (applied by evaluate "
-                        "--calibration)", {
-    "axisopt_calibration": Key("number", "format version", required=True, integer=True, minimum=FORMAT,
-                               maximum=FORMAT),
-    "design": Key("string", "name of the design the calibration was fitted on (applies to that design only)"),
-    "data": Key("any", "measurement files the fit used (informational)"),
-    "verdict": Key("string", "diagnose's verdict (informational)"),
-    "baseline": Key("section", spec=BASELINE_SPEC),
-    "effects": Key("list", "accepted effects", items=Key("section", spec=EFFECT_SPEC)),
-    "applied": Key("any", "what evaluate applies (informational, recomputed on apply)"),
-    "not_applied": Key("any", "what evaluate cannot represent (informational)"),
-})
+BASELINE_SPEC = Spec(
+    "baseline",
+    "calibrated baseline parameters (those diagnose fits)",
+    {
+        name: Key("section", spec=_param_spec(name, f"baseline {name.replace('_', ' ')}", kind))
+        for name, kind in BASELINE_KINDS.items()
+    },
+)
+PARAMETERS_SPEC = Spec(
+    "parameters",
+    "the effect's calibrated parameters, by the effect's parameter names",
+    {},
+    extra=Key("section", spec=_param_spec("parameter", "a calibrated effect parameter", None)),
+    extra_doc="a parameter name of the effect",
+)
+EFFECT_SPEC = Spec(
+    "effect",
+    "an accepted effect with its calibrated parameters",
+    {
+        "name": Key(
+            "choice",
+            "the effect (axisopt's effect library)",
+            required=True,
+            choices=tuple(all_effects()),
+        ),
+        "parameters": Key("section", required=True, spec=PARAMETERS_SPEC),
+    },
+)
+CALIBRATION_SPEC = Spec(
+    "calibration",
+    "a calibration saved by axisopt diagnose (applied by evaluate --calibration)",
+    {
+        "axisopt_calibration": Key(
+            "number", "format version", required=True, integer=True, minimum=FORMAT, maximum=FORMAT
+        ),
+        "design": Key(
+            "string",
+            "name of the design the calibration was fitted on (applies to that design only)",
+        ),
+        "data": Key("any", "measurement files the fit used (informational)"),
+        "verdict": Key("string", "diagnose's verdict (informational)"),
+        "baseline": Key("section", spec=BASELINE_SPEC),
+        "effects": Key("list", "accepted effects", items=Key("section", spec=EFFECT_SPEC)),
+        "applied": Key("any", "what evaluate applies (informational, recomputed on apply)"),
+        "not_applied": Key("any", "what evaluate cannot represent (informational)"),
+    },
+)
 
 
 class _Reads(dict):
@@ -277,14 +357,19 @@ def calibrate_design(design, cal) -> tuple:
         try:
             out = lib[name].calibrate(vals, design)
         except KeyError as exc:
-            raise InputError(f"effect '{name}' needs parameter '{exc.args[0]}' (given: {', '.join(sorted(vals))})",
-                             source=cal.get("source"),
-                             where=where[0] if where else None) from None
+            raise InputError(
+                f"effect '{name}' needs parameter '{exc.args[0]}' (given: {', '.join(sorted(vals))})",
+                source=cal.get("source"),
+                where=where[0] if where else None,
+            ) from None
         unused = sorted(set(vals) - vals.read)
         if out is not None and unused:
-            raise InputError(f"effect '{name}' has no parameter '{unused[0]}' (it uses "
-                             f"{', '.join(sorted(vals.read))})", source=cal.get("source"),
-                             where=where[0] if where else None)
+            raise InputError(
+                f"effect '{name}' has no parameter '{unused[0]}' (it uses "
+                f"{', '.join(sorted(vals.read))})",
+                source=cal.get("source"),
+                where=where[0] if where else None,
+            )
         if out is None:
             skipped.append(f"{name}: not representable in evaluate ({lib[name].title})")
         else:
@@ -309,8 +394,11 @@ def apply_calibration(design, path):
     """Read a calibration YAML saved by ``axisopt diagnose`` and return the calibrated Design."""
     cal = _read(path)
     if cal["design"] is not None and cal["design"] != design.name:
-        raise InputError(f"calibration is for design '{cal['design']}', not '{design.name}' (a calibration "
-                         "fitted on another axis does not apply; edit its 'design' key only if the axis is the same)",
-                         source=str(path), where="key 'design'")
+        raise InputError(
+            f"calibration is for design '{cal['design']}', not '{design.name}' (a calibration "
+            "fitted on another axis does not apply; edit its 'design' key only if the axis is the same)",
+            source=str(path),
+            where="key 'design'",
+        )
     new, _, _ = calibrate_design(design, cal)
     return replace(new, name=f"{design.name} (calibrated)")

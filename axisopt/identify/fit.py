@@ -146,7 +146,9 @@ def fit(problem: Problem, theta0=None, mask=None, maxit: int = 60, tol: float = 
     hi = np.array([p.upper for p in params])
     scale = np.array([p.scale for p in params])
     theta = np.clip(
-        np.array([p.init for p in params], float) if theta0 is None else np.asarray(theta0, float), lo, hi
+        np.array([p.init for p in params], float) if theta0 is None else np.asarray(theta0, float),
+        lo,
+        hi,
     )
     wm = problem.w * (1.0 if mask is None else mask.astype(float))
 

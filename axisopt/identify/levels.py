@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-REL = 0.012  # a gap up to 1.2 % of the value joins two readings (jitter of +-0.5 % spreads a level by 1 %)
+# a gap up to 1.2 % of the value joins two readings (jitter of +-0.5 % spreads a level by 1 %)
+REL = 0.012
 SPAN = 0.004  # ... or up to 0.4 % of the factor's range (+-1 mm on an 800 mm stroke)
 RELATIVE_ONLY = ("velocity",)
 

@@ -41,7 +41,8 @@ class Plant:
     lead: float = 0.01  # [m]
     efficiency: float = 0.9  # screw efficiency for torque <-> force
     youngs_modulus: float = E_STEEL
-    c_series: float = 0.0  # position-independent compliance besides bearings and nut: bracket, coupling [m/N]
+    # position-independent compliance besides bearings and nut: bracket, coupling [m/N]
+    c_series: float = 0.0
     torsion: bool = False  # screw torsion through the lead in the chain (as the axis model)
     reduction: float = 1.0  # motor turns per screw turn (a belt or gear between motor and screw)
     name: str = "design"

@@ -30,8 +30,9 @@ LOG10_P = -8.0  # ... at this significance (after the scan's Bonferroni factor)
 class Probe:
     """One structure test of the residual."""
 
-    kind: str  # 'position_periodic' | 'velocity' | 'position' | 'time' | 'reversal' | 'acceleration' | 'run' | 'load'
-    #            (time records) or a recorded factor's name (tables)
+    # 'position_periodic' | 'velocity' | 'position' | 'time' | 'reversal' | 'acceleration' | 'run' |
+    # 'load' (time records) or a recorded factor's name (tables)
+    kind: str
     share: float  # share of the residual variance it explains [-]
     log10_p: float  # significance under white noise (n_eff, Bonferroni for scans)
     k: int  # columns
@@ -109,8 +110,15 @@ def log10_p_chi2(x: float, k: int) -> float:
     return (-0.5 * z * z - math.log(z * math.sqrt(2.0 * math.pi))) / math.log(10.0)
 
 
-def probe(kind: str, r: np.ndarray, G: np.ndarray, W: np.ndarray | None, n_eff: float, scans: int = 1,
-          **detail) -> Probe:
+def probe(
+    kind: str,
+    r: np.ndarray,
+    G: np.ndarray,
+    W: np.ndarray | None,
+    n_eff: float,
+    scans: int = 1,
+    **detail,
+) -> Probe:
     G = np.asarray(G, dtype=float)
     k = 1 if G.ndim == 1 else G.shape[1]
     s = share(r, G, W)
@@ -119,8 +127,17 @@ def probe(kind: str, r: np.ndarray, G: np.ndarray, W: np.ndarray | None, n_eff: 
     return Probe(kind, s, min(lp, 0.0), k, dict(detail))
 
 
-def period_scan(r: np.ndarray, q: np.ndarray, sgn: np.ndarray, columns, p_min: float, p_max: float,
-                W: np.ndarray | None, n_eff: float, fixed=()) -> Probe:
+def period_scan(
+    r: np.ndarray,
+    q: np.ndarray,
+    sgn: np.ndarray,
+    columns,
+    p_min: float,
+    p_max: float,
+    W: np.ndarray | None,
+    n_eff: float,
+    fixed=(),
+) -> Probe:
     """Spectrum of the residual over position.  A coarse scan on a uniform grid of spatial frequency
     (spacing a quarter of 1/span, so no peak falls between grid points) with the plain columns
     sin, cos, sgn(v) sin, sgn(v) cos of 2 pi q/P at the rows ``q``, ``sgn``; then the two best periods, refined
@@ -171,43 +188,84 @@ def best_shape(r: np.ndarray, shapes: dict, W: np.ndarray | None) -> tuple:
     return nm, scores[nm]
 
 
-# ------------------------------------------------------------------------------------ reduced tables
-# factor of a test table -> (what the residual does, candidate causes, the measurement that separates them)
+# ------------------------------------------------------------------------------------ reduced
+# tables
+# factor of a test table -> (what the residual does, candidate causes, the measurement that
+# separates them)
 FACTOR_WORDS = {
-    "position": ("varies with position",
-                 "a support or chain compliance that changes along the screw, guide misalignment, screw straightness",
-                 "repeat at more positions, and at one position with the load reversed"),
-    "force": ("varies with the load",
-              "a contact stiffness (Hertz) or nut lift-off the model does not hold, a load-dependent friction",
-              "vary the load in small steps at one position, both directions"),
-    "direction": ("differs with the direction",
-                  "lost motion (backlash) or friction hysteresis, a direction-dependent friction",
-                  "measure the reversal at several positions and with different lubrication or speed"),
-    "cycle": ("changes from cycle to cycle", "wear or run-in, warm-up, a loosening joint",
-              "repeat the test cold and warm and after a rest"),
-    "time": ("drifts with time", "warm-up (thermal expansion, lubricant viscosity), creep",
-             "repeat the test cold and warm, with a temperature sensor on the nut"),
-    "temperature": ("follows the temperature", "thermal expansion or lubricant viscosity",
-                    "hold the temperature and repeat, or vary it on purpose"),
-    "normal_load": ("grows with the guide load", "guide friction mu N, seals pressed harder",
-                    "vary the normal load independently of the axial load"),
-    "axial_load": ("grows with the axial load", "nut friction with load (efficiency), bearing friction",
-                   "vary the axial load at one speed"),
+    "position": (
+        "varies with position",
+        "a support or chain compliance that changes along the screw, guide misalignment, screw straightness",
+        "repeat at more positions, and at one position with the load reversed",
+    ),
+    "force": (
+        "varies with the load",
+        "a contact stiffness (Hertz) or nut lift-off the model does not hold, a load-dependent friction",
+        "vary the load in small steps at one position, both directions",
+    ),
+    "direction": (
+        "differs with the direction",
+        "lost motion (backlash) or friction hysteresis, a direction-dependent friction",
+        "measure the reversal at several positions and with different lubrication or speed",
+    ),
+    "cycle": (
+        "changes from cycle to cycle",
+        "wear or run-in, warm-up, a loosening joint",
+        "repeat the test cold and warm and after a rest",
+    ),
+    "time": (
+        "drifts with time",
+        "warm-up (thermal expansion, lubricant viscosity), creep",
+        "repeat the test cold and warm, with a temperature sensor on the nut",
+    ),
+    "temperature": (
+        "follows the temperature",
+        "thermal expansion or lubricant viscosity",
+        "hold the temperature and repeat, or vary it on purpose",
+    ),
+    "normal_load": (
+        "grows with the guide load",
+        "guide friction mu N, seals pressed harder",
+        "vary the normal load independently of the axial load",
+    ),
+    "axial_load": (
+        "grows with the axial load",
+        "nut friction with load (efficiency), bearing friction",
+        "vary the axial load at one speed",
+    ),
     "mode": ("differs by mode", "a mode shape or mass the model lacks", "measure the mode shapes"),
-    "frequency": ("depends on frequency", "a mode or damping the model lacks",
-                  "a finer frequency sweep around the misfit, at several positions"),
+    "frequency": (
+        "depends on frequency",
+        "a mode or damping the model lacks",
+        "a finer frequency sweep around the misfit, at several positions",
+    ),
 }
 VELOCITY_WORDS = {
-    "v|v|": ("grows with v|v|", "quadratic drag, e.g. seals or lubricant churning",
-             "a friction curve at constant speeds up to the maximum in both directions, repeated warm"),
-    "v": ("grows in proportion to speed", "viscous friction other than the catalog's",
-          "a friction curve over the whole speed range"),
-    "low_speed": ("rises at low speed", "a Stribeck rise, breakaway",
-                  "many constant speeds below 10 mm/s in both directions"),
-    "|v|": ("differs by direction, growing with speed", "viscous friction differing by direction (a seal lip)",
-            "constant-speed runs at several speeds in both directions"),
-    "sgn": ("differs by direction by a constant", "a gravity or cable-chain force, a Coulomb asymmetry",
-            "runs in both directions at several speeds and loads"),
+    "v|v|": (
+        "grows with v|v|",
+        "quadratic drag, e.g. seals or lubricant churning",
+        "a friction curve at constant speeds up to the maximum in both directions, repeated warm",
+    ),
+    "v": (
+        "grows in proportion to speed",
+        "viscous friction other than the catalog's",
+        "a friction curve over the whole speed range",
+    ),
+    "low_speed": (
+        "rises at low speed",
+        "a Stribeck rise, breakaway",
+        "many constant speeds below 10 mm/s in both directions",
+    ),
+    "|v|": (
+        "differs by direction, growing with speed",
+        "viscous friction differing by direction (a seal lip)",
+        "constant-speed runs at several speeds in both directions",
+    ),
+    "sgn": (
+        "differs by direction by a constant",
+        "a gravity or cable-chain force, a Coulomb asymmetry",
+        "runs in both directions at several speeds and loads",
+    ),
 }
 
 
@@ -223,7 +281,11 @@ def factor_probe(name: str, r: np.ndarray, values: np.ndarray, max_bins: int = 6
     else:
         idx = np.searchsorted(levels, values)
     groups = np.unique(idx)
-    G = np.column_stack([(idx == g).astype(float) for g in groups[1:]]) if len(groups) > 1 else np.zeros((len(r), 0))
+    G = (
+        np.column_stack([(idx == g).astype(float) for g in groups[1:]])
+        if len(groups) > 1
+        else np.zeros((len(r), 0))
+    )
     if G.shape[1] == 0:
         return Probe(name, 0.0, 0.0, 0, {"factor": name})
     s = share(r, G, None)

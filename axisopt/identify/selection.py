@@ -28,10 +28,13 @@ DBIC, PLAUSIBLE, GAIN = "dbic", "plausible", "gain"
 class SelectionRule:
     accept_dbic: float = -10.0  # a candidate must lower BIC below this
     min_gain: float = 5.0  # [%] held-out RMSE must fall by at least this much
-    order: tuple = (DBIC, PLAUSIBLE, GAIN)  # criteria in the order judged: the first failed is the reason
-    pair_pool: int = 5  # pairs are tried among at most this many single candidates (the best by dBIC)
+    # criteria in the order judged: the first failed is the reason
+    order: tuple = (DBIC, PLAUSIBLE, GAIN)
+    # pairs are tried among at most this many single candidates (the best by dBIC)
+    pair_pool: int = 5
     pair_needs_signal: bool = False  # True: a pair's members must each lower BIC alone (dBIC < 0)
-    resolution: float = 1.0  # [%] two accepted explanations whose held-out RMSE differ by less are equivalent
+    # [%] two accepted explanations whose held-out RMSE differ by less are equivalent
+    resolution: float = 1.0
 
     def equivalent(self, rmse_a: float, rmse_b: float) -> float | None:
         """How far apart [%] two explanations that both pass predict the held-out data, when that is within
@@ -76,8 +79,10 @@ class SelectionRule:
             return text
         a = alone() if callable(alone) else alone
         if g - a < self.min_gain:
-            return (f"held-out gain {g:.1f} % is not {self.min_gain:g} % above the better member alone "
-                    f"({a:.1f} %)")
+            return (
+                f"held-out gain {g:.1f} % is not {self.min_gain:g} % above the better member alone "
+                f"({a:.1f} %)"
+            )
         return ""
 
     def pair_pool_of(self, scored: list) -> list:
@@ -87,6 +92,9 @@ class SelectionRule:
 
 
 # reduced tables: plausibility before the (costly) cross-validation; 5 candidates give 10 pair fits
-TABLE_RULE = SelectionRule(order=(DBIC, PLAUSIBLE, GAIN), pair_pool=5, pair_needs_signal=False, resolution=2.0)
-# time records: the held-out gain of every candidate is known; 6 candidates that lower BIC alone give 15 pair fits
+TABLE_RULE = SelectionRule(
+    order=(DBIC, PLAUSIBLE, GAIN), pair_pool=5, pair_needs_signal=False, resolution=2.0
+)
+# time records: the held-out gain of every candidate is known; 6 candidates that lower BIC alone
+# give 15 pair fits
 TIME_RULE = SelectionRule(order=(DBIC, GAIN, PLAUSIBLE), pair_pool=6, pair_needs_signal=True)

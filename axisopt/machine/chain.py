@@ -62,7 +62,9 @@ def lowest_frequency(m, k) -> np.ndarray:
         lam = _lowest_eigenvalue_3(d, e)
     else:
         s = 1.0 / np.sqrt(m)
-        lam = np.linalg.eigvalsh(chain_stiffness_matrix(k) * s[..., :, None] * s[..., None, :])[..., 0]
+        lam = np.linalg.eigvalsh(chain_stiffness_matrix(k) * s[..., :, None] * s[..., None, :])[
+            ..., 0
+        ]
     return np.sqrt(np.clip(lam, 0.0, None)) / TWO_PI
 
 
@@ -111,5 +113,5 @@ def strain_shares(m, k, mode: int = 0) -> np.ndarray:
     f, phi = chain_modes(m, k)
     x = phi[..., :, mode]
     d = np.diff(np.concatenate([np.zeros(x.shape[:-1] + (1,)), x], axis=-1), axis=-1)
-    e = np.asarray(k, dtype=float) * d ** 2
+    e = np.asarray(k, dtype=float) * d**2
     return e / e.sum(-1, keepdims=True)

@@ -57,7 +57,9 @@ class MachineResult:
         """The joint optimum's objective over the sequential one (None: either missing or infeasible)."""
         if self.best is None or self.sequential is None or not self.sequential.feasible:
             return None
-        return self.best.value(self.machine.objective) - self.sequential.value(self.machine.objective)
+        return self.best.value(self.machine.objective) - self.sequential.value(
+            self.machine.objective
+        )
 
 
 def _reads_frequency(machine: Machine) -> bool:
@@ -78,7 +80,8 @@ class _Designs:
         key = (ax.name, round(load, 9))
         if key not in self.cache:
             sup = None
-            if not self.exhaustive and monotone_in_load(ax):  # the feasible set of the heaviest lighter load
+            # the feasible set of the heaviest lighter load
+            if not self.exhaustive and monotone_in_load(ax):
                 lighter = [x for x in self.superset.get(ax.name, []) if x[0] <= load]
                 sup = max(lighter, key=lambda x: x[0])[1] if lighter else None
             d = axis_designs(ax, load, at, exhaustive=self.exhaustive, superset=sup)
@@ -95,16 +98,25 @@ def _join(ax, own: float, O: dict, sel, D) -> dict:
     oi, dj = (a.ravel() for a in np.meshgrid(sel, np.arange(len(D)), indexing="ij"))
     klink = link_with_frame(ax, D.k[dj])
     lumped = own + D.moving_parts[dj] + O["stat"][oi]
-    return {"oi": oi, "dj": dj, "cost": O["cost"][oi] + D.cost[dj],
-            "M": own + D.parts[dj] + D.counterweight[dj] + O["M"][oi], "stat": D.stationary[dj],
-            "c": O["c"][oi] + 1.0 / klink, "mm": O["mm"][oi] + lumped, "m": np.column_stack([lumped, O["m"][oi]]),
-            "k": np.concatenate([klink[:, None, :], O["k"][oi]], axis=1)}
+    return {
+        "oi": oi,
+        "dj": dj,
+        "cost": O["cost"][oi] + D.cost[dj],
+        "M": own + D.parts[dj] + D.counterweight[dj] + O["M"][oi],
+        "stat": D.stationary[dj],
+        "c": O["c"][oi] + 1.0 / klink,
+        "mm": O["mm"][oi] + lumped,
+        "m": np.column_stack([lumped, O["m"][oi]]),
+        "k": np.concatenate([klink[:, None, :], O["k"][oi]], axis=1),
+    }
 
 
 def _within_limits(machine: Machine, J: dict, cmax) -> np.ndarray:
     """The joined offers ``J`` of part of a chain that do not yet miss a machine limit (costs, masses and
     compliances only grow further down; the frequency of the sub-chain on a rigid base bounds the whole's)."""
-    ok = (J["cost"] <= machine.max_cost * (1 + 1e-9)) & (J["mm"] <= machine.max_moving_mass * (1 + 1e-9))
+    ok = (J["cost"] <= machine.max_cost * (1 + 1e-9)) & (
+        J["mm"] <= machine.max_moving_mass * (1 + 1e-9)
+    )
     ok &= (J["c"] <= cmax * (1 + 1e-9)).all(1)
     if machine.min_frequency > 0 and ok.any():
         f = np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
@@ -122,7 +134,7 @@ def _best_below(machine: Machine, chain: list, designs: _Designs, i: int) -> dic
         ax = chain[j]
         if not monotone_in_load(ax):
             return None
-        load = sum(_own(a) for a in chain[j + 1:])
+        load = sum(_own(a) for a in chain[j + 1 :])
         at = chain[j + 1].carried_at
         D = designs.get(ax, load, at)
         if not len(D):
@@ -149,8 +161,11 @@ def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict) -
     cost = J["cost"] + rest["cost"] + other["cost"].min()
     c = J["c"] + rest["c"] + other["c"].min(0)
     mm = J["mm"] + rest["mm"] + other["mm"].min()
-    f = (np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
-         if _reads_frequency(machine) else np.full(len(cost), np.inf))
+    f = (
+        np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
+        if _reads_frequency(machine)
+        else np.full(len(cost), np.inf)
+    )
     f = np.minimum(f, other["f"].max())
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     good = (cost <= machine.max_cost * (1 + 1e-9)) & (mm <= machine.max_moving_mass * (1 + 1e-9))
@@ -168,8 +183,11 @@ def _tol(v: float) -> float:
 def _completion(machine: Machine, J: dict, other: dict) -> np.ndarray:
     """The best machine objective (larger is better) each joined offer ``J`` of a whole chain reaches with the
     other chain's offers ``other`` within the machine limits (-inf: none)."""
-    f = (np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
-         if _reads_frequency(machine) else np.full(len(J["cost"]), np.inf))
+    f = (
+        np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
+        if _reads_frequency(machine)
+        else np.full(len(J["cost"]), np.inf)
+    )
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     out = np.full(len(J["cost"]), -np.inf)
     for s in range(0, len(J["cost"]), 2048):
@@ -187,8 +205,16 @@ def _completion(machine: Machine, J: dict, other: dict) -> np.ndarray:
     return out
 
 
-def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool, kept: dict,
-                   other: dict | None = None, incumbent: list | None = None, below=None) -> dict:
+def _branch_offers(
+    machine: Machine,
+    chain: list,
+    designs: _Designs,
+    prune: bool,
+    kept: dict,
+    other: dict | None = None,
+    incumbent: list | None = None,
+    below=None,
+) -> dict:
     """The offers of one chain on the frame (arrays, one row per offer).  ``other``: the other chain's offers
     (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (a list
     of one value, the best machine objective found, larger is better); ``below(i)``: the best each axis under
@@ -196,36 +222,55 @@ def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool
     freq = _reads_frequency(machine)
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     cmax = np.where(kmin > 0, 1.0 / np.where(kmin > 0, kmin, 1.0), np.inf)
-    O = {"cost": np.zeros(1), "M": np.zeros(1), "stat": np.zeros(1), "c": np.zeros((1, 3)), "mm": np.zeros(1),
-         "m": np.zeros((1, 0)), "k": np.zeros((1, 0, 3)), "refs": [()]}
+    O = {
+        "cost": np.zeros(1),
+        "M": np.zeros(1),
+        "stat": np.zeros(1),
+        "c": np.zeros((1, 3)),
+        "mm": np.zeros(1),
+        "m": np.zeros((1, 0)),
+        "k": np.zeros((1, 0, 3)),
+        "refs": [()],
+    }
     for i in range(len(chain) - 1, -1, -1):
         ax = chain[i]
         at = chain[i + 1].carried_at if i + 1 < len(chain) else (0.0, 0.0)
-        own = ax.problem.axis.moving_mass + (ax.problem.axis.twin_drive.cross_mass
-                                             if ax.problem.axis.twin_drive is not None else 0.0)
+        own = ax.problem.axis.moving_mass + (
+            ax.problem.axis.twin_drive.cross_mass if ax.problem.axis.twin_drive is not None else 0.0
+        )
         parts = {k: [] for k in ("cost", "M", "stat", "c", "mm", "m", "k")}
         refs = []
         loads = np.unique(O["M"])
         if len(loads) > 1 and monotone_in_load(ax) and not designs.exhaustive:
-            designs.get(ax, float(loads[0]), at)  # the lightest first: its feasible set bounds the others
+            # the lightest first: its feasible set bounds the others
+            designs.get(ax, float(loads[0]), at)
         bound = prune and i == 0 and other is not None and monotone_in_load(ax)
         for L in loads:  # ascending
             sel = np.nonzero(O["M"] == L)[0]
             if prune and monotone_in_load(ax) and len(sel) and not bound:
-                # the same with the machine limits only: no design at the lightest load meets them with these
-                # offers -> none at this load does; and with the incumbent, each axis below at its best
+                # the same with the machine limits only: no design at the lightest load meets them
+                # with these
+                # offers -> none at this load does; and with the incumbent, each axis below at its
+                # best
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
                 ok = _within_limits(machine, J, cmax)
                 if not ok.any():
                     continue
-                if below is not None and np.isfinite(incumbent[0]) and \
-                        _optimistic(machine, J, ok, below(i), other) < incumbent[0] - _tol(incumbent[0]):
+                if (
+                    below is not None
+                    and np.isfinite(incumbent[0])
+                    and _optimistic(machine, J, ok, below(i), other)
+                    < incumbent[0] - _tol(incumbent[0])
+                ):
                     continue
             if bound and len(sel) and np.isfinite(incumbent[0]):
-                # what this load's offers could reach with the axis's designs at the lightest load (a superset,
+                # what this load's offers could reach with the axis's designs at the lightest load
+                # (a superset,
                 # each at least as stiff): none beats the incumbent -> the load is never solved
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
-                if _completion(machine, J, other).max(initial=-np.inf) < incumbent[0] - _tol(incumbent[0]):
+                if _completion(machine, J, other).max(initial=-np.inf) < incumbent[0] - _tol(
+                    incumbent[0]
+                ):
                     continue
             D = designs.get(ax, float(L), at)
             if not len(D) and monotone_in_load(ax) and not designs.exhaustive:
@@ -234,12 +279,20 @@ def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool
                 continue
             J = _join(ax, own, O, sel, D)
             if bound:
-                incumbent[0] = max(incumbent[0], _completion(machine, J, other).max(initial=-np.inf))
+                incumbent[0] = max(
+                    incumbent[0], _completion(machine, J, other).max(initial=-np.inf)
+                )
             for k in parts:
                 parts[k].append(J[k])
             refs.extend((D, int(j)) + O["refs"][o] for o, j in zip(J["oi"], J["dj"]))
         if not refs:
-            return {"cost": np.zeros(0), "c": np.zeros((0, 3)), "mm": np.zeros(0), "f": np.zeros(0), "refs": []}
+            return {
+                "cost": np.zeros(0),
+                "c": np.zeros((0, 3)),
+                "mm": np.zeros(0),
+                "f": np.zeros(0),
+                "refs": [],
+            }
         N = {k: np.concatenate(v) for k, v in parts.items()}
         N["refs"] = refs
         keep = np.ones(len(refs), bool)
@@ -256,11 +309,17 @@ def _branch_offers(machine: Machine, chain: list, designs: _Designs, prune: bool
         if f_sub is not None:
             f_sub = f_sub[keep]
         if prune and len(N["refs"]):
-            N = _take(N, _pareto(N, f_sub, freq, i == 0, monotone_in_load(chain[i - 1]) if i > 0 else True))
+            N = _take(
+                N,
+                _pareto(N, f_sub, freq, i == 0, monotone_in_load(chain[i - 1]) if i > 0 else True),
+            )
         kept[ax.name] = len(N["refs"])
         O = N
-    O["f"] = (np.min([lowest_frequency(O["m"], O["k"][:, :, d]) for d in range(3)], axis=0)
-              if len(O["refs"]) else np.zeros(0))
+    O["f"] = (
+        np.min([lowest_frequency(O["m"], O["k"][:, :, d]) for d in range(3)], axis=0)
+        if len(O["refs"])
+        else np.zeros(0)
+    )
     return O
 
 
@@ -295,7 +354,8 @@ def _pareto(N: dict, f_sub, freq: bool, root: bool, monotone: bool) -> np.ndarra
 def _objective(machine: Machine, cost, c, f, mm) -> np.ndarray:
     """The machine objective, larger is better."""
     return {"cost": -cost, "tool_stiffness": (1.0 / c).min(-1), "frequency": f, "moving_mass": -mm}[
-        machine.objective]
+        machine.objective
+    ]
 
 
 def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
@@ -332,22 +392,53 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
             if i not in cache:
                 cache[i] = _best_below(machine, chain, designs, i)
             return cache[i]
-    offers[last] = _branch_offers(machine, branches[last], designs, not exhaustive, kept, other=rest,
-                                  incumbent=incumbent, below=below)
+
+    offers[last] = _branch_offers(
+        machine,
+        branches[last],
+        designs,
+        not exhaustive,
+        kept,
+        other=rest,
+        incumbent=incumbent,
+        below=below,
+    )
     best = _combine(machine, branches, offers)
-    notes = [f"exact Pareto sets: below {ch[i - 1].name} offers of different carried mass are not compared "
-             f"({ch[i - 1].name} is counterbalanced: more carried mass may help it); every load screened in full"
-             for ch in branches for i in range(1, len(ch)) if not monotone_in_load(ch[i - 1])]
+    notes = [
+        f"exact Pareto sets: below {ch[i - 1].name} offers of different carried mass are not compared "
+        f"({ch[i - 1].name} is counterbalanced: more carried mass may help it); every load screened in full"
+        for ch in branches
+        for i in range(1, len(ch))
+        if not monotone_in_load(ch[i - 1])
+    ]
     for name in machine.estimated_frames:
-        notes.append(f"the frame under {name} is the stated estimate (as stiff as the axis link: its compliance "
-                     "doubled); give axes.{name}.frame_stiffness when known".replace("{name}", name))
+        notes.append(
+            f"the frame under {name} is the stated estimate (as stiff as the axis link: its compliance "
+            "doubled); give axes.{name}.frame_stiffness when known".replace("{name}", name)
+        )
     seq = sequential(machine, designs)
     nominal = float(np.prod([float(designs.combinations.get(a.name, 0)) for a in machine.axes]))
-    return MachineResult(machine, method, OPTIMAL if best is not None else INFEASIBLE, best, seq, nominal,
-                         designs.solves, kept, time.perf_counter() - t0, notes)
+    return MachineResult(
+        machine,
+        method,
+        OPTIMAL if best is not None else INFEASIBLE,
+        best,
+        seq,
+        nominal,
+        designs.solves,
+        kept,
+        time.perf_counter() - t0,
+        notes,
+    )
 
 
-_EMPTY = {"cost": np.zeros(1), "c": np.zeros((1, 3)), "mm": np.zeros(1), "f": np.full(1, np.inf), "refs": [()]}
+_EMPTY = {
+    "cost": np.zeros(1),
+    "c": np.zeros((1, 3)),
+    "mm": np.zeros(1),
+    "f": np.full(1, np.inf),
+    "refs": [()],
+}
 
 
 def _combine(machine: Machine, branches: list, offers: list) -> MachineDesign | None:
@@ -356,11 +447,18 @@ def _combine(machine: Machine, branches: list, offers: list) -> MachineDesign | 
         return None
     A = offers[0]
     B = offers[1] if len(offers) > 1 else _EMPTY
-    ia, ib = (a.ravel() for a in np.meshgrid(np.arange(len(A["refs"])), np.arange(len(B["refs"])), indexing="ij"))
+    ia, ib = (
+        a.ravel()
+        for a in np.meshgrid(np.arange(len(A["refs"])), np.arange(len(B["refs"])), indexing="ij")
+    )
     cost = A["cost"][ia] + B["cost"][ib]
     c = A["c"][ia] + B["c"][ib]
     mm = A["mm"][ia] + B["mm"][ib]
-    f = np.minimum(A["f"][ia], B["f"][ib]) if _reads_frequency(machine) else np.full(len(ia), np.inf)
+    f = (
+        np.minimum(A["f"][ia], B["f"][ib])
+        if _reads_frequency(machine)
+        else np.full(len(ia), np.inf)
+    )
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     ok = (cost <= machine.max_cost * (1 + 1e-9)) & (mm <= machine.max_moving_mass * (1 + 1e-9))
     ok &= ((1.0 / c) >= kmin * (1 - 1e-9)).all(1)
@@ -403,7 +501,10 @@ def sequential(machine: Machine, designs: _Designs) -> MachineDesign | None:
             tied = np.nonzero(score >= top - 1e-9 * max(abs(top), 1.0))[0]
             j = int(tied[np.lexsort((D.parts[tied], D.cost[tied]))[0]])
             picks[ax.name] = (D, j)
-            own = ax.problem.axis.moving_mass + (ax.problem.axis.twin_drive.cross_mass
-                                                 if ax.problem.axis.twin_drive is not None else 0.0)
+            own = ax.problem.axis.moving_mass + (
+                ax.problem.axis.twin_drive.cross_mass
+                if ax.problem.axis.twin_drive is not None
+                else 0.0
+            )
             load = load + own + float(D.parts[j] + D.counterweight[j])
     return evaluate_choice(machine, picks)

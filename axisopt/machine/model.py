@@ -54,7 +54,8 @@ class MachineDesign:
     frequencies: dict  # (branch index, direction) -> ascending natural frequencies [Hz]
     f_lowest: float  # [Hz]
     f_dunkerley: float  # Dunkerley's lower bound of f_lowest [Hz]
-    lowest_at: tuple  # (direction, axis name, link role): the mode and the spring with most of its strain energy
+    # (direction, axis name, link role): the mode and the spring with most of its strain energy
+    lowest_at: tuple
     cost: float  # [EUR]
     moving_mass: float  # every lumped mass [kg]
     misses: list = field(default_factory=list)  # machine limits missed: (key, value, limit) in SI
@@ -68,8 +69,12 @@ class MachineDesign:
         return not self.misses
 
     def value(self, objective: str) -> float:
-        return {"cost": self.cost, "tool_stiffness": min(self.k_tool), "frequency": self.f_lowest,
-                "moving_mass": self.moving_mass}[objective]
+        return {
+            "cost": self.cost,
+            "tool_stiffness": min(self.k_tool),
+            "frequency": self.f_lowest,
+            "moving_mass": self.moving_mass,
+        }[objective]
 
     def weakest(self, d: int) -> tuple:
         """(axis name, role) of the largest compliance at the tool in direction ``d`` (0, 1, 2), and 'frame'
@@ -113,9 +118,22 @@ def evaluate_choice(machine: Machine, picks: dict) -> MachineDesign:
             links.append(k_link)
             comp += 1.0 / k_link
             moving += m
-            out_axes.append(AxisChoice(a.name, d.candidate(j), carried, m, tuple(k_axis), tuple(kf), tuple(k_link),
-                                       tuple(a.link_role(x) for x in DIRECTIONS), float(d.cost[j]),
-                                       float(d.parts[j]), float(d.counterweight[j]), a.frame_stiffness is None))
+            out_axes.append(
+                AxisChoice(
+                    a.name,
+                    d.candidate(j),
+                    carried,
+                    m,
+                    tuple(k_axis),
+                    tuple(kf),
+                    tuple(k_link),
+                    tuple(a.link_role(x) for x in DIRECTIONS),
+                    float(d.cost[j]),
+                    float(d.parts[j]),
+                    float(d.counterweight[j]),
+                    a.frame_stiffness is None,
+                )
+            )
         M = np.asarray(masses)
         for di, dname in enumerate(DIRECTIONS):
             K = np.asarray([k[di] for k in links])
@@ -129,12 +147,24 @@ def evaluate_choice(machine: Machine, picks: dict) -> MachineDesign:
             f_dunk = min(f_dunk, float(dunkerley_frequency(M, K)))
     k_tool = tuple(float(x) for x in 1.0 / comp)
     cost = sum(a.cost for a in out_axes)
-    md = MachineDesign(sorted(out_axes, key=lambda c: [a.name for a in machine.axes].index(c.name)), k_tool, freqs,
-                       f_low, f_dunk, low_at, cost, moving,
-                       branches=[[a.name for a in ch] for ch in branches])
+    md = MachineDesign(
+        sorted(out_axes, key=lambda c: [a.name for a in machine.axes].index(c.name)),
+        k_tool,
+        freqs,
+        f_low,
+        f_dunk,
+        low_at,
+        cost,
+        moving,
+        branches=[[a.name for a in ch] for ch in branches],
+    )
     for di, dname in enumerate(DIRECTIONS):
-        if machine.min_tool_stiffness[di] > 0 and k_tool[di] < machine.min_tool_stiffness[di] * (1 - 1e-9):
-            md.misses.append((f"min_tool_stiffness.{dname}", k_tool[di], machine.min_tool_stiffness[di]))
+        if machine.min_tool_stiffness[di] > 0 and k_tool[di] < machine.min_tool_stiffness[di] * (
+            1 - 1e-9
+        ):
+            md.misses.append(
+                (f"min_tool_stiffness.{dname}", k_tool[di], machine.min_tool_stiffness[di])
+            )
     if machine.min_frequency > 0 and f_low < machine.min_frequency * (1 - 1e-9):
         md.misses.append(("min_frequency", f_low, machine.min_frequency))
     if cost > machine.max_cost * (1 + 1e-9):
@@ -160,7 +190,9 @@ def _at_tool_point(machine: Machine, md: MachineDesign) -> None:
         x0 = a.candidate.design.axis.start_offset
         k_side = float(np.interp(x0 + s, ev.x, np.asarray(ev["k_total"], dtype=float)))
         tw = ax.problem.axis.twin_drive
-        k_ax = k_side / ((tw.force_share ** 2 + (1 - tw.force_share) ** 2)) if tw is not None else k_side
+        k_ax = (
+            k_side / (tw.force_share**2 + (1 - tw.force_share) ** 2) if tw is not None else k_side
+        )
         md.tool_point[a.name] = s
         md.k_axial_at_point[a.name] = k_ax
         k = [k_ax if a.roles[i] == "axial" else a.k_axis[i] for i in range(3)]

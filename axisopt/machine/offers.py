@@ -47,8 +47,12 @@ def monotone_in_load(ax: MachineAxis) -> bool:
     """Whether the axis never gains from carrying more mass (all its limits worsen with the moving mass).  Not
     so for a vertical axis with a counterbalance: a heavier head may bring the weight nearer the counterweight's
     pull and lower the net load on the screw and motor."""
-    return not any(a.orientation == "vertical" and a.counterbalance is not None and a.counterbalance.kind != "none"
-                   for _, a in arrangements(ax))
+    return not any(
+        a.orientation == "vertical"
+        and a.counterbalance is not None
+        and a.counterbalance.kind != "none"
+        for _, a in arrangements(ax)
+    )
 
 
 @dataclass
@@ -90,9 +94,17 @@ class AxisDesigns:
 
     def take(self, keep) -> AxisDesigns:
         keep = np.asarray(keep, dtype=np.int64)
-        out = replace(self, arr=self.arr[keep], idx=self.idx[keep], preload=self.preload[keep], cost=self.cost[keep],
-                      parts=self.parts[keep], moving_parts=self.moving_parts[keep],
-                      counterweight=self.counterweight[keep], k=self.k[keep])
+        out = replace(
+            self,
+            arr=self.arr[keep],
+            idx=self.idx[keep],
+            preload=self.preload[keep],
+            cost=self.cost[keep],
+            parts=self.parts[keep],
+            moving_parts=self.moving_parts[keep],
+            counterweight=self.counterweight[keep],
+            k=self.k[keep],
+        )
         out._cands = {}
         return out
 
@@ -113,8 +125,14 @@ def _link_stiffness(ax: MachineAxis, axis, space, ex_rows, stiffness) -> np.ndar
     return np.column_stack([by[ax.link_role(d)] for d in DIRECTIONS])
 
 
-def axis_designs(ax: MachineAxis, load: float, at: tuple = (0.0, 0.0), *, exhaustive: bool = False,
-                 superset: dict | None = None) -> AxisDesigns:
+def axis_designs(
+    ax: MachineAxis,
+    load: float,
+    at: tuple = (0.0, 0.0),
+    *,
+    exhaustive: bool = False,
+    superset: dict | None = None,
+) -> AxisDesigns:
     """The axis's feasible designs at ``load`` kg carried at ``at`` = (height, offset) on its carriage (the
     machine file's ``carried_at`` of the axis above).  ``superset``: per arrangement the combinations to solve
     (those feasible at a lighter load, where :func:`monotone_in_load`)."""
@@ -138,20 +156,35 @@ def axis_designs(ax: MachineAxis, load: float, at: tuple = (0.0, 0.0), *, exhaus
         idx = ex.idx[ok]
         _m, n, _b, g = space.unravel(idx)
         twin = axis.twin_drive is not None
-        moving = (1.0 + twin) * space.n_arr["mass"][n] + axis.guide_blocks * space.g_arr["block_mass"][g]
+        moving = (1.0 + twin) * space.n_arr["mass"][n] + axis.guide_blocks * space.g_arr[
+            "block_mass"
+        ][g]
         rows["arr"].append(np.full(len(ok), ai))
         rows["idx"].append(idx)
         rows["preload"].append(ex.preload[ok])
         rows["cost"].append(ex.goals["cost"][ok])
-        carried = axis.moving_mass + (axis.twin_drive.cross_mass if twin else 0.0)  # in the model's total mass
+        # in the model's total mass
+        carried = axis.moving_mass + (axis.twin_drive.cross_mass if twin else 0.0)
         rows["parts"].append(ex.goals["total_mass"][ok] - carried)
         rows["moving"].append(moving)
         rows["cw"].append(np.full(len(ok), counterweight(axis)))
         rows["k"].append(_link_stiffness(ax, axis, space, idx, ex.goals["stiffness"][ok]))
     cat = {k: np.concatenate(v) for k, v in rows.items()}
-    return AxisDesigns(ax, load, problems, cat["arr"], cat["idx"], cat["preload"], cat["cost"], cat["parts"],
-                       cat["moving"], cat["cw"], cat["k"].reshape(-1, 3), combinations=combos,
-                       feasible=len(cat["idx"]))
+    return AxisDesigns(
+        ax,
+        load,
+        problems,
+        cat["arr"],
+        cat["idx"],
+        cat["preload"],
+        cat["cost"],
+        cat["parts"],
+        cat["moving"],
+        cat["cw"],
+        cat["k"].reshape(-1, 3),
+        combinations=combos,
+        feasible=len(cat["idx"]),
+    )
 
 
 def pareto_designs(d: AxisDesigns) -> AxisDesigns:

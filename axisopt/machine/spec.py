@@ -37,58 +37,157 @@ OBJECTIVES = ("cost", "tool_stiffness", "frequency", "moving_mass")
 # what an axis's problem section may not say: the machine decides it
 NOT_IN_AXIS_PROBLEM = ("name", "description", "catalogs", "objective")
 
-XYZ_STIFFNESS = Spec("stiffness per direction", "a stiffness in each of x, y and z", {
-    d: Key("quantity", f"in {d}", required=True, kind="stiffness", positive=True, example="500 N/um")
-    for d in DIRECTIONS})
-LIMITS_SPEC = Spec("machine limits", "limits on the machine's outputs", {
-    "min_tool_stiffness": Key("one_of", "least static stiffness at the tool, one value or per direction",
-                              options=(Key("quantity", kind="stiffness", positive=True, example="20 N/um"),
-                                       Key("section", spec=XYZ_STIFFNESS))),
-    "min_frequency": Key("quantity", "least lowest natural frequency of the machine's lumped chain",
-                         kind="frequency", positive=True, example="40 Hz"),
-    "max_cost": Key("quantity", "most cost of every axis's parts", kind="money", positive=True,
-                    example="40000 EUR"),
-    "max_moving_mass": Key("quantity", "most sum of the machine's moving masses", kind="mass", positive=True,
-                           example="2500 kg"),
-})
-MACHINE_SPEC = Spec("machine", "the machine's objective and limits", {
-    "objective": Key("choice", "what the joint search optimises (default cost)", choices=OBJECTIVES,
-                     default="cost"),
-    "limits": Key("section", spec=LIMITS_SPEC),
-    "tool_point": Key("section", "the nut position on each axis's stroke the stiffness chain is shown at "
-                      "(default: mid-stroke); the limits read the worst over the strokes",
-                      spec=Spec("tool_point", "nut position per axis name",
-                                extra=Key("quantity", kind="length", non_negative=True, example="400 mm"),
-                                extra_doc="an axis name")),
-})
-CARRIED_AT = Spec("carried_at", "where this axis, with all it carries, acts on its carrier", {
-    "height": Key("quantity", "above the carrier's guide mounting plane", kind="length", non_negative=True,
-                  default=0.0, example="250 mm"),
-    "offset": Key("quantity", "across the carrier's rails from its carriage centre", kind="length", default=0.0,
-                  example="0 mm"),
-})
-AXIS_NODE_SPEC = Spec("machine axis", "one axis of the machine", {
-    "carried_by": Key("string", "'frame' or the name of the axis whose carriage carries this axis",
-                      required=True),
-    "direction": Key("choice", "direction of travel", required=True, choices=DIRECTIONS),
-    "normal": Key("choice", "normal of the guides' mounting plane (the blocks' normal rigidity acts along it)",
-                  required=True, choices=DIRECTIONS),
-    "frame_stiffness": Key("one_of", "the frame's (structure's) stiffness under this axis's guides, or "
-                           "'estimate': as stiff as the axis link itself in each direction (doubles its "
-                           "compliance; conservative, stated in every result)", required=True,
-                           options=(Key("choice", choices=("estimate",)), Key("section", spec=XYZ_STIFFNESS))),
-    "carried_at": Key("section", spec=CARRIED_AT),
-    "problem": Key("section", "the axis's problem: axis, limits, catalog, continuous, search sections as in a "
-                   "problem file; axis.moving_mass is the axis's own moving structure (what it carries is "
-                   "added)", required=True, spec=PROBLEM_SPEC),
-})
-MACHINE_FILE_SPEC = Spec("machine file", "a machine: a tree of feed axes sized together", {
-    "name": NAME_KEY, "description": DESCRIPTION_KEY, "catalogs": CATALOGS_KEY,
-    "machine": Key("section", spec=MACHINE_SPEC),
-    "axes": Key("section", "the axes by name", required=True,
-                spec=Spec("axes", "axis name -> axis", extra=Key("section", spec=AXIS_NODE_SPEC),
-                          extra_doc="an axis name")),
-})
+XYZ_STIFFNESS = Spec(
+    "stiffness per direction",
+    "a stiffness in each of x, y and z",
+    {
+        d: Key(
+            "quantity",
+            f"in {d}",
+            required=True,
+            kind="stiffness",
+            positive=True,
+            example="500 N/um",
+        )
+        for d in DIRECTIONS
+    },
+)
+LIMITS_SPEC = Spec(
+    "machine limits",
+    "limits on the machine's outputs",
+    {
+        "min_tool_stiffness": Key(
+            "one_of",
+            "least static stiffness at the tool, one value or per direction",
+            options=(
+                Key("quantity", kind="stiffness", positive=True, example="20 N/um"),
+                Key("section", spec=XYZ_STIFFNESS),
+            ),
+        ),
+        "min_frequency": Key(
+            "quantity",
+            "least lowest natural frequency of the machine's lumped chain",
+            kind="frequency",
+            positive=True,
+            example="40 Hz",
+        ),
+        "max_cost": Key(
+            "quantity",
+            "most cost of every axis's parts",
+            kind="money",
+            positive=True,
+            example="40000 EUR",
+        ),
+        "max_moving_mass": Key(
+            "quantity",
+            "most sum of the machine's moving masses",
+            kind="mass",
+            positive=True,
+            example="2500 kg",
+        ),
+    },
+)
+MACHINE_SPEC = Spec(
+    "machine",
+    "the machine's objective and limits",
+    {
+        "objective": Key(
+            "choice",
+            "what the joint search optimises (default cost)",
+            choices=OBJECTIVES,
+            default="cost",
+        ),
+        "limits": Key("section", spec=LIMITS_SPEC),
+        "tool_point": Key(
+            "section",
+            "the nut position on each axis's stroke the stiffness chain is shown at "
+            "(default: mid-stroke); the limits read the worst over the strokes",
+            spec=Spec(
+                "tool_point",
+                "nut position per axis name",
+                extra=Key("quantity", kind="length", non_negative=True, example="400 mm"),
+                extra_doc="an axis name",
+            ),
+        ),
+    },
+)
+CARRIED_AT = Spec(
+    "carried_at",
+    "where this axis, with all it carries, acts on its carrier",
+    {
+        "height": Key(
+            "quantity",
+            "above the carrier's guide mounting plane",
+            kind="length",
+            non_negative=True,
+            default=0.0,
+            example="250 mm",
+        ),
+        "offset": Key(
+            "quantity",
+            "across the carrier's rails from its carriage centre",
+            kind="length",
+            default=0.0,
+            example="0 mm",
+        ),
+    },
+)
+AXIS_NODE_SPEC = Spec(
+    "machine axis",
+    "one axis of the machine",
+    {
+        "carried_by": Key(
+            "string",
+            "'frame' or the name of the axis whose carriage carries this axis",
+            required=True,
+        ),
+        "direction": Key("choice", "direction of travel", required=True, choices=DIRECTIONS),
+        "normal": Key(
+            "choice",
+            "normal of the guides' mounting plane (the blocks' normal rigidity acts along it)",
+            required=True,
+            choices=DIRECTIONS,
+        ),
+        "frame_stiffness": Key(
+            "one_of",
+            "the frame's (structure's) stiffness under this axis's guides, or "
+            "'estimate': as stiff as the axis link itself in each direction (doubles its "
+            "compliance; conservative, stated in every result)",
+            required=True,
+            options=(Key("choice", choices=("estimate",)), Key("section", spec=XYZ_STIFFNESS)),
+        ),
+        "carried_at": Key("section", spec=CARRIED_AT),
+        "problem": Key(
+            "section",
+            "the axis's problem: axis, limits, catalog, continuous, search sections as in a "
+            "problem file; axis.moving_mass is the axis's own moving structure (what it carries is "
+            "added)",
+            required=True,
+            spec=PROBLEM_SPEC,
+        ),
+    },
+)
+MACHINE_FILE_SPEC = Spec(
+    "machine file",
+    "a machine: a tree of feed axes sized together",
+    {
+        "name": NAME_KEY,
+        "description": DESCRIPTION_KEY,
+        "catalogs": CATALOGS_KEY,
+        "machine": Key("section", spec=MACHINE_SPEC),
+        "axes": Key(
+            "section",
+            "the axes by name",
+            required=True,
+            spec=Spec(
+                "axes",
+                "axis name -> axis",
+                extra=Key("section", spec=AXIS_NODE_SPEC),
+                extra_doc="an axis name",
+            ),
+        ),
+    },
+)
 
 
 @dataclass(frozen=True)
@@ -156,8 +255,11 @@ def load_machine(path) -> Machine:
     path = Path(path)
     root = Section(read_yaml(path), str(path), spec=MACHINE_FILE_SPEC)
     if root.has("axis") and not root.has("axes"):
-        raise InputError("an axis's problem or design, not a machine (it has 'axis', no 'axes'): size it with "
-                         "`axisopt solve`", source=str(path))
+        raise InputError(
+            "an axis's problem or design, not a machine (it has 'axis', no 'axes'): size it with "
+            "`axisopt solve`",
+            source=str(path),
+        )
     return read_machine(root, path)
 
 
@@ -191,7 +293,10 @@ def _read_axis(sec: Section, name: str, catalog) -> MachineAxis:
         raise sec.error("carried_by", f"axis '{name}' is carried by itself")
     direction, normal = sec.read("direction"), sec.read("normal")
     if normal == direction:
-        raise sec.error("normal", f"the guides' normal ({normal}) is the direction of travel: it must be across it")
+        raise sec.error(
+            "normal",
+            f"the guides' normal ({normal}) is the direction of travel: it must be across it",
+        )
     fnode = sec.raw("frame_stiffness", required=True)
     if isinstance(fnode.value, str):
         sec.choice("frame_stiffness", ("estimate",))
@@ -208,7 +313,9 @@ def _read_axis(sec: Section, name: str, catalog) -> MachineAxis:
     psec = sec.read("problem")
     for k in NOT_IN_AXIS_PROBLEM:
         if psec.has(k):
-            raise psec.error(k, f"'{k}' is the machine's, not an axis problem's: remove it from axis '{name}'")
+            raise psec.error(
+                k, f"'{k}' is the machine's, not an axis problem's: remove it from axis '{name}'"
+            )
     problem = read_problem(psec, catalog, name=name)
     sec.done()
     return MachineAxis(name, carried_by, direction, normal, problem, frame, carried_at)
@@ -219,26 +326,38 @@ def _order(axes: dict, asec: Section) -> tuple:
     axes or more than two chains on the frame are errors."""
     for a in axes.values():
         if a.carried_by != FRAME and a.carried_by not in axes:
-            raise asec.section(a.name).error("carried_by", f"axis '{a.name}' is carried by '{a.carried_by}', "
-                                             f"which is neither 'frame' nor an axis ({', '.join(axes)})")
+            raise asec.section(a.name).error(
+                "carried_by",
+                f"axis '{a.name}' is carried by '{a.carried_by}', "
+                f"which is neither 'frame' nor an axis ({', '.join(axes)})",
+            )
     for a in axes.values():  # follow the carriers down: a cycle never reaches the frame
         seen, b = [a.name], a
         while b.carried_by != FRAME:
             b = axes[b.carried_by]
             if b.name in seen:
-                cycle = " -> ".join(seen[seen.index(b.name):] + [b.name])
-                raise asec.section(a.name).error("carried_by", f"the axes carry each other in a cycle: {cycle} "
-                                                 "(every chain of carriers ends on the frame)")
+                cycle = " -> ".join(seen[seen.index(b.name) :] + [b.name])
+                raise asec.section(a.name).error(
+                    "carried_by",
+                    f"the axes carry each other in a cycle: {cycle} "
+                    "(every chain of carriers ends on the frame)",
+                )
             seen.append(b.name)
     for a in axes.values():
         carried = [b.name for b in axes.values() if b.carried_by == a.name]
         if len(carried) > 1:
-            raise asec.section(carried[1]).error("carried_by", f"axis '{a.name}' carries {', '.join(carried)}: "
-                                                 "an axis carries at most one axis here")
+            raise asec.section(carried[1]).error(
+                "carried_by",
+                f"axis '{a.name}' carries {', '.join(carried)}: "
+                "an axis carries at most one axis here",
+            )
     roots = [a.name for a in axes.values() if a.carried_by == FRAME]
     if len(roots) > 2:
-        raise asec.section(roots[2]).error("carried_by", f"{len(roots)} chains on the frame ({', '.join(roots)}): "
-                                           "at most two (the tool's and the workpiece's side)")
+        raise asec.section(roots[2]).error(
+            "carried_by",
+            f"{len(roots)} chains on the frame ({', '.join(roots)}): "
+            "at most two (the tool's and the workpiece's side)",
+        )
     out, placed = [], {FRAME}
     while len(out) < len(axes):
         for a in axes.values():
@@ -276,8 +395,11 @@ def _read_machine_section(msec: Section | None, axes: dict) -> dict:
             v = tsec.quantity(an, "length", required=True, non_negative=True)
             stroke = axes[an].problem.axis.stroke
             if v > stroke:
-                raise tsec.error(an, f"the tool point is outside axis {an}'s stroke: {v * 1e3:g} mm beyond "
-                                 f"{stroke * 1e3:g} mm")
+                raise tsec.error(
+                    an,
+                    f"the tool point is outside axis {an}'s stroke: {v * 1e3:g} mm beyond "
+                    f"{stroke * 1e3:g} mm",
+                )
             pts.append((str(an), v))
         tsec.done()
         kw["tool_point"] = tuple(pts)
@@ -292,7 +414,9 @@ def at_carried_load(a, mass: float, height: float, offset: float):
     if mass <= 0:
         return a
     if a.twin_drive is not None:
-        return replace(a, twin_drive=replace(a.twin_drive, cross_mass=a.twin_drive.cross_mass + mass))
+        return replace(
+            a, twin_drive=replace(a.twin_drive, cross_mass=a.twin_drive.cross_mass + mass)
+        )
     own = a.moving_mass
     total = own + mass
     cg = (own * a.cg_height_eff + mass * height) / total
@@ -300,5 +424,16 @@ def at_carried_load(a, mass: float, height: float, offset: float):
     return replace(a, moving_mass=total, cg_height=cg, cg_offset=cgo)
 
 
-__all__ = ["Machine", "MachineAxis", "load_machine", "read_machine", "is_machine_file", "at_carried_load",
-           "DIRECTIONS", "FRAME", "OBJECTIVES", "MACHINE_FILE_SPEC", "InputError"]
+__all__ = [
+    "Machine",
+    "MachineAxis",
+    "load_machine",
+    "read_machine",
+    "is_machine_file",
+    "at_carried_load",
+    "DIRECTIONS",
+    "FRAME",
+    "OBJECTIVES",
+    "MACHINE_FILE_SPEC",
+    "InputError",
+]

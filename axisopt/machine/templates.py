@@ -3,9 +3,11 @@
 
 from types import MappingProxyType
 
-TEMPLATES = MappingProxyType({
-    "vmc": """\
-# A vertical machining centre: the table (X) on the saddle (Y) on the bed, the spindle head (Z) on a fixed
+TEMPLATES = MappingProxyType(
+    {
+        "vmc": """\
+# A vertical machining centre: the table (X) on the saddle (Y) on the bed, the spindle head (Z) on a
+# fixed
 # column.  Solve it with `axisopt machine solve problems/machines/vmc_machine.yaml`.
 name: vmc-machine
 description: >
@@ -113,8 +115,9 @@ axes:
         motor_series: [Sigma-7 SGM7G, MELDAS HC (2000 r/min)]
         require: {coupling: [RINGFEDER-GWB-AKN-150]}
 """,
-    "moving-column": """\
-# A moving-column machine: the column (X) travels on the bed, the headstock (Y) rises on the column, the ram (Z)
+        "moving-column": """\
+# A moving-column machine: the column (X) travels on the bed, the headstock (Y) rises on the column,
+# the ram (Z)
 # moves out of the headstock; the workpiece stands on a fixed table.  One chain on the frame.
 name: moving-column-machine
 description: >
@@ -221,9 +224,11 @@ axes:
         motor_series: [Sigma-7 SGM7G]
         require: {coupling: [RINGFEDER-GWB-AKN-150]}
 """,
-    "gantry": """\
-# A gantry: the bridge (Y) on two synchronised screw drives, the cross carriage (X) across the bridge, the ram (Z)
-# vertical in the cross carriage with a counterweight.  One chain on the frame; the workpiece on the fixed bed.
+        "gantry": """\
+# A gantry: the bridge (Y) on two synchronised screw drives, the cross carriage (X) across the
+# bridge, the ram (Z)
+# vertical in the cross carriage with a counterweight.  One chain on the frame; the workpiece on the
+# fixed bed.
 name: gantry-machine
 description: >
   Gantry 3000 x 1600 x 500: a 700 kg bridge on a twin drive 2.0 m apart, a 250 kg cross carriage on X, a 150 kg
@@ -334,7 +339,13 @@ axes:
         motor_series: [Sigma-7 SGM7G]
         require: {coupling: [RINGFEDER-GWB-AKN-150]}
 """,
-})
+    }
+)
 # kind -> file name in problems/machines
-SHIPPED = MappingProxyType({"vmc": "vmc_machine.yaml", "moving-column": "moving_column_machine.yaml",
-                            "gantry": "gantry_machine.yaml"})
+SHIPPED = MappingProxyType(
+    {
+        "vmc": "vmc_machine.yaml",
+        "moving-column": "moving_column_machine.yaml",
+        "gantry": "gantry_machine.yaml",
+    }
+)

@@ -54,8 +54,14 @@ def softest_compliance(p, mounting: str, preload, axial_force, mean_force, rock)
 def thermal_growth_at(p, rise):
     """Largest thermal growth at the nut over the stroke [m] at a temperature rise [K] (as :mod:`.chain`)."""
     k_set = bearing_set_stiffness(p)
-    ends = [mx.fabs(pt.thermal_displacement(xe, p["span"], p["root_diameter"], rise, k_set, p["bearing_sets"] - 1.0))
-            for xe in (p["start_offset"], p["start_offset"] + p["stroke"])]
+    ends = [
+        mx.fabs(
+            pt.thermal_displacement(
+                xe, p["span"], p["root_diameter"], rise, k_set, p["bearing_sets"] - 1.0
+            )
+        )
+        for xe in (p["start_offset"], p["start_offset"] + p["stroke"])
+    ]
     return mx.fmax(ends[0], ends[1])
 
 
@@ -63,22 +69,35 @@ def positioning_budget(p, mounting: str, preload, axial_force, mean_force, rock)
     """The budget's rows, total and repeatability [m] (module docstring).  ``p`` at the model's temperature rise
     (:func:`.response.loaded`), ``axial_force`` and ``mean_force`` as the stiffness chain takes them, ``rock`` the
     table's rocking (:func:`.carriage.rocking`).  Floats, numpy arrays or CasADi like the model."""
-    # the rise the model uses where no heat balance sets it (a stated rise, or no duty cycle: Python-level flag,
+    # the rise the model uses where no heat balance sets it (a stated rise, or no duty cycle:
+    # Python-level flag,
     # as model.heat), else the balance at the nut's highest preload
     flag = getattr(p.get("duty", ()), "heat", None)
-    hot = p["temperature_rise"] if flag is False else heat_balance(p, p["nut_preload_max"])["temperature_rise"]
+    hot = (
+        p["temperature_rise"]
+        if flag is False
+        else heat_balance(p, p["nut_preload_max"])["temperature_rise"]
+    )
     thermal = thermal_growth_at(p, hot)
     k_soft = 1.0 / softest_compliance(p, mounting, preload, axial_force, mean_force, rock)
     elastic = pa.stiffness_positioning_error(p["axial_load"], k_soft)
-    abbe = pa.abbe_error(p["tool_height"], p["guide_pitch"]) + pa.abbe_error(p["tool_offset"], p["guide_yaw"])
+    abbe = pa.abbe_error(p["tool_height"], p["guide_pitch"]) + pa.abbe_error(
+        p["tool_offset"], p["guide_yaw"]
+    )
     lost = lost_motion(p)
-    # a linear scale on the table (p["scale_feedback"] 1): its error in place of the lead row, and the screw's
+    # a linear scale on the table (p["scale_feedback"] 1): its error in place of the lead row, and
+    # the screw's
     # thermal growth out of the loop (the scale measures the table, not the screw)
     scale = p.get("scale_feedback", 0.0)
     lead = (1.0 - scale) * p["lead_error"] + scale * p.get("scale_error", 0.0) + 0.0 * elastic
     thermal = (1.0 - scale) * thermal
     noise = scale * p.get("scale_repeatability", 0.0) + 0.0 * elastic
-    return {"lead_error": lead, "thermal_error": thermal, "elastic_error": elastic, "abbe_error": abbe + 0.0 * elastic,
-            "lost_motion": lost + 0.0 * elastic,
-            "positioning_error": pa.worst_case_total(lead, thermal, elastic, abbe, lost),
-            "repeatability": pa.repeatability_iso(lost, noise)}
+    return {
+        "lead_error": lead,
+        "thermal_error": thermal,
+        "elastic_error": elastic,
+        "abbe_error": abbe + 0.0 * elastic,
+        "lost_motion": lost + 0.0 * elastic,
+        "positioning_error": pa.worst_case_total(lead, thermal, elastic, abbe, lost),
+        "repeatability": pa.repeatability_iso(lost, noise),
+    }

@@ -34,8 +34,11 @@ def shares(p) -> dict:
     per_rail = p["guide_blocks"] / rails
     c0 = p["guide_static_load"]
     return {
-        "per_rail": per_rail, "n": p["guide_blocks"],
-        "pitch": pcr.moment_share(per_rail, p["block_spacing"], c0 / p["guide_moment_pitch"], rails),
+        "per_rail": per_rail,
+        "n": p["guide_blocks"],
+        "pitch": pcr.moment_share(
+            per_rail, p["block_spacing"], c0 / p["guide_moment_pitch"], rails
+        ),
         "roll": pcr.moment_share(rails, p["rail_spacing"], c0 / p["guide_moment_roll"], per_rail),
         "yaw": pcr.moment_share(per_rail, p["block_spacing"], c0 / p["guide_moment_yaw"], rails),
     }
@@ -58,9 +61,12 @@ def carriage_loads(p, moving) -> dict:
     ga, gc = p["gravity_axial"], p["gravity_cross"]
 
     y_t, h_t, h_g = p["tool_offset"], p["tool_height"], p["cg_height"]
-    # a twin gantry's cross carriage (m_c) at either end of its stroke across the rails (+-s/2): the weight and
-    # the inertia force of the moving mass m act at the centre of gravity y_g + m_c y_c / m (statics; the
-    # vendors' load distribution, THK A-82..A-89, HIWIN G99TE20 1-5, then takes the moments); one drive: y_c 0
+    # a twin gantry's cross carriage (m_c) at either end of its stroke across the rails (+-s/2): the
+    # weight and
+    # the inertia force of the moving mass m act at the centre of gravity y_g + m_c y_c / m
+    # (statics; the
+    # vendors' load distribution, THK A-82..A-89, HIWIN G99TE20 1-5, then takes the moments); one
+    # drive: y_c 0
     ends = [0.0]
     if not single_drive(p):
         half = 0.5 * tp(p, "cross_stroke")
@@ -73,7 +79,8 @@ def carriage_loads(p, moving) -> dict:
     def weight_of(m, y_c):
         return (-ga * m * G, gc * m * G, (1.0 - ga - gc) * m * G, cg(m, y_c), h_g)
 
-    # a twin drive's parameters carry the governing side's share of the process force (model.gantry): the guides
+    # a twin drive's parameters carry the governing side's share of the process force
+    # (model.gantry): the guides
     # carry the whole gantry and the whole force (force_share 1 for one drive)
     fs = tp(p, "force_share")
     f_feed, f_cross, f_norm = p["axial_load"] / fs, p["cross_load"], p["normal_load"]
@@ -92,21 +99,34 @@ def carriage_loads(p, moving) -> dict:
             cases.append([weight, (s * moving * p["acceleration"], 0.0, 0.0, y_g, h_g)])
             for t in (1.0, -1.0):
                 cases.append([weight, (s * f_feed, t * f_cross, f_norm, y_t, h_t)])
-        # the phases' own process forces (a duty cycle that gives them): the cut with the phase's inertia force
+        # the phases' own process forces (a duty cycle that gives them): the cut with the phase's
+        # inertia force
         for (force, peak, _, direction, mass), _ in groups:
             if force:
                 m = phase_moving_mass(p, moving, mass)
                 scale = p["duty_process"] * (force / fs) * ratio
                 sign = -direction if direction else 1.0
-                cases.append([weight_of(m, y_c), (-m * peak, 0.0, 0.0, cg(m, y_c), h_g),
-                              (sign * p["duty_process"] * (force / fs), scale * f_cross, scale * f_norm, y_t,
-                               h_t)])
+                cases.append(
+                    [
+                        weight_of(m, y_c),
+                        (-m * peak, 0.0, 0.0, cg(m, y_c), h_g),
+                        (
+                            sign * p["duty_process"] * (force / fs),
+                            scale * f_cross,
+                            scale * f_norm,
+                            y_t,
+                            h_t,
+                        ),
+                    ]
+                )
     p_max = pe_max(cases[0])
     for c in cases[1:]:
         p_max = mx.fmax(p_max, pe_max(c))
 
-    # mean load per block over the travel: the phase's process force, or the mean axial load (rapid cycle); a
-    # twin gantry's cross carriage at the end that loads the block most (conservative: it may stand there)
+    # mean load per block over the travel: the phase's process force, or the mean axial load (rapid
+    # cycle); a
+    # twin gantry's cross carriage at the end that loads the block most (conservative: it may stand
+    # there)
     p_mean = None
     for y_c in ends:
         loads = {corner: [] for corner in pcr.CORNERS}
@@ -117,10 +137,17 @@ def carriage_loads(p, moving) -> dict:
             m = phase_moving_mass(p, moving, mass)
             f = (p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]) / fs
             scale = f * ratio
-            fn, fy, mp, mr, my = _sum([weight_of(m, y_c), (-m * mean_acc, 0.0, 0.0, cg(m, y_c), h_g),
-                                       (-direction * f, scale * f_cross, scale * f_norm, y_t, h_t)])
-            for corner, pe in zip(pcr.CORNERS, pcr.corner_block_loads(fn, fy, mp, mr, my, n, sh["pitch"],
-                                                                       sh["roll"], sh["yaw"])):
+            fn, fy, mp, mr, my = _sum(
+                [
+                    weight_of(m, y_c),
+                    (-m * mean_acc, 0.0, 0.0, cg(m, y_c), h_g),
+                    (-direction * f, scale * f_cross, scale * f_norm, y_t, h_t),
+                ]
+            )
+            for corner, pe in zip(
+                pcr.CORNERS,
+                pcr.corner_block_loads(fn, fy, mp, mr, my, n, sh["pitch"], sh["roll"], sh["yaw"]),
+            ):
                 loads[corner].append(pe)
             travel.append(dist)
         if travel:
@@ -129,8 +156,11 @@ def carriage_loads(p, moving) -> dict:
             means = [pe_max([weight_of(moving, y_c)])]
         for m in means:
             p_mean = m if p_mean is None else mx.fmax(p_mean, m)
-    return {"guide_max_load": p_max, "guide_static_safety": pcr.static_safety(p["guide_static_load"], p_max),
-            "guide_mean_load": p_mean}
+    return {
+        "guide_max_load": p_max,
+        "guide_static_safety": pcr.static_safety(p["guide_static_load"], p_max),
+        "guide_mean_load": p_mean,
+    }
 
 
 def rocking(p) -> dict:
@@ -138,12 +168,26 @@ def rocking(p) -> dict:
     rails = p["rails"]
     per_rail = p["guide_blocks"] / rails
     c0 = p["guide_static_load"]
-    k_pitch = pcr.pattern_rocking_stiffness(p["guide_normal_stiffness"], per_rail, p["block_spacing"], rails,
-                                            c0 / p["guide_moment_pitch"])
-    k_yaw = pcr.pattern_rocking_stiffness(p["guide_tangential_stiffness"], per_rail, p["block_spacing"], rails,
-                                          c0 / p["guide_moment_yaw"])
-    return {"k_pitch": k_pitch, "k_yaw": k_yaw, "f_pitch": pcr.rocking_frequency(k_pitch, p["pitch_inertia"]),
-            "f_yaw": pcr.rocking_frequency(k_yaw, p["yaw_inertia"])}
+    k_pitch = pcr.pattern_rocking_stiffness(
+        p["guide_normal_stiffness"],
+        per_rail,
+        p["block_spacing"],
+        rails,
+        c0 / p["guide_moment_pitch"],
+    )
+    k_yaw = pcr.pattern_rocking_stiffness(
+        p["guide_tangential_stiffness"],
+        per_rail,
+        p["block_spacing"],
+        rails,
+        c0 / p["guide_moment_yaw"],
+    )
+    return {
+        "k_pitch": k_pitch,
+        "k_yaw": k_yaw,
+        "f_pitch": pcr.rocking_frequency(k_pitch, p["pitch_inertia"]),
+        "f_yaw": pcr.rocking_frequency(k_yaw, p["yaw_inertia"]),
+    }
 
 
 def tool_stiffness(p, k_total, rock) -> dict:

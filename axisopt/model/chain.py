@@ -49,8 +49,12 @@ def nut_stiffness(p, preload, axial_force, mean_force):
     the catalog's ``stiffness_preload`` holding the 0.28 C basis)."""
     single_load = mx.fmax(mean_force, 1e-6)
     load = mx.if_else(p["nut_double"] > 0.5, preload, single_load)
-    k0 = pn.nut_stiffness_catalog(p["nut_stiffness"], load, p["nut_dynamic_load"],
-                                  reference_preload=p["nut_stiffness_preload"])
+    k0 = pn.nut_stiffness_catalog(
+        p["nut_stiffness"],
+        load,
+        p["nut_dynamic_load"],
+        reference_preload=p["nut_stiffness_preload"],
+    )
     k_loaded = pn.double_nut_stiffness_under_load(k0, mx.fmax(preload, 1e-9), axial_force)
     return k0, mx.if_else(p["nut_double"] > 0.5, k_loaded, k0)
 
@@ -64,20 +68,38 @@ def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
     k_tors = ps.torsion_axial_stiffness(ps.screw_torsional_stiffness(d_r, x), lead)
     k_cpl = ps.torsion_axial_stiffness(drive_torsional_stiffness(p), lead)
     k_n0, k_n = nut_stiffness(p, preload, axial_force, mean_force)
-    # a driven rotating nut: the unit's built-in bearing between the nut and its housing on the table, in series
+    # a driven rotating nut: the unit's built-in bearing between the nut and its housing on the
+    # table, in series
     k_unit, c_unit = unit(p, "unit_bearing_stiffness"), unit(p, "nut_rotating")
     c_unit = c_unit / k_unit
     k_drive = 1.0 / (1.0 / k_sb + 1.0 / k_tors + 1.0 / k_n + c_unit + p["bracket_compliance"])
     k_tot = ps.series_stiffness(k_drive, k_cpl)
-    u_th = pt.thermal_displacement(x, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0)
-    # largest thermal growth at the nut over the stroke: u is linear in x, so at one of the stroke's ends
-    ends = [mx.fabs(pt.thermal_displacement(xe, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0))
-            for xe in (p["start_offset"], p["start_offset"] + p["stroke"])]
+    u_th = pt.thermal_displacement(
+        x, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0
+    )
+    # largest thermal growth at the nut over the stroke: u is linear in x, so at one of the stroke's
+    # ends
+    ends = [
+        mx.fabs(
+            pt.thermal_displacement(
+                xe, p["span"], d_r, p["temperature_rise"], k_set, p["bearing_sets"] - 1.0
+            )
+        )
+        for xe in (p["start_offset"], p["start_offset"] + p["stroke"])
+    ]
     return {
-        "k_screw": k_screw, "k_screw_bearings": k_sb, "k_torsion": k_tors, "k_coupling": k_cpl,
-        "k_nut": k_n, "k_nut_unloaded": k_n0, "c_bracket": p["bracket_compliance"] + 0.0 * k_n,
+        "k_screw": k_screw,
+        "k_screw_bearings": k_sb,
+        "k_torsion": k_tors,
+        "k_coupling": k_cpl,
+        "k_nut": k_n,
+        "k_nut_unloaded": k_n0,
+        "c_bracket": p["bracket_compliance"] + 0.0 * k_n,
         "c_housing": p["housing_compliance"] + 0.0 * k_n,
         "c_unit_bearing": c_unit + 0.0 * k_n,
-        "k_bearing": p["bearing_sets"] * k_set, "k_drive": k_drive, "k_total": k_tot,
-        "thermal_displacement": u_th, "thermal_growth": mx.fmax(ends[0], ends[1]),
+        "k_bearing": p["bearing_sets"] * k_set,
+        "k_drive": k_drive,
+        "k_total": k_tot,
+        "thermal_displacement": u_th,
+        "thermal_growth": mx.fmax(ends[0], ends[1]),
     }

@@ -23,38 +23,53 @@ CHECKS = tuple(c.name for c in CHECK_TABLE)
 DRIVE_CHECKS = tuple(c.name for c in CHECK_TABLE if c.drive)
 CHECK_LABELS = MappingProxyType({c.name: c.label for c in CHECK_TABLE})
 
-# Buckling end condition.  The compressed length runs from the thrust (fixed) bearing to the nut, and the
+# Buckling end condition.  The compressed length runs from the thrust (fixed) bearing to the nut,
+# and the
 # guided nut counts as a fixed end whatever the screw mounting: THK worked examples A-724..A-727 and
-# A-738..A-740 take "fixed-fixed" (eta_2 = 20) for a fixed-supported screw, with l_a the distance between the
+# A-738..A-740 take "fixed-fixed" (eta_2 = 20) for a fixed-supported screw, with l_a the distance
+# between the
 # mounting positions.  The critical speed keeps the screw's own mounting (lambda_2 of the mounting).
 BUCKLING_END_CONDITION = "fixed-fixed"
-# How the nut holds the shaft (axis.buckling_nut_end): "fixed" (a long nut in a rigid bracket on a guided table:
-# the THK examples above, the default), or "supported" (the nut a pinned end: MiSUMi "Selection of Ball Screws 2"
-# p. 1676, whose example takes a fixed-support shaft's m = 10 over the distance between the points of buckling
+# How the nut holds the shaft (axis.buckling_nut_end): "fixed" (a long nut in a rigid bracket on a
+# guided table:
+# the THK examples above, the default), or "supported" (the nut a pinned end: MiSUMi "Selection of
+# Ball Screws 2"
+# p. 1676, whose example takes a fixed-support shaft's m = 10 over the distance between the points
+# of buckling
 # load, d 12.5 mm, l 820 mm: 3 630 N, half the fixed-end figure)
 BUCKLING_NUT_ENDS = {"fixed": "fixed-fixed", "supported": "fixed-supported"}
-# Above this a margin says only "not limiting" (e.g. buckling when pretension keeps the screw in tension).
+# Above this a margin says only "not limiting" (e.g. buckling when pretension keeps the screw in
+# tension).
 MARGIN_CAP = 1e3
-# THK catalog A15 eq. 6: permissible tensile/compressive load of the shaft, P2 = sigma A, sigma = 147 MPa.
+# THK catalog A15 eq. 6: permissible tensile/compressive load of the shaft, P2 = sigma A, sigma =
+# 147 MPa.
 SCREW_YIELD_STRESS = 147e6
 
-# DN: each screw vendor states its limit on its own diameter (catalogs/SOURCES.md stores every row's limit on
-# the nominal diameter the model divides by): THK on the ball centre-to-centre diameter dp (A-697, stored as
-# limit x d / dp), HIWIN GmbH (H-BS 3.7.6) and Rexroth (R310RU 3301 p. 99) on the nominal diameter, HIWIN
+# DN: each screw vendor states its limit on its own diameter (catalogs/SOURCES.md stores every row's
+# limit on
+# the nominal diameter the model divides by): THK on the ball centre-to-centre diameter dp (A-697,
+# stored as
+# limit x d / dp), HIWIN GmbH (H-BS 3.7.6) and Rexroth (R310RU 3301 p. 99) on the nominal diameter,
+# HIWIN
 # Taiwan (S99TE20 p. 33) on the pitch-circle diameter.
-DN_RULES = MappingProxyType({
-    "THK": "THK A-697: DN on the ball centre diameter dp",
-    "HIWIN": "HIWIN H-BS 3.7.6: d0 x n on the nominal diameter",
-    "Bosch Rexroth": "Rexroth R310 p. 99: d0 x n on the nominal diameter",
-})
+DN_RULES = MappingProxyType(
+    {
+        "THK": "THK A-697: DN on the ball centre diameter dp",
+        "HIWIN": "HIWIN H-BS 3.7.6: d0 x n on the nominal diameter",
+        "Bosch Rexroth": "Rexroth R310 p. 99: d0 x n on the nominal diameter",
+    }
+)
 DN_RULE_OTHER = "d x n on the nominal diameter (the row's own limit)"
 
-# Margin of a check that does not apply to the design (a rotating-nut check on a nut that does not turn, the whirl
+# Margin of a check that does not apply to the design (a rotating-nut check on a nut that does not
+# turn, the whirl
 # of a screw that does not turn)
 NOT_APPLICABLE = 1e9
 
-# A margin passes at >= 1 less float rounding: the search holds each limit exactly by bisection, and the
-# evaluation path may round the same ratio (e.g. 19 999.999999999996 h against 20 000 h) one ulp lower.
+# A margin passes at >= 1 less float rounding: the search holds each limit exactly by bisection, and
+# the
+# evaluation path may round the same ratio (e.g. 19 999.999999999996 h against 20 000 h) one ulp
+# lower.
 MARGIN_RTOL = 1e-9
 
 
@@ -95,12 +110,16 @@ def bearing_life_load(p, loads, travels, static):
     for ratings, rows in (((c_strong, c_weak), (n_s, n_w)), ((c_weak, c_strong), (n_w, n_s))):
         ends = []
         for orient in (1.0, -1.0):
-            # the groups' loads: HIWIN's pair law for as many rows each way; where the groups differ in rows, IBC's
+            # the groups' loads: HIWIN's pair law for as many rows each way; where the groups differ
+            # in rows, IBC's
             # linear split up to the set's own lift-off load (physics.bearingsets.set_halves)
             halves = [_set_halves(pre, orient * f - static, rows, n_s == n_w) for f in loads]
             means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
             # the equivalent load on the printed (stronger) rating
-            ends.append(pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT) * (c_strong / ratings[0]))
+            ends.append(
+                pl.set_equivalent_load(means, ratings, pl.BEARING_SET_EXPONENT)
+                * (c_strong / ratings[0])
+            )
         load = mx.if_else(two_ends, mx.fmax(*ends), mx.fmin(*ends))
         best = load if best is None else mx.fmin(best, load)
     return best
@@ -128,8 +147,11 @@ def bearing_static(p, f_max, static):
     push = f_max + static
     margin = pb.support_static_margin(c_strong, c_weak, push, f_max, s0)
     strong_governs = c_strong / push <= c_weak / f_max
-    return (margin, mx.if_else(strong_governs, c_strong, c_weak),
-            s0 * mx.if_else(strong_governs, push, f_max))
+    return (
+        margin,
+        mx.if_else(strong_governs, c_strong, c_weak),
+        s0 * mx.if_else(strong_governs, push, f_max),
+    )
 
 
 def bearing_lift_off(p, f_max, static):
@@ -143,8 +165,11 @@ def bearing_lift_off(p, f_max, static):
     strong = p["bearing_lift_off_strong"] / push
     weak = p["bearing_lift_off"] / f_max
     strong_governs = strong <= weak
-    return (mx.fmin(strong, weak), mx.if_else(strong_governs, p["bearing_lift_off_strong"], p["bearing_lift_off"]),
-            mx.if_else(strong_governs, push, f_max))
+    return (
+        mx.fmin(strong, weak),
+        mx.if_else(strong_governs, p["bearing_lift_off_strong"], p["bearing_lift_off"]),
+        mx.if_else(strong_governs, push, f_max),
+    )
 
 
 def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
@@ -165,14 +190,21 @@ def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
     """
     r = unit(p, "nut_rotating") > 0.5
     ca, c0 = unit(p, "unit_bearing_dynamic_load"), unit(p, "unit_bearing_static_load")
-    absent = NOT_APPLICABLE * p["required_life"] + 0.0 * mean_omega  # no unit: no bearing of its own
+    # no unit: no bearing of its own
+    absent = NOT_APPLICABLE * p["required_life"] + 0.0 * mean_omega
     if not mx.is_symbolic(r) and not np.any(r):  # numbers without a unit: the life is not computed
         life = absent
     else:
         q = dict(p)
-        q.update({"bearing_dynamic_load": ca, "bearing_rows_strong": 1.0, "bearing_rows_weak": 1.0,
-                  "bearing_sets": 1.0,
-                  "bearing_preload": unit(p, "unit_bearing_preload")})
+        q.update(
+            {
+                "bearing_dynamic_load": ca,
+                "bearing_rows_strong": 1.0,
+                "bearing_rows_weak": 1.0,
+                "bearing_sets": 1.0,
+                "bearing_preload": unit(p, "unit_bearing_preload"),
+            }
+        )
         load = bearing_life_load(q, loads["life_loads"], loads["life_travels"], 0.0)
         life = mx.if_else(r, pc.life_time(ca, load, mean_omega, p["load_factor"]), absent)
     f_max = loads["max_axial_force"]
@@ -186,10 +218,16 @@ def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
     }
     out = {margin_output(k): v for k, v in margins.items()}
     out["unit_bearing_life"] = life
-    out.update(check_pairs({
-        "unit_speed": (unit(p, "unit_max_speed"), omega), "unit_bearing_life": (life, p["required_life"]),
-        "unit_bearing_static": (c0, s0 * f_max), "rotating_mount": (held, 1.0),
-    }))
+    out.update(
+        check_pairs(
+            {
+                "unit_speed": (unit(p, "unit_max_speed"), omega),
+                "unit_bearing_life": (life, p["required_life"]),
+                "unit_bearing_static": (c0, s0 * f_max),
+                "rotating_mount": (held, 1.0),
+            }
+        )
+    )
     return out
 
 
@@ -207,31 +245,47 @@ def checks(p, mounting, preload, loads) -> dict:
     f_max = loads["max_axial_force"]
     x_far = p["start_offset"] + p["stroke"]
     crit = pc.critical_speed(p["root_diameter"], span, mounting)
-    # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK "evaluate
+    # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK
+    # "evaluate
     # both"), nut counted as fixed (BUCKLING_END_CONDITION)
     buck_len = x_far if mounting != "fixed-fixed" else mx.fmax(x_far, span - p["start_offset"])
-    held = p.get("buckling_nut_fixed", 1.0)  # 1: the nut a fixed end, 0: a supported one (BUCKLING_NUT_ENDS)
-    buck = held * pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_END_CONDITION) \
-        + (1.0 - held) * pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_NUT_ENDS["supported"])
+    # 1: the nut a fixed end, 0: a supported one (BUCKLING_NUT_ENDS)
+    held = p.get("buckling_nut_fixed", 1.0)
+    buck = held * pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_END_CONDITION) + (
+        1.0 - held
+    ) * pc.buckling_load(p["root_diameter"], buck_len, BUCKLING_NUT_ENDS["supported"])
     compression = mx.fmax(loads["screw_compression"], buck / MARGIN_CAP)
     yield_load = SCREW_YIELD_STRESS * math.pi * p["root_diameter"] ** 2 / 4.0
     tension = mx.fmax(loads["screw_tension"], f_max)
-    life = pc.life_time(p["nut_dynamic_load"], nut_life_load(p, preload, loads["life_loads"], loads["life_travels"]),
-                        mean_omega, p["load_factor"])
-    brg_load = bearing_life_load(p, loads["life_loads"], loads["life_travels"], loads["bearing_static_load"])
+    life = pc.life_time(
+        p["nut_dynamic_load"],
+        nut_life_load(p, preload, loads["life_loads"], loads["life_travels"]),
+        mean_omega,
+        p["load_factor"],
+    )
+    brg_load = bearing_life_load(
+        p, loads["life_loads"], loads["life_travels"], loads["bearing_static_load"]
+    )
     brg_life = pc.life_time(p["bearing_dynamic_load"], brg_load, mean_omega, p["load_factor"])
-    # guide blocks: the load per block with the block preload acting like a preloaded pair of ball rows
+    # guide blocks: the load per block with the block preload acting like a preloaded pair of ball
+    # rows
     # (the most loaded block's cubic mean load over the duty cycle, model.carriage)
     guide_load = pn.preloaded_pair_load(p["guide_preload"], loads["guide_mean_load"])
-    guide_life = pc.guide_life_distance(p["guide_dynamic_load"], guide_load, p["load_factor"], p["guide_roller"],
-                                        p["guide_rating_distance"])
+    guide_life = pc.guide_life_distance(
+        p["guide_dynamic_load"],
+        guide_load,
+        p["load_factor"],
+        p["guide_roller"],
+        p["guide_rating_distance"],
+    )
     dn = pc.dn_value(p["nominal_diameter"], omega)
     lift = pn.lift_off_force(mx.fmax(preload, 1e-9))
     brg_max = f_max + loads["bearing_static_load"]
     bore = p["bearing_bore"]
     ceiling = pn.preload_ceiling(p["nut_dynamic_load"])
     brg_static, brg_c0, brg_c0_need = bearing_static(p, f_max, loads["bearing_static_load"])
-    # each load case with its own load (model.loads.lift_off_load: THK A-725's phases), not all at once
+    # each load case with its own load (model.loads.lift_off_load: THK A-725's phases), not all at
+    # once
     lift_need = p["nut_lift_off_safety"] * loads["lift_off_load"]
     lift_margin, lift_avail, lift_load = bearing_lift_off(p, f_max, loads["bearing_static_load"])
     turning = unit(p, "nut_rotating") < 0.5  # the screw turns (a nut on a rotating screw)
@@ -253,30 +307,48 @@ def checks(p, mounting, preload, loads) -> dict:
         "bearing_fit": mx.fmin(p["support_bore_max"] / bore, bore / p["support_bore_min"]),
         "screw_length": p["screw_max_length"] / span,
         # static safety of the guide blocks (largest block load of the load cases) and of the nut
-        "guide_static": p["guide_static_load"] / (p["guide_static_safety"] * loads["guide_max_load"]),
+        "guide_static": p["guide_static_load"]
+        / (p["guide_static_safety"] * loads["guide_max_load"]),
         "nut_static": p["nut_static_load"] / (p["nut_static_safety"] * f_max),
         "bearing_static": brg_static,
     }
     values = {
-        "critical_speed": crit, "buckling_load": buck, "yield_load": yield_load, "life": life,
-        "bearing_life": brg_life, "guide_life": guide_life, "dn": dn, "nut_lift_off_force": lift,
-        "bearing_max_load": brg_max, "nut_static_safety": p["nut_static_load"] / f_max,
+        "critical_speed": crit,
+        "buckling_load": buck,
+        "yield_load": yield_load,
+        "life": life,
+        "bearing_life": brg_life,
+        "guide_life": guide_life,
+        "dn": dn,
+        "nut_lift_off_force": lift,
+        "bearing_max_load": brg_max,
+        "nut_static_safety": p["nut_static_load"] / f_max,
         "screw_slenderness": span / p["nominal_diameter"],
-        "screw_sag": (1.0 - p["gravity_axial"]) * ps.screw_sag(p["screw_mass_per_length"], p["root_diameter"],
-                                                               span, mounting),
+        "screw_sag": (1.0 - p["gravity_axial"])
+        * ps.screw_sag(p["screw_mass_per_length"], p["root_diameter"], span, mounting),
     }
-    # what each margin compares, in SI: the available capacity and the needed value (margin = available /
-    # needed, except bearing_fit, whose "needed" is the bore and "available" the largest bore the end takes)
+    # what each margin compares, in SI: the available capacity and the needed value (margin =
+    # available /
+    # needed, except bearing_fit, whose "needed" is the bore and "available" the largest bore the
+    # end takes)
     pairs = {
-        "critical_speed": (crit, omega), "buckling": (buck, loads["screw_compression"]),
-        "screw_yield": (yield_load, tension), "nut_life": (life, p["required_life"]),
+        "critical_speed": (crit, omega),
+        "buckling": (buck, loads["screw_compression"]),
+        "screw_yield": (yield_load, tension),
+        "nut_life": (life, p["required_life"]),
         "bearing_life": (brg_life, p["required_life"]),
-        "guide_life": (guide_life, p["required_life"] * p["mean_speed"]), "dn": (p["dn_limit"], dn),
-        "nut_lift_off": (lift, lift_need), "nut_preload": (ceiling, preload),
+        "guide_life": (guide_life, p["required_life"] * p["mean_speed"]),
+        "dn": (p["dn_limit"], dn),
+        "nut_lift_off": (lift, lift_need),
+        "nut_preload": (ceiling, preload),
         "bearing_lift_off": (lift_avail, lift_load),
-        "bearing_speed": (p["bearing_limiting_speed"], omega), "bearing_fit": (p["support_bore_max"], bore),
+        "bearing_speed": (p["bearing_limiting_speed"], omega),
+        "bearing_fit": (p["support_bore_max"], bore),
         "screw_length": (p["screw_max_length"], span),
-        "guide_static": (p["guide_static_load"], p["guide_static_safety"] * loads["guide_max_load"]),
+        "guide_static": (
+            p["guide_static_load"],
+            p["guide_static_safety"] * loads["guide_max_load"],
+        ),
         "nut_static": (p["nut_static_load"], p["nut_static_safety"] * f_max),
         "bearing_static": (brg_c0, brg_c0_need),
     }

@@ -21,9 +21,16 @@ def drag_torque(p, preload, loads) -> dict:
     torque, else the same envelope, an estimate) instead of the end sets, which do not turn."""
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
     t_nut = pn.nut_preload_drag_torque(preload, p["lead"], p["nominal_diameter"])
-    # a driven rotating nut: the end bearings stand still, the unit's built-in bearing turns (model.checks)
-    t_brg = (1.0 - unit(p, "nut_rotating")) * p["bearing_sets"] * p["bearing_torque"] \
-        + unit(p, "nut_rotating") * unit(p, "unit_bearing_torque")
+    # a driven rotating nut: the end bearings stand still, the unit's built-in bearing turns
+    # (model.checks)
+    t_brg = (1.0 - unit(p, "nut_rotating")) * p["bearing_sets"] * p["bearing_torque"] + unit(
+        p, "nut_rotating"
+    ) * unit(p, "unit_bearing_torque")
     t_guides = pf.axial_force_torque(loads["guide_friction"], p["lead"], SCREW_EFFICIENCY)
-    return {"drag_torque": t_nut + t_brg + t_guides, "drag_nut": t_nut, "drag_bearings": t_brg,
-            "drag_guides": t_guides, "screw_speed": omega}
+    return {
+        "drag_torque": t_nut + t_brg + t_guides,
+        "drag_nut": t_nut,
+        "drag_bearings": t_brg,
+        "drag_guides": t_guides,
+        "screw_speed": omega,
+    }

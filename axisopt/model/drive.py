@@ -44,14 +44,17 @@ from .limits import margin_output
 from .loads import G, balance, balance_force, phase_moving_mass, unit
 from .motorrule import DEFAULT_RULE
 
-NOT_APPLICABLE = 1e9  # margin of a check that does not apply (no motor, horizontal axis for the brake)
+# margin of a check that does not apply (no motor, horizontal axis for the brake)
+NOT_APPLICABLE = 1e9
 
 
 def turning_inertia(p):
     """Inertia of what the drive turns on the screw side [kg m^2]: the screw, or for a driven rotating nut
     (``nut_rotating`` 1) the unit's rotating parts instead (THK prints them, T-GC B-721/B-723 "nut inertia")."""
     r = unit(p, "nut_rotating")
-    return (1.0 - r) * ps.screw_rotary_inertia(p["nominal_diameter"], p["span"]) + r * unit(p, "unit_inertia")
+    return (1.0 - r) * ps.screw_rotary_inertia(p["nominal_diameter"], p["span"]) + r * unit(
+        p, "unit_inertia"
+    )
 
 
 def drive_inertias(p, moving_mass):
@@ -59,9 +62,14 @@ def drive_inertias(p, moving_mass):
     reduction; a counterbalance's moving mass, a counterweight and its chain, with the head's: Yaskawa Sigma-7
     11.2.1, J_L1 = (M + M_c)(P_B / 2 pi R)^2)."""
     a = 1.0 / p["reduction_ratio"]
-    j_load = pd.reflected_inertia(moving_mass + balance(p, "balance_moving_mass"), p["lead"], turning_inertia(p),
-                                  p["coupling_inertia"], a,
-                                  p["reduction_inertia"])
+    j_load = pd.reflected_inertia(
+        moving_mass + balance(p, "balance_moving_mass"),
+        p["lead"],
+        turning_inertia(p),
+        p["coupling_inertia"],
+        a,
+        p["reduction_inertia"],
+    )
     return j_load, p["rotor_inertia"]
 
 
@@ -74,7 +82,9 @@ def lost_motion(p):
     p["nut_axial_play"] [m], p["nut_double"] (1: preloaded), p["reduction_backlash"] j_t [rad] at the output
     (Beckhoff AG2400/AG3400 "Maximum torsional backlash jt [arcmin]"; 0 without a reduction), p["lead"] P_h [m].
     A semi-closed loop (encoder on the motor) does not see it; the problem's max_backlash limits it."""
-    return (1.0 - p["nut_double"]) * p["nut_axial_play"] + p["reduction_backlash"] * p["lead"] / (2.0 * math.pi)
+    return (1.0 - p["nut_double"]) * p["nut_axial_play"] + p["reduction_backlash"] * p["lead"] / (
+        2.0 * math.pi
+    )
 
 
 def output_torques(p, moving_mass, drag, phases, hold_friction=0.0):
@@ -96,17 +106,41 @@ def output_torques(p, moving_mass, drag, phases, hold_friction=0.0):
         if ph.moving_mass not in by_mass:
             m = phase_moving_mass(p, moving_mass, ph.moving_mass)
             by_mass[ph.moving_mass] = (
-                pd.reflected_inertia(m + balance(p, "balance_moving_mass"), p["lead"], j_turn, p["coupling_inertia"],
-                                     1.0), m)
-    weights = _net_weights(p, phases, {k: v[1] for k, v in by_mass.items()},
-                           lambda w: pd.force_torque(w, p["lead"], SCREW_EFFICIENCY, 1.0))
-    torques = pd.phase_torques(phases, [by_mass[ph.moving_mass][0] for ph in phases], p["lead"], drag,
-                               [weights[ph.moving_mass, ph.direction] for ph in phases], SCREW_EFFICIENCY, 1.0,
-                               hold_friction)
-    gravity = pd.force_torque(p["gravity_axial"] * moving_mass * G - balance_force(p, 1.0), p["lead"],
-                              SCREW_EFFICIENCY, 1.0)
+                pd.reflected_inertia(
+                    m + balance(p, "balance_moving_mass"),
+                    p["lead"],
+                    j_turn,
+                    p["coupling_inertia"],
+                    1.0,
+                ),
+                m,
+            )
+    weights = _net_weights(
+        p,
+        phases,
+        {k: v[1] for k, v in by_mass.items()},
+        lambda w: pd.force_torque(w, p["lead"], SCREW_EFFICIENCY, 1.0),
+    )
+    torques = pd.phase_torques(
+        phases,
+        [by_mass[ph.moving_mass][0] for ph in phases],
+        p["lead"],
+        drag,
+        [weights[ph.moving_mass, ph.direction] for ph in phases],
+        SCREW_EFFICIENCY,
+        1.0,
+        hold_friction,
+    )
+    gravity = pd.force_torque(
+        p["gravity_axial"] * moving_mass * G - balance_force(p, 1.0),
+        p["lead"],
+        SCREW_EFFICIENCY,
+        1.0,
+    )
     thrust = drag + pd.force_torque(p["axial_load"], p["lead"], SCREW_EFFICIENCY, 1.0) + gravity
-    thrust_mean = drag + pd.force_torque(p["mean_axial_load"], p["lead"], SCREW_EFFICIENCY, 1.0) + gravity
+    thrust_mean = (
+        drag + pd.force_torque(p["mean_axial_load"], p["lead"], SCREW_EFFICIENCY, 1.0) + gravity
+    )
     return torques, thrust, thrust_mean
 
 
@@ -124,49 +158,80 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     j_tot = j_load + j_rotor
     friction = drag * a / p["reduction_efficiency"]
     weight = p["gravity_axial"] * moving_mass * G
-    # a counterbalance's force: the least (head rising) for the steady thrust, at rest for the holding torque
+    # a counterbalance's force: the least (head rising) for the steady thrust, at rest for the
+    # holding torque
     gravity = pd.force_torque(weight - balance_force(p, 1.0), p["lead"], eta, a)
     phases = p.get("duty", ())  # no cycle (a bare parameter dict): the steady thrusts alone
-    # per phase: the inertia and the weight of the mass the phase carries (one evaluation per distinct mass), the
-    # weight net of a counterbalance's force in the phase's direction (one per distinct mass and direction)
+    # per phase: the inertia and the weight of the mass the phase carries (one evaluation per
+    # distinct mass), the
+    # weight net of a counterbalance's force in the phase's direction (one per distinct mass and
+    # direction)
     by_mass = {None: (j_tot, moving_mass)}
     for ph in phases:
         if ph.moving_mass not in by_mass:
             m = phase_moving_mass(p, moving_mass, ph.moving_mass)
             by_mass[ph.moving_mass] = (drive_inertias(p, m)[0] + j_rotor, m)
-    weights = _net_weights(p, phases, {k: v[1] for k, v in by_mass.items()},
-                           lambda w: pd.force_torque(w, p["lead"], eta, a))
-    torques = pd.phase_torques(phases, [by_mass[ph.moving_mass][0] for ph in phases], p["lead"], friction,
-                               [weights[ph.moving_mass, ph.direction] for ph in phases], eta, a, hold_friction)
+    weights = _net_weights(
+        p,
+        phases,
+        {k: v[1] for k, v in by_mass.items()},
+        lambda w: pd.force_torque(w, p["lead"], eta, a),
+    )
+    torques = pd.phase_torques(
+        phases,
+        [by_mass[ph.moving_mass][0] for ph in phases],
+        p["lead"],
+        friction,
+        [weights[ph.moving_mass, ph.direction] for ph in phases],
+        eta,
+        a,
+        hold_friction,
+    )
     durations = [ph.duration for ph in phases]
     t_rms = pd.linear_rms_torque(torques, durations) if phases else 0.0 * friction
-    # each distinct torque pair's largest |torque|, and the largest over the pairs that run at each phase speed
+    # each distinct torque pair's largest |torque|, and the largest over the pairs that run at each
+    # phase speed
     pair_peak = _pair_peaks(torques)
     at_speed: dict = {}
     for pair, ph in zip(torques, phases):
         at_speed.setdefault(ph.speed, {})[id(pair)] = pair_peak[id(pair)]
     t_peak_cycle = _largest(pair_peak.values()) if phases else 0.0 * friction
-    # each phase's largest |torque| against the peak torque the motor gives at the phase's largest speed (the
-    # intermittent zone, physics.drive.peak_torque_available); the steady thrust (feed) against the flat peak
+    # each phase's largest |torque| against the peak torque the motor gives at the phase's largest
+    # speed (the
+    # intermittent zone, physics.drive.peak_torque_available); the steady thrust (feed) against the
+    # flat peak
     by_speed: dict = {}  # one zone value per distinct phase speed
     for ph in phases:
         if ph.speed not in by_speed:
             by_speed[ph.speed] = pd.peak_torque_available(
-                pd.motor_speed(ph.speed, p["lead"], a), p["motor_peak_torque"], p["motor_peak_corner_speed"],
-                p["motor_peak_at_max_speed"], p["motor_max_speed"])
-    # steady thrust at feed (no acceleration): the largest and the mean axial load with friction and weight
+                pd.motor_speed(ph.speed, p["lead"], a),
+                p["motor_peak_torque"],
+                p["motor_peak_corner_speed"],
+                p["motor_peak_at_max_speed"],
+                p["motor_max_speed"],
+            )
+    # steady thrust at feed (no acceleration): the largest and the mean axial load with friction and
+    # weight
     thrust = friction + pd.force_torque(p["axial_load"], p["lead"], eta, a) + gravity
     thrust_mean = friction + pd.force_torque(p["mean_axial_load"], p["lead"], eta, a) + gravity
     t_peak = mx.fmax(t_peak_cycle, thrust)
-    # an unbalanced (vertical) axis's steady load torque, friction and the weight less a counterbalance (either
-    # way: an overbalanced head pushes up), against the vendor's share of the rated torque (Mitsubishi
-    # MDS-D-SVJ3 eq. 7-12: TL <= 0.6 Tst; model.motorrule), referred to the RMS ratio so one check holds both
+    # an unbalanced (vertical) axis's steady load torque, friction and the weight less a
+    # counterbalance (either
+    # way: an overbalanced head pushes up), against the vendor's share of the rated torque
+    # (Mitsubishi
+    # MDS-D-SVJ3 eq. 7-12: TL <= 0.6 Tst; model.motorrule), referred to the RMS ratio so one check
+    # holds both
     unbalance = p["gravity_axial"] * (friction + mx.fabs(gravity))
-    unbalance_need = unbalance * p["rms_torque_ratio"] / p.get("unbalance_torque_ratio", DEFAULT_RULE.unbalance)
+    unbalance_need = (
+        unbalance * p["rms_torque_ratio"] / p.get("unbalance_torque_ratio", DEFAULT_RULE.unbalance)
+    )
     t_cont = mx.fmax(mx.fmax(t_rms, thrust_mean), unbalance_need)
-    # peak torque needed, referred to the flat (low-speed) peak: max over phases of |T| T_pk / T_pk(n); convex in
-    # the nut preload like |T| (the zone does not depend on it), so the margin holds on an interval of preloads
-    factor_of = {s: p["motor_peak_torque"] / mx.fmax(avail, 1e-9) for s, avail in by_speed.items()}  # >= 1
+    # peak torque needed, referred to the flat (low-speed) peak: max over phases of |T| T_pk /
+    # T_pk(n); convex in
+    # the nut preload like |T| (the zone does not depend on it), so the margin holds on an interval
+    # of preloads
+    # >= 1
+    factor_of = {s: p["motor_peak_torque"] / mx.fmax(avail, 1e-9) for s, avail in by_speed.items()}
     factors = [factor_of[ph.speed] for ph in phases]  # preload-independent
     use = thrust
     for speed, peaks in at_speed.items():  # max(a k, b k) = max(a, b) k for the factor k >= 1
@@ -175,80 +240,149 @@ def drive(p, moving_mass, drag, hold_friction=0.0, regen: bool = True) -> dict:
     v_max = max([ph.speed for ph in phases] + [0.0])
     n_motor = pd.motor_speed(v_max, p["lead"], a)
     ratio = pd.inertia_ratio(j_load, j_rotor)
-    # holding a vertical axis at standstill (THK A-745: T_S = (m g - f) P_h / 2 pi eta, guide friction
-    # credited): the brake holds wherever the power fails, so with the heaviest mass the table carries (the
+    # holding a vertical axis at standstill (THK A-745: T_S = (m g - f) P_h / 2 pi eta, guide
+    # friction
+    # credited): the brake holds wherever the power fails, so with the heaviest mass the table
+    # carries (the
     # axis's moving_mass), or a dwell's weight and force if larger; times the brake safety factor
-    hold = p["gravity_axial"] * pd.holding_torque(weight - balance_force(p, 0.0), hold_friction, p["lead"], eta, a)
+    hold = p["gravity_axial"] * pd.holding_torque(
+        weight - balance_force(p, 0.0), hold_friction, p["lead"], eta, a
+    )
     for ph, (t0, _) in zip(phases, torques):
         if ph.direction == 0.0:
             hold = mx.fmax(hold, t0)
     has = p["has_motor"] > 0.5
     brake_needed = p["gravity_axial"] > 0.5
-    # the reduction's output torques (screw side): the cycle's largest against T2B, its RMS against T2N
+    # the reduction's output torques (screw side): the cycle's largest against T2B, its RMS against
+    # T2N
     red = p["has_reduction"] > 0.5
-    if isinstance(red, (bool, np.bool_)) and not red:  # numbers without a reduction: no output torques to compute
-        out_torques, out_thrust, out_thrust_mean = [(0.0 * friction, 0.0 * friction)] * len(phases), \
-            0.0 * friction, 0.0 * friction
+    # numbers without a reduction: no output torques to compute
+    if isinstance(red, (bool, np.bool_)) and not red:
+        out_torques, out_thrust, out_thrust_mean = (
+            [(0.0 * friction, 0.0 * friction)] * len(phases),
+            0.0 * friction,
+            0.0 * friction,
+        )
     else:
-        out_torques, out_thrust, out_thrust_mean = output_torques(p, moving_mass, drag, phases, hold_friction)
+        out_torques, out_thrust, out_thrust_mean = output_torques(
+            p, moving_mass, drag, phases, hold_friction
+        )
     # reported where a reduction is (0 without one, on every backend)
-    out_peak = mx.if_else(red, mx.fmax(_largest(_pair_peaks(out_torques).values()), out_thrust) if phases
-                          else out_thrust, 0.0)
-    out_rms = mx.if_else(red, mx.fmax(pd.linear_rms_torque(out_torques, durations), out_thrust_mean)
-                         if phases else out_thrust_mean, 0.0)
+    out_peak = mx.if_else(
+        red,
+        mx.fmax(_largest(_pair_peaks(out_torques).values()), out_thrust) if phases else out_thrust,
+        0.0,
+    )
+    out_rms = mx.if_else(
+        red,
+        mx.fmax(pd.linear_rms_torque(out_torques, durations), out_thrust_mean)
+        if phases
+        else out_thrust_mean,
+        0.0,
+    )
     screw_speed = 2.0 * math.pi * v_max / p["lead"]
-    emergency = p.get("reduction_emergency_torque", p["reduction_accel_torque"])  # T2Stop (params: T2B if none)
+    # T2Stop (params: T2B if none)
+    emergency = p.get("reduction_emergency_torque", p["reduction_accel_torque"])
     margins = {
         "motor_peak_torque": mx.if_else(has, p["motor_peak_torque"] / use, NOT_APPLICABLE),
         "motor_rated_torque": mx.if_else(has, thrust_ratio / t_cont, NOT_APPLICABLE),
-        "motor_speed": mx.if_else(has, p["motor_max_speed"] / mx.fmax(n_motor, 1e-9), NOT_APPLICABLE),
+        "motor_speed": mx.if_else(
+            has, p["motor_max_speed"] / mx.fmax(n_motor, 1e-9), NOT_APPLICABLE
+        ),
         "inertia_ratio": mx.if_else(has, p["max_inertia_ratio"] / ratio, NOT_APPLICABLE),
-        "brake_holding": mx.if_else(has * brake_needed > 0.5,
-                                    p["motor_brake_torque"] / (p["brake_safety"] * hold + 1e-12), NOT_APPLICABLE),
+        "brake_holding": mx.if_else(
+            has * brake_needed > 0.5,
+            p["motor_brake_torque"] / (p["brake_safety"] * hold + 1e-12),
+            NOT_APPLICABLE,
+        ),
         # the coupling carries what the motor can deliver (its peak torque through the reduction)
-        "coupling_torque": mx.if_else(p["has_coupling"] * has > 0.5,
-                                      p["coupling_rated_torque"] / (p["motor_peak_torque"] * p["reduction_ratio"]),
-                                      NOT_APPLICABLE),
-        "coupling_speed": mx.if_else(p["has_coupling"] > 0.5, p["coupling_max_speed"] / mx.fmax(screw_speed, 1e-9),
-                                     NOT_APPLICABLE),
-        "reduction_accel_torque": mx.if_else(red, p["reduction_accel_torque"] / mx.fmax(out_peak, 1e-9),
-                                             NOT_APPLICABLE),
-        "reduction_rated_torque": mx.if_else(red, p["reduction_rated_torque"] / mx.fmax(out_rms, 1e-9),
-                                             NOT_APPLICABLE),
-        "reduction_speed": mx.if_else(red, p["reduction_max_speed"] / mx.fmax(n_motor, 1e-9), NOT_APPLICABLE),
-        # an emergency stop or a collision: the motor's peak (or the drive's torque limit) through the ratio
-        # against the reduction's emergency-stop torque (Beckhoff AG2400 T2Em.stop; Siemens 1FT7 5.4.1)
-        "reduction_emergency_torque": mx.if_else(red * has > 0.5, emergency
-                                                 / (p["motor_peak_torque"] * p["reduction_ratio"]), NOT_APPLICABLE),
+        "coupling_torque": mx.if_else(
+            p["has_coupling"] * has > 0.5,
+            p["coupling_rated_torque"] / (p["motor_peak_torque"] * p["reduction_ratio"]),
+            NOT_APPLICABLE,
+        ),
+        "coupling_speed": mx.if_else(
+            p["has_coupling"] > 0.5,
+            p["coupling_max_speed"] / mx.fmax(screw_speed, 1e-9),
+            NOT_APPLICABLE,
+        ),
+        "reduction_accel_torque": mx.if_else(
+            red, p["reduction_accel_torque"] / mx.fmax(out_peak, 1e-9), NOT_APPLICABLE
+        ),
+        "reduction_rated_torque": mx.if_else(
+            red, p["reduction_rated_torque"] / mx.fmax(out_rms, 1e-9), NOT_APPLICABLE
+        ),
+        "reduction_speed": mx.if_else(
+            red, p["reduction_max_speed"] / mx.fmax(n_motor, 1e-9), NOT_APPLICABLE
+        ),
+        # an emergency stop or a collision: the motor's peak (or the drive's torque limit) through
+        # the ratio
+        # against the reduction's emergency-stop torque (Beckhoff AG2400 T2Em.stop; Siemens 1FT7
+        # 5.4.1)
+        "reduction_emergency_torque": mx.if_else(
+            red * has > 0.5,
+            emergency / (p["motor_peak_torque"] * p["reduction_ratio"]),
+            NOT_APPLICABLE,
+        ),
     }
     out = {margin_output(k): v for k, v in margins.items()}
-    out.update(check_pairs({
-        "motor_peak_torque": (p["motor_peak_torque"], use), "motor_rated_torque": (thrust_ratio, t_cont),
-        "motor_speed": (p["motor_max_speed"], n_motor), "inertia_ratio": (p["max_inertia_ratio"], ratio),
-        "brake_holding": (p["motor_brake_torque"], p["brake_safety"] * hold),
-        "coupling_torque": (p["coupling_rated_torque"], p["motor_peak_torque"] * p["reduction_ratio"]),
-        "coupling_speed": (p["coupling_max_speed"], screw_speed),
-        "reduction_accel_torque": (p["reduction_accel_torque"], out_peak),
-        "reduction_rated_torque": (p["reduction_rated_torque"], out_rms),
-        "reduction_speed": (p["reduction_max_speed"], n_motor),
-        "reduction_emergency_torque": (emergency,
-                                       p["motor_peak_torque"] * p["reduction_ratio"]),
-    }))
-    # energy the motor returns to the drive over one cycle (braking, lowering a vertical axis) and its mean power:
-    # what the drive's regenerative resistor must take (Yaskawa 12.8.6), before winding and drive losses
+    out.update(
+        check_pairs(
+            {
+                "motor_peak_torque": (p["motor_peak_torque"], use),
+                "motor_rated_torque": (thrust_ratio, t_cont),
+                "motor_speed": (p["motor_max_speed"], n_motor),
+                "inertia_ratio": (p["max_inertia_ratio"], ratio),
+                "brake_holding": (p["motor_brake_torque"], p["brake_safety"] * hold),
+                "coupling_torque": (
+                    p["coupling_rated_torque"],
+                    p["motor_peak_torque"] * p["reduction_ratio"],
+                ),
+                "coupling_speed": (p["coupling_max_speed"], screw_speed),
+                "reduction_accel_torque": (p["reduction_accel_torque"], out_peak),
+                "reduction_rated_torque": (p["reduction_rated_torque"], out_rms),
+                "reduction_speed": (p["reduction_max_speed"], n_motor),
+                "reduction_emergency_torque": (
+                    emergency,
+                    p["motor_peak_torque"] * p["reduction_ratio"],
+                ),
+            }
+        )
+    )
+    # energy the motor returns to the drive over one cycle (braking, lowering a vertical axis) and
+    # its mean power:
+    # what the drive's regenerative resistor must take (Yaskawa 12.8.6), before winding and drive
+    # losses
     if regen:
         energy = sum(pd.regenerative_energy(phases, torques, p["lead"], a), 0.0 * friction)
         cycle = sum(durations)
-        out.update({"regen_energy": energy, "regen_power": energy / cycle if cycle > 0 else 0.0 * energy})
-    out.update({
-        "load_inertia": j_load, "total_inertia": j_tot, "inertia_ratio": ratio, "motor_speed": n_motor,
-        "peak_torque": t_peak, "rms_torque": t_rms, "thrust_torque": thrust, "mean_thrust_torque": thrust_mean,
-        "holding_torque": hold, "unbalance_torque": unbalance,
-        "friction_torque": friction, "gravity_torque": gravity, "duty_time": sum(durations),
-        "duty_torques": torques, "zone_factors": factors,
-        "output_peak_torque": out_peak, "output_rms_torque": out_rms, "output_thrust_torque": out_thrust,
-        "output_mean_thrust_torque": out_thrust_mean, "output_torques": out_torques,
-    })
+        out.update(
+            {"regen_energy": energy, "regen_power": energy / cycle if cycle > 0 else 0.0 * energy}
+        )
+    out.update(
+        {
+            "load_inertia": j_load,
+            "total_inertia": j_tot,
+            "inertia_ratio": ratio,
+            "motor_speed": n_motor,
+            "peak_torque": t_peak,
+            "rms_torque": t_rms,
+            "thrust_torque": thrust,
+            "mean_thrust_torque": thrust_mean,
+            "holding_torque": hold,
+            "unbalance_torque": unbalance,
+            "friction_torque": friction,
+            "gravity_torque": gravity,
+            "duty_time": sum(durations),
+            "duty_torques": torques,
+            "zone_factors": factors,
+            "output_peak_torque": out_peak,
+            "output_rms_torque": out_rms,
+            "output_thrust_torque": out_thrust,
+            "output_mean_thrust_torque": out_thrust_mean,
+            "output_torques": out_torques,
+        }
+    )
     return out
 
 
@@ -260,7 +394,9 @@ def _net_weights(p, phases, masses: dict, torque) -> dict:
     for ph in phases:
         key = (ph.moving_mass, ph.direction)
         if key not in out:
-            out[key] = torque(p["gravity_axial"] * masses[ph.moving_mass] * G - balance_force(p, ph.direction))
+            out[key] = torque(
+                p["gravity_axial"] * masses[ph.moving_mass] * G - balance_force(p, ph.direction)
+            )
     return out
 
 

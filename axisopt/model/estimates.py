@@ -75,33 +75,82 @@ def axis_value_text(value: float, unit: str = "") -> str:
     return f"{num} {unit}" if unit else num
 
 
-# Axis values a design may leave out that the model then estimates (model.params.mount_compliances): (YAML key,
-# compliance parameter, how).  No vendor publishes them for the machine's own parts (THK's axial rigidity of the
-# feed screw system has a term K_H for the nut and bearing mounting, "as high as possible"), so a result that
+# Axis values a design may leave out that the model then estimates (model.params.mount_compliances):
+# (YAML key,
+# compliance parameter, how).  No vendor publishes them for the machine's own parts (THK's axial
+# rigidity of the
+# feed screw system has a term K_H for the nut and bearing mounting, "as high as possible"), so a
+# result that
 # moves with them names the estimate.
 ASSUMED_MOUNTS = (
-    ("bearing_housing_stiffness", "housing_compliance",
-     "estimate: 26 x the bearing set, IBC TI-I-5010.2 units against their bare sets"),
-    ("nut_bracket_stiffness", "bracket_compliance",
-     "estimate: 4 x the nut, THK A-709's 80 % nut-mounting allowance once more"),
+    (
+        "bearing_housing_stiffness",
+        "housing_compliance",
+        "estimate: 26 x the bearing set, IBC TI-I-5010.2 units against their bare sets",
+    ),
+    (
+        "nut_bracket_stiffness",
+        "bracket_compliance",
+        "estimate: 4 x the nut, THK A-709's 80 % nut-mounting allowance once more",
+    ),
 )
-# Axis values a design may leave to a default that the life, torque and thermal checks read: (YAML key,
+# Axis values a design may leave to a default that the life, torque and thermal checks read: (YAML
+# key,
 # parameter, display unit, SI per unit, how, whether the axis left it to the default).
 ASSUMED_DEFAULTS = (
-    ("mean_axial_load", "mean_axial_load", "N", 1.0, "default: a third of axial_load",
-     lambda a: a.mean_axial_load is None),
-    ("mean_speed", "mean_speed", "m/min", 1 / 60, "default: half of max_speed",
-     lambda a: a.mean_speed is None and not a.duty_cycle),
-    ("temperature_rise", "temperature_rise", "K", 1.0, "default without a duty cycle; THK plans for 2-5 degC",
-     lambda a: a.temperature_rise is None and not a.rise_from_balance),
-    ("pretension_rise", "pretension_rise", "K", 1.0, "default design rise of the auto pretension; THK plans for "
-     "2-5 degC", lambda a: a.pretension_rise is None and a.pretension is None and a.mounting == "fixed-fixed"),
-    ("load_factor", "load_factor", "", 1.0, "default: THK A-704 Table 19 by max speed, the upper end of the row",
-     lambda a: a.load_factor is None),
-    ("nut_lift_off_safety", "nut_lift_off_safety", "", 1.0,
-     "default: lift-off at 2.83 x preload, THK A-687, HIWIN F 3.6", lambda a: a.nut_lift_off_safety == 1.0),
+    (
+        "mean_axial_load",
+        "mean_axial_load",
+        "N",
+        1.0,
+        "default: a third of axial_load",
+        lambda a: a.mean_axial_load is None,
+    ),
+    (
+        "mean_speed",
+        "mean_speed",
+        "m/min",
+        1 / 60,
+        "default: half of max_speed",
+        lambda a: a.mean_speed is None and not a.duty_cycle,
+    ),
+    (
+        "temperature_rise",
+        "temperature_rise",
+        "K",
+        1.0,
+        "default without a duty cycle; THK plans for 2-5 degC",
+        lambda a: a.temperature_rise is None and not a.rise_from_balance,
+    ),
+    (
+        "pretension_rise",
+        "pretension_rise",
+        "K",
+        1.0,
+        "default design rise of the auto pretension; THK plans for 2-5 degC",
+        lambda a: (
+            a.pretension_rise is None and a.pretension is None and a.mounting == "fixed-fixed"
+        ),
+    ),
+    (
+        "load_factor",
+        "load_factor",
+        "",
+        1.0,
+        "default: THK A-704 Table 19 by max speed, the upper end of the row",
+        lambda a: a.load_factor is None,
+    ),
+    (
+        "nut_lift_off_safety",
+        "nut_lift_off_safety",
+        "",
+        1.0,
+        "default: lift-off at 2.83 x preload, THK A-687, HIWIN F 3.6",
+        lambda a: a.nut_lift_off_safety == 1.0,
+    ),
 )
-# Parameters the model holds as the reciprocal of their column (RULE_PARAMS): an estimate shows the column's
+# Parameters the model holds as the reciprocal of their column (RULE_PARAMS): an estimate shows the
+# column's
 # value (a reduction's torsional stiffness, not the compliance the model sums)
 RECIPROCAL = frozenset({"reduction_compliance"})
 # Part columns whose estimate an axis value replaces: (table, column) -> axis attribute.
@@ -114,8 +163,16 @@ def _param_of(table: str, column: str) -> str | None:
 
 def design_estimates(design) -> list:
     """The estimated values of a design's parts, in slot order (:class:`Estimate`)."""
-    p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                    design.coupling, design.reduction)
+    p = axis_params(
+        design.axis,
+        design.screw,
+        design.nut,
+        design.bearing,
+        design.guide,
+        design.motor,
+        design.coupling,
+        design.reduction,
+    )
     out = []
     for slot, table in SLOT_TABLES:
         row = getattr(design, slot, None)
@@ -133,9 +190,16 @@ def design_estimates(design) -> list:
             empty = val is None or (isinstance(val, float) and math.isnan(val))
             if col.applies and (row.get(col.applies) if hasattr(row, "get") else None) != 1:
                 continue  # a rotating-nut unit's column on a nut that does not turn
-            if getattr(design.axis, OVERRIDDEN_BY_AXIS.get((table, col.name), "_none_"), None) is not None:
+            if (
+                getattr(design.axis, OVERRIDDEN_BY_AXIS.get((table, col.name), "_none_"), None)
+                is not None
+            ):
                 continue
-            how = col.estimate if (empty and col.estimate) else col.estimated_in(status, row.get("source", ""))
+            how = (
+                col.estimate
+                if (empty and col.estimate)
+                else col.estimated_in(status, row.get("source", ""))
+            )
             if how:
                 v = float(np.ravel(p[param])[0])
                 unit = DISPLAY_UNITS.get(col.kind, "")
@@ -165,22 +229,38 @@ def resting_on(design, outputs, estimates=None) -> dict:
     if not estimates or not outputs:
         return {}
     x = positions(design.axis)
-    p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                    design.coupling, design.reduction)
+    p = axis_params(
+        design.axis,
+        design.screw,
+        design.nut,
+        design.bearing,
+        design.guide,
+        design.motor,
+        design.coupling,
+        design.reduction,
+    )
     # the design and each estimate raised by 5 %, one row each, in one evaluation of the model
     k = len(estimates) + 1
+
     def column(v):
-        numeric = not isinstance(v, (bool, str, tuple, list)) and np.ndim(v) == 0 \
+        numeric = (
+            not isinstance(v, (bool, str, tuple, list))
+            and np.ndim(v) == 0
             and np.asarray(v).dtype.kind in "fiu"
+        )
         return np.full((k, 1), float(v)) if numeric else v
+
     q = {n: column(v) for n, v in p.items()}
     for i, est in enumerate(estimates, start=1):
         v = float(p[est.param])
-        q[est.param][i, 0] = est.probe if math.isfinite(est.probe) else (v * (1.0 + _STEP) if v != 0 else _STEP)
+        q[est.param][i, 0] = (
+            est.probe if math.isfinite(est.probe) else (v * (1.0 + _STEP) if v != 0 else _STEP)
+        )
 
     def row(v, i):
         a = np.asarray(v, dtype=float)
         return float(np.min(a[i] if a.ndim and a.shape[0] == k else a))
+
     with np.errstate(divide="ignore", invalid="ignore"):
         out = axis_response(q, x, design.axis.mounting, design.preload)
     ref = {o: row(out[o], 0) for o in outputs if o in out}
@@ -188,7 +268,11 @@ def resting_on(design, outputs, estimates=None) -> dict:
     for i, est in enumerate(estimates, start=1):
         for o, v0 in ref.items():
             v1 = row(out[o], i)
-            if math.isfinite(v0) and math.isfinite(v1) and abs(v1 - v0) > _MOVES * max(abs(v0), 1e-12):
+            if (
+                math.isfinite(v0)
+                and math.isfinite(v1)
+                and abs(v1 - v0) > _MOVES * max(abs(v0), 1e-12)
+            ):
                 found.setdefault(o, []).append(est)
     return found
 
@@ -211,14 +295,19 @@ class Resting:
     estimates: tuple
 
     def to_dict(self) -> dict:
-        return {"what": self.what, "output": self.output, "estimates": [e.to_dict() for e in self.estimates]}
+        return {
+            "what": self.what,
+            "output": self.output,
+            "estimates": [e.to_dict() for e in self.estimates],
+        }
 
     def text(self) -> str:
         vals = "; ".join(e.text() for e in self.estimates)
         return f"{self.what} rests on estimated {vals}"
 
 
-ACTIVE_RTOL = 1e-4  # a limit or check within this of its bound is active (the search holds limits exactly)
+# a limit or check within this of its bound is active (the search holds limits exactly)
+ACTIVE_RTOL = 1e-4
 
 
 def binding_estimates(design, limits=(), objective_outputs=(), checks: bool = True) -> list:
@@ -231,8 +320,16 @@ def binding_estimates(design, limits=(), objective_outputs=(), checks: bool = Tr
     from .limits import CHECK_TABLE, LIMITS
 
     x = positions(design.axis)
-    p = axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                    design.coupling, design.reduction)
+    p = axis_params(
+        design.axis,
+        design.screw,
+        design.nut,
+        design.bearing,
+        design.guide,
+        design.motor,
+        design.coupling,
+        design.reduction,
+    )
     with np.errstate(divide="ignore", invalid="ignore"):
         out = axis_response(p, x, design.axis.mounting, design.preload)
     wanted = [("objective", o) for o in objective_outputs]

@@ -45,11 +45,19 @@ def chain_at(ev: Evaluation, p: dict, i: int) -> dict:
     """Springs, masses and dampers of the drive-train model at position index i (SI)."""
     j_m, j_s = drive_inertias(p)
     k_c = float(drive_torsional_stiffness(p))  # coupling and reduction in series
-    chain = {"k_total": ev.at("k_total", i), "k_nut": float(ev["k_nut"]), "k_bearing": float(ev["k_bearing"])}
+    chain = {
+        "k_total": ev.at("k_total", i),
+        "k_nut": float(ev["k_nut"]),
+        "k_bearing": float(ev["k_bearing"]),
+    }
     c = dampers(p, chain)
     return {
-        "motor_inertia": float(j_m), "screw_inertia": float(j_s), "coupling_stiffness": k_c,
-        "axial_stiffness": ev.at("k_drive", i), "mass": ev.at("m_eff", i), "lead": float(p["lead"]),
+        "motor_inertia": float(j_m),
+        "screw_inertia": float(j_s),
+        "coupling_stiffness": k_c,
+        "axial_stiffness": ev.at("k_drive", i),
+        "mass": ev.at("m_eff", i),
+        "lead": float(p["lead"]),
         "table_damping": float(p["guide_blocks"] * p["guide_damping"]),
         "chain_damping": float(c["c_nut"] + c["c_bearings"]),
         "coupling_damping": 2.0 * STEEL_DAMPING * math.sqrt(k_c * float(j_s)),
@@ -59,8 +67,9 @@ def chain_at(ev: Evaluation, p: dict, i: int) -> dict:
 def _modes(ev: Evaluation, m: dict, i: int, motor_held: bool) -> tuple[float, float]:
     if not motor_held:
         return ev.at("f_axial_torsional", i), ev.at("f_axial_torsional_2", i)
-    f1, f2 = pdy.axial_torsional_frequencies(m["screw_inertia"], m["coupling_stiffness"], m["axial_stiffness"],
-                                             m["mass"], m["lead"])
+    f1, f2 = pdy.axial_torsional_frequencies(
+        m["screw_inertia"], m["coupling_stiffness"], m["axial_stiffness"], m["mass"], m["lead"]
+    )
     return float(f1), float(f2)
 
 
@@ -76,7 +85,9 @@ def _check_freqs(freqs) -> np.ndarray:
     return f
 
 
-def frf(ev: Evaluation, freqs=None, *, motor_held: bool = False, damping_scale: float = 1.0) -> dict:
+def frf(
+    ev: Evaluation, freqs=None, *, motor_held: bool = False, damping_scale: float = 1.0
+) -> dict:
     """Table compliance X/F over frequency at stroke start, middle and end.
 
     ev         : an evaluation (:func:`axisopt.model.evaluate`)
@@ -104,12 +115,19 @@ def frf(ev: Evaluation, freqs=None, *, motor_held: bool = False, damping_scale: 
     out = []
     for i, m, md in zip(idx, models, modes):
         h = np.asarray(pdy.drive_train_compliance(f, motor_held=motor_held, **m), dtype=complex)
-        out.append({
-            "index": i,
-            "position_mm": float((ev.x[i] - ev.design.axis.start_offset) * 1e3),
-            "compliance_m_per_N": h,
-            "magnitude_um_per_N": np.abs(h) * 1e6,
-            "phase_deg": np.degrees(np.unwrap(np.angle(h))),
-            "modes_Hz": md,
-        })
-    return {"design": ev.design.name, "motor_held": bool(motor_held), "frequency_Hz": f, "positions": out}
+        out.append(
+            {
+                "index": i,
+                "position_mm": float((ev.x[i] - ev.design.axis.start_offset) * 1e3),
+                "compliance_m_per_N": h,
+                "magnitude_um_per_N": np.abs(h) * 1e6,
+                "phase_deg": np.degrees(np.unwrap(np.angle(h))),
+                "modes_Hz": md,
+            }
+        )
+    return {
+        "design": ev.design.name,
+        "motor_held": bool(motor_held),
+        "frequency_Hz": f,
+        "positions": out,
+    }

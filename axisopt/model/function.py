@@ -17,10 +17,13 @@ from .paramnames import PARAM_NAMES
 from .params import axis_params, positions
 from .response import axis_response
 
-# the CasADi Function's outputs, in order: the declared outputs (model.outputs.OUTPUT_TABLE), then each vendor
+# the CasADi Function's outputs, in order: the declared outputs (model.outputs.OUTPUT_TABLE), then
+# each vendor
 # check's margin, available and needed values (model.limits.CHECK_TABLE)
 PROFILE_OUTPUTS = PROFILE
-SCALAR_OUTPUTS = SCALAR + tuple(f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS)
+SCALAR_OUTPUTS = SCALAR + tuple(
+    f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS
+)
 
 
 @dataclass
@@ -53,8 +56,13 @@ class AxisModel:
             if n in PROFILE_OUTPUTS and e.shape[0] != n_positions:
                 e = e * ca.DM.ones(n_positions)
             exprs.append(e)
-        f = ca.Function(f"axis_{mounting.replace('-', '_')}", [prm, pre, x], exprs,
-                        ["params", "preload", "x"], names)
+        f = ca.Function(
+            f"axis_{mounting.replace('-', '_')}",
+            [prm, pre, x],
+            exprs,
+            ["params", "preload", "x"],
+            names,
+        )
         return cls(mounting, n_positions, f, duty)
 
     def __call__(self, params: dict, preload: float, x) -> dict:
@@ -82,13 +90,28 @@ def model_for(mounting: str, n_positions: int, duty: tuple = ()) -> AxisModel:
 
 
 def design_params(design: Design) -> dict:
-    return axis_params(design.axis, design.screw, design.nut, design.bearing, design.guide, design.motor,
-                       design.coupling, design.reduction, grade=design.grade)
+    return axis_params(
+        design.axis,
+        design.screw,
+        design.nut,
+        design.bearing,
+        design.guide,
+        design.motor,
+        design.coupling,
+        design.reduction,
+        grade=design.grade,
+    )
 
 
-COMPONENTS = (("bearings", "k_bearing"), ("screw", "k_screw"), ("screw torsion", "k_torsion"),
-              ("coupling", "k_coupling"), ("nut", "k_nut"), ("unit bearing", "c_unit_bearing"),
-              ("nut bracket", "c_bracket"))
+COMPONENTS = (
+    ("bearings", "k_bearing"),
+    ("screw", "k_screw"),
+    ("screw torsion", "k_torsion"),
+    ("coupling", "k_coupling"),
+    ("nut", "k_nut"),
+    ("unit bearing", "c_unit_bearing"),
+    ("nut bracket", "c_bracket"),
+)
 
 
 @dataclass(frozen=True, repr=False)
@@ -96,8 +119,10 @@ class Evaluation:
     """A design evaluated over the stroke (SI)."""
 
     design: Design
-    x: np.ndarray  # nut positions of the model grid [m] (the stroke starts at design.axis.start_offset)
-    values: dict  # model output name -> value or profile over ``x``, in SI (k_total in N/m, f1 in Hz, ...)
+    # nut positions of the model grid [m] (the stroke starts at design.axis.start_offset)
+    x: np.ndarray
+    # model output name -> value or profile over ``x``, in SI (k_total in N/m, f1 in Hz, ...)
+    values: dict
 
     def __getitem__(self, key):
         return self.values[key]
@@ -161,14 +186,24 @@ class Evaluation:
         k, k_at = self.minimum("k_total")
         f, f_at = self.minimum("f1")
         rows = check_rows(self)
-        return {"design": self.design.name, "mounting": a.mounting, **self.design.part_ids(),
-                "nut_preload [N]": float(self.design.preload), "stroke [mm]": a.stroke * 1e3,
-                "min_stiffness [N/um]": k / 1e6, "min_stiffness_at [mm]": k_at * 1e3,
-                "weakest_link": self.weakest, "min_frequency [Hz]": f, "min_frequency_at [mm]": f_at * 1e3,
-                "table_mode [Hz]": float(v["f_table"]), "drag_torque [N.m]": float(v["drag_torque"]),
-                "moving_mass [kg]": float(v["moving_mass"]), "total_mass [kg]": float(v["total_mass"]),
-                "cost [EUR]": float(v["cost"]),
-                "checks_failed": ", ".join(r["check"] for r in rows if not r["pass"]) or "none"}
+        return {
+            "design": self.design.name,
+            "mounting": a.mounting,
+            **self.design.part_ids(),
+            "nut_preload [N]": float(self.design.preload),
+            "stroke [mm]": a.stroke * 1e3,
+            "min_stiffness [N/um]": k / 1e6,
+            "min_stiffness_at [mm]": k_at * 1e3,
+            "weakest_link": self.weakest,
+            "min_frequency [Hz]": f,
+            "min_frequency_at [mm]": f_at * 1e3,
+            "table_mode [Hz]": float(v["f_table"]),
+            "drag_torque [N.m]": float(v["drag_torque"]),
+            "moving_mass [kg]": float(v["moving_mass"]),
+            "total_mass [kg]": float(v["total_mass"]),
+            "cost [EUR]": float(v["cost"]),
+            "checks_failed": ", ".join(r["check"] for r in rows if not r["pass"]) or "none",
+        }
 
     def to_frame(self):
         """pandas DataFrame, one row per nut position over the stroke (model grid), units in the column
@@ -184,31 +219,51 @@ class Evaluation:
 
         import pandas as pd
 
-        return pd.DataFrame({"position [mm]": (self.x - self.design.axis.start_offset) * 1e3,
-                             "stiffness [N/um]": col("k_total", 1e-6),
-                             "screw_stiffness [N/um]": col("k_screw", 1e-6),
-                             "frequency [Hz]": col("f1"), "axial_frequency [Hz]": col("f_axial"),
-                             "axial_torsional_frequency [Hz]": col("f_axial_torsional"),
-                             "damping_ratio [%]": col("damping_ratio", 100.0),
-                             "thermal_displacement [mm]": col("thermal_displacement", 1e3)})
+        return pd.DataFrame(
+            {
+                "position [mm]": (self.x - self.design.axis.start_offset) * 1e3,
+                "stiffness [N/um]": col("k_total", 1e-6),
+                "screw_stiffness [N/um]": col("k_screw", 1e-6),
+                "frequency [Hz]": col("f1"),
+                "axial_frequency [Hz]": col("f_axial"),
+                "axial_torsional_frequency [Hz]": col("f_axial_torsional"),
+                "damping_ratio [%]": col("damping_ratio", 100.0),
+                "thermal_displacement [mm]": col("thermal_displacement", 1e3),
+            }
+        )
 
     def __repr__(self) -> str:
         s = self.summary()
         fails = s["checks_failed"]
-        return one_line("Evaluation", f"{self.design.name!r}, {s['mounting']}", {
-            "min stiffness": f"{fmt(s['min_stiffness [N/um]'], 'N/um')} at {fmt(s['min_stiffness_at [mm]'], 'mm')}"
-                             f" (weakest: {s['weakest_link']})",
-            "1st frequency": fmt(s["min_frequency [Hz]"], "Hz"),
-            "drag": fmt(s["drag_torque [N.m]"], "N.m"), "cost": fmt(s["cost [EUR]"], "EUR"),
-            "checks": "all pass" if fails == "none" else f"FAIL {fails}"})
+        return one_line(
+            "Evaluation",
+            f"{self.design.name!r}, {s['mounting']}",
+            {
+                "min stiffness": f"{fmt(s['min_stiffness [N/um]'], 'N/um')} at {fmt(s['min_stiffness_at [mm]'], 'mm')}"
+                f" (weakest: {s['weakest_link']})",
+                "1st frequency": fmt(s["min_frequency [Hz]"], "Hz"),
+                "drag": fmt(s["drag_torque [N.m]"], "N.m"),
+                "cost": fmt(s["cost [EUR]"], "EUR"),
+                "checks": "all pass" if fails == "none" else f"FAIL {fails}",
+            },
+        )
 
     def _repr_html_(self) -> str:
         s = self.summary()
-        head = html_fields({k: fmt(v) if isinstance(v, float) else v for k, v in s.items()},
-                           f"Evaluation of {self.design.name}")
-        rows = [{"check": r["label"], "available": fmt(r["available"], r["unit"]),
-                 "needed": fmt(r["needed"], r["unit"]), "margin": fmt(r["margin"]),
-                 "pass": "pass" if r["pass"] else "FAIL"} for r in check_rows(self)]
+        head = html_fields(
+            {k: fmt(v) if isinstance(v, float) else v for k, v in s.items()},
+            f"Evaluation of {self.design.name}",
+        )
+        rows = [
+            {
+                "check": r["label"],
+                "available": fmt(r["available"], r["unit"]),
+                "needed": fmt(r["needed"], r["unit"]),
+                "margin": fmt(r["margin"]),
+                "pass": "pass" if r["pass"] else "FAIL",
+            }
+            for r in check_rows(self)
+        ]
         return head + html_table(rows, "checks (margin = available / needed, >= 1 passes)")
 
 
@@ -228,9 +283,14 @@ def check_rows(ev: Evaluation) -> list:
     d, v = ev.design, ev.values
     out = []
     for c in CHECKS:
-        if c in DRIVE_CHECKS and (c.startswith("reduction_") and d.reduction is None
-                                  or c.startswith("coupling_") and d.coupling is None
-                                  or d.motor is None and not c.startswith(("coupling_", "reduction_"))):
+        if c in DRIVE_CHECKS and (
+            c.startswith("reduction_")
+            and d.reduction is None
+            or c.startswith("coupling_")
+            and d.coupling is None
+            or d.motor is None
+            and not c.startswith(("coupling_", "reduction_"))
+        ):
             continue
         m = float(v[margin_output(c)])
         if c == "brake_holding" and d.axis.orientation != "vertical":
@@ -239,9 +299,15 @@ def check_rows(ev: Evaluation) -> list:
         if rec.rotating_nut and not rotating_nut(d.nut):
             continue
         unit, f = rec.unit, rec.factor
-        row = {"check": c, "label": CHECK_LABELS[c], "unit": unit,
-               "available": _finite(float(v[f"available_{c}"]) * f), "needed": _finite(float(v[f"needed_{c}"]) * f),
-               "margin": None if m >= NOT_APPLICABLE else _finite(m), "pass": passes(m)}
+        row = {
+            "check": c,
+            "label": CHECK_LABELS[c],
+            "unit": unit,
+            "available": _finite(float(v[f"available_{c}"]) * f),
+            "needed": _finite(float(v[f"needed_{c}"]) * f),
+            "margin": None if m >= NOT_APPLICABLE else _finite(m),
+            "pass": passes(m),
+        }
         if c == "bearing_fit":
             row["available_min"] = _finite(float(d.screw["support_bore_min"]) * f)
         if c in ("nut_lift_off", "nut_preload") and m >= NOT_APPLICABLE:
@@ -256,22 +322,36 @@ def drive_dict(ev: Evaluation) -> dict | None:
     if d.motor is None:
         return None
     red = d.reduction
-    return {"motor": str(d.motor["id"]), "coupling": None if d.coupling is None else str(d.coupling["id"]),
-            "reduction": None if red is None else str(red["id"]),
-            "reduction_ratio": d.axis.reduction_ratio if red is None else float(red["ratio"]),
-            "output_peak_torque_Nm": v["output_peak_torque"], "output_rms_torque_Nm": v["output_rms_torque"],
-            "peak_torque_Nm": v["peak_torque"],
-            "rms_torque_Nm": v["rms_torque"], "thrust_torque_Nm": v["thrust_torque"],
-            "mean_thrust_torque_Nm": v["mean_thrust_torque"],
-            "holding_torque_Nm": v["holding_torque"], "unbalance_torque_Nm": v["unbalance_torque"],
-            "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
-            "load_inertia_kgm2": v["load_inertia"], "inertia_ratio": v["inertia_ratio"],
-            "duty_time_s": v["duty_time"], "friction_torque_Nm": v["friction_torque"],
-            "regen_energy_J": v["regen_energy"], "regen_power_W": v["regen_power"]}
+    return {
+        "motor": str(d.motor["id"]),
+        "coupling": None if d.coupling is None else str(d.coupling["id"]),
+        "reduction": None if red is None else str(red["id"]),
+        "reduction_ratio": d.axis.reduction_ratio if red is None else float(red["ratio"]),
+        "output_peak_torque_Nm": v["output_peak_torque"],
+        "output_rms_torque_Nm": v["output_rms_torque"],
+        "peak_torque_Nm": v["peak_torque"],
+        "rms_torque_Nm": v["rms_torque"],
+        "thrust_torque_Nm": v["thrust_torque"],
+        "mean_thrust_torque_Nm": v["mean_thrust_torque"],
+        "holding_torque_Nm": v["holding_torque"],
+        "unbalance_torque_Nm": v["unbalance_torque"],
+        "motor_speed_rpm": v["motor_speed"] * 60 / (2 * math.pi),
+        "load_inertia_kgm2": v["load_inertia"],
+        "inertia_ratio": v["inertia_ratio"],
+        "duty_time_s": v["duty_time"],
+        "friction_torque_Nm": v["friction_torque"],
+        "regen_energy_J": v["regen_energy"],
+        "regen_power_W": v["regen_power"],
+    }
 
 
-def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool = True,
-             side: str = "governing") -> Evaluation:
+def evaluate(
+    design: Design,
+    n_positions: int | None = None,
+    *,
+    use_casadi: bool = True,
+    side: str = "governing",
+) -> Evaluation:
     """Evaluate a design with the CasADi axis Function (or directly on numpy with use_casadi=False).
 
     ``side`` (a twin-drive gantry, :mod:`.gantry`): 'governing' (the side nearest the cross carriage at the end of
@@ -285,10 +365,18 @@ def evaluate(design: Design, n_positions: int | None = None, *, use_casadi: bool
     x = positions(design.axis, n_positions)
     params = design_params(design)
     if use_casadi:
-        values = model_for(design.axis.mounting, len(x), design.axis.phases)(params, design.preload, x)
+        values = model_for(design.axis.mounting, len(x), design.axis.phases)(
+            params, design.preload, x
+        )
     else:
         raw = axis_response(params, x, design.axis.mounting, design.preload)
-        values = {k: (np.broadcast_to(np.asarray(v, float), x.shape).copy() if k in PROFILE_OUTPUTS
-                      else float(v)) for k, v in raw.items()
-                  if k not in ("duty_torques", "zone_factors", "output_torques")}
+        values = {
+            k: (
+                np.broadcast_to(np.asarray(v, float), x.shape).copy()
+                if k in PROFILE_OUTPUTS
+                else float(v)
+            )
+            for k, v in raw.items()
+            if k not in ("duty_torques", "zone_factors", "output_torques")
+        }
     return Evaluation(design, x, values)

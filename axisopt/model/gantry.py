@@ -30,8 +30,14 @@ from ..physics import gantry as pg
 # the frequency a mode left out of the minimum takes (min(f, NO_MODE) = f)
 NO_MODE = 1e30
 # parameters of a single-drive axis: no second drive, no cross carriage, neutral geometry
-SINGLE = {"twin": 0.0, "force_share": 1.0, "cross_mass": 0.0, "cross_stroke": 0.0, "twin_span": 1.0,
-          "bridge_yaw_inertia": 1.0}
+SINGLE = {
+    "twin": 0.0,
+    "force_share": 1.0,
+    "cross_mass": 0.0,
+    "cross_stroke": 0.0,
+    "twin_span": 1.0,
+    "bridge_yaw_inertia": 1.0,
+}
 TWIN_PARAMS = tuple(SINGLE)
 
 
@@ -57,12 +63,20 @@ def gantry_params(axis) -> dict:
     if tw is None:
         return dict(SINGLE)
     inertia = tw.bridge_yaw_inertia
-    if inertia is None:  # from the bridge's parts: its uprights as given, else the estimate pg.UPRIGHT_SHARE
-        uprights = pg.UPRIGHT_SHARE * axis.moving_mass if tw.upright_mass is None else tw.upright_mass
+    # from the bridge's parts: its uprights as given, else the estimate pg.UPRIGHT_SHARE
+    if inertia is None:
+        uprights = (
+            pg.UPRIGHT_SHARE * axis.moving_mass if tw.upright_mass is None else tw.upright_mass
+        )
         inertia = pg.bridge_yaw_inertia(axis.moving_mass, tw.span, uprights)
-    return {"twin": 1.0, "force_share": tw.force_share,
-            "cross_mass": tw.cross_mass, "cross_stroke": tw.cross_stroke, "twin_span": tw.span,
-            "bridge_yaw_inertia": float(inertia)}
+    return {
+        "twin": 1.0,
+        "force_share": tw.force_share,
+        "cross_mass": tw.cross_mass,
+        "cross_stroke": tw.cross_stroke,
+        "twin_span": tw.span,
+        "bridge_yaw_inertia": float(inertia),
+    }
 
 
 def side_moving_mass(p, moving):
@@ -107,6 +121,14 @@ def gantry_modes(p, k_total, moving, moving_side, m_eff, k_guides) -> dict:
 
 def pair_cost(p):
     """The second drive's parts [EUR]: screw, nut, bearing sets, motor, coupling and reduction (``twin`` x)."""
-    screw = (p["screw_price_per_length"] * p["span"] + p["screw_price_fixed"]) * p["grade_price_factor"]
-    return tp(p, "twin") * (screw + p["nut_price"] + p["bearing_sets"] * p["bearing_price"] + p["motor_price"]
-                            + p["coupling_price"] + p["reduction_price"])
+    screw = (p["screw_price_per_length"] * p["span"] + p["screw_price_fixed"]) * p[
+        "grade_price_factor"
+    ]
+    return tp(p, "twin") * (
+        screw
+        + p["nut_price"]
+        + p["bearing_sets"] * p["bearing_price"]
+        + p["motor_price"]
+        + p["coupling_price"]
+        + p["reduction_price"]
+    )

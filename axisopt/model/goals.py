@@ -26,10 +26,16 @@ class Objective:
     @property
     def label(self) -> str:
         if self.mode == "weighted":
-            return " + ".join(f"{w:g}*{k}/{_fmt_si(k, s)}" for (k, w), (_, s) in zip(self.weights, self.scale))
+            return " + ".join(
+                f"{w:g}*{k}/{_fmt_si(k, s)}" for (k, w), (_, s) in zip(self.weights, self.scale)
+            )
         if self.mode == "lexicographic":
-            return " then ".join(f"max min {k}" if GOALS[k].sense == "max" else f"least {k}" for k in self.order) \
+            return (
+                " then ".join(
+                    f"max min {k}" if GOALS[k].sense == "max" else f"least {k}" for k in self.order
+                )
                 + f" (tolerance {self.tolerance:g})"
+            )
         if self.mode == "pareto":
             return "Pareto front of " + ", ".join(self.pareto)
         g = GOALS[self.mode]
@@ -39,7 +45,6 @@ class Objective:
 def _fmt_si(key, value):
     g = GOALS[key]
     return f"{value / g.factor:g} {g.unit}"
-
 
 
 @dataclass(frozen=True)
@@ -107,37 +112,100 @@ class Goal:
         return self.output in PROFILE_OUTPUTS
 
 
-# Every objective, declared once: the problem reader's modes and Pareto keys, the labels, the search's
-# objective functions (axisopt.search.task.objective), the values the exact solves and the designs carry
-# (axisopt.search.result.Exact and Candidate, under ``field``), the Pareto front's senses, units and values and
+# Every objective, declared once: the problem reader's modes and Pareto keys, the labels, the
+# search's
+# objective functions (axisopt.search.task.objective), the values the exact solves and the designs
+# carry
+# (axisopt.search.result.Exact and Candidate, under ``field``), the Pareto front's senses, units and
+# values and
 # the printed tables' columns derive from it.
 # A new objective: one Goal here plus the physics of its output (and its limit in LIMIT_TABLE).
 OBJECTIVE_TABLE = (
-    Goal("stiffness", "min_stiffness", "min_stiffness", "axial stiffness", "minimum axial stiffness", mode=True,
-         performance=True, pareto=True, column=Column("k N/um", 9, ".1f", always=True)),
-    Goal("frequency", "min_frequency", "min_frequency", "first natural frequency",
-         "minimum first natural frequency", mode=True, performance=True, pareto=True,
-         column=Column("f Hz", 8, ".1f", always=True)),
-    Goal("tool_stiffness", "min_tool_stiffness", "", "stiffness at the tool", "minimum stiffness at the tool",
-         mode=True),
-    Goal("kv", "min_kv", "", "achievable position-loop gain Kv", "minimum achievable position-loop gain Kv",
-         mode=True),
-    Goal("cost", "max_cost", "cost", "cost", "least cost", mode=True, performance=True, pareto=True,
-         column=Column("cost EUR", 10, ",.0f", always=True)),
-    Goal("total_mass", "max_total_mass", "total_mass", pareto=True, column=Column("mass kg", 9, ".1f", always=True)),
-    Goal("moving_mass", "max_moving_mass", "moving_mass", "moving mass", "least moving mass", mode=True,
-         performance=True, pareto=True),
-    # the positioning budget's worst-case total (model.accuracy), minimised: it falls with the nut preload, so a
-    # combination's front point stays its highest feasible preload; the search chooses the screw's grade
-    Goal("positioning_error", "max_positioning_error", "positioning_error", pareto=True,
-         column=Column("error um", 10, ".1f")),
+    Goal(
+        "stiffness",
+        "min_stiffness",
+        "min_stiffness",
+        "axial stiffness",
+        "minimum axial stiffness",
+        mode=True,
+        performance=True,
+        pareto=True,
+        column=Column("k N/um", 9, ".1f", always=True),
+    ),
+    Goal(
+        "frequency",
+        "min_frequency",
+        "min_frequency",
+        "first natural frequency",
+        "minimum first natural frequency",
+        mode=True,
+        performance=True,
+        pareto=True,
+        column=Column("f Hz", 8, ".1f", always=True),
+    ),
+    Goal(
+        "tool_stiffness",
+        "min_tool_stiffness",
+        "",
+        "stiffness at the tool",
+        "minimum stiffness at the tool",
+        mode=True,
+    ),
+    Goal(
+        "kv",
+        "min_kv",
+        "",
+        "achievable position-loop gain Kv",
+        "minimum achievable position-loop gain Kv",
+        mode=True,
+    ),
+    Goal(
+        "cost",
+        "max_cost",
+        "cost",
+        "cost",
+        "least cost",
+        mode=True,
+        performance=True,
+        pareto=True,
+        column=Column("cost EUR", 10, ",.0f", always=True),
+    ),
+    Goal(
+        "total_mass",
+        "max_total_mass",
+        "total_mass",
+        pareto=True,
+        column=Column("mass kg", 9, ".1f", always=True),
+    ),
+    Goal(
+        "moving_mass",
+        "max_moving_mass",
+        "moving_mass",
+        "moving mass",
+        "least moving mass",
+        mode=True,
+        performance=True,
+        pareto=True,
+    ),
+    # the positioning budget's worst-case total (model.accuracy), minimised: it falls with the nut
+    # preload, so a
+    # combination's front point stays its highest feasible preload; the search chooses the screw's
+    # grade
+    Goal(
+        "positioning_error",
+        "max_positioning_error",
+        "positioning_error",
+        pareto=True,
+        column=Column("error um", 10, ".1f"),
+    ),
 )
 
 
 GOALS = MappingProxyType({g.key: g for g in OBJECTIVE_TABLE})
 
 
-RESULT_GOALS = tuple(g for g in OBJECTIVE_TABLE if g.field)  # the goals whose values a search result carries
+# the goals whose values a search result carries
+RESULT_GOALS = tuple(g for g in OBJECTIVE_TABLE if g.field)
 
 
 PARETO_ALIASES = MappingProxyType({"mass": "total_mass"})
@@ -149,12 +217,16 @@ COMBINED_MODES = ("weighted", "lexicographic", "pareto")  # modes built from the
 PERFORMANCE = tuple(g.key for g in OBJECTIVE_TABLE if g.performance)
 
 
-# the goals a weighted sum adds (each maximised; a least cost or mass is a mode or a lexicographic stage)
+# the goals a weighted sum adds (each maximised; a least cost or mass is a mode or a lexicographic
+# stage)
 WEIGHTED = tuple(g.key for g in OBJECTIVE_TABLE if g.performance and g.sense == "max")
 
 
-OBJECTIVE_MODES = PERFORMANCE + COMBINED_MODES + tuple(g.key for g in OBJECTIVE_TABLE
-                                                       if g.mode and not g.performance)
+OBJECTIVE_MODES = (
+    PERFORMANCE
+    + COMBINED_MODES
+    + tuple(g.key for g in OBJECTIVE_TABLE if g.mode and not g.performance)
+)
 
 
 PARETO_KEYS = tuple(g.key for g in OBJECTIVE_TABLE if g.pareto) + tuple(PARETO_ALIASES)

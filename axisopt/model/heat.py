@@ -63,26 +63,55 @@ def heat_balance(p, preload) -> dict:
     omega = 2.0 * math.pi * v_mean / p["lead"]
     d, d_r = p["nominal_diameter"], p["root_diameter"]
     r = unit(p, "nut_rotating")  # a bare parameter dict without the unit: a nut on a turning screw
-    # a driven rotating nut: the unit's bearing heats the nut housing (its heat takes the nut's path), the end
+    # a driven rotating nut: the unit's bearing heats the nut housing (its heat takes the nut's
+    # path), the end
     # bearings and the shaft stand still (no drag, no rotating film: free convection alone)
-    p_nut = (pn.nut_preload_drag_torque(preload, p["lead"], d) + r * unit(p, "unit_bearing_torque")) * omega
+    p_nut = (
+        pn.nut_preload_drag_torque(preload, p["lead"], d) + r * unit(p, "unit_bearing_torque")
+    ) * omega
     p_bearings = (1.0 - r) * p["bearing_sets"] * p["bearing_torque"] * omega
-    h_rot = cycle_film(phases, p["lead"], 0.5 * d) if phases else pt.rotating_shaft_heat_transfer(omega, 0.5 * d)
+    h_rot = (
+        cycle_film(phases, p["lead"], 0.5 * d)
+        if phases
+        else pt.rotating_shaft_heat_transfer(omega, 0.5 * d)
+    )
     h_rot = (1.0 - r) * h_rot
-    h_mixed = pt.mixed_convection_film(h_rot, pt.horizontal_cylinder_free_film(FREE_CONVECTION_RISE, d))
+    h_mixed = pt.mixed_convection_film(
+        h_rot, pt.horizontal_cylinder_free_film(FREE_CONVECTION_RISE, d)
+    )
     given = p["heat_transfer"] > 0.0
     h = mx.if_else(given, mx.fmax(p["heat_transfer"], 1e-12), h_mixed)
-    rise = pt.screw_heat_network(p_nut, p_bearings, h, d, d_r, p["span"], p["shaft_ends"],
-                                 NUT_BRACKET_SHAPE * pt.K_CAST_IRON * d, END_CONDUCTANCE, HOUSING_CONDUCTANCE)
-    # the axis says in Python whether the balance sets the rise (motion.Phases.heat), so that a model without it
-    # carries no preload-dependent thermal terms (the global reference solvers see the same algebra as before)
+    rise = pt.screw_heat_network(
+        p_nut,
+        p_bearings,
+        h,
+        d,
+        d_r,
+        p["span"],
+        p["shaft_ends"],
+        NUT_BRACKET_SHAPE * pt.K_CAST_IRON * d,
+        END_CONDUCTANCE,
+        HOUSING_CONDUCTANCE,
+    )
+    # the axis says in Python whether the balance sets the rise (motion.Phases.heat), so that a
+    # model without it
+    # carries no preload-dependent thermal terms (the global reference solvers see the same algebra
+    # as before)
     flag = getattr(phases, "heat", None)
     if flag is None:  # a bare parameter dict: the parameter decides
-        used = p["temperature_rise_auto"] * rise + (1.0 - p["temperature_rise_auto"]) * p["temperature_rise"]
+        used = (
+            p["temperature_rise_auto"] * rise
+            + (1.0 - p["temperature_rise_auto"]) * p["temperature_rise"]
+        )
     else:
         used = rise if flag else p["temperature_rise"]
-    return {"friction_power": p_nut + p_bearings, "heat_transfer": h, "heat_balance_rise": rise,
-            "temperature_rise": used, "cycle_mean_screw_speed": omega}
+    return {
+        "friction_power": p_nut + p_bearings,
+        "heat_transfer": h,
+        "heat_balance_rise": rise,
+        "temperature_rise": used,
+        "cycle_mean_screw_speed": omega,
+    }
 
 
 def with_temperature(p, heat) -> dict:

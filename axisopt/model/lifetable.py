@@ -35,7 +35,9 @@ def life_table(design: Design) -> dict:
         "from_cycle": bool(getattr(p.get("duty", ()), "given", False)),
         "cubic_mean": (float(plus), float(minus)),
         "nut_equivalent": float(nut_life_load(p, preload, forces, travels)),
-        "bearing_equivalent": float(bearing_life_load(p, forces, travels, loads["bearing_static_load"])),
+        "bearing_equivalent": float(
+            bearing_life_load(p, forces, travels, loads["bearing_static_load"])
+        ),
         "mean_speed": float(p["mean_speed"]),
     }
 

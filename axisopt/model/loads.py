@@ -14,16 +14,30 @@ from .gantry import side_moving_mass, tp
 
 G = 9.80665
 
-# The driven rotating-nut unit's parameters for a nut on a turning screw (model.params.rotating_nut_params gives
+# The driven rotating-nut unit's parameters for a nut on a turning screw
+# (model.params.rotating_nut_params gives
 # the same): what a bare parameter dict without them (a test's, an older caller's) stands for
-NUT_ON_TURNING_SCREW = {"nut_rotating": 0.0, "unit_inertia": 0.0, "unit_max_speed": 1.0,
-                        "unit_bearing_dynamic_load": 1.0, "unit_bearing_static_load": 1.0,
-                        "unit_bearing_preload": 0.05, "unit_bearing_stiffness": 1.0, "unit_bearing_torque": 0.0}
+NUT_ON_TURNING_SCREW = {
+    "nut_rotating": 0.0,
+    "unit_inertia": 0.0,
+    "unit_max_speed": 1.0,
+    "unit_bearing_dynamic_load": 1.0,
+    "unit_bearing_static_load": 1.0,
+    "unit_bearing_preload": 0.05,
+    "unit_bearing_stiffness": 1.0,
+    "unit_bearing_torque": 0.0,
+}
 
 
-# No counterbalance: what a parameter dict without the counterbalance parameters (a test's, an older caller's)
+# No counterbalance: what a parameter dict without the counterbalance parameters (a test's, an older
+# caller's)
 # stands for (model.params.counterbalance_params gives the same for an axis without one)
-NO_COUNTERBALANCE = {"balance_mass": 0.0, "balance_efficiency": 1.0, "balance_moving_mass": 0.0, "balance_force": 0.0}
+NO_COUNTERBALANCE = {
+    "balance_mass": 0.0,
+    "balance_efficiency": 1.0,
+    "balance_moving_mass": 0.0,
+    "balance_force": 0.0,
+}
 
 
 def balance(p, name):
@@ -42,8 +56,12 @@ def balance_force(p, direction):
     The counterweight's inertia is not in it: its mass (and the chain's, a cylinder's piston) moves with the head,
     so it joins the mass the drive accelerates (``balance_moving_mass``, Yaskawa Sigma-7 11.2.1:
     J_L1 = (M + M_c)(P_B / 2 pi)^2)."""
-    return p["gravity_axial"] * (pcb.counterweight_force(balance(p, "balance_mass"), balance(p, "balance_efficiency"),
-                                                         direction) + balance(p, "balance_force"))
+    return p["gravity_axial"] * (
+        pcb.counterweight_force(
+            balance(p, "balance_mass"), balance(p, "balance_efficiency"), direction
+        )
+        + balance(p, "balance_force")
+    )
 
 
 def balance_summary(p, moving) -> dict:
@@ -52,8 +70,13 @@ def balance_summary(p, moving) -> dict:
     weight the screw carries at rest."""
     weight = p["gravity_axial"] * moving * G
     rest = balance_force(p, 0.0)
-    return {"rest": rest, "rising": balance_force(p, 1.0), "lowering": balance_force(p, -1.0), "weight": weight,
-            "net": weight - rest}
+    return {
+        "rest": rest,
+        "rising": balance_force(p, 1.0),
+        "lowering": balance_force(p, -1.0),
+        "weight": weight,
+        "net": weight - rest,
+    }
 
 
 def unit(p, name):
@@ -89,8 +112,13 @@ def guide_friction(p, table_mass, speed):
     :math:`\mu m g + f` (A-725)."""
     blocks = p["guide_blocks"]
     n_block = (table_mass * G * (1.0 - p["gravity_axial"]) + p["normal_load"]) / blocks
-    f = blocks * pg.guide_friction_force(p["guide_friction_force"], p["guide_friction_coefficient"],
-                                         p["guide_friction_viscous"], n_block, speed)
+    f = blocks * pg.guide_friction_force(
+        p["guide_friction_force"],
+        p["guide_friction_coefficient"],
+        p["guide_friction_viscous"],
+        n_block,
+        speed,
+    )
     return n_block, f
 
 
@@ -115,19 +143,40 @@ def life_rows(p, moving, f_guides, share=1.0) -> list[dict]:
             if dist <= 0.0 or not direction:
                 continue
             m = phase_moving_mass(p, moving, mass)
-            f_fric = f_guides if mass is None else share * guide_friction(p, mass, p["max_speed"])[1]
+            f_fric = (
+                f_guides if mass is None else share * guide_friction(p, mass, p["max_speed"])[1]
+            )
             f_proc = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
-            weight = p["gravity_axial"] * m * G - balance_force(p, direction)  # net of a counterbalance
+            # net of a counterbalance
+            weight = p["gravity_axial"] * m * G - balance_force(p, direction)
             accelerated = m + balance(p, "balance_moving_mass")
-            rows.append({"load": accelerated * mean_acc + direction * (f_fric + f_proc) + weight, "travel": dist,
-                         "direction": direction, "acceleration": mean_acc, "mass": m, "friction": f_fric,
-                         "process": f_proc, "weight": weight})
+            rows.append(
+                {
+                    "load": accelerated * mean_acc + direction * (f_fric + f_proc) + weight,
+                    "travel": dist,
+                    "direction": direction,
+                    "acceleration": mean_acc,
+                    "mass": m,
+                    "friction": f_fric,
+                    "process": f_proc,
+                    "weight": weight,
+                }
+            )
     if not rows:
         for direction in (1.0, -1.0):
             weight = p["gravity_axial"] * moving * G - balance_force(p, direction)
-            rows.append({"load": direction * (p["mean_axial_load"] + f_guides) + weight, "travel": 0.5,
-                         "direction": direction, "acceleration": 0.0, "mass": moving, "friction": f_guides,
-                         "process": p["mean_axial_load"], "weight": weight})
+            rows.append(
+                {
+                    "load": direction * (p["mean_axial_load"] + f_guides) + weight,
+                    "travel": 0.5,
+                    "direction": direction,
+                    "acceleration": 0.0,
+                    "mass": moving,
+                    "friction": f_guides,
+                    "process": p["mean_axial_load"],
+                    "weight": weight,
+                }
+            )
     return rows
 
 
@@ -149,7 +198,9 @@ def lift_off_load(p, moving, f_guides, f_max, net, share=1.0):
     if getattr(phases, "given", False):
         for (force, peak, _, direction, mass), _dist in phase_groups(tuple(phases)):
             m = phase_moving_mass(p, moving, mass)
-            f_fric = f_guides if mass is None else share * guide_friction(p, mass, p["max_speed"])[1]
+            f_fric = (
+                f_guides if mass is None else share * guide_friction(p, mass, p["max_speed"])[1]
+            )
             f_proc = p["duty_process"] * force + (1.0 - p["duty_process"]) * p["mean_axial_load"]
             if direction:
                 weight = p["gravity_axial"] * m * G - balance_force(p, direction)
@@ -158,7 +209,9 @@ def lift_off_load(p, moving, f_guides, f_max, net, share=1.0):
             else:
                 cases.append(mx.fabs(p["gravity_axial"] * m * G - balance_force(p, 0.0)) + f_proc)
     else:
-        cases.append((moving + balance(p, "balance_moving_mass")) * p["acceleration"] + f_guides + net)
+        cases.append(
+            (moving + balance(p, "balance_moving_mass")) * p["acceleration"] + f_guides + net
+        )
     need = cut
     for c in cases:
         need = mx.fmax(need, c)
@@ -179,11 +232,22 @@ def masses(p) -> dict:
     ``gantry_moving_mass`` the whole (what the guides carry; the same as ``moving_mass`` for one drive)."""
     twin = tp(p, "twin")
     screw_mass = p["screw_mass_per_length"] * p["span"]
-    moving = p["table_mass"] + (1.0 + twin) * p["nut_mass"] + p["guide_blocks"] * p["guide_block_mass"]
+    moving = (
+        p["table_mass"] + (1.0 + twin) * p["nut_mass"] + p["guide_blocks"] * p["guide_block_mass"]
+    )
     rails_mass = p["rails"] * p["rail_length"] * p["guide_rail_mass_per_length"]
-    total = moving + (1.0 + twin) * screw_mass + rails_mass + (1.0 + twin) * (p["bearing_sets"] * p["bearing_mass"])
-    return {"moving_mass": side_moving_mass(p, moving), "gantry_moving_mass": moving, "screw_mass": screw_mass,
-            "total_mass": total}
+    total = (
+        moving
+        + (1.0 + twin) * screw_mass
+        + rails_mass
+        + (1.0 + twin) * (p["bearing_sets"] * p["bearing_mass"])
+    )
+    return {
+        "moving_mass": side_moving_mass(p, moving),
+        "gantry_moving_mass": moving,
+        "screw_mass": screw_mass,
+        "total_mass": total,
+    }
 
 
 def bearing_set_stiffness(p):
@@ -205,31 +269,59 @@ def axial_loads(p, moving, whole=None) -> dict:
     n_block, f_guides = guide_friction(p, p["table_mass"], p["max_speed"])
     f_guides = share * f_guides
     gravity = p["gravity_axial"] * moving * G
-    net = mx.fmax(gravity - balance_force(p, 1.0), balance_force(p, -1.0) - gravity)  # = gravity without one
-    f_max = p["axial_load"] + (moving + balance(p, "balance_moving_mass")) * p["acceleration"] + f_guides + net
-    f_mean = p["mean_axial_load"] + f_guides + mx.fmax(gravity - balance_force(p, 0.0), balance_force(p, 0.0) - gravity)
+    # = gravity without one
+    net = mx.fmax(gravity - balance_force(p, 1.0), balance_force(p, -1.0) - gravity)
+    f_max = (
+        p["axial_load"]
+        + (moving + balance(p, "balance_moving_mass")) * p["acceleration"]
+        + f_guides
+        + net
+    )
+    f_mean = (
+        p["mean_axial_load"]
+        + f_guides
+        + mx.fmax(gravity - balance_force(p, 0.0), balance_force(p, 0.0) - gravity)
+    )
     ff = p["bearing_sets"] - 1.0  # 1 for fixed-fixed
     k_set = bearing_set_stiffness(p)
-    # pretension, fixed-fixed only: 'auto' is the force that absorbs the vendor's design rise, E A alpha dT_design
-    # (THK A-715: a negative target travel for 2-5 degC, the shaft stretched to it; design.PRETENSION_RISE), not the
+    # pretension, fixed-fixed only: 'auto' is the force that absorbs the vendor's design rise, E A
+    # alpha dT_design
+    # (THK A-715: a negative target travel for 2-5 degC, the shaft stretched to it;
+    # design.PRETENSION_RISE), not the
     # heat balance's whole rise; a given pretension wins
-    pre = ff * (p["pretension_auto"] * pt.restrained_thermal_force(p["root_diameter"], p["pretension_rise"])
-                + (1.0 - p["pretension_auto"]) * p["pretension"])
-    # the thermal force of the whole rise on the elastic ends (bearing sets with their housings): it eats the
+    pre = ff * (
+        p["pretension_auto"] * pt.restrained_thermal_force(p["root_diameter"], p["pretension_rise"])
+        + (1.0 - p["pretension_auto"]) * p["pretension"]
+    )
+    # the thermal force of the whole rise on the elastic ends (bearing sets with their housings): it
+    # eats the
     # pretension, and what exceeds it pushes the screw into compression (rises with the nut preload)
-    d_thermal = ff * pt.thermal_force_elastic_ends(p["root_diameter"], p["span"], p["temperature_rise"], k_set)
-    # a set carries the pretension when cold and, warm, the pretension left or the thermal push beyond it:
+    d_thermal = ff * pt.thermal_force_elastic_ends(
+        p["root_diameter"], p["span"], p["temperature_rise"], k_set
+    )
+    # a set carries the pretension when cold and, warm, the pretension left or the thermal push
+    # beyond it:
     # max(pre, |d - pre|) = max(pre, d - pre) for d >= 0, nondecreasing in the rise
     static = mx.fmax(pre, d_thermal - pre)
-    # compression in the screw when pushing: the load, plus the thermal push not absorbed by pretension (a
-    # pretension above the thermal push is not credited against the load: conservative, and monotone in the
+    # compression in the screw when pushing: the load, plus the thermal push not absorbed by
+    # pretension (a
+    # pretension above the thermal push is not credited against the load: conservative, and monotone
+    # in the
     # temperature rise, which rises with the nut preload through the heat balance)
     compression = f_max + mx.fmax(d_thermal - pre, 0.0)
     life, travel = life_loads(p, moving, f_guides, share)
-    return {"life_loads": life, "life_travels": travel,
-            "block_load": n_block, "guide_friction": f_guides,
-            "guide_friction_static": share * guide_friction(p, p["table_mass"], 0.0)[1], "max_axial_force": f_max,
-            "lift_off_load": lift_off_load(p, moving, f_guides, f_max, net, share),
-            "mean_axial_force": f_mean, "pretension": pre, "thermal_force": d_thermal,
-            "bearing_static_load": static, "screw_compression": compression,
-            "screw_tension": f_max + pre}
+    return {
+        "life_loads": life,
+        "life_travels": travel,
+        "block_load": n_block,
+        "guide_friction": f_guides,
+        "guide_friction_static": share * guide_friction(p, p["table_mass"], 0.0)[1],
+        "max_axial_force": f_max,
+        "lift_off_load": lift_off_load(p, moving, f_guides, f_max, net, share),
+        "mean_axial_force": f_mean,
+        "pretension": pre,
+        "thermal_force": d_thermal,
+        "bearing_static_load": static,
+        "screw_compression": compression,
+        "screw_tension": f_max + pre,
+    }

@@ -30,7 +30,9 @@ def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None, whole=None
     out = {"m_eff": m_eff, "f_axial": f_axial, "f_table": f_table}
     if rock is not None and single_drive(p):
         f1 = mx.fmin(f1, mx.fmin(rock["f_pitch"], rock["f_yaw"]))
-        out.update({k: NO_MODE + 0.0 * chain["k_total"] for k in ("f_gantry", "f_racking", "k_racking")})
+        out.update(
+            {k: NO_MODE + 0.0 * chain["k_total"] for k in ("f_gantry", "f_racking", "k_racking")}
+        )
     elif rock is not None:
         t = tp(p, "twin")  # a twin drive: its racking takes the place of the guides-only yaw mode
         yaw = rock["f_yaw"] + t * NO_MODE if mx.is_symbolic(t) else NO_MODE
@@ -46,16 +48,18 @@ def drive_inertias(p):
     """(motor side, screw side) rotary inertia [kg*m^2]: rotor plus half the coupling; screw plus the other half
     (a driven rotating nut: the unit's rotating parts instead of the screw)."""
     r = unit(p, "nut_rotating")
-    j_screw = (1.0 - r) * ps.screw_rotary_inertia(0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"]) \
-        + r * unit(p, "unit_inertia")
+    j_screw = (1.0 - r) * ps.screw_rotary_inertia(
+        0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"]
+    ) + r * unit(p, "unit_inertia")
     return p["motor_inertia"] + 0.5 * p["coupling_inertia"], j_screw + 0.5 * p["coupling_inertia"]
 
 
 def drive_train_modes(p, chain, m_eff) -> dict:
     """First two elastic modes of motor - coupling - screw - table (motor free at these frequencies) [Hz]."""
     j_m, j_s = drive_inertias(p)
-    f1, f2 = pdy.drive_train_frequencies(j_m, j_s, drive_torsional_stiffness(p), chain["k_drive"], m_eff,
-                                         p["lead"])
+    f1, f2 = pdy.drive_train_frequencies(
+        j_m, j_s, drive_torsional_stiffness(p), chain["k_drive"], m_eff, p["lead"]
+    )
     return {"f_axial_torsional": f1, "f_axial_torsional_2": f2}
 
 
@@ -66,10 +70,14 @@ def dampers(p, chain) -> dict:
     weighted by its share of the chain's deformation (:func:`axisopt.physics.damping.chain_damper_share`).
     """
     k = chain["k_total"]
-    c_nut = pdm.chain_damper_share(pdm.rolling_joint_damping(p["nominal_diameter"]), k, chain["k_nut"])
-    # the bearing sets deform by (k / k_bearing) of the table motion (both sets together for fixed-fixed)
-    c_brg = pdm.chain_damper_share(p["bearing_sets"] * pdm.rolling_joint_damping(p["bearing_bore"]), k,
-                                   chain["k_bearing"])
+    c_nut = pdm.chain_damper_share(
+        pdm.rolling_joint_damping(p["nominal_diameter"]), k, chain["k_nut"]
+    )
+    # the bearing sets deform by (k / k_bearing) of the table motion (both sets together for fixed-
+    # fixed)
+    c_brg = pdm.chain_damper_share(
+        p["bearing_sets"] * pdm.rolling_joint_damping(p["bearing_bore"]), k, chain["k_bearing"]
+    )
     return {"c_guides": p["guide_blocks"] * p["guide_damping"], "c_nut": c_nut, "c_bearings": c_brg}
 
 

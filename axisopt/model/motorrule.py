@@ -31,12 +31,16 @@ class MotorRule:
     source: str
 
 
-MOTOR_RULES = MappingProxyType({
-    "Yaskawa": MotorRule(1.0, 1.0, "Yaskawa Sigma-7 11.2.1: Trms <= rated"),
-    "Mitsubishi Electric": MotorRule(0.8, 0.6, "Mitsubishi MDS-D-SVJ3 7-1: Trms <= 0.8 Tst, TL <= 0.6 Tst"),
-    "FANUC": MotorRule(0.9, 0.6, "FANUC B-65262EN 3.1: Trms <= 0.9 Ts, gravity <= 0.6 Ts"),
-    "Siemens": MotorRule(1.0, 1.0, "Siemens 1FT7 PFT7S 2.4.3: Trms within S1"),
-})
+MOTOR_RULES = MappingProxyType(
+    {
+        "Yaskawa": MotorRule(1.0, 1.0, "Yaskawa Sigma-7 11.2.1: Trms <= rated"),
+        "Mitsubishi Electric": MotorRule(
+            0.8, 0.6, "Mitsubishi MDS-D-SVJ3 7-1: Trms <= 0.8 Tst, TL <= 0.6 Tst"
+        ),
+        "FANUC": MotorRule(0.9, 0.6, "FANUC B-65262EN 3.1: Trms <= 0.9 Ts, gravity <= 0.6 Ts"),
+        "Siemens": MotorRule(1.0, 1.0, "Siemens 1FT7 PFT7S 2.4.3: Trms within S1"),
+    }
+)
 # where a motor row names no rule (catalog estimate): Mitsubishi's, the harshest
 DEFAULT_RULE = MotorRule(0.8, 0.6, "no vendor rule: Mitsubishi's 0.8 / 0.6, the harshest")
 
@@ -46,7 +50,10 @@ def rule_text(vendor: str, rms: float, unbalance: float, asked: float | None = N
     if asked is not None:
         return f"axis.rms_torque_ratio {asked:g} x rated"
     rule = MOTOR_RULES.get(vendor)
-    if rule is not None and math.isclose(rule.rms, rms, rel_tol=1e-9) \
-            and math.isclose(rule.unbalance, unbalance, rel_tol=1e-9):
+    if (
+        rule is not None
+        and math.isclose(rule.rms, rms, rel_tol=1e-9)
+        and math.isclose(rule.unbalance, unbalance, rel_tol=1e-9)
+    ):
         return rule.source
     return f"{rms:g} x rated (RMS), {unbalance:g} x rated (unbalanced load)"

@@ -16,7 +16,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from types import MappingProxyType
 
-CONVEX = 2  # a preload direction: the output is convex in the nut preload (met on an interval of preloads)
+# a preload direction: the output is convex in the nut preload (met on an interval of preloads)
+CONVEX = 2
 
 
 @dataclass(frozen=True)
@@ -58,34 +59,94 @@ def _s(name, unit, doc, **kw) -> Output:
     return Output(name, unit, doc, **kw)
 
 
-# How outputs move with the nut preload (the search's exact 1-D solve rests on it; default == exhaustive in
-# tests/search checks it): the minimum stiffness and frequency, the drag torque and the nut lift-off margin rise
-# with the preload, the nut life falls.  The heat balance (model.heat) makes the temperature rise grow with the
-# preload (nut drag x speed), and with it the thermal growth.  The positioning budget's deflection falls with the
-# preload; its other rows are independent of it (the thermal row at the nut's highest preload).  The nut's drag
+# How outputs move with the nut preload (the search's exact 1-D solve rests on it; default ==
+# exhaustive in
+# tests/search checks it): the minimum stiffness and frequency, the drag torque and the nut lift-off
+# margin rise
+# with the preload, the nut life falls.  The heat balance (model.heat) makes the temperature rise
+# grow with the
+# preload (nut drag x speed), and with it the thermal growth.  The positioning budget's deflection
+# falls with the
+# preload; its other rows are independent of it (the thermal row at the nut's highest preload).  The
+# nut's drag
 # brakes every move: the energy the motor returns falls with the preload.
 OUTPUT_TABLE = (
     # profiles over the stroke
     _p("k_screw", "N/m", "axial stiffness of the screw shaft at the nut", chain=True),
     _p("k_screw_bearings", "N/m", "screw shaft and support sets in series", chain=True),
     _p("k_torsion", "N/m", "torsional stiffness of the screw seen axially at the nut", chain=True),
-    _p("k_drive", "N/m", "axial stiffness of the drive chain (screw, sets, nut, mounts)", preload=1, chain=True),
-    _p("k_total", "N/m", "axial stiffness of the feed axis at the table", preload=1, chain=True, coupling=True),
-    _p("f_axial", "Hz", "first axial natural frequency of the table on the drive chain", preload=1, chain=True,
-       coupling=True),
-    _p("f1", "Hz", "first natural frequency (the least of the axial and, on a gantry, the gantry modes)",
-       preload=1, chain=True, coupling=True),
+    _p(
+        "k_drive",
+        "N/m",
+        "axial stiffness of the drive chain (screw, sets, nut, mounts)",
+        preload=1,
+        chain=True,
+    ),
+    _p(
+        "k_total",
+        "N/m",
+        "axial stiffness of the feed axis at the table",
+        preload=1,
+        chain=True,
+        coupling=True,
+    ),
+    _p(
+        "f_axial",
+        "Hz",
+        "first axial natural frequency of the table on the drive chain",
+        preload=1,
+        chain=True,
+        coupling=True,
+    ),
+    _p(
+        "f1",
+        "Hz",
+        "first natural frequency (the least of the axial and, on a gantry, the gantry modes)",
+        preload=1,
+        chain=True,
+        coupling=True,
+    ),
     _p("m_eff", "kg", "effective moving mass of the axial mode", chain=True),
     _p("thermal_displacement", "m", "thermal displacement of the nut along the stroke", chain=True),
-    _p("f_axial_torsional", "Hz", "first coupled axial-torsional natural frequency", coupling=True, extra=True),
-    _p("f_axial_torsional_2", "Hz", "second coupled axial-torsional natural frequency", coupling=True, extra=True),
-    _p("damping_ratio", "", "modal damping ratio of the first axial mode", coupling=True, extra=True),
+    _p(
+        "f_axial_torsional",
+        "Hz",
+        "first coupled axial-torsional natural frequency",
+        coupling=True,
+        extra=True,
+    ),
+    _p(
+        "f_axial_torsional_2",
+        "Hz",
+        "second coupled axial-torsional natural frequency",
+        coupling=True,
+        extra=True,
+    ),
+    _p(
+        "damping_ratio",
+        "",
+        "modal damping ratio of the first axial mode",
+        coupling=True,
+        extra=True,
+    ),
     _p("zeta_guides", "", "damping ratio share of the guides", coupling=True, extra=True),
     _p("zeta_nut", "", "damping ratio share of the nut", coupling=True, extra=True),
-    _p("zeta_bearings", "", "damping ratio share of the support bearings", coupling=True, extra=True),
+    _p(
+        "zeta_bearings",
+        "",
+        "damping ratio share of the support bearings",
+        coupling=True,
+        extra=True,
+    ),
     _p("zeta_structure", "", "damping ratio share of the structure", extra=True),
-    _p("k_tool", "N/m", "stiffness in the feed direction at the cutting point", preload=1, chain=True,
-       coupling=True),
+    _p(
+        "k_tool",
+        "N/m",
+        "stiffness in the feed direction at the cutting point",
+        preload=1,
+        chain=True,
+        coupling=True,
+    ),
     _p("kv", "1/s", "achievable position-loop gain", preload=1, chain=True, coupling=True),
     _p("f_gantry", "Hz", "first gantry (bridge) natural frequency", chain=True),
     _p("f_racking", "Hz", "racking natural frequency of a twin-drive gantry", chain=True),
@@ -94,11 +155,22 @@ OUTPUT_TABLE = (
     _s("k_nut", "N/m", "axial stiffness of the nut at its preload", preload=1, chain=True),
     _s("k_nut_unloaded", "N/m", "catalog stiffness of the nut", chain=True),
     _s("k_bearing", "N/m", "axial stiffness of the support sets", chain=True),
-    _s("k_coupling", "N/m", "torsional stiffness of the coupling seen axially", chain=True, coupling=True),
+    _s(
+        "k_coupling",
+        "N/m",
+        "torsional stiffness of the coupling seen axially",
+        chain=True,
+        coupling=True,
+    ),
     _s("c_bracket", "m/N", "compliance of the nut bracket", chain=True),
     _s("c_housing", "m/N", "compliance of the support-set housings", chain=True),
     _s("f_table", "Hz", "natural frequency of the table on the nut alone", chain=True),
-    _s("drag_torque", "N*m", "drag torque at the rapid speed (nut, support bearings and guides)", preload=1),
+    _s(
+        "drag_torque",
+        "N*m",
+        "drag torque at the rapid speed (nut, support bearings and guides)",
+        preload=1,
+    ),
     _s("drag_nut", "N*m", "drag torque of the preloaded nut", preload=1),
     _s("drag_bearings", "N*m", "drag torque of the support bearings"),
     _s("drag_guides", "N*m", "drag torque of the guides at the screw"),
@@ -113,7 +185,12 @@ OUTPUT_TABLE = (
     _s("thermal_force", "N", "thermal force of a fixed-fixed screw beyond its pretension"),
     _s("bearing_static_load", "N", "largest static axial load on the support set"),
     _s("screw_compression", "N", "largest compressive force on the screw"),
-    _s("backlash", "m", "lost motion at the table (nut play and a reduction's backlash)", drive=True),
+    _s(
+        "backlash",
+        "m",
+        "lost motion at the table (nut play and a reduction's backlash)",
+        drive=True,
+    ),
     _s("life", "s", "nut L10 life", preload=-1),
     _s("bearing_life", "s", "support-set L10 life"),
     _s("guide_life", "m", "guide block L10 travel"),
@@ -132,12 +209,31 @@ OUTPUT_TABLE = (
     _s("rms_torque", "N*m", "RMS motor torque of the duty cycle", drive=True),
     _s("thrust_torque", "N*m", "motor torque under the largest process force", drive=True),
     _s("mean_thrust_torque", "N*m", "motor torque under the mean process force", drive=True),
-    _s("unbalance_torque", "N*m", "steady load torque of an unbalanced (vertical) axis at the motor", drive=True),
+    _s(
+        "unbalance_torque",
+        "N*m",
+        "steady load torque of an unbalanced (vertical) axis at the motor",
+        drive=True,
+    ),
     _s("holding_torque", "N*m", "torque that holds a vertical axis at rest", drive=True),
     _s("friction_torque", "N*m", "friction torque at the motor", drive=True),
     _s("gravity_torque", "N*m", "gravity torque at the motor of a vertical axis", drive=True),
-    _s("regen_energy", "J", "energy the motor returns over the duty cycle", preload=-1, regen=True, drive=True),
-    _s("regen_power", "W", "mean power the motor returns over the duty cycle", preload=-1, regen=True, drive=True),
+    _s(
+        "regen_energy",
+        "J",
+        "energy the motor returns over the duty cycle",
+        preload=-1,
+        regen=True,
+        drive=True,
+    ),
+    _s(
+        "regen_power",
+        "W",
+        "mean power the motor returns over the duty cycle",
+        preload=-1,
+        regen=True,
+        drive=True,
+    ),
     _s("output_peak_torque", "N*m", "peak output torque of the reduction", drive=True),
     _s("output_rms_torque", "N*m", "RMS output torque of the reduction", drive=True),
     _s("duty_time", "s", "duration of the duty cycle"),
@@ -154,21 +250,53 @@ OUTPUT_TABLE = (
     _s("heat_transfer", "W/K", "heat transfer coefficient of the screw's thermal network"),
     _s("heat_balance_rise", "K", "temperature rise of the heat balance", preload=1),
     _s("temperature_rise", "K", "temperature rise of the screw the model takes", preload=1),
-    _s("thermal_growth", "m", "largest thermal growth of the screw at the nut", preload=1, chain=True),
+    _s(
+        "thermal_growth",
+        "m",
+        "largest thermal growth of the screw at the nut",
+        preload=1,
+        chain=True,
+    ),
     _s("c_unit_bearing", "m/N", "compliance of a rotating-nut unit's bearing", chain=True),
     _s("screw_sag", "m", "sag of a horizontal screw under its own weight"),
     _s("screw_slenderness", "", "bearing span over the nominal screw diameter"),
     _s("unit_bearing_life", "s", "L10 life of a rotating-nut unit's bearing"),
     _s("gantry_moving_mass", "kg", "moving mass of the whole gantry"),
-    _s("lead_error", "m", "positioning budget: lead error of the screw's grade over the stroke", chain=True),
+    _s(
+        "lead_error",
+        "m",
+        "positioning budget: lead error of the screw's grade over the stroke",
+        chain=True,
+    ),
     _s("thermal_error", "m", "positioning budget: thermal growth", chain=True),
-    _s("elastic_error", "m", "positioning budget: deflection at the tool", preload=-1, chain=True, coupling=True),
-    _s("abbe_error", "m", "positioning budget: Abbe error of the guides' pitch and yaw", chain=True),
+    _s(
+        "elastic_error",
+        "m",
+        "positioning budget: deflection at the tool",
+        preload=-1,
+        chain=True,
+        coupling=True,
+    ),
+    _s(
+        "abbe_error", "m", "positioning budget: Abbe error of the guides' pitch and yaw", chain=True
+    ),
     _s("lost_motion", "m", "positioning budget: lost motion", chain=True, drive=True),
-    _s("positioning_error", "m", "positioning budget: worst-case total", preload=-1, chain=True,
-       coupling=True, drive=True),
-    _s("repeatability", "m", "repeatability (ISO 230-2: reversal + noise band)", chain=True,
-       drive=True),
+    _s(
+        "positioning_error",
+        "m",
+        "positioning budget: worst-case total",
+        preload=-1,
+        chain=True,
+        coupling=True,
+        drive=True,
+    ),
+    _s(
+        "repeatability",
+        "m",
+        "repeatability (ISO 230-2: reversal + noise band)",
+        chain=True,
+        drive=True,
+    ),
 )
 OUTPUTS = MappingProxyType({o.name: o for o in OUTPUT_TABLE})
 PROFILE = tuple(o.name for o in OUTPUT_TABLE if o.profile)

@@ -47,8 +47,10 @@ def rack_response(p, cycle) -> dict:
     resist = p["mu"] * (m * g * horiz + p["normal"]) + p["f_seal"]
     weight = m * g * p["vertical"]
     r = p["d"] / 2.0
-    # the cycle (rapids with the duty cycle's forces), and the steady thrust at feed: the largest axial load
-    # against the peak, the mean axial load against the RMS (as model.drive rates a screw drive's motor)
+    # the cycle (rapids with the duty cycle's forces), and the steady thrust at feed: the largest
+    # axial load
+    # against the peak, the mean axial load against the RMS (as model.drive rates a screw drive's
+    # motor)
     thrust = resist + p["thrust"] + weight
     mean_thrust = resist + p["mean_thrust"] + weight
     f_peak = mx.fmax(pr.peak_linear(cycle, m, resist, 1.0, weight), thrust)

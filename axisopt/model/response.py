@@ -61,21 +61,32 @@ def axis_response(p: dict, x, mounting: str, preload, request: Request = FULL) -
     out = {}
     out.update(heat)
     out.update(m)
-    out.update({k: v for k, v in loads.items() if not isinstance(v, list)})  # per-phase lists: no outputs
+    # per-phase lists: no outputs
+    out.update({k: v for k, v in loads.items() if not isinstance(v, list)})
     if request.chain or request.extras:
         chained, k, rock, modes = _chain(p, x, mounting, preload, m, loads)
         out.update(chained)
         # the positioning-error budget (model.accuracy): its rows at the stroke's softest points
         if request.budget:
-            out.update(positioning_budget(p, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"],
-                                          rock))
+            out.update(
+                positioning_budget(
+                    p, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"], rock
+                )
+            )
     out.update(drag_torque(p, preload, loads))
     out["cost"] = cost(p)
     out["backlash"] = lost_motion(p)
     out.update(checks(p, mounting, preload, loads))
     if request.drive:
-        out.update(drive(p, m["moving_mass"], out["drag_torque"], loads["guide_friction_static"],
-                         request.regen))
+        out.update(
+            drive(
+                p,
+                m["moving_mass"],
+                out["drag_torque"],
+                loads["guide_friction_static"],
+                request.regen,
+            )
+        )
     if request.extras:
         out.update(drive_train_modes(p, k, modes["m_eff"]))
         out.update(damping(p, k, modes["m_eff"]))
@@ -85,9 +96,13 @@ def axis_response(p: dict, x, mounting: str, preload, request: Request = FULL) -
 def _chain(p, x, mounting, preload, m, loads) -> tuple:
     """The stiffness chain, the table's rocking, the stiffness at the tool, the axial modes and the achievable
     Kv: (their outputs, the chain, the rocking, the modes)."""
-    k = stiffness_chain(p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"])
+    k = stiffness_chain(
+        p, x, mounting, preload, loads["max_axial_force"], loads["mean_axial_force"]
+    )
     rock = rocking(p)
-    modes = axial_modes(p, x, mounting, k, m["moving_mass"], m["screw_mass"], rock, m["gantry_moving_mass"])
+    modes = axial_modes(
+        p, x, mounting, k, m["moving_mass"], m["screw_mass"], rock, m["gantry_moving_mass"]
+    )
     out = dict(k)
     out.update(rock)
     out.update(tool_stiffness(p, k["k_total"], rock))
@@ -106,7 +121,10 @@ def chain_response(p: dict, x, mounting: str, preload, coupling_stiffnesses=None
     q, _, m, loads = loaded(p, preload)
     if coupling_stiffnesses is None:
         return _chain(q, x, mounting, preload, m, loads)[0]
-    return [_chain(dict(q, coupling_stiffness=k), x, mounting, preload, m, loads)[0] for k in coupling_stiffnesses]
+    return [
+        _chain(dict(q, coupling_stiffness=k), x, mounting, preload, m, loads)[0]
+        for k in coupling_stiffnesses
+    ]
 
 
 def drive_inputs(p: dict, preload) -> tuple:

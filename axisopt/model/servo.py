@@ -52,8 +52,20 @@ from ..physics.servo import (
 from .function import Evaluation
 from .statespace import AxisStateSpace, stroke_state_spaces
 
-__all__ = ["RULE", "CURRENT_LOOP_HZ", "kv_rule", "ServoGains", "yaskawa_gains", "tune", "closed_loop",
-           "ServoResult", "servo_response", "KV_M_MIN_PER_MM", "following_error", "frequency_response"]
+__all__ = [
+    "RULE",
+    "CURRENT_LOOP_HZ",
+    "kv_rule",
+    "ServoGains",
+    "yaskawa_gains",
+    "tune",
+    "closed_loop",
+    "ServoResult",
+    "servo_response",
+    "KV_M_MIN_PER_MM",
+    "following_error",
+    "frequency_response",
+]
 
 
 @dataclass(frozen=True)
@@ -85,7 +97,9 @@ class ServoGains:
         return self.kv / KV_M_MIN_PER_MM
 
 
-def tune(ev: Evaluation, current_loop_hz: float = CURRENT_LOOP_HZ, notch: bool = True) -> ServoGains:
+def tune(
+    ev: Evaluation, current_loop_hz: float = CURRENT_LOOP_HZ, notch: bool = True
+) -> ServoGains:
     """One set of gains for the axis (a drive has one): the rule at the lowest ``f_axial`` over the stroke;
     ``notch``: a torque-reference notch at the second drive-train mode (rotor against screw across the
     coupling), as drives set one for a ball screw's torsion resonance (Yaskawa Pn409-Pn40B)."""
@@ -95,9 +109,17 @@ def tune(ev: Evaluation, current_loop_hz: float = CURRENT_LOOP_HZ, notch: bool =
     y = yaskawa_gains(f_v)
     inertia = float(ev["total_inertia"])
     f_notch = float(np.min(ev["f_axial_torsional_2"])) if notch else 0.0
-    return ServoGains(kv=kv, velocity_hz=f_v, kvp=2.0 * math.pi * f_v * inertia, ti=y["Pn101_ms"] * 1e-3,
-                      tf=y["Pn401_ms"] * 1e-3, tc=1.0 / (2.0 * math.pi * current_loop_hz), inertia=inertia, f_n=f_n,
-                      notch_hz=f_notch)
+    return ServoGains(
+        kv=kv,
+        velocity_hz=f_v,
+        kvp=2.0 * math.pi * f_v * inertia,
+        ti=y["Pn101_ms"] * 1e-3,
+        tf=y["Pn401_ms"] * 1e-3,
+        tc=1.0 / (2.0 * math.pi * current_loop_hz),
+        inertia=inertia,
+        f_n=f_n,
+        notch_hz=f_notch,
+    )
 
 
 CL_INPUTS = ("position_command", "process_force")
@@ -118,6 +140,7 @@ def _series(a, b):
 
 def controller(g: ServoGains):
     """Velocity error at the motor [rad/s] -> motor torque [N*m]: PI, torque filter, notch, current loop."""
+
     def blk(A, B, C, D):
         return tuple(np.atleast_2d(np.asarray(v, dtype=float)) for v in (A, B, C, D))
 
@@ -125,7 +148,12 @@ def controller(g: ServoGains):
     out = _series(out, blk([[-1.0 / g.tf]], [[1.0 / g.tf]], [[1.0]], [[0.0]]))
     if g.notch_hz > 0:
         w = 2.0 * math.pi * g.notch_hz
-        out = _series(out, blk([[0.0, 1.0], [-w * w, -w / NOTCH_Q]], [[0.0], [1.0]], [[0.0, -w / NOTCH_Q]], [[1.0]]))
+        out = _series(
+            out,
+            blk(
+                [[0.0, 1.0], [-w * w, -w / NOTCH_Q]], [[0.0], [1.0]], [[0.0, -w / NOTCH_Q]], [[1.0]]
+            ),
+        )
     return _series(out, blk([[-1.0 / g.tc]], [[1.0 / g.tc]], [[1.0]], [[0.0]]))
 
 
@@ -141,7 +169,8 @@ def closed_loop(ss: AxisStateSpace, g: ServoGains, *, position_loop: bool = True
     i = ss.ratio
     Ac, Bc, Cc, _ = controller(g)
     n, m = ss.A.shape[0], Ac.shape[0]
-    # velocity error at the motor: w_cmd - i omega_m with w_cmd = i Kv (x_ref - r theta_m) / r (or the command)
+    # velocity error at the motor: w_cmd - i omega_m with w_cmd = i Kv (x_ref - r theta_m) / r (or
+    # the command)
     e_z = np.zeros(n)
     e_z[3] = -i
     e_u = np.zeros(2)
@@ -242,8 +271,13 @@ class ServoResult:
         return following_error(self.feed_speed, self.gains.kv)
 
 
-def servo_response(ev: Evaluation, current_loop_hz: float = CURRENT_LOOP_HZ, *, gains: ServoGains | None = None,
-                   freqs=None) -> ServoResult:
+def servo_response(
+    ev: Evaluation,
+    current_loop_hz: float = CURRENT_LOOP_HZ,
+    *,
+    gains: ServoGains | None = None,
+    freqs=None,
+) -> ServoResult:
     """Tune (:func:`tune`) and close the loops on the model at stroke start, middle and end."""
     g = gains or tune(ev, current_loop_hz)
     pos, stab, zmin, vbw, pbw, peak = [], [], [], [], [], []
@@ -262,5 +296,14 @@ def servo_response(ev: Evaluation, current_loop_hz: float = CURRENT_LOOP_HZ, *, 
         f = np.logspace(0, math.log10(f_top), 600) if freqs is None else np.asarray(freqs, float)
         peak.append(float(np.max(np.abs(_response(A, B, C, D, f, 1, 1)))) * 1e6)
     a = ev.design.axis
-    return ServoResult(g, tuple(pos), tuple(stab), tuple(zmin), tuple(vbw), tuple(pbw), tuple(peak),
-                       rapid_speed=float(a.max_speed), feed_speed=float(a.mean_speed_eff))
+    return ServoResult(
+        g,
+        tuple(pos),
+        tuple(stab),
+        tuple(zmin),
+        tuple(vbw),
+        tuple(pbw),
+        tuple(peak),
+        rapid_speed=float(a.max_speed),
+        feed_speed=float(a.mean_speed_eff),
+    )

@@ -95,7 +95,9 @@ class AxisStateSpace:
         n = len(STATES) // 2
         return [i for i in range(2 * n) if (i % n) in self.free]
 
-    def frequency_response(self, freqs, inp: str = "process_force", out: str = "table_position") -> np.ndarray:
+    def frequency_response(
+        self, freqs, inp: str = "process_force", out: str = "table_position"
+    ) -> np.ndarray:
         """Complex frequency response y/u at ``freqs`` [Hz] from one input to one output (SI ratio)."""
         keep = self._kept()
         a = self.A[np.ix_(keep, keep)]
@@ -111,9 +113,16 @@ class AxisStateSpace:
         import control
 
         keep = self._kept()
-        return control.ss(self.A[np.ix_(keep, keep)], self.B[keep, :], self.C[:, keep], self.D,
-                          states=[STATES[i] for i in keep], inputs=list(self.inputs), outputs=list(self.outputs),
-                          name=f"axis_{self.position_mm:.0f}mm{'_held' if self.motor_held else ''}")
+        return control.ss(
+            self.A[np.ix_(keep, keep)],
+            self.B[keep, :],
+            self.C[:, keep],
+            self.D,
+            states=[STATES[i] for i in keep],
+            inputs=list(self.inputs),
+            outputs=list(self.outputs),
+            name=f"axis_{self.position_mm:.0f}mm{'_held' if self.motor_held else ''}",
+        )
 
 
 def second_order(m: dict):
@@ -123,7 +132,9 @@ def second_order(m: dict):
     cc, ca = m["coupling_damping"], m["chain_damping"]
     mass = np.diag([m["motor_inertia"], m["screw_inertia"], m["mass"]])
     stiff = np.array([[kc, -kc, 0.0], [-kc, kc + k * r**2, -k * r], [0.0, -k * r, k]])
-    damp = np.array([[cc, -cc, 0.0], [-cc, cc + ca * r**2, -ca * r], [0.0, -ca * r, ca + m["table_damping"]]])
+    damp = np.array(
+        [[cc, -cc, 0.0], [-cc, cc + ca * r**2, -ca * r], [0.0, -ca * r, ca + m["table_damping"]]]
+    )
     return mass, stiff, damp
 
 
@@ -153,7 +164,9 @@ def _assemble(m: dict, ratio: float, motor_held: bool):
     return A, B, C, D, mass[sub], stiff[sub], damp[sub], free
 
 
-def state_space(ev: Evaluation, i: int, *, motor_held: bool = False, damping_scale: float = 1.0) -> AxisStateSpace:
+def state_space(
+    ev: Evaluation, i: int, *, motor_held: bool = False, damping_scale: float = 1.0
+) -> AxisStateSpace:
     """The axis at position index ``i`` of ``ev.x`` as an :class:`AxisStateSpace`.
 
     ev : an evaluation (:func:`axisopt.model.evaluate`);  motor_held : rotor fixed;
@@ -165,9 +178,21 @@ def state_space(ev: Evaluation, i: int, *, motor_held: bool = False, damping_sca
         m[k] *= damping_scale
     ratio = float(p["reduction_ratio"])  # the reduction part's, else the axis's
     A, B, C, D, mass, stiff, damp, free = _assemble(m, ratio, motor_held)
-    return AxisStateSpace(A, B, C, D, mass, stiff, damp,
-                          position_mm=float((ev.x[i] - ev.design.axis.start_offset) * 1e3), x=float(ev.x[i]),
-                          motor_held=bool(motor_held), lead=float(p["lead"]), ratio=ratio, free=free)
+    return AxisStateSpace(
+        A,
+        B,
+        C,
+        D,
+        mass,
+        stiff,
+        damp,
+        position_mm=float((ev.x[i] - ev.design.axis.start_offset) * 1e3),
+        x=float(ev.x[i]),
+        motor_held=bool(motor_held),
+        lead=float(p["lead"]),
+        ratio=ratio,
+        free=free,
+    )
 
 
 def stroke_state_spaces(ev: Evaluation, *, motor_held: bool = False) -> list:

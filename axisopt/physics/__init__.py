@@ -19,9 +19,34 @@ from axisopt.physics import (
 )
 from axisopt.physics.screw import MOUNTINGS, parallel_stiffness, series_stiffness
 
-MODULES = (screw, nut, bearings, guides, dynamics, damping, friction, thermal, checks, carriage, gantry)
+MODULES = (
+    screw,
+    nut,
+    bearings,
+    guides,
+    dynamics,
+    damping,
+    friction,
+    thermal,
+    checks,
+    carriage,
+    gantry,
+)
 
 __all__ = [
-    "MODULES", "MOUNTINGS", "bearings", "carriage", "checks", "damping", "dynamics", "friction", "gantry", "guides",
-    "nut", "parallel_stiffness", "screw", "series_stiffness", "thermal",
+    "MODULES",
+    "MOUNTINGS",
+    "bearings",
+    "carriage",
+    "checks",
+    "damping",
+    "dynamics",
+    "friction",
+    "gantry",
+    "guides",
+    "nut",
+    "parallel_stiffness",
+    "screw",
+    "series_stiffness",
+    "thermal",
 ]

@@ -15,8 +15,16 @@ from __future__ import annotations
 
 from axisopt import mathx as mx
 
-__all__ = ["lead_error_tolerance", "lead_error_per_300", "required_error_per_300", "stiffness_positioning_error",
-           "abbe_error", "worst_case_total", "repeatability_estimate", "repeatability_iso"]
+__all__ = [
+    "lead_error_tolerance",
+    "lead_error_per_300",
+    "required_error_per_300",
+    "stiffness_positioning_error",
+    "abbe_error",
+    "worst_case_total",
+    "repeatability_estimate",
+    "repeatability_iso",
+]
 
 
 def lead_error_tolerance(travel_deviation, variation):

@@ -9,17 +9,32 @@ from axisopt import mathx as mx
 from axisopt.physics.screw import choose
 
 __all__ = [
-    "C_TYPE_TABLE2", "CATALOG_RADIAL_AXIAL_RATIO", "FRICTION_COEFFICIENTS_TABLE8",
-    "radial_from_axial_eq27", "radial_from_axial_catalog", "RADIAL_FROM_AXIAL_METHODS", "radial_from_axial",
-    "radial_stiffness_eq20", "radial_stiffness_palmgren", "radial_stiffness_kramer",
+    "C_TYPE_TABLE2",
+    "CATALOG_RADIAL_AXIAL_RATIO",
+    "FRICTION_COEFFICIENTS_TABLE8",
+    "radial_from_axial_eq27",
+    "radial_from_axial_catalog",
+    "RADIAL_FROM_AXIAL_METHODS",
+    "radial_from_axial",
+    "radial_stiffness_eq20",
+    "radial_stiffness_palmgren",
+    "radial_stiffness_kramer",
     "RADIAL_STIFFNESS_METHODS",
-    "bearing_radial_stiffness", "bearing_friction_torque", "SUPPORT_TORQUE_ENVELOPE",
-    "support_starting_torque_envelope", "NSK_PERMISSIBLE_SHARE", "STATIC_SAFETY_MACHINE_TOOL",
-    "STATIC_SAFETY_IBC", "row_static_rating", "support_static_margin", "HOUSING_UNIT_RATIO",
+    "bearing_radial_stiffness",
+    "bearing_friction_torque",
+    "SUPPORT_TORQUE_ENVELOPE",
+    "support_starting_torque_envelope",
+    "NSK_PERMISSIBLE_SHARE",
+    "STATIC_SAFETY_MACHINE_TOOL",
+    "STATIC_SAFETY_IBC",
+    "row_static_rating",
+    "support_static_margin",
+    "HOUSING_UNIT_RATIO",
     "housing_stiffness_default",
 ]
 
-# Seed Table 2, c_type of eq. 20 by angular-contact series (C: 15 deg, AC: 25 deg).  The extracted table is
+# Seed Table 2, c_type of eq. 20 by angular-contact series (C: 15 deg, AC: 25 deg).  The extracted
+# table is
 # partly garbled; the 719C/719AC pair is read as 4.83/5.83 (one cell is blank in the source text).
 C_TYPE_TABLE2 = MappingProxyType(
     {"719C": 4.83, "719AC": 5.83, "70C": 5.43, "70AC": 6.03, "72C": 5.38, "72AC": 6.03}
@@ -29,19 +44,21 @@ C_TYPE_TABLE2 = MappingProxyType(
 CATALOG_RADIAL_AXIAL_RATIO = MappingProxyType({15: 6.0, 20: 3.5, 25: 2.0})
 
 # Seed Table 8 (after [23], DIN ISO 15312): (f0_min, f0_max, f1_min, f1_max) for eq. 40.
-FRICTION_COEFFICIENTS_TABLE8 = MappingProxyType({
-    "deep groove ball": (1.7, 2.3, 0.00010, 0.00020),
-    "self-aligning ball": (2.4, 4.0, 0.00008, 0.00008),
-    "angular contact ball": (2.0, 7.0, 0.00025, 0.00035),
-    "four point": (2.0, 3.0, 0.00037, 0.00037),
-    "cylindrical roller with cage": (2.0, 4.0, 0.00020, 0.00040),
-    "cylindrical roller full complement": (5.0, 12.0, 0.00055, 0.00055),
-    "needle roller": (5.0, 10.0, 0.00050, 0.00050),
-    "self-aligning roller": (4.5, 6.5, 0.00017, 0.00036),
-    "tapered roller": (3.0, 4.5, 0.00040, 0.00040),
-    "axial cylindrical roller": (3.0, 4.0, 0.00150, 0.00150),
-    "axial self-aligning roller": (2.5, 3.3, 0.00023, 0.00033),
-})
+FRICTION_COEFFICIENTS_TABLE8 = MappingProxyType(
+    {
+        "deep groove ball": (1.7, 2.3, 0.00010, 0.00020),
+        "self-aligning ball": (2.4, 4.0, 0.00008, 0.00008),
+        "angular contact ball": (2.0, 7.0, 0.00025, 0.00035),
+        "four point": (2.0, 3.0, 0.00037, 0.00037),
+        "cylindrical roller with cage": (2.0, 4.0, 0.00020, 0.00040),
+        "cylindrical roller full complement": (5.0, 12.0, 0.00055, 0.00055),
+        "needle roller": (5.0, 10.0, 0.00050, 0.00050),
+        "self-aligning roller": (4.5, 6.5, 0.00017, 0.00036),
+        "tapered roller": (3.0, 4.5, 0.00040, 0.00040),
+        "axial cylindrical roller": (3.0, 4.0, 0.00150, 0.00150),
+        "axial self-aligning roller": (2.5, 3.3, 0.00023, 0.00033),
+    }
+)
 
 
 def radial_from_axial_eq27(axial_stiffness, contact_angle):
@@ -95,7 +112,9 @@ def radial_stiffness_eq20(bore, outer_diameter, radial_load, c_type):
     (C_TYPE_TABLE2).  Returns k_r [N/m].  Valid for preloaded spindle-type bearings 70xx/719xx/72xx.
     """
     d_mm, dd_mm = bore * 1e3, outer_diameter * 1e3
-    return 1e6 * c_type * (dd_mm + d_mm) ** (2.0 / 3.0) / (dd_mm - d_mm) ** 0.25 * mx.cbrt(radial_load)
+    return (
+        1e6 * c_type * (dd_mm + d_mm) ** (2.0 / 3.0) / (dd_mm - d_mm) ** 0.25 * mx.cbrt(radial_load)
+    )
 
 
 def radial_stiffness_palmgren(radial_load, ball_diameter, n_balls, contact_angle, n_rows=1.0):
@@ -123,13 +142,22 @@ def radial_stiffness_kramer(radial_load, ball_diameter, n_balls):
     evaluated in SI (d_b [m], F [N], x_r [m]); this matches Palmgren within ~10 % for typical geometry.
     radial_load : F_r [N];  ball_diameter : d_b [m];  n_balls : Z [-].  Returns k_r [N/m].
     """
-    x_r = 1.2e-7 * ball_diameter ** (-1.0 / 3.0) * n_balls ** (-2.0 / 3.0) * radial_load ** (2.0 / 3.0)
+    x_r = (
+        1.2e-7
+        * ball_diameter ** (-1.0 / 3.0)
+        * n_balls ** (-2.0 / 3.0)
+        * radial_load ** (2.0 / 3.0)
+    )
     return 1.5 * radial_load / x_r
 
 
-RADIAL_STIFFNESS_METHODS = MappingProxyType({
-    "eq20": radial_stiffness_eq20, "palmgren": radial_stiffness_palmgren, "kramer": radial_stiffness_kramer,
-})
+RADIAL_STIFFNESS_METHODS = MappingProxyType(
+    {
+        "eq20": radial_stiffness_eq20,
+        "palmgren": radial_stiffness_palmgren,
+        "kramer": radial_stiffness_kramer,
+    }
+)
 
 
 def bearing_radial_stiffness(method, **kwargs):
@@ -156,14 +184,20 @@ def bearing_friction_torque(f0, f1, viscosity, speed, mean_diameter, load):
     """
     nu_n = viscosity * 1e6 * mx.fabs(speed) * 60.0 / (2.0 * mx.pi)
     dm = mean_diameter * 1e3
-    m0 = mx.if_else(nu_n >= 2000.0, 1e-7 * f0 * mx.fmax(nu_n, 2000.0) ** (2.0 / 3.0) * dm**3,
-                    160e-7 * f0 * dm**3)
+    m0 = mx.if_else(
+        nu_n >= 2000.0,
+        1e-7 * f0 * mx.fmax(nu_n, 2000.0) ** (2.0 / 3.0) * dm**3,
+        160e-7 * f0 * dm**3,
+    )
     return 1e-3 * (m0 + f1 * load * dm)
 
 
-# Upper envelope of the vendors' starting torque of preloaded support-bearing sets per unit preload and mean
-# diameter, T_start / (F_pr d_m), over every shipped catalog row that lists both (HIWIN WBK H-BS Table 8.12,
-# NSK TAC B NSK-SP p. 168, Schaeffler ZKLN M_RL H-BS Tables 8.38/8.40; catalogs/SOURCES.md "Estimated support
+# Upper envelope of the vendors' starting torque of preloaded support-bearing sets per unit preload
+# and mean
+# diameter, T_start / (F_pr d_m), over every shipped catalog row that lists both (HIWIN WBK H-BS
+# Table 8.12,
+# NSK TAC B NSK-SP p. 168, Schaeffler ZKLN M_RL H-BS Tables 8.38/8.40; catalogs/SOURCES.md
+# "Estimated support
 # drag").  Largest observed: INA ZKLN1034, 0.06 N.m / (735 N x 22 mm) = 3.71e-3; rounded up.
 # tests/catalog/test_loading.py checks that no vendor row lies above it.
 SUPPORT_TORQUE_ENVELOPE = 3.72e-3
@@ -185,11 +219,15 @@ def support_starting_torque_envelope(preload, mean_diameter, coefficient=SUPPORT
 
 
 # Static safety of support-bearing sets.  The vendors rate the sets' static capacity three ways:
-# NSK TAC B (and HIWIN WBK, which carry them) print a "limiting axial load" whose permissible share is 0.7
-# (NSK super-precision bearings, p. 111 footnote 2: "the permissible axial load equals 0.7 x the limiting
-# axial load"); THK prints the support unit's "permissible load", which "indicates the static permissible
+# NSK TAC B (and HIWIN WBK, which carry them) print a "limiting axial load" whose permissible share
+# is 0.7
+# (NSK super-precision bearings, p. 111 footnote 2: "the permissible axial load equals 0.7 x the
+# limiting
+# axial load"); THK prints the support unit's "permissible load", which "indicates the static
+# permissible
 # load" (General Catalog A-806 note), i.e. safety 1 on it; a true basic static rating C0a takes
-# S0 = C0a / P0a >= 4 for machine tools (Bosch Rexroth R310RU 3301 p. 125, its LGF/LGN support bearings;
+# S0 = C0a / P0a >= 4 for machine tools (Bosch Rexroth R310RU 3301 p. 125, its LGF/LGN support
+# bearings;
 # IBC TI-I-5010.2 eq. 2.6 asks S0a > 2.5 for its BS bearings in general use).
 NSK_PERMISSIBLE_SHARE = 0.7
 STATIC_SAFETY_MACHINE_TOOL = 4.0
@@ -228,11 +266,16 @@ def support_static_margin(rating_strong, rating_weak, push, back, safety):
     return mx.fmin(rating_strong / (safety * push), rating_weak / (safety * back))
 
 
-# Axial stiffness of a precision support-bearing unit (housing, locknut) against its bare bearing set: IBC
-# TI-I-5010.2 prints both for the same sets and preloads, bare duplex sets p. 9 and flange/pillow-block units
-# p. 22 (sec. 4.6); the units read 0.963-0.992 x the bare sets.  The least ratio, the heavy series BS 35 at
-# light preload (3200 N: bare 1090 N/um, unit BSBU 35 DB 128 1050 N/um), is the default: the housing is then
-# 26.3 x the set.  An estimate for other vendors' housings; the joint to the machine bed is not included.
+# Axial stiffness of a precision support-bearing unit (housing, locknut) against its bare bearing
+# set: IBC
+# TI-I-5010.2 prints both for the same sets and preloads, bare duplex sets p. 9 and flange/pillow-
+# block units
+# p. 22 (sec. 4.6); the units read 0.963-0.992 x the bare sets.  The least ratio, the heavy series
+# BS 35 at
+# light preload (3200 N: bare 1090 N/um, unit BSBU 35 DB 128 1050 N/um), is the default: the housing
+# is then
+# 26.3 x the set.  An estimate for other vendors' housings; the joint to the machine bed is not
+# included.
 HOUSING_UNIT_RATIO = 1050.0 / 1090.0
 
 

@@ -19,11 +19,18 @@ and the set's own lift-off load (Table 2.2's form), above Hertz's exact (convex)
 
 All functions take floats, numpy arrays or CasADi symbols.
 """
+
 from __future__ import annotations
 
 from .. import mathx as mx
 
-__all__ = ["set_preload_ratio", "set_lift_off", "set_rigidity_ratio", "set_pressed_load", "set_halves"]
+__all__ = [
+    "set_preload_ratio",
+    "set_lift_off",
+    "set_rigidity_ratio",
+    "set_pressed_load",
+    "set_halves",
+]
 
 
 def set_preload_ratio(n_a, n_b):
@@ -47,7 +54,9 @@ def set_rigidity_ratio(n_a, n_b):
     pair: both groups act while both are loaded, each of rigidity 3/2 (n K)^{2/3} F^{1/3}, at the set's preload
     (:func:`set_preload_ratio`): (n_a^{2/3} + n_b^{2/3}) / 2 * ratio^{1/3}.  2 against 1: 1.43, 2 against 2: 2
     (NSK p. 168: 1.46 and 1.96); 3 against 1: 1.79."""
-    return 0.5 * (n_a ** (2.0 / 3.0) + n_b ** (2.0 / 3.0)) * set_preload_ratio(n_a, n_b) ** (1.0 / 3.0)
+    return (
+        0.5 * (n_a ** (2.0 / 3.0) + n_b ** (2.0 / 3.0)) * set_preload_ratio(n_a, n_b) ** (1.0 / 3.0)
+    )
 
 
 def set_pressed_load(preload, load, n_load, n_other):
@@ -67,4 +76,7 @@ def set_halves(preload, load, n_plus, n_minus):
     plus = set_pressed_load(preload, mx.fmax(load, 0.0), n_plus, n_minus)
     minus = set_pressed_load(preload, mx.fmax(-load, 0.0), n_minus, n_plus)
     pressed_plus = load >= 0.0
-    return (mx.if_else(pressed_plus, plus, minus + load), mx.if_else(pressed_plus, plus - load, minus))
+    return (
+        mx.if_else(pressed_plus, plus, minus + load),
+        mx.if_else(pressed_plus, plus - load, minus),
+    )

@@ -21,15 +21,28 @@ not in these vendors' tables): an upper bound of the stage's stiffness.
 
 Every function works on floats, numpy arrays and CasADi symbols.
 """
+
 from __future__ import annotations
 
 from math import pi
 
 from .. import mathx as mx
 
-__all__ = ["pitch_diameter", "belt_length", "span_length", "wrap_angle", "teeth_in_mesh", "span_stiffness",
-           "stage_torsional_stiffness", "tooth_shear_pull", "tension_pull", "effective_pull",
-           "pulley_inertia", "stage_input_inertia", "ZE_MAX"]
+__all__ = [
+    "pitch_diameter",
+    "belt_length",
+    "span_length",
+    "wrap_angle",
+    "teeth_in_mesh",
+    "span_stiffness",
+    "stage_torsional_stiffness",
+    "tooth_shear_pull",
+    "tension_pull",
+    "effective_pull",
+    "pulley_inertia",
+    "stage_input_inertia",
+    "ZE_MAX",
+]
 
 ZE_MAX = 12.0  # ELATECH M belts: at most 12 teeth in mesh count (ELATECH "Drive calculation")
 
@@ -88,8 +101,10 @@ def tension_pull(allowable_tension, pretension_share=1.0):
 
 def effective_pull(fu_spez, teeth_meshed, width, allowable_tension, pretension_share=1.0):
     """Permissible effective pull [N]: the lower of the teeth's shear and the cords' tension."""
-    return mx.fmin(tooth_shear_pull(fu_spez, teeth_meshed, width), tension_pull(allowable_tension,
-                                                                                pretension_share))
+    return mx.fmin(
+        tooth_shear_pull(fu_spez, teeth_meshed, width),
+        tension_pull(allowable_tension, pretension_share),
+    )
 
 
 def pulley_inertia(tip_diameter, width, density, bore=0.0):

@@ -26,9 +26,18 @@ from __future__ import annotations
 from axisopt import mathx as mx
 
 __all__ = [
-    "carriage_moments", "moment_share", "block_radial_load", "block_lateral_load", "equivalent_block_load",
-    "corner_block_loads", "max_block_load", "static_safety", "mean_load", "pattern_rocking_stiffness",
-    "rocking_frequency", "box_inertia",
+    "carriage_moments",
+    "moment_share",
+    "block_radial_load",
+    "block_lateral_load",
+    "equivalent_block_load",
+    "corner_block_loads",
+    "max_block_load",
+    "static_safety",
+    "mean_load",
+    "pattern_rocking_stiffness",
+    "rocking_frequency",
+    "box_inertia",
 ]
 
 # The four corners of a block pattern (s_x, s_y): front/back block, left/right rail.
@@ -48,8 +57,11 @@ def carriage_moments(feed_force, cross_force, normal_force, x, y, height):
     Returns (M_P, M_R, M_Y) [N*m].  Source: statics of the rigid table (THK General Catalog A-82..A-89: the
     moments m g l2, m g l3, m alpha l5 of the worked examples are these products).
     """
-    return (feed_force * height + normal_force * x, cross_force * height + normal_force * y,
-            cross_force * x - feed_force * y)
+    return (
+        feed_force * height + normal_force * x,
+        cross_force * height + normal_force * y,
+        cross_force * x - feed_force * y,
+    )
 
 
 def moment_share(count, spacing, moment_factor, per_other):
@@ -112,8 +124,17 @@ def equivalent_block_load(radial, lateral):
     return mx.fabs(radial) + mx.fabs(lateral)
 
 
-def corner_block_loads(normal_force, cross_force, pitch_moment, roll_moment, yaw_moment, n_blocks,
-                       c_pitch, c_roll, c_yaw):
+def corner_block_loads(
+    normal_force,
+    cross_force,
+    pitch_moment,
+    roll_moment,
+    yaw_moment,
+    n_blocks,
+    c_pitch,
+    c_roll,
+    c_yaw,
+):
     r"""Equivalent loads :func:`equivalent_block_load` of the four corner blocks (a tuple of 4) [N].
 
     Arguments as :func:`block_radial_load` and :func:`block_lateral_load`.  With one rail (c_roll from the
@@ -121,20 +142,32 @@ def corner_block_loads(normal_force, cross_force, pitch_moment, roll_moment, yaw
     """
     out = []
     for sx, sy in CORNERS:
-        p = block_radial_load(normal_force, pitch_moment, roll_moment, n_blocks, c_pitch, c_roll, sx, sy)
+        p = block_radial_load(
+            normal_force, pitch_moment, roll_moment, n_blocks, c_pitch, c_roll, sx, sy
+        )
         t = block_lateral_load(cross_force, yaw_moment, n_blocks, c_yaw, sx)
         out.append(equivalent_block_load(p, t))
     return tuple(out)
 
 
-def max_block_load(normal_force, cross_force, pitch_moment, roll_moment, yaw_moment, n_blocks, c_pitch,
-                   c_roll, c_yaw):
+def max_block_load(
+    normal_force,
+    cross_force,
+    pitch_moment,
+    roll_moment,
+    yaw_moment,
+    n_blocks,
+    c_pitch,
+    c_roll,
+    c_yaw,
+):
     r"""Largest equivalent block load of a load case [N]: the maximum of :func:`corner_block_loads`.
 
     Source: THK General Catalog A-106 (the static safety factor takes the largest P_E of all blocks and
     cases).
     """
-    # the roll term's sign is free for either front/back row: max over s_y of |a + s_y c| = |a| + |c|
+    # the roll term's sign is free for either front/back row: max over s_y of |a + s_y c| = |a| +
+    # |c|
     a, c, t = normal_force / n_blocks, c_roll * roll_moment, cross_force / n_blocks
     b, e = c_pitch * pitch_moment, c_yaw * yaw_moment
     front = mx.fabs(a + b) + mx.fabs(c) + mx.fabs(t + e)

@@ -8,13 +8,26 @@ from axisopt import mathx as mx
 from axisopt.physics.screw import E_STEEL, RHO_STEEL, choose
 
 __all__ = [
-    "CRITICAL_SPEED_LAMBDA1", "BUCKLING_ETA1", "critical_speed", "buckling_load",
-    "life_revolutions", "life_time", "dn_value", "THK_LOAD_FACTOR_TABLE", "load_factor_default",
+    "CRITICAL_SPEED_LAMBDA1",
+    "BUCKLING_ETA1",
+    "critical_speed",
+    "buckling_load",
+    "life_revolutions",
+    "life_time",
+    "dn_value",
+    "THK_LOAD_FACTOR_TABLE",
+    "load_factor_default",
 ]
 
-# THK catalog A15-32 eq. 7: lambda_1 by mounting.  lambda_2 = 3.4 / 9.7 / 15.1 / 21.9 includes the 0.8 factor.
+# THK catalog A15-32 eq. 7: lambda_1 by mounting.  lambda_2 = 3.4 / 9.7 / 15.1 / 21.9 includes the
+# 0.8 factor.
 CRITICAL_SPEED_LAMBDA1 = MappingProxyType(
-    {"fixed-free": 1.875, "supported-supported": 3.142, "fixed-supported": 3.927, "fixed-fixed": 4.730}
+    {
+        "fixed-free": 1.875,
+        "supported-supported": 3.142,
+        "fixed-supported": 3.927,
+        "fixed-fixed": 4.730,
+    }
 )
 # THK catalog A15-30 eq. 5: eta_1 by mounting (eta_2 = 1.3 / 10 / 20 incl. 0.5);
 # supported-supported eta_1 = 1 (eta_2 = 5).
@@ -23,8 +36,10 @@ BUCKLING_ETA1 = MappingProxyType(
 )
 
 
-# THK General Catalog A-704 Table 19 "Load Factor (fW)" (the same as Table 3, A-12, for LM guides): rows by
-# vibration/impact and speed, (top of the speed range [m/s], fW range).  HIWIN H-BS p. 25 gives fp 1.1-1.2
+# THK General Catalog A-704 Table 19 "Load Factor (fW)" (the same as Table 3, A-12, for LM guides):
+# rows by
+# vibration/impact and speed, (top of the speed range [m/s], fW range).  HIWIN H-BS p. 25 gives fp
+# 1.1-1.2
 # without impact, 1.3-1.8 in normal operation, 2-3 with high impact and vibration.
 THK_LOAD_FACTOR_TABLE = (
     (0.25, (1.0, 1.2)),  # faint vibration, very low speed, V <= 0.25 m/s
@@ -50,8 +65,9 @@ def load_factor_default(speed):
     return THK_LOAD_FACTOR_TABLE[-1][1][1]
 
 
-def critical_speed(root_diameter, span, mounting, safety_factor=0.8, youngs_modulus=E_STEEL,
-                   density=RHO_STEEL):
+def critical_speed(
+    root_diameter, span, mounting, safety_factor=0.8, youngs_modulus=E_STEEL, density=RHO_STEEL
+):
     r"""Permissible speed from the first bending (whirling) frequency of the screw shaft.
 
     .. math:: \omega = s\, \frac{\lambda_1^2}{\ell_b^2} \sqrt{\frac{E I}{\rho A}}
@@ -65,7 +81,12 @@ def critical_speed(root_diameter, span, mounting, safety_factor=0.8, youngs_modu
     (N1 = lambda_2 d_r / l_b^2 * 1e7 [1/min], d, l [mm]).
     """
     lam = choose(CRITICAL_SPEED_LAMBDA1, mounting, "mounting")
-    return safety_factor * lam**2 / span**2 * mx.sqrt(youngs_modulus * root_diameter**2 / (16.0 * density))
+    return (
+        safety_factor
+        * lam**2
+        / span**2
+        * mx.sqrt(youngs_modulus * root_diameter**2 / (16.0 * density))
+    )
 
 
 def buckling_load(root_diameter, length, mounting, safety_factor=0.5, youngs_modulus=E_STEEL):
@@ -104,7 +125,9 @@ def life_time(dynamic_load_rating, load, speed, load_factor=1.0):
     return life_revolutions(dynamic_load_rating, load, load_factor) * 2.0 * mx.pi / speed
 
 
-def guide_life_distance(dynamic_load_rating, load, load_factor=1.0, roller=0.0, rating_distance=None):
+def guide_life_distance(
+    dynamic_load_rating, load, load_factor=1.0, roller=0.0, rating_distance=None
+):
     r"""Nominal (L10) travel life of a linear guide block.
 
     .. math:: L = (C / (f_w P))^{3} \cdot L_C            (ball blocks)

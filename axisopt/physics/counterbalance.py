@@ -71,7 +71,9 @@ def cylinder_force_range(force_start, force_end, tolerance):
     .. math:: F_{lo} = \min(F_0, F_1)(1 - t),\qquad F_{hi} = \max(F_0, F_1)(1 + t)
 
     tolerance : t, the pressure tolerance as a fraction (0.05 for +/- 5 %) [-]."""
-    return mx.fmin(force_start, force_end) * (1.0 - tolerance), mx.fmax(force_start, force_end) * (1.0 + tolerance)
+    return mx.fmin(force_start, force_end) * (1.0 - tolerance), mx.fmax(force_start, force_end) * (
+        1.0 + tolerance
+    )
 
 
 def cylinder_worst_force(weight, force_low, force_high):
@@ -95,7 +97,9 @@ def unbalanced_torque(head_mass, counter_mass, lead, efficiency, g=G):
     return (head_mass - counter_mass) * g * lead / (2.0 * mx.pi * efficiency)
 
 
-def vertical_load_torque(head_mass, counter_mass, lead, efficiency, friction_coefficient, direction, g=G):
+def vertical_load_torque(
+    head_mass, counter_mass, lead, efficiency, friction_coefficient, direction, g=G
+):
     r"""Mitsubishi's load torque of a counterweighted vertical axis at the motor, in the direction of the motion
     [N m] (MR-J2S-A eq. 11-18 to 11-21):
 

@@ -8,28 +8,52 @@ from axisopt import mathx as mx
 from axisopt.physics.screw import choose
 
 __all__ = [
-    "DAMPING_RATIO_TABLE5", "BEARING_DAMPING_TABLE6", "GUIDE_DAMPING_TABLE7",
-    "critical_damping", "damping_ratio", "damping_coefficient", "damping_ratio_from_log_decrement_eq39",
-    "damping_ratio_from_log_decrement_exact", "LOG_DECREMENT_METHODS", "damping_ratio_from_log_decrement",
-    "damping_ratio_from_loss_factor", "damping_ratio_from_decay_rate", "modal_damping_ratio",
-    "rolling_joint_damping", "chain_damper_share",
+    "DAMPING_RATIO_TABLE5",
+    "BEARING_DAMPING_TABLE6",
+    "GUIDE_DAMPING_TABLE7",
+    "critical_damping",
+    "damping_ratio",
+    "damping_coefficient",
+    "damping_ratio_from_log_decrement_eq39",
+    "damping_ratio_from_log_decrement_exact",
+    "LOG_DECREMENT_METHODS",
+    "damping_ratio_from_log_decrement",
+    "damping_ratio_from_loss_factor",
+    "damping_ratio_from_decay_rate",
+    "modal_damping_ratio",
+    "rolling_joint_damping",
+    "chain_damper_share",
 ]
 
 # Seed Table 5 (after [16]): damping ratio ranges [-], as printed
 # ("0.02-0.0" and "Red" are garbled in the source).
-DAMPING_RATIO_TABLE5 = MappingProxyType({
-    "steel": (0.001, 0.002), "cast iron": (0.002, 0.004), "polymer concrete": (0.02, None),
-    "welded structure": (0.004, 0.08), "red (as printed)": (0.04, 0.08),
-})
+DAMPING_RATIO_TABLE5 = MappingProxyType(
+    {
+        "steel": (0.001, 0.002),
+        "cast iron": (0.002, 0.004),
+        "polymer concrete": (0.02, None),
+        "welded structure": (0.004, 0.08),
+        "red (as printed)": (0.04, 0.08),
+    }
+)
 # Seed Table 6 (after [20]): bearing damping [N*s/m] by bore [mm].
-BEARING_DAMPING_TABLE6 = MappingProxyType({
-    55: (2000.0, 9000.0), 90: (5500.0, 12000.0), 120: (50000.0, 550000.0), 160: (200000.0, 1000000.0),
-})
+BEARING_DAMPING_TABLE6 = MappingProxyType(
+    {
+        55: (2000.0, 9000.0),
+        90: (5500.0, 12000.0),
+        120: (50000.0, 550000.0),
+        160: (200000.0, 1000000.0),
+    }
+)
 # Seed Table 7 (after [9]): linear guide damping [N*s/m] by type and rail size [mm].
-GUIDE_DAMPING_TABLE7 = MappingProxyType({
-    ("ball", 35): (4000.0, 10000.0), ("roller", 35): (3500.0, 14500.0),
-    ("ball", 45): (4000.0, 14000.0), ("roller", 45): (6500.0, 10500.0),
-})
+GUIDE_DAMPING_TABLE7 = MappingProxyType(
+    {
+        ("ball", 35): (4000.0, 10000.0),
+        ("roller", 35): (3500.0, 14500.0),
+        ("ball", 45): (4000.0, 14000.0),
+        ("roller", 45): (6500.0, 10500.0),
+    }
+)
 
 
 def critical_damping(mass, stiffness):
@@ -72,9 +96,12 @@ def damping_ratio_from_log_decrement_exact(log_decrement):
     return log_decrement / mx.sqrt(4.0 * mx.pi**2 + log_decrement**2)
 
 
-LOG_DECREMENT_METHODS = MappingProxyType({
-    "eq39": damping_ratio_from_log_decrement_eq39, "exact": damping_ratio_from_log_decrement_exact,
-})
+LOG_DECREMENT_METHODS = MappingProxyType(
+    {
+        "eq39": damping_ratio_from_log_decrement_eq39,
+        "exact": damping_ratio_from_log_decrement_exact,
+    }
+)
 
 
 def damping_ratio_from_log_decrement(log_decrement, method="eq39"):

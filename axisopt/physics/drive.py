@@ -28,11 +28,17 @@ def load_inertia(mass, lead, ratio=1.0):
     return mass * (lead / (2.0 * pi)) ** 2 * ratio**2
 
 
-def reflected_inertia(mass, lead, screw_inertia_, coupling_inertia=0.0, ratio=1.0, motor_side_inertia=0.0):
+def reflected_inertia(
+    mass, lead, screw_inertia_, coupling_inertia=0.0, ratio=1.0, motor_side_inertia=0.0
+):
     r"""Total load inertia at the motor shaft (THK eq. 45 without the rotor):
     :math:`m (P_h/2\pi)^2 A^2 + (J_S + J_{cpl}) A^2 + J_B`, with ``coupling_inertia`` on the screw side of
     the reduction and ``motor_side_inertia`` (e.g. a pulley on the motor) unreduced [kg m^2]."""
-    return load_inertia(mass, lead, ratio) + (screw_inertia_ + coupling_inertia) * ratio**2 + motor_side_inertia
+    return (
+        load_inertia(mass, lead, ratio)
+        + (screw_inertia_ + coupling_inertia) * ratio**2
+        + motor_side_inertia
+    )
 
 
 def force_torque(axial_force, lead, efficiency=0.9, ratio=1.0):
@@ -93,8 +99,16 @@ def _each(value, n: int) -> list:
     return [value] * n
 
 
-def phase_torques(phases, total_inertia, lead, friction_torque, gravity_torque, efficiency=0.9, ratio=1.0,
-                  hold_friction=0.0):
+def phase_torques(
+    phases,
+    total_inertia,
+    lead,
+    friction_torque,
+    gravity_torque,
+    efficiency=0.9,
+    ratio=1.0,
+    hold_friction=0.0,
+):
     r"""Motor torque at the start and end of each duty-cycle phase [N m] (THK eq. 40-45, signed):
 
     .. math:: T = J\,\frac{2\pi}{P_h A} a + s\,\Big(T_f + \frac{F P_h A}{2\pi\eta}\Big) + T_g
@@ -116,11 +130,15 @@ def phase_torques(phases, total_inertia, lead, friction_torque, gravity_torque, 
     per_newton = lead * ratio / (2.0 * pi * efficiency)
     n = len(phases)
     out = []
-    # phases of the same accelerations, direction, force and mass (the S-curve pieces of every move that reaches
-    # full acceleration) share one computed pair: the same object, which the RMS and peak below count once
+    # phases of the same accelerations, direction, force and mass (the S-curve pieces of every move
+    # that reaches
+    # full acceleration) share one computed pair: the same object, which the RMS and peak below
+    # count once
     seen: dict = {}
     for ph, j_tot, t_g in zip(phases, _each(total_inertia, n), _each(gravity_torque, n)):
-        key = (ph.direction, ph.force, id(t_g)) + ((id(j_tot), ph.a0, ph.a1) if ph.direction != 0.0 else ())
+        key = (ph.direction, ph.force, id(t_g)) + (
+            (id(j_tot), ph.a0, ph.a1) if ph.direction != 0.0 else ()
+        )
         pair = seen.get(key)
         if pair is None:
             if ph.direction == 0.0:
@@ -135,10 +153,14 @@ def phase_torques(phases, total_inertia, lead, friction_torque, gravity_torque, 
     return out
 
 
-# Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (2), p. 7-4: the maximum torque governs the
-# acceleration "in a low-speed rotation range (approximately less than half of the servomotor maximum speed)";
-# beyond it the torque characteristics of the high-speed range apply.  The estimated corner of the peak zone
-# where a vendor prints no curve values is the lower of the rated speed and this fraction of the max speed.
+# Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (2), p. 7-4: the maximum torque governs
+# the
+# acceleration "in a low-speed rotation range (approximately less than half of the servomotor
+# maximum speed)";
+# beyond it the torque characteristics of the high-speed range apply.  The estimated corner of the
+# peak zone
+# where a vendor prints no curve values is the lower of the rated speed and this fraction of the max
+# speed.
 PEAK_CORNER_FRACTION = 0.5
 
 
@@ -157,7 +179,8 @@ def peak_torque_available(speed, peak_torque, corner_speed, peak_at_max_speed, m
     return peak_torque - (peak_torque - peak_at_max_speed) * frac
 
 
-REGEN_STEPS = 8  # Simpson sub-intervals per phase for the regenerative energy (exact while the power keeps its sign)
+# Simpson sub-intervals per phase for the regenerative energy (exact while the power keeps its sign)
+REGEN_STEPS = 8
 
 
 def regenerative_energy(phases, torques, lead, ratio=1.0):

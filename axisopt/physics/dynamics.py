@@ -10,9 +10,16 @@ from axisopt import mathx as mx
 from axisopt.physics.screw import E_STEEL, choose
 
 __all__ = [
-    "axial_natural_frequency", "effective_axial_mass", "axial_angular_frequency_eq11", "table_mode_frequency",
-    "axial_torsional_eigenvalues", "axial_torsional_frequencies", "dynamic_compliance",
-    "drive_train_eigenvalues", "drive_train_frequencies", "drive_train_compliance",
+    "axial_natural_frequency",
+    "effective_axial_mass",
+    "axial_angular_frequency_eq11",
+    "table_mode_frequency",
+    "axial_torsional_eigenvalues",
+    "axial_torsional_frequencies",
+    "dynamic_compliance",
+    "drive_train_eigenvalues",
+    "drive_train_frequencies",
+    "drive_train_compliance",
 ]
 
 
@@ -39,7 +46,9 @@ def effective_axial_mass(moving_mass, screw_mass, x, span, mounting):
 _MASS_MOUNTINGS = MappingProxyType({m: m for m in ("fixed-free", "fixed-supported", "fixed-fixed")})
 
 
-def axial_natural_frequency(stiffness, moving_mass, screw_mass=0.0, x=None, span=None, mounting="fixed-supported"):
+def axial_natural_frequency(
+    stiffness, moving_mass, screw_mass=0.0, x=None, span=None, mounting="fixed-supported"
+):
     r"""First axial natural frequency of the table on the drive spring (seed eq. 11, lumped form).
 
     .. math:: f_1 = \frac{1}{2\pi}\sqrt{k / m_{eff}}
@@ -102,12 +111,22 @@ def axial_torsional_eigenvalues(rotary_inertia, torsional_stiffness, axial_stiff
 
 def axial_torsional_frequencies(rotary_inertia, torsional_stiffness, axial_stiffness, mass, lead):
     """Natural frequencies (f_1, f_2) [Hz] of axial_torsional_eigenvalues (same arguments, SI)."""
-    w1, w2 = axial_torsional_eigenvalues(rotary_inertia, torsional_stiffness, axial_stiffness, mass, lead)
+    w1, w2 = axial_torsional_eigenvalues(
+        rotary_inertia, torsional_stiffness, axial_stiffness, mass, lead
+    )
     return mx.sqrt(w1) / (2.0 * mx.pi), mx.sqrt(w2) / (2.0 * mx.pi)
 
 
-def dynamic_compliance(frequency, mass, axial_stiffness, axial_damping, rotary_inertia=None,
-                       torsional_stiffness=None, torsional_damping=0.0, lead=None):
+def dynamic_compliance(
+    frequency,
+    mass,
+    axial_stiffness,
+    axial_damping,
+    rotary_inertia=None,
+    torsional_stiffness=None,
+    torsional_damping=0.0,
+    lead=None,
+):
     r"""Table dynamic compliance X/F(j omega) of the lumped model (inverse dynamic stiffness, seed eq. 41).
 
     Without rotary data (SDOF):  X/F = 1 / (k_a - m omega^2 + j omega c_a).
@@ -129,13 +148,19 @@ def dynamic_compliance(frequency, mass, axial_stiffness, axial_damping, rotary_i
     if torsional_stiffness is None or lead is None:
         raise ValueError("dynamic_compliance: rotary_inertia needs torsional_stiffness and lead")
     r = lead / (2.0 * np.pi)
-    z_t = torsional_stiffness + axial_stiffness * r**2 - rotary_inertia * w**2 + jw * (
-        torsional_damping + axial_damping * r**2)
+    z_t = (
+        torsional_stiffness
+        + axial_stiffness * r**2
+        - rotary_inertia * w**2
+        + jw * (torsional_damping + axial_damping * r**2)
+    )
     coupling = r * (axial_stiffness + jw * axial_damping)
     return z_t / (z_t * z_x - coupling**2)
 
 
-def drive_train_eigenvalues(motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass, lead):
+def drive_train_eigenvalues(
+    motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass, lead
+):
     r"""Squared angular frequencies of the two elastic modes of the motor-coupling-screw-table chain.
 
     Three DOFs (seed Fig. 1): motor rotor theta_m (J_m, with its half of the coupling), screw theta_s (J_s,
@@ -163,15 +188,29 @@ def drive_train_eigenvalues(motor_inertia, screw_inertia, coupling_stiffness, ax
     return (q - disc) / den, (q + disc) / den
 
 
-def drive_train_frequencies(motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass, lead):
+def drive_train_frequencies(
+    motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass, lead
+):
     """Natural frequencies (f_1, f_2) [Hz] of drive_train_eigenvalues (same arguments, SI)."""
-    w1, w2 = drive_train_eigenvalues(motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass,
-                                     lead)
+    w1, w2 = drive_train_eigenvalues(
+        motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass, lead
+    )
     return mx.sqrt(w1) / (2.0 * mx.pi), mx.sqrt(w2) / (2.0 * mx.pi)
 
 
-def drive_train_compliance(frequency, motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass,
-                           lead, table_damping=0.0, chain_damping=0.0, coupling_damping=0.0, motor_held=False):
+def drive_train_compliance(
+    frequency,
+    motor_inertia,
+    screw_inertia,
+    coupling_stiffness,
+    axial_stiffness,
+    mass,
+    lead,
+    table_damping=0.0,
+    chain_damping=0.0,
+    coupling_damping=0.0,
+    motor_held=False,
+):
     r"""Table compliance X/F(j omega) of the motor-coupling-screw-table chain (inverse of seed eq. 41).
 
     DOFs and springs as :func:`drive_train_eigenvalues`; viscous dampers: ``table_damping`` c_g from the

@@ -28,7 +28,9 @@ def axial_force_torque(axial_force, lead, efficiency=0.9):
     return axial_force * lead / (2.0 * mx.pi * efficiency)
 
 
-def motor_drag_torque(preload_torque, bearing_torque, guide_force, lead, efficiency=0.9, seal_torque=0.0):
+def motor_drag_torque(
+    preload_torque, bearing_torque, guide_force, lead, efficiency=0.9, seal_torque=0.0
+):
     r"""Total no-load drag torque seen by the motor.
 
     .. math:: T = T_p + T_{brg} + T_{seal} + F_{guide} P_h / (2\pi\eta)
@@ -40,4 +42,9 @@ def motor_drag_torque(preload_torque, bearing_torque, guide_force, lead, efficie
     Source: THK General Catalog, ball screw torque calculation (A-743..A-746): the drive torque at
     constant speed is the preload drag, the bearings' and seals' torques and the guide friction through the lead.
     """
-    return preload_torque + bearing_torque + seal_torque + axial_force_torque(guide_force, lead, efficiency)
+    return (
+        preload_torque
+        + bearing_torque
+        + seal_torque
+        + axial_force_torque(guide_force, lead, efficiency)
+    )

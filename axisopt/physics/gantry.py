@@ -35,8 +35,16 @@ import math
 
 from axisopt import mathx as mx
 
-__all__ = ["side_shares", "side_force_share", "side_mass_share", "yaw_stiffness", "bridge_yaw_inertia_estimate",
-           "gantry_matrices", "gantry_eigenvalues", "gantry_frequencies"]
+__all__ = [
+    "side_shares",
+    "side_force_share",
+    "side_mass_share",
+    "yaw_stiffness",
+    "bridge_yaw_inertia_estimate",
+    "gantry_matrices",
+    "gantry_eigenvalues",
+    "gantry_frequencies",
+]
 
 
 def side_force_share(force, y, span):
@@ -100,8 +108,10 @@ def bridge_yaw_inertia(bridge_mass, span, upright_mass):
     return beam * span * span / 12.0 + upright_mass * 0.25 * span * span
 
 
-# Where the problem gives neither the bridge's inertia nor its uprights: half the bridge's mass in its uprights
-# at the drives (an ESTIMATE, conservative for the racking mode against the uniform beam: J = m L^2 / 6, twice
+# Where the problem gives neither the bridge's inertia nor its uprights: half the bridge's mass in
+# its uprights
+# at the drives (an ESTIMATE, conservative for the racking mode against the uniform beam: J = m L^2
+# / 6, twice
 # m L^2 / 12; a bridge with its uprights as light as a beam section would sit between)
 UPRIGHT_SHARE = 0.5
 
@@ -146,8 +156,9 @@ def gantry_eigenvalues(bridge_mass, bridge_inertia, cross_mass, y, k1, k2, span,
     (the lower root in the cancellation-free form; the discriminant, >= 0 for symmetric positive M and K, is
     clipped at 0 against rounding).  Arguments as :func:`gantry_matrices`; float, numpy or CasADi.
     """
-    m11, m12, m22, k11, k12, k22 = gantry_matrices(bridge_mass, bridge_inertia, cross_mass, y, k1, k2, span,
-                                                   k_guides)
+    m11, m12, m22, k11, k12, k22 = gantry_matrices(
+        bridge_mass, bridge_inertia, cross_mass, y, k1, k2, span, k_guides
+    )
     a = m11 * m22 - m12 * m12
     b = k11 * m22 + k22 * m11 - 2.0 * k12 * m12
     c = k11 * k22 - k12 * k12

@@ -5,8 +5,12 @@ from __future__ import annotations
 from axisopt import mathx as mx
 
 __all__ = [
-    "TANGENTIAL_NORMAL_RATIO", "guide_tangential_stiffness", "guide_ball_stiffness",
-    "guide_normal_stiffness_hertz", "guide_tangential_stiffness_hertz", "guide_friction_force",
+    "TANGENTIAL_NORMAL_RATIO",
+    "guide_tangential_stiffness",
+    "guide_ball_stiffness",
+    "guide_normal_stiffness_hertz",
+    "guide_tangential_stiffness_hertz",
+    "guide_friction_force",
 ]
 
 TANGENTIAL_NORMAL_RATIO = 0.71  # seed Table 1 / sec. 3.1.3 (Wang et al. [27]): k_t / k_n
@@ -47,7 +51,11 @@ def guide_normal_stiffness_hertz(preload_per_ball, deflection_constant, n_balls,
     n_balls : z, loaded balls of all rows [-];  contact_angle : beta [rad].  Returns K_n [N/m].
     Valid below lift-off of the relaxing rows (external load < ~2.8 x preload).
     """
-    return n_balls * guide_ball_stiffness(preload_per_ball, deflection_constant) * mx.sin(contact_angle) ** 2
+    return (
+        n_balls
+        * guide_ball_stiffness(preload_per_ball, deflection_constant)
+        * mx.sin(contact_angle) ** 2
+    )
 
 
 def guide_tangential_stiffness_hertz(preload_per_ball, deflection_constant, n_balls, contact_angle):
@@ -60,10 +68,16 @@ def guide_tangential_stiffness_hertz(preload_per_ball, deflection_constant, n_ba
     Arguments as guide_normal_stiffness_hertz.  Returns K_t [N/m].  K_t/K_n = cot^2(beta); the empirical 0.71
     of Table 1 corresponds to beta = 50 deg in this idealised model (real blocks differ by row layout).
     """
-    return n_balls * guide_ball_stiffness(preload_per_ball, deflection_constant) * mx.cos(contact_angle) ** 2
+    return (
+        n_balls
+        * guide_ball_stiffness(preload_per_ball, deflection_constant)
+        * mx.cos(contact_angle) ** 2
+    )
 
 
-def guide_friction_force(friction_force, friction_coefficient, friction_viscous, normal_load, speed):
+def guide_friction_force(
+    friction_force, friction_coefficient, friction_viscous, normal_load, speed
+):
     r"""Friction force of one guide block against block load and speed.
 
     .. math:: F = F_0 + \mu |N| + c_v |v|
@@ -76,4 +90,8 @@ def guide_friction_force(friction_force, friction_coefficient, friction_viscous,
     Returns F [N] (magnitude; the force opposes motion).  Source: linear-in-load reading of seed Table 9
     (after [16]); the table's growth above 20 kN is steeper than linear.  Valid 0.08-0.7 m/s (Table 9 range).
     """
-    return friction_force + friction_coefficient * mx.fabs(normal_load) + friction_viscous * mx.fabs(speed)
+    return (
+        friction_force
+        + friction_coefficient * mx.fabs(normal_load)
+        + friction_viscous * mx.fabs(speed)
+    )

@@ -31,13 +31,24 @@ from __future__ import annotations
 from axisopt import mathx as mx
 from axisopt.physics.nut import preloaded_pair_load
 
-__all__ = ["NUT_SET_EXPONENT", "BEARING_SET_EXPONENT", "LOAD_SCALE", "cubic_mean", "directional_means",
-           "preloaded_halves", "set_life", "set_equivalent_load", "row_group_rating"]
+__all__ = [
+    "NUT_SET_EXPONENT",
+    "BEARING_SET_EXPONENT",
+    "LOAD_SCALE",
+    "cubic_mean",
+    "directional_means",
+    "preloaded_halves",
+    "set_life",
+    "set_equivalent_load",
+    "row_group_rating",
+]
 
 NUT_SET_EXPONENT = 10.0 / 9.0  # HIWIN H-BS F 3.12: L = (L1^(-10/9) + L2^(-10/9))^(-9/10)
-BEARING_SET_EXPONENT = 1.1  # NSK super-precision bearings, life of a preloaded pair: (L1^-1.1 + L2^-1.1)^(-1/1.1)
+# NSK super-precision bearings, life of a preloaded pair: (L1^-1.1 + L2^-1.1)^(-1/1.1)
+BEARING_SET_EXPONENT = 1.1
 LOAD_SCALE = 1000.0  # [N]: cubic means are taken on F / LOAD_SCALE (see cubic_mean)
-ROW_EXPONENT = 0.7  # dynamic rating of i like rows loaded together: C_i = i^0.7 C_1 (NSK 1.62/2.16, IBC eq. 2.4)
+# dynamic rating of i like rows loaded together: C_i = i^0.7 C_1 (NSK 1.62/2.16, IBC eq. 2.4)
+ROW_EXPONENT = 0.7
 
 
 def cubic_mean(loads, travels, scale=LOAD_SCALE):

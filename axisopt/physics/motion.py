@@ -28,8 +28,10 @@ class Segment:
     acceleration: float = 0.0  # [m/s^2] (move)
     jerk: float | None = None  # [m/s^3] (move); None: trapezoidal
     duration: float = 0.0  # [s] (dwell)
-    force: float = 0.0  # external axial force opposing the motion [N] (a dwell: held against gravity's side)
-    moving_mass: float | None = None  # table + workpiece during the entry [kg]; None: the axis's moving_mass
+    # external axial force opposing the motion [N] (a dwell: held against gravity's side)
+    force: float = 0.0
+    # table + workpiece during the entry [kg]; None: the axis's moving_mass
+    moving_mass: float | None = None
 
 
 @dataclass(frozen=True)
@@ -42,8 +44,10 @@ class Phase:
     direction: float  # +1, -1, or 0 (standstill)
     force: float  # external axial force opposing the motion [N]
     speed: float  # largest |speed| in the phase [m/s]
-    v0: float = 0.0  # table speed at the start [m/s], signed (the speed over the phase: v0 + integral of a)
-    moving_mass: float | None = None  # table + workpiece in the phase [kg]; None: the axis's moving_mass
+    # table speed at the start [m/s], signed (the speed over the phase: v0 + integral of a)
+    v0: float = 0.0
+    # table + workpiece in the phase [kg]; None: the axis's moving_mass
+    moving_mass: float | None = None
 
     def speed_at(self, t):
         """Signed table speed [m/s] at time ``t`` into the phase (acceleration linear in t)."""
@@ -54,7 +58,8 @@ def ramp(speed: float, acceleration: float, jerk: float | None) -> tuple[list, f
     """Acceleration pieces [(duration, a0, a1)] taking the table from rest to ``speed``, and the time and
     distance this takes.  With jerk: a jerk-limited (S-curve) ramp, which reaches the full acceleration only
     when ``speed >= acceleration**2 / jerk``."""
-    if speed <= 0.0 or acceleration <= 0.0:  # no acceleration given: speed changes count as instantaneous
+    # no acceleration given: speed changes count as instantaneous
+    if speed <= 0.0 or acceleration <= 0.0:
         return [], 0.0, 0.0
     if jerk is None or not math.isfinite(jerk):
         t = speed / acceleration
@@ -62,7 +67,9 @@ def ramp(speed: float, acceleration: float, jerk: float | None) -> tuple[list, f
     a_peak = min(acceleration, math.sqrt(speed * jerk))
     tj = a_peak / jerk
     tc = speed / a_peak - tj  # at constant acceleration
-    pieces = [(tj, 0.0, a_peak)] + ([(tc, a_peak, a_peak)] if tc > 0.0 else []) + [(tj, a_peak, 0.0)]
+    pieces = (
+        [(tj, 0.0, a_peak)] + ([(tc, a_peak, a_peak)] if tc > 0.0 else []) + [(tj, a_peak, 0.0)]
+    )
     t = 2.0 * tj + max(tc, 0.0)
     return pieces, t, 0.5 * speed * t  # symmetric S-ramp: mean speed is half the final speed
 
@@ -77,7 +84,8 @@ def move_phases(seg: Segment) -> list[Phase]:
     pieces, t_ramp, d_ramp = ramp(v, seg.acceleration, seg.jerk)
     if v <= 0.0:
         return []
-    if 2.0 * d_ramp > dist:  # never reaches the speed: the largest speed whose two ramps fit the distance
+    # never reaches the speed: the largest speed whose two ramps fit the distance
+    if 2.0 * d_ramp > dist:
         lo, hi = 0.0, v
         for _ in range(80):
             mid = 0.5 * (lo + hi)
@@ -119,8 +127,11 @@ class Phases(tuple):
         return obj
 
     def __eq__(self, other):
-        return (tuple.__eq__(self, other) and getattr(other, "heat", False) == self.heat
-                and getattr(other, "given", False) == self.given)
+        return (
+            tuple.__eq__(self, other)
+            and getattr(other, "heat", False) == self.heat
+            and getattr(other, "given", False) == self.given
+        )
 
     def __ne__(self, other):
         return not self.__eq__(other)
@@ -144,7 +155,9 @@ def cycle_phases(segments) -> tuple[Phase, ...]:
     return tuple(out)
 
 
-def rapid_cycle(stroke: float, speed: float, acceleration: float, jerk: float | None) -> tuple[Segment, ...]:
+def rapid_cycle(
+    stroke: float, speed: float, acceleration: float, jerk: float | None
+) -> tuple[Segment, ...]:
     """The default cycle when none is given: a rapid move over the whole stroke and back, without dwell
     (continuous reversing: a conservative duty for the RMS torque)."""
     mv = dict(speed=speed, acceleration=acceleration, jerk=jerk)
@@ -171,5 +184,7 @@ def mean_speed(phases) -> float:
 
 def phase_speeds(phases) -> list[tuple[float, float]]:
     """Table speed magnitude at the start and end of each phase [m/s] (for torque-speed plots)."""
-    return [(abs(ph.v0), abs(ph.speed_at(ph.duration))) if ph.duration > 0 else (abs(ph.v0), abs(ph.v0))
-            for ph in phases]
+    return [
+        (abs(ph.v0), abs(ph.speed_at(ph.duration))) if ph.duration > 0 else (abs(ph.v0), abs(ph.v0))
+        for ph in phases
+    ]

@@ -6,10 +6,20 @@ from axisopt import mathx as mx
 from axisopt.physics.screw import E_STEEL
 
 __all__ = [
-    "POISSON_STEEL", "nut_stiffness_catalog", "hertz_point_deflection", "nut_axial_deflection_hertz",
-    "nut_stiffness_hertz", "lift_off_force", "double_nut_stiffness_under_load", "nut_preload_drag_torque",
-    "preloaded_pair_load", "double_nut_shift", "PRELOAD_CEILING", "preload_ceiling",
-    "MOUNTING_SHARE", "bracket_stiffness_default",
+    "POISSON_STEEL",
+    "nut_stiffness_catalog",
+    "hertz_point_deflection",
+    "nut_axial_deflection_hertz",
+    "nut_stiffness_hertz",
+    "lift_off_force",
+    "double_nut_stiffness_under_load",
+    "nut_preload_drag_torque",
+    "preloaded_pair_load",
+    "double_nut_shift",
+    "PRELOAD_CEILING",
+    "preload_ceiling",
+    "MOUNTING_SHARE",
+    "bracket_stiffness_default",
 ]
 
 POISSON_STEEL = 0.3
@@ -58,9 +68,18 @@ def hertz_point_deflection(load, radius_x, radius_y, youngs_modulus=E_STEEL, poi
     return ell_f * mx.cbrt(9.0 / (2.0 * ell_e * r_eq) * (load / (mx.pi * kappa * e_prime)) ** 2)
 
 
-def nut_axial_deflection_hertz(axial_load, n_balls, ball_diameter, pitch_diameter, contact_angle, lead_angle,
-                               conformity_nut=0.55, conformity_screw=0.55,
-                               youngs_modulus=E_STEEL, poisson=POISSON_STEEL):
+def nut_axial_deflection_hertz(
+    axial_load,
+    n_balls,
+    ball_diameter,
+    pitch_diameter,
+    contact_angle,
+    lead_angle,
+    conformity_nut=0.55,
+    conformity_screw=0.55,
+    youngs_modulus=E_STEEL,
+    poisson=POISSON_STEEL,
+):
     r"""Axial deflection of nut against screw from the per-ball Hertz deformations.
 
     .. math:: P = F_a / (z \sin\beta \cos\phi)                                  (seed eq. 17)
@@ -86,9 +105,18 @@ def nut_axial_deflection_hertz(axial_load, n_balls, ball_diameter, pitch_diamete
     return (d1 + d2) / (sb * cp)
 
 
-def nut_stiffness_hertz(axial_load, n_balls, ball_diameter, pitch_diameter, contact_angle, lead_angle,
-                        conformity_nut=0.55, conformity_screw=0.55,
-                        youngs_modulus=E_STEEL, poisson=POISSON_STEEL):
+def nut_stiffness_hertz(
+    axial_load,
+    n_balls,
+    ball_diameter,
+    pitch_diameter,
+    contact_angle,
+    lead_angle,
+    conformity_nut=0.55,
+    conformity_screw=0.55,
+    youngs_modulus=E_STEEL,
+    poisson=POISSON_STEEL,
+):
     r"""Tangent axial stiffness of one loaded ball row set (one nut half) from Hertz contact.
 
     .. math:: k_N = dF_a/d\delta_N = \tfrac{3}{2} F_a / \delta_N
@@ -99,15 +127,29 @@ def nut_stiffness_hertz(axial_load, n_balls, ball_diameter, pitch_diameter, cont
     Returns k_N [N/m]; proportional to F_p^(1/3) z^(2/3) as seed eq. 18.  A preloaded double nut at zero
     external load has twice this value (see double_nut_stiffness_under_load).
     """
-    delta = nut_axial_deflection_hertz(axial_load, n_balls, ball_diameter, pitch_diameter, contact_angle,
-                                       lead_angle, conformity_nut, conformity_screw, youngs_modulus, poisson)
+    delta = nut_axial_deflection_hertz(
+        axial_load,
+        n_balls,
+        ball_diameter,
+        pitch_diameter,
+        contact_angle,
+        lead_angle,
+        conformity_nut,
+        conformity_screw,
+        youngs_modulus,
+        poisson,
+    )
     return 1.5 * axial_load / delta
 
 
-# The largest preload of a preloaded ball nut as a fraction of its dynamic load rating Ca: THK Ball Screw General
-# Catalog, "Preload" (A-687): "an excessive preload adversely affects the service life and heat generation. The
-# maximum preload should be set at 10% of the basic dynamic load rating (Ca)"; HIWIN H-BS sec. 3.6.2 (10 % for
-# double nuts); Steinmeyer, "Nut rigidity": 10 % for 2-point contact, about 8 % for 4-point contact nuts.
+# The largest preload of a preloaded ball nut as a fraction of its dynamic load rating Ca: THK Ball
+# Screw General
+# Catalog, "Preload" (A-687): "an excessive preload adversely affects the service life and heat
+# generation. The
+# maximum preload should be set at 10% of the basic dynamic load rating (Ca)"; HIWIN H-BS sec. 3.6.2
+# (10 % for
+# double nuts); Steinmeyer, "Nut rigidity": 10 % for 2-point contact, about 8 % for 4-point contact
+# nuts.
 PRELOAD_CEILING = 0.10
 
 
@@ -195,11 +237,16 @@ def nut_preload_drag_torque(preload, lead, nominal_diameter, coefficient=0.05):
     return coefficient / mx.sqrt(tan_beta) * preload * lead / (2.0 * mx.pi)
 
 
-# THK General Catalog A-709 and the nut tables' note: the nut rigidity "does not include the rigidity of the
-# components related to mounting the ball screw nut. Therefore, it is normally appropriate to regard roughly
-# 80% of the value in the table as the actual value" (the 0.8 of :func:`nut_stiffness_catalog`).  For the nut
-# bracket itself (THK's K_H, A-708: "set the rigidity as high as possible") no vendor or textbook number was
-# found; the default takes THK's allowance once more: the bracket costs the nut another 20 %, i.e. it is
+# THK General Catalog A-709 and the nut tables' note: the nut rigidity "does not include the
+# rigidity of the
+# components related to mounting the ball screw nut. Therefore, it is normally appropriate to regard
+# roughly
+# 80% of the value in the table as the actual value" (the 0.8 of :func:`nut_stiffness_catalog`).
+# For the nut
+# bracket itself (THK's K_H, A-708: "set the rigidity as high as possible") no vendor or textbook
+# number was
+# found; the default takes THK's allowance once more: the bracket costs the nut another 20 %, i.e.
+# it is
 # 0.8 / 0.2 = 4 x the nut's rigidity.  An estimate.
 MOUNTING_SHARE = 0.8
 

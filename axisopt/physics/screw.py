@@ -7,11 +7,26 @@ from types import MappingProxyType
 from axisopt import mathx as mx
 
 __all__ = [
-    "E_STEEL", "G_STEEL", "RHO_STEEL", "MOUNTINGS", "CATALOG_STIFFNESS_FACTOR", "choose",
-    "series_stiffness", "parallel_stiffness", "screw_stiffness", "screw_stiffness_catalog",
-    "screw_axial_rigidity", "two_path_stiffness", "screw_bearing_stiffness",
-    "screw_torsional_stiffness", "torsion_axial_stiffness", "screw_rotary_inertia", "screw_mass", "lead_angle",
-    "SAG_FACTORS", "screw_sag",
+    "E_STEEL",
+    "G_STEEL",
+    "RHO_STEEL",
+    "MOUNTINGS",
+    "CATALOG_STIFFNESS_FACTOR",
+    "choose",
+    "series_stiffness",
+    "parallel_stiffness",
+    "screw_stiffness",
+    "screw_stiffness_catalog",
+    "screw_axial_rigidity",
+    "two_path_stiffness",
+    "screw_bearing_stiffness",
+    "screw_torsional_stiffness",
+    "torsion_axial_stiffness",
+    "screw_rotary_inertia",
+    "screw_mass",
+    "lead_angle",
+    "SAG_FACTORS",
+    "screw_sag",
 ]
 
 E_STEEL = 206e9  # [Pa] THK catalog A15-30 (2.06e5 N/mm^2)
@@ -23,8 +38,10 @@ MIN_SEGMENT_PRODUCT = 1e-12
 
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed", "supported-supported")
 
-# k = c * E * A / L, catalog forms of seed eq. 7-8 (c = 4: fixed-fixed, nut at mid-span; c = 1: one fixed end
-# carries the load over L).  Supported ends carry no axial load, so fixed-supported behaves as fixed-free.
+# k = c * E * A / L, catalog forms of seed eq. 7-8 (c = 4: fixed-fixed, nut at mid-span; c = 1: one
+# fixed end
+# carries the load over L).  Supported ends carry no axial load, so fixed-supported behaves as
+# fixed-free.
 # Supported-supported has no fixed bearing; by convention one support takes the thrust, c = 1.
 CATALOG_STIFFNESS_FACTOR = MappingProxyType(
     {"fixed-free": 1.0, "fixed-supported": 1.0, "fixed-fixed": 4.0, "supported-supported": 1.0}
@@ -121,7 +138,9 @@ def two_path_stiffness(k_near, k_far, axial_rigidity, x, span):
     return near + far
 
 
-def screw_bearing_stiffness(root_diameter, x, span, mounting, k_bearing_set, youngs_modulus=E_STEEL):
+def screw_bearing_stiffness(
+    root_diameter, x, span, mounting, k_bearing_set, youngs_modulus=E_STEEL
+):
     r"""Screw shaft and support bearings together, as the nut sees them, by mounting.
 
     fixed-fixed: :func:`two_path_stiffness` with a bearing set of stiffness ``k_bearing_set`` at each end;
@@ -203,15 +222,27 @@ def lead_angle(lead, nominal_diameter):
     return mx.atan(lead / (mx.pi * nominal_diameter))
 
 
-# k of the largest deflection q L^4 / (k E I) of a uniform beam under its own weight, by end conditions: AISC Steel
-# Construction Manual, Table 3-23 "Shears, moments and deflections", case 1 (simple beam, 5/384), case 12 (fixed at
-# one end, supported at the other, 1/185), case 15 (fixed at both ends, 1/384) and case 22 (cantilever, 1/8); the
-# same figures as Roark's Formulas for Stress and Strain, Table 8.1 case 2 with the load over the whole span.
-SAG_FACTORS = MappingProxyType({"fixed-free": 8.0, "fixed-supported": 185.0, "fixed-fixed": 384.0,
-                                "supported-supported": 384.0 / 5.0})
+# k of the largest deflection q L^4 / (k E I) of a uniform beam under its own weight, by end
+# conditions: AISC Steel
+# Construction Manual, Table 3-23 "Shears, moments and deflections", case 1 (simple beam, 5/384),
+# case 12 (fixed at
+# one end, supported at the other, 1/185), case 15 (fixed at both ends, 1/384) and case 22
+# (cantilever, 1/8); the
+# same figures as Roark's Formulas for Stress and Strain, Table 8.1 case 2 with the load over the
+# whole span.
+SAG_FACTORS = MappingProxyType(
+    {
+        "fixed-free": 8.0,
+        "fixed-supported": 185.0,
+        "fixed-fixed": 384.0,
+        "supported-supported": 384.0 / 5.0,
+    }
+)
 
 
-def screw_sag(mass_per_length, root_diameter, span, mounting, youngs_modulus=E_STEEL, gravity=9.80665):
+def screw_sag(
+    mass_per_length, root_diameter, span, mounting, youngs_modulus=E_STEEL, gravity=9.80665
+):
     r"""Largest sag of a horizontal screw under its own weight, the shaft as a uniform beam between its ends.
 
     .. math:: \delta = q L^4 / (k E I),\quad q = m' g,\quad I = \pi d_r^4 / 64

@@ -7,10 +7,20 @@ from axisopt import mathx as mx
 from axisopt.physics.screw import E_STEEL, screw_axial_rigidity
 
 __all__ = [
-    "ALPHA_STEEL", "K_STEEL", "K_CAST_IRON", "thermal_growth", "restrained_thermal_force",
-    "thermal_force_elastic_ends", "thermal_displacement", "rotating_shaft_heat_transfer", "friction_temperature_rise",
-    "free_convection_temperature_rise", "horizontal_cylinder_free_film", "mixed_convection_film",
-    "shaft_end_fraction", "screw_heat_network",
+    "ALPHA_STEEL",
+    "K_STEEL",
+    "K_CAST_IRON",
+    "thermal_growth",
+    "restrained_thermal_force",
+    "thermal_force_elastic_ends",
+    "thermal_displacement",
+    "rotating_shaft_heat_transfer",
+    "friction_temperature_rise",
+    "free_convection_temperature_rise",
+    "horizontal_cylinder_free_film",
+    "mixed_convection_film",
+    "shaft_end_fraction",
+    "screw_heat_network",
 ]
 
 ALPHA_STEEL = 11.6e-6  # [1/K] HIWIN BS-08-2-EN-1704-K F 3.36 (THK A-715 uses 12e-6)
@@ -27,7 +37,9 @@ def thermal_growth(length, temperature_rise, alpha=ALPHA_STEEL):
     return alpha * temperature_rise * length
 
 
-def restrained_thermal_force(root_diameter, temperature_rise, alpha=ALPHA_STEEL, youngs_modulus=E_STEEL):
+def restrained_thermal_force(
+    root_diameter, temperature_rise, alpha=ALPHA_STEEL, youngs_modulus=E_STEEL
+):
     r"""Axial force that holds a heated screw at its length between rigid ends; the pretension that
     compensates a temperature rise.
 
@@ -40,8 +52,9 @@ def restrained_thermal_force(root_diameter, temperature_rise, alpha=ALPHA_STEEL,
     return screw_axial_rigidity(root_diameter, youngs_modulus) * alpha * temperature_rise
 
 
-def thermal_force_elastic_ends(root_diameter, span, temperature_rise, k_bearing_set, alpha=ALPHA_STEEL,
-                               youngs_modulus=E_STEEL):
+def thermal_force_elastic_ends(
+    root_diameter, span, temperature_rise, k_bearing_set, alpha=ALPHA_STEEL, youngs_modulus=E_STEEL
+):
     r"""Change of the axial force in a screw held at both ends by elastic bearing sets when it heats up.
 
     .. math:: \Delta F = \alpha \Delta T L / (L/EA + 2/k_B)
@@ -55,8 +68,16 @@ def thermal_force_elastic_ends(root_diameter, span, temperature_rise, k_bearing_
     return alpha * temperature_rise * span / (span / ea + 2.0 / k_bearing_set)
 
 
-def thermal_displacement(x, span, root_diameter, temperature_rise, k_bearing_set, both_ends_fixed,
-                         alpha=ALPHA_STEEL, youngs_modulus=E_STEEL):
+def thermal_displacement(
+    x,
+    span,
+    root_diameter,
+    temperature_rise,
+    k_bearing_set,
+    both_ends_fixed,
+    alpha=ALPHA_STEEL,
+    youngs_modulus=E_STEEL,
+):
     r"""Displacement of the nut position along the screw caused by a uniform temperature rise.
 
     One fixed end (fixed-free, fixed-supported): the shaft grows freely away from the fixed bearing,
@@ -73,12 +94,15 @@ def thermal_displacement(x, span, root_diameter, temperature_rise, k_bearing_set
     """
     ea = screw_axial_rigidity(root_diameter, youngs_modulus)
     free = alpha * temperature_rise * x
-    df = thermal_force_elastic_ends(root_diameter, span, temperature_rise, k_bearing_set, alpha, youngs_modulus)
+    df = thermal_force_elastic_ends(
+        root_diameter, span, temperature_rise, k_bearing_set, alpha, youngs_modulus
+    )
     held = -df / k_bearing_set + (alpha * temperature_rise - df / ea) * x
     return both_ends_fixed * held + (1.0 - both_ends_fixed) * free
 
 
-# Jungnickel, G. (2010) "Simulation des thermischen Verhaltens von Werkzeugmaschinen", TU Dresden: film
+# Jungnickel, G. (2010) "Simulation des thermischen Verhaltens von Werkzeugmaschinen", TU Dresden:
+# film
 # coefficient of a cylinder rotating in still air, alpha = 3.75 omega^0.7 r^0.4 (as implemented in
 # steffenschroe/Thermca, thermca/lib/forced_conv.py, rot_cyl_in_air, cited there as [Jun10]).
 JUNGNICKEL_CYLINDER = (3.75, 0.7, 0.4)
@@ -109,13 +133,17 @@ def friction_temperature_rise(friction_power, heat_transfer, area):
     return friction_power / (heat_transfer * area)
 
 
-# Holman, J.P., Heat Transfer, Table 7-2 "Simplified equations for free convection from various surfaces to air
-# at atmospheric pressure": horizontal cylinder, laminar (1e4 < Gr Pr < 1e9): h = 1.32 (dT / d)^(1/4) W/(m^2 K),
+# Holman, J.P., Heat Transfer, Table 7-2 "Simplified equations for free convection from various
+# surfaces to air
+# at atmospheric pressure": horizontal cylinder, laminar (1e4 < Gr Pr < 1e9): h = 1.32 (dT /
+# d)^(1/4) W/(m^2 K),
 # dT [K], d [m].
 HOLMAN_HORIZONTAL_CYLINDER = 1.32
 
 
-def free_convection_temperature_rise(friction_power, diameter, area, coefficient=HOLMAN_HORIZONTAL_CYLINDER):
+def free_convection_temperature_rise(
+    friction_power, diameter, area, coefficient=HOLMAN_HORIZONTAL_CYLINDER
+):
     r"""Temperature rise of a horizontal cylinder losing ``friction_power`` by free convection to still air alone
     (Holman Table 7-2, laminar: :math:`h = 1.32 (\Delta T/d)^{1/4}`), solved for the rise:
 
@@ -129,14 +157,20 @@ def free_convection_temperature_rise(friction_power, diameter, area, coefficient
     return (friction_power * diameter**0.25 / (coefficient * area)) ** 0.8
 
 
-# ---- the heat balance as a lumped thermal network ------------------------------------------------------------
-# Jungnickel, G. (2010) "Simulation des thermischen Verhaltens von Werkzeugmaschinen. Modellierung und
-# Parametrierung", TU Dresden: lumped-parameter thermal models of machine-tool components, as implemented in
-# steffenschroe/Thermca (thermca/lib/*.py, cited there as [Jun10]): the rotating-shaft film (above), free convection
-# on a horizontal cylinder (free_conv.horiz_cyl), mixed free and forced convection (combd_film.mix_conv), material
+# ---- the heat balance as a lumped thermal network
+# ------------------------------------------------------------
+# Jungnickel, G. (2010) "Simulation des thermischen Verhaltens von Werkzeugmaschinen. Modellierung
+# und
+# Parametrierung", TU Dresden: lumped-parameter thermal models of machine-tool components, as
+# implemented in
+# steffenschroe/Thermca (thermca/lib/*.py, cited there as [Jun10]): the rotating-shaft film (above),
+# free convection
+# on a horizontal cylinder (free_conv.horiz_cyl), mixed free and forced convection
+# (combd_film.mix_conv), material
 # conductivities (solids.carbon_steel C45 48 W/(m K), solids.cast_iron_gjl_300 47.5 W/(m K)).
 K_STEEL = 48.0  # [W/(m K)] screw shaft: C45 (1.0503), [Jun10] via Thermca solids.carbon_steel
-K_CAST_IRON = 47.5  # [W/(m K)] nut bracket, table: EN-GJL-300, [Jun10] via Thermca solids.cast_iron_gjl_300
+# [W/(m K)] nut bracket, table: EN-GJL-300, [Jun10] via Thermca solids.cast_iron_gjl_300
+K_CAST_IRON = 47.5
 
 
 def horizontal_cylinder_free_film(temperature_rise, diameter):
@@ -163,7 +197,9 @@ def mixed_convection_film(forced, free, exponent=4.0):
     return (forced**exponent + free**exponent) ** (1.0 / exponent)
 
 
-def shaft_end_fraction(film, nominal_diameter, root_diameter, half_length, end_conductance, conductivity=K_STEEL):
+def shaft_end_fraction(
+    film, nominal_diameter, root_diameter, half_length, end_conductance, conductivity=K_STEEL
+):
     r"""How strongly the shaft ends pull the mean temperature of a heated shaft towards theirs: the shaft as a fin
     (conduction along it, convection from its surface) between two ends held through ``end_conductance``.
 
@@ -188,8 +224,19 @@ def shaft_end_fraction(film, nominal_diameter, root_diameter, half_length, end_c
     return end_conductance * t / (x * (kam * t + end_conductance))
 
 
-def screw_heat_network(nut_power, bearing_power, film, nominal_diameter, root_diameter, span, ends,
-                       nut_conductance, end_conductance, housing_conductance, conductivity=K_STEEL):
+def screw_heat_network(
+    nut_power,
+    bearing_power,
+    film,
+    nominal_diameter,
+    root_diameter,
+    span,
+    ends,
+    nut_conductance,
+    end_conductance,
+    housing_conductance,
+    conductivity=K_STEEL,
+):
     r"""Steady mean temperature rise of the screw shaft of a ball-screw drive: a lumped thermal network after
     Jungnickel (2010) (heat sources at the nut and the support bearings, a film on the rotating shaft,
     conduction through the joints to the machine's structure, which stays at ambient).
@@ -218,7 +265,9 @@ def screw_heat_network(nut_power, bearing_power, film, nominal_diameter, root_di
     its growth reads).  It rises linearly with P_n (so with the nut preload) and with P_b.  Radiation is left
     out (an upper estimate).
     """
-    f = shaft_end_fraction(film, nominal_diameter, root_diameter, span / ends, end_conductance, conductivity)
+    f = shaft_end_fraction(
+        film, nominal_diameter, root_diameter, span / ends, end_conductance, conductivity
+    )
     r_s = (1.0 - f) / (film * mx.pi * nominal_diameter * span)
     theta_end = f * bearing_power / (ends * housing_conductance)
     q_shaft = (nut_power - nut_conductance * theta_end) / (1.0 + nut_conductance * r_s)

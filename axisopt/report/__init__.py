@@ -14,5 +14,18 @@ from .evaluation import drive_dict, evaluation_dict, evaluation_table
 from .plots import duty_points, plot_profiles
 from .text import RPM
 
-__all__ = ["evaluation_dict", "evaluation_table", "drive_dict", "drive_lines", "plot_profiles", "duty_points",
-           "atomic_file", "make_output_dir", "save_figure", "write_text_atomic", "PLOT_FORMATS", "N_PER_UM", "RPM"]
+__all__ = [
+    "evaluation_dict",
+    "evaluation_table",
+    "drive_dict",
+    "drive_lines",
+    "plot_profiles",
+    "duty_points",
+    "atomic_file",
+    "make_output_dir",
+    "save_figure",
+    "write_text_atomic",
+    "PLOT_FORMATS",
+    "N_PER_UM",
+    "RPM",
+]

@@ -31,52 +31,96 @@ def budget_rows(ev) -> list:
     """(label, value [m], source) of each row, the total and the repeatability."""
     d, v = ev.design, ev.values
     a = d.axis
-    rise = (f"heat balance at the design's preload {d.preload:.0f} N" if a.rise_from_balance
-            else "the rise used")
+    rise = (
+        f"heat balance at the design's preload {d.preload:.0f} N"
+        if a.rise_from_balance
+        else "the rise used"
+    )
     pitch, yaw = a.guide_pitch / ARCSEC, a.guide_yaw / ARCSEC
     red = reduction_lost_motion(d)
     if a.feedback == "linear_scale":
         g = SCALE_GRADES[a.scale_grade]
-        lead_row = (f"linear scale {a.scale_grade}", float(v["lead_error"]),
-                    f"{g.source} per m, at least 1 m")
-        thermal_row = ("thermal growth at the nut (outside the loop)", float(v["thermal_error"]),
-                       "the scale measures the table")
+        lead_row = (
+            f"linear scale {a.scale_grade}",
+            float(v["lead_error"]),
+            f"{g.source} per m, at least 1 m",
+        )
+        thermal_row = (
+            "thermal growth at the nut (outside the loop)",
+            float(v["thermal_error"]),
+            "the scale measures the table",
+        )
     else:
         if a.pitch_compensation:
-            lead_row = (f"lead error, grade {d.grade}, compensated", float(v["lead_error"]),
-                        "what compensation leaves: v_u, THK A-677")
+            lead_row = (
+                f"lead error, grade {d.grade}, compensated",
+                float(v["lead_error"]),
+                "what compensation leaves: v_u, THK A-677",
+            )
         else:
-            lead_row = (f"lead error, grade {d.grade}", float(v["lead_error"]), lead_source(d.grade, a.stroke))
-        # the design's own growth (model.chain at its preload), not the budget's bound at the nut's top preload
+            lead_row = (
+                f"lead error, grade {d.grade}",
+                float(v["lead_error"]),
+                lead_source(d.grade, a.stroke),
+            )
+        # the design's own growth (model.chain at its preload), not the budget's bound at the nut's
+        # top preload
         thermal_row = ("thermal drift at the nut", float(v["thermal_growth"]), f"{rise}; THK A-715")
-    noise = ("scale head" if a.feedback == "linear_scale" else "encoder: negligible")
+    noise = "scale head" if a.feedback == "linear_scale" else "encoder: negligible"
     rows = [
         lead_row,
         thermal_row,
-        (f"deflection at the tool under {a.axial_load:.0f} N", float(v["elastic_error"]),
-         "softest point, chain + rocking; THK A-713"),
-        (f"Abbe: pitch {pitch:.3g}\" x {a.tool_height_eff * 1e3:.0f} mm, yaw {yaw:.3g}\" x "
-         f"{a.tool_offset * 1e3:.0f} mm", float(v["abbe_error"]), "THK A-716 eq. 39"),
+        (
+            f"deflection at the tool under {a.axial_load:.0f} N",
+            float(v["elastic_error"]),
+            "softest point, chain + rocking; THK A-713",
+        ),
+        (
+            f'Abbe: pitch {pitch:.3g}" x {a.tool_height_eff * 1e3:.0f} mm, yaw {yaw:.3g}" x '
+            f"{a.tool_offset * 1e3:.0f} mm",
+            float(v["abbe_error"]),
+            "THK A-716 eq. 39",
+        ),
         ("lost motion, nut play", float(v["lost_motion"]) - red, "0: preloaded nut; THK A-712"),
-        *([(f"lost motion, reduction {d.reduction['id']}", red,
-            f"backlash {float(d.reduction['backlash']) * 10800 / math.pi:g} arcmin x lead / 2 pi")]
-          if d.reduction is not None else []),
+        *(
+            [
+                (
+                    f"lost motion, reduction {d.reduction['id']}",
+                    red,
+                    f"backlash {float(d.reduction['backlash']) * 10800 / math.pi:g} arcmin x lead / 2 pi",
+                )
+            ]
+            if d.reduction is not None
+            else []
+        ),
     ]
-    rows.append(("total, arithmetic worst case", sum(r[1] for r in rows), "every row at its worst at once"))
+    rows.append(
+        ("total, arithmetic worst case", sum(r[1] for r in rows), "every row at its worst at once")
+    )
     bound = float(v["positioning_error"])
     if not math.isclose(bound, rows[-1][1], rel_tol=1e-9, abs_tol=1e-12):
-        # limits.max_positioning_error holds the model's total, whose thermal row is at the nut's top preload
+        # limits.max_positioning_error holds the model's total, whose thermal row is at the nut's
+        # top preload
         # (model.accuracy: the search's one-sided preload solve rests on it)
-        rows.append(("total the limit holds (thermal at top preload)", bound,
-                     "model.accuracy: conservative bound"))
-    rows.append(("repeatability (ISO 230-2)", float(v["repeatability"]), f"reversal + noise, {noise}"))
+        rows.append(
+            (
+                "total the limit holds (thermal at top preload)",
+                bound,
+                "model.accuracy: conservative bound",
+            )
+        )
+    rows.append(
+        ("repeatability (ISO 230-2)", float(v["repeatability"]), f"reversal + noise, {noise}")
+    )
     return rows
 
 
 def budget_lines(ev) -> list:
     """The budget as the text lines ``axisopt evaluate`` prints."""
-    lines = [f"positioning error budget over the {ev.design.axis.stroke * 1e3:.0f} mm stroke (um, largest "
-             f"deviation; THK A-712)"]
+    lines = [
+        f"positioning error budget over the {ev.design.axis.stroke * 1e3:.0f} mm stroke (um, largest "
+        f"deviation; THK A-712)"
+    ]
     for label, value, source in budget_rows(ev):
         lines.append(f"  {label:<44}{value * 1e6:>8.1f}  ({source})")
     return lines

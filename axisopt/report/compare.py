@@ -60,26 +60,45 @@ class Comparison:
             if e is None:
                 cells.append(f"{c.label}: {c.solve['status']}")
                 continue
-            cells.append(f"{c.label}: {fmt(e.minimum('k_total')[0] / N_PER_UM, 'N/um')}, "
-                         f"{fmt(e.minimum('f1')[0], 'Hz')}, {fmt(e['cost'], 'EUR')}")
+            cells.append(
+                f"{c.label}: {fmt(e.minimum('k_total')[0] / N_PER_UM, 'N/um')}, "
+                f"{fmt(e.minimum('f1')[0], 'Hz')}, {fmt(e['cost'], 'EUR')}"
+            )
         return one_line("Comparison", f"{len(self.items)} designs", {"": " | ".join(cells)})
 
     def _repr_html_(self) -> str:
         col = COLUMN
-        keys = ("label", "kind", "mounting", col["min_stiffness"], "weakest_link", col["min_frequency"],
-                col["drag_torque"], col["total_mass"], col["cost"], "all_checks_pass")
-        return html_table(compare_rows(self.items), f"Comparison of {len(self.items)} designs", columns=keys)
+        keys = (
+            "label",
+            "kind",
+            "mounting",
+            col["min_stiffness"],
+            "weakest_link",
+            col["min_frequency"],
+            col["drag_torque"],
+            col["total_mass"],
+            col["cost"],
+            "all_checks_pass",
+        )
+        return html_table(
+            compare_rows(self.items), f"Comparison of {len(self.items)} designs", columns=keys
+        )
 
 
 TEXT_WIDTH = 100  # the terminal columns the table fits
-COLUMN = {r.field: r.column for r in REPORTED}  # the reported values' columns (search.result.REPORTED)
+# the reported values' columns (search.result.REPORTED)
+COLUMN = {r.field: r.column for r in REPORTED}
 
 
 def component_stiffness(ev: Evaluation) -> dict:
     """Screw, nut and bearing stiffness [N/m] where the total stiffness is lowest."""
     v = ev.values
     i = int(np.argmin(v["k_total"]))
-    return {"screw": float(v["k_screw"][i]), "nut": float(v["k_nut"]), "bearings": float(v["k_bearing"])}
+    return {
+        "screw": float(v["k_screw"][i]),
+        "nut": float(v["k_nut"]),
+        "bearings": float(v["k_bearing"]),
+    }
 
 
 def compare_table(items) -> str:
@@ -94,7 +113,9 @@ def compare_table(items) -> str:
         rows.append((name, list(cells)))
 
     def num(x, nd=1):
-        return "-" if x is None or (isinstance(x, float) and not math.isfinite(x)) else f"{x:,.{nd}f}"
+        return (
+            "-" if x is None or (isinstance(x, float) and not math.isfinite(x)) else f"{x:,.{nd}f}"
+        )
 
     row("", [c.label for c in items])
     row("kind", [c.kind if c.ok else f"{c.kind}: {c.solve['status']}" for c in items])
@@ -107,13 +128,19 @@ def compare_table(items) -> str:
     row("stroke [mm]", each(lambda e: num(e.design.axis.stroke * 1e3, 0)))
     drives = [e for e in evs if e is not None and e.design.motor is not None]
     reds = [e for e in evs if e is not None and e.design.reduction is not None]
-    for slot in MECH_SLOTS + (DRIVE_SLOTS[:2] if drives else ()) + (DRIVE_SLOTS[2:] if reds else ()):
+    for slot in (
+        MECH_SLOTS + (DRIVE_SLOTS[:2] if drives else ()) + (DRIVE_SLOTS[2:] if reds else ())
+    ):
         row(slot, each(lambda e, s=slot: e.design.part_ids().get(s, "-")))
     row("nut preload [N]", each(lambda e: num(e.design.preload, 0)))
     rows.append("")
     rows.append("stiffness [N/um]  (< weakest link)")
     comps = [component_stiffness(e) if e is not None else None for e in evs]
-    for comp, label in (("screw", "  screw (where total is min)"), ("nut", "  nut"), ("bearings", "  bearings")):
+    for comp, label in (
+        ("screw", "  screw (where total is min)"),
+        ("nut", "  nut"),
+        ("bearings", "  bearings"),
+    ):
         cells = []
         for c in comps:
             if c is None:
@@ -133,8 +160,10 @@ def compare_table(items) -> str:
     row("  table on guides", each(lambda e: num(e["f_table"])))
     rows.append("")
     row("drag torque [N.m]", each(lambda e: num(e["drag_torque"], 3)))
-    row("  nut / bearings / guides", each(lambda e: f"{e['drag_nut']:.2f}/{e['drag_bearings']:.2f}/"
-                                                    f"{e['drag_guides']:.2f}"))
+    row(
+        "  nut / bearings / guides",
+        each(lambda e: f"{e['drag_nut']:.2f}/{e['drag_bearings']:.2f}/{e['drag_guides']:.2f}"),
+    )
     row("moving mass [kg]", each(lambda e: num(e["moving_mass"])))
     row("total mass [kg]", each(lambda e: num(e["total_mass"])))
     row("cost [EUR]", each(lambda e: num(e["cost"], 0)))
@@ -143,32 +172,46 @@ def compare_table(items) -> str:
         rows.append("drive (needed / available)")
 
         def motor(fn):
-            return each(lambda e: fn(e, e.design.motor) if e.design.motor is not None else "no motor")
+            return each(
+                lambda e: fn(e, e.design.motor) if e.design.motor is not None else "no motor"
+            )
 
-        def pair(name, digits=".2f"):  # the check's own needed / available values, in its vendor unit
+        # the check's own needed / available values, in its vendor unit
+        def pair(name, digits=".2f"):
             def cell(e, m):
                 rec = CHECK_RECORDS[name]
                 need = float(e.values[f"needed_{name}"]) * rec.factor
                 have = float(e.values[f"available_{name}"]) * rec.factor
                 return f"{need:{digits}} / {have:{'.3g' if digits != ',.0f' else digits}}"
+
             return motor(cell)
 
-        # what the checks compare: the cycle's peak scaled to the motor's zone at its speed, the RMS (or mean
+        # what the checks compare: the cycle's peak scaled to the motor's zone at its speed, the RMS
+        # (or mean
         # thrust) torque against the rule's allowed share of the rated torque
         row("  peak torque (zone-scaled) [N.m]", pair("motor_peak_torque"))
         row("  RMS torque / allowed [N.m]", pair("motor_rated_torque"))
         row("  motor speed [rpm]", pair("motor_speed", ",.0f"))
         row("  inertia ratio load/rotor", pair("inertia_ratio"))
         if any(e.design.axis.orientation == "vertical" for e in drives):
-            row("  holding torque x safety [N.m]", motor(
-                lambda e, m: "-" if e.design.axis.orientation != "vertical" else
-                f"{e['holding_torque'] * e.design.axis.brake_safety:.2f} / "
-                f"{(m['brake_torque'] if math.isfinite(float(m['brake_torque'])) else 0.0):.3g}"))
+            row(
+                "  holding torque x safety [N.m]",
+                motor(
+                    lambda e, m: (
+                        "-"
+                        if e.design.axis.orientation != "vertical"
+                        else f"{e['holding_torque'] * e.design.axis.brake_safety:.2f} / "
+                        f"{(m['brake_torque'] if math.isfinite(float(m['brake_torque'])) else 0.0):.3g}"
+                    )
+                ),
+            )
     rows.append("")
     rows.append("checks: margin (available / needed), >= 1 passes, ! fails")
     # a solved problem's checks judged against its limits.margins (marked *)
-    tables = [{r["check"]: r for r in judged_rows(e, c.margins)} if e is not None else None
-              for c, e in zip(items, evs)]
+    tables = [
+        {r["check"]: r for r in judged_rows(e, c.margins)} if e is not None else None
+        for c, e in zip(items, evs)
+    ]
     for c in CHECKS:
         if not any(t is not None and c in t for t in tables):
             continue
@@ -181,48 +224,81 @@ def compare_table(items) -> str:
             if r["margin"] is None:  # the check does not apply to this design: no values compared
                 return "n/a  "
             m = f"{r['margin']:.2f}"
-            return f"{m} ({fmt_value(r['available'])}/{fmt_value(r['needed'])})" + ("" if "allowed" not in r else
-                                                                                  "*") + ("  " if r["pass"] else " !")
+            return (
+                f"{m} ({fmt_value(r['available'])}/{fmt_value(r['needed'])})"
+                + ("" if "allowed" not in r else "*")
+                + ("  " if r["pass"] else " !")
+            )
+
         row(f"  {CHECK_SHORT[c]}" + (f" [{unit}]" if unit else ""), [cell(t) for t in tables])
-    # the checks that apply, as the rows above judge them (not every margin the model computes: a horizontal
+    # the checks that apply, as the rows above judge them (not every margin the model computes: a
+    # horizontal
     # axis's brake, an unloaded check)
-    row("all checks pass", [("yes" if all(r["pass"] for r in t.values()) else "NO") if t is not None else "-"
-                            for t in tables])
-    notes = [f"{c.label}: {allowed_list(t.values())}" for c, t in zip(items, tables)
-             if t is not None and allowed_list(t.values())]
+    row(
+        "all checks pass",
+        [
+            ("yes" if all(r["pass"] for r in t.values()) else "NO") if t is not None else "-"
+            for t in tables
+        ],
+    )
+    notes = [
+        f"{c.label}: {allowed_list(t.values())}"
+        for c, t in zip(items, tables)
+        if t is not None and allowed_list(t.values())
+    ]
     if notes:
         rows.append("* against the problem's least margin (limits.margins)")
         for n in notes:
             rows.extend(textwrap.wrap(n, TEXT_WIDTH, initial_indent="  ", subsequent_indent="    "))
-    # the columns as wide as their widest cell (a check's 'margin (available/needed)' included), up to 32: two
-    # designs side by side at least; a wider cell is cut with a mark and given in full under the table
-    longest = max([len(str(c).rstrip()) for r in rows if not isinstance(r, str) for c in r[1]] + [0])
+    # the columns as wide as their widest cell (a check's 'margin (available/needed)' included), up
+    # to 32: two
+    # designs side by side at least; a wider cell is cut with a mark and given in full under the
+    # table
+    longest = max(
+        [len(str(c).rstrip()) for r in rows if not isinstance(r, str) for c in r[1]] + [0]
+    )
     width = max(width, min(32, longest + 3))
     per = max(1, (TEXT_WIDTH - w0) // width)  # designs side by side
     cut: list = []
 
-    def fit(text) -> str:  # a cell wider than its column: cut with a '~' mark, given in full under the table
+    # a cell wider than its column: cut with a '~' mark, given in full under the table
+    def fit(text) -> str:
         text = str(text)
         if len(text.rstrip()) <= width - 1:
             return text if len(text) <= width - 1 else text.rstrip()
         if text not in cut:
             cut.append(text)
-        return text[:width - 2] + "~"
+        return text[: width - 2] + "~"
 
     blocks = []
     for j in range(0, len(items), per):
-        lines = [r if isinstance(r, str) else
-                 f"{r[0]:<{w0}}" + "".join(f"{fit(c):>{width}}" for c in r[1][j:j + per]) for r in rows]
+        lines = [
+            r
+            if isinstance(r, str)
+            else f"{r[0]:<{w0}}" + "".join(f"{fit(c):>{width}}" for c in r[1][j : j + per])
+            for r in rows
+        ]
         blocks.append("\n".join(ln.rstrip() for ln in lines))
     if cut:
-        blocks.append("\n".join(textwrap.wrap("~ cut to fit the column; in full: " + ", ".join(cut), TEXT_WIDTH,
-                                               subsequent_indent="    ")))
+        blocks.append(
+            "\n".join(
+                textwrap.wrap(
+                    "~ cut to fit the column; in full: " + ", ".join(cut),
+                    TEXT_WIDTH,
+                    subsequent_indent="    ",
+                )
+            )
+        )
     solved = [c for c in items if c.solve is not None]
     if solved:
         tail = ["solved problems"]
         for c in solved:
             s = c.solve
-            val = "-" if s["objective_value"] is None else f"{s['objective_value']:,.3f} {s['objective_unit']}"
+            val = (
+                "-"
+                if s["objective_value"] is None
+                else f"{s['objective_value']:,.3f} {s['objective_unit']}"
+            )
             tail.append(f"  {c.label}: {s['status']} ({s['method']}), {s['objective']} = {val}")
         blocks.append("\n".join(tail))
     return "\n\n".join(blocks)
@@ -247,26 +323,38 @@ def compare_rows(items) -> list:
     """Flat rows (one per design) for the CSV."""
     rows = []
     for c in items:
-        r = {"label": c.label, "source": c.source, "kind": c.kind,
-             "status": c.solve["status"] if c.solve else "design"}
+        r = {
+            "label": c.label,
+            "source": c.source,
+            "kind": c.kind,
+            "status": c.solve["status"] if c.solve else "design",
+        }
         e = c.evaluation
         if e is not None:
             d = evaluation_dict(e)
             comp = component_stiffness(e)
-            r.update({"mounting": d["mounting"], **d["parts"], "nut_preload [N]": d["nut_preload_N"],
-                      "stroke [mm]": e.design.axis.stroke * 1e3,
-                      "screw_stiffness_at_min [N/um]": comp["screw"] / N_PER_UM,
-                      "nut_stiffness [N/um]": comp["nut"] / N_PER_UM,
-                      "bearing_stiffness [N/um]": comp["bearings"] / N_PER_UM,
-                      COLUMN["min_stiffness"]: d["min_axial_stiffness_N_per_um"],
-                      "min_stiffness_at [mm]": d["min_axial_stiffness_position_mm"],
-                      "weakest_link": d["weakest_link"],
-                      COLUMN["min_frequency"]: d["min_natural_frequency_Hz"],
-                      "min_frequency_at [mm]": d["min_natural_frequency_position_mm"],
-                      "table_mode [Hz]": d["table_mode_Hz"],
-                      COLUMN["drag_torque"]: d["drag_torque_Nm"], COLUMN["moving_mass"]: d["moving_mass_kg"],
-                      COLUMN["total_mass"]: d["total_mass_kg"], COLUMN["cost"]: d["cost"],
-                      "all_checks_pass": d["all_checks_pass"]})
+            r.update(
+                {
+                    "mounting": d["mounting"],
+                    **d["parts"],
+                    "nut_preload [N]": d["nut_preload_N"],
+                    "stroke [mm]": e.design.axis.stroke * 1e3,
+                    "screw_stiffness_at_min [N/um]": comp["screw"] / N_PER_UM,
+                    "nut_stiffness [N/um]": comp["nut"] / N_PER_UM,
+                    "bearing_stiffness [N/um]": comp["bearings"] / N_PER_UM,
+                    COLUMN["min_stiffness"]: d["min_axial_stiffness_N_per_um"],
+                    "min_stiffness_at [mm]": d["min_axial_stiffness_position_mm"],
+                    "weakest_link": d["weakest_link"],
+                    COLUMN["min_frequency"]: d["min_natural_frequency_Hz"],
+                    "min_frequency_at [mm]": d["min_natural_frequency_position_mm"],
+                    "table_mode [Hz]": d["table_mode_Hz"],
+                    COLUMN["drag_torque"]: d["drag_torque_Nm"],
+                    COLUMN["moving_mass"]: d["moving_mass_kg"],
+                    COLUMN["total_mass"]: d["total_mass_kg"],
+                    COLUMN["cost"]: d["cost"],
+                    "all_checks_pass": d["all_checks_pass"],
+                }
+            )
             for k, v in (drive_dict(e) or {}).items():
                 if k not in DRIVE_SLOTS:
                     r[f"drive_{k}"] = v
@@ -288,4 +376,11 @@ def write_compare_csv(items, path) -> None:
         csv_safe(pd.DataFrame(compare_rows(items))).to_csv(fh, index=False, float_format="%.10g")
 
 
-__all__ = ["Comparison", "compare_table", "compare_dict", "compare_rows", "write_compare_csv", "component_stiffness"]
+__all__ = [
+    "Comparison",
+    "compare_table",
+    "compare_dict",
+    "compare_rows",
+    "write_compare_csv",
+    "component_stiffness",
+]

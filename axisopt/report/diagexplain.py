@@ -17,10 +17,25 @@ def unexplained_dicts(diag) -> list:
         sigs = []
         for p in u.remaining:
             what, causes, measure = table_signature(p, display_value)
-            sigs.append({"factor": p.kind, "share": p.share, "log10_p": p.log10_p, "signature": what,
-                         "causes": causes, "to_separate": measure})
-        out.append({"file": u.source, "test": u.kind, "rms_over_noise": u.rms, "remaining": bool(sigs),
-                    "signatures": sigs})
+            sigs.append(
+                {
+                    "factor": p.kind,
+                    "share": p.share,
+                    "log10_p": p.log10_p,
+                    "signature": what,
+                    "causes": causes,
+                    "to_separate": measure,
+                }
+            )
+        out.append(
+            {
+                "file": u.source,
+                "test": u.kind,
+                "rms_over_noise": u.rms,
+                "remaining": bool(sigs),
+                "signatures": sigs,
+            }
+        )
     return out
 
 
@@ -37,9 +52,12 @@ def plausibility_flags(res):
 
 def unidentifiable(res, names=None) -> list:
     """Parameters the data do not fix (infinite variance: a zero or dependent Jacobian column)."""
-    return [f"{p.name} is not identifiable from these data: the fit does not change with it (it is reported "
-            "at the value the search stopped at, without an uncertainty)"
-            for p, s in zip(res.params, res.sigma) if not math.isfinite(s) and (names is None or p.name in names)]
+    return [
+        f"{p.name} is not identifiable from these data: the fit does not change with it (it is reported "
+        "at the value the search stopped at, without an uncertainty)"
+        for p, s in zip(res.params, res.sigma)
+        if not math.isfinite(s) and (names is None or p.name in names)
+    ]
 
 
 def undetermined_notes(res, names) -> list:
@@ -47,7 +65,9 @@ def undetermined_notes(res, names) -> list:
     out = []
     for p, v, s in zip(res.params, res.theta, res.sigma):
         if p.name in names and math.isfinite(s) and v != 0 and s > abs(v):
-            out.append(f"{p.name} not determined by these data (+-{p.show(s):.3g} on {p.show(v):.4g} {p.unit})")
+            out.append(
+                f"{p.name} not determined by these data (+-{p.show(s):.3g} on {p.show(v):.4g} {p.unit})"
+            )
     return out
 
 
@@ -62,16 +82,25 @@ def other_explanations(diag) -> list:
     if E is None or 0.9 * pl.youngs_modulus <= E <= 1.1 * pl.youngs_modulus:
         return out
     x = pl.start_offset + 0.5 * pl.stroke
-    dc = x / (E * pl.area) - x / (pl.youngs_modulus * pl.area)  # extra compliance the modulus absorbs [m/N]
+    # extra compliance the modulus absorbs [m/N]
+    dc = x / (E * pl.area) - x / (pl.youngs_modulus * pl.area)
     side = "softer" if dc > 0 else "stiffer"
-    text = (f"the screw modulus fitted at {E / 1e9:.0f} GPa (steel {pl.youngs_modulus / 1e9:.0f} GPa) makes the chain "
-            f"{abs(dc) * 1e9:.2f} um/kN {side} at mid-stroke; the same would follow from")
+    text = (
+        f"the screw modulus fitted at {E / 1e9:.0f} GPa (steel {pl.youngs_modulus / 1e9:.0f} GPa) makes the chain "
+        f"{abs(dc) * 1e9:.2f} um/kN {side} at mid-stroke; the same would follow from"
+    )
     alts = []
     for name, k in (("the support bearing set", pl.k_bearing), ("the nut", pl.k_nut)):
         c_new = 1.0 / k + dc
         if c_new > 0:
-            alts.append(f"{name} at {1.0 / c_new / 1e6:,.0f} N/um instead of its catalog {k / 1e6:,.0f} N/um")
-    alts.append("an unlisted compliance (housing, nut bracket, coupling) of "
-                f"{1.0 / abs(dc) / 1e6:,.0f} N/um in series" if dc > 0 else "a stiffer structure than modelled")
+            alts.append(
+                f"{name} at {1.0 / c_new / 1e6:,.0f} N/um instead of its catalog {k / 1e6:,.0f} N/um"
+            )
+    alts.append(
+        "an unlisted compliance (housing, nut bracket, coupling) of "
+        f"{1.0 / abs(dc) / 1e6:,.0f} N/um in series"
+        if dc > 0
+        else "a stiffer structure than modelled"
+    )
     out.append(text + " " + "; or ".join(alts) + " (test: --effects compliance_offset)")
     return out

@@ -15,14 +15,19 @@ from .diagnosis import diagnosis_dict
 
 # SI factor -> (display unit, scale, offset) for residual plots
 FACTOR_DISPLAY = {
-    "position": ("mm", 1e3, 0.0), "force": ("N", 1.0, 0.0), "velocity": ("mm/s", 1e3, 0.0),
-    "speed": ("mm/s", 1e3, 0.0), "time": ("s", 1.0, 0.0), "temperature": ("degC", 1.0, -273.15),
-    "frequency": ("Hz", 1.0, 0.0), "normal_load": ("N", 1.0, 0.0), "axial_load": ("N", 1.0, 0.0),
+    "position": ("mm", 1e3, 0.0),
+    "force": ("N", 1.0, 0.0),
+    "velocity": ("mm/s", 1e3, 0.0),
+    "speed": ("mm/s", 1e3, 0.0),
+    "time": ("s", 1.0, 0.0),
+    "temperature": ("degC", 1.0, -273.15),
+    "frequency": ("Hz", 1.0, 0.0),
+    "normal_load": ("N", 1.0, 0.0),
+    "axial_load": ("N", 1.0, 0.0),
 }
 
 
-CATEGORICAL = {"direction": {-1.0: "-1", 1.0: "+1"}, "cycle": {},
-               "mode": {}, "exclude": {}}
+CATEGORICAL = {"direction": {-1.0: "-1", 1.0: "+1"}, "cycle": {}, "mode": {}, "exclude": {}}
 
 
 def categories(name: str, values) -> list | None:
@@ -56,7 +61,8 @@ def residual_figures(diag, verdict: str):
             if cats is None:
                 ax.plot(v, rb * f, ".", ms=3, alpha=0.6, label="baseline")
                 ax.plot(v, ra * f, ".", ms=3, alpha=0.8, label=f"with {verdict}")
-            else:  # a category per tick, baseline left and extended model right of it, points spread
+            # a category per tick, baseline left and extended model right of it, points spread
+            else:
                 jit = np.random.default_rng(0).uniform(-0.08, 0.08, len(v))
                 pos = np.searchsorted([c for c, _ in cats], v).astype(float)
                 ax.plot(pos - 0.18 + jit, rb * f, ".", ms=3, alpha=0.6, label="baseline")
@@ -116,7 +122,12 @@ def write_report(diag, outdir) -> Path:
         md.append("")
     md += ["## Candidates", ""]
     for i, rnd in enumerate(d["candidates"], start=1):
-        md += [f"Round {i}", "", "| effect | dBIC | held-out gain | parameters |", "|---|---|---|---|"]
+        md += [
+            f"Round {i}",
+            "",
+            "| effect | dBIC | held-out gain | parameters |",
+            "|---|---|---|---|",
+        ]
         for c in rnd:
             g = f"{c['cv_gain_percent']:.0f} %" if c["cv_gain_percent"] is not None else "-"
             md.append(
@@ -141,12 +152,19 @@ def write_report(diag, outdir) -> Path:
     for u in d["unexplained"]:
         name = Path(u["file"]).name
         if u["remaining"]:
-            md.append(f"- `{name}`: **unexplained** structure (RMS {u['rms_over_noise']:.2g}x the noise floor)")
-            md += [f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual variance. Candidates: "
-                   f"{sg['causes']}. To separate them: {sg['to_separate']}." for sg in u["signatures"]]
+            md.append(
+                f"- `{name}`: **unexplained** structure (RMS {u['rms_over_noise']:.2g}x the noise floor)"
+            )
+            md += [
+                f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual variance. Candidates: "
+                f"{sg['causes']}. To separate them: {sg['to_separate']}."
+                for sg in u["signatures"]
+            ]
         else:
-            md.append(f"- `{name}`: RMS {u['rms_over_noise']:.2g}x the noise floor, no structure along a recorded "
-                      "factor")
+            md.append(
+                f"- `{name}`: RMS {u['rms_over_noise']:.2g}x the noise floor, no structure along a recorded "
+                "factor"
+            )
     md += ["", "## Residual plots", ""]
     for k, (o, fig) in enumerate(residual_figures(diag, d["verdict"])):
         png = out / f"residuals_{k + 1}.png"

@@ -24,12 +24,25 @@ def counterbalance_dict(ev: Evaluation) -> dict:
     """A counterbalance's kind and sizes and what it takes off the head [N] (JSON)."""
     cb = ev.design.axis.counterbalance
     b = _balance(ev)
-    sizes = ({"mass_kg": cb.mass, "efficiency": cb.efficiency, "chain_mass_kg": cb.chain_mass}
-             if cb.kind == "counterweight" else
-             {"force_N": cb.force, "force_at_end_N": cb.force_end, "tolerance": cb.tolerance,
-              "piston_mass_kg": cb.piston_mass})
-    return {"kind": cb.kind, **sizes, "force_at_rest_N": b["rest"], "force_rising_N": b["rising"],
-            "force_lowering_N": b["lowering"], "head_weight_N": b["weight"], "net_weight_on_screw_N": b["net"]}
+    sizes = (
+        {"mass_kg": cb.mass, "efficiency": cb.efficiency, "chain_mass_kg": cb.chain_mass}
+        if cb.kind == "counterweight"
+        else {
+            "force_N": cb.force,
+            "force_at_end_N": cb.force_end,
+            "tolerance": cb.tolerance,
+            "piston_mass_kg": cb.piston_mass,
+        }
+    )
+    return {
+        "kind": cb.kind,
+        **sizes,
+        "force_at_rest_N": b["rest"],
+        "force_rising_N": b["rising"],
+        "force_lowering_N": b["lowering"],
+        "head_weight_N": b["weight"],
+        "net_weight_on_screw_N": b["net"],
+    }
 
 
 def counterbalance_lines(ev: Evaluation) -> list:
@@ -39,30 +52,45 @@ def counterbalance_lines(ev: Evaluation) -> list:
         return []
     b = _balance(ev)
     if cb.kind == "counterweight":
-        what = (f"counterweight {cb.mass:,.0f} kg (chain efficiency {cb.efficiency:g}"
-                + (f", chain {cb.chain_mass:g} kg" if cb.chain_mass else "") + f"): {b['rest']:,.0f} N up at rest, "
-                f"{b['rising']:,.0f} N rising, {b['lowering']:,.0f} N lowering")
+        what = (
+            f"counterweight {cb.mass:,.0f} kg (chain efficiency {cb.efficiency:g}"
+            + (f", chain {cb.chain_mass:g} kg" if cb.chain_mass else "")
+            + f"): {b['rest']:,.0f} N up at rest, "
+            f"{b['rising']:,.0f} N rising, {b['lowering']:,.0f} N lowering"
+        )
     else:
-        what = (f"cylinder {cb.force:,.0f}..{cb.force_end:,.0f} N over the stroke +/- {cb.tolerance * 100:g} %: "
-                f"{b['rest']:,.0f} N taken (the end that loads the drive most)")
-    text = (f"counterbalance: {what}; the screw carries {b['net']:,.0f} N of the head's {b['weight']:,.0f} N "
-            "at rest")
+        what = (
+            f"cylinder {cb.force:,.0f}..{cb.force_end:,.0f} N over the stroke +/- {cb.tolerance * 100:g} %: "
+            f"{b['rest']:,.0f} N taken (the end that loads the drive most)"
+        )
+    text = (
+        f"counterbalance: {what}; the screw carries {b['net']:,.0f} N of the head's {b['weight']:,.0f} N "
+        "at rest"
+    )
     return textwrap.wrap(text, WIDTH, initial_indent="  ", subsequent_indent="    ")
 
 
 # outputs an evaluation names the estimates of (besides the checks near their limit)
-_EST_OUTPUTS = (("k_total", "min stiffness"), ("f1", "min frequency"), ("drag_torque", "drag torque"),
-                ("life", "nut life"))
+_EST_OUTPUTS = (
+    ("k_total", "min stiffness"),
+    ("f1", "min frequency"),
+    ("drag_torque", "drag torque"),
+    ("life", "nut life"),
+)
 
 
 NEAR_LIMIT = 1.1  # a check with margin below this counts as near its limit
 
 
-# defaults the life, torque and heat checks read, shown with their value: (axis attribute, display unit, SI per unit)
+# defaults the life, torque and heat checks read, shown with their value: (axis attribute, display
+# unit, SI per unit)
 # (the temperature rise has its own line: the thermal block says where it comes from)
-_DEFAULT_VALUES = {"mean_axial_load": ("mean_axial_load_eff", "N", 1.0),
-                   "mean_speed": ("mean_speed_eff", "m/min", 1 / 60),
-                   "required_life": ("required_life", "h", 3600.0), "load_factor": ("load_factor_eff", "", 1.0)}
+_DEFAULT_VALUES = {
+    "mean_axial_load": ("mean_axial_load_eff", "N", 1.0),
+    "mean_speed": ("mean_speed_eff", "m/min", 1 / 60),
+    "required_life": ("required_life", "h", 3600.0),
+    "load_factor": ("load_factor_eff", "", 1.0),
+}
 
 
 def default_shown(axis, key: str) -> str:
@@ -96,8 +124,17 @@ def estimate_lines(ev: Evaluation) -> list:
     rows = [(e, w) for e, w in estimates(ev) if w]
     if not rows:
         return []
-    out = ["", "estimated values (not in the vendor's table; catalogs/SOURCES.md) and what they move:"]
+    out = [
+        "",
+        "estimated values (not in the vendor's table; catalogs/SOURCES.md) and what they move:",
+    ]
     for e, what in rows:
-        out.extend(textwrap.wrap(f"{e.text()} moves "
-                                 f"{', '.join(what)}", WIDTH, initial_indent="  ", subsequent_indent="      "))
+        out.extend(
+            textwrap.wrap(
+                f"{e.text()} moves {', '.join(what)}",
+                WIDTH,
+                initial_indent="  ",
+                subsequent_indent="      ",
+            )
+        )
     return out

@@ -59,7 +59,9 @@ def require_plotly():
     try:
         import plotly  # noqa: F401
     except ImportError:
-        raise InputError("the HTML report needs plotly: pip install 'axisopt[html]'", where="--report") from None
+        raise InputError(
+            "the HTML report needs plotly: pip install 'axisopt[html]'", where="--report"
+        ) from None
 
 
 @dataclass
@@ -91,20 +93,31 @@ class Page:
         script tag loading the installed plotly's version from the plotly CDN: a small file that needs the
         network).  A static page has no script at all."""
         if not self.interactive:
-            script, credit = "", "static SVG figures (matplotlib); --plotly inline for interactive ones"
+            script, credit = (
+                "",
+                "static SVG figures (matplotlib); --plotly inline for interactive ones",
+            )
         else:
             script, credit = _plotly_script(plotly_js)
-        cards = "".join(f'<div class="card {s}"><div class="k">{_e(k)}</div><div class="v">{_e(v)}</div></div>'
-                        for k, v, s in self.cards)
+        cards = "".join(
+            f'<div class="card {s}"><div class="k">{_e(k)}</div><div class="v">{_e(v)}</div></div>'
+            for k, v, s in self.cards
+        )
         nav = "".join(f'<a href="#s{i}">{_e(h)}</a>' for i, (h, _) in enumerate(self.sections))
-        body = "".join(f'<h2 id="s{i}">{_e(h)}</h2>' + "".join(parts) for i, (h, parts) in enumerate(self.sections))
-        return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
-                f"<title>{_e(self.title)}</title><style>{_CSS}</style>"
-                f"{script}</head><body>"
-                f"<h1>{_e(self.title)}</h1>" + (f'<p class="sub">{_e(self.subtitle)}</p>' if self.subtitle else "")
-                + f'<div class="cards">{cards}</div><nav>{nav}</nav>{body}'
-                f"<footer>axisopt report; {_e(credit)}</footer></body></html>\n")
+        body = "".join(
+            f'<h2 id="s{i}">{_e(h)}</h2>' + "".join(parts)
+            for i, (h, parts) in enumerate(self.sections)
+        )
+        return (
+            '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+            '<meta name="viewport" content="width=device-width, initial-scale=1">'
+            f"<title>{_e(self.title)}</title><style>{_CSS}</style>"
+            f"{script}</head><body>"
+            f"<h1>{_e(self.title)}</h1>"
+            + (f'<p class="sub">{_e(self.subtitle)}</p>' if self.subtitle else "")
+            + f'<div class="cards">{cards}</div><nav>{nav}</nav>{body}'
+            f"<footer>axisopt report; {_e(credit)}</footer></body></html>\n"
+        )
 
 
 def _plotly_script(plotly_js: str) -> tuple[str, str]:
@@ -147,15 +160,24 @@ def table(head, rows, states=None, classes=None) -> str:
     per row the class of its last cell ('ok' / 'bad'), ``classes`` (optional) per row a list of cell classes
     ('' for none).  Text and part ids wrap (a 1280 px window shows every column); a number with its unit
     stays on one line."""
-    # a heading may break after a dot or underscore (axis.<wbr>moving_<wbr>mass [kg]): long key names fit
+    # a heading may break after a dot or underscore (axis.<wbr>moving_<wbr>mass [kg]): long key
+    # names fit
     th = "".join(f"<th>{_breakable(h)}</th>" for h in head)
     trs = []
     for i, r in enumerate(rows):
         cls = classes[i] if classes is not None else [""] * len(r)
-        cls = [(c + " n").strip() if _NUMBER.match(str(v)) else
-               (c + " t").strip() if isinstance(v, (list, tuple)) or not _NUMBER.match(str(v)) and str(v) != "-"
-               else c for v, c in zip(r, cls)]
-        cells = [f'<td class="{c}">{_html(v)}</td>' if c else f"<td>{_html(v)}</td>" for v, c in zip(r, cls)]
+        cls = [
+            (c + " n").strip()
+            if _NUMBER.match(str(v))
+            else (c + " t").strip()
+            if isinstance(v, (list, tuple)) or not _NUMBER.match(str(v)) and str(v) != "-"
+            else c
+            for v, c in zip(r, cls)
+        ]
+        cells = [
+            f'<td class="{c}">{_html(v)}</td>' if c else f"<td>{_html(v)}</td>"
+            for v, c in zip(r, cls)
+        ]
         if states is not None and states[i]:
             cells[-1] = f'<td class="{states[i]}">{_html(r[-1])}</td>'
         trs.append("<tr>" + "".join(cells) + "</tr>")
@@ -178,22 +200,38 @@ def _breakable(heading: str) -> str:
     ``axis.<wbr>moving_<wbr>mass [kg]``, ``drag [N.m]`` whole)."""
     name, sep, unit = str(heading).partition(" [")
     return _BREAK.sub(r"\1<wbr>", _e(name)) + _e(sep + unit)
-_NUMBER = re.compile(r"^[-+]?[\d.,]+(e[-+]?\d+)?( ?[^\s\d]{1,6})?$")  # 1,234.5 / 0.97 / 12 N/um / 5 %
+
+
+# 1,234.5 / 0.97 / 12 N/um / 5 %
+_NUMBER = re.compile(r"^[-+]?[\d.,]+(e[-+]?\d+)?( ?[^\s\d]{1,6})?$")
 
 
 def figure(fig, height: int = 420) -> str:
     """A plotly figure as a div (the page inlines plotly.js once)."""
-    fig.update_layout(height=height, margin=dict(l=55, r=15, t=40, b=45), template="plotly_white",
-                      legend=dict(orientation="h", y=-0.18))
-    return '<div class="fig">' + fig.to_html(full_html=False, include_plotlyjs=False,
-                                             config={"responsive": True, "displaylogo": False}) + "</div>"
+    fig.update_layout(
+        height=height,
+        margin=dict(l=55, r=15, t=40, b=45),
+        template="plotly_white",
+        legend=dict(orientation="h", y=-0.18),
+    )
+    return (
+        '<div class="fig">'
+        + fig.to_html(
+            full_html=False,
+            include_plotlyjs=False,
+            config={"responsive": True, "displaylogo": False},
+        )
+        + "</div>"
+    )
 
 
 def check_report_path(path, interactive: bool = False) -> None:
     """A --report target must end in .html, and plotly must be installed for interactive figures (one-line
     InputError otherwise)."""
     if not str(path).lower().endswith((".html", ".htm")):
-        raise InputError(f"the report is HTML: give a file ending in .html, not '{path}'", where="--report")
+        raise InputError(
+            f"the report is HTML: give a file ending in .html, not '{path}'", where="--report"
+        )
     from ..fileio import check_output_path
 
     check_output_path(path, what="HTML report", where="--report")
@@ -201,7 +239,8 @@ def check_report_path(path, interactive: bool = False) -> None:
         require_plotly()
 
 
-PLOTLY_CHOICES = ("no", "inline", "cdn")  # --plotly: static SVG figures (default), plotly.js inlined or linked
+# --plotly: static SVG figures (default), plotly.js inlined or linked
+PLOTLY_CHOICES = ("no", "inline", "cdn")
 
 
 def write_page(page: Page, path, plotly: str = "no") -> None:
@@ -212,7 +251,8 @@ def write_page(page: Page, path, plotly: str = "no") -> None:
     write_text_atomic(str(path), page.render(plotly), what="HTML report")
 
 
-# ------------------------------------------------------------------------------------------- figures
+# -------------------------------------------------------------------------------------------
+# figures
 # ------------------------------------------------------------------------------------------- pages
 def evaluation_cards(page: Page, ev) -> None:
     from .evaluation import check_rows
@@ -226,10 +266,13 @@ def evaluation_cards(page: Page, ev) -> None:
     page.card("weakest link", ev.weakest)
     page.card("total mass", f"{ev['total_mass']:,.1f} kg")
     page.card("cost (illustrative)", f"{ev['cost']:,.0f} EUR")
-    page.card("checks", "all pass" if not failed else f"{len(failed)} fail", "ok" if not failed else "bad")
+    page.card(
+        "checks", "all pass" if not failed else f"{len(failed)} fail", "ok" if not failed else "bad"
+    )
 
 
-MARGIN_CLASSES = ((1.0, "m-fail"), (1.1, "m-tight"), (1.5, "m-fair"))  # below each bound its class; above: ample
+# below each bound its class; above: ample
+MARGIN_CLASSES = ((1.0, "m-fail"), (1.1, "m-tight"), (1.5, "m-fair"))
 
 
 def margin_class(m, passed: bool | None = None) -> str:
@@ -244,8 +287,10 @@ def margin_class(m, passed: bool | None = None) -> str:
     return "m-ample"
 
 
-MARGIN_KEY = ('<p class="key">margin = available / needed: <span class="m">below 1 fails (red), 1-1.1 tight '
-              '(amber), 1.1-1.5 fair (pale green), from 1.5 ample (green)</span></p>')
+MARGIN_KEY = (
+    '<p class="key">margin = available / needed: <span class="m">below 1 fails (red), 1-1.1 tight '
+    "(amber), 1.1-1.5 fair (pale green), from 1.5 ample (green)</span></p>"
+)
 
 
 def parts_table(design, problem=None) -> str:
@@ -254,9 +299,11 @@ def parts_table(design, problem=None) -> str:
     from .partslist import parts_list
 
     rows = parts_list(design, problem)
-    return table(["part", "id", "vendor", "quantity", "order"],
-                 [[r["part"], r["id"], r["vendor"], str(r["quantity"]), r["order"] or "-"] for r in rows],
-                 classes=[["", "", "", "", "wrap"]] * len(rows))
+    return table(
+        ["part", "id", "vendor", "quantity", "order"],
+        [[r["part"], r["id"], r["vendor"], str(r["quantity"]), r["order"] or "-"] for r in rows],
+        classes=[["", "", "", "", "wrap"]] * len(rows),
+    )
 
 
 def checks_table(ev, margins: dict | None = None) -> str:
@@ -269,13 +316,30 @@ def checks_table(ev, margins: dict | None = None) -> str:
     body, classes = [], []
     for r in judged_rows(ev, margins):
         u = f" {r['unit']}" if r["unit"] else ""
-        have = (f"{fmt_value(r['available_min'])}-{fmt_value(r['available'])}{u}" if r["check"] == "bearing_fit"
-                else ("n/a" if r["available"] is None else fmt_value(r["available"]) + u))
-        body.append([r["label"], have, (fmt_value(r["needed"]) + u) if r["needed"] else "none",
-                     "n/a" if r["margin"] is None else f"{r['margin']:.2f}", ("pass" if r["pass"] else "FAIL")
-                     + ("" if "allowed" not in r else " (check off)" if r["allowed"] == 0 else
-                        f" (margin {r['allowed']:g} allowed)")])
-        classes.append(["wrap", "", "", margin_class(r["margin"], r["pass"]), "ok" if r["pass"] else "bad"])
+        have = (
+            f"{fmt_value(r['available_min'])}-{fmt_value(r['available'])}{u}"
+            if r["check"] == "bearing_fit"
+            else ("n/a" if r["available"] is None else fmt_value(r["available"]) + u)
+        )
+        body.append(
+            [
+                r["label"],
+                have,
+                (fmt_value(r["needed"]) + u) if r["needed"] else "none",
+                "n/a" if r["margin"] is None else f"{r['margin']:.2f}",
+                ("pass" if r["pass"] else "FAIL")
+                + (
+                    ""
+                    if "allowed" not in r
+                    else " (check off)"
+                    if r["allowed"] == 0
+                    else f" (margin {r['allowed']:g} allowed)"
+                ),
+            ]
+        )
+        classes.append(
+            ["wrap", "", "", margin_class(r["margin"], r["pass"]), "ok" if r["pass"] else "bad"]
+        )
     return table(head, body, classes=classes) + MARGIN_KEY
 
 
@@ -285,23 +349,34 @@ def evaluation_page(ev, title: str | None = None, interactive: bool = False) -> 
     from .plots import plot_profiles
 
     d = ev.design
-    page = Page(title or f"Axis evaluation: {d.name}",
-                f"{d.axis.mounting}, stroke {d.axis.stroke * 1e3:.0f} mm; parts "
-                + ", ".join(f"{k} {v}" for k, v in d.part_ids().items()), interactive=interactive)
+    page = Page(
+        title or f"Axis evaluation: {d.name}",
+        f"{d.axis.mounting}, stroke {d.axis.stroke * 1e3:.0f} mm; parts "
+        + ", ".join(f"{k} {v}" for k, v in d.part_ids().items()),
+        interactive=interactive,
+    )
     evaluation_cards(page, ev)
     drive = d.motor is not None
-    # the static profile figure carries the duty cycle against the motor limits in its right-hand panel
-    page.figure("Stiffness and frequency over the stroke" + ("; drive against the motor" if drive and
-                                                              not interactive else ""),
-                lambda: ifig.profiles_figure([ev], [d.name]), lambda: plot_profiles([ev]))
-    page.figure("Stiffness chain", lambda: ifig.chain_figure(ev), lambda: static.chain_figure(ev), 300)
+    # the static profile figure carries the duty cycle against the motor limits in its right-hand
+    # panel
+    page.figure(
+        "Stiffness and frequency over the stroke"
+        + ("; drive against the motor" if drive and not interactive else ""),
+        lambda: ifig.profiles_figure([ev], [d.name]),
+        lambda: plot_profiles([ev]),
+    )
+    page.figure(
+        "Stiffness chain", lambda: ifig.chain_figure(ev), lambda: static.chain_figure(ev), 300
+    )
     if drive and interactive:
         page.figure("Drive: duty cycle against the motor", lambda: ifig.drive_figure(ev), None, 460)
-    page.figure("Dynamic compliance of the table (FRF)", lambda: ifig.frf_figure(ev), lambda: static.frf_figure(ev),
-                560)
+    page.figure(
+        "Dynamic compliance of the table (FRF)",
+        lambda: ifig.frf_figure(ev),
+        lambda: static.frf_figure(ev),
+        560,
+    )
     page.section("Checks").append(checks_table(ev))
     page.section("Parts to order").append(parts_table(d))
     page.section("Full evaluation (as printed)").append(pre(evaluation_table(ev)))
     return page
-
-

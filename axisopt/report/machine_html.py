@@ -201,13 +201,19 @@ def evaluation_page(ev, text: str, interactive: bool = False):
     if md is None:
         page.card("status", "an axis misses its own limits", "bad")
     else:
-        page.card("machine limits", "met" if md.feasible else "missed", "ok" if md.feasible else "bad")
+        page.card(
+            "machine limits", "met" if md.feasible else "missed", "ok" if md.feasible else "bad"
+        )
         for i, d in enumerate(DIRECTIONS):
             page.card(f"k_{d} at the tool", f"{md.k_tool[i] * 1e-6:,.1f} N/um")
         page.card("lowest frequency", f"{md.f_lowest:,.1f} Hz")
         page.card("cost", f"{md.cost:,.0f} EUR")
-        page.figure("Compliance at the tool, each link", lambda: _compliance_plotly(md),
-                    lambda: compliance_figure(md), 320)
+        page.figure(
+            "Compliance at the tool, each link",
+            lambda: _compliance_plotly(md),
+            lambda: compliance_figure(md),
+            320,
+        )
         _design_sections(page, md, "The machine")
     page.section("Result (as printed)").append(H.pre(text))
     return page

@@ -24,8 +24,10 @@ def _num(v):
 
 def methods_table(rows) -> str:
     """Text table of :func:`axisopt.model.methods.stiffness_methods` rows in N/um, ``*`` on the used value."""
-    lines = ["stiffness by method [N/um]   (* the value the model uses)",
-             f"  {'component':<10}{'method':<34}{'value':>10}  note"]
+    lines = [
+        "stiffness by method [N/um]   (* the value the model uses)",
+        f"  {'component':<10}{'method':<34}{'value':>10}  note",
+    ]
     last = None
     for r in rows:
         comp = r.component if r.component != last else ""
@@ -38,7 +40,11 @@ def methods_table(rows) -> str:
             shown = f"{r.value_N_per_m / N_PER_UM:,.1f}"
             note = r.note
         head = f"{mark} {comp:<10}{r.method:<34}{shown:>10}  "
-        lines += textwrap.wrap(head + note, 100, subsequent_indent=" " * len(head)) if note else [head.rstrip()]
+        lines += (
+            textwrap.wrap(head + note, 100, subsequent_indent=" " * len(head))
+            if note
+            else [head.rstrip()]
+        )
     return "\n".join(lines)
 
 
@@ -46,25 +52,33 @@ def methods_dict(rows) -> dict:
     """JSON-ready stiffness methods: values in N/um, None where an input is missing."""
     return {
         "unit": "N/um",
-        "methods": [{
-            "component": r.component,
-            "method": r.method,
-            "source": r.source,
-            "value_N_per_um": None if r.value_N_per_m is None else _num(r.value_N_per_m / N_PER_UM),
-            "used": bool(r.used),
-            "missing": list(r.missing),
-            "note": r.note,
-        } for r in rows],
+        "methods": [
+            {
+                "component": r.component,
+                "method": r.method,
+                "source": r.source,
+                "value_N_per_um": None
+                if r.value_N_per_m is None
+                else _num(r.value_N_per_m / N_PER_UM),
+                "used": bool(r.used),
+                "missing": list(r.missing),
+                "note": r.note,
+            }
+            for r in rows
+        ],
     }
 
 
 def _curves(result: dict) -> list:
-    return [{
-        "position_mm": float(q["position_mm"]),
-        "modes_Hz": [_num(f) for f in q.get("modes_Hz", ())],
-        "magnitude_um_per_N": [_num(v) for v in q["magnitude_um_per_N"]],
-        "phase_deg": [_num(v) for v in q["phase_deg"]],
-    } for q in result["positions"]]
+    return [
+        {
+            "position_mm": float(q["position_mm"]),
+            "modes_Hz": [_num(f) for f in q.get("modes_Hz", ())],
+            "magnitude_um_per_N": [_num(v) for v in q["magnitude_um_per_N"]],
+            "phase_deg": [_num(v) for v in q["phase_deg"]],
+        }
+        for q in result["positions"]
+    ]
 
 
 def frf_dict(result: dict, held: dict | None = None, closed: dict | None = None) -> dict:
@@ -93,13 +107,27 @@ def closed_loop_frf(ev, freqs) -> dict:
     s = ev.x - ev.design.axis.start_offset
     pos = []
     for i, h in zip(frf_positions(ev), frequency_response(ev, freqs, g)):
-        pos.append({"index": i, "position_mm": float(s[i] * 1e3), "compliance_m_per_N": h,
-                    "magnitude_um_per_N": np.abs(h) * 1e6, "phase_deg": np.degrees(np.unwrap(np.angle(h))),
-                    "modes_Hz": ()})
-    return {"design": ev.design.name, "kv": g.kv, "frequency_Hz": np.asarray(freqs, float), "positions": pos}
+        pos.append(
+            {
+                "index": i,
+                "position_mm": float(s[i] * 1e3),
+                "compliance_m_per_N": h,
+                "magnitude_um_per_N": np.abs(h) * 1e6,
+                "phase_deg": np.degrees(np.unwrap(np.angle(h))),
+                "modes_Hz": (),
+            }
+        )
+    return {
+        "design": ev.design.name,
+        "kv": g.kv,
+        "frequency_Hz": np.asarray(freqs, float),
+        "positions": pos,
+    }
 
 
-def plot_frf(result: dict, path: str | None = None, held: dict | None = None, closed: dict | None = None):
+def plot_frf(
+    result: dict, path: str | None = None, held: dict | None = None, closed: dict | None = None
+):
     """Magnitude (log-log, um/N) and phase of the table compliance, one colour per nut position, the modes
     as vertical lines in the same colour.  With ``held`` and ``closed``: the motor-held curve (solid, its
     first mode the headline first frequency), the motor-free one (dashed) and the closed loop with the tuned
@@ -123,18 +151,30 @@ def plot_frf(result: dict, path: str | None = None, held: dict | None = None, cl
             q = res["positions"][j]
             modes = [m for m in q.get("modes_Hz", ()) if m is not None and math.isfinite(m)]
             shown = f" (modes {', '.join(f'{m:.0f}' for m in modes)} Hz)" if modes else ""
-            label = f"{name} {q['position_mm']:.0f} mm, {what}{shown}" if len(sets) > 1 else \
-                f"{name} {q['position_mm']:.0f} mm{shown}"
-            ax1.loglog(f, q["magnitude_um_per_N"], color=color, linestyle=style, label=label,
-                       linewidth=1.0 if style != "-" else 1.4)
+            label = (
+                f"{name} {q['position_mm']:.0f} mm, {what}{shown}"
+                if len(sets) > 1
+                else f"{name} {q['position_mm']:.0f} mm{shown}"
+            )
+            ax1.loglog(
+                f,
+                q["magnitude_um_per_N"],
+                color=color,
+                linestyle=style,
+                label=label,
+                linewidth=1.0 if style != "-" else 1.4,
+            )
             ax2.semilogx(f, q["phase_deg"], color=color, linestyle=style, linewidth=1.0)
             if style in ("-", "--") and modes:
                 for m in modes[:1] if style == "-" and len(sets) > 1 else modes:
                     if f[0] <= m <= f[-1]:
                         for ax in (ax1, ax2):
                             ax.axvline(m, color=color, linestyle=style, linewidth=0.7, alpha=0.5)
-    title = "table compliance X/F: motor held (-), free (--), with the servo (:)" if len(sets) > 1 else \
-        f"table compliance X/F ({own})"
+    title = (
+        "table compliance X/F: motor held (-), free (--), with the servo (:)"
+        if len(sets) > 1
+        else f"table compliance X/F ({own})"
+    )
     ax1.set_title(f"{result.get('design', '')}: {title}", fontsize=9)
     ax1.set_ylabel("compliance [um/N]")
     ax2.set_ylabel("phase [deg]")

@@ -17,9 +17,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
-PRELOAD_MIN_STEP = 10.0  # [N] the nut preload is ordered no finer than this (unless a limit needs it)
+# [N] the nut preload is ordered no finer than this (unless a limit needs it)
+PRELOAD_MIN_STEP = 10.0
 PRELOAD_DIGITS = 3  # significant figures of an ordered nut preload
-TOLERANCE = 1e-9  # a limit the exact preload misses by less than this (relative) counts as met (it sits on it)
+# a limit the exact preload misses by less than this (relative) counts as met (it sits on it)
+TOLERANCE = 1e-9
 
 
 def _up(length_m: float, step_mm: float = 10.0) -> float:
@@ -63,8 +65,10 @@ class OrderedPreload:
         way = "down" if self.value < self.exact else "up"
         s = f"{self.exact:.6g} N rounded {way} to {self.step:g} N"
         if self.nearest_breaks:
-            s += f" ({self.value + (self.step if way == 'down' else -self.step):.6g} N would break " \
-                 f"{', '.join(self.nearest_breaks)})"
+            s += (
+                f" ({self.value + (self.step if way == 'down' else -self.step):.6g} N would break "
+                f"{', '.join(self.nearest_breaks)})"
+            )
         return s
 
 
@@ -84,7 +88,9 @@ def _constraints(problem):
 
     def margin(check, m):
         name = margin_output(check)
-        return Constraint(name, name, ">=", m, CHECK_RECORDS[check].preload, CHECK_LABELS[check], "", 1.0)
+        return Constraint(
+            name, name, ">=", m, CHECK_RECORDS[check].preload, CHECK_LABELS[check], "", 1.0
+        )
 
     if problem is None:
         return tuple(margin(c, 1.0) for c in CHECKS)
@@ -118,13 +124,17 @@ def order_preload(design, problem=None) -> OrderedPreload:
     cons = _constraints(problem)
     lo, hi = _preload_range(design, problem)
     if not lo <= exact <= hi:
-        lo, hi = 0.0, math.inf  # a design given outside the range: the rounding keeps the limits only
+        # a design given outside the range: the rounding keeps the limits only
+        lo, hi = 0.0, math.inf
 
     def values(p):
         return evaluate(replace(design, nut_preload=p)).values
 
-    base = values(exact)  # what the exact preload meets (an optimum may sit on a limit within rounding)
-    keep = [c for c in cons if c.ok(c.value(base)) or float(c.violation(c.value(base))) <= TOLERANCE]
+    # what the exact preload meets (an optimum may sit on a limit within rounding)
+    base = values(exact)
+    keep = [
+        c for c in cons if c.ok(c.value(base)) or float(c.violation(c.value(base))) <= TOLERANCE
+    ]
 
     def broken(p) -> tuple:
         if not lo <= p <= hi or p <= 0:
@@ -152,30 +162,64 @@ def parts_list(design, problem=None) -> list[dict]:
     order needs: lengths in mm, the preload in N, rounded by :func:`order_preload` against ``problem``'s
     limits, or against the vendor checks without one)."""
     a = design.axis
-    drives = 2 if getattr(a, "twin_drive", None) is not None else 1  # a twin-drive gantry orders two of each
+    # a twin-drive gantry orders two of each
+    drives = 2 if getattr(a, "twin_drive", None) is not None else 1
     rows = []
 
     def add(slot: str, qty: int, note: str) -> None:
         part = getattr(design, slot)
         if part is not None:
-            rows.append({"part": slot, "id": str(part["id"]), "vendor": str(part.get("vendor", "")),
-                         "quantity": qty, "order": note})
+            rows.append(
+                {
+                    "part": slot,
+                    "id": str(part["id"]),
+                    "vendor": str(part.get("vendor", "")),
+                    "quantity": qty,
+                    "order": note,
+                }
+            )
 
-    add("screw", drives, f"bearing span {_up(a.span):,.0f} mm (stroke {a.stroke * 1e3:,.0f} mm); end journals "
-                         "machined to the support bearings")
+    add(
+        "screw",
+        drives,
+        f"bearing span {_up(a.span):,.0f} mm (stroke {a.stroke * 1e3:,.0f} mm); end journals "
+        "machined to the support bearings",
+    )
     add("nut", drives, f"preload {order_preload(design, problem).text} N")
     sets = 2 if a.mounting == "fixed-fixed" else 1
-    add("bearing", drives * sets, f"{a.mounting}: {sets} set{'s' if sets > 1 else ''} per screw"
-        + ("" if a.mounting == "fixed-fixed" else " (the free or supported end's bearing is not sized here)"))
+    add(
+        "bearing",
+        drives * sets,
+        f"{a.mounting}: {sets} set{'s' if sets > 1 else ''} per screw"
+        + (
+            ""
+            if a.mounting == "fixed-fixed"
+            else " (the free or supported end's bearing is not sized here)"
+        ),
+    )
     if design.guide is not None:
         add("guide", a.guide_blocks, "blocks")
-        rows.append({"part": "guide rail", "id": str(design.guide["id"]), "vendor": str(design.guide.get("vendor", "")),
-                     "quantity": a.rails, "order": f"length {_up(a.stroke + a.table_length):,.0f} mm (estimate: "
-                                                   "stroke + table length; cut to the vendor's hole pitch)"})
+        rows.append(
+            {
+                "part": "guide rail",
+                "id": str(design.guide["id"]),
+                "vendor": str(design.guide.get("vendor", "")),
+                "quantity": a.rails,
+                "order": f"length {_up(a.stroke + a.table_length):,.0f} mm (estimate: "
+                "stroke + table length; cut to the vendor's hole pitch)",
+            }
+        )
     add("motor", drives, "")
     add("coupling", drives, "")
     add("reduction", drives, "")
     return rows
 
 
-__all__ = ["parts_list", "order_preload", "OrderedPreload", "preload_step", "PRELOAD_MIN_STEP", "PRELOAD_DIGITS"]
+__all__ = [
+    "parts_list",
+    "order_preload",
+    "OrderedPreload",
+    "preload_step",
+    "PRELOAD_MIN_STEP",
+    "PRELOAD_DIGITS",
+]

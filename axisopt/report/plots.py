@@ -36,21 +36,43 @@ def duty_points(ev: Evaluation) -> dict | None:
         n += [v0 * to_rpm, v1 * to_rpm]
         t += [float(t0), float(t1)]
     total = sum(ph.duration for ph in phases)
-    mean = sum(ph.duration * 0.5 * (v0 + v1) for ph, (v0, v1) in zip(phases, speeds)) / total if total else 0.0
+    mean = (
+        sum(ph.duration * 0.5 * (v0 + v1) for ph, (v0, v1) in zip(phases, speeds)) / total
+        if total
+        else 0.0
+    )
     m = d.motor
     estimated = [c for c in ("peak_corner_speed", "peak_torque_at_max_speed") if _missing(m, c)]
-    return {"speed_rpm": n, "torque_Nm": t, "rms_torque_Nm": float(v["rms_torque"]),
-            "mean_speed_rpm": mean * to_rpm, "rated_torque_Nm": float(m["rated_torque"]),
-            "peak_torque_Nm": float(m["peak_torque"]), "rated_speed_rpm": float(m["rated_speed"]) * RPM,
-            "max_speed_rpm": float(m["max_speed"]) * RPM, "motor": str(m["id"]),
-            # the steady thrusts at feed (no acceleration): the largest axial load against the peak, the mean
-            # one with the cycle's RMS against the RMS limit (model.drive)
-            "thrust_torque_Nm": float(v["thrust_torque"]), "mean_thrust_torque_Nm": float(v["mean_thrust_torque"]),
-            # the intermittent zone the check uses (vendor corner points or their estimate) and the RMS bound
-            "zone_speed_rpm": [0.0, float(prm["motor_peak_corner_speed"]) * RPM, float(m["max_speed"]) * RPM],
-            "zone_torque_Nm": [float(m["peak_torque"]), float(m["peak_torque"]), float(prm["motor_peak_at_max_speed"])],
-            "zone_estimated": bool(estimated),
-            "rms_limit_Nm": float(prm["rms_torque_ratio"]) * float(m["rated_torque"])}
+    return {
+        "speed_rpm": n,
+        "torque_Nm": t,
+        "rms_torque_Nm": float(v["rms_torque"]),
+        "mean_speed_rpm": mean * to_rpm,
+        "rated_torque_Nm": float(m["rated_torque"]),
+        "peak_torque_Nm": float(m["peak_torque"]),
+        "rated_speed_rpm": float(m["rated_speed"]) * RPM,
+        "max_speed_rpm": float(m["max_speed"]) * RPM,
+        "motor": str(m["id"]),
+        # the steady thrusts at feed (no acceleration): the largest axial load against the peak, the
+        # mean
+        # one with the cycle's RMS against the RMS limit (model.drive)
+        "thrust_torque_Nm": float(v["thrust_torque"]),
+        "mean_thrust_torque_Nm": float(v["mean_thrust_torque"]),
+        # the intermittent zone the check uses (vendor corner points or their estimate) and the RMS
+        # bound
+        "zone_speed_rpm": [
+            0.0,
+            float(prm["motor_peak_corner_speed"]) * RPM,
+            float(m["max_speed"]) * RPM,
+        ],
+        "zone_torque_Nm": [
+            float(m["peak_torque"]),
+            float(m["peak_torque"]),
+            float(prm["motor_peak_at_max_speed"]),
+        ],
+        "zone_estimated": bool(estimated),
+        "rms_limit_Nm": float(prm["rms_torque_ratio"]) * float(m["rated_torque"]),
+    }
 
 
 def _missing(row, col) -> bool:
@@ -69,8 +91,15 @@ def _torque_speed(ax, pts: dict, label: str, color, limits: bool = True) -> None
     (dotted) and the maximum speed (dash-dot).  The marker and line styles are explained once by
     :func:`_style_legend`; the labels name the design and the motor with their values."""
     rms = max(pts["rms_torque_Nm"], pts["mean_thrust_torque_Nm"])
-    ax.plot(pts["speed_rpm"], np.abs(pts["torque_Nm"]), "o-", ms=3, lw=1, color=color,
-            label=f"{label}: thrust at feed {pts['thrust_torque_Nm']:.1f}, RMS {rms:.2f} N.m")
+    ax.plot(
+        pts["speed_rpm"],
+        np.abs(pts["torque_Nm"]),
+        "o-",
+        ms=3,
+        lw=1,
+        color=color,
+        label=f"{label}: thrust at feed {pts['thrust_torque_Nm']:.1f}, RMS {rms:.2f} N.m",
+    )
     ax.plot([0.0], [pts["thrust_torque_Nm"]], "^", ms=9, color=color, clip_on=False)
     ax.plot([pts["mean_speed_rpm"]], [rms], "s", ms=8, color=color, mfc="none")
     if not limits:  # the motor's limits are drawn once, with the first design that uses it
@@ -78,9 +107,16 @@ def _torque_speed(ax, pts: dict, label: str, color, limits: bool = True) -> None
     nr, nm = pts["rated_speed_rpm"], pts["max_speed_rpm"]
     zs, zt = pts["zone_speed_rpm"], pts["zone_torque_Nm"]
     how = "corner estimated" if pts.get("zone_estimated") else "vendor corner points"
-    ax.plot(zs, zt, "--", color=color, lw=1.5, alpha=0.7,
-            label=f"{pts['motor']}: peak {pts['peak_torque_Nm']:.3g} N.m ({how}), rated {pts['rated_torque_Nm']:.3g} "
-                  f"N.m to {nr:.0f} rpm, RMS limit {pts['rms_limit_Nm']:.3g} N.m, max {nm:.0f} rpm")
+    ax.plot(
+        zs,
+        zt,
+        "--",
+        color=color,
+        lw=1.5,
+        alpha=0.7,
+        label=f"{pts['motor']}: peak {pts['peak_torque_Nm']:.3g} N.m ({how}), rated {pts['rated_torque_Nm']:.3g} "
+        f"N.m to {nr:.0f} rpm, RMS limit {pts['rms_limit_Nm']:.3g} N.m, max {nm:.0f} rpm",
+    )
     ax.plot([0, nr], [pts["rated_torque_Nm"]] * 2, "-", color=color, lw=2.5, alpha=0.45)
     ax.plot([nm, nm], [0, zt[-1]], "-.", color=color, lw=1, alpha=0.7)
     ax.plot([0, nm], [pts["rms_limit_Nm"]] * 2, ":", color=color, lw=1.2, alpha=0.8)
@@ -91,13 +127,26 @@ def _style_legend(ax) -> list:
     from matplotlib.lines import Line2D
 
     g = "0.35"
-    return [Line2D([], [], color=g, marker="o", ms=3, lw=1, label="duty cycle |T| by phase"),
-            Line2D([], [], color=g, marker="^", ms=8, ls="", label="steady thrust at feed (axial_load)"),
-            Line2D([], [], color=g, marker="s", ms=7, mfc="none", ls="", label="RMS checked (cycle or mean thrust)"),
-            Line2D([], [], color=g, ls="--", label="intermittent (peak) zone"),
-            Line2D([], [], color=g, lw=2.5, alpha=0.45, label="rated torque to rated speed"),
-            Line2D([], [], color=g, ls=":", label="RMS limit (rms_torque_ratio x rated)"),
-            Line2D([], [], color=g, ls="-.", label="max speed")]
+    return [
+        Line2D([], [], color=g, marker="o", ms=3, lw=1, label="duty cycle |T| by phase"),
+        Line2D(
+            [], [], color=g, marker="^", ms=8, ls="", label="steady thrust at feed (axial_load)"
+        ),
+        Line2D(
+            [],
+            [],
+            color=g,
+            marker="s",
+            ms=7,
+            mfc="none",
+            ls="",
+            label="RMS checked (cycle or mean thrust)",
+        ),
+        Line2D([], [], color=g, ls="--", label="intermittent (peak) zone"),
+        Line2D([], [], color=g, lw=2.5, alpha=0.45, label="rated torque to rated speed"),
+        Line2D([], [], color=g, ls=":", label="RMS limit (rms_torque_ratio x rated)"),
+        Line2D([], [], color=g, ls="-.", label="max speed"),
+    ]
 
 
 def distinct_labels(items, prefix=None) -> list:
@@ -141,8 +190,11 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
     styles = ("-", "--", "-.", ":")
     groups: dict = {}  # designs whose stiffness and frequency curves coincide share one line
     for i, ev in enumerate(evaluations):
-        key = (np.round(np.asarray(ev["k_total"], float) / N_PER_UM, 3).tobytes(),
-               np.round(np.asarray(ev["f1"], float), 3).tobytes(), tuple(np.round(ev.x, 6)))
+        key = (
+            np.round(np.asarray(ev["k_total"], float) / N_PER_UM, 3).tobytes(),
+            np.round(np.asarray(ev["f1"], float), 3).tobytes(),
+            tuple(np.round(ev.x, 6)),
+        )
         groups.setdefault(key, []).append(i)
     tags = [labels[i] if labels else ev.design.name for i, ev in enumerate(evaluations)]
     short = [t.split()[0] if t.startswith("#") else t for t in tags]
@@ -151,11 +203,22 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
         ev = evaluations[i]
         s = (ev.x - ev.design.axis.start_offset) * 1e3
         col = colors[i % len(colors)]
-        failed = sorted({r["check"] for m in members for r in judged_rows(evaluations[m], margins) if not r["pass"]})
-        name = tags[i] if len(members) == 1 else \
-            f"{', '.join(short[m] for m in members)}: the same curves ({tags[i]} ...)"
+        failed = sorted(
+            {
+                r["check"]
+                for m in members
+                for r in judged_rows(evaluations[m], margins)
+                if not r["pass"]
+            }
+        )
+        name = (
+            tags[i]
+            if len(members) == 1
+            else f"{', '.join(short[m] for m in members)}: the same curves ({tags[i]} ...)"
+        )
         name += f" - FAILS {', '.join(failed)}" if failed else ""
-        ls = styles[j % len(styles)]  # distinct dash patterns: curves that nearly coincide stay visible
+        # distinct dash patterns: curves that nearly coincide stay visible
+        ls = styles[j % len(styles)]
         mk = dict(marker="x", markevery=max(1, len(s) // 8)) if failed else {}
         ax1.plot(s, np.asarray(ev["k_total"]) / N_PER_UM, ls, label=name, color=col, **mk)
         ax2.plot(s, ev["f1"], ls, label=name, color=col, **mk)
@@ -169,11 +232,21 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
             ax3.plot([], [], " ", label=f"{short[i]}: no drive (the design has no motor)")
     limits = dict(limits or {})
     if "min_stiffness" in limits:
-        ax1.axhline(limits["min_stiffness"] / N_PER_UM, color="tab:red", ls="--", lw=1,
-                    label=f"min_stiffness {limits['min_stiffness'] / N_PER_UM:g} N/um")
+        ax1.axhline(
+            limits["min_stiffness"] / N_PER_UM,
+            color="tab:red",
+            ls="--",
+            lw=1,
+            label=f"min_stiffness {limits['min_stiffness'] / N_PER_UM:g} N/um",
+        )
     if "min_frequency" in limits:
-        ax2.axhline(limits["min_frequency"], color="tab:red", ls="--", lw=1,
-                    label=f"min_frequency {limits['min_frequency']:g} Hz")
+        ax2.axhline(
+            limits["min_frequency"],
+            color="tab:red",
+            ls="--",
+            lw=1,
+            label=f"min_frequency {limits['min_frequency']:g} Hz",
+        )
         ax2.legend(fontsize=8)
     ax1.set_ylabel("axial stiffness [N/um]")
     ax2.set_ylabel("1st natural frequency [Hz]")
@@ -183,15 +256,25 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
         ax3.set_xlabel("motor speed [rpm]")
         ax3.set_ylabel("motor torque magnitude [N.m]")
         ax3.set_title("duty cycle against the motor limits", fontsize=10)
-        top = max(max(p["zone_torque_Nm"] + [p["thrust_torque_Nm"]] + list(np.abs(p["torque_Nm"])))
-                  for p in pts if p is not None)
+        top = max(
+            max(p["zone_torque_Nm"] + [p["thrust_torque_Nm"]] + list(np.abs(p["torque_Nm"])))
+            for p in pts
+            if p is not None
+        )
         right = max(p["max_speed_rpm"] for p in pts if p is not None)
         ax3.set_xlim(0, 1.05 * right)
         ax3.set_ylim(0, 1.08 * top)
         # below the panel: the legend never hides a limit line or a duty point
         handles, names = ax3.get_legend_handles_labels()
-        ax3.legend(handles + _style_legend(ax3), names + [h.get_label() for h in _style_legend(ax3)], fontsize=7,
-                   loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=1, frameon=False)
+        ax3.legend(
+            handles + _style_legend(ax3),
+            names + [h.get_label() for h in _style_legend(ax3)],
+            fontsize=7,
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.1),
+            ncol=1,
+            frameon=False,
+        )
         axes = (ax1, ax2, ax3)
     for ax in axes:
         ax.grid(True, alpha=0.3)
@@ -199,8 +282,14 @@ def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None
         h1, n1 = ax1.get_legend_handles_labels()
         h2, n2 = ax2.get_legend_handles_labels()
         extra = [(h, n) for h, n in zip(h2, n2) if n.startswith("min_frequency")]
-        ax2.legend(h1 + [h for h, _ in extra], n1 + [n for _, n in extra], fontsize=7, loc="upper center",
-                   bbox_to_anchor=(0.5, -0.18), frameon=False)
+        ax2.legend(
+            h1 + [h for h, _ in extra],
+            n1 + [n for _, n in extra],
+            fontsize=7,
+            loc="upper center",
+            bbox_to_anchor=(0.5, -0.18),
+            frameon=False,
+        )
     else:
         ax1.legend(fontsize=8)
     tidy_layout(fig)

@@ -13,10 +13,14 @@ from ..catalog.columns import PART_SLOTS
 from ..model.goals import OBJECTIVE_TABLE
 from ..search.result import OPTIMAL
 
-# The cutting force's components beside the feed force, as a rule of thumb for turning: feed F_f = 0.50 F_c and
-# passive (radial) F_p = 0.25 F_c of the tangential F_c (E. Isakov, "Calculated Forces When Turning", Cutting Tool
-# Engineering, 2013, who adds that the rule "is not a good practice because the results are not as accurate as
-# they could be"): guidance for the designer where the cut's own components are unknown, never a model default.
+# The cutting force's components beside the feed force, as a rule of thumb for turning: feed F_f =
+# 0.50 F_c and
+# passive (radial) F_p = 0.25 F_c of the tangential F_c (E. Isakov, "Calculated Forces When
+# Turning", Cutting Tool
+# Engineering, 2013, who adds that the rule "is not a good practice because the results are not as
+# accurate as
+# they could be"): guidance for the designer where the cut's own components are unknown, never a
+# model default.
 FEED_SHARE, PASSIVE_SHARE = 0.50, 0.25
 COMPONENT_KEYS = ("normal_load", "cross_load")
 
@@ -29,15 +33,21 @@ def load_components(axis, assumed) -> dict | None:
     if not missing or axis.axial_load <= 0.0:
         return None
     fc = axis.axial_load / FEED_SHARE
-    text = (f"guides sized without the cut's {' and '.join(missing)} (not given: 0 N); give "
-            f"{'them' if len(missing) > 1 else 'it'} with tool_height and tool_offset (where the cut acts).  "
-            f"Turning rule of thumb (Isakov, CTE 2013: F_f = 0.5 F_c, F_p = 0.25 F_c): axial_load "
-            f"{_num(axis.axial_load)} N as the feed force puts the tangential force near {_num(fc)} N, the "
-            f"passive near {_num(PASSIVE_SHARE * fc)} N")
-    return {"missing": missing, "axial_load_N": axis.axial_load, "tangential_estimate_N": fc,
-            "passive_estimate_N": PASSIVE_SHARE * fc,
-            "rule": "turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (Isakov, Cutting Tool Engineering 2013)",
-            "text": text}
+    text = (
+        f"guides sized without the cut's {' and '.join(missing)} (not given: 0 N); give "
+        f"{'them' if len(missing) > 1 else 'it'} with tool_height and tool_offset (where the cut acts).  "
+        f"Turning rule of thumb (Isakov, CTE 2013: F_f = 0.5 F_c, F_p = 0.25 F_c): axial_load "
+        f"{_num(axis.axial_load)} N as the feed force puts the tangential force near {_num(fc)} N, the "
+        f"passive near {_num(PASSIVE_SHARE * fc)} N"
+    )
+    return {
+        "missing": missing,
+        "axial_load_N": axis.axial_load,
+        "tangential_estimate_N": fc,
+        "passive_estimate_N": PASSIVE_SHARE * fc,
+        "rule": "turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (Isakov, Cutting Tool Engineering 2013)",
+        "text": text,
+    }
 
 
 def cheaper_lines(res) -> list:
@@ -48,11 +58,13 @@ def cheaper_lines(res) -> list:
         return []
     saved = ch["best_cost"] - ch["cost"]
     parts = "  ".join(f"{k} {v}" for k, v in ch["parts"].items() if v)
-    text = (f"cheaper: {ch['objective']:,.3f} {ch['unit']} (within {100 * ch['tolerance']:g} % of the best) costs "
-            f"{ch['cost']:,.0f} EUR, {saved:,.0f} EUR ({100 * saved / ch['best_cost']:.0f} %) less than the "
-            f"optimum's {ch['best_cost']:,.0f} EUR: {ch['mounting']}  {parts}; to choose it: objective {{mode: "
-            f"lexicographic, order: [{'stiffness' if ch['unit'] == 'N/um' else 'frequency'}, cost], tolerance: "
-            f"{ch['tolerance']:g}}}")
+    text = (
+        f"cheaper: {ch['objective']:,.3f} {ch['unit']} (within {100 * ch['tolerance']:g} % of the best) costs "
+        f"{ch['cost']:,.0f} EUR, {saved:,.0f} EUR ({100 * saved / ch['best_cost']:.0f} %) less than the "
+        f"optimum's {ch['best_cost']:,.0f} EUR: {ch['mounting']}  {parts}; to choose it: objective {{mode: "
+        f"lexicographic, order: [{'stiffness' if ch['unit'] == 'N/um' else 'frequency'}, cost], tolerance: "
+        f"{ch['tolerance']:g}}}"
+    )
     return textwrap.wrap(text, 100, subsequent_indent="  ")
 
 
@@ -65,24 +77,47 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     from .evaluation import evaluation_table
 
     c = res.certificate
-    L = [f"problem {res.problem}: {res.objective_label}",
-         f"method {res.method}: status {res.status}"
-         + (" (proven global optimum over the catalog)" if res.status == OPTIMAL and c.proven else "")
-         + f", {res.time:.2f} s" + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else "")]
+    L = [
+        f"problem {res.problem}: {res.objective_label}",
+        f"method {res.method}: status {res.status}"
+        + (
+            " (proven global optimum over the catalog)"
+            if res.status == OPTIMAL and c.proven
+            else ""
+        )
+        + f", {res.time:.2f} s"
+        + (f"  [{res.solver_status}]" if res.solver_status not in ("", "ipopt") else ""),
+    ]
     if res.arrangements and res.pareto is not None:
-        L.append(f"arrangements: the front of {res.arrangements} arrangements merged (each design names its own)")
+        L.append(
+            f"arrangements: the front of {res.arrangements} arrangements merged (each design names its own)"
+        )
     elif res.arrangements:  # search.counterbalance / search.twin_drive options
-        L.append(f"arrangement: {res.arrangement} ({'best' if res.best is not None else 'closest'} of "
-                 f"{res.arrangements} arrangements)")
-    notes = [f"  left out: {what}" for what in res.left_out]  # a part the search left out, each on its own line
+        L.append(
+            f"arrangement: {res.arrangement} ({'best' if res.best is not None else 'closest'} of "
+            f"{res.arrangements} arrangements)"
+        )
+    # a part the search left out, each on its own line
+    notes = [f"  left out: {what}" for what in res.left_out]
     if res.message:
         notes.append(f"  note: {res.message}")
     comp = None if problem is None else load_components(problem.axis, problem.assumed)
     if comp is not None:
-        notes.extend(textwrap.wrap(f"note: {comp['text']}", 100, initial_indent="  ", subsequent_indent="    "))
-    if res.infeasibility is not None:  # the misses that decide and what to change first, the notes after
-        L.extend(textwrap.wrap(f"misses: {res.infeasibility.deciding()}", 100, initial_indent="  ",
-                               subsequent_indent="      "))
+        notes.extend(
+            textwrap.wrap(
+                f"note: {comp['text']}", 100, initial_indent="  ", subsequent_indent="    "
+            )
+        )
+    # the misses that decide and what to change first, the notes after
+    if res.infeasibility is not None:
+        L.extend(
+            textwrap.wrap(
+                f"misses: {res.infeasibility.deciding()}",
+                100,
+                initial_indent="  ",
+                subsequent_indent="      ",
+            )
+        )
         L.extend(relax_lines(res.infeasibility))
     L.extend(notes)
     L.append("")
@@ -92,25 +127,42 @@ def format_result(res, top: int | None = None, problem=None) -> str:
         b = res.best
         L.append(f"best: {b.objective:,.3f} {res.objective_unit}")
         L.extend(cheaper_lines(res))
-        L.append(evaluation_table(evaluate(b.design), None if problem is None else problem.margin_map))
+        L.append(
+            evaluation_table(evaluate(b.design), None if problem is None else problem.margin_map)
+        )
         if res.binding:
             L.append("")
-            L.append("limits at the optimum (what relaxing each by 10 % buys, re-solved)"
-                     + ("; on the governing side" if b.design.axis.twin_drive else ""))
-            w = max([18] + [len(bd.limit) + 1 for bd in res.binding])  # max_positioning_error: 21 + 1
-            L.append(f"  {'limit':<{w}}{'value':>12}{'at optimum':>12}{'relaxed to':>12}  {'unit':<6}"
-                     f"{'gain ' + res.objective_unit:>14}")
+            L.append(
+                "limits at the optimum (what relaxing each by 10 % buys, re-solved)"
+                + ("; on the governing side" if b.design.axis.twin_drive else "")
+            )
+            # max_positioning_error: 21 + 1
+            w = max([18] + [len(bd.limit) + 1 for bd in res.binding])
+            L.append(
+                f"  {'limit':<{w}}{'value':>12}{'at optimum':>12}{'relaxed to':>12}  {'unit':<6}"
+                f"{'gain ' + res.objective_unit:>14}"
+            )
             for bd in res.binding:
-                # a gain within the re-solve's tolerance (not binding) is none: "+0", not a rounding residue
-                gain = "-" if bd.objective_gain is None or not math.isfinite(bd.objective_gain) else \
-                    f"{bd.objective_gain:+.4g}" if bd.binding else "+0"
-                L.append(f"  {bd.limit:<{w}}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
-                         f"{_v(bd.relaxed_to):>12}  {bd.unit:<6}{gain:>14}{'  BINDING' if bd.binding else ''}")
+                # a gain within the re-solve's tolerance (not binding) is none: "+0", not a rounding
+                # residue
+                gain = (
+                    "-"
+                    if bd.objective_gain is None or not math.isfinite(bd.objective_gain)
+                    else f"{bd.objective_gain:+.4g}"
+                    if bd.binding
+                    else "+0"
+                )
+                L.append(
+                    f"  {bd.limit:<{w}}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
+                    f"{_v(bd.relaxed_to):>12}  {bd.unit:<6}{gain:>14}{'  BINDING' if bd.binding else ''}"
+                )
             for bd in res.binding:
                 if bd.binding:
                     verb = "raising" if bd.limit.startswith("max") else "lowering"
-                    L.append(f"  {verb} {bd.limit.replace('_', ' ')} to {_v(bd.relaxed_to)} {bd.unit} buys "
-                             f"{bd.objective_gain:+.4g} {res.objective_unit}")
+                    L.append(
+                        f"  {verb} {bd.limit.replace('_', ' ')} to {_v(bd.relaxed_to)} {bd.unit} buys "
+                        f"{bd.objective_gain:+.4g} {res.objective_unit}"
+                    )
         if res.runners_up:
             L.append("")
             L.append("best designs")
@@ -118,39 +170,62 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     if res.infeasibility is not None:
         inf = res.infeasibility
         if inf.unmeetable:
-            L.append("limits no catalog combination can meet (each checked on its own, best preload):")
+            L.append(
+                "limits no catalog combination can meet (each checked on its own, best preload):"
+            )
             for name, best, lim, unit in inf.unmeetable:
                 u = f" {unit}" if unit else ""
-                L.append(f"  {name}: limit {_num(lim)}{u}, best any combination reaches {_num(best)}{u}")
+                L.append(
+                    f"  {name}: limit {_num(lim)}{u}, best any combination reaches {_num(best)}{u}"
+                )
         else:
-            L.append("every limit is met by some combination, but no combination meets all of them together")
+            L.append(
+                "every limit is met by some combination, but no combination meets all of them together"
+            )
         L.append("")
         L.append("closest designs (sum of relative misses):")
         for cand in inf.closest:
             miss = ", ".join(f"{k} by {100 * v:.1f} %" for k, v in cand.misses.items())
-            L.append(f"  #{cand.rank} {cand.mounting} {' / '.join(cand.parts().values())}"
-                     f" preload {cand.nut_preload:.0f} N: misses {miss or 'nothing'}")
+            L.append(
+                f"  #{cand.rank} {cand.mounting} {' / '.join(cand.parts().values())}"
+                f" preload {cand.nut_preload:.0f} N: misses {miss or 'nothing'}"
+            )
     L.append("")
     L.append("certificate")
     if c.feasible is None:  # Bonmin: one MINLP per mounting, nothing counted or bounded
-        L.append(f"  combinations {c.combinations:,}; MINLP solves {c.nlps_solved} "
-                 f"(not SUCCESS {c.nlp_failures}); feasible combinations not counted")
+        L.append(
+            f"  combinations {c.combinations:,}; MINLP solves {c.nlps_solved} "
+            f"(not SUCCESS {c.nlp_failures}); feasible combinations not counted"
+        )
     else:
-        blocks = (f"; screened {c.screened:,}, the rest pruned by their (nut, bearing) block's bound"
-                  if res.method == "default" and c.screened is not None else "")
+        blocks = (
+            f"; screened {c.screened:,}, the rest pruned by their (nut, bearing) block's bound"
+            if res.method == "default" and c.screened is not None
+            else ""
+        )
         L.append(f"  combinations {c.combinations:,}{blocks}")
         if c.pruned_by_dominance:
-            L.append(f"  never formed {c.pruned_by_dominance:,} (a coupling another beats on every count, or one "
-                     "that cannot carry the motor's peak torque)")
-        L.append(f"  feasible {c.feasible:,}{' (screened)' if res.method == 'default' else ''}; pruned by bound "
-                 f"{c.pruned_by_bound:,}; exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} "
-                 f"(failures {c.nlp_failures})")
-    gap = "0 (proven)" if c.proven and c.gap == 0 else ("unknown" if not math.isfinite(c.gap) else f"{c.gap:.3%}")
+            L.append(
+                f"  never formed {c.pruned_by_dominance:,} (a coupling another beats on every count, or one "
+                "that cannot carry the motor's peak torque)"
+            )
+        L.append(
+            f"  feasible {c.feasible:,}{' (screened)' if res.method == 'default' else ''}; pruned by bound "
+            f"{c.pruned_by_bound:,}; exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} "
+            f"(failures {c.nlp_failures})"
+        )
+    gap = (
+        "0 (proven)"
+        if c.proven and c.gap == 0
+        else ("unknown" if not math.isfinite(c.gap) else f"{c.gap:.3%}")
+    )
     if not c.screening_time:
         rate = ""
     elif c.screened is None:  # every combination screened
         rate = f"; screening {c.screening_time:.3f} s ({c.screening_rate / 1e6:.1f} M designs/s)"
-    else:  # the blocks' bounds, then the combinations of the opened blocks (one by one, or a drive at a time)
+    # the blocks' bounds, then the combinations of the opened blocks (one by one, or a drive at a
+    # time)
+    else:
         rate = f"; screening {c.screening_time:.3f} s (block bounds, {c.screened:,} combinations in opened blocks)"
     if res.best is None and c.proven:  # no design: there is no optimum to have a gap to
         L.append(f"  infeasibility proven (every combination is accounted for){rate}")
@@ -170,7 +245,9 @@ def _change_text(d) -> str:
     note = f" ({d.note})" if d.note else ""
     if d.edit:  # a list of the catalog section (search.widen)
         what = ", ".join(d.values)
-        return (f"add {what} to {d.key}" if d.edit == "add" else f"remove {what} from {d.key}") + note
+        return (
+            f"add {what} to {d.key}" if d.edit == "add" else f"remove {what} from {d.key}"
+        ) + note
     if d.key == "axis.counterbalance" and d.value == 0:
         return f"add axis.counterbalance {{kind: cylinder, force: {_v(d.to)} {d.unit}}}{note}"
     verb = "lower" if d.to < d.value else "raise"
@@ -183,10 +260,15 @@ def relax_lines(inf) -> list:
     L0 = []
     if inf.design_changes:
         texts = [_change_text(d) for d in inf.design_changes]
-        what = "the axis" if all(d.key.startswith("axis.") for d in inf.design_changes) else "the design"
+        what = (
+            "the axis"
+            if all(d.key.startswith("axis.") for d in inf.design_changes)
+            else "the design"
+        )
         head = f"  change {what}: " if len(texts) == 1 else f"  change {what}, together: "
         L0 = [head + "; ".join(texts) + ": the catalogs then hold a design (re-solved)"]
-    # a check no margin frees (its available value is 0: a catalog value missing): said, never relaxed to 0
+    # a check no margin frees (its available value is 0: a catalog value missing): said, never
+    # relaxed to 0
     L0 += [f"  no limit frees this: {m}" for m in inf.missing]
     rel = inf.relax
     if not rel:
@@ -199,13 +281,18 @@ def relax_lines(inf) -> list:
         return f"{r.key} from {_v(r.value)}{u} to {_v(r.relaxed_to)}{u} ({sign}{_num(100 * r.change)} %){rule}"
 
     d = rel[0].design
-    who = f"design #{rel[0].design_rank}" + (f" ({d.mounting} {' / '.join(d.parts().values())})" if d else "")
-    # search.relax: a vendor margin is never proposed below 0.95 (MARGIN_FLOOR); a design needing one lower breaks
+    who = f"design #{rel[0].design_rank}" + (
+        f" ({d.mounting} {' / '.join(d.parts().values())})" if d else ""
+    )
+    # search.relax: a vendor margin is never proposed below 0.95 (MARGIN_FLOOR); a design needing
+    # one lower breaks
     # a rule no relaxation frees, as a compatibility rule
     rule = "a compatibility rule or a vendor's rule no margin down to 0.95 frees"
     if inf.relax_blocked_by:
-        head = (f"  no relaxation of the limits is enough: every closest design breaks {rule}; "
-                f"{who} breaks {', '.join(inf.relax_blocked_by)} and besides needs ")
+        head = (
+            f"  no relaxation of the limits is enough: every closest design breaks {rule}; "
+            f"{who} breaks {', '.join(inf.relax_blocked_by)} and besides needs "
+        )
     else:
         head = "  to make it feasible, relax "
     if len(rel) == 1 and not inf.relax_blocked_by:
@@ -213,9 +300,12 @@ def relax_lines(inf) -> list:
     elif len(rel) == 1:
         L = [f"{head}{amount(rel[0])}"]
     else:
-        L = [f"{head}these {len(rel)} limits{' relaxed' if inf.relax_blocked_by else ''} together (smallest "
-             "change first)"
-             + ("" if inf.relax_blocked_by else f"; {who} then meets every limit") + ":"]
+        L = [
+            f"{head}these {len(rel)} limits{' relaxed' if inf.relax_blocked_by else ''} together (smallest "
+            "change first)"
+            + ("" if inf.relax_blocked_by else f"; {who} then meets every limit")
+            + ":"
+        ]
         L += [f"    {amount(r)}" for r in rel]
     for rank, rules in inf.not_relaxable:
         L.append(f"  design #{rank} left out: it breaks {', '.join(rules)} ({rule}, not relaxable)")
@@ -232,24 +322,46 @@ def _cand_table(cands, unit, keys=()) -> str:
     slots = ("arrangement", "screw", "grade", *PART_SLOTS[1:])
     obj = f"obj {unit}" if unit != "-" else ""
     always = [g for g in OBJECTIVE_TABLE if g.column is not None and g.column.always]
-    extra = [g for g in OBJECTIVE_TABLE if g.column is not None and not g.column.always and g.key in keys]
-    L = [f"  {'#':>3} {'mounting':<17}{obj:>12}" + "".join(f"{g.column.header:>{g.column.width}}" for g in always)
-         + f"{'preload N':>11}" + "".join(f"{g.column.header:>{g.column.width}}" for g in extra)]
+    extra = [
+        g for g in OBJECTIVE_TABLE if g.column is not None and not g.column.always and g.key in keys
+    ]
+    L = [
+        f"  {'#':>3} {'mounting':<17}{obj:>12}"
+        + "".join(f"{g.column.header:>{g.column.width}}" for g in always)
+        + f"{'preload N':>11}"
+        + "".join(f"{g.column.header:>{g.column.width}}" for g in extra)
+    ]
     prev = None
     for c in cands:
         val = f"{c.objective:,.3f}" if obj else ""
-        L.append(f"  {c.rank:>3} {c.mounting:<17}{val:>12}" + "".join(_goal_cell(c, g) for g in always)
-                 + f"{c.nut_preload:>11.0f}" + "".join(_goal_cell(c, g) for g in extra))
-        parts = c.parts() | ({"grade": c.screw_grade} if getattr(c, "screw_grade", "") else {}) \
+        L.append(
+            f"  {c.rank:>3} {c.mounting:<17}{val:>12}"
+            + "".join(_goal_cell(c, g) for g in always)
+            + f"{c.nut_preload:>11.0f}"
+            + "".join(_goal_cell(c, g) for g in extra)
+        )
+        parts = (
+            c.parts()
+            | ({"grade": c.screw_grade} if getattr(c, "screw_grade", "") else {})
             | ({"arrangement": c.arrangement} if c.arrangement else {})
+        )
         if prev is None:
             shown = [f"{k} {parts[k]}" for k in slots if parts.get(k)]
         else:
-            shown = [f"{k} {parts[k]}" for k in slots if parts.get(k) and parts.get(k) != prev.get(k)]
+            shown = [
+                f"{k} {parts[k]}" for k in slots if parts.get(k) and parts.get(k) != prev.get(k)
+            ]
             shown += [f"no {k}" for k in slots if prev.get(k) and not parts.get(k)]
             shown = ["same parts as above" if not shown else "as above but " + shown[0]] + shown[1:]
-        L.extend(textwrap.wrap("  ".join(shown), 100, initial_indent=" " * 8, subsequent_indent=" " * 8,
-                               break_on_hyphens=False))
+        L.extend(
+            textwrap.wrap(
+                "  ".join(shown),
+                100,
+                initial_indent=" " * 8,
+                subsequent_indent=" " * 8,
+                break_on_hyphens=False,
+            )
+        )
         prev = parts
     return "\n".join(L)
 
@@ -268,18 +380,28 @@ def estimated_lines(estimated) -> list:
     out = ["  rests on estimated values (not in the vendor's table; catalogs/SOURCES.md):"]
     for r in estimated:
         vals = "; ".join(estimate_text(e) for e in r["estimates"])
-        out.extend(textwrap.wrap(f"{r['what']} ({r['output']}): {vals}", 100, initial_indent="    ",
-                                 subsequent_indent="        "))
+        out.extend(
+            textwrap.wrap(
+                f"{r['what']} ({r['output']}): {vals}",
+                100,
+                initial_indent="    ",
+                subsequent_indent="        ",
+            )
+        )
     return out
 
 
 def format_pareto(front, top: int | None = None) -> str:
     """The front's designs sorted by the first objective; ``top`` of them (all when None)."""
     shown = front.points if top is None else front.points[:top]
-    L = [f"Pareto front: {len(front.points)} non-dominated designs of {front.feasible:,} feasible "
-         f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"]
+    L = [
+        f"Pareto front: {len(front.points)} non-dominated designs of {front.feasible:,} feasible "
+        f"({', '.join(f'{s} {k}' for k, s in zip(front.keys, front.senses))})"
+    ]
     if len(shown) < len(front.points):
-        L.append(f"  the first {len(shown)} by {front.keys[0]} shown (--top N for more, --json for all)")
+        L.append(
+            f"  the first {len(shown)} by {front.keys[0]} shown (--top N for more, --json for all)"
+        )
     L.append(_cand_table(shown, "-", front.keys))
     return "\n".join(L)
 
@@ -306,12 +428,18 @@ def plot_pareto(front, path: str | None = None):
 
     keys, d = front.keys, len(front.keys)
     F = np.array([[p.goal(k) for k in keys] for p in front.points]).reshape(-1, d)
-    C = np.asarray(front.cloud, dtype=float).reshape(-1, d) if front.cloud is not None else np.zeros((0, d))
+    C = (
+        np.asarray(front.cloud, dtype=float).reshape(-1, d)
+        if front.cloud is not None
+        else np.zeros((0, d))
+    )
     size = 2.6 * d if d > 2 else 5.5
     fig = Figure(figsize=(size + 1.0, size))
     axes = fig.subplots(d, d, squeeze=False)
-    label = [f"{k.replace('_', ' ')} [{u}] ({'max' if s == 'max' else 'min'})"
-             for k, u, s in zip(keys, front.units, front.senses)]
+    label = [
+        f"{k.replace('_', ' ')} [{u}] ({'max' if s == 'max' else 'min'})"
+        for k, u, s in zip(keys, front.units, front.senses)
+    ]
     sc = None
     for i in range(d):
         for j in range(d):
@@ -321,10 +449,24 @@ def plot_pareto(front, path: str | None = None):
                 ax.set_yticks([])
             else:
                 if len(C):
-                    ax.scatter(C[:, j], C[:, i], s=4, color="0.75", alpha=0.5, linewidths=0, rasterized=True,
-                               label="feasible (sample)" if (i, j) == (1, 0) else None)
-                sc = ax.scatter(F[:, j], F[:, i], c=F[:, 0], s=14, cmap="viridis",
-                                label="Pareto front" if (i, j) == (1, 0) else None)
+                    ax.scatter(
+                        C[:, j],
+                        C[:, i],
+                        s=4,
+                        color="0.75",
+                        alpha=0.5,
+                        linewidths=0,
+                        rasterized=True,
+                        label="feasible (sample)" if (i, j) == (1, 0) else None,
+                    )
+                sc = ax.scatter(
+                    F[:, j],
+                    F[:, i],
+                    c=F[:, 0],
+                    s=14,
+                    cmap="viridis",
+                    label="Pareto front" if (i, j) == (1, 0) else None,
+                )
             ax.grid(True, alpha=0.3)
             if i == d - 1:
                 ax.set_xlabel(label[j], fontsize=8)
@@ -335,7 +477,9 @@ def plot_pareto(front, path: str | None = None):
         axes[1][0].legend(fontsize=7, loc="best")
     if sc is not None:
         fig.colorbar(sc, ax=axes, label=label[0], shrink=0.8)
-    fig.suptitle(f"Pareto front: {len(front.points)} non-dominated of {front.feasible:,} feasible designs")
+    fig.suptitle(
+        f"Pareto front: {len(front.points)} non-dominated of {front.feasible:,} feasible designs"
+    )
     if path is not None:
         from ..fileio import save_figure
 
@@ -343,4 +487,11 @@ def plot_pareto(front, path: str | None = None):
     return fig
 
 
-__all__ = ["format_result", "format_pareto", "load_components", "relax_lines", "estimated_lines", "plot_pareto"]
+__all__ = [
+    "format_result",
+    "format_pareto",
+    "load_components",
+    "relax_lines",
+    "estimated_lines",
+    "plot_pareto",
+]

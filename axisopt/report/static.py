@@ -27,12 +27,18 @@ def svg(fig, alt: str = "") -> str:
 
     _COUNT[0] += 1
     buf = io.StringIO()
-    # text as text (small, selectable); ids salted per figure: two SVGs in one page never share an id
-    with matplotlib.rc_context({"svg.fonttype": "none", "svg.hashsalt": f"axisopt-fig-{_COUNT[0]}",
-                                "font.family": "sans-serif"}):
+    # text as text (small, selectable); ids salted per figure: two SVGs in one page never share an
+    # id
+    with matplotlib.rc_context(
+        {
+            "svg.fonttype": "none",
+            "svg.hashsalt": f"axisopt-fig-{_COUNT[0]}",
+            "font.family": "sans-serif",
+        }
+    ):
         fig.savefig(buf, format="svg", bbox_inches="tight")
     text = buf.getvalue()
-    text = text[text.index("<svg"):]  # no XML declaration or doctype inside HTML
+    text = text[text.index("<svg") :]  # no XML declaration or doctype inside HTML
     label = f' role="img" aria-label="{_attr(alt)}"' if alt else ""
     text = text.replace("<svg", f"<svg{label}", 1)
     return f'<div class="fig static">{text}</div>'
@@ -85,8 +91,15 @@ def objective_figure(df, name: str, key: str, unit: str, ok):
     ax.plot(df.loc[ok, name], df.loc[ok, "objective"], "o", ms=4, label="optimal")
     if (~ok).any():
         xs = sorted(set(df.loc[~ok, name].dropna()))
-        ax.plot(xs, [0.0] * len(xs), "|", color="#c62828", ms=12, transform=ax.get_xaxis_transform(),
-                label=f"input of a case without a design ({int((~ok).sum())} cases; reasons in the table)")
+        ax.plot(
+            xs,
+            [0.0] * len(xs),
+            "|",
+            color="#c62828",
+            ms=12,
+            transform=ax.get_xaxis_transform(),
+            label=f"input of a case without a design ({int((~ok).sum())} cases; reasons in the table)",
+        )
     ax.set_xlabel(name)
     ax.set_ylabel(f"objective [{unit}]" if unit else "objective")
     ax.set_title(f"objective against {key}", fontsize=10)

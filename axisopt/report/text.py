@@ -29,11 +29,22 @@ def fit_lines(text: str, width: int = 100) -> str:
             out.append(line)
             continue
         lead = " " * (len(line) - len(line.lstrip(" ")))
-        out.extend(textwrap.wrap(line, width, initial_indent="", subsequent_indent=lead + "    ",
-                                 break_on_hyphens=False, drop_whitespace=True) or [line])
+        out.extend(
+            textwrap.wrap(
+                line,
+                width,
+                initial_indent="",
+                subsequent_indent=lead + "    ",
+                break_on_hyphens=False,
+                drop_whitespace=True,
+            )
+            or [line]
+        )
     return "\n".join(out)
 
 
 def wrap_words(text: str, indent: str = "  ", cont: str = "      ") -> list:
     """Prose wrapped to WIDTH, the first line indented by ``indent``, the rest by ``cont``."""
-    return textwrap.wrap(text, WIDTH, initial_indent=indent, subsequent_indent=cont, break_on_hyphens=False)
+    return textwrap.wrap(
+        text, WIDTH, initial_indent=indent, subsequent_indent=cont, break_on_hyphens=False
+    )

@@ -40,7 +40,9 @@ def _param_lines(q, est: Estimate, only=None, indent="    ") -> list:
         out.append(f"{indent}{symbol(q, t):<7}{_fmt(v * f, s * f):>22} {u:<10} {label}".rstrip())
     if "vs" in est.shape and (only is None or "Fs" in only):
         u, f = UNITS[q]["speed"]
-        out.append(f"{indent}{'vs':<7}{est.shape['vs'] * f:>22.4g} {u:<10} Stribeck velocity (1-D search)")
+        out.append(
+            f"{indent}{'vs':<7}{est.shape['vs'] * f:>22.4g} {u:<10} Stribeck velocity (1-D search)"
+        )
     for nm, (label, u, f) in _shapes(q, est, only):
         out.append(f"{indent}{nm:<7}{est.shape[nm] * f:>22.5g} {u:<10} {label}")
     for nm, v, u, label in _derived(q, est, only):
@@ -51,7 +53,8 @@ def _param_lines(q, est: Estimate, only=None, indent="    ") -> list:
     return out
 
 
-SHAPES_APART = ("vs", "period")  # the Stribeck velocity has its own line; the ripple's period is the lead's
+# the Stribeck velocity has its own line; the ripple's period is the lead's
+SHAPES_APART = ("vs", "period")
 
 
 def _shapes(q, est: Estimate, only=None) -> list:
@@ -95,8 +98,6 @@ def _errors(diag, est) -> str:
     return ", ".join(parts)
 
 
-
-
 def _compact(q, est: Estimate, terms) -> str:
     out = []
     for t in terms:
@@ -123,27 +124,46 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
     rec = er.record
     unit_eff = UNITS[q]["effort"][0]
     spd_u, spd_f = UNITS[q]["speed"]
-    L = [f"time-record identification (IDIM) of {diag.design.get('name', 'the axis')}: {q} data, "
-         + ("table coordinate" if q == "force" else "motor angle coordinate")]
-    L += wrap_words(f"estimation  {rec.name}: {rec.n} samples at {p.fs:.6g} Hz, {er.n} regression rows"
-               + (f"; {rec.gain_note}" if rec.gain_note else "")
-               + (f"; {rec.run_note()}" if rec.run_note() else ""), cont="              ")
+    L = [
+        f"time-record identification (IDIM) of {diag.design.get('name', 'the axis')}: {q} data, "
+        + ("table coordinate" if q == "force" else "motor angle coordinate")
+    ]
+    L += wrap_words(
+        f"estimation  {rec.name}: {rec.n} samples at {p.fs:.6g} Hz, {er.n} regression rows"
+        + (f"; {rec.gain_note}" if rec.gain_note else "")
+        + (f"; {rec.run_note()}" if rec.run_note() else ""),
+        cont="              ",
+    )
     for v in diag.validation:
         note = v.record.run_note()
-        L += wrap_words(f"validation  {v.record.name}: {v.record.n} samples, {v.n} regression rows"
-                        + (f"; {note}" if note else ""), cont="              ")
-    L += wrap_words(f"filter      zero-phase Butterworth, order {BUTTER_ORDER} (|H|^2 by FFT, as forward-backward), "
-               f"cut-off {p.fc:.1f} Hz: {p.rule}; motion bandwidth {p.f_motion:.1f} Hz", cont="              ")
-    L += wrap_words(f"decimation  parallel: every column and the {q} low-passed at {p.fdec:.1f} Hz, every {p.nd}th "
-               f"row kept; rows below {p.vmin * spd_f:.3g} {spd_u} or at reversals left out",
-               cont="              ")
+        L += wrap_words(
+            f"validation  {v.record.name}: {v.record.n} samples, {v.n} regression rows"
+            + (f"; {note}" if note else ""),
+            cont="              ",
+        )
+    L += wrap_words(
+        f"filter      zero-phase Butterworth, order {BUTTER_ORDER} (|H|^2 by FFT, as forward-backward), "
+        f"cut-off {p.fc:.1f} Hz: {p.rule}; motion bandwidth {p.f_motion:.1f} Hz",
+        cont="              ",
+    )
+    L += wrap_words(
+        f"decimation  parallel: every column and the {q} low-passed at {p.fdec:.1f} Hz, every {p.nd}th "
+        f"row kept; rows below {p.vmin * spd_f:.3g} {spd_u} or at reversals left out",
+        cont="              ",
+    )
     c = diag.controller
     if c is not None:
-        L += wrap_words(f"controller  PD fitted from the reference: Kp {c.kp:.4g}, Kd {c.kd:.4g}, feed-forward "
-                   f"v {c.kv:.3g}, a {c.ka:.3g} (R2 {c.r2:.3f})", cont="              ")
+        L += wrap_words(
+            f"controller  PD fitted from the reference: Kp {c.kp:.4g}, Kd {c.kd:.4g}, feed-forward "
+            f"v {c.kv:.3g}, a {c.ka:.3g} (R2 {c.r2:.3f})",
+            cont="              ",
+        )
     L.append("")
-    L.append("baseline  f = M a + Fv v + Fc sgn(v) + offset" if q == "force" else
-             "baseline  T = J a + Fv w + Fc sgn(w) + offset (motor side)")
+    L.append(
+        "baseline  f = M a + Fv v + Fc sgn(v) + offset"
+        if q == "force"
+        else "baseline  T = J a + Fv w + Fc sgn(w) + offset (motor side)"
+    )
     for est in (diag.baseline_ls, diag.baseline_iv):
         L += wrap_words(f"{est.method}" + (f"  ({est.note})" if est.note else ""), cont="      ")
         L += _param_lines(q, est)
@@ -154,34 +174,50 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         lead, eta = diag.design["lead"], diag.design.get("efficiency", 1.0)
         g = 2 * math.pi / lead
         b = diag.baseline_iv.as_dict()
-        L += wrap_words(f"table side through lead {lead * 1e3:g} mm and efficiency {eta:g} (F = T 2pi eta/p, "
-                   f"M = J (2pi/p)^2 eta): M {b['M'] * g * g * eta:.4g} kg, Fv {b['Fv'] * g * g * eta:.4g} N.s/m, "
-                   f"Fc {b['Fc'] * g * eta:.4g} N, offset {b['offset'] * g * eta:.4g} N")
+        L += wrap_words(
+            f"table side through lead {lead * 1e3:g} mm and efficiency {eta:g} (F = T 2pi eta/p, "
+            f"M = J (2pi/p)^2 eta): M {b['M'] * g * g * eta:.4g} kg, Fv {b['Fv'] * g * g * eta:.4g} N.s/m, "
+            f"Fc {b['Fc'] * g * eta:.4g} N, offset {b['offset'] * g * eta:.4g} N"
+        )
     L.append("")
     rule = TIME_RULE
-    L += wrap_words(f"candidates, each fitted (LS) jointly with the baseline; dBIC on the estimation run, gain on the "
-               f"{diag.validation_mode}; accepted if dBIC < {rule.accept_dbic:g} and gain >= {rule.min_gain:g} %",
-               indent="", cont="  ")
+    L += wrap_words(
+        f"candidates, each fitted (LS) jointly with the baseline; dBIC on the estimation run, gain on the "
+        f"{diag.validation_mode}; accepted if dBIC < {rule.accept_dbic:g} and gain >= {rule.min_gain:g} %",
+        indent="",
+        cont="  ",
+    )
     for k, rnd in enumerate(diag.rounds, start=1):
         for cnd in rnd:
-            L += wrap_words(f"{k}  {cnd.effect.name:<20} dBIC {cnd.dbic:>8.1f}  gain {cnd.gain:>6.1f} %  "
-                       + _compact(q, cnd.estimate, cnd.effect.terms), cont=" " * 52)
+            L += wrap_words(
+                f"{k}  {cnd.effect.name:<20} dBIC {cnd.dbic:>8.1f}  gain {cnd.gain:>6.1f} %  "
+                + _compact(q, cnd.estimate, cnd.effect.terms),
+                cont=" " * 52,
+            )
     for nm, why in diag.skipped.items():
         L += wrap_words(f"-  {nm:<20} not tried: {why}", cont=" " * 26)
     for k, rnd in enumerate(diag.rounds, start=1):
         for cnd in rnd:
             if cnd.reason:
-                L += wrap_words(f"{k}  {cnd.effect.name:<20} not accepted: {cnd.reason}", cont=" " * 26)
+                L += wrap_words(
+                    f"{k}  {cnd.effect.name:<20} not accepted: {cnd.reason}", cont=" " * 26
+                )
     rest = 0
     for k, a, b, _est, dbic, gain, why in diag.pairs:
         if why and (dbic >= rule.accept_dbic or gain < rule.min_gain):
             rest += 1
             continue
-        L += wrap_words(f"{k}  pair {a.effect.name} + {b.effect.name}: dBIC {dbic:.1f}, gain {gain:.1f} %: "
-                   + (f"not accepted: {why}" if why else "accepted (neither passes alone)"), cont=" " * 26)
+        L += wrap_words(
+            f"{k}  pair {a.effect.name} + {b.effect.name}: dBIC {dbic:.1f}, gain {gain:.1f} %: "
+            + (f"not accepted: {why}" if why else "accepted (neither passes alone)"),
+            cont=" " * 26,
+        )
     if rest:
-        L += wrap_words(f"-  {rest} pair{'s' if rest > 1 else ''} of these candidates tried together: none lowers BIC "
-                   f"by {-rule.accept_dbic:g} and predicts the held-out data {rule.min_gain:g} % better", cont=" " * 26)
+        L += wrap_words(
+            f"-  {rest} pair{'s' if rest > 1 else ''} of these candidates tried together: none lowers BIC "
+            f"by {-rule.accept_dbic:g} and predicts the held-out data {rule.min_gain:g} % better",
+            cont=" " * 26,
+        )
     L.append("")
     if diag.accepted:
         parts = []
@@ -189,33 +225,51 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
             if c.together and parts and parts[-1].startswith(c.together):
                 parts[-1] = parts[-1].replace(" (", f" together with {c.effect.name} (", 1)
                 continue
-            parts.append(f"{c.effect.name} ({c.effect.summary}; gain {c.gain:.0f} % on held-out data)")
+            parts.append(
+                f"{c.effect.name} ({c.effect.summary}; gain {c.gain:.0f} % on held-out data)"
+            )
         L += wrap_words("verdict: " + ", then ".join(parts), indent="", cont="  ")
-        L += wrap_words(f"final fit ({diag.final.method}" + (f"; {diag.final.note}" if diag.final.note else "") + ")",
-                   cont="    ")
+        L += wrap_words(
+            f"final fit ({diag.final.method}"
+            + (f"; {diag.final.note}" if diag.final.note else "")
+            + ")",
+            cont="    ",
+        )
         L += _param_lines(q, diag.final)
         L += wrap_words(f"{q} error: {_errors(diag, diag.final)}", indent="    ")
         for f in diag.flags.get("final", []):
             L += wrap_words(f"! {f}", indent="  ", cont="      ")
         L += _equivalent_lines(diag)
     elif not (diag.lost and diag.lost.accepted):
-        L += wrap_words("verdict: nothing named beyond the baseline: " + _why_none(diag), indent="", cont="  ")
+        L += wrap_words(
+            "verdict: nothing named beyond the baseline: " + _why_none(diag), indent="", cont="  "
+        )
     L += _lost_motion_lines(diag)
     L += unexplained_lines(diag)
-    L += wrap_words(f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves the two "
-               "are the same column")
+    L += wrap_words(
+        f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves the two "
+        "are the same column"
+    )
     return "\n".join(L)
 
 
 def _equivalent_text(diag: TimeDiagnosis, a, b, apart: float) -> str:
     top = diag.top_speed
-    notes = [f"{e.name}: {w}" for e in (a.effect, b.effect) if e.regime is not None for w in [e.regime(top)] if w]
-    return (f"{a.effect.name} and {b.effect.name} explain the data equally well: held-out RMSE {apart:.2f} % "
-            f"apart, within the rule's {TIME_RULE.resolution:g} % resolution (dBIC {a.dbic:.1f} against "
-            f"{b.dbic:.1f}); {a.effect.name} is named for its lower dBIC, not because the data tell them apart. "
-            + (" ".join(n[0].upper() + n[1:] + "." for n in notes) + " " if notes else "")
-            + f"To separate them: for {a.effect.name}, {a.effect.evidence or 'a test that shows it alone'}; "
-            f"for {b.effect.name}, {b.effect.evidence or 'a test that shows it alone'}.")
+    notes = [
+        f"{e.name}: {w}"
+        for e in (a.effect, b.effect)
+        if e.regime is not None
+        for w in [e.regime(top)]
+        if w
+    ]
+    return (
+        f"{a.effect.name} and {b.effect.name} explain the data equally well: held-out RMSE {apart:.2f} % "
+        f"apart, within the rule's {TIME_RULE.resolution:g} % resolution (dBIC {a.dbic:.1f} against "
+        f"{b.dbic:.1f}); {a.effect.name} is named for its lower dBIC, not because the data tell them apart. "
+        + (" ".join(n[0].upper() + n[1:] + "." for n in notes) + " " if notes else "")
+        + f"To separate them: for {a.effect.name}, {a.effect.evidence or 'a test that shows it alone'}; "
+        f"for {b.effect.name}, {b.effect.evidence or 'a test that shows it alone'}."
+    )
 
 
 def _equivalent_lines(diag: TimeDiagnosis) -> list:
@@ -231,19 +285,29 @@ def _lost_motion_lines(diag: TimeDiagnosis) -> list:
         return []
     q = diag.quantity
     b, sb = as_mm(diag, lm.width) * 1e3, as_mm(diag, lm.width_std) * 1e3
-    what = (f"motor_position against position: e = e0 + (b/2) sgn(F) + F/k, F = {q} - m1 a1 the force the "
-            f"transmission carries; b = {b:.3g} ± {sb:.2g} um of table travel")
+    what = (
+        f"motor_position against position: e = e0 + (b/2) sgn(F) + F/k, F = {q} - m1 a1 the force the "
+        f"transmission carries; b = {b:.3g} ± {sb:.2g} um of table travel"
+    )
     if math.isfinite(lm.stiffness) and lm.stiffness > 0:
         per_m = lm.stiffness / (as_mm(diag, 1.0) * 1e-3)  # effort per metre of table travel
-        k_txt = f"{per_m / 1e6:.3g} N/um" if q == "force" else f"{per_m / 1e6:.3g} N.m per um of table travel"
+        k_txt = (
+            f"{per_m / 1e6:.3g} N/um"
+            if q == "force"
+            else f"{per_m / 1e6:.3g} N.m per um of table travel"
+        )
         what += f", windup stiffness k {k_txt}"
     m_u = UNITS[q]["mass"][0]
-    what += (f", motor-side m1 {lm.motor_mass:.3g} {m_u}; held-out RMS of e {as_mm(diag, lm.rms_before) * 1e3:.3g} -> "
-             f"{as_mm(diag, lm.rms_after) * 1e3:.3g} um (gain {lm.gain:.0f} %)")
+    what += (
+        f", motor-side m1 {lm.motor_mass:.3g} {m_u}; held-out RMS of e {as_mm(diag, lm.rms_before) * 1e3:.3g} -> "
+        f"{as_mm(diag, lm.rms_after) * 1e3:.3g} um (gain {lm.gain:.0f} %)"
+    )
     if lm.accepted:
         head = "verdict: backlash (lost motion between motor and table, measured by the two encoders): "
         return wrap_words(head + what, indent="", cont="  ")
-    return wrap_words(f"lost motion between motor and table not named ({lm.reason}): {what}", indent="", cont="  ")
+    return wrap_words(
+        f"lost motion between motor and table not named ({lm.reason}): {what}", indent="", cont="  "
+    )
 
 
 def _why_none(diag: TimeDiagnosis) -> str:
@@ -251,27 +315,57 @@ def _why_none(diag: TimeDiagnosis) -> str:
     if not diag.rounds:
         return "no candidate effect applies to this record"
     best = diag.rounds[0][:3]
-    out = [f"{c.effect.name}: " + (f"dBIC {c.dbic:.1f} and gain {c.gain:.1f} %, but {c.reason}"
-                                   if c.reason.startswith("would need") else c.reason) for c in best]
+    out = [
+        f"{c.effect.name}: "
+        + (
+            f"dBIC {c.dbic:.1f} and gain {c.gain:.1f} %, but {c.reason}"
+            if c.reason.startswith("would need")
+            else c.reason
+        )
+        for c in best
+    ]
     return "; ".join(out)
 
 
 def _est_dict(q, est: Estimate) -> dict:
-    d = {"method": est.method, "note": est.note, "iterations": est.iterations, "converged": est.converged,
-         "parameters": [{"name": symbol(q, t), "value": float(v * unit_of(q, t)[1]), "std": float(s * unit_of(q, t)[1]),
-                         "unit": unit_of(q, t)[0], "label": term(t).label} for t, v, s in
-                        zip(est.terms, est.theta, est.std)]}
+    d = {
+        "method": est.method,
+        "note": est.note,
+        "iterations": est.iterations,
+        "converged": est.converged,
+        "parameters": [
+            {
+                "name": symbol(q, t),
+                "value": float(v * unit_of(q, t)[1]),
+                "std": float(s * unit_of(q, t)[1]),
+                "unit": unit_of(q, t)[0],
+                "label": term(t).label,
+            }
+            for t, v, s in zip(est.terms, est.theta, est.std)
+        ],
+    }
     if "vs" in est.shape:
         u, f = UNITS[q]["speed"]
-        d["parameters"].append({"name": "vs", "value": est.shape["vs"] * f, "std": None, "unit": u,
-                                "label": "Stribeck velocity (1-D search)"})
+        d["parameters"].append(
+            {
+                "name": "vs",
+                "value": est.shape["vs"] * f,
+                "std": None,
+                "unit": u,
+                "label": "Stribeck velocity (1-D search)",
+            }
+        )
     for nm, (label, u, f) in _shapes(q, est):
-        d["parameters"].append({"name": nm, "value": est.shape[nm] * f, "std": None, "unit": u, "label": label})
+        d["parameters"].append(
+            {"name": nm, "value": est.shape[nm] * f, "std": None, "unit": u, "label": label}
+        )
     for nm, v, u, label in _derived(q, est):
         d["parameters"].append({"name": nm, "value": v, "std": None, "unit": u, "label": label})
     fr = mode_frequency(est)
     if fr is not None:
-        d["parameters"].append({"name": "f_r", "value": fr, "std": None, "unit": "Hz", "label": "resonance"})
+        d["parameters"].append(
+            {"name": "f_r", "value": fr, "std": None, "unit": "Hz", "label": "resonance"}
+        )
     return d
 
 
@@ -286,38 +380,95 @@ def time_diagnosis_dict(diag: TimeDiagnosis) -> dict:
         "kind": "time_record",
         "design": diag.design.get("name"),
         "quantity": q,
-        "files": [{"file": r.record.source, "role": "estimation" if i == 0 else "validation",
-                   "samples": r.record.n, "rows": r.n} for i, r in enumerate(runs)],
-        "processing": {"fs_Hz": p.fs, "cutoff_Hz": p.fc, "cutoff_rule": p.rule, "motion_bandwidth_Hz": p.f_motion,
-                       "decimation": p.nd, "decimation_cutoff_Hz": p.fdec,
-                       "filter": f"zero-phase Butterworth order {BUTTER_ORDER} (|H|^2 by FFT)"},
+        "files": [
+            {
+                "file": r.record.source,
+                "role": "estimation" if i == 0 else "validation",
+                "samples": r.record.n,
+                "rows": r.n,
+            }
+            for i, r in enumerate(runs)
+        ],
+        "processing": {
+            "fs_Hz": p.fs,
+            "cutoff_Hz": p.fc,
+            "cutoff_rule": p.rule,
+            "motion_bandwidth_Hz": p.f_motion,
+            "decimation": p.nd,
+            "decimation_cutoff_Hz": p.fdec,
+            "filter": f"zero-phase Butterworth order {BUTTER_ORDER} (|H|^2 by FFT)",
+        },
         "controller": diag.controller.as_dict() if diag.controller else None,
-        "baseline": {"LS": {**_est_dict(q, diag.baseline_ls), "relative_error": errs(diag.baseline_ls)},
-                     "IV": {**_est_dict(q, diag.baseline_iv), "relative_error": errs(diag.baseline_iv)}},
-        "candidates": [[{"effect": c.effect.name, "dBIC": c.dbic, "gain_percent": c.gain,
-                         **_est_dict(q, c.estimate)} for c in rnd] for rnd in diag.rounds],
+        "baseline": {
+            "LS": {**_est_dict(q, diag.baseline_ls), "relative_error": errs(diag.baseline_ls)},
+            "IV": {**_est_dict(q, diag.baseline_iv), "relative_error": errs(diag.baseline_iv)},
+        },
+        "candidates": [
+            [
+                {
+                    "effect": c.effect.name,
+                    "dBIC": c.dbic,
+                    "gain_percent": c.gain,
+                    **_est_dict(q, c.estimate),
+                }
+                for c in rnd
+            ]
+            for rnd in diag.rounds
+        ],
         "skipped": diag.skipped,
         "verdict": diag.verdict,
-        "rejected": [{"round": k, "effect": c.effect.name, "dBIC": c.dbic, "would_need": why}
-                     for k, c, why in diag.rejected],
+        "rejected": [
+            {"round": k, "effect": c.effect.name, "dBIC": c.dbic, "would_need": why}
+            for k, c, why in diag.rejected
+        ],
         "gain_percent": [c.gain for c in diag.accepted],
-        "not_accepted": [{"round": k, "effect": c.effect.name, "dBIC": c.dbic, "gain_percent": c.gain,
-                          "reason": c.reason} for k, rnd in enumerate(diag.rounds, start=1) for c in rnd if c.reason],
-        "pairs": [{"round": k, "effects": [a.effect.name, b.effect.name], "dBIC": dbic, "gain_percent": gain,
-                   "accepted": not why, "reason": why} for k, a, b, _e, dbic, gain, why in diag.pairs],
+        "not_accepted": [
+            {
+                "round": k,
+                "effect": c.effect.name,
+                "dBIC": c.dbic,
+                "gain_percent": c.gain,
+                "reason": c.reason,
+            }
+            for k, rnd in enumerate(diag.rounds, start=1)
+            for c in rnd
+            if c.reason
+        ],
+        "pairs": [
+            {
+                "round": k,
+                "effects": [a.effect.name, b.effect.name],
+                "dBIC": dbic,
+                "gain_percent": gain,
+                "accepted": not why,
+                "reason": why,
+            }
+            for k, a, b, _e, dbic, gain, why in diag.pairs
+        ],
         "flags": diag.flags,
-        "equivalent": [{"round": k, "named": a.effect.name, "alternative": b.effect.name, "percent_apart": apart,
-                        "dBIC": [a.dbic, b.dbic], "text": _equivalent_text(diag, a, b, apart),
-                        "to_separate": {a.effect.name: a.effect.evidence, b.effect.name: b.effect.evidence}}
-                       for k, a, b, apart in diag.equivalent],
+        "equivalent": [
+            {
+                "round": k,
+                "named": a.effect.name,
+                "alternative": b.effect.name,
+                "percent_apart": apart,
+                "dBIC": [a.dbic, b.dbic],
+                "text": _equivalent_text(diag, a, b, apart),
+                "to_separate": {a.effect.name: a.effect.evidence, b.effect.name: b.effect.evidence},
+            }
+            for k, a, b, apart in diag.equivalent
+        ],
         "top_speed_mm_s": diag.top_speed * 1e3,
         "unexplained": unexplained_dict(diag),
-        "lost_motion": None if diag.lost is None else {
-            "accepted": diag.lost.accepted, "reason": diag.lost.reason,
-            "width_um": as_mm(diag, diag.lost.width) * 1e3, "width_std_um": as_mm(diag, diag.lost.width_std) * 1e3,
-            "gain_percent": diag.lost.gain},
+        "lost_motion": None
+        if diag.lost is None
+        else {
+            "accepted": diag.lost.accepted,
+            "reason": diag.lost.reason,
+            "width_um": as_mm(diag, diag.lost.width) * 1e3,
+            "width_std_um": as_mm(diag, diag.lost.width_std) * 1e3,
+            "gain_percent": diag.lost.gain,
+        },
         "final": {**_est_dict(q, diag.final), "relative_error": errs(diag.final)},
         "seconds": diag.times,
     }
-
-

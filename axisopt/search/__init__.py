@@ -28,5 +28,18 @@ from .infeasible.answer import Infeasibility, Relaxation
 from .result import Candidate, ParetoFront, SolveResult
 from .sensitivity import estimated_at_optimum, limit_sensitivities
 
-__all__ = ["solve", "METHODS", "METHOD_TABLE", "SolveResult", "Candidate", "Certificate", "Binding",
-           "Infeasibility", "ParetoFront", "Relaxation", "replace", "estimated_at_optimum", "limit_sensitivities"]
+__all__ = [
+    "solve",
+    "METHODS",
+    "METHOD_TABLE",
+    "SolveResult",
+    "Candidate",
+    "Certificate",
+    "Binding",
+    "Infeasibility",
+    "ParetoFront",
+    "Relaxation",
+    "replace",
+    "estimated_at_optimum",
+    "limit_sensitivities",
+]

@@ -21,8 +21,15 @@ from .certificate import Certificate
 from .result import INFEASIBLE, OPTIMAL, SolveResult
 from .task.objective import rank_order
 
-_SUMMED = ("combinations", "pruned_by_bound", "exact_evaluations", "nlps_solved", "nlp_failures", "pruned_by_block",
-           "pruned_by_dominance")
+_SUMMED = (
+    "combinations",
+    "pruned_by_bound",
+    "exact_evaluations",
+    "nlps_solved",
+    "nlp_failures",
+    "pruned_by_block",
+    "pruned_by_dominance",
+)
 
 
 @dataclass(frozen=True)
@@ -50,25 +57,35 @@ def _certificate(results) -> Certificate:
     kw = {f.name: getattr(certs[0], f.name) for f in fields(Certificate)}
     for name in _SUMMED:
         kw[name] = sum(getattr(c, name) for c in certs)
-    kw["feasible"] = None if any(c.feasible is None for c in certs) else sum(c.feasible for c in certs)
-    kw["screened"] = None if any(c.screened is None for c in certs) else sum(c.screened for c in certs)
-    # proven only if every arrangement's answer is: its optimum or its infeasibility (not a time limit's cut)
-    kw["proven"] = all(c.proven for c in certs) and all(r.status in (OPTIMAL, INFEASIBLE) for r in results)
+    kw["feasible"] = (
+        None if any(c.feasible is None for c in certs) else sum(c.feasible for c in certs)
+    )
+    kw["screened"] = (
+        None if any(c.screened is None for c in certs) else sum(c.screened for c in certs)
+    )
+    # proven only if every arrangement's answer is: its optimum or its infeasibility (not a time
+    # limit's cut)
+    kw["proven"] = all(c.proven for c in certs) and all(
+        r.status in (OPTIMAL, INFEASIBLE) for r in results
+    )
     kw["gap"] = max(c.gap for c in certs)
     kw["screening_time"] = sum(c.screening_time for c in certs)
     kw["notes"] = tuple(dict.fromkeys(n for c in certs for n in c.notes))
     return Certificate(**kw)
 
 
-def _sensitivities(problem: Problem, subs, results, win: int, method: str, deadline: float, cut: list,
-                   door: Door) -> list:
+def _sensitivities(
+    problem: Problem, subs, results, win: int, method: str, deadline: float, cut: list, door: Door
+) -> list:
     """The winner's limits, each with the best gain over every arrangement relaxed by sensitivity.RELAX (a limit the
     ``deadline`` cuts in any arrangement is left out, its key in ``cut``)."""
     RELAX, limit_sensitivities, solve = door.relax, door.limit_sensitivities, door.solve
 
     best = results[win].best.objective
-    per = [limit_sensitivities(sub, r, deadline=deadline, cut=cut) if r.best is not None else None
-           for sub, r in zip(subs, results)]
+    per = [
+        limit_sensitivities(sub, r, deadline=deadline, cut=cut) if r.best is not None else None
+        for sub, r in zip(subs, results)
+    ]
     out = []
     for b in per[win]:
         if b.limit in cut:
@@ -84,8 +101,13 @@ def _sensitivities(problem: Problem, subs, results, win: int, method: str, deadl
             lim, value = LIMITS[b.limit], sub.limit_map[b.limit]
             relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
             left = deadline - time.perf_counter()
-            rr = solve(sub.with_limit(b.limit, relaxed), method, top=1, sensitivities=False,
-                       time_limit=max(left, 1e-3))
+            rr = solve(
+                sub.with_limit(b.limit, relaxed),
+                method,
+                top=1,
+                sensitivities=False,
+                time_limit=max(left, 1e-3),
+            )
             if rr.status not in (OPTIMAL, INFEASIBLE):
                 cut.append(b.limit)
                 break
@@ -94,51 +116,95 @@ def _sensitivities(problem: Problem, subs, results, win: int, method: str, deadl
         if b.limit in cut:
             continue
         gain = reach - best
-        out.append(replace(b, objective_gain=gain, binding=bool(gain > 1e-6 * max(abs(best), 1e-9))))
+        out.append(
+            replace(b, objective_gain=gain, binding=bool(gain > 1e-6 * max(abs(best), 1e-9)))
+        )
     return out
 
 
-def _pareto(problem: Problem, method: str, subs, labels, t0: float, door: Door,
-            time_limit: float = 100.0) -> SolveResult:
+def _pareto(
+    problem: Problem, method: str, subs, labels, t0: float, door: Door, time_limit: float = 100.0
+) -> SolveResult:
     """A Pareto objective over the arrangements: each arrangement's front, merged and filtered to the designs no
     design of any arrangement dominates (each point names its arrangement)."""
     solve = door.solve
     from .pareto import FIELD, SENSE, nondominated
 
     deadline = t0 + time_limit
-    results = [solve(sub, method, sensitivities=False, time_limit=max(deadline - time.perf_counter(), 1e-3))
-               for sub in subs]
+    results = [
+        solve(
+            sub, method, sensitivities=False, time_limit=max(deadline - time.perf_counter(), 1e-3)
+        )
+        for sub in subs
+    ]
     n = len(results)
     cert = _certificate(results)
     fronts = [r.pareto for r in results]
-    pts = [replace(c, arrangement=labels[i]) for i, f in enumerate(fronts) if f is not None for c in f.points]
+    pts = [
+        replace(c, arrangement=labels[i])
+        for i, f in enumerate(fronts)
+        if f is not None
+        for c in f.points
+    ]
     keys = problem.objective.pareto
     first = next((f for f in fronts if f is not None), None)
     if not pts or first is None:
         r = results[0]
-        return replace(r, message=f"{n} arrangements tried ({'; '.join(labels)}), none feasible", certificate=cert,
-                       time=time.perf_counter() - t0, arrangements=n)
-    P = np.array([[getattr(c, FIELD[k]) * (1.0 if SENSE[k] == "max" else -1.0) for k in keys] for c in pts])
+        return replace(
+            r,
+            message=f"{n} arrangements tried ({'; '.join(labels)}), none feasible",
+            certificate=cert,
+            time=time.perf_counter() - t0,
+            arrangements=n,
+        )
+    P = np.array(
+        [[getattr(c, FIELD[k]) * (1.0 if SENSE[k] == "max" else -1.0) for k in keys] for c in pts]
+    )
     keep = nondominated(P)
     lead = np.array([P[j, 0] for j in keep])
     keep = [int(keep[j]) for j in np.argsort(-lead, kind="stable")]
     points = [replace(pts[j], rank=r + 1) for r, j in enumerate(keep)]
-    clouds = [np.asarray(f.cloud, dtype=float) for f in fronts if f is not None and f.cloud is not None]
-    front = replace(first, points=points, feasible=sum(f.feasible for f in fronts if f is not None),
-                    cloud=np.vstack(clouds) if clouds else None)
+    clouds = [
+        np.asarray(f.cloud, dtype=float) for f in fronts if f is not None and f.cloud is not None
+    ]
+    front = replace(
+        first,
+        points=points,
+        feasible=sum(f.feasible for f in fronts if f is not None),
+        cloud=np.vstack(clouds) if clouds else None,
+    )
     counts = {lab: sum(p.arrangement == lab for p in points) for lab in labels}
-    msg = f"{n} arrangements tried; front points by arrangement: " + "; ".join(f"{k} {v}" for k, v in counts.items())
+    msg = f"{n} arrangements tried; front points by arrangement: " + "; ".join(
+        f"{k} {v}" for k, v in counts.items()
+    )
     notes = tuple(n for n in cert.notes if not n.startswith("front size"))
-    cert = replace(cert, notes=notes + (f"front size {len(points)} (the arrangements' fronts merged: "
-                                        + ", ".join(str(len(f.points)) for f in fronts if f is not None) + ")",))
-    return replace(results[0], status=OPTIMAL if all(r.status in (OPTIMAL, INFEASIBLE) for r in results)
-                   else next(r.status for r in results if r.status not in (OPTIMAL, INFEASIBLE)),
-                   best=points[0], runners_up=[], pareto=front, certificate=cert, message=msg,
-                   time=time.perf_counter() - t0, arrangements=n)
+    cert = replace(
+        cert,
+        notes=notes
+        + (
+            f"front size {len(points)} (the arrangements' fronts merged: "
+            + ", ".join(str(len(f.points)) for f in fronts if f is not None)
+            + ")",
+        ),
+    )
+    return replace(
+        results[0],
+        status=OPTIMAL
+        if all(r.status in (OPTIMAL, INFEASIBLE) for r in results)
+        else next(r.status for r in results if r.status not in (OPTIMAL, INFEASIBLE)),
+        best=points[0],
+        runners_up=[],
+        pareto=front,
+        certificate=cert,
+        message=msg,
+        time=time.perf_counter() - t0,
+        arrangements=n,
+    )
 
 
-def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: float,
-                       sensitivities: bool, door: Door) -> SolveResult:
+def solve_arrangements(
+    problem: Problem, method: str, *, top: int, time_limit: float, sensitivities: bool, door: Door
+) -> SolveResult:
     """Solve every arrangement of ``problem`` with ``method`` and combine (see the module)."""
     solve = door.solve
 
@@ -149,8 +215,16 @@ def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: f
         return _pareto(problem, method, subs, labels, t0, door, time_limit)
     # one time limit for the whole command: each arrangement gets what the ones before it left
     deadline = t0 + time_limit
-    results = [solve(sub, method, top=top, time_limit=max(deadline - time.perf_counter(), 1e-3),
-                     sensitivities=False) for sub in subs]
+    results = [
+        solve(
+            sub,
+            method,
+            top=top,
+            time_limit=max(deadline - time.perf_counter(), 1e-3),
+            sensitivities=False,
+        )
+        for sub in subs
+    ]
     n = len(results)
     cert = _certificate(results)
     found = [i for i, r in enumerate(results) if r.best is not None]
@@ -159,34 +233,57 @@ def solve_arrangements(problem: Problem, method: str, *, top: int, time_limit: f
         close = min(range(n), key=lambda i: _miss(results[i]))
         r = results[close]
         msg = f"{tried}, none feasible; closest: {labels[close]}: {r.message}"
-        return replace(r, message=msg, certificate=cert, time=time.perf_counter() - t0, arrangement=labels[close],
-                       arrangements=n)
-    # every design found, ranked by the shared tie rule (the arrangement listed first wins an exact tie)
+        return replace(
+            r,
+            message=msg,
+            certificate=cert,
+            time=time.perf_counter() - t0,
+            arrangement=labels[close],
+            arrangements=n,
+        )
+    # every design found, ranked by the shared tie rule (the arrangement listed first wins an exact
+    # tie)
     cands = [(i, c) for i in found for c in [results[i].best] + list(results[i].runners_up)]
     obj = np.array([c.objective for _, c in cands])
     cost = np.array([c.cost for _, c in cands])
     mass = np.array([c.total_mass for _, c in cands])
-    order = rank_order(obj, cost, mass, np.arange(len(cands)), min(top, len(cands)) if top > 0 else 1)
+    order = rank_order(
+        obj, cost, mass, np.arange(len(cands)), min(top, len(cands)) if top > 0 else 1
+    )
     win = cands[order[0]][0]
     ranked = [replace(cands[k][1], rank=r + 1) for r, k in enumerate(order)]
     res = results[win]
     status = res.status
-    # optimal only if every arrangement is proven: solved to its optimum or proven infeasible (an arrangement
+    # optimal only if every arrangement is proven: solved to its optimum or proven infeasible (an
+    # arrangement
     # the time limit cut before any design may hold a better one)
     unproven = [r.status for r in results if r.status not in (OPTIMAL, INFEASIBLE)]
     if unproven and status == OPTIMAL:
         status = unproven[0]
     notes = [f"{labels[i]}: infeasible" for i in range(n) if results[i].status == INFEASIBLE]
-    notes += [f"{labels[i]}: {results[i].status} (not proven)" for i in range(n)
-              if results[i].status not in (OPTIMAL, INFEASIBLE) and i != win]
-    out = replace(res, status=status, best=ranked[0], runners_up=ranked[1:], certificate=cert,
-                  message="; ".join(x for x in [res.message] + notes if x), arrangement=labels[win], arrangements=n)
+    notes += [
+        f"{labels[i]}: {results[i].status} (not proven)"
+        for i in range(n)
+        if results[i].status not in (OPTIMAL, INFEASIBLE) and i != win
+    ]
+    out = replace(
+        res,
+        status=status,
+        best=ranked[0],
+        runners_up=ranked[1:],
+        certificate=cert,
+        message="; ".join(x for x in [res.message] + notes if x),
+        arrangement=labels[win],
+        arrangements=n,
+    )
     if sensitivities and door.sensitivities and problem.objective.mode != "lexicographic":
         cut_note = door.cut_note
         cut: list = []
         out.binding = _sensitivities(problem, subs, results, win, method, deadline, cut, door)
         if cut:
-            out.message = "; ".join(x for x in (out.message, cut_note("sensitivities", sorted(set(cut)))) if x)
+            out.message = "; ".join(
+                x for x in (out.message, cut_note("sensitivities", sorted(set(cut)))) if x
+            )
     out.certificate.estimated = results[win].certificate.estimated
     out.time = time.perf_counter() - t0
     return out

@@ -21,9 +21,17 @@ LOG = logging.getLogger("axisopt")
 PROGRESS = 2.0  # [s] between progress records of a long search
 
 
-def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top: int = 1, *,
-                       max_evaluations: int | None = None, incumbent: float = -np.inf, first_feasible: bool = False,
-                       deadline: float | None = None):
+def bound_order_search(
+    space: Space,
+    constraints,
+    objective: ObjectiveSpec,
+    top: int = 1,
+    *,
+    max_evaluations: int | None = None,
+    incumbent: float = -np.inf,
+    first_feasible: bool = False,
+    deadline: float | None = None,
+):
     """Default method core: best-first over blocks of combinations, never forming the whole product.
 
     1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives -- gets a
@@ -72,8 +80,10 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
         if now - shown > PROGRESS:
             shown = now
             found = sum(int(np.isfinite(p.objective).sum()) for p in parts)
-            LOG.info(f"  searching: {pos:,} of {len(bv):,} blocks screened, {n_eval:,} combinations solved, "
-                     f"{found:,} feasible, {now - t0:.0f} s")
+            LOG.info(
+                f"  searching: {pos:,} of {len(bv):,} blocks screened, {n_eval:,} combinations solved, "
+                f"{found:,} feasible, {now - t0:.0f} s"
+            )
         floor = objective_floor(thr)
         nxt = bv[pos] if pos < len(bv) else -np.inf
         best_pool = pool_bnd.max() if len(pool_bnd) else -np.inf
@@ -122,9 +132,17 @@ def bound_order_search(space: Space, constraints, objective: ObjectiveSpec, top:
     else:
         gap = float((rest - best) / max(abs(best), 1e-30)) if np.isfinite(best) else float("inf")
     screened = screened_blocks * GD
-    stats = SearchStats(combinations=space.size, feasible=int(feasible), pruned_by_bound=int(feasible - n_eval),
-                        exact_evaluations=int(n_eval), gap=gap, proven=gap == 0.0,
-                        screening_time=t_screen, screening_rate=space.size / max(t_screen, 1e-9),
-                        pruned_by_block=int(space.size - screened), screened=int(screened), timed_out=timed_out)
+    stats = SearchStats(
+        combinations=space.size,
+        feasible=int(feasible),
+        pruned_by_bound=int(feasible - n_eval),
+        exact_evaluations=int(n_eval),
+        gap=gap,
+        proven=gap == 0.0,
+        screening_time=t_screen,
+        screening_rate=space.size / max(t_screen, 1e-9),
+        pruned_by_block=int(space.size - screened),
+        screened=int(screened),
+        timed_out=timed_out,
+    )
     return ex, stats
-

@@ -82,7 +82,8 @@ def drive_bounds(problem, space, spec, drives=None):
 
 
 MOTOR_AXIS = 2  # of a rack space: rack, reduction, motor, twin pinion, guide
-LEVEL1_MIN = 200_000  # drives from which the rack space is first bounded per (rack, reduction, twin) block
+# drives from which the rack space is first bounded per (rack, reduction, twin) block
+LEVEL1_MIN = 200_000
 LEVEL1_BATCH = 8  # (rack, reduction, twin) blocks opened at a time
 
 
@@ -98,7 +99,11 @@ def block_bounds(space, spec):
         p = _reduced(space, which)
         red = (np.min if which == "light" else np.max)(p["m_parts"], axis=MOTOR_AXIS, keepdims=True)
         p = {
-            k: (v[:, :, :1] if isinstance(v, np.ndarray) and v.ndim == 5 and v.shape[MOTOR_AXIS] > 1 else v)
+            k: (
+                v[:, :, :1]
+                if isinstance(v, np.ndarray) and v.ndim == 5 and v.shape[MOTOR_AXIS] > 1
+                else v
+            )
             for k, v in p.items()
         }
         p["m_parts"] = red
@@ -139,8 +144,12 @@ def best_first(problem, space, spec, top: int):
                 break
             r, rd, t = np.unravel_index(blocks, bshape)
             drives = np.ravel_multi_index(
-                (np.repeat(r, n_mot), np.repeat(rd, n_mot), np.tile(np.arange(n_mot), blocks.size),
-                 np.repeat(t, n_mot)),
+                (
+                    np.repeat(r, n_mot),
+                    np.repeat(rd, n_mot),
+                    np.tile(np.arange(n_mot), blocks.size),
+                    np.repeat(t, n_mot),
+                ),
                 space.shape[:-1],
             )
             _visit(problem, space, spec, top, drives, state)

@@ -24,8 +24,10 @@ from .interval import Interval, ends
 from .task.constraints import reads_regen
 from .task.space import Space, shaped
 
-DRIVE_BEARING_GROUPS = 8  # bearings taken together in the drive limits' interval bounds (module docstring)
-# fewer searched drives than this: the screening and the explanation evaluate every drive without the per-drive
+# bearings taken together in the drive limits' interval bounds (module docstring)
+DRIVE_BEARING_GROUPS = 8
+# fewer searched drives than this: the screening and the explanation evaluate every drive without
+# the per-drive
 # bounds first (on the 1000-case study, 10 drives per case, the bounds cost more than they saved)
 PER_DRIVE_MIN = 64
 
@@ -36,20 +38,27 @@ def drive_pair_params(space: Space, mounting: str, nut_sel, bearings=None) -> di
     takes the guide only through the moving mass, the drag torque and the standstill friction passed to it."""
     s, nt, b = space.nut_bearing_arrays(nut_sel, float, bearings)
     g = shaped({k: v[:1] for k, v in space.g_arr.items()}, (1, 1, 1, 1), float)
-    return model.axis_params(space.problem.axis_for(mounting), s, nt, b, g, *space.drive_columns((1, 1, -1, 1)))
+    return model.axis_params(
+        space.problem.axis_for(mounting), s, nt, b, g, *space.drive_columns((1, 1, -1, 1))
+    )
 
 
-def drive_box(space: Space, mounting: str, nut_sel, regen: bool, bearings=None, across: bool = False):
+def drive_box(
+    space: Space, mounting: str, nut_sel, regen: bool, bearings=None, across: bool = False
+):
     """The drive block's outputs in interval arithmetic per (nut, bearing group, drive) of the nuts
     ``nut_sel`` (or per (nut, bearing) pair of ``bearings``, one group each): a list of (lower ends, upper
     ends) dicts, one per preload end (lowest, highest), or one over the whole preload range if ``across``;
     with ``group``, each bearing's group.  The lost motion (``backlash``: nut and reduction alone) is exact."""
-    pm = space.params_structured(mounting, nut_sel, mechanics=True, bearings=bearings)  # (n, B, guides, 1)
+    # (n, B, guides, 1)
+    pm = space.params_structured(mounting, nut_sel, mechanics=True, bearings=bearings)
     pd = drive_pair_params(space, mounting, nut_sel, bearings)  # (n, B, drives, 1)
     nc = len(space.nut_numbers(nut_sel))
     B = 1 if bearings is not None else space.shape[2]
     if B > 1:
-        torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[0, :, 0, 0]
+        torque = np.broadcast_to(np.asarray(pd["bearing_torque"], dtype=float), (1, B, 1, 1))[
+            0, :, 0, 0
+        ]
         order = np.argsort(torque, kind="stable")
         starts = np.unique(np.linspace(0, B, min(B, DRIVE_BEARING_GROUPS) + 1).astype(int)[:-1])
     else:
@@ -67,6 +76,7 @@ def drive_box(space: Space, mounting: str, nut_sel, regen: bool, bearings=None, 
         if B > 1 and a.ndim >= 2 and a.shape[1] == B and a.dtype.kind == "f":
             return Interval(*over_groups(a, a))
         return v
+
     pg = {k: (v if k == "duty" else by_group(v)) for k, v in pd.items()}
     backlash = np.broadcast_to(lost_motion(pd), (nc, 1, space.n_drives, 1))
     red = (nc, B, 1, 1)  # the guide axis reduced
@@ -75,16 +85,20 @@ def drive_box(space: Space, mounting: str, nut_sel, regen: bool, bearings=None, 
         """(least, largest) over the guides, as (nuts, bearings, 1, 1): reduced before any broadcast."""
         v = np.asarray(v, dtype=float)
         if v.ndim == 4 and v.shape[2] > 1:
-            return (np.broadcast_to(v.min(axis=2, keepdims=True), red),
-                    np.broadcast_to(v.max(axis=2, keepdims=True), red))
+            return (
+                np.broadcast_to(v.min(axis=2, keepdims=True), red),
+                np.broadcast_to(v.max(axis=2, keepdims=True), red),
+            )
         v = np.broadcast_to(v, red) if v.ndim < 4 or v.shape[2] == 1 else v
         return v, v
+
     inputs = []
     for pre in (space.preload_lo[nut_sel], space.preload_hi[nut_sel]):
         with np.errstate(divide="ignore"):
             moving, drag, hold_friction = model.drive_inputs(pm, pre.reshape(-1, 1, 1, 1))
         inputs.append([guide_range(v) for v in (moving, drag["drag_torque"], hold_friction)])
-    if across:  # every preload between the ends: the drag is affine in it, so the two ends' hull holds it
+    # every preload between the ends: the drag is affine in it, so the two ends' hull holds it
+    if across:
         inputs = [[(np.minimum(a[0], b[0]), np.maximum(a[1], b[1])) for a, b in zip(*inputs)]]
     out = []
     for vals in inputs:
@@ -96,8 +110,10 @@ def drive_box(space: Space, mounting: str, nut_sel, regen: bool, bearings=None, 
     return out, group
 
 
-# a mounting's hull is computed once for every nut and kept up to this many (nut, bearing group, drive) elements
-# (the interval drive block, about 2 us each: 3.4 s for the laser axis's 2 M) and this many (nut, bearing, guide)
+# a mounting's hull is computed once for every nut and kept up to this many (nut, bearing group,
+# drive) elements
+# (the interval drive block, about 2 us each: 3.4 s for the laser axis's 2 M) and this many (nut,
+# bearing, guide)
 # elements of the mechanics it takes; above, each caller's nuts are evaluated when asked
 HULL_CACHE = 100_000
 HULL_CACHE_MECHANICS = 4_000_000
@@ -111,7 +127,10 @@ def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
     N, B = space.shape[1], space.shape[2]
     nut_idx = space.nut_numbers(nut_sel)
     Gm = space.shape[3] // max(space.n_drives, 1)
-    if N * min(B, DRIVE_BEARING_GROUPS) * space.n_drives > HULL_CACHE or N * B * Gm > HULL_CACHE_MECHANICS:
+    if (
+        N * min(B, DRIVE_BEARING_GROUPS) * space.n_drives > HULL_CACHE
+        or N * B * Gm > HULL_CACHE_MECHANICS
+    ):
         (box,), group = drive_box(space, mounting, nut_idx, regen, bearings, across=True)
         return box, group
     key = ("drive hull", mounting, regen, DRIVE_BEARING_GROUPS)
@@ -131,7 +150,10 @@ def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
             first = np.arange(len(v)) if v.shape[0] > 1 else np.zeros(len(nut_idx), dtype=np.int64)
             v = v[first, group[np.asarray(bearings, dtype=np.int64)]][:, None]
         return v
-    box = tuple({k: rows(v) for k, v in end.items() if isinstance(v, (np.ndarray, float))} for end in box)
+
+    box = tuple(
+        {k: rows(v) for k, v in end.items() if isinstance(v, (np.ndarray, float))} for end in box
+    )
     return box, (np.zeros(1, dtype=np.int64) if bearings is not None else group)
 
 
@@ -173,12 +195,18 @@ def cost_parts(space: Space, mounting: str, nut_sel, group, bearings=None) -> tu
 
     nut_idx = space.nut_numbers(nut_sel)
     first = np.zeros(1, dtype=np.int64)
-    mech = np.asarray(cost(space.params_drives(mounting, nut_idx, bearings, drives=first)), dtype=float)
+    mech = np.asarray(
+        cost(space.params_drives(mounting, nut_idx, bearings, drives=first)), dtype=float
+    )
     nb = (len(nut_idx), len(group))
-    mech = np.broadcast_to(mech, nb + mech.shape[2:]).min(axis=(2, 3))  # (nuts, bearings), the first drive
-    one = space.params_drives(mounting, nut_idx[:1], np.zeros(1, dtype=np.int64))  # one nut and bearing
+    # (nuts, bearings), the first drive
+    mech = np.broadcast_to(mech, nb + mech.shape[2:]).min(axis=(2, 3))
+    # one nut and bearing
+    one = space.params_drives(mounting, nut_idx[:1], np.zeros(1, dtype=np.int64))
     per = np.asarray(cost(one), dtype=float)
-    per = np.broadcast_to(per, per.shape[:3] + (space.n_drives,))[0, 0, 0]  # one combination, every drive
+    # one combination, every drive
+    per = np.broadcast_to(per, per.shape[:3] + (space.n_drives,))[0, 0, 0]
     n_groups = int(group.max()) + 1
-    by_group = np.stack([mech[:, group == k].min(axis=1) for k in range(n_groups)], axis=1)  # (nuts, groups)
+    # (nuts, groups)
+    by_group = np.stack([mech[:, group == k].min(axis=1) for k in range(n_groups)], axis=1)
     return by_group, per - per[0]

@@ -40,10 +40,14 @@ from .drivedesigns import (
 )
 
 OTHER_TYPES = ("rack_pinion", "linear_motor")
-# rack and pinion is offered by default from this stroke [m]: builders use it beyond about 4 m, below it a
-# screw (issue 54's router; Thomson: screw drives "commonly" reach 5.5-6 m with support bearing pairs).  A
-# shorter axis compares it when search.drive_types lists it: its stiffness rests on the mesh estimate
-# (physics.rack, ISO 6336 guidance) and counts no pinion-shaft, gearbox-bearing or mounting compliance, so on
+# rack and pinion is offered by default from this stroke [m]: builders use it beyond about 4 m,
+# below it a
+# screw (issue 54's router; Thomson: screw drives "commonly" reach 5.5-6 m with support bearing
+# pairs).  A
+# shorter axis compares it when search.drive_types lists it: its stiffness rests on the mesh
+# estimate
+# (physics.rack, ISO 6336 guidance) and counts no pinion-shaft, gearbox-bearing or mounting
+# compliance, so on
 # a short axis it would win on an optimistic estimate (the rule of model.estimates)
 RACK_MIN_STROKE = 4.0
 SCREW_SLOTS = ("screw", "nut", "bearing")

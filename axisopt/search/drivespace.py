@@ -166,11 +166,16 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
     R = lambda col: _shape([r[col] for r in racks], 0, nd)  # noqa: E731
     red = lambda col: _shape(reductions[col], 1, nd)  # noqa: E731
     mot = lambda col: _shape(motors[col], 2, nd)  # noqa: E731
-    # each motor by its vendor's rule (model.motorrule; a row without one: the harshest), unless the problem asks
+    # each motor by its vendor's rule (model.motorrule; a row without one: the harshest), unless the
+    # problem asks
     # one RMS ratio of every motor (axis.rms_torque_ratio)
     mot_rule = lambda col, default: _shape(  # noqa: E731
-        np.where(np.isfinite(np.asarray(motors[col], float)), motors[col], default) if col in motors else
-        np.full(len(motors["rated_torque"]), default), 2, nd)
+        np.where(np.isfinite(np.asarray(motors[col], float)), motors[col], default)
+        if col in motors
+        else np.full(len(motors["rated_torque"]), default),
+        2,
+        nd,
+    )
     twin = _shape(choice.twin_pinion, 3, nd)
     g = {k: _shape(v, 4, nd) for k, v in _guides(guides, side).items()}
     m_motor = np.where(
@@ -208,7 +213,9 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
         "kt_red": red("torsional_stiffness"),
         "twin": twin,
         "bias": choice.preload_bias,
-        "rms_ratio": side.rms_ratio if side.rms_ratio is not None else mot_rule("rms_ratio", DEFAULT_RULE.rms),
+        "rms_ratio": side.rms_ratio
+        if side.rms_ratio is not None
+        else mot_rule("rms_ratio", DEFAULT_RULE.rms),
         "max_inertia_ratio": side.max_inertia_ratio,
         "k_n": g["k_n"],
         "blocks": side.blocks,

@@ -24,7 +24,8 @@ from .task.constraints import ok_all
 from .task.objective import ObjectiveSpec
 from .task.space import Space, respond
 
-# the goals a result carries, by whether their output moves with the nut preload (model.limits.OUTPUT_PRELOAD)
+# the goals a result carries, by whether their output moves with the nut preload
+# (model.limits.OUTPUT_PRELOAD)
 PRELOAD_GOALS = tuple(g for g in RESULT_GOALS if OUTPUT_PRELOAD.get(g.output, 0))
 FIXED_GOALS = tuple(g for g in RESULT_GOALS if not OUTPUT_PRELOAD.get(g.output, 0))
 
@@ -51,7 +52,8 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
             res.goals[key][sel] = v
         low, up = lo.copy(), hi.copy()
         for c in dep:
-            w = np.nonzero(ok)[0]  # only the combinations every limit so far allows (exact, not a bound)
+            # only the combinations every limit so far allows (exact, not a bound)
+            w = np.nonzero(ok)[0]
             if not len(w):
                 break
             pw = subset(p, w, k)
@@ -78,7 +80,9 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
                 aj, zj = a[j], z[j]
                 for _ in range(BISECTION_STEPS):
                     mid = 0.5 * (aj + zj)
-                    good = ok_all([c], respond(pj, xc, mounting, mid[:, None], space.request), len(j))
+                    good = ok_all(
+                        [c], respond(pj, xc, mounting, mid[:, None], space.request), len(j)
+                    )
                     aj = np.where(good, mid, aj)
                     zj = np.where(good, zj, mid)
                 a[j] = aj
@@ -108,7 +112,8 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
         res.objective[sel] = best_obj
         res.preload[sel] = best_pre
         f = np.nonzero(feas)[0]
-        vals = {g.key: np.full(k, np.nan) for g in PRELOAD_GOALS}  # at the best preload, NaN where infeasible
+        # at the best preload, NaN where infeasible
+        vals = {g.key: np.full(k, np.nan) for g in PRELOAD_GOALS}
         if len(f):
             out = respond(subset(p, f, k), x, mounting, best_pre[f][:, None], space.request)
             for key, v in goal_arrays(out, len(f), PRELOAD_GOALS).items():
@@ -118,8 +123,14 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
     return res
 
 
-def exhaustive_search(space: Space, constraints, objective: ObjectiveSpec, chunk: int = 20000, *,
-                      deadline: float | None = None):
+def exhaustive_search(
+    space: Space,
+    constraints,
+    objective: ObjectiveSpec,
+    chunk: int = 20000,
+    *,
+    deadline: float | None = None,
+):
     """Every combination of ``space``, ``chunk`` at a time (:func:`grid_solve`).  ``deadline`` (a
     time.perf_counter() value): stop there with the chunks solved so far (``stats.timed_out``, not proven, gap
     unknown: no bound covers the rest); every :data:`.bestfirst.PROGRESS` seconds a progress record goes to the
@@ -133,12 +144,23 @@ def exhaustive_search(space: Space, constraints, objective: ObjectiveSpec, chunk
             break
         if now - shown > bestfirst.PROGRESS:
             shown = now
-            bestfirst.LOG.info(f"  exhaustive: {done:,} of {space.size:,} combinations solved, {now - t0:.0f} s")
-        parts.append(grid_solve(space, np.arange(s, min(space.size, s + chunk)), constraints, objective))
+            bestfirst.LOG.info(
+                f"  exhaustive: {done:,} of {space.size:,} combinations solved, {now - t0:.0f} s"
+            )
+        parts.append(
+            grid_solve(space, np.arange(s, min(space.size, s + chunk)), constraints, objective)
+        )
         done = min(space.size, s + chunk)
     ex = concat_exact(parts) if parts else grid_solve(space, [], constraints, objective)
-    stats = SearchStats(combinations=space.size, feasible=int(ex.feasible.sum()), pruned_by_bound=0,
-                        exact_evaluations=done, gap=float("nan") if timed_out else 0.0, proven=not timed_out,
-                        screening_time=0.0, screening_rate=done / max(time.perf_counter() - t0, 1e-9),
-                        timed_out=timed_out)
+    stats = SearchStats(
+        combinations=space.size,
+        feasible=int(ex.feasible.sum()),
+        pruned_by_bound=0,
+        exact_evaluations=done,
+        gap=float("nan") if timed_out else 0.0,
+        proven=not timed_out,
+        screening_time=0.0,
+        screening_rate=done / max(time.perf_counter() - t0, 1e-9),
+        timed_out=timed_out,
+    )
     return ex, stats

@@ -27,8 +27,10 @@ from .task import Task
 if TYPE_CHECKING:
     from .task.objective import ObjectiveSpec
 
-# a stiffness or frequency optimum is compared with the cheapest design within the problem's tolerance of it
-# (objective.tolerance, or this when the problem gives none) and said when that one costs at least MARKEDLY less
+# a stiffness or frequency optimum is compared with the cheapest design within the problem's
+# tolerance of it
+# (objective.tolerance, or this when the problem gives none) and said when that one costs at least
+# MARKEDLY less
 CHEAPER_TOLERANCE = 0.01
 MARKEDLY = 0.05
 
@@ -51,27 +53,44 @@ def _run_search(task: Task, method: str, top: int, time_limit: float, t0: float)
     if method == "exhaustive":
         from .exhaustive import exhaustive_search
 
-        ex, stats = exhaustive_search(task.space, task.constraints, task.objective, deadline=t0 + time_limit)
+        ex, stats = exhaustive_search(
+            task.space, task.constraints, task.objective, deadline=t0 + time_limit
+        )
     else:
         from .bestfirst import bound_order_search
 
-        ex, stats = bound_order_search(task.space, task.constraints, task.objective, top=top,
-                                       deadline=t0 + time_limit)
+        ex, stats = bound_order_search(
+            task.space, task.constraints, task.objective, top=top, deadline=t0 + time_limit
+        )
     return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit)
 
 
 def _run_bonmin(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
     from .minlp import solve_bonmin
 
-    return solve_bonmin(task.problem, task.space, task.constraints, task.objective, time_limit=time_limit,
-                        top=top, t0=t0)
+    return solve_bonmin(
+        task.problem,
+        task.space,
+        task.constraints,
+        task.objective,
+        time_limit=time_limit,
+        top=top,
+        t0=t0,
+    )
 
 
 def _run_scip(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
     from .minlp import solve_scip
 
-    return solve_scip(task.problem, task.space, task.constraints, task.objective, time_limit=time_limit, top=top,
-                      t0=t0)
+    return solve_scip(
+        task.problem,
+        task.space,
+        task.constraints,
+        task.objective,
+        time_limit=time_limit,
+        top=top,
+        t0=t0,
+    )
 
 
 @dataclass(frozen=True)
@@ -88,21 +107,55 @@ class Method:
 
 
 METHOD_TABLE = (
-    Method("default", _run_search, True, True, True, True,
-           "block bounds, screening, exact preload solve in bound order, IPOPT polish; proves the optimum"),
-    Method("exhaustive", _run_search, True, True, True, True,
-           "every combination, preload on a grid of its feasible interval; the ground truth"),
-    Method("bonmin", _run_bonmin, False, False, False, False,
-           "CasADi Bonmin MINLP with one-hot part selection; a heuristic reference"),
-    Method("scip", _run_scip, True, False, False, False,
-           "the same MINLP solved globally by SCIP (optional extra axisopt[scip])"),
+    Method(
+        "default",
+        _run_search,
+        True,
+        True,
+        True,
+        True,
+        "block bounds, screening, exact preload solve in bound order, IPOPT polish; proves the optimum",
+    ),
+    Method(
+        "exhaustive",
+        _run_search,
+        True,
+        True,
+        True,
+        True,
+        "every combination, preload on a grid of its feasible interval; the ground truth",
+    ),
+    Method(
+        "bonmin",
+        _run_bonmin,
+        False,
+        False,
+        False,
+        False,
+        "CasADi Bonmin MINLP with one-hot part selection; a heuristic reference",
+    ),
+    Method(
+        "scip",
+        _run_scip,
+        True,
+        False,
+        False,
+        False,
+        "the same MINLP solved globally by SCIP (optional extra axisopt[scip])",
+    ),
 )
 METHODS_BY_NAME = MappingProxyType({m.name: m for m in METHOD_TABLE})
 METHODS = tuple(METHODS_BY_NAME)
 
 
-def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit: float = 100.0,
-          sensitivities: bool = True) -> SolveResult:
+def solve(
+    problem: Problem,
+    method: str = "default",
+    *,
+    top: int = 5,
+    time_limit: float = 100.0,
+    sensitivities: bool = True,
+) -> SolveResult:
     """Solve a sizing problem.
 
     problem       : :class:`axisopt.problem.Problem`
@@ -117,15 +170,20 @@ def solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit
     What the search left out of the design (the drive, and why) is on the answer's ``left_out``.
     """
     if getattr(problem, "drives", None) is not None:
-        raise InputError("a problem with search.drive_types is solved over its drive types "
-                         "(search.drivetype.solve_drive_types; axisopt solve and axisopt.solve do)",
-                         source=problem.source, where="search.drive_types")
+        raise InputError(
+            "a problem with search.drive_types is solved over its drive types "
+            "(search.drivetype.solve_drive_types; axisopt solve and axisopt.solve do)",
+            source=problem.source,
+            where="search.drive_types",
+        )
     res = _solve(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
     _shown_sign(problem, res)
     why = problem.restrictions.drive_left_out
     if why and not res.left_out:
-        res.left_out = (f"the drive (motor, coupling, reduction) is not sized: {why}; the axis's motor_inertia and "
-                        "coupling values stand in and no motor check is made",)
+        res.left_out = (
+            f"the drive (motor, coupling, reduction) is not sized: {why}; the axis's motor_inertia and "
+            "coupling values stand in and no motor check is made",
+        )
     return res
 
 
@@ -144,71 +202,113 @@ def _shown_sign(problem: Problem, res: SolveResult) -> None:
     for c in [res.best] + list(res.runners_up):
         if c is not None:
             c.objective = -c.objective
-    res.binding = [replace(b, objective_gain=None if b.objective_gain is None else -b.objective_gain)
-                   for b in res.binding]  # SolveResult wraps the list in a Bindings
+    res.binding = [
+        replace(b, objective_gain=None if b.objective_gain is None else -b.objective_gain)
+        for b in res.binding
+    ]  # SolveResult wraps the list in a Bindings
 
 
-def _solve(problem: Problem, method: str = "default", *, top: int = 5, time_limit: float = 100.0,
-           sensitivities: bool = True) -> SolveResult:
+def _solve(
+    problem: Problem,
+    method: str = "default",
+    *,
+    top: int = 5,
+    time_limit: float = 100.0,
+    sensitivities: bool = True,
+) -> SolveResult:
     """:func:`solve` without the left-out statement."""
     if method not in METHODS_BY_NAME:
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
     m = METHODS_BY_NAME[method]
-    if problem.arrangements:  # search.counterbalance / search.twin_drive: each arrangement solved, the best kept
+    # search.counterbalance / search.twin_drive: each arrangement solved, the best kept
+    if problem.arrangements:
         from .arrangements import Door, solve_arrangements
 
         door = Door(solve, limit_sensitivities, RELAX, m.sensitivities, cut_note)
-        return solve_arrangements(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities,
-                                  door=door)
+        return solve_arrangements(
+            problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities, door=door
+        )
     t0 = time.perf_counter()
     ob = problem.objective
     if problem.axis.twin_drive is not None and not m.pareto:
-        # the MINLP references are built on the same model, but SCIP's LP relaxation of the gantry's 2-DOF
-        # eigenvalues contradicted enumeration on a synthetic twin-drive problem: refused, not trusted
-        raise InputError(f"--method {method} does not take a twin-drive gantry (axis.twin_drive) yet; use --method "
-                         "default or exhaustive", source=problem.source)
+        # the MINLP references are built on the same model, but SCIP's LP relaxation of the gantry's
+        # 2-DOF
+        # eigenvalues contradicted enumeration on a synthetic twin-drive problem: refused, not
+        # trusted
+        raise InputError(
+            f"--method {method} does not take a twin-drive gantry (axis.twin_drive) yet; use --method "
+            "default or exhaustive",
+            source=problem.source,
+        )
     if ob.mode == "pareto":
         if not m.pareto:
-            raise InputError(f"--method {method} solves one scalar objective; a Pareto front needs "
-                             f"--method {' or '.join(x.name for x in METHOD_TABLE if x.pareto)}",
-                             source=problem.source)
+            raise InputError(
+                f"--method {method} solves one scalar objective; a Pareto front needs "
+                f"--method {' or '.join(x.name for x in METHOD_TABLE if x.pareto)}",
+                source=problem.source,
+            )
         from .pareto import solve_pareto
 
         return solve_pareto(problem, method=method, t0=t0)
     if ob.mode == "lexicographic":
         from .task.objective import objective_spec
 
-        res = _solve_lexicographic(build_task(problem, objective_spec(ob.order[1])), m, top, time_limit, t0)
+        res = _solve_lexicographic(
+            build_task(problem, objective_spec(ob.order[1])), m, top, time_limit, t0
+        )
     else:
         task = build_task(problem)
         res = m.run(task, method, top, time_limit, t0)
-        deadline = t0 + time_limit  # the whole command's: the what-ifs below stop there too, and say so
+        # the whole command's: the what-ifs below stop there too, and say so
+        deadline = t0 + time_limit
         if sensitivities and res.best is not None and m.sensitivities:
             cut: list = []
-            res.binding = limit_sensitivities(problem, res, space=task.space, deadline=deadline, cut=cut)
+            res.binding = limit_sensitivities(
+                problem, res, space=task.space, deadline=deadline, cut=cut
+            )
             if cut:
-                res.message = "; ".join(x for x in (res.message, cut_note("sensitivities", cut)) if x)
+                res.message = "; ".join(
+                    x for x in (res.message, cut_note("sensitivities", cut)) if x
+                )
         if sensitivities and res.infeasibility is not None and method == "default":
-            # the infeasible answer's what-if: an axis change the search verifies, before any limit is relaxed
+            # the infeasible answer's what-if: an axis change the search verifies, before any limit
+            # is relaxed
             from .infeasible.advice import design_changes
+
             cut = []
-            res.infeasibility.design_changes = design_changes(problem, task.constraints, res.infeasibility,
-                                                              space=task.space, deadline=deadline, cut=cut)
+            res.infeasibility.design_changes = design_changes(
+                problem,
+                task.constraints,
+                res.infeasibility,
+                space=task.space,
+                deadline=deadline,
+                cut=cut,
+            )
             if cut:
                 res.message = "; ".join(x for x in (res.message, cut_note("advice", cut)) if x)
             res.time = time.perf_counter() - t0
         if res.best is not None and res.best.design is not None:
-            res.certificate.estimated = estimated_at_optimum(problem, res, [k for k, _ in task.objective.terms])
-        if sensitivities and method == "default" and res.best is not None and ob.mode in ("stiffness", "frequency"):
+            res.certificate.estimated = estimated_at_optimum(
+                problem, res, [k for k, _ in task.objective.terms]
+            )
+        if (
+            sensitivities
+            and method == "default"
+            and res.best is not None
+            and ob.mode in ("stiffness", "frequency")
+        ):
             res.cheaper = cheaper_near(task, res, m, time_limit, t0)
             res.time = time.perf_counter() - t0
     if top > 1 and not m.runners_up:
         res.certificate.notes = res.certificate.notes + (
-            f"--method {method} returns the best design only (top {top} asked: no runners-up)",)
+            f"--method {method} returns the best design only (top {top} asked: no runners-up)",
+        )
     return res
 
 
-def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0: float) -> SolveResult:
+def _solve_lexicographic(
+    task: Task, m: Method, top: int, time_limit: float, t0: float
+) -> SolveResult:
     """The primary objective's optimum, then the secondary's over the designs within the tolerance of it."""
     from .task.constraints import limit_constraint
     from .task.objective import objective_spec
@@ -220,21 +320,30 @@ def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0:
         return first
     j1 = first.best.objective  # the search's value: a least cost or mass is its negative
     sign = objective_spec(primary).sign
-    bound = sign * (j1 - max(ob.tolerance, 1e-9) * abs(j1))  # a floor (maximised goal) or a ceiling (least)
+    # a floor (maximised goal) or a ceiling (least)
+    bound = sign * (j1 - max(ob.tolerance, 1e-9) * abs(j1))
     lim = LIMITS[GOALS[primary].limit]
-    extra = limit_constraint(lim.key, bound * lim.factor, f"lexicographic {primary}",
-                             f"{primary} within {ob.tolerance:g} of its best {sign * j1:.6g}")
+    extra = limit_constraint(
+        lim.key,
+        bound * lim.factor,
+        f"lexicographic {primary}",
+        f"{primary} within {ob.tolerance:g} of its best {sign * j1:.6g}",
+    )
     res = m.run(replace(task, constraints=task.constraints + (extra,)), m.name, top, time_limit, t0)
-    res.objective_label = f"{ob.label}: primary best {sign * j1:.6g} {first.objective_unit}; " + res.objective_label
+    res.objective_label = (
+        f"{ob.label}: primary best {sign * j1:.6g} {first.objective_unit}; " + res.objective_label
+    )
     res.certificate.notes = res.certificate.notes + (
         f"stage 1 ({primary}): {first.certificate.exact_evaluations} exact evaluations, "
-        f"{first.certificate.nlps_solved} NLPs, gap {first.certificate.gap:g}",)
+        f"{first.certificate.nlps_solved} NLPs, gap {first.certificate.gap:g}",
+    )
     res.certificate.nlps_solved += first.certificate.nlps_solved
     res.certificate.proven = res.certificate.proven and first.certificate.proven
     if first.status != OPTIMAL and res.status == OPTIMAL:  # stage 2 proven on an unproven stage 1
         res.status = first.status
-        res.message = "; ".join(x for x in (f"stage 1 ({primary}): {first.message or first.status}",
-                                            res.message) if x)
+        res.message = "; ".join(
+            x for x in (f"stage 1 ({primary}): {first.message or first.status}", res.message) if x
+        )
     if res.best is not None and res.best.design is not None:  # both stages' objectives
         terms = [k for st in (primary, secondary) for k, _ in objective_spec(st).terms]
         res.certificate.estimated = estimated_at_optimum(problem, res, terms)
@@ -242,7 +351,9 @@ def _solve_lexicographic(task: Task, m: Method, top: int, time_limit: float, t0:
     return res
 
 
-def cheaper_near(task: Task, res: SolveResult, m: Method, time_limit: float, t0: float) -> dict | None:
+def cheaper_near(
+    task: Task, res: SolveResult, m: Method, time_limit: float, t0: float
+) -> dict | None:
     """The cheapest design whose objective is within the problem's tolerance (``objective.tolerance``, else
     :data:`CHEAPER_TOLERANCE`) of the optimum ``res.best``, when it costs at least :data:`MARKEDLY` less; else
     None.  The lexicographic solve's second stage: the least cost with the objective floored, same method."""
@@ -254,20 +365,38 @@ def cheaper_near(task: Task, res: SolveResult, m: Method, time_limit: float, t0:
     goal = GOALS[problem.objective.mode]
     lim = LIMITS[goal.limit]
     floor = best.objective * (1.0 - tol)
-    extra = limit_constraint(lim.key, floor * lim.factor, f"within {tol:g} of the best",
-                             f"{goal.key} within {tol:g} of its best {best.objective:.6g}")
-    cheap = m.run(replace(task, objective=objective_spec("cost"), constraints=task.constraints + (extra,)),
-                  m.name, 1, time_limit, t0)
+    extra = limit_constraint(
+        lim.key,
+        floor * lim.factor,
+        f"within {tol:g} of the best",
+        f"{goal.key} within {tol:g} of its best {best.objective:.6g}",
+    )
+    cheap = m.run(
+        replace(task, objective=objective_spec("cost"), constraints=task.constraints + (extra,)),
+        m.name,
+        1,
+        time_limit,
+        t0,
+    )
     c = cheap.best
     if c is None or not c.cost < best.cost * (1.0 - MARKEDLY):
         return None
-    return {"tolerance": tol, "objective": c.goal(goal.key), "unit": goal.unit, "cost": c.cost,
-            "best_cost": best.cost, "proven": bool(cheap.certificate.proven), "mounting": c.mounting,
-            "parts": c.parts(), "nut_preload": c.nut_preload}
+    return {
+        "tolerance": tol,
+        "objective": c.goal(goal.key),
+        "unit": goal.unit,
+        "cost": c.cost,
+        "best_cost": best.cost,
+        "proven": bool(cheap.certificate.proven),
+        "mounting": c.mounting,
+        "parts": c.parts(),
+        "nut_preload": c.nut_preload,
+    }
 
 
-def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
-                  deadline: float | None = None) -> SolveResult:
+def scalar_result(
+    task: Task, method: str, ex, stats, top: int, t0: float, *, deadline: float | None = None
+) -> SolveResult:
     """The SolveResult of a search that ends in the exact solves ``ex`` with statistics ``stats``: infeasible
     (with the explanation, cut at ``deadline``, and what to relax), or the ``top`` best polished by IPOPT."""
     from .polish import polish
@@ -275,16 +404,26 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
     problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
     stats.pruned_by_dominance = space.pruned_by_dominance
     if not np.isfinite(ex.objective).any() and stats.timed_out:
-        return SolveResult(TIME_LIMIT, method, problem.name, spec.label, spec.unit, None, [],
-                           replace(Certificate.of(stats), proven=False),
-                           time.perf_counter() - t0, message="the time limit came before any design was found: not "
-                           "proven infeasible (a longer --time-limit searches on)")
+        return SolveResult(
+            TIME_LIMIT,
+            method,
+            problem.name,
+            spec.label,
+            spec.unit,
+            None,
+            [],
+            replace(Certificate.of(stats), proven=False),
+            time.perf_counter() - t0,
+            message="the time limit came before any design was found: not "
+            "proven infeasible (a longer --time-limit searches on)",
+        )
     if not np.isfinite(ex.objective).any():
         from .infeasible.explain import explain_infeasible
         from .infeasible.relax import missing_values, rank_relaxations
 
-        why = explain_infeasible(space, constraints, spec, every_combination=method == "exhaustive",
-                                 deadline=deadline)
+        why = explain_infeasible(
+            space, constraints, spec, every_combination=method == "exhaustive", deadline=deadline
+        )
         why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
         why.missing = missing_values(constraints, why, space)
         message = "no catalog combination meets every limit"
@@ -294,17 +433,39 @@ def scalar_result(task: Task, method: str, ex, stats, top: int, t0: float, *,
             message += "; " + cut_note(why)
         if space.reductions_by_backlash:
             lim = problem.limit_map.get("max_backlash", 0.0)
-            message += (f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each one's "
-                        f"backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) even on the shortest "
-                        "lead; admit some lost motion to let the search choose one")
-        return SolveResult(INFEASIBLE, method, problem.name, spec.label, spec.unit, None, [], Certificate.of(stats),
-                           time.perf_counter() - t0, message=message, infeasibility=why)
+            message += (
+                f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each one's "
+                f"backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) even on the shortest "
+                "lead; admit some lost motion to let the search choose one"
+            )
+        return SolveResult(
+            INFEASIBLE,
+            method,
+            problem.name,
+            spec.label,
+            spec.unit,
+            None,
+            [],
+            Certificate.of(stats),
+            time.perf_counter() - t0,
+            message=message,
+            infeasibility=why,
+        )
     cands, nlps, failed_ranks, notes = polish(space, ex, constraints, spec, top)
     cert = Certificate.of(stats, nlps, len(failed_ranks), notes)
     status = OPTIMAL if cert.proven else TIME_LIMIT
     if 1 in failed_ranks:  # IPOPT failed on the best design (its 1-D solution is kept)
         status = SOLVER_FAILED
-    return SolveResult(status, method, problem.name, spec.label, spec.unit, cands[0], cands[1:], cert,
-                       time.perf_counter() - t0, message="; ".join(notes), solver_status="ipopt")
-
-
+    return SolveResult(
+        status,
+        method,
+        problem.name,
+        spec.label,
+        spec.unit,
+        cands[0],
+        cands[1:],
+        cert,
+        time.perf_counter() - t0,
+        message="; ".join(notes),
+        solver_status="ipopt",
+    )

@@ -163,6 +163,7 @@ class Interval:
 def ends(out: dict) -> tuple[dict, dict]:
     """(lower ends, upper ends) of a dict of model outputs: an Interval's ends, any other value as it is (lists
     and tuples of values element by element)."""
+
     def lo(v):
         if isinstance(v, (list, tuple)):
             return type(v)(lo(x) for x in v)
@@ -172,4 +173,5 @@ def ends(out: dict) -> tuple[dict, dict]:
         if isinstance(v, (list, tuple)):
             return type(v)(hi(x) for x in v)
         return v.hi if isinstance(v, Interval) else v
+
     return {k: lo(v) for k, v in out.items()}, {k: hi(v) for k, v in out.items()}

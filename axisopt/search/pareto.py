@@ -26,7 +26,8 @@ from .screen import screen_nuts
 from .task.constraints import build_constraints
 from .task.objective import objective_spec
 
-# per Pareto key (axisopt.model.goals.OBJECTIVE_TABLE): maximised or minimised, display unit, the name of its value
+# per Pareto key (axisopt.model.goals.OBJECTIVE_TABLE): maximised or minimised, display unit, the
+# name of its value
 # on a Candidate or Exact (``Candidate.goal(key)`` and ``Exact.goals[key]`` read it by key)
 SENSE = {k: g.sense for k, g in GOALS.items() if g.pareto}
 UNIT = {k: g.unit for k, g in GOALS.items() if g.pareto}
@@ -52,10 +53,10 @@ def nondominated(points: np.ndarray, block: int = 2048) -> np.ndarray:
     front_rows = np.zeros((0, d))
     front_idx = []
     for s in range(0, n, block):
-        Bk = Q[s: s + block]
+        Bk = Q[s : s + block]
         dom = np.zeros(len(Bk), bool)
         for f0 in range(0, len(front_rows), 1024):
-            F = front_rows[f0: f0 + 1024]
+            F = front_rows[f0 : f0 + 1024]
             ge = np.ones((len(F), len(Bk)), bool)
             gt = np.zeros((len(F), len(Bk)), bool)
             for j in range(d):
@@ -88,14 +89,16 @@ def screen_feasible_blocks(space, constraints, spec):
         nuts = np.nonzero(ok.any(axis=1))[0]
         screened += int(ok.sum()) * GD
         for s in range(0, len(nuts), step):
-            nn = nuts[s:s + step]
+            nn = nuts[s : s + step]
             i, _ = screen_nuts(space, mi, nn, constraints, spec, premask=ok[nn])
             idx.append(i)
     out = np.concatenate(idx) if idx else np.zeros(0, np.int64)
     return out, time.perf_counter() - t0, screened
 
 
-def solve_pareto(problem, method: str = "default", t0: float | None = None, max_points: int = 200) -> SolveResult:
+def solve_pareto(
+    problem, method: str = "default", t0: float | None = None, max_points: int = 200
+) -> SolveResult:
     t0 = time.perf_counter() if t0 is None else t0
     keys = problem.objective.pareto
     space = build_space(problem)
@@ -106,12 +109,23 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
         t_screen = 0.0
     else:
         idx, t_screen, screened = screen_feasible_blocks(space, constraints, spec)
-        parts = [exact_solve(space, idx[s: s + 200000], constraints, spec) for s in range(0, len(idx), 200000)]
+        parts = [
+            exact_solve(space, idx[s : s + 200000], constraints, spec)
+            for s in range(0, len(idx), 200000)
+        ]
         ex = concat_exact(parts) if parts else exact_solve(space, [], constraints, spec)
-        info = SearchStats(combinations=space.size, feasible=int(len(idx)), pruned_by_bound=0,
-                           exact_evaluations=int(len(idx)), gap=0.0, proven=True, screening_time=t_screen,
-                           screening_rate=space.size / max(t_screen, 1e-9), screened=screened,
-                           pruned_by_block=space.size - screened)
+        info = SearchStats(
+            combinations=space.size,
+            feasible=int(len(idx)),
+            pruned_by_bound=0,
+            exact_evaluations=int(len(idx)),
+            gap=0.0,
+            proven=True,
+            screening_time=t_screen,
+            screening_rate=space.size / max(t_screen, 1e-9),
+            screened=screened,
+            pruned_by_block=space.size - screened,
+        )
     info.pruned_by_dominance = space.pruned_by_dominance
     ok = np.nonzero(ex.feasible)[0]
     cols = []
@@ -125,25 +139,47 @@ def solve_pareto(problem, method: str = "default", t0: float | None = None, max_
     front = front[np.argsort(-first if SENSE[keys[0]] == "max" else first, kind="stable")]
     notes = []
     if len(front) > max_points:
-        notes.append(f"front has {len(front)} points; the first {max_points} are evaluated in full, all are "
-                     "in the JSON point count")
-    pts = [make_candidate(space, int(ex.idx[j]), float(ex.preload[j]), spec, rank=r + 1)
-           for r, j in enumerate(front[:max_points])]
+        notes.append(
+            f"front has {len(front)} points; the first {max_points} are evaluated in full, all are "
+            "in the JSON point count"
+        )
+    pts = [
+        make_candidate(space, int(ex.idx[j]), float(ex.preload[j]), spec, rank=r + 1)
+        for r, j in enumerate(front[:max_points])
+    ]
     info.feasible = int(len(ok))
     cert = Certificate.of(info, 0, 0, notes + [f"front size {len(front)}"])
     sample = ok if len(ok) <= CLOUD else np.random.default_rng(0).choice(ok, CLOUD, replace=False)
     cloud = np.column_stack([ex.goals[k][sample] for k in keys]) if len(ok) else None
-    pf = ParetoFront(tuple(keys), tuple(SENSE[k] for k in keys), tuple(UNIT[k] for k in keys), pts,
-                     feasible=int(len(ok)), cloud=cloud)
+    pf = ParetoFront(
+        tuple(keys),
+        tuple(SENSE[k] for k in keys),
+        tuple(UNIT[k] for k in keys),
+        pts,
+        feasible=int(len(ok)),
+        cloud=cloud,
+    )
     status = OPTIMAL if len(front) else INFEASIBLE
-    res = SolveResult(status, method, problem.name, problem.objective.label, "-", pts[0] if pts else None, [],
-                      cert, time.perf_counter() - t0, pareto=pf)
+    res = SolveResult(
+        status,
+        method,
+        problem.name,
+        problem.objective.label,
+        "-",
+        pts[0] if pts else None,
+        [],
+        cert,
+        time.perf_counter() - t0,
+        pareto=pf,
+    )
     if not len(front):
         from .infeasible.explain import explain_infeasible
         from .infeasible.relax import missing_values, rank_relaxations
 
         exhaustive = method == "exhaustive"
-        res.infeasibility = explain_infeasible(space, constraints, spec, every_combination=exhaustive)
+        res.infeasibility = explain_infeasible(
+            space, constraints, spec, every_combination=exhaustive
+        )
         inf = res.infeasibility
         inf.relax, inf.not_relaxable, inf.relax_blocked_by = rank_relaxations(constraints, inf)
         inf.missing = missing_values(constraints, inf, space)

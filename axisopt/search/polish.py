@@ -30,7 +30,8 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
     from ..model.limits import preload_direction
 
     pick = rank_order(ex.objective, ex.cost, ex.total_mass, ex.idx, top)
-    # an objective the preload does not move (a least cost or mass): the exact solve's preload is as good as any
+    # an objective the preload does not move (a least cost or mass): the exact solve's preload is as
+    # good as any
     flat = all(preload_direction(k) == 0 for k, _ in objective.terms)
     cands, fails, notes = [], [], []
     solved = 0
@@ -45,15 +46,20 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
             continue
         p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))
         p1 = model.one_design(p)
-        res = solve_preload(mounting, space.grid[mounting], p1, lo, hi, constraints, objective,
-                                guess=pre)
+        res = solve_preload(
+            mounting, space.grid[mounting], p1, lo, hi, constraints, objective, guess=pre
+        )
         solved += 1
         if not res.success:
             fails.append(r)
-            notes.append(f"IPOPT {res.status} on combination {combo} (rank {r}); kept the 1-D solution")
+            notes.append(
+                f"IPOPT {res.status} on combination {combo} (rank {r}); kept the 1-D solution"
+            )
         elif res.objective < ex.objective[j] - 1e-6 * max(abs(ex.objective[j]), 1e-9):
-            notes.append(f"IPOPT objective {res.objective:.6g} below the 1-D solve {ex.objective[j]:.6g} on "
-                         f"combination {combo} (rank {r}); kept the 1-D solution")
+            notes.append(
+                f"IPOPT objective {res.objective:.6g} below the 1-D solve {ex.objective[j]:.6g} on "
+                f"combination {combo} (rank {r}); kept the 1-D solution"
+            )
         elif feasible_at(space, combo, res.preload, constraints):
             pre = res.preload
         # else: IPOPT's point violates a limit by its tolerance; keep the (feasible) 1-D solution
@@ -70,15 +76,29 @@ def feasible_at(space: Space, combo: int, preload: float, constraints) -> bool:
     return bool(ok_all(constraints, out, 1)[0])
 
 
-
-_IPOPT = {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes", "ipopt.tol": 1e-10,
-          "ipopt.max_iter": 300, "ipopt.bound_push": 1e-9, "ipopt.bound_frac": 1e-9,
-          "ipopt.mu_init": 1e-4}
+_IPOPT = {
+    "ipopt.print_level": 0,
+    "print_time": False,
+    "ipopt.sb": "yes",
+    "ipopt.tol": 1e-10,
+    "ipopt.max_iter": 300,
+    "ipopt.bound_push": 1e-9,
+    "ipopt.bound_frac": 1e-9,
+    "ipopt.mu_init": 1e-4,
+}
 _SOLVERS: dict = {}
 
 
-def nlp_solver(mounting: str, x: np.ndarray, cons: tuple, objective: ObjectiveSpec, duty: tuple = ()):
-    key = (mounting, tuple(np.round(x, 12)), tuple((c.key, c.sense, c.limit <= 0) for c in cons), objective.terms, duty)
+def nlp_solver(
+    mounting: str, x: np.ndarray, cons: tuple, objective: ObjectiveSpec, duty: tuple = ()
+):
+    key = (
+        mounting,
+        tuple(np.round(x, 12)),
+        tuple((c.key, c.sense, c.limit <= 0) for c in cons),
+        objective.terms,
+        duty,
+    )
     if key in _SOLVERS:
         return _SOLVERS[key]
     F = model.model_for(mounting, len(x), duty).function
@@ -111,8 +131,16 @@ def nlp_solver(mounting: str, x: np.ndarray, cons: tuple, objective: ObjectiveSp
     return _SOLVERS[key]
 
 
-def solve_preload(mounting: str, x, params: dict, plo: float, phi: float, constraints, objective: ObjectiveSpec,
-                  guess: float | None = None) -> NLPResult:
+def solve_preload(
+    mounting: str,
+    x,
+    params: dict,
+    plo: float,
+    phi: float,
+    constraints,
+    objective: ObjectiveSpec,
+    guess: float | None = None,
+) -> NLPResult:
     """IPOPT on one combination; ``constraints`` may include preload-independent ones (ignored)."""
     cons = tuple(c for c in constraints if c.direction != 0)
     duty = params.get("duty", ())
@@ -121,11 +149,17 @@ def solve_preload(mounting: str, x, params: dict, plo: float, phi: float, constr
     span = phi - plo
     w0 = 1.0 if guess is None or span <= 0 else float(np.clip((guess - plo) / span, 0.0, 1.0))
     f = model.model_for(mounting, len(x), duty)(
-        dict(zip(model.PARAM_NAMES, pv)), plo + w0 * max(span, 0.0), x)
+        dict(zip(model.PARAM_NAMES, pv)), plo + w0 * max(span, 0.0), x
+    )
     t0 = [float(np.min(in_display_units(k, f[k]))) * (1 - 1e-6) for k, _ in objective.terms]
-    arg = {"x0": np.array([w0] + t0), "lbx": np.array([0.0] + [-np.inf] * len(t0)),
-           "ubx": np.array([1.0 if span > 0 else 0.0] + [np.inf] * len(t0)),
-           "p": np.concatenate([pv, [plo, phi], [c.limit for c in cons]]), "lbg": lbg, "ubg": ubg}
+    arg = {
+        "x0": np.array([w0] + t0),
+        "lbx": np.array([0.0] + [-np.inf] * len(t0)),
+        "ubx": np.array([1.0 if span > 0 else 0.0] + [np.inf] * len(t0)),
+        "p": np.concatenate([pv, [plo, phi], [c.limit for c in cons]]),
+        "lbg": lbg,
+        "ubg": ubg,
+    }
     sol = solver(**arg)
     st = solver.stats()
     xs = np.asarray(sol["x"]).ravel()

@@ -30,7 +30,8 @@ from .task.space import DRIVE_KEYS, Space, respond, respond_drive
 SEARCH_ROWS = 4096  # threshold search: combinations times preloads per model evaluation, about
 GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a convex limit
 BISECTION_STEPS = 52
-SEARCH_POINTS = 64  # k-ary threshold search (default method): most preloads tried per round in one evaluation
+# k-ary threshold search (default method): most preloads tried per round in one evaluation
+SEARCH_POINTS = 64
 
 
 def golden_best(value, a, b, steps=GOLDEN_STEPS):
@@ -47,7 +48,6 @@ def golden_best(value, a, b, steps=GOLDEN_STEPS):
         x1, x2 = x1n, x2n
         f1, f2 = value(x1), value(x2)
     return np.where(f1 >= f2, x1, x2)
-
 
 
 def kary_threshold(good, a, z, points: int = SEARCH_POINTS):
@@ -79,37 +79,59 @@ def search_points(k: int) -> int:
 
 def subset(p: dict, j, k: int) -> dict:
     """The parameters of rows ``j`` of a flat layout of ``k`` combinations (the duty cycle is shared)."""
-    return {kk: (v[j] if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v) for kk, v in p.items()}
+    return {
+        kk: (v[j] if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v)
+        for kk, v in p.items()
+    }
 
 
 def repeat_rows(p: dict, k: int, r: int) -> dict:
     """A flat layout of ``k`` combinations with every row repeated ``r`` times (row i*r + j is row i)."""
-    return {kk: (np.repeat(v, r, axis=0) if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v)
-            for kk, v in p.items()}
+    return {
+        kk: (np.repeat(v, r, axis=0) if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v)
+        for kk, v in p.items()
+    }
 
 
 def new_exact(idx) -> Exact:
     """An Exact of the combinations ``idx`` with nothing solved yet (infeasible, objective -inf, goals NaN)."""
     K = len(idx)
-    return Exact(idx, np.zeros(K, bool), np.full(K, np.nan), np.full(K, -np.inf),
-                 {g.key: np.full(K, np.nan) for g in RESULT_GOALS})
+    return Exact(
+        idx,
+        np.zeros(K, bool),
+        np.full(K, np.nan),
+        np.full(K, -np.inf),
+        {g.key: np.full(K, np.nan) for g in RESULT_GOALS},
+    )
 
 
 def concat_exact(parts) -> Exact:
     """One Exact of the combinations of ``parts`` (in order)."""
-    return Exact(*(np.concatenate([getattr(p, f.name) for p in parts]) for f in fields(Exact) if f.name != "goals"),
-                 {g.key: np.concatenate([p.goals[g.key] for p in parts]) for g in RESULT_GOALS})
+    return Exact(
+        *(
+            np.concatenate([getattr(p, f.name) for p in parts])
+            for f in fields(Exact)
+            if f.name != "goals"
+        ),
+        {g.key: np.concatenate([p.goals[g.key] for p in parts]) for g in RESULT_GOALS},
+    )
 
 
 def goal_arrays(out: dict, K: int, goals=RESULT_GOALS) -> dict:
     """Goal key -> (K,) value in the goal's display unit of the model outputs ``out`` of K combinations, for each
     of ``goals`` whose output ``out`` holds: the minimum over the stroke of a profile, divided by the display
     factor (the values :class:`.result.Exact` carries)."""
-    return {g.key: as_vector(np.min(out[g.output], axis=-1) if g.profile else out[g.output], K) / g.factor
-            for g in goals if g.output in out}
+    return {
+        g.key: as_vector(np.min(out[g.output], axis=-1) if g.profile else out[g.output], K)
+        / g.factor
+        for g in goals
+        if g.output in out
+    }
 
 
-def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, need=("k_total", "f1")) -> Exact:
+def exact_solve(
+    space: Space, idx, constraints, objective: ObjectiveSpec, *, need=("k_total", "f1")
+) -> Exact:
     """Best preload (upper end of the feasible preload interval) and the exact objective on the full
     position grid for the combinations ``idx`` (any mix of mountings), vectorized per mounting.
 
@@ -143,11 +165,15 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
         if need_bis.any():
             j = np.nonzero(need_bis)[0]
             upc = [c for c in up if not c.profile]
-            # the threshold of limits the drive does not change is the mechanical combination's: searched once
-            # per (nut, bearing, guide) and shared by its drives (guide-and-drive index g = guide * D + drive)
+            # the threshold of limits the drive does not change is the mechanical combination's:
+            # searched once
+            # per (nut, bearing, guide) and shared by its drives (guide-and-drive index g = guide *
+            # D + drive)
             inv = np.arange(len(j))
             if space.n_drives > 1 and not any(c.key in DRIVE_KEYS for c in upc):
-                mech = (n[j] * space.shape[2] + b[j]) * (space.shape[3] // space.n_drives) + g[j] // space.n_drives
+                mech = (n[j] * space.shape[2] + b[j]) * (space.shape[3] // space.n_drives) + g[
+                    j
+                ] // space.n_drives
                 _, first, inv = np.unique(mech, return_index=True, return_inverse=True)
                 j_all, j = j, j[first]
             else:
@@ -155,9 +181,13 @@ def exact_solve(space: Space, idx, constraints, objective: ObjectiveSpec, *, nee
             P = search_points(len(j))
             pr = repeat_rows(subset(p, j, k), len(j), P - 1)
 
-            # only the sub-assemblies these limits read (the chain, the drive block, the regenerated energy)
-            parts = space.request.but(drive=any(c.key in DRIVE_KEYS for c in upc),
-                                      chain=any(c.key in model.CHAIN_OUTPUTS for c in upc), regen=reads_regen(upc))
+            # only the sub-assemblies these limits read (the chain, the drive block, the regenerated
+            # energy)
+            parts = space.request.but(
+                drive=any(c.key in DRIVE_KEYS for c in upc),
+                chain=any(c.key in model.CHAIN_OUTPUTS for c in upc),
+                regen=reads_regen(upc),
+            )
 
             def good(pre, pr=pr, upc=upc, x1=x1, mounting=mounting, parts=parts):
                 return ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1), parts), pre.size)
@@ -211,7 +241,9 @@ def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
         if len(h):
             P = search_points(len(h))
             pr = repeat_rows(subset(pj, h, len(j)), len(h), P - 1)
-            pb[j[h]] = kary_threshold(lambda pre: c.ok(value(pr, pre.reshape(-1))), start[h], top[j][h], P)
+            pb[j[h]] = kary_threshold(
+                lambda pre: c.ok(value(pr, pre.reshape(-1))), start[h], top[j][h], P
+            )
         exists[j] = has
     return exists, pb
 
@@ -228,7 +260,8 @@ def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
     ok_lo, ok_hi = (c.ok(value(p, v)).astype(bool) for v in (lo, hi))
     start = np.where(ok_lo, lo, hi)
     exists = ok_lo | ok_hi
-    g = np.nonzero(~exists)[0]  # met at neither end: look for the most favourable preload in between
+    # met at neither end: look for the most favourable preload in between
+    g = np.nonzero(~exists)[0]
     if len(g):
         pg = subset(p, g, K)
         best = golden_best(lambda pre: value(pg, pre), lo[g], hi[g])
@@ -237,7 +270,8 @@ def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
     ends = []
     for edge, ok_edge in ((lo, ok_lo), (hi, ok_hi)):
         end = edge.copy()
-        j = np.nonzero(exists & ~ok_edge)[0]  # the interval stops short of this edge: bisect for its end
+        # the interval stops short of this edge: bisect for its end
+        j = np.nonzero(exists & ~ok_edge)[0]
         if len(j):
             pj = subset(p, j, K)
             a, z = start[j], edge[j]
@@ -249,4 +283,3 @@ def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
             end[j] = a
         ends.append(end)
     return exists, ends[0], ends[1]
-

@@ -22,7 +22,8 @@ class Reported:
     unit: str  # display unit (the column's and the repr's)
     doc: str  # meaning, unit in brackets (docs/api.md)
     label: str = ""  # Candidate.__repr__'s label ('' : not in the repr)
-    output: str = ""  # the model output it is read from, its minimum over the stroke ('' : a goal's field)
+    # the model output it is read from, its minimum over the stroke ('' : a goal's field)
+    output: str = ""
     per: float = 1.0  # the output's SI units per display unit
     profile: tuple = ()  # the study table's columns right after it: (column, (record section, key))
 
@@ -32,11 +33,25 @@ class Reported:
 
 
 REPORTED = (
-    Reported("min_stiffness", "min_stiffness", "N/um", "[N/um], minimum over the model position grid",
-             "min stiffness", profile=(("min_stiffness_at [mm]", ("profile", "min_stiffness_position_mm")),)),
-    Reported("min_frequency", "min_frequency", "Hz", "[Hz]", "1st frequency",
-             profile=(("min_frequency_at [mm]", ("profile", "min_frequency_position_mm")),
-                      ("weakest_link", ("profile", "weakest_link")))),
+    Reported(
+        "min_stiffness",
+        "min_stiffness",
+        "N/um",
+        "[N/um], minimum over the model position grid",
+        "min stiffness",
+        profile=(("min_stiffness_at [mm]", ("profile", "min_stiffness_position_mm")),),
+    ),
+    Reported(
+        "min_frequency",
+        "min_frequency",
+        "Hz",
+        "[Hz]",
+        "1st frequency",
+        profile=(
+            ("min_frequency_at [mm]", ("profile", "min_frequency_position_mm")),
+            ("weakest_link", ("profile", "weakest_link")),
+        ),
+    ),
     Reported("cost", "cost", "EUR", "[EUR]", "cost"),
     Reported("moving_mass", "moving_mass", "kg", "[kg]", "moving mass"),
     Reported("total_mass", "total_mass", "kg", "[kg]"),

@@ -29,7 +29,12 @@ class Status:
 
 STATUS_TABLE = (
     Status("optimal", "proven optimum over the catalog (gap 0)", True, True),
-    Status("feasible", "a design found, not proven optimal (Bonmin, or SCIP's point without proof)", True, False),
+    Status(
+        "feasible",
+        "a design found, not proven optimal (Bonmin, or SCIP's point without proof)",
+        True,
+        False,
+    ),
     Status("time_limit", "stopped before the proof; gap > 0 or unknown", True, False),
     Status("solver_failed", "an NLP or MINLP solve failed; see the message", True, False),
     Status("infeasible", "no catalog combination meets every limit", False, True),
@@ -76,8 +81,11 @@ class NLPResult:
     objective: float  # display units
 
 
-# Candidate fields as table columns, the display unit in the name (Candidate's fields are in these units).
-CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"),) + tuple((r.field, r.column) for r in REPORTED)
+# Candidate fields as table columns, the display unit in the name (Candidate's fields are in these
+# units).
+CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"),) + tuple(
+    (r.field, r.column) for r in REPORTED
+)
 
 
 def _reported_fields(cls):
@@ -88,7 +96,8 @@ def _reported_fields(cls):
         if k == "objective":
             ann.update({r.field: "float" for r in REPORTED})
     cls.__annotations__ = ann
-    cls.FIELD_NOTES = MappingProxyType({r.field: r.doc for r in REPORTED})  # the API reference's meanings
+    # the API reference's meanings
+    cls.FIELD_NOTES = MappingProxyType({r.field: r.doc for r in REPORTED})
     return cls
 
 
@@ -112,11 +121,14 @@ class Candidate:
     motor: str = ""  # servo motor id ('' without drive search)
     coupling: str = ""
     reduction: str = ""  # reduction id ('' : none, the axis's reduction values)
-    screw_grade: str = ""  # lead accuracy grade the search chose or the problem fixed ('' : the screw's cheapest)
-    # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their minimum over
+    # lead accuracy grade the search chose or the problem fixed ('' : the screw's cheapest)
+    screw_grade: str = ""
+    # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their
+    # minimum over
     # the stroke.  Not in the JSON (the display fields above carry the same values in vendor units).
     outputs: dict = field(default_factory=dict, repr=False, compare=False)
-    # a problem with search.counterbalance / search.twin_drive options, Pareto objective: the arrangement this
+    # a problem with search.counterbalance / search.twin_drive options, Pareto objective: the
+    # arrangement this
     # design is of ('' otherwise; not in the JSON then)
     arrangement: str = ""
 
@@ -150,8 +162,9 @@ class Candidate:
         """One table row: rank, mounting, parts, the objective (when ``objective_unit`` is given) and the
         values in display units, each unit in its column name; an infeasible problem's closest designs add
         ``miss <limit> [%]`` per missed limit."""
-        r = {"rank": self.rank, "mounting": self.mounting} | ({"arrangement": self.arrangement}
-                                                              if self.arrangement else {})
+        r = {"rank": self.rank, "mounting": self.mounting} | (
+            {"arrangement": self.arrangement} if self.arrangement else {}
+        )
         r["screw"] = self.screw
         if self.screw_grade:
             r["grade"] = self.screw_grade
@@ -163,7 +176,9 @@ class Candidate:
         if self.reduction:
             r["reduction"] = self.reduction
         if objective_unit is not None:
-            r[f"objective [{objective_unit}]" if objective_unit not in ("", "-") else "objective"] = self.objective
+            r[
+                f"objective [{objective_unit}]" if objective_unit not in ("", "-") else "objective"
+            ] = self.objective
         r.update({col: getattr(self, f) for f, col in CANDIDATE_COLUMNS})
         r.update({f"miss {k} [%]": 100.0 * v for k, v in self.misses.items()})
         return r
@@ -176,8 +191,11 @@ class Candidate:
         misses = ", ".join(f"{k} by {fmt(100 * v)} %" for k, v in self.misses.items())
         shown = {"objective": fmt_objective(self.objective), "preload": fmt(self.nut_preload, "N")}
         shown.update({r.label: fmt(getattr(self, r.field), r.unit) for r in REPORTED if r.label})
-        return one_line("Candidate", f"rank {self.rank}, {self.mounting} {' / '.join(self.parts().values())}",
-                        shown | {"misses": misses})
+        return one_line(
+            "Candidate",
+            f"rank {self.rank}, {self.mounting} {' / '.join(self.parts().values())}",
+            shown | {"misses": misses},
+        )
 
     def _repr_html_(self) -> str:
         return html_table([self.row()], repr(self))
@@ -196,11 +214,14 @@ def _candidate_goal(g):
     def value(self) -> float:
         return self.goal(g.key)
 
-    value.__doc__ = f"The goal {g.key!r} [{g.unit}] (model output {g.output}; NaN where not evaluated)."
+    value.__doc__ = (
+        f"The goal {g.key!r} [{g.unit}] (model output {g.output}; NaN where not evaluated)."
+    )
     return property(value)
 
 
-# a goal whose value is not a Candidate field (not in the JSON) reads the outputs under its field name
+# a goal whose value is not a Candidate field (not in the JSON) reads the outputs under its field
+# name
 for _g in RESULT_GOALS:
     if _g.field not in CANDIDATE_FIELDS:
         setattr(Candidate, _g.field, _candidate_goal(_g))
@@ -216,17 +237,24 @@ class ParetoFront:
     units: tuple  # display unit per key (N/um, EUR, ...)
     points: list  # list[Candidate], sorted by the first key
     feasible: int = 0  # feasible designs the front was drawn from
-    # objective values (columns in ``keys`` order, display units) of up to 4000 feasible designs drawn at
+    # objective values (columns in ``keys`` order, display units) of up to 4000 feasible designs
+    # drawn at
     # random with a fixed seed, for plotting the front against what it dominates; not in the JSON
     cloud: object = None
 
     def to_dict(self) -> dict:
         """The front as JSON: each point's fields and its ``objectives`` (the value of each key, in ``keys`` order
         and display units: a goal without a field of its own, the positioning error, is there too)."""
-        return {"keys": list(self.keys), "senses": list(self.senses), "units": list(self.units),
-                "feasible": self.feasible,
-                "points": [p.to_dict() | {"objectives": [json_value(p.goal(k)) for k in self.keys]}
-                           for p in self.points]}
+        return {
+            "keys": list(self.keys),
+            "senses": list(self.senses),
+            "units": list(self.units),
+            "feasible": self.feasible,
+            "points": [
+                p.to_dict() | {"objectives": [json_value(p.goal(k)) for k in self.keys]}
+                for p in self.points
+            ],
+        }
 
     def __len__(self) -> int:
         return len(self.points)
@@ -242,10 +270,15 @@ class ParetoFront:
         return frame([p.row() for p in self.points])
 
     def __repr__(self) -> str:
-        objectives = ", ".join(f"{s} {k}" + (f" [{u}]" if u else "") for k, s, u in
-                               zip(self.keys, self.senses, self.units))
-        return one_line("ParetoFront", f"{len(self.points)} non-dominated of {self.feasible:,} feasible designs",
-                        {"objectives": objectives})
+        objectives = ", ".join(
+            f"{s} {k}" + (f" [{u}]" if u else "")
+            for k, s, u in zip(self.keys, self.senses, self.units)
+        )
+        return one_line(
+            "ParetoFront",
+            f"{len(self.points)} non-dominated of {self.feasible:,} feasible designs",
+            {"objectives": objectives},
+        )
 
     def _repr_html_(self) -> str:
         return html_table([p.row() for p in self.points], repr(self))
@@ -268,15 +301,18 @@ class SolveResult:
     certificate: Certificate
     time: float  # wall clock [s]
     message: str = ""
-    binding: list = field(default_factory=list)  # Bindings: each limit at the optimum, relaxed by 10 %
+    # Bindings: each limit at the optimum, relaxed by 10 %
+    binding: list = field(default_factory=list)
     infeasibility: Infeasibility | None = None
     pareto: ParetoFront | None = None
     solver_status: str = ""  # raw status of the underlying solver (Bonmin / IPOPT)
-    # a problem with search.counterbalance / search.twin_drive options: the winning arrangement's label and how
+    # a problem with search.counterbalance / search.twin_drive options: the winning arrangement's
+    # label and how
     # many arrangements were solved (0: the problem has none; not in the JSON then)
     arrangement: str = ""
     arrangements: int = 0
-    # what the search left out of the design and why, a sentence each (the drive with 'drive: no'); not in the
+    # what the search left out of the design and why, a sentence each (the drive with 'drive: no');
+    # not in the
     # JSON when empty
     left_out: tuple = ()
     # a stiffness or frequency optimum: a design within the tolerance of it that costs markedly less
@@ -284,7 +320,8 @@ class SolveResult:
     cheaper: dict | None = None
 
     def __setattr__(self, name, value):
-        if name == "binding":  # a list of Binding, assigned here or later: a Bindings (to_frame, units)
+        # a list of Binding, assigned here or later: a Bindings (to_frame, units)
+        if name == "binding":
             value = Bindings(value, getattr(self, "objective_unit", ""))
         object.__setattr__(self, name, value)
 
@@ -294,20 +331,34 @@ class SolveResult:
         return self.best.objective if self.best else float("nan")
 
     def to_dict(self) -> dict:
-        return {
-            "status": self.status, "method": self.method, "problem": self.problem,
-            "objective": {"label": self.objective_label, "unit": self.objective_unit,
-                          "value": json_value(self.objective)},
-            "best": self.best.to_dict() if self.best else None,
-            "runners_up": [c.to_dict() for c in self.runners_up],
-            "certificate": self.certificate.to_dict(),
-            "time_s": self.time, "message": self.message, "solver_status": self.solver_status,
-            "binding": [b.to_dict() for b in self.binding],
-            "infeasibility": self.infeasibility.to_dict() if self.infeasibility else None,
-            "pareto": self.pareto.to_dict() if self.pareto else None,
-        } | ({"arrangement": {"chosen": self.arrangement, "of": self.arrangements}} if self.arrangements else {}) \
-            | ({"left_out": list(self.left_out)} if self.left_out else {}) \
+        return (
+            {
+                "status": self.status,
+                "method": self.method,
+                "problem": self.problem,
+                "objective": {
+                    "label": self.objective_label,
+                    "unit": self.objective_unit,
+                    "value": json_value(self.objective),
+                },
+                "best": self.best.to_dict() if self.best else None,
+                "runners_up": [c.to_dict() for c in self.runners_up],
+                "certificate": self.certificate.to_dict(),
+                "time_s": self.time,
+                "message": self.message,
+                "solver_status": self.solver_status,
+                "binding": [b.to_dict() for b in self.binding],
+                "infeasibility": self.infeasibility.to_dict() if self.infeasibility else None,
+                "pareto": self.pareto.to_dict() if self.pareto else None,
+            }
+            | (
+                {"arrangement": {"chosen": self.arrangement, "of": self.arrangements}}
+                if self.arrangements
+                else {}
+            )
+            | ({"left_out": list(self.left_out)} if self.left_out else {})
             | ({"cheaper": json_value(self.cheaper)} if self.cheaper else {})
+        )
 
     def designs(self) -> list:
         """The designs shown: the Pareto front's points, else best and runners-up, else (infeasible) the
@@ -329,27 +380,39 @@ class SolveResult:
         fields = {}
         head = f"{self.status}, {self.problem!r}"
         if self.pareto is not None:
-            fields["Pareto front"] = f"{len(self.pareto)} designs of {self.pareto.feasible:,} feasible"
+            fields["Pareto front"] = (
+                f"{len(self.pareto)} designs of {self.pareto.feasible:,} feasible"
+            )
         elif self.best is not None:
             b = self.best
             unit = self.objective_unit if self.objective_unit != "-" else ""
             fields[self.objective_label] = fmt_objective(b.objective, unit)
-            fields["best"] = f"{b.mounting} {' / '.join(b.parts().values())}, preload {fmt(b.nut_preload, 'N')}"
+            fields["best"] = (
+                f"{b.mounting} {' / '.join(b.parts().values())}, preload {fmt(b.nut_preload, 'N')}"
+            )
             fields["min stiffness"] = fmt(b.min_stiffness, "N/um")
             fields["1st frequency"] = fmt(b.min_frequency, "Hz")
             fields["cost"] = fmt(b.cost, "EUR")
             fields["designs"] = 1 + len(self.runners_up)
         elif self.infeasibility is not None:
-            fields["unmeetable"] = ", ".join(n for n, *_ in self.infeasibility.unmeetable) or "none alone"
+            fields["unmeetable"] = (
+                ", ".join(n for n, *_ in self.infeasibility.unmeetable) or "none alone"
+            )
             rel = self.infeasibility.relax
             if rel:
-                shown = [f"{r.key} {'+' if r.relaxed_to > r.value else '-'}{fmt(100 * r.change)} %" for r in rel]
-                fields["relax"] = ", ".join(shown[:3]) + (f" and {len(shown) - 3} more" if len(shown) > 3 else "")
+                shown = [
+                    f"{r.key} {'+' if r.relaxed_to > r.value else '-'}{fmt(100 * r.change)} %"
+                    for r in rel
+                ]
+                fields["relax"] = ", ".join(shown[:3]) + (
+                    f" and {len(shown) - 3} more" if len(shown) > 3 else ""
+                )
             c = self.infeasibility.closest[0] if self.infeasibility.closest else None
             if c is not None:
                 miss = [f"{k} by {fmt(100 * v)} %" for k, v in c.misses.items()]
-                fields["closest design misses"] = ", ".join(miss[:3]) + (f" and {len(miss) - 3} more"
-                                                                         if len(miss) > 3 else "")
+                fields["closest design misses"] = ", ".join(miss[:3]) + (
+                    f" and {len(miss) - 3} more" if len(miss) > 3 else ""
+                )
         if self.message and self.status != OPTIMAL:
             fields["note"] = self.message
         fields["proven"] = bool(self.certificate.proven)
@@ -358,7 +421,17 @@ class SolveResult:
 
     def _repr_html_(self) -> str:
         head = repr(self)
-        return html_fields({"status": self.status, "problem": self.problem, "objective": self.objective_label,
-                            "method": self.method, "proven": self.certificate.proven,
-                            "time [s]": round(self.time, 2)}, "SolveResult") + \
-            html_table([c.row(None if self.best is None else self.objective_unit) for c in self.designs()], head)
+        return html_fields(
+            {
+                "status": self.status,
+                "problem": self.problem,
+                "objective": self.objective_label,
+                "method": self.method,
+                "proven": self.certificate.proven,
+                "time [s]": round(self.time, 2),
+            },
+            "SolveResult",
+        ) + html_table(
+            [c.row(None if self.best is None else self.objective_unit) for c in self.designs()],
+            head,
+        )

@@ -54,7 +54,8 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     return idx, bound, time.perf_counter() - t0
 
 
-HULL_BLOCK = 400_000  # (nut, bearing group, drive) elements per interval evaluation of viable_drives
+# (nut, bearing group, drive) elements per interval evaluation of viable_drives
+HULL_BLOCK = 400_000
 
 
 def viable_drives(space: Space, mounting: str, nut_idx, constraints):
@@ -69,7 +70,7 @@ def viable_drives(space: Space, mounting: str, nut_idx, constraints):
     rows = max(1, HULL_BLOCK // max(D * min(space.shape[2], DRIVE_BEARING_GROUPS), 1))
     parts, group = [], None
     for s0 in range(0, len(nut_idx), rows):
-        hull, group = drive_hull(space, mounting, nut_idx[s0:s0 + rows], cons)
+        hull, group = drive_hull(space, mounting, nut_idx[s0 : s0 + rows], cons)
         ok = True
         for c in cons:
             if c.name in hull:
@@ -86,7 +87,8 @@ def _mechanical(constraints):
     return [c for c in constraints if c.key not in DRIVE_KEYS or c.key == "backlash"]
 
 
-CACHE_BLOCK = 200_000  # (nut, bearing, guide) combinations per evaluation inside screen_nuts (cache-sized arrays)
+# (nut, bearing, guide) combinations per evaluation inside screen_nuts (cache-sized arrays)
+CACHE_BLOCK = 200_000
 
 
 def group_end(bm, bn, pos: int, reach, nuts: int) -> int:
@@ -130,7 +132,8 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
     phases = space.problem.axis_for(mounting).phases
     nut_idx = space.nut_numbers(nuts)
     viable = viable_drives(space, mounting, nut_idx, constraints)
-    if viable is not None:  # a (nut, bearing) block no drive could meet the drive's limits with: left out
+    # a (nut, bearing) block no drive could meet the drive's limits with: left out
+    if viable is not None:
         block = viable[0].any(axis=-1)[:, viable[1]]
         premask = block if premask is None else premask & block
     step = max(1, CACHE_BLOCK // max(B * Gm, 1))
@@ -142,27 +145,36 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
         else:
             sub = nut_idx[s0:s1]
         pm = None if premask is None else premask[s0:s1]
-        parts.append(_screen_mechanics(space, mounting, sub, nut_idx[s0:s1], constraints, objective, pm))
+        parts.append(
+            _screen_mechanics(space, mounting, sub, nut_idx[s0:s1], constraints, objective, pm)
+        )
     if parts:
         nn, bb, gg, bnd = (np.concatenate([q[i] for q in parts]) for i in range(4))
     else:
         nn, bb, gg, bnd = (np.zeros(0, np.int64),) * 3 + (np.zeros(0),)
     if viable is not None:  # each survivor's drives that pass the drive limits' bounds of its block
-        first = viable[0][np.searchsorted(nut_idx, nn), viable[1][bb]] if len(nn) else np.zeros((0, D), bool)
+        first = (
+            viable[0][np.searchsorted(nut_idx, nn), viable[1][bb]]
+            if len(nn)
+            else np.zeros((0, D), bool)
+        )
     else:
         first = None
     nn, bb, gg, bnd = _screen_drives(space, mounting, constraints, phases, nn, bb, gg, bnd, first)
     return np.ravel_multi_index((np.full(len(nn), mi), nn, bb, gg), space.shape), bnd
 
 
-def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, objective: ObjectiveSpec, premask):
+def _screen_mechanics(
+    space: Space, mounting: str, nuts, nut_idx, constraints, objective: ObjectiveSpec, premask
+):
     """The mechanical stage of :func:`screen_nuts` over the nuts ``nuts`` (numbers ``nut_idx``): every limit
     but the drive's (:data:`DRIVE_KEYS`, which hold the motor-torque limits, the only convex ones), and the
     bound.  Returns the survivors' (nut, bearing, guide, bound)."""
     _, _, B, G = space.shape
     Gm = G // space.n_drives
     mech = _mechanical(constraints)
-    low_end = [c for c in mech if c.favourable is not End.HIGH]  # independent or favoured by a low preload
+    # independent or favoured by a low preload
+    low_end = [c for c in mech if c.favourable is not End.HIGH]
     high_end = [c for c in mech if c.favourable is End.HIGH]
     xs = bound_positions(space, mounting).astype(np.float32)
     x1 = xs[-1:]
@@ -174,7 +186,9 @@ def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, o
     mask = np.broadcast_to(fits[:, :, None], (nc, B, Gm)).copy()
     with np.errstate(all="ignore"):
         chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in low_end)
-        out_lo = model.axis_response(p, x1, mounting, lo, space.request.but(drive=False, chain=chain_lo))
+        out_lo = model.axis_response(
+            p, x1, mounting, lo, space.request.but(drive=False, chain=chain_lo)
+        )
         for c in low_end:
             mask &= screen_ok(c, out_lo)
         out = model.axis_response(p, xs, mounting, hi, space.request.but(drive=False))
@@ -186,8 +200,8 @@ def _screen_mechanics(space: Space, mounting: str, nuts, nut_idx, constraints, o
     return nut_idx[nn], bb, gg, bound[nn, bb, gg].astype(float)
 
 
-
-DRIVE_CHUNK = 50_000  # (combination, drive) pairs per block of the drive stage (cache-sized float64 arrays)
+# (combination, drive) pairs per block of the drive stage (cache-sized float64 arrays)
+DRIVE_CHUNK = 50_000
 
 
 def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg, bound, first=None):
@@ -209,22 +223,36 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
         nn, bb, gg, bound, first = nn[keep], bb[keep], gg[keep], bound[keep], first[keep]
     rows = max(1, DRIVE_CHUNK // D)
     for s0 in range(0, len(nn), rows):
-        n_, b_, g_, bd = nn[s0:s0 + rows], bb[s0:s0 + rows], gg[s0:s0 + rows], bound[s0:s0 + rows]
+        n_, b_, g_, bd = (
+            nn[s0 : s0 + rows],
+            bb[s0 : s0 + rows],
+            gg[s0 : s0 + rows],
+            bound[s0 : s0 + rows],
+        )
         K = len(n_)
-        cols = np.arange(D) if first is None else np.nonzero(first[s0:s0 + rows].any(axis=0))[0]
+        cols = np.arange(D) if first is None else np.nonzero(first[s0 : s0 + rows].any(axis=0))[0]
         p = drive_params(space, mounting, n_, b_, g_, drives=None if first is None else cols)
         lo, hi = space.preload_lo[n_][:, None, None], space.preload_hi[n_][:, None, None]
         with np.errstate(all="ignore"):
             regen = model.SCREEN.but(regen=reads_regen(cons))  # the drive block's request
             out_lo = model.drive_response(p, lo, regen)
-            out_hi = model.drive_response(p, hi, regen) if cvx or any(c.lower_type for c in cons) else None
-            ok = np.ones((K, len(cols)), dtype=bool) if first is None else first[s0:s0 + rows][:, cols].copy()
+            out_hi = (
+                model.drive_response(p, hi, regen)
+                if cvx or any(c.lower_type for c in cons)
+                else None
+            )
+            ok = (
+                np.ones((K, len(cols)), dtype=bool)
+                if first is None
+                else first[s0 : s0 + rows][:, cols].copy()
+            )
             for c in cons:
                 if c.convex:
                     ub = np.asarray(convex_margin_bound(c, out_lo, out_hi, phases))
                     ok_c = ub >= c.limit * (1.0 - SCREEN_RTOL)
                     ok &= ok_c[..., 0] if ok_c.ndim == 3 else ok_c
-                else:  # at the preload end that favours it (the regenerated power falls with the preload)
+                # at the preload end that favours it (the regenerated power falls with the preload)
+                else:
                     ok &= screen_ok(c, out_hi if c.favourable is End.HIGH else out_lo)
         k, d = np.nonzero(ok)
         out_parts.append((n_[k], b_[k], g_[k] * D + cols[d], bd[k]))
@@ -241,9 +269,14 @@ def drive_params(space: Space, mounting: str, n, b, g, dtype=float, drives=None)
     def pick(d, i):
         return {k: v[i][:, None, None] for k, v in d.items()}
 
-    ps = model.axis_params(space.problem.axis_for(mounting), pick(space.s_arr, n), pick(space.n_arr, n),
-                           pick(space.b_arr, b), pick(space.g_arr, np.asarray(g) * D),
-                           *space.drive_columns((1, -1, 1), drives=drives))
+    ps = model.axis_params(
+        space.problem.axis_for(mounting),
+        pick(space.s_arr, n),
+        pick(space.n_arr, n),
+        pick(space.b_arr, b),
+        pick(space.g_arr, np.asarray(g) * D),
+        *space.drive_columns((1, -1, 1), drives=drives),
+    )
     return as_dtype(ps, dtype)
 
 
@@ -253,17 +286,39 @@ def interval_min_abs(t_lo, t_hi):
     return np.where(t_lo * t_hi <= 0, 0.0, np.minimum(np.abs(t_lo), np.abs(t_hi)))
 
 
-# The torque checks convex in the nut preload (model.limits CONVEX), each with the model outputs its margin reads:
-# (phase torques, the steady thrust that bounds it from below, the needed value, zone factors or None, peak or RMS)
+# The torque checks convex in the nut preload (model.limits CONVEX), each with the model outputs its
+# margin reads:
+# (phase torques, the steady thrust that bounds it from below, the needed value, zone factors or
+# None, peak or RMS)
 CONVEX_TORQUES = {
-    margin_output("motor_peak_torque"): ("duty_torques", "thrust_torque", "needed_motor_peak_torque",
-                                         "zone_factors", True),
-    margin_output("motor_rated_torque"): ("duty_torques", "mean_thrust_torque", "needed_motor_rated_torque",
-                                          None, False),
-    margin_output("reduction_accel_torque"): ("output_torques", "output_thrust_torque",
-                                              "needed_reduction_accel_torque", None, True),
-    margin_output("reduction_rated_torque"): ("output_torques", "output_mean_thrust_torque",
-                                              "needed_reduction_rated_torque", None, False),
+    margin_output("motor_peak_torque"): (
+        "duty_torques",
+        "thrust_torque",
+        "needed_motor_peak_torque",
+        "zone_factors",
+        True,
+    ),
+    margin_output("motor_rated_torque"): (
+        "duty_torques",
+        "mean_thrust_torque",
+        "needed_motor_rated_torque",
+        None,
+        False,
+    ),
+    margin_output("reduction_accel_torque"): (
+        "output_torques",
+        "output_thrust_torque",
+        "needed_reduction_accel_torque",
+        None,
+        True,
+    ),
+    margin_output("reduction_rated_torque"): (
+        "output_torques",
+        "output_mean_thrust_torque",
+        "needed_reduction_rated_torque",
+        None,
+        False,
+    ),
 }
 
 
@@ -276,12 +331,15 @@ def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np
     if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor, no reduction): nothing to bound
         return v_lo
     torques, thrust, needed, zone, peak = CONVEX_TORQUES[c.key]
-    # what the margin compares the torque with (the motor peak: the zone at each phase's speed, referred to the
-    # flat peak; the motor RMS: rms_torque_ratio x rated; the reduction: T2B, T2N), recovered exactly from the
+    # what the margin compares the torque with (the motor peak: the zone at each phase's speed,
+    # referred to the
+    # flat peak; the motor RMS: rms_torque_ratio x rated; the reduction: T2B, T2N), recovered
+    # exactly from the
     # margin at the interval's low end
     need_lo = np.asarray(out_lo[needed])
     available = v_lo * need_lo
-    shared: dict = {}  # phases sharing a torque pair at both ends (physics.drive.phase_torques): one evaluation
+    # phases sharing a torque pair at both ends (physics.drive.phase_torques): one evaluation
+    shared: dict = {}
     ends = []
     for lo_pair, hi_pair in zip(out_lo[torques], out_hi[torques]):
         key = (id(lo_pair), id(hi_pair))

@@ -15,19 +15,28 @@ from .result import SolveResult
 RELAX = 0.10  # sensitivities: relax each limit by 10 %
 
 
-
 def cut_note(what: str, cut: list) -> str:
     """What the time limit cut after the search: the sensitivities (``cut``: the limits not re-solved) or the
     advice (its verifying searches)."""
     if what == "sensitivities":
-        return (f"the time limit cut the limit sensitivities: {', '.join(cut)} not re-solved (a longer "
-                "--time-limit, or --no-sensitivity)")
-    return ("the time limit cut the design-change advice: the changes it could not verify in time are not "
-            "proposed (a longer --time-limit searches further)")
+        return (
+            f"the time limit cut the limit sensitivities: {', '.join(cut)} not re-solved (a longer "
+            "--time-limit, or --no-sensitivity)"
+        )
+    return (
+        "the time limit cut the design-change advice: the changes it could not verify in time are not "
+        "proposed (a longer --time-limit searches further)"
+    )
 
 
-def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None, deadline: float | None = None,
-                        cut: list | None = None) -> list:
+def limit_sensitivities(
+    problem: Problem,
+    res: SolveResult,
+    *,
+    space=None,
+    deadline: float | None = None,
+    cut: list | None = None,
+) -> list:
     """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
     (re-solved with the default method; a discrete problem has no meaningful multipliers).
 
@@ -51,22 +60,30 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None, deadl
         lim = LIMITS[key]
         at = best.outputs.get(lim.output)
         if value == 0.0 or at is None or not np.isfinite(at):
-            continue  # e.g. max_backlash 0: relaxing it by 10 % changes nothing; an output the design lacks
+            # e.g. max_backlash 0: relaxing it by 10 % changes nothing; an output the design lacks
+            continue
         unit, factor = lim.unit, lim.factor
         if deadline is not None and time.perf_counter() >= deadline:
             if cut is not None:
                 cut.append(key)
             continue
         relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
-        # the optimum meets the relaxed limit too: only designs that can reach it are searched (none: no gain)
+        # the optimum meets the relaxed limit too: only designs that can reach it are searched
+        # (none: no gain)
         relaxed_problem = problem.with_limit(key, relaxed)
         loose = build_constraints(relaxed_problem)
-        # a limit that is also an axis value (min_life: the life the checks need) changes the part parameters, and
-        # a max_backlash that left reductions out (parts._add_drives) may admit them relaxed: either builds the
+        # a limit that is also an axis value (min_life: the life the checks need) changes the part
+        # parameters, and
+        # a max_backlash that left reductions out (parts._add_drives) may admit them relaxed: either
+        # builds the
         # relaxed problem's own space
-        rebuild = relaxed_problem.axis != problem.axis or (key == "max_backlash" and space.reductions_by_backlash)
+        rebuild = relaxed_problem.axis != problem.axis or (
+            key == "max_backlash" and space.reductions_by_backlash
+        )
         sp = build_space(relaxed_problem) if rebuild else space
-        ex, stats = bound_order_search(sp, loose, spec, top=1, incumbent=best.objective, deadline=deadline)
+        ex, stats = bound_order_search(
+            sp, loose, spec, top=1, incumbent=best.objective, deadline=deadline
+        )
         if stats.timed_out:  # an unproven gain is not reported
             if cut is not None:
                 cut.append(key)
@@ -76,8 +93,11 @@ def limit_sensitivities(problem: Problem, res: SolveResult, *, space=None, deadl
         else:
             gain = 0.0
         tol = 1e-6 * max(abs(best.objective), 1e-9)
-        out.append(Binding(key, unit, value / factor, at / factor, relaxed / factor, gain,
-                           bool(gain > tol)))
+        out.append(
+            Binding(
+                key, unit, value / factor, at / factor, relaxed / factor, gain, bool(gain > tol)
+            )
+        )
     return out
 
 
@@ -91,7 +111,8 @@ def estimated_at_optimum(problem: Problem, res: SolveResult, objective_outputs) 
     found = binding_estimates(res.best.design, limits, objective_outputs)
     seen = {r.what for r in found}
     extra = [(k, v) for k, v in limits if k in binding and k not in seen]
-    if extra:  # binding by relaxation though not at its bound (a discrete step): its output's estimates
+    # binding by relaxation though not at its bound (a discrete step): its output's estimates
+    if extra:
         outs = {k: LIMITS[k].output for k, _ in extra}
         moved = resting_on(res.best.design, list(outs.values()))
         found += [Resting(k, o, tuple(moved[o])) for k, o in outs.items() if moved.get(o)]

@@ -21,8 +21,22 @@ from .spec import load_study
 from .store import OK_STATUSES, CaseStore
 from .table import results_table
 
-__all__ = ["load_study", "run_study", "results_table", "write_outputs", "Study", "Sweep", "Case", "Progress",
-           "RunSummary", "CaseStore", "solve_case", "build_problem", "apply_overrides", "OK_STATUSES"]
+__all__ = [
+    "load_study",
+    "run_study",
+    "results_table",
+    "write_outputs",
+    "Study",
+    "Sweep",
+    "Case",
+    "Progress",
+    "RunSummary",
+    "CaseStore",
+    "solve_case",
+    "build_problem",
+    "apply_overrides",
+    "OK_STATUSES",
+]
 
 
 class _CallablePackage(types.ModuleType):
@@ -30,12 +44,28 @@ class _CallablePackage(types.ModuleType):
     (:func:`axisopt.api.study`): once the package is imported it is the attribute, so the package itself runs a
     study when called, ``axisopt.study("problems/studies/teaching_random.yaml", "out")``."""
 
-    def __call__(self, spec, out=None, *, workers: int | None = 0, resume: bool = False, overwrite: bool = False,
-                 scheduler=None, time_limit: float = 100.0):
+    def __call__(
+        self,
+        spec,
+        out=None,
+        *,
+        workers: int | None = 0,
+        resume: bool = False,
+        overwrite: bool = False,
+        scheduler=None,
+        time_limit: float = 100.0,
+    ):
         from .result import run_spec
 
-        return run_spec(spec, out, workers=workers, resume=resume, overwrite=overwrite, scheduler=scheduler,
-                        time_limit=time_limit)
+        return run_spec(
+            spec,
+            out,
+            workers=workers,
+            resume=resume,
+            overwrite=overwrite,
+            scheduler=scheduler,
+            time_limit=time_limit,
+        )
 
 
 sys.modules[__name__].__class__ = _CallablePackage

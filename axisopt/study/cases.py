@@ -54,7 +54,8 @@ class Study:
     combine: str = "product"
     sweeps: tuple = ()
     cases: tuple = ()
-    time_limit: float = 100.0  # [s] of each case's solve (the command's --time-limit; not in the fingerprint)
+    # [s] of each case's solve (the command's --time-limit; not in the fingerprint)
+    time_limit: float = 100.0
 
     @property
     def keys(self) -> tuple:
@@ -65,12 +66,17 @@ class Study:
 
     def context(self) -> dict:
         """What a worker needs besides the cases: small, picklable, no catalog or solver objects."""
-        return {"base": self.base, "base_source": self.base_source, "base_dir": self.base_dir,
-                "method": self.method, "name": self.name, "time_limit": self.time_limit}
+        return {
+            "base": self.base,
+            "base_source": self.base_source,
+            "base_dir": self.base_dir,
+            "method": self.method,
+            "name": self.name,
+            "time_limit": self.time_limit,
+        }
 
 
 MAX_CASES = 1_000_000  # cases of one study
-
 
 
 def unique_values(values):
@@ -106,17 +112,25 @@ def _rows(study: Study, sweep_sec: Section | None = None) -> list:
     if study.combine == "product":
         total = math.prod(len(s.values) for s in sweeps)
         if total > MAX_CASES:
-            raise InputError(f"the sweep makes {total:,} cases (at most {MAX_CASES:,}); split the study",
-                             source=study.source, where="key 'sweep'")
+            raise InputError(
+                f"the sweep makes {total:,} cases (at most {MAX_CASES:,}); split the study",
+                source=study.source,
+                where="key 'sweep'",
+            )
         return list(itertools.product(*(s.values for s in sweeps)))
     lengths = {s.key: len(s.values) for s in sweeps if s.kind != "fixed"}
     n = max(lengths.values(), default=1)
     for k, m in lengths.items():
         if m != n:
-            raise InputError(f"combine: zip needs the same number of values for every key; "
-                             f"'{k}' has {m}, another has {n}", source=study.source,
-                             where=sweep_sec.where(k) if sweep_sec else None)
-    return [tuple(s.values[0] if s.kind == "fixed" else s.values[i] for s in sweeps) for i in range(n)]
+            raise InputError(
+                f"combine: zip needs the same number of values for every key; "
+                f"'{k}' has {m}, another has {n}",
+                source=study.source,
+                where=sweep_sec.where(k) if sweep_sec else None,
+            )
+    return [
+        tuple(s.values[0] if s.kind == "fixed" else s.values[i] for s in sweeps) for i in range(n)
+    ]
 
 
 def apply_overrides(base: Node, overrides, line: int = 0) -> Node:
@@ -127,8 +141,10 @@ def apply_overrides(base: Node, overrides, line: int = 0) -> Node:
         node = tree
         for j, p in enumerate(parts[:-1]):
             if not isinstance(node.value, dict):
-                raise InputError(f"cannot set '{key}': '{'.'.join(parts[:j])}' is not a mapping in the base "
-                                 f"problem; sweep '{'.'.join(parts[:j])}' itself instead")
+                raise InputError(
+                    f"cannot set '{key}': '{'.'.join(parts[:j])}' is not a mapping in the base "
+                    f"problem; sweep '{'.'.join(parts[:j])}' itself instead"
+                )
             nxt = node.value.get(p)
             if nxt is None:
                 nxt = Node({}, line)
@@ -136,8 +152,10 @@ def apply_overrides(base: Node, overrides, line: int = 0) -> Node:
             node = nxt
         if not isinstance(node.value, dict):
             where = ".".join(parts[:-1])
-            raise InputError(f"cannot set '{key}': '{where}' is a single value in the base problem, not a "
-                             f"mapping; sweep '{where}' itself instead")
+            raise InputError(
+                f"cannot set '{key}': '{where}' is a single value in the base problem, not a "
+                f"mapping; sweep '{where}' itself instead"
+            )
         node.value[parts[-1]] = _to_node(value, line)
     return tree
 
@@ -165,7 +183,9 @@ def check_base(study: Study, root: Section) -> None:
     try:
         build_problem(ctx, Case("base", -1, ()))
     except InputError as exc:
-        raise InputError(f"base problem: {exc}", source=study.source, where=root.where("base")) from None
+        raise InputError(
+            f"base problem: {exc}", source=study.source, where=root.where("base")
+        ) from None
     # every key with its first value, then each further distinct value on its own; with zip, the
     # cases where a listed value first appears (the user paired those values explicitly)
     first = tuple((s.key, s.checked[0]) for s in study.sweeps)
@@ -184,17 +204,22 @@ def check_base(study: Study, root: Section) -> None:
         if study.combine == "zip" and s.kind == "list":
             continue
         for v in s.checked[1:] if study.combine != "zip" else s.checked:
-            trials.append((s, first[:i] + ((s.key, v),) + first[i + 1:]))
+            trials.append((s, first[:i] + ((s.key, v),) + first[i + 1 :]))
     for s, ov in trials:
         try:
             build_problem(ctx, Case("check", -1, ov))
         except InputError as exc:
             culprit = _culprit(ctx, [s] if s is not None else study.sweeps, ov)
-            if culprit is None:  # each value is valid on its own: only the combination is invalid, which
-                continue  # is that case's result (recorded as input_error), not a fault of the study file
+            # each value is valid on its own: only the combination is invalid, which
+            if culprit is None:
+                # is that case's result (recorded as input_error), not a fault of the study file
+                continue
             value = dict(ov)[culprit.key]
-            raise InputError(f"sweep '{culprit.key}' value {json.dumps(value, default=str)}: {short_message(exc)}",
-                             source=study.source, where=f"line {culprit.line}") from None
+            raise InputError(
+                f"sweep '{culprit.key}' value {json.dumps(value, default=str)}: {short_message(exc)}",
+                source=study.source,
+                where=f"line {culprit.line}",
+            ) from None
 
 
 def _culprit(ctx, sweeps, overrides) -> Sweep | None:
@@ -213,5 +238,5 @@ def short_message(exc: InputError) -> str:
     """The message without the base file name and the made-up location of a swept value."""
     msg = str(exc)
     if exc.source and msg.startswith(exc.source + ": "):
-        msg = msg[len(exc.source) + 2:]
+        msg = msg[len(exc.source) + 2 :]
     return re.sub(r"^line 0, (key '[^']*'): ", r"\1: ", msg)

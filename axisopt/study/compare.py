@@ -17,7 +17,8 @@ from ..model import Evaluation, evaluate
 from ..yamlio import read_yaml
 
 LOG = logging.getLogger("axisopt")
-PROGRESS = 2.0  # [s] a comparison running longer reports each file done to the "axisopt" logger (a terminal)
+# [s] a comparison running longer reports each file done to the "axisopt" logger (a terminal)
+PROGRESS = 2.0
 
 
 @dataclass
@@ -27,7 +28,8 @@ class Compared:
     kind: str  # 'design' | 'problem'
     evaluation: Evaluation | None
     solve: dict | None = None  # for a problem: status, objective, certificate
-    margins: dict | None = None  # for a problem: its least check margins (limits.margins), what its checks meet
+    # for a problem: its least check margins (limits.margins), what its checks meet
+    margins: dict | None = None
 
     @property
     def ok(self) -> bool:
@@ -79,7 +81,9 @@ def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> 
     t0 = time.perf_counter()
     for i, p in enumerate(paths):
         if i and time.perf_counter() - t0 > PROGRESS:
-            LOG.info(f"  compare: {i} of {len(paths)} files done, {time.perf_counter() - t0:.0f} s; next {p}")
+            LOG.info(
+                f"  compare: {i} of {len(paths)} files done, {time.perf_counter() - t0:.0f} s; next {p}"
+            )
         kind = file_kind(p)
         if kind == "design":
             d = load_design(p)
@@ -90,15 +94,22 @@ def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> 
 
         prob = load_problem(p)
         res = solve(prob, method, top=1, sensitivities=False, time_limit=time_limit)
-        info = {"status": res.status, "method": res.method, "objective": res.objective_label,
-                "objective_value": None if res.best is None else res.best.objective,
-                "objective_unit": res.objective_unit, "proven": bool(res.certificate.proven),
-                "message": res.message}
+        info = {
+            "status": res.status,
+            "method": res.method,
+            "objective": res.objective_label,
+            "objective_value": None if res.best is None else res.best.objective,
+            "objective_unit": res.objective_unit,
+            "proven": bool(res.certificate.proven),
+            "message": res.message,
+        }
         if res.best is None or res.best.design is None:
             out.append(Compared(f"{prob.name} (solved)", str(p), kind, None, info))
             continue
         d = res.best.design
-        out.append(Compared(f"{prob.name} (solved)", str(p), kind, evaluate(d), info, prob.margin_map))
+        out.append(
+            Compared(f"{prob.name} (solved)", str(p), kind, evaluate(d), info, prob.margin_map)
+        )
     labels = [c.label for c in out]
     for c in out:  # two files with one name: tell them apart by file name
         if labels.count(c.label) > 1:

@@ -38,8 +38,12 @@ class StudyLock:
         self.release()
 
     def acquire(self) -> None:
-        me = {"pid": os.getpid(), "host": socket.gethostname(), "start": _process_start(os.getpid()),
-              "since": time.strftime("%Y-%m-%d %H:%M:%S")}
+        me = {
+            "pid": os.getpid(),
+            "host": socket.gethostname(),
+            "start": _process_start(os.getpid()),
+            "since": time.strftime("%Y-%m-%d %H:%M:%S"),
+        }
         text = json.dumps(me) + "\n"
         try:
             with _directory_flock(self.dir):
@@ -52,8 +56,9 @@ class StudyLock:
                     os.unlink(self.path)  # stale: its run is gone
                     self._create(text)
         except OSError as exc:
-            raise InputError(f"cannot take the study lock ({exc.strerror or exc})", source=str(self.path)) \
-                from None
+            raise InputError(
+                f"cannot take the study lock ({exc.strerror or exc})", source=str(self.path)
+            ) from None
         self.mine = me
 
     def _create(self, text: str) -> None:
@@ -74,9 +79,12 @@ class StudyLock:
         return d if isinstance(d, dict) else {}
 
     def _busy(self, h: dict) -> InputError:
-        return InputError(f"another study run (pid {h.get('pid')} on {h.get('host')}, since {h.get('since')}) is "
-                          f"writing to this directory; wait for it to end, or delete {self.path} if that run "
-                          f"is gone", source=str(self.dir))
+        return InputError(
+            f"another study run (pid {h.get('pid')} on {h.get('host')}, since {h.get('since')}) is "
+            f"writing to this directory; wait for it to end, or delete {self.path} if that run "
+            f"is gone",
+            source=str(self.dir),
+        )
 
     def release(self) -> None:
         if self.mine is None:

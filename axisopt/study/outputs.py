@@ -35,7 +35,8 @@ def write_outputs(study, out_dir, summary=None) -> dict:
     files = {}
     files["csv"] = str(out / "results.csv")
     with atomic_file(files["csv"], "w", what="results table") as fh:
-        csv_safe(df).to_csv(fh, index=False, float_format=CSV_FLOAT)  # text cells escaped (CSV injection)
+        # text cells escaped (CSV injection)
+        csv_safe(df).to_csv(fh, index=False, float_format=CSV_FLOAT)
     try:
         import pyarrow  # noqa: F401
     except ImportError:
@@ -48,7 +49,9 @@ def write_outputs(study, out_dir, summary=None) -> dict:
     plots = summary_plots(study, df, out / "plots", out)
     files.update(plots)
     files["report"] = str(out / "report.md")
-    write_text_atomic(files["report"], markdown_report(study, df, files, summary, parquet_note), what="report")
+    write_text_atomic(
+        files["report"], markdown_report(study, df, files, summary, parquet_note), what="report"
+    )
     return files
 
 
@@ -63,28 +66,51 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
     L = [f"# Study: {study.name}", ""]
     if study.description:
         L += [study.description.strip(), ""]
-    L += [f"- study file: `{study.source}`", f"- base problem: `{study.base_source}`",
-          f"- method: {study.method}; cases: {n} ({study.combine} of {len(study.sweeps)} swept keys)"]
+    L += [
+        f"- study file: `{study.source}`",
+        f"- base problem: `{study.base_source}`",
+        f"- method: {study.method}; cases: {n} ({study.combine} of {len(study.sweeps)} swept keys)",
+    ]
     if summary is not None:
-        L.append(f"- last run: {summary.solved} cases solved in {summary.time:.1f} s on {summary.backend}"
-                 + (f" ({summary.workers} workers)" if summary.workers else "")
-                 + (f", {summary.resumed} kept from an earlier run" if summary.resumed else ""))
+        L.append(
+            f"- last run: {summary.solved} cases solved in {summary.time:.1f} s on {summary.backend}"
+            + (f" ({summary.workers} workers)" if summary.workers else "")
+            + (f", {summary.resumed} kept from an earlier run" if summary.resumed else "")
+        )
         if summary.lost:
-            L.append(f"- **{summary.lost} cases not run** ({summary.lost_reason}); rerun with `--resume`")
+            L.append(
+                f"- **{summary.lost} cases not run** ({summary.lost_reason}); rerun with `--resume`"
+            )
     missing = n - len(df)
-    L.append(f"- finished: {len(df)} of {n}; solved: {len(ok)}; failed: {len(df) - len(ok)}"
-             + (f"; **missing: {missing}** (rerun with `--resume`)" if missing else ""))
+    L.append(
+        f"- finished: {len(df)} of {n}; solved: {len(ok)}; failed: {len(df) - len(ok)}"
+        + (f"; **missing: {missing}** (rerun with `--resume`)" if missing else "")
+    )
     L += ["", "## Sweeps", "", "| key | values | kind |", "|---|---|---|"]
     for s in study.sweeps:
         vals = [as_text(v) for v in s.values]
         shown = ", ".join(vals[:6]) + (f", ... ({len(vals)} values)" if len(vals) > 6 else "")
         L.append(f"| `{s.key}` | {shown} | {s.kind} |")
-    L += ["", "## Results", "", f"- table: [results.csv]({rel(files['csv'])})"
-          + (f", [results.parquet]({rel(files['parquet'])})" if "parquet" in files else f" ({parquet_note})"),
-          "- one JSON file per case: `cases/<case_id>.json`", ""]
+    L += [
+        "",
+        "## Results",
+        "",
+        f"- table: [results.csv]({rel(files['csv'])})"
+        + (
+            f", [results.parquet]({rel(files['parquet'])})"
+            if "parquet" in files
+            else f" ({parquet_note})"
+        ),
+        "- one JSON file per case: `cases/<case_id>.json`",
+        "",
+    ]
     counts = df["status"].value_counts()
     if len(counts):
-        L += ["| status | cases |", "|---|---|"] + [f"| {s} | {c} |" for s, c in counts.items()] + [""]
+        L += (
+            ["| status | cases |", "|---|---|"]
+            + [f"| {s} | {c} |" for s, c in counts.items()]
+            + [""]
+        )
     for name, p in files.items():
         if name.startswith("plot"):
             L += [f"### {name[5:]}", "", f"![{name[5:]}]({rel(p)})", ""]
@@ -92,17 +118,34 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
         unit = ok["objective_unit"].dropna().iloc[0] if ok["objective_unit"].notna().any() else ""
         cols = input_columns(study)
         top = ok.sort_values("objective", ascending=False).head(10)
-        L += ["## Best cases", "", "| case | " + " | ".join(n for n, _ in cols.values())
-              + f" | objective [{unit}] | mounting | nut | bearing | guide | k [N/um] | f [Hz] | cost [EUR] |",
-              "|" + "---|" * (len(cols) + 9)]
+        L += [
+            "## Best cases",
+            "",
+            "| case | "
+            + " | ".join(n for n, _ in cols.values())
+            + f" | objective [{unit}] | mounting | nut | bearing | guide | k [N/um] | f [Hz] | cost [EUR] |",
+            "|" + "---|" * (len(cols) + 9),
+        ]
         for _, r in top.iterrows():
-            L.append(f"| {r['case_id']} | " + " | ".join(_cell(r[n]) for n, _ in cols.values())
-                     + f" | {_cell(r['objective'])} | {r['mounting']} | {r['nut']} | {r['bearing']} | {r['guide']}"
-                     f" | {_cell(r['min_stiffness [N/um]'])} | {_cell(r['min_frequency [Hz]'])}"
-                     f" | {_cell(r['cost [EUR]'], 0)} |")
+            L.append(
+                f"| {r['case_id']} | "
+                + " | ".join(_cell(r[n]) for n, _ in cols.values())
+                + f" | {_cell(r['objective'])} | {r['mounting']} | {r['nut']} | {r['bearing']} | {r['guide']}"
+                f" | {_cell(r['min_stiffness [N/um]'])} | {_cell(r['min_frequency [Hz]'])}"
+                f" | {_cell(r['cost [EUR]'], 0)} |"
+            )
         L.append("")
         L += ["## Parts chosen", ""]
-        for slot in ("mounting", "screw", "nut", "bearing", "guide", "motor", "coupling", "reduction"):
+        for slot in (
+            "mounting",
+            "screw",
+            "nut",
+            "bearing",
+            "guide",
+            "motor",
+            "coupling",
+            "reduction",
+        ):
             vc = ok[slot].replace("", None).dropna().value_counts().head(5)
             if slot in ("motor", "coupling", "reduction") and vc.empty:
                 continue
@@ -112,7 +155,9 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
     if not bad.empty:
         L += ["## Failed cases", "", "| case | status | reason |", "|---|---|---|"]
         for _, r in bad.head(50).iterrows():
-            L.append(f"| {r['case_id']} | {r['status']} | {str(r['reason']).replace('|', '/')[:300]} |")
+            L.append(
+                f"| {r['case_id']} | {r['status']} | {str(r['reason']).replace('|', '/')[:300]} |"
+            )
         if len(bad) > 50:
             L.append(f"| ... | | {len(bad) - 50} more in the table |")
         L.append("")

@@ -26,7 +26,9 @@ def _group_column(study, df, cols):
     return "mounting"
 
 
-MAX_LINES = 10  # lines per plot; with more combinations the lines follow the plain grouping (text input or mounting)
+# lines per plot; with more combinations the lines follow the plain grouping (text input or
+# mounting)
+MAX_LINES = 10
 
 
 def _line_groups(df, cols, name, fallback):
@@ -59,7 +61,8 @@ def _group_label(g, by) -> str:
 _LINE_STYLES = ("-", "--", "-.", ":")
 
 
-SHADED_INPUTS = 20  # distinct inputs without a design shaded as bands; more are marked as a rug of ticks
+# distinct inputs without a design shaded as bands; more are marked as a rug of ticks
+SHADED_INPUTS = 20
 
 
 _MARKERS = ("o", "s", "^", "v", "D", "P", "X", "*")
@@ -90,27 +93,47 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         fig = Figure(figsize=(7, 6))
         a1, a2 = fig.subplots(2, 1, sharex=True)
         for j, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
-            # best over the cases that share this x and this line's inputs; each line its own dash pattern and
+            # best over the cases that share this x and this line's inputs; each line its own dash
+            # pattern and
             # marker, so lines that coincide stay visible
             k = sub.groupby(name)["min_stiffness [N/um]"].max()
             f = sub.groupby(name)["min_frequency [Hz]"].max()
-            style = dict(ls=_LINE_STYLES[j % len(_LINE_STYLES)], marker=_MARKERS[j % len(_MARKERS)] if len(k) < 40
-                         else ".", ms=4 + 1.5 * (j % 3), mfc="none", label=_group_label(g, by))
+            style = dict(
+                ls=_LINE_STYLES[j % len(_LINE_STYLES)],
+                marker=_MARKERS[j % len(_MARKERS)] if len(k) < 40 else ".",
+                ms=4 + 1.5 * (j % 3),
+                mfc="none",
+                label=_group_label(g, by),
+            )
             a1.plot(k.index, k.values, **style)
             a2.plot(f.index, f.values, **style)
         if len(bad):
-            # cases without a design have no value to draw: their inputs are shaded, not drawn as zeros (a
-            # sweep of many distinct inputs, e.g. random: a rug of ticks along the bottom of the panel, one artist)
+            # cases without a design have no value to draw: their inputs are shaded, not drawn as
+            # zeros (a
+            # sweep of many distinct inputs, e.g. random: a rug of ticks along the bottom of the
+            # panel, one artist)
             xs = sorted(set(bad[name].dropna()))
             what = f"for {len(bad)} cases ({', '.join(sorted(set(bad['status'])))})"
             short = key.split(".")[-1]
-            # with other inputs swept, the mark says where such a case sits, not that this input is the cause
-            text = (f"no design at this {short} {what}" if len(cols) == 1 else
-                    f"{short} of a case without a design {what}; the cause may be another input (its reason)")
+            # with other inputs swept, the mark says where such a case sits, not that this input is
+            # the cause
+            text = (
+                f"no design at this {short} {what}"
+                if len(cols) == 1
+                else f"{short} of a case without a design {what}; the cause may be another input (its reason)"
+            )
             for ax in (a1, a2):
                 if len(xs) > SHADED_INPUTS:
-                    ax.plot(xs, [0.0] * len(xs), "|", color="tab:red", ms=10, alpha=0.6,
-                            transform=ax.get_xaxis_transform(), label=text)
+                    ax.plot(
+                        xs,
+                        [0.0] * len(xs),
+                        "|",
+                        color="tab:red",
+                        ms=10,
+                        alpha=0.6,
+                        transform=ax.get_xaxis_transform(),
+                        label=text,
+                    )
                     continue
                 for i, x in enumerate(xs):
                     ax.axvline(x, color="tab:red", alpha=0.25, lw=4, label=text if i == 0 else None)
@@ -125,7 +148,8 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         fname = plot_dir / f"best_vs_{slug(key)}.png"
         save_figure(fig, fname, dpi=100)
         files[f"plot {key}"] = str(fname)
-    # trade-off over all cases: cost against minimum stiffness, non-dominated cases joined per machine
+    # trade-off over all cases: cost against minimum stiffness, non-dominated cases joined per
+    # machine
     pts = ok[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
     if len(pts) >= 2:
         fig = Figure(figsize=(7, 4.5))
@@ -136,26 +160,56 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         for i, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
             col = colors[i % len(colors)]
             sub = sub[["cost [EUR]", "min_stiffness [N/um]"]].dropna()
-            ax.scatter(sub["cost [EUR]"], sub["min_stiffness [N/um]"], s=12, alpha=0.7, color=col,
-                       label=_group_label(g, by))
+            ax.scatter(
+                sub["cost [EUR]"],
+                sub["min_stiffness [N/um]"],
+                s=12,
+                alpha=0.7,
+                color=col,
+                label=_group_label(g, by),
+            )
             if machines and len(sub) >= 2:
-                front = pareto_mask(sub["cost [EUR]"].to_numpy(), sub["min_stiffness [N/um]"].to_numpy())
+                front = pareto_mask(
+                    sub["cost [EUR]"].to_numpy(), sub["min_stiffness [N/um]"].to_numpy()
+                )
                 fr = sub[front].sort_values("cost [EUR]")
-                ax.step(fr["cost [EUR]"], fr["min_stiffness [N/um]"], "-", color=col, where="post", lw=1)
+                ax.step(
+                    fr["cost [EUR]"], fr["min_stiffness [N/um]"], "-", color=col, where="post", lw=1
+                )
         if not machines:
-            front = pareto_mask(pts["cost [EUR]"].to_numpy(), pts["min_stiffness [N/um]"].to_numpy())
+            front = pareto_mask(
+                pts["cost [EUR]"].to_numpy(), pts["min_stiffness [N/um]"].to_numpy()
+            )
             fr = pts[front].sort_values("cost [EUR]")
-            ax.step(fr["cost [EUR]"], fr["min_stiffness [N/um]"], "k-", where="post", lw=1,
-                    label="non-dominated cases")
+            ax.step(
+                fr["cost [EUR]"],
+                fr["min_stiffness [N/um]"],
+                "k-",
+                where="post",
+                lw=1,
+                label="non-dominated cases",
+            )
         if len(bad):
-            ax.text(0.01, 0.01, f"not shown: {len(bad)} cases without a design", transform=ax.transAxes,
-                    fontsize=8, color="tab:red", va="bottom")
+            ax.text(
+                0.01,
+                0.01,
+                f"not shown: {len(bad)} cases without a design",
+                transform=ax.transAxes,
+                fontsize=8,
+                color="tab:red",
+                va="bottom",
+            )
         ax.set_xlabel("cost [EUR]")
         ax.set_ylabel("min. axial stiffness [N/um]")
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7, title="non-dominated cases joined per machine" if machines else None,
-                  title_fontsize=7)
-        ax.set_title(f"{study.name}: stiffness against cost of every case's best design", fontsize=10)
+        ax.legend(
+            fontsize=7,
+            title="non-dominated cases joined per machine" if machines else None,
+            title_fontsize=7,
+        )
+        ax.set_title(
+            f"{study.name}: stiffness against cost of every case's best design", fontsize=10
+        )
         tidy_layout(fig)
         fname = plot_dir / "tradeoff_cost_stiffness.png"
         save_figure(fig, fname, dpi=100)
@@ -168,21 +222,29 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         fig = Figure(figsize=(7, 4.5))
         ax = fig.subplots()
         for r in fronts[:12]:
-            # each point's objective values in the front's key order (a record written before they were stored:
+            # each point's objective values in the front's key order (a record written before they
+            # were stored:
             # the Candidate field of the goal)
-            if not {kx, ky} <= set(r["pareto"]["keys"]):  # a case with other objectives: not on these axes
+            # a case with other objectives: not on these axes
+            if not {kx, ky} <= set(r["pareto"]["keys"]):
                 continue
             at = [r["pareto"]["keys"].index(k) for k in (kx, ky)]
-            vals = [p["objectives"] if "objectives" in p else [p[GOALS[k].field] for k in r["pareto"]["keys"]]
-                    for p in r["pareto"]["points"]]
+            vals = [
+                p["objectives"]
+                if "objectives" in p
+                else [p[GOALS[k].field] for k in r["pareto"]["keys"]]
+                for p in r["pareto"]["points"]
+            ]
             xs, ys = [v[at[0]] for v in vals], [v[at[1]] for v in vals]
             ax.plot(xs, ys, ".", label=case_label(r, cols))
         ax.set_xlabel(f"{kx} [{p0['units'][0]}]")
         ax.set_ylabel(f"{ky} [{p0['units'][1]}]")
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7)
-        ax.set_title(f"{study.name}: Pareto fronts" + (" (first 12 cases)" if len(fronts) > 12 else ""),
-                     fontsize=10)
+        ax.set_title(
+            f"{study.name}: Pareto fronts" + (" (first 12 cases)" if len(fronts) > 12 else ""),
+            fontsize=10,
+        )
         tidy_layout(fig)
         fname = plot_dir / "pareto_fronts.png"
         save_figure(fig, fname, dpi=100)

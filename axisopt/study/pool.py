@@ -67,7 +67,8 @@ def _mp_context():
     if "forkserver" not in methods:  # pragma: no cover - not POSIX
         return mp.get_context("spawn")
     c = mp.get_context("forkserver")
-    # the fork server imports the solver stack once, so that a worker (or one replacing a dead worker)
+    # the fork server imports the solver stack once, so that a worker (or one replacing a dead
+    # worker)
     # starts in milliseconds instead of a second; it takes effect when the server starts
     c.set_forkserver_preload(["axisopt.study.run", "axisopt.search", "axisopt.model"])
     return c
@@ -138,10 +139,19 @@ def run_pool(workers: int, ctx: dict, cases: list, sink, solve) -> tuple:
         if deaths[c.case_id] < WORKER_DEATHS:
             queue.appendleft(c)  # alone on a fresh worker next
             return
-        sink({"version": RECORD_VERSION, "case_id": c.case_id, "index": c.index, "inputs": c.inputs(),
-              "status": "worker_died", "time_s": 0.0, "worker": "",
-              "reason": f"the worker process died {deaths[c.case_id]} times while solving this case (last: "
-                        f"{last_exit}); a resumed run (--resume) solves it again"})
+        sink(
+            {
+                "version": RECORD_VERSION,
+                "case_id": c.case_id,
+                "index": c.index,
+                "inputs": c.inputs(),
+                "status": "worker_died",
+                "time_s": 0.0,
+                "worker": "",
+                "reason": f"the worker process died {deaths[c.case_id]} times while solving this case (last: "
+                f"{last_exit}); a resumed run (--resume) solves it again",
+            }
+        )
 
     finished = False
     try:
@@ -210,14 +220,17 @@ def run_dask(scheduler, ctx: dict, batches: list, sink, max_tasks: int | None = 
     try:
         from dask.distributed import Client, as_completed
     except ImportError:
-        raise InputError("--scheduler needs dask.distributed, an optional extra: pip install 'axisopt[dask]'") \
-            from None
+        raise InputError(
+            "--scheduler needs dask.distributed, an optional extra: pip install 'axisopt[dask]'"
+        ) from None
     own = not hasattr(scheduler, "submit")
     if own:
         try:
             client = Client(scheduler, timeout="10s")
         except (OSError, TimeoutError, ValueError) as exc:
-            raise InputError(f"cannot connect to the Dask scheduler at '{scheduler}' ({exc})") from None
+            raise InputError(
+                f"cannot connect to the Dask scheduler at '{scheduler}' ({exc})"
+            ) from None
     else:
         client = scheduler
     lost, reason = 0, ""
@@ -233,14 +246,16 @@ def run_dask(scheduler, ctx: dict, batches: list, sink, max_tasks: int | None = 
                 futs[f] = b
                 done.add(f)
 
-        for _ in range(max_tasks or MAX_TASKS):  # the scheduler holds at most max_tasks tasks; one more as each ends
+        # the scheduler holds at most max_tasks tasks; one more as each ends
+        for _ in range(max_tasks or MAX_TASKS):
             submit()
         for f in done:
             b = futs.pop(f)
             submit()
             try:
                 recs = f.result()
-            except Exception as exc:  # worker lost after the scheduler's retries, connection lost...
+            # worker lost after the scheduler's retries, connection lost...
+            except Exception as exc:
                 lost += len(b)
                 reason = f"{type(exc).__name__}: {exc}"
                 continue

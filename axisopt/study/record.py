@@ -40,32 +40,58 @@ def solve_case(context: dict, case: Case) -> dict:
     from ..search import solve
 
     t0 = time.perf_counter()
-    rec = {"version": RECORD_VERSION, "case_id": case.case_id, "index": case.index,
-           "inputs": {k: v for k, v in case.overrides}, "status": "", "reason": "",
-           "worker": f"{socket.gethostname()}:{os.getpid()}"}
+    rec = {
+        "version": RECORD_VERSION,
+        "case_id": case.case_id,
+        "index": case.index,
+        "inputs": {k: v for k, v in case.overrides},
+        "status": "",
+        "reason": "",
+        "worker": f"{socket.gethostname()}:{os.getpid()}",
+    }
     try:
         problem = build_problem(context, case)
     except InputError as exc:
-        rec.update(status="input_error", reason=short_message(exc).replace("\n", " "),
-                   time_s=time.perf_counter() - t0)
+        rec.update(
+            status="input_error",
+            reason=short_message(exc).replace("\n", " "),
+            time_s=time.perf_counter() - t0,
+        )
         return rec
     try:
         with _SOLVE_LOCK:
-            res = solve(problem, context["method"], top=1, sensitivities=False,
-                        time_limit=context.get("time_limit", 100.0))
-            # on numpy: the CasADi Function of a case's duty cycle would be built for this one evaluation
-            ev = evaluate(res.best.design, use_casadi=False) if res.best is not None and res.best.design is not None \
+            res = solve(
+                problem,
+                context["method"],
+                top=1,
+                sensitivities=False,
+                time_limit=context.get("time_limit", 100.0),
+            )
+            # on numpy: the CasADi Function of a case's duty cycle would be built for this one
+            # evaluation
+            ev = (
+                evaluate(res.best.design, use_casadi=False)
+                if res.best is not None and res.best.design is not None
                 else None
+            )
     except Exception as exc:  # a solver failure is a result of this case, not the end of the study
-        rec.update(status="error", reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
-                   time_s=time.perf_counter() - t0)
+        rec.update(
+            status="error",
+            reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
+            time_s=time.perf_counter() - t0,
+        )
         return rec
     rec["status"] = res.status
-    rec["objective"] = {"label": res.objective_label, "unit": res.objective_unit, "value": _num(res.objective)}
+    rec["objective"] = {
+        "label": res.objective_label,
+        "unit": res.objective_unit,
+        "value": _num(res.objective),
+    }
     reason = res.message
     if res.infeasibility is not None:  # the misses that decide first, the notes after
-        reason = res.infeasibility.deciding(most=len(res.infeasibility.unmeetable) or 3) + \
-            (f"; {reason}" if reason else "")
+        reason = res.infeasibility.deciding(most=len(res.infeasibility.unmeetable) or 3) + (
+            f"; {reason}" if reason else ""
+        )
     rec["reason"] = reason if res.status not in OK_STATUSES else ""
     rec["note"] = res.message if res.status in OK_STATUSES else ""
     if res.best is not None:
@@ -75,19 +101,32 @@ def solve_case(context: dict, case: Case) -> dict:
     if ev is not None:
         k, kpos = ev.minimum("k_total")
         f, fpos = ev.minimum("f1")
-        rec["profile"] = {"min_stiffness_position_mm": kpos * 1e3, "min_frequency_position_mm": fpos * 1e3,
-                          "weakest_link": ev.weakest, "all_checks_pass": bool(min(ev.checks().values()) >= 1.0)}
+        rec["profile"] = {
+            "min_stiffness_position_mm": kpos * 1e3,
+            "min_frequency_position_mm": fpos * 1e3,
+            "weakest_link": ev.weakest,
+            "all_checks_pass": bool(min(ev.checks().values()) >= 1.0),
+        }
         drv = drive_dict(ev)
         if drv is not None:  # the motor's needs and its torque margins
-            rec["drive"] = {k: (_num(float(v)) if isinstance(v, (int, float)) else v) for k, v in drv.items()}
-        rec["checks"] = {r["check"]: {k: r[k] for k in ("available", "needed", "unit", "margin", "pass")}
-                         for r in check_rows(ev)}
+            rec["drive"] = {
+                k: (_num(float(v)) if isinstance(v, (int, float)) else v) for k, v in drv.items()
+            }
+        rec["checks"] = {
+            r["check"]: {k: r[k] for k in ("available", "needed", "unit", "margin", "pass")}
+            for r in check_rows(ev)
+        }
     c = res.certificate
-    rec["certificate"] = {"proven": bool(c.proven), "gap": _num(c.gap), "combinations": int(c.combinations),
-                          "feasible": None if c.feasible is None else int(c.feasible),
-                          "pruned_by_bound": int(c.pruned_by_bound),
-                          "exact_evaluations": int(c.exact_evaluations), "nlps": int(c.nlps_solved),
-                          "nlp_failures": int(c.nlp_failures)}
+    rec["certificate"] = {
+        "proven": bool(c.proven),
+        "gap": _num(c.gap),
+        "combinations": int(c.combinations),
+        "feasible": None if c.feasible is None else int(c.feasible),
+        "pruned_by_bound": int(c.pruned_by_bound),
+        "exact_evaluations": int(c.exact_evaluations),
+        "nlps": int(c.nlps_solved),
+        "nlp_failures": int(c.nlp_failures),
+    }
     if res.pareto is not None:
         rec["pareto"] = res.pareto.to_dict()
     rec["time_s"] = time.perf_counter() - t0

@@ -13,8 +13,18 @@ from .store import CaseStore, refuse_inputs_in
 from .table import results_table
 
 # columns of the notebook's HTML view (the table itself has every column)
-SHOWN = ("case_id", "status", "objective", "objective_unit", "mounting", "screw", "nut", "min_stiffness [N/um]",
-         "min_frequency [Hz]", "cost [EUR]")
+SHOWN = (
+    "case_id",
+    "status",
+    "objective",
+    "objective_unit",
+    "mounting",
+    "screw",
+    "nut",
+    "min_stiffness [N/um]",
+    "min_frequency [Hz]",
+    "cost [EUR]",
+)
 
 
 @dataclass(repr=False)
@@ -39,9 +49,19 @@ class StudyResult:
 
     def __repr__(self) -> str:
         s = self.summary
-        return one_line("StudyResult", repr(self.study.name), {
-            "cases": s.total, "solved now": s.solved, "kept": s.resumed or None, "failed": s.failed,
-            "not run": s.lost or None, "time": f"{s.time:.1f} s", "out": self.out_dir})
+        return one_line(
+            "StudyResult",
+            repr(self.study.name),
+            {
+                "cases": s.total,
+                "solved now": s.solved,
+                "kept": s.resumed or None,
+                "failed": s.failed,
+                "not run": s.lost or None,
+                "time": f"{s.time:.1f} s",
+                "out": self.out_dir,
+            },
+        )
 
     def _repr_html_(self) -> str:
         df = self.to_frame()
@@ -53,8 +73,17 @@ class StudyResult:
 OUTPUT_FILES = ("study.json", "results.csv", "results.parquet", "report.md")
 
 
-def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, overwrite: bool = False,
-             scheduler=None, progress=None, time_limit: float = 100.0) -> StudyResult:
+def run_spec(
+    spec,
+    out=None,
+    *,
+    workers: int | None = 0,
+    resume: bool = False,
+    overwrite: bool = False,
+    scheduler=None,
+    progress=None,
+    time_limit: float = 100.0,
+) -> StudyResult:
     """Run a study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult`.
 
     out       : output directory (default ``<study file stem>-results``, as on the command line)
@@ -74,7 +103,9 @@ def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, o
     from .spec import load_study
 
     if resume and overwrite:
-        raise InputError("resume=True continues a run, overwrite=True starts it again: give one of them")
+        raise InputError(
+            "resume=True continues a run, overwrite=True starts it again: give one of them"
+        )
     path = isinstance(spec, (str, PathLike))
     study = load_study(spec) if path else spec
     if not (math.isfinite(time_limit) and time_limit > 0):
@@ -82,15 +113,19 @@ def run_spec(spec, out=None, *, workers: int | None = 0, resume: bool = False, o
     study = replace(study, time_limit=float(time_limit))
     if out is None:
         out = f"{Path(spec).stem if path else study.name}-results"
-    refuse_inputs_in(Path(out), [str(spec) if path else study.source, study.base_source], OUTPUT_FILES)
+    refuse_inputs_in(
+        Path(out), [str(spec) if path else study.source, study.base_source], OUTPUT_FILES
+    )
     store = CaseStore(out)
     have = store.existing()
     if have and overwrite:
         clear_cases(out)
     elif have and not resume:
-        raise InputError(f"already holds {len(have)} case results; call axisopt.study(..., resume=True) to "
-                         "continue that study, overwrite=True to solve it again, or give another out",
-                         source=str(out))
+        raise InputError(
+            f"already holds {len(have)} case results; call axisopt.study(..., resume=True) to "
+            "continue that study, overwrite=True to solve it again, or give another out",
+            source=str(out),
+        )
     return run(study, out, workers=workers, resume=resume, scheduler=scheduler, progress=progress)
 
 
@@ -105,12 +140,21 @@ def clear_cases(out) -> int:
     return len(have)
 
 
-def run(study: Study, out_dir, *, workers: int | None = 0, resume: bool = False, scheduler=None,
-        progress=None) -> StudyResult:
+def run(
+    study: Study,
+    out_dir,
+    *,
+    workers: int | None = 0,
+    resume: bool = False,
+    scheduler=None,
+    progress=None,
+) -> StudyResult:
     """Run ``study`` into ``out_dir`` (:func:`axisopt.study.run.run_study`) and return its result."""
     if scheduler is not None:
         workers = None
-    summary = run_study(study, out_dir, workers=workers, scheduler=scheduler, resume=resume, progress=progress)
+    summary = run_study(
+        study, out_dir, workers=workers, scheduler=scheduler, resume=resume, progress=progress
+    )
     return StudyResult(study, str(out_dir), summary)
 
 

@@ -80,7 +80,8 @@ class RunSummary:
     backend: str
     workers: int
     files: dict = field(default_factory=dict)  # name -> path of the table, plots, report
-    died: int = 0  # recorded as worker_died by this run (their worker died twice); rerun with resume
+    # recorded as worker_died by this run (their worker died twice); rerun with resume
+    died: int = 0
     redone: int = 0  # recorded as worker_died by an earlier run and solved again by this one
 
 
@@ -96,8 +97,17 @@ def batch_size(n_cases: int, workers: int) -> int:
     return max(1, min(8, n_cases // max(1, 6 * workers)))
 
 
-def run_study(study: Study, out_dir, *, workers: int | None = None, scheduler=None, resume: bool = False,
-              progress=None, batch: int | None = None, report: bool = True) -> RunSummary:
+def run_study(
+    study: Study,
+    out_dir,
+    *,
+    workers: int | None = None,
+    scheduler=None,
+    resume: bool = False,
+    progress=None,
+    batch: int | None = None,
+    report: bool = True,
+) -> RunSummary:
     """Run every case of ``study`` not yet in ``out_dir`` and write the table, plots and report.
 
     workers   : local worker processes (default: all cores); 0 solves in this process
@@ -116,13 +126,18 @@ def run_study(study: Study, out_dir, *, workers: int | None = None, scheduler=No
         return _run_locked(study, out, workers, scheduler, resume, progress, batch, report)
 
 
-def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, report) -> RunSummary:
+def _run_locked(
+    study, out: Path, workers, scheduler, resume, progress, batch, report
+) -> RunSummary:
     store = CaseStore(out)
     have = store.existing()
     ids = {c.case_id for c in study.cases}
     if have and not resume:
-        raise InputError(f"already holds {len(have)} case results; pass --resume to continue that study, "
-                         f"--overwrite to solve it again, or choose another --out", source=str(out))
+        raise InputError(
+            f"already holds {len(have)} case results; pass --resume to continue that study, "
+            f"--overwrite to solve it again, or choose another --out",
+            source=str(out),
+        )
     store.prepare()
     sweep_temporaries(out)
     if (out / "plots").is_dir():
@@ -132,8 +147,11 @@ def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, r
     for i in have & ids:
         rec = store.read(i)
         if rec is not None:
-            kept[i] = "worker_died" if rec.get("reason") == LEGACY_WORKER_DIED else rec.get("status")
-    redo = {i for i, st in kept.items() if st in INFRA_STATUSES}  # the machinery failed, not the case
+            kept[i] = (
+                "worker_died" if rec.get("reason") == LEGACY_WORKER_DIED else rec.get("status")
+            )
+    # the machinery failed, not the case
+    redo = {i for i, st in kept.items() if st in INFRA_STATUSES}
     done_ids = set(kept) - redo
     todo = [c for c in study.cases if c.case_id not in done_ids]
     prog = Progress(total=len(study.cases), done=len(done_ids), resumed=len(done_ids))
@@ -168,11 +186,23 @@ def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, r
                 sink(solve_case(ctx, c))
         else:
             backend = "local pool"
-            # solve_case is looked up now (not imported by the workers) so that a test can replace it
+            # solve_case is looked up now (not imported by the workers) so that a test can replace
+            # it
             lost, lost_reason = run_pool(min(nw, len(todo)), ctx, todo, sink, solve_case)
-    summary = RunSummary(out_dir=str(out), total=len(study.cases), solved=prog.done - prog.resumed,
-                         resumed=prog.resumed, failed=prog.failed, lost=lost, lost_reason=lost_reason,
-                         time=prog.elapsed, backend=backend, workers=nw, died=died, redone=len(redo))
+    summary = RunSummary(
+        out_dir=str(out),
+        total=len(study.cases),
+        solved=prog.done - prog.resumed,
+        resumed=prog.resumed,
+        failed=prog.failed,
+        lost=lost,
+        lost_reason=lost_reason,
+        time=prog.elapsed,
+        backend=backend,
+        workers=nw,
+        died=died,
+        redone=len(redo),
+    )
     if report:
         from .outputs import write_outputs
 
@@ -181,17 +211,37 @@ def _run_locked(study, out: Path, workers, scheduler, resume, progress, batch, r
 
 
 def _batches(cases, size: int) -> list:
-    return [tuple(cases[i:i + size]) for i in range(0, len(cases), size)]
+    return [tuple(cases[i : i + size]) for i in range(0, len(cases), size)]
 
 
 def _write_definition(study: Study, out: Path) -> None:
     from ..fileio import write_text_atomic
 
-    d = {"name": study.name, "source": study.source, "base_source": study.base_source, "method": study.method,
-         "combine": study.combine, "keys": list(study.keys), "fingerprint": study.fingerprint(),
-         "cases": [{"case_id": c.case_id, "index": c.index, "inputs": c.inputs()} for c in study.cases]}
-    write_text_atomic(out / "study.json", json.dumps(d, indent=1, default=str) + "\n", what="study definition")
+    d = {
+        "name": study.name,
+        "source": study.source,
+        "base_source": study.base_source,
+        "method": study.method,
+        "combine": study.combine,
+        "keys": list(study.keys),
+        "fingerprint": study.fingerprint(),
+        "cases": [
+            {"case_id": c.case_id, "index": c.index, "inputs": c.inputs()} for c in study.cases
+        ],
+    }
+    write_text_atomic(
+        out / "study.json", json.dumps(d, indent=1, default=str) + "\n", what="study definition"
+    )
 
 
-__all__ = ["run_study", "solve_case", "run_batch", "CaseStore", "StudyLock", "Progress", "RunSummary", "OK_STATUSES",
-           "INFRA_STATUSES"]
+__all__ = [
+    "run_study",
+    "solve_case",
+    "run_batch",
+    "CaseStore",
+    "StudyLock",
+    "Progress",
+    "RunSummary",
+    "OK_STATUSES",
+    "INFRA_STATUSES",
+]

@@ -49,55 +49,142 @@ COMBINE = ("product", "zip")
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 
-# ------------------------------------------------------------------------------ the YAML keys (one table)
-# The one declaration of a study file's keys: load_study reads them by it and `axisopt schema study` writes
-# it out.  A sweep's keys are the user's (dotted paths into the problem); their values are checked against
+# ------------------------------------------------------------------------------ the YAML keys (one
+# table)
+# The one declaration of a study file's keys: load_study reads them by it and `axisopt schema study`
+# writes
+# it out.  A sweep's keys are the user's (dotted paths into the problem); their values are checked
+# against
 # the base problem when the study is read, which no table can say.
 
 MAX_VALUES = 100_000  # values of one sweep (random n, grid steps)
 SWEEP_KEY = r"[A-Za-z_][A-Za-z0-9_-]*(\.[A-Za-z_][A-Za-z0-9_-]*)*"
 
-_END = Key("quantity", "a number with the swept key's unit (the same unit at both ends)", required=True,
-           example="500 mm")
+_END = Key(
+    "quantity",
+    "a number with the swept key's unit (the same unit at both ends)",
+    required=True,
+    example="500 mm",
+)
 _N = Key("number", "number of samples", required=True, integer=True, minimum=1, maximum=MAX_VALUES)
-_SEED = Key("number", "seed of the random generator", required=True, integer=True, minimum=0, maximum=2**63 - 1)
-RANDOM_RANGE_SPEC = Spec("random_range", "seeded uniform samples between low and high", {
-    "low": _END, "high": _END, "n": _N, "seed": _SEED,
-    "integer": Key("choice", "round the samples to whole numbers", choices=(True, False), default=False),
-})
-RANDOM_CHOICE_SPEC = Spec("random_choice", "seeded random picks from a list of values", {
-    "choice": Key("list", "the values to pick from", required=True, minimum=1,
-                  items=Key("any", "a value of the swept key")),
-    "n": _N, "seed": _SEED,
-})
-RANDOM_SWEEP_SPEC = Spec("random_sweep", "seeded random values", {
-    "random": Key("one_of", "samples of a range, or picks from a list", required=True,
-                  options=(Key("section", spec=RANDOM_RANGE_SPEC), Key("section", spec=RANDOM_CHOICE_SPEC))),
-})
-RANGE_SPEC = Spec("range", "an evenly spaced grid from..to", {
-    "from": _END, "to": _END,
-    "steps": Key("number", "number of grid values", required=True, integer=True, minimum=1, maximum=MAX_VALUES),
-    "spacing": Key("choice", "linear, or log (even ratios)", choices=("linear", "log"), default="linear"),
-})
-SWEEP_SPEC = Spec("sweep", "the swept keys: dotted paths into the problem (e.g. axis.stroke)", {},
-                  extra=Key("one_of", "the values of a swept key", options=(
-                      Key("list", "a list of values", minimum=1, items=Key("any", "a value of the swept key")),
-                      Key("section", spec=RANGE_SPEC),
-                      Key("section", spec=RANDOM_SWEEP_SPEC),
-                      Key("one_of", "one value, set for every case",
-                          options=(Key("string"), Key("number"), Key("choice", choices=(True, False)))))),
-                  extra_doc="a dotted path into the problem YAML, e.g. axis.stroke or limits.max_cost",
-                  extra_pattern=f"^{SWEEP_KEY}$")
-STUDY_SPEC = Spec("study", "a study: a base problem and sweeps over its keys, expanded into cases", {
-    "name": NAME_KEY, "description": DESCRIPTION_KEY,
-    "base": Key("one_of", "the base problem", required=True,
-                options=(Key("string", "path of a problem YAML, relative to this file"),
-                         Key("section", "an inline problem", spec=PROBLEM_SPEC))),
-    "method": Key("choice", "solve method for every case", choices=METHODS, default="default"),
-    "combine": Key("choice", "product: every combination; zip: the n-th value of each key", choices=COMBINE,
-                   default="product"),
-    "sweep": Key("section", "the swept keys", required=True, spec=SWEEP_SPEC),
-})
+_SEED = Key(
+    "number",
+    "seed of the random generator",
+    required=True,
+    integer=True,
+    minimum=0,
+    maximum=2**63 - 1,
+)
+RANDOM_RANGE_SPEC = Spec(
+    "random_range",
+    "seeded uniform samples between low and high",
+    {
+        "low": _END,
+        "high": _END,
+        "n": _N,
+        "seed": _SEED,
+        "integer": Key(
+            "choice", "round the samples to whole numbers", choices=(True, False), default=False
+        ),
+    },
+)
+RANDOM_CHOICE_SPEC = Spec(
+    "random_choice",
+    "seeded random picks from a list of values",
+    {
+        "choice": Key(
+            "list",
+            "the values to pick from",
+            required=True,
+            minimum=1,
+            items=Key("any", "a value of the swept key"),
+        ),
+        "n": _N,
+        "seed": _SEED,
+    },
+)
+RANDOM_SWEEP_SPEC = Spec(
+    "random_sweep",
+    "seeded random values",
+    {
+        "random": Key(
+            "one_of",
+            "samples of a range, or picks from a list",
+            required=True,
+            options=(
+                Key("section", spec=RANDOM_RANGE_SPEC),
+                Key("section", spec=RANDOM_CHOICE_SPEC),
+            ),
+        ),
+    },
+)
+RANGE_SPEC = Spec(
+    "range",
+    "an evenly spaced grid from..to",
+    {
+        "from": _END,
+        "to": _END,
+        "steps": Key(
+            "number",
+            "number of grid values",
+            required=True,
+            integer=True,
+            minimum=1,
+            maximum=MAX_VALUES,
+        ),
+        "spacing": Key(
+            "choice", "linear, or log (even ratios)", choices=("linear", "log"), default="linear"
+        ),
+    },
+)
+SWEEP_SPEC = Spec(
+    "sweep",
+    "the swept keys: dotted paths into the problem (e.g. axis.stroke)",
+    {},
+    extra=Key(
+        "one_of",
+        "the values of a swept key",
+        options=(
+            Key(
+                "list", "a list of values", minimum=1, items=Key("any", "a value of the swept key")
+            ),
+            Key("section", spec=RANGE_SPEC),
+            Key("section", spec=RANDOM_SWEEP_SPEC),
+            Key(
+                "one_of",
+                "one value, set for every case",
+                options=(Key("string"), Key("number"), Key("choice", choices=(True, False))),
+            ),
+        ),
+    ),
+    extra_doc="a dotted path into the problem YAML, e.g. axis.stroke or limits.max_cost",
+    extra_pattern=f"^{SWEEP_KEY}$",
+)
+STUDY_SPEC = Spec(
+    "study",
+    "a study: a base problem and sweeps over its keys, expanded into cases",
+    {
+        "name": NAME_KEY,
+        "description": DESCRIPTION_KEY,
+        "base": Key(
+            "one_of",
+            "the base problem",
+            required=True,
+            options=(
+                Key("string", "path of a problem YAML, relative to this file"),
+                Key("section", "an inline problem", spec=PROBLEM_SPEC),
+            ),
+        ),
+        "method": Key("choice", "solve method for every case", choices=METHODS, default="default"),
+        "combine": Key(
+            "choice",
+            "product: every combination; zip: the n-th value of each key",
+            choices=COMBINE,
+            default="product",
+        ),
+        "sweep": Key("section", "the swept keys", required=True, spec=SWEEP_SPEC),
+    },
+)
 
 
 def load_study(path) -> Study:
@@ -111,9 +198,11 @@ def load_study(path) -> Study:
     combine = root.read("combine")
     base_node = root.raw("base", required=True)
     if isinstance(base_node.value, str):
-        bpath = (path.parent / base_node.value)
+        bpath = path.parent / base_node.value
         if not bpath.is_file():
-            raise root.error("base", f"base problem '{base_node.value}' not found (relative to the study file)")
+            raise root.error(
+                "base", f"base problem '{base_node.value}' not found (relative to the study file)"
+            )
         base = read_yaml(bpath)
         base_source, base_dir = str(bpath), str(bpath.parent)
     elif isinstance(base_node.value, dict):
@@ -125,8 +214,17 @@ def load_study(path) -> Study:
     if not sweeps:
         raise root.error("sweep", "list at least one key to sweep")
     root.done()
-    study = Study(name=name, description=description, source=src, base=base, base_source=base_source,
-                  base_dir=base_dir, method=method, combine=combine, sweeps=sweeps)
+    study = Study(
+        name=name,
+        description=description,
+        source=src,
+        base=base,
+        base_source=base_source,
+        base_dir=base_dir,
+        method=method,
+        combine=combine,
+        sweeps=sweeps,
+    )
     cases = expand(study, sweep_sec)  # checks zip lengths
     check_base(study, root)
     return replace(study, cases=cases)
@@ -134,11 +232,14 @@ def load_study(path) -> Study:
 
 # ------------------------------------------------------------------------------------------ sweeps
 
+
 def read_sweep(sec: Section, key: str) -> Sweep:
     node = sec.raw(key)
     where = sec.where(key)
     if not re.fullmatch(SWEEP_KEY, key):
-        raise sec.error(key, f"sweep key '{key}' must be a dotted path into the problem, e.g. axis.stroke")
+        raise sec.error(
+            key, f"sweep key '{key}' must be a dotted path into the problem, e.g. axis.stroke"
+        )
     v = node.value
     if isinstance(v, list):
         values = tuple(plain(n) for n in v)
@@ -158,8 +259,13 @@ def read_sweep(sec: Section, key: str) -> Sweep:
                 raise rs.error("choice", "expected a non-empty list of values")
             idx = rng.integers(0, len(choices), n)
             rs.done()
-            return Sweep(key, tuple(copy.deepcopy(choices[i]) for i in idx), "random", node.line,
-                         tuple(unique_values(choices)))
+            return Sweep(
+                key,
+                tuple(copy.deepcopy(choices[i]) for i in idx),
+                "random",
+                node.line,
+                tuple(unique_values(choices)),
+            )
         lo, hi, unit = _pair(rs, "low", "high")
         integer = rs.value("integer", False)
         if not isinstance(integer, bool):
@@ -169,7 +275,9 @@ def read_sweep(sec: Section, key: str) -> Sweep:
         if integer:
             draws = np.round(draws)
         vals = tuple(_fmt(x, unit, integer) for x in draws)
-        return Sweep(key, vals, "random", node.line, (_fmt(lo, unit, integer), _fmt(hi, unit, integer)))
+        return Sweep(
+            key, vals, "random", node.line, (_fmt(lo, unit, integer), _fmt(hi, unit, integer))
+        )
     if isinstance(v, dict) and ("from" in v or "to" in v or "steps" in v):
         rs = Section(node, sec.source, sec.key_path(key), RANGE_SPEC)
         lo, hi, unit = _pair(rs, "from", "to")
@@ -185,8 +293,11 @@ def read_sweep(sec: Section, key: str) -> Sweep:
         vals = tuple(_fmt(x, unit, False) for x in grid)
         return Sweep(key, vals, "range", node.line, (vals[0], vals[-1]))
     if isinstance(v, dict):
-        raise InputError("expected a list of values, {from, to, steps}, {random: {...}} or one value",
-                         source=sec.source, where=where)
+        raise InputError(
+            "expected a list of values, {from, to, steps}, {random: {...}} or one value",
+            source=sec.source,
+            where=where,
+        )
     return Sweep(key, (v,), "fixed", node.line, (v,))
 
 
@@ -225,4 +336,3 @@ def _fmt(x: float, unit: str, integer: bool):
 
 
 __all__ = ["STUDY_SPEC", "load_study", "read_sweep"]
-

@@ -12,20 +12,35 @@ from ..fileio import refuse_inputs, same_file
 from ..search.result import FEASIBLE, INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT
 
 OK_STATUSES = (OPTIMAL, FEASIBLE)
-# every status a case record may hold: the solver's (axisopt.search.result.STATUS_TABLE) and the runner's
-CASE_STATUSES = OK_STATUSES + (INFEASIBLE, TIME_LIMIT, SOLVER_FAILED, "input_error", "error", "worker_died")
+# every status a case record may hold: the solver's (axisopt.search.result.STATUS_TABLE) and the
+# runner's
+CASE_STATUSES = OK_STATUSES + (
+    INFEASIBLE,
+    TIME_LIMIT,
+    SOLVER_FAILED,
+    "input_error",
+    "error",
+    "worker_died",
+)
 RECORD_VERSION = 1
 
 
 def valid_record(rec, case_id: str) -> bool:
     """A case record read back is trusted only when it is a mapping of this record version for this very
     case (``case_id``), with a known status and fields of the right type; anything else is solved again."""
-    if not isinstance(rec, dict) or rec.get("version") != RECORD_VERSION or rec.get("case_id") != case_id:
+    if (
+        not isinstance(rec, dict)
+        or rec.get("version") != RECORD_VERSION
+        or rec.get("case_id") != case_id
+    ):
         return False
     if rec.get("status") not in CASE_STATUSES or not isinstance(rec.get("reason", ""), str):
         return False
-    if not isinstance(rec.get("index"), int) or isinstance(rec.get("index"), bool) or \
-            not isinstance(rec.get("inputs"), dict):
+    if (
+        not isinstance(rec.get("index"), int)
+        or isinstance(rec.get("index"), bool)
+        or not isinstance(rec.get("inputs"), dict)
+    ):
         return False
     for key in ("objective", "best", "profile", "drive", "checks", "certificate", "pareto"):
         if rec.get(key) is not None and not isinstance(rec[key], dict):
@@ -59,10 +74,12 @@ class CaseStore:
 
         from ..fileio import write_text_atomic
 
-        # no fsync per case: after a power loss an unreadable case file is treated as missing and solved again
+        # no fsync per case: after a power loss an unreadable case file is treated as missing and
+        # solved again
         text = json.dumps(rec, indent=1, allow_nan=False, default=_json_default)
         path = self.dir / f"{rec['case_id']}.json"
-        try:  # a FIFO or device planted in the study's own cases directory is removed, never written to
+        # a FIFO or device planted in the study's own cases directory is removed, never written to
+        try:
             if not stat.S_ISREG(os.lstat(path).st_mode) and not path.is_dir():
                 path.unlink()
         except OSError:
@@ -113,9 +130,14 @@ def refuse_inputs_in(out, inputs, files, folders=("cases", "plots")) -> None:
     out = Path(out)
     inputs = [i for i in inputs if i and Path(i).is_file()]
     for name in files:
-        refuse_inputs(out / name, inputs, what=f"study's {name}", where="out", hint="give another out")
+        refuse_inputs(
+            out / name, inputs, what=f"study's {name}", where="out", hint="give another out"
+        )
     for name in folders:
         for i in inputs:
             if any(same_file(parent, out / name) for parent in Path(i).resolve().parents):
-                raise InputError(f"the study's {name}/ folder holds the input {i}; give another out",
-                                 source=str(out), where="out")
+                raise InputError(
+                    f"the study's {name}/ folder holds the input {i}; give another out",
+                    source=str(out),
+                    where="out",
+                )

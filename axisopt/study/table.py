@@ -18,17 +18,28 @@ from .store import CaseStore
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 RESULT_COLUMNS = (
-    ("objective", ("objective", "value")), ("objective_unit", ("objective", "unit")),
-    ("mounting", ("best", "mounting")), ("screw", ("best", "screw")), ("nut", ("best", "nut")),
-    ("bearing", ("best", "bearing")), ("guide", ("best", "guide")),
-    ("motor", ("best", "motor")), ("coupling", ("best", "coupling")), ("reduction", ("best", "reduction")),
+    ("objective", ("objective", "value")),
+    ("objective_unit", ("objective", "unit")),
+    ("mounting", ("best", "mounting")),
+    ("screw", ("best", "screw")),
+    ("nut", ("best", "nut")),
+    ("bearing", ("best", "bearing")),
+    ("guide", ("best", "guide")),
+    ("motor", ("best", "motor")),
+    ("coupling", ("best", "coupling")),
+    ("reduction", ("best", "reduction")),
     ("nut_preload [N]", ("best", "nut_preload")),
-    # the values a result reports of its best design (search.result.REPORTED), each with its profile columns
+    # the values a result reports of its best design (search.result.REPORTED), each with its profile
+    # columns
     *((col, key) for r in REPORTED for col, key in ((r.column, ("best", r.field)), *r.profile)),
-    ("peak_torque [N.m]", ("drive", "peak_torque_Nm")), ("rms_torque [N.m]", ("drive", "rms_torque_Nm")),
-    ("motor_speed [rpm]", ("drive", "motor_speed_rpm")), ("inertia_ratio", ("drive", "inertia_ratio")),
-    ("proven", ("certificate", "proven")), ("gap", ("certificate", "gap")),
-    ("combinations", ("certificate", "combinations")), ("feasible", ("certificate", "feasible")),
+    ("peak_torque [N.m]", ("drive", "peak_torque_Nm")),
+    ("rms_torque [N.m]", ("drive", "rms_torque_Nm")),
+    ("motor_speed [rpm]", ("drive", "motor_speed_rpm")),
+    ("inertia_ratio", ("drive", "inertia_ratio")),
+    ("proven", ("certificate", "proven")),
+    ("gap", ("certificate", "gap")),
+    ("combinations", ("certificate", "combinations")),
+    ("feasible", ("certificate", "feasible")),
     ("nlps", ("certificate", "nlps")),
 )
 TIME_COLUMNS = ("solve_time [s]", "worker")  # differ between runs of the same study
@@ -45,8 +56,11 @@ def check_columns() -> list:
     for c in CHECKS:
         unit = CHECK_RECORDS[c].unit
         u = f" [{unit}]" if unit else ""
-        out += [(f"{c} margin", c, "margin"), (f"{c} available{u}", c, "available"),
-                (f"{c} needed{u}", c, "needed")]
+        out += [
+            (f"{c} margin", c, "margin"),
+            (f"{c} available{u}", c, "available"),
+            (f"{c} needed{u}", c, "needed"),
+        ]
     return out
 
 
@@ -125,13 +139,20 @@ def results_table(study, out_dir):
         row["solve_time [s]"] = r.get("time_s")
         row["worker"] = r.get("worker", "")
         rows.append(row)
-    columns = ["case_id", "index"] + [n for n, _ in cols.values()] + ["status", "reason"] \
-        + [n for n, _ in RESULT_COLUMNS] + [n for n, _, _ in chk] + ["pareto_points"] \
+    columns = (
+        ["case_id", "index"]
+        + [n for n, _ in cols.values()]
+        + ["status", "reason"]
+        + [n for n, _ in RESULT_COLUMNS]
+        + [n for n, _, _ in chk]
+        + ["pareto_points"]
         + list(TIME_COLUMNS)
+    )
     df = pd.DataFrame(rows, columns=columns)
     for n in [n for n, _ in RESULT_COLUMNS] + [n for n, _, _ in chk]:
-        if df[n].dropna().map(lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)).all() \
-                and n not in ("proven",):
+        if df[n].dropna().map(
+            lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)
+        ).all() and n not in ("proven",):
             df[n] = pd.to_numeric(df[n], errors="coerce")
     df["proven"] = df["proven"].astype("boolean")
     df["pareto_points"] = df["pareto_points"].astype("Int64")
@@ -142,7 +163,9 @@ def results_table(study, out_dir):
 
 
 def case_label(rec, cols) -> str:
-    return ", ".join(f"{k.split('.')[-1]}={as_text(rec['inputs'][k])}" for k in cols if k in rec["inputs"])
+    return ", ".join(
+        f"{k.split('.')[-1]}={as_text(rec['inputs'][k])}" for k in cols if k in rec["inputs"]
+    )
 
 
 def slug(key: str) -> str:

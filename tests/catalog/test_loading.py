@@ -35,7 +35,8 @@ def test_catalog_sizes(cat):
 
 @pytest.mark.published
 def test_paper_nut_stiffness_for_40mm_screw(cat):
-    # Seed paper section 3.2: catalog [21], 40 mm screw: 1710 N/um at 10 mm lead, 1030 N/um at 20 mm lead.
+    # Seed paper section 3.2: catalog [21], 40 mm screw: 1710 N/um at 10 mm lead, 1030 N/um at 20 mm
+    # lead.
     nuts = cat.nuts.merge(cat.screws, left_on="screw_id", right_index=True)
     d40 = nuts[np.isclose(nuts["nominal_diameter"], 0.040)]
     for lead, k in ((0.010, 1710), (0.020, 1030)):
@@ -43,21 +44,30 @@ def test_paper_nut_stiffness_for_40mm_screw(cat):
         assert any(np.isclose(ks, k)), (lead, sorted(ks))
 
 
-# Seed paper Table 4 (after catalog [12]): axial rigidity ranges [N/um] of angular contact bearing sets.
+# Seed paper Table 4 (after catalog [12]): axial rigidity ranges [N/um] of angular contact bearing
+# sets.
 TABLE4 = {
-    10: ((8.8, 35.8), (14.1, 63.2), (19.6, 88.8)), 12: ((9.4, 42.8), (15, 66.8), (20.8, 103.1)),
-    15: ((11.4, 49.7), (18.2, 84.4), (25.2, 117.3)), 17: ((17, 53.3), (19.2, 89.9), (26.5, 124.6)),
-    20: ((15, 63.7), (23.7, 106), (32.7, 146.7)), 25: ((17, 69.2), (26.8, 115.2), (36.9, 158.8)),
-    30: ((21.3, 90.4), (34.8, 148.3), (44.5, 203.3)), 35: ((24.5, 103.21), (38.6, 169.4), (53, 232.2)),
-    40: ((26.6, 113.5), (41.8, 184.3), (57.2, 251.6)), 45: ((30.8, 120.8), (48.4, 196.1), (66.2, 267.8)),
+    10: ((8.8, 35.8), (14.1, 63.2), (19.6, 88.8)),
+    12: ((9.4, 42.8), (15, 66.8), (20.8, 103.1)),
+    15: ((11.4, 49.7), (18.2, 84.4), (25.2, 117.3)),
+    17: ((17, 53.3), (19.2, 89.9), (26.5, 124.6)),
+    20: ((15, 63.7), (23.7, 106), (32.7, 146.7)),
+    25: ((17, 69.2), (26.8, 115.2), (36.9, 158.8)),
+    30: ((21.3, 90.4), (34.8, 148.3), (44.5, 203.3)),
+    35: ((24.5, 103.21), (38.6, 169.4), (53, 232.2)),
+    40: ((26.6, 113.5), (41.8, 184.3), (57.2, 251.6)),
+    45: ((30.8, 120.8), (48.4, 196.1), (66.2, 267.8)),
 }
 
 
 @pytest.mark.published
 def test_angular_contact_sets_within_paper_table4(cat):
-    # Table 4 is for angular contact (spindle type, 15-40 deg) sets; 60 deg screw-support bearings are
-    # several times stiffer and are not covered by it (see catalogs/SOURCES.md).  Only the derived rows whose
-    # rigidity was taken from Table 4 are checked: vendor rows (THK support units) carry the vendor's figure.
+    # Table 4 is for angular contact (spindle type, 15-40 deg) sets; 60 deg screw-support bearings
+    # are
+    # several times stiffer and are not covered by it (see catalogs/SOURCES.md).  Only the derived
+    # rows whose
+    # rigidity was taken from Table 4 are checked: vendor rows (THK support units) carry the
+    # vendor's figure.
     b = cat.bearings
     ac = b[(np.degrees(b["contact_angle"]) < 45) & b["source"].str.contains("P Table 4")]
     checked = 0
@@ -97,21 +107,50 @@ def _edit(path, old, new, count=1):
         ("screws.csv", "lead [mm]", "lead [kg]", "line 1, column 5"),
         ("nuts.csv", ",mass [kg]", "", "missing column(s) mass"),
         ("guides.csv", "HIWIN-HG15-ZB,", "HIWIN-HG15-ZA,", "duplicate id 'HIWIN-HG15-ZA'"),
-        ("nuts.csv", "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,120,",
-         "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,0,", "line 2, column 5 (stiffness)"),
-        ("nuts.csv", "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,120,",
-         "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,12O,", "'12O' is not a number"),
-        ("nuts.csv", "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,", "HIWIN-R16-5T4-FSI,HIWIN,NO-SUCH-SCREW,",
-         "screw_id 'NO-SUCH-SCREW'"),
-        ("nuts.csv", "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,120,",
-         "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,nan,", "not a finite number"),
-        # a motor whose peak torque is below its rated torque (issue 10: one-line error naming file and key)
-        ("motors.csv", "SGM7J-01A,Yaskawa,Sigma-7 SGM7J,100,0.318,1.11,",
-         "SGM7J-01A,Yaskawa,Sigma-7 SGM7J,100,0.318,0.2,",
-         "line 3, column 6 (peak_torque): peak_torque is below rated_torque"),
-        ("couplings.csv", ",22,8000,0.5,12700,8,26,", ",22,8000,0.5,12700,30,26,", "bore_max is below bore_min"),
-        ("nuts.csv", "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,", "HIWIN-R16-5T4-FSI,HIWIN,THK-BNFN-16x5,",
-         "of vendor HIWIN is listed on screw 'THK-BNFN-16x5' of vendor THK"),
+        (
+            "nuts.csv",
+            "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,120,",
+            "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,0,",
+            "line 2, column 5 (stiffness)",
+        ),
+        (
+            "nuts.csv",
+            "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,120,",
+            "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,12O,",
+            "'12O' is not a number",
+        ),
+        (
+            "nuts.csv",
+            "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,",
+            "HIWIN-R16-5T4-FSI,HIWIN,NO-SUCH-SCREW,",
+            "screw_id 'NO-SUCH-SCREW'",
+        ),
+        (
+            "nuts.csv",
+            "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,120,",
+            "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,nan,",
+            "not a finite number",
+        ),
+        # a motor whose peak torque is below its rated torque (issue 10: one-line error naming file
+        # and key)
+        (
+            "motors.csv",
+            "SGM7J-01A,Yaskawa,Sigma-7 SGM7J,100,0.318,1.11,",
+            "SGM7J-01A,Yaskawa,Sigma-7 SGM7J,100,0.318,0.2,",
+            "line 3, column 6 (peak_torque): peak_torque is below rated_torque",
+        ),
+        (
+            "couplings.csv",
+            ",22,8000,0.5,12700,8,26,",
+            ",22,8000,0.5,12700,30,26,",
+            "bore_max is below bore_min",
+        ),
+        (
+            "nuts.csv",
+            "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,",
+            "HIWIN-R16-5T4-FSI,HIWIN,THK-BNFN-16x5,",
+            "of vendor HIWIN is listed on screw 'THK-BNFN-16x5' of vendor THK",
+        ),
     ],
 )
 def test_loader_errors_name_file_line_column(tmp_path, file, old, new, expect):
@@ -146,18 +185,24 @@ def test_the_cached_catalog_reads_a_changed_file_again(tmp_path):
     d = tmp_path / "mine"
     d.mkdir()
     header = (SHIPPED_DIR / "guides.csv").read_text().splitlines()
-    (d / "guides.csv").write_text(header[0] + "\n" + header[1].replace("HIWIN-HG15-ZA", "MY-GUIDE-15") + "\n")
+    (d / "guides.csv").write_text(
+        header[0] + "\n" + header[1].replace("HIWIN-HG15-ZA", "MY-GUIDE-15") + "\n"
+    )
     first = default_catalog((d,))
     assert "MY-GUIDE-15" in first.guides.index and default_catalog((d,)) is first
-    (d / "guides.csv").write_text(header[0] + "\n" + header[1].replace("HIWIN-HG15-ZA", "MY-GUIDE-16") + "\n")
+    (d / "guides.csv").write_text(
+        header[0] + "\n" + header[1].replace("HIWIN-HG15-ZA", "MY-GUIDE-16") + "\n"
+    )
     again = default_catalog((d,))
     assert "MY-GUIDE-16" in again.guides.index and "MY-GUIDE-15" not in again.guides.index
     (d / "guides.csv").unlink()
     assert "MY-GUIDE-16" not in default_catalog((d,)).guides.index
 
 
-@pytest.mark.parametrize("old, new", [("HIWIN,ground", "HIWIN\x00,ground"),  # a text cell (was accepted)
-                                      (",16,5,", ",16\x00,5,")])             # a number cell
+# a text cell (was accepted)
+@pytest.mark.parametrize(
+    "old, new", [("HIWIN,ground", "HIWIN\x00,ground"), (",16,5,", ",16\x00,5,")]
+)  # a number cell
 def test_nul_byte_is_refused_naming_file_and_line(tmp_path, capsys, old, new):
     # issue 42 item 7: the fuzz harness found a NUL in a catalog text cell accepted
     from cli_helpers import one_line_error

@@ -14,10 +14,17 @@ from axisopt.units import split_header
 
 CATALOGS = Path(__file__).resolve().parents[2] / "catalogs"
 
-# vendor rows: HIWIN ballscrew catalog (H-BS Table 6.5), THK General Catalog (BNFN, BK support units), HIWIN HG
+# vendor rows: HIWIN ballscrew catalog (H-BS Table 6.5), THK General Catalog (BNFN, BK support
+# units), HIWIN HG
 # guides, a Yaskawa Sigma-7 motor (YSK-S7)
-PARTS = [("screws", "THK-BNFN-16x5"), ("nuts", "HIWIN-R40-20K4-FDC"), ("nuts", "THK-BNFN1605-5"),
-         ("bearings", "THK-BK40"), ("guides", "HIWIN-HG15-ZA"), ("motors", "SGM7G-13A")]
+PARTS = [
+    ("screws", "THK-BNFN-16x5"),
+    ("nuts", "HIWIN-R40-20K4-FDC"),
+    ("nuts", "THK-BNFN1605-5"),
+    ("bearings", "THK-BK40"),
+    ("guides", "HIWIN-HG15-ZA"),
+    ("motors", "SGM7G-13A"),
+]
 
 
 def _csv_row(table, part_id):
@@ -51,14 +58,18 @@ def test_row_repr_shows_the_catalog_numbers_in_vendor_units(table, part_id):
         unit = "" if unit == "-" else unit
         figure, shown_unit = shown[col]
         assert float(figure) == pytest.approx(float(cell), rel=1e-12) and shown_unit == unit, col
-        assert frame.loc[col, "value"] == pytest.approx(float(cell), rel=1e-12) and frame.loc[col, "unit"] == unit
+        assert (
+            frame.loc[col, "value"] == pytest.approx(float(cell), rel=1e-12)
+            and frame.loc[col, "unit"] == unit
+        )
         assert f"<td>{figure}</td>" in html
         checked += 1
     assert checked >= 5
 
 
 def test_vendor_units_are_the_catalog_headers():
-    # load ratings in kN and rotor inertia in kg.cm^2 as the vendors print them, not the SI the rows hold
+    # load ratings in kN and rotor inertia in kg.cm^2 as the vendors print them, not the SI the rows
+    # hold
     assert vendor_units("nuts")["dynamic_load_rating"] == ("kN", 1e3)
     unit, factor = vendor_units("motors")["rotor_inertia"]
     assert unit == "kg.cm^2" and math.isclose(factor, 1e-4)

@@ -23,7 +23,9 @@ def test_pandas_tables_are_the_records_as_pandas_reads_them(cat):
     column order and id index as the loader built before the part tables existed."""
     rows = load_records()
     for name in TABLES:
-        want = pd.DataFrame.from_records(rows.table(name), columns=list(SCHEMA[name]) + ["_source", *PROVENANCE])
+        want = pd.DataFrame.from_records(
+            rows.table(name), columns=list(SCHEMA[name]) + ["_source", *PROVENANCE]
+        )
         want = want.set_index("id", drop=False)
         pd.testing.assert_frame_equal(cat.table(name), want)
         assert cat.table(name) is cat.table(name)  # built once
@@ -52,7 +54,8 @@ def test_rows_are_the_pandas_rows(cat):
     r = t.row(0)
     r2 = r.copy()
     r2["lead"] = -1.0
-    assert isinstance(r2, Row) and r2.name == r.name and _same(t.row(0), r)  # a copy does not touch the table
+    # a copy does not touch the table
+    assert isinstance(r2, Row) and r2.name == r.name and _same(t.row(0), r)
     with pytest.raises(ValueError):  # the shared column arrays are read-only
         t["preload_max"][0] = 0.0
     back = pickle.loads(pickle.dumps(r))  # a study's workers send designs back pickled
@@ -61,8 +64,12 @@ def test_rows_are_the_pandas_rows(cat):
 
 def _same(a: dict, b: dict) -> bool:
     """Equal rows, an empty optional cell (NaN, e.g. a nut's rotating-unit columns) equal to another."""
+
     def eq(x, y):
-        return x == y or (isinstance(x, float) and isinstance(y, float) and math.isnan(x) and math.isnan(y))
+        return x == y or (
+            isinstance(x, float) and isinstance(y, float) and math.isnan(x) and math.isnan(y)
+        )
+
     return a.keys() == b.keys() and all(eq(a[k], b[k]) for k in a)
 
 
@@ -94,7 +101,9 @@ def test_a_catalog_of_user_dataframes_is_read_the_same(cat):
                 np.testing.assert_array_equal(x, y)
             else:
                 assert list(x) == list(y)
-    assert frames.part("screws", cat.rows("screws").ids[0]) == cat.part("screws", cat.rows("screws").ids[0])
+    assert frames.part("screws", cat.rows("screws").ids[0]) == cat.part(
+        "screws", cat.rows("screws").ids[0]
+    )
     swapped = cat.replace(guides=cat.table("guides").iloc[:3])
     assert len(swapped.rows("guides")) == 3 and len(swapped.rows("nuts")) == len(cat.rows("nuts"))
     with pytest.raises(TypeError):

@@ -15,17 +15,29 @@ ROOT = Path(__file__).resolve().parents[2]
 PROBLEMS = ROOT / "problems"
 
 
-@pytest.mark.parametrize("status, code", [("optimal", 0), ("infeasible", 1), ("feasible", 3),
-                                          ("time_limit", 3), ("solver_failed", 3)])
+@pytest.mark.parametrize(
+    "status, code",
+    [("optimal", 0), ("infeasible", 1), ("feasible", 3), ("time_limit", 3), ("solver_failed", 3)],
+)
 def test_solve_status_maps_to_its_exit_code(status, code):
     assert exit_code(status) == code
 
 
 @pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_bonmin_point_is_unproven_exit_3(capsys):
-    # Bonmin's branch and bound on this nonconvex MINLP proves nothing: never exit 0 (optimal) or 1 (infeasible)
-    rc = main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--method", "bonmin", "--time-limit", "20",
-               "--no-sensitivity"])
+    # Bonmin's branch and bound on this nonconvex MINLP proves nothing: never exit 0 (optimal) or 1
+    # (infeasible)
+    rc = main(
+        [
+            "solve",
+            str(PROBLEMS / "teaching_problem.yaml"),
+            "--method",
+            "bonmin",
+            "--time-limit",
+            "20",
+            "--no-sensitivity",
+        ]
+    )
     out = capsys.readouterr().out
     assert rc == 3 and "bonmin" in out
 
@@ -43,15 +55,30 @@ def test_interrupt_is_130(monkeypatch, capsys):
 
 def _run(args, stdout):
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    return subprocess.run([sys.executable, "-m", "axisopt", *args], stdout=stdout, stderr=subprocess.PIPE,
-                          env=env, text=True, timeout=120)
+    return subprocess.run(
+        [sys.executable, "-m", "axisopt", *args],
+        stdout=stdout,
+        stderr=subprocess.PIPE,
+        env=env,
+        text=True,
+        timeout=120,
+    )
 
 
 @pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full on this system")
 def test_full_device_keeps_the_code_and_says_so_in_one_line(tmp_path):
     js = tmp_path / "r.json"
     with open("/dev/full", "w") as full:
-        r = _run(["solve", str(PROBLEMS / "infeasible_problem.yaml"), "--no-sensitivity", "--json", str(js)], full)
+        r = _run(
+            [
+                "solve",
+                str(PROBLEMS / "infeasible_problem.yaml"),
+                "--no-sensitivity",
+                "--json",
+                str(js),
+            ],
+            full,
+        )
     assert r.returncode == 1, r.stderr  # infeasible, as with a working stdout
     assert "Traceback" not in r.stderr and len(r.stderr.strip().splitlines()) == 1
     assert "No space left" in r.stderr
@@ -61,8 +88,19 @@ def test_full_device_keeps_the_code_and_says_so_in_one_line(tmp_path):
 def test_closed_pipe_keeps_the_code_quietly():
     # `axisopt solve infeasible.yaml | head -0`: the reader is gone before the first line is written
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    p = subprocess.Popen([sys.executable, "-m", "axisopt", "solve", str(PROBLEMS / "infeasible_problem.yaml"),
-                          "--no-sensitivity"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    p = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "axisopt",
+            "solve",
+            str(PROBLEMS / "infeasible_problem.yaml"),
+            "--no-sensitivity",
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        env=env,
+    )
     p.stdout.close()
     with p.stderr:
         err = p.stderr.read().decode()

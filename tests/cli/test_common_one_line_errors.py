@@ -18,11 +18,9 @@ DATA = PROBLEMS / "data"
 VMC = (PROBLEMS / "vmc_x_design.yaml").read_text(encoding="utf-8")
 
 
+# ------------------------------------------------------------------------- 3. a time record with
+# all-zero force
 
-
-
-
-# ------------------------------------------------------------------------- 3. a time record with all-zero force
 
 def _zero_force(tmp_path, src: Path, name: str) -> str:
     out, header = [], None
@@ -52,7 +50,9 @@ def test_time_record_with_zero_force_is_aone_line_error(tmp_path, capsys, which)
     assert "force column is constant" in err and "column 3" in err
 
 
-# ------------------------------------------------------------------------- 5. one line, no internal objects
+# ------------------------------------------------------------------------- 5. one line, no internal
+# objects
+
 
 def test_one_line_escapes_line_breaks_and_caps_the_length():
     assert one_line("a\nb\r\nc\x00d\u2028e") == "a\\nb\\r\\nc\\x00d\\u2028e"
@@ -75,6 +75,7 @@ def test_messages_show_values_not_nodes(tmp_path, capsys):
 
 # ------------------------------------------------------------------------- 7. silent acceptances
 
+
 def test_empty_require_list_is_refused(tmp_path, capsys):
     problem = (PROBLEMS / "teaching_problem.yaml").read_text(encoding="utf-8")
     problem = problem.replace("require: {coupling: [", "require: {screw: [], coupling: [")
@@ -84,8 +85,14 @@ def test_empty_require_list_is_refused(tmp_path, capsys):
     assert "require.screw" in err and "at least one" in err
 
 
-@pytest.mark.parametrize("tagged", ["axis: !!omap\n  - stroke: 800 mm\n", "axis: !custom\n  stroke: 800 mm\n",
-                                    "axis: !!set {a, b}\n"])
+@pytest.mark.parametrize(
+    "tagged",
+    [
+        "axis: !!omap\n  - stroke: 800 mm\n",
+        "axis: !custom\n  stroke: 800 mm\n",
+        "axis: !!set {a, b}\n",
+    ],
+)
 def test_yaml_tags_on_mappings_and_lists_are_refused(tmp_path, capsys, tagged):
     text = "name: x\n" + tagged + "parts: {}\n"
     assert main(["evaluate", write_file(tmp_path, "d.yaml", text)]) == 2
@@ -97,11 +104,16 @@ def test_saved_design_header_cannot_inject_yaml(tmp_path, capsys):
     import yaml
 
     odd = tmp_path / "p\nmotor: INJECTED\n.yaml"
-    odd.write_text((PROBLEMS / "teaching_problem.yaml").read_text(encoding="utf-8"), encoding="utf-8")
+    odd.write_text(
+        (PROBLEMS / "teaching_problem.yaml").read_text(encoding="utf-8"), encoding="utf-8"
+    )
     out = tmp_path / "best.yaml"
     assert main(["solve", str(odd), "--no-sensitivity", "--save-design", str(out)]) == 0
     text = out.read_text(encoding="utf-8")
-    assert text.splitlines()[0].startswith("# written by axisopt solve ") and "\\n" in text.splitlines()[0]
+    assert (
+        text.splitlines()[0].startswith("# written by axisopt solve ")
+        and "\\n" in text.splitlines()[0]
+    )
     assert "INJECTED" not in str(yaml.safe_load(text))
     capsys.readouterr()
     assert main(["evaluate", str(out), "--json", "-"]) == 0

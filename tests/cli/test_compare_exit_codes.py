@@ -20,5 +20,14 @@ def test_compare_json_to_stdout_and_errors(tmp_path, capsys):
 
 
 def test_compare_infeasible_problem_exits_1(capsys):
-    assert main(["compare", str(PROBLEMS / "teaching_design.yaml"), str(PROBLEMS / "infeasible_problem.yaml")]) == 1
+    assert (
+        main(
+            [
+                "compare",
+                str(PROBLEMS / "teaching_design.yaml"),
+                str(PROBLEMS / "infeasible_problem.yaml"),
+            ]
+        )
+        == 1
+    )
     assert "no design to compare" in capsys.readouterr().err

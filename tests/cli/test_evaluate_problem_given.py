@@ -16,7 +16,11 @@ P = Path(__file__).resolve().parents[2] / "problems"
 def test_evaluate_of_a_problem_file_names_it(name, capsys):
     assert main(["evaluate", str(P / name)]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "a problem file, not a design" in err and "axisopt solve" in err
+    assert (
+        len(err.splitlines()) == 1
+        and "a problem file, not a design" in err
+        and "axisopt solve" in err
+    )
     assert "missing required key" not in err
     with pytest.raises(InputError, match="problem file"):
         load_design(P / name)

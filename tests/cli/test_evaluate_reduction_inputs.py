@@ -38,11 +38,17 @@ def _design_with(tmp_path, parts_extra: str, catalogs: str = "") -> str:
     return write_file(tmp_path, "d.yaml", text)
 
 
-@pytest.mark.parametrize(("row", "needle"), [
-    (GOOD.replace(",belt,2,", ",belt,0,"), "column 5 (ratio): ratio must be positive, got 0"),
-    (GOOD.replace(",95,", ",102,"), "column 6 (efficiency): efficiency must be at most 1 (= 100 %), got 102"),
-    (GOOD.replace(",1.5,40,", ",nan,40,"), "column 7 (inertia): 'nan' is not a finite number"),
-])
+@pytest.mark.parametrize(
+    ("row", "needle"),
+    [
+        (GOOD.replace(",belt,2,", ",belt,0,"), "column 5 (ratio): ratio must be positive, got 0"),
+        (
+            GOOD.replace(",95,", ",102,"),
+            "column 6 (efficiency): efficiency must be at most 1 (= 100 %), got 102",
+        ),
+        (GOOD.replace(",1.5,40,", ",nan,40,"), "column 7 (inertia): 'nan' is not a finite number"),
+    ],
+)
 def test_bad_reduction_row_in_a_catalog_is_a_one_line_error(tmp_path, capsys, row, needle):
     (tmp_path / "cat").mkdir()
     write_file(tmp_path / "cat", "reductions.csv", HEADER + "\n" + row + "\n")
@@ -61,9 +67,14 @@ def test_a_user_belt_row_is_accepted(tmp_path, capsys):
     assert "reduction U-1 (User belt; 2:1, efficiency 0.95" in out
 
 
-@pytest.mark.parametrize(("ratio", "eta", "inertia", "needle"), [
-    (0, 0.95, 1.5, "ratio"), (2, 1.2, 1.5, "efficiency"), (2, 0.95, ".nan", "inertia"),
-])
+@pytest.mark.parametrize(
+    ("ratio", "eta", "inertia", "needle"),
+    [
+        (0, 0.95, 1.5, "ratio"),
+        (2, 1.2, 1.5, "efficiency"),
+        (2, 0.95, ".nan", "inertia"),
+    ],
+)
 def test_bad_inline_reduction_is_a_one_line_error(tmp_path, capsys, ratio, eta, inertia, needle):
     path = _design_with(tmp_path, INLINE.format(ratio=ratio, eta=eta, inertia=inertia))
     assert main(["evaluate", path]) == 2
@@ -73,7 +84,11 @@ def test_bad_inline_reduction_is_a_one_line_error(tmp_path, capsys, ratio, eta, 
 
 def test_reduction_part_and_axis_ratio_together_are_refused(tmp_path, capsys):
     path = _design_with(tmp_path, "  reduction: BK-TP010-MF-5\n")
-    text = Path(path).read_text(encoding="utf-8").replace("axis:\n", "axis:\n  reduction_ratio: 2\n", 1)
+    text = (
+        Path(path)
+        .read_text(encoding="utf-8")
+        .replace("axis:\n", "axis:\n  reduction_ratio: 2\n", 1)
+    )
     Path(path).write_text(text, encoding="utf-8")
     assert main(["evaluate", path]) == 2
     err = one_line_error(capsys)

@@ -51,7 +51,12 @@ def test_rotating_nut_needs_a_screw_fixed_at_both_ends(tmp_path, capsys, mountin
     text = DESIGN.format(catalogs="", mounting=mounting, nut="THK-DIR4010-6")
     assert main(["evaluate", write_file(tmp_path, "d.yaml", text)]) == 2
     err = one_line_error(capsys)
-    assert "parts.nut" in err and "rotating-nut unit" in err and "fixed-fixed" in err and mounting in err
+    assert (
+        "parts.nut" in err
+        and "rotating-nut unit" in err
+        and "fixed-fixed" in err
+        and mounting in err
+    )
 
 
 def test_rotating_nut_on_fixed_fixed_evaluates(tmp_path, capsys):
@@ -61,15 +66,21 @@ def test_rotating_nut_on_fixed_fixed_evaluates(tmp_path, capsys):
     assert "rotating-nut unit bearing" in out and "unit bearing L10 life" in out
 
 
-@pytest.mark.parametrize(("cells", "words"), [
-    ({"unit_inertia [kg.cm^2]": "nan"}, ("unit_inertia", "not a finite number")),
-    ({"unit_inertia [kg.cm^2]": ""}, ("unit_inertia", "missing value")),
-    ({"unit_bearing_dynamic_load [kN]": "inf"}, ("unit_bearing_dynamic_load", "not a finite number")),
-    ({"unit_bearing_rigidity [N/um]": "-5"}, ("unit_bearing_rigidity", "must be positive")),
-    ({"unit_inertia [kg.cm^2]": "0"}, ("unit_inertia", "must be positive")),
-    ({"unit_max_speed [rpm]": "1e300"}, ("unit_max_speed", "out of range")),
-    ({"rotating": "2"}, ("rotating", "0 or 1")),
-])
+@pytest.mark.parametrize(
+    ("cells", "words"),
+    [
+        ({"unit_inertia [kg.cm^2]": "nan"}, ("unit_inertia", "not a finite number")),
+        ({"unit_inertia [kg.cm^2]": ""}, ("unit_inertia", "missing value")),
+        (
+            {"unit_bearing_dynamic_load [kN]": "inf"},
+            ("unit_bearing_dynamic_load", "not a finite number"),
+        ),
+        ({"unit_bearing_rigidity [N/um]": "-5"}, ("unit_bearing_rigidity", "must be positive")),
+        ({"unit_inertia [kg.cm^2]": "0"}, ("unit_inertia", "must be positive")),
+        ({"unit_max_speed [rpm]": "1e300"}, ("unit_max_speed", "out of range")),
+        ({"rotating": "2"}, ("rotating", "0 or 1")),
+    ],
+)
 def test_bad_unit_values_in_a_catalog(tmp_path, capsys, cells, words):
     cat = _nut_csv(tmp_path, **cells)
     text = DESIGN.format(catalogs=f"catalogs: [{cat}]\n", mounting="fixed-fixed", nut="MY-DIR")

@@ -34,31 +34,58 @@ def _changed(tmp_path, old: str, new: str, name="p.yaml") -> str:
 def no_search(monkeypatch):
     import axisopt.search as search
 
-    monkeypatch.setattr(search, "solve", lambda *a, **k: (_ for _ in ()).throw(AssertionError("solved")))
+    monkeypatch.setattr(
+        search, "solve", lambda *a, **k: (_ for _ in ()).throw(AssertionError("solved"))
+    )
 
 
-@pytest.mark.parametrize("old, new, words", [
-    ("mean_speed: 8 m/min", "mean_speed: 45 m/min", "'axis.mean_speed': 45 m/min is faster than axis.max_speed"),
-    ("axial_load: 2000 N", "axial_load: 2000 N\n  mean_axial_load: 2500 N",
-     "'axis.mean_axial_load': 2500 N is more than the largest axial load"),
-    ("max_cost: 3500 EUR", "max_moving_mass: 100 kg", "below axis.moving_mass (120 kg"),
-    ("acceleration: 3 m/s^2", "acceleration: 3 m/s2", "write a power with '^': '3 m/s^2'"),
-    ("axial_load: 2000 N", "axial_load: 3,000 N", "without digit groups: '3000 N'"),
-    ("max_cost: 3500 EUR", "max_cost: 3500 \u20ac", "write the currency as EUR: '3500 EUR'"),
-    ("max_cost: 3500 EUR", "max_cost: 3500 euro", "write the currency as EUR"),
-    ("acceleration: 3 m/s^2", "acceleration: 1,5 m/s^2", "write the decimal point: '1.5 m/s^2'"),
-])
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        (
+            "mean_speed: 8 m/min",
+            "mean_speed: 45 m/min",
+            "'axis.mean_speed': 45 m/min is faster than axis.max_speed",
+        ),
+        (
+            "axial_load: 2000 N",
+            "axial_load: 2000 N\n  mean_axial_load: 2500 N",
+            "'axis.mean_axial_load': 2500 N is more than the largest axial load",
+        ),
+        ("max_cost: 3500 EUR", "max_moving_mass: 100 kg", "below axis.moving_mass (120 kg"),
+        ("acceleration: 3 m/s^2", "acceleration: 3 m/s2", "write a power with '^': '3 m/s^2'"),
+        ("axial_load: 2000 N", "axial_load: 3,000 N", "without digit groups: '3000 N'"),
+        ("max_cost: 3500 EUR", "max_cost: 3500 \u20ac", "write the currency as EUR: '3500 EUR'"),
+        ("max_cost: 3500 EUR", "max_cost: 3500 euro", "write the currency as EUR"),
+        (
+            "acceleration: 3 m/s^2",
+            "acceleration: 1,5 m/s^2",
+            "write the decimal point: '1.5 m/s^2'",
+        ),
+    ],
+)
 def test_refused_in_one_line_before_the_search(tmp_path, capsys, no_search, old, new, words):
     assert main(["solve", _changed(tmp_path, old, new)]) == 2
     assert words in one_line_error(capsys)
 
 
-@pytest.mark.parametrize("old, new, words", [
-    ("min_life: 12000 h", "min_life: 20000 s", "'limits.min_life': 5.56 h is far below machine-tool practice"),
-    ("axial_load: 2000 N", "axial_load: 3 MN", "'axis.axial_load': 3,000,000 N is far above"),
-    ("moving_mass: 120 kg", "moving_mass: 350000 kg", "350,000 kg is far above"),
-    ("min_life: 12000 h", "min_life: 12000 h\n  min_stiffness: 60 N/mm", "'limits.min_stiffness'"),
-])
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        (
+            "min_life: 12000 h",
+            "min_life: 20000 s",
+            "'limits.min_life': 5.56 h is far below machine-tool practice",
+        ),
+        ("axial_load: 2000 N", "axial_load: 3 MN", "'axis.axial_load': 3,000,000 N is far above"),
+        ("moving_mass: 120 kg", "moving_mass: 350000 kg", "350,000 kg is far above"),
+        (
+            "min_life: 12000 h",
+            "min_life: 12000 h\n  min_stiffness: 60 N/mm",
+            "'limits.min_stiffness'",
+        ),
+    ],
+)
 def test_unit_slips_are_warned(tmp_path, old, new, words):
     with warnings.catch_warnings(record=True) as got:
         warnings.simplefilter("always")
@@ -82,16 +109,22 @@ def test_g_is_standard_gravity_for_an_acceleration(tmp_path):
     assert p.axis.acceleration == pytest.approx(3.92266)
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["solve", str(DESIGN)], "a design file, not a problem: use `axisopt evaluate"),
-    (["solve", str(STUDY)], "a study file, not a problem: use `axisopt study"),
-    (["study", str(TEACHING)], "a problem file, not a study: use `axisopt solve"),
-    (["study", str(DESIGN)], "a design file, not a study"),
-    (["evaluate", str(STUDY)], "a study file, not a design: use `axisopt study"),
-    (["evaluate", str(TEACHING)], "a problem file, not a design"),
-    (["evaluate", str(ROOT / "problems" / "data" / "table_x_stiffness.csv")], "a CSV file, not a design YAML"),
-    (["compare", str(DESIGN), str(STUDY)], "a study file, not a design or problem"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["solve", str(DESIGN)], "a design file, not a problem: use `axisopt evaluate"),
+        (["solve", str(STUDY)], "a study file, not a problem: use `axisopt study"),
+        (["study", str(TEACHING)], "a problem file, not a study: use `axisopt solve"),
+        (["study", str(DESIGN)], "a design file, not a study"),
+        (["evaluate", str(STUDY)], "a study file, not a design: use `axisopt study"),
+        (["evaluate", str(TEACHING)], "a problem file, not a design"),
+        (
+            ["evaluate", str(ROOT / "problems" / "data" / "table_x_stiffness.csv")],
+            "a CSV file, not a design YAML",
+        ),
+        (["compare", str(DESIGN), str(STUDY)], "a study file, not a design or problem"),
+    ],
+)
 def test_wrong_kind_of_file_named_with_the_command(argv, words, capsys):
     assert main(argv) == 2
     assert words in one_line_error(capsys)

@@ -40,14 +40,19 @@ def test_study_template_loads_into_cases(machine, tmp_path):
     path = tmp_path / "s.yaml"
     path.write_text(template("study", machine), encoding="utf-8")
     study = load_study(path)
-    assert len(study.cases) == 3 and study.name == f"{template('problem', machine).split('name: ')[1].split()[0]}-study"
+    assert (
+        len(study.cases) == 3
+        and study.name == f"{template('problem', machine).split('name: ')[1].split()[0]}-study"
+    )
 
 
 @pytest.mark.parametrize("machine", MACHINES)
 def test_study_template_runs_every_case_to_a_design(machine, tmp_path, capsys):
     path = tmp_path / "s.yaml"
     assert main(["init", "study", "--machine", machine, "--out", str(path)]) == 0
-    assert main(["study", str(path), "--out", str(tmp_path / "out"), "--workers", "0", "--quiet"]) == 0
+    assert (
+        main(["study", str(path), "--out", str(tmp_path / "out"), "--workers", "0", "--quiet"]) == 0
+    )
     assert "3 cases; 3 solved now" in capsys.readouterr().out
 
 

@@ -62,7 +62,11 @@ def test_same_file_by_another_name(problem, tmp_path, capsys, no_work):
     os.symlink(problem, tmp_path / "link.yaml")
     os.link(problem, tmp_path / "hard.yaml")
     before = problem.read_bytes()
-    for target in (str(tmp_path / "." / "p.yaml"), str(tmp_path / "link.yaml"), str(tmp_path / "hard.yaml")):
+    for target in (
+        str(tmp_path / "." / "p.yaml"),
+        str(tmp_path / "link.yaml"),
+        str(tmp_path / "hard.yaml"),
+    ):
         assert main(["solve", str(problem), "--json", target]) == 2, target
         assert "would overwrite" in one_line_error(capsys)
     assert main(["solve", str(tmp_path / "link.yaml"), "--save-design", str(problem)]) == 2
@@ -82,16 +86,21 @@ def test_evaluate_compare_diagnose_inputs(tmp_path, capsys, no_work):
     design = tmp_path / "d.yaml"
     shutil.copy(DESIGN, design)
     before = design.read_bytes()
-    for argv in (["evaluate", str(design), "--json", str(design)],
-                 ["compare", str(TEACHING), str(design), "--csv", str(design)],
-                 ["compare", str(design), str(design), "--json", str(design)]):
+    for argv in (
+        ["evaluate", str(design), "--json", str(design)],
+        ["compare", str(TEACHING), str(design), "--csv", str(design)],
+        ["compare", str(design), str(design), "--json", str(design)],
+    ):
         assert main(argv) == 2, argv
         assert "would overwrite" in one_line_error(capsys)
     data = tmp_path / "static.csv"
     data.write_text("position [mm],force [N],displacement [um]\n0,0,0\n", encoding="utf-8")
     assert main(["diagnose", str(data), "--design", str(design), "--json", str(data)]) == 2
     assert "would overwrite a data file" in one_line_error(capsys)
-    assert main(["diagnose", str(data), "--design", str(design), "--save-calibration", str(design)]) == 2
+    assert (
+        main(["diagnose", str(data), "--design", str(design), "--save-calibration", str(design)])
+        == 2
+    )
     assert "would overwrite the design file" in one_line_error(capsys)
     assert design.read_bytes() == before
 
@@ -114,12 +123,15 @@ def test_two_outputs_onto_one_file(problem, tmp_path, capsys, no_work):
     assert not os.path.exists(out)
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["--json", "{tmp}/nodir/x.json"], "does not exist"),
-    (["--plot", "{tmp}/out.txt"], "extensions png"),
-    (["--plot", "{tmp}/nodir/x.png"], "does not exist"),
-    (["--save-design", "{tmp}/file.txt/"], "in the way"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["--json", "{tmp}/nodir/x.json"], "does not exist"),
+        (["--plot", "{tmp}/out.txt"], "extensions png"),
+        (["--plot", "{tmp}/nodir/x.png"], "does not exist"),
+        (["--save-design", "{tmp}/file.txt/"], "in the way"),
+    ],
+)
 def test_output_paths_before_the_solve(problem, tmp_path, argv, words, capsys, no_work):
     (tmp_path / "file.txt").write_text("", encoding="utf-8")
     argv = [a.format(tmp=tmp_path) for a in argv]
@@ -130,7 +142,12 @@ def test_output_paths_before_the_solve(problem, tmp_path, argv, words, capsys, n
 
 
 def test_evaluate_outputs_before_the_model(tmp_path, capsys, no_work):
-    for opt, name in (("--frf", "f.txt"), ("--plot", "p"), ("--ss", "nodir/s.npz"), ("--json", "nodir/j")):
+    for opt, name in (
+        ("--frf", "f.txt"),
+        ("--plot", "p"),
+        ("--ss", "nodir/s.npz"),
+        ("--json", "nodir/j"),
+    ):
         assert main(["evaluate", str(DESIGN), opt, str(tmp_path / name)]) == 2, opt
         assert opt in one_line_error(capsys)
 

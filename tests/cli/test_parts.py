@@ -26,7 +26,9 @@ def _rows(table):
 def _unit(table, column):
     with open(CATALOGS / f"{table}.csv", encoding="utf-8") as fh:
         head = next(line for line in fh if not line.startswith("#"))
-    return next(h.split("[")[1].rstrip("]\n") for h in head.split(",") if h.startswith(column + " ["))
+    return next(
+        h.split("[")[1].rstrip("]\n") for h in head.split(",") if h.startswith(column + " [")
+    )
 
 
 def _json(capsys, *argv):
@@ -36,7 +38,8 @@ def _json(capsys, *argv):
 
 def test_nuts_that_fit_a_screw(capsys):
     want = {r["id"] for r in _rows("nuts") if r["screw_id"] == SCREW}
-    assert want  # HIWIN lists a single and a double nut for the 40x20 ground screw (H-BS Tables 6.4-6.5)
+    # HIWIN lists a single and a double nut for the 40x20 ground screw (H-BS Tables 6.4-6.5)
+    assert want
     assert {r["id"] for r in _json(capsys, "nuts", "--fits", SCREW)} == want
 
 
@@ -50,7 +53,11 @@ def test_bearings_whose_bore_the_screw_end_takes(capsys):
 
 
 def test_diameter_lead_and_preload_class(capsys):
-    screws = {r["id"] for r in _rows("screws") if float(r["nominal_diameter"]) == 40 and float(r["lead"]) == 10}
+    screws = {
+        r["id"]
+        for r in _rows("screws")
+        if float(r["nominal_diameter"]) == 40 and float(r["lead"]) == 10
+    }
     assert {r["id"] for r in _json(capsys, "screws", "--diameter", "40", "--lead", "10")} == screws
     nuts = {r["id"] for r in _rows("nuts") if r["screw_id"] in screws}
     assert {r["id"] for r in _json(capsys, "nuts", "--diameter", "40", "--lead", "10")} == nuts
@@ -71,18 +78,23 @@ def test_table_fits_100_columns_and_csv_has_every_column(tmp_path, capsys):
     assert _unit("nuts", "stiffness") == "N/um" and _unit("nuts", "dynamic_load_rating") == "kN"
     for r in rows:  # vendor units: N/um as in the catalog; its kN ratings exported in N
         assert float(r["stiffness [N/um]"]) == pytest.approx(float(raw[r["id"]]["stiffness"]))
-        assert float(r["dynamic_load_rating [N]"]) == pytest.approx(float(raw[r["id"]]["dynamic_load_rating"]) * 1e3)
+        assert float(r["dynamic_load_rating [N]"]) == pytest.approx(
+            float(raw[r["id"]]["dynamic_load_rating"]) * 1e3
+        )
         assert r["source"] == raw[r["id"]]["source"]
 
 
-@pytest.mark.parametrize(("argv", "text"), [
-    (["motors", "--fits", SCREW], "applies to nuts and bearings"),
-    (["nuts", "--fits", "HIWIN-G-40x20"], "did you mean 'HIWIN-G-40x20-b6p35'"),
-    (["nuts", "--lead", "abc"], "--lead"),
-    (["nuts", "--diameter", "1e99"], "--diameter"),
-    (["bearings", "--preload-class", "zz"], "classes are"),
-    (["--fits", SCREW], "needs a kind"),
-])
+@pytest.mark.parametrize(
+    ("argv", "text"),
+    [
+        (["motors", "--fits", SCREW], "applies to nuts and bearings"),
+        (["nuts", "--fits", "HIWIN-G-40x20"], "did you mean 'HIWIN-G-40x20-b6p35'"),
+        (["nuts", "--lead", "abc"], "--lead"),
+        (["nuts", "--diameter", "1e99"], "--diameter"),
+        (["bearings", "--preload-class", "zz"], "classes are"),
+        (["--fits", SCREW], "needs a kind"),
+    ],
+)
 def test_bad_filters_are_one_line(capsys, argv, text):
     assert main(["parts", *argv]) == 2
     err = capsys.readouterr().err.strip()
@@ -92,7 +104,9 @@ def test_bad_filters_are_one_line(capsys, argv, text):
 def test_a_nut_for_another_screw_is_refused_with_the_nuts_that_fit(tmp_path, capsys):
     design = (ROOT / "problems" / "vmc_x_design.yaml").read_text(encoding="utf-8")
     p = tmp_path / "d.yaml"
-    p.write_text(design.replace("nut: HIWIN-R40-20K4-FDC", "nut: HIWIN-R16-5T4-FDI"), encoding="utf-8")
+    p.write_text(
+        design.replace("nut: HIWIN-R40-20K4-FDC", "nut: HIWIN-R16-5T4-FDI"), encoding="utf-8"
+    )
     assert main(["evaluate", str(p)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "parts.nut" in err
@@ -111,6 +125,8 @@ def test_nuts_listed_under_their_own_screw(capsys):
         if line.startswith("screw "):
             under = line.split()[1]
         elif word in screw_of:
-            assert screw_of[word] == under, f"{word} listed under {under}, made for {screw_of[word]}"
+            assert screw_of[word] == under, (
+                f"{word} listed under {under}, made for {screw_of[word]}"
+            )
             seen.add(word)
     assert seen == set(screw_of)

@@ -17,16 +17,20 @@ ROOT = Path(__file__).resolve().parents[2]
 
 # (Python function, its parameter, command, option)
 PAIRS = [
-    (axisopt.solve, "method", "solve", "method"), (axisopt.solve, "top", "solve", "top"),
+    (axisopt.solve, "method", "solve", "method"),
+    (axisopt.solve, "top", "solve", "top"),
     (axisopt.solve, "time_limit", "solve", "time_limit"),
-    (axisopt.compare, "time_limit", "compare", "time_limit"), (axisopt.compare, "method", "solve", "method"),
+    (axisopt.compare, "time_limit", "compare", "time_limit"),
+    (axisopt.compare, "method", "solve", "method"),
     (axisopt.diagnose, "max_effects", "diagnose", "max_effects"),
     (axisopt.api.study, "time_limit", "study", "time_limit"),
 ]
 
 
 def _defaults(command: str) -> dict:
-    sub = next(a for a in build_parser()._actions if getattr(a, "choices", None) and command in a.choices)
+    sub = next(
+        a for a in build_parser()._actions if getattr(a, "choices", None) and command in a.choices
+    )
     return {a.dest: a.default for a in sub.choices[command]._actions}
 
 
@@ -61,9 +65,15 @@ def _spy(monkeypatch):
 
 def test_compare_time_limit_reaches_the_solve(monkeypatch, capsys):
     seen = _spy(monkeypatch)
-    assert main(["compare", str(ROOT / "problems" / "teaching_problem.yaml"), "--time-limit", "42"]) == 0
+    assert (
+        main(["compare", str(ROOT / "problems" / "teaching_problem.yaml"), "--time-limit", "42"])
+        == 0
+    )
     assert seen == [42.0]
-    assert main(["compare", str(ROOT / "problems" / "teaching_problem.yaml"), "--time-limit", "0"]) == 2
+    assert (
+        main(["compare", str(ROOT / "problems" / "teaching_problem.yaml"), "--time-limit", "0"])
+        == 2
+    )
     assert "--time-limit must be positive" in one_line_error(capsys)
 
 
@@ -71,8 +81,12 @@ def test_study_time_limit_and_overwrite(monkeypatch, tmp_path, capsys):
     from axisopt.study import load_study
 
     f = tmp_path / "s.yaml"
-    f.write_text("name: tiny\nbase: " + str(ROOT / "problems" / "teaching_problem.yaml") +
-                 "\nsweep:\n  axis.stroke: [400 mm, 450 mm]\n", encoding="utf-8")
+    f.write_text(
+        "name: tiny\nbase: "
+        + str(ROOT / "problems" / "teaching_problem.yaml")
+        + "\nsweep:\n  axis.stroke: [400 mm, 450 mm]\n",
+        encoding="utf-8",
+    )
     assert len(load_study(f).cases) == 2
     seen = _spy(monkeypatch)
     out = str(tmp_path / "out")

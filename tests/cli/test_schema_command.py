@@ -14,7 +14,9 @@ import pytest
 from axisopt.cli import main
 from axisopt.schema import KINDS_OF_FILE, json_schema
 
-# ----------------------------------------------------------------------------------------------------- the CLI
+# --------------------------------------------------------------------------------------------------
+# --- the CLI
+
 
 def test_cli_prints_and_writes_the_schema(tmp_path, capsys):
     assert main(["schema", "design"]) == 0
@@ -25,8 +27,10 @@ def test_cli_prints_and_writes_the_schema(tmp_path, capsys):
     assert capsys.readouterr().out == ""
 
 
-@pytest.mark.parametrize("argv", [["schema", "nope"], ["schema"], ["schema", "design", "--out",
-                                                                    "/nonexistent/dir/x.json"]])
+@pytest.mark.parametrize(
+    "argv",
+    [["schema", "nope"], ["schema"], ["schema", "design", "--out", "/nonexistent/dir/x.json"]],
+)
 def test_cli_bad_input_is_one_line_and_exit_2(capsys, argv):
     assert main(argv) == 2
     err = capsys.readouterr().err.strip()

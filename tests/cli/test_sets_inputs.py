@@ -26,12 +26,15 @@ def _row(value: str, arrangement: str = "DFT") -> str:
     return ",".join(cells)
 
 
-@pytest.mark.parametrize(("row", "needle"), [
-    (_row("0"), "lift_off_load_strong"),
-    (_row("-5000"), "lift_off_load_strong"),
-    (_row("nan"), "lift_off_load_strong"),
-    (_row("56430", "DFX"), "arrangement"),
-])
+@pytest.mark.parametrize(
+    ("row", "needle"),
+    [
+        (_row("0"), "lift_off_load_strong"),
+        (_row("-5000"), "lift_off_load_strong"),
+        (_row("nan"), "lift_off_load_strong"),
+        (_row("56430", "DFX"), "arrangement"),
+    ],
+)
 def test_bad_set_row_in_a_catalog_is_a_one_line_error(tmp_path, capsys, row, needle):
     (tmp_path / "cat").mkdir()
     write_file(tmp_path / "cat", "bearings.csv", HEADER + "\n" + row + "\n")
@@ -43,10 +46,12 @@ def test_bad_set_row_in_a_catalog_is_a_one_line_error(tmp_path, capsys, row, nee
 
 
 def test_a_belt_stage_with_negative_stiffness_inline(tmp_path, capsys):
-    part = ("  reduction:\n    id: U-B\n    kind: belt\n    ratio: 1.5\n    efficiency: 0.98\n"
-            "    inertia: 10 kg.cm^2\n    rated_torque: 45 N.m\n    accel_torque: 45 N.m\n"
-            "    torsional_stiffness: -8 N.m/arcmin\n    backlash: 0 arcmin\n    max_input_speed: 3000 rpm\n"
-            "    price: 200 EUR\n")
+    part = (
+        "  reduction:\n    id: U-B\n    kind: belt\n    ratio: 1.5\n    efficiency: 0.98\n"
+        "    inertia: 10 kg.cm^2\n    rated_torque: 45 N.m\n    accel_torque: 45 N.m\n"
+        "    torsional_stiffness: -8 N.m/arcmin\n    backlash: 0 arcmin\n    max_input_speed: 3000 rpm\n"
+        "    price: 200 EUR\n"
+    )
     path = write_file(tmp_path, "d.yaml", VMC.replace("parts:\n", "parts:\n" + part, 1))
     assert main(["evaluate", path]) == 2
     err = one_line_error(capsys)

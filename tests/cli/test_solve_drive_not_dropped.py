@@ -42,9 +42,14 @@ def test_drive_no_is_stated_on_its_own_line(tmp_path, capsys):
     res = json.loads(rj.read_text(encoding="utf-8"))
     assert res["best"]["motor"] == "" and res["left_out"] == [
         "the drive (motor, coupling, reduction) is not sized: catalog.drive: no; the axis's motor_inertia and "
-        "coupling values stand in and no motor check is made"]
-    assert any(ln.startswith("  left out: the drive (motor, coupling, reduction) is not sized: catalog.drive: no")
-               for ln in lines)
+        "coupling values stand in and no motor check is made"
+    ]
+    assert any(
+        ln.startswith(
+            "  left out: the drive (motor, coupling, reduction) is not sized: catalog.drive: no"
+        )
+        for ln in lines
+    )
 
 
 def test_an_axis_without_motion_says_why_the_drive_is_not_sized(tmp_path, capsys):
@@ -52,10 +57,14 @@ def test_an_axis_without_motion_says_why_the_drive_is_not_sized(tmp_path, capsys
     text = re.sub(r"(?ms)^  duty_cycle:.*?(?=^  \S|^\S)", "", LATHE.replace("  drive: yes\n", ""))
     text = re.sub(r"(?m)^(  acceleration:).*$", r"\1 0 m/s^2", text)
     res = _solve_json(_write(tmp_path, text), capsys)
-    assert res["left_out"] and "axis.acceleration is 0 and there is no axis.duty_cycle" in res["left_out"][0]
+    assert (
+        res["left_out"]
+        and "axis.acceleration is 0 and there is no axis.duty_cycle" in res["left_out"][0]
+    )
 
 
-# ----------------------------------------------------------------------------- plausibility and currency
+# ----------------------------------------------------------------------------- plausibility and
+# currency
 TEACHING = (ROOT / "problems" / "teaching_problem.yaml").read_text(encoding="utf-8")
 
 
@@ -81,4 +90,8 @@ def test_a_budget_in_usd_needs_a_rate(tmp_path, capsys):
     assert n == 1
     assert main(["solve", _write(tmp_path, text)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "key 'limits.max_cost'" in err[0] and "no exchange rate is assumed" in err[0]
+    assert (
+        len(err) == 1
+        and "key 'limits.max_cost'" in err[0]
+        and "no exchange rate is assumed" in err[0]
+    )

@@ -18,8 +18,19 @@ PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
 
 def test_saved_designs_evaluate_to_the_solved_numbers(tmp_path, capsys):
     out_dir, js = tmp_path / "designs", tmp_path / "solve.json"
-    rc = main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--top", "3", "--no-sensitivity",
-               "--json", str(js), "--save-design", str(out_dir)])
+    rc = main(
+        [
+            "solve",
+            str(PROBLEMS / "teaching_problem.yaml"),
+            "--top",
+            "3",
+            "--no-sensitivity",
+            "--json",
+            str(js),
+            "--save-design",
+            str(out_dir),
+        ]
+    )
     assert rc == 0
     solved = json.loads(js.read_text())
     cands = [solved["best"]] + solved["runners_up"]
@@ -45,8 +56,20 @@ def test_saved_designs_evaluate_to_the_solved_numbers(tmp_path, capsys):
 
 def test_single_file_gets_the_best(tmp_path, capsys):
     best = tmp_path / "best.yaml"
-    assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--no-sensitivity", "--json", "-",
-                 "--save-design", str(best)]) == 0
+    assert (
+        main(
+            [
+                "solve",
+                str(PROBLEMS / "teaching_problem.yaml"),
+                "--no-sensitivity",
+                "--json",
+                "-",
+                "--save-design",
+                str(best),
+            ]
+        )
+        == 0
+    )
     solved = json.loads(capsys.readouterr().out)
     assert best.read_text(encoding="utf-8").startswith("# written by axisopt solve")
     assert yaml.safe_load(best.read_text(encoding="utf-8"))["parts"]["nut"] == solved["best"]["nut"]
@@ -54,16 +77,46 @@ def test_single_file_gets_the_best(tmp_path, capsys):
 
 def test_nothing_to_save_and_bad_targets(tmp_path, capsys):
     # an infeasible problem keeps its exit code 1 and says why nothing was saved
-    assert main(["solve", str(PROBLEMS / "infeasible_problem.yaml"), "--no-sensitivity",
-                 "--save-design", str(tmp_path / "x.yaml")]) == 1
+    assert (
+        main(
+            [
+                "solve",
+                str(PROBLEMS / "infeasible_problem.yaml"),
+                "--no-sensitivity",
+                "--save-design",
+                str(tmp_path / "x.yaml"),
+            ]
+        )
+        == 1
+    )
     assert "no design saved" in capsys.readouterr().err
     assert not (tmp_path / "x.yaml").exists()
     # a Pareto front into one file: refused before solving, one line, exit 2
-    assert main(["solve", str(PROBLEMS / "pareto_problem.yaml"), "--save-design", str(tmp_path / "p.yaml")]) == 2
+    assert (
+        main(
+            [
+                "solve",
+                str(PROBLEMS / "pareto_problem.yaml"),
+                "--save-design",
+                str(tmp_path / "p.yaml"),
+            ]
+        )
+        == 2
+    )
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "--save-design" in err
     # a file in the way of the directory
     (tmp_path / "f").write_text("x")
-    assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--no-sensitivity",
-                 "--save-design", str(tmp_path / "f")]) == 2
+    assert (
+        main(
+            [
+                "solve",
+                str(PROBLEMS / "teaching_problem.yaml"),
+                "--no-sensitivity",
+                "--save-design",
+                str(tmp_path / "f"),
+            ]
+        )
+        == 2
+    )
     assert len(capsys.readouterr().err.strip().splitlines()) == 1

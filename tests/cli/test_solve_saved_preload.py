@@ -21,7 +21,20 @@ PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
 
 def _save_and_reload(tmp_path, name):
     out, js = tmp_path / "best.yaml", tmp_path / "solve.json"
-    assert main(["solve", str(PROBLEMS / name), "--no-sensitivity", "--json", str(js), "--save-design", str(out)]) == 0
+    assert (
+        main(
+            [
+                "solve",
+                str(PROBLEMS / name),
+                "--no-sensitivity",
+                "--json",
+                str(js),
+                "--save-design",
+                str(out),
+            ]
+        )
+        == 0
+    )
     exact = json.loads(js.read_text())["best"]["nut_preload"]
     ev_json = tmp_path / "ev.json"
     assert main(["evaluate", str(out), "--json", str(ev_json)]) == 0
@@ -38,7 +51,9 @@ def _significant(x: float) -> int:
     return len(digits)
 
 
-@pytest.mark.parametrize("name", ["precision_problem.yaml", "teaching_problem.yaml", "duty_cycle_problem.yaml"])
+@pytest.mark.parametrize(
+    "name", ["precision_problem.yaml", "teaching_problem.yaml", "duty_cycle_problem.yaml"]
+)
 def test_saved_preload_is_round_and_keeps_every_limit(tmp_path, capsys, name):
     out, exact, ev = _save_and_reload(tmp_path, name)
     problem, design = load_problem(PROBLEMS / name), load_design(out)
@@ -55,15 +70,22 @@ def test_saved_preload_is_round_and_keeps_every_limit(tmp_path, capsys, name):
 
 @pytest.mark.parametrize("name", ["teaching_problem.yaml", "duty_cycle_problem.yaml"])
 def test_saved_preload_goes_the_safe_way_where_the_nearest_breaks_a_limit(tmp_path, capsys, name):
-    # teaching: the nut life binds (min_life 12 000 h) and 1150 N would shorten it; duty cycle: the drag torque
+    # teaching: the nut life binds (min_life 12 000 h) and 1150 N would shorten it; duty cycle: the
+    # drag torque
     # binds (2 N.m) and the nearest 10 N would raise it
     out, exact, _ = _save_and_reload(tmp_path, name)
     problem, design = load_problem(PROBLEMS / name), load_design(out)
     step = preload_step(exact)
     nearest = step * round(exact / step)
-    assert _missed(problem, design, nearest), "the case must be one where plain rounding breaks a limit"
+    assert _missed(problem, design, nearest), (
+        "the case must be one where plain rounding breaks a limit"
+    )
     value = design.preload
-    assert value != nearest and abs(value - exact) < step and math.isclose(value % step, 0, abs_tol=1e-9)
+    assert (
+        value != nearest
+        and abs(value - exact) < step
+        and math.isclose(value % step, 0, abs_tol=1e-9)
+    )
     assert _missed(problem, design, value) == []
     line = next(ln for ln in out.read_text(encoding="utf-8").splitlines() if "nut_preload:" in ln)
     assert "# " in line and f"{nearest:.6g} N would break" in line

@@ -14,17 +14,44 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-PROBE = ("pint", "pandas", "pyarrow", "numpy", "casadi", "matplotlib", "plotly", "dask", "rich", "scipy")
+PROBE = (
+    "pint",
+    "pandas",
+    "pyarrow",
+    "numpy",
+    "casadi",
+    "matplotlib",
+    "plotly",
+    "dask",
+    "rich",
+    "scipy",
+)
 # command -> libraries it must not import
 NOT_IMPORTED = {
     ("--help",): set(PROBE),
     ("parts",): set(PROBE),
     ("parts", "screws"): set(PROBE),
     ("parts", "nuts", "--fits", "HIWIN-G-40x20-b6p35", "--json", "-"): set(PROBE),
-    ("solve", "problems/teaching_problem.yaml"): {"pint", "pandas", "pyarrow", "matplotlib", "plotly", "dask", "rich",
-                                                  "scipy"},
-    ("evaluate", "problems/teaching_design.yaml"): {"pint", "pandas", "pyarrow", "matplotlib", "plotly", "dask",
-                                                    "rich", "scipy"},
+    ("solve", "problems/teaching_problem.yaml"): {
+        "pint",
+        "pandas",
+        "pyarrow",
+        "matplotlib",
+        "plotly",
+        "dask",
+        "rich",
+        "scipy",
+    },
+    ("evaluate", "problems/teaching_design.yaml"): {
+        "pint",
+        "pandas",
+        "pyarrow",
+        "matplotlib",
+        "plotly",
+        "dask",
+        "rich",
+        "scipy",
+    },
 }
 _SCRIPT = """
 import contextlib, io, json, sys
@@ -41,8 +68,14 @@ print(json.dumps([code, sorted({m.split('.')[0] for m in sys.modules})]))
 @pytest.mark.parametrize("argv", list(NOT_IMPORTED), ids=" ".join)
 def test_command_imports_only_what_it_needs(argv):
     env = dict(os.environ, PYTHONPATH=str(ROOT), AXISOPT_COLOR="never")
-    p = subprocess.run([sys.executable, "-c", _SCRIPT, *argv], cwd=ROOT, env=env, capture_output=True, text=True,
-                       timeout=300)
+    p = subprocess.run(
+        [sys.executable, "-c", _SCRIPT, *argv],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert p.returncode == 0, p.stderr
     code, modules = json.loads(p.stdout.splitlines()[-1])
     assert code == 0

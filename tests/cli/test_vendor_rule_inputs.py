@@ -14,19 +14,29 @@ def _run(tmp_path, line):
     text = (ROOT / "problems/teaching_problem.yaml").read_text(encoding="utf-8")
     f = tmp_path / "p.yaml"
     f.write_text(text.replace("\naxis:\n", f"\naxis:\n  {line}\n", 1), encoding="utf-8")
-    return subprocess.run([sys.executable, "-m", "axisopt", "solve", str(f)], capture_output=True, text=True,
-                          cwd=ROOT, timeout=300)
+    return subprocess.run(
+        [sys.executable, "-m", "axisopt", "solve", str(f)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=300,
+    )
 
 
-@pytest.mark.parametrize("line, word", [("torque_limit: -5 N.m", "must be positive"),
-                                        ("torque_limit: 0 N.m", "must be positive"),
-                                        ("torque_limit: 5 kg", "torque_limit"),
-                                        ("cut_while_accelerating: maybe", "cut_while_accelerating"),
-                                        ("buckling_nut_end: clamped", "buckling_nut_end"),
-                                        ("rise_without_cycle: hot", "rise_without_cycle"),
-                                        ("feedback: linear_scale", "scale_grade"),
-                                        ("scale_grade: HEIDENHAIN-1", "scale_grade"),
-                                        ("feedback: glass", "feedback")])
+@pytest.mark.parametrize(
+    "line, word",
+    [
+        ("torque_limit: -5 N.m", "must be positive"),
+        ("torque_limit: 0 N.m", "must be positive"),
+        ("torque_limit: 5 kg", "torque_limit"),
+        ("cut_while_accelerating: maybe", "cut_while_accelerating"),
+        ("buckling_nut_end: clamped", "buckling_nut_end"),
+        ("rise_without_cycle: hot", "rise_without_cycle"),
+        ("feedback: linear_scale", "scale_grade"),
+        ("scale_grade: HEIDENHAIN-1", "scale_grade"),
+        ("feedback: glass", "feedback"),
+    ],
+)
 def test_bad_vendor_rule_keys_one_line_exit_2(tmp_path, line, word):
     r = _run(tmp_path, line)
     assert r.returncode == 2
@@ -51,7 +61,12 @@ parts:
 """
     f = tmp_path / "d.yaml"
     f.write_text(text, encoding="utf-8")
-    r = subprocess.run([sys.executable, "-m", "axisopt", "evaluate", str(f)], capture_output=True, text=True,
-                       cwd=ROOT, timeout=300)
+    r = subprocess.run(
+        [sys.executable, "-m", "axisopt", "evaluate", str(f)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=300,
+    )
     assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
     assert "rotating-nut" in r.stderr and "linear_scale" in r.stderr

@@ -40,31 +40,71 @@ ROOT = Path(__file__).resolve().parents[2]
 PROBLEMS = ROOT / "problems"
 CATALOGS = ROOT / "catalogs"
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # the shipped inputs
 
-DESIGNS = ("vmc_x_design.yaml", "teaching_design.yaml", "custom_parts_design.yaml", "paper_3_1_3_d40.yaml",
-           "data/table_x.yaml")
+DESIGNS = (
+    "vmc_x_design.yaml",
+    "teaching_design.yaml",
+    "custom_parts_design.yaml",
+    "paper_3_1_3_d40.yaml",
+    "data/table_x.yaml",
+)
 FAST_PROBLEMS = ("teaching_problem.yaml", "duty_cycle_problem.yaml", "vertical_problem.yaml")
-ALL_PROBLEMS = FAST_PROBLEMS + ("vmc_x_problem.yaml", "highspeed_problem.yaml", "gantry_problem.yaml",
-                                "pareto_problem.yaml", "infeasible_problem.yaml", "infeasible_drive_problem.yaml")
-STUDIES = ("teaching_random.yaml", "vmc_stroke_mounting.yaml", "gantry_weights.yaml", "pareto_stroke.yaml",
-           "vmc_random_1000.yaml")
+ALL_PROBLEMS = FAST_PROBLEMS + (
+    "vmc_x_problem.yaml",
+    "highspeed_problem.yaml",
+    "gantry_problem.yaml",
+    "pareto_problem.yaml",
+    "infeasible_problem.yaml",
+    "infeasible_drive_problem.yaml",
+)
+STUDIES = (
+    "teaching_random.yaml",
+    "vmc_stroke_mounting.yaml",
+    "gantry_weights.yaml",
+    "pareto_stroke.yaml",
+    "vmc_random_1000.yaml",
+)
 DATA_CSV = "data/table_x_stiffness.csv"
 DATA_DESIGN = "data/table_x.yaml"
 TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings")
-EFFECTS = ("support_condition", "hertz_contact", "backlash", "friction_hysteresis", "thermal_drift",
-           "compliance_offset", "added_mass", "stribeck", "viscous", "load_dependent_friction",
-           "direction_asymmetry", "preload_loss", "extra_mode")
+EFFECTS = (
+    "support_condition",
+    "hertz_contact",
+    "backlash",
+    "friction_hysteresis",
+    "thermal_drift",
+    "compliance_offset",
+    "added_mass",
+    "stribeck",
+    "viscous",
+    "load_dependent_friction",
+    "direction_asymmetry",
+    "preload_loss",
+    "extra_mode",
+)
 
-KINDS = ("design", "problem", "study", "calibration", "data", "catalog", "flags", "compare", "hardening")
+KINDS = (
+    "design",
+    "problem",
+    "study",
+    "calibration",
+    "data",
+    "catalog",
+    "flags",
+    "compare",
+    "hardening",
+)
 
 
 def shipped(rel: str) -> bytes:
     return (PROBLEMS / rel).read_bytes()
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # choosers
 
 
@@ -104,7 +144,8 @@ class DrawChooser:
         return self.data.draw(self.st.integers(0, 999)) / 1000.0
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # values that replace a YAML value
 
 HUGE = "x" * 100_000
@@ -112,24 +153,84 @@ DEEP_TOKEN = "__FUZZ_DEEP__"
 BOMB_TOKEN = "__FUZZ_BOMB__"
 DEEP = "[" * 1000 + "]" * 1000
 DEEP_MAP = "{a: " * 1000 + "1" + "}" * 1000
-BOMB = "[" + ", ".join(
-    [f"&a0 [{', '.join(['lol'] * 9)}]"]
-    + [f"&a{i} [{', '.join([f'*a{i - 1}'] * 9)}]" for i in range(1, 9)]) + "]"
+BOMB = (
+    "["
+    + ", ".join(
+        [f"&a0 [{', '.join(['lol'] * 9)}]"]
+        + [f"&a{i} [{', '.join([f'*a{i - 1}'] * 9)}]" for i in range(1, 9)]
+    )
+    + "]"
+)
 
 SPECIAL_VALUES = (
-    ("nan", math.nan), ("inf", math.inf), ("-inf", -math.inf), ("-1", -1), ("0", 0), ("1e300", 1e300),
-    ("1e-300", 1e-300), ("huge string", HUGE), ("list", [1, 2]), ("mapping", {"a": 1}), ("empty list", []),
-    ("empty mapping", {}), ("null", None), ("true", True), ("empty string", ""), ("'450 u'", "450 u"),
-    ("'450 µ'", "450 µ"), ("'3 furlong'", "3 furlong"), ("'-1 mm'", "-1 mm"), ("'1e300 mm'", "1e300 mm"),
-    ("'nan mm'", "nan mm"), ("'0 kg'", "0 kg"), ("'450 kg/m'", "450 kg/m"), ("'1 1 mm'", "1 1 mm"),
-    ("2**70", 2**70), ("1.5", 1.5), ("'yes'", "yes"), ("deep list", DEEP_TOKEN), ("alias bomb", BOMB_TOKEN),
+    ("nan", math.nan),
+    ("inf", math.inf),
+    ("-inf", -math.inf),
+    ("-1", -1),
+    ("0", 0),
+    ("1e300", 1e300),
+    ("1e-300", 1e-300),
+    ("huge string", HUGE),
+    ("list", [1, 2]),
+    ("mapping", {"a": 1}),
+    ("empty list", []),
+    ("empty mapping", {}),
+    ("null", None),
+    ("true", True),
+    ("empty string", ""),
+    ("'450 u'", "450 u"),
+    ("'450 µ'", "450 µ"),
+    ("'3 furlong'", "3 furlong"),
+    ("'-1 mm'", "-1 mm"),
+    ("'1e300 mm'", "1e300 mm"),
+    ("'nan mm'", "nan mm"),
+    ("'0 kg'", "0 kg"),
+    ("'450 kg/m'", "450 kg/m"),
+    ("'1 1 mm'", "1 1 mm"),
+    ("2**70", 2**70),
+    ("1.5", 1.5),
+    ("'yes'", "yes"),
+    ("deep list", DEEP_TOKEN),
+    ("alias bomb", BOMB_TOKEN),
 )
-NUMBERS = (("-1", -1.0), ("0", 0.0), ("1e300", 1e300), ("1e-300", 1e-300), ("nan", math.nan), ("inf", math.inf),
-           ("-inf", -math.inf), ("1e20", 1e20), ("1e-20", 1e-20), ("-0.0", -0.0), ("1e6", 1e6), ("0.001", 1e-3))
+NUMBERS = (
+    ("-1", -1.0),
+    ("0", 0.0),
+    ("1e300", 1e300),
+    ("1e-300", 1e-300),
+    ("nan", math.nan),
+    ("inf", math.inf),
+    ("-inf", -math.inf),
+    ("1e20", 1e20),
+    ("1e-20", 1e-20),
+    ("-0.0", -0.0),
+    ("1e6", 1e6),
+    ("0.001", 1e-3),
+)
 SCALES = (1e3, 1e6, 1e9, 1e12, 1e-3, 1e-6, 1e-9, 1e-12, 10.0, 0.1, 0.5, 2.0, -1.0, 1.0001, 0.9999)
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*)$")
-UNIT_SWAPS = ("u", "µ", "furlong", "mm", "kg", "N/um", "Hz", "s", "", "m/s^2", "K", "degC", "rad", "%", "N.m/rad",
-              "mm mm", "1/0", "m**1000", "m^-1", "um/N")
+UNIT_SWAPS = (
+    "u",
+    "µ",
+    "furlong",
+    "mm",
+    "kg",
+    "N/um",
+    "Hz",
+    "s",
+    "",
+    "m/s^2",
+    "K",
+    "degC",
+    "rad",
+    "%",
+    "N.m/rad",
+    "mm mm",
+    "1/0",
+    "m**1000",
+    "m^-1",
+    "um/N",
+)
 
 
 def _fmt_num(v: float) -> str:
@@ -162,7 +263,9 @@ def value_mutation(ch, old):
             v = int(v)
         return f"number {old!r} scaled by {f:g}", v
     if isinstance(old, (int, float)) and not isinstance(old, bool) and r < 0.55:
-        desc, v = ch.choice(NUMBERS + (("10**9", 10**9), ("10**18", 10**18), ("2", 2), ("1.5", 1.5)))
+        desc, v = ch.choice(
+            NUMBERS + (("10**9", 10**9), ("10**18", 10**18), ("2", 2), ("1.5", 1.5))
+        )
         return f"number {old!r} -> {desc}", v
     desc, v = ch.choice(SPECIAL_VALUES)
     return f"value -> {desc}", v
@@ -175,12 +278,12 @@ def typo(ch, key: str) -> str:
     i = ch.randint(0, len(key) - 1)
     op = ch.choice(("drop", "double", "swap", "upper", "suffix", "space"))
     if op == "drop":
-        out = key[:i] + key[i + 1:]
+        out = key[:i] + key[i + 1 :]
     elif op == "double":
         out = key[:i] + key[i] + key[i:]
     elif op == "swap" and len(key) > 1:
         i = min(i, len(key) - 2)
-        out = key[:i] + key[i + 1] + key[i] + key[i + 2:]
+        out = key[:i] + key[i + 1] + key[i] + key[i + 2 :]
     elif op == "upper":
         out = key.upper()
     elif op == "space":
@@ -190,7 +293,8 @@ def typo(ch, key: str) -> str:
     return out if out != key else key + "x"
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # YAML mutations
 
 
@@ -216,7 +320,9 @@ def _show(path) -> str:
 
 
 def dump_yaml(tree) -> bytes:
-    text = yaml.safe_dump(tree, sort_keys=False, allow_unicode=True, default_flow_style=None, width=10**9)
+    text = yaml.safe_dump(
+        tree, sort_keys=False, allow_unicode=True, default_flow_style=None, width=10**9
+    )
     text = text.replace(DEEP_TOKEN, DEEP).replace(BOMB_TOKEN, BOMB)
     return text.encode("utf-8")
 
@@ -226,14 +332,27 @@ def mutate_tree(ch, tree, where=None):
     Returns a description."""
     paths = list(_paths(tree))
     if where:
-        sel = [p for p in paths if any(p[:len(w)] == w for w in where)]
+        sel = [p for p in paths if any(p[: len(w)] == w for w in where)]
         paths = sel or paths
     if not paths:
         return "no path"
     path = ch.choice(paths)
     parent = _get(tree, path[:-1])
     last = path[-1]
-    op = ch.choice(("delete", "rename", "value", "value", "value", "value", "value", "value", "wrap", "add_key"))
+    op = ch.choice(
+        (
+            "delete",
+            "rename",
+            "value",
+            "value",
+            "value",
+            "value",
+            "value",
+            "value",
+            "wrap",
+            "add_key",
+        )
+    )
     if op == "delete":
         del parent[last]
         return f"delete {_show(path)}"
@@ -269,11 +388,38 @@ def _inject_non_ascii(text: str) -> str:
 def mutate_text(ch, data: bytes, kind: str = "yaml"):
     """A whole-file mutation: (description, new bytes)."""
     text = data.decode("utf-8")
-    ops = ["empty", "whitespace", "truncate", "random bytes", "random file", "nul", "latin-1", "utf-16",
-           "utf-8 bom", "utf-32", "crlf", "cr only", "duplicate line"]
+    ops = [
+        "empty",
+        "whitespace",
+        "truncate",
+        "random bytes",
+        "random file",
+        "nul",
+        "latin-1",
+        "utf-16",
+        "utf-8 bom",
+        "utf-32",
+        "crlf",
+        "cr only",
+        "duplicate line",
+    ]
     if kind == "yaml":
-        ops += ["deep list", "deep mapping", "alias bomb", "self alias", "scalar doc", "list doc", "two docs",
-                "python tag", "tab indent", "null doc", "complex key", "huge key", "dup top key", "merge key"]
+        ops += [
+            "deep list",
+            "deep mapping",
+            "alias bomb",
+            "self alias",
+            "scalar doc",
+            "list doc",
+            "two docs",
+            "python tag",
+            "tab indent",
+            "null doc",
+            "complex key",
+            "huge key",
+            "dup top key",
+            "merge key",
+        ]
     op = ch.choice(ops)
     if op == "empty":
         return op, b""
@@ -313,13 +459,15 @@ def mutate_text(ch, data: bytes, kind: str = "yaml"):
     if op == "duplicate line":
         lines = text.splitlines(keepends=True)
         i = ch.randint(0, len(lines) - 1)
-        return f"line {i + 1} duplicated", "".join(lines[:i + 1] + lines[i:]).encode()
+        return f"line {i + 1} duplicated", "".join(lines[: i + 1] + lines[i:]).encode()
     if op == "deep list":
         return "1000-deep [[[...]]] document", DEEP.encode()
     if op == "deep mapping":
         return "1000-deep {a: {a: ...}} document", DEEP_MAP.encode()
     if op == "alias bomb":
-        return "billion-laughs alias bomb as a value", (text.rstrip("\n") + "\nbomb: " + BOMB + "\n").encode()
+        return "billion-laughs alias bomb as a value", (
+            text.rstrip("\n") + "\nbomb: " + BOMB + "\n"
+        ).encode()
     if op == "self alias":
         return "self-referencing alias", (text + "\nloop: &l [*l]\n").encode()
     if op == "scalar doc":
@@ -340,43 +488,88 @@ def mutate_text(ch, data: bytes, kind: str = "yaml"):
         return "10^5-character key", (text + "\n" + "k" * 100_000 + ": 1\n").encode()
     if op == "dup top key":
         first = next((ln for ln in text.splitlines() if re.match(r"^[A-Za-z_]+:", ln)), "name: x")
-        return f"duplicated top-level key ({first.split(':')[0]})", (text + "\n" + first + "\n").encode()
+        return f"duplicated top-level key ({first.split(':')[0]})", (
+            text + "\n" + first + "\n"
+        ).encode()
     if op == "merge key":
         return "YAML merge key <<", (text + "\nm: &m {a: 1}\nn: {<<: *m}\n").encode()
     raise AssertionError(op)
 
 
-# Optional keys the shipped files leave at their defaults (README "Design YAML" / "Problem YAML"), with an
+# Optional keys the shipped files leave at their defaults (README "Design YAML" / "Problem YAML"),
+# with an
 # example value: the "optional" mutation writes one in, its value often mutated too.
 AXIS_OPTIONAL = {
-    "start_offset": "130 mm", "end_margin": "170 mm", "mean_speed": "8 m/min", "mean_axial_load": "800 N",
-    "acceleration": "3 m/s^2", "required_life": "20000 h", "load_factor": 1.2, "guide_blocks": 4, "rails": 2,
-    "table_length": "600 mm", "orientation": "vertical", "normal_load": "500 N", "lubricant_viscosity": "32 mm^2/s",
-    "motor_inertia": "0.001 kg.m^2", "coupling_stiffness": "75000 N.m/rad", "coupling_inertia": "0.29e-3 kg.m^2",
-    "bearing_housing_stiffness": "2000 N/um", "nut_bracket_stiffness": "1500 N/um", "temperature_rise": "3 K",
-    "pretension": "auto", "positions": 41, "jerk": "100 m/s^3", "reduction_ratio": 2, "reduction_efficiency": 0.95,
-    "reduction_inertia": "0.4e-4 kg.m^2", "max_inertia_ratio": 5, "brake": "yes", "brake_safety": 2,
-    "bearing_static_safety": 4, "nut_lift_off_safety": 1.2,
-    "duty_cycle": [{"move": "300 mm"}, {"move": "350 mm", "speed": "2 m/min", "force": "2500 N"}, {"dwell": "1 s"},
-                   {"move": "-650 mm", "acceleration": "4 m/s^2", "jerk": "80 m/s^3"}],
+    "start_offset": "130 mm",
+    "end_margin": "170 mm",
+    "mean_speed": "8 m/min",
+    "mean_axial_load": "800 N",
+    "acceleration": "3 m/s^2",
+    "required_life": "20000 h",
+    "load_factor": 1.2,
+    "guide_blocks": 4,
+    "rails": 2,
+    "table_length": "600 mm",
+    "orientation": "vertical",
+    "normal_load": "500 N",
+    "lubricant_viscosity": "32 mm^2/s",
+    "motor_inertia": "0.001 kg.m^2",
+    "coupling_stiffness": "75000 N.m/rad",
+    "coupling_inertia": "0.29e-3 kg.m^2",
+    "bearing_housing_stiffness": "2000 N/um",
+    "nut_bracket_stiffness": "1500 N/um",
+    "temperature_rise": "3 K",
+    "pretension": "auto",
+    "positions": 41,
+    "jerk": "100 m/s^3",
+    "reduction_ratio": 2,
+    "reduction_efficiency": 0.95,
+    "reduction_inertia": "0.4e-4 kg.m^2",
+    "max_inertia_ratio": 5,
+    "brake": "yes",
+    "brake_safety": 2,
+    "bearing_static_safety": 4,
+    "nut_lift_off_safety": 1.2,
+    "duty_cycle": [
+        {"move": "300 mm"},
+        {"move": "350 mm", "speed": "2 m/min", "force": "2500 N"},
+        {"dwell": "1 s"},
+        {"move": "-650 mm", "acceleration": "4 m/s^2", "jerk": "80 m/s^3"},
+    ],
 }
 PROBLEM_OPTIONAL = {
-    ("limits", "max_cost"): "5000 EUR", ("limits", "max_total_mass"): "600 kg", ("limits", "max_moving_mass"): "600 kg",
-    ("limits", "max_drag_torque"): "2.5 N.m", ("limits", "min_life"): "20000 h",
+    ("limits", "max_cost"): "5000 EUR",
+    ("limits", "max_total_mass"): "600 kg",
+    ("limits", "max_moving_mass"): "600 kg",
+    ("limits", "max_drag_torque"): "2.5 N.m",
+    ("limits", "min_life"): "20000 h",
     ("limits", "min_stiffness"): "150 N/um",
-    ("limits", "min_frequency"): "50 Hz", ("limits", "max_backlash"): "30 um",
+    ("limits", "min_frequency"): "50 Hz",
+    ("limits", "max_backlash"): "30 um",
     ("limits", "margins"): {"critical_speed": 1.25, "buckling": 2.0, "dn": 0},
-    ("catalog", "bearing_arrangements"): ["DF", "DFD", "DB"], ("catalog", "bearing_preload"): ["medium", "heavy"],
-    ("catalog", "guide_types"): ["ball"], ("catalog", "guide_preload"): ["heavy", "super-heavy"],
-    ("catalog", "max_motor_flange"): "130 mm", ("catalog", "drive"): "no", ("catalog", "vendors"): ["HIWIN"],
-    ("catalog", "exclude"): {"guide": ["HIWIN-HG15-ZA"]}, ("catalog", "motor_vendors"): ["Yaskawa"],
+    ("catalog", "bearing_arrangements"): ["DF", "DFD", "DB"],
+    ("catalog", "bearing_preload"): ["medium", "heavy"],
+    ("catalog", "guide_types"): ["ball"],
+    ("catalog", "guide_preload"): ["heavy", "super-heavy"],
+    ("catalog", "max_motor_flange"): "130 mm",
+    ("catalog", "drive"): "no",
+    ("catalog", "vendors"): ["HIWIN"],
+    ("catalog", "exclude"): {"guide": ["HIWIN-HG15-ZA"]},
+    ("catalog", "motor_vendors"): ["Yaskawa"],
     ("continuous", "nut_preload"): {"min": "200 N", "max": "20 kN"},
-    ("objective",): {"mode": "weighted", "weights": {"stiffness": 1, "frequency": 1},
-                     "scale": {"stiffness": "100 N/um", "frequency": "50 Hz"}},
+    ("objective",): {
+        "mode": "weighted",
+        "weights": {"stiffness": 1, "frequency": 1},
+        "scale": {"stiffness": "100 N/um", "frequency": "50 Hz"},
+    },
 }
-OBJECTIVES = (PROBLEM_OPTIONAL[("objective",)], {"mode": "pareto", "pareto": ["stiffness", "cost"]},
-              {"mode": "pareto", "pareto": ["stiffness", "frequency", "cost", "total_mass"]},
-              {"mode": "lexicographic", "order": ["frequency", "stiffness"], "tolerance": 0.02}, "frequency")
+OBJECTIVES = (
+    PROBLEM_OPTIONAL[("objective",)],
+    {"mode": "pareto", "pareto": ["stiffness", "cost"]},
+    {"mode": "pareto", "pareto": ["stiffness", "frequency", "cost", "total_mass"]},
+    {"mode": "lexicographic", "order": ["frequency", "stiffness"], "tolerance": 0.02},
+    "frequency",
+)
 EXTREME_COUNTS = (10**9, 10**6, 10**5, 3, 0, -1, 2**63)
 
 
@@ -427,13 +620,53 @@ def mutate_yaml(ch, data: bytes, where=None, text_share: float = 0.2):
     return "; ".join(descs), dump_yaml(tree)
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # CSV mutations
 
-CSV_VALUES = ("", "nan", "NaN", "inf", "-inf", "-1", "0", "1e300", "1e-300", "-1e300", "abc", HUGE, '"', "1,2",
-              "1e400", "0x10", "1_000", " 5 ", "5 mm", "true", "\u00b5", "2", "-0")
-HEADER_UNITS = ("[mm]", "[um]", "[µm]", "[u]", "[furlong]", "", "[]", "[-]", "[N]", "[kN]", "[N/um]", "[m]", "[s]",
-                "[1/0]", "[mm", "[mm][mm]")
+CSV_VALUES = (
+    "",
+    "nan",
+    "NaN",
+    "inf",
+    "-inf",
+    "-1",
+    "0",
+    "1e300",
+    "1e-300",
+    "-1e300",
+    "abc",
+    HUGE,
+    '"',
+    "1,2",
+    "1e400",
+    "0x10",
+    "1_000",
+    " 5 ",
+    "5 mm",
+    "true",
+    "\u00b5",
+    "2",
+    "-0",
+)
+HEADER_UNITS = (
+    "[mm]",
+    "[um]",
+    "[µm]",
+    "[u]",
+    "[furlong]",
+    "",
+    "[]",
+    "[-]",
+    "[N]",
+    "[kN]",
+    "[N/um]",
+    "[m]",
+    "[s]",
+    "[1/0]",
+    "[mm",
+    "[mm][mm]",
+)
 
 
 def read_csv_rows(data: bytes):
@@ -453,9 +686,26 @@ def mutate_csv(ch, data: bytes, rows_of_interest=None, text_share: float = 0.2):
         return mutate_text(ch, data, "csv")
     rows = read_csv_rows(data)
     head, body = rows[0], rows[1:]
-    op = ch.choice(("cell", "cell", "cell", "cell", "column", "column scale", "header", "header unit",
-                    "delete rows", "keep rows", "delete column", "add column", "short row", "long row",
-                    "duplicate rows", "shuffle"))
+    op = ch.choice(
+        (
+            "cell",
+            "cell",
+            "cell",
+            "cell",
+            "column",
+            "column scale",
+            "header",
+            "header unit",
+            "delete rows",
+            "keep rows",
+            "delete column",
+            "add column",
+            "short row",
+            "long row",
+            "duplicate rows",
+            "shuffle",
+        )
+    )
     if op == "cell" and body:
         if rows_of_interest and ch.random() < 0.7:
             i = ch.choice(rows_of_interest)
@@ -486,7 +736,9 @@ def mutate_csv(ch, data: bytes, rows_of_interest=None, text_share: float = 0.2):
         desc = f"column '{head[j]}' scaled by {f!r}"
     elif op == "header":
         j = ch.randint(0, len(head) - 1)
-        new = ch.choice((typo(ch, head[j]), head[(j + 1) % len(head)], "", HUGE[:5000], head[j].upper()))
+        new = ch.choice(
+            (typo(ch, head[j]), head[(j + 1) % len(head)], "", HUGE[:5000], head[j].upper())
+        )
         desc = f"header '{head[j]}' -> {new[:30]!r}"
         head[j] = new
     elif op == "header unit":
@@ -506,8 +758,8 @@ def mutate_csv(ch, data: bytes, rows_of_interest=None, text_share: float = 0.2):
     elif op == "delete column":
         j = ch.randint(0, len(head) - 1)
         desc = f"delete column '{head[j]}'"
-        head = head[:j] + head[j + 1:]
-        body = [r[:j] + r[j + 1:] for r in body]
+        head = head[:j] + head[j + 1 :]
+        body = [r[:j] + r[j + 1 :] for r in body]
     elif op == "add column":
         name = ch.choice(("extra [mm]", "status", "id", head[0], "exclude", "mass [kg]"))
         desc = f"add column {name!r}"
@@ -530,7 +782,8 @@ def mutate_csv(ch, data: bytes, rows_of_interest=None, text_share: float = 0.2):
     return desc, write_csv_rows([head] + body)
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # cases
 
 
@@ -541,10 +794,12 @@ class Case:
     argv: list
     files: dict = field(default_factory=dict)  # relative path -> bytes
     dirs: tuple = ()  # relative directories to create
-    # ';'-separated: 'fifo:<rel path>' makes a named pipe nobody writes or reads; 'drain:<rel path>' makes one
+    # ';'-separated: 'fifo:<rel path>' makes a named pipe nobody writes or reads; 'drain:<rel path>'
+    # makes one
     # that a thread of the runner reads to its end (as `cat fifo` would), for output paths
     special: str = ""
-    drains: dict = field(default_factory=dict, repr=False, compare=False)  # rel path -> _Drain (while running)
+    # rel path -> _Drain (while running)
+    drains: dict = field(default_factory=dict, repr=False, compare=False)
 
     def command(self) -> str:
         return "axisopt " + " ".join(_q(a) for a in self.argv)
@@ -588,7 +843,8 @@ class _Drain:
 
     def result(self) -> bytes:
         self.t.join(2)
-        if self.t.is_alive():  # the command never opened it: open the writing end once so the reader returns
+        # the command never opened it: open the writing end once so the reader returns
+        if self.t.is_alive():
             try:
                 os.close(os.open(self.path, os.O_WRONLY | os.O_NONBLOCK))
             except OSError:
@@ -648,8 +904,11 @@ def _tiny_sweep(tree, name: str, fast: bool):
         elif isinstance(v, dict) and "steps" in v:
             v["steps"] = keep
         elif isinstance(v, dict) and isinstance(v.get("random"), dict):
-            v["random"]["n"] = 2 if name in ("gantry_weights.yaml", "teaching_random.yaml", "vmc_random_1000.yaml") \
+            v["random"]["n"] = (
+                2
+                if name in ("gantry_weights.yaml", "teaching_random.yaml", "vmc_random_1000.yaml")
                 else keep
+            )
         first = False
     if tree.get("combine") == "zip":
         for k, v in sweep.items():
@@ -696,17 +955,28 @@ def calibration_bytes(runner=None) -> bytes:
     if "cal" not in _CAL_CACHE:
         with tempfile.TemporaryDirectory() as d:
             out = Path(d) / "cal.yaml"
-            argv = ["diagnose", str(PROBLEMS / DATA_CSV), "--design", str(PROBLEMS / DATA_DESIGN),
-                    "--save-calibration", str(out)]
-            r = subprocess.run([sys.executable, "-m", "axisopt", *argv], capture_output=True, timeout=120,
-                               cwd=str(ROOT))
+            argv = [
+                "diagnose",
+                str(PROBLEMS / DATA_CSV),
+                "--design",
+                str(PROBLEMS / DATA_DESIGN),
+                "--save-calibration",
+                str(out),
+            ]
+            r = subprocess.run(
+                [sys.executable, "-m", "axisopt", *argv],
+                capture_output=True,
+                timeout=120,
+                cwd=str(ROOT),
+            )
             if r.returncode != 0:
                 raise RuntimeError(f"cannot make the calibration: {r.stderr.decode()[-500:]}")
             _CAL_CACHE["cal"] = out.read_bytes()
     return _CAL_CACHE["cal"]
 
 
-# Every baseline parameter and every effect that evaluate applies, with plausible values (a saved calibration
+# Every baseline parameter and every effect that evaluate applies, with plausible values (a saved
+# calibration
 # carries only the accepted effects): the calibration cases mutate this one or the saved one.
 RICH_CALIBRATION = """\
 axisopt_calibration: 1
@@ -767,10 +1037,21 @@ def synthetic_datasets() -> dict:
         v = np.r_[np.linspace(-0.5, -0.005, 8), np.linspace(0.005, 0.5, 8)]
         f = np.geomspace(20, 400, 30)
         specs = {
-            "frequency.csv": ("frequency", dict(position=np.linspace(0, 0.8, 5)),
-                              {"added_mass": {"added_mass": 30.0}}),
-            "friction.csv": ("friction", dict(velocity=np.tile(v, 3), position=np.repeat([0.1, 0.4, 0.7], 16)), {}),
-            "frf.csv": ("frf", dict(frequency=np.tile(f, 3), position=np.repeat([0.0, 0.4, 0.8], 30)), {}),
+            "frequency.csv": (
+                "frequency",
+                dict(position=np.linspace(0, 0.8, 5)),
+                {"added_mass": {"added_mass": 30.0}},
+            ),
+            "friction.csv": (
+                "friction",
+                dict(velocity=np.tile(v, 3), position=np.repeat([0.1, 0.4, 0.7], 16)),
+                {},
+            ),
+            "frf.csv": (
+                "frf",
+                dict(frequency=np.tile(f, 3), position=np.repeat([0.0, 0.4, 0.8], 30)),
+                {},
+            ),
         }
         with tempfile.TemporaryDirectory() as d:
             for i, (name, (kind, cols, eff)) in enumerate(specs.items()):
@@ -793,7 +1074,10 @@ def data_case(ch) -> Case:
         desc += f" (with unmutated {other})"
     r = ch.random()
     if r < 0.3:
-        argv += ["--effects", ",".join(sorted({ch.choice(EFFECTS) for _ in range(ch.randint(1, 3))}))]
+        argv += [
+            "--effects",
+            ",".join(sorted({ch.choice(EFFECTS) for _ in range(ch.randint(1, 3))})),
+        ]
     elif r < 0.4:
         argv += ["--max-effects", str(ch.choice((0, 1, 3, 13)))]
     return Case("data", f"{name}: {desc}", _json_flag(ch, argv, 0.85), files)
@@ -816,19 +1100,29 @@ def catalog_case(ch) -> Case:
     ``parts``, ``evaluate`` (a design of U- parts) or ``solve`` (the teaching problem over both catalogs)."""
     table = ch.choice(TABLES)
     design = yaml.safe_load(shipped("vmc_x_design.yaml"))
-    used = {"screws": design["parts"]["screw"], "nuts": design["parts"]["nut"], "bearings": design["parts"]["bearing"],
-            "guides": design["parts"]["guide"], "motors": design["parts"]["motor"],
-            "couplings": design["parts"]["coupling"]}
+    used = {
+        "screws": design["parts"]["screw"],
+        "nuts": design["parts"]["nut"],
+        "bearings": design["parts"]["bearing"],
+        "guides": design["parts"]["guide"],
+        "motors": design["parts"]["motor"],
+        "couplings": design["parts"]["coupling"],
+    }
     files = {}
     for t in TABLES:
         head, body = _prefixed_table(t)
         if t == table:
             interest = [i for i, r in enumerate(body) if r[0] == "U-" + used[t]]
             if ch.random() < 0.5:
-                vendor_rows = [i for i, r in enumerate(body) if "HIWIN" in r[1] or "Yaskawa" in r[1]
-                               or "RINGFEDER" in r[1]]
+                vendor_rows = [
+                    i
+                    for i, r in enumerate(body)
+                    if "HIWIN" in r[1] or "Yaskawa" in r[1] or "RINGFEDER" in r[1]
+                ]
                 interest = vendor_rows or interest
-            desc, files[f"cat/{t}.csv"] = mutate_csv(ch, write_csv_rows([head] + body), interest, text_share=0.1)
+            desc, files[f"cat/{t}.csv"] = mutate_csv(
+                ch, write_csv_rows([head] + body), interest, text_share=0.1
+            )
         else:
             files[f"cat/{t}.csv"] = write_csv_rows([head] + body)
     cmd = ch.choice(("parts", "evaluate", "evaluate", "solve"))
@@ -843,10 +1137,14 @@ def catalog_case(ch) -> Case:
     else:
         prob = yaml.safe_load(shipped("teaching_problem.yaml"))
         prob["catalogs"] = ["cat"]
-        prob["catalog"]["require"] = {"coupling": ["U-RINGFEDER-GWB-AKN-30", "RINGFEDER-GWB-AKN-60"]}
+        prob["catalog"]["require"] = {
+            "coupling": ["U-RINGFEDER-GWB-AKN-30", "RINGFEDER-GWB-AKN-60"]
+        }
         files["problem.yaml"] = dump_yaml(prob)
         argv = ["solve", "problem.yaml", "--no-sensitivity", "--top", "2"]
-    return Case("catalog", f"catalogs/{table}.csv (U- copy): {desc}", _json_flag(ch, argv, 0.8), files)
+    return Case(
+        "catalog", f"catalogs/{table}.csv (U- copy): {desc}", _json_flag(ch, argv, 0.8), files
+    )
 
 
 def compare_case(ch) -> Case:
@@ -858,7 +1156,9 @@ def compare_case(ch) -> Case:
     argv = ["compare", "a.yaml", "b.yaml"]
     if ch.random() < 0.3:
         argv += ["--csv", "c.csv"]
-    return Case("compare", f"compare {a} {b}, {mutated} mutated: {desc}", _json_flag(ch, argv, 0.8), files)
+    return Case(
+        "compare", f"compare {a} {b}, {mutated} mutated: {desc}", _json_flag(ch, argv, 0.8), files
+    )
 
 
 def _flag_cases():
@@ -870,40 +1170,119 @@ def _flag_cases():
     dfiles = {D: shipped("vmc_x_design.yaml")}
     pfiles = {P: shipped("teaching_problem.yaml")}
     tx = {C: shipped(DATA_CSV), D: shipped(DATA_DESIGN)}
-    st = _tiny_sweep(yaml.safe_load(shipped("studies/teaching_random.yaml")), "teaching_random.yaml", True)
+    st = _tiny_sweep(
+        yaml.safe_load(shipped("studies/teaching_random.yaml")), "teaching_random.yaml", True
+    )
     sfiles = {S: dump_yaml(st)}
     out = []
-    for m in ("nut:hertz", "bearings:palmgren", "nut:", ":", ",,,", "all,all", "nut:hertz,nut:hertz", "xyz",
-              HUGE[:5000], "screw:eq7,bearings:kraemer", "nut:catalog", "-", "nut:hertz:x", " "):
-        out.append((f"--methods {m[:20]!r}", ["evaluate", D, "--methods", m, "--json", "-"], dfiles))
+    for m in (
+        "nut:hertz",
+        "bearings:palmgren",
+        "nut:",
+        ":",
+        ",,,",
+        "all,all",
+        "nut:hertz,nut:hertz",
+        "xyz",
+        HUGE[:5000],
+        "screw:eq7,bearings:kraemer",
+        "nut:catalog",
+        "-",
+        "nut:hertz:x",
+        " ",
+    ):
+        out.append(
+            (f"--methods {m[:20]!r}", ["evaluate", D, "--methods", m, "--json", "-"], dfiles)
+        )
     for t in ("0", "-1", "1000000", "x", "1e3", "99999999999999999999", ""):
-        out.append((f"--top {t!r}", ["solve", P, "--no-sensitivity", "--top", t, "--json", "-"], pfiles))
+        out.append(
+            (f"--top {t!r}", ["solve", P, "--no-sensitivity", "--top", t, "--json", "-"], pfiles)
+        )
     for t in ("nan", "inf", "-inf", "-1", "0", "1e-300", "1e300", "x"):
-        out.append((f"--time-limit {t}", ["solve", P, "--no-sensitivity", "--time-limit", t], pfiles))
+        out.append(
+            (f"--time-limit {t}", ["solve", P, "--no-sensitivity", "--time-limit", t], pfiles)
+        )
     for t in ("nan", "1e-300"):
-        out.append((f"bonmin --time-limit {t}", ["solve", P, "--method", "bonmin", "--no-sensitivity",
-                                                 "--time-limit", t], pfiles))
+        out.append(
+            (
+                f"bonmin --time-limit {t}",
+                ["solve", P, "--method", "bonmin", "--no-sensitivity", "--time-limit", t],
+                pfiles,
+            )
+        )
     for m in ("exhaustive", "bonmin", "BONMIN", ""):
-        out.append((f"--method {m!r}", ["solve", P, "--no-sensitivity", "--method", m, "--json", "-"], pfiles))
-    for e in ("", ",", "support_condition,support_condition", "nope", "SUPPORT_CONDITION", HUGE[:3000], " , "):
-        out.append((f"--effects {e[:20]!r}", ["diagnose", C, "--design", D, "--effects", e, "--json", "-"], tx))
+        out.append(
+            (
+                f"--method {m!r}",
+                ["solve", P, "--no-sensitivity", "--method", m, "--json", "-"],
+                pfiles,
+            )
+        )
+    for e in (
+        "",
+        ",",
+        "support_condition,support_condition",
+        "nope",
+        "SUPPORT_CONDITION",
+        HUGE[:3000],
+        " , ",
+    ):
+        out.append(
+            (
+                f"--effects {e[:20]!r}",
+                ["diagnose", C, "--design", D, "--effects", e, "--json", "-"],
+                tx,
+            )
+        )
     for n in ("-1", "0", "1000000000", "x", "1e9"):
-        out.append((f"--max-effects {n}", ["diagnose", C, "--design", D, "--max-effects", n, "--json", "-"], tx))
+        out.append(
+            (
+                f"--max-effects {n}",
+                ["diagnose", C, "--design", D, "--max-effects", n, "--json", "-"],
+                tx,
+            )
+        )
     for w in ("-1", "x", "1e9", "1000"):
-        out.append((f"--workers {w}", ["study", S, "--out", "out", "--workers", w, "--quiet"], sfiles))
-    out.append(("--resume on a fresh dir", ["study", S, "--out", "out", "--workers", "0", "--resume", "--quiet"],
-                sfiles))
-    out.append(("--out is a file", ["study", S, "--out", D, "--workers", "0", "--quiet"], {**sfiles, **dfiles}))
-    out.append(("--scheduler and --workers", ["study", S, "--scheduler", "tcp://127.0.0.1:1", "--workers", "1"],
-                sfiles))
-    out.append(("--scheduler garbage", ["study", S, "--out", "o", "--scheduler", "nonsense:://", "--quiet"], sfiles))
+        out.append(
+            (f"--workers {w}", ["study", S, "--out", "out", "--workers", w, "--quiet"], sfiles)
+        )
+    out.append(
+        (
+            "--resume on a fresh dir",
+            ["study", S, "--out", "out", "--workers", "0", "--resume", "--quiet"],
+            sfiles,
+        )
+    )
+    out.append(
+        (
+            "--out is a file",
+            ["study", S, "--out", D, "--workers", "0", "--quiet"],
+            {**sfiles, **dfiles},
+        )
+    )
+    out.append(
+        (
+            "--scheduler and --workers",
+            ["study", S, "--scheduler", "tcp://127.0.0.1:1", "--workers", "1"],
+            sfiles,
+        )
+    )
+    out.append(
+        (
+            "--scheduler garbage",
+            ["study", S, "--out", "o", "--scheduler", "nonsense:://", "--quiet"],
+            sfiles,
+        )
+    )
     for v in ("NOPE", "", "HIWIN"):
         out.append((f"parts --vendor {v!r}", ["parts", "--vendor", v, "--json", "-"], {}))
     for s in ("NOPE", "", "user", "vendor"):
         out.append((f"parts --status {s!r}", ["parts", "nuts", "--status", s, "--json", "-"], {}))
     out.append(("parts --catalogs missing dir", ["parts", "--catalogs", "nodir"], {}))
     out.append(("parts --catalogs a file", ["parts", "--catalogs", D], dfiles))
-    out.append(("parts --catalogs empty dir", ["parts", "--catalogs", "emptydir"], {"emptydir/.keep": b""}))
+    out.append(
+        ("parts --catalogs empty dir", ["parts", "--catalogs", "emptydir"], {"emptydir/.keep": b""})
+    )
     out.append(("parts --catalogs shipped dir again", ["parts", "--catalogs", str(CATALOGS)], {}))
     out.append(("parts unknown kind", ["parts", "widgets"], {}))
     # files that are not what the command expects
@@ -914,7 +1293,9 @@ def _flag_cases():
     out.append(("problem is a design", ["solve", D, "--json", "-"], dfiles))
     out.append(("design is a problem", ["evaluate", P, "--json", "-"], pfiles))
     out.append(("design is a study", ["evaluate", S], sfiles))
-    out.append(("study is a problem", ["study", P, "--out", "o", "--workers", "0", "--quiet"], pfiles))
+    out.append(
+        ("study is a problem", ["study", P, "--out", "o", "--workers", "0", "--quiet"], pfiles)
+    )
     out.append(("calibration is a design", ["evaluate", D, "--calibration", D], dfiles))
     out.append(("calibration missing", ["evaluate", D, "--calibration", "none.yaml"], dfiles))
     out.append(("data is a YAML", ["diagnose", D, "--design", D], tx))
@@ -922,19 +1303,31 @@ def _flag_cases():
     out.append(("diagnose same data twice", ["diagnose", C, C, "--design", D, "--json", "-"], tx))
     out.append(("diagnose data is a directory", ["diagnose", ".", "--design", D], tx))
     out.append(("diagnose --report is a file", ["diagnose", C, "--design", D, "--report", C], tx))
-    out.append(("diagnose --save-calibration is a dir", ["diagnose", C, "--design", D, "--save-calibration", "."],
-                tx))
+    out.append(
+        (
+            "diagnose --save-calibration is a dir",
+            ["diagnose", C, "--design", D, "--save-calibration", "."],
+            tx,
+        )
+    )
     out.append(("compare nothing", ["compare"], {}))
     out.append(("compare the same design twice", ["compare", D, D, "--json", "-"], dfiles))
     out.append(("compare a study", ["compare", S], sfiles))
     out.append(("compare with --csv a directory", ["compare", D, "--csv", "."], dfiles))
     out.append(("--json is a directory", ["evaluate", D, "--json", "."], dfiles))
-    out.append(("--json into a missing directory", ["evaluate", D, "--json", "no/such/dir/x.json"], dfiles))
+    out.append(
+        ("--json into a missing directory", ["evaluate", D, "--json", "no/such/dir/x.json"], dfiles)
+    )
     out.append(("--plot without extension", ["evaluate", D, "--plot", "plot"], dfiles))
     out.append(("--plot .pdf", ["evaluate", D, "--plot", "p.pdf"], dfiles))
     out.append(("--plot .xyz", ["evaluate", D, "--plot", "p.xyz"], dfiles))
-    out.append(("--frf without a motor", ["evaluate", "t.yaml", "--frf", "f.png", "--json", "-"],
-                {"t.yaml": shipped("teaching_design.yaml")}))
+    out.append(
+        (
+            "--frf without a motor",
+            ["evaluate", "t.yaml", "--frf", "f.png", "--json", "-"],
+            {"t.yaml": shipped("teaching_design.yaml")},
+        )
+    )
     out.append(("no arguments", [], {}))
     out.append(("unknown command", ["frobnicate"], {}))
     out.append(("unknown flag", ["evaluate", D, "--frobnicate"], dfiles))
@@ -956,8 +1349,13 @@ def flags_case(ch) -> Case:
 
 def fifo_case() -> Case:
     """A named pipe nobody writes to, given as a design: reading it blocks (a possible hang)."""
-    return Case("flags", "design is a named pipe (FIFO) nobody writes", ["evaluate", "fifo.yaml"], {},
-                special="fifo:fifo.yaml")
+    return Case(
+        "flags",
+        "design is a named pipe (FIFO) nobody writes",
+        ["evaluate", "fifo.yaml"],
+        {},
+        special="fifo:fifo.yaml",
+    )
 
 
 def _zero_column(data: bytes, column: str) -> bytes:
@@ -993,94 +1391,252 @@ def _hardening_cases() -> list:
     tx = {C: shipped(DATA_CSV), "t.yaml": shipped(DATA_DESIGN)}
     est, val = shipped("data/table_x_run_est.csv"), shipped("data/table_x_run_val.csv")
     runs = {"est.csv": est, "val.csv": val, "t.yaml": shipped(DATA_DESIGN)}
-    st = _tiny_sweep(yaml.safe_load(shipped("studies/teaching_random.yaml")), "teaching_random.yaml", True)
+    st = _tiny_sweep(
+        yaml.safe_load(shipped("studies/teaching_random.yaml")), "teaching_random.yaml", True
+    )
     sfiles = {S: dump_yaml(st)}
     quiet_study = ["--workers", "0", "--quiet"]
     teach = shipped("teaching_problem.yaml")
     vmc = shipped("vmc_x_design.yaml")
-    fast_move = vmc.replace(b"  table_length: 600 mm\n", b"  table_length: 600 mm\n  duty_cycle:\n"
-                            b"    - {move: 300 mm, speed: 60 m/min}\n    - {move: -300 mm}\n")
-    hard_move = vmc.replace(b"  table_length: 600 mm\n", b"  table_length: 600 mm\n  duty_cycle:\n"
-                            b"    - {move: 300 mm, acceleration: 8 m/s^2}\n    - {move: -300 mm}\n")
-    no_acc = b"\n".join(ln for ln in teach.splitlines() if not ln.strip().startswith(b"acceleration:")) + b"\n"
+    fast_move = vmc.replace(
+        b"  table_length: 600 mm\n",
+        b"  table_length: 600 mm\n  duty_cycle:\n"
+        b"    - {move: 300 mm, speed: 60 m/min}\n    - {move: -300 mm}\n",
+    )
+    hard_move = vmc.replace(
+        b"  table_length: 600 mm\n",
+        b"  table_length: 600 mm\n  duty_cycle:\n"
+        b"    - {move: 300 mm, acceleration: 8 m/s^2}\n    - {move: -300 mm}\n",
+    )
+    no_acc = (
+        b"\n".join(ln for ln in teach.splitlines() if not ln.strip().startswith(b"acceleration:"))
+        + b"\n"
+    )
     rows = shipped(DATA_CSV).decode().splitlines()
     rows[5] = rows[5].replace(",", ',"', 1)
     stray = ("\n".join(rows) + "\n").encode()
     head, body = rows[0], [r for r in rows[1:] if r and not r.startswith("#")]
     many = ("\n".join([head] + body * (50_001 // len(body) + 1)) + "\n").encode()
-    together = (b"name: together\nbase: p.yaml\ncombine: product\nsweep:\n"
-                b"  continuous.nut_preload.min: [100 N, 5 kN]\n  continuous.nut_preload.max: [1 kN, 10 kN]\n")
+    together = (
+        b"name: together\nbase: p.yaml\ncombine: product\nsweep:\n"
+        b"  continuous.nut_preload.min: [100 N, 5 kN]\n  continuous.nut_preload.max: [1 kN, 10 kN]\n"
+    )
     cases = [
         # 1. outputs: FIFOs (a reader drains them), '-', /dev/stdout
-        Case("hardening", "parts --csv to a FIFO", ["parts", "screws", "--csv", "o.fifo"], {}, special="drain:o.fifo"),
-        Case("hardening", "parts --json to a FIFO", ["parts", "--json", "o.fifo"], {}, special="drain:o.fifo"),
-        Case("hardening", "schema --out to a FIFO", ["schema", "design", "--out", "o.fifo"], {},
-             special="drain:o.fifo"),
-        Case("hardening", "evaluate --json to a FIFO", ["evaluate", D, "--json", "o.fifo"], dfiles,
-             special="drain:o.fifo"),
-        Case("hardening", "compare --csv to a FIFO", ["compare", D, D, "--csv", "o.fifo"], dfiles,
-             special="drain:o.fifo"),
+        Case(
+            "hardening",
+            "parts --csv to a FIFO",
+            ["parts", "screws", "--csv", "o.fifo"],
+            {},
+            special="drain:o.fifo",
+        ),
+        Case(
+            "hardening",
+            "parts --json to a FIFO",
+            ["parts", "--json", "o.fifo"],
+            {},
+            special="drain:o.fifo",
+        ),
+        Case(
+            "hardening",
+            "schema --out to a FIFO",
+            ["schema", "design", "--out", "o.fifo"],
+            {},
+            special="drain:o.fifo",
+        ),
+        Case(
+            "hardening",
+            "evaluate --json to a FIFO",
+            ["evaluate", D, "--json", "o.fifo"],
+            dfiles,
+            special="drain:o.fifo",
+        ),
+        Case(
+            "hardening",
+            "compare --csv to a FIFO",
+            ["compare", D, D, "--csv", "o.fifo"],
+            dfiles,
+            special="drain:o.fifo",
+        ),
         Case("hardening", "parts --csv -", ["parts", "screws", "--csv", "-"], {}),
-        Case("hardening", "parts --json /dev/stdout", ["parts", "nuts", "--json", "/dev/stdout"], {}),
+        Case(
+            "hardening", "parts --json /dev/stdout", ["parts", "nuts", "--json", "/dev/stdout"], {}
+        ),
         Case("hardening", "schema --out -", ["schema", "problem", "--out", "-"], {}),
-        Case("hardening", "compare --csv - --json -", ["compare", D, D, "--csv", "-", "--json", "-"], dfiles),
+        Case(
+            "hardening",
+            "compare --csv - --json -",
+            ["compare", D, D, "--csv", "-", "--json", "-"],
+            dfiles,
+        ),
         Case("hardening", "evaluate --plot -", ["evaluate", D, "--plot", "-"], dfiles),
-        Case("hardening", "solve --save-design -", ["solve", P, "--no-sensitivity", "--save-design", "-"], pfiles),
+        Case(
+            "hardening",
+            "solve --save-design -",
+            ["solve", P, "--no-sensitivity", "--save-design", "-"],
+            pfiles,
+        ),
         Case("hardening", "study --out -", ["study", S, "--out", "-", *quiet_study], sfiles),
-        Case("hardening", "solve --save-design ''", ["solve", P, "--no-sensitivity", "--save-design", ""], pfiles),
+        Case(
+            "hardening",
+            "solve --save-design ''",
+            ["solve", P, "--no-sensitivity", "--save-design", ""],
+            pfiles,
+        ),
         Case("hardening", "schema --out ''", ["schema", "design", "--out", ""], {}),
         # 2. inputs that are not regular files, or too large
-        Case("hardening", "diagnose data is a FIFO nobody writes", ["diagnose", "f.csv", "--design", "t.yaml"], tx,
-             special="fifo:f.csv"),
-        Case("hardening", "diagnose validation run is a FIFO", ["diagnose", "est.csv", "v.csv", "--design", "t.yaml"],
-             runs, special="fifo:v.csv"),
-        Case("hardening", "diagnose /dev/zero", ["diagnose", "/dev/zero", "--design", "t.yaml"], tx),
-        Case("hardening", "catalog CSV is a FIFO", ["parts", "--catalogs", "cat"], {}, special="fifo:cat/screws.csv"),
-        Case("hardening", "calibration is a FIFO", ["evaluate", D, "--calibration", "c.yaml"], dfiles,
-             special="fifo:c.yaml"),
-        Case("hardening", "study base is a FIFO", ["study", S, "--out", "out", *quiet_study],
-             {S: b"name: f\nbase: b.yaml\nsweep:\n  axis.stroke: [300 mm]\n"}, special="fifo:b.yaml"),
-        Case("hardening", "diagnose CSV with too many rows", ["diagnose", "m.csv", "--design", "t.yaml"],
-             {"m.csv": many, "t.yaml": shipped(DATA_DESIGN)}),
+        Case(
+            "hardening",
+            "diagnose data is a FIFO nobody writes",
+            ["diagnose", "f.csv", "--design", "t.yaml"],
+            tx,
+            special="fifo:f.csv",
+        ),
+        Case(
+            "hardening",
+            "diagnose validation run is a FIFO",
+            ["diagnose", "est.csv", "v.csv", "--design", "t.yaml"],
+            runs,
+            special="fifo:v.csv",
+        ),
+        Case(
+            "hardening", "diagnose /dev/zero", ["diagnose", "/dev/zero", "--design", "t.yaml"], tx
+        ),
+        Case(
+            "hardening",
+            "catalog CSV is a FIFO",
+            ["parts", "--catalogs", "cat"],
+            {},
+            special="fifo:cat/screws.csv",
+        ),
+        Case(
+            "hardening",
+            "calibration is a FIFO",
+            ["evaluate", D, "--calibration", "c.yaml"],
+            dfiles,
+            special="fifo:c.yaml",
+        ),
+        Case(
+            "hardening",
+            "study base is a FIFO",
+            ["study", S, "--out", "out", *quiet_study],
+            {S: b"name: f\nbase: b.yaml\nsweep:\n  axis.stroke: [300 mm]\n"},
+            special="fifo:b.yaml",
+        ),
+        Case(
+            "hardening",
+            "diagnose CSV with too many rows",
+            ["diagnose", "m.csv", "--design", "t.yaml"],
+            {"m.csv": many, "t.yaml": shipped(DATA_DESIGN)},
+        ),
         # 3. a time record with all-zero force
-        Case("hardening", "time record with zero force (estimation)",
-             ["diagnose", "z.csv", "val.csv", "--design", "t.yaml"], {**runs, "z.csv": _zero_column(est, "force")}),
-        Case("hardening", "time record with zero force (validation)",
-             ["diagnose", "est.csv", "z.csv", "--design", "t.yaml", "--json", "-"],
-             {**runs, "z.csv": _zero_column(val, "force")}),
-        Case("hardening", "time record with constant position",
-             ["diagnose", "z.csv", "--design", "t.yaml"], {**runs, "z.csv": _zero_column(est, "position")}),
+        Case(
+            "hardening",
+            "time record with zero force (estimation)",
+            ["diagnose", "z.csv", "val.csv", "--design", "t.yaml"],
+            {**runs, "z.csv": _zero_column(est, "force")},
+        ),
+        Case(
+            "hardening",
+            "time record with zero force (validation)",
+            ["diagnose", "est.csv", "z.csv", "--design", "t.yaml", "--json", "-"],
+            {**runs, "z.csv": _zero_column(val, "force")},
+        ),
+        Case(
+            "hardening",
+            "time record with constant position",
+            ["diagnose", "z.csv", "--design", "t.yaml"],
+            {**runs, "z.csv": _zero_column(est, "position")},
+        ),
         # 4. the motion commanded
-        Case("hardening", "duty-cycle move faster than max_speed", ["evaluate", D, "--json", "-"], {D: fast_move}),
-        Case("hardening", "duty-cycle move harder than axis.acceleration", ["evaluate", D, "--json", "-"],
-             {D: hard_move}),
-        Case("hardening", "drive search without acceleration", ["solve", P, "--no-sensitivity"], {P: no_acc}),
+        Case(
+            "hardening",
+            "duty-cycle move faster than max_speed",
+            ["evaluate", D, "--json", "-"],
+            {D: fast_move},
+        ),
+        Case(
+            "hardening",
+            "duty-cycle move harder than axis.acceleration",
+            ["evaluate", D, "--json", "-"],
+            {D: hard_move},
+        ),
+        Case(
+            "hardening",
+            "drive search without acceleration",
+            ["solve", P, "--no-sensitivity"],
+            {P: no_acc},
+        ),
         # 5. errors that were not one line
-        Case("hardening", "YAML value with a newline", ["evaluate", D],
-             {D: vmc.replace(b"  stroke: 800 mm", b'  stroke: "800\\nkg\\n"')}),
-        Case("hardening", "stray quote in a diagnose CSV", ["diagnose", "q.csv", "--design", "t.yaml"],
-             {"q.csv": stray, "t.yaml": shipped(DATA_DESIGN)}),
-        Case("hardening", "study --scheduler ''", ["study", S, "--out", "out", "--scheduler", ""], sfiles),
-        Case("hardening", "value that is a list of quantities", ["evaluate", D],
-             {D: vmc.replace(b"  stroke: 800 mm", b"  stroke: [300 mm, 400 mm]")}),
+        Case(
+            "hardening",
+            "YAML value with a newline",
+            ["evaluate", D],
+            {D: vmc.replace(b"  stroke: 800 mm", b'  stroke: "800\\nkg\\n"')},
+        ),
+        Case(
+            "hardening",
+            "stray quote in a diagnose CSV",
+            ["diagnose", "q.csv", "--design", "t.yaml"],
+            {"q.csv": stray, "t.yaml": shipped(DATA_DESIGN)},
+        ),
+        Case(
+            "hardening",
+            "study --scheduler ''",
+            ["study", S, "--out", "out", "--scheduler", ""],
+            sfiles,
+        ),
+        Case(
+            "hardening",
+            "value that is a list of quantities",
+            ["evaluate", D],
+            {D: vmc.replace(b"  stroke: 800 mm", b"  stroke: [300 mm, 400 mm]")},
+        ),
         # 6. studies
-        Case("hardening", "sweep invalid only together (product)", ["study", S, "--out", "out", *quiet_study],
-             {S: together, P: teach}),
-        Case("hardening", "study --report into a missing directory",
-             ["study", S, "--out", "out", *quiet_study, "--report", "no/dir/r.html"], sfiles),
+        Case(
+            "hardening",
+            "sweep invalid only together (product)",
+            ["study", S, "--out", "out", *quiet_study],
+            {S: together, P: teach},
+        ),
+        Case(
+            "hardening",
+            "study --report into a missing directory",
+            ["study", S, "--out", "out", *quiet_study, "--report", "no/dir/r.html"],
+            sfiles,
+        ),
         # 7. silent acceptances
-        Case("hardening", "require with an empty list", ["solve", P, "--no-sensitivity"],
-             {P: teach.replace(b"require: {coupling: [", b"require: {screw: [], coupling: [")}),
-        Case("hardening", "YAML tag on a mapping", ["evaluate", D], {D: vmc.replace(b"axis:\n", b"axis: !custom\n")}),
-        Case("hardening", "!!omap axis", ["evaluate", D],
-             {D: b"name: x\naxis: !!omap\n  - stroke: 800 mm\nparts: {}\n"}),
-        Case("hardening", "problem file name with a newline, --save-design",
-             ["solve", "p\nmotor: X\n.yaml", "--no-sensitivity", "--save-design", "best.yaml"],
-             {"p\nmotor: X\n.yaml": teach}),
+        Case(
+            "hardening",
+            "require with an empty list",
+            ["solve", P, "--no-sensitivity"],
+            {P: teach.replace(b"require: {coupling: [", b"require: {screw: [], coupling: [")},
+        ),
+        Case(
+            "hardening",
+            "YAML tag on a mapping",
+            ["evaluate", D],
+            {D: vmc.replace(b"axis:\n", b"axis: !custom\n")},
+        ),
+        Case(
+            "hardening",
+            "!!omap axis",
+            ["evaluate", D],
+            {D: b"name: x\naxis: !!omap\n  - stroke: 800 mm\nparts: {}\n"},
+        ),
+        Case(
+            "hardening",
+            "problem file name with a newline, --save-design",
+            ["solve", "p\nmotor: X\n.yaml", "--no-sensitivity", "--save-design", "best.yaml"],
+            {"p\nmotor: X\n.yaml": teach},
+        ),
         # 8. CSV cells that are formulas
-        Case("hardening", "user catalog id that is a formula, parts --csv",
-             ["parts", "couplings", "--catalogs", "cat", "--csv", "c.csv"],
-             {"cat/couplings.csv": _catalog_with("couplings", "=HYPERLINK(\"http://x\")")}),
+        Case(
+            "hardening",
+            "user catalog id that is a formula, parts --csv",
+            ["parts", "couplings", "--catalogs", "cat", "--csv", "c.csv"],
+            {"cat/couplings.csv": _catalog_with("couplings", '=HYPERLINK("http://x")')},
+        ),
     ]
     return cases
 
@@ -1093,9 +1649,17 @@ def hardening_case(ch) -> Case:
     return Case(c.kind, c.mutation, list(c.argv), dict(c.files), c.dirs, c.special)
 
 
-MAKERS = {"design": design_case, "problem": problem_case, "study": study_case, "calibration": calibration_case,
-          "data": data_case, "catalog": catalog_case, "flags": flags_case, "compare": compare_case,
-          "hardening": hardening_case}
+MAKERS = {
+    "design": design_case,
+    "problem": problem_case,
+    "study": study_case,
+    "calibration": calibration_case,
+    "data": data_case,
+    "catalog": catalog_case,
+    "flags": flags_case,
+    "compare": compare_case,
+    "hardening": hardening_case,
+}
 
 
 def make_case(ch, kind: str | None = None, fast: bool = True) -> Case:
@@ -1103,22 +1667,45 @@ def make_case(ch, kind: str | None = None, fast: bool = True) -> Case:
     if kind == "problem" and not fast:
         return problem_case(ch, ALL_PROBLEMS)
     if kind == "study":
-        return study_case(ch, STUDIES if not fast else ("teaching_random.yaml", "vmc_stroke_mounting.yaml",
-                                                        "gantry_weights.yaml"), fast=fast)
+        return study_case(
+            ch,
+            STUDIES
+            if not fast
+            else ("teaching_random.yaml", "vmc_stroke_mounting.yaml", "gantry_weights.yaml"),
+            fast=fast,
+        )
     return MAKERS[kind](ch)
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # the contract
 
-OUTCOMES = ("ok", "negative", "clean error", "multi-line error", "traceback", "hang", "bad output", "crash",
-            "silent negative", "warning")
+OUTCOMES = (
+    "ok",
+    "negative",
+    "clean error",
+    "multi-line error",
+    "traceback",
+    "hang",
+    "bad output",
+    "crash",
+    "silent negative",
+    "warning",
+)
 BAD = ("multi-line error", "traceback", "hang", "bad output", "crash", "silent negative", "warning")
-# leaf keys of a --json output that must not be negative (the path decides), and the signed ones (the last key)
-_NON_NEGATIVE = re.compile(r"(mass|stiffness|N_per_um|length|stroke|frequency|_Hz|^cost$|price|position|inertia|"
-                           r"preload|rigidity|life|noise_floor|rms|drag_torque|friction)", re.I)
-_SIGNED = re.compile(r"(dBIC|gain|delta|change|residual|displacement|margin|value|offset|thermal|objective|eta|"
-                     r"phase|real|imag|direction|acceleration|axial_load)", re.I)
+# leaf keys of a --json output that must not be negative (the path decides), and the signed ones
+# (the last key)
+_NON_NEGATIVE = re.compile(
+    r"(mass|stiffness|N_per_um|length|stroke|frequency|_Hz|^cost$|price|position|inertia|"
+    r"preload|rigidity|life|noise_floor|rms|drag_torque|friction)",
+    re.I,
+)
+_SIGNED = re.compile(
+    r"(dBIC|gain|delta|change|residual|displacement|margin|value|offset|thermal|objective|eta|"
+    r"phase|real|imag|direction|acceleration|axial_load)",
+    re.I,
+)
 
 
 def _bad_const(name):
@@ -1162,15 +1749,20 @@ class Outcome:
     drained: dict = field(default_factory=dict)  # FIFO output path -> what its reader received
 
 
-# a value far outside machine-tool practice (axisopt.design.plausible): used and said in one line naming the file,
+# a value far outside machine-tool practice (axisopt.design.plausible): used and said in one line
+# naming the file,
 # line and key: part of the contract, not a stray warning
-PLAUSIBILITY = re.compile(r"^warning: .*key '[^']+': .* is far (below|above) machine-tool practice \(.*\): check "
-                          r"the value and its unit$")
+PLAUSIBILITY = re.compile(
+    r"^warning: .*key '[^']+': .* is far (below|above) machine-tool practice \(.*\): check "
+    r"the value and its unit$"
+)
 
 
 def classify(case: Case, out: Outcome) -> tuple[str, str]:
     """(outcome class, detail) of one run against the CLI contract (the plausibility warnings set aside)."""
-    err = "".join(ln for ln in out.stderr.splitlines(keepends=True) if not PLAUSIBILITY.match(ln.rstrip("\n")))
+    err = "".join(
+        ln for ln in out.stderr.splitlines(keepends=True) if not PLAUSIBILITY.match(ln.rstrip("\n"))
+    )
     lines = [ln for ln in err.splitlines() if ln.strip()]
     if out.rc is None:
         return "hang", f"no exit within {out.seconds:.0f} s"
@@ -1180,9 +1772,15 @@ def classify(case: Case, out: Outcome) -> tuple[str, str]:
     if out.rc not in (0, 1, 2, 3):
         return "crash", f"exit code {out.rc}; " + " | ".join(lines[-3:])[:300]
     if out.rc == 2:
-        if len(lines) == 1 and lines[0].startswith("error: ") and len(err.strip().splitlines()) == 1:
+        if (
+            len(lines) == 1
+            and lines[0].startswith("error: ")
+            and len(err.strip().splitlines()) == 1
+        ):
             return "clean error", lines[0][:300]
-        return "multi-line error", f"{len(err.splitlines())} stderr lines: " + " | ".join(lines[:4])[:300]
+        return "multi-line error", f"{len(err.splitlines())} stderr lines: " + " | ".join(
+            lines[:4]
+        )[:300]
     if out.rc in (1, 3):  # 1 proven negative, 3 unproven (Bonmin, a time limit): both must explain
         if not (out.stdout.strip() or err.strip()):
             return "silent negative", f"exit {out.rc} with no output"
@@ -1245,7 +1843,11 @@ def collect_json_files(case: Case, workdir: Path) -> dict:
     out = {}
     if "--json" in case.argv:
         i = case.argv.index("--json")
-        if i + 1 < len(case.argv) and case.argv[i + 1] != "-" and not case.argv[i + 1].startswith("/dev/"):
+        if (
+            i + 1 < len(case.argv)
+            and case.argv[i + 1] != "-"
+            and not case.argv[i + 1].startswith("/dev/")
+        ):
             p = workdir / case.argv[i + 1]
             if p.is_file():
                 out[case.argv[i + 1]] = p.read_text(errors="replace")
@@ -1256,11 +1858,13 @@ def collect_json_files(case: Case, workdir: Path) -> dict:
     return out
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # runners
 
 
-MEMORY_LIMIT = 6 * 2**30  # address space per case: a runaway allocation is a MemoryError, not a dead machine
+# address space per case: a runaway allocation is a MemoryError, not a dead machine
+MEMORY_LIMIT = 6 * 2**30
 
 
 def _limit_memory(extra: int = 0) -> None:
@@ -1279,7 +1883,9 @@ def _vm_size() -> int:
         return 0
 
 
-def run_subprocess(case: Case, workdir: Path, timeout: float = 60.0, python=sys.executable) -> Outcome:
+def run_subprocess(
+    case: Case, workdir: Path, timeout: float = 60.0, python=sys.executable
+) -> Outcome:
     """``python -m axisopt ...`` in ``workdir`` with a time limit (the whole process group is killed) and an
     address-space limit of ``MEMORY_LIMIT``."""
     case.materialize(workdir)
@@ -1287,8 +1893,16 @@ def run_subprocess(case: Case, workdir: Path, timeout: float = 60.0, python=sys.
     t0 = time.perf_counter()
     argv = [python, "-m", "axisopt", *case.argv]
     try:
-        p = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             stdin=subprocess.DEVNULL, env=env, start_new_session=True, preexec_fn=_limit_memory)
+        p = subprocess.Popen(
+            argv,
+            cwd=workdir,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            stdin=subprocess.DEVNULL,
+            env=env,
+            start_new_session=True,
+            preexec_fn=_limit_memory,
+        )
     except (ValueError, OSError) as exc:  # e.g. a NUL in an argument: the OS cannot pass it
         return Outcome(2, "", f"error: cannot start: {exc}", 0.0)
     try:
@@ -1310,8 +1924,12 @@ def run_subprocess(case: Case, workdir: Path, timeout: float = 60.0, python=sys.
     return out
 
 
-_DEFAULT_WARNINGS = (("ignore", DeprecationWarning), ("ignore", PendingDeprecationWarning),
-                     ("ignore", ImportWarning), ("ignore", ResourceWarning))
+_DEFAULT_WARNINGS = (
+    ("ignore", DeprecationWarning),
+    ("ignore", PendingDeprecationWarning),
+    ("ignore", ImportWarning),
+    ("ignore", ResourceWarning),
+)
 
 
 def _child(argv, out_path, err_path):  # pragma: no cover - runs in the forked child

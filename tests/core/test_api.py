@@ -17,17 +17,20 @@ PROBLEMS = ROOT / "problems"
 
 def _python(code: str) -> str:
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True,
-                         timeout=300)
+    out = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True, timeout=300
+    )
     assert out.returncode == 0, out.stderr
     return out.stdout
 
 
 def test_import_axisopt_loads_no_heavy_module():
-    out = _python("import sys, axisopt\n"
-                  "print(sorted(m for m in ('pandas', 'casadi', 'numpy', 'matplotlib', 'axisopt.api') "
-                  "if m in sys.modules))\n"
-                  "print('evaluate' in dir(axisopt), callable(axisopt.load_design))")
+    out = _python(
+        "import sys, axisopt\n"
+        "print(sorted(m for m in ('pandas', 'casadi', 'numpy', 'matplotlib', 'axisopt.api') "
+        "if m in sys.modules))\n"
+        "print('evaluate' in dir(axisopt), callable(axisopt.load_design))"
+    )
     assert out.splitlines() == ["[]", "True True"]
 
 
@@ -66,16 +69,29 @@ def test_notebook_session_in_a_fresh_interpreter():
     assert d["ev_repr"].startswith("Evaluation('teaching axis 25x5', fixed-free")
     assert f"min stiffness {d['summary_stiffness']:.3g} N/um" in d["ev_repr"]
     assert " Hz" in d["ev_repr"] and " EUR" in d["ev_repr"] and "max_speed=" not in d["ev_repr"]
-    assert "FAIL nut_life" in d["ev_repr"]  # the shipped teaching design fails its nut life on purpose
+    # the shipped teaching design fails its nut life on purpose
+    assert "FAIL nut_life" in d["ev_repr"]
     assert d["res_repr"].startswith("SolveResult(optimal, 'teaching'")
     assert f"{d['best_objective']:.3g} N/um" in d["res_repr"] and "proven yes" in d["res_repr"]
     # profile over the stroke, units in the column names
-    assert d["profile_columns"][:4] == ["position [mm]", "stiffness [N/um]", "screw_stiffness [N/um]",
-                                        "frequency [Hz]"]
+    assert d["profile_columns"][:4] == [
+        "position [mm]",
+        "stiffness [N/um]",
+        "screw_stiffness [N/um]",
+        "frequency [Hz]",
+    ]
     assert d["stiffness_min"] == pytest.approx(d["summary_stiffness"])
     assert 20 < d["stiffness_min"] < 500  # N/um, not N/m
     # checks with available / needed / unit / margin
-    assert d["checks_columns"] == ["check", "label", "available", "needed", "unit", "margin", "pass"]
+    assert d["checks_columns"] == [
+        "check",
+        "label",
+        "available",
+        "needed",
+        "unit",
+        "margin",
+        "pass",
+    ]
     life = next(r for r in d["checks"] if r["check"] == "nut_life")
     assert life["unit"] == "h" and life["pass"] is False
     assert life["margin"] == pytest.approx(life["available"] / life["needed"], rel=1e-6)
@@ -83,11 +99,21 @@ def test_notebook_session_in_a_fresh_interpreter():
     assert speed["unit"] == "rpm" and speed["available"] > speed["needed"] > 100
     # best design and runners-up
     assert d["n_designs"] == 5
-    assert {"objective [N/um]", "min_stiffness [N/um]", "min_frequency [Hz]", "cost [EUR]", "nut_preload [N]",
-            "drag_torque [N.m]", "life [h]", "motor", "coupling"} <= set(d["design_columns"])
+    assert {
+        "objective [N/um]",
+        "min_stiffness [N/um]",
+        "min_frequency [Hz]",
+        "cost [EUR]",
+        "nut_preload [N]",
+        "drag_torque [N.m]",
+        "life [h]",
+        "motor",
+        "coupling",
+    } <= set(d["design_columns"])
     best = d["best"]
     assert best["rank"] == 1 and best["objective [N/um]"] == pytest.approx(d["best_objective"])
-    assert best["cost [EUR]"] <= 3500 and best["drag_torque [N.m]"] <= 1.2 + 1e-9  # the problem's limits
+    # the problem's limits
+    assert best["cost [EUR]"] <= 3500 and best["drag_torque [N.m]"] <= 1.2 + 1e-9
     assert "<table>" in d["ev_html"] and "N/um" in d["ev_html"] and "nut L10 life" in d["ev_html"]
     assert "<table>" in d["res_html"] and best["screw"] in d["res_html"]
 
@@ -97,7 +123,9 @@ def test_checks_keep_their_margins_for_existing_callers():
 
     ev = axisopt.evaluate(PROBLEMS / "teaching_design.yaml")
     margins = ev.checks()
-    assert set(margins) >= {"critical_speed", "nut_life"} and all(isinstance(v, float) for v in margins.values())
+    assert set(margins) >= {"critical_speed", "nut_life"} and all(
+        isinstance(v, float) for v in margins.values()
+    )
     table = ev.check_table().set_index("check")
     assert table.loc["nut_life", "margin"] == pytest.approx(margins["nut_life"])
 
@@ -114,7 +142,8 @@ def test_pareto_front_is_a_sequence_with_a_frame_and_figure(tmp_path, monkeypatc
     assert df["min_stiffness [N/um]"].tolist() == [p.min_stiffness for p in front]
     assert repr(front).startswith(f"ParetoFront({len(front)} non-dominated of")
     assert "[N/um]" in repr(front) and "[EUR]" in repr(front)
-    monkeypatch.chdir(tmp_path)  # restored after the test: others read paths relative to the repository
+    # restored after the test: others read paths relative to the repository
+    monkeypatch.chdir(tmp_path)
     fig = axisopt.plot_pareto(res)
     assert fig.axes and list(tmp_path.iterdir()) == []  # no file without a path
     axisopt.plot_pareto(front, tmp_path / "front.png")
@@ -137,7 +166,9 @@ def test_infeasible_result_frame_lists_the_misses():
 def test_compare_designs_side_by_side():
     import axisopt
 
-    cmp = axisopt.compare(PROBLEMS / "teaching_design.yaml", axisopt.load_design(PROBLEMS / "vmc_x_design.yaml"))
+    cmp = axisopt.compare(
+        PROBLEMS / "teaching_design.yaml", axisopt.load_design(PROBLEMS / "vmc_x_design.yaml")
+    )
     assert len(cmp) == 2
     df = cmp.to_frame()
     assert df["label"].tolist() == ["teaching axis 25x5", "VMC X axis, 40x20 double nut"]
@@ -150,12 +181,16 @@ def test_compare_designs_side_by_side():
 def test_diagnose_returns_a_diagnosis_with_its_parameters():
     import axisopt
 
-    diag = axisopt.diagnose(PROBLEMS / "data" / "table_x_stiffness.csv", PROBLEMS / "data" / "table_x.yaml")
+    diag = axisopt.diagnose(
+        PROBLEMS / "data" / "table_x_stiffness.csv", PROBLEMS / "data" / "table_x.yaml"
+    )
     assert diag.verdict == "support_condition"
     df = diag.to_frame()
     row = df.set_index("parameter").loc["far_end_stiffness"]
     assert row["effect"] == "support_condition" and row["unit"] == "N/um" and row["value"] > 0
-    assert repr(diag).startswith("Diagnosis('table-x'; verdict support_condition; held-out error down ")
+    assert repr(diag).startswith(
+        "Diagnosis('table-x'; verdict support_condition; held-out error down "
+    )
 
 
 STUDY = """name: api-study
@@ -200,7 +235,8 @@ def test_study_rerun_speaks_python(tmp_path):
     msg = str(exc.value)
     assert "resume=True" in msg and "overwrite=True" in msg and "--resume" not in msg
     assert repr(axisopt.study(spec, tmp_path / "out", resume=True)).startswith(
-        "StudyResult('api-study'; cases 2; solved now 0; kept 2")
+        "StudyResult('api-study'; cases 2; solved now 0; kept 2"
+    )
     again = axisopt.study(spec, tmp_path / "out", overwrite=True)
     assert again.summary.solved == 2 and len(again.to_frame()) == 2
     with pytest.raises(InputError, match="give one of them"):
@@ -214,16 +250,30 @@ def test_best_design_and_binding_limits_have_units_and_frames():
     res = axisopt.solve(PROBLEMS / "teaching_problem.yaml")
     b = res.best
     assert repr(b).startswith(f"Candidate(rank 1, {b.mounting} {b.screw} / ")
-    assert f"min stiffness {b.min_stiffness:.3g} N/um" in repr(b) and " EUR" in repr(b) and "\n" not in repr(b)
+    assert (
+        f"min stiffness {b.min_stiffness:.3g} N/um" in repr(b)
+        and " EUR" in repr(b)
+        and "\n" not in repr(b)
+    )
     row = b.to_frame()
     assert row.shape[0] == 1 and row["min_stiffness [N/um]"].iloc[0] == b.min_stiffness
     assert "cost [EUR]" in b._repr_html_()
-    assert len(res.binding) >= 1 and repr(res.binding).startswith(f"Bindings({len(res.binding)} limits")
+    assert len(res.binding) >= 1 and repr(res.binding).startswith(
+        f"Bindings({len(res.binding)} limits"
+    )
     df = res.binding.to_frame()
-    assert list(df.columns) == ["limit", "unit", "value", "at optimum", "relaxed to", "objective gain [N/um]",
-                                "binding"]
-    assert df["limit"].tolist() == [x.limit for x in res.binding] and df["unit"].tolist() == [x.unit for x in
-                                                                                                res.binding]
+    assert list(df.columns) == [
+        "limit",
+        "unit",
+        "value",
+        "at optimum",
+        "relaxed to",
+        "objective gain [N/um]",
+        "binding",
+    ]
+    assert df["limit"].tolist() == [x.limit for x in res.binding] and df["unit"].tolist() == [
+        x.unit for x in res.binding
+    ]
     first = res.binding[0]
     assert repr(first).startswith(f"Binding({first.limit} ") and (first.unit in repr(first))
     assert f"value [{first.unit}]" in first.to_frame().columns

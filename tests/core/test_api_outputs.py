@@ -36,7 +36,8 @@ def test_study_refuses_an_out_that_would_replace_its_study_file(tmp_path):
         axisopt.study(spec, tmp_path)
     assert str(exc.value).splitlines() == [
         f"{tmp_path}/report.md: out: would overwrite the input {spec} with the study's report.md; give "
-        "another out"]
+        "another out"
+    ]
     _unchanged(spec, STUDY)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report.md"]  # nothing written
 
@@ -49,9 +50,12 @@ def test_study_refuses_an_out_whose_case_folder_holds_its_base_problem(tmp_path)
     base_text = STUDY.split("base:\n", 1)[1].split("sweep:")[0]
     base.write_text("\n".join(line[2:] for line in base_text.splitlines()) + "\n")
     spec = tmp_path / "s.yaml"
-    spec.write_text("name: guard-study\nbase: out/cases/base.yaml\nsweep:\n  axis.moving_mass: [80 kg]\n")
+    spec.write_text(
+        "name: guard-study\nbase: out/cases/base.yaml\nsweep:\n  axis.moving_mass: [80 kg]\n"
+    )
     with pytest.raises(InputError, match="the study's cases/ folder holds the input"):
-        axisopt.study(spec, tmp_path / "out", overwrite=True)  # overwrite would delete the case folder's files
+        # overwrite would delete the case folder's files
+        axisopt.study(spec, tmp_path / "out", overwrite=True)
     assert base.exists()
 
 
@@ -67,10 +71,14 @@ def test_calibration_writers_refuse_their_data_and_design_files(tmp_path, kind):
     design = load_design(PROBLEMS / "data" / "table_x.yaml")
     save = save_calibration if kind == "table" else save_time_calibration
     # the check comes before the diagnosis is read: no diagnosis is needed to be refused
-    with pytest.raises(InputError, match=r"would overwrite the input .*run1.csv with the calibration"):
+    with pytest.raises(
+        InputError, match=r"would overwrite the input .*run1.csv with the calibration"
+    ):
         save(None, data, design, [str(data)])
     _unchanged(data, before)
-    with pytest.raises(InputError, match=r"would overwrite the input .*table_x.yaml with the calibration"):
+    with pytest.raises(
+        InputError, match=r"would overwrite the input .*table_x.yaml with the calibration"
+    ):
         save(None, design.source, design, [str(data)])
     with pytest.raises(InputError, match="does not exist"):
         save(None, tmp_path / "nodir" / "cal.yaml", design, [str(data)])

@@ -13,11 +13,21 @@ def test_design_and_problem_reprs_are_short_and_in_engineering_units():
     import axisopt
 
     d = repr(axisopt.load_design(PROBLEMS / "teaching_design.yaml"))
-    assert d.startswith("Design('teaching axis 25x5'; fixed-free, horizontal; stroke 300 mm; moving mass 60 kg; "
-                        "max speed 10 m/min") and "nut HIWIN-R25-05K4-FDC" in d and len(d) < 400
+    assert (
+        d.startswith(
+            "Design('teaching axis 25x5'; fixed-free, horizontal; stroke 300 mm; moving mass 60 kg; "
+            "max speed 10 m/min"
+        )
+        and "nut HIWIN-R25-05K4-FDC" in d
+        and len(d) < 400
+    )
     p = repr(axisopt.load_problem(PROBLEMS / "vmc_x_problem.yaml"))
-    assert p.startswith("Problem('vmc-x'; objective maximise minimum first natural frequency; limits ")
-    assert "max_cost 7,000 EUR" in p and "min_stiffness 140 N/um" in p and "critical_speed 1.25" in p
+    assert p.startswith(
+        "Problem('vmc-x'; objective maximise minimum first natural frequency; limits "
+    )
+    assert (
+        "max_cost 7,000 EUR" in p and "min_stiffness 140 N/um" in p and "critical_speed 1.25" in p
+    )
 
 
 def test_tables_show_digits_enough_to_tell_designs_apart():

@@ -13,9 +13,13 @@ def test_plot_profiles_returns_a_figure_and_writes_only_with_a_path(tmp_path, mo
     import axisopt
 
     ev = axisopt.evaluate(axisopt.load_design(PROBLEMS / "teaching_design.yaml"))
-    monkeypatch.chdir(tmp_path)  # restored after the test: others read paths relative to the repository
+    # restored after the test: others read paths relative to the repository
+    monkeypatch.chdir(tmp_path)
     fig = axisopt.plot_profiles(ev)
-    assert [a.get_ylabel() for a in fig.axes[:2]] == ["axial stiffness [N/um]", "1st natural frequency [Hz]"]
+    assert [a.get_ylabel() for a in fig.axes[:2]] == [
+        "axial stiffness [N/um]",
+        "1st natural frequency [Hz]",
+    ]
     assert list(tmp_path.iterdir()) == []
     axisopt.plot_profiles([ev], tmp_path / "p.png")
     assert (tmp_path / "p.png").stat().st_size > 1000

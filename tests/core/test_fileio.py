@@ -55,15 +55,16 @@ class Drain:
         return self.data
 
 
-
-
-@pytest.mark.parametrize("argv", [
-    ["parts", "screws", "--csv", "@"],
-    ["parts", "--json", "@"],
-    ["schema", "design", "--out", "@"],
-    ["compare", str(DESIGN), str(DESIGN), "--csv", "@"],
-    ["evaluate", str(DESIGN), "--json", "@"],
-])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["parts", "screws", "--csv", "@"],
+        ["parts", "--json", "@"],
+        ["schema", "design", "--out", "@"],
+        ["compare", str(DESIGN), str(DESIGN), "--csv", "@"],
+        ["evaluate", str(DESIGN), "--json", "@"],
+    ],
+)
 def test_output_to_a_fifo_is_streamed_and_the_fifo_stays(tmp_path, capsys, argv):
     fifo = tmp_path / "out.fifo"
     os.mkfifo(fifo)
@@ -77,12 +78,15 @@ def test_output_to_a_fifo_is_streamed_and_the_fifo_stays(tmp_path, capsys, argv)
         json.loads(data)
 
 
-@pytest.mark.parametrize("argv, head", [
-    (["parts", "screws", "--csv", "-"], "id,vendor"),
-    (["schema", "design", "--out", "-"], "{"),
-    (["compare", str(DESIGN), str(DESIGN), "--csv", "-"], "label,"),
-    (["parts", "screws", "--json", "-"], "{"),
-])
+@pytest.mark.parametrize(
+    "argv, head",
+    [
+        (["parts", "screws", "--csv", "-"], "id,vendor"),
+        (["schema", "design", "--out", "-"], "{"),
+        (["compare", str(DESIGN), str(DESIGN), "--csv", "-"], "label,"),
+        (["parts", "screws", "--json", "-"], "{"),
+    ],
+)
 def test_dash_is_stdout_and_nothing_else_is_printed(tmp_path, capsys, monkeypatch, argv, head):
     monkeypatch.chdir(tmp_path)
     assert main(argv) == 0
@@ -95,7 +99,18 @@ def test_save_design_dash_prints_the_design_only(tmp_path, capsys, monkeypatch):
     import yaml
 
     monkeypatch.chdir(tmp_path)
-    assert main(["solve", str(PROBLEMS / "teaching_problem.yaml"), "--no-sensitivity", "--save-design", "-"]) == 0
+    assert (
+        main(
+            [
+                "solve",
+                str(PROBLEMS / "teaching_problem.yaml"),
+                "--no-sensitivity",
+                "--save-design",
+                "-",
+            ]
+        )
+        == 0
+    )
     out = capsys.readouterr().out
     assert out.startswith("# written by axisopt solve") and yaml.safe_load(out)["parts"]
     assert list(tmp_path.iterdir()) == []
@@ -115,9 +130,13 @@ def test_standard_output_path_is_written_in_place(tmp_path):
 
     target = tmp_path / "captured.txt"
     with open(target, "wb") as fh:
-        r = subprocess.run([sys.executable, "-m", "axisopt", "parts", "couplings", "--json", "/dev/stdout"],
-                           stdout=fh, stderr=subprocess.PIPE, env=dict(os.environ, PYTHONPATH=str(ROOT)),
-                           timeout=120)
+        r = subprocess.run(
+            [sys.executable, "-m", "axisopt", "parts", "couplings", "--json", "/dev/stdout"],
+            stdout=fh,
+            stderr=subprocess.PIPE,
+            env=dict(os.environ, PYTHONPATH=str(ROOT)),
+            timeout=120,
+        )
     assert r.returncode == 0, r.stderr
     assert json.loads(target.read_text())["kind"] == "couplings"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["captured.txt"]
@@ -165,7 +184,9 @@ def test_empty_output_names_are_refused(capsys):
     one_line_error(capsys)
 
 
-# ---------------------------------------------------------------------------------------------------- inputs
+# --------------------------------------------------------------------------------------------------
+# -- inputs
+
 
 def _fifo(tmp_path, name) -> Path:
     p = tmp_path / name
@@ -179,8 +200,13 @@ def test_fifo_inputs_are_refused_without_blocking(tmp_path, capsys):
     cases = [
         ["evaluate", str(_fifo(tmp_path, "d.yaml"))],
         ["diagnose", str(_fifo(tmp_path, "data.csv")), "--design", str(tx / "table_x.yaml")],
-        ["diagnose", str(tx / "table_x_run_est.csv"), str(_fifo(tmp_path, "val.csv")), "--design",
-         str(tx / "table_x.yaml")],
+        [
+            "diagnose",
+            str(tx / "table_x_run_est.csv"),
+            str(_fifo(tmp_path, "val.csv")),
+            "--design",
+            str(tx / "table_x.yaml"),
+        ],
         ["evaluate", str(DESIGN), "--calibration", str(_fifo(tmp_path, "cal.yaml"))],
         ["solve", str(_fifo(tmp_path, "p.yaml"))],
     ]
@@ -235,7 +261,12 @@ def test_time_record_sample_cap(capsys, monkeypatch):
 
     monkeypatch.setattr(tr, "MAX_TIME_SAMPLES", 300)
     data = PROBLEMS / "data"
-    assert main(["diagnose", str(data / "table_x_run_est.csv"), "--design", str(data / "table_x.yaml")]) == 2
+    assert (
+        main(
+            ["diagnose", str(data / "table_x_run_est.csv"), "--design", str(data / "table_x.yaml")]
+        )
+        == 2
+    )
     assert "too many samples" in one_line_error(capsys)
 
 
@@ -249,7 +280,9 @@ def test_stray_quote_in_diagnose_csv_is_one_line(tmp_path, capsys):
     assert len(err) < 500
 
 
-# ---------------------------------------------------------------------------------------------------- CSV cells
+# --------------------------------------------------------------------------------------------------
+# -- CSV cells
+
 
 def test_csv_cells_are_escaped_as_owasp_advises():
     assert csv_cell("=1+2") == "'=1+2"
@@ -257,7 +290,8 @@ def test_csv_cells_are_escaped_as_owasp_advises():
     assert csv_cell("-2+3+cmd|' /C calc'!A0") == "'-2+3+cmd|' /C calc'!A0"
     assert csv_cell("@SUM(A1)") == "'@SUM(A1)"
     assert csv_cell("\tx") == "'\tx" and csv_cell("\rx") == "'\rx"
-    assert csv_cell("-3.5") == "-3.5" and csv_cell("+1e3") == "+1e3"  # numbers written as text stay numbers
+    # numbers written as text stay numbers
+    assert csv_cell("-3.5") == "-3.5" and csv_cell("+1e3") == "+1e3"
     assert csv_cell(-3.5) == -3.5 and csv_cell("HIWIN-G") == "HIWIN-G"
 
 
@@ -266,9 +300,11 @@ def test_parts_csv_escapes_a_user_catalog_formula(tmp_path, monkeypatch, capsys)
 
     cat = tmp_path / "cat"
     cat.mkdir()
-    rows = list(_csv.reader((ROOT / "catalogs" / "couplings.csv").read_text(encoding="utf-8").splitlines()))
+    rows = list(
+        _csv.reader((ROOT / "catalogs" / "couplings.csv").read_text(encoding="utf-8").splitlines())
+    )
     head, row = rows[0], list(rows[1])
-    row[head.index("id")] = "=HYPERLINK(\"http://x\")"
+    row[head.index("id")] = '=HYPERLINK("http://x")'
     with open(cat / "couplings.csv", "w", newline="", encoding="utf-8") as fh:
         _csv.writer(fh).writerows([head, row])
     out = tmp_path / "c.csv"
@@ -277,9 +313,12 @@ def test_parts_csv_escapes_a_user_catalog_formula(tmp_path, monkeypatch, capsys)
     assert "'=HYPERLINK" in text and "\n=HYPERLINK" not in text
 
 
-# ------------------------------------------------------------------------- tidy_layout (was test_tidy_layout.py)
-# A figure whose decorations cannot fit (the study's trade-off plot with a long legend did this in bench_study) is
+# ------------------------------------------------------------------------- tidy_layout (was
+# test_tidy_layout.py)
+# A figure whose decorations cannot fit (the study's trade-off plot with a long legend did this in
+# bench_study) is
 # saved without matplotlib's 'Tight layout not applied' UserWarning reaching the user.
+
 
 def _crowded():
     import matplotlib

@@ -62,8 +62,13 @@ from hypothesis import strategies as st
 pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="the in-process runner forks")
 
 CASE_TIMEOUT = 10.0  # seconds; the slowest shipped fast problem solves in well under 1 s in-process
-FUZZ = settings(deadline=None, derandomize=True, database=None, print_blob=False,
-                suppress_health_check=list(HealthCheck))
+FUZZ = settings(
+    deadline=None,
+    derandomize=True,
+    database=None,
+    print_blob=False,
+    suppress_health_check=list(HealthCheck),
+)
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -74,8 +79,19 @@ def warm():
 
     with tempfile.TemporaryDirectory() as d, contextlib.redirect_stdout(io.StringIO()):
         cal = Path(d) / "cal.yaml"
-        assert main(["diagnose", str(PROBLEMS / DATA_CSV), "--design", str(PROBLEMS / DATA_DESIGN),
-                     "--save-calibration", str(cal)]) == 0
+        assert (
+            main(
+                [
+                    "diagnose",
+                    str(PROBLEMS / DATA_CSV),
+                    "--design",
+                    str(PROBLEMS / DATA_DESIGN),
+                    "--save-calibration",
+                    str(cal),
+                ]
+            )
+            == 0
+        )
         F._CAL_CACHE["cal"] = cal.read_bytes()
         F.synthetic_datasets()
         for name in ("vmc_x_design.yaml", "teaching_design.yaml", "custom_parts_design.yaml"):
@@ -84,7 +100,8 @@ def warm():
             assert main(["solve", str(PROBLEMS / name), "--no-sensitivity", "--json", "-"]) == 0
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # known bugs: (id, outcome class, pattern of the outcome detail or command, reason)
 
 
@@ -96,7 +113,8 @@ class Known:
     reason: str
 
 
-KNOWN = ()  # every bug the fuzz runs found is fixed; a new one is listed here with its reproducer below
+# every bug the fuzz runs found is fixed; a new one is listed here with its reproducer below
+KNOWN = ()
 
 
 def known(case: Case, cls: str, detail: str) -> Known | None:
@@ -109,10 +127,13 @@ def known(case: Case, cls: str, detail: str) -> Known | None:
 
 def run(case: Case, timeout: float = CASE_TIMEOUT):
     """Run a case in a fresh directory: forked in-process, or a subprocess where it starts workers."""
-    pool = case.argv[:1] == ["study"] and ("--scheduler" in case.argv or (
-        "--workers" in case.argv and case.argv[case.argv.index("--workers") + 1:][:1] != ["0"]))
+    pool = case.argv[:1] == ["study"] and (
+        "--scheduler" in case.argv
+        or ("--workers" in case.argv and case.argv[case.argv.index("--workers") + 1 :][:1] != ["0"])
+    )
     with tempfile.TemporaryDirectory(prefix="fuzz-") as d:
-        if pool or case.special or "/dev/stdout" in case.argv:  # the fork's fd 1 is not its sys.stdout
+        # the fork's fd 1 is not its sys.stdout
+        if pool or case.special or "/dev/stdout" in case.argv:
             return run_subprocess(case, Path(d), timeout=max(timeout, 30.0))
         return run_forked(case, Path(d), timeout=timeout)
 
@@ -122,12 +143,16 @@ def check(case: Case) -> str:
     cls, detail = classify(case, out)
     if cls in BAD and known(case, cls, detail) is None:
         err = "\n".join(out.stderr.strip().splitlines()[-12:])
-        pytest.fail(f"{cls}: {case.command()}\n  mutation: {case.mutation}\n  {detail}\n  exit {out.rc} after "
-                    f"{out.seconds:.1f} s; stderr:\n{err}", pytrace=False)
+        pytest.fail(
+            f"{cls}: {case.command()}\n  mutation: {case.mutation}\n  {detail}\n  exit {out.rc} after "
+            f"{out.seconds:.1f} s; stderr:\n{err}",
+            pytrace=False,
+        )
     return cls
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # the fuzz tests, one per input kind
 
 
@@ -146,7 +171,11 @@ def test_fuzz_problem(data):
 @settings(FUZZ, max_examples=12)
 @given(st.data())
 def test_fuzz_study(data):
-    check(study_case(DrawChooser(data), ("teaching_random.yaml", "vmc_stroke_mounting.yaml"), fast=True))
+    check(
+        study_case(
+            DrawChooser(data), ("teaching_random.yaml", "vmc_stroke_mounting.yaml"), fast=True
+        )
+    )
 
 
 @settings(FUZZ, max_examples=30)
@@ -173,8 +202,14 @@ def test_fuzz_compare(data):
     check(compare_case(DrawChooser(data)))
 
 
-FAST_FLAGS = [c for c in FLAG_CASES if "bonmin" not in c[1] and "exhaustive" not in c[1]
-              and not ("--workers" in c[1] and c[1][c[1].index("--workers") + 1] != "0") and "--scheduler" not in c[1]]
+FAST_FLAGS = [
+    c
+    for c in FLAG_CASES
+    if "bonmin" not in c[1]
+    and "exhaustive" not in c[1]
+    and not ("--workers" in c[1] and c[1][c[1].index("--workers") + 1] != "0")
+    and "--scheduler" not in c[1]
+]
 
 
 @settings(FUZZ, max_examples=30)
@@ -186,19 +221,27 @@ def test_fuzz_flags(flag_case):
 
 # issue 24: what each hardening case must give (every other outcome of these is a regression)
 HARDENING_EXPECTED = {
-    "parts --csv to a FIFO": "ok", "parts --json to a FIFO": "ok", "schema --out to a FIFO": "ok",
-    "evaluate --json to a FIFO": "ok", "compare --csv to a FIFO": "ok", "parts --csv -": "ok",
-    "parts --json /dev/stdout": "ok", "schema --out -": "ok",
+    "parts --csv to a FIFO": "ok",
+    "parts --json to a FIFO": "ok",
+    "schema --out to a FIFO": "ok",
+    "evaluate --json to a FIFO": "ok",
+    "compare --csv to a FIFO": "ok",
+    "parts --csv -": "ok",
+    "parts --json /dev/stdout": "ok",
+    "schema --out -": "ok",
     "duty-cycle move harder than axis.acceleration": "ok",
     "sweep invalid only together (product)": "negative",
     "user catalog id that is a formula, parts --csv": "ok",
-    "problem file name with a newline, --save-design": "ok", "solve --save-design -": "ok",
+    "problem file name with a newline, --save-design": "ok",
+    "solve --save-design -": "ok",
 }
 
 
 @pytest.mark.parametrize("case", HARDENING_CASES, ids=[c.mutation for c in HARDENING_CASES])
 def test_fuzz_hardening(case):
-    cls = check(Case(case.kind, case.mutation, list(case.argv), dict(case.files), case.dirs, case.special))
+    cls = check(
+        Case(case.kind, case.mutation, list(case.argv), dict(case.files), case.dirs, case.special)
+    )
     assert cls == HARDENING_EXPECTED.get(case.mutation, "clean error"), cls
 
 
@@ -206,9 +249,14 @@ def test_shipped_inputs_keep_the_contract():
     """The unmutated inputs: exit 0 (or 1 for the infeasible teaching variant), finite JSON."""
     for argv, files in (
         (["evaluate", "d.yaml", "--json", "-"], {"d.yaml": shipped("vmc_x_design.yaml")}),
-        (["solve", "p.yaml", "--no-sensitivity", "--json", "-"], {"p.yaml": shipped("teaching_problem.yaml")}),
-        (["diagnose", "c.csv", "--design", "d.yaml", "--json", "-"],
-         {"c.csv": shipped(DATA_CSV), "d.yaml": shipped(DATA_DESIGN)}),
+        (
+            ["solve", "p.yaml", "--no-sensitivity", "--json", "-"],
+            {"p.yaml": shipped("teaching_problem.yaml")},
+        ),
+        (
+            ["diagnose", "c.csv", "--design", "d.yaml", "--json", "-"],
+            {"c.csv": shipped(DATA_CSV), "d.yaml": shipped(DATA_DESIGN)},
+        ),
         (["parts", "--json", "-"], {}),
     ):
         assert check(Case("shipped", "none", argv, files)) == "ok"
@@ -219,8 +267,12 @@ def test_the_runner_catches_what_it_must():
     from fuzz_inputs import Outcome
 
     c = Case("x", "x", ["evaluate", "d.yaml", "--json", "-"])
-    assert classify(c, Outcome(1, "", "Traceback (most recent call last):\n  x\nValueError: y\n", 0.1))[0] == \
-        "traceback"
+    assert (
+        classify(
+            c, Outcome(1, "", "Traceback (most recent call last):\n  x\nValueError: y\n", 0.1)
+        )[0]
+        == "traceback"
+    )
     assert classify(c, Outcome(None, "", "", 20.0))[0] == "hang"
     assert classify(c, Outcome(2, "", "error: a\nerror: b\n", 0.1))[0] == "multi-line error"
     assert classify(c, Outcome(2, "", "error: a\n", 0.1))[0] == "clean error"
@@ -243,7 +295,8 @@ def test_the_runner_catches_what_it_must():
     assert out.rc is None and 1.0 <= out.seconds < 10
 
 
-# --------------------------------------------------------------------------------------------------------------
+# --------------------------------------------------------------------------------------------------
+# ------------
 # minimal reproducers of the known bugs (xfail strict: a fix makes them pass and the mark must go)
 
 
@@ -277,8 +330,12 @@ def _teaching_pareto_infeasible() -> bytes:
 
 
 def _evaluate_calibrated(cal: bytes, json_out: bool) -> Case:
-    return Case("calibration", "", ["evaluate", "d.yaml", "--calibration", "cal.yaml"]
-                + (["--json", "-"] if json_out else []), {"cal.yaml": cal, "d.yaml": shipped(DATA_DESIGN)})
+    return Case(
+        "calibration",
+        "",
+        ["evaluate", "d.yaml", "--calibration", "cal.yaml"] + (["--json", "-"] if json_out else []),
+        {"cal.yaml": cal, "d.yaml": shipped(DATA_DESIGN)},
+    )
 
 
 # Fixed bugs stay here as regression tests; OPEN lists the ones not fixed yet (xfail strict).
@@ -286,54 +343,99 @@ REPRODUCERS = {
     "diagnose-degenerate-data": (
         "diagnose data whose forces are all ~1e-300 N: overflow warnings, 'nan %' in the text, and with --json "
         "the fit's NaN reaches write_json (ValueError traceback)",
-        lambda: Case("data", "force column scaled by 1e-300", ["diagnose", "c.csv", "--design", "d.yaml", "--json",
-                                                               "-"],
-                     {"c.csv": _data_scaled("force [N]", 1e-300), "d.yaml": shipped(DATA_DESIGN)})),
+        lambda: Case(
+            "data",
+            "force column scaled by 1e-300",
+            ["diagnose", "c.csv", "--design", "d.yaml", "--json", "-"],
+            {"c.csv": _data_scaled("force [N]", 1e-300), "d.yaml": shipped(DATA_DESIGN)},
+        ),
+    ),
     "calibration-zero-modulus": (
         "evaluate --calibration with baseline.screw_modulus '0 GPa' is accepted: root diameter 0, "
         "ZeroDivisionError in evaluation_table",
-        lambda: _evaluate_calibrated(_calibration(baseline=("screw_modulus", "0 GPa")), False)),
+        lambda: _evaluate_calibrated(_calibration(baseline=("screw_modulus", "0 GPa")), False),
+    ),
     "calibration-negative-modulus": (
         "evaluate --calibration with baseline.screw_modulus '-202.7 GPa': math domain error (sqrt)",
-        lambda: _evaluate_calibrated(_calibration(baseline=("screw_modulus", "-202.7 GPa")), True)),
+        lambda: _evaluate_calibrated(_calibration(baseline=("screw_modulus", "-202.7 GPa")), True),
+    ),
     "calibration-negative-viscous": (
         "evaluate --calibration with effect viscous, viscous_coefficient '-5000 N.s/m', is applied: "
         "negative guide drag torque in the output (exit 0)",
-        lambda: _evaluate_calibrated(_calibration(effect=("viscous", "-5000 N.s/m")), True)),
+        lambda: _evaluate_calibrated(_calibration(effect=("viscous", "-5000 N.s/m")), True),
+    ),
     "drive-choice-traceback": (
         "catalog.drive: maybe (any value but yes/no/true/false) is a TypeError traceback: Section.choice hands the "
         "boolean options to difflib.get_close_matches",
-        lambda: Case("problem", "catalog.drive: maybe", ["solve", "p.yaml", "--no-sensitivity"],
-                     {"p.yaml": shipped("teaching_problem.yaml").replace(b"\ncatalog:\n",
-                                                                         b"\ncatalog:\n  drive: maybe\n")})),
+        lambda: Case(
+            "problem",
+            "catalog.drive: maybe",
+            ["solve", "p.yaml", "--no-sensitivity"],
+            {
+                "p.yaml": shipped("teaching_problem.yaml").replace(
+                    b"\ncatalog:\n", b"\ncatalog:\n  drive: maybe\n"
+                )
+            },
+        ),
+    ),
     "empty-pareto-front": (
         "solve of an infeasible Pareto problem (text output): TypeError 'int' object is not iterable in "
         "solve_cli._cand_table (max over an empty front)",
-        lambda: Case("problem", "teaching, pareto objective, max_cost 100 EUR", ["solve", "p.yaml", "--no-sensitivity"],
-                     {"p.yaml": _teaching_pareto_infeasible()})),
+        lambda: Case(
+            "problem",
+            "teaching, pareto objective, max_cost 100 EUR",
+            ["solve", "p.yaml", "--no-sensitivity"],
+            {"p.yaml": _teaching_pareto_infeasible()},
+        ),
+    ),
     "time-limit-nan": (
         "solve --time-limit nan (or inf) is accepted (NaN <= 0 is False); with --method bonmin it runs ~20 s and "
         "ends in MINLP_ERROR (exit 1) instead of a one-line error",
-        lambda: Case("flags", "--time-limit nan", ["solve", "p.yaml", "--no-sensitivity", "--time-limit", "nan"],
-                     {"p.yaml": shipped("teaching_problem.yaml")})),
+        lambda: Case(
+            "flags",
+            "--time-limit nan",
+            ["solve", "p.yaml", "--no-sensitivity", "--time-limit", "nan"],
+            {"p.yaml": shipped("teaching_problem.yaml")},
+        ),
+    ),
     "reduction-ratio-tiny": (
         "axis.reduction_ratio 1e-300 in the gantry problem: OverflowError traceback in load_inertia (ratio**2)",
-        lambda: Case("problem", "axis.reduction_ratio: 1e-300", ["solve", "p.yaml", "--no-sensitivity"],
-                     {"p.yaml": shipped("gantry_problem.yaml").replace(b"\naxis:\n",
-                                                                       b"\naxis:\n  reduction_ratio: 1.0e-300\n")})),
+        lambda: Case(
+            "problem",
+            "axis.reduction_ratio: 1e-300",
+            ["solve", "p.yaml", "--no-sensitivity"],
+            {
+                "p.yaml": shipped("gantry_problem.yaml").replace(
+                    b"\naxis:\n", b"\naxis:\n  reduction_ratio: 1.0e-300\n"
+                )
+            },
+        ),
+    ),
     "study-named-nan": (
         "a study named 'nan mm' is echoed as given; the classifier counted the user's name as a NaN output",
-        lambda: Case("study", "name: nan mm", ["study", "s.yaml", "--out", "out", "--workers", "0", "--quiet"],
-                     {"s.yaml": b"name: nan mm\nbase: p.yaml\nsweep:\n  limits.max_cost: [3500 EUR]\n",
-                      "p.yaml": shipped("teaching_problem.yaml")})),
+        lambda: Case(
+            "study",
+            "name: nan mm",
+            ["study", "s.yaml", "--out", "out", "--workers", "0", "--quiet"],
+            {
+                "s.yaml": b"name: nan mm\nbase: p.yaml\nsweep:\n  limits.max_cost: [3500 EUR]\n",
+                "p.yaml": shipped("teaching_problem.yaml"),
+            },
+        ),
+    ),
 }
 
 
 OPEN = ()
 
 
-@pytest.mark.parametrize("bug", [pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=v[0]) if k in OPEN
-                                              else ()) for k, v in REPRODUCERS.items()])
+@pytest.mark.parametrize(
+    "bug",
+    [
+        pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=v[0]) if k in OPEN else ())
+        for k, v in REPRODUCERS.items()
+    ],
+)
 def test_known_bug(bug):
     case = REPRODUCERS[bug][1]()
     out = run(case)
@@ -349,8 +451,10 @@ def test_a_plausibility_warning_is_part_of_the_contract():
     from fuzz_inputs import Outcome
 
     c = Case("problem", "acceleration scaled 1e-3", ["solve", "p.yaml"])
-    warn = ("warning: p.yaml: line 14, key 'axis.acceleration': 0.003 m/s^2 is far below machine-tool practice "
-            "(0.1-50 m/s^2): check the value and its unit\n")
+    warn = (
+        "warning: p.yaml: line 14, key 'axis.acceleration': 0.003 m/s^2 is far below machine-tool practice "
+        "(0.1-50 m/s^2): check the value and its unit\n"
+    )
     assert classify(c, Outcome(0, "ok\n", warn, 0.1))[0] != "warning"
     assert classify(c, Outcome(2, "", warn + "error: p.yaml: bad\n", 0.1))[0] == "clean error"
     assert classify(c, Outcome(0, "ok\n", "warning: something else\n", 0.1))[0] == "warning"

@@ -23,7 +23,9 @@ def _imports(path: Path):
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
         if isinstance(node, ast.ImportFrom):
             if node.level:
-                target = ".".join(base[: len(base) - node.level + 1] + ([node.module] if node.module else []))
+                target = ".".join(
+                    base[: len(base) - node.level + 1] + ([node.module] if node.module else [])
+                )
             else:
                 target = node.module or ""
             if target.startswith("axisopt"):
@@ -37,7 +39,9 @@ def test_no_private_name_imported_across_packages():
             for alias in node.names:
                 private = alias.name.startswith("_") and not alias.name.startswith("__")
                 if private and _package(module) != _package(target):
-                    bad.append(f"{path.relative_to(PKG.parent)}:{node.lineno} imports {target}.{alias.name}")
+                    bad.append(
+                        f"{path.relative_to(PKG.parent)}:{node.lineno} imports {target}.{alias.name}"
+                    )
     assert not bad, "\n".join(bad)
 
 
@@ -49,21 +53,28 @@ def test_no_private_name_imported_across_modules():
             for alias in node.names:
                 private = alias.name.startswith("_") and not alias.name.startswith("__")
                 if private and module != target:
-                    bad.append(f"{path.relative_to(PKG.parent)}:{node.lineno} imports {target}.{alias.name}")
+                    bad.append(
+                        f"{path.relative_to(PKG.parent)}:{node.lineno} imports {target}.{alias.name}"
+                    )
     assert not bad, "\n".join(bad)
 
 
-MAX_LINES = 600  # a module past this holds more than one idea: split it along them (docs/ARCHITECTURE.md)
+# a module past this holds more than one idea: split it along them (docs/ARCHITECTURE.md)
+MAX_LINES = 600
 
 
 def test_no_module_over_max_lines():
-    long = [f"{p.relative_to(PKG.parent)}: {n} lines" for p in sorted(PKG.rglob("*.py"))
-            if (n := len(p.read_text(encoding="utf-8").splitlines())) > MAX_LINES]
+    long = [
+        f"{p.relative_to(PKG.parent)}: {n} lines"
+        for p in sorted(PKG.rglob("*.py"))
+        if (n := len(p.read_text(encoding="utf-8").splitlines())) > MAX_LINES
+    ]
     assert not long, "\n".join(long)
 
 
 def test_the_layer_contract_has_no_exceptions():
-    # import-linter checks the contracts as written; an exception list would let a layer import upwards
+    # import-linter checks the contracts as written; an exception list would let a layer import
+    # upwards
     text = (PKG.parent / "pyproject.toml").read_text(encoding="utf-8")
     assert "[[tool.importlinter.contracts]]" in text
     assert "ignore_imports" not in text
@@ -108,7 +119,10 @@ def module_graph() -> dict[str, set[str]]:
                     target = ".".join(base + ([node.module] if node.module else []))
                 else:
                     target = node.module or ""
-                targets = [f"{target}.{a.name}" if f"{target}.{a.name}" in modules else target for a in node.names]
+                targets = [
+                    f"{target}.{a.name}" if f"{target}.{a.name}" in modules else target
+                    for a in node.names
+                ]
             edges.update(t for t in targets if t in modules and t != module)
     return graph
 
@@ -147,7 +161,8 @@ def import_cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 
 
 def test_the_graph_sees_deferred_imports():
-    # the walk must see an import inside a function: the front door imports its stages only when a solve
+    # the walk must see an import inside a function: the front door imports its stages only when a
+    # solve
     # reaches them
     graph = module_graph()
     assert "axisopt.search.parts" in graph["axisopt.search.front"]

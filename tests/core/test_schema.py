@@ -45,7 +45,10 @@ def validators():
 
 
 def schema_errors(validator, data) -> list:
-    return [f"{'.'.join(map(str, e.absolute_path))}: {e.message[:200]}" for e in validator.iter_errors(data)]
+    return [
+        f"{'.'.join(map(str, e.absolute_path))}: {e.message[:200]}"
+        for e in validator.iter_errors(data)
+    ]
 
 
 def _kind_of(path: Path) -> str:
@@ -62,8 +65,13 @@ def _kind_of(path: Path) -> str:
     raise AssertionError(f"cannot tell the kind of {path}")
 
 
-LOADERS = {"design": load_design, "problem": load_problem, "study": load_study, "machine": load_machine,
-           "machine-study": load_machine_study}
+LOADERS = {
+    "design": load_design,
+    "problem": load_problem,
+    "study": load_study,
+    "machine": load_machine,
+    "machine-study": load_machine_study,
+}
 SHIPPED = sorted(p for p in PROBLEMS.rglob("*.yaml"))
 
 
@@ -82,8 +90,19 @@ def test_every_shipped_yaml_validates_against_its_schema(path, validators):
 
 def _calibrations(tmp_path) -> list:
     saved = tmp_path / "saved.yaml"
-    assert main(["diagnose", str(PROBLEMS / "data" / "table_x_stiffness.csv"), "--design", str(DATA_DESIGN),
-                 "--save-calibration", str(saved)]) == 0
+    assert (
+        main(
+            [
+                "diagnose",
+                str(PROBLEMS / "data" / "table_x_stiffness.csv"),
+                "--design",
+                str(DATA_DESIGN),
+                "--save-calibration",
+                str(saved),
+            ]
+        )
+        == 0
+    )
     rich = tmp_path / "rich.yaml"
     rich.write_text(F.RICH_CALIBRATION, encoding="utf-8")
     return [saved, rich]
@@ -96,7 +115,9 @@ def test_calibrations_validate_against_their_schema(tmp_path, validators, capsys
         assert schema_errors(validators["calibration"], yaml.safe_load(path.read_text())) == []
 
 
-# --------------------------------------------------------------------- schema and loader reject the same input
+# --------------------------------------------------------------------- schema and loader reject the
+# same input
+
 
 def _set(tree: dict, path: tuple, value) -> dict:
     tree = copy.deepcopy(tree)
@@ -137,21 +158,24 @@ def _both_reject(tmp_path, validators, kind, tree, loader=None):
 DESIGN_TREE = yaml.safe_load(DESIGN.read_text())
 
 
-@pytest.mark.parametrize("path, value", [
-    (("axis", "stroke"), "800 kg"),  # a unit of the wrong kind
-    (("axis", "max_speed"), "30 N"),
-    (("axis", "axial_load"), "-5 N"),  # negative
-    (("axis", "max_speed"), "0 m/min"),  # must be positive
-    (("axis", "guide_blocks"), 100),  # out of range (1..64)
-    (("axis", "positions"), 2),  # out of range (3..2001)
-    (("axis", "reduction_efficiency"), 1.5),
-    (("axis", "brake_safety"), 0.5),
-    (("axis", "mounting"), "fixed-flee"),  # not a choice
-    (("axis", "orientation"), "diagonal"),
-    (("axis", "stroke"), 800),  # no unit
-    (("parts", "screw"), ["a", "list"]),
-    (("name",), 42),
-])
+@pytest.mark.parametrize(
+    "path, value",
+    [
+        (("axis", "stroke"), "800 kg"),  # a unit of the wrong kind
+        (("axis", "max_speed"), "30 N"),
+        (("axis", "axial_load"), "-5 N"),  # negative
+        (("axis", "max_speed"), "0 m/min"),  # must be positive
+        (("axis", "guide_blocks"), 100),  # out of range (1..64)
+        (("axis", "positions"), 2),  # out of range (3..2001)
+        (("axis", "reduction_efficiency"), 1.5),
+        (("axis", "brake_safety"), 0.5),
+        (("axis", "mounting"), "fixed-flee"),  # not a choice
+        (("axis", "orientation"), "diagonal"),
+        (("axis", "stroke"), 800),  # no unit
+        (("parts", "screw"), ["a", "list"]),
+        (("name",), 42),
+    ],
+)
 def test_bad_value_fails_schema_and_evaluate(tmp_path, validators, capsys, path, value):
     tree = _set(DESIGN_TREE, path, value)
     assert schema_errors(validators["design"], tree)
@@ -161,8 +185,15 @@ def test_bad_value_fails_schema_and_evaluate(tmp_path, validators, capsys, path,
     assert err and "\n" not in err, err
 
 
-@pytest.mark.parametrize("path, new", [(("axis", "stroke"), "strok"), (("axis", "moving_mass"), "movingmass"),
-                                       (("parts", "guide"), "guides"), (("name",), "nmae")])
+@pytest.mark.parametrize(
+    "path, new",
+    [
+        (("axis", "stroke"), "strok"),
+        (("axis", "moving_mass"), "movingmass"),
+        (("parts", "guide"), "guides"),
+        (("name",), "nmae"),
+    ],
+)
 def test_misspelt_key_fails_schema_and_evaluate(tmp_path, validators, capsys, path, new):
     tree = _rename(DESIGN_TREE, path, new)
     assert schema_errors(validators["design"], tree)
@@ -182,7 +213,9 @@ def test_every_axis_key_agrees(tmp_path, validators, name):
     key = AXIS_SPEC.keys[name]
     _both_reject(tmp_path, validators, "design", _set(DESIGN_TREE, ("axis", name + "_x"), "1 mm"))
     if key.type == "quantity":
-        _both_reject(tmp_path, validators, "design", _set(DESIGN_TREE, ("axis", name), _wrong_unit(key.kind)))
+        _both_reject(
+            tmp_path, validators, "design", _set(DESIGN_TREE, ("axis", name), _wrong_unit(key.kind))
+        )
         if key.positive or key.non_negative:
             unit = "mm" if key.kind == "length" else units_of(key.kind)[0]
             bad = f"{'0' if key.positive else '-1'} {unit}"
@@ -203,18 +236,25 @@ def _mappings(tree, path=()):
             yield from _mappings(v, path + (i,))
 
 
-@pytest.mark.parametrize("kind, path", [
-    ("design", DESIGN), ("design", PROBLEMS / "custom_parts_design.yaml"), ("design", PROBLEMS / "vmc_x_design.yaml"),
-    ("problem", PROBLEMS / "teaching_problem.yaml"), ("problem", PROBLEMS / "duty_cycle_problem.yaml"),
-    ("problem", PROBLEMS / "gantry_problem.yaml"),
-])
+@pytest.mark.parametrize(
+    "kind, path",
+    [
+        ("design", DESIGN),
+        ("design", PROBLEMS / "custom_parts_design.yaml"),
+        ("design", PROBLEMS / "vmc_x_design.yaml"),
+        ("problem", PROBLEMS / "teaching_problem.yaml"),
+        ("problem", PROBLEMS / "duty_cycle_problem.yaml"),
+        ("problem", PROBLEMS / "gantry_problem.yaml"),
+    ],
+)
 def test_an_unknown_key_anywhere_fails_both(tmp_path, validators, kind, path):
     """Every mapping of the file refuses a key its table does not declare, in the schema and the loader."""
     tree = yaml.safe_load(path.read_text())
     seen = 0
     for where in _mappings(tree):
         if where[:1] == ("objective",) and where[1:2] in (("weights",), ("scale",)):
-            continue  # keys named by the weights: the schema lists both, the loader needs a weight's scale
+            # keys named by the weights: the schema lists both, the loader needs a weight's scale
+            continue
         bad = _set(tree, where + ("bogus_key",), "1 mm") if where else {**tree, "bogus_key": "1 mm"}
         _both_reject(tmp_path, validators, kind, bad)
         seen += 1
@@ -224,25 +264,32 @@ def test_an_unknown_key_anywhere_fails_both(tmp_path, validators, kind, path):
 PROBLEM_TREE = yaml.safe_load((PROBLEMS / "teaching_problem.yaml").read_text())
 
 
-@pytest.mark.parametrize("path, value", [
-    (("limits", "max_cost"), "4000 kg"),
-    (("limits", "min_stiffness"), "0 N/um"),
-    (("limits", "margins", "buckling"), -1),
-    (("limits", "margins", "bucklin"), 2),
-    (("catalog", "mountings"), ["fixed-flee"]),
-    (("catalog", "mountings"), []),
-    (("catalog", "status"), ["bought"]),
-    (("objective",), {"mode": "pareto", "pareto": ["stiffness", "speed"]}),
-    (("objective",), {"mode": "sideways"}),
-    (("continuous", "nut_preload", "max"), "5 kN.m"),
-])
+@pytest.mark.parametrize(
+    "path, value",
+    [
+        (("limits", "max_cost"), "4000 kg"),
+        (("limits", "min_stiffness"), "0 N/um"),
+        (("limits", "margins", "buckling"), -1),
+        (("limits", "margins", "bucklin"), 2),
+        (("catalog", "mountings"), ["fixed-flee"]),
+        (("catalog", "mountings"), []),
+        (("catalog", "status"), ["bought"]),
+        (("objective",), {"mode": "pareto", "pareto": ["stiffness", "speed"]}),
+        (("objective",), {"mode": "sideways"}),
+        (("continuous", "nut_preload", "max"), "5 kN.m"),
+    ],
+)
 def test_bad_problem_fails_schema_and_loader(tmp_path, validators, path, value):
     _both_reject(tmp_path, validators, "problem", _set(PROBLEM_TREE, path, value))
 
 
-STUDY_TREE = {"base": str(PROBLEMS / "teaching_problem.yaml"),
-              "sweep": {"axis.stroke": ["300 mm", "400 mm"], "limits.max_cost": {"from": "2000 EUR", "to": "3000 EUR",
-                                                                                 "steps": 2}}}
+STUDY_TREE = {
+    "base": str(PROBLEMS / "teaching_problem.yaml"),
+    "sweep": {
+        "axis.stroke": ["300 mm", "400 mm"],
+        "limits.max_cost": {"from": "2000 EUR", "to": "3000 EUR", "steps": 2},
+    },
+}
 
 
 def test_a_small_study_validates(tmp_path, validators):
@@ -251,16 +298,22 @@ def test_a_small_study_validates(tmp_path, validators):
     assert schema_errors(validators["study"], STUDY_TREE) == []
 
 
-@pytest.mark.parametrize("path, value", [
-    (("method",), "fastest"),
-    (("combine",), "zipper"),
-    (("sweep", "limits.max_cost", "steps"), 0),
-    (("sweep", "limits.max_cost", "spacing"), "cubic"),
-    (("sweep", "axis.stroke"), []),
-    (("sweep", "axis.stroke"), {"random": {"low": "300 mm", "high": "400 mm", "n": 3}}),  # no seed
-    (("sweep", "axis..stroke"), [1]),
-    (("swep",), {}),
-])
+@pytest.mark.parametrize(
+    "path, value",
+    [
+        (("method",), "fastest"),
+        (("combine",), "zipper"),
+        (("sweep", "limits.max_cost", "steps"), 0),
+        (("sweep", "limits.max_cost", "spacing"), "cubic"),
+        (("sweep", "axis.stroke"), []),
+        (
+            ("sweep", "axis.stroke"),
+            {"random": {"low": "300 mm", "high": "400 mm", "n": 3}},
+        ),  # no seed
+        (("sweep", "axis..stroke"), [1]),
+        (("swep",), {}),
+    ],
+)
 def test_bad_study_fails_schema_and_loader(tmp_path, validators, path, value):
     _both_reject(tmp_path, validators, "study", _set(STUDY_TREE, path, value))
 
@@ -268,16 +321,19 @@ def test_bad_study_fails_schema_and_loader(tmp_path, validators, path, value):
 CAL_TREE = yaml.safe_load(F.RICH_CALIBRATION)
 
 
-@pytest.mark.parametrize("path, value", [
-    (("baseline", "screw_modulos"), {"value": "200 GPa", "kind": "pressure"}),
-    (("baseline", "screw_modulus", "kind"), "force"),
-    (("baseline", "screw_modulus", "value"), "-200 GPa"),
-    (("baseline", "screw_modulus", "value"), "200 mm"),
-    (("effects", 0, "name"), "support_conditon"),
-    (("effects", 0, "parameters", "far_end_stiffness", "kind"), "stifness"),
-    (("axisopt_calibration",), 2),
-    (("verdikt",), "x"),
-])
+@pytest.mark.parametrize(
+    "path, value",
+    [
+        (("baseline", "screw_modulos"), {"value": "200 GPa", "kind": "pressure"}),
+        (("baseline", "screw_modulus", "kind"), "force"),
+        (("baseline", "screw_modulus", "value"), "-200 GPa"),
+        (("baseline", "screw_modulus", "value"), "200 mm"),
+        (("effects", 0, "name"), "support_conditon"),
+        (("effects", 0, "parameters", "far_end_stiffness", "kind"), "stifness"),
+        (("axisopt_calibration",), 2),
+        (("verdikt",), "x"),
+    ],
+)
 def test_bad_calibration_fails_schema_and_loader(tmp_path, validators, path, value):
     tree = _set(CAL_TREE, path, value)
     if path[-1] == "screw_modulos":
@@ -288,7 +344,9 @@ def test_bad_calibration_fails_schema_and_loader(tmp_path, validators, path, val
         apply_calibration(load_design(DATA_DESIGN), _write(tmp_path, tree))
 
 
-# ------------------------------------------------------------------------------------ one source of the rules
+# ------------------------------------------------------------------------------------ one source of
+# the rules
+
 
 def _resolve(schema: dict, node: dict) -> dict:
     while "$ref" in node:
@@ -308,7 +366,9 @@ def _objects(schema, node):
 def _walk(spec: Spec, schema: dict, node: dict, path: str, seen: set) -> int:
     assert set(node["properties"]) == set(spec.keys), path
     assert set(node.get("required", ())) == {n for n, k in spec.keys.items() if k.required}, path
-    assert (node.get("additionalProperties") is False) == (spec.extra is None or spec.extra_pattern is not None)
+    assert (node.get("additionalProperties") is False) == (
+        spec.extra is None or spec.extra_pattern is not None
+    )
     n = len(spec.keys)
     if (id(spec), id(node)) in seen:
         return n
@@ -342,15 +402,20 @@ def test_every_quantity_kind_has_units_the_loader_accepts():
             parse_quantity(f"1 {u}", kind)
     import re
 
-    assert re.search(quantity_pattern("length"), "800 mm") and not re.search(quantity_pattern("length"), "800 kg")
+    assert re.search(quantity_pattern("length"), "800 mm") and not re.search(
+        quantity_pattern("length"), "800 kg"
+    )
     assert re.search(quantity_pattern("dimensionless"), "0.5")
 
 
 def test_the_schema_is_json_and_describes_each_key():
     text = json.dumps(json_schema("design"))
     d = json.loads(text)
-    stroke = d["$defs"]["axis"]["properties"]["stroke"] if "axis" in d["$defs"] else \
-        d["properties"]["axis"]["properties"]["stroke"]
+    stroke = (
+        d["$defs"]["axis"]["properties"]["stroke"]
+        if "axis" in d["$defs"]
+        else d["properties"]["axis"]["properties"]["stroke"]
+    )
     assert "length" in stroke["description"] and "e.g." in stroke["description"]
 
 
@@ -362,10 +427,14 @@ def test_schema_ids_are_urns_and_a_wrong_unit_reads_well(validators):
     data = yaml.safe_load(DESIGN.read_text(encoding="utf-8"))
     data["axis"]["stroke"] = "800 kg"
     data["axis"]["moving_mass"] = "-60 kg"
-    errors = {".".join(map(str, e.absolute_path)): e for e in validators["design"].iter_errors(data)}
+    errors = {
+        ".".join(map(str, e.absolute_path)): e for e in validators["design"].iter_errors(data)
+    }
     assert set(errors) == {"axis.stroke", "axis.moving_mass"}
     shown = {k: e.schema["patternErrorMessage"] for k, e in errors.items()}
-    assert shown["axis.stroke"].startswith("expected a number and a unit of length, e.g. 800 mm (units: m, mm,")
+    assert shown["axis.stroke"].startswith(
+        "expected a number and a unit of length, e.g. 800 mm (units: m, mm,"
+    )
     assert shown["axis.moving_mass"] == "mass must be positive, e.g. 300 kg"
     assert all(len(m) < 120 and "\\s" not in m for m in shown.values())
     with pytest.raises(InputError, match="stroke"):  # the loader refuses the same value

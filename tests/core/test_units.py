@@ -74,9 +74,17 @@ def test_reading_a_problem_builds_no_unit_registry():
     import subprocess
     import sys
 
-    code = ("import sys; from axisopt.problem import load_problem; load_problem('problems/teaching_problem.yaml'); "
-            "print('pint' in sys.modules)")
+    code = (
+        "import sys; from axisopt.problem import load_problem; load_problem('problems/teaching_problem.yaml'); "
+        "print('pint' in sys.modules)"
+    )
     root = Path(__file__).resolve().parents[2]
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=root,
-                         env={**__import__("os").environ, "PYTHONPATH": str(root)}, check=True)
+    out = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        cwd=root,
+        env={**__import__("os").environ, "PYTHONPATH": str(root)},
+        check=True,
+    )
     assert out.stdout.strip() == "False"

@@ -16,7 +16,7 @@ from axisopt.design.writer import design_to_yaml
 from axisopt.physics import gantry as pg
 
 ROOT = Path(__file__).resolve().parents[2]
-TWIN = ("  twin_drive:\n    span: 1000 mm\n    cross_stroke: 600 mm\n    cross_mass: 150 kg\n")
+TWIN = "  twin_drive:\n    span: 1000 mm\n    cross_stroke: 600 mm\n    cross_mass: 150 kg\n"
 BASE = (ROOT / "problems" / "vmc_x_design.yaml").read_text()
 DESIGN = BASE.replace("  rails: 2\n", "  rails: 2\n" + TWIN)
 
@@ -29,26 +29,51 @@ def _run(tmp_path, capsys, text, cmd="evaluate", name="d.yaml"):
     return rc, err, f
 
 
-@pytest.mark.parametrize(("old", "new", "key", "needle"), [
-    ("cross_stroke: 600 mm", "cross_stroke: 1200 mm", "axis.twin_drive.cross_stroke", "leave the bridge"),
-    ("span: 1000 mm", "span: -1000 mm", "axis.twin_drive.span", ""),
-    ("span: 1000 mm", "span: 0 mm", "axis.twin_drive.span", ""),
-    ("span: 1000 mm", "span: .nan mm", "axis.twin_drive.span", ""),
-    ("span: 1000 mm", "span: 1e300 mm", "axis.twin_drive.span", ""),
-    ("span: 1000 mm", "span: 1000", "axis.twin_drive.span", ""),
-    ("cross_mass: 150 kg", "cross_mass: .inf kg", "axis.twin_drive.cross_mass", ""),
-    ("cross_mass: 150 kg", "cross_mass: -5 kg", "axis.twin_drive.cross_mass", ""),
-    ("cross_mass: 150 kg", "cross_mass: 150 mm", "axis.twin_drive.cross_mass", ""),
-    ("cross_mass: 150 kg", "cross_mas: 150 kg", "cross_mas", "cross_mass"),
-    ("cross_mass: 150 kg", "cross_mass: 150 kg\n    bridge_yaw_inertia: -3 kg.m^2", "bridge_yaw_inertia", ""),
-    ("    span: 1000 mm\n", "", "axis.twin_drive.span", ""),
-    ("  mounting: fixed-supported\n", "  mounting: fixed-supported\n  orientation: vertical\n", "axis.twin_drive",
-     "horizontal"),
-    ("  mounting: fixed-supported\n", "  mounting: fixed-supported\n  orientation: wall\n", "axis.twin_drive",
-     "horizontal"),
-    ("  twin_drive:\n    span: 1000 mm\n    cross_stroke: 600 mm\n    cross_mass: 150 kg\n", "  twin_drive: 2\n",
-     "axis.twin_drive", ""),
-])
+@pytest.mark.parametrize(
+    ("old", "new", "key", "needle"),
+    [
+        (
+            "cross_stroke: 600 mm",
+            "cross_stroke: 1200 mm",
+            "axis.twin_drive.cross_stroke",
+            "leave the bridge",
+        ),
+        ("span: 1000 mm", "span: -1000 mm", "axis.twin_drive.span", ""),
+        ("span: 1000 mm", "span: 0 mm", "axis.twin_drive.span", ""),
+        ("span: 1000 mm", "span: .nan mm", "axis.twin_drive.span", ""),
+        ("span: 1000 mm", "span: 1e300 mm", "axis.twin_drive.span", ""),
+        ("span: 1000 mm", "span: 1000", "axis.twin_drive.span", ""),
+        ("cross_mass: 150 kg", "cross_mass: .inf kg", "axis.twin_drive.cross_mass", ""),
+        ("cross_mass: 150 kg", "cross_mass: -5 kg", "axis.twin_drive.cross_mass", ""),
+        ("cross_mass: 150 kg", "cross_mass: 150 mm", "axis.twin_drive.cross_mass", ""),
+        ("cross_mass: 150 kg", "cross_mas: 150 kg", "cross_mas", "cross_mass"),
+        (
+            "cross_mass: 150 kg",
+            "cross_mass: 150 kg\n    bridge_yaw_inertia: -3 kg.m^2",
+            "bridge_yaw_inertia",
+            "",
+        ),
+        ("    span: 1000 mm\n", "", "axis.twin_drive.span", ""),
+        (
+            "  mounting: fixed-supported\n",
+            "  mounting: fixed-supported\n  orientation: vertical\n",
+            "axis.twin_drive",
+            "horizontal",
+        ),
+        (
+            "  mounting: fixed-supported\n",
+            "  mounting: fixed-supported\n  orientation: wall\n",
+            "axis.twin_drive",
+            "horizontal",
+        ),
+        (
+            "  twin_drive:\n    span: 1000 mm\n    cross_stroke: 600 mm\n    cross_mass: 150 kg\n",
+            "  twin_drive: 2\n",
+            "axis.twin_drive",
+            "",
+        ),
+    ],
+)
 def test_bad_twin_drive_is_a_one_line_error(tmp_path, capsys, old, new, key, needle):
     assert old in DESIGN
     rc, err, f = _run(tmp_path, capsys, DESIGN.replace(old, new))
@@ -58,10 +83,18 @@ def test_bad_twin_drive_is_a_one_line_error(tmp_path, capsys, old, new, key, nee
 
 
 def test_bad_twin_drive_in_a_problem(tmp_path, capsys):
-    text = (ROOT / "problems" / "gantry_twin_problem.yaml").read_text().replace("cross_stroke: 1800 mm",
-                                                                                 "cross_stroke: 2500 mm")
+    text = (
+        (ROOT / "problems" / "gantry_twin_problem.yaml")
+        .read_text()
+        .replace("cross_stroke: 1800 mm", "cross_stroke: 2500 mm")
+    )
     rc, err, f = _run(tmp_path, capsys, text, cmd="solve", name="p.yaml")
-    assert rc == 2 and len(err.splitlines()) == 1 and "axis.twin_drive.cross_stroke" in err and str(f) in err
+    assert (
+        rc == 2
+        and len(err.splitlines()) == 1
+        and "axis.twin_drive.cross_stroke" in err
+        and str(f) in err
+    )
 
 
 def test_round_trip_and_estimate(tmp_path):
@@ -75,7 +108,8 @@ def test_round_trip_and_estimate(tmp_path):
     g.write_text(design_to_yaml(d))
     assert load_design(g).axis.twin_drive == tw
     p = model.design_params(d)
-    # no inertia or uprights given: the estimate of half the bridge (axis.moving_mass) in its uprights at the
+    # no inertia or uprights given: the estimate of half the bridge (axis.moving_mass) in its
+    # uprights at the
     # drives, m/2 L^2/12 + m/2 (L/2)^2 = m L^2 / 6
     assert p["bridge_yaw_inertia"] == pytest.approx(450.0 * 1.0**2 / 6.0)
     assert "twin_drive" not in load_design(tmp_path / "d.yaml").assumed
@@ -100,17 +134,27 @@ def test_twin_outputs_against_one_side(tmp_path):
     whole = 450.0 + 150.0 + 2 * nut + blocks
     assert tv["gantry_moving_mass"] == pytest.approx(whole)
     assert tv["moving_mass"] == pytest.approx(whole / 2 + 150.0 * 0.6 / 2.0)
-    assert p["axial_load"] == pytest.approx(r * 3000.0) and p["mean_axial_load"] == pytest.approx(r * 800.0)
-    second = (p["screw_price_per_length"] * p["span"] + p["screw_price_fixed"] + p["nut_price"]
-              + p["bearing_sets"] * p["bearing_price"] + p["motor_price"] + p["coupling_price"] + p["reduction_price"])
+    assert p["axial_load"] == pytest.approx(r * 3000.0) and p["mean_axial_load"] == pytest.approx(
+        r * 800.0
+    )
+    second = (
+        p["screw_price_per_length"] * p["span"]
+        + p["screw_price_fixed"]
+        + p["nut_price"]
+        + p["bearing_sets"] * p["bearing_price"]
+        + p["motor_price"]
+        + p["coupling_price"]
+        + p["reduction_price"]
+    )
     assert tv["cost"] == pytest.approx(ov["cost"] + second)
     # the guides carry the whole gantry: more than the single axis's 450 kg table
     assert tv["guide_max_load"] > ov["guide_max_load"]
     # the gantry modes: the 2-DOF model with both chains at every position
     m_r = tv["m_eff"] - tv["moving_mass"]
     j_b = 450.0 / 6.0 + 2 * m_r * 0.25
-    lo_end, hi_end = pg.gantry_frequencies(whole - 150.0 + 2 * m_r, j_b, 150.0, 0.3, tv["k_total"], tv["k_total"],
-                                           1.0, tv["k_yaw"])
+    lo_end, hi_end = pg.gantry_frequencies(
+        whole - 150.0 + 2 * m_r, j_b, 150.0, 0.3, tv["k_total"], tv["k_total"], 1.0, tv["k_yaw"]
+    )
     np.testing.assert_allclose(tv["f_racking"], hi_end, rtol=1e-9)
     assert np.all(tv["f_gantry"] <= lo_end * (1 + 1e-12))
     assert np.all(tv["f1"] <= tv["f_gantry"] * (1 + 1e-12))
@@ -126,5 +170,14 @@ def test_single_drive_outputs_are_unchanged_by_the_twin_parameters(tmp_path):
     x = model.positions(one.axis)
     a = model.axis_response(bare, x, one.axis.mounting, one.preload)
     b = model.axis_response(p, x, one.axis.mounting, one.preload)
-    for k in ("f1", "k_total", "cost", "total_mass", "moving_mass", "max_axial_force", "life", "peak_torque"):
+    for k in (
+        "f1",
+        "k_total",
+        "cost",
+        "total_mass",
+        "moving_mass",
+        "max_axial_force",
+        "life",
+        "peak_torque",
+    ):
         np.testing.assert_array_equal(a[k], b[k])

@@ -21,15 +21,24 @@ def _doc_rows() -> list:
 
 
 def test_the_docs_table_is_the_code_table():
-    code = [(section, "largest process force" if r.key == "duty_cycle" else r.key,
-             fmt(r.low * r.factor, r.unit), fmt(r.high * r.factor, r.unit))
-            for section, table in TABLES.items() for r in table]
+    code = [
+        (
+            section,
+            "largest process force" if r.key == "duty_cycle" else r.key,
+            fmt(r.low * r.factor, r.unit),
+            fmt(r.high * r.factor, r.unit),
+        )
+        for section, table in TABLES.items()
+        for r in table
+    ]
     assert [tuple(c.strip() for c in row) for row in _doc_rows()] == code
 
 
 @pytest.mark.parametrize("r", [r for t in TABLES.values() for r in t], ids=lambda r: r.key)
 def test_each_range_warns_outside_and_not_inside(r):
-    ranges = TABLES["limits"] if r in LIMIT_RANGES else CYCLE_RANGES if r in CYCLE_RANGES else RANGES
+    ranges = (
+        TABLES["limits"] if r in LIMIT_RANGES else CYCLE_RANGES if r in CYCLE_RANGES else RANGES
+    )
     assert implausible({r.key: r.high * 1.01}, ranges)[0][0] == r.key
     assert implausible({r.key: r.high * 0.99}, ranges) == []
     if r.low > 0:

@@ -27,14 +27,29 @@ def _same(a, b):
 
 
 @settings(max_examples=25, deadline=None)
-@given(stroke=st.floats(0.05, 4.0), mass=st.floats(1.0, 5000.0), speed=st.floats(0.01, 2.0),
-       load=st.one_of(st.just(0.0), st.floats(1e-3, 5e4)), inline=st.booleans(),
-       mounting=st.sampled_from(["fixed-free", "fixed-supported", "fixed-fixed"]))
+@given(
+    stroke=st.floats(0.05, 4.0),
+    mass=st.floats(1.0, 5000.0),
+    speed=st.floats(0.01, 2.0),
+    load=st.one_of(st.just(0.0), st.floats(1e-3, 5e4)),
+    inline=st.booleans(),
+    mounting=st.sampled_from(["fixed-free", "fixed-supported", "fixed-fixed"]),
+)
 def test_yaml_round_trip(tmp_path_factory, stroke, mass, speed, load, inline, mounting):
     # the mean speed and load at most the top ones (the reader refuses a mean above its maximum)
-    d = dataclasses.replace(BASE, axis=dataclasses.replace(
-        BASE.axis, stroke=stroke, moving_mass=mass, max_speed=speed, axial_load=load, mounting=mounting,
-        mean_speed=min(BASE.axis.mean_speed, speed), mean_axial_load=min(BASE.axis.mean_axial_load, load)))
+    d = dataclasses.replace(
+        BASE,
+        axis=dataclasses.replace(
+            BASE.axis,
+            stroke=stroke,
+            moving_mass=mass,
+            max_speed=speed,
+            axial_load=load,
+            mounting=mounting,
+            mean_speed=min(BASE.axis.mean_speed, speed),
+            mean_axial_load=min(BASE.axis.mean_axial_load, load),
+        ),
+    )
     path = tmp_path_factory.mktemp("rt") / "d.yaml"
     path.write_text(design_to_yaml(d, inline_parts=inline))
     back = load_design(path)
@@ -49,9 +64,12 @@ def test_yaml_round_trip_with_a_reduction(tmp_path, inline):
     from axisopt.catalog.loading import default_catalog
 
     red = default_catalog().part("reductions", "BK-NPT035-MF-4")
-    d = dataclasses.replace(BASE, reduction=red,
-                            axis=dataclasses.replace(BASE.axis, reduction_ratio=2.0),
-                            assumed=tuple(k for k in BASE.assumed if k != "reduction_ratio"))
+    d = dataclasses.replace(
+        BASE,
+        reduction=red,
+        axis=dataclasses.replace(BASE.axis, reduction_ratio=2.0),
+        assumed=tuple(k for k in BASE.assumed if k != "reduction_ratio"),
+    )
     path = tmp_path / "d.yaml"
     text = design_to_yaml(d, inline_parts=inline)
     assert "reduction_ratio" not in text

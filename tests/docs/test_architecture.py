@@ -35,11 +35,14 @@ def _exists(dotted: str) -> bool:
 
 
 def _packages() -> set[str]:
-    return {".".join(p.parent.relative_to(ROOT).parts) for p in (ROOT / "axisopt").rglob("__init__.py")} - {"axisopt"}
+    return {
+        ".".join(p.parent.relative_to(ROOT).parts) for p in (ROOT / "axisopt").rglob("__init__.py")
+    } - {"axisopt"}
 
 
 def test_the_table_follows_the_layer_contract():
-    text = (ROOT / "pyproject.toml").read_text(encoding="utf-8")  # tomllib is Python 3.11+: the list read as is
+    # tomllib is Python 3.11+: the list read as is
+    text = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
     block = text.split('type = "layers"')[1].split("layers = [")[1].split("]")[0]
     layers = re.findall(r'"([^"]+)"', block)
     expected = [[m.strip() for m in re.split(r"[|:]", layer)] for layer in layers]
@@ -57,8 +60,11 @@ def test_every_named_package_or_module_exists():
 
 
 def test_every_module_file_the_page_names_exists():
-    files = {p.relative_to(ROOT).as_posix() for d in ("axisopt", "tools", "bench", "tests")
-             for p in (ROOT / d).rglob("*.py")}
+    files = {
+        p.relative_to(ROOT).as_posix()
+        for d in ("axisopt", "tools", "bench", "tests")
+        for p in (ROOT / d).rglob("*.py")
+    }
     gone = []
     for name in sorted(set(re.findall(r"`([\w/]+\.py)`", PAGE))):
         if not any(f == name or f.endswith("/" + name) for f in files):

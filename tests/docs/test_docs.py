@@ -39,21 +39,26 @@ from axisopt.cli import main
 ROOT = Path(__file__).resolve().parents[2]
 PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").rglob("*.md"))
 TEXT = {p.relative_to(ROOT).as_posix(): p.read_text(encoding="utf-8") for p in PAGES}
-FENCE = re.compile(r"^(<!-- (?:not-run: (?P<why>[^>]*)|file: (?P<file>[^ >]+)) -->\n)?"
-                   r"```(?P<lang>[a-z]*)\n(?P<body>.*?)^```", re.M | re.S)
+FENCE = re.compile(
+    r"^(<!-- (?:not-run: (?P<why>[^>]*)|file: (?P<file>[^ >]+)) -->\n)?"
+    r"```(?P<lang>[a-z]*)\n(?P<body>.*?)^```",
+    re.M | re.S,
+)
 
 # Blocks shown but not run, with the reason (page, first words of the block).
 NOT_RUN = {
     ("README.md", "python3 -m venv .venv && .venv/bin/pip install -q -e . &&"),
-    ("README.md", "python3 -m venv .venv && .venv/bin/pip install -q -e \".[test,all]\""),
+    ("README.md", 'python3 -m venv .venv && .venv/bin/pip install -q -e ".[test,all]"'),
     ("docs/install.md", "python3 -m venv .venv && .venv/bin/pip install -q -e . &&"),
-    ("docs/install.md", "python3 -m venv .venv && .venv/bin/pip install -q -e \".[test,all]\""),
+    ("docs/install.md", 'python3 -m venv .venv && .venv/bin/pip install -q -e ".[test,all]"'),
     ("docs/howto-dask.md", "dask scheduler --port 8786"),
     ("docs/solve.md", "axisopt solve problems/teaching_problem.yaml --method bonmin"),
 }
 
-# Commands whose output may exceed 100 columns (none now: compare prints designs in blocks that fit, diagnose
-# wraps the calibration lines); kept so an exception is explicit and named here if one is ever needed.
+# Commands whose output may exceed 100 columns (none now: compare prints designs in blocks that fit,
+# diagnose
+# wraps the calibration lines); kept so an exception is explicit and named here if one is ever
+# needed.
 WIDE: dict = {}
 
 
@@ -62,9 +67,10 @@ def _fences():
     out = []
     for page, text in TEXT.items():
         for m in FENCE.finditer(text):
-            line = text[:m.start("lang")].count("\n") + 1
+            line = text[: m.start("lang")].count("\n") + 1
             body = m.group("body")
-            if m.group("file"):  # a file the reader is asked to write: the test writes it in the page's dir
+            # a file the reader is asked to write: the test writes it in the page's dir
+            if m.group("file"):
                 out.append((page, line, "file", (m.group("file"), body), None))
             else:
                 out.append((page, line, m.group("lang"), body, m.group("why")))
@@ -97,8 +103,16 @@ def _steps():
                 for part in cmd.split("&&"):
                     part = part.split("|")[0].strip()
                     if part:
-                        assert part.startswith("axisopt "), f"{page}:{line + i}: not an axisopt command: {part!r}"
-                        out.append((f"{page}:{line + i}", "shell", (part, int(want.group(1)) if want else 0)))
+                        assert part.startswith("axisopt "), (
+                            f"{page}:{line + i}: not an axisopt command: {part!r}"
+                        )
+                        out.append(
+                            (
+                                f"{page}:{line + i}",
+                                "shell",
+                                (part, int(want.group(1)) if want else 0),
+                            )
+                        )
     return out
 
 
@@ -144,6 +158,7 @@ def pages(tmp_path_factory):
         if page not in made:
             made[page] = _Page(tmp_path_factory.mktemp(page.replace("/", "_").replace(".", "_")))
         return made[page]
+
     return get
 
 
@@ -156,8 +171,14 @@ def test_docs_have_runnable_blocks():
 def test_not_run_blocks_are_the_listed_ones():
     found = {(page, body.strip()) for page, _, _, body, why in FENCES if why is not None}
     assert all(isinstance(b, str) for _, b in found)
-    assert all(why.strip() for *_, why in FENCES if why is not None), "a not-run block without a reason"
-    matched = {(page, start) for page, start in NOT_RUN if any(p == page and b.startswith(start) for p, b in found)}
+    assert all(why.strip() for *_, why in FENCES if why is not None), (
+        "a not-run block without a reason"
+    )
+    matched = {
+        (page, start)
+        for page, start in NOT_RUN
+        if any(p == page and b.startswith(start) for p, b in found)
+    }
     assert matched == NOT_RUN, f"listed but not found: {NOT_RUN - matched}"
     assert len(found) == len(NOT_RUN), f"not-run blocks not listed here: {sorted(found)}"
 
@@ -173,7 +194,9 @@ def _check_quoted(where, cmd, quoted, out):
         want = q[:-3] if prefix else q
         while i < len(got) and not (got[i].startswith(want) if prefix else got[i] == want):
             i += 1
-        assert i < len(got), f"{where}: line quoted under '{cmd}' not in its output (in order): {q!r}"
+        assert i < len(got), (
+            f"{where}: line quoted under '{cmd}' not in its output (in order): {q!r}"
+        )
         i += 1
 
 
@@ -196,15 +219,17 @@ def test_block_runs_as_shown(where, kind, payload, pages):
         got, out = _run(cmd, page.dir)
         assert got == rc, f"{where}: '{cmd}' exited {got}, the page says {rc}"
         wide = [ln for ln in out.splitlines() if len(ln) > 100]
-        assert not wide or any(" ".join(cmd.split()).startswith(w) for w in WIDE), \
+        assert not wide or any(" ".join(cmd.split()).startswith(w) for w in WIDE), (
             f"{where}: '{cmd}' prints lines wider than 100 columns: {wide[0]!r}"
+        )
     else:
         test = doctest.DocTestParser().get_doctest(payload, page.globs, where, where, 0)
         runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
         buf = io.StringIO()
         with _in_scratch(page.dir):
             runner.run(test, out=buf.write, clear_globs=False)
-        page.globs.update(test.globs)  # DocTest copies its namespace: carry it to the page's next block
+        # DocTest copies its namespace: carry it to the page's next block
+        page.globs.update(test.globs)
         assert runner.failures == 0, buf.getvalue()
 
 
@@ -217,43 +242,75 @@ def _close(readme_value: str, printed: str) -> bool:
 XJTU_UP = "axisopt diagnose problems/data/xjtu/xjtu_up_friction.csv --design problems/data/xjtu/xjtu_rig.yaml"
 # (page, command, regex on the page's prose, regex on the output): each group pair is one figure
 FIGURES = [
-    ("docs/solve.md", "axisopt solve problems/vertical_problem.yaml",
-     r"raising max drag torque to ([\d.]+) N\.m buys \+([\d.]+) N/um\" on the vertical problem",
-     r"raising max drag torque to ([\d.]+) N\.m buys \+([\d.]+) N/um"),
-    ("docs/diagnose.md", "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
-     r"`support_condition` wins \(dBIC (-[\d.]+), held-out gain (\d+) %\)",
-     r"support_condition\s+(-[\d.]+)\s+held-out gain (\d+) %"),
-    ("docs/diagnose.md", "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
-     r"carrying ([\d.]+) ± ([\d.]+) N/um",
-     r"far_end_stiffness = ([\d.]+) ± ([\d.]+) N/um"),
-    ("docs/diagnose.md", "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml "
-     "--save-calibration cal.yaml",
-     r"modulus comes back to ([\d.]+) ±",
-     r"screw modulus ([\d.]+) GPa applied"),
-    ("docs/diagnose.md", "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
-     r"Held-out RMSE falls from ([\d.]+) um to\s+([\d.]+) um",
-     r"held-out RMSE \S+: ([\d.]+) -> ([\d.]+) um(?s:.*)"),
-    ("docs/diagnose.md", XJTU_UP,
-     r"friction falls ([\d.]+) ± ([\d.]+) % of its initial value per 35 h",
-     r"preload_loss_rate = ([\d.]+) ± ([\d.]+) percent"),
-    ("docs/diagnose.md", XJTU_UP,
-     r"held-out RMSE ([\d.]+) -> ([\d.]+) N.m over held-out cycles \(gain (\d+) %\)",
-     r"(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain \d+ %\); ([\d.]+) -> ([\d.]+) N.m at the screw"),
-    ("docs/diagnose.md", "axisopt diagnose problems/data/table_x_run_est.csv problems/data/table_x_run_val.csv "
-     "--design problems/data/table_x.yaml",
-     r"The IV fit gives Fs - Fc = ([\d.]+) ± ([\d.]+) N and vs = ([\d.]+) mm/s",
-     r"final fit(?s:.*)Fs\s+([\d.]+) ± ([\d.]+) N(?s:.*)vs\s+([\d.]+) mm/s"),
-    ("docs/diagnose.md", "axisopt diagnose problems/data/table_x_run_est.csv problems/data/table_x_run_val.csv "
-     "--design problems/data/table_x.yaml",
-     r"`stribeck` wins: dBIC (-[\d.]+), validation gain (\d+) %",
-     r"stribeck\s+dBIC\s+(-[\d.]+)\s+gain\s+([\d.]+) %"),
-    ("docs/diagnose.md", XJTU_UP.replace("_up_", "_down_"),
-     r"The 'down' screw gives ([\d.]+) % per cycle \(gain (\d+) %\)",
-     r"preload_loss_rate = ([\d.]+) ±(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain (\d+) %\)"),
+    (
+        "docs/solve.md",
+        "axisopt solve problems/vertical_problem.yaml",
+        r"raising max drag torque to ([\d.]+) N\.m buys \+([\d.]+) N/um\" on the vertical problem",
+        r"raising max drag torque to ([\d.]+) N\.m buys \+([\d.]+) N/um",
+    ),
+    (
+        "docs/diagnose.md",
+        "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
+        r"`support_condition` wins \(dBIC (-[\d.]+), held-out gain (\d+) %\)",
+        r"support_condition\s+(-[\d.]+)\s+held-out gain (\d+) %",
+    ),
+    (
+        "docs/diagnose.md",
+        "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
+        r"carrying ([\d.]+) ± ([\d.]+) N/um",
+        r"far_end_stiffness = ([\d.]+) ± ([\d.]+) N/um",
+    ),
+    (
+        "docs/diagnose.md",
+        "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml "
+        "--save-calibration cal.yaml",
+        r"modulus comes back to ([\d.]+) ±",
+        r"screw modulus ([\d.]+) GPa applied",
+    ),
+    (
+        "docs/diagnose.md",
+        "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
+        r"Held-out RMSE falls from ([\d.]+) um to\s+([\d.]+) um",
+        r"held-out RMSE \S+: ([\d.]+) -> ([\d.]+) um(?s:.*)",
+    ),
+    (
+        "docs/diagnose.md",
+        XJTU_UP,
+        r"friction falls ([\d.]+) ± ([\d.]+) % of its initial value per 35 h",
+        r"preload_loss_rate = ([\d.]+) ± ([\d.]+) percent",
+    ),
+    (
+        "docs/diagnose.md",
+        XJTU_UP,
+        r"held-out RMSE ([\d.]+) -> ([\d.]+) N.m over held-out cycles \(gain (\d+) %\)",
+        r"(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain \d+ %\); ([\d.]+) -> ([\d.]+) N.m at the screw",
+    ),
+    (
+        "docs/diagnose.md",
+        "axisopt diagnose problems/data/table_x_run_est.csv problems/data/table_x_run_val.csv "
+        "--design problems/data/table_x.yaml",
+        r"The IV fit gives Fs - Fc = ([\d.]+) ± ([\d.]+) N and vs = ([\d.]+) mm/s",
+        r"final fit(?s:.*)Fs\s+([\d.]+) ± ([\d.]+) N(?s:.*)vs\s+([\d.]+) mm/s",
+    ),
+    (
+        "docs/diagnose.md",
+        "axisopt diagnose problems/data/table_x_run_est.csv problems/data/table_x_run_val.csv "
+        "--design problems/data/table_x.yaml",
+        r"`stribeck` wins: dBIC (-[\d.]+), validation gain (\d+) %",
+        r"stribeck\s+dBIC\s+(-[\d.]+)\s+gain\s+([\d.]+) %",
+    ),
+    (
+        "docs/diagnose.md",
+        XJTU_UP.replace("_up_", "_down_"),
+        r"The 'down' screw gives ([\d.]+) % per cycle \(gain (\d+) %\)",
+        r"preload_loss_rate = ([\d.]+) ±(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain (\d+) %\)",
+    ),
 ]
 
 
-@pytest.mark.parametrize("page, cmd, in_readme, in_output", FIGURES, ids=[f"figure{i}" for i in range(len(FIGURES))])
+@pytest.mark.parametrize(
+    "page, cmd, in_readme, in_output", FIGURES, ids=[f"figure{i}" for i in range(len(FIGURES))]
+)
 def test_quoted_figures_match(page, cmd, in_readme, in_output, tmp_path):
     text = TEXT[page]
     r = re.search(in_readme, " ".join(text.split()) if "\\s" not in in_readme else text)
@@ -267,8 +324,10 @@ def test_quoted_figures_match(page, cmd, in_readme, in_output, tmp_path):
 
 def test_noise_floor_quoted(tmp_path):
     r = re.search(r"at the ([\d.]+) um noise floor", " ".join(TEXT["docs/diagnose.md"].split()))
-    _, out = _run("axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
-                  tmp_path)
+    _, out = _run(
+        "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
+        tmp_path,
+    )
     o = re.search(r"noise floor ([\d.]+) um", out)
     assert r and o and _close(r.group(1), o.group(1))
 
@@ -292,8 +351,13 @@ def _yaml_examples():
         if lang != "yaml" or why is not None:
             continue
         doc = yaml.safe_load(body.replace("{...}", "...")) or {}
-        kind = ("study" if "sweep" in doc else "problem" if {"objective", "limits", "catalog"} & set(doc)
-                else "design")
+        kind = (
+            "study"
+            if "sweep" in doc
+            else "problem"
+            if {"objective", "limits", "catalog"} & set(doc)
+            else "design"
+        )
         out.append((f"{page}:{line}", kind, doc))
     return out
 
@@ -308,7 +372,11 @@ def _unknown_keys(value, schema, defs, path="") -> list[str]:
         return min(found, key=len)
     if isinstance(value, dict):
         if schema.get("type") not in ("object", None) or "properties" not in schema:
-            return [] if schema.get("additionalProperties", True) is not False else [f"{path}: {sorted(value)}"]
+            return (
+                []
+                if schema.get("additionalProperties", True) is not False
+                else [f"{path}: {sorted(value)}"]
+            )
         props, patterns = schema["properties"], schema.get("patternProperties", {})
         bad = []
         for k, v in value.items():
@@ -316,14 +384,20 @@ def _unknown_keys(value, schema, defs, path="") -> list[str]:
             if k in props:
                 bad += _unknown_keys(v, dict(props[k]), defs, f"{path}.{k}".lstrip("."))
             elif matching:
-                bad += _unknown_keys(v, dict(patterns[matching[0]]), defs, f"{path}.{k}".lstrip("."))
+                bad += _unknown_keys(
+                    v, dict(patterns[matching[0]]), defs, f"{path}.{k}".lstrip(".")
+                )
             elif schema.get("additionalProperties", True) is False:
                 bad.append(f"{path}.{k}".lstrip("."))
             elif isinstance(schema.get("additionalProperties"), dict):
-                bad += _unknown_keys(v, dict(schema["additionalProperties"]), defs, f"{path}.{k}".lstrip("."))
+                bad += _unknown_keys(
+                    v, dict(schema["additionalProperties"]), defs, f"{path}.{k}".lstrip(".")
+                )
         return bad
     if isinstance(value, list) and isinstance(schema.get("items"), dict):
-        return [b for v in value for b in _unknown_keys(v, dict(schema["items"]), defs, f"{path}[]")]
+        return [
+            b for v in value for b in _unknown_keys(v, dict(schema["items"]), defs, f"{path}[]")
+        ]
     return []
 
 
@@ -338,7 +412,8 @@ def test_yaml_examples_use_known_keys(where, kind, doc):
 
     schema = json_schema(kind)
     bad = _unknown_keys(doc, dict(schema), schema.get("$defs", {}))
-    if kind == "study":  # a swept key is a dotted path into the problem file: it must name a problem key
+    # a swept key is a dotted path into the problem file: it must name a problem key
+    if kind == "study":
         problem = json_schema("problem")
         for dotted in doc.get("sweep", {}):
             node = {k: "..." for k in [dotted.split(".")[-1]]}
@@ -352,10 +427,19 @@ def test_yaml_key_check_finds_a_misspelt_key():
     from axisopt.schema import json_schema
 
     schema = json_schema("design")
-    doc = {"axis": {"stroke": "800 mm", "duty_cycle": [{"move": "300 mm", "sped": "2 m/min"}, {"dwell": "1 s"}]},
-           "parts": {"screw": "x", "nutt": "y"}, "catalgs": []}
-    assert sorted(_unknown_keys(doc, dict(schema), schema["$defs"])) == ["axis.duty_cycle[].sped", "catalgs",
-                                                                         "parts.nutt"]
+    doc = {
+        "axis": {
+            "stroke": "800 mm",
+            "duty_cycle": [{"move": "300 mm", "sped": "2 m/min"}, {"dwell": "1 s"}],
+        },
+        "parts": {"screw": "x", "nutt": "y"},
+        "catalgs": [],
+    }
+    assert sorted(_unknown_keys(doc, dict(schema), schema["$defs"])) == [
+        "axis.duty_cycle[].sped",
+        "catalgs",
+        "parts.nutt",
+    ]
     study = {"name": "s", "base": "p.yaml", "sweep": {"axis.strok": [1], "limits.max_cost": [2]}}
     with pytest.raises(AssertionError, match=r"sweep: axis\.strok'"):
         test_yaml_examples_use_known_keys("x", "study", study)
@@ -367,9 +451,18 @@ INLINE = re.compile(r"(?<!`)`(axisopt [a-z][^`]*)`(?!`)")
 def _inline_commands():
     """(page, command) of every ``axisopt ...`` command quoted inline in the prose (not in a fenced block),
     and of the not-run blocks' axisopt commands (shown, not run: they must at least parse)."""
-    inline = [(page, m.group(1)) for page, text in TEXT.items() for m in INLINE.finditer(FENCE.sub("", text))]
-    shown = [(page, ln.partition("#")[0].strip()) for page, _, _, body, why in FENCES if why is not None
-             for ln in body.replace("\\\n", " ").splitlines() if ln.startswith("axisopt ")]
+    inline = [
+        (page, m.group(1))
+        for page, text in TEXT.items()
+        for m in INLINE.finditer(FENCE.sub("", text))
+    ]
+    shown = [
+        (page, ln.partition("#")[0].strip())
+        for page, _, _, body, why in FENCES
+        if why is not None
+        for ln in body.replace("\\\n", " ").splitlines()
+        if ln.startswith("axisopt ")
+    ]
     return inline + shown
 
 
@@ -394,23 +487,32 @@ def _inline_problems(cmd: str) -> list[str]:
             break
         sub, rest = inner.choices[rest[0]], rest[1:]
     options = {s for a in sub._actions for s in a.option_strings}
-    bad = [f"unknown option {t.split('=')[0]}" for t in rest
-           if t.startswith("--") and t.split("=")[0] not in options]
+    bad = [
+        f"unknown option {t.split('=')[0]}"
+        for t in rest
+        if t.startswith("--") and t.split("=")[0] not in options
+    ]
     alternatives = [t.split("|") if "|" in t and not t.startswith("-") else [t] for t in argv]
     for variant in itertools.product(*alternatives):
         err = io.StringIO()
         try:
             with contextlib.redirect_stderr(err):
                 parser.parse_args(list(variant))
-        except (SystemExit, Exception) as e:  # the CLI's parser raises InputError, argparse SystemExit
+        # the CLI's parser raises InputError, argparse SystemExit
+        except (SystemExit, Exception) as e:
             msg = f"{e} {err.getvalue()}"
-            placeholder = any((t.isupper() or "..." in t or t.split(".")[0].isupper()) and t in msg for t in variant)
+            placeholder = any(
+                (t.isupper() or "..." in t or t.split(".")[0].isupper()) and t in msg
+                for t in variant
+            )
             if "arguments are required" not in msg and not placeholder:
                 bad.append(msg.strip())
     return bad
 
 
-@pytest.mark.parametrize("page, cmd", _inline_commands(), ids=[f"{p}-{c[:40]}" for p, c in _inline_commands()])
+@pytest.mark.parametrize(
+    "page, cmd", _inline_commands(), ids=[f"{p}-{c[:40]}" for p, c in _inline_commands()]
+)
 def test_inline_commands_parse(page, cmd):
     """A command quoted in the prose uses options and values the parser accepts (so a renamed flag or a
     removed choice cannot stay in the text)."""
@@ -418,8 +520,12 @@ def test_inline_commands_parse(page, cmd):
 
 
 def test_inline_check_finds_a_stale_flag():
-    assert _inline_problems("axisopt solve --methd exhaustive")[0] == "unknown option --methd"  # problem omitted
-    assert "invalid choice: 'exhaustiv'" in _inline_problems("axisopt solve p.yaml --method exhaustiv")[0]
+    # problem omitted
+    assert _inline_problems("axisopt solve --methd exhaustive")[0] == "unknown option --methd"
+    assert (
+        "invalid choice: 'exhaustiv'"
+        in _inline_problems("axisopt solve p.yaml --method exhaustiv")[0]
+    )
     assert "invalid choice: 'gears'" in _inline_problems("axisopt parts motors|gears")[0]
     assert not _inline_problems("axisopt parts motors|couplings")
     assert not _inline_problems("axisopt schema KIND")

@@ -24,7 +24,9 @@ def _gen():
 def test_generated_page_is_up_to_date(page):
     gen = _gen()
     text = gen.generate()[page]
-    assert gen.PAGES[page].read_text(encoding="utf-8") == text, "stale: run python tools/gen_docs.py"
+    assert gen.PAGES[page].read_text(encoding="utf-8") == text, (
+        "stale: run python tools/gen_docs.py"
+    )
 
 
 def test_yaml_reference_lists_every_limit_check_and_column():
@@ -69,7 +71,12 @@ def test_site_builds_strict(tmp_path):
     mkdocs = shutil.which("mkdocs") or str(Path(sys.executable).with_name("mkdocs"))
     if not Path(mkdocs).exists():
         pytest.skip("mkdocs is not installed (extra 'docs' or 'test')")
-    r = subprocess.run([mkdocs, "build", "--strict", "--site-dir", str(tmp_path / "site")], cwd=ROOT,
-                       capture_output=True, text=True, timeout=300)
+    r = subprocess.run(
+        [mkdocs, "build", "--strict", "--site-dir", str(tmp_path / "site")],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert r.returncode == 0, r.stderr[-2000:]
     assert (tmp_path / "site" / "tutorial" / "index.html").exists()

@@ -25,7 +25,8 @@ def assert_timesynth_axis(plant):
     return plant
 
 
-# ----------------------------------------------------------------------------------------------- measured tables
+# -----------------------------------------------------------------------------------------------
+# measured tables
 def write(tmp_path, text, name="d.csv"):
     p = tmp_path / name
     p.write_text(text)
@@ -37,9 +38,16 @@ def dataset_csv(ds, path, torque_lead=None, efficiency=None):
     ``efficiency``) its friction force as screw drag torque."""
     cols = dict(ds.columns)
     head, data = [], []
-    units = {"position": ("mm", 1e3), "force": ("N", 1.0), "displacement": ("um", 1e6), "direction": ("", 1.0),
-             "velocity": ("mm/s", 1e3), "normal_load": ("N", 1.0), "friction_force": ("N", 1.0),
-             "frequency": ("Hz", 1.0)}
+    units = {
+        "position": ("mm", 1e3),
+        "force": ("N", 1.0),
+        "displacement": ("um", 1e6),
+        "direction": ("", 1.0),
+        "velocity": ("mm/s", 1e3),
+        "normal_load": ("N", 1.0),
+        "friction_force": ("N", 1.0),
+        "frequency": ("Hz", 1.0),
+    }
     if torque_lead is not None:  # the same friction measured as screw torque: T = F l / (2 pi eta)
         cols["drag_torque"] = cols.pop("friction_force") * torque_lead / (2 * math.pi * efficiency)
         units["drag_torque"] = ("N.m", 1.0)
@@ -53,10 +61,13 @@ def dataset_csv(ds, path, torque_lead=None, efficiency=None):
 
 
 def coulomb(plant):
-    return plant.coulomb + plant.mu * plant.weight_on_guides  # the design's friction level at the table [N]
+    # the design's friction level at the table [N]
+    return plant.coulomb + plant.mu * plant.weight_on_guides
 
 
-def friction_table(path, law, *, speeds=SPEEDS, both=True, noise=5.0, seed=1, rep=2, magnitudes=False):
+def friction_table(
+    path, law, *, speeds=SPEEDS, both=True, noise=5.0, seed=1, rep=2, magnitudes=False
+):
     """A friction table from ``law(v)`` [N] at ``speeds`` [m/s] (both directions unless ``both=False``),
     ``rep`` readings each, Gaussian noise of ``noise`` [N]."""
     rng = np.random.default_rng(seed)
@@ -69,12 +80,18 @@ def friction_table(path, law, *, speeds=SPEEDS, both=True, noise=5.0, seed=1, re
     return path
 
 
-# -------------------------------------------------------------------------------------------------- time records
+# --------------------------------------------------------------------------------------------------
+# time records
 def baseline_truth(rng, **kw):
     """A random baseline axis (mass, viscous, Coulomb, offset of random sign) drawn from ``rng``, plus ``kw``."""
     sign = rng.choice([-1.0, 1.0])
-    return AxisTruth(mass=rng.uniform(300, 900), viscous=rng.uniform(600, 2500), coulomb=rng.uniform(200, 600),
-                     offset=sign * rng.uniform(20, 60), **kw)
+    return AxisTruth(
+        mass=rng.uniform(300, 900),
+        viscous=rng.uniform(600, 2500),
+        coulomb=rng.uniform(200, 600),
+        offset=sign * rng.uniform(20, 60),
+        **kw,
+    )
 
 
 def truth_for(seed, **kw):

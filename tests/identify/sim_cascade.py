@@ -38,7 +38,8 @@ class Axis:
     normal_amp: float = 0.0  # extra normal load range [N] (piecewise constant, 0..normal_amp)
     beta: float = 0.0  # viscous friction falls as exp(-beta (T - T0)) [1/K]
     dfc_dT: float = 0.0  # Coulomb change per K [N/K]
-    temp: tuple = ()  # (T0 [degC], rise [K], tau [s]): T = T0 + rise (1 - exp(-t/tau)) from the run's start
+    # (T0 [degC], rise [K], tau [s]): T = T0 + rise (1 - exp(-t/tau)) from the run's start
+    temp: tuple = ()
     temp_start: float = 0.0  # [K] added at the run's start (a run that starts warm)
     cog_amp: float = 0.0  # cogging force at the table [N], periodic in the motor angle
     cog_order: int = 0  # cogging periods per motor turn
@@ -57,7 +58,8 @@ class Loop:
     rho: float = 0.0  # AR(1) coefficient of the force noise (0: white)
     quantum: float = 1e-7  # 0.1 um scale
     substeps: int = 4
-    current_hz: float = 0.0  # bandwidth of the current loop (0: the force is the command, held per sample)
+    # bandwidth of the current loop (0: the force is the command, held per sample)
+    current_hz: float = 0.0
 
 
 def reference(rng, duration, fs, stroke, vmax=0.3):
@@ -68,7 +70,7 @@ def reference(rng, duration, fs, stroke, vmax=0.3):
     x, k = 0.5 * stroke, 0
     while k < n:
         dwell = int(rng.uniform(0.15, 0.4) * fs)
-        r[k:k + dwell] = x
+        r[k : k + dwell] = x
         k += dwell
         v = math.exp(rng.uniform(math.log(0.003), math.log(vmax)))
         acc = rng.uniform(0.8, 3.0)
@@ -90,11 +92,17 @@ def reference(rng, duration, fs, stroke, vmax=0.3):
         T = 2 * ta + tc
         m = int(T * fs)
         t = np.arange(1, m + 1) / fs
-        s = np.where(t < ta, 0.5 * acc * t**2,
-                     np.where(t < ta + tc, 0.5 * acc * ta**2 + v * (t - ta),
-                              abs(d) - 0.5 * acc * np.clip(T - t, 0, None) ** 2))
+        s = np.where(
+            t < ta,
+            0.5 * acc * t**2,
+            np.where(
+                t < ta + tc,
+                0.5 * acc * ta**2 + v * (t - ta),
+                abs(d) - 0.5 * acc * np.clip(T - t, 0, None) ** 2,
+            ),
+        )
         seg = x + math.copysign(1.0, d) * s
-        r[k:k + m] = seg[: max(0, min(m, n - k))]
+        r[k : k + m] = seg[: max(0, min(m, n - k))]
         k += m
         x = target
     w = max(1, int(0.04 * fs))  # jerk limited: the acceleration ramps over 40 ms (a moving average)
@@ -108,10 +116,12 @@ def _steps(rng, n, fs, amp, lo_frac=-1.0):
     k = 0
     while k < n:
         m = int(rng.uniform(0.5, 2.0) * fs)
-        out[k:k + m] = amp * rng.uniform(lo_frac, 1.0)
+        out[k : k + m] = amp * rng.uniform(lo_frac, 1.0)
         k += m
     w = max(1, int(0.3 * fs))
-    return np.convolve(np.r_[np.full(w, out[0]), out, np.full(w, out[-1])], np.ones(w) / w, "same")[w:-w]
+    return np.convolve(np.r_[np.full(w, out[0]), out, np.full(w, out[-1])], np.ones(w) / w, "same")[
+        w:-w
+    ]
 
 
 def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
@@ -151,7 +161,8 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
         ev = vcmd - vf
         integ += ki * ev * dt
         u = kv * ev + integ
-        us[k] = u if not loop.current_hz else fa  # the recorded force: the command, or the current loop's
+        # the recorded force: the command, or the current loop's
+        us[k] = u if not loop.current_hz else fa
         dT = temp_c[k] - (ax.temp[0] if ax.temp else 20.0)
         fc_t = ax.fc + ax.dfc_dT * dT
         fv_t = ax.fv * math.exp(-ax.beta * dT)
@@ -159,7 +170,9 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
             fa += (u - fa) * cl  # the current loop: the force follows the command
             cog = 0.0
             if ax.cog_amp:
-                cog = ax.cog_amp * math.sin(2 * math.pi * ax.cog_order * x / ax.travel_per_motor_turn)
+                cog = ax.cog_amp * math.sin(
+                    2 * math.pi * ax.cog_order * x / ax.travel_per_motor_turn
+                )
             drive = fa - load[k] - ax.offset - cog
             level = fc_t + ax.mu * normal[k] + ax.nut_loss * abs(fa)
             if v == 0.0:
@@ -177,11 +190,19 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
                 vn = 0.0
             v = vn
             x += v * h
-    if not loop.current_hz:  # the current sensor averages over the sample period centred on the instant
+    # the current sensor averages over the sample period centred on the instant
+    if not loop.current_hz:
         us = np.r_[us[0], 0.5 * (us[1:] + us[:-1])]
     pos = np.round(xs / loop.quantum) * loop.quantum
-    return {"time": tt, "position": pos, "reference": r, "force": us + noise, "external_force": -load,
-            "normal_load": normal, "temperature": temp_c}
+    return {
+        "time": tt,
+        "position": pos,
+        "reference": r,
+        "force": us + noise,
+        "external_force": -load,
+        "normal_load": normal,
+        "temperature": temp_c,
+    }
 
 
 def write(path, rec: dict, columns=("external_force",), header_lines=(), current_gain=None):

@@ -47,7 +47,9 @@ def test_calibration_lists_what_evaluate_cannot_represent(tmp_path):
     assert any(s.startswith("stribeck: not representable") for s in d["not_applied"])
     assert any("guide friction force" in s for s in d["applied"])
     new = apply_calibration(design, tmp_path / "c.yaml")
-    assert plant_from_design(new).coulomb == pytest.approx(diag.final.value("coulomb_friction"), rel=1e-6)
+    assert plant_from_design(new).coulomb == pytest.approx(
+        diag.final.value("coulomb_friction"), rel=1e-6
+    )
 
 
 def test_bad_calibration_file_is_an_input_error(tmp_path):
@@ -60,17 +62,27 @@ def test_bad_calibration_file_is_an_input_error(tmp_path):
         apply_calibration(load_design(DESIGN), p)
 
 
-@pytest.mark.parametrize("old, new, words", [
-    (None, None, None),  # the file as written applies
-    ("design: {design}", "design: another axis", "calibration is for design 'another axis'"),
-    ("screw_modulus:", "screw_modulos:", "did you mean 'screw_modulus'"),
-    ("far_end_stiffness:", "far_end_stifness:", "needs parameter 'far_end_stiffness' (given: far_end_stifness)"),
-    ("kind: stiffness", "kind: stifness", "is not one of"),
-    ("kind: pressure", "kind: force", "'screw_modulus' is a pressure, not a force"),
-    ("    parameters:\n      far_end_stiffness: {{value: 900 N/um, kind: stiffness}}\n", "    parameters: {{}}\n",
-     "lists no parameters"),
-    ("name: support_condition", "name: support_conditon", "did you mean 'support_condition'"),
-])
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        (None, None, None),  # the file as written applies
+        ("design: {design}", "design: another axis", "calibration is for design 'another axis'"),
+        ("screw_modulus:", "screw_modulos:", "did you mean 'screw_modulus'"),
+        (
+            "far_end_stiffness:",
+            "far_end_stifness:",
+            "needs parameter 'far_end_stiffness' (given: far_end_stifness)",
+        ),
+        ("kind: stiffness", "kind: stifness", "is not one of"),
+        ("kind: pressure", "kind: force", "'screw_modulus' is a pressure, not a force"),
+        (
+            "    parameters:\n      far_end_stiffness: {{value: 900 N/um, kind: stiffness}}\n",
+            "    parameters: {{}}\n",
+            "lists no parameters",
+        ),
+        ("name: support_condition", "name: support_conditon", "did you mean 'support_condition'"),
+    ],
+)
 def test_calibration_file_is_validated(tmp_path, capsys, old, new, words):
     """A calibration applies only to its own design, with known keys and kinds (each bad case used to be
     applied silently or end in a KeyError traceback)."""
@@ -86,11 +98,14 @@ def test_calibration_file_is_validated(tmp_path, capsys, old, new, words):
         assert rc == 2 and "\n" not in err and words in err, err
 
 
-@pytest.mark.parametrize("old, new", [
-    ("value: 200 GPa", "value: 0 GPa"),
-    ("value: 200 GPa", "value: -202.7 GPa"),
-    ("value: 900 N/um", "value: -900 N/um"),
-])
+@pytest.mark.parametrize(
+    "old, new",
+    [
+        ("value: 200 GPa", "value: 0 GPa"),
+        ("value: 200 GPa", "value: -202.7 GPa"),
+        ("value: 900 N/um", "value: -900 N/um"),
+    ],
+)
 def test_calibration_values_must_be_physical(tmp_path, capsys, old, new):
     """A zero or negative modulus was a ZeroDivisionError / math domain traceback; a negative stiffness
     was applied."""
@@ -104,13 +119,35 @@ def test_calibration_values_must_be_physical(tmp_path, capsys, old, new):
 def test_verdict_numbers_are_the_saved_calibration(plant, tmp_path, capsys):
     """Two effects accepted in two rounds: the second round refits the first effect's value, and what the
     verdict and JSON print is what --save-calibration writes."""
-    ds = simulate(plant, "friction", friction_doe(), baseline=BASELINE["friction"], noise=0.01, seed=7,
-                  effects={"stribeck": {"stribeck_rise": 200.0, "stribeck_velocity": 2e-3},
-                           "load_dependent_friction": {"friction_coefficient": 0.005}})
+    ds = simulate(
+        plant,
+        "friction",
+        friction_doe(),
+        baseline=BASELINE["friction"],
+        noise=0.01,
+        seed=7,
+        effects={
+            "stribeck": {"stribeck_rise": 200.0, "stribeck_velocity": 2e-3},
+            "load_dependent_friction": {"friction_coefficient": 0.005},
+        },
+    )
     data = dataset_csv(ds, tmp_path / "fric.csv")
     js, cal = tmp_path / "d.json", tmp_path / "cal.yaml"
-    assert main(["diagnose", str(data), "--design", str(DESIGN), "--json", str(js),
-                 "--save-calibration", str(cal)]) == 0
+    assert (
+        main(
+            [
+                "diagnose",
+                str(data),
+                "--design",
+                str(DESIGN),
+                "--json",
+                str(js),
+                "--save-calibration",
+                str(cal),
+            ]
+        )
+        == 0
+    )
     d = json.loads(js.read_text())
     saved = yaml.safe_load(cal.read_text())
     assert len(d["accepted"]) == 2

@@ -17,7 +17,9 @@ from axisopt.report.timediag import time_diagnosis_text
 
 
 def _design(tmp_path, ratio):
-    text = DESIGN.read_text().replace("  end_margin: 150 mm\n", f"  end_margin: 150 mm\n  reduction_ratio: {ratio}\n")
+    text = DESIGN.read_text().replace(
+        "  end_margin: 150 mm\n", f"  end_margin: 150 mm\n  reduction_ratio: {ratio}\n"
+    )
     path = tmp_path / "red.yaml"
     path.write_text(text)
     return path
@@ -30,8 +32,10 @@ def test_cogging_through_a_reduction_is_stated_in_motor_orders(tmp_path, order, 
     assert plant.reduction == 2.0
     ax = Axis(cog_amp=amp, cog_order=order, travel_per_motor_turn=plant.lead / 2.0)
     loop = Loop(fs=1000.0)
-    runs = [write(tmp_path / "e.csv", simulate(ax, loop, 8.0, 71), ()),
-            write(tmp_path / "v.csv", simulate(ax, loop, 5.0, 571), ())]
+    runs = [
+        write(tmp_path / "e.csv", simulate(ax, loop, 8.0, 71), ()),
+        write(tmp_path / "v.csv", simulate(ax, loop, 5.0, 571), ()),
+    ]
     diag = diagnose_time_files(runs, plant=plant)
     sig = [s for s in unexplained(diag)["signatures"] if s["kind"] == "position_periodic"]
     assert sig, unexplained(diag)["signatures"]
@@ -43,9 +47,20 @@ def test_cogging_through_a_reduction_is_stated_in_motor_orders(tmp_path, order, 
 
 
 def test_a_reduction_of_zero_is_a_one_line_error(tmp_path):
-    out = subprocess.run([sys.executable, "-m", "axisopt", "diagnose", "problems/data/table_x_run_est.csv",
-                          "--design", str(_design(tmp_path, 0))], capture_output=True, text=True,
-                         cwd=DESIGN.parents[2])
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "axisopt",
+            "diagnose",
+            "problems/data/table_x_run_est.csv",
+            "--design",
+            str(_design(tmp_path, 0)),
+        ],
+        capture_output=True,
+        text=True,
+        cwd=DESIGN.parents[2],
+    )
     assert out.returncode == 2
     err = out.stderr.strip().splitlines()
     assert len(err) == 1 and "reduction_ratio" in err[0]

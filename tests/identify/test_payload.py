@@ -86,8 +86,8 @@ def test_a_reduction_of_zero_is_a_one_line_error(tmp_path, capsys):
 def test_a_long_record_is_read_in_windows_that_start_at_rest(tmp_path, plant):
     """The windows of a long record (thresholds lowered here): each starts where the axis rests, the times
     stay the record's, and the filters see each window on its own."""
-    from axisopt.identify.records.record import windowed
     from axisopt.identify.records.regression import make_rows, processing_for
+    from axisopt.identify.records.signal import windowed
 
     rec = read_time_record(
         _run(tmp_path / "e.csv", 0.0, 15, 0.0, fs=500.0, duration=24.0), lead=plant.lead

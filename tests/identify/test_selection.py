@@ -17,10 +17,15 @@ def test_the_pipelines_keep_their_constants():
 def test_reason_is_the_first_criterion_failed_in_each_order():
     assert TABLE_RULE.reason(-20.0, 10.0, "") == ""
     assert TABLE_RULE.reason(-5.0, 1.0, "") == "dBIC -5.0 not below -10"
-    assert TABLE_RULE.reason(-5.0, 1.0, "x = 3") == "dBIC -5.0 not below -10; and it would need x = 3"
+    assert (
+        TABLE_RULE.reason(-5.0, 1.0, "x = 3") == "dBIC -5.0 not below -10; and it would need x = 3"
+    )
     # tables judge plausibility before the gain, time records after it
     assert TABLE_RULE.reason(-20.0, 1.0, "x = 3") == "would need x = 3"
-    assert TIME_RULE.reason(-20.0, 1.0, "x = 3") == "held-out gain 1.0 % below 5 %; and it would need x = 3"
+    assert (
+        TIME_RULE.reason(-20.0, 1.0, "x = 3")
+        == "held-out gain 1.0 % below 5 %; and it would need x = 3"
+    )
     assert TIME_RULE.reason(-20.0, 10.0, "x = 3") == "would need x = 3"
 
 
@@ -38,7 +43,8 @@ def test_the_gain_is_computed_only_when_judged():
 
 def test_a_pair_must_beat_the_better_member_alone():
     assert TIME_RULE.pair_reason(-20.0, 12.0, "", 9.0) == (
-        "held-out gain 12.0 % is not 5 % above the better member alone (9.0 %)")
+        "held-out gain 12.0 % is not 5 % above the better member alone (9.0 %)"
+    )
     assert TIME_RULE.pair_reason(-20.0, 20.0, "", 9.0) == ""
     assert TABLE_RULE.pair_reason(-20.0, 20.0, "x = 3", 9.0) == "would need x = 3"
 

@@ -4,7 +4,8 @@ import numpy as np
 
 SCREWS = ["HIWIN-G-32x20-b4p763", "HIWIN-G-40x20-b6p35", "HIWIN-G-50x20-b6p35"]
 GUIDES = ["HIWIN-HG20-ZA", "HIWIN-HG25-ZA", "HIWIN-HG30-ZA"]
-# the support bearings that fit each screw's journal (two of them per axis: a few designs, a cheap brute force)
+# the support bearings that fit each screw's journal (two of them per axis: a few designs, a cheap
+# brute force)
 BEARINGS = {
     SCREWS[0]: ["HIWIN-WBK20-DF", "HIWIN-WBK25-DF", "HIWIN-WBK25-DFD"],
     SCREWS[1]: ["HIWIN-WBK25-DF", "HIWIN-WBK30-DF", "HIWIN-WBK25-DFD", "HIWIN-WBK30-DFD"],
@@ -12,35 +13,70 @@ BEARINGS = {
 }
 
 
-def _axis(rng, name, carried_by, direction, normal, *, vertical=False, counterweight=False, twin=False,
-          frame=True, at=0.0):
+def _axis(
+    rng,
+    name,
+    carried_by,
+    direction,
+    normal,
+    *,
+    vertical=False,
+    counterweight=False,
+    twin=False,
+    frame=True,
+    at=0.0,
+):
     mass = float(rng.uniform(150, 400))
     screws = list(rng.choice(SCREWS, size=1))
     guides = list(rng.choice(GUIDES, size=2, replace=False))
     bearings = list(rng.choice(BEARINGS[screws[0]], size=2, replace=False))
-    lines = [f"  {name}:", f"    carried_by: {carried_by}", f"    direction: {direction}", f"    normal: {normal}"]
+    lines = [
+        f"  {name}:",
+        f"    carried_by: {carried_by}",
+        f"    direction: {direction}",
+        f"    normal: {normal}",
+    ]
     if frame:
         kf = rng.uniform(500, 3000, 3)
-        lines.append(f"    frame_stiffness: {{x: {kf[0]:.0f} N/um, y: {kf[1]:.0f} N/um, z: {kf[2]:.0f} N/um}}")
+        lines.append(
+            f"    frame_stiffness: {{x: {kf[0]:.0f} N/um, y: {kf[1]:.0f} N/um, z: {kf[2]:.0f} N/um}}"
+        )
     else:
         lines.append("    frame_stiffness: estimate")
     if at:
         lines.append(f"    carried_at: {{height: {at:.0f} mm}}")
-    lines += ["    problem:", "      axis:", f"        stroke: {rng.choice([400, 500, 600])} mm",
-              f"        moving_mass: {mass:.0f} kg", "        mounting: fixed-supported",
-              f"        max_speed: {rng.choice([15, 20])} m/min", f"        axial_load: {rng.uniform(500, 1500):.0f} N",
-              "        acceleration: 2 m/s^2", "        cross_load: 1000 N", "        normal_load: 1000 N"]
+    lines += [
+        "    problem:",
+        "      axis:",
+        f"        stroke: {rng.choice([400, 500, 600])} mm",
+        f"        moving_mass: {mass:.0f} kg",
+        "        mounting: fixed-supported",
+        f"        max_speed: {rng.choice([15, 20])} m/min",
+        f"        axial_load: {rng.uniform(500, 1500):.0f} N",
+        "        acceleration: 2 m/s^2",
+        "        cross_load: 1000 N",
+        "        normal_load: 1000 N",
+    ]
     if vertical:
         lines.append("        orientation: vertical")
     if counterweight:
         lines.append(f"        counterbalance: {{kind: counterweight, mass: {0.8 * mass:.0f} kg}}")
     if twin:
-        lines += ["        table_width: 1500 mm", "        rail_spacing: 1400 mm",
-                  "        twin_drive: {span: 1200 mm, cross_stroke: 800 mm}"]
-    lines += ["      limits:", f"        min_life: {rng.choice([1000, 3000])} h",
-              "      catalog:", "        vendors: [HIWIN]", "        nut_types: [double]", "        drive: no",
-              f"        require: {{screw: [{', '.join(screws)}], guide: [{', '.join(guides)}],",
-              f"                  bearing: [{', '.join(bearings)}]}}"]
+        lines += [
+            "        table_width: 1500 mm",
+            "        rail_spacing: 1400 mm",
+            "        twin_drive: {span: 1200 mm, cross_stroke: 800 mm}",
+        ]
+    lines += [
+        "      limits:",
+        f"        min_life: {rng.choice([1000, 3000])} h",
+        "      catalog:",
+        "        vendors: [HIWIN]",
+        "        nut_types: [double]",
+        "        drive: no",
+        f"        require: {{screw: [{', '.join(screws)}], guide: [{', '.join(guides)}],",
+        f"                  bearing: [{', '.join(bearings)}]}}",
+    ]
     return lines
 
 
@@ -64,9 +100,18 @@ def random_machine(seed: int) -> str:
         vertical = i == cw_at
         if vertical:
             d, nrm = "z", "y"
-        lines += _axis(rng, n, "frame" if i == 0 else names[i - 1], d, nrm, vertical=vertical, counterweight=vertical,
-                       twin=twin and i == 0 and not vertical, frame=bool(rng.random() < 0.7),
-                       at=float(rng.uniform(0, 200)) if i else 0.0)
+        lines += _axis(
+            rng,
+            n,
+            "frame" if i == 0 else names[i - 1],
+            d,
+            nrm,
+            vertical=vertical,
+            counterweight=vertical,
+            twin=twin and i == 0 and not vertical,
+            frame=bool(rng.random() < 0.7),
+            at=float(rng.uniform(0, 200)) if i else 0.0,
+        )
     if rng.random() < 0.15:
         lines += _axis(rng, "W", "frame", "x" if dirs[0][0] != "x" else "y", "z")
     return "\n".join(lines) + "\n"

@@ -6,8 +6,10 @@ import pytest
 from axisopt.machine.chain import chain_modes, dunkerley_frequency, lowest_frequency, strain_shares
 
 
-# Two equal masses on two equal springs (frame - k - m - k - m): omega^2 = (3 -/+ sqrt 5)/2 k/m, the classic
-# two-degree-of-freedom example (S. S. Rao, Mechanical Vibrations, ch. 5; W. T. Thomson, Theory of Vibration
+# Two equal masses on two equal springs (frame - k - m - k - m): omega^2 = (3 -/+ sqrt 5)/2 k/m, the
+# classic
+# two-degree-of-freedom example (S. S. Rao, Mechanical Vibrations, ch. 5; W. T. Thomson, Theory of
+# Vibration
 # with Applications, ch. 5): 0.618 and 1.618 sqrt(k/m).
 @pytest.mark.published
 def test_two_dof_equal_chain_matches_closed_form():
@@ -18,7 +20,8 @@ def test_two_dof_equal_chain_matches_closed_form():
     assert np.sqrt(k / m) * 0.618 / (2 * np.pi) == pytest.approx(f[0], rel=1e-3)
 
 
-# A uniform fixed-free chain of n equal masses and springs: omega_r = 2 sqrt(k/m) sin((2r - 1) pi / (2 (2n + 1))),
+# A uniform fixed-free chain of n equal masses and springs: omega_r = 2 sqrt(k/m) sin((2r - 1) pi /
+# (2 (2n + 1))),
 # r = 1..n (e.g. L. Meirovitch, Fundamentals of Vibrations, the lumped string / rod; Rao, ch. 6).
 @pytest.mark.published
 @pytest.mark.parametrize("n", [2, 3, 5])
@@ -30,12 +33,15 @@ def test_uniform_chain_matches_closed_form(n):
     assert f == pytest.approx(w / (2 * np.pi), rel=1e-12)
 
 
-# Two unequal masses: the 2x2 characteristic equation m1 m2 w^4 - (m1 (k2) + m2 (k1 + k2)) w^2 + k1 k2 = 0,
+# Two unequal masses: the 2x2 characteristic equation m1 m2 w^4 - (m1 (k2) + m2 (k1 + k2)) w^2 + k1
+# k2 = 0,
 # solved here by the quadratic formula (written apart from the code's eigenvalue solve).
 def test_two_dof_unequal_chain_matches_characteristic_equation():
     m1, m2, k1, k2 = 900.0, 300.0, 250e6, 120e6
     a, b, c = m1 * m2, -(m1 * k2 + m2 * (k1 + k2)), k1 * k2
-    w2 = np.sort([(-b - np.sqrt(b * b - 4 * a * c)) / (2 * a), (-b + np.sqrt(b * b - 4 * a * c)) / (2 * a)])
+    w2 = np.sort(
+        [(-b - np.sqrt(b * b - 4 * a * c)) / (2 * a), (-b + np.sqrt(b * b - 4 * a * c)) / (2 * a)]
+    )
     f, _ = chain_modes([m1, m2], [k1, k2])
     assert f == pytest.approx(np.sqrt(w2) / (2 * np.pi), rel=1e-12)
 
@@ -48,7 +54,9 @@ def test_dunkerley_bounds_the_lowest_frequency_from_below_vectorised():
     fd = dunkerley_frequency(m, k)
     assert (fd <= f1 * (1 + 1e-12)).all()
     assert (fd > 0.5 * f1).all()  # a close bound for these chains, not a vacuous one
-    assert f1 == pytest.approx(np.array([chain_modes(mi, ki)[0][0] for mi, ki in zip(m, k)]), rel=1e-12)
+    assert f1 == pytest.approx(
+        np.array([chain_modes(mi, ki)[0][0] for mi, ki in zip(m, k)]), rel=1e-12
+    )
 
 
 def test_softest_spring_carries_most_strain_energy():

@@ -10,7 +10,8 @@ from axisopt.machine.templates import SHIPPED, TEMPLATES
 SEEDS = range(100)
 
 
-@pytest.mark.parametrize("seed", SEEDS[:50])  # the other half in test_joint_more.py (xdist runs the two apart)
+# the other half in test_joint_more.py (xdist runs the two apart)
+@pytest.mark.parametrize("seed", SEEDS[:50])
 def test_default_equals_every_combination_of_every_axis(seed, tmp_path):
     check_default_equals_exhaustive(seed, tmp_path)
 
@@ -25,8 +26,9 @@ def test_the_random_machines_cover_counterweights_twin_drives_and_the_non_monoto
         m = load_machine(path)
         chains = m.branches()
         seen["counterweight"] += any(a.problem.axis.counterbalance is not None for a in m.axes)
-        seen["below a counterweighted axis"] += any(not monotone_in_load(c[i - 1]) for c in chains
-                                                    for i in range(1, len(c)))
+        seen["below a counterweighted axis"] += any(
+            not monotone_in_load(c[i - 1]) for c in chains for i in range(1, len(c))
+        )
         seen["twin drive"] += any(a.problem.axis.twin_drive is not None for a in m.axes)
         seen["two chains"] += len(chains) > 1
     assert min(seen.values()) >= 15, seen
@@ -47,4 +49,3 @@ def test_shipped_machine_joint_never_worse_than_sequential(kind):
         c = sum(1.0 / a.k_axis[d] + 1.0 / a.k_frame[d] for a in res.best.axes)
         assert res.best.k_tool[d] == pytest.approx(1.0 / c, rel=1e-12)
     assert res.best.f_dunkerley <= res.best.f_lowest * (1 + 1e-12)
-

@@ -18,15 +18,26 @@ def _variant(tmp_path, old, new):
     return p
 
 
-@pytest.mark.parametrize("old, new, words", [
-    ("carried_by: Y", "carried_by: X", "carried by itself"),
-    ("    carried_by: frame\n    direction: y", "    carried_by: X\n    direction: y", "cycle"),
-    ("    frame_stiffness: estimate # the column: no figure yet, the stated estimate\n", "", "frame_stiffness"),
-    ("tool_point: {X: 400 mm", "tool_point: {X: 900 mm", "outside axis X's stroke"),
-    ("carried_by: Y", "carried_by: Q", "neither 'frame' nor an axis"),
-    ("normal: y                 # the head's", "normal: z                 # the head's", "direction of travel"),
-    ("moving_mass: 400 kg", "moving_mass: 400", "unit"),
-])
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        ("carried_by: Y", "carried_by: X", "carried by itself"),
+        ("    carried_by: frame\n    direction: y", "    carried_by: X\n    direction: y", "cycle"),
+        (
+            "    frame_stiffness: estimate # the column: no figure yet, the stated estimate\n",
+            "",
+            "frame_stiffness",
+        ),
+        ("tool_point: {X: 400 mm", "tool_point: {X: 900 mm", "outside axis X's stroke"),
+        ("carried_by: Y", "carried_by: Q", "neither 'frame' nor an axis"),
+        (
+            "normal: y                 # the head's",
+            "normal: z                 # the head's",
+            "direction of travel",
+        ),
+        ("moving_mass: 400 kg", "moving_mass: 400", "unit"),
+    ],
+)
 def test_bad_machine_is_one_line_exit_2(tmp_path, capsys, old, new, words):
     p = _variant(tmp_path, old, new)
     with pytest.raises(InputError, match=None) as e:
@@ -38,8 +49,11 @@ def test_bad_machine_is_one_line_exit_2(tmp_path, capsys, old, new, words):
 
 
 def test_an_axis_problem_may_not_set_the_objective(tmp_path):
-    p = _variant(tmp_path, "      limits:\n        max_drag_torque: 2 N.m",
-                 "      objective: stiffness\n      limits:\n        max_drag_torque: 2 N.m")
+    p = _variant(
+        tmp_path,
+        "      limits:\n        max_drag_torque: 2 N.m",
+        "      objective: stiffness\n      limits:\n        max_drag_torque: 2 N.m",
+    )
     with pytest.raises(InputError, match="the machine's"):
         load_machine(p)
 

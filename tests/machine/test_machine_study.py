@@ -145,14 +145,17 @@ def test_the_shipped_machine_study_loads_on_the_shipped_machine():
 
 
 def test_a_machine_study_never_writes_over_its_machine_file(tmp_path):
-    # the base machine named as the table the study writes, in the output directory: refused before any solve
+    # the base machine named as the table the study writes, in the output directory: refused before
+    # any solve
     from axisopt.errors import InputError
 
     (tmp_path / "machines.csv").write_text(random_machine(4))
     before = (tmp_path / "machines.csv").read_text()
     p = tmp_path / "s.yaml"
     p.write_text("name: s\nbase: machines.csv\n" + SWEEP)
-    with pytest.raises(InputError, match="would overwrite the input .*machines.csv with the study's machines.csv"):
+    with pytest.raises(
+        InputError, match="would overwrite the input .*machines.csv with the study's machines.csv"
+    ):
         run_machine_study(load_machine_study(p), tmp_path, workers=0)
     assert (tmp_path / "machines.csv").read_text() == before
     assert not (tmp_path / "cases").exists()

@@ -24,6 +24,8 @@ def test_machine_json(tmp_path):
     assert d["status"] == "optimal"
     best = d["best"]
     assert [a["name"] for a in best["axes"]] == ["Y", "X", "Z"]
-    assert best["lowest_frequency_hz"] >= 60.0 and best["dunkerley_hz"] <= best["lowest_frequency_hz"]
+    assert (
+        best["lowest_frequency_hz"] >= 60.0 and best["dunkerley_hz"] <= best["lowest_frequency_hz"]
+    )
     assert min(best["k_tool_n_per_um"].values()) >= 40.0
     assert d["sequential"]["misses"]  # the designer's sizing misses the frequency limit here

@@ -55,7 +55,8 @@ def test_tool_stiffness_is_the_series_of_every_link_with_blocks_in_parallel(tmp_
     nx, tx = _rigidity("HIWIN-HG25-ZA")
     blocks = 4  # the axis's default carriage: four blocks on two rails
     kfy = {"x": 900.0, "y": 1100.0, "z": 1300.0}
-    # z: across both axes' rails (their blocks' normal rigidity), the bed under Y given, the frame under X the
+    # z: across both axes' rails (their blocks' normal rigidity), the bed under Y given, the frame
+    # under X the
     # stated estimate (as stiff as X's link: its compliance doubled)
     kz = 1.0 / (1 / (blocks * ny) + 1 / kfy["z"] + 2 / (blocks * nx))
     assert md.k_tool[2] * 1e-6 == pytest.approx(kz, rel=1e-9)
@@ -67,7 +68,8 @@ def test_tool_stiffness_is_the_series_of_every_link_with_blocks_in_parallel(tmp_
     kay = by["Y"].k_axis[1] * 1e-6
     ky = 1.0 / (1 / kay + 1 / kfy["y"] + 2 / (blocks * tx))
     assert md.k_tool[1] * 1e-6 == pytest.approx(ky, rel=1e-9)
-    # each drive chain: THK's formula (6) over its components at its softest point is the link the machine reads
+    # each drive chain: THK's formula (6) over its components at its softest point is the link the
+    # machine reads
     import math
 
     from axisopt.model import evaluate

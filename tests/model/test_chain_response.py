@@ -28,4 +28,6 @@ def test_chain_response_equals_axis_response(name):
             np.testing.assert_array_equal(np.asarray(part[k]), np.asarray(full[k]), err_msg=k)
         # a stiffer coupling: the chain's stiffness rises, as in the whole model
         stiff = dict(p, coupling_stiffness=10.0 * float(np.asarray(p["coupling_stiffness"])))
-        assert np.all(chain_response(stiff, x, design.axis.mounting, preload)["k_total"] >= part["k_total"])
+        assert np.all(
+            chain_response(stiff, x, design.axis.mounting, preload)["k_total"] >= part["k_total"]
+        )

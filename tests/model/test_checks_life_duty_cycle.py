@@ -94,16 +94,25 @@ def test_thk_vertical_conveyance_nut_life(tmp_path: Path):
     path = tmp_path / "thk_vertical.yaml"
     path.write_text(DESIGN, encoding="utf-8")
     d = load_design(path)
-    assert d.axis.mean_speed_eff * 60 == pytest.approx(6.0)  # 1.2 m per 12 s cycle: Nm = 600 rpm at lead 10
+    # 1.2 m per 12 s cycle: Nm = 600 rpm at lead 10
+    assert d.axis.mean_speed_eff * 60 == pytest.approx(6.0)
     ev = evaluate(d, use_casadi=False)
     moving = float(ev.values["moving_mass"])
-    assert moving == pytest.approx(50.0)  # THK counts the table and work (m1 + m2); the nut is given no mass
+    # THK counts the table and work (m1 + m2); the nut is given no mass
+    assert moving == pytest.approx(50.0)
     hours = float(ev.values["life"]) / 3600.0
     # THK's Lh with its Fm (492 N) and Nm (600 rpm)
     assert hours == pytest.approx(65_000, rel=0.005)
     # and exactly the cubic mean of the phase loads written out here from THK's formulas
     g, f, a, m = 9.80665, 20.0, 1.5, moving
-    loads = [m * g + f + m * a, m * g + f, m * g + f - m * a, m * g - f - m * a, m * g - f, m * g - f + m * a]
+    loads = [
+        m * g + f + m * a,
+        m * g + f,
+        m * g + f - m * a,
+        m * g - f - m * a,
+        m * g - f,
+        m * g - f + m * a,
+    ]
     travels = [0.03, 0.54, 0.03] * 2
     fm = life.cubic_mean(loads, travels)
     assert hours == pytest.approx((9800.0 / (1.5 * fm)) ** 3 * 1e6 / (600 * 60), rel=1e-9)

@@ -23,5 +23,6 @@ def test_load_inertia_uses_the_nominal_diameter_over_the_span():
     span = float(d.axis.span)
     j_screw = math.pi * 7850.0 * dn**4 * span / 32.0  # THK A-744, rho 7.85e-6 kg/mm^3
     j_coupling = float(d.coupling["inertia"]) if d.coupling is not None else d.axis.coupling_inertia
-    expected = moving * (lead / (2 * math.pi)) ** 2 + j_screw + j_coupling  # THK eq. 45, direct drive
+    # THK eq. 45, direct drive
+    expected = moving * (lead / (2 * math.pi)) ** 2 + j_screw + j_coupling
     assert float(ev.values["load_inertia"]) == pytest.approx(expected, rel=1e-9)

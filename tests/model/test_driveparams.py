@@ -19,13 +19,18 @@ def test_reduction_emergency_torque_against_motor_peak_times_ratio():
 
     cat = default_catalog()
     motor, red = cat.part("motors", "SGM7A-70A"), cat.part("reductions", "BK-NPT035-MF-8")
-    axis = Axis(stroke=1.0, moving_mass=100.0, mounting="fixed-supported", max_speed=0.1, axial_load=0.0)
+    axis = Axis(
+        stroke=1.0, moving_mass=100.0, mounting="fixed-supported", max_speed=0.1, axial_load=0.0
+    )
     q = drive_params(axis, motor, None, red)
     assert q["reduction_emergency_torque"] == pytest.approx(480.0)
     assert q["motor_peak_torque"] * q["reduction_ratio"] == pytest.approx(432.0)
     q = drive_params(replace(axis, torque_limit=40.0), motor, None, red)
     assert q["motor_peak_torque"] * q["reduction_ratio"] == pytest.approx(320.0)
-    # a reduction row without an emergency torque: its T2B stands in (never above the emergency torque)
+    # a reduction row without an emergency torque: its T2B stands in (never above the emergency
+    # torque)
     row = dict(red)
     row["emergency_torque"] = float("nan")
-    assert drive_params(axis, motor, None, row)["reduction_emergency_torque"] == pytest.approx(220.0)
+    assert drive_params(axis, motor, None, row)["reduction_emergency_torque"] == pytest.approx(
+        220.0
+    )

@@ -51,8 +51,12 @@ def _problem(tmp_path, bearings, estimated=""):
     with open(cat / "bearings.csv", "w", newline="", encoding="utf-8") as fh:
         csv.writer(fh).writerows([head, copy])
     path = tmp_path / "p.yaml"
-    path.write_text(PROBLEM.format(bearings=", ".join(bearings),
-                                   estimated=f"estimated: {estimated}\n  " if estimated else ""))
+    path.write_text(
+        PROBLEM.format(
+            bearings=", ".join(bearings),
+            estimated=f"estimated: {estimated}\n  " if estimated else "",
+        )
+    )
     return load_problem(path)
 
 
@@ -65,7 +69,9 @@ def test_envelope_bounds_every_vendor_starting_torque():
     est = support_starting_torque_envelope(v["preload"].to_numpy(float), dm.to_numpy(float))
     assert (est >= v["starting_torque"].to_numpy(float) - 1e-12).all()
     # and the envelope is tight: the largest vendor ratio is within 0.5 % of it
-    assert (v["starting_torque"] / (v["preload"] * dm)).max() == pytest.approx(SUPPORT_TORQUE_ENVELOPE, rel=5e-3)
+    assert (v["starting_torque"] / (v["preload"] * dm)).max() == pytest.approx(
+        SUPPORT_TORQUE_ENVELOPE, rel=5e-3
+    )
 
 
 def test_search_does_not_prefer_the_estimated_part(tmp_path):
@@ -77,7 +83,8 @@ def test_search_does_not_prefer_the_estimated_part(tmp_path):
     assert res.best.bearing == VENDOR
     assert all(c.objective <= res.best.objective for c in res.runners_up)
     assert res.certificate.estimated == () or all(
-        e["column"] != "starting_torque" for r in res.certificate.estimated for e in r["estimates"])
+        e["column"] != "starting_torque" for r in res.certificate.estimated for e in r["estimates"]
+    )
 
 
 def test_output_names_the_estimate_that_binds(tmp_path):
@@ -97,8 +104,10 @@ def test_estimated_exclude_searches_vendor_values_only(tmp_path):
 
 
 def test_estimated_housing_and_bracket_are_named_unless_given(tmp_path):
-    # the stiffness optimum's objective moves with the housing and the nut bracket (THK's K_H term): left out,
-    # they are estimated (issue 38: IBC's units, THK's nut-mounting allowance; never rigid) and the certificate
+    # the stiffness optimum's objective moves with the housing and the nut bracket (THK's K_H term):
+    # left out,
+    # they are estimated (issue 38: IBC's units, THK's nut-mounting allowance; never rigid) and the
+    # certificate
     # names them with their values; given, they are the user's values and not named
     res = solve(_problem(tmp_path, [VENDOR]), top=1, sensitivities=False)
     rest = {r["what"]: r for r in res.certificate.estimated}
@@ -106,36 +115,61 @@ def test_estimated_housing_and_bracket_are_named_unless_given(tmp_path):
     assert set(named) == {"bearing_housing_stiffness", "nut_bracket_stiffness"}
     # NSK-40TAC72B-DF-C10 1230 N/um (NSK-SP p. 168): its housing 1050/40 x that
     assert named["bearing_housing_stiffness"]["shown"] == pytest.approx(1230 * 1050 / 40, rel=1e-9)
-    assert "IBC" in named["bearing_housing_stiffness"]["how"] and "THK" in named["nut_bracket_stiffness"]["how"]
+    assert (
+        "IBC" in named["bearing_housing_stiffness"]["how"]
+        and "THK" in named["nut_bracket_stiffness"]["how"]
+    )
     assert named["nut_bracket_stiffness"]["shown"] > 0
     path = tmp_path / "p.yaml"
-    path.write_text(path.read_text().replace("axis:\n", "axis:\n  bearing_housing_stiffness: 2000 N/um\n"
-                                             "  nut_bracket_stiffness: 1500 N/um\n", 1))
+    path.write_text(
+        path.read_text().replace(
+            "axis:\n",
+            "axis:\n  bearing_housing_stiffness: 2000 N/um\n  nut_bracket_stiffness: 1500 N/um\n",
+            1,
+        )
+    )
     res = solve(load_problem(path), top=1, sensitivities=False)
-    axis_named = [e for r in res.certificate.estimated for e in r["estimates"] if e["slot"] == "axis"]
+    axis_named = [
+        e for r in res.certificate.estimated for e in r["estimates"] if e["slot"] == "axis"
+    ]
     assert axis_named == []
 
 
 def test_a_binding_check_names_the_defaults_it_reads(tmp_path):
-    # the high-speed optimum (lexicographic) has its nut life at the required 20 000 h; the life reads the mean
-    # axial load and speed, which the problem leaves to their defaults (a third of axial_load, half of max_speed):
+    # the high-speed optimum (lexicographic) has its nut life at the required 20 000 h; the life
+    # reads the mean
+    # axial load and speed, which the problem leaves to their defaults (a third of axial_load, half
+    # of max_speed):
     # the certificate names them; given in the file, they are the user's values and are not named
     from pathlib import Path
 
-    # the direct drive of the shipped file (its belt-stage optimum since issue 54 has no binding life)
+    # the direct drive of the shipped file (its belt-stage optimum since issue 54 has no binding
+    # life)
     src = tmp_path / "direct.yaml"
-    src.write_text((Path(SHIPPED_DIR).parent / "problems" / "highspeed_problem.yaml").read_text(encoding="utf-8")
-                   .replace("catalog:\n", "catalog:\n  reductions: no\n", 1), encoding="utf-8")
+    src.write_text(
+        (Path(SHIPPED_DIR).parent / "problems" / "highspeed_problem.yaml")
+        .read_text(encoding="utf-8")
+        .replace("catalog:\n", "catalog:\n  reductions: no\n", 1),
+        encoding="utf-8",
+    )
     res = solve(load_problem(src), top=1, sensitivities=False)
     rest = {r["what"]: r for r in res.certificate.estimated}
     named = {e["column"]: e for e in rest["check nut_life"]["estimates"]}
     # issue 38: highspeed gives its mean speed; its load factor is THK Table 19's for 80 m/min
     assert set(named) == {"mean_axial_load", "load_factor"}
-    assert named["load_factor"]["shown"] == pytest.approx(2.0) and "Table 19" in named["load_factor"]["how"]
-    assert named["mean_axial_load"]["shown"] == pytest.approx(500.0) and "third" in named["mean_axial_load"]["how"]
+    assert (
+        named["load_factor"]["shown"] == pytest.approx(2.0)
+        and "Table 19" in named["load_factor"]["how"]
+    )
+    assert (
+        named["mean_axial_load"]["shown"] == pytest.approx(500.0)
+        and "third" in named["mean_axial_load"]["how"]
+    )
     f = tmp_path / "p.yaml"
-    f.write_text(src.read_text(encoding="utf-8").replace("axis:\n", "axis:\n  mean_axial_load: 500 N\n", 1),
-                 encoding="utf-8")
+    f.write_text(
+        src.read_text(encoding="utf-8").replace("axis:\n", "axis:\n  mean_axial_load: 500 N\n", 1),
+        encoding="utf-8",
+    )
     res = solve(load_problem(f), top=1, sensitivities=False)
     rest = {r["what"]: r for r in res.certificate.estimated}
     assert {e["column"] for e in rest["check nut_life"]["estimates"]} == {"load_factor"}
@@ -150,14 +184,22 @@ def test_estimated_exclude_names_itself_when_it_removes_every_motor(tmp_path, ca
     from axisopt.cli import main
 
     path = Path(_problem(tmp_path, [VENDOR]).source)
-    text = path.read_text(encoding="utf-8").replace("  drive: no  # the mechanical parts and their estimates are the "
-                                                    "subject here\n", "").replace(
-        "catalog:\n", "catalog:\n  motor_series: [Sigma-7 SGM7G]\n  estimated: exclude\n").replace(
-        "guide: [HIWIN-HG15-ZA]}", "guide: [HIWIN-HG15-ZA], coupling: [RINGFEDER-GWB-AKN-80]}")
+    text = (
+        path.read_text(encoding="utf-8")
+        .replace(
+            "  drive: no  # the mechanical parts and their estimates are the subject here\n", ""
+        )
+        .replace("catalog:\n", "catalog:\n  motor_series: [Sigma-7 SGM7G]\n  estimated: exclude\n")
+        .replace(
+            "guide: [HIWIN-HG15-ZA]}", "guide: [HIWIN-HG15-ZA], coupling: [RINGFEDER-GWB-AKN-80]}"
+        )
+    )
     path.write_text(text, encoding="utf-8")
     assert main(["solve", str(path), "--no-sensitivity"]) == 2
     err = capsys.readouterr().err.strip()
-    assert "\n" not in err and "key 'catalog.estimated'" in err and "'exclude' removed all" in err, err
+    assert (
+        "\n" not in err and "key 'catalog.estimated'" in err and "'exclude' removed all" in err
+    ), err
     assert "motor_vendors" not in err
     # with estimated values allowed the same problem has motors to choose from
     path.write_text(text.replace("  estimated: exclude\n", ""), encoding="utf-8")
@@ -181,7 +223,9 @@ def test_a_reduction_estimate_shows_its_stiffness_not_the_compliance(tmp_path):
     per_arcmin = float(row["torsional_stiffness [N.m/arcmin]"])
     src = (Path(SHIPPED_DIR).parent / "problems" / "vmc_x_design.yaml").read_text(encoding="utf-8")
     path = tmp_path / "d.yaml"
-    path.write_text(src.replace("  coupling:", f"  reduction: {rid}\n  coupling:", 1), encoding="utf-8")
+    path.write_text(
+        src.replace("  coupling:", f"  reduction: {rid}\n  coupling:", 1), encoding="utf-8"
+    )
     est = {(e.slot, e.column): e for e in design_estimates(load_design(path))}
     e = est[("reduction", "torsional_stiffness")]
     assert e.unit == "N.m/rad"

@@ -1,7 +1,6 @@
 """Closed-loop feedback and pitch-error compensation in the positioning budget, and ISO 230-2 repeatability,
 against the vendors' published figures (grades.SCALE_GRADES, THK A-678 Table 1)."""
 
-
 import pytest
 
 from axisopt.design import load_design
@@ -37,7 +36,9 @@ def test_linear_scale_replaces_lead_and_thermal_rows(tmp_path):
     assert v["lead_error"] == pytest.approx(3e-6)
     assert v["thermal_error"] == 0.0 and semi["thermal_error"] > 0
     assert v["elastic_error"] == pytest.approx(semi["elastic_error"])
-    assert v["positioning_error"] == pytest.approx(3e-6 + v["elastic_error"] + v["abbe_error"] + v["lost_motion"])
+    assert v["positioning_error"] == pytest.approx(
+        3e-6 + v["elastic_error"] + v["abbe_error"] + v["lost_motion"]
+    )
     h = _eval(tmp_path, "  feedback: linear_scale\n  scale_grade: HIWIN-PMS\n")
     assert h["lead_error"] == pytest.approx(20e-6)
     assert h["repeatability"] == pytest.approx(6e-6)

@@ -22,7 +22,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def _design_files():
     out = []
-    for f in sorted(list((ROOT / "problems").glob("*.yaml")) + list((ROOT / "problems" / "data").glob("*.yaml"))):
+    for f in sorted(
+        list((ROOT / "problems").glob("*.yaml")) + list((ROOT / "problems" / "data").glob("*.yaml"))
+    ):
         doc = yaml.safe_load(f.read_text(encoding="utf-8"))
         if isinstance(doc, dict) and "parts" in doc:
             out.append(f)
@@ -47,7 +49,9 @@ def test_frf_static_compliance_motor_held(evals):
         assert q["magnitude_um_per_N"][0] == pytest.approx(expect_um, rel=1e-6)
 
 
-@pytest.mark.parametrize("name", ["vmc_x_design.yaml", "teaching_design.yaml", "custom_parts_design.yaml"])
+@pytest.mark.parametrize(
+    "name", ["vmc_x_design.yaml", "teaching_design.yaml", "custom_parts_design.yaml"]
+)
 def test_frf_peaks_at_modes(evals, name):
     ev = evals[name]
     ref = frf(ev, freqs=[1.0])
@@ -84,15 +88,22 @@ def test_frf_dynamic_stiffness_form(evals):
     i = 0
     m = chain_at(ev, p, i)
     r = m["lead"] / (2.0 * math.pi)
-    kc, cc, k, ca, cg = (m["coupling_stiffness"], m["coupling_damping"], m["axial_stiffness"], m["chain_damping"],
-                         m["table_damping"])
+    kc, cc, k, ca, cg = (
+        m["coupling_stiffness"],
+        m["coupling_damping"],
+        m["axial_stiffness"],
+        m["chain_damping"],
+        m["table_damping"],
+    )
     a11 = [kc, cc, m["motor_inertia"]]
     a12 = [-kc, -cc]
     a22 = [kc + k * r**2, cc + ca * r**2, m["screw_inertia"]]
     a23 = [-k * r, -ca * r]
     a33 = [k, ca + cg, m["mass"]]
-    det = P.polysub(P.polymul(a11, P.polysub(P.polymul(a22, a33), P.polymul(a23, a23))),
-                    P.polymul(P.polymul(a12, a12), a33))
+    det = P.polysub(
+        P.polymul(a11, P.polysub(P.polymul(a22, a33), P.polymul(a23, a23))),
+        P.polymul(P.polymul(a12, a12), a33),
+    )
     cof = P.polysub(P.polymul(a11, a22), P.polymul(a12, a12))
     assert len(det) == 7 and len(cof) == 5
     assert abs(det[0]) < 1e-12 * kc**2 * k  # the rigid-body root s = 0 of the free motor

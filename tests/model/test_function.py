@@ -51,7 +51,9 @@ def test_float_numpy_casadi_agree(vmc, mounting):
         assert float(one["f1"]) == pytest.approx(ev_np["f1"][i], rel=1e-12)
     # a SX graph with the parameters symbolic, evaluated at the same numbers
     sym = ca.SX.sym("p", len(PARAM_NAMES))
-    out = axis_response({n: sym[i] for i, n in enumerate(PARAM_NAMES)}, ca.DM(x), mounting, d.preload)
+    out = axis_response(
+        {n: sym[i] for i, n in enumerate(PARAM_NAMES)}, ca.DM(x), mounting, d.preload
+    )
     f = ca.Function("f", [sym], [out["k_total"], out["drag_torque"], out["margin_nut_life"]])
     k, drag, life = f([p[n] for n in PARAM_NAMES])
     assert np.allclose(np.asarray(k).ravel(), ev_np["k_total"], rtol=1e-10)
@@ -72,13 +74,19 @@ def test_vectorised_over_designs(vmc):
 
 
 def test_fixed_fixed_minimum_is_at_mid_span(vmc):
-    d = dataclasses.replace(vmc, axis=dataclasses.replace(vmc.axis, mounting="fixed-fixed", start_offset=0.1,
-                                                          end_margin=0.1))
+    d = dataclasses.replace(
+        vmc,
+        axis=dataclasses.replace(
+            vmc.axis, mounting="fixed-fixed", start_offset=0.1, end_margin=0.1
+        ),
+    )
     ev = evaluate(d)
     _, where = ev.minimum("k_screw")
     assert where + d.axis.start_offset == pytest.approx(d.axis.span / 2, abs=1e-9)
     # and the screw is four times stiffer there than a fixed-free screw of the same span at its end
-    kmid = screw.screw_stiffness(d.screw["root_diameter"], d.axis.span / 2, d.axis.span, "fixed-fixed")
+    kmid = screw.screw_stiffness(
+        d.screw["root_diameter"], d.axis.span / 2, d.axis.span, "fixed-fixed"
+    )
     kend = screw.screw_stiffness(d.screw["root_diameter"], d.axis.span, d.axis.span, "fixed-free")
     assert kmid / kend == pytest.approx(4.0)
 
@@ -113,9 +121,11 @@ def test_paper_3_1_3_frequency_and_stiffness_trend():
         k = screw.screw_stiffness(d, lx, 2.0, "fixed-free", youngs_modulus=2e11)
         assert np.allclose(w, np.sqrt(k / 450.0), rtol=1e-12)
         assert np.all(np.diff(w) < 0)
-    # hand check of eq. (10), d = 40 mm, l_x = 0.13 m: pi * 0.04^2 * 2e11 / (4 * 0.13) = 1933.29 N/um
-    assert screw.screw_stiffness(0.040, 0.13, 2.0, "fixed-free", youngs_modulus=2e11) / 1e6 == pytest.approx(
-        1933.29, abs=0.01)
+    # hand check of eq. (10), d = 40 mm, l_x = 0.13 m: pi * 0.04^2 * 2e11 / (4 * 0.13) = 1933.29
+    # N/um
+    assert screw.screw_stiffness(
+        0.040, 0.13, 2.0, "fixed-free", youngs_modulus=2e11
+    ) / 1e6 == pytest.approx(1933.29, abs=0.01)
     designs = [load_design(ROOT / "problems" / f"paper_3_1_3_d{d}.yaml") for d in (25, 40, 50, 63)]
     mins = [evaluate(d).minimum("k_total")[0] for d in designs]
     assert mins == sorted(mins)
@@ -158,7 +168,8 @@ def test_vmc_example_against_a_hand_calculation(vmc):
     assert ev["k_nut_unloaded"] == pytest.approx(k_n0, rel=1e-9)
     assert ev["k_nut"] == pytest.approx(k_n, rel=1e-9)
     assert ev.minimum("k_total")[0] == pytest.approx(k, rel=1e-9)
-    # eq. 11 with the moving mass and the Rayleigh share of the screw (part beyond the nut moves with it)
+    # eq. 11 with the moving mass and the Rayleigh share of the screw (part beyond the nut moves
+    # with it)
     screw_mass = float(vmc.screw["mass_per_length"]) * 1.1
     m_eff = moving + screw_mass * (1 - 2 * x_end / (3 * 1.1))
     f1 = math.sqrt(k / m_eff) / (2 * math.pi)
@@ -184,15 +195,27 @@ def test_evaluate_and_diagnose_agree_on_the_chain(vmc, mounting):
         screw_bearing_compliance,
     )
 
-    d = replace(vmc, axis=replace(vmc.axis, mounting=mounting, bearing_housing_stiffness=4000e6,
-                                  nut_bracket_stiffness=2500e6))
+    d = replace(
+        vmc,
+        axis=replace(
+            vmc.axis,
+            mounting=mounting,
+            bearing_housing_stiffness=4000e6,
+            nut_bracket_stiffness=2500e6,
+        ),
+    )
     ev = evaluate(d)
     plant = plant_from_design(d)
     q = baseline_terms(plant, {})
-    c_diag = screw_bearing_compliance(q, ev.x, plant.span) + drive_compliance(plant, ev.x) + 1 / plant.k_nut
+    c_diag = (
+        screw_bearing_compliance(q, ev.x, plant.span)
+        + drive_compliance(plant, ev.x)
+        + 1 / plant.k_nut
+    )
     c_eval = 1 / np.asarray(ev["k_total"]) - 1 / ev["k_nut"] + 1 / ev["k_nut_unloaded"]
     np.testing.assert_allclose(c_diag, c_eval, rtol=1e-10)
-    # by hand: WBK30-DFD 1520 N/um in series with its 4000 N/um housing, at both ends for fixed-fixed
+    # by hand: WBK30-DFD 1520 N/um in series with its 4000 N/um housing, at both ends for fixed-
+    # fixed
     k_set = 1 / (1 / 1520e6 + 1 / 4000e6)
     ea = 206e9 * math.pi / 4 * 0.03491**2
     k_sb = _two_path_hand(k_set, ea, ev.x, d.axis.span, mounting)
@@ -210,7 +233,9 @@ def test_fixed_fixed_shortcut_is_exact_only_at_mid_span(vmc):
     assert shortcut[0] > 1.1 * exact[0]
     from axisopt.physics.screw import screw_bearing_stiffness
 
-    np.testing.assert_allclose(screw_bearing_stiffness(0.03491, x, span, "fixed-fixed", k_b), exact, rtol=1e-12)
+    np.testing.assert_allclose(
+        screw_bearing_stiffness(0.03491, x, span, "fixed-fixed", k_b), exact, rtol=1e-12
+    )
 
 
 def test_single_nut_follows_hiwin_f335_and_has_play():
@@ -227,4 +252,5 @@ def test_single_nut_follows_hiwin_f335_and_has_play():
     f_bm = float(ev["mean_axial_force"])
     assert ev["k_nut"] == pytest.approx(0.8 * 870e6 * (f_bm / (0.28 * 51300)) ** (1 / 3), rel=1e-3)
     assert ev["backlash"] == pytest.approx(float(nut["axial_play"])) and ev["backlash"] > 0
-    assert ev["drag_nut"] == 0.0  # no preload: the preload drag rule gives nothing (seals are not modelled)
+    # no preload: the preload drag rule gives nothing (seals are not modelled)
+    assert ev["drag_nut"] == 0.0

@@ -14,7 +14,8 @@ def test_every_scalar_mode_has_an_objective_in_its_goals_unit():
     for g in OBJECTIVE_TABLE:
         if g.mode:
             spec = objective_spec(g.key)
-            # a least cost or mass is maximised as its negative, shown as itself (ObjectiveSpec.sign)
+            # a least cost or mass is maximised as its negative, shown as itself
+            # (ObjectiveSpec.sign)
             w = 1.0 if g.sense == "max" else -1.0
             assert spec.terms == ((g.output, w),) and spec.unit == g.unit and spec.sign == w
             assert g.key in OBJECTIVE_MODES

@@ -40,22 +40,39 @@ def test_rows_are_thks_phase_loads_and_travels(thk_design):
 def test_evaluate_prints_and_saves_the_table(thk_design, tmp_path, capsys):
     assert main(["evaluate", str(thk_design)]) == 0
     text = capsys.readouterr().out
-    block = text[text.index("life loads from the duty cycle's phases"):text.index("checks (margin")]
-    assert "585" in block and "545" in block and "540.0 mm" in block and "cubic-mean load 492 N (+)" in block
+    block = text[
+        text.index("life loads from the duty cycle's phases") : text.index("checks (margin")
+    ]
+    assert (
+        "585" in block
+        and "545" in block
+        and "540.0 mm" in block
+        and "cubic-mean load 492 N (+)" in block
+    )
     assert all(len(line) <= 100 for line in block.splitlines())
     out = tmp_path / "ev.json"
     assert main(["evaluate", str(thk_design), "--json", str(out)]) == 0
     data = json.loads(out.read_text(encoding="utf-8"))["life_loads"]
     assert data["from_duty_cycle"] is True
-    assert sorted(round(p["axial_load_N"]) for p in data["phases"]) == [395, 435, 470, 510, 545, 585]
+    assert sorted(round(p["axial_load_N"]) for p in data["phases"]) == [
+        395,
+        435,
+        470,
+        510,
+        545,
+        585,
+    ]
     assert data["cubic_mean_load_N"]["positive"] == pytest.approx(492, abs=0.5)
 
 
 def test_without_a_cycle_the_table_says_so(tmp_path, capsys):
-    text = DESIGN[:DESIGN.index("  duty_cycle:")] + DESIGN[DESIGN.index("parts:"):]
+    text = DESIGN[: DESIGN.index("  duty_cycle:")] + DESIGN[DESIGN.index("parts:") :]
     path = tmp_path / "nocycle.yaml"
     path.write_text(text, encoding="utf-8")
     t = life_table(load_design(path))
     assert not t["from_cycle"] and [r["travel"] for r in t["rows"]] == [0.5, 0.5]
     assert main(["evaluate", str(path)]) == 0
-    assert "life loads from the mean axial load each way (no duty cycle) (THK A-725)" in capsys.readouterr().out
+    assert (
+        "life loads from the mean axial load each way (no duty cycle) (THK A-725)"
+        in capsys.readouterr().out
+    )

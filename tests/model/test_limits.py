@@ -44,7 +44,12 @@ def test_problem_schema_and_constraints_derive_from_the_limit_table():
     for con in build_constraints(problem):
         if con.name in LIMITS:
             lim = LIMITS[con.name]
-            assert (con.key, con.sense, con.unit, con.factor) == (lim.output, lim.sense, lim.unit, lim.factor)
+            assert (con.key, con.sense, con.unit, con.factor) == (
+                lim.output,
+                lim.sense,
+                lim.unit,
+                lim.factor,
+            )
         assert con.direction == preload_direction(con.key)
 
 

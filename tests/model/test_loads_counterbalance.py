@@ -48,11 +48,15 @@ def _thk(tmp_path, cb: str | None, name="d.yaml"):
 def test_counterweight_torques_on_thk_vertical(tmp_path):
     _, base = _thk(tmp_path, None, "a.yaml")
     mc, eta_p = 20.0, 0.9
-    _, out = _thk(tmp_path, f"{{kind: counterweight, mass: {mc} kg, efficiency: {eta_p}}}", "b.yaml")
+    _, out = _thk(
+        tmp_path, f"{{kind: counterweight, mass: {mc} kg, efficiency: {eta_p}}}", "b.yaml"
+    )
     t0 = [float(t[0]) for t in base["duty_torques"]]
     t1 = [float(t[0]) for t in out["duty_torques"]]
-    assert t0[1] * 1e3 == pytest.approx(900, abs=3) and t0[4] * 1e3 == pytest.approx(830, abs=3)
-    # rising at speed: the counterweight's pull through its chain (eta_p) off the head's: THK's Tt1 less it
+    #
+    assert t0[1] * 1e3 == pytest.approx(900, abs=3) and t0[4] * 1e3 == pytest.approx(830, abs=3)
+    # rising at speed: the counterweight's pull through its chain (eta_p) off the head's: THK's Tt1
+    # less it
     assert t1[1] == pytest.approx(t0[1] - mc * G * eta_p * PER_N, rel=1e-9)
     # lowering: the head lifts the counterweight and the chain's friction (/ eta_p)
     assert t1[4] == pytest.approx(t0[4] - mc * G / eta_p * PER_N, rel=1e-9)
@@ -63,9 +67,11 @@ def test_counterweight_torques_on_thk_vertical(tmp_path):
     assert float(out["holding_torque"]) == pytest.approx(((50 - mc) * G - 20) * PER_N, rel=1e-9)
     # Yaskawa's J_L1 = (M + M_c)(P_B / 2 pi)^2: THK's J (A-744, 1.58e-4) plus the counterweight
     assert float(base["load_inertia"]) == pytest.approx(1.58e-4, abs=0.005e-4)
-    assert float(out["load_inertia"]) == pytest.approx(float(base["load_inertia"])
-                                                       + pcb.counterweighted_inertia(0.0, mc, LEAD), rel=1e-9)
-    # accelerating up: the counterweight's mass accelerates too (inertia) -- so the peak falls by less than its weight
+    assert float(out["load_inertia"]) == pytest.approx(
+        float(base["load_inertia"]) + pcb.counterweighted_inertia(0.0, mc, LEAD), rel=1e-9
+    )
+    # accelerating up: the counterweight's mass accelerates too (inertia) -- so the peak falls by
+    # less than its weight
     assert t1[0] - t1[1] > t0[0] - t0[1]
     assert float(out["rms_torque"]) < float(base["rms_torque"])
     assert float(out["regen_energy"]) < float(base["regen_energy"])  # less weight lowered
@@ -74,37 +80,60 @@ def test_counterweight_torques_on_thk_vertical(tmp_path):
 def test_counterweight_unloads_the_nut_and_keeps_the_lift_off(tmp_path):
     p0, base = _thk(tmp_path, None, "a.yaml")
     mc = 30.0
-    p1, out = _thk(tmp_path, f"{{kind: counterweight, mass: {mc} kg, efficiency: 1.0, chain_mass: 2 kg}}", "b.yaml")
+    p1, out = _thk(
+        tmp_path,
+        f"{{kind: counterweight, mass: {mc} kg, efficiency: 1.0, chain_mass: 2 kg}}",
+        "b.yaml",
+    )
     acc = p0["acceleration"]
-    # the largest axial force: rising and accelerating, the counterweight's weight off and its mass (and the
+    # the largest axial force: rising and accelerating, the counterweight's weight off and its mass
+    # (and the
     # chain's) accelerated with the head
-    assert float(out["max_axial_force"]) == pytest.approx(float(base["max_axial_force"]) - mc * G
-                                                          + (mc + 2.0) * acc, rel=1e-9)
-    assert float(out["mean_axial_force"]) == pytest.approx(float(base["mean_axial_force"]) - mc * G, rel=1e-9)
+    assert float(out["max_axial_force"]) == pytest.approx(
+        float(base["max_axial_force"]) - mc * G + (mc + 2.0) * acc, rel=1e-9
+    )
+    assert float(out["mean_axial_force"]) == pytest.approx(
+        float(base["mean_axial_force"]) - mc * G, rel=1e-9
+    )
     assert float(out["life"]) > float(base["life"])
 
 
 def test_cylinder_takes_its_worst_end(tmp_path):
     _, base = _thk(tmp_path, None, "a.yaml")
-    # 300..350 N over the stroke, +/- 5 %: the head (50 kg, 490 N) outweighs it, so 300 x 0.95 = 285 N loads most
-    _, out = _thk(tmp_path, "{kind: cylinder, force: 300 N, force_at_end: 350 N, tolerance: 5 %}", "b.yaml")
-    assert float(out["max_axial_force"]) == pytest.approx(float(base["max_axial_force"]) - 285.0, rel=1e-9)
+    # 300..350 N over the stroke, +/- 5 %: the head (50 kg, 490 N) outweighs it, so 300 x 0.95 = 285
+    # N loads most
+    _, out = _thk(
+        tmp_path, "{kind: cylinder, force: 300 N, force_at_end: 350 N, tolerance: 5 %}", "b.yaml"
+    )
+    assert float(out["max_axial_force"]) == pytest.approx(
+        float(base["max_axial_force"]) - 285.0, rel=1e-9
+    )
     # overbalanced: 600..650 N, the largest end (682.5 N) pushes the head up harder than any other
-    _, over = _thk(tmp_path, "{kind: cylinder, force: 600 N, force_at_end: 650 N, tolerance: 5 %}", "c.yaml")
+    _, over = _thk(
+        tmp_path, "{kind: cylinder, force: 600 N, force_at_end: 650 N, tolerance: 5 %}", "c.yaml"
+    )
     t = [float(x[0]) for x in over["duty_torques"]]
     t0 = [float(x[0]) for x in base["duty_torques"]]
-    assert t[-1] == 0.0  # the stop: the cylinder holds the head up (the motor holds nothing, friction helps)
-    assert t[4] == pytest.approx(t0[4] - 682.5 * PER_N, rel=1e-9)  # lowering: the motor pulls the head down
+    # the stop: the cylinder holds the head up (the motor holds nothing, friction helps)
+    assert t[-1] == 0.0
+    # lowering: the motor pulls the head down
+    assert t[4] == pytest.approx(t0[4] - 682.5 * PER_N, rel=1e-9)
     assert t[4] < 0.0
-    # the largest axial force: the cylinder's excess over the head's weight pushing up, with inertia and friction
+    # the largest axial force: the cylinder's excess over the head's weight pushing up, with inertia
+    # and friction
     w = float(base["moving_mass"]) * G
-    assert float(over["max_axial_force"]) == pytest.approx(float(base["max_axial_force"]) - w + (682.5 - w),
-                                                           rel=1e-9)
+    assert float(over["max_axial_force"]) == pytest.approx(
+        float(base["max_axial_force"]) - w + (682.5 - w), rel=1e-9
+    )
 
 
-@pytest.mark.parametrize("cb", ["{kind: counterweight, mass: 35 kg, efficiency: 0.93, chain_mass: 3 kg}",
-                                "{kind: cylinder, force: 400 N, force_at_end: 450 N, tolerance: 5 %, "
-                                "piston_mass: 2 kg}"])
+@pytest.mark.parametrize(
+    "cb",
+    [
+        "{kind: counterweight, mass: 35 kg, efficiency: 0.93, chain_mass: 3 kg}",
+        "{kind: cylinder, force: 400 N, force_at_end: 450 N, tolerance: 5 %, piston_mass: 2 kg}",
+    ],
+)
 def test_float_numpy_casadi_agree(tmp_path, cb):
     d = load_design(_design(tmp_path, _with(THK_CYCLE, cb)))
     ev_np = evaluate(d, use_casadi=False)
@@ -113,8 +142,12 @@ def test_float_numpy_casadi_agree(tmp_path, cb):
         assert np.allclose(ev_np[k], ev_ca[k], rtol=1e-10), k
     p = design_params(d)
     sym = ca.SX.sym("p", len(PARAM_NAMES))
-    out = axis_response({n: sym[i] for i, n in enumerate(PARAM_NAMES)} | {"duty": p["duty"]}, ca.DM([0.1]),
-                        d.axis.mounting, d.preload)
+    out = axis_response(
+        {n: sym[i] for i, n in enumerate(PARAM_NAMES)} | {"duty": p["duty"]},
+        ca.DM([0.1]),
+        d.axis.mounting,
+        d.preload,
+    )
     names = ("rms_torque", "holding_torque", "max_axial_force", "margin_nut_life", "regen_power")
     f = ca.Function("f", [sym], [out[n] for n in names])
     for n, v in zip(names, f([p[n] for n in PARAM_NAMES])):

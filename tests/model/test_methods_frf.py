@@ -20,7 +20,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def _design_files():
     out = []
-    for f in sorted(list((ROOT / "problems").glob("*.yaml")) + list((ROOT / "problems" / "data").glob("*.yaml"))):
+    for f in sorted(
+        list((ROOT / "problems").glob("*.yaml")) + list((ROOT / "problems" / "data").glob("*.yaml"))
+    ):
         doc = yaml.safe_load(f.read_text(encoding="utf-8"))
         if isinstance(doc, dict) and "parts" in doc:
             out.append(f)
@@ -53,7 +55,9 @@ def test_methods_rows(evals, name):
     c_a = used["bearings"].value_N_per_m
     assert c_a == pytest.approx(float(ev.design.bearing["axial_rigidity"]), rel=1e-12)
     # the model: bearing sets x (one set in series with its housing)
-    assert p["bearing_sets"] * float(bearing_set_stiffness(p)) == pytest.approx(ev["k_bearing"], rel=1e-9)
+    assert p["bearing_sets"] * float(bearing_set_stiffness(p)) == pytest.approx(
+        ev["k_bearing"], rel=1e-9
+    )
     for r in rows:
         if r.value_N_per_m is None:
             assert r.missing and all(isinstance(m, str) and m for m in r.missing), r
@@ -68,7 +72,9 @@ def test_methods_rows(evals, name):
     assert "missing: n_balls" in table and "*" in table
     js = methods_dict(rows)
     json.dumps(js, allow_nan=False)
-    assert [m["value_N_per_um"] is None for m in js["methods"]] == [r.value_N_per_m is None for r in rows]
+    assert [m["value_N_per_um"] is None for m in js["methods"]] == [
+        r.value_N_per_m is None for r in rows
+    ]
 
 
 def test_methods_compute_when_columns_exist(evals):
@@ -84,7 +90,9 @@ def test_methods_compute_when_columns_exist(evals):
     brg["n_balls"] = 19.0
     d2 = dataclasses.replace(d, nut=nut, bearing=brg)
     rows = stiffness_methods(evaluate(d2))
-    assert all(r.value_N_per_m is not None and r.value_N_per_m > 0 for r in rows), [r for r in rows if not r.missing]
+    assert all(r.value_N_per_m is not None and r.value_N_per_m > 0 for r in rows), [
+        r for r in rows if not r.missing
+    ]
     assert bearing_c_type("7012C", math.radians(15.0)) == 5.43
     assert bearing_c_type("71912AC") == 5.83
     assert bearing_c_type("7205B angular contact ball bearing set") is None

@@ -8,9 +8,12 @@ import pytest
 from axisopt.model.motorrule import DEFAULT_RULE, MOTOR_RULES, rule_text
 
 
-# Yaskawa Sigma-7 product manual 11.2.1: Trms and TL within the rated torque; Mitsubishi MDS-D-SVJ3/SPJ3
-# Specifications Manual 7-1 eqs. 7-10 and 7-12: Trms <= 0.8 Tst, unbalanced TL <= 0.6 Tst; FANUC B-65262EN/03
-# 3.1: condition 5 at 0.9 Ts, gravity-holding torque within 60 % of stall; Siemens 1FT7 PFT7S 2.4.3: within S1
+# Yaskawa Sigma-7 product manual 11.2.1: Trms and TL within the rated torque; Mitsubishi MDS-D-
+# SVJ3/SPJ3
+# Specifications Manual 7-1 eqs. 7-10 and 7-12: Trms <= 0.8 Tst, unbalanced TL <= 0.6 Tst; FANUC
+# B-65262EN/03
+# 3.1: condition 5 at 0.9 Ts, gravity-holding torque within 60 % of stall; Siemens 1FT7 PFT7S 2.4.3:
+# within S1
 @pytest.mark.published
 @pytest.mark.parametrize(
     "vendor, rms, unbalance",

@@ -47,13 +47,19 @@ DESIGNS = _designs()
 def _response(design, preload=None, **kw):
     p = design_params(design)
     x = stroke_positions(design.axis)
-    return x, axis_response(p, x, design.axis.mounting, design.preload if preload is None else preload,
-                            FULL.but(**kw))
+    return x, axis_response(
+        p, x, design.axis.mounting, design.preload if preload is None else preload, FULL.but(**kw)
+    )
 
 
 def _changed(a, b, keys):
-    return {k for k in keys if k in a and k in b
-            and not np.allclose(np.asarray(a[k], float), np.asarray(b[k], float), rtol=1e-12, atol=0.0)}
+    return {
+        k
+        for k in keys
+        if k in a
+        and k in b
+        and not np.allclose(np.asarray(a[k], float), np.asarray(b[k], float), rtol=1e-12, atol=0.0)
+    }
 
 
 def test_every_declared_output_is_computed_with_its_shape():
@@ -113,16 +119,17 @@ def test_outputs_not_marked_drive_are_the_same_for_every_drive():
     cat = load_catalogs()
     d = DESIGNS["vertical"]
     _, a = _response(d)
-    others = [dataclasses.replace(d, motor=cat.motors.loc["SGM7J-04A"]),
-              dataclasses.replace(d, reduction=cat.reductions.loc["BK-TP010-MF-7"]),
-              dataclasses.replace(d, coupling=cat.couplings.iloc[0])]
+    others = [
+        dataclasses.replace(d, motor=cat.motors.loc["SGM7J-04A"]),
+        dataclasses.replace(d, reduction=cat.reductions.loc["BK-TP010-MF-7"]),
+        dataclasses.replace(d, coupling=cat.couplings.iloc[0]),
+    ]
     for other in others:
         _, b = _response(other)
         scalars = {o.name for o in OUTPUT_TABLE if not o.coupling}
         moved = _changed(a, b, scalars)
         assert moved, "the drive change moved nothing: the test would not see a wrong mark"
         assert moved <= set(DRIVE_OUTPUTS), moved
-
 
 
 def test_each_unit_reads_in_pint_and_matches_its_limits_kind():
@@ -135,4 +142,7 @@ def test_each_unit_reads_in_pint_and_matches_its_limits_kind():
     for lim in LIMIT_TABLE:
         dim = KINDS[lim.kind][0]
         got = ureg.Quantity(1.0, OUTPUTS[lim.output].unit or "dimensionless").dimensionality
-        assert got == ureg.Quantity(1.0, KINDS[lim.kind][1] or "dimensionless").dimensionality, (lim.key, dim)
+        assert got == ureg.Quantity(1.0, KINDS[lim.kind][1] or "dimensionless").dimensionality, (
+            lim.key,
+            dim,
+        )

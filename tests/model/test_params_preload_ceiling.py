@@ -41,6 +41,7 @@ def test_a_nut_preloaded_above_the_ceiling_fails(vmc):
 
 def test_a_nut_with_play_is_not_checked(vmc):
     from axisopt.model.drive import NOT_APPLICABLE
+
     nut = vmc.nut.copy()
     nut["type"] = "single"
     d = replace(vmc, nut=nut, nut_preload=0.0)
@@ -54,14 +55,17 @@ def test_search_keeps_preloads_under_the_ceiling():
     still equals exhaustive enumeration."""
     from axisopt.problem import load_problem
     from axisopt.search import solve
+
     p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
     nuts = p.catalog.nuts.copy()
     double = nuts["type"] != "single"
     nuts.loc[double, "preload_max"] = 0.2 * nuts.loc[double, "dynamic_load_rating"]
-    # drag and life loose enough that the preload would climb above the ceiling if the range allowed it
+    # drag and life loose enough that the preload would climb above the ceiling if the range allowed
+    # it
     p = replace(p, catalog=p.catalog.replace(nuts=nuts)).with_limit("max_drag_torque", 20.0)
     p = p.with_limit("min_life", 1000 * 3600.0)
     from axisopt.search.parts import build_space
+
     sp = build_space(p)
     ceiling = 0.1 * sp.nuts.number("dynamic_load_rating")
     assert (sp.preload_hi <= ceiling * (1 + 1e-12)).all() and (sp.preload_hi > 0.99 * ceiling).any()
@@ -79,6 +83,7 @@ def test_nuts_whose_whole_range_is_above_the_ceiling_are_named_in_the_error():
     from axisopt.errors import InputError
     from axisopt.problem import load_problem
     from axisopt.search import solve
+
     p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
     nuts = p.catalog.nuts.copy()
     double = nuts["type"] != "single"

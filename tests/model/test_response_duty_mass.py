@@ -62,15 +62,19 @@ def test_thk_stationary_torque_with_the_work_removed(tmp_path):
     assert torques[4] * 1e3 == pytest.approx(830, abs=3)  # A-743 Tt2
     assert torques[-1] * 1e3 == pytest.approx(658, abs=0.5)  # A-745 TS (m2 = 0, f credited)
     assert out["rms_torque"] * 1e3 == pytest.approx(743, abs=1)
-    # the brake holds the heaviest stop: the end of a move with the work on (no published figure; THK's formula)
-    assert out["holding_torque"] == pytest.approx((50 * G - 20) * 0.010 / (2 * math.pi * 0.9), rel=1e-9)
+    # the brake holds the heaviest stop: the end of a move with the work on (no published figure;
+    # THK's formula)
+    assert out["holding_torque"] == pytest.approx(
+        (50 * G - 20) * 0.010 / (2 * math.pi * 0.9), rel=1e-9
+    )
 
 
 @pytest.mark.published
 def test_holding_torque_formula_thk_a745():
     # (m1 g - f) P_h / (2 pi eta) with THK's g = 9.807: 658 N.mm
     assert pd.holding_torque(40 * 9.807, 20.0, 0.010, 0.9) * 1e3 == pytest.approx(658, abs=0.5)
-    assert pd.holding_torque(10.0, 20.0, 0.010, 0.9) == 0.0  # friction alone holds: no torque, never negative
+    # friction alone holds: no torque, never negative
+    assert pd.holding_torque(10.0, 20.0, 0.010, 0.9) == 0.0
 
 
 def test_dwell_without_its_own_mass_holds_the_axis_mass(tmp_path):
@@ -83,10 +87,18 @@ def test_dwell_without_its_own_mass_holds_the_axis_mass(tmp_path):
 
 def test_a_dwells_force_is_held_and_counts_in_the_rms(tmp_path):
     base = evaluate(load_design(_design(tmp_path, THK_CYCLE, "a.yaml")), use_casadi=False).values
-    held = evaluate(load_design(_design(tmp_path, THK_CYCLE.replace("moving_mass: 40 kg",
-                                                                    "moving_mass: 40 kg, force: 1 kN"), "b.yaml")),
-                    use_casadi=False).values
-    # the dwell holds 40 kg and 1 kN on gravity's side: more than the 50 kg stop, so the brake reads it
+    held = evaluate(
+        load_design(
+            _design(
+                tmp_path,
+                THK_CYCLE.replace("moving_mass: 40 kg", "moving_mass: 40 kg, force: 1 kN"),
+                "b.yaml",
+            )
+        ),
+        use_casadi=False,
+    ).values
+    # the dwell holds 40 kg and 1 kN on gravity's side: more than the 50 kg stop, so the brake reads
+    # it
     expected = (40 * G + 1000 - 20) * 0.010 / (2 * math.pi * 0.9)
     assert float(held["holding_torque"]) == pytest.approx(expected, rel=1e-9)
     assert float(held["rms_torque"]) > float(base["rms_torque"])
@@ -98,8 +110,14 @@ def test_life_loads_take_each_phases_mass(tmp_path):
     ev = evaluate(load_design(_design(tmp_path, cycle)), use_casadi=False)
     g, f, a = G, 20.0, 1.5
     up, dn = 50.0, 40.0
-    loads = [up * g + f + up * a, up * g + f, up * g + f - up * a,
-             dn * g - f - dn * a, dn * g - f, dn * g - f + dn * a]
+    loads = [
+        up * g + f + up * a,
+        up * g + f,
+        up * g + f - up * a,
+        dn * g - f - dn * a,
+        dn * g - f,
+        dn * g - f + dn * a,
+    ]
     travels = [0.03, 0.54, 0.03] * 2
     fm = life.cubic_mean(loads, travels)
     hours = float(ev.values["life"]) / 3600.0
@@ -110,12 +128,20 @@ def test_life_loads_take_each_phases_mass(tmp_path):
 
 def test_lighter_phase_lowers_torques_and_regeneration(tmp_path):
     heavy = evaluate(load_design(_design(tmp_path, CYCLE, "h.yaml")), use_casadi=False).values
-    light = evaluate(load_design(_design(tmp_path, CYCLE.replace("{move: -600 mm}",
-                                                                 "{move: -600 mm, moving_mass: 30 kg}"), "l.yaml")),
-                     use_casadi=False).values
+    light = evaluate(
+        load_design(
+            _design(
+                tmp_path,
+                CYCLE.replace("{move: -600 mm}", "{move: -600 mm, moving_mass: 30 kg}"),
+                "l.yaml",
+            )
+        ),
+        use_casadi=False,
+    ).values
     assert float(light["rms_torque"]) < float(heavy["rms_torque"])
     assert float(light["regen_energy"]) < float(heavy["regen_energy"])  # less weight lowered
-    assert float(light["peak_torque"]) == pytest.approx(float(heavy["peak_torque"]))  # the lift is unchanged
+    # the lift is unchanged
+    assert float(light["peak_torque"]) == pytest.approx(float(heavy["peak_torque"]))
 
 
 def test_phase_mass_is_written_back(tmp_path):
@@ -126,10 +152,18 @@ def test_phase_mass_is_written_back(tmp_path):
     assert load_design(again).axis.duty_cycle == d.axis.duty_cycle
 
 
-@pytest.mark.parametrize("value, words", [
-    ("-4 kg", "must be positive"), ("0 kg", "must be positive"), ("60 kg", "heavier than axis.moving_mass"),
-    (".nan kg", "cannot read"), ("1e300 kg", "out of range"), ("40 mm", "unit"), ("40", "unit"),
-])
+@pytest.mark.parametrize(
+    "value, words",
+    [
+        ("-4 kg", "must be positive"),
+        ("0 kg", "must be positive"),
+        ("60 kg", "heavier than axis.moving_mass"),
+        (".nan kg", "cannot read"),
+        ("1e300 kg", "out of range"),
+        ("40 mm", "unit"),
+        ("40", "unit"),
+    ],
+)
 def test_bad_phase_mass_is_one_line_exit_2(tmp_path, capsys, value, words):
     path = _design(tmp_path, THK_CYCLE.replace("moving_mass: 40 kg", f"moving_mass: {value}"))
     assert main(["evaluate", str(path)]) == 2
@@ -147,11 +181,20 @@ def test_guide_block_loads_take_each_phases_mass():
 
     root = Path(__file__).resolve().parents[2]
     d = load_design(root / "problems" / "vmc_x_design.yaml")
-    cycle = (motion.Segment("move", distance=0.6, speed=0.4, acceleration=3.0),
-             motion.Segment("move", distance=-0.6, speed=0.4, acceleration=3.0))
+    cycle = (
+        motion.Segment("move", distance=0.6, speed=0.4, acceleration=3.0),
+        motion.Segment("move", distance=-0.6, speed=0.4, acceleration=3.0),
+    )
     lighter = (cycle[0], dataclasses.replace(cycle[1], moving_mass=0.2 * d.axis.moving_mass))
-    full = evaluate(dataclasses.replace(d, axis=dataclasses.replace(d.axis, duty_cycle=cycle)), use_casadi=False)
-    empty = evaluate(dataclasses.replace(d, axis=dataclasses.replace(d.axis, duty_cycle=lighter)), use_casadi=False)
+    full = evaluate(
+        dataclasses.replace(d, axis=dataclasses.replace(d.axis, duty_cycle=cycle)), use_casadi=False
+    )
+    empty = evaluate(
+        dataclasses.replace(d, axis=dataclasses.replace(d.axis, duty_cycle=lighter)),
+        use_casadi=False,
+    )
     assert float(empty.values["guide_mean_load"]) < float(full.values["guide_mean_load"])
-    assert float(empty.values["guide_max_load"]) == pytest.approx(float(full.values["guide_max_load"]))
+    assert float(empty.values["guide_max_load"]) == pytest.approx(
+        float(full.values["guide_max_load"])
+    )
     assert float(empty.values["guide_life"]) > float(full.values["guide_life"])

@@ -34,7 +34,8 @@ def test_tuned_servo_is_stable_on_the_model(ev):
     # the closed position loop is roughly first order at Kv: its -3 dB near Kv / 2 pi
     for bw in r.position_bandwidth_Hz:
         assert 0.8 * g.kv / (2 * math.pi) < bw < 2.0 * g.kv / (2 * math.pi)
-    # at constant speed the motor lags v / Kv; the table as much again as the guides' viscous damper deflects
+    # at constant speed the motor lags v / Kv; the table as much again as the guides' viscous damper
+    # deflects
     # the chain (c_g v / k_total): ramp x_ref = v t, z(t) = z1 t + z0 with A z1 = -b v, A z0 = z1
     i = frf_positions(ev)[1]
     A, B, C, D = closed_loop(state_space(ev, i), g)
@@ -44,4 +45,6 @@ def test_tuned_servo_is_stable_on_the_model(ev):
     assert C[0] @ z1 == pytest.approx(v, rel=1e-9)
     assert -C[2] @ z0 == pytest.approx(following_error(v, g.kv), rel=1e-6)
     c_g = float(ev.design.guide["damping"]) * ev.design.axis.guide_blocks
-    assert -C[0] @ z0 == pytest.approx(following_error(v, g.kv) + c_g * v / ev.at("k_total", i), rel=1e-3)
+    assert -C[0] @ z0 == pytest.approx(
+        following_error(v, g.kv) + c_g * v / ev.at("k_total", i), rel=1e-3
+    )

@@ -8,8 +8,11 @@ from axisopt.design import load_design
 from axisopt.model import CHECKS, evaluate, passes
 
 ROOT = Path(__file__).resolve().parents[2]
-DESIGNS = sorted(p for p in (ROOT / "problems").glob("*.yaml")
-                 if "objective:" not in p.read_text(encoding="utf-8"))
+DESIGNS = sorted(
+    p
+    for p in (ROOT / "problems").glob("*.yaml")
+    if "objective:" not in p.read_text(encoding="utf-8")
+)
 
 
 @pytest.mark.parametrize("path", DESIGNS, ids=lambda p: p.name)

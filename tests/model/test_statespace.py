@@ -29,7 +29,9 @@ def test_open_loop_eigenfrequencies_are_the_model_modes_at_every_position(ev):
     for i in range(len(ev.x)):
         free = state_space(ev, i)
         f = free.natural_frequencies()
-        assert f == pytest.approx([ev.at("f_axial_torsional", i), ev.at("f_axial_torsional_2", i)], rel=1e-9)
+        assert f == pytest.approx(
+            [ev.at("f_axial_torsional", i), ev.at("f_axial_torsional_2", i)], rel=1e-9
+        )
         # the undamped A has the same frequencies as its eigenvalues (and the rigid-body pair at 0)
         lam = np.sort(np.abs(state_space(ev, i, damping_scale=0.0).poles())) / (2 * math.pi)
         assert lam[:2] == pytest.approx([0, 0], abs=1e-3)
@@ -40,7 +42,8 @@ def test_open_loop_eigenfrequencies_are_the_model_modes_at_every_position(ev):
         k_c = held.stiffness[0, 0] - ev.at("k_drive", i) * r**2
         want = pdy.axial_torsional_frequencies(m[0], k_c, ev.at("k_drive", i), m[1], held.lead)
         assert held.natural_frequencies() == pytest.approx(want, rel=1e-9)
-        # the headline axial mode f_axial (motor held) leaves out the screw's rotary inertia on the coupling:
+        # the headline axial mode f_axial (motor held) leaves out the screw's rotary inertia on the
+        # coupling:
         # the held model's first mode is at or below it and equal to it without that inertia
         assert held.natural_frequencies()[0] <= ev.at("f_axial", i) * (1 + 1e-12)
         spring = chain_at(ev, design_params(ev.design), i)
@@ -69,7 +72,9 @@ def test_python_control_round_trip(ev):
     np.testing.assert_array_equal(sys.B, ss.B)
     assert list(sys.input_labels) == list(ss.inputs) and list(sys.output_labels) == list(ss.outputs)
     f = np.array([20.0, 84.0, 300.0])
-    h = np.asarray(sys(2j * math.pi * f))[ss.outputs.index("table_position"), ss.inputs.index("process_force")]
+    h = np.asarray(sys(2j * math.pi * f))[
+        ss.outputs.index("table_position"), ss.inputs.index("process_force")
+    ]
     np.testing.assert_allclose(h, ss.frequency_response(f), rtol=1e-9)
     held = state_space(ev, 0, motor_held=True).to_control()
     assert held.nstates == 4

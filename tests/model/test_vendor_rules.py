@@ -32,28 +32,57 @@ def test_motor_rows_carry_their_vendors_rule():
 def test_yaskawa_motor_held_to_its_rated_torque(tmp_path):
     """The teaching design's SGM7G-13A (rated 8.34 N.m, YSK-S7): Yaskawa's rule holds it to 8.34 N.m, not the
     6.67 N.m of Mitsubishi's 0.8; a problem may still ask 0.8 (axis.rms_torque_ratio)."""
-    text = Path(TEACHING).read_text(encoding="utf-8").replace("\naxis:\n", "\naxis:\n  acceleration: 2 m/s^2\n", 1)
+    text = (
+        Path(TEACHING)
+        .read_text(encoding="utf-8")
+        .replace("\naxis:\n", "\naxis:\n  acceleration: 2 m/s^2\n", 1)
+    )
     text += "  motor: SGM7G-13A\n"
     f = tmp_path / "d.yaml"
     f.write_text(text, encoding="utf-8")
     ev = evaluate(load_design(f))
     assert ev.values["available_motor_rated_torque"] == pytest.approx(8.34, rel=1e-9)
-    f.write_text(text.replace("\naxis:\n", "\naxis:\n  rms_torque_ratio: 0.8\n", 1), encoding="utf-8")
+    f.write_text(
+        text.replace("\naxis:\n", "\naxis:\n  rms_torque_ratio: 0.8\n", 1), encoding="utf-8"
+    )
     ev8 = evaluate(load_design(f))
     assert ev8.values["available_motor_rated_torque"] == pytest.approx(0.8 * 8.34, rel=1e-9)
 
 
 def _vertical(mass, lead, motor_rated, rms_ratio, unbalance_ratio):
-    return {"reduction_ratio": 1.0, "reduction_efficiency": 1.0, "reduction_inertia": 0.0,
-            "nominal_diameter": 0.02, "root_diameter": 0.017, "span": 0.5, "lead": lead,
-            "coupling_inertia": 0.0, "rotor_inertia": 1e-3, "gravity_axial": 1.0, "table_mass": mass,
-            "axial_load": 0.0, "mean_axial_load": 0.0, "has_motor": 1.0, "has_coupling": 0.0,
-            "max_inertia_ratio": 35.0, "brake_safety": 2.0, "motor_brake_torque": 0.0,
-            "coupling_rated_torque": 1.0, "coupling_max_speed": 1.0, "has_reduction": 0.0,
-            "reduction_rated_torque": 1.0, "reduction_accel_torque": 1.0, "reduction_max_speed": 1.0,
-            "motor_rated_torque": motor_rated, "motor_peak_torque": 10 * motor_rated, "motor_max_speed": 1e3,
-            "rms_torque_ratio": rms_ratio, "unbalance_torque_ratio": unbalance_ratio,
-            "motor_peak_corner_speed": 1e3, "motor_peak_at_max_speed": 10 * motor_rated}
+    return {
+        "reduction_ratio": 1.0,
+        "reduction_efficiency": 1.0,
+        "reduction_inertia": 0.0,
+        "nominal_diameter": 0.02,
+        "root_diameter": 0.017,
+        "span": 0.5,
+        "lead": lead,
+        "coupling_inertia": 0.0,
+        "rotor_inertia": 1e-3,
+        "gravity_axial": 1.0,
+        "table_mass": mass,
+        "axial_load": 0.0,
+        "mean_axial_load": 0.0,
+        "has_motor": 1.0,
+        "has_coupling": 0.0,
+        "max_inertia_ratio": 35.0,
+        "brake_safety": 2.0,
+        "motor_brake_torque": 0.0,
+        "coupling_rated_torque": 1.0,
+        "coupling_max_speed": 1.0,
+        "has_reduction": 0.0,
+        "reduction_rated_torque": 1.0,
+        "reduction_accel_torque": 1.0,
+        "reduction_max_speed": 1.0,
+        "motor_rated_torque": motor_rated,
+        "motor_peak_torque": 10 * motor_rated,
+        "motor_max_speed": 1e3,
+        "rms_torque_ratio": rms_ratio,
+        "unbalance_torque_ratio": unbalance_ratio,
+        "motor_peak_corner_speed": 1e3,
+        "motor_peak_at_max_speed": 10 * motor_rated,
+    }
 
 
 @pytest.mark.published
@@ -63,6 +92,7 @@ def test_mitsubishi_unbalanced_axis_load_torque():
     rule alone sets the need: margin = 0.6 Tst / TL."""
     mass, lead, drag = 100.0, 0.010, 0.2
     from axisopt.model.drag import SCREW_EFFICIENCY
+
     tl = mass * 9.80665 * lead / (2 * math.pi * SCREW_EFFICIENCY) + drag
     out = drive(_vertical(mass, lead, 4.78, 0.8, 0.6), mass, drag)
     assert out["unbalance_torque"] == pytest.approx(tl, rel=1e-9)
@@ -79,10 +109,22 @@ def _horizontal_transfer(cut_while_accelerating=0.0, axial_load=0.0):
     seg_fwd = motion.Segment("move", distance=1.0, speed=1.0, acceleration=1.0 / 0.15)
     seg_back = motion.Segment("move", distance=-1.0, speed=1.0, acceleration=1.0 / 0.15)
     phases = motion.Phases(motion.cycle_phases([seg_fwd, seg_back]), given=True)
-    p = {"duty": phases, "table_mass": 60.0, "gravity_axial": 0.0, "normal_load": 0.0, "guide_blocks": 1.0,
-         "guide_friction_force": 15.0, "guide_friction_coefficient": 0.003, "guide_friction_viscous": 0.0,
-         "max_speed": 1.0, "axial_load": axial_load, "mean_axial_load": 0.0, "duty_process": 1.0,
-         "acceleration": 1.0 / 0.15, "cut_while_accelerating": cut_while_accelerating}
+    p = {
+        "duty": phases,
+        "table_mass": 60.0,
+        "gravity_axial": 0.0,
+        "normal_load": 0.0,
+        "guide_blocks": 1.0,
+        "guide_friction_force": 15.0,
+        "guide_friction_coefficient": 0.003,
+        "guide_friction_viscous": 0.0,
+        "max_speed": 1.0,
+        "axial_load": axial_load,
+        "mean_axial_load": 0.0,
+        "duty_process": 1.0,
+        "acceleration": 1.0 / 0.15,
+        "cut_while_accelerating": cut_while_accelerating,
+    }
     f_guides = 15.0 + 0.003 * 60.0 * 9.80665
     f_max = axial_load + 60.0 / 0.15 + f_guides
     return p, f_guides, f_max
@@ -115,12 +157,15 @@ def test_buckling_by_how_the_nut_is_held(tmp_path):
     f = tmp_path / "d.yaml"
     values = {}
     for end in ("fixed", "supported"):
-        f.write_text(text.replace("\naxis:\n", f"\naxis:\n  buckling_nut_end: {end}\n", 1), encoding="utf-8")
+        f.write_text(
+            text.replace("\naxis:\n", f"\naxis:\n  buckling_nut_end: {end}\n", 1), encoding="utf-8"
+        )
         d = load_design(f)
         values[end] = evaluate(d).values["available_buckling"]
     a = d.axis
     d1 = float(d.screw["root_diameter"]) * 1e3
-    la = (a.start_offset + a.stroke) * 1e3  # fixed-free: the fixed bearing to the nut at the far end [mm]
+    # fixed-free: the fixed bearing to the nut at the far end [mm]
+    la = (a.start_offset + a.stroke) * 1e3
     assert values["supported"] == pytest.approx(10 * d1**4 / la**2 * 1e4, rel=0.02)
     assert values["fixed"] == pytest.approx(20 * d1**4 / la**2 * 1e4, rel=0.02)
 
@@ -133,7 +178,9 @@ def test_rise_without_cycle_chooses_practice_or_balance(tmp_path):
     f.write_text(text, encoding="utf-8")
     practice = evaluate(load_design(f)).values
     assert practice["temperature_rise"] == pytest.approx(3.0)
-    f.write_text(text.replace("\naxis:\n", "\naxis:\n  rise_without_cycle: balance\n", 1), encoding="utf-8")
+    f.write_text(
+        text.replace("\naxis:\n", "\naxis:\n  rise_without_cycle: balance\n", 1), encoding="utf-8"
+    )
     balance = evaluate(load_design(f)).values
     assert balance["temperature_rise"] == pytest.approx(practice["heat_balance_rise"], rel=1e-9)
     assert balance["temperature_rise"] != pytest.approx(3.0)

@@ -16,7 +16,8 @@ UM = 1e-6
 
 @pytest.mark.published
 def test_thk_a723_selecting_lead_angle_accuracy():
-    # THK A-723: positioning accuracy +-0.3 mm/1000 mm -> lead angle accuracy +-0.09 mm/300 mm -> C7 (+-0.05/300)
+    # THK A-723: positioning accuracy +-0.3 mm/1000 mm -> lead angle accuracy +-0.09 mm/300 mm -> C7
+    # (+-0.05/300)
     assert pa.required_error_per_300(0.3e-3, 1.0) == pytest.approx(0.09e-3)
     assert grade_table().grade_for(0.3e-3, 1.0) == "C7"
     # and C7's lead error over the 1000 mm stays within the +-0.3 mm the example asks for
@@ -32,7 +33,8 @@ def test_thk_a737_selecting_lead_angle_accuracy_c10():
 
 @pytest.mark.published
 def test_thk_a713_positioning_error_from_axial_rigidity():
-    # THK A-713/A-714: BNF2512 (d1 = 21.9 mm), fixed-supported, 1000 N + 500 N vertical, L = 100 mm and 700 mm:
+    # THK A-713/A-714: BNF2512 (d1 = 21.9 mm), fixed-supported, 1000 N + 500 N vertical, L = 100 mm
+    # and 700 mm:
     # Ks = 776 and 111 N/um, deflections 1.9 and 13.5 um, positioning error 11.6 um
     k1 = screw_stiffness(21.9e-3, 0.1, 1.0, "fixed-supported")
     k2 = screw_stiffness(21.9e-3, 0.7, 1.0, "fixed-supported")
@@ -49,7 +51,8 @@ def test_thk_a715_thermal_displacement_per_degree():
 
 
 def test_thk_a716_abbe_error_form():
-    # THK A-716 eq. (39), A = l sin(theta) (THK prints no number): 30 degrees at 1 mm is half a millimetre
+    # THK A-716 eq. (39), A = l sin(theta) (THK prints no number): 30 degrees at 1 mm is half a
+    # millimetre
     assert pa.abbe_error(1e-3, math.radians(30.0)) == pytest.approx(0.5e-3)
 
 

@@ -13,10 +13,13 @@ RPM = 2.0 * math.pi / 60.0
 
 
 # Seed eq. 27: k_r = k_a/2 cot^2 alpha, and catalog [12]: c_r = 6 / 3.5 / 2 c_a at 15 / 20 / 25 deg.
-# They disagree: eq. 27 gives 6.96 / 3.77 / 2.30, 7-16 % above the catalog.  Each is tested against its own
+# They disagree: eq. 27 gives 6.96 / 3.77 / 2.30, 7-16 % above the catalog.  Each is tested against
+# its own
 # statement, and the disagreement is pinned.
 @pytest.mark.published
-@pytest.mark.parametrize(("deg", "catalog", "eq27"), [(15, 6.0, 6.96), (20, 3.5, 3.77), (25, 2.0, 2.30)])
+@pytest.mark.parametrize(
+    ("deg", "catalog", "eq27"), [(15, 6.0, 6.96), (20, 3.5, 3.77), (25, 2.0, 2.30)]
+)
 def test_bearing_radial_axial_ratios(deg, catalog, eq27):
     a = math.radians(deg)
     assert bearings.radial_from_axial(1.0, a, method="catalog") == catalog
@@ -44,6 +47,11 @@ def test_bearing_friction_eq40_hand_value_and_low_speed_branch():
 # Seed Table 8: angular contact ball bearing f0 = 2-7, f1 = 0.00025-0.00035.
 @pytest.mark.published
 def test_table8_angular_contact_row():
-    assert bearings.FRICTION_COEFFICIENTS_TABLE8["angular contact ball"] == (2.0, 7.0, 0.00025, 0.00035)
+    assert bearings.FRICTION_COEFFICIENTS_TABLE8["angular contact ball"] == (
+        2.0,
+        7.0,
+        0.00025,
+        0.00035,
+    )
     with pytest.raises(TypeError):
         bearings.FRICTION_COEFFICIENTS_TABLE8["x"] = (0, 0, 0, 0)

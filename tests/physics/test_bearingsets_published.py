@@ -8,19 +8,32 @@ import pytest
 
 from axisopt.physics import bearingsets
 
-# IBC TI-I-5010.2/E Table 2.2: the unloading point Fae > X Fv of each arrangement (bearings loaded against the
-# opposite ones; Fv the bearings' preload as a DB pair) and the single bearing's preload in a set against one
-IBC_X = [(1, 1, 2.83), (2, 1, 5.66), (1, 2, 2.83), (3, 1, 8.49), (4, 1, 11.30), (2, 2, 5.66), (3, 2, 8.49),
-         (2, 3, 5.66)]
+# IBC TI-I-5010.2/E Table 2.2: the unloading point Fae > X Fv of each arrangement (bearings loaded
+# against the
+# opposite ones; Fv the bearings' preload as a DB pair) and the single bearing's preload in a set
+# against one
+IBC_X = [
+    (1, 1, 2.83),
+    (2, 1, 5.66),
+    (1, 2, 2.83),
+    (3, 1, 8.49),
+    (4, 1, 11.30),
+    (2, 2, 5.66),
+    (3, 2, 8.49),
+    (2, 3, 5.66),
+]
 
 
 IBC_SINGLE = [(2, 1.36), (3, 1.57), (4, 1.71)]
 
 
-# NSK super-precision bearings p. 168, TAC B C10 (Fpre [N], Ka [N/um]): duplex, triplex (DFD), quadruplex (DFF)
-NSK_168 = {"60TAC120B": ((6650, 1810), (9100, 2650), (13200, 3550)),
-           "40TAC90B": ((5000, 1320), (6750, 1960), (10300, 2650)),
-           "30TAC62B": ((3350, 1030), (4500, 1520), (6650, 2010))}
+# NSK super-precision bearings p. 168, TAC B C10 (Fpre [N], Ka [N/um]): duplex, triplex (DFD),
+# quadruplex (DFF)
+NSK_168 = {
+    "60TAC120B": ((6650, 1810), (9100, 2650), (13200, 3550)),
+    "40TAC90B": ((5000, 1320), (6750, 1960), (10300, 2650)),
+    "30TAC62B": ((3350, 1030), (4500, 1520), (6650, 2010)),
+}
 
 
 @pytest.mark.published

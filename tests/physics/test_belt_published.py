@@ -19,7 +19,8 @@ def test_synchroflex_at10_worked_example():
     d0 = belt.pitch_diameter(10e-3, 25)
     assert 2.0 * 300.0 / d0 == pytest.approx(7539, abs=1.0)
     assert belt.belt_length(d0, d0, 0.625) == pytest.approx(1.500, abs=1e-9)
-    # Mspec per tooth and cm of width is FUspec times the pitch radius per tooth: FUspec = Mspec 2 pi / t
+    # Mspec per tooth and cm of width is FUspec times the pitch radius per tooth: FUspec = Mspec 2
+    # pi / t
     fu_spec = 11.70e-2 * 2.0 * math.pi / 10e-3 * 100.0  # [N/m of width]
     torque = belt.tooth_shear_pull(fu_spec, 12, 8.54e-2) * 0.5 * d0
     assert torque == pytest.approx(300.0, rel=0.002)
@@ -30,7 +31,9 @@ def test_synchroflex_mspec_from_fuspec_at10():
     """SYNCHROFLEX AT10 GEN III p. 55: FUspec 91.88 N/cm and Mspec 14.63 Ncm/cm at n = 0 (and 61.88 / 9.85 at
     1000 min^-1) are one tooth's pull times the pitch radius per tooth, p / 2 pi."""
     for fu, m in ((91.88, 14.63), (61.88, 9.85)):
-        one_tooth = belt.tooth_shear_pull(fu * 100.0, 1.0, 0.01) * 0.5 * belt.pitch_diameter(10e-3, 1)
+        one_tooth = (
+            belt.tooth_shear_pull(fu * 100.0, 1.0, 0.01) * 0.5 * belt.pitch_diameter(10e-3, 1)
+        )
         assert one_tooth * 100.0 == pytest.approx(m, rel=0.002)  # N m -> N cm, per cm of width
 
 
@@ -86,7 +89,9 @@ def _outs(v):
     return list(v) if isinstance(v, tuple) else [v]
 
 
-@pytest.mark.parametrize(("func", "args"), BACKEND_CASES, ids=[f.__name__ for f, _ in BACKEND_CASES])
+@pytest.mark.parametrize(
+    ("func", "args"), BACKEND_CASES, ids=[f.__name__ for f, _ in BACKEND_CASES]
+)
 def test_float_numpy_casadi_agree(func, args):
     scale = (0.9, 1.0, 1.1)
     refs = [[float(o) for o in _outs(func(*(a * s for a in args)))] for s in scale]

@@ -12,5 +12,6 @@ def test_beam_and_uprights():
     ends = 2 * (mu / 2) * (L / 2) ** 2
     assert bridge_yaw_inertia(m, L, mu) == pytest.approx(beam + ends)
     assert bridge_yaw_inertia(m, L, 0.0) == pytest.approx(bridge_yaw_inertia_estimate(m, L))
-    # the default: half the bridge in its uprights, twice the uniform beam's inertia (conservative for racking)
+    # the default: half the bridge in its uprights, twice the uniform beam's inertia (conservative
+    # for racking)
     assert bridge_yaw_inertia(m, L, UPRIGHT_SHARE * m) == pytest.approx(m * L**2 / 6)

@@ -19,11 +19,14 @@ def test_damping_eq38_eq39_relations():
     assert damping.damping_ratio_from_decay_rate(d / (2 * m), w0) == pytest.approx(zeta, rel=1e-12)
     assert damping.damping_ratio_from_loss_factor(2 * zeta) == pytest.approx(zeta, rel=1e-12)
     lam = 2 * math.pi * zeta / math.sqrt(1 - zeta**2)  # exact log decrement of the viscous SDOF
-    assert damping.damping_ratio_from_log_decrement(lam, method="exact") == pytest.approx(zeta, rel=1e-12)
+    assert damping.damping_ratio_from_log_decrement(lam, method="exact") == pytest.approx(
+        zeta, rel=1e-12
+    )
     assert damping.damping_ratio_from_log_decrement(lam) == pytest.approx(zeta, rel=zeta**2)
     assert damping.damping_coefficient(zeta, m, k) == pytest.approx(d, rel=1e-12)
     # Two Table 7 guide dampers (ball 35 mm, lower bound) plus steel structural damping (Table 5).
     c = damping.GUIDE_DAMPING_TABLE7[("ball", 35)][0]
     steel = damping.DAMPING_RATIO_TABLE5["steel"][0]
     assert damping.modal_damping_ratio(m, k, c, c, structural_ratio=steel) == pytest.approx(
-        steel + 2 * c / (2 * m * w0), rel=1e-12)
+        steel + 2 * c / (2 * m * w0), rel=1e-12
+    )

@@ -26,20 +26,25 @@ G = 9.807  # THK A-725
 def test_screw_inertia_per_length_thk(diameter_mm, per_mm_kg_cm2):
     # THK A-733 (shaft 20 mm: 1.23e-3 kg cm^2/mm) and A-743 (shaft 15 mm: 3.9e-4 kg cm^2/mm)
     j = screw_rotary_inertia(diameter_mm * MM, 1.0) / KG_CM2 * MM  # kg cm^2 per mm
-    assert j == pytest.approx(per_mm_kg_cm2, abs=0.5 * 10 ** (math.floor(math.log10(per_mm_kg_cm2)) - 2))
+    assert j == pytest.approx(
+        per_mm_kg_cm2, abs=0.5 * 10 ** (math.floor(math.log10(per_mm_kg_cm2)) - 2)
+    )
 
 
 @pytest.mark.published
 def test_screw_inertia_fanuc_and_mitsubishi():
-    # FANUC B-65142E/04 sec. 4 (p. 31): steel shaft (7.8e3 kg/m^3) of 32 mm x 1 m, "Jb = 0.0008 [kg m^2]"
+    # FANUC B-65142E/04 sec. 4 (p. 31): steel shaft (7.8e3 kg/m^3) of 32 mm x 1 m, "Jb = 0.0008 [kg
+    # m^2]"
     assert screw_rotary_inertia(0.032, 1.0, density=7.8e3) == pytest.approx(0.0008, abs=0.5e-4)
-    # Mitsubishi MDS-B-SVJ2 sec. 11-5 (p. 11-15): 40 mm x 1000 mm, 7.80e-3 kg/cm^3, "JB = 19.6 (kg cm^2)"
+    # Mitsubishi MDS-B-SVJ2 sec. 11-5 (p. 11-15): 40 mm x 1000 mm, 7.80e-3 kg/cm^3, "JB = 19.6 (kg
+    # cm^2)"
     assert screw_rotary_inertia(0.040, 1.0, density=7.8e3) / KG_CM2 == pytest.approx(19.6, abs=0.05)
 
 
 @pytest.mark.published
 def test_thk_example_1_horizontal_transfer():
-    # A-722: m1 60 + m2 20 kg, Vmax 1 m/s, t1 = t3 = 0.15 s, Jm 1e-3 kg m^2, A = 1, mu 0.003, f 15 N;
+    # A-722: m1 60 + m2 20 kg, Vmax 1 m/s, t1 = t3 = 0.15 s, Jm 1e-3 kg m^2, A = 1, mu 0.003, f 15
+    # N;
     # selected WTF2040-2 (lead 40 mm), screw length 1200 mm; eta 0.9 (A-733)
     m, lead, jm, t1 = 80.0, 40 * MM, 1e-3, 0.15
     fa_uniform = 0.003 * m * G + 15.0  # A-725: Fa2 = 17 N
@@ -59,7 +64,9 @@ def test_thk_example_1_horizontal_transfer():
     # A-734: Trms over t1 0.15, t2 0.85, t3 0.15, stop 2.6 s from THK's printed torques = 1305 N mm
     durations = (0.15, 0.85, 0.15, 2.6)
     assert drive.rms_torque((4730, 120, 4490, 0.0), durations) == pytest.approx(1305, abs=1)
-    assert drive.rms_torque((t_k * 1e3, t_friction * 1e3, t_g * 1e3, 0.0), durations) == pytest.approx(1305, rel=5e-3)
+    assert drive.rms_torque(
+        (t_k * 1e3, t_friction * 1e3, t_g * 1e3, 0.0), durations
+    ) == pytest.approx(1305, rel=5e-3)
     # A-735: the rotor must be at least one tenth of the load inertia (C = 10 in eq. 49)
     assert j / 10 == pytest.approx(3.39e-4, abs=0.005e-4)
     assert drive.inertia_ratio(j, jm) < 10
@@ -72,7 +79,8 @@ def test_thk_example_2_vertical_conveyance():
     m, lead, jm, t = 50.0, 10 * MM, 5e-5, 0.2
     up = drive.force_torque(510.0, lead, 0.9)  # A-739: Fa2 = 510 N upward uniform
     down = drive.force_torque(470.0, lead, 0.9)  # Fa5 = 470 N downward uniform
-    assert up * 1e3 == pytest.approx(900, rel=5e-3) and down * 1e3 == pytest.approx(830, rel=5e-3)  # A-743
+    # A-743
+    assert up * 1e3 == pytest.approx(900, rel=5e-3) and down * 1e3 == pytest.approx(830, rel=5e-3)
     js = screw_rotary_inertia(15 * MM, 800 * MM)
     assert js / KG_CM2 == pytest.approx(0.31, abs=0.005)  # A-744: 0.31 kg cm^2
     j = drive.reflected_inertia(m, lead, js)

@@ -15,7 +15,9 @@ def test_axial_torsional_limits_and_eigen():
     j, kt, ka, m, lead = 2e-3, 3e3, 2e8, 300.0, 0.01
     w1, w2 = dynamics.axial_torsional_eigenvalues(j, kt, ka, m, lead)
     r = lead / (2 * math.pi)
-    ev = np.linalg.eigvals(np.linalg.solve(np.diag([j, m]), [[kt + ka * r**2, -ka * r], [-ka * r, ka]]))
+    ev = np.linalg.eigvals(
+        np.linalg.solve(np.diag([j, m]), [[kt + ka * r**2, -ka * r], [-ka * r, ka]])
+    )
     assert sorted(ev) == pytest.approx([w1, w2], rel=1e-9)
     # Very stiff torsion: the low mode tends to the pure axial mode sqrt(ka/m).
     f1, _ = dynamics.axial_torsional_frequencies(j, 1e12, ka, m, lead)
@@ -32,7 +34,8 @@ def test_dynamic_compliance_static_limit_and_resonance():
     j, kt, lead = 2e-3, 3e3, 0.01
     h2 = dynamics.dynamic_compliance([0.0], m, ka, ca, j, kt, 0.0, lead)
     r = lead / (2 * math.pi)
-    assert h2[0].real == pytest.approx(1 / ka + r**2 / kt, rel=1e-9)  # axial and torsion springs in series
+    # axial and torsion springs in series
+    assert h2[0].real == pytest.approx(1 / ka + r**2 / kt, rel=1e-9)
     with pytest.raises(ValueError):
         dynamics.dynamic_compliance([1.0], m, ka, ca, rotary_inertia=j)
 

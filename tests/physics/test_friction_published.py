@@ -17,7 +17,8 @@ from axisopt.physics import friction as pf
     "d, lead, mu", [(0.032, 0.010, 0.003), (0.020, 0.005, 0.005), (0.050, 0.040, 0.01)]
 )
 def test_positive_efficiency_thk_form(d, lead, mu):
-    # THK General Catalog, ball screw, "Efficiency": eta1 = (1 - mu tan beta) / (1 + mu / tan beta), with the
+    # THK General Catalog, ball screw, "Efficiency": eta1 = (1 - mu tan beta) / (1 + mu / tan beta),
+    # with the
     # lead angle tan beta = Ph / (pi d); THK: 90 to 95 % or more for a ball screw at mu 0.003-0.01
     tan_b = lead / (math.pi * d)
     eta = (1 - mu * tan_b) / (1 + mu / tan_b)

@@ -39,7 +39,8 @@ def test_yaw_stiffness_closed_form():
 
 
 def test_one_drive_alone_is_a_free_rigid_body_on_one_spring():
-    # rigid-body limit: k2 = 0, no guides: one zero mode; the other omega^2 = k1 (1/m + d^2/J) with the
+    # rigid-body limit: k2 = 0, no guides: one zero mode; the other omega^2 = k1 (1/m + d^2/J) with
+    # the
     # carriage at the centre (d = L/2 from the centre of mass)
     k1 = 1.5e8
     w1, w2 = pg.gantry_eigenvalues(M_B, J_B, M_C, 0.0, k1, 0.0, L)

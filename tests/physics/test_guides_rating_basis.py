@@ -33,11 +33,18 @@ def test_iko_life_calculation_example():
     assert thk == pytest.approx(2 * roller, rel=1e-12)
 
 
-# vendor -> {type: basis [km]} and the sentence that states it (catalogs/SOURCES.md names the documents)
+# vendor -> {type: basis [km]} and the sentence that states it (catalogs/SOURCES.md names the
+# documents)
 STATED = {
-    "HIWIN": ({"ball": 50.0, "roller": 100.0}, "G99TE20 p. 3: 'a nominal life of 50km of operation for a ball "
-                                               "type linear guideway and 100km for a roller type'"),
-    "IKO": ({"ball": 50.0, "roller": 50.0}, "CAT-1578E pp. I-21/I-22: L = 50 (C/P)^(10/3) for the roller type"),
+    "HIWIN": (
+        {"ball": 50.0, "roller": 100.0},
+        "G99TE20 p. 3: 'a nominal life of 50km of operation for a ball "
+        "type linear guideway and 100km for a roller type'",
+    ),
+    "IKO": (
+        {"ball": 50.0, "roller": 50.0},
+        "CAT-1578E pp. I-21/I-22: L = 50 (C/P)^(10/3) for the roller type",
+    ),
     "NBS": ({"ball": 50.0}, "linear rail system, sec. 3.2 Dynamic load: 'a nominal life of 50 km'"),
 }
 

@@ -10,9 +10,17 @@ from axisopt.physics.motion import Segment, cycle_phases, cycle_time, phase_spee
 
 
 def test_trapezoidal_move_speeds_and_time():
-    # 500 mm at 0.4 m/s and 3 m/s^2: ramps of v/a = 0.1333 s over v^2/2a = 26.7 mm, cruise (0.5 - 0.0533)/0.4 s
+    # 500 mm at 0.4 m/s and 3 m/s^2: ramps of v/a = 0.1333 s over v^2/2a = 26.7 mm, cruise (0.5 -
+    # 0.0533)/0.4 s
     phases = cycle_phases([Segment("move", distance=0.5, speed=0.4, acceleration=3.0)])
-    assert [round(v, 12) for pair in phase_speeds(phases) for v in pair] == [0.0, 0.4, 0.4, 0.4, 0.4, 0.0]
+    assert [round(v, 12) for pair in phase_speeds(phases) for v in pair] == [
+        0.0,
+        0.4,
+        0.4,
+        0.4,
+        0.4,
+        0.0,
+    ]
     assert cycle_time(phases) == pytest.approx(2 * 0.4 / 3.0 + (0.5 - 0.4**2 / 3.0) / 0.4)
 
 
@@ -25,7 +33,8 @@ def test_short_move_is_triangular():
 
 
 def test_jerk_limited_ramp_reaches_the_speed_and_dwell_stands_still():
-    # S-ramp to 0.4 m/s at 3 m/s^2, 50 m/s^3: jerk phases of a/j = 0.06 s each gain a^2/2j = 0.09 m/s
+    # S-ramp to 0.4 m/s at 3 m/s^2, 50 m/s^3: jerk phases of a/j = 0.06 s each gain a^2/2j = 0.09
+    # m/s
     seg = rapid_cycle(0.5, 0.4, 3.0, 50.0)[0]
     phases = cycle_phases([seg, Segment("dwell", duration=1.0)])
     speeds = phase_speeds(phases)

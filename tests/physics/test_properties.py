@@ -23,14 +23,23 @@ def test_series_stiffness_below_weakest_part(ks):
 
 
 @settings(max_examples=200, deadline=None)
-@given(st.floats(0.005, 0.1), st.floats(0.05, 5.0), st.floats(0.2, 5.0), st.floats(0.2, 5.0),
-       st.sampled_from(screw.MOUNTINGS))
+@given(
+    st.floats(0.005, 0.1),
+    st.floats(0.05, 5.0),
+    st.floats(0.2, 5.0),
+    st.floats(0.2, 5.0),
+    st.sampled_from(screw.MOUNTINGS),
+)
 def test_screw_stiffness_scales_as_d2_over_l(d, length, a, b, mounting):
     k = screw.screw_stiffness_catalog(d, length, mounting)
-    assert screw.screw_stiffness_catalog(a * d, b * length, mounting) == pytest.approx(k * a**2 / b, rel=1e-9)
+    assert screw.screw_stiffness_catalog(a * d, b * length, mounting) == pytest.approx(
+        k * a**2 / b, rel=1e-9
+    )
     x = 0.3 * length
     ks = screw.screw_stiffness(d, x, length, mounting)
-    assert screw.screw_stiffness(a * d, b * x, b * length, mounting) == pytest.approx(ks * a**2 / b, rel=1e-9)
+    assert screw.screw_stiffness(a * d, b * x, b * length, mounting) == pytest.approx(
+        ks * a**2 / b, rel=1e-9
+    )
 
 
 @settings(max_examples=100, deadline=None)
@@ -43,13 +52,16 @@ def test_double_nut_stiffness_bounded(f1, f2):
         assert (k1 - k2) * (f1 - f2) <= 1e-12
 
 
-@pytest.mark.parametrize(("func", "args"), [
-    (screw.screw_stiffness, (0.02, 0.3, 1.0, "fixed-pinned")),
-    (checks.critical_speed, (0.02, 1.0, "FIXED-FREE")),
-    (checks.buckling_load, (0.02, 1.0, None)),
-    (bearings.radial_from_axial, (1.0, 0.3, "catalogue")),
-    (damping.damping_ratio_from_log_decrement, (0.3, "approx")),
-])
+@pytest.mark.parametrize(
+    ("func", "args"),
+    [
+        (screw.screw_stiffness, (0.02, 0.3, 1.0, "fixed-pinned")),
+        (checks.critical_speed, (0.02, 1.0, "FIXED-FREE")),
+        (checks.buckling_load, (0.02, 1.0, None)),
+        (bearings.radial_from_axial, (1.0, 0.3, "catalogue")),
+        (damping.damping_ratio_from_log_decrement, (0.3, "approx")),
+    ],
+)
 def test_wrong_selector_names_allowed_values(func, args):
     with pytest.raises(ValueError, match="allowed"):
         func(*args)
@@ -67,6 +79,8 @@ def test_bearing_methods_dispatch_and_agree_in_order_of_magnitude():
 
 def test_dn_and_life_units():
     # 32 mm at 3000 rpm is 96 000 mm*rpm in vendor units
-    assert checks.dn_value(0.032, 3000 * 2 * math.pi / 60) / unit_factor('mm.rpm', 'dn') == pytest.approx(96000)
+    assert checks.dn_value(0.032, 3000 * 2 * math.pi / 60) / unit_factor(
+        "mm.rpm", "dn"
+    ) == pytest.approx(96000)
     n = 1500 * 2 * math.pi / 60
     assert checks.life_time(3e4, 3e3, n) == pytest.approx(1e9 / 25.0, rel=1e-12)

@@ -11,13 +11,15 @@ RPM = 2.0 * math.pi / 60.0
 
 
 def test_jungnickel_rotating_cylinder_film_coefficient():
-    # Jungnickel 2010 (TU Dresden), as in Thermca forced_conv.rot_cyl_in_air: alpha = 3.75 omega^0.7 r^0.4;
+    # Jungnickel 2010 (TU Dresden), as in Thermca forced_conv.rot_cyl_in_air: alpha = 3.75 omega^0.7
+    # r^0.4;
     # a 40 mm shaft at 1000 rpm: 3.75 x 104.7^0.7 x 0.02^0.4 = 20.3 W/(m^2 K)
     assert thermal.rotating_shaft_heat_transfer(1000 * RPM, 0.02) == pytest.approx(20.3, abs=0.05)
 
 
 def test_tian_he_heat_generation_is_torque_times_speed():
-    # Tian & He (2004), cited in Machines 2023, 11(3), 408 eq. 1: Q [kJ/h] = 0.12 pi n [rpm] tau [N.m]: the friction
+    # Tian & He (2004), cited in Machines 2023, 11(3), 408 eq. 1: Q [kJ/h] = 0.12 pi n [rpm] tau
+    # [N.m]: the friction
     # power T omega the heat balance uses.  1 N.m at 1000 rpm: 377 kJ/h = 104.7 W
     power = 1.0 * 1000 * RPM
     assert power * 3.6 == pytest.approx(0.12 * math.pi * 1000 * 1.0, rel=1e-12)
@@ -49,8 +51,9 @@ def test_negative_heat_transfer_is_a_one_line_error(tmp_path, capsys):
     from axisopt.cli import main
 
     src = Path(__file__).resolve().parents[2] / "problems" / "duty_cycle_problem.yaml"
-    text = src.read_text(encoding="utf-8").replace("  jerk: 100 m/s^3\n",
-                                                   "  jerk: 100 m/s^3\n  heat_transfer: -20 W/(m^2.K)\n")
+    text = src.read_text(encoding="utf-8").replace(
+        "  jerk: 100 m/s^3\n", "  jerk: 100 m/s^3\n  heat_transfer: -20 W/(m^2.K)\n"
+    )
     p = tmp_path / "p.yaml"
     p.write_text(text, encoding="utf-8")
     assert main(["solve", str(p)]) == 2
@@ -59,7 +62,8 @@ def test_negative_heat_transfer_is_a_one_line_error(tmp_path, capsys):
 
 
 def test_holman_free_convection_rise_meets_its_own_film():
-    # Holman, Heat Transfer, Table 7-2: horizontal cylinder in air, laminar, h = 1.32 (dT/d)^(1/4); the rise it
+    # Holman, Heat Transfer, Table 7-2: horizontal cylinder in air, laminar, h = 1.32 (dT/d)^(1/4);
+    # the rise it
     # gives back satisfies P = h A dT
     p, d, area = 40.0, 0.04, math.pi * 0.04 * 1.0
     dt = thermal.free_convection_temperature_rise(p, d, area)
@@ -79,8 +83,10 @@ def test_holman_example_7_7_simplified_free_convection():
 
 
 def test_jungnickel_free_convection_agrees_with_holman():
-    # Jungnickel 2010 (Thermca free_conv.horiz_cyl) and Holman Table 7-2 (laminar, 1.32 (dT/d)^0.25) for the same
-    # 40 mm horizontal cylinder 5 K above the air: 4.11 and 4.41 W/(m^2 K), two published correlations within 10 %
+    # Jungnickel 2010 (Thermca free_conv.horiz_cyl) and Holman Table 7-2 (laminar, 1.32 (dT/d)^0.25)
+    # for the same
+    # 40 mm horizontal cylinder 5 K above the air: 4.11 and 4.41 W/(m^2 K), two published
+    # correlations within 10 %
     jung = thermal.horizontal_cylinder_free_film(5.0, 0.04)
     assert jung == pytest.approx(4.11, abs=0.005)
     assert jung == pytest.approx(1.32 * (5.0 / 0.04) ** 0.25, rel=0.10)
@@ -91,7 +97,9 @@ def test_mixed_convection_of_transverse_flows():
     assert thermal.mixed_convection_film(3.0, 4.0) == pytest.approx(337.0**0.25, rel=1e-12)
 
 
-def _fin_mean_by_finite_differences(h, d, dr, length, g_end, q_line, theta_end, k=thermal.K_STEEL, n=2001):
+def _fin_mean_by_finite_differences(
+    h, d, dr, length, g_end, q_line, theta_end, k=thermal.K_STEEL, n=2001
+):
     """Mean rise of a shaft (fin) with heat q' [W/m] along it and ends held through g_end to theta_end: the fin
     equation k A theta'' = h U theta - q' solved on a grid (independent of the closed form)."""
     area, perim = math.pi * dr**2 / 4, math.pi * d
@@ -122,8 +130,11 @@ def test_shaft_end_fraction_solves_the_fin_equation(g_end):
     q_line = 20.0
     theta_inf = q_line / (h * math.pi * d)
     assert _fin_mean_by_finite_differences(h, d, dr, length, g_end, q_line, 0.0) == pytest.approx(
-        theta_inf * (1 - f), rel=2e-4)
-    assert _fin_mean_by_finite_differences(h, d, dr, length, g_end, 0.0, 3.0) == pytest.approx(3.0 * f, rel=2e-4)
+        theta_inf * (1 - f), rel=2e-4
+    )
+    assert _fin_mean_by_finite_differences(h, d, dr, length, g_end, 0.0, 3.0) == pytest.approx(
+        3.0 * f, rel=2e-4
+    )
     if g_end > 1e5:
         x = math.sqrt(h * math.pi * d / (thermal.K_STEEL * math.pi * dr**2 / 4)) * length / 2
         assert f == pytest.approx(math.tanh(x) / x, rel=1e-4)

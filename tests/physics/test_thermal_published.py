@@ -13,6 +13,8 @@ def test_thermal_growth_vendor_coefficients():
 
     assert thermal.thermal_growth(1.0, 1.0) == pytest.approx(11.6e-6, rel=1e-12)
     assert thermal.thermal_growth(1.0, 1.0, alpha=12e-6) == pytest.approx(12e-6, rel=1e-12)
-    # the compensating pretension of a 40 mm screw (root 34.91 mm) for 3 K: E A alpha dT = 6.47 kN by hand
+    # the compensating pretension of a 40 mm screw (root 34.91 mm) for 3 K: E A alpha dT = 6.47 kN
+    # by hand
     assert thermal.restrained_thermal_force(0.03491, 3.0) == pytest.approx(
-        206e9 * 3.141592653589793 / 4 * 0.03491**2 * 11.6e-6 * 3.0, rel=1e-12)
+        206e9 * 3.141592653589793 / 4 * 0.03491**2 * 11.6e-6 * 3.0, rel=1e-12
+    )

@@ -49,12 +49,15 @@ def test_thermal_row_follows_the_designs_preload(tmp_path):
     assert float(low.values["thermal_error"]) == pytest.approx(
         float(top.values["thermal_error"]), rel=1e-9
     )
-    # the row is the growth of the rise the design's balance gives: alpha x rise x length scale, bounded by the
-    # free growth over the far end's distance from the fixed bearing (A-715: delta_l = rho x theta x l)
+    # the row is the growth of the rise the design's balance gives: alpha x rise x length scale,
+    # bounded by the
+    # free growth over the far end's distance from the fixed bearing (A-715: delta_l = rho x theta x
+    # l)
     rise = float(low.values["temperature_rise"])
     far = low.design.axis.start_offset + low.design.axis.stroke
     assert 0 < r_low[thermal] <= ALPHA_STEEL * rise * far * (1 + 1e-9)
-    # the total shown adds the rows shown; the limit's total (thermal at the top preload) is printed beside it
+    # the total shown adds the rows shown; the limit's total (thermal at the top preload) is printed
+    # beside it
     shown = [v for k, v in r_low.items() if not k.startswith(("total", "repeatability"))]
     assert r_low["total, arithmetic worst case"] == pytest.approx(sum(shown), rel=1e-12)
     assert r_low["total the limit holds (thermal at top preload)"] == pytest.approx(

@@ -12,8 +12,19 @@ def test_residual_plot_draws_direction_as_categories(tmp_path, monkeypatch):
     figs = []
     monkeypatch.setattr(rep, "save_figure", lambda fig, path, dpi=90: figs.append(fig))
     root = Path(__file__).resolve().parents[2] / "problems" / "data"
-    assert main(["diagnose", str(root / "table_x_stiffness.csv"), "--design", str(root / "table_x.yaml"),
-                 "--report", str(tmp_path / "r")]) == 0
+    assert (
+        main(
+            [
+                "diagnose",
+                str(root / "table_x_stiffness.csv"),
+                "--design",
+                str(root / "table_x.yaml"),
+                "--report",
+                str(tmp_path / "r"),
+            ]
+        )
+        == 0
+    )
     axes = {ax.get_xlabel(): ax for fig in figs for ax in fig.axes}
     d = axes["direction"]
     assert [t.get_text() for t in d.get_xticklabels()] == ["-1", "+1"]

@@ -33,25 +33,32 @@ def _fast_vmc(speed_m_min: float):
 
 def test_compare_drive_rows_show_what_the_checks_compare():
     d = _fast_vmc(45)
-    # a problem that asks 0.8 x rated of every motor (axis.rms_torque_ratio; the Yaskawa rule alone is the rated)
+    # a problem that asks 0.8 x rated of every motor (axis.rms_torque_ratio; the Yaskawa rule alone
+    # is the rated)
     d = replace(d, axis=replace(d.axis, rms_torque_ratio=0.8))
     ev = evaluate(d)
     v = ev.values
-    assert float(v["needed_motor_peak_torque"]) > 1.2 * float(v["peak_torque"])  # scaled: the case that matters
+    # scaled: the case that matters
+    assert float(v["needed_motor_peak_torque"]) > 1.2 * float(v["peak_torque"])
     base = evaluate(load_design(VMC))
-    text = compare_table([Compared("fast", "x", "design", ev), Compared("vmc", "y", "design", base)])
+    text = compare_table(
+        [Compared("fast", "x", "design", ev), Compared("vmc", "y", "design", base)]
+    )
     peak = next(x for x in text.splitlines() if x.startswith("  peak torque"))
     assert f"{float(v['needed_motor_peak_torque']):.2f} / {d.motor['peak_torque']:.3g}" in peak
     rms = next(x for x in text.splitlines() if x.startswith("  RMS torque"))
-    allowed = d.axis.rms_torque_ratio * d.motor["rated_torque"]  # the rule's allowed value, not the rated torque
+    # the rule's allowed value, not the rated torque
+    allowed = d.axis.rms_torque_ratio * d.motor["rated_torque"]
     assert f"/ {allowed:.3g}" in rms and allowed < d.motor["rated_torque"]
     assert max(len(x) for x in text.splitlines()) <= 100
 
 
 def test_evaluate_peak_line_fits_and_shows_the_scaled_peak(capsys, tmp_path):
     d = tmp_path / "fast.yaml"
-    d.write_text(VMC.read_text(encoding="utf-8").replace("max_speed: 24 m/min", "max_speed: 45 m/min"),
-                 encoding="utf-8")
+    d.write_text(
+        VMC.read_text(encoding="utf-8").replace("max_speed: 24 m/min", "max_speed: 45 m/min"),
+        encoding="utf-8",
+    )
     assert main(["evaluate", str(d)]) == 0
     out = capsys.readouterr().out
     assert max(len(x) for x in out.splitlines()) <= 100
@@ -69,7 +76,8 @@ def test_compare_never_cuts_an_id_silently():
     ev = evaluate(replace(long_id, nut=nut))
     other = evaluate(load_design(VMC))
     text = compare_table([Compared("a", "a", "design", ev), Compared("b", "b", "design", other)])
-    assert "~" in text and nut["id"] in text.replace("\n    ", " ")  # marked, and given in full below
+    # marked, and given in full below
+    assert "~" in text and nut["id"] in text.replace("\n    ", " ")
     assert max(len(x) for x in text.splitlines()) <= 100
 
 
@@ -83,10 +91,20 @@ def test_twin_drive_text_fits_100_columns(capsys, tmp_path):
 
 
 def test_reprs_tell_designs_apart():
-    res = solve(load_problem(ROOT / "problems" / "teaching_problem.yaml"), top=3, sensitivities=False)
+    res = solve(
+        load_problem(ROOT / "problems" / "teaching_problem.yaml"), top=3, sensitivities=False
+    )
     assert f"{res.best.objective:,.3f} N/um" in repr(res)
-    assert len({repr(c).split("objective")[1][:12] for c in [res.best] + res.runners_up
-                if c.objective != res.best.objective}) >= 1
+    assert (
+        len(
+            {
+                repr(c).split("objective")[1][:12]
+                for c in [res.best] + res.runners_up
+                if c.objective != res.best.objective
+            }
+        )
+        >= 1
+    )
     assert f"{res.runners_up[-1].objective:,.3f}" in repr(res.runners_up[-1])
 
 
@@ -99,13 +117,19 @@ def test_infeasible_answer_leads_with_the_misses_then_the_notes():
     assert lines[2].startswith("  misses: no combination meets motor peak zone")
     first_note = next(i for i, x in enumerate(lines) if x.startswith("  note:"))
     change = next(i for i, x in enumerate(lines) if x.startswith("  change the design"))
-    assert change < first_note and "reductions (gearboxes, belts) were left out" in lines[first_note]
+    assert (
+        change < first_note and "reductions (gearboxes, belts) were left out" in lines[first_note]
+    )
 
 
 def test_study_reason_leads_with_the_misses(tmp_path):
     f = tmp_path / "s.yaml"
-    f.write_text("name: tight\nbase: " + str(ROOT / "problems" / "teaching_problem.yaml") +
-                 "\nsweep:\n  limits.min_stiffness: [500 N/um]\n", encoding="utf-8")
+    f.write_text(
+        "name: tight\nbase: "
+        + str(ROOT / "problems" / "teaching_problem.yaml")
+        + "\nsweep:\n  limits.min_stiffness: [500 N/um]\n",
+        encoding="utf-8",
+    )
     out = tmp_path / "out"
     assert main(["study", str(f), "--out", str(out), "--workers", "0", "--quiet"]) == 1
     import json
@@ -113,7 +137,8 @@ def test_study_reason_leads_with_the_misses(tmp_path):
     rec = json.loads(next((out / "cases").glob("*.json")).read_text(encoding="utf-8"))
     assert rec["status"] == "infeasible"
     assert rec["reason"].startswith("the closest design misses min stiffness by ")
-    # the notes after the misses (the teaching problem leaves reductions out itself since issue 54: no note on
+    # the notes after the misses (the teaching problem leaves reductions out itself since issue 54:
+    # no note on
     # what max_backlash left out, the enumeration's own note follows)
     assert rec["reason"].split("; ", 1)[1].startswith("no catalog combination meets every limit")
 
@@ -121,24 +146,32 @@ def test_study_reason_leads_with_the_misses(tmp_path):
 def test_parts_marks_rotating_nuts_and_lists_grades(capsys):
     assert main(["parts", "nuts", "--diameter", "32", "--vendor", "THK"]) == 0
     out = capsys.readouterr().out
-    assert re.search(r"^THK-DIR3206-6 R\s", out, re.M) and re.search(r"^THK-BNFN3205-5\s", out, re.M)
+    assert re.search(r"^THK-DIR3206-6 R\s", out, re.M) and re.search(
+        r"^THK-BNFN3205-5\s", out, re.M
+    )
     assert "R: a driven rotating-nut unit" in out
     assert main(["parts", "screws", "--vendor", "Bosch Rexroth", "--diameter", "32"]) == 0
     out = capsys.readouterr().out
-    assert "grades" in out.splitlines()[0] and "C1,C3,C5" in out  # catalogs/screw_grades.csv: SNF P1/P3/P5
+    # catalogs/screw_grades.csv: SNF P1/P3/P5
+    assert "grades" in out.splitlines()[0] and "C1,C3,C5" in out
     assert main(["parts", "screws", "--vendor", "HIWIN", "--diameter", "16"]) == 0
     assert "C0-C5" in capsys.readouterr().out
 
 
 def test_rotating_nut_checks_that_do_not_apply_read_so(tmp_path, capsys):
     f = tmp_path / "rot.yaml"
-    f.write_text("name: rot\naxis:\n  stroke: 2000 mm\n  moving_mass: 300 kg\n  mounting: fixed-fixed\n"
-                 "  max_speed: 15 m/min\n  axial_load: 3000 N\n  acceleration: 2 m/s^2\nparts:\n"
-                 "  screw: THK-DIR-40x10\n  nut: THK-DIR4010-6\n  bearing: THK-BK30\n  guide: HIWIN-HG25-ZA\n"
-                 "  motor: SGM7G-13A\n", encoding="utf-8")
+    f.write_text(
+        "name: rot\naxis:\n  stroke: 2000 mm\n  moving_mass: 300 kg\n  mounting: fixed-fixed\n"
+        "  max_speed: 15 m/min\n  axial_load: 3000 N\n  acceleration: 2 m/s^2\nparts:\n"
+        "  screw: THK-DIR-40x10\n  nut: THK-DIR4010-6\n  bearing: THK-BK30\n  guide: HIWIN-HG25-ZA\n"
+        "  motor: SGM7G-13A\n",
+        encoding="utf-8",
+    )
     assert main(["evaluate", str(f)]) == 0
     out = capsys.readouterr().out
-    crit = next(x for x in out.splitlines() if x.strip().startswith("critical speed / max screw speed"))
+    crit = next(
+        x for x in out.splitlines() if x.strip().startswith("critical speed / max screw speed")
+    )
     assert crit.split()[-3:] == ["n/a", "does", "apply"] or crit.endswith("n/a  does not apply")
     assert "rpm" not in crit and "pass" not in crit
 

@@ -33,7 +33,9 @@ def test_sides_differ_by_the_statics_of_the_bridge(best):
     rows = {row["check"]: row for row in side_rows(evaluate(design))}
     comp = rows["buckling"]
     expected = (2 * r - 1) * (a.axial_load + tw.cross_mass * a.acceleration)  # [N]
-    assert (comp["needed_governing"] - comp["needed_far"]) * 1e3 == pytest.approx(expected, rel=0.01)
+    assert (comp["needed_governing"] - comp["needed_far"]) * 1e3 == pytest.approx(
+        expected, rel=0.01
+    )
     # the governing side binds: every per-side margin is smaller there
     assert all(row["margin_governing"] < row["margin_far"] for row in rows.values())
     assert rows.keys() >= {"nut_life", "motor_rated_torque", "nut_lift_off"}
@@ -50,7 +52,11 @@ def test_a_centred_carriage_loads_both_sides_alike(best):
 def test_the_json_carries_the_sides(best):
     _, design = best
     d = twin_dict(evaluate(design))["twin_drive"]
-    assert d["sides"] and {"margin_governing", "margin_far", "needed_governing", "needed_far"} <= d["sides"][0].keys()
+    assert (
+        d["sides"]
+        and {"margin_governing", "margin_far", "needed_governing", "needed_far"}
+        <= d["sides"][0].keys()
+    )
 
 
 def test_unknown_side_is_refused(best):
@@ -71,6 +77,6 @@ def test_the_long_screw_sag_is_shown(best):
     ev = evaluate(design)
     q = float(design.screw["mass_per_length"]) * 9.80665
     d_r = float(design.screw["root_diameter"])
-    expected = q * design.axis.span ** 4 / (384 * 206e9 * math.pi * d_r ** 4 / 64)
+    expected = q * design.axis.span**4 / (384 * 206e9 * math.pi * d_r**4 / 64)
     assert evaluation_dict(ev)["screw_sag_mm"] == pytest.approx(expected * 1e3, rel=1e-6)
     assert f"screw sag under its own weight {expected * 1e3:.2f} mm" in evaluation_table(ev)

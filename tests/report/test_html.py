@@ -41,21 +41,41 @@ def reports(tmp_path_factory):
     pytest.importorskip("plotly")
     d = tmp_path_factory.mktemp("html")
     runs = {
-        "evaluate": (["evaluate", str(P / "vmc_x_design.yaml")], 3),  # profiles with the drive, chain, FRF
-        "interactive": (["evaluate", str(P / "vmc_x_design.yaml"), "--plotly", "inline"], 4),  # + drive
+        # profiles with the drive, chain, FRF
+        "evaluate": (["evaluate", str(P / "vmc_x_design.yaml")], 3),
+        # + drive
+        "interactive": (["evaluate", str(P / "vmc_x_design.yaml"), "--plotly", "inline"], 4),
         # the best designs' profiles and drive, the winner's chain and FRF
         "solve": (["solve", str(P / "teaching_problem.yaml"), "--top", "3", "--no-sensitivity"], 3),
         "pareto": (["solve", str(P / "pareto_problem.yaml"), "--no-sensitivity"], 1),
         "compare": (["compare", str(P / "vmc_x_design.yaml"), str(P / "paper_3_1_3_d40.yaml")], 1),
-        "study": (["study", str(P / "studies" / "teaching_random.yaml"), "--out", str(d / "study"),
-                   "--workers", "0", "--quiet"], None),
-        "diagnose": (["diagnose", str(P / "data" / "table_x_stiffness.csv"), "--design",
-                      str(P / "data" / "table_x.yaml")], 1),
+        "study": (
+            [
+                "study",
+                str(P / "studies" / "teaching_random.yaml"),
+                "--out",
+                str(d / "study"),
+                "--workers",
+                "0",
+                "--quiet",
+            ],
+            None,
+        ),
+        "diagnose": (
+            [
+                "diagnose",
+                str(P / "data" / "table_x_stiffness.csv"),
+                "--design",
+                str(P / "data" / "table_x.yaml"),
+            ],
+            1,
+        ),
     }
     out = {}
     for name, (argv, figs) in runs.items():
         path = d / f"{name}.html"
-        assert main([*argv, "--report", str(path)]) in (0, 1), name  # the study has infeasible cases: 1
+        # the study has infeasible cases: 1
+        assert main([*argv, "--report", str(path)]) in (0, 1), name
         out[name] = (path, figs)
     return out
 
@@ -76,7 +96,8 @@ def test_default_reports_are_small_and_need_no_plotly(reports):
             assert "Plotly" in text
             continue
         assert size <= MAX_PAGE_BYTES, (name, size)
-        assert "<script" not in text and "<svg" in text, name  # static SVG figures, no script at all
+        # static SVG figures, no script at all
+        assert "<script" not in text and "<svg" in text, name
 
 
 def _driver(size):
@@ -86,15 +107,23 @@ def _driver(size):
 
     opts = Options()
     opts.binary_location = shutil.which("chromium")
-    for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-              "--enable-unsafe-swiftshader", f"--window-size={size[0]},{size[1]}"):
+    for a in (
+        "--headless=new",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--disable-dev-shm-usage",
+        "--enable-unsafe-swiftshader",
+        f"--window-size={size[0]},{size[1]}",
+    ):
         opts.add_argument(a)
     opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     return webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=opts)
 
 
-# per table: its width, the width of the box it sits in, whether that box scrolls sideways, and the cells that
-# are not shown (display none, hidden, zero width or clipped by an ancestor other than the table's own box)
+# per table: its width, the width of the box it sits in, whether that box scrolls sideways, and the
+# cells that
+# are not shown (display none, hidden, zero width or clipped by an ancestor other than the table's
+# own box)
 _TABLES = """
 return Array.from(document.querySelectorAll('table')).map(t => {
   const box = t.parentElement, cs = getComputedStyle(box);
@@ -115,13 +144,16 @@ def test_every_table_fits_or_scrolls_inside_its_box(reports, size):
     try:
         for name, (path, _) in reports.items():
             driver.get(path.as_uri())
-            inner, page = driver.execute_script("return [window.innerWidth, document.documentElement.scrollWidth]")
+            inner, page = driver.execute_script(
+                "return [window.innerWidth, document.documentElement.scrollWidth]"
+            )
             assert page <= inner + 1, (name, size, page, inner)  # never a page-wide sideways scroll
             tables = driver.execute_script(_TABLES)
             for t in tables:
                 assert t["hidden"] == 0 and t["narrowest"] >= 8, (name, size, t)  # no column hidden
                 if size == DESKTOP:
-                    assert t["width"] <= t["box"] + 1, (name, size, t)  # every column in view at 1280 px
+                    # every column in view at 1280 px
+                    assert t["width"] <= t["box"] + 1, (name, size, t)
                 else:  # at 390 px: fits, or scrolls inside its own box (reachable, never cut off)
                     assert t["width"] <= t["box"] + 1 or t["scrolls"], (name, size, t)
             if name in ("evaluate", "solve") and size == PHONE:
@@ -137,19 +169,22 @@ def test_reports_render_in_a_headless_browser(reports):
     try:
         for name, (path, figs) in reports.items():
             driver.get(path.as_uri())
-            driver.get_log("browser")  # logs are read per page below; clear what loading left behind
+            # logs are read per page below; clear what loading left behind
+            driver.get_log("browser")
             driver.refresh()
             n_plots = driver.execute_script("return document.querySelectorAll('.fig').length")
             drawn = driver.execute_script(
                 "return Array.from(document.querySelectorAll('.fig'))"
-                ".filter(p => p.querySelector('svg') && p.getBoundingClientRect().height > 100).length")
+                ".filter(p => p.querySelector('svg') && p.getBoundingClientRect().height > 100).length"
+            )
             errors = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
             assert not errors, (name, errors)
             assert n_plots >= (figs or 1) and drawn == n_plots, (name, n_plots, drawn)
             if figs is not None:
                 assert n_plots == figs, (name, n_plots)
             width, inner = driver.execute_script(
-                "return [document.documentElement.scrollWidth, window.innerWidth]")
+                "return [document.documentElement.scrollWidth, window.innerWidth]"
+            )
             assert width <= inner + 1, (name, width, inner)  # wide tables scroll inside their box
             headings = driver.execute_script("return document.querySelectorAll('h2').length")
             cards = driver.execute_script("return document.querySelectorAll('.card').length")
@@ -166,10 +201,13 @@ def test_report_contents(reports):
     assert "Residuals: table_x_stiffness.csv" in diag
 
 
-@pytest.mark.parametrize("argv", [
-    ["evaluate", str(P / "vmc_x_design.yaml"), "--report", "out.txt"],
-    ["solve", str(P / "teaching_problem.yaml"), "--report", "out.png"],
-])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["evaluate", str(P / "vmc_x_design.yaml"), "--report", "out.txt"],
+        ["solve", str(P / "teaching_problem.yaml"), "--report", "out.png"],
+    ],
+)
 def test_report_needs_an_html_name(argv, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err.strip()
@@ -182,20 +220,44 @@ def test_cdn_option_links_plotly_instead_of_inlining_it(tmp_path):
     from plotly.offline.offline import get_plotlyjs_version
 
     inline, cdn = tmp_path / "inline.html", tmp_path / "cdn.html"
-    assert main(["evaluate", str(P / "vmc_x_design.yaml"), "--report", str(inline), "--plotly", "inline"]) == 0
-    assert main(["evaluate", str(P / "vmc_x_design.yaml"), "--report", str(cdn), "--plotly", "cdn"]) == 0
+    assert (
+        main(
+            [
+                "evaluate",
+                str(P / "vmc_x_design.yaml"),
+                "--report",
+                str(inline),
+                "--plotly",
+                "inline",
+            ]
+        )
+        == 0
+    )
+    assert (
+        main(["evaluate", str(P / "vmc_x_design.yaml"), "--report", str(cdn), "--plotly", "cdn"])
+        == 0
+    )
     a, b = inline.read_text(encoding="utf-8"), cdn.read_text(encoding="utf-8")
     src = f'<script src="https://cdn.plot.ly/plotly-{get_plotlyjs_version()}.min.js"'
     assert src in b and src not in a
-    assert len(a) - len(b) > 0.95 * len(get_plotlyjs())  # plotly.js (about 4.7 MB) is not in the file
+    # plotly.js (about 4.7 MB) is not in the file
+    assert len(a) - len(b) > 0.95 * len(get_plotlyjs())
     assert "works offline" in a and "loaded from https://cdn.plot.ly/" in b
 
 
 def test_margins_are_coloured_by_how_close_they_are():
     from axisopt.report.html import margin_class
 
-    assert [margin_class(m) for m in (0.5, 0.999, 1.0, 1.05, 1.1, 1.49, 1.5, 76.0)] == \
-        ["m-fail", "m-fail", "m-tight", "m-tight", "m-fair", "m-fair", "m-ample", "m-ample"]
+    assert [margin_class(m) for m in (0.5, 0.999, 1.0, 1.05, 1.1, 1.49, 1.5, 76.0)] == [
+        "m-fail",
+        "m-fail",
+        "m-tight",
+        "m-tight",
+        "m-fair",
+        "m-fair",
+        "m-ample",
+        "m-ample",
+    ]
     assert margin_class(None) == "" and margin_class(float("nan")) == ""
     # a check that passes on its limit (the solver's 0.9999999, printed 1.00) is tight, not red
     assert margin_class(0.9999999, True) == "m-tight" and margin_class(0.9999999, False) == "m-fail"
@@ -204,7 +266,9 @@ def test_margins_are_coloured_by_how_close_they_are():
 def _rows(html_text, heading):
     """The body rows of the first table after the section heading ``heading`` (cells as text)."""
     part = html_text.split(heading, 1)[1].split("</table>", 1)[0]
-    return [re.findall(r"<td[^>]*>(.*?)</td>", tr) for tr in re.findall(r"<tr>(.*?)</tr>", part)[1:]]
+    return [
+        re.findall(r"<td[^>]*>(.*?)</td>", tr) for tr in re.findall(r"<tr>(.*?)</tr>", part)[1:]
+    ]
 
 
 def test_evaluate_page_colours_every_margin(reports):
@@ -243,7 +307,11 @@ def test_compare_page_is_a_table_naming_failed_checks(reports):
     text = reports["compare"][0].read_text(encoding="utf-8")
     rows = _rows(text, "Side by side")
     assert len(rows) == 2
-    failed = [r["check"] for r in check_rows(evaluate(load_design(P / "paper_3_1_3_d40.yaml"))) if not r["pass"]]
+    failed = [
+        r["check"]
+        for r in check_rows(evaluate(load_design(P / "paper_3_1_3_d40.yaml")))
+        if not r["pass"]
+    ]
     assert failed and rows[1][-1] == ", ".join(failed) and rows[0][-1] == "none"
 
 

@@ -18,8 +18,10 @@ CELLS = {
     "profiles": 'import axisopt\nev = axisopt.evaluate("problems/teaching_design.yaml")\naxisopt.plot_profiles(ev)',
     "profiles with a drive": 'axisopt.plot_profiles(axisopt.evaluate("problems/vmc_x_design.yaml"))',
     "pareto": 'res = axisopt.solve("problems/pareto_problem.yaml", sensitivities=False)\naxisopt.plot_pareto(res)',
-    "frf": ("from axisopt.model.frf import frf\nfrom axisopt.report.methods import plot_frf\n"
-            "plot_frf(frf(ev))"),
+    "frf": (
+        "from axisopt.model.frf import frf\nfrom axisopt.report.methods import plot_frf\n"
+        "plot_frf(frf(ev))"
+    ),
     "no pyplot": 'import sys\nprint("matplotlib.pyplot" in sys.modules)',
 }
 IMAGE = ("image/png", "image/svg+xml")
@@ -48,10 +50,12 @@ def test_every_plot_shows_as_an_image_in_a_fresh_kernel(notebook_modules):
     nb = nbformat.v4.new_notebook()
     nb.cells = [nbformat.v4.new_code_cell(src) for src in CELLS.values()]
     env = {"PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
-    client = nbclient.NotebookClient(nb, kernel_name="python3", timeout=120,
-                                     resources={"metadata": {"path": str(ROOT)}})
+    client = nbclient.NotebookClient(
+        nb, kernel_name="python3", timeout=120, resources={"metadata": {"path": str(ROOT)}}
+    )
     old = {k: os.environ.get(k) for k in env}
-    os.environ.update(env)  # the kernel inherits the environment: it imports this checkout's axisopt
+    # the kernel inherits the environment: it imports this checkout's axisopt
+    os.environ.update(env)
     try:
         client.execute()
     finally:
@@ -70,6 +74,8 @@ def test_every_plot_shows_as_an_image_in_a_fresh_kernel(notebook_modules):
         shown = [o for o in cell.outputs if o.output_type == "execute_result"]
         assert shown, f"{name}: the cell shows nothing"
         data = shown[0].data
-        assert any(m in data for m in IMAGE), f"{name}: shown as {data.get('text/plain')!r}, not as an image"
+        assert any(m in data for m in IMAGE), (
+            f"{name}: shown as {data.get('text/plain')!r}, not as an image"
+        )
         png = data.get("image/png", "")
         assert len(png) > 10_000, f"{name}: an image of only {len(png)} base64 characters"

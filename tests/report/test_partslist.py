@@ -12,14 +12,20 @@ def test_parts_list_of_the_vmc_axis():
     d = load_design(P / "vmc_x_design.yaml")
     rows = {r["part"]: r for r in parts_list(d)}
     assert set(rows) == {"screw", "nut", "bearing", "guide", "guide rail", "motor", "coupling"}
-    assert rows["guide"]["quantity"] == d.axis.guide_blocks and rows["guide rail"]["quantity"] == d.axis.rails
+    assert (
+        rows["guide"]["quantity"] == d.axis.guide_blocks
+        and rows["guide rail"]["quantity"] == d.axis.rails
+    )
     rail_mm = (d.axis.stroke + d.axis.table_length) * 1e3
     assert f"length {10 * -(-round(rail_mm) // 10):,} mm" in rows["guide rail"]["order"]
     preload = float(rows["nut"]["order"].split()[1].replace(",", ""))
     step = preload_step(d.preload)
     assert preload % step == 0 and abs(preload - d.preload) < step
     assert rows["bearing"]["quantity"] == (2 if d.axis.mounting == "fixed-fixed" else 1)
-    assert rows["screw"]["id"] == d.part_ids()["screw"] and f"{d.axis.span * 1e3:,.0f} mm" in rows["screw"]["order"]
+    assert (
+        rows["screw"]["id"] == d.part_ids()["screw"]
+        and f"{d.axis.span * 1e3:,.0f} mm" in rows["screw"]["order"]
+    )
 
 
 def test_a_design_without_a_drive_lists_no_motor():
@@ -29,7 +35,8 @@ def test_a_design_without_a_drive_lists_no_motor():
 
 
 def test_ordered_preload_stays_in_the_nuts_catalog_range():
-    # a nut whose catalog range starts at 1534 N: 1534.5 N is nearest 1530 N, below the range, so it goes up
+    # a nut whose catalog range starts at 1534 N: 1534.5 N is nearest 1530 N, below the range, so it
+    # goes up
     from dataclasses import replace
 
     from axisopt.catalog.parttable import Row
@@ -41,7 +48,8 @@ def test_ordered_preload_stays_in_the_nuts_catalog_range():
     assert low.value == 1540.0 and low.nearest_breaks == ("the nut's preload range",)
     assert "1530 N would break the nut's preload range" in low.note()
     assert order_preload(replace(d, nut_preload=5125.5)).value == 5120.0
-    assert order_preload(replace(d, nut_preload=3183.3)).value == 3180.0  # the nearest where nothing binds
+    # the nearest where nothing binds
+    assert order_preload(replace(d, nut_preload=3183.3)).value == 3180.0
 
 
 def test_ordered_preload_keeps_a_digit_more_when_both_round_neighbours_break():

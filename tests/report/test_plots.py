@@ -26,9 +26,11 @@ def _capture(monkeypatch, module):
 
 
 def test_labels_name_each_differing_part_and_only_those():
-    items = [{"mounting": "fixed-fixed", "screw": "S1", "nut": "N1", "guide": "G1"},
-             {"mounting": "fixed-fixed", "screw": "S1", "nut": "N1", "guide": "G2"},
-             {"mounting": "fixed-supported", "screw": "S1", "nut": "N1", "guide": "G1"}]
+    items = [
+        {"mounting": "fixed-fixed", "screw": "S1", "nut": "N1", "guide": "G1"},
+        {"mounting": "fixed-fixed", "screw": "S1", "nut": "N1", "guide": "G2"},
+        {"mounting": "fixed-supported", "screw": "S1", "nut": "N1", "guide": "G1"},
+    ]
     labels = distinct_labels(items, ["#1", "#2", "#3"])
     assert len(set(labels)) == 3
     assert labels[1] == "#2 fixed-fixed / G2"  # the guide is the difference between #1 and #2
@@ -43,13 +45,29 @@ def test_solve_plot_legend_tells_runners_up_apart_and_draws_the_limit(monkeypatc
     text = text.replace("limits:\n", "limits:\n  min_stiffness: 60 N/um\n", 1)
     prob = tmp_path / "t_problem.yaml"
     prob.write_text(text)
-    assert main(["solve", str(prob), "--top", "4", "--no-sensitivity", "--plot", str(tmp_path / "p.png")]) == 0
+    assert (
+        main(
+            [
+                "solve",
+                str(prob),
+                "--top",
+                "4",
+                "--no-sensitivity",
+                "--plot",
+                str(tmp_path / "p.png"),
+            ]
+        )
+        == 0
+    )
     ax, ax2 = figs[0].axes[0], figs[0].axes[1]
-    # the designs' legend sits below the frequency panel (off the data); every rank is named exactly once,
+    # the designs' legend sits below the frequency panel (off the data); every rank is named exactly
+    # once,
     # designs whose curves coincide share one line (no curve drawn twice over another)
     legend = [t.get_text() for t in ax2.get_legend().get_texts()]
     designs = [lab for lab in legend if lab.startswith("#")]
-    ranks = [r for lab in designs for r in re.findall(r"#(\d+)", lab.split(" (")[0].split(" HIWIN")[0])]
+    ranks = [
+        r for lab in designs for r in re.findall(r"#(\d+)", lab.split(" (")[0].split(" HIWIN")[0])
+    ]
     assert sorted(ranks) == ["1", "2", "3", "4"]
     curves = [ln for ln in ax.get_lines() if ln.get_label().startswith("#")]
     assert len(curves) == len(designs)
@@ -69,7 +87,9 @@ def pareto_result():
     return solve(load_problem(ROOT / "problems" / "pareto_problem.yaml"))
 
 
-def test_pareto_plot_is_a_scatter_matrix_with_the_front_marked(monkeypatch, tmp_path, pareto_result):
+def test_pareto_plot_is_a_scatter_matrix_with_the_front_marked(
+    monkeypatch, tmp_path, pareto_result
+):
     import axisopt.fileio as fileio
     import axisopt.report.solve as solve_report
     import axisopt.search.pareto as pareto
@@ -93,13 +113,22 @@ def test_pareto_plot_is_a_scatter_matrix_with_the_front_marked(monkeypatch, tmp_
 
 
 def test_front_points_are_not_dominated_by_the_cloud(pareto_result):
-    # the grey sample must lie on the dominated side: no sampled design beats a front point everywhere
+    # the grey sample must lie on the dominated side: no sampled design beats a front point
+    # everywhere
     f = pareto_result.pareto
     sign = np.array([1.0 if s == "max" else -1.0 for s in f.senses])
     C = np.asarray(f.cloud) * sign
-    fields = {"stiffness": "min_stiffness", "frequency": "min_frequency", "cost": "cost", "total_mass": "total_mass"}
+    fields = {
+        "stiffness": "min_stiffness",
+        "frequency": "min_frequency",
+        "cost": "cost",
+        "total_mass": "total_mass",
+    }
     F = np.array([[getattr(p, fields[k]) for k in f.keys] for p in f.points]) * sign
-    # the cloud comes from the numpy evaluation, the front points from the CasADi one: equal up to rounding
+    # the cloud comes from the numpy evaluation, the front points from the CasADi one: equal up to
+    # rounding
     tol = 1e-12 * np.maximum(np.abs(F), 1.0)[None, :, :]
-    strictly = (C[:, None, :] >= F[None, :, :] - tol).all(-1) & (C[:, None, :] > F[None, :, :] + tol).any(-1)
+    strictly = (C[:, None, :] >= F[None, :, :] - tol).all(-1) & (
+        C[:, None, :] > F[None, :, :] + tol
+    ).any(-1)
     assert not strictly.any() and len(C) == min(f.feasible, 4000)

@@ -23,9 +23,14 @@ def test_duty_points_on_the_motor_plane():
     # default cycle: the stroke there and back, so the mean table speed is 2 x stroke / cycle time
     mean_rpm = 2 * a.stroke / ev["duty_time"] / lead * 60 * a.reduction_ratio
     assert pts["mean_speed_rpm"] == pytest.approx(mean_rpm, rel=1e-9)
-    assert max(pts["speed_rpm"]) == pytest.approx(a.max_speed / lead * 60 * a.reduction_ratio, rel=1e-9)
-    # the needed peak is the largest of the plotted cycle torques and the steady thrust at the axial load
-    assert ev["peak_torque"] == pytest.approx(max(max(abs(t) for t in pts["torque_Nm"]), ev["thrust_torque"]))
+    assert max(pts["speed_rpm"]) == pytest.approx(
+        a.max_speed / lead * 60 * a.reduction_ratio, rel=1e-9
+    )
+    # the needed peak is the largest of the plotted cycle torques and the steady thrust at the axial
+    # load
+    assert ev["peak_torque"] == pytest.approx(
+        max(max(abs(t) for t in pts["torque_Nm"]), ev["thrust_torque"])
+    )
     assert pts["peak_torque_Nm"] == pytest.approx(float(d.motor["peak_torque"]))
     assert pts["max_speed_rpm"] == pytest.approx(float(d.motor["max_speed"]) * 60 / (2 * math.pi))
 
@@ -40,18 +45,24 @@ def test_evaluate_plot_with_motor_has_the_torque_speed_panel(tmp_path, capsys):
     fig = plot_profiles([ev])
     assert len(fig.axes) == 3  # profiles (2) and the torque-speed panel
     ax = fig.axes[2]
-    assert ax.get_xlabel() == "motor speed [rpm]" and ax.get_ylabel() == "motor torque magnitude [N.m]"
+    assert (
+        ax.get_xlabel() == "motor speed [rpm]" and ax.get_ylabel() == "motor torque magnitude [N.m]"
+    )
     pts = duty_points(ev)
     lines = ax.get_lines()
-    # the steady thrust at feed (the peak the text reports when it is the largest) is drawn, at standstill
+    # the steady thrust at feed (the peak the text reports when it is the largest) is drawn, at
+    # standstill
     thrust = [ln for ln in lines if ln.get_marker() == "^"]
-    assert len(thrust) == 1 and thrust[0].get_ydata()[0] == pytest.approx(float(ev["thrust_torque"]))
+    assert len(thrust) == 1 and thrust[0].get_ydata()[0] == pytest.approx(
+        float(ev["thrust_torque"])
+    )
     assert ax.get_ylim()[1] >= float(ev["peak_torque"])  # the whole needed peak is inside the panel
     # the rated torque runs to the rated speed and does not drop to zero there like a speed limit
     rated = [ln for ln in lines if ln.get_linewidth() == 2.5]
     assert len(rated) == 1 and list(rated[0].get_ydata()) == [pts["rated_torque_Nm"]] * 2
     assert rated[0].get_xdata()[-1] == pytest.approx(pts["rated_speed_rpm"])
-    # the speed limit is the max speed; the peak zone the check reads, from the flat peak to max speed
+    # the speed limit is the max speed; the peak zone the check reads, from the flat peak to max
+    # speed
     vmax = [ln for ln in lines if ln.get_linestyle() == "-."]
     assert len(vmax) == 1 and vmax[0].get_xdata()[0] == pytest.approx(pts["max_speed_rpm"])
     zone = [ln for ln in lines if ln.get_linestyle() == "--"]
@@ -62,7 +73,9 @@ def test_evaluate_plot_with_motor_has_the_torque_speed_panel(tmp_path, capsys):
     box = leg.get_window_extent().transformed(ax.transAxes.inverted())
     assert box.y1 <= 0.0
     texts = " | ".join(t.get_text() for t in leg.get_texts())
-    assert f"thrust at feed {float(ev['thrust_torque']):.1f}" in texts and "corner estimated" in texts
+    assert (
+        f"thrust at feed {float(ev['thrust_torque']):.1f}" in texts and "corner estimated" in texts
+    )
 
 
 def test_compare_plot_draws_each_motor_once_and_names_a_design_without_one(tmp_path):
@@ -86,8 +99,10 @@ def test_compare_plot_draws_each_motor_once_and_names_a_design_without_one(tmp_p
 
 
 def test_regeneration_of_the_default_cycle_is_yaskawas_two_stops(capsys):
-    # the default cycle (trapezoidal rapid over the stroke and back) stops twice from the rapid speed: Yaskawa
-    # Sigma-7 12.8.6 gives each stop E_S - E_L = J n^2 / 182 - (pi / 60) n T_L t_D (182.38 unrounded)
+    # the default cycle (trapezoidal rapid over the stroke and back) stops twice from the rapid
+    # speed: Yaskawa
+    # Sigma-7 12.8.6 gives each stop E_S - E_L = J n^2 / 182 - (pi / 60) n T_L t_D (182.38
+    # unrounded)
     ev = evaluate(load_design(DESIGN))
     a = ev.design.axis
     assert a.jerk is None and not a.duty_cycle and a.orientation == "horizontal"

@@ -37,7 +37,9 @@ def test_line_names_the_missing_component_with_the_rule_of_thumb(tmp_path, capsy
 
 
 def test_line_disappears_when_both_components_are_given(tmp_path, capsys):
-    text = TEACHING.replace("  cross_load: 1000 N\n", "  cross_load: 1000 N\n  normal_load: 500 N\n")
+    text = TEACHING.replace(
+        "  cross_load: 1000 N\n", "  cross_load: 1000 N\n  normal_load: 500 N\n"
+    )
     assert text != TEACHING
     assert LINE not in _solve(tmp_path, capsys, text)
 
@@ -51,11 +53,14 @@ def test_line_disappears_without_an_axial_load(tmp_path, capsys):
 def test_json_carries_it(tmp_path, capsys):
     out = json.loads(_solve(tmp_path, capsys, TEACHING, "--json", "-"))
     comp = out["load_components"]
-    assert comp["missing"] == ["normal_load"] and comp["tangential_estimate_N"] == pytest.approx(4000.0)
+    assert comp["missing"] == ["normal_load"] and comp["tangential_estimate_N"] == pytest.approx(
+        4000.0
+    )
     assert comp["passive_estimate_N"] == pytest.approx(1000.0) and "Isakov" in comp["rule"]
     both = TEACHING.replace("  cross_load: 1000 N\n", "")
-    assert json.loads(_solve(tmp_path, capsys, both, "--json", "-"))["load_components"]["missing"] == \
-        ["normal_load", "cross_load"]
+    assert json.loads(_solve(tmp_path, capsys, both, "--json", "-"))["load_components"][
+        "missing"
+    ] == ["normal_load", "cross_load"]
 
 
 def test_shipped_problems_that_give_both_have_no_line():

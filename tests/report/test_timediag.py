@@ -12,5 +12,8 @@ def test_json_carries_the_unexplained_verdict(tmp_path, capsys):
     paths = records(tmp_path, truth, 3)
     assert main(["diagnose", *map(str, paths), "--design", str(DESIGN), "--json", "-"]) == 0
     d = json.loads(capsys.readouterr().out)
-    assert d["unexplained"]["remaining"] and d["unexplained"]["signatures"][0]["kind"] == "position_periodic"
+    assert (
+        d["unexplained"]["remaining"]
+        and d["unexplained"]["signatures"][0]["kind"] == "position_periodic"
+    )
     assert all(c["reason"] for c in d["not_accepted"])

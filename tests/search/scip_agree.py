@@ -22,5 +22,9 @@ def agrees_with_exhaustive(s, e):
         assert s.certificate.proven and s.certificate.gap <= 1e-4
     assert s.best.objective <= e.best.objective * (1 + 1e-6)
     # the reported design is the model's evaluation of the chosen parts and preload
-    assert s.best.design is not None and s.best.design.nut_preload == pytest.approx(s.best.nut_preload)
-    assert s.certificate.feasible is None and s.certificate.combinations == e.certificate.combinations
+    assert s.best.design is not None and s.best.design.nut_preload == pytest.approx(
+        s.best.nut_preload
+    )
+    assert (
+        s.certificate.feasible is None and s.certificate.combinations == e.certificate.combinations
+    )

@@ -23,15 +23,28 @@ def _problem(seed: int):
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=3, n_bearings=5, n_guides=4)
     if seed % 3 == 2:
         cat = add_drives(cat, rng)
-    limits = {"max_cost": float(rng.uniform(3000, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.5)),
-              "max_positioning_error": float(rng.uniform(40, 120)) * 1e-6}
-    axis = dict(guide_pitch=float(rng.uniform(0, 10)) * ARCSEC, guide_yaw=float(rng.uniform(0, 5)) * ARCSEC,
-                tool_height=float(rng.uniform(0.05, 0.3)), tool_offset=float(rng.uniform(0, 0.1)),
-                temperature_rise=float(rng.uniform(0.5, 3.0)))
-    p = make_problem(cat, mode=("stiffness", "frequency")[seed % 2], limits=limits,
-                     backlash=5e-5 if seed % 2 else None,
-                     mountings=("fixed-supported", "fixed-fixed") if seed % 3 else ("fixed-free", "fixed-supported"),
-                     **axis)
+    limits = {
+        "max_cost": float(rng.uniform(3000, 6000)),
+        "max_drag_torque": float(rng.uniform(1.0, 2.5)),
+        "max_positioning_error": float(rng.uniform(40, 120)) * 1e-6,
+    }
+    axis = dict(
+        guide_pitch=float(rng.uniform(0, 10)) * ARCSEC,
+        guide_yaw=float(rng.uniform(0, 5)) * ARCSEC,
+        tool_height=float(rng.uniform(0.05, 0.3)),
+        tool_offset=float(rng.uniform(0, 0.1)),
+        temperature_rise=float(rng.uniform(0.5, 3.0)),
+    )
+    p = make_problem(
+        cat,
+        mode=("stiffness", "frequency")[seed % 2],
+        limits=limits,
+        backlash=5e-5 if seed % 2 else None,
+        mountings=("fixed-supported", "fixed-fixed")
+        if seed % 3
+        else ("fixed-free", "fixed-supported"),
+        **axis,
+    )
     if seed % 3 == 2:
         p = replace(p, restrictions=replace(p.restrictions, drive=True))
     if seed % 4 == 3:  # the problem names the grades the search may choose among
@@ -88,7 +101,9 @@ def test_no_accuracy_limit_keeps_the_space_and_the_catalog_price():
         assert d.best.screw_grade == "" and d.best.design.grade == "C5"
 
 
-@pytest.mark.parametrize("keys", [("positioning_error", "cost"), ("positioning_error", "stiffness", "cost")])
+@pytest.mark.parametrize(
+    "keys", [("positioning_error", "cost"), ("positioning_error", "stiffness", "cost")]
+)
 def test_pareto_with_positioning_error_default_equals_exhaustive(keys):
     """A front of the positioning error against cost (and stiffness): the grade is a choice, every point names
     its grade, and the front is the brute-force non-dominated set of the exact per-combination values."""
@@ -99,18 +114,33 @@ def test_pareto_with_positioning_error_default_equals_exhaustive(keys):
 
     rng = np.random.default_rng(4)
     cat = make_catalog(rng)
-    p = make_problem(cat, objective=Objective(mode="pareto", pareto=keys), limits={"max_drag_torque": 1.5},
-                     backlash=5e-5, guide_pitch=5 * ARCSEC, tool_height=0.2, temperature_rise=1.0)
+    p = make_problem(
+        cat,
+        objective=Objective(mode="pareto", pareto=keys),
+        limits={"max_drag_torque": 1.5},
+        backlash=5e-5,
+        guide_pitch=5 * ARCSEC,
+        tool_height=0.2,
+        temperature_rise=1.0,
+    )
     d, e = solve(p, "default"), solve(p, "exhaustive")
     assert d.status == e.status == "optimal"
-    assert sorted(c.combination for c in d.pareto.points) == sorted(c.combination for c in e.pareto.points)
+    assert sorted(c.combination for c in d.pareto.points) == sorted(
+        c.combination for c in e.pareto.points
+    )
     assert all(c.screw_grade for c in d.pareto.points)
     assert len({c.screw_grade for c in d.pareto.points}) > 1  # the front trades grades against cost
     sp = build_space(p)
     ex, _ = exhaustive_search(sp, build_constraints(p), objective_spec("stiffness"))
     ok = np.nonzero(ex.feasible)[0]
-    cols = {"positioning_error": -ex.positioning_error[ok], "cost": -ex.cost[ok], "stiffness": ex.min_stiffness[ok]}
+    cols = {
+        "positioning_error": -ex.positioning_error[ok],
+        "cost": -ex.cost[ok],
+        "stiffness": ex.min_stiffness[ok],
+    }
     P = np.column_stack([cols[k] for k in keys])
     ge = (P[:, None, :] >= P[None, :, :]).all(-1)
     gt = (P[:, None, :] > P[None, :, :]).any(-1)
-    assert sorted(ex.idx[ok][~(ge & gt).any(0)].tolist()) == sorted(c.combination for c in d.pareto.points)
+    assert sorted(ex.idx[ok][~(ge & gt).any(0)].tolist()) == sorted(
+        c.combination for c in d.pareto.points
+    )

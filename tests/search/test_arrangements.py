@@ -25,19 +25,47 @@ def _vertical(seed: int):
     make_double(cat)
     cat = add_drives(cat, rng, n_motors=4, n_couplings=2)
     mass = float(rng.uniform(100, 250))
-    opts = [None, Counterbalance("counterweight", mass=float(rng.uniform(0.3, 0.95)) * mass,
-                                 chain_mass=float(rng.uniform(0, 10))),
-            Counterbalance("cylinder", force=float(rng.uniform(0.5, 1.2)) * mass * 9.80665),
-            Counterbalance("counterweight", mass=float(rng.uniform(0.3, 0.95)) * mass)]
-    if seed >= 4:  # an overbalancing cylinder (2.2 to 4.5 times the weight: it loads the nut the other way)
-        opts = [Counterbalance("cylinder", force=float(rng.uniform(2.2, 4.5)) * mass * 9.80665), None]
+    opts = [
+        None,
+        Counterbalance(
+            "counterweight",
+            mass=float(rng.uniform(0.3, 0.95)) * mass,
+            chain_mass=float(rng.uniform(0, 10)),
+        ),
+        Counterbalance("cylinder", force=float(rng.uniform(0.5, 1.2)) * mass * 9.80665),
+        Counterbalance("counterweight", mass=float(rng.uniform(0.3, 0.95)) * mass),
+    ]
+    # an overbalancing cylinder (2.2 to 4.5 times the weight: it loads the nut the other way)
+    if seed >= 4:
+        opts = [
+            Counterbalance("cylinder", force=float(rng.uniform(2.2, 4.5)) * mass * 9.80665),
+            None,
+        ]
     opts = [opts[i] for i in rng.permutation(len(opts))]
-    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
-    p = make_problem(cat, mode="frequency" if seed % 2 and seed < 4 else "stiffness", limits=limits, moving_mass=mass,
-                     axial_load=1500.0, orientation="vertical", required_life=float(rng.uniform(3e3, 1e4)) * 3600)
-    p = replace(p, restrictions=replace(p.restrictions, drive=True), margins=tuple((c, 1.0) for c in model.CHECKS))
-    return replace(p, arrangements=tuple((f"option {i}", replace(p.axis, counterbalance=cb))
-                                         for i, cb in enumerate(opts)))
+    limits = {
+        "max_cost": float(rng.uniform(3500, 6000)),
+        "max_drag_torque": float(rng.uniform(1.0, 2.0)),
+    }
+    p = make_problem(
+        cat,
+        mode="frequency" if seed % 2 and seed < 4 else "stiffness",
+        limits=limits,
+        moving_mass=mass,
+        axial_load=1500.0,
+        orientation="vertical",
+        required_life=float(rng.uniform(3e3, 1e4)) * 3600,
+    )
+    p = replace(
+        p,
+        restrictions=replace(p.restrictions, drive=True),
+        margins=tuple((c, 1.0) for c in model.CHECKS),
+    )
+    return replace(
+        p,
+        arrangements=tuple(
+            (f"option {i}", replace(p.axis, counterbalance=cb)) for i, cb in enumerate(opts)
+        ),
+    )
 
 
 def _gantry(seed: int):
@@ -46,13 +74,28 @@ def _gantry(seed: int):
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=4, carriage=True)
     make_double(cat)
     span = float(rng.uniform(0.8, 2.0))
-    twin = TwinDrive(span=span, cross_stroke=float(rng.uniform(0.3, 1.0)) * span,
-                     cross_mass=float(rng.uniform(30, 150)))
-    p = make_problem(cat, mode="frequency", limits={"max_cost": float(rng.uniform(3000, 12000))},
-                     moving_mass=float(rng.uniform(150, 350)), axial_load=float(rng.uniform(1500, 4000)),
-                     table_length=0.6, rail_spacing=0.5 * span, table_width=0.6 * span)
+    twin = TwinDrive(
+        span=span,
+        cross_stroke=float(rng.uniform(0.3, 1.0)) * span,
+        cross_mass=float(rng.uniform(30, 150)),
+    )
+    p = make_problem(
+        cat,
+        mode="frequency",
+        limits={"max_cost": float(rng.uniform(3000, 12000))},
+        moving_mass=float(rng.uniform(150, 350)),
+        axial_load=float(rng.uniform(1500, 4000)),
+        table_length=0.6,
+        rail_spacing=0.5 * span,
+        table_width=0.6 * span,
+    )
     opts = [None, twin] if seed % 2 else [twin, None]
-    return replace(p, arrangements=tuple((f"option {i}", replace(p.axis, twin_drive=tw)) for i, tw in enumerate(opts)))
+    return replace(
+        p,
+        arrangements=tuple(
+            (f"option {i}", replace(p.axis, twin_drive=tw)) for i, tw in enumerate(opts)
+        ),
+    )
 
 
 def _check(p):
@@ -61,17 +104,24 @@ def _check(p):
     assert_same_answer(d, e)
     assert d.arrangements == len(p.arrangements)
     # the best of the arrangements solved one by one (each with no options)
-    one = [solve(replace(p, axis=ax, arrangements=()), "exhaustive", top=1, sensitivities=False)
-           for _, ax in p.arrangements]
+    one = [
+        solve(replace(p, axis=ax, arrangements=()), "exhaustive", top=1, sensitivities=False)
+        for _, ax in p.arrangements
+    ]
     found = [r.best.objective for r in one if r.best is not None]
     if not found:
         assert d.best is None and d.status == "infeasible"
         return None
     assert d.best.objective == pytest.approx(max(found), rel=1e-6)
     win = [lab for lab, _ in p.arrangements].index(d.arrangement)
-    assert one[win].best is not None and one[win].best.objective == pytest.approx(d.best.objective, rel=1e-6)
+    assert one[win].best is not None and one[win].best.objective == pytest.approx(
+        d.best.objective, rel=1e-6
+    )
     ax = dict(p.arrangements)[d.arrangement]
-    assert d.best.design.axis.counterbalance == ax.counterbalance and d.best.design.axis.twin_drive == ax.twin_drive
+    assert (
+        d.best.design.axis.counterbalance == ax.counterbalance
+        and d.best.design.axis.twin_drive == ax.twin_drive
+    )
     assert d.certificate.proven == all(r.certificate.proven for r in one)
     assert d.certificate.combinations == sum(r.certificate.combinations for r in one)
     objs = [d.best.objective] + [c.objective for c in d.runners_up]
@@ -113,7 +163,9 @@ def _brute_front(p):
     rows, keys = [], []
     for label, ax in p.arrangements:
         sub = replace(p, axis=ax, arrangements=())
-        ex, _ = exhaustive_search(build_space(sub), build_constraints(sub), objective_spec("stiffness"))
+        ex, _ = exhaustive_search(
+            build_space(sub), build_constraints(sub), objective_spec("stiffness")
+        )
         ok = np.nonzero(ex.feasible)[0]
         rows.append(np.column_stack([ex.min_stiffness[ok], -ex.cost[ok]]))
         keys += [(label, int(i)) for i in ex.idx[ok]]
@@ -124,12 +176,15 @@ def _brute_front(p):
 
 
 # the vertical axis's two cases take over 10 s each on an idle core: marked slow (`pytest -m slow`)
-@pytest.mark.parametrize("make,seed", [
-    pytest.param(_vertical, 0, marks=pytest.mark.slow),
-    pytest.param(_vertical, 2, marks=pytest.mark.slow),
-    (_gantry, 0),
-    (_gantry, 1),
-])
+@pytest.mark.parametrize(
+    "make,seed",
+    [
+        pytest.param(_vertical, 0, marks=pytest.mark.slow),
+        pytest.param(_vertical, 2, marks=pytest.mark.slow),
+        (_gantry, 0),
+        (_gantry, 1),
+    ],
+)
 def test_pareto_over_arrangements_is_the_front_of_all_their_designs(make, seed):
     """A Pareto objective with arrangements: the merged front equals the non-dominated set of every feasible design
     of every arrangement (brute force), each point naming its arrangement; default == exhaustive."""

@@ -21,15 +21,23 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_a_limit_before_any_design_is_no_infeasibility():
-    res = solve(load_problem(ROOT / "problems" / "lathe_z_problem.yaml"), "default", time_limit=1e-3)
+    res = solve(
+        load_problem(ROOT / "problems" / "lathe_z_problem.yaml"), "default", time_limit=1e-3
+    )
     assert res.status == "time_limit" and res.best is None and res.infeasibility is None
     assert "not proven infeasible" in res.message
-    assert not res.certificate.proven and "stopped at the time limit" in " ".join(res.certificate.notes)
+    assert not res.certificate.proven and "stopped at the time limit" in " ".join(
+        res.certificate.notes
+    )
 
 
 def test_without_a_limit_in_reach_the_answer_is_proven():
-    res = solve(load_problem(ROOT / "problems" / "teaching_problem.yaml"), "default", time_limit=100.0,
-                sensitivities=False)
+    res = solve(
+        load_problem(ROOT / "problems" / "teaching_problem.yaml"),
+        "default",
+        time_limit=100.0,
+        sensitivities=False,
+    )
     assert res.status == "optimal" and res.certificate.proven
     assert not any("time limit" in n for n in res.certificate.notes)
 
@@ -38,14 +46,20 @@ def test_the_explanation_stops_at_its_deadline():
     p = load_problem(ROOT / "problems" / "infeasible_problem.yaml")
     space, cons = build_space(p), build_constraints(p)
     full = explain_infeasible(space, cons, objective_spec("stiffness"))
-    cut = explain_infeasible(space, cons, objective_spec("stiffness"), deadline=time.perf_counter() - 1.0)
+    cut = explain_infeasible(
+        space, cons, objective_spec("stiffness"), deadline=time.perf_counter() - 1.0
+    )
     assert not full.cut and cut.cut and cut.closest  # what it found by then, said to be partial
 
 
 def test_a_long_search_reports_progress(monkeypatch, caplog):
     monkeypatch.setattr(bestfirst, "PROGRESS", 0.0)
     with caplog.at_level(logging.INFO, logger="axisopt"):
-        solve(load_problem(ROOT / "problems" / "teaching_problem.yaml"), "default", sensitivities=False)
+        solve(
+            load_problem(ROOT / "problems" / "teaching_problem.yaml"),
+            "default",
+            sensitivities=False,
+        )
     lines = [r.getMessage() for r in caplog.records if "searching:" in r.getMessage()]
     assert lines and "blocks screened" in lines[0] and "combinations solved" in lines[0]
 
@@ -69,7 +83,8 @@ def full_exhaustive():
         log.addHandler(keep)
         log.setLevel(logging.INFO)
         try:
-            # an hour, not the default 100 s wall: on a loaded machine the 12 s of CPU can take longer
+            # an hour, not the default 100 s wall: on a loaded machine the 12 s of CPU can take
+            # longer
             full = solve(p, "exhaustive", top=1, sensitivities=False, time_limit=3600.0)
         finally:
             log.removeHandler(keep)

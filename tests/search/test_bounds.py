@@ -22,7 +22,8 @@ def _problem(seed):
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=5, n_guides=8)
     g = cat.guides.copy()
     g["type"] = np.where(np.arange(len(g)) % 2 == 0, "ball", "roller")
-    g["block_mass"] *= rng.uniform(0.5, 2.0, len(g))  # guides that differ in mass, rigidity and rating
+    # guides that differ in mass, rigidity and rating
+    g["block_mass"] *= rng.uniform(0.5, 2.0, len(g))
     g["normal_rigidity"] *= rng.uniform(0.5, 2.0, len(g))
     g["dynamic_load_rating"] *= rng.uniform(0.3, 1.5, len(g))
     cat = cat.replace(guides=g)
@@ -30,13 +31,23 @@ def _problem(seed):
     if drive:
         make_double(cat)
         cat = add_drives(cat, rng, n_motors=3, n_couplings=2)
-    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(0.8, 2.0)),
-              "max_moving_mass": float(rng.uniform(320, 360))}
-    p = make_problem(cat, mode="frequency" if seed % 3 else "stiffness", limits=limits,
-                     mountings=("fixed-supported", "fixed-fixed"))
+    limits = {
+        "max_cost": float(rng.uniform(3500, 6000)),
+        "max_drag_torque": float(rng.uniform(0.8, 2.0)),
+        "max_moving_mass": float(rng.uniform(320, 360)),
+    }
+    p = make_problem(
+        cat,
+        mode="frequency" if seed % 3 else "stiffness",
+        limits=limits,
+        mountings=("fixed-supported", "fixed-fixed"),
+    )
     if drive:
-        p = replace(p, restrictions=replace(p.restrictions, drive=True),
-                    margins=tuple((c, 1.0) for c in model.CHECKS))
+        p = replace(
+            p,
+            restrictions=replace(p.restrictions, drive=True),
+            margins=tuple((c, 1.0) for c in model.CHECKS),
+        )
     return p
 
 
@@ -53,7 +64,10 @@ def test_block_bounds_hold_for_every_combination(seed):
     for k, i in enumerate(feas):
         ok, bound = blocks[m[k]]
         assert ok[n[k], b[k]], "a feasible combination lies in a block the bound calls infeasible"
-        assert bound[n[k], b[k]] >= ex.objective[i] * (1 - 1e-6), (bound[n[k], b[k]], ex.objective[i])
+        assert bound[n[k], b[k]] >= ex.objective[i] * (1 - 1e-6), (
+            bound[n[k], b[k]],
+            ex.objective[i],
+        )
     # and the pruning is real: some blocks are left out
     assert sum(int((~ok).sum()) for ok, _ in blocks) > 0
 

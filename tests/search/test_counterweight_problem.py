@@ -29,15 +29,22 @@ def optima():
 def test_counterweighted_z_solves_and_is_counterbalanced(optima):
     best, v = optima["vertical_counterweight_problem"]
     cb = best.design.axis.counterbalance
-    assert cb.kind == "counterweight" and cb.mass == 250.0 and cb.efficiency == 0.95 and cb.chain_mass == 10.0
-    # the motor holds only the net weight at a stop: (head - counterweight) g less the guide friction
+    assert (
+        cb.kind == "counterweight"
+        and cb.mass == 250.0
+        and cb.efficiency == 0.95
+        and cb.chain_mass == 10.0
+    )
+    # the motor holds only the net weight at a stop: (head - counterweight) g less the guide
+    # friction
     _, plain = optima["vertical_problem"]
     assert float(v["holding_torque"]) < 0.25 * float(plain["holding_torque"])
 
 
 def test_counterweight_relieves_nut_motor_and_regeneration(optima):
     (b0, v0), (b1, v1) = optima["vertical_problem"], optima["vertical_counterweight_problem"]
-    assert b1.objective >= b0.objective  # the counterweight only removes load: the optimum is no worse
+    # the counterweight only removes load: the optimum is no worse
+    assert b1.objective >= b0.objective
     assert float(v1["margin_nut_lift_off"]) > float(v0["margin_nut_lift_off"])
     assert float(v1["rms_torque"]) < float(v0["rms_torque"])
     assert float(v1["regen_power"]) < 0.5 * float(v0["regen_power"])

@@ -122,7 +122,8 @@ def _default_problem(tmp_path, rng, objective):
     text = text.replace("search:\n  drive_types: [screw, linear_motor]\n", "")
     (tmp_path / "p.yaml").write_text(text, encoding="utf-8")
     prob = load_problem(tmp_path / "p.yaml")
-    mark = {"vendor": "HIWIN", "status": "vendor"}  # the teaching problem's vendor filter keeps them
+    # the teaching problem's vendor filter keeps them
+    mark = {"vendor": "HIWIN", "status": "vendor"}
     tables = DriveTables(
         tuple({**r, **mark} for r in _racks(rng, 3)), tuple({**r, **mark} for r in _lms(rng, 4))
     )
@@ -141,20 +142,26 @@ def test_default_offer_equals_exhaustive_over_every_type(tmp_path, monkeypatch):
     for seed in range(6):
         objective = ("stiffness", "frequency", "cost")[seed % 3]
         if seed >= 3:
-            monkeypatch.setattr(drivebest, "LEVEL1_MIN", 1)  # the rack space by (rack, reduction, twin) blocks
+            # the rack space by (rack, reduction, twin) blocks
+            monkeypatch.setattr(drivebest, "LEVEL1_MIN", 1)
         rng = np.random.default_rng(300 + seed)
         prob, tables = _default_problem(tmp_path, rng, objective)
         assert prob.drives is None
         screw = solve(prob, "default", top=3, sensitivities=False)
         got = drivedefault.offer(prob, screw, "default", top=3, tables=tables)
         types, _, kept = drivedefault.offered(prob, tables)
-        # the ground truth: every rack and linear-motor combination evaluated (the screw answer's own proof is
+        # the ground truth: every rack and linear-motor combination evaluated (the screw answer's
+        # own proof is
         # tested with the screw search), ranked with the screw's best by the tie rule
-        e = solve_drive_types(replace(prob, drives=DriveChoice(types=types, tables=kept)), "exhaustive", top=1)
+        e = solve_drive_types(
+            replace(prob, drives=DriveChoice(types=types, tables=kept)), "exhaustive", top=1
+        )
         sense = OBJECTIVES[objective][3]
         sign = -1.0 if sense == "max" else 1.0
-        pool = [(rank_key(d.objective, d.cost, d.moving_mass, sign), 1 + types.index(d.drive_type), d)
-                for d in ([e.best] if e.best is not None else [])]
+        pool = [
+            (rank_key(d.objective, d.cost, d.moving_mass, sign), 1 + types.index(d.drive_type), d)
+            for d in ([e.best] if e.best is not None else [])
+        ]
         if screw.best is not None:
             b = screw.best
             pool.append((rank_key(b.objective, b.cost, b.moving_mass, sign), 0, None))
@@ -170,10 +177,14 @@ def test_default_offer_equals_exhaustive_over_every_type(tmp_path, monkeypatch):
         for kind, why in got.reasons.items():
             seen["bounded"] += why.startswith("bounded out") or why.startswith("no drive passes")
             seen["searched"] += why == "searched"
-            if why.startswith("bounded out"):  # the bound holds: no design of the type beats the screw
+            # the bound holds: no design of the type beats the screw
+            if why.startswith("bounded out"):
                 best = [t.best for t in e.types if t.drive_type == kind and t.best is not None]
-                assert not best or (best[0] <= screw.best.objective if sense == "max"
-                                    else best[0] >= screw.best.objective)
+                assert not best or (
+                    best[0] <= screw.best.objective
+                    if sense == "max"
+                    else best[0] >= screw.best.objective
+                )
     # the cases are not all one way: some types pruned by bound, some searched, some won
     assert seen["bounded"] and seen["searched"] and seen["winners"], seen
 

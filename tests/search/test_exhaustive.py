@@ -16,13 +16,19 @@ from axisopt.search.task.objective import objective_spec
 
 
 def test_grid_keeps_the_upper_end_of_the_feasible_preloads():
-    cat = make_catalog(np.random.default_rng(4), n_screws=40, nuts_per_screw=3, n_bearings=1, n_guides=1)
+    cat = make_catalog(
+        np.random.default_rng(4), n_screws=40, nuts_per_screw=3, n_bearings=1, n_guides=1
+    )
     make_double(cat)
     checked = 0
     # drag limits whose thresholds (one per nut) include ones where the rounding showed
     for drag in (2.1, 2.169230769230769, 2.792307692307692, 2.9307692307692306, 3.0):
-        p = make_problem(cat, mountings=("fixed-supported",), axial_load=800.0,
-                         limits={"max_cost": 1e5, "max_drag_torque": drag})
+        p = make_problem(
+            cat,
+            mountings=("fixed-supported",),
+            axial_load=800.0,
+            limits={"max_cost": 1e5, "max_drag_torque": drag},
+        )
         sp, cons, spec = build_space(p), build_constraints(p), objective_spec("stiffness")
         idx = np.arange(sp.size)
         ex, gr = exact_solve(sp, idx, cons, spec), grid_solve(sp, idx, cons, spec)

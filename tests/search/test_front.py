@@ -25,7 +25,9 @@ def test_method_table_names_and_capabilities():
 def test_a_method_without_pareto_fronts_says_so(method):
     cat = make_catalog(np.random.default_rng(0))
     p = replace(make_problem(cat), objective=Objective(mode="pareto", pareto=("stiffness", "cost")))
-    with pytest.raises(InputError, match=f"--method {method}.*Pareto front needs --method default or exhaustive"):
+    with pytest.raises(
+        InputError, match=f"--method {method}.*Pareto front needs --method default or exhaustive"
+    ):
         solve(p, method)
 
 
@@ -38,7 +40,10 @@ def test_top_without_runners_up_is_noted_not_ignored(monkeypatch):
     cat = make_catalog(np.random.default_rng(1))
     make_double(cat)
     p = make_problem(cat)
-    one = {**front.METHODS_BY_NAME, "default": replace(front.METHODS_BY_NAME["default"], runners_up=False)}
+    one = {
+        **front.METHODS_BY_NAME,
+        "default": replace(front.METHODS_BY_NAME["default"], runners_up=False),
+    }
     monkeypatch.setattr(front, "METHODS_BY_NAME", one)
     res = solve(p, "default", top=3, sensitivities=False)
     assert "returns the best design only (top 3 asked" in res.certificate.notes[-1]

@@ -31,20 +31,32 @@ def _points(iv, u):
 
 
 OPS = {
-    "add": lambda a, b: a + b, "sub": lambda a, b: a - b, "rsub": lambda a, b: 3.0 - a,
-    "mul": lambda a, b: a * b, "square": lambda a, b: a * a, "scale": lambda a, b: -2.5 * a,
-    "div": lambda a, b: a / b, "rdiv": lambda a, b: 7.0 / b, "neg": lambda a, b: -a,
-    "abs": lambda a, b: mx.fabs(a), "max": lambda a, b: mx.fmax(a, b), "min": lambda a, b: mx.fmin(a, b),
-    "sqrt": lambda a, b: mx.sqrt(mx.fabs(a)), "where": lambda a, b: mx.if_else(np.array(True), a, b),
+    "add": lambda a, b: a + b,
+    "sub": lambda a, b: a - b,
+    "rsub": lambda a, b: 3.0 - a,
+    "mul": lambda a, b: a * b,
+    "square": lambda a, b: a * a,
+    "scale": lambda a, b: -2.5 * a,
+    "div": lambda a, b: a / b,
+    "rdiv": lambda a, b: 7.0 / b,
+    "neg": lambda a, b: -a,
+    "abs": lambda a, b: mx.fabs(a),
+    "max": lambda a, b: mx.fmax(a, b),
+    "min": lambda a, b: mx.fmin(a, b),
+    "sqrt": lambda a, b: mx.sqrt(mx.fabs(a)),
+    "where": lambda a, b: mx.if_else(np.array(True), a, b),
     "rms": lambda a, b: pdr.linear_rms_torque([(a, b), (b, a)], [0.3, 0.7]),
 }
 
 
 @settings(max_examples=200, deadline=None)
-@given(st.sampled_from(sorted(OPS)), finite, finite, finite, finite, st.floats(0, 1), st.floats(0, 1))
+@given(
+    st.sampled_from(sorted(OPS)), finite, finite, finite, finite, st.floats(0, 1), st.floats(0, 1)
+)
 def test_every_operation_holds_the_points(op, a0, a1, b0, b1, u, w):
     a, b = _iv(a0, a1), _iv(b0, b1)
-    if op in ("div", "rdiv") and (b.lo <= 1e-3 and b.hi >= -1e-3):  # through or next to zero: moved off it
+    # through or next to zero: moved off it
+    if op in ("div", "rdiv") and (b.lo <= 1e-3 and b.hi >= -1e-3):
         b = Interval(abs(b.lo) + 0.1, abs(b.hi) + 0.2)
     res = OPS[op](a, b)
     x, y = _points(a, u), _points(b, w)
@@ -71,6 +83,7 @@ def test_drive_bounds_hold_every_combination(seed, groups, monkeypatch):
     guide and drive pair in it at the favourable preload end (weak motors: the drive limits are active); with
     the bearings taken one by one (8 groups of these 5 bearings) and together (2 groups, 1 group)."""
     from test_explain import _case
+
     monkeypatch.setattr(drivebounds, "DRIVE_BEARING_GROUPS", groups)
     p = _case(seed, "drive")
     sp, cons = build_space(p), build_constraints(p)
@@ -102,11 +115,18 @@ def test_drive_block_in_intervals_holds_every_mass_and_drag():
     from axisopt.model import design_params
     from axisopt.model.drive import drive
     from axisopt.physics.motion import Phase, Phases
+
     d = load_design(Path(__file__).resolve().parents[2] / "problems" / "vmc_x_design.yaml")
     p = dict(design_params(d))
     p["gravity_axial"] = 0.0
-    p["duty"] = Phases((Phase(0.1, 2.0, 2.0, 1.0, 500.0, 0.2), Phase(0.4, 0.0, 0.0, 1.0, 500.0, 0.4),
-                        Phase(0.05, -12.0, -12.0, 1.0, 0.0, 0.4), Phase(0.3, 0.0, 0.0, 0.0, 0.0, 0.0)))
+    p["duty"] = Phases(
+        (
+            Phase(0.1, 2.0, 2.0, 1.0, 500.0, 0.2),
+            Phase(0.4, 0.0, 0.0, 1.0, 500.0, 0.4),
+            Phase(0.05, -12.0, -12.0, 1.0, 0.0, 0.4),
+            Phase(0.3, 0.0, 0.0, 0.0, 0.0, 0.0),
+        )
+    )
     m_lo, m_hi, t_lo, t_hi = 200.0, 450.0, 0.2, 3.0
     rng = np.random.default_rng(4)
     corners = [(m_lo, t_lo), (m_lo, t_hi), (m_hi, t_lo), (m_hi, t_hi)]
@@ -119,10 +139,23 @@ def test_drive_block_in_intervals_holds_every_mass_and_drag():
             out = drive(p, m, t)
             peak.append(float(out["margin_motor_peak_torque"]))
             for k, v in out.items():
-                if k.startswith("margin_") or k in ("rms_torque", "peak_torque", "inertia_ratio", "load_inertia"):
+                if k.startswith("margin_") or k in (
+                    "rms_torque",
+                    "peak_torque",
+                    "inertia_ratio",
+                    "load_inertia",
+                ):
                     lo, hi = float(box_lo[k]), float(box_hi[k])
-                    assert lo * (1 - 1e-12) - 1e-12 <= float(v) <= hi * (1 + 1e-12) + 1e-12, (k, m, t, v, lo, hi)
-        if not vertical:  # the premise: the best peak-torque margin is not at the corner of least mass and drag
+                    assert lo * (1 - 1e-12) - 1e-12 <= float(v) <= hi * (1 + 1e-12) + 1e-12, (
+                        k,
+                        m,
+                        t,
+                        v,
+                        lo,
+                        hi,
+                    )
+        # the premise: the best peak-torque margin is not at the corner of least mass and drag
+        if not vertical:
             assert max(peak) > peak[0] * 1.001
 
 
@@ -132,6 +165,7 @@ def test_drive_hull_holds_every_guide_drive_and_preload(seed, groups, monkeypatc
     its value with every guide at every allowed preload (the two ends and three points between them), so the
     screening may leave out a drive that fails it and the explanation a drive it shows cannot score low."""
     from test_explain import _case
+
     monkeypatch.setattr(drivebounds, "DRIVE_BEARING_GROUPS", groups)
     p = _case(seed, "drive")
     sp, cons = build_space(p), build_constraints(p)

@@ -35,14 +35,22 @@ def test_least_cost_and_mass_default_equals_exhaustive(seed, mode):
     if d.best is not None:
         assert d.certificate.proven
         value = d.best.cost if mode == "cost" else d.best.outputs["moving_mass"]
-        assert d.best.objective == pytest.approx(value, rel=1e-9)  # the value itself, not its negative
+        # the value itself, not its negative
+        assert d.best.objective == pytest.approx(value, rel=1e-9)
         # the least of all feasible designs the exhaustive method saw
         assert all(c.objective >= d.best.objective * (1 - 1e-9) for c in e.runners_up)
 
 
 @pytest.mark.parametrize("seed", [0, 1, 3])
-@pytest.mark.parametrize("order", [("cost", "stiffness"), ("stiffness", "cost"), ("moving_mass", "frequency"),
-                                   ("frequency", "moving_mass")])
+@pytest.mark.parametrize(
+    "order",
+    [
+        ("cost", "stiffness"),
+        ("stiffness", "cost"),
+        ("moving_mass", "frequency"),
+        ("frequency", "moving_mass"),
+    ],
+)
 def test_lexicographic_any_order_default_equals_exhaustive(seed, order):
     p = _with(_problem(seed), mode="lexicographic", order=order, tolerance=0.02)
     d = solve(p, "default", top=2, sensitivities=False)
@@ -50,7 +58,8 @@ def test_lexicographic_any_order_default_equals_exhaustive(seed, order):
     assert_same_answer(d, e, preload=False)
     if d.best is None:
         return
-    # the primary within 2 % of its own optimum (a ceiling for a least cost or mass, a floor otherwise)
+    # the primary within 2 % of its own optimum (a ceiling for a least cost or mass, a floor
+    # otherwise)
     first = solve(_with(p, mode=order[0]), "exhaustive", top=1, sensitivities=False).best
     got = d.best.goal(order[0])
     if order[0] in ("cost", "moving_mass"):
@@ -65,8 +74,14 @@ def test_pareto_of_cost_and_moving_mass_keys_still_read(tmp_path):
 
 
 def test_weighted_sum_refuses_a_least_goal(tmp_path):
-    text = (ROOT / "problems" / "teaching_problem.yaml").read_text(encoding="utf-8").replace(
-        "objective: stiffness", "objective: {mode: weighted, weights: {cost: 1}, scale: {cost: 100 EUR}}")
+    text = (
+        (ROOT / "problems" / "teaching_problem.yaml")
+        .read_text(encoding="utf-8")
+        .replace(
+            "objective: stiffness",
+            "objective: {mode: weighted, weights: {cost: 1}, scale: {cost: 100 EUR}}",
+        )
+    )
     f = tmp_path / "w.yaml"
     f.write_text(text, encoding="utf-8")
     with pytest.raises(InputError, match="mode cost or moving_mass"):
@@ -82,8 +97,11 @@ def test_a_stiffness_optimum_names_the_markedly_cheaper_design():
     assert ch is not None and ch["tolerance"] == 0.01
     assert ch["objective"] >= 0.99 * res.best.objective * (1 - 1e-9)
     assert ch["cost"] < 0.95 * res.best.cost
-    lex = solve(_with(p, mode="lexicographic", order=("stiffness", "cost"), tolerance=0.01), top=1,
-                sensitivities=False)
+    lex = solve(
+        _with(p, mode="lexicographic", order=("stiffness", "cost"), tolerance=0.01),
+        top=1,
+        sensitivities=False,
+    )
     assert ch["cost"] == pytest.approx(lex.best.cost, rel=1e-9)
     assert ch["parts"] == lex.best.parts()
     from axisopt.report.solve import format_result
@@ -99,7 +117,10 @@ def test_no_note_when_no_design_costs_markedly_less():
     p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
     res = solve(p)
     assert res.cheaper is None
-    near = solve(_with(p, mode="lexicographic", order=("stiffness", "cost"), tolerance=0.01), top=1,
-                 sensitivities=False)
+    near = solve(
+        _with(p, mode="lexicographic", order=("stiffness", "cost"), tolerance=0.01),
+        top=1,
+        sensitivities=False,
+    )
     assert near.best.cost >= 0.95 * res.best.cost
     assert np.isfinite(res.best.cost)

@@ -14,7 +14,8 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _eq(x, y):
-    return np.array_equal(x, y, equal_nan=x.dtype.kind == "f")  # a column may hold NaN (no vendor value)
+    # a column may hold NaN (no vendor value)
+    return np.array_equal(x, y, equal_nan=x.dtype.kind == "f")
 
 
 def _same(a, b):
@@ -28,6 +29,7 @@ def test_cases_share_tables_not_axes():
     p = load_problem(ROOT / "problems" / "vmc_x_problem.yaml")
     q = p.with_limit("max_cost", 5000.0)
     from dataclasses import replace
+
     q = replace(q, axis=replace(q.axis, stroke=0.6))
     a, b = S.build_space(p), S.build_space(q)
     assert a.problem is p and b.problem is q and a._cache is not b._cache
@@ -39,6 +41,7 @@ def test_cases_share_tables_not_axes():
 def test_other_restrictions_build_anew():
     p = load_problem(ROOT / "problems" / "vmc_x_problem.yaml")
     from dataclasses import replace
+
     q = replace(p, preload_max=0.5 * float(S.build_space(p).preload_hi.max()))
     a, b = S.build_space(p), S.build_space(q)
     assert b.n_arr is not a.n_arr or not np.array_equal(a.preload_hi, b.preload_hi)
@@ -55,8 +58,10 @@ def test_what_prunes_drives_builds_anew(tmp_path):
     tight = p.with_limit("max_backlash", 1e-9)  # no gearbox's backlash fits
     assert "max_speed: 40 m/min" in src.read_text(encoding="utf-8")
     fast_file = tmp_path / "fast.yaml"  # 60 m/min: fewer (motor, gearbox) pairs fast enough
-    fast_file.write_text(src.read_text(encoding="utf-8").replace("max_speed: 40 m/min", "max_speed: 60 m/min"),
-                         encoding="utf-8")
+    fast_file.write_text(
+        src.read_text(encoding="utf-8").replace("max_speed: 40 m/min", "max_speed: 60 m/min"),
+        encoding="utf-8",
+    )
     fast = load_problem(fast_file)
     assert fast.catalog is p.catalog
     a = S.build_space(p)
@@ -65,7 +70,8 @@ def test_what_prunes_drives_builds_anew(tmp_path):
         assert len(b.drives) < len(a.drives)
         _same(b, S._build_space(q))
     assert any(ri is not None for _, _, ri in a.drives)
-    # every reduction with backlash is left out (the zero-gap belt stages of issue 54 have none: they stay)
+    # every reduction with backlash is left out (the zero-gap belt stages of issue 54 have none:
+    # they stay)
     backlash = p.catalog.rows("reductions").number("backlash")
     assert S.build_space(tight).reductions_by_backlash == int(np.count_nonzero(backlash > 0))
 
@@ -75,17 +81,25 @@ def test_relaxing_a_backlash_limit_that_left_reductions_out_builds_anew(monkeypa
     out (a relaxed limit may admit them; the space prunes on it), and on the same space when it left none out."""
     from axisopt.search import sensitivity, solve
 
-    # the teaching problem with reductions admitted (the shipped file leaves them out since issue 54)
+    # the teaching problem with reductions admitted (the shipped file leaves them out since issue
+    # 54)
     f = tmp_path / "teaching.yaml"
-    f.write_text((ROOT / "problems" / "teaching_problem.yaml").read_text(encoding="utf-8")
-                 .replace("  reductions: no\n", ""), encoding="utf-8")
+    f.write_text(
+        (ROOT / "problems" / "teaching_problem.yaml")
+        .read_text(encoding="utf-8")
+        .replace("  reductions: no\n", ""),
+        encoding="utf-8",
+    )
     p = load_problem(f).with_limit("max_backlash", 1e-6)
     built = []
     real = S.build_space
-    monkeypatch.setattr(S, "build_space", lambda q: built.append(q.limit_map.get("max_backlash")) or real(q))
+    monkeypatch.setattr(
+        S, "build_space", lambda q: built.append(q.limit_map.get("max_backlash")) or real(q)
+    )
     res = solve(p, sensitivities=False)
     space = real(p)
-    assert res.best is not None and space.reductions_by_backlash > 0  # the 8-arcmin NPT rows left out at 1 um
+    # the 8-arcmin NPT rows left out at 1 um
+    assert res.best is not None and space.reductions_by_backlash > 0
     built.clear()
     sensitivity.limit_sensitivities(p, res, space=space)
     assert pytest.approx(1.1e-6) in built  # the relaxed max_backlash built its own space

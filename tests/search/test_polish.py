@@ -31,8 +31,16 @@ def test_ipopt_agrees_with_exact_1d_solve():
         m, n, b, g = (int(v) for v in sp.unravel(ex.idx[j]))
         prm = sp.params_flat(sp.mountings[m], np.array([n]), np.array([b]), np.array([g]))
         prm = model.one_design(prm)
-        r = nlp.solve_preload(sp.mountings[m], sp.positions(sp.mountings[m]), prm, sp.preload_lo[n],
-                              sp.preload_hi[n], cons, spec, guess=0.5 * (sp.preload_lo[n] + sp.preload_hi[n]))
+        r = nlp.solve_preload(
+            sp.mountings[m],
+            sp.positions(sp.mountings[m]),
+            prm,
+            sp.preload_lo[n],
+            sp.preload_hi[n],
+            cons,
+            spec,
+            guess=0.5 * (sp.preload_lo[n] + sp.preload_hi[n]),
+        )
         assert r.success, r.status
         assert r.objective == pytest.approx(ex.objective[j], rel=1e-6)
         assert r.preload == pytest.approx(ex.preload[j], rel=1e-5)

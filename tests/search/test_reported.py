@@ -16,8 +16,10 @@ from axisopt.study.table import RESULT_COLUMNS
 def test_each_reported_value_is_a_candidate_field_after_the_objective():
     names = [f.name for f in fields(Candidate)]
     at = names.index("objective") + 1
-    assert names[at:at + len(REPORTED)] == [r.field for r in REPORTED]
-    assert all(f.type == "float" for f in fields(Candidate) if f.name in {r.field for r in REPORTED})
+    assert names[at : at + len(REPORTED)] == [r.field for r in REPORTED]
+    assert all(
+        f.type == "float" for f in fields(Candidate) if f.name in {r.field for r in REPORTED}
+    )
 
 
 def test_each_reported_value_has_its_columns():
@@ -25,7 +27,7 @@ def test_each_reported_value_has_its_columns():
     study = [c for c, _ in RESULT_COLUMNS]
     for r in REPORTED:
         i = study.index(r.column)
-        assert study[i + 1:i + 1 + len(r.profile)] == [c for c, _ in r.profile]
+        assert study[i + 1 : i + 1 + len(r.profile)] == [c for c, _ in r.profile]
         assert dict(RESULT_COLUMNS)[r.column] == ("best", r.field)
 
 

@@ -24,7 +24,12 @@ continuous:
 
 
 def _problem(tmp_path, mountings="fixed-supported, fixed-fixed", extra=""):
-    text = LONG.replace("{mountings}", mountings).replace("{extra}", extra).replace("{{", "{").replace("}}", "}")
+    text = (
+        LONG.replace("{mountings}", mountings)
+        .replace("{extra}", extra)
+        .replace("{{", "{")
+        .replace("}}", "}")
+    )
     path = tmp_path / "long.yaml"
     path.write_text(text, encoding="utf-8")
     return load_problem(path)
@@ -42,8 +47,12 @@ def test_a_long_axis_gets_a_rotating_nut_unit(tmp_path):
 
 
 def test_a_required_unit_on_other_mountings_is_never_proposed(tmp_path):
-    res = solve(_problem(tmp_path, "fixed-free, fixed-supported", "require: {nut: [THK-DIR4010-6]}"), "default", top=1,
-                sensitivities=False)
+    res = solve(
+        _problem(tmp_path, "fixed-free, fixed-supported", "require: {nut: [THK-DIR4010-6]}"),
+        "default",
+        top=1,
+        sensitivities=False,
+    )
     assert res.best is None
     why = res.infeasibility
     assert "rotating-nut unit on a screw fixed at both ends" in why.relax_blocked_by

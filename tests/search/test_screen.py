@@ -52,7 +52,9 @@ def test_structured_drive_stage_equals_rows(seed, monkeypatch):
     monkeypatch.setattr(core, "DRIVE_CHUNK", 7 * sp.n_drives)  # several chunks
     for mounting in sp.mountings:
         phases = sp.problem.axis_for(mounting).phases
-        n, b, g, bnd = core._screen_drives(sp, mounting, cons, phases, nn, bb, gg, np.arange(K, dtype=float))
+        n, b, g, bnd = core._screen_drives(
+            sp, mounting, cons, phases, nn, bb, gg, np.arange(K, dtype=float)
+        )
         rn, rb, rg, rk = _reference_drives(sp, mounting, cons, phases, nn, bb, gg)
         assert 0 < len(rn) < K * sp.n_drives, "the drive limits keep some pairs and drop others"
         np.testing.assert_array_equal(n, rn)

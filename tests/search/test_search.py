@@ -35,15 +35,31 @@ PROBLEMS = sorted((Path(__file__).resolve().parents[2] / "problems").glob("*_pro
 def test_default_equals_exhaustive_randomized(seed, mode):
     rng = np.random.default_rng(seed)
     cat = make_catalog(rng, n_screws=5, nuts_per_screw=3, n_bearings=8, n_guides=6)
-    ob = Objective(mode="weighted", weights=(("stiffness", 1.0), ("frequency", 2.0)),
-                   scale=(("stiffness", 100e6), ("frequency", 100.0))) if mode == "weighted" else Objective(mode=mode)
-    limits = {"max_cost": float(rng.uniform(2500, 5000)), "max_drag_torque": float(rng.uniform(0.4, 1.5))}
+    ob = (
+        Objective(
+            mode="weighted",
+            weights=(("stiffness", 1.0), ("frequency", 2.0)),
+            scale=(("stiffness", 100e6), ("frequency", 100.0)),
+        )
+        if mode == "weighted"
+        else Objective(mode=mode)
+    )
+    limits = {
+        "max_cost": float(rng.uniform(2500, 5000)),
+        "max_drag_torque": float(rng.uniform(0.4, 1.5)),
+    }
     if seed % 2:
         limits["min_life"] = float(rng.uniform(5e3, 3e4)) * 3600
     # odd seeds allow single nuts with play (max_backlash 50 um); even seeds keep the default 0
-    p = make_problem(cat, objective=ob, limits=limits, backlash=5e-5 if seed % 2 else None,
-                     mountings=("fixed-free", "fixed-supported", "fixed-fixed") if seed % 3 == 0
-                     else ("fixed-supported", "fixed-fixed"))
+    p = make_problem(
+        cat,
+        objective=ob,
+        limits=limits,
+        backlash=5e-5 if seed % 2 else None,
+        mountings=("fixed-free", "fixed-supported", "fixed-fixed")
+        if seed % 3 == 0
+        else ("fixed-supported", "fixed-fixed"),
+    )
     d = solve(p, "default", top=3, sensitivities=False)
     e = solve(p, "exhaustive", top=3, sensitivities=False)
     assert_same_answer(d, e)
@@ -65,11 +81,19 @@ def test_default_equals_exhaustive_rotating_nut(seed, mode):
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=3, n_bearings=6, n_guides=5, rotating=True)
     if seed % 2:
         cat = add_drives(cat, rng)
-    limits = {"max_cost": float(rng.uniform(2500, 5000)), "max_drag_torque": float(rng.uniform(0.6, 2.0))}
+    limits = {
+        "max_cost": float(rng.uniform(2500, 5000)),
+        "max_drag_torque": float(rng.uniform(0.6, 2.0)),
+    }
     if seed % 3 == 1:
         limits["max_screw_sag"] = float(rng.uniform(5e-6, 5e-5))
-    p = make_problem(cat, mode=mode, limits=limits, backlash=5e-5 if seed % 2 else None,
-                     mountings=("fixed-free", "fixed-supported", "fixed-fixed"))
+    p = make_problem(
+        cat,
+        mode=mode,
+        limits=limits,
+        backlash=5e-5 if seed % 2 else None,
+        mountings=("fixed-free", "fixed-supported", "fixed-fixed"),
+    )
     d = solve(p, "default", top=3, sensitivities=False)
     e = solve(p, "exhaustive", top=3, sensitivities=False)
     assert_same_answer(d, e)
@@ -88,14 +112,24 @@ def test_default_equals_exhaustive_carriage(seed, mode):
     limit and objective, and the rocking modes in the first frequency: the default search equals enumeration."""
     rng = np.random.default_rng(100 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=3, n_bearings=5, n_guides=8, carriage=True)
-    limits = {"max_cost": float(rng.uniform(4000, 8000)), "max_drag_torque": float(rng.uniform(1.0, 2.5))}
+    limits = {
+        "max_cost": float(rng.uniform(4000, 8000)),
+        "max_drag_torque": float(rng.uniform(1.0, 2.5)),
+    }
     if seed % 2:
         limits["min_tool_stiffness"] = float(rng.uniform(40, 120)) * 1e6
-    axis = dict(cross_load=float(rng.uniform(0, 3000)), normal_load=float(rng.uniform(0, 4000)),
-                tool_height=float(rng.uniform(0.05, 0.4)), tool_offset=float(rng.uniform(0, 0.1)),
-                cg_height=float(rng.uniform(0.05, 0.2)), guide_static_safety=float(rng.uniform(3, 8)),
-                nut_static_safety=float(rng.uniform(2, 6)), orientation=("horizontal", "vertical", "wall")[seed % 3],
-                required_life=float(rng.uniform(1e3, 5e3)) * 3600, table_length=0.6)
+    axis = dict(
+        cross_load=float(rng.uniform(0, 3000)),
+        normal_load=float(rng.uniform(0, 4000)),
+        tool_height=float(rng.uniform(0.05, 0.4)),
+        tool_offset=float(rng.uniform(0, 0.1)),
+        cg_height=float(rng.uniform(0.05, 0.2)),
+        guide_static_safety=float(rng.uniform(3, 8)),
+        nut_static_safety=float(rng.uniform(2, 6)),
+        orientation=("horizontal", "vertical", "wall")[seed % 3],
+        required_life=float(rng.uniform(1e3, 5e3)) * 3600,
+        table_length=0.6,
+    )
     p = make_problem(cat, mode=mode, limits=limits, **axis)
     d = solve(p, "default", top=3, sensitivities=False)
     e = solve(p, "exhaustive", top=3, sensitivities=False)
@@ -117,7 +151,11 @@ def _default_vs_exhaustive(p):
     and the default method's result."""
     from dataclasses import replace
 
-    p = replace(p, restrictions=replace(p.restrictions, drive=True), margins=tuple((c, 1.0) for c in model.CHECKS))
+    p = replace(
+        p,
+        restrictions=replace(p.restrictions, drive=True),
+        margins=tuple((c, 1.0) for c in model.CHECKS),
+    )
     d = solve(p, "default", top=2, sensitivities=False)
     e = solve(p, "exhaustive", top=2, sensitivities=False)
     assert (d.best is None) == (e.best is None)
@@ -139,10 +177,16 @@ def _random_duty(seed: int) -> tuple:
     2.5 kN, a dwell and a return."""
     from axisopt.physics.motion import Segment
 
-    return () if seed < 2 else (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
-                                Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=2500.0),
-                                Segment("dwell", duration=1.0),
-                                Segment("move", distance=-0.2, speed=0.3, acceleration=4.0))
+    return (
+        ()
+        if seed < 2
+        else (
+            Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+            Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=2500.0),
+            Segment("dwell", duration=1.0),
+            Segment("move", distance=-0.2, speed=0.3, acceleration=4.0),
+        )
+    )
 
 
 _REDUCTION_RESULTS: dict = {}
@@ -152,26 +196,35 @@ def _reduction_case(seed):
     if seed in _REDUCTION_RESULTS:
         return _REDUCTION_RESULTS[seed]
 
-
     rng = np.random.default_rng(300 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
     make_double(cat)
     cat = add_reductions(add_drives(cat, rng, n_motors=3, n_couplings=2), rng, n=3)
-    # issue 54: belt stages (ratio 1-3, no backlash) and 3-against-1 support sets beside them, drawn from a
+    # issue 54: belt stages (ratio 1-3, no backlash) and 3-against-1 support sets beside them, drawn
+    # from a
     # stream of their own (the cases' other draws unchanged)
     extra = np.random.default_rng(700 + seed)
     cat = add_belt_stages(add_support_sets(cat, extra), extra)
     vertical = seed % 2 == 1
     duty = _random_duty(seed)
-    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
+    limits = {
+        "max_cost": float(rng.uniform(3500, 6000)),
+        "max_drag_torque": float(rng.uniform(1.0, 2.0)),
+    }
     if seed % 3 == 0:
         limits["min_frequency"] = float(rng.uniform(40, 120))
     mass = rng.uniform(60, 150) if vertical else rng.uniform(150, 400)
-    p = make_problem(cat, limits=limits, moving_mass=float(mass), axial_load=1500.0 if vertical else 3000.0,
-                     orientation="vertical" if vertical else "horizontal", duty_cycle=duty,
-                     mode="frequency" if seed in (2, 5) else "stiffness",
-                     # a reduction's backlash is lost motion (jt P_h / 2 pi): some drives pass, some do not
-                     backlash=float(rng.uniform(5e-6, 40e-6)))
+    p = make_problem(
+        cat,
+        limits=limits,
+        moving_mass=float(mass),
+        axial_load=1500.0 if vertical else 3000.0,
+        orientation="vertical" if vertical else "horizontal",
+        duty_cycle=duty,
+        mode="frequency" if seed in (2, 5) else "stiffness",
+        # a reduction's backlash is lost motion (jt P_h / 2 pi): some drives pass, some do not
+        backlash=float(rng.uniform(5e-6, 40e-6)),
+    )
     p, d = _default_vs_exhaustive(p)
     sp = build_space(p)
     assert sp.reductions is not None and any(ri is not None for _, _, ri in sp.drives)
@@ -196,17 +249,25 @@ def test_default_equals_exhaustive_with_drive(seed):
     and vertical axes (gravity makes the motor-torque limits convex, not monotone, in the nut preload: the
     drag helps when lowering) and with a duty cycle of cutting moves and dwells."""
 
-
     rng = np.random.default_rng(100 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
     make_double(cat)
     cat = add_drives(cat, rng, n_motors=4, n_couplings=2)
     vertical = seed % 2 == 1
     duty = _random_duty(seed)
-    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
+    limits = {
+        "max_cost": float(rng.uniform(3500, 6000)),
+        "max_drag_torque": float(rng.uniform(1.0, 2.0)),
+    }
     mass = rng.uniform(60, 150) if vertical else rng.uniform(150, 400)
-    p = make_problem(cat, limits=limits, moving_mass=float(mass), axial_load=1500.0 if vertical else 3000.0,
-                     orientation="vertical" if vertical else "horizontal", duty_cycle=duty)
+    p = make_problem(
+        cat,
+        limits=limits,
+        moving_mass=float(mass),
+        axial_load=1500.0 if vertical else 3000.0,
+        orientation="vertical" if vertical else "horizontal",
+        duty_cycle=duty,
+    )
     p, d = _default_vs_exhaustive(p)
     sp = build_space(p)
     assert sp.n_drives > 1 and sp.size == 2 * 8 * 4 * 3 * sp.n_drives
@@ -233,14 +294,28 @@ def test_default_equals_exhaustive_with_phase_masses_and_forces(seed):
     cat = add_drives(cat, rng, n_motors=4, n_couplings=2)
     vertical = seed % 2 == 1
     mass = float(rng.uniform(60, 150) if vertical else rng.uniform(150, 400))
-    duty = (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
-            Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=float(rng.uniform(500, 2500))),
-            Segment("dwell", duration=1.0, force=float(rng.uniform(0, 500)), moving_mass=0.6 * mass),
-            Segment("move", distance=-0.2, speed=0.3, acceleration=4.0, moving_mass=0.6 * mass))
-    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
-    p = make_problem(cat, limits=limits, moving_mass=mass, axial_load=1500.0 if vertical else 3000.0,
-                     orientation="vertical" if vertical else "horizontal", duty_cycle=duty, load_factor=None,
-                     required_life=float(rng.uniform(5e3, 2e4)) * 3600)
+    duty = (
+        Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+        Segment(
+            "move", distance=-0.3, speed=0.02, acceleration=1.0, force=float(rng.uniform(500, 2500))
+        ),
+        Segment("dwell", duration=1.0, force=float(rng.uniform(0, 500)), moving_mass=0.6 * mass),
+        Segment("move", distance=-0.2, speed=0.3, acceleration=4.0, moving_mass=0.6 * mass),
+    )
+    limits = {
+        "max_cost": float(rng.uniform(3500, 6000)),
+        "max_drag_torque": float(rng.uniform(1.0, 2.0)),
+    }
+    p = make_problem(
+        cat,
+        limits=limits,
+        moving_mass=mass,
+        axial_load=1500.0 if vertical else 3000.0,
+        orientation="vertical" if vertical else "horizontal",
+        duty_cycle=duty,
+        load_factor=None,
+        required_life=float(rng.uniform(5e3, 2e4)) * 3600,
+    )
     _, d = _default_vs_exhaustive(p)
     assert d.best is not None  # the seeds are chosen so that each case has an optimum
     assert d.best.design.axis.load_factor_eff == pytest.approx(1.5)  # THK Table 19 at 18 m/min
@@ -262,19 +337,43 @@ def test_default_equals_exhaustive_with_counterbalance(seed):
     cat = add_drives(cat, rng, n_motors=4, n_couplings=2)
     mass = float(rng.uniform(100, 250))
     if seed % 2 == 0:
-        cb = Counterbalance("counterweight", mass=float(rng.uniform(0.3, 0.95)) * mass,
-                            efficiency=float(rng.uniform(0.85, 1.0)), chain_mass=float(rng.uniform(0, 10)))
+        cb = Counterbalance(
+            "counterweight",
+            mass=float(rng.uniform(0.3, 0.95)) * mass,
+            efficiency=float(rng.uniform(0.85, 1.0)),
+            chain_mass=float(rng.uniform(0, 10)),
+        )
     else:
         f0 = float(rng.uniform(0.5, 1.2)) * mass * 9.80665
-        cb = Counterbalance("cylinder", force=f0, force_at_end=f0 * float(rng.uniform(1.0, 1.2)),
-                            tolerance=float(rng.uniform(0.0, 0.1)), piston_mass=float(rng.uniform(0, 5)))
-    duty = (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
-            Segment("move", distance=-0.3, speed=0.02, acceleration=1.0, force=float(rng.uniform(500, 2500))),
-            Segment("dwell", duration=1.0, moving_mass=0.8 * mass),
-            Segment("move", distance=-0.2, speed=0.3, acceleration=4.0, moving_mass=0.8 * mass))
-    limits = {"max_cost": float(rng.uniform(3500, 6000)), "max_drag_torque": float(rng.uniform(1.0, 2.0))}
-    p = make_problem(cat, limits=limits, moving_mass=mass, axial_load=1500.0, orientation="vertical",
-                     duty_cycle=duty, counterbalance=cb, required_life=float(rng.uniform(3e3, 1e4)) * 3600)
+        cb = Counterbalance(
+            "cylinder",
+            force=f0,
+            force_at_end=f0 * float(rng.uniform(1.0, 1.2)),
+            tolerance=float(rng.uniform(0.0, 0.1)),
+            piston_mass=float(rng.uniform(0, 5)),
+        )
+    duty = (
+        Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+        Segment(
+            "move", distance=-0.3, speed=0.02, acceleration=1.0, force=float(rng.uniform(500, 2500))
+        ),
+        Segment("dwell", duration=1.0, moving_mass=0.8 * mass),
+        Segment("move", distance=-0.2, speed=0.3, acceleration=4.0, moving_mass=0.8 * mass),
+    )
+    limits = {
+        "max_cost": float(rng.uniform(3500, 6000)),
+        "max_drag_torque": float(rng.uniform(1.0, 2.0)),
+    }
+    p = make_problem(
+        cat,
+        limits=limits,
+        moving_mass=mass,
+        axial_load=1500.0,
+        orientation="vertical",
+        duty_cycle=duty,
+        counterbalance=cb,
+        required_life=float(rng.uniform(3e3, 1e4)) * 3600,
+    )
     _, d = _default_vs_exhaustive(p)
     assert d.best is not None  # the seeds are chosen so that each case has an optimum
     assert d.best.design.axis.counterbalance == cb
@@ -291,10 +390,17 @@ def _drive_problem(seed, axis_coupling):
     cp = cat.couplings.copy()
     cp["torsional_stiffness"], cp["rated_torque"] = [3e5, 1.5e5], 500.0
     cat = cat.replace(couplings=cp)
-    p = make_problem(cat, limits={"max_cost": float(rng.uniform(3500, 6000))}, moving_mass=200.0,
-                     axial_load=3000.0)
-    return replace(p, restrictions=replace(p.restrictions, drive=True),
-                   axis=replace(p.axis, coupling_stiffness=axis_coupling))
+    p = make_problem(
+        cat,
+        limits={"max_cost": float(rng.uniform(3500, 6000))},
+        moving_mass=200.0,
+        axial_load=3000.0,
+    )
+    return replace(
+        p,
+        restrictions=replace(p.restrictions, drive=True),
+        axis=replace(p.axis, coupling_stiffness=axis_coupling),
+    )
 
 
 @pytest.mark.parametrize("seed", [2, 5])
@@ -322,7 +428,8 @@ def _interior(p, key):
     b = d.best
     sp = build_space(p)
     n = int(sp.unravel(b.combination)[1])
-    assert sp.preload_lo[n] + 1.0 < b.nut_preload < sp.preload_hi[n] - 1.0  # the limit, not the range, caps it
+    # the limit, not the range, caps it
+    assert sp.preload_lo[n] + 1.0 < b.nut_preload < sp.preload_hi[n] - 1.0
     return b
 
 
@@ -334,7 +441,10 @@ def test_drag_limit_makes_preload_interior():
 
     ev = evaluate(free.design)
     limit = ev["drag_torque"] - 0.3 * ev["drag_nut"]  # 30 % of the nut's drag must go
-    b = _interior(make_problem(cat, axial_load=800.0, limits={"max_drag_torque": float(limit)}), "max_drag_torque")
+    b = _interior(
+        make_problem(cat, axial_load=800.0, limits={"max_drag_torque": float(limit)}),
+        "max_drag_torque",
+    )
     assert b.drag_torque == pytest.approx(limit, rel=1e-5)
 
 
@@ -355,7 +465,9 @@ def test_lexicographic_equals_exhaustive():
     d = solve(p, "default", top=2, sensitivities=False)
     e = solve(p, "exhaustive", top=2, sensitivities=False)
     assert_same_answer(d, e)
-    f_best = solve(p.with_objective(Objective(mode="frequency")), top=1, sensitivities=False).best.min_frequency
+    f_best = solve(
+        p.with_objective(Objective(mode="frequency")), top=1, sensitivities=False
+    ).best.min_frequency
     assert d.best.min_frequency >= f_best * 0.95 * (1 - 1e-9)
 
 
@@ -392,15 +504,18 @@ BASE = """axis:
 """
 
 
-@pytest.mark.parametrize("extra, needle", [
-    ("limits:\n  max_cots: 100 EUR\n", "max_cots"),
-    ("limits:\n  max_cost: 100\n", "max_cost"),
-    ("catalog:\n  require: {nut: NO-SUCH-NUT}\n", "NO-SUCH-NUT"),
-    ("catalog:\n  mountings: [fixed-flexible]\n", "mountings"),
-    ("objective: fastest\n", "objective"),
-    ("continuous:\n  nut_preload: {min: 5 kN, max: 1 kN}\n", "max"),
-    ("limits:\n  margins: {critcal_speed: 1.2}\n", "critcal_speed"),
-])
+@pytest.mark.parametrize(
+    "extra, needle",
+    [
+        ("limits:\n  max_cots: 100 EUR\n", "max_cots"),
+        ("limits:\n  max_cost: 100\n", "max_cost"),
+        ("catalog:\n  require: {nut: NO-SUCH-NUT}\n", "NO-SUCH-NUT"),
+        ("catalog:\n  mountings: [fixed-flexible]\n", "mountings"),
+        ("objective: fastest\n", "objective"),
+        ("continuous:\n  nut_preload: {min: 5 kN, max: 1 kN}\n", "max"),
+        ("limits:\n  margins: {critcal_speed: 1.2}\n", "critcal_speed"),
+    ],
+)
 def test_bad_problem_files_are_one_line_input_errors(tmp_path, extra, needle, capsys):
     f = _write(tmp_path, BASE + extra)
     with pytest.raises(InputError) as ei:
@@ -414,8 +529,21 @@ def test_bad_problem_files_are_one_line_input_errors(tmp_path, extra, needle, ca
 def test_cli_solve_json_and_exit_codes(tmp_path, capsys):
     root = Path(__file__).resolve().parents[2] / "problems"
     out = tmp_path / "r.json"
-    assert main(["solve", str(root / "teaching_problem.yaml"), "--json", str(out), "--top", "2",
-                 "--plot", str(tmp_path / "p.png")]) == 0
+    assert (
+        main(
+            [
+                "solve",
+                str(root / "teaching_problem.yaml"),
+                "--json",
+                str(out),
+                "--top",
+                "2",
+                "--plot",
+                str(tmp_path / "p.png"),
+            ]
+        )
+        == 0
+    )
     d = json.loads(out.read_text())
     assert d["status"] == "optimal" and d["certificate"]["gap"] == 0.0
     assert set(d["best"]) >= {"screw", "nut", "bearing", "guide", "nut_preload", "objective"}
@@ -465,15 +593,28 @@ def test_default_equals_exhaustive_with_heat_balance(seed):
     rng = np.random.default_rng(300 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
     make_double(cat)
-    duty = (Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
-            Segment("move", distance=-0.5, speed=0.3, acceleration=4.0), Segment("dwell", duration=2.0))
+    duty = (
+        Segment("move", distance=0.5, speed=0.3, acceleration=4.0, jerk=60.0),
+        Segment("move", distance=-0.5, speed=0.3, acceleration=4.0),
+        Segment("dwell", duration=2.0),
+    )
     cooled = seed % 2 == 0
-    limits = {"max_thermal_growth": float(rng.uniform(10e-6, 40e-6) if cooled else rng.uniform(100e-6, 300e-6)),
-              "max_drag_torque": 3.0}
-    p = make_problem(cat, limits=limits, mountings=("fixed-fixed",) if cooled else ("fixed-fixed", "fixed-supported"),
-                     duty_cycle=duty, heat_transfer=float(rng.uniform(150.0, 400.0)) if cooled else None,
-                     pretension=None if seed < 2 else float(rng.uniform(500.0, 3000.0)),
-                     axial_load=1000.0, required_life=float(rng.uniform(2e3, 1e4)) * 3600)
+    limits = {
+        "max_thermal_growth": float(
+            rng.uniform(10e-6, 40e-6) if cooled else rng.uniform(100e-6, 300e-6)
+        ),
+        "max_drag_torque": 3.0,
+    }
+    p = make_problem(
+        cat,
+        limits=limits,
+        mountings=("fixed-fixed",) if cooled else ("fixed-fixed", "fixed-supported"),
+        duty_cycle=duty,
+        heat_transfer=float(rng.uniform(150.0, 400.0)) if cooled else None,
+        pretension=None if seed < 2 else float(rng.uniform(500.0, 3000.0)),
+        axial_load=1000.0,
+        required_life=float(rng.uniform(2e3, 1e4)) * 3600,
+    )
     d = solve(p, "default", top=3, sensitivities=False)
     e = solve(p, "exhaustive", top=3, sensitivities=False)
     assert_same_answer(d, e)

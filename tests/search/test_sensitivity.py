@@ -39,16 +39,22 @@ def test_what_ifs_stop_at_the_deadline_and_say_so():
     bad = load_problem(root / "infeasible_drive_problem.yaml")
     r = solve(bad, sensitivities=False)
     flag: list = []
-    assert design_changes(bad, build_constraints(bad), r.infeasibility, deadline=time.perf_counter(),
-                          cut=flag) == []
+    assert (
+        design_changes(
+            bad, build_constraints(bad), r.infeasibility, deadline=time.perf_counter(), cut=flag
+        )
+        == []
+    )
     assert flag == [True]
-    assert design_changes(bad, build_constraints(bad), r.infeasibility)  # without the deadline: a change
+    # without the deadline: a change
+    assert design_changes(bad, build_constraints(bad), r.infeasibility)
 
 
 def test_sensitivity_reports_binding_drag_limit():
     cat = make_catalog(np.random.default_rng(9), n_bearings=8)
     make_double(cat)
-    # 0.8 N.m: since issue 26 the bearings without a listed starting torque take the vendor envelope (0.6 was
+    # 0.8 N.m: since issue 26 the bearings without a listed starting torque take the vendor envelope
+    # (0.6 was
     # infeasible)
     p = make_problem(cat, axial_load=800.0, limits={"max_drag_torque": 0.8, "max_cost": 1e5})
     r = solve(p, "default", top=1)
@@ -56,4 +62,3 @@ def test_sensitivity_reports_binding_drag_limit():
     by = {b.limit: b for b in r.binding}
     assert by["max_drag_torque"].binding and by["max_drag_torque"].objective_gain > 0
     assert not by["max_cost"].binding
-

@@ -22,15 +22,37 @@ def _twin_problem(seed: int, mode: str):
     make_double(cat)
     cat = add_drives(cat, rng, n_motors=3, n_couplings=2)
     span = float(rng.uniform(0.8, 2.0))
-    twin = TwinDrive(span=span, cross_stroke=float(rng.uniform(0.3, 1.0)) * span,
-                     cross_mass=float(rng.uniform(30, 150)),
-                     bridge_yaw_inertia=None if seed % 2 else float(rng.uniform(5, 60)))
-    ob = Objective(mode="weighted", weights=(("stiffness", 1.0), ("frequency", 2.0)),
-                   scale=(("stiffness", 100e6), ("frequency", 100.0))) if mode == "weighted" else Objective(mode=mode)
-    limits = {"max_cost": float(rng.uniform(6000, 12000)), "max_drag_torque": float(rng.uniform(1.0, 2.5))}
-    p = make_problem(cat, objective=ob, limits=limits, moving_mass=float(rng.uniform(150, 350)),
-                     axial_load=float(rng.uniform(1500, 4000)), twin_drive=twin, table_length=0.6,
-                     rail_spacing=0.5 * span, table_width=0.6 * span, required_life=float(rng.uniform(2e3, 1e4)) * 3600)
+    twin = TwinDrive(
+        span=span,
+        cross_stroke=float(rng.uniform(0.3, 1.0)) * span,
+        cross_mass=float(rng.uniform(30, 150)),
+        bridge_yaw_inertia=None if seed % 2 else float(rng.uniform(5, 60)),
+    )
+    ob = (
+        Objective(
+            mode="weighted",
+            weights=(("stiffness", 1.0), ("frequency", 2.0)),
+            scale=(("stiffness", 100e6), ("frequency", 100.0)),
+        )
+        if mode == "weighted"
+        else Objective(mode=mode)
+    )
+    limits = {
+        "max_cost": float(rng.uniform(6000, 12000)),
+        "max_drag_torque": float(rng.uniform(1.0, 2.5)),
+    }
+    p = make_problem(
+        cat,
+        objective=ob,
+        limits=limits,
+        moving_mass=float(rng.uniform(150, 350)),
+        axial_load=float(rng.uniform(1500, 4000)),
+        twin_drive=twin,
+        table_length=0.6,
+        rail_spacing=0.5 * span,
+        table_width=0.6 * span,
+        required_life=float(rng.uniform(2e3, 1e4)) * 3600,
+    )
     return replace(p, restrictions=replace(p.restrictions, drive=True))
 
 
@@ -52,6 +74,8 @@ def test_default_equals_exhaustive_twin_drive(seed, mode):
 
 def test_twin_problems_have_optima():
     """The seeds above are drawn so that most twin-drive cases have an optimum (the comparison is not vacuous)."""
-    found = [solve(_twin_problem(s, "frequency"), "default", top=1, sensitivities=False).best is not None
-             for s in range(4)]
+    found = [
+        solve(_twin_problem(s, "frequency"), "default", top=1, sensitivities=False).best is not None
+        for s in range(4)
+    ]
     assert sum(found) >= 2, found

@@ -19,7 +19,16 @@ HERE = Path(__file__).resolve().parent / "unseen"
 
 def _solve(tmp_path, name, *extra, advice=False):
     out = tmp_path / "r.json"
-    rc = main(["solve", str(HERE / name), "--json", str(out), *(() if advice else ("--no-sensitivity",)), *extra])
+    rc = main(
+        [
+            "solve",
+            str(HERE / name),
+            "--json",
+            str(out),
+            *(() if advice else ("--no-sensitivity",)),
+            *extra,
+        ]
+    )
     return rc, json.loads(out.read_text())
 
 
@@ -33,7 +42,9 @@ def test_fixed_fixed_screw_is_rigid_at_its_bearing():
     assert np.all(np.isfinite(ks))
     # away from the bearing the formula is THK's A E L / (a b) unchanged
     ea = ps.E_STEEL * np.pi * d_r**2 / 4
-    assert ps.screw_stiffness(d_r, 0.2, span, "fixed-fixed") == pytest.approx(ea * span / (0.2 * 0.6))
+    assert ps.screw_stiffness(d_r, 0.2, span, "fixed-fixed") == pytest.approx(
+        ea * span / (0.2 * 0.6)
+    )
 
 
 def test_end_margin_zero_infeasible_answers(tmp_path, capsys):
@@ -80,8 +91,13 @@ def _apply(text: str, changes) -> str:
             text = re.sub(r"^catalog:\n", "catalog:\n" + line + "\n", text, count=1, flags=re.M)
             continue
         key = c.key.split(".")[-1]
-        text, n = re.subn(rf"^(\s*{key}:\s*)[^#\n]*", lambda m, v=f"{c.to:g} {c.unit}": m.group(1) + v, text,
-                          count=1, flags=re.M)
+        text, n = re.subn(
+            rf"^(\s*{key}:\s*)[^#\n]*",
+            lambda m, v=f"{c.to:g} {c.unit}": m.group(1) + v,
+            text,
+            count=1,
+            flags=re.M,
+        )
         assert n == 1, c.key
     return text
 
@@ -128,10 +144,21 @@ def test_unit_slip_30_m_s_gets_lower_max_speed(tmp_path):
 
 
 # the ten generated problems (bench/axis_generator.py, seed 0) that took the longest CPU time in
-# bench/bench_generalize.py on the base commit (bd0fcfd), as the generator then wrote them: each answered with its
+# bench/bench_generalize.py on the base commit (bd0fcfd), as the generator then wrote them: each
+# answered with its
 # status, proven, and an explanation whose relaxations keep every vendor margin at 0.95 or more
-SLOWEST = ("gen-0-2-vmc_z", "gen-0-3-lathe_x", "gen-0-4-lathe_z", "gen-0-36-lathe_x", "gen-0-37-lathe_z",
-           "gen-0-38-gantry_twin", "gen-0-39-vertical_cb", "gen-0-41-laser", "gen-0-42-router", "gen-0-53-router")
+SLOWEST = (
+    "gen-0-2-vmc_z",
+    "gen-0-3-lathe_x",
+    "gen-0-4-lathe_z",
+    "gen-0-36-lathe_x",
+    "gen-0-37-lathe_z",
+    "gen-0-38-gantry_twin",
+    "gen-0-39-vertical_cb",
+    "gen-0-41-laser",
+    "gen-0-42-router",
+    "gen-0-53-router",
+)
 
 
 @pytest.mark.slow
@@ -143,7 +170,8 @@ def test_slowest_generated_problems_answer(name):
     from axisopt.problem import load_problem
     from axisopt.search import solve
 
-    with warnings.catch_warnings():  # gen-0-53 carries the generator's unit slip (m/s for m/min): said, not refused
+    # gen-0-53 carries the generator's unit slip (m/s for m/min): said, not refused
+    with warnings.catch_warnings():
         warnings.simplefilter("ignore", ImplausibleInput)
         problem = load_problem(HERE / f"{name}.yaml")
     res = solve(problem, sensitivities=False)

@@ -57,7 +57,7 @@ class FullDisk:
 
     def write(self, data):
         if len(data) > self.left:
-            self.fh.write(data[:self.left])
+            self.fh.write(data[: self.left])
             self.fh.flush()
             self.left = 0
             raise OSError(self.code, os.strerror(self.code))
@@ -89,7 +89,9 @@ def fill_disk_on(monkeypatch, name: str, budget: int = 100, code: int = errno.EN
     def fake_open(file, mode="r", *a, **kw):
         fh = real_open(file, mode, *a, **kw)
         if any(m in mode for m in "wax"):
-            target = os.readlink(f"/proc/self/fd/{file}") if isinstance(file, int) else os.fspath(file)
+            target = (
+                os.readlink(f"/proc/self/fd/{file}") if isinstance(file, int) else os.fspath(file)
+            )
             base = os.path.basename(target)
             if base == name or base.startswith(f".{name}."):
                 return FullDisk(fh, budget, code)

@@ -23,14 +23,17 @@ def write_study(tmp_path: Path, body: str, name: str = "study.yaml") -> Path:
 
 def small_study(tmp_path) -> Path:
     """8 cases: 4 strokes x 2 mountings of the teaching problem, one budget too tight (infeasible)."""
-    return write_study(tmp_path, """\
+    return write_study(
+        tmp_path,
+        """\
         name: small
         base: @PROBLEMS@/teaching_problem.yaml
         sweep:
           axis.stroke: [300 mm, 500 mm, 700 mm]
           catalog.mountings: [[fixed-supported], [fixed-supported, fixed-fixed]]
           limits.max_cost: [3500 EUR, 600 EUR]
-        """)
+        """,
+    )
 
 
 def stable(df):

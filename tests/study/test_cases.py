@@ -12,8 +12,11 @@ def test_product_expansion_and_problem_fields(small_study):
     assert len(st.cases) == 12
     assert len({c.case_id for c in st.cases}) == 12
     c = st.cases[-1]
-    assert c.inputs() == {"axis.stroke": "700 mm", "catalog.mountings": ["fixed-supported", "fixed-fixed"],
-                          "limits.max_cost": "600 EUR"}
+    assert c.inputs() == {
+        "axis.stroke": "700 mm",
+        "catalog.mountings": ["fixed-supported", "fixed-fixed"],
+        "limits.max_cost": "600 EUR",
+    }
     p = build_problem(st.context(), c)
     assert p.axis.stroke == pytest.approx(0.7)
     assert p.mountings == ("fixed-supported", "fixed-fixed")

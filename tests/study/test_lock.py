@@ -16,11 +16,14 @@ from axisopt.study.run import StudyLock
 
 @pytest.mark.parametrize("holder", ["dead", "garbled", "reused", "other host"])
 def test_stale_lock_is_taken_over_and_foreign_one_is_not(tmp_path, holder):
-    dead = subprocess.run([PYTHON, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
+    dead = subprocess.run(
+        [PYTHON, "-c", "import os; print(os.getpid())"], capture_output=True, text=True
+    )
     me = {"pid": int(dead.stdout), "host": socket.gethostname(), "start": 1, "since": "earlier"}
     if holder == "garbled":  # killed between creating the file and writing it
         text = ""
-    elif holder == "reused":  # the pid now belongs to another process (this one), started at another time
+    # the pid now belongs to another process (this one), started at another time
+    elif holder == "reused":
         text = json.dumps({**me, "pid": os.getpid()})
     elif holder == "other host":  # its process may be alive: never taken over
         text = json.dumps({**me, "pid": os.getpid(), "host": "elsewhere.example"})

@@ -74,17 +74,22 @@ def test_record_naming_another_case_is_not_trusted(reference, tmp_path):
 def test_exit_code_is_one_when_a_case_has_no_design(reference, tmp_path, capsys):
     st, out, ref = _copy(reference, tmp_path)
     assert (ref["status"] == "infeasible").any()  # the small study has a budget too tight
-    assert main(["study", st.source, "--out", str(out), "--resume", "--workers", "0", "--quiet"]) == 1
+    assert (
+        main(["study", st.source, "--out", str(out), "--resume", "--workers", "0", "--quiet"]) == 1
+    )
     assert "failed" in capsys.readouterr().out
 
 
 def test_all_cases_solved_exits_zero(tmp_path, capsys):
-    src = write_study(tmp_path, """\
+    src = write_study(
+        tmp_path,
+        """\
         name: ok
         base: @PROBLEMS@/teaching_problem.yaml
         sweep:
           axis.stroke: [300 mm, 400 mm]
-        """)
+        """,
+    )
     assert main(["study", str(src), "--out", str(tmp_path / "o"), "--workers", "0", "--quiet"]) == 0
 
 
@@ -94,14 +99,17 @@ def test_combination_invalid_only_together_is_a_failed_case(tmp_path, capsys):
     if "continuous:" not in base:
         base += "continuous:\n  nut_preload: {min: 200 N, max: 20 kN}\n"
     (tmp_path / "base.yaml").write_text(base, encoding="utf-8")
-    src = write_study(tmp_path, """\
+    src = write_study(
+        tmp_path,
+        """\
         name: together
         base: base.yaml
         combine: product
         sweep:
           continuous.nut_preload.min: [100 N, 5 kN]
           continuous.nut_preload.max: [1 kN, 20 kN]
-        """)
+        """,
+    )
     out = tmp_path / "o"
     assert main(["study", str(src), "--out", str(out), "--workers", "0", "--quiet"]) == 1
     df = pd.read_csv(out / "results.csv")
@@ -111,12 +119,15 @@ def test_combination_invalid_only_together_is_a_failed_case(tmp_path, capsys):
 
 
 def test_a_value_invalid_on_its_own_still_rejects_the_study(tmp_path, capsys):
-    src = write_study(tmp_path, """\
+    src = write_study(
+        tmp_path,
+        """\
         name: bad
         base: @PROBLEMS@/teaching_problem.yaml
         sweep:
           axis.stroke: [300 mm, -5 mm]
-        """)
+        """,
+    )
     assert main(["study", str(src), "--out", str(tmp_path / "o"), "--workers", "0", "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
     assert err.startswith("error: ") and "axis.stroke" in err and "\n" not in err
@@ -127,8 +138,19 @@ def test_bad_report_directory_is_refused_before_the_study_runs(tmp_path, capsys)
     pytest.importorskip("plotly")
     src = small_study(tmp_path)
     out = tmp_path / "o"
-    rc = main(["study", str(src), "--out", str(out), "--workers", "0", "--quiet", "--report",
-               str(tmp_path / "no" / "such" / "dir" / "r.html")])
+    rc = main(
+        [
+            "study",
+            str(src),
+            "--out",
+            str(out),
+            "--workers",
+            "0",
+            "--quiet",
+            "--report",
+            str(tmp_path / "no" / "such" / "dir" / "r.html"),
+        ]
+    )
     assert rc == 2
     err = capsys.readouterr().err.strip()
     assert "does not exist" in err and "\n" not in err

@@ -44,7 +44,11 @@ def test_in_process_run_records_every_case(reference):
     for f in ("results.csv", "report.md", "study.json"):
         assert os.path.exists(os.path.join(out, f))
     report = Path(out, "report.md").read_text(encoding="utf-8")
-    assert "results.csv" in report and "plots/best_vs_axis_stroke.png" in report and "Failed cases" in report
+    assert (
+        "results.csv" in report
+        and "plots/best_vs_axis_stroke.png" in report
+        and "Failed cases" in report
+    )
 
 
 def test_parquet_results_equal_the_table(reference):
@@ -66,9 +70,21 @@ def test_existing_results_need_resume(reference, tmp_path):
 def test_killed_study_resumes_to_the_uninterrupted_rows(reference, tmp_path):
     st, _, ref = reference
     out = tmp_path / "killed"
-    cmd = [PYTHON, "-m", "axisopt", "study", st.source, "--out", str(out), "--workers", "1", "--quiet"]
-    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                            start_new_session=True)
+    cmd = [
+        PYTHON,
+        "-m",
+        "axisopt",
+        "study",
+        st.source,
+        "--out",
+        str(out),
+        "--workers",
+        "1",
+        "--quiet",
+    ]
+    proc = subprocess.Popen(
+        cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True
+    )
     try:
         deadline = time.monotonic() + 60
         while time.monotonic() < deadline and proc.poll() is None:
@@ -84,25 +100,35 @@ def test_killed_study_resumes_to_the_uninterrupted_rows(reference, tmp_path):
     assert 2 <= done < 12
     for p in (out / "cases").glob("*.json"):
         json.loads(p.read_text())  # every file written is whole
-    assert main(["study", st.source, "--out", str(out), "--workers", "1", "--quiet", "--resume"]) == study_code(ref)
+    assert main(
+        ["study", st.source, "--out", str(out), "--workers", "1", "--quiet", "--resume"]
+    ) == study_code(ref)
     df = results_table(st, out)
     pd.testing.assert_frame_equal(stable(df), stable(ref))
     assert len(list((out / "cases").glob("*.json"))) == 12 and not list((out / "cases").glob(".*"))
 
 
 def test_failing_cases_are_recorded_and_the_study_goes_on(tmp_path, monkeypatch):
-    # preload min 5 kN with max 3 kN is only invalid in combination; 5 kN to 10 kN is infeasible (drag limit)
-    p = write_study(tmp_path, """\
+    # preload min 5 kN with max 3 kN is only invalid in combination; 5 kN to 10 kN is infeasible
+    # (drag limit)
+    p = write_study(
+        tmp_path,
+        """\
         base: @PROBLEMS@/teaching_problem.yaml
         sweep:
           continuous.nut_preload.min: [100 N, 5 kN]
           continuous.nut_preload.max: [10 kN, 3 kN]
-        """)
+        """,
+    )
     st = load_study(p)
     s = run_study(st, tmp_path / "o", workers=0)
     df = results_table(st, tmp_path / "o").set_index("index")
     assert list(df["status"]) == ["optimal", "optimal", "infeasible", "input_error"]
-    assert "below min" in df.loc[3, "reason"] and "nut_preload" in df.loc[3, "reason"] and s.failed == 2
+    assert (
+        "below min" in df.loc[3, "reason"]
+        and "nut_preload" in df.loc[3, "reason"]
+        and s.failed == 2
+    )
     # a solver exception is recorded with its reason; the other cases go on
     import axisopt.search as search
 

@@ -48,7 +48,9 @@ def _finished_copy(reference, tmp_path) -> tuple:
 
 
 def _resume(src, out, *more) -> int:
-    return main(["study", str(src), "--out", str(out), "--resume", "--workers", "0", "--quiet", *more])
+    return main(
+        ["study", str(src), "--out", str(out), "--resume", "--workers", "0", "--quiet", *more]
+    )
 
 
 def _temporaries(d: Path) -> list:
@@ -57,10 +59,13 @@ def _temporaries(d: Path) -> list:
 
 # ---------------------------------------------------------------------------------- atomic writer
 
+
 def test_atomic_file_keeps_the_old_file_when_writing_fails(tmp_path):
     p = tmp_path / "results.csv"
     p.write_text("old,whole\n1,2\n", encoding="utf-8")
-    with pytest.raises(InputError, match=r"results.csv: cannot write table \(No space left on device\)"):
+    with pytest.raises(
+        InputError, match=r"results.csv: cannot write table \(No space left on device\)"
+    ):
         with atomic_file(p, what="table") as fh:
             fh.write("new,half")
             raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
@@ -78,11 +83,15 @@ def test_run_killed_while_writing_results_leaves_the_old_file(reference, tmp_pat
     _, out = _finished_copy(reference, tmp_path)
     csv = out / "results.csv"
     old = csv.read_bytes()
-    code = ("import sys, time\nfrom axisopt.report import atomic_file\n"
-            "with atomic_file(sys.argv[1]) as fh:\n"
-            "    fh.write('case_id,index\\n' * 5000); fh.flush()\n"
-            "    print('half written', flush=True); time.sleep(60)\n")
-    proc = subprocess.Popen([PYTHON, "-c", code, str(csv)], cwd=ROOT, stdout=subprocess.PIPE, text=True)
+    code = (
+        "import sys, time\nfrom axisopt.report import atomic_file\n"
+        "with atomic_file(sys.argv[1]) as fh:\n"
+        "    fh.write('case_id,index\\n' * 5000); fh.flush()\n"
+        "    print('half written', flush=True); time.sleep(60)\n"
+    )
+    proc = subprocess.Popen(
+        [PYTHON, "-c", code, str(csv)], cwd=ROOT, stdout=subprocess.PIPE, text=True
+    )
     try:
         assert proc.stdout.readline().strip() == "half written"
         proc.kill()
@@ -97,12 +106,22 @@ def test_run_killed_while_writing_results_leaves_the_old_file(reference, tmp_pat
 
 # ------------------------------------------------------------------------- full disk, permissions
 
+
 @LINUX_PROC
-@pytest.mark.parametrize("name, code", [
-    ("results.csv", errno.ENOSPC), ("results.parquet", errno.ENOSPC), ("report.md", errno.EACCES),
-    ("study.json", errno.ENOSPC), ("tradeoff_cost_stiffness.png", errno.ENOSPC), ("case", errno.ENOSPC),
-])
-def test_full_disk_or_no_permission_is_aone_line_error(reference, tmp_path, monkeypatch, capsys, name, code):
+@pytest.mark.parametrize(
+    "name, code",
+    [
+        ("results.csv", errno.ENOSPC),
+        ("results.parquet", errno.ENOSPC),
+        ("report.md", errno.EACCES),
+        ("study.json", errno.ENOSPC),
+        ("tradeoff_cost_stiffness.png", errno.ENOSPC),
+        ("case", errno.ENOSPC),
+    ],
+)
+def test_full_disk_or_no_permission_is_aone_line_error(
+    reference, tmp_path, monkeypatch, capsys, name, code
+):
     if name.endswith(".parquet"):
         pytest.importorskip("pyarrow")  # written only with the 'parquet' extra
     src, out = _finished_copy(reference, tmp_path)
@@ -122,7 +141,9 @@ def test_full_disk_or_no_permission_is_aone_line_error(reference, tmp_path, monk
         monkeypatch.undo()
         s = run_study(reference[0], out, workers=0, resume=True, report=False)
         assert s.solved == 1
-        pd.testing.assert_frame_equal(stable(results_table(reference[0], out)), stable(reference[2]))
+        pd.testing.assert_frame_equal(
+            stable(results_table(reference[0], out)), stable(reference[2])
+        )
 
 
 @LINUX_PROC
@@ -148,7 +169,9 @@ def test_unwritable_study_directory_is_aone_line_error(reference, tmp_path, caps
     assert str(out) in line and "Permission denied" in line
 
 
-@pytest.mark.parametrize("name, make", [("results.csv", "dir"), ("plots", "file"), ("report.md", "dir")])
+@pytest.mark.parametrize(
+    "name, make", [("results.csv", "dir"), ("plots", "file"), ("report.md", "dir")]
+)
 def test_output_of_the_wrong_kind_is_aone_line_error(reference, tmp_path, capsys, name, make):
     src, out = _finished_copy(reference, tmp_path)
     p = out / name
@@ -167,6 +190,7 @@ def test_output_of_the_wrong_kind_is_aone_line_error(reference, tmp_path, capsys
 
 # --------------------------------------------------------------------------------------- lock
 
+
 def test_second_run_on_the_same_directory_is_refused(reference, tmp_path, capsys):
     src, out = _finished_copy(reference, tmp_path)
     with StudyLock(out):  # a run in progress (this process)
@@ -183,6 +207,7 @@ def test_second_run_on_the_same_directory_is_refused(reference, tmp_path, capsys
 
 # ------------------------------------------------------------------------------ dead pool workers
 
+
 def _first_cases(ref, st):
     """The reference rows of a study cut to fewer cases (the same cases: the same ids)."""
     ids = [c.case_id for c in st.cases]
@@ -190,7 +215,9 @@ def _first_cases(ref, st):
     return ref[ref["case_id"].isin(ids)].reset_index(drop=True)
 
 
-def test_only_the_case_a_dead_worker_was_running_is_charged(reference, tmp_path, monkeypatch, capsys):
+def test_only_the_case_a_dead_worker_was_running_is_charged(
+    reference, tmp_path, monkeypatch, capsys
+):
     """Of 8 cases on 2 workers, case 3 kills its worker on the first try, case 5 on every try: 3 deaths while
     other cases wait or run on the other worker.  Only case 5 is given up (worker_died), the run exits 1 with
     a one-line note, and --resume solves it again and says so."""
@@ -205,13 +232,19 @@ def test_only_the_case_a_dead_worker_was_running_is_charged(reference, tmp_path,
     assert main(["study", str(src), "--out", str(out), "--workers", "2", "--quiet"]) == 1
     cap = capsys.readouterr()
     note = cap.err.strip().splitlines()
-    assert len(note) == 1 and note[0].startswith("note: 1 case not solved") and "worker_died" in note[0]
+    assert (
+        len(note) == 1
+        and note[0].startswith("note: 1 case not solved")
+        and "worker_died" in note[0]
+    )
     assert "--resume" in note[0]
     assert (tmp_path / "crashed-3").exists()
     df = results_table(st, out)
     died = df[df["status"] == "worker_died"]
     assert list(died["index"]) == [5] and "died 2 times" in died["reason"].iloc[0]
-    pd.testing.assert_frame_equal(stable(df[df["index"] != 5]), stable(ref[ref["index"] != 5]), check_dtype=False)
+    pd.testing.assert_frame_equal(
+        stable(df[df["index"] != 5]), stable(ref[ref["index"] != 5]), check_dtype=False
+    )
     assert "worker_died" in (out / "report.md").read_text(encoding="utf-8")
     monkeypatch.undo()
     assert _resume(src, out) == _study_code(ref)
@@ -220,18 +253,29 @@ def test_only_the_case_a_dead_worker_was_running_is_charged(reference, tmp_path,
     pd.testing.assert_frame_equal(stable(results_table(st, out)), stable(ref))
 
 
-@pytest.mark.parametrize("status, reason", [
-    ("worker_died", "the worker process died 2 times while solving this case (last: killed by SIGKILL)"),
-    ("error", "worker process died twice while solving this case"),  # as versions before worker_died wrote it
-])
-def test_resume_solves_again_the_cases_lost_to_dead_workers(reference, tmp_path, capsys, status, reason):
+@pytest.mark.parametrize(
+    "status, reason",
+    [
+        (
+            "worker_died",
+            "the worker process died 2 times while solving this case (last: killed by SIGKILL)",
+        ),
+        # as versions before worker_died wrote it
+        ("error", "worker process died twice while solving this case"),
+    ],
+)
+def test_resume_solves_again_the_cases_lost_to_dead_workers(
+    reference, tmp_path, capsys, status, reason
+):
     st, _, ref = reference
     src, out = _finished_copy(reference, tmp_path)
     for p in sorted((out / "cases").glob("*.json"))[2:4]:
         rec = json.loads(p.read_text(encoding="utf-8"))
         keep = {k: rec[k] for k in ("version", "case_id", "index", "inputs")}
-        p.write_text(json.dumps({**keep, "status": status, "reason": reason, "time_s": 0.0, "worker": ""}),
-                     encoding="utf-8")
+        p.write_text(
+            json.dumps({**keep, "status": status, "reason": reason, "time_s": 0.0, "worker": ""}),
+            encoding="utf-8",
+        )
     s = run_study(st, out, workers=0, resume=True, report=False)
     assert s.solved == 2 and s.redone == 2 and s.resumed == 14
     pd.testing.assert_frame_equal(stable(results_table(st, out)), stable(ref))
@@ -249,13 +293,27 @@ def _wait_for(cond, proc, what, timeout=60.0):
 
 
 @pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
-def test_two_dead_workers_and_a_killed_run_resume_to_the_uninterrupted_rows(reference, tmp_path, capsys):
+def test_two_dead_workers_and_a_killed_run_resume_to_the_uninterrupted_rows(
+    reference, tmp_path, capsys
+):
     st, _, ref = reference
     src = copy_study(tmp_path)
     out = tmp_path / "out"
-    cmd = [PYTHON, "-m", "axisopt", "study", str(src), "--out", str(out), "--workers", "2", "--quiet"]
-    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                            start_new_session=True)
+    cmd = [
+        PYTHON,
+        "-m",
+        "axisopt",
+        "study",
+        str(src),
+        "--out",
+        str(out),
+        "--workers",
+        "2",
+        "--quiet",
+    ]
+    proc = subprocess.Popen(
+        cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True
+    )
 
     def finished():
         return len(list((out / "cases").glob("*.json")))
@@ -263,7 +321,9 @@ def test_two_dead_workers_and_a_killed_run_resume_to_the_uninterrupted_rows(refe
     killed = []
     try:
         for n in (1, 3):  # kill -9 a worker after 1 finished case, another one after 3
-            pid = _wait_for(lambda n=n: finished() >= n and worker_pid(out, killed), proc, f"{n} cases")
+            pid = _wait_for(
+                lambda n=n: finished() >= n and worker_pid(out, killed), proc, f"{n} cases"
+            )
             os.kill(pid, signal.SIGKILL)
             killed.append(pid)
         # meanwhile a second run on the same directory is refused
@@ -277,7 +337,9 @@ def test_two_dead_workers_and_a_killed_run_resume_to_the_uninterrupted_rows(refe
     assert 5 <= len(recs) < 16
     # two deaths charge at most one case twice: the waiting cases were never charged
     assert sum(r["status"] == "worker_died" for r in recs) <= 1
-    assert main(["study", str(src), "--out", str(out), "--workers", "2", "--quiet", "--resume"]) == _study_code(ref)
+    assert main(
+        ["study", str(src), "--out", str(out), "--workers", "2", "--quiet", "--resume"]
+    ) == _study_code(ref)
     pd.testing.assert_frame_equal(stable(results_table(st, out)), stable(ref))
     assert not (out / ".lock").exists() and _temporaries(out) == []
 
@@ -287,10 +349,19 @@ def test_dask_worker_killed_mid_study_gives_the_uninterrupted_rows(reference, tm
     st = load_study(copy_study(tmp_path, n=8))
     ref = _first_cases(reference[2], st)
     out = tmp_path / "out"
-    # ":0": the scheduler's HTTP server on a free port, not on 8787 that another cluster may hold (a test on another
+    # ":0": the scheduler's HTTP server on a free port, not on 8787 that another cluster may hold (a
+    # test on another
     # pytest-xdist worker, another run on the machine; Dask then warns, an error here)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0",
-                                  silence_logs=50) as cluster, distributed.Client(cluster) as client:
+    with (
+        distributed.LocalCluster(
+            n_workers=2,
+            threads_per_worker=1,
+            processes=True,
+            dashboard_address=":0",
+            silence_logs=50,
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
         victim = sorted(client.run(os.getpid).values())[0]
         killed = []
 

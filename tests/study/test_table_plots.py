@@ -12,8 +12,10 @@ import axisopt.study.plots as table
 
 
 def _study():
-    sweeps = [SimpleNamespace(key="axis.stroke", values=["500 mm", "800 mm", "1100 mm"]),
-              SimpleNamespace(key="limits.max_cost", values=["4000 EUR", "6000 EUR"])]
+    sweeps = [
+        SimpleNamespace(key="axis.stroke", values=["500 mm", "800 mm", "1100 mm"]),
+        SimpleNamespace(key="limits.max_cost", values=["4000 EUR", "6000 EUR"]),
+    ]
     return SimpleNamespace(name="s", sweeps=sweeps, cases=[])
 
 
@@ -23,11 +25,19 @@ def _frame():
     for stroke in (500.0, 800.0, 1100.0):
         for cost in (4000.0, 6000.0):
             infeasible = stroke == 1100.0 and cost == 4000.0
-            rows.append({"axis.stroke [mm]": stroke, "limits.max_cost [EUR]": cost, "mounting": "fixed-fixed",
-                         "status": "infeasible" if infeasible else "optimal",
-                         "min_stiffness [N/um]": np.nan if infeasible else 300 - stroke / 10 + cost / 100,
-                         "min_frequency [Hz]": np.nan if infeasible else 200 - stroke / 20,
-                         "cost [EUR]": np.nan if infeasible else cost - rng.uniform(0, 500)})
+            rows.append(
+                {
+                    "axis.stroke [mm]": stroke,
+                    "limits.max_cost [EUR]": cost,
+                    "mounting": "fixed-fixed",
+                    "status": "infeasible" if infeasible else "optimal",
+                    "min_stiffness [N/um]": np.nan
+                    if infeasible
+                    else 300 - stroke / 10 + cost / 100,
+                    "min_frequency [Hz]": np.nan if infeasible else 200 - stroke / 20,
+                    "cost [EUR]": np.nan if infeasible else cost - rng.uniform(0, 500),
+                }
+            )
     return pd.DataFrame(rows)
 
 
@@ -58,8 +68,11 @@ def test_lines_against_stroke_hold_the_other_input_fixed(monkeypatch, tmp_path):
         assert label.startswith("max_cost = ") and label.endswith(" EUR")  # the input with its unit
         cost = float(label.split("=")[1].split()[0])
         want = ok[ok["limits.max_cost [EUR]"] == cost].sort_values("axis.stroke [mm]")
-        assert np.allclose(x, want["axis.stroke [mm]"]) and np.allclose(y, want["min_stiffness [N/um]"])
-    # a case without a design has no value: its input is shaded across the panel, never drawn as a zero
+        assert np.allclose(x, want["axis.stroke [mm]"]) and np.allclose(
+            y, want["min_stiffness [N/um]"]
+        )
+    # a case without a design has no value: its input is shaded across the panel, never drawn as a
+    # zero
     assert len(shaded) == 1 and list(shaded[0].get_xdata()) == [1100.0, 1100.0]
     assert list(shaded[0].get_ydata()) == [0, 1] and "infeasible" in shaded[0].get_label()
     assert all(np.all(np.asarray(ln.get_ydata(), float) > 0) for ln in lines)
@@ -87,7 +100,9 @@ def test_many_inputs_without_a_design_are_a_rug_not_bands(monkeypatch, tmp_path)
     extra["axis.stroke [mm]"] = rng.uniform(500, 1500, 30)
     df = pd.concat([df, extra], ignore_index=True)
     figs = {}
-    monkeypatch.setattr(table, "save_figure", lambda fig, path, dpi=110: figs.__setitem__(path.name, fig))
+    monkeypatch.setattr(
+        table, "save_figure", lambda fig, path, dpi=110: figs.__setitem__(path.name, fig)
+    )
     table.summary_plots(_study(), df, tmp_path / "plots", tmp_path)
     ax = figs["best_vs_axis_stroke.png"].axes[0]
     red = [ln for ln in ax.get_lines() if ln.get_color() == "tab:red"]

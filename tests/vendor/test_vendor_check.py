@@ -25,55 +25,114 @@ ROOT = Path(__file__).resolve().parents[2]
 TOLERANCE = 0.02
 # (file, check) -> (tolerance, why).  `None` as file: every file.
 WIDER = {
-    (None, "buckling"): (0.035, "HIWIN's F 3.25 constant 0.5 x 4.072e5 = 2.036e5 against THK's 2e5 (A-694 eq. 6), "
-                                "which axisopt applies to every screw: +1.8 %; and axisopt's viscous guide friction "
-                                "in the load"),
-    ("teaching_design", "critical speed"): (0.08, "fixed-free: HIWIN's f_n 0.147 (F 3.27) is 6.3 % below THK's "
-                                                  "lambda_2 3.4 (A-696), which axisopt applies"),
-    ("laser_problem", "buckling"): (0.04, "as every file's buckling row, with axisopt's viscous guide friction at "
-                                          "80 m/min in the load (+1.8 % more)"),
-    ("lathe_z_problem", "tensile/compressive load"): (0.03, "the pretension: the checker takes THK's 12e-6/K "
-                                                            "(A-715) for the Rexroth shaft, axisopt HIWIN's "
-                                                            "11.6e-6/K for every screw (3.4 % on the pretension)"),
-    ("lathe_z_problem", "support bearing static"): (0.03, "the same pretension difference on the set's load"),
-    ("lathe_z_problem", "thermal pretension"): (0.04, "THK's 12e-6/K (checker) against HIWIN's 11.6e-6/K (axisopt) "
-                                                      "for the Rexroth shaft: 3.4 %"),
-    ("lathe_z_belt_problem", "tensile/compressive load"): (0.03, "as lathe_z_problem: 12e-6/K against "
-                                                                 "11.6e-6/K on the Rexroth shaft's pretension"),
+    (None, "buckling"): (
+        0.035,
+        "HIWIN's F 3.25 constant 0.5 x 4.072e5 = 2.036e5 against THK's 2e5 (A-694 eq. 6), "
+        "which axisopt applies to every screw: +1.8 %; and axisopt's viscous guide friction "
+        "in the load",
+    ),
+    ("teaching_design", "critical speed"): (
+        0.08,
+        "fixed-free: HIWIN's f_n 0.147 (F 3.27) is 6.3 % below THK's "
+        "lambda_2 3.4 (A-696), which axisopt applies",
+    ),
+    ("laser_problem", "buckling"): (
+        0.04,
+        "as every file's buckling row, with axisopt's viscous guide friction at "
+        "80 m/min in the load (+1.8 % more)",
+    ),
+    ("lathe_z_problem", "tensile/compressive load"): (
+        0.03,
+        "the pretension: the checker takes THK's 12e-6/K "
+        "(A-715) for the Rexroth shaft, axisopt HIWIN's "
+        "11.6e-6/K for every screw (3.4 % on the pretension)",
+    ),
+    ("lathe_z_problem", "support bearing static"): (
+        0.03,
+        "the same pretension difference on the set's load",
+    ),
+    ("lathe_z_problem", "thermal pretension"): (
+        0.04,
+        "THK's 12e-6/K (checker) against HIWIN's 11.6e-6/K (axisopt) for the Rexroth shaft: 3.4 %",
+    ),
+    ("lathe_z_belt_problem", "tensile/compressive load"): (
+        0.03,
+        "as lathe_z_problem: 12e-6/K against 11.6e-6/K on the Rexroth shaft's pretension",
+    ),
     ("lathe_z_belt_problem", "thermal pretension"): (0.04, "as lathe_z_problem"),
-    ("boring_table_problem", "buckling"): (1.0, "axisopt's compression adds what the heat balance's rise (3.7 K) "
-                                                "beyond the pretension's design rise (2 K) pushes into the screw; "
-                                                "the checker takes the feed force: both margins above 7"),
-    ("boring_table_problem", "thermal pretension"): (0.04, "THK's 12e-6/K against HIWIN's 11.6e-6/K"),
-    ("laser_problem", "guide L10 travel"): (0.06, "the same trapezoidal against jerk-limited moves on the blocks' "
-                                                  "cubic mean load: 4.5 %"),
-    ("laser_problem", "nut L10 life"): (0.07, "the checker's moves are trapezoidal, axisopt's jerk-limited (300 "
-                                              "m/s^3: 50 ms ramps to 15 m/s^2 carry less inertia load): 6 %"),
-    ("vmc_x_problem", "nut L10 life"): (0.05, "axisopt adds the roller blocks' viscous friction at rapid speed "
-                                              "(39 N.s/m x 4 blocks) to the life loads; THK's f is constant"),
-    ("vertical_counterweight_problem", "buckling"): (0.06, "as every file's buckling row, and axisopt prints a "
-                                                           "margin above 1000 as 1000 (the checker's is 1057)"),
-    ("highspeed_problem", "guide L10 travel"): (0.08, "the most loaded block's mean load differs by 2 % (the "
-                                                      "checker's rigid-table statics with the screw at the rail "
-                                                      "plane against axisopt's carriage model)"),
+    ("boring_table_problem", "buckling"): (
+        1.0,
+        "axisopt's compression adds what the heat balance's rise (3.7 K) "
+        "beyond the pretension's design rise (2 K) pushes into the screw; "
+        "the checker takes the feed force: both margins above 7",
+    ),
+    ("boring_table_problem", "thermal pretension"): (
+        0.04,
+        "THK's 12e-6/K against HIWIN's 11.6e-6/K",
+    ),
+    ("laser_problem", "guide L10 travel"): (
+        0.06,
+        "the same trapezoidal against jerk-limited moves on the blocks' cubic mean load: 4.5 %",
+    ),
+    ("laser_problem", "nut L10 life"): (
+        0.07,
+        "the checker's moves are trapezoidal, axisopt's jerk-limited (300 "
+        "m/s^3: 50 ms ramps to 15 m/s^2 carry less inertia load): 6 %",
+    ),
+    ("vmc_x_problem", "nut L10 life"): (
+        0.05,
+        "axisopt adds the roller blocks' viscous friction at rapid speed "
+        "(39 N.s/m x 4 blocks) to the life loads; THK's f is constant",
+    ),
+    ("vertical_counterweight_problem", "buckling"): (
+        0.06,
+        "as every file's buckling row, and axisopt prints a "
+        "margin above 1000 as 1000 (the checker's is 1057)",
+    ),
+    ("highspeed_problem", "guide L10 travel"): (
+        0.08,
+        "the most loaded block's mean load differs by 2 % (the "
+        "checker's rigid-table statics with the screw at the rail "
+        "plane against axisopt's carriage model)",
+    ),
 }
-# where the vendor's criterion fails (checker's computation), the checks that fail: the teaching design is a
-# lesson, not an optimum, and axisopt's own checks fail it on the same two lives (and its bearing bore, which
+# where the vendor's criterion fails (checker's computation), the checks that fail: the teaching
+# design is a
+# lesson, not an optimum, and axisopt's own checks fail it on the same two lives (and its bearing
+# bore, which
 # this checker does not compute)
-KNOWN_FAILS = {"teaching_design": {"nut L10 life", "support bearing L10 life"},
-               # issue 54's boring table on NSK 3-against-1 sets: IBC's Table 2.2 read per bearing (the i^-0.7
-               # load of each of the three rows, then eq. 2.39 over the three) gives 15 300 h; the bearing
-               # maker's own three-row rating with an exact Hertz split at the worse end 27 700 h (the row
-               # "support bearing L10 life (NSK ratings)", which passes); axisopt 20 000 h
-               "boring_table_problem": {"support bearing L10 life"},
-               # the same reading on the twin gantry, whose optimum moved onto NSK 50TAC100B-DFT-C10 sets with the
-               # belt stages (issue 54): IBC per bearing 7 534 h, NSK's three-row rating 14 183 h (passes), axisopt
-               # 11 134 h, against 10 000 h
-               "gantry_twin_problem": {"support bearing L10 life"}}
-FILES = ["teaching_problem", "highspeed_problem", "gantry_problem", "vertical_problem", "vmc_x_problem",
-         "duty_cycle_problem", "teaching_design", "vmc_x_design", "boring_mill_problem", "laser_problem",
-         "lathe_z_problem", "vertical_counterweight_problem", "gantry_twin_problem",
-         "vertical_z600_problem", "lathe_z_belt_problem", "boring_table_problem"]
+KNOWN_FAILS = {
+    "teaching_design": {"nut L10 life", "support bearing L10 life"},
+    # issue 54's boring table on NSK 3-against-1 sets: IBC's Table 2.2 read per bearing (the i^-0.7
+    # load of each of the three rows, then eq. 2.39 over the three) gives 15 300 h; the bearing
+    # maker's own three-row rating with an exact Hertz split at the worse end 27 700 h (the row
+    # "support bearing L10 life (NSK ratings)", which passes); axisopt 20 000 h
+    "boring_table_problem": {"support bearing L10 life"},
+    # the same reading on the twin gantry, whose optimum moved onto NSK 50TAC100B-DFT-C10 sets with
+    # the
+    # belt stages (issue 54): IBC per bearing 7 534 h, NSK's three-row rating 14 183 h (passes),
+    # axisopt
+    # 11 134 h, against 10 000 h
+    "gantry_twin_problem": {"support bearing L10 life"},
+}
+FILES = [
+    "teaching_problem",
+    "highspeed_problem",
+    "gantry_problem",
+    "vertical_problem",
+    "vmc_x_problem",
+    "duty_cycle_problem",
+    "teaching_design",
+    "vmc_x_design",
+    "boring_mill_problem",
+    "laser_problem",
+    "lathe_z_problem",
+    "vertical_counterweight_problem",
+    "gantry_twin_problem",
+    "vertical_z600_problem",
+    "lathe_z_belt_problem",
+    "boring_table_problem",
+]
 _CACHE: dict = {}
 
 
@@ -82,8 +141,20 @@ def rows(name: str, tmp_path_factory) -> list[dict]:
     if name not in _CACHE:
         out = tmp_path_factory.mktemp("vendor") / f"{name}.json"
         env = dict(os.environ, PYTHONPATH=str(ROOT))
-        subprocess.run([sys.executable, str(ROOT / "tools" / "vendor_check.py"), f"problems/{name}.yaml",
-                        "--json", str(out)], cwd=ROOT, env=env, check=True, capture_output=True, text=True)
+        subprocess.run(
+            [
+                sys.executable,
+                str(ROOT / "tools" / "vendor_check.py"),
+                f"problems/{name}.yaml",
+                "--json",
+                str(out),
+            ],
+            cwd=ROOT,
+            env=env,
+            check=True,
+            capture_output=True,
+            text=True,
+        )
         _CACHE[name] = json.loads(out.read_text(encoding="utf-8"))
     return _CACHE[name]
 
@@ -103,7 +174,9 @@ def _compared(r: dict) -> tuple[float, float] | None:
 @pytest.mark.parametrize("name", FILES)
 def test_vendor_criterion(name, tmp_path_factory):
     failed = {r["check"] for r in rows(name, tmp_path_factory) if not r["passes"]}
-    assert failed == KNOWN_FAILS.get(name, set()), f"{name}: the vendor's procedure fails {sorted(failed)}"
+    assert failed == KNOWN_FAILS.get(name, set()), (
+        f"{name}: the vendor's procedure fails {sorted(failed)}"
+    )
 
 
 @pytest.mark.parametrize("name", FILES)
@@ -120,26 +193,48 @@ def test_agrees_with_axisopt_where_same_method(name, tmp_path_factory):
 
 
 def test_fixed_fixed_pretension_and_tension(tmp_path):
-    # no shipped optimum is fixed-fixed: the VMC design mounted fixed-fixed exercises the pretension path
+    # no shipped optimum is fixed-fixed: the VMC design mounted fixed-fixed exercises the pretension
+    # path
     design = tmp_path / "ff.yaml"
-    design.write_text((ROOT / "problems" / "vmc_x_design.yaml").read_text(encoding="utf-8").replace(
-        "mounting: fixed-supported", "mounting: fixed-fixed"), encoding="utf-8")
+    design.write_text(
+        (ROOT / "problems" / "vmc_x_design.yaml")
+        .read_text(encoding="utf-8")
+        .replace("mounting: fixed-supported", "mounting: fixed-fixed"),
+        encoding="utf-8",
+    )
     out = tmp_path / "ff.json"
-    subprocess.run([sys.executable, str(ROOT / "tools" / "vendor_check.py"), str(design), "--json", str(out)],
-                   cwd=ROOT, env=dict(os.environ, PYTHONPATH=str(ROOT)), check=True, capture_output=True)
+    subprocess.run(
+        [sys.executable, str(ROOT / "tools" / "vendor_check.py"), str(design), "--json", str(out)],
+        cwd=ROOT,
+        env=dict(os.environ, PYTHONPATH=str(ROOT)),
+        check=True,
+        capture_output=True,
+    )
     by = {r["check"]: r for r in json.loads(out.read_text(encoding="utf-8"))}
     pre = by["thermal pretension"]
     # 3 K (THK A-715: 2-5 K) on the root section, alpha 11.6e-6/K for a HIWIN shaft (H-BS F 3.36)
     assert pre["vendor"] == pytest.approx(pre["axisopt"], rel=TOLERANCE)
-    assert by["tensile/compressive load"]["limit"] > by["buckling"]["limit"]  # the pretension counts in tension
+    # the pretension counts in tension
+    assert by["tensile/compressive load"]["limit"] > by["buckling"]["limit"]
 
 
 def test_teaching_optimum_every_check_present(tmp_path_factory):
     names = {r["check"] for r in rows("teaching_problem", tmp_path_factory)}
-    assert {"critical speed", "DN value", "buckling", "tensile/compressive load", "nut L10 life",
-            "support bearing L10 life", "support bearing static", "guide L10 travel", "nut static safety C0a/Famax",
-            "guide static safety C0/P", "axial rigidity (screw, nut, bearing, K_H)", "inertia ratio load/rotor",
-            "RMS torque"} <= names
+    assert {
+        "critical speed",
+        "DN value",
+        "buckling",
+        "tensile/compressive load",
+        "nut L10 life",
+        "support bearing L10 life",
+        "support bearing static",
+        "guide L10 travel",
+        "nut static safety C0a/Famax",
+        "guide static safety C0/P",
+        "axial rigidity (screw, nut, bearing, K_H)",
+        "inertia ratio load/rotor",
+        "RMS torque",
+    } <= names
 
 
 def test_checker_imports_nothing_of_axisopt():
@@ -150,13 +245,24 @@ def test_checker_imports_nothing_of_axisopt():
         assert not [m for m in names if m.split(".")[0] == "axisopt"], path
 
 
-COLUMNS = {"teaching_problem": "teaching", "highspeed_problem": "highspeed", "gantry_problem": "gantry",
-           "vertical_problem": "vertical", "vmc_x_problem": "vmc_x", "duty_cycle_problem": "duty_cycle",
-           "teaching_design": "teaching design", "vmc_x_design": "vmc_x design", "boring_mill_problem": "boring mill",
-           "laser_problem": "laser", "lathe_z_problem": "lathe Z",
-           "vertical_counterweight_problem": "vertical counterweight", "gantry_twin_problem": "twin gantry",
-           "vertical_z600_problem": "Z 600 kg", "lathe_z_belt_problem": "lathe Z belt",
-           "boring_table_problem": "boring table"}
+COLUMNS = {
+    "teaching_problem": "teaching",
+    "highspeed_problem": "highspeed",
+    "gantry_problem": "gantry",
+    "vertical_problem": "vertical",
+    "vmc_x_problem": "vmc_x",
+    "duty_cycle_problem": "duty_cycle",
+    "teaching_design": "teaching design",
+    "vmc_x_design": "vmc_x design",
+    "boring_mill_problem": "boring mill",
+    "laser_problem": "laser",
+    "lathe_z_problem": "lathe Z",
+    "vertical_counterweight_problem": "vertical counterweight",
+    "gantry_twin_problem": "twin gantry",
+    "vertical_z600_problem": "Z 600 kg",
+    "lathe_z_belt_problem": "lathe Z belt",
+    "boring_table_problem": "boring table",
+}
 
 
 def test_docs_results_table_is_what_the_checker_prints(tmp_path_factory):

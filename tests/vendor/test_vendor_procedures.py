@@ -27,24 +27,32 @@ def _life_mean_load(phases, c=1000.0):
 
 @pytest.mark.published
 def test_buckling_and_tension_thk_a726():
-    # THK General Catalog A-726: d1 17.5 mm, l_a 1100 mm, eta_2 20 -> P1 = 15 500 N; P2 = 116 d1^2 = 35 500 N
+    # THK General Catalog A-726: d1 17.5 mm, l_a 1100 mm, eta_2 20 -> P1 = 15 500 N; P2 = 116 d1^2 =
+    # 35 500 N
     assert vp.buckling_load("THK", 17.5, 1100.0)[0] == pytest.approx(15500, rel=5e-3)
     assert vp.permissible_tension(17.5) == pytest.approx(35500, rel=5e-3)
 
 
 @pytest.mark.published
-@pytest.mark.parametrize("d1, lb, printed", [(17.5, 1100.0, 2180), (26.4, 1100.0, 3294), (12.5, 700.0, 3852)])
+@pytest.mark.parametrize(
+    "d1, lb, printed", [(17.5, 1100.0, 2180), (26.4, 1100.0, 3294), (12.5, 700.0, 3852)]
+)
 def test_critical_speed_thk_a727_a738(d1, lb, printed):
-    # THK A-727 (fixed-supported, lambda_2 15.1): 2180 and 3294 min^-1; A-738 (vertical example): 3852 min^-1
+    # THK A-727 (fixed-supported, lambda_2 15.1): 2180 and 3294 min^-1; A-738 (vertical example):
+    # 3852 min^-1
     assert vp.critical_speed("THK", d1, lb, "fixed-supported")[0] == pytest.approx(printed, abs=5.0)
 
 
 @pytest.mark.published
 def test_critical_speed_hiwin_factors_match_thk_within_their_rounding():
-    # H-BS F 3.27/3.28 (0.8 x 2.71e8 x f_n) against THK's lambda_2 (A-696): fixed-supported 15.00 vs 15.1,
+    # H-BS F 3.27/3.28 (0.8 x 2.71e8 x f_n) against THK's lambda_2 (A-696): fixed-supported 15.00 vs
+    # 15.1,
     # fixed-fixed 21.68 vs 21.9 (1 %); fixed-free 3.19 vs 3.4 (HIWIN 6 % lower: its f_n 0.147)
-    ratio = {m: vp.critical_speed("HIWIN", 30.0, 800.0, m)[0] / vp.critical_speed("THK", 30.0, 800.0, m)[0]
-             for m in ("fixed-supported", "fixed-fixed", "fixed-free")}
+    ratio = {
+        m: vp.critical_speed("HIWIN", 30.0, 800.0, m)[0]
+        / vp.critical_speed("THK", 30.0, 800.0, m)[0]
+        for m in ("fixed-supported", "fixed-fixed", "fixed-free")
+    }
     assert ratio["fixed-supported"] == pytest.approx(0.9936, abs=1e-3)
     assert ratio["fixed-fixed"] == pytest.approx(0.9900, abs=1e-3)
     assert ratio["fixed-free"] == pytest.approx(0.9374, abs=1e-3)
@@ -52,8 +60,12 @@ def test_critical_speed_hiwin_factors_match_thk_within_their_rounding():
 
 @pytest.mark.published
 def test_mean_load_sign_rule_thk_a706():
-    # THK A-706: loads 10, 50, -40, -10 N over 10, 50, 10, 70 mm -> Fm1 = 35.5 N (adopted), Fm2 = 17.2 N
-    phases = [vp.Phase(d / 1e3, 1.0, 1.0, 0.0, 1, 0.0, f) for f, d in ((10, 10), (50, 50), (-40, 10), (-10, 70))]
+    # THK A-706: loads 10, 50, -40, -10 N over 10, 50, 10, 70 mm -> Fm1 = 35.5 N (adopted), Fm2 =
+    # 17.2 N
+    phases = [
+        vp.Phase(d / 1e3, 1.0, 1.0, 0.0, 1, 0.0, f)
+        for f, d in ((10, 10), (50, 50), (-40, 10), (-10, 70))
+    ]
     assert _life_mean_load(phases) == pytest.approx(35.5, abs=0.05)
 
 
@@ -67,11 +79,13 @@ def _horizontal_thk_a722():
 @pytest.mark.published
 def test_horizontal_example_phase_loads_and_life_thk_a725_a730():
     phases = _horizontal_thk_a722()
-    # A-725: Fa1..Fa6 = 550, 17, -516, -550, -17, 516 N (THK prints 550 for 550.7: within 1 N); A-728: travels
+    # A-725: Fa1..Fa6 = 550, 17, -516, -550, -17, 516 N (THK prints 550 for 550.7: within 1 N);
+    # A-728: travels
     # 75, 850, 75 mm
     assert [p.load for p in phases] == pytest.approx([550, 17, -516, -550, -17, 516], abs=1.0)
     assert [round(p.dist * 1e3) for p in phases[:3]] == [75, 850, 75]
-    # A-729: Fm = 225 N; WTF2040-2 (Ca 5400 N), fW 1.5: L = 4.1e9 rev; A-730: Nm = 400 min^-1, Lh = 171 000 h
+    # A-729: Fm = 225 N; WTF2040-2 (Ca 5400 N), fW 1.5: L = 4.1e9 rev; A-730: Nm = 400 min^-1, Lh =
+    # 171 000 h
     assert _life_mean_load(phases) == pytest.approx(225, abs=0.5)
     assert vp.nut_life_h(5400.0, 0.0, phases, 1.5, 400.0)[0] == pytest.approx(171000, rel=5e-3)
 
@@ -91,7 +105,8 @@ def test_vertical_example_phase_loads_and_life_thk_a739_a742():
 
 @pytest.mark.published
 def test_holding_torque_thk_a745():
-    # THK A-745: stationary with the work removed (m1 40 kg), f 20 N, Ph 10 mm, eta 0.9: T_s = 658 N.mm
+    # THK A-745: stationary with the work removed (m1 40 kg), f 20 N, Ph 10 mm, eta 0.9: T_s = 658
+    # N.mm
     assert vp.holding_torque(40 * G_THK, 20.0, 0.010) == pytest.approx(0.658, abs=5e-4)
 
 
@@ -110,7 +125,8 @@ def test_screw_inertia_thk_a733():
 
 @pytest.mark.published
 def test_guide_life_iko_i21():
-    # IKO CAT-1578E p. I-21/22: MXG45 roller C 124 000 N, MHG45 ball C 95 200 N, P 10 000 N, 50 km basis:
+    # IKO CAT-1578E p. I-21/22: MXG45 roller C 124 000 N, MHG45 ball C 95 200 N, P 10 000 N, 50 km
+    # basis:
     # 220 000 km and 43 000 km
     assert vp.guide_rating_life(124000.0, 10000.0, "roller", 50) == pytest.approx(220000, rel=5e-3)
     assert vp.guide_rating_life(95200.0, 10000.0, "ball", 50) == pytest.approx(43000, rel=5e-3)
@@ -127,32 +143,43 @@ def test_lift_off_of_preloaded_halves_thk_a687():
 
 @pytest.mark.published
 def test_support_set_rating_and_preload_nsk_25tac62b():
-    # NSK-SP p. 111: 25TAC62B Ca 28.5 kN (1 row), 46.5 kN (2 rows, DFD/DFF): 46.5 / 2^0.7 = 28.6 (0.5 %)
+    # NSK-SP p. 111: 25TAC62B Ca 28.5 kN (1 row), 46.5 kN (2 rows, DFD/DFF): 46.5 / 2^0.7 = 28.6
+    # (0.5 %)
     assert 46.5 / 2**0.7 == pytest.approx(28.5, rel=5e-3)
-    # NSK-SP p. 168, C10: DF 3150 N, DFD 4300 N.  IBC Table 2.2 puts the single bearing of a 2:1 set at 1.36 Fv:
-    # 4300 / 1.36 = 3162 N, the DF pair's preload (0.4 %): the reading of the set preload the checker uses
+    # NSK-SP p. 168, C10: DF 3150 N, DFD 4300 N.  IBC Table 2.2 puts the single bearing of a 2:1 set
+    # at 1.36 Fv:
+    # 4300 / 1.36 = 3162 N, the DF pair's preload (0.4 %): the reading of the set preload the
+    # checker uses
     assert 4300.0 / vp.IBC_SET_PRELOAD[(2, 1)] == pytest.approx(3150.0, rel=5e-3)
 
 
 @pytest.mark.published
 def test_ibc_split_of_a_db_pair_until_and_after_unloading():
-    # IBC TI-I-5010.2/E Table 2.2, eqs. 2.8/2.9: DB pair, A = Fv + 0.67 Fae, B = Fv - 0.33 Fae, unloading at 2.83 Fv
+    # IBC TI-I-5010.2/E Table 2.2, eqs. 2.8/2.9: DB pair, A = Fv + 0.67 Fae, B = Fv - 0.33 Fae,
+    # unloading at 2.83 Fv
     assert vp.ibc_bearing_loads(1, 1, 1000.0, 1500.0) == pytest.approx((2005.0, 505.0))
     assert vp.ibc_bearing_loads(1, 1, 1000.0, 3000.0) == pytest.approx((3000.0, 0.0))
 
 
 def test_block_reactions_thk_rule_for_a_centred_table():
-    # THK's 4-block case (A-16): a vertical load at the centre splits into quarters; an offset one adds
+    # THK's 4-block case (A-16): a vertical load at the centre splits into quarters; an offset one
+    # adds
     # +- M / (2 l0) along the rail and +- M / (2 l1) across the rails
     ax = SimpleNamespace(blocks=4, block_spacing=0.4, rail_spacing=0.3)
     loads = vp.block_reactions(ax, [((0, 0, -4000.0), (0.1, 0.05, 0.0))])
-    expect = [1000 + s1 * 4000 * 0.1 / (2 * 0.4) + s2 * 4000 * 0.05 / (2 * 0.3) for s2 in (-1, 1) for s1 in (-1, 1)]
+    expect = [
+        1000 + s1 * 4000 * 0.1 / (2 * 0.4) + s2 * 4000 * 0.05 / (2 * 0.3)
+        for s2 in (-1, 1)
+        for s1 in (-1, 1)
+    ]
     assert sorted(loads) == pytest.approx(sorted(expect))
     assert math.isclose(sum(loads), 4000.0)
 
 
 @pytest.mark.published
-@pytest.mark.parametrize(("n_load", "n_other", "x"), [(1, 1, 2.83), (2, 1, 5.66), (3, 1, 8.49), (2, 2, 5.66)])
+@pytest.mark.parametrize(
+    ("n_load", "n_other", "x"), [(1, 1, 2.83), (2, 1, 5.66), (3, 1, 8.49), (2, 2, 5.66)]
+)
 def test_hertz_group_split_unloads_at_ibc_table_2_2(n_load, n_other, x):
     """The checker's exact Hertz split (issue 54): the opposite group unloads at IBC Table 2.2's X Fv, Fv the
     bearings' preload as a DB pair (the set's preload over 1, 1.36, 1.57, 2 for 1:1, 2:1, 3:1, 2:2)."""

@@ -29,9 +29,12 @@ class Term:
 
     name: str
     label: str
-    unit: str  # unit kind of the parameter: mass, damping, effort, snap, drag2 (:data:`..timemodel.UNITS`)
-    column: Callable  # (sig, proc, shape) -> the column at full rate; sig holds q, v, a, snap (filtered)
-    simulated: bool = True  # IV instrument from the simulated closed loop; False: the measured column itself
+    # unit kind of the parameter: mass, damping, effort, snap, drag2 (:data:`..timemodel.UNITS`)
+    unit: str
+    # (sig, proc, shape) -> the column at full rate; sig holds q, v, a, snap (filtered)
+    column: Callable
+    # IV instrument from the simulated closed loop; False: the measured column itself
+    simulated: bool = True
 
 
 @dataclass(frozen=True)
@@ -59,17 +62,24 @@ class TimeModel:
     columns: tuple  # Term, in the order they enter the regression
     shape: Shape | None = None
     skip: Callable | None = None  # (ctx) -> why the record cannot show the effect ('' when it can)
-    implausible: Callable | None = None  # (value, fc, fv) -> [texts]: fitted values outside the physical range
-    too_short: Callable | None = None  # (ctx) -> why the run is too short to resolve the effect ('' when it is
-    #                                     not): not tried; an input error when the effect is asked by name
+    # (value, fc, fv) -> [texts]: fitted values outside the physical range
+    implausible: Callable | None = None
+    # (ctx) -> why the run is too short to resolve the effect ('' when it is not): not tried; an
+    # input error when the effect is asked by name
+    too_short: Callable | None = None
     evidence: str = ""  # the measurement that shows this effect apart from the others
-    regime: Callable | None = None  # (top table speed [m/s]) -> why the effect is implausible at such speeds, or ''
-    derived: tuple = ()  # (name, label, unit kind, value -> SI): quantities shown beside the terms (an amplitude)
-    per_run: bool = False  # its columns are one sin, cos pair whose phase is each run's own: a held-out run keeps
-    #                        the amplitude and takes its own phase (:func:`..estimators.predict`)
-    resolved: Callable | None = None  # (value, proc) -> why the record cannot resolve the fitted values ('' none)
-    needs: tuple = ()  # signals (keys of the record's ``sig``: fext, normal, temperature) it needs; a record
-    #                    without them does not list the effect at all
+    # (top table speed [m/s]) -> why the effect is implausible at such speeds, or ''
+    regime: Callable | None = None
+    # (name, label, unit kind, value -> SI): quantities shown beside the terms (an amplitude)
+    derived: tuple = ()
+    # its columns are one sin, cos pair whose phase is each run's own: a held-out run keeps the
+    # amplitude and takes its own phase (:func:`..estimators.predict`)
+    per_run: bool = False
+    # (value, proc) -> why the record cannot resolve the fitted values ('' none)
+    resolved: Callable | None = None
+    # signals (keys of the record's ``sig``: fext, normal, temperature) it needs; a record without
+    # them does not list the effect at all
+    needs: tuple = ()
     name: str = ""  # the effect's name (filled in by register_effect)
 
     @property
@@ -91,7 +101,8 @@ class Effect:
     kinds: tuple = ()
     signature = ""
     needs: tuple = ()  # (kind, column) pairs that must vary for the effect to be testable
-    evidence: str = ""  # for tables: the measurement that shows it apart (time records: ``time.evidence``)
+    # for tables: the measurement that shows it apart (time records: ``time.evidence``)
+    evidence: str = ""
     time: TimeModel | None = None
 
     def applicable(self, ctx) -> bool:
@@ -100,7 +111,9 @@ class Effect:
             return False
         if not self.needs:
             return True
-        return any(o.kind == k and o.dataset.has(col, varying=True) for o in obs for k, col in self.needs)
+        return any(
+            o.kind == k and o.dataset.has(col, varying=True) for o in obs for k, col in self.needs
+        )
 
     def params(self, ctx) -> list:
         raise NotImplementedError
@@ -122,10 +135,23 @@ class Effect:
 
 _REGISTRY: dict[str, Effect] = {}
 
-# The built-in time-record effects in the order they are tried and listed; an effect registered later follows.
-TIME_ORDER = ("direction_asymmetry", "stribeck", "position_friction", "extra_mode", "lead_ripple", "quadratic_drag",
-              "time_periodic", "local_friction", "friction_drift", "nut_axial_friction", "guide_load_friction",
-              "viscous_temperature", "coulomb_temperature")
+# The built-in time-record effects in the order they are tried and listed; an effect registered
+# later follows.
+TIME_ORDER = (
+    "direction_asymmetry",
+    "stribeck",
+    "position_friction",
+    "extra_mode",
+    "lead_ripple",
+    "quadratic_drag",
+    "time_periodic",
+    "local_friction",
+    "friction_drift",
+    "nut_axial_friction",
+    "guide_load_friction",
+    "viscous_temperature",
+    "coulomb_temperature",
+)
 
 
 def register_effect(effect):
@@ -156,7 +182,9 @@ def all_effects() -> MappingProxyType:
 
 def time_effects() -> dict:
     """The time-record declarations (:class:`TimeModel`) by effect name, built-ins in :data:`TIME_ORDER`."""
-    names = [n for n in TIME_ORDER if n in _REGISTRY] + [n for n in _REGISTRY if n not in TIME_ORDER]
+    names = [n for n in TIME_ORDER if n in _REGISTRY] + [
+        n for n in _REGISTRY if n not in TIME_ORDER
+    ]
     return {n: _REGISTRY[n].time for n in names if _REGISTRY[n].time is not None}
 
 

@@ -47,7 +47,8 @@ def golden(f, a: float, b: float, it: int = 22) -> float:
     return (a + b) / 2
 
 
-# ------------------------------------------------------------------------------------------ time-periodic
+# ------------------------------------------------------------------------------------------ time-
+# periodic
 def frequency_band(t_span: float, proc, fit: bool = True) -> tuple:
     """(lo, hi) [Hz] a record can show a line in: at least 20 periods in the run (its frequency bin 1/span is
     then 5 % of the frequency, which the refinement narrows to better than 2 %) and above the motion
@@ -97,7 +98,9 @@ def _grid_index(t: np.ndarray):
     return ki.astype(np.int64) if np.max(np.abs(k - ki)) < 1e-3 else None
 
 
-def _fft_scan(k: np.ndarray, dt: float, rc: np.ndarray, freqs: np.ndarray, oversample: float) -> np.ndarray:
+def _fft_scan(
+    k: np.ndarray, dt: float, rc: np.ndarray, freqs: np.ndarray, oversample: float
+) -> np.ndarray:
     """The Lomb-Scargle sums of :func:`line_scan` (times k dt) from two FFTs: of the residual and of the
     sampling mask, the latter at twice the frequency for the sin^2, cos^2 and sin cos sums."""
     n = int(k[-1]) + 1
@@ -136,14 +139,24 @@ def _periodic_short(ctx) -> str:
     t = ctx.rows.sig["t"][ctx.rows.keep]
     span = float(np.ptp(t))
     lo, hi = frequency_band(span, ctx.rows.proc)
-    return "" if hi > lo else (f"{span:.3g} s of motion resolves no line: {PERIODS:g} periods need "
-                               f"{PERIODS / hi:.3g} s at the "
-                               f"highest frequency fitted, {hi:.3g} Hz (0.6x the position filter's cut-off)")
+    return (
+        ""
+        if hi > lo
+        else (
+            f"{span:.3g} s of motion resolves no line: {PERIODS:g} periods need "
+            f"{PERIODS / hi:.3g} s at the "
+            f"highest frequency fitted, {hi:.3g} Hz (0.6x the position filter's cut-off)"
+        )
+    )
 
 
 def _periodic_implausible(value, fc, fv) -> list:
     a = math.hypot(value("ps"), value("pc"))
-    return [f"a periodic force of amplitude {a:.4g} beyond {fc:.4g} (the whole Coulomb friction)"] if a > fc else []
+    return (
+        [f"a periodic force of amplitude {a:.4g} beyond {fc:.4g} (the whole Coulomb friction)"]
+        if a > fc
+        else []
+    )
 
 
 def _periodic(trig):
@@ -158,21 +171,46 @@ class TimePeriodic(Effect):
     title = "a force periodic in time (a pump, spindle or fan unbalance, mains hum in the current sensor)"
     time = TimeModel(
         "a force periodic in time, not in position (a pump, spindle or fan unbalance, mains hum)",
-        (Term("ps", "periodic force, sin(2 pi f t) coefficient", "effort", _periodic(np.sin), simulated=False),
-         Term("pc", "periodic force, cos(2 pi f t) coefficient", "effort", _periodic(np.cos), simulated=False)),
-        shape=Shape("freq", "frequency of the periodic force (spectrum, refined)", "frequency",
-                    search=_freq_search),
+        (
+            Term(
+                "ps",
+                "periodic force, sin(2 pi f t) coefficient",
+                "effort",
+                _periodic(np.sin),
+                simulated=False,
+            ),
+            Term(
+                "pc",
+                "periodic force, cos(2 pi f t) coefficient",
+                "effort",
+                _periodic(np.cos),
+                simulated=False,
+            ),
+        ),
+        shape=Shape(
+            "freq",
+            "frequency of the periodic force (spectrum, refined)",
+            "frequency",
+            search=_freq_search,
+        ),
         skip=_periodic_short,
         too_short=_periodic_short,
         implausible=_periodic_implausible,
         evidence="a record at rest in position control with the suspected source running: the line stays",
-        derived=(("amp", "amplitude of the periodic force sqrt(ps^2 + pc^2)", "effort",
-                  lambda value: math.hypot(value("ps"), value("pc"))),),
+        derived=(
+            (
+                "amp",
+                "amplitude of the periodic force sqrt(ps^2 + pc^2)",
+                "effort",
+                lambda value: math.hypot(value("ps"), value("pc")),
+            ),
+        ),
         per_run=True,
     )
 
 
-# ------------------------------------------------------------------------------------------ local friction
+# ------------------------------------------------------------------------------------------ local
+# friction
 def bump(q: np.ndarray, x0: float, w: float) -> np.ndarray:
     """Gaussian bump exp(-(q - x0)^2 / 2 w^2)."""
     return np.exp(-0.5 * ((q - x0) / w) ** 2)
@@ -198,7 +236,9 @@ def spot_scan(q: np.ndarray, cols: np.ndarray, r: np.ndarray, stroke_q: float) -
             G = B[:, :, None] * cols[None, :, :]  # (nx, n, k)
             A = np.einsum("xnk,xnl->xkl", G, G) + 1e-9 * np.eye(cols.shape[1])
             b = np.einsum("xnk,n->xk", G, rc)
-            out[i0 : i0 + 64, j] = np.einsum("xk,xk->x", b, np.linalg.solve(A, b[..., None])[..., 0]) / rr
+            out[i0 : i0 + 64, j] = (
+                np.einsum("xk,xk->x", b, np.linalg.solve(A, b[..., None])[..., 0]) / rr
+            )
     return xs, widths, out
 
 
@@ -210,11 +250,16 @@ def _spot_search(rows, r0, rss) -> dict:
     x0, lw = float(xs[i]), math.log(float(widths[j]))
     step = math.log(widths[1] / widths[0])
     a_lo, a_hi = math.log(widths[0]), math.log(widths[-1])
-    for _ in range(2):  # coordinate refinement on the joint RSS: position, then width (within its range)
+    # coordinate refinement on the joint RSS: position, then width (within its range)
+    for _ in range(2):
         w = math.exp(lw)
         x0 = golden(lambda x, w=w: rss({"x0": x, "width": w}), x0 - w, x0 + w, 16)
-        lw = golden(lambda a, x0=x0: rss({"x0": x0, "width": math.exp(a)}), max(lw - step, a_lo),
-                    min(lw + step, a_hi), 14)
+        lw = golden(
+            lambda a, x0=x0: rss({"x0": x0, "width": math.exp(a)}),
+            max(lw - step, a_lo),
+            min(lw + step, a_hi),
+            14,
+        )
     return {"x0": x0, "width": math.exp(lw)}
 
 
@@ -226,7 +271,11 @@ def _spot_implausible(value, fc, fv) -> list:
     h = value("hs")
     if h <= 0.0:
         return [f"a local friction height {h:.4g} not positive (a spot that drives the axis)"]
-    return [f"a local friction height {h:.4g} beyond {2 * fc:.4g} (twice the Coulomb friction)"] if h > 2 * fc else []
+    return (
+        [f"a local friction height {h:.4g} beyond {2 * fc:.4g} (twice the Coulomb friction)"]
+        if h > 2 * fc
+        else []
+    )
 
 
 @register_effect
@@ -237,17 +286,31 @@ class LocalFriction(Effect):
     title = "friction raised at one place on the stroke (a damaged or contaminated spot, a cable-chain kink)"
     time = TimeModel(
         "friction raised at one place on the stroke (a damaged or contaminated spot, a cable-chain kink)",
-        (Term("hs", "local friction height", "effort",
-              lambda sig, proc, shape: np.sign(sig["v"]) * bump(sig["q"], shape["x0"], shape["width"])),),
-        shape=Shape("x0", "position of the local friction (grid, then refined)", "position", search=_spot_search,
-                    also=(("width", "standard width of the local friction", "position"),)),
+        (
+            Term(
+                "hs",
+                "local friction height",
+                "effort",
+                lambda sig, proc, shape: (
+                    np.sign(sig["v"]) * bump(sig["q"], shape["x0"], shape["width"])
+                ),
+            ),
+        ),
+        shape=Shape(
+            "x0",
+            "position of the local friction (grid, then refined)",
+            "position",
+            search=_spot_search,
+            also=(("width", "standard width of the local friction", "position"),),
+        ),
         skip=_spot_skip,
         implausible=_spot_implausible,
         evidence="slow constant-speed passes over the place in both directions: the bump stays at the same millimetres",
     )
 
 
-# ------------------------------------------------------------------------------------------ friction drift
+# ------------------------------------------------------------------------------------------
+# friction drift
 def _tau_bounds(sig, proc) -> tuple:
     """Time constants a run can show: from 0.3 s to twice the run's length."""
     return 0.3, 2.0 * float(np.ptp(sig["t"]))
@@ -255,7 +318,11 @@ def _tau_bounds(sig, proc) -> tuple:
 
 def _drift_implausible(value, fc, fv) -> list:
     a = value("Ad")
-    return [f"a friction drift of {a:.4g} beyond {fc:.4g} (the whole Coulomb friction)"] if abs(a) > fc else []
+    return (
+        [f"a friction drift of {a:.4g} beyond {fc:.4g} (the whole Coulomb friction)"]
+        if abs(a) > fc
+        else []
+    )
 
 
 @register_effect
@@ -266,9 +333,17 @@ class FrictionDrift(Effect):
     title = "friction drifts within a run (warm-up of the lubricant)"
     time = TimeModel(
         "friction settles within the run (warm-up of the lubricant: high at the start)",
-        (Term("Ad", "friction drift amplitude at the run's start", "effort",
-              lambda sig, proc, shape: np.sign(sig["v"]) * np.exp(-sig["t"] / shape["tau"])),),
-        shape=Shape("tau", "time constant of the friction drift (1-D search)", "time", bounds=_tau_bounds),
+        (
+            Term(
+                "Ad",
+                "friction drift amplitude at the run's start",
+                "effort",
+                lambda sig, proc, shape: np.sign(sig["v"]) * np.exp(-sig["t"] / shape["tau"]),
+            ),
+        ),
+        shape=Shape(
+            "tau", "time constant of the friction drift (1-D search)", "time", bounds=_tau_bounds
+        ),
         implausible=_drift_implausible,
         evidence="the same run repeated warm (after a warm-up cycle): the drift is gone",
     )

@@ -13,8 +13,9 @@ import numpy as np
 from ..fit import Param
 from .base import Effect, Term, TimeModel, register_effect, replace_part
 
-PEAK_RATIO = 5.0  # a time record shows an extra mode only when its baseline residual spectrum peaks this far
-#                   above its median (between 3x the motion bandwidth and the cut-off)
+# a time record shows an extra mode only when its baseline residual spectrum peaks this far above
+# its median (between 3x the motion bandwidth and the cut-off)
+PEAK_RATIO = 5.0
 
 
 def _mode_skip(ctx) -> str:
@@ -25,19 +26,25 @@ def _mode_skip(ctx) -> str:
         return f"no residual spectral peak (at most {ratio:.1f}x the median, {freq:.0f} Hz)"
     line = ctx.steady_line()
     if line is not None:
-        return (f"the residual's spectral peak is a steady line at {line[0]:.4g} Hz, one phase through the run "
-                f"({100 * line[1]:.0f} % of the residual): a periodic disturbance, not a resonance")
+        return (
+            f"the residual's spectral peak is a steady line at {line[0]:.4g} Hz, one phase through the run "
+            f"({100 * line[1]:.0f} % of the residual): a periodic disturbance, not a resonance"
+        )
     per = ctx.periodic_peak()
     if per is not None:
         u, f = ctx.position_unit
-        return (f"the residual's spectral peak ({freq:.0f} Hz) follows the position: periodic over "
-                f"{per[0] * f:.3g} {u}, {100 * per[1]:.0f} % of the residual (a ripple, not a resonance)")
+        return (
+            f"the residual's spectral peak ({freq:.0f} Hz) follows the position: periodic over "
+            f"{per[0] * f:.3g} {u}, {100 * per[1]:.0f} % of the residual (a ripple, not a resonance)"
+        )
     return ""
 
 
 def _mode_implausible(value, fc, fv) -> list:
     v = value("beta")
-    return [f"beta = {v:.4g} not positive (no mass-spring pair has m1 m2/k <= 0)"] if v <= 0.0 else []
+    return (
+        [f"beta = {v:.4g} not positive (no mass-spring pair has m1 m2/k <= 0)"] if v <= 0.0 else []
+    )
 
 
 RESOLVED_FC = 0.8  # a resonance is resolved up to this share of the position filter's cut-off
@@ -52,8 +59,14 @@ def _mode_resolved(value, proc) -> str:
         return ""
     fr = math.sqrt(m / beta) / (2.0 * math.pi)
     lim = RESOLVED_FC * proc.fc
-    return (f"a resonance at {fr:.3g} Hz, above {lim:.3g} Hz (0.8x the position filter's cut-off), where the "
-            "record does not resolve one") if fr > lim else ""
+    return (
+        (
+            f"a resonance at {fr:.3g} Hz, above {lim:.3g} Hz (0.8x the position filter's cut-off), where the "
+            "record does not resolve one"
+        )
+        if fr > lim
+        else ""
+    )
 
 
 @register_effect
@@ -84,7 +97,9 @@ class AddedMass(Effect):
         q.added_mass = q.added_mass + P["added_mass"]
 
     def describe(self, v, plant):
-        return f"{v['added_mass']:+.1f} kg moving mass against the design's {plant.moving_mass:.1f} kg"
+        return (
+            f"{v['added_mass']:+.1f} kg moving mass against the design's {plant.moving_mass:.1f} kg"
+        )
 
     def calibrate(self, v, design):
         m = design.axis.moving_mass + v["added_mass"]
@@ -105,7 +120,15 @@ class ExtraMode(Effect):
     time = TimeModel(
         "a second mass behind a spring (resonance)",
         # its IV instrument is the measured column itself: a rigid-body simulation has no mode
-        (Term("beta", "m1 m2/k of the extra mode", "snap", lambda sig, proc, shape: sig["snap"], simulated=False),),
+        (
+            Term(
+                "beta",
+                "m1 m2/k of the extra mode",
+                "snap",
+                lambda sig, proc, shape: sig["snap"],
+                simulated=False,
+            ),
+        ),
         skip=_mode_skip,
         implausible=_mode_implausible,
         resolved=_mode_resolved,
@@ -168,11 +191,14 @@ class ExtraMode(Effect):
         _, mag, lo, hi = self._peak(ctx)
         k = 1.0 / (2.0 * 0.03 * max(mag, 1e-12))
         return [
-            {"mode_frequency": f / (2 * math.pi), "mode_stiffness": k} for f in np.geomspace(lo, hi, 10)[1:-1]
+            {"mode_frequency": f / (2 * math.pi), "mode_stiffness": k}
+            for f in np.geomspace(lo, hi, 10)[1:-1]
         ]
 
     def apply(self, kind, q, P, Z, plant):
-        q.modes = q.modes + [(P["mode_stiffness"], 2.0 * math.pi * P["mode_frequency"], P["mode_damping"])]
+        q.modes = q.modes + [
+            (P["mode_stiffness"], 2.0 * math.pi * P["mode_frequency"], P["mode_damping"])
+        ]
 
     def describe(self, v, plant):
         return (
@@ -182,7 +208,11 @@ class ExtraMode(Effect):
 
     def calibrate(self, v, design):
         blocks = design.axis.guide_blocks
-        m = design.axis.moving_mass + float(design.nut["mass"]) + blocks * float(design.guide["block_mass"])
+        m = (
+            design.axis.moving_mass
+            + float(design.nut["mass"])
+            + blocks * float(design.guide["block_mass"])
+        )
         k_n = (2 * math.pi * v["mode_frequency"]) ** 2 * m / blocks
         return (
             replace_part(design, "guide", normal_rigidity=k_n),

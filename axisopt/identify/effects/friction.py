@@ -16,7 +16,8 @@ from ... import mathx as mx
 from ..fit import Param
 from .base import Effect, Shape, Term, TimeModel, register_effect, replace_part
 
-RIPPLE_HARMONICS = (1, 2, 3)  # the ripple's period is the lead / k for one of these k (chosen by RSS)
+# the ripple's period is the lead / k for one of these k (chosen by RSS)
+RIPPLE_HARMONICS = (1, 2, 3)
 
 
 def _stribeck_bounds(sig, proc) -> tuple:
@@ -28,17 +29,25 @@ def _stribeck_bounds(sig, proc) -> tuple:
 
 def _stribeck_implausible(value, fc, fv) -> list:
     v = value("Fs")
-    return [] if 0.0 <= v <= 2.0 * fc else [f"Fs = {v:.4g} outside 0..{2 * fc:.4g} (breakaway up to 3x Coulomb)"]
+    return (
+        []
+        if 0.0 <= v <= 2.0 * fc
+        else [f"Fs = {v:.4g} outside 0..{2 * fc:.4g} (breakaway up to 3x Coulomb)"]
+    )
 
 
 def _asymmetry_implausible(value, fc, fv) -> list:
     v = value("dFv")
-    return [f"dFv = {v:.4g} beyond +-{fv:.4g} (the whole viscous coefficient)"] if abs(v) > fv else []
+    return (
+        [f"dFv = {v:.4g} beyond +-{fv:.4g} (the whole viscous coefficient)"] if abs(v) > fv else []
+    )
 
 
 def _drag_implausible(value, fc, fv) -> list:
     v = value("Cq")
-    return [f"Cq = {v:.4g} not positive (a drag that falls with v|v| is no drag)"] if v <= 0.0 else []
+    return (
+        [f"Cq = {v:.4g} not positive (a drag that falls with v|v| is no drag)"] if v <= 0.0 else []
+    )
 
 
 @register_effect
@@ -49,15 +58,25 @@ class Stribeck(Effect):
     signature = "positive bump at |v| below a few v_s"
     time = TimeModel(
         "friction rises at low speed (Stribeck)",
-        (Term("Fs", "Stribeck excess Fs - Fc", "effort",
-              lambda sig, proc, shape: np.sign(sig["v"]) * np.exp(-np.abs(sig["v"]) / shape["vs"])),),
+        (
+            Term(
+                "Fs",
+                "Stribeck excess Fs - Fc",
+                "effort",
+                lambda sig, proc, shape: (
+                    np.sign(sig["v"]) * np.exp(-np.abs(sig["v"]) / shape["vs"])
+                ),
+            ),
+        ),
         shape=Shape("vs", "Stribeck velocity (1-D search)", "speed", bounds=_stribeck_bounds),
         implausible=_stribeck_implausible,
         evidence="a friction curve with many constant speeds below 10 mm/s in both directions: the rise at low speed",
     )
 
     def _speeds(self, ctx):
-        return np.concatenate([np.abs(o.feature("velocity")) for o in ctx.obs if o.kind == "friction"])
+        return np.concatenate(
+            [np.abs(o.feature("velocity")) for o in ctx.obs if o.kind == "friction"]
+        )
 
     def params(self, ctx):
         v = self._speeds(ctx)
@@ -108,7 +127,9 @@ class Stribeck(Effect):
 
 def _top_friction_speed(ctx) -> float:
     """The largest |velocity| of the friction data [m/s]: the scale of the speed-dependent friction effects."""
-    return max(float(np.max(np.abs(o.feature("velocity")))) for o in ctx.obs if o.kind == "friction")
+    return max(
+        float(np.max(np.abs(o.feature("velocity")))) for o in ctx.obs if o.kind == "friction"
+    )
 
 
 @register_effect
@@ -117,8 +138,10 @@ class Viscous(Effect):
     title = "viscous (speed-proportional) friction differs from catalog"
     kinds = ("friction",)
     signature = "residual linear and odd in v"
-    evidence = ("steady-state friction at constant speeds over a decade or more up to the top speed: a straight "
-                "line in v")
+    evidence = (
+        "steady-state friction at constant speeds over a decade or more up to the top speed: a straight "
+        "line in v"
+    )
 
     def params(self, ctx):
         v = _top_friction_speed(ctx)
@@ -195,17 +218,28 @@ class DirectionAsymmetry(Effect):
     title = "friction differs between the two directions of travel"
     kinds = ("friction",)
     signature = "constant offset between + and - travel"
-    # in a time record: viscous friction differing by direction, dFv = Fv(v>0) - Fv(v<0).  A Coulomb asymmetry
-    # (Fc(v>0) - Fc(v<0))/2 is a constant while moving and cannot be told from the offset on moving rows
+    # in a time record: viscous friction differing by direction, dFv = Fv(v>0) - Fv(v<0).  A Coulomb
+    # asymmetry
+    # (Fc(v>0) - Fc(v<0))/2 is a constant while moving and cannot be told from the offset on moving
+    # rows
     time = TimeModel(
         "viscous friction differs by direction",
-        (Term("dFv", "viscous asymmetry Fv+ - Fv-", "damping", lambda sig, proc, shape: 0.5 * np.abs(sig["v"])),),
+        (
+            Term(
+                "dFv",
+                "viscous asymmetry Fv+ - Fv-",
+                "damping",
+                lambda sig, proc, shape: 0.5 * np.abs(sig["v"]),
+            ),
+        ),
         implausible=_asymmetry_implausible,
         evidence="constant-speed runs at several speeds in both directions: the slopes differ",
     )
 
     def applicable(self, ctx):
-        return any(o.kind == "friction" and np.ptp(np.sign(o.feature("velocity"))) > 0 for o in ctx.obs)
+        return any(
+            o.kind == "friction" and np.ptp(np.sign(o.feature("velocity"))) > 0 for o in ctx.obs
+        )
 
     def params(self, ctx):
         return [
@@ -234,15 +268,18 @@ class DirectionAsymmetry(Effect):
         )
 
 
-DRAG_SPEED = 0.05  # [m/s] below this top speed a v|v| drag (churning, seals) is the less plausible reading (estimate)
+# [m/s] below this top speed a v|v| drag (churning, seals) is the less plausible reading (estimate)
+DRAG_SPEED = 0.05
 
 
 def _drag_regime(vmax: float) -> str:
     """Churning and seal drag that grows with v|v| shows at tens of mm/s and above (an estimate: DRAG_SPEED)."""
     if vmax >= DRAG_SPEED:
         return ""
-    return (f"a drag growing with v|v| at a top speed of {vmax * 1e3:.3g} mm/s is the less plausible reading: "
-            f"lubricant churning and seal drag show from about {DRAG_SPEED * 1e3:.0f} mm/s (an estimate)")
+    return (
+        f"a drag growing with v|v| at a top speed of {vmax * 1e3:.3g} mm/s is the less plausible reading: "
+        f"lubricant churning and seal drag show from about {DRAG_SPEED * 1e3:.0f} mm/s (an estimate)"
+    )
 
 
 @register_effect
@@ -253,7 +290,14 @@ class QuadraticDrag(Effect):
     signature = "residual odd in v and growing faster than v: c v|v| (seals, lubricant churning)"
     time = TimeModel(
         "drag growing with v|v| (seals, lubricant churning)",
-        (Term("Cq", "quadratic drag c v|v|", "drag2", lambda sig, proc, shape: sig["v"] * np.abs(sig["v"])),),
+        (
+            Term(
+                "Cq",
+                "quadratic drag c v|v|",
+                "drag2",
+                lambda sig, proc, shape: sig["v"] * np.abs(sig["v"]),
+            ),
+        ),
         implausible=_drag_implausible,
         evidence="steady-state friction at constant speeds up to the maximum: the curve bends upward with v|v|",
         regime=_drag_regime,
@@ -281,8 +325,10 @@ class QuadraticDrag(Effect):
         q.drag = P["drag_coefficient"]
 
     def describe(self, v, plant):
-        return (f"drag grows with v|v|: c = {v['drag_coefficient']:.4g} N.s^2/m^2 (seals, lubricant churning); "
-                "evaluate has no such term")
+        return (
+            f"drag grows with v|v|: c = {v['drag_coefficient']:.4g} N.s^2/m^2 (seals, lubricant churning); "
+            "evaluate has no such term"
+        )
 
 
 # ------------------------------------------------------------------------------ time records only
@@ -296,8 +342,11 @@ def _position_skip(ctx) -> str:
 
 
 def _position_implausible(value, fc, fv) -> list:
-    return [f"{t} = {value(t):.4g} beyond +-{fc:.4g} (the whole Coulomb friction)" for t in ("c1", "c2")
-            if abs(value(t)) > fc]
+    return [
+        f"{t} = {value(t):.4g} beyond +-{fc:.4g} (the whole Coulomb friction)"
+        for t in ("c1", "c2")
+        if abs(value(t)) > fc
+    ]
 
 
 @register_effect
@@ -308,10 +357,22 @@ class PositionFriction(Effect):
     title = "Coulomb friction varies along the stroke"
     time = TimeModel(
         "Coulomb friction varies along the stroke",
-        (Term("c1", "Coulomb vs position, P1 coefficient", "effort",
-              lambda sig, proc, shape: np.sign(sig["v"]) * _stroke_xi(sig, proc)),
-         Term("c2", "Coulomb vs position, P2 coefficient", "effort",
-              lambda sig, proc, shape: np.sign(sig["v"]) * (1.5 * _stroke_xi(sig, proc) ** 2 - 0.5))),
+        (
+            Term(
+                "c1",
+                "Coulomb vs position, P1 coefficient",
+                "effort",
+                lambda sig, proc, shape: np.sign(sig["v"]) * _stroke_xi(sig, proc),
+            ),
+            Term(
+                "c2",
+                "Coulomb vs position, P2 coefficient",
+                "effort",
+                lambda sig, proc, shape: (
+                    np.sign(sig["v"]) * (1.5 * _stroke_xi(sig, proc) ** 2 - 0.5)
+                ),
+            ),
+        ),
         skip=_position_skip,
         implausible=_position_implausible,
         evidence="a slow constant-speed pass over the whole stroke in both directions: the level follows the position",
@@ -322,6 +383,7 @@ def _ripple(trig, friction: bool):
     def column(sig, proc, shape):
         w = trig(2.0 * math.pi * sig["q"] / shape["period"])
         return np.sign(sig["v"]) * w if friction else w
+
     return column
 
 
@@ -335,9 +397,13 @@ def _ripple_implausible(value, fc, fv) -> list:
     out = []
     force, fric = math.hypot(value("rs"), value("rc")), math.hypot(value("ks"), value("kc"))
     if force > fc:
-        out.append(f"a force ripple of amplitude {force:.4g} beyond {fc:.4g} (the whole Coulomb friction)")
+        out.append(
+            f"a force ripple of amplitude {force:.4g} beyond {fc:.4g} (the whole Coulomb friction)"
+        )
     if fric > fc:
-        out.append(f"a friction ripple of amplitude {fric:.4g} beyond {fc:.4g} (the friction would reverse)")
+        out.append(
+            f"a friction ripple of amplitude {fric:.4g} beyond {fc:.4g} (the friction would reverse)"
+        )
     return out
 
 
@@ -351,12 +417,28 @@ class LeadRipple(Effect):
     title = "force or friction ripple periodic in position"
     time = TimeModel(
         "force or friction ripple periodic in position at the lead or a harmonic (lead error, ball recirculation)",
-        (Term("rs", "force ripple, sin(2 pi q/P) coefficient", "effort", _ripple(np.sin, False)),
-         Term("rc", "force ripple, cos(2 pi q/P) coefficient", "effort", _ripple(np.cos, False)),
-         Term("ks", "friction ripple, sgn(v) sin(2 pi q/P) coefficient", "effort", _ripple(np.sin, True)),
-         Term("kc", "friction ripple, sgn(v) cos(2 pi q/P) coefficient", "effort", _ripple(np.cos, True))),
-        shape=Shape("period", "ripple period (the lead or a harmonic)", "position",
-                    choices=lambda proc: [proc.lead_q / k for k in RIPPLE_HARMONICS]),
+        (
+            Term("rs", "force ripple, sin(2 pi q/P) coefficient", "effort", _ripple(np.sin, False)),
+            Term("rc", "force ripple, cos(2 pi q/P) coefficient", "effort", _ripple(np.cos, False)),
+            Term(
+                "ks",
+                "friction ripple, sgn(v) sin(2 pi q/P) coefficient",
+                "effort",
+                _ripple(np.sin, True),
+            ),
+            Term(
+                "kc",
+                "friction ripple, sgn(v) cos(2 pi q/P) coefficient",
+                "effort",
+                _ripple(np.cos, True),
+            ),
+        ),
+        shape=Shape(
+            "period",
+            "ripple period (the lead or a harmonic)",
+            "position",
+            choices=lambda proc: [proc.lead_q / k for k in RIPPLE_HARMONICS],
+        ),
         skip=_ripple_skip,
         implausible=_ripple_implausible,
         evidence="the force over a slow constant-speed pass at two speeds: the ripple keeps its period in millimetres",

@@ -38,11 +38,13 @@ from .base import Effect, Shape, Term, TimeModel, register_effect
 
 T_REF = 293.15  # [K] the reference temperature of the temperature laws (20 degC)
 BETA_RANGE = (0.005, 0.2)  # [1/K] search range of the viscosity-temperature coefficient
-AXIAL_RATIO_MAX = 2.5  # k_a = 1/eta - 1 up to a sliding lead screw of efficiency 0.3 (estimate of the range)
+# k_a = 1/eta - 1 up to a sliding lead screw of efficiency 0.3 (estimate of the range)
+AXIAL_RATIO_MAX = 2.5
 LOSS_MAX = 0.7  # 1 - eta, the same screws
 
 
-# ---------------------------------------------------------------------------------- time-record columns
+# ---------------------------------------------------------------------------------- time-record
+# columns
 def _axial_column(sig, proc, shape):
     return np.sign(sig["v"]) * np.abs(sig["effort"])
 
@@ -97,9 +99,12 @@ def _beta_search(rows, r0, rss) -> dict:
     y = rows.y
 
     def cost(logb):
-        col = rows.columns(("Fvt",), {"beta": math.exp(logb)})[:, 0] + rows.columns(("Fv",), {})[:, 0]
+        col = (
+            rows.columns(("Fvt",), {"beta": math.exp(logb)})[:, 0] + rows.columns(("Fv",), {})[:, 0]
+        )
         A = np.column_stack([W, col])
-        sc = np.linalg.norm(A, axis=0)  # columns scaled to unit norm, as the records' least squares does
+        # columns scaled to unit norm, as the records' least squares does
+        sc = np.linalg.norm(A, axis=0)
         sc[sc == 0] = 1.0
         th, *_ = np.linalg.lstsq(A / sc, y, rcond=None)
         e = y - A @ (th / sc)
@@ -127,13 +132,22 @@ def _needs_temperature(ctx) -> str:
 
 def _viscous_t_implausible(value, fc, fv) -> list:
     v = value("Fvt")
-    return [] if 0.0 < v <= 5.0 * max(fv, 1e-9) else [
-        f"Fvt = {v:.4g} outside 0..{5.0 * fv:.4g} (the viscous friction at 20 degC, up to 5x the record's)"]
+    return (
+        []
+        if 0.0 < v <= 5.0 * max(fv, 1e-9)
+        else [
+            f"Fvt = {v:.4g} outside 0..{5.0 * fv:.4g} (the viscous friction at 20 degC, up to 5x the record's)"
+        ]
+    )
 
 
 def _coulomb_t_implausible(value, fc, fv) -> list:
     v = value("dFc_dT")
-    return [] if abs(v) <= 0.1 * fc else [f"dFc/dT = {v:.4g} beyond +-{0.1 * fc:.4g} per K (10 % of Coulomb per K)"]
+    return (
+        []
+        if abs(v) <= 0.1 * fc
+        else [f"dFc/dT = {v:.4g} beyond +-{0.1 * fc:.4g} per K (10 % of Coulomb per K)"]
+    )
 
 
 @register_effect
@@ -143,7 +157,9 @@ class NutAxialFriction(Effect):
     name = "nut_axial_friction"
     title = "nut friction growing with the axial force (screw efficiency)"
     kinds = ("friction",)
-    signature = "residual proportional to sgn(v) |F_axial|, the same sign as the motion in both directions"
+    signature = (
+        "residual proportional to sgn(v) |F_axial|, the same sign as the motion in both directions"
+    )
     needs = (("friction", "axial_load"),)
     time = TimeModel(
         "nut friction grows with the axial force it transmits (screw efficiency: ka = 1 - eta of the drive force)",
@@ -151,7 +167,7 @@ class NutAxialFriction(Effect):
         skip=_needs_external,
         implausible=_axial_implausible,
         evidence="constant-speed passes at two or more process forces in both directions: the friction "
-                 "grows with |F| the same way both ways",
+        "grows with |F| the same way both ways",
         needs=("fext",),
     )
 
@@ -176,8 +192,10 @@ class NutAxialFriction(Effect):
 
     def describe(self, v, plant):
         k = v["nut_axial_ratio"]
-        return (f"nut friction grows with the axial force: {k:.4f} N per N (screw efficiency "
-                f"{1.0 / (1.0 + k):.3f} under load)")
+        return (
+            f"nut friction grows with the axial force: {k:.4f} N per N (screw efficiency "
+            f"{1.0 / (1.0 + k):.3f} under load)"
+        )
 
 
 @register_effect
@@ -192,7 +210,7 @@ class GuideLoadFriction(Effect):
         skip=_needs_normal,
         implausible=_normal_implausible,
         evidence="constant-speed passes with two payloads (or vertical forces): the friction grows with N, "
-                 "the axial force unchanged",
+        "the axial force unchanged",
         needs=("normal",),
     )
 
@@ -212,23 +230,45 @@ class ViscousTemperature(_TemperatureEffect):
     time = TimeModel(
         "viscous friction follows the lubricant's viscosity with temperature: Fv(T) = Fvt exp(-beta (T - 20 C))",
         (Term("Fvt", "viscous friction at 20 degC", "damping", _viscous_t_column),),
-        shape=Shape("beta", "viscosity-temperature coefficient (1-D search of the pure law)", "per_kelvin",
-                    search=_beta_search),
+        shape=Shape(
+            "beta",
+            "viscosity-temperature coefficient (1-D search of the pure law)",
+            "per_kelvin",
+            search=_beta_search,
+        ),
         skip=_needs_temperature,
         implausible=_viscous_t_implausible,
         evidence="friction curves at two temperatures (cold and warm): the slope with speed changes, the "
-                 "level at low speed does not",
+        "level at low speed does not",
         needs=("temperature",),
     )
 
     def params(self, ctx):
         return [
-            Param("viscous_at_20C", "viscous friction at 20 degC", "N.s/m", "damping",
-                  max(ctx.plant.viscous, 100.0), 0.0, 1e9, typical=max(ctx.plant.viscous, 100.0),
-                  plausible=(0.0, 1e7), plausible_note="a positive viscous friction"),
-            Param("viscosity_beta", "viscosity-temperature coefficient beta", "1/K", "thermal_expansion",
-                  0.03, 1e-4, 0.5, typical=0.03, plausible=BETA_RANGE,
-                  plausible_note="lubricants 0.005-0.2 /K (mineral greases about 0.02-0.05)"),
+            Param(
+                "viscous_at_20C",
+                "viscous friction at 20 degC",
+                "N.s/m",
+                "damping",
+                max(ctx.plant.viscous, 100.0),
+                0.0,
+                1e9,
+                typical=max(ctx.plant.viscous, 100.0),
+                plausible=(0.0, 1e7),
+                plausible_note="a positive viscous friction",
+            ),
+            Param(
+                "viscosity_beta",
+                "viscosity-temperature coefficient beta",
+                "1/K",
+                "thermal_expansion",
+                0.03,
+                1e-4,
+                0.5,
+                typical=0.03,
+                plausible=BETA_RANGE,
+                plausible_note="lubricants 0.005-0.2 /K (mineral greases about 0.02-0.05)",
+            ),
         ]
 
     def starts(self, ctx):
@@ -239,8 +279,10 @@ class ViscousTemperature(_TemperatureEffect):
 
     def describe(self, v, plant):
         b = v["viscosity_beta"]
-        return (f"viscous friction {v['viscous_at_20C']:.0f} N.s/m at 20 degC, halving every "
-                f"{math.log(2.0) / b:.3g} K (lubricant viscosity)")
+        return (
+            f"viscous friction {v['viscous_at_20C']:.0f} N.s/m at 20 degC, halving every "
+            f"{math.log(2.0) / b:.3g} K (lubricant viscosity)"
+        )
 
 
 @register_effect
@@ -252,7 +294,14 @@ class CoulombTemperature(_TemperatureEffect):
     signature = "residual proportional to sgn(v) (T - T_ref)"
     time = TimeModel(
         "Coulomb friction changes with temperature: dFc/dT (T - 20 C) sgn(v)",
-        (Term("dFc_dT", "Coulomb friction change per kelvin", "effort_per_kelvin", _coulomb_t_column),),
+        (
+            Term(
+                "dFc_dT",
+                "Coulomb friction change per kelvin",
+                "effort_per_kelvin",
+                _coulomb_t_column,
+            ),
+        ),
         skip=_needs_temperature,
         implausible=_coulomb_t_implausible,
         evidence="slow passes at two temperatures: the level at low speed changes, the slope does not",
@@ -261,9 +310,20 @@ class CoulombTemperature(_TemperatureEffect):
 
     def params(self, ctx):
         fc = max(ctx.plant.coulomb, 10.0)
-        return [Param("coulomb_per_kelvin", "Coulomb friction change per kelvin [N/K]", "-", "dimensionless",
-                      0.0, -1e6, 1e6, typical=0.01 * fc, plausible=(-0.1 * fc, 0.1 * fc),
-                      plausible_note="up to 10 % of the Coulomb level per kelvin")]
+        return [
+            Param(
+                "coulomb_per_kelvin",
+                "Coulomb friction change per kelvin [N/K]",
+                "-",
+                "dimensionless",
+                0.0,
+                -1e6,
+                1e6,
+                typical=0.01 * fc,
+                plausible=(-0.1 * fc, 0.1 * fc),
+                plausible_note="up to 10 % of the Coulomb level per kelvin",
+            )
+        ]
 
     def apply(self, kind, q, P, Z, plant):
         q.coulomb_t = P["coulomb_per_kelvin"] * (Z["temperature"] - T_REF)

@@ -67,10 +67,16 @@ class SupportCondition(Effect):
     def calibrate(self, v, design):
         k, kb = v["far_end_stiffness"], float(design.bearing["axial_rigidity"])
         declared = design.axis.mounting
-        new = "fixed-fixed" if k >= 0.5 * kb else ("fixed-free" if declared == "fixed-fixed" else declared)
+        new = (
+            "fixed-fixed"
+            if k >= 0.5 * kb
+            else ("fixed-free" if declared == "fixed-fixed" else declared)
+        )
         if new == declared:
             return None
-        return replace(design, axis=replace(design.axis, mounting=new)), f"mounting {declared} -> {new}"
+        return replace(
+            design, axis=replace(design.axis, mounting=new)
+        ), f"mounting {declared} -> {new}"
 
 
 @register_effect
@@ -129,7 +135,9 @@ class Backlash(Effect):
     signature = "step of +-b/2 with the load sign, flat in x"
 
     def applicable(self, ctx):
-        return any(o.kind == "stiffness" and np.ptp(np.sign(o.feature("force"))) > 0 for o in ctx.obs)
+        return any(
+            o.kind == "stiffness" and np.ptp(np.sign(o.feature("force"))) > 0 for o in ctx.obs
+        )
 
     def params(self, ctx):
         return [
@@ -198,7 +206,9 @@ class ThermalDrift(Effect):
 
     @staticmethod
     def _by_temperature(ctx):
-        return any(o.kind == "stiffness" and o.dataset.has("temperature", varying=True) for o in ctx.obs)
+        return any(
+            o.kind == "stiffness" and o.dataset.has("temperature", varying=True) for o in ctx.obs
+        )
 
     def params(self, ctx):
         if self._by_temperature(ctx):
@@ -331,4 +341,3 @@ class PreloadLoss(Effect):
 
     def describe(self, v, plant):
         return f"preload falls {v['preload_loss_rate'] * 100:.3g} % per cycle"
-

@@ -15,12 +15,24 @@ from .regression import shape_params, term
 
 # unit kind of a time-record term -> (quantity kind, unit, factor from SI), per record quantity
 KIND_UNITS = {
-    "force": {"effort": ("force", "N", 1.0), "mass": ("mass", "kg", 1.0), "damping": ("damping", "N.s/m", 1.0),
-              "drag2": ("mass_per_length", "kg/m", 1.0), "frequency": ("frequency", "Hz", 1.0),
-              "time": ("time", "s", 1.0), "position": ("length", "mm", 1e3), "speed": ("speed", "mm/s", 1e3)},
-    "torque": {"effort": ("torque", "N.m", 1.0), "mass": ("inertia", "kg.m^2", 1.0),
-               "frequency": ("frequency", "Hz", 1.0), "time": ("time", "s", 1.0), "position": ("angle", "rad", 1.0),
-               "speed": ("angular_speed", "rad/s", 1.0)},
+    "force": {
+        "effort": ("force", "N", 1.0),
+        "mass": ("mass", "kg", 1.0),
+        "damping": ("damping", "N.s/m", 1.0),
+        "drag2": ("mass_per_length", "kg/m", 1.0),
+        "frequency": ("frequency", "Hz", 1.0),
+        "time": ("time", "s", 1.0),
+        "position": ("length", "mm", 1e3),
+        "speed": ("speed", "mm/s", 1e3),
+    },
+    "torque": {
+        "effort": ("torque", "N.m", 1.0),
+        "mass": ("inertia", "kg.m^2", 1.0),
+        "frequency": ("frequency", "Hz", 1.0),
+        "time": ("time", "s", 1.0),
+        "position": ("angle", "rad", 1.0),
+        "speed": ("angular_speed", "rad/s", 1.0),
+    },
 }
 
 
@@ -57,8 +69,14 @@ def time_calibration_dict(diag, design=None, sources=()) -> dict:
                 params[nm] = _entry(fn(est.value), float("nan"), units[kind])
         if params:
             effects.append({"name": eff.name, "parameters": params})
-    out = {"axisopt_calibration": FORMAT, "design": diag.design.get("name"), "data": [str(s) for s in sources],
-           "verdict": ", ".join(diag.verdict) or "none", "baseline": base, "effects": effects}
+    out = {
+        "axisopt_calibration": FORMAT,
+        "design": diag.design.get("name"),
+        "data": [str(s) for s in sources],
+        "verdict": ", ".join(diag.verdict) or "none",
+        "baseline": base,
+        "effects": effects,
+    }
     if design is not None:
         _, applied, skipped = calibrate_design(design, out)
         out["applied"], out["not_applied"] = applied, skipped

@@ -25,8 +25,9 @@ import numpy as np
 
 from ..effects import time_effects
 from ..effects.disturbance import golden
-from .record import TimeRecord, derivatives, lowpass
+from .record import TimeRecord
 from .regression import Processing, Rows, decimate, full_matrix, matrix, signals, term
+from .signal import derivatives, lowpass
 
 IV_TOL = 1e-4
 IV_MAXIT = 30
@@ -64,7 +65,6 @@ def lstsq(W, y):
     return th / sc
 
 
-
 def least_squares(rows: Rows, terms, shape=None) -> Estimate:
     """LS on the decimated rows (seed eq. 29) with the standard deviations from the residual variance."""
     shape = dict(shape or {})
@@ -82,6 +82,7 @@ def least_squares(rows: Rows, terms, shape=None) -> Estimate:
 
 def search_shape(rows: Rows, terms, shape: dict, lo: float, hi: float, name: str = "vs") -> float:
     """1-D search of a shape parameter (log grid, then golden section on the LS RSS)."""
+
     def rss(logv):
         return least_squares(rows, terms, {**shape, name: math.exp(logv)}).rss
 
@@ -92,8 +93,8 @@ def search_shape(rows: Rows, terms, shape: dict, lo: float, hi: float, name: str
     return math.exp(golden(rss, a, b, 18))
 
 
-
-# ---------------------------------------------------------------------------------- closed-loop model
+# ---------------------------------------------------------------------------------- closed-loop
+# model
 @dataclass
 class Controller:
     """u = Kp (r - q) + Kd (r' - q') + Kv r' + Ka r'' (fitted to the record; SI of the record's coordinate)."""
@@ -128,12 +129,19 @@ def fit_controller(rows: Rows) -> Controller | None:
     return Controller(*map(float, th), r2)
 
 
-def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, proc: Processing,
-                  substeps: int = 2) -> np.ndarray | None:
+def simulate_loop(
+    rec: TimeRecord,
+    ctrl: Controller,
+    params: dict,
+    shape: dict,
+    proc: Processing,
+    substeps: int = 2,
+) -> np.ndarray | None:
     """Closed loop of the identified rigid model driven by the record's reference; the position [q units] at
     every sample, or None if the simulation diverges.  Exact sticking (implicit Coulomb step)."""
     r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2, rec.segments)
-    starts = {a for a, _ in rec.segments}  # a long record's windows: the loop restarts at rest in each
+    # a long record's windows: the loop restarts at rest in each
+    starts = {a for a, _ in rec.segments}
     m = params.get("M", 0.0) + (float(rec.aux["payload"][0]) if "payload" in rec.aux else 0.0)
     if not m > 0:
         return None
@@ -208,9 +216,9 @@ def simulate_loop(rec: TimeRecord, ctrl: Controller, params: dict, shape: dict, 
     return out
 
 
-
-def instrumental_variables(rows: Rows, terms, shape=None, ctrl: Controller | None = None,
-                           start: Estimate | None = None) -> Estimate:
+def instrumental_variables(
+    rows: Rows, terms, shape=None, ctrl: Controller | None = None, start: Estimate | None = None
+) -> Estimate:
     """IDIM-IV (seed eq. 30); see the module docstring for the instruments."""
     shape = dict(shape or {})
     terms = tuple(terms)
@@ -256,7 +264,9 @@ def instrumental_variables(rows: Rows, terms, shape=None, ctrl: Controller | Non
                 converged = True
                 break
         if converged:
-            note = f"instruments from the closed loop simulated from the reference ({it} iterations)"
+            note = (
+                f"instruments from the closed loop simulated from the reference ({it} iterations)"
+            )
         elif not note:
             note = f"not converged in {IV_MAXIT} iterations"
     r = y - W @ th

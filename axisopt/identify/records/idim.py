@@ -78,23 +78,31 @@ class TimeDiagnosis:
     skipped: dict  # effect -> reason it was not a candidate
     residual_peak: tuple  # (frequency [Hz], ratio to median) of the baseline residual spectrum
     times: dict  # seconds: ls, iv, diagnose
-    design: dict = field(default_factory=dict)  # name, lead, efficiency (for the torque -> force note)
-    rejected: list = field(default_factory=list)  # (round, TimeCandidate, reason): outside its physical range
-    pairs: list = field(default_factory=list)  # (round, TimeCandidate, TimeCandidate, Estimate, dBIC, gain, reason)
+    # name, lead, efficiency (for the torque -> force note)
+    design: dict = field(default_factory=dict)
+    # (round, TimeCandidate, reason): outside its physical range
+    rejected: list = field(default_factory=list)
+    # (round, TimeCandidate, TimeCandidate, Estimate, dBIC, gain, reason)
+    pairs: list = field(default_factory=list)
     unexplained: Unexplained | None = None  # structure left in the final residual
-    flags: dict = field(default_factory=dict)  # 'baseline' / 'final' -> [plausibility or identifiability notes]
-    lost: LostMotion | None = None  # lost motion between motor and table (records with motor_position)
-    equivalent: list = field(default_factory=list)  # (round, accepted, alternative, % apart): equally good
-    top_speed: float = 0.0  # the record's top table speed [m/s] (the regime effects' plausibility is judged in)
+    # 'baseline' / 'final' -> [plausibility or identifiability notes]
+    flags: dict = field(default_factory=dict)
+    # lost motion between motor and table (records with motor_position)
+    lost: LostMotion | None = None
+    # (round, accepted, alternative, % apart): equally good
+    equivalent: list = field(default_factory=list)
+    # the record's top table speed [m/s] (the regime effects' plausibility is judged in)
+    top_speed: float = 0.0
 
     @property
     def verdict(self) -> list:
-        return [c.effect.name for c in self.accepted] + (["backlash"] if self.lost and self.lost.accepted else [])
+        return [c.effect.name for c in self.accepted] + (
+            ["backlash"] if self.lost and self.lost.accepted else []
+        )
 
     @property
     def validation_mode(self) -> str:
         return "validation runs" if self.validation else "5 held-out blocks of the estimation run"
-
 
 
 def heldout_rmse(est_rows: Rows, val_rows: list, terms, shape) -> float:
@@ -145,7 +153,9 @@ def implausible(effects, est: Estimate, base: Estimate, proc=None) -> str:
     fc, fv = abs(base.value("Fc")), abs(base.value("Fv"))
     out = [t for e in effects for t in e.why_implausible(est.value, fc, fv)]
     if proc is not None:
-        out += [t for e in effects if e.resolved is not None for t in [e.resolved(est.value, proc)] if t]
+        out += [
+            t for e in effects if e.resolved is not None for t in [e.resolved(est.value, proc)] if t
+        ]
     return "; ".join(out)
 
 
@@ -156,19 +166,30 @@ def fit_candidate(est_rows: Rows, terms, effect: TimeModel, shape: dict) -> tupl
     if sh is not None and sh.search is not None:
         own = [t for t in terms if t not in effect.terms]
         r0 = est_rows.y - matrix(est_rows, own, shape) @ least_squares(est_rows, own, shape).theta
-        shape.update(sh.search(est_rows, r0, lambda v: least_squares(est_rows, terms, {**shape, **v}).rss))
+        shape.update(
+            sh.search(est_rows, r0, lambda v: least_squares(est_rows, terms, {**shape, **v}).rss)
+        )
     elif sh is not None and sh.bounds is not None:
         lo, hi = sh.bounds(est_rows.sig, est_rows.proc)
         shape[sh.name] = search_shape(est_rows, terms, shape, lo, hi, sh.name)
     elif sh is not None and sh.choices is not None:
-        fits = [least_squares(est_rows, terms, {**shape, sh.name: v}) for v in sh.choices(est_rows.proc)]
+        fits = [
+            least_squares(est_rows, terms, {**shape, sh.name: v}) for v in sh.choices(est_rows.proc)
+        ]
         best = min(fits, key=lambda e: e.rss)
         return best, dict(best.shape)
     return least_squares(est_rows, terms, shape), shape
 
 
-def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effects: int = 3,
-                  design: dict | None = None, lead_q: float = 0.0) -> TimeDiagnosis:
+def diagnose_time(
+    records: list,
+    *,
+    stroke_q: float,
+    candidates=None,
+    max_effects: int = 3,
+    design: dict | None = None,
+    lead_q: float = 0.0,
+) -> TimeDiagnosis:
     """Identify the estimation record ``records[0]`` (LS and IV), select effects, validate on the rest."""
     import time
 
@@ -190,13 +211,18 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
     pool, skipped = [], {}
     peak = residual_peak(est_rows, base_ls)
     span = float(np.ptp(est_rows.sig["q"][est_rows.keep]))
-    ctx = TimeContext(est_rows, base_ls, peak, span, stroke_q, lead_q, UNITS[est.quantity]["position"])
+    ctx = TimeContext(
+        est_rows, base_ls, peak, span, stroke_q, lead_q, UNITS[est.quantity]["position"]
+    )
     for nm in names:
         e = effects[nm]
-        if any(k not in est_rows.sig for k in e.needs):  # the record lacks the signal: not a candidate at all
+        # the record lacks the signal: not a candidate at all
+        if any(k not in est_rows.sig for k in e.needs):
             if candidates:
-                raise InputError(f"--effects {nm}: the record has no {', '.join(e.needs)} signal "
-                                 f"({e.summary})", source=est.source)
+                raise InputError(
+                    f"--effects {nm}: the record has no {', '.join(e.needs)} signal ({e.summary})",
+                    source=est.source,
+                )
             continue
         short = e.too_short(ctx) if e.too_short is not None and candidates else ""
         if short:
@@ -226,7 +252,8 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
         scored.sort(key=lambda c: c.dbic)
         rounds.append(scored)
         top = None
-        for c in scored:  # the best candidate by dBIC that is physical and predicts held-out data better
+        # the best candidate by dBIC that is physical and predicts held-out data better
+        for c in scored:
             why = implausible([c.effect], c.estimate, base_ls, est_rows.proc)
             if why:
                 rejected.append((len(rounds), c, why))
@@ -236,8 +263,13 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
         if top is not None:
             top.reason = ""
             ho_top = cur_ho * (1.0 - top.gain / 100.0)
-            for c in scored:  # another that passes too and predicts as well: the data do not tell them apart
-                d = RULE.equivalent(ho_top, cur_ho * (1.0 - c.gain / 100.0)) if c is not top and not c.reason else None
+            # another that passes too and predicts as well: the data do not tell them apart
+            for c in scored:
+                d = (
+                    RULE.equivalent(ho_top, cur_ho * (1.0 - c.gain / 100.0))
+                    if c is not top and not c.reason
+                    else None
+                )
                 if d is not None:
                     equivalent.append((len(rounds), top, c, d))
             for c in scored:
@@ -249,16 +281,22 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
             cur = top.estimate
             cur_ho = heldout_rmse(est_rows, val_rows, terms, shape)
             continue
-        # pairs only when some candidate found signal (dBIC < -10) that no single effect turns into an accepted
+        # pairs only when some candidate found signal (dBIC < -10) that no single effect turns into
+        # an accepted
         # explanation: a residual at the noise floor costs no pair fits
         if len(accepted) + 2 > max_effects or not any(c.dbic < RULE.accept_dbic for c in scored):
             break
-        pair = best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, len(rounds), pairs)
+        pair = best_pair(
+            est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, len(rounds), pairs
+        )
         if pair is None:
             break
         a_, b_, fit = pair[1], pair[2], pair[3]
         for c, other in ((a_, b_), (b_, a_)):
-            c.reason, c.together = f"alone: {c.reason}; accepted together with {other.effect.name}", other.effect.name
+            c.reason, c.together = (
+                f"alone: {c.reason}; accepted together with {other.effect.name}",
+                other.effect.name,
+            )
         accepted += [a_, b_]
         terms += list(a_.effect.terms) + list(b_.effect.terms)
         shape = dict(fit.shape)
@@ -267,19 +305,54 @@ def diagnose_time(records: list, *, stroke_q: float, candidates=None, max_effect
         for c in (a_, b_):
             c.gain = pair[5]
     final_ls = least_squares(est_rows, terms, shape) if accepted else base_ls
-    final = instrumental_variables(est_rows, terms, shape, ctrl=ctrl, start=final_ls) if accepted else base_iv
+    final = (
+        instrumental_variables(est_rows, terms, shape, ctrl=ctrl, start=final_ls)
+        if accepted
+        else base_iv
+    )
     un = analyse_residual([est_rows] + val_rows, final)
-    flags = {"baseline": baseline_flags(base_iv, est.quantity), "final": baseline_flags(final, est.quantity)}
+    flags = {
+        "baseline": baseline_flags(base_iv, est.quantity),
+        "final": baseline_flags(final, est.quantity),
+    }
     flags["final"] += _shape_flags(final, est_rows, effects.values(), est.quantity)
-    vmax = float(np.max(np.abs(est_rows.sig["v"][est_rows.keep]))) * (1.0 if est.quantity == "force" else
-                                                                       lead_q / (2.0 * math.pi) if lead_q else 0.0)
-    flags["final"] += [f"{c.effect.name}: {why}" for c in accepted if c.effect.regime is not None
-                       for why in [c.effect.regime(vmax)] if why]
-    lost = lost_motion(est_rows, val_rows, final_ls, noise_floor(est_rows), (design or {}).get("lead", 0.0))
+    vmax = float(np.max(np.abs(est_rows.sig["v"][est_rows.keep]))) * (
+        1.0 if est.quantity == "force" else lead_q / (2.0 * math.pi) if lead_q else 0.0
+    )
+    flags["final"] += [
+        f"{c.effect.name}: {why}"
+        for c in accepted
+        if c.effect.regime is not None
+        for why in [c.effect.regime(vmax)]
+        if why
+    ]
+    lost = lost_motion(
+        est_rows, val_rows, final_ls, noise_floor(est_rows), (design or {}).get("lead", 0.0)
+    )
     times = {"ls": t_ls, "iv": t_iv, "diagnose": time.perf_counter() - t0}
-    return TimeDiagnosis(est.quantity, est_rows, val_rows, ctrl, base_ls, base_iv, final, final_ls, accepted,
-                         rounds, skipped, peak, times, dict(design or {}), rejected, pairs, un, flags, lost,
-                         equivalent, vmax)
+    return TimeDiagnosis(
+        est.quantity,
+        est_rows,
+        val_rows,
+        ctrl,
+        base_ls,
+        base_iv,
+        final,
+        final_ls,
+        accepted,
+        rounds,
+        skipped,
+        peak,
+        times,
+        dict(design or {}),
+        rejected,
+        pairs,
+        un,
+        flags,
+        lost,
+        equivalent,
+        vmax,
+    )
 
 
 def _shape_flags(final: Estimate, rows: Rows, effects, quantity: str) -> list:
@@ -292,10 +365,12 @@ def _shape_flags(final: Estimate, rows: Rows, effects, quantity: str) -> list:
         lo, hi = sh.bounds(rows.sig, rows.proc)
         if not 1.05 * lo < final.shape[sh.name] < 0.95 * hi:
             u, f = UNITS[quantity][sh.unit]
-            out.append(f"{sh.name} = {final.shape[sh.name] * f:.3g} {u} is at the end of its search range "
-                       f"({lo * f:.3g}..{hi * f:.3g} {u}): the "
-                       + ("Stribeck velocity" if sh.name == "vs" else sh.label.split(" (")[0])
-                       + " is not identifiable from this record")
+            out.append(
+                f"{sh.name} = {final.shape[sh.name] * f:.3g} {u} is at the end of its search range "
+                f"({lo * f:.3g}..{hi * f:.3g} {u}): the "
+                + ("Stribeck velocity" if sh.name == "vs" else sh.label.split(" (")[0])
+                + " is not identifiable from this record"
+            )
     return out
 
 
@@ -310,8 +385,11 @@ def best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, rn
     for i in range(len(pool)):
         for j in range(i + 1, len(pool)):
             a, b = pool[i], pool[j]
-            sh0 = {**shape, **{k: v for k, v in a.estimate.shape.items() if k not in shape},
-                   **{k: v for k, v in b.estimate.shape.items() if k not in shape}}
+            sh0 = {
+                **shape,
+                **{k: v for k, v in a.estimate.shape.items() if k not in shape},
+                **{k: v for k, v in b.estimate.shape.items() if k not in shape},
+            }
             tt = terms + list(a.effect.terms) + list(b.effect.terms)
             fit, sh = least_squares(est_rows, tt, sh0), sh0  # shapes as found for each alone
             dbic = fit.bic - cur.bic
@@ -326,7 +404,9 @@ def best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, rn
     if best is not None:
         for e in log:
             if e is not best and e[0] == rnd and not e[6]:
-                e[6] = f"{best[1].effect.name} + {best[2].effect.name} predicts better ({best[5]:.1f} %)"
+                e[6] = (
+                    f"{best[1].effect.name} + {best[2].effect.name} predicts better ({best[5]:.1f} %)"
+                )
     return best
 
 
@@ -343,48 +423,76 @@ def baseline_flags(est: Estimate, quantity: str) -> list:
         u, f = unit_of(quantity, t)
         name = symbol(quantity, t)
         if t == "M" and v <= 0.0:
-            out.append(f"{sym} = {v * f:.3g} {u} is not positive: no moving body has zero or negative "
-                       "inertia -- the record does not excite acceleration enough for its sampling and noise "
-                       "(too coarse, too slow), or effort and position disagree in sign")
+            out.append(
+                f"{sym} = {v * f:.3g} {u} is not positive: no moving body has zero or negative "
+                "inertia -- the record does not excite acceleration enough for its sampling and noise "
+                "(too coarse, too slow), or effort and position disagree in sign"
+            )
         elif t == "Fc" and v < 0.0:
-            out.append(f"Fc = {v * f:.3g} {u} is negative: friction that drives the axis -- check the signs of "
-                       "the effort and position columns, or a force the record does not carry "
-                       "(external_force)")
+            out.append(
+                f"Fc = {v * f:.3g} {u} is negative: friction that drives the axis -- check the signs of "
+                "the effort and position columns, or a force the record does not carry "
+                "(external_force)"
+            )
         elif t == "Fv" and v < 0.0:
-            out.append(f"Fv = {v * f:.3g} {u} is negative: damping that feeds energy in -- a missing low-speed "
-                       "(Stribeck) rise or a force the record does not carry pulls it below zero")
+            out.append(
+                f"Fv = {v * f:.3g} {u} is negative: damping that feeds energy in -- a missing low-speed "
+                "(Stribeck) rise or a force the record does not carry pulls it below zero"
+            )
         if t in BASE or t in known:
             if not math.isfinite(sd) or sd == 0.0:
-                out.append(f"{name} is not identifiable from this record: its uncertainty is "
-                           f"{'undefined' if not math.isfinite(sd) else 'zero'} (a degenerate column)")
+                out.append(
+                    f"{name} is not identifiable from this record: its uncertainty is "
+                    f"{'undefined' if not math.isfinite(sd) else 'zero'} (a degenerate column)"
+                )
             elif t in ("M", "Fv", "Fc") and sd >= abs(v):
-                out.append(f"{name} = {v * f:.3g} ± {sd * f:.3g} {u} is not identifiable from this record "
-                           "(the uncertainty exceeds the value)")
+                out.append(
+                    f"{name} = {v * f:.3g} ± {sd * f:.3g} {u} is not identifiable from this record "
+                    "(the uncertainty exceeds the value)"
+                )
     return out
 
 
-def diagnose_time_files(paths, *, plant, gain: str | None = None, candidates=None,
-                        max_effects: int = 3) -> TimeDiagnosis:
+def diagnose_time_files(
+    paths, *, plant, gain: str | None = None, candidates=None, max_effects: int = 3
+) -> TimeDiagnosis:
     """Read the records (the first the estimation run, the others validation runs) and diagnose them against
     ``plant`` (:class:`.plant.Plant`: lead, efficiency and stroke are used)."""
-    from .record import check_same_columns, read_time_record, windowed
+    from .record import check_same_columns, read_time_record
+    from .signal import windowed
 
     if candidates:
         effects = time_effects()
         unknown = [c for c in candidates if c not in effects]
         if unknown:
-            raise InputError(f"--effects: unknown time-record effect '{unknown[0]}'; known: {', '.join(effects)}")
+            raise InputError(
+                f"--effects: unknown time-record effect '{unknown[0]}'; known: {', '.join(effects)}"
+            )
     if max_effects < 0:
         raise InputError("--max-effects must not be negative")
-    recs = [read_time_record(p, lead=plant.lead, gain=gain, efficiency=plant.efficiency) for p in paths]
+    recs = [
+        read_time_record(p, lead=plant.lead, gain=gain, efficiency=plant.efficiency) for p in paths
+    ]
     for r in recs[1:]:
         check_same_columns(recs[0], r)
         if r.quantity != recs[0].quantity:
-            raise InputError(f"a {r.quantity} record cannot validate the {recs[0].quantity} record {recs[0].name}",
-                             source=r.source)
+            raise InputError(
+                f"a {r.quantity} record cannot validate the {recs[0].quantity} record {recs[0].name}",
+                source=r.source,
+            )
     to_q = 1.0 if recs[0].quantity == "force" else 2.0 * math.pi / plant.lead
-    design = {"name": plant.name, "lead": plant.lead, "efficiency": plant.efficiency,
-              "reduction": plant.reduction}
+    design = {
+        "name": plant.name,
+        "lead": plant.lead,
+        "efficiency": plant.efficiency,
+        "reduction": plant.reduction,
+    }
     recs = [windowed(r) for r in recs]
-    return diagnose_time(recs, stroke_q=plant.stroke * to_q, candidates=candidates, max_effects=max_effects,
-                         design=design, lead_q=plant.lead * to_q)
+    return diagnose_time(
+        recs,
+        stroke_q=plant.stroke * to_q,
+        candidates=candidates,
+        max_effects=max_effects,
+        design=design,
+        lead_q=plant.lead * to_q,
+    )

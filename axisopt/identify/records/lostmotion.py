@@ -19,8 +19,9 @@ from ..selection import TIME_RULE
 from .estimators import Estimate
 from .regression import Rows, decimate, signals
 
-LOST_MOTION_MAX = 0.2e-3  # [m] table travel: a preloaded ball-screw axis loses at most a few um; a lost motion
-#                          above 0.2 mm is a loose coupling, key or nut, reported as implausible, not fitted
+# [m] table travel: a preloaded ball-screw axis loses at most a few um; a lost motion above 0.2 mm
+# is a loose coupling, key or nut, reported as implausible, not fitted
+LOST_MOTION_MAX = 0.2e-3
 LOST_MOTION_T = 5.0  # the lost motion's estimate must be this many standard deviations above zero
 
 
@@ -48,17 +49,25 @@ def lost_motion_rows(rows: Rows, m1: float, fmin: float):
     """(e, columns [1, sgn F, f, a1, de/dt]) at the rows where |F| = |f - m1 a1| > fmin (the side of the gap is
     certain there): e = e0 + (b/2) sgn F + f/k - (m1/k) a1 - (c/k) de/dt."""
     rec = rows.record
-    if "lost_motion" not in rows.sig:  # e, the motor side's own acceleration and de/dt, filtered as the effort is
+    # e, the motor side's own acceleration and de/dt, filtered as the effort is
+    if "lost_motion" not in rows.sig:
         segs = rec.segments
-        sm, se = signals(rec.motor_q, rows.proc, segs), signals(rec.motor_q - rec.q, rows.proc, segs)
-        rows.sig["lost_motion"] = decimate(np.column_stack([se["q"], sm["a"], se["v"]]), rows.proc, rows.keep, segs)
+        sm, se = (
+            signals(rec.motor_q, rows.proc, segs),
+            signals(rec.motor_q - rec.q, rows.proc, segs),
+        )
+        rows.sig["lost_motion"] = decimate(
+            np.column_stack([se["q"], sm["a"], se["v"]]), rows.proc, rows.keep, segs
+        )
     e, a1, de = rows.sig["lost_motion"].T
     F = rows.y - m1 * a1
     ok = np.abs(F) > fmin
     return e[ok], np.column_stack([np.ones(ok.sum()), np.sign(F[ok]), rows.y[ok], a1[ok], de[ok]])
 
 
-def lost_motion(est_rows: Rows, val_rows: list, base: Estimate, noise: float, lead_m: float = 0.0) -> LostMotion | None:
+def lost_motion(
+    est_rows: Rows, val_rows: list, base: Estimate, noise: float, lead_m: float = 0.0
+) -> LostMotion | None:
     """The lost motion and windup between motor and table when every record has a ``motor_position`` column;
     judged like an effect: significant, plausible and better on the held-out rows (validation runs, else
     the estimation run's second half).  m1 enters linearly (the a1 column) but also decides which side of the
@@ -107,7 +116,11 @@ def lost_motion(est_rows: Rows, val_rows: list, base: Estimate, noise: float, le
     before, after = float(np.sqrt(np.mean(r_base**2))), float(np.sqrt(np.mean(r_full**2)))
     gain = TIME_RULE.gain(before, after)
     width, width_std = 2.0 * half, 2.0 * half_std
-    to_q = 1.0 if est_rows.record.quantity == "force" else (2.0 * math.pi / lead_m if lead_m > 0 else float("inf"))
+    to_q = (
+        1.0
+        if est_rows.record.quantity == "force"
+        else (2.0 * math.pi / lead_m if lead_m > 0 else float("inf"))
+    )
     lim = LOST_MOTION_MAX * to_q
     reason = ""
     if width <= LOST_MOTION_T * width_std or width <= 0.0:
@@ -117,4 +130,3 @@ def lost_motion(est_rows: Rows, val_rows: list, base: Estimate, noise: float, le
     elif width > lim:
         reason = "would need a lost motion above 0.2 mm of table travel (a loose coupling, key or nut, not backlash)"
     return LostMotion(width, width_std, k, m1, before, after, gain, reason)
-

@@ -54,15 +54,26 @@ from ...units import (
 
 MIN_SAMPLES = 200
 EFFORTS = ("force", "torque", "current")
-COLUMNS = ("time", "position", "reference") + EFFORTS + ("external_force", "motor_position", "normal_load",
-                                                          "temperature", "payload")
+COLUMNS = (
+    ("time", "position", "reference")
+    + EFFORTS
+    + ("external_force", "motor_position", "normal_load", "temperature", "payload")
+)
 # angle units spelled as revolutions that the unit library does not know (it knows 'turn')
 _REV = {"rev": "turn", "revs": "turn", "revolution": "turn", "revolutions": "turn"}
 CURRENT_UNITS = {"A": 1.0, "mA": 1e-3, "kA": 1e3}
 _GAIN_LINE = re.compile(r"^\s*#\s*gain\s*:\s*(.+?)\s*$", re.IGNORECASE)
 _NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.+?)\s*$")
 # columns that make a file one of the reduced-table tests of .data, even when it has a time column
-_TABLE_COLUMNS = {"displacement", "velocity", "friction_force", "drag_torque", "frequency", "real", "magnitude"}
+_TABLE_COLUMNS = {
+    "displacement",
+    "velocity",
+    "friction_force",
+    "drag_torque",
+    "frequency",
+    "real",
+    "magnitude",
+}
 
 
 @dataclass
@@ -79,22 +90,30 @@ class TimeRecord:
     effort_column: str
     lines: np.ndarray
     gain_note: str = ""
-    external: np.ndarray | None = None  # external force on the table in the effort's coordinate [N] or [N m]
-    motor_q: np.ndarray | None = None  # motor encoder position in the record's coordinate (as ``q``)
-    aux: dict = field(default_factory=dict)  # normal_load [N] on the guides, temperature [K]: conditions
-    segments: tuple = ()  # (start, end) of each window a long record is read in (:func:`windowed`); () whole
+    # external force on the table in the effort's coordinate [N] or [N m]
+    external: np.ndarray | None = None
+    # motor encoder position in the record's coordinate (as ``q``)
+    motor_q: np.ndarray | None = None
+    # normal_load [N] on the guides, temperature [K]: conditions
+    aux: dict = field(default_factory=dict)
+    # (start, end) of each window a long record is read in (:func:`.signal.windowed`); () whole
+    segments: tuple = ()
     whole: tuple = ()  # a windowed record's (samples, seconds) as read
 
     def run_note(self) -> str:
         """The run's payload and windows, for the report's line of the run ('' when neither)."""
         out = []
         if "payload" in self.aux:
-            out.append(f"payload {self.aux['payload'][0]:g} kg" + (" (a known mass)" if self.quantity == "force"
-                                                                    else " as motor inertia [kg.m^2]"))
+            out.append(
+                f"payload {self.aux['payload'][0]:g} kg"
+                + (" (a known mass)" if self.quantity == "force" else " as motor inertia [kg.m^2]")
+            )
         if self.segments:
             size = self.segments[0][1] - self.segments[0][0]
-            out.append(f"{len(self.segments)} windows of {size / self.fs:.3g} s fitted, spread over its "
-                       f"{self.whole[0]:,} samples ({self.whole[1]:.4g} s)")
+            out.append(
+                f"{len(self.segments)} windows of {size / self.fs:.3g} s fitted, spread over its "
+                f"{self.whole[0]:,} samples ({self.whole[1]:.4g} s)"
+            )
         return "; ".join(out)
 
     @property
@@ -129,17 +148,30 @@ def is_time_record(path) -> bool:
     return "time" in names and not names & _TABLE_COLUMNS
 
 
-# SI kind of each column, for the range check of every cell (current has no kind: its gain gives it one)
-_KIND = {"time": "time", "position": "length", "reference": "length", "force": "force", "torque": "torque",
-         "external_force": "force", "motor_position": "length", "normal_load": "force",
-         "temperature": "temperature", "payload": "mass"}
+# SI kind of each column, for the range check of every cell (current has no kind: its gain gives it
+# one)
+_KIND = {
+    "time": "time",
+    "position": "length",
+    "reference": "length",
+    "force": "force",
+    "torque": "torque",
+    "external_force": "force",
+    "motor_position": "length",
+    "normal_load": "force",
+    "temperature": "temperature",
+    "payload": "mass",
+}
 
 
 def parse_gain(text: str, *, source=None, where=None) -> tuple:
     """``'0.85 N.m/A'`` -> (0.85, 'torque'); ``'120 N/A'`` -> (120.0, 'force').  SI per ampere."""
     m = _NUMBER_UNIT.match(text or "")
-    bad = InputError(f"gain '{text}' must be a number with a unit per ampere, e.g. '0.85 N.m/A' or '120 N/A'",
-                     source=source, where=where)
+    bad = InputError(
+        f"gain '{text}' must be a number with a unit per ampere, e.g. '0.85 N.m/A' or '120 N/A'",
+        source=source,
+        where=where,
+    )
     if not m:
         raise bad
     value, unit = float(m.group(1)), m.group(2).replace(" ", "")
@@ -157,7 +189,9 @@ def parse_gain(text: str, *, source=None, where=None) -> tuple:
     raise bad
 
 
-def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: float = 1.0) -> TimeRecord:
+def read_time_record(
+    path, *, lead: float, gain: str | None = None, efficiency: float = 1.0
+) -> TimeRecord:
     """Read one time record (see the module docstring).  ``lead`` [m] converts motor angles and chooses
     nothing else; ``gain`` is the CLI's text for current columns (a ``# gain:`` line in the file wins);
     ``efficiency`` takes an external force to the motor side of a torque record."""
@@ -180,20 +214,36 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     try:
         header = next(csv.reader([htext]))
     except csv.Error as exc:
-        raise InputError(f"malformed CSV header ({exc})", source=src, where=f"line {hline}") from None
-    cols = [(c.name, c.unit, c.factor) for c in read_header(
-        header, line=hline, source=src, kinds={c: _KIND.get(c, "current") for c in COLUMNS},
-        unknown=lambda name: f"unknown column '{name}' in a time record; expected {', '.join(COLUMNS)}",
-        factor=lambda name, unit, kind, where: _factor(name, unit, src, where, lead))]
+        raise InputError(
+            f"malformed CSV header ({exc})", source=src, where=f"line {hline}"
+        ) from None
+    cols = [
+        (c.name, c.unit, c.factor)
+        for c in read_header(
+            header,
+            line=hline,
+            source=src,
+            kinds={c: _KIND.get(c, "current") for c in COLUMNS},
+            unknown=lambda name: (
+                f"unknown column '{name}' in a time record; expected {', '.join(COLUMNS)}"
+            ),
+            factor=lambda name, unit, kind, where: _factor(name, unit, src, where, lead),
+        )
+    ]
     names = [c[0] for c in cols]
     for need in ("time", "position"):
         if need not in names:
-            raise InputError(f"missing column '{need}' for a time record", source=src, where=f"line {hline}")
+            raise InputError(
+                f"missing column '{need}' for a time record", source=src, where=f"line {hline}"
+            )
     efforts = [n for n in names if n in EFFORTS]
     if len(efforts) != 1:
         what = "no" if not efforts else f"{len(efforts)} effort columns ({', '.join(efforts)});"
-        raise InputError(f"{what} a time record needs exactly one of force, torque or current", source=src,
-                         where=f"line {hline}")
+        raise InputError(
+            f"{what} a time record needs exactly one of force, torque or current",
+            source=src,
+            where=f"line {hline}",
+        )
     effort_col = efforts[0]
     quantity, note = ("force", "") if effort_col == "force" else ("torque", "")
     gscale = 1.0
@@ -205,8 +255,11 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
             gscale, quantity = parse_gain(gain, source="--gain")
             note = f"current x gain {gain} (--gain)"
         else:
-            raise InputError("current column needs a gain: a line '# gain: 0.85 N.m/A' in the file or --gain",
-                             source=src, where=f"line {hline}, column {names.index('current') + 1}")
+            raise InputError(
+                "current column needs a gain: a line '# gain: 0.85 N.m/A' in the file or --gain",
+                source=src,
+                where=f"line {hline}, column {names.index('current') + 1}",
+            )
     n = len(rows) - 1
     if n > MAX_TIME_SAMPLES:
         raise InputError(f"too many samples ({n:,}; at most {MAX_TIME_SAMPLES:,})", source=src)
@@ -215,15 +268,24 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     slow = data is None
     if slow:
         data = np.empty((n, len(cols)))
-    for r, (i, text) in enumerate(rows[1:] if slow else ()):  # the cell by cell check names the bad cell
+    # the cell by cell check names the bad cell
+    for r, (i, text) in enumerate(rows[1:] if slow else ()):
         cells = text.split(",")
         check_width(cells, len(cols), source=src, line=i)
         lines[r] = i
         for j, cell in enumerate(cells):
             where = f"line {i}, column {j + 1} ({names[j]})"
             val = read_number(cell, source=src, where=where)
-            if names[j] in _KIND:  # the tables' range check (data.py): a value no axis can produce is refused
-                check_plausible(val * cols[j][2], _KIND[names[j]], cell.strip(), source=src, key=where, tiny=False)
+            # the tables' range check (data.py): a value no axis can produce is refused
+            if names[j] in _KIND:
+                check_plausible(
+                    val * cols[j][2],
+                    _KIND[names[j]],
+                    cell.strip(),
+                    source=src,
+                    key=where,
+                    tiny=False,
+                )
             data[r, j] = val
     if n < MIN_SAMPLES:
         raise InputError(f"{n} samples; a time record needs at least {MIN_SAMPLES}", source=src)
@@ -234,44 +296,68 @@ def read_time_record(path, *, lead: float, gain: str | None = None, efficiency: 
     bad = np.nonzero(dt <= 0)[0]
     if len(bad):
         k = bad[0] + 1
-        raise InputError(f"time {data[k, jt - 1]:g} does not increase (previous {data[k - 1, jt - 1]:g})",
-                         source=src, where=f"line {lines[k]}, column {jt} (time)")
+        raise InputError(
+            f"time {data[k, jt - 1]:g} does not increase (previous {data[k - 1, jt - 1]:g})",
+            source=src,
+            where=f"line {lines[k]}, column {jt} (time)",
+        )
     med = float(np.median(dt))
     gap = np.nonzero(np.abs(dt - med) > 0.25 * med)[0]
     if len(gap):
         k = gap[0] + 1
-        raise InputError(f"irregular sampling: step {dt[k - 1]:.4g} s against the median {med:.4g} s (the "
-                         "filters need a uniform rate)", source=src, where=f"line {lines[k]}, column {jt} (time)")
-    # position and reference to the effort's coordinate: table [m] for force, motor angle [rad] for torque
+        raise InputError(
+            f"irregular sampling: step {dt[k - 1]:.4g} s against the median {med:.4g} s (the "
+            "filters need a uniform rate)",
+            source=src,
+            where=f"line {lines[k]}, column {jt} (time)",
+        )
+    # position and reference to the effort's coordinate: table [m] for force, motor angle [rad] for
+    # torque
     to_q = 1.0 if quantity == "force" else 2.0 * math.pi / lead
     q = col["position"] * to_q
     ref = col["reference"] * to_q if "reference" in col else None
     effort = col[effort_col] * gscale
     je = names.index(effort_col) + 1
-    if float(np.ptp(effort)) == 0.0:  # no force signal at all: nothing to fit, no error to divide by
-        raise InputError(f"the {effort_col} column is constant ({data[0, je - 1]:g} throughout): a time record "
-                         "needs the effort of the moving axis", source=src, where=f"column {je} ({effort_col})")
+    # no force signal at all: nothing to fit, no error to divide by
+    if float(np.ptp(effort)) == 0.0:
+        raise InputError(
+            f"the {effort_col} column is constant ({data[0, je - 1]:g} throughout): a time record "
+            "needs the effort of the moving axis",
+            source=src,
+            where=f"column {je} ({effort_col})",
+        )
     if float(np.ptp(q)) == 0.0:
         jq = names.index("position") + 1
-        raise InputError("the position column is constant: the axis does not move in this record", source=src,
-                         where=f"column {jq} (position)")
+        raise InputError(
+            "the position column is constant: the axis does not move in this record",
+            source=src,
+            where=f"column {jq} (position)",
+        )
     motor_q = col["motor_position"] * to_q if "motor_position" in col else None
     if motor_q is not None and float(np.ptp(motor_q)) == 0.0:
         jm = names.index("motor_position") + 1
-        raise InputError("the motor_position column is constant: the motor does not move in this record",
-                         source=src, where=f"column {jm} (motor_position)")
+        raise InputError(
+            "the motor_position column is constant: the motor does not move in this record",
+            source=src,
+            where=f"column {jm} (motor_position)",
+        )
     ext = None
     if "external_force" in col:
-        ext = col["external_force"] * (1.0 if quantity == "force" else lead / (2.0 * math.pi * efficiency))
+        ext = col["external_force"] * (
+            1.0 if quantity == "force" else lead / (2.0 * math.pi * efficiency)
+        )
     aux = {}
     if "normal_load" in col:
         aux["normal"] = col["normal_load"]
     if "payload" in col:  # a known mass the run carries, constant through the run
         aux["payload"] = _payload(col["payload"], data, names, lines, lead, quantity, src)
     if "temperature" in col:  # absolute [K]: the column's unit is a temperature, its offset applied
-        aux["temperature"] = col["temperature"] + _KELVIN.get(cols[names.index("temperature")][1].strip(), 0.0)
-    return TimeRecord(src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext, motor_q,
-                      aux)
+        aux["temperature"] = col["temperature"] + _KELVIN.get(
+            cols[names.index("temperature")][1].strip(), 0.0
+        )
+    return TimeRecord(
+        src, t, q, effort, quantity, ref, tuple(names), effort_col, lines, note, ext, motor_q, aux
+    )
 
 
 _KELVIN = {"degC": 273.15, "C": 273.15, "celsius": 273.15}
@@ -284,11 +370,16 @@ def _payload(m: np.ndarray, data, names, lines, lead: float, quantity: str, src:
     change = np.nonzero(m != m[0])[0]
     if len(change):
         k = int(change[0])
-        raise InputError(f"conflicting payloads in one run: {data[0, j]:g} at the start, {data[k, j]:g} here; a "
-                         "run carries one payload (give each payload its own record)", source=src,
-                         where=f"line {lines[k]}, column {j + 1} (payload)")
+        raise InputError(
+            f"conflicting payloads in one run: {data[0, j]:g} at the start, {data[k, j]:g} here; a "
+            "run carries one payload (give each payload its own record)",
+            source=src,
+            where=f"line {lines[k]}, column {j + 1} (payload)",
+        )
     if m[0] < 0:
-        raise InputError(f"payload {data[0, j]:g} is negative", source=src, where=f"column {j + 1} (payload)")
+        raise InputError(
+            f"payload {data[0, j]:g} is negative", source=src, where=f"column {j + 1} (payload)"
+        )
     return m * (1.0 if quantity == "force" else (lead / (2.0 * math.pi)) ** 2)
 
 
@@ -300,13 +391,17 @@ def _fast_cells(rows: list, cols: list, names: list):
     if not rows or any(text.count(",") != k - 1 for _, text in rows):
         return None
     try:
-        data = np.array(",".join(text for _, text in rows).split(","), dtype=float).reshape(len(rows), k)
+        data = np.array(",".join(text for _, text in rows).split(","), dtype=float).reshape(
+            len(rows), k
+        )
     except ValueError:
         return None
     if not np.isfinite(data).all():
         return None
     for j, name in enumerate(names):
-        if name in _KIND and np.max(np.abs(data[:, j])) * abs(cols[j][2]) > PLAUSIBLE_MAX.get(_KIND[name], 1e12):
+        if name in _KIND and np.max(np.abs(data[:, j])) * abs(cols[j][2]) > PLAUSIBLE_MAX.get(
+            _KIND[name], 1e12
+        ):
             return None
     return data
 
@@ -334,7 +429,9 @@ def _factor(name, unit, src, where, lead) -> float:
     except ValueError as exc:
         raise InputError(f"{exc} in column '{name}'", source=src, where=where) from None
     if unit.strip() not in CURRENT_UNITS:
-        raise InputError(f"unknown unit '{unit}' in column 'current' (A or mA)", source=src, where=where)
+        raise InputError(
+            f"unknown unit '{unit}' in column 'current' (A or mA)", source=src, where=where
+        )
     return CURRENT_UNITS[unit.strip()]
 
 
@@ -343,135 +440,9 @@ def check_same_columns(est: TimeRecord, other: TimeRecord) -> None:
     if set(est.header) != set(other.header):
         diff = sorted(set(est.header) ^ set(other.header))
         j = next((k for k, n in enumerate(other.header) if n in diff), len(other.header) - 1) + 1
-        raise InputError(f"validation run has columns {', '.join(other.header)} but the estimation run "
-                         f"{est.name} has {', '.join(est.header)}", source=other.source,
-                         where=f"line {other.lines[0] - 1 if len(other.lines) else 1}, column {j}")
-
-
-# ----------------------------------------------------------------------------------- signal processing
-BUTTER_ORDER = 4
-
-
-def lowpass(x, fs: float, fc: float, order: int = BUTTER_ORDER, segments=()) -> np.ndarray:
-    """Zero-phase Butterworth low-pass: the squared magnitude :math:`|H|^2 = 1/(1 + (f/f_c)^{2n})` that a
-    forward-backward (filtfilt) pass of an order-``n`` Butterworth applies, applied exactly by FFT.  The
-    ends are extended by odd reflection over ``3 fs/fc`` samples (as filtfilt pads) so they do not ring.
-    ``x``: (n,) or (n, k) along axis 0; ``segments``: (start, end) index ranges filtered each on its own (the
-    windows of a long record, :func:`windowed`)."""
-    if len(segments) > 1:
-        return np.concatenate([lowpass(x[a:b], fs, fc, order) for a, b in segments], axis=0)
-    x = np.asarray(x, dtype=float)
-    one = x.ndim == 1
-    X = x[:, None] if one else x
-    n = X.shape[0]
-    pad = min(n - 1, int(3.0 * fs / fc) + 1)
-    head = 2.0 * X[0] - X[pad:0:-1]
-    tail = 2.0 * X[-1] - X[-2 : -pad - 2 : -1]
-    ext = np.concatenate([head, X, tail])
-    m = ext.shape[0]
-    nfft = 1 << (m - 1).bit_length()
-    spec = np.fft.rfft(ext, n=nfft, axis=0)
-    f = np.fft.rfftfreq(nfft, 1.0 / fs)
-    h2 = 1.0 / (1.0 + (f / fc) ** (2 * order))
-    y = np.fft.irfft(spec * h2[:, None], n=nfft, axis=0)[pad : pad + n]
-    return y[:, 0] if one else y
-
-
-def welch(x, fs, nseg=1024):
-    nseg = min(nseg, len(x))
-    step = nseg // 2
-    win = np.hanning(nseg)
-    segs = [x[i : i + nseg] for i in range(0, len(x) - nseg + 1, step)]
-    ps = np.mean([np.abs(np.fft.rfft((s - s.mean()) * win)) ** 2 for s in segs], axis=0)
-    return np.fft.rfftfreq(nseg, 1.0 / fs), ps / (fs * np.sum(win**2))
-
-
-@dataclass
-class CutoffChoice:
-    fc: float  # [Hz] low-pass cut-off before differentiation
-    f_motion: float  # [Hz] 99 % of the velocity signal power lies below
-    f_snr: float  # [Hz] highest frequency where the velocity spectrum is 10x its noise floor
-    rule: str
-
-
-def choose_cutoff(q, fs: float, segments=()) -> CutoffChoice:
-    """Cut-off from the data: the velocity spectrum (backward differences of the position) is compared with
-    its noise floor -- white position noise (quantisation) gives :math:`N_0 \\sin^2(\\pi f/f_s)`, fitted on
-    the upper half of the band -- and the cut-off is the highest frequency where the signal is still 10x
-    that floor, but at least 5x the motion bandwidth (99 % of the signal power) and at most fs/8."""
-    v = np.concatenate([np.diff(q[a:b]) for a, b in segments]) * fs if segments else np.diff(q) * fs
-    f, ps = welch(v, fs)
-    shape = np.sin(np.pi * f / fs) ** 2 + 1e-30
-    upper = f > fs / 4
-    n0 = float(np.median(ps[upper] / shape[upper]))
-    noise = n0 * shape
-    sig = np.clip(ps - noise, 0.0, None)
-    cum = np.cumsum(sig)
-    f99 = float(f[np.searchsorted(cum, 0.99 * cum[-1])]) if cum[-1] > 0 else fs / 50
-    smooth = np.convolve(ps, np.ones(5) / 5, mode="same")
-    above = np.nonzero(smooth > 10.0 * noise)[0]
-    f_snr = float(f[above[-1]]) if len(above) else f99
-    fc = min(max(f_snr, 5.0 * f99), fs / 8)
-    rule = ("highest frequency with velocity spectrum > 10x noise floor" if fc == f_snr else
-            "5x the motion bandwidth" if fc == 5.0 * f99 else "fs/8 cap")
-    return CutoffChoice(fc, f99, f_snr, rule)
-
-
-def derivatives(q, fs: float, fc: float, orders: int = 2, segments=()) -> list:
-    """[q_f, v, a, ...] up to ``orders`` (central differences of the zero-phase filtered position), each of
-    ``segments`` on its own."""
-    if len(segments) > 1:
-        parts = [derivatives(q[a:b], fs, fc, orders) for a, b in segments]
-        return [np.concatenate([p[i] for p in parts]) for i in range(orders + 1)]
-    out = [lowpass(q, fs, fc)]
-    for _ in range(orders):
-        out.append(np.gradient(out[-1]) * fs)
-    return out
-
-
-def decimation_factor(fs: float, fc: float) -> int:
-    """Parallel decimation keeps every nd-th row after a low-pass at 0.8 of the new Nyquist frequency; nd is
-    the largest with that cut-off still at or above ``fc``."""
-    return max(1, int(0.8 * fs / (2.0 * fc)))
-
-
-# ------------------------------------------------------------------------------------------ long records
-LONG_SAMPLES = 150_000  # a record longer than this is identified in windows spread over it
-WINDOWS = 8  # how many
-WINDOW_SAMPLES = 8_000  # samples in each (8 s at 1 kHz), a window starts where the axis rests
-
-
-def windowed(rec: TimeRecord, long_samples: int = LONG_SAMPLES, count: int = WINDOWS,
-             size: int = WINDOW_SAMPLES) -> TimeRecord:
-    """``rec`` itself when it has at most ``long_samples`` samples; else ``count`` windows of ``size``
-    samples spread evenly over it, each starting at the first rest (the position still for 50 ms) at or after
-    its nominal start, as one record whose ``segments`` keep them apart: every filter, derivative and
-    closed-loop simulation then runs in each window on its own, and the times stay those of the record (a
-    warm-up's temperature, a drift's time from the start, a line's phase).  The slow physics a long record
-    is taken for (a warm-up over minutes) is sampled by the windows; the cost is that of ``count x size``
-    samples.  Windows on a record: :attr:`TimeRecord.segments`."""
-    n = rec.n
-    if n <= long_samples:
-        return rec
-    size = min(size, n // count)
-    m = max(1, int(0.05 * rec.fs))
-    still = np.abs(rec.q[m:] - rec.q[:-m]) <= 1e-4 * max(float(np.ptp(rec.q)), 1e-12)
-    starts = []
-    for k in range(count):
-        a = (k * (n - size)) // max(count - 1, 1)
-        rest = np.nonzero(still[a : a + size // 2])[0]
-        a = a + int(rest[0]) if len(rest) else a
-        starts.append(min(a, n - size))
-    idx = np.concatenate([np.arange(a, a + size) for a in starts])
-    segs, pos = [], 0
-    for _ in starts:
-        segs.append((pos, pos + size))
-        pos += size
-
-    def cut(x):
-        return None if x is None else x[idx]
-
-    return TimeRecord(rec.source, rec.t[idx], rec.q[idx], rec.effort[idx], rec.quantity, cut(rec.reference),
-                      rec.header, rec.effort_column, rec.lines[idx], rec.gain_note, cut(rec.external),
-                      cut(rec.motor_q), {k: v[idx] for k, v in rec.aux.items()}, tuple(segs),
-                      (n, float(np.ptp(rec.t))))
+        raise InputError(
+            f"validation run has columns {', '.join(other.header)} but the estimation run "
+            f"{est.name} has {', '.join(est.header)}",
+            source=other.source,
+            where=f"line {other.lines[0] - 1 if len(other.lines) else 1}, column {j}",
+        )

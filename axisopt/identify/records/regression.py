@@ -7,7 +7,7 @@ coordinate of the record's effort (table [m] for force, motor angle [rad] for to
 the baseline's terms here (:data:`BASE_TERMS`), each effect's in its declaration (:mod:`.effects`, ``time``).
 
 Processing: the position is low-pass filtered with a zero-phase Butterworth whose cut-off comes from the data
-(:func:`.timerecord.choose_cutoff`), differentiated by central differences, every column of the regression
+(:func:`.signal.choose_cutoff`), differentiated by central differences, every column of the regression
 and the effort are low-pass filtered alike and every nd-th row kept (parallel decimation); rows at low speed
 (``|v| < 0.5 %`` of the peak speed) and around reversals, where sgn(v) of the estimate is not that of the
 axis, are left out.  An ``external_force`` column is added to the effort before the regression.
@@ -21,7 +21,8 @@ import numpy as np
 
 from ...errors import InputError
 from ..effects import Term, time_effects
-from .record import TimeRecord, choose_cutoff, decimation_factor, derivatives, lowpass
+from .record import TimeRecord
+from .signal import choose_cutoff, decimation_factor, derivatives, lowpass
 
 VMIN_REL = 0.005  # rows slower than this share of the peak speed are left out
 SIGN_KEEP = 0.98  # a row is kept when the filtered sgn(v) is at least this far from zero
@@ -30,22 +31,45 @@ BASE_TERMS = (
     Term("M", "moving mass", "mass", lambda sig, proc, shape: sig["a"]),
     Term("Fv", "viscous friction", "damping", lambda sig, proc, shape: sig["v"]),
     Term("Fc", "Coulomb friction", "effort", lambda sig, proc, shape: np.sign(sig["v"])),
-    Term("offset", "offset (gravity, sensor, Coulomb asymmetry)", "effort",
-         lambda sig, proc, shape: np.ones_like(sig["v"])),
+    Term(
+        "offset",
+        "offset (gravity, sensor, Coulomb asymmetry)",
+        "effort",
+        lambda sig, proc, shape: np.ones_like(sig["v"]),
+    ),
 )
 BASE = tuple(t.name for t in BASE_TERMS)
 
 # unit kind -> (unit, factor from SI) of the record's coordinate
 UNITS = {
-    "force": {"mass": ("kg", 1.0), "damping": ("N.s/m", 1.0), "effort": ("N", 1.0), "snap": ("kg.s^2", 1.0),
-              "speed": ("mm/s", 1e3), "position": ("mm", 1e3), "drag2": ("N.s^2/m^2", 1.0),
-              "frequency": ("Hz", 1.0), "time": ("s", 1.0), "ratio": ("-", 1.0), "per_kelvin": ("1/K", 1.0),
-              "effort_per_kelvin": ("N/K", 1.0)},
-    "torque": {"mass": ("kg.m^2", 1.0), "damping": ("N.m.s/rad", 1.0), "effort": ("N.m", 1.0),
-               "snap": ("kg.m^2.s^2", 1.0), "speed": ("rad/s", 1.0), "position": ("rad", 1.0),
-               "drag2": ("N.m.s^2/rad^2", 1.0),
-               "frequency": ("Hz", 1.0), "time": ("s", 1.0), "ratio": ("-", 1.0), "per_kelvin": ("1/K", 1.0),
-               "effort_per_kelvin": ("N.m/K", 1.0)},
+    "force": {
+        "mass": ("kg", 1.0),
+        "damping": ("N.s/m", 1.0),
+        "effort": ("N", 1.0),
+        "snap": ("kg.s^2", 1.0),
+        "speed": ("mm/s", 1e3),
+        "position": ("mm", 1e3),
+        "drag2": ("N.s^2/m^2", 1.0),
+        "frequency": ("Hz", 1.0),
+        "time": ("s", 1.0),
+        "ratio": ("-", 1.0),
+        "per_kelvin": ("1/K", 1.0),
+        "effort_per_kelvin": ("N/K", 1.0),
+    },
+    "torque": {
+        "mass": ("kg.m^2", 1.0),
+        "damping": ("N.m.s/rad", 1.0),
+        "effort": ("N.m", 1.0),
+        "snap": ("kg.m^2.s^2", 1.0),
+        "speed": ("rad/s", 1.0),
+        "position": ("rad", 1.0),
+        "drag2": ("N.m.s^2/rad^2", 1.0),
+        "frequency": ("Hz", 1.0),
+        "time": ("s", 1.0),
+        "ratio": ("-", 1.0),
+        "per_kelvin": ("1/K", 1.0),
+        "effort_per_kelvin": ("N.m/K", 1.0),
+    },
 }
 SYMBOL = {"force": {"M": "M"}, "torque": {"M": "J"}}
 
@@ -82,7 +106,8 @@ def symbol(quantity: str, name: str) -> str:
     return SYMBOL[quantity].get(name, name)
 
 
-# ------------------------------------------------------------------------------------- regression rows
+# ------------------------------------------------------------------------------------- regression
+# rows
 @dataclass
 class Processing:
     fs: float
@@ -93,7 +118,8 @@ class Processing:
     rule: str
     vmin: float
     stroke_q: float  # stroke in the record's coordinate
-    lead_q: float = 0.0  # the screw's lead in the record's coordinate (table [m] or motor angle 2 pi [rad])
+    # the screw's lead in the record's coordinate (table [m] or motor angle 2 pi [rad])
+    lead_q: float = 0.0
 
 
 @dataclass
@@ -105,7 +131,8 @@ class Rows:
     keep: np.ndarray  # full-rate indices of the kept rows
     y: np.ndarray  # effort at the kept rows after the decimation filter
     proc: Processing
-    cache: dict = field(default_factory=dict, repr=False)  # shape-free columns at the kept rows, by term
+    # shape-free columns at the kept rows, by term
+    cache: dict = field(default_factory=dict, repr=False)
 
     @property
     def n(self) -> int:
@@ -151,8 +178,12 @@ def signals(q: np.ndarray, proc: Processing, segments=()) -> dict:
 
 def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
     if abs(rec.fs - proc.fs) > 1e-3 * proc.fs:
-        raise InputError(f"sampled at {rec.fs:.6g} Hz, the estimation run at {proc.fs:.6g} Hz (the same filters "
-                         "are applied to every run)", source=rec.source, where="column time")
+        raise InputError(
+            f"sampled at {rec.fs:.6g} Hz, the estimation run at {proc.fs:.6g} Hz (the same filters "
+            "are applied to every run)",
+            source=rec.source,
+            where="column time",
+        )
     segs = rec.segments
     sig = signals(rec.q, proc, segs)
     sig["t"] = rec.t - rec.t[0]  # time from the run's start
@@ -164,17 +195,22 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
     sf = lowpass(np.sign(v), proc.fs, proc.fdec, segments=segs)
     edge = int(2.0 * proc.fs / min(proc.fc, proc.fdec)) + proc.nd
     idx = np.concatenate([np.arange(a + edge, b - edge, proc.nd) for a, b in segs or ((0, rec.n),)])
-    # a row is kept when the axis moves one way for a whole filter window around it: the zero-phase filters
+    # a row is kept when the axis moves one way for a whole filter window around it: the zero-phase
+    # filters
     # smear starts and stops, where sgn(v) of the estimate leads the axis's
     w = int(proc.fs / proc.fdec)
     bad = (np.abs(v) < proc.vmin).astype(float)
     bad = np.convolve(bad, np.ones(2 * w + 1), mode="same") > 0
     keep = idx[~bad[idx] & (np.abs(sf[idx]) >= SIGN_KEEP)]
     if len(keep) < 20:
-        raise InputError(f"only {len(keep)} usable rows after filtering and decimation (the axis must move: "
-                         f"speeds above {proc.vmin:.3g} in the record's unit/s)", source=rec.source)
+        raise InputError(
+            f"only {len(keep)} usable rows after filtering and decimation (the axis must move: "
+            f"speeds above {proc.vmin:.3g} in the record's unit/s)",
+            source=rec.source,
+        )
     f = rec.effort + rec.external if rec.external is not None else rec.effort
-    if "payload" in rec.aux:  # a known mass: its inertial force leaves the effort, M stays the axis's own
+    # a known mass: its inertial force leaves the effort, M stays the axis's own
+    if "payload" in rec.aux:
         f = f - rec.aux["payload"] * sig["a"]
     y = lowpass(f, proc.fs, proc.fdec, segments=segs)[keep]
     return Rows(rec, sig, keep, y, proc)
@@ -184,12 +220,19 @@ def matrix(rows: Rows, terms, shape: dict, sig: dict | None = None) -> np.ndarra
     """The regression columns of ``terms`` at the kept rows (filtered and decimated).  On the record's own
     signals, the columns no shape parameter moves are filtered once and kept with the rows."""
     if sig is not None:
-        return decimate(full_matrix(sig, terms, rows.proc, shape), rows.proc, rows.keep, rows.record.segments)
+        return decimate(
+            full_matrix(sig, terms, rows.proc, shape), rows.proc, rows.keep, rows.record.segments
+        )
     fixed = _shape_free()
     cache = rows.cache
     need = [t for t in terms if t not in cache or t not in fixed]
     if need:
-        new = decimate(full_matrix(rows.sig, need, rows.proc, shape), rows.proc, rows.keep, rows.record.segments)
+        new = decimate(
+            full_matrix(rows.sig, need, rows.proc, shape),
+            rows.proc,
+            rows.keep,
+            rows.record.segments,
+        )
         got = dict(zip(need, new.T))
         cache.update((t, c) for t, c in got.items() if t in fixed)
     else:

@@ -22,8 +22,10 @@ from .. import residual as rs
 from ..effects.disturbance import bump, frequency_band, golden, line_scan, spot_scan
 from .estimators import predict
 
-TIED_RATIO = 0.5  # a line is at a fixed frequency when every speed group holds at least this share of its amplitude
-PASSES_MIN, AGREE_MIN = 3, 0.8  # a spot: at least this many passes over it, this share of them agreeing in sign
+# a line is at a fixed frequency when every speed group holds at least this share of its amplitude
+TIED_RATIO = 0.5
+# a spot: at least this many passes over it, this share of them agreeing in sign
+PASSES_MIN, AGREE_MIN = 3, 0.8
 DECAY_TAUS = np.geomspace(0.3, 30.0, 13)  # [s] time constants the decay probe tries
 
 
@@ -52,7 +54,7 @@ def _rescore(p: rs.Probe, r, G, W, neff, scans: int) -> rs.Probe:
 def _joint(r, G, W) -> np.ndarray:
     """Coefficients of ``G`` in the least-squares fit of ``r`` on the model's span and ``G`` together."""
     coef, *_ = np.linalg.lstsq(np.column_stack([W.Q, G]), r, rcond=None)
-    return coef[W.Q.shape[1]:]
+    return coef[W.Q.shape[1] :]
 
 
 def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
@@ -68,7 +70,9 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
     i0, score, freqs = 0, None, None
     for rw in runs:
         t = rw.sig["t"][rw.keep]
-        f, s = line_scan(t, r[i0 : i0 + rw.n], lo, hi, oversample=4.0 * max(spans) / max(float(np.ptp(t)), 1e-9))
+        f, s = line_scan(
+            t, r[i0 : i0 + rw.n], lo, hi, oversample=4.0 * max(spans) / max(float(np.ptp(t)), 1e-9)
+        )
         rr = float(np.sum((r[i0 : i0 + rw.n] - r[i0 : i0 + rw.n].mean()) ** 2))
         m = min(len(f), len(score)) if score is not None else len(f)
         score = s[:m] * rr if score is None else score[:m] + s[:m] * rr
@@ -80,7 +84,9 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
         def cols(rw):
             ph = 2.0 * np.pi * f * rw.sig["t"]
             return np.column_stack([np.sin(ph), np.cos(ph)])
+
         return _blocks(runs, pooled, cols)
+
     f0, df = float(freqs[int(np.argmax(score))]), 1.0 / max(spans)
     f0 = golden(lambda f: -rs.share(r, lines(f), W), f0 - 0.5 * df, f0 + 0.5 * df, 16)
     G = lines(f0)
@@ -94,7 +100,13 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
     for g in range(3):
         m = grp == g
         c, *_ = np.linalg.lstsq(G[m], r[m] - r[m].mean(), rcond=None)
-        amps.append(float(np.sqrt(np.mean([math.hypot(c[2 * j], c[2 * j + 1]) ** 2 for j in range(len(runs))]))))
+        amps.append(
+            float(
+                np.sqrt(
+                    np.mean([math.hypot(c[2 * j], c[2 * j + 1]) ** 2 for j in range(len(runs))])
+                )
+            )
+        )
         speeds.append(float(np.median(v[m])))
     top = max(amps) or 1.0
     p.detail["fixed"] = min(amps) >= TIED_RATIO * top
@@ -102,7 +114,8 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
     p.detail["speed"] = speeds[k]
     p.detail["group_amplitudes"] = amps
     p.detail["period"] = speeds[k] / f0
-    p.detail["fit_band"] = frequency_band(max(spans), proc)[1]  # a line above it is seen, not fitted
+    # a line above it is seen, not fitted
+    p.detail["fit_band"] = frequency_band(max(spans), proc)[1]
     return p
 
 
@@ -121,16 +134,20 @@ def spot_probe(runs, r, W, neff, pooled) -> rs.Probe:
     def gcols(rw):
         b, sg = bump(rw.sig["q"], x0, w), np.sign(rw.sig["v"])
         return np.column_stack([b * (sg > 0), b * (sg < 0)])
+
     G = pooled(runs, gcols)
     p = _rescore(rs.probe("spot", r, G, W, 1.0, scans=scans, x0=x0, width=w), r, G, W, neff, scans)
-    seen = [float(G[:, k] @ G[:, k]) >= 1.0 for k in (0, 1)]  # a direction the rows cross the spot in
+    # a direction the rows cross the spot in
+    seen = [float(G[:, k] @ G[:, k]) >= 1.0 for k in (0, 1)]
     coef = np.zeros(2)
     if any(seen):
         coef[np.array(seen)] = _joint(r, G[:, np.array(seen)], W)
-    up, down = float(coef[0]), -float(coef[1])  # the friction each direction adds (opposing the motion)
+    # the friction each direction adds (opposing the motion)
+    up, down = float(coef[0]), -float(coef[1])
     p.detail["crossed"] = "both" if all(seen) else "+" if seen[0] else "-"
     p.detail.update(height_plus=up, height_minus=down)
-    # a spot is crossed on every pass: the height fitted on each pass over x0 +- 2w alone must agree in sign
+    # a spot is crossed on every pass: the height fitted on each pass over x0 +- 2w alone must agree
+    # in sign
     # (a transient of one move that happens to end there does not)
     near = np.abs(q - x0) < 2.0 * w
     g = np.exp(-0.5 * ((q - x0) / w) ** 2) * s
@@ -147,9 +164,11 @@ def spot_probe(runs, r, W, neff, pooled) -> rs.Probe:
     if len(votes) < PASSES_MIN or p.detail["agree"] < AGREE_MIN:
         p.log10_p = 0.0  # not a spot on the stroke: too few passes agree
     big = max(abs(up), abs(down))
-    p.detail["directions"] = ("both" if min(abs(up), abs(down)) >= 0.3 * big else
-                              "+" if abs(up) > abs(down) else "-")
-    # opposes the motion both ways (a force of one sign does not); when crossed one way only, its sign there
+    p.detail["directions"] = (
+        "both" if min(abs(up), abs(down)) >= 0.3 * big else "+" if abs(up) > abs(down) else "-"
+    )
+    # opposes the motion both ways (a force of one sign does not); when crossed one way only, its
+    # sign there
     p.detail["friction"] = up * down > 0 if all(seen) else up + down > 0
     return p
 
@@ -162,9 +181,11 @@ def decay_probe(runs, r, W, neff, pooled) -> rs.Probe:
     taus = [t for t in DECAY_TAUS if t <= 2.0 * span]
     best = None
     for tau in taus:
+
         def cols(rw, tau=tau):
             e = np.exp(-rw.sig["t"] / tau)
             return np.column_stack([e, np.sign(rw.sig["v"]) * e])
+
         G = pooled(runs, cols)
         p = rs.probe("decay", r, G, W, 1.0, scans=len(taus), tau=float(tau))
         if best is None or p.share > best[0].share:
@@ -177,7 +198,8 @@ def decay_probe(runs, r, W, neff, pooled) -> rs.Probe:
     return p
 
 
-STEADY_SHARE = 0.5  # a spectral peak is a steady line when one sin, cos pair through the run holds this share
+# a spectral peak is a steady line when one sin, cos pair through the run holds this share
+STEADY_SHARE = 0.5
 
 
 def steady_line(rows, est, f_peak: float):
@@ -193,7 +215,9 @@ def steady_line(rows, est, f_peak: float):
     def share(f):
         ph = 2.0 * np.pi * f * t
         return rs.share(r, np.column_stack([np.sin(ph), np.cos(ph)]), None)
-    bin_ = rows.proc.fs / 512.0  # the resolution of the spectrum the peak comes from (Welch, 512 samples)
+
+    # the resolution of the spectrum the peak comes from (Welch, 512 samples)
+    bin_ = rows.proc.fs / 512.0
     freqs, sc = line_scan(t, r, max(f_peak - 2.0 * bin_, df), f_peak + 2.0 * bin_)
     f1 = float(freqs[int(np.argmax(sc))])
     f0 = golden(lambda f: -share(f), f1 - 0.5 * df, f1 + 0.5 * df, 16)

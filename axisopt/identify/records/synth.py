@@ -65,16 +65,22 @@ class AxisTruth:
     mode_hz: float = 0.0  # 0: rigid axis
     mode_mass: float = 150.0  # motor-side share of ``mass`` [kg]
     mode_zeta: float = 0.03
-    ripple: float = 0.0  # [N] amplitude of a force ripple periodic in position (lead error, recirculation)
+    # [N] amplitude of a force ripple periodic in position (lead error, recirculation)
+    ripple: float = 0.0
     ripple_period: float = 0.01  # [m]
     ripple_phase: float = 0.0  # [rad]
-    ripple_friction: bool = False  # True: the ripple is a friction (follows sgn v); False: a force in +x
+    # True: the ripple is a friction (follows sgn v); False: a force in +x
+    ripple_friction: bool = False
     quadratic_drag: float = 0.0  # [N s^2/m^2] symmetric drag c v|v| (seals, lubricant churning)
-    backlash: float = 0.0  # [m] total lost motion between motor and table (needs mode_hz > 0: the motor
-    #                        side mass crosses the gap with the table left behind)
-    process_force: float = 0.0  # [N] amplitude of a seeded piecewise-constant external force on the table
-    # effects a caller writes itself (tests hide their own physics this way): ``extra_force(t, x, v)`` [N] a
-    # force in -x the drive must supply; ``extra_friction(t, x)`` [N] added to the Coulomb level of both
+    # [m] total lost motion between motor and table (needs mode_hz > 0: the motor side mass crosses
+    # the gap with the table left behind)
+    backlash: float = 0.0
+    # [N] amplitude of a seeded piecewise-constant external force on the table
+    process_force: float = 0.0
+    # effects a caller writes itself (tests hide their own physics this way): ``extra_force(t, x,
+    # v)`` [N] a
+    # force in -x the drive must supply; ``extra_friction(t, x)`` [N] added to the Coulomb level of
+    # both
     # directions (it opposes the motion and widens the breakaway band at rest)
     extra_force: Callable | None = None
     extra_friction: Callable | None = None
@@ -104,9 +110,17 @@ class Record:
     gains: tuple
     extra: dict = field(default_factory=dict)  # 'external_force' [N] at every sample when simulated
 
-    def write_csv(self, path, *, columns=("time", "position", "force", "reference"), effort="force",
-                  lead: float = 0.01, efficiency: float = 1.0, gain: float | None = None,
-                  position_unit: str = "mm") -> None:
+    def write_csv(
+        self,
+        path,
+        *,
+        columns=("time", "position", "force", "reference"),
+        effort="force",
+        lead: float = 0.01,
+        efficiency: float = 1.0,
+        gain: float | None = None,
+        position_unit: str = "mm",
+    ) -> None:
         """Write as an axisopt time-record CSV.  ``effort``: 'force' [N], 'torque' [N.m] or 'current' [A]
         (torque = force * lead / (2 pi efficiency), current = torque / gain with a ``# gain`` line).
         ``position_unit`` 'mm' (table) or 'rad' (motor angle through ``lead``)."""
@@ -114,17 +128,29 @@ class Record:
             eff, head = self.force, "force [N]"
         else:
             torque = self.force * lead / (2.0 * math.pi * efficiency)
-            eff, head = (torque, "torque [N.m]") if effort == "torque" else (torque / gain, "current [A]")
+            eff, head = (
+                (torque, "torque [N.m]") if effort == "torque" else (torque / gain, "current [A]")
+            )
         if position_unit == "mm":
             pos, ref, ph = self.position * 1e3, self.reference * 1e3, "mm"
         else:
-            pos, ref, ph = self.position * 2 * math.pi / lead, self.reference * 2 * math.pi / lead, "rad"
-        data = {"time": (self.t, "time [s]", "{:.4f}"), "position": (pos, f"position [{ph}]", "{:.6g}"),
-                "force": (eff, head, "{:.6g}"), "reference": (ref, f"reference [{ph}]", "{:.6g}")}
+            pos, ref, ph = (
+                self.position * 2 * math.pi / lead,
+                self.reference * 2 * math.pi / lead,
+                "rad",
+            )
+        data = {
+            "time": (self.t, "time [s]", "{:.4f}"),
+            "position": (pos, f"position [{ph}]", "{:.6g}"),
+            "force": (eff, head, "{:.6g}"),
+            "reference": (ref, f"reference [{ph}]", "{:.6g}"),
+        }
         if "external_force" in self.extra:
             data["external_force"] = (self.extra["external_force"], "external_force [N]", "{:.6g}")
         if "motor_position" in self.extra:
-            mp = self.extra["motor_position"] * (1e3 if position_unit == "mm" else 2 * math.pi / lead)
+            mp = self.extra["motor_position"] * (
+                1e3 if position_unit == "mm" else 2 * math.pi / lead
+            )
             data["motor_position"] = (mp, f"motor_position [{ph}]", "{:.9g}")
         from ...fileio import open_output
 
@@ -137,8 +163,9 @@ class Record:
                 w.writerow([data[c][2].format(data[c][0][i]) for c in columns])
 
 
-def trapezoid_reference(duration: float, fs: float, stroke: float, seed: int,
-                        speeds=SPEEDS, accels=ACCELS) -> tuple:
+def trapezoid_reference(
+    duration: float, fs: float, stroke: float, seed: int, speeds=SPEEDS, accels=ACCELS
+) -> tuple:
     """Seeded trapezoidal moves (position, velocity [SI] at every sample) within 5..95 % of the stroke."""
     rng = np.random.default_rng(seed)
     n = int(round(duration * fs))
@@ -154,7 +181,8 @@ def trapezoid_reference(duration: float, fs: float, stroke: float, seed: int,
         a = accels[k % len(accels)] * rng.uniform(0.8, 1.2)
         k += 1
         t_acc = v / a
-        t_cruise = rng.uniform(0.25, 0.6) if v < 0.05 else rng.uniform(0.5, 1.2)  # fast moves sweep the stroke
+        # fast moves sweep the stroke
+        t_cruise = rng.uniform(0.25, 0.6) if v < 0.05 else rng.uniform(0.5, 1.2)
         d = v * (t_acc + t_cruise)
         room = {1.0: 0.95 * stroke - x, -1.0: x - 0.05 * stroke}
         if d > room[direction] and room[-direction] > room[direction]:
@@ -174,27 +202,47 @@ def trapezoid_reference(duration: float, fs: float, stroke: float, seed: int,
         tau = t - t0
         m = tau >= 0
         tt = tau[m]
-        p = np.where(tt < ta, 0.5 * a * tt**2,
-                     np.where(tt < ta + tc, 0.5 * a * ta**2 + v * (tt - ta),
-                              np.where(tt < 2 * ta + tc,
-                                       0.5 * a * ta**2 + v * tc + v * (tt - ta - tc) - 0.5 * a * (tt - ta - tc) ** 2,
-                                       v * (ta + tc))))
-        vv = np.where(tt < ta, a * tt, np.where(tt < ta + tc, v, np.where(tt < 2 * ta + tc, v - a * (tt - ta - tc),
-                                                                           0.0)))
+        p = np.where(
+            tt < ta,
+            0.5 * a * tt**2,
+            np.where(
+                tt < ta + tc,
+                0.5 * a * ta**2 + v * (tt - ta),
+                np.where(
+                    tt < 2 * ta + tc,
+                    0.5 * a * ta**2 + v * tc + v * (tt - ta - tc) - 0.5 * a * (tt - ta - tc) ** 2,
+                    v * (ta + tc),
+                ),
+            ),
+        )
+        vv = np.where(
+            tt < ta,
+            a * tt,
+            np.where(tt < ta + tc, v, np.where(tt < 2 * ta + tc, v - a * (tt - ta - tc), 0.0)),
+        )
         pos[m] = x0 + s * p
         vel[m] = s * vv
     return t, pos, vel
 
 
-def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = None, *, duration: float = 12.0,
-                  seed: int = 0, reference_seed: int | None = None, record_motor: bool = False) -> Record:
+def simulate_axis(
+    truth: AxisTruth | None = None,
+    loop: LoopSettings | None = None,
+    *,
+    duration: float = 12.0,
+    seed: int = 0,
+    reference_seed: int | None = None,
+    record_motor: bool = False,
+) -> Record:
     """Simulate the closed loop; see the module docstring.  ``record_motor``: also record the motor-side
     position (an encoder of 0.1 um resolution in table travel; the table's own when the axis is rigid) as
     ``extra['motor_position']``, written as a ``motor_position`` column."""
     truth = truth or AxisTruth()
     loop = loop or LoopSettings()
     fs, ns = loop.fs, loop.substeps
-    t, ref, dref = trapezoid_reference(duration, fs, truth.stroke, seed if reference_seed is None else reference_seed)
+    t, ref, dref = trapezoid_reference(
+        duration, fs, truth.stroke, seed if reference_seed is None else reference_seed
+    )
     rng = np.random.default_rng(seed + 1000)
     pos_noise = loop.position_noise * rng.standard_normal(len(t))
     f_noise = loop.force_noise * rng.standard_normal(len(t))
@@ -252,7 +300,11 @@ def simulate_axis(truth: AxisTruth | None = None, loop: LoopSettings | None = No
             if two:
                 stretch = x1 - x
                 if gap > 0.0:  # dead zone of the lost motion: no spring force inside the gap
-                    stretch = stretch - gap if stretch > gap else (stretch + gap if stretch < -gap else 0.0)
+                    stretch = (
+                        stretch - gap
+                        if stretch > gap
+                        else (stretch + gap if stretch < -gap else 0.0)
+                    )
                     spring = k_s * stretch + (c_s * (v1 - v) if stretch != 0.0 else 0.0)
                 else:
                     spring = k_s * stretch + c_s * (v1 - v)

@@ -16,8 +16,8 @@ import numpy as np
 from .. import residual as rs
 from ..effects.friction import RIPPLE_HARMONICS
 from .estimators import Estimate, predict
-from .record import lowpass, welch
 from .regression import Rows, decimate, full_matrix, matrix
+from .signal import lowpass, welch
 from .signature import decay_probe, line_probe, spot_probe
 
 
@@ -25,7 +25,9 @@ def residual_peak(rows: Rows, est: Estimate) -> tuple:
     """Peak of the baseline residual spectrum between 3x the motion bandwidth and the cut-off."""
     proc = rows.proc
     segs = rows.record.segments
-    W = lowpass(full_matrix(rows.sig, est.terms, proc, est.shape), proc.fs, proc.fdec, segments=segs)
+    W = lowpass(
+        full_matrix(rows.sig, est.terms, proc, est.shape), proc.fs, proc.fdec, segments=segs
+    )
     e = rows.record.effort
     if "payload" in rows.record.aux:  # a known mass's inertial force is not the model's misfit
         e = e - rows.record.aux["payload"] * rows.sig["a"]
@@ -42,7 +44,6 @@ def residual_peak(rows: Rows, est: Estimate) -> tuple:
         return 0.0, 0.0
     k = int(np.argmax(ps[band]))
     return float(f[band][k]), float(ps[band][k] / np.median(ps[band]))
-
 
 
 @dataclass
@@ -78,8 +79,10 @@ def noise_floor(rows: Rows, est: Estimate | None = None) -> float:
     return max(white, coloured) if coloured is not None else white
 
 
-SHORT_PERIODS = 16  # periods down to the lead / 16 are scanned (a belt tooth or motor cogging through a reduction)
-AR_RHO = np.linspace(-0.5, 0.98, 149)  # the grid of the AR(1) coefficient fitted to the noise's spectrum
+# periods down to the lead / 16 are scanned (a belt tooth or motor cogging through a reduction)
+SHORT_PERIODS = 16
+# the grid of the AR(1) coefficient fitted to the noise's spectrum
+AR_RHO = np.linspace(-0.5, 0.98, 149)
 
 
 def ar_noise(rows: Rows, est: Estimate | None = None):
@@ -138,8 +141,14 @@ def ar_noise(rows: Rows, est: Estimate | None = None):
 
 def pooled(runs: list, full_cols) -> np.ndarray:
     """Columns computed at full rate on each run (``full_cols(rows) -> (N, k)``), decimated alike, stacked."""
-    return np.vstack([decimate(np.asarray(full_cols(r)).reshape(r.record.n, -1), r.proc, r.keep, r.record.segments)
-                      for r in runs])
+    return np.vstack(
+        [
+            decimate(
+                np.asarray(full_cols(r)).reshape(r.record.n, -1), r.proc, r.keep, r.record.segments
+            )
+            for r in runs
+        ]
+    )
 
 
 def since_reversal(rw: Rows) -> np.ndarray:
@@ -159,7 +168,8 @@ def since_reversal(rw: Rows) -> np.ndarray:
     return np.abs(q - q[turn])
 
 
-REVERSAL_SCALES = (0.0005, 0.002, 0.01)  # travel scales of the reversal probe, as fractions of the stroke
+# travel scales of the reversal probe, as fractions of the stroke
+REVERSAL_SCALES = (0.0005, 0.002, 0.01)
 
 
 def legendre(x, deg):
@@ -172,7 +182,8 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
     run, between runs and acceleration; see :mod:`.residual`."""
     proc = runs[0].proc
     W = np.vstack([matrix(r, est.terms, est.shape) for r in runs])
-    r = np.concatenate([rw.y - predict(rw, est) for rw in runs])  # a per-run phase is each run's own
+    # a per-run phase is each run's own
+    r = np.concatenate([rw.y - predict(rw, est) for rw in runs])
     W = rs.Span(W)
     breaks = np.concatenate([np.append(np.diff(rw.keep) != proc.nd, True) for rw in runs])[:-1]
     rho = rs.lag1(r, breaks)
@@ -180,17 +191,31 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
     vmax = max(float(np.max(np.abs(rw.sig["v"][rw.keep]))) for rw in runs)
     probes = []
     if proc.lead_q > 0 and (kinds is None or "position_periodic" in kinds):
+
         def periodic(P):
             def cols(rw):
                 ph = 2.0 * np.pi * rw.sig["q"] / P
                 sg = np.sign(rw.sig["v"])
                 return np.column_stack([np.sin(ph), np.cos(ph), sg * np.sin(ph), sg * np.cos(ph)])
+
             return pooled(runs, cols)
+
         q_rows = np.concatenate([rw.sig["q"][rw.keep] for rw in runs])
         s_rows = np.concatenate([np.sign(rw.sig["v"][rw.keep]) for rw in runs])
         hi = max(float(np.ptp(q_rows)) / 3.0, proc.lead_q)
-        probes.append(rs.period_scan(r, q_rows, s_rows, periodic, proc.lead_q / SHORT_PERIODS, hi, W, neff,
-                                     fixed=[proc.lead_q / k for k in RIPPLE_HARMONICS]))
+        probes.append(
+            rs.period_scan(
+                r,
+                q_rows,
+                s_rows,
+                periodic,
+                proc.lead_q / SHORT_PERIODS,
+                hi,
+                W,
+                neff,
+                fixed=[proc.lead_q / k for k in RIPPLE_HARMONICS],
+            )
+        )
     if kinds is not None:
         return Unexplained(probes, float(np.sqrt(np.mean(r**2))), 0.0, rho, len(r))
 
@@ -199,16 +224,22 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
         u = 2.0 * np.abs(v) / vmax - 1.0
         sg = np.sign(v)
         return np.column_stack(legendre(u, 4) + [sg * p for p in legendre(u, 4)])
+
     pv = rs.probe("velocity", r, pooled(runs, vel_cols), W, neff)
-    shapes = {"v|v|": pooled(runs, lambda rw: rw.sig["v"] * np.abs(rw.sig["v"]))[:, 0],
-              "|v|": pooled(runs, lambda rw: np.abs(rw.sig["v"]))[:, 0],
-              "sqrt": pooled(runs, lambda rw: np.sign(rw.sig["v"]) * np.sqrt(np.abs(rw.sig["v"])))[:, 0]}
+    shapes = {
+        "v|v|": pooled(runs, lambda rw: rw.sig["v"] * np.abs(rw.sig["v"]))[:, 0],
+        "|v|": pooled(runs, lambda rw: np.abs(rw.sig["v"]))[:, 0],
+        "sqrt": pooled(runs, lambda rw: np.sign(rw.sig["v"]) * np.sqrt(np.abs(rw.sig["v"])))[:, 0],
+    }
     for f in (0.01, 0.03, 0.1):
-        shapes[f"low_speed_{f}"] = pooled(runs, lambda rw, f=f: np.sign(rw.sig["v"])
-                                          * np.exp(-np.abs(rw.sig["v"]) / (f * vmax)))[:, 0]
+        shapes[f"low_speed_{f}"] = pooled(
+            runs, lambda rw, f=f: np.sign(rw.sig["v"]) * np.exp(-np.abs(rw.sig["v"]) / (f * vmax))
+        )[:, 0]
     nm, sh = rs.best_shape(r, shapes, W)
-    pv.detail.update(shape="low_speed" if nm.startswith("low_speed") else nm,
-                     shape_share=sh / pv.share if pv.share > 0 else 0.0)
+    pv.detail.update(
+        shape="low_speed" if nm.startswith("low_speed") else nm,
+        shape_share=sh / pv.share if pv.share > 0 else 0.0,
+    )
     probes.append(pv)
     sq = proc.stroke_q
 
@@ -216,6 +247,7 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
         xi = 2.0 * rw.sig["q"] / sq - 1.0
         sg = np.sign(rw.sig["v"])
         return np.column_stack(legendre(xi, 4) + [sg * p for p in legendre(xi, 4)])
+
     G = pooled(runs, pos_cols)
     pp = rs.probe("position", r, G, W, neff)
     q_rows = np.concatenate([rw.sig["q"][rw.keep] for rw in runs])
@@ -232,6 +264,7 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
     def time_cols(rw):
         t = rw.record.t
         return np.column_stack(legendre(2.0 * (t - t[0]) / (t[-1] - t[0]) - 1.0, 3))
+
     probes.append(rs.probe("time", r, pooled(runs, time_cols), W, neff))
     if len(runs) > 1:
         ind = np.zeros((len(r), len(runs) - 1))
@@ -242,18 +275,25 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
         probes.append(rs.probe("run", r, ind, W, neff))
 
     if all(rw.record.external is not None for rw in runs):
+
         def load_cols(rw):
             f, sg = rw.record.external, np.sign(rw.sig["v"])
             return np.column_stack([f, np.abs(f), sg * np.abs(f), sg * f])
+
         probes.append(rs.probe("load", r, pooled(runs, load_cols), W, neff))
 
     def rev_cols(rw):
         d, sg = since_reversal(rw), np.sign(rw.sig["v"])
         cols = [np.exp(-d / (f * sq)) for f in REVERSAL_SCALES]
         return np.column_stack(cols + [sg * c for c in cols])
+
     pr = rs.probe("reversal", r, pooled(runs, rev_cols), W, neff)
-    rev_shapes = {f: pooled(runs, lambda rw, f=f: np.column_stack([np.exp(-since_reversal(rw) / (f * sq))]))[:, 0]
-                  for f in REVERSAL_SCALES}
+    rev_shapes = {
+        f: pooled(runs, lambda rw, f=f: np.column_stack([np.exp(-since_reversal(rw) / (f * sq))]))[
+            :, 0
+        ]
+        for f in REVERSAL_SCALES
+    }
     best, _ = rs.best_shape(r, rev_shapes, W)
     pr.detail["scale"] = best * sq
     probes.append(pr)
@@ -261,12 +301,17 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
     def acc_cols(rw):
         a, sg = rw.sig["a"], np.sign(rw.sig["v"])
         return np.column_stack([sg * a, np.abs(a), a * np.abs(a)])
+
     probes.append(rs.probe("acceleration", r, pooled(runs, acc_cols), W, neff))
+
     def neff_of(res):
         return rs.n_effective(len(res), rs.lag1(res, breaks))
+
     probes += [f(runs, r, W, neff_of, pooled) for f in (line_probe, spot_probe, decay_probe)]
     probes.sort(key=lambda p: p.log10_p)
-    noise = math.sqrt(sum(noise_floor(rw, est) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs))
+    noise = math.sqrt(
+        sum(noise_floor(rw, est) ** 2 * rw.n for rw in runs) / sum(rw.n for rw in runs)
+    )
     return Unexplained(probes, float(np.sqrt(np.mean(r**2))), noise, rho, len(r))
 
 
@@ -277,5 +322,8 @@ def periodic_peak(rows: Rows, est: Estimate):
         return None
     u = analyse_residual([rows], est, kinds=("position_periodic",))
     p = u.probes[0] if u.probes else None
-    return (p.detail["period"], p.share) if p is not None and p.significant and p.share >= 0.5 else None
-
+    return (
+        (p.detail["period"], p.share)
+        if p is not None and p.significant and p.share >= 0.5
+        else None
+    )

@@ -55,9 +55,12 @@ COLUMNS = {
 
 KINDS = {
     "stiffness": dict(
-        required=("position", "force", "displacement"), optional=("direction", "cycle", "time", "temperature")
+        required=("position", "force", "displacement"),
+        optional=("direction", "cycle", "time", "temperature"),
     ),
-    "frf": dict(required=("frequency", "position"), optional=("real", "imag", "magnitude", "phase", "cycle")),
+    "frf": dict(
+        required=("frequency", "position"), optional=("real", "imag", "magnitude", "phase", "cycle")
+    ),
     "frequency": dict(required=("position", "frequency"), optional=("mode", "cycle")),
     "friction": dict(
         required=("velocity",),
@@ -144,7 +147,8 @@ def read_dataset(path) -> Dataset:
     """Read one test CSV.  See the module docstring for the formats."""
     src = str(path)
     try:
-        text = read_input(path, "data", what="data file", encoding="utf-8-sig")  # regular files only, size cap
+        # regular files only, size cap
+        text = read_input(path, "data", what="data file", encoding="utf-8-sig")
         with io.StringIO(text, newline="") as fh:
             reader = csv.reader(fh)
             try:
@@ -152,13 +156,21 @@ def read_dataset(path) -> Dataset:
                 for r in reader:
                     rows.append(r)
                     if len(rows) > MAX_DATA_ROWS + 100:  # header and comments besides the rows
-                        raise InputError(f"too many rows (at most {MAX_DATA_ROWS:,} readings)", source=src,
-                                         where=f"line {reader.line_num}")
+                        raise InputError(
+                            f"too many rows (at most {MAX_DATA_ROWS:,} readings)",
+                            source=src,
+                            where=f"line {reader.line_num}",
+                        )
                     if any("\n" in c or "\r" in c for c in r):  # a stray quote swallowed line ends
-                        raise InputError("malformed CSV (a quoted cell runs over several lines: a stray '\"'?)",
-                                         source=src, where=f"line {reader.line_num}")
+                        raise InputError(
+                            "malformed CSV (a quoted cell runs over several lines: a stray '\"'?)",
+                            source=src,
+                            where=f"line {reader.line_num}",
+                        )
             except csv.Error as exc:
-                raise InputError(f"malformed CSV ({exc})", source=src, where=f"line {reader.line_num}") from None
+                raise InputError(
+                    f"malformed CSV ({exc})", source=src, where=f"line {reader.line_num}"
+                ) from None
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(
             f"cannot read data file ({getattr(exc, 'strerror', None) or exc})", source=src
@@ -176,15 +188,19 @@ def read_dataset(path) -> Dataset:
         near = close_matches(name, list(COLUMNS))
         return f"unknown column '{name}'" + (f"; did you mean '{near[0]}'?" if near else "")
 
-    cols = [(c.name, c.unit, c.kind)
-            for c in read_header(header, line=hline, source=src, kinds=COLUMNS, unknown=unknown)]
+    cols = [
+        (c.name, c.unit, c.kind)
+        for c in read_header(header, line=hline, source=src, kinds=COLUMNS, unknown=unknown)
+    ]
     names = [c[0] for c in cols]
     kind = detect_kind(names, src)
     spec = KINDS[kind]
     missing = [c for c in spec["required"] if c not in names]
     if kind == "friction" and not ({"friction_force", "drag_torque"} & set(names)):
         missing.append("friction_force or drag_torque")
-    if kind == "frf" and not ({"real", "imag"} <= set(names) or {"magnitude", "phase"} <= set(names)):
+    if kind == "frf" and not (
+        {"real", "imag"} <= set(names) or {"magnitude", "phase"} <= set(names)
+    ):
         missing.append("real + imag or magnitude + phase")
     if missing:
         raise InputError(
@@ -211,13 +227,19 @@ def read_dataset(path) -> Dataset:
             where = f"line {i}, column {j} ({name})"
             val = read_number(cell, source=src, where=where)
             if name == "direction" and val not in (1.0, -1.0):
-                raise InputError(f"direction must be +1 or -1, got '{cell}'", source=src, where=where)
+                raise InputError(
+                    f"direction must be +1 or -1, got '{cell}'", source=src, where=where
+                )
             if name == "exclude" and val not in (0.0, 1.0):
                 raise InputError(f"exclude must be 0 or 1, got '{cell}'", source=src, where=where)
             if name in ("cycle", "mode") and val < 0:
-                raise InputError(f"{name} must not be negative, got '{cell}'", source=src, where=where)
+                raise InputError(
+                    f"{name} must not be negative, got '{cell}'", source=src, where=where
+                )
             if qkind is not None:
-                val = check_plausible(to_si(val, unit, qkind), qkind, f"{cell} {unit}", source=src, key=where)
+                val = check_plausible(
+                    to_si(val, unit, qkind), qkind, f"{cell} {unit}", source=src, key=where
+                )
             data[r, j - 1] = val
     if len(lines) == 0:
         raise InputError("no data rows", source=src)
@@ -277,7 +299,9 @@ def _check_friction_sign(columns, keep, lines, names, src) -> None:
         f"{meas} is positive at negative velocity and about equal in both directions ({fn:.4g} against "
         f"{fp:.4g}): a magnitude? A friction table takes the signed value the drive supplies, negative at "
         f"negative velocity (F(|v|) sgn v)",
-        source=src, where=f"line {lines[keep][i]}, column {names.index(meas) + 1} ({meas})")
+        source=src,
+        where=f"line {lines[keep][i]}, column {names.index(meas) + 1} ({meas})",
+    )
 
 
 def write_dataset(ds: Dataset, path, units: dict | None = None) -> None:

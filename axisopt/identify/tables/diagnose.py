@@ -89,11 +89,16 @@ class Diagnosis:
     holdout_baseline: np.ndarray
     holdout_final: np.ndarray
     param_owner: dict = field(default_factory=dict)  # effect parameter name -> effect name
-    rejected: list = field(default_factory=list)  # (round, Candidate, [implausibility texts]) never accepted
-    pairs: list = field(default_factory=list)  # dicts: round, a, b, fit, dbic, gain, reason (pairs tried)
-    unexplained: list = field(default_factory=list)  # per obs: TableUnexplained of the final residual
-    equivalent: list = field(default_factory=list)  # (round, named, alternative, % apart): equally good
-    regime: list = field(default_factory=list)  # texts: an accepted effect outside its plausible regime
+    # (round, Candidate, [implausibility texts]) never accepted
+    rejected: list = field(default_factory=list)
+    # dicts: round, a, b, fit, dbic, gain, reason (pairs tried)
+    pairs: list = field(default_factory=list)
+    # per obs: TableUnexplained of the final residual
+    unexplained: list = field(default_factory=list)
+    # (round, named, alternative, % apart): equally good
+    equivalent: list = field(default_factory=list)
+    # texts: an accepted effect outside its plausible regime
+    regime: list = field(default_factory=list)
 
     @property
     def y(self) -> np.ndarray:
@@ -110,19 +115,36 @@ class Diagnosis:
     def to_frame(self):
         """pandas DataFrame of the final fit's parameters, one row each: ``effect`` (the accepted effect that
         owns it, 'baseline' otherwise), ``parameter``, ``label``, ``value`` and ``sigma`` in ``unit``."""
-        rows = [{"effect": self.param_owner.get(p["name"], "baseline"), "parameter": p["name"],
-                 "label": p["label"], "value": p["value"], "sigma": p["sigma"], "unit": p["unit"]}
-                for p in param_rows(self.final)]
+        rows = [
+            {
+                "effect": self.param_owner.get(p["name"], "baseline"),
+                "parameter": p["name"],
+                "label": p["label"],
+                "value": p["value"],
+                "sigma": p["sigma"],
+                "unit": p["unit"],
+            }
+            for p in param_rows(self.final)
+        ]
         return frame(rows, ("effect", "parameter", "label", "value", "sigma", "unit"))
 
     def __repr__(self) -> str:
         files = ", ".join(str(o.dataset.source) for o in self.obs)
-        return one_line("Diagnosis", repr(getattr(self.plant, "name", "")), {
-            "verdict": self.verdict, "held-out error down": f"{self.gain:.1f} %", "data": files})
+        return one_line(
+            "Diagnosis",
+            repr(getattr(self.plant, "name", "")),
+            {"verdict": self.verdict, "held-out error down": f"{self.gain:.1f} %", "data": files},
+        )
 
     def _repr_html_(self) -> str:
-        rows = [{"effect": self.param_owner.get(p["name"], "baseline"), "parameter": p["name"],
-                 "value": p["text"]} for p in param_rows(self.final)]
+        rows = [
+            {
+                "effect": self.param_owner.get(p["name"], "baseline"),
+                "parameter": p["name"],
+                "value": p["text"],
+            }
+            for p in param_rows(self.final)
+        ]
         return html_table(rows, repr(self))
 
 
@@ -163,7 +185,9 @@ def param_text(p, v, s) -> str:
     """A fitted parameter as text in its display unit: value ± sigma, or 'not identifiable'."""
     unit = "" if p.unit in ("", "-") else f" {p.unit}"
     sd = f" ± {p.show(s):.3g}" if math.isfinite(s) else ""
-    return f"{p.show(v):.4g}{sd}{unit}" + ("" if math.isfinite(s) else " (not identifiable from these data)")
+    return f"{p.show(v):.4g}{sd}{unit}" + (
+        "" if math.isfinite(s) else " (not identifiable from these data)"
+    )
 
 
 def param_rows(res, names=None) -> list:
@@ -193,10 +217,12 @@ def _check_positions(ds, plant) -> None:
     bad = np.nonzero((pos < -tol) | (pos > plant.stroke + tol))[0]
     if len(bad):
         i = bad[0]
-        raise InputError(f"position {pos[i] * 1e3:.1f} mm is outside the design's stroke "
-                         f"0..{plant.stroke * 1e3:.0f} mm (positions are measured from the stroke start)",
-                         source=str(ds.source),
-                         where=f"line {int(ds.lines[i])}, column position")
+        raise InputError(
+            f"position {pos[i] * 1e3:.1f} mm is outside the design's stroke "
+            f"0..{plant.stroke * 1e3:.0f} mm (positions are measured from the stroke start)",
+            source=str(ds.source),
+            where=f"line {int(ds.lines[i])}, column position",
+        )
 
 
 def folds_for(obs) -> np.ndarray:
@@ -206,8 +232,11 @@ def folds_for(obs) -> np.ndarray:
         k = min(MAX_FOLDS, len(levels))
         idx = np.searchsorted(levels, o.groups)
         if k < 2:  # nothing to hold out: a "held-out" error would be the in-sample one
-            raise InputError("held-out validation needs at least 2 groups (positions, load levels or cycles); "
-                             f"this file has {len(levels)}", source=str(o.dataset.source))
+            raise InputError(
+                "held-out validation needs at least 2 groups (positions, load levels or cycles); "
+                f"this file has {len(levels)}",
+                source=str(o.dataset.source),
+            )
         out.append(idx % k)
     return np.concatenate(out)
 
@@ -241,9 +270,12 @@ def _fit_effects(ctx, effects, base, theta_prev, prev_names):
         for st in starts
     ]
     n = len(prob.y)
-    if len(inits) > 1 and n > 2 * SUBSAMPLE:  # pick the start on a strided subsample, refine on all rows
+    # pick the start on a strided subsample, refine on all rows
+    if len(inits) > 1 and n > 2 * SUBSAMPLE:
         k = n // SUBSAMPLE
-        sub = Problem(prob.params, [Block(b.function, b.Z[:, ::k], b.y[::k], b.w[::k]) for b in prob.blocks])
+        sub = Problem(
+            prob.params, [Block(b.function, b.Z[:, ::k], b.y[::k], b.w[::k]) for b in prob.blocks]
+        )
         inits = [min((fit(sub, th0) for th0 in inits), key=lambda r: r.rss).theta]
     best = None
     for th0 in inits:
@@ -253,7 +285,8 @@ def _fit_effects(ctx, effects, base, theta_prev, prev_names):
     return prob, best
 
 
-# effects accepted at most by default: one default for the command line (--max-effects), Python and both pipelines
+# effects accepted at most by default: one default for the command line (--max-effects), Python and
+# both pipelines
 MAX_EFFECTS = 3
 
 
@@ -302,8 +335,10 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
             break
         scored.sort(key=lambda c: c.dbic)
         rounds.append(scored)
-        # the best candidate by BIC that is physical and predicts held-out data better; a candidate that explains
-        # the data only with a value outside its physical range is reported ("would need ...") and the next one
+        # the best candidate by BIC that is physical and predicts held-out data better; a candidate
+        # that explains
+        # the data only with a value outside its physical range is reported ("would need ...") and
+        # the next one
         # considered; every candidate not accepted keeps the first criterion it failed as its reason
         top = None
         for c in scored:
@@ -323,35 +358,76 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
             if not c.reason:
                 top = c
         if top is None:
-            # pairs only when some candidate found signal (dBIC < -10) that no single effect turns into an
+            # pairs only when some candidate found signal (dBIC < -10) that no single effect turns
+            # into an
             # accepted explanation: a misfit at the noise floor costs no pair fits
             if len(effects) + 2 > max_effects or not any(c.dbic < RULE.accept_dbic for c in scored):
                 break
-            pair = _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, len(rounds), pairs)
+            pair = _best_pair(
+                ctx, scored, effects, base, cur_fit, cur_cv, folds, len(rounds), pairs
+            )
             if pair is None:
                 break
-            a_, b_, p_fit, p_cv, p_ho = pair["a"], pair["b"], pair["fit"], pair["cv"], pair["holdout"]
-            for e in pairs:  # another pair that passes and predicts as well: the data do not tell them apart
-                d = RULE.equivalent(p_cv, e["cv"]) if e.get("passed") and e["round"] == len(rounds) else None
-                if d is None and e.get("passed") and e["round"] == len(rounds) and max(p_cv, e["cv"]) <= AT_FLOOR:
+            a_, b_, p_fit, p_cv, p_ho = (
+                pair["a"],
+                pair["b"],
+                pair["fit"],
+                pair["cv"],
+                pair["holdout"],
+            )
+            # another pair that passes and predicts as well: the data do not tell them apart
+            for e in pairs:
+                d = (
+                    RULE.equivalent(p_cv, e["cv"])
+                    if e.get("passed") and e["round"] == len(rounds)
+                    else None
+                )
+                if (
+                    d is None
+                    and e.get("passed")
+                    and e["round"] == len(rounds)
+                    and max(p_cv, e["cv"]) <= AT_FLOOR
+                ):
                     d, floor = 100.0 * abs(e["cv"] - p_cv) / p_cv, (p_cv, e["cv"])
                 else:
                     floor = None
                 if d is not None:
-                    equivalent.append((len(rounds), f"{a_.effect.name} + {b_.effect.name}",
-                                       f"{e['a'].effect.name} + {e['b'].effect.name}", d,
-                                       (a_.effect, b_.effect, e["a"].effect, e["b"].effect), floor))
+                    equivalent.append(
+                        (
+                            len(rounds),
+                            f"{a_.effect.name} + {b_.effect.name}",
+                            f"{e['a'].effect.name} + {e['b'].effect.name}",
+                            d,
+                            (a_.effect, b_.effect, e["a"].effect, e["b"].effect),
+                            floor,
+                        )
+                    )
             effects += [a_.effect, b_.effect]
             plaus = plausibility(p_fit, effects)
             for c, other in ((a_, b_), (b_, a_)):
                 c.reason = f"alone: {c.reason}; accepted together with {other.effect.name}"
-                accepted.append(Accepted(c.effect, p_fit, pair["dbic"], cur_cv, p_cv, None, plaus,
-                                         together=other.effect.name))
+                accepted.append(
+                    Accepted(
+                        c.effect,
+                        p_fit,
+                        pair["dbic"],
+                        cur_cv,
+                        p_cv,
+                        None,
+                        plaus,
+                        together=other.effect.name,
+                    )
+                )
             cur_fit, cur_cv, cur_ho = p_fit, p_cv, p_ho
             ctx.resid = _split(obs, cur_fit.prediction - prob.y)
             continue
-        for c in scored:  # another single that passes and predicts as well: say so, with what separates them
-            if c is top or c.dbic >= RULE.accept_dbic or plausibility(c.fit, effects + [c.effect], names=c.names):
+        # another single that passes and predicts as well: say so, with what separates them
+        for c in scored:
+            if (
+                c is top
+                or c.dbic >= RULE.accept_dbic
+                or plausibility(c.fit, effects + [c.effect], names=c.names)
+            ):
                 continue
             if c.cv_gain is None:
                 c.cv_rmse, c.holdout = cv_rmse(c.problem, c.fit.theta, folds)
@@ -359,11 +435,20 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
             if c.cv_gain < RULE.min_gain:
                 continue
             d = RULE.equivalent(top.cv_rmse, c.cv_rmse)
-            floor = max(top.cv_rmse, c.cv_rmse) <= AT_FLOOR  # both leave only noise in the held-out readings
+            # both leave only noise in the held-out readings
+            floor = max(top.cv_rmse, c.cv_rmse) <= AT_FLOOR
             if d is not None or floor:
                 apart = 100.0 * abs(c.cv_rmse - top.cv_rmse) / top.cv_rmse
-                equivalent.append((len(rounds), top.effect.name, c.effect.name, apart, (top.effect, c.effect),
-                                   (top.cv_rmse, c.cv_rmse) if d is None else None))
+                equivalent.append(
+                    (
+                        len(rounds),
+                        top.effect.name,
+                        c.effect.name,
+                        apart,
+                        (top.effect, c.effect),
+                        (top.cv_rmse, c.cv_rmse) if d is None else None,
+                    )
+                )
         runner = next((c for c in scored if c is not top), None)
         if runner is not None and runner.cv_gain is None and runner.dbic < RULE.accept_dbic:
             runner.cv_rmse, runner.holdout = cv_rmse(runner.problem, runner.fit.theta, folds)
@@ -371,7 +456,13 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
         effects.append(top.effect)
         accepted.append(
             Accepted(
-                top.effect, top.fit, top.dbic, cur_cv, top.cv_rmse, runner, plausibility(top.fit, effects)
+                top.effect,
+                top.fit,
+                top.dbic,
+                cur_cv,
+                top.cv_rmse,
+                runner,
+                plausibility(top.fit, effects),
             )
         )
         cur_fit, cur_cv, cur_ho = top.fit, top.cv_rmse, top.holdout
@@ -400,15 +491,19 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
     )
 
 
-# held-out RMSE (weighted: in noise floors) at or below which an explanation leaves only noise; two that both
-# do are not told apart by the held-out readings, however far apart their RMSE (a few readings' scatter)
+# held-out RMSE (weighted: in noise floors) at or below which an explanation leaves only noise; two
+# that both
+# do are not told apart by the held-out readings, however far apart their RMSE (a few readings'
+# scatter)
 AT_FLOOR = 1.1
 
 
 def top_speed(obs) -> float:
     """The highest table speed [m/s] in the friction tables (0 without one)."""
-    return max((float(np.max(np.abs(o.dataset.columns["velocity"]))) for o in obs if o.kind == "friction"),
-               default=0.0)
+    return max(
+        (float(np.max(np.abs(o.dataset.columns["velocity"]))) for o in obs if o.kind == "friction"),
+        default=0.0,
+    )
 
 
 def regime_flags(obs, effects) -> list:
@@ -417,8 +512,13 @@ def regime_flags(obs, effects) -> list:
     v = top_speed(obs)
     if not v > 0:
         return []
-    return [f"{e.name}: {w}" for e in effects if e.time is not None and e.time.regime is not None
-            for w in [e.time.regime(v)] if w]
+    return [
+        f"{e.name}: {w}"
+        for e in effects
+        if e.time is not None and e.time.regime is not None
+        for w in [e.time.regime(v)]
+        if w
+    ]
 
 
 def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
@@ -433,8 +533,16 @@ def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
         for j in range(i + 1, len(pool)):
             a, b = pool[i], pool[j]
             prob_p, res = _fit_effects(ctx, effects + [a.effect, b.effect], base, prev, set(prev))
-            entry = {"round": rnd, "a": a, "b": b, "fit": res, "problem": prob_p, "dbic": res.bic - cur_fit.bic,
-                     "gain": None, "reason": ""}
+            entry = {
+                "round": rnd,
+                "a": a,
+                "b": b,
+                "fit": res,
+                "problem": prob_p,
+                "dbic": res.bic - cur_fit.bic,
+                "gain": None,
+                "reason": "",
+            }
             log.append(entry)
             bad = plausibility(res, effects + [a.effect, b.effect], names=a.names + b.names)
 
@@ -447,8 +555,9 @@ def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
                         c.cv_gain = RULE.gain(cur_cv, c.cv_rmse)
                 return entry["gain"]
 
-            entry["reason"] = RULE.pair_reason(entry["dbic"], held_out, "; ".join(bad),
-                                               lambda a=a, b=b: max(a.cv_gain, b.cv_gain))
+            entry["reason"] = RULE.pair_reason(
+                entry["dbic"], held_out, "; ".join(bad), lambda a=a, b=b: max(a.cv_gain, b.cv_gain)
+            )
             if not entry["reason"] and (best is None or entry["gain"] > best["gain"]):
                 best = entry
     if best is not None:

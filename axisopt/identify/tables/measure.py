@@ -40,14 +40,31 @@ FEATURES = {
 }
 FACTORS = {  # residual tables: column -> display (unit, factor)
     "stiffness": ("position", "force", "direction", "cycle", "time", "temperature"),
-    "friction": ("velocity", "normal_load", "axial_load", "position", "cycle", "time", "temperature"),
+    "friction": (
+        "velocity",
+        "normal_load",
+        "axial_load",
+        "position",
+        "cycle",
+        "time",
+        "temperature",
+    ),
     "frequency": ("position", "mode", "cycle"),
     "frf": ("frequency", "position", "cycle"),
 }
 # The measured column(s) of each test (what the model predicts).
-MEASURED_COLUMNS = {"stiffness": ("displacement",), "friction": ("friction_force", "drag_torque"),
-                    "frequency": ("frequency",), "frf": ("real", "imag", "magnitude", "phase")}
-Y_UNIT = {"stiffness": ("um", 1e6), "friction": ("N", 1.0), "frequency": ("Hz", 1.0), "frf": ("um/N", 1e6)}
+MEASURED_COLUMNS = {
+    "stiffness": ("displacement",),
+    "friction": ("friction_force", "drag_torque"),
+    "frequency": ("frequency",),
+    "frf": ("real", "imag", "magnitude", "phase"),
+}
+Y_UNIT = {
+    "stiffness": ("um", 1e6),
+    "friction": ("N", 1.0),
+    "frequency": ("Hz", 1.0),
+    "frf": ("um/N", 1e6),
+}
 
 
 @dataclass
@@ -98,7 +115,9 @@ def observations(ds: Dataset, plant) -> Obs:
         normal = plant.weight_on_guides + c.get("normal_load", zeros)
         x = plant.nut_x(c["position"]) if "position" in c else zeros + plant.start_offset
         temp = c.get("temperature", zeros + 293.15)  # [K]; 20 degC when not recorded
-        Z = np.vstack([c["velocity"], normal, c.get("axial_load", zeros), x, c.get("cycle", zeros), temp])
+        Z = np.vstack(
+            [c["velocity"], normal, c.get("axial_load", zeros), x, c.get("cycle", zeros), temp]
+        )
         groups, gname = _friction_groups(c)
     elif ds.kind == "frequency":
         Z = plant.nut_x(c["position"])[None, :]
@@ -152,8 +171,10 @@ class Terms:
     stribeck: object = 0.0
     asymmetry: object = 0.0
     drag: object = 0.0  # quadratic drag coefficient c of c v|v| [N s^2/m^2]
-    axial_ratio: object = 0.0  # nut friction per axial force, 1/eta - 1 [-] (of |axial_load|, sgn v)
-    coulomb_t: object = 0.0  # Coulomb friction change with temperature [N] (already times T - T_ref)
+    # nut friction per axial force, 1/eta - 1 [-] (of |axial_load|, sgn v)
+    axial_ratio: object = 0.0
+    # Coulomb friction change with temperature [N] (already times T - T_ref)
+    coulomb_t: object = 0.0
 
 
 def baseline_params(kinds, plant) -> list:
@@ -228,7 +249,9 @@ def drive_compliance(plant, x):
     torsion through the lead up to the nut, nut bracket, coupling [m/N]."""
     tors = 0.0
     if plant.torsion:
-        tors = 1.0 / ps.torsion_axial_stiffness(ps.screw_torsional_stiffness(plant.root_diameter, x), plant.lead)
+        tors = 1.0 / ps.torsion_axial_stiffness(
+            ps.screw_torsional_stiffness(plant.root_diameter, x), plant.lead
+        )
     return plant.c_series + tors
 
 
@@ -257,8 +280,14 @@ def output(kind: str, q: Terms, Z: dict, plant):
     if kind == "friction":
         v = Z["velocity"]
         return (
-            mx.sign(v) * (q.coulomb * q.coulomb_factor + q.mu * Z["normal"] + q.stribeck + q.coulomb_t
-                          + q.axial_ratio * mx.fabs(Z["axial"]))
+            mx.sign(v)
+            * (
+                q.coulomb * q.coulomb_factor
+                + q.mu * Z["normal"]
+                + q.stribeck
+                + q.coulomb_t
+                + q.axial_ratio * mx.fabs(Z["axial"])
+            )
             + q.viscous * v
             + q.drag * v * mx.fabs(v)
             + 0.5 * q.asymmetry

@@ -49,7 +49,9 @@ def simulate(
     lib = library()
     eff = [lib[name] for name in effects]
     ctx.params = {e.name: e.params(ctx) for e in eff}
-    base = baseline_params({kind} | ({"stiffness"} if "screw_modulus" in baseline else set()), plant)
+    base = baseline_params(
+        {kind} | ({"stiffness"} if "screw_modulus" in baseline else set()), plant
+    )
     prob = build_problem(ctx, eff, base)
     given = dict(baseline)
     for vals in effects.values():

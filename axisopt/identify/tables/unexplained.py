@@ -18,7 +18,8 @@ from .. import residual as rs
 from ..levels import cluster_levels
 from .measure import FEATURES, Y_UNIT, Obs
 
-# Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode): the noise
+# Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode):
+# the noise
 # floor never takes differences across them.
 _CATEGORICAL_FACTORS = ("direction", "cycle", "mode")
 MIN_REPLICATE_DOF = 5
@@ -36,11 +37,14 @@ def noise_sigma_rel(o: Obs, resid: np.ndarray) -> tuple[float, str]:
        never differenced across."""
     r = resid / o.scale
     if o.factors:
-        # every model feature too: an FRF's real and imaginary rows share their factors but are no replicates
+        # every model feature too: an FRF's real and imaginary rows share their factors but are no
+        # replicates
         # levels logged with jitter are one level (:mod:`.levels`)
         feats = FEATURES[o.kind]
-        keys = np.column_stack([cluster_levels(v, k) for k, v in o.factors.items()]
-                               + [cluster_levels(z, feats[i] if i < len(feats) else "") for i, z in enumerate(o.Z)])
+        keys = np.column_stack(
+            [cluster_levels(v, k) for k, v in o.factors.items()]
+            + [cluster_levels(z, feats[i] if i < len(feats) else "") for i, z in enumerate(o.Z)]
+        )
         _, inv, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
         inv = np.asarray(inv).ravel()
         rep = counts[inv] >= 2
@@ -49,8 +53,11 @@ def noise_sigma_rel(o: Obs, resid: np.ndarray) -> tuple[float, str]:
             means = np.bincount(inv, weights=r, minlength=len(counts)) / counts
             ss = float(np.sum(((r - means[inv]) ** 2)[rep]))
             s = math.sqrt(ss / dof)
-            return max(s, 1e-6), f"pooled scatter of {int(np.count_nonzero(counts >= 2))} replicate groups " \
-                                 f"({dof} degrees of freedom)"
+            return (
+                max(s, 1e-6),
+                f"pooled scatter of {int(np.count_nonzero(counts >= 2))} replicate groups "
+                f"({dof} degrees of freedom)",
+            )
     s, how = _second_difference_sigma(o, r)
     if s is not None:
         return s, how
@@ -70,7 +77,8 @@ def _second_difference_sigma(o: Obs, r: np.ndarray):
     best = None
     for inner in names:
         v = cols[inner]
-        if inner in ("direction", "mode") or len(np.unique(v)) < 4:  # cycles are ordered: a trend cancels
+        # cycles are ordered: a trend cancels
+        if inner in ("direction", "mode") or len(np.unique(v)) < 4:
             continue
         keys = [cols[k] for k in names if k != inner] + [np.sign(v)]
         order = np.lexsort((v, *keys))
@@ -86,9 +94,11 @@ def _second_difference_sigma(o: Obs, r: np.ndarray):
             continue
         s = 1.4826 * float(np.median(np.abs(d2 - np.median(d2)))) / math.sqrt(6.0)
         if best is None or s < best[0]:
-            best = (max(s, 1e-6), f"second differences along {inner} within rows sharing the other factors")
+            best = (
+                max(s, 1e-6),
+                f"second differences along {inner} within rows sharing the other factors",
+            )
     return best if best is not None else (None, "")
-
 
 
 @dataclass
@@ -98,7 +108,8 @@ class TableUnexplained:
     kind: str
     source: str
     rms: float  # noise-weighted RMS of the final residual [-]
-    probes: list  # residual.Probe, one per recorded factor (and the velocity shape of friction data)
+    # residual.Probe, one per recorded factor (and the velocity shape of friction data)
+    probes: list
 
     @property
     def remaining(self) -> list:
@@ -108,7 +119,8 @@ class TableUnexplained:
         return sorted([p for p in self.probes if p.significant], key=lambda p: -p.share)
 
 
-UNEXPLAINED_RMS = 1.5  # a noise-weighted residual RMS below this is at the noise floor, whatever its pattern
+# a noise-weighted residual RMS below this is at the noise floor, whatever its pattern
+UNEXPLAINED_RMS = 1.5
 
 
 def table_unexplained(obs, resid_w, effects=()) -> list:
@@ -118,26 +130,40 @@ def table_unexplained(obs, resid_w, effects=()) -> list:
     out = []
     for o, r in zip(obs, resid_w):
         r = np.asarray(r, dtype=float)
-        probes = [rs.factor_probe(name, signed(o, name, r), vals, max_bins=8 if name == "velocity" else 6)
-                  for name, vals in o.factors.items() if len(np.unique(vals)) > 1]
+        probes = [
+            rs.factor_probe(name, signed(o, name, r), vals, max_bins=8 if name == "velocity" else 6)
+            for name, vals in o.factors.items()
+            if len(np.unique(vals)) > 1
+        ]
         if o.kind == "friction":
             v = o.feature("velocity")
             vs = float(np.quantile(np.abs(v), 0.25)) or 1e-3
-            shapes = {"v|v|": v * np.abs(v), "v": v, "low_speed": np.sign(v) * np.exp(-np.abs(v) / vs)}
+            shapes = {
+                "v|v|": v * np.abs(v),
+                "v": v,
+                "low_speed": np.sign(v) * np.exp(-np.abs(v) / vs),
+            }
             if np.ptp(np.sign(v)) > 0:
                 shapes.update({"|v|": np.abs(v), "sgn": np.sign(v)})
-            # the shapes are compared after what the model already fits along velocity: its Coulomb level, and
+            # the shapes are compared after what the model already fits along velocity: its Coulomb
+            # level, and
             # its viscous slope when the viscous effect is in the model
-            W = np.column_stack([np.sign(v), v] if "viscous" in [e.name for e in effects] else [np.sign(v)])
+            W = np.column_stack(
+                [np.sign(v), v] if "viscous" in [e.name for e in effects] else [np.sign(v)]
+            )
             if "viscous" in [e.name for e in effects]:
                 shapes.pop("v")
             for pr in probes:
                 if pr.kind == "velocity":
                     nm, sh = rs.best_shape(r, shapes, W)
                     # one smooth column can hold more than the level means do (bins average it out)
-                    pr.detail.update(shape=nm, shape_share=min(sh / pr.share, 1.0) if pr.share > 0 else 0.0)
+                    pr.detail.update(
+                        shape=nm, shape_share=min(sh / pr.share, 1.0) if pr.share > 0 else 0.0
+                    )
                     pr.share = max(pr.share, sh)
-        out.append(TableUnexplained(o.kind, str(o.dataset.source), float(np.sqrt(np.mean(r**2))), probes))
+        out.append(
+            TableUnexplained(o.kind, str(o.dataset.source), float(np.sqrt(np.mean(r**2))), probes)
+        )
     return out
 
 
@@ -150,15 +176,22 @@ def table_signature(p, disp) -> tuple:
         what, causes, measure = rs.VELOCITY_WORDS[d["shape"]]
         return f"depends on velocity: {what}", causes, measure
     if p.kind == "velocity":
-        return ("depends on velocity in a shape none of the library's terms has" + where,
-                "a friction law outside the library", "a friction curve over the whole speed range, both ways")
-    what, causes, measure = rs.FACTOR_WORDS.get(p.kind, (f"varies with {p.kind}", "an effect outside the library",
-                                                         f"vary {p.kind} on purpose"))
+        return (
+            "depends on velocity in a shape none of the library's terms has" + where,
+            "a friction law outside the library",
+            "a friction curve over the whole speed range, both ways",
+        )
+    what, causes, measure = rs.FACTOR_WORDS.get(
+        p.kind,
+        (f"varies with {p.kind}", "an effect outside the library", f"vary {p.kind} on purpose"),
+    )
     return what + where, causes, measure
 
 
-# Factors of a friction test whose friction follows the direction of motion (a load or temperature raises the
-# friction both ways, so the signed residual changes sign with v): their level means are taken of sgn(v) r,
+# Factors of a friction test whose friction follows the direction of motion (a load or temperature
+# raises the
+# friction both ways, so the signed residual changes sign with v): their level means are taken of
+# sgn(v) r,
 # or the two directions would average the effect away.
 SIGNED_FACTORS = ("axial_load", "normal_load", "temperature")
 
@@ -176,7 +209,8 @@ def residual_table(o: Obs, resid: np.ndarray, max_bins: int = 6) -> list:
     its levels (eta^2), the worst level and its RMS.  ``resid`` = prediction - y (SI)."""
     unit, f = Y_UNIT[o.kind]
     r = resid * f
-    if o.kind == "stiffness":  # misfit in compliance: a wrong stiffness would otherwise just track |F|
+    # misfit in compliance: a wrong stiffness would otherwise just track |F|
+    if o.kind == "stiffness":
         force = o.feature("force")
         ok = np.abs(force) > 0.05 * np.max(np.abs(force))
         r = np.where(ok, resid / np.where(ok, force, 1.0), 0.0) * 1e6

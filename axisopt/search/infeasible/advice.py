@@ -50,31 +50,40 @@ from ...model.limits import ACCEL, LIMITS, RATIO, SPEED, WEIGHT, check_name, che
 from .answer import DesignChange
 from .widen import first_design, first_feasible, widened
 
-# the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio sets
+# the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio
+# sets
 # (model.limits.CHECK_TABLE's set_by), as the advice's miss names (margin_<check> without margin_)
 SPEED_CHECKS = checks_set_by(SPEED)
 ACCEL_CHECKS = checks_set_by(ACCEL)  # the motor and reduction torques, the nut and bearing lift-off
-# the axis values lowered: (key, display unit, display per SI, the checks whose misses set the factor)
+# the axis values lowered: (key, display unit, display per SI, the checks whose misses set the
+# factor)
 SCALARS = (("max_speed", "m/min", 60.0, SPEED_CHECKS), ("acceleration", "m/s^2", 1.0, ACCEL_CHECKS))
-# the process's axial load sets the largest axial force with the acceleration: the nut's and support bearings'
-# lift-off and static checks (the advice's last resort before the user's own limits, with speed and acceleration)
+# the process's axial load sets the largest axial force with the acceleration: the nut's and support
+# bearings'
+# lift-off and static checks (the advice's last resort before the user's own limits, with speed and
+# acceleration)
 LOAD_CHECKS = frozenset({"nut_lift_off", "bearing_lift_off", "nut_static", "bearing_static"})
 # a reduction's ratio scales the reflected inertia, the torque and the motor speed
 REDUCTION_CHECKS = checks_set_by(RATIO)
-# what a counterbalance relieves on a vertical axis: the weight in the torques, lift-off, the brake and the lives
+# what a counterbalance relieves on a vertical axis: the weight in the torques, lift-off, the brake
+# and the lives
 BALANCE_CHECKS = checks_set_by(WEIGHT)
 BALANCE_LIMITS = frozenset({"min_life"})
-# the share of the head's weight a proposed counterbalance takes: an estimate (machine builders balance 80-100 %
+# the share of the head's weight a proposed counterbalance takes: an estimate (machine builders
+# balance 80-100 %
 # of the weight; the shipped balanced Zs take 83 and 90 %)
 BALANCE_SHARE = 0.9
 FURTHER = 0.9  # the second proposal of a speed or acceleration: 10 % below the first
 # a budget or mass limit every closest design misses: raised (bisected) before any other change
 RAISED_LIMITS = ("max_cost", "max_total_mass", "max_moving_mass")
 BISECT = 4  # halvings of the raise (after the verified need)
-SAFETY = 0.98  # the proposal a little below the closest designs' bare need (their misses are at one preload)
+# the proposal a little below the closest designs' bare need (their misses are at one preload)
+SAFETY = 0.98
 BUDGET = 6  # verifying searches at most (a count, not a time: the same answer on any machine)
-WIDE_MOUNTINGS = ("fixed-supported", "fixed-fixed")  # the mountings the last kind admits (fixed-free: too weak)
-LIMITS_BUDGET = 3  # searches of the last kind, the user's own limits (with a speed or acceleration change on top)
+# the mountings the last kind admits (fixed-free: too weak)
+WIDE_MOUNTINGS = ("fixed-supported", "fixed-fixed")
+# searches of the last kind, the user's own limits (with a speed or acceleration change on top)
+LIMITS_BUDGET = 3
 
 
 def _round(x: float, up: bool = False) -> float:
@@ -111,11 +120,14 @@ def _with(axis, key: str, to: float):
     """``axis`` with ``key`` (max_speed, acceleration or axial_load) lowered to ``to``, and the duty cycle's moves
     capped at it (a move's speed, acceleration or force left out in the YAML is the axis's, filled in when read)."""
     field = {"max_speed": "speed", "acceleration": "acceleration", "axial_load": "force"}[key]
+
     def cap(v):
         return v if v is None else math.copysign(min(abs(v), to), v)
 
-    cycle = tuple(replace(sg, **{field: cap(getattr(sg, field))}) if sg.kind == "move" else sg
-                  for sg in (axis.duty_cycle or ()))
+    cycle = tuple(
+        replace(sg, **{field: cap(getattr(sg, field))}) if sg.kind == "move" else sg
+        for sg in (axis.duty_cycle or ())
+    )
     return replace(axis, **{key: to}, **({"duty_cycle": cycle} if axis.duty_cycle else {}))
 
 
@@ -134,8 +146,10 @@ def _scalar_step(problem, key, unit, scale, factor) -> _Step | None:
     to = _round(value * scale * factor * SAFETY) / scale
     if to <= 0:
         return None
-    return _Step((DesignChange(f"axis.{key}", unit, value * scale, to * scale),),
-                 lambda p, k=key, t=to: replace(p, axis=_with(p.axis, k, t)))
+    return _Step(
+        (DesignChange(f"axis.{key}", unit, value * scale, to * scale),),
+        lambda p, k=key, t=to: replace(p, axis=_with(p.axis, k, t)),
+    )
 
 
 def _reduction_step(problem, misses, space) -> _Step | None:
@@ -150,17 +164,31 @@ def _reduction_step(problem, misses, space) -> _Step | None:
         return None
     try:
         wide = build_space(problem.with_limit("max_backlash", None))
-    except InputError:  # the search space without the limit has nothing to choose from: no advice of this kind
+    # the search space without the limit has nothing to choose from: no advice of this kind
+    except InputError:
         return None
     if wide.reductions is None or not len(wide.s_arr["lead"]):
         return None
-    lost = float(np.nanmin(wide.reductions.number("backlash"))) * float(np.max(wide.s_arr["lead"])) / (2 * np.pi)
+    lost = (
+        float(np.nanmin(wide.reductions.number("backlash")))
+        * float(np.max(wide.s_arr["lead"]))
+        / (2 * np.pi)
+    )
     to = _round(lost * 1e6, up=True) * 1e-6
     if not to > limit:
         return None
-    return _Step((DesignChange("limits.max_backlash", "um", limit * 1e6, to * 1e6,
-                               "admits a gearbox or belt: its lost motion at the table"),),
-                 lambda p: p.with_limit("max_backlash", to))
+    return _Step(
+        (
+            DesignChange(
+                "limits.max_backlash",
+                "um",
+                limit * 1e6,
+                to * 1e6,
+                "admits a gearbox or belt: its lost motion at the table",
+            ),
+        ),
+        lambda p: p.with_limit("max_backlash", to),
+    )
 
 
 def _balance_step(problem, misses, constraints) -> _Step | None:
@@ -182,10 +210,17 @@ def _balance_step(problem, misses, constraints) -> _Step | None:
         if cb.force >= target:
             return None
         force = _round(target, up=True)
-        end = None if cb.force_at_end is None else _round(cb.force_at_end * force / cb.force, up=True)
+        end = (
+            None if cb.force_at_end is None else _round(cb.force_at_end * force / cb.force, up=True)
+        )
         new = replace(cb, force=force, force_at_end=end)
-        change = DesignChange("axis.counterbalance.force", "N", cb.force, force,
-                              "" if end is None else f"force_at_end {cb.force_at_end:g} to {end:g} N")
+        change = DesignChange(
+            "axis.counterbalance.force",
+            "N",
+            cb.force,
+            force,
+            "" if end is None else f"force_at_end {cb.force_at_end:g} to {end:g} N",
+        )
     else:
         mass = _round(BALANCE_SHARE * a.moving_mass, up=True)
         if cb.mass >= mass:
@@ -228,9 +263,20 @@ def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) 
             return []
         least, _, proven = found
         to = _round(least / c.factor, up=True)
-        what = "the cheapest such design costs" if proven else "the search for a cheaper one was cut; a design costs"
-        return [DesignChange(f"limits.{name}", c.unit, c.limit / c.factor, to,
-                             f"every other limit kept; {what} {least / c.factor:,.0f} {c.unit}")]
+        what = (
+            "the cheapest such design costs"
+            if proven
+            else "the search for a cheaper one was cut; a design costs"
+        )
+        return [
+            DesignChange(
+                f"limits.{name}",
+                c.unit,
+                c.limit / c.factor,
+                to,
+                f"every other limit kept; {what} {least / c.factor:,.0f} {c.unit}",
+            )
+        ]
     if not need:
         return []
     lo, hi = c.limit, c.limit * (1.0 + max(need)) / SAFETY
@@ -245,8 +291,11 @@ def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) 
             hi = mid
         else:
             lo = mid
-    return [DesignChange(f"limits.{name}", c.unit, c.limit / c.factor, hi / c.factor,
-                         "every other limit kept")]
+    return [
+        DesignChange(
+            f"limits.{name}", c.unit, c.limit / c.factor, hi / c.factor, "every other limit kept"
+        )
+    ]
 
 
 def _limits_step(problem, constraints, misses, combos, budget: int) -> list:
@@ -293,16 +342,28 @@ def _limits_step(problem, constraints, misses, combos, budget: int) -> list:
                 continue  # this design meets the limit as asked
             to = _round(v / c.factor, up=up)
             relaxed = relaxed.with_limit(c.name, to * c.factor)
-            rows.append(DesignChange(f"limits.{c.name}", c.unit, c.limit / c.factor, to, "your own limit"))
+            rows.append(
+                DesignChange(f"limits.{c.name}", c.unit, c.limit / c.factor, to, "your own limit")
+            )
         else:
-            # the design found is the witness: it meets every vendor check and the other limits (the search), and
-            # these limits as rounded outward (its own values); tests/search/test_unseen_axes.py re-solves
+            # the design found is the witness: it meets every vendor check and the other limits (the
+            # search), and
+            # these limits as rounded outward (its own values); tests/search/test_unseen_axes.py re-
+            # solves
             return [ch for step in combo for ch in step.changes] + edits + rows
     return []
 
 
-def design_changes(problem, constraints, infeasibility, budget: int = BUDGET, *, space=None,
-                   deadline: float | None = None, cut: list | None = None) -> list:
+def design_changes(
+    problem,
+    constraints,
+    infeasibility,
+    budget: int = BUDGET,
+    *,
+    space=None,
+    deadline: float | None = None,
+    cut: list | None = None,
+) -> list:
     """The changes (:class:`.answer.DesignChange`, to be made together) that make ``problem`` feasible, verified
     by a search; empty when no kind applies, none is verified or the budget is spent.  ``space``: the problem's
     search space, if built.  ``deadline`` (a time.perf_counter() value): no verifying search runs past it (one it
@@ -331,21 +392,30 @@ def _design_changes(problem, constraints, infeasibility, budget: int, space) -> 
     if not misses:
         return []
     space = build_space(problem) if space is None else space
-    for name in RAISED_LIMITS:  # a budget or mass the closest designs all need more of: how much more, first
+    # a budget or mass the closest designs all need more of: how much more, first
+    for name in RAISED_LIMITS:
         if found := _raise_limit(problem, constraints, infeasibility, misses, name, space):
             return found
-    # another mounting, or parts a catalog filter left out (search.widen): the axis as asked, before it is lowered
+    # another mounting, or parts a catalog filter left out (search.widen): the axis as asked, before
+    # it is lowered
     edits, used = widened(problem, misses, budget)
     if edits:
         return edits
     budget -= used
-    # the speed and the acceleration as the closest designs' misses say, and one step further each (their misses
+    # the speed and the acceleration as the closest designs' misses say, and one step further each
+    # (their misses
     # are at one preload and one screw: another may need more)
     factors = [(key, unit, scale, _factor(misses, checks)) for key, unit, scale, checks in SCALARS]
     speed, accel = (_scalar_step(problem, k, u, sc, f) for k, u, sc, f in factors)
     further = [_scalar_step(problem, k, u, sc, f and f * FURTHER) for k, u, sc, f in factors]
-    structural = [s for s in (_reduction_step(problem, misses, space), _balance_step(problem, misses, constraints))
-                  if s]
+    structural = [
+        s
+        for s in (
+            _reduction_step(problem, misses, space),
+            _balance_step(problem, misses, constraints),
+        )
+        if s
+    ]
     singles = [s for s in [speed, accel, *further] if s] + structural
     # a structural change with the speed and acceleration on top (the misses it leaves need them)
     pairs = [(s, t) for s in structural for t in (speed, accel) if t]
@@ -355,11 +425,14 @@ def _design_changes(problem, constraints, infeasibility, budget: int, space) -> 
             changed = step.apply(changed)
         if _feasible(changed):
             return [c for step in combo for c in step.changes]
-    # last, the user's own limits, with the speed and acceleration changes on top where the misses call for them,
-    # and then the process's axial load lowered with the acceleration (a lighter cut: lift-off, static checks)
+    # last, the user's own limits, with the speed and acceleration changes on top where the misses
+    # call for them,
+    # and then the process's axial load lowered with the acceleration (a lighter cut: lift-off,
+    # static checks)
     f_load = _factor(misses, LOAD_CHECKS)
     load = _scalar_step(problem, "axial_load", "N", 1.0, f_load and f_load * FURTHER)
-    # the limits alone, then with the speed and acceleration as the misses say, then one step further with the
+    # the limits alone, then with the speed and acceleration as the misses say, then one step
+    # further with the
     # lighter cut (each one search)
     both = tuple(s for s in (speed, accel) if s)
     far = tuple(s for s in further if s) + ((load,) if load else ())

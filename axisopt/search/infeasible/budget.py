@@ -30,7 +30,8 @@ from ..task.constraints import build_constraints
 from ..task.objective import ObjectiveSpec
 
 LEAST_COST = ObjectiveSpec((("cost", -1.0),), "least cost", "EUR")
-MAX_BLOCKS = 400  # (mounting, nut, bearing) blocks screened at most (a count of work; the lathe Z at 500 EUR
+# (mounting, nut, bearing) blocks screened at most (a count of work; the lathe Z at 500 EUR
+MAX_BLOCKS = 400
 # screens 49 of its 35 904, in 0.6 s)
 FIRST_SOLVES = 64  # survivors solved exactly in the first batch (doubling)
 
@@ -70,7 +71,8 @@ def least_cost(problem, space, max_blocks: int = MAX_BLOCKS) -> tuple[float, int
         cheapest = pool_cost.min() if len(pool_cost) else np.inf
         if min(nxt, cheapest) >= best:  # nothing left could cost less (inf: nothing left at all)
             return (float(best), int(best_idx), True) if best_idx >= 0 else None
-        # the cheapest survivors, solved exactly: as soon as there are some while no design is known (its cost
+        # the cheapest survivors, solved exactly: as soon as there are some while no design is known
+        # (its cost
         # then caps the screening), else when they cost no more than the next block's bound
         if len(pool_cost) and (cheapest <= nxt or best == np.inf):
             take = np.argsort(pool_cost, kind="stable")[:batch]
@@ -86,13 +88,18 @@ def least_cost(problem, space, max_blocks: int = MAX_BLOCKS) -> tuple[float, int
             keep[take] = False
             pool_idx, pool_cost = pool_idx[keep], pool_cost[keep]
             continue
-        if screened >= max_blocks:  # cut: the cheapest design found so far, if any, not proven least
+        # cut: the cheapest design found so far, if any, not proven least
+        if screened >= max_blocks:
             return (float(best), int(best_idx), False) if best_idx >= 0 else None
-        end = group_end(bm, bn, pos, lambda i, c=best: lb[i] < c, group)  # the next blocks: ``group`` nuts
+        # the next blocks: ``group`` nuts
+        end = group_end(bm, bn, pos, lambda i, c=best: lb[i] < c, group)
         grp = slice(pos, end)
         screened += end - pos
         pos, group = end, group * 2
         for idx, _ in screen_blocks(space, bm[grp], bn[grp], bb[grp], capped, LEAST_COST):
             c = _costs(space, idx)
             fine = c < best
-            pool_idx, pool_cost = np.concatenate([pool_idx, idx[fine]]), np.concatenate([pool_cost, c[fine]])
+            pool_idx, pool_cost = (
+                np.concatenate([pool_idx, idx[fine]]),
+                np.concatenate([pool_cost, c[fine]]),
+            )

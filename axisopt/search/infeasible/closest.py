@@ -21,14 +21,16 @@ def closest_designs(space: Space, constraints, objective, combos) -> list:
         n = np.array([parts[k][1] for k in rows])
         b = np.array([parts[k][2] for k in rows])
         g = np.array([parts[k][3] for k in rows])
-        grid = np.linspace(space.preload_lo[n], space.preload_hi[n], G, axis=1)  # as np.linspace(lo, hi, G) each
+        # as np.linspace(lo, hi, G) each
+        grid = np.linspace(space.preload_lo[n], space.preload_hi[n], G, axis=1)
         mounting = space.mountings[mi]
         p = space.params_flat(mounting, np.repeat(n, G), np.repeat(b, G), np.repeat(g, G))
         out = respond(p, space.grid[mounting], mounting, grid.reshape(-1, 1), space.request)
         tot = np.zeros(len(rows) * G)
         for c in constraints:
             tot += c.violation(as_vector(c.value(out), len(rows) * G))
-        best = np.argmin(tot.reshape(len(rows), G), axis=1)  # first of equal misses, as one design alone
+        # first of equal misses, as one design alone
+        best = np.argmin(tot.reshape(len(rows), G), axis=1)
         pre[rows] = grid[np.arange(len(rows)), best]
     out = []
     for rank, (combo, (_mi, n, b, _g)) in enumerate(zip(combos, parts), start=1):

@@ -28,10 +28,14 @@ def _last(c, v):
 CHUNK = 2_000_000  # response elements per block
 
 
-# A compatibility rule (the bearing bore does not fit the screw end, the screw is too short: Check.relaxable
-# False) weighs this much more than a limit in the miss score, so the closest designs are ones the user can
-# free by relaxing their own limits whenever such designs miss by less than ten limits' worth (a bearing that
-# does not fit is not a design).  1000 gave the same proposals on the shipped variants but let fewer blocks be
+# A compatibility rule (the bearing bore does not fit the screw end, the screw is too short:
+# Check.relaxable
+# False) weighs this much more than a limit in the miss score, so the closest designs are ones the
+# user can
+# free by relaxing their own limits whenever such designs miss by less than ten limits' worth (a
+# bearing that
+# does not fit is not a design).  1000 gave the same proposals on the shipped variants but let fewer
+# blocks be
 # pruned: the explanation of the slowest vmc_random_1000 cases took 1.5x as long.
 RULE_WEIGHT = 10.0
 
@@ -45,11 +49,12 @@ def weight(c) -> float:
     return 1.0
 
 
-DRIVE_NUTS = 64  # nuts per evaluation of the drive limits' interval bounds (memory: nuts x bearings x guides)
+# nuts per evaluation of the drive limits' interval bounds (memory: nuts x bearings x guides)
+DRIVE_NUTS = 64
 
 
-FLOAT32_RTOL = 2.0 * SCREEN_RTOL  # slack on block bounds read from the search's float32 outputs (as its bound)
-
+# slack on block bounds read from the search's float32 outputs (as its bound)
+FLOAT32_RTOL = 2.0 * SCREEN_RTOL
 
 
 def favourable_bound(c, out_lo, out_hi, shape, positions: bool = True):
@@ -57,9 +62,11 @@ def favourable_bound(c, out_lo, out_hi, shape, positions: bool = True):
     the better of the two ends), broadcast to ``shape``; only the end(s) it needs are read (``out_lo`` may
     be None, or without the chain outputs, when no limit read there needs them).  ``positions``: the outputs
     have a trailing position axis (not the drive layout's, whose last axis is the drives)."""
+
     def val(o):
         v = c.value(o)
         return np.broadcast_to(_last(c, v) if positions else np.asarray(v, dtype=float), shape)
+
     end = c.favourable
     if end is End.INTERVAL:
         v_lo, v_hi = val(out_lo), val(out_hi)
@@ -95,25 +102,31 @@ def block_optimism(space: Space, constraints, drive: bool = True):
     drive = [c for c in constraints if not is_bounded(c)] if drive else []
     constraints = bounded + drive
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
-    # at the lowest preload only the limits it favours are read: the stiffness chain and modes are skipped there
+    # at the lowest preload only the limits it favours are read: the stiffness chain and modes are
+    # skipped there
     # unless one of those reads them (as in _score_nuts)
     chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in bounded if c.convex or not c.lower_type)
-    # a minimum over a few positions bounds the minimum over the grid from above: optimistic for a ">=" limit,
+    # a minimum over a few positions bounds the minimum over the grid from above: optimistic for a
+    # ">=" limit,
     # so the few suffice unless a "<=" limit reads a profile
     few = all(c.sense == ">=" for c in bounded if c.profile)
     out = []
     for mounting in space.mountings:
         x = bound_positions(space, mounting) if few else space.grid[mounting]
         step = block_chunk(space) if few else max(1, CHUNK // max(B * len(x), 1))
-        best = {c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints}
+        best = {
+            c.name: np.full((N, B), -np.inf if c.sense == ">=" else np.inf) for c in constraints
+        }
         for n0 in range(0, N, step):
             sl = slice(n0, min(N, n0 + step))
             lo = space.preload_lo[sl].reshape(-1, 1, 1, 1)
             hi = space.preload_hi[sl].reshape(-1, 1, 1, 1)
             shape = (sl.stop - sl.start, B)
             for t in types if bounded else ():
-                if few:  # the search's block bounds' float32 outputs (the lowest preload at one position: a
-                    # ">=" profile's minimum over fewer positions is no lower), relaxed below for the rounding
+                # the search's block bounds' float32 outputs (the lowest preload at one position: a
+                if few:
+                    # ">=" profile's minimum over fewer positions is no lower), relaxed below for
+                    # the rounding
                     with np.errstate(all="ignore"):
                         out_lo, out_hi = block_outputs(space, mounting, sl, str(t))
                 else:
@@ -121,7 +134,9 @@ def block_optimism(space: Space, constraints, drive: bool = True):
                     out_lo = respond(p, x, mounting, lo, model.MECHANICS.but(chain=chain_lo))
                     out_hi = respond(p, x, mounting, hi, model.MECHANICS)
                 for c in bounded:
-                    v = np.asarray(favourable_bound(c, out_lo, out_hi, shape + (1,))[..., 0], dtype=float)
+                    v = np.asarray(
+                        favourable_bound(c, out_lo, out_hi, shape + (1,))[..., 0], dtype=float
+                    )
                     pick = np.maximum if c.sense == ">=" else np.minimum
                     if few:
                         v = v + (1.0 if c.sense == ">=" else -1.0) * FLOAT32_RTOL * np.abs(v)
@@ -157,8 +172,10 @@ def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict
     out = {}
     for c in drive:
         if c.name not in hull:
-            raise KeyError(f"limit {c.name} reads {c.key}, which neither the optimistic guide nor the drive "
-                           "block bounds")
+            raise KeyError(
+                f"limit {c.name} reads {c.key}, which neither the optimistic guide nor the drive "
+                "block bounds"
+            )
         v = hull[c.name]
         out[c.name] = (v.max(axis=-1) if c.sense == ">=" else v.min(axis=-1))[:, group]
     return out

@@ -33,7 +33,8 @@ import numpy as np
 from ...model.limits import CHECK_RECORDS, LIMITS, check_name
 from .answer import Relaxation
 
-FIT = "bearing bore fits screw"  # the explanation's miss key for a bearing that does not fit the screw end
+# the explanation's miss key for a bearing that does not fit the screw end
+FIT = "bearing bore fits screw"
 
 
 @dataclass(frozen=True)
@@ -48,19 +49,34 @@ class Missing:
     instead: str  # the other way out
 
 
-# model.params: a motor row without brake_torque holds with 0 N.m (the brake check then fails on a vertical axis)
-MISSING = MappingProxyType({m.check: m for m in (
-    Missing("brake_holding", "motor", "motors", "brake_torque [N.m]", "brake torque",
-            "pick a motor with a holding brake"),
-)})
+# model.params: a motor row without brake_torque holds with 0 N.m (the brake check then fails on a
+# vertical axis)
+MISSING = MappingProxyType(
+    {
+        m.check: m
+        for m in (
+            Missing(
+                "brake_holding",
+                "motor",
+                "motors",
+                "brake_torque [N.m]",
+                "brake torque",
+                "pick a motor with a holding brake",
+            ),
+        )
+    }
+)
 
 
 def _unfreed(constraint, miss: float) -> bool:
     """A margin that only 0 or less would free (a miss of 100 % or more): never proposed."""
-    return check_name(constraint.name) is not None and constraint.sense == ">=" and miss >= 1.0 - 1e-12
+    return (
+        check_name(constraint.name) is not None and constraint.sense == ">=" and miss >= 1.0 - 1e-12
+    )
 
 
-# the lowest vendor margin ever proposed: 5 % below the vendor's rule (a rule relaxed further is a different part,
+# the lowest vendor margin ever proposed: 5 % below the vendor's rule (a rule relaxed further is a
+# different part,
 # speed or load, which the design changes of search.advice propose first)
 MARGIN_FLOOR = 0.95
 
@@ -96,23 +112,43 @@ def rank_relaxations(constraints, infeasibility) -> tuple[list, list, list]:
     by_label = {c.label: c for c in constraints}
     options, left_out = [], []
     for cand in infeasibility.closest:
-        fixed = [k for k, m in cand.misses.items()
-                 if k not in by_label or not relaxable(by_label[k]) or _unfreed(by_label[k], float(m))
-                 or _beyond_floor(by_label[k], float(m))]
+        fixed = [
+            k
+            for k, m in cand.misses.items()
+            if k not in by_label
+            or not relaxable(by_label[k])
+            or _unfreed(by_label[k], float(m))
+            or _beyond_floor(by_label[k], float(m))
+        ]
         need = [(by_label[k], float(m)) for k, m in cand.misses.items() if m > 0 and k not in fixed]
-        options.append((len(fixed), len(need), sum(m for _, m in need), cand.rank, cand, need, fixed))
+        options.append(
+            (len(fixed), len(need), sum(m for _, m in need), cand.rank, cand, need, fixed)
+        )
     if not options:
         return [], [], []
     blocked, _, _, rank, cand, need, fixed = min(options, key=lambda o: o[:4])
     left_out = [(o[3], o[6]) for o in options if o[6] and not blocked]
     out = []
-    # the user's own limits first, the vendor margins last (labelled, never below MARGIN_FLOOR); each smallest first
+    # the user's own limits first, the vendor margins last (labelled, never below MARGIN_FLOOR);
+    # each smallest first
     for c, m in sorted(need, key=lambda cm: (cm[0].name.startswith("margin_"), cm[1], cm[0].name)):
         lim = c.limit / c.factor
         to = lim * (1.0 - m) if c.sense == ">=" else (lim * (1.0 + m) if c.limit > 0 else m)
         margin = check_name(c.name) is not None
-        out.append(Relaxation(problem_key(c), c.label, c.unit, lim, to, m, rank, cand,
-                              together=len(need) > 1, below_vendor_rule=margin and to < 1.0))
+        out.append(
+            Relaxation(
+                problem_key(c),
+                c.label,
+                c.unit,
+                lim,
+                to,
+                m,
+                rank,
+                cand,
+                together=len(need) > 1,
+                below_vendor_rule=margin and to < 1.0,
+            )
+        )
     return out, left_out, fixed if blocked else []
 
 
@@ -147,7 +183,11 @@ def missing_values(constraints, infeasibility, space=None) -> list:
             if c is None or not _unfreed(c, float(m)):
                 continue
             need = MISSING.get(check_name(c.name))
-            row = getattr(cand.design, need.slot, None) if need is not None and cand.design is not None else None
+            row = (
+                getattr(cand.design, need.slot, None)
+                if need is not None and cand.design is not None
+                else None
+            )
             if row is not None and not math.isfinite(float(row[need.column.split(" ")[0]])):
                 rows.setdefault(need, {}).setdefault(str(row["series"]), set()).add(str(row["id"]))
             else:
@@ -155,11 +195,23 @@ def missing_values(constraints, infeasibility, space=None) -> list:
     out = []
     for need, series in rows.items():
         named, many = _rows_named(need, series, space)
-        out.append(f"{named} give{'' if many else 's'} no {need.what} (catalogs/{need.table}.csv {need.column}): "
-                   f"the {CHECK_RECORDS[need.check].short} check cannot pass at any margin above 0; give it, or "
-                   f"{need.instead}")
-    out += [f"{label} is 0 on design #{rank}: no margin above 0 frees it" for label, rank in other.items()]
+        out.append(
+            f"{named} give{'' if many else 's'} no {need.what} (catalogs/{need.table}.csv {need.column}): "
+            f"the {CHECK_RECORDS[need.check].short} check cannot pass at any margin above 0; give it, or "
+            f"{need.instead}"
+        )
+    out += [
+        f"{label} is 0 on design #{rank}: no margin above 0 frees it"
+        for label, rank in other.items()
+    ]
     return out
 
 
-__all__ = ["rank_relaxations", "relaxable", "problem_key", "missing_values", "MISSING", "MARGIN_FLOOR"]
+__all__ = [
+    "rank_relaxations",
+    "relaxable",
+    "problem_key",
+    "missing_values",
+    "MISSING",
+    "MARGIN_FLOOR",
+]

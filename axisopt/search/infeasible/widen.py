@@ -52,14 +52,24 @@ from ...model.limits import LIMITS
 from ...physics.checks import BUCKLING_ETA1, CRITICAL_SPEED_LAMBDA1
 from .answer import DesignChange
 
-DRIVE_CHECKS = frozenset(model.DRIVE_CHECKS)  # the checks of the drive's parts (model.limits: Check.drive)
+# the checks of the drive's parts (model.limits: Check.drive)
+DRIVE_CHECKS = frozenset(model.DRIVE_CHECKS)
 DRIVE_SLOTS = ("motor", "coupling")  # require/exclude slots the drive group widens
 # the filters each group widens to 'every value' (None)
 DRIVE_FILTERS = ("motor_vendors", "motor_series", "coupling_series")
-MECH_FILTERS = ("vendors", "nut_types", "bearing_arrangements", "bearing_preload", "guide_types", "guide_preload")
+MECH_FILTERS = (
+    "vendors",
+    "nut_types",
+    "bearing_arrangements",
+    "bearing_preload",
+    "guide_types",
+    "guide_preload",
+)
 GROUPS = ("mounting", "drive", "mechanical")
-# the command's deadline (time.perf_counter()) for the advice's verifying searches, None: none; set by
-# advice.design_changes for the searches it runs (a search cut by it finds nothing; ``CUT`` records that one was)
+# the command's deadline (time.perf_counter()) for the advice's verifying searches, None: none; set
+# by
+# advice.design_changes for the searches it runs (a search cut by it finds nothing; ``CUT`` records
+# that one was)
 DEADLINE: ContextVar = ContextVar("advice_deadline", default=None)
 CUT: ContextVar = ContextVar("advice_cut", default=None)
 
@@ -78,11 +88,20 @@ def _widen(problem, group: str):
     if group == "drive":
         if not r.drive:
             return r
-        return replace(r, **dict.fromkeys(DRIVE_FILTERS),
-                       require=_slots_left(r.require, DRIVE_SLOTS), exclude=_slots_left(r.exclude, DRIVE_SLOTS))
+        return replace(
+            r,
+            **dict.fromkeys(DRIVE_FILTERS),
+            require=_slots_left(r.require, DRIVE_SLOTS),
+            exclude=_slots_left(r.exclude, DRIVE_SLOTS),
+        )
     grades = r.screw_grades if r.screw_grades is None else tuple(grade_table().names)
-    return replace(r, **dict.fromkeys(MECH_FILTERS), screw_grades=grades,
-                   require=_slots_left(r.require, MECH_SLOTS), exclude=_slots_left(r.exclude, MECH_SLOTS))
+    return replace(
+        r,
+        **dict.fromkeys(MECH_FILTERS),
+        screw_grades=grades,
+        require=_slots_left(r.require, MECH_SLOTS),
+        exclude=_slots_left(r.exclude, MECH_SLOTS),
+    )
 
 
 def _stronger(mountings) -> tuple:
@@ -120,8 +139,10 @@ def _mounting_note(old: tuple, new: str) -> str:
     buckling = BUCKLING_ETA1[new] / BUCKLING_ETA1[best]
     if speed <= 1.0:
         return ""
-    return (f"{speed:.3g} x the critical speed and {buckling:.3g} x the buckling load of {best} on the same span, "
-            "THK A15-32 and A15-30")
+    return (
+        f"{speed:.3g} x the critical speed and {buckling:.3g} x the buckling load of {best} on the same span, "
+        "THK A15-32 and A15-30"
+    )
 
 
 def design_edits(problem, space, combo: int) -> list:
@@ -132,10 +153,20 @@ def design_edits(problem, space, combo: int) -> list:
     r = problem.restrictions
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     screw, nut, bearing, guide, motor, coupling, reduction = part_rows(space, n, b, g)
-    rows = {"screw": screw, "nut": nut, "bearing": bearing, "guide": guide, "motor": motor, "coupling": coupling}
+    rows = {
+        "screw": screw,
+        "nut": nut,
+        "bearing": bearing,
+        "guide": guide,
+        "motor": motor,
+        "coupling": coupling,
+    }
     mounting = space.mountings[mi]
-    out = [] if mounting in problem.mountings else _listed("catalog.mountings", [mounting],
-                                                           _mounting_note(problem.mountings, mounting))
+    out = (
+        []
+        if mounting in problem.mountings
+        else _listed("catalog.mountings", [mounting], _mounting_note(problem.mountings, mounting))
+    )
 
     def outside(allowed, values):
         return [] if allowed is None else [v for v in values if v not in allowed]
@@ -143,10 +174,16 @@ def design_edits(problem, space, combo: int) -> list:
     mech = (screw, nut, bearing, guide)
     out += _listed("catalog.vendors", outside(r.vendors, [row["vendor"] for row in mech]))
     out += _listed("catalog.nut_types", outside(r.nut_types, [nut["type"]]))
-    out += _listed("catalog.bearing_arrangements", outside(r.bearing_arrangements, [bearing["arrangement"]]))
-    out += _listed("catalog.bearing_preload", outside(r.bearing_preload, [bearing["preload_class"]]))
+    out += _listed(
+        "catalog.bearing_arrangements", outside(r.bearing_arrangements, [bearing["arrangement"]])
+    )
+    out += _listed(
+        "catalog.bearing_preload", outside(r.bearing_preload, [bearing["preload_class"]])
+    )
     out += _listed("catalog.guide_types", outside(r.guide_types, [guide["type"]]))
-    if r.guide_preload is not None and not {guide["preload_level"], guide["preload_class"]} & set(r.guide_preload):
+    if r.guide_preload is not None and not {guide["preload_level"], guide["preload_class"]} & set(
+        r.guide_preload
+    ):
         out += _listed("catalog.guide_preload", [guide["preload_level"]])
     if space.grades is not None:
         out += _listed("catalog.screw_grades", outside(r.screw_grades, [space.grades[n]]))
@@ -163,7 +200,11 @@ def design_edits(problem, space, combo: int) -> list:
         if req and pid not in req:
             out += _listed(f"catalog.require.{slot}", [pid])
         if pid in r.excluded(slot):
-            out.append(DesignChange(f"catalog.exclude.{slot}", "", math.nan, math.nan, "", "remove", (pid,)))
+            out.append(
+                DesignChange(
+                    f"catalog.exclude.{slot}", "", math.nan, math.nan, "", "remove", (pid,)
+                )
+            )
     return out
 
 
@@ -189,11 +230,13 @@ def first_feasible(problem, space=None):
         return None
     try:
         space = build_space(problem) if space is None else space
-    except InputError:  # a change the inputs refuse (build_space: nothing left to choose from) gives no advice
+    # a change the inputs refuse (build_space: nothing left to choose from) gives no advice
+    except InputError:
         return None
     spec = objective_spec(problem.objective.mode, problem)
-    ex, stats = bound_order_search(space, build_constraints(problem), spec, top=1, first_feasible=True,
-                                   deadline=deadline)
+    ex, stats = bound_order_search(
+        space, build_constraints(problem), spec, top=1, first_feasible=True, deadline=deadline
+    )
     ok = np.nonzero(np.isfinite(ex.objective))[0]
     if not len(ok) and stats.timed_out:
         _cut()
@@ -217,7 +260,9 @@ def with_edits(problem, edits):
             slot = e.key.split(".")[2]
             pairs = dict(kw.get(field, getattr(r, field)))
             ids = pairs.get(slot, ())
-            pairs[slot] = tuple(i for i in ids if i not in e.values) if e.edit == "remove" else ids + e.values
+            pairs[slot] = (
+                tuple(i for i in ids if i not in e.values) if e.edit == "remove" else ids + e.values
+            )
             kw[field] = tuple((k, v) for k, v in pairs.items() if v)
         else:
             have = problem.mountings if field == "mountings" else getattr(r, field)
@@ -249,8 +294,10 @@ def widened(problem, misses, budget: int) -> tuple:
         if r != problem.restrictions:
             tries.append(r)
             every = _widen(replace(problem, restrictions=every), group)
-    # the group the misses call for most, then every group at once (a superset of each group alone: a design
-    # of any one group is in it, and one may need parts of two groups); the narrowing finds the fewer edits
+    # the group the misses call for most, then every group at once (a superset of each group alone:
+    # a design
+    # of any one group is in it, and one may need parts of two groups); the narrowing finds the
+    # fewer edits
     tries = tries[:1] + ([every] if len(tries) > 1 else [])
     used, edits = 0, []
     for r in tries:
@@ -263,7 +310,13 @@ def widened(problem, misses, budget: int) -> tuple:
             break
     tried: set = set()
     while used < budget:
-        adds = [(e.key, v) for e in edits if e.edit == "add" for v in e.values if (e.key, v) not in tried]
+        adds = [
+            (e.key, v)
+            for e in edits
+            if e.edit == "add"
+            for v in e.values
+            if (e.key, v) not in tried
+        ]
         if sum(len(e.values) for e in edits) < 2 or not adds:
             break
         key, value = adds[0]
@@ -275,4 +328,11 @@ def widened(problem, misses, budget: int) -> tuple:
     return edits, used
 
 
-__all__ = ["widened", "design_edits", "first_design", "first_feasible", "with_edits", "DRIVE_CHECKS"]
+__all__ = [
+    "widened",
+    "design_edits",
+    "first_design",
+    "first_feasible",
+    "with_edits",
+    "DRIVE_CHECKS",
+]

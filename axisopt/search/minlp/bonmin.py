@@ -33,8 +33,10 @@ from .scaling import scaled_limit
 from .statuses import BONMIN_INFEASIBLE, BONMIN_SUCCESS
 from .streams import quiet_stdout
 
-FLOOR = 1e-6  # of each column's mean added to the one-hot mixtures (no stiffness or diameter exactly 0)
-# a preload that misses a limit on exact re-evaluation is backed off by this fraction of its range (Bonmin's
+# of each column's mean added to the one-hot mixtures (no stiffness or diameter exactly 0)
+FLOOR = 1e-6
+# a preload that misses a limit on exact re-evaluation is backed off by this fraction of its range
+# (Bonmin's
 # constraint tolerance)
 MOVES = (-1e-6,)
 
@@ -48,7 +50,9 @@ def _build(space, mounting, constraints, objective):
     lo = ca.dot(ca.DM(space.preload_lo), z["nut"]) + FLOOR * float(np.mean(space.preload_hi))
     hi = ca.dot(ca.DM(space.preload_hi), z["nut"]) + FLOOR * float(np.mean(space.preload_hi))
     x = space.positions(mounting)
-    out = model.axis_response(p, ca.DM(x), mounting, lo + w * (hi - lo), space.request.but(extras=True))
+    out = model.axis_response(
+        p, ca.DM(x), mounting, lo + w * (hi - lo), space.request.but(extras=True)
+    )
     g, lbg, ubg = [], [], []
     for s in SLOTS:
         g.append(ca.sum1(z[s]))
@@ -75,6 +79,8 @@ def _build(space, mounting, constraints, objective):
 # Seconds Bonmin may run past the time limit before it is stopped: its own limit is checked between
 # branch-and-bound nodes, and one node's NLP can run for minutes.
 DEADLINE_GRACE = 2.0
+
+
 class ChildError(Exception):
     """What the Bonmin child raised that is not a solver failure (a bug), with the child's traceback."""
 
@@ -103,11 +109,13 @@ def _solve_with_deadline(work, deadline: float, label: str):
         try:
             send.send(work())
             sent = True
-        except (RuntimeError, MemoryError) as exc:  # CasADi's errors building the problem, no memory for it
+        # CasADi's errors building the problem, no memory for it
+        except (RuntimeError, MemoryError) as exc:
             send.send(("error", f"{type(exc).__name__}: {exc}"))
             sent = True
         finally:
-            if not sent:  # anything else is a bug, not a solver failure: the parent raises it (ChildError)
+            # anything else is a bug, not a solver failure: the parent raises it (ChildError)
+            if not sent:
                 send.send(("raised", traceback.format_exc()))
             send.close()
             os._exit(0)
@@ -131,8 +139,12 @@ def _solve_with_deadline(work, deadline: float, label: str):
                     raise ChildError(value)
                 return status, value
             if tty:  # the CLI shows the "axisopt" logger's records on a terminal (only cli prints)
-                LOG.info("bonmin %s: running, %.0f s of at most %.0f s", label, time.perf_counter() - start,
-                         deadline)
+                LOG.info(
+                    "bonmin %s: running, %.0f s of at most %.0f s",
+                    label,
+                    time.perf_counter() - start,
+                    deadline,
+                )
     finally:
         recv.close()
         if proc.is_alive():
@@ -144,13 +156,24 @@ def _mounting_solve(space, mounting, constraints, objective, time_limit: float):
     """Build the MINLP of one mounting and solve it with Bonmin (runs in the deadline child)."""
     _, N, B, G = space.shape
     nlp, lbg, ubg, discrete = _build(space, mounting, constraints, objective)
-    opts = {"discrete": discrete, "print_time": False, "bonmin.time_limit": float(time_limit),
-            "bonmin.bb_log_level": 0, "bonmin.nlp_log_level": 0, "bonmin.fp_log_level": 0,
-            "bonmin.lp_log_level": 0, "bonmin.milp_log_level": 0, "bonmin.oa_log_level": 0,
-            "bonmin.print_level": 0, "bonmin.sb": "yes"}
+    opts = {
+        "discrete": discrete,
+        "print_time": False,
+        "bonmin.time_limit": float(time_limit),
+        "bonmin.bb_log_level": 0,
+        "bonmin.nlp_log_level": 0,
+        "bonmin.fp_log_level": 0,
+        "bonmin.lp_log_level": 0,
+        "bonmin.milp_log_level": 0,
+        "bonmin.oa_log_level": 0,
+        "bonmin.print_level": 0,
+        "bonmin.sb": "yes",
+    }
     solver = ca.nlpsol(f"bonmin_{mounting.replace('-', '_')}", "bonmin", nlp, opts)
     nt = len(objective.terms)
-    x0 = np.concatenate([np.full(N, 1.0 / N), np.full(B, 1.0 / B), np.full(G, 1.0 / G), [1.0], np.zeros(nt)])
+    x0 = np.concatenate(
+        [np.full(N, 1.0 / N), np.full(B, 1.0 / B), np.full(G, 1.0 / G), [1.0], np.zeros(nt)]
+    )
     lbx = np.concatenate([np.zeros(N + B + G + 1), np.full(nt, -np.inf)])
     ubx = np.concatenate([np.ones(N + B + G + 1), np.full(nt, np.inf)])
     return _solve_here(solver, dict(x0=x0, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg))
@@ -164,12 +187,25 @@ def _solve_here(solver, args: dict):
         last = [ln for ln in str(exc).splitlines() if ln.strip()][-1]
         return "error", last.split(": ", 1)[-1].strip()
     st = solver.stats()
-    return "ok", (np.asarray(sol["x"]).ravel(), {"return_status": str(st.get("return_status", "unknown")),
-                                                  "success": bool(st.get("success", False))})
+    return "ok", (
+        np.asarray(sol["x"]).ravel(),
+        {
+            "return_status": str(st.get("return_status", "unknown")),
+            "success": bool(st.get("success", False)),
+        },
+    )
 
 
-def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 100.0, top: int = 1,
-                 t0: float | None = None) -> SolveResult:
+def solve_bonmin(
+    problem,
+    space,
+    constraints,
+    objective,
+    *,
+    time_limit: float = 100.0,
+    top: int = 1,
+    t0: float | None = None,
+) -> SolveResult:
     """Solve each mounting's MINLP with Bonmin and return the best design (re-evaluated; never proven: status
     'feasible' at best).  One design only (``top`` is accepted for the common signature)."""
     t0 = time.perf_counter() if t0 is None else t0
@@ -189,9 +225,13 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
         n_solves += 1
         kind, got = _solve_with_deadline(
             lambda m=mounting, r=remaining: _mounting_solve(space, m, constraints, objective, r),
-            remaining + DEADLINE_GRACE, mounting)
+            remaining + DEADLINE_GRACE,
+            mounting,
+        )
         if kind == "timeout":
-            statuses.append(f"{mounting}: stopped at the time limit ({time_limit:g} s) without a result")
+            statuses.append(
+                f"{mounting}: stopped at the time limit ({time_limit:g} s) without a result"
+            )
             continue
         if kind == "error":  # Bonmin aborts on NaN derivatives etc.: report it, do not hide it
             statuses.append(f"{mounting}: ERROR ({got})")
@@ -199,8 +239,9 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
         xs, st = got
         status = str(st.get("return_status", "unknown"))
         statuses.append(f"{mounting}: {status}")
-        # whatever the status, Bonmin may carry an integer feasible point (e.g. on the time limit): checked here
-        zs = dict(zip(SLOTS, (xs[:N], xs[N:N + B], xs[N + B:N + B + G])))
+        # whatever the status, Bonmin may carry an integer feasible point (e.g. on the time limit):
+        # checked here
+        zs = dict(zip(SLOTS, (xs[:N], xs[N : N + B], xs[N + B : N + B + G])))
         if not integral(zs):
             notes.append(f"{mounting}: no integer solution returned")
             continue
@@ -208,32 +249,54 @@ def solve_bonmin(problem, space, constraints, objective, *, time_limit: float = 
         got = recover(space, mi, zs, lambda lo, hi, w=w: lo + w * (hi - lo), constraints, MOVES)
         combo, pre = got.combination, got.preload
         if pre is None:  # beyond Bonmin's constraint tolerance
-            notes.append(f"{mounting}: Bonmin's point violates a limit on exact re-evaluation "
-                         f"(combination {combo}, preload {got.proposed:.1f} N)")
+            notes.append(
+                f"{mounting}: Bonmin's point violates a limit on exact re-evaluation "
+                f"(combination {combo}, preload {got.proposed:.1f} N)"
+            )
             continue
         cand = make_candidate(space, combo, pre, objective, rank=1)
         if best is None or cand.objective > best.objective:
             best = cand
     all_success = all(s.split(": ", 1)[-1] == BONMIN_SUCCESS for s in statuses) and bool(statuses)
     if best is None:
-        # Bonmin's INFEASIBLE on a nonconvex problem is not a proof (it says so on feasible problems too)
+        # Bonmin's INFEASIBLE on a nonconvex problem is not a proof (it says so on feasible problems
+        # too)
         status = SOLVER_FAILED
         if statuses and all(s.endswith(BONMIN_INFEASIBLE) for s in statuses):
-            notes.append("Bonmin reports INFEASIBLE; not a proof on this nonconvex problem "
-                         "(the default method proves feasibility or infeasibility)")
+            notes.append(
+                "Bonmin reports INFEASIBLE; not a proof on this nonconvex problem "
+                "(the default method proves feasibility or infeasibility)"
+            )
     else:
         status = FEASIBLE  # Bonmin's B-BB on a nonconvex problem proves nothing
     failed = sum(1 for s in statuses if not s.endswith((BONMIN_SUCCESS, "(time limit)")))
-    cert = Certificate(combinations=space.size, feasible=None, pruned_by_bound=0, exact_evaluations=0,
-                       nlps_solved=n_solves, nlp_failures=failed,
-                       gap=float("nan"), proven=False,
-                       notes=tuple(["Bonmin B-BB on a nonconvex MINLP: a heuristic, no optimality proof"]
-                                   + notes))
+    cert = Certificate(
+        combinations=space.size,
+        feasible=None,
+        pruned_by_bound=0,
+        exact_evaluations=0,
+        nlps_solved=n_solves,
+        nlp_failures=failed,
+        gap=float("nan"),
+        proven=False,
+        notes=tuple(["Bonmin B-BB on a nonconvex MINLP: a heuristic, no optimality proof"] + notes),
+    )
     msg = "; ".join(statuses + notes)
     if all_success:
         msg = "Bonmin reported SUCCESS for every mounting (local, not a global proof); " + msg
-    return SolveResult(status, "bonmin", problem.name, objective.label, objective.unit, best, [], cert,
-                       time.perf_counter() - t0, message=msg, solver_status="; ".join(statuses))
+    return SolveResult(
+        status,
+        "bonmin",
+        problem.name,
+        objective.label,
+        objective.unit,
+        best,
+        [],
+        cert,
+        time.perf_counter() - t0,
+        message=msg,
+        solver_status="; ".join(statuses),
+    )
 
 
 __all__ = ["solve_bonmin"]

@@ -86,8 +86,14 @@ class Recovered:
     preload: float | None
 
 
-def recover(space, mounting_index: int, z: Mapping[str, np.ndarray], preload: Callable[[float, float], float],
-            constraints, moves=()) -> Recovered:
+def recover(
+    space,
+    mounting_index: int,
+    z: Mapping[str, np.ndarray],
+    preload: Callable[[float, float], float],
+    constraints,
+    moves=(),
+) -> Recovered:
     """The design at a solver's point.
 
     ``z``       : slot -> the binaries' values (the part with the largest value is chosen)
@@ -108,4 +114,12 @@ def recover(space, mounting_index: int, z: Mapping[str, np.ndarray], preload: Ca
     return Recovered(combo, pre, None)
 
 
-__all__ = ["SLOTS", "slot_params", "one_hot_symbols", "one_hot_params", "integral", "Recovered", "recover"]
+__all__ = [
+    "SLOTS",
+    "slot_params",
+    "one_hot_symbols",
+    "one_hot_params",
+    "integral",
+    "Recovered",
+    "recover",
+]

@@ -37,8 +37,14 @@ def reciprocal_times(value, divisor: float):
     return (1.0 / divisor) * value
 
 
-def scaled_limit(c, value, limit: Any = None, *, log: bool = True,
-                 divide: Callable[[Any, Any], Any] = operator.truediv) -> tuple[Any, float]:
+def scaled_limit(
+    c,
+    value,
+    limit: Any = None,
+    *,
+    log: bool = True,
+    divide: Callable[[Any, Any], Any] = operator.truediv,
+) -> tuple[Any, float]:
     """The limit ``c`` (a :class:`axisopt.search.task.space.Constraint`) on ``value`` as ``(g, rhs)``: the solver's
     constraint is ``g >= rhs`` or ``g <= rhs`` (``c.sense``).
 

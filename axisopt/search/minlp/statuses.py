@@ -40,8 +40,11 @@ SCIP_STATUSES = MappingProxyType({s.word: s for s in SCIP_STATUS_TABLE})
 
 BONMIN_SUCCESS, BONMIN_INFEASIBLE = "SUCCESS", "INFEASIBLE"
 BONMIN_STATUS_TABLE = (
-    # Bonmin's branch-and-bound is exact only on convex problems: on this nonconvex one neither word proves
-    SolverStatus(BONMIN_SUCCESS, STOPPED, "a local optimum of the branch-and-bound (not a global proof)"),
+    # Bonmin's branch-and-bound is exact only on convex problems: on this nonconvex one neither word
+    # proves
+    SolverStatus(
+        BONMIN_SUCCESS, STOPPED, "a local optimum of the branch-and-bound (not a global proof)"
+    ),
     SolverStatus(BONMIN_INFEASIBLE, STOPPED, "no point found (not a proof on a nonconvex problem)"),
 )
 BONMIN_STATUSES = MappingProxyType({s.word: s for s in BONMIN_STATUS_TABLE})

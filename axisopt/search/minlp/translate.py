@@ -61,9 +61,12 @@ def casadi_model(space, mounting, constraints, objective):
     p = one_hot_params(space, mounting, z)
     record = []
     with implicit_shift(record) as shift:
-        out = model.axis_response(p, ca.DM(space.positions(mounting)), mounting, pre,
-                                     space.request.but(extras=True))
-    outs = [ca.SX(out[key]) for key, _w in objective.terms] + [ca.SX(out[c.key]) for c in constraints]
+        out = model.axis_response(
+            p, ca.DM(space.positions(mounting)), mounting, pre, space.request.but(extras=True)
+        )
+    outs = [ca.SX(out[key]) for key, _w in objective.terms] + [
+        ca.SX(out[c.key]) for c in constraints
+    ]
     s = ca.vertcat(*[ca.vec(sym) for sym, _f in record]) if record else ca.SX(0, 1)
     ratios = ca.vertcat(*[ca.vec(f) for _s, f in record]) if record else ca.SX(0, 1)
     if ca.depends_on(ratios, s) if record else False:
@@ -71,16 +74,35 @@ def casadi_model(space, mounting, constraints, objective):
     return ca.Function("axis", [z["nut"], z["bearing"], z["guide"], pre, s], outs + [ratios]), shift
 
 
-_UNARY = {ca.OP_NEG: np.negative, ca.OP_SQRT: np.sqrt, ca.OP_SQ: np.square, ca.OP_EXP: np.exp, ca.OP_LOG: np.log,
-          ca.OP_INV: lambda a: 1.0 / a, ca.OP_FABS: np.abs, ca.OP_NOT: lambda a: (a == 0).astype(float),
-          ca.OP_ASSIGN: lambda a: a, ca.OP_TWICE: lambda a: 2.0 * a}
-_BINARY = {ca.OP_ADD: np.add, ca.OP_SUB: np.subtract, ca.OP_MUL: np.multiply, ca.OP_DIV: np.divide,
-           ca.OP_POW: np.power, ca.OP_CONSTPOW: np.power, ca.OP_FMIN: np.minimum, ca.OP_FMAX: np.maximum,
-           ca.OP_LT: lambda a, b: (a < b).astype(float), ca.OP_LE: lambda a, b: (a <= b).astype(float),
-           ca.OP_EQ: lambda a, b: (a == b).astype(float), ca.OP_NE: lambda a, b: (a != b).astype(float),
-           ca.OP_AND: lambda a, b: ((a != 0) & (b != 0)).astype(float),
-           ca.OP_OR: lambda a, b: ((a != 0) | (b != 0)).astype(float),
-           ca.OP_IF_ELSE_ZERO: lambda c, a: np.where(c != 0, a, 0.0)}
+_UNARY = {
+    ca.OP_NEG: np.negative,
+    ca.OP_SQRT: np.sqrt,
+    ca.OP_SQ: np.square,
+    ca.OP_EXP: np.exp,
+    ca.OP_LOG: np.log,
+    ca.OP_INV: lambda a: 1.0 / a,
+    ca.OP_FABS: np.abs,
+    ca.OP_NOT: lambda a: (a == 0).astype(float),
+    ca.OP_ASSIGN: lambda a: a,
+    ca.OP_TWICE: lambda a: 2.0 * a,
+}
+_BINARY = {
+    ca.OP_ADD: np.add,
+    ca.OP_SUB: np.subtract,
+    ca.OP_MUL: np.multiply,
+    ca.OP_DIV: np.divide,
+    ca.OP_POW: np.power,
+    ca.OP_CONSTPOW: np.power,
+    ca.OP_FMIN: np.minimum,
+    ca.OP_FMAX: np.maximum,
+    ca.OP_LT: lambda a, b: (a < b).astype(float),
+    ca.OP_LE: lambda a, b: (a <= b).astype(float),
+    ca.OP_EQ: lambda a, b: (a == b).astype(float),
+    ca.OP_NE: lambda a, b: (a != b).astype(float),
+    ca.OP_AND: lambda a, b: ((a != 0) & (b != 0)).astype(float),
+    ca.OP_OR: lambda a, b: ((a != 0) | (b != 0)).astype(float),
+    ca.OP_IF_ELSE_ZERO: lambda c, a: np.where(c != 0, a, 0.0),
+}
 
 
 class Graph:
@@ -180,7 +202,9 @@ class Translator:
         largest magnitude on the sample points, a power of 2)."""
         s = self.scale(node) if s is None else s
         name = name or f"v{node}"
-        y = self.m.addVar(name, lb=None if lb is None else lb / s, ub=None if ub is None else ub / s)
+        y = self.m.addVar(
+            name, lb=None if lb is None else lb / s, ub=None if ub is None else ub / s
+        )
         self.m.addCons(y - (1.0 / s) * expr == 0, name=f"def_{name}")
         self.n_aux += 1
         return s * y
@@ -192,10 +216,13 @@ class Translator:
         if self.folded(node):
             slot, vals = self.part_values(node)
             if not np.all(np.isfinite(vals)):
-                raise ValueError(f"node {node} (operation {g.op[node]}) is not finite for some parts")
+                raise ValueError(
+                    f"node {node} (operation {g.op[node]}) is not finite for some parts"
+                )
             if slot is None or np.ptp(vals) == 0:
                 e = float(vals[0])
-            elif np.array_equal(vals, vals.astype(bool)):  # a 0/1 flag: exact and linear in the binaries
+            # a 0/1 flag: exact and linear in the binaries
+            elif np.array_equal(vals, vals.astype(bool)):
                 e = self.ps.quicksum(self.z[slot][i] for i in np.nonzero(vals)[0])
             else:
                 lin = self.ps.quicksum(float(v) * zi for v, zi in zip(vals, self.z[slot]))

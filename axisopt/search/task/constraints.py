@@ -27,7 +27,8 @@ from ...model.outputs import REGEN_OUTPUTS
 from ...problem import Problem
 from .objective import min_last
 
-PROFILE = frozenset(model.PROFILE_OUTPUTS)  # outputs given per position: a limit reads their minimum
+# outputs given per position: a limit reads their minimum
+PROFILE = frozenset(model.PROFILE_OUTPUTS)
 
 
 class Preload(enum.IntEnum):
@@ -55,16 +56,22 @@ class Constraint:
     key: str  # model output
     sense: str  # '<=' or '>='
     limit: float  # SI
-    direction: int  # a Preload: 0 independent, +1 nondecreasing, -1 nonincreasing, CONVEX (met on an interval)
+    # a Preload: 0 independent, +1 nondecreasing, -1 nonincreasing, CONVEX (met on an interval)
+    direction: int
     label: str
     unit: str
     factor: float  # SI per display unit
     # derived from the fields above (set in __post_init__), read in the search's inner loops
-    profile: bool = field(init=False, repr=False, compare=False)  # the output is a profile over the stroke
-    convex: bool = field(init=False, repr=False, compare=False)  # satisfied on an interval of preloads
-    upper_type: bool = field(init=False, repr=False, compare=False)  # satisfied below a preload threshold
-    lower_type: bool = field(init=False, repr=False, compare=False)  # satisfied above a preload threshold
-    favourable: End = field(init=False, repr=False, compare=False)  # the preload end where it is easiest to meet
+    # the output is a profile over the stroke
+    profile: bool = field(init=False, repr=False, compare=False)
+    # satisfied on an interval of preloads
+    convex: bool = field(init=False, repr=False, compare=False)
+    # satisfied below a preload threshold
+    upper_type: bool = field(init=False, repr=False, compare=False)
+    # satisfied above a preload threshold
+    lower_type: bool = field(init=False, repr=False, compare=False)
+    # the preload end where it is easiest to meet
+    favourable: End = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         d = Preload(self.direction)
@@ -72,8 +79,13 @@ class Constraint:
         up = not convex and ((self.sense == "<=" and d > 0) or (self.sense == ">=" and d < 0))
         low = not convex and ((self.sense == ">=" and d > 0) or (self.sense == "<=" and d < 0))
         end = End.INTERVAL if convex else End.HIGH if low else End.LOW
-        for k, v in (("profile", self.key in PROFILE), ("convex", convex), ("upper_type", up),
-                     ("lower_type", low), ("favourable", end)):
+        for k, v in (
+            ("profile", self.key in PROFILE),
+            ("convex", convex),
+            ("upper_type", up),
+            ("lower_type", low),
+            ("favourable", end),
+        ):
             object.__setattr__(self, k, v)
 
     def value(self, out, axis=-1):
@@ -123,7 +135,8 @@ def ok_all(cons, out, K):
     return ok
 
 
-# Checks the search's preload range holds by construction (build_space), at a margin up to 1: not constraints.
+# Checks the search's preload range holds by construction (build_space), at a margin up to 1: not
+# constraints.
 RANGE_CHECKS = frozenset({"nut_preload"})
 
 
@@ -131,14 +144,28 @@ def build_constraints(problem: Problem) -> tuple[Constraint, ...]:
     out = []
     for key, value in problem.limits:
         lim = LIMITS[key]
-        out.append(Constraint(key, lim.output, lim.sense, value, lim.preload, key.replace("_", " "), lim.unit,
-                              lim.factor))
+        out.append(
+            Constraint(
+                key,
+                lim.output,
+                lim.sense,
+                value,
+                lim.preload,
+                key.replace("_", " "),
+                lim.unit,
+                lim.factor,
+            )
+        )
     for check, m in problem.margins:
         if check in RANGE_CHECKS and m <= 1.0:
             continue  # the search's preload range holds it (build_space)
         if m > 0:
             k = margin_output(check)
-            out.append(Constraint(k, k, ">=", m, CHECK_RECORDS[check].preload, model.CHECK_LABELS[check], "", 1.0))
+            out.append(
+                Constraint(
+                    k, k, ">=", m, CHECK_RECORDS[check].preload, model.CHECK_LABELS[check], "", 1.0
+                )
+            )
     return tuple(out)
 
 

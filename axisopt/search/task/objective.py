@@ -20,9 +20,11 @@ from ...units import N_PER_UM
 
 TIE_RTOL = 1e-7  # objective values this close count as equal; ties go to lower cost, then mass
 
-# SI per display unit of each objective output (N/um for the stiffnesses); the objective is in display units
+# SI per display unit of each objective output (N/um for the stiffnesses); the objective is in
+# display units
 DISPLAY_FACTOR = MappingProxyType({g.output: g.factor for g in OBJECTIVE_TABLE})
-STIFFNESS_OUTPUTS = frozenset(o for o, f in DISPLAY_FACTOR.items() if f == N_PER_UM)  # shown in N/um
+# shown in N/um
+STIFFNESS_OUTPUTS = frozenset(o for o, f in DISPLAY_FACTOR.items() if f == N_PER_UM)
 
 
 def min_last(v):
@@ -70,7 +72,8 @@ def objective_spec(kind: str, problem: Problem | None = None) -> ObjectiveSpec:
     """The objective of the mode ``kind`` (a scalar goal of ``OBJECTIVE_TABLE``, or ``'weighted'`` with the
     weights and scales of ``problem``)."""
     g = GOALS.get(kind)
-    if g is not None and g.mode:  # a least cost or mass is maximised as its negative (ObjectiveSpec.sign)
+    # a least cost or mass is maximised as its negative (ObjectiveSpec.sign)
+    if g is not None and g.mode:
         return ObjectiveSpec(((g.output, 1.0 if g.sense == "max" else -1.0),), g.label, g.unit)
     if kind == "weighted":
         ob = problem.objective

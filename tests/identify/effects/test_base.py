@@ -69,8 +69,15 @@ def test_one_registry_serves_tables_and_time_records():
     table, time = library(), time_effects()
     assert list(time) == list(TIME_ORDER)
     # the effects both kinds of data can show are declared once
-    assert set(table) & set(time) == {"direction_asymmetry", "stribeck", "extra_mode", "quadratic_drag",
-                                      "nut_axial_friction", "viscous_temperature", "coulomb_temperature"}
+    assert set(table) & set(time) == {
+        "direction_asymmetry",
+        "stribeck",
+        "extra_mode",
+        "quadratic_drag",
+        "nut_axial_friction",
+        "viscous_temperature",
+        "coulomb_temperature",
+    }
     assert "lead_ripple" not in table and "position_friction" not in table
     assert time["stribeck"].terms == ("Fs",) and time["stribeck"].shape.name == "vs"
     assert time["lead_ripple"].terms == ("rs", "rc", "ks", "kc")

@@ -19,12 +19,19 @@ from axisopt.report.timediag import time_diagnosis_dict, time_diagnosis_text
 
 NEW = ("time_periodic", "local_friction", "friction_drift")
 SIGNATURES = ("line", "spot", "decay")
-LIBRARY_BEFORE = ["stribeck", "direction_asymmetry", "position_friction", "extra_mode", "lead_ripple",
-                  "quadratic_drag"]
+LIBRARY_BEFORE = [
+    "stribeck",
+    "direction_asymmetry",
+    "position_friction",
+    "extra_mode",
+    "lead_ripple",
+    "quadratic_drag",
+]
 STROKE = 0.8  # [m] of table_x.yaml
 
 
-# ----------------------------------------------------------------------- the hidden physics (this file's own)
+# ----------------------------------------------------------------------- the hidden physics (this
+# file's own)
 def periodic_force(f_hz, amp, phase):
     """A force in -x the drive must supply: amp sin(2 pi f t + phase) [N] (a pump's or spindle's unbalance)."""
     return lambda t, x, v: amp * math.sin(2.0 * math.pi * f_hz * t + phase)
@@ -48,7 +55,8 @@ def amplitude(est):
     return math.hypot(est.value("ps"), est.value("pc"))
 
 
-# ------------------------------------------------------------------------------------------- named, alone
+# ------------------------------------------------------------------------------------------- named,
+# alone
 PERIODIC = [  # seed, frequency [Hz], amplitude [N], phase, force noise [N]
     (31, 9.5, 60.0, 0.7, 4.0),
     (32, 23.0, 40.0, -1.2, 4.0),
@@ -57,10 +65,13 @@ PERIODIC = [  # seed, frequency [Hz], amplitude [N], phase, force noise [N]
 
 
 @pytest.mark.parametrize("seed, f_hz, amp, phase, noise", PERIODIC)
-def test_time_periodic_force_is_named_with_its_frequency_and_amplitude(tmp_path, plant, seed, f_hz, amp, phase,
-                                                                       noise):
+def test_time_periodic_force_is_named_with_its_frequency_and_amplitude(
+    tmp_path, plant, seed, f_hz, amp, phase, noise
+):
     truth = truth_for(seed, extra_force=periodic_force(f_hz, amp, phase))
-    diag = diagnose_time_files(records(tmp_path, truth, seed, loop=LoopSettings(force_noise=noise)), plant=plant)
+    diag = diagnose_time_files(
+        records(tmp_path, truth, seed, loop=LoopSettings(force_noise=noise)), plant=plant
+    )
     assert diag.verdict == ["time_periodic"]
     assert shape(diag, "freq") == pytest.approx(f_hz, rel=0.02)
     assert amplitude(diag.final) == pytest.approx(amp, rel=0.10)
@@ -69,7 +80,9 @@ def test_time_periodic_force_is_named_with_its_frequency_and_amplitude(tmp_path,
     text = time_diagnosis_text(diag)
     assert "freq" in text and "amplitude of the periodic force" in text
     params = {p["name"]: p["value"] for p in time_diagnosis_dict(diag)["final"]["parameters"]}
-    assert params["freq"] == pytest.approx(f_hz, rel=0.02) and params["amp"] == pytest.approx(amp, rel=0.10)
+    assert params["freq"] == pytest.approx(f_hz, rel=0.02) and params["amp"] == pytest.approx(
+        amp, rel=0.10
+    )
 
 
 SPOTS = [  # seed, x0 [m], width [m], height [N], force noise [N]
@@ -80,9 +93,13 @@ SPOTS = [  # seed, x0 [m], width [m], height [N], force noise [N]
 
 
 @pytest.mark.parametrize("seed, x0, width, height, noise", SPOTS)
-def test_local_friction_is_named_with_its_place_width_and_height(tmp_path, plant, seed, x0, width, height, noise):
+def test_local_friction_is_named_with_its_place_width_and_height(
+    tmp_path, plant, seed, x0, width, height, noise
+):
     truth = truth_for(seed, extra_friction=spot_friction(x0, width, height))
-    diag = diagnose_time_files(records(tmp_path, truth, seed, loop=LoopSettings(force_noise=noise)), plant=plant)
+    diag = diagnose_time_files(
+        records(tmp_path, truth, seed, loop=LoopSettings(force_noise=noise)), plant=plant
+    )
     assert diag.verdict == ["local_friction"]
     assert abs(shape(diag, "x0") - x0) < 0.02 * STROKE
     assert shape(diag, "width") == pytest.approx(width, rel=0.10)
@@ -98,30 +115,61 @@ DRIFTS = [  # seed, amplitude [N], tau [s], force noise [N]
 
 
 @pytest.mark.parametrize("seed, amp, tau, noise", DRIFTS)
-def test_friction_drift_is_named_with_its_amplitude_and_time_constant(tmp_path, plant, seed, amp, tau, noise):
+def test_friction_drift_is_named_with_its_amplitude_and_time_constant(
+    tmp_path, plant, seed, amp, tau, noise
+):
     truth = truth_for(seed, extra_friction=warm_up(amp, tau))
-    diag = diagnose_time_files(records(tmp_path, truth, seed, loop=LoopSettings(force_noise=noise)), plant=plant)
+    diag = diagnose_time_files(
+        records(tmp_path, truth, seed, loop=LoopSettings(force_noise=noise)), plant=plant
+    )
     assert diag.verdict == ["friction_drift"]  # not direction_asymmetry, not stribeck
     assert shape(diag, "tau") == pytest.approx(tau, rel=0.10)
     assert diag.final.value("Ad") == pytest.approx(amp, rel=0.10)
     assert not unexplained(diag)["remaining"]
 
 
-# ------------------------------------------------------------------------------- named beside another effect
-BESIDE = [  # seed, the hidden class and its physics, the library effect beside it, (shape, true value, tolerance)
-    (61, "time_periodic", {"extra_force": periodic_force(17.0, 50.0, 0.3)}, {"stribeck": 150.0, "stribeck_v": 0.004},
-     ("freq", 17.0, 0.02 * 17.0)),
-    (62, "local_friction", {"extra_friction": spot_friction(0.4, 0.008, 110.0)},
-     {"stribeck": 150.0, "stribeck_v": 0.004}, ("x0", 0.4, 0.02 * STROKE)),
-    (63, "friction_drift", {"extra_friction": warm_up(120.0, 2.5)}, {"quadratic_drag": 3000.0}, ("tau", 2.5, 0.25)),
-    pytest.param(64, "time_periodic", {"extra_force": periodic_force(26.0, 45.0, 1.0)},
-                 {"ripple": 40.0, "ripple_period": LEAD}, ("freq", 26.0, 0.02 * 26.0), marks=pytest.mark.slow),
+# ------------------------------------------------------------------------------- named beside
+# another effect
+# seed, the hidden class and its physics, the library effect beside it, (shape, true value,
+# tolerance)
+BESIDE = [
+    (
+        61,
+        "time_periodic",
+        {"extra_force": periodic_force(17.0, 50.0, 0.3)},
+        {"stribeck": 150.0, "stribeck_v": 0.004},
+        ("freq", 17.0, 0.02 * 17.0),
+    ),
+    (
+        62,
+        "local_friction",
+        {"extra_friction": spot_friction(0.4, 0.008, 110.0)},
+        {"stribeck": 150.0, "stribeck_v": 0.004},
+        ("x0", 0.4, 0.02 * STROKE),
+    ),
+    (
+        63,
+        "friction_drift",
+        {"extra_friction": warm_up(120.0, 2.5)},
+        {"quadratic_drag": 3000.0},
+        ("tau", 2.5, 0.25),
+    ),
+    pytest.param(
+        64,
+        "time_periodic",
+        {"extra_force": periodic_force(26.0, 45.0, 1.0)},
+        {"ripple": 40.0, "ripple_period": LEAD},
+        ("freq", 26.0, 0.02 * 26.0),
+        marks=pytest.mark.slow,
+    ),
 ]
 BESIDE_NAME = {"stribeck": "stribeck", "quadratic_drag": "quadratic_drag", "ripple": "lead_ripple"}
 
 
 @pytest.mark.parametrize("seed, name, hidden, other, expect", BESIDE)
-def test_each_class_is_named_beside_a_library_effect(tmp_path, plant, seed, name, hidden, other, expect):
+def test_each_class_is_named_beside_a_library_effect(
+    tmp_path, plant, seed, name, hidden, other, expect
+):
     truth = truth_for(seed, **hidden, **other)
     diag = diagnose_time_files(records(tmp_path, truth, seed), plant=plant)
     assert set(diag.verdict) == {name, next(BESIDE_NAME[k] for k in other if k in BESIDE_NAME)}
@@ -130,7 +178,8 @@ def test_each_class_is_named_beside_a_library_effect(tmp_path, plant, seed, name
     assert not unexplained(diag)["remaining"]
 
 
-# ------------------------------------------------------------------- outside the library: the signature says it
+# ------------------------------------------------------------------- outside the library: the
+# signature says it
 def _signature(diag, kind):
     sigs = [s for s in unexplained(diag)["signatures"] if s["kind"] == kind]
     assert sigs, unexplained(diag)["signatures"]
@@ -141,7 +190,9 @@ def test_a_line_left_unexplained_is_located_in_frequency_and_not_tied_to_speed(t
     truth = truth_for(34, extra_force=periodic_force(13.0, 60.0, 0.4))
     diag = diagnose_time_files(records(tmp_path, truth, 34), plant=plant, candidates=LIBRARY_BEFORE)
     sig = _signature(diag, "line")
-    assert sig["frequency"] == pytest.approx(13.0, rel=0.02) and sig["amplitude"] == pytest.approx(60.0, rel=0.1)
+    assert sig["frequency"] == pytest.approx(13.0, rel=0.02) and sig["amplitude"] == pytest.approx(
+        60.0, rel=0.1
+    )
     assert sig["fixed"] and "not tied to speed" in sig["signature"] and "pump" in sig["causes"]
     assert "13 Hz" in time_diagnosis_text(diag)
 
@@ -151,7 +202,9 @@ def test_a_line_above_the_fitted_band_is_no_resonance_and_is_located(tmp_path, p
     the filter's attenuation of the table's response would bias the amplitude); the steady line is not taken
     for a resonance (extra_mode not tried), nothing is named and the signature gives the frequency."""
     truth = truth_for(33, extra_force=periodic_force(29.0, 70.0, 2.5))
-    diag = diagnose_time_files(records(tmp_path, truth, 33, loop=LoopSettings(force_noise=10.0)), plant=plant)
+    diag = diagnose_time_files(
+        records(tmp_path, truth, 33, loop=LoopSettings(force_noise=10.0)), plant=plant
+    )
     assert diag.verdict == [] and "steady line" in diag.skipped["extra_mode"]
     sig = _signature(diag, "line")
     assert sig["frequency"] == pytest.approx(29.0, rel=0.02) and sig["fixed"]
@@ -173,7 +226,9 @@ def test_a_spot_left_unexplained_is_located_on_the_stroke(tmp_path, plant):
     truth = truth_for(44, extra_friction=spot_friction(0.2, 0.008, 130.0))
     diag = diagnose_time_files(records(tmp_path, truth, 44), plant=plant, candidates=LIBRARY_BEFORE)
     sig = _signature(diag, "spot")
-    assert abs(sig["x0_mm"] - 200.0) < 0.02 * STROKE * 1e3 and sig["width_mm"] == pytest.approx(8.0, rel=0.2)
+    assert abs(sig["x0_mm"] - 200.0) < 0.02 * STROKE * 1e3 and sig["width_mm"] == pytest.approx(
+        8.0, rel=0.2
+    )
     assert sig["directions"] == "both" and sig["friction"]
     assert f"bump at {sig['x0_mm']:.1f} mm" in sig["signature"] and "rail" in sig["causes"]
 
@@ -182,6 +237,7 @@ def test_a_drift_left_unexplained_gives_its_time_constant(tmp_path, plant):
     truth = truth_for(54, extra_friction=warm_up(150.0, 3.0))
     diag = diagnose_time_files(records(tmp_path, truth, 54), plant=plant, candidates=LIBRARY_BEFORE)
     sig = _signature(diag, "decay")
-    assert 2.0 <= sig["tau"] <= 4.5  # the probe's grid of time constants: 0.3 .. 30 s, 13 per two decades
+    # the probe's grid of time constants: 0.3 .. 30 s, 13 per two decades
+    assert 2.0 <= sig["tau"] <= 4.5
     assert sig["friction_share"] > 0.5 and "warm-up" in sig["causes"]
     assert "direction_asymmetry" not in diag.verdict

@@ -30,7 +30,8 @@ def _no_structure(diag):
     return all(not u.remaining for u in diag.unexplained)
 
 
-# ------------------------------------------------------------------------------ tables: the nut's axial load
+# ------------------------------------------------------------------------------ tables: the nut's
+# axial load
 AXIAL = [  # seed, k_a = 1/eta - 1, axial loads [N], speed jitter, position jitter [m], noise [N]
     (1, 0.08, (-3000, -1000, 0, 1500, 3000), 0.0, 0.0, 3.0),
     (2, 0.05, (0, 2000, 4000, 6000), 0.005, 0.001, 5.0),
@@ -39,9 +40,20 @@ AXIAL = [  # seed, k_a = 1/eta - 1, axial loads [N], speed jitter, position jitt
 
 
 @pytest.mark.parametrize("seed, ka, loads, vj, pj, noise", AXIAL)
-def test_nut_friction_growing_with_axial_load_is_named_in_a_table(tmp_path, plant, seed, ka, loads, vj, pj, noise):
-    diag = _table(tmp_path, plant, seed, axial_ratio=ka, axial_levels=loads, fv=plant.viscous,
-                  speed_jitter=vj, pos_jitter=pj, noise=noise)
+def test_nut_friction_growing_with_axial_load_is_named_in_a_table(
+    tmp_path, plant, seed, ka, loads, vj, pj, noise
+):
+    diag = _table(
+        tmp_path,
+        plant,
+        seed,
+        axial_ratio=ka,
+        axial_levels=loads,
+        fv=plant.viscous,
+        speed_jitter=vj,
+        pos_jitter=pj,
+        noise=noise,
+    )
     assert _names(diag) == ["nut_axial_friction"]
     assert diag.final.value("nut_axial_ratio") == pytest.approx(ka, rel=0.10)
     assert _no_structure(diag)
@@ -51,8 +63,15 @@ def test_nut_friction_growing_with_axial_load_is_named_in_a_table(tmp_path, plan
 def test_axial_load_share_is_signed_by_direction(tmp_path, plant):
     """A friction that grows with |F_a| both ways averages to nothing over the two directions: the misfit
     table takes its share of sgn(v) times the residual."""
-    path = write_table(tmp_path / "a.csv", friction_rows(np.random.default_rng(5), axial_ratio=0.1,
-                                                         axial_levels=(0, 2000, 4000), fv=plant.viscous))
+    path = write_table(
+        tmp_path / "a.csv",
+        friction_rows(
+            np.random.default_rng(5),
+            axial_ratio=0.1,
+            axial_levels=(0, 2000, 4000),
+            fv=plant.viscous,
+        ),
+    )
     diag = diagnose([read_dataset(path)], plant, candidates=["viscous"])
     rows = diagnosis_dict(diag)["residuals_baseline"][0]
     share = {r["factor"]: r["eta2"] for r in rows}
@@ -60,19 +79,40 @@ def test_axial_load_share_is_signed_by_direction(tmp_path, plant):
 
 
 def test_nut_axial_friction_beside_stribeck(tmp_path, plant):
-    diag = _table(tmp_path, plant, 7, axial_ratio=0.07, axial_levels=(-2500, 0, 2500), stribeck=150.0,
-                  vs=0.004, delta=2.0, fv=plant.viscous, speeds=np.geomspace(0.0005, 0.3, 14))
+    diag = _table(
+        tmp_path,
+        plant,
+        7,
+        axial_ratio=0.07,
+        axial_levels=(-2500, 0, 2500),
+        stribeck=150.0,
+        vs=0.004,
+        delta=2.0,
+        fv=plant.viscous,
+        speeds=np.geomspace(0.0005, 0.3, 14),
+    )
     assert set(_names(diag)) == {"nut_axial_friction", "stribeck"}
     assert diag.final.value("nut_axial_ratio") == pytest.approx(0.07, rel=0.10)
     assert diag.final.value("stribeck_rise") == pytest.approx(150.0, rel=0.10)
 
 
-# ------------------------------------------------------------------ tables: guide load, with jittered logging
-@pytest.mark.parametrize("seed, mu, vj, pj", [(11, 0.004, 0.005, 0.001), (12, 0.0013, 0.005, 0.001),
-                                             (13, 0.0045, 0.0, 0.0)])
+# ------------------------------------------------------------------ tables: guide load, with
+# jittered logging
+@pytest.mark.parametrize(
+    "seed, mu, vj, pj",
+    [(11, 0.004, 0.005, 0.001), (12, 0.0013, 0.005, 0.001), (13, 0.0045, 0.0, 0.0)],
+)
 def test_guide_friction_growing_with_payload_survives_jitter(tmp_path, plant, seed, mu, vj, pj):
-    diag = _table(tmp_path, plant, seed, mu=mu, normal_levels=(0, 3000, 8000, 15000), fv=plant.viscous,
-                  speed_jitter=vj, pos_jitter=pj)
+    diag = _table(
+        tmp_path,
+        plant,
+        seed,
+        mu=mu,
+        normal_levels=(0, 3000, 8000, 15000),
+        fv=plant.viscous,
+        speed_jitter=vj,
+        pos_jitter=pj,
+    )
     assert _names(diag) == ["load_dependent_friction"]  # not quadratic_drag
     assert diag.final.value("friction_coefficient") == pytest.approx(mu, rel=0.10)
     assert "replicate" in diag.obs[0].noise_method  # the jittered readings are still replicates
@@ -80,8 +120,13 @@ def test_guide_friction_growing_with_payload_survives_jitter(tmp_path, plant, se
 
 
 def test_jittered_positions_keep_their_held_out_groups(tmp_path, plant):
-    rows = friction_rows(np.random.default_rng(3), fv=plant.viscous, positions=(0.1, 0.3, 0.5, 0.7),
-                         pos_jitter=0.001, speed_jitter=0.005)
+    rows = friction_rows(
+        np.random.default_rng(3),
+        fv=plant.viscous,
+        positions=(0.1, 0.3, 0.5, 0.7),
+        pos_jitter=0.001,
+        speed_jitter=0.005,
+    )
     diag = diagnose([read_dataset(write_table(tmp_path / "p.csv", rows))], plant)
     assert diag.obs[0].group_name == "position"
     assert len(np.unique(diag.obs[0].groups)) == 4
@@ -91,19 +136,30 @@ def test_jittered_positions_keep_their_held_out_groups(tmp_path, plant):
 
 @pytest.mark.parametrize("seed", [21, 22])
 def test_null_table_with_loads_and_jitter_names_nothing(tmp_path, plant, seed):
-    diag = _table(tmp_path, plant, seed, axial_levels=(-2000, 0, 2000), normal_levels=(0, 5000), mu=plant.mu,
-                  fv=plant.viscous, speed_jitter=0.005, pos_jitter=0.001)
+    diag = _table(
+        tmp_path,
+        plant,
+        seed,
+        axial_levels=(-2000, 0, 2000),
+        normal_levels=(0, 5000),
+        mu=plant.mu,
+        fv=plant.viscous,
+        speed_jitter=0.005,
+        pos_jitter=0.001,
+    )
     assert _names(diag) == [] and _no_structure(diag)
 
 
-# -------------------------------------------------------------------------------- time records (own physics)
+# -------------------------------------------------------------------------------- time records (own
+# physics)
 def _records(tmp_path, ax, loop, seed, columns=("external_force",), est_s=6.0, val_s=4.0):
     est = write(tmp_path / f"e{seed}.csv", simulate(ax, loop, est_s, seed), columns)
     val = write(tmp_path / f"v{seed}.csv", simulate(ax, loop, val_s, seed + 500), columns)
     return [est, val]
 
 
-TIME_AXIAL = [  # seed, 1 - eta, process-force amplitude [N], AR(1) coefficient of the force noise, fs [Hz]
+# seed, 1 - eta, process-force amplitude [N], AR(1) coefficient of the force noise, fs [Hz]
+TIME_AXIAL = [
     (31, 0.08, 3000.0, 0.0, 500.0),
     pytest.param(32, 0.05, 2500.0, 0.9, 500.0, marks=pytest.mark.slow),
     pytest.param(33, 0.12, 2000.0, 0.6, 1000.0, marks=pytest.mark.slow),
@@ -111,12 +167,15 @@ TIME_AXIAL = [  # seed, 1 - eta, process-force amplitude [N], AR(1) coefficient 
 
 
 @pytest.mark.parametrize("seed, loss, amp, rho, fs", TIME_AXIAL)
-def test_nut_friction_with_the_process_force_is_named_in_a_time_record(tmp_path, plant, seed, loss, amp, rho, fs):
+def test_nut_friction_with_the_process_force_is_named_in_a_time_record(
+    tmp_path, plant, seed, loss, amp, rho, fs
+):
     ax = Axis(mass=550.0, fc=350.0, fv=1200.0, nut_loss=loss, load_amp=amp)
     diag = diagnose_time_files(_records(tmp_path, ax, Loop(fs=fs, rho=rho), seed), plant=plant)
     assert diag.verdict == ["nut_axial_friction"]
     assert diag.final.value("ka") == pytest.approx(loss, rel=0.10)
-    assert diag.final.value("Fc") == pytest.approx(350.0, rel=0.10)  # not absorbed by the Coulomb level
+    # not absorbed by the Coulomb level
+    assert diag.final.value("Fc") == pytest.approx(350.0, rel=0.10)
     assert not unexplained(diag)["remaining"]
 
 
@@ -129,7 +188,9 @@ def test_nut_friction_beside_stribeck_in_a_time_record(tmp_path, plant):
     assert diag.final.value("Fs") == pytest.approx(150.0, rel=0.10)
 
 
-@pytest.mark.parametrize("seed, rho, fs", [(41, 0.5, 500.0), pytest.param(42, 0.9, 1000.0, marks=pytest.mark.slow)])
+@pytest.mark.parametrize(
+    "seed, rho, fs", [(41, 0.5, 500.0), pytest.param(42, 0.9, 1000.0, marks=pytest.mark.slow)]
+)
 def test_null_time_record_with_coloured_noise_names_nothing(tmp_path, plant, seed, rho, fs):
     """A process force without a load-dependent loss (a decoy for nut_axial_friction) and coloured force
     noise: no effect, no claimed structure (the noise floor sees the colour)."""
@@ -137,5 +198,6 @@ def test_null_time_record_with_coloured_noise_names_nothing(tmp_path, plant, see
     diag = diagnose_time_files(_records(tmp_path, ax, Loop(fs=fs, rho=rho), seed), plant=plant)
     assert diag.verdict == []
     assert not unexplained(diag)["remaining"]
-    assert diag.unexplained.rms < NOISE_RATIO * diag.unexplained.noise  # "no structure beyond noise"
+    # "no structure beyond noise"
+    assert diag.unexplained.rms < NOISE_RATIO * diag.unexplained.noise
     assert "no structure beyond noise" in time_diagnosis_text(diag)

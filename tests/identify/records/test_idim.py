@@ -37,12 +37,19 @@ def _position(rng):
 
 def _mode(rng):
     f = rng.uniform(25, 40)
-    return dict(mode_hz=f, mode_zeta=0.1, mode_mass=rng.uniform(100, 200)), LoopSettings(bandwidth_hz=3.0), \
-        {"f_r": (f, 0.10)}
+    return (
+        dict(mode_hz=f, mode_zeta=0.1, mode_mass=rng.uniform(100, 200)),
+        LoopSettings(bandwidth_hz=3.0),
+        {"f_r": (f, 0.10)},
+    )
 
 
-EFFECT_CASES = {"stribeck": _stribeck, "direction_asymmetry": _asym, "position_friction": _position,
-                "extra_mode": _mode}
+EFFECT_CASES = {
+    "stribeck": _stribeck,
+    "direction_asymmetry": _asym,
+    "position_friction": _position,
+    "extra_mode": _mode,
+}
 
 
 @pytest.mark.parametrize("seed", [11, 12, 13])
@@ -70,11 +77,19 @@ def test_hidden_effect_named_first_with_its_parameter(tmp_path, plant, name, see
     fin = diag.final
     assert fin.method == "IV"
     for term, (true, rel) in expect.items():
-        got = fin.shape["vs"] if term == "vs" else (
-            math.sqrt(fin.value("M") / fin.value("beta")) / (2 * math.pi) if term == "f_r" else fin.value(term))
+        got = (
+            fin.shape["vs"]
+            if term == "vs"
+            else (
+                math.sqrt(fin.value("M") / fin.value("beta")) / (2 * math.pi)
+                if term == "f_r"
+                else fin.value(term)
+            )
+        )
         assert got == pytest.approx(true, rel=rel), (term, got, true)
     close(fin, "M", truth.mass, 0.10)
-    if name == "direction_asymmetry":  # the Coulomb half-difference is a constant while moving: in the offset
+    # the Coulomb half-difference is a constant while moving: in the offset
+    if name == "direction_asymmetry":
         close(fin, "offset", truth.offset + truth.coulomb_asym / 2, 0.10)
 
 
@@ -94,7 +109,8 @@ def test_decoy_strong_viscous_is_not_stribeck(tmp_path, plant):
 
 
 def test_decoy_stribeck_is_not_viscous_or_position(tmp_path, plant):
-    truth = AxisTruth(stribeck=120.0, stribeck_v=0.02, viscous=800.0)  # slow decay over the speed range
+    # slow decay over the speed range
+    truth = AxisTruth(stribeck=120.0, stribeck_v=0.02, viscous=800.0)
     diag = diagnose_time_files(records(tmp_path, truth, seed=33), plant=plant, max_effects=2)
     assert diag.verdict == ["stribeck"]
     close(diag.final, "Fv", 800.0, 0.10)
@@ -107,10 +123,17 @@ def test_implausible_time_effect_is_not_accepted(tmp_path, plant):
     rng = np.random.default_rng(7)
     base = dict(mass=500.0, viscous=1200.0, coulomb=400.0, offset=20.0)
     bad = AxisTruth(**base, stribeck=-160.0, stribeck_v=0.005)
-    diag = diagnose_time_files(records(tmp_path, bad, seed=int(rng.integers(100))), plant=plant,
-                               candidates=["stribeck"])
+    diag = diagnose_time_files(
+        records(tmp_path, bad, seed=int(rng.integers(100))), plant=plant, candidates=["stribeck"]
+    )
     assert diag.verdict == []
-    assert diag.rejected and diag.rejected[0][1].effect.name == "stribeck" and "Fs" in diag.rejected[0][2]
+    assert (
+        diag.rejected
+        and diag.rejected[0][1].effect.name == "stribeck"
+        and "Fs" in diag.rejected[0][2]
+    )
     good = AxisTruth(**base, stribeck=160.0, stribeck_v=0.005)
-    diag = diagnose_time_files(records(tmp_path, good, seed=3), plant=plant, candidates=["stribeck"])
+    diag = diagnose_time_files(
+        records(tmp_path, good, seed=3), plant=plant, candidates=["stribeck"]
+    )
     assert diag.verdict == ["stribeck"]

@@ -18,7 +18,8 @@ from axisopt.identify.records.synth import AxisTruth, simulate_axis
 from axisopt.report.timediag import time_diagnosis_text
 
 
-# ------------------------------------------------------------------------------ the effects the library lacked
+# ------------------------------------------------------------------------------ the effects the
+# library lacked
 @pytest.mark.parametrize("seed", [1, 2, 3, 4])
 def test_lead_ripple_is_named_not_an_extra_mode(tmp_path, plant, seed):
     """A 40 N force ripple with the lead's period (sin(2 pi x / lead)) was named extra_mode in 3 of 4 seeds."""
@@ -50,14 +51,17 @@ def test_quadratic_drag_is_named_not_asymmetry_or_position(tmp_path, plant, seed
     """A symmetric c v|v| drag was named direction_asymmetry or position_friction, or nothing while the force
     error stayed at 6-9 %."""
     c = 3000.0 * (1 + 0.3 * seed)
-    diag = diagnose_time_files(records(tmp_path, truth_for(seed, quadratic_drag=c), seed), plant=plant)
+    diag = diagnose_time_files(
+        records(tmp_path, truth_for(seed, quadratic_drag=c), seed), plant=plant
+    )
     assert diag.verdict[:1] == ["quadratic_drag"], diag.verdict
     assert not {"direction_asymmetry", "position_friction"} & set(diag.verdict)
     assert diag.final.value("Cq") == pytest.approx(c, rel=0.10)
     assert not unexplained(diag)["remaining"]
 
 
-# ----------------------------------------------------------------------------------------------- plausibility
+# -----------------------------------------------------------------------------------------------
+# plausibility
 def test_sign_flipped_effort_is_flagged_not_reported_as_a_fit(tmp_path, plant):
     """A force column recorded with the wrong sign gives a negative mass and Coulomb friction: flagged with an
     explanation, never printed as a plain fit."""
@@ -72,14 +76,22 @@ def test_sign_flipped_effort_is_flagged_not_reported_as_a_fit(tmp_path, plant):
 
 
 def test_degenerate_term_is_unidentifiable_not_zero_uncertainty():
-    est = Estimate("LS", ("M", "Fv", "Fc", "offset"), np.array([500.0, 1000.0, 300.0, 1.0]),
-                   np.array([1.0, 0.0, 400.0, 0.5]), {}, 1.0, 100)
+    est = Estimate(
+        "LS",
+        ("M", "Fv", "Fc", "offset"),
+        np.array([500.0, 1000.0, 300.0, 1.0]),
+        np.array([1.0, 0.0, 400.0, 0.5]),
+        {},
+        1.0,
+        100,
+    )
     flags = baseline_flags(est, "force")
     assert any(f.startswith("Fv is not identifiable") and "zero" in f for f in flags)
     assert any(f.startswith("Fc = 300 ± 400 N is not identifiable") for f in flags)
 
 
-# --------------------------------------------------------------------------------------------------- inputs
+# --------------------------------------------------------------------------------------------------
+# - inputs
 def test_external_force_column_is_used_in_the_dynamics(tmp_path, plant):
     """A process force of up to 300 N on the table: with the column the baseline is recovered and nothing is
     named; without it the fit is far worse."""
@@ -96,16 +108,23 @@ def test_external_force_column_is_used_in_the_dynamics(tmp_path, plant):
     with_col = diagnose_time_files(paths[:1], plant=plant, candidates=["stribeck"])
     from axisopt.identify.records.estimators import rel_error
 
-    assert rel_error(without.estimation, without.baseline_ls) > 3 * rel_error(with_col.estimation,
-                                                                                 with_col.baseline_ls)
+    assert rel_error(without.estimation, without.baseline_ls) > 3 * rel_error(
+        with_col.estimation, with_col.baseline_ls
+    )
 
 
 def test_external_force_on_a_torque_record(tmp_path, plant):
     truth = AxisTruth(mass=500.0, viscous=1200.0, coulomb=300.0, process_force=300.0)
     path = tmp_path / "torque.csv"
     rec = simulate_axis(truth, duration=12.0, seed=8)
-    rec.write_csv(path, columns=("time", "position", "force", "reference", "external_force"), effort="torque",
-                  lead=LEAD, efficiency=plant.efficiency, position_unit="rad")
+    rec.write_csv(
+        path,
+        columns=("time", "position", "force", "reference", "external_force"),
+        effort="torque",
+        lead=LEAD,
+        efficiency=plant.efficiency,
+        position_unit="rad",
+    )
     diag = diagnose_time_files([path], plant=plant)
     g = 2 * math.pi / LEAD
     assert diag.final.value("M") * g * g * plant.efficiency == pytest.approx(500.0, rel=0.05)

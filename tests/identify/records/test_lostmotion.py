@@ -21,16 +21,28 @@ COLS = ("time", "position", "force", "reference", "motor_position")
 
 def truth_for(seed, backlash, mode_hz):
     rng = np.random.default_rng(seed)
-    return AxisTruth(mass=rng.uniform(300, 900), viscous=rng.uniform(600, 2500), coulomb=rng.uniform(200, 600),
-                     offset=rng.choice([-1.0, 1.0]) * rng.uniform(20, 60), mode_hz=mode_hz, mode_zeta=0.1,
-                     mode_mass=150.0, backlash=backlash)
+    return AxisTruth(
+        mass=rng.uniform(300, 900),
+        viscous=rng.uniform(600, 2500),
+        coulomb=rng.uniform(200, 600),
+        offset=rng.choice([-1.0, 1.0]) * rng.uniform(20, 60),
+        mode_hz=mode_hz,
+        mode_zeta=0.1,
+        mode_mass=150.0,
+        backlash=backlash,
+    )
 
 
 def records(tmp_path, truth, seed, columns=COLS):
-    loop = LoopSettings(bandwidth_hz=3.0)  # the loop closes on the table's scale, beyond the lost motion
+    # the loop closes on the table's scale, beyond the lost motion
+    loop = LoopSettings(bandwidth_hz=3.0)
     est, val = tmp_path / f"est{seed}.csv", tmp_path / f"val{seed}.csv"
-    simulate_axis(truth, loop, duration=12.0, seed=seed, record_motor=True).write_csv(est, columns=columns)
-    simulate_axis(truth, loop, duration=8.0, seed=seed + 500, record_motor=True).write_csv(val, columns=columns)
+    simulate_axis(truth, loop, duration=12.0, seed=seed, record_motor=True).write_csv(
+        est, columns=columns
+    )
+    simulate_axis(truth, loop, duration=8.0, seed=seed + 500, record_motor=True).write_csv(
+        val, columns=columns
+    )
     return [est, val]
 
 
@@ -40,7 +52,9 @@ def _write(tmp_path, header, rows):
     return p
 
 
-@pytest.mark.parametrize("seed, backlash, mode_hz", [(1, 30e-6, 30.0), (2, 10e-6, 35.0), (4, 50e-6, 25.0)])
+@pytest.mark.parametrize(
+    "seed, backlash, mode_hz", [(1, 30e-6, 30.0), (2, 10e-6, 35.0), (4, 50e-6, 25.0)]
+)
 def test_hidden_backlash_is_named_with_its_width(tmp_path, plant, seed, backlash, mode_hz):
     truth = truth_for(seed, backlash, mode_hz)
     diag = diagnose_time_files(records(tmp_path, truth, seed), plant=plant)
@@ -82,11 +96,18 @@ def test_cli_json_carries_the_lost_motion(tmp_path, plant, capsys):
     assert "backlash" in (out.get("verdict") or out["files"][0]["verdict"])
 
 
-@pytest.mark.parametrize("header, cell, what", [
-    ("time [s],position [mm],force [N],motor_position [N]", None, "motor_position"),
-    ("time [s],position [mm],force [N],motor_position [mm]", "nan", "not a finite number"),
-    ("time [s],position [mm],force [N],motor_position [mm]", "const", "motor_position column is constant"),
-])
+@pytest.mark.parametrize(
+    "header, cell, what",
+    [
+        ("time [s],position [mm],force [N],motor_position [N]", None, "motor_position"),
+        ("time [s],position [mm],force [N],motor_position [mm]", "nan", "not a finite number"),
+        (
+            "time [s],position [mm],force [N],motor_position [mm]",
+            "const",
+            "motor_position column is constant",
+        ),
+    ],
+)
 def test_bad_motor_position_is_one_line_exit_2(tmp_path, capsys, header, cell, what):
     rows = []
     for i in range(400):

@@ -23,7 +23,8 @@ def plant(plant):
     return assert_timesynth_axis(plant)
 
 
-# ------------------------------------------------------------------------------------------- bad input
+# ------------------------------------------------------------------------------------------- bad
+# input
 def _good(tmp_path, name="g.csv", n=400, header="time [s],position [mm],force [N]", pre=""):
     t = np.arange(n) / 1000.0
     x = 100 + 20 * np.sin(2 * np.pi * t)
@@ -55,7 +56,9 @@ def _rewrite(src, dst, header=None, cell=None):
 
 def test_current_record_with_gain_reports_motor_side_and_table_equivalents(tmp_path, plant, capsys):
     truth = AxisTruth(mass=500.0, viscous=1200.0, coulomb=300.0)
-    eff = dict(effort="current", lead=LEAD, efficiency=plant.efficiency, gain=0.85, position_unit="rad")
+    eff = dict(
+        effort="current", lead=LEAD, efficiency=plant.efficiency, gain=0.85, position_unit="rad"
+    )
     est, val = records(tmp_path, truth, seed=41, est_s=10.0, val_s=6.0, **eff)
     out = tmp_path / "d.json"
     assert main(["diagnose", str(est), str(val), "--design", str(DESIGN), "--json", str(out)]) == 0
@@ -71,25 +74,69 @@ def test_current_record_with_gain_reports_motor_side_and_table_equivalents(tmp_p
     # the same record with its gain line removed and the gain given on the command line
     for p in (est, val):
         p.write_text("\n".join(p.read_text().splitlines()[1:]) + "\n")
-    assert main(["diagnose", str(est), str(val), "--design", str(DESIGN), "--gain", "0.85 N.m/A", "--json",
-                 str(out)]) == 0
+    assert (
+        main(
+            [
+                "diagnose",
+                str(est),
+                str(val),
+                "--design",
+                str(DESIGN),
+                "--gain",
+                "0.85 N.m/A",
+                "--json",
+                str(out),
+            ]
+        )
+        == 0
+    )
     d2 = json.loads(out.read_text())
-    assert d2["baseline"]["IV"]["parameters"][0]["value"] == pytest.approx(par["J"]["value"], rel=1e-9)
+    assert d2["baseline"]["IV"]["parameters"][0]["value"] == pytest.approx(
+        par["J"]["value"], rel=1e-9
+    )
 
 
 @pytest.mark.parametrize(
     "make,where,what",
     [
-        (lambda d: _edit(_good(d), 51, "0.0100,100.1,3"), "line 51, column 1 (time)", "does not increase"),
-        (lambda d: _edit(_good(d), 7, "0.0050,nan,3"), "line 7, column 2 (position)", "not a finite number"),
+        (
+            lambda d: _edit(_good(d), 51, "0.0100,100.1,3"),
+            "line 51, column 1 (time)",
+            "does not increase",
+        ),
+        (
+            lambda d: _edit(_good(d), 7, "0.0050,nan,3"),
+            "line 7, column 2 (position)",
+            "not a finite number",
+        ),
         (lambda d: _good(d, n=150), "g.csv", "150 samples; a time record needs at least 200"),
-        (lambda d: _good(d, header="time [s],position [mm],current [A]"), "line 1, column 3", "needs a gain"),
-        (lambda d: _good(d, header="time [s],position [mm],current [A]", pre="# gain: 0.85 N.m\n"), "line 1",
-         "unit per ampere"),
-        (lambda d: _good(d, header="time [s],position [mm],force [N],speed [mm/s]"), "line 1, column 4",
-         "unknown column 'speed'"),
-        (lambda d: _edit(_good(d), 9, "0.0070,1e308,3"), "line 9, column 2 (position)", "out of range"),
-        (lambda d: _edit(_good(d), 12, "0.0100,100,-1e300"), "line 12, column 3 (force)", "out of range"),
+        (
+            lambda d: _good(d, header="time [s],position [mm],current [A]"),
+            "line 1, column 3",
+            "needs a gain",
+        ),
+        (
+            lambda d: _good(
+                d, header="time [s],position [mm],current [A]", pre="# gain: 0.85 N.m\n"
+            ),
+            "line 1",
+            "unit per ampere",
+        ),
+        (
+            lambda d: _good(d, header="time [s],position [mm],force [N],speed [mm/s]"),
+            "line 1, column 4",
+            "unknown column 'speed'",
+        ),
+        (
+            lambda d: _edit(_good(d), 9, "0.0070,1e308,3"),
+            "line 9, column 2 (position)",
+            "out of range",
+        ),
+        (
+            lambda d: _edit(_good(d), 12, "0.0100,100,-1e300"),
+            "line 12, column 3 (force)",
+            "out of range",
+        ),
     ],
 )
 def test_bad_input_is_one_line_naming_file_line_column(tmp_path, capsys, make, where, what):
@@ -120,19 +167,26 @@ def test_reader_errors_are_input_errors(tmp_path, plant):
         diagnose_time_files([p], plant=plant)
 
 
-@pytest.mark.parametrize("header,cell,what", [
-    ("time [s],position [mm],force [N],reference [mm],external_force [mm]", None,
-     "line 1, column 5.*not a unit of force"),
-    (None, (3, 4, "abc"), "line 4, column 5 .external_force.: 'abc' is not a number"),
-    (None, (3, 4, ""), "line 4, column 5 .external_force.: empty cell"),
-])
+@pytest.mark.parametrize(
+    "header,cell,what",
+    [
+        (
+            "time [s],position [mm],force [N],reference [mm],external_force [mm]",
+            None,
+            "line 1, column 5.*not a unit of force",
+        ),
+        (None, (3, 4, "abc"), "line 4, column 5 .external_force.: 'abc' is not a number"),
+        (None, (3, 4, ""), "line 4, column 5 .external_force.: empty cell"),
+    ],
+)
 def test_bad_external_force_is_one_line_exit_2(tmp_path, capsys, header, cell, what):
     import re
 
     truth = AxisTruth(process_force=100.0)
     src = tmp_path / "src.csv"
-    simulate_axis(truth, duration=1.0, seed=1).write_csv(src, columns=("time", "position", "force", "reference",
-                                                                       "external_force"))
+    simulate_axis(truth, duration=1.0, seed=1).write_csv(
+        src, columns=("time", "position", "force", "reference", "external_force")
+    )
     bad = tmp_path / "bad.csv"
     _rewrite(src, bad, header, cell)
     assert main(["diagnose", str(bad), "--design", str(DESIGN)]) == 2
@@ -146,7 +200,11 @@ def test_position_in_revolutions_is_accepted(tmp_path, plant):
     rad, rev = tmp_path / "rad.csv", tmp_path / "rev.csv"
     rec.write_csv(rad, position_unit="rad")
     lines = rad.read_text().splitlines()
-    head = lines[0].replace("position [rad]", "position [rev]").replace("reference [rad]", "reference [rev]")
+    head = (
+        lines[0]
+        .replace("position [rad]", "position [rev]")
+        .replace("reference [rad]", "reference [rev]")
+    )
     rows = []
     for ln in lines[1:]:
         c = ln.split(",")

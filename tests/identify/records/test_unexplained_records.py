@@ -17,7 +17,8 @@ from axisopt.report.timediag import time_diagnosis_text
 LIBRARY_BEFORE = ["stribeck", "direction_asymmetry", "position_friction", "extra_mode"]
 
 
-# ------------------------------------------------------------------------------------- the unexplained verdict
+# ------------------------------------------------------------------------------------- the
+# unexplained verdict
 def test_drag_outside_the_library_is_unexplained_with_its_signature(tmp_path, plant):
     """With the library as it was (no quadratic drag), the verdict says a misfit remains and that it grows
     with v|v|; and the reason for naming nothing is the true one (here Stribeck fits only with an excess

@@ -65,7 +65,9 @@ def test_cli_shipped_example_end_to_end(tmp_path, capsys):
     a = d["accepted"][0]
     assert a["parameters"][0]["value"] == pytest.approx(90.0, rel=0.1)  # N/um, as generated
     assert a["gain_percent"] > 30 and a["runner_up"]["effect"] == "compliance_offset"
-    assert (rep / "report.md").read_text().count("![residuals") == 1 and (rep / "residuals_1.png").exists()
+    assert (rep / "report.md").read_text().count("![residuals") == 1 and (
+        rep / "residuals_1.png"
+    ).exists()
     saved = yaml.safe_load(cal.read_text())
     assert saved["effects"][0]["name"] == "support_condition"
     design = load_design(DESIGN)
@@ -81,7 +83,12 @@ def test_two_test_types_share_parameters():
     f = np.tile(np.r_[np.linspace(500, 4000, 4), -np.linspace(500, 4000, 4)], 8)
     eff = {"added_mass": {"added_mass": 80.0}}
     st = simulate(
-        plant, "stiffness", dict(position=pos, force=f), baseline={"screw_modulus": 190e9}, noise=0.01, seed=8
+        plant,
+        "stiffness",
+        dict(position=pos, force=f),
+        baseline={"screw_modulus": 190e9},
+        noise=0.01,
+        seed=8,
     )
     fq = simulate(
         plant,
@@ -102,10 +109,14 @@ def test_correct_fixed_fixed_axis_names_nothing():
     d = load_design(ROOT / "problems" / "vmc_x_design.yaml")
     d = replace(d, axis=replace(d.axis, mounting="fixed-fixed"))
     plant = plant_from_design(d)
-    # by hand: WBK30-DFD 1520 N/um at both ends, each in series with the default housing (26.25 x the set: IBC's
-    # BSBU 35 DB 128 1050 N/um on its bare 1090 N/um set), root 34.91 mm, E 206 GPa, span 1.1 m; screw torsion
-    # G pi d^4/(32 x) and the GWB AKN 60 coupling (75e3 N.m/rad) through the 20 mm lead; nut at its preload
-    # (R40-20K4-FDC 0.8 x 1150 N/um x (3000/5130)^(1/3)), linear at these small loads, and the default bracket
+    # by hand: WBK30-DFD 1520 N/um at both ends, each in series with the default housing (26.25 x
+    # the set: IBC's
+    # BSBU 35 DB 128 1050 N/um on its bare 1090 N/um set), root 34.91 mm, E 206 GPa, span 1.1 m;
+    # screw torsion
+    # G pi d^4/(32 x) and the GWB AKN 60 coupling (75e3 N.m/rad) through the 20 mm lead; nut at its
+    # preload
+    # (R40-20K4-FDC 0.8 x 1150 N/um x (3000/5130)^(1/3)), linear at these small loads, and the
+    # default bracket
     # (4 x 0.8 x 1150 N/um: THK's nut-mounting allowance once more)
     ea = 206e9 * math.pi / 4 * 0.03491**2
     k_b, span, r2 = 1 / (1 / 1520e6 + 40 / (1050 * 1520e6)), 1.1, (0.020 / (2 * math.pi)) ** 2
@@ -136,8 +147,14 @@ def test_implausible_fit_is_not_accepted(plant):
     candidate, its fit leaves the plausible range (up to the table's own mass), so nothing is accepted and
     the diagnosis says what it would need."""
     m = plant.moving_mass
-    ds = simulate(plant, "frequency", frequency_doe(), effects={"added_mass": {"added_mass": 3.0 * m}},
-                  noise=0.005, seed=3)
+    ds = simulate(
+        plant,
+        "frequency",
+        frequency_doe(),
+        effects={"added_mass": {"added_mass": 3.0 * m}},
+        noise=0.005,
+        seed=3,
+    )
     diag = diagnose([ds], plant, candidates=["added_mass"])
     assert diag.verdict == "none"
     d = diagnosis_dict(diag)
@@ -149,8 +166,14 @@ def test_implausible_fit_is_not_accepted(plant):
 def test_plausible_version_of_the_same_is_accepted(plant):
     """Control for the test above: the same effect at half the table's mass is accepted."""
     m = plant.moving_mass
-    ds = simulate(plant, "frequency", frequency_doe(), effects={"added_mass": {"added_mass": 0.5 * m}},
-                  noise=0.005, seed=3)
+    ds = simulate(
+        plant,
+        "frequency",
+        frequency_doe(),
+        effects={"added_mass": {"added_mass": 0.5 * m}},
+        noise=0.005,
+        seed=3,
+    )
     diag = diagnose([ds], plant, candidates=["added_mass"])
     assert diag.verdict == "added_mass"
     assert diag.final.value("added_mass") == pytest.approx(0.5 * m, rel=0.1)
@@ -159,12 +182,24 @@ def test_plausible_version_of_the_same_is_accepted(plant):
 def test_torque_data_keep_their_quantity(plant, tmp_path, capsys):
     """Friction measured as screw torque: the output states the conversion and its efficiency, and gives
     the friction findings in N.m too."""
-    ds = simulate(plant, "friction", friction_doe(), baseline=BASELINE["friction"], noise=0.01, seed=9,
-                  effects={"direction_asymmetry": {"direction_difference": 60.0}})
-    data = dataset_csv(ds, tmp_path / "torque.csv", torque_lead=plant.lead, efficiency=plant.efficiency)
+    ds = simulate(
+        plant,
+        "friction",
+        friction_doe(),
+        baseline=BASELINE["friction"],
+        noise=0.01,
+        seed=9,
+        effects={"direction_asymmetry": {"direction_difference": 60.0}},
+    )
+    data = dataset_csv(
+        ds, tmp_path / "torque.csv", torque_lead=plant.lead, efficiency=plant.efficiency
+    )
     assert main(["diagnose", str(data), "--design", str(DESIGN)]) == 0
     out = capsys.readouterr().out
-    assert "drag torque T fitted as table force" in out and f"efficiency eta = {plant.efficiency:g}" in out
+    assert (
+        "drag torque T fitted as table force" in out
+        and f"efficiency eta = {plant.efficiency:g}" in out
+    )
     assert "N.m at the screw" in out
     # the torque given equals the force found, converted back (60 N hidden)
     t_expected = 60.0 * plant.lead / (2 * math.pi * plant.efficiency)
@@ -186,8 +221,17 @@ def test_frf_resonance_by_position(plant):
     measured peak moves down the stroke (a longer screw in tension is softer)."""
     from test_diagnose_recovery import frf_doe
 
-    ds = simulate(plant, "frf", frf_doe(), baseline={"damping_ratio": 0.04}, noise=0.01, seed=1,
-                  effects={"extra_mode": {"mode_frequency": 300.0, "mode_damping": 0.03, "mode_stiffness": 500e6}})
+    ds = simulate(
+        plant,
+        "frf",
+        frf_doe(),
+        baseline={"damping_ratio": 0.04},
+        noise=0.01,
+        seed=1,
+        effects={
+            "extra_mode": {"mode_frequency": 300.0, "mode_damping": 0.03, "mode_stiffness": 500e6}
+        },
+    )
     diag = diagnose([ds], plant)
     modes = diagnosis_dict(diag)["frf_modes"]
     assert [round(m["position_mm"]) for m in modes] == [0, 267, 533, 800]
@@ -200,10 +244,14 @@ def test_frf_resonance_by_position(plant):
     assert "resonance by position" in diagnosis_text(diag)
 
 
-# ------------------------------------------------------------------------------------ drag and unexplained
+# ------------------------------------------------------------------------------------ drag and
+# unexplained
 def test_quadratic_drag_is_named_with_its_coefficient(tmp_path, plant):
     fc = coulomb(plant)
-    p = friction_table(tmp_path / "drag.csv", lambda v: np.sign(v) * fc + plant.viscous * v + 2000.0 * v * np.abs(v))
+    p = friction_table(
+        tmp_path / "drag.csv",
+        lambda v: np.sign(v) * fc + plant.viscous * v + 2000.0 * v * np.abs(v),
+    )
     diag = diagnose([read_dataset(p)], plant)
     assert diag.verdict == "quadratic_drag"
     assert diag.final.value("drag_coefficient") == pytest.approx(2000.0, rel=0.10)
@@ -213,7 +261,9 @@ def test_quadratic_drag_is_named_with_its_coefficient(tmp_path, plant):
 @pytest.mark.parametrize("seed", [1, 2])
 def test_null_friction_table_names_nothing_and_leaves_nothing(tmp_path, plant, seed):
     fc = coulomb(plant)
-    p = friction_table(tmp_path / "null.csv", lambda v: np.sign(v) * 1.1 * fc + plant.viscous * v, seed=seed)
+    p = friction_table(
+        tmp_path / "null.csv", lambda v: np.sign(v) * 1.1 * fc + plant.viscous * v, seed=seed
+    )
     diag = diagnose([read_dataset(p)], plant)
     assert diag.verdict == "none"
     d = diagnosis_dict(diag)
@@ -229,7 +279,11 @@ def test_effects_that_only_help_together_are_found_as_a_pair(tmp_path, plant):
     fc = coulomb(plant)
 
     def law(v):
-        return np.sign(v) * (fc + 0.8 * fc * np.exp(-(v / 0.004) ** 2)) + 3 * plant.viscous * v + 0.3 * fc
+        return (
+            np.sign(v) * (fc + 0.8 * fc * np.exp(-((v / 0.004) ** 2)))
+            + 3 * plant.viscous * v
+            + 0.3 * fc
+        )
 
     diag = diagnose([read_dataset(friction_table(tmp_path / "rig.csv", law))], plant, max_effects=3)
     assert diag.verdict == "direction_asymmetry, stribeck, viscous"
@@ -245,7 +299,8 @@ def test_effects_that_only_help_together_are_found_as_a_pair(tmp_path, plant):
     assert "accepted, neither passes alone" in diagnosis_text(diag)
 
 
-# --------------------------------------------------------------------------------- per-file gains, identifiability
+# --------------------------------------------------------------------------------- per-file gains,
+# identifiability
 def test_each_file_gets_its_own_gain(tmp_path, plant, capsys):
     """The gain quoted for one record repeated the pooled gain; each file now has its own."""
     fc = coulomb(plant)
@@ -270,5 +325,11 @@ def test_single_speed_friction_reports_viscous_as_not_identifiable():
     diag = diagnose([read_dataset(DATA / "xjtu" / "xjtu_up_friction.csv")], plant)
     assert diag.verdict == "preload_loss"
     d = diagnosis_dict(diag)
-    visc = [p for rnd in d["candidates"] for c in rnd if c["effect"] == "viscous" for p in c["parameters"]]
+    visc = [
+        p
+        for rnd in d["candidates"]
+        for c in rnd
+        if c["effect"] == "viscous"
+        for p in c["parameters"]
+    ]
     assert visc and all(p["sigma"] is None and "not identifiable" in p["text"] for p in visc)

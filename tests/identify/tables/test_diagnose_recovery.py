@@ -73,18 +73,38 @@ def frf_doe():
 def cases(plant):
     kb, fa, fc, m = plant.k_bearing, plant.preload, plant.coulomb, plant.moving_mass
     return {
-        "support_condition": ("stiffness", stiffness_doe, {"far_end_stiffness": (0.3 * kb, 1.2 * kb)}, ()),
+        "support_condition": (
+            "stiffness",
+            stiffness_doe,
+            {"far_end_stiffness": (0.3 * kb, 1.2 * kb)},
+            (),
+        ),
         "hertz_contact": ("stiffness", hertz_doe, {"nut_preload": (0.3 * fa, 0.6 * fa)}, ()),
         "backlash": ("stiffness", stiffness_doe, {"backlash": (4e-6, 15e-6)}, ()),
-        "friction_hysteresis": ("stiffness", stiffness_doe, {"hysteresis_friction": (150.0, 400.0)}, ()),
+        "friction_hysteresis": (
+            "stiffness",
+            stiffness_doe,
+            {"hysteresis_friction": (150.0, 400.0)},
+            (),
+        ),
         "thermal_drift": (
             "stiffness",
             lambda: stiffness_doe(temperature=True),
             {"expansion_coefficient": (10e-6, 13e-6)},
             (),
         ),
-        "compliance_offset": ("stiffness", stiffness_doe, {"extra_compliance": (0.2 / kb, 0.6 / kb)}, ()),
-        "preload_loss": ("friction", lambda: friction_doe(cycles=5), {"preload_loss_rate": (0.03, 0.08)}, ()),
+        "compliance_offset": (
+            "stiffness",
+            stiffness_doe,
+            {"extra_compliance": (0.2 / kb, 0.6 / kb)},
+            (),
+        ),
+        "preload_loss": (
+            "friction",
+            lambda: friction_doe(cycles=5),
+            {"preload_loss_rate": (0.03, 0.08)},
+            (),
+        ),
         "added_mass": ("frequency", frequency_doe, {"added_mass": (0.1 * m, 0.4 * m)}, ()),
         "extra_mode": (
             "frf",
@@ -103,7 +123,12 @@ def cases(plant):
             ("stribeck_velocity",),
         ),
         "viscous": ("friction", friction_doe, {"viscous_coefficient": (800.0, 3000.0)}, ()),
-        "load_dependent_friction": ("friction", friction_doe, {"friction_coefficient": (0.004, 0.006)}, ()),
+        "load_dependent_friction": (
+            "friction",
+            friction_doe,
+            {"friction_coefficient": (0.004, 0.006)},
+            (),
+        ),
         "direction_asymmetry": (
             "friction",
             friction_doe,

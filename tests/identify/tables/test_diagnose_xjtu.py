@@ -21,8 +21,10 @@ def test_xjtu_friction_trend_is_named(screw):
     assert diag.verdict == "preload_loss"
     assert diag.gain >= 30.0
     d = diagnosis_dict(diag)
-    # the published series fall from 0.40 to 0.25 N.m (up) and 0.52 to 0.38 N.m (down) over 29 cycles: a
-    # loss of 38 % and 27 % of the first reading, i.e. roughly 1.3 and 0.9 % per cycle on a straight line
+    # the published series fall from 0.40 to 0.25 N.m (up) and 0.52 to 0.38 N.m (down) over 29
+    # cycles: a
+    # loss of 38 % and 27 % of the first reading, i.e. roughly 1.3 and 0.9 % per cycle on a straight
+    # line
     rate = diag.final.value("preload_loss_rate") * 100
     assert {"up": 0.9 < rate < 1.7, "down": 0.5 < rate < 1.2}[screw], rate
     notes = d["datasets"][0]["data_notes"]

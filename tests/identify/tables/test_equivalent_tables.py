@@ -25,7 +25,9 @@ def test_two_speeds_cannot_tell_viscous_from_drag_and_it_is_said(tmp_path, plant
     pair = {diag.verdict} | {e[2] for e in diag.equivalent}
     assert pair == {"viscous", "quadratic_drag"}, (diag.verdict, diag.equivalent)
     eq = diagnosis_dict(diag)["equivalent"]
-    assert len(eq) == 1 and (eq[0]["percent_apart"] < 2.0 or "both at the noise floor" in eq[0]["text"])
+    assert len(eq) == 1 and (
+        eq[0]["percent_apart"] < 2.0 or "both at the noise floor" in eq[0]["text"]
+    )
     text = diagnosis_text(diag)
     assert "explain the data equally well" in text and "the curve bends upward with v|v|" in text
 

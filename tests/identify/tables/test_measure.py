@@ -12,5 +12,7 @@ def test_calibration_baseline_names_match_the_fit():
     from axisopt.identify.calibration import BASELINE_KINDS
     from axisopt.identify.tables.measure import baseline_params
 
-    params = baseline_params({"stiffness", "friction", "frf"}, plant_from_design(load_design(DESIGN)))
+    params = baseline_params(
+        {"stiffness", "friction", "frf"}, plant_from_design(load_design(DESIGN))
+    )
     assert {p.name: p.kind for p in params} == BASELINE_KINDS

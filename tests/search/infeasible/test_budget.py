@@ -19,7 +19,8 @@ from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
 from axisopt.search.task.objective import objective_spec
 
-# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about 1 500 EUR,
+# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about
+# 1 500 EUR,
 # the cheapest design meeting every other limit about 4 000 EUR)
 LATHE = """name: lathe-z
 description: >
@@ -33,9 +34,12 @@ axis:
   orientation: horizontal
   max_speed: 40 m/min
   acceleration: 4 m/s^2
-  # Roughing steel (our assumption): feed force Ff 8 kN along Z, the tangential force Fc 12 kN pressing the
-  # carriage onto its ways, the passive force Fp 4 kN across them (Ff : Fc : Fp near the rule of thumb
-  # 0.5 : 1 : 0.25, Isakov, CTE 2013), at the tool tip 250 mm above the guides, 150 mm off the centre line.
+  # Roughing steel (our assumption): feed force Ff 8 kN along Z, the tangential force Fc 12 kN
+  # pressing the
+  # carriage onto its ways, the passive force Fp 4 kN across them (Ff : Fc : Fp near the rule of
+  # thumb
+  # 0.5 : 1 : 0.25, Isakov, CTE 2013), at the tool tip 250 mm above the guides, 150 mm off the
+  # centre line.
   axial_load: 8 kN
   mean_axial_load: 2.5 kN
   normal_load: 12 kN
@@ -87,9 +91,15 @@ def test_impossible_budget_leads_with_the_least_budget(tmp_path):
     assert res.best is None
     inf = res.infeasibility
     first = inf.design_changes[0]
-    assert first.key == "limits.max_cost" and first.unit == "EUR" and first.value == pytest.approx(500.0)
+    assert (
+        first.key == "limits.max_cost"
+        and first.unit == "EUR"
+        and first.value == pytest.approx(500.0)
+    )
     v = first.to
-    assert relax_lines(inf)[0].startswith(f"  change the design: raise limits.max_cost from 500 to {v:,.0f} EUR")
+    assert relax_lines(inf)[0].startswith(
+        f"  change the design: raise limits.max_cost from 500 to {v:,.0f} EUR"
+    )
     ok = solve(_lathe(tmp_path, f"{v:g} EUR"), "default", sensitivities=False)
     assert ok.best is not None and ok.best.cost <= v
     short = solve(_lathe(tmp_path, f"{_step_below(v):g} EUR"), "default", sensitivities=False)
@@ -120,4 +130,6 @@ def test_a_budget_that_is_not_the_only_problem_gets_no_raise(tmp_path):
     p = _problem(1).with_limit("min_frequency", 1e4)
     assert least_cost(p, build_space(p)) is None
     res = solve(p, "default")
-    assert res.best is None and all(c.key != "limits.max_cost" for c in res.infeasibility.design_changes)
+    assert res.best is None and all(
+        c.key != "limits.max_cost" for c in res.infeasibility.design_changes
+    )

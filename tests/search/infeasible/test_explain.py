@@ -32,13 +32,22 @@ def _case(seed, kind):
     p = _problem(seed)
     e = solve(p, "exhaustive", top=1, sensitivities=False).best
     if kind in ("mechanics", "both"):
-        p = p.with_limit("max_cost", 0.4 * e.cost).with_limit("min_frequency", 1.3 * e.min_frequency)
+        p = p.with_limit("max_cost", 0.4 * e.cost).with_limit(
+            "min_frequency", 1.3 * e.min_frequency
+        )
     if kind in ("drive", "both"):
         p = _weak_motors(p, 0.15)
     return p
 
 
-CASES = [(0, "mechanics"), (2, "mechanics"), (1, "mechanics"), (1, "drive"), (3, "drive"), (5, "both")]
+CASES = [
+    (0, "mechanics"),
+    (2, "mechanics"),
+    (1, "mechanics"),
+    (1, "drive"),
+    (3, "drive"),
+    (5, "both"),
+]
 
 
 @pytest.mark.parametrize("seed,kind", CASES)
@@ -69,7 +78,9 @@ def test_drives_scored_in_two_passes_give_the_same_explanation(seed, kind, monke
     full = E.explain_infeasible(sp, cons, spec, every_combination=True)
     fast = E.explain_infeasible(sp, cons, spec)
     assert [u[0] for u in fast.unmeetable] == [u[0] for u in full.unmeetable]
-    assert [u[1] for u in fast.unmeetable] == pytest.approx([u[1] for u in full.unmeetable], rel=1e-9)
+    assert [u[1] for u in fast.unmeetable] == pytest.approx(
+        [u[1] for u in full.unmeetable], rel=1e-9
+    )
     assert [c.combination for c in fast.closest] == [c.combination for c in full.closest]
 
 
@@ -97,9 +108,11 @@ def test_shipped_mechanical_infeasibility_scores_few_blocks(monkeypatch):
     p, sp, cons, spec = _shipped("infeasible_problem.yaml")
     why, n = _scored(sp, cons, spec, monkeypatch)
     assert n < 0.1 * sp.size, (n, sp.size)
-    # (issue 39: the 70-120 mm ZKLN and NSK TAC03 sets meet the support sets' life on their own, and the critical
+    # (issue 39: the 70-120 mm ZKLN and NSK TAC03 sets meet the support sets' life on their own, and
+    # the critical
     # speed and the support sets' life are no longer unmeetable on their own: a driven
-    # rotating-nut unit (THK DIR/BLR) leaves the screw and its end bearings standing, so those checks do not
+    # rotating-nut unit (THK DIR/BLR) leaves the screw and its end bearings standing, so those
+    # checks do not
     # apply to it)
     assert [u[0] for u in why.unmeetable] == ["max cost"]
     assert len(why.closest) == E.CLOSEST and all(c.misses for c in why.closest)
@@ -141,11 +154,15 @@ def test_infeasible_says_when_the_lost_motion_limit_left_the_reductions_out():
     """A problem that admits no lost motion (max_backlash 0, the default) forms no gearbox: an infeasible answer says
     so, with the count, so that a designer knows the limit, not the catalog, ruled them out; admitting lost motion
     forms them and the note goes."""
-    p = load_problem(Path(__file__).resolve().parents[3] / "problems" / "infeasible_drive_problem.yaml")
-    n = int((p.catalog.rows("reductions").number("backlash") > 0).sum())  # zero-gap belt stages are formed
+    p = load_problem(
+        Path(__file__).resolve().parents[3] / "problems" / "infeasible_drive_problem.yaml"
+    )
+    # zero-gap belt stages are formed
+    n = int((p.catalog.rows("reductions").number("backlash") > 0).sum())
     r = solve(p, sensitivities=False)
     assert r.best is None and f"{n} reductions (gearboxes, belts) were left out" in r.message
-    r2 = solve(p.with_limit("max_backlash", 1e-3), sensitivities=False)  # 1 mm: every gearbox is formed
+    # 1 mm: every gearbox is formed
+    r2 = solve(p.with_limit("max_backlash", 1e-3), sensitivities=False)
     assert "were left out" not in (r2.message or "")
 
 

@@ -25,10 +25,17 @@ def _drive_problem(seed, axis_coupling):
     cp = cat.couplings.copy()
     cp["torsional_stiffness"], cp["rated_torque"] = [3e5, 1.5e5], 500.0
     cat = cat.replace(couplings=cp)
-    p = make_problem(cat, limits={"max_cost": float(rng.uniform(3500, 6000))}, moving_mass=200.0,
-                     axial_load=3000.0)
-    return replace(p, restrictions=replace(p.restrictions, drive=True),
-                   axis=replace(p.axis, coupling_stiffness=axis_coupling))
+    p = make_problem(
+        cat,
+        limits={"max_cost": float(rng.uniform(3500, 6000))},
+        moving_mass=200.0,
+        axial_load=3000.0,
+    )
+    return replace(
+        p,
+        restrictions=replace(p.restrictions, drive=True),
+        axis=replace(p.axis, coupling_stiffness=axis_coupling),
+    )
 
 
 def test_infeasibility_scores_equal_per_combination_evaluation():
@@ -51,7 +58,8 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
         k = len(sel)
         lo = respond(prm, x, mounting, sp.preload_lo[n][:, None], sp.request)
         hi = respond(prm, x, mounting, sp.preload_hi[n][:, None], sp.request)
-        ref[sel] += np.where(sp.fits[n, b], 0.0, RULE_WEIGHT)  # a compatibility rule outweighs every limit
+        # a compatibility rule outweighs every limit
+        ref[sel] += np.where(sp.fits[n, b], 0.0, RULE_WEIGHT)
         for c in cons:
             v_lo, v_hi = as_vector(c.value(lo), k), as_vector(c.value(hi), k)
             if c.convex:

@@ -13,8 +13,10 @@ from axisopt.search import solve
 
 ROOT = Path(__file__).resolve().parents[3]
 
-# 5 m of stroke, 300 kg: the 63 mm screws' critical speed fixed-supported is below the rapid speed.  The screw's
-# design rise for the pretension is 2 K (THK plans 2-5 degC, A-715): at the default 3 K the pretension of a
+# 5 m of stroke, 300 kg: the 63 mm screws' critical speed fixed-supported is below the rapid speed.
+# The screw's
+# design rise for the pretension is 2 K (THK plans 2-5 degC, A-715): at the default 3 K the
+# pretension of a
 # fixed-fixed 63 mm screw overloads every support set this long axis can take.
 LONG = """\
 name: long-5m
@@ -31,7 +33,8 @@ limits:
   min_life: 20000 h
 {catalog}"""
 
-# a 40 kg vertical slide on Yaskawa SGM7J motors only: none of them lists a brake torque (YSK-S7 4.2.2 gives the
+# a 40 kg vertical slide on Yaskawa SGM7J motors only: none of them lists a brake torque (YSK-S7
+# 4.2.2 gives the
 # brake's inertia, not its holding torque, for this series; catalogs/motors.csv)
 VERTICAL = """\
 name: vertical-small
@@ -69,13 +72,22 @@ def test_five_metre_axis_gets_a_fixed_fixed_screw(tmp_path):
     assert res.best is None
     assert _edits(res) == [("catalog.mountings", "add", ("fixed-fixed",))]
     text = "\n".join(relax_lines(res.infeasibility))
-    assert "change the design: add fixed-fixed to catalog.mountings (1.45 x the critical speed" in text
-    # the margin is never proposed below 0.95 (issue 52): the 16 % miss blocks the relaxation instead
+    assert (
+        "change the design: add fixed-fixed to catalog.mountings (1.45 x the critical speed" in text
+    )
+    # the margin is never proposed below 0.95 (issue 52): the 16 % miss blocks the relaxation
+    # instead
     assert "limits.margins.critical_speed from" not in text
     assert "critical speed / max screw speed" in res.infeasibility.relax_blocked_by
-    fixed = _solve(tmp_path, LONG.format(speed=15, catalog="catalog:\n  mountings: [fixed-supported, fixed-fixed]\n"),
-                   "ff", advice=False)
-    assert fixed.best is not None and fixed.certificate.proven and fixed.best.mounting == "fixed-fixed"
+    fixed = _solve(
+        tmp_path,
+        LONG.format(speed=15, catalog="catalog:\n  mountings: [fixed-supported, fixed-fixed]\n"),
+        "ff",
+        advice=False,
+    )
+    assert (
+        fixed.best is not None and fixed.certificate.proven and fixed.best.mounting == "fixed-fixed"
+    )
 
 
 def test_five_metre_axis_at_30_m_min_gets_the_speed_not_a_mounting(tmp_path):
@@ -85,12 +97,17 @@ def test_five_metre_axis_at_30_m_min_gets_the_speed_not_a_mounting(tmp_path):
     res = _solve(tmp_path, LONG.format(speed=30, catalog=""))
     assert res.best is None
     assert [c.key for c in res.infeasibility.design_changes] == ["axis.max_speed"]
-    # the closest design's critical-speed margin would need 0.35-0.5: never proposed below 0.95 (issue 52)
+    # the closest design's critical-speed margin would need 0.35-0.5: never proposed below 0.95
+    # (issue 52)
     inf = res.infeasibility
     assert not [r for r in inf.relax if r.key.startswith("limits.margins.") and r.relaxed_to < 0.95]
     assert "critical speed / max screw speed" in inf.relax_blocked_by
-    both = _solve(tmp_path, LONG.format(speed=30, catalog="catalog:\n  mountings: [fixed-supported, fixed-fixed]\n"),
-                  "ff", advice=False)
+    both = _solve(
+        tmp_path,
+        LONG.format(speed=30, catalog="catalog:\n  mountings: [fixed-supported, fixed-fixed]\n"),
+        "ff",
+        advice=False,
+    )
     assert both.best is None
 
 
@@ -116,16 +133,26 @@ def test_vertical_axis_without_brake_torque_is_told_so(tmp_path):
     inf = res.infeasibility
     assert res.best is None
     assert _edits(res) == [("catalog.motor_series", "add", ("Sigma-7 SGM7G",))]
-    assert [m for m in inf.missing if "the motor rows of series Sigma-7 SGM7J give no brake torque" in m
-            and "pick a motor with a holding brake" in m] == inf.missing and len(inf.missing) == 1
+    assert [
+        m
+        for m in inf.missing
+        if "the motor rows of series Sigma-7 SGM7J give no brake torque" in m
+        and "pick a motor with a holding brake" in m
+    ] == inf.missing and len(inf.missing) == 1
     assert all(r.relaxed_to > 0 for r in inf.relax)
     assert "limits.margins.brake_holding" not in [r.key for r in inf.relax]
     assert all(r.below_vendor_rule for r in inf.relax if r.key.startswith("limits.margins."))
     text = "\n".join(relax_lines(inf))
-    assert "no limit frees this: the motor rows of series Sigma-7 SGM7J give no brake torque" in text
+    assert (
+        "no limit frees this: the motor rows of series Sigma-7 SGM7J give no brake torque" in text
+    )
     assert "from 1 to 0 (" not in text
-    again = _solve(tmp_path, VERTICAL.format(series="Sigma-7 SGM7J, Sigma-7 SGM7G"), "g", advice=False)
-    assert again.best is not None and again.certificate.proven and again.best.motor.startswith("SGM7G")
+    again = _solve(
+        tmp_path, VERTICAL.format(series="Sigma-7 SGM7J, Sigma-7 SGM7G"), "g", advice=False
+    )
+    assert (
+        again.best is not None and again.certificate.proven and again.best.motor.startswith("SGM7G")
+    )
 
 
 def test_an_excluded_part_is_taken_out_of_exclude(tmp_path):
@@ -138,7 +165,9 @@ def test_an_excluded_part_is_taken_out_of_exclude(tmp_path):
     [(key, edit, (motor,))] = _edits(res)
     assert key == "catalog.exclude.motor" and edit == "remove" and motor in sgm7g
     assert f"remove {motor} from catalog.exclude.motor" in "\n".join(relax_lines(res.infeasibility))
-    again = _solve(tmp_path, text.format(", ".join(m for m in sgm7g if m != motor)), "kept", advice=False)
+    again = _solve(
+        tmp_path, text.format(", ".join(m for m in sgm7g if m != motor)), "kept", advice=False
+    )
     assert again.best is not None and again.certificate.proven and again.best.motor == motor
 
 
@@ -152,7 +181,9 @@ def test_shipped_drive_example_gets_a_motor_series_and_a_coupling(tmp_path):
     edits = {key: values for key, _, values in _edits(res)}
     assert set(edits) == {"catalog.motor_series", "catalog.require.coupling"}
     series, [coupling] = edits["catalog.motor_series"], edits["catalog.require.coupling"]
-    changed = text.replace("motor_series: [Sigma-7 SGM7J]", f"motor_series: [Sigma-7 SGM7J, {', '.join(series)}]")
+    changed = text.replace(
+        "motor_series: [Sigma-7 SGM7J]", f"motor_series: [Sigma-7 SGM7J, {', '.join(series)}]"
+    )
     changed = changed.replace("[RINGFEDER-GWB-AKN-30]", f"[RINGFEDER-GWB-AKN-30, {coupling}]")
     assert changed.count("Sigma-7 SGM7J,") == 1 and coupling in changed
     again = _solve(tmp_path, changed, "changed", advice=False)
@@ -174,4 +205,7 @@ def test_the_widening_counts_in_the_budget(tmp_path, monkeypatch):
     inf = solve(problem, "default", sensitivities=False).infeasibility
     changes = advice.design_changes(problem, build_constraints(problem), inf, budget=1)
     assert [c.values for c in changes] == [("fixed-fixed",)] and len(calls) == 1
-    assert advice.design_changes(problem, build_constraints(problem), inf, budget=0) == [] and len(calls) == 1
+    assert (
+        advice.design_changes(problem, build_constraints(problem), inf, budget=0) == []
+        and len(calls) == 1
+    )

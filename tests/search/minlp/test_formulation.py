@@ -60,11 +60,17 @@ def test_one_hot_mixture_is_the_chosen_parts_at_an_integer_point(space):
         at = float(ca.Function("p", [zcol], [exact[name]])(point))
         assert at == vals[pick[slot]]
         floor = float(ca.Function("p", [zcol], [floored[name]])(point))
-        assert floor == pytest.approx(vals[pick[slot]] + 1e-6 * np.mean(vals), rel=1e-12, abs=1e-300)
+        assert floor == pytest.approx(
+            vals[pick[slot]] + 1e-6 * np.mean(vals), rel=1e-12, abs=1e-300
+        )
 
 
 def test_integral_point_needs_a_one_in_every_slot():
-    z = {"nut": np.array([0.0, 1.0]), "bearing": np.array([1.0 - 1e-8]), "guide": np.array([0.0, 1.0, 0.0])}
+    z = {
+        "nut": np.array([0.0, 1.0]),
+        "bearing": np.array([1.0 - 1e-8]),
+        "guide": np.array([0.0, 1.0, 0.0]),
+    }
     assert integral(z)
     assert not integral({**z, "guide": np.array([0.5, 0.5, 0.0])})
 
@@ -72,8 +78,9 @@ def test_integral_point_needs_a_one_in_every_slot():
 def test_recover_moves_the_preload_into_the_limits(monkeypatch):
     """The largest binary per slot is the part; a preload that misses a limit is moved by the first move that
     meets it (clipped to the nut's range), else None."""
-    space = SimpleNamespace(shape=(2, 2, 1, 3), preload_lo=np.array([100.0, 200.0]),
-                            preload_hi=np.array([300.0, 400.0]))
+    space = SimpleNamespace(
+        shape=(2, 2, 1, 3), preload_lo=np.array([100.0, 200.0]), preload_hi=np.array([300.0, 400.0])
+    )
     monkeypatch.setattr(formulation, "feasible_at", lambda sp, combo, pre, cons: pre <= 350.0)
     z = {"nut": [0.0, 1.0], "bearing": [1.0], "guide": [0.0, 0.0, 1.0]}
     combo = int(np.ravel_multi_index((1, 1, 0, 2), space.shape))

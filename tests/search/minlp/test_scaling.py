@@ -28,7 +28,7 @@ def test_limit_of_zero_is_the_value_in_display_units():
 
 def test_life_and_margins_on_a_log_scale():
     assert log_scaled("life") and log_scaled("margin_buckling") and not log_scaled("cost")
-    g, rhs = scaled_limit(_limit("margin_buckling", ">=", 1.0), ca.DM(np.e ** 2))
+    g, rhs = scaled_limit(_limit("margin_buckling", ">=", 1.0), ca.DM(np.e**2))
     assert float(g) == pytest.approx(2.0) and rhs == 0.0
     g, _ = scaled_limit(_limit("life", ">=", 5.4e7), ca.DM(0.0))  # no -inf at a life of 0
     assert np.isfinite(float(g)) and float(g) < -600

@@ -18,8 +18,10 @@ from axisopt.search import solve
 pytest.importorskip("pyscipopt")
 
 PROBLEMS = Path(__file__).resolve().parents[3] / "problems"
-# wall seconds: with the vendor rules SCIP's presolved proof is contradicted and solved again with presolving off
-# (scip.RETRY_PARAMS): 9.7 s CPU, 25 s wall at load 9 on 2 cores; over 40 s wall under the suite's load
+# wall seconds: with the vendor rules SCIP's presolved proof is contradicted and solved again with
+# presolving off
+# (scip.RETRY_PARAMS): 9.7 s CPU, 25 s wall at load 9 on 2 cores; over 40 s wall under the suite's
+# load
 TEACHING_LIMIT = 120
 
 
@@ -37,10 +39,16 @@ def _teaching_yaskawa_rule(tmp_path) -> Path:
     assert "\naxis:\n" in text and "  acceleration: 3 m/s^2\n" in text and old_require in text
     path = tmp_path / "teaching_problem.yaml"
     text = text.replace("  acceleration: 3 m/s^2\n", "  acceleration: 2 m/s^2\n", 1)
-    text = text.replace(old_require, "require: {bearing: [HIWIN-WBK30-DF, HIWIN-WBK25-DF, HIWIN-WBK20-DF], "
-                        "nut: [HIWIN-R40-40K2-FDC, HIWIN-R32-40K2-FDC], motor: [SGM7G-13A], "
-                        "coupling: [RINGFEDER-GWB-AKN-60]}", 1)
-    path.write_text(text.replace("\naxis:\n", "\naxis:\n  rms_torque_ratio: 1\n", 1), encoding="utf-8")
+    text = text.replace(
+        old_require,
+        "require: {bearing: [HIWIN-WBK30-DF, HIWIN-WBK25-DF, HIWIN-WBK20-DF], "
+        "nut: [HIWIN-R40-40K2-FDC, HIWIN-R32-40K2-FDC], motor: [SGM7G-13A], "
+        "coupling: [RINGFEDER-GWB-AKN-60]}",
+        1,
+    )
+    path.write_text(
+        text.replace("\naxis:\n", "\naxis:\n  rms_torque_ratio: 1\n", 1), encoding="utf-8"
+    )
     return path
 
 
@@ -53,7 +61,9 @@ def test_teaching_problem_equals_exhaustive(tmp_path):
 
 
 def test_infeasible_problem_is_reported_infeasible():
-    cat = make_catalog(np.random.default_rng(7), n_screws=2, nuts_per_screw=2, n_bearings=3, n_guides=2)
+    cat = make_catalog(
+        np.random.default_rng(7), n_screws=2, nuts_per_screw=2, n_bearings=3, n_guides=2
+    )
     p = make_problem(cat, limits={"max_cost": 100.0})
     s = solve(p, "scip", time_limit=20)
     assert solve(p, "exhaustive", sensitivities=False).status == "infeasible"
@@ -68,7 +78,9 @@ def test_pareto_is_an_input_error():
 
 def test_cli_exit_codes(capsys, tmp_path):
     teaching = _teaching_yaskawa_rule(tmp_path)
-    assert main(["solve", str(teaching), "--method", "scip", "--time-limit", str(TEACHING_LIMIT)]) == 0
+    assert (
+        main(["solve", str(teaching), "--method", "scip", "--time-limit", str(TEACHING_LIMIT)]) == 0
+    )
     out = capsys.readouterr().out
     assert "method scip: status optimal" in out
     assert main(["solve", str(teaching), "--method", "scip", "--time-limit", "0.01"]) == 3
@@ -117,7 +129,6 @@ def test_highspeed_problem_never_a_wrong_proof():
         assert s.status == "optimal" and s.best.objective == pytest.approx(99.3745, rel=1e-4)
     if s.status == "solver_failed":
         assert not s.certificate.proven and "proof is wrong" in s.message
-
 
 
 @pytest.mark.parametrize("method", ["scip", "bonmin"])

@@ -10,7 +10,9 @@ from axisopt.search.minlp.streams import c_stderr_to_file
 
 def test_c_level_stderr_is_captured_and_restored(capfd):
     with c_stderr_to_file() as lines:
-        os.write(2, b"Cannot set feasibility tolerance\n  \nCannot set feasibility tolerance\nother\n")
+        os.write(
+            2, b"Cannot set feasibility tolerance\n  \nCannot set feasibility tolerance\nother\n"
+        )
     assert lines == ["Cannot set feasibility tolerance", "other"]
     os.write(2, b"after\n")
     assert capfd.readouterr().err == "after\n"

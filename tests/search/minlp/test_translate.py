@@ -14,8 +14,10 @@ from axisopt.search.minlp.translate import Graph, implicit_shift
 
 def test_graph_values_equal_casadi():
     x, y = ca.SX.sym("x", 2), ca.SX.sym("y")
-    out = [ca.sqrt(x[0]) * y + ca.fmin(x[0], x[1]) ** 1.5,
-           ca.if_else(x[1] < y, ca.exp(y) / x[0], ca.log(x[1]) - ca.fabs(y))]
+    out = [
+        ca.sqrt(x[0]) * y + ca.fmin(x[0], x[1]) ** 1.5,
+        ca.if_else(x[1] < y, ca.exp(y) / x[0], ca.log(x[1]) - ca.fabs(y)),
+    ]
     f = ca.Function("f", [x, y], [ca.vertcat(*out)])
     rng = np.random.default_rng(0)
     flat = rng.uniform(0.1, 3.0, (3, 50))

@@ -14,9 +14,17 @@ def _c(key="k_total", sense=">=", limit=100e6, direction=1, factor=1e6):
     return Constraint("x", key, sense, limit, direction, "x", "", factor)
 
 
-@pytest.mark.parametrize("sense, direction, end", [(">=", 1, End.HIGH), ("<=", 1, End.LOW), (">=", -1, End.LOW),
-                                                   ("<=", -1, End.HIGH), (">=", 0, End.LOW),
-                                                   (">=", CONVEX, End.INTERVAL)])
+@pytest.mark.parametrize(
+    "sense, direction, end",
+    [
+        (">=", 1, End.HIGH),
+        ("<=", 1, End.LOW),
+        (">=", -1, End.LOW),
+        ("<=", -1, End.HIGH),
+        (">=", 0, End.LOW),
+        (">=", CONVEX, End.INTERVAL),
+    ],
+)
 def test_favourable_end_follows_sense_and_preload_direction(sense, direction, end):
     c = _c(sense=sense, direction=direction)
     assert c.favourable is end
@@ -32,16 +40,26 @@ def test_preload_directions_are_the_models():
 
 
 def test_scaling_is_the_same_on_numpy_and_casadi_with_a_branch_for_a_zero_limit():
-    for c, v in ((_c(), 120e6), (_c(key="life", limit=3.6e7, direction=-1), 7.2e7),
-                 (_c(key="backlash", sense="<=", limit=0.0, direction=0, factor=1e-6), 2e-6)):
+    for c, v in (
+        (_c(), 120e6),
+        (_c(key="life", limit=3.6e7, direction=-1), 7.2e7),
+        (_c(key="backlash", sense="<=", limit=0.0, direction=0, factor=1e-6), 2e-6),
+    ):
         x = ca.SX.sym("x")
         f = ca.Function("f", [x], [c.scaled(x)])
         assert float(f(v)) == pytest.approx(float(c.scaled(np.float64(v))))
-    assert float(_c(key="backlash", sense="<=", limit=0.0, direction=0, factor=1e-6).scaled(2e-6)) == \
-        pytest.approx(2.0)
+    assert float(
+        _c(key="backlash", sense="<=", limit=0.0, direction=0, factor=1e-6).scaled(2e-6)
+    ) == pytest.approx(2.0)
     assert float(_c().scaled(120e6)) == pytest.approx(0.2)
 
 
 def test_limit_constraint_renames_a_problem_limit():
     c = limit_constraint("min_frequency", 50.0, "lexicographic frequency", "frequency within 0.01")
-    assert (c.name, c.key, c.sense, c.limit, c.unit) == ("lexicographic frequency", "f1", ">=", 50.0, "Hz")
+    assert (c.name, c.key, c.sense, c.limit, c.unit) == (
+        "lexicographic frequency",
+        "f1",
+        ">=",
+        50.0,
+        "Hz",
+    )

@@ -22,7 +22,11 @@ def test_max_regen_power_default_equals_exhaustive(seed, vertical):
     cat = make_catalog(rng, n_screws=3, nuts_per_screw=2, n_bearings=4, n_guides=3)
     make_double(cat)
     cat = add_drives(cat, rng, n_motors=3, n_couplings=2)
-    kw = {"orientation": "vertical", "moving_mass": 80.0} if vertical else {"acceleration": 8.0, "max_speed": 0.5}
+    kw = (
+        {"orientation": "vertical", "moving_mass": 80.0}
+        if vertical
+        else {"acceleration": 8.0, "max_speed": 0.5}
+    )
     free = solve(make_problem(cat, **kw), "exhaustive", top=1, sensitivities=False)
     if free.best is None:
         pytest.skip("no feasible design in this synthetic catalog")
@@ -38,4 +42,7 @@ def test_max_regen_power_default_equals_exhaustive(seed, vertical):
     if d.best is not None:
         assert d.certificate.proven
         assert float(evaluate(d.best.design)["regen_power"]) <= 0.8 * regen * (1 + 1e-6)
-        assert d.best.combination != free.best.combination or d.best.design.preload > free.best.design.preload
+        assert (
+            d.best.combination != free.best.combination
+            or d.best.design.preload > free.best.design.preload
+        )

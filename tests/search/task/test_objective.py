@@ -10,8 +10,11 @@ from axisopt.search.task.objective import objective_spec, rank_order
 
 
 def test_weighted_objective_in_display_units():
-    ob = Objective(mode="weighted", weights=(("stiffness", 1.0), ("frequency", 2.0)),
-                   scale=(("stiffness", 100e6), ("frequency", 50.0)))
+    ob = Objective(
+        mode="weighted",
+        weights=(("stiffness", 1.0), ("frequency", 2.0)),
+        scale=(("stiffness", 100e6), ("frequency", 50.0)),
+    )
     spec = objective_spec("weighted", _with(ob))
     out = {"k_total": np.array([[200e6, 300e6]]), "f1": np.array([[100.0, 80.0]])}
     assert float(spec.value(out)[0]) == pytest.approx(200 / 100 + 2 * 80 / 50)
@@ -21,6 +24,7 @@ def test_weighted_objective_in_display_units():
 def _with(ob):
     class P:
         objective = ob
+
     return P()
 
 

@@ -16,11 +16,15 @@ from axisopt.search import solve
 def test_kv_objective_default_equals_exhaustive(seed):
     rng = np.random.default_rng(700 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=3, n_bearings=6, n_guides=4)
-    limits = {"max_cost": float(rng.uniform(2500, 5000)), "max_drag_torque": float(rng.uniform(0.4, 1.5))}
+    limits = {
+        "max_cost": float(rng.uniform(2500, 5000)),
+        "max_drag_torque": float(rng.uniform(0.4, 1.5)),
+    }
     if seed % 2:
         limits["min_life"] = float(rng.uniform(5e3, 3e4)) * 3600
-    p = make_problem(cat, objective=Objective(mode="kv"), limits=limits,
-                     backlash=5e-5 if seed % 2 else None)
+    p = make_problem(
+        cat, objective=Objective(mode="kv"), limits=limits, backlash=5e-5 if seed % 2 else None
+    )
     d = solve(p, "default", top=3, sensitivities=False)
     e = solve(p, "exhaustive", top=3, sensitivities=False)
     assert_same_answer(d, e, preload=False)

@@ -23,7 +23,11 @@ def _problem(drive: bool, mode: str = "stiffness"):
     if drive:
         make_double(cat)
         cat = add_drives(cat, rng)
-    ob = Objective(mode="pareto", pareto=("stiffness", "cost")) if mode == "pareto" else Objective(mode=mode)
+    ob = (
+        Objective(mode="pareto", pareto=("stiffness", "cost"))
+        if mode == "pareto"
+        else Objective(mode=mode)
+    )
     p = make_problem(cat, limits={"max_cost": 100.0}, objective=ob)
     if drive:
         p = replace(p, restrictions=replace(p.restrictions, drive=True))
@@ -33,9 +37,14 @@ def _problem(drive: bool, mode: str = "stiffness"):
 @pytest.mark.parametrize("method", ["default", "exhaustive"])
 @pytest.mark.parametrize("drive", [False, True])
 @pytest.mark.parametrize("mode", ["stiffness", "pareto"])
-@pytest.mark.parametrize("restriction,slot", [({"guide_types": ("roller",)}, "linear guide"),
-                                              ({"bearing_arrangements": ("DF",)}, "support bearing"),
-                                              ({"nut_types": ("nope",)}, "screw and nut")])
+@pytest.mark.parametrize(
+    "restriction,slot",
+    [
+        ({"guide_types": ("roller",)}, "linear guide"),
+        ({"bearing_arrangements": ("DF",)}, "support bearing"),
+        ({"nut_types": ("nope",)}, "screw and nut"),
+    ],
+)
 def test_an_empty_part_slot_is_an_input_error(method, drive, mode, restriction, slot):
     p = _problem(drive, mode)
     p = replace(p, restrictions=replace(p.restrictions, **restriction))
@@ -46,8 +55,11 @@ def test_an_empty_part_slot_is_an_input_error(method, drive, mode, restriction, 
 def test_cli_vendor_without_guides(tmp_path, capsys):
     """THK lists screws, nuts and bearings but no guides: the teaching problem restricted to THK."""
     f = tmp_path / "thk.yaml"
-    f.write_text((ROOT / "problems" / "teaching_problem.yaml").read_text().replace("vendors: [HIWIN]",
-                                                                                    "vendors: [THK]"))
+    f.write_text(
+        (ROOT / "problems" / "teaching_problem.yaml")
+        .read_text()
+        .replace("vendors: [HIWIN]", "vendors: [THK]")
+    )
     assert main(["solve", str(f)]) == 2
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and "no linear guide is left" in err
