@@ -116,7 +116,7 @@ def misumi_buckling(d1, la):
     """MiSUMi "Selection of Ball Screws 2" (Economy catalog p. 1676): P = m d^4 / l^2 x 1e4 [N] with m = 10 for
     a fixed-support shaft, l the distance between the points of buckling load [mm]: the nut a supported end."""
     return (
-        10.0 * d1** 4 / la** 2 * 1e4,
+        10.0 * d1**4 / la**2 * 1e4,
         "MiSUMi p. 1676: P = m d^4 / l^2 x 1e4, m 10 (nut a supported end)",
     )
 

@@ -13,8 +13,8 @@ import math
 from ..identify.effects import time_effects
 from ..identify.records.estimators import Estimate, mode_frequency, rel_error
 from ..identify.records.idim import TimeDiagnosis
-from ..identify.records.record import BUTTER_ORDER
 from ..identify.records.regression import UNITS, shape_params, symbol, term, unit_of
+from ..identify.records.signal import BUTTER_ORDER
 from ..identify.selection import TIME_RULE
 from .text import wrap_words
 from .timeresidual import (
