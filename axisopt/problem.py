@@ -37,22 +37,18 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
       guide_types: [ball, roller]
       guide_preload: [medium, heavy]                  # guide preload levels or vendor classes (ZA, Z0, ...)
       status: [vendor, stiffness-derived]             # row provenance (catalogs/SOURCES.md); the default also
-                                                      # allows user rows; add derived or paper to
-                                                      # search those
+                                                      # allows user rows; add derived or paper to search those
       require: {screw: [id, ...], nut: id, bearing: [...], guide: [...], motor: [...], coupling: [...]}
       exclude: {guide: [id, ...]}
       drive: yes                       # motor, coupling and reduction are search choices (default: yes when
-                                       # the catalogs have motors and the axis an acceleration or
-                                       # duty cycle;
-                                       # 'no' keeps the axis's motor_inertia and coupling values,
-                                       # skips the
+                                       # the catalogs have motors and the axis an acceleration or duty cycle;
+                                       # 'no' keeps the axis's motor_inertia and coupling values, skips the
                                        # drive checks, and every answer says so)
       motor_vendors: [Yaskawa]         # the drive parts' own vendor and series filters ('vendors' is for
       motor_series: [Sigma-7 SGM7G]    # the mechanical parts)
       coupling_series: [...]
       reductions: yes                  # a searched drive also chooses a reduction (catalogs' reductions.csv) or
-                                       # none (default yes when the table has rows; 'no': direct
-                                       # drive, or the
+                                       # none (default yes when the table has rows; 'no': direct drive, or the
                                        # axis's reduction_ratio, only)
       max_motor_flange: 130 mm         # the motor must fit the machine: flange (square) size at most this
     continuous:
@@ -92,8 +88,7 @@ from .restrictions import (  # noqa: F401  (the slot names are the problem's voc
 )
 from .yamlio import Key, Section, Spec, close_matches, read_yaml, require_kind
 
-# limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once
-# there
+# limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once there
 DEFAULT_LIMITS = MappingProxyType(
     {k: lim.default for k, lim in LIMITS.items() if lim.default is not None}
 )
@@ -115,15 +110,12 @@ class Problem:
     name: str = "problem"
     source: str = ""
     assumed: tuple = ()
-    # the checks' required life (axis.required_life) follows limits.min_life: the YAML set min_life,
-    # not
+    # the checks' required life (axis.required_life) follows limits.min_life: the YAML set min_life, not
     # required_life (one life requirement, not a stricter hidden default beside the user's limit)
     life_from_limit: bool = False
-    # search.counterbalance / search.twin_drive: ((label, Axis), ...) the search chooses among
-    # (empty: the axis)
+    # search.counterbalance / search.twin_drive: ((label, Axis), ...) the search chooses among (empty: the axis)
     arrangements: tuple = field(default=(), repr=False)
-    # search.drive_types (design.drivechoice.DriveChoice): rack and pinion, linear motors beside the
-    # screw;
+    # search.drive_types (design.drivechoice.DriveChoice): rack and pinion, linear motors beside the screw;
     # None: the screw drive alone
     drives: object = field(default=None, repr=False, compare=False)
 
@@ -176,11 +168,9 @@ class Problem:
         )
 
 
-# ------------------------------------------------------------------------------ the YAML keys (one
-# table)
+# ------------------------------------------------------------------------------ the YAML keys (one table)
 # The one declaration of a problem file's keys: the readers below read them by it (Section.read) and
-# `axisopt schema problem` writes it out.  What a Key cannot say (a weight's scale follows its
-# weight, catalog
+# `axisopt schema problem` writes it out.  What a Key cannot say (a weight's scale follows its weight, catalog
 # names are checked against the catalogs loaded) stays in the readers.
 
 MARGINS_SPEC = Spec(
@@ -335,8 +325,9 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
                 "before nut and blocks): no design can meet it",
             )
     restr = read_restrictions(root.read("catalog"), catalog, axis)
-    # as a design with a motor: no default
-    if restr.drive and axis.acceleration <= 0 and not axis.duty_cycle:
+    if (
+        restr.drive and axis.acceleration <= 0 and not axis.duty_cycle
+    ):  # as a design with a motor: no default
         raise asec.error(
             "acceleration",
             "sizing a motor (the search chooses the drive) needs axis.acceleration "
@@ -375,8 +366,9 @@ def _read_objective(root: Section) -> Objective:
     node = root.raw("objective")
     if node is None:
         return Objective()
-    # all modes, so that the options-taking ones get a helpful message
-    if isinstance(node.value, str):
+    if isinstance(
+        node.value, str
+    ):  # all modes, so that the options-taking ones get a helpful message
         mode = root.choice("objective", OBJECTIVE_MODES)
         if mode in ("weighted", "lexicographic", "pareto"):
             raise root.error("objective", f"mode '{mode}' needs a mapping (see the problem format)")

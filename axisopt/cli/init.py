@@ -225,7 +225,7 @@ continuous:
   screw: HIWIN-G-63x40-b6p35
   nut: HIWIN-R63-40K2-FDC
   bearing: NSK-50TAC100B-DFF-C9  # light preload (C9): a standard-preload set misses 15 000 h here
-  guide: HIWIN-HG35-ZA        # size 35: the cut 600 mm up, 500 mm across tilts the gantry
+  guide: HIWIN-RG35-ZA        # roller 35: the cut 600 mm up, 500 mm across tilts the gantry
   motor: HC702
   coupling: RINGFEDER-GWB-AKN-300
   nut_preload: 2500 N

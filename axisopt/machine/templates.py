@@ -6,8 +6,7 @@ from types import MappingProxyType
 TEMPLATES = MappingProxyType(
     {
         "vmc": """\
-# A vertical machining centre: the table (X) on the saddle (Y) on the bed, the spindle head (Z) on a
-# fixed
+# A vertical machining centre: the table (X) on the saddle (Y) on the bed, the spindle head (Z) on a fixed
 # column.  Solve it with `axisopt machine solve problems/machines/vmc_machine.yaml`.
 name: vmc-machine
 description: >
@@ -116,8 +115,7 @@ axes:
         require: {coupling: [RINGFEDER-GWB-AKN-150]}
 """,
         "moving-column": """\
-# A moving-column machine: the column (X) travels on the bed, the headstock (Y) rises on the column,
-# the ram (Z)
+# A moving-column machine: the column (X) travels on the bed, the headstock (Y) rises on the column, the ram (Z)
 # moves out of the headstock; the workpiece stands on a fixed table.  One chain on the frame.
 name: moving-column-machine
 description: >
@@ -225,10 +223,8 @@ axes:
         require: {coupling: [RINGFEDER-GWB-AKN-150]}
 """,
         "gantry": """\
-# A gantry: the bridge (Y) on two synchronised screw drives, the cross carriage (X) across the
-# bridge, the ram (Z)
-# vertical in the cross carriage with a counterweight.  One chain on the frame; the workpiece on the
-# fixed bed.
+# A gantry: the bridge (Y) on two synchronised screw drives, the cross carriage (X) across the bridge, the ram (Z)
+# vertical in the cross carriage with a counterweight.  One chain on the frame; the workpiece on the fixed bed.
 name: gantry-machine
 description: >
   Gantry 3000 x 1600 x 500: a 700 kg bridge on a twin drive 2.0 m apart, a 250 kg cross carriage on X, a 150 kg

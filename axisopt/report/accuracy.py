@@ -31,11 +31,7 @@ def budget_rows(ev) -> list:
     """(label, value [m], source) of each row, the total and the repeatability."""
     d, v = ev.design, ev.values
     a = d.axis
-    rise = (
-        f"heat balance at the design's preload {d.preload:.0f} N"
-        if a.rise_from_balance
-        else "the rise used"
-    )
+    rise = f"heat balance, preload {d.preload:.0f} N" if a.rise_from_balance else "the rise used"
     pitch, yaw = a.guide_pitch / ARCSEC, a.guide_yaw / ARCSEC
     red = reduction_lost_motion(d)
     if a.feedback == "linear_scale":

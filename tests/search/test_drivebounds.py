@@ -10,8 +10,7 @@ from axisopt.search.drivebounds import hull_ends
 from axisopt.search.drivebounds import least_cost as drive_least_cost
 from axisopt.search.parts import build_space
 
-# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about
-# 1 500 EUR,
+# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about 1 500 EUR,
 # the cheapest design meeting every other limit about 4 000 EUR)
 LATHE = """name: lathe-z
 description: >
@@ -25,12 +24,9 @@ axis:
   orientation: horizontal
   max_speed: 40 m/min
   acceleration: 4 m/s^2
-  # Roughing steel (our assumption): feed force Ff 8 kN along Z, the tangential force Fc 12 kN
-  # pressing the
-  # carriage onto its ways, the passive force Fp 4 kN across them (Ff : Fc : Fp near the rule of
-  # thumb
-  # 0.5 : 1 : 0.25, Isakov, CTE 2013), at the tool tip 250 mm above the guides, 150 mm off the
-  # centre line.
+  # Roughing steel (our assumption): feed force Ff 8 kN along Z, the tangential force Fc 12 kN pressing the
+  # carriage onto its ways, the passive force Fp 4 kN across them (Ff : Fc : Fp near the rule of thumb
+  # 0.5 : 1 : 0.25, Isakov, CTE 2013), at the tool tip 250 mm above the guides, 150 mm off the centre line.
   axial_load: 8 kN
   mean_axial_load: 2.5 kN
   normal_load: 12 kN
@@ -84,7 +80,8 @@ def test_least_cost_per_drive_is_the_least_over_guides_and_bearings(tmp_path):
         got = drive_least_cost(sp, mounting, nuts, group)
         for k in range(len(nuts)):
             every = np.asarray(cost(sp.params_drives(mounting, nuts[k : k + 1])), dtype=float)
-            # (bearings, drives)
-            every = np.broadcast_to(every, (1, B) + every.shape[2:]).min(axis=2)[0]
+            every = np.broadcast_to(every, (1, B) + every.shape[2:]).min(axis=2)[
+                0
+            ]  # (bearings, drives)
             for g in range(group.max() + 1):
                 np.testing.assert_allclose(got[k, g], every[group == g].min(axis=0), rtol=1e-12)

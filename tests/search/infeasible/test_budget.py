@@ -19,8 +19,7 @@ from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
 from axisopt.search.task.objective import objective_spec
 
-# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about
-# 1 500 EUR,
+# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about 1 500 EUR,
 # the cheapest design meeting every other limit about 4 000 EUR)
 LATHE = """name: lathe-z
 description: >
@@ -34,12 +33,9 @@ axis:
   orientation: horizontal
   max_speed: 40 m/min
   acceleration: 4 m/s^2
-  # Roughing steel (our assumption): feed force Ff 8 kN along Z, the tangential force Fc 12 kN
-  # pressing the
-  # carriage onto its ways, the passive force Fp 4 kN across them (Ff : Fc : Fp near the rule of
-  # thumb
-  # 0.5 : 1 : 0.25, Isakov, CTE 2013), at the tool tip 250 mm above the guides, 150 mm off the
-  # centre line.
+  # Roughing steel (our assumption): feed force Ff 8 kN along Z, the tangential force Fc 12 kN pressing the
+  # carriage onto its ways, the passive force Fp 4 kN across them (Ff : Fc : Fp near the rule of thumb
+  # 0.5 : 1 : 0.25, Isakov, CTE 2013), at the tool tip 250 mm above the guides, 150 mm off the centre line.
   axial_load: 8 kN
   mean_axial_load: 2.5 kN
   normal_load: 12 kN
