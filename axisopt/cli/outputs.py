@@ -102,9 +102,6 @@ def _inputs(args, outputs: set) -> list:
     return found
 
 
-_same = same_file
-
-
 def _named(name: str) -> str:
     return {
         "problem": "the problem file",
@@ -143,7 +140,7 @@ def check_outputs(args) -> None:
                 if (
                     option == "--save-design"
                     and _RANKED_YAML.match(os.path.basename(path))
-                    and _same(os.path.dirname(path) or ".", value)
+                    and same_file(os.path.dirname(path) or ".", value)
                 ):
                     raise InputError(
                         f"would write over {_named(name)} {path} of this command; give another "
@@ -163,14 +160,16 @@ def check_outputs(args) -> None:
         how = output_target(value)
         if how == "atomic":
             for name, path in inputs:
-                if _same(path, value):
+                if same_file(path, value):
                     raise InputError(
                         f"would overwrite {_named(name)} {path} of this command; give another "
                         f"file name",
                         where=option,
                     )
             for other, earlier in files:
-                if os.path.realpath(earlier) == os.path.realpath(value) or _same(earlier, value):
+                if os.path.realpath(earlier) == os.path.realpath(value) or same_file(
+                    earlier, value
+                ):
                     raise InputError(
                         f"{other} and {option} name the same file {value}; give each its own",
                         where=option,
