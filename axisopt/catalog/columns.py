@@ -436,7 +436,7 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
     """The first thing wrong with one part of table ``name`` (numbers in SI, optional cells NaN), as
     (column, message), or None.  The one validation of catalog rows (:func:`load_catalogs`) and of parts
     written inline in a design (:func:`axisopt.design.inline_part`)."""
-    from ..units import PLAUSIBLE_MAX
+    from ..units import PLAUSIBLE_MAX, PLAUSIBLE_MIN
 
     for col, kind in SCHEMA[name].items():
         val = rec.get(col)
@@ -456,6 +456,9 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
             return col, "must not be negative"
         if kind != "int" and abs(val) > PLAUSIBLE_MAX.get(kind, 1e12):
             return col, f"out of range (at most {PLAUSIBLE_MAX.get(kind, 1e12):g} in SI units)"
+        if kind != "int" and 0 < abs(val) < PLAUSIBLE_MIN:
+            # the YAML values' floor: a load rating of 1e-297 N overflowed the life formula's cube
+            return col, f"too small to be meant (below {PLAUSIBLE_MIN:g} in SI units)"
     for col, top in _AT_MOST.get(name, ()):
         if rec[col] > top:
             return col, f"must be at most {top:g} (= {top * 100:g} %)"

@@ -150,7 +150,7 @@ def axis_designs(
         elif superset is not None and ai in superset and superset[ai][0] == space.shape:
             ex = exact_solve(space, superset[ai][1], cons, SPEC)
         else:
-            idx, _, _ = screen_feasible_blocks(space, cons, SPEC)
+            idx, _, _, _ = screen_feasible_blocks(space, cons, SPEC)
             ex = exact_solve(space, idx, cons, SPEC)
         ok = np.nonzero(ex.feasible)[0]
         idx = ex.idx[ok]

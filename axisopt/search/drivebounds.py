@@ -30,6 +30,9 @@ DRIVE_BEARING_GROUPS = 8
 # the per-drive
 # bounds first (on the 1000-case study, 10 drives per case, the bounds cost more than they saved)
 PER_DRIVE_MIN = 64
+# (nut, bearing group, drive) elements per interval evaluation of the drive block by a caller that splits its
+# nuts (the screening's viable drives, the explanation's per-block drive bounds): its temporaries stay near 1 GB
+HULL_BLOCK = 400_000
 
 
 def drive_pair_params(space: Space, mounting: str, nut_sel, bearings=None) -> dict:

@@ -249,7 +249,7 @@ def _solve(
             )
         from .pareto import solve_pareto
 
-        return solve_pareto(problem, method=method, t0=t0)
+        return solve_pareto(problem, method=method, t0=t0, time_limit=time_limit)
     if ob.mode == "lexicographic":
         from .task.objective import objective_spec
 

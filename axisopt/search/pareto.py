@@ -21,7 +21,7 @@ from .certificate import Certificate, SearchStats
 from .exhaustive import exhaustive_search
 from .parts import build_space
 from .preload import concat_exact, exact_solve
-from .result import INFEASIBLE, OPTIMAL, ParetoFront, SolveResult
+from .result import INFEASIBLE, OPTIMAL, TIME_LIMIT, ParetoFront, SolveResult
 from .screen import screen_nuts
 from .task.constraints import build_constraints
 from .task.objective import objective_spec
@@ -76,56 +76,81 @@ def nondominated(points: np.ndarray, block: int = 2048) -> np.ndarray:
     return np.asarray(sorted(front_idx), dtype=np.int64)
 
 
-def screen_feasible_blocks(space, constraints, spec):
+def screen_feasible_blocks(space, constraints, spec, deadline: float | None = None):
     """Screen only the (mounting, nut, bearing) blocks that some guide and drive could make feasible
     (:func:`.bounds.block_bounds`; every front point is feasible, so no bound on the objectives is used).
-    Returns (survivors' combination numbers, seconds, combinations screened)."""
+    ``deadline`` (a time.perf_counter() value): stop there with the blocks screened so far.
+    Returns (survivors' combination numbers, seconds, combinations screened, whether the deadline cut it)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
     idx = []
     screened = 0
     step = space.nuts_per_block
+    cut = False
     for mi, (ok, _bound) in enumerate(block_bounds(space, constraints, spec)):
         nuts = np.nonzero(ok.any(axis=1))[0]
-        screened += int(ok.sum()) * GD
         for s in range(0, len(nuts), step):
+            if deadline is not None and time.perf_counter() > deadline:
+                cut = True
+                break
             nn = nuts[s : s + step]
+            screened += int(ok[nn].sum()) * GD
             i, _ = screen_nuts(space, mi, nn, constraints, spec, premask=ok[nn])
             idx.append(i)
+        if cut:
+            break
     out = np.concatenate(idx) if idx else np.zeros(0, np.int64)
-    return out, time.perf_counter() - t0, screened
+    return out, time.perf_counter() - t0, screened, cut
+
+
+def _solve_screened(space, constraints, spec, deadline: float):
+    """The default method's front search: the feasible blocks screened, their survivors solved exactly,
+    both stopped at ``deadline``.  Returns (Exact, SearchStats)."""
+    idx, t_screen, screened, cut = screen_feasible_blocks(space, constraints, spec, deadline)
+    parts, done = [], 0
+    for s in range(0, len(idx), 200000):
+        if time.perf_counter() > deadline:
+            cut = True
+            break
+        parts.append(exact_solve(space, idx[s : s + 200000], constraints, spec))
+        done = min(len(idx), s + 200000)
+    ex = concat_exact(parts) if parts else exact_solve(space, [], constraints, spec)
+    info = SearchStats(
+        combinations=space.size,
+        feasible=int(done),
+        pruned_by_bound=0,
+        exact_evaluations=int(done),
+        gap=float("nan") if cut else 0.0,
+        proven=not cut,
+        screening_time=t_screen,
+        screening_rate=space.size / max(t_screen, 1e-9),
+        screened=screened,
+        pruned_by_block=0 if cut else space.size - screened,
+        timed_out=cut,
+    )
+    return ex, info
 
 
 def solve_pareto(
-    problem, method: str = "default", t0: float | None = None, max_points: int = 200
+    problem,
+    method: str = "default",
+    t0: float | None = None,
+    max_points: int = 200,
+    time_limit: float = 100.0,
 ) -> SolveResult:
+    """The exact front of ``problem.objective.pareto`` (module docstring).  ``time_limit`` [s] from ``t0``
+    bounds the whole search: a front cut by it is the front of the combinations solved so far (status
+    'time_limit', not proven), and no infeasibility is claimed when none was found in time."""
     t0 = time.perf_counter() if t0 is None else t0
+    deadline = t0 + time_limit
     keys = problem.objective.pareto
     space = build_space(problem)
     constraints = build_constraints(problem)
     spec = objective_spec("stiffness")
     if method == "exhaustive":
-        ex, info = exhaustive_search(space, constraints, spec)
-        t_screen = 0.0
+        ex, info = exhaustive_search(space, constraints, spec, deadline=deadline)
     else:
-        idx, t_screen, screened = screen_feasible_blocks(space, constraints, spec)
-        parts = [
-            exact_solve(space, idx[s : s + 200000], constraints, spec)
-            for s in range(0, len(idx), 200000)
-        ]
-        ex = concat_exact(parts) if parts else exact_solve(space, [], constraints, spec)
-        info = SearchStats(
-            combinations=space.size,
-            feasible=int(len(idx)),
-            pruned_by_bound=0,
-            exact_evaluations=int(len(idx)),
-            gap=0.0,
-            proven=True,
-            screening_time=t_screen,
-            screening_rate=space.size / max(t_screen, 1e-9),
-            screened=screened,
-            pruned_by_block=space.size - screened,
-        )
+        ex, info = _solve_screened(space, constraints, spec, deadline)
     info.pruned_by_dominance = space.pruned_by_dominance
     ok = np.nonzero(ex.feasible)[0]
     cols = []
@@ -159,7 +184,10 @@ def solve_pareto(
         feasible=int(len(ok)),
         cloud=cloud,
     )
-    status = OPTIMAL if len(front) else INFEASIBLE
+    if info.timed_out:
+        status = TIME_LIMIT
+    else:
+        status = OPTIMAL if len(front) else INFEASIBLE
     res = SolveResult(
         status,
         method,
@@ -172,7 +200,17 @@ def solve_pareto(
         time.perf_counter() - t0,
         pareto=pf,
     )
-    if not len(front):
+    if info.timed_out:
+        res.message = (
+            f"the time limit ({time_limit:g} s) stopped the search after {info.exact_evaluations:,} of "
+            f"{space.size:,} combinations: "
+            + (
+                f"the front of those ({len(front)} points), not proven"
+                if len(front)
+                else "no feasible design among them; raise --time-limit"
+            )
+        )
+    elif not len(front):
         from .infeasible.explain import explain_infeasible
         from .infeasible.relax import missing_values, rank_relaxations
 

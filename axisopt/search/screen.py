@@ -17,7 +17,7 @@ import numpy as np
 from .. import model
 from ..model.limits import margin_output
 from .bounds import SCREEN_RTOL, bound_positions, relaxed_ok, screen_ok
-from .drivebounds import DRIVE_BEARING_GROUPS, PER_DRIVE_MIN, drive_hull
+from .drivebounds import DRIVE_BEARING_GROUPS, HULL_BLOCK, PER_DRIVE_MIN, drive_hull
 from .task.constraints import Constraint, End, reads_regen
 from .task.objective import ObjectiveSpec
 from .task.space import DRIVE_KEYS, Space, as_dtype
@@ -52,10 +52,6 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
     idx = np.concatenate(idx_parts) if idx_parts else np.zeros(0, np.int64)
     bound = np.concatenate(bound_parts) if bound_parts else np.zeros(0)
     return idx, bound, time.perf_counter() - t0
-
-
-# (nut, bearing group, drive) elements per interval evaluation of viable_drives
-HULL_BLOCK = 400_000
 
 
 def viable_drives(space: Space, mounting: str, nut_idx, constraints):

@@ -131,6 +131,13 @@ def _edit(path, old, new, count=1):
             "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,nan,",
             "not a finite number",
         ),
+        # a load rating scaled to 1e-297 N overflowed the life formula's cube (fuzz case 375): refused
+        (
+            "nuts.csv",
+            "single,120,2621,0,0,9.36,",
+            "single,120,2621,0,0,9.36e-300,",
+            "line 2, column 9 (dynamic_load_rating): dynamic_load_rating too small to be meant",
+        ),
         # a motor whose peak torque is below its rated torque (issue 10: one-line error naming file
         # and key)
         (

@@ -113,3 +113,25 @@ def test_a_long_explanation_reports_progress(monkeypatch, caplog):
         explain_infeasible(build_space(p), build_constraints(p), objective_spec("stiffness"))
     lines = [r.getMessage() for r in caplog.records if "explaining:" in r.getMessage()]
     assert lines and "combinations scored" in lines[-1]
+
+
+@pytest.mark.parametrize("method", ["exhaustive", "default"])
+def test_a_pareto_front_stops_at_the_time_limit(method):
+    """A Pareto front (fuzz case 1039: a generated twin gantry of 1.3e10 combinations ran past `--time-limit
+    20` by minutes) stops at the limit: status 'time_limit', unproven, every point a feasible design of the
+    combinations solved by then, no infeasibility claimed."""
+    from dataclasses import replace
+
+    from axisopt.model.goals import Objective
+
+    p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
+    p = replace(p, objective=Objective(mode="pareto", pareto=("stiffness", "cost")))
+    full = solve(p, method, time_limit=100.0)
+    assert full.status == "optimal" and full.certificate.proven
+    t0 = time.perf_counter()
+    cut = solve(p, method, time_limit=1e-3)
+    assert time.perf_counter() - t0 < 0.5 * full.time + 5.0
+    assert cut.status == "time_limit" and not cut.certificate.proven
+    assert cut.infeasibility is None and "time limit" in cut.message
+    assert cut.certificate.exact_evaluations < full.certificate.exact_evaluations
+    assert all(c.feasible for c in cut.pareto.points)

@@ -14,7 +14,7 @@ from ..bounds import (
     bound_positions,
     optimistic_guide_params,
 )
-from ..drivebounds import cost_parts, drive_hull
+from ..drivebounds import DRIVE_BEARING_GROUPS, HULL_BLOCK, cost_parts, drive_hull
 from ..task.constraints import End
 from ..task.space import DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond
 
@@ -151,12 +151,16 @@ def block_optimism(space: Space, constraints, drive: bool = True):
 
 
 def drive_bounds_of(space: Space, mounting: str, drive) -> dict:
-    """:func:`drive_optimism` over every nut of ``mounting``, :data:`DRIVE_NUTS` nuts at a time:
+    """:func:`drive_optimism` over every nut of ``mounting``, at most :data:`DRIVE_NUTS` nuts at a time:
     {limit name: (nuts, bearings)}."""
     N, B = space.shape[1], space.shape[2]
     out = {c.name: np.empty((N, B)) for c in drive}
-    for n0 in range(0, N, DRIVE_NUTS):
-        sl = slice(n0, min(N, n0 + DRIVE_NUTS))
+    # as many nuts as keep one interval evaluation within HULL_BLOCK (nut, bearing group, drive) elements:
+    # thousands of drives times 64 nuts held arrays of GB in the drive block's temporaries
+    per_nut = max(space.n_drives, 1) * min(B, DRIVE_BEARING_GROUPS)
+    rows = max(1, min(DRIVE_NUTS, HULL_BLOCK // per_nut))
+    for n0 in range(0, N, rows):
+        sl = slice(n0, min(N, n0 + rows))
         for name, v in drive_optimism(space, mounting, sl, drive).items():
             out[name][sl] = v
     return out

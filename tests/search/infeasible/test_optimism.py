@@ -68,3 +68,23 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
                 v = v_hi if c.lower_type else v_lo
             ref[sel] += weight(c) * c.violation(v)
     np.testing.assert_allclose(new, ref, rtol=1e-9, atol=1e-12)
+
+
+def test_drive_bounds_split_into_nut_chunks_are_unchanged(monkeypatch):
+    """The drive limits' interval bounds are taken a few nuts at a time (at most HULL_BLOCK (nut, bearing
+    group, drive) elements: fuzz case 1909 held GB of temporaries with 18,808 drives x 47 nuts); one nut at a
+    time gives the very values of all the nuts at once."""
+    from axisopt.search.infeasible import optimism
+    from axisopt.search.task.space import DRIVE_KEYS
+
+    p = _drive_problem(0, 1e9)
+    space = build_space(p)
+    drive = [c for c in build_constraints(p) if c.key in DRIVE_KEYS]
+    assert drive and space.shape[1] > 1
+    mounting = space.mountings[0]
+    whole = optimism.drive_bounds_of(space, mounting, drive)
+    monkeypatch.setattr(optimism, "HULL_BLOCK", 1)
+    split = optimism.drive_bounds_of(space, mounting, drive)
+    assert whole.keys() == split.keys()
+    for name, v in whole.items():
+        np.testing.assert_array_equal(split[name], v)
