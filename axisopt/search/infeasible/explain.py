@@ -89,6 +89,8 @@ class _Tally:
         self.hopeless = False
         # model evaluations made (combinations x positions, each preload end and coupling value)
         self.work = 0
+        # the deadline passed inside a step that yields no block (the drive limits' bounds)
+        self.timed_out = False
 
     def add(self, c, v, miss, fits):
         self.met[c.name] = self.met[c.name] or bool(((miss <= 0) & fits).any())
@@ -137,7 +139,7 @@ def explain_infeasible(
     scores = (
         miss_scores(space, constraints, tally)
         if every_combination
-        else _best_first_scores(space, constraints, tally, n_closest)
+        else _best_first_scores(space, constraints, tally, n_closest, deadline)
     )
     cut, opened = False, 0
     t0 = shown = time.perf_counter()
@@ -158,6 +160,8 @@ def explain_infeasible(
             cut = "work"
         if cut:
             break
+    if not cut and tally.timed_out:
+        cut = "time"
     unmeetable = []
     for c in constraints:
         if not tally.met[c.name] and tally.best[c.name] is not None:
@@ -196,7 +200,9 @@ def cut_note(why: Infeasibility) -> str:
     return ""
 
 
-def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int):
+def _best_first_scores(
+    space: Space, constraints, tally: _Tally, n_closest: int, deadline: float | None = None
+):
     """Blocks of (combination numbers, miss scores) in best-first order, until no block left out could
     change the explanation: improve the best value of a limit no block meets yet (or meet it), or hold a
     design among the ``n_closest`` (its score lower bound not above the current ``n_closest``-th score)."""
@@ -220,7 +226,11 @@ def _best_first_scores(space: Space, constraints, tally: _Tally, n_closest: int)
     while not done.all():
         if done.any() and any(c.name not in vals and not tally.met[c.name] for c in drive):
             for mi, mounting in enumerate(space.mountings):
-                for name, v in drive_bounds_of(space, mounting, drive).items():
+                got = drive_bounds_of(space, mounting, drive, deadline)
+                if got is None:  # the deadline passed while bounding: stop with what was scored
+                    tally.timed_out = True
+                    return
+                for name, v in got.items():
                     vals.setdefault(name, np.empty((M, N, B)))[mi] = v
             for c in drive:
                 lb = lb + weight(c) * c.violation(vals[c.name])

@@ -3,6 +3,8 @@ drives), the cheapest combination: what the best-first explanation (:mod:`.expla
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 
 from ... import model
@@ -150,9 +152,11 @@ def block_optimism(space: Space, constraints, drive: bool = True):
     return out
 
 
-def drive_bounds_of(space: Space, mounting: str, drive) -> dict:
+def drive_bounds_of(
+    space: Space, mounting: str, drive, deadline: float | None = None
+) -> dict | None:
     """:func:`drive_optimism` over every nut of ``mounting``, at most :data:`DRIVE_NUTS` nuts at a time:
-    {limit name: (nuts, bearings)}."""
+    {limit name: (nuts, bearings)}; None when ``deadline`` (a time.perf_counter() value) passed first."""
     N, B = space.shape[1], space.shape[2]
     out = {c.name: np.empty((N, B)) for c in drive}
     # as many nuts as keep one interval evaluation within HULL_BLOCK (nut, bearing group, drive) elements:
@@ -160,6 +164,8 @@ def drive_bounds_of(space: Space, mounting: str, drive) -> dict:
     per_nut = max(space.n_drives, 1) * min(B, DRIVE_BEARING_GROUPS)
     rows = max(1, min(DRIVE_NUTS, HULL_BLOCK // per_nut))
     for n0 in range(0, N, rows):
+        if deadline is not None and time.perf_counter() > deadline:
+            return None
         sl = slice(n0, min(N, n0 + rows))
         for name, v in drive_optimism(space, mounting, sl, drive).items():
             out[name][sl] = v

@@ -48,6 +48,12 @@ class End(enum.Enum):
     INTERVAL = "interval"  # convex: met on an interval, at neither end necessarily
 
 
+# a part's value at its limit within this relative amount meets it: a nut's 0.05 mm play is
+# 5.000000000000001e-05 m and a 50 um limit 4.9999999999999996e-05 m once converted to SI, and the part at
+# the limit was refused
+EQ_RTOL = 1e-9
+
+
 @dataclass(frozen=True)
 class Constraint:
     """``value(out) sense limit``; ``direction`` is how the value moves with the nut preload."""
@@ -93,15 +99,20 @@ class Constraint:
         return min_last(v) if self.profile else v
 
     def ok(self, v):
-        return v <= self.limit if self.sense == "<=" else v >= self.limit
+        """Whether ``v`` meets the limit; a value that does not depend on the preload (a part's play, a
+        price) meets it within :data:`EQ_RTOL` (the preload searches find exact boundaries themselves)."""
+        slack = EQ_RTOL * abs(self.limit) if self.direction == 0 else 0.0
+        return v <= self.limit + slack if self.sense == "<=" else v >= self.limit - slack
 
     def violation(self, v):
-        """Relative miss (0 when met)."""
+        """Relative miss (0 when met, as :meth:`ok`)."""
         if self.sense == "<=":
             if self.limit <= 0:  # e.g. max_backlash 0: the miss in display units
                 return np.maximum(v / self.factor, 0.0)
-            return np.maximum(v / self.limit - 1.0, 0.0)
-        return np.maximum(1.0 - v / self.limit, 0.0)
+            m = v / self.limit - 1.0
+        else:
+            m = 1.0 - v / self.limit
+        return np.where(m > (EQ_RTOL if self.direction == 0 else 0.0), m, 0.0)
 
     def scaled(self, v, limit=None):
         """The constraint as a solver sees it, ``scaled(v) >= 0`` for ``>=`` and ``<= 0`` for ``<=``: the
