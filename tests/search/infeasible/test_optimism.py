@@ -88,3 +88,28 @@ def test_drive_bounds_split_into_nut_chunks_are_unchanged(monkeypatch):
     assert whole.keys() == split.keys()
     for name, v in whole.items():
         np.testing.assert_array_equal(split[name], v)
+
+
+def test_the_explanation_stops_inside_the_drive_bounds_at_its_deadline(monkeypatch):
+    """The drive limits' bounds of every block were one step without a clock (a generated 1490 t axis spent
+    147 s there past --time-limit 100): a deadline that passes inside them stops the explanation there, said
+    to be cut by time; before the deadline the same explanation is complete."""
+    import time
+    from dataclasses import replace
+
+    from axisopt.search.infeasible import explain, optimism
+    from axisopt.search.task.objective import objective_spec
+
+    p = _drive_problem(0, 1e9)
+    p = replace(p, axis=replace(p.axis, moving_mass=1.5e6))  # no motor moves it
+    space, cons, spec = build_space(p), build_constraints(p), objective_spec("stiffness")
+    full = explain.explain_infeasible(space, cons, spec, deadline=time.perf_counter() + 600)
+    assert not full.cut
+    assert optimism.drive_bounds_of(space, space.mountings[0], [], time.perf_counter() - 1) is None
+
+    def late(space, mounting, drive, deadline=None):  # the clock runs out inside the bounds
+        return optimism.drive_bounds_of(space, mounting, drive, time.perf_counter() - 1)
+
+    monkeypatch.setattr(explain, "drive_bounds_of", late)
+    cut = explain.explain_infeasible(space, cons, spec, deadline=time.perf_counter() + 600)
+    assert cut.cut and cut.cut_by == "time" and cut.unmeetable

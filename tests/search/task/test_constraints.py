@@ -63,3 +63,19 @@ def test_limit_constraint_renames_a_problem_limit():
         50.0,
         "Hz",
     )
+
+
+def test_a_part_at_its_limit_meets_it_once_both_are_in_si():
+    """A nut's 0.05 mm play and a 50 um backlash limit become 5.000000000000001e-05 and
+    4.9999999999999996e-05 m; the part at the limit meets it (a generated axis was told to relax 50 um to
+    50 um, +2.2e-14 %).  A preload-dependent limit keeps its exact boundary (the preload searches find it)."""
+    from axisopt.units import parse_quantity
+
+    play = parse_quantity("0.05 mm", "length")
+    limit = parse_quantity("50 um", "length")
+    assert play > limit  # the rounding this guards against
+    c = limit_constraint("max_backlash", limit, "max_backlash", "max backlash")
+    assert c.direction == 0 and c.ok(np.asarray(play)) and float(c.violation(np.asarray(play))) == 0
+    assert not c.ok(np.asarray(limit * 1.001)) and float(c.violation(np.asarray(limit * 1.001))) > 0
+    drag = limit_constraint("max_drag_torque", 0.5, "max_drag_torque", "max drag torque")
+    assert drag.direction != 0 and not drag.ok(np.asarray(0.5 * (1 + 1e-12)))
