@@ -126,7 +126,9 @@ def _fft_scan(
     bc, bs = X[j].real, -X[j].imag
     # the mask's spectrum at 2 j (mod m): above m/2 the conjugate of its mirror
     i2 = (2 * j) % m
-    w2 = np.where(i2 <= m // 2, Wm[np.minimum(i2, m // 2)], np.conj(Wm[np.minimum((m - i2) % m, m // 2)]))
+    w2 = np.where(
+        i2 <= m // 2, Wm[np.minimum(i2, m // 2)], np.conj(Wm[np.minimum((m - i2) % m, m // 2)])
+    )
     c2, s2 = w2.real, -w2.imag
     nk = float(len(k))
     cc, ss, sc = 0.5 * (nk + c2), 0.5 * (nk - c2), 0.5 * s2
