@@ -111,24 +111,25 @@ def _fft_scan(
     sampling mask, the latter at twice the frequency for the sin^2, cos^2 and sin cos sums."""
     n = int(k[-1]) + 1
     m = 1 << int(math.ceil(math.log2(2.0 * oversample * n)))
-    # real input: the half spectra (rfft), one array at a time (a long record's grid is millions)
-    x = np.zeros(m)
-    x[k] = rc
-    X = np.fft.rfft(x)
-    x[:] = 0.0
-    x[k] = 1.0
-    Wm = np.fft.rfft(x)
-    del x
     fm = np.arange(m // 2 + 1) / (m * dt)
     top = min(m // 2, int(np.searchsorted(fm, freqs[-1] if len(freqs) else 0.0)) + 2)
     bot = max(0, int(np.searchsorted(fm, freqs[0] if len(freqs) else 0.0)) - 2)
     j = np.arange(bot, top)
-    bc, bs = X[j].real, -X[j].imag
     # the mask's spectrum at 2 j (mod m): above m/2 the conjugate of its mirror
     i2 = (2 * j) % m
-    w2 = np.where(
-        i2 <= m // 2, Wm[np.minimum(i2, m // 2)], np.conj(Wm[np.minimum((m - i2) % m, m // 2)])
-    )
+    lo2 = i2 <= m // 2
+    # real input: half spectra (rfft), one at a time, only the bins used kept (a long record's grid
+    # holds millions of samples)
+    x = np.zeros(m)
+    x[k] = rc
+    X = np.fft.rfft(x)[j]
+    x[:] = 0.0
+    x[k] = 1.0
+    Wm = np.fft.rfft(x)
+    del x
+    w2 = np.where(lo2, Wm[np.minimum(i2, m // 2)], np.conj(Wm[np.minimum((m - i2) % m, m // 2)]))
+    del Wm
+    bc, bs = X.real, -X.imag
     c2, s2 = w2.real, -w2.imag
     nk = float(len(k))
     cc, ss, sc = 0.5 * (nk + c2), 0.5 * (nk - c2), 0.5 * s2
