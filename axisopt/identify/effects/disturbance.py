@@ -61,19 +61,24 @@ def frequency_band(t_span: float, proc, fit: bool = True) -> tuple:
     return max(PERIODS / t_span, 1.5 * proc.f_motion), hi
 
 
-def line_scan(t: np.ndarray, r: np.ndarray, lo: float, hi: float, oversample: float = 4.0) -> tuple:
+def line_scan(
+    t: np.ndarray, r: np.ndarray, lo: float, hi: float, oversample: float = 4.0, step=None
+) -> tuple:
     """Least-squares periodogram (Lomb-Scargle) of ``r`` at the times ``t``: (frequencies, share of the sum of
     squares the pair sin, cos 2 pi f t holds at each), on a grid ``oversample`` points per 1/span.  Rows on a
     uniform time grid with gaps (the kept regression rows) take the FFT form of the same sums (W. H. Press,
-    G. B. Rybicki, Astrophys. J. 338 (1989) 277-280), exact on a finer grid, interpolated to this one."""
+    G. B. Rybicki, Astrophys. J. 338 (1989) 277-280), exact on a finer grid, interpolated to this one.
+    ``step`` [s]: the record's sample period, the grid the rows lie on when their smallest gap is not one
+    (the windows of a long record start at any sample, not at a multiple of the decimation)."""
     span = float(np.ptp(t)) or 1.0
     freqs = np.arange(lo, hi, 1.0 / (oversample * span))
     rc = r - r.mean()
     rr = float(rc @ rc) or 1.0
     if len(freqs) * len(t) > FFT_SCAN_WORK:
-        k = _grid_index(t)
-        if k is not None:
-            return freqs, _fft_scan(k, float(np.min(np.diff(t))), rc, freqs, oversample) / rr
+        for dt, tol in ((float(np.min(np.diff(t))), 1e-3), (step, 0.02)):
+            k = _grid_index(t, dt, tol) if dt else None
+            if k is not None:
+                return freqs, _fft_scan(k, dt, rc, freqs, oversample) / rr
     out = np.zeros(len(freqs))
     for i0 in range(0, len(freqs), 128):
         ph = 2.0 * np.pi * np.outer(freqs[i0 : i0 + 128], t)
@@ -88,14 +93,15 @@ def line_scan(t: np.ndarray, r: np.ndarray, lo: float, hi: float, oversample: fl
 FFT_SCAN_WORK = 4_000_000  # frequencies x rows above which the scan takes the FFT form
 
 
-def _grid_index(t: np.ndarray):
-    """Integer sample indices of ``t`` on the grid of its smallest step, or None when it is not on one."""
+def _grid_index(t: np.ndarray, dt: float, tol: float = 1e-3):
+    """Integer sample indices of ``t`` on the grid of step ``dt`` (within ``tol`` of a step), or None when it
+    is not on one."""
     d = np.diff(t)
-    if len(d) == 0 or not np.min(d) > 0:
+    if len(d) == 0 or not np.min(d) > 0 or not dt > 0:
         return None
-    k = (t - t[0]) / float(np.min(d))
+    k = (t - t[0]) / dt
     ki = np.rint(k)
-    return ki.astype(np.int64) if np.max(np.abs(k - ki)) < 1e-3 else None
+    return ki.astype(np.int64) if np.max(np.abs(k - ki)) < tol else None
 
 
 def _fft_scan(
@@ -105,17 +111,25 @@ def _fft_scan(
     sampling mask, the latter at twice the frequency for the sin^2, cos^2 and sin cos sums."""
     n = int(k[-1]) + 1
     m = 1 << int(math.ceil(math.log2(2.0 * oversample * n)))
-    x = np.zeros(m)
-    x[k] = rc
-    w = np.zeros(m)
-    w[k] = 1.0
-    X, Wm = np.fft.fft(x), np.fft.fft(w)
-    fm = np.arange(m) / (m * dt)
+    fm = np.arange(m // 2 + 1) / (m * dt)
     top = min(m // 2, int(np.searchsorted(fm, freqs[-1] if len(freqs) else 0.0)) + 2)
     bot = max(0, int(np.searchsorted(fm, freqs[0] if len(freqs) else 0.0)) - 2)
     j = np.arange(bot, top)
-    bc, bs = X[j].real, -X[j].imag
-    w2 = Wm[(2 * j) % m]
+    # the mask's spectrum at 2 j (mod m): above m/2 the conjugate of its mirror
+    i2 = (2 * j) % m
+    lo2 = i2 <= m // 2
+    # real input: half spectra (rfft), one at a time, only the bins used kept (a long record's grid
+    # holds millions of samples)
+    x = np.zeros(m)
+    x[k] = rc
+    X = np.fft.rfft(x)[j]
+    x[:] = 0.0
+    x[k] = 1.0
+    Wm = np.fft.rfft(x)
+    del x
+    w2 = np.where(lo2, Wm[np.minimum(i2, m // 2)], np.conj(Wm[np.minimum((m - i2) % m, m // 2)]))
+    del Wm
+    bc, bs = X.real, -X.imag
     c2, s2 = w2.real, -w2.imag
     nk = float(len(k))
     cc, ss, sc = 0.5 * (nk + c2), 0.5 * (nk - c2), 0.5 * s2
@@ -129,7 +143,7 @@ def _freq_search(rows, r0, rss) -> dict:
     lo, hi = frequency_band(float(np.ptp(t)), rows.proc)
     if hi <= lo:
         return {"freq": lo}
-    freqs, score = line_scan(t, r0, lo, hi)
+    freqs, score = line_scan(t, r0, lo, hi, step=1.0 / rows.proc.fs)
     f0 = float(freqs[int(np.argmax(score))])
     df = 1.0 / float(np.ptp(t))
     return {"freq": golden(lambda f: rss({"freq": f}), f0 - 0.5 * df, f0 + 0.5 * df)}

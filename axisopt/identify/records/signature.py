@@ -71,7 +71,12 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
     for rw in runs:
         t = rw.sig["t"][rw.keep]
         f, s = line_scan(
-            t, r[i0 : i0 + rw.n], lo, hi, oversample=4.0 * max(spans) / max(float(np.ptp(t)), 1e-9)
+            t,
+            r[i0 : i0 + rw.n],
+            lo,
+            hi,
+            oversample=4.0 * max(spans) / max(float(np.ptp(t)), 1e-9),
+            step=1.0 / proc.fs,
         )
         rr = float(np.sum((r[i0 : i0 + rw.n] - r[i0 : i0 + rw.n].mean()) ** 2))
         m = min(len(f), len(score)) if score is not None else len(f)
@@ -218,7 +223,9 @@ def steady_line(rows, est, f_peak: float):
 
     # the resolution of the spectrum the peak comes from (Welch, 512 samples)
     bin_ = rows.proc.fs / 512.0
-    freqs, sc = line_scan(t, r, max(f_peak - 2.0 * bin_, df), f_peak + 2.0 * bin_)
+    freqs, sc = line_scan(
+        t, r, max(f_peak - 2.0 * bin_, df), f_peak + 2.0 * bin_, step=1.0 / rows.proc.fs
+    )
     f1 = float(freqs[int(np.argmax(sc))])
     f0 = golden(lambda f: -share(f), f1 - 0.5 * df, f1 + 0.5 * df, 16)
     s = share(f0)
