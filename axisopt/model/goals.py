@@ -5,6 +5,7 @@ printed tables all read this one table."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from types import MappingProxyType
 
@@ -100,6 +101,11 @@ class Goal:
     def factor(self) -> float:
         """SI per display unit."""
         return LIMITS[self.limit].factor
+
+    def value(self, outputs: dict) -> float:
+        """The goal's value in its display unit from a design's model outputs (SI, a profile's minimum over the
+        stroke: ``Candidate.outputs``); NaN where the output was not evaluated."""
+        return outputs.get(self.output, math.nan) / self.factor
 
     @property
     def sense(self) -> str:

@@ -22,10 +22,10 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from .certificate import Binding, Certificate
+from .certificate import Certificate
 from .front import METHOD_TABLE, METHODS, solve
 from .infeasible.answer import Infeasibility, Relaxation
-from .result import Candidate, ParetoFront, SolveResult
+from .result import Binding, Candidate, ParetoFront, SolveResult
 from .sensitivity import estimated_at_optimum, limit_sensitivities
 
 __all__ = [

@@ -5,20 +5,17 @@ preload solve (:mod:`.preload`); the winners are polished after it (:mod:`.polis
 
 from __future__ import annotations
 
-import logging
 import time
 
 import numpy as np
 
+from . import task as vocabulary
 from .bounds import block_bounds
 from .certificate import SearchStats
 from .preload import concat_exact, exact_solve
 from .screen import group_end, screen_blocks
 from .task.objective import ObjectiveSpec, objective_floor
 from .task.space import Space
-
-LOG = logging.getLogger("axisopt")
-PROGRESS = 2.0  # [s] between progress records of a long search
 
 
 def bound_order_search(
@@ -46,7 +43,7 @@ def bound_order_search(
     ``incumbent``: an objective some design is known to reach (top 1): what cannot tie with it is pruned from
     the start, and the Exact returned may then be empty.  ``deadline`` (a time.perf_counter() value): stop there
     with what is solved so far (``stats.timed_out``; the gap is the bound of what is left against the best found),
-    and every :data:`PROGRESS` seconds a progress record goes to the "axisopt" logger (a terminal shows it).
+    and every :data:`.task.PROGRESS` seconds a progress record goes to the "axisopt" logger (a terminal shows it).
     ``first_feasible``: stop at the first exact solve that
     finds a feasible design (a feasibility test, no optimum: search.advice).
     Returns (Exact of evaluated combinations, :class:`.certificate.SearchStats`)."""
@@ -77,10 +74,10 @@ def bound_order_search(
         if deadline is not None and now > deadline:
             timed_out = True
             break
-        if now - shown > PROGRESS:
+        if now - shown > vocabulary.PROGRESS:
             shown = now
             found = sum(int(np.isfinite(p.objective).sum()) for p in parts)
-            LOG.info(
+            vocabulary.LOG.info(
                 f"  searching: {pos:,} of {len(bv):,} blocks screened, {n_eval:,} combinations solved, "
                 f"{found:,} feasible, {now - t0:.0f} s"
             )
@@ -146,3 +143,14 @@ def bound_order_search(
         timed_out=timed_out,
     )
     return ex, stats
+
+
+def run(task, method: str, top: int, time_limit: float, t0: float):
+    """The default method's runner (``search.front.METHOD_TABLE``): :func:`bound_order_search`
+    over ``task``, stopped at ``t0 + time_limit``, then its result (:func:`.polish.scalar_result`)."""
+    from .polish import scalar_result
+
+    ex, stats = bound_order_search(
+        task.space, task.constraints, task.objective, top=top, deadline=t0 + time_limit
+    )
+    return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit)

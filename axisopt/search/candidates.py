@@ -10,7 +10,7 @@ from ..design import Design
 from ..model.goals import RESULT_GOALS
 from ..model.limits import LIMITS
 from .reported import REPORTED
-from .result import CANDIDATE_FIELDS, Candidate, goal_value
+from .result import CANDIDATE_FIELDS, Candidate
 from .task.objective import ObjectiveSpec
 from .task.space import Space
 
@@ -66,7 +66,7 @@ def candidate_values(
         lim.output: float(np.min(v[lim.output])) for lim in LIMITS.values() if lim.output in v
     }
     # the goals' values that are Candidate fields (the others the Candidate reads from ``outputs``)
-    goals = {g.field: goal_value(outputs, g) for g in RESULT_GOALS if g.field in CANDIDATE_FIELDS}
+    goals = {g.field: g.value(outputs) for g in RESULT_GOALS if g.field in CANDIDATE_FIELDS}
     # the reported values read from a model output (the others are goals' fields)
     reported = {r.field: float(np.min(v[r.output])) / r.per for r in REPORTED if r.output}
     return Candidate(

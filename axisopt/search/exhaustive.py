@@ -16,7 +16,7 @@ import numpy as np
 
 from ..model.goals import RESULT_GOALS
 from ..model.limits import OUTPUT_PRELOAD
-from . import bestfirst
+from . import task as vocabulary
 from .certificate import SearchStats
 from .preload import BISECTION_STEPS, concat_exact, convex_interval, goal_arrays, new_exact, subset
 from .result import Exact
@@ -133,7 +133,7 @@ def exhaustive_search(
 ):
     """Every combination of ``space``, ``chunk`` at a time (:func:`grid_solve`).  ``deadline`` (a
     time.perf_counter() value): stop there with the chunks solved so far (``stats.timed_out``, not proven, gap
-    unknown: no bound covers the rest); every :data:`.bestfirst.PROGRESS` seconds a progress record goes to the
+    unknown: no bound covers the rest); every :data:`.task.PROGRESS` seconds a progress record goes to the
     "axisopt" logger (a terminal shows it).  Returns (Exact of the evaluated combinations, SearchStats)."""
     t0 = shown = time.perf_counter()
     parts, done, timed_out = [], 0, False
@@ -142,9 +142,9 @@ def exhaustive_search(
         if deadline is not None and now > deadline:
             timed_out = True
             break
-        if now - shown > bestfirst.PROGRESS:
+        if now - shown > vocabulary.PROGRESS:
             shown = now
-            bestfirst.LOG.info(
+            vocabulary.LOG.info(
                 f"  exhaustive: {done:,} of {space.size:,} combinations solved, {now - t0:.0f} s"
             )
         parts.append(
@@ -164,3 +164,14 @@ def exhaustive_search(
         timed_out=timed_out,
     )
     return ex, stats
+
+
+def run(task, method: str, top: int, time_limit: float, t0: float):
+    """The exhaustive method's runner (``search.front.METHOD_TABLE``): :func:`exhaustive_search`
+    over ``task``, stopped at ``t0 + time_limit``, then its result (:func:`.polish.scalar_result`)."""
+    from .polish import scalar_result
+
+    ex, stats = exhaustive_search(
+        task.space, task.constraints, task.objective, deadline=t0 + time_limit
+    )
+    return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit)

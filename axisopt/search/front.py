@@ -1,9 +1,10 @@
 """The front door of a solve: :func:`solve` validates the method, builds the :class:`Task` (problem, search
 space, constraints, objective) and dispatches by the objective's mode -- scalar, lexicographic (two scalar
 solves, the first's optimum a floor of the second) or Pareto (:mod:`.pareto`) -- to the method's runner
-(:data:`METHOD_TABLE`).  The scalar result is built in one place (:func:`scalar_result`); the limit
-sensitivities (:func:`.sensitivity.limit_sensitivities`) and what of the optimum rests on estimated part values
-(:func:`estimated_at_optimum`) are added here.  The stages are imported when a solve first reaches them.
+(:data:`METHOD_TABLE`: the default and exhaustive runners sit in their stage modules, :func:`.bestfirst.run`
+and :func:`.exhaustive.run`, and end in :func:`.polish.scalar_result`); the limit sensitivities, the cheaper
+design near the optimum (:mod:`.sensitivity`) and what of the optimum rests on estimated part values are added
+here.  The MINLP methods are imported when a solve first reaches them.
 """
 
 from __future__ import annotations
@@ -13,26 +14,17 @@ from dataclasses import dataclass, replace
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Callable
 
-import numpy as np
-
 from ..errors import InputError
 from ..model.goals import GOALS
 from ..model.limits import LIMITS
 from ..problem import Problem
-from .certificate import Certificate
-from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, SolveResult
-from .sensitivity import RELAX, cut_note, estimated_at_optimum, limit_sensitivities
+from . import bestfirst, exhaustive
+from .result import OPTIMAL, SolveResult
+from .sensitivity import RELAX, cheaper_near, cut_note, estimated_at_optimum, limit_sensitivities
 from .task import Task
 
 if TYPE_CHECKING:
     from .task.objective import ObjectiveSpec
-
-# a stiffness or frequency optimum is compared with the cheapest design within the problem's
-# tolerance of it
-# (objective.tolerance, or this when the problem gives none) and said when that one costs at least
-# MARKEDLY less
-CHEAPER_TOLERANCE = 0.01
-MARKEDLY = 0.05
 
 
 def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task:
@@ -46,23 +38,6 @@ def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task
     from .task.constraints import build_constraints
 
     return Task(problem, space, build_constraints(problem), objective)
-
-
-def _run_search(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
-    """The default and exhaustive methods: the search, then :func:`scalar_result`."""
-    if method == "exhaustive":
-        from .exhaustive import exhaustive_search
-
-        ex, stats = exhaustive_search(
-            task.space, task.constraints, task.objective, deadline=t0 + time_limit
-        )
-    else:
-        from .bestfirst import bound_order_search
-
-        ex, stats = bound_order_search(
-            task.space, task.constraints, task.objective, top=top, deadline=t0 + time_limit
-        )
-    return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit)
 
 
 def _run_bonmin(task: Task, method: str, top: int, time_limit: float, t0: float) -> SolveResult:
@@ -109,7 +84,7 @@ class Method:
 METHOD_TABLE = (
     Method(
         "default",
-        _run_search,
+        bestfirst.run,
         True,
         True,
         True,
@@ -118,7 +93,7 @@ METHOD_TABLE = (
     ),
     Method(
         "exhaustive",
-        _run_search,
+        exhaustive.run,
         True,
         True,
         True,
@@ -177,7 +152,15 @@ def solve(
             where="search.drive_types",
         )
     res = _solve(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
-    _shown_sign(problem, res)
+    ob = problem.objective
+    if ob.mode != "pareto" and res.pareto is None:
+        from .task.objective import objective_spec
+
+        if (
+            not objective_spec(ob.order[1] if ob.mode == "lexicographic" else ob.mode, problem).sign
+            > 0
+        ):
+            _shown_sign(res)
     why = problem.restrictions.drive_left_out
     if why and not res.left_out:
         res.left_out = (
@@ -187,18 +170,10 @@ def solve(
     return res
 
 
-def _shown_sign(problem: Problem, res: SolveResult) -> None:
+def _shown_sign(res: SolveResult) -> None:
     """A least cost or mass is searched as its negative, maximised: the designs' objectives and the limits'
     gains turned back into the value itself (a gain then reads as the change of cost or mass: negative, cheaper
     or lighter)."""
-    from .task.objective import objective_spec
-
-    ob = problem.objective
-    if ob.mode == "pareto" or res.pareto is not None:
-        return
-    key = ob.order[1] if ob.mode == "lexicographic" else ob.mode
-    if objective_spec(key, problem).sign > 0:
-        return
     for c in [res.best] + list(res.runners_up):
         if c is not None:
             c.objective = -c.objective
@@ -349,123 +324,3 @@ def _solve_lexicographic(
         res.certificate.estimated = estimated_at_optimum(problem, res, terms)
     res.time = time.perf_counter() - t0
     return res
-
-
-def cheaper_near(
-    task: Task, res: SolveResult, m: Method, time_limit: float, t0: float
-) -> dict | None:
-    """The cheapest design whose objective is within the problem's tolerance (``objective.tolerance``, else
-    :data:`CHEAPER_TOLERANCE`) of the optimum ``res.best``, when it costs at least :data:`MARKEDLY` less; else
-    None.  The lexicographic solve's second stage: the least cost with the objective floored, same method."""
-    from .task.constraints import limit_constraint
-    from .task.objective import objective_spec
-
-    problem, best = task.problem, res.best
-    tol = problem.objective.tolerance or CHEAPER_TOLERANCE
-    goal = GOALS[problem.objective.mode]
-    lim = LIMITS[goal.limit]
-    floor = best.objective * (1.0 - tol)
-    extra = limit_constraint(
-        lim.key,
-        floor * lim.factor,
-        f"within {tol:g} of the best",
-        f"{goal.key} within {tol:g} of its best {best.objective:.6g}",
-    )
-    cheap = m.run(
-        replace(task, objective=objective_spec("cost"), constraints=task.constraints + (extra,)),
-        m.name,
-        1,
-        time_limit,
-        t0,
-    )
-    c = cheap.best
-    if c is None or not c.cost < best.cost * (1.0 - MARKEDLY):
-        return None
-    return {
-        "tolerance": tol,
-        "objective": c.goal(goal.key),
-        "unit": goal.unit,
-        "cost": c.cost,
-        "best_cost": best.cost,
-        "proven": bool(cheap.certificate.proven),
-        "mounting": c.mounting,
-        "parts": c.parts(),
-        "nut_preload": c.nut_preload,
-    }
-
-
-def scalar_result(
-    task: Task, method: str, ex, stats, top: int, t0: float, *, deadline: float | None = None
-) -> SolveResult:
-    """The SolveResult of a search that ends in the exact solves ``ex`` with statistics ``stats``: infeasible
-    (with the explanation, cut at ``deadline``, and what to relax), or the ``top`` best polished by IPOPT."""
-    from .polish import polish
-
-    problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
-    stats.pruned_by_dominance = space.pruned_by_dominance
-    if not np.isfinite(ex.objective).any() and stats.timed_out:
-        return SolveResult(
-            TIME_LIMIT,
-            method,
-            problem.name,
-            spec.label,
-            spec.unit,
-            None,
-            [],
-            replace(Certificate.of(stats), proven=False),
-            time.perf_counter() - t0,
-            message="the time limit came before any design was found: not "
-            "proven infeasible (a longer --time-limit searches on)",
-        )
-    if not np.isfinite(ex.objective).any():
-        from .infeasible.explain import explain_infeasible
-        from .infeasible.relax import missing_values, rank_relaxations
-
-        why = explain_infeasible(
-            space, constraints, spec, every_combination=method == "exhaustive", deadline=deadline
-        )
-        why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
-        why.missing = missing_values(constraints, why, space)
-        message = "no catalog combination meets every limit"
-        if why.cut:
-            from .infeasible.explain import cut_note
-
-            message += "; " + cut_note(why)
-        if space.reductions_by_backlash:
-            lim = problem.limit_map.get("max_backlash", 0.0)
-            message += (
-                f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each one's "
-                f"backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) even on the shortest "
-                "lead; admit some lost motion to let the search choose one"
-            )
-        return SolveResult(
-            INFEASIBLE,
-            method,
-            problem.name,
-            spec.label,
-            spec.unit,
-            None,
-            [],
-            Certificate.of(stats),
-            time.perf_counter() - t0,
-            message=message,
-            infeasibility=why,
-        )
-    cands, nlps, failed_ranks, notes = polish(space, ex, constraints, spec, top)
-    cert = Certificate.of(stats, nlps, len(failed_ranks), notes)
-    status = OPTIMAL if cert.proven else TIME_LIMIT
-    if 1 in failed_ranks:  # IPOPT failed on the best design (its 1-D solution is kept)
-        status = SOLVER_FAILED
-    return SolveResult(
-        status,
-        method,
-        problem.name,
-        spec.label,
-        spec.unit,
-        cands[0],
-        cands[1:],
-        cert,
-        time.perf_counter() - t0,
-        message="; ".join(notes),
-        solver_status="ipopt",
-    )

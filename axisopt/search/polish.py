@@ -1,5 +1,6 @@
 """Polish: the winners' continuous problem re-solved by IPOPT on the CasADi model (the reported preload),
-cross-checked against the exact 1-D solve (:func:`polish`).
+cross-checked against the exact 1-D solve (:func:`polish`); and the answer of a scalar search built from its
+exact solves (:func:`scalar_result`: the polished designs, or the infeasible answer with its explanation).
 
 The NLP of one combination (:func:`solve_preload`): the nut preload, scaled to w in [0, 1] over the allowed
 range, and one epigraph variable per objective term (the minimum over the position grid).  Objective and
@@ -11,15 +12,23 @@ any NLP is built.  One solver per (mounting, grid, objective, limit set) and pro
 
 from __future__ import annotations
 
+import time
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
 import casadi as ca
 import numpy as np
 
 from .. import model
 from .candidates import make_candidate
-from .result import Exact, NLPResult
+from .certificate import Certificate
+from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, Exact, NLPResult, SolveResult
 from .task.constraints import ok_all
 from .task.objective import ObjectiveSpec, in_display_units, rank_order
 from .task.space import Space, respond
+
+if TYPE_CHECKING:
+    from .task import Task
 
 
 def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: int):
@@ -165,3 +174,78 @@ def solve_preload(
     xs = np.asarray(sol["x"]).ravel()
     pre = plo + float(np.clip(xs[0], 0.0, 1.0)) * max(span, 0.0)
     return NLPResult(bool(st["success"]), str(st["return_status"]), pre, -float(sol["f"]))
+
+
+def scalar_result(
+    task: Task, method: str, ex, stats, top: int, t0: float, *, deadline: float | None = None
+) -> SolveResult:
+    """The SolveResult of a search that ends in the exact solves ``ex`` with statistics ``stats``: infeasible
+    (with the explanation, cut at ``deadline``, and what to relax), or the ``top`` best polished by IPOPT."""
+    problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
+    stats.pruned_by_dominance = space.pruned_by_dominance
+    if not np.isfinite(ex.objective).any() and stats.timed_out:
+        return SolveResult(
+            TIME_LIMIT,
+            method,
+            problem.name,
+            spec.label,
+            spec.unit,
+            None,
+            [],
+            replace(Certificate.of(stats), proven=False),
+            time.perf_counter() - t0,
+            message="the time limit came before any design was found: not "
+            "proven infeasible (a longer --time-limit searches on)",
+        )
+    if not np.isfinite(ex.objective).any():
+        from .infeasible.explain import explain_infeasible
+        from .infeasible.relax import missing_values, rank_relaxations
+
+        why = explain_infeasible(
+            space, constraints, spec, every_combination=method == "exhaustive", deadline=deadline
+        )
+        why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
+        why.missing = missing_values(constraints, why, space)
+        message = "no catalog combination meets every limit"
+        if why.cut:
+            from .infeasible.explain import cut_note
+
+            message += "; " + cut_note(why)
+        if space.reductions_by_backlash:
+            lim = problem.limit_map.get("max_backlash", 0.0)
+            message += (
+                f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each one's "
+                f"backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) even on the shortest "
+                "lead; admit some lost motion to let the search choose one"
+            )
+        return SolveResult(
+            INFEASIBLE,
+            method,
+            problem.name,
+            spec.label,
+            spec.unit,
+            None,
+            [],
+            Certificate.of(stats),
+            time.perf_counter() - t0,
+            message=message,
+            infeasibility=why,
+        )
+    cands, nlps, failed_ranks, notes = polish(space, ex, constraints, spec, top)
+    cert = Certificate.of(stats, nlps, len(failed_ranks), notes)
+    status = OPTIMAL if cert.proven else TIME_LIMIT
+    if 1 in failed_ranks:  # IPOPT failed on the best design (its 1-D solution is kept)
+        status = SOLVER_FAILED
+    return SolveResult(
+        status,
+        method,
+        problem.name,
+        spec.label,
+        spec.unit,
+        cands[0],
+        cands[1:],
+        cert,
+        time.perf_counter() - t0,
+        message="; ".join(notes),
+        solver_status="ipopt",
+    )

@@ -4,7 +4,6 @@ may end in (:data:`STATUS_TABLE`) and the statistics a search stage hands to the
 
 from __future__ import annotations
 
-import math
 from dataclasses import asdict, dataclass, field, fields
 from types import MappingProxyType
 
@@ -12,9 +11,127 @@ import numpy as np
 
 from ..display import fmt, fmt_objective, frame, html_fields, html_table, json_value, one_line
 from ..model.goals import GOALS, RESULT_GOALS
-from .certificate import Bindings, Certificate
+from .certificate import Certificate
 from .infeasible.answer import Infeasibility
 from .reported import REPORTED
+
+
+@dataclass
+class Binding:
+    """A limit at the optimum and what relaxing it would buy."""
+
+    limit: str  # the problem's limit key, e.g. 'min_frequency'
+    unit: str  # the limit's display unit (N/um, Hz, EUR, ...)
+    value: float  # limit value, in ``unit``
+    at_optimum: float  # the best design's value, in ``unit``
+    relaxed_to: float | None = None  # the limit relaxed by 10 %, in ``unit``
+    # objective change when relaxed, in SolveResult.objective_unit
+    objective_gain: float | None = None
+    binding: bool = False  # relaxing it improves the objective
+
+    def to_dict(self) -> dict:
+        return {k: json_value(v) for k, v in asdict(self).items()}
+
+    def row(self, objective_unit: str = "") -> dict:
+        """One table row, the units in the column names (``objective_unit``: the objective's unit)."""
+        u = f" [{self.unit}]" if self.unit else ""
+        gain = (
+            f"objective gain [{objective_unit}]"
+            if objective_unit not in ("", "-")
+            else "objective gain"
+        )
+        return {
+            "limit": self.limit,
+            f"value{u}": self.value,
+            f"at optimum{u}": self.at_optimum,
+            f"relaxed to{u}": self.relaxed_to,
+            gain: self.objective_gain,
+            "binding": self.binding,
+        }
+
+    def to_frame(self):
+        """pandas DataFrame of this limit: one row as :meth:`row` (units in the column names)."""
+        return frame([self.row()])
+
+    def __repr__(self) -> str:
+        u = self.unit if self.unit not in ("", "-") else ""
+        gain = (
+            ""
+            if self.objective_gain is None
+            else f"relaxed to {fmt(self.relaxed_to, u)} the objective changes by "
+            + (f"{self.objective_gain:+.4g}" if self.binding else "+0")
+        )  # a residue within tolerance is none
+        return one_line(
+            "Binding",
+            f"{self.limit} {fmt(self.value, u)}",
+            {
+                "at optimum": fmt(self.at_optimum, u),
+                "": "binding" if self.binding else "not binding",
+                "gain": gain,
+            },
+        )
+
+
+class Bindings(list):
+    """``SolveResult.binding``: a list of :class:`Binding` that also gives a table (``to_frame()``, units in the
+    column names, the objective gain in the objective's unit) and an HTML table in Jupyter."""
+
+    def __init__(self, items=(), objective_unit: str = ""):
+        super().__init__(items)
+        self.objective_unit = objective_unit
+
+    def to_frame(self):
+        """pandas DataFrame, one row per limit: its name and ``unit`` (the limits differ in unit), the limit, the
+        best design's value and the relaxed limit in that unit, the objective gain in the objective's unit."""
+        cols = ("limit", "unit", "value", "at optimum", "relaxed to", self._gain(), "binding")
+        return frame(
+            [
+                dict(
+                    zip(
+                        cols,
+                        (
+                            b.limit,
+                            b.unit,
+                            b.value,
+                            b.at_optimum,
+                            b.relaxed_to,
+                            b.objective_gain,
+                            b.binding,
+                        ),
+                    )
+                )
+                for b in self
+            ],
+            cols,
+        )
+
+    def _gain(self) -> str:
+        return (
+            f"objective gain [{self.objective_unit}]"
+            if self.objective_unit not in ("", "-")
+            else "objective gain"
+        )
+
+    def __repr__(self) -> str:
+        binding = [b.limit for b in self if b.binding]
+        return one_line(
+            "Bindings", f"{len(self)} limits", {"binding": ", ".join(binding) or "none"}
+        )
+
+    def _repr_html_(self) -> str:
+        rows = [
+            {
+                "limit": b.limit,
+                "unit": b.unit,
+                "value": b.value,
+                "at optimum": b.at_optimum,
+                "relaxed to": b.relaxed_to,
+                self._gain(): b.objective_gain,
+                "binding": b.binding,
+            }
+            for b in self
+        ]
+        return html_table(rows, repr(self))
 
 
 @dataclass(frozen=True)
@@ -138,7 +255,7 @@ class Candidate:
         g = GOALS[key]
         if g.field in CANDIDATE_FIELDS:
             return getattr(self, g.field)
-        return goal_value(self.outputs, g)
+        return g.value(self.outputs)
 
     def parts(self) -> dict:
         out = {"screw": self.screw, "nut": self.nut, "bearing": self.bearing, "guide": self.guide}
@@ -202,12 +319,6 @@ class Candidate:
 
 
 CANDIDATE_FIELDS = frozenset(f.name for f in fields(Candidate))
-
-
-def goal_value(outputs: dict, g) -> float:
-    """The value of the goal ``g`` in its display unit from a design's model outputs (SI, a profile's minimum over
-    the stroke: ``Candidate.outputs``); NaN where the output was not evaluated."""
-    return outputs.get(g.output, math.nan) / g.factor
 
 
 def _candidate_goal(g):
@@ -316,7 +427,7 @@ class SolveResult:
     # JSON when empty
     left_out: tuple = ()
     # a stiffness or frequency optimum: a design within the tolerance of it that costs markedly less
-    # (front.cheaper_near: value, cost, best_cost, tolerance, parts), else None
+    # (sensitivity.cheaper_near: value, cost, best_cost, tolerance, parts), else None
     cheaper: dict | None = None
 
     def __setattr__(self, name, value):

@@ -1,18 +1,29 @@
 """What a solved optimum is told with: each limit's sensitivity (the optimum re-solved with the limit relaxed by
-10 %, the note when the time limit cut them) and the estimated part values the optimum rests on."""
+10 %, the note when the time limit cut them), the estimated part values the optimum rests on, and the cheapest
+design near a stiffness or frequency optimum (:func:`cheaper_near`)."""
 
 from __future__ import annotations
 
 import time
+from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..model.goals import GOALS
 from ..model.limits import LIMITS
 from ..problem import Problem
-from .certificate import Binding
-from .result import SolveResult
+from .result import Binding, SolveResult
+
+if TYPE_CHECKING:
+    from .front import Method
+    from .task import Task
 
 RELAX = 0.10  # sensitivities: relax each limit by 10 %
+# a stiffness or frequency optimum is compared with the cheapest design within the problem's tolerance of it
+# (objective.tolerance, or this when the problem gives none) and said when that one costs at least MARKEDLY less
+CHEAPER_TOLERANCE = 0.01
+MARKEDLY = 0.05
 
 
 def cut_note(what: str, cut: list) -> str:
@@ -117,3 +128,46 @@ def estimated_at_optimum(problem: Problem, res: SolveResult, objective_outputs) 
         moved = resting_on(res.best.design, list(outs.values()))
         found += [Resting(k, o, tuple(moved[o])) for k, o in outs.items() if moved.get(o)]
     return tuple(r.to_dict() for r in found)
+
+
+def cheaper_near(
+    task: Task, res: SolveResult, m: Method, time_limit: float, t0: float
+) -> dict | None:
+    """The cheapest design whose objective is within the problem's tolerance (``objective.tolerance``, else
+    :data:`CHEAPER_TOLERANCE`) of the optimum ``res.best``, when it costs at least :data:`MARKEDLY` less; else
+    None.  The lexicographic solve's second stage: the least cost with the objective floored, same method."""
+    from .task.constraints import limit_constraint
+    from .task.objective import objective_spec
+
+    problem, best = task.problem, res.best
+    tol = problem.objective.tolerance or CHEAPER_TOLERANCE
+    goal = GOALS[problem.objective.mode]
+    lim = LIMITS[goal.limit]
+    floor = best.objective * (1.0 - tol)
+    extra = limit_constraint(
+        lim.key,
+        floor * lim.factor,
+        f"within {tol:g} of the best",
+        f"{goal.key} within {tol:g} of its best {best.objective:.6g}",
+    )
+    cheap = m.run(
+        replace(task, objective=objective_spec("cost"), constraints=task.constraints + (extra,)),
+        m.name,
+        1,
+        time_limit,
+        t0,
+    )
+    c = cheap.best
+    if c is None or not c.cost < best.cost * (1.0 - MARKEDLY):
+        return None
+    return {
+        "tolerance": tol,
+        "objective": c.goal(goal.key),
+        "unit": goal.unit,
+        "cost": c.cost,
+        "best_cost": best.cost,
+        "proven": bool(cheap.certificate.proven),
+        "mounting": c.mounting,
+        "parts": c.parts(),
+        "nut_preload": c.nut_preload,
+    }

@@ -11,7 +11,8 @@ from pathlib import Path
 import pytest
 
 from axisopt.problem import load_problem
-from axisopt.search import bestfirst, solve
+from axisopt.search import solve
+from axisopt.search import task as search_task
 from axisopt.search.infeasible.explain import explain_infeasible
 from axisopt.search.parts import build_space
 from axisopt.search.task.constraints import build_constraints
@@ -53,7 +54,7 @@ def test_the_explanation_stops_at_its_deadline():
 
 
 def test_a_long_search_reports_progress(monkeypatch, caplog):
-    monkeypatch.setattr(bestfirst, "PROGRESS", 0.0)
+    monkeypatch.setattr(search_task, "PROGRESS", 0.0)
     with caplog.at_level(logging.INFO, logger="axisopt"):
         solve(
             load_problem(ROOT / "problems" / "teaching_problem.yaml"),
@@ -79,7 +80,7 @@ def full_exhaustive():
     level = log.level
     p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
     with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(bestfirst, "PROGRESS", 0.0)
+        mp.setattr(search_task, "PROGRESS", 0.0)
         log.addHandler(keep)
         log.setLevel(logging.INFO)
         try:
@@ -107,7 +108,7 @@ def test_a_long_exhaustive_search_reports_progress(full_exhaustive):
 
 
 def test_a_long_explanation_reports_progress(monkeypatch, caplog):
-    monkeypatch.setattr(bestfirst, "PROGRESS", 0.0)
+    monkeypatch.setattr(search_task, "PROGRESS", 0.0)
     p = load_problem(ROOT / "problems" / "infeasible_problem.yaml")
     with caplog.at_level(logging.INFO, logger="axisopt"):
         explain_infeasible(build_space(p), build_constraints(p), objective_spec("stiffness"))

@@ -26,7 +26,7 @@ import time
 import numpy as np
 
 from ... import model
-from .. import bestfirst
+from .. import task as vocabulary
 from ..drivebounds import PER_DRIVE_MIN, drive_hull
 from ..parts import drive_stiffnesses
 from ..task.constraints import reads_regen
@@ -146,9 +146,9 @@ def explain_infeasible(
     for idx, score in scores:
         top_idx, top_score = _closest(top_idx, top_score, idx, score, n_closest)
         opened += len(idx)
-        if (now := time.perf_counter()) - shown > bestfirst.PROGRESS:
+        if (now := time.perf_counter()) - shown > vocabulary.PROGRESS:
             shown = now
-            bestfirst.LOG.info(
+            vocabulary.LOG.info(
                 f"  explaining: {opened:,} combinations scored for the closest designs, "
                 f"{now - t0:.0f} s"
             )
