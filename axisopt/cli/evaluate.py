@@ -154,7 +154,7 @@ def _evaluate_drive_design(args) -> int:
     from ..report.drivetype import format_drive_design
     from ..search.drivefile import evaluate_drive_design
 
-    for opt in ("calibration", "methods", "frf", "ss", "report"):
+    for opt in ("calibration", "methods", "frf", "ss"):
         if getattr(args, opt, None):
             name = "--" + opt.replace("_", "-")
             raise InputError(
@@ -165,8 +165,19 @@ def _evaluate_drive_design(args) -> int:
     problem = load_problem(args.design)
     d = evaluate_drive_design(problem)
     quiet = stdout_taken(args.json)
+    text = format_drive_design(d, problem)
     if not quiet:
-        show(format_drive_design(d, problem))
+        show(text)
+    if args.report:
+        from ..report.drivehtml import drive_design_page
+        from ..report.html import write_page
+
+        write_page(
+            drive_design_page(d, problem, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
+        wrote(args.report, quiet)
     if args.json:
         write_json({"problem": problem.name, **d.to_dict()}, args.json)
     if args.plot:

@@ -111,21 +111,8 @@ def cmd_solve(args) -> int:
         from ..search.drivedefault import offer
 
         other = offer(problem, res, args.method, top=args.top).result
-        files = [
-            f"--{o.replace('_', '-')}"
-            for o in ("plot", "save_design", "report")
-            if getattr(args, o)
-        ]
-        if other is not None and not (set(files) & {"--report"}):
+        if other is not None:  # its files (--plot, --save-design, --report) are the drive types'
             return _show_drive_types(args, other)
-        # the files are made for screw drives: the best screw drive's, said so
-        if other is not None:
-            print(
-                f"axisopt: a {other.best.drive_type} design beats the screw drive "
-                f"({other.best.objective:.6g} {other.objective_unit}); {', '.join(files)} "
-                "written for the best screw drive (without them the answer shows it)",
-                file=sys.stderr,
-            )
     quiet = stdout_taken(args.json, args.save_design)
     text = format_result(res, top=args.top, problem=problem) if not quiet or args.report else ""
     if not quiet:
@@ -193,11 +180,6 @@ def _solve_drive_types(args, problem) -> int:
     from ..errors import InputError
     from ..search.drivetype import solve_drive_types
 
-    if args.report:
-        raise InputError(
-            "--report is not made for a search over drive types yet",
-            where="--report",
-        )
     if args.method not in ("default", "exhaustive"):
         raise InputError(
             f"--method {args.method}: a search over drive types runs the default or exhaustive "
@@ -210,20 +192,22 @@ def _solve_drive_types(args, problem) -> int:
 
 def _show_drive_types(args, res) -> int:
     """The text (and --json) of a drive types' answer (:class:`axisopt.search.drivetype.DriveTypeResult`)."""
-    from ..errors import InputError
     from ..report.drivetype import format_drive_result
 
-    if args.report:
-        raise InputError(
-            f"--report is not made for a {res.best.drive_type} design yet (it wins over the screw "
-            "drive)"
-            if res.best is not None
-            else "--report is not made for a search over drive types yet",
-            where="--report",
-        )
     quiet = stdout_taken(args.json, args.save_design)
+    text = format_drive_result(res, top=args.top)
     if not quiet:
-        show(format_drive_result(res, top=args.top))
+        show(text)
+    if args.report:
+        from ..report.drivehtml import drive_types_page
+        from ..report.html import write_page
+
+        write_page(
+            drive_types_page(res, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
+        wrote(args.report, quiet)
     if args.json:
         write_json(res.to_dict(), args.json)
     if args.plot:
