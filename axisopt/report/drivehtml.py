@@ -6,7 +6,8 @@ are to failing, the margins figure (:mod:`.driveplot`) and the text answer."""
 from __future__ import annotations
 
 from .drivetype import LABELS, MARGIN_LABELS
-from .html import MARGIN_KEY, Page, _svg, margin_class, pre, table
+from .html import MARGIN_KEY, Page, margin_class, pre, table
+from .static import svg
 
 
 def _designs_table(designs, unit: str) -> str:
@@ -64,7 +65,7 @@ def drive_types_page(res, text: str, interactive: bool = False) -> Page:
     if designs:
         page.section("Margins of the first design").append(_margins_table(designs[0]))
         fig = plot_drive_designs(res, None, top=len(designs))
-        page.section("Margins and objective against cost").append(_svg(fig, heading))
+        page.section("Margins and objective against cost").append(svg(fig, heading))
     page.section("Answer").append(pre(text))
     return page
 
