@@ -77,8 +77,8 @@ DRIVE_DESIGN_SLOTS = {
 }
 DRIVE_DESIGN_SPEC = Spec(
     "drive_design",
-    "one rack-and-pinion or linear-motor design of the problem (written by `axisopt solve --save-design`, "
-    "read by `axisopt evaluate`)",
+    "one rack-and-pinion or linear-motor design of the problem (solve's --save-design writes it, evaluate "
+    "reads it)",
     {
         "type": Key("choice", "the drive type", required=True, choices=tuple(DRIVE_DESIGN_SLOTS)),
         "rack": Key("string", "rack-and-pinion set id (racks.csv)"),
