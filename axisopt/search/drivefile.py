@@ -60,8 +60,10 @@ def drive_design_yaml(problem_path, design: DriveDesign, rank: int = 1) -> str:
     directories the problem names relative to itself made absolute (the file may be written elsewhere)."""
     path = Path(problem_path)
     data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    if "catalogs" in data:
-        data["catalogs"] = [str((path.parent / d).resolve()) for d in data["catalogs"]]
+    if data.get("catalogs"):
+        dirs = data["catalogs"]
+        dirs = [dirs] if isinstance(dirs, str) else dirs
+        data["catalogs"] = [str((path.parent / str(d)).resolve()) for d in dirs]
     data.setdefault("search", {})["drive_types"] = [design.drive_type]
     data.pop("drive_design", None)
     parts = {"type": design.drive_type}
