@@ -64,7 +64,7 @@ from types import MappingProxyType
 from .catalog.loading import Catalog
 from .design import AXIS_SPEC, CATALOGS_KEY, DESCRIPTION_KEY, NAME_KEY, Axis, catalog_for, read_axis
 from .design.choices import SEARCH_SPEC, read_arrangements
-from .design.drivechoice import read_drive_choice
+from .design.drivechoice import DRIVE_DESIGN_SPEC, read_drive_choice, read_drive_design
 from .display import fmt, one_line
 from .errors import InputError
 from .model import CHECKS
@@ -118,6 +118,8 @@ class Problem:
     # search.drive_types (design.drivechoice.DriveChoice): rack and pinion, linear motors beside the screw;
     # None: the screw drive alone
     drives: object = field(default=None, repr=False, compare=False)
+    # drive_design: one rack-and-pinion or linear-motor design ({slot: id}, design.drivechoice), or None
+    drive_design: dict | None = field(default=None, repr=False, compare=False)
 
     @property
     def limit_map(self) -> dict:
@@ -285,6 +287,7 @@ PROBLEM_SPEC = Spec(
         "catalog": Key("section", spec=RESTRICTIONS_SPEC),
         "continuous": Key("section", spec=CONTINUOUS_SPEC),
         "search": Key("section", spec=SEARCH_SPEC),
+        "drive_design": Key("section", spec=DRIVE_DESIGN_SPEC),
     },
 )
 
@@ -338,6 +341,13 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
     drives = read_drive_choice(
         ssec, axis, root.string_list("catalogs", []), base=Path(root.source).parent
     )
+    dsec = root.read("drive_design")
+    drive_design = read_drive_design(dsec)
+    if drive_design is not None and (drives is None or drive_design["type"] not in drives.types):
+        raise dsec.error(
+            "type",
+            f"a {drive_design['type']} design needs search.drive_types to list {drive_design['type']}",
+        )
     root.done()
     min_life = dict(limits).get("min_life")
     follows = min_life is not None and "required_life" in assumed
@@ -359,6 +369,7 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
         life_from_limit=follows,
         arrangements=read_arrangements(ssec, asec, axis),
         drives=None if drives is None or drives.screw_only else drives,
+        drive_design=drive_design,
     )
 
 

@@ -22,7 +22,7 @@ import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-TIMING = ("time_s", "screening_time", "screening_rate", "seconds")
+TIMING = ("time", "time_s", "screening_time", "screening_rate", "seconds")
 
 
 # The shipped measured data sets, each with the design it was taken on (docs/diagnose.md runs the

@@ -57,7 +57,7 @@ def cmd_compare(args) -> int:
         write_json(compare_dict(items), args.json)
     if args.csv:
         write_compare_csv(items, args.csv)
-    evs = [c for c in items if c.ok]
+    evs = [c for c in items if c.evaluation is not None]
     if args.plot and evs:
         from ..report import plot_profiles
 

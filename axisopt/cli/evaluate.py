@@ -61,6 +61,8 @@ def cmd_evaluate(args) -> int:
     from ..report import evaluation_dict, evaluation_table, plot_profiles
 
     check_html_report(args.report, args.plotly)
+    if _drive_design_file(args.design):
+        return _evaluate_drive_design(args)
     design = load_design(args.design)
     if args.calibration:
         from ..identify.calibration import apply_calibration
@@ -134,3 +136,62 @@ def cmd_evaluate(args) -> int:
             print(f"axisopt: {len(failed)} check(s) fail: {', '.join(failed)}", file=sys.stderr)
             return EXIT_NEGATIVE
     return EXIT_OK
+
+
+def _drive_design_file(path) -> bool:
+    """Whether ``path`` holds a rack-and-pinion or linear-motor design (a problem with ``drive_design``)."""
+    from ..yamlio import read_yaml
+
+    node = read_yaml(path)
+    return isinstance(node.value, dict) and "drive_design" in node.value
+
+
+def _evaluate_drive_design(args) -> int:
+    """``axisopt evaluate`` of a rack-and-pinion or linear-motor design (search.drivefile): its text (and
+    --json, --plot); the options made for screw designs are refused."""
+    from ..errors import InputError
+    from ..problem import load_problem
+    from ..report.drivetype import format_drive_design
+    from ..search.drivefile import evaluate_drive_design
+
+    for opt in ("calibration", "methods", "frf", "ss"):
+        if getattr(args, opt, None):
+            name = "--" + opt.replace("_", "-")
+            raise InputError(
+                f"{name} is made for screw designs; this file holds a rack-and-pinion or linear-motor "
+                "design",
+                where=name,
+            )
+    problem = load_problem(args.design)
+    d = evaluate_drive_design(problem)
+    quiet = stdout_taken(args.json)
+    text = format_drive_design(d, problem)
+    if not quiet:
+        show(text)
+    if args.report:
+        from ..report.drivehtml import drive_design_page
+        from ..report.html import write_page
+
+        write_page(
+            drive_design_page(d, problem, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
+        wrote(args.report, quiet)
+    if args.json:
+        write_json({"problem": problem.name, **d.to_dict()}, args.json)
+    if args.plot:
+        from types import SimpleNamespace
+
+        from ..report.driveplot import plot_drive_designs
+        from ..search.drivedesigns import objective_of
+
+        _, (name, _, unit, sense) = objective_of(problem)
+        label = f"{'maximise' if sense == 'max' else 'minimise'} {name.replace('_', ' ')}"
+        one = SimpleNamespace(
+            best=d, runners_up=[], closest=[], objective_label=label, objective_unit=unit
+        )
+        plot_drive_designs(one, args.plot)
+        wrote(args.plot, quiet)
+    failed = any(v < 1.0 for v in d.margins.values())
+    return EXIT_NEGATIVE if failed and args.fail_on_check else EXIT_OK

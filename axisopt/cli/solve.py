@@ -111,21 +111,8 @@ def cmd_solve(args) -> int:
         from ..search.drivedefault import offer
 
         other = offer(problem, res, args.method, top=args.top).result
-        files = [
-            f"--{o.replace('_', '-')}"
-            for o in ("plot", "save_design", "report")
-            if getattr(args, o)
-        ]
-        if other is not None and not files:
+        if other is not None:  # its files (--plot, --save-design, --report) are the drive types'
             return _show_drive_types(args, other)
-        # the files are made for screw drives: the best screw drive's, said so
-        if other is not None:
-            print(
-                f"axisopt: a {other.best.drive_type} design beats the screw drive "
-                f"({other.best.objective:.6g} {other.objective_unit}); {', '.join(files)} "
-                "written for the best screw drive (without them the answer shows it)",
-                file=sys.stderr,
-            )
     quiet = stdout_taken(args.json, args.save_design)
     text = format_result(res, top=args.top, problem=problem) if not quiet or args.report else ""
     if not quiet:
@@ -193,12 +180,6 @@ def _solve_drive_types(args, problem) -> int:
     from ..errors import InputError
     from ..search.drivetype import solve_drive_types
 
-    for opt in ("plot", "save_design", "report"):
-        if getattr(args, opt):
-            raise InputError(
-                f"--{opt.replace('_', '-')} is not made for a search over drive types yet",
-                where=f"--{opt.replace('_', '-')}",
-            )
     if args.method not in ("default", "exhaustive"):
         raise InputError(
             f"--method {args.method}: a search over drive types runs the default or exhaustive "
@@ -211,24 +192,73 @@ def _solve_drive_types(args, problem) -> int:
 
 def _show_drive_types(args, res) -> int:
     """The text (and --json) of a drive types' answer (:class:`axisopt.search.drivetype.DriveTypeResult`)."""
-    from ..errors import InputError
     from ..report.drivetype import format_drive_result
 
-    for opt in ("plot", "save_design", "report"):
-        if getattr(args, opt):
-            raise InputError(
-                f"--{opt.replace('_', '-')} is not made for a {res.best.drive_type} design yet "
-                "(it wins over the screw drive)"
-                if res.best is not None
-                else f"--{opt.replace('_', '-')} is not made for a search over drive types yet",
-                where=f"--{opt.replace('_', '-')}",
-            )
-    quiet = stdout_taken(args.json, None)
+    quiet = stdout_taken(args.json, args.save_design)
+    text = format_drive_result(res, top=args.top)
     if not quiet:
-        show(format_drive_result(res, top=args.top))
+        show(text)
+    if args.report:
+        from ..report.drivehtml import drive_types_page
+        from ..report.html import write_page
+
+        write_page(
+            drive_types_page(res, text, interactive=args.plotly != "no"),
+            args.report,
+            plotly=args.plotly,
+        )
+        wrote(args.report, quiet)
     if args.json:
         write_json(res.to_dict(), args.json)
+    if args.plot:
+        from ..report.driveplot import plot_drive_designs
+
+        plot_drive_designs(res, args.plot, top=args.top)
+        wrote(args.plot, quiet)
+    if args.save_design:
+        written = save_drive_designs(res, args.save_design, args.top, args.problem)
+        if not written:
+            print(f"axisopt: no design saved: the problem is {res.status}", file=sys.stderr)
+        elif not quiet:
+            print(f"\n{len(written)} design YAML written: {', '.join(written)}")
     return exit_code(res.status)
+
+
+def save_drive_designs(res, target: str, top: int, problem_path: str) -> list:
+    """Write the best design of a drive types' answer to ``target`` (a .yaml file) or the shown designs into
+    ``target`` (a directory: 1.yaml, 2.yaml, ...): a screw design as :func:`save_designs` writes it, a rack or
+    linear-motor design as the problem file with its ``drive_design`` (search.drivefile).  Returns the paths
+    written."""
+    from pathlib import Path
+
+    from ..fileio import make_output_dir, write_text_atomic
+    from ..search.drivefile import drive_design_yaml
+
+    designs = ([res.best] + list(res.runners_up))[:top] if res.best is not None else []
+    if not designs:
+        return []
+    single = _single_file(target)
+    if single:
+        designs = designs[:1]
+        paths = [Path(target)]
+    else:
+        make_output_dir(target)
+        w = len(str(len(designs)))
+        paths = [Path(target) / f"{i:0{w}d}.yaml" for i in range(1, len(designs) + 1)]
+    out = []
+    for rank, (d, path) in enumerate(zip(designs, paths), start=1):
+        if d.drive_type == "screw":
+            from ..design import design_to_yaml
+
+            text = (
+                f"# design {rank} of `axisopt solve {one_line(problem_path)}`: screw drive\n"
+                + design_to_yaml(d.candidate.design)
+            )
+        else:
+            text = drive_design_yaml(problem_path, d, rank)
+        write_text_atomic(str(path), text, what="design YAML")
+        out.append(str(path))
+    return out
 
 
 def save_designs(res, target: str, top: int, problem_path: str, problem=None) -> list:

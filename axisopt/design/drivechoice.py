@@ -69,6 +69,56 @@ LM_SPEC = Spec(
         ),
     },
 )
+# A saved design of a rack-and-pinion or linear-motor drive: the problem's file with this section naming the
+# chosen parts (`axisopt solve --save-design` writes it, `axisopt evaluate` reads it)
+DRIVE_DESIGN_SLOTS = {
+    "rack_pinion": ("rack", "reduction", "motor", "twin_pinion", "guide"),
+    "linear_motor": ("linear_motor", "forcers", "guide"),
+}
+DRIVE_DESIGN_SPEC = Spec(
+    "drive_design",
+    "one rack-and-pinion or linear-motor design of the problem (solve's --save-design writes it, evaluate "
+    "reads it)",
+    {
+        "type": Key("choice", "the drive type", required=True, choices=tuple(DRIVE_DESIGN_SLOTS)),
+        "rack": Key("string", "rack-and-pinion set id (racks.csv)"),
+        "reduction": Key("string", "gearbox id (reductions.csv)"),
+        "motor": Key("string", "motor id (motors.csv)"),
+        "twin_pinion": Key(
+            "choice", "two preloaded pinions per rack", choices=("yes", "no", True, False)
+        ),
+        "linear_motor": Key("string", "linear motor id (linear_motors.csv)"),
+        "forcers": Key("number", "forcers on the track", integer=True, minimum=1, maximum=4),
+        "guide": Key("string", "guide id (guides.csv)", required=True),
+    },
+)
+
+
+def read_drive_design(sec: Section | None) -> dict | None:
+    """The ``drive_design:`` section as {slot: id} in the search's vocabulary (twin_pinion 'yes'/'no',
+    forcers a string), with its 'type'; None without one.  Each slot of the type must be given, no other."""
+    if sec is None:
+        return None
+    kind = sec.read("type")
+    out = {"type": kind}
+    for slot in DRIVE_DESIGN_SLOTS[kind]:
+        if not sec.has(slot):
+            raise sec.error(slot, f"a {kind} design names its {slot}")
+        v = sec.read(slot)
+        out[slot] = (
+            ("yes" if v in ("yes", True) else "no")
+            if slot == "twin_pinion"
+            else str(int(v))
+            if slot == "forcers"
+            else str(v)
+        )
+    others = [k for k in DRIVE_DESIGN_SPEC.keys if k != "type" and k not in out and sec.has(k)]
+    if others:
+        raise sec.error(others[0], f"a {kind} design has no {others[0]}")
+    sec.done()
+    return out
+
+
 DRIVE_KEYS = {
     "drive_types": Key(
         "names", "drive types the search chooses among (default: screw)", choices=DRIVE_TYPES

@@ -317,6 +317,15 @@ def _read_axis(sec: Section, name: str, catalog) -> MachineAxis:
                 k, f"'{k}' is the machine's, not an axis problem's: remove it from axis '{name}'"
             )
     problem = read_problem(psec, catalog, name=name)
+    if problem.drives is not None:
+        # the machine's offers are screw designs (machine.offers): a listed rack or linear motor would
+        # be left out without a word
+        raise psec.section("search").error(
+            "drive_types",
+            f"axis '{name}': a machine sizes its axes as screw drives; rack-and-pinion and "
+            "linear-motor axes are not joined in a machine yet (size this axis alone with "
+            "`axisopt solve`)",
+        )
     sec.done()
     return MachineAxis(name, carried_by, direction, normal, problem, frame, carried_at)
 

@@ -84,7 +84,8 @@ def nut_life_load(p, preload, loads, travels):
     the phases, each half's life at the nut's rating, their Weibull sum (e = 10/9).  A single nut as THK does
     (A-706): the greater of the two directions' cubic means."""
     c = p["nut_dynamic_load"]
-    halves = [pl.preloaded_halves(mx.fmax(preload, 1e-9), f) for f in loads]
+    pre = mx.fmax(preload, 1e-9)
+    halves = _per_load(lambda f: pl.preloaded_halves(pre, f), loads, (pre,))
     means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
     pair = pl.set_equivalent_load(means, (c, c), pl.NUT_SET_EXPONENT)
     plus, minus = pl.directional_means(loads, travels)
@@ -113,7 +114,12 @@ def bearing_life_load(p, loads, travels, static):
             # the groups' loads: HIWIN's pair law for as many rows each way; where the groups differ
             # in rows, IBC's
             # linear split up to the set's own lift-off load (physics.bearingsets.set_halves)
-            halves = [_set_halves(pre, orient * f - static, rows, n_s == n_w) for f in loads]
+            sym = n_s == n_w
+            halves = _per_load(
+                lambda f, o=orient, r=rows, s=sym: _set_halves(pre, o * f - static, r, s),
+                loads,
+                (pre, static, sym, *rows),
+            )
             means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
             # the equivalent load on the printed (stronger) rating
             ends.append(
@@ -123,6 +129,22 @@ def bearing_life_load(p, loads, travels, static):
         load = mx.if_else(two_ends, mx.fmax(*ends), mx.fmin(*ends))
         best = load if best is None else mx.fmin(best, load)
     return best
+
+
+def _per_load(halves, loads, others) -> list:
+    """``[halves(f) for f in loads]`` (``halves``: a load's two (pair or row group) loads; ``others``: the
+    other values it reads).  On numbers the loads are stacked on a leading axis and evaluated at once (the same
+    operations on each element: the same values), on symbols one by one."""
+    if mx.is_symbolic(*others, *loads) or len(loads) < 2:
+        return [halves(f) for f in loads]
+    f = [np.asarray(x, dtype=float) for x in loads]
+    shape = np.broadcast_shapes(*(x.shape for x in f))
+    nd = max(np.ndim(v) for v in (*others, *f))
+    stacked = np.stack([np.broadcast_to(x, shape) for x in f])
+    plus, minus = halves(stacked.reshape((len(f),) + (1,) * (nd - len(shape)) + shape))
+    both = np.broadcast_shapes(np.shape(plus), np.shape(minus))
+    plus, minus = np.broadcast_to(plus, both), np.broadcast_to(minus, both)
+    return [(plus[i], minus[i]) for i in range(len(f))]
 
 
 def _set_halves(preload, load, rows, symmetric):

@@ -105,6 +105,8 @@ def compare_table(items) -> str:
     """The text table: one column per design, the weakest link of each marked with '<'.  Within 100 columns:
     when the designs do not fit side by side, the table is printed in blocks of as many designs as fit, one
     under the other."""
+    if any(getattr(c, "drive", None) is not None for c in items):
+        return drive_compare_table(items)
     w0 = 34
     width = max(22, *(min(30, len(c.label) + 2) for c in items))
     rows: list = []  # a text line, or (name, cells) of a table row
@@ -304,6 +306,70 @@ def compare_table(items) -> str:
     return "\n\n".join(blocks)
 
 
+def _common(c) -> dict | None:
+    """What designs of every drive type share, in display units: the drive type, the parts, the least
+    axial stiffness [N/um], the first frequency [Hz], the cost [EUR], the moving mass [kg] and the least
+    margin with its check (None: no design)."""
+    d = getattr(c, "drive", None)
+    if d is not None:
+        least = min(d.margins.items(), key=lambda kv: kv[1]) if d.margins else (None, None)
+        return {
+            "drive_type": d.drive_type,
+            "parts": dict(d.parts),
+            "stiffness": d.stiffness,
+            "frequency": d.frequency,
+            "cost": d.cost,
+            "moving_mass": d.moving_mass,
+            "least_margin": least,
+        }
+    e = c.evaluation
+    if e is None:
+        return None
+    ed = evaluation_dict(e)
+    margins = {k: v["margin"] for k, v in ed["checks"].items() if v["margin"] is not None}
+    least = min(margins.items(), key=lambda kv: kv[1]) if margins else (None, None)
+    return {
+        "drive_type": "screw",
+        "parts": {"mounting": ed["mounting"], **ed["parts"]},
+        "stiffness": ed["min_axial_stiffness_N_per_um"],
+        "frequency": ed["min_natural_frequency_Hz"],
+        "cost": ed["cost"],
+        "moving_mass": ed["moving_mass_kg"],
+        "least_margin": least,
+    }
+
+
+def drive_compare_table(items) -> str:
+    """The comparison when a rack-and-pinion or linear-motor design is among the designs: what every drive
+    type has (the quantities of :func:`_common`), one block per design."""
+    from .drivetype import LABELS as DRIVE_LABELS
+
+    out = [
+        "designs of several drive types: the quantities every type has (stiffness: the least axial "
+        "stiffness at the table over the stroke)"
+    ]
+    for c in items:
+        m = _common(c)
+        out.append("")
+        out.append(f"{c.label}  ({c.source})")
+        if m is None:
+            out.append(f"  no design (status {c.solve['status'] if c.solve else '-'})")
+            continue
+        out.append(f"  drive type        {DRIVE_LABELS[m['drive_type']]}")
+        parts = ", ".join(f"{k} {v}" for k, v in m["parts"].items() if v is not None)
+        out += textwrap.wrap(
+            parts, 100, initial_indent="  parts             ", subsequent_indent=" " * 20
+        )
+        out.append(f"  stiffness         {m['stiffness']:,.1f} N/um")
+        out.append(f"  first frequency   {m['frequency']:,.1f} Hz")
+        out.append(f"  cost              {m['cost']:,.0f} EUR")
+        out.append(f"  moving mass       {m['moving_mass']:,.1f} kg")
+        k, v = m["least_margin"]
+        if k is not None:
+            out.append(f"  least margin      {v:.2f} ({k}){'' if v >= 1.0 else '  FAIL'}")
+    return "\n".join(out)
+
+
 def compare_dict(items) -> dict:
     out = []
     for c in items:
@@ -315,6 +381,8 @@ def compare_dict(items) -> dict:
             fa, fapos = c.evaluation.minimum("f_axial_torsional")
             ev["min_axial_torsional_frequency_Hz"] = fa
             d["evaluation"] = ev
+        if getattr(c, "drive", None) is not None:
+            d["drive_design"] = c.drive.to_dict()
         out.append(d)
     return {"designs": out}
 
@@ -330,6 +398,20 @@ def compare_rows(items) -> list:
             "status": c.solve["status"] if c.solve else "design",
         }
         e = c.evaluation
+        dd = getattr(c, "drive", None)
+        if dd is not None:
+            r.update(
+                {
+                    "drive_type": dd.drive_type,
+                    **dd.parts,
+                    COLUMN["min_stiffness"]: dd.stiffness,
+                    COLUMN["min_frequency"]: dd.frequency,
+                    COLUMN["moving_mass"]: dd.moving_mass,
+                    COLUMN["cost"]: dd.cost,
+                    "all_checks_pass": all(v >= 1.0 for v in dd.margins.values()),
+                    **{f"{k} margin": v for k, v in dd.margins.items()},
+                }
+            )
         if e is not None:
             d = evaluation_dict(e)
             comp = component_stiffness(e)

@@ -74,3 +74,17 @@ def format_drive_result(res, top: int = 5) -> str:
             out.append(f"design change: {res.change}")
     out += [f"note: {n}" for n in res.notes]
     return "\n".join(w for line in out for w in _wrap(line))
+
+
+def format_drive_design(d, problem) -> str:
+    """The text of one evaluated rack-and-pinion or linear-motor design (``axisopt evaluate``): its parts,
+    objective, cost and outputs, and every check and limit margin with PASS or FAIL."""
+    from ..search.drivedesigns import objective_of
+
+    _, (name, _, unit, _) = objective_of(problem)
+    out = [f"design {problem.name}: {LABELS[d.drive_type]} ({name.replace('_', ' ')} in {unit})"]
+    out += _design(d, unit)
+    out.append("checks and limits (available / needed):")
+    for k, v in sorted(d.margins.items(), key=lambda kv: kv[1]):
+        out.append(f"  {MARGIN_LABELS.get(k, k):34s} {v:8.3f}  {'PASS' if v >= 1.0 else 'FAIL'}")
+    return "\n".join(w for line in out for w in _wrap(line))

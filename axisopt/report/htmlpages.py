@@ -113,6 +113,7 @@ def pareto_table(front) -> str:
 
 def compare_page(items, text: str, interactive: bool = False) -> Page:
     from .checktext import judged_rows
+    from .drivetype import LABELS
     from .plots import distinct_labels, plot_profiles
 
     page = Page("Comparison", ", ".join(c.label for c in items), interactive=interactive)
@@ -131,6 +132,35 @@ def compare_page(items, text: str, interactive: bool = False) -> Page:
     rows, classes = [], []
     for c in items:
         e = c.evaluation
+        if e is None and getattr(c, "drive", None) is not None:  # a rack or linear-motor design
+            d = c.drive
+            failed = [k for k, v in d.margins.items() if v < 1.0]
+            least = min(d.margins.values()) if d.margins else None
+            page.card(
+                c.label,
+                f"{LABELS[d.drive_type]}: {d.stiffness:,.1f} N/um, {d.frequency:,.1f} Hz"
+                + (f"; FAILS {', '.join(failed)}" if failed else ""),
+                "bad" if failed else "ok",
+            )
+            rows.append(
+                [
+                    c.label,
+                    f"{d.stiffness:,.1f}",
+                    f"{d.frequency:,.1f}",
+                    "-",
+                    "-",
+                    f"{d.cost:,.0f}",
+                    str(d.parts.get("motor", d.parts.get("linear_motor", "-"))),
+                    "n/a" if least is None else f"{least:.2f}",
+                    ", ".join(failed) or "none",
+                ]
+            )
+            classes.append(
+                ["wrap"]
+                + [""] * 6
+                + [margin_class(least, not failed), "bad wrap" if failed else "ok"]
+            )
+            continue
         if e is None:
             page.card(c.label, c.solve["status"] if c.solve else "-", "bad")
             rows.append(

@@ -122,18 +122,24 @@ HULL_CACHE = 100_000
 HULL_CACHE_MECHANICS = 4_000_000
 
 
+def _whole_hull(space: Space) -> bool:
+    """Whether a mounting's hull is computed once for every nut (:data:`HULL_CACHE`)."""
+    N, B = space.shape[1], space.shape[2]
+    Gm = space.shape[3] // max(space.n_drives, 1)
+    return (
+        N * min(B, DRIVE_BEARING_GROUPS) * space.n_drives <= HULL_CACHE
+        and N * B * Gm <= HULL_CACHE_MECHANICS
+    )
+
+
 def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
     """:func:`drive_box` over the whole preload range (lower ends, upper ends) for the nuts ``nut_sel`` (or
     the (nut, bearing) pairs of ``bearings``), and each bearing's group.  Where the mounting's every nut fits in
     :data:`HULL_CACHE`, the box of every nut is evaluated once per space and these rows are taken from it (the
     screening, the explanation's block bounds and its scored blocks read the same values)."""
-    N, B = space.shape[1], space.shape[2]
+    N = space.shape[1]
     nut_idx = space.nut_numbers(nut_sel)
-    Gm = space.shape[3] // max(space.n_drives, 1)
-    if (
-        N * min(B, DRIVE_BEARING_GROUPS) * space.n_drives > HULL_CACHE
-        or N * B * Gm > HULL_CACHE_MECHANICS
-    ):
+    if not _whole_hull(space):
         (box,), group = drive_box(space, mounting, nut_idx, regen, bearings, across=True)
         return box, group
     key = ("drive hull", mounting, regen, DRIVE_BEARING_GROUPS)
@@ -160,13 +166,73 @@ def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
     return box, (np.zeros(1, dtype=np.int64) if bearings is not None else group)
 
 
+# the per-nut rows of :func:`drive_hull` kept on the space for the searches that follow on it (the limit
+# sensitivities' and the cheaper design's re-searches open the same nuts: 0.3-0.8 s of interval arithmetic
+# per nut on the 2 t boring table), in float32 rounded outward, up to this many bytes
+HULL_ROWS_BYTES = 192 * 2**20
+
+
+def _outward32(v: np.ndarray, up: bool) -> np.ndarray:
+    """``v`` in float32, each value rounded away from the side a limit tests (up for an upper end): a bound
+    it was stays a bound."""
+    w = v.astype(np.float32)
+    with np.errstate(invalid="ignore"):
+        off = w < v if up else w > v
+    if off.any():
+        w[off] = np.nextafter(w[off], np.float32(np.inf if up else -np.inf))
+    return w
+
+
 def drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None):
     """Per (nut, bearing group, drive) of the nuts ``nut_sel`` (or per (nut, bearing) pair of ``bearings``),
     for each limit of ``constraints`` a value no (guide, preload) of the block beats with that drive: the drive
     block's limits from its interval bounds, the cost its least value (:func:`least_cost`):
-    {limit name: (nuts, groups, drives)}, and each bearing's group."""
+    {limit name: (nuts, groups, drives)}, and each bearing's group.  Without ``bearings`` each nut's rows are
+    kept on the space (:data:`HULL_ROWS_BYTES`, float32 rounded outward): a later search on the space (a
+    limit relaxed, the cheaper design) takes them from there."""
     if not constraints:
         return {}, None
+    if bearings is None and not _whole_hull(space):
+        return _hull_rows(space, mounting, nut_sel, constraints)
+    return _drive_hull(space, mounting, nut_sel, constraints, bearings)
+
+
+def _row_key(c):
+    """What a constraint's hull row depends on: its output and sense (the cost: its least value)."""
+    return ("cost",) if c.key == "cost" else (c.key, c.sense, c.profile)
+
+
+def _hull_rows(space: Space, mounting: str, nut_sel, constraints):
+    """:func:`_drive_hull` per nut through the space's store of rows (:data:`HULL_ROWS_BYTES`)."""
+    regen = reads_regen([c for c in constraints if c.key != "cost"])
+    store = space._cache.setdefault(("hull rows", HULL_ROWS_BYTES), {"bytes": 0, "rows": {}})
+    rows = store["rows"]
+    nut_idx = np.asarray(space.nut_numbers(nut_sel), dtype=np.int64)
+    if not len(nut_idx):
+        return _drive_hull(space, mounting, nut_sel, constraints)
+    need = {_row_key(c) for c in constraints}
+    got = {int(n): rows.get((mounting, regen, int(n))) for n in nut_idx}
+    miss = [n for n, hit in got.items() if hit is None or not need <= hit[0].keys()]
+    if miss:
+        hull, group = _drive_hull(space, mounting, np.asarray(miss, dtype=np.int64), constraints)
+        by_key = {}
+        for c in constraints:
+            by_key.setdefault(_row_key(c), (hull[c.name], c.sense == ">="))
+        for i, n in enumerate(miss):
+            vals = {k: _outward32(np.asarray(v[i]), up) for k, (v, up) in by_key.items()}
+            got[n] = (vals, group)
+            had = rows.get((mounting, regen, n), ({}, group))[0]
+            size = sum(v.nbytes for k, v in vals.items() if k not in had)
+            if store["bytes"] + size <= HULL_ROWS_BYTES:
+                store["bytes"] += size
+                rows[(mounting, regen, n)] = ({**had, **vals}, group)
+    hits = [got[int(n)] for n in nut_idx]
+    out = {c.name: np.stack([h[0][_row_key(c)] for h in hits]).astype(float) for c in constraints}
+    return out, hits[0][1]
+
+
+def _drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None):
+    """:func:`drive_hull` evaluated."""
     cons = [c for c in constraints if c.key != "cost"]
     box, group = hull_ends(space, mounting, nut_sel, reads_regen(cons), bearings)
     shape = (len(space.nut_numbers(nut_sel)), int(group.max()) + 1, space.n_drives, 1)

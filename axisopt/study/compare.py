@@ -30,10 +30,12 @@ class Compared:
     solve: dict | None = None  # for a problem: status, objective, certificate
     # for a problem: its least check margins (limits.margins), what its checks meet
     margins: dict | None = None
+    # a rack-and-pinion or linear-motor design (search.drivedesigns.DriveDesign): no screw evaluation
+    drive: object = None
 
     @property
     def ok(self) -> bool:
-        return self.evaluation is not None
+        return self.evaluation is not None or self.drive is not None
 
 
 def compare_designs(files, method: str = "default", time_limit: float = 100.0) -> list:
@@ -68,6 +70,8 @@ def file_kind(path) -> str:
         require_kind(root, str(path), "design or problem")
     if not isinstance(root.value, dict):
         raise InputError("expected a design or problem mapping", source=str(path))
+    if "drive_design" in root.value:
+        return "drive design"
     return "design" if "parts" in root.value else "problem"
 
 
@@ -85,6 +89,13 @@ def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> 
                 f"  compare: {i} of {len(paths)} files done, {time.perf_counter() - t0:.0f} s; next {p}"
             )
         kind = file_kind(p)
+        if kind == "drive design":
+            from ..problem import load_problem
+            from ..search.drivefile import evaluate_drive_design
+
+            prob = load_problem(p)
+            out.append(Compared(prob.name, str(p), kind, None, drive=evaluate_drive_design(prob)))
+            continue
         if kind == "design":
             d = load_design(p)
             out.append(Compared(d.name, str(p), kind, evaluate(d)))
@@ -93,6 +104,9 @@ def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> 
         from ..search import solve
 
         prob = load_problem(p)
+        if prob.drives is not None:  # search.drive_types: the best of the types
+            out.append(_drive_types(prob, p, method, time_limit))
+            continue
         res = solve(prob, method, top=1, sensitivities=False, time_limit=time_limit)
         info = {
             "status": res.status,
@@ -115,6 +129,32 @@ def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> 
         if labels.count(c.label) > 1:
             c.label = f"{c.label} [{Path(c.source).name}]"
     return out
+
+
+def _drive_types(prob, path, method: str, time_limit: float) -> Compared:
+    """A problem with search.drive_types solved over its types: its best design (a screw design evaluated as
+    a design is, a rack-and-pinion or linear-motor design as its own)."""
+    from ..search.drivetype import solve_drive_types
+
+    res = solve_drive_types(prob, method, top=1, time_limit=time_limit)
+    best = res.best
+    info = {
+        "status": res.status,
+        "method": res.method,
+        "objective": res.objective_label,
+        "objective_value": None if best is None else best.objective,
+        "objective_unit": res.objective_unit,
+        "proven": res.status == "optimal",
+        "message": "; ".join(res.notes),
+    }
+    label = f"{prob.name} (solved)"
+    if best is None:
+        return Compared(label, str(path), "problem", None, info)
+    if best.drive_type == "screw":
+        return Compared(
+            label, str(path), "problem", evaluate(best.candidate.design), info, prob.margin_map
+        )
+    return Compared(label, str(path), "problem", None, info, drive=best)
 
 
 __all__ = ["Compared", "compare_designs", "file_kind", "load_compared"]

@@ -118,19 +118,30 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
         unit = ok["objective_unit"].dropna().iloc[0] if ok["objective_unit"].notna().any() else ""
         cols = input_columns(study)
         top = ok.sort_values("objective", ascending=False).head(10)
+        # a study over drive types (search.drive_types): each case's drive type, and a rack or linear motor
+        # where the screw's nut and bearing are
+        types = "drive_type" in ok.columns
         L += [
             "## Best cases",
             "",
             "| case | "
             + " | ".join(n for n, _ in cols.values())
-            + f" | objective [{unit}] | mounting | nut | bearing | guide | k [N/um] | f [Hz] | cost [EUR] |",
-            "|" + "---|" * (len(cols) + 9),
+            + f" | objective [{unit}] | "
+            + ("drive | rack or linear motor | " if types else "")
+            + "mounting | nut | bearing | guide | k [N/um] | f [Hz] | cost [EUR] |",
+            "|" + "---|" * (len(cols) + 9 + 2 * types),
         ]
         for _, r in top.iterrows():
+            drive = (
+                f"{_cell(r['drive_type'])} | {_cell(r['rack'] if _given(r['rack']) else r['linear_motor'])} | "
+                if types
+                else ""
+            )
             L.append(
                 f"| {r['case_id']} | "
                 + " | ".join(_cell(r[n]) for n, _ in cols.values())
-                + f" | {_cell(r['objective'])} | {r['mounting']} | {r['nut']} | {r['bearing']} | {r['guide']}"
+                + f" | {_cell(r['objective'])} | {drive}{_cell(r['mounting'])} | {_cell(r['nut'])}"
+                f" | {_cell(r['bearing'])} | {_cell(r['guide'])}"
                 f" | {_cell(r['min_stiffness [N/um]'])} | {_cell(r['min_frequency [Hz]'])}"
                 f" | {_cell(r['cost [EUR]'], 0)} |"
             )
@@ -145,9 +156,15 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
             "motor",
             "coupling",
             "reduction",
+            "rack",
+            "linear_motor",
         ):
+            if slot not in ok.columns:
+                continue
             vc = ok[slot].replace("", None).dropna().value_counts().head(5)
-            if slot in ("motor", "coupling", "reduction") and vc.empty:
+            if vc.empty and (
+                types or slot in ("motor", "coupling", "reduction", "rack", "linear_motor")
+            ):
                 continue
             L.append(f"- {slot}: " + ", ".join(f"{k} ({v})" for k, v in vc.items()))
         L.append("")
@@ -162,6 +179,11 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
             L.append(f"| ... | | {len(bad) - 50} more in the table |")
         L.append("")
     return "\n".join(L)
+
+
+def _given(v) -> bool:
+    """Whether a table cell holds a value (not empty, None or NaN)."""
+    return not (v is None or v == "" or (isinstance(v, float) and not math.isfinite(v)))
 
 
 def _cell(v, nd=1):

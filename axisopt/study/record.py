@@ -58,6 +58,8 @@ def solve_case(context: dict, case: Case) -> dict:
             time_s=time.perf_counter() - t0,
         )
         return rec
+    if problem.drives is not None:  # search.drive_types: the best design of any type
+        return _drive_types_case(rec, problem, context, t0)
     try:
         with _SOLVE_LOCK:
             res = solve(
@@ -129,6 +131,71 @@ def solve_case(context: dict, case: Case) -> dict:
     }
     if res.pareto is not None:
         rec["pareto"] = res.pareto.to_dict()
+    rec["time_s"] = time.perf_counter() - t0
+    return rec
+
+
+def _drive_types_case(rec: dict, problem, context: dict, t0: float) -> dict:
+    """:func:`solve_case` of a problem with search.drive_types: solved over its types
+    (search.drivetype.solve_drive_types), the best design of any type recorded with its drive type, parts,
+    the values every type has (objective, least stiffness, first frequency, cost, moving mass) and its
+    margins; a screw design also with its checks as a screw case records them."""
+    from ..search.drivetype import solve_drive_types
+
+    try:
+        with _SOLVE_LOCK:
+            res = solve_drive_types(
+                problem,
+                context["method"],
+                top=1,
+                time_limit=context.get("time_limit", 100.0),
+            )
+    except InputError as exc:
+        rec.update(
+            status="input_error",
+            reason=short_message(exc).replace("\n", " "),
+            time_s=time.perf_counter() - t0,
+        )
+        return rec
+    except Exception as exc:  # a solver failure is a result of this case, not the end of the study
+        rec.update(
+            status="error",
+            reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
+            time_s=time.perf_counter() - t0,
+        )
+        return rec
+    best = res.best
+    rec["status"] = res.status
+    rec["objective"] = {
+        "label": res.objective_label,
+        "unit": res.objective_unit,
+        "value": None if best is None else _num(best.objective),
+    }
+    rec["reason"] = "" if best is not None else (res.change or "no design of any drive type fits")
+    rec["note"] = "; ".join(res.notes) if best is not None else ""
+    if best is not None:
+        if best.drive_type == "screw":
+            b = best.candidate.to_dict()
+            b.pop("misses", None)
+        else:
+            b = {
+                **{k: (int(v) if k == "forcers" else v) for k, v in best.parts.items()},
+                "objective": _num(best.objective),
+                "min_stiffness": _num(best.stiffness),
+                "min_frequency": _num(best.frequency),
+                "cost": _num(best.cost),
+                "moving_mass": _num(best.moving_mass),
+            }
+            rec["drive_margins"] = {k: _num(float(v)) for k, v in best.margins.items()}
+        rec["best"] = {"drive_type": best.drive_type, **b}
+    rec["certificate"] = {
+        "proven": res.status == "optimal",
+        "gap": 0.0 if res.status == "optimal" else None,
+        "combinations": int(sum(t.combinations for t in res.types)),
+        "feasible": None
+        if any(t.feasible is None for t in res.types)
+        else int(sum(t.feasible for t in res.types)),
+    }
     rec["time_s"] = time.perf_counter() - t0
     return rec
 

@@ -42,7 +42,16 @@ def valid_record(rec, case_id: str) -> bool:
         or not isinstance(rec.get("inputs"), dict)
     ):
         return False
-    for key in ("objective", "best", "profile", "drive", "checks", "certificate", "pareto"):
+    for key in (
+        "objective",
+        "best",
+        "profile",
+        "drive",
+        "checks",
+        "certificate",
+        "pareto",
+        "drive_margins",
+    ):
         if rec.get(key) is not None and not isinstance(rec[key], dict):
             return False
     if rec["status"] in OK_STATUSES and not isinstance(rec.get("objective"), dict):

@@ -105,6 +105,22 @@ def as_text(v):
     return str(v)
 
 
+# a study whose cases choose among drive types (search.drive_types): the best design's type and the part
+# slots of the rack-and-pinion and linear-motor types, beside the screw's
+DRIVE_PART_COLUMNS = ("rack", "twin_pinion", "linear_motor", "forcers")
+
+
+def drive_columns(recs) -> tuple:
+    """((column, best key), ...) of the drive type and its parts, and ((column, margin), ...) of the
+    rack-and-pinion and linear-motor designs' margins, when any record holds such a design (else empty: a
+    screw study's table keeps its columns)."""
+    if not any("drive_type" in (r.get("best") or {}) for r in recs):
+        return [], []
+    parts = [("drive_type", "drive_type")] + [(k, k) for k in DRIVE_PART_COLUMNS]
+    keys = sorted({k for r in recs for k in (r.get("drive_margins") or {})})
+    return parts, [(f"drive {k} margin", k) for k in keys]
+
+
 def records(study, out_dir) -> list:
     """The case records of the study's current cases that are present, in case order."""
     store = CaseStore(out_dir)
@@ -122,8 +138,10 @@ def results_table(study, out_dir):
 
     cols = input_columns(study)
     chk = check_columns()
+    recs = records(study, out_dir)
+    drive_cols, margin_cols = drive_columns(recs)
     rows = []
-    for r in records(study, out_dir):
+    for r in recs:
         row = {"case_id": r["case_id"], "index": r["index"]}
         for key, (name, conv) in cols.items():
             row[name] = conv(r["inputs"].get(key))
@@ -134,6 +152,10 @@ def results_table(study, out_dir):
         checks = r.get("checks") or {}
         for name, c, f in chk:
             row[name] = (checks.get(c) or {}).get(f)
+        for name, key in drive_cols:
+            row[name] = (r.get("best") or {}).get(key)
+        for name, key in margin_cols:
+            row[name] = (r.get("drive_margins") or {}).get(key)
         pareto = r.get("pareto")
         row["pareto_points"] = len(pareto["points"]) if pareto else None
         row["solve_time [s]"] = r.get("time_s")
@@ -145,6 +167,7 @@ def results_table(study, out_dir):
         + ["status", "reason"]
         + [n for n, _ in RESULT_COLUMNS]
         + [n for n, _, _ in chk]
+        + [n for n, _ in drive_cols + margin_cols]
         + ["pareto_points"]
         + list(TIME_COLUMNS)
     )

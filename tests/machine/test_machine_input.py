@@ -63,3 +63,21 @@ def test_shipped_machine_loads():
     assert [a.name for a in m.axes] == ["Y", "X", "Z"]
     assert m.estimated_frames == ("Z",)
     assert m.min_tool_stiffness == (40e6, 40e6, 40e6)
+
+
+def test_machine_axis_listing_drive_types_is_refused(tmp_path, capsys):
+    """A machine sizes its axes as screw drives: an axis problem listing rack and pinion or linear motors
+    is a one-line error naming the key (not a screw sized without a word), exit 2; listing the screw alone
+    is fine."""
+    with open(GOOD) as f:
+        text = f.read()
+    first = text.index("      catalog:")
+    bad = text[:first] + "      search: {drive_types: [screw, linear_motor]}\n" + text[first:]
+    p = tmp_path / "m.yaml"
+    p.write_text(bad)
+    assert main(["machine", "solve", str(p)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "search.drive_types" in err and "screw drives" in err
+    ok = text[:first] + "      search: {drive_types: [screw]}\n" + text[first:]
+    p.write_text(ok)
+    load_machine(p)
