@@ -156,6 +156,7 @@ PARAM_NAMES = (
     # the
     # shaft; the guides' running pitch and yaw (model.accuracy)
     "lead_error",
+    "nut_length",
     "grade_price_factor",
     "guide_pitch",
     "guide_yaw",
@@ -211,6 +212,7 @@ _RULE_COLUMNS = MappingProxyType(
         "screws": (),
         "nuts": (
             "type",
+            "length",
             "rotating",
             "unit_inertia",
             "unit_max_speed",
@@ -250,6 +252,7 @@ _RULE_COLUMNS = MappingProxyType(
 RULE_PARAMS = MappingProxyType(
     {
         ("bearings", "starting_torque"): "bearing_torque",
+        ("nuts", "length"): "nut_length",
         ("nuts", "unit_max_speed"): "unit_max_speed",
         ("nuts", "unit_bearing_rigidity"): "unit_bearing_stiffness",
         ("nuts", "unit_starting_torque"): "unit_bearing_torque",
