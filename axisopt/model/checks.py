@@ -113,7 +113,10 @@ def bearing_life_load(p, loads, travels, static):
             # the groups' loads: HIWIN's pair law for as many rows each way; where the groups differ
             # in rows, IBC's
             # linear split up to the set's own lift-off load (physics.bearingsets.set_halves)
-            halves = [_set_halves(pre, orient * f - static, rows, n_s == n_w) for f in loads]
+            halves = [
+                _set_halves(pre, orient * f - static, rows, n_s == n_w, p["bearing_hertz_split"])
+                for f in loads
+            ]
             means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
             # the equivalent load on the printed (stronger) rating
             ends.append(
@@ -125,12 +128,19 @@ def bearing_life_load(p, loads, travels, static):
     return best
 
 
-def _set_halves(preload, load, rows, symmetric):
-    """The two row groups' loads of a support set (see :func:`bearing_life_load`)."""
+def _set_halves(preload, load, rows, symmetric, hertz=0.0):
+    """The two row groups' loads of a support set (see :func:`bearing_life_load`): HIWIN's pair law for as many
+    rows each way; where the groups differ, the set maker's rule: NSK's Hertz split (``hertz`` 1,
+    physics.bearingsets.hertz_set_halves), else IBC's linear split (physics.bearingsets.set_halves)."""
     pair = pl.preloaded_halves(preload, load)
     if isinstance(symmetric, (bool, np.bool_)) and symmetric:
         return pair
-    rows_halves = psets.set_halves(preload, load, rows[0], rows[1])
+    linear = psets.set_halves(preload, load, rows[0], rows[1])
+    if isinstance(hertz, (int, float)) and not hertz:
+        rows_halves = linear
+    else:
+        exact = psets.hertz_set_halves(preload, load, rows[0], rows[1])
+        rows_halves = tuple(mx.if_else(hertz > 0.5, e, li) for e, li in zip(exact, linear))
     return tuple(mx.if_else(symmetric, a, b) for a, b in zip(pair, rows_halves))
 
 

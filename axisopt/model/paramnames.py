@@ -93,6 +93,7 @@ PARAM_NAMES = (
     "guide_rating_distance",
     "bearing_rows_strong",
     "bearing_rows_weak",
+    "bearing_hertz_split",
     "bearing_static_load",
     "bearing_static_safety",
     "nut_lift_off_safety",
@@ -222,6 +223,7 @@ _RULE_COLUMNS = MappingProxyType(
             "unit_starting_torque",
         ),
         "bearings": (
+            "vendor",
             "bore",
             "outer_diameter",
             "starting_torque",

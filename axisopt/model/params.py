@@ -100,6 +100,10 @@ def axis_params(
             # rows of the bearing set that carry each load direction (catalog.ARRANGEMENT_ROWS)
             "bearing_rows_strong": _arrangement_rows(bearing, 0),
             "bearing_rows_weak": _arrangement_rows(bearing, 1),
+            # each set by its maker's rule (issue 53): NSK rates its sets' row groups with their
+            # Hertz load split (NSK-SP pp. 110-111); a maker that states no set rule: IBC's linear
+            # split (model.checks.bearing_life_load)
+            "bearing_hertz_split": _is_vendor(bearing, HERTZ_SPLIT_VENDORS),
             # the lift-off load of the stronger direction where the catalog lists one (a 3-against-1
             # set), else the
             # set's one lift-off load (the weaker direction's)
@@ -347,6 +351,23 @@ def nut_length(screw, nut):
             _is_type(nut, "double"),
         ),
     )
+
+
+# the bearing makers that rate a set's row groups by the groups' Hertz load split (NSK super-precision
+# bearings pp. 110-111); the others print one set rating and state no rule for the split
+HERTZ_SPLIT_VENDORS = ("NSK",)
+
+
+def _is_vendor(row, vendors):
+    """1.0 where the part's ``vendor`` is one of ``vendors`` (one part or an array of parts); 0 where the row
+    names none (a part written inline without a vendor)."""
+    try:
+        v = row["vendor"]
+    except (KeyError, IndexError):
+        return 0.0
+    if isinstance(v, str):
+        return 1.0 if v in vendors else 0.0
+    return np.isin(np.asarray(v).astype(str), vendors).astype(float)
 
 
 def _is_type(row, value):
