@@ -539,12 +539,11 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                 nlife / ax.life_h,
                 theirs("bearing_life"),
                 their_margin("bearing_life"),
-                "CONV",
+                compare(nlife / ax.life_h, their_margin("bearing_life")),
                 nsrc + " (the set maker's own rule)",
-                nnote
-                + f"; axisopt's fw {fw_ax} on the loads; convention: NSK's Hertz split of the "
-                "groups' loads, exponent 1.1 over the groups; axisopt: IBC's linear split of a "
-                "3-against-1 set (the 2^(3/2) pair law on equal groups), NSK's 1.1, fw applied",
+                nnote + f"; axisopt's fw {fw_ax} on the loads; axisopt applies the same rule to an "
+                "NSK set (its static set load: the pretension and the thermal force of the rise "
+                "beyond the pretension's design rise)",
             )
         )
         rows.append(
@@ -751,7 +750,7 @@ def check_design(design: dict, ev: dict) -> list[Row]:
             )
         )
     for r in rows:
-        if r.kind == "CONV":  # set where the row is made: a convention of this design's parts
+        if r.kind in ("CONV", "AGREE", "DIFF"):  # set where the row is made (this design's parts)
             continue
         same = not any(r.check.startswith(c) for c in vp.CONVENTIONS)
         if r.same_basis is not None:
@@ -821,6 +820,8 @@ SUMMARY = (
     ("J ratio", "inertia ratio load/rotor"),
     ("T rms", "RMS torque"),
     ("T hold", "holding torque at a stop"),
+    ("LM Fp", "peak force (HIWIN Fp)"),
+    ("LM Fe<=0.7Fc", "effective force (HIWIN Fe <= 0.7 Fc)"),
 )
 
 
@@ -852,11 +853,17 @@ def summary_table(results: dict) -> str:
 DRIVE_SOURCES = (
     ("peak force", "H-LMS Appendix A: Fp = M a + (M g + Fa) mu below the peak force (about 1 s)"),
     ("effective force (HIWIN Fe <= 0.7", "H-LMS Appendix A: Fe (RMS over the cycle), Ie/Ic < 0.7"),
-    ("effective force (HIWIN Fe <= Fc", "H-LMS definitions: Fc at 20 degC ambient, 80 degC winding"),
+    (
+        "effective force (HIWIN Fe <= Fc",
+        "H-LMS definitions: Fc at 20 degC ambient, 80 degC winding",
+    ),
     ("acceleration time", "H-LMS definitions: the peak force for about 1 s, then cooling"),
     ("peak current", "H-LMS Appendix A: Ip = Fp / Kf below Ip"),
     ("effective current", "H-LMS Appendix A: Ie = Fe / Kf below Ic"),
-    ("magnet attraction", "H-LMS: the attraction 'must be taken up by the guide' (in both guide rows)"),
+    (
+        "magnet attraction",
+        "H-LMS: the attraction 'must be taken up by the guide' (in both guide rows)",
+    ),
     ("guide", "T-GC A-10/A-32 (fw THK A-704 Table 19), C0/P; the attraction in the block load"),
     ("pinion", "THK A-241 GSR-R: thrust <= capacity / overload factor"),
     ("motor", "Yaskawa Sigma-7 11.2.4: rack load torque, RMS"),

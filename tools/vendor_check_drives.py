@@ -348,11 +348,25 @@ def _check(problem: Path, res: dict) -> tuple[list, dict]:
         )
         # the thermal rating itself: Fc holds at 20 degC ambient, 80 degC winding, 100 % duty; Ie must
         # stay below Ic (H-LMS definitions and Appendix A; the 0.7 above is HIWIN's advised reserve)
-        add("effective force (HIWIN Fe <= Fc, thermal) [N]", f_rms, n * lm["continuous_force"], 1.0, None)
-        if lm["force_constant"]:  # H-LMS Appendix A: Ip = Fp / Kf below the peak current, Ie below Ic
+        add(
+            "effective force (HIWIN Fe <= Fc, thermal) [N]",
+            f_rms,
+            n * lm["continuous_force"],
+            1.0,
+            None,
+        )
+        if lm[
+            "force_constant"
+        ]:  # H-LMS Appendix A: Ip = Fp / Kf below the peak current, Ie below Ic
             kf = lm["force_constant"] * n  # each forcer carries 1/n: its own current
             add("peak current Ip = Fp / Kf [A]", f_peak / kf, lm["peak_current"], 1.0, None)
-            add("effective current Ie = Fe / Kf [A]", f_rms / kf, lm["continuous_current"], 1.0, None)
+            add(
+                "effective current Ie = Fe / Kf [A]",
+                f_rms / kf,
+                lm["continuous_current"],
+                1.0,
+                None,
+            )
         t_acc, run = (
             0.0,
             0.0,
@@ -363,10 +377,19 @@ def _check(problem: Path, res: dict) -> tuple[list, dict]:
         if f_peak > n * lm["continuous_force"]:
             add("acceleration time at peak force (HIWIN ~1 s) [s]", t_acc, 1.0, 1.0, "peak_time")
     load = (m * G + normal + attraction) / blocks
-    if attraction > 0:  # H-LMS: the attraction "must be taken up by the guide": in both guide rows below
+    if (
+        attraction > 0
+    ):  # H-LMS: the attraction "must be taken up by the guide": in both guide rows below
         lines.append(
-            ("magnet attraction on the guides [N]", attraction, float("nan"), float("nan"), "INFO",
-             None, "CONV" if lm["attraction_force"] is None else "ONLY")
+            (
+                "magnet attraction on the guides [N]",
+                attraction,
+                float("nan"),
+                float("nan"),
+                "INFO",
+                None,
+                "CONV" if lm["attraction_force"] is None else "ONLY",
+            )
         )
     fw = fw_thk(vmax)
     life = (guide["dynamic_load_rating"] / (fw * load)) ** (
