@@ -138,10 +138,29 @@ def _set_halves(preload, load, rows, symmetric, hertz=0.0):
     linear = psets.set_halves(preload, load, rows[0], rows[1])
     if isinstance(hertz, (int, float)) and not hertz:
         rows_halves = linear
+    elif not mx.is_symbolic(preload, load, rows[0], rows[1], hertz, symmetric):
+        rows_halves = _hertz_where(preload, load, rows, symmetric, hertz, linear)
     else:
         exact = psets.hertz_set_halves(preload, load, rows[0], rows[1])
         rows_halves = tuple(mx.if_else(hertz > 0.5, e, li) for e, li in zip(exact, linear))
     return tuple(mx.if_else(symmetric, a, b) for a, b in zip(pair, rows_halves))
+
+
+def _hertz_where(preload, load, rows, symmetric, hertz, linear):
+    """Numbers: the linear split with the Hertz split put in only where it applies (a maker's unequal set),
+    computed on those elements alone (the search's arrays hold every bearing)."""
+    args = np.broadcast_arrays(
+        *(np.asarray(v, dtype=float) for v in (preload, load, rows[0], rows[1], hertz)),
+        np.asarray(symmetric, dtype=bool),
+    )
+    use = (args[4] > 0.5) & ~args[5]
+    if not use.any():
+        return linear
+    out = [np.array(np.broadcast_to(li, use.shape), dtype=float) for li in linear]
+    exact = psets.hertz_set_halves(*(a[use] for a in args[:4]))
+    for o, e in zip(out, exact):
+        o[use] = e
+    return tuple(out) if use.ndim else tuple(float(o) for o in out)
 
 
 def bearing_static(p, f_max, static):

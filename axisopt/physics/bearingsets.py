@@ -105,13 +105,18 @@ def hertz_set_halves(preload, load, n_plus, n_minus):
     n_other = mx.if_else(pressed_plus, n_minus, n_plus)
     r = (n_other / n_load) ** (2.0 / 3.0)
     lift = (1.0 + 1.0 / r) ** 1.5
-    s = mx.if_else(f >= lift, r * (mx.fmax(f, 1e-12) ** (2.0 / 3.0) - 1.0), f / (1.5 / r + 1.5))
+    # past lift-off the pressed group carries it all: (1 + s / r)^{3/2} = f in closed form; below it
+    # Newton from the small-load slope, the opened contact floored at 1e-6 of its preload deflection
+    # (a load error below 1e-9 F; bounded derivatives for the solvers)
+    after = r * (mx.fmax(f, 1e-12) ** (2.0 / 3.0) - 1.0)
+    s = mx.fmin(f / (1.5 / r + 1.5), 1.0)
     for _ in range(HERTZ_STEPS):
-        lo = mx.fmax(1.0 - s, 1e-24)
-        hi = mx.fmax(1.0 + s / r, 1e-24)
+        lo = mx.fmax(1.0 - s, 1e-6)
+        hi = mx.fmax(1.0 + s / r, 1e-6)
         g = hi**1.5 - lo**1.5 - f
         dg = 1.5 / r * mx.sqrt(hi) + 1.5 * mx.sqrt(lo)
-        s = s - g / dg
+        s = mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
+    s = mx.if_else(f >= lift, after, s)
     pressed = preload * mx.fmax(1.0 + s / r, 0.0) ** 1.5
     other = preload * mx.fmax(1.0 - s, 0.0) ** 1.5
     return (

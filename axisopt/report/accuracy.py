@@ -15,12 +15,11 @@ def lead_source(grade: str, stroke: float, nut_length: float = 0.0) -> str:
     """How the lead row is read from the grade tables (THK A-678) over the thread the nut travels, stroke +
     nut length (ISO 3408-3's useful travel)."""
     g = grade_table().grade(grade)
-    over = f"{stroke * 1e3:.0f} mm stroke"
-    if nut_length > 0:
-        over += f" + {nut_length * 1e3:.0f} mm nut"
+    over = f"{stroke * 1e3:.0f}"
+    over += f" + {nut_length * 1e3:.0f} mm nut" if nut_length > 0 else " mm"
     if math.isfinite(g.travel_error_300):
-        return f"+-{g.travel_error_300 * 1e6:.0f} um/300 mm, {over}, THK A-678"
-    return f"e_p+v_u, {over}, THK A-678"
+        return f"+-{g.travel_error_300 * 1e6:.0f} um/300 mm over {over}, THK A-678"
+    return f"e_p+v_u over {over}, THK A-678"
 
 
 def reduction_lost_motion(design) -> float:
