@@ -117,8 +117,9 @@ def hertz_set_halves(preload, load, n_plus, n_minus):
         dg = 1.5 / r * mx.sqrt(hi) + 1.5 * mx.sqrt(lo)
         s = mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
     s = mx.if_else(f >= lift, after, s)
-    pressed = preload * mx.fmax(1.0 + s / r, 0.0) ** 1.5
-    other = preload * mx.fmax(1.0 - s, 0.0) ** 1.5
+    # floored above 0: pow(0, 3/2)'s second derivative is not a number (the solvers' Hessian)
+    pressed = preload * mx.fmax(1.0 + s / r, 1e-12) ** 1.5
+    other = preload * mx.fmax(1.0 - s, 1e-12) ** 1.5
     return (
         mx.if_else(pressed_plus, pressed, other),
         mx.if_else(pressed_plus, other, pressed),
