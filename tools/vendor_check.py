@@ -626,6 +626,34 @@ def check_design(design: dict, ev: dict) -> list[Row]:
             ),
         )
     )
+    # the lead band over the thread the nut travels (issue 53): JIS B 1192 / THK A-678 Table 1's e_p + v_u
+    # of the band holding stroke + nut length (ISO 3408-3's useful travel), the nut's length from its
+    # vendor's table (nuts.csv `length`); read here from catalogs/lead_tolerances.csv
+    budget = ev.get("positioning_budget") or {}
+    lead_ax = next(
+        (v for k, v in budget.get("rows_um", {}).items() if k.startswith("lead error")), None
+    )
+    axis_yaml = design.get("axis", {})
+    plain = not axis_yaml.get("pitch_compensation") and axis_yaml.get("feedback") != "linear_scale"
+    if lead_ax is not None and plain and nut.get("length"):
+        travel = ax.stroke + nut["length"]
+        band = vp.lead_band_um(budget.get("grade", "C5"), travel)
+        if band is not None:
+            rows.append(
+                Row(
+                    "lead band over stroke + nut length",
+                    "um",
+                    band,
+                    None,
+                    None,
+                    lead_ax,
+                    None,
+                    "",
+                    "T-GC A-678 Table 1 (JIS B 1192): e_p + v_u of the band of the travelled thread",
+                    f"grade {budget.get('grade', 'C5')}, {ax.stroke * 1e3:.0f} mm stroke + "
+                    f"{nut['length'] * 1e3:.0f} mm nut (its vendor's table) = {travel * 1e3:.0f} mm",
+                )
+            )
     # 6 guides: static safety and travel life at the vendor's rating distance
     if tw:  # the guides carry the whole gantry and the whole force
         ph_guides = vp.duty_phases(ax_guides, moving_guides, friction_guides, 0.0)[0]
