@@ -73,6 +73,7 @@ QTY = {
     "um": 1e-6,
     "N/um": 1e6,
     "Hz": 1.0,
+    "m/s^3": 1.0,
 }
 
 
@@ -101,12 +102,61 @@ def qty(text) -> float:
     return float(value) * QTY[unit.strip()]
 
 
+def accel_times(v: float, a: float, jerk: float | None) -> tuple:
+    """(t_j, t_a, a_peak) of one speed change from rest to ``v``: a trapezoid (t_j 0) without a jerk; with one,
+    the jerk ramps a/j either side of the constant-acceleration stretch, or, where v < a^2/j, two ramps to
+    sqrt(v j) (the S-curve every servo controller runs; written here from the kinematics alone)."""
+    if not jerk:
+        return 0.0, v / a, a
+    if v >= a * a / jerk:
+        return a / jerk, v / a - a / jerk, a
+    ap = math.sqrt(v * jerk)
+    return ap / jerk, 0.0, ap
+
+
+def move_profile(d: float, v: float, a: float, jerk: float | None) -> tuple:
+    """(v, t_j, t_a, a_peak, t_cruise) of a move of length ``d`` at most at speed ``v``: the speed lowered by
+    bisection where the move is too short to reach it (the speed change covers v (t_a + 2 t_j) / 2 each way)."""
+
+    def span(x):
+        tj, ta, _ = accel_times(x, a, jerk)
+        return x * (ta + 2 * tj)
+
+    if span(v) > d:
+        lo, hi = 0.0, v
+        for _ in range(100):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if span(mid) <= d else (lo, mid)
+        v = lo
+    tj, ta, ap = accel_times(v, a, jerk)
+    return v, tj, ta, ap, max(0.0, (d - span(v)) / v)
+
+
+def _ramp(dt: float, tj: float, ta: float, ap: float) -> list:
+    """Accelerations of one speed change sampled every ``dt``: up at the jerk, hold, down (trapezoid: hold)."""
+    out = []
+    t_end = ta + 2 * tj
+    n = max(1, round(t_end / dt))
+    step = t_end / n
+    for k in range(n):
+        t = (k + 0.5) * step
+        if tj > 0 and t < tj:
+            out.append((step, ap * t / tj))
+        elif tj > 0 and t > tj + ta:
+            out.append((step, ap * (t_end - t) / tj))
+        else:
+            out.append((step, ap))
+    return out
+
+
 def profile(axis: dict) -> list:
     """(duration, acceleration, direction, process force) samples of the duty cycle, dt = 0.2 ms; without a
-    duty cycle the rapid move over the stroke and back.  The cutting force acts at feed: the steady thrust
+    duty cycle the rapid move over the stroke and back.  Moves are trapezoids, or S-curves where the axis (or
+    the move) gives a jerk (:func:`move_profile`).  The cutting force acts at feed: the steady thrust
     (:func:`check`), as Yaskawa's selection adds the load torque of the feed."""
     a = qty(axis["acceleration"])
     vmax = qty(axis["max_speed"])
+    jerk_axis = qty(axis["jerk"]) if "jerk" in axis else None
     cycle = axis.get("duty_cycle") or [
         {"move": axis["stroke"]},
         {"move": "-" + str(axis["stroke"])},
@@ -121,13 +171,14 @@ def profile(axis: dict) -> list:
         dist = qty(seg["move"])
         force = qty(seg.get("force", 0))  # a move's own process force (the rapids have none)
         v = qty(seg.get("speed", vmax * 60)) if "speed" in seg else vmax
+        acc = qty(seg["acceleration"]) if "acceleration" in seg else a
+        jerk = qty(seg["jerk"]) if "jerk" in seg else jerk_axis
         s = 1.0 if dist > 0 else -1.0
-        d = abs(dist)
-        v = min(v, math.sqrt(d * a))  # a triangle when the move is short
-        t_acc, t_cruise = v / a, d / v - v / a
-        out += [(dt, s * a, s, force)] * max(1, round(t_acc / dt))
+        v, tj, ta, ap, t_cruise = move_profile(abs(dist), v, acc, jerk)
+        ramp = _ramp(dt, tj, ta, ap)
+        out += [(h, s * x, s, force) for h, x in ramp]
         out += [(dt, 0.0, s, force)] * max(0, round(t_cruise / dt))
-        out += [(dt, -s * a, s, force)] * max(1, round(t_acc / dt))
+        out += [(h, -s * x, s, force) for h, x in ramp]
     return out
 
 
@@ -150,7 +201,10 @@ def fw_thk(v: float) -> float:
     return 1.2 if v <= 0.25 else 1.5 if v <= 1.0 else 2.0 if v <= 2.0 else 3.5
 
 
-def check(problem: Path) -> tuple[list, dict]:
+def check(problem: Path, res: dict | None = None) -> tuple[list, dict]:
+    """(rows, the solve's JSON) of ``problem``'s optimum; ``res``: that JSON where the caller has solved it."""
+    if res is not None:
+        return _check(problem, res)
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "r.json"
         subprocess.run(
@@ -169,6 +223,10 @@ def check(problem: Path) -> tuple[list, dict]:
             capture_output=True,
         )
         res = json.loads(out.read_text(encoding="utf-8"))
+    return _check(problem, res)
+
+
+def _check(problem: Path, res: dict) -> tuple[list, dict]:
     best = res["best"]
     if best is None:
         return [], res
@@ -195,10 +253,11 @@ def check(problem: Path) -> tuple[list, dict]:
 
     def add(name, value, limit, margin_needed, model_key, sense="<="):
         margin = limit / value if sense == "<=" else value / limit
-        model = best["margins"].get(model_key)
+        model = best["margins"].get(model_key) if model_key else None
         ratio = (model / margin) if model else float("nan")
         ok = margin >= margin_needed * (1 - 1e-9)
-        agree = "AGREE" if abs(ratio - 1) < 5e-3 else "DIFF"
+        # a vendor rule the model has no margin of its own for: this checker's alone
+        agree = "ONLY" if model_key is None else "AGREE" if abs(ratio - 1) < 5e-3 else "DIFF"
         lines.append((name, value, limit, margin, "PASS" if ok else "FAIL", model, agree))
 
     if best["drive_type"] == "rack_pinion":
@@ -287,6 +346,27 @@ def check(problem: Path) -> tuple[list, dict]:
             1.0,
             "motor_rms",
         )
+        # the thermal rating itself: Fc holds at 20 degC ambient, 80 degC winding, 100 % duty; Ie must
+        # stay below Ic (H-LMS definitions and Appendix A; the 0.7 above is HIWIN's advised reserve)
+        add(
+            "effective force (HIWIN Fe <= Fc, thermal) [N]",
+            f_rms,
+            n * lm["continuous_force"],
+            1.0,
+            None,
+        )
+        if lm[
+            "force_constant"
+        ]:  # H-LMS Appendix A: Ip = Fp / Kf below the peak current, Ie below Ic
+            kf = lm["force_constant"] * n  # each forcer carries 1/n: its own current
+            add("peak current Ip = Fp / Kf [A]", f_peak / kf, lm["peak_current"], 1.0, None)
+            add(
+                "effective current Ie = Fe / Kf [A]",
+                f_rms / kf,
+                lm["continuous_current"],
+                1.0,
+                None,
+            )
         t_acc, run = (
             0.0,
             0.0,
@@ -297,6 +377,20 @@ def check(problem: Path) -> tuple[list, dict]:
         if f_peak > n * lm["continuous_force"]:
             add("acceleration time at peak force (HIWIN ~1 s) [s]", t_acc, 1.0, 1.0, "peak_time")
     load = (m * G + normal + attraction) / blocks
+    if (
+        attraction > 0
+    ):  # H-LMS: the attraction "must be taken up by the guide": in both guide rows below
+        lines.append(
+            (
+                "magnet attraction on the guides [N]",
+                attraction,
+                float("nan"),
+                float("nan"),
+                "INFO",
+                None,
+                "CONV" if lm["attraction_force"] is None else "ONLY",
+            )
+        )
     fw = fw_thk(vmax)
     life = (guide["dynamic_load_rating"] / (fw * load)) ** (
         10 / 3 if guide["type"] == "roller" else 3
@@ -329,7 +423,7 @@ def main(argv=None) -> int:
         print(
             f"{name:50s} {value:12.4g} {limit:12.4g} {margin:7.3f} {verdict}  {model or float('nan'):7.3f} {agree}"
         )
-    return 0 if all(v == "PASS" for *_, v, _m, _a in lines) else 1
+    return 0 if all(v in ("PASS", "INFO") for *_, v, _m, _a in lines) else 1
 
 
 if __name__ == "__main__":

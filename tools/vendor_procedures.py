@@ -8,9 +8,11 @@ G99TE20-1808, NSK-SP = NSK super-precision bearings, IBC = IBC TI-I-5010.2/E, IK
 
 from __future__ import annotations
 
+import csv
 import math
 import re
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -1008,3 +1010,17 @@ def twin_side(tw, bridge, nut_mass, block_mass_total):
     mc = quantity(tw.get("cross_mass", 0.0))
     whole = bridge + mc + 2 * nut_mass + block_mass_total
     return 0.5 + s / (2 * span), 0.5 * whole + mc * s / (2 * span), whole
+
+
+def lead_band_um(grade: str, travel: float) -> float | None:
+    """e_p + v_u [um] of THK A-678 Table 1 (catalogs/lead_tolerances.csv, C0-C5) for the band holding
+    ``travel`` [m]; None for a grade or travel the table does not hold."""
+    mm = travel * 1e3
+    with open(
+        Path(__file__).resolve().parents[1] / "catalogs" / "lead_tolerances.csv", encoding="utf-8"
+    ) as fh:
+        for r in csv.DictReader(fh):
+            lo, hi = float(r["length_over [mm]"]), float(r["length_upto [mm]"])
+            if r["grade"] == grade and (lo < mm <= hi or (lo == 0 and mm <= hi)):
+                return float(r["travel_deviation [um]"]) + float(r["variation [um]"])
+    return None

@@ -145,6 +145,16 @@ COLUMNS = MappingProxyType(
             # bearing on a
             # stationary screw fixed at both ends (model.checks.unit_checks); the unit columns apply
             # to its rows only
+            # the nut body's length: the lead band is taken over the thread the nut travels,
+            # stroke + this length (physics.accuracy, model.params.grade_params)
+            _c(
+                "length",
+                "length",
+                positive=True,
+                optional=True,
+                estimate="envelope of the catalog's nuts, 2.75 (P + d) single, 5.1 (P + d) double",
+                derived_marker="length",
+            ),
             _c("rotating", "int", optional=True, blank="0: a nut on a rotating screw"),
             *_UNIT_COLUMNS,
         ),

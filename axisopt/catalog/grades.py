@@ -247,17 +247,19 @@ def grade_table() -> GradeTable:
     return load_grade_table(SHIPPED_DIR)
 
 
-def lead_errors(names, travel: float, compensated: bool = False):
-    """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over ``travel`` [m]
-    (``compensated``: :meth:`GradeTable.compensated_error`, what pitch-error compensation leaves)."""
+def lead_errors(names, travel, compensated: bool = False):
+    """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over ``travel`` [m] (a
+    float, or an array that broadcasts with the names: each row's stroke + nut length) (``compensated``:
+    :meth:`GradeTable.compensated_error`, what pitch-error compensation leaves)."""
     t = grade_table()
     import numpy as np  # here: `axisopt parts screws` reads the grade tables without numpy
 
-    names = np.asarray(names)
+    names, travel = np.broadcast_arrays(np.asarray(names), np.asarray(travel, dtype=float))
     uniq, inv = np.unique(names, return_inverse=True)
+    lens, linv = np.unique(travel, return_inverse=True)
     how = t.compensated_error if compensated else t.lead_error
-    vals = np.array([how(str(n), travel) for n in uniq])
-    return vals[inv].reshape(names.shape)
+    vals = np.array([[how(str(n), float(x)) for x in lens] for n in uniq]).reshape(len(uniq), -1)
+    return vals[inv.ravel(), linv.ravel()].reshape(names.shape)
 
 
 @dataclass(frozen=True)

@@ -15,6 +15,7 @@ from ..catalog.loading import Catalog, default_catalog
 from ..catalog.parttable import Row
 from ..errors import ImplausibleInput, InputError
 from ..physics import motion
+from ..physics.nut import nut_length_estimate
 from ..yamlio import Section, close_matches, file_kind, read_yaml, require_kind
 from .axis import BRAKE_MODES, Axis, Counterbalance, Design, TwinDrive
 from .keys import AXIS_KINDS, AXIS_NUMBERS, AXIS_SPEC, DESIGN_SPEC
@@ -473,15 +474,29 @@ def load_design(path) -> Design:
             "unit's; use the motor encoder)",
         )
     grade = parts.get("screw_grade")
-    if grade is not None and not math.isfinite(grade_table().lead_error(grade, axis.stroke)):
+    travel = axis.stroke + _nut_length(parts)
+    if grade is not None and not math.isfinite(grade_table().lead_error(grade, travel)):
         raise psec.error(
             "screw_grade",
-            f"grade {grade} has no lead tolerance over a {axis.stroke * 1e3:.0f} mm "
-            "stroke (THK A-678 Table 1)",
+            f"grade {grade} has no lead tolerance over a {travel * 1e3:.0f} mm "
+            "travelled thread (stroke + nut length; THK A-678 Table 1)",
         )
     if parts.get("motor") is not None and axis.acceleration <= 0 and not axis.duty_cycle:
         raise psec.error("motor", "sizing a motor needs axis.acceleration (or an axis.duty_cycle)")
     return Design(axis=axis, name=name, source=str(path), assumed=assumed, **parts)
+
+
+def _nut_length(parts) -> float:
+    """The design's nut length [m]: its row's ``length``, else the catalog envelope (physics.nut; what
+    model.params.nut_length takes)."""
+    nut, screw = parts.get("nut"), parts.get("screw")
+    if nut is None or screw is None:
+        return 0.0
+    v = nut.get("length") if hasattr(nut, "get") else None
+    if v is not None and math.isfinite(float(v)):
+        return float(v)
+    double = 1.0 if str(nut.get("type")) == "double" else 0.0
+    return float(nut_length_estimate(screw["lead"], screw["nominal_diameter"], double))
 
 
 __all__ = [

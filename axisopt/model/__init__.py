@@ -21,7 +21,7 @@ from .function import (
 from .modes import STEEL_DAMPING
 from .outputs import CHAIN_OUTPUTS, OUTPUT_TABLE, OUTPUTS
 from .paramnames import PARAM_NAMES
-from .params import axis_params, one_design, positions
+from .params import axis_params, nut_length, one_design, positions
 from .request import FULL, MECHANICS, SCREEN, Request
 from .response import axis_response, chain_response, drive_inputs, drive_response
 
@@ -42,6 +42,7 @@ __all__ = [
     "AxisModel",
     "Evaluation",
     "axis_params",
+    "nut_length",
     "axis_response",
     "design_params",
     "drive_inputs",

@@ -112,13 +112,12 @@ def bearing_life_load(p, loads, travels, static):
         ends = []
         for orient in (1.0, -1.0):
             # the groups' loads: HIWIN's pair law for as many rows each way; where the groups differ
-            # in rows, IBC's
-            # linear split up to the set's own lift-off load (physics.bearingsets.set_halves)
-            sym = n_s == n_w
+            # in rows, the set maker's split up to the set's own lift-off load (_set_halves)
+            sym, hz = n_s == n_w, p["bearing_hertz_split"]
             halves = _per_load(
-                lambda f, o=orient, r=rows, s=sym: _set_halves(pre, o * f - static, r, s),
+                lambda f, o=orient, r=rows, s=sym, h=hz: _set_halves(pre, o * f - static, r, s, h),
                 loads,
-                (pre, static, sym, *rows),
+                (pre, static, sym, hz, *rows),
             )
             means = [mx.fmax(pl.cubic_mean([h[k] for h in halves], travels), 1e-9) for k in (0, 1)]
             # the equivalent load on the printed (stronger) rating
@@ -147,13 +146,39 @@ def _per_load(halves, loads, others) -> list:
     return [(plus[i], minus[i]) for i in range(len(f))]
 
 
-def _set_halves(preload, load, rows, symmetric):
-    """The two row groups' loads of a support set (see :func:`bearing_life_load`)."""
+def _set_halves(preload, load, rows, symmetric, hertz=0.0):
+    """The two row groups' loads of a support set (see :func:`bearing_life_load`): HIWIN's pair law for as many
+    rows each way; where the groups differ, the set maker's rule: NSK's Hertz split (``hertz`` 1,
+    physics.bearingsets.hertz_set_halves), else IBC's linear split (physics.bearingsets.set_halves)."""
     pair = pl.preloaded_halves(preload, load)
     if isinstance(symmetric, (bool, np.bool_)) and symmetric:
         return pair
-    rows_halves = psets.set_halves(preload, load, rows[0], rows[1])
+    linear = psets.set_halves(preload, load, rows[0], rows[1])
+    if isinstance(hertz, (int, float)) and not hertz:
+        rows_halves = linear
+    elif not mx.is_symbolic(preload, load, rows[0], rows[1], hertz, symmetric):
+        rows_halves = _hertz_where(preload, load, rows, symmetric, hertz, linear)
+    else:
+        exact = psets.hertz_set_halves(preload, load, rows[0], rows[1])
+        rows_halves = tuple(mx.if_else(hertz > 0.5, e, li) for e, li in zip(exact, linear))
     return tuple(mx.if_else(symmetric, a, b) for a, b in zip(pair, rows_halves))
+
+
+def _hertz_where(preload, load, rows, symmetric, hertz, linear):
+    """Numbers: the linear split with the Hertz split put in only where it applies (a maker's unequal set),
+    computed on those elements alone (the search's arrays hold every bearing)."""
+    args = np.broadcast_arrays(
+        *(np.asarray(v, dtype=float) for v in (preload, load, rows[0], rows[1], hertz)),
+        np.asarray(symmetric, dtype=bool),
+    )
+    use = (args[4] > 0.5) & ~args[5]
+    if not use.any():
+        return linear
+    out = [np.array(np.broadcast_to(li, use.shape), dtype=float) for li in linear]
+    exact = psets.hertz_set_halves(*(a[use] for a in args[:4]))
+    for o, e in zip(out, exact):
+        o[use] = e
+    return tuple(out) if use.ndim else tuple(float(o) for o in out)
 
 
 def bearing_static(p, f_max, static):

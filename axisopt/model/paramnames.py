@@ -93,6 +93,7 @@ PARAM_NAMES = (
     "guide_rating_distance",
     "bearing_rows_strong",
     "bearing_rows_weak",
+    "bearing_hertz_split",
     "bearing_static_load",
     "bearing_static_safety",
     "nut_lift_off_safety",
@@ -156,6 +157,7 @@ PARAM_NAMES = (
     # the
     # shaft; the guides' running pitch and yaw (model.accuracy)
     "lead_error",
+    "nut_length",
     "grade_price_factor",
     "guide_pitch",
     "guide_yaw",
@@ -211,6 +213,7 @@ _RULE_COLUMNS = MappingProxyType(
         "screws": (),
         "nuts": (
             "type",
+            "length",
             "rotating",
             "unit_inertia",
             "unit_max_speed",
@@ -220,6 +223,7 @@ _RULE_COLUMNS = MappingProxyType(
             "unit_starting_torque",
         ),
         "bearings": (
+            "vendor",
             "bore",
             "outer_diameter",
             "starting_torque",
@@ -250,6 +254,7 @@ _RULE_COLUMNS = MappingProxyType(
 RULE_PARAMS = MappingProxyType(
     {
         ("bearings", "starting_torque"): "bearing_torque",
+        ("nuts", "length"): "nut_length",
         ("nuts", "unit_max_speed"): "unit_max_speed",
         ("nuts", "unit_bearing_rigidity"): "unit_bearing_stiffness",
         ("nuts", "unit_starting_torque"): "unit_bearing_torque",

@@ -13,7 +13,7 @@ from ..physics.bearings import (
     housing_stiffness_default,
     support_starting_torque_envelope,
 )
-from ..physics.nut import bracket_stiffness_default, nut_stiffness_catalog
+from ..physics.nut import bracket_stiffness_default, nut_length_estimate, nut_stiffness_catalog
 from .driveparams import drive_params
 from .gantry import gantry_params
 from .paramnames import (
@@ -100,6 +100,10 @@ def axis_params(
             # rows of the bearing set that carry each load direction (catalog.ARRANGEMENT_ROWS)
             "bearing_rows_strong": _arrangement_rows(bearing, 0),
             "bearing_rows_weak": _arrangement_rows(bearing, 1),
+            # each set by its maker's rule (issue 53): NSK rates its sets' row groups with their
+            # Hertz load split (NSK-SP pp. 110-111); a maker that states no set rule: IBC's linear
+            # split (model.checks.bearing_life_load)
+            "bearing_hertz_split": _is_vendor(bearing, HERTZ_SPLIT_VENDORS),
             # the lift-off load of the stronger direction where the catalog lists one (a 3-against-1
             # set), else the
             # set's one lift-off load (the weaker direction's)
@@ -124,7 +128,10 @@ def axis_params(
             "buckling_nut_fixed": 1.0 if axis.buckling_nut_end == "fixed" else 0.0,
         }
     )
-    p.update(grade_params(axis, screw, grade))
+    # the nut's length where its vendor lists it, else the catalog envelope (physics.nut): the lead
+    # band is read over the thread the nut travels, stroke + nut length
+    p["nut_length"] = nut_length(screw, nut)
+    p.update(grade_params(axis, screw, grade, p["nut_length"]))
     p.update(rotating_nut_params(p, nut))
     p.update(mount_compliances(axis, p))
     p.update(carriage_params(axis))
@@ -141,16 +148,20 @@ def axis_params(
     return p
 
 
-def grade_params(axis, screw, grade=None) -> dict:
-    """The lead accuracy grade's parameters: the lead error over the stroke [m] and the price factor on the screw
-    shaft [-] (:mod:`axisopt.catalog.grades`; the catalog price is the C5 price), and the guides' running pitch and yaw
-    [rad].  ``grade``: a name or an array of names (default: the screw row's ``grade``, else C5)."""
+def grade_params(axis, screw, grade=None, nut_length=0.0) -> dict:
+    """The lead accuracy grade's parameters: the lead error over the thread the nut travels, stroke +
+    ``nut_length`` [m] (ISO 3408-3's useful travel: the band of the length the nut's balls run over), the
+    price factor on the screw shaft [-] (:mod:`axisopt.catalog.grades`; the catalog price is the C5 price), and
+    the guides' running pitch and yaw [rad].  ``grade``: a name or an array of names (default: the screw row's
+    ``grade``, else C5); ``nut_length`` a float or an array like the rows."""
     if grade is None:
         try:
             grade = screw["grade"]
         except (KeyError, IndexError, ValueError):
             grade = DEFAULT_GRADE
-    err, factor = lead_errors(grade, axis.stroke, axis.pitch_compensation), price_factors(grade)
+    travel = axis.stroke + np.asarray(nut_length, dtype=float)
+    err = lead_errors(grade, travel if np.ndim(travel) else float(travel), axis.pitch_compensation)
+    factor = price_factors(grade)
     scale = axis.feedback == "linear_scale"
     return {
         "lead_error": err if np.ndim(err) else float(err),
@@ -326,6 +337,37 @@ def _arrangement_rows(row, i):
         [a == k for k in ARRANGEMENT_ROWS], [v[i] for v in ARRANGEMENT_ROWS.values()], np.nan
     )
     return float(rows) if rows.ndim == 0 else rows
+
+
+def nut_length(screw, nut):
+    """The nut's length [m] (one part or arrays of parts): its ``length`` column where its vendor lists one,
+    else the catalog envelope :func:`axisopt.physics.nut.nut_length_estimate` on the screw's lead and diameter.
+    The lead band reads stroke + this length (:func:`grade_params`; the search's grade rows likewise)."""
+    return listed_or(
+        optional_column(nut, "length"),
+        nut_length_estimate(
+            column_value(screw, "lead"),
+            column_value(screw, "nominal_diameter"),
+            _is_type(nut, "double"),
+        ),
+    )
+
+
+# the bearing makers that rate a set's row groups by the groups' Hertz load split (NSK super-precision
+# bearings pp. 110-111); the others print one set rating and state no rule for the split
+HERTZ_SPLIT_VENDORS = ("NSK",)
+
+
+def _is_vendor(row, vendors):
+    """1.0 where the part's ``vendor`` is one of ``vendors`` (one part or an array of parts); 0 where the row
+    names none (a part written inline without a vendor)."""
+    try:
+        v = row["vendor"]
+    except (KeyError, IndexError):
+        return 0.0
+    if isinstance(v, str):
+        return 1.0 if v in vendors else 0.0
+    return np.isin(np.asarray(v).astype(str), vendors).astype(float)
 
 
 def _is_type(row, value):

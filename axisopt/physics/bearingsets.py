@@ -30,7 +30,11 @@ __all__ = [
     "set_rigidity_ratio",
     "set_pressed_load",
     "set_halves",
+    "hertz_set_halves",
 ]
+
+# fixed Newton steps of the Hertz split (one symbolic expression; converged to ~1e-15 as the double nut's)
+HERTZ_STEPS = 12
 
 
 def set_preload_ratio(n_a, n_b):
@@ -79,4 +83,44 @@ def set_halves(preload, load, n_plus, n_minus):
     return (
         mx.if_else(pressed_plus, plus, minus + load),
         mx.if_else(pressed_plus, plus - load, minus),
+    )
+
+
+def hertz_set_halves(preload, load, n_plus, n_minus):
+    r"""Loads [N] on the '+' group (``n_plus`` bearings) and the '-' group of a preloaded set under a signed axial
+    ``load`` [N] (+ presses the '+' group) by Hertz's contact law itself, as the set's maker rates it (NSK
+    super-precision bearings pp. 110-111: each group's load from the bearings' load-deflection law): both groups
+    carry the preload F at no load, each bearing deflects as (Q / K)^{2/3}, the pressed group's contacts close
+    by the shift u the other's open.  With r = (n_other / n_load)^{2/3} (the pressed group's preload deflection
+    over the other's) and s = u over the other group's:
+
+    .. math:: (1 + s / r)^{3/2} - (1 - s)_+^{3/2} = |F_{ext}| / F
+
+    solved by fixed Newton steps (floats, arrays and CasADi symbols alike), lift-off at s = 1, i.e. at
+    F (1 + (n_load/n_other)^{2/3})^{3/2} (:func:`set_lift_off`: IBC Table 2.2's X Fv).  Below the linear split of
+    :func:`set_halves` everywhere (the exact split is convex).  Returns (F_+, F_-)."""
+    f = mx.fabs(load) / mx.fmax(preload, 1e-12)
+    pressed_plus = load >= 0.0
+    n_load = mx.if_else(pressed_plus, n_plus, n_minus)
+    n_other = mx.if_else(pressed_plus, n_minus, n_plus)
+    r = (n_other / n_load) ** (2.0 / 3.0)
+    lift = (1.0 + 1.0 / r) ** 1.5
+    # past lift-off the pressed group carries it all: (1 + s / r)^{3/2} = f in closed form; below it
+    # Newton from the small-load slope, the opened contact floored at 1e-6 of its preload deflection
+    # (a load error below 1e-9 F; bounded derivatives for the solvers)
+    after = r * (mx.fmax(f, 1e-12) ** (2.0 / 3.0) - 1.0)
+    s = mx.fmin(f / (1.5 / r + 1.5), 1.0)
+    for _ in range(HERTZ_STEPS):
+        lo = mx.fmax(1.0 - s, 1e-6)
+        hi = mx.fmax(1.0 + s / r, 1e-6)
+        g = hi**1.5 - lo**1.5 - f
+        dg = 1.5 / r * mx.sqrt(hi) + 1.5 * mx.sqrt(lo)
+        s = mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
+    s = mx.if_else(f >= lift, after, s)
+    # floored above 0: pow(0, 3/2)'s second derivative is not a number (the solvers' Hessian)
+    pressed = preload * mx.fmax(1.0 + s / r, 1e-12) ** 1.5
+    other = preload * mx.fmax(1.0 - s, 1e-12) ** 1.5
+    return (
+        mx.if_else(pressed_plus, pressed, other),
+        mx.if_else(pressed_plus, other, pressed),
     )

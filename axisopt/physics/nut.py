@@ -20,6 +20,8 @@ __all__ = [
     "preload_ceiling",
     "MOUNTING_SHARE",
     "bracket_stiffness_default",
+    "NUT_LENGTH_FACTORS",
+    "nut_length_estimate",
 ]
 
 POISSON_STEEL = 0.3
@@ -262,3 +264,20 @@ def bracket_stiffness_default(nut_stiffness, share=MOUNTING_SHARE):
     components); applying it to the bracket is our estimate (no published bracket stiffness).
     """
     return nut_stiffness * share / (1.0 - share)
+
+
+# The nut body's length over (lead + nominal diameter), the largest of the vendor rows of
+# catalogs/nuts.csv (212 rows read from H-BS Tables 6.4-7.1, T-GC B-652-B-721 and BR-BS pp. 37/45):
+# single nuts 2.71 (THK BNF4016-5), double nuts 5.05 (THK BNFN1605-5); rounded up.  No vendor
+# publishes a length rule; an upper envelope never makes the travelled thread shorter than the
+# catalog's nuts of the same lead and diameter make it.
+NUT_LENGTH_FACTORS = (2.75, 5.1)  # (single, double) [-]
+
+
+def nut_length_estimate(lead, nominal_diameter, double):
+    """The length of a ball nut whose vendor lists none [m]: the upper envelope
+    ``f (P + d)`` of the catalog's vendor rows (:data:`NUT_LENGTH_FACTORS`; f = 2.75 for a single nut, 5.1 for
+    a double nut, ``double`` 0 or 1).  What the lead band reads: the nut travels stroke + its length of thread
+    (ISO 3408-3's useful travel; THK A-677).  Floats, arrays and CasADi symbols alike."""
+    single, pair = NUT_LENGTH_FACTORS
+    return (single + (pair - single) * double) * (lead + nominal_diameter)

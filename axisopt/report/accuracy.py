@@ -6,16 +6,20 @@ from __future__ import annotations
 import math
 
 from ..catalog.grades import SCALE_GRADES, grade_table
+from ..model import nut_length
 
 ARCSEC = math.pi / 180.0 / 3600.0
 
 
-def lead_source(grade: str, stroke: float) -> str:
-    """How the lead row is read from the grade tables (THK A-678)."""
+def lead_source(grade: str, stroke: float, nut_length: float = 0.0) -> str:
+    """How the lead row is read from the grade tables (THK A-678) over the thread the nut travels, stroke +
+    nut length (ISO 3408-3's useful travel)."""
     g = grade_table().grade(grade)
+    over = f"{stroke * 1e3:.0f}"
+    over += f" + {nut_length * 1e3:.0f} mm nut" if nut_length > 0 else " mm"
     if math.isfinite(g.travel_error_300):
-        return f"+-{g.travel_error_300 * 1e6:.0f} um/300 mm over the stroke, THK A-678 Table 1"
-    return f"e_p + v_u over {stroke * 1e3:.0f} mm, THK A-678 Table 1"
+        return f"+-{g.travel_error_300 * 1e6:.0f} um/300 mm over {over}, THK A-678"
+    return f"e_p+v_u over {over}, THK A-678"
 
 
 def reduction_lost_motion(design) -> float:
@@ -57,7 +61,7 @@ def budget_rows(ev) -> list:
             lead_row = (
                 f"lead error, grade {d.grade}",
                 float(v["lead_error"]),
-                lead_source(d.grade, a.stroke),
+                lead_source(d.grade, a.stroke, float(nut_length(d.screw, d.nut))),
             )
         # the design's own growth (model.chain at its preload), not the budget's bound at the nut's
         # top preload

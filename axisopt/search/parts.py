@@ -128,21 +128,24 @@ def _grades_chosen(problem: Problem) -> bool:
     )
 
 
-def screw_grade_rows(problem: Problem, screws) -> tuple:
+def screw_grade_rows(problem: Problem, screws, nut_lengths=0.0) -> tuple:
     """(row positions, grade names): each screw row repeated once per grade the search may give it -- those its
     series is made in (catalogs/screw_grades.csv), within the problem's ``catalog.screw_grades``, with a
-    tolerance over the stroke (THK lists no C0 beyond 1600 mm), and not dominated (a grade that costs as much
-    as a more accurate one is left out: C7 on a precision shaft, priced as C5)."""
+    tolerance over the thread its nut travels, stroke + ``nut_lengths`` (one per row, or one for all; THK lists
+    no C0 beyond 1600 mm), and not dominated (a grade that costs as much as a more accurate one is left out: C7
+    on a precision shaft, priced as C5)."""
     t = grade_table()
     allowed = problem.restrictions.screw_grades
-    stroke = problem.axis.stroke
+    travels = problem.axis.stroke + np.broadcast_to(
+        np.asarray(nut_lengths, dtype=float), (len(screws["vendor"]),)
+    )
     rep, names = [], []
     cache: dict = {}
     for i, (vendor, series) in enumerate(zip(screws["vendor"], screws["series"])):
-        key = (str(vendor), str(series))
+        key = (str(vendor), str(series), float(travels[i]))
         if key not in cache:
-            opts = [g for g in t.orderable(*key) if allowed is None or g in allowed]
-            opts = [(t.grade(g).price_factor, t.lead_error(g, stroke), g) for g in opts]
+            opts = [g for g in t.orderable(*key[:2]) if allowed is None or g in allowed]
+            opts = [(t.grade(g).price_factor, t.lead_error(g, key[2]), g) for g in opts]
             opts = sorted((o for o in opts if np.isfinite(o[1])), key=lambda o: (o[0], o[1]))
             kept, best = [], np.inf
             for _, err, g in opts:
@@ -250,7 +253,7 @@ def _build_space(problem: Problem) -> Space:
     grades = None
     # each nut row once per grade of its screw the search may choose (screw x grade)
     if _grades_chosen(problem):
-        rep, grades = screw_grade_rows(problem, screws_al)
+        rep, grades = screw_grade_rows(problem, screws_al, model.nut_length(screws_al, nuts))
         nuts, lo, hi, screws_al = nuts.take(rep), lo[rep], hi[rep], screws_al.take(rep)
         if len(nuts) == 0:
             raise InputError(

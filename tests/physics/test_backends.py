@@ -170,6 +170,10 @@ CASES = [
     case(nut.lift_off_force, kw=dict(preload=1500.0)),
     case(nut.preload_ceiling, kw=dict(dynamic_load_rating=45e3)),
     case(nut.double_nut_shift, kw=dict(force_ratio=(0.5, 2.0, 4.0))),
+    case(
+        nut.nut_length_estimate,
+        kw=dict(lead=0.01, nominal_diameter=0.04, double=(0.0, 1.0, 1.0)),
+    ),
     case(nut.preloaded_pair_load, kw=dict(preload=1500.0, axial_load=(1000.0, 5000.0, 3000.0))),
     case(
         nut.double_nut_stiffness_under_load,

@@ -36,11 +36,6 @@ WIDER = {
         "fixed-free: HIWIN's f_n 0.147 (F 3.27) is 6.3 % below THK's "
         "lambda_2 3.4 (A-696), which axisopt applies",
     ),
-    ("laser_problem", "buckling"): (
-        0.04,
-        "as every file's buckling row, with axisopt's viscous guide friction at "
-        "80 m/min in the load (+1.8 % more)",
-    ),
     ("lathe_z_problem", "tensile/compressive load"): (
         0.03,
         "the pretension: the checker takes THK's 12e-6/K "
@@ -70,14 +65,26 @@ WIDER = {
         0.04,
         "THK's 12e-6/K against HIWIN's 11.6e-6/K",
     ),
-    ("laser_problem", "guide L10 travel"): (
-        0.06,
-        "the same trapezoidal against jerk-limited moves on the blocks' cubic mean load: 4.5 %",
+    (None, "support bearing L10 life"): (
+        0.05,
+        "an NSK set by NSK's rule on both sides; on sets with as many rows each way axisopt keeps "
+        "HIWIN's pair law (2^(3/2)), whose loads lie 3-4 % above the Hertz split's: conservative",
     ),
-    ("laser_problem", "nut L10 life"): (
-        0.07,
-        "the checker's moves are trapezoidal, axisopt's jerk-limited (300 "
-        "m/s^3: 50 ms ramps to 15 m/s^2 carry less inertia load): 6 %",
+    ("lathe_z_problem", "support bearing L10 life"): (
+        0.06,
+        "NSK's rule on both sides; the pretension on the set: THK's 12e-6/K (checker) against "
+        "HIWIN's 11.6e-6/K (axisopt) for the Rexroth shaft, as its thermal pretension row",
+    ),
+    ("lathe_z_belt_problem", "support bearing L10 life"): (
+        0.09,
+        "NSK's rule on both sides; the static set load differs as on the boring table (axisopt "
+        "adds the heat balance's rise beyond the pretension's design rise) and by the alpha",
+    ),
+    ("boring_table_problem", "support bearing L10 life"): (
+        0.2,
+        "NSK's rule on both sides; axisopt's static set load adds the thermal force of the heat "
+        "balance's rise (3.7 K) beyond the pretension's design rise (2 K): with the rise stated "
+        "at 2 K axisopt gives 27,639 h against the checker's 27,679 h",
     ),
     ("vmc_x_problem", "nut L10 life"): (
         0.05,
@@ -103,18 +110,12 @@ WIDER = {
 # this checker does not compute)
 KNOWN_FAILS = {
     "teaching_design": {"nut L10 life", "support bearing L10 life"},
-    # issue 54's boring table on NSK 3-against-1 sets: IBC's Table 2.2 read per bearing (the i^-0.7
-    # load of each of the three rows, then eq. 2.39 over the three) gives 15 300 h; the bearing
-    # maker's own three-row rating with an exact Hertz split at the worse end 27 700 h (the row
-    # "support bearing L10 life (NSK ratings)", which passes); axisopt 20 000 h
-    "boring_table_problem": {"support bearing L10 life"},
-    # the same reading on the twin gantry, whose optimum moved onto NSK 50TAC100B-DFT-C10 sets with
-    # the
-    # belt stages (issue 54): IBC per bearing 7 534 h, NSK's three-row rating 14 183 h (passes),
-    # axisopt
-    # 11 134 h, against 10 000 h
-    "gantry_twin_problem": {"support bearing L10 life"},
+    # issue 53: an NSK 3-against-1 set (the boring table's and the twin gantry's 50TAC100B-DFT) is
+    # judged by NSK's own group rating with the Hertz split (NSK-SP pp. 110-111), which both pass;
+    # IBC's per-bearing reading (15 300 h and 7 534 h) is printed beside it, not judged
 }
+# shipped optima whose drive is not a screw: the drive checker's rows (tools/vendor_check_drives.py)
+DRIVE_FILES = {"laser_problem"}
 FILES = [
     "teaching_problem",
     "highspeed_problem",
@@ -189,7 +190,9 @@ def test_agrees_with_axisopt_where_same_method(name, tmp_path_factory):
         tol = WIDER.get((name, r["check"]), WIDER.get((None, r["check"]), (TOLERANCE, "")))[0]
         assert pair[0] == pytest.approx(pair[1], rel=tol), f"{name}: {r['check']} {pair}"
         checked += 1
-    assert checked >= 8  # the checks of screw, nut, guides and drive that both compute the same way
+    # the checks of screw, nut, guides and drive that both compute the same way (a linear motor:
+    # peak and effective force, the peak's duration, the guides)
+    assert checked >= (4 if name in DRIVE_FILES else 8)
 
 
 def test_fixed_fixed_pretension_and_tension(tmp_path):
