@@ -21,7 +21,7 @@ from ..model.limits import LIMITS
 from ..problem import Problem
 from .certificate import Certificate
 from .result import INFEASIBLE, OPTIMAL, SOLVER_FAILED, TIME_LIMIT, SolveResult
-from .sensitivity import RELAX, cut_note, estimated_at_optimum, limit_sensitivities
+from .sensitivity import RELAX, SOLVED, cut_note, estimated_at_optimum, limit_sensitivities
 from .task import Task
 
 if TYPE_CHECKING:
@@ -62,6 +62,9 @@ def _run_search(task: Task, method: str, top: int, time_limit: float, t0: float)
         ex, stats = bound_order_search(
             task.space, task.constraints, task.objective, top=top, deadline=t0 + time_limit
         )
+        # the limit sensitivities' re-solves take its solved combinations from here
+        # (sensitivity.reusable)
+        task.space._cache[SOLVED] = (task.constraints, task.objective, ex)
     return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit)
 
 
@@ -155,6 +158,7 @@ def solve(
     top: int = 5,
     time_limit: float = 100.0,
     sensitivities: bool = True,
+    explain: bool = True,
 ) -> SolveResult:
     """Solve a sizing problem.
 
@@ -166,6 +170,9 @@ def solve(
     sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that allow it);
                     and, when nothing fits (default method), the design change a search verifies
                     (:mod:`.advice`); a batch study leaves both out
+    explain       : an infeasible answer of the default or exhaustive method carries its explanation (the
+                    closest designs, what to relax); False: the status alone (a what-if that reads only
+                    whether a design exists and its optimum)
 
     What the search left out of the design (the drive, and why) is on the answer's ``left_out``.
     """
@@ -176,7 +183,14 @@ def solve(
             source=problem.source,
             where="search.drive_types",
         )
-    res = _solve(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
+    res = _solve(
+        problem,
+        method,
+        top=top,
+        time_limit=time_limit,
+        sensitivities=sensitivities,
+        explain=explain,
+    )
     _shown_sign(problem, res)
     why = problem.restrictions.drive_left_out
     if why and not res.left_out:
@@ -215,6 +229,7 @@ def _solve(
     top: int = 5,
     time_limit: float = 100.0,
     sensitivities: bool = True,
+    explain: bool = True,
 ) -> SolveResult:
     """:func:`solve` without the left-out statement."""
     if method not in METHODS_BY_NAME:
@@ -257,7 +272,7 @@ def _solve(
             build_task(problem, objective_spec(ob.order[1])), m, top, time_limit, t0
         )
     else:
-        task = build_task(problem)
+        task = replace(build_task(problem), explain=explain)
         res = m.run(task, method, top, time_limit, t0)
         # the whole command's: the what-ifs below stop there too, and say so
         deadline = t0 + time_limit
@@ -416,6 +431,19 @@ def scalar_result(
             time.perf_counter() - t0,
             message="the time limit came before any design was found: not "
             "proven infeasible (a longer --time-limit searches on)",
+        )
+    if not np.isfinite(ex.objective).any() and not task.explain:
+        return SolveResult(
+            INFEASIBLE,
+            method,
+            problem.name,
+            spec.label,
+            spec.unit,
+            None,
+            [],
+            Certificate.of(stats),
+            time.perf_counter() - t0,
+            message="no catalog combination meets every limit (not explained: asked without)",
         )
     if not np.isfinite(ex.objective).any():
         from .infeasible.explain import explain_infeasible
