@@ -233,9 +233,7 @@ def exact_solve(
 
                 else:
                     good_r = good
-                a_r, _ = kary_bracket(
-                    good_r, a0[r], z0[r], P, kary_rounds(P) - first_rounds
-                )
+                a_r, _ = kary_bracket(good_r, a0[r], z0[r], P, kary_rounds(P) - first_rounds)
                 a0[r] = a_r
                 a[j_all] = a0[inv]
         pstar = np.where(ok_up_hi, hi[:, 0], a)
