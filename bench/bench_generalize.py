@@ -69,7 +69,12 @@ def run_case(job):
     r["status"] = res["status"] if res else None
     cert = (res or {}).get("certificate") or {}
     r["combinations"] = cert.get("combinations")
-    r["objective"] = ((res or {}).get("objective") or {}).get("value")
+    obj = (res or {}).get("objective")
+    # a scalar answer's objective is a dict (label, unit, value); a Pareto answer's names its goals
+    r["objective"] = obj.get("value") if isinstance(obj, dict) else None
+    # what the closest design of an infeasible answer misses (the check names)
+    closest = ((res or {}).get("infeasibility") or {}).get("closest") or []
+    r["misses"] = sorted((closest[0].get("misses") or {}) if closest else {})
     r["pareto"] = bool((res or {}).get("pareto"))
     r["index"], r["name"], r["text"] = index, name, text
     r["crash"] = ("Traceback" in r["stderr"]) or r["rc"] not in (0, 1, 2, None)
@@ -200,6 +205,15 @@ def main(argv=None):
             f"  CPU {r['cpu']:6.2f} s  wall {r['wall']:6.2f} s  exit {r['rc']}  {r['status'] or '-':<12} "
             f"{r['name']}"
         )
+    tally: dict = {}
+    for r in rs:
+        for m in r.get("misses") or ():
+            tally[m] = tally.get(m, 0) + 1
+    if tally:
+        n_inf = sum(r["rc"] == 1 for r in rs)
+        print(f"what the closest design misses (of {n_inf} infeasible answers):")
+        for m, k in sorted(tally.items(), key=lambda t: -t[1]):
+            print(f"  {k:4d}  {m}")
     if errs:
         print("input errors (first 8):")
         for r in errs[:8]:
@@ -228,6 +242,7 @@ def main(argv=None):
                             "status",
                             "combinations",
                             "objective",
+                            "misses",
                             "stderr",
                         )
                     }

@@ -107,6 +107,7 @@ def _sensitivities(
                 top=1,
                 sensitivities=False,
                 time_limit=max(left, 1e-3),
+                explain=False,  # only whether it has a design, and its optimum, are read
             )
             if rr.status not in (OPTIMAL, INFEASIBLE):
                 cut.append(b.limit)
@@ -215,6 +216,8 @@ def solve_arrangements(
         return _pareto(problem, method, subs, labels, t0, door, time_limit)
     # one time limit for the whole command: each arrangement gets what the ones before it left
     deadline = t0 + time_limit
+    # an infeasible arrangement is explained only when none has a design (its explanation is then
+    # the answer's): searched again then, with the explanation
     results = [
         solve(
             sub,
@@ -222,12 +225,26 @@ def solve_arrangements(
             top=top,
             time_limit=max(deadline - time.perf_counter(), 1e-3),
             sensitivities=False,
+            explain=False,
         )
         for sub in subs
     ]
+    found = [i for i, r in enumerate(results) if r.best is not None]
+    if not found:
+        results = [
+            solve(
+                sub,
+                method,
+                top=top,
+                time_limit=max(deadline - time.perf_counter(), 1e-3),
+                sensitivities=False,
+            )
+            if r.status == INFEASIBLE
+            else r
+            for sub, r in zip(subs, results)
+        ]
     n = len(results)
     cert = _certificate(results)
-    found = [i for i, r in enumerate(results) if r.best is not None]
     tried = f"{n} arrangements tried ({'; '.join(labels)})"
     if not found:
         close = min(range(n), key=lambda i: _miss(results[i]))

@@ -12,7 +12,7 @@ import numpy as np
 from . import task as vocabulary
 from .bounds import block_bounds
 from .certificate import SearchStats
-from .preload import concat_exact, exact_solve
+from .preload import concat_exact, exact_solve, new_exact
 from .screen import group_end, screen_blocks
 from .task.objective import ObjectiveSpec, objective_floor
 from .task.space import Space
@@ -28,6 +28,7 @@ def bound_order_search(
     incumbent: float = -np.inf,
     first_feasible: bool = False,
     deadline: float | None = None,
+    known=None,
 ):
     """Default method core: best-first over blocks of combinations, never forming the whole product.
 
@@ -46,6 +47,9 @@ def bound_order_search(
     and every :data:`.task.PROGRESS` seconds a progress record goes to the "axisopt" logger (a terminal shows it).
     ``first_feasible``: stop at the first exact solve that
     finds a feasible design (a feasibility test, no optimum: search.advice).
+    ``known``: an Exact of this space whose feasible rows are what :func:`exact_solve` gives under these
+    constraints too (the main search's, for a limit relaxed that does not move the best preload:
+    search.sensitivity); those rows are taken from it instead of solved again.
     Returns (Exact of evaluated combinations, :class:`.certificate.SearchStats`)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
@@ -92,7 +96,7 @@ def bound_order_search(
             cand = np.nonzero(pool_bnd >= max(nxt, floor))[0]
             take = cand[np.argsort(-pool_bnd[cand], kind="stable")[:batch]]
             batch = min(batch * 2, 131072)
-            ex = exact_solve(space, pool_idx[take], constraints, objective)
+            ex = solve_known(space, pool_idx[take], constraints, objective, known)
             n_eval += len(take)
             parts.append(ex)
             keep = np.ones(len(pool_bnd), dtype=bool)
@@ -145,6 +149,11 @@ def bound_order_search(
     return ex, stats
 
 
+# the key of the default search's solved combinations in its space's cache: (constraints, objective,
+# Exact), set by :func:`run` (the limit sensitivities' re-solves take them: search.sensitivity.reusable)
+SOLVED = ("solved by the default search",)
+
+
 def run(task, method: str, top: int, time_limit: float, t0: float):
     """The default method's runner (``search.front.METHOD_TABLE``): :func:`bound_order_search`
     over ``task``, stopped at ``t0 + time_limit``, then its result (:func:`.polish.scalar_result`)."""
@@ -153,4 +162,36 @@ def run(task, method: str, top: int, time_limit: float, t0: float):
     ex, stats = bound_order_search(
         task.space, task.constraints, task.objective, top=top, deadline=t0 + time_limit
     )
+    task.space._cache[SOLVED] = (task.constraints, task.objective, ex)
     return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit)
+
+
+def solve_known(space: Space, idx, constraints, objective: ObjectiveSpec, known=None):
+    """:func:`exact_solve` of the combinations ``idx``, the feasible rows of ``known`` (an Exact, or None)
+    copied from it rather than solved again (see :func:`bound_order_search`)."""
+    idx = np.asarray(idx, dtype=np.int64)
+    if known is None or not len(idx) or not len(known.idx):
+        return exact_solve(space, idx, constraints, objective)
+    order = np.argsort(known.idx, kind="stable")
+    keys = known.idx[order]
+    at = np.minimum(np.searchsorted(keys, idx), len(keys) - 1)
+    src = order[at]
+    hit = (keys[at] == idx) & known.feasible[src]
+    if not hit.any():
+        return exact_solve(space, idx, constraints, objective)
+    res = new_exact(idx)
+    h, s = np.nonzero(hit)[0], src[hit]
+    res.feasible[h], res.preload[h], res.objective[h] = True, known.preload[s], known.objective[s]
+    for key, v in known.goals.items():
+        res.goals[key][h] = v[s]
+    miss = np.nonzero(~hit)[0]
+    if len(miss):
+        ex = exact_solve(space, idx[miss], constraints, objective)
+        res.feasible[miss], res.preload[miss], res.objective[miss] = (
+            ex.feasible,
+            ex.preload,
+            ex.objective,
+        )
+        for key, v in ex.goals.items():
+            res.goals[key][miss] = v
+    return res

@@ -130,6 +130,7 @@ def solve(
     top: int = 5,
     time_limit: float = 100.0,
     sensitivities: bool = True,
+    explain: bool = True,
 ) -> SolveResult:
     """Solve a sizing problem.
 
@@ -141,6 +142,9 @@ def solve(
     sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that allow it);
                     and, when nothing fits (default method), the design change a search verifies
                     (:mod:`.advice`); a batch study leaves both out
+    explain       : an infeasible answer of the default or exhaustive method carries its explanation (the
+                    closest designs, what to relax); False: the status alone (a what-if that reads only
+                    whether a design exists and its optimum)
 
     What the search left out of the design (the drive, and why) is on the answer's ``left_out``.
     """
@@ -151,7 +155,14 @@ def solve(
             source=problem.source,
             where="search.drive_types",
         )
-    res = _solve(problem, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
+    res = _solve(
+        problem,
+        method,
+        top=top,
+        time_limit=time_limit,
+        sensitivities=sensitivities,
+        explain=explain,
+    )
     ob = problem.objective
     if ob.mode != "pareto" and res.pareto is None:
         from .task.objective import objective_spec
@@ -190,6 +201,7 @@ def _solve(
     top: int = 5,
     time_limit: float = 100.0,
     sensitivities: bool = True,
+    explain: bool = True,
 ) -> SolveResult:
     """:func:`solve` without the left-out statement."""
     if method not in METHODS_BY_NAME:
@@ -232,7 +244,7 @@ def _solve(
             build_task(problem, objective_spec(ob.order[1])), m, top, time_limit, t0
         )
     else:
-        task = build_task(problem)
+        task = replace(build_task(problem), explain=explain)
         res = m.run(task, method, top, time_limit, t0)
         # the whole command's: the what-ifs below stop there too, and say so
         deadline = t0 + time_limit

@@ -197,6 +197,19 @@ def scalar_result(
             message="the time limit came before any design was found: not "
             "proven infeasible (a longer --time-limit searches on)",
         )
+    if not np.isfinite(ex.objective).any() and not task.explain:
+        return SolveResult(
+            INFEASIBLE,
+            method,
+            problem.name,
+            spec.label,
+            spec.unit,
+            None,
+            [],
+            Certificate.of(stats),
+            time.perf_counter() - t0,
+            message="no catalog combination meets every limit (not explained: asked without)",
+        )
     if not np.isfinite(ex.objective).any():
         from .infeasible.explain import explain_infeasible
         from .infeasible.relax import missing_values, rank_relaxations

@@ -32,6 +32,9 @@ GOLDEN_STEPS = 60  # golden-section steps for the most favourable preload of a c
 BISECTION_STEPS = 52
 # k-ary threshold search (default method): most preloads tried per round in one evaluation
 SEARCH_POINTS = 64
+# exact_solve: bits of the threshold bracket after which the combinations that miss a limit a higher
+# preload helps even at its upper end are dropped (the rest refined to BISECTION_STEPS)
+COARSE_BITS = 8
 
 
 def golden_best(value, a, b, steps=GOLDEN_STEPS):
@@ -56,19 +59,30 @@ def kary_threshold(good, a, z, points: int = SEARCH_POINTS):
     point).  Each round tries ``points - 1`` evenly spaced preloads in one vectorized call of
     ``good(pre (K, points - 1)) -> bool (K, points - 1)`` and keeps the segment where it stops holding, so
     the bracket shrinks ``points``-fold per round: to the bisection's 2^-52 in 9 calls instead of 52."""
+    return kary_bracket(good, a, z, points)[0]
+
+
+def kary_rounds(points: int, bits: int = BISECTION_STEPS) -> int:
+    """Rounds of :func:`kary_bracket` with ``points`` that shrink a bracket 2^``bits``-fold."""
+    return math.ceil(bits / math.log2(points))
+
+
+def kary_bracket(good, a, z, points: int = SEARCH_POINTS, rounds: int | None = None):
+    """:func:`kary_threshold`'s bracket (a where ``good`` holds, z above the threshold) after ``rounds``
+    rounds (default: :func:`kary_rounds`, to the bisection's 2^-52)."""
     a, z = np.array(a, dtype=float), np.array(z, dtype=float)
     if not a.size:
-        return a
+        return a, z
     t = np.arange(1, points) / points
     rows = np.arange(len(a))
-    for _ in range(math.ceil(BISECTION_STEPS / math.log2(points))):
+    for _ in range(kary_rounds(points) if rounds is None else rounds):
         pts = a[:, None] + (z - a)[:, None] * t[None, :]
         ok = np.asarray(good(pts), dtype=bool).reshape(pts.shape)
         lead = np.cumprod(ok, axis=1).sum(axis=1)  # points that hold before the first that does not
         a_new = np.where(lead > 0, pts[rows, np.maximum(lead - 1, 0)], a)
         z = np.where(lead < points - 1, pts[rows, np.minimum(lead, points - 2)], z)
         a = a_new
-    return a
+    return a, z
 
 
 def search_points(k: int) -> int:
@@ -192,7 +206,36 @@ def exact_solve(
             def good(pre, pr=pr, upc=upc, x1=x1, mounting=mounting, parts=parts):
                 return ok_all(upc, respond(pr, x1, mounting, pre.reshape(-1, 1), parts), pre.size)
 
-            a[j_all] = kary_threshold(good, a[j], bb[j], P)[inv]
+            first_rounds = min(kary_rounds(P, COARSE_BITS), kary_rounds(P))
+            a0, z0 = kary_bracket(good, a[j], bb[j], P, first_rounds)
+            a[j_all] = a0[inv]
+            # a limit a higher preload helps (lift-off, minimum stiffness or frequency) missed at the
+            # bracket's upper end misses at every preload below it, the threshold among them: those
+            # combinations are infeasible, their threshold not refined (the answer is the same)
+            if low:
+                zr = z0[inv]
+                sub = subset(p, j_all, k)
+                out_z = respond(sub, x, mounting, zr[:, None], space.request)
+                ok[j_all] &= ok_all(low, out_z, len(j_all))
+            rest = ok[j_all]
+            if rest.any():
+                # refine the threshold of the mechanical rows some combination still needs
+                need = np.zeros(len(j), dtype=bool)
+                need[inv[rest]] = True
+                r = np.nonzero(need)[0]
+                if len(r) < len(j):
+                    pr_r = repeat_rows(subset(p, j[r], k), len(r), P - 1)
+
+                    def good_r(pre, pr=pr_r, upc=upc, x1=x1, mounting=mounting, parts=parts):
+                        return ok_all(
+                            upc, respond(pr, x1, mounting, pre.reshape(-1, 1), parts), pre.size
+                        )
+
+                else:
+                    good_r = good
+                a_r, _ = kary_bracket(good_r, a0[r], z0[r], P, kary_rounds(P) - first_rounds)
+                a0[r] = a_r
+                a[j_all] = a0[inv]
         pstar = np.where(ok_up_hi, hi[:, 0], a)
         ok &= ok_up_lo
         for c in cvx:  # lower the preload into each motor-torque interval (drag and life stay met)

@@ -13,6 +13,7 @@ import numpy as np
 from ..model.goals import GOALS
 from ..model.limits import LIMITS
 from ..problem import Problem
+from .bestfirst import SOLVED
 from .result import Binding, SolveResult
 
 if TYPE_CHECKING:
@@ -24,6 +25,25 @@ RELAX = 0.10  # sensitivities: relax each limit by 10 %
 # (objective.tolerance, or this when the problem gives none) and said when that one costs at least MARKEDLY less
 CHEAPER_TOLERANCE = 0.01
 MARKEDLY = 0.05
+
+
+def reusable(space, constraints, loose, spec, key: str):
+    """The main search's Exact (``space``'s cache, :data:`SOLVED`) where the re-solve with ``loose`` (the
+    constraints with the limit ``key`` relaxed) gives its feasible combinations the same answer, else None.
+    That holds when ``key`` is the only change and its limit does not move a combination's best preload:
+    a limit independent of the preload, or one a higher preload helps (minimum stiffness, frequency), relaxed:
+    the best preload is set by the others (search.preload), and a combination that met the limit meets it
+    relaxed, at the same preload and objective.  A limit a higher preload breaks (life, drag, thermal growth)
+    moves it, and a convex one (motor torque) too: those re-solve every combination."""
+    hit = space._cache.get(SOLVED)
+    if hit is None or hit[1] != spec or tuple(hit[0]) != tuple(constraints):
+        return None
+    if len(loose) != len(constraints):
+        return None
+    changed = [b for a, b in zip(constraints, loose) if a != b]
+    if len(changed) != 1 or changed[0].name != key or changed[0].upper_type or changed[0].convex:
+        return None
+    return hit[2]
 
 
 def cut_note(what: str, cut: list) -> str:
@@ -66,6 +86,7 @@ def limit_sensitivities(
     best = res.best
     space = build_space(problem) if space is None else space
     spec = objective_spec(problem.objective.mode, problem)
+    constraints = build_constraints(problem)
     out = []
     for key, value in problem.limits:
         lim = LIMITS[key]
@@ -92,8 +113,9 @@ def limit_sensitivities(
             key == "max_backlash" and space.reductions_by_backlash
         )
         sp = build_space(relaxed_problem) if rebuild else space
+        known = None if rebuild else reusable(sp, constraints, loose, spec, key)
         ex, stats = bound_order_search(
-            sp, loose, spec, top=1, incumbent=best.objective, deadline=deadline
+            sp, loose, spec, top=1, incumbent=best.objective, deadline=deadline, known=known
         )
         if stats.timed_out:  # an unproven gain is not reported
             if cut is not None:

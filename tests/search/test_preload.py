@@ -30,3 +30,48 @@ def test_threshold_from_above_and_of_an_interval():
     np.testing.assert_allclose(kary_threshold(good, start, hi), u, rtol=1e-14)
     np.testing.assert_allclose(kary_threshold(good, start, lo), l, rtol=1e-14)
     assert np.all(good(kary_threshold(good, start, lo)[:, None]))
+
+
+def test_exact_solve_drops_early_what_the_refined_threshold_would_reject():
+    """exact_solve drops the combinations that miss a limit a higher preload helps already at the coarse
+    bracket's upper end (COARSE_BITS): every combination's feasibility, objective and (feasible) preload are
+    those of the solve that refines every threshold to the bisection's 2^-52 before checking."""
+    import sys
+    import time
+    import warnings
+    from pathlib import Path
+
+    from axisopt.errors import ImplausibleInput
+    from axisopt.problem import load_problem
+    from axisopt.search import front, preload
+    from axisopt.search.sensitivity import SOLVED
+
+    root = Path(__file__).resolve().parents[2]
+    sys.path.insert(0, str(root / "bench"))
+    from axis_generator import make
+
+    for src in ("teaching", 0):
+        if src == "teaching":
+            problem = load_problem(root / "problems" / "teaching_problem.yaml")
+        else:
+            f = Path(__file__).resolve().parent / "_gen_preload.yaml"
+            f.write_text(make(0, src).text)
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", ImplausibleInput)
+                problem = load_problem(f)
+            f.unlink()
+        task = front.build_task(problem)
+        front._run_search(task, "default", 5, 1e4, time.perf_counter())
+        idx = task.space._cache[SOLVED][2].idx
+        coarse = preload.exact_solve(task.space, idx, task.constraints, task.objective)
+        old = preload.COARSE_BITS
+        try:
+            preload.COARSE_BITS = preload.BISECTION_STEPS  # no early drop
+            full = preload.exact_solve(task.space, idx, task.constraints, task.objective)
+        finally:
+            preload.COARSE_BITS = old
+        assert len(idx) and full.feasible.any() and not full.feasible.all()
+        np.testing.assert_array_equal(coarse.feasible, full.feasible)
+        np.testing.assert_array_equal(coarse.objective, full.objective)
+        f_ = full.feasible
+        np.testing.assert_array_equal(coarse.preload[f_], full.preload[f_])

@@ -62,3 +62,75 @@ def test_sensitivity_reports_binding_drag_limit():
     by = {b.limit: b for b in r.binding}
     assert by["max_drag_torque"].binding and by["max_drag_torque"].objective_gain > 0
     assert not by["max_cost"].binding
+
+
+def test_reused_main_search_gives_the_same_sensitivities():
+    """The re-solves of a limit that does not move the best preload (cost, a minimum stiffness or frequency)
+    take the main search's solved combinations (issue 52): the same gains as re-solving every combination,
+    on a generated axis with a cost, a life and a stiffness limit and on the teaching problem."""
+    import sys
+    import time
+
+    from axisopt.search import front
+    from axisopt.search.sensitivity import SOLVED, limit_sensitivities, reusable
+
+    sys.path.insert(0, str(HERE.parents[2] / "bench"))
+    from axis_generator import make
+
+    text = make(0, 0).text  # a VMC X axis: max_cost, min_life, min_stiffness
+    assert "max_cost" in text and "min_stiffness" in text
+    root = HERE.parents[2] / "problems"
+    gen = HERE / "_generated_0_0.yaml"
+    for problem in (load_problem(root / "teaching_problem.yaml"), _load_text(gen, text)):
+        task = front.build_task(problem)
+        res = front._run_search(task, "default", 5, 1e4, time.perf_counter())
+        assert res.best is not None
+        with_reuse = limit_sensitivities(problem, res, space=task.space)
+        loose = {
+            k: build_constraints(problem.with_limit(k, v * 1.1 if v > 0 else v))
+            for k, v in problem.limits
+        }
+        # at least one limit reused its answers (max_cost is independent of the preload)
+        assert any(
+            reusable(task.space, task.constraints, loose[k], task.objective, k) is not None
+            for k, _ in problem.limits
+            if k == "max_cost"
+        ) or not any(k == "max_cost" for k, _ in problem.limits)
+        task.space._cache.pop(SOLVED)
+        without = limit_sensitivities(problem, res, space=task.space)
+        assert [b.limit for b in with_reuse] == [b.limit for b in without]
+        for a, b in zip(with_reuse, without):
+            assert a.objective_gain == b.objective_gain and a.binding == b.binding
+
+
+def _load_text(path, text):
+    import warnings
+
+    from axisopt.errors import ImplausibleInput
+
+    path.write_text(text)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ImplausibleInput)
+            return load_problem(path)
+    finally:
+        path.unlink()
+
+
+def test_reuse_refused_for_a_limit_that_moves_the_preload():
+    """A life or drag limit relaxed raises the best preload: its re-solve does not take the main search's
+    answers (search.sensitivity.reusable)."""
+    import time
+
+    from axisopt.search import front
+    from axisopt.search.sensitivity import reusable
+
+    problem = load_problem(HERE.parents[2] / "problems" / "teaching_problem.yaml")
+    task = front.build_task(problem)
+    front._run_search(task, "default", 5, 1e4, time.perf_counter())
+    for key, value in problem.limits:
+        loose = build_constraints(problem.with_limit(key, value * 1.1))
+        changed = [c for c, o in zip(loose, task.constraints) if c != o]
+        got = reusable(task.space, task.constraints, loose, task.objective, key)
+        if changed and (changed[0].upper_type or changed[0].convex):
+            assert got is None, key

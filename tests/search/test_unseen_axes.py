@@ -179,3 +179,21 @@ def test_slowest_generated_problems_answer(name):
     inf = res.infeasibility
     assert inf.closest or inf.unmeetable
     assert all(r.relaxed_to >= 0.95 for r in inf.relax if r.key.startswith("limits.margins."))
+
+
+def test_unexplained_infeasible_answer_has_the_same_status():
+    """solve(..., explain=False) (the arrangements' what-if re-solves): the same proven infeasibility, without
+    the explanation's closest designs; a feasible problem's optimum is unchanged by it."""
+    from axisopt.problem import load_problem
+    from axisopt.search import solve
+
+    bad = load_problem(HERE / "fixed_fixed_end_margin0.yaml")
+    quick = solve(bad, sensitivities=False, explain=False)
+    full = solve(bad, sensitivities=False)
+    assert quick.status == full.status == "infeasible"
+    assert quick.certificate.proven and quick.infeasibility is None
+    assert full.infeasibility is not None and full.infeasibility.closest
+    good = load_problem(HERE / "fixed_fixed_end_margin0_feasible.yaml")
+    a = solve(good, sensitivities=False, explain=False)
+    b = solve(good, sensitivities=False)
+    assert a.status == b.status == "optimal" and a.best.objective == b.best.objective

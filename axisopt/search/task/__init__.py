@@ -29,3 +29,6 @@ class Task:
     space: Space
     constraints: tuple
     objective: ObjectiveSpec
+    # an infeasible answer explained (closest designs, what to relax): False where only the status and
+    # optimum are read (the arrangements' relaxed re-solves)
+    explain: bool = True
