@@ -43,8 +43,8 @@ def test_exact_solve_drops_early_what_the_refined_threshold_would_reject():
 
     from axisopt.errors import ImplausibleInput
     from axisopt.problem import load_problem
-    from axisopt.search import front, preload
-    from axisopt.search.sensitivity import SOLVED
+    from axisopt.search import bestfirst, front, preload
+    from axisopt.search.bestfirst import SOLVED
 
     root = Path(__file__).resolve().parents[2]
     sys.path.insert(0, str(root / "bench"))
@@ -61,7 +61,7 @@ def test_exact_solve_drops_early_what_the_refined_threshold_would_reject():
                 problem = load_problem(f)
             f.unlink()
         task = front.build_task(problem)
-        front._run_search(task, "default", 5, 1e4, time.perf_counter())
+        bestfirst.run(task, "default", 5, 1e4, time.perf_counter())
         idx = task.space._cache[SOLVED][2].idx
         coarse = preload.exact_solve(task.space, idx, task.constraints, task.objective)
         old = preload.COARSE_BITS

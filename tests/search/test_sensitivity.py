@@ -71,8 +71,9 @@ def test_reused_main_search_gives_the_same_sensitivities():
     import sys
     import time
 
-    from axisopt.search import front
-    from axisopt.search.sensitivity import SOLVED, limit_sensitivities, reusable
+    from axisopt.search import bestfirst, front
+    from axisopt.search.bestfirst import SOLVED
+    from axisopt.search.sensitivity import limit_sensitivities, reusable
 
     sys.path.insert(0, str(HERE.parents[2] / "bench"))
     from axis_generator import make
@@ -83,7 +84,7 @@ def test_reused_main_search_gives_the_same_sensitivities():
     gen = HERE / "_generated_0_0.yaml"
     for problem in (load_problem(root / "teaching_problem.yaml"), _load_text(gen, text)):
         task = front.build_task(problem)
-        res = front._run_search(task, "default", 5, 1e4, time.perf_counter())
+        res = bestfirst.run(task, "default", 5, 1e4, time.perf_counter())
         assert res.best is not None
         with_reuse = limit_sensitivities(problem, res, space=task.space)
         loose = {
@@ -122,12 +123,12 @@ def test_reuse_refused_for_a_limit_that_moves_the_preload():
     answers (search.sensitivity.reusable)."""
     import time
 
-    from axisopt.search import front
+    from axisopt.search import bestfirst, front
     from axisopt.search.sensitivity import reusable
 
     problem = load_problem(HERE.parents[2] / "problems" / "teaching_problem.yaml")
     task = front.build_task(problem)
-    front._run_search(task, "default", 5, 1e4, time.perf_counter())
+    bestfirst.run(task, "default", 5, 1e4, time.perf_counter())
     for key, value in problem.limits:
         loose = build_constraints(problem.with_limit(key, value * 1.1))
         changed = [c for c, o in zip(loose, task.constraints) if c != o]
