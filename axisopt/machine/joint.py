@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..errors import InputError
 from ..search.pareto import nondominated
 from ..search.result import INFEASIBLE, OPTIMAL
 from .chain import lowest_frequency
@@ -358,11 +359,26 @@ def _objective(machine: Machine, cost, c, f, mm) -> np.ndarray:
     ]
 
 
+def refuse_preloads(machine: Machine) -> None:
+    """A machine solve chooses every nut's preload: an axis's ``nut_preload`` (machine evaluate's) is an
+    InputError naming it."""
+    for ax in machine.axes:
+        if ax.nut_preload is not None:
+            raise InputError(
+                f"nut_preload pins axis {ax.name}'s preload for `axisopt machine evaluate`; a machine "
+                "solve chooses every preload: remove it (or bound the search with the axis problem's "
+                "continuous.nut_preload {min, max})",
+                source=machine.source,
+                where=f"axes.{ax.name}.nut_preload",
+            )
+
+
 def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
     """The machine's joint optimum over every axis's catalog combinations (``default``: proven through the exact
     Pareto sets; ``exhaustive``: every combination of every axis) and the sequential sizing beside it."""
     if method not in METHODS:
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
+    refuse_preloads(machine)
     t0 = time.perf_counter()
     exhaustive = method == "exhaustive"
     designs = _Designs(exhaustive)
@@ -379,6 +395,7 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
     last = order[-1]
     incumbent = [-np.inf]
     below = None
+    seq = None
     if not exhaustive and rest is not None:
         # the designer's sizing first: where it meets every limit, its value is the first incumbent
         seq = sequential(machine, designs)
@@ -416,7 +433,8 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
             f"the frame under {name} is the stated estimate (as stiff as the axis link: its compliance "
             "doubled); give axes.{name}.frame_stiffness when known".replace("{name}", name)
         )
-    seq = sequential(machine, designs)
+    if seq is None:
+        seq = sequential(machine, designs)
     nominal = float(np.prod([float(designs.combinations.get(a.name, 0)) for a in machine.axes]))
     return MachineResult(
         machine,
