@@ -112,17 +112,31 @@ def _join(ax, own: float, O: dict, sel, D) -> dict:
     }
 
 
-def _within_limits(machine: Machine, J: dict, cmax) -> np.ndarray:
+def _within_limits(machine: Machine, J: dict, cmax) -> tuple:
     """The joined offers ``J`` of part of a chain that do not yet miss a machine limit (costs, masses and
-    compliances only grow further down; the frequency of the sub-chain on a rigid base bounds the whole's)."""
+    compliances only grow further down; the frequency of the sub-chain on a rigid base bounds the whole's), and
+    that sub-chain frequency at the rows kept (None where the machine does not read the frequency).  The
+    frequency is solved only for the rows the other limits keep."""
     ok = (J["cost"] <= machine.max_cost * (1 + 1e-9)) & (
         J["mm"] <= machine.max_moving_mass * (1 + 1e-9)
     )
     ok &= (J["c"] <= cmax * (1 + 1e-9)).all(1)
-    if machine.min_frequency > 0 and ok.any():
-        f = np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
-        ok &= f >= machine.min_frequency * (1 - 1e-9)
-    return ok
+    if not _reads_frequency(machine):
+        return ok, None
+    rows = np.nonzero(ok)[0]
+    f = _sub_frequency(J["m"][rows], J["k"][rows])
+    if machine.min_frequency > 0:
+        met = f >= machine.min_frequency * (1 - 1e-9)
+        ok[rows[~met]] = False
+        f = f[met]
+    return ok, f
+
+
+def _sub_frequency(m, k) -> np.ndarray:
+    """The lowest natural frequency over x, y and z of chains ``m`` (K, n) on springs ``k`` (K, n, 3)."""
+    if not len(m):
+        return np.zeros(0)
+    return np.min([lowest_frequency(m, k[:, :, d]) for d in range(3)], axis=0)
 
 
 def _best_below(machine: Machine, chain: list, designs: _Designs, i: int) -> dict | None:
@@ -151,22 +165,21 @@ def _own(ax) -> float:
     return a.moving_mass + (a.twin_drive.cross_mass if a.twin_drive is not None else 0.0)
 
 
-def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict) -> float:
+def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict, f_ok=None) -> float:
     """An upper bound of the machine objective (larger is better) of the joined offers ``J`` (rows ``ok``)
     completed by the axes below at their best (``rest``) and the other chain's offers ``other``: each criterion
     at its best on its own (cost, compliance per direction, moving mass), the frequency that of the sub-chain on
-    a rigid base.  +inf: no bound."""
+    a rigid base (``f_ok``: already solved at the rows ``ok``).  +inf: no bound."""
     if rest is None:
         return np.inf
     J = {k: v[ok] for k, v in J.items()}
     cost = J["cost"] + rest["cost"] + other["cost"].min()
     c = J["c"] + rest["c"] + other["c"].min(0)
     mm = J["mm"] + rest["mm"] + other["mm"].min()
-    f = (
-        np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
-        if _reads_frequency(machine)
-        else np.full(len(cost), np.inf)
-    )
+    if not _reads_frequency(machine):
+        f = np.full(len(cost), np.inf)
+    else:
+        f = f_ok if f_ok is not None else _sub_frequency(J["m"], J["k"])
     f = np.minimum(f, other["f"].max())
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     good = (cost <= machine.max_cost * (1 + 1e-9)) & (mm <= machine.max_moving_mass * (1 + 1e-9))
@@ -254,13 +267,13 @@ def _branch_offers(
                 # offers -> none at this load does; and with the incumbent, each axis below at its
                 # best
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
-                ok = _within_limits(machine, J, cmax)
+                ok, f_ok = _within_limits(machine, J, cmax)
                 if not ok.any():
                     continue
                 if (
                     below is not None
                     and np.isfinite(incumbent[0])
-                    and _optimistic(machine, J, ok, below(i), other)
+                    and _optimistic(machine, J, ok, below(i), other, f_ok)
                     < incumbent[0] - _tol(incumbent[0])
                 ):
                     continue

@@ -211,7 +211,7 @@ class MachineAxis:
     problem: Problem
     frame_stiffness: tuple | None  # (kx, ky, kz) [N/m]; None: the stated estimate
     carried_at: tuple = (0.0, 0.0)  # (height, offset) on the carrier [m]
-    nut_preload: float | None = None  # [N]; machine evaluate only (None: the feasible interval's top)
+    nut_preload: float | None = None  # [N]; machine evaluate's (None: the feasible top)
 
     @property
     def lateral(self) -> str:

@@ -31,14 +31,24 @@ def solve_case(context: dict, case: Case) -> dict:
     """Build and solve one case; never raises for a case-level failure (the reason is recorded).  A machine
     study's case (``context['kind'] == 'machine'``) is a joint machine solve (:mod:`.machinecase`)."""
     if context.get("kind") == "machine":
-        from .machinecase import solve_machine_case
+        from .machinecase import build_machine, machine_record, solve_machine_case
 
         with _SOLVE_LOCK:
-            return solve_machine_case(context, case)
-    from ..model import evaluate
-    from ..model.function import check_rows, drive_dict
-    from ..search import solve
+            return record_case(
+                case,
+                lambda: build_machine(context, case),
+                lambda machine: solve_machine_case(context, machine),
+                machine_record,
+            )
+    return record_case(
+        case, lambda: build_problem(context, case), lambda p: _solve(context, p), _axis_record
+    )
 
+
+def record_case(case: Case, build, solve, fill) -> dict:
+    """One case's record: ``build()`` (an InputError is the case's input_error), ``solve(built)`` (any exception
+    is the case's error: a failure is this case's result, not the end of the study), then ``fill(rec, built,
+    solved)`` records the answer; the time taken last."""
     t0 = time.perf_counter()
     rec = {
         "version": RECORD_VERSION,
@@ -50,37 +60,50 @@ def solve_case(context: dict, case: Case) -> dict:
         "worker": f"{socket.gethostname()}:{os.getpid()}",
     }
     try:
-        problem = build_problem(context, case)
+        built = build()
     except InputError as exc:
-        rec.update(
-            status="input_error",
-            reason=short_message(exc).replace("\n", " "),
-            time_s=time.perf_counter() - t0,
+        status, reason = "input_error", short_message(exc)
+    else:
+        try:
+            solved = solve(built)
+        except Exception as exc:  # a solver failure is a result of this case
+            status, reason = "error", f"{type(exc).__name__}: {exc}"
+        else:
+            fill(rec, built, solved)
+            rec["time_s"] = time.perf_counter() - t0
+            return rec
+    rec.update(status=status, reason=reason.replace("\n", " "), time_s=time.perf_counter() - t0)
+    return rec
+
+
+def _solve(context: dict, problem) -> tuple:
+    """The case's solve and its best design's evaluation (None without one)."""
+    from ..model import evaluate
+    from ..search import solve
+
+    with _SOLVE_LOCK:
+        res = solve(
+            problem,
+            context["method"],
+            top=1,
+            sensitivities=False,
+            time_limit=context.get("time_limit", 100.0),
         )
-        return rec
-    try:
-        with _SOLVE_LOCK:
-            res = solve(
-                problem,
-                context["method"],
-                top=1,
-                sensitivities=False,
-                time_limit=context.get("time_limit", 100.0),
-            )
-            # on numpy: the CasADi Function of a case's duty cycle would be built for this one
-            # evaluation
-            ev = (
-                evaluate(res.best.design, use_casadi=False)
-                if res.best is not None and res.best.design is not None
-                else None
-            )
-    except Exception as exc:  # a solver failure is a result of this case, not the end of the study
-        rec.update(
-            status="error",
-            reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
-            time_s=time.perf_counter() - t0,
+        # on numpy: the CasADi Function of a case's duty cycle would be built for this one evaluation
+        ev = (
+            evaluate(res.best.design, use_casadi=False)
+            if res.best is not None and res.best.design is not None
+            else None
         )
-        return rec
+    return res, ev
+
+
+def _axis_record(rec: dict, _problem, solved: tuple) -> None:
+    """An axis case's answer into its record: status, objective, the reason of a failure, the best design,
+    where its minima lie, its drive values and check margins, the certificate."""
+    from ..model.function import check_rows, drive_dict
+
+    res, ev = solved
     rec["status"] = res.status
     rec["objective"] = {
         "label": res.objective_label,
@@ -129,8 +152,6 @@ def solve_case(context: dict, case: Case) -> dict:
     }
     if res.pareto is not None:
         rec["pareto"] = res.pareto.to_dict()
-    rec["time_s"] = time.perf_counter() - t0
-    return rec
 
 
 def run_batch(context: dict, cases) -> list:
@@ -142,4 +163,4 @@ def _num(v):
     return float(v) if v is not None and math.isfinite(v) else None
 
 
-__all__ = ["solve_case", "run_batch", "INFRA_STATUSES", "LEGACY_WORKER_DIED"]
+__all__ = ["solve_case", "record_case", "run_batch", "INFRA_STATUSES", "LEGACY_WORKER_DIED"]
