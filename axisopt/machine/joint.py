@@ -190,6 +190,33 @@ def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict, f
     return float(obj[good].max()) if good.any() else -np.inf
 
 
+class _Incumbent:
+    """The best machine objective found so far (larger is better).  With a machine and its designs it starts at
+    the sequential sizing's value where that meets every limit, computed when first read: by then the upper axes'
+    lightest loads are solved, so the sequential sizing's heavier loads are solved on their feasible supersets."""
+
+    def __init__(self, machine: Machine | None = None, designs: _Designs | None = None):
+        self.machine, self.designs = machine, designs
+        self.sequential = None
+        self.seeded = False
+        self._value = -np.inf
+
+    @property
+    def value(self) -> float:
+        if not self.seeded and self.machine is not None:
+            self.seeded = True
+            seq = self.sequential = sequential(self.machine, self.designs)
+            if seq is not None and seq.feasible:
+                v = seq.value(self.machine.objective)
+                obj = self.machine.objective
+                self._value = max(self._value, -v if obj in ("cost", "moving_mass") else v)
+        return self._value
+
+    @value.setter
+    def value(self, v: float) -> None:
+        self._value = v
+
+
 def _tol(v: float) -> float:
     return 1e-9 * max(abs(v), 1.0)
 
@@ -226,12 +253,12 @@ def _branch_offers(
     prune: bool,
     kept: dict,
     other: dict | None = None,
-    incumbent: list | None = None,
+    incumbent: _Incumbent | None = None,
     below=None,
 ) -> dict:
     """The offers of one chain on the frame (arrays, one row per offer).  ``other``: the other chain's offers
-    (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (a list
-    of one value, the best machine objective found, larger is better); ``below(i)``: the best each axis under
+    (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (an
+    :class:`_Incumbent`, the best machine objective found, larger is better); ``below(i)``: the best each axis under
     chain[i] can offer (:func:`_best_below`), for the bound of the loads of the axes above the frame's."""
     freq = _reads_frequency(machine)
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
@@ -272,18 +299,18 @@ def _branch_offers(
                     continue
                 if (
                     below is not None
-                    and np.isfinite(incumbent[0])
+                    and np.isfinite(incumbent.value)
                     and _optimistic(machine, J, ok, below(i), other, f_ok)
-                    < incumbent[0] - _tol(incumbent[0])
+                    < incumbent.value - _tol(incumbent.value)
                 ):
                     continue
-            if bound and len(sel) and np.isfinite(incumbent[0]):
+            if bound and len(sel) and np.isfinite(incumbent.value):
                 # what this load's offers could reach with the axis's designs at the lightest load
                 # (a superset,
                 # each at least as stiff): none beats the incumbent -> the load is never solved
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
-                if _completion(machine, J, other).max(initial=-np.inf) < incumbent[0] - _tol(
-                    incumbent[0]
+                if _completion(machine, J, other).max(initial=-np.inf) < incumbent.value - _tol(
+                    incumbent.value
                 ):
                     continue
             D = designs.get(ax, float(L), at)
@@ -293,8 +320,8 @@ def _branch_offers(
                 continue
             J = _join(ax, own, O, sel, D)
             if bound:
-                incumbent[0] = max(
-                    incumbent[0], _completion(machine, J, other).max(initial=-np.inf)
+                incumbent.value = max(
+                    incumbent.value, _completion(machine, J, other).max(initial=-np.inf)
                 )
             for k in parts:
                 parts[k].append(J[k])
@@ -406,15 +433,11 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
     if rest is None or not len(rest["refs"]):
         rest = None
     last = order[-1]
-    incumbent = [-np.inf]
+    incumbent = _Incumbent()
     below = None
-    seq = None
     if not exhaustive and rest is not None:
-        # the designer's sizing first: where it meets every limit, its value is the first incumbent
-        seq = sequential(machine, designs)
-        if seq is not None and seq.feasible:
-            v = seq.value(machine.objective)
-            incumbent[0] = -v if machine.objective in ("cost", "moving_mass") else v
+        # the designer's sizing: where it meets every limit, its value is the first incumbent
+        incumbent = _Incumbent(machine, designs)
         chain = branches[last]
         cache: dict = {}
 
@@ -446,8 +469,7 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
             f"the frame under {name} is the stated estimate (as stiff as the axis link: its compliance "
             "doubled); give axes.{name}.frame_stiffness when known".replace("{name}", name)
         )
-    if seq is None:
-        seq = sequential(machine, designs)
+    seq = incumbent.sequential if incumbent.seeded else sequential(machine, designs)
     nominal = float(np.prod([float(designs.combinations.get(a.name, 0)) for a in machine.axes]))
     return MachineResult(
         machine,
