@@ -101,18 +101,7 @@ def cmd_machine_study(args) -> int:
 
     check_run_options(args)
     study = load_machine_study(args.study)
-    s, out = run_with_progress(
-        args,
-        "axisopt machine study",
-        lambda out, bar: run_machine_study(
-            study,
-            out,
-            workers=args.workers,
-            scheduler=args.scheduler,
-            resume=args.resume,
-            progress=bar,
-        ),
-    )
+    s, out = run_with_progress(args, "axisopt machine study", run_machine_study, study)
     if s is None:
         return 130
     print(

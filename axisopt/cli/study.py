@@ -68,10 +68,10 @@ def check_run_options(args) -> None:
         )
 
 
-def run_with_progress(args, command: str, run) -> tuple:
+def run_with_progress(args, command: str, run, study) -> tuple:
     """A study's run loop (axis and machine studies): the output folder (--out, else beside the study file's
-    stem), its cases cleared first on --overwrite, ``run(out, bar)`` with the progress bar; (its summary, out),
-    the summary None when interrupted (the way to resume printed on one line)."""
+    stem), its cases cleared first on --overwrite, ``run(study, out, ...)`` with the run options and the progress
+    bar; (its summary, out), the summary None when interrupted (the way to resume printed on one line)."""
     from pathlib import Path
 
     from ..study.result import clear_cases
@@ -81,7 +81,15 @@ def run_with_progress(args, command: str, run) -> tuple:
         clear_cases(out)
     bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
     try:
-        return run(out, bar), out
+        summary = run(
+            study,
+            out,
+            workers=args.workers,
+            scheduler=args.scheduler,
+            resume=args.resume,
+            progress=bar,
+        )
+        return summary, out
     except KeyboardInterrupt:
         bar.close()
         print(
@@ -171,18 +179,7 @@ def cmd_study(args) -> int:
     check_run_options(args)
     check_html_report(args.report, args.plotly)
     study = replace(load_study(args.study), time_limit=args.time_limit)
-    summary, out = run_with_progress(
-        args,
-        "axisopt study",
-        lambda out, bar: run_study(
-            study,
-            out,
-            workers=args.workers,
-            scheduler=args.scheduler,
-            resume=args.resume,
-            progress=bar,
-        ),
-    )
+    summary, out = run_with_progress(args, "axisopt study", run_study, study)
     if summary is None:
         return 130
     s = summary
