@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 from pathlib import Path
 
@@ -101,6 +102,11 @@ def _spec_tables(spec, path: str, seen: set, out: list) -> None:
     for name, k in spec.keys.items():
         for sub in k.specs():
             _spec_tables(sub, f"{path}.{name}" if path else name, seen, out)
+    if spec.extra is not None and spec.extra.type == "section":
+        # the mapping under any other name (a machine's axis by its name)
+        what = re.sub(r"^(a|an) ", "", spec.extra_doc or "name")
+        for sub in spec.extra.specs():
+            _spec_tables(sub, f"{path}.<{what}>" if path else f"<{what}>", seen, out)
 
 
 def yaml_reference() -> str:

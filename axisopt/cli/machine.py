@@ -5,6 +5,7 @@ locally or on a Dask cluster (the axis study's runner)."""
 from __future__ import annotations
 
 from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json
+from .study import add_run_options
 
 
 def register(sub) -> None:
@@ -61,30 +62,7 @@ def register(sub) -> None:
         "locally or on a Dask cluster",
     )
     st.add_argument("study", help="machine study YAML file (base: a machine file)")
-    st.add_argument(
-        "--out", metavar="DIR", help="output directory (default: <study file stem>-results)"
-    )
-    st.add_argument(
-        "--workers",
-        type=int,
-        metavar="N",
-        help="local worker processes (default: all cores; 0 solves in this process)",
-    )
-    st.add_argument(
-        "--scheduler",
-        metavar="ADDRESS",
-        help="run on an existing Dask cluster, e.g. tcp://127.0.0.1:8786 (needs axisopt[dask])",
-    )
-    st.add_argument(
-        "--resume",
-        action="store_true",
-        help="continue an interrupted study in --out, solving only the missing cases",
-    )
-    st.add_argument(
-        "--overwrite",
-        action="store_true",
-        help="solve every case again: the case results already in --out are deleted first",
-    )
+    add_run_options(st)
     st.add_argument("--quiet", action="store_true", help="no progress bar")
     st.set_defaults(func=cmd_machine_study)
 
@@ -116,50 +94,16 @@ def cmd_machine_solve(args) -> int:
 
 def cmd_machine_study(args) -> int:
     import sys
-    from pathlib import Path
 
-    from ..errors import InputError
     from ..study.machine import load_machine_study, run_machine_study
-    from ..study.result import clear_cases
     from .common import one_line
-    from .study import ProgressBar, is_terminal
+    from .study import check_run_options, run_with_progress
 
-    if args.resume and args.overwrite:
-        raise InputError("--resume continues a run, --overwrite starts it again: give one of them")
-    if args.workers is not None and args.workers < 0:
-        raise InputError(f"--workers must be 0 or more, got {args.workers}")
-    if args.scheduler is not None and args.workers is not None:
-        raise InputError(
-            "--workers and --scheduler exclude each other (the cluster has its own workers)"
-        )
-    if args.scheduler is not None and not args.scheduler.strip():
-        raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
+    check_run_options(args)
     study = load_machine_study(args.study)
-    out = args.out or f"{Path(args.study).stem}-results"
-    if args.overwrite and Path(out).is_dir():
-        clear_cases(out)
-    bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
-    try:
-        s = run_machine_study(
-            study,
-            out,
-            workers=args.workers,
-            scheduler=args.scheduler,
-            resume=args.resume,
-            progress=bar,
-        )
-    except KeyboardInterrupt:
-        bar.close()
-        print(
-            one_line(
-                f"interrupted: finished cases are saved in {out}/cases; continue with "
-                f"'axisopt machine study {args.study} --out {out} --resume'"
-            ),
-            file=sys.stderr,
-        )
+    s, out = run_with_progress(args, "axisopt machine study", run_machine_study, study)
+    if s is None:
         return 130
-    finally:
-        bar.close()
     print(
         f"machine study {study.name}: {s.total} cases; {s.solved} solved now on {s.backend}"
         + (f" ({s.workers} workers)" if s.workers else "")

@@ -12,6 +12,22 @@ from .common import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK, add_html_report, check_h
 def register(sub) -> None:
     s = sub.add_parser("study", help="run a batch trade study (sweeps over a base problem)")
     s.add_argument("study", help="study YAML file")
+    add_run_options(s)
+    s.add_argument(
+        "--time-limit",
+        type=float,
+        default=100.0,
+        metavar="S",
+        help="time limit [s] of each case's solve (default 100, as solve's)",
+    )
+    s.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_html_report(s, "the study (figures, cases table, summary)")
+    s.set_defaults(func=cmd_study)
+
+
+def add_run_options(s) -> None:
+    """A study run's options (axis and machine studies): --out, --workers, --scheduler, --resume,
+    --overwrite."""
     s.add_argument(
         "--out", metavar="DIR", help="output directory (default: <study file stem>-results)"
     )
@@ -36,16 +52,56 @@ def register(sub) -> None:
         action="store_true",
         help="solve every case again: the case results already in --out are deleted first",
     )
-    s.add_argument(
-        "--time-limit",
-        type=float,
-        default=100.0,
-        metavar="S",
-        help="time limit [s] of each case's solve (default 100, as solve's)",
-    )
-    s.add_argument("--quiet", action="store_true", help="no progress bar")
-    add_html_report(s, "the study (figures, cases table, summary)")
-    s.set_defaults(func=cmd_study)
+
+
+def check_run_options(args) -> None:
+    """The run options that exclude each other or are out of range: InputError."""
+    if args.resume and args.overwrite:
+        raise InputError("--resume continues a run, --overwrite starts it again: give one of them")
+    if args.workers is not None and args.workers < 0:
+        raise InputError(f"--workers must be 0 or more, got {args.workers}")
+    if args.scheduler is not None and not args.scheduler.strip():
+        raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
+    if args.scheduler is not None and args.workers is not None:
+        raise InputError(
+            "--workers and --scheduler exclude each other (the cluster has its own workers)"
+        )
+
+
+def run_with_progress(args, command: str, run, study) -> tuple:
+    """A study's run loop (axis and machine studies): the output folder (--out, else beside the study file's
+    stem), its cases cleared first on --overwrite, ``run(study, out, ...)`` with the run options and the progress
+    bar; (its summary, out), the summary None when interrupted (the way to resume printed on one line)."""
+    from pathlib import Path
+
+    from ..study.result import clear_cases
+
+    out = args.out or f"{Path(args.study).stem}-results"
+    if args.overwrite and Path(out).is_dir():
+        clear_cases(out)
+    bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
+    try:
+        summary = run(
+            study,
+            out,
+            workers=args.workers,
+            scheduler=args.scheduler,
+            resume=args.resume,
+            progress=bar,
+        )
+        return summary, out
+    except KeyboardInterrupt:
+        bar.close()
+        print(
+            one_line(
+                f"interrupted: finished cases are saved in {out}/cases; continue with "
+                f"'{command} {args.study} --out {out} --resume'"
+            ),
+            file=sys.stderr,
+        )
+        return None, out
+    finally:  # the bar's line ends before anything else is printed (an error included)
+        bar.close()
 
 
 class ProgressBar:
@@ -117,47 +173,15 @@ def cmd_study(args) -> int:
     from pathlib import Path
 
     from ..study import load_study, run_study
-    from ..study.result import clear_cases
 
     if not (math.isfinite(args.time_limit) and args.time_limit > 0):
         raise InputError(f"--time-limit must be positive, got {args.time_limit}")
-    if args.resume and args.overwrite:
-        raise InputError("--resume continues a run, --overwrite starts it again: give one of them")
+    check_run_options(args)
     check_html_report(args.report, args.plotly)
     study = replace(load_study(args.study), time_limit=args.time_limit)
-    if args.workers is not None and args.workers < 0:
-        raise InputError(f"--workers must be 0 or more, got {args.workers}")
-    if args.scheduler and args.workers is not None:
-        raise InputError(
-            "--workers and --scheduler exclude each other (the cluster has its own workers)"
-        )
-    out = args.out or f"{Path(args.study).stem}-results"
-    if args.scheduler is not None and not args.scheduler.strip():
-        raise InputError("empty scheduler address (e.g. tcp://127.0.0.1:8786)", where="--scheduler")
-    if args.overwrite and Path(out).is_dir():
-        clear_cases(out)
-    bar = ProgressBar(not args.quiet and is_terminal(sys.stderr))
-    try:
-        summary = run_study(
-            study,
-            out,
-            workers=args.workers,
-            scheduler=args.scheduler,
-            resume=args.resume,
-            progress=bar,
-        )
-    except KeyboardInterrupt:
-        bar.close()
-        print(
-            one_line(
-                f"interrupted: finished cases are saved in {out}/cases; continue with "
-                f"'axisopt study {args.study} --out {out} --resume'"
-            ),
-            file=sys.stderr,
-        )
+    summary, out = run_with_progress(args, "axisopt study", run_study, study)
+    if summary is None:
         return 130
-    finally:  # the bar's line ends before anything else is printed (an error included)
-        bar.close()
     s = summary
     if s.redone:
         print(

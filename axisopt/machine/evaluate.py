@@ -3,9 +3,10 @@ machine model gives the stiffness at the tool with every link, the lumped chain'
 limits it misses (no search: the designer's own choice checked).
 
 Each axis is taken from its carrier's top down, as the machine is built: the top axis at no carried load, each
-axis below at the mass of everything it carries, each nut at the top of its feasible preload interval (as the
-joint search takes it).  An axis whose parts miss its own limits at the mass it carries has no design: the
-result names it (evaluate that axis alone with ``axisopt solve`` to see why).
+axis below at the mass of everything it carries, each nut at the axis's ``nut_preload`` where the machine file
+gives one, else at the top of its feasible preload interval (as the joint search takes it).  An axis whose
+parts miss its own limits at the mass it carries has no design: the result names it (evaluate that axis alone
+with ``axisopt solve`` to see why).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 
 from ..errors import InputError
+from ..physics.nut import preload_ceiling
 from ..search.parts import build_space
 from .model import MachineDesign, evaluate_choice
 from .offers import arrangements, axis_designs
@@ -50,16 +52,39 @@ def check_pinned(machine: Machine) -> None:
             )
 
 
+def check_preloads(machine: Machine) -> None:
+    """Each axis's ``nut_preload`` within its pinned nut's catalog range and, a preloaded nut, the vendors'
+    ceiling (10 % of its Ca, THK A-687): InputError naming the axis's key otherwise."""
+    for ax in machine.axes:
+        pre = ax.nut_preload
+        if pre is None:
+            continue
+        arr = arrangements(ax)[0][1]
+        nut = build_space(replace(ax.problem, axis=arr, arrangements=())).nuts.row(0)
+        lo, hi = float(nut["preload_min"]), float(nut["preload_max"])
+        top, why = hi, "range"
+        if nut["type"] != "single" and preload_ceiling(float(nut["dynamic_load_rating"])) < hi:
+            top, why = preload_ceiling(float(nut["dynamic_load_rating"])), "range (10 % of its Ca)"
+        if not (lo - 1e-9 <= pre <= top + 1e-9):
+            raise InputError(
+                f"{pre:.0f} N is outside nut '{nut['id']}' {why} {lo:.0f}..{top:.0f} N",
+                source=machine.source,
+                where=f"axes.{ax.name}.nut_preload",
+            )
+
+
 def evaluate_machine(machine: Machine) -> MachineEvaluation:
-    """The machine model of the machine's pinned parts (:func:`check_pinned` first)."""
+    """The machine model of the machine's pinned parts (:func:`check_pinned` first), each nut at the axis's
+    ``nut_preload`` where given (:func:`check_preloads`), else at the top of its feasible interval."""
     check_pinned(machine)
+    check_preloads(machine)
     picks, failed = {}, []
     for chain in machine.branches():
         load = 0.0
         for i in range(len(chain) - 1, -1, -1):
             ax = chain[i]
             at = chain[i + 1].carried_at if i + 1 < len(chain) else (0.0, 0.0)
-            D = axis_designs(ax, load, at)
+            D = axis_designs(ax, load, at, preload=ax.nut_preload)
             if not len(D):
                 failed.append((ax.name, load))
                 break
@@ -73,4 +98,4 @@ def evaluate_machine(machine: Machine) -> MachineEvaluation:
     return MachineEvaluation(machine, evaluate_choice(machine, picks))
 
 
-__all__ = ["MachineEvaluation", "evaluate_machine", "check_pinned"]
+__all__ = ["MachineEvaluation", "evaluate_machine", "check_pinned", "check_preloads"]

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..errors import InputError
 from ..search.pareto import nondominated
 from ..search.result import INFEASIBLE, OPTIMAL
 from .chain import lowest_frequency
@@ -111,17 +112,31 @@ def _join(ax, own: float, O: dict, sel, D) -> dict:
     }
 
 
-def _within_limits(machine: Machine, J: dict, cmax) -> np.ndarray:
+def _within_limits(machine: Machine, J: dict, cmax) -> tuple:
     """The joined offers ``J`` of part of a chain that do not yet miss a machine limit (costs, masses and
-    compliances only grow further down; the frequency of the sub-chain on a rigid base bounds the whole's)."""
+    compliances only grow further down; the frequency of the sub-chain on a rigid base bounds the whole's), and
+    that sub-chain frequency at the rows kept (None where the machine does not read the frequency).  The
+    frequency is solved only for the rows the other limits keep."""
     ok = (J["cost"] <= machine.max_cost * (1 + 1e-9)) & (
         J["mm"] <= machine.max_moving_mass * (1 + 1e-9)
     )
     ok &= (J["c"] <= cmax * (1 + 1e-9)).all(1)
-    if machine.min_frequency > 0 and ok.any():
-        f = np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
-        ok &= f >= machine.min_frequency * (1 - 1e-9)
-    return ok
+    if not _reads_frequency(machine):
+        return ok, None
+    rows = np.nonzero(ok)[0]
+    f = _sub_frequency(J["m"][rows], J["k"][rows])
+    if machine.min_frequency > 0:
+        met = f >= machine.min_frequency * (1 - 1e-9)
+        ok[rows[~met]] = False
+        f = f[met]
+    return ok, f
+
+
+def _sub_frequency(m, k) -> np.ndarray:
+    """The lowest natural frequency over x, y and z of chains ``m`` (K, n) on springs ``k`` (K, n, 3)."""
+    if not len(m):
+        return np.zeros(0)
+    return np.min([lowest_frequency(m, k[:, :, d]) for d in range(3)], axis=0)
 
 
 def _best_below(machine: Machine, chain: list, designs: _Designs, i: int) -> dict | None:
@@ -150,22 +165,21 @@ def _own(ax) -> float:
     return a.moving_mass + (a.twin_drive.cross_mass if a.twin_drive is not None else 0.0)
 
 
-def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict) -> float:
+def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict, f_ok=None) -> float:
     """An upper bound of the machine objective (larger is better) of the joined offers ``J`` (rows ``ok``)
     completed by the axes below at their best (``rest``) and the other chain's offers ``other``: each criterion
     at its best on its own (cost, compliance per direction, moving mass), the frequency that of the sub-chain on
-    a rigid base.  +inf: no bound."""
+    a rigid base (``f_ok``: already solved at the rows ``ok``).  +inf: no bound."""
     if rest is None:
         return np.inf
     J = {k: v[ok] for k, v in J.items()}
     cost = J["cost"] + rest["cost"] + other["cost"].min()
     c = J["c"] + rest["c"] + other["c"].min(0)
     mm = J["mm"] + rest["mm"] + other["mm"].min()
-    f = (
-        np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
-        if _reads_frequency(machine)
-        else np.full(len(cost), np.inf)
-    )
+    if not _reads_frequency(machine):
+        f = np.full(len(cost), np.inf)
+    else:
+        f = f_ok if f_ok is not None else _sub_frequency(J["m"], J["k"])
     f = np.minimum(f, other["f"].max())
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     good = (cost <= machine.max_cost * (1 + 1e-9)) & (mm <= machine.max_moving_mass * (1 + 1e-9))
@@ -174,6 +188,33 @@ def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict) -
         good &= f >= machine.min_frequency * (1 - 1e-9)
     obj = _objective(machine, cost, c, f, mm)
     return float(obj[good].max()) if good.any() else -np.inf
+
+
+class _Incumbent:
+    """The best machine objective found so far (larger is better).  With a machine and its designs it starts at
+    the sequential sizing's value where that meets every limit, computed when first read: by then the upper axes'
+    lightest loads are solved, so the sequential sizing's heavier loads are solved on their feasible supersets."""
+
+    def __init__(self, machine: Machine | None = None, designs: _Designs | None = None):
+        self.machine, self.designs = machine, designs
+        self.sequential = None
+        self.seeded = False
+        self._value = -np.inf
+
+    @property
+    def value(self) -> float:
+        if not self.seeded and self.machine is not None:
+            self.seeded = True
+            seq = self.sequential = sequential(self.machine, self.designs)
+            if seq is not None and seq.feasible:
+                v = seq.value(self.machine.objective)
+                obj = self.machine.objective
+                self._value = max(self._value, -v if obj in ("cost", "moving_mass") else v)
+        return self._value
+
+    @value.setter
+    def value(self, v: float) -> None:
+        self._value = v
 
 
 def _tol(v: float) -> float:
@@ -212,12 +253,12 @@ def _branch_offers(
     prune: bool,
     kept: dict,
     other: dict | None = None,
-    incumbent: list | None = None,
+    incumbent: _Incumbent | None = None,
     below=None,
 ) -> dict:
     """The offers of one chain on the frame (arrays, one row per offer).  ``other``: the other chain's offers
-    (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (a list
-    of one value, the best machine objective found, larger is better); ``below(i)``: the best each axis under
+    (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (an
+    :class:`_Incumbent`, the best machine objective found, larger is better); ``below(i)``: the best each axis under
     chain[i] can offer (:func:`_best_below`), for the bound of the loads of the axes above the frame's."""
     freq = _reads_frequency(machine)
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
@@ -253,23 +294,23 @@ def _branch_offers(
                 # offers -> none at this load does; and with the incumbent, each axis below at its
                 # best
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
-                ok = _within_limits(machine, J, cmax)
+                ok, f_ok = _within_limits(machine, J, cmax)
                 if not ok.any():
                     continue
                 if (
                     below is not None
-                    and np.isfinite(incumbent[0])
-                    and _optimistic(machine, J, ok, below(i), other)
-                    < incumbent[0] - _tol(incumbent[0])
+                    and np.isfinite(incumbent.value)
+                    and _optimistic(machine, J, ok, below(i), other, f_ok)
+                    < incumbent.value - _tol(incumbent.value)
                 ):
                     continue
-            if bound and len(sel) and np.isfinite(incumbent[0]):
+            if bound and len(sel) and np.isfinite(incumbent.value):
                 # what this load's offers could reach with the axis's designs at the lightest load
                 # (a superset,
                 # each at least as stiff): none beats the incumbent -> the load is never solved
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
-                if _completion(machine, J, other).max(initial=-np.inf) < incumbent[0] - _tol(
-                    incumbent[0]
+                if _completion(machine, J, other).max(initial=-np.inf) < incumbent.value - _tol(
+                    incumbent.value
                 ):
                     continue
             D = designs.get(ax, float(L), at)
@@ -279,8 +320,8 @@ def _branch_offers(
                 continue
             J = _join(ax, own, O, sel, D)
             if bound:
-                incumbent[0] = max(
-                    incumbent[0], _completion(machine, J, other).max(initial=-np.inf)
+                incumbent.value = max(
+                    incumbent.value, _completion(machine, J, other).max(initial=-np.inf)
                 )
             for k in parts:
                 parts[k].append(J[k])
@@ -358,11 +399,26 @@ def _objective(machine: Machine, cost, c, f, mm) -> np.ndarray:
     ]
 
 
+def refuse_preloads(machine: Machine) -> None:
+    """A machine solve chooses every nut's preload: an axis's ``nut_preload`` (machine evaluate's) is an
+    InputError naming it."""
+    for ax in machine.axes:
+        if ax.nut_preload is not None:
+            raise InputError(
+                f"nut_preload pins axis {ax.name}'s preload for `axisopt machine evaluate`; a machine "
+                "solve chooses every preload: remove it (or bound the search with the axis problem's "
+                "continuous.nut_preload {min, max})",
+                source=machine.source,
+                where=f"axes.{ax.name}.nut_preload",
+            )
+
+
 def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
     """The machine's joint optimum over every axis's catalog combinations (``default``: proven through the exact
     Pareto sets; ``exhaustive``: every combination of every axis) and the sequential sizing beside it."""
     if method not in METHODS:
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
+    refuse_preloads(machine)
     t0 = time.perf_counter()
     exhaustive = method == "exhaustive"
     designs = _Designs(exhaustive)
@@ -377,14 +433,11 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
     if rest is None or not len(rest["refs"]):
         rest = None
     last = order[-1]
-    incumbent = [-np.inf]
+    incumbent = _Incumbent()
     below = None
     if not exhaustive and rest is not None:
-        # the designer's sizing first: where it meets every limit, its value is the first incumbent
-        seq = sequential(machine, designs)
-        if seq is not None and seq.feasible:
-            v = seq.value(machine.objective)
-            incumbent[0] = -v if machine.objective in ("cost", "moving_mass") else v
+        # the designer's sizing: where it meets every limit, its value is the first incumbent
+        incumbent = _Incumbent(machine, designs)
         chain = branches[last]
         cache: dict = {}
 
@@ -416,7 +469,7 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
             f"the frame under {name} is the stated estimate (as stiff as the axis link: its compliance "
             "doubled); give axes.{name}.frame_stiffness when known".replace("{name}", name)
         )
-    seq = sequential(machine, designs)
+    seq = incumbent.sequential if incumbent.seeded else sequential(machine, designs)
     nominal = float(np.prod([float(designs.combinations.get(a.name, 0)) for a in machine.axes]))
     return MachineResult(
         machine,

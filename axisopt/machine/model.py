@@ -186,7 +186,8 @@ def _at_tool_point(machine: Machine, md: MachineDesign) -> None:
     for a in md.axes:
         ax = machine.by_name[a.name]
         s = pts.get(a.name, 0.5 * ax.problem.axis.stroke)
-        ev = evaluate(a.candidate.design)
+        # on numpy (the same model): a CasADi Function per mounting would be built for this one evaluation
+        ev = evaluate(a.candidate.design, use_casadi=False)
         x0 = a.candidate.design.axis.start_offset
         k_side = float(np.interp(x0 + s, ev.x, np.asarray(ev["k_total"], dtype=float)))
         tw = ax.problem.axis.twin_drive

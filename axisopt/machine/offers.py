@@ -15,6 +15,7 @@ truth the tests compare with).
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -132,16 +133,22 @@ def axis_designs(
     *,
     exhaustive: bool = False,
     superset: dict | None = None,
+    preload: float | None = None,
 ) -> AxisDesigns:
     """The axis's feasible designs at ``load`` kg carried at ``at`` = (height, offset) on its carriage (the
     machine file's ``carried_at`` of the axis above).  ``superset``: per arrangement the combinations to solve
-    (those feasible at a lighter load, where :func:`monotone_in_load`)."""
+    (those feasible at a lighter load, where :func:`monotone_in_load`).  ``preload`` [N]: every nut at this
+    preload only (machine evaluate's ``nut_preload``; a design is feasible only if it meets every limit there)."""
     rows = {k: [] for k in ("arr", "idx", "preload", "cost", "parts", "moving", "cw", "k")}
     problems, combos = [], 0
     for ai, (label, arr_axis) in enumerate(arrangements(ax)):
         axis = at_carried_load(arr_axis, load, *at)
         problem = replace(ax.problem, axis=axis, arrangements=())
         space = build_space(problem)
+        if preload is not None:  # the nuts' preload range shrunk to the one preload (on a copy)
+            space = copy.copy(space)
+            space.preload_lo = np.full_like(space.preload_lo, preload, dtype=float)
+            space.preload_hi = space.preload_lo.copy()
         cons = build_constraints(problem)
         combos += space.size
         problems.append((label, problem, space))

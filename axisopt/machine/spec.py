@@ -18,6 +18,7 @@
         normal: z                      # normal of the guides' mounting plane
         frame_stiffness: {x: 900 N/um, y: 900 N/um, z: 1500 N/um}   # or 'estimate' (stated, conservative)
         carried_at: {height: 250 mm, offset: 0 mm}   # where this axis and all it carries act on its carrier
+        nut_preload: 3000 N            # machine evaluate: the pinned nut's preload (default: the top)
         problem: {axis: {...}, limits: {...}, catalog: {...}}       # as a problem file
 """
 
@@ -157,6 +158,15 @@ AXIS_NODE_SPEC = Spec(
             options=(Key("choice", choices=("estimate",)), Key("section", spec=XYZ_STIFFNESS)),
         ),
         "carried_at": Key("section", spec=CARRIED_AT),
+        "nut_preload": Key(
+            "quantity",
+            "for `axisopt machine evaluate`: the pinned nut's preload, within the nut's catalog range "
+            "(and, a preloaded nut, the vendors' ceiling of 10 % of its Ca); default: the top of its "
+            "feasible preload interval.  `machine solve` chooses every preload and refuses it",
+            kind="force",
+            positive=True,
+            example="3000 N",
+        ),
         "problem": Key(
             "section",
             "the axis's problem: axis, limits, catalog, continuous, search sections as in a "
@@ -201,6 +211,7 @@ class MachineAxis:
     problem: Problem
     frame_stiffness: tuple | None  # (kx, ky, kz) [N/m]; None: the stated estimate
     carried_at: tuple = (0.0, 0.0)  # (height, offset) on the carrier [m]
+    nut_preload: float | None = None  # [N]; machine evaluate's (None: the feasible top)
 
     @property
     def lateral(self) -> str:
@@ -310,6 +321,7 @@ def _read_axis(sec: Section, name: str, catalog) -> MachineAxis:
     if at is not None:
         carried_at = (at.read("height"), at.read("offset"))
         at.done()
+    pre = sec.read("nut_preload")
     psec = sec.read("problem")
     for k in NOT_IN_AXIS_PROBLEM:
         if psec.has(k):
@@ -327,7 +339,7 @@ def _read_axis(sec: Section, name: str, catalog) -> MachineAxis:
             "`axisopt solve`)",
         )
     sec.done()
-    return MachineAxis(name, carried_by, direction, normal, problem, frame, carried_at)
+    return MachineAxis(name, carried_by, direction, normal, problem, frame, carried_at, pre)
 
 
 def _order(axes: dict, asec: Section) -> tuple:

@@ -57,7 +57,12 @@ class Column:
     header: str  # e.g. 'k N/um'
     width: int
     spec: str  # format spec after the width, e.g. '.1f', ',.0f'
-    always: bool = False
+    always: bool = True
+
+
+# a goal's roles: a scalar objective mode of its own, combinable in a weighted or lexicographic
+# objective, allowed in a Pareto front, carried by every search result (under :attr:`Goal.field`)
+ROLE_MODE, ROLE_PERFORMANCE, ROLE_PARETO, ROLE_RESULT = "mode", "performance", "pareto", "result"
 
 
 @dataclass(frozen=True)
@@ -67,27 +72,50 @@ class Goal:
     key         : its name in the problem file (``objective: {mode: key}``, ``pareto: [...]``)
     limit       : the limit on the same model output (``model.limits.LIMIT_TABLE``): the output, its display
                   unit and factor, and the sense (a ``>=`` limit: maximised) come from there
-    field       : the name of its value on a search result ('' if none: the value is only the objective):
-                  the exact solves (:class:`axisopt.search.result.Exact`) and every design
-                  (:class:`axisopt.search.result.Candidate`) carry it under this name, in display units (the
-                  output's minimum over the stroke for a profile, divided by the display factor)
-    what        : what it is, for the mode's label (``maximise minimum <what>``)
-    label       : the search's objective label, of a scalar mode
-    mode        : a scalar objective mode of its own
-    performance : combinable in a weighted or lexicographic objective
-    pareto      : allowed in a Pareto front
+    what        : what it is, for the mode's label (``maximise minimum <what>``) and the search's
+                  label (``minimum <what>`` or ``least <what>``); '' for a goal that is no mode
+    roles       : of ``ROLE_MODE``, ``ROLE_PERFORMANCE``, ``ROLE_PARETO``, ``ROLE_RESULT``
     column      : its column in the printed candidate and Pareto tables (None: not printed there)
     """
 
     key: str
     limit: str
-    field: str = ""
     what: str = ""
-    label: str = ""
-    mode: bool = False
-    performance: bool = False
-    pareto: bool = False
+    roles: tuple = ()
     column: Column | None = None
+
+    @property
+    def field(self) -> str:
+        """The name of its value on a search result ('' if none: the value is only the objective):
+        the exact solves (:class:`axisopt.search.result.Exact`) and every design
+        (:class:`axisopt.search.result.Candidate`) carry it in display units (a profile's minimum over
+        the stroke over the display factor), named after its limit: ``min_stiffness``, or without
+        ``max_`` (``cost``)."""
+        if ROLE_RESULT not in self.roles:
+            return ""
+        return self.limit if self.limit.startswith("min_") else self.limit.removeprefix("max_")
+
+    @property
+    def mode(self) -> bool:
+        """A scalar objective mode of its own."""
+        return ROLE_MODE in self.roles
+
+    @property
+    def performance(self) -> bool:
+        """Combinable in a weighted or lexicographic objective."""
+        return ROLE_PERFORMANCE in self.roles
+
+    @property
+    def pareto(self) -> bool:
+        """Allowed in a Pareto front."""
+        return ROLE_PARETO in self.roles
+
+    @property
+    def label(self) -> str:
+        """The search's objective label of a scalar mode ('' without ``what``)."""
+        if not self.what:
+            return ""
+        return f"{'minimum' if self.sense == 'max' else 'least'} {self.what}"
 
     @property
     def output(self) -> str:
@@ -118,93 +146,28 @@ class Goal:
         return self.output in PROFILE_OUTPUTS
 
 
+_ALL = (ROLE_MODE, ROLE_PERFORMANCE, ROLE_PARETO, ROLE_RESULT)
+_FRONT = (ROLE_PARETO, ROLE_RESULT)  # a Pareto key only (no mode of its own)
+_ERROR_COLUMN = Column("error um", 10, ".1f", always=False)  # only in a front that has it as a key
 # Every objective, declared once: the problem reader's modes and Pareto keys, the labels, the
-# search's
-# objective functions (axisopt.search.task.objective), the values the exact solves and the designs
-# carry
-# (axisopt.search.result.Exact and Candidate, under ``field``), the Pareto front's senses, units and
-# values and
-# the printed tables' columns derive from it.
-# A new objective: one Goal here plus the physics of its output (and its limit in LIMIT_TABLE).
+# search's objective functions (axisopt.search.task.objective), the values the exact solves and the
+# designs carry (axisopt.search.result.Exact and Candidate, under ``field``), the Pareto front's
+# senses, units and values and the printed tables' columns derive from it.  A new objective: one
+# Goal here plus the physics of its output (and its limit in LIMIT_TABLE).  The positioning
+# budget's worst-case total (model.accuracy) is minimised: it falls with the nut preload, so a
+# combination's front point stays its highest feasible preload; the search chooses the grade.
+# fmt: off
 OBJECTIVE_TABLE = (
-    Goal(
-        "stiffness",
-        "min_stiffness",
-        "min_stiffness",
-        "axial stiffness",
-        "minimum axial stiffness",
-        mode=True,
-        performance=True,
-        pareto=True,
-        column=Column("k N/um", 9, ".1f", always=True),
-    ),
-    Goal(
-        "frequency",
-        "min_frequency",
-        "min_frequency",
-        "first natural frequency",
-        "minimum first natural frequency",
-        mode=True,
-        performance=True,
-        pareto=True,
-        column=Column("f Hz", 8, ".1f", always=True),
-    ),
-    Goal(
-        "tool_stiffness",
-        "min_tool_stiffness",
-        "",
-        "stiffness at the tool",
-        "minimum stiffness at the tool",
-        mode=True,
-    ),
-    Goal(
-        "kv",
-        "min_kv",
-        "",
-        "achievable position-loop gain Kv",
-        "minimum achievable position-loop gain Kv",
-        mode=True,
-    ),
-    Goal(
-        "cost",
-        "max_cost",
-        "cost",
-        "cost",
-        "least cost",
-        mode=True,
-        performance=True,
-        pareto=True,
-        column=Column("cost EUR", 10, ",.0f", always=True),
-    ),
-    Goal(
-        "total_mass",
-        "max_total_mass",
-        "total_mass",
-        pareto=True,
-        column=Column("mass kg", 9, ".1f", always=True),
-    ),
-    Goal(
-        "moving_mass",
-        "max_moving_mass",
-        "moving_mass",
-        "moving mass",
-        "least moving mass",
-        mode=True,
-        performance=True,
-        pareto=True,
-    ),
-    # the positioning budget's worst-case total (model.accuracy), minimised: it falls with the nut
-    # preload, so a
-    # combination's front point stays its highest feasible preload; the search chooses the screw's
-    # grade
-    Goal(
-        "positioning_error",
-        "max_positioning_error",
-        "positioning_error",
-        pareto=True,
-        column=Column("error um", 10, ".1f"),
-    ),
+    Goal("stiffness", "min_stiffness", "axial stiffness", _ALL, Column("k N/um", 9, ".1f")),
+    Goal("frequency", "min_frequency", "first natural frequency", _ALL, Column("f Hz", 8, ".1f")),
+    Goal("tool_stiffness", "min_tool_stiffness", "stiffness at the tool", (ROLE_MODE,)),
+    Goal("kv", "min_kv", "achievable position-loop gain Kv", (ROLE_MODE,)),
+    Goal("cost", "max_cost", "cost", _ALL, Column("cost EUR", 10, ",.0f")),
+    Goal("total_mass", "max_total_mass", "", _FRONT, Column("mass kg", 9, ".1f")),
+    Goal("moving_mass", "max_moving_mass", "moving mass", _ALL),
+    Goal("positioning_error", "max_positioning_error", "", _FRONT, _ERROR_COLUMN),
 )
+# fmt: on
 
 
 GOALS = MappingProxyType({g.key: g for g in OBJECTIVE_TABLE})

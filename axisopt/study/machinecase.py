@@ -1,19 +1,14 @@
-"""One case of a machine study: its machine built from the base YAML tree and the case's values, and its joint
-solve recorded as a plain dict (``DIR/cases/<case_id>.json``; the runner's :func:`.record.solve_case` calls it
-for a machine study's context)."""
+"""One case of a machine study: its machine built from the base YAML tree and the case's values, its joint solve
+and what the record (a plain dict, ``DIR/cases/<case_id>.json``) holds of it.  The runner's
+:func:`.record.record_case` makes the record around them, as for an axis case."""
 
 from __future__ import annotations
 
-import os
-import socket
-import time
 from pathlib import Path
 
-from ..errors import InputError
 from ..machine.spec import MACHINE_FILE_SPEC, read_machine
 from ..yamlio import Section
-from .cases import Case, apply_overrides, short_message
-from .store import RECORD_VERSION
+from .cases import Case, apply_overrides
 
 OBJECTIVE_UNITS = {
     "cost": ("cost", "EUR", 1.0),
@@ -24,46 +19,30 @@ OBJECTIVE_UNITS = {
 
 
 def build_machine(context: dict, case: Case):
-    """The case's :class:`~axisopt.machine.spec.Machine` (InputError if the combination is invalid)."""
+    """The case's :class:`~axisopt.machine.spec.Machine` (InputError if the combination is invalid, or if it pins
+    a nut preload: a machine solve chooses them)."""
+    from ..machine.joint import refuse_preloads
+
     tree = apply_overrides(context["base"], case.overrides)
-    return read_machine(
+    machine = read_machine(
         Section(tree, context["base_source"], spec=MACHINE_FILE_SPEC), Path(context["base_source"])
     )
+    refuse_preloads(machine)
+    return machine
 
 
-def solve_machine_case(context: dict, case: Case) -> dict:
-    """Build and solve one machine case into its record; never raises for a case-level failure."""
+def solve_machine_case(context: dict, machine):
+    """The case's joint solve (the runner's :func:`.record.record_case` records a failure)."""
     from ..machine import solve_machine
+
+    return solve_machine(machine, context["method"])
+
+
+def machine_record(rec: dict, machine, res) -> None:
+    """A machine case's answer into its record: status, objective, the joint optimum and the sequential sizing,
+    the gain and the certificate."""
     from ..machine.record import design_dict
 
-    t0 = time.perf_counter()
-    rec = {
-        "version": RECORD_VERSION,
-        "case_id": case.case_id,
-        "index": case.index,
-        "inputs": {k: v for k, v in case.overrides},
-        "status": "",
-        "reason": "",
-        "worker": f"{socket.gethostname()}:{os.getpid()}",
-    }
-    try:
-        machine = build_machine(context, case)
-    except InputError as exc:
-        rec.update(
-            status="input_error",
-            reason=short_message(exc).replace("\n", " "),
-            time_s=time.perf_counter() - t0,
-        )
-        return rec
-    try:
-        res = solve_machine(machine, context["method"])
-    except Exception as exc:  # a failure is this case's result, not the end of the study
-        rec.update(
-            status="error",
-            reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
-            time_s=time.perf_counter() - t0,
-        )
-        return rec
     label, unit, f = OBJECTIVE_UNITS[machine.objective]
     rec["status"] = res.status
     rec["objective"] = {
@@ -85,8 +64,6 @@ def solve_machine_case(context: dict, case: Case) -> dict:
         "offers_kept": dict(res.offers),
     }
     rec["note"] = "; ".join(res.notes)
-    rec["time_s"] = time.perf_counter() - t0
-    return rec
 
 
-__all__ = ["build_machine", "solve_machine_case", "OBJECTIVE_UNITS"]
+__all__ = ["build_machine", "solve_machine_case", "machine_record", "OBJECTIVE_UNITS"]

@@ -31,14 +31,24 @@ def solve_case(context: dict, case: Case) -> dict:
     """Build and solve one case; never raises for a case-level failure (the reason is recorded).  A machine
     study's case (``context['kind'] == 'machine'``) is a joint machine solve (:mod:`.machinecase`)."""
     if context.get("kind") == "machine":
-        from .machinecase import solve_machine_case
+        from .machinecase import build_machine, machine_record, solve_machine_case
 
         with _SOLVE_LOCK:
-            return solve_machine_case(context, case)
-    from ..model import evaluate
-    from ..model.function import check_rows, drive_dict
-    from ..search import solve
+            return record_case(
+                case,
+                lambda: build_machine(context, case),
+                lambda machine: solve_machine_case(context, machine),
+                machine_record,
+            )
+    return record_case(
+        case, lambda: build_problem(context, case), lambda p: _solve(context, p), _axis_record
+    )
 
+
+def record_case(case: Case, build, solve, fill) -> dict:
+    """One case's record: ``build()`` (an InputError is the case's input_error), ``solve(built)`` (any exception
+    is the case's error: a failure is this case's result, not the end of the study), then ``fill(rec, built,
+    solved)`` records the answer; the time taken last."""
     t0 = time.perf_counter()
     rec = {
         "version": RECORD_VERSION,
@@ -50,39 +60,64 @@ def solve_case(context: dict, case: Case) -> dict:
         "worker": f"{socket.gethostname()}:{os.getpid()}",
     }
     try:
-        problem = build_problem(context, case)
+        built = build()
     except InputError as exc:
-        rec.update(
-            status="input_error",
-            reason=short_message(exc).replace("\n", " "),
-            time_s=time.perf_counter() - t0,
-        )
-        return rec
-    if problem.drives is not None:  # search.drive_types: the best design of any type
-        return _drive_types_case(rec, problem, context, t0)
-    try:
+        status, reason = "input_error", short_message(exc)
+    else:
+        try:
+            solved = solve(built)
+        except InputError as exc:  # a problem the solve refuses (a drive type it cannot take)
+            status, reason = "input_error", short_message(exc)
+        except Exception as exc:  # a solver failure is a result of this case
+            status, reason = "error", f"{type(exc).__name__}: {exc}"
+        else:
+            fill(rec, built, solved)
+            rec["time_s"] = time.perf_counter() - t0
+            return rec
+    rec.update(status=status, reason=reason.replace("\n", " "), time_s=time.perf_counter() - t0)
+    return rec
+
+
+def _solve(context: dict, problem) -> tuple:
+    """The case's solve and its best design's evaluation (None without one); a problem with
+    search.drive_types solved over its types (the evaluation None)."""
+    from ..model import evaluate
+    from ..search import solve
+
+    if problem.drives is not None:
+        from ..search.drivetype import solve_drive_types
+
         with _SOLVE_LOCK:
-            res = solve(
-                problem,
-                context["method"],
-                top=1,
-                sensitivities=False,
-                time_limit=context.get("time_limit", 100.0),
+            res = solve_drive_types(
+                problem, context["method"], top=1, time_limit=context.get("time_limit", 100.0)
             )
-            # on numpy: the CasADi Function of a case's duty cycle would be built for this one
-            # evaluation
-            ev = (
-                evaluate(res.best.design, use_casadi=False)
-                if res.best is not None and res.best.design is not None
-                else None
-            )
-    except Exception as exc:  # a solver failure is a result of this case, not the end of the study
-        rec.update(
-            status="error",
-            reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
-            time_s=time.perf_counter() - t0,
+        return res, None
+    with _SOLVE_LOCK:
+        res = solve(
+            problem,
+            context["method"],
+            top=1,
+            sensitivities=False,
+            time_limit=context.get("time_limit", 100.0),
         )
-        return rec
+        # on numpy: the CasADi Function of a case's duty cycle would be built for this one evaluation
+        ev = (
+            evaluate(res.best.design, use_casadi=False)
+            if res.best is not None and res.best.design is not None
+            else None
+        )
+    return res, ev
+
+
+def _axis_record(rec: dict, problem, solved: tuple) -> None:
+    """An axis case's answer into its record: status, objective, the reason of a failure, the best design,
+    where its minima lie, its drive values and check margins, the certificate."""
+    from ..model.function import check_rows, drive_dict
+
+    res, ev = solved
+    if problem.drives is not None:
+        _drive_types_record(rec, res)
+        return
     rec["status"] = res.status
     rec["objective"] = {
         "label": res.objective_label,
@@ -131,39 +166,13 @@ def solve_case(context: dict, case: Case) -> dict:
     }
     if res.pareto is not None:
         rec["pareto"] = res.pareto.to_dict()
-    rec["time_s"] = time.perf_counter() - t0
-    return rec
 
 
-def _drive_types_case(rec: dict, problem, context: dict, t0: float) -> dict:
-    """:func:`solve_case` of a problem with search.drive_types: solved over its types
-    (search.drivetype.solve_drive_types), the best design of any type recorded with its drive type, parts,
-    the values every type has (objective, least stiffness, first frequency, cost, moving mass) and its
-    margins; a screw design also with its checks as a screw case records them."""
-    from ..search.drivetype import solve_drive_types
-
-    try:
-        with _SOLVE_LOCK:
-            res = solve_drive_types(
-                problem,
-                context["method"],
-                top=1,
-                time_limit=context.get("time_limit", 100.0),
-            )
-    except InputError as exc:
-        rec.update(
-            status="input_error",
-            reason=short_message(exc).replace("\n", " "),
-            time_s=time.perf_counter() - t0,
-        )
-        return rec
-    except Exception as exc:  # a solver failure is a result of this case, not the end of the study
-        rec.update(
-            status="error",
-            reason=f"{type(exc).__name__}: {exc}".replace("\n", " "),
-            time_s=time.perf_counter() - t0,
-        )
-        return rec
+def _drive_types_record(rec: dict, res) -> None:
+    """A case of a problem with search.drive_types (solved by search.drivetype.solve_drive_types) into its
+    record: the best design of any type with its drive type, parts, the values every type has (objective,
+    least stiffness, first frequency, cost, moving mass) and its margins; a screw design also with its checks
+    as a screw case records them."""
     best = res.best
     rec["status"] = res.status
     rec["objective"] = {
@@ -196,8 +205,6 @@ def _drive_types_case(rec: dict, problem, context: dict, t0: float) -> dict:
         if any(t.feasible is None for t in res.types)
         else int(sum(t.feasible for t in res.types)),
     }
-    rec["time_s"] = time.perf_counter() - t0
-    return rec
 
 
 def run_batch(context: dict, cases) -> list:
@@ -209,4 +216,4 @@ def _num(v):
     return float(v) if v is not None and math.isfinite(v) else None
 
 
-__all__ = ["solve_case", "run_batch", "INFRA_STATUSES", "LEGACY_WORKER_DIED"]
+__all__ = ["solve_case", "record_case", "run_batch", "INFRA_STATUSES", "LEGACY_WORKER_DIED"]

@@ -87,3 +87,70 @@ def test_cli_shows_a_missed_machine_limit_and_refuses_an_open_choice(machine, tm
     assert main(["machine", "evaluate", str(p)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "catalog combinations" in err and "catalog.require" in err
+
+
+def _with_preload(text: str, axis: str, value: str) -> str:
+    """The machine text with ``nut_preload: value`` in axis ``axis``'s node."""
+    head = f"  {axis}:\n    carried_by:"
+    assert head in text
+    return text.replace(head, f"  {axis}:\n    nut_preload: {value}\n    carried_by:", 1)
+
+
+def test_the_machine_file_sets_each_nut_preload(machine, tmp_path):
+    """An axis's nut_preload is the preload its nut is evaluated at: the optimum's own preload gives the
+    optimum's figures; the nut's least preload gives that axis the axis model's stiffness at that preload
+    (evaluated on the axis's own Design), and a machine stiffer than it in no direction."""
+    from dataclasses import replace
+
+    from axisopt.model import evaluate
+
+    _d, _p, pinned, res = machine
+    text = pinned.read_text()
+    best = {a.name: a for a in res.best.axes}
+    name = next(n for n, a in best.items() if a.candidate.design.nut["preload_min"] > 0)
+    top = best[name].candidate.nut_preload
+    p = tmp_path / "top.yaml"
+    p.write_text(_with_preload(text, name, f"{top!r} N"))
+    md = evaluate_machine(load_machine(p)).design
+    assert md.k_tool == pytest.approx(res.best.k_tool, rel=1e-9)
+    low = float(best[name].candidate.design.nut["preload_min"])
+    assert low < top * 0.9
+    p = tmp_path / "low.yaml"
+    p.write_text(_with_preload(text, name, f"{low!r} N"))
+    ev = evaluate_machine(load_machine(p))
+    if ev.design is None:  # the axis misses one of its own limits at the least preload: named
+        assert [n for n, _ in ev.failed] == [name]
+        return
+    a = next(x for x in ev.design.axes if x.name == name)
+    assert a.candidate.nut_preload == pytest.approx(low)
+    axial = a.roles.index("axial")
+    design = replace(best[name].candidate.design, nut_preload=low)
+    k_axis = float(min(evaluate(design, use_casadi=False)["k_total"]))
+    tw = load_machine(p).by_name[name].problem.axis.twin_drive
+    if tw is not None:
+        k_axis /= tw.force_share**2 + (1 - tw.force_share) ** 2
+    assert a.k_axis[axial] == pytest.approx(k_axis, rel=1e-9)
+    assert a.k_axis[axial] < best[name].k_axis[axial]
+    assert all(k <= kb * (1 + 1e-12) for k, kb in zip(ev.design.k_tool, res.best.k_tool))
+
+
+def test_a_nut_preload_outside_the_nut_or_in_a_solve_is_one_line_exit_2(machine, tmp_path, capsys):
+    _d, p, pinned, res = machine
+    name = res.best.axes[0].name
+    hi = float(res.best.axes[0].candidate.design.nut["preload_max"])
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(_with_preload(pinned.read_text(), name, f"{2 * hi:.0f} N"))
+    capsys.readouterr()
+    assert main(["machine", "evaluate", str(bad)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert f"axes.{name}.nut_preload" in err and "outside nut" in err and str(bad) in err
+    unit = tmp_path / "unit.yaml"
+    unit.write_text(_with_preload(pinned.read_text(), name, "3000"))
+    assert main(["machine", "evaluate", str(unit)]) == 2
+    assert len(capsys.readouterr().err.strip().splitlines()) == 1
+    solve = tmp_path / "solve.yaml"
+    solve.write_text(_with_preload(p.read_text(), name, "1000 N"))
+    assert main(["machine", "solve", str(solve)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "machine evaluate" in err and "nut_preload" in err
