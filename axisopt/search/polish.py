@@ -183,67 +183,8 @@ def scalar_result(
     (with the explanation, cut at ``deadline``, and what to relax), or the ``top`` best polished by IPOPT."""
     problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
     stats.pruned_by_dominance = space.pruned_by_dominance
-    if not np.isfinite(ex.objective).any() and stats.timed_out:
-        return SolveResult(
-            TIME_LIMIT,
-            method,
-            problem.name,
-            spec.label,
-            spec.unit,
-            None,
-            [],
-            replace(Certificate.of(stats), proven=False),
-            time.perf_counter() - t0,
-            message="the time limit came before any design was found: not "
-            "proven infeasible (a longer --time-limit searches on)",
-        )
-    if not np.isfinite(ex.objective).any() and not task.explain:
-        return SolveResult(
-            INFEASIBLE,
-            method,
-            problem.name,
-            spec.label,
-            spec.unit,
-            None,
-            [],
-            Certificate.of(stats),
-            time.perf_counter() - t0,
-            message="no catalog combination meets every limit (not explained: asked without)",
-        )
     if not np.isfinite(ex.objective).any():
-        from .infeasible.explain import explain_infeasible
-        from .infeasible.relax import missing_values, rank_relaxations
-
-        why = explain_infeasible(
-            space, constraints, spec, every_combination=method == "exhaustive", deadline=deadline
-        )
-        why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
-        why.missing = missing_values(constraints, why, space)
-        message = "no catalog combination meets every limit"
-        if why.cut:
-            from .infeasible.explain import cut_note
-
-            message += "; " + cut_note(why)
-        if space.reductions_by_backlash:
-            lim = problem.limit_map.get("max_backlash", 0.0)
-            message += (
-                f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each one's "
-                f"backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) even on the shortest "
-                "lead; admit some lost motion to let the search choose one"
-            )
-        return SolveResult(
-            INFEASIBLE,
-            method,
-            problem.name,
-            spec.label,
-            spec.unit,
-            None,
-            [],
-            Certificate.of(stats),
-            time.perf_counter() - t0,
-            message=message,
-            infeasibility=why,
-        )
+        return _no_design(task, method, stats, t0, deadline)
     cands, nlps, failed_ranks, notes = polish(space, ex, constraints, spec, top)
     cert = Certificate.of(stats, nlps, len(failed_ranks), notes)
     status = OPTIMAL if cert.proven else TIME_LIMIT
@@ -261,4 +202,51 @@ def scalar_result(
         time.perf_counter() - t0,
         message="; ".join(notes),
         solver_status="ipopt",
+    )
+
+
+def _no_design(task: Task, method: str, stats, t0: float, deadline: float | None) -> SolveResult:
+    """:func:`scalar_result` when the search found no design: the time limit's answer (not proven
+    infeasible), or the infeasible answer with its explanation (unless the task asks without one)."""
+    problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
+    status, cert, why = INFEASIBLE, Certificate.of(stats), None
+    if stats.timed_out:
+        status, cert = TIME_LIMIT, replace(cert, proven=False)
+        message = (
+            "the time limit came before any design was found: not proven infeasible (a longer "
+            "--time-limit searches on)"
+        )
+    elif not task.explain:
+        message = "no catalog combination meets every limit (not explained: asked without)"
+    else:
+        from .infeasible.explain import cut_note, explain_infeasible
+        from .infeasible.relax import missing_values, rank_relaxations
+
+        why = explain_infeasible(
+            space, constraints, spec, every_combination=method == "exhaustive", deadline=deadline
+        )
+        why.relax, why.not_relaxable, why.relax_blocked_by = rank_relaxations(constraints, why)
+        why.missing = missing_values(constraints, why, space)
+        message = "no catalog combination meets every limit"
+        if why.cut:
+            message += "; " + cut_note(why)
+        if space.reductions_by_backlash:
+            lim = problem.limit_map.get("max_backlash", 0.0)
+            message += (
+                f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each "
+                f"one's backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) even on the "
+                "shortest lead; admit some lost motion to let the search choose one"
+            )
+    return SolveResult(
+        status,
+        method,
+        problem.name,
+        spec.label,
+        spec.unit,
+        None,
+        [],
+        cert,
+        time.perf_counter() - t0,
+        message=message,
+        infeasibility=why,
     )
