@@ -18,12 +18,13 @@ import time
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "tests" / "search"))
 
-from axisopt.catalog.columns import SCHEMA  # noqa: E402
+from search_synthetic import BENCH, make_catalog  # noqa: E402
+
 from axisopt.catalog.loading import Catalog  # noqa: E402
 from axisopt.design import Axis  # noqa: E402
 from axisopt.model import CHECKS  # noqa: E402
@@ -35,120 +36,14 @@ from axisopt.search.screen import screen  # noqa: E402
 from axisopt.search.task.constraints import build_constraints  # noqa: E402
 from axisopt.search.task.objective import objective_spec  # noqa: E402
 
-RPM = 2 * math.pi / 60
-
 
 def synthetic_catalog(
     seed=0, n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100
 ) -> Catalog:
-    """A large synthetic catalog (plausible SI values; 20*5 nuts x 100 x 100 = 1e6 combinations)."""
-    rng = np.random.default_rng(seed)
-    screws, nuts, bearings, guides = [], [], [], []
-    for i in range(n_screws):
-        d = float(rng.choice([25, 32, 40, 50, 63])) * 1e-3
-        ball = float(rng.choice([3.175, 4.763, 6.35])) * 1e-3
-        screws.append(
-            {
-                "id": f"S{i}",
-                "vendor": "SYN",
-                "series": "synthetic",
-                "nominal_diameter": d,
-                "lead": float(rng.choice([10, 16, 20])) * 1e-3,
-                "root_diameter": d - 1.2 * ball,
-                "ball_diameter": ball,
-                "max_length": rng.uniform(3, 6),
-                "mass_per_length": 7850 * math.pi * d**2 / 4,
-                "dn_limit": rng.uniform(1.2e5, 2.2e5) * 1e-3 * RPM,
-                "support_bore_min": 0.4 * d,
-                "support_bore_max": d - 0.002,
-                "price_per_length": rng.uniform(60, 250),
-                "price_fixed": rng.uniform(100, 300),
-            }
-        )
-        for j in range(nuts_per_screw):
-            c = rng.uniform(20e3, 120e3)
-            double = bool(rng.random() < 0.7)
-            nuts.append(
-                {
-                    "id": f"N{i}_{j}",
-                    "vendor": "SYN",
-                    "screw_id": f"S{i}",
-                    "type": "double" if double else "single",
-                    "stiffness": rng.uniform(200, 1200) * 1e6,
-                    "stiffness_preload": (0.1 if double else 0.28) * c,
-                    "preload_min": 0.02 * c if double else 0.0,
-                    "preload_max": 0.1 * c if double else 0.0,
-                    "axial_play": 0.0 if double else 2e-5,
-                    "dynamic_load_rating": c,
-                    "static_load_rating": 2 * c,
-                    "contact_angle": math.radians(45),
-                    "mass": rng.uniform(0.5, 4),
-                    "price": rng.uniform(200, 900),
-                }
-            )
-    for i in range(n_bearings):
-        bore = float(rng.choice([15, 17, 20, 25, 30])) * 1e-3
-        bearings.append(
-            {
-                "id": f"B{i}",
-                "vendor": "SYN",
-                "series": "synthetic",
-                "arrangement": "DB",
-                "rows": 2,
-                "bore": bore,
-                "outer_diameter": bore + 0.03,
-                "contact_angle": math.radians(60),
-                "preload_class": str(rng.choice(["light", "medium", "heavy"])),
-                "preload": rng.uniform(500, 3000),
-                "axial_rigidity": rng.uniform(300, 1500) * 1e6,
-                "lift_off_load": rng.uniform(5e3, 3e4),
-                "dynamic_load_rating": rng.uniform(15e3, 40e3),
-                "static_load_rating": 4e4,
-                "limiting_speed": rng.uniform(3000, 9000) * RPM,
-                "f0": 1.5,
-                "starting_torque": rng.uniform(0.1, 0.5) if rng.random() < 0.5 else math.nan,
-                "f1": 0.0003,
-                "mass": rng.uniform(0.2, 1.0),
-                "price": rng.uniform(100, 500),
-            }
-        )
-    for i in range(n_guides):
-        kn = rng.uniform(200, 900) * 1e6
-        guides.append(
-            {
-                "id": f"G{i}",
-                "vendor": "SYN",
-                "series": "synthetic",
-                "type": "ball",
-                "size": 0.025,
-                "preload_class": "Z0",
-                "preload_level": str(rng.choice(["light", "medium", "heavy"])),
-                "preload": rng.uniform(500, 3000),
-                "normal_rigidity": kn,
-                "tangential_rigidity": 0.71 * kn,
-                "dynamic_load_rating": 3e4,
-                "static_load_rating": 5e4,
-                "friction_force": rng.uniform(3, 30),
-                "friction_coefficient": 0.003,
-                "friction_viscous": rng.uniform(3, 20),
-                "damping": 3000.0,
-                "block_mass": rng.uniform(0.2, 1.5),
-                "rail_mass_per_length": rng.uniform(2, 6),
-                "block_price": rng.uniform(50, 200),
-                "rail_price_per_length": rng.uniform(50, 150),
-                "moment_roll": 400.0,
-                "moment_pitch": 300.0,
-                "moment_yaw": 300.0,
-            }
-        )
-
-    def df(rows, name):
-        d = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]))
-        d["_source"] = "synthetic"
-        return d.set_index("id", drop=False)
-
-    return Catalog(
-        df(screws, "screws"), df(nuts, "nuts"), df(bearings, "bearings"), df(guides, "guides")
+    """A large synthetic catalog (plausible SI values; 20*5 nuts x 100 x 100 = 1e6 combinations): the search
+    tests' builder (tests/search/search_synthetic.py) with the bench's ranges."""
+    return make_catalog(
+        np.random.default_rng(seed), n_screws, nuts_per_screw, n_bearings, n_guides, ranges=BENCH
     )
 
 

@@ -6,21 +6,21 @@ import sys
 from pathlib import Path
 
 import pytest
+from cli_helpers import one_line_error
+
+from axisopt.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _run(tmp_path, line):
+def _run(tmp_path, line, monkeypatch) -> int:
+    """``axisopt solve`` of the teaching problem with ``line`` added under axis:, in this process (the real
+    entry point's exit 2 and one stderr line: test_scale_on_a_rotating_nut_unit_one_line_exit_2)."""
     text = (ROOT / "problems/teaching_problem.yaml").read_text(encoding="utf-8")
     f = tmp_path / "p.yaml"
     f.write_text(text.replace("\naxis:\n", f"\naxis:\n  {line}\n", 1), encoding="utf-8")
-    return subprocess.run(
-        [sys.executable, "-m", "axisopt", "solve", str(f)],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-        timeout=300,
-    )
+    monkeypatch.chdir(ROOT)
+    return main(["solve", str(f)])
 
 
 @pytest.mark.parametrize(
@@ -37,10 +37,9 @@ def _run(tmp_path, line):
         ("feedback: glass", "feedback"),
     ],
 )
-def test_bad_vendor_rule_keys_one_line_exit_2(tmp_path, line, word):
-    r = _run(tmp_path, line)
-    assert r.returncode == 2
-    assert r.stderr.count("\n") == 1 and word in r.stderr and "Traceback" not in r.stderr
+def test_bad_vendor_rule_keys_one_line_exit_2(tmp_path, line, word, monkeypatch, capsys):
+    assert _run(tmp_path, line, monkeypatch) == 2
+    assert word in one_line_error(capsys)
 
 
 def test_scale_on_a_rotating_nut_unit_one_line_exit_2(tmp_path):

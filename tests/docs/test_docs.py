@@ -308,25 +308,38 @@ FIGURES = [
 ]
 
 
+@pytest.fixture(scope="module")
+def figure_output(tmp_path_factory):
+    """What a figure's command prints, run once a module in a scratch directory of its own: several figures
+    (and the noise floor) quote the same diagnosis, a deterministic command of shipped inputs."""
+    made: dict[str, str] = {}
+
+    def get(cmd: str) -> str:
+        if cmd not in made:
+            made[cmd] = _run(cmd, tmp_path_factory.mktemp("figure"))[1]
+        return made[cmd]
+
+    return get
+
+
 @pytest.mark.parametrize(
     "page, cmd, in_readme, in_output", FIGURES, ids=[f"figure{i}" for i in range(len(FIGURES))]
 )
-def test_quoted_figures_match(page, cmd, in_readme, in_output, tmp_path):
+def test_quoted_figures_match(page, cmd, in_readme, in_output, figure_output):
     text = TEXT[page]
     r = re.search(in_readme, " ".join(text.split()) if "\\s" not in in_readme else text)
     assert r, f"{page} no longer quotes /{in_readme}/"
-    _, out = _run(cmd, tmp_path)
+    out = figure_output(cmd)
     o = re.search(in_output, out)
     assert o, f"'{cmd}' no longer prints /{in_output}/"
     for a, b in zip(r.groups(), o.groups()):
         assert _close(a, b), f"{page} says {a}, '{cmd}' prints {b}"
 
 
-def test_noise_floor_quoted(tmp_path):
+def test_noise_floor_quoted(figure_output):
     r = re.search(r"at the ([\d.]+) um noise floor", " ".join(TEXT["docs/diagnose.md"].split()))
-    _, out = _run(
-        "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml",
-        tmp_path,
+    out = figure_output(
+        "axisopt diagnose problems/data/table_x_stiffness.csv --design problems/data/table_x.yaml"
     )
     o = re.search(r"noise floor ([\d.]+) um", out)
     assert r and o and _close(r.group(1), o.group(1))

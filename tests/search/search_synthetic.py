@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -17,6 +18,60 @@ from axisopt.problem import Problem, Restrictions
 RPM = 2 * math.pi / 60
 
 
+@dataclass(frozen=True)
+class Ranges:
+    """What the synthetic parts are drawn from (uniform between two values or a choice among several; SI
+    except the marked ones).  The tests' catalogs use ``TESTS``; bench/bench_search.py's catalog of 10^6
+    combinations ``BENCH`` (its draws kept, so the figures docs/benchmarks.md quotes still hold)."""
+
+    vendor: str
+    diameters_mm: tuple
+    leads_mm: tuple
+    ball_first: bool  # the ball diameter drawn before the lead (the bench's order)
+    max_length: tuple
+    nut_rating: tuple
+    nut_rigidity_per_um: tuple  # N/um
+    single_preload: float  # the single nut's quoted stiffness load, x C
+    bores_mm: tuple
+    lift_off: tuple
+    starting_torque: tuple
+
+
+TESTS = Ranges(
+    vendor="V",
+    diameters_mm=(20, 25, 32, 40, 50),
+    leads_mm=(5, 10, 20),
+    ball_first=False,
+    max_length=(1.5, 5),
+    nut_rating=(10e3, 80e3),
+    nut_rigidity_per_um=(150, 900),
+    single_preload=0.3,
+    bores_mm=(12, 15, 17, 20, 25, 30),
+    lift_off=(3e3, 2e4),
+    starting_torque=(0.05, 0.3),
+)
+BENCH = Ranges(
+    vendor="SYN",
+    diameters_mm=(25, 32, 40, 50, 63),
+    leads_mm=(10, 16, 20),
+    ball_first=True,
+    max_length=(3, 6),
+    nut_rating=(20e3, 120e3),
+    nut_rigidity_per_um=(200, 1200),
+    single_preload=0.28,
+    bores_mm=(15, 17, 20, 25, 30),
+    lift_off=(5e3, 3e4),
+    starting_torque=(0.1, 0.5),
+)
+
+
+def frame(rows, name: str) -> pd.DataFrame:
+    """Synthetic rows as a catalog table: the SCHEMA columns, indexed by id, source 'synthetic'."""
+    d = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]))
+    d["_source"] = "synthetic"
+    return d.set_index("id", drop=False)
+
+
 def make_catalog(
     rng: np.random.Generator,
     n_screws=3,
@@ -25,25 +80,31 @@ def make_catalog(
     n_guides=4,
     carriage: bool = False,
     rotating: bool = False,
+    ranges: Ranges = TESTS,
 ) -> Catalog:
     """``rotating``: about half the nuts are driven rotating-nut units (THK DIR/BLR-like unit values; some leave
     the max speed, bearing rigidity and starting torque to the model's estimates)."""
+    r = ranges
     screws, nuts, bearings, guides = [], [], [], []
     for i in range(n_screws):
-        d = rng.choice([20, 25, 32, 40, 50]) * 1e-3
-        lead = rng.choice([5, 10, 20]) * 1e-3
-        ball = rng.choice([3.175, 4.763, 6.35]) * 1e-3
+        d = rng.choice(r.diameters_mm) * 1e-3
+        if r.ball_first:
+            ball = rng.choice([3.175, 4.763, 6.35]) * 1e-3
+            lead = rng.choice(r.leads_mm) * 1e-3
+        else:
+            lead = rng.choice(r.leads_mm) * 1e-3
+            ball = rng.choice([3.175, 4.763, 6.35]) * 1e-3
         sid = f"S{i}"
         screws.append(
             {
                 "id": sid,
-                "vendor": "V",
+                "vendor": r.vendor,
                 "series": "synthetic",
                 "nominal_diameter": d,
                 "lead": lead,
                 "root_diameter": d - 1.2 * ball,
                 "ball_diameter": ball,
-                "max_length": rng.uniform(1.5, 5),
+                "max_length": rng.uniform(*r.max_length),
                 "mass_per_length": 7850 * math.pi * d**2 / 4,
                 "dn_limit": rng.uniform(1.2e5, 2.2e5) * 1e-3 * RPM,
                 "support_bore_min": 0.4 * d,
@@ -53,16 +114,16 @@ def make_catalog(
             }
         )
         for j in range(nuts_per_screw):
-            c = rng.uniform(10e3, 80e3)
+            c = rng.uniform(*r.nut_rating)
             double = bool(rng.random() < 0.7)
             nuts.append(
                 {
                     "id": f"N{i}_{j}",
-                    "vendor": "V",
+                    "vendor": r.vendor,
                     "screw_id": sid,
                     "type": "double" if double else "single",
-                    "stiffness": rng.uniform(150, 900) * 1e6,
-                    "stiffness_preload": (0.1 if double else 0.3) * c,
+                    "stiffness": rng.uniform(*r.nut_rigidity_per_um) * 1e6,
+                    "stiffness_preload": (0.1 if double else r.single_preload) * c,
                     "preload_min": 0.02 * c if double else 0.0,
                     "preload_max": 0.1 * c if double else 0.0,
                     "dynamic_load_rating": c,
@@ -94,11 +155,11 @@ def make_catalog(
                     }
                 )
     for i in range(n_bearings):
-        bore = rng.choice([12, 15, 17, 20, 25, 30]) * 1e-3
+        bore = rng.choice(r.bores_mm) * 1e-3
         bearings.append(
             {
                 "id": f"B{i}",
-                "vendor": "V",
+                "vendor": r.vendor,
                 "series": "synthetic",
                 "arrangement": "DB",
                 "rows": 2,
@@ -108,13 +169,15 @@ def make_catalog(
                 "preload_class": rng.choice(["light", "medium", "heavy"]),
                 "preload": rng.uniform(500, 3000),
                 "axial_rigidity": rng.uniform(300, 1500) * 1e6,
-                "lift_off_load": rng.uniform(3e3, 2e4),
+                "lift_off_load": rng.uniform(*r.lift_off),
                 "dynamic_load_rating": rng.uniform(15e3, 40e3),
                 "static_load_rating": 4e4,
                 "limiting_speed": rng.uniform(3000, 9000) * RPM,
                 "f0": 1.5,
                 "f1": 0.0003,
-                "starting_torque": rng.uniform(0.05, 0.3) if rng.random() < 0.5 else math.nan,
+                "starting_torque": rng.uniform(*r.starting_torque)
+                if rng.random() < 0.5
+                else math.nan,
                 "mass": rng.uniform(0.2, 1.0),
                 "price": rng.uniform(100, 500),
             }
@@ -124,7 +187,7 @@ def make_catalog(
         guides.append(
             {
                 "id": f"G{i}",
-                "vendor": "V",
+                "vendor": r.vendor,
                 "series": "synthetic",
                 "type": "ball",
                 "size": 0.025,
@@ -160,16 +223,11 @@ def make_catalog(
                 moment_yaw=rng.uniform(0.006, 0.015) * c,
             )
 
-    def df(rows, name):
-        d = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]))
-        d["_source"] = "synthetic"
-        return d.set_index("id", drop=False)
-
     return Catalog(
-        screws=df(screws, "screws"),
-        nuts=df(nuts, "nuts"),
-        bearings=df(bearings, "bearings"),
-        guides=df(guides, "guides"),
+        screws=frame(screws, "screws"),
+        nuts=frame(nuts, "nuts"),
+        bearings=frame(bearings, "bearings"),
+        guides=frame(guides, "guides"),
     )
 
 
@@ -284,12 +342,7 @@ def add_drives(
             }
         )
 
-    def df(rows, name):
-        d = pd.DataFrame.from_records(rows, columns=list(SCHEMA[name]))
-        d["_source"] = "synthetic"
-        return d.set_index("id", drop=False)
-
-    return catalog.replace(motors=df(motors, "motors"), couplings=df(couplings, "couplings"))
+    return catalog.replace(motors=frame(motors, "motors"), couplings=frame(couplings, "couplings"))
 
 
 def add_reductions(catalog, rng: np.random.Generator, n=3, rules=False) -> Catalog:
