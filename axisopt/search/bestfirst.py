@@ -12,7 +12,7 @@ import numpy as np
 from . import task as vocabulary
 from .bounds import block_bounds
 from .certificate import SearchStats
-from .preload import concat_exact, exact_solve, new_exact
+from .preload import concat_exact, exact_solve, solve_known
 from .screen import group_end, screen_blocks
 from .task.objective import ObjectiveSpec, objective_floor
 from .task.space import Space
@@ -164,34 +164,3 @@ def run(task, method: str, top: int, time_limit: float, t0: float):
     )
     task.space._cache[SOLVED] = (task.constraints, task.objective, ex)
     return scalar_result(task, method, ex, stats, top, t0, deadline=t0 + time_limit)
-
-
-def solve_known(space: Space, idx, constraints, objective: ObjectiveSpec, known=None):
-    """:func:`exact_solve` of the combinations ``idx``, the feasible rows of ``known`` (an Exact, or None)
-    copied from it rather than solved again (see :func:`bound_order_search`)."""
-    idx = np.asarray(idx, dtype=np.int64)
-    if known is None or not len(idx) or not len(known.idx):
-        return exact_solve(space, idx, constraints, objective)
-    order = np.argsort(known.idx, kind="stable")
-    keys = known.idx[order]
-    at = np.minimum(np.searchsorted(keys, idx), len(keys) - 1)
-    src = order[at]
-    hit = (keys[at] == idx) & known.feasible[src]
-    if not hit.any():
-        return exact_solve(space, idx, constraints, objective)
-    res = new_exact(idx)
-    h, s = np.nonzero(hit)[0], src[hit]
-    res.feasible[h], res.preload[h], res.objective[h] = True, known.preload[s], known.objective[s]
-    for key, v in known.goals.items():
-        res.goals[key][h] = v[s]
-    miss = np.nonzero(~hit)[0]
-    if len(miss):
-        ex = exact_solve(space, idx[miss], constraints, objective)
-        res.feasible[miss], res.preload[miss], res.objective[miss] = (
-            ex.feasible,
-            ex.preload,
-            ex.objective,
-        )
-        for key, v in ex.goals.items():
-            res.goals[key][miss] = v
-    return res
