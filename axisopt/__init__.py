@@ -7,9 +7,9 @@ In a notebook (:mod:`axisopt.api`)::
     res = axisopt.solve("problems/teaching_problem.yaml")      # SolveResult: res.to_frame(), res.best.design
 
 ``load_design``, ``load_problem``, ``evaluate``, ``solve``, ``compare``, ``study``, ``diagnose``,
-``plot_profiles`` and ``plot_pareto`` are imported on first use (PEP 562), so ``import axisopt`` (and the
-command line's start-up) pays for none of them.
-"""
+``plot_profiles`` and ``plot_pareto`` are imported on first use (PEP 562), so ``import axisopt``
+(and the command line's start-up) pays for none of them.
+"""  # noqa: E501
 
 __version__ = "0.1.0"
 

@@ -9,11 +9,12 @@
 >>> res.to_frame()                                               # best design and runners-up
 >>> fig = axisopt.plot_profiles([ev])                            # a matplotlib Figure (a file only with path=)
 
-Each function takes a file path or the object it would read (a Design, a Problem, a Study); each result has
-``to_frame()`` (pandas, units in the column names), a short ``repr`` in engineering units and an HTML table
-for Jupyter.  ``import axisopt`` imports none of this until a name is used (``axisopt.__getattr__``).  Bad
-input raises :class:`axisopt.errors.InputError` (file and key in the message), as the command line reports.
-"""
+Each function takes a file path or the object it would read (a Design, a Problem, a Study); each
+result has ``to_frame()`` (pandas, units in the column names), a short ``repr`` in engineering units
+and an HTML table for Jupyter.  ``import axisopt`` imports none of this until a name is used
+(``axisopt.__getattr__``).  Bad input raises :class:`axisopt.errors.InputError` (file and key in the
+message), as the command line reports.
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -45,9 +46,11 @@ def evaluate(
     calibration: str | PathLike | None = None,
     n_positions: int | None = None,
 ):
-    """Evaluate a design (a :class:`Design` or a design YAML path) over the stroke -> :class:`Evaluation`.
+    """Evaluate a design (a :class:`Design` or a design YAML path) over the stroke ->
+    :class:`Evaluation`.
 
-    calibration : a calibration YAML saved by ``diagnose`` (as ``axisopt evaluate DESIGN --calibration FILE`` takes it)
+    calibration : a calibration YAML saved by ``diagnose`` (as
+        ``axisopt evaluate DESIGN --calibration FILE`` takes it)
     n_positions : nut positions on the stroke (default: the model grid the search uses)
     """
     from .model import evaluate as _evaluate
@@ -70,13 +73,13 @@ def solve(
 ):
     """Solve a sizing problem (a :class:`Problem` or a problem YAML path) -> :class:`SolveResult`.
 
-    method : 'default' (proven optimum) | 'exhaustive' | 'bonmin' | 'scip'; ``top`` designs returned;
-    ``sensitivities`` re-solves with each limit relaxed by 10 % (``res.binding``).
-    ``res.best.design`` is the best :class:`Design` (``evaluate`` it for the full evaluation).
-    A problem with ``search.drive_types`` returns the drive types' answer
-    (:class:`axisopt.search.drivetype.DriveTypeResult`, method 'default' or 'exhaustive'); so does one
-    without, when a rack-and-pinion or linear-motor design the catalogs offer by default beats the screw
-    drive (:mod:`axisopt.search.drivedefault`).
+    method : 'default' (proven optimum) | 'exhaustive' | 'bonmin' | 'scip'; ``top`` designs
+        returned; ``sensitivities`` re-solves with each limit relaxed by 10 % (``res.binding``).
+    ``res.best.design`` is the best :class:`Design` (``evaluate`` it for the full evaluation).  A
+    problem with ``search.drive_types`` returns the drive types' answer
+    (:class:`axisopt.search.drivetype.DriveTypeResult`, method 'default' or 'exhaustive'); so does
+    one without, when a rack-and-pinion or linear-motor design the catalogs offer by default beats
+    the screw drive (:mod:`axisopt.search.drivedefault`).
     """
     from .search import solve as _solve
 
@@ -96,9 +99,9 @@ def solve(
 
 
 def compare(*files, method: str = "default", time_limit: float = 100.0):
-    """Designs side by side -> :class:`axisopt.report.compare.Comparison`.  Each argument is a design or
-    problem YAML path (a problem is solved to its best design, within ``time_limit`` seconds) or a
-    :class:`Design`."""
+    """Designs side by side -> :class:`axisopt.report.compare.Comparison`.  Each argument is a
+    design or problem YAML path (a problem is solved to its best design, within ``time_limit``
+    seconds) or a :class:`Design`."""
     from .report.compare import Comparison
     from .study.compare import compare_designs
 
@@ -119,10 +122,11 @@ def study(
     ``to_frame()`` is the results table, one row per case).
 
     out       : output directory (default ``<study file stem>-results`` as on the command line)
-    workers   : local worker processes; 0 (the default here) solves in this process, None uses every core
+    workers   : local worker processes; 0 (the default here) solves in this process, None uses every
+                core
     resume    : continue a run in ``out`` (its finished cases are kept)
-    overwrite : solve every case again (the case results in ``out`` are deleted first); a re-run with
-                neither is an error that names both
+    overwrite : solve every case again (the case results in ``out`` are deleted first); a re-run
+                with neither is an error that names both
     time_limit: [s] of each case's solve (the study command's --time-limit option)
 
     ``axisopt.study`` is also the package :mod:`axisopt.study`; the package is callable with these
@@ -152,7 +156,8 @@ def diagnose(
     """Diagnose measured data of an axis -> :class:`axisopt.identify.Diagnosis` (time records:
     ``TimeDiagnosis``).
 
-    data    : a measured CSV path or a list of them (a first file with a ``time`` column is a time record)
+    data    : a measured CSV path or a list of them (a first file with a ``time`` column is a time
+              record)
     design  : the measured axis's design (a :class:`Design` or a design YAML path)
     effects : only consider these effect names (default: the whole library)
     gain    : time records with a current column: torque or force per ampere, e.g. '0.85 N.m/A'
@@ -191,8 +196,9 @@ def diagnose(
 
 
 def plot_profiles(evaluations, path: str | PathLike | None = None, *, labels=None, limits=None):
-    """Stiffness and first natural frequency over the stroke (and the duty cycle against the motor limits)
-    of one :class:`Evaluation` or a list -> matplotlib Figure; written to ``path`` only when given."""
+    """Stiffness and first natural frequency over the stroke (and the duty cycle against the motor
+    limits) of one :class:`Evaluation` or a list -> matplotlib Figure; written to ``path`` only when
+    given."""
     from .report.plots import plot_profiles as _plot
 
     evs = [evaluations] if not isinstance(evaluations, (list, tuple)) else list(evaluations)
@@ -200,8 +206,8 @@ def plot_profiles(evaluations, path: str | PathLike | None = None, *, labels=Non
 
 
 def plot_pareto(front, path: str | PathLike | None = None):
-    """Scatter matrix of a Pareto front (a :class:`ParetoFront` or a :class:`SolveResult` that has one)
-    -> matplotlib Figure; written to ``path`` only when given."""
+    """Scatter matrix of a Pareto front (a :class:`ParetoFront` or a :class:`SolveResult` that has
+    one) -> matplotlib Figure; written to ``path`` only when given."""
     from .report.solve import plot_pareto as _plot
 
     front = getattr(front, "pareto", None) or front

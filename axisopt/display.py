@@ -1,10 +1,10 @@
-"""Small presentation helpers the result classes share for notebooks: a number in engineering form, a list of
-row dicts as a pandas DataFrame, the same rows as a small HTML table, a one-line repr.
+"""Small presentation helpers the result classes share for notebooks: a number in engineering form,
+a list of row dicts as a pandas DataFrame, the same rows as a small HTML table, a one-line repr.
 
-Sits low (beside ``units``) so that the computing packages' result classes (model, search, identify, study)
-give ``to_frame()``, a short ``__repr__`` and ``_repr_html_`` without importing ``report`` (the layers run one
-way).  pandas is imported only when a frame is asked for, so ``import axisopt`` stays fast.  Nothing here
-prints.
+Sits low (beside ``units``) so that the computing packages' result classes (model, search, identify,
+study) give ``to_frame()``, a short ``__repr__`` and ``_repr_html_`` without importing ``report``
+(the layers run one way).  pandas is imported only when a frame is asked for, so ``import axisopt``
+stays fast.  Nothing here prints.
 """
 
 from __future__ import annotations
@@ -16,8 +16,9 @@ REPR_WIDTH = 400  # characters a one-line repr may take before it is cut
 
 
 def fmt(x, unit: str = "") -> str:
-    """A physical value as an engineer writes it: thousands separators from 100 up, three significant digits
-    below; ``unit`` appended after a space; '-' for a missing or non-finite value.
+    """A physical value as an engineer writes it: thousands separators from 100 up, three
+    significant digits below; ``unit`` appended after a space; '-' for a missing or non-finite
+    value.
 
     >>> fmt(1234.4, "N/um"), fmt(0.785, "N.m"), fmt(None)
     ('1,234 N/um', '0.785 N.m', '-')
@@ -32,8 +33,8 @@ def fmt(x, unit: str = "") -> str:
 
 
 def _number(x) -> float | str:
-    """``x`` as a finite float, or the text that stands for it: ``str(x)`` where it is no number, '-' where it
-    is not finite."""
+    """``x`` as a finite float, or the text that stands for it: ``str(x)`` where it is no number,
+    '-' where it is not finite."""
     try:
         v = float(x)
     except (TypeError, ValueError):
@@ -42,8 +43,8 @@ def _number(x) -> float | str:
 
 
 def fmt_objective(x, unit: str = "") -> str:
-    """An objective in a repr with the digits the solve text shows (``best: 186.085 N/um``): designs a few
-    thousandths apart read apart, not all as '186'; '-' for a missing or non-finite value."""
+    """An objective in a repr with the digits the solve text shows (``best: 186.085 N/um``): designs
+    a few thousandths apart read apart, not all as '186'; '-' for a missing or non-finite value."""
     v = _number(x)
     if isinstance(v, str):
         return v
@@ -51,10 +52,11 @@ def fmt_objective(x, unit: str = "") -> str:
 
 
 def fmt_column(values) -> list[str]:
-    """A table column as an engineer writes it: the numbers with one number of decimals (three significant
-    digits for the smallest, none from 100 up, thousands separators), more decimals where that would write
-    different numbers alike (five designs of 161.24, 161.38 ... N/um read as 161.2, 161.4, not five times
-    '161'), up to six more; text, whole numbers and missing values as in a repr.
+    """A table column as an engineer writes it: the numbers with one number of decimals (three
+    significant digits for the smallest, none from 100 up, thousands separators), more decimals
+    where that would write different numbers alike (five designs of 161.24, 161.38 ... N/um read as
+    161.2, 161.4, not five times '161'), up to six more; text, whole numbers and missing values as
+    in a repr.
 
     >>> fmt_column([161.24, 161.38, 0.5])
     ['161.240', '161.380', '0.500']
@@ -98,17 +100,17 @@ def _decimals(v: float) -> int:
 
 
 def frame(rows, columns=None):
-    """pandas DataFrame of ``rows`` (a list of dicts; ``columns`` fixes the order and keeps the columns of
-    an empty table)."""
+    """pandas DataFrame of ``rows`` (a list of dicts; ``columns`` fixes the order and keeps the
+    columns of an empty table)."""
     import pandas as pd
 
     return pd.DataFrame(list(rows), columns=list(columns) if columns is not None else None)
 
 
 def html_table(rows, caption: str = "", columns=None, max_rows: int = 30) -> str:
-    """A small HTML table of ``rows`` (list of dicts): numbers as :func:`fmt_column` writes them (enough
-    digits to tell the rows apart), text escaped;
-    ``max_rows`` rows at most (a last row says how many were left off)."""
+    """A small HTML table of ``rows`` (list of dicts): numbers as :func:`fmt_column` writes them
+    (enough digits to tell the rows apart), text escaped; ``max_rows`` rows at most (a last row says
+    how many were left off)."""
     rows = list(rows)
     cols = list(columns) if columns is not None else list(dict.fromkeys(k for r in rows for k in r))
     out = ["<table>"]
@@ -126,8 +128,8 @@ def html_table(rows, caption: str = "", columns=None, max_rows: int = 30) -> str
         out.append("<tr>" + "".join(f"<td>{html.escape(texts[c][i])}</td>" for c in cols) + "</tr>")
     if len(rows) > max_rows:
         out.append(
-            f"<tr><td colspan='{len(cols)}'>... {len(rows) - max_rows} more rows (to_frame() has them "
-            "all)</td></tr>"
+            f"<tr><td colspan='{len(cols)}'>... {len(rows) - max_rows} more rows (to_frame() has "
+            "them all)</td></tr>"
         )
     out.append("</tbody></table>")
     return "".join(out)
@@ -141,8 +143,8 @@ def html_fields(fields: dict, caption: str = "") -> str:
 
 
 def one_line(name: str, head: str, fields: dict) -> str:
-    """``Name(head; key value; key value ...)`` (an empty key: the value alone) cut at :data:`REPR_WIDTH`
-    characters."""
+    """``Name(head; key value; key value ...)`` (an empty key: the value alone) cut at
+    :data:`REPR_WIDTH` characters."""
     body = "; ".join(
         f"{k} {_cell(v)}" if k else _cell(v) for k, v in fields.items() if v not in (None, "")
     )
@@ -173,7 +175,8 @@ __all__ = [
 
 
 def json_value(v):
-    """``v`` ready for JSON: a non-finite float (and one inside a list, tuple or dict) becomes None."""
+    """``v`` ready for JSON: a non-finite float (and one inside a list, tuple or dict) becomes
+    None."""
     if isinstance(v, float) and not math.isfinite(v):
         return None
     if isinstance(v, (list, tuple)):

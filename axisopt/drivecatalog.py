@@ -1,10 +1,12 @@
-"""The drive-type catalogs: rack-and-pinion sets (``racks.csv``) and linear motors (``linear_motors.csv``).
+"""The drive-type catalogs: rack-and-pinion sets (``racks.csv``) and linear motors
+(``linear_motors.csv``).
 
-Headers carry vendor units (``permissible_force [kN]``); rows come back as dicts in SI, text columns as
-strings, an empty optional cell as ``None``.  Every bad cell (a pinion with zero teeth, a NaN force constant,
-an unknown unit, a missing required value) is an :class:`~axisopt.errors.InputError` naming the file, line and
-column.  The shipped directory is read first; a user's catalog directories add rows (an id already known is
-an error).  ``pitch_error`` is the rack's cumulative pitch error per 1000 mm of rack.
+Headers carry vendor units (``permissible_force [kN]``); rows come back as dicts in SI, text columns
+as strings, an empty optional cell as ``None``.  Every bad cell (a pinion with zero teeth, a NaN
+force constant, an unknown unit, a missing required value) is an :class:`~axisopt.errors.InputError`
+naming the file, line and column.  The shipped directory is read first; a user's catalog directories
+add rows (an id already known is an error).  ``pitch_error`` is the rack's cumulative pitch error
+per 1000 mm of rack.
 """
 
 from __future__ import annotations
@@ -53,8 +55,7 @@ LM_COLUMNS = {
 KINDS = {"racks": ("spur", "helical"), "linear_motors": ("iron-core", "ironless")}
 ZERO_OK = {"helix_angle", "attraction_force"}
 # an iron-core motor's magnetic attraction where the data sheet gives none: ATTRACTION_PER_FC x its
-# continuous
-# force -- an estimate of ours (no reachable vendor row lists it, catalogs/SOURCES.md)
+# continuous force -- an estimate of ours (no reachable vendor row lists it, catalogs/SOURCES.md)
 ATTRACTION_PER_FC = 5.0
 
 
@@ -208,8 +209,8 @@ _CACHE: dict = {}
 
 
 def default_drive_tables(extra_dirs=()) -> DriveTables:
-    """Cached :func:`load_drive_tables`, keyed by the directories and the contents of the files read (an
-    edited file is read again)."""
+    """Cached :func:`load_drive_tables`, keyed by the directories and the contents of the files read
+    (an edited file is read again)."""
     from .catalog.loading import files_state
 
     dirs = [Path(d).resolve() for d in extra_dirs]

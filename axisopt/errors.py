@@ -1,4 +1,5 @@
-"""The project's own exceptions.  The CLI turns :class:`InputError` into one line and exit code 2."""
+"""The project's own exceptions.  The CLI turns :class:`InputError` into one line and exit code
+2."""
 
 from __future__ import annotations
 
@@ -26,5 +27,5 @@ class InputError(AxisoptError):
 
 
 class ImplausibleInput(UserWarning):
-    """A value far outside machine-tool practice (axisopt.design.plausible): used as given, and said.  The CLI
-    prints each as one 'warning:' line on stderr naming the file, line and key."""
+    """A value far outside machine-tool practice (axisopt.design.plausible): used as given, and
+    said.  The CLI prints each as one 'warning:' line on stderr naming the file, line and key."""

@@ -1,12 +1,13 @@
-"""The matplotlib Figure every plot of axisopt draws on: outside pyplot, and shown as an image by Jupyter.
+"""The matplotlib Figure every plot of axisopt draws on: outside pyplot, and shown as an image by
+Jupyter.
 
-A plain ``matplotlib.figure.Figure()`` that pyplot does not manage shows in a fresh Jupyter kernel as
-``<Figure size 1300x800 with 3 Axes>``: IPython's inline backend registers its image formatter only once
-pyplot has been imported (or ``%matplotlib inline`` run).  :class:`Figure` adds the rich-display method
-IPython looks for (``_repr_png_``), so ``axisopt.plot_profiles(ev)`` as the last line of a cell shows the
-plot in any kernel, while the command line never imports pyplot, picks no backend and needs no display (the
-figure is drawn by matplotlib's Agg renderer when it is saved or shown).  Imported only where a plot is
-drawn, so ``import axisopt`` does not import matplotlib.
+A plain ``matplotlib.figure.Figure()`` that pyplot does not manage shows in a fresh Jupyter kernel
+as ``<Figure size 1300x800 with 3 Axes>``: IPython's inline backend registers its image formatter
+only once pyplot has been imported (or ``%matplotlib inline`` run).  :class:`Figure` adds the
+rich-display method IPython looks for (``_repr_png_``), so ``axisopt.plot_profiles(ev)`` as the last
+line of a cell shows the plot in any kernel, while the command line never imports pyplot, picks no
+backend and needs no display (the figure is drawn by matplotlib's Agg renderer when it is saved or
+shown).  Imported only where a plot is drawn, so ``import axisopt`` does not import matplotlib.
 """
 
 from __future__ import annotations
@@ -19,7 +20,8 @@ NOTEBOOK_DPI = 80  # dots per inch of the image a notebook shows (a 13 x 8 in fi
 
 
 class Figure(_MplFigure):
-    """A matplotlib Figure (not registered with pyplot) that Jupyter and IPython display as a PNG image."""
+    """A matplotlib Figure (not registered with pyplot) that Jupyter and IPython display as a PNG
+    image."""
 
     def _repr_png_(self) -> bytes:
         """The figure as PNG bytes, as IPython's display machinery asks for it."""
@@ -29,7 +31,8 @@ class Figure(_MplFigure):
 
 
 def new_figure(**kw) -> Figure:
-    """A new :class:`Figure` (keyword arguments as ``matplotlib.figure.Figure``, e.g. ``figsize``)."""
+    """A new :class:`Figure` (keyword arguments as ``matplotlib.figure.Figure``, e.g.
+    ``figsize``)."""
     return Figure(**kw)
 
 

@@ -1,7 +1,8 @@
-"""Every file axisopt writes or reads goes through here: one output opener (:func:`open_output`: atomic for
-regular files, streamed in place for FIFOs, devices and standard output, ``-`` for stdout) and one input
-opener (:func:`read_input`: regular files only, stat before open, a size cap per kind); also output
-directories and figures.  Below every layer that writes (identify, search, study, report)."""
+"""Every file axisopt writes or reads goes through here: one output opener (:func:`open_output`:
+atomic for regular files, streamed in place for FIFOs, devices and standard output, ``-`` for
+stdout) and one input opener (:func:`read_input`: regular files only, stat before open, a size cap
+per kind); also output directories and figures.  Below every layer that writes (identify, search,
+study, report)."""
 
 from __future__ import annotations
 
@@ -16,8 +17,7 @@ from .errors import InputError
 PLOT_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg")
 
 # Size caps of input files by kind [bytes], checked on the file's stat before it is opened (and
-# again
-# while reading: a file that grows past its cap is refused too).
+# again while reading: a file that grows past its cap is refused too).
 INPUT_LIMITS = {
     "yaml": 20_000_000,  # design, problem, study, calibration YAML
     "catalog": 50_000_000,  # one catalog CSV
@@ -46,9 +46,9 @@ def _kind_name(mode: int) -> str:
 
 
 def check_input(path, kind: str, *, what: str = "file"):
-    """``os.stat`` of input ``path``, refused (InputError naming ``path``, one line, exit 2) unless it is a
-    regular file of at most ``INPUT_LIMITS[kind]`` bytes: a FIFO, device, socket or directory is never opened
-    (a FIFO or ``/dev/zero`` would block or never end)."""
+    """``os.stat`` of input ``path``, refused (InputError naming ``path``, one line, exit 2) unless
+    it is a regular file of at most ``INPUT_LIMITS[kind]`` bytes: a FIFO, device, socket or
+    directory is never opened (a FIFO or ``/dev/zero`` would block or never end)."""
     limit = INPUT_LIMITS[kind]
     src = str(path)
     try:
@@ -70,10 +70,10 @@ def read_input(
     path, kind: str, *, what: str = "file", encoding: str = "utf-8", head: int | None = None
 ) -> str:
     """The text of input file ``path``, read whole (or its first ``head`` bytes), through
-    :func:`check_input` first: nothing but a regular file within its size cap is opened.  After opening, the
-    descriptor is checked again and at most the cap is read, so a file swapped or growing meanwhile is
-    refused too.  ``encoding`` ``"utf-8-sig"`` drops a byte-order mark (CSV from Excel); a file that is not
-    text in it is an InputError."""
+    :func:`check_input` first: nothing but a regular file within its size cap is opened.  After
+    opening, the descriptor is checked again and at most the cap is read, so a file swapped or
+    growing meanwhile is refused too.  ``encoding`` ``"utf-8-sig"`` drops a byte-order mark (CSV
+    from Excel); a file that is not text in it is an InputError."""
     limit = INPUT_LIMITS[kind]
     src = str(path)
     check_input(path, kind, what=what)
@@ -98,8 +98,8 @@ def read_input(
 
 
 def refuse_nul(text: str, source: str) -> str:
-    """``text`` unchanged, or a one-line InputError naming the line of its first NUL character (the csv module
-    reads a NUL inside a cell as text, so a catalog with one would be accepted)."""
+    """``text`` unchanged, or a one-line InputError naming the line of its first NUL character (the
+    csv module reads a NUL inside a cell as text, so a catalog with one would be accepted)."""
     if "\0" in text:
         line = text.count("\n", 0, text.index("\0")) + 1
         raise InputError(
@@ -109,16 +109,17 @@ def refuse_nul(text: str, source: str) -> str:
 
 
 # CSV injection (OWASP, "CSV Injection"): a text cell starting with one of these is read by a
-# spreadsheet as
-# a formula; it is written with a leading single quote.  Numbers (also negative ones) stay numbers.
+# spreadsheet as a formula; it is written with a leading single quote.  Numbers (also negative ones)
+# stay numbers.
 CSV_FORMULA_CHARS = ("=", "+", "-", "@", "\t", "\r")
 _PLAIN_NUMBER = None
 
 
 def csv_cell(value):
-    """``value`` safe for a CSV cell opened in a spreadsheet: a text cell that starts with ``= + - @``, a tab
-    or a carriage return gets a leading ``'`` (OWASP's advice against CSV injection), unless the whole text
-    is a plain number such as ``-3.5`` (numeric cells, and text that is only a number, are never changed)."""
+    """``value`` safe for a CSV cell opened in a spreadsheet: a text cell that starts with
+    ``= + - @``, a tab or a carriage return gets a leading ``'`` (OWASP's advice against CSV
+    injection), unless the whole text is a plain number such as ``-3.5`` (numeric cells, and text
+    that is only a number, are never changed)."""
     global _PLAIN_NUMBER
     if not isinstance(value, str) or not value.startswith(CSV_FORMULA_CHARS):
         return value
@@ -130,8 +131,9 @@ def csv_cell(value):
 
 
 def csv_safe(df):
-    """A copy of DataFrame ``df`` with every text cell (and column name) passed through :func:`csv_cell`;
-    what every CSV axisopt writes goes through (parts --csv, compare --csv, a study's results.csv)."""
+    """A copy of DataFrame ``df`` with every text cell (and column name) passed through
+    :func:`csv_cell`; what every CSV axisopt writes goes through (parts --csv, compare --csv, a
+    study's results.csv)."""
     out = df.copy()
     for c in out.columns:
         if out[c].dtype == object or str(out[c].dtype) in ("string", "str"):
@@ -173,10 +175,10 @@ def is_stdout(path) -> bool:
 
 
 def output_target(path) -> str:
-    """How :func:`open_output` writes ``path``: ``"stdout"`` (``-`` or this process's standard output),
-    ``"stream"`` (an existing FIFO, device or socket, or anything under ``/dev`` or ``/proc``: written in place,
-    never replaced) or ``"atomic"`` (a regular file or a missing path: a temporary file renamed over it).
-    A directory, or an empty name, is an InputError."""
+    """How :func:`open_output` writes ``path``: ``"stdout"`` (``-`` or this process's standard
+    output), ``"stream"`` (an existing FIFO, device or socket, or anything under ``/dev`` or
+    ``/proc``: written in place, never replaced) or ``"atomic"`` (a regular file or a missing path:
+    a temporary file renamed over it).  A directory, or an empty name, is an InputError."""
     p = str(path)
     if p == "":
         raise InputError("empty output file name")
@@ -201,8 +203,9 @@ def output_target(path) -> str:
 
 
 def check_output_path(path, *, what: str = "file", where: str | None = None) -> None:
-    """Refuse an output path before the work starts (InputError, one line): an empty name, a directory in
-    the way, or (for a file written atomically) a parent that is not an existing, writable directory."""
+    """Refuse an output path before the work starts (InputError, one line): an empty name, a
+    directory in the way, or (for a file written atomically) a parent that is not an existing,
+    writable directory."""
     try:
         how = output_target(path)
     except InputError as exc:
@@ -240,9 +243,10 @@ def refuse_inputs(
     where: str | None = None,
     hint: str = "give another file name",
 ) -> None:
-    """Refuse (InputError, one line) an output ``path`` that is one of ``inputs`` (the files the work read):
-    the Python functions' counterpart of the command line's output check, so that a call such as
-    ``save_calibration(diag, "run1.csv", sources=["run1.csv"])`` cannot replace the measured data."""
+    """Refuse (InputError, one line) an output ``path`` that is one of ``inputs`` (the files the
+    work read): the Python functions' counterpart of the command line's output check, so that a call
+    such as ``save_calibration(diag, "run1.csv", sources=["run1.csv"])`` cannot replace the measured
+    data."""
     for src in inputs:
         if src and same_file(path, src):
             raise InputError(
@@ -269,20 +273,21 @@ class _NoClose:
 def open_output(path, mode: str = "w", *, what: str = "file", fsync: bool = True):
     """Open output ``path`` for writing: the one way axisopt writes a file.
 
-    * ``-`` (or this process's own standard output, e.g. ``/dev/stdout``): written to stdout, after what the
-      command printed so far.
-    * a regular file or a missing path: replaced whole or not at all -- the content goes to a temporary file
-      in the same directory (``.NAME.PID.RANDOM.tmp``), which ``os.replace`` then puts in place atomically.
-      A write that fails (disk full, no permission) or a process killed mid-write leaves the old file
-      untouched; the temporary file is removed on failure (one left by ``kill -9`` is swept by the next
-      study run).  A symbolic link stays a link: its target is replaced.  ``fsync`` also guards the content
-      against a power loss right after the rename.
-    * anything else that exists (a FIFO, a character device such as ``/dev/full``, a socket, anything under
-      ``/dev`` or ``/proc``): opened and written in place, streamed; it is never replaced or created.
+    * ``-`` (or this process's own standard output, e.g. ``/dev/stdout``): written to stdout, after
+      what the command printed so far.
+    * a regular file or a missing path: replaced whole or not at all -- the content goes to a
+      temporary file in the same directory (``.NAME.PID.RANDOM.tmp``), which ``os.replace`` then
+      puts in place atomically.  A write that fails (disk full, no permission) or a process killed
+      mid-write leaves the old file untouched; the temporary file is removed on failure (one left by
+      ``kill -9`` is swept by the next study run).  A symbolic link stays a link: its target is
+      replaced.  ``fsync`` also guards the content against a power loss right after the rename.
+    * anything else that exists (a FIFO, a character device such as ``/dev/full``, a socket,
+      anything under ``/dev`` or ``/proc``): opened and written in place, streamed; it is never
+      replaced or created.
 
-    ``mode`` is ``"w"`` (UTF-8 text, newlines written as given) or ``"wb"``.  An ``OSError`` (including a
-    full device) becomes an InputError naming ``path`` (one line, exit code 2); a directory in the way or an
-    empty name too.
+    ``mode`` is ``"w"`` (UTF-8 text, newlines written as given) or ``"wb"``.  An ``OSError``
+    (including a full device) becomes an InputError naming ``path`` (one line, exit code 2); a
+    directory in the way or an empty name too.
     """
     if mode not in ("w", "wb"):
         raise ValueError(f"mode must be 'w' or 'wb', got {mode!r}")
@@ -355,15 +360,16 @@ atomic_file = open_output
 
 
 def write_text_atomic(path, text: str, *, what: str = "file", fsync: bool = True) -> None:
-    """Write a text file (UTF-8) through :func:`open_output` (atomic for a regular file, ``-`` is stdout)."""
+    """Write a text file (UTF-8) through :func:`open_output` (atomic for a regular file, ``-`` is
+    stdout)."""
     with open_output(path, "w", what=what, fsync=fsync) as fh:
         fh.write(text)
 
 
 def tidy_layout(fig) -> None:
-    """``fig.tight_layout()`` without matplotlib's warning when it cannot make room (a long legend or title
-    in a small figure): the figure is then saved as laid out, which is no reason to print a Python warning
-    to the user."""
+    """``fig.tight_layout()`` without matplotlib's warning when it cannot make room (a long legend
+    or title in a small figure): the figure is then saved as laid out, which is no reason to print a
+    Python warning to the user."""
     import warnings
 
     with warnings.catch_warnings():
@@ -372,9 +378,9 @@ def tidy_layout(fig) -> None:
 
 
 def save_figure(fig, path, dpi: int = 110) -> None:
-    """Save and close a matplotlib figure, atomically (:func:`atomic_file`); a bad path or format is an
-    InputError (one line, exit 2).  A figure outside pyplot (axisopt's own) is saved without importing
-    pyplot."""
+    """Save and close a matplotlib figure, atomically (:func:`atomic_file`); a bad path or format is
+    an InputError (one line, exit 2).  A figure outside pyplot (axisopt's own) is saved without
+    importing pyplot."""
     ext = Path(path).suffix.lower().lstrip(".")
     try:
         if ext not in PLOT_FORMATS:

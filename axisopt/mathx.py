@@ -87,9 +87,9 @@ def fmax(a, b):
 
 
 def power(x, p):
-    """x**p; for non-integer p the base must be non-negative.  On numpy arrays the exponents 2, 3 and 1.5
-    are products (and a square root): a general ``**`` per element is 10-30 times slower there, and the
-    screening of the catalogs evaluates these on every combination."""
+    """x**p; for non-integer p the base must be non-negative.  On numpy arrays the exponents 2, 3
+    and 1.5 are products (and a square root): a general ``**`` per element is 10-30 times slower
+    there, and the screening of the catalogs evaluates these on every combination."""
     if isinstance(x, np.ndarray) and x.ndim:
         if p == 2:
             return x * x

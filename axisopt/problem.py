@@ -53,7 +53,7 @@ dimension carries its unit; unknown keys, bare numbers that need a unit and unkn
       max_motor_flange: 130 mm         # the motor must fit the machine: flange (square) size at most this
     continuous:
       nut_preload: {min: 0 N, max: 5 kN}  # intersected with each nut's preload_min..preload_max
-"""
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -88,7 +88,8 @@ from .restrictions import (  # noqa: F401  (the slot names are the problem's voc
 )
 from .yamlio import Key, Section, Spec, close_matches, read_yaml, require_kind
 
-# limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once there
+# limit key -> model.limits.Limit (output, sense, kind, display unit, doc, default): declared once
+# there
 DEFAULT_LIMITS = MappingProxyType(
     {k: lim.default for k, lim in LIMITS.items() if lim.default is not None}
 )
@@ -96,8 +97,8 @@ DEFAULT_LIMITS = MappingProxyType(
 
 @dataclass(frozen=True)
 class Problem:
-    """A sizing problem (SI).  ``limits`` maps :data:`LIMITS` keys to SI values; ``margins`` maps each
-    of :data:`axisopt.model.CHECKS` to the smallest accepted margin (0 disables the check)."""
+    """A sizing problem (SI).  ``limits`` maps :data:`LIMITS` keys to SI values; ``margins`` maps
+    each of :data:`axisopt.model.CHECKS` to the smallest accepted margin (0 disables the check)."""
 
     axis: Axis
     catalog: Catalog = field(repr=False, compare=False)
@@ -110,15 +111,18 @@ class Problem:
     name: str = "problem"
     source: str = ""
     assumed: tuple = ()
-    # the checks' required life (axis.required_life) follows limits.min_life: the YAML set min_life, not
-    # required_life (one life requirement, not a stricter hidden default beside the user's limit)
+    # the checks' required life (axis.required_life) follows limits.min_life: the YAML set min_life,
+    # not required_life (one life requirement, not a stricter hidden default beside the user's
+    # limit)
     life_from_limit: bool = False
-    # search.counterbalance / search.twin_drive: ((label, Axis), ...) the search chooses among (empty: the axis)
+    # search.counterbalance / search.twin_drive: ((label, Axis), ...) the search chooses among
+    # (empty: the axis)
     arrangements: tuple = field(default=(), repr=False)
-    # search.drive_types (design.drivechoice.DriveChoice): rack and pinion, linear motors beside the screw;
-    # None: the screw drive alone
+    # search.drive_types (design.drivechoice.DriveChoice): rack and pinion, linear motors beside the
+    # screw; None: the screw drive alone
     drives: object = field(default=None, repr=False, compare=False)
-    # drive_design: one rack-and-pinion or linear-motor design ({slot: id}, design.drivechoice), or None
+    # drive_design: one rack-and-pinion or linear-motor design ({slot: id}, design.drivechoice), or
+    # None
     drive_design: dict | None = field(default=None, repr=False, compare=False)
 
     @property
@@ -164,16 +168,16 @@ class Problem:
                 "objective": self.objective.label,
                 "limits": lims,
                 "margins": margins,
-                "axis": f"{', '.join(self.mountings)}, stroke {fmt(a.stroke * 1e3, 'mm')}, moving mass "
-                f"{fmt(a.moving_mass, 'kg')}, {fmt(a.max_speed * 60, 'm/min')}",
+                "axis": f"{', '.join(self.mountings)}, stroke {fmt(a.stroke * 1e3, 'mm')}, moving "
+                f"mass {fmt(a.moving_mass, 'kg')}, {fmt(a.max_speed * 60, 'm/min')}",
             },
         )
 
 
-# ------------------------------------------------------------------------------ the YAML keys (one table)
+# ------------------------------------------------------------------------------ the YAML keys (one table)  # noqa: E501
 # The one declaration of a problem file's keys: the readers below read them by it (Section.read) and
-# `axisopt schema problem` writes it out.  What a Key cannot say (a weight's scale follows its weight, catalog
-# names are checked against the catalogs loaded) stays in the readers.
+# `axisopt schema problem` writes it out.  What a Key cannot say (a weight's scale follows its
+# weight, catalog names are checked against the catalogs loaded) stays in the readers.
 
 MARGINS_SPEC = Spec(
     "margins",
@@ -226,8 +230,8 @@ OBJECTIVE_SPEC = Spec(
         "scale": Key("section", "weighted: the scale of each weighted value", spec=SCALE_SPEC),
         "order": Key(
             "names",
-            "lexicographic: two of the goals (stiffness, frequency, cost, moving_mass) in any order, "
-            "first the primary",
+            "lexicographic: two of the goals (stiffness, frequency, cost, moving_mass) in any "
+            "order, first the primary",
             choices=PERFORMANCE,
             minimum=2,
             maximum=2,
@@ -346,7 +350,8 @@ def read_problem(root: Section, catalog: Catalog, name: str = "problem") -> Prob
     if drive_design is not None and (drives is None or drive_design["type"] not in drives.types):
         raise dsec.error(
             "type",
-            f"a {drive_design['type']} design needs search.drive_types to list {drive_design['type']}",
+            f"a {drive_design['type']} design needs search.drive_types to list "
+            f"{drive_design['type']}",
         )
     root.done()
     min_life = dict(limits).get("min_life")

@@ -1,8 +1,8 @@
 """Which catalog parts, mountings and drive parts a search may use: a problem's ``catalog:`` section
 (:class:`Restrictions`, read by :func:`read_restrictions`; the keys in :data:`RESTRICTIONS_SPEC`).
 
-The drive (motor, coupling, reduction) is searched whenever the catalogs have motors and the axis a motion to
-size it on, unless the problem says ``drive: no``; a drive left out carries its reason
+The drive (motor, coupling, reduction) is searched whenever the catalogs have motors and the axis a
+motion to size it on, unless the problem says ``drive: no``; a drive left out carries its reason
 (``Restrictions.drive_left_out``), which every answer states.
 """
 
@@ -45,9 +45,8 @@ class Restrictions:
     guide_types: tuple | None = None
     guide_preload: tuple | None = None
     # parts you can buy: catalog rows with vendor ratings, and user-catalog rows; 'derived' and
-    # 'paper' rows
-    # (a preload class or stack a vendor does not list, the seed's catalog [21] nuts) only when
-    # asked for
+    # 'paper' rows (a preload class or stack a vendor does not list, the seed's catalog [21] nuts)
+    # only when asked for
     status: tuple = DEFAULT_STATUS
     require: tuple = ()  # ((slot, (ids...)), ...)
     exclude: tuple = ()
@@ -135,9 +134,9 @@ RESTRICTIONS_SPEC = Spec(
         ),
         "estimated": Key(
             "choice",
-            "parts whose empty catalog cell the model fills with an estimate (a support "
-            "bearing's starting torque, a motor's torque-speed corner points): 'allow' (default; results "
-            "say when one binds) or 'exclude' (vendor values only)",
+            "parts whose empty catalog cell the model fills with an estimate (a support bearing's "
+            "starting torque, a motor's torque-speed corner points): 'allow' (default; results say "
+            "when one binds) or 'exclude' (vendor values only)",
             choices=ESTIMATED_CHOICES,
         ),
     },
@@ -145,7 +144,8 @@ RESTRICTIONS_SPEC = Spec(
 
 
 def _catalog_names(sec: Section, key: str, known) -> tuple | None:
-    """A non-empty list of names under ``key``, each one of ``known()`` (None when the key is absent)."""
+    """A non-empty list of names under ``key``, each one of ``known()`` (None when the key is
+    absent)."""
     vals = sec.read(key)
     if vals is None:
         return None
@@ -159,8 +159,8 @@ def _catalog_names(sec: Section, key: str, known) -> tuple | None:
 
 
 def _default_drive(catalog: Catalog, axis: Axis) -> tuple:
-    """(searched, why not): the drive is sized whenever the catalogs have motors and the axis a motion to size it
-    on (an acceleration or a duty cycle), unless the problem says 'drive: no'."""
+    """(searched, why not): the drive is sized whenever the catalogs have motors and the axis a
+    motion to size it on (an acceleration or a duty cycle), unless the problem says 'drive: no'."""
     if not len(catalog.rows("motors")):
         return False, "the catalogs have no motors (motors.csv)"
     if axis.acceleration <= 0 and not axis.duty_cycle:

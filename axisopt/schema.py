@@ -1,15 +1,17 @@
 """JSON Schemas of axisopt's YAML files, written from the readers' own key tables.
 
-``json_schema(kind)`` turns the :class:`~axisopt.yamlio.Spec` a reader reads its file by (``DESIGN_SPEC``,
-``PROBLEM_SPEC``, ``STUDY_SPEC``, ``CALIBRATION_SPEC``) into a JSON Schema (draft 2020-12) for an editor's
-YAML language server: the key names, which are required, unknown keys as errors, choices, bounds and the
-one-line description of every key.  There is no second copy of the rules here, only their translation.
+``json_schema(kind)`` turns the :class:`~axisopt.yamlio.Spec` a reader reads its file by
+(``DESIGN_SPEC``, ``PROBLEM_SPEC``, ``STUDY_SPEC``, ``CALIBRATION_SPEC``) into a JSON Schema (draft
+2020-12) for an editor's YAML language server: the key names, which are required, unknown keys as
+errors, choices, bounds and the one-line description of every key.  There is no second copy of the
+rules here, only their translation.
 
-A quantity is a string, a number followed by a unit; its pattern lists the common units of its kind, each
-one accepted by :func:`axisopt.units.unit_factor` (the loader's rule), so '800 kg' for a length fails the
-schema as it fails the loader.  The loader accepts any unit pint knows of the right dimension: a rare one
-the pattern does not list is flagged by the editor but still loads.  What a schema cannot say (a value
-checked against the catalogs, a unit that must match the swept key) is left to the loader.
+A quantity is a string, a number followed by a unit; its pattern lists the common units of its kind,
+each one accepted by :func:`axisopt.units.unit_factor` (the loader's rule), so '800 kg' for a length
+fails the schema as it fails the loader.  The loader accepts any unit pint knows of the
+right dimension: a rare one the pattern does not list is flagged by the editor but still loads.
+What a schema cannot say (a value checked against the catalogs, a unit that must match the swept
+key) is left to the loader.
 """
 
 from __future__ import annotations
@@ -33,7 +35,8 @@ _POSITIVE = rf"^\s*(?!{_ZERO})\+?[0-9.]"  # neither a minus sign nor a zero
 
 
 def spec_of(kind: str) -> Spec:
-    """The top-level Spec of a file kind (imported here, so that the readers stay the one source)."""
+    """The top-level Spec of a file kind (imported here, so that the readers stay the one
+    source)."""
     if kind == "design":
         from .design import DESIGN_SPEC
 
@@ -62,8 +65,8 @@ def spec_of(kind: str) -> Spec:
 
 
 # ------------------------------------------------------------------------------------------------
-# units
-# Candidate spellings per kind; each is kept only if units.unit_factor accepts it for that kind.
+# units Candidate spellings per kind; each is kept only if units.unit_factor accepts it for that
+# kind.
 _LEN = ("m", "mm", "um", "µm", "μm", "nm", "cm", "dm", "km", "in", "inch", "ft", "micron")
 _LEN_SHORT = ("m", "mm", "um", "µm", "μm", "cm", "in")
 _MASS = ("kg", "g", "mg", "t", "tonne", "lb")
@@ -222,9 +225,9 @@ def example_of(kind: str | None) -> str:
 
 
 def unit_message(kind: str | None) -> str:
-    """What an editor shows when a quantity's text fails its pattern (the schema's ``patternErrorMessage``,
-    read by the YAML and JSON language servers in place of the regular expression): the kind, an example and
-    a few of the units listed.  One short line."""
+    """What an editor shows when a quantity's text fails its pattern (the schema's
+    ``patternErrorMessage``, read by the YAML and JSON language servers in place of the regular
+    expression): the kind, an example and a few of the units listed.  One short line."""
     if kind is None:
         return "a number and a unit, e.g. 500 mm"
     units = [u for u in units_of(kind) if u.isascii()]

@@ -4,10 +4,10 @@ This is the one place where units are converted.  Inside the code everything is 
 m, kg, s, N, N/m, N*m, rad/s, Pa, K.  Money is kept in the catalog's currency (EUR here), a
 dimension of its own so that "EUR/m" and "EUR" are checked like any other unit.
 
-Parsing uses pint; vendor spellings such as ``N.m`` or ``mm.rpm`` (a dot for a product) and
-``um`` for micrometre are accepted.  The units the shipped catalogs, problems and reports use are looked up in
-:data:`KNOWN` (factors pint computed, each checked against pint by the tests), so that a command that reads only
-those never builds pint's registry (half a second); any other unit goes to pint.
+Parsing uses pint; vendor spellings such as ``N.m`` or ``mm.rpm`` (a dot for a product) and ``um``
+for micrometre are accepted.  The units the shipped catalogs, problems and reports use are looked up
+in :data:`KNOWN` (factors pint computed, each checked against pint by the tests), so that a command
+that reads only those never builds pint's registry (half a second); any other unit goes to pint.
 """
 
 from __future__ import annotations
@@ -83,8 +83,7 @@ def _normalise(unit: str) -> str:
 
 
 # The unit each kind is written in at the edges (design YAML written back, catalog exports): vendor
-# units,
-# as users write them.
+# units, as users write them.
 DISPLAY_UNITS = {
     "length": "mm",
     "mass": "kg",
@@ -124,8 +123,8 @@ def unit_factor(unit: str, kind: str) -> float:
         raise ValueError(f"unknown unit '{unit}'")
     if kind.startswith("money") and "EUR" not in text:  # no exchange rate is assumed
         raise ValueError(
-            f"'{unit}' is not EUR, the catalogs' currency, and no exchange rate is assumed: convert "
-            "at your rate"
+            f"'{unit}' is not EUR, the catalogs' currency, and no exchange rate is assumed: "
+            "convert at your rate"
         )
     known = KNOWN.get((text, kind))
     return known if known is not None else _pint_factor(unit, text, kind)
@@ -156,11 +155,9 @@ def _pint_factor(unit: str, text: str, kind: str) -> float:
 
 
 # (unit as :func:`_normalise` writes it, kind) -> factor to SI, as :func:`_pint_factor` computes it.
-# The units of
-# the shipped catalogs, problems, studies and reports, and a few common others;
-# tests/core/test_units.py checks
-# every entry against pint.  A unit missing here is still read (by pint), only slower the first
-# time.
+# The units of the shipped catalogs, problems, studies and reports, and a few common others;
+# tests/core/test_units.py checks every entry against pint.  A unit missing here is still read (by
+# pint), only slower the first time.
 KNOWN: dict[tuple[str, str], float] = {
     ("1/K", "thermal_expansion"): 1.0,
     ("1/s", "frequency"): 1.0,
@@ -232,8 +229,8 @@ _ANGLE_WORDS = re.compile(r"rad|deg|rev|rpm|rps|turn|cycle", re.IGNORECASE)
 def _rate_factor(text: str, q, kind: str) -> float:
     """Rates need care: pint counts a radian as dimensionless, so '1/min' and 'rad/s' look alike.
 
-    A unit that names an angle (rad, deg, rev, rpm, ...) is an angular rate: its value in 1/s is rad/s.
-    Any other rate (Hz, 1/min, 1/s) counts cycles: its value in 1/s is cycles per second.
+    A unit that names an angle (rad, deg, rev, rpm, ...) is an angular rate: its value in 1/s is
+    rad/s.  Any other rate (Hz, 1/min, 1/s) counts cycles: its value in 1/s is cycles per second.
     angular_speed -> rad/s, frequency -> Hz.
     """
     per_s = float(q.to(_registry().Unit("1/s")).magnitude)
@@ -258,8 +255,7 @@ def to_si(value: float, unit: str, kind: str) -> float:
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 # The largest magnitude (SI) any input of a kind may have: far beyond every machine-tool axis, well
-# inside
-# float range, so that no product or power of inputs in the model overflows to inf or NaN.
+# inside float range, so that no product or power of inputs in the model overflows to inf or NaN.
 PLAUSIBLE_MAX = {
     "length": 1e3,
     "distance": 1e12,
@@ -300,8 +296,9 @@ PREFIX_ONLY = {"u", "µ", "μ", "k"}
 def check_plausible(
     value: float, kind: str, text, *, source=None, key=None, tiny: bool = True
 ) -> float:
-    """``value`` (SI) unless it is non-finite or outside what an axis input can be (one-line InputError).
-    ``tiny=False``: values close to zero pass (measured data, where they are noise around zero)."""
+    """``value`` (SI) unless it is non-finite or outside what an axis input can be (one-line
+    InputError).  ``tiny=False``: values close to zero pass (measured data, where they are noise
+    around zero)."""
     if not math.isfinite(value):
         raise InputError(f"'{text}' is not a finite number", source=source, where=key)
     top = PLAUSIBLE_MAX.get(kind, 1e12)
@@ -324,7 +321,8 @@ def check_plausible(
 
 
 def parse_quantity(text, kind: str, *, source: str | None = None, key: str | None = None) -> float:
-    """Parse ``"800 mm"`` into SI for ``kind``.  A bare number is an error unless kind is dimensionless.
+    """Parse ``"800 mm"`` into SI for ``kind``.  A bare number is an error unless kind is
+    dimensionless.
 
     Errors are :class:`InputError` naming ``source`` (file) and ``key``.
     """
@@ -391,8 +389,8 @@ _EURO_WORDS = ("\u20ac", "euro", "euros", "eur", "Euro", "Euros", "Eur")
 
 
 def unit_hint(number: str, unit: str, kind: str) -> str:
-    """What a person most likely meant by a unit text that could not be read (a thousands separator, a decimal
-    comma, a power written without '^', a currency symbol), or ''."""
+    """What a person most likely meant by a unit text that could not be read (a thousands separator,
+    a decimal comma, a power written without '^', a currency symbol), or ''."""
     u = unit.strip()
     grouped = re.match(r"^([,.' ]\d{3})+(?=\s|$)", u) or re.match(r"^\d{3}(\s\d{3})*(?=\s|$)", u)
     if grouped:
@@ -401,7 +399,10 @@ def unit_hint(number: str, unit: str, kind: str) -> str:
         return f"write the number without digit groups: '{digits} {rest or _example_unit(kind)}'"
     dec = re.match(r"^,(\d+)\s*(.*)$", u)
     if dec:
-        return f"write the decimal point: '{number}.{dec.group(1)} {dec.group(2) or _example_unit(kind)}'"
+        return (
+            f"write the decimal point: '{number}.{dec.group(1)} "
+            f"{dec.group(2) or _example_unit(kind)}'"
+        )
     if u in _EURO_WORDS or "\u20ac" in u:
         return f"write the currency as EUR: '{number} EUR'"
     fixed = u
@@ -458,18 +459,16 @@ N_PER_UM = 1e6
 
 # ------------------------------------------------------------------------------ strict unit CSV
 # The readers of unit-headed CSV files (measured tables, time records, catalogs) share the header's
-# and the
-# cells' rules here: a header cell is ``name [unit]``, every column known and once, a unit in
-# brackets exactly
-# when the column has a quantity kind, every cell one finite number; each problem is an InputError
-# naming the
-# file, line and column.
+# and the cells' rules here: a header cell is ``name [unit]``, every column known and once, a unit
+# in brackets exactly when the column has a quantity kind, every cell one finite number; each
+# problem is an InputError naming the file, line and column.
 
 
 @dataclass(frozen=True)
 class CsvColumn:
-    """One column of a unit-headed CSV: its name, the unit as written, its quantity kind (None: a plain number
-    without unit) and the factor to SI (None when there is no unit, or the reader converts it itself)."""
+    """One column of a unit-headed CSV: its name, the unit as written, its quantity kind (None: a
+    plain number without unit) and the factor to SI (None when there is no unit, or the reader
+    converts it itself)."""
 
     name: str
     unit: str | None
@@ -478,9 +477,10 @@ class CsvColumn:
 
 
 def read_header(header, *, line: int, source: str, kinds: dict, unknown, factor=None) -> list:
-    """The :class:`CsvColumn` of a header row.  ``kinds``: column name -> quantity kind (None: no unit);
-    ``unknown(name)``: the message for a column not in ``kinds``; ``factor(name, unit, kind, where)``: the SI
-    factor of a unit (default :func:`unit_factor`; a ValueError becomes "<message> in column '<name>'")."""
+    """The :class:`CsvColumn` of a header row.  ``kinds``: column name -> quantity kind (None: no
+    unit); ``unknown(name)``: the message for a column not in ``kinds``;
+    ``factor(name, unit, kind, where)``: the SI factor of a unit (default :func:`unit_factor`; a
+    ValueError becomes "<message> in column '<name>'")."""
     cols = []
     for j, h in enumerate(header, start=1):
         name, unit = split_header(h)

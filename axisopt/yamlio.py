@@ -4,10 +4,11 @@
 typed values (``quantity``, ``choice``, ``integer``...) while recording which keys were used;
 ``Section.done()`` then rejects any key left over (a typo), naming the file, line and key path.
 
-Each kind of file declares its keys once, as :class:`Spec` tables of :class:`Key` entries (name, type, unit
-kind, required, choices, one-line description).  A Section given a Spec reads a declared key with
-:meth:`Section.read`, refuses to read an undeclared one (a bug, :class:`UndeclaredKey`) and hands the
-nested Spec to its sub-sections; :mod:`axisopt.schema` writes the same tables out as a JSON Schema.
+Each kind of file declares its keys once, as :class:`Spec` tables of :class:`Key` entries (name,
+type, unit kind, required, choices, one-line description).  A Section given a Spec reads a declared
+key with :meth:`Section.read`, refuses to read an undeclared one (a bug, :class:`UndeclaredKey`) and
+hands the nested Spec to its sub-sections; :mod:`axisopt.schema` writes the same tables out as a
+JSON Schema.
 """
 
 from __future__ import annotations
@@ -138,7 +139,8 @@ def parse_yaml_text(text: str, src: str) -> Node:
 
 
 def close_matches(word: str, options, n: int = 1) -> list:
-    """difflib's close matches, skipped for long texts (its cost grows with the square of the length)."""
+    """difflib's close matches, skipped for long texts (its cost grows with the square of the
+    length)."""
     word = str(word)
     if len(word) > 64:
         return []
@@ -163,8 +165,8 @@ KEY_TYPES = ("quantity", "number", "choice", "string", "names", "section", "list
 
 @dataclass(frozen=True)
 class Key:
-    """What one YAML key accepts.  The one declaration of the key: :meth:`Section.read` reads it by these
-    rules, and :mod:`axisopt.schema` writes them into the JSON Schema."""
+    """What one YAML key accepts.  The one declaration of the key: :meth:`Section.read` reads it by
+    these rules, and :mod:`axisopt.schema` writes them into the JSON Schema."""
 
     type: str
     doc: str = ""
@@ -196,8 +198,9 @@ class Key:
 
 @dataclass(frozen=True)
 class Spec:
-    """The keys of one YAML mapping.  ``extra``: the form of any other key (a mapping whose key names are
-    the user's, e.g. sweep paths), ``extra_doc`` describes those names; without it other keys are errors."""
+    """The keys of one YAML mapping.  ``extra``: the form of any other key (a mapping whose key
+    names are the user's, e.g. sweep paths), ``extra_doc`` describes those names; without it other
+    keys are errors."""
 
     name: str
     doc: str
@@ -225,11 +228,13 @@ class Spec:
 
 
 class UndeclaredKey(LookupError):
-    """A reader read a key its :class:`Spec` does not declare: a bug in axisopt, not in the input."""
+    """A reader read a key its :class:`Spec` does not declare: a bug in axisopt, not in the
+    input."""
 
 
 def nested_spec(key: Key) -> Spec | None:
-    """The Spec a sub-section of ``key`` is read with (the union of the mapping forms it accepts)."""
+    """The Spec a sub-section of ``key`` is read with (the union of the mapping forms it
+    accepts)."""
     specs = key.specs()
     if not specs:
         return None
@@ -254,7 +259,8 @@ class Section:
         self.used: set[str] = set()
 
     def declared(self, spec: Spec) -> Section:
-        """This section, read by ``spec`` unless it already has one (a Section made without a Spec)."""
+        """This section, read by ``spec`` unless it already has one (a Section made without a
+        Spec)."""
         if self.spec is None:
             self.spec = spec
         return self
@@ -341,8 +347,8 @@ class Section:
         minimum: float | None = None,
         maximum: float | None = None,
     ):
-        """A plain number: finite, within [minimum, maximum] (``maximum`` defaults to 1e9, which no count
-        or factor of an axis input reaches)."""
+        """A plain number: finite, within [minimum, maximum] (``maximum`` defaults to 1e9, which no
+        count or factor of an axis input reaches)."""
         n = self.raw(key, None, required=required)
         if n is None:
             return default
@@ -407,8 +413,8 @@ class Section:
         return Section(n, self.source, self.key_path(key), spec)
 
     def read(self, key: str, default=None):
-        """Read a declared key by its :class:`Key` (type, unit kind, required, bounds, choices); ``default``
-        (else the Key's) when it is absent."""
+        """Read a declared key by its :class:`Key` (type, unit kind, required, bounds, choices);
+        ``default`` (else the Key's) when it is absent."""
         k = self.spec.key(key) if self.spec is not None else None
         if k is None:
             raise UndeclaredKey(f"Section.read('{key}') needs a Spec")
@@ -450,8 +456,7 @@ class Section:
         if extra:
             k = extra[0]
             # the keys read, and those the table declares (a section whose reader asks a key only
-            # when another
-            # is there: search.counterbalance beside search.drive_types)
+            # when another is there: search.counterbalance beside search.drive_types)
             known = set(self.used) | (set(self.spec.keys) if self.spec is not None else set())
             near = close_matches(k, sorted(known - set(extra)), n=1)
             hint = f"; did you mean '{near[0]}'?" if near else ""
@@ -469,8 +474,7 @@ def plain(node: Node):
 
 # ------------------------------------------------------------------------------ which kind of file
 # The top-level keys that tell the YAML files apart, and the command that reads each: a file given
-# to the
-# wrong command is named as what it is, with the command to use (not "unknown key 'parts'").
+# to the wrong command is named as what it is, with the command to use (not "unknown key 'parts'").
 KIND_COMMANDS = {
     "design": "axisopt evaluate {file}",
     "problem": "axisopt solve {file}",
@@ -493,12 +497,13 @@ def file_kind(node: Node) -> str | None:
 
 
 def require_kind(node: Node, src: str, wanted: str) -> Node:
-    """``node`` unchanged when it can be a ``wanted`` file; else a one-line InputError naming what it is and the
-    command that reads it (a CSV, e.g. measured data, given where a YAML file is read, too)."""
+    """``node`` unchanged when it can be a ``wanted`` file; else a one-line InputError naming what
+    it is and the command that reads it (a CSV, e.g. measured data, given where a YAML file is read,
+    too)."""
     if not isinstance(node.value, dict) and str(src).lower().endswith((".csv", ".txt", ".tsv")):
         raise InputError(
-            f"a CSV file, not a {wanted} YAML: measured data go to `axisopt diagnose {src} --design "
-            "DESIGN.yaml`, catalog tables to --catalogs DIR",
+            f"a CSV file, not a {wanted} YAML: measured data go to `axisopt diagnose {src} "
+            "--design DESIGN.yaml`, catalog tables to --catalogs DIR",
             source=src,
         )
     kind = file_kind(node)

@@ -1,45 +1,54 @@
-"""Realistic axis problems for the generalisation benchmark (bench/bench_generalize.py) and the fuzz harness.
+"""Realistic axis problems for the generalisation benchmark (bench/bench_generalize.py) and the fuzz
+harness.
 
     from axis_generator import generate
     for case in generate(300, seed=0): ...   # case.name, case.kind, case.text (a problem YAML)
 
-Written from the problem file reference (docs/reference/yaml.md) and published selection practice, not from the
-shipped problems: every key used is one the reference documents, every value carries its unit.  Case ``i`` of
-seed ``s`` is drawn from ``random.Random(s * 1_000_003 + i)`` and is the same on every machine.
+Written from the problem file reference (docs/reference/yaml.md) and published selection practice,
+not from the shipped problems: every key used is one the reference documents, every value carries
+its unit.  Case ``i`` of seed ``s`` is drawn from ``random.Random(s * 1_000_003 + i)`` and is the
+same on every machine.
 
-Where the ranges come from (each range spans the published example(s) named, widened to the machine kind; the
-spans themselves are our estimate):
+Where the ranges come from (each range spans the published example(s) named, widened to the machine
+kind; the spans themselves are our estimate):
 
-* masses, speeds, accelerations of transfer axes: THK General Catalog A15 ball screw selection example
-  (horizontal transfer: table 60 kg + work 20 kg, 1 m/s = 60 m/min reached in 0.15 s, 6.7 m/s^2, 1 000 mm stroke,
-  30 000 h) and its vertical example (same masses, 0.3 m/s);
-* machine-tool feed axes: rapids 15-48 m/min and 1-6 m/s^2 (THK A-704 Table 19 groups machine tools' speeds up
-  to 60 m/min: fw 1.5; Rexroth R310EN load factor table: 1-2 m/s fw 1.5-2.0); required lives 10 000-30 000 h
-  (THK A15: 30 000 h; HIWIN ballscrew catalog's life examples 10 000-20 000 h);
-* cutting (feed) forces 1-12 kN: turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (Isakov, Cutting Data for
-  Turning of Steel, the rule axisopt's notes print), F_c of 2-20 kN for roughing cuts on 10-40 kW spindles;
-* load / rotor inertia ratios and the motor checks: THK's motor selection page (inertia ratio normally 3-10);
-* counterbalances: a cylinder or counterweight taking 80-100 % of the head's weight (vertical ram practice; the
-  counterbalance keys of the reference);
-* twin-drive gantries: bridge 300-1 500 kg over 2-6 m, 15-40 m/min (router and gantry-mill brochures; our
-  estimate);
+* masses, speeds, accelerations of transfer axes: THK General Catalog A15 ball screw selection
+  example (horizontal transfer: table 60 kg + work 20 kg, 1 m/s = 60 m/min reached in 0.15 s, 6.7
+  m/s^2, 1 000 mm stroke, 30 000 h) and its vertical example (same masses, 0.3 m/s);
+* machine-tool feed axes: rapids 15-48 m/min and 1-6 m/s^2 (THK A-704 Table 19 groups machine tools'
+  speeds up to 60 m/min: fw 1.5; Rexroth R310EN load factor table: 1-2 m/s fw 1.5-2.0); required
+  lives 10 000-30 000 h (THK A15: 30 000 h; HIWIN ballscrew catalog's life examples 10 000-20 000
+  h);
+* cutting (feed) forces 1-12 kN: turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (Isakov,
+  Cutting Data for Turning of Steel, the rule axisopt's notes print), F_c of 2-20 kN for roughing
+  cuts on 10-40 kW spindles;
+* load / rotor inertia ratios and the motor checks: THK's motor selection page (inertia ratio
+  normally 3-10);
+* counterbalances: a cylinder or counterweight taking 80-100 % of the head's weight (vertical ram
+  practice; the counterbalance keys of the reference);
+* twin-drive gantries: bridge 300-1 500 kg over 2-6 m, 15-40 m/min (router and gantry-mill
+  brochures; our estimate);
 * precision stages: positioning errors 5-40 um (THK A-678 accuracy grades C1-C7 over 300-1 000 mm);
 * thermal growth limits 10-60 um (THK A-715: 12 um/m/degC, a 2-5 degC rise).
 
-* heavier tables accelerate less: the acceleration's upper end falls with sqrt(lightest / this mass) of the kind
-  (our estimate of the spread between light tables near 1 g and heavy ones at 0.1-0.3 g);
-* motor series: a buyer lists series that reach a rated power of a third of the axis's peak mechanical power
-  (m a + F) v (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi catalogs);
-* vendor lists cover every part kind bought (a bearing maker's angular-contact sets beside HIWIN's screws and
-  guides), single nuts come with the axial play their catalogs list (up to 0.05 mm), and one case in five is a
-  shortlist (one supplier and one series per part kind, one grade, no reduction: a machine builder's framework
-  contracts), which keeps it at 10^6 combinations or fewer: the benchmark's default == exhaustive sample.
+* heavier tables accelerate less: the acceleration's upper end falls with sqrt(lightest / this mass)
+  of the kind (our estimate of the spread between light tables near 1 g and heavy ones at 0.1-0.3
+  g);
+* motor series: a buyer lists series that reach a rated power of a third of the axis's peak
+  mechanical power (m a + F) v (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi
+  catalogs);
+* vendor lists cover every part kind bought (a bearing maker's angular-contact sets beside HIWIN's
+  screws and guides), single nuts come with the axial play their catalogs list (up to 0.05 mm), and
+  one case in five is a shortlist (one supplier and one series per part kind, one grade,
+  no reduction: a machine builder's framework contracts), which keeps it at 10^6 combinations
+  or fewer: the benchmark's default == exhaustive sample.
 
-Boundary values the reference allows are drawn on purpose (``end_margin: 0 mm``, ``guide_blocks`` equal to
-``rails``, ``axial_load: 0 N``, ``acceleration: 0 m/s^2`` without a drive, one mounting only), and about one case in
-twelve carries a unit slip (m/s for m/min, t for kg, kN for N, m for mm).  About a third of the cases draw their
-limits from the stringent end (tight); the benchmark prints the share of infeasible answers, which is higher: the
-vendor checks (support-bearing life, lift-off, motor RMS torque) fail on many of the heavier draws as well.
+Boundary values the reference allows are drawn on purpose (``end_margin: 0 mm``, ``guide_blocks``
+equal to ``rails``, ``axial_load: 0 N``, ``acceleration: 0 m/s^2`` without a drive, one mounting
+only), and about one case in twelve carries a unit slip (m/s for m/min, t for kg, kN for N, m for
+mm).  About a third of the cases draw their limits from the stringent end (tight); the benchmark
+prints the share of infeasible answers, which is higher: the vendor checks (support-bearing life,
+lift-off, motor RMS torque) fail on many of the heavier draws as well.
 """
 
 from __future__ import annotations
@@ -64,13 +73,11 @@ KINDS = (
 )
 
 # HIWIN lists every mechanical slot; the others add screws and nuts (THK, Bosch Rexroth), bearings
-# (NSK,
-# Schaeffler, THK) or guides (IKO, NBS): a vendors filter without HIWIN mostly leaves a slot empty
-# (an input error)
+# (NSK, Schaeffler, THK) or guides (IKO, NBS): a vendors filter without HIWIN mostly leaves a slot
+# empty (an input error)
 MECH_VENDORS = ("THK", "NSK", "Bosch Rexroth", "Schaeffler", "IKO", "NBS")
 # the largest rated power [W] of each motor series in catalogs/motors.csv: a buyer lists series that
-# reach the
-# axis's power (below)
+# reach the axis's power (below)
 SERIES_POWER = {
     "Sigma-7 SGM7G": 1800,
     "Sigma-7 SGM7A": 7000,
@@ -123,8 +130,7 @@ def _fmt(v):
 
 
 # per machine kind: stroke [mm], moving mass [kg], max speed [m/min], acceleration [m/s^2], axial
-# load [N],
-# table length [mm], orientation
+# load [N], table length [mm], orientation
 SPECS = {
     "vmc_x": dict(
         stroke=(500, 1600),
@@ -233,8 +239,8 @@ def _axis(rnd, kind, s, lines, span=0.0):
     mass = _r(rnd, *s["mass"], 10)
     speed = _r(rnd, *s["speed"], 1)
     # heavier tables accelerate less (the upper end of the kind's range scaled by sqrt(lightest /
-    # this mass):
-    # our estimate of the published spread, light tables at 1 g, heavy ones at 0.1-0.3 g)
+    # this mass): our estimate of the published spread, light tables at 1 g, heavy ones at 0.1-0.3
+    # g)
     lo_a, hi_a = s["acc"]
     acc = _r(rnd, lo_a, max(lo_a, hi_a * (s["mass"][0] / mass) ** 0.5), 0.5)
     force = _r(rnd, *s["force"], 100)
@@ -355,7 +361,8 @@ def make(seed: int, index: int) -> Case:
     cost = {"precision_stage": 3000, "laser": 4000, "lathe_x": 3000}.get(kind, 6000)
     cost *= 2 if kind == "gantry_twin" else 1
     lim.append(
-        f"  max_cost: {_fmt(round(cost * (rnd.uniform(0.1, 0.5) if tight else rnd.uniform(1, 3)), -1))} EUR"
+        "  max_cost: "
+        f"{_fmt(round(cost * (rnd.uniform(0.1, 0.5) if tight else rnd.uniform(1, 3)), -1))} EUR"
     )
     lim.append(f"  min_life: {_fmt(_r(rnd, 10000, 30000, 1000))} h")
     if rnd.random() < 0.4:
@@ -378,25 +385,21 @@ def make(seed: int, index: int) -> Case:
         )
     if rnd.random() < 0.2:
         lim.append(
-            f"  max_drag_torque: {_fmt(round(rnd.uniform(0.3, 1.0) if tight else rnd.uniform(2, 6), 1))} N.m"
+            "  max_drag_torque: "
+            f"{_fmt(round(rnd.uniform(0.3, 1.0) if tight else rnd.uniform(2, 6), 1))} N.m"
         )
     if rnd.random() < 0.2:
         lim.append(f"  max_backlash: {_fmt(rnd.choice((0, 1, 5, 20)))} um")
     # catalog filters: an approved-vendor list covers every part kind the buyer orders (HIWIN's
-    # screws, nuts
-    # and guides; a bearing maker's angular-contact sets: HIWIN's own support units are its light-
-    # duty WBK
-    # sizes), single nuts come with the axial play their catalogs list (HIWIN up to 0.05 mm, THK
-    # 0.01 mm:
-    # catalogs/nuts.csv), and one case in five is a shortlist: one supplier per part kind, one
-    # series each, as
-    # a machine builder with framework contracts writes it (at most 10^6 combinations: the benchmark
-    # compares
-    # these with exhaustive enumeration)
+    # screws, nuts and guides; a bearing maker's angular-contact sets: HIWIN's own support units are
+    # its light-duty WBK sizes), single nuts come with the axial play their catalogs list (HIWIN up
+    # to 0.05 mm, THK 0.01 mm: catalogs/nuts.csv), and one case in five is a shortlist: one supplier
+    # per part kind, one series each, as a machine builder with framework contracts writes it (at
+    # most 10^6 combinations: the benchmark compares these with exhaustive enumeration)
     cat = []
     # the motor series a buyer lists reach the axis's peak mechanical power (m a + F) v with a rated
-    # power of a
-    # third of it (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi HG/HC catalogs)
+    # power of a third of it (servo peak torque about 3x rated: Yaskawa Sigma-7, Mitsubishi HG/HC
+    # catalogs)
     need = (a["mass"] * a["acc"] + a["force"]) * a["speed"] / 60.0 / 3.0
     series = [m for m in MOTOR_SERIES if SERIES_POWER[m] >= need] or [
         "Sigma-7 SGM7A",
@@ -437,7 +440,8 @@ def make(seed: int, index: int) -> Case:
         pass
     elif rnd.random() < 0.5:
         cat.append(
-            f"  motor_series: [{', '.join(rnd.sample(series, rnd.randint(1, min(3, len(series)))))}]"
+            "  motor_series: "
+            f"[{', '.join(rnd.sample(series, rnd.randint(1, min(3, len(series)))))}]"
         )
     # the shipped motors list no flange: this filter leaves none (a clean input error)
     elif rnd.random() < 0.03:

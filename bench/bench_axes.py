@@ -1,21 +1,23 @@
-"""Wall time of the shipped long, heavy and fast axes, the twin-drive gantry and the counterweighted vertical Z,
-and of an infeasible variant of each (a benchmark, not a test; target: each under 2 s).
+"""Wall time of the shipped long, heavy and fast axes, the twin-drive gantry and the counterweighted
+vertical Z, and of an infeasible variant of each (a benchmark, not a test; target: each under 2 s).
 
     python bench/bench_axes.py [--repeat N]
 
-Each case runs as a user runs it: a fresh ``python -m axisopt solve`` process on a problem file (the variants are
-the shipped file with one value changed, written to a temporary directory), N times, interleaved with
-``python -c pass`` so that machine load hits all alike.  Prints per case the median wall time, its ratio to
-``python -c pass``, the median CPU time (user + system), the exit code (0: a design, 1: infeasible and
-explained) and the search's own time as the solve prints it.
+Each case runs as a user runs it: a fresh ``python -m axisopt solve`` process on a problem file (the
+variants are the shipped file with one value changed, written to a temporary directory), N times,
+interleaved with ``python -c pass`` so that machine load hits all alike.  Prints per case the median
+wall time, its ratio to ``python -c pass``, the median CPU time (user + system), the exit code (0: a
+design, 1: infeasible and explained) and the search's own time as the solve prints it.
 
 The variants, each infeasible for a reason an engineer would try:
 
-* lathe Z, direct drive forced: ``max_backlash`` 1 um leaves every gearbox out (its backlash at the table);
+* lathe Z, direct drive forced: ``max_backlash`` 1 um leaves every gearbox out (its backlash at the
+  table);
 * boring-mill table at 20 m/min rapids instead of 15 (the motors' speed with the gearboxes' ratios);
 * laser axis with 150 kg instead of 100 (the direct drives' peak torque at 1.5 g);
 * twin-drive gantry at 20 m/min instead of 15 (the 4 m screws' critical speed);
-* counterweighted vertical Z with a 600 kg head on the same 250 kg counterweight (the nut's lift-off);
+* counterweighted vertical Z with a 600 kg head on the same 250 kg counterweight (the nut's
+  lift-off);
 * the 600 kg Z's ram at 1200 kg on the same cylinder (the motors' RMS torque).
 """
 
@@ -72,7 +74,8 @@ def variant(src: Path, change, out_dir: Path) -> Path:
 
 
 def run(args) -> tuple[float, float, int, str]:
-    """(wall s, CPU s of the child, exit code, the solve's own time as printed) of one fresh process."""
+    """(wall s, CPU s of the child, exit code, the solve's own time as printed) of one fresh
+    process."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     proc = subprocess.run(

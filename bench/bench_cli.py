@@ -2,14 +2,15 @@
 
     python bench/bench_cli.py [--repeat N]
 
-Runs each command as a user does (a fresh ``python -m axisopt`` process, output discarded), N times each,
-interleaved with ``python -c pass`` and ``python -c "import numpy"`` so that machine load hits all alike; prints
-the median wall time of each (after one untimed run that writes the compiled modules, as a user's machine keeps
-them), its ratios to both references, the median CPU time (user + system, less affected by
-other processes on a loaded machine) and which heavy libraries the command imports (``-X importtime``).
+Runs each command as a user does (a fresh ``python -m axisopt`` process, output discarded), N times
+each, interleaved with ``python -c pass`` and ``python -c "import numpy"`` so that machine load hits
+all alike; prints the median wall time of each (after one untimed run that writes the compiled
+modules, as a user's machine keeps them), its ratios to both references, the median CPU time (user +
+system, less affected by other processes on a loaded machine) and which heavy libraries the command
+imports (``-X importtime``).
 
-Targets (issue 29): ``solve problems/teaching_problem.yaml`` < 0.6 s and ``parts screws`` < 0.4 s wall on an idle
-machine."""
+Targets (issue 29): ``solve problems/teaching_problem.yaml`` < 0.6 s and ``parts screws`` < 0.4 s
+wall on an idle machine."""
 
 from __future__ import annotations
 
@@ -84,9 +85,8 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     env = dict(os.environ, PYTHONPATH=str(ROOT), AXISOPT_COLOR="never")
     # as on a user's machine: Python keeps the compiled modules (some sandboxes set
-    # PYTHONDONTWRITEBYTECODE,
-    # and then every run compiles axisopt's modules again, about 0.09 s); one untimed run of each
-    # writes them
+    # PYTHONDONTWRITEBYTECODE, and then every run compiles axisopt's modules again, about 0.09 s);
+    # one untimed run of each writes them
     env.pop("PYTHONDONTWRITEBYTECODE", None)
     for cmd in COMMANDS.values():
         _run(cmd, env)
@@ -100,12 +100,14 @@ def main(argv=None) -> int:
     ref = statistics.median(times["python -c pass"])
     ref_np = statistics.median(times['python -c "import numpy"'])
     print(
-        f"{'command':<48}{'median s':>9}{'min s':>7}{'CPU s':>7}{'/ pass':>8}{'/ numpy':>8}  heavy imports"
+        f"{'command':<48}{'median s':>9}{'min s':>7}{'CPU s':>7}{'/ pass':>8}{'/ numpy':>8}  heavy "
+        "imports"
     )
     for name, cmd in COMMANDS.items():
         med = statistics.median(times[name])
         print(
-            f"{name:<48}{med:>9.3f}{min(times[name]):>7.3f}{statistics.median(cpu[name]):>7.3f}{med / ref:>8.1f}"
+            f"{name:<48}{med:>9.3f}{min(times[name]):>7.3f}{statistics.median(cpu[name]):>7.3f}"
+            f"{med / ref:>8.1f}"
             f"{med / ref_np:>8.2f}  {_imports(cmd, env)}"
         )
     return 0

@@ -1,5 +1,5 @@
-"""Benchmark: diagnose a 10 000-row static stiffness test (budget 5 s).  Prints the time and its ratio
-to the budget.  ``python bench/bench_diagnose.py [rows]``; not run as a test."""
+"""Benchmark: diagnose a 10 000-row static stiffness test (budget 5 s).  Prints the time and its
+ratio to the budget.  ``python bench/bench_diagnose.py [rows]``; not run as a test."""
 
 import argparse
 import time

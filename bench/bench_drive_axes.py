@@ -1,12 +1,13 @@
-"""CPU time of the issue-54 axes (not a test): the 6 m twin-drive router, the 1.5 g laser axis, the belt lathe Z
-and the 2 t boring table, each solved as `axisopt solve` does (sensitivities, the cheaper design, the default
-offer of other drive types), and an infeasible variant of each; each in its own process, its CPU time (user +
-system, the process and its children) and wall time, with the answer's first status line.
+"""CPU time of the issue-54 axes (not a test): the 6 m twin-drive router, the 1.5 g laser axis, the
+belt lathe Z and the 2 t boring table, each solved as `axisopt solve` does (sensitivities, the
+cheaper design, the default offer of other drive types), and an infeasible variant of each; each in
+its own process, its CPU time (user + system, the process and its children) and wall time, with the
+answer's first status line.
 
     python bench/bench_drive_axes.py [--only NAME ...]
 
-The infeasible variants: the shipped ones for the router and the laser, the lathe at a 500 EUR budget and the
-boring table at 45 m/min rapids (written to a temporary directory).
+The infeasible variants: the shipped ones for the router and the laser, the lathe at a 500 EUR
+budget and the boring table at 45 m/min rapids (written to a temporary directory).
 """
 
 from __future__ import annotations

@@ -1,8 +1,9 @@
 """Scaling benchmark of the drive-type search (not a test): the router problem's axis with synthetic
-rack-and-pinion sets, reductions, motors and guides at about 10^7, 10^8 and 10^9 rack combinations (and the
-shipped linear motors), solved by the default method (bounded best-first, :mod:`axisopt.search.drivebest`);
-prints combinations, solve time, and the best design.  ``--exhaustive-check`` compares the smallest size with
-the exhaustive method (every combination evaluated).
+rack-and-pinion sets, reductions, motors and guides at about 10^7, 10^8 and 10^9 rack combinations
+(and the shipped linear motors), solved by the default method (bounded best-first,
+:mod:`axisopt.search.drivebest`); prints combinations, solve time, and the best design.
+``--exhaustive-check`` compares the smallest size with the exhaustive method (every combination
+evaluated).
 
     python bench/bench_drivetypes.py [--sizes 1e7 1e8 1e9] [--exhaustive-check]
 """

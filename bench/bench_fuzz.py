@@ -3,12 +3,12 @@
     python bench/bench_fuzz.py [--cases 3000] [--seed 0] [--workers 2] [--timeout 60] [--details bad.txt]
     python bench/bench_fuzz.py --replay 123 --keep /tmp/case123      # write case 123's files, print its command
 
-Every case is one shipped input (design, problem, study with a tiny sweep, saved calibration, diagnose data
-CSV, user catalog directory, compare pair, or command-line flags) with a mutation, or one of the hardening
-cases of issue 24 (FIFO and device paths, '-', oversized or degenerate data, ...), from
-``tests/core/fuzz_inputs.py``, or a realistic axis of ``bench/axis_generator.py`` (kind ``generated``),
-run as a subprocess ``python -m axisopt ...`` in its own empty directory with a
-time limit.  Each outcome is classified against the CLI contract:
+Every case is one shipped input (design, problem, study with a tiny sweep, saved calibration,
+diagnose data CSV, user catalog directory, compare pair, or command-line flags) with a mutation, or
+one of the hardening cases of issue 24 (FIFO and device paths, '-', oversized or degenerate data,
+...), from ``tests/core/fuzz_inputs.py``, or a realistic axis of ``bench/axis_generator.py`` (kind
+``generated``), run as a subprocess ``python -m axisopt ...`` in its own empty directory with a time
+limit.  Each outcome is classified against the CLI contract:
 
   ok                exit 0, --json output finite and without negative masses, stiffnesses, lengths
   negative          exit 1 (proven) or 3 (unproven: Bonmin, a time limit) with an explanation
@@ -21,9 +21,10 @@ time limit.  Each outcome is classified against the CLI contract:
   silent negative   exit 1 or 3 with no output at all
   crash             any other exit code (a signal, an abort)
 
-Case ``i`` of seed ``s`` is drawn from ``random.Random(s * 1_000_003 + i)``, so a bad case is reproduced with
-``--seed s --replay i``.  The cases of a run are split evenly over the input kinds (``--kinds`` to choose).
-"""
+Case ``i`` of seed ``s`` is drawn from ``random.Random(s * 1_000_003 + i)``, so a bad case is
+reproduced with ``--seed s --replay i``.  The cases of a run are split evenly over the input kinds
+(``--kinds`` to choose).
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -46,9 +47,8 @@ sys.path.insert(0, str(ROOT / "bench"))
 import axis_generator  # noqa: E402
 
 # besides the shipped inputs' mutations: a realistic axis of bench/axis_generator.py (its own seed
-# and index),
-# solved as a user solves it (sensitivities and advice on), sometimes with one of the flags a user
-# adds
+# and index), solved as a user solves it (sensitivities and advice on), sometimes with one of the
+# flags a user adds
 GENERATED = "generated"
 KINDS = F.KINDS + (GENERATED,)
 
@@ -167,12 +167,14 @@ def main(argv=None) -> int:
         d.mkdir(parents=True, exist_ok=True)
         case.materialize(d)
         print(
-            f"kind {case.kind}\nmutation {case.mutation}\nin {d}:\n  cd {d} && python -m {case.command()}"
+            f"kind {case.kind}\nmutation {case.mutation}\nin {d}:\n  cd {d} && python -m "
+            f"{case.command()}"
         )
         if args.run:
             out = F.run_subprocess(case, d, timeout=args.timeout)
             print(
-                f"exit {out.rc} in {out.seconds:.1f} s: {F.classify(case, out)}\n--- stderr\n{out.stderr[-3000:]}"
+                f"exit {out.rc} in {out.seconds:.1f} s: {F.classify(case, out)}\n--- stderr\n"
+                f"{out.stderr[-3000:]}"
             )
         return 0
 
@@ -184,7 +186,8 @@ def main(argv=None) -> int:
             results.append(r)
             if r["class"] in F.BAD:
                 print(
-                    f"  [{r['class']}] #{r['index']} {r['command'][:150]}\n      {r['mutation'][:160]}\n"
+                    f"  [{r['class']}] #{r['index']} {r['command'][:150]}\n      "
+                    f"{r['mutation'][:160]}\n"
                     f"      -> {r['detail'][:200]}",
                     flush=True,
                 )
@@ -200,8 +203,8 @@ def main(argv=None) -> int:
     classes = [c for c in F.OUTCOMES if any(k[1] == c for k in by)]
     w = max(len(c) for c in classes) + 2
     print(
-        f"\n{len(results)} cases in {wall:.0f} s ({args.workers} workers, seed {args.seed}, timeout "
-        f"{args.timeout:g} s)\n"
+        f"\n{len(results)} cases in {wall:.0f} s ({args.workers} workers, seed {args.seed}, "
+        f"timeout {args.timeout:g} s)\n"
     )
     print(f"{'kind':<12}" + "".join(f"{c:>{w}}" for c in classes) + f"{'total':>8}{'mean s':>8}")
     for k in kinds:
@@ -236,10 +239,12 @@ def main(argv=None) -> int:
         with open(args.details, "w", encoding="utf-8") as fh:
             for r in bad:
                 fh.write(
-                    f"=== #{r['index']} [{r['class']}] {r['kind']} exit {r['rc']} {r['seconds']:.1f} s\n"
-                    f"command:  {r['command']}\nmutation: {r['mutation']}\ndetail:   {r['detail']}\n"
-                    f"replay:   python bench/bench_fuzz.py --seed {args.seed} --kinds {','.join(kinds)} "
-                    f"--replay {r['index']} --run\nstderr:\n{r['stderr']}\n\n"
+                    f"=== #{r['index']} [{r['class']}] {r['kind']} exit {r['rc']} "
+                    f"{r['seconds']:.1f} s\n"
+                    f"command:  {r['command']}\nmutation: {r['mutation']}\ndetail:   "
+                    f"{r['detail']}\n"
+                    f"replay:   python bench/bench_fuzz.py --seed {args.seed} --kinds "
+                    f"{','.join(kinds)} --replay {r['index']} --run\nstderr:\n{r['stderr']}\n\n"
                 )
         print(f"\ndetails of {len(bad)} bad cases written to {args.details}")
     return 0

@@ -1,20 +1,22 @@
-"""Wall time and outcome of `axisopt solve` on axes written outside the project (a benchmark, not a test).
+"""Wall time and outcome of `axisopt solve` on axes written outside the project (a benchmark, not a
+test).
 
     python bench/bench_generalize.py [--cases 300] [--seed 0] [--workers 2] [--timeout 60] [--compare 20]
                                      [--keep DIR] [--only 12,40]
 
-Each case of bench/axis_generator.py runs as a user runs it: a fresh ``python -m axisopt solve FILE --json F``
-process (sensitivities and advice on, the default time limit).  Prints the wall and CPU time's p50 / p95 / max
-(the CPU time, user + system of the solve's process, is what load on a shared machine changes least), feasible
-(exit 0) and infeasible (exit 1) apart, the slowest ten, and every crash: a traceback on stderr, or an exit code
-other than 0 (a design), 1 (infeasible, explained) or 2 (a one-line input error, e.g. a unit slip the readers
-refuse).  The machine is shared: a reference problem (problems/teaching_problem.yaml) is solved the same way
-before and after the cases, and the figures are also printed as multiples of its time.
+Each case of bench/axis_generator.py runs as a user runs it: a fresh
+``python -m axisopt solve FILE --json F`` process (sensitivities and advice on, the default time
+limit).  Prints the wall and CPU time's p50 / p95 / max (the CPU time, user + system of the solve's
+process, is what load on a shared machine changes least), feasible (exit 0) and infeasible (exit 1)
+apart, the slowest ten, and every crash: a traceback on stderr, or an exit code other than 0 (a
+design), 1 (infeasible, explained) or 2 (a one-line input error, e.g. a unit slip the readers
+refuse).  The machine is shared: a reference problem (problems/teaching_problem.yaml) is solved the
+same way before and after the cases, and the figures are also printed as multiples of its time.
 
-``--compare N``: of the cases with a design or proven infeasible whose certificate counts at most 10^6
-combinations, the first N are solved again with ``--method exhaustive`` and the optimum's objective compared
-(Pareto cases compare their fronts' points).
-"""
+``--compare N``: of the cases with a design or proven infeasible whose certificate counts at most
+10^6 combinations, the first N are solved again with ``--method exhaustive`` and the optimum's
+objective compared (Pareto cases compare their fronts' points).
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -137,9 +139,9 @@ def line(label, xs, ref):
     if not xs:
         return f"  {label:<11} n=0"
     return (
-        f"  {label:<11} n={len(xs):<4} p50 {pct(xs, 0.5):5.2f} s  p95 {pct(xs, 0.95):5.2f} s  "
-        f"max {max(xs):5.2f} s   (x reference: {pct(xs, 0.5) / ref:4.1f} / {pct(xs, 0.95) / ref:4.1f} / "
-        f"{max(xs) / ref:4.1f})"
+        f"  {label:<11} n={len(xs):<4} p50 {pct(xs, 0.5):5.2f} s  p95 {pct(xs, 0.95):5.2f} s  max "
+        f"{max(xs):5.2f} s   (x reference: {pct(xs, 0.5) / ref:4.1f} / {pct(xs, 0.95) / ref:4.1f} "
+        f"/ {max(xs) / ref:4.1f})"
     )
 
 
@@ -186,12 +188,12 @@ def main(argv=None):
     errs = [r for r in rs if r["rc"] == 2]
     crashes = [r for r in rs if r["crash"]]
     print(
-        f"\n{len(rs)} cases in {total:.0f} s on {a.workers} workers; reference wall {ref0[0]:.2f} s before, "
-        f"{ref1[0]:.2f} s after (CPU {ref0[1]:.2f} / {ref1[1]:.2f} s)"
+        f"\n{len(rs)} cases in {total:.0f} s on {a.workers} workers; reference wall {ref0[0]:.2f} "
+        f"s before, {ref1[0]:.2f} s after (CPU {ref0[1]:.2f} / {ref1[1]:.2f} s)"
     )
     print(
-        f"  exit 0 {sum(r['rc'] == 0 for r in rs)}, exit 1 {sum(r['rc'] == 1 for r in rs)}, exit 2 {len(errs)}, "
-        f"crashes {len(crashes)}, timeouts {sum(r['rc'] is None for r in rs)}"
+        f"  exit 0 {sum(r['rc'] == 0 for r in rs)}, exit 1 {sum(r['rc'] == 1 for r in rs)}, exit 2 "
+        f"{len(errs)}, crashes {len(crashes)}, timeouts {sum(r['rc'] is None for r in rs)}"
     )
     for key, ref in (("wall", 0.5 * (ref0[0] + ref1[0])), ("cpu", 0.5 * (ref0[1] + ref1[1]))):
         print(f"{key} time [s] (and as multiples of the reference's {ref:.2f} s):")
@@ -202,8 +204,8 @@ def main(argv=None):
     print("slowest ten (CPU time):")
     for r in sorted(rs, key=lambda r: -r["cpu"])[:10]:
         print(
-            f"  CPU {r['cpu']:6.2f} s  wall {r['wall']:6.2f} s  exit {r['rc']}  {r['status'] or '-':<12} "
-            f"{r['name']}"
+            f"  CPU {r['cpu']:6.2f} s  wall {r['wall']:6.2f} s  exit {r['rc']}  "
+            f"{r['status'] or '-':<12} {r['name']}"
         )
     tally: dict = {}
     for r in rs:
@@ -267,7 +269,8 @@ def main(argv=None):
             )
         bad = [c for c in cs if not c["same"]]
         print(
-            f"default == exhaustive on {len(cs) - len(bad)} of {len(cs)} cases with <= 1e6 combinations"
+            f"default == exhaustive on {len(cs) - len(bad)} of {len(cs)} cases with <= 1e6 "
+            "combinations"
         )
         for c in bad:
             print(f"  DIFFERS {c}")

@@ -1,5 +1,6 @@
-"""Benchmark: identify a 25 000-sample time record (1 kHz, 25 s) with LS and IV and diagnose it against a
-12 000-sample validation run (budget 5 s).  Prints the times, the IV/LS time ratio and the ratio to the budget.
+"""Benchmark: identify a 25 000-sample time record (1 kHz, 25 s) with LS and IV and diagnose it
+against a 12 000-sample validation run (budget 5 s).  Prints the times, the IV/LS time ratio and the
+ratio to the budget.
 ``python bench/bench_idim.py [samples]``; not run as a test."""
 
 import argparse
@@ -38,14 +39,16 @@ def main(samples: int = 25_000) -> None:
     iv = instrumental_variables(rows, BASE, ctrl=diag.controller, start=ls)
     t_iv = time.perf_counter() - t0
     print(
-        f"{rows.record.n} samples -> {rows.n} regression rows (cut-off {rows.proc.fc:.1f} Hz, decimation "
-        f"{rows.proc.nd}); verdict {diag.verdict or 'nothing'}"
+        f"{rows.record.n} samples -> {rows.n} regression rows (cut-off {rows.proc.fc:.1f} Hz, "
+        f"decimation {rows.proc.nd}); verdict {diag.verdict or 'nothing'}"
     )
     print(
-        f"LS {t_ls * 1e3:.1f} ms  IV {t_iv * 1e3:.0f} ms ({iv.iterations} iterations)  IV/LS {t_iv / t_ls:.0f}"
+        f"LS {t_ls * 1e3:.1f} ms  IV {t_iv * 1e3:.0f} ms ({iv.iterations} iterations)  IV/LS "
+        f"{t_iv / t_ls:.0f}"
     )
     print(
-        f"read + identify + diagnose {total:.2f} s  budget {BUDGET:.1f} s  ratio {total / BUDGET:.2f}"
+        f"read + identify + diagnose {total:.2f} s  budget {BUDGET:.1f} s  ratio "
+        f"{total / BUDGET:.2f}"
     )
 
 

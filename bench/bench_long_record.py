@@ -1,9 +1,10 @@
-"""Benchmark: a 20-minute warm-up record at 1 kHz (1 200 000 samples, viscous friction halving every 20 K as the
-axis warms from 20 to 40 degC) and a 30 s validation run that starts warm, simulated by the tests' own cascade
-(tests/identify/sim_cascade.py, physics written apart from the fitted model).  Budget: 60 s of CPU on 2 cores
-for reading and diagnosing (the record is fitted in windows, :func:`axisopt.identify.records.signal.windowed`).
-Prints the CPU time, the verdict and beta.  ``python bench/bench_long_record.py [minutes]``; not run as a test
-(simulating the record takes a few minutes)."""
+"""Benchmark: a 20-minute warm-up record at 1 kHz (1 200 000 samples, viscous friction halving every
+20 K as the axis warms from 20 to 40 degC) and a 30 s validation run that starts warm, simulated by
+the tests' own cascade (tests/identify/sim_cascade.py, physics written apart from the fitted
+model).  Budget: 60 s of CPU on 2 cores for reading and diagnosing (the record is fitted in windows,
+:func:`axisopt.identify.records.signal.windowed`).
+Prints the CPU time, the verdict and beta.  ``python bench/bench_long_record.py [minutes]``; not run
+as a test (simulating the record takes a few minutes)."""
 
 import argparse
 import sys
@@ -35,12 +36,12 @@ def main(minutes: float = 20.0) -> None:
         diag = diagnose_time_files([est, val], plant=plant)
         cpu, wall = time.process_time() - c0, time.perf_counter() - t0
     print(
-        f"{dur:.0f} s record at 1 kHz: {cpu:.1f} s CPU ({wall:.1f} s wall), budget {BUDGET:g} s CPU "
-        f"({cpu / BUDGET:.2f}x)"
+        f"{dur:.0f} s record at 1 kHz: {cpu:.1f} s CPU ({wall:.1f} s wall), budget {BUDGET:g} s "
+        f"CPU ({cpu / BUDGET:.2f}x)"
     )
     print(
-        f"verdict {diag.verdict}; beta {diag.final.shape.get('beta', float('nan')):.4g} /K (true 0.035); "
-        f"{diag.estimation.record.run_note()}"
+        f"verdict {diag.verdict}; beta {diag.final.shape.get('beta', float('nan')):.4g} /K (true "
+        f"0.035); {diag.estimation.record.run_note()}"
     )
 
 

@@ -1,6 +1,7 @@
-"""Benchmark of the machine search (not a test): every shipped machine solved jointly with the full shipped
-catalogs; prints the nominal joint combinations (the product of every axis's catalog combinations), the axis
-solves, wall and CPU time, the joint optimum and the sequential sizing beside it.
+"""Benchmark of the machine search (not a test): every shipped machine solved jointly with the full
+shipped catalogs; prints the nominal joint combinations (the product of every axis's catalog
+combinations), the axis solves, wall and CPU time, the joint optimum and the sequential sizing
+beside it.
 
     python bench/bench_machine.py [--only vmc gantry ...]
 """
@@ -46,8 +47,8 @@ def main(argv=None) -> int:
         else:
             gained = "the same" if abs(res.gain) < 1e-6 else f"{abs(res.gain):,.1f}"
         print(
-            f"{kind:<15} {res.nominal_combinations:>9.2e} {res.axis_solves:>6} {wall:>7.1f} {cpu:>6.1f}  "
-            f"{joint:>14}  {seqs:>14}  {gained}   ({m.objective})"
+            f"{kind:<15} {res.nominal_combinations:>9.2e} {res.axis_solves:>6} {wall:>7.1f} "
+            f"{cpu:>6.1f}  {joint:>14}  {seqs:>14}  {gained}   ({m.objective})"
         )
     return 0
 

@@ -1,11 +1,12 @@
 """Scaling benchmark of the default search (not a test): synthetic multi-vendor catalogs
-(bench/synthetic_catalogs.py) at 10^6, 10^7 and 10^8 combinations, motors, couplings and reductions included, each size
-solved in a fresh process so that its peak memory is its own.  Prints one row per size: combinations,
-solve time, peak memory (max RSS), pruning by kind (combinations never formed because their drive pair is
-left out, pruned by their block's bound, screened one by one, pruned by bound after screening), exact 1-D
-solves, feasible among the screened, and the objective;
-`--exhaustive-check` also runs --method exhaustive on the smallest size and prints the ratio; `--pareto SIZE`
-the 4-objective Pareto front (stiffness, frequency, cost, total mass) at one of the sizes.
+(bench/synthetic_catalogs.py) at 10^6, 10^7 and 10^8 combinations, motors, couplings and reductions
+included, each size solved in a fresh process so that its peak memory is its own.  Prints one row
+per size: combinations, solve time, peak memory (max RSS), pruning by kind (combinations never
+formed because their drive pair is left out, pruned by their block's bound, screened one by one,
+pruned by bound after screening), exact 1-D solves, feasible among the screened, and the objective;
+`--exhaustive-check` also runs --method exhaustive on the smallest size and prints the ratio;
+`--pareto SIZE` the 4-objective Pareto front (stiffness, frequency, cost, total mass) at one of the
+sizes.
 
     python bench/bench_scale.py [--sizes 1e6 1e7 1e8] [--exhaustive-check] [--pareto 1e7]
 """
@@ -26,8 +27,7 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "bench"))
 
 # (screws, nuts per screw, bearings, guides, motors, couplings, reductions): about nuts x bearings x
-# guides x
-# drives (motor, coupling, reduction or none; issue 39: reductions in every size)
+# guides x drives (motor, coupling, reduction or none; issue 39: reductions in every size)
 SHAPES = {
     1e6: (10, 5, 50, 40, 6, 3, 2),
     1e7: (20, 5, 100, 35, 5, 2, 3),
@@ -35,8 +35,8 @@ SHAPES = {
     1e9: (60, 6, 300, 45, 12, 6, 6),
 }
 # a reduction's backlash is lost motion at the table (jt P_h / 2 pi): 5 um admits the synthetic
-# planetaries
-# (3 arcmin) and belts (5 arcmin) on leads up to 36 mm and 21 mm, and still no nut with play (20 um)
+# planetaries (3 arcmin) and belts (5 arcmin) on leads up to 36 mm and 21 mm, and still no nut with
+# play (20 um)
 MAX_BACKLASH = 5e-6
 
 
@@ -152,15 +152,15 @@ def main(argv=None):
     if args.pareto:
         runs.append((args.pareto, "pareto"))
     # pruning by kind: pairs never formed (dominated coupling, coupling too weak for the motor),
-    # blocks pruned
-    # by their bound, combinations screened one by one, survivors pruned by bound, exact 1-D solves
-    # every column is at least one space wider than its widest number (11-digit counts with commas),
-    # so that
-    # two numbers never run together (an exhaustive row's "0" and "1,600,000" printed as
-    # "01,600,000")
+    # blocks pruned by their bound, combinations screened one by one, survivors pruned by bound,
+    # exact 1-D solves every column is at least one space wider than its widest number (11-digit
+    # counts with commas), so that two numbers never run together (an exhaustive row's "0" and
+    # "1,600,000" printed as "01,600,000")
     print(
-        f"{'combinations':>15} {'method':>11} {'time s':>8} {'CPU s':>8} {'peak MB':>8} {'never formed':>14}"
-        f" {'by block':>14} {'screened':>14} {'by bound':>14} {'exact':>14} {'feasible':>14}  objective"
+        f"{'combinations':>15} {'method':>11} {'time s':>8} {'CPU s':>8} {'peak MB':>8} "
+        f"{'never formed':>14}"
+        f" {'by block':>14} {'screened':>14} {'by bound':>14} {'exact':>14} {'feasible':>14}  "
+        "objective"
     )
     rows = []
     for size, method in runs:
@@ -173,9 +173,11 @@ def main(argv=None):
         r = json.loads(out.stdout.strip().splitlines()[-1])
         rows.append(r)
         print(
-            f"{r['combinations']:>15,} {method:>11} {r['time_s']:>8.2f} {r.get('cpu_s', math.nan):>8.2f}"
+            f"{r['combinations']:>15,} {method:>11} {r['time_s']:>8.2f} "
+            f"{r.get('cpu_s', math.nan):>8.2f}"
             f" {r['peak_MB']:>8.0f}"
-            f" {r['never_formed']:>14,} {r['by_block']:>14,} {r['screened']:>14,} {r['pruned']:>14,}"
+            f" {r['never_formed']:>14,} {r['by_block']:>14,} {r['screened']:>14,} "
+            f"{r['pruned']:>14,}"
             f" {r['exact']:>14,} {(r['feasible'] or 0):>14,}  "
             f"{r['status']}" + ("" if method == "pareto" else f" {r['objective']:.4f} {r['unit']}")
         )
@@ -184,8 +186,8 @@ def main(argv=None):
         d = next(r for r in rows if r["method"] == "default" and r["size"] == ex[0]["size"])
         same = math.isclose(d["objective"], ex[0]["objective"], rel_tol=1e-6)
         print(
-            f"exhaustive / default time at {d['combinations']:,}: {ex[0]['time_s'] / d['time_s']:.0f}x; "
-            f"same optimum: {same}"
+            f"exhaustive / default time at {d['combinations']:,}: "
+            f"{ex[0]['time_s'] / d['time_s']:.0f}x; same optimum: {same}"
         )
     return 0
 

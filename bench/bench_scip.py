@@ -2,8 +2,9 @@
 
     python bench/bench_scip.py [--time-limit S] [--max-combinations N]
 
-Prints, per problem: the default method's time and objective, SCIP's time, status, objective, node count and
-the ratio of SCIP's time to the default's (both measured here, in this process).  Needs pyscipopt."""
+Prints, per problem: the default method's time and objective, SCIP's time, status, objective, node
+count and the ratio of SCIP's time to the default's (both measured here, in this process).  Needs
+pyscipopt."""
 
 from __future__ import annotations
 
@@ -41,7 +42,8 @@ def main(argv=None) -> int:
         td = time.perf_counter() - t
         if size > args.max_combinations:
             print(
-                f"{name:<22}{size:>13,}{td:>11.2f}{d.objective:>13.4g}  scip skipped (> --max-combinations)"
+                f"{name:<22}{size:>13,}{td:>11.2f}{d.objective:>13.4g}  scip skipped (> "
+                "--max-combinations)"
             )
             continue
         t = time.perf_counter()
@@ -49,7 +51,8 @@ def main(argv=None) -> int:
         ts = time.perf_counter() - t
         nodes = s.certificate.notes[0].split("; ")[-1].split()[0] if s.certificate.notes else "-"
         print(
-            f"{name:<22}{size:>13,}{td:>11.2f}{d.objective:>13.4g}{ts:>9.1f}{s.status:>12}{s.objective:>12.4g}"
+            f"{name:<22}{size:>13,}{td:>11.2f}{d.objective:>13.4g}{ts:>9.1f}{s.status:>12}"
+            f"{s.objective:>12.4g}"
             f"{nodes:>9}{ts / td:>14.0f}",
             flush=True,
         )

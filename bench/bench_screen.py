@@ -1,11 +1,12 @@
 """Screening throughput of the default search (a benchmark, not a test).
 
-Times :func:`axisopt.search.screen.screen` (every nut of every mounting, each covering all its bearings, guides
-and drives) on the shipped problems and on the synthetic catalogs of bench/bench_scale.py, and prints the
-designs screened per second: the combinations the screened nuts cover / seconds.  Each timing is the best of
-``--repeat`` runs (the machine may be shared).  ``--check FILE`` saves (or, when FILE exists, compares) the
-survivors and bounds, so that a faster screening can be shown to keep the same survivors (and bounds within
-float32 rounding, far inside the screening's slack SCREEN_RTOL).
+Times :func:`axisopt.search.screen.screen` (every nut of every mounting, each covering all its
+bearings, guides and drives) on the shipped problems and on the synthetic catalogs of
+bench/bench_scale.py, and prints the designs screened per second: the combinations the screened nuts
+cover / seconds.  Each timing is the best of ``--repeat`` runs (the machine may be shared).
+``--check FILE`` saves (or, when FILE exists, compares) the survivors and bounds, so that a faster
+screening can be shown to keep the same survivors (and bounds within float32 rounding, far inside
+the screening's slack SCREEN_RTOL).
 
     python bench/bench_screen.py [--repeat 5] [--synthetic 1e6 1e7] [--check /tmp/screen.npz]
 """
@@ -77,7 +78,8 @@ def main(argv=None):
             else:
                 same = f"  DIFFERENT survivors: {len(si)} -> {len(idx)}"
         print(
-            f"{name:>20}{sp.size:>15,}{len(idx):>12,}{best:>9.3f}{sp.size / best / 1e6:>13.1f}{same}"
+            f"{name:>20}{sp.size:>15,}{len(idx):>12,}{best:>9.3f}{sp.size / best / 1e6:>13.1f}"
+            f"{same}"
         )
     if args.check and saved is None:
         np.savez(args.check, **new)

@@ -2,12 +2,12 @@
 problem and on a synthetic catalog of >= 1 000 000 combinations; screening throughput; Pareto front.
 
 Every shipped problem searches the drive too: ``drives`` is the number of (motor, coupling) pairs
-each mechanical combination is multiplied by (pairs whose coupling cannot carry the motor's peak torque
-are never formed); ``combos`` counts them in.  The synthetic row searches the mechanics only.
+each mechanical combination is multiplied by (pairs whose coupling cannot carry the motor's peak
+torque are never formed); ``combos`` counts them in.  The synthetic row searches the mechanics only.
 
     python bench/bench_search.py [--bonmin-time 100] [--skip-bonmin] [--skip-exhaustive-large] [--skip-exhaustive]
                                 [--only NAME ...]
-"""
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -40,8 +40,8 @@ from axisopt.search.task.objective import objective_spec  # noqa: E402
 def synthetic_catalog(
     seed=0, n_screws=20, nuts_per_screw=5, n_bearings=100, n_guides=100
 ) -> Catalog:
-    """A large synthetic catalog (plausible SI values; 20*5 nuts x 100 x 100 = 1e6 combinations): the search
-    tests' builder (tests/search/search_synthetic.py) with the bench's ranges."""
+    """A large synthetic catalog (plausible SI values; 20*5 nuts x 100 x 100 = 1e6 combinations):
+    the search tests' builder (tests/search/search_synthetic.py) with the bench's ranges."""
     return make_catalog(
         np.random.default_rng(seed), n_screws, nuts_per_screw, n_bearings, n_guides, ranges=BENCH
     )
@@ -143,13 +143,16 @@ def main(argv=None):
         return f"{r.objective:.4g}" if r.best is not None else r.status
 
     print(
-        f"{'problem':<22}{'combos':>12}{'drives':>7}{'default s':>10}{'exhaust s':>10}{'bonmin s':>10}{'ex/def':>8}"
-        f"{'bon/def':>8}  {'obj default':>12}{'obj exhaust':>12}{'obj bonmin':>12}  {'bonmin status':<22}"
+        f"{'problem':<22}{'combos':>12}{'drives':>7}{'default s':>10}{'exhaust s':>10}"
+        f"{'bonmin s':>10}{'ex/def':>8}"
+        f"{'bon/def':>8}  {'obj default':>12}{'obj exhaust':>12}{'obj bonmin':>12}  "
+        f"{'bonmin status':<22}"
         f"{'screen M/s':>10}"
     )
     for name, n, nd, td, te, tb, d, e, b, rate in rows:
         print(
-            f"{name:<22}{n:>12,}{nd:>7}{td:>10.3f}{te:>10.2f}{tb:>10.1f}{te / td:>8.0f}{tb / td:>8.0f}  {obj(d):>12}"
+            f"{name:<22}{n:>12,}{nd:>7}{td:>10.3f}{te:>10.2f}{tb:>10.1f}{te / td:>8.0f}"
+            f"{tb / td:>8.0f}  {obj(d):>12}"
             f"{obj(e):>12} {obj(b):>14}  {(b.status if b else '-'):<22}{rate / 1e6:>10.1f}"
         )
 
@@ -159,8 +162,9 @@ def main(argv=None):
     )
     r, t = timed(lambda: solve(pp, "default"))
     print(
-        f"\nPareto (stiffness, frequency, cost, total_mass) over {build_space(pp).size:,} combinations: "
-        f"{len(r.pareto.points)} points of {r.pareto.feasible:,} feasible in {t:.2f} s"
+        f"\nPareto (stiffness, frequency, cost, total_mass) over {build_space(pp).size:,} "
+        f"combinations: {len(r.pareto.points)} points of {r.pareto.feasible:,} feasible in {t:.2f} "
+        "s"
     )
 
 

@@ -4,14 +4,16 @@
 
 Runs the cases of the study three ways and prints wall-clock times and ratios:
 
-1. a plain loop in this process: build each case's problem and ``solve`` it (no files, no pool), with the
-   median, mean and slowest solve time (wall and CPU) of the feasible and of the infeasible cases (explanation
-   included) and the ratio of the medians; CPU time is less affected by other processes on a loaded machine;
+1. a plain loop in this process: build each case's problem and ``solve`` it (no files, no pool),
+   with the median, mean and slowest solve time (wall and CPU) of the feasible and of the infeasible
+   cases (explanation included) and the ratio of the medians; CPU time is less affected by other
+   processes on a loaded machine;
 2. ``run_study`` with 1 worker process (case files, table, plots and report included);
 3. ``run_study`` with 2 worker processes.
 
-Targets (issues 5, 29): 1000 cases in <= 60 s on 2 cores; infeasible / feasible median <= 2; study overhead
-<= 10 % over the plain loop (1 worker against the loop); >= 1.7x faster with 2 workers than with 1.
+Targets (issues 5, 29): 1000 cases in <= 60 s on 2 cores; infeasible / feasible median <= 2; study
+overhead <= 10 % over the plain loop (1 worker against the loop); >= 1.7x faster with 2 workers than
+with 1.
 """
 
 from __future__ import annotations
@@ -32,8 +34,8 @@ from axisopt.study import build_problem, load_study, run_study  # noqa: E402
 
 
 def plain_loop(study) -> tuple[float, dict]:
-    """Total time and each case's (wall, CPU) solve time by outcome ('feasible': a design; 'infeasible':
-    explained)."""
+    """Total time and each case's (wall, CPU) solve time by outcome ('feasible': a design;
+    'infeasible': explained)."""
     ctx = study.context()
     per = {"feasible": [], "infeasible": []}
     t0 = time.perf_counter()
@@ -51,8 +53,8 @@ def plain_loop(study) -> tuple[float, dict]:
 
 
 def print_medians(per: dict) -> None:
-    """Median, mean and slowest solve time (wall and CPU) of feasible and of infeasible cases (the latter
-    include the explanation), and the ratio of the medians."""
+    """Median, mean and slowest solve time (wall and CPU) of feasible and of infeasible cases (the
+    latter include the explanation), and the ratio of the medians."""
     med = {}
     for k in ("feasible", "infeasible"):
         wall = [w for w, _ in per[k]] or [float("nan")]
@@ -61,7 +63,8 @@ def print_medians(per: dict) -> None:
         print(
             f"  {k + ' cases':<18}{len(per[k]):>5}   median {1e3 * med[k][0]:7.1f} ms wall "
             f"{1e3 * med[k][1]:7.1f} ms CPU   mean {1e3 * statistics.fmean(wall):7.1f} ms wall "
-            f"{1e3 * statistics.fmean(cpu):7.1f} ms CPU   slowest {max(wall):6.2f} s   total {sum(wall):6.1f} s"
+            f"{1e3 * statistics.fmean(cpu):7.1f} ms CPU   slowest {max(wall):6.2f} s   total "
+            f"{sum(wall):6.1f} s"
         )
     print(
         f"  infeasible / feasible median: {med['infeasible'][0] / med['feasible'][0]:.2f} wall, "
@@ -100,14 +103,15 @@ def main(argv=None) -> int:
             return 0
     t1, s1 = timed_study(study, 1)
     print(
-        f"study, 1 worker process       {t1:7.1f} s   {1e3 * t1 / n:6.1f} ms/case   ({s1.failed} failed cases)"
+        f"study, 1 worker process       {t1:7.1f} s   {1e3 * t1 / n:6.1f} ms/case   ({s1.failed} "
+        "failed cases)"
     )
     t2, s2 = timed_study(study, 2)
     print(f"study, 2 worker processes     {t2:7.1f} s   {1e3 * t2 / n:6.1f} ms/case")
     if t_loop:
         print(
-            f"overhead of the study over the plain loop (1 worker): {100 * (t1 / t_loop - 1):+.1f} %  "
-            f"(target <= +10 %)"
+            f"overhead of the study over the plain loop (1 worker): {100 * (t1 / t_loop - 1):+.1f} "
+            "%  (target <= +10 %)"
         )
     print(f"speed-up 2 workers / 1 worker: {t1 / t2:.2f}x  (target >= 1.7x)")
     print(

@@ -1,27 +1,29 @@
 """Synthetic multi-vendor catalogs for the scaling benchmark (not shipped parts, not used by tests).
 
-Rows look like real catalogs: a part's properties follow its size with the correlations vendors' tables
-show, plus a vendor factor and scatter.  Anchors (checked against the shipped catalogs, catalogs/*.csv):
+Rows look like real catalogs: a part's properties follow its size with the correlations vendors'
+tables show, plus a vendor factor and scatter.  Anchors (checked against the shipped catalogs,
+catalogs/*.csv):
 
 * screws: nominal diameter 16-63 mm, root diameter ~ d - 1.1 ball, mass 7850 pi d_r^2/4 kg/m, price
   ~ 4 EUR/mm of diameter per metre;
-* nuts: stiffness ~ 20-30 N/um per mm of diameter (HIWIN double nuts: 40x10 ~ 1 000 N/um), dynamic load
-  rating ~ 0.9 kN per mm of diameter times sqrt(ball/4 mm) (HIWIN R40-10: 51 kN), double nuts preloaded to
-  8-10 % of C;
-* bearing sets: rigidity ~ 30-50 N/um per mm of bore (NSK TAC DF: 25 mm ~ 1 000 N/um), rating ~ 1.1 kN per mm
-  of bore;
-* guide blocks: rigidity ~ 15-25 N/um per mm of size (HIWIN HG35 ZA about 700 N/um), rating ~ 1.8 kN per mm
-  of size, block mass ~ size^3;
-* motors: rotor inertia ~ rated torque^1.5 (Yaskawa SGM7G: 8.3 N.m, 14 kg.cm^2), peak ~ 3 x rated, price
-  ~ 150 EUR per N.m;
-* couplings: rated torque 10-300 N.m, torsional stiffness ~ 1 000 x torque N.m/rad, inertia ~ torque^1.3;
-* reductions: planetary (i = 3-10, T2N 40-2000 N.m, T2B ~ 2.3 x T2N, Ct21 ~ 0.5 x T2N N.m/arcmin, J1 ~ 0.03 x
-  T2N^0.8 kg.cm^2, jt 3 arcmin: the Beckhoff AG2400/AG3400 rows of catalogs/reductions.csv) and belt stages
-  (i = 1.5-3; no vendor stage data: illustrative).
+* nuts: stiffness ~ 20-30 N/um per mm of diameter (HIWIN double nuts: 40x10 ~ 1 000 N/um), dynamic
+  load rating ~ 0.9 kN per mm of diameter times sqrt(ball/4 mm) (HIWIN R40-10: 51 kN), double nuts
+  preloaded to 8-10 % of C;
+* bearing sets: rigidity ~ 30-50 N/um per mm of bore (NSK TAC DF: 25 mm ~ 1 000 N/um), rating ~ 1.1
+  kN per mm of bore;
+* guide blocks: rigidity ~ 15-25 N/um per mm of size (HIWIN HG35 ZA about 700 N/um), rating ~ 1.8 kN
+  per mm of size, block mass ~ size^3;
+* motors: rotor inertia ~ rated torque^1.5 (Yaskawa SGM7G: 8.3 N.m, 14 kg.cm^2), peak ~ 3 x rated,
+  price ~ 150 EUR per N.m;
+* couplings: rated torque 10-300 N.m, torsional stiffness ~ 1 000 x torque N.m/rad, inertia ~
+  torque^1.3;
+* reductions: planetary (i = 3-10, T2N 40-2000 N.m, T2B ~ 2.3 x T2N, Ct21 ~ 0.5 x T2N N.m/arcmin, J1
+  ~ 0.03 x T2N^0.8 kg.cm^2, jt 3 arcmin: the Beckhoff AG2400/AG3400 rows of catalogs/reductions.csv)
+  and belt stages (i = 1.5-3; no vendor stage data: illustrative).
 
-``catalog(n_screws, nuts_per_screw, n_bearings, n_guides, n_motors, n_couplings, seed, n_reductions)`` returns a
-:class:`axisopt.catalog.loading.Catalog`; the combination count of a problem over it is about
-nuts x bearings x guides x (motor, coupling, reduction or none) drives.
+``catalog(n_screws, nuts_per_screw, n_bearings, n_guides, n_motors, n_couplings, seed,
+n_reductions)`` returns a :class:`axisopt.catalog.loading.Catalog`; the combination count of a
+problem over it is about nuts x bearings x guides x (motor, coupling, reduction or none) drives.
 """
 
 from __future__ import annotations
@@ -54,10 +56,10 @@ def catalog(
     n_reductions=0,
     rotating_share=0.0,
 ) -> Catalog:
-    """``rotating_share``: the share of nuts made driven rotating-nut units (THK DIR-like: the unit's inertia
-    about J = 1.5e-5 kg.cm^2 x (d/mm)^3.8, a fit of THK DIR B-721, its bearing's Ca 0.5-0.7 x the nut's; max
-    speed, bearing rigidity and drag left to the model's estimates), drawn from a generator of their own so the
-    other rows stay as they are."""
+    """``rotating_share``: the share of nuts made driven rotating-nut units (THK DIR-like: the
+    unit's inertia about J = 1.5e-5 kg.cm^2 x (d/mm)^3.8, a fit of THK DIR B-721, its bearing's Ca
+    0.5-0.7 x the nut's; max speed, bearing rigidity and drag left to the model's estimates), drawn
+    from a generator of their own so the other rows stay as they are."""
     rng = np.random.default_rng(seed)
     # the other draws keep their order
     reductions = _reductions(n_reductions, np.random.default_rng(1000 + seed))

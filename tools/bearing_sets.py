@@ -2,12 +2,12 @@
 
     python tools/bearing_sets.py [--check]
 
-From each NSK TAC B DF pair row (NSK-SP p. 168: preload, rigidity, starting torque; pp. 110-111: ratings) the
-DFT set of the same bearings: its dynamic rating and limiting axial load are NSK's printed three-row values
-(pp. 110-111, "3 rows loaded: DTD, DFT, DBT"), its preload, rigidity, lift-off loads and starting torque follow
-from the pair's by Hertz's contact law (axisopt.physics.bearingsets, which reproduces IBC TI-I-5010.2/E Table 2.2
-and NSK's printed triplex and quadruplex ratios).  ``--check`` exits 1 when the catalog lacks a row or holds
-another value.
+From each NSK TAC B DF pair row (NSK-SP p. 168: preload, rigidity, starting torque; pp. 110-111:
+ratings) the DFT set of the same bearings: its dynamic rating and limiting axial load are NSK's
+printed three-row values (pp. 110-111, "3 rows loaded: DTD, DFT, DBT"), its preload, rigidity,
+lift-off loads and starting torque follow from the pair's by Hertz's contact law
+(axisopt.physics.bearingsets, which reproduces IBC TI-I-5010.2/E Table 2.2 and NSK's printed triplex
+and quadruplex ratios).  ``--check`` exits 1 when the catalog lacks a row or holds another value.
 """
 
 from __future__ import annotations
@@ -56,8 +56,7 @@ def dft_rows(rows: list[dict]) -> list[dict]:
     for r in rows:
         name = r["id"].removeprefix("NSK-").split("-")[0]
         # the standard preload (C10) only: a 3-against-1 set is there to carry a pretension or one
-        # heavy
-        # direction, which the light preload's lift-off load gives away
+        # heavy direction, which the light preload's lift-off load gives away
         if not (
             r["id"].startswith("NSK-")
             and r["arrangement"] == "DF"

@@ -2,17 +2,19 @@
 
     python tools/belt_stages.py [--check]
 
-Each stage is an ELATECH ATL5 (type M, steel cords) belt on two AT5 pulleys with BRECOflex's zero tooth gap
-("0" pulleys, no play between belt and pulley), ``z1`` teeth on the motor, ``i z1`` on the screw, centre
-distance the sum of the pitch diameters (rounded to the belt's whole teeth).  Its ratings and stiffness follow
-from the vendor's belt data through axisopt.physics.belt (catalogs/SOURCES.md, "Timing-belt stages"):
+Each stage is an ELATECH ATL5 (type M, steel cords) belt on two AT5 pulleys with BRECOflex's zero
+tooth gap ("0" pulleys, no play between belt and pulley), ``z1`` teeth on the motor, ``i z1`` on the
+screw, centre distance the sum of the pitch diameters (rounded to the belt's whole teeth).  Its
+ratings and stiffness follow from the vendor's belt data through axisopt.physics.belt
+(catalogs/SOURCES.md, "Timing-belt stages"):
 
-* rated and acceleration torque at the output: the permissible effective pull at the stage's top input speed
-  (tooth shear FUspez z_e b with z_e whole teeth in mesh, at most 12; the cords' F_Tzul with the pretension
-  F_TV = F_U) times the output pulley's pitch radius;
+* rated and acceleration torque at the output: the permissible effective pull at the stage's top
+  input speed (tooth shear FUspez z_e b with z_e whole teeth in mesh, at most 12; the cords' F_Tzul
+  with the pretension F_TV = F_U) times the output pulley's pitch radius;
 * torsional stiffness: both spans (Cspez / span) on the output pulley;
-* inertia at the input: both pulleys as steel discs of tip diameter and width b + 10 mm (an estimate: no
-  vendor inertia table), the output one through i^2, and the belt's mass at the pitch line.
+* inertia at the input: both pulleys as steel discs of tip diameter and width b + 10 mm
+  (an estimate: no vendor inertia table), the output one through i^2, and the belt's mass at the
+  pitch line.
 
 ``--check`` exits 1 when the catalog lacks a row or holds another value.
 """
@@ -44,15 +46,16 @@ ATL5 = {
     75: (7590, 1897500, 0.29),
     100: (10120, 2530000, 0.38),
 }
-# 50 and 100 mm wide, 1.5:1 to 3:1 (a 1:1 stage is a direct drive with more inertia and less
-# stiffness: the
-# search would never choose it; folding the motor beside the screw is no value the model weighs)
+# 50 and 100 mm wide, 1.5:1 to 3:1 (a 1:1 stage is a direct drive with more inertia and
+# less stiffness: the search would never choose it; folding the motor beside the screw is no value
+# the model weighs)
 STAGES = [(w, z1, i) for w in (50, 100) for z1 in (32,) for i in (1.5, 2.0, 3.0)]
 EFFICIENCY = 98  # [%] an estimate (Siegling ref. 202: synchronous belt drives up to 98 %)
 SOURCE = (
-    "ELATECH PU belts cat. p. 20 (ATL5: FTzul, Cspez, weight, FUspez at 3000 rpm), 52-54 (F_U = FUspez "
-    "z_e b, z_e <= 12); BRECOflex zero-gap AT5 pulleys (backlash); torque by the vendor's rule; stiffness "
-    "and inertia derived (physics.belt, steel pulleys); efficiency estimate; price illustrative"
+    "ELATECH PU belts cat. p. 20 (ATL5: FTzul, Cspez, weight, FUspez at 3000 rpm), 52-54 (F_U = "
+    "FUspez z_e b, z_e <= 12); BRECOflex zero-gap AT5 pulleys (backlash); torque by the vendor's "
+    "rule; stiffness and inertia derived (physics.belt, steel pulleys); efficiency estimate; price "
+    "illustrative"
 )
 
 
@@ -83,7 +86,8 @@ def stage(width_mm: int, z1: int, ratio: float) -> dict:
     return {
         "id": f"ELATECH-ATL5-{width_mm}-{z1}x{z2}",
         "vendor": "ELATECH",
-        "series": f"ATL5 belt stage on AT5 zero-gap pulleys (belt {teeth} teeth; centre {centre * 1e3:.1f} mm)",
+        "series": f"ATL5 belt stage on AT5 zero-gap pulleys (belt {teeth} teeth; centre "
+        f"{centre * 1e3:.1f} mm)",
         "kind": "belt",
         "ratio [-]": _fmt(z2 / z1),
         "efficiency [%]": str(EFFICIENCY),

@@ -4,10 +4,10 @@
     python tools/gen_docs.py --check  # exit 1 if a committed page differs from what the code gives
 
 docs/reference/yaml.md comes from the readers' key tables (``yamlio.Spec``/``Key``: DESIGN_SPEC,
-PROBLEM_SPEC, STUDY_SPEC, CALIBRATION_SPEC, the same tables ``axisopt schema`` writes out), the problem
-limits and vendor checks (``model.limits``) and the catalog columns (``catalog.COLUMNS``);
-docs/reference/cli.md from the argparse parser of ``axisopt.cli``.  tests/docs/test_generated.py fails when
-a committed page is stale, so the reference cannot drift from the code.
+PROBLEM_SPEC, STUDY_SPEC, CALIBRATION_SPEC, the same tables ``axisopt schema`` writes out), the
+problem limits and vendor checks (``model.limits``) and the catalog columns (``catalog.COLUMNS``);
+docs/reference/cli.md from the argparse parser of ``axisopt.cli``.  tests/docs/test_generated.py
+fails when a committed page is stale, so the reference cannot drift from the code.
 """
 
 from __future__ import annotations
@@ -114,10 +114,14 @@ def yaml_reference() -> str:
         HEADER,
         "# YAML and catalog reference",
         "",
-        "Every key the readers accept, with the form of its value, its default and its meaning. A key not",
-        "listed is an error; every quantity carries its unit (any unit of the right dimension is accepted;",
-        "the example shows the one printed results use). `axisopt schema KIND` writes the same tables as a",
-        "JSON Schema for an editor. Worked files: [design and problem files](../files.md), `problems/`.",
+        "Every key the readers accept, with the form of its value, its default and its meaning. A "
+        "key not",
+        "listed is an error; every quantity carries its unit (any unit of the right dimension is "
+        "accepted;",
+        "the example shows the one printed results use). `axisopt schema KIND` writes the same "
+        "tables as a",
+        "JSON Schema for an editor. Worked files: [design and problem files](../files.md), "
+        "`problems/`.",
         "",
     ]
     seen: set = set()
@@ -138,8 +142,10 @@ def yaml_reference() -> str:
         "",
         "## Vendor checks (`limits.margins:`)",
         "",
-        "Each check is a margin available / needed, at least 1 by default (`limits.margins.<name>` sets",
-        "another least margin). A compatibility rule cannot be relaxed: an infeasible answer never proposes",
+        "Each check is a margin available / needed, at least 1 by default (`limits.margins.<name>` "
+        "sets",
+        "another least margin). A compatibility rule cannot be relaxed: an infeasible answer never "
+        "proposes",
         "it.",
         "",
         "| name | check | unit | relaxable |",
@@ -147,14 +153,17 @@ def yaml_reference() -> str:
     ]
     for c in CHECK_TABLE:
         out.append(
-            f"| `{c.name}` | {_cell(c.label)} | {c.unit} | {'yes' if c.relaxable else 'no (a rule)'} |"
+            f"| `{c.name}` | {_cell(c.label)} | {c.unit} | "
+            f"{'yes' if c.relaxable else 'no (a rule)'} |"
         )
     out += [
         "",
         "## Catalog columns",
         "",
-        "The CSV files of a catalog directory (`catalogs/*.csv`, or your own with `catalogs:`): the unit",
-        "is in the header, e.g. `stiffness [N/um]`. An optional column may be left empty; the model then",
+        "The CSV files of a catalog directory (`catalogs/*.csv`, or your own with `catalogs:`): "
+        "the unit",
+        "is in the header, e.g. `stiffness [N/um]`. An optional column may be left empty; the "
+        "model then",
         "uses the estimate named (and says so when it binds).",
         "",
     ]

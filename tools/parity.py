@@ -1,14 +1,15 @@
-"""Compare the shipped problems' and designs' JSON outputs of two commits (a refactor must not change them).
+"""Compare the shipped problems' and designs' JSON outputs of two commits (a refactor must not
+change them).
 
     python tools/parity.py REF [--against WORKTREE_OR_HEAD] [--keep DIR]
 
-Checks REF out in a temporary git worktree, runs ``axisopt solve --json`` for every ``problems/*problem*.yaml``
-``axisopt evaluate --json`` for every ``problems/*design*.yaml`` (and the paper designs) and ``axisopt diagnose
---json`` for every shipped data set (``problems/data``: the static table, the XJTU friction series, the time
-records as estimation and validation pairs) with each tree on ``PYTHONPATH``, drops the timing fields
-(``time_s``, ``*_time``, ``seconds``), and prints the keys that differ.  Exit 0 when every output is identical,
-1 otherwise.  ``--allow KEY`` ignores a top-level path prefix (e.g. a report section
-that the change is meant to add).
+Checks REF out in a temporary git worktree, runs ``axisopt solve --json`` for every
+``problems/*problem*.yaml`` ``axisopt evaluate --json`` for every ``problems/*design*.yaml`` (and
+the paper designs) and ``axisopt diagnose --json`` for every shipped data set (``problems/data``:
+the static table, the XJTU friction series, the time records as estimation and validation pairs)
+with each tree on ``PYTHONPATH``, drops the timing fields (``time_s``, ``*_time``, ``seconds``), and
+prints the keys that differ.  Exit 0 when every output is identical, 1 otherwise.  ``--allow KEY``
+ignores a top-level path prefix (e.g. a report section that the change is meant to add).
 """
 
 from __future__ import annotations
@@ -123,7 +124,8 @@ def main(argv=None) -> int:
                 b = _run(ROOT, cmd, name, tmp / "b")
                 diffs = [d for d in _diff(a, b) if not any(d[0].startswith(p) for p in args.allow)]
                 print(
-                    f"{cmd:8s} {_label(name):34s} {'same' if not diffs else f'{len(diffs)} differences'}"
+                    f"{cmd:8s} {_label(name):34s} "
+                    f"{'same' if not diffs else f'{len(diffs)} differences'}"
                 )
                 for path, x, y in diffs[:8]:
                     print(f"    {path}: {str(x)[:70]} -> {str(y)[:70]}")

@@ -1,16 +1,19 @@
-"""How a default solve walks the search package: the search functions in the order they are first entered.
+"""How a default solve walks the search package: the search functions in the order they are first
+entered.
 
     python tools/stretches.py [PROBLEM] [--list]
 
 Imports every module of ``axisopt.search``, then profiles ``axisopt.solve(PROBLEM)`` (default
-``problems/teaching_problem.yaml``) with ``sys.setprofile``, keeps the functions of ``axisopt.search`` in the order
-of their first call (comprehensions, lambdas and nested functions count as their caller), and counts the
-stretches: runs of consecutive first entries in one stage module.  A pipeline whose stages are modules reads as
-few stretches (entry -> parts -> bounds -> screen -> preload -> polish -> certificate); helpers scattered across
-modules read as many.
+``problems/teaching_problem.yaml``) with ``sys.setprofile``, keeps the functions of
+``axisopt.search`` in the order of their first call (comprehensions, lambdas and nested functions
+count as their caller), and counts the
+stretches: runs of consecutive first entries in one stage module.  A pipeline whose stages are
+modules reads as few stretches (entry -> parts -> bounds -> screen -> preload -> polish ->
+certificate); helpers scattered across modules read as many.
 
-The task's vocabulary (``axisopt.search.task``: the space, the constraints and the objective every stage reads)
-is not a stage: its first entries are listed, and counted, apart (``--all`` counts them as stretches too).
+The task's vocabulary (``axisopt.search.task``: the space, the constraints and the objective every
+stage reads) is not a stage: its first entries are listed, and counted, apart (``--all`` counts them
+as stretches too).
 """
 
 from __future__ import annotations

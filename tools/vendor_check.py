@@ -1,4 +1,5 @@
-r"""Independent check of an axis by the part vendors' own selection procedures (issue 38, done-when item 2).
+r"""Independent check of an axis by the part vendors' own selection procedures (issue 38, done-when
+item 2).
 
 Usage::
 
@@ -6,25 +7,27 @@ Usage::
     python tools/vendor_check.py problems/vmc_x_design.yaml          # checks a design as it is
     python tools/vendor_check.py P.yaml --json out.json              # the rows as JSON too
 
-Written apart from axisopt's physics on purpose: nothing here imports ``axisopt``.  axisopt is called only as
-a program (``python -m axisopt solve|evaluate ... --json``); the design's keys are read from its YAML, the
-chosen parts' rows straight from ``catalogs/*.csv`` (units from the headers), and every number is recomputed
-here by the vendor's printed procedure (the source of each is in its function's docstring and in the
-printed table).  For each check the table shows the vendor's value and limit, the vendor's margin with
-PASS/FAIL by the vendor's criterion, axisopt's margin and their ratio; ``AGREE`` where both use the same
-method and agree within :data:`TOLERANCE`, ``DIFF`` where they differ by more, ``CONV`` where the two use
-different conventions on purpose (the note says which; docs/validation.md lists them).
+Written apart from axisopt's physics on purpose: nothing here imports ``axisopt``.  axisopt is
+called only as a program (``python -m axisopt solve|evaluate ... --json``); the design's keys are
+read from its YAML, the chosen parts' rows straight from ``catalogs/*.csv`` (units from the
+headers), and every number is recomputed here by the vendor's printed procedure (the source of each
+is in its function's docstring and in the printed table).  For each check the table shows the
+vendor's value and limit, the vendor's margin with PASS/FAIL by the vendor's criterion, axisopt's
+margin and their ratio; ``AGREE`` where both use the same method and agree within :data:`TOLERANCE`,
+``DIFF`` where they differ by more, ``CONV`` where the two use different conventions on purpose (the
+note says which; docs/validation.md lists them).
 
 Vendor texts (git mirror ArtemFilin1990/Mar, see /work/research/38_conventions.md for the paths):
-T-GC THK General Catalog (ball screw A15, LM guide A1); H-BS HIWIN Ballscrews BS-08-2-EN-1704-K; H-LG HIWIN
-Linear Guideway G99TE20-1808; NSK-SP NSK super-precision bearings; IBC TI-I-5010.2/E; IKO CAT-1578E.
+T-GC THK General Catalog (ball screw A15, LM guide A1); H-BS HIWIN Ballscrews BS-08-2-EN-1704-K;
+H-LG HIWIN Linear Guideway G99TE20-1808; NSK-SP NSK super-precision bearings; IBC TI-I-5010.2/E; IKO
+CAT-1578E.
 
-Estimates of this checker (no vendor figure; printed in the notes): the screw axis at the rail mounting plane
-under the table centre (the block loads); the cross and normal cutting components scale with a phase's feed
-force; screw length for the inertia = bearing span (journals not known); trapezoidal moves (jerk ignored); with a
-gearbox, the feed thrust (axis.axial_load) and the mean thrust (axis.mean_axial_load) as steady output torques
-beside the cycle's (T2B, T2N rows).
-"""
+Estimates of this checker (no vendor figure; printed in the notes): the screw axis at the rail
+mounting plane under the table centre (the block loads); the cross and normal cutting components
+scale with a phase's feed force; screw length for the inertia = bearing span (journals not known);
+trapezoidal moves (jerk ignored); with a gearbox, the feed thrust (axis.axial_load) and the mean
+thrust (axis.mean_axial_load) as steady output torques beside the cycle's (T2B, T2N rows).
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -53,7 +56,8 @@ G = 9.80665
 
 
 def catalog_row(kind: str, part) -> dict:
-    """A part's row from catalogs/<kind>.csv in SI (units from the headers), or an inline mapping."""
+    """A part's row from catalogs/<kind>.csv in SI (units from the headers), or an inline
+    mapping."""
     # an inline part: vendor and series default to 'custom' (as axisopt reads it)
     if isinstance(part, dict):
         row = {
@@ -77,9 +81,10 @@ def catalog_row(kind: str, part) -> dict:
 # --- axisopt as a program
 # -------------------------------------------------------------------------------------
 def run_axisopt(path: Path, workdir: Path) -> tuple[Path | None, dict]:
-    """Solve a problem (saving its optimum as a design) or take a design; evaluate it.  Returns the design file
-    and the evaluate JSON; where the optimum is not a screw drive (a linear motor, a rack: --save-design then
-    writes the best screw drive, not the optimum), (None, the solve's JSON) for the drive checker."""
+    """Solve a problem (saving its optimum as a design) or take a design; evaluate it.  Returns the
+    design file and the evaluate JSON; where the optimum is not a screw drive (a linear motor,
+    a rack: --save-design then writes the best screw drive, not the optimum), (None, the solve's
+    JSON) for the drive checker."""
     text = path.read_text(encoding="utf-8")
     design = path
     cmd = [sys.executable, "-m", "axisopt"]
@@ -194,8 +199,7 @@ def read_axis(design: dict) -> Axis:
         housing_k=q("bearing_housing_stiffness"),
         bracket_k=q("nut_bracket_stiffness"),
         # the rise the pretension is designed for: axis.pretension_rise where given (the shaft's
-        # design rise),
-        # else axis.temperature_rise, else THK's 3 K
+        # design rise), else axis.temperature_rise, else THK's 3 K
         temp_rise=(
             q("pretension_rise")
             if "pretension_rise" in a
@@ -465,9 +469,8 @@ def check_design(design: dict, ev: dict) -> list[Row]:
             )
         )
     # the life's mean speed: the designer's stated one (the machine's hours include time off the
-    # cycle), else the
-    # cycle's (THK A-705: the phases' speeds and times), else half the rapid speed (docs/files.md's
-    # default)
+    # cycle), else the cycle's (THK A-705: the phases' speeds and times), else half the rapid speed
+    # (docs/files.md's default)
     use_cycle = cycle_given and not ax.mean_speed_given
     nm = vp.mean_speed_rpm(phases, lead) if use_cycle else ax.mean_speed * 60 / (lead * 1e-3)
     fw_nut, fw_src = vp.nut_load_factor(nut["vendor"], ax.v_max, ax.load_factor)
@@ -512,8 +515,8 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                 their_margin("unit_bearing_life"),
                 "",
                 "T-GC A-730: L = (Ca/(fw Fm))^3 x 10^6 rev, Ca of the DIR/BLR table (B-721)",
-                f"Ca {ca_u / 1e3:.1f} kN; {fw_src}; mean nut speed {nm:.0f} rpm; at axisopt's fw {fw_ax}: "
-                f"{u_ax:,.0f} h",
+                f"Ca {ca_u / 1e3:.1f} kN; {fw_src}; mean nut speed {nm:.0f} rpm; at axisopt's fw "
+                f"{fw_ax}: {u_ax:,.0f} h",
                 same_basis=u_ax,
             )
         )
@@ -522,10 +525,10 @@ def check_design(design: dict, ev: dict) -> list[Row]:
     blife, src, bnote = vp.bearing_life_h(brg, phases, pre_vendor, nm)
     b_ax = vp.bearing_life_h(brg, phases, pre_vendor, nm, fw_ax)[0]
     bnote += f"; with axisopt's fw {fw_ax} on the loads: {b_ax:,.0f} h"
-    # each set by its own maker's rule (issue 53): NSK rates its TAC B sets by the rows loaded with the
-    # groups' Hertz split (NSK-SP pp. 110-111); HIWIN WBK, THK BK and Schaeffler ZKLF print one set
-    # rating and state no set rule: IBC TI-I-5010.2's per-bearing reading.  The other reading of an
-    # NSK set is shown, not judged.  A standing screw's end bearings do not turn: no rolling life
+    # each set by its own maker's rule (issue 53): NSK rates its TAC B sets by the rows loaded with
+    # the groups' Hertz split (NSK-SP pp. 110-111); HIWIN WBK, THK BK and Schaeffler ZKLF print one
+    # set rating and state no set rule: IBC TI-I-5010.2's per-bearing reading.  The other reading of
+    # an NSK set is shown, not judged.  A standing screw's end bearings do not turn: no rolling life
     # (T-GC A-772..A-774).
     nsk = str(brg.get("vendor")) == "NSK"
     if not rotating and nsk:
@@ -604,7 +607,10 @@ def check_design(design: dict, ev: dict) -> list[Row]:
             perm = strong
         else:
             load_b = f_max
-        how = "the stronger rows against max axial force + pretension, the weaker against the force alone"
+        how = (
+            "the stronger rows against max axial force + pretension, the weaker against the force "
+            "alone"
+        )
     # generic: a plain C0a without its vendor's factor, where each side picks a general S0
     rows.append(
         Row(
@@ -619,16 +625,17 @@ def check_design(design: dict, ev: dict) -> list[Row]:
             src,
             how
             + (
-                "; convention: no vendor factor for this rating: this checker IBC's S0 2.5, axisopt "
-                "Rexroth's S0 4 for machine tools"
+                "; convention: no vendor factor for this rating: this checker IBC's S0 2.5, "
+                "axisopt Rexroth's S0 4 for machine tools"
                 if generic
                 else ""
             ),
         )
     )
-    # the lead band over the thread the nut travels (issue 53): JIS B 1192 / THK A-678 Table 1's e_p + v_u
-    # of the band holding stroke + nut length (ISO 3408-3's useful travel), the nut's length from its
-    # vendor's table (nuts.csv `length`); read here from catalogs/lead_tolerances.csv
+    # the lead band over the thread the nut travels (issue 53): JIS B 1192 / THK A-678 Table 1's
+    # e_p + v_u of the band holding stroke + nut length (ISO 3408-3's useful travel), the nut's
+    # length from its vendor's table (nuts.csv `length`); read here from
+    # catalogs/lead_tolerances.csv
     budget = ev.get("positioning_budget") or {}
     lead_ax = next(
         (v for k, v in budget.get("rows_um", {}).items() if k.startswith("lead error")), None
@@ -649,9 +656,11 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                     lead_ax,
                     None,
                     "",
-                    "T-GC A-678 Table 1 (JIS B 1192): e_p + v_u of the band of the travelled thread",
+                    "T-GC A-678 Table 1 (JIS B 1192): e_p + v_u of the band of the travelled "
+                    "thread",
                     f"grade {budget.get('grade', 'C5')}, {ax.stroke * 1e3:.0f} mm stroke + "
-                    f"{nut['length'] * 1e3:.0f} mm nut (its vendor's table) = {travel * 1e3:.0f} mm",
+                    f"{nut['length'] * 1e3:.0f} mm nut (its vendor's table) = {travel * 1e3:.0f} "
+                    "mm",
                 )
             )
     # 6 guides: static safety and travel life at the vendor's rating distance
@@ -774,7 +783,8 @@ def check_design(design: dict, ev: dict) -> list[Row]:
                 None,
                 "INFO",
                 "AISC Table 3-23: delta = q L^4 / (k E I), I = pi d1^4/64, k by the mounting",
-                f"q = {screw['mass_per_length'] * G:.1f} N/m over the span {span:.0f} mm; no vendor limit",
+                f"q = {screw['mass_per_length'] * G:.1f} N/m over the span {span:.0f} mm; no "
+                "vendor limit",
             )
         )
     for r in rows:
@@ -809,8 +819,8 @@ def fmt(x) -> str:
 
 def table(rows: list[Row]) -> str:
     head = (
-        f"{'check':<42} {'unit':>6} {'vendor':>10} {'limit':>10} {'margin':>7} {'':4} {'axisopt':>10} "
-        f"{'ax.marg':>7} {'ratio':>6} {'':5}"
+        f"{'check':<42} {'unit':>6} {'vendor':>10} {'limit':>10} {'margin':>7} {'':4} "
+        f"{'axisopt':>10} {'ax.marg':>7} {'ratio':>6} {'':5}"
     )
     lines = [head, "-" * len(head)]
     for r in rows:
@@ -854,8 +864,8 @@ SUMMARY = (
 
 
 def summary_cell(r: dict | None) -> str:
-    """One cell of the results table from a row's JSON: 'margin PASS (axisopt's margin) KIND'; for the rigidity
-    'vendor / axisopt' N/um."""
+    """One cell of the results table from a row's JSON: 'margin PASS (axisopt's margin) KIND'; for
+    the rigidity 'vendor / axisopt' N/um."""
     if r is None:
         return "\u2013"
     if r["margin"] is None:
@@ -901,8 +911,9 @@ DRIVE_SOURCES = (
 
 
 def drive_rows(path: Path, res: dict) -> list[Row]:
-    """A linear-motor or rack-and-pinion optimum by its vendors' steps (tools/vendor_check_drives.py: the duty
-    cycle sampled in time, trapezoids or S-curves where the axis gives a jerk) as this checker's rows."""
+    """A linear-motor or rack-and-pinion optimum by its vendors' steps
+    (tools/vendor_check_drives.py: the duty cycle sampled in time, trapezoids or S-curves where the
+    axis gives a jerk) as this checker's rows."""
     import vendor_check_drives as vcd
 
     lines, _ = vcd.check(path, res)

@@ -1,22 +1,25 @@
-r"""Independent check of a rack-and-pinion or linear-motor axis by the vendors' printed selection steps
-(issue 54).  Nothing here imports ``axisopt``: the problem is solved by the program (``python -m axisopt
-solve P.yaml --json``), the chosen parts' rows are read straight from ``catalogs/*.csv`` (units from the
-headers), the axis from the problem's YAML, and every number is recomputed here: the duty cycle sampled in
-time (trapezoidal moves; no jerk), the forces and torques at each sample, peak and RMS from the samples.
+r"""Independent check of a rack-and-pinion or linear-motor axis by the vendors' printed selection
+steps (issue 54).  Nothing here imports ``axisopt``: the problem is solved by the program
+(``python -m axisopt solve P.yaml --json``), the chosen parts' rows are read straight from
+``catalogs/*.csv`` (units from the headers), the axis from the problem's YAML, and every number is
+recomputed here: the duty cycle sampled in time (trapezoidal moves; no jerk), the forces and torques
+at each sample, peak and RMS from the samples.
 
 Usage::
 
     python tools/vendor_check_drives.py problems/router_rack_problem.yaml
     python tools/vendor_check_drives.py problems/laser_lm_problem.yaml
 
-Procedures: THK General Catalog A-241 (GSR-R "Checking Strength": thrust <= capacity / overload factor);
-Apex Dynamics rack sizing (F = m g mu + m a + F; T = F d / 2); Yaskawa Sigma-7 11.2.4 (rack load torque, RMS
-torque); Beckhoff AG2400 (T2B, T2N, n1Max); HIWIN MM99TE07-1701 Appendix A (Fp, Fe, Ie/Ic <= 0.7, peak for
-about 1 s, the attraction on the guides); THK LM Guide nominal life (C / (fw P))^3 x 50 km, static safety
-C0 / P; THK A-704 Table 19 for fw.  Conventions shared with axisopt on purpose (no vendor number; printed as
-CONV): the twin pinion's bias (15 % of the peak feed force per pinion, half the feed force each), a motor
-without a catalog mass (2 kg + 0.7 kg per N m rated), an iron-core motor without a listed attraction force
-(5 x its continuous force), the blocks evenly loaded (centred load).  Exit 0: every check passes.
+Procedures: THK General Catalog A-241 (GSR-R "Checking Strength": thrust <= capacity / overload
+factor);
+Apex Dynamics rack sizing (F = m g mu + m a + F; T = F d / 2); Yaskawa Sigma-7 11.2.4 (rack load
+torque, RMS torque); Beckhoff AG2400 (T2B, T2N, n1Max); HIWIN MM99TE07-1701 Appendix A (Fp, Fe,
+Ie/Ic <= 0.7, peak for about 1 s, the attraction on the guides); THK LM Guide nominal life (C / (fw
+P))^3 x 50 km, static safety C0 / P; THK A-704 Table 19 for fw.  Conventions shared with axisopt on
+purpose (no vendor number; printed as CONV): the twin pinion's bias (15 % of the peak feed force per
+pinion, half the feed force each), a motor without a catalog mass (2 kg + 0.7 kg per N m rated), an
+iron-core motor without a listed attraction force (5 x its continuous force), the blocks evenly
+loaded (centred load).  Exit 0: every check passes.
 """
 
 from __future__ import annotations
@@ -103,9 +106,10 @@ def qty(text) -> float:
 
 
 def accel_times(v: float, a: float, jerk: float | None) -> tuple:
-    """(t_j, t_a, a_peak) of one speed change from rest to ``v``: a trapezoid (t_j 0) without a jerk; with one,
-    the jerk ramps a/j either side of the constant-acceleration stretch, or, where v < a^2/j, two ramps to
-    sqrt(v j) (the S-curve every servo controller runs; written here from the kinematics alone)."""
+    """(t_j, t_a, a_peak) of one speed change from rest to ``v``: a trapezoid (t_j 0) without a
+    jerk; with one, the jerk ramps a/j either side of the constant-acceleration stretch, or, where v
+    < a^2/j, two ramps to sqrt(v j) (the S-curve every servo controller runs; written here from the
+    kinematics alone)."""
     if not jerk:
         return 0.0, v / a, a
     if v >= a * a / jerk:
@@ -115,8 +119,9 @@ def accel_times(v: float, a: float, jerk: float | None) -> tuple:
 
 
 def move_profile(d: float, v: float, a: float, jerk: float | None) -> tuple:
-    """(v, t_j, t_a, a_peak, t_cruise) of a move of length ``d`` at most at speed ``v``: the speed lowered by
-    bisection where the move is too short to reach it (the speed change covers v (t_a + 2 t_j) / 2 each way)."""
+    """(v, t_j, t_a, a_peak, t_cruise) of a move of length ``d`` at most at speed ``v``: the speed
+    lowered by bisection where the move is too short to reach it (the speed change covers v (t_a + 2
+    t_j) / 2 each way)."""
 
     def span(x):
         tj, ta, _ = accel_times(x, a, jerk)
@@ -133,7 +138,8 @@ def move_profile(d: float, v: float, a: float, jerk: float | None) -> tuple:
 
 
 def _ramp(dt: float, tj: float, ta: float, ap: float) -> list:
-    """Accelerations of one speed change sampled every ``dt``: up at the jerk, hold, down (trapezoid: hold)."""
+    """Accelerations of one speed change sampled every ``dt``: up at the jerk, hold, down
+    (trapezoid: hold)."""
     out = []
     t_end = ta + 2 * tj
     n = max(1, round(t_end / dt))
@@ -150,10 +156,11 @@ def _ramp(dt: float, tj: float, ta: float, ap: float) -> list:
 
 
 def profile(axis: dict) -> list:
-    """(duration, acceleration, direction, process force) samples of the duty cycle, dt = 0.2 ms; without a
-    duty cycle the rapid move over the stroke and back.  Moves are trapezoids, or S-curves where the axis (or
-    the move) gives a jerk (:func:`move_profile`).  The cutting force acts at feed: the steady thrust
-    (:func:`check`), as Yaskawa's selection adds the load torque of the feed."""
+    """(duration, acceleration, direction, process force) samples of the duty cycle, dt = 0.2 ms;
+    without a duty cycle the rapid move over the stroke and back.  Moves are trapezoids, or S-curves
+    where the axis (or the move) gives a jerk (:func:`move_profile`).  The cutting force acts
+    at feed: the steady thrust (:func:`check`), as Yaskawa's selection adds the load torque of the
+    feed."""
     a = qty(axis["acceleration"])
     vmax = qty(axis["max_speed"])
     jerk_axis = qty(axis["jerk"]) if "jerk" in axis else None
@@ -189,7 +196,8 @@ def peak_rms(samples, fn):
 
 
 def _speeds(samples):
-    """(dt, speed) of the samples, the speed integrated from the accelerations (each move starts at rest)."""
+    """(dt, speed) of the samples, the speed integrated from the accelerations (each move starts at
+    rest)."""
     v = 0.0
     for dt, acc, s, _ in samples:
         v = v + acc * dt if s != 0 else 0.0
@@ -202,7 +210,8 @@ def fw_thk(v: float) -> float:
 
 
 def check(problem: Path, res: dict | None = None) -> tuple[list, dict]:
-    """(rows, the solve's JSON) of ``problem``'s optimum; ``res``: that JSON where the caller has solved it."""
+    """(rows, the solve's JSON) of ``problem``'s optimum; ``res``: that JSON where the caller has
+    solved it."""
     if res is not None:
         return _check(problem, res)
     with tempfile.TemporaryDirectory() as tmp:
@@ -346,8 +355,9 @@ def _check(problem: Path, res: dict) -> tuple[list, dict]:
             1.0,
             "motor_rms",
         )
-        # the thermal rating itself: Fc holds at 20 degC ambient, 80 degC winding, 100 % duty; Ie must
-        # stay below Ic (H-LMS definitions and Appendix A; the 0.7 above is HIWIN's advised reserve)
+        # the thermal rating itself: Fc holds at 20 degC ambient, 80 degC winding, 100 % duty; Ie
+        # must stay below Ic (H-LMS definitions and Appendix A; the 0.7 above is HIWIN's advised
+        # reserve)
         add(
             "effective force (HIWIN Fe <= Fc, thermal) [N]",
             f_rms,
@@ -421,7 +431,8 @@ def main(argv=None) -> int:
     print(f"{'check':50s} {'value':>12s} {'limit':>12s} {'margin':>7s}       axisopt")
     for name, value, limit, margin, verdict, model, agree in lines:
         print(
-            f"{name:50s} {value:12.4g} {limit:12.4g} {margin:7.3f} {verdict}  {model or float('nan'):7.3f} {agree}"
+            f"{name:50s} {value:12.4g} {limit:12.4g} {margin:7.3f} {verdict}  "
+            f"{model or float('nan'):7.3f} {agree}"
         )
     return 0 if all(v in ("PASS", "INFO") for *_, v, _m, _a in lines) else 1
 

@@ -1,9 +1,11 @@
-r"""The part vendors' selection formulas, written for tools/vendor_check.py apart from axisopt (no axisopt import).
+r"""The part vendors' selection formulas, written for tools/vendor_check.py apart from axisopt (no
+axisopt import).
 
-Units as the vendors print them: lengths in mm, forces in N, speeds in rpm (min^-1), rigidity in N/um, life in
-revolutions / h / km.  Each function names its source: T-GC = THK General Catalog (A-6xx..A-7xx ball screw,
-A-7..A-35 LM guide), H-BS = HIWIN Ballscrews BS-08-2-EN-1704-K (F 3.x), H-LG = HIWIN Linear Guideway
-G99TE20-1808, NSK-SP = NSK super-precision bearings, IBC = IBC TI-I-5010.2/E, IKO = IKO CAT-1578E.
+Units as the vendors print them: lengths in mm, forces in N, speeds in rpm (min^-1), rigidity in
+N/um, life in revolutions / h / km.  Each function names its source: T-GC = THK General Catalog
+(A-6xx..A-7xx ball screw, A-7..A-35 LM guide), H-BS = HIWIN Ballscrews BS-08-2-EN-1704-K (F 3.x),
+H-LG = HIWIN Linear Guideway G99TE20-1808, NSK-SP = NSK super-precision bearings, IBC = IBC
+TI-I-5010.2/E, IKO = IKO CAT-1578E.
 """
 
 from __future__ import annotations
@@ -29,25 +31,31 @@ WEIBULL_IBC = 1.11  # IBC eq. 2.39
 
 # conventions where the vendor's procedure and axisopt's differ on purpose (docs/validation.md)
 CONVENTIONS = {
-    "support bearing L10 life": "IBC Table 2.2 linear load split per bearing with the set's preload, no load "
-    "factor, IBC eq. 2.39 over the bearings; axisopt: the 2^(3/2) preloaded-pair law on row groups, fw applied",
-    "axial rigidity": "THK A-707 eq. 32 with the nut at its preload (A-710, no external load) and no torsion/"
+    "support bearing L10 life": "IBC Table 2.2 linear load split per bearing with the set's "
+    "preload, no load factor, IBC eq. 2.39 over the bearings; axisopt: the 2^(3/2) preloaded-pair "
+    "law on row groups, fw applied",
+    "axial rigidity": "THK A-707 eq. 32 with the nut at its preload (A-710, no external load) and "
+    "no torsion/"
     "coupling; axisopt's chain at its own least-stiff point without torsion and coupling terms",
-    "RMS torque": "THK's friction f is constant (A-725); axisopt adds the guides' viscous friction at speed, and "
-    "moves jerk-limited where the design gives a jerk (this checker: trapezoidal)",
-    "unbalanced load torque": "THK's friction f is constant and the screw's eta 0.9 (A-725, A-745); axisopt's "
-    "friction torque is its drag at the rapid speed (the guides' viscous term, the nut's preload torque by its "
-    "own coefficient) through its screw efficiency",
-    "nut lift-off": "THK's friction f is constant in each phase (A-725); axisopt takes the guides' friction at the "
-    "rapid speed (with their viscous term) in every load case, as its life loads do",
-    "holding torque": "THK A-745 credits the guide friction and divides by eta 0.9; axisopt: m g P_h / 2 pi",
-    "unit support bearing L10 life": "THK gives the rotating-nut unit's bearing no procedure of its own (B-720 "
-    "points to A-704): its printed Ca on the cycle's cubic-mean load, no preload; axisopt: a preloaded DB pair with "
-    "an estimated 5 % Ca preload (the 2^(3/2) law), several times shorter",
-    "reduction T2N": "the mean thrust's output torque with THK's constant guide friction (A-725: mu (m g + normal) "
-    "+ seals); axisopt's guide friction at the mean speed is its own (larger: its life_loads)",
-    "guide static safety": "the largest block load with full feed, cross and normal forces and the peak "
-    "acceleration together (this checker's load case); axisopt's load cases are its own",
+    "RMS torque": "THK's friction f is constant (A-725); axisopt adds the guides' viscous friction "
+    "at speed, and moves jerk-limited where the design gives a jerk (this checker: trapezoidal)",
+    "unbalanced load torque": "THK's friction f is constant and the screw's eta 0.9 (A-725, "
+    "A-745); axisopt's friction torque is its drag at the rapid speed (the guides' viscous term, "
+    "the nut's preload torque by its own coefficient) through its screw efficiency",
+    "nut lift-off": "THK's friction f is constant in each phase (A-725); axisopt takes the guides' "
+    "friction at the rapid speed (with their viscous term) in every load case, as its life loads "
+    "do",
+    "holding torque": "THK A-745 credits the guide friction and divides by eta 0.9; axisopt: m g "
+    "P_h / 2 pi",
+    "unit support bearing L10 life": "THK gives the rotating-nut unit's bearing no procedure of "
+    "its own (B-720 points to A-704): its printed Ca on the cycle's cubic-mean load, no preload; "
+    "axisopt: a preloaded DB pair with an estimated 5 % Ca preload (the 2^(3/2) law), several "
+    "times shorter",
+    "reduction T2N": "the mean thrust's output torque with THK's constant guide friction (A-725: "
+    "mu (m g + normal) + seals); axisopt's guide friction at the mean speed is its own (larger: "
+    "its life_loads)",
+    "guide static safety": "the largest block load with full feed, cross and normal forces and the "
+    "peak acceleration together (this checker's load case); axisopt's load cases are its own",
 }
 
 
@@ -140,8 +148,9 @@ class Phase:
 
 
 def move_phases(d, v, a, proc, moving, friction, weight):
-    """A rest-to-rest move (trapezoidal profile, THK A-722) as accelerate / constant / decelerate phases with the
-    nut load of each (T-GC A-725, A-739: Fa = m a + mu m g + f + process force, + m g vertical)."""
+    """A rest-to-rest move (trapezoidal profile, THK A-722) as accelerate / constant / decelerate
+    phases with the nut load of each (T-GC A-725, A-739: Fa = m a + mu m g + f + process force, + m
+    g vertical)."""
     s = 1 if d > 0 else -1
     # a counterbalanced head: the net weight by direction
     weight = weight(s) if callable(weight) else weight
@@ -161,8 +170,9 @@ def move_phases(d, v, a, proc, moving, friction, weight):
 
 
 def duty_phases(ax, moving, friction, weight):
-    """The duty cycle's phases (axis.duty_cycle), or, without one, the design's stated mean axial load with
-    friction each way over the stroke (what the design says the nut sees on average).  Returns (phases, given)."""
+    """The duty cycle's phases (axis.duty_cycle), or, without one, the design's stated mean axial
+    load with friction each way over the stroke (what the design says the nut sees on average).
+    Returns (phases, given)."""
     # net weight by direction (+1 up, -1 down, 0 rest)
     w = weight if callable(weight) else (lambda _s: weight)
     if not ax.duty:
@@ -187,15 +197,16 @@ def duty_phases(ax, moving, friction, weight):
 
 
 def default_drive_phases(ax, moving, friction, weight):
-    """axisopt's documented default duty for the drive: the rapid move over the stroke and back, no dwell."""
+    """axisopt's documented default duty for the drive: the rapid move over the stroke and back, no
+    dwell."""
     return move_phases(ax.stroke, ax.v_max, ax.a_max, 0.0, moving, friction, weight) + move_phases(
         -ax.stroke, ax.v_max, ax.a_max, 0.0, moving, friction, weight
     )
 
 
 def mean_speed_rpm(phases, lead_mm):
-    """Mean screw speed over the cycle, dwells included: revolutions / clock time (T-GC A-730 N_m = 2 n l_S /
-    P_h; H-BS F 3.4)."""
+    """Mean screw speed over the cycle, dwells included: revolutions / clock time (T-GC A-730 N_m =
+    2 n l_S / P_h; H-BS F 3.4)."""
     total = sum(p.time for p in phases)
     return sum(p.dist for p in phases) * 1e3 / lead_mm / total * 60.0
 
@@ -206,10 +217,10 @@ def mean_travel_speed(phases):
 
 
 def critical_speed(vendor, d1, lb, mounting):
-    """Permissible speed from the shaft's dangerous speed [rpm].
-    HIWIN (H-BS F 3.27/F 3.28): n_k,max = 0.8 * 2.71e8 f_n d_k / l_s^2, f_n 1.0 / 0.692 / 0.147.
-    THK (T-GC A-696 eq. 8, 0.8 included): N1 = lambda_2 d1 / l_b^2 * 1e7, lambda_2 21.9 / 15.1 / 3.4.
-    d1 root diameter [mm], lb distance between the mounting surfaces [mm]."""
+    """Permissible speed from the shaft's dangerous speed [rpm].  HIWIN (H-BS F 3.27/F 3.28):
+    n_k,max = 0.8 * 2.71e8 f_n d_k / l_s^2, f_n 1.0 / 0.692 / 0.147.  THK (T-GC A-696 eq. 8, 0.8
+    included): N1 = lambda_2 d1 / l_b^2 * 1e7, lambda_2 21.9 / 15.1 / 3.4. d1 root diameter [mm], lb
+    distance between the mounting surfaces [mm]."""
     if vendor == "HIWIN":
         fn = {"fixed-fixed": 1.0, "fixed-supported": 0.692, "fixed-free": 0.147}[mounting]
         return 0.8 * 2.71e8 * fn * d1 / lb**2, "H-BS F 3.27/3.28: 0.8 x 2.71e8 f_n d_k / l_s^2"
@@ -218,9 +229,9 @@ def critical_speed(vendor, d1, lb, mounting):
 
 
 def dn_check(vendor, d0, d1, dw, n_max, dn_limit):
-    """DN value.  HIWIN (H-BS F 3.29): DN = d_s n_max <= 90 000 ground (the catalog column).  THK (T-GC A-697
-    eq. 11, precision screw): N2 = 70 000 / D, D the ball centre diameter (here d1 + D_w, an estimate).
-    Returns (limit, value, source, note) in mm.rpm."""
+    """DN value.  HIWIN (H-BS F 3.29): DN = d_s n_max <= 90 000 ground (the catalog column).  THK
+    (T-GC A-697 eq. 11, precision screw): N2 = 70 000 / D, D the ball centre diameter (here d1 +
+    D_w, an estimate).  Returns (limit, value, source, note) in mm.rpm."""
     if vendor == "THK":
         d = d1 + dw
         return (
@@ -250,17 +261,18 @@ def permissible_tension(d1):
 
 
 def thermal_pretension(d1, rise=None, vendor="THK"):
-    """Pretension of a fixed-fixed screw that takes up a temperature rise [N]: the force that stretches the
-    shaft by its thermal growth with Hooke's law, E A alpha dT; alpha 11.6e-6/K for HIWIN (H-BS F 3.36),
-    12e-6/K otherwise (T-GC A-715 eq. 38)."""
+    """Pretension of a fixed-fixed screw that takes up a temperature rise [N]: the force that
+    stretches the shaft by its thermal growth with Hooke's law, E A alpha dT; alpha 11.6e-6/K for
+    HIWIN (H-BS F 3.36), 12e-6/K otherwise (T-GC A-715 eq. 38)."""
     alpha = 11.6e-6 if vendor == "HIWIN" else ALPHA_THK
     return E_THK * math.pi / 4.0 * d1**2 * alpha * (DESIGN_RISE if rise is None else rise)
 
 
 def nut_load_factor(vendor, v_max, given):
-    """Load factor of the nut: HIWIN fp 1.3-1.8 'operation under normal conditions' (H-BS p. 25; lower bound
-    1.3); THK fW Table 19 (A-704) by speed, lower bound: <= 0.25 m/s 1.0, <= 1 m/s 1.2, <= 2 m/s 1.5, else 2.0.
-    A larger axis.load_factor given in the design is used.  Returns (factor, text)."""
+    """Load factor of the nut: HIWIN fp 1.3-1.8 'operation under normal conditions' (H-BS p. 25;
+    lower bound 1.3); THK fW Table 19 (A-704) by speed, lower bound: <= 0.25 m/s 1.0, <= 1 m/s 1.2,
+    <= 2 m/s 1.5, else 2.0.  A larger axis.load_factor given in the design is used.  Returns
+    (factor, text)."""
     if vendor == "HIWIN":
         fw, src = 1.3, "fp 1.3 (H-BS p. 25, normal operation)"
     else:
@@ -272,9 +284,10 @@ def nut_load_factor(vendor, v_max, given):
 
 
 def preloaded_halves(preload, f):
-    """Loads on the two halves of a preloaded double nut under the signed load f (H-BS F 3.6, F 3.7 and the flow
-    chart p. 26): the pressed half (1 + |f|/(2^1.5 F_pr))^1.5 F_pr below F_lim = 2^1.5 F_pr, |f| above it; the
-    other half that minus |f| (0 after lift-off).  Returns (half +, half -)."""
+    """Loads on the two halves of a preloaded double nut under the signed load f (H-BS F 3.6, F 3.7
+    and the flow chart p. 26): the pressed half (1 + |f|/(2^1.5 F_pr))^1.5 F_pr below F_lim = 2^1.5
+    F_pr, |f| above it; the other half that minus |f| (0 after lift-off).  Returns (half +, half
+    -)."""
     x = abs(f)
     pressed = (1 + x / (2**1.5 * preload)) ** 1.5 * preload if x < 2**1.5 * preload else x
     other = max(pressed - x, 0.0)
@@ -282,11 +295,13 @@ def preloaded_halves(preload, f):
 
 
 def nut_life_h(c_dyn, preload, phases, fw, nm):
-    """Nut L10 life [h].  Preloaded nut (HIWIN H-BS F 3.7-F 3.13): each half's cubic-mean load over the phases
-    (weighted by revolutions = travel, with fp inside the mean, F 3.9), L_i = (C/F_bm,i)^3 1e6, L = (L1^(-10/9)
-    + L2^(-10/9))^(-9/10), L_h = L / (60 n_m).  Single nut (THK A-704..A-706 eqs. 27, 28, 30): the greater of
-    the two directions' cubic means (the other sign counted as zero over the whole travel), L = (Ca/(fW F_m))^3
-    1e6.  Returns (hours, source)."""
+    """Nut L10 life [h].  Preloaded nut (HIWIN H-BS F 3.7-F 3.13): each half's cubic-mean load over
+    the phases (weighted by revolutions = travel, with fp inside the mean, F 3.9), L_i =
+    (C/F_bm,i)^3 1e6, L = (L1^(-10/9)
+    + L2^(-10/9))^(-9/10), L_h = L / (60 n_m).  Single nut (THK A-704..A-706 eqs. 27, 28, 30): the
+      greater of
+    the two directions' cubic means (the other sign counted as zero over the whole travel), L =
+    (Ca/(fW F_m))^3 1e6.  Returns (hours, source)."""
     moving = [p for p in phases if p.dist > 0]
     total = sum(p.dist for p in moving)
     if preload > 0:
@@ -319,10 +334,8 @@ ROWS = {
     "DFT": (3, 1),
 }
 # IBC TI-I-5010.2/E Table 2.2 (eqs. 2.8-2.31): per single bearing, (bearings in the load direction,
-# opposite):
-# unloading at X Fv; until then A = a0 Fv + a1 F (each loaded bearing), B = b0 Fv - b1 F (each
-# opposite one);
-# after: A = after F, B = 0
+# opposite): unloading at X Fv; until then A = a0 Fv + a1 F (each loaded bearing), B = b0 Fv - b1 F
+# (each opposite one); after: A = after F, B = 0
 IBC_SPLIT = {
     (1, 1): (2.83, 1.00, 0.67, 1.00, 0.33, 1.0),
     (2, 1): (5.66, 0.84, 0.47, 1.36, 0.24, 0.617),
@@ -330,20 +343,18 @@ IBC_SPLIT = {
     (2, 2): (5.66, 0.84, 0.40, 0.84, 0.22, 0.617),
     (3, 1): (8.49, 0.73, 0.38, 1.57, 0.18, 0.463),
     # the single of 3:1 loaded is not a row of Table 2.2: this checker's line through its end
-    # points,
-    # the single's 1.57 Fv at no load and the unloading at 2.83 Fv (X = 2.83 x the bearings loaded,
-    # as every row of the table), the opposite three's 0.73 Fv (the 3:1 row's A) falling to 0 there
+    # points, the single's 1.57 Fv at no load and the unloading at 2.83 Fv (X = 2.83 x the bearings
+    # loaded, as every row of the table), the opposite three's 0.73 Fv (the 3:1 row's A) falling to
+    # 0 there
     (1, 3): (2.83, 1.57, 0.445, 0.73, 0.258, 1.0),
 }
 
 
 # the preload force the set's catalog value names (the axial force across the set at no load) in
-# units of IBC's
-# Fv: the side of the set that carries it at Fae = 0 is 1 bearing x 1.0 Fv (DB/DF), the single
-# bearing of a 2:1
-# set 1.36 Fv (IBC eq. 2.11/2.13), 2 bearings x 0.84 Fv (2:2, eq. 2.22/2.23).  NSK-SP p. 168 prints
-# for 25TAC62B
-# DF 3 150 N, DFD 4 300 N (4 300 / 1.36 = 3 162 N, the DF value: the reading holds), DFF 6 250 N.
+# units of IBC's Fv: the side of the set that carries it at Fae = 0 is 1 bearing x 1.0 Fv (DB/DF),
+# the single bearing of a 2:1 set 1.36 Fv (IBC eq. 2.11/2.13), 2 bearings x 0.84 Fv (2:2, eq.
+# 2.22/2.23).  NSK-SP p. 168 prints for 25TAC62B DF 3 150 N, DFD 4 300 N (4 300 / 1.36 = 3 162 N,
+# the DF value: the reading holds), DFF 6 250 N.
 IBC_SET_PRELOAD = {(1, 1): 1.0, (2, 1): 1.36, (2, 2): 1.68, (3, 1): 1.57}
 
 
@@ -351,17 +362,16 @@ LIFT_SET_PRELOAD = {(1, 1): 1.0, (2, 1): 1.36, (3, 1): 1.57, (2, 2): 2.0}
 
 
 def bearing_lift_off(brg, f_max, pretension):
-    """Lift-off of the support set by IBC Table 2.2 (unloading at Fae > X Fv, X of the bearings loaded against
-    the opposite ones), each direction: the static pretension with the largest axial force on the rows facing it,
-    the largest axial force alone on the others (a warm screw loses its pretension); the set mounted the way
-    round that gives the larger margin.  Returns (available, needed, margin, note) [N]."""
+    """Lift-off of the support set by IBC Table 2.2 (unloading at Fae > X Fv, X of the bearings
+    loaded against the opposite ones), each direction: the static pretension with the largest axial
+    force on the rows facing it, the largest axial force alone on the others (a warm screw loses its
+    pretension); the set mounted the way round that gives the larger margin.  Returns (available,
+    needed, margin, note) [N]."""
     n1, n2 = ROWS[brg["arrangement"]]
     # the set's preload over the DB pair's for the unloading point: NSK p. 168 prints a quadruplex
-    # (2:2) at
-    # 1.98 x its duplex, a triplex (2:1) at 1.37 x (IBC's single bearing of 2:1 / 3:1: 1.36 / 1.57
-    # Fv); the
-    # 1.68 of IBC_SET_PRELOAD is the 2:2 set's per-bearing load factor (2 x 0.84) the life reads,
-    # not its preload
+    # (2:2) at 1.98 x its duplex, a triplex (2:1) at 1.37 x (IBC's single bearing of 2:1 / 3:1: 1.36
+    # / 1.57 Fv); the 1.68 of IBC_SET_PRELOAD is the 2:2 set's per-bearing load factor (2 x 0.84)
+    # the life reads, not its preload
     fv = brg["preload"] / LIFT_SET_PRELOAD[(max(n1, n2), min(n1, n2))]
     best = None
     for a, b in ((n1, n2), (n2, n1)):  # a: rows facing the pretension
@@ -381,7 +391,8 @@ def bearing_lift_off(brg, f_max, pretension):
 
 
 def ibc_bearing_loads(n_load, n_other, fv, f):
-    """Axial load of each bearing facing the load and of each opposite bearing (IBC Table 2.2), f >= 0."""
+    """Axial load of each bearing facing the load and of each opposite bearing (IBC Table 2.2), f
+    >= 0."""
     x, a0, a1, b0, b1, after = IBC_SPLIT[(n_load, n_other)]
     if f > x * fv:
         return after * f, 0.0
@@ -389,12 +400,13 @@ def ibc_bearing_loads(n_load, n_other, fv, f):
 
 
 def bearing_life_h(brg, phases, pretension, nm, fw=1.0):
-    """Support-bearing set L10 life [h] by IBC TI-I-5010.2/E: the set's single-bearing rating (the printed set
-    rating / i^0.7 for the printed rows, IBC eq. 2.4, NSK-SP p. 111), each bearing's axial load per phase from
-    Table 2.2 (the rows facing each direction carry it), each bearing's cubic-mean load weighted by revolutions
-    (eq. 2.34), L10 = (Ca/P)^3 1e6 (eq. 2.37), the set's life over its bearings (eq. 2.39, exponent 1.11).  The
-    strong rows face the direction that gives the longer life (designer's choice); on a fixed-fixed screw the
-    pretension presses the set, in the worse sense.  Returns (hours, source, note)."""
+    """Support-bearing set L10 life [h] by IBC TI-I-5010.2/E: the set's single-bearing rating (the
+    printed set rating / i^0.7 for the printed rows, IBC eq. 2.4, NSK-SP p. 111), each bearing's
+    axial load per phase from Table 2.2 (the rows facing each direction carry it), each bearing's
+    cubic-mean load weighted by revolutions (eq. 2.34), L10 = (Ca/P)^3 1e6 (eq. 2.37), the set's
+    life over its bearings (eq. 2.39, exponent 1.11).  The strong rows face the direction that gives
+    the longer life (designer's choice); on a fixed-fixed screw the pretension presses the set, in
+    the worse sense.  Returns (hours, source, note)."""
     n_plus, n_minus = ROWS[brg["arrangement"]]
     c_single = brg["dynamic_load_rating"] / max(n_plus, n_minus) ** 0.7
     fv = brg["preload"] / IBC_SET_PRELOAD[(max(n_plus, n_minus), min(n_plus, n_minus))]
@@ -424,18 +436,19 @@ def bearing_life_h(brg, phases, pretension, nm, fw=1.0):
         worst = min(worst, best)
     angle = brg.get("contact_angle") or 60.0
     note = (
-        f"{brg['arrangement']}: {n_plus}/{n_minus} rows, Ca single {c_single / 1e3:.1f} kN, set preload "
-        f"{brg['preload']:.0f} N = IBC Fv {fv:.0f} N"
+        f"{brg['arrangement']}: {n_plus}/{n_minus} rows, Ca single {c_single / 1e3:.1f} kN, set "
+        f"preload {brg['preload']:.0f} N = IBC Fv {fv:.0f} N"
         + ("" if angle >= 59 else f"; IBC's table is for 60 deg, this set {angle:.0f} deg")
     )
     return worst, "IBC Table 2.2, eqs. 2.4, 2.34, 2.37, 2.39", note
 
 
 def hertz_group_loads(preload, n_a, n_b, f):
-    """Loads [N] on the group of ``n_a`` bearings and on the opposite ``n_b`` of a matched set with the set
-    preload ``preload`` under an axial force ``f`` >= 0 on the ``n_a`` group: each bearing's contact deflects as
-    (Q / K)^(2/3) (Hertz, ball on race), the groups' deflections change by the same amount in opposite senses,
-    and Q_a - Q_b = f (found by bisection; K drops out).  Written here apart from axisopt's physics."""
+    """Loads [N] on the group of ``n_a`` bearings and on the opposite ``n_b`` of a matched set with
+    the set preload ``preload`` under an axial force ``f`` >= 0 on the ``n_a`` group: each bearing's
+    contact deflects as (Q / K)^(2/3) (Hertz, ball on race), the groups' deflections change by the
+    same amount in opposite senses, and Q_a - Q_b = f (found by bisection; K drops out).  Written
+    here apart from axisopt's physics."""
     da0, db0 = (preload / n_a) ** (2 / 3), (preload / n_b) ** (2 / 3)
 
     def q(u):
@@ -451,11 +464,11 @@ def hertz_group_loads(preload, n_a, n_b, f):
 
 
 def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
-    """Support-set L10 life [h] by the bearing maker's group ratings (NSK-SP pp. 110-111: Ca printed by the
-    rows loaded; the other direction's rows by i^0.7) with each group's load from Hertz's contact law
-    (:func:`hertz_group_loads`), the cubic mean over travel, L10 = (Ca / P)^3 1e6 per group, the groups' lives
-    combined with NSK's exponent 1.1; the pretension on the rows the designer turns to it (the way round that
-    lives longer).  Returns (hours, source, note)."""
+    """Support-set L10 life [h] by the bearing maker's group ratings (NSK-SP pp. 110-111: Ca printed
+    by the rows loaded; the other direction's rows by i^0.7) with each group's load from Hertz's
+    contact law (:func:`hertz_group_loads`), the cubic mean over travel, L10 = (Ca / P)^3 1e6 per
+    group, the groups' lives combined with NSK's exponent 1.1; the pretension on the rows the
+    designer turns to it (the way round that lives longer).  Returns (hours, source, note)."""
     n1, n2 = ROWS[brg["arrangement"]]
     strong = max(n1, n2)
     rating = {n: brg["dynamic_load_rating"] * (n / strong) ** 0.7 for n in (n1, n2)}
@@ -465,8 +478,7 @@ def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
     for a, b in ((n1, n2), (n2, n1)):  # a: the rows facing the pretension (+)
         ends = []
         # with a pretension (both ends held) the two ends' sets see the cycle in opposite senses:
-        # the worse
-        # governs; one set alone is turned the way that lives longer
+        # the worse governs; one set alone is turned the way that lives longer
         for sign in (1, -1):
             cubes = [0.0, 0.0]
             for p in moving:
@@ -488,7 +500,8 @@ def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
         best,
         "NSK-SP pp. 110-111 (Ca by rows loaded), Hertz load split",
         (
-            f"{brg['arrangement']}: groups {n1}/{n2}, Ca {rating[n1] / 1e3:.1f} / {rating[n2] / 1e3:.1f} kN; "
+            f"{brg['arrangement']}: groups {n1}/{n2}, Ca {rating[n1] / 1e3:.1f} / "
+            f"{rating[n2] / 1e3:.1f} kN; "
             + (
                 "the worse end's set (the cycle against the pretension one way at each end)"
                 if pretension
@@ -499,10 +512,11 @@ def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
 
 
 def bearing_permissible_load(brg):
-    """Permissible axial load of the set in its weaker direction [N].  60-degree screw-support sets (NSK TAC B,
-    HIWIN WBK): 0.7 x the limiting axial load (NSK-SP p. 111 footnote 2), the printed value scaled to the weak
-    direction's rows.  THK BK units: the printed permissible load (T-GC A-806).  Others: C0a / 2.5 (IBC eq. 2.6).
-    Returns (load, source, generic): ``generic`` when the rating has no vendor factor of its own (IBC's general S0)."""
+    """Permissible axial load of the set in its weaker direction [N].  60-degree screw-support sets
+    (NSK TAC B, HIWIN WBK): 0.7 x the limiting axial load (NSK-SP p. 111 footnote 2), the printed
+    value scaled to the weak direction's rows.  THK BK units: the printed permissible load (T-GC
+    A-806).  Others: C0a / 2.5 (IBC eq. 2.6).  Returns (load, source, generic): ``generic`` when the
+    rating has no vendor factor of its own (IBC's general S0)."""
     strong, weak = max(ROWS[brg["arrangement"]]), min(ROWS[brg["arrangement"]])
     c0 = brg["static_load_rating"] * weak / strong
     if brg["vendor"] == "THK":
@@ -513,10 +527,11 @@ def bearing_permissible_load(brg):
 
 
 def block_reactions(ax, forces):
-    """Radial (vertical) and lateral reaction of each guide block on a rigid table (equal block stiffness, the
-    least-norm statics THK's examples A-16..A-20 reduce to: P = F/4 +- M/(2 l0) +- M/(2 l1)).  forces: list of
-    (force (x, y, z) [N], point (x, y, z) [m]); x along the axis, z up from the rail mounting plane; the screw
-    takes the axial force at the origin (an estimate: screw axis at the rail plane under the table centre)."""
+    """Radial (vertical) and lateral reaction of each guide block on a rigid table (equal block
+    stiffness, the least-norm statics THK's examples A-16..A-20 reduce to: P = F/4 +- M/(2 l0) +-
+    M/(2 l1)).  forces: list of (force (x, y, z) [N], point (x, y, z) [m]); x along the axis, z up
+    from the rail mounting plane; the screw takes the axial force at the origin (an estimate: screw
+    axis at the rail plane under the table centre)."""
     per_rail = max(ax.blocks // 2, 1)
     xs = (
         np.linspace(-ax.block_spacing / 2, ax.block_spacing / 2, per_rail)
@@ -541,8 +556,9 @@ def block_reactions(ax, forces):
 
 
 def table_forces(ax, moving, acc, feed, scale, sign_cross=1.0):
-    """Forces on the table: weight at the centre of gravity, inertia, and the cut at the tool point (feed force
-    against the motion `feed` signed along x, cross and normal components scaled by `scale`)."""
+    """Forces on the table: weight at the centre of gravity, inertia, and the cut at the tool point
+    (feed force against the motion `feed` signed along x, cross and normal components scaled by
+    `scale`)."""
     gvec = (-G, 0, 0) if ax.vertical else (0, -G, 0) if ax.wall else (0, 0, -G)
     cg = (0.0, ax.y_cg, ax.h_cg)
     tool = (0.0, ax.y_tool, ax.h_tool)
@@ -554,7 +570,8 @@ def table_forces(ax, moving, acc, feed, scale, sign_cross=1.0):
 
 
 def block_loads_max(ax, moving, a_peak):
-    """Largest block load: full feed force either way, the peak acceleration either way, cross load either way."""
+    """Largest block load: full feed force either way, the peak acceleration either way, cross load
+    either way."""
     worst = 0.0
     for fs in (1, -1):
         for ac in (1, -1):
@@ -580,15 +597,16 @@ GUIDE_BASIS = {
 
 
 def guide_rating_life(c, p, kind, basis):
-    """Rating life of a guide block [km]: L = (C/P)^e x basis, e = 3 ball, 10/3 roller (T-GC A-10 eqs. 2/3, H-LG
-    eqs. 1.2/1.3, IKO CAT-1578E III-7 eqs. 1/2); basis = the travel C is defined for [km]."""
+    """Rating life of a guide block [km]: L = (C/P)^e x basis, e = 3 ball, 10/3 roller (T-GC A-10
+    eqs. 2/3, H-LG eqs. 1.2/1.3, IKO CAT-1578E III-7 eqs. 1/2); basis = the travel C is defined for
+    [km]."""
     return (c / p) ** (3.0 if kind == "ball" else 10.0 / 3.0) * basis
 
 
 def guide_static_safety(vendor, kind):
-    """Least static safety factor C0/P for a machine tool axis (vibration / impact class, lower bound):
-    HIWIN H-LG Table 1-1 3.0; THK T-GC A-9 Table 1 (normal motion, impact) 2.5; IKO Table 2.1/2.2 (vibration
-    and shock) ball 3, roller 4; others 3."""
+    """Least static safety factor C0/P for a machine tool axis (vibration / impact class, lower
+    bound): HIWIN H-LG Table 1-1 3.0; THK T-GC A-9 Table 1 (normal motion, impact) 2.5; IKO Table
+    2.1/2.2 (vibration and shock) ball 3, roller 4; others 3."""
     fs = {"HIWIN": 3.0, "THK": 2.5, "IKO": 3.0 if kind == "ball" else 4.0}.get(vendor, 3.0)
     return fs, {
         "HIWIN": "H-LG Table 1-1",
@@ -598,10 +616,10 @@ def guide_static_safety(vendor, kind):
 
 
 def guide_life_km(guide, ax, phases, cycle_given, moving, fw_given=None):
-    """Guide block L10 travel [km] of the most loaded block: its cubic-mean load over the phases (T-GC A-32) with
-    the block preload (T-GC A-112, lift-off at 2.8 x preload),
-    L = (C / (fW Pm))^e x basis (T-GC A-10 eqs. 4/5, H-LG eqs. 1.4/1.5, IKO III-7: e = 3 ball, 10/3 roller;
-    basis = the vendor's rating distance); fW by speed (T-GC A-12 Table 3, H-LG Table 1-2; IKO Table 1 normal
+    """Guide block L10 travel [km] of the most loaded block: its cubic-mean load over the phases
+    (T-GC A-32) with the block preload (T-GC A-112, lift-off at 2.8 x preload), L = (C / (fW Pm))^e
+    x basis (T-GC A-10 eqs. 4/5, H-LG eqs. 1.4/1.5, IKO III-7: e = 3 ball, 10/3 roller; basis = the
+    vendor's rating distance); fW by speed (T-GC A-12 Table 3, H-LG Table 1-2; IKO Table 1 normal
     operation 1.2).  Returns (km, source, note)."""
     kind, vendor = guide["type"], guide["vendor"]
     basis = GUIDE_BASIS.get((vendor, kind), 50)
@@ -624,31 +642,32 @@ def guide_life_km(guide, ax, phases, cycle_given, moving, fw_given=None):
     pm_ext = (cubes.max() / sum(p.dist for p in moving_phases)) ** (1 / 3)
     p0 = guide.get("preload") or 0.0
     # preload (T-GC A-112: "calculate the service life while taking into account the magnitude of
-    # the preload";
-    # its effect lasts to about 2.8 x the preload): the block's balls as a preloaded pair (H-BS F
-    # 3.7 form)
+    # the preload"; its effect lasts to about 2.8 x the preload): the block's balls as a preloaded
+    # pair (H-BS F 3.7 form)
     pm = preloaded_halves(p0, pm_ext)[0] if p0 > 0 else pm_ext
     km = guide_rating_life(guide["dynamic_load_rating"], fw * pm, kind, basis)
     note = (
-        f"basis {basis} km ({vendor} {kind}; csv column {guide.get('rating_distance', 0) / 1e3:.0f} km), "
-        f"fW {fw}, Pm {pm_ext:.0f} N, with preload {p0:.0f} N: {pm:.0f} N"
+        f"basis {basis} km ({vendor} {kind}; csv column "
+        f"{guide.get('rating_distance', 0) / 1e3:.0f} km), fW {fw}, Pm {pm_ext:.0f} N, with "
+        f"preload {p0:.0f} N: {pm:.0f} N"
         + ("" if cycle_given else "; no cycle: feed at mean_axial_load")
     )
     return km, "T-GC A-10/A-32, H-LG eq. 1.4/1.5, IKO III-7", note
 
 
 def nut_rigidity(nut, preload, f_max):
-    """Nut rigidity [N/um]: preloaded, K_N = 0.8 K (F_a0 / F_ref)^(1/3) (T-GC A-710, H-BS F 3.34 with F_ref =
-    0.1 Ca, the catalog's `stiffness_preload`); single nut, the same law at the axial load (T-GC A-710 0.3 Ca,
-    H-BS F 3.35 0.28 Cdyn)."""
+    """Nut rigidity [N/um]: preloaded, K_N = 0.8 K (F_a0 / F_ref)^(1/3) (T-GC A-710, H-BS F 3.34
+    with F_ref = 0.1 Ca, the catalog's `stiffness_preload`); single nut, the same law at the axial
+    load (T-GC A-710 0.3 Ca, H-BS F 3.35 0.28 Cdyn)."""
     load = preload if nut["type"] == "double" else f_max
     return 0.8 * nut["stiffness"] / 1e6 * (load / nut["stiffness_preload"]) ** (1 / 3)
 
 
 def feed_rigidity(ax, screw, nut, brg, preload, f_max):
-    """Least axial rigidity of the feed system over the stroke [N/um], T-GC A-707 eq. 32: 1/K = 1/K_S + 1/K_N +
-    1/K_B + 1/K_H; K_S = A E / (1000 L) (eq. 33, fixed-supported/free, L bearing to nut) and A E L / (1000 a b)
-    (eq. 34, fixed-fixed, each side through its own bearing set in parallel).  Returns (K, source, note)."""
+    """Least axial rigidity of the feed system over the stroke [N/um], T-GC A-707 eq. 32: 1/K =
+    1/K_S + 1/K_N + 1/K_B + 1/K_H; K_S = A E / (1000 L) (eq. 33, fixed-supported/free, L bearing to
+    nut) and A E L / (1000 a b) (eq. 34, fixed-fixed, each side through its own bearing set in
+    parallel).  Returns (K, source, note)."""
     d1 = screw["root_diameter"] * 1e3
     ae = math.pi / 4 * d1**2 * E_THK
     kn = nut_rigidity(nut, preload, f_max)
@@ -673,21 +692,23 @@ def feed_rigidity(ax, screw, nut, brg, preload, f_max):
 
 
 def preload_torque(preload, lead, d_pcd):
-    """Preload (drag) torque of a preloaded nut [N.m], T-GC A-688 eq. 5: T_p = 0.05 (tan b)^-0.5 F_a0 P_h / 2 pi,
-    tan b = P_h / (pi D).  lead, d_pcd [mm]."""
+    """Preload (drag) torque of a preloaded nut [N.m], T-GC A-688 eq. 5: T_p = 0.05 (tan b)^-0.5
+    F_a0 P_h / 2 pi, tan b = P_h / (pi D).  lead, d_pcd [mm]."""
     tan_b = lead / (math.pi * d_pcd)
     return 0.05 * tan_b**-0.5 * preload * lead / (2 * math.pi) / 1e3
 
 
 def screw_inertia(d0, length):
-    """Screw shaft inertia [kg.m^2], a solid steel cylinder of the outer diameter d0 [m] over its length [m]:
-    J = pi rho d^4 L / 32 (T-GC A-718 'J = m D^2 / 8', D the outer diameter; rho 7.85e3 kg/m^3, A-696)."""
+    """Screw shaft inertia [kg.m^2], a solid steel cylinder of the outer diameter d0 [m] over its
+    length [m]: J = pi rho d^4 L / 32 (T-GC A-718 'J = m D^2 / 8', D the outer diameter; rho 7.85e3
+    kg/m^3, A-696)."""
     return math.pi * RHO_THK * 1e9 * d0**4 * length / 32
 
 
 def holding_torque(weight, friction, lead):
-    """Screw torque holding a vertical axis at a stop [N.m], T-GC A-745: T_s = (m g - f) P_h / (2 pi eta), the guide
-    resistance f credited, eta = 0.9 dividing.  weight m g, friction f [N]; lead [m]."""
+    """Screw torque holding a vertical axis at a stop [N.m], T-GC A-745: T_s = (m g - f) P_h / (2 pi
+    eta), the guide resistance f credited, eta = 0.9 dividing.  weight m g, friction f [N]; lead
+    [m]."""
     return max(weight - friction, 0.0) * lead / (2 * math.pi * ETA_THK)
 
 
@@ -709,12 +730,13 @@ def drive_rows(
     red=None,
     unit_inertia=None,
 ):
-    """Inertia ratio (T-GC A-718 with J = m D^2 / 8 of the nominal diameter, FANUC/HIWIN F 3.20), RMS torque
-    (T-GC A-734/A-746: T_rms = sqrt(sum T_i^2 t_i / sum t_i) <= rated) and the holding torque at a stop on a
-    vertical axis (T-GC A-745: T_s = (m g - f) P_h / (2 pi eta)).  A reduction row ``red`` (catalogs/
-    reductions.csv) gives i, eta_G and its input inertia (T-GC A-717..A-720 with A = 1/i: J_load / i^2 + J_G on
-    the motor, T_motor = T_out / (i eta_G)) and its rows (:func:`reduction_rows`); a rotating-nut unit's printed
-    inertia ``unit_inertia`` [kg.m^2] (T-GC B-721) takes the place of the standing screw's."""
+    """Inertia ratio (T-GC A-718 with J = m D^2 / 8 of the nominal diameter, FANUC/HIWIN F 3.20),
+    RMS torque (T-GC A-734/A-746: T_rms = sqrt(sum T_i^2 t_i / sum t_i) <= rated) and the holding
+    torque at a stop on a vertical axis (T-GC A-745: T_s = (m g - f) P_h / (2 pi eta)).  A reduction
+    row ``red`` (catalogs/ reductions.csv) gives i, eta_G and its input inertia (T-GC A-717..A-720
+    with A = 1/i: J_load / i^2 + J_G on the motor, T_motor = T_out / (i eta_G)) and its rows
+    (:func:`reduction_rows`); a rotating-nut unit's printed inertia ``unit_inertia`` [kg.m^2] (T-GC
+    B-721) takes the place of the standing screw's."""
     # the per-vendor servo and gearbox rules (imports this module: here, not on top)
     import vendor_rules as vr
 
@@ -745,13 +767,16 @@ def drive_rows(
             "",
             "T-GC A-718 (J = m D^2/8, D outer), H-BS F 3.20",
             (
-                f"screw {j_screw * 1e4:.1f} kg.cm^2 (nominal {d0 * 1e3:.0f} mm over the span {ax.span * 1e3:.0f} mm,"
+                f"screw {j_screw * 1e4:.1f} kg.cm^2 (nominal {d0 * 1e3:.0f} mm over the span "
+                f"{ax.span * 1e3:.0f} mm,"
                 " journals not known)"
                 if unit_inertia is None
-                else f"rotating-nut unit {j_screw * 1e4:.1f} kg.cm^2 (THK's printed J, T-GC B-721), screw standing"
+                else f"rotating-nut unit {j_screw * 1e4:.1f} kg.cm^2 (THK's printed J, T-GC "
+                "B-721), screw standing"
             )
             + (
-                f"; reduction i {i:g}, its input J {ax.red_inertia * 1e4:.2f} kg.cm^2 (A-718, A = 1/i)"
+                f"; reduction i {i:g}, its input J {ax.red_inertia * 1e4:.2f} kg.cm^2 (A-718, A = "
+                "1/i)"
                 if red
                 else ""
             )
@@ -841,10 +866,9 @@ def drive_rows(
         )
     if red:
         # the feed thrust at feed speed (axis.axial_load) and the mean thrust (axis.mean_axial_load)
-        # as steady
-        # output torques: the largest output torque is the larger of the cycle's and the thrust's,
-        # the continuous
-        # one the larger of the cycle's RMS and the mean thrust's (T-GC A-725/A-733, eta 0.9)
+        # as steady output torques: the largest output torque is the larger of the cycle's and the
+        # thrust's, the continuous one the larger of the cycle's RMS and the mean thrust's (T-GC
+        # A-725/A-733, eta 0.9)
         steady = [
             (f + friction + w_rest) * lead / (2 * math.pi * ETA_THK) + drag
             for f in (ax.axial_load, ax.mean_load)
@@ -869,11 +893,11 @@ def drive_rows(
 
 
 def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
-    """A planetary gearbox by Beckhoff's data (AG2400 'Mechanical data'): T2B, 'maximum acceleration torque,
-    maximum 1000 cycles per hour' >= the cycle's largest output torque; T2N, 'nominal output torque' >= the
-    cycle's RMS output torque; n1Max >= the largest input (motor) speed.  Torques [N.m], speed [rpm].  And
-    Beckhoff's commissioning rule (AG2300 manual, 'Commissioning', :data:`BECKHOFF_COMMISSIONING`) as an INFO row:
-    :func:`gearbox_current_limits`."""
+    """A planetary gearbox by Beckhoff's data (AG2400 'Mechanical data'): T2B, 'maximum acceleration
+    torque, maximum 1000 cycles per hour' >= the cycle's largest output torque; T2N, 'nominal output
+    torque' >= the cycle's RMS output torque; n1Max >= the largest input (motor) speed.  Torques
+    [N.m], speed [rpm].  And Beckhoff's commissioning rule (AG2300 manual, 'Commissioning',
+    :data:`BECKHOFF_COMMISSIONING`) as an INFO row: :func:`gearbox_current_limits`."""
     t2b, t2n, n1 = red["accel_torque"], red["rated_torque"], red["max_input_speed"] * 60
     src = f"Beckhoff AG2400 mechanical data ({red['id']})"
 
@@ -894,8 +918,8 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             *theirs("reduction_accel_torque"),
             "",
             src + ": T2B, max. 1000 cycles/h",
-            "the larger of the cycle's (screw torque, eta 0.9, + load-side J x alpha, trapezoidal moves) and "
-            "the feed thrust's (axis.axial_load + friction)",
+            "the larger of the cycle's (screw torque, eta 0.9, + load-side J x alpha, trapezoidal "
+            "moves) and the feed thrust's (axis.axial_load + friction)",
         ),
         Row(
             "reduction T2N / RMS output torque",
@@ -906,8 +930,8 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             *theirs("reduction_rated_torque"),
             "",
             src + ": T2N nominal output torque",
-            "the larger of the drive cycle's RMS (the duty cycle, else the rapid over the stroke and back) and "
-            "the mean thrust's (axis.mean_axial_load + friction)",
+            "the larger of the drive cycle's RMS (the duty cycle, else the rapid over the stroke "
+            "and back) and the mean thrust's (axis.mean_axial_load + friction)",
         ),
         Row(
             "reduction n1Max / motor speed",
@@ -928,8 +952,8 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             None,
             None,
             "INFO",
-            "Beckhoff AG2300 'Commissioning': limit peak (rated) current to T2B / (M_pmax i) (T2N / (M i)); "
-            + BECKHOFF_COMMISSIONING,
+            "Beckhoff AG2300 'Commissioning': limit peak (rated) current to T2B / (M_pmax i) (T2N "
+            "/ (M i)); " + BECKHOFF_COMMISSIONING,
             f"peak current limit {100 * peak:.0f} %, rated current limit {100 * rated:.0f} % "
             "(rated torque in place of Beckhoff's M0)",
         ),
@@ -937,24 +961,27 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
 
 
 def gearbox_current_limits(m_peak, m_rated, ratio, t2b, t2n):
-    """Beckhoff's current limits for a motor on a gearbox (AG2300 manual, 'Commissioning'): the motor torque times i
-    must not exceed the gearbox's, else the current is limited to the fraction T2B / (M_pmax i) (peak) and
-    T2N / (M0 i) (rated), at most 1.  Torques [N.m].  Returns (peak, rated) fractions."""
+    """Beckhoff's current limits for a motor on a gearbox (AG2300 manual, 'Commissioning'): the
+    motor torque times i must not exceed the gearbox's, else the current is limited to the fraction
+    T2B / (M_pmax i) (peak) and T2N / (M0 i) (rated), at most 1.  Torques [N.m].  Returns (peak,
+    rated) fractions."""
     return min(1.0, t2b / (m_peak * ratio)), min(1.0, t2n / (m_rated * ratio))
 
 
 def nut_rotation_speed_limit(d0, dn_limit):
-    """Permissible speed of a rotating nut [rpm] by THK's DN rule (T-GC A-697: D n <= 70 000, D the ball centre
-    diameter [mm]) applied to the nut's rotation; the screw row stores 70 000 d0 / D, so D = 70 000 d0 / dn_limit.
-    A standing screw has no critical speed (T-GC A-772..A-774: the nut turns, the shaft does not)."""
+    """Permissible speed of a rotating nut [rpm] by THK's DN rule (T-GC A-697: D n <= 70 000, D the
+    ball centre diameter [mm]) applied to the nut's rotation; the screw row stores 70 000 d0 / D, so
+    D = 70 000 d0 / dn_limit.  A standing screw has no critical speed (T-GC A-772..A-774: the nut
+    turns, the shaft does not)."""
     dp = 70000.0 * d0 / dn_limit
     return 70000.0 / dp, dp
 
 
 def unit_bearing_life_h(ca, phases, fw, nm):
-    """L10 life of a rotating-nut unit's support bearing [h]: L = (Ca / (fw F_m))^3 x 10^6 rev (ball bearing; T-GC
-    B-720 sends the DIR/BLR service life to A-704), F_m the cubic mean of the axial load by revolutions (A-730),
-    L_h = L / (60 N_m), N_m the mean nut speed [rpm].  ca [N] (the DIR/BLR table's support-bearing Ca, B-721)."""
+    """L10 life of a rotating-nut unit's support bearing [h]: L = (Ca / (fw F_m))^3 x 10^6 rev (ball
+    bearing; T-GC B-720 sends the DIR/BLR service life to A-704), F_m the cubic mean of the axial
+    load by revolutions (A-730), L_h = L / (60 N_m), N_m the mean nut speed [rpm].  ca [N] (the
+    DIR/BLR table's support-bearing Ca, B-721)."""
     dist = sum(p.dist for p in phases if p.sign)
     fm = (sum(abs(p.load) ** 3 * p.dist for p in phases if p.sign) / dist) ** (1 / 3)
     return (ca / (fw * fm)) ** 3 * 1e6 / (60 * nm)
@@ -969,21 +996,25 @@ SAG_K = {
 
 
 def screw_sag(mass_per_length, d1, span, mounting):
-    """Own-weight sag of a horizontal screw [m]: delta = q L^4 / (k E I), q = m' g, I = pi d1^4 / 64 (root diameter),
-    k 8 cantilever, 185 propped cantilever, 384 both ends fixed, 384/5 simply supported (AISC Steel Construction
-    Manual Table 3-23 cases 22, 12, 15, 1; E 206 GPa, T-GC A-694).  mass_per_length [kg/m]; d1, span [m]."""
+    """Own-weight sag of a horizontal screw [m]: delta = q L^4 / (k E I), q = m' g, I = pi d1^4 / 64
+    (root diameter), k 8 cantilever, 185 propped cantilever, 384 both ends fixed, 384/5 simply
+    supported (AISC Steel Construction Manual Table 3-23 cases 22, 12, 15, 1; E 206 GPa, T-GC
+    A-694).  mass_per_length [kg/m]; d1, span [m]."""
     i_sec = math.pi * d1**4 / 64
     return mass_per_length * G * span**4 / (SAG_K[mounting] * E_THK * 1e6 * i_sec)
 
 
 def counterbalance_weights(cb, head_weight):
-    """The weight a counterbalanced vertical head leaves on the screw [N], by direction (+1 rising, -1 lowering, 0
-    at rest), and the mass moving with the head besides it [kg].  A counterweight M_c on a chain of efficiency
-    eta_c: Mitsubishi MR-J2S-A 11 (eq. 11-18..21) and Yaskawa Sigma-7 11.2.1 take the unbalanced load as
-    (M - M_c) g; the chain's friction opposes the motion, so it balances M_c g eta_c rising and M_c g / eta_c
-    lowering (at rest M_c g); the counterweight and its chain accelerate with the head (Yaskawa: J_L with
-    M + M_c).  A balance cylinder F(x) = F_0 .. F_1 over the stroke, pressure tolerance +/- t: the end of its
-    range that leaves the screw the largest net weight, in every phase; its piston moves with the head."""
+    """The weight a counterbalanced vertical head leaves on the screw [N], by direction (+1 rising,
+    -1 lowering, 0 at rest), and the mass moving with the head besides it [kg].  A counterweight M_c
+    on a chain of efficiency
+    eta_c: Mitsubishi MR-J2S-A 11 (eq. 11-18..21) and Yaskawa Sigma-7 11.2.1 take the unbalanced
+    load as (M - M_c) g; the chain's friction opposes the motion, so it balances M_c g eta_c rising
+    and M_c g / eta_c lowering (at rest M_c g); the counterweight and its chain accelerate with the
+    head (Yaskawa: J_L with
+    M + M_c).  A balance cylinder F(x) = F_0 .. F_1 over the stroke, pressure tolerance +/- t: the
+    end of its range that leaves the screw the largest net weight, in every phase; its piston moves
+    with the head."""
     kind = cb.get("kind", "none")
     if kind == "counterweight":
         mc, eta = quantity(cb["mass"]), float(cb.get("efficiency", 0.95))
@@ -1003,9 +1034,10 @@ def counterbalance_weights(cb, head_weight):
 
 
 def twin_side(tw, bridge, nut_mass, block_mass_total):
-    """A twin-drive gantry's governing side (statics of a beam on two supports, the cross carriage at the end of
-    its stroke nearest the side): force share r = 1/2 + s/2L, and the side's moving mass m/2 + m_c s/2L of the
-    whole m (bridge, cross carriage, both nuts, the blocks).  Returns (r, side mass, whole mass) [-, kg, kg]."""
+    """A twin-drive gantry's governing side (statics of a beam on two supports, the cross carriage
+    at the end of its stroke nearest the side): force share r = 1/2 + s/2L, and the side's moving
+    mass m/2 + m_c s/2L of the whole m (bridge, cross carriage, both nuts, the blocks).  Returns (r,
+    side mass, whole mass) [-, kg, kg]."""
     span, s = quantity(tw["span"]), quantity(tw["cross_stroke"])
     mc = quantity(tw.get("cross_mass", 0.0))
     whole = bridge + mc + 2 * nut_mass + block_mass_total
@@ -1013,8 +1045,8 @@ def twin_side(tw, bridge, nut_mass, block_mass_total):
 
 
 def lead_band_um(grade: str, travel: float) -> float | None:
-    """e_p + v_u [um] of THK A-678 Table 1 (catalogs/lead_tolerances.csv, C0-C5) for the band holding
-    ``travel`` [m]; None for a grade or travel the table does not hold."""
+    """e_p + v_u [um] of THK A-678 Table 1 (catalogs/lead_tolerances.csv, C0-C5) for the band
+    holding ``travel`` [m]; None for a grade or travel the table does not hold."""
     mm = travel * 1e3
     with open(
         Path(__file__).resolve().parents[1] / "catalogs" / "lead_tolerances.csv", encoding="utf-8"

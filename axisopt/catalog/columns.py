@@ -1,7 +1,8 @@
-"""The part columns, declared once: each table's columns with their unit kind, the model parameter they feed,
-positive / optional / estimated, the allowed choices and the provenance columns (:data:`COLUMNS`), and the rules
-one part row must keep (:func:`row_problem`: the one validation of catalog rows and of parts written inline in
-a design).  The reader of ``catalogs/*.csv`` is :mod:`.loading`.
+"""The part columns, declared once: each table's columns with their unit kind, the model parameter
+they feed, positive / optional / estimated, the allowed choices and the provenance columns
+(:data:`COLUMNS`), and the rules one part row must keep (:func:`row_problem`: the one validation of
+catalog rows and of parts written inline in a design).  The reader of ``catalogs/*.csv`` is
+:mod:`.loading`.
 """
 
 from __future__ import annotations
@@ -20,22 +21,27 @@ SHIPPED_DIR = Path(__file__).resolve().parent.parent.parent / "catalogs"
 class Column:
     """One column of a part table: how the loader reads it and which model parameter it feeds.
 
-    kind      : "str" (text), "int" (a count) or a :data:`axisopt.units.KINDS` kind (the header's unit converts)
-    param     : the model parameter (:data:`axisopt.model.PARAM_NAMES`) the value goes to as it is; None for a
-                column the model does not read, or reads through a rule (see ``model.params.axis_params``)
-    positive  : must be > 0 (stiffness and the geometry the physics divides by); every other number >= 0
+    kind      : "str" (text), "int" (a count) or a :data:`axisopt.units.KINDS` kind (the header's
+                unit converts)
+    param     : the model parameter (:data:`axisopt.model.PARAM_NAMES`) the value goes to as it is;
+                None for a column the model does not read, or reads through a rule (see
+                ``model.params.axis_params``)
+    positive  : must be > 0 (stiffness and the geometry the physics divides by); every other number
+                >= 0
     optional  : the cell may be empty where the vendor lists no value (read as NaN)
-    estimate  : for an optional column the model reads: what stands in where the cell is empty (an estimated,
-                not a vendor, value; results say when it binds)
-    estimated_when : row statuses (``status`` column) whose value in this column is not the vendor's table
-                (derived by a rule or illustrative, catalogs/SOURCES.md); ``estimated_how`` says how
-    derived_marker : a row whose ``source`` names this value as derived (``'<marker> ... derived'`` within
-                one ``;``-separated part) holds an estimate here whatever its status
+    estimate  : for an optional column the model reads: what stands in where the cell is empty (an
+                estimated, not a vendor, value; results say when it binds)
+    estimated_when : row statuses (``status`` column) whose value in this column is not the vendor's
+                table (derived by a rule or illustrative, catalogs/SOURCES.md); ``estimated_how``
+                says how
+    derived_marker : a row whose ``source`` names this value as derived (``'<marker> ... derived'``
+                within one ``;``-separated part) holds an estimate here whatever its status
     at_most   : the largest meaningful value in SI (an efficiency: 1), or None
-    blank     : for an optional column that is no estimate: what an empty cell (or the column left out of the
-                header) means, e.g. the nut's ``rotating`` flag (empty: a nut on a rotating screw)
-    applies   : a flag column of the same table: this column means something (and its estimate stands in)
-                only on rows whose flag is 1 (the driven rotating-nut unit's columns)
+    blank     : for an optional column that is no estimate: what an empty cell (or the column left
+                out of the header) means, e.g. the nut's ``rotating`` flag (empty: a nut on a
+                rotating screw)
+    applies   : a flag column of the same table: this column means something (and its estimate
+                stands in) only on rows whose flag is 1 (the driven rotating-nut unit's columns)
     """
 
     name: str
@@ -52,7 +58,8 @@ class Column:
     applies: str = ""
 
     def estimated_in(self, status: str, source: str = "") -> str:
-        """How this column's value is estimated in a row of ``status`` and ``source`` ('' : the vendor's)."""
+        """How this column's value is estimated in a row of ``status`` and ``source`` ('' : the
+        vendor's)."""
         if status in self.estimated_when:
             return self.estimated_how or f"{status} row, catalogs/SOURCES.md"
         if self.derived_marker and source:
@@ -71,8 +78,8 @@ def _c(name, kind, param=None, **kw) -> Column:
 
 
 # Where a catalog value is not the vendor's (catalogs/SOURCES.md): every price is illustrative;
-# rigidity is
-# derived in 'stiffness-derived' and 'derived' rows, ratings and preload in 'derived' rows.
+# rigidity is derived in 'stiffness-derived' and 'derived' rows, ratings and preload in 'derived'
+# rows.
 _CATALOG_ROWS = ("vendor", "stiffness-derived", "paper", "derived")
 _PRICE = {
     "estimated_when": _CATALOG_ROWS,
@@ -83,15 +90,15 @@ _DERIVED = {"estimated_when": ("derived",)}
 _TEXT = ("id", "vendor", "series")
 _UNIT = {"optional": True, "applies": "rotating", "positive": True}
 # the rotating-nut unit's own values (read through rules in model.params.rotating_nut_params):
-# required on a
-# rotating row (row_problem) except where an estimate stands in
+# required on a rotating row (row_problem) except where an estimate stands in
 _UNIT_COLUMNS = (
     _c("unit_inertia", "inertia", **_UNIT),
     _c(
         "unit_max_speed",
         "angular_speed",
         **_UNIT,
-        estimate="the screw vendor's DN rule for the nut's rotation, DN limit / d (THK A-697; H-BS 3.7.6)",
+        estimate="the screw vendor's DN rule for the nut's rotation, DN limit / d (THK A-697; H-BS "
+        "3.7.6)",
     ),
     _c("unit_bearing_dynamic_load", "force", **_UNIT),
     _c("unit_bearing_static_load", "force", **_UNIT),
@@ -99,7 +106,8 @@ _UNIT_COLUMNS = (
         "unit_bearing_rigidity",
         "stiffness",
         **_UNIT,
-        estimate="11.2 N/um per kN of the unit bearing's Ca, the lowest of the ZKLF rows (H-BS 8.8.2)",
+        estimate="11.2 N/um per kN of the unit bearing's Ca, the lowest of the ZKLF rows (H-BS "
+        "8.8.2)",
     ),
     _c(
         "unit_starting_torque",
@@ -142,11 +150,10 @@ COLUMNS = MappingProxyType(
             _c("mass", "mass", "nut_mass"),
             _c("price", "money", "nut_price", **_PRICE),
             # a driven rotating-nut unit (THK DIR/BLR, HIWIN AME): the nut turns in its own support
-            # bearing on a
-            # stationary screw fixed at both ends (model.checks.unit_checks); the unit columns apply
-            # to its rows only
-            # the nut body's length: the lead band is taken over the thread the nut travels,
-            # stroke + this length (physics.accuracy, model.params.grade_params)
+            # bearing on a stationary screw fixed at both ends (model.checks.unit_checks); the unit
+            # columns apply to its rows only the nut body's length: the lead band is taken over the
+            # thread the nut travels, stroke + this length (physics.accuracy,
+            # model.params.grade_params)
             _c(
                 "length",
                 "length",
@@ -173,7 +180,8 @@ COLUMNS = MappingProxyType(
                 "force",
                 "bearing_lift_off",
                 estimated_when=_CATALOG_ROWS,
-                estimated_how="2.83 x preload (DB/DF/DFF, SKF-LF) or 2.08 x preload (DBD), catalogs/SOURCES.md",
+                estimated_how="2.83 x preload (DB/DF/DFF, SKF-LF) or 2.08 x preload (DBD), "
+                "catalogs/SOURCES.md",
             ),
             # DFT
             _c(
@@ -182,16 +190,16 @@ COLUMNS = MappingProxyType(
                 optional=True,
                 positive=True,
                 estimated_when=_CATALOG_ROWS,
-                estimated_how="Hertz set rule, 8.49 x the DB pair's preload for 3 against 1 (IBC Table 2.2)",
-                blank="the set lifts off at lift_off_load both ways (the weaker direction's value: conservative)",
+                estimated_how="Hertz set rule, 8.49 x the DB pair's preload for 3 against 1 (IBC "
+                "Table 2.2)",
+                blank="the set lifts off at lift_off_load both ways (the weaker direction's value: "
+                "conservative)",
             ),
             _c("dynamic_load_rating", "force", "bearing_dynamic_load", positive=True, **_DERIVED),
             # the static (or limiting, or permissible) axial rating of the rows carrying the
-            # stronger direction, and
-            # the least static safety its vendor asks on it (physics.bearings: NSK/HIWIN WBK
-            # limiting load 1/0.7,
-            # THK permissible load 1); empty: a true C0a with no vendor figure, Rexroth's machine-
-            # tool S0 >= 4
+            # stronger direction, and the least static safety its vendor asks on it
+            # (physics.bearings: NSK/HIWIN WBK limiting load 1/0.7, THK permissible load 1); empty:
+            # a true C0a with no vendor figure, Rexroth's machine-tool S0 >= 4
             _c("static_load_rating", "force", "bearing_static_load", positive=True),
             _c(
                 "static_safety",
@@ -238,15 +246,15 @@ COLUMNS = MappingProxyType(
             _c("dynamic_load_rating", "force", "guide_dynamic_load", positive=True, **_DERIVED),
             _c("static_load_rating", "force", "guide_static_load", positive=True),
             # the travel the dynamic rating is defined for: 50 km (THK, HIWIN, IKO, NBS ball blocks;
-            # IKO roller
-            # blocks too) or 100 km (THK, HIWIN roller blocks, ISO 14728-1); catalogs/SOURCES.md per
-            # vendor
+            # IKO roller blocks too) or 100 km (THK, HIWIN roller blocks, ISO 14728-1);
+            # catalogs/SOURCES.md per vendor
             _c(
                 "rating_distance",
                 "distance",
                 positive=True,
                 optional=True,
-                estimate="50 km, the shorter of the two rating bases (never kinder than the vendor's)",
+                estimate="50 km, the shorter of the two rating bases (never kinder than the "
+                "vendor's)",
             ),
             _c("friction_force", "force", "guide_friction_force"),
             _c("friction_coefficient", "dimensionless", "guide_friction_coefficient"),
@@ -259,8 +267,8 @@ COLUMNS = MappingProxyType(
                 "rail_price_per_length", "money_per_length", "guide_rail_price_per_length", **_PRICE
             ),
             # static permissible moments of one block (vendor tables: HIWIN MR/MP/MY, IKO T0/TX/TY,
-            # NBS M0X/M0Z/M0Y):
-            # the block-load method needs them for one block per rail or one rail (THK K = C0 / M)
+            # NBS M0X/M0Z/M0Y): the block-load method needs them for one block per rail or one rail
+            # (THK K = C0 / M)
             _c("moment_roll", "torque", "guide_moment_roll", positive=True),
             _c("moment_pitch", "torque", "guide_moment_pitch", positive=True),
             _c("moment_yaw", "torque", "guide_moment_yaw", positive=True),
@@ -281,8 +289,8 @@ COLUMNS = MappingProxyType(
             _c("flange", "length", optional=True),
             _c("price", "money", "motor_price", **_PRICE),
             # intermittent (peak) zone of the vendor's torque-speed curve: peak torque flat up to
-            # the corner speed,
-            # then falling linearly to its value at max speed (physics.drive.peak_torque_available)
+            # the corner speed, then falling linearly to its value at max speed
+            # (physics.drive.peak_torque_available)
             _c(
                 "peak_corner_speed",
                 "angular_speed",
@@ -319,11 +327,9 @@ COLUMNS = MappingProxyType(
             _c("price", "money", "coupling_price", **_PRICE),
         ),
         # Reductions between motor and coupling (planetary gearbox on the motor flange, or a belt
-        # stage), optional:
-        # ratio = motor turns per output turn; inertia at the input (the motor shaft); the torques,
-        # the torsional
-        # stiffness and the backlash on the output side (Beckhoff AG2400/AG3400: T2N, T2B, Ct21, jt;
-        # n1Max)
+        # stage), optional: ratio = motor turns per output turn; inertia at the input (the motor
+        # shaft); the torques, the torsional stiffness and the backlash on the output side (Beckhoff
+        # AG2400/AG3400: T2N, T2B, Ct21, jt; n1Max)
         "reductions": (
             *(_c(n, "str") for n in _TEXT),
             _c("kind", "str"),
@@ -335,9 +341,8 @@ COLUMNS = MappingProxyType(
             _c("rated_torque", "torque", "reduction_rated_torque", positive=True),
             _c("accel_torque", "torque", "reduction_accel_torque", positive=True),
             # the emergency-stop torque (Beckhoff AG2400 "T2Em.stop ... 1000 times during the
-            # service life"): what the
-            # motor's peak (or the drive's torque limit) through the ratio may reach at a collision
-            # or an E-stop
+            # service life"): what the motor's peak (or the drive's torque limit) through the ratio
+            # may reach at a collision or an E-stop
             _c(
                 "emergency_torque",
                 "torque",
@@ -374,12 +379,10 @@ SCHEMA = MappingProxyType(
 )
 
 # Columns that must be > 0 and columns whose cell may be left empty (read as NaN; the model then
-# uses the
-# column's ``estimate``, e.g. seed eq. 40 for a bearing set without a listed starting torque);
-# derived from
-# :data:`COLUMNS`.  Every other number of every table must not be negative (no part has a negative
-# mass, price,
-# play or friction); catalog rows and inline parts go through the same :func:`row_problem`.
+# uses the column's ``estimate``, e.g. seed eq. 40 for a bearing set without a listed starting
+# torque); derived from :data:`COLUMNS`.  Every other number of every table must not be negative (no
+# part has a negative mass, price, play or friction); catalog rows and inline parts go through the
+# same :func:`row_problem`.
 _POSITIVE = {t: tuple(c.name for c in cols if c.positive) for t, cols in COLUMNS.items()}
 OPTIONAL_COLUMNS = MappingProxyType(
     {
@@ -407,9 +410,8 @@ _AT_MOST = {
     for t, cols in COLUMNS.items()
 }
 # Screw-end sets of 60-degree bearings: DB/DF pairs, DBD/DFD (2 against 1), DBB/DFF (2 against 2),
-# DBT/DFT (3
-# against 1), as (rows of the stronger direction, the other's); vendors rate the stronger (NSK TAC
-# B, HIWIN WBK)
+# DBT/DFT (3 against 1), as (rows of the stronger direction, the other's); vendors rate the stronger
+# (NSK TAC B, HIWIN WBK)
 ARRANGEMENT_ROWS = MappingProxyType(
     {
         "DB": (1, 1),
@@ -433,8 +435,7 @@ CHOICES = {
 }
 TABLES = ("screws", "nuts", "bearings", "guides", "motors", "couplings", "reductions")
 # the part slots of a design, declared once (one per table, in TABLES' order): the mechanical parts,
-# then the
-# drive's (design.axis.PART_SLOTS, the problem's restrictions)
+# then the drive's (design.axis.PART_SLOTS, the problem's restrictions)
 MECH_SLOTS = ("screw", "nut", "bearing", "guide")
 DRIVE_SLOTS = ("motor", "coupling", "reduction")
 PART_SLOTS = MECH_SLOTS + DRIVE_SLOTS
@@ -444,8 +445,8 @@ SLOT_TABLES = tuple(zip(PART_SLOTS, TABLES))
 
 def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
     """The first thing wrong with one part of table ``name`` (numbers in SI, optional cells NaN), as
-    (column, message), or None.  The one validation of catalog rows (:func:`load_catalogs`) and of parts
-    written inline in a design (:func:`axisopt.design.inline_part`)."""
+    (column, message), or None.  The one validation of catalog rows (:func:`load_catalogs`) and of
+    parts written inline in a design (:func:`axisopt.design.inline_part`)."""
     from ..units import PLAUSIBLE_MAX, PLAUSIBLE_MIN
 
     for col, kind in SCHEMA[name].items():
@@ -484,8 +485,8 @@ def row_problem(name: str, rec: dict) -> tuple[str, str] | None:
 
 
 def _unit_problem(rec: dict) -> tuple[str, str] | None:
-    """A nut's ``rotating`` flag is 0 or 1 (empty: 0); a rotating-nut unit fills the unit columns no estimate
-    stands in for (:data:`UNIT_REQUIRED`)."""
+    """A nut's ``rotating`` flag is 0 or 1 (empty: 0); a rotating-nut unit fills the unit columns no
+    estimate stands in for (:data:`UNIT_REQUIRED`)."""
     flag = rec.get("rotating", math.nan)
     if flag == 1:
         missing = [c for c in UNIT_REQUIRED if math.isnan(rec.get(c, math.nan))]

@@ -1,18 +1,20 @@
-"""Lead accuracy grades of ball screws (JIS B 1192 / ISO 3408 C0-C10): the tolerance tables, the grades each
-screw series is made in, and the illustrative price factor of a grade.
+"""Lead accuracy grades of ball screws (JIS B 1192 / ISO 3408 C0-C10): the tolerance tables, the
+grades each screw series is made in, and the illustrative price factor of a grade.
 
 Three shipped tables (catalogs/SOURCES.md):
 
-* ``catalogs/lead_tolerances.csv``: the representative travel deviation e_p and the variation v_u of grades
-  C0-C5 by useful travel (THK General Catalog A-678 Table 1, JIS B 1192-1997);
-* ``catalogs/lead_grades.csv``: per grade, the variation over 300 mm and per turn (v_300, v_2pi; A-678 Table 2),
-  the travel error per 300 mm of the grades C7-C10 (A-678 Table 1), HIWIN's standard axial play of a grade (HIWIN
-  S99TE20 Table 4.4) and the price factor on the screw shaft's price (illustrative, like every price);
-* ``catalogs/screw_grades.csv``: the grades each (vendor, series) of ``screws.csv`` is made in (THK A-678 Table 3:
-  precision C0-C7, rolled C7-C10; HIWIN S99TE20 Table 4.2: ground C0-C6; Rexroth P1/P3/P5).
+* ``catalogs/lead_tolerances.csv``: the representative travel deviation e_p and the variation v_u of
+  grades C0-C5 by useful travel (THK General Catalog A-678 Table 1, JIS B 1192-1997);
+* ``catalogs/lead_grades.csv``: per grade, the variation over 300 mm and per turn (v_300, v_2pi;
+  A-678 Table 2), the travel error per 300 mm of the grades C7-C10 (A-678 Table 1), HIWIN's standard
+  axial play of a grade (HIWIN S99TE20 Table 4.4) and the price factor on the screw shaft's price
+  (illustrative, like every price);
+* ``catalogs/screw_grades.csv``: the grades each (vendor, series) of ``screws.csv`` is made in (THK
+  A-678 Table 3: precision C0-C7, rolled C7-C10; HIWIN S99TE20 Table 4.2: ground C0-C6; Rexroth
+  P1/P3/P5).
 
-The tables are read once (:func:`grade_table`); a bad cell is a one-line error naming the file, line and column.
-Lengths leave in SI (m).
+The tables are read once (:func:`grade_table`); a bad cell is a one-line error naming the file, line
+and column.  Lengths leave in SI (m).
 """
 
 from __future__ import annotations
@@ -57,7 +59,8 @@ _SERIES_HEADER = ("vendor", "series", "grades", "source")
 
 @dataclass(frozen=True)
 class Grade:
-    """One lead accuracy grade: its tolerances [m] (NaN where the grade has none) and price factor [-]."""
+    """One lead accuracy grade: its tolerances [m] (NaN where the grade has none) and price factor
+    [-]."""
 
     name: str
     variation_300: float  # v_300 [m] (C0-C5)
@@ -71,7 +74,8 @@ class Grade:
 
 @dataclass(frozen=True)
 class GradeTable:
-    """The shipped grades, in the order of the table (most accurate first), and the grades of each series."""
+    """The shipped grades, in the order of the table (most accurate first), and the grades of each
+    series."""
 
     grades: MappingProxyType  # name -> Grade
     series: MappingProxyType  # (vendor, series) -> tuple of grade names
@@ -87,14 +91,15 @@ class GradeTable:
         return g
 
     def orderable(self, vendor: str, series: str) -> tuple:
-        """The grades a screw of this vendor and series is made in (a series not listed: the precision grades)."""
+        """The grades a screw of this vendor and series is made in (a series not listed: the
+        precision grades)."""
         return self.series.get((vendor, series), PRECISION_GRADES)
 
     def lead_error(self, name: str, travel: float) -> float:
         """The largest lead (travel) error of grade ``name`` over ``travel`` [m]
-        (:func:`axisopt.physics.accuracy.lead_error`): e_p + v_u of the band holding the travel for C0-C5, the
-        error per 300 mm scaled to the travel (at least one 300 mm) for C7-C10.  NaN where the grade's table stops
-        short of the travel (THK lists no C0 beyond 1600 mm)."""
+        (:func:`axisopt.physics.accuracy.lead_error`): e_p + v_u of the band holding the travel for
+        C0-C5, the error per 300 mm scaled to the travel (at least one 300 mm) for C7-C10.  NaN
+        where the grade's table stops short of the travel (THK lists no C0 beyond 1600 mm)."""
         from ..physics.accuracy import lead_error_per_300, lead_error_tolerance
 
         g = self.grade(name)
@@ -106,11 +111,12 @@ class GradeTable:
         return math.nan
 
     def compensated_error(self, name: str, travel: float) -> float:
-        """The lead error left after pitch-error compensation [m]: the controller's table removes the
-        representative travel line's deviation e_p (THK A-677 Fig. 1: what ISO 230-2's compensation measures),
-        not the fluctuation v_u about it, which is what remains for C0-C5; for C7-C10 (no v_u) the error per
-        300 mm, unscaled (the compensation points are tens of mm apart; within them the error stays).  NaN where
-        the grade's table stops short of the travel."""
+        """The lead error left after pitch-error compensation [m]: the controller's table removes
+        the representative travel line's deviation e_p (THK A-677 Fig. 1: what ISO 230-2's
+        compensation measures), not the fluctuation v_u about it, which is what remains for C0-C5;
+        for C7-C10 (no v_u) the error per 300 mm, unscaled (the compensation points are tens of mm
+        apart; within them the error stays).  NaN where the grade's table stops short of the
+        travel."""
         g = self.grade(name)
         if math.isfinite(g.travel_error_300):
             return float(g.travel_error_300)
@@ -120,14 +126,15 @@ class GradeTable:
         return math.nan
 
     def error_per_300(self, name: str) -> float:
-        """The grade's lead error per 300 mm [m]: v_300 for C0-C5, the travel error per 300 mm for C7-C10."""
+        """The grade's lead error per 300 mm [m]: v_300 for C0-C5, the travel error per 300 mm for
+        C7-C10."""
         g = self.grade(name)
         return g.travel_error_300 if math.isfinite(g.travel_error_300) else g.variation_300
 
     def grade_for(self, accuracy: float, travel: float, names=None) -> str | None:
-        """The least accurate grade of ``names`` (default: all) whose error per 300 mm meets a positioning
-        accuracy (+-) over a travel [m], as THK's selection examples choose it (A-723, A-737:
-        :func:`axisopt.physics.accuracy.required_error_per_300`); None if none does."""
+        """The least accurate grade of ``names`` (default: all) whose error per 300 mm meets a
+        positioning accuracy (+-) over a travel [m], as THK's selection examples choose it (A-723,
+        A-737: :func:`axisopt.physics.accuracy.required_error_per_300`); None if none does."""
         from ..physics.accuracy import required_error_per_300
 
         need = required_error_per_300(accuracy, travel)
@@ -137,7 +144,8 @@ class GradeTable:
         return ok[-1] if ok else None
 
     def cheapest(self, names) -> str:
-        """The grade of ``names`` with the lowest price factor; of equal ones the most accurate (first listed)."""
+        """The grade of ``names`` with the lowest price factor; of equal ones the most accurate
+        (first listed)."""
         names = [n for n in self.names if n in set(names)]
         return min(names, key=lambda n: (self.grades[n].price_factor, self.names.index(n)))
 
@@ -248,9 +256,10 @@ def grade_table() -> GradeTable:
 
 
 def lead_errors(names, travel, compensated: bool = False):
-    """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over ``travel`` [m] (a
-    float, or an array that broadcasts with the names: each row's stroke + nut length) (``compensated``:
-    :meth:`GradeTable.compensated_error`, what pitch-error compensation leaves)."""
+    """:meth:`GradeTable.lead_error` of each grade name of ``names`` (an array of names) over
+    ``travel`` [m] (a float, or an array that broadcasts with the names: each row's stroke + nut
+    length) (``compensated``: :meth:`GradeTable.compensated_error`, what pitch-error compensation
+    leaves)."""
     t = grade_table()
     import numpy as np  # here: `axisopt parts screws` reads the grade tables without numpy
 
@@ -264,8 +273,9 @@ def lead_errors(names, travel, compensated: bool = False):
 
 @dataclass(frozen=True)
 class ScaleGrade:
-    """A linear scale's accuracy grade: +-``accuracy`` per metre of travel (at least one metre: Heidenhain's grade
-    bounds any section up to 1 m) and its read head's repeatability band [m], with the source."""
+    """A linear scale's accuracy grade: +-``accuracy`` per metre of travel (at least one metre:
+    Heidenhain's grade bounds any section up to 1 m) and its read head's repeatability band [m],
+    with the source."""
 
     accuracy: float  # [m per m]
     repeatability: float  # [m], the band (2 x the +- figure); 0 where the vendor states none
@@ -273,13 +283,10 @@ class ScaleGrade:
 
 
 # Linear-scale grades for ``axis.feedback: linear_scale`` (vendor-data-sources-drives.md sec. 7):
-# AMO LMB
-# (amosin.com/lmb-100: "accuracy after linear compensation down to +-3 um/m / +-5 um/m"), HIWIN
-# Positioning
-# Measurement System magnetic scale PS (accuracy at 20 degC +-20 um/m, read head repeatability +-3
-# um).  How a
-# grade reads over a travel: Heidenhain's definition, the extreme values over any section of at most
-# 1 m lie within
+# AMO LMB (amosin.com/lmb-100: "accuracy after linear compensation down to +-3 um/m / +-5 um/m"),
+# HIWIN Positioning Measurement System magnetic scale PS (accuracy at 20 degC +-20 um/m, read head
+# repeatability +-3 um).  How a grade reads over a travel: Heidenhain's definition, the extreme
+# values over any section of at most 1 m lie within
 # +-a (content.heidenhain.de, accuracy grade); a longer travel takes a per metre (conservative).
 SCALE_GRADES = {
     "AMO-LMB-3": ScaleGrade(3e-6, 0.0, "AMO LMB +-3 um/m"),
@@ -289,7 +296,8 @@ SCALE_GRADES = {
 
 
 def scale_error(grade: str, travel: float) -> float:
-    """The scale's largest error over ``travel`` [m]: its grade's +-a per metre, at least one metre's."""
+    """The scale's largest error over ``travel`` [m]: its grade's +-a per metre, at least one
+    metre's."""
     return SCALE_GRADES[grade].accuracy * max(travel, 1.0)
 
 

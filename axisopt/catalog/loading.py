@@ -1,8 +1,9 @@
 """Load and validate part catalogs (``catalogs/*.csv``) into SI pandas tables.
 
-One strict reader (:func:`load_records`, the csv module, no pandas) validates every file; :func:`load_catalogs`
-turns its records into the pandas tables the search uses, and ``axisopt parts`` lists the records as they are
-(its start-up then imports neither pandas nor numpy).
+One strict reader (:func:`load_records`, the csv module, no pandas) validates every file;
+:func:`load_catalogs` turns its records into the pandas tables the search uses, and
+``axisopt parts`` lists the records as they are (its start-up then imports neither pandas nor
+numpy).
 
 Each CSV header carries the vendor's unit (``lead [mm]``); values are converted once here.
 Errors (unknown unit, missing column, duplicate id, non-numeric cell, non-positive stiffness,
@@ -43,12 +44,14 @@ REQUIRED_TABLES = ("screws", "nuts", "bearings", "guides")
 
 class Catalog:
     """The part tables in SI, indexed by part id, plus where each row came from.  ``motors``,
-    ``couplings`` and ``reductions`` (the drive) are empty tables when no catalog directory has them.
+    ``couplings`` and ``reductions`` (the drive) are empty tables when no catalog directory has
+    them.
 
-    Each table is given as a :class:`~axisopt.catalog.parttable.PartTable` (what :func:`load_catalogs` builds, no
-    pandas) or a pandas DataFrame indexed by part id.  ``cat.screws`` (and the other five) is the pandas table
-    (built on first use); :meth:`rows` is the same table without pandas, as the search and the model read it.
-    :meth:`replace` swaps tables (``cat.replace(guides=df)``)."""
+    Each table is given as a :class:`~axisopt.catalog.parttable.PartTable` (what
+    :func:`load_catalogs` builds, no pandas) or a pandas DataFrame indexed by part id.
+    ``cat.screws`` (and the other five) is the pandas table (built on first use); :meth:`rows` is
+    the same table without pandas, as the search and the model read it. :meth:`replace` swaps tables
+    (``cat.replace(guides=df)``)."""
 
     __slots__ = ("_given", "_rows", "_frames")
 
@@ -79,7 +82,8 @@ class Catalog:
         return t
 
     def table(self, name: str) -> pd.DataFrame:
-        """Table ``name`` as a pandas DataFrame indexed by part id (imports pandas; the same object each time)."""
+        """Table ``name`` as a pandas DataFrame indexed by part id (imports pandas; the same object
+        each time)."""
         df = self._frames.get(name)
         if df is None:
             from .parttable import PartTable
@@ -111,8 +115,8 @@ class Catalog:
     def part(
         self, table: str, part_id: str, *, source: str | None = None, key: str | None = None
     ) -> Row:
-        """The row of ``part_id`` in ``table`` as a :class:`~axisopt.catalog.parttable.Row`; an unknown id is a one-line
-        error with the closest id."""
+        """The row of ``part_id`` in ``table`` as a :class:`~axisopt.catalog.parttable.Row`; an
+        unknown id is a one-line error with the closest id."""
         t = self.rows(table)
         i = t.position(part_id)
         if i is None:
@@ -141,8 +145,9 @@ def _closest(word: str, options) -> str | None:
 
 
 def _read_records(path: Path, name: str) -> list[dict]:
-    """The rows of one CSV as validated records in SI (``status`` and ``source`` filled in for a table without
-    them); the first problem raises a one-line :class:`InputError` naming the file, line and column."""
+    """The rows of one CSV as validated records in SI (``status`` and ``source`` filled in for a
+    table without them); the first problem raises a one-line :class:`InputError` naming the file,
+    line and column."""
     schema = SCHEMA[name]
     src = str(path)
     try:
@@ -183,8 +188,7 @@ def _read_records(path: Path, name: str) -> list[dict]:
     ]
     seen = {c.name for c in header_cols}
     # an optional column with an estimate (or a meaning when empty, or one that applies only under a
-    # flag) may be
-    # left out of the header: every row then takes the estimate (is empty)
+    # flag) may be left out of the header: every row then takes the estimate (is empty)
     omitted = [
         c.name
         for c in COLUMNS[name]
@@ -261,9 +265,9 @@ def _read_records(path: Path, name: str) -> list[dict]:
 
 
 class PartRows:
-    """The validated catalog rows as plain records (dicts in SI, keyed by column, plus ``_source``, ``status`` and
-    ``source``), per table in file order: what :func:`load_records` returns and :func:`load_catalogs` builds its
-    pandas tables from."""
+    """The validated catalog rows as plain records (dicts in SI, keyed by column, plus ``_source``,
+    ``status`` and ``source``), per table in file order: what :func:`load_records` returns and
+    :func:`load_catalogs` builds its pandas tables from."""
 
     def __init__(self, tables: dict[str, list[dict]]):
         self._tables = tables
@@ -285,7 +289,8 @@ class PartRows:
 
 
 def load_records(extra_dirs=(), *, shipped: bool = True) -> PartRows:
-    """Read and validate the shipped catalogs and any user catalog directories (later ones add parts), without
+    """Read and validate the shipped catalogs and any user catalog directories (later ones add
+    parts), without
     pandas: every check of :func:`load_catalogs` (which builds its tables from these records)."""
     dirs = ([SHIPPED_DIR] if shipped else []) + [Path(d) for d in extra_dirs]
     tables: dict[str, list[list[dict]]] = {name: [] for name in SCHEMA}
@@ -339,8 +344,9 @@ def load_records(extra_dirs=(), *, shipped: bool = True) -> PartRows:
 
 
 def load_catalogs(extra_dirs=(), *, shipped: bool = True) -> Catalog:
-    """Load the shipped catalogs and any user catalog directories (later ones add parts) as a :class:`Catalog`
-    (its tables are built without pandas; ``cat.screws`` and the others give pandas tables on demand).
+    """Load the shipped catalogs and any user catalog directories (later ones add parts) as a
+    :class:`Catalog` (its tables are built without pandas; ``cat.screws`` and the others give pandas
+    tables on demand).
 
     A user directory may hold any subset of screws/nuts/bearings/guides CSVs.
     """
@@ -354,8 +360,9 @@ _CACHE: dict[tuple, Catalog] = {}
 
 
 def files_state(dirs, names) -> tuple:
-    """What a load reads, as a cache key: each directory's ``<name>.csv`` files with a digest of their bytes
-    (None for an absent one), so an edited, added or removed file is read again, never served stale."""
+    """What a load reads, as a cache key: each directory's ``<name>.csv`` files with a digest of
+    their bytes (None for an absent one), so an edited, added or removed file is read again, never
+    served stale."""
     import hashlib
 
     out = []
@@ -371,8 +378,9 @@ def files_state(dirs, names) -> tuple:
 
 
 def default_catalog(extra_dirs=()) -> Catalog:
-    """Cached :func:`load_catalogs` (the tables are treated as read-only), keyed by the directories and the
-    contents of the files read (:func:`files_state`): a catalog file changed in a running process is reloaded."""
+    """Cached :func:`load_catalogs` (the tables are treated as read-only), keyed by the directories
+    and the contents of the files read (:func:`files_state`): a catalog file changed in a running
+    process is reloaded."""
     dirs = [Path(d).resolve() for d in extra_dirs]
     key = (tuple(map(str, dirs)), files_state([SHIPPED_DIR, *dirs], SCHEMA))
     if key not in _CACHE:

@@ -1,10 +1,11 @@
 """A catalog part shown in the units its vendor quotes: the repr, table and HTML of a
 :class:`~axisopt.catalog.parttable.Row` (which holds SI numbers).
 
-Each column's unit is the one the shipped catalog file declares in its header (``catalogs/nuts.csv``:
-``dynamic_load_rating [kN]``, ``catalogs/motors.csv``: ``rotor_inertia [kg.cm^2]``): the vendor's unit, written
-once, there.  A column no shipped file has takes the display unit of its kind (:data:`axisopt.units.DISPLAY_UNITS`).
-The values are written with ten significant digits, so a shipped row reads as its CSV line does.
+Each column's unit is the one the shipped catalog file declares in its header
+(``catalogs/nuts.csv``: ``dynamic_load_rating [kN]``, ``catalogs/motors.csv``:
+``rotor_inertia [kg.cm^2]``): the vendor's unit, written once, there.  A column no shipped file has
+takes the display unit of its kind (:data:`axisopt.units.DISPLAY_UNITS`).  The values are written
+with ten significant digits, so a shipped row reads as its CSV line does.
 """
 
 from __future__ import annotations
@@ -23,8 +24,9 @@ COLUMNS = ("column", "value", "unit")  # the table of a row (:func:`row_rows`)
 
 @functools.lru_cache(maxsize=None)
 def vendor_units(table: str) -> MappingProxyType:
-    """Column -> (unit, SI per unit) for the numeric columns of ``table`` ('screws', 'nuts' ...): the unit of the
-    shipped catalog file's header, else the display unit of the column's kind; ('', 1.0) for a plain number."""
+    """Column -> (unit, SI per unit) for the numeric columns of ``table`` ('screws', 'nuts' ...):
+    the unit of the shipped catalog file's header, else the display unit of the column's kind; ('',
+    1.0) for a plain number."""
     header = {}
     path = SHIPPED_DIR / f"{table}.csv"
     if path.is_file():
@@ -40,8 +42,8 @@ def vendor_units(table: str) -> MappingProxyType:
 
 
 def table_of(row) -> str | None:
-    """The catalog table (``screws``, ``nuts`` ...) whose required columns ``row`` has (the largest such table);
-    None when none fits."""
+    """The catalog table (``screws``, ``nuts`` ...) whose required columns ``row`` has (the largest
+    such table); None when none fits."""
     fits = [t for t, kinds in SCHEMA.items() if all(c in row for c in kinds if not _optional(t, c))]
     return max(fits, key=lambda t: len(SCHEMA[t]), default=None)
 
@@ -57,8 +59,8 @@ def _figure(v) -> str:
 
 
 def row_rows(row, table: str | None = None) -> list[dict]:
-    """The row as (column, value, unit) records, numbers in vendor units (:func:`vendor_units`; an empty
-    optional cell left out), text as it is; ``table`` defaults to :func:`table_of`."""
+    """The row as (column, value, unit) records, numbers in vendor units (:func:`vendor_units`; an
+    empty optional cell left out), text as it is; ``table`` defaults to :func:`table_of`."""
     table = table or table_of(row)
     units = vendor_units(table) if table is not None else {}
     out = []
@@ -82,7 +84,8 @@ def row_repr(row, table: str | None = None) -> str:
     width = max((len(r["column"]) for r in rows), default=0)
     what = f"{table[:-1]} " if table else ""
     lines = [
-        f"  {r['column']:<{width}}  {_figure(r['value']) if isinstance(r['value'], float) else r['value']}"
+        f"  {r['column']:<{width}}  "
+        f"{_figure(r['value']) if isinstance(r['value'], float) else r['value']}"
         + (f" {r['unit']}" if r["unit"] else "")
         for r in rows
     ]

@@ -1,11 +1,12 @@
 """A part table without pandas: the catalog rows the search and the model read, column by column.
 
-pandas takes about a third of a second to import, more than a whole search of the teaching problem, so the
-paths a designer waits for (``axisopt solve``, ``evaluate``, a study's cases) work on :class:`PartTable`: one
-numpy array per column (float for numbers, object for text) and the part ids.  A row is a :class:`Row`, a dict
-with the part id as ``name`` (what a pandas row offers the model: ``row["lead"]``, ``row.get(...)``,
-``row.name``).  :meth:`PartTable.to_frame` gives the pandas table where one is wanted (``Catalog.screws``, a
-study's tables); :meth:`PartTable.from_frame` takes a pandas table a user built.
+pandas takes about a third of a second to import, more than a whole search of the teaching problem,
+so the paths a designer waits for (``axisopt solve``, ``evaluate``, a study's cases) work on
+:class:`PartTable`: one numpy array per column (float for numbers, object for text) and the part
+ids.  A row is a :class:`Row`, a dict with the part id as ``name`` (what a pandas row offers
+the model: ``row["lead"]``, ``row.get(...)``, ``row.name``).  :meth:`PartTable.to_frame` gives the
+pandas table where one is wanted (``Catalog.screws``, a study's tables);
+:meth:`PartTable.from_frame` takes a pandas table a user built.
 """
 
 from __future__ import annotations
@@ -16,9 +17,10 @@ import numpy as np
 
 
 class Row(dict):
-    """One part: its columns (SI numbers, text) as a dict, the part id as ``name``.  Its repr, ``to_frame()`` and
-    notebook table show the numbers in the units of the vendor's catalog (``dynamic_load_rating 51.3 kN``, the
-    shipped catalog file's header; :mod:`axisopt.catalog.partrow`)."""
+    """One part: its columns (SI numbers, text) as a dict, the part id as ``name``.  Its repr,
+    ``to_frame()`` and notebook table show the numbers in the units of the vendor's catalog
+    (``dynamic_load_rating 51.3 kN``, the shipped catalog file's header;
+    :mod:`axisopt.catalog.partrow`)."""
 
     __slots__ = ("name",)
 
@@ -35,8 +37,9 @@ class Row(dict):
         return dict(self)
 
     def to_frame(self):
-        """pandas DataFrame of the part, one row per column: ``column``, ``value`` (numbers in the unit the
-        vendor's catalog quotes, as the catalog file writes them) and ``unit`` (:mod:`axisopt.catalog.partrow`)."""
+        """pandas DataFrame of the part, one row per column: ``column``, ``value`` (numbers in the
+        unit the vendor's catalog quotes, as the catalog file writes them) and ``unit``
+        (:mod:`axisopt.catalog.partrow`)."""
         from .partrow import row_frame
 
         return row_frame(self)
@@ -63,9 +66,10 @@ def _column(values: list) -> np.ndarray:
 
 
 class PartTable:
-    """Part rows by column.  ``records``: one dict per part, in order; ``names``: the columns (default: the
-    first record's keys); ``ids``: the part ids (default: each record's ``id``).  The rows keep their values as
-    given (``row(i)``); a column is a numpy array built on first use (``t["lead"]``)."""
+    """Part rows by column.  ``records``: one dict per part, in order; ``names``: the columns
+    (default: the first record's keys); ``ids``: the part ids (default: each record's ``id``).  The
+    rows keep their values as given (``row(i)``); a column is a numpy array built on first use
+    (``t["lead"]``)."""
 
     __slots__ = ("_records", "_columns", "_names", "ids", "_pos")
 
@@ -160,7 +164,10 @@ class PartTable:
         return self.take(np.array(pos, dtype=np.int64))
 
     def __repr__(self) -> str:
-        return f"PartTable({len(self)} rows: {', '.join(map(str, self.ids[:4]))}{', ...' if len(self) > 4 else ''})"
+        return (
+            f"PartTable({len(self)} rows: "
+            f"{', '.join(map(str, self.ids[:4]))}{', ...' if len(self) > 4 else ''})"
+        )
 
 
 def _frozen(a: np.ndarray) -> np.ndarray:

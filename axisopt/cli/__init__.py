@@ -1,10 +1,10 @@
-"""Command line: ``axisopt evaluate | solve | diagnose | compare | study | parts | schema | init``.  The only
-package that prints: one module per command, shared output helpers in :mod:`.common`.
+"""Command line: ``axisopt evaluate | solve | diagnose | compare | study | parts | schema | init``.
+The only package that prints: one module per command, shared output helpers in :mod:`.common`.
 
-Exit codes: 0 success (solve: a proven optimum), 1 a proven negative answer (an infeasible problem; a failed
-check with ``evaluate --fail-on-check``), 2 bad input (one line on stderr naming the file and key or line),
-3 no proof either way (Bonmin's unproven point, a time limit, a solver failure), 130 interrupted.  A closed
-pipe or a full device on stdout keeps the command's code.
+Exit codes: 0 success (solve: a proven optimum), 1 a proven negative answer (an infeasible problem;
+a failed check with ``evaluate --fail-on-check``), 2 bad input (one line on stderr naming the file
+and key or line), 3 no proof either way (Bonmin's unproven point, a time limit, a solver failure),
+130 interrupted.  A closed pipe or a full device on stdout keeps the command's code.
 """
 
 from __future__ import annotations
@@ -31,7 +31,8 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _commands():
-    """One module per subcommand, each with ``register(sub)``; they import their heavy parts lazily."""
+    """One module per subcommand, each with ``register(sub)``; they import their heavy parts
+    lazily."""
     from . import compare, diagnose, evaluate, init, machine, parts, schema, solve, study
 
     return [
@@ -48,7 +49,8 @@ def _commands():
 
 
 def _show_progress() -> None:
-    """Progress records of the library (logger "axisopt", e.g. a long Bonmin solve) go to a terminal's stderr."""
+    """Progress records of the library (logger "axisopt", e.g. a long Bonmin solve) go to a
+    terminal's stderr."""
     log = logging.getLogger("axisopt")
     if sys.stderr.isatty() and not log.handlers:
         handler = logging.StreamHandler(sys.stderr)
@@ -71,13 +73,14 @@ def _one_output_on_stdout(args) -> None:
     if len(taken) > 1:
         both = "both" if len(taken) == 2 else "all"
         raise InputError(
-            f"{' and '.join(taken)} would {both} write to standard output; give all but one a file name"
+            f"{' and '.join(taken)} would {both} write to standard output; give all but one a file "
+            "name"
         )
 
 
 def _warning_lines(other):
-    """warnings.showwarning for the CLI: an ImplausibleInput is one 'warning:' line on stderr (file, line, key and
-    what is off); any other warning goes to ``other`` (the showwarning in place)."""
+    """warnings.showwarning for the CLI: an ImplausibleInput is one 'warning:' line on stderr (file,
+    line, key and what is off); any other warning goes to ``other`` (the showwarning in place)."""
 
     def show(message, category, filename, lineno, file=None, line=None):
         if issubclass(category, ImplausibleInput):

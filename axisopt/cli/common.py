@@ -11,13 +11,13 @@ from ..errors import InputError
 # 0 success (solve: proven optimum), 1 a proven negative answer (an infeasible problem, a failed
 # check with
 # --fail-on-check), 2 bad input, 3 no proof either way (Bonmin's unproven point, a time limit, a
-# solver
-# failure), 130 interrupted.
+# solver failure), 130 interrupted.
 EXIT_OK, EXIT_NEGATIVE, EXIT_INPUT, EXIT_UNPROVEN, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
 
 
 def add_html_report(parser, what: str) -> None:
-    """The ``--report FILE.html`` option (a self-contained HTML report) and its ``--plotly`` choice."""
+    """The ``--report FILE.html`` option (a self-contained HTML report) and its ``--plotly``
+    choice."""
     parser.add_argument(
         "--report",
         metavar="FILE.html",
@@ -27,16 +27,16 @@ def add_html_report(parser, what: str) -> None:
 
 
 PLOTLY_HELP = (
-    "with --report: 'no' (default) draws static SVG figures (no plotly needed, works offline, a few "
-    "hundred kB); interactive plotly figures (zoom, hover; needs axisopt[html]) with plotly.js "
+    "with --report: 'no' (default) draws static SVG figures (no plotly needed, works offline, a "
+    "few hundred kB); interactive plotly figures (zoom, hover; needs axisopt[html]) with plotly.js "
     "'inline' (about 5 MB, works offline) or from the plotly 'cdn' (a small file that needs the "
     "network)"
 )
 
 
 def check_html_report(path, plotly: str = "no") -> None:
-    """Refuse a --report target before the work starts: not .html, or plotly missing for interactive figures
-    (one line, exit 2)."""
+    """Refuse a --report target before the work starts: not .html, or plotly missing for interactive
+    figures (one line, exit 2)."""
     if path is None:
         return
     from ..report.html import check_report_path
@@ -45,7 +45,8 @@ def check_html_report(path, plotly: str = "no") -> None:
 
 
 def colour_wanted() -> bool:
-    """Colour on a terminal (rich installed, NO_COLOR unset); AXISOPT_COLOR=always|never overrides."""
+    """Colour on a terminal (rich installed, NO_COLOR unset); AXISOPT_COLOR=always|never
+    overrides."""
     import os
     import sys
 
@@ -65,8 +66,8 @@ def colour_wanted() -> bool:
 
 
 def show(text: str) -> None:
-    """Print a command's text output; on a colour terminal FAIL (and a compare ' !') in red, pass in green,
-    the weakest link and binding limits in yellow.  Plain text when piped or redirected."""
+    """Print a command's text output; on a colour terminal FAIL (and a compare ' !') in red, pass in
+    green, the weakest link and binding limits in yellow.  Plain text when piped or redirected."""
     if not colour_wanted():
         print(text)
         return
@@ -89,8 +90,8 @@ def show(text: str) -> None:
 
 
 def stdout_taken(*targets) -> bool:
-    """True when one of the output paths is standard output ('-' or /dev/stdout): the command's text is then
-    not printed, so that stdout holds only that output."""
+    """True when one of the output paths is standard output ('-' or /dev/stdout): the command's text
+    is then not printed, so that stdout holds only that output."""
     from ..fileio import is_stdout
 
     return any(t is not None and t != "" and is_stdout(t) for t in targets)
@@ -100,9 +101,9 @@ MAX_ERROR_CHARS = 400
 
 
 def one_line(text: str) -> str:
-    """An error message as one printable line: line breaks and other control characters shown escaped
-    (``\\n``), runs of blanks folded, at most ``MAX_ERROR_CHARS`` characters (the rest elided).  The one
-    place every error the CLI prints goes through."""
+    """An error message as one printable line: line breaks and other control characters shown
+    escaped (``\\n``), runs of blanks folded, at most ``MAX_ERROR_CHARS`` characters (the rest
+    elided).  The one place every error the CLI prints goes through."""
     out = []
     for ch in str(text):
         if ch in "\n\r":
@@ -132,10 +133,11 @@ def wrote(path, quiet: bool) -> None:
 
 
 class GuardedStdout:
-    """sys.stdout for the length of one command: a closed pipe (``axisopt ... | head``) or a full device
-    (``> /dev/full``) does not end the command with a traceback or a wrong exit code.  The command runs to
-    its end (its other outputs, e.g. ``--json FILE``, are still written) and keeps its own exit code; output
-    to the closed pipe is dropped silently, a full device is reported on stderr in one line."""
+    """sys.stdout for the length of one command: a closed pipe (``axisopt ... | head``) or a full
+    device (``> /dev/full``) does not end the command with a traceback or a wrong exit code.  The
+    command runs to its end (its other outputs, e.g. ``--json FILE``, are still written) and keeps
+    its own exit code; output to the closed pipe is dropped silently, a full device is reported on
+    stderr in one line."""
 
     def __init__(self, stream):
         self._s = stream
@@ -192,8 +194,8 @@ def _output_path(text: str) -> str:
 
 
 class Parser(argparse.ArgumentParser):
-    """argparse that reports a usage error as one line (InputError, exit code 2); an output option given an
-    empty name (``--save-design ""``) is such an error."""
+    """argparse that reports a usage error as one line (InputError, exit code 2); an output option
+    given an empty name (``--save-design ""``) is such an error."""
 
     def add_argument(self, *names, **kw):
         if (
@@ -219,7 +221,8 @@ def json_default(o):
 
 
 def _finite(obj):
-    """``obj`` with every NaN or infinite float replaced by None (JSON null: no value, never NaN)."""
+    """``obj`` with every NaN or infinite float replaced by None (JSON null: no value, never
+    NaN)."""
     if isinstance(obj, float):
         return obj if math.isfinite(obj) else None
     if isinstance(obj, dict):
@@ -232,9 +235,9 @@ def _finite(obj):
 
 
 def write_json(obj, target: str) -> None:
-    """Write ``obj`` as JSON through :func:`axisopt.fileio.open_output`: a regular file atomically (the
-    old file stays whole if writing fails), '-' to stdout, a FIFO or device in place.  A file that cannot be
-    written is an InputError naming it."""
+    """Write ``obj`` as JSON through :func:`axisopt.fileio.open_output`: a regular file atomically
+    (the old file stays whole if writing fails), '-' to stdout, a FIFO or device in place.  A file
+    that cannot be written is an InputError naming it."""
     from ..fileio import write_text_atomic
 
     text = json.dumps(_finite(obj), indent=2, default=json_default, allow_nan=False)

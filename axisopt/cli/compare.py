@@ -21,7 +21,8 @@ def register(sub) -> None:
         "files",
         nargs="+",
         metavar="FILE.yaml",
-        help="design YAMLs, or problem YAMLs (solved with the default method; the best design is used)",
+        help="design YAMLs, or problem YAMLs (solved with the default method; the best design is "
+        "used)",
     )
     c.add_argument("--json", metavar="FILE", help="write the comparison as JSON ('-' for stdout)")
     c.add_argument("--csv", metavar="FILE", help="write one row per design as CSV")

@@ -1,9 +1,9 @@
 """``axisopt diagnose DATA.csv [...] --design DESIGN.yaml [--report FILE.html|DIR] [--json FILE|-]
 [--save-calibration FILE.yaml] [--effects a,b,...] [--max-effects N] [--gain '0.85 N.m/A']``
 
-A first file with a ``time`` column (and no reduced-table columns) is a time record: the files go to the
-inverse dynamic identification of :mod:`axisopt.identify.records.idim` (first file estimation, others validation); the
-text and JSON of either diagnosis come from :mod:`axisopt.report`."""
+A first file with a ``time`` column (and no reduced-table columns) is a time record: the files go to
+the inverse dynamic identification of :mod:`axisopt.identify.records.idim` (first file estimation,
+others validation); the text and JSON of either diagnosis come from :mod:`axisopt.report`."""
 
 from __future__ import annotations
 
@@ -148,7 +148,7 @@ def register(sub) -> None:
     d.add_argument(
         "--gain",
         metavar="'0.85 N.m/A'",
-        help="time records with a current column: torque (N.m/A) or force (N/A) per ampere, for files "
-        "without a '# gain:' line",
+        help="time records with a current column: torque (N.m/A) or force (N/A) per ampere, for "
+        "files without a '# gain:' line",
     )
     d.set_defaults(func=cmd_diagnose)

@@ -43,8 +43,8 @@ def register(sub) -> None:
     e.add_argument(
         "--ss",
         metavar="FILE.npz",
-        help="write the linear state-space model (A, B, C, D; motor free and held) at stroke start, "
-        "middle and end and the tuned servo gains as a numpy .npz",
+        help="write the linear state-space model (A, B, C, D; motor free and held) at stroke "
+        "start, middle and end and the tuned servo gains as a numpy .npz",
     )
     e.add_argument(
         "--fail-on-check",
@@ -139,7 +139,8 @@ def cmd_evaluate(args) -> int:
 
 
 def _drive_design_file(path) -> bool:
-    """Whether ``path`` holds a rack-and-pinion or linear-motor design (a problem with ``drive_design``)."""
+    """Whether ``path`` holds a rack-and-pinion or linear-motor design (a problem with
+    ``drive_design``)."""
     from ..yamlio import read_yaml
 
     node = read_yaml(path)
@@ -147,8 +148,8 @@ def _drive_design_file(path) -> bool:
 
 
 def _evaluate_drive_design(args) -> int:
-    """``axisopt evaluate`` of a rack-and-pinion or linear-motor design (search.drivefile): its text (and
-    --json, --plot); the options made for screw designs are refused."""
+    """``axisopt evaluate`` of a rack-and-pinion or linear-motor design (search.drivefile): its text
+    (and --json, --plot); the options made for screw designs are refused."""
     from ..errors import InputError
     from ..problem import load_problem
     from ..report.drivetype import format_drive_design
@@ -158,8 +159,8 @@ def _evaluate_drive_design(args) -> int:
         if getattr(args, opt, None):
             name = "--" + opt.replace("_", "-")
             raise InputError(
-                f"{name} is made for screw designs; this file holds a rack-and-pinion or linear-motor "
-                "design",
+                f"{name} is made for screw designs; this file holds a rack-and-pinion or "
+                "linear-motor design",
                 where=name,
             )
     problem = load_problem(args.design)

@@ -1,12 +1,14 @@
-"""``axisopt init design|problem|study [--machine vmc|lathe|gantry|vertical|boring|laser] [--out FILE] [--force]``: a
-commented YAML template for a named machine type that loads, solves or evaluates as it is written.
+"""``axisopt init design|problem|study [--machine vmc|lathe|gantry|vertical|boring|laser] [--out
+FILE] [--force]``: a commented YAML template for a named machine type that loads, solves or
+evaluates as it is written.
 
-The templates say what each value means and in which unit, and in particular where the process (cutting)
-force goes: ``axis.axial_load`` (the largest force: nut stiffness under load, lift-off, buckling, life with
-``mean_axial_load``, the motor's steady thrust) and a duty-cycle entry's ``force:`` (the force during that
-entry only: the motor's peak and RMS torque over the cycle).  Each machine's limits and catalog
-restrictions were chosen so that its problem is feasible and solves in seconds; its design holds the parts of
-that problem's optimum (rounded preload), so ``evaluate`` passes every check.
+The templates say what each value means and in which unit, and in particular where the process
+(cutting) force goes: ``axis.axial_load`` (the largest force: nut stiffness under load, lift-off,
+buckling, life with ``mean_axial_load``, the motor's steady thrust) and a duty-cycle entry's
+``force:`` (the force during that entry only: the motor's peak and RMS torque over the cycle).  Each
+machine's limits and catalog restrictions were chosen so that its problem is feasible and solves in
+seconds; its design holds the parts of that problem's optimum (rounded preload), so ``evaluate``
+passes every check.
 """
 
 from __future__ import annotations
@@ -58,8 +60,7 @@ _MOUNT_NOTE = """\
 """
 
 # Per machine: title, name, the axis section (after 'axis:'), the problem's objective to continuous
-# sections,
-# the design's parts, and the study's sweep.
+# sections, the design's parts, and the study's sweep.
 _MACHINE = {
     "vmc": dict(
         title="vertical machining centre, X axis",
@@ -124,7 +125,8 @@ continuous:
     "lathe": dict(
         title="turning centre, Z axis",
         name="lathe-z",
-        description="Lathe Z axis: 250 kg carriage and turret, 600 mm stroke, 30 m/min, 5 kN feed force.",
+        description="Lathe Z axis: 250 kg carriage and turret, 600 mm stroke, 30 m/min, 5 kN feed "
+        "force.",
         axis="""\
   stroke: 600 mm              # nut travel (required)
   moving_mass: 250 kg         # carriage, cross slide, turret (required)
@@ -180,7 +182,8 @@ continuous:
     "gantry": dict(
         title="twin-drive gantry, long X axis",
         name="gantry-x",
-        description="Twin-drive gantry X: 500 kg bridge, 300 kg cross carriage, drives 2 m apart, 30 m/min.",
+        description="Twin-drive gantry X: 500 kg bridge, 300 kg cross carriage, drives 2 m apart, "
+        "30 m/min.",
         axis="""\
   stroke: 2000 mm             # nut travel (required)
   moving_mass: 500 kg         # the bridge (required); its cross carriage below
@@ -235,7 +238,8 @@ continuous:
     "vertical": dict(
         title="vertical Z axis (gravity on the screw, holding brake)",
         name="vertical-z",
-        description="Vertical Z: 300 kg head on a 240 kg counterweight, 500 mm stroke, 24 m/min, brake 2x.",
+        description="Vertical Z: 300 kg head on a 240 kg counterweight, 500 mm stroke, 24 m/min, "
+        "brake 2x.",
         axis="""\
   stroke: 500 mm              # nut travel (required)
   moving_mass: 300 kg         # spindle head (required)
@@ -290,7 +294,8 @@ continuous:
     "boring": dict(
         title="horizontal boring-mill table, long heavy X axis",
         name="boring-table",
-        description="Boring-mill table: 2 t table and workpiece, 3 m stroke, 15 m/min, 15 kN feed force.",
+        description="Boring-mill table: 2 t table and workpiece, 3 m stroke, 15 m/min, 15 kN feed "
+        "force.",
         axis="""\
   stroke: 3000 mm             # nut travel (required)
   moving_mass: 2000 kg        # table and the heaviest workpiece (required)
@@ -348,7 +353,8 @@ continuous:
     "laser": dict(
         title="high-dynamics laser-cutting axis (1.5 g, jerk-limited)",
         name="laser-y",
-        description="Laser-cutting Y axis: 100 kg carriage and head, 1 m stroke, 80 m/min, 1.5 g, no cutting force.",
+        description="Laser-cutting Y axis: 100 kg carriage and head, 1 m stroke, 80 m/min, 1.5 g, "
+        "no cutting force.",
         axis="""\
   stroke: 1000 mm             # nut travel (required)
   moving_mass: 100 kg         # carriage with the cutting head and its Z (required)
@@ -415,8 +421,8 @@ _NEXT = {
 
 
 def template(kind: str, machine: str = "vmc") -> str:
-    """The commented YAML text of a ``kind`` file (design, problem, study) for ``machine``; a machine file
-    (``kind`` 'machine'): ``machine`` is its kind, vmc | moving-column | gantry."""
+    """The commented YAML text of a ``kind`` file (design, problem, study) for ``machine``; a
+    machine file (``kind`` 'machine'): ``machine`` is its kind, vmc | moving-column | gantry."""
     if kind not in KINDS:
         raise InputError(f"unknown file kind '{kind}'; use one of {', '.join(KINDS)}")
     if kind == "machine":
@@ -448,7 +454,8 @@ def template(kind: str, machine: str = "vmc") -> str:
     key, values, what = m["sweep"]
     base = "".join(("  " + line) if line else line for line in problem.splitlines(True))
     return (
-        f"{head}name: {m['name']}-study\ndescription: >\n  {m['description']}\n  Swept over {what}.\n"
+        f"{head}name: {m['name']}-study\ndescription: >\n  {m['description']}\n  Swept over "
+        f"{what}.\n"
         f"base:                         # a problem as 'init problem' writes (or base: FILE)\n"
         f"{base}sweep:                        # each key a dotted path into the base problem\n"
         f"  {key}: {values}   # {what}\n"
@@ -464,8 +471,8 @@ def register(sub) -> None:
         "--machine",
         choices=MACHINES,
         default="vmc",
-        help="machine type: vmc (machining centre X), lathe (Z), gantry (long X), vertical (Z), boring "
-        "(boring-mill table, 3 m, 2 t), laser (1.5 g contouring); default vmc",
+        help="machine type: vmc (machining centre X), lathe (Z), gantry (long X), vertical (Z), "
+        "boring (boring-mill table, 3 m, 2 t), laser (1.5 g contouring); default vmc",
     )
     p.add_argument(
         "--kind",

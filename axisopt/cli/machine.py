@@ -1,6 +1,6 @@
-"""``axisopt machine solve MACHINE.yaml``: a whole machine's axes sized together, proven, with the sequential
-sizing beside it; ``axisopt machine study STUDY.yaml``: sweeps over a machine file, one joint solve per case,
-locally or on a Dask cluster (the axis study's runner)."""
+"""``axisopt machine solve MACHINE.yaml``: a whole machine's axes sized together, proven, with the
+sequential sizing beside it; ``axisopt machine study STUDY.yaml``: sweeps over a machine file, one
+joint solve per case, locally or on a Dask cluster (the axis study's runner)."""
 
 from __future__ import annotations
 
@@ -22,8 +22,8 @@ def register(sub) -> None:
         "--method",
         choices=("default", "exhaustive"),
         default="default",
-        help="default: exact Pareto sets of what each axis offers the one below (proven); exhaustive: "
-        "every combination of every axis (small catalogs only)",
+        help="default: exact Pareto sets of what each axis offers the one below (proven); "
+        "exhaustive: every combination of every axis (small catalogs only)",
     )
     m.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     add_html_report(
@@ -115,8 +115,8 @@ def cmd_machine_study(args) -> int:
     if s.lost or s.died:
         print(
             one_line(
-                f"note: {s.lost + s.died} cases not solved ({s.lost_reason or 'worker died'}); rerun with "
-                f"'axisopt machine study {args.study} --out {out} --resume'"
+                f"note: {s.lost + s.died} cases not solved ({s.lost_reason or 'worker died'}); "
+                f"rerun with 'axisopt machine study {args.study} --out {out} --resume'"
             ),
             file=sys.stderr,
         )
@@ -124,7 +124,8 @@ def cmd_machine_study(args) -> int:
 
 
 def _machine_result(path: str) -> dict:
-    """A machine result: a JSON file as written by machine solve --json, or a machine file solved now."""
+    """A machine result: a JSON file as written by machine solve --json, or a machine file solved
+    now."""
     import json
 
     from ..errors import InputError

@@ -1,7 +1,7 @@
-"""Every output path of a command checked before the command does any work: never onto one of its inputs
-(``axisopt solve p.yaml --save-design p.yaml`` would replace the problem), never two outputs onto one file,
-a file's directory existing and writable, a figure's extension known.  Standard output (``-``), FIFOs and
-devices are written in place as before and are not compared."""
+"""Every output path of a command checked before the command does any work: never onto one of its
+inputs (``axisopt solve p.yaml --save-design p.yaml`` would replace the problem), never two outputs
+onto one file, a file's directory existing and writable, a figure's extension known.  Standard
+output (``-``), FIFOs and devices are written in place as before and are not compared."""
 
 from __future__ import annotations
 
@@ -78,8 +78,8 @@ def _regular(path: str) -> bool:
 
 
 def _inputs(args, outputs: set) -> list:
-    """The regular files the command reads: every path-like argument that names one (a directory's files
-    for a directory argument such as ``parts --catalogs DIR``)."""
+    """The regular files the command reads: every path-like argument that names one (a directory's
+    files for a directory argument such as ``parts --catalogs DIR``)."""
     found = []
     for name, value in vars(args).items():
         if name in _NOT_PATHS or name in outputs:
@@ -115,9 +115,9 @@ def _named(name: str) -> str:
 
 
 def check_outputs(args) -> None:
-    """Refuse (InputError, one line, exit 2) before any work: an output that is one of the command's inputs,
-    two outputs naming one file, a file output whose directory is missing or not writable, a figure with an
-    extension matplotlib does not write, a directory output that is a file."""
+    """Refuse (InputError, one line, exit 2) before any work: an output that is one of the command's
+    inputs, two outputs naming one file, a file output whose directory is missing or not writable, a
+    figure with an extension matplotlib does not write, a directory output that is a file."""
     command = getattr(args, "command", "") or ""
     given = [
         (o, getattr(args, _attr(o)))
@@ -184,8 +184,7 @@ def check_outputs(args) -> None:
                     where=option,
                 )
     # directories the command itself creates first (a --report or --out directory and its parents):
-    # a file output
-    # in one of them is written after they exist
+    # a file output in one of them is written after they exist
     made = set()
     for _, value in dirs:
         d = os.path.abspath(value)

@@ -1,4 +1,5 @@
-"""``axisopt parts``: what the catalogs hold, by kind and vendor, and the rows themselves in vendor units."""
+"""``axisopt parts``: what the catalogs hold, by kind and vendor, and the rows themselves in vendor
+units."""
 
 from __future__ import annotations
 
@@ -10,8 +11,7 @@ from .common import EXIT_OK, stdout_taken, write_json
 KINDS = ("screws", "nuts", "bearings", "guides", "motors", "couplings", "reductions")
 
 # The text table per kind: (header, column or columns, factor from SI, format); fits 100 columns.
-# All
-# columns, with vendor, provenance and source, are in --json and --csv.
+# All columns, with vendor, provenance and source, are in --json and --csv.
 _TABLE = {
     "screws": (
         ("d [mm]", "nominal_diameter", 1e3, ".0f"),
@@ -118,7 +118,8 @@ def register(sub) -> None:
 
 
 def _rows(table) -> list[dict]:
-    """The rows of a table as records (a list from :func:`axisopt.catalog.loading.load_records`, or a pandas table)."""
+    """The rows of a table as records (a list from :func:`axisopt.catalog.loading.load_records`, or
+    a pandas table)."""
     return table.to_dict("records") if hasattr(table, "to_dict") else list(table)
 
 
@@ -162,8 +163,8 @@ def counts(cat, vendors=None, status=None) -> list[dict]:
 
 def counts_table(records) -> str:
     head = (
-        f"{'kind':<9} {'vendor':<16} {'rows':>5} {'vendor data':>12} {'stiffness derived':>18} {'paper':>6} "
-        f"{'derived':>8} {'user':>5}"
+        f"{'kind':<9} {'vendor':<16} {'rows':>5} {'vendor data':>12} {'stiffness derived':>18} "
+        f"{'paper':>6} {'derived':>8} {'user':>5}"
     )
     lines = [head, "-" * len(head)]
     for r in records:
@@ -253,7 +254,8 @@ def _rotating(row) -> bool:
 
 
 def _grades(row) -> str:
-    """The grades a screw row is made in: 'C0-C5' when they run on in the table's order, else 'C1,C3,C5'."""
+    """The grades a screw row is made in: 'C0-C5' when they run on in the table's order, else
+    'C1,C3,C5'."""
     from ..catalog.grades import grade_table
 
     t = grade_table()
@@ -265,7 +267,8 @@ def _grades(row) -> str:
 
 
 def rows_dicts(rows, kind) -> list[dict]:
-    """Every column of the rows, in vendor units (the unit in the key), with vendor, provenance and source."""
+    """Every column of the rows, in vendor units (the unit in the key), with vendor, provenance and
+    source."""
     from ..catalog.columns import SCHEMA
 
     out = []
@@ -291,8 +294,8 @@ def rows_dicts(rows, kind) -> list[dict]:
 
 
 def _vendor_unit(kind: str) -> tuple:
-    """(unit, factor from SI) a catalog column of ``kind`` is exported in: the display units, with rotor and
-    coupling inertia in kg.cm^2 as motor catalogs list it."""
+    """(unit, factor from SI) a catalog column of ``kind`` is exported in: the display units, with
+    rotor and coupling inertia in kg.cm^2 as motor catalogs list it."""
     from ..units import DISPLAY_UNITS, unit_factor
 
     unit = "kg.cm^2" if kind == "inertia" else DISPLAY_UNITS.get(kind)

@@ -1,5 +1,5 @@
-"""``axisopt schema``: the JSON Schema of a design, problem, study or calibration YAML, for an editor's YAML
-language server (written from the readers' own key tables, :mod:`axisopt.schema`)."""
+"""``axisopt schema``: the JSON Schema of a design, problem, study or calibration YAML, for an
+editor's YAML language server (written from the readers' own key tables, :mod:`axisopt.schema`)."""
 
 from __future__ import annotations
 

@@ -20,8 +20,8 @@ from .common import (
 
 
 class _MethodNames:
-    """The ``--method`` choices: the names of ``search.front.METHOD_TABLE``, read when the parser first asks
-    (the command line's start-up imports no search code)."""
+    """The ``--method`` choices: the names of ``search.front.METHOD_TABLE``, read when the parser
+    first asks (the command line's start-up imports no search code)."""
 
     def __contains__(self, name) -> bool:
         return name in self._names()
@@ -42,15 +42,14 @@ def register(sub) -> None:
     )
     s.add_argument("problem", help="problem YAML file")
     # the choices are read when a --method is given or the help printed: a metavar, so that building
-    # the parser
-    # does not list them (argparse would import the search at every start-up)
+    # the parser does not list them (argparse would import the search at every start-up)
     s.add_argument(
         "--method",
         choices=_MethodNames(),
         default="default",
         metavar="METHOD",
-        help="%(choices)s; default: proven optimum (bounds); exhaustive: every combination; bonmin: "
-        "MINLP; scip: global MINLP (pip install 'axisopt[scip]')",
+        help="%(choices)s; default: proven optimum (bounds); exhaustive: every combination; "
+        "bonmin: MINLP; scip: global MINLP (pip install 'axisopt[scip]')",
     )
     s.add_argument("--json", metavar="FILE", help="write the result as JSON ('-' for stdout)")
     s.add_argument("--plot", metavar="FILE.png", help="plot the best designs (or the Pareto front)")
@@ -191,7 +190,8 @@ def _solve_drive_types(args, problem) -> int:
 
 
 def _show_drive_types(args, res) -> int:
-    """The text (and --json) of a drive types' answer (:class:`axisopt.search.drivetype.DriveTypeResult`)."""
+    """The text (and --json) of a drive types' answer
+    (:class:`axisopt.search.drivetype.DriveTypeResult`)."""
     from ..report.drivetype import format_drive_result
 
     quiet = stdout_taken(args.json, args.save_design)
@@ -225,10 +225,10 @@ def _show_drive_types(args, res) -> int:
 
 
 def save_drive_designs(res, target: str, top: int, problem_path: str) -> list:
-    """Write the best design of a drive types' answer to ``target`` (a .yaml file) or the shown designs into
-    ``target`` (a directory: 1.yaml, 2.yaml, ...): a screw design as :func:`save_designs` writes it, a rack or
-    linear-motor design as the problem file with its ``drive_design`` (search.drivefile).  Returns the paths
-    written."""
+    """Write the best design of a drive types' answer to ``target`` (a .yaml file) or the shown
+    designs into ``target`` (a directory: 1.yaml, 2.yaml, ...): a screw design as
+    :func:`save_designs` writes it, a rack or linear-motor design as the problem file with its
+    ``drive_design`` (search.drivefile).  Returns the paths written."""
     from pathlib import Path
 
     from ..fileio import make_output_dir, write_text_atomic
@@ -262,8 +262,9 @@ def save_drive_designs(res, target: str, top: int, problem_path: str) -> list:
 
 
 def save_designs(res, target: str, top: int, problem_path: str, problem=None) -> list:
-    """Write the best design to ``target`` (a .yaml file) or the shown designs into ``target`` (a directory,
-    ranks as 1.yaml, 2.yaml ...; Pareto points in front order).  Returns the paths written.
+    """Write the best design to ``target`` (a .yaml file) or the shown designs into ``target`` (a
+    directory, ranks as 1.yaml, 2.yaml ...; Pareto points in front order).  Returns the paths
+    written.
 
     The nut preload is written in round figures, rounded the way that keeps ``problem``'s limits met
     (:func:`axisopt.report.partslist.order_preload`), with a comment saying from what."""
@@ -311,8 +312,9 @@ def save_designs(res, target: str, top: int, problem_path: str, problem=None) ->
         if ordered.moved and res.pareto is None and problem is not None:
             head = (
                 f"# written by axisopt solve {problem_path} ({res.method}, {res.status}): {what}, "
-                f"{res.objective_label} = {_file_objective(design, problem):.6g} {res.objective_unit} with "
-                f"the preload as written ({c.objective:.6g} at the search's {c.nut_preload:.5g} N)\n"
+                f"{res.objective_label} = {_file_objective(design, problem):.6g} "
+                f"{res.objective_unit} with the preload as written ({c.objective:.6g} at the "
+                f"search's {c.nut_preload:.5g} N)\n"
             )
         write_text_atomic(
             str(path),
@@ -324,8 +326,8 @@ def save_designs(res, target: str, top: int, problem_path: str, problem=None) ->
 
 
 def _file_objective(design, problem) -> float:
-    """The objective of ``design`` as written (the nut preload rounded for ordering), evaluated by the model:
-    the value ``axisopt evaluate`` of the saved file shows."""
+    """The objective of ``design`` as written (the nut preload rounded for ordering), evaluated by
+    the model: the value ``axisopt evaluate`` of the saved file shows."""
     from ..model import evaluate
     from ..search.task.objective import objective_spec
 
@@ -342,14 +344,16 @@ def _single_file(target: str) -> bool:
 
 
 def exit_code(status: str) -> int:
-    """0 proven optimum, 1 proven infeasible, 3 anything unproven (Bonmin's point, time limit, failure)."""
+    """0 proven optimum, 1 proven infeasible, 3 anything unproven (Bonmin's point, time limit,
+    failure)."""
     from ..search.result import INFEASIBLE, OPTIMAL
 
     return {OPTIMAL: EXIT_OK, INFEASIBLE: EXIT_NEGATIVE}.get(status, EXIT_UNPROVEN)
 
 
 def format_pareto(front, top: int | None = None) -> str:
-    """The Pareto front's table (made by :func:`axisopt.report.solve.format_pareto`; here for its importers)."""
+    """The Pareto front's table (made by :func:`axisopt.report.solve.format_pareto`; here for its
+    importers)."""
     from ..report.solve import format_pareto as table
 
     return table(front, top)

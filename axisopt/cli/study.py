@@ -69,9 +69,10 @@ def check_run_options(args) -> None:
 
 
 def run_with_progress(args, command: str, run, study) -> tuple:
-    """A study's run loop (axis and machine studies): the output folder (--out, else beside the study file's
-    stem), its cases cleared first on --overwrite, ``run(study, out, ...)`` with the run options and the progress
-    bar; (its summary, out), the summary None when interrupted (the way to resume printed on one line)."""
+    """A study's run loop (axis and machine studies): the output folder (--out, else beside the
+    study file's stem), its cases cleared first on --overwrite, ``run(study, out, ...)`` with the
+    run options and the progress bar; (its summary, out), the summary None when interrupted (the way
+    to resume printed on one line)."""
     from pathlib import Path
 
     from ..study.result import clear_cases
@@ -189,7 +190,8 @@ def cmd_study(args) -> int:
             f"infrastructure failure) by an earlier run solved again"
         )
     print(
-        f"study {study.name}: {s.total} cases; {s.solved} solved now in {s.time:.1f} s on {s.backend}"
+        f"study {study.name}: {s.total} cases; {s.solved} solved now in {s.time:.1f} s on "
+        f"{s.backend}"
         + (f" ({s.workers} workers)" if s.workers else "")
         + (f", {s.resumed} kept from an earlier run" if s.resumed else "")
         + f"; {s.failed} failed"
@@ -220,8 +222,7 @@ def cmd_study(args) -> int:
         note = "; ".join(notes) + f"; rerun with 'axisopt study {args.study} --out {out} --resume'"
         print("note: " + one_line(note), file=sys.stderr)  # one line
     # 1 when any case has no design (infeasible, invalid combination, solver failure, worker died)
-    # or was not
-    # run; 0 only when every case found its design
+    # or was not run; 0 only when every case found its design
     return EXIT_NEGATIVE if s.lost or s.died or s.failed else EXIT_OK
 
 

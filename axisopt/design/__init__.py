@@ -4,8 +4,10 @@ A design YAML has ``axis`` (the machine's requirements, every dimensional value 
 ``parts`` (catalog ids or inline custom parts) and optionally ``catalogs`` (extra catalog
 directories, relative to the YAML file) and ``name``.
 
-- :mod:`.axis`: :class:`Axis` and :class:`Design`, and the defaults of the axis values no catalog row carries
-- :mod:`.keys`: the YAML keys, one table per section (read by the readers, written out by ``axisopt schema``)
+- :mod:`.axis`: :class:`Axis` and :class:`Design`, and the defaults of the axis values no catalog
+  row carries
+- :mod:`.keys`: the YAML keys, one table per section (read by the readers, written out by
+  ``axisopt schema``)
 - :mod:`.reader`: :func:`load_design` and the section readers the problem and study files share
 - :mod:`.writer`: :func:`design_to_dict` / :func:`design_to_yaml`, what ``load_design`` reads back
 """

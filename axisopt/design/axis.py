@@ -1,6 +1,7 @@
-"""The axis and design descriptions: :class:`Axis` (what the machine asks of the axis, SI, with the defaults
-of the values no catalog row carries) and :class:`Design` (an axis with one chosen part per slot).  Frozen
-dataclasses; the YAML keys are declared in :mod:`.keys`, read in :mod:`.reader`, written in :mod:`.writer`.
+"""The axis and design descriptions: :class:`Axis` (what the machine asks of the axis, SI, with the
+defaults of the values no catalog row carries) and :class:`Design` (an axis with one chosen part per
+slot).  Frozen dataclasses; the YAML keys are declared in :mod:`.keys`, read in :mod:`.reader`,
+written in :mod:`.writer`.
 """
 
 from __future__ import annotations
@@ -18,92 +19,73 @@ MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed")
 
 # Defaults of the axis values no catalog row carries, with their sources (docs/assumptions.md).
 # Bearing housing and nut bracket: no vendor publishes a value for the machine's own parts (THK
-# A-708:
-# "set the rigidity as high as possible"; THK and NSK rigidities exclude them).  Never rigid:
-# without a YAML
-# value the housing is 26 x its bearing set (IBC's bearing units against their bare sets,
-# physics.bearings.housing_stiffness_default) and the bracket 4 x its nut (THK's 80 % nut-mounting
-# allowance
-# taken once more, physics.nut.bracket_stiffness_default), both named as estimates in every result.
-# Load factor fw: THK A-704 Table 19 by the axis's max speed (physics.checks.load_factor_default).
-# Nut lift-off: the preload holds up to 2^(3/2) x preload (THK A-687, HIWIN H-BS F 3.6); no vendor
-# asks a
-# margin on top, on a vertical axis neither (the largest axial force already carries the weight; THK
-# A-737).
-# Coupling: RINGFEDER GWB AKN size 60 metal-bellows coupling (Tech Paper EN 08.2019): 75e3 N.m/rad,
-# 0.29e-3 kg.m^2, 75 N.m, a mid-size feed-drive coupling (our pick of size).
-# Temperature rise: THK A-715 sets the negative target travel for a 2-5 degC rise; 3 K is used.
-# Pretension of a fixed-fixed screw: the force that absorbs a stated design rise, not the heat
-# balance's whole rise:
-# THK A-715 "set a negative target value for the reference travel distance assuming a temperature
-# increase of 2 to
-# 5 degC (-0.02 mm to -0.06 mm/m)"; the HIWIN-style guidance of Guangyang (gyballscrew.com, "The
-# influence of ball
+# A-708: "set the rigidity as high as possible"; THK and NSK rigidities exclude them).  Never rigid:
+# without a YAML value the housing is 26 x its bearing set (IBC's bearing units against their bare
+# sets, physics.bearings.housing_stiffness_default) and the bracket 4 x its nut (THK's 80 %
+# nut-mounting allowance taken once more, physics.nut.bracket_stiffness_default), both named as
+# estimates in every result.  Load factor fw: THK A-704 Table 19 by the axis's max speed
+# (physics.checks.load_factor_default).  Nut lift-off: the preload holds up to 2^(3/2) x preload
+# (THK A-687, HIWIN H-BS F 3.6); no vendor asks a margin on top, on a vertical axis neither (the
+# largest axial force already carries the weight; THK A-737).  Coupling: RINGFEDER GWB AKN size 60
+# metal-bellows coupling (Tech Paper EN 08.2019): 75e3 N.m/rad, 0.29e-3 kg.m^2, 75 N.m, a mid-size
+# feed-drive coupling (our pick of size).  Temperature rise: THK A-715 sets the negative target
+# travel for a 2-5 degC rise; 3 K is used.  Pretension of a fixed-fixed screw: the force that
+# absorbs a stated design rise, not the heat balance's whole rise: THK A-715 "set a negative target
+# value for the reference travel distance assuming a temperature increase of 2 to 5 degC (-0.02 mm
+# to -0.06 mm/m)"; the HIWIN-style guidance of Guangyang (gyballscrew.com, "The influence of ball
 # screw pretension") "a temperature rise of about 3 degC as the reference for the compensation value
-# T", under
-# 5 degC.  3 K is used.
+# T", under 5 degC.  3 K is used.
 COUPLING_STIFFNESS = 75e3
 COUPLING_INERTIA = 0.29e-3
 TEMPERATURE_RISE = 3.0
 PRETENSION_RISE = 3.0
 # horizontal: gravity presses the table onto the rails; vertical: gravity acts along the rail (on
-# the screw);
-# wall: the rails on a vertical wall, the feed horizontal, gravity across the rails (a lateral block
-# load)
+# the screw); wall: the rails on a vertical wall, the feed horizontal, gravity across the rails (a
+# lateral block load)
 ORIENTATIONS = ("horizontal", "vertical", "wall")
 G = 9.80665
 # Drive defaults.  Inertia ratio: THK A-720 eq. 49 asks J_M >= J / C with C "normally between 3 to
-# 10" (its
-# transfer examples use 10); 5, the tighter half of that range, is our default for machine-tool
-# axes.  Brake
-# safety: no vendor figure was retrieved; 2 x the gravity torque is our assumption, set
-# axis.brake_safety.
+# 10" (its transfer examples use 10); 5, the tighter half of that range, is our default for
+# machine-tool axes.  Brake safety: no vendor figure was retrieved; 2 x the gravity torque is our
+# assumption, set axis.brake_safety.
 MAX_INERTIA_RATIO = 5.0
 BRAKE_SAFETY = 2.0
 # RMS torque / rated torque where a motor row names no vendor rule (model.motorrule holds the
-# vendors' rules):
-# Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <= 0.8 Tst" (stall
-# torque),
-# taken against the rated torque, which is at most the stall torque: the harshest of the vendors'
-# rules.
+# vendors' rules): Mitsubishi MDS-D-SVJ3/SPJ3 Specifications Manual sec. 7-1 (3), eq. 7-10, "Trms <=
+# 0.8 Tst" (stall torque), taken against the rated torque, which is at most the stall torque: the
+# harshest of the vendors' rules.
 RMS_TORQUE_RATIO = 0.8
 # Carriage.  Static safety factors: THK's current selection pages give the lower limit of f_S "with
 # vibrations or impacts" as 5 for the LM Guide (thk.com/in/en/products/lm_guide/selection/0005/,
-# Table 10) and
-# for the ball screw (LM Guide Actuator pages, "Ball Screw Unit/Bearing Unit": 5); a feed axis of a
-# cutting
-# machine has both (THK names "vibrations due to a cutting load" and acceleration).  The older
-# General Catalog
-# prints 2.5 to 7 for machine tools with vibration or impact (A-95, A-703); HIWIN G99TE20 Table 1-1:
-# 3 to 5.
+# Table 10) and for the ball screw (LM Guide Actuator pages, "Ball Screw Unit/Bearing Unit": 5); a
+# feed axis of a cutting machine has both (THK names "vibrations due to a cutting load" and
+# acceleration).  The older General Catalog prints 2.5 to 7 for machine tools with vibration or
+# impact (A-95, A-703); HIWIN G99TE20 Table 1-1: 3 to 5.
 GUIDE_STATIC_SAFETY = 5.0
 NUT_STATIC_SAFETY = 5.0
 NUT_LIFT_OFF_SAFETY = 1.0
 # Geometry defaults where the YAML gives none (our assumptions, stated in docs/assumptions.md):
-# blocks set in from the
-# table ends (spacing 0.6 x table length), rails 0.6 x table width apart, a table + workpiece box as
-# wide as it
-# is long, 0.4 x its length high with the centre of gravity at half that height and the cutting
-# point on top.
+# blocks set in from the table ends (spacing 0.6 x table length), rails 0.6 x table width apart, a
+# table + workpiece box as wide as it is long, 0.4 x its length high with the centre of gravity at
+# half that height and the cutting point on top.
 SPACING_SHARE = 0.6
 CG_HEIGHT_SHARE = 0.2
 TOOL_HEIGHT_SHARE = 0.4
 BRAKE_MODES = ("auto", "yes", "no")
 # Counterbalance of a vertical axis: a counterweight on a chain over a sprocket, or a balance
-# cylinder.
-# Chain efficiency over its sprocket when not given: 0.95, an estimate (roller-chain drives are
-# quoted at 0.95-0.98;
-# the lower end, so the counterweight's pull lifting is not overstated).
+# cylinder.  Chain efficiency over its sprocket when not given: 0.95, an estimate (roller-chain
+# drives are quoted at 0.95-0.98; the lower end, so the counterweight's pull lifting is not
+# overstated).
 COUNTERBALANCE_KINDS = ("none", "counterweight", "cylinder")
 CHAIN_EFFICIENCY = 0.95
 
 
 @dataclass(frozen=True)
 class Counterbalance:
-    """A vertical axis's counterbalance (SI).  ``counterweight``: ``mass`` on a chain over a sprocket of
-    ``efficiency``, with the chain's ``chain_mass`` moving too; ``cylinder``: ``force`` at the stroke's start and
-    ``force_at_end`` at its end (None: a regulator keeps it constant), within +/- ``tolerance`` (a fraction), its
-    ``piston_mass`` moving with the head."""
+    """A vertical axis's counterbalance (SI).  ``counterweight``: ``mass`` on a chain over a
+    sprocket of ``efficiency``, with the chain's ``chain_mass`` moving too; ``cylinder``: ``force``
+    at the stroke's start and ``force_at_end`` at its end (None: a regulator keeps it constant),
+    within +/- ``tolerance`` (a fraction), its ``piston_mass`` moving with the head."""
 
     kind: str
     mass: float = 0.0  # counterweight [kg]
@@ -122,9 +104,9 @@ class Counterbalance:
 
 @dataclass(frozen=True)
 class TwinDrive:
-    """A twin-drive gantry (:mod:`axisopt.model.gantry`): two synchronised screw drives with the same
-    parts, ``span`` apart, under a bridge (the axis's ``moving_mass``) with a cross carriage of ``cross_mass`` moving
-    ``cross_stroke`` across it, centred between the drives.  SI units."""
+    """A twin-drive gantry (:mod:`axisopt.model.gantry`): two synchronised screw drives with the
+    same parts, ``span`` apart, under a bridge (the axis's ``moving_mass``) with a cross carriage of
+    ``cross_mass`` moving ``cross_stroke`` across it, centred between the drives.  SI units."""
 
     span: float  # between the two drives (screw axes) [m]
     cross_stroke: float  # the cross carriage's travel, centred on the bridge, at most span [m]
@@ -133,16 +115,15 @@ class TwinDrive:
     bridge_yaw_inertia: float | None = None
     # both uprights (at the drives) [kg]; None: half the bridge (an estimate)
     upright_mass: float | None = None
-    # the side a model of this axis is: 'governing' (nearest the cross carriage at the end of its
-    # stroke: the
-    # limits are checked on it) or 'far' (the other side at that moment); not a YAML key
-    # (model.evaluate's side)
+    # the side a model of this axis is: 'governing' (nearest the cross carriage at the end of
+    # its stroke: the limits are checked on it) or 'far' (the other side at that moment); not a YAML
+    # key (model.evaluate's side)
     side: str = "governing"
 
     @property
     def force_share(self) -> float:
-        """This side's share of a force on the cross carriage at the end of its stroke [-]: r = 1/2 + s/2L on the
-        governing side, 1 - r on the far side."""
+        """This side's share of a force on the cross carriage at the end of its stroke [-]: r =
+        1/2 + s/2L on the governing side, 1 - r on the far side."""
         r = float(side_shares(self.cross_stroke, self.span))
         return 1.0 - r if self.side == "far" else r
 
@@ -169,8 +150,8 @@ class Axis:
     normal_load: float = 0.0  # external load on the guide blocks besides gravity [N]
     lubricant_viscosity: float = 32e-6  # at working temperature [m^2/s]
     motor_inertia: float = 1.0e-3  # motor rotor [kg m^2]
-    # values outside the catalogs, YAML overridable; the defaults' sources are above the class
-    # one support-bearing housing [N/m]; None: 26 x the bearing set (IBC units, an estimate)
+    # values outside the catalogs, YAML overridable; the defaults' sources are above the class one
+    # support-bearing housing [N/m]; None: 26 x the bearing set (IBC units, an estimate)
     bearing_housing_stiffness: float | None = None
     # nut bracket / table connection [N/m]; None: 4 x the nut (THK's mounting allowance, an
     # estimate)
@@ -178,8 +159,7 @@ class Axis:
     coupling_stiffness: float = COUPLING_STIFFNESS  # torsional [N m/rad]
     coupling_inertia: float = COUPLING_INERTIA  # [kg m^2]
     # screw temperature rise in operation [K]; None: the heat balance of the duty cycle (model.heat)
-    # when the axis
-    # has one, TEMPERATURE_RISE otherwise
+    # when the axis has one, TEMPERATURE_RISE otherwise
     temperature_rise: float | None = None
     # fixed-fixed screw pretension [N]; None: absorbs pretension_rise
     pretension: float | None = None
@@ -206,25 +186,22 @@ class Axis:
     # how the nut holds the shaft for buckling: fixed (THK) or supported (MiSUMi)
     buckling_nut_end: str = "fixed"
     # the temperature rise without a duty cycle (and no temperature_rise): "practice", THK A-715's
-    # planning rise
-    # (TEMPERATURE_RISE), or "balance", the heat balance of the default cycle (continuous rapids)
+    # planning rise (TEMPERATURE_RISE), or "balance", the heat balance of the default cycle
+    # (continuous rapids)
     rise_without_cycle: str = "practice"
-    # position feedback: "motor_encoder" (semi-closed loop) or "linear_scale" (closed loop on the
-    # table: the
-    # scale's grade, grades.SCALE_GRADES, in place of the screw's lead and thermal rows); pitch-
-    # error compensation
-    # of a semi-closed loop (the controller's table: the lead row becomes the residual,
-    # grades.compensated_error)
+    # position feedback: "motor_encoder" (semi-closed loop) or "linear_scale" (closed loop on
+    # the table: the scale's grade, grades.SCALE_GRADES, in place of the screw's lead and thermal
+    # rows); pitch-error compensation of a semi-closed loop (the controller's table: the lead row
+    # becomes the residual, grades.compensated_error)
     feedback: str = "motor_encoder"
     scale_grade: str | None = None
     pitch_compensation: bool = False
     # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
     heat_transfer: float | None = None
     # carriage: cutting force across the rail (the feed component is axial_load, the normal one
-    # normal_load),
-    # where it acts and where the moving mass's centre of gravity is, the block pattern (None: the
-    # defaults
-    # above, from the table's size) and the static safety the guides and the nut must keep
+    # normal_load), where it acts and where the moving mass's centre of gravity is, the block
+    # pattern (None: the defaults above, from the table's size) and the static safety the guides and
+    # the nut must keep
     cross_load: float = 0.0  # [N]
     tool_height: float | None = None  # cutting point above the guide mounting plane [m]
     tool_offset: float = 0.0  # cutting point across the rail from the carriage centre [m]
@@ -245,9 +222,8 @@ class Axis:
     guide_static_safety: float = GUIDE_STATIC_SAFETY  # least C0 / largest block load
     nut_static_safety: float = NUT_STATIC_SAFETY  # least C0a / largest axial force
     # least static safety of the support-bearing set on its static rating; None: the rating's
-    # vendor's
-    # (catalogs bearings static_safety: NSK limiting load 1/0.7, THK permissible load 1, else
-    # Rexroth's 4)
+    # vendor's (catalogs bearings static_safety: NSK limiting load 1/0.7, THK permissible load 1,
+    # else Rexroth's 4)
     bearing_static_safety: float | None = None
     # least nut lift-off force / largest axial force
     nut_lift_off_safety: float = NUT_LIFT_OFF_SAFETY
@@ -258,8 +234,8 @@ class Axis:
 
     @property
     def load_factor_eff(self) -> float:
-        """The load factor fw the life checks read: ``load_factor`` when given, else THK A-704 Table 19's
-        for the axis's top speed (:func:`axisopt.physics.checks.load_factor_default`)."""
+        """The load factor fw the life checks read: ``load_factor`` when given, else THK A-704 Table
+        19's for the axis's top speed (:func:`axisopt.physics.checks.load_factor_default`)."""
         return load_factor_default(self.top_speed) if self.load_factor is None else self.load_factor
 
     @property
@@ -299,8 +275,9 @@ class Axis:
 
     @cached_property
     def phases(self) -> tuple:
-        """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move.  ``heat``:
-        the heat balance sets the temperature rise (a duty cycle and no ``temperature_rise``)."""
+        """Duty-cycle phases (:mod:`axisopt.physics.motion`); the default cycle is the rapid move.
+        ``heat``: the heat balance sets the temperature rise (a duty cycle and no
+        ``temperature_rise``)."""
         segs = self.duty_cycle or motion.rapid_cycle(
             self.stroke, self.max_speed, self.acceleration, self.jerk
         )
@@ -313,24 +290,25 @@ class Axis:
 
     @property
     def rise_from_balance(self) -> bool:
-        """The heat balance (model.heat) sets the temperature rise: no temperature_rise given, and a duty cycle
-        or ``rise_without_cycle: balance`` (the default cycle's balance)."""
+        """The heat balance (model.heat) sets the temperature rise: no temperature_rise given, and a
+        duty cycle or ``rise_without_cycle: balance`` (the default cycle's balance)."""
         return self.temperature_rise is None and (
             bool(self.duty_cycle) or self.rise_without_cycle == "balance"
         )
 
     @property
     def top_speed(self) -> float:
-        """The highest table speed commanded [m/s]: max_speed, or a duty-cycle move's speed if faster (the
-        reader refuses such a move; kept as the maximum so the speed checks never read a slower value)."""
+        """The highest table speed commanded [m/s]: max_speed, or a duty-cycle move's speed if
+        faster (the reader refuses such a move; kept as the maximum so the speed checks never read a
+        slower value)."""
         return max(
             [self.max_speed] + [s.speed for s in self.duty_cycle if s.kind == "move" and s.speed]
         )
 
     @property
     def top_acceleration(self) -> float:
-        """The highest acceleration commanded [m/s^2]: axis.acceleration or a duty-cycle move's own, if higher
-        (the largest inertia force in the axial load, f_max, is taken at it)."""
+        """The highest acceleration commanded [m/s^2]: axis.acceleration or a duty-cycle move's own,
+        if higher (the largest inertia force in the axial load, f_max, is taken at it)."""
         return max(
             [self.acceleration]
             + [s.acceleration for s in self.duty_cycle if s.kind == "move" and s.acceleration]
@@ -338,8 +316,8 @@ class Axis:
 
     @property
     def mean_speed_eff(self) -> float:
-        """The mean speed the life checks read [m/s]: ``mean_speed`` when given, else the duty cycle's travel
-        over its time (THK A-730, dwells included), else half of max_speed."""
+        """The mean speed the life checks read [m/s]: ``mean_speed`` when given, else the duty
+        cycle's travel over its time (THK A-730, dwells included), else half of max_speed."""
         if self.mean_speed is not None:
             return self.mean_speed
         cycle = motion.mean_speed(self.phases) if self.duty_cycle else 0.0
@@ -352,7 +330,8 @@ class Axis:
 
 @dataclass(frozen=True)
 class Design:
-    """An axis with one chosen part per slot.  Parts are catalog rows (``parttable.Row``: a dict per part) in SI."""
+    """An axis with one chosen part per slot.  Parts are catalog rows (``parttable.Row``: a dict per
+    part) in SI."""
 
     axis: Axis
     screw: object
@@ -372,8 +351,8 @@ class Design:
 
     @property
     def preload(self) -> float:
-        """The nut preload [N]: ``nut_preload``, else the catalog's (a double nut's stiffness preload, a single
-        nut's least preload)."""
+        """The nut preload [N]: ``nut_preload``, else the catalog's (a double nut's stiffness
+        preload, a single nut's least preload)."""
         if self.nut_preload is not None:
             return self.nut_preload
         return (
@@ -398,9 +377,10 @@ class Design:
         return {k: str(getattr(self, k)["id"]) for k in PART_SLOTS if getattr(self, k) is not None}
 
     def part_rows(self) -> list[dict]:
-        """The parts as rows of (part, id, column, value, unit): each catalog value in the unit its vendor quotes
-        (the shipped catalog file's header: mm, N/um, kN, kg.cm^2, EUR ...; :mod:`axisopt.catalog.partrow`), text as it
-        is in the catalog, an empty optional cell left out; ``to_frame()`` is these rows as a table."""
+        """The parts as rows of (part, id, column, value, unit): each catalog value in the unit its
+        vendor quotes (the shipped catalog file's header: mm, N/um, kN, kg.cm^2, EUR ...;
+        :mod:`axisopt.catalog.partrow`), text as it is in the catalog, an empty optional cell left
+        out; ``to_frame()`` is these rows as a table."""
         from ..catalog.partrow import row_rows
 
         tables = {
@@ -425,8 +405,9 @@ class Design:
         return rows
 
     def to_frame(self):
-        """pandas DataFrame of the parts, one row per catalog value: ``part``, ``id``, ``column``, ``value``
-        and ``unit`` (the unit vendors quote; the axis's own inputs are in the repr and the design file)."""
+        """pandas DataFrame of the parts, one row per catalog value: ``part``, ``id``, ``column``,
+        ``value`` and ``unit`` (the unit vendors quote; the axis's own inputs are in the repr and
+        the design file)."""
         from ..display import frame
 
         return frame(self.part_rows(), ("part", "id", "column", "value", "unit"))

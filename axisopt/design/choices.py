@@ -1,10 +1,12 @@
 """A problem's ``search:`` section: the counterbalance and the twin drive as search choices.
 
-``search: {counterbalance: [none, {kind: counterweight, mass: 200 kg}, ...], twin_drive: [none, {span: ...}]}``
-lists the options; each one is read exactly as the single ``axis.counterbalance`` / ``axis.twin_drive`` key
-(:func:`.reader.read_counterbalance`, :func:`.reader.read_twin_drive`), an error naming the option's index.
-:func:`read_arrangements` returns every arrangement (the product of the lists) as ``(label, Axis)``; the search
-solves each one and keeps the best (:mod:`axisopt.search.arrangements`).  A design keeps one value."""
+``search: {counterbalance: [none, {kind: counterweight, mass: 200 kg}, ...], twin_drive: [none,
+{span: ...}]}`` lists the options; each one is read exactly as the single ``axis.counterbalance`` /
+``axis.twin_drive`` key (:func:`.reader.read_counterbalance`, :func:`.reader.read_twin_drive`), an
+error naming the option's index.
+:func:`read_arrangements` returns every arrangement (the product of the lists) as ``(label, Axis)``;
+the search solves each one and keeps the best (:mod:`axisopt.search.arrangements`).  A design keeps
+one value."""
 
 from __future__ import annotations
 
@@ -104,8 +106,8 @@ def _label(cb, tw) -> str:
 
 
 def read_arrangements(sec: Section | None, asec: Section, axis) -> tuple:
-    """``((label, Axis), ...)`` of ``search:`` (empty without one); ``asec``: the axis section (an option list
-    beside a single axis key is refused)."""
+    """``((label, Axis), ...)`` of ``search:`` (empty without one); ``asec``: the axis section (an
+    option list beside a single axis key is refused)."""
     if sec is None:
         return ()
     # drive types only (design.drivechoice)

@@ -1,7 +1,9 @@
-"""A problem's drive types: ``search: {drive_types: [screw, rack_pinion, linear_motor], rack_pinion: {...},
-linear_motor: {...}}``.  The search sizes each listed type from its catalog (the screw drive from the usual
-tables, rack-and-pinion sets from ``racks.csv``, linear motors from ``linear_motors.csv``) and the best design of
-any type wins (:mod:`axisopt.search.drivetype`).  Without ``drive_types`` the drive is the screw."""
+"""A problem's drive types: ``search: {drive_types: [screw, rack_pinion, linear_motor], rack_pinion:
+{...},
+linear_motor: {...}}``.  The search sizes each listed type from its catalog (the screw drive from
+the usual tables, rack-and-pinion sets from ``racks.csv``, linear motors from ``linear_motors.csv``)
+and the best design of any type wins (:mod:`axisopt.search.drivetype`).  Without ``drive_types`` the
+drive is the screw."""
 
 from __future__ import annotations
 
@@ -69,16 +71,16 @@ LM_SPEC = Spec(
         ),
     },
 )
-# A saved design of a rack-and-pinion or linear-motor drive: the problem's file with this section naming the
-# chosen parts (`axisopt solve --save-design` writes it, `axisopt evaluate` reads it)
+# A saved design of a rack-and-pinion or linear-motor drive: the problem's file with this section
+# naming the chosen parts (`axisopt solve --save-design` writes it, `axisopt evaluate` reads it)
 DRIVE_DESIGN_SLOTS = {
     "rack_pinion": ("rack", "reduction", "motor", "twin_pinion", "guide"),
     "linear_motor": ("linear_motor", "forcers", "guide"),
 }
 DRIVE_DESIGN_SPEC = Spec(
     "drive_design",
-    "one rack-and-pinion or linear-motor design of the problem (solve's --save-design writes it, evaluate "
-    "reads it)",
+    "one rack-and-pinion or linear-motor design of the problem (solve's --save-design writes it, "
+    "evaluate reads it)",
     {
         "type": Key("choice", "the drive type", required=True, choices=tuple(DRIVE_DESIGN_SLOTS)),
         "rack": Key("string", "rack-and-pinion set id (racks.csv)"),
@@ -95,8 +97,9 @@ DRIVE_DESIGN_SPEC = Spec(
 
 
 def read_drive_design(sec: Section | None) -> dict | None:
-    """The ``drive_design:`` section as {slot: id} in the search's vocabulary (twin_pinion 'yes'/'no',
-    forcers a string), with its 'type'; None without one.  Each slot of the type must be given, no other."""
+    """The ``drive_design:`` section as {slot: id} in the search's vocabulary (twin_pinion
+    'yes'/'no', forcers a string), with its 'type'; None without one.  Each slot of the type must be
+    given, no other."""
     if sec is None:
         return None
     kind = sec.read("type")
@@ -130,7 +133,8 @@ DRIVE_KEYS = {
 
 @dataclass(frozen=True)
 class DriveChoice:
-    """The drive types a problem lets the search choose among, their options (SI) and their catalogs."""
+    """The drive types a problem lets the search choose among, their options (SI) and their
+    catalogs."""
 
     types: tuple
     twin_pinion: tuple = (0, 1)  # 0: one pinion, 1: a preloaded twin pinion
@@ -149,9 +153,9 @@ class DriveChoice:
 def read_drive_choice(
     sec: Section | None, axis, dirs=(), base: Path | None = None
 ) -> DriveChoice | None:
-    """The ``search:`` section's drive-type keys (None: none given); ``dirs``: the problem's extra catalog
-    directories.  A vertical linear-motor axis without a brake or a counterbalance is refused (the vendors
-    forbid it: the motor holds nothing without current)."""
+    """The ``search:`` section's drive-type keys (None: none given); ``dirs``: the problem's extra
+    catalog directories.  A vertical linear-motor axis without a brake or a counterbalance is
+    refused (the vendors forbid it: the motor holds nothing without current)."""
     if sec is None or not any(sec.has(k) for k in DRIVE_KEYS):
         return None
     types = tuple(sec.read("drive_types") or ("screw",))

@@ -1,7 +1,7 @@
-"""The YAML keys of a design file, one table per section: ``axis`` (:data:`AXIS_SPEC`, with the duty cycle's
-moves and dwells), ``parts`` (:data:`PARTS_SPEC`; an inline custom part: :data:`PART_SPECS`) and the file
-(:data:`DESIGN_SPEC`).  The readers read by these tables (:mod:`.reader`) and ``axisopt schema`` writes them out
-as a JSON Schema.
+"""The YAML keys of a design file, one table per section: ``axis`` (:data:`AXIS_SPEC`, with the duty
+cycle's moves and dwells), ``parts`` (:data:`PARTS_SPEC`; an inline custom part: :data:`PART_SPECS`)
+and the file (:data:`DESIGN_SPEC`).  The readers read by these tables (:mod:`.reader`) and
+``axisopt schema`` writes them out as a JSON Schema.
 """
 
 from __future__ import annotations
@@ -20,18 +20,15 @@ from .sectionkeys import (
 )
 
 # Each table below is the one declaration of its section's keys: the readers read them by it
-# (Section.read)
-# and `axisopt schema` writes it out as a JSON Schema.  Unset axis keys take the Axis defaults
-# (.axis).
+# (Section.read) and `axisopt schema` writes it out as a JSON Schema.  Unset axis keys take the Axis
+# defaults (.axis).
 
 
 # Upper bounds where a value beyond them leaves the model's range: a screw 100 K above ambient is
-# not in
-# operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer holds.
-# Plausible
-# drive ranges: a belt or gear stage of a feed drive reduces by at most about 1:20 either way (1:50
-# allowed);
-# an inertia-ratio limit beyond 1000 or a brake safety factor beyond 10 is no limit at all.
+# not in operation, and the linear thermal model (constant alpha, elastic bearing sets) no longer
+# holds.  Plausible drive ranges: a belt or gear stage of a feed drive reduces by at most about 1:20
+# either way (1:50 allowed); an inertia-ratio limit beyond 1000 or a brake safety factor beyond 10
+# is no limit at all.
 AXIS_SPEC = Spec(
     "axis",
     "what the machine asks of the axis (every dimensional value with its unit)",
@@ -64,8 +61,8 @@ AXIS_SPEC = Spec(
         ),
         "load_factor": Key(
             "number",
-            "load factor fw of the life calculation (default: THK A-704 Table 19 by "
-            "max_speed, the upper end of its row: 1.2 up to 15 m/min, 1.5 to 60, 2 to 120, else 3.5)",
+            "load factor fw of the life calculation (default: THK A-704 Table 19 by max_speed, the "
+            "upper end of its row: 1.2 up to 15 m/min, 1.5 to 60, 2 to 120, else 3.5)",
             minimum=1.0,
             maximum=10.0,
         ),
@@ -201,9 +198,9 @@ AXIS_SPEC = Spec(
         ),
         "feedback": Key(
             "choice",
-            "position feedback: motor_encoder (semi-closed loop; default) or linear_scale (a "
-            "scale on the table closes the loop: its grade's error in place of the screw's lead and thermal "
-            "rows of the positioning budget; needs scale_grade)",
+            "position feedback: motor_encoder (semi-closed loop; default) or linear_scale (a scale "
+            "on the table closes the loop: its grade's error in place of the screw's lead and "
+            "thermal rows of the positioning budget; needs scale_grade)",
             choices=("motor_encoder", "linear_scale"),
             default="motor_encoder",
         ),
@@ -238,9 +235,8 @@ AXIS_SPEC = Spec(
             default="fixed",
         ),
         # carriage: the cutting force's cross component and where it acts, the centre of gravity,
-        # the
-        # block pattern; heights above the guide mounting plane (the screw axis is taken to lie in
-        # it)
+        # the block pattern; heights above the guide mounting plane (the screw axis is taken to lie
+        # in it)
         "cross_load": axis_q(
             "force",
             "cutting force across the rail (feed: axial_load, normal: normal_load; default "

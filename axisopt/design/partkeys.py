@@ -1,5 +1,5 @@
-"""The YAML keys of the parts: one slot per part table (a catalog id or an inline mapping) and, for an inline
-(custom) part, the columns of its catalog table with their units."""
+"""The YAML keys of the parts: one slot per part table (a catalog id or an inline mapping) and, for
+an inline (custom) part, the columns of its catalog table with their units."""
 
 from __future__ import annotations
 
@@ -8,7 +8,8 @@ from ..yamlio import Key, Spec
 
 
 def _part_key(table: str, col: str, kind: str) -> Key:
-    """How an inline part gives catalog column ``col`` (the catalog loader's column kinds and choices)."""
+    """How an inline part gives catalog column ``col`` (the catalog loader's column kinds and
+    choices)."""
     doc = col.replace("_", " ")
     if kind == "str":
         optional = col in ("vendor", "series")
@@ -85,8 +86,8 @@ PARTS_SPEC = Spec(
         "coupling": _slot("couplings", "shaft coupling (optional)", False),
         "reduction": _slot(
             "reductions",
-            "reduction between motor and coupling: planetary gearbox or belt stage "
-            "(optional; without it the axis's reduction_ratio, reduction_efficiency and reduction_inertia, "
+            "reduction between motor and coupling: planetary gearbox or belt stage (optional; "
+            "without it the axis's reduction_ratio, reduction_efficiency and reduction_inertia, "
             "direct drive by default)",
             False,
         ),
@@ -98,8 +99,8 @@ PARTS_SPEC = Spec(
         ),
         "screw_grade": Key(
             "string",
-            "lead accuracy grade of the screw, one its series is made in (JIS B 1192: C0 C1 "
-            "C2 C3 C5 C7 C8 C10; catalogs/screw_grades.csv; default: the cheapest, C5 for the shipped "
+            "lead accuracy grade of the screw, one its series is made in (JIS B 1192: C0 C1 C2 C3 "
+            "C5 C7 C8 C10; catalogs/screw_grades.csv; default: the cheapest, C5 for the shipped "
             "screws)",
         ),
     },

@@ -1,5 +1,6 @@
-"""The strict design-YAML reader: :func:`load_design` and the section readers the problem and study readers
-share (:func:`read_axis`, :func:`read_parts`, :func:`catalog_for`).  Every error names the file and key.
+"""The strict design-YAML reader: :func:`load_design` and the section readers the problem and study
+readers share (:func:`read_axis`, :func:`read_parts`, :func:`catalog_for`).  Every error names the
+file and key.
 """
 
 from __future__ import annotations
@@ -102,10 +103,10 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
 
 
 def read_counterbalance(sec: Section, kw: dict) -> Counterbalance | None:
-    """``counterbalance``: ``{kind: counterweight, mass:, efficiency:, chain_mass:}`` or ``{kind: cylinder, force:,
-    force_at_end:, tolerance:, piston_mass:}`` (``{kind: none}``: None).  Only on a vertical axis; a counterweight
-    at most the head (axis.moving_mass: an overbalanced head would rise with the brake released); a key of the
-    other kind is refused."""
+    """``counterbalance``: ``{kind: counterweight, mass:, efficiency:, chain_mass:}`` or
+    ``{kind: cylinder, force:, force_at_end:, tolerance:, piston_mass:}`` (``{kind: none}``: None).
+    Only on a vertical axis; a counterweight at most the head (axis.moving_mass: an overbalanced
+    head would rise with the brake released); a key of the other kind is refused."""
     s = sec.read("counterbalance")
     kind = s.read("kind")
     for key in s.keys():  # a typo first, before a missing key of the kind is asked for
@@ -164,9 +165,10 @@ def read_counterbalance(sec: Section, kw: dict) -> Counterbalance | None:
 
 
 def read_twin_drive(sec: Section, kw: dict) -> TwinDrive:
-    """``twin_drive: {span, cross_stroke, cross_mass, bridge_yaw_inertia}`` (:class:`TwinDrive`).  A horizontal
-    axis only: on a vertical axis the drives would carry the weight and a wall-mounted bridge hangs across its
-    rails, neither in the model (:mod:`axisopt.model.gantry`); the cross stroke stays between the drives."""
+    """``twin_drive: {span, cross_stroke, cross_mass, bridge_yaw_inertia}`` (:class:`TwinDrive`).  A
+    horizontal axis only: on a vertical axis the drives would carry the weight and a wall-mounted
+    bridge hangs across its rails, neither in the model (:mod:`axisopt.model.gantry`); the cross
+    stroke stays between the drives."""
     sub = sec.read("twin_drive")
     tw = {name: sub.read(name) for name in TWIN_SPEC.keys}
     sub.done()
@@ -195,8 +197,8 @@ def read_twin_drive(sec: Section, kw: dict) -> TwinDrive:
 
 
 def _check_carriage(sec: Section, kw: dict) -> None:
-    """The block pattern fits the table; at least two blocks on every rail (the table's rocking stiffness comes
-    from the block spacing: no vendor text gives one block's moment rigidity)."""
+    """The block pattern fits the table; at least two blocks on every rail (the table's rocking
+    stiffness comes from the block spacing: no vendor text gives one block's moment rigidity)."""
     length = kw.get("table_length", Axis.table_length)
     width = kw.get("table_width", length)
     if kw.get("block_spacing", 0.0) > length * (1 + 1e-9):
@@ -222,8 +224,8 @@ def _check_carriage(sec: Section, kw: dict) -> None:
 
 
 def _check_pairs(sec: Section, kw: dict) -> None:
-    """Values that bound one another: a mean speed at most the top speed, a mean axial load at most the
-    largest (the axial load, or a duty cycle's largest force)."""
+    """Values that bound one another: a mean speed at most the top speed, a mean axial load at most
+    the largest (the axial load, or a duty cycle's largest force)."""
     top, mean = kw.get("max_speed"), kw.get("mean_speed")
     if top is not None and mean is not None and mean > top * (1 + 1e-9):
         raise sec.error(
@@ -245,11 +247,12 @@ def _check_pairs(sec: Section, kw: dict) -> None:
 
 
 def read_duty_cycle(sec: Section, kw: dict) -> tuple:
-    """``duty_cycle``: a list of moves ``{move: 400 mm, speed: 24 m/min, acceleration:, jerk:, force:,
-    moving_mass:}`` (speed defaults to the axis max_speed, acceleration and jerk to the axis's) and dwells
-    ``{dwell: 2 s, force:, moving_mass:}``.  An entry's ``moving_mass`` (a workpiece loaded or unloaded) is at
-    most the axis's: ``axis.moving_mass`` is the heaviest the table carries (the largest inertia force, the
-    modes, the guides' static load and the brake are taken with it)."""
+    """``duty_cycle``: a list of moves ``{move: 400 mm, speed: 24 m/min, acceleration:, jerk:,
+    force:, moving_mass:}`` (speed defaults to the axis max_speed, acceleration and jerk to the
+    axis's) and dwells ``{dwell: 2 s, force:, moving_mass:}``.  An entry's ``moving_mass`` (a
+    workpiece loaded or unloaded) is at most the axis's: ``axis.moving_mass`` is the heaviest the
+    table carries (the largest inertia force, the modes, the guides' static load and the brake are
+    taken with it)."""
     node = sec.raw("duty_cycle")
     where = sec.key_path("duty_cycle")
     if not isinstance(node.value, list) or not node.value:
@@ -272,9 +275,9 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
         if mass is not None and heaviest is not None and mass > heaviest * (1 + 1e-9):
             raise s.error(
                 "moving_mass",
-                f"{mass:g} kg is heavier than axis.moving_mass ({heaviest:g} kg); give "
-                "the axis the heaviest mass the table carries (the largest inertia force, the modes, "
-                "the guides' static load and the brake are taken with it)",
+                f"{mass:g} kg is heavier than axis.moving_mass ({heaviest:g} kg); give the axis "
+                "the heaviest mass the table carries (the largest inertia force, the modes, the "
+                "guides' static load and the brake are taken with it)",
             )
         if s.has("dwell"):
             out.append(
@@ -316,7 +319,8 @@ def read_duty_cycle(sec: Section, kw: dict) -> tuple:
 
 
 def read_part(sec: Section, key: str, table: str, catalog: Catalog):
-    """A part slot: a catalog id, or an inline mapping with the catalog's columns (values with units)."""
+    """A part slot: a catalog id, or an inline mapping with the catalog's columns (values with
+    units)."""
     node = sec.raw(key, required=True)
     if isinstance(node.value, (str, int)) and not isinstance(node.value, bool):
         return catalog.part(table, str(node.value), source=sec.source, key=sec.where(key))
@@ -394,7 +398,8 @@ def read_parts(sec: Section, catalog: Catalog) -> dict:
 
 
 def rotating_nut(nut) -> bool:
-    """True for a driven rotating-nut unit (the nut row's ``rotating`` flag is 1; empty or absent: 0)."""
+    """True for a driven rotating-nut unit (the nut row's ``rotating`` flag is 1; empty or absent:
+    0)."""
     try:
         v = float(nut["rotating"])
     except (KeyError, TypeError, ValueError):
@@ -403,7 +408,8 @@ def rotating_nut(nut) -> bool:
 
 
 def fitting_nuts(catalog: Catalog, screw_id: str, shown: int = 6) -> str:
-    """'nuts for it: A, B (+3 more; axisopt parts nuts --fits ID)' -- what a refused nut could be instead."""
+    """'nuts for it: A, B (+3 more; axisopt parts nuts --fits ID)' -- what a refused nut could be
+    instead."""
     nuts = catalog.rows("nuts")
     ids = [str(i) for i in nuts.ids[nuts["screw_id"] == screw_id]]
     if not ids:
@@ -487,8 +493,8 @@ def load_design(path) -> Design:
 
 
 def _nut_length(parts) -> float:
-    """The design's nut length [m]: its row's ``length``, else the catalog envelope (physics.nut; what
-    model.params.nut_length takes)."""
+    """The design's nut length [m]: its row's ``length``, else the catalog envelope (physics.nut;
+    what model.params.nut_length takes)."""
     nut, screw = parts.get("nut"), parts.get("screw")
     if nut is None or screw is None:
         return 0.0

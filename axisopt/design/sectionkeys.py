@@ -1,6 +1,6 @@
-"""The YAML keys of the axis's sub-sections, one table each: a duty cycle's moves and dwells, the counterbalance
-(counterweight or cylinder, the keys of each kind) and the twin-drive gantry.  :mod:`.keys` nests them in the
-axis's table."""
+"""The YAML keys of the axis's sub-sections, one table each: a duty cycle's moves and dwells, the
+counterbalance (counterweight or cylinder, the keys of each kind) and the twin-drive gantry.
+:mod:`.keys` nests them in the axis's table."""
 
 from __future__ import annotations
 
@@ -34,8 +34,7 @@ _FORCE = Key(
 
 
 # a workpiece loaded or unloaded: the entry's own moving mass (no inheritance from the entry before:
-# a cycle repeats,
-# and each entry that differs from axis.moving_mass says so)
+# a cycle repeats, and each entry that differs from axis.moving_mass says so)
 _MASS = Key(
     "quantity",
     "table + workpiece during the entry (default: axis.moving_mass, the heaviest the table "
@@ -140,17 +139,16 @@ COUNTERBALANCE_KEYS = {
 
 
 # A twin-drive gantry (model.gantry): two synchronised drives with the same parts under one bridge
-# (the
-# axis's moving_mass) with a cross carriage; the bounds keep machine-tool sizes (a bridge up to 50 m
-# wide)
+# (the axis's moving_mass) with a cross carriage; the bounds keep machine-tool sizes (a bridge up to
+# 50 m wide)
 TWIN_SPEC = Spec(
     "twin_drive",
-    "two synchronised screw drives (the same parts on both sides) under a bridge (the "
-    "axis's moving_mass) with a cross carriage: a horizontal gantry only (refused on a vertical or wall "
+    "two synchronised screw drives (the same parts on both sides) under a bridge (the axis's "
+    "moving_mass) with a cross carriage: a horizontal gantry only (refused on a vertical or wall "
     "axis).  Each drive is checked on the governing side with the cross carriage at the end of its "
-    "stroke nearest it (its share 1/2 + cross_stroke / 2 span of the process force, half the bridge and "
-    "that share of the cross carriage); the gantry's translation and racking (yaw) modes enter the 1st "
-    "frequency; cost and mass count both drives",
+    "stroke nearest it (its share 1/2 + cross_stroke / 2 span of the process force, half the "
+    "bridge and that share of the cross carriage); the gantry's translation and racking (yaw) "
+    "modes enter the 1st frequency; cost and mass count both drives",
     {
         "span": axis_q(
             "length", "between the two drives (screw axes)", required=True, maximum=(50.0, "50 m")

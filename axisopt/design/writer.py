@@ -1,5 +1,6 @@
-"""A :class:`~axisopt.design.Design` written back as the mapping (and YAML text) a design file holds, in
-vendor units: :func:`design_to_dict`, :func:`design_to_yaml`; :func:`~axisopt.design.load_design` reads it back.
+"""A :class:`~axisopt.design.Design` written back as the mapping (and YAML text) a design file
+holds, in vendor units: :func:`design_to_dict`, :func:`design_to_yaml`;
+:func:`~axisopt.design.load_design` reads it back.
 """
 
 from __future__ import annotations
@@ -22,8 +23,8 @@ OTHER_UNITS = {"angle": ("arcmin", "arcsec")}
 
 
 def _q(value: float, kind: str) -> str:
-    """``value`` [SI] in the kind's display unit, or in one of :data:`OTHER_UNITS` where its figure has fewer
-    significant digits (then a figure of 1 or more, then the first unit)."""
+    """``value`` [SI] in the kind's display unit, or in one of :data:`OTHER_UNITS` where its figure
+    has fewer significant digits (then a figure of 1 or more, then the first unit)."""
     units = (DISPLAY_UNITS[kind],) + OTHER_UNITS.get(kind, ())
     figures = [(f"{value / unit_factor(u, kind):.12g}", i) for i, u in enumerate(units)]
     text, i = min(
@@ -34,10 +35,11 @@ def _q(value: float, kind: str) -> str:
 
 
 def design_to_dict(design: Design, *, inline_parts: bool = False) -> dict:
-    """A design as the plain mapping a design YAML holds (vendor units).  ``load_design`` reads it back.
+    """A design as the plain mapping a design YAML holds (vendor units).  ``load_design`` reads it
+    back.
 
-    Parts of the shipped catalogs are written as their ids unless ``inline_parts``; a part from a user
-    catalog or from the YAML itself is written inline, so the file stands on its own.
+    Parts of the shipped catalogs are written as their ids unless ``inline_parts``; a part from a
+    user catalog or from the YAML itself is written inline, so the file stands on its own.
     """
     a = design.axis
     axis: dict = {}
@@ -132,8 +134,9 @@ def _segment_dict(sg) -> dict:
 
 
 def design_to_yaml(design: Design, *, preload_note: str = "", **kw) -> str:
-    """:func:`design_to_dict` as YAML text; ``preload_note`` (one line) is written as a comment beside the nut
-    preload (how a saved optimum's preload was rounded, ``axisopt.report.partslist.order_preload``)."""
+    """:func:`design_to_dict` as YAML text; ``preload_note`` (one line) is written as a comment
+    beside the nut preload (how a saved optimum's preload was rounded,
+    ``axisopt.report.partslist.order_preload``)."""
     import yaml
 
     text = yaml.safe_dump(design_to_dict(design, **kw), sort_keys=False, allow_unicode=True)

@@ -1,5 +1,6 @@
 """Identification: measured-data formats, fitting, the effect library, diagnosis of reduced tables
-(:mod:`.diagnose`) and of time records (:mod:`.idim`), judged by one selection rule (:mod:`.selection`)."""
+(:mod:`.diagnose`) and of time records (:mod:`.idim`), judged by one selection rule
+(:mod:`.selection`)."""
 
 from .effects import Effect, library, register_effect, time_effects, unregister_effect
 from .fit import Param

@@ -1,4 +1,5 @@
-"""Close the loop: save a diagnosis as a calibration YAML; apply it to a design for ``axisopt evaluate``.
+"""Close the loop: save a diagnosis as a calibration YAML; apply it to a design for
+``axisopt evaluate``.
 
 File layout (values carry units; ``kind`` names the quantity so the value parses strictly)::
 
@@ -14,8 +15,9 @@ File layout (values carry units; ``kind`` names the quantity so the value parses
     applied: [...]          # informational, recomputed on apply
     not_applied: [...]
 
-What ``evaluate`` cannot represent (Stribeck, backlash, thermal drift, damping, a periodic force ...) is listed as
-not applied.  Time records write theirs with :func:`.timecalibration.time_calibration_dict` in the same layout.
+What ``evaluate`` cannot represent (Stribeck, backlash, thermal drift, damping, a periodic force
+...) is listed as not applied.  Time records write theirs with
+:func:`.timecalibration.time_calibration_dict` in the same layout.
 """
 
 from __future__ import annotations
@@ -84,7 +86,8 @@ def calibration_dict(diag, design=None, sources=()) -> dict:
 
 
 def write_calibration(d: dict, path) -> dict:
-    """Write a calibration record ``d`` (a table's or a time record's) as YAML to ``path``; returns ``d``."""
+    """Write a calibration record ``d`` (a table's or a time record's) as YAML to ``path``; returns
+    ``d``."""
     from ..fileio import write_text_atomic
 
     write_text_atomic(
@@ -94,8 +97,9 @@ def write_calibration(d: dict, path) -> dict:
 
 
 def check_calibration_path(path, design=None, sources=()) -> None:
-    """Refuse, before anything is computed or written, a calibration ``path`` that is one of the measured
-    files (``sources``) or the design file the calibration is fitted to, or that cannot be written."""
+    """Refuse, before anything is computed or written, a calibration ``path`` that is one of the
+    measured files (``sources``) or the design file the calibration is fitted to, or that cannot be
+    written."""
     from ..fileio import check_output_path, refuse_inputs
 
     refuse_inputs(path, [*map(str, sources), getattr(design, "source", "")], what="calibration")
@@ -103,7 +107,8 @@ def check_calibration_path(path, design=None, sources=()) -> None:
 
 
 def save_calibration(diag, path, design=None, sources=()) -> dict:
-    """Save a friction-table diagnosis as a calibration YAML (never over its data or design file)."""
+    """Save a friction-table diagnosis as a calibration YAML (never over its data or design
+    file)."""
     check_calibration_path(path, design, sources)
     return write_calibration(calibration_dict(diag, design, sources), path)
 
@@ -132,7 +137,8 @@ def _read(path) -> dict:
                 hint = f"; did you mean '{near[0]}'?" if near else ""
                 raise sec.error(
                     key,
-                    f"unknown {where} parameter '{key}'{hint} (known: {', '.join(sorted(allowed))})",
+                    f"unknown {where} parameter '{key}'{hint} (known: "
+                    f"{', '.join(sorted(allowed))})",
                 )
             s = sec.section(key)
             kind = s.choice("kind", tuple(KINDS), required=True)
@@ -185,8 +191,7 @@ def _read(path) -> dict:
 
 
 # Calibrated values that cannot be negative (a stiffness, damping coefficient, modulus, mass ...)
-# and the
-# ones that must be positive: a negative or zero one is refused, not applied.
+# and the ones that must be positive: a negative or zero one is refused, not applied.
 NON_NEGATIVE_KINDS = frozenset(
     {"stiffness", "damping", "pressure", "mass", "inertia", "torsional_stiffness"}
 )
@@ -202,15 +207,14 @@ BASELINE_KINDS = {
 
 
 # ------------------------------------------------------------------------------ the YAML keys (one
-# table)
-# The one declaration of a calibration file's keys: _read reads them by it and `axisopt schema
-# calibration`
-# writes it out.  An effect's parameter names are the effect's own (the library checks them on
-# apply).
+# table) The one declaration of a calibration file's keys: _read reads them by it and
+# `axisopt schema calibration` writes it out.  An effect's parameter names are the effect's own (the
+# library checks them on apply).
 
 
 def _param_spec(name: str, doc: str, kind: str | None) -> Spec:
-    """A calibrated value: {value, sigma, kind}; ``kind`` None: any units.KINDS kind, named in the file."""
+    """A calibrated value: {value, sigma, kind}; ``kind`` None: any units.KINDS kind, named in the
+    file."""
     positive = name in POSITIVE_PARAMS
     return Spec(
         name,
@@ -358,7 +362,8 @@ def calibrate_design(design, cal) -> tuple:
             out = lib[name].calibrate(vals, design)
         except KeyError as exc:
             raise InputError(
-                f"effect '{name}' needs parameter '{exc.args[0]}' (given: {', '.join(sorted(vals))})",
+                f"effect '{name}' needs parameter '{exc.args[0]}' (given: "
+                f"{', '.join(sorted(vals))})",
                 source=cal.get("source"),
                 where=where[0] if where else None,
             ) from None
@@ -396,7 +401,8 @@ def apply_calibration(design, path):
     if cal["design"] is not None and cal["design"] != design.name:
         raise InputError(
             f"calibration is for design '{cal['design']}', not '{design.name}' (a calibration "
-            "fitted on another axis does not apply; edit its 'design' key only if the axis is the same)",
+            "fitted on another axis does not apply; edit its 'design' key only if the axis is the "
+            "same)",
             source=str(path),
             where="key 'design'",
         )

@@ -1,11 +1,11 @@
 """One fitting engine: named parameters with units and bounds, residuals as CasADi expressions,
 Levenberg-Marquardt with CasADi Jacobians, weighted by measurement noise.
 
-A :class:`Problem` is a list of blocks, one per dataset: a CasADi row function ``(theta, z) ->
-[prediction; d prediction / d theta]`` mapped over the dataset's columns ``Z``, the measurements ``y``
-and the weights ``w = 1/sigma``.  :func:`fit` minimises ``sum (w (pred - y))^2`` over the parameters
-(in solver units ``theta / typical``, clipped to bounds) and returns estimates, their covariance
-``s^2 (J^T J)^-1`` and the information criteria.
+A :class:`Problem` is a list of blocks, one per dataset: a CasADi row function
+``(theta, z) -> [prediction; d prediction / d theta]`` mapped over the dataset's columns ``Z``, the
+measurements ``y`` and the weights ``w = 1/sigma``.  :func:`fit` minimises ``sum (w (pred - y))^2``
+over the parameters (in solver units ``theta / typical``, clipped to bounds) and returns estimates,
+their covariance ``s^2 (J^T J)^-1`` and the information criteria.
 """
 
 from __future__ import annotations
@@ -21,7 +21,8 @@ from ..units import unit_factor
 
 @dataclass(frozen=True)
 class Param:
-    """A fitted quantity.  ``init``, bounds and ``plausible`` are SI; ``unit`` is the display unit."""
+    """A fitted quantity.  ``init``, bounds and ``plausible`` are SI; ``unit`` is the display
+    unit."""
 
     name: str
     label: str
@@ -219,9 +220,11 @@ def fit(problem: Problem, theta0=None, mask=None, maxit: int = 60, tol: float = 
 
 
 def covariance(J, rss, n, scale):
-    """sigma^2 (J^T J)^-1 in SI.  A parameter in a direction the data do not fix (a zero or dependent Jacobian
-    column: a Stribeck velocity far below every test speed, a term held at its bound) gets an infinite
-    variance -- "not identifiable" -- instead of the zero a pseudo-inverse would give it."""
+    """sigma^2 (J^T J)^-1 in SI.  A parameter in a direction the data do not fix (a zero or
+    dependent Jacobian
+    column: a Stribeck velocity far below every test speed, a term held at its bound) gets an
+    infinite variance -- "not identifiable" -- instead of the zero a pseudo-inverse would give
+    it."""
     p = J.shape[1]
     if p == 0:
         return np.zeros((0, 0))

@@ -1,8 +1,10 @@
-"""Levels of a factor logged with jitter: readings meant at one speed, position or load are logged a little
-apart (a speed held to +-0.5 %, a position to +-1 mm); they are one level for replicates and held-out groups.
+"""Levels of a factor logged with jitter: readings meant at one speed, position or load are logged a
+little apart (a speed held to +-0.5 %, a position to +-1 mm); they are one level for replicates and
+held-out groups.
 
-A sorted factor is cut where the gap to the next value exceeds ``REL`` of the value or, for every factor but
-the velocity, ``SPAN`` of the factor's range (a velocity spans decades: its levels are relative).
+A sorted factor is cut where the gap to the next value exceeds ``REL`` of the value or, for every
+factor but the velocity, ``SPAN`` of the factor's range (a velocity spans decades: its levels are
+relative).
 """
 
 from __future__ import annotations
@@ -16,7 +18,8 @@ RELATIVE_ONLY = ("velocity",)
 
 
 def cluster_levels(values, name: str = "") -> np.ndarray:
-    """``values`` with each level replaced by its mean (the level as meant); exact repeats stay as they are."""
+    """``values`` with each level replaced by its mean (the level as meant); exact repeats stay as
+    they are."""
     v = np.asarray(values, dtype=float)
     if v.size < 2:
         return v.copy()

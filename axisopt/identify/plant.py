@@ -2,8 +2,8 @@
 
 :func:`plant_from_design` evaluates :func:`axisopt.model.axis_response` once and keeps what the
 measurement models use: the component stiffnesses at the design preload, the screw section, span and
-mounting, masses and the catalog friction terms.  Tests and benchmarks may also build a :class:`Plant`
-directly.
+mounting, masses and the catalog friction terms.  Tests and benchmarks may also build a
+:class:`Plant` directly.
 """
 
 from __future__ import annotations
@@ -71,7 +71,8 @@ class Plant:
 
 
 def plant_from_design(design) -> Plant:
-    """Plant of a :class:`axisopt.design.Design` from the design's own axis model (same chain components)."""
+    """Plant of a :class:`axisopt.design.Design` from the design's own axis model (same chain
+    components)."""
     from ..model import SCREW_EFFICIENCY, axis_response, design_params
     from ..model.loads import bearing_set_stiffness
 

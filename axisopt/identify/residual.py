@@ -1,18 +1,20 @@
-"""What a fit leaves unexplained: tests of the final residual for structure against noise, and the structure's
-signature in words (what it looks like, what could cause it, which measurement would separate the causes).
+"""What a fit leaves unexplained: tests of the final residual for structure against noise, and the
+structure's signature in words (what it looks like, what could cause it, which measurement would
+separate the causes).
 
-A *probe* is a set of columns G (functions of the recorded factors: position, velocity, direction, time, ...).
-Its share of the residual r is the added-variable (partial regression) statistic (R. D. Cook, S. Weisberg,
-*Residuals and Influence in Regression*, Chapman & Hall 1982): G is first made orthogonal to the fitted
-model's own columns W, so a probe is never credited with what the model can already absorb by refitting, then
+A *probe* is a set of columns G (functions of the recorded factors: position, velocity, direction,
+time, ...).  Its share of the residual r is the added-variable (partial regression) statistic (R. D.
+Cook, S. Weisberg, *Residuals and Influence in Regression*, Chapman & Hall 1982): G is first made
+orthogonal to the fitted model's own columns W, so a probe is never credited with what the model can
+already absorb by refitting, then
 
 .. math:: s = \\|P_{G_\\perp} r\\|^2 / \\|r\\|^2, \\qquad
           \\chi^2 = n_{eff}\\, s/(1 - s) \\sim \\chi^2_k \\text{ under white noise}
 
-with :math:`n_{eff} = n (1 - \\rho_1)/(1 + \\rho_1)` (lag-1 autocorrelation :math:`\\rho_1` of the residual in
-row order: filtered, decimated rows are not independent).  A probe scanned over a parameter (a period) pays
-for the scan with a Bonferroni factor.  Structure *remains* when a probe holds at least ``MIN_SHARE`` of the
-residual variance at ``log10 p < LOG10_P``.  Numpy only.
+with :math:`n_{eff} = n (1 - \\rho_1)/(1 + \\rho_1)` (lag-1 autocorrelation :math:`\\rho_1` of the
+residual in row order: filtered, decimated rows are not independent).  A probe scanned over a
+parameter (a period) pays for the scan with a Bonferroni factor.  Structure *remains* when a probe
+holds at least ``MIN_SHARE`` of the residual variance at ``log10 p < LOG10_P``.  Numpy only.
 """
 
 from __future__ import annotations
@@ -44,8 +46,9 @@ class Probe:
 
 
 class Span:
-    """An orthonormal basis Q of the span of a model's columns W (computed once, rank-safe by SVD), so the
-    many probes of one residual project with ``Q Q^T`` instead of a least-squares solve each."""
+    """An orthonormal basis Q of the span of a model's columns W (computed once, rank-safe by SVD),
+    so the many probes of one residual project with ``Q Q^T`` instead of a least-squares solve
+    each."""
 
     def __init__(self, W: np.ndarray):
         sc = np.linalg.norm(W, axis=0)
@@ -56,7 +59,8 @@ class Span:
 
 
 def orthogonal(G: np.ndarray, W) -> np.ndarray:
-    """G minus its projection on the span of W (an array, column-scaled and rank-safe, or a :class:`Span`)."""
+    """G minus its projection on the span of W (an array, column-scaled and rank-safe, or a
+    :class:`Span`)."""
     G = np.asarray(G, dtype=float)
     if G.ndim == 1:
         G = G[:, None]
@@ -71,7 +75,8 @@ def orthogonal(G: np.ndarray, W) -> np.ndarray:
 
 
 def share(r: np.ndarray, G: np.ndarray, W: np.ndarray | None = None) -> float:
-    """Share of ``r``'s sum of squares explained by the columns of ``G`` made orthogonal to ``W``."""
+    """Share of ``r``'s sum of squares explained by the columns of ``G`` made orthogonal to
+    ``W``."""
     Go = orthogonal(G, W)
     sc = np.linalg.norm(Go, axis=0)
     ok = sc > 1e-9 * (np.max(sc) if len(sc) else 1.0)
@@ -85,8 +90,8 @@ def share(r: np.ndarray, G: np.ndarray, W: np.ndarray | None = None) -> float:
 
 
 def lag1(r: np.ndarray, breaks: np.ndarray | None = None) -> float:
-    """Lag-1 autocorrelation of ``r`` in row order; pairs across ``breaks`` (True where row i+1 does not
-    follow row i) are left out."""
+    """Lag-1 autocorrelation of ``r`` in row order; pairs across ``breaks`` (True where row i+1 does
+    not follow row i) are left out."""
     a, b = r[:-1], r[1:]
     if breaks is not None:
         a, b = a[~breaks], b[~breaks]
@@ -100,8 +105,8 @@ def n_effective(n: int, rho: float) -> float:
 
 
 def log10_p_chi2(x: float, k: int) -> float:
-    """log10 of the upper tail of chi^2_k at x (Wilson-Hilferty normal approximation; tails below 1e-300
-    are extended with the normal's asymptote)."""
+    """log10 of the upper tail of chi^2_k at x (Wilson-Hilferty normal approximation; tails below
+    1e-300 are extended with the normal's asymptote)."""
     if x <= 0:
         return 0.0
     z = ((x / k) ** (1.0 / 3.0) - (1.0 - 2.0 / (9.0 * k))) / math.sqrt(2.0 / (9.0 * k))
@@ -139,12 +144,13 @@ def period_scan(
     fixed=(),
 ) -> Probe:
     """Spectrum of the residual over position.  A coarse scan on a uniform grid of spatial frequency
-    (spacing a quarter of 1/span, so no peak falls between grid points) with the plain columns
-    sin, cos, sgn(v) sin, sgn(v) cos of 2 pi q/P at the rows ``q``, ``sgn``; then the two best periods, refined
-    on a local grid, and the periods named in advance (``fixed``: the lead and its harmonics, no scan
-    factor) are scored with ``columns(P)`` (the same columns computed as the regression's: filtered and
-    decimated) against the model's columns W.  Returns the best as a 'position_periodic' probe with detail
-    ``period`` and ``friction_share`` (the share of the periodic part that follows the direction)."""
+    (spacing a quarter of 1/span, so no peak falls between grid points) with the plain columns sin,
+    cos, sgn(v) sin, sgn(v) cos of 2 pi q/P at the rows ``q``, ``sgn``; then the two best periods,
+    refined on a local grid, and the periods named in advance (``fixed``: the lead and its
+    harmonics, no scan factor) are scored with ``columns(P)`` (the same columns computed as the
+    regression's: filtered and decimated) against the model's columns W.  Returns the best as a
+    'position_periodic' probe with detail ``period`` and ``friction_share`` (the share of the
+    periodic part that follows the direction)."""
     span = float(np.ptp(q)) or 1.0
     df = 0.25 / span
     freqs = np.arange(1.0 / p_max, 1.0 / p_min + df, df)
@@ -182,25 +188,27 @@ def period_scan(
 
 
 def best_shape(r: np.ndarray, shapes: dict, W: np.ndarray | None) -> tuple:
-    """The single column of ``shapes`` (name -> column) that explains most of ``r`` (after W): (name, share)."""
+    """The single column of ``shapes`` (name -> column) that explains most of ``r`` (after W):
+    (name, share)."""
     scores = {nm: share(r, g, W) for nm, g in shapes.items()}
     nm = max(scores, key=scores.get)
     return nm, scores[nm]
 
 
 # ------------------------------------------------------------------------------------ reduced
-# tables
-# factor of a test table -> (what the residual does, candidate causes, the measurement that
+# tables factor of a test table -> (what the residual does, candidate causes, the measurement that
 # separates them)
 FACTOR_WORDS = {
     "position": (
         "varies with position",
-        "a support or chain compliance that changes along the screw, guide misalignment, screw straightness",
+        "a support or chain compliance that changes along the screw, guide misalignment, screw "
+        "straightness",
         "repeat at more positions, and at one position with the load reversed",
     ),
     "force": (
         "varies with the load",
-        "a contact stiffness (Hertz) or nut lift-off the model does not hold, a load-dependent friction",
+        "a contact stiffness (Hertz) or nut lift-off the model does not hold, a load-dependent "
+        "friction",
         "vary the load in small steps at one position, both directions",
     ),
     "direction": (
@@ -270,9 +278,10 @@ VELOCITY_WORDS = {
 
 
 def factor_probe(name: str, r: np.ndarray, values: np.ndarray, max_bins: int = 6) -> Probe:
-    """Share of ``r`` (noise-weighted residual of a table: unit variance at the noise floor) held by the levels
-    of one recorded factor (at most ``max_bins`` quantile bins) and the worst level.  Significance: with the
-    noise known, :math:`\\chi^2 = \\sum_i n_i (\\bar r_i - \\bar r)^2 \\sim \\chi^2_{k-1}` over the k levels."""
+    """Share of ``r`` (noise-weighted residual of a table: unit variance at the noise floor) held by
+    the levels of one recorded factor (at most ``max_bins`` quantile bins) and the worst
+    level.  Significance: with the noise known, :math:`\\chi^2 = \\sum_i n_i (\\bar r_i - \\bar r)^2
+    \\sim \\chi^2_{k-1}` over the k levels."""
     values = np.asarray(values, dtype=float)
     levels = np.unique(values)
     if len(levels) > max_bins:

@@ -1,17 +1,20 @@
-"""The machine's lumped chain: masses on springs from the frame to the tool, per direction (numpy, vectorised).
+"""The machine's lumped chain: masses on springs from the frame to the tool, per direction (numpy,
+vectorised).
 
-Each axis is one lumped mass (its own moving structure, its moving parts, and the stationary parts and
-counterweight of the axis it carries) joined to its carrier by one spring per direction: its drive chain along
-its travel, its guide blocks across it, each in series with the frame under it.  A chain of n masses
-m_1..m_n, m_1 on the frame through k_1 and m_i on m_{i-1} through k_i, has the stiffness matrix
+Each axis is one lumped mass (its own moving structure, its moving parts, and the stationary parts
+and counterweight of the axis it carries) joined to its carrier by one spring per direction: its
+drive chain along its travel, its guide blocks across it, each in series with the frame under it.  A
+chain of n masses m_1..m_n, m_1 on the frame through k_1 and m_i on m_{i-1} through k_i, has the
+stiffness matrix
 
 .. math:: K_{ii} = k_i + k_{i+1},\\quad K_{i,i+1} = K_{i+1,i} = -k_{i+1}\\quad (k_{n+1} = 0)
 
-and its natural frequencies are :math:`f = \\sqrt{\\lambda}/2\\pi` for the eigenvalues :math:`\\lambda` of
-:math:`M^{-1/2} K M^{-1/2}` (e.g. S. S. Rao, *Mechanical Vibrations*, the n-degree-of-freedom spring-mass
-chain; the 2-DOF and uniform n-DOF closed forms are the tests' checks).  Dunkerley's formula bounds the lowest
-from below: :math:`1/\\omega_1^2 \\le \\sum_i m_i a_{ii}` with the flexibility :math:`a_{ii} = \\sum_{j \\le i}
-1/k_j` (a conservative cross-check).
+and its natural frequencies are :math:`f = \\sqrt{\\lambda}/2\\pi` for the eigenvalues
+:math:`\\lambda` of :math:`M^{-1/2} K M^{-1/2}` (e.g. S. S. Rao, *Mechanical Vibrations*, the
+n-degree-of-freedom spring-mass chain; the 2-DOF and uniform n-DOF closed forms are the tests'
+checks).  Dunkerley's formula bounds the lowest from below:
+:math:`1/\\omega_1^2 \\le \\sum_i m_i a_{ii}` with the flexibility
+:math:`a_{ii} = \\sum_{j \\le i} 1/k_j` (a conservative cross-check).
 """
 
 from __future__ import annotations
@@ -48,9 +51,10 @@ def chain_modes(m, k):
 
 
 def lowest_frequency(m, k) -> np.ndarray:
-    """The chain's lowest natural frequency [Hz] (..., ).  Chains of up to three masses (every machine's here)
-    by the closed form of the symmetric 3x3 eigenvalue problem (:func:`_lowest_eigenvalue_3`), longer ones by
-    LAPACK; the closed form is polished by Newton steps on the chain's characteristic polynomial."""
+    """The chain's lowest natural frequency [Hz] (..., ).  Chains of up to three masses (every
+    machine's here) by the closed form of the symmetric 3x3 eigenvalue problem
+    (:func:`_lowest_eigenvalue_3`), longer ones by LAPACK; the closed form is polished by Newton
+    steps on the chain's characteristic polynomial."""
     m = np.asarray(m, dtype=float)
     k = np.asarray(k, dtype=float)
     n = m.shape[-1]
@@ -69,10 +73,11 @@ def lowest_frequency(m, k) -> np.ndarray:
 
 
 def _lowest_eigenvalue_3(d: list, e: list) -> np.ndarray:
-    """The least eigenvalue of symmetric tridiagonal matrices, n = 2 or 3 (``d`` the n diagonals, ``e`` the n - 1
-    off-diagonals, each an array (...,)): the trigonometric closed
-    form of the cubic (O. K. Smith, "Eigenvalues of a symmetric 3 x 3 matrix", Comm. ACM 4 (1961) 168; n = 2 its
-    quadratic), then two Newton steps on det(A - lambda I) by the tridiagonal recurrence (to round-off)."""
+    """The least eigenvalue of symmetric tridiagonal matrices, n = 2 or 3 (``d`` the n diagonals,
+    ``e`` the n - 1 off-diagonals, each an array (...,)): the trigonometric closed form of the cubic
+    (O. K. Smith, "Eigenvalues of a symmetric 3 x 3 matrix", Comm. ACM 4 (1961) 168; n = 2 its
+    quadratic), then two Newton steps on det(A - lambda I) by the tridiagonal recurrence (to
+    round-off)."""
     n = len(d)
     if n == 2:
         h = 0.5 * (d[0] - d[1])
@@ -100,16 +105,16 @@ def _lowest_eigenvalue_3(d: list, e: list) -> np.ndarray:
 
 
 def dunkerley_frequency(m, k) -> np.ndarray:
-    """Dunkerley's lower bound of the lowest frequency [Hz]: :math:`1/\\omega^2 = \\sum_i m_i \\sum_{j\\le i}
-    1/k_j`."""
+    """Dunkerley's lower bound of the lowest frequency [Hz]:
+    :math:`1/\\omega^2 = \\sum_i m_i \\sum_{j\\le i} 1/k_j`."""
     m = np.asarray(m, dtype=float)
     a = np.cumsum(1.0 / np.asarray(k, dtype=float), axis=-1)
     return 1.0 / np.sqrt((m * a).sum(-1)) / TWO_PI
 
 
 def strain_shares(m, k, mode: int = 0) -> np.ndarray:
-    """Each spring's share of the strain energy in mode ``mode`` (..., n): the spring that limits it has the
-    largest share."""
+    """Each spring's share of the strain energy in mode ``mode`` (..., n): the spring that limits it
+    has the largest share."""
     f, phi = chain_modes(m, k)
     x = phi[..., :, mode]
     d = np.diff(np.concatenate([np.zeros(x.shape[:-1] + (1,)), x], axis=-1), axis=-1)

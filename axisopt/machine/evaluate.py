@@ -1,12 +1,13 @@
-"""A machine whose parts are chosen: every axis's problem names one part per slot (``catalog.require``), and the
-machine model gives the stiffness at the tool with every link, the lumped chain's frequencies and the machine
-limits it misses (no search: the designer's own choice checked).
+"""A machine whose parts are chosen: every axis's problem names one part per slot
+(``catalog.require``), and the machine model gives the stiffness at the tool with every link, the
+lumped chain's frequencies and the machine limits it misses (no search: the designer's own choice
+checked).
 
-Each axis is taken from its carrier's top down, as the machine is built: the top axis at no carried load, each
-axis below at the mass of everything it carries, each nut at the axis's ``nut_preload`` where the machine file
-gives one, else at the top of its feasible preload interval (as the joint search takes it).  An axis whose
-parts miss its own limits at the mass it carries has no design: the result names it (evaluate that axis alone
-with ``axisopt solve`` to see why).
+Each axis is taken from its carrier's top down, as the machine is built: the top axis at no carried
+load, each axis below at the mass of everything it carries, each nut at the axis's ``nut_preload``
+where the machine file gives one, else at the top of its feasible preload interval (as the joint
+search takes it).  An axis whose parts miss its own limits at the mass it carries has no design: the
+result names it (evaluate that axis alone with ``axisopt solve`` to see why).
 """
 
 from __future__ import annotations
@@ -31,13 +32,14 @@ class MachineEvaluation:
 
 
 def check_pinned(machine: Machine) -> None:
-    """Every axis must have one catalog combination (one part per slot): InputError naming the axis otherwise."""
+    """Every axis must have one catalog combination (one part per slot): InputError naming the axis
+    otherwise."""
     for ax in machine.axes:
         arr = arrangements(ax)
         if len(arr) > 1:
             raise InputError(
-                f"axis {ax.name} leaves {len(arr)} arrangements open ({', '.join(lb for lb, _ in arr)}): "
-                "choose one in its axis section",
+                f"axis {ax.name} leaves {len(arr)} arrangements open "
+                f"({', '.join(lb for lb, _ in arr)}): choose one in its axis section",
                 source=machine.source,
                 where=f"axes.{ax.name}.problem.search",
             )
@@ -53,8 +55,8 @@ def check_pinned(machine: Machine) -> None:
 
 
 def check_preloads(machine: Machine) -> None:
-    """Each axis's ``nut_preload`` within its pinned nut's catalog range and, a preloaded nut, the vendors'
-    ceiling (10 % of its Ca, THK A-687): InputError naming the axis's key otherwise."""
+    """Each axis's ``nut_preload`` within its pinned nut's catalog range and, a preloaded nut, the
+    vendors' ceiling (10 % of its Ca, THK A-687): InputError naming the axis's key otherwise."""
     for ax in machine.axes:
         pre = ax.nut_preload
         if pre is None:
@@ -74,8 +76,9 @@ def check_preloads(machine: Machine) -> None:
 
 
 def evaluate_machine(machine: Machine) -> MachineEvaluation:
-    """The machine model of the machine's pinned parts (:func:`check_pinned` first), each nut at the axis's
-    ``nut_preload`` where given (:func:`check_preloads`), else at the top of its feasible interval."""
+    """The machine model of the machine's pinned parts (:func:`check_pinned` first), each nut at the
+    axis's ``nut_preload`` where given (:func:`check_preloads`), else at the top of its feasible
+    interval."""
     check_pinned(machine)
     check_preloads(machine)
     picks, failed = {}, []

@@ -1,23 +1,25 @@
 """The joint search over every axis's designs, proven; the sequential sizing beside it.
 
-Per chain on the frame, from the top axis down: the top axis's designs at no carried load, reduced to the exact
-Pareto set of what the machine reads (:mod:`.offers`), are its *offers*.  The axis below is solved at each
-distinct mass an offer hangs on it, and each of its designs joins each offer of that mass: the new offers of the
-sub-tree (cost, the mass it hangs on its own carrier, what of it stays on the carrier, the compliance it adds at
-the tool, the chain's masses and springs where a frequency is read).  An offer is dropped when
+Per chain on the frame, from the top axis down: the top axis's designs at no carried load, reduced
+to the exact Pareto set of what the machine reads (:mod:`.offers`), are its *offers*.  The axis
+below is solved at each distinct mass an offer hangs on it, and each of its designs joins each offer
+of that mass: the new offers of the sub-tree (cost, the mass it hangs on its own carrier, what of it
+stays on the carrier, the compliance it adds at the tool, the chain's masses and springs where a
+frequency is read).  An offer is dropped when
 
-- a machine limit is already missed: the costs, masses and compliances only grow further down, and the lowest
-  frequency of the whole chain is at most that of the sub-chain on a rigid base (a constraint raises the
-  eigenvalues, Rayleigh), or
-- another offer is at least as good in everything the rest of the machine reads (the exact Pareto set).  That is
-  exact where the axis below never gains from more carried mass (:func:`.offers.monotone_in_load`), where the
-  compliances add in series and the chain's frequencies fall with mass and rise with stiffness.  Below a
-  counterbalanced vertical axis it is not: there offers of different carried mass are never compared, and that
-  axis is screened in full at every mass (the proven enumeration).
+- a machine limit is already missed: the costs, masses and compliances only grow further down, and
+  the lowest frequency of the whole chain is at most that of the sub-chain on a rigid base (a
+  constraint raises the eigenvalues, Rayleigh), or
+- another offer is at least as good in everything the rest of the machine reads (the exact Pareto
+  set).  That is exact where the axis below never gains from more carried mass
+  (:func:`.offers.monotone_in_load`), where the compliances add in series and the chain's
+  frequencies fall with mass and rise with stiffness.  Below a counterbalanced vertical axis it
+  is not: there offers of different carried mass are never compared, and that axis is screened in
+  full at every mass (the proven enumeration).
 
-``method='exhaustive'`` drops nothing and solves every combination of every axis at every load: the ground truth.
-The result's ``sequential`` is the designer's way: the top axis alone at its best for the machine objective, its
-mass carried down, and so on.
+``method='exhaustive'`` drops nothing and solves every combination of every axis at every load: the
+ground truth.  The result's ``sequential`` is the designer's way: the top axis alone at its best for
+the machine objective, its mass carried down, and so on.
 """
 
 from __future__ import annotations
@@ -40,7 +42,8 @@ METHODS = ("default", "exhaustive")
 
 @dataclass
 class MachineResult:
-    """A machine solve: the joint optimum, the sequential sizing beside it, and how the search went."""
+    """A machine solve: the joint optimum, the sequential sizing beside it, and how the search
+    went."""
 
     machine: Machine
     method: str
@@ -55,7 +58,8 @@ class MachineResult:
 
     @property
     def gain(self) -> float | None:
-        """The joint optimum's objective over the sequential one (None: either missing or infeasible)."""
+        """The joint optimum's objective over the sequential one (None: either missing or
+        infeasible)."""
         if self.best is None or self.sequential is None or not self.sequential.feasible:
             return None
         return self.best.value(self.machine.objective) - self.sequential.value(
@@ -68,7 +72,8 @@ def _reads_frequency(machine: Machine) -> bool:
 
 
 class _Designs:
-    """Every axis's designs per carried load, solved once (the lightest load first where monotone)."""
+    """Every axis's designs per carried load, solved once (the lightest load first where
+    monotone)."""
 
     def __init__(self, exhaustive: bool):
         self.exhaustive = exhaustive
@@ -95,7 +100,8 @@ class _Designs:
 
 
 def _join(ax, own: float, O: dict, sel, D) -> dict:
-    """The offers ``sel`` of ``O`` (the axes above) each joined with each design of ``D`` (the axis below)."""
+    """The offers ``sel`` of ``O`` (the axes above) each joined with each design of ``D`` (the axis
+    below)."""
     oi, dj = (a.ravel() for a in np.meshgrid(sel, np.arange(len(D)), indexing="ij"))
     klink = link_with_frame(ax, D.k[dj])
     lumped = own + D.moving_parts[dj] + O["stat"][oi]
@@ -113,10 +119,10 @@ def _join(ax, own: float, O: dict, sel, D) -> dict:
 
 
 def _within_limits(machine: Machine, J: dict, cmax) -> tuple:
-    """The joined offers ``J`` of part of a chain that do not yet miss a machine limit (costs, masses and
-    compliances only grow further down; the frequency of the sub-chain on a rigid base bounds the whole's), and
-    that sub-chain frequency at the rows kept (None where the machine does not read the frequency).  The
-    frequency is solved only for the rows the other limits keep."""
+    """The joined offers ``J`` of part of a chain that do not yet miss a machine limit (costs,
+    masses and compliances only grow further down; the frequency of the sub-chain on a rigid base
+    bounds the whole's), and that sub-chain frequency at the rows kept (None where the machine does
+    not read the frequency).  The frequency is solved only for the rows the other limits keep."""
     ok = (J["cost"] <= machine.max_cost * (1 + 1e-9)) & (
         J["mm"] <= machine.max_moving_mass * (1 + 1e-9)
     )
@@ -133,17 +139,19 @@ def _within_limits(machine: Machine, J: dict, cmax) -> tuple:
 
 
 def _sub_frequency(m, k) -> np.ndarray:
-    """The lowest natural frequency over x, y and z of chains ``m`` (K, n) on springs ``k`` (K, n, 3)."""
+    """The lowest natural frequency over x, y and z of chains ``m`` (K, n) on springs ``k`` (K, n,
+    3)."""
     if not len(m):
         return np.zeros(0)
     return np.min([lowest_frequency(m, k[:, :, d]) for d in range(3)], axis=0)
 
 
 def _best_below(machine: Machine, chain: list, designs: _Designs, i: int) -> dict | None:
-    """What the axes under ``chain[i]`` offer at best, each in every criterion on its own: its designs at the
-    lightest load it could carry (the own moving masses above it, no parts: a superset of its designs at any real
-    load, each at least as stiff), the least cost, compliance per direction and moving mass.  None: an axis
-    below is not monotone in its load (no such bound)."""
+    """What the axes under ``chain[i]`` offer at best, each in every criterion on its own: its
+    designs at the lightest load it could carry (the own moving masses above it, no parts: a
+    superset of its designs at any real load, each at least as stiff), the least cost, compliance
+    per direction and moving mass.  None: an axis below is not monotone in its load (no such
+    bound)."""
     out = {"cost": 0.0, "c": np.zeros(3), "mm": 0.0}
     for j in range(i):
         ax = chain[j]
@@ -166,10 +174,11 @@ def _own(ax) -> float:
 
 
 def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict, f_ok=None) -> float:
-    """An upper bound of the machine objective (larger is better) of the joined offers ``J`` (rows ``ok``)
-    completed by the axes below at their best (``rest``) and the other chain's offers ``other``: each criterion
-    at its best on its own (cost, compliance per direction, moving mass), the frequency that of the sub-chain on
-    a rigid base (``f_ok``: already solved at the rows ``ok``).  +inf: no bound."""
+    """An upper bound of the machine objective (larger is better) of the joined offers ``J`` (rows
+    ``ok``) completed by the axes below at their best (``rest``) and the other chain's offers
+    ``other``: each criterion at its best on its own (cost, compliance per direction, moving mass),
+    the frequency that of the sub-chain on a rigid base (``f_ok``: already solved at the rows
+    ``ok``).  +inf: no bound."""
     if rest is None:
         return np.inf
     J = {k: v[ok] for k, v in J.items()}
@@ -191,9 +200,10 @@ def _optimistic(machine: Machine, J: dict, ok, rest: dict | None, other: dict, f
 
 
 class _Incumbent:
-    """The best machine objective found so far (larger is better).  With a machine and its designs it starts at
-    the sequential sizing's value where that meets every limit, computed when first read: by then the upper axes'
-    lightest loads are solved, so the sequential sizing's heavier loads are solved on their feasible supersets."""
+    """The best machine objective found so far (larger is better).  With a machine and its designs
+    it starts at the sequential sizing's value where that meets every limit, computed when
+    first read: by then the upper axes' lightest loads are solved, so the sequential sizing's
+    heavier loads are solved on their feasible supersets."""
 
     def __init__(self, machine: Machine | None = None, designs: _Designs | None = None):
         self.machine, self.designs = machine, designs
@@ -222,8 +232,8 @@ def _tol(v: float) -> float:
 
 
 def _completion(machine: Machine, J: dict, other: dict) -> np.ndarray:
-    """The best machine objective (larger is better) each joined offer ``J`` of a whole chain reaches with the
-    other chain's offers ``other`` within the machine limits (-inf: none)."""
+    """The best machine objective (larger is better) each joined offer ``J`` of a whole chain
+    reaches with the other chain's offers ``other`` within the machine limits (-inf: none)."""
     f = (
         np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
         if _reads_frequency(machine)
@@ -256,10 +266,11 @@ def _branch_offers(
     incumbent: _Incumbent | None = None,
     below=None,
 ) -> dict:
-    """The offers of one chain on the frame (arrays, one row per offer).  ``other``: the other chain's offers
-    (or the empty chain) when this is the last chain: its loads are then bounded against ``incumbent`` (an
-    :class:`_Incumbent`, the best machine objective found, larger is better); ``below(i)``: the best each axis under
-    chain[i] can offer (:func:`_best_below`), for the bound of the loads of the axes above the frame's."""
+    """The offers of one chain on the frame (arrays, one row per offer).  ``other``: the other
+    chain's offers (or the empty chain) when this is the last chain: its loads are then bounded
+    against ``incumbent`` (an :class:`_Incumbent`, the best machine objective found, larger is
+    better); ``below(i)``: the best each axis under chain[i] can offer (:func:`_best_below`), for
+    the bound of the loads of the axes above the frame's."""
     freq = _reads_frequency(machine)
     kmin = np.asarray(machine.min_tool_stiffness, dtype=float)
     cmax = np.where(kmin > 0, 1.0 / np.where(kmin > 0, kmin, 1.0), np.inf)
@@ -290,9 +301,8 @@ def _branch_offers(
             sel = np.nonzero(O["M"] == L)[0]
             if prune and monotone_in_load(ax) and len(sel) and not bound:
                 # the same with the machine limits only: no design at the lightest load meets them
-                # with these
-                # offers -> none at this load does; and with the incumbent, each axis below at its
-                # best
+                # with these offers -> none at this load does; and with the incumbent, each axis
+                # below at its best
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
                 ok, f_ok = _within_limits(machine, J, cmax)
                 if not ok.any():
@@ -306,8 +316,8 @@ def _branch_offers(
                     continue
             if bound and len(sel) and np.isfinite(incumbent.value):
                 # what this load's offers could reach with the axis's designs at the lightest load
-                # (a superset,
-                # each at least as stiff): none beats the incumbent -> the load is never solved
+                # (a superset, each at least as stiff): none beats the incumbent -> the load is
+                # never solved
                 J = _join(ax, own, O, sel, designs.get(ax, float(loads[0]), at))
                 if _completion(machine, J, other).max(initial=-np.inf) < incumbent.value - _tol(
                     incumbent.value
@@ -371,7 +381,8 @@ def _take(N: dict, keep) -> dict:
 
 
 def _pareto(N: dict, f_sub, freq: bool, root: bool, monotone: bool) -> np.ndarray:
-    """The offers no other beats in what the rest of the machine reads (see the module docstring)."""
+    """The offers no other beats in what the rest of the machine reads (see the module
+    docstring)."""
     cols = [-N["cost"], -N["c"], -N["mm"]]
     if root:
         if freq:
@@ -400,22 +411,23 @@ def _objective(machine: Machine, cost, c, f, mm) -> np.ndarray:
 
 
 def refuse_preloads(machine: Machine) -> None:
-    """A machine solve chooses every nut's preload: an axis's ``nut_preload`` (machine evaluate's) is an
-    InputError naming it."""
+    """A machine solve chooses every nut's preload: an axis's ``nut_preload`` (machine evaluate's)
+    is an InputError naming it."""
     for ax in machine.axes:
         if ax.nut_preload is not None:
             raise InputError(
-                f"nut_preload pins axis {ax.name}'s preload for `axisopt machine evaluate`; a machine "
-                "solve chooses every preload: remove it (or bound the search with the axis problem's "
-                "continuous.nut_preload {min, max})",
+                f"nut_preload pins axis {ax.name}'s preload for `axisopt machine evaluate`; a "
+                "machine solve chooses every preload: remove it (or bound the search with the axis "
+                "problem's continuous.nut_preload {min, max})",
                 source=machine.source,
                 where=f"axes.{ax.name}.nut_preload",
             )
 
 
 def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
-    """The machine's joint optimum over every axis's catalog combinations (``default``: proven through the exact
-    Pareto sets; ``exhaustive``: every combination of every axis) and the sequential sizing beside it."""
+    """The machine's joint optimum over every axis's catalog combinations (``default``: proven
+    through the exact Pareto sets; ``exhaustive``: every combination of every axis) and the
+    sequential sizing beside it."""
     if method not in METHODS:
         raise ValueError(f"unknown method '{method}'; use one of {', '.join(METHODS)}")
     refuse_preloads(machine)
@@ -458,16 +470,19 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
     )
     best = _combine(machine, branches, offers)
     notes = [
-        f"exact Pareto sets: below {ch[i - 1].name} offers of different carried mass are not compared "
-        f"({ch[i - 1].name} is counterbalanced: more carried mass may help it); every load screened in full"
+        f"exact Pareto sets: below {ch[i - 1].name} offers of different carried mass are not "
+        f"compared ({ch[i - 1].name} is counterbalanced: more carried mass may help it); every "
+        "load screened in full"
         for ch in branches
         for i in range(1, len(ch))
         if not monotone_in_load(ch[i - 1])
     ]
     for name in machine.estimated_frames:
         notes.append(
-            f"the frame under {name} is the stated estimate (as stiff as the axis link: its compliance "
-            "doubled); give axes.{name}.frame_stiffness when known".replace("{name}", name)
+            f"the frame under {name} is the stated estimate (as stiff as the axis link: its "
+            "compliance doubled); give axes.{name}.frame_stiffness when known".replace(
+                "{name}", name
+            )
         )
     seq = incumbent.sequential if incumbent.seeded else sequential(machine, designs)
     nominal = float(np.prod([float(designs.combinations.get(a.name, 0)) for a in machine.axes]))
@@ -536,9 +551,10 @@ def _pairs(ref: tuple) -> list:
 
 
 def sequential(machine: Machine, designs: _Designs) -> MachineDesign | None:
-    """The designer's sizing: each chain's top axis first, alone, at its best for the machine objective (cost:
-    the cheapest; tool stiffness or frequency: the stiffest link along its travel; moving mass: the lightest), its
-    mass carried to the axis below, and so on; the machine limits are checked only at the end."""
+    """The designer's sizing: each chain's top axis first, alone, at its best for the machine
+    objective (cost: the cheapest; tool stiffness or frequency: the stiffest link along its travel;
+    moving mass: the lightest), its mass carried to the axis below, and so on; the machine limits
+    are checked only at the end."""
     picks = {}
     for chain in machine.branches():
         load = 0.0

@@ -1,10 +1,12 @@
-"""The machine model of one choice of designs: the stiffness at the tool through every axis and the frame, the
-lumped chain's natural frequencies, Dunkerley's bound, and what limits each (floats and numpy only).
+"""The machine model of one choice of designs: the stiffness at the tool through every axis and the
+frame, the lumped chain's natural frequencies, Dunkerley's bound, and what limits each (floats and
+numpy only).
 
-The structural loop from the tool to the workpiece runs through every axis (both chains on the frame): the
-compliance at the tool in a direction is the sum of every link's compliance in it (springs in series), a link
-being the axis's drive chain along its travel (the least over the stroke) or its guide blocks across it, in series
-with the frame under it.  The chain of each branch is :mod:`.chain`'s, one mass per axis.
+The structural loop from the tool to the workpiece runs through every axis (both chains on the
+frame): the compliance at the tool in a direction is the sum of every link's compliance in it
+(springs in series), a link being the axis's drive chain along its travel (the least over the
+stroke) or its guide blocks across it, in series with the frame under it.  The chain of each branch
+is :mod:`.chain`'s, one mass per axis.
 """
 
 from __future__ import annotations
@@ -18,8 +20,8 @@ from .spec import DIRECTIONS, Machine, MachineAxis
 
 
 def link_with_frame(ax: MachineAxis, k) -> np.ndarray:
-    """The axis link in series with the frame under it [N/m] (..., 3): the frame's given stiffness, or the
-    stated estimate, a frame as stiff as the link (the link's compliance doubled)."""
+    """The axis link in series with the frame under it [N/m] (..., 3): the frame's given stiffness,
+    or the stated estimate, a frame as stiff as the link (the link's compliance doubled)."""
     k = np.asarray(k, dtype=float)
     if ax.frame_stiffness is None:
         return 0.5 * k
@@ -77,8 +79,8 @@ class MachineDesign:
         }[objective]
 
     def weakest(self, d: int) -> tuple:
-        """(axis name, role) of the largest compliance at the tool in direction ``d`` (0, 1, 2), and 'frame'
-        where the frame under an axis is the larger part of its link."""
+        """(axis name, role) of the largest compliance at the tool in direction ``d`` (0, 1, 2), and
+        'frame' where the frame under an axis is the larger part of its link."""
         best, who = -1.0, ("", "")
         for a in self.axes:
             for part, k in (("frame", a.k_frame[d]), (a.roles[d], a.k_axis[d])):
@@ -88,7 +90,8 @@ class MachineDesign:
 
 
 def evaluate_choice(machine: Machine, picks: dict) -> MachineDesign:
-    """The machine design of ``picks``: axis name -> (AxisDesigns, row) (every axis of ``machine``)."""
+    """The machine design of ``picks``: axis name -> (AxisDesigns, row) (every axis of
+    ``machine``)."""
     by = machine.by_name
     choices = {}
     for a in machine.axes:
@@ -177,8 +180,9 @@ def evaluate_choice(machine: Machine, picks: dict) -> MachineDesign:
 
 
 def _at_tool_point(machine: Machine, md: MachineDesign) -> None:
-    """The stiffness chain at the tool point (each axis's nut at ``machine.tool_point``, mid-stroke where not
-    given): each drive chain's stiffness there from its design's evaluation, the guides and frame as before."""
+    """The stiffness chain at the tool point (each axis's nut at ``machine.tool_point``, mid-stroke
+    where not given): each drive chain's stiffness there from its design's evaluation, the guides
+    and frame as before."""
     from ..model import evaluate
 
     pts = dict(machine.tool_point)
@@ -186,7 +190,8 @@ def _at_tool_point(machine: Machine, md: MachineDesign) -> None:
     for a in md.axes:
         ax = machine.by_name[a.name]
         s = pts.get(a.name, 0.5 * ax.problem.axis.stroke)
-        # on numpy (the same model): a CasADi Function per mounting would be built for this one evaluation
+        # on numpy (the same model): a CasADi Function per mounting would be built for this one
+        # evaluation
         ev = evaluate(a.candidate.design, use_casadi=False)
         x0 = a.candidate.design.axis.start_offset
         k_side = float(np.interp(x0 + s, ev.x, np.asarray(ev["k_total"], dtype=float)))

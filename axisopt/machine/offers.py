@@ -1,16 +1,17 @@
-"""What one axis offers the machine at a carried load: its feasible designs, each at its best nut preload, with
-what the machine reads of it (cost, part masses, the stiffness of its link in x, y and z).
+"""What one axis offers the machine at a carried load: its feasible designs, each at its best nut
+preload, with what the machine reads of it (cost, part masses, the stiffness of its link in x, y and
+z).
 
-A design's nut preload is the upper end of its feasible preload interval (the axis search's exact 1-D solve):
-the stiffnesses only grow with the preload and cost and mass do not depend on it, so no machine objective or
-limit gains from a lower one.  The designs are then reduced to the exact Pareto set of what the machine reads
-(lower cost, lighter moving and stationary parts, stiffer in every direction): a dominated design is never
-better for the machine, whatever the other axes are.
+A design's nut preload is the upper end of its feasible preload interval (the axis search's exact
+1-D solve): the stiffnesses only grow with the preload and cost and mass do not depend on it, so no
+machine objective or limit gains from a lower one.  The designs are then reduced to the exact Pareto
+set of what the machine reads (lower cost, lighter moving and stationary parts, stiffer in every
+direction): a dominated design is never better for the machine, whatever the other axes are.
 
-Where the axis cannot lose by carrying more (:func:`monotone_in_load`), the designs feasible at the lightest
-load are a superset of those feasible at any heavier one, and the heavier loads are solved on that set only;
-elsewhere every load is screened in full.  ``exhaustive`` solves every combination at every load (the ground
-truth the tests compare with).
+Where the axis cannot lose by carrying more (:func:`monotone_in_load`), the designs feasible at the
+lightest load are a superset of those feasible at any heavier one, and the heavier loads are solved
+on that set only; elsewhere every load is screened in full.  ``exhaustive`` solves every combination
+at every load (the ground truth the tests compare with).
 """
 
 from __future__ import annotations
@@ -45,9 +46,9 @@ def counterweight(axis) -> float:
 
 
 def monotone_in_load(ax: MachineAxis) -> bool:
-    """Whether the axis never gains from carrying more mass (all its limits worsen with the moving mass).  Not
-    so for a vertical axis with a counterbalance: a heavier head may bring the weight nearer the counterweight's
-    pull and lower the net load on the screw and motor."""
+    """Whether the axis never gains from carrying more mass (all its limits worsen with the moving
+    mass).  Not so for a vertical axis with a counterbalance: a heavier head may bring the weight
+    nearer the counterweight's pull and lower the net load on the screw and motor."""
     return not any(
         a.orientation == "vertical"
         and a.counterbalance is not None
@@ -80,7 +81,8 @@ class AxisDesigns:
 
     @property
     def stationary(self) -> np.ndarray:
-        """What stays on the carrier: screw, bearings, rails, motor ... and the counterweight [kg]."""
+        """What stays on the carrier: screw, bearings, rails, motor ... and the counterweight
+        [kg]."""
         return self.parts - self.moving_parts + self.counterweight
 
     def candidate(self, j: int):
@@ -111,9 +113,10 @@ class AxisDesigns:
 
 
 def _link_stiffness(ax: MachineAxis, axis, space, ex_rows, stiffness) -> np.ndarray:
-    """(K, 3) stiffness of the axis link in x, y, z [N/m]: along the travel the drive chain's least over the
-    stroke (a twin drive: both sides' chains under a rigid bridge at the governing position,
-    k / (r^2 + (1 - r)^2)), across it the guide blocks' normal and tangential rigidity, in parallel."""
+    """(K, 3) stiffness of the axis link in x, y, z [N/m]: along the travel the drive chain's least
+    over the stroke (a twin drive: both sides' chains under a rigid bridge at the governing
+    position, k / (r^2 + (1 - r)^2)), across it the guide blocks' normal and tangential rigidity, in
+    parallel."""
     _m, _n, _b, g = space.unravel(ex_rows)
     blocks = axis.guide_blocks
     k_ax = stiffness * 1e6
@@ -135,10 +138,11 @@ def axis_designs(
     superset: dict | None = None,
     preload: float | None = None,
 ) -> AxisDesigns:
-    """The axis's feasible designs at ``load`` kg carried at ``at`` = (height, offset) on its carriage (the
-    machine file's ``carried_at`` of the axis above).  ``superset``: per arrangement the combinations to solve
-    (those feasible at a lighter load, where :func:`monotone_in_load`).  ``preload`` [N]: every nut at this
-    preload only (machine evaluate's ``nut_preload``; a design is feasible only if it meets every limit there)."""
+    """The axis's feasible designs at ``load`` kg carried at ``at`` = (height, offset) on its
+    carriage (the machine file's ``carried_at`` of the axis above).  ``superset``: per arrangement
+    the combinations to solve (those feasible at a lighter load, where :func:`monotone_in_load`).
+    ``preload`` [N]: every nut at this preload only (machine evaluate's ``nut_preload``; a design is
+    feasible only if it meets every limit there)."""
     rows = {k: [] for k in ("arr", "idx", "preload", "cost", "parts", "moving", "cw", "k")}
     problems, combos = [], 0
     for ai, (label, arr_axis) in enumerate(arrangements(ax)):
@@ -195,8 +199,9 @@ def axis_designs(
 
 
 def pareto_designs(d: AxisDesigns) -> AxisDesigns:
-    """The exact Pareto set of ``d`` in what the machine reads: cost, moving parts, what stays on the carrier
-    (parts and counterweight), the link's stiffness in x, y and z (every point kept, equal ones too)."""
+    """The exact Pareto set of ``d`` in what the machine reads: cost, moving parts, what stays on
+    the carrier (parts and counterweight), the link's stiffness in x, y and z (every point kept,
+    equal ones too)."""
     if not len(d):
         return d
     P = np.column_stack([-d.cost, -d.moving_parts, -d.stationary, d.k])
@@ -204,6 +209,6 @@ def pareto_designs(d: AxisDesigns) -> AxisDesigns:
 
 
 def feasible_sets(d: AxisDesigns) -> dict:
-    """Per arrangement (space shape, combination numbers) of ``d``'s designs: the superset a heavier load is
-    solved on."""
+    """Per arrangement (space shape, combination numbers) of ``d``'s designs: the superset a heavier
+    load is solved on."""
     return {ai: (space.shape, d.idx[d.arr == ai]) for ai, (_l, _p, space) in enumerate(d.problems)}

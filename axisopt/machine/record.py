@@ -1,6 +1,7 @@
-"""A machine solve as plain data (for JSON, a study's case records and the reports): every axis's parts, the
-stiffness chain at the tool (each link per direction: the axis part, the frame under it, the two in series),
-the lumped chain's frequencies, Dunkerley's bound, the misses; the sequential sizing beside the joint optimum.
+"""A machine solve as plain data (for JSON, a study's case records and the reports): every axis's
+parts, the stiffness chain at the tool (each link per direction: the axis part, the frame under it,
+the two in series), the lumped chain's frequencies, Dunkerley's bound, the misses; the sequential
+sizing beside the joint optimum.
 """
 
 from __future__ import annotations
@@ -9,7 +10,8 @@ from .spec import DIRECTIONS
 
 
 def design_dict(md) -> dict:
-    """One machine design (:class:`.model.MachineDesign`) in display units (N/um, Hz, kg, EUR, mm)."""
+    """One machine design (:class:`.model.MachineDesign`) in display units (N/um, Hz, kg, EUR,
+    mm)."""
     return {
         "feasible": md.feasible,
         "cost_eur": md.cost,
@@ -59,7 +61,8 @@ def design_dict(md) -> dict:
 
 
 def result_dict(res) -> dict:
-    """A :class:`.joint.MachineResult`: the joint optimum, the sequential sizing and how the search went."""
+    """A :class:`.joint.MachineResult`: the joint optimum, the sequential sizing and how the search
+    went."""
     m = res.machine
     return {
         "machine": m.name,

@@ -20,7 +20,7 @@
         carried_at: {height: 250 mm, offset: 0 mm}   # where this axis and all it carries act on its carrier
         nut_preload: 3000 N            # machine evaluate: the pinned nut's preload (default: the top)
         problem: {axis: {...}, limits: {...}, catalog: {...}}       # as a problem file
-"""
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -160,9 +160,10 @@ AXIS_NODE_SPEC = Spec(
         "carried_at": Key("section", spec=CARRIED_AT),
         "nut_preload": Key(
             "quantity",
-            "for `axisopt machine evaluate`: the pinned nut's preload, within the nut's catalog range "
-            "(and, a preloaded nut, the vendors' ceiling of 10 % of its Ca); default: the top of its "
-            "feasible preload interval.  `machine solve` chooses every preload and refuses it",
+            "for `axisopt machine evaluate`: the pinned nut's preload, within the nut's catalog "
+            "range (and, a preloaded nut, the vendors' ceiling of 10 % of its Ca); default: the "
+            "top of its feasible preload interval.  `machine solve` chooses every preload and "
+            "refuses it",
             kind="force",
             positive=True,
             example="3000 N",
@@ -202,7 +203,8 @@ MACHINE_FILE_SPEC = Spec(
 
 @dataclass(frozen=True)
 class MachineAxis:
-    """One axis of a machine (SI).  ``problem.axis.moving_mass`` is the axis's own moving structure."""
+    """One axis of a machine (SI).  ``problem.axis.moving_mass`` is the axis's own moving
+    structure."""
 
     name: str
     carried_by: str  # FRAME or an axis name
@@ -218,8 +220,8 @@ class MachineAxis:
         return next(d for d in DIRECTIONS if d not in (self.direction, self.normal))
 
     def link_role(self, d: str) -> str:
-        """What of the axis acts in direction ``d``: 'axial' (its drive chain) or 'normal' / 'lateral' (its
-        guides across it)."""
+        """What of the axis acts in direction ``d``: 'axial' (its drive chain) or 'normal' /
+        'lateral' (its guides across it)."""
         return "axial" if d == self.direction else ("normal" if d == self.normal else "lateral")
 
 
@@ -330,8 +332,8 @@ def _read_axis(sec: Section, name: str, catalog) -> MachineAxis:
             )
     problem = read_problem(psec, catalog, name=name)
     if problem.drives is not None:
-        # the machine's offers are screw designs (machine.offers): a listed rack or linear motor would
-        # be left out without a word
+        # the machine's offers are screw designs (machine.offers): a listed rack or linear motor
+        # would be left out without a word
         raise psec.section("search").error(
             "drive_types",
             f"axis '{name}': a machine sizes its axes as screw drives; rack-and-pinion and "
@@ -343,8 +345,8 @@ def _read_axis(sec: Section, name: str, catalog) -> MachineAxis:
 
 
 def _order(axes: dict, asec: Section) -> tuple:
-    """The axes with every carrier before what it carries; an unknown carrier, a cycle, an axis carrying two
-    axes or more than two chains on the frame are errors."""
+    """The axes with every carrier before what it carries; an unknown carrier, a cycle, an axis
+    carrying two axes or more than two chains on the frame are errors."""
     for a in axes.values():
         if a.carried_by != FRAME and a.carried_by not in axes:
             raise asec.section(a.name).error(
@@ -429,9 +431,9 @@ def _read_machine_section(msec: Section | None, axes: dict) -> dict:
 
 
 def at_carried_load(a, mass: float, height: float, offset: float):
-    """The axis ``a`` (an :class:`axisopt.design.Axis`) with ``mass`` [kg] carried at ``height``/``offset`` on
-    its carriage (SI): the mass joins the moving mass (a twin drive's: its cross carriage, ``cross_mass``) and
-    moves the centre of gravity."""
+    """The axis ``a`` (an :class:`axisopt.design.Axis`) with ``mass`` [kg] carried at
+    ``height``/``offset`` on its carriage (SI): the mass joins the moving mass (a twin drive's: its
+    cross carriage, ``cross_mass``) and moves the centre of gravity."""
     if mass <= 0:
         return a
     if a.twin_drive is not None:

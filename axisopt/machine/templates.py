@@ -113,7 +113,7 @@ axes:
         nut_types: [double]
         motor_series: [Sigma-7 SGM7G, MELDAS HC (2000 r/min)]
         require: {coupling: [RINGFEDER-GWB-AKN-150]}
-""",
+""",  # noqa: E501
         "moving-column": """\
 # A moving-column machine: the column (X) travels on the bed, the headstock (Y) rises on the column, the ram (Z)
 # moves out of the headstock; the workpiece stands on a fixed table.  One chain on the frame.
@@ -221,7 +221,7 @@ axes:
         nut_types: [double]
         motor_series: [Sigma-7 SGM7G]
         require: {coupling: [RINGFEDER-GWB-AKN-150]}
-""",
+""",  # noqa: E501
         "gantry": """\
 # A gantry: the bridge (Y) on two synchronised screw drives, the cross carriage (X) across the bridge, the ram (Z)
 # vertical in the cross carriage with a counterweight.  One chain on the frame; the workpiece on the fixed bed.
@@ -334,7 +334,7 @@ axes:
         nut_types: [double]
         motor_series: [Sigma-7 SGM7G]
         require: {coupling: [RINGFEDER-GWB-AKN-150]}
-""",
+""",  # noqa: E501
     }
 )
 # kind -> file name in problems/machines

@@ -1,9 +1,9 @@
 """The feed-axis model: physics assembled for an axis and its chosen parts.
 
 One set of pure functions, one per sub-assembly (:mod:`.loads`, :mod:`.chain`, :mod:`.modes`,
-:mod:`.drag`, :mod:`.cost`, :mod:`.checks`), put together by :func:`axis_response`.  ``evaluate``, the
-search (screening on numpy, exact solves, IPOPT on the CasADi Function) and ``diagnose`` (its plant) all
-call it, each asking for the sub-assemblies it needs (:class:`Request`, :mod:`.request`).
+:mod:`.drag`, :mod:`.cost`, :mod:`.checks`), put together by :func:`axis_response`.  ``evaluate``,
+the search (screening on numpy, exact solves, IPOPT on the CasADi Function) and ``diagnose`` (its
+plant) all call it, each asking for the sub-assemblies it needs (:class:`Request`, :mod:`.request`).
 """
 
 from .checks import CHECK_LABELS, CHECKS, DRIVE_CHECKS, passes

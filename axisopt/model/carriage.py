@@ -1,21 +1,24 @@
-"""The carriage on its guide blocks: block loads of the vendors' load cases, the mean load over the duty cycle,
-and the table's rocking stiffness (pitch, yaw) and modes.
+"""The carriage on its guide blocks: block loads of the vendors' load cases, the mean load over the
+duty cycle, and the table's rocking stiffness (pitch, yaw) and modes.
 
-Load cases (THK General Catalog A-103..A-110, HIWIN G99TE20 §1-5), each with the moving mass's weight at its
-centre of gravity (pressing onto the rails for a horizontal axis, along the rail for a vertical one, across it
-for a wall-mounted one):
+Load cases (THK General Catalog A-103..A-110, HIWIN G99TE20 §1-5), each with the moving mass's
+weight at its centre of gravity (pressing onto the rails for a horizontal axis, along the rail for a
+vertical one, across it for a wall-mounted one):
 
 * standstill: the weight alone;
-* cutting: the full cutting force (axial_load along, cross_load across, normal_load onto the rails) at the
-  cutting point, feed and cross components with either sign (the cut reverses with the feed direction);
+* cutting: the full cutting force (axial_load along, cross_load across, normal_load onto the rails)
+  at the cutting point, feed and cross components with either sign (the cut reverses with the feed
+  direction);
 * acceleration and deceleration: the inertia force m a at the centre of gravity, either direction;
-* each phase of the duty cycle: its process force (``force:`` of a move; the cross and normal components scale
-  with it) at the cutting point and its inertia force at the centre of gravity, with the phase's moving mass
-  (an entry's own ``moving_mass``: a workpiece loaded or unloaded; its weight too).
+* each phase of the duty cycle: its process force (``force:`` of a move; the cross and normal
+  components scale with it) at the cutting point and its inertia force at the centre of gravity,
+  with the phase's moving mass (an entry's own ``moving_mass``: a workpiece loaded or unloaded; its
+  weight too).
 
-The static safety takes the largest equivalent block load of every case; the life takes, block by block, the
-cubic mean over the travel of the duty cycle's phases (THK A-96/A-107), the phases' process force being the
-mean axial load when the cycle gives none (the default rapid cycle), and the most loaded block.
+The static safety takes the largest equivalent block load of every case; the life takes, block by
+block, the cubic mean over the travel of the duty cycle's phases (THK A-96/A-107), the phases'
+process force being the mean axial load when the cycle gives none (the default rapid cycle), and the
+most loaded block.
 """
 
 from __future__ import annotations
@@ -45,7 +48,8 @@ def shares(p) -> dict:
 
 
 def _sum(forces):
-    """(f_n, f_y, M_P, M_R, M_Y) of forces [(f_x, f_y, f_n, y, h)] acting at x = 0 (the carriage centre)."""
+    """(f_n, f_y, M_P, M_R, M_Y) of forces [(f_x, f_y, f_n, y, h)] acting at x = 0 (the carriage
+    centre)."""
     fn = fy = mp = mr = my = 0.0
     for fx_, fy_, fn_, y, h in forces:
         a, b, c = pcr.carriage_moments(fx_, fy_, fn_, 0.0, y, h)
@@ -54,19 +58,17 @@ def _sum(forces):
 
 
 def carriage_loads(p, moving) -> dict:
-    """Largest equivalent block load of the load cases [N], the guides' static safety factor [-], the mean
-    block load over the duty cycle [N] (most loaded block) and the moment shares."""
+    """Largest equivalent block load of the load cases [N], the guides' static safety factor [-],
+    the mean block load over the duty cycle [N] (most loaded block) and the moment shares."""
     sh = shares(p)
     n = sh["n"]
     ga, gc = p["gravity_axial"], p["gravity_cross"]
 
     y_t, h_t, h_g = p["tool_offset"], p["tool_height"], p["cg_height"]
     # a twin gantry's cross carriage (m_c) at either end of its stroke across the rails (+-s/2): the
-    # weight and
-    # the inertia force of the moving mass m act at the centre of gravity y_g + m_c y_c / m
-    # (statics; the
-    # vendors' load distribution, THK A-82..A-89, HIWIN G99TE20 1-5, then takes the moments); one
-    # drive: y_c 0
+    # weight and the inertia force of the moving mass m act at the centre of gravity y_g + m_c y_c /
+    # m (statics; the vendors' load distribution, THK A-82..A-89, HIWIN G99TE20 1-5, then takes the
+    # moments); one drive: y_c 0
     ends = [0.0]
     if not single_drive(p):
         half = 0.5 * tp(p, "cross_stroke")
@@ -80,8 +82,8 @@ def carriage_loads(p, moving) -> dict:
         return (-ga * m * G, gc * m * G, (1.0 - ga - gc) * m * G, cg(m, y_c), h_g)
 
     # a twin drive's parameters carry the governing side's share of the process force
-    # (model.gantry): the guides
-    # carry the whole gantry and the whole force (force_share 1 for one drive)
+    # (model.gantry): the guides carry the whole gantry and the whole force (force_share 1 for one
+    # drive)
     fs = tp(p, "force_share")
     f_feed, f_cross, f_norm = p["axial_load"] / fs, p["cross_load"], p["normal_load"]
 
@@ -124,9 +126,8 @@ def carriage_loads(p, moving) -> dict:
         p_max = mx.fmax(p_max, pe_max(c))
 
     # mean load per block over the travel: the phase's process force, or the mean axial load (rapid
-    # cycle); a
-    # twin gantry's cross carriage at the end that loads the block most (conservative: it may stand
-    # there)
+    # cycle); a twin gantry's cross carriage at the end that loads the block most (conservative: it
+    # may stand there)
     p_mean = None
     for y_c in ends:
         loads = {corner: [] for corner in pcr.CORNERS}
@@ -195,8 +196,8 @@ def tool_stiffness(p, k_total, rock) -> dict:
 
     .. math:: 1/k_{tool} = 1/k_{total} + h_t^2 / K_P + y_t^2 / K_Y
 
-    The axial chain in series with the table pitching (lever h_t, the tool's height above the screw axis in
-    the mounting plane) and yawing (lever y_t, its offset across the rail) on its blocks.
+    The axial chain in series with the table pitching (lever h_t, the tool's height above the screw
+    axis in the mounting plane) and yawing (lever y_t, its offset across the rail) on its blocks.
     """
     c_rock = p["tool_height"] ** 2 / rock["k_pitch"] + p["tool_offset"] ** 2 / rock["k_yaw"]
     return {"k_tool": 1.0 / (1.0 / k_total + c_rock), "c_rocking": c_rock}

@@ -1,4 +1,5 @@
-r"""The axial stiffness chain at the nut, component by component (seed eq. 1-2 and the vendors' sum).
+r"""The axial stiffness chain at the nut, component by component (seed eq. 1-2 and the vendors'
+sum).
 
 .. math:: 1/k = 1/k_{SB}(x) + 1/k_{tors}(x) + 1/k_{cpl} + 1/k_N + r/k_{unit} + 1/k_{bracket}
 
@@ -6,18 +7,19 @@ r"""The axial stiffness chain at the nut, component by component (seed eq. 1-2 a
   set in series with the segment x.  Fixed-fixed: the two load paths in parallel (seed eq. 3-5, 10;
   THK A E L/(a b)).
 * ``k_tors``: screw torsion from the coupling to the nut, through the lead, k_theta (2 pi / P_h)^2.
-* ``k_cpl``: coupling torsion through the lead (motor held by its position loop at standstill), with a
-  reduction's output-side torsional stiffness in series (:func:`drive_torsional_stiffness`).
-* ``k_N``: nut.  Double nut: eq. 9 at the preload (HIWIN F 3.34), then the Hertz curve with lift-off at the
-  largest axial load the axis sees (its softest point).  Single nut with play: HIWIN F 3.35 at the mean
-  operating load, 0.8 K (F_bm / 0.28 C)^(1/3).
-* ``k_unit``: a driven rotating nut's built-in support bearing (its vendor's rigidity, else the estimate of
-  :func:`axisopt.model.params.rotating_nut_params`), between the nut and its housing: in series (THK A-709 sums
-  the nut's and the support bearing's compliances the same way); absent (0 compliance) for a nut on a turning
-  screw.  The screw's torsion stays in the chain: the stationary screw is held against the nut's torque at its
-  end, and its twist between there and the nut turns the nut relative to the thread as a turning screw's would.
-* ``k_bracket``: nut bracket; ``k_SB`` includes the bearing housings (axis values, else the estimates of
-  :func:`axisopt.model.params.mount_compliances`).
+* ``k_cpl``: coupling torsion through the lead (motor held by its position loop at standstill), with
+  a reduction's output-side torsional stiffness in series (:func:`drive_torsional_stiffness`).
+* ``k_N``: nut.  Double nut: eq. 9 at the preload (HIWIN F 3.34), then the Hertz curve with lift-off
+  at the largest axial load the axis sees (its softest point).  Single nut with play: HIWIN F 3.35
+  at the mean operating load, 0.8 K (F_bm / 0.28 C)^(1/3).
+* ``k_unit``: a driven rotating nut's built-in support bearing (its vendor's rigidity, else the
+  estimate of :func:`axisopt.model.params.rotating_nut_params`), between the nut and its housing: in
+  series (THK A-709 sums the nut's and the support bearing's compliances the same way); absent (0
+  compliance) for a nut on a turning screw.  The screw's torsion stays in the chain: the stationary
+  screw is held against the nut's torque at its end, and its twist between there and the nut turns
+  the nut relative to the thread as a turning screw's would.
+* ``k_bracket``: nut bracket; ``k_SB`` includes the bearing housings (axis values, else the
+  estimates of :func:`axisopt.model.params.mount_compliances`).
 
 ``k_drive`` is the chain without the coupling: the spring between the screw and the table in the
 drive-train model (:func:`axisopt.physics.dynamics.drive_train_eigenvalues`).
@@ -33,20 +35,21 @@ from .loads import bearing_set_stiffness, unit
 
 
 def drive_torsional_stiffness(p):
-    r"""Torsional stiffness between the motor side and the screw [N m/rad]: the coupling and the reduction's output
-    side in series (both on the screw side of the ratio), :math:`1/k_\theta = 1/k_{cpl} + 1/C_{t21}`.
+    r"""Torsional stiffness between the motor side and the screw [N m/rad]: the coupling and the
+    reduction's output side in series (both on the screw side of the ratio),
+    :math:`1/k_\theta = 1/k_{cpl} + 1/C_{t21}`.
 
-    p["coupling_stiffness"] [N m/rad]; p["reduction_compliance"] = 1 / Ct21 [rad/(N m)], 0 without a reduction
-    (Beckhoff AG2400/AG3400 "Maximum torsional rigidity Ct21 [Nm/arcmin]", output side).  Series springs: the
-    seed paper's eq. 1 for the axial chain, the same rule for torsion."""
+    p["coupling_stiffness"] [N m/rad]; p["reduction_compliance"] = 1 / Ct21 [rad/(N m)], 0 without a
+    reduction (Beckhoff AG2400/AG3400 "Maximum torsional rigidity Ct21 [Nm/arcmin]", output side).
+    Series springs: the seed paper's eq. 1 for the axial chain, the same rule for torsion."""
     return 1.0 / (1.0 / p["coupling_stiffness"] + p["reduction_compliance"])
 
 
 def nut_stiffness(p, preload, axial_force, mean_force):
     """(k at zero external load, k at ``axial_force``) [N/m] of the nut, double or single.
 
-    A single nut with play is rated at the mean operating load (HIWIN F 3.35: 0.8 K (F_bm / 0.28 C)^(1/3),
-    the catalog's ``stiffness_preload`` holding the 0.28 C basis)."""
+    A single nut with play is rated at the mean operating load (HIWIN F 3.35: 0.8 K (F_bm / 0.28
+    C)^(1/3), the catalog's ``stiffness_preload`` holding the 0.28 C basis)."""
     single_load = mx.fmax(mean_force, 1e-6)
     load = mx.if_else(p["nut_double"] > 0.5, preload, single_load)
     k0 = pn.nut_stiffness_catalog(
@@ -60,7 +63,8 @@ def nut_stiffness(p, preload, axial_force, mean_force):
 
 
 def stiffness_chain(p, x, mounting, preload, axial_force, mean_force) -> dict:
-    """Component stiffnesses [N/m] (profiles over x where they depend on it) and their series sum."""
+    """Component stiffnesses [N/m] (profiles over x where they depend on it) and their series
+    sum."""
     d_r, lead = p["root_diameter"], p["lead"]
     k_set = bearing_set_stiffness(p)
     k_sb = ps.screw_bearing_stiffness(d_r, x, p["span"], mounting, k_set)

@@ -24,19 +24,16 @@ DRIVE_CHECKS = tuple(c.name for c in CHECK_TABLE if c.drive)
 CHECK_LABELS = MappingProxyType({c.name: c.label for c in CHECK_TABLE})
 
 # Buckling end condition.  The compressed length runs from the thrust (fixed) bearing to the nut,
-# and the
-# guided nut counts as a fixed end whatever the screw mounting: THK worked examples A-724..A-727 and
-# A-738..A-740 take "fixed-fixed" (eta_2 = 20) for a fixed-supported screw, with l_a the distance
-# between the
-# mounting positions.  The critical speed keeps the screw's own mounting (lambda_2 of the mounting).
+# and the guided nut counts as a fixed end whatever the screw mounting: THK worked examples
+# A-724..A-727 and A-738..A-740 take "fixed-fixed" (eta_2 = 20) for a fixed-supported screw, with
+# l_a the distance between the mounting positions.  The critical speed keeps the screw's own
+# mounting (lambda_2 of the mounting).
 BUCKLING_END_CONDITION = "fixed-fixed"
 # How the nut holds the shaft (axis.buckling_nut_end): "fixed" (a long nut in a rigid bracket on a
-# guided table:
-# the THK examples above, the default), or "supported" (the nut a pinned end: MiSUMi "Selection of
-# Ball Screws 2"
+# guided table: the THK examples above, the default), or "supported" (the nut a pinned end: MiSUMi
+# "Selection of Ball Screws 2"
 # p. 1676, whose example takes a fixed-support shaft's m = 10 over the distance between the points
-# of buckling
-# load, d 12.5 mm, l 820 mm: 3 630 N, half the fixed-end figure)
+# of buckling load, d 12.5 mm, l 820 mm: 3 630 N, half the fixed-end figure)
 BUCKLING_NUT_ENDS = {"fixed": "fixed-fixed", "supported": "fixed-supported"}
 # Above this a margin says only "not limiting" (e.g. buckling when pretension keeps the screw in
 # tension).
@@ -46,12 +43,9 @@ MARGIN_CAP = 1e3
 SCREW_YIELD_STRESS = 147e6
 
 # DN: each screw vendor states its limit on its own diameter (catalogs/SOURCES.md stores every row's
-# limit on
-# the nominal diameter the model divides by): THK on the ball centre-to-centre diameter dp (A-697,
-# stored as
-# limit x d / dp), HIWIN GmbH (H-BS 3.7.6) and Rexroth (R310RU 3301 p. 99) on the nominal diameter,
-# HIWIN
-# Taiwan (S99TE20 p. 33) on the pitch-circle diameter.
+# limit on the nominal diameter the model divides by): THK on the ball centre-to-centre diameter dp
+# (A-697, stored as limit x d / dp), HIWIN GmbH (H-BS 3.7.6) and Rexroth (R310RU 3301 p. 99) on the
+# nominal diameter, HIWIN Taiwan (S99TE20 p. 33) on the pitch-circle diameter.
 DN_RULES = MappingProxyType(
     {
         "THK": "THK A-697: DN on the ball centre diameter dp",
@@ -62,13 +56,11 @@ DN_RULES = MappingProxyType(
 DN_RULE_OTHER = "d x n on the nominal diameter (the row's own limit)"
 
 # Margin of a check that does not apply to the design (a rotating-nut check on a nut that does not
-# turn, the whirl
-# of a screw that does not turn)
+# turn, the whirl of a screw that does not turn)
 NOT_APPLICABLE = 1e9
 
 # A margin passes at >= 1 less float rounding: the search holds each limit exactly by bisection, and
-# the
-# evaluation path may round the same ratio (e.g. 19 999.999999999996 h against 20 000 h) one ulp
+# the evaluation path may round the same ratio (e.g. 19 999.999999999996 h against 20 000 h) one ulp
 # lower.
 MARGIN_RTOL = 1e-9
 
@@ -79,10 +71,11 @@ def passes(margin) -> bool:
 
 
 def nut_life_load(p, preload, loads, travels):
-    """The equivalent load [N] on the nut's rating that gives its L10 life over the duty cycle's phase loads
-    (physics.life).  A preloaded nut as HIWIN computes it (H-BS F 3.7-3.12): both halves' cubic-mean loads over
-    the phases, each half's life at the nut's rating, their Weibull sum (e = 10/9).  A single nut as THK does
-    (A-706): the greater of the two directions' cubic means."""
+    """The equivalent load [N] on the nut's rating that gives its L10 life over the duty cycle's
+    phase loads (physics.life).  A preloaded nut as HIWIN computes it (H-BS F 3.7-3.12): both
+    halves' cubic-mean loads over the phases, each half's life at the nut's rating, their Weibull
+    sum (e = 10/9).  A single nut as THK does (A-706): the greater of the two directions' cubic
+    means."""
     c = p["nut_dynamic_load"]
     pre = mx.fmax(preload, 1e-9)
     halves = _per_load(lambda f: pl.preloaded_halves(pre, f), loads, (pre,))
@@ -93,15 +86,17 @@ def nut_life_load(p, preload, loads, travels):
 
 
 def bearing_life_load(p, loads, travels, static):
-    """The equivalent load [N] on the support-bearing set's printed rating that gives the set's L10 life: the
-    rows carrying each direction as the two halves of a preloaded pair, each rated by its row count (the
-    printed set rating for the stronger direction, i^0.7 scaled for the other: NSK TAC B, IBC), the static set
-    load (pretension, thermal force) pressing the weaker rows, and the rows' lives summed as NSK sums a
-    preloaded set's (e = 1.1).  The set is mounted with its stronger rows facing the direction that gives the
-    longer life (the designer's choice): either way round against the cycle's loads, and with either group of
-    rows facing the static load (a 3-against-1 set's three rows take a pretension, IBC TI-I-5010.2; for a set
-    of as many rows each way both choices are one).  A screw held at both ends has a set at each, mirrored: the
-    cycle's loads press one end's set the way the other's is spared, so the worse of the two governs there."""
+    """The equivalent load [N] on the support-bearing set's printed rating that gives the set's
+    L10 life: the rows carrying each direction as the two halves of a preloaded pair, each rated by
+    its row count (the printed set rating for the stronger direction, i^0.7 scaled for the other:
+    NSK TAC B, IBC), the static set load (pretension, thermal force) pressing the weaker rows, and
+    the rows' lives summed as NSK sums a preloaded set's (e = 1.1).  The set is mounted with its
+    stronger rows facing the direction that gives the longer life (the designer's choice): either
+    way round against the cycle's loads, and with either group of rows facing the static load (a
+    3-against-1 set's three rows take a pretension, IBC TI-I-5010.2; for a set of as many rows each
+    way both choices are one).  A screw held at both ends has a set at each, mirrored: the cycle's
+    loads press one end's set the way the other's is spared, so the worse of the two governs
+    there."""
     c_strong = p["bearing_dynamic_load"]
     n_s, n_w = p["bearing_rows_strong"], p["bearing_rows_weak"]
     c_weak = pl.row_group_rating(c_strong, n_w, n_s)
@@ -131,9 +126,10 @@ def bearing_life_load(p, loads, travels, static):
 
 
 def _per_load(halves, loads, others) -> list:
-    """``[halves(f) for f in loads]`` (``halves``: a load's two (pair or row group) loads; ``others``: the
-    other values it reads).  On numbers the loads are stacked on a leading axis and evaluated at once (the same
-    operations on each element: the same values), on symbols one by one."""
+    """``[halves(f) for f in loads]`` (``halves``: a load's two (pair or row group) loads;
+    ``others``: the other values it reads).  On numbers the loads are stacked on a leading axis and
+    evaluated at once (the same operations on each element: the same values), on symbols one by
+    one."""
     if mx.is_symbolic(*others, *loads) or len(loads) < 2:
         return [halves(f) for f in loads]
     f = [np.asarray(x, dtype=float) for x in loads]
@@ -147,9 +143,10 @@ def _per_load(halves, loads, others) -> list:
 
 
 def _set_halves(preload, load, rows, symmetric, hertz=0.0):
-    """The two row groups' loads of a support set (see :func:`bearing_life_load`): HIWIN's pair law for as many
-    rows each way; where the groups differ, the set maker's rule: NSK's Hertz split (``hertz`` 1,
-    physics.bearingsets.hertz_set_halves), else IBC's linear split (physics.bearingsets.set_halves)."""
+    """The two row groups' loads of a support set (see :func:`bearing_life_load`): HIWIN's pair law
+    for as many rows each way; where the groups differ, the set maker's rule: NSK's Hertz split
+    (``hertz`` 1, physics.bearingsets.hertz_set_halves), else IBC's linear split
+    (physics.bearingsets.set_halves)."""
     pair = pl.preloaded_halves(preload, load)
     if isinstance(symmetric, (bool, np.bool_)) and symmetric:
         return pair
@@ -165,8 +162,8 @@ def _set_halves(preload, load, rows, symmetric, hertz=0.0):
 
 
 def _hertz_where(preload, load, rows, symmetric, hertz, linear):
-    """Numbers: the linear split with the Hertz split put in only where it applies (a maker's unequal set),
-    computed on those elements alone (the search's arrays hold every bearing)."""
+    """Numbers: the linear split with the Hertz split put in only where it applies (a maker's
+    unequal set), computed on those elements alone (the search's arrays hold every bearing)."""
     args = np.broadcast_arrays(
         *(np.asarray(v, dtype=float) for v in (preload, load, rows[0], rows[1], hertz)),
         np.asarray(symmetric, dtype=bool),
@@ -182,12 +179,13 @@ def _hertz_where(preload, load, rows, symmetric, hertz, linear):
 
 
 def bearing_static(p, f_max, static):
-    """(margin, available, needed) of the support-bearing set's static check [N]: the set is mounted with its
-    stronger rows facing the static set load (pretension, thermal force), which they carry with the largest
-    axial force; the other rows carry the largest axial force alone (the static load comes and goes with the
-    screw's temperature: a warm pretensioned screw leaves the sets nearly unloaded).  Each direction's rows
-    are rated in proportion to their count (physics.bearings.row_static_rating) with the least static safety
-    the rating's vendor asks (or the axis's)."""
+    """(margin, available, needed) of the support-bearing set's static check [N]: the set is mounted
+    with its stronger rows facing the static set load (pretension, thermal force), which they carry
+    with the largest axial force; the other rows carry the largest axial force alone (the static
+    load comes and goes with the screw's temperature: a warm pretensioned screw leaves the sets
+    nearly unloaded).  Each direction's rows are rated in proportion to their count
+    (physics.bearings.row_static_rating) with the least static safety the rating's vendor asks (or
+    the axis's)."""
     c_strong = p["bearing_static_load"]
     c_weak = pb.row_static_rating(c_strong, p["bearing_rows_weak"], p["bearing_rows_strong"])
     s0 = p["bearing_static_safety"]
@@ -202,12 +200,13 @@ def bearing_static(p, f_max, static):
 
 
 def bearing_lift_off(p, f_max, static):
-    """(margin, available, needed) of the support set's lift-off check [N]: the rows facing the static set load
-    (pretension, thermal force) carry it with the largest axial force up to the set's stronger lift-off load
-    (``bearing_lift_off_strong``, a 3-against-1 set's 8.49 Fv, physics.bearingsets); the other rows carry the
-    largest axial force alone (a warm pretensioned screw leaves the sets nearly unloaded, as in
-    :func:`bearing_static`) up to the weaker direction's ``bearing_lift_off``.  A set that lists one lift-off
-    load has it both ways: its margin is the stronger direction's, lift-off / (largest force + static)."""
+    """(margin, available, needed) of the support set's lift-off check [N]: the rows facing the
+    static set load (pretension, thermal force) carry it with the largest axial force up to the
+    set's stronger lift-off load (``bearing_lift_off_strong``, a 3-against-1 set's 8.49 Fv,
+    physics.bearingsets); the other rows carry the largest axial force alone (a warm pretensioned
+    screw leaves the sets nearly unloaded, as in :func:`bearing_static`) up to the weaker
+    direction's ``bearing_lift_off``.  A set that lists one lift-off load has it both ways: its
+    margin is the stronger direction's, lift-off / (largest force + static)."""
     push = f_max + static
     strong = p["bearing_lift_off_strong"] / push
     weak = p["bearing_lift_off"] / f_max
@@ -220,20 +219,24 @@ def bearing_lift_off(p, f_max, static):
 
 
 def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
-    """The driven rotating-nut unit's own checks (margins, available and needed values; :data:`NOT_APPLICABLE`
-    for a nut on a rotating screw).  THK DIR/BLR (T-GC A-772-A-779) and HIWIN AME (H-BS 7.1) turn the nut in a
-    built-in support bearing on a stationary screw:
+    """The driven rotating-nut unit's own checks (margins, available and needed values;
+    :data:`NOT_APPLICABLE` for a nut on a rotating screw).  THK DIR/BLR (T-GC A-772-A-779) and HIWIN
+    AME (H-BS 7.1) turn the nut in a built-in support bearing on a stationary screw:
 
-    * ``unit_speed``: the unit's max speed (HIWIN's n max; THK prints none for DIR/BLR: the screw's DN rule for
-      the nut's rotation, an estimate, model.params.rotating_nut_params) over the nut's speed 2 pi v / P_h;
-    * ``unit_bearing_life``: the built-in bearing (a preloaded pair: THK "two rows of DB type angular bearings",
-      B-721) rated as the end sets are (:func:`bearing_life_load`: its printed Ca, one row each way, its preload
-      the 5 % Ca estimate, no static set load: the screw's pretension stays in the screw); L10 at the cycle's mean
-      nut speed, the life rule of physics.checks (THK A-704);
-    * ``unit_bearing_static``: its printed C0a against the largest axial force with Rexroth's machine-tool static
-      safety (a true C0a whose vendor names no factor, physics.bearings.STATIC_SAFETY_MACHINE_TOOL);
-    * ``rotating_mount`` (a compatibility rule): the stationary screw is held and tensioned at both ends (THK
-      A-779's mountings hold the shaft at its ends), so a unit fits only a fixed-fixed screw.
+    * ``unit_speed``: the unit's max speed (HIWIN's n max; THK prints none for DIR/BLR: the screw's
+      DN rule for the nut's rotation, an estimate, model.params.rotating_nut_params) over the nut's
+      speed 2 pi v / P_h;
+    * ``unit_bearing_life``: the built-in bearing (a preloaded pair: THK "two rows of DB type
+      angular bearings", B-721) rated as the end sets are (:func:`bearing_life_load`: its printed
+      Ca, one row each way, its preload the 5 % Ca estimate, no static set load: the screw's
+      pretension stays in the screw); L10 at the cycle's mean nut speed, the life rule of
+      physics.checks (THK A-704);
+    * ``unit_bearing_static``: its printed C0a against the largest axial force with Rexroth's
+      machine-tool static safety (a true C0a whose vendor names no factor,
+      physics.bearings.STATIC_SAFETY_MACHINE_TOOL);
+    * ``rotating_mount`` (a compatibility rule): the stationary screw is held and tensioned at both
+      ends (THK A-779's mountings hold the shaft at its ends), so a unit fits only a fixed-fixed
+      screw.
     """
     r = unit(p, "nut_rotating") > 0.5
     ca, c0 = unit(p, "unit_bearing_dynamic_load"), unit(p, "unit_bearing_static_load")
@@ -281,11 +284,12 @@ def unit_checks(p, mounting, loads, omega, mean_omega) -> dict:
 def checks(p, mounting, preload, loads) -> dict:
     """Check margins ``margin_<check>`` and the physical values they compare (SI).
 
-    A driven rotating nut (``nut_rotating`` 1, :func:`unit_checks`) leaves the screw standing: no whirl (the
-    critical speed does not apply; THK A-774: "the screw shaft does not rotate ... this model does not show
-    skipping"), and the end bearings do not turn (their life and speed checks do not apply; their static check
-    stays).  The DN check stays: the balls run at the nut's speed relative to the screw.  ``screw_sag``: the sag
-    of a horizontal screw under its own weight (physics.screw.screw_sag; 0 on a vertical axis)."""
+    A driven rotating nut (``nut_rotating`` 1, :func:`unit_checks`) leaves the screw standing: no
+    whirl (the critical speed does not apply; THK A-774: "the screw shaft does not rotate ... this
+    model does not show skipping"), and the end bearings do not turn (their life and speed checks do
+    not apply; their static check stays).  The DN check stays: the balls run at the nut's speed
+    relative to the screw.  ``screw_sag``: the sag of a horizontal screw under its own weight
+    (physics.screw.screw_sag; 0 on a vertical axis)."""
     span = p["span"]
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
     mean_omega = 2.0 * math.pi * p["mean_speed"] / p["lead"]
@@ -293,8 +297,7 @@ def checks(p, mounting, preload, loads) -> dict:
     x_far = p["start_offset"] + p["stroke"]
     crit = pc.critical_speed(p["root_diameter"], span, mounting)
     # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK
-    # "evaluate
-    # both"), nut counted as fixed (BUCKLING_END_CONDITION)
+    # "evaluate both"), nut counted as fixed (BUCKLING_END_CONDITION)
     buck_len = x_far if mounting != "fixed-fixed" else mx.fmax(x_far, span - p["start_offset"])
     # 1: the nut a fixed end, 0: a supported one (BUCKLING_NUT_ENDS)
     held = p.get("buckling_nut_fixed", 1.0)
@@ -315,8 +318,7 @@ def checks(p, mounting, preload, loads) -> dict:
     )
     brg_life = pc.life_time(p["bearing_dynamic_load"], brg_load, mean_omega, p["load_factor"])
     # guide blocks: the load per block with the block preload acting like a preloaded pair of ball
-    # rows
-    # (the most loaded block's cubic mean load over the duty cycle, model.carriage)
+    # rows (the most loaded block's cubic mean load over the duty cycle, model.carriage)
     guide_load = pn.preloaded_pair_load(p["guide_preload"], loads["guide_mean_load"])
     guide_life = pc.guide_life_distance(
         p["guide_dynamic_load"],
@@ -375,9 +377,8 @@ def checks(p, mounting, preload, loads) -> dict:
         * ps.screw_sag(p["screw_mass_per_length"], p["root_diameter"], span, mounting),
     }
     # what each margin compares, in SI: the available capacity and the needed value (margin =
-    # available /
-    # needed, except bearing_fit, whose "needed" is the bore and "available" the largest bore the
-    # end takes)
+    # available / needed, except bearing_fit, whose "needed" is the bore and "available" the largest
+    # bore the end takes)
     pairs = {
         "critical_speed": (crit, omega),
         "buckling": (buck, loads["screw_compression"]),

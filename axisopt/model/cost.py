@@ -6,9 +6,9 @@ from .gantry import pair_cost
 
 
 def cost(p):
-    """Screw by length plus end machining (times its lead accuracy grade's price factor, axisopt.catalog.grades), nut,
-    bearing sets, guide blocks, rails, motor, coupling and reduction [EUR]; a twin drive: the second drive's parts
-    too (:func:`axisopt.model.gantry.pair_cost`)."""
+    """Screw by length plus end machining (times its lead accuracy grade's price factor,
+    axisopt.catalog.grades), nut, bearing sets, guide blocks, rails, motor, coupling and reduction
+    [EUR]; a twin drive: the second drive's parts too (:func:`axisopt.model.gantry.pair_cost`)."""
     return (
         (p["screw_price_per_length"] * p["span"] + p["screw_price_fixed"]) * p["grade_price_factor"]
         + p["nut_price"]

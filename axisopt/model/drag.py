@@ -13,12 +13,13 @@ SCREW_EFFICIENCY = 0.9
 
 
 def drag_torque(p, preload, loads) -> dict:
-    """Drag torque [N*m] by source.  Nut: the preload drag rule (THK/HIWIN, eq. in physics.nut) at the nut's
-    preload (a single nut's preload is its catalog value, 0 without oversize balls).  Bearings: the starting
-    torque the support unit's vendor lists, else the upper envelope of the vendors' values (an estimate,
-    ``model.params.axis_params``; results name it where it binds).  Guides: block friction
-    at rapid speed through the screw efficiency.  A driven rotating nut: its unit's bearing (its vendor's starting
-    torque, else the same envelope, an estimate) instead of the end sets, which do not turn."""
+    """Drag torque [N*m] by source.  Nut: the preload drag rule (THK/HIWIN, eq. in physics.nut) at
+    the nut's preload (a single nut's preload is its catalog value, 0 without oversize
+    balls).  Bearings: the starting torque the support unit's vendor lists, else the upper envelope
+    of the vendors' values (an estimate, ``model.params.axis_params``; results name it where it
+    binds).  Guides: block friction at rapid speed through the screw efficiency.  A driven
+    rotating nut: its unit's bearing (its vendor's starting torque, else the same envelope, an
+    estimate) instead of the end sets, which do not turn."""
     omega = 2.0 * math.pi * p["max_speed"] / p["lead"]
     t_nut = pn.nut_preload_drag_torque(preload, p["lead"], p["nominal_diameter"])
     # a driven rotating nut: the end bearings stand still, the unit's built-in bearing turns

@@ -1,5 +1,6 @@
-"""The drive's parameters from its part rows: motor and coupling (:func:`drive_params`) and a reduction stage
-(:func:`reduction_params`), each a dict of SI values the model's drive checks read."""
+"""The drive's parameters from its part rows: motor and coupling (:func:`drive_params`) and a
+reduction stage (:func:`reduction_params`), each a dict of SI values the model's drive checks
+read."""
 
 from __future__ import annotations
 
@@ -18,8 +19,9 @@ from .paramnames import (
 def drive_params(axis, motor, coupling, reduction=None) -> dict:
     """Motor, coupling and reduction parameters (SI).  Missing parts: the axis values, checks off.
 
-    ``reduction``: a reductions row (or arrays of them); a row whose ``ratio`` is NaN stands for no reduction
-    (the search's direct-drive choice beside the catalog's reductions): the axis's reduction values then."""
+    ``reduction``: a reductions row (or arrays of them); a row whose ``ratio`` is NaN stands for no
+    reduction (the search's direct-drive choice beside the catalog's reductions): the axis's
+    reduction values then."""
     col = column_value
     q = {
         "max_inertia_ratio": axis.max_inertia_ratio,
@@ -63,8 +65,7 @@ def drive_params(axis, motor, coupling, reduction=None) -> dict:
             col(motor, "peak_torque_at_max_speed"), col(motor, "rated_torque")
         )
         # the motor vendor's selection rule (model.motorrule; a row without one: the harshest),
-        # unless the
-        # problem asks its own RMS ratio
+        # unless the problem asks its own RMS ratio
         if axis.rms_torque_ratio is None:
             q["rms_torque_ratio"] = listed_or(optional_column(motor, "rms_ratio"), DEFAULT_RULE.rms)
         q["unbalance_torque_ratio"] = listed_or(
@@ -103,8 +104,9 @@ def drive_params(axis, motor, coupling, reduction=None) -> dict:
 
 
 def reduction_params(axis, reduction) -> dict:
-    """The reduction's parameters (SI): its catalog row where there is one (a NaN ratio: none), else the axis's
-    ratio, efficiency and input inertia with a rigid stage (compliance 0) and the reduction checks off."""
+    """The reduction's parameters (SI): its catalog row where there is one (a NaN ratio: none), else
+    the axis's ratio, efficiency and input inertia with a rigid stage (compliance 0) and the
+    reduction checks off."""
     none = {
         "has_reduction": 0.0,
         "reduction_ratio": axis.reduction_ratio,

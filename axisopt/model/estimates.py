@@ -1,12 +1,14 @@
-"""Which part values of a design are estimates (not the vendor's table) and which results rest on them.
+"""Which part values of a design are estimates (not the vendor's table) and which results rest on
+them.
 
-The optimizer goes wherever the model is optimistic, so a value the vendor does not list must never read
-better than the vendor values it stands in for, and a result that depends on one must say so.  Where a value
-is estimated is declared once with the part columns (:data:`axisopt.catalog.columns.COLUMNS`: ``estimate`` for an
-optional column left empty, ``estimated_when`` for the row statuses whose value is derived or illustrative,
-catalogs/SOURCES.md); :func:`design_estimates` lists them for one design and :func:`resting_on` finds, by
-perturbing each estimated parameter, the outputs (a binding limit, a check at its limit, the objective)
-that move with it.
+The optimizer goes wherever the model is optimistic, so a value the vendor does not list must never
+read better than the vendor values it stands in for, and a result that depends on one must say so.
+Where a value is estimated is declared once with the part columns
+(:data:`axisopt.catalog.columns.COLUMNS`: ``estimate`` for an optional column left empty,
+``estimated_when`` for the row statuses whose value is derived or illustrative,
+catalogs/SOURCES.md); :func:`design_estimates` lists them for one design and :func:`resting_on`
+finds, by perturbing each estimated parameter, the outputs (a binding limit, a check at its limit,
+the objective) that move with it.
 """
 
 from __future__ import annotations
@@ -57,8 +59,8 @@ class Estimate:
 
 
 def estimate_text(e: dict) -> str:
-    """One estimate (:meth:`Estimate.to_dict`) as text: 'guide HG15 normal_rigidity 177 N/um (how)', or for an
-    axis value left out 'axis.bearing_housing_stiffness 27,000 N/um (how)'."""
+    """One estimate (:meth:`Estimate.to_dict`) as text: 'guide HG15 normal_rigidity 177 N/um (how)',
+    or for an axis value left out 'axis.bearing_housing_stiffness 27,000 N/um (how)'."""
     shown = e["shown"]
     if e["slot"] == "axis":
         if shown is None:  # a part left out: rigid
@@ -69,19 +71,16 @@ def estimate_text(e: dict) -> str:
 
 
 def axis_value_text(value: float, unit: str = "") -> str:
-    """An axis value as the outputs name it: '1,333 N', '666.7 N', '1.2' (separators from 1000 up, else four
-    significant digits)."""
+    """An axis value as the outputs name it: '1,333 N', '666.7 N', '1.2' (separators from 1000 up,
+    else four significant digits)."""
     num = f"{value:,.0f}" if abs(value) >= 1000 else f"{value:.4g}"
     return f"{num} {unit}" if unit else num
 
 
 # Axis values a design may leave out that the model then estimates (model.params.mount_compliances):
-# (YAML key,
-# compliance parameter, how).  No vendor publishes them for the machine's own parts (THK's axial
-# rigidity of the
-# feed screw system has a term K_H for the nut and bearing mounting, "as high as possible"), so a
-# result that
-# moves with them names the estimate.
+# (YAML key, compliance parameter, how).  No vendor publishes them for the machine's own parts
+# (THK's axial rigidity of the feed screw system has a term K_H for the nut and bearing mounting,
+# "as high as possible"), so a result that moves with them names the estimate.
 ASSUMED_MOUNTS = (
     (
         "bearing_housing_stiffness",
@@ -95,8 +94,7 @@ ASSUMED_MOUNTS = (
     ),
 )
 # Axis values a design may leave to a default that the life, torque and thermal checks read: (YAML
-# key,
-# parameter, display unit, SI per unit, how, whether the axis left it to the default).
+# key, parameter, display unit, SI per unit, how, whether the axis left it to the default).
 ASSUMED_DEFAULTS = (
     (
         "mean_axial_load",
@@ -150,8 +148,7 @@ ASSUMED_DEFAULTS = (
     ),
 )
 # Parameters the model holds as the reciprocal of their column (RULE_PARAMS): an estimate shows the
-# column's
-# value (a reduction's torsional stiffness, not the compliance the model sums)
+# column's value (a reduction's torsional stiffness, not the compliance the model sums)
 RECIPROCAL = frozenset({"reduction_compliance"})
 # Part columns whose estimate an axis value replaces: (table, column) -> axis attribute.
 OVERRIDDEN_BY_AXIS = {("bearings", "static_safety"): "bearing_static_safety"}
@@ -222,8 +219,9 @@ def _scalar(v) -> float:
 
 
 def resting_on(design, outputs, estimates=None) -> dict:
-    """{output: [Estimate, ...]} for each of ``outputs`` (model output names; a profile output as its minimum
-    over the stroke) that changes when one estimated parameter of the design is raised by 5 %."""
+    """{output: [Estimate, ...]} for each of ``outputs`` (model output names; a profile output as
+    its minimum over the stroke) that changes when one estimated parameter of the design is raised
+    by 5 %."""
     estimates = design_estimates(design) if estimates is None else estimates
     outputs = [o for o in dict.fromkeys(outputs)]
     if not estimates or not outputs:
@@ -311,11 +309,13 @@ ACTIVE_RTOL = 1e-4
 
 
 def binding_estimates(design, limits=(), objective_outputs=(), checks: bool = True) -> list:
-    """The objective and the active limits and checks of ``design`` that rest on estimated part values.
+    """The objective and the active limits and checks of ``design`` that rest on estimated part
+    values.
 
     limits            : ((key, SI value), ...) of :data:`axisopt.model.limits.LIMITS` keys
     objective_outputs : model outputs the objective is made of (``k_total``)
-    checks            : also the vendor checks at their limit (margin within :data:`ACTIVE_RTOL` of 1)
+    checks            : also the vendor checks at their limit (margin within :data:`ACTIVE_RTOL`
+                        of 1)
     Returns [:class:`Resting`] (empty: every active value is a vendor value)."""
     from .limits import CHECK_TABLE, LIMITS
 

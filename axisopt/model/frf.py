@@ -1,19 +1,21 @@
 """Dynamic compliance X/F of the table over frequency at stroke start, middle and end (numpy only).
 
-The lumped motor - coupling - screw - table chain of :func:`axisopt.physics.dynamics.drive_train_compliance`
-with the evaluation's own stiffness, mass and damper values at each position:
+The lumped motor - coupling - screw - table chain of
+:func:`axisopt.physics.dynamics.drive_train_compliance` with the evaluation's own stiffness, mass
+and damper values at each position:
 
 * motor and screw-side inertias: :func:`axisopt.model.modes.drive_inertias`;
 * coupling k_c (torsional) with steel structural damping 2 zeta sqrt(k_c J_s), zeta = STEEL_DAMPING
   (seed Table 5);
-* axial spring ``k_drive`` (the chain without the coupling) with the nut and bearing dampers referred to the
-  chain (:func:`axisopt.model.modes.dampers`);
+* axial spring ``k_drive`` (the chain without the coupling) with the nut and bearing dampers
+  referred to the chain (:func:`axisopt.model.modes.dampers`);
 * table mass ``m_eff`` on the guide blocks' dampers.
 
-With the motor free (default) the modes are ``f_axial_torsional`` and ``f_axial_torsional_2``.  The second is
-mostly rotor against screw across the coupling: its pole nearly cancels with a zero of X/F, so at the model's
-damping it shows at the table as a small kink, not a peak (lightly damped, ``damping_scale`` << 1, it peaks).
-The first peak lies below f_axial_torsional by the damping (about 2.5 % for problems/teaching_design.yaml).
+With the motor free (default) the modes are ``f_axial_torsional`` and ``f_axial_torsional_2``.  The
+second is mostly rotor against screw across the coupling: its pole nearly cancels with a zero of
+X/F, so at the model's damping it shows at the table as a small kink, not a peak (lightly damped,
+``damping_scale`` << 1, it peaks).  The first peak lies below f_axial_torsional by the damping
+(about 2.5 % for problems/teaching_design.yaml).
 """
 
 from __future__ import annotations
@@ -91,12 +93,15 @@ def frf(
     """Table compliance X/F over frequency at stroke start, middle and end.
 
     ev         : an evaluation (:func:`axisopt.model.evaluate`)
-    freqs      : frequencies [Hz], 1-D, positive; default 800 log-spaced points from 5 Hz to 3x the highest
-                 second mode of the three positions
-    motor_held : fix the motor rotor (static compliance 1/k_total); default free (position loop far slower)
-    damping_scale : multiplies every damper (1: the model's values; small: to see the undamped modes)
-    Returns {"design", "motor_held", "frequency_Hz", "positions": [per position: "index", "position_mm",
-    "compliance_m_per_N" (complex), "magnitude_um_per_N", "phase_deg" (unwrapped), "modes_Hz" (f1, f2)]}.
+    freqs      : frequencies [Hz], 1-D, positive; default 800 log-spaced points from 5 Hz to 3x the
+                 highest second mode of the three positions
+    motor_held : fix the motor rotor (static compliance 1/k_total); default free (position loop far
+        slower)
+    damping_scale : multiplies every damper (1: the model's values; small: to see the undamped
+        modes)
+    Returns {"design", "motor_held", "frequency_Hz", "positions": [per position: "index",
+    "position_mm", "compliance_m_per_N" (complex), "magnitude_um_per_N", "phase_deg" (unwrapped),
+    "modes_Hz" (f1, f2)]}.
     """
     if not (math.isfinite(damping_scale) and damping_scale >= 0.0):
         raise InputError(f"damping scale must be a finite number >= 0, got {damping_scale}")

@@ -18,8 +18,7 @@ from .params import axis_params, positions
 from .response import axis_response
 
 # the CasADi Function's outputs, in order: the declared outputs (model.outputs.OUTPUT_TABLE), then
-# each vendor
-# check's margin, available and needed values (model.limits.CHECK_TABLE)
+# each vendor check's margin, available and needed values (model.limits.CHECK_TABLE)
 PROFILE_OUTPUTS = PROFILE
 SCALAR_OUTPUTS = SCALAR + tuple(
     f"{w}_{c}" for w in ("margin", "available", "needed") for c in CHECKS
@@ -139,8 +138,8 @@ class Evaluation:
     def components(self, i: int | None = None) -> dict:
         """Component stiffness [N/m] at position index ``i`` (default: where the total is lowest).
 
-        For fixed-fixed, 'bearings' and 'screw' are each with the other rigid (the two load paths combine
-        them in parallel, see ``k_screw_bearings``).
+        For fixed-fixed, 'bearings' and 'screw' are each with the other rigid (the two load paths
+        combine them in parallel, see ``k_screw_bearings``).
         """
         i = self.i_min if i is None else i
         out = {}
@@ -160,13 +159,15 @@ class Evaluation:
         return min(comps, key=comps.get)
 
     def minimum(self, key: str) -> tuple[float, float]:
-        """(minimum value, nut position where it occurs, measured from stroke start) for a profile."""
+        """(minimum value, nut position where it occurs, measured from stroke start) for a
+        profile."""
         v = np.asarray(self.values[key])
         i = int(np.argmin(v))
         return float(v[i]), float(self.x[i] - self.design.axis.start_offset)
 
     def checks(self) -> dict:
-        """Check name -> margin (available / needed, >= 1 passes), every check (see :meth:`check_table`)."""
+        """Check name -> margin (available / needed, >= 1 passes), every check (see
+        :meth:`check_table`)."""
         return {c: float(self.values[margin_output(c)]) for c in CHECKS}
 
     def check_rows(self) -> list:
@@ -174,9 +175,9 @@ class Evaluation:
         return check_rows(self)
 
     def check_table(self):
-        """pandas DataFrame, one row per check that applies: ``check``, ``label``, ``available``, ``needed``
-        (both in ``unit``, the unit vendors quote), ``unit``, ``margin`` (available / needed; empty when
-        nothing loads it) and ``pass``."""
+        """pandas DataFrame, one row per check that applies: ``check``, ``label``, ``available``,
+        ``needed`` (both in ``unit``, the unit vendors quote), ``unit``, ``margin`` (available /
+        needed; empty when nothing loads it) and ``pass``."""
         rows = [{k: r[k] for k in CHECK_COLUMNS} for r in check_rows(self)]
         return frame(rows, CHECK_COLUMNS)
 
@@ -206,11 +207,12 @@ class Evaluation:
         }
 
     def to_frame(self):
-        """pandas DataFrame, one row per nut position over the stroke (model grid), units in the column
-        names: ``position [mm]`` from stroke start, ``stiffness [N/um]``, ``screw_stiffness [N/um]``,
-        ``frequency [Hz]`` (first natural), ``axial_frequency [Hz]``, ``axial_torsional_frequency [Hz]``,
-        ``damping_ratio [%]``, ``thermal_displacement [mm]``.  :meth:`summary` and :meth:`check_table` give
-        the rest."""
+        """pandas DataFrame, one row per nut position over the stroke (model grid), units in the
+        column
+        names: ``position [mm]`` from stroke start, ``stiffness [N/um]``,
+        ``screw_stiffness [N/um]``, ``frequency [Hz]`` (first natural), ``axial_frequency [Hz]``,
+        ``axial_torsional_frequency [Hz]``, ``damping_ratio [%]``, ``thermal_displacement [mm]``.
+        :meth:`summary` and :meth:`check_table` give the rest."""
         v = self.values
         n = len(self.x)
 
@@ -239,7 +241,8 @@ class Evaluation:
             "Evaluation",
             f"{self.design.name!r}, {s['mounting']}",
             {
-                "min stiffness": f"{fmt(s['min_stiffness [N/um]'], 'N/um')} at {fmt(s['min_stiffness_at [mm]'], 'mm')}"
+                "min stiffness": f"{fmt(s['min_stiffness [N/um]'], 'N/um')} at "
+                f"{fmt(s['min_stiffness_at [mm]'], 'mm')}"
                 f" (weakest: {s['weakest_link']})",
                 "1st frequency": fmt(s["min_frequency [Hz]"], "Hz"),
                 "drag": fmt(s["drag_torque [N.m]"], "N.m"),
@@ -276,10 +279,10 @@ def _finite(x):
 
 
 def check_rows(ev: Evaluation) -> list:
-    """One dict per check that applies to the design: ``check``, ``label``, ``available`` and ``needed`` in
-    ``unit`` (the vendor unit of :data:`model.limits.CHECK_TABLE`), ``margin`` (available / needed; None when
-    nothing loads it) and ``pass``.  bearing_fit's available value is the range of bores the screw end takes,
-    as ``available_min`` .. ``available``."""
+    """One dict per check that applies to the design: ``check``, ``label``, ``available`` and
+    ``needed`` in ``unit`` (the vendor unit of :data:`model.limits.CHECK_TABLE`), ``margin``
+    (available / needed; None when nothing loads it) and ``pass``.  bearing_fit's available value is
+    the range of bores the screw end takes, as ``available_min`` .. ``available``."""
     d, v = ev.design, ev.values
     out = []
     for c in CHECKS:
@@ -354,9 +357,10 @@ def evaluate(
 ) -> Evaluation:
     """Evaluate a design with the CasADi axis Function (or directly on numpy with use_casadi=False).
 
-    ``side`` (a twin-drive gantry, :mod:`.gantry`): 'governing' (the side nearest the cross carriage at the end of
-    its stroke: what the limits are checked on) or 'far' (the other side at that moment: share 1 - r of the
-    process force and of the cross carriage's weight over the half).  One drive: both are the drive."""
+    ``side`` (a twin-drive gantry, :mod:`.gantry`): 'governing' (the side nearest the cross carriage
+    at the end of its stroke: what the limits are checked on) or 'far' (the other side at
+    that moment: share 1 - r of the process force and of the cross carriage's weight over the half).
+    One drive: both are the drive."""
     if side not in ("governing", "far"):
         raise ValueError(f"side must be 'governing' or 'far', not {side!r}")
     tw = design.axis.twin_drive

@@ -1,7 +1,7 @@
-"""The goals a problem may optimise (:data:`OBJECTIVE_TABLE`: one :class:`Goal` per objective, its sense, unit,
-the result field that carries it and its printed column) and the vocabularies derived from it: the objective
-modes, the weighted and Pareto keys.  The problem reader, the search's objective functions, the results and the
-printed tables all read this one table."""
+"""The goals a problem may optimise (:data:`OBJECTIVE_TABLE`: one :class:`Goal` per objective, its
+sense, unit, the result field that carries it and its printed column) and the vocabularies derived
+from it: the objective modes, the weighted and Pareto keys.  The problem reader, the search's
+objective functions, the results and the printed tables all read this one table."""
 
 from __future__ import annotations
 
@@ -15,7 +15,8 @@ from .outputs import PROFILE as PROFILE_OUTPUTS
 
 @dataclass(frozen=True)
 class Objective:
-    """What to maximise.  Performance values are the minima over the stroke (model position grid)."""
+    """What to maximise.  Performance values are the minima over the stroke (model position
+    grid)."""
 
     mode: str = "stiffness"
     weights: tuple = (("stiffness", 1.0), ("frequency", 1.0))  # weighted
@@ -50,9 +51,9 @@ def _fmt_si(key, value):
 
 @dataclass(frozen=True)
 class Column:
-    """A goal's column in the printed candidate and Pareto tables (``report.solve``): ``format(value,
-    f">{width}{spec}")`` under ``header``, in every table (``always``) or only in a front's that has the goal
-    as a key."""
+    """A goal's column in the printed candidate and Pareto tables (``report.solve``):
+    ``format(value, f">{width}{spec}")`` under ``header``, in every table (``always``) or only in a
+    front's that has the goal as a key."""
 
     header: str  # e.g. 'k N/um'
     width: int
@@ -67,11 +68,12 @@ ROLE_MODE, ROLE_PERFORMANCE, ROLE_PARETO, ROLE_RESULT = "mode", "performance", "
 
 @dataclass(frozen=True)
 class Goal:
-    """One objective a problem may name: maximised or minimised, the minimum over the stroke of a profile.
+    """One objective a problem may name: maximised or minimised, the minimum over the stroke of a
+    profile.
 
     key         : its name in the problem file (``objective: {mode: key}``, ``pareto: [...]``)
-    limit       : the limit on the same model output (``model.limits.LIMIT_TABLE``): the output, its display
-                  unit and factor, and the sense (a ``>=`` limit: maximised) come from there
+    limit       : the limit on the same model output (``model.limits.LIMIT_TABLE``): the output, its
+                  display unit and factor, and the sense (a ``>=`` limit: maximised) come from there
     what        : what it is, for the mode's label (``maximise minimum <what>``) and the search's
                   label (``minimum <what>`` or ``least <what>``); '' for a goal that is no mode
     roles       : of ``ROLE_MODE``, ``ROLE_PERFORMANCE``, ``ROLE_PARETO``, ``ROLE_RESULT``
@@ -88,9 +90,9 @@ class Goal:
     def field(self) -> str:
         """The name of its value on a search result ('' if none: the value is only the objective):
         the exact solves (:class:`axisopt.search.result.Exact`) and every design
-        (:class:`axisopt.search.result.Candidate`) carry it in display units (a profile's minimum over
-        the stroke over the display factor), named after its limit: ``min_stiffness``, or without
-        ``max_`` (``cost``)."""
+        (:class:`axisopt.search.result.Candidate`) carry it in display units (a profile's minimum
+        over the stroke over the display factor), named after its limit: ``min_stiffness``, or
+        without ``max_`` (``cost``)."""
         if ROLE_RESULT not in self.roles:
             return ""
         return self.limit if self.limit.startswith("min_") else self.limit.removeprefix("max_")
@@ -131,7 +133,8 @@ class Goal:
         return LIMITS[self.limit].factor
 
     def value(self, outputs: dict) -> float:
-        """The goal's value in its display unit from a design's model outputs (SI, a profile's minimum over the
+        """The goal's value in its display unit from a design's model outputs (SI, a profile's
+        minimum over the
         stroke: ``Candidate.outputs``); NaN where the output was not evaluated."""
         return outputs.get(self.output, math.nan) / self.factor
 
@@ -153,9 +156,9 @@ _ERROR_COLUMN = Column("error um", 10, ".1f", always=False)  # only in a front t
 # search's objective functions (axisopt.search.task.objective), the values the exact solves and the
 # designs carry (axisopt.search.result.Exact and Candidate, under ``field``), the Pareto front's
 # senses, units and values and the printed tables' columns derive from it.  A new objective: one
-# Goal here plus the physics of its output (and its limit in LIMIT_TABLE).  The positioning
-# budget's worst-case total (model.accuracy) is minimised: it falls with the nut preload, so a
-# combination's front point stays its highest feasible preload; the search chooses the grade.
+# Goal here plus the physics of its output (and its limit in LIMIT_TABLE).  The positioning budget's
+# worst-case total (model.accuracy) is minimised: it falls with the nut preload, so a combination's
+# front point stays its highest feasible preload; the search chooses the grade.
 # fmt: off
 OBJECTIVE_TABLE = (
     Goal("stiffness", "min_stiffness", "axial stiffness", _ALL, Column("k N/um", 9, ".1f")),

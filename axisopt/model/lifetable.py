@@ -1,8 +1,9 @@
-"""The life checks' load table of one design, as the vendors print it in their worked examples (THK A-725 to
-A-730: the axial load and travel of each motion, the cubic-mean load, the mean speed, the life): the rows
-:func:`axisopt.model.loads.life_rows` gives the nut and support-bearing checks, and the equivalent loads
-those checks rate (:func:`axisopt.model.checks.nut_life_load`, :func:`axisopt.model.checks.bearing_life_load`).
-Floats only: for ``evaluate``; the search reads the checks' margins."""
+"""The life checks' load table of one design, as the vendors print it in their worked examples (THK
+A-725 to A-730: the axial load and travel of each motion, the cubic-mean load, the mean speed, the
+life): the rows :func:`axisopt.model.loads.life_rows` gives the nut and support-bearing checks, and
+the equivalent loads those checks rate (:func:`axisopt.model.checks.nut_life_load`,
+:func:`axisopt.model.checks.bearing_life_load`).  Floats only: for ``evaluate``; the search reads
+the checks' margins."""
 
 from __future__ import annotations
 
@@ -19,11 +20,11 @@ from .response import loaded
 def life_table(design: Design) -> dict:
     """The load cases of the life checks and their equivalent loads (SI).
 
-    Returns ``rows`` (:func:`axisopt.model.loads.life_rows`: load [N], travel [m], direction, acceleration
-    [m/s^2], mass [kg], friction, process force, weight [N]), ``from_cycle`` (the rows come from the user's
-    duty cycle, else from the mean axial load), ``cubic_mean`` the cubic-mean load of each direction
-    [N] (+, -; THK A-706), ``nut_equivalent`` and ``bearing_equivalent`` the loads on the nut's and the set's
-    ratings that give their L10 lives [N] and ``mean_speed`` [m/s].
+    Returns ``rows`` (:func:`axisopt.model.loads.life_rows`: load [N], travel [m], direction,
+    acceleration [m/s^2], mass [kg], friction, process force, weight [N]), ``from_cycle`` (the rows
+    come from the user's duty cycle, else from the mean axial load), ``cubic_mean`` the cubic-mean
+    load of each direction [N] (+, -; THK A-706), ``nut_equivalent`` and ``bearing_equivalent`` the
+    loads on the nut's and the set's ratings that give their L10 lives [N] and ``mean_speed`` [m/s].
     """
     preload = design.preload
     p, _, m, loads = loaded(design_params(design), preload)

@@ -1,11 +1,12 @@
 """What a sizing problem may limit and which vendor checks the model runs: one declaration each.
 
-A :class:`Limit` is a bound a problem file sets on a model output (``limits: min_stiffness: 150 N/um``); a
-:class:`Check` is a vendor rule the model always evaluates as a margin (available / needed, >= 1 passes).
-Everything else is derived from these two tables: the problem reader and its JSON schema, the search's
-constraints and the direction each moves with the nut preload, the sensitivity report, the candidate's
-outputs, and the evaluation's check rows with their units.  Adding a limit or a check is one entry here plus
-the physics that computes its output (``model.checks`` for a check's margin and available/needed values).
+A :class:`Limit` is a bound a problem file sets on a model output
+(``limits: min_stiffness: 150 N/um``); a :class:`Check` is a vendor rule the model always evaluates
+as a margin (available / needed, >= 1 passes).  Everything else is derived from these two tables:
+the problem reader and its JSON schema, the search's constraints and the direction each moves with
+the nut preload, the sensitivity report, the candidate's outputs, and the evaluation's check rows
+with their units.  Adding a limit or a check is one entry here plus the physics that computes its
+output (``model.checks`` for a check's margin and available/needed values).
 """
 
 from __future__ import annotations
@@ -76,8 +77,8 @@ LIMIT_TABLE = (
         "time",
         "h",
         3600.0,
-        "nut L10 life at least this; without axis.required_life also the need of the nut, bearing and "
-        "guide life checks",
+        "nut L10 life at least this; without axis.required_life also the need of the nut, bearing "
+        "and guide life checks",
     ),
     Limit(
         "min_stiffness",
@@ -98,8 +99,7 @@ LIMIT_TABLE = (
         "first natural frequency at least this (minimum over the stroke)",
     ),
     # a machine-tool feed axis has no backlash: single nuts with axial play are allowed only when
-    # the problem
-    # says max_backlash > 0
+    # the problem says max_backlash > 0
     Limit(
         "max_backlash",
         "backlash",
@@ -127,8 +127,8 @@ LIMIT_TABLE = (
         "length",
         "um",
         1e-6,
-        "thermal growth of the screw at the nut (largest over the stroke; heat balance of the duty cycle) at "
-        "most this",
+        "thermal growth of the screw at the nut (largest over the stroke; heat balance of the duty "
+        "cycle) at most this",
     ),
     Limit(
         "min_tool_stiffness",
@@ -137,8 +137,8 @@ LIMIT_TABLE = (
         "stiffness",
         "N/um",
         1e6,
-        "stiffness in the feed direction at the cutting point: the axial chain in series with the table "
-        "pitching and yawing on its blocks (minimum over the stroke)",
+        "stiffness in the feed direction at the cutting point: the axial chain in series with the "
+        "table pitching and yawing on its blocks (minimum over the stroke)",
     ),
     Limit(
         "max_regen_power",
@@ -147,8 +147,8 @@ LIMIT_TABLE = (
         "power",
         "W",
         1.0,
-        "mean power the motor returns to the drive over the duty cycle (braking, lowering) at most this: what "
-        "the drive's regenerative resistor takes (Yaskawa Sigma-7 12.8.6)",
+        "mean power the motor returns to the drive over the duty cycle (braking, lowering) at most "
+        "this: what the drive's regenerative resistor takes (Yaskawa Sigma-7 12.8.6)",
     ),
     Limit(
         "max_slenderness",
@@ -157,8 +157,8 @@ LIMIT_TABLE = (
         "dimensionless",
         "",
         1.0,
-        "bearing span / nominal screw diameter at most this (Schneeberger: consult the maker above 40, an "
-        "intermediate support above 50; evaluate warns above 50)",
+        "bearing span / nominal screw diameter at most this (Schneeberger: consult the maker above "
+        "40, an intermediate support above 50; evaluate warns above 50)",
     ),
     Limit(
         "max_screw_sag",
@@ -167,8 +167,8 @@ LIMIT_TABLE = (
         "length",
         "mm",
         1e-3,
-        "sag of a horizontal screw under its own weight at most this (beam deflection q L^4 / (k E I) on the root "
-        "diameter, untensioned: conservative; 0 on a vertical axis)",
+        "sag of a horizontal screw under its own weight at most this (beam deflection q L^4 / (k E "
+        "I) on the root diameter, untensioned: conservative; 0 on a vertical axis)",
     ),
     Limit(
         "max_positioning_error",
@@ -177,9 +177,10 @@ LIMIT_TABLE = (
         "length",
         "um",
         1e-6,
-        "positioning error at most this: lead error of the screw's grade over the stroke + thermal growth + "
-        "deflection at the tool under axial_load + Abbe error of the guides' pitch and yaw + lost motion, "
-        "added as a worst case (THK A-712..A-716); the search chooses the grade (catalog.screw_grades)",
+        "positioning error at most this: lead error of the screw's grade over the stroke + thermal "
+        "growth + deflection at the tool under axial_load + Abbe error of the guides' pitch and "
+        "yaw + lost motion, added as a worst case (THK A-712..A-716); the search chooses the grade "
+        "(catalog.screw_grades)",
     ),
     Limit(
         "max_repeatability",
@@ -188,8 +189,8 @@ LIMIT_TABLE = (
         "length",
         "um",
         1e-6,
-        "repeatability at most this (ISO 230-2 scatter: the reversal, lost motion, + a scale read head's "
-        "noise band; the thermal drift is its own row of the budget)",
+        "repeatability at most this (ISO 230-2 scatter: the reversal, lost motion, + a scale read "
+        "head's noise band; the thermal drift is its own row of the budget)",
     ),
     Limit(
         "min_kv",
@@ -198,7 +199,8 @@ LIMIT_TABLE = (
         "frequency",
         "1/s",
         1.0,
-        "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, model.servo)",
+        "achievable position-loop gain Kv at least this (1/s or m/min/mm; minimum over the stroke, "
+        "model.servo)",
     ),
 )
 LIMITS = MappingProxyType({lim.key: lim for lim in LIMIT_TABLE})
@@ -213,7 +215,8 @@ def margin_output(check: str) -> str:
 
 
 def check_name(output: str) -> str | None:
-    """The check whose margin the model output (or constraint) ``output`` is; None: not a check's margin."""
+    """The check whose margin the model output (or constraint) ``output`` is; None: not a check's
+    margin."""
     return output[len(MARGIN) :] if output.startswith(MARGIN) else None
 
 
@@ -221,19 +224,22 @@ def check_name(output: str) -> str | None:
 class Check:
     """A vendor check the model evaluates as ``margin_<name>`` = available / needed (>= 1 passes).
 
-    label    : what the margin compares ('available / needed'), for tables and the search's constraints
+    label    : what the margin compares ('available / needed'), for tables and the search's
+               constraints
     short    : a short name for tables with one column per design
     unit     : the unit vendors quote the compared values in; ``factor`` converts SI to it
     preload  : how the margin moves with the nut preload (see :data:`OUTPUT_PRELOAD`)
-    drive    : a drive check: it applies only when the design has a motor (coupling checks: a coupling; reduction
-               checks: a reduction)
-    relaxable: a rule with a margin one may trade (False: a compatibility rule, parts that fit or not; an
-               infeasible problem's explanation never proposes relaxing it)
-    rotating_nut : a check of a driven rotating-nut unit (model.checks.unit_checks): shown for such a nut only
+    drive    : a drive check: it applies only when the design has a motor (coupling checks: a
+               coupling; reduction checks: a reduction)
+    relaxable: a rule with a margin one may trade (False: a compatibility rule, parts that fit or
+               not; an infeasible problem's explanation never proposes relaxing it)
+    rotating_nut : a check of a driven rotating-nut unit (model.checks.unit_checks): shown for such
+        a nut only
     set_by   : what of the axis sets its needed value, for the advice on an infeasible problem
-               (search.advice): 'speed' (the rapid speed: the need grows in proportion), 'acceleration' (with the
-               moving mass), 'weight' (on a vertical axis: what a counterbalance relieves), 'ratio' (what a
-               reduction's ratio changes: reflected inertia, torque, motor speed)
+               (search.advice): 'speed' (the rapid speed: the need grows in proportion),
+               'acceleration' (with the moving mass), 'weight' (on a vertical axis: what a
+               counterbalance relieves), 'ratio' (what a reduction's ratio changes: reflected
+               inertia, torque, motor speed)
     """
 
     name: str
@@ -257,13 +263,10 @@ SPEED, ACCEL, WEIGHT, RATIO = "speed", "acceleration", "weight", "ratio"
 TORQUE_SET_BY = (ACCEL, WEIGHT, RATIO)  # a motor or reduction torque
 
 # How the margins move with the nut preload (``preload``): the nut lift-off margin rises with it,
-# the nut life
-# falls, and the motor and reduction torques are convex (the nut's drag raises the torque of some
-# phases of the
-# cycle and lowers that of others: deceleration, lowering a vertical axis).  Through the heat
-# balance the bearing
-# life, bearing lift-off, screw yield and buckling margins fall with it (independent without a duty
-# cycle).
+# the nut life falls, and the motor and reduction torques are convex (the nut's drag raises the
+# torque of some phases of the cycle and lowers that of others: deceleration, lowering a vertical
+# axis).  Through the heat balance the bearing life, bearing lift-off, screw yield and buckling
+# margins fall with it (independent without a duty cycle).
 CHECK_TABLE = (
     Check(
         "critical_speed",
@@ -419,8 +422,8 @@ CHECK_TABLE = (
         set_by=(SPEED,),
     ),
     # a reduction part (Beckhoff AG2400/AG3400 Mechanical data): the output torques of the cycle
-    # against T2B and
-    # T2N, the motor speed against n1Max; convex in the nut preload like the motor torques
+    # against T2B and T2N, the motor speed against n1Max; convex in the nut preload like the motor
+    # torques
     Check(
         "reduction_accel_torque",
         "reduction T2B / peak output torque (cycle, thrust)",
@@ -518,8 +521,8 @@ CHECK_RECORDS = MappingProxyType({c.name: c for c in CHECK_TABLE})
 
 
 def checks_set_by(what: str) -> frozenset:
-    """The names of the checks whose need ``what`` (:data:`SPEED`, :data:`ACCEL`, :data:`WEIGHT`, :data:`RATIO`)
-    sets."""
+    """The names of the checks whose need ``what`` (:data:`SPEED`, :data:`ACCEL`, :data:`WEIGHT`,
+    :data:`RATIO`) sets."""
     return frozenset(c.name for c in CHECK_TABLE if what in c.set_by)
 
 

@@ -1,21 +1,22 @@
-"""Linear-motor drive as a sub-assembly: parameters in, outputs and margins out, on floats, numpy arrays and
-CasADi symbols alike (the duty cycle enters as :func:`axisopt.physics.rack.cycle_gram`, floats).  One drive
-side (a twin-drive gantry: the governing side).
+"""Linear-motor drive as a sub-assembly: parameters in, outputs and margins out, on floats, numpy
+arrays and CasADi symbols alike (the duty cycle enters as :func:`axisopt.physics.rack.cycle_gram`,
+floats).  One drive side (a twin-drive gantry: the governing side).
 
-HIWIN MM99TE07-1701 Appendix A: the force over the duty cycle, F = M a + (M g + Fa) mu (+ seal friction,
-process force, weight on a vertical axis), its peak against the forcers' peak force and its RMS against
-0.7 x their continuous force (HIWIN: Ie / Ic "had better be less than 0.7") -- or the steady thrust at feed
-where larger (the largest axial load against the peak, the mean one against the RMS); the peak force for at most about
-1 s (the longest acceleration phase, checked when the peak exceeds the continuous force); the currents
-Ip = Fp / Kf, Ie = Fe / Kf where the row gives Kf.  ``forcers`` forcers on one track add their forces
-(Siemens 1FN3 5.2).  The iron-core motor's attraction Fa loads the guides (HIWIN: "must be taken up by the
-guide"): friction, block load, life and static safety.  No screw: the feed-direction stiffness is the
-position loop's, M (2 pi f_bw)^2 at the servo bandwidth (an estimate); the first natural frequency is the
-table's on its guides.  The positioning error is the stage's accuracy after compensation (the row's).
+HIWIN MM99TE07-1701 Appendix A: the force over the duty cycle, F = M a + (M g + Fa) mu (+ seal
+friction, process force, weight on a vertical axis), its peak against the forcers' peak force and
+its RMS against 0.7 x their continuous force (HIWIN: Ie / Ic "had better be less than 0.7") -- or
+the steady thrust at feed where larger (the largest axial load against the peak, the mean one
+against the RMS); the peak force for at most about 1 s (the longest acceleration phase, checked when
+the peak exceeds the continuous force); the currents Ip = Fp / Kf, Ie = Fe / Kf where the row gives
+Kf.  ``forcers`` forcers on one track add their forces (Siemens 1FN3 5.2).  The iron-core motor's
+attraction Fa loads the guides (HIWIN: "must be taken up by the guide"): friction, block load, life
+and static safety.  No screw: the feed-direction stiffness is the position loop's, M (2 pi f_bw)^2
+at the servo bandwidth (an estimate); the first natural frequency is the table's on its guides.  The
+positioning error is the stage's accuracy after compensation (the row's).
 
-Keys of ``p`` (SI): m_axis, m_blocks, mu, f_seal, normal, vertical, forcers, fc, fp, kf (0: not given),
-m_forcer, fa (per forcer), accuracy, t_acc (longest acceleration phase of the cycle), bandwidth, k_n, blocks,
-thrust, mean_thrust.
+Keys of ``p`` (SI): m_axis, m_blocks, mu, f_seal, normal, vertical, forcers, fc, fp, kf (0: not
+given), m_forcer, fa (per forcer), accuracy, t_acc (longest acceleration phase of the cycle),
+bandwidth, k_n, blocks, thrust, mean_thrust.
 """
 
 from __future__ import annotations

@@ -1,8 +1,9 @@
 """Axial stiffness of nut, support bearings and screw by every method the seed paper gives.
 
-One row per (component, method): the value [N/m] where the parts' data allow it, else the names of the
-inputs no catalog column supplies.  A missing input is a row that says so, never an error and never an
-invented number.  The row the model uses is marked ``used``.  Pure functions, SI throughout.
+One row per (component, method): the value [N/m] where the parts' data allow it, else the names of
+the inputs no catalog column supplies.  A missing input is a row that says so, never an error and
+never an invented number.  The row the model uses is marked ``used``.  Pure functions, SI
+throughout.
 """
 
 from __future__ import annotations
@@ -50,7 +51,8 @@ class MethodRow:
 
 
 def _col(row, name):
-    """A finite number from a part row's column, or None when the row has no such column / an empty cell."""
+    """A finite number from a part row's column, or None when the row has no such column / an empty
+    cell."""
     try:
         v = row[name]
     except (KeyError, IndexError, TypeError):
@@ -66,10 +68,11 @@ _SERIES_RE = re.compile(r"(?<!\d)(719|70|72)\d{2}(AC|C)(?![A-Za-z])")
 
 
 def bearing_c_type(series: str, contact_angle: float | None = None):
-    """Seed Table 2 c_type for an angular-contact spindle series (70xx/72xx/719xx, C or AC), else None.
+    """Seed Table 2 c_type for an angular-contact spindle series (70xx/72xx/719xx, C or AC), else
+    None.
 
-    series : the catalog ``series`` text (e.g. "7012C", "71912AC ...");  contact_angle [rad], when given,
-    must match the suffix (C 15 deg, AC 25 deg) or no value is returned.
+    series : the catalog ``series`` text (e.g. "7012C", "71912AC ...");  contact_angle [rad], when
+        given, must match the suffix (C 15 deg, AC 25 deg) or no value is returned.
     """
     m = _SERIES_RE.search(str(series))
     if not m:
@@ -104,7 +107,8 @@ def _nut_rows(ev: Evaluation, p: dict) -> list:
             "seed eq. 9 (THK/HIWIN): 0.8 k (P / 0.1 C)^(1/3), nut catalog rigidity",
             k0,
             used=True,
-            note=f"{basis}; the chain uses {float(ev['k_nut']) / 1e6:.1f} N/um under the largest axial load",
+            note=f"{basis}; the chain uses {float(ev['k_nut']) / 1e6:.1f} N/um under the largest "
+            "axial load",
         )
     ]
 
@@ -122,7 +126,10 @@ def _nut_rows(ev: Evaluation, p: dict) -> list:
     }
     missing = tuple(k for k, v in inputs.items() if v is None)
     value = None
-    note = "needs the loaded balls per nut half (no catalog column gives it); pitch diameter = nominal diameter"
+    note = (
+        "needs the loaded balls per nut half (no catalog column gives it); pitch diameter = "
+        "nominal diameter"
+    )
     if not missing:
         phi = float(ps.lead_angle(lead, pitch_d))
         k_half = float(pn.nut_stiffness_hertz(load, n_balls, ball_d, pitch_d, beta, phi))
@@ -130,8 +137,8 @@ def _nut_rows(ev: Evaluation, p: dict) -> list:
         # load
         value = 2.0 * k_half if double else k_half
         note = (
-            f"{basis}; {n_balls:.0f} loaded balls per half (nut column n_balls); pitch diameter = nominal "
-            "diameter; rigid nut body (eq. 9's 0.8 not applied)"
+            f"{basis}; {n_balls:.0f} loaded balls per half (nut column n_balls); pitch diameter = "
+            "nominal diameter; rigid nut body (eq. 9's 0.8 not applied)"
         )
     rows.append(
         MethodRow(
@@ -165,15 +172,16 @@ def _bearing_rows(ev: Evaluation, p: dict) -> list:
             used=True,
             note=(
                 f"one set; the model takes {sets} set(s), each in series with its housing "
-                f"({k_set / 1e6:.1f} N/um per set): k_bearing {float(ev['k_bearing']) / 1e6:.1f} N/um"
+                f"({k_set / 1e6:.1f} N/um per set): k_bearing {float(ev['k_bearing']) / 1e6:.1f} "
+                "N/um"
             ),
         )
     ]
 
     load_note = (
         (
-            f"per bearing at F_r = set preload {preload:.0f} N, x {n_rows:.0f} bearings of the set, "
-            "axial by inverse eq. 27 (k_a = 2 k_r tan^2 alpha)"
+            f"per bearing at F_r = set preload {preload:.0f} N, x {n_rows:.0f} bearings of the "
+            "set, axial by inverse eq. 27 (k_a = 2 k_r tan^2 alpha)"
         )
         if preload is not None
         else ""
@@ -303,14 +311,14 @@ def _screw_rows(ev: Evaluation, p: dict) -> list:
 
 
 def stiffness_methods(ev: Evaluation) -> list[MethodRow]:
-    """Rows for nut, bearings and screw: every seed method, with its value or the inputs it lacks."""
+    """Rows for nut, bearings and screw: every seed method, with its value or the inputs it
+    lacks."""
     p = design_params(ev.design)
     return _nut_rows(ev, p) + _bearing_rows(ev, p) + _screw_rows(ev, p)
 
 
 # Names a user can ask for with ``evaluate --methods nut:hertz,bearings:palmgren``:
-# component:keyword, the
-# keyword matched against the start of the method's name (lower case).
+# component:keyword, the keyword matched against the start of the method's name (lower case).
 METHOD_KEYS = {
     "nut:catalog": ("nut", "catalog"),
     "nut:hertz": ("nut", "hertz"),
@@ -327,7 +335,8 @@ METHOD_KEYS = {
 def select_methods(rows, names: str, design_name: str = "design") -> list:
     """The rows a user asked for by name ('all' or a comma list of :data:`METHOD_KEYS`).
 
-    An unknown name, or a named method the design's parts lack data for, is an InputError (one line)."""
+    An unknown name, or a named method the design's parts lack data for, is an InputError (one
+    line)."""
     from ..errors import InputError
 
     if names == "all":

@@ -17,10 +17,11 @@ STEEL_DAMPING = 0.002
 
 
 def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None, whole=None) -> dict:
-    """Axial mode (motor held, Rayleigh screw mass), the table's bounce mode on the guide blocks and, given the
-    rocking modes (``model.carriage.rocking``: pitch and yaw), the first of them all [Hz].  ``moving`` is the mass
-    the drive moves, ``whole`` the whole moving mass (default ``moving``; a twin drive: its side's share and the
-    gantry, whose 2-DOF translation and racking modes take the place of the guides-only yaw mode in the minimum,
+    """Axial mode (motor held, Rayleigh screw mass), the table's bounce mode on the guide blocks
+    and, given the rocking modes (``model.carriage.rocking``: pitch and yaw), the first of them all
+    [Hz].  ``moving`` is the mass the drive moves, ``whole`` the whole moving mass (default
+    ``moving``; a twin drive: its side's share and the gantry, whose 2-DOF translation and racking
+    modes take the place of the guides-only yaw mode in the minimum,
     :func:`axisopt.model.gantry.gantry_modes`)."""
     whole = moving if whole is None else whole
     m_eff = pdy.effective_axial_mass(moving, screw_mass, x, p["span"], mounting)
@@ -45,8 +46,8 @@ def axial_modes(p, x, mounting, chain, moving, screw_mass, rock=None, whole=None
 
 
 def drive_inertias(p):
-    """(motor side, screw side) rotary inertia [kg*m^2]: rotor plus half the coupling; screw plus the other half
-    (a driven rotating nut: the unit's rotating parts instead of the screw)."""
+    """(motor side, screw side) rotary inertia [kg*m^2]: rotor plus half the coupling; screw plus
+    the other half (a driven rotating nut: the unit's rotating parts instead of the screw)."""
     r = unit(p, "nut_rotating")
     j_screw = (1.0 - r) * ps.screw_rotary_inertia(
         0.5 * (p["nominal_diameter"] + p["root_diameter"]), p["span"]
@@ -55,7 +56,8 @@ def drive_inertias(p):
 
 
 def drive_train_modes(p, chain, m_eff) -> dict:
-    """First two elastic modes of motor - coupling - screw - table (motor free at these frequencies) [Hz]."""
+    """First two elastic modes of motor - coupling - screw - table (motor free at these frequencies)
+    [Hz]."""
     j_m, j_s = drive_inertias(p)
     f1, f2 = pdy.drive_train_frequencies(
         j_m, j_s, drive_torsional_stiffness(p), chain["k_drive"], m_eff, p["lead"]
@@ -66,15 +68,16 @@ def drive_train_modes(p, chain, m_eff) -> dict:
 def dampers(p, chain) -> dict:
     """Viscous dampers of the axial mode referred to the table [N*s/m], each source apart.
 
-    Guide blocks: seed Table 7 (catalog column); nut and support-bearing sets: seed Table 6 by bore, each
-    weighted by its share of the chain's deformation (:func:`axisopt.physics.damping.chain_damper_share`).
+    Guide blocks: seed Table 7 (catalog column); nut and support-bearing sets: seed Table 6 by bore,
+    each weighted by its share of the chain's deformation
+    (:func:`axisopt.physics.damping.chain_damper_share`).
     """
     k = chain["k_total"]
     c_nut = pdm.chain_damper_share(
         pdm.rolling_joint_damping(p["nominal_diameter"]), k, chain["k_nut"]
     )
-    # the bearing sets deform by (k / k_bearing) of the table motion (both sets together for fixed-
-    # fixed)
+    # the bearing sets deform by (k / k_bearing) of the table motion (both sets together for
+    # fixed-fixed)
     c_brg = pdm.chain_damper_share(
         p["bearing_sets"] * pdm.rolling_joint_damping(p["bearing_bore"]), k, chain["k_bearing"]
     )

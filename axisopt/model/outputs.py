@@ -1,14 +1,16 @@
-"""Every output of the axis model, declared once: its SI unit, whether it is a profile over the stroke, how it
-moves with the nut preload, and which parts of a design change it.
+"""Every output of the axis model, declared once: its SI unit, whether it is a profile over the
+stroke, how it moves with the nut preload, and which parts of a design change it.
 
-The CasADi Function's output list (:data:`PROFILE_OUTPUTS`, :data:`SCALAR_OUTPUTS` in :mod:`.function`), the
-preload structure the search's exact 1-D solve rests on (:data:`OUTPUT_PRELOAD`), the outputs the stiffness
-chain computes (:data:`CHAIN_OUTPUTS`: ``chain=False`` leaves them out), the regenerated-energy sum
-(:data:`REGEN_OUTPUTS`) and the outputs a drive or a coupling changes (:data:`DRIVE_OUTPUTS`,
-:data:`COUPLING_OUTPUTS`) derive from :data:`OUTPUT_TABLE`.  The vendor checks' ``margin_``, ``available_`` and
-``needed_`` outputs derive from :data:`axisopt.model.limits.CHECK_TABLE`.
+The CasADi Function's output list (:data:`PROFILE_OUTPUTS`, :data:`SCALAR_OUTPUTS` in
+:mod:`.function`), the preload structure the search's exact 1-D solve rests on
+(:data:`OUTPUT_PRELOAD`), the outputs the stiffness chain computes (:data:`CHAIN_OUTPUTS`:
+``chain=False`` leaves them out), the regenerated-energy sum (:data:`REGEN_OUTPUTS`) and the outputs
+a drive or a coupling changes (:data:`DRIVE_OUTPUTS`, :data:`COUPLING_OUTPUTS`) derive from
+:data:`OUTPUT_TABLE`.  The vendor checks' ``margin_``, ``available_`` and ``needed_`` outputs derive
+from :data:`axisopt.model.limits.CHECK_TABLE`.
 
-A new output: one :class:`Output` here plus the physics that computes it (``model.response`` and below).
+A new output: one :class:`Output` here plus the physics that computes it (``model.response`` and
+below).
 """
 
 from __future__ import annotations
@@ -28,14 +30,15 @@ class Output:
     unit     : its SI unit, as pint reads it ("" for a ratio)
     doc      : what it is
     profile  : given per position over the stroke (a limit reads its minimum or maximum)
-    preload  : how it moves with the nut preload: +1 nondecreasing, -1 nonincreasing, :data:`CONVEX`, 0 independent
+    preload  : how it moves with the nut preload: +1 nondecreasing, -1 nonincreasing,
+               :data:`CONVEX`, 0 independent
     chain    : computed with the stiffness chain and the axial modes (left out when ``chain=False``)
-    extra    : the drive-train frequencies and the damping (left out when ``extras=False``: no limit or objective
-               reads them)
+    extra    : the drive-train frequencies and the damping (left out when ``extras=False``: no limit
+               or objective reads them)
     regen    : the regenerated-energy sum over the duty cycle (left out when ``regen=False``)
-    drive    : the motor, coupling or reduction changes it (every other output is the same for every drive of a
-               mechanical combination); those without ``chain`` the drive block computes on its own
-               (``model.drive_response``)
+    drive    : the motor, coupling or reduction changes it (every other output is the same for every
+               drive of a mechanical combination); those without ``chain`` the drive block computes
+               on its own (``model.drive_response``)
     coupling : the coupling's torsional stiffness changes it (in series in the stiffness chain)
     """
 
@@ -60,16 +63,12 @@ def _s(name, unit, doc, **kw) -> Output:
 
 
 # How outputs move with the nut preload (the search's exact 1-D solve rests on it; default ==
-# exhaustive in
-# tests/search checks it): the minimum stiffness and frequency, the drag torque and the nut lift-off
-# margin rise
-# with the preload, the nut life falls.  The heat balance (model.heat) makes the temperature rise
-# grow with the
-# preload (nut drag x speed), and with it the thermal growth.  The positioning budget's deflection
-# falls with the
-# preload; its other rows are independent of it (the thermal row at the nut's highest preload).  The
-# nut's drag
-# brakes every move: the energy the motor returns falls with the preload.
+# exhaustive in tests/search checks it): the minimum stiffness and frequency, the drag torque and
+# the nut lift-off margin rise with the preload, the nut life falls.  The heat balance (model.heat)
+# makes the temperature rise grow with the preload (nut drag x speed), and with it the thermal
+# growth.  The positioning budget's deflection falls with the preload; its other rows are
+# independent of it (the thermal row at the nut's highest preload).  The nut's drag brakes
+# every move: the energy the motor returns falls with the preload.
 OUTPUT_TABLE = (
     # profiles over the stroke
     _p("k_screw", "N/m", "axial stiffness of the screw shaft at the nut", chain=True),

@@ -1,6 +1,7 @@
-"""The names of the model's flat SI parameter vector (:data:`PARAM_NAMES`, in the vector's order) and which part
-columns feed which parameter (:data:`PART_PARAMS`, the motor rule's :data:`RULE_PARAMS`, :func:`columns_read`):
-the declaration the parameter builders (:mod:`.params`) and the catalog readers share."""
+"""The names of the model's flat SI parameter vector (:data:`PARAM_NAMES`, in the vector's order)
+and which part columns feed which parameter (:data:`PART_PARAMS`, the motor rule's
+:data:`RULE_PARAMS`, :func:`columns_read`): the declaration the parameter builders (:mod:`.params`)
+and the catalog readers share."""
 
 from __future__ import annotations
 
@@ -98,8 +99,7 @@ PARAM_NAMES = (
     "bearing_static_safety",
     "nut_lift_off_safety",
     # drive: motor, coupling, reduction (rotor_inertia at the motor; motor_inertia above is the
-    # motor side
-    # reflected to the screw for the drive-train modes)
+    # motor side reflected to the screw for the drive-train modes)
     "rotor_inertia",
     "has_motor",
     "motor_rated_torque",
@@ -117,11 +117,9 @@ PARAM_NAMES = (
     "max_inertia_ratio",
     "brake_safety",
     # carriage: the guide's static rating and moment ratings, the cutting force's cross component,
-    # the
-    # lever arms, the block pattern, gravity across the rails (wall mounting), the table's rocking
-    # inertias, the
-    # least static safety of guide and nut, and whether the duty cycle's phases carry the process
-    # force
+    # the lever arms, the block pattern, gravity across the rails (wall mounting), the table's
+    # rocking inertias, the least static safety of guide and nut, and whether the duty cycle's
+    # phases carry the process force
     "guide_static_load",
     "guide_moment_roll",
     "guide_moment_pitch",
@@ -147,15 +145,13 @@ PARAM_NAMES = (
     "shaft_ends",
     "pretension_rise",
     # the motor vendor's rule on an unbalanced axis's load torque (model.motorrule), a reduction's
-    # emergency-stop
-    # torque, the nut lift-off check's load case (1: the cut while accelerating)
+    # emergency-stop torque, the nut lift-off check's load case (1: the cut while accelerating)
     "unbalance_torque_ratio",
     "reduction_emergency_torque",
     "cut_while_accelerating",
     "buckling_nut_fixed",
     # accuracy: the screw's lead error over the stroke by its grade and the grade's price factor on
-    # the
-    # shaft; the guides' running pitch and yaw (model.accuracy)
+    # the shaft; the guides' running pitch and yaw (model.accuracy)
     "lead_error",
     "nut_length",
     "grade_price_factor",
@@ -184,9 +180,8 @@ PARAM_NAMES = (
     "unit_bearing_torque",
     "unit_bearing_preload",
     # counterbalance of a vertical axis (model.loads.balance_force): the counterweight and its
-    # chain's
-    # efficiency, the mass moving with the head besides it, a balance cylinder's force at its worst
-    # end
+    # chain's efficiency, the mass moving with the head besides it, a balance cylinder's force at
+    # its worst end
     "balance_mass",
     "balance_efficiency",
     "balance_moving_mass",
@@ -196,18 +191,15 @@ PARAM_NAMES = (
 
 
 # part table -> ((column, parameter), ...): the columns that feed a model parameter as they are,
-# from the one
-# declaration of the part columns (axisopt.catalog.columns.COLUMNS).  A new part column the model
-# reads needs its
-# ``param`` there and its name in PARAM_NAMES above.
+# from the one declaration of the part columns (axisopt.catalog.columns.COLUMNS).  A new part column
+# the model reads needs its ``param`` there and its name in PARAM_NAMES above.
 PART_PARAMS = MappingProxyType(
     {t: tuple((c.name, c.param) for c in cols if c.param) for t, cols in COLUMNS.items()}
 )
 
 
 # columns the model reads through a rule in axis_params / drive_params (a fallback, a mean, a
-# choice; the text
-# columns type and arrangement as the numbers they stand for)
+# choice; the text columns type and arrangement as the numbers they stand for)
 _RULE_COLUMNS = MappingProxyType(
     {
         "screws": (),
@@ -275,7 +267,8 @@ def columns_read(table: str) -> tuple:
 
 
 def listed_or(value, fallback):
-    """A catalog column where it is listed (finite), ``fallback`` where it is empty; float or array."""
+    """A catalog column where it is listed (finite), ``fallback`` where it is empty; float or
+    array."""
     out = np.where(np.isfinite(value), value, fallback)
     return out if np.ndim(out) else float(out)
 
@@ -286,8 +279,9 @@ def column_value(row, name):
 
 
 def optional_column(row, name):
-    """An optional column of one part or of arrays of parts; NaN (empty) where the table has no such column (a
-    table written before the column existed; a scalar, which broadcasts against arrays of parts)."""
+    """An optional column of one part or of arrays of parts; NaN (empty) where the table has no such
+    column (a table written before the column existed; a scalar, which broadcasts against arrays of
+    parts)."""
     try:
         return column_value(row, name)
     except KeyError:

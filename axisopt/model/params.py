@@ -25,8 +25,7 @@ from .paramnames import (
 )
 
 # A guide row without a rating basis: 50 km, the shorter of the vendors' two bases (a C defined for
-# 100 km and
-# read as a 50 km rating halves the life, never doubles it)
+# 100 km and read as a 50 km rating halves the life, never doubles it)
 GUIDE_RATING_DISTANCE = 50e3  # [m]
 # a screw row without a grade: the grade its catalog price is for (catalogs/SOURCES.md)
 DEFAULT_GRADE = "C5"
@@ -35,14 +34,15 @@ DEFAULT_GRADE = "C5"
 def axis_params(
     axis, screw, nut, bearing, guide, motor=None, coupling=None, reduction=None, grade=None
 ) -> dict:
-    """Flat SI parameter dict for :func:`axisopt.model.axis_response` from an Axis and its part rows.
+    """Flat SI parameter dict for :func:`axisopt.model.axis_response` from an Axis and its part
+    rows.
 
-    Part rows may be pandas Series (one design) or DataFrames / dicts of arrays (many designs).  Without a
-    motor (or coupling) row the axis's ``motor_inertia`` (``coupling_*``) values stand in and the drive
-    checks do not apply.  ``grade``: the screw's lead accuracy grade (a name, or an array of names like the
-    rows; default the screw row's ``grade`` where it has one, else C5, the grade of the catalog price).
-    ``p["duty"]`` holds the axis's duty-cycle phases (not a parameter: the same for
-    every design).
+    Part rows may be pandas Series (one design) or DataFrames / dicts of arrays (many designs).
+    Without a motor (or coupling) row the axis's ``motor_inertia`` (``coupling_*``) values stand in
+    and the drive checks do not apply.  ``grade``: the screw's lead accuracy grade (a name, or an
+    array of names like the rows; default the screw row's ``grade`` where it has one, else C5, the
+    grade of the catalog price).  ``p["duty"]`` holds the axis's duty-cycle phases (not a parameter:
+    the same for every design).
     """
     col = column_value
     mounting = axis.mounting
@@ -89,8 +89,7 @@ def axis_params(
             "nut_double": _is_type(nut, "double"),
             "bearing_mean_diameter": dm,
             # starting torque of the support unit where its vendor lists it; else the upper envelope
-            # of the vendor
-            # values per preload and mean diameter
+            # of the vendor values per preload and mean diameter
             # (physics.bearings.support_starting_torque_envelope)
             "bearing_torque": listed_or(
                 torque, support_starting_torque_envelope(p["bearing_preload"], dm)
@@ -105,8 +104,7 @@ def axis_params(
             # split (model.checks.bearing_life_load)
             "bearing_hertz_split": _is_vendor(bearing, HERTZ_SPLIT_VENDORS),
             # the lift-off load of the stronger direction where the catalog lists one (a 3-against-1
-            # set), else the
-            # set's one lift-off load (the weaker direction's)
+            # set), else the set's one lift-off load (the weaker direction's)
             "bearing_lift_off_strong": listed_or(
                 col(bearing, "lift_off_load_strong"), p["bearing_lift_off"]
             ),
@@ -116,8 +114,8 @@ def axis_params(
                 col(guide, "rating_distance"), GUIDE_RATING_DISTANCE
             ),
             # the least static safety of the set on its static rating: the axis's, else the rating's
-            # vendor's
-            # (catalog column static_safety), else Rexroth's machine-tool S0 (physics.bearings)
+            # vendor's (catalog column static_safety), else Rexroth's machine-tool S0
+            # (physics.bearings)
             "bearing_static_safety": listed_or(
                 col(bearing, "static_safety"), STATIC_SAFETY_MACHINE_TOOL
             )
@@ -138,8 +136,7 @@ def axis_params(
     p.update(drive_params(axis, motor, coupling, reduction))
     p.update(counterbalance_params(axis))
     # a twin drive (model.gantry): the guides carry bridge and cross carriage; each drive the
-    # governing side's
-    # share of the process force (as the duty cycle's phases, design.Axis.phases)
+    # governing side's share of the process force (as the duty cycle's phases, design.Axis.phases)
     p.update(gantry_params(axis))
     p["table_mass"] = axis.moving_mass + p["cross_mass"]
     p["axial_load"] = p["force_share"] * axis.axial_load
@@ -149,11 +146,12 @@ def axis_params(
 
 
 def grade_params(axis, screw, grade=None, nut_length=0.0) -> dict:
-    """The lead accuracy grade's parameters: the lead error over the thread the nut travels, stroke +
-    ``nut_length`` [m] (ISO 3408-3's useful travel: the band of the length the nut's balls run over), the
-    price factor on the screw shaft [-] (:mod:`axisopt.catalog.grades`; the catalog price is the C5 price), and
-    the guides' running pitch and yaw [rad].  ``grade``: a name or an array of names (default: the screw row's
-    ``grade``, else C5); ``nut_length`` a float or an array like the rows."""
+    """The lead accuracy grade's parameters: the lead error over the thread the nut travels,
+    stroke + ``nut_length`` [m] (ISO 3408-3's useful travel: the band of the length the nut's balls
+    run over), the price factor on the screw shaft [-] (:mod:`axisopt.catalog.grades`; the catalog
+    price is the C5 price), and the guides' running pitch and yaw [rad].  ``grade``: a name or an
+    array of names (default: the screw row's ``grade``, else C5); ``nut_length`` a float or an array
+    like the rows."""
     if grade is None:
         try:
             grade = screw["grade"]
@@ -169,8 +167,8 @@ def grade_params(axis, screw, grade=None, nut_length=0.0) -> dict:
         "guide_pitch": axis.guide_pitch,
         "guide_yaw": axis.guide_yaw,
         # a linear scale on the table (closed loop): its grade's error over the stroke and its read
-        # head's
-        # repeatability (grades.SCALE_GRADES) take the place of the screw's lead and thermal rows
+        # head's repeatability (grades.SCALE_GRADES) take the place of the screw's lead and thermal
+        # rows
         "scale_feedback": 1.0 if scale else 0.0,
         "scale_error": scale_error(axis.scale_grade, axis.stroke) if scale else 0.0,
         "scale_repeatability": SCALE_GRADES[axis.scale_grade].repeatability if scale else 0.0,
@@ -178,12 +176,13 @@ def grade_params(axis, screw, grade=None, nut_length=0.0) -> dict:
 
 
 def counterbalance_params(axis) -> dict:
-    """The counterbalance's parameters (SI; model.loads.balance_force): a counterweight's mass m_c and its chain's
-    efficiency, the mass that moves with the head besides it (the counterweight and its chain, a cylinder's
-    piston), and a balance cylinder's force at the end of its range (over the stroke, with the pressure
-    tolerance, physics.counterbalance.cylinder_force_range) that leaves the screw the largest net weight
-    (physics.counterbalance.cylinder_worst_force), chosen with the head's weight from axis.moving_mass (table +
-    workpiece; nut and blocks, a few per cent, left out of the choice).  Without a counterbalance: 0, 1, 0, 0."""
+    """The counterbalance's parameters (SI; model.loads.balance_force): a counterweight's mass m_c
+    and its chain's efficiency, the mass that moves with the head besides it (the counterweight and
+    its chain, a cylinder's piston), and a balance cylinder's force at the end of its range (over
+    the stroke, with the pressure tolerance, physics.counterbalance.cylinder_force_range) that
+    leaves the screw the largest net weight (physics.counterbalance.cylinder_worst_force), chosen
+    with the head's weight from axis.moving_mass (table + workpiece; nut and blocks, a few per cent,
+    left out of the choice).  Without a counterbalance: 0, 1, 0, 0."""
     cb = axis.counterbalance
     if cb is None:
         return {
@@ -210,27 +209,25 @@ def counterbalance_params(axis) -> dict:
 
 
 # Estimates for a rotating-nut unit whose vendor prints no figure (catalogs/SOURCES.md,
-# docs/assumptions.md):
-# the built-in bearing's axial rigidity per kN of its dynamic rating, the lowest ratio of the
-# Schaeffler ZKLF rows
-# HIWIN reprints (H-BS 8.8.2: ZKLF50140 1 400 N/um at Cdyn 125 kN); its preload as the ZKLN/ZKLF
-# rule of
-# catalogs/SOURCES.md (5 % Cdyn); its mean diameter as 2.5 x the screw's nominal diameter (the THK
-# DIR/BLR unit
-# housings D are 2.4-3.0 d, T-GC B-721/B-723; the bearing sits inside D, so the drag read from it is
-# high)
+# docs/assumptions.md): the built-in bearing's axial rigidity per kN of its dynamic rating, the
+# lowest ratio of the Schaeffler ZKLF rows HIWIN reprints (H-BS 8.8.2: ZKLF50140 1 400 N/um at Cdyn
+# 125 kN); its preload as the ZKLN/ZKLF rule of catalogs/SOURCES.md (5 % Cdyn); its mean diameter as
+# 2.5 x the screw's nominal diameter (the THK DIR/BLR unit housings D are 2.4-3.0 d, T-GC
+# B-721/B-723; the bearing sits inside D, so the drag read from it is high)
 UNIT_RIGIDITY_PER_RATING = 1400e6 / 125e3  # [N/m per N] = 11.2 N/um per kN
 UNIT_PRELOAD_FRACTION = 0.05  # [-] of the unit bearing's Ca
 UNIT_MEAN_DIAMETER_RATIO = 2.5  # [-] of the screw's nominal diameter
 
 
 def rotating_nut_params(p: dict, nut) -> dict:
-    """The driven rotating-nut unit's parameters (SI), one part or arrays: ``nut_rotating`` 1.0 for a unit (the
-    nut row's ``rotating`` flag), else 0.0 with neutral finite values (so one formula evaluates a mix of rows on
-    floats, arrays and CasADi without NaN).  Where the unit's vendor prints no figure the estimates above stand
-    in: max speed = the screw's DN limit / d (THK A-697, H-BS 3.7.6: the balls run at the nut's speed relative to
-    the screw, the same on a turning nut); the bearing's rigidity, preload and starting torque
-    (:func:`axisopt.physics.bearings.support_starting_torque_envelope`).  Needs ``p``'s screw and nut values."""
+    """The driven rotating-nut unit's parameters (SI), one part or arrays: ``nut_rotating`` 1.0 for
+    a unit (the nut row's ``rotating`` flag), else 0.0 with neutral finite values (so one formula
+    evaluates a mix of rows on floats, arrays and CasADi without NaN).  Where the unit's vendor
+    prints no figure the estimates above stand
+    in: max speed = the screw's DN limit / d (THK A-697, H-BS 3.7.6: the balls run at the nut's
+    speed relative to the screw, the same on a turning nut); the bearing's rigidity, preload and
+    starting torque (:func:`axisopt.physics.bearings.support_starting_torque_envelope`).  Needs
+    ``p``'s screw and nut values."""
     col = optional_column
     flag = listed_or(col(nut, "rotating"), 0.0)
     r = np.where(flag == 1.0, 1.0, 0.0)
@@ -271,10 +268,11 @@ def one_design(p: dict, i: int = 0) -> dict:
 
 
 def carriage_params(axis) -> dict:
-    """Carriage geometry, load and safety parameters (SI), with the defaults of :class:`axisopt.design.Axis`.
-    The rocking inertias default to a uniform box of the axis's moving mass (table + workpiece): table_length
-    long, table_width wide, 2 x cg_height high, its centre at cg_height (pitch about the cross axis in the
-    mounting plane; yaw about the normal axis through the carriage centre, cg_offset away)."""
+    """Carriage geometry, load and safety parameters (SI), with the defaults of
+    :class:`axisopt.design.Axis`.  The rocking inertias default to a uniform box of the axis's
+    moving mass (table + workpiece): table_length long, table_width wide, 2 x cg_height high, its
+    centre at cg_height (pitch about the cross axis in the mounting plane; yaw about the normal axis
+    through the carriage centre, cg_offset away)."""
     from ..physics.carriage import box_inertia
 
     length, width, h = axis.table_length, axis.table_width_eff, axis.cg_height_eff
@@ -306,11 +304,12 @@ def carriage_params(axis) -> dict:
 
 
 def mount_compliances(axis, p) -> dict:
-    """Compliance [m/N] of one bearing housing and of the nut bracket: the axis's values, else the published
-    estimates (never rigid): the housing 26 x its bearing set (IBC TI-I-5010.2 units against their bare sets,
-    :func:`axisopt.physics.bearings.housing_stiffness_default`), the bracket 4 x its nut at the catalog's
-    reference preload (THK A-709's 80 % nut-mounting allowance once more,
-    :func:`axisopt.physics.nut.bracket_stiffness_default`).  Floats or arrays (one per part)."""
+    """Compliance [m/N] of one bearing housing and of the nut bracket: the axis's values, else the
+    published estimates (never rigid): the housing 26 x its bearing set (IBC TI-I-5010.2 units
+    against their bare sets, :func:`axisopt.physics.bearings.housing_stiffness_default`), the
+    bracket 4 x its nut at the catalog's reference preload (THK A-709's 80 % nut-mounting allowance
+    once more, :func:`axisopt.physics.nut.bracket_stiffness_default`).  Floats or arrays (one per
+    part)."""
     housing = (
         housing_stiffness_default(p["bearing_stiffness"])
         if axis.bearing_housing_stiffness is None
@@ -331,7 +330,8 @@ def mount_compliances(axis, p) -> dict:
 
 
 def _arrangement_rows(row, i):
-    """Rows of the set carrying the stronger (i = 0) or the other (1) load direction, one part or an array."""
+    """Rows of the set carrying the stronger (i = 0) or the other (1) load direction, one part or an
+    array."""
     a = np.asarray(row["arrangement"])
     rows = np.select(
         [a == k for k in ARRANGEMENT_ROWS], [v[i] for v in ARRANGEMENT_ROWS.values()], np.nan
@@ -340,9 +340,10 @@ def _arrangement_rows(row, i):
 
 
 def nut_length(screw, nut):
-    """The nut's length [m] (one part or arrays of parts): its ``length`` column where its vendor lists one,
-    else the catalog envelope :func:`axisopt.physics.nut.nut_length_estimate` on the screw's lead and diameter.
-    The lead band reads stroke + this length (:func:`grade_params`; the search's grade rows likewise)."""
+    """The nut's length [m] (one part or arrays of parts): its ``length`` column where its vendor
+    lists one, else the catalog envelope :func:`axisopt.physics.nut.nut_length_estimate` on the
+    screw's lead and diameter.  The lead band reads stroke + this length (:func:`grade_params`; the
+    search's grade rows likewise)."""
     return listed_or(
         optional_column(nut, "length"),
         nut_length_estimate(
@@ -353,14 +354,15 @@ def nut_length(screw, nut):
     )
 
 
-# the bearing makers that rate a set's row groups by the groups' Hertz load split (NSK super-precision
-# bearings pp. 110-111); the others print one set rating and state no rule for the split
+# the bearing makers that rate a set's row groups by the groups' Hertz load split (NSK
+# super-precision bearings pp. 110-111); the others print one set rating and state no rule for the
+# split
 HERTZ_SPLIT_VENDORS = ("NSK",)
 
 
 def _is_vendor(row, vendors):
-    """1.0 where the part's ``vendor`` is one of ``vendors`` (one part or an array of parts); 0 where the row
-    names none (a part written inline without a vendor)."""
+    """1.0 where the part's ``vendor`` is one of ``vendors`` (one part or an array of parts); 0
+    where the row names none (a part written inline without a vendor)."""
     try:
         v = row["vendor"]
     except (KeyError, IndexError):

@@ -1,27 +1,30 @@
-"""Rack-and-pinion drive as a sub-assembly: parameters in, outputs and margins out, on floats, numpy arrays
-and CasADi symbols alike (the duty cycle enters as :func:`axisopt.physics.rack.cycle_gram` of its phases,
-floats).  One drive side (a twin-drive gantry: the governing side, as the screw model checks it).
+"""Rack-and-pinion drive as a sub-assembly: parameters in, outputs and margins out, on floats, numpy
+arrays and CasADi symbols alike (the duty cycle enters as :func:`axisopt.physics.rack.cycle_gram` of
+its phases, floats).  One drive side (a twin-drive gantry: the governing side, as the screw model
+checks it).
 
-The vendors' sizing (THK A-241, Apex Dynamics, Yaskawa 11.2.4): the feed force over the duty cycle (inertia of
-the moving mass with motor, gearbox and blocks riding on it, guide friction, process force, weight on a
-vertical axis); the pinion's largest thrust against its permissible capacity over the overload factor; the
-motor's peak and RMS torque through the gearbox (the motor's and gearbox's inertia at the motor, the
-gearbox's efficiency), the motor speed, the gearbox's T2B / T2N / n1Max as ``model.drive`` rates them; the
-inertia ratio.  A preloaded twin pinion (two motors per rack, electrically biased): each pinion carries half
-the feed force plus the bias ``bias x peak force`` (RMS bounded by rms(F)/2 + bias: Minkowski), no backlash,
-both meshes and gearboxes in parallel.  The axial chain: mesh (ISO 6336-1 guidance, an estimate) in series
-with the gearbox's torsional stiffness at the pinion radius; no position dependence (the rack is fixed).
-The positioning error: the rack's cumulative pitch error over the stroke plus the lost motion of the
-gearbox's backlash (none with a twin pinion).
+The vendors' sizing (THK A-241, Apex Dynamics, Yaskawa 11.2.4): the feed force over the duty cycle
+(inertia of the moving mass with motor, gearbox and blocks riding on it, guide friction, process
+force, weight on a vertical axis); the pinion's largest thrust against its permissible capacity over
+the overload factor; the motor's peak and RMS torque through the gearbox (the motor's and gearbox's
+inertia at the motor, the gearbox's efficiency), the motor speed, the gearbox's T2B / T2N / n1Max as
+``model.drive`` rates them; the inertia ratio.  A preloaded twin pinion (two motors per rack,
+electrically biased): each pinion carries half the feed force plus the bias ``bias x peak force``
+(RMS bounded by rms(F)/2 + bias: Minkowski), no backlash, both meshes and gearboxes in parallel.
+The axial chain: mesh (ISO 6336-1 guidance, an estimate) in series with the gearbox's torsional
+stiffness at the pinion radius; no position dependence (the rack is fixed).  The positioning error:
+the rack's cumulative pitch error over the stroke plus the lost motion of the gearbox's backlash
+(none with a twin pinion).
 
-Keys of ``p`` (SI): m_axis (moving mass of this side without drive parts and blocks), m_parts (motors,
-gearboxes, pinions riding on the carriage), m_blocks, mu (guide friction coefficient), f_seal (blocks' seal
-friction), normal (normal force on this side's blocks), vertical (0/1), d (pinion pitch diameter), perm
-(permissible feed force), k_o (overload factor), face (face width), err (pitch error per metre), stroke,
-ratio, eta, j_motor, j_red, t_rated, t_peak, n_max (motor, rad/s), t2b, t2n, n1max (rad/s), backlash (rad),
-kt_red (N m/rad), twin (0/1), bias, rms_ratio, max_inertia_ratio, k_n (guide normal stiffness per block),
-blocks (per side), v_max (the cycle's top speed), thrust and mean_thrust (this side's share of the axis's
-largest and mean axial load: the steady feed force).
+Keys of ``p`` (SI): m_axis (moving mass of this side without drive parts and blocks), m_parts
+(motors, gearboxes, pinions riding on the carriage), m_blocks, mu (guide friction coefficient),
+f_seal (blocks' seal friction), normal (normal force on this side's blocks), vertical (0/1), d
+(pinion pitch diameter), perm (permissible feed force), k_o (overload factor), face (face width),
+err (pitch error per metre), stroke, ratio, eta, j_motor, j_red, t_rated, t_peak, n_max (motor,
+rad/s), t2b, t2n, n1max (rad/s), backlash (rad), kt_red (N m/rad), twin (0/1), bias, rms_ratio,
+max_inertia_ratio, k_n (guide normal stiffness per block), blocks (per side), v_max (the cycle's top
+speed), thrust and mean_thrust (this side's share of the axis's largest and mean axial load: the
+steady feed force).
 """
 
 from __future__ import annotations
@@ -48,9 +51,8 @@ def rack_response(p, cycle) -> dict:
     weight = m * g * p["vertical"]
     r = p["d"] / 2.0
     # the cycle (rapids with the duty cycle's forces), and the steady thrust at feed: the largest
-    # axial load
-    # against the peak, the mean axial load against the RMS (as model.drive rates a screw drive's
-    # motor)
+    # axial load against the peak, the mean axial load against the RMS (as model.drive rates a screw
+    # drive's motor)
     thrust = resist + p["thrust"] + weight
     mean_thrust = resist + p["mean_thrust"] + weight
     f_peak = mx.fmax(pr.peak_linear(cycle, m, resist, 1.0, weight), thrust)
@@ -132,11 +134,11 @@ def rack_response(p, cycle) -> dict:
 
 
 def guide_response(p, m, attraction=0.0) -> dict:
-    """The guide blocks of a drive side, evenly loaded (the vendors' centred-load case, THK A-82 case 1):
-    each block carries (weight on the guides + normal force + magnetic attraction) / blocks; L10 travel life
-    against the life the axis needs over its mean speed, static safety C0 / P against the axis's least.
-    Keys of ``p``: vertical, normal, blocks, c_block, c0_block, roller, rating_distance, fw, life_needed (travel
-    [m]), static_safety."""
+    """The guide blocks of a drive side, evenly loaded (the vendors' centred-load case, THK A-82
+    case 1): each block carries (weight on the guides + normal force + magnetic attraction) /
+    blocks; L10 travel life against the life the axis needs over its mean speed, static safety C0 /
+    P against the axis's least.  Keys of ``p``: vertical, normal, blocks, c_block, c0_block, roller,
+    rating_distance, fw, life_needed (travel [m]), static_safety."""
     from ..physics.checks import guide_life_distance
 
     load = (m * plm.G * (1.0 - p["vertical"]) + p["normal"] + attraction) / p["blocks"]

@@ -1,36 +1,43 @@
-r"""The servo a design allows: cascade position / velocity loop tuned by vendor rules against the model.
+r"""The servo a design allows: cascade position / velocity loop tuned by vendor rules against the
+model.
 
-Structure (semi-closed loop: position and velocity from the motor encoder, the common ball-screw set-up)::
+Structure (semi-closed loop: position and velocity from the motor encoder, the common ball-screw
+set-up)::
 
     x_ref -(+)- Kv -> v_cmd -(+)- PI: K_vp (1 + 1/(T_i s)) -> torque filter 1/(T_f s + 1) -> notch
              |-x_m            |-v_m                -> current loop 1/(T_c s + 1) -> T_m -> axis
 
-with ``x_m = r theta_m`` the motor angle through the lead (r = P_h / 2 pi) and the plant the open-loop
-:class:`axisopt.model.statespace.AxisStateSpace`.  The rule (``RULE``), from vendors' tuning guidance:
+with ``x_m = r theta_m`` the motor angle through the lead (r = P_h / 2 pi) and the plant the
+open-loop :class:`axisopt.model.statespace.AxisStateSpace`.  The rule (``RULE``), from vendors'
+tuning guidance:
 
-1. Position-loop gain from the lowest mechanical natural frequency: the machine "should be designed so that
-   the value of this natural frequency [Hz] will be more than or equal to the value of the position loop gain
-   [sec^-1]" (FANUC AC servo motor alpha-i series descriptions B-65262EN/03, sec. 2, "machine rigidity"; its
-   example: 20 s^-1 needs 20 Hz).  Kv [1/s] = f_n [Hz] with f_n = ``f_axial``, the axial mode with the motor
-   held (the table mode on the guides, ``f_table``, is normal to the feed and not in the loop).
-2. Velocity-loop gain equal to it in Hz: Yaskawa's gain reference values give the same ranges for the
-   position-loop gain Pn102 [1/s] and the speed-loop gain Pn100 [Hz] in each rigidity class (Sigma-II user's
-   manual sec. 6.4.4: ball screws direct 50-70 / 50-70, through reducers 30-50 / 30-50, belts 10-20 /
-   10-20).  Pn100 is the velocity-loop crossover when the inertia is set right (Pn103), so
-   K_vp = 2 pi f_v J [N*m*s/rad at the motor] with J the axis's total inertia at the motor (THK eq. 45).
-3. Integral time and torque filter from it (Yaskawa Sigma-7 / Sigma E-S manual, 8.8.1 manual tuning):
-   Pn101 [ms] = 4000 / (2 pi Pn100 [Hz]) (its example: 40.0 Hz -> 15.92 ms) and
-   Pn401 [ms] = 1000 / (2 pi Pn100 [Hz] 4) ("adjusted value for stable control").
-4. A notch (Q 0.7) on the torque reference at the second drive-train mode (rotor against screw across the
-   coupling), as drives set for a ball screw's torsion resonance; without it that lightly damped mode
-   (0.2 %, steel) goes unstable behind the filter and current-loop lags.
-5. The current loop is a first-order lag of ``CURRENT_LOOP_HZ`` (2 kHz, assumed: Yaskawa quotes a 3.1 kHz
-   speed frequency response for Sigma-7 drives, and a current loop is faster than its speed loop).
+1. Position-loop gain from the lowest mechanical natural frequency: the machine "should be designed
+   so that the value of this natural frequency [Hz] will be more than or equal to the value of the
+   position loop gain [sec^-1]" (FANUC AC servo motor alpha-i series descriptions B-65262EN/03, sec.
+   2, "machine rigidity"; its example: 20 s^-1 needs 20 Hz).  Kv [1/s] = f_n [Hz] with f_n =
+   ``f_axial``, the axial mode with the motor held (the table mode on the guides, ``f_table``, is
+   normal to the feed and not in the loop).
+2. Velocity-loop gain equal to it in Hz: Yaskawa's gain reference values give the same ranges for
+   the position-loop gain Pn102 [1/s] and the speed-loop gain Pn100 [Hz] in each rigidity class
+   (Sigma-II user's manual sec. 6.4.4: ball screws direct 50-70 / 50-70, through reducers 30-50 /
+   30-50, belts 10-20 / 10-20).  Pn100 is the velocity-loop crossover when the inertia is set right
+   (Pn103), so K_vp = 2 pi f_v J [N*m*s/rad at the motor] with J the axis's total inertia at the
+   motor (THK eq. 45).
+3. Integral time and torque filter from it (Yaskawa Sigma-7 / Sigma E-S manual, 8.8.1 manual
+   tuning): Pn101 [ms] = 4000 / (2 pi Pn100 [Hz]) (its example: 40.0 Hz -> 15.92 ms) and Pn401 [ms]
+   = 1000 / (2 pi Pn100 [Hz] 4) ("adjusted value for stable control").
+4. A notch (Q 0.7) on the torque reference at the second drive-train mode (rotor against screw
+   across the coupling), as drives set for a ball screw's torsion resonance; without it that lightly
+   damped mode (0.2 %, steel) goes unstable behind the filter and current-loop lags.
+5. The current loop is a first-order lag of ``CURRENT_LOOP_HZ`` (2 kHz, assumed: Yaskawa quotes a
+   3.1 kHz speed frequency response for Sigma-7 drives, and a current loop is faster than its speed
+   loop).
 
-Following error at constant speed v without feedforward: e = v / Kv (Heidenhain iTNC 530 technical manual,
-"interrelation of kv factor, feed rate and following error"); Kv in (m/min)/mm = Kv [1/s] * 60 / 1000.
-The rule is a vendor rule of thumb, not an optimum: :func:`servo_response` closes the loops on the model at
-each position and reports what the model then does (stability, damping, bandwidths).
+Following error at constant speed v without feedforward: e = v / Kv (Heidenhain iTNC 530 technical
+manual, "interrelation of kv factor, feed rate and following error"); Kv in (m/min)/mm = Kv [1/s] *
+60 / 1000.  The rule is a vendor rule of thumb, not an optimum: :func:`servo_response` closes the
+loops on the model at each position and reports what the model then does (stability, damping,
+bandwidths).
 """
 
 from __future__ import annotations
@@ -78,7 +85,8 @@ class ServoGains:
     ti, tf, tc       : velocity integral time, torque-filter and current-loop time constants [s]
     inertia          : total inertia at the motor the gain is set for [kg*m^2]
     f_n              : the natural frequency the rule started from [Hz]
-    notch_hz         : torque-reference notch filter centre [Hz] (at the rotor-screw torsion mode; 0: none)
+    notch_hz         : torque-reference notch filter centre [Hz] (at the rotor-screw torsion
+                       mode; 0: none)
     """
 
     kv: float
@@ -100,9 +108,10 @@ class ServoGains:
 def tune(
     ev: Evaluation, current_loop_hz: float = CURRENT_LOOP_HZ, notch: bool = True
 ) -> ServoGains:
-    """One set of gains for the axis (a drive has one): the rule at the lowest ``f_axial`` over the stroke;
-    ``notch``: a torque-reference notch at the second drive-train mode (rotor against screw across the
-    coupling), as drives set one for a ball screw's torsion resonance (Yaskawa Pn409-Pn40B)."""
+    """One set of gains for the axis (a drive has one): the rule at the lowest ``f_axial`` over the
+    stroke;
+    ``notch``: a torque-reference notch at the second drive-train mode (rotor against screw across
+    the coupling), as drives set one for a ball screw's torsion resonance (Yaskawa Pn409-Pn40B)."""
     f_n = float(np.min(ev["f_axial"]))
     kv = float(kv_rule(f_n))
     f_v = VELOCITY_HZ_PER_KV * kv
@@ -139,7 +148,8 @@ def _series(a, b):
 
 
 def controller(g: ServoGains):
-    """Velocity error at the motor [rad/s] -> motor torque [N*m]: PI, torque filter, notch, current loop."""
+    """Velocity error at the motor [rad/s] -> motor torque [N*m]: PI, torque filter, notch, current
+    loop."""
 
     def blk(A, B, C, D):
         return tuple(np.atleast_2d(np.asarray(v, dtype=float)) for v in (A, B, C, D))
@@ -158,11 +168,12 @@ def controller(g: ServoGains):
 
 
 def closed_loop(ss: AxisStateSpace, g: ServoGains, *, position_loop: bool = True):
-    """(A, B, C, D) of the axis with the cascade closed (inputs :data:`CL_INPUTS`: position command as table
-    travel [m] and process force [N]; outputs :data:`CL_OUTPUTS`: table and tool position [m], motor angle
-    through the lead [m], motor speed [rad/s at the motor]).  ``position_loop=False`` leaves the position loop
-    open and takes a velocity command [rad/s at the motor] as the first input (for the velocity-loop
-    bandwidth).  The open-loop model must have the motor free.  States: the plant's, then the controller's."""
+    """(A, B, C, D) of the axis with the cascade closed (inputs :data:`CL_INPUTS`: position command
+    as table travel [m] and process force [N]; outputs :data:`CL_OUTPUTS`: table and tool position
+    [m], motor angle through the lead [m], motor speed [rad/s at the motor]).
+    ``position_loop=False`` leaves the position loop open and takes a velocity command [rad/s at the
+    motor] as the first input (for the velocity-loop bandwidth).  The open-loop model must have the
+    motor free.  States: the plant's, then the controller's."""
     if ss.motor_held:
         raise ValueError("closed_loop needs the open-loop model with the motor free")
     r = ss.lead / (2.0 * math.pi)
@@ -196,8 +207,8 @@ def closed_loop(ss: AxisStateSpace, g: ServoGains, *, position_loop: bool = True
 
 
 def _response(A, B, C, D, freqs, inp: int, out: int) -> np.ndarray:
-    """Complex y_out / u_inp at ``freqs`` [Hz]: modal form C V (s - lambda)^-1 V^-1 B where A diagonalizes
-    well, else one batched solve over the frequencies."""
+    """Complex y_out / u_inp at ``freqs`` [Hz]: modal form C V (s - lambda)^-1 V^-1 B where A
+    diagonalizes well, else one batched solve over the frequencies."""
     s = 2j * math.pi * np.asarray(freqs, dtype=float)
     lam, V = np.linalg.eig(A)
     if np.linalg.cond(V) < 1e8:
@@ -210,8 +221,8 @@ def _response(A, B, C, D, freqs, inp: int, out: int) -> np.ndarray:
 
 
 def frequency_response(ev: Evaluation, freqs, gains: ServoGains | None = None) -> list:
-    """Closed-loop compliance at the tool x_tool / F [m/N] (complex) at ``freqs`` [Hz], at stroke start,
-    middle and end, with the tuned servo holding the position command."""
+    """Closed-loop compliance at the tool x_tool / F [m/N] (complex) at ``freqs`` [Hz], at stroke
+    start, middle and end, with the tuned servo holding the position command."""
     g = gains or tune(ev)
     out = []
     for ss in stroke_state_spaces(ev):
@@ -221,7 +232,8 @@ def frequency_response(ev: Evaluation, freqs, gains: ServoGains | None = None) -
 
 
 def _bandwidth(A, B, C, D, inp: int, out: int, f_max: float) -> float:
-    """-3 dB frequency of a unity-DC closed loop [Hz] (first crossing of |H| = 1/sqrt 2 on a fine grid)."""
+    """-3 dB frequency of a unity-DC closed loop [Hz] (first crossing of |H| = 1/sqrt 2 on a fine
+    grid)."""
     f = np.logspace(-1, math.log10(f_max), 400)
     h = np.abs(_response(A, B, C, D, f, inp, out))
     below = np.nonzero(h < 1.0 / math.sqrt(2.0))[0]

@@ -1,15 +1,18 @@
 r"""The lumped axis as a linear state-space model (numpy), for control design.
 
-The drive train of seed Fig. 1 with the evaluation's own springs, masses and dampers at one nut position
-(the same values as :mod:`axisopt.model.frf` and the modes of :mod:`axisopt.model.modes`):
+The drive train of seed Fig. 1 with the evaluation's own springs, masses and dampers at one nut
+position (the same values as :mod:`axisopt.model.frf` and the modes of :mod:`axisopt.model.modes`):
 
-* DOFs ``q = [theta_m, theta_s, x]``: motor rotor with its half of the coupling (``J_m``, the rotor and the
-  reduction reflected to the screw side, :func:`axisopt.model.modes.drive_inertias`), screw with the other
-  half (``J_s``), table (``m_eff``, the table with the Rayleigh share of the screw mass);
-* springs: coupling ``k_c`` between ``theta_m`` and ``theta_s``; the axial chain without the coupling
-  ``k_drive`` (bearings, screw tension and torsion, nut, bracket) on ``x - r theta_s``, r = P_h / (2 pi);
-* dampers: coupling 2 zeta sqrt(k_c J_s) (steel, seed Table 5), the nut and bearing dampers across the chain
-  (seed Table 6, :func:`axisopt.model.modes.dampers`), the guide blocks from the table to the frame (Table 7).
+* DOFs ``q = [theta_m, theta_s, x]``: motor rotor with its half of the coupling (``J_m``, the rotor
+  and the reduction reflected to the screw side, :func:`axisopt.model.modes.drive_inertias`), screw
+  with the other half (``J_s``), table (``m_eff``, the table with the Rayleigh share of the screw
+  mass);
+* springs: coupling ``k_c`` between ``theta_m`` and ``theta_s``; the axial chain without the
+  coupling ``k_drive`` (bearings, screw tension and torsion, nut, bracket) on ``x - r theta_s``, r =
+  P_h / (2 pi);
+* dampers: coupling 2 zeta sqrt(k_c J_s) (steel, seed Table 5), the nut and bearing dampers across
+  the chain (seed Table 6, :func:`axisopt.model.modes.dampers`), the guide blocks from the table to
+  the frame (Table 7).
 
 .. math:: M \ddot q + C_d \dot q + K q = B_q u,\qquad
           K = \begin{bmatrix} k_c & -k_c & 0\\ -k_c & k_c + k r^2 & -k r\\ 0 & -k r & k\end{bmatrix}
@@ -18,16 +21,17 @@ State ``z = [q, dq/dt]``; ``dz/dt = A z + B u``, ``y = C z + D u`` with
 
 * inputs ``u = [motor torque T_m at the motor shaft [N*m], process force F on the table, +x [N]]``
   (the torque acts on ``theta_m`` through the reduction: ``i T_m``, i = motor turns per screw turn);
-* outputs ``y = [motor angle at the motor shaft i theta_m [rad], table position x [m], position at the tool
-  [m]]``.  The table is one rigid body here, so the tool point (on the workpiece the table carries) moves as
-  ``x``; the row is kept apart for a carriage model with its own compliance.
+* outputs ``y = [motor angle at the motor shaft i theta_m [rad], table position x [m], position at
+  the tool [m]]``.  The table is one rigid body here, so the tool point (on the workpiece the table
+  carries) moves as ``x``; the row is kept apart for a carriage model with its own compliance.
 
-With ``motor_held`` the rotor is fixed (``theta_m = 0``: the motor held by a stiff position loop, the
-headline first frequency's model); the torque input then acts on nothing and the motor angle output is 0.
-Open loop (motor free) there is one rigid-body mode (two eigenvalues at 0) and two elastic modes, the
-drive-train frequencies ``f_axial_torsional`` and ``f_axial_torsional_2``; motor held, the two modes of
-:func:`axisopt.physics.dynamics.axial_torsional_frequencies` (the first is ``f_axial`` less the screw's rotary
-inertia on the coupling: 0.01 % lower on problems/vmc_x_design.yaml).
+With ``motor_held`` the rotor is fixed (``theta_m = 0``: the motor held by a stiff position loop,
+the headline first frequency's model); the torque input then acts on nothing and the motor angle
+output is 0.  Open loop (motor free) there is one rigid-body mode (two eigenvalues at 0) and two
+elastic modes, the drive-train frequencies ``f_axial_torsional`` and ``f_axial_torsional_2``; motor
+held, the two modes of :func:`axisopt.physics.dynamics.axial_torsional_frequencies` (the first is
+``f_axial`` less the screw's rotary inertia on the coupling: 0.01 % lower on
+problems/vmc_x_design.yaml).
 """
 
 from __future__ import annotations
@@ -55,11 +59,12 @@ class AxisStateSpace:
     """A linear state-space model of the axis at one nut position (SI).
 
     A, B, C, D  : dz/dt = A z + B u, y = C z + D u  (:data:`STATES`, :data:`INPUTS`, :data:`OUTPUTS`)
-    mass, stiffness, damping : the second-order matrices M, K, C_d over the free DOFs [kg, kg*m^2; N/m, ...]
+    mass, stiffness, damping : the second-order matrices M, K, C_d over the free DOFs [kg, kg*m^2;
+        N/m, ...]
     position_mm : nut position along the stroke [mm];  x : fixed bearing to nut [m]
     motor_held  : the rotor is fixed (its rows stay, as zeros)
     lead, ratio : screw lead [m]; motor turns per screw turn (reduction) [-]
-    """
+    """  # noqa: E501
 
     A: np.ndarray
     B: np.ndarray
@@ -79,7 +84,8 @@ class AxisStateSpace:
     free: tuple = field(default=(0, 1, 2))  # indices of the DOFs that move
 
     def natural_frequencies(self) -> np.ndarray:
-        """Undamped natural frequencies of the elastic modes [Hz], ascending (rigid-body modes left out)."""
+        """Undamped natural frequencies of the elastic modes [Hz], ascending (rigid-body modes left
+        out)."""
         lam = np.linalg.eigvals(np.linalg.solve(self.mass, self.stiffness)).real
         lam = np.sort(lam)
         scale = max(float(np.max(np.abs(lam))), 1.0)
@@ -98,7 +104,8 @@ class AxisStateSpace:
     def frequency_response(
         self, freqs, inp: str = "process_force", out: str = "table_position"
     ) -> np.ndarray:
-        """Complex frequency response y/u at ``freqs`` [Hz] from one input to one output (SI ratio)."""
+        """Complex frequency response y/u at ``freqs`` [Hz] from one input to one output (SI
+        ratio)."""
         keep = self._kept()
         a = self.A[np.ix_(keep, keep)]
         b = self.B[keep, self.inputs.index(inp)]
@@ -109,7 +116,8 @@ class AxisStateSpace:
         return np.array([c @ np.linalg.solve(si * eye - a, b) + d for si in s])
 
     def to_control(self):
-        """The model as a python-control ``StateSpace`` (the optional extra ``control``), with signal names."""
+        """The model as a python-control ``StateSpace`` (the optional extra ``control``), with
+        signal names."""
         import control
 
         keep = self._kept()
@@ -126,7 +134,8 @@ class AxisStateSpace:
 
 
 def second_order(m: dict):
-    """(M, K, C_d) over [theta_m, theta_s, x] from the drive-train values of :func:`axisopt.model.frf.chain_at`."""
+    """(M, K, C_d) over [theta_m, theta_s, x] from the drive-train values of
+    :func:`axisopt.model.frf.chain_at`."""
     r = m["lead"] / (2.0 * math.pi)
     kc, k = m["coupling_stiffness"], m["axial_stiffness"]
     cc, ca = m["coupling_damping"], m["chain_damping"]
@@ -196,5 +205,6 @@ def state_space(
 
 
 def stroke_state_spaces(ev: Evaluation, *, motor_held: bool = False) -> list:
-    """:func:`state_space` at stroke start, the point nearest mid-stroke and stroke end (as ``--frf``)."""
+    """:func:`state_space` at stroke start, the point nearest mid-stroke and stroke end (as
+    ``--frf``)."""
     return [state_space(ev, i, motor_held=motor_held) for i in frf_positions(ev)]

@@ -1,7 +1,9 @@
-"""Pure physics formulas of a feed axis, all SI, evaluable on floats, numpy arrays and CasADi symbols.
+"""Pure physics formulas of a feed axis, all SI, evaluable on floats, numpy arrays and CasADi
+symbols.
 
-Modules: screw, nut, bearings, guides, dynamics, damping, friction, thermal, checks, carriage, gantry.  See each
-function's docstring for the equation, units and source (seed paper eq. numbers; vendor catalogs).
+Modules: screw, nut, bearings, guides, dynamics, damping, friction, thermal, checks, carriage,
+gantry.  See each function's docstring for the equation, units and source (seed paper eq. numbers;
+vendor catalogs).
 """
 
 from axisopt.physics import (

@@ -29,18 +29,16 @@ CRITICAL_SPEED_LAMBDA1 = MappingProxyType(
         "fixed-fixed": 4.730,
     }
 )
-# THK catalog A15-30 eq. 5: eta_1 by mounting (eta_2 = 1.3 / 10 / 20 incl. 0.5);
-# supported-supported eta_1 = 1 (eta_2 = 5).
+# THK catalog A15-30 eq. 5: eta_1 by mounting (eta_2 = 1.3 / 10 / 20 incl. 0.5); supported-supported
+# eta_1 = 1 (eta_2 = 5).
 BUCKLING_ETA1 = MappingProxyType(
     {"fixed-free": 0.25, "supported-supported": 1.0, "fixed-supported": 2.0, "fixed-fixed": 4.0}
 )
 
 
 # THK General Catalog A-704 Table 19 "Load Factor (fW)" (the same as Table 3, A-12, for LM guides):
-# rows by
-# vibration/impact and speed, (top of the speed range [m/s], fW range).  HIWIN H-BS p. 25 gives fp
-# 1.1-1.2
-# without impact, 1.3-1.8 in normal operation, 2-3 with high impact and vibration.
+# rows by vibration/impact and speed, (top of the speed range [m/s], fW range).  HIWIN H-BS p. 25
+# gives fp 1.1-1.2 without impact, 1.3-1.8 in normal operation, 2-3 with high impact and vibration.
 THK_LOAD_FACTOR_TABLE = (
     (0.25, (1.0, 1.2)),  # faint vibration, very low speed, V <= 0.25 m/s
     (1.0, (1.2, 1.5)),  # weak, slow, 0.25 < V <= 1 m/s
@@ -50,14 +48,16 @@ THK_LOAD_FACTOR_TABLE = (
 
 
 def load_factor_default(speed):
-    r"""Load factor f_W of the life calculations for an axis whose design gives none: the upper end of the
-    row of THK's Table 19 that the axis's top speed falls in.
+    r"""Load factor f_W of the life calculations for an axis whose design gives none: the upper end
+    of the row of THK's Table 19 that the axis's top speed falls in.
 
     .. math:: f_W = 1.2\ (V \le 0.25),\ 1.5\ (\le 1),\ 2.0\ (\le 2),\ 3.5\ (> 2\ \mathrm{m/s})
 
-    speed : V, the top table speed [m/s] (a float: the row is a choice, not a formula).  Returns f_W [-].
-    Source: THK General Catalog A-704 Table 19; THK's worked examples take the upper end of the row: f_W =
-    1.5 at V_max = 1 m/s (A-729, high-speed transfer) and at 0.3 m/s (A-742, vertical conveyance).
+    speed : V, the top table speed [m/s] (a float: the row is a choice, not a formula).  Returns f_W
+        [-].
+    Source: THK General Catalog A-704 Table 19; THK's worked examples take the upper end of the row:
+    f_W = 1.5 at V_max = 1 m/s (A-729, high-speed transfer) and at 0.3 m/s (A-742, vertical
+    conveyance).
     """
     for top, (_, upper) in THK_LOAD_FACTOR_TABLE:
         if speed <= top:
@@ -74,7 +74,8 @@ def critical_speed(
 
     with I = pi d_r^4/64, A = pi d_r^2/4.
 
-    root_diameter : d_r [m];  span : l_b, between mounting surfaces [m];  mounting : one of MOUNTINGS
+    root_diameter : d_r [m];  span : l_b, between mounting surfaces [m];  mounting : one of
+        MOUNTINGS
     safety_factor : s = 0.8 (THK, Schneeberger, HSK: 80 % of critical)
     youngs_modulus [Pa];  density [kg/m^3]
     Returns omega [rad/s].  Source: THK catalog A15-32 eq. 7
@@ -96,8 +97,8 @@ def buckling_load(root_diameter, length, mounting, safety_factor=0.5, youngs_mod
 
     root_diameter : d_r [m];  length : l_a, load point to mounting [m];  mounting : one of MOUNTINGS
     safety_factor : s = 0.5 (THK);  youngs_modulus [Pa].  Returns P_1 [N].
-    Source: THK catalog A15-30 eq. 5 (P_1 = eta_2 d_r^4 / l_a^2 * 1e4 [N], mm); MiSUMi uses eta_2 = 10
-    for fixed-supported.  Check also the yield limit P_2 = 116 d_r^2 separately.
+    Source: THK catalog A15-30 eq. 5 (P_1 = eta_2 d_r^4 / l_a^2 * 1e4 [N], mm); MiSUMi uses eta_2 =
+    10 for fixed-supported.  Check also the yield limit P_2 = 116 d_r^2 separately.
     """
     eta = choose(BUCKLING_ETA1, mounting, "mounting")
     return safety_factor * eta * mx.pi**3 * youngs_modulus * root_diameter**4 / (64.0 * length**2)
@@ -136,13 +137,13 @@ def guide_life_distance(
     dynamic_load_rating : C per block [N], on the rating basis L_C its vendor defines it for
     load : P, equivalent load per block [N];  load_factor : f_w [-]
     roller : 0 for ball blocks, 1 for roller blocks (a number, so it may be symbolic or an array)
-    rating_distance : L_C, the travel C is defined for [m]: 50 km for ball blocks of every vendor in the
-        catalogs; for roller blocks 100 km at THK and HIWIN, 50 km at IKO.  None: THK's convention
-        (50 km ball, 100 km roller).
-    Returns L [m].  Sources: THK LM Guide selection ("calculating the nominal life": L = (C/P_C)^3 x 50 km
-    for balls, (C/P_C)^(10/3) x 100 km for rollers); HIWIN G99TE20 sec. 2-1 (C for 50 km of operation for a
-    ball type guideway, 100 km for a roller type; f_w divides C); IKO CAT-1578E p. I-20, life calculation
-    example L = 50 (C/P)^(10/3) km for the roller type MXG45.
+    rating_distance : L_C, the travel C is defined for [m]: 50 km for ball blocks of every vendor in
+        the catalogs; for roller blocks 100 km at THK and HIWIN, 50 km at IKO.  None: THK's
+        convention (50 km ball, 100 km roller).
+    Returns L [m].  Sources: THK LM Guide selection ("calculating the nominal life": L = (C/P_C)^3 x
+    50 km for balls, (C/P_C)^(10/3) x 100 km for rollers); HIWIN G99TE20 sec. 2-1 (C for 50 km of
+    operation for a ball type guideway, 100 km for a roller type; f_w divides C); IKO CAT-1578E p.
+    I-20, life calculation example L = 50 (C/P)^(10/3) km for the roller type MXG45.
     """
     exponent = 3.0 + roller / 3.0
     basis = 50e3 * (1.0 + roller) if rating_distance is None else rating_distance

@@ -25,8 +25,8 @@ __all__ = [
     "chain_damper_share",
 ]
 
-# Seed Table 5 (after [16]): damping ratio ranges [-], as printed
-# ("0.02-0.0" and "Red" are garbled in the source).
+# Seed Table 5 (after [16]): damping ratio ranges [-], as printed ("0.02-0.0" and "Red" are garbled
+# in the source).
 DAMPING_RATIO_TABLE5 = MappingProxyType(
     {
         "steel": (0.001, 0.002),
@@ -105,7 +105,8 @@ LOG_DECREMENT_METHODS = MappingProxyType(
 
 
 def damping_ratio_from_log_decrement(log_decrement, method="eq39"):
-    """Damping ratio from the logarithmic decrement; method "eq39" (seed) or "exact".  Returns [-]."""
+    """Damping ratio from the logarithmic decrement; method "eq39" (seed) or "exact".  Returns
+    [-]."""
     return choose(LOG_DECREMENT_METHODS, method, "method")(log_decrement)
 
 
@@ -126,14 +127,16 @@ def damping_ratio_from_decay_rate(decay_rate, angular_frequency):
 
 
 def modal_damping_ratio(mass, stiffness, *dampers, structural_ratio=0.0):
-    r"""Damping ratio of a lumped mode from discrete component dampers acting on the modal coordinate.
+    r"""Damping ratio of a lumped mode from discrete component dampers acting on the modal
+    coordinate.
 
     .. math:: \zeta = \zeta_s + \sum_i d_i / (2\sqrt{m k})              (seed eq. 39 summed; Tables 5-7)
 
     mass : modal mass m [kg];  stiffness : modal stiffness k [N/m]
-    dampers : d_i [N*s/m], e.g. guide blocks (Table 7) and bearings (Table 6), already referred to the mode
+    dampers : d_i [N*s/m], e.g. guide blocks (Table 7) and bearings (Table 6), already referred to
+        the mode
     structural_ratio : zeta_s, material damping (Table 5) [-].  Returns zeta [-].
-    """
+    """  # noqa: E501
     total = 0.0
     for d in dampers:
         total = total + d
@@ -145,8 +148,9 @@ def rolling_joint_damping(bore):
 
     Table 6 lists spindle bearings by bore (55, 90, 120, 160 mm).  The midpoint of the row for the
     nearest listed bore at or above ``bore`` is used; bores below 55 mm take the 55 mm row
-    (2000-9000 N*s/m, midpoint 5500), the smallest listed, and bores above 160 mm the 160 mm row.  Feed-axis
-    support bearings (15-60 mm) and nuts therefore get 5500 N*s/m: an order-of-magnitude figure.
+    (2000-9000 N*s/m, midpoint 5500), the smallest listed, and bores above 160 mm the 160 mm row.
+    Feed-axis support bearings (15-60 mm) and nuts therefore get 5500 N*s/m: an order-of-magnitude
+    figure.
 
     bore : d [m] (float, array or symbol).  Returns d [N*s/m].
     """
@@ -165,8 +169,9 @@ def chain_damper_share(damping, chain_stiffness, component_stiffness):
 
     .. math:: d_{eff} = d\,(k/k_i)^2
 
-    The component deforms by (k/k_i) of the chain's end displacement, so it dissipates (k/k_i)^2 of what the
-    same damper would at the end (strain-energy share).  damping : d [N*s/m];  chain_stiffness : k [N/m]
+    The component deforms by (k/k_i) of the chain's end displacement, so it dissipates (k/k_i)^2 of
+    what the same damper would at the end (strain-energy share).  damping : d
+    [N*s/m];  chain_stiffness : k [N/m]
     component_stiffness : k_i [N/m].  Returns d_eff [N*s/m].
     """
     return damping * (chain_stiffness / component_stiffness) ** 2

@@ -1,4 +1,5 @@
-"""Lumped axis dynamics: axial mode, table mode on guides, axial-torsional 2-DOF, dynamic compliance."""
+"""Lumped axis dynamics: axial mode, table mode on guides, axial-torsional 2-DOF, dynamic
+compliance."""
 
 from __future__ import annotations
 
@@ -31,12 +32,13 @@ def effective_axial_mass(moving_mass, screw_mass, x, span, mounting):
     .. math:: m_{eff} = m + m_s / 3 \quad\text{(fixed-fixed)}
 
     The strained screw between the fixed bearing and the nut has a linear displacement profile, so a
-    third of its mass acts at the nut; with an axially free far end, the screw beyond the nut carries no
-    force and moves with the nut as a rigid body.  Fixed-fixed: both segments are strained, a third of
-    each.  moving_mass : m [kg];  screw_mass : m_s [kg];  x : nut distance from the fixed bearing [m]
+    third of its mass acts at the nut; with an axially free far end, the screw beyond the nut
+    carries no force and moves with the nut as a rigid body.  Fixed-fixed: both segments are
+    strained, a third of each.  moving_mass : m [kg];  screw_mass : m_s [kg];  x : nut distance from
+    the fixed bearing [m]
     span : L [m];  mounting : 'fixed-free' | 'fixed-supported' | 'fixed-fixed'.  Returns m_eff [kg].
     Source: Rayleigh's method on the lumped axial model (seed eq. 11 with the screw's own mass).
-    """
+    """  # noqa: E501
     choose(_MASS_MOUNTINGS, mounting, "mounting")
     if mounting == "fixed-fixed":
         return moving_mass + screw_mass / 3.0 + 0.0 * x / span
@@ -56,8 +58,8 @@ def axial_natural_frequency(
     stiffness   : k, axial stiffness at the nut position [N/m]
     moving_mass : m, table + workpiece + nut [kg]
     screw_mass  : m_s, whole screw [kg];  x : nut distance from fixed bearing [m];  span : L [m]
-    With x and span, m_eff is :func:`effective_axial_mass` for the mounting; without them m + m_s / 3.
-    Returns f_1 [Hz].
+    With x and span, m_eff is :func:`effective_axial_mass` for the mounting; without them m + m_s
+    / 3.  Returns f_1 [Hz].
     """
     if x is None or span is None:
         m_eff = moving_mass + screw_mass / 3.0
@@ -71,7 +73,8 @@ def axial_angular_frequency_eq11(root_diameter, length, mass, youngs_modulus=E_S
 
     .. math:: \omega_x = \sqrt{E A / (m\, l_x)},\ A = \pi d^2 / 4               (seed eq. 11)
 
-    root_diameter : d [m];  length : l_x in [l_0, l_0 + h] [m];  mass : m [kg];  youngs_modulus : E [Pa]
+    root_diameter : d [m];  length : l_x in [l_0, l_0 + h] [m];  mass : m [kg];  youngs_modulus : E
+        [Pa]
     Returns omega_x [rad/s].  Screw-only stiffness (nut, bearings rigid).
     """
     return mx.sqrt(youngs_modulus * mx.pi * root_diameter**2 / 4.0 / (mass * length))
@@ -91,8 +94,9 @@ def table_mode_frequency(normal_stiffness_per_block, n_blocks, mass):
 def axial_torsional_eigenvalues(rotary_inertia, torsional_stiffness, axial_stiffness, mass, lead):
     r"""Squared angular frequencies of the coupled axial-torsional 2-DOF drive model.
 
-    DOFs theta (screw + rotor inertia J, held by torsional stiffness k_t at the motor) and x (table m),
-    coupled through the lead, r = P_h / (2 pi), by the axial stiffness k_a (screw + nut + bearing):
+    DOFs theta (screw + rotor inertia J, held by torsional stiffness k_t at the motor) and x (table
+    m), coupled through the lead, r = P_h / (2 pi), by the axial stiffness k_a (screw + nut +
+    bearing):
 
     .. math:: M = \mathrm{diag}(J, m),
     .. math:: K = \begin{bmatrix} k_t + k_a r^2 & -k_a r \\ -k_a r & k_a\end{bmatrix}
@@ -101,7 +105,7 @@ def axial_torsional_eigenvalues(rotary_inertia, torsional_stiffness, axial_stiff
     rotary_inertia : J [kg*m^2];  torsional_stiffness : k_t [N*m/rad];  axial_stiffness : k_a [N/m]
     mass : m [kg];  lead : P_h [m].  Returns (omega_1^2, omega_2^2) [rad^2/s^2], omega_1 <= omega_2.
     Source: standard feed-drive lumped model (seed Fig. 1-2).
-    """
+    """  # noqa: E501
     r = lead / (2.0 * mx.pi)
     b = rotary_inertia * axial_stiffness + mass * (torsional_stiffness + axial_stiffness * r**2)
     disc = mx.sqrt(b**2 - 4.0 * rotary_inertia * mass * torsional_stiffness * axial_stiffness)
@@ -127,7 +131,8 @@ def dynamic_compliance(
     torsional_damping=0.0,
     lead=None,
 ):
-    r"""Table dynamic compliance X/F(j omega) of the lumped model (inverse dynamic stiffness, seed eq. 41).
+    r"""Table dynamic compliance X/F(j omega) of the lumped model (inverse dynamic stiffness, seed
+    eq. 41).
 
     Without rotary data (SDOF):  X/F = 1 / (k_a - m omega^2 + j omega c_a).
     With rotary data (2-DOF of axial_torsional_eigenvalues, viscous c_a, c_t):
@@ -136,10 +141,12 @@ def dynamic_compliance(
                          {(k_t + k_a r^2 - J\omega^2 + j\omega(c_t + c_a r^2))(k_a - m\omega^2 + j\omega c_a)
                           - r^2 (k_a + j\omega c_a)^2}
 
-    frequency : f [Hz] (array);  mass : m [kg];  axial_stiffness : k_a [N/m];  axial_damping : c_a [N*s/m]
-    rotary_inertia : J [kg*m^2];  torsional_stiffness : k_t [N*m/rad];  torsional_damping : c_t [N*m*s/rad]
+    frequency : f [Hz] (array);  mass : m [kg];  axial_stiffness : k_a [N/m];  axial_damping : c_a
+        [N*s/m]
+    rotary_inertia : J [kg*m^2];  torsional_stiffness : k_t [N*m/rad];  torsional_damping : c_t
+        [N*m*s/rad]
     lead : P_h [m].  Returns complex ndarray [m/N] (numpy only, not symbolic).
-    """
+    """  # noqa: E501
     w = 2.0 * np.pi * np.asarray(frequency, dtype=float)
     jw = 1j * w
     z_x = axial_stiffness - mass * w**2 + jw * axial_damping
@@ -161,13 +168,14 @@ def dynamic_compliance(
 def drive_train_eigenvalues(
     motor_inertia, screw_inertia, coupling_stiffness, axial_stiffness, mass, lead
 ):
-    r"""Squared angular frequencies of the two elastic modes of the motor-coupling-screw-table chain.
+    r"""Squared angular frequencies of the two elastic modes of the motor-coupling-screw-table
+    chain.
 
-    Three DOFs (seed Fig. 1): motor rotor theta_m (J_m, with its half of the coupling), screw theta_s (J_s,
-    with the other half), table x (m).  The coupling k_c joins theta_m and theta_s; the axial chain k
-    (bearings, screw tension and torsion, nut, bracket) acts on x - r theta_s, r = P_h / (2 pi).  The motor
-    is free at these frequencies (its position loop is far slower), so one mode is the rigid-body motion
-    at 0 Hz.  The other two solve
+    Three DOFs (seed Fig. 1): motor rotor theta_m (J_m, with its half of the coupling), screw
+    theta_s (J_s, with the other half), table x (m).  The coupling k_c joins theta_m and theta_s;
+    the axial chain k (bearings, screw tension and torsion, nut, bracket) acts on x - r theta_s, r =
+    P_h / (2 pi).  The motor is free at these frequencies (its position loop is far slower), so one
+    mode is the rigid-body motion at 0 Hz.  The other two solve
 
     .. math:: J_m J_s m\,\lambda^2 - Q\lambda + k_c k (J_m + J_s + m r^2) = 0,
     .. math:: Q = k_c J_s m + J_m m (k_c + k r^2) + J_m J_s k
@@ -211,13 +219,15 @@ def drive_train_compliance(
     coupling_damping=0.0,
     motor_held=False,
 ):
-    r"""Table compliance X/F(j omega) of the motor-coupling-screw-table chain (inverse of seed eq. 41).
+    r"""Table compliance X/F(j omega) of the motor-coupling-screw-table chain (inverse of seed eq.
+    41).
 
-    DOFs and springs as :func:`drive_train_eigenvalues`; viscous dampers: ``table_damping`` c_g from the
-    table to the frame (guide blocks), ``chain_damping`` c_a across the axial chain (nut, bearings, as
-    referred to x - r theta_s), ``coupling_damping`` c_c across the coupling.  With the motor free, the
-    dynamic stiffness F/X is a ratio of polynomials in s, the form of seed eq. 41 (here degree 6, zero at
-    s = 0, over degree 4); ``motor_held`` fixes theta_m (the static compliance is then 1/k + r^2/k_c).
+    DOFs and springs as :func:`drive_train_eigenvalues`; viscous dampers: ``table_damping`` c_g from
+    the table to the frame (guide blocks), ``chain_damping`` c_a across the axial chain (nut,
+    bearings, as referred to x - r theta_s), ``coupling_damping`` c_c across the coupling.  With the
+    motor free, the dynamic stiffness F/X is a ratio of polynomials in s, the form of seed eq. 41
+    (here degree 6, zero at s = 0, over degree 4); ``motor_held`` fixes theta_m (the static
+    compliance is then 1/k + r^2/k_c).
 
     frequency : f [Hz] (array).  Returns complex ndarray [m/N] (numpy only, not symbolic).
     """

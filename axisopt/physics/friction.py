@@ -1,4 +1,5 @@
-"""Drive torque losses: screw efficiency, torque from axial force, total drag torque at the motor."""
+"""Drive torque losses: screw efficiency, torque from axial force, total drag torque at the
+motor."""
 
 from __future__ import annotations
 
@@ -40,7 +41,8 @@ def motor_drag_torque(
     guide_force    : F_guide, sum of guide block friction (guides.guide_friction_force) [N]
     lead : P_h [m];  efficiency : eta [-];  seal_torque : T_seal [N*m].  Returns T [N*m].
     Source: THK General Catalog, ball screw torque calculation (A-743..A-746): the drive torque at
-    constant speed is the preload drag, the bearings' and seals' torques and the guide friction through the lead.
+    constant speed is the preload drag, the bearings' and seals' torques and the guide friction
+    through the lead.
     """
     return (
         preload_torque

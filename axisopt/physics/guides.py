@@ -1,4 +1,5 @@
-"""Linear guides: normal/tangential stiffness (seed 3.4, Table 1, eq. 31-35) and block friction (Table 9)."""
+"""Linear guides: normal/tangential stiffness (seed 3.4, Table 1, eq. 31-35) and block friction
+(Table 9)."""
 
 from __future__ import annotations
 
@@ -33,21 +34,24 @@ def guide_ball_stiffness(preload_per_ball, deflection_constant):
     .. math:: \delta = c_h P^{2/3} \Rightarrow k_b = dP/d\delta = \tfrac32 P_0^{1/3} / c_h     (seed eq. 12)
 
     preload_per_ball    : P_0 [N]
-    deflection_constant : c_h [m/N^(2/3)], e.g. nut.hertz_point_deflection(1.0, ...) summed over both contacts
+    deflection_constant : c_h [m/N^(2/3)], e.g. nut.hertz_point_deflection(1.0, ...) summed over
+        both contacts
     Returns k_b [N/m].
-    """
+    """  # noqa: E501
     return 1.5 * mx.cbrt(preload_per_ball) / deflection_constant
 
 
 def guide_normal_stiffness_hertz(preload_per_ball, deflection_constant, n_balls, contact_angle):
-    r"""Normal stiffness of a preloaded guide block from the linearised Hertz row model (seed eq. 31-34).
+    r"""Normal stiffness of a preloaded guide block from the linearised Hertz row model (seed eq.
+    31-34).
 
-    A normal displacement delta_n changes each ball approach by delta_n sin(beta) (eq. 33): loaded rows
-    compress, opposing rows relax, each ball contributes k_b sin^2(beta):
+    A normal displacement delta_n changes each ball approach by delta_n sin(beta) (eq. 33): loaded
+    rows compress, opposing rows relax, each ball contributes k_b sin^2(beta):
 
     .. math:: K_n = z\, k_b \sin^2\beta
 
-    preload_per_ball : P_0 [N] (eq. 32: F_0 = sqrt(2) z P_0 sin beta);  deflection_constant : c_h [m/N^(2/3)]
+    preload_per_ball : P_0 [N] (eq. 32: F_0 = sqrt(2) z P_0 sin beta);  deflection_constant : c_h
+        [m/N^(2/3)]
     n_balls : z, loaded balls of all rows [-];  contact_angle : beta [rad].  Returns K_n [N/m].
     Valid below lift-off of the relaxing rows (external load < ~2.8 x preload).
     """
@@ -65,8 +69,9 @@ def guide_tangential_stiffness_hertz(preload_per_ball, deflection_constant, n_ba
 
     .. math:: K_t = z\, k_b \cos^2\beta
 
-    Arguments as guide_normal_stiffness_hertz.  Returns K_t [N/m].  K_t/K_n = cot^2(beta); the empirical 0.71
-    of Table 1 corresponds to beta = 50 deg in this idealised model (real blocks differ by row layout).
+    Arguments as guide_normal_stiffness_hertz.  Returns K_t [N/m].  K_t/K_n = cot^2(beta); the
+    empirical 0.71 of Table 1 corresponds to beta = 50 deg in this idealised model (real blocks
+    differ by row layout).
     """
     return (
         n_balls
@@ -87,8 +92,9 @@ def guide_friction_force(
     friction_viscous     : c_v [N*s/m]
     normal_load          : N, block load in addition to preload [N]
     speed                : v [m/s]
-    Returns F [N] (magnitude; the force opposes motion).  Source: linear-in-load reading of seed Table 9
-    (after [16]); the table's growth above 20 kN is steeper than linear.  Valid 0.08-0.7 m/s (Table 9 range).
+    Returns F [N] (magnitude; the force opposes motion).  Source: linear-in-load reading of seed
+    Table 9 (after [16]); the table's growth above 20 kN is steeper than linear.  Valid 0.08-0.7 m/s
+    (Table 9 range).
     """
     return (
         friction_force

@@ -1,12 +1,13 @@
-"""Linear motors (iron-core and ironless): the vendors' sizing, all SI, on floats, numpy arrays and CasADi
-symbols alike.
+"""Linear motors (iron-core and ironless): the vendors' sizing, all SI, on floats, numpy arrays and
+CasADi symbols alike.
 
 Sources:
-- HIWIN Mikrosystem, Linear Motor System Technical Information MM99TE07-1701, Appendix A "Motor Sizing":
-  Fp = M a + (M g + Fa) mu; Fe = sqrt(((Fi+Ff)^2 t1 + Ff^2 t2 + (Fi-Ff)^2 t3) / (t1+t2+t3+t4));
-  Ip = Fp / Kf below the peak current, Ie = Fe / Kf below the continuous current, Ie / Ic "had better be less
-  than 0.7"; the 1/3-1/3-1/3 profile Vmax = 1.5 X / T, a = 4.5 X / T^2.  Definitions: the attraction force Fa
-  of an iron-core motor "must be taken up by the guide"; the peak force is available for about 1 s.
+- HIWIN Mikrosystem, Linear Motor System Technical Information MM99TE07-1701, Appendix A "Motor
+  Sizing": Fp = M a + (M g + Fa) mu; Fe = sqrt(((Fi+Ff)^2 t1 + Ff^2 t2 + (Fi-Ff)^2 t3) /
+  (t1+t2+t3+t4)); Ip = Fp / Kf below the peak current, Ie = Fe / Kf below the continuous current, Ie
+  / Ic "had better be less than 0.7"; the 1/3-1/3-1/3 profile Vmax = 1.5 X / T, a = 4.5 X /
+  T^2.  Definitions: the attraction force Fa of an iron-core motor "must be taken up by the guide";
+  the peak force is available for about 1 s.
 - Siemens SIMOTICS L-1FN3 Configuration Manual 10/2018 5.2: normal force on the guides
   F_n = F_perp + F_magn; friction mu F_n.
 - Mitsubishi MR-J3-B linear servo selection: F_ma = M a + F_f, F_md = -M a + F_f, the RMS over t0.
@@ -34,7 +35,8 @@ def peak_force(mass, acceleration, attraction, friction_coefficient, process_for
 
 
 def effective_force(inertia_force, friction, t1, t2, t3, t4):
-    """HIWIN Appendix A: the RMS force of a cyclic move (accelerate t1, cruise t2, decelerate t3, dwell t4) [N]."""
+    """HIWIN Appendix A: the RMS force of a cyclic move (accelerate t1, cruise t2, decelerate t3,
+    dwell t4) [N]."""
     return mx.sqrt(
         (
             (inertia_force + friction) ** 2 * t1
@@ -62,5 +64,6 @@ def servo_stiffness(mass, bandwidth):
 
 
 def block_load(mass, attraction, normal_force, blocks):
-    """Load on each guide block [N], evenly shared: (M g + Fa + F_n) / n (the attraction loads the guides)."""
+    """Load on each guide block [N], evenly shared: (M g + Fa + F_n) / n (the attraction loads the
+    guides)."""
     return (mass * G + attraction + normal_force) / blocks

@@ -1,15 +1,16 @@
 r"""Motion of the table over a duty cycle, as phases of linearly varying acceleration.
 
 A duty cycle is a list of moves and dwells.  A move starts and ends at rest: it accelerates to its
-speed (at the axis acceleration, limited by the jerk when one is given), cruises, and decelerates; a short
-move never reaches its speed (triangular or, with jerk, S-shaped profile).  A dwell stands still.  Each
-phase carries what the motor torque needs (:func:`axisopt.physics.drive.phase_torques`): its duration,
-the table acceleration at its start and end (linear in between, so a jerk-limited ramp is exact), the
-direction of motion (+1, -1, 0 at standstill), the external axial force opposing the motion, the
-largest speed reached and the moving mass when the entry names its own (a workpiece loaded or unloaded).
+speed (at the axis acceleration, limited by the jerk when one is given), cruises, and decelerates; a
+short move never reaches its speed (triangular or, with jerk, S-shaped profile).  A dwell stands
+still.  Each phase carries what the motor torque needs
+(:func:`axisopt.physics.drive.phase_torques`): its duration, the table acceleration at its start and
+end (linear in between, so a jerk-limited ramp is exact), the direction of motion (+1, -1, 0 at
+standstill), the external axial force opposing the motion, the largest speed reached and the moving
+mass when the entry names its own (a workpiece loaded or unloaded).
 
-Pure Python on floats: the cycle is the axis's, the same for every design; the design enters only in the
-torque (inertia, lead, friction), so the phases are built once per axis.
+Pure Python on floats: the cycle is the axis's, the same for every design; the design enters only in
+the torque (inertia, lead, friction), so the phases are built once per axis.
 """
 
 from __future__ import annotations
@@ -55,9 +56,9 @@ class Phase:
 
 
 def ramp(speed: float, acceleration: float, jerk: float | None) -> tuple[list, float, float]:
-    """Acceleration pieces [(duration, a0, a1)] taking the table from rest to ``speed``, and the time and
-    distance this takes.  With jerk: a jerk-limited (S-curve) ramp, which reaches the full acceleration only
-    when ``speed >= acceleration**2 / jerk``."""
+    """Acceleration pieces [(duration, a0, a1)] taking the table from rest to ``speed``, and the
+    time and distance this takes.  With jerk: a jerk-limited (S-curve) ramp, which reaches the full
+    acceleration only when ``speed >= acceleration**2 / jerk``."""
     # no acceleration given: speed changes count as instantaneous
     if speed <= 0.0 or acceleration <= 0.0:
         return [], 0.0, 0.0
@@ -112,10 +113,11 @@ def move_phases(seg: Segment) -> list[Phase]:
 
 
 class Phases(tuple):
-    """The phases of a duty cycle (a tuple), whether the heat balance sets the temperature rise (``heat``) and
-    whether the cycle is the user's (``given``; else the default rapid cycle, which the life checks do not
-    read): properties of the axis, the same for every design, so the model branches on them in Python instead
-    of carrying both forms symbolically.  Equal only with the same phases and flags (cache keys)."""
+    """The phases of a duty cycle (a tuple), whether the heat balance sets the temperature rise
+    (``heat``) and whether the cycle is the user's (``given``; else the default rapid cycle, which
+    the life checks do not read): properties of the axis, the same for every design, so the model
+    branches on them in Python instead of carrying both forms symbolically.  Equal only with the
+    same phases and flags (cache keys)."""
 
     heat: bool = False
     given: bool = False
@@ -158,8 +160,8 @@ def cycle_phases(segments) -> tuple[Phase, ...]:
 def rapid_cycle(
     stroke: float, speed: float, acceleration: float, jerk: float | None
 ) -> tuple[Segment, ...]:
-    """The default cycle when none is given: a rapid move over the whole stroke and back, without dwell
-    (continuous reversing: a conservative duty for the RMS torque)."""
+    """The default cycle when none is given: a rapid move over the whole stroke and back, without
+    dwell (continuous reversing: a conservative duty for the RMS torque)."""
     mv = dict(speed=speed, acceleration=acceleration, jerk=jerk)
     return (Segment("move", distance=stroke, **mv), Segment("move", distance=-stroke, **mv))
 
@@ -169,15 +171,16 @@ def cycle_time(phases) -> float:
 
 
 def phase_travel(ph: Phase) -> float:
-    r"""Distance the table travels in a phase [m] (>= 0): :math:`|v_0 T + (2 a_0 + a_1) T^2 / 6|`, exact for an
-    acceleration linear in time (the speed keeps its sign within a phase)."""
+    r"""Distance the table travels in a phase [m] (>= 0): :math:`|v_0 T + (2 a_0 + a_1) T^2 / 6|`,
+    exact for an acceleration linear in time (the speed keeps its sign within a phase)."""
     t = ph.duration
     return abs(ph.v0 * t + (2.0 * ph.a0 + ph.a1) * t * t / 6.0)
 
 
 def mean_speed(phases) -> float:
-    """Mean table speed over a cycle [m/s]: its travel over its time, dwells included (THK A-730: the mean
-    rotational speed N_m = 2 n l_S / P_h over the clock minute); 0 for a cycle without time."""
+    """Mean table speed over a cycle [m/s]: its travel over its time, dwells included (THK A-730:
+    the mean rotational speed N_m = 2 n l_S / P_h over the clock minute); 0 for a cycle without
+    time."""
     t = cycle_time(phases)
     return sum(phase_travel(ph) for ph in phases) / t if t > 0 else 0.0
 

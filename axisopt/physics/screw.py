@@ -1,4 +1,5 @@
-"""Screw shaft: stiffness combination, axial and torsional stiffness, inertia, mass (seed sec. 3.1)."""
+"""Screw shaft: stiffness combination, axial and torsional stiffness, inertia, mass (seed sec.
+3.1)."""
 
 from __future__ import annotations
 
@@ -39,17 +40,17 @@ MIN_SEGMENT_PRODUCT = 1e-12
 MOUNTINGS = ("fixed-free", "fixed-supported", "fixed-fixed", "supported-supported")
 
 # k = c * E * A / L, catalog forms of seed eq. 7-8 (c = 4: fixed-fixed, nut at mid-span; c = 1: one
-# fixed end
-# carries the load over L).  Supported ends carry no axial load, so fixed-supported behaves as
-# fixed-free.
-# Supported-supported has no fixed bearing; by convention one support takes the thrust, c = 1.
+# fixed end carries the load over L).  Supported ends carry no axial load, so fixed-supported
+# behaves as fixed-free.  Supported-supported has no fixed bearing; by convention one support takes
+# the thrust, c = 1.
 CATALOG_STIFFNESS_FACTOR = MappingProxyType(
     {"fixed-free": 1.0, "fixed-supported": 1.0, "fixed-fixed": 4.0, "supported-supported": 1.0}
 )
 
 
 def choose(mapping, key, what):
-    """Look a discrete selector up in a read-only mapping; a wrong key raises ValueError naming choices."""
+    """Look a discrete selector up in a read-only mapping; a wrong key raises ValueError naming
+    choices."""
     if not isinstance(key, str) or key not in mapping:
         allowed = ", ".join(repr(k) for k in mapping)
         raise ValueError(f"unknown {what} {key!r}; allowed: {allowed}")
@@ -78,7 +79,7 @@ def parallel_stiffness(*ks):
     .. math:: k_{Be} = \sum_i k_i                                     (seed eq. 2, k_Be = k_B1 + k_B2)
 
     ks : stiffnesses k_i [N/m], at least one.  Returns [N/m].
-    """
+    """  # noqa: E501
     if not ks:
         raise ValueError("parallel_stiffness needs at least one stiffness")
     total = 0.0
@@ -103,9 +104,10 @@ def screw_stiffness(root_diameter, x, span, mounting, youngs_modulus=E_STEEL):
     mounting       : one of MOUNTINGS (plain string)
     youngs_modulus : E [Pa]
     Returns k_s [N/m].  Source: seed eq. 3-5, 10; THK "axial rigidity of the feed screw system".
-    Valid for a slender elastic bar (bearing and nut compliance excluded).  Fixed-fixed with the nut at a
-    bearing (x = L, an end margin of 0) is rigid: the product x (L - x) is held at 1e-12 m^2 or more, a
-    finite stiffness far above any chain's (1/k then adds nothing in series) on floats and CasADi alike.
+    Valid for a slender elastic bar (bearing and nut compliance excluded).  Fixed-fixed with the nut
+    at a bearing (x = L, an end margin of 0) is rigid: the product x (L - x) is held at 1e-12 m^2 or
+    more, a finite stiffness far above any chain's (1/k then adds nothing in series) on floats and
+    CasADi alike.
     """
     choose(CATALOG_STIFFNESS_FACTOR, mounting, "mounting")
     ea = youngs_modulus * mx.pi * root_diameter**2 / 4.0
@@ -115,7 +117,7 @@ def screw_stiffness(root_diameter, x, span, mounting, youngs_modulus=E_STEEL):
 
 
 def screw_axial_rigidity(root_diameter, youngs_modulus=E_STEEL):
-    r"""Section rigidity of the screw shaft, EA = E pi d_r^2 / 4  [N] (root diameter d_r [m], E [Pa])."""
+    r"""Section rigidity of the screw shaft, EA = E pi d_r^2 / 4  [N] (root diameter d_r [m], E [Pa])."""  # noqa: E501
     return youngs_modulus * mx.pi * root_diameter**2 / 4.0
 
 
@@ -126,13 +128,15 @@ def two_path_stiffness(k_near, k_far, axial_rigidity, x, span):
 
     The nut force splits between the near path (bearing set k_1, screw segment x) and the far path
     (bearing set k_2, segment L - x).  ``k_far = 0`` gives the one-fixed-end chain 1/(1/k_1 + x/EA).
-    With rigid bearings it is THK's fixed-fixed screw rigidity A E L / (a b) (vendor-formulas.md 2.5).
+    With rigid bearings it is THK's fixed-fixed screw rigidity A E L / (a b) (vendor-formulas.md
+    2.5).
 
-    k_near, k_far  : k_1, k_2, axial stiffness of the bearing set (with its housing) at each end [N/m]
+    k_near, k_far  : k_1, k_2, axial stiffness of the bearing set (with its housing) at each end
+                     [N/m]
     axial_rigidity : EA [N] (screw_axial_rigidity)
     x              : fixed (near) bearing to nut [m];  span : L, bearing to bearing [m]
     Returns k [N/m].  Source: statics of two springs in parallel (seed eq. 1-2 applied per path).
-    """
+    """  # noqa: E501
     near = 1.0 / (1.0 / k_near + x / axial_rigidity)
     far = k_far / (1.0 + k_far * (span - x) / axial_rigidity)
     return near + far
@@ -143,10 +147,12 @@ def screw_bearing_stiffness(
 ):
     r"""Screw shaft and support bearings together, as the nut sees them, by mounting.
 
-    fixed-fixed: :func:`two_path_stiffness` with a bearing set of stiffness ``k_bearing_set`` at each end;
-    otherwise the fixed set in series with the segment x (a supported or free end carries no axial load).
+    fixed-fixed: :func:`two_path_stiffness` with a bearing set of stiffness ``k_bearing_set`` at
+    each end; otherwise the fixed set in series with the segment x (a supported or free end carries
+    no axial load).
 
-    root_diameter : d_r [m];  x : fixed bearing to nut [m];  span : L [m];  mounting : one of MOUNTINGS
+    root_diameter : d_r [m];  x : fixed bearing to nut [m];  span : L [m];  mounting : one of
+        MOUNTINGS
     k_bearing_set : one bearing set with its housing [N/m].  Returns [N/m].
     """
     choose(CATALOG_STIFFNESS_FACTOR, mounting, "mounting")
@@ -160,8 +166,8 @@ def screw_stiffness_catalog(root_diameter, length, mounting, youngs_modulus=E_ST
 
     .. math:: k_s = c\, E \pi d_r^2 / (4 L_1),  c = 4 (fixed-fixed, nut at mid-span), 1 (fixed-free)
 
-    With E = 2.06e5 N/mm^2, d_r in mm, L_1 in cm and k_s in N/um this is 64.7 d_r^2/L_1 (eq. 7) and 16.2
-    d_r^2/L_1 (eq. 8 prints 16.8, likely a typo: vendor-formulas.md sec. 2.5).
+    With E = 2.06e5 N/mm^2, d_r in mm, L_1 in cm and k_s in N/um this is 64.7 d_r^2/L_1 (eq. 7) and
+    16.2 d_r^2/L_1 (eq. 8 prints 16.8, likely a typo: vendor-formulas.md sec. 2.5).
 
     root_diameter : d_r [m];  length : L_1, bearing span [m];  mounting : one of MOUNTINGS
     youngs_modulus: E [Pa].  Returns k_s [N/m].  Worst-case (minimum) value over the stroke.
@@ -186,10 +192,12 @@ def torsion_axial_stiffness(torsional_stiffness, lead):
 
     .. math:: k_{ax} = k_\theta (2\pi / P_h)^2
 
-    An axial force F at the nut needs the torque T = F P_h / (2 pi) at the screw; the twist T/k_theta moves
-    the nut by (P_h / 2 pi) T / k_theta.  torsional_stiffness : k_theta [N*m/rad] (screw shaft from the
-    coupling to the nut, or the coupling);  lead : P_h [m].  Returns k_ax [N/m].
-    Source: THK/HIWIN feed-system rigidity (screw torsion term); rigid-body kinematics of the screw pair.
+    An axial force F at the nut needs the torque T = F P_h / (2 pi) at the screw; the twist
+    T/k_theta moves the nut by (P_h / 2 pi) T / k_theta.  torsional_stiffness : k_theta [N*m/rad]
+    (screw shaft from the coupling to the nut, or the coupling);  lead : P_h [m].  Returns k_ax
+    [N/m].
+    Source: THK/HIWIN feed-system rigidity (screw torsion term); rigid-body kinematics of the screw
+    pair.
     Valid with the motor held by its position loop (at standstill).
     """
     return torsional_stiffness * (2.0 * mx.pi / lead) ** 2
@@ -222,14 +230,11 @@ def lead_angle(lead, nominal_diameter):
     return mx.atan(lead / (mx.pi * nominal_diameter))
 
 
-# k of the largest deflection q L^4 / (k E I) of a uniform beam under its own weight, by end
-# conditions: AISC Steel
-# Construction Manual, Table 3-23 "Shears, moments and deflections", case 1 (simple beam, 5/384),
-# case 12 (fixed at
-# one end, supported at the other, 1/185), case 15 (fixed at both ends, 1/384) and case 22
-# (cantilever, 1/8); the
-# same figures as Roark's Formulas for Stress and Strain, Table 8.1 case 2 with the load over the
-# whole span.
+# k of the largest deflection q L^4 / (k E I) of a uniform beam under its own weight, by
+# end conditions: AISC Steel Construction Manual, Table 3-23 "Shears, moments and deflections", case
+# 1 (simple beam, 5/384), case 12 (fixed at one end, supported at the other, 1/185), case 15 (fixed
+# at both ends, 1/384) and case 22 (cantilever, 1/8); the same figures as Roark's Formulas for
+# Stress and Strain, Table 8.1 case 2 with the load over the whole span.
 SAG_FACTORS = MappingProxyType(
     {
         "fixed-free": 8.0,
@@ -243,18 +248,21 @@ SAG_FACTORS = MappingProxyType(
 def screw_sag(
     mass_per_length, root_diameter, span, mounting, youngs_modulus=E_STEEL, gravity=9.80665
 ):
-    r"""Largest sag of a horizontal screw under its own weight, the shaft as a uniform beam between its ends.
+    r"""Largest sag of a horizontal screw under its own weight, the shaft as a uniform beam between
+    its ends.
 
     .. math:: \delta = q L^4 / (k E I),\quad q = m' g,\quad I = \pi d_r^4 / 64
 
-    mass_per_length : m' [kg/m] (the catalog's shaft mass per metre);  root_diameter : d_r [m] (the root
-    section carries the bending: the threads are left out, the weight kept, so the sag is slightly high)
-    span : L, between the end supports [m];  mounting : key of :data:`SAG_FACTORS` (k: 8 fixed-free, 185
-    fixed-supported, 384 fixed-fixed, 384/5 supported-supported; AISC Table 3-23 cases 22, 12, 15, 1).
-    Returns delta [m].  A support that holds the shaft in a bearing set (the vendors' "fixed" end) is taken as
-    clamped, as the critical-speed factors take it (THK A-695); the nut, which also carries the shaft, is left
-    out, and so is the pretension of a fixed-fixed screw (a tensioned beam sags less): both leave the value
-    conservative (docs/assumptions.md).
+    mass_per_length : m' [kg/m] (the catalog's shaft mass per metre);  root_diameter : d_r [m] (the
+        root section carries the bending: the threads are left out, the weight kept, so the sag is
+        slightly high)
+    span : L, between the end supports [m];  mounting : key of :data:`SAG_FACTORS` (k: 8 fixed-free,
+        185 fixed-supported, 384 fixed-fixed, 384/5 supported-supported; AISC Table 3-23 cases 22,
+        12, 15, 1).
+    Returns delta [m].  A support that holds the shaft in a bearing set (the vendors' "fixed" end)
+    is taken as clamped, as the critical-speed factors take it (THK A-695); the nut, which also
+    carries the shaft, is left out, and so is the pretension of a fixed-fixed screw (a tensioned
+    beam sags less): both leave the value conservative (docs/assumptions.md).
     """
     k = choose(SAG_FACTORS, mounting, "mounting")
     inertia = 3.141592653589793 * root_diameter**4 / 64.0

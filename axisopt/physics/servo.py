@@ -1,4 +1,5 @@
-"""Servo-loop rules of thumb from drive and CNC vendors (pure formulas; tuning on the model: model.servo)."""
+"""Servo-loop rules of thumb from drive and CNC vendors (pure formulas; tuning on the model:
+model.servo)."""
 
 from __future__ import annotations
 
@@ -31,13 +32,15 @@ def kv_rule(f_axial):
 
     .. math:: K_v\,[1/s] = f_n\,[Hz]     (FANUC B-65262EN/03: f_n >= K_v)
 
-    f_axial : f_n [Hz] (float, array or CasADi).  Returns K_v [1/s].  Rises with the nut preload as f_n does.
+    f_axial : f_n [Hz] (float, array or CasADi).  Returns K_v [1/s].  Rises with the nut preload as
+        f_n does.
     """
     return KV_PER_HZ * f_axial
 
 
 def yaskawa_gains(speed_loop_hz: float) -> dict:
-    """Yaskawa's manual-tuning relations for a speed-loop gain Pn100 [Hz] (Sigma-7 / E-S manual 8.8.1).
+    """Yaskawa's manual-tuning relations for a speed-loop gain Pn100 [Hz] (Sigma-7 / E-S manual
+    8.8.1).
 
     Returns {"Pn100_Hz", "Pn101_ms" = 4000 / (2 pi Pn100), "Pn401_ms" = 1000 / (2 pi Pn100 4),
     "Pn102_per_s" = Pn100 (reference values, Sigma-II 6.4.4)}.

@@ -1,10 +1,12 @@
-"""Reports: tables, JSON dicts and plots in vendor units.  Nothing here prints (the ``cli`` package does).
+"""Reports: tables, JSON dicts and plots in vendor units.  Nothing here prints (the ``cli`` package
+does).
 
 - :mod:`.evaluation`: one design's evaluation as a text table and a JSON dict
 - :mod:`.plots`: stiffness and frequency over the stroke, duty cycle on the torque-speed plane
 - :mod:`.methods`: ``evaluate --methods`` and ``--frf`` tables, dicts and plot
 - :mod:`.solve`: a SolveResult as ``solve`` prints it, and the Pareto front's scatter matrix
-- :mod:`.compare`: designs side by side (``compare``'s table, JSON and CSV; the notebook's ``Comparison``)
+- :mod:`.compare`: designs side by side (``compare``'s table, JSON and CSV; the notebook's
+  ``Comparison``)
 """
 
 from ..fileio import PLOT_FORMATS, atomic_file, make_output_dir, save_figure, write_text_atomic

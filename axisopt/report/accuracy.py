@@ -12,8 +12,8 @@ ARCSEC = math.pi / 180.0 / 3600.0
 
 
 def lead_source(grade: str, stroke: float, nut_length: float = 0.0) -> str:
-    """How the lead row is read from the grade tables (THK A-678) over the thread the nut travels, stroke +
-    nut length (ISO 3408-3's useful travel)."""
+    """How the lead row is read from the grade tables (THK A-678) over the thread the nut travels,
+    stroke + nut length (ISO 3408-3's useful travel)."""
     g = grade_table().grade(grade)
     over = f"{stroke * 1e3:.0f}"
     over += f" + {nut_length * 1e3:.0f} mm nut" if nut_length > 0 else " mm"
@@ -23,8 +23,8 @@ def lead_source(grade: str, stroke: float, nut_length: float = 0.0) -> str:
 
 
 def reduction_lost_motion(design) -> float:
-    """A reduction part's torsional backlash through the lead at the table [m] (model.drive.lost_motion's
-    second term; 0 without a reduction part)."""
+    """A reduction part's torsional backlash through the lead at the table [m]
+    (model.drive.lost_motion's second term; 0 without a reduction part)."""
     r = design.reduction
     if r is None:
         return 0.0
@@ -87,7 +87,8 @@ def budget_rows(ev) -> list:
                 (
                     f"lost motion, reduction {d.reduction['id']}",
                     red,
-                    f"backlash {float(d.reduction['backlash']) * 10800 / math.pi:g} arcmin x lead / 2 pi",
+                    f"backlash {float(d.reduction['backlash']) * 10800 / math.pi:g} arcmin x lead "
+                    "/ 2 pi",
                 )
             ]
             if d.reduction is not None
@@ -100,8 +101,7 @@ def budget_rows(ev) -> list:
     bound = float(v["positioning_error"])
     if not math.isclose(bound, rows[-1][1], rel_tol=1e-9, abs_tol=1e-12):
         # limits.max_positioning_error holds the model's total, whose thermal row is at the nut's
-        # top preload
-        # (model.accuracy: the search's one-sided preload solve rests on it)
+        # top preload (model.accuracy: the search's one-sided preload solve rests on it)
         rows.append(
             (
                 "total the limit holds (thermal at top preload)",
@@ -118,8 +118,8 @@ def budget_rows(ev) -> list:
 def budget_lines(ev) -> list:
     """The budget as the text lines ``axisopt evaluate`` prints."""
     lines = [
-        f"positioning error budget over the {ev.design.axis.stroke * 1e3:.0f} mm stroke (um, largest "
-        f"deviation; THK A-712)"
+        f"positioning error budget over the {ev.design.axis.stroke * 1e3:.0f} mm stroke (um, "
+        "largest deviation; THK A-712)"
     ]
     for label, value, source in budget_rows(ev):
         lines.append(f"  {label:<44}{value * 1e6:>8.1f}  ({source})")

@@ -1,5 +1,6 @@
-"""The checks of one evaluation as text: each check judged against its limit (the user's allowed margins
-included), the rows that list them, and the notes on the motor rule and the DN rules.  Nothing here prints."""
+"""The checks of one evaluation as text: each check judged against its limit (the user's allowed
+margins included), the rows that list them, and the notes on the motor rule and the DN rules.
+Nothing here prints."""
 
 from __future__ import annotations
 
@@ -12,9 +13,10 @@ from .text import WIDTH, fmt_value
 
 
 def judged_rows(ev: Evaluation, margins: dict | None = None) -> list:
-    """:func:`check_rows`, each judged against the least margin a problem sets for it (``margins``: check ->
-    margin, the problem's ``limits.margins``; 0 switches a check off): where that is not 1, ``pass`` reads the
-    margin against it and ``allowed`` holds it (a table must not say FAIL for a margin the problem allowed)."""
+    """:func:`check_rows`, each judged against the least margin a problem sets for it (``margins``:
+    check -> margin, the problem's ``limits.margins``; 0 switches a check off): where that is not 1,
+    ``pass`` reads the margin against it and ``allowed`` holds it (a table must not say FAIL for a
+    margin the problem allowed)."""
     from ..model.checks import MARGIN_RTOL
 
     out = []
@@ -35,8 +37,8 @@ def judged_rows(ev: Evaluation, margins: dict | None = None) -> list:
 
 
 def allowed_list(rows) -> str:
-    """'bearing life 0.5, critical speed 1.2': the rows :func:`judged_rows` judged on another margin than 1, with
-    that margin ('off' for 0); '' when none."""
+    """'bearing life 0.5, critical speed 1.2': the rows :func:`judged_rows` judged on another margin
+    than 1, with that margin ('off' for 0); '' when none."""
     return ", ".join(
         f"{r['check'].replace('_', ' ')} " + ("off" if r["allowed"] == 0 else f"{r['allowed']:g}")
         for r in rows
@@ -45,7 +47,8 @@ def allowed_list(rows) -> str:
 
 
 def allowed_note(rows) -> str:
-    """'* against the problem's least margin (limits.margins): ...' (:func:`allowed_list`; '' when none)."""
+    """'* against the problem's least margin (limits.margins): ...' (:func:`allowed_list`; '' when
+    none)."""
     judged = allowed_list(rows)
     return f"* against the problem's least margin (limits.margins): {judged}" if judged else ""
 
@@ -56,10 +59,12 @@ NOT_LOADED = ("critical_speed", "dn_limit", "bearing_speed", "coupling_speed")
 
 
 def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
-    """The checks block of ``evaluate``: available, needed and margin with units (fits 100 columns); with a
-    problem's ``margins`` (check -> least margin), pass or FAIL against them (:func:`judged_rows`)."""
+    """The checks block of ``evaluate``: available, needed and margin with units (fits 100 columns);
+    with a problem's ``margins`` (check -> least margin), pass or FAIL against them
+    (:func:`judged_rows`)."""
     lines = [
-        f"{'checks (margin = available / needed, >= 1 passes)':<50}{'available':>15}{'needed':>15}{'margin':>8}"
+        f"{'checks (margin = available / needed, >= 1 passes)':<50}{'available':>15}{'needed':>15}"
+        f"{'margin':>8}"
     ]
     rows = judged_rows(ev, margins)
     for r in rows:
@@ -92,8 +97,8 @@ def check_lines(ev: Evaluation, margins: dict | None = None) -> list:
 
 
 def rule_notes(ev: Evaluation) -> list:
-    """Whose rule each vendor-dependent check applies: the DN by the screw's vendor, the nut lift-off's load
-    cases (model.loads.lift_off_load)."""
+    """Whose rule each vendor-dependent check applies: the DN by the screw's vendor, the nut
+    lift-off's load cases (model.loads.lift_off_load)."""
     d = ev.design
     out = [
         "DN " + DN_RULES.get(str(d.screw["vendor"]), DN_RULE_OTHER),
@@ -108,7 +113,7 @@ def rule_notes(ev: Evaluation) -> list:
         out.append(
             "lift-off: the cut and the inertia at once (axis.cut_while_accelerating)"
             if d.axis.cut_while_accelerating
-            else "lift-off: each load case its own load (THK A-725: the cut at feed speed, the inertia in the "
-            + ("duty cycle's phases)" if d.axis.duty_cycle else "rapid)")
+            else "lift-off: each load case its own load (THK A-725: the cut at feed speed, the "
+            "inertia in the " + ("duty cycle's phases)" if d.axis.duty_cycle else "rapid)")
         )
     return out

@@ -1,7 +1,7 @@
-"""Designs side by side (:class:`~axisopt.study.compare.Compared` items): ``compare_table`` is the text table
-``axisopt compare`` prints, ``compare_dict`` / ``compare_rows`` the JSON and CSV forms, :class:`Comparison`
-the notebook's result object (``axisopt.compare``).  The weakest link of each design (the component with the
-lowest stiffness where the total is lowest) is marked.
+"""Designs side by side (:class:`~axisopt.study.compare.Compared` items): ``compare_table`` is the
+text table ``axisopt compare`` prints, ``compare_dict`` / ``compare_rows`` the JSON and CSV forms,
+:class:`Comparison` the notebook's result object (``axisopt.compare``).  The weakest link of each
+design (the component with the lowest stiffness where the total is lowest) is marked.
 """
 
 from __future__ import annotations
@@ -25,8 +25,8 @@ from .text import fmt_value
 
 @dataclass(repr=False)
 class Comparison:
-    """Designs side by side (:func:`axisopt.compare`): ``items`` one :class:`~axisopt.study.compare.Compared`
-    each, in argument order."""
+    """Designs side by side (:func:`axisopt.compare`): ``items`` one
+    :class:`~axisopt.study.compare.Compared` each, in argument order."""
 
     items: list
 
@@ -102,9 +102,9 @@ def component_stiffness(ev: Evaluation) -> dict:
 
 
 def compare_table(items) -> str:
-    """The text table: one column per design, the weakest link of each marked with '<'.  Within 100 columns:
-    when the designs do not fit side by side, the table is printed in blocks of as many designs as fit, one
-    under the other."""
+    """The text table: one column per design, the weakest link of each marked with '<'.  Within
+    100 columns: when the designs do not fit side by side, the table is printed in blocks of as many
+    designs as fit, one under the other."""
     if any(getattr(c, "drive", None) is not None for c in items):
         return drive_compare_table(items)
     w0 = 34
@@ -189,8 +189,7 @@ def compare_table(items) -> str:
             return motor(cell)
 
         # what the checks compare: the cycle's peak scaled to the motor's zone at its speed, the RMS
-        # (or mean
-        # thrust) torque against the rule's allowed share of the rated torque
+        # (or mean thrust) torque against the rule's allowed share of the rated torque
         row("  peak torque (zone-scaled) [N.m]", pair("motor_peak_torque"))
         row("  RMS torque / allowed [N.m]", pair("motor_rated_torque"))
         row("  motor speed [rpm]", pair("motor_speed", ",.0f"))
@@ -203,7 +202,7 @@ def compare_table(items) -> str:
                         "-"
                         if e.design.axis.orientation != "vertical"
                         else f"{e['holding_torque'] * e.design.axis.brake_safety:.2f} / "
-                        f"{(m['brake_torque'] if math.isfinite(float(m['brake_torque'])) else 0.0):.3g}"
+                        f"{(m['brake_torque'] if math.isfinite(float(m['brake_torque'])) else 0.0):.3g}"  # noqa: E501
                     )
                 ),
             )
@@ -234,8 +233,7 @@ def compare_table(items) -> str:
 
         row(f"  {CHECK_SHORT[c]}" + (f" [{unit}]" if unit else ""), [cell(t) for t in tables])
     # the checks that apply, as the rows above judge them (not every margin the model computes: a
-    # horizontal
-    # axis's brake, an unloaded check)
+    # horizontal axis's brake, an unloaded check)
     row(
         "all checks pass",
         [
@@ -253,9 +251,8 @@ def compare_table(items) -> str:
         for n in notes:
             rows.extend(textwrap.wrap(n, TEXT_WIDTH, initial_indent="  ", subsequent_indent="    "))
     # the columns as wide as their widest cell (a check's 'margin (available/needed)' included), up
-    # to 32: two
-    # designs side by side at least; a wider cell is cut with a mark and given in full under the
-    # table
+    # to 32: two designs side by side at least; a wider cell is cut with a mark and given in full
+    # under the table
     longest = max(
         [len(str(c).rstrip()) for r in rows if not isinstance(r, str) for c in r[1]] + [0]
     )
@@ -307,9 +304,9 @@ def compare_table(items) -> str:
 
 
 def _common(c) -> dict | None:
-    """What designs of every drive type share, in display units: the drive type, the parts, the least
-    axial stiffness [N/um], the first frequency [Hz], the cost [EUR], the moving mass [kg] and the least
-    margin with its check (None: no design)."""
+    """What designs of every drive type share, in display units: the drive type, the parts, the
+    least axial stiffness [N/um], the first frequency [Hz], the cost [EUR], the moving mass [kg] and
+    the least margin with its check (None: no design)."""
     d = getattr(c, "drive", None)
     if d is not None:
         least = min(d.margins.items(), key=lambda kv: kv[1]) if d.margins else (None, None)
@@ -340,8 +337,8 @@ def _common(c) -> dict | None:
 
 
 def drive_compare_table(items) -> str:
-    """The comparison when a rack-and-pinion or linear-motor design is among the designs: what every drive
-    type has (the quantities of :func:`_common`), one block per design."""
+    """The comparison when a rack-and-pinion or linear-motor design is among the designs: what every
+    drive type has (the quantities of :func:`_common`), one block per design."""
     from .drivetype import LABELS as DRIVE_LABELS
 
     out = [

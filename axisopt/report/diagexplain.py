@@ -1,6 +1,6 @@
-"""What a table diagnosis cannot tell apart or leaves unexplained: the parameters the data do not identify, the
-other explanations that fit as well, and the residual signatures no effect explains (as JSON-ready dicts).
-Nothing here prints."""
+"""What a table diagnosis cannot tell apart or leaves unexplained: the parameters the data do not
+identify, the other explanations that fit as well, and the residual signatures no effect explains
+(as JSON-ready dicts).  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -53,8 +53,8 @@ def plausibility_flags(res):
 def unidentifiable(res, names=None) -> list:
     """Parameters the data do not fix (infinite variance: a zero or dependent Jacobian column)."""
     return [
-        f"{p.name} is not identifiable from these data: the fit does not change with it (it is reported "
-        "at the value the search stopped at, without an uncertainty)"
+        f"{p.name} is not identifiable from these data: the fit does not change with it (it is "
+        "reported at the value the search stopped at, without an uncertainty)"
         for p, s in zip(res.params, res.sigma)
         if not math.isfinite(s) and (names is None or p.name in names)
     ]
@@ -66,15 +66,16 @@ def undetermined_notes(res, names) -> list:
     for p, v, s in zip(res.params, res.theta, res.sigma):
         if p.name in names and math.isfinite(s) and v != 0 and s > abs(v):
             out.append(
-                f"{p.name} not determined by these data (+-{p.show(s):.3g} on {p.show(v):.4g} {p.unit})"
+                f"{p.name} not determined by these data (+-{p.show(s):.3g} on {p.show(v):.4g} "
+                f"{p.unit})"
             )
     return out
 
 
 def other_explanations(diag) -> list:
-    """What else the fit points to: a screw modulus outside steel's range means the chain is softer (or
-    stiffer) than the model, which a component off its catalog value explains as well; name each component
-    and the stiffness it would need to carry the same compliance at mid-stroke."""
+    """What else the fit points to: a screw modulus outside steel's range means the chain is softer
+    (or stiffer) than the model, which a component off its catalog value explains as well; name each
+    component and the stiffness it would need to carry the same compliance at mid-stroke."""
     out = []
     vals = diag.final.values()
     E = vals.get("screw_modulus")
@@ -86,15 +87,17 @@ def other_explanations(diag) -> list:
     dc = x / (E * pl.area) - x / (pl.youngs_modulus * pl.area)
     side = "softer" if dc > 0 else "stiffer"
     text = (
-        f"the screw modulus fitted at {E / 1e9:.0f} GPa (steel {pl.youngs_modulus / 1e9:.0f} GPa) makes the chain "
-        f"{abs(dc) * 1e9:.2f} um/kN {side} at mid-stroke; the same would follow from"
+        f"the screw modulus fitted at {E / 1e9:.0f} GPa (steel {pl.youngs_modulus / 1e9:.0f} GPa) "
+        f"makes the chain {abs(dc) * 1e9:.2f} um/kN {side} at mid-stroke; the same would follow "
+        "from"
     )
     alts = []
     for name, k in (("the support bearing set", pl.k_bearing), ("the nut", pl.k_nut)):
         c_new = 1.0 / k + dc
         if c_new > 0:
             alts.append(
-                f"{name} at {1.0 / c_new / 1e6:,.0f} N/um instead of its catalog {k / 1e6:,.0f} N/um"
+                f"{name} at {1.0 / c_new / 1e6:,.0f} N/um instead of its catalog {k / 1e6:,.0f} "
+                "N/um"
             )
     alts.append(
         "an unlisted compliance (housing, nut bracket, coupling) of "

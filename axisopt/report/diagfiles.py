@@ -1,5 +1,6 @@
-"""The files a table diagnosis writes (:func:`write_report`: text, JSON, the residual figures) and its residual
-figures against each factor, the factors' display names and categories.  Nothing here prints."""
+"""The files a table diagnosis writes (:func:`write_report`: text, JSON, the residual figures) and
+its residual figures against each factor, the factors' display names and categories.  Nothing here
+prints."""
 
 from __future__ import annotations
 
@@ -31,8 +32,8 @@ CATEGORICAL = {"direction": {-1.0: "-1", 1.0: "+1"}, "cycle": {}, "mode": {}, "e
 
 
 def categories(name: str, values) -> list | None:
-    """[(value, tick label), ...] when a factor is categorical (direction, cycle, mode, or at most three
-    distinct values), else None (plotted on a continuous axis)."""
+    """[(value, tick label), ...] when a factor is categorical (direction, cycle, mode, or at most
+    three distinct values), else None (plotted on a continuous axis)."""
     u = np.unique(np.asarray(values, dtype=float))
     if name not in CATEGORICAL and len(u) > 3:
         return None
@@ -41,8 +42,9 @@ def categories(name: str, values) -> list | None:
 
 
 def residual_figures(diag, verdict: str):
-    """Per observation of ``diag``: (observation, matplotlib Figure of its residuals, model - measured, against
-    each recorded factor, before (baseline) and after (with ``verdict``)); a category factor one tick each."""
+    """Per observation of ``diag``: (observation, matplotlib Figure of its residuals, model -
+    measured, against each recorded factor, before (baseline) and after (with ``verdict``)); a
+    category factor one tick each."""
     from ..figure import (
         Figure,  # outside pyplot: no backend is chosen (a notebook's stays as it was)
     )
@@ -99,8 +101,9 @@ def write_report(diag, outdir) -> Path:
     md += ["", "## Data", ""]
     for ds in d["datasets"]:
         md.append(
-            f"- `{ds['file']}` ({ds['test']}): {ds['rows']} rows, noise floor {ds['noise_floor']:.3g} "
-            f"{ds['unit']}; cross-validation leaves one {ds['cv_groups']} out"
+            f"- `{ds['file']}` ({ds['test']}): {ds['rows']} rows, noise floor "
+            f"{ds['noise_floor']:.3g} {ds['unit']}; cross-validation leaves one {ds['cv_groups']} "
+            "out"
         )
         md += [f"  - excluded line {e['line']}: {e['reason']}" for e in ds["excluded_rows"]]
     md += ["", "## Baseline fit", "", "| parameter | value |", "|---|---|"]
@@ -138,14 +141,15 @@ def write_report(diag, outdir) -> Path:
         md.append("")
     md += ["## Gain", "", "| data | held-out RMSE before | after | gain |", "|---|---|---|---|"]
     md += [
-        f"| {Path(h['file']).name} | {h['baseline']:.4g} {h['unit']} | {h['final']:.4g} {h['unit']} | "
-        f"{h['gain_percent']:.0f} % |"
+        f"| {Path(h['file']).name} | {h['baseline']:.4g} {h['unit']} | {h['final']:.4g} "
+        f"{h['unit']} | {h['gain_percent']:.0f} % |"
         for h in d["holdout_rmse_units"]
     ]
     md += [
         "",
         f"Gain {d['gain_percent']:.0f} % (grouped cross-validation, noise-weighted RMSE "
-        f"{d['holdout_rmse_baseline']:.3g} -> {d['holdout_rmse_final']:.3g}; about 1 is the noise floor).",
+        f"{d['holdout_rmse_baseline']:.3g} -> {d['holdout_rmse_final']:.3g}; about 1 is the noise "
+        "floor).",
         "",
     ]
     md += ["## What the final fit leaves", ""]
@@ -153,17 +157,18 @@ def write_report(diag, outdir) -> Path:
         name = Path(u["file"]).name
         if u["remaining"]:
             md.append(
-                f"- `{name}`: **unexplained** structure (RMS {u['rms_over_noise']:.2g}x the noise floor)"
+                f"- `{name}`: **unexplained** structure (RMS {u['rms_over_noise']:.2g}x the noise "
+                "floor)"
             )
             md += [
-                f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual variance. Candidates: "
-                f"{sg['causes']}. To separate them: {sg['to_separate']}."
+                f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual "
+                f"variance. Candidates: {sg['causes']}. To separate them: {sg['to_separate']}."
                 for sg in u["signatures"]
             ]
         else:
             md.append(
-                f"- `{name}`: RMS {u['rms_over_noise']:.2g}x the noise floor, no structure along a recorded "
-                "factor"
+                f"- `{name}`: RMS {u['rms_over_noise']:.2g}x the noise floor, no structure along a "
+                "recorded factor"
             )
     md += ["", "## Residual plots", ""]
     for k, (o, fig) in enumerate(residual_figures(diag, d["verdict"])):

@@ -1,6 +1,5 @@
-"""Diagnosis output (:class:`axisopt.identify.tables.diagnose.Diagnosis`): JSON-ready dict, console text, Markdown
-report with residual plots (Agg).
-Nothing here prints."""
+"""Diagnosis output (:class:`axisopt.identify.tables.diagnose.Diagnosis`): JSON-ready dict, console
+text, Markdown report with residual plots (Agg).  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -150,8 +149,7 @@ def diagnosis_dict(diag) -> dict:
                 "effect": a.effect.name,
                 "title": a.effect.title,
                 # the numbers of the final joint fit (the one --save-calibration writes), not of the
-                # round
-                # in which the effect was accepted
+                # round in which the effect was accepted
                 "finding": a.effect.describe(diag.final.values(), diag.plant),
                 "parameters": param_rows(diag.final, names),
                 "dBIC": a.dbic,
@@ -171,8 +169,8 @@ def diagnosis_dict(diag) -> dict:
 
 
 def _file_gains(diag) -> list:
-    """Held-out gain of each file [%]: the noise-weighted held-out RMSE of its own rows, baseline against final
-    (the pooled gain weighs every file together)."""
+    """Held-out gain of each file [%]: the noise-weighted held-out RMSE of its own rows, baseline
+    against final (the pooled gain weighs every file together)."""
     out = []
     for o, pb, pf in zip(
         diag.obs, _split(diag.obs, diag.holdout_baseline), _split(diag.obs, diag.holdout_final)
@@ -184,15 +182,17 @@ def _file_gains(diag) -> list:
 
 
 def quantity_notes(diag) -> list:
-    """How a measured quantity was converted for the model (torque data are fitted as force at the table)."""
+    """How a measured quantity was converted for the model (torque data are fitted as force at the
+    table)."""
     out = []
     pl = diag.plant
     for o in diag.obs:
         if o.kind == "friction" and "drag_torque" in o.dataset.columns:
             out.append(
-                f"{Path(o.dataset.source).name}: drag torque T fitted as table force F = 2 pi eta T / l "
-                f"(lead l = {pl.lead * 1e3:g} mm, screw efficiency eta = {pl.efficiency:g}, the "
-                f"model's value); forces below are also given as screw torque T = F l / (2 pi eta)"
+                f"{Path(o.dataset.source).name}: drag torque T fitted as table force F = 2 pi eta "
+                f"T / l (lead l = {pl.lead * 1e3:g} mm, screw efficiency eta = {pl.efficiency:g}, "
+                "the model's value); forces below are also given as screw torque T = F l / (2 pi "
+                "eta)"
             )
     return out
 
@@ -221,7 +221,8 @@ def frf_peak(freq, mag):
 
 def frf_modes(diag) -> list:
     """Frequency-response data, by position: the measured resonance (peak of |G|) and |G| there, the
-    baseline's and the final model's resonance, the fitted damping of the axial mode and any extra mode."""
+    baseline's and the final model's resonance, the fitted damping of the axial mode and any extra
+    mode."""
     out = []
     vals = diag.final.values()
     for o, yb, yf in zip(
@@ -258,8 +259,8 @@ def frf_modes(diag) -> list:
 
 
 def data_notes(o) -> list:
-    """What looks odd in the measured column itself: three or more consecutive identical readings (a held
-    or copied value) are named with their lines; they are kept in the fit."""
+    """What looks odd in the measured column itself: three or more consecutive identical readings (a
+    held or copied value) are named with their lines; they are kept in the fit."""
     from ..identify.tables.measure import MEASURED_COLUMNS
 
     out = []
@@ -283,7 +284,8 @@ def data_notes(o) -> list:
 
 
 def _torque_of(diag):
-    """N at the table -> N.m at the screw, when a friction dataset was given as torque (else None)."""
+    """N at the table -> N.m at the screw, when a friction dataset was given as torque (else
+    None)."""
     pl = diag.plant
     if any(o.kind == "friction" and "drag_torque" in o.dataset.columns for o in diag.obs):
         return pl.lead / (2.0 * math.pi * pl.efficiency)
@@ -291,12 +293,15 @@ def _torque_of(diag):
 
 
 def equivalent_text(a: str, b: str, apart: float, effects, floor) -> str:
-    """Two explanations of a table (effects or pairs) the held-out data do not tell apart, and what would;
-    ``floor``: their held-out RMSE in noise floors when both are at it (else None: within the resolution)."""
+    """Two explanations of a table (effects or pairs) the held-out data do not tell apart, and what
+    would;
+    ``floor``: their held-out RMSE in noise floors when both are at it (else None: within the
+    resolution)."""
     from ..identify.selection import TABLE_RULE
 
     ev = "; ".join(
-        f"for {e.name}, {getattr(e.time, 'evidence', '') or e.evidence or 'a test that shows it alone'}"
+        f"for {e.name}, "
+        f"{getattr(e.time, 'evidence', '') or e.evidence or 'a test that shows it alone'}"
         for e in dict.fromkeys(effects)
     )
     why = (
@@ -305,8 +310,9 @@ def equivalent_text(a: str, b: str, apart: float, effects, floor) -> str:
         else f"both at the noise floor ({floor[0]:.2f}x and {floor[1]:.2f}x)"
     )
     return (
-        f"{a} and {b} explain the data equally well: held-out RMSE {apart:.2f} % apart, {why}; {a} is named "
-        f"for its lower dBIC, not because the data tell them apart. To separate them: {ev}."
+        f"{a} and {b} explain the data equally well: held-out RMSE {apart:.2f} % apart, {why}; {a} "
+        "is named for its lower dBIC, not because the data tell them apart. To separate them: "
+        f"{ev}."
     )
 
 
@@ -320,8 +326,9 @@ def diagnosis_text(diag) -> str:
     L = [f"diagnose: {d['design']}"]
     for ds in d["datasets"]:
         L.append(
-            f"  {ds['test']:9s} {ds['file']}: {ds['rows']} rows, noise floor {ds['noise_floor']:.3g} "
-            f"{ds['unit']}{_nm(ds['noise_floor'], ds['unit'])}, held-out groups by {ds['cv_groups']}"
+            f"  {ds['test']:9s} {ds['file']}: {ds['rows']} rows, noise floor "
+            f"{ds['noise_floor']:.3g} {ds['unit']}{_nm(ds['noise_floor'], ds['unit'])}, held-out "
+            f"groups by {ds['cv_groups']}"
         )
         L.append(f"    noise floor from {ds['noise_method']}")
         for note in ds["data_notes"]:
@@ -368,7 +375,8 @@ def diagnosis_text(diag) -> str:
     for r in d["not_accepted"]:
         if r["dBIC"] < -10:  # the others all fail on BIC, said once below
             L.append(
-                f"not accepted (round {r['round']}): {r['effect']} (dBIC {r['dBIC']:.1f}): {r['reason']}"
+                f"not accepted (round {r['round']}): {r['effect']} (dBIC {r['dBIC']:.1f}): "
+                f"{r['reason']}"
             )
     rest = sum(1 for r in d["not_accepted"] if r["dBIC"] >= -10)
     if rest:
@@ -427,7 +435,8 @@ def diagnosis_text(diag) -> str:
         L += wrap_words("~ " + e["text"], indent="  ", cont="      ")
     if d["frf_modes"]:
         L.append(
-            f"resonance by position (peak of |G|){'measured':>15}{'|G| um/N':>10}{'baseline':>11}{'model':>10}"
+            "resonance by position (peak of "
+            f"|G|){'measured':>15}{'|G| um/N':>10}{'baseline':>11}{'model':>10}"
             f"{'damping':>9}"
         )
         for m in d["frf_modes"]:
@@ -440,35 +449,35 @@ def diagnosis_text(diag) -> str:
         m = d["frf_modes"][0]
         if m["extra_mode_Hz"] is not None:
             L.append(
-                f"  extra mode {m['extra_mode_Hz']:.1f} Hz, damping {100 * m['extra_mode_damping']:.2f} % "
-                "(all positions)"
+                f"  extra mode {m['extra_mode_Hz']:.1f} Hz, damping "
+                f"{100 * m['extra_mode_damping']:.2f} % (all positions)"
             )
     for u in d["unexplained"]:
         name = Path(u["file"]).name
         if u["remaining"]:
             L.append(
-                f"unexplained ({name}): the residual keeps structure beyond noise (RMS {u['rms_over_noise']:.2g}x "
-                "the noise floor):"
+                f"unexplained ({name}): the residual keeps structure beyond noise (RMS "
+                f"{u['rms_over_noise']:.2g}x the noise floor):"
             )
             for sg in u["signatures"]:
                 L.append(
-                    f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual variance. "
-                    f"Candidates: {sg['causes']}. To separate them: {sg['to_separate']}."
+                    f"  - residual {sg['signature']}: {100 * sg['share']:.0f} % of the residual "
+                    f"variance. Candidates: {sg['causes']}. To separate them: {sg['to_separate']}."
                 )
         elif u["rms_over_noise"] >= 1.5:
             L.append(
-                f"unexplained ({name}): the residual is {u['rms_over_noise']:.2g}x the noise floor, but no "
-                "recorded factor holds a significant share of it"
+                f"unexplained ({name}): the residual is {u['rms_over_noise']:.2g}x the noise "
+                "floor, but no recorded factor holds a significant share of it"
             )
         else:
             L.append(
-                f"residual ({name}): at the noise floor ({u['rms_over_noise']:.2g}x), no structure along the "
-                "recorded factors"
+                f"residual ({name}): at the noise floor ({u['rms_over_noise']:.2g}x), no structure "
+                "along the recorded factors"
             )
     for h in d["holdout_rmse_units"]:
         L.append(
-            f"held-out RMSE {Path(h['file']).name}: {h['baseline']:.3g} -> {h['final']:.3g} {h['unit']} "
-            f"(gain {h['gain_percent']:.0f} %)"
+            f"held-out RMSE {Path(h['file']).name}: {h['baseline']:.3g} -> {h['final']:.3g} "
+            f"{h['unit']} (gain {h['gain_percent']:.0f} %)"
             + (
                 f"; {h['baseline'] * torque:.3g} -> {h['final'] * torque:.3g} N.m at the screw"
                 if torque is not None and h["unit"] == "N"

@@ -1,7 +1,8 @@
-"""HTML pages of rack-and-pinion and linear-motor answers: a solve over drive types (``axisopt solve
---report``) and one saved drive design (``axisopt evaluate --report``): cards of the best design, a table of
-the designs with their parts and what every drive type has, each design's margins coloured by how close they
-are to failing, the margins figure (:mod:`.driveplot`) and the text answer."""
+"""HTML pages of rack-and-pinion and linear-motor answers: a solve over drive types
+(``axisopt solve --report``) and one saved drive design (``axisopt evaluate --report``): cards of
+the best design, a table of the designs with their parts and what every drive type has, each
+design's margins coloured by how close they are to failing, the margins figure (:mod:`.driveplot`)
+and the text answer."""
 
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
-"""The plot of a solve over drive types (``axisopt solve --plot`` when a rack-and-pinion or linear-motor design
-answers): each shown design's check and limit margins as horizontal bars against the line at 1 (a bar short of
-it fails), and the designs' objective against their cost."""
+"""The plot of a solve over drive types (``axisopt solve --plot`` when a rack-and-pinion or
+linear-motor design answers): each shown design's check and limit margins as horizontal bars against
+the line at 1 (a bar short of it fails), and the designs' objective against their cost."""
 
 from __future__ import annotations
 
@@ -9,9 +9,10 @@ from .drivetype import LABELS, MARGIN_LABELS
 
 
 def plot_drive_designs(res, path: str | None = None, top: int = 5):
-    """Margins of the best design (and the runners-up shown, ``top`` in all) of a drive types' answer
-    (:class:`axisopt.search.drivedesigns.DriveTypeResult`), or of the closest designs when none meets every
-    check, and each design's objective against its cost.  Returns the Figure; written to ``path`` if given."""
+    """Margins of the best design (and the runners-up shown, ``top`` in all) of a drive types'
+    answer (:class:`axisopt.search.drivedesigns.DriveTypeResult`), or of the closest designs when
+    none meets every check, and each design's objective against its cost.  Returns the Figure;
+    written to ``path`` if given."""
     from ..figure import Figure
 
     designs = (

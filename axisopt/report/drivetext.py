@@ -1,5 +1,6 @@
-"""The drive block of an evaluation's text: motor, coupling or reduction, duty cycle, torques, speeds, inertia,
-brake, lost motion, and the thermal warning (growth at the nut against THK's planning range).  Nothing here prints."""
+"""The drive block of an evaluation's text: motor, coupling or reduction, duty cycle, torques,
+speeds, inertia, brake, lost motion, and the thermal warning (growth at the nut against THK's
+planning range).  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -16,9 +17,8 @@ from .accuracy import reduction_lost_motion
 from .text import RPM, WIDTH
 
 # THK A-715: "set a negative target value for the reference travel distance assuming a temperature
-# increase of 2
-# to 5 degC (-0.02 mm to -0.06 mm/m)": growth beyond 0.06 mm per metre (a rise beyond 5 K) leaves
-# that practice
+# increase of 2 to 5 degC (-0.02 mm to -0.06 mm/m)": growth beyond 0.06 mm per metre (a rise beyond
+# 5 K) leaves that practice
 PRACTICE_GROWTH = 0.06e-3  # [m/m]
 
 
@@ -26,7 +26,8 @@ PRACTICE_RISE_MAX = 5.0  # [K]
 
 
 def drive_lines(ev: Evaluation) -> list:
-    """The drive block of ``evaluate``: motor, coupling, duty cycle, torques, speed, inertia, brake."""
+    """The drive block of ``evaluate``: motor, coupling, duty cycle, torques, speed, inertia,
+    brake."""
     d, v, a = ev.design, ev.values, ev.design.axis
     if d.motor is None:
         return [
@@ -39,9 +40,10 @@ def drive_lines(ev: Evaluation) -> list:
     ratio = a.reduction_ratio if r is None else float(r["ratio"])
     if r is not None:
         red = (
-            f"reduction {r['id']} ({r['vendor']} {r['kind']}; {ratio:g}:1, efficiency {float(r['efficiency']):g}, "
-            f"{float(r['inertia']) * 1e4:.3g} kg.cm^2 at the input, {float(r['torsional_stiffness']):,.0f} "
-            f"N.m/rad, backlash {float(r['backlash']) * 10800 / math.pi:g} arcmin"
+            f"reduction {r['id']} ({r['vendor']} {r['kind']}; {ratio:g}:1, efficiency "
+            f"{float(r['efficiency']):g}, {float(r['inertia']) * 1e4:.3g} kg.cm^2 at the input, "
+            f"{float(r['torsional_stiffness']):,.0f} N.m/rad, backlash "
+            f"{float(r['backlash']) * 10800 / math.pi:g} arcmin"
             + (f", {fmt(float(r['mass']), 'kg')}" if math.isfinite(float(r["mass"])) else "")
             + ")"
         )
@@ -83,8 +85,7 @@ def drive_lines(ev: Evaluation) -> list:
     peak = float(v["available_motor_peak_torque"])
     limited = "" if a.torque_limit is None else f", axis.torque_limit {fmt(a.torque_limit, 'N.m')}"
     # the needed column holds what the check compares: the cycle's peak scaled to the flat peak
-    # where the motor's
-    # zone falls at speed (the cycle's own peak on the line below)
+    # where the motor's zone falls at speed (the cycle's own peak on the line below)
     rows = [
         (
             "peak torque (cycle, thrust)",
@@ -182,8 +183,8 @@ def drive_lines(ev: Evaluation) -> list:
     )
     lines.extend(
         textwrap.wrap(
-            f"regeneration {v['regen_energy']:,.0f} J per cycle back from the motor, {v['regen_power']:,.0f} W mean "
-            "(braking"
+            f"regeneration {v['regen_energy']:,.0f} J per cycle back from the motor, "
+            f"{v['regen_power']:,.0f} W mean (braking"
             + (", lowering" if a.orientation == "vertical" else "")
             + "; before winding and drive losses): "
             "what the drive's regenerative resistor must take (Yaskawa 12.8.6), not checked",
@@ -197,7 +198,8 @@ def drive_lines(ev: Evaluation) -> list:
 
 
 def lost_motion_text(ev) -> str:
-    """The lost motion at the table by its cause: the nut's play and a reduction's backlash, each named."""
+    """The lost motion at the table by its cause: the nut's play and a reduction's backlash, each
+    named."""
     red = reduction_lost_motion(ev.design)
     nut = float(ev.values["backlash"]) - red
     if ev.design.reduction is None:
@@ -206,7 +208,8 @@ def lost_motion_text(ev) -> str:
 
 
 def _row_number(row, col: str, default: float) -> float:
-    """A part row's number in ``col``; ``default`` where it is empty or the table has no such column."""
+    """A part row's number in ``col``; ``default`` where it is empty or the table has no such
+    column."""
     try:
         v = float(row[col])
     except (KeyError, TypeError, ValueError):
@@ -225,9 +228,10 @@ def unit_rigidity_estimated(design) -> bool:
 
 
 def thermal_warning(ev: Evaluation) -> str:
-    """A warning where the thermal growth at the nut exceeds THK A-715's planning range (a negative target
-    travel of -0.02 to -0.06 mm/m for a 2-5 degC rise: PRACTICE_GROWTH per metre from the fixed bearing), or
-    where the practice rise is used but the heat balance of the default cycle would exceed it ('' if neither)."""
+    """A warning where the thermal growth at the nut exceeds THK A-715's planning range (a negative
+    target travel of -0.02 to -0.06 mm/m for a 2-5 degC rise: PRACTICE_GROWTH per metre from the
+    fixed bearing), or where the practice rise is used but the heat balance of the default cycle
+    would exceed it ('' if neither)."""
     a, v = ev.design.axis, ev.values
     x_far = a.start_offset + a.stroke
     allowed = PRACTICE_GROWTH * x_far
@@ -235,16 +239,17 @@ def thermal_warning(ev: Evaluation) -> str:
     out = []
     if growth > allowed * (1 + 1e-9):
         out.append(
-            f"thermal growth {growth * 1e6:.0f} um exceeds THK A-715's planning range (0.06 mm/m, a "
-            f"5 degC rise: {allowed * 1e6:.0f} um at {x_far * 1e3:.0f} mm from the fixed bearing); "
-            "limits.max_thermal_growth bounds it, a cooled screw (axis.heat_transfer), a lower preload "
-            "or a scale (feedback) takes it out"
+            f"thermal growth {growth * 1e6:.0f} um exceeds THK A-715's planning range (0.06 mm/m, "
+            f"a 5 degC rise: {allowed * 1e6:.0f} um at {x_far * 1e3:.0f} mm from the fixed "
+            "bearing); limits.max_thermal_growth bounds it, a cooled screw (axis.heat_transfer), a "
+            "lower preload or a scale (feedback) takes it out"
         )
     balance = float(v["heat_balance_rise"])
     if not a.rise_from_balance and a.temperature_rise is None and balance > PRACTICE_RISE_MAX:
         out.append(
-            f"the heat balance of continuous rapids gives +{balance:.3g} K, above THK A-715's 2-5 degC "
-            "planning range the practice rise assumes (axis.rise_without_cycle: balance uses it)"
+            f"the heat balance of continuous rapids gives +{balance:.3g} K, above THK A-715's 2-5 "
+            "degC planning range the practice rise assumes (axis.rise_without_cycle: balance uses "
+            "it)"
         )
     return ("warning: " + "; ".join(out)) if out else ""
 
@@ -253,20 +258,20 @@ def thermal_line(ev: Evaluation) -> str:
     a, v = ev.design.axis, ev.values
     u = np.asarray(v["thermal_displacement"])
     text = (
-        f"thermal: +{float(v['temperature_rise']):.3g} K moves the nut up to {np.max(np.abs(u)) * 1e3:.3f} mm "
-        f"(alpha 11.6e-6/K, HIWIN F 3.36)"
+        f"thermal: +{float(v['temperature_rise']):.3g} K moves the nut up to "
+        f"{np.max(np.abs(u)) * 1e3:.3f} mm (alpha 11.6e-6/K, HIWIN F 3.36)"
     )
     used = a.rise_from_balance
     how = (
         "rise from the heat balance of the duty cycle"
         if used and a.duty_cycle
-        else f"rise from the heat balance of the default cycle (axis.rise_without_cycle: balance; the practice rise "
-        f"would be {TEMPERATURE_RISE:g} K), continuous rapids"
+        else "rise from the heat balance of the default cycle (axis.rise_without_cycle: balance; "
+        f"the practice rise would be {TEMPERATURE_RISE:g} K), continuous rapids"
         if used
         else "rise as given; the heat balance"
         if a.temperature_rise is not None
-        else "rise: THK A-715's practice rise (axis.rise_without_cycle: practice), no duty cycle; the heat balance "
-        "of continuous rapids"
+        else "rise: THK A-715's practice rise (axis.rise_without_cycle: practice), no duty cycle; "
+        "the heat balance of continuous rapids"
     )
     film = (
         "axis.heat_transfer"
@@ -277,10 +282,10 @@ def thermal_line(ev: Evaluation) -> str:
     )
     rise = "" if used else f" would give +{float(v['heat_balance_rise']):.3g} K"
     balance = (
-        f"{how}: friction power {float(v['friction_power']):.3g} W (nut and bearings at the cycle's mean "
-        f"screw speed) through a lumped network (Jungnickel 2010): shaft film "
-        f"{float(v['heat_transfer']):.3g} W/(m^2.K) ({film}), conduction through the nut bracket and the "
-        f"shaft ends (estimated conductances, docs/assumptions.md){rise}"
+        f"{how}: friction power {float(v['friction_power']):.3g} W (nut and bearings at the "
+        "cycle's mean screw speed) through a lumped network (Jungnickel 2010): shaft film "
+        f"{float(v['heat_transfer']):.3g} W/(m^2.K) ({film}), conduction through the nut bracket "
+        f"and the shaft ends (estimated conductances, docs/assumptions.md){rise}"
     )
     text += "\n" + "\n".join(
         textwrap.wrap(balance, WIDTH, initial_indent="  ", subsequent_indent="    ")
@@ -305,7 +310,8 @@ def thermal_line(ev: Evaluation) -> str:
         )
         pre_line = (
             f"pretension {pre / 1e3:.1f} kN ({how_pre}); the rise pushes the elastic ends with "
-            f"{push / 1e3:.1f} kN: {rest}; bearing static load {v['bearing_static_load'] / 1e3:.1f} kN"
+            f"{push / 1e3:.1f} kN: {rest}; bearing static load "
+            f"{v['bearing_static_load'] / 1e3:.1f} kN"
         )
         text += "\n" + "\n".join(
             textwrap.wrap(pre_line, WIDTH, initial_indent="  ", subsequent_indent="    ")

@@ -8,7 +8,8 @@ WIDTH = 100  # the text fits 100 columns (tests/cli/test_solve_text_width.py)
 
 
 def _wrap(line: str) -> list:
-    """A long line broken at spaces within WIDTH, the continuation indented two more than the line."""
+    """A long line broken at spaces within WIDTH, the continuation indented two more than the
+    line."""
     indent = " " * (len(line) - len(line.lstrip()) + 2)
     return textwrap.wrap(line, WIDTH, subsequent_indent=indent, break_on_hyphens=False) or [line]
 
@@ -32,9 +33,10 @@ MARGIN_LABELS = {
 def _design(d, unit: str) -> list:
     lines = [
         f"  {LABELS[d.drive_type]}: " + ", ".join(f"{k} {v}" for k, v in d.parts.items()),
-        f"    objective {d.objective:.6g} {unit}; cost {d.cost:,.0f} EUR, moving mass {d.moving_mass:.1f} kg"
-        f" (a side), stiffness {d.stiffness:.1f} N/um, first frequency {d.frequency:.1f} Hz, positioning "
-        f"error {d.positioning_error:.1f} um",
+        f"    objective {d.objective:.6g} {unit}; cost {d.cost:,.0f} EUR, moving mass "
+        f"{d.moving_mass:.1f} kg"
+        f" (a side), stiffness {d.stiffness:.1f} N/um, first frequency {d.frequency:.1f} Hz, "
+        f"positioning error {d.positioning_error:.1f} um",
     ]
     if d.margins:
         lines.append(
@@ -77,8 +79,8 @@ def format_drive_result(res, top: int = 5) -> str:
 
 
 def format_drive_design(d, problem) -> str:
-    """The text of one evaluated rack-and-pinion or linear-motor design (``axisopt evaluate``): its parts,
-    objective, cost and outputs, and every check and limit margin with PASS or FAIL."""
+    """The text of one evaluated rack-and-pinion or linear-motor design (``axisopt evaluate``): its
+    parts, objective, cost and outputs, and every check and limit margin with PASS or FAIL."""
     from ..search.drivedesigns import objective_of
 
     _, (name, _, unit, _) = objective_of(problem)

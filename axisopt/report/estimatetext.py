@@ -1,6 +1,6 @@
-"""The estimated part values of one design (values not in the vendor's table) and what each moves: the key
-outputs and the checks near their limit; and the counterbalance block (cylinder or weight against the load).
-Nothing here prints."""
+"""The estimated part values of one design (values not in the vendor's table) and what each moves:
+the key outputs and the checks near their limit; and the counterbalance block (cylinder or weight
+against the load).  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -60,12 +60,13 @@ def counterbalance_lines(ev: Evaluation) -> list:
         )
     else:
         what = (
-            f"cylinder {cb.force:,.0f}..{cb.force_end:,.0f} N over the stroke +/- {cb.tolerance * 100:g} %: "
-            f"{b['rest']:,.0f} N taken (the end that loads the drive most)"
+            f"cylinder {cb.force:,.0f}..{cb.force_end:,.0f} N over the stroke +/- "
+            f"{cb.tolerance * 100:g} %: {b['rest']:,.0f} N taken (the end that loads the drive "
+            "most)"
         )
     text = (
-        f"counterbalance: {what}; the screw carries {b['net']:,.0f} N of the head's {b['weight']:,.0f} N "
-        "at rest"
+        f"counterbalance: {what}; the screw carries {b['net']:,.0f} N of the head's "
+        f"{b['weight']:,.0f} N at rest"
     )
     return textwrap.wrap(text, WIDTH, initial_indent="  ", subsequent_indent="    ")
 
@@ -83,8 +84,8 @@ NEAR_LIMIT = 1.1  # a check with margin below this counts as near its limit
 
 
 # defaults the life, torque and heat checks read, shown with their value: (axis attribute, display
-# unit, SI per unit)
-# (the temperature rise has its own line: the thermal block says where it comes from)
+# unit, SI per unit) (the temperature rise has its own line: the thermal block says where it comes
+# from)
 _DEFAULT_VALUES = {
     "mean_axial_load": ("mean_axial_load_eff", "N", 1.0),
     "mean_speed": ("mean_speed_eff", "m/min", 1 / 60),
@@ -107,8 +108,9 @@ def default_shown(axis, key: str) -> str:
 
 
 def estimates(ev: Evaluation) -> list:
-    """[(Estimate, [what it moves])] for the design's estimated part values except prices (which move only the
-    cost and are always illustrative): the key outputs and the checks within 10 % of their limit."""
+    """[(Estimate, [what it moves])] for the design's estimated part values except prices (which
+    move only the cost and are always illustrative): the key outputs and the checks within 10 % of
+    their limit."""
     from ..model.estimates import design_estimates, resting_on
 
     est = [e for e in design_estimates(ev.design) if "price" not in e.column]

@@ -1,5 +1,5 @@
-"""The evaluation of one design as a text table and a JSON dict, in vendor units (N/um, Hz, mm, N*m).
-Nothing here prints."""
+"""The evaluation of one design as a text table and a JSON dict, in vendor units (N/um, Hz, mm,
+N*m).  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -34,8 +34,8 @@ from .servo import servo_dict, servo_lines
 from .text import WIDTH
 
 # Each check's physical values in the unit vendors quote them in: (unit, factor from SI), DN in mm x
-# rpm; and
-# short names for tables with one column per design (both declared with the check in model.limits).
+# rpm; and short names for tables with one column per design (both declared with the check in
+# model.limits).
 CHECK_UNITS = {c.name: (c.unit, c.factor) for c in CHECK_TABLE}
 CHECK_SHORT = {c.name: c.short for c in CHECK_TABLE}
 # a horizontal screw's own-weight sag shown in the text from this [m] (long screws; the JSON always
@@ -44,8 +44,7 @@ SAG_SHOWN = 1e-4
 
 
 # Schneeberger ball screws, permissible speed: "if Ln/d0 > 50 an intermediate support is needed;
-# consult the maker
-# above 40" (tech-doc pages, docs/assumptions.md)
+# consult the maker above 40" (tech-doc pages, docs/assumptions.md)
 SLENDERNESS_SUPPORT, SLENDERNESS_CONSULT = 50.0, 40.0
 
 
@@ -150,8 +149,8 @@ def _finite(x):
 
 
 def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
-    """The text table ``axisopt evaluate`` prints; ``margins``: a problem's least check margins (``axisopt solve``:
-    the checks pass or fail against them, :func:`judged_rows`)."""
+    """The text table ``axisopt evaluate`` prints; ``margins``: a problem's least check margins
+    (``axisopt solve``: the checks pass or fail against them, :func:`judged_rows`)."""
     d = ev.design
     v = ev.values
     a = d.axis
@@ -225,8 +224,8 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
         else "nut bracket",
     }
     lines.append(
-        f"axial stiffness chain at its softest point ({(ev.x[i_min] - a.start_offset) * 1e3:.0f} mm "
-        f"along the stroke)"
+        f"axial stiffness chain at its softest point ({(ev.x[i_min] - a.start_offset) * 1e3:.0f} "
+        "mm along the stroke)"
     )
     lines.append(f"  {'component':<34}{'N/um':>10}{'um/kN':>9}{'share':>8}")
     for name, k in comps.items():
@@ -235,7 +234,8 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
             lines.append(f"  {labels[name]:<34}{'rigid':>10}{'0':>9}{'':>8}  (not given)")
             continue
         lines.append(
-            f"  {labels[name]:<34}{k / N_PER_UM:>10,.1f}{1e9 / k:>9.2f}{k_tot / k * 100:>7.0f}%{mark}"
+            "  "
+            f"{labels[name]:<34}{k / N_PER_UM:>10,.1f}{1e9 / k:>9.2f}{k_tot / k * 100:>7.0f}%{mark}"
         )
     if a.mounting == "fixed-fixed":
         k_sb = float(v["k_screw_bearings"][i_min])
@@ -263,10 +263,10 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
     )
     lines.extend(
         textwrap.wrap(
-            f"carriage: largest block load {v['guide_max_load'] / 1e3:.2f} kN, guide static safety f_S "
-            f"{v['guide_static_safety']:.1f} (least {a.guide_static_safety:g}); mean block load "
-            f"{v['guide_mean_load'] / 1e3:.2f} kN; nut static safety {v['nut_static_safety']:.1f} "
-            f"(least {a.nut_static_safety:g})",
+            f"carriage: largest block load {v['guide_max_load'] / 1e3:.2f} kN, guide static safety "
+            f"f_S {v['guide_static_safety']:.1f} (least {a.guide_static_safety:g}); mean block "
+            f"load {v['guide_mean_load'] / 1e3:.2f} kN; nut static safety "
+            f"{v['nut_static_safety']:.1f} (least {a.nut_static_safety:g})",
             WIDTH,
             initial_indent="  ",
             subsequent_indent="    ",
@@ -274,7 +274,8 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
     )
     lines.append("")
     lines.append(
-        f"{'over the stroke':<22}{'start':>10}{'middle':>10}{'end':>10}{'minimum':>10}{'at [mm]':>9}"
+        f"{'over the stroke':<22}{'start':>10}{'middle':>10}{'end':>10}{'minimum':>10}"
+        f"{'at [mm]':>9}"
     )
     s = ev.x - a.start_offset
     idx = [0, int(np.argmin(np.abs(s - a.stroke / 2))), len(s) - 1]
@@ -306,9 +307,10 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
     if sag >= SAG_SHOWN:
         lines.extend(
             textwrap.wrap(
-                f"screw sag under its own weight {sag * 1e3:.2f} mm between the supports {a.span * 1e3:.0f} mm apart "
-                "(a beam; the nut carries the shaft where it stands, and a pretension, gone when warm, is not "
-                "counted; no vendor gives a limit: limits.max_screw_sag)",
+                f"screw sag under its own weight {sag * 1e3:.2f} mm between the supports "
+                f"{a.span * 1e3:.0f} mm apart (a beam; the nut carries the shaft where it stands, "
+                "and a pretension, gone when warm, is not counted; no vendor gives a limit: "
+                "limits.max_screw_sag)",
                 WIDTH,
                 subsequent_indent="  ",
             )
@@ -317,10 +319,10 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
     if slender > SLENDERNESS_SUPPORT:
         lines.extend(
             textwrap.wrap(
-                f"warning: the screw is {slender:.0f} diameters long between its supports "
-                f"(span {a.span * 1e3:.0f} mm): "
-                f"Schneeberger asks an intermediate support above {SLENDERNESS_SUPPORT:g} (consult the maker above "
-                f"{SLENDERNESS_CONSULT:g}); limits.max_slenderness bounds it",
+                f"warning: the screw is {slender:.0f} diameters long between its supports (span "
+                f"{a.span * 1e3:.0f} mm): Schneeberger asks an intermediate support above "
+                f"{SLENDERNESS_SUPPORT:g} (consult the maker above {SLENDERNESS_CONSULT:g}); "
+                "limits.max_slenderness bounds it",
                 WIDTH,
                 subsequent_indent="  ",
             )
@@ -333,13 +335,14 @@ def evaluation_table(ev: Evaluation, margins: dict | None = None) -> str:
         for k in ("zeta_guides", "zeta_nut", "zeta_bearings", "zeta_structure")
     }
     lines.append(
-        f"damping of the axial mode {float(np.asarray(v['damping_ratio'])[i_min]) * 100:.1f} %  (guides "
-        f"{z['zeta_guides']:.1f}, nut {z['zeta_nut']:.2f}, bearings {z['zeta_bearings']:.2f}, structure "
-        f"{z['zeta_structure']:.1f}; seed T. 5-7)"
+        f"damping of the axial mode {float(np.asarray(v['damping_ratio'])[i_min]) * 100:.1f} %  "
+        f"(guides {z['zeta_guides']:.1f}, nut {z['zeta_nut']:.2f}, bearings "
+        f"{z['zeta_bearings']:.2f}, structure {z['zeta_structure']:.1f}; seed T. 5-7)"
     )
     lines.extend(
         textwrap.wrap(
-            f"drive-train modes (motor free) {float(np.asarray(v['f_axial_torsional'])[i_min]):.0f} and "
+            "drive-train modes (motor free) "
+            f"{float(np.asarray(v['f_axial_torsional'])[i_min]):.0f} and "
             f"{float(np.asarray(v['f_axial_torsional_2'])[i_min]):.0f} Hz;  "
             + lost_motion_text(ev),
             WIDTH,

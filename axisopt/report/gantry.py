@@ -1,11 +1,12 @@
-"""A twin-drive gantry's report entries (:mod:`axisopt.model.gantry`): the governing side's shares, the gantry's
-modes, and each side's checks at the cross carriage's worst position.
+"""A twin-drive gantry's report entries (:mod:`axisopt.model.gantry`): the governing side's shares,
+the gantry's modes, and each side's checks at the cross carriage's worst position.
 
-The limits are checked on the governing side (the one nearest the cross carriage at the end of its stroke); the
-far side at that moment carries 1 - r of the process force and less of the cross carriage's mass.  The table
-:func:`side_rows` shows both, for the checks the share changes (the loads, lives, lift-off, the torques), so the
-designer sees which side binds and what the other has left.  Both sides have the same parts, and the cross
-carriage at the other end swaps them: each side is in turn the governing one.
+The limits are checked on the governing side (the one nearest the cross carriage at the end of its
+stroke); the far side at that moment carries 1 - r of the process force and less of the cross
+carriage's mass.  The table :func:`side_rows` shows both, for the checks the share changes (the
+loads, lives, lift-off, the torques), so the designer sees which side binds and what the other has
+left.  Both sides have the same parts, and the cross carriage at the other end swaps them: each side
+is in turn the governing one.
 """
 
 from __future__ import annotations
@@ -24,8 +25,9 @@ SAME = 1e-3
 
 
 def side_rows(ev: Evaluation) -> list:
-    """Per check the share changes: ``check``, ``label``, ``unit``, ``needed`` on the governing and far side,
-    ``available``, both margins and the governing side's pass (a twin drive only; [] for one drive)."""
+    """Per check the share changes: ``check``, ``label``, ``unit``, ``needed`` on the governing and
+    far side, ``available``, both margins and the governing side's pass (a twin drive only; [] for
+    one drive)."""
     if ev.design.axis.twin_drive is None:
         return []
     far = evaluate(ev.design, len(ev.x), side="far")
@@ -54,8 +56,8 @@ def side_rows(ev: Evaluation) -> list:
 
 
 def twin_dict(ev: Evaluation) -> dict:
-    """A twin-drive gantry's entries (model.gantry): the governing side's shares, the gantry's modes and each side's
-    checks (:func:`side_rows`); none for one drive."""
+    """A twin-drive gantry's entries (model.gantry): the governing side's shares, the gantry's modes
+    and each side's checks (:func:`side_rows`); none for one drive."""
     tw = ev.design.axis.twin_drive
     if tw is None:
         return {}
@@ -97,22 +99,23 @@ def twin_lines(ev: Evaluation) -> list:
         else ""
     )
     L = [
-        f"twin drive: 2 drives {d['span_mm']:.0f} mm apart, cross carriage {d['cross_mass_kg']:.0f} kg over "
-        f"{d['cross_stroke_mm']:.0f} mm; governing side at the stroke end: "
-        f"{d['governing_side_force_share'] * 100:.1f} % of the process force, "
+        f"twin drive: 2 drives {d['span_mm']:.0f} mm apart, cross carriage "
+        f"{d['cross_mass_kg']:.0f} kg over {d['cross_stroke_mm']:.0f} mm; governing side at the "
+        f"stroke end: {d['governing_side_force_share'] * 100:.1f} % of the process force, "
         f"{d['governing_side_moving_mass_kg']:.1f} of {d['gantry_moving_mass_kg']:.1f} kg",
-        f"  gantry modes (2-DOF translation + yaw, both chains): lowest {d['min_gantry_frequency_Hz']:.1f} Hz; "
-        f"racking {min(d['racking_frequency_Hz']):.1f} Hz at its lowest, yaw stiffness "
-        f"{d['min_racking_stiffness_Nm_per_urad']:.1f} N.m/urad{est}; the guides-only yaw mode is not in the "
-        "1st frequency",
+        "  gantry modes (2-DOF translation + yaw, both chains): lowest "
+        f"{d['min_gantry_frequency_Hz']:.1f} Hz; racking {min(d['racking_frequency_Hz']):.1f} Hz "
+        f"at its lowest, yaw stiffness {d['min_racking_stiffness_Nm_per_urad']:.1f} N.m/urad{est}; "
+        "the guides-only yaw mode is not in the 1st frequency",
     ]
     rows = d["sides"]
     if rows:
         share = d["governing_side_force_share"]
         L.append(
-            f"  each side with the cross carriage at the end of its stroke (governing side {share * 100:.1f} %,"
-            f" far side {(1 - share) * 100:.1f} % of the process force; the limits are checked on the "
-            "governing side, and the sides swap when the carriage crosses):"
+            "  each side with the cross carriage at the end of its stroke (governing side "
+            f"{share * 100:.1f} %,"
+            f" far side {(1 - share) * 100:.1f} % of the process force; the limits are checked on "
+            "the governing side, and the sides swap when the carriage crosses):"
         )
         # a longer label is wrapped above its numbers
         w = min(WIDTH - 30, max(len(r["label"]) for r in rows))

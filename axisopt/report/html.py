@@ -1,14 +1,15 @@
-"""Self-contained HTML reports: one file with the summary first, then sections, readable on a phone.  The
-figures are static SVG by default (matplotlib, :mod:`axisopt.report.static`: the file opens offline, needs no
-plotly and stays well under 1.5 MB); with ``interactive=True`` they are plotly figures (zoom, hover), its
-JavaScript inlined once (offline, about 5 MB) or loaded from the plotly CDN.
+"""Self-contained HTML reports: one file with the summary first, then sections, readable on a phone.
+The figures are static SVG by default (matplotlib, :mod:`axisopt.report.static`: the file opens
+offline, needs no plotly and stays well under 1.5 MB); with ``interactive=True`` they are plotly
+figures (zoom, hover), its JavaScript inlined once (offline, about 5 MB) or loaded from the plotly
+CDN.
 
-:class:`Page` collects blocks (key figures, text, tables, figures) under headings; the ``*_page`` builders turn
-an evaluation, a solve result, a comparison, a study table or a diagnosis into a Page.  plotly is an optional
-dependency (``pip install 'axisopt[html]'``), needed only for interactive figures; without it
-:func:`require_plotly` is a one-line error.  Tables wrap their text and part ids to fit a 1280 px window;
-on a phone a table wider than the screen scrolls inside its own box (no column is ever hidden).  Nothing
-here prints; :func:`write_page` writes atomically."""
+:class:`Page` collects blocks (key figures, text, tables, figures) under headings; the ``*_page``
+builders turn an evaluation, a solve result, a comparison, a study table or a diagnosis into a Page.
+plotly is an optional dependency (``pip install 'axisopt[html]'``), needed only for interactive
+figures; without it :func:`require_plotly` is a one-line error.  Tables wrap their text and part ids
+to fit a 1280 px window; on a phone a table wider than the screen scrolls inside its own box (no
+column is ever hidden).  Nothing here prints; :func:`write_page` writes atomically."""
 
 from __future__ import annotations
 
@@ -52,7 +53,7 @@ td.wrap, th.wrap { white-space: normal; text-align: left; min-width: 12em; }
 footer { color: var(--muted); font-size: .8em; margin-top: 2em; }
 @media (max-width: 600px) { body { padding: 8px; } table { font-size: 12px; } th, td { padding: 3px 4px; }
   td.wrap, th.wrap { min-width: 7em; } td.n { white-space: normal; } }
-"""
+"""  # noqa: E501
 
 
 def require_plotly():
@@ -66,7 +67,8 @@ def require_plotly():
 
 @dataclass
 class Page:
-    """An HTML report under construction: ``cards`` (label, value, state) first, then the sections."""
+    """An HTML report under construction: ``cards`` (label, value, state) first, then the
+    sections."""
 
     title: str
     subtitle: str = ""
@@ -83,15 +85,16 @@ class Page:
         return body
 
     def figure(self, heading: str, interactive, static, height: int = 420) -> None:
-        """A section ``heading`` holding one figure: ``interactive()`` (a plotly figure) on an interactive page,
-        else ``static()`` (a matplotlib Figure) as SVG; each is only built when used."""
+        """A section ``heading`` holding one figure: ``interactive()`` (a plotly figure) on an
+        interactive page, else ``static()`` (a matplotlib Figure) as SVG; each is only built when
+        used."""
         body = self.section(heading)
         body.append(figure(interactive(), height) if self.interactive else _svg(static(), heading))
 
     def render(self, plotly_js: str = "inline") -> str:
-        """The page; on an interactive page ``plotly_js`` 'inline' (plotly.js in the file: offline) or 'cdn' (a
-        script tag loading the installed plotly's version from the plotly CDN: a small file that needs the
-        network).  A static page has no script at all."""
+        """The page; on an interactive page ``plotly_js`` 'inline' (plotly.js in the file: offline)
+        or 'cdn' (a script tag loading the installed plotly's version from the plotly CDN: a small
+        file that needs the network).  A static page has no script at all."""
         if not self.interactive:
             script, credit = (
                 "",
@@ -156,10 +159,10 @@ def para(text: str) -> str:
 
 
 def table(head, rows, states=None, classes=None) -> str:
-    """A table in its own horizontal scroller (the page never scrolls sideways); ``states`` (optional) gives
-    per row the class of its last cell ('ok' / 'bad'), ``classes`` (optional) per row a list of cell classes
-    ('' for none).  Text and part ids wrap (a 1280 px window shows every column); a number with its unit
-    stays on one line."""
+    """A table in its own horizontal scroller (the page never scrolls sideways); ``states``
+    (optional) gives per row the class of its last cell ('ok' / 'bad'), ``classes`` (optional) per
+    row a list of cell classes ('' for none).  Text and part ids wrap (a 1280 px window shows every
+    column); a number with its unit stays on one line."""
     # a heading may break after a dot or underscore (axis.<wbr>moving_<wbr>mass [kg]): long key
     # names fit
     th = "".join(f"<th>{_breakable(h)}</th>" for h in head)
@@ -181,12 +184,16 @@ def table(head, rows, states=None, classes=None) -> str:
         if states is not None and states[i]:
             cells[-1] = f'<td class="{states[i]}">{_html(r[-1])}</td>'
         trs.append("<tr>" + "".join(cells) + "</tr>")
-    return f'<div class="scroll"><table><thead><tr>{th}</tr></thead><tbody>{"".join(trs)}</tbody></table></div>'
+    return (
+        "<div "
+        f'class="scroll"><table><thead><tr>{th}</tr></thead><tbody>{"".join(trs)}'
+        "</tbody></table></div>"
+    )
 
 
 def _html(v) -> str:
-    """A cell's text, escaped; a list (a design's part ids) one unbroken id after the other, wrapping only
-    between ids."""
+    """A cell's text, escaped; a list (a design's part ids) one unbroken id after the other,
+    wrapping only between ids."""
     if isinstance(v, (list, tuple)):
         return " / ".join(f'<span class="id">{_e(x)}</span>' for x in v)
     return _e(v)
@@ -196,8 +203,8 @@ _BREAK = re.compile(r"([._])(?=\w)")
 
 
 def _breakable(heading: str) -> str:
-    """A heading escaped, with a break opportunity after each dot and underscore of its name (not of its unit:
-    ``axis.<wbr>moving_<wbr>mass [kg]``, ``drag [N.m]`` whole)."""
+    """A heading escaped, with a break opportunity after each dot and underscore of its name (not of
+    its unit: ``axis.<wbr>moving_<wbr>mass [kg]``, ``drag [N.m]`` whole)."""
     name, sep, unit = str(heading).partition(" [")
     return _BREAK.sub(r"\1<wbr>", _e(name)) + _e(sep + unit)
 
@@ -226,8 +233,8 @@ def figure(fig, height: int = 420) -> str:
 
 
 def check_report_path(path, interactive: bool = False) -> None:
-    """A --report target must end in .html, and plotly must be installed for interactive figures (one-line
-    InputError otherwise)."""
+    """A --report target must end in .html, and plotly must be installed for interactive figures
+    (one-line InputError otherwise)."""
     if not str(path).lower().endswith((".html", ".htm")):
         raise InputError(
             f"the report is HTML: give a file ending in .html, not '{path}'", where="--report"
@@ -244,7 +251,8 @@ PLOTLY_CHOICES = ("no", "inline", "cdn")
 
 
 def write_page(page: Page, path, plotly: str = "no") -> None:
-    """Write ``page`` to ``path``; ``plotly`` as :meth:`Page.render` takes it ('no' on a static page)."""
+    """Write ``page`` to ``path``; ``plotly`` as :meth:`Page.render` takes it ('no' on a static
+    page)."""
     from ..fileio import write_text_atomic
 
     check_report_path(path, page.interactive)
@@ -276,9 +284,9 @@ MARGIN_CLASSES = ((1.0, "m-fail"), (1.1, "m-tight"), (1.5, "m-fair"))
 
 
 def margin_class(m, passed: bool | None = None) -> str:
-    """How close a margin (available / needed) is to failing: m-fail < 1 <= m-tight < 1.1 <= m-fair < 1.5 <=
-    m-ample.  A check that passes (``passed``: a margin the solver put on its limit, 0.9999999 printed as 1.00)
-    is tight, never coloured as failing."""
+    """How close a margin (available / needed) is to failing: m-fail < 1 <= m-tight < 1.1 <= m-fair
+    < 1.5 <= m-ample.  A check that passes (``passed``: a margin the solver put on its limit,
+    0.9999999 printed as 1.00) is tight, never coloured as failing."""
     if m is None or not math.isfinite(m):
         return ""
     for bound, cls in MARGIN_CLASSES:
@@ -307,8 +315,8 @@ def parts_table(design, problem=None) -> str:
 
 
 def checks_table(ev, margins: dict | None = None) -> str:
-    """The checks with their values and margins; ``margins``: a problem's least margins (pass or FAIL against
-    them, :func:`axisopt.report.evaluation.judged_rows`)."""
+    """The checks with their values and margins; ``margins``: a problem's least margins (pass or
+    FAIL against them, :func:`axisopt.report.evaluation.judged_rows`)."""
     from .checktext import judged_rows
     from .text import fmt_value
 

@@ -1,6 +1,6 @@
-"""The HTML pages of the commands that report more than one design or a diagnosis: a solve (its best design, the
-runners-up and the Pareto front), designs side by side, a study and a table diagnosis; each built from
-:mod:`.html`'s ``Page``, tables and figures."""
+"""The HTML pages of the commands that report more than one design or a diagnosis: a solve (its best
+design, the runners-up and the Pareto front), designs side by side, a study and a table diagnosis;
+each built from :mod:`.html`'s ``Page``, tables and figures."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ from .html import MARGIN_KEY, Page, checks_table, margin_class, parts_table, pre
 
 
 def solve_page(res, problem, text: str, interactive: bool = False) -> Page:
-    """A solve: status and certificate first, the best design's profile (with the runners-up) or the Pareto
-    front as a scatter matrix, the checks of the best design, and the printed result."""
+    """A solve: status and certificate first, the best design's profile (with the runners-up) or the
+    Pareto front as a scatter matrix, the checks of the best design, and the printed result."""
     from ..model import evaluate
     from . import static
     from .plots import distinct_labels, plot_profiles
@@ -210,7 +210,8 @@ def compare_page(items, text: str, interactive: bool = False) -> Page:
 
 
 def study_page(study, df, text: str, interactive: bool = False) -> Page:
-    """A study: counts by status, the objective against each numeric swept input, the results table."""
+    """A study: counts by status, the objective against each numeric swept input, the results
+    table."""
     import pandas as pd
 
     from ..study.table import input_columns
@@ -274,8 +275,10 @@ def study_page(study, df, text: str, interactive: bool = False) -> Page:
 
 
 def diagnose_page(diag, text: str, interactive: bool = False) -> Page:
-    """A diagnosis: the verdict first (an effect named and confirmed on held-out data is the diagnosis's
-    success: green, never red), then residuals against each factor before and after, and the text."""
+    """A diagnosis: the verdict first (an effect named and confirmed on held-out data is the
+    diagnosis's
+    success: green, never red), then residuals against each factor before and after, and the
+    text."""
     from ..identify.tables.diagnose import split_by_observation as _split
     from .diagfiles import residual_figures
     from .diagnosis import diagnosis_dict

@@ -1,5 +1,5 @@
-"""Interactive figures of the HTML reports (``--plotly inline|cdn``): plotly twins of the static figures
-(:mod:`axisopt.report.static`), with zoom and hover for values and part ids.  Needs plotly
+"""Interactive figures of the HTML reports (``--plotly inline|cdn``): plotly twins of the static
+figures (:mod:`axisopt.report.static`), with zoom and hover for values and part ids.  Needs plotly
 (``pip install 'axisopt[html]'``); imported only for an interactive page."""
 
 from __future__ import annotations
@@ -91,7 +91,8 @@ def chain_figure(ev):
 
 
 def drive_figure(ev):
-    """The duty cycle on the motor's torque-speed plane (plotly twin of report.plots' panel), or None."""
+    """The duty cycle on the motor's torque-speed plane (plotly twin of report.plots' panel), or
+    None."""
     import plotly.graph_objects as go
 
     from .plots import duty_points
@@ -161,8 +162,8 @@ def drive_figure(ev):
 
 
 def frf_figure(ev):
-    """Table compliance over frequency at stroke start, middle and end: motor held (the headline first
-    frequency's model), motor free and with the tuned servo."""
+    """Table compliance over frequency at stroke start, middle and end: motor held (the headline
+    first frequency's model), motor free and with the tuned servo."""
     from plotly.subplots import make_subplots
 
     from ..model.frf import frf
@@ -209,7 +210,8 @@ def frf_figure(ev):
 
 
 def pareto_figure(front):
-    """Scatter matrix of the chosen objectives: sampled feasible designs in grey, the front in colour."""
+    """Scatter matrix of the chosen objectives: sampled feasible designs in grey, the front in
+    colour."""
     import plotly.graph_objects as go
 
     from ..search.pareto import FIELD
@@ -248,7 +250,8 @@ def pareto_figure(front):
 
 
 def objective_figure(df, name: str, key: str, unit: str, ok):
-    """A study's objective against one swept input (the twin of :func:`axisopt.report.static.objective_figure`)."""
+    """A study's objective against one swept input (the twin of
+    :func:`axisopt.report.static.objective_figure`)."""
     import plotly.graph_objects as go
 
     fig = go.Figure()
@@ -273,7 +276,8 @@ def objective_figure(df, name: str, key: str, unit: str, ok):
             mode="lines",
             line=dict(color="#c62828", width=6),
             opacity=0.3,
-            name=f"input of a case without a design ({int((~ok).sum())} cases; reasons in the table)",
+            name=f"input of a case without a design ({int((~ok).sum())} cases; reasons in the "
+            "table)",
         )
     fig.update_layout(
         title=f"objective against {key}", xaxis_title=name, yaxis_title=f"objective [{unit}]"

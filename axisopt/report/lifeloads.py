@@ -1,5 +1,5 @@
-"""The life checks' load table of ``evaluate`` (text and JSON), in the units of the vendors' worked examples
-(THK A-725 to A-730: N, mm, m/min)."""
+"""The life checks' load table of ``evaluate`` (text and JSON), in the units of the vendors' worked
+examples (THK A-725 to A-730: N, mm, m/min)."""
 
 from __future__ import annotations
 
@@ -19,9 +19,9 @@ _COLUMNS = (
 
 
 def life_lines(ev: Evaluation) -> list:
-    """The load cases the nut and support-bearing lives are computed from, one per duty-cycle phase group that
-    travels (or the mean axial load each way), with the cubic-mean loads, the equivalent loads on the ratings
-    and the mean speed."""
+    """The load cases the nut and support-bearing lives are computed from, one per duty-cycle phase
+    group that travels (or the mean axial load each way), with the cubic-mean loads, the equivalent
+    loads on the ratings and the mean speed."""
     t = life_table(ev.design)
     if not table_rows_finite(t):
         return ["life loads: not finite (check the duty cycle and the loads)"]

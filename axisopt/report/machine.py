@@ -35,10 +35,12 @@ def _design_lines(md, objective: str) -> list:
         L.append(f"  {a.name:<5} screw {c.screw}, nut {c.nut}, preload {c.nut_preload:,.0f} N")
         L.append(f"  {'':<5} bearing {c.bearing}, guide {c.guide}{arr}")
         L.append(
-            f"  {'':<5} motor {c.motor or '-'}, coupling {c.coupling or '-'}, reduction {c.reduction or '-'}"
+            f"  {'':<5} motor {c.motor or '-'}, coupling {c.coupling or '-'}, reduction "
+            f"{c.reduction or '-'}"
         )
         L.append(
-            f"  {'':<5} carries {a.carried:,.1f} kg, moves {a.lumped:,.1f} kg, cost {a.cost:,.0f} EUR"
+            f"  {'':<5} carries {a.carried:,.1f} kg, moves {a.lumped:,.1f} kg, cost {a.cost:,.0f} "
+            "EUR"
         )
     L.append(
         "  stiffness at the tool, each link in N/um (axis part, frame under it; * an estimate):"
@@ -65,8 +67,8 @@ def _design_lines(md, objective: str) -> list:
         )
     d, who, role = md.lowest_at
     L.append(
-        f"  lowest natural frequency {md.f_lowest:.1f} Hz ({d}-direction mode, most strain energy in "
-        f"{who}'s {role} link); Dunkerley's bound {md.f_dunkerley:.1f} Hz"
+        f"  lowest natural frequency {md.f_lowest:.1f} Hz ({d}-direction mode, most strain energy "
+        f"in {who}'s {role} link); Dunkerley's bound {md.f_dunkerley:.1f} Hz"
     )
     L.append(f"  cost {md.cost:,.0f} EUR, moving masses {md.moving_mass:,.1f} kg")
     for key, v, lim in md.misses:
@@ -79,12 +81,14 @@ def format_machine(res) -> str:
     """The joint optimum, the sequential sizing beside it and what the joint search gained."""
     m = res.machine
     L = [
-        f"machine {m.name}: {len(m.axes)} axes ({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
+        f"machine {m.name}: {len(m.axes)} axes "
+        f"({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
         f" on the frame), objective {m.objective}, method {res.method}"
     ]
     L.append(
-        f"status {res.status}: {res.nominal_combinations:.3g} nominal joint combinations, {res.axis_solves} "
-        f"axis solves, offers kept {', '.join(f'{k} {v}' for k, v in res.offers.items())}"
+        f"status {res.status}: {res.nominal_combinations:.3g} nominal joint combinations, "
+        f"{res.axis_solves} axis solves, offers kept "
+        f"{', '.join(f'{k} {v}' for k, v in res.offers.items())}"
     )
     L.append(f"time {res.time:.1f} s")
     if res.best is None:
@@ -96,20 +100,23 @@ def format_machine(res) -> str:
     L.append("")
     if res.sequential is None:
         L.append(
-            "sequential sizing (top axis first): an axis has no feasible design at the mass carried to it"
+            "sequential sizing (top axis first): an axis has no feasible design at the mass "
+            "carried to it"
         )
     else:
         seq = res.sequential
         L.append(
-            f"sequential sizing (top axis first, each alone at its best, its mass carried down): "
-            f"{_val(m.objective, seq.value(m.objective))}{'' if seq.feasible else ', misses the machine limits'}"
+            "sequential sizing (top axis first, each alone at its best, its mass carried down): "
+            f"{_val(m.objective, seq.value(m.objective))}"
+            f"{'' if seq.feasible else ', misses the machine limits'}"
         )
         L += _design_lines(seq, m.objective)
         if res.best is not None:
             L.append("")
             if not seq.feasible:
                 L.append(
-                    "the joint search gained: a machine that meets every limit (the sequential one does not)"
+                    "the joint search gained: a machine that meets every limit (the sequential one "
+                    "does not)"
                 )
             elif abs(res.gain) <= 1e-9 * max(1.0, abs(res.best.value(m.objective))):
                 L.append("the joint search gained: the same")
@@ -130,18 +137,20 @@ def format_machine(res) -> str:
 
 
 def format_evaluation(ev) -> str:
-    """A machine of chosen parts (:class:`axisopt.machine.evaluate.MachineEvaluation`): every axis, the
-    stiffness chain at the tool with each link, the frequencies and the machine limits it misses."""
+    """A machine of chosen parts (:class:`axisopt.machine.evaluate.MachineEvaluation`): every axis,
+    the stiffness chain at the tool with each link, the frequencies and the machine limits it
+    misses."""
     m = ev.machine
     L = [
-        f"machine {m.name}: {len(m.axes)} axes ({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
+        f"machine {m.name}: {len(m.axes)} axes "
+        f"({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
         " on the frame), its parts as chosen"
     ]
     if ev.design is None:
         for name, load in ev.failed:
             L.append(
-                f"axis {name}: its parts miss its own limits carrying {load:,.1f} kg (evaluate it alone with "
-                "`axisopt solve`, whose answer says which limit)"
+                f"axis {name}: its parts miss its own limits carrying {load:,.1f} kg (evaluate it "
+                "alone with `axisopt solve`, whose answer says which limit)"
             )
     else:
         L += _design_lines(ev.design, m.objective)

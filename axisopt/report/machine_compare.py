@@ -1,7 +1,8 @@
-"""Machines side by side: each a machine solve's plain data (:func:`axisopt.machine.record.result_dict`, as
-``axisopt machine solve --json`` writes it), one column per machine: the joint optimum, the stiffness at the tool
-per direction and its most compliant link, the lowest frequency and what limits it, the moving masses, the
-sequential sizing, and every axis's parts."""
+"""Machines side by side: each a machine solve's plain data
+(:func:`axisopt.machine.record.result_dict`, as ``axisopt machine solve --json`` writes it), one
+column per machine: the joint optimum, the stiffness at the tool per direction and its most
+compliant link, the lowest frequency and what limits it, the moving masses, the sequential sizing,
+and every axis's parts."""
 
 from __future__ import annotations
 
@@ -19,7 +20,8 @@ def objective_value(design: dict, objective: str) -> float:
 
 
 def check_result(d, source: str) -> dict:
-    """``d`` read from ``source`` must be a machine result (InputError naming the file otherwise)."""
+    """``d`` read from ``source`` must be a machine result (InputError naming the file
+    otherwise)."""
     need = ("machine", "objective", "status", "best", "sequential")
     if not isinstance(d, dict) or any(k not in d for k in need) or d.get("objective") not in _UNITS:
         raise InputError(

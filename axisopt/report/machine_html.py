@@ -1,7 +1,7 @@
-"""A machine solve as a self-contained HTML report (:class:`axisopt.report.html.Page`): key figures first,
-the stiffness chain at the tool with every link (the axis part along or across its travel and the frame under
-it, each link's share of the compliance), the per-axis designs, the lumped chain's frequencies, the sequential
-sizing beside the joint optimum, and the printed result."""
+"""A machine solve as a self-contained HTML report (:class:`axisopt.report.html.Page`): key figures
+first, the stiffness chain at the tool with every link (the axis part along or across its travel and
+the frame under it, each link's share of the compliance), the per-axis designs, the lumped chain's
+frequencies, the sequential sizing beside the joint optimum, and the printed result."""
 
 from __future__ import annotations
 
@@ -17,8 +17,8 @@ _UNITS = {
 
 
 def link_rows(md) -> list:
-    """Per axis and direction: (axis, direction, role, axis part, frame, link [N/um], share of the compliance at
-    the tool [%]); the frame marked '(estimate)' where the machine file gives none."""
+    """Per axis and direction: (axis, direction, role, axis part, frame, link [N/um], share of the
+    compliance at the tool [%]); the frame marked '(estimate)' where the machine file gives none."""
     rows = []
     for i, d in enumerate(DIRECTIONS):
         for a in md.axes:
@@ -90,7 +90,8 @@ LINK_HEAD = [
 
 
 def compliance_figure(md):
-    """The compliance at the tool per direction, stacked by link (axis part and frame of every axis) [um/kN]."""
+    """The compliance at the tool per direction, stacked by link (axis part and frame of every axis)
+    [um/kN]."""
     from ..figure import Figure
     from ..fileio import tidy_layout
 
@@ -140,8 +141,8 @@ def _design_sections(page, md, label: str) -> None:
     d, who, role = md.lowest_at
     body.append(
         H.para(
-            f"lowest {md.f_lowest:.1f} Hz ({d}-direction mode, most strain energy in {who}'s {role} "
-            f"link); Dunkerley's lower bound {md.f_dunkerley:.1f} Hz"
+            f"lowest {md.f_lowest:.1f} Hz ({d}-direction mode, most strain energy in {who}'s "
+            f"{role} link); Dunkerley's lower bound {md.f_dunkerley:.1f} Hz"
         )
     )
     if md.misses:
@@ -153,7 +154,8 @@ def _design_sections(page, md, label: str) -> None:
 
 
 def machine_page(res, text: str, interactive: bool = False):
-    """The report of a :class:`axisopt.machine.joint.MachineResult`; ``text`` is the printed result."""
+    """The report of a :class:`axisopt.machine.joint.MachineResult`; ``text`` is the printed
+    result."""
     m = res.machine
     unit, f = _UNITS[m.objective]
     page = H.Page(
@@ -194,7 +196,8 @@ def machine_page(res, text: str, interactive: bool = False):
 
 
 def evaluation_page(ev, text: str, interactive: bool = False):
-    """The report of a machine of chosen parts (:class:`axisopt.machine.evaluate.MachineEvaluation`)."""
+    """The report of a machine of chosen parts
+    (:class:`axisopt.machine.evaluate.MachineEvaluation`)."""
     m = ev.machine
     page = H.Page(f"Machine: {m.name}", "its parts as chosen", interactive=interactive)
     md = ev.design

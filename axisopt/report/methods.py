@@ -23,7 +23,8 @@ def _num(v):
 
 
 def methods_table(rows) -> str:
-    """Text table of :func:`axisopt.model.methods.stiffness_methods` rows in N/um, ``*`` on the used value."""
+    """Text table of :func:`axisopt.model.methods.stiffness_methods` rows in N/um, ``*`` on the used
+    value."""
     lines = [
         "stiffness by method [N/um]   (* the value the model uses)",
         f"  {'component':<10}{'method':<34}{'value':>10}  note",
@@ -82,9 +83,10 @@ def _curves(result: dict) -> list:
 
 
 def frf_dict(result: dict, held: dict | None = None, closed: dict | None = None) -> dict:
-    """JSON-ready dynamic compliance of :func:`axisopt.model.frf.frf` (um/N, deg, Hz); with ``held`` (the
-    same with the motor held, the headline first frequency's model) and ``closed`` (the closed-loop
-    compliance at the tool with the tuned servo, :func:`closed_loop_frf`) on the same grid."""
+    """JSON-ready dynamic compliance of :func:`axisopt.model.frf.frf` (um/N, deg, Hz); with ``held``
+    (the same with the motor held, the headline first frequency's model) and ``closed`` (the
+    closed-loop compliance at the tool with the tuned servo, :func:`closed_loop_frf`) on the same
+    grid."""
     out = {
         "motor_held": bool(result["motor_held"]),
         "frequency_Hz": [float(f) for f in result["frequency_Hz"]],
@@ -98,8 +100,9 @@ def frf_dict(result: dict, held: dict | None = None, closed: dict | None = None)
 
 
 def closed_loop_frf(ev, freqs) -> dict:
-    """The closed-loop compliance at the tool x_tool / F with the tuned servo (:mod:`axisopt.model.servo`) at
-    stroke start, middle and end, in the layout of :func:`axisopt.model.frf.frf`."""
+    """The closed-loop compliance at the tool x_tool / F with the tuned servo
+    (:mod:`axisopt.model.servo`) at stroke start, middle and end, in the layout of
+    :func:`axisopt.model.frf.frf`."""
     from ..model.frf import frf_positions
     from ..model.servo import frequency_response, tune
 
@@ -128,10 +131,11 @@ def closed_loop_frf(ev, freqs) -> dict:
 def plot_frf(
     result: dict, path: str | None = None, held: dict | None = None, closed: dict | None = None
 ):
-    """Magnitude (log-log, um/N) and phase of the table compliance, one colour per nut position, the modes
-    as vertical lines in the same colour.  With ``held`` and ``closed``: the motor-held curve (solid, its
-    first mode the headline first frequency), the motor-free one (dashed) and the closed loop with the tuned
-    servo (dotted), each labelled.  Returns the matplotlib Figure; written to ``path`` only when given."""
+    """Magnitude (log-log, um/N) and phase of the table compliance, one colour per nut position, the
+    modes as vertical lines in the same colour.  With ``held`` and ``closed``: the motor-held curve
+    (solid, its first mode the headline first frequency), the motor-free one (dashed) and the closed
+    loop with the tuned servo (dotted), each labelled.  Returns the matplotlib Figure; written to
+    ``path`` only when given."""
     from ..figure import Figure
 
     f = np.asarray(result["frequency_Hz"], dtype=float)

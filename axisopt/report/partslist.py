@@ -1,15 +1,18 @@
-"""The parts list of a design, as one would order it: each part's id, vendor, quantity and what to tell the
-vendor (the screw's bearing span, the nut's preload in round figures, the rails' length).  Nothing here prints.
+"""The parts list of a design, as one would order it: each part's id, vendor, quantity and what to
+tell the vendor (the screw's bearing span, the nut's preload in round figures, the rails' length).
+Nothing here prints.
 
-The nut preload is ordered in round figures (:func:`order_preload`): three significant figures, never finer
-than 10 N (3183.3 N -> 3180 N, 12 345 N -> 12 300 N), rounded the way that keeps every limit and check the
-exact preload met (an optimum usually sits on one: a higher preload raises the drag torque and shortens the
-nut life, a lower one lowers the lift-off margin and the stiffness).  The design is evaluated with the model at
-both round neighbours; if neither keeps them, a finer step is tried (1 N, 0.1 N ...).
+The nut preload is ordered in round figures (:func:`order_preload`): three significant figures,
+never finer than 10 N (3183.3 N -> 3180 N, 12 345 N -> 12 300 N), rounded the way that keeps every
+limit and check the exact preload met (an optimum usually sits on one: a higher preload raises the
+drag torque and shortens the nut life, a lower one lowers the lift-off margin and the stiffness).
+The design is evaluated with the model at both round neighbours; if neither keeps them, a finer step
+is tried (1 N, 0.1 N ...).
 
-The rail length is the model's own (``stroke + table_length``, :func:`axisopt.model.params.design_params`),
-rounded up to a whole 10 mm: an estimate, not the vendor's cut length (which follows the rail's hole pitch and
-end distances in the vendor's catalog; see docs/assumptions.md).
+The rail length is the model's own (``stroke + table_length``,
+:func:`axisopt.model.params.design_params`), rounded up to a whole 10 mm: an estimate, not the
+vendor's cut length (which follows the rail's hole pitch and end distances in the vendor's catalog;
+see docs/assumptions.md).
 """
 
 from __future__ import annotations
@@ -30,8 +33,8 @@ def _up(length_m: float, step_mm: float = 10.0) -> float:
 
 
 def preload_step(preload: float) -> float:
-    """The round step [N] a preload of ``preload`` [N] is ordered in: :data:`PRELOAD_DIGITS` significant
-    figures, at least :data:`PRELOAD_MIN_STEP`."""
+    """The round step [N] a preload of ``preload`` [N] is ordered in: :data:`PRELOAD_DIGITS`
+    significant figures, at least :data:`PRELOAD_MIN_STEP`."""
     if not (math.isfinite(preload) and preload > 0):
         return PRELOAD_MIN_STEP
     return max(PRELOAD_MIN_STEP, 10.0 ** (math.floor(math.log10(preload)) - PRELOAD_DIGITS + 1))
@@ -39,9 +42,10 @@ def preload_step(preload: float) -> float:
 
 @dataclass(frozen=True)
 class OrderedPreload:
-    """A nut preload in round figures.  ``value`` and ``exact`` [N]; ``step`` [N] the rounding step used;
-    ``nearest_breaks``: the limits or checks the nearest round value would have broken (the value went the
-    other way), empty when it is the nearest."""
+    """A nut preload in round figures.  ``value`` and ``exact`` [N]; ``step`` [N] the rounding step
+    used;
+    ``nearest_breaks``: the limits or checks the nearest round value would have broken (the value
+    went the other way), empty when it is the nearest."""
 
     value: float
     exact: float
@@ -80,8 +84,8 @@ def _name(name: str) -> str:
 
 
 def _constraints(problem):
-    """What the ordered preload must keep: the problem's limits and check margins (``problem`` None: every
-    vendor check at margin 1), the preload ceiling's check included."""
+    """What the ordered preload must keep: the problem's limits and check margins (``problem`` None:
+    every vendor check at margin 1), the preload ceiling's check included."""
     from ..model import CHECK_LABELS, CHECKS
     from ..model.limits import CHECK_RECORDS, margin_output
     from ..search.task.constraints import Constraint, build_constraints
@@ -113,9 +117,10 @@ def _preload_range(design, problem) -> tuple:
 
 
 def order_preload(design, problem=None) -> OrderedPreload:
-    """The nut preload of ``design`` in round figures (module docstring) that keeps every limit of ``problem``
-    (None: every vendor check) the design's exact preload meets, within the nut's catalog preload range (and the
-    problem's ``continuous.nut_preload``).  A design without its own preload (the catalog's) keeps it."""
+    """The nut preload of ``design`` in round figures (module docstring) that keeps every limit of
+    ``problem`` (None: every vendor check) the design's exact preload meets, within the nut's
+    catalog preload range (and the problem's ``continuous.nut_preload``).  A design without its own
+    preload (the catalog's) keeps it."""
     from ..model import evaluate
 
     exact = float(design.preload)
@@ -158,9 +163,9 @@ def order_preload(design, problem=None) -> OrderedPreload:
 
 
 def parts_list(design, problem=None) -> list[dict]:
-    """One row per part to order: ``part``, ``id``, ``vendor``, ``quantity`` and ``order`` (the values the
-    order needs: lengths in mm, the preload in N, rounded by :func:`order_preload` against ``problem``'s
-    limits, or against the vendor checks without one)."""
+    """One row per part to order: ``part``, ``id``, ``vendor``, ``quantity`` and ``order`` (the
+    values the order needs: lengths in mm, the preload in N, rounded by :func:`order_preload`
+    against ``problem``'s limits, or against the vendor checks without one)."""
     a = design.axis
     # a twin-drive gantry orders two of each
     drives = 2 if getattr(a, "twin_drive", None) is not None else 1

@@ -15,9 +15,9 @@ from .text import RPM
 
 
 def duty_points(ev: Evaluation) -> dict | None:
-    """The duty cycle of an evaluation on the motor's torque-speed plane (None without a motor): motor speed
-    [rpm] and torque [N.m] at the start and end of each phase, the RMS torque at the mean speed, and the
-    motor's rated, peak and speed limits."""
+    """The duty cycle of an evaluation on the motor's torque-speed plane (None without a motor):
+    motor speed [rpm] and torque [N.m] at the start and end of each phase, the RMS torque at the
+    mean speed, and the motor's rated, peak and speed limits."""
     from ..physics.motion import phase_speeds
 
     d, v, a = ev.design, ev.values, ev.design.axis
@@ -54,8 +54,7 @@ def duty_points(ev: Evaluation) -> dict | None:
         "max_speed_rpm": float(m["max_speed"]) * RPM,
         "motor": str(m["id"]),
         # the steady thrusts at feed (no acceleration): the largest axial load against the peak, the
-        # mean
-        # one with the cycle's RMS against the RMS limit (model.drive)
+        # mean one with the cycle's RMS against the RMS limit (model.drive)
         "thrust_torque_Nm": float(v["thrust_torque"]),
         "mean_thrust_torque_Nm": float(v["mean_thrust_torque"]),
         # the intermittent zone the check uses (vendor corner points or their estimate) and the RMS
@@ -84,12 +83,13 @@ def _missing(row, col) -> bool:
 
 
 def _torque_speed(ax, pts: dict, label: str, color, limits: bool = True) -> None:
-    """One design's duty cycle against its motor: every phase's |torque| at its speed, the steady thrust at
-    feed (the largest axial load: checked against the peak, a triangle), the RMS torque (checked, with the mean
-    thrust, against rated x rms_torque_ratio, a square), and, once per motor, its intermittent (peak) zone as
-    the check reads it (dashed), the rated (continuous) torque up to the rated speed (thick), the RMS limit
-    (dotted) and the maximum speed (dash-dot).  The marker and line styles are explained once by
-    :func:`_style_legend`; the labels name the design and the motor with their values."""
+    """One design's duty cycle against its motor: every phase's |torque| at its speed, the steady
+    thrust at feed (the largest axial load: checked against the peak, a triangle), the RMS torque
+    (checked, with the mean thrust, against rated x rms_torque_ratio, a square), and, once per
+    motor, its intermittent (peak) zone as the check reads it (dashed), the rated (continuous)
+    torque up to the rated speed (thick), the RMS limit (dotted) and the maximum speed (dash-dot).
+    The marker and line styles are explained once by :func:`_style_legend`; the labels name the
+    design and the motor with their values."""
     rms = max(pts["rms_torque_Nm"], pts["mean_thrust_torque_Nm"])
     ax.plot(
         pts["speed_rpm"],
@@ -114,8 +114,9 @@ def _torque_speed(ax, pts: dict, label: str, color, limits: bool = True) -> None
         color=color,
         lw=1.5,
         alpha=0.7,
-        label=f"{pts['motor']}: peak {pts['peak_torque_Nm']:.3g} N.m ({how}), rated {pts['rated_torque_Nm']:.3g} "
-        f"N.m to {nr:.0f} rpm, RMS limit {pts['rms_limit_Nm']:.3g} N.m, max {nm:.0f} rpm",
+        label=f"{pts['motor']}: peak {pts['peak_torque_Nm']:.3g} N.m ({how}), rated "
+        f"{pts['rated_torque_Nm']:.3g} N.m to {nr:.0f} rpm, RMS limit {pts['rms_limit_Nm']:.3g} "
+        f"N.m, max {nm:.0f} rpm",
     )
     ax.plot([0, nr], [pts["rated_torque_Nm"]] * 2, "-", color=color, lw=2.5, alpha=0.45)
     ax.plot([nm, nm], [0, zt[-1]], "-.", color=color, lw=1, alpha=0.7)
@@ -123,7 +124,8 @@ def _torque_speed(ax, pts: dict, label: str, color, limits: bool = True) -> None
 
 
 def _style_legend(ax) -> list:
-    """Legend entries for the marker and line styles of the torque-speed panel (drawn in grey, once)."""
+    """Legend entries for the marker and line styles of the torque-speed panel (drawn in grey,
+    once)."""
     from matplotlib.lines import Line2D
 
     g = "0.35"
@@ -161,15 +163,16 @@ def distinct_labels(items, prefix=None) -> list:
 
 
 def plot_profiles(evaluations, path: str | None = None, labels=None, limits=None, margins=None):
-    """Stiffness and first natural frequency over the stroke, one line per evaluation (its own dash pattern,
-    so coinciding curves stay visible; a design that fails a check is marked x and its legend entry names the
-    failed checks); with a motor, a torque-speed panel: the duty-cycle points against the motor's rated and
-    peak torque and speed limits (the limits the checks use: the intermittent zone falling from its corner
-    speed to max speed), each motor's limits drawn once, a design without a motor named as such.  ``limits``
-    (optional) maps 'min_stiffness' [N/m] and 'min_frequency' [Hz] to the problem's limits, drawn as
-    dashed lines; ``margins`` (optional) a problem's least check margins, the failed checks judged against them.
-    Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image);
-    written to ``path`` only when one is given."""
+    """Stiffness and first natural frequency over the stroke, one line per evaluation (its own dash
+    pattern, so coinciding curves stay visible; a design that fails a check is marked x and its
+    legend entry names the failed checks); with a motor, a torque-speed panel: the duty-cycle points
+    against the motor's rated and peak torque and speed limits (the limits the checks use: the
+    intermittent zone falling from its corner speed to max speed), each motor's limits drawn once, a
+    design without a motor named as such.  ``limits`` (optional) maps 'min_stiffness' [N/m] and
+    'min_frequency' [Hz] to the problem's limits, drawn as dashed lines; ``margins`` (optional) a
+    problem's least check margins, the failed checks judged against them.  Returns the matplotlib
+    Figure (not registered with pyplot; Jupyter shows it as an image); written to ``path`` only when
+    one is given."""
     import matplotlib
 
     from ..figure import Figure

@@ -58,7 +58,8 @@ def servo_lines(r: ServoResult) -> list:
     ]
     return (
         [
-            "servo (semi-closed loop, no feedforward; FANUC f_n >= Kv, Yaskawa gain relations; model.servo)"
+            "servo (semi-closed loop, no feedforward; FANUC f_n >= Kv, Yaskawa gain relations; "
+            "model.servo)"
         ]
         + [f"  {k:<23}{v}" for k, v in rows]
         + [""]
@@ -114,9 +115,10 @@ def write_state_space(models: list, gains, path: str, *, held: list | None = Non
     """Write the open-loop models (and the tuned gains) as a numpy ``.npz``.
 
     Arrays: ``A`` (P, 6, 6), ``B`` (P, 6, 2), ``C`` (P, 3, 6), ``D`` (P, 3, 2) over the P positions
-    ``position_mm``; ``A_held`` ... the same with the rotor held (its rows zero); names and units of the states,
-    inputs and outputs; the servo gains (``kv_per_s``, ``velocity_loop_gain_Hz``, ``kvp_Nms_per_rad``,
-    ``integral_time_s``, ``torque_filter_s``, ``notch_Hz``, ``current_loop_s``, ``lead_m``, ``ratio``).
+    ``position_mm``; ``A_held`` ... the same with the rotor held (its rows zero); names and units of
+    the states, inputs and outputs; the servo gains (``kv_per_s``, ``velocity_loop_gain_Hz``,
+    ``kvp_Nms_per_rad``, ``integral_time_s``, ``torque_filter_s``, ``notch_Hz``, ``current_loop_s``,
+    ``lead_m``, ``ratio``).
     """
     arrays = {
         "A": np.stack([m.A for m in models]),

@@ -14,63 +14,64 @@ from ..model.goals import OBJECTIVE_TABLE
 from ..search.result import OPTIMAL
 
 # The cutting force's components beside the feed force, as a rule of thumb for turning: feed F_f =
-# 0.50 F_c and
-# passive (radial) F_p = 0.25 F_c of the tangential F_c (E. Isakov, "Calculated Forces When
-# Turning", Cutting Tool
-# Engineering, 2013, who adds that the rule "is not a good practice because the results are not as
-# accurate as
-# they could be"): guidance for the designer where the cut's own components are unknown, never a
-# model default.
+# 0.50 F_c and passive (radial) F_p = 0.25 F_c of the tangential F_c (E. Isakov, "Calculated Forces
+# When Turning", Cutting Tool Engineering, 2013, who adds that the rule "is not a good practice
+# because the results are not as accurate as they could be"): guidance for the designer where the
+# cut's own components are unknown, never a model default.
 FEED_SHARE, PASSIVE_SHARE = 0.50, 0.25
 COMPONENT_KEYS = ("normal_load", "cross_load")
 
 
 def load_components(axis, assumed) -> dict | None:
-    """When the axis gives ``axial_load`` but not the cut's normal or cross component (``assumed``: the axis keys
-    left at their defaults), what the guides were sized without and the turning rule of thumb from the feed force
-    (:data:`FEED_SHARE`, :data:`PASSIVE_SHARE`); None when both are given or there is no axial load."""
+    """When the axis gives ``axial_load`` but not the cut's normal or cross component (``assumed``:
+    the axis keys left at their defaults), what the guides were sized without and the turning rule
+    of thumb from the feed force (:data:`FEED_SHARE`, :data:`PASSIVE_SHARE`); None when both are
+    given or there is no axial load."""
     missing = [k for k in COMPONENT_KEYS if k in assumed]
     if not missing or axis.axial_load <= 0.0:
         return None
     fc = axis.axial_load / FEED_SHARE
     text = (
         f"guides sized without the cut's {' and '.join(missing)} (not given: 0 N); give "
-        f"{'them' if len(missing) > 1 else 'it'} with tool_height and tool_offset (where the cut acts).  "
-        f"Turning rule of thumb (Isakov, CTE 2013: F_f = 0.5 F_c, F_p = 0.25 F_c): axial_load "
-        f"{_num(axis.axial_load)} N as the feed force puts the tangential force near {_num(fc)} N, the "
-        f"passive near {_num(PASSIVE_SHARE * fc)} N"
+        f"{'them' if len(missing) > 1 else 'it'} with tool_height and tool_offset (where the cut "
+        "acts).  Turning rule of thumb (Isakov, CTE 2013: F_f = 0.5 F_c, F_p = 0.25 F_c): "
+        f"axial_load {_num(axis.axial_load)} N as the feed force puts the tangential force near "
+        f"{_num(fc)} N, the passive near {_num(PASSIVE_SHARE * fc)} N"
     )
     return {
         "missing": missing,
         "axial_load_N": axis.axial_load,
         "tangential_estimate_N": fc,
         "passive_estimate_N": PASSIVE_SHARE * fc,
-        "rule": "turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (Isakov, Cutting Tool Engineering 2013)",
+        "rule": "turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (Isakov, Cutting Tool "
+        "Engineering 2013)",
         "text": text,
     }
 
 
 def cheaper_lines(res) -> list:
-    """A stiffness or frequency optimum's cheaper neighbour (``res.cheaper``: a design within the problem's
-    tolerance that costs markedly less), wrapped at 100 columns; [] without one."""
+    """A stiffness or frequency optimum's cheaper neighbour (``res.cheaper``: a design within the
+    problem's tolerance that costs markedly less), wrapped at 100 columns; [] without one."""
     ch = getattr(res, "cheaper", None)
     if not ch:
         return []
     saved = ch["best_cost"] - ch["cost"]
     parts = "  ".join(f"{k} {v}" for k, v in ch["parts"].items() if v)
     text = (
-        f"cheaper: {ch['objective']:,.3f} {ch['unit']} (within {100 * ch['tolerance']:g} % of the best) costs "
-        f"{ch['cost']:,.0f} EUR, {saved:,.0f} EUR ({100 * saved / ch['best_cost']:.0f} %) less than the "
-        f"optimum's {ch['best_cost']:,.0f} EUR: {ch['mounting']}  {parts}; to choose it: objective {{mode: "
-        f"lexicographic, order: [{'stiffness' if ch['unit'] == 'N/um' else 'frequency'}, cost], tolerance: "
+        f"cheaper: {ch['objective']:,.3f} {ch['unit']} (within {100 * ch['tolerance']:g} % of the "
+        f"best) costs {ch['cost']:,.0f} EUR, {saved:,.0f} EUR ({100 * saved / ch['best_cost']:.0f} "
+        f"%) less than the optimum's {ch['best_cost']:,.0f} EUR: {ch['mounting']}  {parts}; to "
+        "choose it: objective {mode: lexicographic, order: "
+        f"[{'stiffness' if ch['unit'] == 'N/um' else 'frequency'}, cost], tolerance: "
         f"{ch['tolerance']:g}}}"
     )
     return textwrap.wrap(text, 100, subsequent_indent="  ")
 
 
 def format_result(res, top: int | None = None, problem=None) -> str:
-    """The text ``axisopt solve`` prints: status, the best design's evaluation (or the Pareto front, or why
-    the problem is infeasible), the limits at the optimum, the runners-up and the certificate.  With the
+    """The text ``axisopt solve`` prints: status, the best design's evaluation (or the Pareto front,
+    or why the problem is infeasible), the limits at the optimum, the runners-up and the
+    certificate.  With the
     ``problem``: a line when the guides were sized without the cut's normal or cross component
     (:func:`load_components`)."""
     from ..model import evaluate
@@ -90,7 +91,8 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     ]
     if res.arrangements and res.pareto is not None:
         L.append(
-            f"arrangements: the front of {res.arrangements} arrangements merged (each design names its own)"
+            f"arrangements: the front of {res.arrangements} arrangements merged (each design names "
+            "its own)"
         )
     elif res.arrangements:  # search.counterbalance / search.twin_drive options
         L.append(
@@ -154,14 +156,15 @@ def format_result(res, top: int | None = None, problem=None) -> str:
                 )
                 L.append(
                     f"  {bd.limit:<{w}}{_v(bd.value):>12}{_v(bd.at_optimum):>12}"
-                    f"{_v(bd.relaxed_to):>12}  {bd.unit:<6}{gain:>14}{'  BINDING' if bd.binding else ''}"
+                    f"{_v(bd.relaxed_to):>12}  "
+                    f"{bd.unit:<6}{gain:>14}{'  BINDING' if bd.binding else ''}"
                 )
             for bd in res.binding:
                 if bd.binding:
                     verb = "raising" if bd.limit.startswith("max") else "lowering"
                     L.append(
-                        f"  {verb} {bd.limit.replace('_', ' ')} to {_v(bd.relaxed_to)} {bd.unit} buys "
-                        f"{bd.objective_gain:+.4g} {res.objective_unit}"
+                        f"  {verb} {bd.limit.replace('_', ' ')} to {_v(bd.relaxed_to)} {bd.unit} "
+                        f"buys {bd.objective_gain:+.4g} {res.objective_unit}"
                     )
         if res.runners_up:
             L.append("")
@@ -180,7 +183,8 @@ def format_result(res, top: int | None = None, problem=None) -> str:
                 )
         else:
             L.append(
-                "every limit is met by some combination, but no combination meets all of them together"
+                "every limit is met by some combination, but no combination meets all of them "
+                "together"
             )
         L.append("")
         L.append("closest designs (sum of relative misses):")
@@ -206,13 +210,13 @@ def format_result(res, top: int | None = None, problem=None) -> str:
         L.append(f"  combinations {c.combinations:,}{blocks}")
         if c.pruned_by_dominance:
             L.append(
-                f"  never formed {c.pruned_by_dominance:,} (a coupling another beats on every count, or one "
-                "that cannot carry the motor's peak torque)"
+                f"  never formed {c.pruned_by_dominance:,} (a coupling another beats on every "
+                "count, or one that cannot carry the motor's peak torque)"
             )
         L.append(
-            f"  feasible {c.feasible:,}{' (screened)' if res.method == 'default' else ''}; pruned by bound "
-            f"{c.pruned_by_bound:,}; exact 1-D solves {c.exact_evaluations:,}; NLPs {c.nlps_solved} "
-            f"(failures {c.nlp_failures})"
+            f"  feasible {c.feasible:,}{' (screened)' if res.method == 'default' else ''}; pruned "
+            f"by bound {c.pruned_by_bound:,}; exact 1-D solves {c.exact_evaluations:,}; NLPs "
+            f"{c.nlps_solved} (failures {c.nlp_failures})"
         )
     gap = (
         "0 (proven)"
@@ -226,7 +230,10 @@ def format_result(res, top: int | None = None, problem=None) -> str:
     # the blocks' bounds, then the combinations of the opened blocks (one by one, or a drive at a
     # time)
     else:
-        rate = f"; screening {c.screening_time:.3f} s (block bounds, {c.screened:,} combinations in opened blocks)"
+        rate = (
+            f"; screening {c.screening_time:.3f} s (block bounds, {c.screened:,} combinations in "
+            "opened blocks)"
+        )
     if res.best is None and c.proven:  # no design: there is no optimum to have a gap to
         L.append(f"  infeasibility proven (every combination is accounted for){rate}")
     else:
@@ -240,7 +247,8 @@ def format_result(res, top: int | None = None, problem=None) -> str:
 
 
 def _change_text(d) -> str:
-    """One design change (search.advice): 'lower axis.max_speed from 20 to 15.5 m/min', 'add a balance cylinder
+    """One design change (search.advice): 'lower axis.max_speed from 20 to 15.5 m/min', 'add a
+    balance cylinder
     ...', with its note in brackets."""
     note = f" ({d.note})" if d.note else ""
     if d.edit:  # a list of the catalog section (search.widen)
@@ -255,8 +263,9 @@ def _change_text(d) -> str:
 
 
 def relax_lines(inf) -> list:
-    """The first lines of an infeasible answer: an axis change that the search verified makes it feasible (first:
-    a design change before a vendor's rule), then what to relax, by how much, for which closest design."""
+    """The first lines of an infeasible answer: an axis change that the search verified makes it
+    feasible (first: a design change before a vendor's rule), then what to relax, by how much, for
+    which closest design."""
     L0 = []
     if inf.design_changes:
         texts = [_change_text(d) for d in inf.design_changes]
@@ -278,15 +287,17 @@ def relax_lines(inf) -> list:
         u = f" {r.unit}" if r.unit else ""
         sign = "+" if r.relaxed_to > r.value else "-"
         rule = " (below the vendor's rule)" if r.below_vendor_rule else ""
-        return f"{r.key} from {_v(r.value)}{u} to {_v(r.relaxed_to)}{u} ({sign}{_num(100 * r.change)} %){rule}"
+        return (
+            f"{r.key} from {_v(r.value)}{u} to {_v(r.relaxed_to)}{u} ({sign}{_num(100 * r.change)} "
+            f"%){rule}"
+        )
 
     d = rel[0].design
     who = f"design #{rel[0].design_rank}" + (
         f" ({d.mounting} {' / '.join(d.parts().values())})" if d else ""
     )
     # search.relax: a vendor margin is never proposed below 0.95 (MARGIN_FLOOR); a design needing
-    # one lower breaks
-    # a rule no relaxation frees, as a compatibility rule
+    # one lower breaks a rule no relaxation frees, as a compatibility rule
     rule = "a compatibility rule or a vendor's rule no margin down to 0.95 frees"
     if inf.relax_blocked_by:
         head = (
@@ -301,8 +312,8 @@ def relax_lines(inf) -> list:
         L = [f"{head}{amount(rel[0])}"]
     else:
         L = [
-            f"{head}these {len(rel)} limits{' relaxed' if inf.relax_blocked_by else ''} together (smallest "
-            "change first)"
+            f"{head}these {len(rel)} limits{' relaxed' if inf.relax_blocked_by else ''} together "
+            "(smallest change first)"
             + ("" if inf.relax_blocked_by else f"; {who} then meets every limit")
             + ":"
         ]
@@ -315,10 +326,10 @@ def relax_lines(inf) -> list:
 
 
 def _cand_table(cands, unit, keys=()) -> str:
-    """Best designs in 100 columns: the numbers on one line per design, its parts below it (after the first
-    design, only the parts in which it differs from the one above).  The goals' columns come from
-    ``model.goals.OBJECTIVE_TABLE`` (``Goal.column``): those shown always, the preload, then those of the front's
-    ``keys`` (the positioning error)."""
+    """Best designs in 100 columns: the numbers on one line per design, its parts below it (after
+    the first design, only the parts in which it differs from the one above).  The goals' columns
+    come from ``model.goals.OBJECTIVE_TABLE`` (``Goal.column``): those shown always, the preload,
+    then those of the front's ``keys`` (the positioning error)."""
     slots = ("arrangement", "screw", "grade", *PART_SLOTS[1:])
     obj = f"obj {unit}" if unit != "-" else ""
     always = [g for g in OBJECTIVE_TABLE if g.column is not None and g.column.always]
@@ -372,7 +383,8 @@ def _goal_cell(c, g) -> str:
 
 
 def estimated_lines(estimated) -> list:
-    """Text lines for ``Certificate.estimated`` (what of the optimum rests on estimated part values)."""
+    """Text lines for ``Certificate.estimated`` (what of the optimum rests on estimated part
+    values)."""
     if not estimated:
         return []
     from ..model.estimates import estimate_text
@@ -414,16 +426,17 @@ def _v(v) -> str:
 
 
 def _num(v: float) -> str:
-    """1,500 / 0.785 / 12.4: thousands separators for large values, three significant digits otherwise."""
+    """1,500 / 0.785 / 12.4: thousands separators for large values, three significant digits
+    otherwise."""
     return f"{v:,.0f}" if abs(v) >= 100 else f"{v:.3g}"
 
 
 def plot_pareto(front, path: str | None = None):
     """Scatter matrix of every objective pair: the non-dominated designs in colour (by the first
-    objective), a sample of the feasible designs they dominate in grey, each axis labelled with its unit
-    and whether it is maximised or minimised; the diagonal shows each objective's spread over the front.
-    Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an image); written to
-    ``path`` only when given."""
+    objective), a sample of the feasible designs they dominate in grey, each axis labelled with its
+    unit and whether it is maximised or minimised; the diagonal shows each objective's spread over
+    the front.  Returns the matplotlib Figure (not registered with pyplot; Jupyter shows it as an
+    image); written to ``path`` only when given."""
     from ..figure import Figure
 
     keys, d = front.keys, len(front.keys)

@@ -1,11 +1,12 @@
 """Static figures of the HTML reports: matplotlib drawn to SVG and written into the page.
 
-A report's default figures (``--plotly no``): the page opens offline, needs no plotly and stays small (the
-plotly script alone is about 4.7 MB).  The figures are the ones the command line's ``--plot`` draws
-(:func:`axisopt.report.plots.plot_profiles`, :func:`axisopt.report.methods.plot_frf`,
-:func:`axisopt.report.solve.plot_pareto`, the diagnosis's residual plots) plus the two only a report shows
-(the stiffness chain, a study's objective against a swept input).  Text stays text in the SVG (the
-browser's sans-serif), dense point clouds are raster, so a figure weighs tens of kB.
+A report's default figures (``--plotly no``): the page opens offline, needs no plotly and stays
+small (the plotly script alone is about 4.7 MB).  The figures are the ones the command line's
+``--plot`` draws (:func:`axisopt.report.plots.plot_profiles`,
+:func:`axisopt.report.methods.plot_frf`, :func:`axisopt.report.solve.plot_pareto`, the diagnosis's
+residual plots) plus the two only a report shows (the stiffness chain, a study's objective against a
+swept input).  Text stays text in the SVG (the browser's sans-serif), dense point clouds are raster,
+so a figure weighs tens of kB.
 """
 
 from __future__ import annotations
@@ -21,8 +22,9 @@ _COUNT = [0]
 
 
 def svg(fig, alt: str = "") -> str:
-    """``fig`` (a matplotlib Figure) as an inline SVG element, drawn at its own size (so every figure's text is
-    the same size) and scaled down, aspect kept, where the page is narrower; ``alt`` is its accessible name."""
+    """``fig`` (a matplotlib Figure) as an inline SVG element, drawn at its own size (so every
+    figure's text is the same size) and scaled down, aspect kept, where the page is narrower;
+    ``alt`` is its accessible name."""
     import matplotlib
 
     _COUNT[0] += 1
@@ -51,7 +53,8 @@ def _attr(text: str) -> str:
 
 
 def chain_figure(ev):
-    """The axial stiffness chain at the softest point: compliance per component [um/kN], the weakest in red."""
+    """The axial stiffness chain at the softest point: compliance per component [um/kN], the weakest
+    in red."""
     from ..figure import Figure
 
     comps = {k: v for k, v in ev.components().items() if math.isfinite(v) and v > 0}
@@ -71,8 +74,8 @@ def chain_figure(ev):
 
 
 def frf_figure(ev):
-    """Table compliance over frequency at stroke start, middle and end: motor held, motor free, with the servo
-    (as ``axisopt evaluate --frf`` draws it)."""
+    """Table compliance over frequency at stroke start, middle and end: motor held, motor free, with
+    the servo (as ``axisopt evaluate --frf`` draws it)."""
     from ..model.frf import frf
     from .methods import closed_loop_frf, plot_frf
 
@@ -82,8 +85,9 @@ def frf_figure(ev):
 
 
 def objective_figure(df, name: str, key: str, unit: str, ok):
-    """A study's objective against one numeric swept input: the optimal cases as points, the inputs of the
-    cases without a design as red ticks along the bottom (their reasons are in the cases table)."""
+    """A study's objective against one numeric swept input: the optimal cases as points, the inputs
+    of the cases without a design as red ticks along the bottom (their reasons are in the cases
+    table)."""
     from ..figure import Figure
 
     fig = Figure(figsize=(7, 3.6))
@@ -98,7 +102,8 @@ def objective_figure(df, name: str, key: str, unit: str, ok):
             color="#c62828",
             ms=12,
             transform=ax.get_xaxis_transform(),
-            label=f"input of a case without a design ({int((~ok).sum())} cases; reasons in the table)",
+            label=f"input of a case without a design ({int((~ok).sum())} cases; reasons in the "
+            "table)",
         )
     ax.set_xlabel(name)
     ax.set_ylabel(f"objective [{unit}]" if unit else "objective")

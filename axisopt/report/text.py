@@ -1,5 +1,5 @@
-"""Text basics the reports share: the terminal width the tables fit, rad/s to rpm, a physical value at sensible
-precision, and prose lines wrapped to the width.  Nothing here prints."""
+"""Text basics the reports share: the terminal width the tables fit, rad/s to rpm, a physical value
+at sensible precision, and prose lines wrapped to the width.  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ WIDTH = 100  # terminal columns the text tables fit
 
 
 def fmt_value(x) -> str:
-    """A physical value at sensible precision: whole numbers from 100 up (with thousands separators), else
-    three significant digits; '-' for a missing or non-finite value."""
+    """A physical value at sensible precision: whole numbers from 100 up (with thousands
+    separators), else three significant digits; '-' for a missing or non-finite value."""
     if x is None or not math.isfinite(x):
         return "-"
     if abs(x) >= 100:
@@ -21,8 +21,8 @@ def fmt_value(x) -> str:
 
 
 def fit_lines(text: str, width: int = 100) -> str:
-    """Wrap each line longer than ``width`` at spaces, its continuation indented under it (tables are built
-    to fit; this catches prose: notes, misses, messages)."""
+    """Wrap each line longer than ``width`` at spaces, its continuation indented under it (tables
+    are built to fit; this catches prose: notes, misses, messages)."""
     out = []
     for line in text.split("\n"):
         if len(line) <= width:

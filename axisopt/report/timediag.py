@@ -1,9 +1,10 @@
-"""Time-record diagnosis output (:class:`axisopt.identify.records.idim.TimeDiagnosis`): console text, at most 100
-columns, and a JSON-ready dict.  Nothing here prints.
+"""Time-record diagnosis output (:class:`axisopt.identify.records.idim.TimeDiagnosis`): console
+text, at most 100 columns, and a JSON-ready dict.  Nothing here prints.
 
-Parameters are shown in the record's coordinate (:data:`axisopt.identify.records.regression.UNITS`); lengths of the
-lost motion and of residual signatures as table travel through the lead.  A residual signature is put in words
-with its candidate causes and the measurement that would separate them (:data:`SIGNATURE_WORDS`).
+Parameters are shown in the record's coordinate (:data:`axisopt.identify.records.regression.UNITS`);
+lengths of the lost motion and of residual signatures as table travel through the lead.  A residual
+signature is put in words with its candidate causes and the measurement that would separate them
+(:data:`SIGNATURE_WORDS`).
 """
 
 from __future__ import annotations
@@ -58,8 +59,8 @@ SHAPES_APART = ("vs", "period")
 
 
 def _shapes(q, est: Estimate, only=None) -> list:
-    """(name, (label, unit, factor)) of the searched shape parameters of ``est`` (the effects' own terms in
-    ``only`` when given) shown beside its terms."""
+    """(name, (label, unit, factor)) of the searched shape parameters of ``est`` (the effects' own
+    terms in ``only`` when given) shown beside its terms."""
     known = shape_params()
     owners = {}
     for eff in time_effects().values():
@@ -79,7 +80,8 @@ def _shapes(q, est: Estimate, only=None) -> list:
 
 
 def _derived(q, est: Estimate, only=None) -> list:
-    """(name, value, unit, label) of the quantities the effects of ``est`` derive from their terms."""
+    """(name, value, unit, label) of the quantities the effects of ``est`` derive from their
+    terms."""
     out = []
     for eff in time_effects().values():
         if not eff.derived or not all(t in est.terms for t in eff.terms):
@@ -142,13 +144,13 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
             cont="              ",
         )
     L += wrap_words(
-        f"filter      zero-phase Butterworth, order {BUTTER_ORDER} (|H|^2 by FFT, as forward-backward), "
-        f"cut-off {p.fc:.1f} Hz: {p.rule}; motion bandwidth {p.f_motion:.1f} Hz",
+        f"filter      zero-phase Butterworth, order {BUTTER_ORDER} (|H|^2 by FFT, as "
+        f"forward-backward), cut-off {p.fc:.1f} Hz: {p.rule}; motion bandwidth {p.f_motion:.1f} Hz",
         cont="              ",
     )
     L += wrap_words(
-        f"decimation  parallel: every column and the {q} low-passed at {p.fdec:.1f} Hz, every {p.nd}th "
-        f"row kept; rows below {p.vmin * spd_f:.3g} {spd_u} or at reversals left out",
+        f"decimation  parallel: every column and the {q} low-passed at {p.fdec:.1f} Hz, every "
+        f"{p.nd}th row kept; rows below {p.vmin * spd_f:.3g} {spd_u} or at reversals left out",
         cont="              ",
     )
     c = diag.controller
@@ -175,15 +177,16 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         g = 2 * math.pi / lead
         b = diag.baseline_iv.as_dict()
         L += wrap_words(
-            f"table side through lead {lead * 1e3:g} mm and efficiency {eta:g} (F = T 2pi eta/p, "
-            f"M = J (2pi/p)^2 eta): M {b['M'] * g * g * eta:.4g} kg, Fv {b['Fv'] * g * g * eta:.4g} N.s/m, "
-            f"Fc {b['Fc'] * g * eta:.4g} N, offset {b['offset'] * g * eta:.4g} N"
+            f"table side through lead {lead * 1e3:g} mm and efficiency {eta:g} (F = T 2pi eta/p, M "
+            f"= J (2pi/p)^2 eta): M {b['M'] * g * g * eta:.4g} kg, Fv {b['Fv'] * g * g * eta:.4g} "
+            f"N.s/m, Fc {b['Fc'] * g * eta:.4g} N, offset {b['offset'] * g * eta:.4g} N"
         )
     L.append("")
     rule = TIME_RULE
     L += wrap_words(
-        f"candidates, each fitted (LS) jointly with the baseline; dBIC on the estimation run, gain on the "
-        f"{diag.validation_mode}; accepted if dBIC < {rule.accept_dbic:g} and gain >= {rule.min_gain:g} %",
+        "candidates, each fitted (LS) jointly with the baseline; dBIC on the estimation run, gain "
+        f"on the {diag.validation_mode}; accepted if dBIC < {rule.accept_dbic:g} and gain >= "
+        f"{rule.min_gain:g} %",
         indent="",
         cont="  ",
     )
@@ -214,8 +217,9 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         )
     if rest:
         L += wrap_words(
-            f"-  {rest} pair{'s' if rest > 1 else ''} of these candidates tried together: none lowers BIC "
-            f"by {-rule.accept_dbic:g} and predicts the held-out data {rule.min_gain:g} % better",
+            f"-  {rest} pair{'s' if rest > 1 else ''} of these candidates tried together: none "
+            f"lowers BIC by {-rule.accept_dbic:g} and predicts the held-out data {rule.min_gain:g} "
+            "% better",
             cont=" " * 26,
         )
     L.append("")
@@ -247,8 +251,8 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
     L += _lost_motion_lines(diag)
     L += unexplained_lines(diag)
     L += wrap_words(
-        f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves the two "
-        "are the same column"
+        f"the offset [{unit_eff}] holds any Coulomb asymmetry (Fc+ - Fc-)/2: while the axis moves "
+        "the two are the same column"
     )
     return "\n".join(L)
 
@@ -263,12 +267,14 @@ def _equivalent_text(diag: TimeDiagnosis, a, b, apart: float) -> str:
         if w
     ]
     return (
-        f"{a.effect.name} and {b.effect.name} explain the data equally well: held-out RMSE {apart:.2f} % "
-        f"apart, within the rule's {TIME_RULE.resolution:g} % resolution (dBIC {a.dbic:.1f} against "
-        f"{b.dbic:.1f}); {a.effect.name} is named for its lower dBIC, not because the data tell them apart. "
+        f"{a.effect.name} and {b.effect.name} explain the data equally well: held-out RMSE "
+        f"{apart:.2f} % apart, within the rule's {TIME_RULE.resolution:g} % resolution (dBIC "
+        f"{a.dbic:.1f} against {b.dbic:.1f}); {a.effect.name} is named for its lower dBIC, not "
+        "because the data tell them apart. "
         + (" ".join(n[0].upper() + n[1:] + "." for n in notes) + " " if notes else "")
-        + f"To separate them: for {a.effect.name}, {a.effect.evidence or 'a test that shows it alone'}; "
-        f"for {b.effect.name}, {b.effect.evidence or 'a test that shows it alone'}."
+        + f"To separate them: for {a.effect.name}, "
+        f"{a.effect.evidence or 'a test that shows it alone'}; for {b.effect.name}, "
+        f"{b.effect.evidence or 'a test that shows it alone'}."
     )
 
 
@@ -286,8 +292,8 @@ def _lost_motion_lines(diag: TimeDiagnosis) -> list:
     q = diag.quantity
     b, sb = as_mm(diag, lm.width) * 1e3, as_mm(diag, lm.width_std) * 1e3
     what = (
-        f"motor_position against position: e = e0 + (b/2) sgn(F) + F/k, F = {q} - m1 a1 the force the "
-        f"transmission carries; b = {b:.3g} ± {sb:.2g} um of table travel"
+        f"motor_position against position: e = e0 + (b/2) sgn(F) + F/k, F = {q} - m1 a1 the force "
+        f"the transmission carries; b = {b:.3g} ± {sb:.2g} um of table travel"
     )
     if math.isfinite(lm.stiffness) and lm.stiffness > 0:
         per_m = lm.stiffness / (as_mm(diag, 1.0) * 1e-3)  # effort per metre of table travel
@@ -299,11 +305,15 @@ def _lost_motion_lines(diag: TimeDiagnosis) -> list:
         what += f", windup stiffness k {k_txt}"
     m_u = UNITS[q]["mass"][0]
     what += (
-        f", motor-side m1 {lm.motor_mass:.3g} {m_u}; held-out RMS of e {as_mm(diag, lm.rms_before) * 1e3:.3g} -> "
-        f"{as_mm(diag, lm.rms_after) * 1e3:.3g} um (gain {lm.gain:.0f} %)"
+        f", motor-side m1 {lm.motor_mass:.3g} {m_u}; held-out RMS of e "
+        f"{as_mm(diag, lm.rms_before) * 1e3:.3g} -> {as_mm(diag, lm.rms_after) * 1e3:.3g} um (gain "
+        f"{lm.gain:.0f} %)"
     )
     if lm.accepted:
-        head = "verdict: backlash (lost motion between motor and table, measured by the two encoders): "
+        head = (
+            "verdict: backlash (lost motion between motor and table, measured by the two "
+            "encoders): "
+        )
         return wrap_words(head + what, indent="", cont="  ")
     return wrap_words(
         f"lost motion between motor and table not named ({lm.reason}): {what}", indent="", cont="  "

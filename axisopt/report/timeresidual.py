@@ -1,6 +1,7 @@
-"""What a time-record diagnosis leaves unexplained, in words (text and JSON): each residual signature with its
-candidate causes and the measurement that would separate them (:data:`SIGNATURE_WORDS`), the motor orders a
-periodic residual matches, and the residual above the noise floor that no probe names.  Nothing here prints."""
+"""What a time-record diagnosis leaves unexplained, in words (text and JSON): each residual
+signature with its candidate causes and the measurement that would separate them
+(:data:`SIGNATURE_WORDS`), the motor orders a periodic residual matches, and the residual above the
+noise floor that no probe names.  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -12,11 +13,12 @@ from .text import wrap_words
 
 
 def motor_orders(diag: TimeDiagnosis, period_mm: float) -> str:
-    """A period in table travel stated in orders: per mm, per screw turn (the lead over the period) and per motor
-    turn (through the design's reduction, motor turns per screw turn), with the sources an integer order
-    names: motor cogging or torque ripple (an integer order of the motor turn, the slot count or a multiple of
-    the pole pairs), the ball circulation or the lead (an order of the screw turn), a belt's tooth mesh (the
-    pulley's tooth count per pulley turn)."""
+    """A period in table travel stated in orders: per mm, per screw turn (the lead over the period)
+    and per motor turn (through the design's reduction, motor turns per screw turn), with the
+    sources an integer order
+    names: motor cogging or torque ripple (an integer order of the motor turn, the slot count or a
+    multiple of the pole pairs), the ball circulation or the lead (an order of the screw turn), a
+    belt's tooth mesh (the pulley's tooth count per pulley turn)."""
     lead_mm = diag.design.get("lead", 0.0) * 1e3
     if not (period_mm > 0 and lead_mm > 0):
         return ""
@@ -24,8 +26,8 @@ def motor_orders(diag: TimeDiagnosis, period_mm: float) -> str:
     per_screw = lead_mm / period_mm
     per_motor = per_screw / red
     text = (
-        f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.3g} of the screw turn, order {per_motor:.3g} "
-        f"of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)"
+        f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.3g} of the screw turn, order "
+        f"{per_motor:.3g} of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)"
     )
     near = [
         (name, o)
@@ -36,8 +38,8 @@ def motor_orders(diag: TimeDiagnosis, period_mm: float) -> str:
         k = int(round(o))
         if name == "motor":
             text += (
-                f"; order {k} of the motor turn: motor cogging or torque ripple ({k} slots, or a multiple "
-                "of the pole pairs), or a belt's tooth mesh on the motor pulley if it has "
+                f"; order {k} of the motor turn: motor cogging or torque ripple ({k} slots, or a "
+                "multiple of the pole pairs), or a belt's tooth mesh on the motor pulley if it has "
                 + f"{k} teeth"
             )
         else:
@@ -56,27 +58,31 @@ SIGNATURE_WORDS = {
     # kind -> (candidate causes, the measurement that separates them)
     "position_periodic_lead": (
         "lead error or ball recirculation (a circuit per turn), screw run-out or a bent screw",
-        "repeat at two speeds and in both directions: a ripple fixed in millimetres stays while a resonance or "
-        "the controller moves with speed; a friction ripple changes sign with the direction, a lead error or "
-        "run-out does not; measure the lead error with a laser against the scale",
+        "repeat at two speeds and in both directions: a ripple fixed in millimetres stays while a "
+        "resonance or the controller moves with speed; a friction ripple changes sign with the "
+        "direction, a lead error or run-out does not; measure the lead error with a laser against "
+        "the scale",
     ),
     "position_periodic": (
-        "ball recirculation over a circuit of several turns, the guide's ball pitch, a coupling misalignment "
-        "or motor cogging geared to this period",
-        "repeat at two speeds (a period fixed in millimetres stays) and compare the period with the nut's "
-        "circuit length, the guide-ball pitch and the motor's pole pitch through the lead",
+        "ball recirculation over a circuit of several turns, the guide's ball pitch, a coupling "
+        "misalignment or motor cogging geared to this period",
+        "repeat at two speeds (a period fixed in millimetres stays) and compare the period with "
+        "the nut's circuit length, the guide-ball pitch and the motor's pole pitch through the "
+        "lead",
     ),
     "velocity_v|v|": (
         "quadratic drag, e.g. seals or lubricant churning, or air drag on a large table",
-        "a friction curve at constant speeds up to the maximum in both directions (v|v| against a steeper "
-        "viscous slope), repeated warm: churning falls as the lubricant thins",
+        "a friction curve at constant speeds up to the maximum in both directions (v|v| against a "
+        "steeper viscous slope), repeated warm: churning falls as the lubricant thins",
     ),
     "velocity_low_speed": (
-        "a low-speed friction rise the fitted terms do not hold (a second Stribeck constant, breakaway)",
+        "a low-speed friction rise the fitted terms do not hold (a second Stribeck constant, "
+        "breakaway)",
         "a friction curve with many constant speeds below 10 mm/s in both directions",
     ),
     "velocity_|v|": (
-        "viscous friction that differs by direction (a seal or wiper lip, a gravity or cable-chain load)",
+        "viscous friction that differs by direction (a seal or wiper lip, a gravity or cable-chain "
+        "load)",
         "constant-speed runs at several speeds in both directions",
     ),
     "velocity": (
@@ -84,62 +90,67 @@ SIGNATURE_WORDS = {
         "a friction curve at constant speeds over the whole speed range in both directions",
     ),
     "position": (
-        "friction or a force that varies along the stroke: guide misalignment, screw straightness, preload "
-        "varying along the screw, a cable chain or hose",
-        "a slow constant-speed run over the full stroke in both directions (a friction changes sign with the "
-        "direction, a cable-chain or weight force does not)",
+        "friction or a force that varies along the stroke: guide misalignment, screw straightness, "
+        "preload varying along the screw, a cable chain or hose",
+        "a slow constant-speed run over the full stroke in both directions (a friction changes "
+        "sign with the direction, a cable-chain or weight force does not)",
     ),
     "time": (
-        "a drift within the run: warm-up (friction falls as the lubricant heats) or a load that changes",
+        "a drift within the run: warm-up (friction falls as the lubricant heats) or a load that "
+        "changes",
         "repeat the run cold and warm, and with a temperature sensor on the nut",
     ),
     "run": (
-        "runs that differ: temperature, lubrication or load changed between the estimation and validation "
-        "runs",
+        "runs that differ: temperature, lubrication or load changed between the estimation and "
+        "validation runs",
         "repeat one run twice in a row and note the nut temperature",
     ),
     "load": (
-        "a dependence on the process force: nut or guide friction growing with the load (efficiency), a "
-        "compliant support that shifts under it, or an external_force column with a wrong sign or scale",
-        "runs at one speed with different constant process forces, both directions, and a check of the force "
-        "sensor's sign and calibration",
+        "a dependence on the process force: nut or guide friction growing with the load "
+        "(efficiency), a compliant support that shifts under it, or an external_force column with "
+        "a wrong sign or scale",
+        "runs at one speed with different constant process forces, both directions, and a check of "
+        "the force sensor's sign and calibration",
     ),
     "reversal": (
-        "lost motion (backlash) between the motor and the table, or the impact of taking up the lost motion "
-        "exciting the drive, or the elastic windup of a compliant transmission",
-        "record the motor encoder's position beside the table position (a motor_position column): the "
-        "diagnosis then measures the lost motion and the windup; or a reversal test per ISO 230-2 at low speed",
+        "lost motion (backlash) between the motor and the table, or the impact of taking up the "
+        "lost motion exciting the drive, or the elastic windup of a compliant transmission",
+        "record the motor encoder's position beside the table position (a motor_position column): "
+        "the diagnosis then measures the lost motion and the windup; or a reversal test per ISO "
+        "230-2 at low speed",
     ),
     "line_fixed": (
-        "a force periodic in time from a rotating or pulsing source coupled into the table (a pump, a spindle or "
-        "a fan's unbalance: rpm/60 or a multiple), mains hum in the current sensor (50/60 Hz or twice that) or "
-        "a resonance of the machine that the moves excite",
-        "record the axis at rest in position control with the other sources running, then with each of them "
-        "off: a disturbance stays at rest and goes with its source, a resonance the moves excite does not; "
-        "compare the frequency with the spindle speed, the pump's stroke rate and the mains",
+        "a force periodic in time from a rotating or pulsing source coupled into the table (a "
+        "pump, a spindle or a fan's unbalance: rpm/60 or a multiple), mains hum in the current "
+        "sensor (50/60 Hz or twice that) or a resonance of the machine that the moves excite",
+        "record the axis at rest in position control with the other sources running, then with "
+        "each of them off: a disturbance stays at rest and goes with its source, a resonance the "
+        "moves excite does not; compare the frequency with the spindle speed, the pump's stroke "
+        "rate and the mains",
     ),
     "line_speed": (
-        "a ripple fixed in position seen in time at v/P (ball recirculation, guide-ball pitch, motor cogging "
-        "through the lead)",
-        "repeat at two other speeds: a ripple fixed in millimetres moves its frequency in proportion to the "
-        "speed; measure the position error or the force over a slow constant-speed pass",
+        "a ripple fixed in position seen in time at v/P (ball recirculation, guide-ball pitch, "
+        "motor cogging through the lead)",
+        "repeat at two other speeds: a ripple fixed in millimetres moves its frequency in "
+        "proportion to the speed; measure the position error or the force over a slow "
+        "constant-speed pass",
     ),
     "spot": (
-        "a local defect of the guide rail or the screw (a dent, a contaminated or dry spot, a chip under a "
-        "wiper), a cable-chain kink or a hose that catches at this place",
-        "a slow constant-speed pass over the spot in both directions at two speeds (a friction spot opposes "
-        "the motion both ways and keeps its width in millimetres), then inspect the rail and the screw there "
-        "and move the cable chain by hand",
+        "a local defect of the guide rail or the screw (a dent, a contaminated or dry spot, a chip "
+        "under a wiper), a cable-chain kink or a hose that catches at this place",
+        "a slow constant-speed pass over the spot in both directions at two speeds (a friction "
+        "spot opposes the motion both ways and keeps its width in millimetres), then inspect the "
+        "rail and the screw there and move the cable chain by hand",
     ),
     "decay": (
-        "a warm-up of the lubricant (friction high at the start, settling as the nut and guides warm) or a "
-        "load or temperature that settles within the run",
-        "repeat the run cold and after a warm-up cycle with a temperature sensor on the nut: a warm-up drift "
-        "is gone when warm and its time constant follows the heating",
+        "a warm-up of the lubricant (friction high at the start, settling as the nut and guides "
+        "warm) or a load or temperature that settles within the run",
+        "repeat the run cold and after a warm-up cycle with a temperature sensor on the nut: a "
+        "warm-up drift is gone when warm and its time constant follows the heating",
     ),
     "acceleration": (
-        "a dependence on acceleration beyond M a: a compliant transmission (the motor side lags), lost motion, "
-        "or an inertia that differs by direction",
+        "a dependence on acceleration beyond M a: a compliant transmission (the motor side lags), "
+        "lost motion, or an inertia that differs by direction",
         "runs with the same speeds at different accelerations, and a second encoder on the motor",
     ),
 }
@@ -193,14 +204,15 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         f, a = d["frequency"], d["amplitude"]
         if d.get("fixed"):
             what = (
-                f"holds a line at {f:.4g} Hz (amplitude {a:.3g} {unit}) that stays at that frequency at "
-                "every speed (not tied to speed or position)"
+                f"holds a line at {f:.4g} Hz (amplitude {a:.3g} {unit}) that stays at that "
+                "frequency at every speed (not tied to speed or position)"
             )
             key = "line_fixed"
             if f > d.get("fit_band", f):
                 what += (
-                    f"; above {d['fit_band']:.3g} Hz, 0.6x the position filter's cut-off, where time_periodic "
-                    "is fitted (a record sampled faster, or a finer scale, raises the cut-off)"
+                    f"; above {d['fit_band']:.3g} Hz, 0.6x the position filter's cut-off, where "
+                    "time_periodic is fitted (a record sampled faster, or a finer scale, raises "
+                    "the cut-off)"
                 )
         else:
             what = (
@@ -218,8 +230,9 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
             dirs = f"seen in {d['crossed']} travel (the record crosses it one way only)"
         kind = "a friction (opposes the motion)" if d.get("friction") else "a force of one sign"
         what = (
-            f"has a bump at {x0:.1f} mm on the stroke, {w:.3g} mm wide (standard width), {dirs}, {kind}: "
-            f"+{d['height_plus']:.3g} {unit} in + travel, {d['height_minus']:.3g} {unit} in - travel"
+            f"has a bump at {x0:.1f} mm on the stroke, {w:.3g} mm wide (standard width), {dirs}, "
+            f"{kind}: +{d['height_plus']:.3g} {unit} in + travel, {d['height_minus']:.3g} {unit} "
+            "in - travel"
         )
         key = "spot"
     elif p.kind == "decay":
@@ -236,8 +249,8 @@ def signature_text(diag: TimeDiagnosis, p) -> tuple:
         what, key = "depends on the external force", "load"
     elif p.kind == "reversal":
         what = (
-            f"is concentrated in the first {as_mm(diag, d.get('scale', 0.0)):.2g} mm of travel after each "
-            "direction reversal"
+            f"is concentrated in the first {as_mm(diag, d.get('scale', 0.0)):.2g} mm of travel "
+            "after each direction reversal"
         )
         key = "reversal"
     else:
@@ -260,25 +273,25 @@ def unexplained_lines(diag: TimeDiagnosis) -> list:
     ratio = u.rms / u.noise if u.noise > 0 else float("inf")
     if rem:
         L += wrap_words(
-            f"unexplained: the residual keeps structure beyond noise (RMS {u.rms:.3g} {unit} against a "
-            f"{u.noise:.3g} {unit} noise floor, lag-1 correlation {u.lag1:.2f}):",
+            f"unexplained: the residual keeps structure beyond noise (RMS {u.rms:.3g} {unit} "
+            f"against a {u.noise:.3g} {unit} noise floor, lag-1 correlation {u.lag1:.2f}):",
             indent="",
             cont="  ",
         )
         for p in rem:
             what, causes, measure = signature_text(diag, p)
             L += wrap_words(
-                f"- residual {what}: {100 * p.share:.0f} % of the residual variance. Candidates: {causes}. "
-                f"To separate them: {measure}.",
+                f"- residual {what}: {100 * p.share:.0f} % of the residual variance. Candidates: "
+                f"{causes}. To separate them: {measure}.",
                 indent="  ",
                 cont="    ",
             )
     elif ratio > NOISE_RATIO:
         L += wrap_words(
-            f"unexplained: the residual is {ratio:.1f} times the noise floor (RMS {u.rms:.3g} {unit} "
-            f"against {u.noise:.3g} {unit}, lag-1 correlation {u.lag1:.2f}) but none of the tests over "
-            "position, velocity, time, reversals and acceleration holds it: an effect outside the "
-            "library (a resonance, a time delay, or lost motion"
+            f"unexplained: the residual is {ratio:.1f} times the noise floor (RMS {u.rms:.3g} "
+            f"{unit} against {u.noise:.3g} {unit}, lag-1 correlation {u.lag1:.2f}) but none of the "
+            "tests over position, velocity, time, reversals and acceleration holds it: an effect "
+            "outside the library (a resonance, a time delay, or lost motion"
             + (
                 ""
                 if diag.lost is not None
@@ -290,9 +303,9 @@ def unexplained_lines(diag: TimeDiagnosis) -> list:
         )
     else:
         L += wrap_words(
-            f"residual: no structure beyond noise (RMS {u.rms:.3g} {unit} against a {u.noise:.3g} {unit} "
-            "noise floor; tested over position incl. its period and spots, velocity, time incl. lines and "
-            "decays, reversals and acceleration)",
+            f"residual: no structure beyond noise (RMS {u.rms:.3g} {unit} against a {u.noise:.3g} "
+            f"{unit} noise floor; tested over position incl. its period and spots, velocity, time "
+            "incl. lines and decays, reversals and acceleration)",
             indent="",
             cont="  ",
         )

@@ -1,11 +1,12 @@
 """A problem that lists axis arrangements (``search.counterbalance`` / ``search.twin_drive``,
-:mod:`axisopt.design.choices`): each arrangement is solved as its own problem with the chosen method and the
-answers are combined.  The best objective wins (ties: the shared tie rule, lower cost then mass, then the
-arrangement listed first); the runners-up are merged in objective order; the certificate's counts are summed and
-proven only if every arrangement's solve is; infeasible only if every arrangement is.  The limit sensitivities
-are the best gain over all arrangements, each re-solved with the limit relaxed (:func:`.sensitivity.limit_sensitivities`
-for an arrangement with a design, a relaxed solve for one without).  A Pareto objective merges the arrangements' fronts
-and keeps the designs no design of another arrangement dominates."""
+:mod:`axisopt.design.choices`): each arrangement is solved as its own problem with the chosen method
+and the answers are combined.  The best objective wins (ties: the shared tie rule, lower cost then
+mass, then the arrangement listed first); the runners-up are merged in objective order; the
+certificate's counts are summed and proven only if every arrangement's solve is; infeasible only if
+every arrangement is.  The limit sensitivities are the best gain over all arrangements, each
+re-solved with the limit relaxed (:func:`.sensitivity.limit_sensitivities` for an arrangement with a
+design, a relaxed solve for one without).  A Pareto objective merges the arrangements' fronts and
+keeps the designs no design of another arrangement dominates."""
 
 from __future__ import annotations
 
@@ -34,8 +35,9 @@ _SUMMED = (
 
 @dataclass(frozen=True)
 class Door:
-    """What solving the arrangements needs of the front door, handed in by it (:func:`.front.solve` calls this
-    stage; the stage calls back through these, so it imports nothing of the front door)."""
+    """What solving the arrangements needs of the front door, handed in by it (:func:`.front.solve`
+    calls this stage; the stage calls back through these, so it imports nothing of the front
+    door)."""
 
     solve: Callable  # front.solve: one arrangement (a problem without arrangements)
     limit_sensitivities: Callable  # sensitivity.limit_sensitivities
@@ -45,7 +47,8 @@ class Door:
 
 
 def _miss(res: SolveResult) -> float:
-    """How far the closest design of an infeasible arrangement misses (sum of its relative misses)."""
+    """How far the closest design of an infeasible arrangement misses (sum of its relative
+    misses)."""
     inf = res.infeasibility
     if inf is None or not inf.closest:
         return float("inf")
@@ -77,8 +80,9 @@ def _certificate(results) -> Certificate:
 def _sensitivities(
     problem: Problem, subs, results, win: int, method: str, deadline: float, cut: list, door: Door
 ) -> list:
-    """The winner's limits, each with the best gain over every arrangement relaxed by sensitivity.RELAX (a limit the
-    ``deadline`` cuts in any arrangement is left out, its key in ``cut``)."""
+    """The winner's limits, each with the best gain over every arrangement relaxed by
+    sensitivity.RELAX (a limit the ``deadline`` cuts in any arrangement is left out, its key in
+    ``cut``)."""
     RELAX, limit_sensitivities, solve = door.relax, door.limit_sensitivities, door.solve
 
     best = results[win].best.objective
@@ -126,8 +130,8 @@ def _sensitivities(
 def _pareto(
     problem: Problem, method: str, subs, labels, t0: float, door: Door, time_limit: float = 100.0
 ) -> SolveResult:
-    """A Pareto objective over the arrangements: each arrangement's front, merged and filtered to the designs no
-    design of any arrangement dominates (each point names its arrangement)."""
+    """A Pareto objective over the arrangements: each arrangement's front, merged and filtered to
+    the designs no design of any arrangement dominates (each point names its arrangement)."""
     solve = door.solve
     from .pareto import FIELD, SENSE, nondominated
 
@@ -272,8 +276,7 @@ def solve_arrangements(
     res = results[win]
     status = res.status
     # optimal only if every arrangement is proven: solved to its optimum or proven infeasible (an
-    # arrangement
-    # the time limit cut before any design may hold a better one)
+    # arrangement the time limit cut before any design may hold a better one)
     unproven = [r.status for r in results if r.status not in (OPTIMAL, INFEASIBLE)]
     if unproven and status == OPTIMAL:
         status = unproven[0]

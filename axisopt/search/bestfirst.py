@@ -1,6 +1,7 @@
-"""The default method's driver: best-first over blocks of combinations, never forming the whole product
-(:func:`bound_order_search`).  Its stages: block bounds (:mod:`.bounds`), screening (:mod:`.screen`), the exact
-preload solve (:mod:`.preload`); the winners are polished after it (:mod:`.polish`).
+"""The default method's driver: best-first over blocks of combinations, never forming the whole
+product (:func:`bound_order_search`).  Its stages: block bounds (:mod:`.bounds`), screening
+(:mod:`.screen`), the exact preload solve (:mod:`.preload`); the winners are polished after it
+(:mod:`.polish`).
 """
 
 from __future__ import annotations
@@ -32,24 +33,26 @@ def bound_order_search(
 ):
     """Default method core: best-first over blocks of combinations, never forming the whole product.
 
-    1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives -- gets a
-       feasibility test and an objective bound from one evaluation with the optimistic guide.
-    2. The blocks are taken in decreasing bound.  A group of blocks is screened (:func:`screen_nuts`, exact
-       per combination up to the float32 slack) and its survivors join a pool; the pool's best bounds are
-       solved exactly (:func:`exact_solve`) before the next group whenever they beat the next block's
-       bound.  The incumbent is the ``top``-th best exact objective.
-    3. It stops when neither the next block nor the pool can reach the incumbent: the gap is then 0.  Blocks
-       never screened are the certificate's ``pruned_by_block``; survivors never solved its
+    1. :func:`block_bounds`: every (mounting, nut, bearing) block -- all its guides and drives --
+       gets a feasibility test and an objective bound from one evaluation with the optimistic guide.
+    2. The blocks are taken in decreasing bound.  A group of blocks is screened
+       (:func:`screen_nuts`, exact per combination up to the float32 slack) and its survivors join a
+       pool; the pool's best bounds are solved exactly (:func:`exact_solve`) before the next group
+       whenever they beat the next block's bound.  The incumbent is the ``top``-th best exact
+       objective.
+    3. It stops when neither the next block nor the pool can reach the incumbent: the gap is then 0.
+       Blocks never screened are the certificate's ``pruned_by_block``; survivors never solved its
        ``pruned_by_bound``.
-    ``incumbent``: an objective some design is known to reach (top 1): what cannot tie with it is pruned from
-    the start, and the Exact returned may then be empty.  ``deadline`` (a time.perf_counter() value): stop there
-    with what is solved so far (``stats.timed_out``; the gap is the bound of what is left against the best found),
-    and every :data:`.task.PROGRESS` seconds a progress record goes to the "axisopt" logger (a terminal shows it).
+    ``incumbent``: an objective some design is known to reach (top 1): what cannot tie with it is
+    pruned from the start, and the Exact returned may then be empty.  ``deadline`` (a
+    time.perf_counter() value): stop there with what is solved so far (``stats.timed_out``; the gap
+    is the bound of what is left against the best found), and every :data:`.task.PROGRESS` seconds a
+    progress record goes to the "axisopt" logger (a terminal shows it).
     ``first_feasible``: stop at the first exact solve that
     finds a feasible design (a feasibility test, no optimum: search.advice).
-    ``known``: an Exact of this space whose feasible rows are what :func:`exact_solve` gives under these
-    constraints too (the main search's, for a limit relaxed that does not move the best preload:
-    search.sensitivity); those rows are taken from it instead of solved again.
+    ``known``: an Exact of this space whose feasible rows are what :func:`exact_solve` gives under
+    these constraints too (the main search's, for a limit relaxed that does not move the
+    best preload: search.sensitivity); those rows are taken from it instead of solved again.
     Returns (Exact of evaluated combinations, :class:`.certificate.SearchStats`)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
@@ -82,8 +85,8 @@ def bound_order_search(
             shown = now
             found = sum(int(np.isfinite(p.objective).sum()) for p in parts)
             vocabulary.LOG.info(
-                f"  searching: {pos:,} of {len(bv):,} blocks screened, {n_eval:,} combinations solved, "
-                f"{found:,} feasible, {now - t0:.0f} s"
+                f"  searching: {pos:,} of {len(bv):,} blocks screened, {n_eval:,} combinations "
+                f"solved, {found:,} feasible, {now - t0:.0f} s"
             )
         floor = objective_floor(thr)
         nxt = bv[pos] if pos < len(bv) else -np.inf
@@ -150,13 +153,14 @@ def bound_order_search(
 
 
 # the key of the default search's solved combinations in its space's cache: (constraints, objective,
-# Exact), set by :func:`run` (the limit sensitivities' re-solves take them: search.sensitivity.reusable)
+# Exact), set by :func:`run` (the limit sensitivities' re-solves take them:
+# search.sensitivity.reusable)
 SOLVED = ("solved by the default search",)
 
 
 def run(task, method: str, top: int, time_limit: float, t0: float):
-    """The default method's runner (``search.front.METHOD_TABLE``): :func:`bound_order_search`
-    over ``task``, stopped at ``t0 + time_limit``, then its result (:func:`.polish.scalar_result`)."""
+    """The default method's runner (``search.front.METHOD_TABLE``): :func:`bound_order_search` over
+    ``task``, stopped at ``t0 + time_limit``, then its result (:func:`.polish.scalar_result`)."""
     from .polish import scalar_result
 
     ex, stats = bound_order_search(

@@ -1,12 +1,12 @@
 """Bounds over blocks of combinations, before any combination is formed.
 
-:func:`block_bounds`: each (mounting, nut, bearing) block -- all its guides and drives -- is tested and bounded
-at once with an optimistic guide (the most favourable value of every guide column,
+:func:`block_bounds`: each (mounting, nut, bearing) block -- all its guides and drives -- is tested
+and bounded at once with an optimistic guide (the most favourable value of every guide column,
 :func:`optimistic_guide_params`): every mechanical limit at its favourable preload end
-(:attr:`.constraints.Constraint.favourable`) and an upper bound of the objective at the highest allowed
-preload over a few grid positions (:func:`bound_positions`).  :func:`screen_ok` is the float32 test the bounds
-and the screening use: every limit relaxed by :data:`SCREEN_RTOL`, so rounding can only keep a combination,
-never drop one.
+(:attr:`.constraints.Constraint.favourable`) and an upper bound of the objective at the highest
+allowed preload over a few grid positions (:func:`bound_positions`).  :func:`screen_ok` is the
+float32 test the bounds and the screening use: every limit relaxed by :data:`SCREEN_RTOL`, so
+rounding can only keep a combination, never drop one.
 """
 
 from __future__ import annotations
@@ -22,13 +22,10 @@ from .task.space import DRIVE_KEYS, MECHANICS_BOUNDED, SCREEN_CHUNK, Space, as_d
 SCREEN_RTOL = 1e-4  # float32 screening: relative slack on every test and on the bound
 
 # The guide values that favour every mechanical limit and the objective (the optimistic guide of the
-# block
-# bounds): the table carries the blocks, so less block mass, rail mass, friction, price and preload,
-# and more
-# rigidity, damping and load rating never make a design worse.  The drive's limits (motor torques,
-# where
-# less friction can raise a deceleration torque) are not bounded this way (DRIVE_KEYS: checked per
-# pair).
+# block bounds): the table carries the blocks, so less block mass, rail mass, friction, price and
+# preload, and more rigidity, damping and load rating never make a design worse.  The drive's limits
+# (motor torques, where less friction can raise a deceleration torque) are not bounded this way
+# (DRIVE_KEYS: checked per pair).
 GUIDE_BEST = {
     "normal_rigidity": np.nanmax,
     "tangential_rigidity": np.nanmax,
@@ -65,11 +62,12 @@ def bound_positions(space: Space, mounting: str) -> np.ndarray:
 def optimistic_guide_params(
     space: Space, mounting: str, nut_sel, guide_type: str, dtype=float
 ) -> dict:
-    """Parameters over (nuts ``nut_sel``, bearings, one guide, positions) where the one guide takes, column
-    by column, the most favourable value of the searched guides of ``guide_type`` (:data:`GUIDE_BEST`).
-    No mechanical limit and no objective value of any (nut, bearing, guide) combination is better than
-    with this guide, so the (nut, bearing) results bound every guide (and every drive: the axis values
-    stand in for motor and coupling, with the stiffest searched coupling in the stiffness chain)."""
+    """Parameters over (nuts ``nut_sel``, bearings, one guide, positions) where the one guide takes,
+    column by column, the most favourable value of the searched guides of ``guide_type``
+    (:data:`GUIDE_BEST`).  No mechanical limit and no objective value of any (nut, bearing, guide)
+    combination is better than with this guide, so the (nut, bearing) results bound every guide (and
+    every drive: the axis values stand in for motor and coupling, with the stiffest searched
+    coupling in the stiffness chain)."""
     D = space.n_drives
     sel = space.g_arr["type"][::D] == guide_type
     s, nt, b = space.nut_bearing_arrays(nut_sel, dtype)
@@ -96,11 +94,11 @@ def optimistic_guide_params(
 
 
 def block_bounds(space: Space, constraints, objective: ObjectiveSpec):
-    """Per (mounting, nut, bearing) block of combinations: whether some guide (and drive) could meet the
-    mechanical limits, and an upper bound of the objective over the block, both from one evaluation with
-    the optimistic guide of each guide type (:func:`optimistic_guide_params`).  Limits the drive
-    changes, and the motor-torque limits, are left to the screening.  Returns a list over mountings of
-    (ok, bound), each nuts x bearings."""
+    """Per (mounting, nut, bearing) block of combinations: whether some guide (and drive) could meet
+    the mechanical limits, and an upper bound of the objective over the block, both from one
+    evaluation with the optimistic guide of each guide type (:func:`optimistic_guide_params`).
+    Limits the drive changes, and the motor-torque limits, are left to the screening.  Returns a
+    list over mountings of (ok, bound), each nuts x bearings."""
     _, N, B, _ = space.shape
     # every mechanical limit, and the cost (the optimistic guide carries the cheapest drive pair's
     # price)
@@ -149,10 +147,11 @@ def block_chunk(space: Space) -> int:
 
 
 def block_outputs(space: Space, mounting: str, sl: slice, guide_type: str):
-    """The optimistic guide's model outputs over the nuts ``sl`` and every bearing in float32, at the lowest
-    preload (last of :func:`bound_positions`) and at the highest (those positions): what :func:`block_bounds`
-    tests and bounds (and the explanation's block bounds, relaxed for the rounding).  The outputs do not depend
-    on the limits: kept per space (the sensitivities' re-solves) where they are small."""
+    """The optimistic guide's model outputs over the nuts ``sl`` and every bearing in float32, at
+    the lowest preload (last of :func:`bound_positions`) and at the highest (those positions): what
+    :func:`block_bounds` tests and bounds (and the explanation's block bounds, relaxed for the
+    rounding).  The outputs do not depend on the limits: kept per space (the sensitivities'
+    re-solves) where they are small."""
     xs = bound_positions(space, mounting).astype(np.float32)
     keep = space.shape[1] * space.shape[2] * len(xs) <= BOUNDS_KEPT
     key = ("block outputs", mounting, sl.start, sl.stop, guide_type)
@@ -174,7 +173,8 @@ def block_outputs(space: Space, mounting: str, sl: slice, guide_type: str):
 
 
 def screen_ok(c, out):
-    """Whether limit ``c`` is met by the model outputs ``out``, relaxed by :data:`SCREEN_RTOL` (screening)."""
+    """Whether limit ``c`` is met by the model outputs ``out``, relaxed by :data:`SCREEN_RTOL`
+    (screening)."""
     v = c.value(out)
     if not c.profile:
         v = np.asarray(v)[..., 0] if np.ndim(v) else v

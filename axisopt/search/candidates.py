@@ -1,5 +1,5 @@
-"""A design of the search space as a :class:`.result.Candidate`: its parts, preload and the model's values
-(:func:`make_candidate`, :func:`candidate_values`)."""
+"""A design of the search space as a :class:`.result.Candidate`: its parts, preload and the model's
+values (:func:`make_candidate`, :func:`candidate_values`)."""
 
 from __future__ import annotations
 
@@ -23,7 +23,8 @@ def make_candidate(
     rank: int = 0,
     name: str = "",
 ) -> Candidate:
-    """The candidate of combination ``combo`` at ``preload`` (clipped to its range), ranked ``rank``."""
+    """The candidate of combination ``combo`` at ``preload`` (clipped to its range), ranked
+    ``rank``."""
     return candidate_values(space, combo, preload, objective, rank, name)[0]
 
 
@@ -35,7 +36,8 @@ def candidate_values(
     rank: int = 0,
     name: str = "",
 ) -> tuple:
-    """(:func:`make_candidate`'s Candidate, the model's values of its design: ``Evaluation.values``)."""
+    """(:func:`make_candidate`'s Candidate, the model's values of its design:
+    ``Evaluation.values``)."""
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
     screw, nut, bearing, guide, motor, coupling, reduction = part_rows(space, n, b, g)
@@ -57,8 +59,8 @@ def candidate_values(
         assumed=space.problem.assumed,
     )
     # the model on numpy: the same formula as the CasADi Function (tests/model/test_function.py
-    # holds them to 1e-10)
-    # without building that Function for every new axis (a study's cases, the closest designs)
+    # holds them to 1e-10) without building that Function for every new axis (a study's cases, the
+    # closest designs)
     ev = model.evaluate(design, use_casadi=False)
     v = ev.values
     J = float(objective.value({k: np.asarray(v[k]) for k, _ in objective.terms}))
@@ -91,8 +93,9 @@ def candidate_values(
 
 
 def part_rows(space: Space, n, b, g):
-    """(screw, nut, bearing, guide, motor, coupling, reduction) rows of part-axis numbers; ``g`` is the guide-
-    and-drive index (motor, coupling and reduction None where the axis values stand in)."""
+    """(screw, nut, bearing, guide, motor, coupling, reduction) rows of part-axis numbers; ``g`` is
+    the guide- and-drive index (motor, coupling and reduction None where the axis values stand
+    in)."""
     gi, di = divmod(int(g), space.n_drives)
     mi, ci, ri = space.drives[di]
     return (

@@ -1,6 +1,7 @@
-"""What a solve's answer proves: the certificate (method, how many combinations were enumerated, bounded or
-pruned, the gap, what was assumed) with the statistics a search stage hands to it (:class:`SearchStats`).  The
-limits that bind at the optimum are the result's (:class:`.result.Binding`)."""
+"""What a solve's answer proves: the certificate (method, how many combinations were enumerated,
+bounded or pruned, the gap, what was assumed) with the statistics a search stage hands to it
+(:class:`SearchStats`).  The limits that bind at the optimum are the result's
+(:class:`.result.Binding`)."""
 
 from __future__ import annotations
 
@@ -47,20 +48,17 @@ class Certificate:
     screening_rate: float = 0.0  # combinations / s
     notes: tuple = ()
     # default method: combinations never screened (their (mounting, nut, bearing) block cannot meet
-    # the limits
-    # or reach the incumbent with any guide and drive), and combinations in the blocks screened (one
-    # by one, or a
-    # drive at a time where its bounds over the block rule it out: search.drivebounds)
+    # the limits or reach the incumbent with any guide and drive), and combinations in the blocks
+    # screened (one by one, or a drive at a time where its bounds over the block rule it out:
+    # search.drivebounds)
     pruned_by_block: int = 0
     screened: int | None = None
     # combinations never formed (not in ``combinations``): a (motor, coupling) pair whose coupling
-    # is dominated
-    # by another or cannot carry the motor's peak torque
+    # is dominated by another or cannot carry the motor's peak torque
     pruned_by_dominance: int = 0
     # the objective and the active limits and checks of the best design that rest on estimated part
-    # values (not
-    # the vendor's table): model.estimates.Resting.to_dict() each; empty when every active value is
-    # a vendor's
+    # values (not the vendor's table): model.estimates.Resting.to_dict() each; empty when every
+    # active value is a vendor's
     estimated: tuple = ()
 
     @classmethod

@@ -1,11 +1,12 @@
-"""The default method's search of a rack-and-pinion or linear-motor space: the drive block (every combination
-of the parts but the guide, the last axis of a :class:`.drivespace.DriveSpace`) is bounded once with the
-optimistic guide -- the least friction, seal drag and block mass for the drive checks and limits, the stiffest
-block and the lightest or heaviest blocks (whichever is better for the objective: each output is monotone in
-each guide value) for the objective -- the drives that fail even so are dropped, the rest are evaluated with
-every guide in the order of their bound until no drive left can reach the ``top``-th best design.  The
-guide checks (life, static safety) depend on the drive's mass and are checked with the pairs only.  Exact:
-the tests compare it with every combination evaluated (:func:`.drivetype.search_space`, method exhaustive)."""
+"""The default method's search of a rack-and-pinion or linear-motor space: the drive block (every
+combination of the parts but the guide, the last axis of a :class:`.drivespace.DriveSpace`) is
+bounded once with the optimistic guide -- the least friction, seal drag and block mass for the drive
+checks and limits, the stiffest block and the lightest or heaviest blocks (whichever is better for
+the objective: each output is monotone in each guide value) for the objective -- the drives that
+fail even so are dropped, the rest are evaluated with every guide in the order of their bound until
+no drive left can reach the ``top``-th best design.  The guide checks (life, static safety) depend
+on the drive's mass and are checked with the pairs only.  Exact: the tests compare it with every
+combination evaluated (:func:`.drivetype.search_space`, method exhaustive)."""
 
 from __future__ import annotations
 
@@ -19,8 +20,8 @@ GUIDE_KEYS = ("mu", "f_seal", "m_blocks", "k_n", "c_block", "c0_block", "roller"
 
 
 def _reduced(space, which: str) -> dict:
-    """The parameters with the guide axis reduced to its optimistic value (``which``: 'light' or 'heavy'
-    blocks)."""
+    """The parameters with the guide axis reduced to its optimistic value (``which``: 'light' or
+    'heavy' blocks)."""
     p = dict(space.p)
     for k in ("mu", "f_seal"):
         p[k] = np.min(p[k], axis=-1, keepdims=True)
@@ -46,8 +47,8 @@ def _subset(p: dict, idx) -> dict:
 
 
 def drive_bounds(problem, space, spec, drives=None):
-    """Per drive (flat over the drive axes, or the flat indices ``drives`` of them): the optimistic objective,
-    whether it may pass, its least miss."""
+    """Per drive (flat over the drive axes, or the flat indices ``drives`` of them): the optimistic
+    objective, whether it may pass, its least miss."""
     name, factor, _, sense = spec
     dshape = space.shape[:-1] + (1,)
     cost = space.drive_cost + np.min(space.guide_cost, axis=-1, keepdims=True)
@@ -88,10 +89,10 @@ LEVEL1_BATCH = 8  # (rack, reduction, twin) blocks opened at a time
 
 
 def block_bounds(space, spec):
-    """The optimistic objective of each (rack, reduction, twin pinion) block of a rack space, over its motors
-    and guides: every output the objective reads is monotone in the motors' and blocks' mass (lightest and
-    heaviest tried), the stiffest block, the cheapest motor and guide; the other motor values do not enter it.
-    Flat over (rack, reduction, twin)."""
+    """The optimistic objective of each (rack, reduction, twin pinion) block of a rack space, over
+    its motors and guides: every output the objective reads is monotone in the motors' and blocks'
+    mass (lightest and heaviest tried), the stiffest block, the cheapest motor and guide; the other
+    motor values do not enter it.  Flat over (rack, reduction, twin)."""
     name, factor, _, sense = spec
     shape = space.shape[:MOTOR_AXIS] + (1,) + space.shape[MOTOR_AXIS + 1 : -1] + (1,)
     out = []
@@ -118,16 +119,17 @@ def block_bounds(space, spec):
 
 
 def beaten(bound, kth, sense) -> bool:
-    """Whether an optimistic ``bound`` cannot reach the value ``kth`` (1e-9 relative: a tie is not beaten)."""
+    """Whether an optimistic ``bound`` cannot reach the value ``kth`` (1e-9 relative: a tie is not
+    beaten)."""
     tol = 1e-9 * max(abs(kth), 1.0)
     return bool((sense == "max" and bound < kth - tol) or (sense == "min" and bound > kth + tol))
 
 
 def best_first(problem, space, spec, top: int):
-    """(best ``top`` designs, evaluated pairs, closest combinations if none is feasible).  A large rack space
-    is opened block by block: the (rack, reduction, twin pinion) blocks in the order of their bound
-    (:func:`block_bounds`), each block's drives bounded and evaluated as a space's, until no block left can
-    reach the ``top``-th best design."""
+    """(best ``top`` designs, evaluated pairs, closest combinations if none is feasible).  A large
+    rack space is opened block by block: the (rack, reduction, twin pinion) blocks in the order of
+    their bound (:func:`block_bounds`), each block's drives bounded and evaluated as a space's,
+    until no block left can reach the ``top``-th best design."""
     sense = spec[3]
     sign = -1.0 if sense == "max" else 1.0
     state = {"best": [], "evaluated": 0}
@@ -165,9 +167,9 @@ def best_first(problem, space, spec, top: int):
 
 
 def _visit(problem, space, spec, top, drives, state):
-    """Bound ``drives`` (all when None) with the optimistic guide, then evaluate those that may still win
-    with every guide in bound order, updating ``state``; returns the closest combinations when none is
-    feasible and ``drives`` is None."""
+    """Bound ``drives`` (all when None) with the optimistic guide, then evaluate those that may
+    still win with every guide in bound order, updating ``state``; returns the closest combinations
+    when none is feasible and ``drives`` is None."""
     sense = spec[3]
     sign = -1.0 if sense == "max" else 1.0
     obj, ok, miss = drive_bounds(problem, space, spec, drives)

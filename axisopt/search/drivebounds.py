@@ -1,16 +1,18 @@
-"""Bounds of the drive's limits, per drive, over the guides of a (nut, bearing) block, before any (guide, drive)
-combination is formed.
+"""Bounds of the drive's limits, per drive, over the guides of a (nut, bearing) block, before any
+(guide, drive) combination is formed.
 
-The guide enters the drive block (:func:`axisopt.model.drive.drive`) only through the moving mass, the drag torque
-and the guide friction at standstill (:func:`axisopt.model.drive_inputs`), so the block is evaluated once per
-drive in interval arithmetic (:mod:`.interval`) over the range of those three that the block's guides give (a
-box holding every guide's triple).  The bearings are taken in :data:`DRIVE_BEARING_GROUPS` groups of
-neighbouring drag torque, each bearing parameter an interval over its group.
+The guide enters the drive block (:func:`axisopt.model.drive.drive`) only through the moving mass,
+the drag torque and the guide friction at standstill (:func:`axisopt.model.drive_inputs`), so the
+block is evaluated once per drive in interval arithmetic (:mod:`.interval`) over the range of those
+three that the block's guides give (a box holding every guide's triple).  The bearings are taken in
+:data:`DRIVE_BEARING_GROUPS` groups of neighbouring drag torque, each bearing parameter an interval
+over its group.
 
-Two uses: :func:`drive_box` at each preload end (the explanation's block bounds, which read each limit at its
-favourable end), and :func:`drive_hull` over the whole allowed preload range at once (the drag torque is affine
-in the nut preload, so every preload between the ends lies in the box): a value no combination of the block
-beats at any allowed preload, for each drive -- the screening's and the explanation's per-drive test.
+Two uses: :func:`drive_box` at each preload end (the explanation's block bounds, which read each
+limit at its favourable end), and :func:`drive_hull` over the whole allowed preload range at once
+(the drag torque is affine in the nut preload, so every preload between the ends lies in the box): a
+value no combination of the block beats at any allowed preload, for each drive -- the screening's
+and the explanation's per-drive test.
 """
 
 from __future__ import annotations
@@ -27,18 +29,20 @@ from .task.space import Space, shaped
 # bearings taken together in the drive limits' interval bounds (module docstring)
 DRIVE_BEARING_GROUPS = 8
 # fewer searched drives than this: the screening and the explanation evaluate every drive without
-# the per-drive
-# bounds first (on the 1000-case study, 10 drives per case, the bounds cost more than they saved)
+# the per-drive bounds first (on the 1000-case study, 10 drives per case, the bounds cost more than
+# they saved)
 PER_DRIVE_MIN = 64
-# (nut, bearing group, drive) elements per interval evaluation of the drive block by a caller that splits its
-# nuts (the screening's viable drives, the explanation's per-block drive bounds): its temporaries stay near 1 GB
+# (nut, bearing group, drive) elements per interval evaluation of the drive block by a caller that
+# splits its nuts (the screening's viable drives, the explanation's per-block drive bounds): its
+# temporaries stay near 1 GB
 HULL_BLOCK = 400_000
 
 
 def drive_pair_params(space: Space, mounting: str, nut_sel, bearings=None) -> dict:
-    """Parameters over (nuts ``nut_sel``, bearings, drives, 1) with the first guide's columns (or, with
-    ``bearings`` aligned with the nuts, over ((nut, bearing) pairs, 1, drives, 1)): for the drive block, which
-    takes the guide only through the moving mass, the drag torque and the standstill friction passed to it."""
+    """Parameters over (nuts ``nut_sel``, bearings, drives, 1) with the first guide's columns (or,
+    with ``bearings`` aligned with the nuts, over ((nut, bearing) pairs, 1, drives, 1)): for the
+    drive block, which takes the guide only through the moving mass, the drag torque and the
+    standstill friction passed to it."""
     s, nt, b = space.nut_bearing_arrays(nut_sel, float, bearings)
     g = shaped({k: v[:1] for k, v in space.g_arr.items()}, (1, 1, 1, 1), float)
     return model.axis_params(
@@ -50,9 +54,10 @@ def drive_box(
     space: Space, mounting: str, nut_sel, regen: bool, bearings=None, across: bool = False
 ):
     """The drive block's outputs in interval arithmetic per (nut, bearing group, drive) of the nuts
-    ``nut_sel`` (or per (nut, bearing) pair of ``bearings``, one group each): a list of (lower ends, upper
-    ends) dicts, one per preload end (lowest, highest), or one over the whole preload range if ``across``;
-    with ``group``, each bearing's group.  The lost motion (``backlash``: nut and reduction alone) is exact."""
+    ``nut_sel`` (or per (nut, bearing) pair of ``bearings``, one group each): a list of (lower ends,
+    upper ends) dicts, one per preload end (lowest, highest), or one over the whole preload range if
+    ``across``; with ``group``, each bearing's group.  The lost motion (``backlash``: nut and
+    reduction alone) is exact."""
     # (n, B, guides, 1)
     pm = space.params_structured(mounting, nut_sel, mechanics=True, bearings=bearings)
     pd = drive_pair_params(space, mounting, nut_sel, bearings)  # (n, B, drives, 1)
@@ -85,7 +90,8 @@ def drive_box(
     red = (nc, B, 1, 1)  # the guide axis reduced
 
     def guide_range(v):
-        """(least, largest) over the guides, as (nuts, bearings, 1, 1): reduced before any broadcast."""
+        """(least, largest) over the guides, as (nuts, bearings, 1, 1): reduced before any
+        broadcast."""
         v = np.asarray(v, dtype=float)
         if v.ndim == 4 and v.shape[2] > 1:
             return (
@@ -114,10 +120,9 @@ def drive_box(
 
 
 # a mounting's hull is computed once for every nut and kept up to this many (nut, bearing group,
-# drive) elements
-# (the interval drive block, about 2 us each: 3.4 s for the laser axis's 2 M) and this many (nut,
-# bearing, guide)
-# elements of the mechanics it takes; above, each caller's nuts are evaluated when asked
+# drive) elements (the interval drive block, about 2 us each: 3.4 s for the laser axis's 2 M) and
+# this many (nut, bearing, guide) elements of the mechanics it takes; above, each caller's nuts are
+# evaluated when asked
 HULL_CACHE = 100_000
 HULL_CACHE_MECHANICS = 4_000_000
 
@@ -133,10 +138,11 @@ def _whole_hull(space: Space) -> bool:
 
 
 def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
-    """:func:`drive_box` over the whole preload range (lower ends, upper ends) for the nuts ``nut_sel`` (or
-    the (nut, bearing) pairs of ``bearings``), and each bearing's group.  Where the mounting's every nut fits in
-    :data:`HULL_CACHE`, the box of every nut is evaluated once per space and these rows are taken from it (the
-    screening, the explanation's block bounds and its scored blocks read the same values)."""
+    """:func:`drive_box` over the whole preload range (lower ends, upper ends) for the nuts
+    ``nut_sel`` (or the (nut, bearing) pairs of ``bearings``), and each bearing's group.  Where the
+    mounting's every nut fits in :data:`HULL_CACHE`, the box of every nut is evaluated once per
+    space and these rows are taken from it (the screening, the explanation's block bounds and its
+    scored blocks read the same values)."""
     N = space.shape[1]
     nut_idx = space.nut_numbers(nut_sel)
     if not _whole_hull(space):
@@ -166,15 +172,16 @@ def hull_ends(space: Space, mounting: str, nut_sel, regen: bool, bearings=None):
     return box, (np.zeros(1, dtype=np.int64) if bearings is not None else group)
 
 
-# the per-nut rows of :func:`drive_hull` kept on the space for the searches that follow on it (the limit
-# sensitivities' and the cheaper design's re-searches open the same nuts: 0.3-0.8 s of interval arithmetic
-# per nut on the 2 t boring table), in float32 rounded outward, up to this many bytes
+# the per-nut rows of :func:`drive_hull` kept on the space for the searches that follow on it (the
+# limit sensitivities' and the cheaper design's re-searches open the same nuts: 0.3-0.8 s of
+# interval arithmetic per nut on the 2 t boring table), in float32 rounded outward, up to this many
+# bytes
 HULL_ROWS_BYTES = 192 * 2**20
 
 
 def _outward32(v: np.ndarray, up: bool) -> np.ndarray:
-    """``v`` in float32, each value rounded away from the side a limit tests (up for an upper end): a bound
-    it was stays a bound."""
+    """``v`` in float32, each value rounded away from the side a limit tests (up for an upper end):
+    a bound it was stays a bound."""
     w = v.astype(np.float32)
     with np.errstate(invalid="ignore"):
         off = w < v if up else w > v
@@ -184,12 +191,13 @@ def _outward32(v: np.ndarray, up: bool) -> np.ndarray:
 
 
 def drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None):
-    """Per (nut, bearing group, drive) of the nuts ``nut_sel`` (or per (nut, bearing) pair of ``bearings``),
-    for each limit of ``constraints`` a value no (guide, preload) of the block beats with that drive: the drive
-    block's limits from its interval bounds, the cost its least value (:func:`least_cost`):
-    {limit name: (nuts, groups, drives)}, and each bearing's group.  Without ``bearings`` each nut's rows are
-    kept on the space (:data:`HULL_ROWS_BYTES`, float32 rounded outward): a later search on the space (a
-    limit relaxed, the cheaper design) takes them from there."""
+    """Per (nut, bearing group, drive) of the nuts ``nut_sel`` (or per (nut, bearing) pair of
+    ``bearings``), for each limit of ``constraints`` a value no (guide, preload) of the block beats
+    with that drive: the drive block's limits from its interval bounds, the cost its least value
+    (:func:`least_cost`): {limit name: (nuts, groups, drives)}, and each bearing's group.  Without
+    ``bearings`` each nut's rows are kept on the space (:data:`HULL_ROWS_BYTES`, float32 rounded
+    outward): a later search on the space (a limit relaxed, the cheaper design) takes them from
+    there."""
     if not constraints:
         return {}, None
     if bearings is None and not _whole_hull(space):
@@ -248,18 +256,19 @@ def _drive_hull(space: Space, mounting: str, nut_sel, constraints, bearings=None
 
 
 def least_cost(space: Space, mounting: str, nut_sel, group, bearings=None) -> np.ndarray:
-    """The least cost [EUR] of a block's combinations with each drive, over its guides and the bearings of each
-    group (``group``: each bearing's), per (nut, group, drive) of the nuts ``nut_sel`` (or per (nut, bearing)
-    pair of ``bearings``, one group).  The cost is a sum of part prices (:func:`axisopt.model.cost.cost`, the
-    drive's counted once per drive of the axis) and reads no preload, so this is exact: the least over guides and
-    bearings with the first drive, plus each drive's price difference from it (:func:`cost_parts`)."""
+    """The least cost [EUR] of a block's combinations with each drive, over its guides and the
+    bearings of each group (``group``: each bearing's), per (nut, group, drive) of the nuts
+    ``nut_sel`` (or per (nut, bearing) pair of ``bearings``, one group).  The cost is a sum of part
+    prices (:func:`axisopt.model.cost.cost`, the drive's counted once per drive of the axis) and
+    reads no preload, so this is exact: the least over guides and bearings with the first drive,
+    plus each drive's price difference from it (:func:`cost_parts`)."""
     by_group, per_drive = cost_parts(space, mounting, nut_sel, group, bearings)
     return by_group[..., None] + per_drive[None, None, :]
 
 
 def cost_parts(space: Space, mounting: str, nut_sel, group, bearings=None) -> tuple:
-    """(the least cost [EUR] with the first searched drive per (nut, group) as in :func:`least_cost`, each drive's
-    price difference from the first (drives,))."""
+    """(the least cost [EUR] with the first searched drive per (nut, group) as in
+    :func:`least_cost`, each drive's price difference from the first (drives,))."""
     from ..model.cost import cost
 
     nut_idx = space.nut_numbers(nut_sel)

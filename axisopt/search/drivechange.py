@@ -1,7 +1,7 @@
-"""What to change when no rack-and-pinion or linear-motor design fits: the closest designs (fewest summed
-relative misses of the checks and limits) with the checks they miss, and the least change of the axis
-(acceleration, then rapid speed, each lowered by bisection to 1/256 of it) at which the default search finds
-a design -- verified, the design is named."""
+"""What to change when no rack-and-pinion or linear-motor design fits: the closest designs (fewest
+summed relative misses of the checks and limits) with the checks they miss, and the least change of
+the axis (acceleration, then rapid speed, each lowered by bisection to 1/256 of it) at which the
+default search finds a design -- verified, the design is named."""
 
 from __future__ import annotations
 
@@ -14,9 +14,9 @@ TYPE_LABELS = {"rack_pinion": "rack and pinion", "linear_motor": "linear motor"}
 
 
 def scaled(axis, key: str, factor: float):
-    """``axis`` with its acceleration (``key`` 'acceleration') or rapid speed ('max_speed') times ``factor``,
-    in its duty cycle too (each move's acceleration scaled, each move's speed capped at the new rapid
-    speed)."""
+    """``axis`` with its acceleration (``key`` 'acceleration') or rapid speed ('max_speed') times
+    ``factor``, in its duty cycle too (each move's acceleration scaled, each move's speed capped at
+    the new rapid speed)."""
     value = getattr(axis, key) * factor
     segs = []
     for seg in axis.duty_cycle:
@@ -29,7 +29,8 @@ def scaled(axis, key: str, factor: float):
 
 
 def design_change(problem, closest: dict, spec):
-    """(closest designs, design change text) for an infeasible drive-type problem (see the module)."""
+    """(closest designs, design change text) for an infeasible drive-type problem (see the
+    module)."""
     from .drivebest import best_first
     from .drivedesigns import design_of, spaces
 
@@ -67,9 +68,10 @@ def design_change(problem, closest: dict, spec):
         if found is not None:
             value = getattr(axis, key) * found[0]
             text = (
-                f"lower {label} to {value * scale:.3g} {unit} (from {getattr(axis, key) * scale:.3g}): "
-                f"verified, {TYPE_LABELS[found[1][0]]} {' / '.join(str(v) for v in found[1][1].values())} "
-                "then meets every check and limit (the best design there)"
+                f"lower {label} to {value * scale:.3g} {unit} (from "
+                f"{getattr(axis, key) * scale:.3g}): verified, {TYPE_LABELS[found[1][0]]} "
+                f"{' / '.join(str(v) for v in found[1][1].values())} then meets every check and "
+                "limit (the best design there)"
             )
             if best is None or found[0] > best[0]:
                 best = (found[0], text)

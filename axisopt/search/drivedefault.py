@@ -1,23 +1,24 @@
-"""The drive types the shipped catalogs offer by default: a problem without ``search.drive_types`` is solved
-as a screw drive (the usual search and its answer), then rack and pinion and linear motors are offered beside
-it, each pruned by its bound before any of its combinations is formed into a design.
+"""The drive types the shipped catalogs offer by default: a problem without ``search.drive_types``
+is solved as a screw drive (the usual search and its answer), then rack and pinion and linear motors
+are offered beside it, each pruned by its bound before any of its combinations is formed into a
+design.
 
-A type is left out, with the reason, when it does not apply: the objective or method is one the drive-type
-search does not run (a Pareto front, Bonmin, SCIP), the problem sizes no drive (``catalog.drive: no``), pins a
-screw-drive part (``catalog.require`` of a screw, nut or bearing), chooses among arrangements
-(``search.counterbalance`` / ``search.twin_drive``), a rack on a stroke under :data:`RACK_MIN_STROKE` or
-without a reduction (``catalog.reductions: no``),
-states a limit on an output only a screw drive has (``max_drag_torque``, ``max_total_mass``, ...: it
-could not bind the other types), or a linear motor on a vertical axis without a counterbalance (the vendors
-forbid it without a brake).
-The rows follow the problem's vendor, status and ``estimated`` filters.
+A type is left out, with the reason, when it does not apply: the objective or method is one the
+drive-type search does not run (a Pareto front, Bonmin, SCIP), the problem sizes no drive
+(``catalog.drive: no``), pins a screw-drive part (``catalog.require`` of a screw, nut or bearing),
+chooses among arrangements (``search.counterbalance`` / ``search.twin_drive``), a rack on a stroke
+under :data:`RACK_MIN_STROKE` or without a reduction (``catalog.reductions: no``), states a limit on
+an output only a screw drive has (``max_drag_torque``, ``max_total_mass``, ...: it could not bind
+the other types), or a linear motor on a vertical axis without a counterbalance (the vendors forbid
+it without a brake).  The rows follow the problem's vendor, status and ``estimated`` filters.
 
-Each remaining type is bounded as the drive-type search bounds it (:mod:`.drivebest`: per (rack, reduction,
-twin pinion) block for a large rack space, per drive otherwise, the optimistic guide): when no drive may pass
-its checks, or the best bound cannot reach the screw drive's optimum, the type cannot win and the screw answer
-stands as printed.  Otherwise that type's space is searched (best-first, or every combination with the
-exhaustive method) and the best design of any type wins by the drive-type search's tie rule; the tests compare
-this with the exhaustive search over every type listed explicitly (:func:`.drivetype.solve_drive_types`)."""
+Each remaining type is bounded as the drive-type search bounds it (:mod:`.drivebest`: per (rack,
+reduction, twin pinion) block for a large rack space, per drive otherwise, the optimistic guide):
+when no drive may pass its checks, or the best bound cannot reach the screw drive's optimum, the
+type cannot win and the screw answer stands as printed.  Otherwise that type's space is searched
+(best-first, or every combination with the exhaustive method) and the best design of any type wins
+by the drive-type search's tie rule; the tests compare this with the exhaustive search over every
+type listed explicitly (:func:`.drivetype.solve_drive_types`)."""
 
 from __future__ import annotations
 
@@ -41,22 +42,20 @@ from .drivedesigns import (
 
 OTHER_TYPES = ("rack_pinion", "linear_motor")
 # rack and pinion is offered by default from this stroke [m]: builders use it beyond about 4 m,
-# below it a
-# screw (issue 54's router; Thomson: screw drives "commonly" reach 5.5-6 m with support bearing
-# pairs).  A
-# shorter axis compares it when search.drive_types lists it: its stiffness rests on the mesh
-# estimate
-# (physics.rack, ISO 6336 guidance) and counts no pinion-shaft, gearbox-bearing or mounting
-# compliance, so on
-# a short axis it would win on an optimistic estimate (the rule of model.estimates)
+# below it a screw (issue 54's router; Thomson: screw drives "commonly" reach 5.5-6 m with support
+# bearing pairs).  A shorter axis compares it when search.drive_types lists it: its stiffness rests
+# on the mesh estimate (physics.rack, ISO 6336 guidance) and counts no pinion-shaft, gearbox-bearing
+# or mounting compliance, so on a short axis it would win on an optimistic estimate (the rule of
+# model.estimates)
 RACK_MIN_STROKE = 4.0
 SCREW_SLOTS = ("screw", "nut", "bearing")
 
 
 @dataclass
 class Offer:
-    """What the default offer did: per type, 'bounded' / 'infeasible' / 'searched' / why it does not apply,
-    and the answer over every type when a type other than the screw wins (else None: the screw stands)."""
+    """What the default offer did: per type, 'bounded' / 'infeasible' / 'searched' / why it does not
+    apply, and the answer over every type when a type other than the screw wins (else None: the
+    screw stands)."""
 
     reasons: dict
     result: DriveTypeResult | None = None
@@ -87,7 +86,8 @@ def left_out(problem, method: str) -> str:
 
 
 def _rows(rows, rs) -> tuple:
-    """The drive-type rows the problem's catalog filters keep (vendors, status, estimated: exclude)."""
+    """The drive-type rows the problem's catalog filters keep (vendors, status, estimated:
+    exclude)."""
     out = []
     for r in rows:
         if rs.vendors and r.get("vendor") not in rs.vendors:
@@ -121,8 +121,9 @@ def offered(problem, tables: DriveTables) -> tuple[tuple, dict, DriveTables]:
 
 
 def space_bound(problem, space, spec) -> tuple[float, bool]:
-    """(the best objective any design of ``space`` may reach, whether any drive may pass its checks): the
-    drive-type search's own bounds (:mod:`.drivebest`), so a type pruned here is one it would not open."""
+    """(the best objective any design of ``space`` may reach, whether any drive may pass its
+    checks): the drive-type search's own bounds (:mod:`.drivebest`), so a type pruned here is one it
+    would not open."""
     sense = spec[3]
     n_drives = int(np.prod(space.shape[:-1]))
     if space.kind == "rack_pinion" and n_drives >= LEVEL1_MIN:
@@ -137,8 +138,8 @@ def space_bound(problem, space, spec) -> tuple[float, bool]:
 
 
 def offer(problem, screw_res, method: str = "default", *, top: int = 5, tables=None) -> Offer:
-    """Offer rack and pinion and linear motors beside the screw answer ``screw_res`` of ``problem`` (see the
-    module); ``tables``: the drive-type catalogs (default: the shipped ones)."""
+    """Offer rack and pinion and linear motors beside the screw answer ``screw_res`` of ``problem``
+    (see the module); ``tables``: the drive-type catalogs (default: the shipped ones)."""
     t0 = time.perf_counter()
     why = left_out(problem, method)
     if why:

@@ -1,6 +1,6 @@
-"""The drive-type search's vocabulary below its strategies: objectives and limits by output, the spaces of
-each type, the designs and their ranking (:mod:`.drivetype` solves, :mod:`.drivebest` searches best-first,
-:mod:`.drivechange` verifies a design change; each reads these)."""
+"""The drive-type search's vocabulary below its strategies: objectives and limits by output, the
+spaces of each type, the designs and their ranking (:mod:`.drivetype` solves, :mod:`.drivebest`
+searches best-first, :mod:`.drivechange` verifies a design change; each reads these)."""
 
 from __future__ import annotations
 
@@ -104,7 +104,8 @@ class DriveTypeResult:
 
 
 def screw_designs(res) -> list:
-    """The screw search's best and runners-up (a :class:`~axisopt.search.result.SolveResult`) as designs."""
+    """The screw search's best and runners-up (a :class:`~axisopt.search.result.SolveResult`) as
+    designs."""
     designs = []
     for c in ([res.best] + list(res.runners_up)) if res.best is not None else []:
         out = c.outputs or {}
@@ -148,8 +149,8 @@ def subset(table, keep):
 
 
 def spaces(problem, axis=None) -> list:
-    """The rack-and-pinion and linear-motor spaces ``problem`` lists (its catalog filters: vendors of guides,
-    guide types, require/exclude of the guide, motor and reduction slots)."""
+    """The rack-and-pinion and linear-motor spaces ``problem`` lists (its catalog filters: vendors
+    of guides, guide types, require/exclude of the guide, motor and reduction slots)."""
     axis = problem.axis if axis is None else axis
     ch = problem.drives
     red, mot, gd = part_tables(problem)
@@ -254,5 +255,6 @@ def rank_designs(designs: list, sense: str) -> list:
 
 
 def rank_key(objective, cost, mass, sign) -> tuple:
-    """The tie rule: the objective, then lower cost, then lower mass (rounded so float noise is no rank)."""
+    """The tie rule: the objective, then lower cost, then lower mass (rounded so float noise is no
+    rank)."""
     return (round(float(sign * objective), 9), round(float(cost), 6), round(float(mass), 9))

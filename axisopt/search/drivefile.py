@@ -1,8 +1,9 @@
-"""A rack-and-pinion or linear-motor design as a file: the problem's own YAML with a ``drive_design:`` section
-naming the parts (:func:`drive_design_yaml`, written by ``axisopt solve --save-design``), and its evaluation
-(:func:`evaluate_drive_design`, ``axisopt evaluate``): the one combination of the problem's drive-type space
-those parts make, evaluated by the same model as the search's (:func:`.drivespace.evaluate_one`), so that a
-saved design evaluates to the numbers its solve printed."""
+"""A rack-and-pinion or linear-motor design as a file: the problem's own YAML with a
+``drive_design:`` section naming the parts (:func:`drive_design_yaml`, written by
+``axisopt solve --save-design``), and its evaluation (:func:`evaluate_drive_design`,
+``axisopt evaluate``): the one combination of the problem's drive-type space those parts make,
+evaluated by the same model as the search's (:func:`.drivespace.evaluate_one`), so that a saved
+design evaluates to the numbers its solve printed."""
 
 from __future__ import annotations
 
@@ -17,9 +18,9 @@ from .drivespace import evaluate_one
 
 
 def evaluate_drive_design(problem) -> DriveDesign:
-    """The design ``problem.drive_design`` names, evaluated: objective, cost, outputs, the checks' margins and
-    the problem's limits as margins (>= 1 met).  A part the problem's catalogs and filters do not offer is a
-    one-line error naming its key."""
+    """The design ``problem.drive_design`` names, evaluated: objective, cost, outputs, the checks'
+    margins and the problem's limits as margins (>= 1 met).  A part the problem's catalogs and
+    filters do not offer is a one-line error naming its key."""
     dd = problem.drive_design
     if dd is None:
         raise InputError("no drive_design section", source=problem.source, where="drive_design")
@@ -55,9 +56,10 @@ def _line(text: str) -> str:
 
 
 def drive_design_yaml(problem_path, design: DriveDesign, rank: int = 1) -> str:
-    """The text of a saved rack-and-pinion or linear-motor ``design``: the problem file ``problem_path`` with
-    its search narrowed to the design's drive type and a ``drive_design:`` section naming the parts; catalog
-    directories the problem names relative to itself made absolute (the file may be written elsewhere)."""
+    """The text of a saved rack-and-pinion or linear-motor ``design``: the problem file
+    ``problem_path`` with its search narrowed to the design's drive type and a ``drive_design:``
+    section naming the parts; catalog directories the problem names relative to itself made absolute
+    (the file may be written elsewhere)."""
     path = Path(problem_path)
     data = yaml.safe_load(path.read_text(encoding="utf-8"))
     if data.get("catalogs"):
@@ -73,7 +75,7 @@ def drive_design_yaml(problem_path, design: DriveDesign, rank: int = 1) -> str:
     head = (
         f"# design {rank} of `axisopt solve {_line(path.name)}`: {KIND_NAMES[design.drive_type]}, "
         f"objective {design.objective:.6g}, cost {design.cost:,.0f} EUR\n"
-        "# `axisopt evaluate` of this file evaluates the drive_design below on the problem's axis, limits "
-        "and catalogs\n"
+        "# `axisopt evaluate` of this file evaluates the drive_design below on the problem's axis, "
+        "limits and catalogs\n"
     )
     return head + yaml.safe_dump(data, sort_keys=False, allow_unicode=True, width=100)

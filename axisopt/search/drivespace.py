@@ -1,8 +1,9 @@
-"""The search spaces of the rack-and-pinion and linear-motor drive types: every combination of their parts
-(rack set x reduction x motor x twin pinion x guide; linear motor x forcers x guide) as broadcast numpy arrays
-of the model's parameters (:mod:`axisopt.model.rackdrive`, :mod:`axisopt.model.lmdrive`), the axis's values
-per drive side, and the evaluation of a whole space (``evaluate_space``) or of one combination in floats
-(``evaluate_one``, the exhaustive method's ground truth).  Prices of the parts: the catalogs'."""
+"""The search spaces of the rack-and-pinion and linear-motor drive types: every combination of their
+parts (rack set x reduction x motor x twin pinion x guide; linear motor x forcers x guide) as
+broadcast numpy arrays of the model's parameters (:mod:`axisopt.model.rackdrive`,
+:mod:`axisopt.model.lmdrive`), the axis's values per drive side, and the evaluation of a whole space
+(``evaluate_space``) or of one combination in floats (``evaluate_one``, the exhaustive method's
+ground truth).  Prices of the parts: the catalogs'."""
 
 from __future__ import annotations
 
@@ -47,7 +48,8 @@ class Side:
 
 
 def side_of(axis) -> Side:
-    """The per-side values of ``axis`` (a twin drive: the governing side, as the screw model checks it)."""
+    """The per-side values of ``axis`` (a twin drive: the governing side, as the screw model checks
+    it)."""
     tw = axis.twin_drive
     sides = 2 if tw is not None else 1
     share = tw.force_share if tw is not None else 1.0
@@ -105,8 +107,9 @@ def _guides(table, side: Side) -> dict:
 
 @dataclass
 class DriveSpace:
-    """One drive type's combinations: ``axes`` names the broadcast axes and their part ids, ``p`` the model's
-    parameters broadcast over them, ``cost`` the parts' price of the whole axis (both sides)."""
+    """One drive type's combinations: ``axes`` names the broadcast axes and their part ids, ``p``
+    the model's parameters broadcast over them, ``cost`` the parts' price of the whole axis (both
+    sides)."""
 
     kind: str  # 'rack_pinion' | 'linear_motor'
     axes: tuple  # ((slot, ids), ...) in broadcast order
@@ -149,7 +152,8 @@ class DriveSpace:
 
 
 def take(v, idx):
-    """The entries of a broadcastable array at the multi-index ``idx`` (a size-1 axis stays at 0)."""
+    """The entries of a broadcastable array at the multi-index ``idx`` (a size-1 axis stays at
+    0)."""
     if not isinstance(v, np.ndarray) or v.ndim == 0:
         return v
     return v[tuple(ix if v.shape[d] != 1 else 0 for d, ix in enumerate(idx))]
@@ -167,8 +171,7 @@ def rack_space(racks, reductions, motors, guides, side: Side, choice) -> DriveSp
     red = lambda col: _shape(reductions[col], 1, nd)  # noqa: E731
     mot = lambda col: _shape(motors[col], 2, nd)  # noqa: E731
     # each motor by its vendor's rule (model.motorrule; a row without one: the harshest), unless the
-    # problem asks
-    # one RMS ratio of every motor (axis.rms_torque_ratio)
+    # problem asks one RMS ratio of every motor (axis.rms_torque_ratio)
     mot_rule = lambda col, default: _shape(  # noqa: E731
         np.where(np.isfinite(np.asarray(motors[col], float)), motors[col], default)
         if col in motors
@@ -290,7 +293,8 @@ def _guide_params(g, side: Side) -> dict:
 
 
 def respond(space: DriveSpace, p: dict) -> dict:
-    """The model on ``p`` (arrays or floats): {'outputs', 'margins'} merged with the guide checks."""
+    """The model on ``p`` (arrays or floats): {'outputs', 'margins'} merged with the guide
+    checks."""
     if space.kind == "rack_pinion":
         res = rack_response(p, space.side.cycle)
         attraction = 0.0

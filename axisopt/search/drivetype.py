@@ -1,15 +1,16 @@
-"""The drive type as a search choice (``search.drive_types``): the screw drive (the usual search, its proof),
-rack and pinion and linear motors (every combination of their parts, :mod:`.drivespace`), the best design of
-any type wins.  The default method evaluates each new type's whole space at once on numpy arrays; the
-exhaustive method evaluates every combination alone in floats (the ground truth the tests compare with); both
-take the screw drive from the screw search with the same method.  Ties: lower cost, then lower moving mass,
-then the type listed first.
+"""The drive type as a search choice (``search.drive_types``): the screw drive (the usual search,
+its proof), rack and pinion and linear motors (every combination of their parts,
+:mod:`.drivespace`), the best design of any type wins.  The default method evaluates each new type's
+whole space at once on numpy arrays; the exhaustive method evaluates every combination alone in
+floats (the ground truth the tests compare with); both take the screw drive from the screw search
+with the same method.  Ties: lower cost, then lower moving mass, then the type listed first.
 
-The objective is one of stiffness, frequency (maximised), cost, moving mass, positioning error (minimised);
-the limits on those outputs and min_life hold for every type; a limit on an output only the screw drive has
-(drag torque, screw sag, ...) binds the screw drive alone (noted in the answer).  When no type has a design,
-the answer names the checks the closest designs miss and a design change verified by evaluating the closest
-designs again (the acceleration, then the rapid speed lowered by bisection)."""
+The objective is one of stiffness, frequency (maximised), cost, moving mass, positioning error
+(minimised); the limits on those outputs and min_life hold for every type; a limit on an output only
+the screw drive has (drag torque, screw sag, ...) binds the screw drive alone (noted in the answer).
+When no type has a design, the answer names the checks the closest designs miss and a design change
+verified by evaluating the closest designs again (the acceleration, then the rapid speed lowered by
+bisection)."""
 
 from __future__ import annotations
 
@@ -44,8 +45,8 @@ from .result import INFEASIBLE, OPTIMAL, STATUSES
 
 
 def search_space(problem, space, spec, method: str, top: int):
-    """The best ``top`` designs of one space, the number of combinations evaluated (exhaustive: the feasible
-    count) and, when none is feasible, the closest combinations."""
+    """The best ``top`` designs of one space, the number of combinations evaluated (exhaustive: the
+    feasible count) and, when none is feasible, the closest combinations."""
     if method != "exhaustive":
         from .drivebest import best_first
 
@@ -69,7 +70,8 @@ def search_space(problem, space, spec, method: str, top: int):
 
 
 def scalar_search(problem, space, spec, top: int):
-    """Every combination alone in floats (the tests' ground truth for small spaces): (designs, feasible)."""
+    """Every combination alone in floats (the tests' ground truth for small spaces): (designs,
+    feasible)."""
     sign = -1.0 if spec[3] == "max" else 1.0
     found = []
     for i in range(space.size):

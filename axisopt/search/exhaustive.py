@@ -1,11 +1,11 @@
-"""The exhaustive method: every combination, no bounds and no screening (:func:`exhaustive_search`, the
-ground truth of the tests).
+"""The exhaustive method: every combination, no bounds and no screening (:func:`exhaustive_search`,
+the ground truth of the tests).
 
-Each limit is checked exactly on every combination (the preload-dependent ones by their own bisection, the
-motor-torque ones by their interval, :func:`.preload.convex_interval`), and the preload problem of each
-combination that some preload can make feasible is solved on a grid of that feasible interval
-(:func:`grid_solve`; this does not assume that the objective grows with the preload), chunked and vectorized.
-IPOPT polishes the winners as in the default method.
+Each limit is checked exactly on every combination (the preload-dependent ones by their own
+bisection, the motor-torque ones by their interval, :func:`.preload.convex_interval`), and the
+preload problem of each combination that some preload can make feasible is solved on a grid of that
+feasible interval (:func:`grid_solve`; this does not assume that the objective grows with the
+preload), chunked and vectorized.  IPOPT polishes the winners as in the default method.
 """
 
 from __future__ import annotations
@@ -34,9 +34,10 @@ def grid_solve(space: Space, idx, constraints, objective: ObjectiveSpec, n_grid:
     """Per-combination preload optimum that does not assume the objective grows with the preload.
 
     Each preload-dependent limit on its own is monotone in the preload (module docstring of
-    ``space``), so its threshold is found by its own bisection; the feasible preloads are the interval
-    between the largest lower threshold and the smallest upper one.  The objective is then evaluated
-    on an even grid of that interval, both ends included, and the best feasible point kept.
+    ``space``), so its threshold is found by its own bisection; the feasible preloads are the
+    interval between the largest lower threshold and the smallest upper one.  The objective is then
+    evaluated on an even grid of that interval, both ends included, and the best feasible point
+    kept.
     """
     idx = np.asarray(idx, dtype=np.int64)
     res = new_exact(idx)
@@ -132,9 +133,11 @@ def exhaustive_search(
     deadline: float | None = None,
 ):
     """Every combination of ``space``, ``chunk`` at a time (:func:`grid_solve`).  ``deadline`` (a
-    time.perf_counter() value): stop there with the chunks solved so far (``stats.timed_out``, not proven, gap
-    unknown: no bound covers the rest); every :data:`.task.PROGRESS` seconds a progress record goes to the
-    "axisopt" logger (a terminal shows it).  Returns (Exact of the evaluated combinations, SearchStats)."""
+    time.perf_counter() value): stop there with the chunks solved so far (``stats.timed_out``, not
+    proven, gap
+    unknown: no bound covers the rest); every :data:`.task.PROGRESS` seconds a progress record goes
+    to the "axisopt" logger (a terminal shows it).  Returns (Exact of the evaluated combinations,
+    SearchStats)."""
     t0 = shown = time.perf_counter()
     parts, done, timed_out = [], 0, False
     for s in range(0, space.size, chunk):
@@ -168,7 +171,8 @@ def exhaustive_search(
 
 def run(task, method: str, top: int, time_limit: float, t0: float):
     """The exhaustive method's runner (``search.front.METHOD_TABLE``): :func:`exhaustive_search`
-    over ``task``, stopped at ``t0 + time_limit``, then its result (:func:`.polish.scalar_result`)."""
+    over ``task``, stopped at ``t0 + time_limit``, then its result
+    (:func:`.polish.scalar_result`)."""
     from .polish import scalar_result
 
     ex, stats = exhaustive_search(

@@ -1,10 +1,11 @@
-"""The front door of a solve: :func:`solve` validates the method, builds the :class:`Task` (problem, search
-space, constraints, objective) and dispatches by the objective's mode -- scalar, lexicographic (two scalar
-solves, the first's optimum a floor of the second) or Pareto (:mod:`.pareto`) -- to the method's runner
-(:data:`METHOD_TABLE`: the default and exhaustive runners sit in their stage modules, :func:`.bestfirst.run`
-and :func:`.exhaustive.run`, and end in :func:`.polish.scalar_result`); the limit sensitivities, the cheaper
-design near the optimum (:mod:`.sensitivity`) and what of the optimum rests on estimated part values are added
-here.  The MINLP methods are imported when a solve first reaches them.
+"""The front door of a solve: :func:`solve` validates the method, builds the :class:`Task` (problem,
+search space, constraints, objective) and dispatches by the objective's mode -- scalar,
+lexicographic (two scalar solves, the first's optimum a floor of the second) or Pareto
+(:mod:`.pareto`) -- to the method's runner (:data:`METHOD_TABLE`: the default and exhaustive runners
+sit in their stage modules, :func:`.bestfirst.run` and :func:`.exhaustive.run`, and end in
+:func:`.polish.scalar_result`); the limit sensitivities, the cheaper design near the optimum
+(:mod:`.sensitivity`) and what of the optimum rests on estimated part values are added here.  The
+MINLP methods are imported when a solve first reaches them.
 """
 
 from __future__ import annotations
@@ -28,7 +29,8 @@ if TYPE_CHECKING:
 
 
 def build_task(problem: Problem, objective: ObjectiveSpec | None = None) -> Task:
-    """The task of ``problem``: its search space, constraints and objective (``objective``: another one)."""
+    """The task of ``problem``: its search space, constraints and objective (``objective``: another
+    one)."""
     from .parts import build_space
 
     space = build_space(problem)  # each stage module is imported when a solve first reaches it
@@ -89,7 +91,8 @@ METHOD_TABLE = (
         True,
         True,
         True,
-        "block bounds, screening, exact preload solve in bound order, IPOPT polish; proves the optimum",
+        "block bounds, screening, exact preload solve in bound order, IPOPT polish; proves the "
+        "optimum",
     ),
     Method(
         "exhaustive",
@@ -136,15 +139,17 @@ def solve(
 
     problem       : :class:`axisopt.problem.Problem`
     method        : a :data:`METHOD_TABLE` name: 'default' | 'exhaustive' | 'bonmin' | 'scip'
-    top           : number of designs returned (best + runners-up; a method without runners-up notes it)
-    time_limit    : wall-clock limit [s] of every method: the default method then returns the best design found
-                    with its gap (status 'time_limit'), or an infeasible answer's explanation so far
-    sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that allow it);
-                    and, when nothing fits (default method), the design change a search verifies
-                    (:mod:`.advice`); a batch study leaves both out
-    explain       : an infeasible answer of the default or exhaustive method carries its explanation (the
-                    closest designs, what to relax); False: the status alone (a what-if that reads only
-                    whether a design exists and its optimum)
+    top           : number of designs returned (best + runners-up; a method without runners-up notes
+                    it)
+    time_limit    : wall-clock limit [s] of every method: the default method then returns the best
+                    design found with its gap (status 'time_limit'), or an infeasible answer's
+                    explanation so far
+    sensitivities : re-solve with each limit relaxed by 10 % to report what it costs (methods that
+                    allow it); and, when nothing fits (default method), the design change a search
+                    verifies (:mod:`.advice`); a batch study leaves both out
+    explain       : an infeasible answer of the default or exhaustive method carries its explanation
+                    (the closest designs, what to relax); False: the status alone (a what-if that
+                    reads only whether a design exists and its optimum)
 
     What the search left out of the design (the drive, and why) is on the answer's ``left_out``.
     """
@@ -175,16 +180,16 @@ def solve(
     why = problem.restrictions.drive_left_out
     if why and not res.left_out:
         res.left_out = (
-            f"the drive (motor, coupling, reduction) is not sized: {why}; the axis's motor_inertia and "
-            "coupling values stand in and no motor check is made",
+            f"the drive (motor, coupling, reduction) is not sized: {why}; the axis's motor_inertia "
+            "and coupling values stand in and no motor check is made",
         )
     return res
 
 
 def _shown_sign(res: SolveResult) -> None:
-    """A least cost or mass is searched as its negative, maximised: the designs' objectives and the limits'
-    gains turned back into the value itself (a gain then reads as the change of cost or mass: negative, cheaper
-    or lighter)."""
+    """A least cost or mass is searched as its negative, maximised: the designs' objectives and the
+    limits' gains turned back into the value itself (a gain then reads as the change of cost
+    or mass: negative, cheaper or lighter)."""
     for c in [res.best] + list(res.runners_up):
         if c is not None:
             c.objective = -c.objective
@@ -219,12 +224,11 @@ def _solve(
     ob = problem.objective
     if problem.axis.twin_drive is not None and not m.pareto:
         # the MINLP references are built on the same model, but SCIP's LP relaxation of the gantry's
-        # 2-DOF
-        # eigenvalues contradicted enumeration on a synthetic twin-drive problem: refused, not
+        # 2-DOF eigenvalues contradicted enumeration on a synthetic twin-drive problem: refused, not
         # trusted
         raise InputError(
-            f"--method {method} does not take a twin-drive gantry (axis.twin_drive) yet; use --method "
-            "default or exhaustive",
+            f"--method {method} does not take a twin-drive gantry (axis.twin_drive) yet; use "
+            "--method default or exhaustive",
             source=problem.source,
         )
     if ob.mode == "pareto":
@@ -296,7 +300,8 @@ def _solve(
 def _solve_lexicographic(
     task: Task, m: Method, top: int, time_limit: float, t0: float
 ) -> SolveResult:
-    """The primary objective's optimum, then the secondary's over the designs within the tolerance of it."""
+    """The primary objective's optimum, then the secondary's over the designs within the tolerance
+    of it."""
     from .task.constraints import limit_constraint
     from .task.objective import objective_spec
 

@@ -1,13 +1,14 @@
-"""Interval arithmetic on numpy arrays, so that a model formula written for floats and arrays bounds its output
-over a set of inputs (the searches' block bounds).
+"""Interval arithmetic on numpy arrays, so that a model formula written for floats and arrays bounds
+its output over a set of inputs (the searches' block bounds).
 
-An :class:`Interval` holds elementwise lower and upper ends.  The arithmetic operators, and the numpy
-functions the model's math dispatch (:mod:`axisopt.mathx`) calls on arrays -- ``abs``, ``maximum``,
-``minimum``, ``sqrt``, ``where`` -- give an interval that contains every value the formula takes when each
-interval input takes any value in its range, independently (the dependency problem of interval arithmetic
-makes the result wider than the true range, never narrower, with one exception kept exact: ``x * x`` of the
-same interval is a square).  Any other numpy function on an interval raises ``TypeError``, so a formula that
-uses one fails loudly instead of giving a bound that is not one.
+An :class:`Interval` holds elementwise lower and upper ends.  The arithmetic operators, and the
+numpy functions the model's math dispatch (:mod:`axisopt.mathx`) calls on arrays -- ``abs``,
+``maximum``, ``minimum``, ``sqrt``, ``where`` -- give an interval that contains every value the
+formula takes when each interval input takes any value in its range, independently (the dependency
+problem of interval arithmetic makes the result wider than the true range, never narrower, with one
+exception kept exact: ``x * x`` of the same interval is a square).  Any other numpy function on an
+interval raises ``TypeError``, so a formula that uses one fails loudly instead of giving a bound
+that is not one.
 """
 
 from __future__ import annotations
@@ -24,7 +25,8 @@ def _lohi(v):
 
 
 def _finite_ends(lo, hi):
-    """0 * inf (an unbounded end times zero) is 0 at every point of the range: nan is not a bound."""
+    """0 * inf (an unbounded end times zero) is 0 at every point of the range: nan is not a
+    bound."""
     if np.isnan(lo).any() or np.isnan(hi).any():
         lo = np.nan_to_num(lo, nan=0.0, posinf=np.inf, neginf=-np.inf)
         hi = np.nan_to_num(hi, nan=0.0, posinf=np.inf, neginf=-np.inf)
@@ -96,7 +98,8 @@ class Interval:
         return Interval(np.where(straddles, 0.0, np.minimum(lo2, hi2)), np.maximum(lo2, hi2))
 
     def _reciprocal(self):
-        """1/x; the whole line when the interval holds 0 (a division by a range through zero bounds nothing)."""
+        """1/x; the whole line when the interval holds 0 (a division by a range through zero bounds
+        nothing)."""
         away = (self.lo > 0) | (self.hi < 0)
         with np.errstate(divide="ignore", invalid="ignore"):
             lo = np.where(away, 1.0 / self.hi, -np.inf)
@@ -161,8 +164,8 @@ class Interval:
 
 
 def ends(out: dict) -> tuple[dict, dict]:
-    """(lower ends, upper ends) of a dict of model outputs: an Interval's ends, any other value as it is (lists
-    and tuples of values element by element)."""
+    """(lower ends, upper ends) of a dict of model outputs: an Interval's ends, any other value as
+    it is (lists and tuples of values element by element)."""
 
     def lo(v):
         if isinstance(v, (list, tuple)):

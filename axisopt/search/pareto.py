@@ -1,11 +1,12 @@
-"""Exact Pareto front over two or more of the Pareto goals (``axisopt.model.goals.OBJECTIVE_TABLE``: minimum
-stiffness, minimum frequency, cost, masses, positioning error).
+"""Exact Pareto front over two or more of the Pareto goals (``axisopt.model.goals.OBJECTIVE_TABLE``:
+minimum stiffness, minimum frequency, cost, masses, positioning error).
 
-The performance measures improve with the nut preload (stiffness and frequency grow, the positioning error
-falls) and cost and mass do not depend on it, so each combination contributes one point: its best preload (the
-upper end of its feasible preload interval).  Every screened combination is solved exactly (vectorized), then
-:func:`nondominated` keeps the exact non-dominated set (a point is dropped only if another is at least as good in
-every objective and strictly better in one; equal points are all kept).
+The performance measures improve with the nut preload (stiffness and frequency grow, the positioning
+error falls) and cost and mass do not depend on it, so each combination contributes one point: its
+best preload (the upper end of its feasible preload interval).  Every screened combination is solved
+exactly (vectorized), then :func:`nondominated` keeps the exact non-dominated set (a point is
+dropped only if another is at least as good in every objective and strictly better in one; equal
+points are all kept).
 """
 
 from __future__ import annotations
@@ -27,8 +28,8 @@ from .task.constraints import build_constraints
 from .task.objective import objective_spec
 
 # per Pareto key (axisopt.model.goals.OBJECTIVE_TABLE): maximised or minimised, display unit, the
-# name of its value
-# on a Candidate or Exact (``Candidate.goal(key)`` and ``Exact.goals[key]`` read it by key)
+# name of its value on a Candidate or Exact (``Candidate.goal(key)`` and ``Exact.goals[key]`` read
+# it by key)
 SENSE = {k: g.sense for k, g in GOALS.items() if g.pareto}
 UNIT = {k: g.unit for k, g in GOALS.items() if g.pareto}
 FIELD = {k: g.field for k, g in GOALS.items() if g.pareto}
@@ -40,9 +41,9 @@ CLOUD = 4000  # feasible designs drawn for the plot of the front
 def nondominated(points: np.ndarray, block: int = 2048) -> np.ndarray:
     """Indices of the non-dominated rows of ``points`` (n x d), every column maximised.
 
-    Rows are processed in decreasing lexicographic order, so a row can only be dominated by an earlier
-    row or an equal-first-column one; each block is checked against the front found so far and
-    against itself (vectorized comparisons, no per-point Python loop).
+    Rows are processed in decreasing lexicographic order, so a row can only be dominated by an
+    earlier row or an equal-first-column one; each block is checked against the front found so far
+    and against itself (vectorized comparisons, no per-point Python loop).
     """
     P = np.asarray(points, dtype=float)
     n, d = P.shape
@@ -78,9 +79,10 @@ def nondominated(points: np.ndarray, block: int = 2048) -> np.ndarray:
 
 def screen_feasible_blocks(space, constraints, spec, deadline: float | None = None):
     """Screen only the (mounting, nut, bearing) blocks that some guide and drive could make feasible
-    (:func:`.bounds.block_bounds`; every front point is feasible, so no bound on the objectives is used).
-    ``deadline`` (a time.perf_counter() value): stop there with the blocks screened so far.
-    Returns (survivors' combination numbers, seconds, combinations screened, whether the deadline cut it)."""
+    (:func:`.bounds.block_bounds`; every front point is feasible, so no bound on the objectives is
+    used).  ``deadline`` (a time.perf_counter() value): stop there with the blocks screened so far.
+    Returns (survivors' combination numbers, seconds, combinations screened, whether the deadline
+    cut it)."""
     t0 = time.perf_counter()
     GD = space.shape[3]
     idx = []
@@ -104,8 +106,8 @@ def screen_feasible_blocks(space, constraints, spec, deadline: float | None = No
 
 
 def _solve_screened(space, constraints, spec, deadline: float):
-    """The default method's front search: the feasible blocks screened, their survivors solved exactly,
-    both stopped at ``deadline``.  Returns (Exact, SearchStats)."""
+    """The default method's front search: the feasible blocks screened, their survivors solved
+    exactly, both stopped at ``deadline``.  Returns (Exact, SearchStats)."""
     idx, t_screen, screened, cut = screen_feasible_blocks(space, constraints, spec, deadline)
     parts, done = [], 0
     for s in range(0, len(idx), 200000):
@@ -138,9 +140,10 @@ def solve_pareto(
     max_points: int = 200,
     time_limit: float = 100.0,
 ) -> SolveResult:
-    """The exact front of ``problem.objective.pareto`` (module docstring).  ``time_limit`` [s] from ``t0``
-    bounds the whole search: a front cut by it is the front of the combinations solved so far (status
-    'time_limit', not proven), and no infeasibility is claimed when none was found in time."""
+    """The exact front of ``problem.objective.pareto`` (module docstring).  ``time_limit`` [s] from
+    ``t0`` bounds the whole search: a front cut by it is the front of the combinations solved so far
+    (status 'time_limit', not proven), and no infeasibility is claimed when none was found in
+    time."""
     t0 = time.perf_counter() if t0 is None else t0
     deadline = t0 + time_limit
     keys = problem.objective.pareto
@@ -202,8 +205,8 @@ def solve_pareto(
     )
     if info.timed_out:
         res.message = (
-            f"the time limit ({time_limit:g} s) stopped the search after {info.exact_evaluations:,} of "
-            f"{space.size:,} combinations: "
+            f"the time limit ({time_limit:g} s) stopped the search after "
+            f"{info.exact_evaluations:,} of {space.size:,} combinations: "
             + (
                 f"the front of those ({len(front)} points), not proven"
                 if len(front)

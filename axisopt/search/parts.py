@@ -1,12 +1,14 @@
-"""The parts a problem may use: the catalog's tables filtered by the problem's restrictions, the (motor,
-coupling, reduction) drives, and a process cache of the result (:func:`build_space` -> :class:`.task.space.Space`).
+"""The parts a problem may use: the catalog's tables filtered by the problem's restrictions, the
+(motor, coupling, reduction) drives, and a process cache of the result (:func:`build_space` ->
+:class:`.task.space.Space`).
 
-The filters: vendors, series, provenance status, estimated values, nut types, bearing arrangements and
-preload classes, guide types and preload levels, require/exclude; nuts keep their screw; each nut's preload
-range is the problem's (preloaded nuts, capped by the vendors' 10 % Ca ceiling) or its catalog range (single
-nuts).  Couplings another beats on every count, and drives whose coupling cannot carry the motor's peak torque
-through the drive's reduction, are never formed.  A drive's reduction is a reductions row or none (the axis's
-reduction values: direct drive by default), when the problem allows reductions (``catalog.reductions``).
+The filters: vendors, series, provenance status, estimated values, nut types, bearing arrangements
+and preload classes, guide types and preload levels, require/exclude; nuts keep their screw; each
+nut's preload range is the problem's (preloaded nuts, capped by the vendors' 10 % Ca ceiling) or its
+catalog range (single nuts).  Couplings another beats on every count, and drives whose coupling
+cannot carry the motor's peak torque through the drive's reduction, are never formed.  A drive's
+reduction is a reductions row or none (the axis's reduction values: direct drive by default), when
+the problem allows reductions (``catalog.reductions``).
 """
 
 from __future__ import annotations
@@ -42,8 +44,8 @@ def _arrays(t, cols):
 
 
 def vendor_filled(t: PartTable, table: str) -> PartTable:
-    """The rows of a part table with a vendor value in every column the model would otherwise estimate
-    (``catalog.COLUMNS``: an optional column with an ``estimate``)."""
+    """The rows of a part table with a vendor value in every column the model would otherwise
+    estimate (``catalog.COLUMNS``: an optional column with an ``estimate``)."""
     from ..catalog.columns import COLUMNS
 
     keep = np.ones(len(t), dtype=bool)
@@ -57,22 +59,20 @@ def vendor_filled(t: PartTable, table: str) -> PartTable:
 
 
 # Spaces built in this process, by what they are made of (the catalog object and the problem's
-# choices that
-# filter it): a study's cases share the catalog and most of their restrictions, and filtering the
-# part tables
-# is a few ms a case.  Each problem gets its own Space (its axis, its parameter cache) on the
-# shared,
-# read-only part tables and arrays.
+# choices that filter it): a study's cases share the catalog and most of their restrictions, and
+# filtering the part tables is a few ms a case.  Each problem gets its own Space (its axis, its
+# parameter cache) on the shared, read-only part tables and arrays.
 _SPACES: dict = {}
 SPACES_KEPT = 4
 
 
 def build_space(problem: Problem) -> Space:
-    """The filtered part tables of ``problem`` as a :class:`Space` (reused from an earlier problem on the same
-    catalog object with the same restrictions, preload range, reduction ratio and coupling margin)."""
+    """The filtered part tables of ``problem`` as a :class:`Space` (reused from an earlier problem
+    on the same catalog object with the same restrictions, preload range, reduction ratio and
+    coupling margin)."""
     # everything the filters and the drive pruning read (_add_drives: the cycle's top speed, the
-    # speed margins and
-    # the lost-motion limit prune drives): a study case differing in any of them builds its own
+    # speed margins and the lost-motion limit prune drives): a study case differing in any of them
+    # builds its own
     key = (
         id(problem.catalog),
         problem.restrictions,
@@ -118,9 +118,10 @@ def reads_budget(problem: Problem) -> bool:
 
 
 def _grades_chosen(problem: Problem) -> bool:
-    """Whether the screw's grade is a choice of the search (or fixed by the problem): a positioning limit or front
-    reads the grade's lead error, or the problem names the grades.  Otherwise every screw takes the cheapest grade
-    it is made in (C5 for every shipped series: the catalog price), which needs no expansion."""
+    """Whether the screw's grade is a choice of the search (or fixed by the problem): a positioning
+    limit or front reads the grade's lead error, or the problem names the grades.  Otherwise every
+    screw takes the cheapest grade it is made in (C5 for every shipped series: the catalog price),
+    which needs no expansion."""
     return (
         "max_positioning_error" in problem.limit_map
         or "positioning_error" in (problem.objective.pareto or ())
@@ -129,11 +130,12 @@ def _grades_chosen(problem: Problem) -> bool:
 
 
 def screw_grade_rows(problem: Problem, screws, nut_lengths=0.0) -> tuple:
-    """(row positions, grade names): each screw row repeated once per grade the search may give it -- those its
-    series is made in (catalogs/screw_grades.csv), within the problem's ``catalog.screw_grades``, with a
-    tolerance over the thread its nut travels, stroke + ``nut_lengths`` (one per row, or one for all; THK lists
-    no C0 beyond 1600 mm), and not dominated (a grade that costs as much as a more accurate one is left out: C7
-    on a precision shaft, priced as C5)."""
+    """(row positions, grade names): each screw row repeated once per grade the search may give it
+    -- those its series is made in (catalogs/screw_grades.csv), within the problem's
+    ``catalog.screw_grades``, with a tolerance over the thread its nut travels, stroke +
+    ``nut_lengths`` (one per row, or one for all; THK lists no C0 beyond 1600 mm), and not dominated
+    (a grade that costs as much as a more accurate one is left out: C7 on a precision shaft, priced
+    as C5)."""
     t = grade_table()
     allowed = problem.restrictions.screw_grades
     travels = problem.axis.stroke + np.broadcast_to(
@@ -160,7 +162,8 @@ def screw_grade_rows(problem: Problem, screws, nut_lengths=0.0) -> tuple:
 
 
 def _top_speed(problem: Problem) -> float:
-    """The duty cycle's largest table speed [m/s] (0 without a move): what the drives' speed pruning reads."""
+    """The duty cycle's largest table speed [m/s] (0 without a move): what the drives' speed pruning
+    reads."""
     return max([ph.speed for ph in problem.axis.phases] + [0.0])
 
 
@@ -218,17 +221,15 @@ def _build_space(problem: Problem) -> Space:
         np.minimum(nuts.number("preload_max"), problem.preload_max),
     )
     # the vendors' preload ceiling (check nut_preload: 10 % Ca) bounds the range of a preloaded nut,
-    # as the
-    # vendors' own preload ranges do: the search never goes above it, so it needs no constraint of
-    # its own
+    # as the vendors' own preload ranges do: the search never goes above it, so it needs no
+    # constraint of its own
     hi = np.where(
         single, hi, np.minimum(hi, pnut.preload_ceiling(nuts.number("dynamic_load_rating")))
     )
     keep = lo <= hi
     nuts, lo, hi = nuts.take(keep), lo[keep], hi[keep]
     # an empty part slot leaves no combination at all: a one-line error naming it (not an
-    # "infeasible"
-    # result whose explanation has nothing to score)
+    # "infeasible" result whose explanation has nothing to score)
     for t, what, filters in (
         (
             nuts,
@@ -296,9 +297,9 @@ def _build_space(problem: Problem) -> Space:
 
 
 def drive_stiffnesses(sp: Space) -> np.ndarray:
-    """The torsional stiffness between motor side and screw [N m/rad] of each searched drive (D,): its coupling's
-    (the axis value without one) in series with its reduction's (none: rigid), as :func:`axisopt.model.chain.
-    drive_torsional_stiffness` takes them."""
+    """The torsional stiffness between motor side and screw [N m/rad] of each searched drive (D,):
+    its coupling's (the axis value without one) in series with its reduction's (none: rigid), as
+    :func:`axisopt.model.chain. drive_torsional_stiffness` takes them."""
     D = sp.n_drives
     k = (
         sp.c_arr["torsional_stiffness"][:D]
@@ -313,7 +314,8 @@ def drive_stiffnesses(sp: Space) -> np.ndarray:
 
 
 def _filtered(t, r, slot, series=None, vendors=None):
-    """Rows of a part table the problem allows in ``slot``: vendor and series filters, require, exclude."""
+    """Rows of a part table the problem allows in ``slot``: vendor and series filters, require,
+    exclude."""
     if vendors is not None:
         t = t.take(t.isin("vendor", vendors))
     if series is not None:
@@ -352,7 +354,8 @@ def coupling_dominated(cp) -> np.ndarray:
 
 
 def _add_drives(sp: Space, problem: Problem) -> None:
-    """The (motor, coupling, reduction) drives the search chooses from, spread over the guide axis."""
+    """The (motor, coupling, reduction) drives the search chooses from, spread over the guide
+    axis."""
     r = problem.restrictions
     cat = problem.catalog
     if not r.drive or len(cat.rows("motors")) == 0:
@@ -366,11 +369,11 @@ def _add_drives(sp: Space, problem: Problem) -> None:
         # the filter, not the catalog, left no motor: say which (docs/assumptions.md)
         if before and not len(motors):
             raise InputError(
-                f"'exclude' removed all {before} motors the other filters left, so the drive search has nothing to "
-                "choose from (the peak-torque zone above the corner speed is estimated for "
-                "every motor without peak_corner_speed and peak_torque_at_max_speed read from its vendor's "
-                "torque-speed curve); add those columns to a motors table, allow estimated values, or leave the "
-                "drive out (catalog.drive: no)",
+                f"'exclude' removed all {before} motors the other filters left, so the drive "
+                "search has nothing to choose from (the peak-torque zone above the corner speed is "
+                "estimated for every motor without peak_corner_speed and peak_torque_at_max_speed "
+                "read from its vendor's torque-speed curve); add those columns to a motors table, "
+                "allow estimated values, or leave the drive out (catalog.drive: no)",
                 source=problem.source,
                 where="key 'catalog.estimated'",
             )
@@ -386,8 +389,7 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     else:
         reductions = reductions.take(np.zeros(len(reductions), dtype=bool))
     # a reduction's backlash is lost motion at the table (model.drive.lost_motion), least on the
-    # shortest lead: a
-    # reduction that exceeds the problem's max_backlash even there is never formed
+    # shortest lead: a reduction that exceeds the problem's max_backlash even there is never formed
     backlash_max = problem.limit_map.get("max_backlash", np.inf)
     lead_min = float(np.min(sp.s_arr["lead"])) if len(sp.s_arr["lead"]) else 0.0
     if len(reductions):
@@ -406,10 +408,9 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     need = problem.margin_map.get("coupling_torque", 1.0)
     limit = np.inf if problem.axis.torque_limit is None else float(problem.axis.torque_limit)
     # the motor speed the cycle asks is smallest on the longest lead of the space (model.drive: 2 pi
-    # v / P_h x
-    # ratio); a (motor, reduction) that fails the motor-speed or reduction-speed check even there
-    # fails it on
-    # every screw, and is never formed (a check disabled by a margin of 0 prunes nothing)
+    # v / P_h x ratio); a (motor, reduction) that fails the motor-speed or reduction-speed check
+    # even there fails it on every screw, and is never formed (a check disabled by a margin of 0
+    # prunes nothing)
     v_max = _top_speed(problem)
     lead_max = float(np.max(sp.s_arr["lead"])) if len(sp.s_arr["lead"]) else np.inf
     speed_need = {k: problem.margin_map.get(k, 1.0) for k in ("motor_speed", "reduction_speed")}
@@ -447,10 +448,8 @@ def _add_drives(sp: Space, problem: Problem) -> None:
     pairs = drive_pairs(prune=True)
     if not pairs:
         # every drive fails its speed or coupling-torque check: a valid problem no design meets, not
-        # an input
-        # error; every drive is formed, the model's checks then prove the infeasibility and the
-        # explanation
-        # names the check (and the advice the filter to widen)
+        # an input error; every drive is formed, the model's checks then prove the infeasibility and
+        # the explanation names the check (and the advice the filter to widen)
         pairs = drive_pairs(prune=False)
     if not pairs:
         why = (

@@ -1,13 +1,15 @@
-"""Polish: the winners' continuous problem re-solved by IPOPT on the CasADi model (the reported preload),
-cross-checked against the exact 1-D solve (:func:`polish`); and the answer of a scalar search built from its
-exact solves (:func:`scalar_result`: the polished designs, or the infeasible answer with its explanation).
+"""Polish: the winners' continuous problem re-solved by IPOPT on the CasADi model (the reported
+preload), cross-checked against the exact 1-D solve (:func:`polish`); and the answer of a scalar
+search built from its exact solves (:func:`scalar_result`: the polished designs, or the infeasible
+answer with its explanation).
 
-The NLP of one combination (:func:`solve_preload`): the nut preload, scaled to w in [0, 1] over the allowed
-range, and one epigraph variable per objective term (the minimum over the position grid).  Objective and
-constraints are scaled (display units, :meth:`.constraints.Constraint.scaled`) before IPOPT sees them.  Only
-the preload-dependent limits enter; the others do not change with the preload and are checked exactly before
-any NLP is built.  One solver per (mounting, grid, objective, limit set) and process.  Wachter and Biegler,
-"On the implementation of an interior-point filter line-search algorithm", Math. Prog. 106 (2006) 25-57.
+The NLP of one combination (:func:`solve_preload`): the nut preload, scaled to w in [0, 1] over the
+allowed range, and one epigraph variable per objective term (the minimum over the position grid).
+Objective and constraints are scaled (display units, :meth:`.constraints.Constraint.scaled`) before
+IPOPT sees them.  Only the preload-dependent limits enter; the others do not change with the preload
+and are checked exactly before any NLP is built.  One solver per (mounting, grid, objective, limit
+set) and process.  Wachter and Biegler, "On the implementation of an interior-point filter
+line-search algorithm", Math. Prog. 106 (2006) 25-57.
 """
 
 from __future__ import annotations
@@ -32,10 +34,10 @@ if TYPE_CHECKING:
 
 
 def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: int):
-    """IPOPT on the ``top`` best combinations of ``ex``.  Returns (candidates, NLPs solved, failed ranks, notes):
-    the ranks whose NLP failed (their 1-D solution is kept).  A combination whose 1-D solution is the top of
-    its preload range needs no NLP: the objective does not fall with the preload (the exact solve rests on
-    it), so no preload in the range does better."""
+    """IPOPT on the ``top`` best combinations of ``ex``.  Returns (candidates, NLPs solved, failed
+    ranks, notes): the ranks whose NLP failed (their 1-D solution is kept).  A combination whose 1-D
+    solution is the top of its preload range needs no NLP: the objective does not fall with the
+    preload (the exact solve rests on it), so no preload in the range does better."""
     from ..model.limits import preload_direction
 
     pick = rank_order(ex.objective, ex.cost, ex.total_mass, ex.idx, top)
@@ -77,7 +79,8 @@ def polish(space: Space, ex: Exact, constraints, objective: ObjectiveSpec, top: 
 
 
 def feasible_at(space: Space, combo: int, preload: float, constraints) -> bool:
-    """Whether combination ``combo`` meets every constraint at ``preload`` (exact, on the full grid)."""
+    """Whether combination ``combo`` meets every constraint at ``preload`` (exact, on the full
+    grid)."""
     mi, n, b, g = (int(v) for v in space.unravel(combo))
     mounting = space.mountings[mi]
     p = space.params_flat(mounting, np.array([n]), np.array([b]), np.array([g]))
@@ -179,8 +182,9 @@ def solve_preload(
 def scalar_result(
     task: Task, method: str, ex, stats, top: int, t0: float, *, deadline: float | None = None
 ) -> SolveResult:
-    """The SolveResult of a search that ends in the exact solves ``ex`` with statistics ``stats``: infeasible
-    (with the explanation, cut at ``deadline``, and what to relax), or the ``top`` best polished by IPOPT."""
+    """The SolveResult of a search that ends in the exact solves ``ex`` with statistics ``stats``:
+    infeasible (with the explanation, cut at ``deadline``, and what to relax), or the ``top`` best
+    polished by IPOPT."""
     problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
     stats.pruned_by_dominance = space.pruned_by_dominance
     if not np.isfinite(ex.objective).any():
@@ -207,7 +211,8 @@ def scalar_result(
 
 def _no_design(task: Task, method: str, stats, t0: float, deadline: float | None) -> SolveResult:
     """:func:`scalar_result` when the search found no design: the time limit's answer (not proven
-    infeasible), or the infeasible answer with its explanation (unless the task asks without one)."""
+    infeasible), or the infeasible answer with its explanation (unless the task asks without
+    one)."""
     problem, space, constraints, spec = task.problem, task.space, task.constraints, task.objective
     status, cert, why = INFEASIBLE, Certificate.of(stats), None
     if stats.timed_out:
@@ -233,9 +238,9 @@ def _no_design(task: Task, method: str, stats, t0: float, deadline: float | None
         if space.reductions_by_backlash:
             lim = problem.limit_map.get("max_backlash", 0.0)
             message += (
-                f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: each "
-                f"one's backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) even on the "
-                "shortest lead; admit some lost motion to let the search choose one"
+                f"; {space.reductions_by_backlash} reductions (gearboxes, belts) were left out: "
+                f"each one's backlash at the table exceeds limits.max_backlash ({lim * 1e6:g} um) "
+                "even on the shortest lead; admit some lost motion to let the search choose one"
             )
     return SolveResult(
         status,

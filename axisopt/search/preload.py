@@ -1,16 +1,17 @@
-"""The exact preload solve of selected combinations (:func:`exact_solve`): for each, the best preload and
-the exact objective on the full position grid, vectorized per mounting.
+"""The exact preload solve of selected combinations (:func:`exact_solve`): for each, the best
+preload and the exact objective on the full position grid, vectorized per mounting.
 
 It rests on the preload structure the model declares (``axisopt.model.limits.OUTPUT_PRELOAD``, see
-:mod:`.task.constraints`): the feasible preloads of a combination are an interval and the best preload is its upper
-end.  A threshold search (:func:`kary_threshold`) finds the largest preload meeting the limits that
-favour a low preload; a motor-torque limit (convex in the preload) lowers it into its interval
-(:func:`convex_feasible_top`); the limits that favour a high preload are then checked there.
+:mod:`.task.constraints`): the feasible preloads of a combination are an interval and the best
+preload is its upper end.  A threshold search (:func:`kary_threshold`) finds the largest preload
+meeting the limits that favour a low preload; a motor-torque limit (convex in the preload) lowers it
+into its interval (:func:`convex_feasible_top`); the limits that favour a high preload are then
+checked there.
 
-Its one-dimensional numerics are vectorized over combinations and free of the model: the k-ary threshold
-search (:func:`kary_threshold`, bisection generalised to ``points`` trials per round) and the golden-section
-maximum of a unimodal function (:func:`golden_best`; Kiefer, "Sequential minimax search for a maximum",
-Proc. AMS 4 (1953) 502-506).
+Its one-dimensional numerics are vectorized over combinations and free of the model: the k-ary
+threshold search (:func:`kary_threshold`, bisection generalised to ``points`` trials per round) and
+the golden-section maximum of a unimodal function (:func:`golden_best`; Kiefer, "Sequential minimax
+search for a maximum", Proc. AMS 4 (1953) 502-506).
 """
 
 from __future__ import annotations
@@ -38,7 +39,8 @@ COARSE_BITS = 8
 
 
 def golden_best(value, a, b, steps=GOLDEN_STEPS):
-    """Preload in [a, b] maximising a unimodal ``value(preload) -> (K,)`` (vectorized golden section)."""
+    """Preload in [a, b] maximising a unimodal ``value(preload) -> (K,)`` (vectorized golden
+    section)."""
     r = (math.sqrt(5.0) - 1.0) / 2.0
     x1, x2 = b - r * (b - a), a + r * (b - a)
     f1, f2 = value(x1), value(x2)
@@ -54,11 +56,12 @@ def golden_best(value, a, b, steps=GOLDEN_STEPS):
 
 
 def kary_threshold(good, a, z, points: int = SEARCH_POINTS):
-    """The end of the set ``good`` holds on, between a end ``a`` where it holds and ``z`` where it does not,
-    for a set that is one interval containing ``a`` (a monotone limit, or a convex one seen from a feasible
-    point).  Each round tries ``points - 1`` evenly spaced preloads in one vectorized call of
-    ``good(pre (K, points - 1)) -> bool (K, points - 1)`` and keeps the segment where it stops holding, so
-    the bracket shrinks ``points``-fold per round: to the bisection's 2^-52 in 9 calls instead of 52."""
+    """The end of the set ``good`` holds on, between a end ``a`` where it holds and ``z`` where it
+    does not, for a set that is one interval containing ``a`` (a monotone limit, or a convex one
+    seen from a feasible point).  Each round tries ``points - 1`` evenly spaced preloads in one
+    vectorized call of ``good(pre (K, points - 1)) -> bool (K, points - 1)`` and keeps the segment
+    where it stops holding, so the bracket shrinks ``points``-fold per round: to the bisection's
+    2^-52 in 9 calls instead of 52."""
     return kary_bracket(good, a, z, points)[0]
 
 
@@ -68,8 +71,8 @@ def kary_rounds(points: int, bits: int = BISECTION_STEPS) -> int:
 
 
 def kary_bracket(good, a, z, points: int = SEARCH_POINTS, rounds: int | None = None):
-    """:func:`kary_threshold`'s bracket (a where ``good`` holds, z above the threshold) after ``rounds``
-    rounds (default: :func:`kary_rounds`, to the bisection's 2^-52)."""
+    """:func:`kary_threshold`'s bracket (a where ``good`` holds, z above the threshold) after
+    ``rounds`` rounds (default: :func:`kary_rounds`, to the bisection's 2^-52)."""
     a, z = np.array(a, dtype=float), np.array(z, dtype=float)
     if not a.size:
         return a, z
@@ -86,13 +89,15 @@ def kary_bracket(good, a, z, points: int = SEARCH_POINTS, rounds: int | None = N
 
 
 def search_points(k: int) -> int:
-    """Preloads per round of :func:`kary_threshold` for ``k`` combinations: many while a model evaluation
-    costs mostly its fixed Python overhead (few combinations), 2 (bisection) once the rows cost more."""
+    """Preloads per round of :func:`kary_threshold` for ``k`` combinations: many while a model
+    evaluation costs mostly its fixed Python overhead (few combinations), 2 (bisection) once the
+    rows cost more."""
     return int(max(2, min(SEARCH_POINTS, 2 ** round(math.log2(SEARCH_ROWS / max(k, 1) + 1)))))
 
 
 def subset(p: dict, j, k: int) -> dict:
-    """The parameters of rows ``j`` of a flat layout of ``k`` combinations (the duty cycle is shared)."""
+    """The parameters of rows ``j`` of a flat layout of ``k`` combinations (the duty cycle is
+    shared)."""
     return {
         kk: (v[j] if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v)
         for kk, v in p.items()
@@ -100,7 +105,8 @@ def subset(p: dict, j, k: int) -> dict:
 
 
 def repeat_rows(p: dict, k: int, r: int) -> dict:
-    """A flat layout of ``k`` combinations with every row repeated ``r`` times (row i*r + j is row i)."""
+    """A flat layout of ``k`` combinations with every row repeated ``r`` times (row i*r + j is row
+    i)."""
     return {
         kk: (np.repeat(v, r, axis=0) if kk != "duty" and np.ndim(v) and np.shape(v)[0] == k else v)
         for kk, v in p.items()
@@ -108,7 +114,8 @@ def repeat_rows(p: dict, k: int, r: int) -> dict:
 
 
 def new_exact(idx) -> Exact:
-    """An Exact of the combinations ``idx`` with nothing solved yet (infeasible, objective -inf, goals NaN)."""
+    """An Exact of the combinations ``idx`` with nothing solved yet (infeasible, objective -inf,
+    goals NaN)."""
     K = len(idx)
     return Exact(
         idx,
@@ -132,9 +139,9 @@ def concat_exact(parts) -> Exact:
 
 
 def goal_arrays(out: dict, K: int, goals=RESULT_GOALS) -> dict:
-    """Goal key -> (K,) value in the goal's display unit of the model outputs ``out`` of K combinations, for each
-    of ``goals`` whose output ``out`` holds: the minimum over the stroke of a profile, divided by the display
-    factor (the values :class:`.result.Exact` carries)."""
+    """Goal key -> (K,) value in the goal's display unit of the model outputs ``out`` of K
+    combinations, for each of ``goals`` whose output ``out`` holds: the minimum over the stroke of a
+    profile, divided by the display factor (the values :class:`.result.Exact` carries)."""
     return {
         g.key: as_vector(np.min(out[g.output], axis=-1) if g.profile else out[g.output], K)
         / g.factor
@@ -149,10 +156,10 @@ def exact_solve(
     """Best preload (upper end of the feasible preload interval) and the exact objective on the full
     position grid for the combinations ``idx`` (any mix of mountings), vectorized per mounting.
 
-    Assumes the preload structure in the module docstring: a threshold search (:func:`kary_threshold`: up to
-    63 preloads per vectorized round for few combinations, bisection for many) finds the largest preload meeting
-    the upper-type constraints (drag, life); the lower-type ones (lift-off, minimum stiffness or
-    frequency) are then checked there.
+    Assumes the preload structure in the module docstring: a threshold search
+    (:func:`kary_threshold`: up to 63 preloads per vectorized round for few combinations, bisection
+    for many) finds the largest preload meeting the upper-type constraints (drag, life); the
+    lower-type ones (lift-off, minimum stiffness or frequency) are then checked there.
     """
     idx = np.asarray(idx, dtype=np.int64)
     K = len(idx)
@@ -180,9 +187,8 @@ def exact_solve(
             j = np.nonzero(need_bis)[0]
             upc = [c for c in up if not c.profile]
             # the threshold of limits the drive does not change is the mechanical combination's:
-            # searched once
-            # per (nut, bearing, guide) and shared by its drives (guide-and-drive index g = guide *
-            # D + drive)
+            # searched once per (nut, bearing, guide) and shared by its drives (guide-and-drive
+            # index g = guide * D + drive)
             inv = np.arange(len(j))
             if space.n_drives > 1 and not any(c.key in DRIVE_KEYS for c in upc):
                 mech = (n[j] * space.shape[2] + b[j]) * (space.shape[3] // space.n_drives) + g[
@@ -209,9 +215,10 @@ def exact_solve(
             first_rounds = min(kary_rounds(P, COARSE_BITS), kary_rounds(P))
             a0, z0 = kary_bracket(good, a[j], bb[j], P, first_rounds)
             a[j_all] = a0[inv]
-            # a limit a higher preload helps (lift-off, minimum stiffness or frequency) missed at the
-            # bracket's upper end misses at every preload below it, the threshold among them: those
-            # combinations are infeasible, their threshold not refined (the answer is the same)
+            # a limit a higher preload helps (lift-off, minimum stiffness or frequency) missed at
+            # the bracket's upper end misses at every preload below it, the threshold among them:
+            # those combinations are infeasible, their threshold not refined (the answer is the
+            # same)
             if low:
                 zr = z0[inv]
                 sub = subset(p, j_all, k)
@@ -260,8 +267,8 @@ def exact_solve(
 def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
     """For a convex (interval) limit: the largest preload in [lo, top] meeting it, per combination.
     Returns (exists, preload).  Met at ``top``: top.  Else met at ``lo``: threshold search from lo
-    (:func:`kary_threshold`; the limit's interval contains lo and ends below top).  Else: its most favourable
-    preload by golden section, then the threshold search from there."""
+    (:func:`kary_threshold`; the limit's interval contains lo and ends below top).  Else: its most
+    favourable preload by golden section, then the threshold search from there."""
     K = len(lo)
     lo, top = np.asarray(lo, float), np.asarray(top, float)
 
@@ -292,8 +299,9 @@ def convex_feasible_top(c: Constraint, p: dict, x1, mounting: str, lo, top):
 
 
 def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
-    """For a convex limit: (exists, low end, high end) of the preloads in [lo, hi] meeting it, found without
-    assuming anything but convexity (golden section for a feasible point, then a bisection to each side)."""
+    """For a convex limit: (exists, low end, high end) of the preloads in [lo, hi] meeting it, found
+    without assuming anything but convexity (golden section for a feasible point, then a bisection
+    to each side)."""
     K = len(lo)
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
 
@@ -329,8 +337,8 @@ def convex_interval(c: Constraint, p: dict, x1, mounting: str, lo, hi):
 
 
 def solve_known(space: Space, idx, constraints, objective: ObjectiveSpec, known=None):
-    """:func:`exact_solve` of the combinations ``idx``, the feasible rows of ``known`` (an Exact, or None)
-    copied from it rather than solved again (see :func:`.bestfirst.bound_order_search`)."""
+    """:func:`exact_solve` of the combinations ``idx``, the feasible rows of ``known`` (an Exact, or
+    None) copied from it rather than solved again (see :func:`.bestfirst.bound_order_search`)."""
     idx = np.asarray(idx, dtype=np.int64)
     if known is None or not len(idx) or not len(known.idx):
         return exact_solve(space, idx, constraints, objective)

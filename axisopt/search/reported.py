@@ -1,7 +1,8 @@
-"""The values a result reports of each design, declared once (:data:`REPORTED`): the :class:`.result.Candidate`
-fields after ``objective``, the candidate tables' columns (:data:`.result.CANDIDATE_COLUMNS`), the
-Candidate's repr, the study table (``study.table.RESULT_COLUMNS``), the compare and HTML tables' column names
-and the API reference read it; :mod:`.candidates` fills the values."""
+"""The values a result reports of each design, declared once (:data:`REPORTED`): the
+:class:`.result.Candidate` fields after ``objective``, the candidate tables' columns
+(:data:`.result.CANDIDATE_COLUMNS`), the Candidate's repr, the study table
+(``study.table.RESULT_COLUMNS``), the compare and HTML tables' column names and the API reference
+read it; :mod:`.candidates` fills the values."""
 
 from __future__ import annotations
 
@@ -11,11 +12,12 @@ from types import MappingProxyType
 
 @dataclass(frozen=True)
 class Reported:
-    """One value a result reports of each design, declared once: the :class:`Candidate` field (and JSON key) of
-    that name, its column in the candidate tables (:data:`CANDIDATE_COLUMNS`, ``Candidate.row``) and the study
-    table (``study.table.RESULT_COLUMNS``), its label in ``Candidate.__repr__``, its meaning in the API
-    reference, and where its value comes from (a goal of ``model.goals.OBJECTIVE_TABLE`` whose ``field`` it is, or a
-    model output's minimum over the stroke).  Adding a reported value is one entry of :data:`REPORTED`."""
+    """One value a result reports of each design, declared once: the :class:`Candidate` field (and
+    JSON key) of that name, its column in the candidate tables (:data:`CANDIDATE_COLUMNS`,
+    ``Candidate.row``) and the study table (``study.table.RESULT_COLUMNS``), its label in
+    ``Candidate.__repr__``, its meaning in the API reference, and where its value comes from (a goal
+    of ``model.goals.OBJECTIVE_TABLE`` whose ``field`` it is, or a model output's minimum over the
+    stroke).  Adding a reported value is one entry of :data:`REPORTED`."""
 
     field: str  # the Candidate attribute and JSON key
     name: str  # the tables' column name (without its unit)

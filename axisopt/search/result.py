@@ -1,5 +1,5 @@
-"""Result dataclasses of a sizing search (plain data; JSON-ready through ``to_dict``), the statuses a solve
-may end in (:data:`STATUS_TABLE`) and the statistics a search stage hands to the certificate
+"""Result dataclasses of a sizing search (plain data; JSON-ready through ``to_dict``), the statuses
+a solve may end in (:data:`STATUS_TABLE`) and the statistics a search stage hands to the certificate
 (:class:`SearchStats`)."""
 
 from __future__ import annotations
@@ -33,7 +33,8 @@ class Binding:
         return {k: json_value(v) for k, v in asdict(self).items()}
 
     def row(self, objective_unit: str = "") -> dict:
-        """One table row, the units in the column names (``objective_unit``: the objective's unit)."""
+        """One table row, the units in the column names (``objective_unit``: the objective's
+        unit)."""
         u = f" [{self.unit}]" if self.unit else ""
         gain = (
             f"objective gain [{objective_unit}]"
@@ -73,16 +74,18 @@ class Binding:
 
 
 class Bindings(list):
-    """``SolveResult.binding``: a list of :class:`Binding` that also gives a table (``to_frame()``, units in the
-    column names, the objective gain in the objective's unit) and an HTML table in Jupyter."""
+    """``SolveResult.binding``: a list of :class:`Binding` that also gives a table (``to_frame()``,
+    units in the column names, the objective gain in the objective's unit) and an HTML table in
+    Jupyter."""
 
     def __init__(self, items=(), objective_unit: str = ""):
         super().__init__(items)
         self.objective_unit = objective_unit
 
     def to_frame(self):
-        """pandas DataFrame, one row per limit: its name and ``unit`` (the limits differ in unit), the limit, the
-        best design's value and the relaxed limit in that unit, the objective gain in the objective's unit."""
+        """pandas DataFrame, one row per limit: its name and ``unit`` (the limits differ in unit),
+        the limit, the best design's value and the relaxed limit in that unit, the objective gain in
+        the objective's unit."""
         cols = ("limit", "unit", "value", "at optimum", "relaxed to", self._gain(), "binding")
         return frame(
             [
@@ -165,9 +168,10 @@ class Exact:
     """The exact per-combination optimum of the continuous problem, over K combinations
     (:func:`.preload.exact_solve`, :func:`.exhaustive.grid_solve`).
 
-    ``goals`` holds, per goal of :data:`axisopt.model.goals.RESULT_GOALS` (its key), the (K,) values at the chosen
-    preload in the goal's display unit (NaN where not evaluated: no limit or front reads the output); each is
-    also the attribute named by the goal's ``field`` (``ex.min_stiffness``, ``ex.cost``, ...)."""
+    ``goals`` holds, per goal of :data:`axisopt.model.goals.RESULT_GOALS` (its key), the (K,) values
+    at the chosen preload in the goal's display unit (NaN where not evaluated: no limit or front
+    reads the output); each is also the attribute named by the goal's ``field``
+    (``ex.min_stiffness``, ``ex.cost``, ...)."""
 
     idx: np.ndarray  # combination numbers
     feasible: np.ndarray
@@ -206,7 +210,8 @@ CANDIDATE_COLUMNS = (("nut_preload", "nut_preload [N]"),) + tuple(
 
 
 def _reported_fields(cls):
-    """The :data:`REPORTED` values as fields of ``cls`` right after its ``objective`` (before ``dataclass``)."""
+    """The :data:`REPORTED` values as fields of ``cls`` right after its ``objective`` (before
+    ``dataclass``)."""
     ann = {}
     for k, t in cls.__dict__["__annotations__"].items():
         ann[k] = t
@@ -221,8 +226,9 @@ def _reported_fields(cls):
 @dataclass
 @_reported_fields
 class Candidate:
-    """One design: parts, continuous values and its evaluation summary (display units): after ``objective``
-    one float field per :data:`REPORTED` value (``min_stiffness``, ``min_frequency``, ``cost``, ...)."""
+    """One design: parts, continuous values and its evaluation summary (display units): after
+    ``objective`` one float field per :data:`REPORTED` value (``min_stiffness``, ``min_frequency``,
+    ``cost``, ...)."""
 
     rank: int  # 1: the best
     combination: int  # combination number in the search space
@@ -241,17 +247,17 @@ class Candidate:
     # lead accuracy grade the search chose or the problem fixed ('' : the screw's cheapest)
     screw_grade: str = ""
     # the model outputs a problem may limit (model.limits.LIMITS), SI; profile outputs as their
-    # minimum over
-    # the stroke.  Not in the JSON (the display fields above carry the same values in vendor units).
+    # minimum over the stroke.  Not in the JSON (the display fields above carry the same values in
+    # vendor units).
     outputs: dict = field(default_factory=dict, repr=False, compare=False)
     # a problem with search.counterbalance / search.twin_drive options, Pareto objective: the
-    # arrangement this
-    # design is of ('' otherwise; not in the JSON then)
+    # arrangement this design is of ('' otherwise; not in the JSON then)
     arrangement: str = ""
 
     def goal(self, key: str) -> float:
-        """The value of the goal ``key`` (:data:`axisopt.model.goals.OBJECTIVE_TABLE`) in its display unit: its field
-        where the Candidate has one (in the JSON), else from the model's outputs (NaN where not evaluated)."""
+        """The value of the goal ``key`` (:data:`axisopt.model.goals.OBJECTIVE_TABLE`) in its
+        display unit: its field where the Candidate has one (in the JSON), else from the model's
+        outputs (NaN where not evaluated)."""
         g = GOALS[key]
         if g.field in CANDIDATE_FIELDS:
             return getattr(self, g.field)
@@ -276,9 +282,9 @@ class Candidate:
         return {k: json_value(v) for k, v in d.items()}
 
     def row(self, objective_unit: str | None = None) -> dict:
-        """One table row: rank, mounting, parts, the objective (when ``objective_unit`` is given) and the
-        values in display units, each unit in its column name; an infeasible problem's closest designs add
-        ``miss <limit> [%]`` per missed limit."""
+        """One table row: rank, mounting, parts, the objective (when ``objective_unit`` is given)
+        and the values in display units, each unit in its column name; an infeasible problem's
+        closest designs add ``miss <limit> [%]`` per missed limit."""
         r = {"rank": self.rank, "mounting": self.mounting} | (
             {"arrangement": self.arrangement} if self.arrangement else {}
         )
@@ -340,8 +346,8 @@ for _g in RESULT_GOALS:
 
 @dataclass(repr=False)
 class ParetoFront:
-    """The non-dominated designs of a multi-objective problem (``objective.mode: pareto``): a sequence of
-    :class:`Candidate`, each objective's key, sense and unit."""
+    """The non-dominated designs of a multi-objective problem (``objective.mode: pareto``): a
+    sequence of :class:`Candidate`, each objective's key, sense and unit."""
 
     keys: tuple  # objective keys, e.g. ('stiffness', 'cost')
     senses: tuple  # 'max' | 'min' per key
@@ -349,13 +355,14 @@ class ParetoFront:
     points: list  # list[Candidate], sorted by the first key
     feasible: int = 0  # feasible designs the front was drawn from
     # objective values (columns in ``keys`` order, display units) of up to 4000 feasible designs
-    # drawn at
-    # random with a fixed seed, for plotting the front against what it dominates; not in the JSON
+    # drawn at random with a fixed seed, for plotting the front against what it dominates; not in
+    # the JSON
     cloud: object = None
 
     def to_dict(self) -> dict:
-        """The front as JSON: each point's fields and its ``objectives`` (the value of each key, in ``keys`` order
-        and display units: a goal without a field of its own, the positioning error, is there too)."""
+        """The front as JSON: each point's fields and its ``objectives`` (the value of each key, in
+        ``keys`` order and display units: a goal without a field of its own, the positioning error,
+        is there too)."""
         return {
             "keys": list(self.keys),
             "senses": list(self.senses),
@@ -377,7 +384,8 @@ class ParetoFront:
         return self.points[i]
 
     def to_frame(self):
-        """pandas DataFrame, one row per non-dominated design in front order (units in the column names)."""
+        """pandas DataFrame, one row per non-dominated design in front order (units in the column
+        names)."""
         return frame([p.row() for p in self.points])
 
     def __repr__(self) -> str:
@@ -399,7 +407,8 @@ class ParetoFront:
 class SolveResult:
     """The answer of :func:`axisopt.search.solve`.
 
-    status: one of :data:`STATUS_TABLE` ('optimal', 'feasible', 'time_limit', 'solver_failed', 'infeasible').
+    status: one of :data:`STATUS_TABLE` ('optimal', 'feasible', 'time_limit', 'solver_failed',
+    'infeasible').
     """
 
     status: str
@@ -418,13 +427,11 @@ class SolveResult:
     pareto: ParetoFront | None = None
     solver_status: str = ""  # raw status of the underlying solver (Bonmin / IPOPT)
     # a problem with search.counterbalance / search.twin_drive options: the winning arrangement's
-    # label and how
-    # many arrangements were solved (0: the problem has none; not in the JSON then)
+    # label and how many arrangements were solved (0: the problem has none; not in the JSON then)
     arrangement: str = ""
     arrangements: int = 0
     # what the search left out of the design and why, a sentence each (the drive with 'drive: no');
-    # not in the
-    # JSON when empty
+    # not in the JSON when empty
     left_out: tuple = ()
     # a stiffness or frequency optimum: a design within the tolerance of it that costs markedly less
     # (sensitivity.cheaper_near: value, cost, best_cost, tolerance, parts), else None
@@ -472,8 +479,8 @@ class SolveResult:
         )
 
     def designs(self) -> list:
-        """The designs shown: the Pareto front's points, else best and runners-up, else (infeasible) the
-        closest designs."""
+        """The designs shown: the Pareto front's points, else best and runners-up, else (infeasible)
+        the closest designs."""
         if self.pareto is not None:
             return list(self.pareto.points)
         if self.best is not None:
@@ -481,9 +488,9 @@ class SolveResult:
         return list(self.infeasibility.closest) if self.infeasibility is not None else []
 
     def to_frame(self):
-        """pandas DataFrame, one row per design of :meth:`designs` (units in the column names: ``objective
-        [N/um]``, ``min_stiffness [N/um]``, ``cost [EUR]`` ...; the closest designs of an infeasible problem
-        with ``miss <limit> [%]``)."""
+        """pandas DataFrame, one row per design of :meth:`designs` (units in the column names:
+        ``objective [N/um]``, ``min_stiffness [N/um]``, ``cost [EUR]`` ...; the closest designs of
+        an infeasible problem with ``miss <limit> [%]``)."""
         unit = None if self.pareto is not None or self.best is None else self.objective_unit
         return frame([c.row(unit) for c in self.designs()])
 

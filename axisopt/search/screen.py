@@ -1,11 +1,12 @@
-"""Screening: every combination of a set of (mounting, nut, bearing) blocks, vectorized in the structured
-layout (:mod:`.task.space`), in float32 with the slack of :func:`.bounds.screen_ok`.
+"""Screening: every combination of a set of (mounting, nut, bearing) blocks, vectorized in the
+structured layout (:mod:`.task.space`), in float32 with the slack of :func:`.bounds.screen_ok`.
 
-Every preload-independent limit is checked exactly; each preload-dependent limit at its most favourable
-preload (drag and life at the lowest allowed preload, lift-off and minimum stiffness/frequency at the highest),
-which is exact as a necessary condition.  The bound is the objective at the highest allowed preload over a few
-grid positions (an upper bound of the minimum over the full grid).  Entry points :func:`screen` (every
-combination) and :func:`screen_nuts` (the blocks of some nuts: the best-first driver, the Pareto front).
+Every preload-independent limit is checked exactly; each preload-dependent limit at its most
+favourable preload (drag and life at the lowest allowed preload, lift-off and minimum
+stiffness/frequency at the highest), which is exact as a necessary condition.  The bound is the
+objective at the highest allowed preload over a few grid positions (an upper bound of the minimum
+over the full grid).  Entry points :func:`screen` (every combination) and :func:`screen_nuts` (the
+blocks of some nuts: the best-first driver, the Pareto front).
 """
 
 from __future__ import annotations
@@ -28,17 +29,17 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
 
     Two structured evaluations per block of nuts: at the lowest allowed preload on one position (the
     preload-independent limits and the ones that favour a low preload) and at the highest allowed
-    preload on :func:`.bounds.bound_positions` (the limits that favour a high preload and the bound).
-    Screening runs in float32 for memory bandwidth; every test is relaxed by SCREEN_RTOL and the bound
-    raised by it, so rounding can only keep a combination, never drop one (exact checks follow in
-    float64).
+    preload on :func:`.bounds.bound_positions` (the limits that favour a high preload and the
+    bound).  Screening runs in float32 for memory bandwidth; every test is relaxed by SCREEN_RTOL
+    and the bound raised by it, so rounding can only keep a combination, never drop one (exact
+    checks follow in float64).
 
-    The mechanics are screened once per (screw, nut, bearing, guide) combination on every limit the drive
-    does not change (the stiffness chain, the modes, the objective bound); each surviving combination is
-    then expanded by its (motor, coupling) pairs -- one, the axis's motor and coupling values, without a
-    drive search -- and screened on the drive's limits (:data:`DRIVE_KEYS`) with the drive sub-assembly
-    alone.  (Without a drive search this two-stage order is 3x faster too: the motor-torque bounds then run
-    on the few mechanical survivors.)
+    The mechanics are screened once per (screw, nut, bearing, guide) combination on every limit the
+    drive does not change (the stiffness chain, the modes, the objective bound); each surviving
+    combination is then expanded by its (motor, coupling) pairs -- one, the axis's motor and
+    coupling values, without a drive search -- and screened on the drive's limits
+    (:data:`DRIVE_KEYS`) with the drive sub-assembly alone.  (Without a drive search this two-stage
+    order is 3x faster too: the motor-torque bounds then run on the few mechanical survivors.)
     """
     t0 = time.perf_counter()
     N = space.shape[1]
@@ -55,9 +56,10 @@ def screen(space: Space, constraints, objective: ObjectiveSpec):
 
 
 def viable_drives(space: Space, mounting: str, nut_idx, constraints):
-    """Per (nut, bearing group, drive) of the nuts ``nut_idx`` (sorted), whether the drive could meet every
-    drive limit with some guide and preload of the block (:func:`.drivebounds.drive_hull`, relaxed as the
-    screening), and each bearing's group; None without a drive search or drive limits.  A necessary
+    """Per (nut, bearing group, drive) of the nuts ``nut_idx`` (sorted), whether the drive could
+    meet every drive limit with some guide and preload of the block
+    (:func:`.drivebounds.drive_hull`, relaxed as the screening), and each bearing's group; None
+    without a drive search or drive limits.  A necessary
     condition: the drive stage then evaluates only the drives that pass it."""
     cons = [c for c in constraints if c.key in DRIVE_KEYS]
     if space.m_arr is None or not cons or not len(nut_idx) or space.n_drives < PER_DRIVE_MIN:
@@ -78,8 +80,9 @@ def viable_drives(space: Space, mounting: str, nut_idx, constraints):
 
 
 def _mechanical(constraints):
-    """The limits of the mechanical stage: every limit the drive does not change, and the lost motion (its value
-    without a reduction, the nut's play, is the least over every drive: the drive stage tests it again)."""
+    """The limits of the mechanical stage: every limit the drive does not change, and the lost
+    motion (its value without a reduction, the nut's play, is the least over every drive: the drive
+    stage tests it again)."""
     return [c for c in constraints if c.key not in DRIVE_KEYS or c.key == "backlash"]
 
 
@@ -88,9 +91,9 @@ CACHE_BLOCK = 200_000
 
 
 def group_end(bm, bn, pos: int, reach, nuts: int) -> int:
-    """The end of the next group of blocks to screen, from ``pos`` of the blocks in search order (mounting
-    ``bm``, nut ``bn``): the blocks ``i`` with ``reach(i)``, up to ``nuts`` distinct (mounting, nut) pairs, and at
-    least one block."""
+    """The end of the next group of blocks to screen, from ``pos`` of the blocks in search order
+    (mounting ``bm``, nut ``bn``): the blocks ``i`` with ``reach(i)``, up to ``nuts`` distinct
+    (mounting, nut) pairs, and at least one block."""
     end, seen = pos, set()
     while end < len(bm) and reach(end):
         key = (bm[end], bn[end])
@@ -102,9 +105,9 @@ def group_end(bm, bn, pos: int, reach, nuts: int) -> int:
 
 
 def screen_blocks(space: Space, bm, bn, bb, constraints, objective: ObjectiveSpec):
-    """:func:`screen_nuts` over a group of (mounting ``bm``, nut ``bn``, bearing ``bb``) blocks, one mounting at a
-    time, each mounting's nuts with the bearings of its blocks only.  Yields (survivors' combination numbers,
-    bounds) per mounting."""
+    """:func:`screen_nuts` over a group of (mounting ``bm``, nut ``bn``, bearing ``bb``) blocks, one
+    mounting at a time, each mounting's nuts with the bearings of its blocks only.  Yields
+    (survivors' combination numbers, bounds) per mounting."""
     B = space.shape[2]
     for mi in np.unique(bm):
         sel = bm == mi
@@ -116,11 +119,12 @@ def screen_blocks(space: Space, bm, bn, bb, constraints, objective: ObjectiveSpe
 
 
 def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSpec, premask=None):
-    """:func:`screen` over the nuts ``nuts`` (a slice or an index array) of mounting ``mi``, every bearing
-    and guide (and drive); ``premask`` (nuts x bearings, optional) leaves out (nut, bearing) blocks.
-    Returns the survivors' combination numbers and bounds.  The model is evaluated over sub-blocks of about
-    :data:`CACHE_BLOCK` combinations (whole nuts): numpy then works on arrays that stay in the CPU cache,
-    about twice as fast as over millions of combinations at once; the survivors are the same."""
+    """:func:`screen` over the nuts ``nuts`` (a slice or an index array) of mounting ``mi``, every
+    bearing and guide (and drive); ``premask`` (nuts x bearings, optional) leaves out (nut, bearing)
+    blocks.  Returns the survivors' combination numbers and bounds.  The model is evaluated over
+    sub-blocks of about :data:`CACHE_BLOCK` combinations (whole nuts): numpy then works on arrays
+    that stay in the CPU cache, about twice as fast as over millions of combinations at once; the
+    survivors are the same."""
     mounting = space.mountings[mi]
     _, N, B, G = space.shape
     D = space.n_drives
@@ -163,9 +167,9 @@ def screen_nuts(space: Space, mi: int, nuts, constraints, objective: ObjectiveSp
 def _screen_mechanics(
     space: Space, mounting: str, nuts, nut_idx, constraints, objective: ObjectiveSpec, premask
 ):
-    """The mechanical stage of :func:`screen_nuts` over the nuts ``nuts`` (numbers ``nut_idx``): every limit
-    but the drive's (:data:`DRIVE_KEYS`, which hold the motor-torque limits, the only convex ones), and the
-    bound.  Returns the survivors' (nut, bearing, guide, bound)."""
+    """The mechanical stage of :func:`screen_nuts` over the nuts ``nuts`` (numbers ``nut_idx``):
+    every limit but the drive's (:data:`DRIVE_KEYS`, which hold the motor-torque limits, the only
+    convex ones), and the bound.  Returns the survivors' (nut, bearing, guide, bound)."""
     _, _, B, G = space.shape
     Gm = G // space.n_drives
     mech = _mechanical(constraints)
@@ -201,12 +205,13 @@ DRIVE_CHUNK = 50_000
 
 
 def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg, bound, first=None):
-    """The drive stage of :func:`screen`: each mechanical survivor (nut nn, bearing bb, guide gg) times
-    every (motor, coupling) pair, checked on the limits the drive changes at the lowest and highest allowed
-    preload (float64, same slack), structured over (survivor, drive pair) (:func:`drive_params`:
-    the mechanics once per survivor, the drive once per pair).  ``first`` (survivors x drives, optional):
-    the pairs worth checking (:func:`viable_drives`); each block of survivors evaluates the drives any of
-    them keeps.  Returns the survivors' (nut, bearing, guide-and-drive, bound)."""
+    """The drive stage of :func:`screen`: each mechanical survivor (nut nn, bearing bb, guide gg)
+    times every (motor, coupling) pair, checked on the limits the drive changes at the lowest and
+    highest allowed preload (float64, same slack), structured over (survivor, drive pair)
+    (:func:`drive_params`: the mechanics once per survivor, the drive once per pair).  ``first``
+    (survivors x drives, optional): the pairs worth checking (:func:`viable_drives`); each block of
+    survivors evaluates the drives any of them keeps.  Returns the survivors' (nut, bearing,
+    guide-and-drive, bound)."""
     D = space.n_drives
     cons = [c for c in constraints if c.key in DRIVE_KEYS]
     if not cons or len(nn) == 0:
@@ -256,9 +261,10 @@ def _screen_drives(space: Space, mounting: str, constraints, phases, nn, bb, gg,
 
 
 def drive_params(space: Space, mounting: str, n, b, g, dtype=float, drives=None) -> dict:
-    """Parameters over (K mechanical combinations, D drive pairs, 1 position): screw, nut, bearing and guide
-    columns of the combinations (nut ``n``, bearing ``b``, mechanical guide ``g``) shaped (K, 1, 1), the
-    searched (motor, coupling) pairs (1, D, 1); element (k, d) is guide-and-drive ``g[k] * D + d``.
+    """Parameters over (K mechanical combinations, D drive pairs, 1 position): screw, nut, bearing
+    and guide columns of the combinations (nut ``n``, bearing ``b``, mechanical guide ``g``) shaped
+    (K, 1, 1), the searched (motor, coupling) pairs (1, D, 1); element (k, d) is guide-and-drive
+    ``g[k] * D + d``.
     ``drives``: those drive numbers only, in that order, on the second axis."""
     D = space.n_drives
 
@@ -277,15 +283,15 @@ def drive_params(space: Space, mounting: str, n, b, g, dtype=float, drives=None)
 
 
 def interval_min_abs(t_lo, t_hi):
-    """min |T| over preloads between two ends where T is affine in the preload: 0 if it changes sign."""
+    """min |T| over preloads between two ends where T is affine in the preload: 0 if it changes
+    sign."""
     t_lo, t_hi = np.asarray(t_lo), np.asarray(t_hi)
     return np.where(t_lo * t_hi <= 0, 0.0, np.minimum(np.abs(t_lo), np.abs(t_hi)))
 
 
 # The torque checks convex in the nut preload (model.limits CONVEX), each with the model outputs its
-# margin reads:
-# (phase torques, the steady thrust that bounds it from below, the needed value, zone factors or
-# None, peak or RMS)
+# margin reads: (phase torques, the steady thrust that bounds it from below, the needed value, zone
+# factors or None, peak or RMS)
 CONVEX_TORQUES = {
     margin_output("motor_peak_torque"): (
         "duty_torques",
@@ -319,19 +325,19 @@ CONVEX_TORQUES = {
 
 
 def convex_margin_bound(c: Constraint, out_lo: dict, out_hi: dict, phases) -> np.ndarray:
-    """An upper bound of a motor- or reduction-torque margin (:data:`CONVEX_TORQUES`) over every preload between
-    the two ends of ``out_lo`` and ``out_hi`` (screening).  Each phase torque is affine in the preload (through
-    the nut's drag), so its smallest magnitude over the interval is known; the thrusts grow with the preload.
-    RMS: a linear piece (T0^2 + T0 T1 + T1^2)/3 >= (T0^2 + T1^2)/6, and = T0^2 for a constant one."""
+    """An upper bound of a motor- or reduction-torque margin (:data:`CONVEX_TORQUES`) over every
+    preload between the two ends of ``out_lo`` and ``out_hi`` (screening).  Each phase torque is
+    affine in the preload (through the nut's drag), so its smallest magnitude over the interval is
+    known; the thrusts grow with the preload.
+    RMS: a linear piece (T0^2 + T0 T1 + T1^2)/3 >= (T0^2 + T1^2)/6, and = T0^2 for a constant
+    one."""
     v_lo = np.asarray(out_lo[c.key])
     if np.all(v_lo >= 1e8):  # not applicable anywhere (no motor, no reduction): nothing to bound
         return v_lo
     torques, thrust, needed, zone, peak = CONVEX_TORQUES[c.key]
     # what the margin compares the torque with (the motor peak: the zone at each phase's speed,
-    # referred to the
-    # flat peak; the motor RMS: rms_torque_ratio x rated; the reduction: T2B, T2N), recovered
-    # exactly from the
-    # margin at the interval's low end
+    # referred to the flat peak; the motor RMS: rms_torque_ratio x rated; the reduction: T2B, T2N),
+    # recovered exactly from the margin at the interval's low end
     need_lo = np.asarray(out_lo[needed])
     available = v_lo * need_lo
     # phases sharing a torque pair at both ends (physics.drive.phase_torques): one evaluation

@@ -1,6 +1,6 @@
-"""What a solved optimum is told with: each limit's sensitivity (the optimum re-solved with the limit relaxed by
-10 %, the note when the time limit cut them), the estimated part values the optimum rests on, and the cheapest
-design near a stiffness or frequency optimum (:func:`cheaper_near`)."""
+"""What a solved optimum is told with: each limit's sensitivity (the optimum re-solved with the
+limit relaxed by 10 %, the note when the time limit cut them), the estimated part values the optimum
+rests on, and the cheapest design near a stiffness or frequency optimum (:func:`cheaper_near`)."""
 
 from __future__ import annotations
 
@@ -21,20 +21,22 @@ if TYPE_CHECKING:
     from .task import Task
 
 RELAX = 0.10  # sensitivities: relax each limit by 10 %
-# a stiffness or frequency optimum is compared with the cheapest design within the problem's tolerance of it
-# (objective.tolerance, or this when the problem gives none) and said when that one costs at least MARKEDLY less
+# a stiffness or frequency optimum is compared with the cheapest design within the problem's
+# tolerance of it (objective.tolerance, or this when the problem gives none) and said when that one
+# costs at least MARKEDLY less
 CHEAPER_TOLERANCE = 0.01
 MARKEDLY = 0.05
 
 
 def reusable(space, constraints, loose, spec, key: str):
-    """The main search's Exact (``space``'s cache, :data:`SOLVED`) where the re-solve with ``loose`` (the
-    constraints with the limit ``key`` relaxed) gives its feasible combinations the same answer, else None.
-    That holds when ``key`` is the only change and its limit does not move a combination's best preload:
-    a limit independent of the preload, or one a higher preload helps (minimum stiffness, frequency), relaxed:
-    the best preload is set by the others (search.preload), and a combination that met the limit meets it
-    relaxed, at the same preload and objective.  A limit a higher preload breaks (life, drag, thermal growth)
-    moves it, and a convex one (motor torque) too: those re-solve every combination."""
+    """The main search's Exact (``space``'s cache, :data:`SOLVED`) where the re-solve with ``loose``
+    (the constraints with the limit ``key`` relaxed) gives its feasible combinations the same
+    answer, else None.  That holds when ``key`` is the only change and its limit does not move a
+    combination's best preload: a limit independent of the preload, or one a higher preload helps
+    (minimum stiffness, frequency), relaxed: the best preload is set by the others (search.preload),
+    and a combination that met the limit meets it relaxed, at the same preload and objective.  A
+    limit a higher preload breaks (life, drag, thermal growth) moves it, and a convex one (motor
+    torque) too: those re-solve every combination."""
     hit = space._cache.get(SOLVED)
     if hit is None or hit[1] != spec or tuple(hit[0]) != tuple(constraints):
         return None
@@ -47,16 +49,16 @@ def reusable(space, constraints, loose, spec, key: str):
 
 
 def cut_note(what: str, cut: list) -> str:
-    """What the time limit cut after the search: the sensitivities (``cut``: the limits not re-solved) or the
-    advice (its verifying searches)."""
+    """What the time limit cut after the search: the sensitivities (``cut``: the limits not
+    re-solved) or the advice (its verifying searches)."""
     if what == "sensitivities":
         return (
             f"the time limit cut the limit sensitivities: {', '.join(cut)} not re-solved (a longer "
             "--time-limit, or --no-sensitivity)"
         )
     return (
-        "the time limit cut the design-change advice: the changes it could not verify in time are not "
-        "proposed (a longer --time-limit searches further)"
+        "the time limit cut the design-change advice: the changes it could not verify in time are "
+        "not proposed (a longer --time-limit searches further)"
     )
 
 
@@ -71,12 +73,12 @@ def limit_sensitivities(
     """For every limit: its value at the optimum and the objective gain when it is relaxed by 10 %
     (re-solved with the default method; a discrete problem has no meaningful multipliers).
 
-    ``deadline`` (a time.perf_counter() value): a limit whose re-solve it cuts, or that comes after it, is left
-    out and its key appended to ``cut`` (a list).
+    ``deadline`` (a time.perf_counter() value): a limit whose re-solve it cuts, or that comes after
+    it, is left out and its key appended to ``cut`` (a list).
 
-    ``space``: the problem's search space, if built (the part tables do not depend on the limits, so a re-solve
-    reuses it and its cached parameter arrays, unless the relaxed limit is also an axis value the parts' checks
-    read, as ``min_life`` is when the axis sets no ``required_life``)."""
+    ``space``: the problem's search space, if built (the part tables do not depend on the limits, so
+    a re-solve reuses it and its cached parameter arrays, unless the relaxed limit is also an axis
+    value the parts' checks read, as ``min_life`` is when the axis sets no ``required_life``)."""
     from .bestfirst import bound_order_search
     from .parts import build_space
     from .polish import polish
@@ -105,10 +107,8 @@ def limit_sensitivities(
         relaxed_problem = problem.with_limit(key, relaxed)
         loose = build_constraints(relaxed_problem)
         # a limit that is also an axis value (min_life: the life the checks need) changes the part
-        # parameters, and
-        # a max_backlash that left reductions out (parts._add_drives) may admit them relaxed: either
-        # builds the
-        # relaxed problem's own space
+        # parameters, and a max_backlash that left reductions out (parts._add_drives) may admit
+        # them relaxed: either builds the relaxed problem's own space
         rebuild = relaxed_problem.axis != problem.axis or (
             key == "max_backlash" and space.reductions_by_backlash
         )
@@ -135,8 +135,9 @@ def limit_sensitivities(
 
 
 def estimated_at_optimum(problem: Problem, res: SolveResult, objective_outputs) -> tuple:
-    """What of the optimum rests on estimated part values (``Certificate.estimated``): the objective, the
-    limits at their bound or binding by the sensitivities, the checks at their limit."""
+    """What of the optimum rests on estimated part values (``Certificate.estimated``): the
+    objective, the limits at their bound or binding by the sensitivities, the checks at their
+    limit."""
     from ..model.estimates import Resting, binding_estimates, resting_on
 
     binding = {b.limit for b in res.binding if b.binding}
@@ -155,9 +156,10 @@ def estimated_at_optimum(problem: Problem, res: SolveResult, objective_outputs) 
 def cheaper_near(
     task: Task, res: SolveResult, m: Method, time_limit: float, t0: float
 ) -> dict | None:
-    """The cheapest design whose objective is within the problem's tolerance (``objective.tolerance``, else
-    :data:`CHEAPER_TOLERANCE`) of the optimum ``res.best``, when it costs at least :data:`MARKEDLY` less; else
-    None.  The lexicographic solve's second stage: the least cost with the objective floored, same method."""
+    """The cheapest design whose objective is within the problem's tolerance
+    (``objective.tolerance``, else :data:`CHEAPER_TOLERANCE`) of the optimum ``res.best``, when it
+    costs at least :data:`MARKEDLY` less; else None.  The lexicographic solve's second stage: the
+    least cost with the objective floored, same method."""
     from .task.constraints import limit_constraint
     from .task.objective import objective_spec
 

@@ -1,11 +1,11 @@
 """Compare designs and run batch trade studies (local process pool by default, Dask when asked).
 
-* :mod:`.compare`: the designs ``axisopt compare`` puts side by side, problems solved to their best design
-  (the table itself: :mod:`axisopt.report.compare`).
+* :mod:`.compare`: the designs ``axisopt compare`` puts side by side, problems solved to their best
+  design (the table itself: :mod:`axisopt.report.compare`).
 * :mod:`.spec`: study files (a base problem plus sweeps over its fields) expanded into cases.
 * :mod:`.run`: one solve per case in worker processes or on a Dask cluster, saved as each completes,
-  resumable; one case's solve and record in :mod:`.record`, the back-ends in :mod:`.pool`, the directory's
-  lock in :mod:`.lock`, the case files in :mod:`.store`.
+  resumable; one case's solve and record in :mod:`.record`, the back-ends in :mod:`.pool`, the
+  directory's lock in :mod:`.lock`, the case files in :mod:`.store`.
 * :mod:`.table`: the results table (CSV, Parquet), summary plots and the Markdown report.
 """
 
@@ -41,8 +41,9 @@ __all__ = [
 
 class _CallablePackage(types.ModuleType):
     """``axisopt.study`` names both this package and the notebook function that runs a study
-    (:func:`axisopt.api.study`): once the package is imported it is the attribute, so the package itself runs a
-    study when called, ``axisopt.study("problems/studies/teaching_random.yaml", "out")``."""
+    (:func:`axisopt.api.study`): once the package is imported it is the attribute, so the package
+    itself runs a study when called,
+    ``axisopt.study("problems/studies/teaching_random.yaml", "out")``."""
 
     def __call__(
         self,

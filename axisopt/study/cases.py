@@ -1,6 +1,7 @@
-"""A study expanded into its cases: the sweeps' rows (product or zip), each case's overrides applied to the base
-problem's YAML tree, the problem built from it, and the base problem checked before any case runs (the error
-naming the sweep that caused it); and the data they are: :class:`Study`, :class:`Sweep`, :class:`Case`."""
+"""A study expanded into its cases: the sweeps' rows (product or zip), each case's overrides applied
+to the base problem's YAML tree, the problem built from it, and the base problem checked before any
+case runs (the error naming the sweep that caused it); and the data they are: :class:`Study`,
+:class:`Sweep`, :class:`Case`."""
 
 from __future__ import annotations
 
@@ -21,7 +22,8 @@ from ..yamlio import Node, Section, plain
 
 @dataclass(frozen=True)
 class Sweep:
-    """One swept key: its dotted path, the values (as YAML would hold them) and how they were made."""
+    """One swept key: its dotted path, the values (as YAML would hold them) and how they were
+    made."""
 
     key: str
     values: tuple
@@ -95,7 +97,8 @@ def _digest(obj) -> str:
 
 def expand(study: Study, sweep_sec: Section | None = None) -> tuple:
     """The study's cases in order; ids combine the position with a hash of the base and the inputs,
-    so a changed study never reuses a stale result and identical inputs at two positions stay apart."""
+    so a changed study never reuses a stale result and identical inputs at two positions stay
+    apart."""
     rows = _rows(study, sweep_sec)
     base = study.fingerprint()
     width = max(4, len(str(len(rows) - 1)))
@@ -134,7 +137,8 @@ def _rows(study: Study, sweep_sec: Section | None = None) -> list:
 
 
 def apply_overrides(base: Node, overrides, line: int = 0) -> Node:
-    """A copy of the base YAML tree with each dotted key set to its value (missing mappings created)."""
+    """A copy of the base YAML tree with each dotted key set to its value (missing mappings
+    created)."""
     tree = copy.deepcopy(base)
     for key, value in overrides:
         parts = key.split(".")
@@ -216,15 +220,16 @@ def check_base(study: Study, root: Section) -> None:
                 continue
             value = dict(ov)[culprit.key]
             raise InputError(
-                f"sweep '{culprit.key}' value {json.dumps(value, default=str)}: {short_message(exc)}",
+                f"sweep '{culprit.key}' value {json.dumps(value, default=str)}: "
+                f"{short_message(exc)}",
                 source=study.source,
                 where=f"line {culprit.line}",
             ) from None
 
 
 def _culprit(ctx, sweeps, overrides) -> Sweep | None:
-    """The first of ``sweeps`` whose value in ``overrides`` fails on its own against the base, or None when
-    every one is valid alone (the combination is what is invalid)."""
+    """The first of ``sweeps`` whose value in ``overrides`` fails on its own against the base, or
+    None when every one is valid alone (the combination is what is invalid)."""
     values = dict(overrides)
     for s in sweeps:
         try:

@@ -1,8 +1,8 @@
 """Designs to compare side by side (design YAMLs, or problem YAMLs solved to their best design).
 
 ``load_compared(paths)`` returns one :class:`Compared` per file, ``compare_designs`` one per file or
-:class:`~axisopt.design.Design`: each holds the design's evaluation (or, for a problem without a design,
-its solve status).  The table, JSON and CSV forms are made in :mod:`axisopt.report.compare`.
+:class:`~axisopt.design.Design`: each holds the design's evaluation (or, for a problem without a
+design, its solve status).  The table, JSON and CSV forms are made in :mod:`axisopt.report.compare`.
 """
 
 from __future__ import annotations
@@ -30,7 +30,8 @@ class Compared:
     solve: dict | None = None  # for a problem: status, objective, certificate
     # for a problem: its least check margins (limits.margins), what its checks meet
     margins: dict | None = None
-    # a rack-and-pinion or linear-motor design (search.drivedesigns.DriveDesign): no screw evaluation
+    # a rack-and-pinion or linear-motor design (search.drivedesigns.DriveDesign): no screw
+    # evaluation
     drive: object = None
 
     @property
@@ -39,9 +40,10 @@ class Compared:
 
 
 def compare_designs(files, method: str = "default", time_limit: float = 100.0) -> list:
-    """Designs to compare, one :class:`Compared` each in argument order: each of ``files`` a design or problem
-    YAML path (a problem is solved to its best design with ``method``) or a :class:`axisopt.design.Design`
-    (:class:`axisopt.report.compare.Comparison` shows them side by side)."""
+    """Designs to compare, one :class:`Compared` each in argument order: each of ``files`` a design
+    or problem YAML path (a problem is solved to its best design with ``method``) or a
+    :class:`axisopt.design.Design` (:class:`axisopt.report.compare.Comparison` shows them side by
+    side)."""
     from ..design import Design
 
     items, paths = [], []
@@ -76,9 +78,9 @@ def file_kind(path) -> str:
 
 
 def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> list:
-    """Each file of ``paths`` evaluated (a design) or solved and its best design evaluated (a problem), as
-    :class:`Compared`; once the comparison has run :data:`PROGRESS` seconds, each file done is reported to the
-    "axisopt" logger."""
+    """Each file of ``paths`` evaluated (a design) or solved and its best design evaluated (a
+    problem), as :class:`Compared`; once the comparison has run :data:`PROGRESS` seconds, each file
+    done is reported to the "axisopt" logger."""
     from ..design import load_design
 
     out = []
@@ -86,7 +88,8 @@ def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> 
     for i, p in enumerate(paths):
         if i and time.perf_counter() - t0 > PROGRESS:
             LOG.info(
-                f"  compare: {i} of {len(paths)} files done, {time.perf_counter() - t0:.0f} s; next {p}"
+                f"  compare: {i} of {len(paths)} files done, {time.perf_counter() - t0:.0f} s; "
+                f"next {p}"
             )
         kind = file_kind(p)
         if kind == "drive design":
@@ -132,8 +135,8 @@ def load_compared(paths, method: str = "default", time_limit: float = 100.0) -> 
 
 
 def _drive_types(prob, path, method: str, time_limit: float) -> Compared:
-    """A problem with search.drive_types solved over its types: its best design (a screw design evaluated as
-    a design is, a rack-and-pinion or linear-motor design as its own)."""
+    """A problem with search.drive_types solved over its types: its best design (a screw design
+    evaluated as a design is, a rack-and-pinion or linear-motor design as its own)."""
     from ..search.drivetype import solve_drive_types
 
     res = solve_drive_types(prob, method, top=1, time_limit=time_limit)

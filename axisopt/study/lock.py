@@ -1,7 +1,7 @@
 """``DIR/.lock``: one study run at a time writes to a study directory (:class:`StudyLock`).
 
-The lock file holds the pid, host and process start time of the run; a second run stops with an InputError,
-a lock left by a run that is gone is taken over.
+The lock file holds the pid, host and process start time of the run; a second run stops with an
+InputError, a lock left by a run that is gone is taken over.
 """
 
 from __future__ import annotations
@@ -18,11 +18,11 @@ from ..errors import InputError
 class StudyLock:
     """``DIR/.lock``: one run at a time writes to a study directory.
 
-    The file is created with ``O_CREAT | O_EXCL`` and holds one JSON line: pid, host and start time of
-    the holding process.  A lock whose process is gone (same host; a pid now used by another process
-    does not count) is taken over; taking it is serialised with ``flock`` on the directory, so two runs
-    cannot both take over the same stale lock.  A lock from another host is never taken over: delete it
-    by hand when that run is gone.
+    The file is created with ``O_CREAT | O_EXCL`` and holds one JSON line: pid, host and start time
+    of the holding process.  A lock whose process is gone (same host; a pid now used by another
+    process does not count) is taken over; taking it is serialised with ``flock`` on the directory,
+    so two runs cannot both take over the same stale lock.  A lock from another host is never
+    taken over: delete it by hand when that run is gone.
     """
 
     def __init__(self, out_dir):
@@ -98,8 +98,8 @@ class StudyLock:
 
 
 class _directory_flock:
-    """Exclusive ``flock`` on a directory while a lock file in it is checked and taken (no-op without
-    fcntl)."""
+    """Exclusive ``flock`` on a directory while a lock file in it is checked and taken (no-op
+    without fcntl)."""
 
     def __init__(self, d: Path):
         self.d = d

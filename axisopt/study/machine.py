@@ -1,5 +1,6 @@
-"""Machine studies: a base machine file and sweeps over any of its keys, each case a joint machine solve, run by
-the axis study's runner (the same case store, lock, resume, local pool and Dask back-ends, :mod:`.run`).
+"""Machine studies: a base machine file and sweeps over any of its keys, each case a joint machine
+solve, run by the axis study's runner (the same case store, lock, resume, local pool and Dask
+back-ends, :mod:`.run`).
 
 .. code-block:: yaml
 
@@ -11,11 +12,12 @@ the axis study's runner (the same case store, lock, resume, local pool and Dask 
       axes.Z.problem.axis.moving_mass: {from: 300 kg, to: 500 kg, steps: 5}
       machine.limits.min_frequency: [50 Hz, 60 Hz]
 
-The sweeps are an axis study's (:mod:`.spec`: lists, ranges, seeded random samples, zip or product), the case
-ids the same hash of the base and the inputs, so a changed base never reuses a stale result.  Each case's record
-(``DIR/cases/<case_id>.json``, written atomically as it finishes) holds the joint optimum, the sequential sizing
-beside it and the stiffness chain at the tool; ``DIR/machines.csv`` is the table of every case in case order, made
-from the records only, so it is the same whatever ran them (one process, N local workers, a Dask cluster).
+The sweeps are an axis study's (:mod:`.spec`: lists, ranges, seeded random samples, zip or product),
+the case ids the same hash of the base and the inputs, so a changed base never reuses a stale
+result.  Each case's record (``DIR/cases/<case_id>.json``, written atomically as it finishes) holds
+the joint optimum, the sequential sizing beside it and the stiffness chain at the tool;
+``DIR/machines.csv`` is the table of every case in case order, made from the records only, so it is
+the same whatever ran them (one process, N local workers, a Dask cluster).
 """
 
 from __future__ import annotations
@@ -69,15 +71,16 @@ MACHINE_STUDY_SPEC = Spec(
 
 @dataclass(frozen=True)
 class MachineStudy(Study):
-    """A study whose base is a machine file: its cases are machine solves (:func:`solve_machine_case`)."""
+    """A study whose base is a machine file: its cases are machine solves
+    (:func:`solve_machine_case`)."""
 
     def context(self) -> dict:
         return {**super().context(), "kind": "machine"}
 
 
 def load_machine_study(path) -> MachineStudy:
-    """Read a machine study YAML with its expanded cases; the base and each distinct swept value are read at
-    once, so a typo or a bad value is one InputError naming the study key."""
+    """Read a machine study YAML with its expanded cases; the base and each distinct swept value are
+    read at once, so a typo or a bad value is one InputError naming the study key."""
     path = Path(path)
     src = str(path)
     root = Section(read_yaml(path), src, spec=MACHINE_STUDY_SPEC)
@@ -137,7 +140,8 @@ def _check(study: MachineStudy, root: Section) -> None:
 
 
 def table_rows(study: MachineStudy, out) -> list:
-    """One row per case in case order (from the records only; a missing case has status 'missing')."""
+    """One row per case in case order (from the records only; a missing case has status
+    'missing')."""
     store = CaseStore(out)
     rows = []
     for c in study.cases:
@@ -205,8 +209,8 @@ def run_machine_study(
     progress=None,
     batch: int | None = None,
 ):
-    """Run every case not yet in ``out_dir`` (:func:`.run.run_study`: resumable, streamed to disk, local pool or
-    Dask) and write the table; the :class:`.run.RunSummary`."""
+    """Run every case not yet in ``out_dir`` (:func:`.run.run_study`: resumable, streamed to disk,
+    local pool or Dask) and write the table; the :class:`.run.RunSummary`."""
     from .run import run_study
 
     refuse_inputs_in(out_dir, [study.source, study.base_source], ("study.json", TABLE))

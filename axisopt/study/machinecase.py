@@ -1,6 +1,6 @@
-"""One case of a machine study: its machine built from the base YAML tree and the case's values, its joint solve
-and what the record (a plain dict, ``DIR/cases/<case_id>.json``) holds of it.  The runner's
-:func:`.record.record_case` makes the record around them, as for an axis case."""
+"""One case of a machine study: its machine built from the base YAML tree and the case's values, its
+joint solve and what the record (a plain dict, ``DIR/cases/<case_id>.json``) holds of it.  The
+runner's :func:`.record.record_case` makes the record around them, as for an axis case."""
 
 from __future__ import annotations
 
@@ -19,8 +19,8 @@ OBJECTIVE_UNITS = {
 
 
 def build_machine(context: dict, case: Case):
-    """The case's :class:`~axisopt.machine.spec.Machine` (InputError if the combination is invalid, or if it pins
-    a nut preload: a machine solve chooses them)."""
+    """The case's :class:`~axisopt.machine.spec.Machine` (InputError if the combination is invalid,
+    or if it pins a nut preload: a machine solve chooses them)."""
     from ..machine.joint import refuse_preloads
 
     tree = apply_overrides(context["base"], case.overrides)
@@ -39,8 +39,8 @@ def solve_machine_case(context: dict, machine):
 
 
 def machine_record(rec: dict, machine, res) -> None:
-    """A machine case's answer into its record: status, objective, the joint optimum and the sequential sizing,
-    the gain and the certificate."""
+    """A machine case's answer into its record: status, objective, the joint optimum and the
+    sequential sizing, the gain and the certificate."""
     from ..machine.record import design_dict
 
     label, unit, f = OBJECTIVE_UNITS[machine.objective]

@@ -1,5 +1,5 @@
-"""A study's output files: the results table as CSV (and Parquet), the summary figures and the Markdown report
-that lists them (:func:`write_outputs`).  Nothing here prints."""
+"""A study's output files: the results table as CSV (and Parquet), the summary figures and the
+Markdown report that lists them (:func:`write_outputs`).  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -27,9 +27,9 @@ def write_outputs(study, out_dir, summary=None) -> dict:
     """Write ``results.csv``, ``results.parquet`` (when pyarrow is installed), the plots and
     ``report.md`` into ``out_dir``; returns {name: path}.
 
-    Each file is replaced atomically (:func:`axisopt.report.atomic_file`): a run stopped or out of disk
-    space while writing leaves the previous file whole.  A file that cannot be written is an InputError
-    naming it."""
+    Each file is replaced atomically (:func:`axisopt.report.atomic_file`): a run stopped or out of
+    disk space while writing leaves the previous file whole.  A file that cannot be written is an
+    InputError naming it."""
     out = Path(out_dir)
     df = results_table(study, out)
     files = {}
@@ -73,7 +73,8 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
     ]
     if summary is not None:
         L.append(
-            f"- last run: {summary.solved} cases solved in {summary.time:.1f} s on {summary.backend}"
+            f"- last run: {summary.solved} cases solved in {summary.time:.1f} s on "
+            f"{summary.backend}"
             + (f" ({summary.workers} workers)" if summary.workers else "")
             + (f", {summary.resumed} kept from an earlier run" if summary.resumed else "")
         )
@@ -118,8 +119,8 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
         unit = ok["objective_unit"].dropna().iloc[0] if ok["objective_unit"].notna().any() else ""
         cols = input_columns(study)
         top = ok.sort_values("objective", ascending=False).head(10)
-        # a study over drive types (search.drive_types): each case's drive type, and a rack or linear motor
-        # where the screw's nut and bearing are
+        # a study over drive types (search.drive_types): each case's drive type, and a rack or
+        # linear motor where the screw's nut and bearing are
         types = "drive_type" in ok.columns
         L += [
             "## Best cases",
@@ -133,7 +134,8 @@ def markdown_report(study, df, files, summary=None, parquet_note="") -> str:
         ]
         for _, r in top.iterrows():
             drive = (
-                f"{_cell(r['drive_type'])} | {_cell(r['rack'] if _given(r['rack']) else r['linear_motor'])} | "
+                f"{_cell(r['drive_type'])} | "
+                f"{_cell(r['rack'] if _given(r['rack']) else r['linear_motor'])} | "
                 if types
                 else ""
             )

@@ -1,6 +1,6 @@
-"""The summary figures of a study: each result column against each swept input, one line per group of the other
-inputs (machines, mountings, text inputs), inputs without a design shaded or marked, and the cost-stiffness
-Pareto mask.  Nothing here prints."""
+"""The summary figures of a study: each result column against each swept input, one line per group
+of the other inputs (machines, mountings, text inputs), inputs without a design shaded or marked,
+and the cost-stiffness Pareto mask.  Nothing here prints."""
 
 from __future__ import annotations
 
@@ -33,8 +33,8 @@ MAX_LINES = 10
 
 def _line_groups(df, cols, name, fallback):
     """Columns whose combinations make the lines of a plot against swept input ``name``: every other
-    swept input (cases that differ in them are different designs questions and are not joined), or the
-    fallback grouping when nothing else is swept or the combinations are too many to draw."""
+    swept input (cases that differ in them are different designs questions and are not joined), or
+    the fallback grouping when nothing else is swept or the combinations are too many to draw."""
     others = [n for k, (n, _c) in cols.items() if n != name and df[n].nunique() > 1]
     if others and df.groupby(others, dropna=False).ngroups <= MAX_LINES:
         return others
@@ -42,13 +42,15 @@ def _line_groups(df, cols, name, fallback):
 
 
 def _machine_columns(df, cols) -> list:
-    """Swept inputs that change the axis itself (axis.*: stroke, masses, ...): cases that differ in them
-    are different machines, so a cost / stiffness staircase is drawn within each, never across."""
+    """Swept inputs that change the axis itself (axis.*: stroke, masses, ...): cases that differ in
+    them are different machines, so a cost / stiffness staircase is drawn within each, never
+    across."""
     return [n for k, (n, _c) in cols.items() if k.startswith("axis.") and df[n].nunique() > 1]
 
 
 def _group_label(g, by) -> str:
-    """'max_cost = 4000 EUR, mountings = fixed-fixed': each swept input with the unit of its column."""
+    """'max_cost = 4000 EUR, mountings = fixed-fixed': each swept input with the unit of its
+    column."""
     g = g if isinstance(g, tuple) else (g,)
     out = []
     for b, v in zip(by, g):
@@ -69,9 +71,10 @@ _MARKERS = ("o", "s", "^", "v", "D", "P", "X", "*")
 
 
 def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
-    """Best minimum stiffness and frequency against each numeric swept input (one line per combination of
-    the other swept inputs, infeasible cases marked), and the cost / stiffness trade-off of all cases with
-    its non-dominated cases joined within each machine (cases of different axis inputs are not joined)."""
+    """Best minimum stiffness and frequency against each numeric swept input (one line per
+    combination of the other swept inputs, infeasible cases marked), and the cost / stiffness
+    trade-off of all cases with its non-dominated cases joined within each machine (cases of
+    different axis inputs are not joined)."""
     import matplotlib
 
     from ..figure import (
@@ -94,8 +97,7 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         a1, a2 = fig.subplots(2, 1, sharex=True)
         for j, (g, sub) in enumerate(ok.groupby(by, dropna=False, sort=True)):
             # best over the cases that share this x and this line's inputs; each line its own dash
-            # pattern and
-            # marker, so lines that coincide stay visible
+            # pattern and marker, so lines that coincide stay visible
             k = sub.groupby(name)["min_stiffness [N/um]"].max()
             f = sub.groupby(name)["min_frequency [Hz]"].max()
             style = dict(
@@ -109,9 +111,8 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
             a2.plot(f.index, f.values, **style)
         if len(bad):
             # cases without a design have no value to draw: their inputs are shaded, not drawn as
-            # zeros (a
-            # sweep of many distinct inputs, e.g. random: a rug of ticks along the bottom of the
-            # panel, one artist)
+            # zeros (a sweep of many distinct inputs, e.g. random: a rug of ticks along the bottom
+            # of the panel, one artist)
             xs = sorted(set(bad[name].dropna()))
             what = f"for {len(bad)} cases ({', '.join(sorted(set(bad['status'])))})"
             short = key.split(".")[-1]
@@ -120,7 +121,8 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
             text = (
                 f"no design at this {short} {what}"
                 if len(cols) == 1
-                else f"{short} of a case without a design {what}; the cause may be another input (its reason)"
+                else f"{short} of a case without a design {what}; the cause may be another input "
+                "(its reason)"
             )
             for ax in (a1, a2):
                 if len(xs) > SHADED_INPUTS:
@@ -223,9 +225,8 @@ def summary_plots(study, df, plot_dir: Path, out_dir: Path) -> dict:
         ax = fig.subplots()
         for r in fronts[:12]:
             # each point's objective values in the front's key order (a record written before they
-            # were stored:
-            # the Candidate field of the goal)
-            # a case with other objectives: not on these axes
+            # were stored: the Candidate field of the goal) a case with other objectives: not on
+            # these axes
             if not {kx, ky} <= set(r["pareto"]["keys"]):
                 continue
             at = [r["pareto"]["keys"].index(k) for k in (kx, ky)]

@@ -1,12 +1,12 @@
-"""The execution back-ends of a study run: a local pool of worker processes (:func:`run_pool`) and an
-existing Dask cluster (:func:`run_dask`).  Both pass finished case records to a ``sink``; neither writes
-files.
+"""The execution back-ends of a study run: a local pool of worker processes (:func:`run_pool`) and
+an existing Dask cluster (:func:`run_dask`).  Both pass finished case records to a ``sink``; neither
+writes files.
 
-The local pool sends one case at a time to each worker and the worker acknowledges it before solving,
-so the parent knows which case each worker is running.  A worker that dies (killed, out of memory,
-crashed in native code) costs only the case it was running: that case is tried again, the other
-workers go on, a new worker takes the dead one's place.  A case whose worker dies twice while solving
-it is recorded with status ``worker_died`` (an infrastructure failure).
+The local pool sends one case at a time to each worker and the worker acknowledges it before
+solving, so the parent knows which case each worker is running.  A worker that dies (killed, out of
+memory, crashed in native code) costs only the case it was running: that case is tried again, the
+other workers go on, a new worker takes the dead one's place.  A case whose worker dies twice while
+solving it is recorded with status ``worker_died`` (an infrastructure failure).
 """
 
 from __future__ import annotations
@@ -30,7 +30,8 @@ MAX_TASKS = 10_000  # batches a Dask scheduler holds at a time (run_dask)
 
 
 def _pool_worker(conn, ctx: dict, solve, parent_pid: int) -> None:
-    """A local pool worker: receive a case, acknowledge it, solve it, send the record; None ends it."""
+    """A local pool worker: receive a case, acknowledge it, solve it, send the record; None ends
+    it."""
     _init_worker(parent_pid)
     while True:
         try:
@@ -68,8 +69,7 @@ def _mp_context():
         return mp.get_context("spawn")
     c = mp.get_context("forkserver")
     # the fork server imports the solver stack once, so that a worker (or one replacing a dead
-    # worker)
-    # starts in milliseconds instead of a second; it takes effect when the server starts
+    # worker) starts in milliseconds instead of a second; it takes effect when the server starts
     c.set_forkserver_preload(["axisopt.study.run", "axisopt.search", "axisopt.model"])
     return c
 
@@ -86,10 +86,10 @@ def run_pool(workers: int, ctx: dict, cases: list, sink, solve) -> tuple:
     """Solve ``cases`` on ``workers`` local processes, one case at a time per worker.
 
     A worker that dies costs only the case it acknowledged (``started``): that case goes back to the
-    front of the queue, or is recorded as ``worker_died`` after :data:`WORKER_DEATHS` deaths; a case sent
-    but not yet acknowledged goes back uncharged; a new worker replaces the dead one.  Workers that keep
-    dying before they solve anything (broken installation, no memory) end the run with the cases left
-    counted as lost.  Returns (lost, reason).
+    front of the queue, or is recorded as ``worker_died`` after :data:`WORKER_DEATHS` deaths; a case
+    sent but not yet acknowledged goes back uncharged; a new worker replaces the dead one.  Workers
+    that keep dying before they solve anything (broken installation, no memory) end the run with the
+    cases left counted as lost.  Returns (lost, reason).
     """
     from collections import deque
     from multiprocessing.connection import wait
@@ -148,8 +148,8 @@ def run_pool(workers: int, ctx: dict, cases: list, sink, solve) -> tuple:
                 "status": "worker_died",
                 "time_s": 0.0,
                 "worker": "",
-                "reason": f"the worker process died {deaths[c.case_id]} times while solving this case (last: "
-                f"{last_exit}); a resumed run (--resume) solves it again",
+                "reason": f"the worker process died {deaths[c.case_id]} times while solving this "
+                f"case (last: {last_exit}); a resumed run (--resume) solves it again",
             }
         )
 
@@ -194,7 +194,8 @@ def _exit_text(code) -> str:
 
 
 def _stop_workers(pool: list, gently: bool) -> None:
-    """End the pool's processes: idle ones are asked to stop, the others (Ctrl-C, an error) terminated."""
+    """End the pool's processes: idle ones are asked to stop, the others (Ctrl-C, an error)
+    terminated."""
     for w in pool:
         if gently and w.case is None:
             try:
@@ -213,10 +214,12 @@ def _stop_workers(pool: list, gently: bool) -> None:
 
 
 def run_dask(scheduler, ctx: dict, batches: list, sink, max_tasks: int | None = None):
-    """Solve ``batches`` (tuples of cases) on a Dask cluster, each finished batch's records to ``sink``.
+    """Solve ``batches`` (tuples of cases) on a Dask cluster, each finished batch's records to
+    ``sink``.
 
-    At most ``max_tasks`` (default :data:`MAX_TASKS`) batches are submitted at a time (the scheduler's memory
-    and bookkeeping grow with its tasks), the next one as each ends.  Returns (cases lost, reason, workers)."""
+    At most ``max_tasks`` (default :data:`MAX_TASKS`) batches are submitted at a time (the
+    scheduler's memory and bookkeeping grow with its tasks), the next one as each ends.  Returns
+    (cases lost, reason, workers)."""
     try:
         from dask.distributed import Client, as_completed
     except ImportError:

@@ -1,9 +1,9 @@
 """One case of a study solved into its record (a plain dict, saved as ``DIR/cases/<case_id>.json``).
 
-:func:`solve_case` builds the case's problem, solves it and records the status, the reason of a failure, the
-best design, where its minima lie, its drive values and check margins and the certificate; it never raises
-for a case-level failure.  The record holds data only: the table, plots and report are made from it
-(:mod:`.table`).
+:func:`solve_case` builds the case's problem, solves it and records the status, the reason of a
+failure, the best design, where its minima lie, its drive values and check margins and the
+certificate; it never raises for a case-level failure.  The record holds data only: the table, plots
+and report are made from it (:mod:`.table`).
 """
 
 from __future__ import annotations
@@ -28,8 +28,9 @@ _SOLVE_LOCK = threading.Lock()
 
 
 def solve_case(context: dict, case: Case) -> dict:
-    """Build and solve one case; never raises for a case-level failure (the reason is recorded).  A machine
-    study's case (``context['kind'] == 'machine'``) is a joint machine solve (:mod:`.machinecase`)."""
+    """Build and solve one case; never raises for a case-level failure (the reason is recorded).  A
+    machine study's case (``context['kind'] == 'machine'``) is a joint machine solve
+    (:mod:`.machinecase`)."""
     if context.get("kind") == "machine":
         from .machinecase import build_machine, machine_record, solve_machine_case
 
@@ -46,9 +47,9 @@ def solve_case(context: dict, case: Case) -> dict:
 
 
 def record_case(case: Case, build, solve, fill) -> dict:
-    """One case's record: ``build()`` (an InputError is the case's input_error), ``solve(built)`` (any exception
-    is the case's error: a failure is this case's result, not the end of the study), then ``fill(rec, built,
-    solved)`` records the answer; the time taken last."""
+    """One case's record: ``build()`` (an InputError is the case's input_error), ``solve(built)``
+    (any exception is the case's error: a failure is this case's result, not the end of the study),
+    then ``fill(rec, built, solved)`` records the answer; the time taken last."""
     t0 = time.perf_counter()
     rec = {
         "version": RECORD_VERSION,
@@ -100,7 +101,8 @@ def _solve(context: dict, problem) -> tuple:
             sensitivities=False,
             time_limit=context.get("time_limit", 100.0),
         )
-        # on numpy: the CasADi Function of a case's duty cycle would be built for this one evaluation
+        # on numpy: the CasADi Function of a case's duty cycle would be built for this one
+        # evaluation
         ev = (
             evaluate(res.best.design, use_casadi=False)
             if res.best is not None and res.best.design is not None
@@ -110,8 +112,8 @@ def _solve(context: dict, problem) -> tuple:
 
 
 def _axis_record(rec: dict, problem, solved: tuple) -> None:
-    """An axis case's answer into its record: status, objective, the reason of a failure, the best design,
-    where its minima lie, its drive values and check margins, the certificate."""
+    """An axis case's answer into its record: status, objective, the reason of a failure, the best
+    design, where its minima lie, its drive values and check margins, the certificate."""
     from ..model.function import check_rows, drive_dict
 
     res, ev = solved
@@ -169,10 +171,11 @@ def _axis_record(rec: dict, problem, solved: tuple) -> None:
 
 
 def _drive_types_record(rec: dict, res) -> None:
-    """A case of a problem with search.drive_types (solved by search.drivetype.solve_drive_types) into its
-    record: the best design of any type with its drive type, parts, the values every type has (objective,
-    least stiffness, first frequency, cost, moving mass) and its margins; a screw design also with its checks
-    as a screw case records them."""
+    """A case of a problem with search.drive_types (solved by search.drivetype.solve_drive_types)
+    into its
+    record: the best design of any type with its drive type, parts, the values every type has
+    (objective, least stiffness, first frequency, cost, moving mass) and its margins; a screw design
+    also with its checks as a screw case records them."""
     best = res.best
     rec["status"] = res.status
     rec["objective"] = {

@@ -29,17 +29,18 @@ SHOWN = (
 
 @dataclass(repr=False)
 class StudyResult:
-    """A finished study: ``summary`` (cases solved, failed, files written) and the output directory; the
-    results table, one row per case, is read from the case files by :meth:`to_frame`."""
+    """A finished study: ``summary`` (cases solved, failed, files written) and the output directory;
+    the results table, one row per case, is read from the case files by :meth:`to_frame`."""
 
     study: Study
     out_dir: str
     summary: RunSummary
 
     def to_frame(self):
-        """pandas DataFrame, one row per finished case: the swept inputs (quantities as numbers, the unit in
-        the column name, e.g. ``axis.stroke [mm]``), status, objective, chosen parts, ``min_stiffness [N/um]``,
-        ``cost [EUR]``, each check's margin, available and needed (the study's ``results.csv``)."""
+        """pandas DataFrame, one row per finished case: the swept inputs (quantities as numbers, the
+        unit in the column name, e.g. ``axis.stroke [mm]``), status, objective, chosen parts,
+        ``min_stiffness [N/um]``, ``cost [EUR]``, each check's margin, available and needed (the
+        study's ``results.csv``)."""
         return results_table(self.study, self.out_dir)
 
     @property
@@ -87,13 +88,14 @@ def run_spec(
     """Run a study (a study YAML path or a loaded :class:`Study`) -> :class:`StudyResult`.
 
     out       : output directory (default ``<study file stem>-results``, as on the command line)
-    workers   : local worker processes; 0 (the default here) solves in this process, None uses every core
+    workers   : local worker processes; 0 (the default here) solves in this process, None uses every
+                core
     resume    : continue a run in ``out`` (its finished cases are kept)
     overwrite : solve every case again: the case results already in ``out`` are deleted first
     time_limit: [s] of each case's solve (the study command's --time-limit option, default 100)
 
-    An ``out`` that holds case results, with neither ``resume`` nor ``overwrite``, is an InputError that says
-    so in these words (``axisopt.study(..., resume=True)``), not in the command line's.
+    An ``out`` that holds case results, with neither ``resume`` nor ``overwrite``, is an InputError
+    that says so in these words (``axisopt.study(..., resume=True)``), not in the command line's.
     """
     import math
     from dataclasses import replace
@@ -130,7 +132,8 @@ def run_spec(
 
 
 def clear_cases(out) -> int:
-    """Delete the case results in ``out`` (a study run again from the start: ``--overwrite``); their count."""
+    """Delete the case results in ``out`` (a study run again from the start: ``--overwrite``); their
+    count."""
     store = CaseStore(out)
     have = store.existing()
     if have:
@@ -149,7 +152,8 @@ def run(
     scheduler=None,
     progress=None,
 ) -> StudyResult:
-    """Run ``study`` into ``out_dir`` (:func:`axisopt.study.run.run_study`) and return its result."""
+    """Run ``study`` into ``out_dir`` (:func:`axisopt.study.run.run_study`) and return its
+    result."""
     if scheduler is not None:
         workers = None
     summary = run_study(

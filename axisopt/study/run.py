@@ -5,28 +5,28 @@ Execution back-ends (all call the same :func:`solve_case` on small case definiti
 * in process (``workers=0``): a plain loop, for debugging;
 * a local pool (default): one ``multiprocessing`` process per core, started by a ``forkserver`` that
   has imported the solver stack once (``spawn`` where there is none), each fed one case at a time
-  through its own pipe.  Each worker builds its own CasADi functions and loads the catalog once (both
-  cached per process); nothing but case definitions and plain result dicts crosses the process
+  through its own pipe.  Each worker builds its own CasADi functions and loads the catalog once
+  (both cached per process); nothing but case definitions and plain result dicts crosses the process
   boundary;
 * an existing Dask cluster (``scheduler='tcp://host:8786'``): ``dask.distributed`` is imported only
   then.
 
 Nothing is lost: the parent writes every finished case to ``DIR/cases/<case_id>.json`` through a
-temporary file and ``os.replace`` (atomic, :func:`axisopt.report.atomic_file`, like every other output
-file), so a run stopped by Ctrl-C, ``kill -9`` or a dead worker continues with ``resume=True`` and
-recomputes only the missing cases.  A failing case (infeasible, bad combination of inputs, solver error)
-is a result with its reason; the others go on.
+temporary file and ``os.replace`` (atomic, :func:`axisopt.report.atomic_file`, like every other
+output file), so a run stopped by Ctrl-C, ``kill -9`` or a dead worker continues with
+``resume=True`` and recomputes only the missing cases.  A failing case (infeasible, bad combination
+of inputs, solver error) is a result with its reason; the others go on.
 
-The local pool sends one case at a time to each worker and the worker acknowledges it before solving,
-so the parent knows which case each worker is running.  A worker that dies (killed, out of memory,
-crashed in native code) costs only the case it was running: that case is tried again, the other
-workers go on, a new worker takes the dead one's place.  A case whose worker dies twice while solving
-it is recorded with status ``worker_died`` (an infrastructure failure, :data:`INFRA_STATUSES`), which a
-resumed run solves again.
+The local pool sends one case at a time to each worker and the worker acknowledges it before
+solving, so the parent knows which case each worker is running.  A worker that dies (killed, out of
+memory, crashed in native code) costs only the case it was running: that case is tried again, the
+other workers go on, a new worker takes the dead one's place.  A case whose worker dies twice while
+solving it is recorded with status ``worker_died`` (an infrastructure failure,
+:data:`INFRA_STATUSES`), which a resumed run solves again.
 
-One run at a time writes to a study directory: ``DIR/.lock`` holds the pid, host and process start time
-of the run; a second run stops with an InputError, a lock left by a run that is gone is taken over
-(:mod:`.lock`).  One case's solve and its record: :mod:`.record`.
+One run at a time writes to a study directory: ``DIR/.lock`` holds the pid, host and process start
+time of the run; a second run stops with an InputError, a lock left by a run that is gone is taken
+over (:mod:`.lock`).  One case's solve and its record: :mod:`.record`.
 """
 
 from __future__ import annotations
@@ -112,12 +112,14 @@ def run_study(
 
     workers   : local worker processes (default: all cores); 0 solves in this process
     scheduler : address of a Dask scheduler (or a ``dask.distributed.Client``); overrides workers
-    resume    : continue a run in ``out_dir``; without it an ``out_dir`` holding results is an error.
-                Cases recorded as infrastructure failures (``worker_died``) are solved again.
+    resume    : continue a run in ``out_dir``; without it an ``out_dir`` holding results is an
+                error.  Cases recorded as infrastructure failures (``worker_died``) are solved
+                again.
     progress  : callable(Progress) after each finished case
 
-    Holds ``out_dir/.lock`` while it runs (InputError if another run holds it).  Files that cannot be
-    written (disk full, no permission, a directory where a file belongs) are InputErrors naming the file.
+    Holds ``out_dir/.lock`` while it runs (InputError if another run holds it).  Files that cannot
+    be written (disk full, no permission, a directory where a file belongs) are InputErrors naming
+    the file.
     """
     from ..fileio import make_output_dir
 

@@ -20,7 +20,7 @@ Every case is the base YAML tree with the swept values written in, read by the s
 Each distinct list value (and each range's ends) is checked against the base when the study is
 read: a typo in a key or a bad value is a one-line :class:`InputError` naming the study key.
 Combinations that only fail together (e.g. a preload min above a swept max) become failed cases.
-"""
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -50,12 +50,10 @@ _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$"
 
 
 # ------------------------------------------------------------------------------ the YAML keys (one
-# table)
-# The one declaration of a study file's keys: load_study reads them by it and `axisopt schema study`
-# writes
-# it out.  A sweep's keys are the user's (dotted paths into the problem); their values are checked
-# against
-# the base problem when the study is read, which no table can say.
+# table) The one declaration of a study file's keys: load_study reads them by it and
+# `axisopt schema study` writes it out.  A sweep's keys are the user's (dotted paths into the
+# problem); their values are checked against the base problem when the study is read, which no table
+# can say.
 
 MAX_VALUES = 100_000  # values of one sweep (random n, grid steps)
 SWEEP_KEY = r"[A-Za-z_][A-Za-z0-9_-]*(\.[A-Za-z_][A-Za-z0-9_-]*)*"
@@ -188,7 +186,8 @@ STUDY_SPEC = Spec(
 
 
 def load_study(path) -> Study:
-    """Read a study YAML into a :class:`Study` with its expanded cases (InputError naming the key)."""
+    """Read a study YAML into a :class:`Study` with its expanded cases (InputError naming the
+    key)."""
     path = Path(path)
     src = str(path)
     root = Section(require_kind(read_yaml(path), src, "study"), src, spec=STUDY_SPEC)

@@ -1,5 +1,5 @@
-"""Where a study keeps its finished cases: ``DIR/cases/<case_id>.json``, one atomically written file per
-case (shared by the runner, which writes them, and the tables, which read them)."""
+"""Where a study keeps its finished cases: ``DIR/cases/<case_id>.json``, one atomically written file
+per case (shared by the runner, which writes them, and the tables, which read them)."""
 
 from __future__ import annotations
 
@@ -26,8 +26,9 @@ RECORD_VERSION = 1
 
 
 def valid_record(rec, case_id: str) -> bool:
-    """A case record read back is trusted only when it is a mapping of this record version for this very
-    case (``case_id``), with a known status and fields of the right type; anything else is solved again."""
+    """A case record read back is trusted only when it is a mapping of this record version for this
+    very case (``case_id``), with a known status and fields of the right type; anything else is
+    solved again."""
     if (
         not isinstance(rec, dict)
         or rec.get("version") != RECORD_VERSION
@@ -96,8 +97,9 @@ class CaseStore:
         write_text_atomic(path, text, what="case result", fsync=False)
 
     def read(self, case_id: str) -> dict | None:
-        """The record of ``case_id``, or None when it is missing, unreadable (not a regular file, too large,
-        not JSON) or not a valid record of that case (:func:`valid_record`): such a case is solved again."""
+        """The record of ``case_id``, or None when it is missing, unreadable (not a regular file,
+        too large, not JSON) or not a valid record of that case (:func:`valid_record`): such a case
+        is solved again."""
         from ..errors import InputError
         from ..fileio import read_input
 
@@ -113,8 +115,8 @@ _TEMPORARY = re.compile(r"^\..+\.\d+(\.[0-9a-f]{8})?\.tmp$")
 
 
 def sweep_temporaries(d: Path) -> None:
-    """Remove the temporary files of :func:`axisopt.report.atomic_file` left by a run killed mid-write
-    (only under the study lock: no other run is writing here)."""
+    """Remove the temporary files of :func:`axisopt.report.atomic_file` left by a run killed
+    mid-write (only under the study lock: no other run is writing here)."""
     for tmp in d.glob(".*.tmp"):
         if _TEMPORARY.match(tmp.name):
             try:
@@ -132,10 +134,11 @@ def _json_default(o):
 
 
 def refuse_inputs_in(out, inputs, files, folders=("cases", "plots")) -> None:
-    """Refuse an output directory ``out`` where a study would write over (or, run again with overwrite, delete)
-    one of the files it reads (``inputs``: the study file, its base problem or machine): one of the ``files``
-    it writes there, or a file inside one of the ``folders`` it fills.  The command line checks the same
-    (cli/outputs.py); this is the check for the Python functions."""
+    """Refuse an output directory ``out`` where a study would write over (or, run again with
+    overwrite, delete) one of the files it reads (``inputs``: the study file, its base problem or
+    machine): one of the ``files`` it writes there, or a file inside one of the ``folders`` it
+    fills.  The command line checks the same (cli/outputs.py); this is the check for the Python
+    functions."""
     out = Path(out)
     inputs = [i for i in inputs if i and Path(i).is_file()]
     for name in files:

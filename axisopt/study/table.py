@@ -1,11 +1,11 @@
 """The study's results: one table row per case (CSV and Parquet), summary plots, a Markdown report.
 
 The table is always assembled from the case files (``DIR/cases/*.json``), so it is the same whether
-the study ran in one go, was resumed, or ran on a Dask cluster.  Columns: ``case_id``, ``index``, the
-swept inputs (a quantity sweep becomes a number column with its unit in the name, e.g.
+the study ran in one go, was resumed, or ran on a Dask cluster.  Columns: ``case_id``, ``index``,
+the swept inputs (a quantity sweep becomes a number column with its unit in the name, e.g.
 ``axis.stroke [mm]``; a list value such as a set of mountings is joined with ``+``), ``status``,
-``reason``, the objective, the chosen parts and preload, the design's minima over the stroke and where
-they occur, cost, masses, drag torque, life, the certificate, and the solve time.
+``reason``, the objective, the chosen parts and preload, the design's minima over the stroke and
+where they occur, cost, masses, drag torque, life, the certificate, and the solve time.
 """
 
 from __future__ import annotations
@@ -47,8 +47,9 @@ CSV_FLOAT = "%.10g"  # ten significant digits: no float noise (999.9999999999999
 
 
 def check_columns() -> list:
-    """(column, check, field) for each check of the chosen design: margin, available and needed in the
-    vendor unit (e.g. ``critical_speed available [rpm]``); empty where the check does not apply."""
+    """(column, check, field) for each check of the chosen design: margin, available and needed in
+    the vendor unit (e.g. ``critical_speed available [rpm]``); empty where the check does not
+    apply."""
     from ..model import CHECKS
     from ..model.limits import CHECK_RECORDS
 
@@ -105,15 +106,15 @@ def as_text(v):
     return str(v)
 
 
-# a study whose cases choose among drive types (search.drive_types): the best design's type and the part
-# slots of the rack-and-pinion and linear-motor types, beside the screw's
+# a study whose cases choose among drive types (search.drive_types): the best design's type and the
+# part slots of the rack-and-pinion and linear-motor types, beside the screw's
 DRIVE_PART_COLUMNS = ("rack", "twin_pinion", "linear_motor", "forcers")
 
 
 def drive_columns(recs) -> tuple:
     """((column, best key), ...) of the drive type and its parts, and ((column, margin), ...) of the
-    rack-and-pinion and linear-motor designs' margins, when any record holds such a design (else empty: a
-    screw study's table keeps its columns)."""
+    rack-and-pinion and linear-motor designs' margins, when any record holds such a design
+    (else empty: a screw study's table keeps its columns)."""
     if not any("drive_type" in (r.get("best") or {}) for r in recs):
         return [], []
     parts = [("drive_type", "drive_type")] + [(k, k) for k in DRIVE_PART_COLUMNS]

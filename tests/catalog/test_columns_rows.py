@@ -1,7 +1,8 @@
-"""Every shipped catalog row against its kind's physical sanity rules, and against catalogs/SOURCES.md.
+"""Every shipped catalog row against its kind's physical sanity rules, and against
+catalogs/SOURCES.md.
 
-The rules are the vendors' own statements (preload fractions, rating order) and monotonic size laws; a
-row that breaks one is a transcription error or a mislabelled part.  Each failure names the row.
+The rules are the vendors' own statements (preload fractions, rating order) and monotonic size laws;
+a row that breaks one is a transcription error or a mislabelled part.  Each failure names the row.
 """
 
 import re
@@ -59,8 +60,7 @@ def test_nut_ratings_and_preload_rules(cat):
         assert r["static_load_rating"] >= r["dynamic_load_rating"], f"{pid}: C0 < C"
         assert r["preload_min"] <= r["preload_max"], pid
         # HIWIN H-BS 3.6.2, THK: preload at most 10 % of C for a preloaded nut; a single nut is a
-        # nut with play
-        # or a light oversize-ball preload (<= 5 % C)
+        # nut with play or a light oversize-ball preload (<= 5 % C)
         limit = 0.10 if r["type"] == "double" else 0.05
         assert r["preload_max"] <= limit * r["dynamic_load_rating"] * (1 + 1e-3), (
             f"{pid}: preload above {limit} C"
@@ -78,7 +78,8 @@ def test_nut_ratings_and_preload_rules(cat):
 
 
 def _dominance(df, group, size_cols, y, min_pairs):
-    """Within a group, a part larger in every size column is not softer (y not lower, 0.5 % rounding)."""
+    """Within a group, a part larger in every size column is not softer (y not lower, 0.5 %
+    rounding)."""
     pairs = 0
     for key, g in df.groupby(group):
         a = g[size_cols].to_numpy()
@@ -96,18 +97,13 @@ def _dominance(df, group, size_cols, y, min_pairs):
 
 def test_nut_stiffness_rises_with_size(cat):
     # same vendor, nut type, lead and ball: a nut on a larger shaft with a higher load rating
-    # carries more
-    # loaded balls and is never softer.  (Size alone is not enough: HIWIN's R63-40K2 has fewer
-    # circuits and
-    # a lower rating than R50-40, and is softer.)
-    # Rigidities quoted at different loads are compared at 10 % C by the cube-root law (seed eq. 9).
-    # Only nuts of one design are compared (the design code in the id: HIWIN FSC/FDC cassette or
-    # FSI/FDI
-    # internal return, THK BNFN/DIK/BNF, Rexroth FEMES/FDMES): the designs carry different ball
-    # counts per
+    # carries more loaded balls and is never softer.  (Size alone is not enough: HIWIN's R63-40K2
+    # has fewer circuits and a lower rating than R50-40, and is softer.)  Rigidities quoted at
+    # different loads are compared at 10 % C by the cube-root law (seed eq. 9).  Only nuts of one
+    # design are compared (the design code in the id: HIWIN FSC/FDC cassette or FSI/FDI internal
+    # return, THK BNFN/DIK/BNF, Rexroth FEMES/FDMES): the designs carry different ball counts per
     # rating, e.g. HIWIN R80-10K5-FDC (86.2 kN, 2 230 N/um, H-BS Table 6.5) is softer than
-    # R63-10T6-FDI
-    # (68.87 kN, 2 280 N/um, Table 6.7), both as printed.
+    # R63-10T6-FDI (68.87 kN, 2 280 N/um, Table 6.7), both as printed.
     n = cat.nuts.join(cat.screws[["nominal_diameter", "lead", "ball_diameter"]], on="screw_id")
     n["k_10"] = n["stiffness"] * np.cbrt(0.1 * n["dynamic_load_rating"] / n["stiffness_preload"])
     n["ball"] = n["ball_diameter"].fillna(0.0)
@@ -161,20 +157,17 @@ def test_bearing_rules(cat):
         assert r["outer_diameter"] > r["bore"], pid
         assert 0 < r["preload"] < r["dynamic_load_rating"], pid
         # lift-off of a preloaded pair is 2^1.5 = 2.83 x preload (SKF-LF); a DBD/DFD set lifts off
-        # earlier, a
-        # 3-against-1 set (DFT) at 1.80 x its preload loaded on the single row and 5.41 x on the
-        # three (Hertz's
-        # set rule: IBC TI-I-5010.2 Table 2.2's 2.83 and 8.49 x the pair's preload,
-        # physics.bearingsets)
+        # earlier, a 3-against-1 set (DFT) at 1.80 x its preload loaded on the single row and 5.41 x
+        # on the three (Hertz's set rule: IBC TI-I-5010.2 Table 2.2's 2.83 and 8.49 x the pair's
+        # preload, physics.bearingsets)
         low = 1.75 if r["arrangement"] in ("DFT", "DBT") else 2.0
         assert low * r["preload"] <= r["lift_off_load"] <= 2.9 * r["preload"], pid
         strong = r.get("lift_off_load_strong", np.nan)
         assert np.isnan(strong) or 5.3 * r["preload"] <= strong <= 5.5 * r["preload"], pid
         st = r["starting_torque"]
         assert np.isnan(st) or 0 < st < 5.0, pid
-    # within a series, arrangement and preload class, rigidity and rating rise with bore
-    # a bearing of the same family, arrangement and class that is larger in bore and outside
-    # diameter is not
+    # within a series, arrangement and preload class, rigidity and rating rise with bore a bearing
+    # of the same family, arrangement and class that is larger in bore and outside diameter is not
     # softer (equal OD with a larger bore means smaller balls: ZKLN60110 is softer than ZKLN50110)
     fam = b.assign(family=b["id"].str.extract(r"^([A-Za-z]+-[A-Za-z]+)")[0])
     _dominance(

@@ -1,5 +1,5 @@
-"""Lead accuracy grades (catalog.grades) against THK General Catalog A-678 Tables 1 and 2 and HIWIN technical
-information S99TE20-1610 Tables 4.3 and 4.4."""
+"""Lead accuracy grades (catalog.grades) against THK General Catalog A-678 Tables 1 and 2 and HIWIN
+technical information S99TE20-1610 Tables 4.3 and 4.4."""
 
 import math
 
@@ -19,8 +19,7 @@ def band(grade, travel_mm):
 
 
 # THK A-678 Table 1 "Lead Angle Accuracy (Permissible Value)": representative travel distance error
-# and
-# fluctuation [um] by effective thread length [mm]
+# and fluctuation [um] by effective thread length [mm]
 @pytest.mark.published
 @pytest.mark.parametrize(
     "grade,travel,ep,vu",
@@ -86,9 +85,8 @@ def test_hiwin_standard_axial_play_by_grade():
 @pytest.mark.published
 def test_hiwin_table_4_3_jis_row_agrees_with_thk():
     # HIWIN S99TE20-1610 Table 4.3 "International standard of accuracy grade for ballscrews", JIS
-    # row, V300p
-    # (0.001 mm): C0 3.5, C1 5, C3 8, C5 18, C7 50, C10 210 -- the same figures as THK A-678 (per
-    # 300 mm)
+    # row, V300p (0.001 mm): C0 3.5, C1 5, C3 8, C5 18, C7 50, C10 210 -- the same figures as THK
+    # A-678 (per 300 mm)
     t = grade_table()
     names = ("C0", "C1", "C3", "C5", "C7", "C10")
     assert [round(t.error_per_300(n) / UM, 3) for n in names] == [3.5, 5, 8, 18, 50, 210]

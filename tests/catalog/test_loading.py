@@ -1,4 +1,5 @@
-"""Shipped catalogs: contents the brief asks for, values checked against the seed paper, loader errors."""
+"""Shipped catalogs: contents the brief asks for, values checked against the seed paper, loader
+errors."""
 
 import shutil
 
@@ -63,11 +64,9 @@ TABLE4 = {
 @pytest.mark.published
 def test_angular_contact_sets_within_paper_table4(cat):
     # Table 4 is for angular contact (spindle type, 15-40 deg) sets; 60 deg screw-support bearings
-    # are
-    # several times stiffer and are not covered by it (see catalogs/SOURCES.md).  Only the derived
-    # rows whose
-    # rigidity was taken from Table 4 are checked: vendor rows (THK support units) carry the
-    # vendor's figure.
+    # are several times stiffer and are not covered by it (see catalogs/SOURCES.md).  Only the
+    # derived rows whose rigidity was taken from Table 4 are checked: vendor rows (THK support
+    # units) carry the vendor's figure.
     b = cat.bearings
     ac = b[(np.degrees(b["contact_angle"]) < 45) & b["source"].str.contains("P Table 4")]
     checked = 0
@@ -131,7 +130,8 @@ def _edit(path, old, new, count=1):
             "HIWIN-R16-5T4-FSI,HIWIN,HIWIN-G-16x5-b3p175,single,nan,",
             "not a finite number",
         ),
-        # a load rating scaled to 1e-297 N overflowed the life formula's cube (fuzz case 375): refused
+        # a load rating scaled to 1e-297 N overflowed the life formula's cube (fuzz case 375):
+        # refused
         (
             "nuts.csv",
             "single,120,2621,0,0,9.36,",
@@ -184,9 +184,9 @@ def test_user_catalog_directory_adds_parts(tmp_path):
 
 
 def test_the_cached_catalog_reads_a_changed_file_again(tmp_path):
-    """default_catalog keeps one load per process (shared by every problem and design read), keyed by the
-    contents of the files: a user file rewritten at the same path, even to the same size at once, is read
-    again; an unchanged one is served from the cache."""
+    """default_catalog keeps one load per process (shared by every problem and design read), keyed
+    by the contents of the files: a user file rewritten at the same path, even to the same size at
+    once, is read again; an unchanged one is served from the cache."""
     from axisopt.catalog.loading import default_catalog
 
     d = tmp_path / "mine"

@@ -1,5 +1,5 @@
-"""The nut length column (issue 53): the catalog's values against the vendors' printed nut tables, the
-envelope estimate against the vendor rows, and bad input one line, exit 2."""
+"""The nut length column (issue 53): the catalog's values against the vendors' printed nut tables,
+the envelope estimate against the vendor rows, and bad input one line, exit 2."""
 
 from __future__ import annotations
 
@@ -41,8 +41,9 @@ def test_catalog_nut_length_is_the_vendors(nut, mm, source):
 
 
 def test_envelope_is_never_shorter_than_a_vendor_nut():
-    """The estimate for a nut with no listed length is the upper envelope of the vendor rows: never shorter
-    (never a kinder band) than a catalog nut of the same lead, diameter and type; tight within 2 %."""
+    """The estimate for a nut with no listed length is the upper envelope of the vendor rows: never
+    shorter (never a kinder band) than a catalog nut of the same lead, diameter and type; tight
+    within 2 %."""
     nuts, screws = _rows(), {}
     with open(ROOT / "catalogs" / "screws.csv", encoding="utf-8") as f:
         screws = {r["id"]: r for r in csv.DictReader(f)}
@@ -69,10 +70,12 @@ def test_bad_inline_nut_length_is_one_line_exit_2(tmp_path, value):
     src = (ROOT / "problems" / "teaching_design.yaml").read_text(encoding="utf-8")
     nut = _rows()["HIWIN-R25-05K4-FDC"]
     inline = (
-        "  nut:\n    id: MY-NUT\n    vendor: me\n    screw_id: HIWIN-G-25x5-b3p175\n    type: double\n"
+        "  nut:\n    id: MY-NUT\n    vendor: me\n    screw_id: HIWIN-G-25x5-b3p175\n    type: "
+        "double\n"
         f"    stiffness: {nut['stiffness [N/um]']} N/um\n"
         f"    stiffness_preload: {nut['stiffness_preload [N]']} N\n"
-        f"    preload_min: {nut['preload_min [N]']} N\n    preload_max: {nut['preload_max [N]']} N\n"
+        f"    preload_min: {nut['preload_min [N]']} N\n    preload_max: {nut['preload_max [N]']} "
+        "N\n"
         f"    dynamic_load_rating: {nut['dynamic_load_rating [kN]']} kN\n"
         f"    static_load_rating: {nut['static_load_rating [kN]']} kN\n"
         "    contact_angle: 45 deg\n    axial_play: 0 mm\n    mass: 1 kg\n    price: 300 EUR\n"

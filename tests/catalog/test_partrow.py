@@ -1,5 +1,6 @@
-"""A catalog part's repr, table and HTML in vendor units (issue 42 item 4): the numbers a published catalog row
-holds, in the units of its catalog file (catalogs/SOURCES.md names each row's vendor page), not SI."""
+"""A catalog part's repr, table and HTML in vendor units (issue 42 item 4): the numbers a published
+catalog row holds, in the units of its catalog file (catalogs/SOURCES.md names each row's vendor
+page), not SI."""
 
 import csv
 import math
@@ -15,8 +16,7 @@ from axisopt.units import split_header
 CATALOGS = Path(__file__).resolve().parents[2] / "catalogs"
 
 # vendor rows: HIWIN ballscrew catalog (H-BS Table 6.5), THK General Catalog (BNFN, BK support
-# units), HIWIN HG
-# guides, a Yaskawa Sigma-7 motor (YSK-S7)
+# units), HIWIN HG guides, a Yaskawa Sigma-7 motor (YSK-S7)
 PARTS = [
     ("screws", "THK-BNFN-16x5"),
     ("nuts", "HIWIN-R40-20K4-FDC"),

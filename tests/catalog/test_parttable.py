@@ -1,4 +1,5 @@
-"""The pandas-free part tables (axisopt.catalog.parttable) against the pandas tables they stand in for."""
+"""The pandas-free part tables (axisopt.catalog.parttable) against the pandas tables they stand in
+for."""
 
 import math
 import pickle
@@ -19,8 +20,8 @@ def cat():
 
 
 def test_pandas_tables_are_the_records_as_pandas_reads_them(cat):
-    """cat.screws (and the others) equal pandas' own reading of the validated records: same values, dtypes,
-    column order and id index as the loader built before the part tables existed."""
+    """cat.screws (and the others) equal pandas' own reading of the validated records: same values,
+    dtypes, column order and id index as the loader built before the part tables existed."""
     rows = load_records()
     for name in TABLES:
         want = pd.DataFrame.from_records(
@@ -63,7 +64,8 @@ def test_rows_are_the_pandas_rows(cat):
 
 
 def _same(a: dict, b: dict) -> bool:
-    """Equal rows, an empty optional cell (NaN, e.g. a nut's rotating-unit columns) equal to another."""
+    """Equal rows, an empty optional cell (NaN, e.g. a nut's rotating-unit columns) equal to
+    another."""
 
     def eq(x, y):
         return x == y or (
@@ -90,7 +92,8 @@ def test_take_isin_by_id_and_the_frame_round_trip(cat):
 
 
 def test_a_catalog_of_user_dataframes_is_read_the_same(cat):
-    """A Catalog built from pandas tables (what a user or a test writes) gives the same part tables and rows."""
+    """A Catalog built from pandas tables (what a user or a test writes) gives the same part tables
+    and rows."""
     frames = Catalog(*(cat.table(n) for n in TABLES))
     for name in TABLES:
         a, b = cat.rows(name), frames.rows(name)

@@ -1,4 +1,5 @@
-"""What the tests of refused inputs share: the one-line error on stderr, and a file written for a command."""
+"""What the tests of refused inputs share: the one-line error on stderr, and a file written for a
+command."""
 
 from __future__ import annotations
 
@@ -12,7 +13,8 @@ def one_line_error(capsys) -> str:
 
 
 def write_file(tmp_path, name, text) -> str:
-    """``text`` written as UTF-8 to ``tmp_path / name``; its path as a string (a command-line argument)."""
+    """``text`` written as UTF-8 to ``tmp_path / name``; its path as a string (a command-line
+    argument)."""
     p = tmp_path / name
     p.write_text(text, encoding="utf-8")
     return str(p)

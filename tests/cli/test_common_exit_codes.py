@@ -108,7 +108,8 @@ def test_closed_pipe_keeps_the_code_quietly():
 
 
 def test_axisopt_alone_lists_the_commands(capsys):
-    """`axisopt` with no command prints the commands and what each does (exit 0), not an argparse error."""
+    """`axisopt` with no command prints the commands and what each does (exit 0), not an argparse
+    error."""
     assert main([]) == 0
     out = capsys.readouterr()
     assert out.err == ""

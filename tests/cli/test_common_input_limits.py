@@ -1,6 +1,6 @@
-"""Hardening of the one YAML reader and the one quantity parser: every hostile input below ends in one
-line on stderr and exit 2, quickly (each case would hang, crash with a traceback, or be accepted as
-nonsense without the limits in ``yamlio`` and ``units``)."""
+"""Hardening of the one YAML reader and the one quantity parser: every hostile input below ends in
+one line on stderr and exit 2, quickly (each case would hang, crash with a traceback, or be accepted
+as nonsense without the limits in ``yamlio`` and ``units``)."""
 
 from __future__ import annotations
 
@@ -174,14 +174,16 @@ def test_json_never_holds_nan(tmp_path):
 
 
 def test_choice_with_boolean_options_is_one_line(tmp_path, capsys):
-    """catalog.drive takes yes/no/true/false: another value was a TypeError in the 'did you mean' lookup."""
+    """catalog.drive takes yes/no/true/false: another value was a TypeError in the 'did you mean'
+    lookup."""
     text = PROBLEM.replace("catalog:", "catalog:\n  drive: maybe", 1)
     rc, err, _ = _run(tmp_path, capsys, text, command="solve")
     assert rc == 2 and "\n" not in err and "'maybe' is not one of" in err, err
 
 
 def test_non_regular_files_and_huge_position_grids(tmp_path, capsys):
-    """A FIFO hung forever and /dev/zero read until MemoryError; positions: 1e9 allocated gigabytes."""
+    """A FIFO hung forever and /dev/zero read until MemoryError; positions: 1e9 allocated
+    gigabytes."""
     import os
 
     fifo = tmp_path / "fifo.yaml"

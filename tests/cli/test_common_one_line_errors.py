@@ -1,6 +1,7 @@
-"""Inputs refused in one line on stderr (exit 2) naming the file and key (issue 24, items 3, 5 and 7): a time record
-without force, line breaks and internal objects in messages, YAML tags, inputs that used to be accepted silently;
-a saved design's header cannot inject YAML.  Item 4 (the motion commanded): tests/design/test_keys_duty_cycle.py."""
+"""Inputs refused in one line on stderr (exit 2) naming the file and key (issue 24, items 3, 5 and
+7): a time record without force, line breaks and internal objects in messages, YAML tags, inputs
+that used to be accepted silently; a saved design's header cannot inject YAML.  Item 4 (the motion
+commanded): tests/design/test_keys_duty_cycle.py."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""Design YAML and the evaluate command: every bad input is one line naming file and key, exit code 2."""
+"""Design YAML and the evaluate command: every bad input is one line naming file and key, exit
+code 2."""
 
 import json
 from pathlib import Path
@@ -181,8 +182,8 @@ def test_frf_bad_extension_is_one_line(tmp_path, capsys):
 
 
 def test_bearing_that_does_not_fit_the_screw_end_fails_its_check(tmp_path, capsys):
-    """HIWIN Table 8.9/8.10: a 40 mm screw takes 25-30 mm journals (BK30/FK30, WBK30, SFA30); a WBK15 set
-    (15 mm bore) on it fails the fit check."""
+    """HIWIN Table 8.9/8.10: a 40 mm screw takes 25-30 mm journals (BK30/FK30, WBK30, SFA30); a
+    WBK15 set (15 mm bore) on it fails the fit check."""
     p = tmp_path / "d.yaml"
     assert "bearing: NSK-30TAC62B-DFF-C9" in GOOD
     p.write_text(
@@ -208,9 +209,10 @@ def test_bearing_that_does_not_fit_the_screw_end_fails_its_check(tmp_path, capsy
 
 
 def test_checks_carry_physical_values_in_vendor_units(tmp_path, capsys):
-    """Each check's needed value recomputed by hand from the design file (24 m/min on a 20 mm lead is
-    1200 rpm at the screw and, direct drive, at the motor; DN = 40 mm x 1200 rpm, HIWIN's D x n; required
-    life 20 000 h; guide travel = 20 000 h x mean speed 8 m/min = 9 600 km), and margin = available / needed."""
+    """Each check's needed value recomputed by hand from the design file (24 m/min on a 20 mm lead
+    is 1200 rpm at the screw and, direct drive, at the motor; DN = 40 mm x 1200 rpm, HIWIN's D x n;
+    required life 20 000 h; guide travel = 20 000 h x mean speed 8 m/min = 9 600 km), and margin =
+    available / needed."""
     js = tmp_path / "r.json"
     assert main(["evaluate", str(ROOT / "problems" / "vmc_x_design.yaml"), "--json", str(js)]) == 0
     checks = json.loads(js.read_text())["checks"]
@@ -266,8 +268,8 @@ def test_named_method_with_data_prints_it(capsys):
 
 
 def test_colour_only_on_request_or_terminal(monkeypatch, capsys):
-    """Plain text when captured (not a terminal); AXISOPT_COLOR=always colours FAIL red and pass green;
-    NO_COLOR wins over a terminal."""
+    """Plain text when captured (not a terminal); AXISOPT_COLOR=always colours FAIL red and pass
+    green; NO_COLOR wins over a terminal."""
     pytest.importorskip("rich")
     design = str(ROOT / "problems" / "paper_3_1_3_d40.yaml")  # fails critical speed and nut life
     assert main(["evaluate", design]) == 0

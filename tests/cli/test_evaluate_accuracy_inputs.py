@@ -1,7 +1,8 @@
-"""Bad accuracy inputs refused in one line on stderr, exit 2, naming the file and the key (issue 43): an unknown
-grade, a grade the screw is not made in, a grade without a tolerance over the stroke, a negative, NaN, huge or
-unitless guide pitch or yaw, a negative tool offset, unknown grades in a problem's catalog.screw_grades, a
-negative positioning limit; and the good inputs: the budget printed with its grade."""
+"""Bad accuracy inputs refused in one line on stderr, exit 2, naming the file and the key (issue
+43): an unknown grade, a grade the screw is not made in, a grade without a tolerance over the
+stroke, a negative, NaN, huge or unitless guide pitch or yaw, a negative tool offset, unknown grades
+in a problem's catalog.screw_grades, a negative positioning limit; and the good inputs: the budget
+printed with its grade."""
 
 from __future__ import annotations
 

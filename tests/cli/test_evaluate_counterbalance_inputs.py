@@ -1,6 +1,7 @@
-"""A counterbalance refused in one line naming file, line and key, exit 2 (design and problem files): heavier than
-the head, negative / zero / NaN / inf / 1e300 / wrong-unit values, an unknown kind, a typo in a sub-key, a key of
-the other kind, a counterbalance on a horizontal axis; a good one evaluates and solves."""
+"""A counterbalance refused in one line naming file, line and key, exit 2 (design and problem
+files): heavier than the head, negative / zero / NaN / inf / 1e300 / wrong-unit values, an unknown
+kind, a typo in a sub-key, a key of the other kind, a counterbalance on a horizontal axis; a good
+one evaluates and solves."""
 
 from __future__ import annotations
 

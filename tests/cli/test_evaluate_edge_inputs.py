@@ -1,4 +1,5 @@
-"""Edge inputs found in review: rate units, non-finite numbers, BOM files, bad output paths, odd YAML."""
+"""Edge inputs found in review: rate units, non-finite numbers, BOM files, bad output paths, odd
+YAML."""
 
 import math
 import shutil

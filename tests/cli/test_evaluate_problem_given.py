@@ -1,5 +1,5 @@
-"""A problem file given where a design is read (``axisopt evaluate``) says so in one line, exit 2 (issue 42: it
-said "missing required key 'parts'")."""
+"""A problem file given where a design is read (``axisopt evaluate``) says so in one line, exit 2
+(issue 42: it said "missing required key 'parts'")."""
 
 from pathlib import Path
 

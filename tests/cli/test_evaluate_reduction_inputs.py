@@ -1,6 +1,7 @@
-"""Bad reductions refused in one line on stderr, exit 2, naming the file and the line/key: a ratio of 0, an
-efficiency above 1 (100 %), a NaN inertia, in a catalog CSV (user catalog directory) and in an inline design part;
-a reduction part beside the axis's reduction values; reduction ids in a problem's require/exclude."""
+"""Bad reductions refused in one line on stderr, exit 2, naming the file and the line/key: a ratio
+of 0, an efficiency above 1 (100 %), a NaN inertia, in a catalog CSV (user catalog directory) and in
+an inline design part; a reduction part beside the axis's reduction values; reduction ids in a
+problem's require/exclude."""
 
 from __future__ import annotations
 

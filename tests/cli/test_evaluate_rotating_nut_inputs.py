@@ -1,5 +1,5 @@
-"""A driven rotating-nut unit refused in one line, exit 2: on a screw not fixed at both ends (design file), with a
-NaN, missing or out-of-range unit value (catalog CSV)."""
+"""A driven rotating-nut unit refused in one line, exit 2: on a screw not fixed at both ends (design
+file), with a NaN, missing or out-of-range unit value (catalog CSV)."""
 
 from __future__ import annotations
 
@@ -30,8 +30,8 @@ parts:
 
 
 def _nut_csv(tmp_path, **cells) -> str:
-    """A user catalog directory with one rotating-nut row (THK DIR4010-6's values, id MY-DIR) whose cells named
-    by their header (``unit_inertia [kg.cm^2]``) are replaced."""
+    """A user catalog directory with one rotating-nut row (THK DIR4010-6's values, id MY-DIR) whose
+    cells named by their header (``unit_inertia [kg.cm^2]``) are replaced."""
     with open(ROOT / "catalogs" / "nuts.csv", newline="", encoding="utf-8") as fh:
         rows = list(csv.reader(fh))
     header, row = rows[0], next(r for r in rows if r[0] == "THK-DIR4010-6")

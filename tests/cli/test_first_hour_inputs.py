@@ -1,6 +1,7 @@
-"""The files a new user wrote (issue 57), rebuilt: values that contradict one another refused in one line (exit
-2), unit slips warned about or refused with the likely meaning, and a file given to the wrong command named as
-what it is with the command to use.  Each case is the teaching problem with one line changed, as the user did."""
+"""The files a new user wrote (issue 57), rebuilt: values that contradict one another refused in one
+line (exit 2), unit slips warned about or refused with the likely meaning, and a file given to the
+wrong command named as what it is with the command to use.  Each case is the teaching problem with
+one line changed, as the user did."""
 
 from __future__ import annotations
 

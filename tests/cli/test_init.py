@@ -1,5 +1,6 @@
-"""``axisopt init design|problem|study --machine M`` (issue 30): each template loads and solves or evaluates as
-written, says where the process force goes, and never overwrites a file unless asked."""
+"""``axisopt init design|problem|study --machine M`` (issue 30): each template loads and solves or
+evaluates as written, says where the process force goes, and never overwrites a file unless
+asked."""
 
 from __future__ import annotations
 
@@ -23,8 +24,9 @@ def test_problem_template_solves_with_a_clean_answer(machine, tmp_path, capsys):
     assert out["status"] == {0: "optimal", 1: "infeasible"}[code]
     assert out["status"] == "optimal"  # the templates were tuned to be feasible
     best = out["best"]
-    # a drive-type answer (the laser template wins with a linear motor, offered by default) names the feed
-    # stiffness "stiffness" (the position loop's for a linear motor); a screw answer "min_stiffness"
+    # a drive-type answer (the laser template wins with a linear motor, offered by default) names
+    # the feed stiffness "stiffness" (the position loop's for a linear motor); a screw answer
+    # "min_stiffness"
     assert best["min_stiffness" if "drive_type" not in best else "stiffness"] > 10  # N/um
 
 

@@ -1,7 +1,8 @@
 """Never write onto an input of the same command; every output path refused before the work starts.
 
-The files a new user wrote (issue 57): ``axisopt solve p.yaml --save-design p.yaml`` and ``--json p.yaml``
-replaced the problem with exit 0; ``--json nodir/x.json`` and ``--plot out.txt`` failed only after the solve."""
+The files a new user wrote (issue 57): ``axisopt solve p.yaml --save-design p.yaml`` and
+``--json p.yaml`` replaced the problem with exit 0; ``--json nodir/x.json`` and ``--plot out.txt``
+failed only after the solve."""
 
 from __future__ import annotations
 

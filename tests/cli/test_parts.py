@@ -1,7 +1,8 @@
-"""``axisopt parts``: listing and filtering the catalogs, and refusals that name the parts that do fit.
+"""``axisopt parts``: listing and filtering the catalogs, and refusals that name the parts that do
+fit.
 
-The expected rows are read straight from the shipped CSV files with the csv module (not the catalog loader),
-so a filter that drops or adds a row fails here."""
+The expected rows are read straight from the shipped CSV files with the csv module (not the catalog
+loader), so a filter that drops or adds a row fails here."""
 
 import csv
 import json
@@ -115,8 +116,9 @@ def test_a_nut_for_another_screw_is_refused_with_the_nuts_that_fit(tmp_path, cap
 
 
 def test_nuts_listed_under_their_own_screw(capsys):
-    """The text listing groups nuts under a 'screw ID' heading: every nut sits under the screw its CSV row names
-    (catalogs add nuts for a screw further down the file, e.g. Rexroth's FDMES after its FEMES)."""
+    """The text listing groups nuts under a 'screw ID' heading: every nut sits under the screw its
+    CSV row names (catalogs add nuts for a screw further down the file, e.g. Rexroth's FDMES after
+    its FEMES)."""
     assert main(["parts", "nuts"]) == 0
     screw_of = {r["id"]: r["screw_id"] for r in _rows("nuts")}
     under, seen = None, set()

@@ -1,6 +1,6 @@
-"""The same defaults in Python and on the command line (issue 57: ``axisopt.diagnose(max_effects=2)`` against
-``--max-effects 3``), and the options the user missed: ``--time-limit`` on study and compare, ``--overwrite`` on
-study."""
+"""The same defaults in Python and on the command line (issue 57:
+``axisopt.diagnose(max_effects=2)`` against ``--max-effects 3``), and the options the user missed:
+``--time-limit`` on study and compare, ``--overwrite`` on study."""
 
 from __future__ import annotations
 

@@ -1,8 +1,8 @@
 """``axisopt schema``: the JSON Schemas written from the readers' key tables (yamlio.Spec).
 
-Every shipped YAML validates against its schema; a misspelt key, a unit of the wrong kind or a value out of
-range fails both the schema and the loader; the schema holds every key the readers declare (it is their
-translation, not a second copy); the command's bad input is one line and exit code 2.
+Every shipped YAML validates against its schema; a misspelt key, a unit of the wrong kind or a value
+out of range fails both the schema and the loader; the schema holds every key the readers declare
+(it is their translation, not a second copy); the command's bad input is one line and exit code 2.
 """
 
 from __future__ import annotations

@@ -1,5 +1,6 @@
-"""Issue 54's new inputs refused in one line, exit 2: a 3-against-1 set's stronger lift-off load not positive or
-NaN in a user catalog, an unknown arrangement, and a belt stage's negative stiffness in an inline part."""
+"""Issue 54's new inputs refused in one line, exit 2: a 3-against-1 set's stronger lift-off load not
+positive or NaN in a user catalog, an unknown arrangement, and a belt stage's negative stiffness in
+an inline part."""
 
 from __future__ import annotations
 
@@ -49,7 +50,8 @@ def test_a_belt_stage_with_negative_stiffness_inline(tmp_path, capsys):
     part = (
         "  reduction:\n    id: U-B\n    kind: belt\n    ratio: 1.5\n    efficiency: 0.98\n"
         "    inertia: 10 kg.cm^2\n    rated_torque: 45 N.m\n    accel_torque: 45 N.m\n"
-        "    torsional_stiffness: -8 N.m/arcmin\n    backlash: 0 arcmin\n    max_input_speed: 3000 rpm\n"
+        "    torsional_stiffness: -8 N.m/arcmin\n    backlash: 0 arcmin\n    max_input_speed: 3000 "
+        "rpm\n"
         "    price: 200 EUR\n"
     )
     path = write_file(tmp_path, "d.yaml", VMC.replace("parts:\n", "parts:\n" + part, 1))

@@ -1,6 +1,6 @@
-"""Nothing dropped silently (issue 42): the drive is sized whenever the catalogs have motors and the axis a motion
-to size it on, unless the problem says 'drive: no'; a drive left out is stated on its own line, with why, in the
-text and the JSON."""
+"""Nothing dropped silently (issue 42): the drive is sized whenever the catalogs have motors and the
+axis a motion to size it on, unless the problem says 'drive: no'; a drive left out is stated on its
+own line, with why, in the text and the JSON."""
 
 from __future__ import annotations
 
@@ -26,7 +26,8 @@ def _solve_json(path, capsys):
 
 
 def test_widening_the_search_keeps_the_drive(tmp_path, capsys):
-    """The lathe Z without its 'drive: yes' line (a user widening the search): the motor is still chosen."""
+    """The lathe Z without its 'drive: yes' line (a user widening the search): the motor is still
+    chosen."""
     text = LATHE.replace("  drive: yes\n", "")
     assert text != LATHE
     res = _solve_json(_write(tmp_path, text), capsys)
@@ -41,8 +42,8 @@ def test_drive_no_is_stated_on_its_own_line(tmp_path, capsys):
     lines = capsys.readouterr().out.splitlines()
     res = json.loads(rj.read_text(encoding="utf-8"))
     assert res["best"]["motor"] == "" and res["left_out"] == [
-        "the drive (motor, coupling, reduction) is not sized: catalog.drive: no; the axis's motor_inertia and "
-        "coupling values stand in and no motor check is made"
+        "the drive (motor, coupling, reduction) is not sized: catalog.drive: no; the axis's "
+        "motor_inertia and coupling values stand in and no motor check is made"
     ]
     assert any(
         ln.startswith(
@@ -53,7 +54,8 @@ def test_drive_no_is_stated_on_its_own_line(tmp_path, capsys):
 
 
 def test_an_axis_without_motion_says_why_the_drive_is_not_sized(tmp_path, capsys):
-    """No acceleration and no duty cycle: no inertia torque to size a motor on; said, not an error."""
+    """No acceleration and no duty cycle: no inertia torque to size a motor on; said, not an
+    error."""
     text = re.sub(r"(?ms)^  duty_cycle:.*?(?=^  \S|^\S)", "", LATHE.replace("  drive: yes\n", ""))
     text = re.sub(r"(?m)^(  acceleration:).*$", r"\1 0 m/s^2", text)
     res = _solve_json(_write(tmp_path, text), capsys)

@@ -1,5 +1,5 @@
-"""``axisopt solve --save-design``: the designs written read back through ``evaluate`` and ``compare`` to the
-numbers the search reported for them."""
+"""``axisopt solve --save-design``: the designs written read back through ``evaluate`` and
+``compare`` to the numbers the search reported for them."""
 
 import json
 from dataclasses import replace

@@ -1,5 +1,6 @@
-"""``axisopt solve --save-design`` writes the nut preload in round figures (issue 42 item 3): the value a designer
-orders, rounded the way that keeps every limit the optimum sits on, read back by ``axisopt evaluate``."""
+"""``axisopt solve --save-design`` writes the nut preload in round figures (issue 42 item 3): the
+value a designer orders, rounded the way that keeps every limit the optimum sits on, read back by
+``axisopt evaluate``."""
 
 import json
 import math
@@ -71,8 +72,7 @@ def test_saved_preload_is_round_and_keeps_every_limit(tmp_path, capsys, name):
 @pytest.mark.parametrize("name", ["teaching_problem.yaml", "duty_cycle_problem.yaml"])
 def test_saved_preload_goes_the_safe_way_where_the_nearest_breaks_a_limit(tmp_path, capsys, name):
     # teaching: the nut life binds (min_life 12 000 h) and 1150 N would shorten it; duty cycle: the
-    # drag torque
-    # binds (2 N.m) and the nearest 10 N would raise it
+    # drag torque binds (2 N.m) and the nearest 10 N would raise it
     out, exact, _ = _save_and_reload(tmp_path, name)
     problem, design = load_problem(PROBLEMS / name), load_design(out)
     step = preload_step(exact)

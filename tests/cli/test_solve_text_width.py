@@ -1,6 +1,7 @@
-"""Every text output of the shipped files fits 100 columns (issue 42): each problem solved (the default command
-without the sensitivities' re-solves, which print no lines of their own but the limit table, checked on the
-teaching problem and the infeasible one with its advice), each design evaluated."""
+"""Every text output of the shipped files fits 100 columns (issue 42): each problem solved (the
+default command without the sensitivities' re-solves, which print no lines of their own but the
+limit table, checked on the teaching problem and the infeasible one with its advice), each design
+evaluated."""
 
 from __future__ import annotations
 
@@ -41,7 +42,8 @@ def test_evaluate_text_fits(path, capsys):
 
 
 def test_a_gain_within_tolerance_reads_plus_zero():
-    """A limit that does not bind shows '+0', not a rounding residue such as '+1.421e-14' (issue 42)."""
+    """A limit that does not bind shows '+0', not a rounding residue such as '+1.421e-14' (issue
+    42)."""
     from dataclasses import replace
 
     from axisopt.problem import load_problem

@@ -1,9 +1,10 @@
-"""What the command line imports on its common paths: the heavy libraries only where the command needs them.
+"""What the command line imports on its common paths: the heavy libraries only where the command
+needs them.
 
-Start-up time is measured in bench/bench_cli.py; this guards the cause of a slow start so it cannot creep back:
-``parts`` lists plain catalog records (no pandas, no numpy), ``solve`` and ``evaluate`` read the catalogs into
-pandas-free part tables, build no unit registry and draw nothing (no pandas, pint, matplotlib, plotly, dask, rich
-when stdout is not a terminal)."""
+Start-up time is measured in bench/bench_cli.py; this guards the cause of a slow start so it cannot
+creep back: ``parts`` lists plain catalog records (no pandas, no numpy), ``solve`` and ``evaluate``
+read the catalogs into pandas-free part tables, build no unit registry and draw nothing (no pandas,
+pint, matplotlib, plotly, dask, rich when stdout is not a terminal)."""
 
 import json
 import os

@@ -46,8 +46,9 @@ def test_large_examples_first_cases(tmp_path, name):
 
 
 def test_a_study_of_fronts_in_the_positioning_error(tmp_path):
-    """A front whose keys include a goal without a JSON field of its own (the positioning error) is stored with
-    each point's objective values and drawn (the study's plot read a hand map that lacked it)."""
+    """A front whose keys include a goal without a JSON field of its own (the positioning error) is
+    stored with each point's objective values and drawn (the study's plot read a hand map that
+    lacked it)."""
     import json
 
     from study_helpers import PROBLEMS

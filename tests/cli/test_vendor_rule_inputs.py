@@ -1,5 +1,6 @@
-"""Bad input on the vendor-rule keys (axis.torque_limit, axis.cut_while_accelerating): one line, exit 2; a
-torque limit below the coupling's need admits the smaller coupling (the limit caps the motor's torque)."""
+"""Bad input on the vendor-rule keys (axis.torque_limit, axis.cut_while_accelerating): one line,
+exit 2; a torque limit below the coupling's need admits the smaller coupling (the limit caps the
+motor's torque)."""
 
 import subprocess
 import sys
@@ -14,8 +15,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _run(tmp_path, line, monkeypatch) -> int:
-    """``axisopt solve`` of the teaching problem with ``line`` added under axis:, in this process (the real
-    entry point's exit 2 and one stderr line: test_scale_on_a_rotating_nut_unit_one_line_exit_2)."""
+    """``axisopt solve`` of the teaching problem with ``line`` added under axis:, in this process
+    (the real entry point's exit 2 and one stderr line:
+    test_scale_on_a_rotating_nut_unit_one_line_exit_2)."""
     text = (ROOT / "problems/teaching_problem.yaml").read_text(encoding="utf-8")
     f = tmp_path / "p.yaml"
     f.write_text(text.replace("\naxis:\n", f"\naxis:\n  {line}\n", 1), encoding="utf-8")

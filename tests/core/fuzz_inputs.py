@@ -1,18 +1,22 @@
-"""Mutated CLI inputs for the fuzz test (tests/core/test_fuzz.py) and the long fuzz run (bench/bench_fuzz.py).
+"""Mutated CLI inputs for the fuzz test (tests/core/test_fuzz.py) and the long fuzz run
+(bench/bench_fuzz.py).
 
-A *case* is a command line plus the files it reads, all relative to an empty working directory: the shipped
-designs, problems, studies (with a tiny sweep), a saved calibration, the diagnose data CSV and a user catalog
-directory, with one mutation applied (a key deleted or misspelt, a value replaced by NaN, infinity, a huge
-or tiny number, a wrong unit or type, a re-encoded, truncated, empty or hostile file, odd command-line flags).
+A *case* is a command line plus the files it reads, all relative to an empty working directory: the
+shipped designs, problems, studies (with a tiny sweep), a saved calibration, the diagnose data CSV
+and a user catalog directory, with one mutation applied (a key deleted or misspelt, a value replaced
+by NaN, infinity, a huge or tiny number, a wrong unit or type, a re-encoded, truncated, empty or
+hostile file, odd command-line flags).
 
-Choices are drawn from a ``Chooser`` (``choice``, ``randint``, ``random``), so the same generator serves a
-seeded ``random.Random`` (the bench) and hypothesis' ``data.draw`` (the test, which then shrinks).
+Choices are drawn from a ``Chooser`` (``choice``, ``randint``, ``random``), so the same generator
+serves a seeded ``random.Random`` (the bench) and hypothesis' ``data.draw`` (the test, which then
+shrinks).
 
 :func:`classify` checks one outcome against the CLI contract:
 
-* exit 0 with finite output (with ``--json``: no NaN/Infinity, no negative mass, stiffness, length or
-  frequency), no traceback and no warning on stderr;
-* exit 1 (proven negative) or 3 (unproven) with an explanation (stdout or stderr not empty), no traceback;
+* exit 0 with finite output (with ``--json``: no NaN/Infinity, no negative mass, stiffness, length
+  or frequency), no traceback and no warning on stderr;
+* exit 1 (proven negative) or 3 (unproven) with an explanation (stdout or stderr not empty), no
+  traceback;
 * exit 2 with exactly one line on stderr starting with ``error: ``.
 """
 
@@ -328,8 +332,8 @@ def dump_yaml(tree) -> bytes:
 
 
 def mutate_tree(ch, tree, where=None):
-    """Mutate a parsed YAML tree in place at a random path (restricted to ``where`` prefixes if given).
-    Returns a description."""
+    """Mutate a parsed YAML tree in place at a random path (restricted to ``where`` prefixes if
+    given).  Returns a description."""
     paths = list(_paths(tree))
     if where:
         sel = [p for p in paths if any(p[: len(w)] == w for w in where)]
@@ -497,8 +501,7 @@ def mutate_text(ch, data: bytes, kind: str = "yaml"):
 
 
 # Optional keys the shipped files leave at their defaults (README "Design YAML" / "Problem YAML"),
-# with an
-# example value: the "optional" mutation writes one in, its value often mutated too.
+# with an example value: the "optional" mutation writes one in, its value often mutated too.
 AXIS_OPTIONAL = {
     "start_offset": "130 mm",
     "end_margin": "170 mm",
@@ -574,7 +577,8 @@ EXTREME_COUNTS = (10**9, 10**6, 10**5, 3, 0, -1, 2**63)
 
 
 def add_optional(ch, tree) -> str | None:
-    """Write one optional key the file leaves out (its value kept, pushed to an extreme or mutated)."""
+    """Write one optional key the file leaves out (its value kept, pushed to an extreme or
+    mutated)."""
     if not isinstance(tree, dict):
         return None
     cands = []
@@ -681,7 +685,8 @@ def write_csv_rows(rows) -> bytes:
 
 
 def mutate_csv(ch, data: bytes, rows_of_interest=None, text_share: float = 0.2):
-    """(description, new bytes) for a CSV file; ``rows_of_interest`` (indices) get most cell mutations."""
+    """(description, new bytes) for a CSV file; ``rows_of_interest`` (indices) get most cell
+    mutations."""
     if ch.random() < text_share:
         return mutate_text(ch, data, "csv")
     rows = read_csv_rows(data)
@@ -716,7 +721,10 @@ def mutate_csv(ch, data: bytes, rows_of_interest=None, text_share: float = 0.2):
         old = body[i][j] if j < len(body[i]) else None
         if j < len(body[i]):
             body[i][j] = v
-        desc = f"cell line {i + 2} column '{head[j]}' {old!r} -> {v[:20]!r}{'...' if len(v) > 20 else ''}"
+        desc = (
+            f"cell line {i + 2} column '{head[j]}' {old!r} -> "
+            f"{v[:20]!r}{'...' if len(v) > 20 else ''}"
+        )
     elif op == "column" and body:
         j = ch.randint(0, len(head) - 1)
         v = ch.choice(CSV_VALUES[:10])
@@ -795,8 +803,7 @@ class Case:
     files: dict = field(default_factory=dict)  # relative path -> bytes
     dirs: tuple = ()  # relative directories to create
     # ';'-separated: 'fifo:<rel path>' makes a named pipe nobody writes or reads; 'drain:<rel path>'
-    # makes one
-    # that a thread of the runner reads to its end (as `cat fifo` would), for output paths
+    # makes one that a thread of the runner reads to its end (as `cat fifo` would), for output paths
     special: str = ""
     # rel path -> _Drain (while running)
     drains: dict = field(default_factory=dict, repr=False, compare=False)
@@ -820,7 +827,8 @@ class Case:
                 self.drains[rel] = _Drain(p)
 
     def release(self) -> dict:
-        """What arrived at each drained FIFO (rel path -> bytes); a reader still waiting is released."""
+        """What arrived at each drained FIFO (rel path -> bytes); a reader still waiting is
+        released."""
         got = {rel: d.result() for rel, d in self.drains.items()}
         self.drains = {}
         return got
@@ -892,7 +900,8 @@ def problem_case(ch, problems=FAST_PROBLEMS) -> Case:
 
 
 def _tiny_sweep(tree, name: str, fast: bool):
-    """Every swept key cut to at most two values (only the first key keeps two), the sweep's base kept."""
+    """Every swept key cut to at most two values (only the first key keeps two), the sweep's base
+    kept."""
     sweep = tree.get("sweep", {})
     first = True
     for k, v in list(sweep.items()):
@@ -976,8 +985,8 @@ def calibration_bytes(runner=None) -> bytes:
 
 
 # Every baseline parameter and every effect that evaluate applies, with plausible values (a saved
-# calibration
-# carries only the accepted effects): the calibration cases mutate this one or the saved one.
+# calibration carries only the accepted effects): the calibration cases mutate this one or the saved
+# one.
 RICH_CALIBRATION = """\
 axisopt_calibration: 1
 design: table-x
@@ -1023,8 +1032,9 @@ _DATA_CACHE: dict = {}
 
 
 def synthetic_datasets() -> dict:
-    """Natural-frequency, friction and frequency-response tests of the shipped table_x axis (made once per
-    process with ``axisopt.identify.tables.synth``, as problems/data/generate.py makes the stiffness test)."""
+    """Natural-frequency, friction and frequency-response tests of the shipped table_x axis (made
+    once per process with ``axisopt.identify.tables.synth``, as problems/data/generate.py makes the
+    stiffness test)."""
     if not _DATA_CACHE:
         import numpy as np
 
@@ -1096,8 +1106,9 @@ def _prefixed_table(table: str) -> tuple[list, list]:
 
 
 def catalog_case(ch) -> Case:
-    """A user catalog directory (the shipped tables with every id prefixed 'U-'), one table mutated, used by
-    ``parts``, ``evaluate`` (a design of U- parts) or ``solve`` (the teaching problem over both catalogs)."""
+    """A user catalog directory (the shipped tables with every id prefixed 'U-'), one table mutated,
+    used by ``parts``, ``evaluate`` (a design of U- parts) or ``solve`` (the teaching problem over
+    both catalogs)."""
     table = ch.choice(TABLES)
     design = yaml.safe_load(shipped("vmc_x_design.yaml"))
     used = {
@@ -1382,9 +1393,10 @@ def _catalog_with(table: str, cell: str) -> bytes:
 
 
 def _hardening_cases() -> list:
-    """One case per class of issue 24 ("Hardening, second round"): output paths that are FIFOs, '-' or
-    /dev/stdout; inputs that are FIFOs, devices, oversized; a time record without force; a duty cycle faster
-    than the axis; multi-line values; silent acceptances; CSV cells that are formulas."""
+    """One case per class of issue 24 ("Hardening, second round"): output paths that are FIFOs, '-'
+    or /dev/stdout; inputs that are FIFOs, devices, oversized; a time record without force; a duty
+    cycle faster than the axis; multi-line values; silent acceptances; CSV cells that are
+    formulas."""
     D, P, S, C = "d.yaml", "p.yaml", "s.yaml", "data.csv"
     dfiles = {D: shipped("vmc_x_design.yaml")}
     pfiles = {P: shipped("teaching_problem.yaml")}
@@ -1419,7 +1431,8 @@ def _hardening_cases() -> list:
     many = ("\n".join([head] + body * (50_001 // len(body) + 1)) + "\n").encode()
     together = (
         b"name: together\nbase: p.yaml\ncombine: product\nsweep:\n"
-        b"  continuous.nut_preload.min: [100 N, 5 kN]\n  continuous.nut_preload.max: [1 kN, 10 kN]\n"
+        b"  continuous.nut_preload.min: [100 N, 5 kN]\n  continuous.nut_preload.max: [1 kN, 10 "
+        b"kN]\n"
     )
     cases = [
         # 1. outputs: FIFOs (a reader drains them), '-', /dev/stdout
@@ -1750,8 +1763,7 @@ class Outcome:
 
 
 # a value far outside machine-tool practice (axisopt.design.plausible): used and said in one line
-# naming the file,
-# line and key: part of the contract, not a stray warning
+# naming the file, line and key: part of the contract, not a stray warning
 PLAUSIBILITY = re.compile(
     r"^warning: .*key '[^']+': .* is far (below|above) machine-tool practice \(.*\): check "
     r"the value and its unit$"
@@ -1759,7 +1771,8 @@ PLAUSIBILITY = re.compile(
 
 
 def classify(case: Case, out: Outcome) -> tuple[str, str]:
-    """(outcome class, detail) of one run against the CLI contract (the plausibility warnings set aside)."""
+    """(outcome class, detail) of one run against the CLI contract (the plausibility warnings set
+    aside)."""
     err = "".join(
         ln for ln in out.stderr.splitlines(keepends=True) if not PLAUSIBILITY.match(ln.rstrip("\n"))
     )
@@ -1886,8 +1899,8 @@ def _vm_size() -> int:
 def run_subprocess(
     case: Case, workdir: Path, timeout: float = 60.0, python=sys.executable
 ) -> Outcome:
-    """``python -m axisopt ...`` in ``workdir`` with a time limit (the whole process group is killed) and an
-    address-space limit of ``MEMORY_LIMIT``."""
+    """``python -m axisopt ...`` in ``workdir`` with a time limit (the whole process group is
+    killed) and an address-space limit of ``MEMORY_LIMIT``."""
     case.materialize(workdir)
     env = dict(os.environ, PYTHONPATH=str(ROOT), MPLBACKEND="Agg", PYTHONUNBUFFERED="1")
     t0 = time.perf_counter()
@@ -1975,8 +1988,9 @@ def _child(argv, out_path, err_path):  # pragma: no cover - runs in the forked c
 
 
 def run_forked(case: Case, workdir: Path, timeout: float = 20.0) -> Outcome:
-    """``axisopt.cli.main(argv)`` in a forked copy of this process (the imports and caches are warm, so a case
-    costs milliseconds, and a hang is killed after ``timeout`` seconds without stopping the caller)."""
+    """``axisopt.cli.main(argv)`` in a forked copy of this process (the imports and caches are warm,
+    so a case costs milliseconds, and a hang is killed after ``timeout`` seconds without stopping
+    the caller)."""
     case.materialize(workdir)
     out_p, err_p = workdir / ".stdout", workdir / ".stderr"
     t0 = time.perf_counter()

@@ -1,5 +1,6 @@
-"""axisopt in a notebook (issue 30 item 3): ``import axisopt`` is light, its functions return results with
-``to_frame()`` (units in the column names), a short repr in engineering units and an HTML table."""
+"""axisopt in a notebook (issue 30 item 3): ``import axisopt`` is light, its functions return
+results with ``to_frame()`` (units in the column names), a short repr in engineering units and an
+HTML table."""
 
 from __future__ import annotations
 
@@ -59,7 +60,7 @@ print(json.dumps({
     "design_columns": list(designs.columns), "best": designs.iloc[0].to_dict(),
     "best_objective": res.best.objective, "n_designs": len(designs),
 }))
-"""
+"""  # noqa: E501
 
 
 def test_notebook_session_in_a_fresh_interpreter():

@@ -1,5 +1,6 @@
-"""The Python functions never write over the files they read (issue 57 item 1, the command line's check in
-cli/outputs.py, here for ``axisopt.study`` and the calibration writers a notebook calls)."""
+"""The Python functions never write over the files they read (issue 57 item 1, the command line's
+check in cli/outputs.py, here for ``axisopt.study`` and the calibration writers a notebook
+calls)."""
 
 from __future__ import annotations
 
@@ -35,8 +36,8 @@ def test_study_refuses_an_out_that_would_replace_its_study_file(tmp_path):
     with pytest.raises(InputError) as exc:
         axisopt.study(spec, tmp_path)
     assert str(exc.value).splitlines() == [
-        f"{tmp_path}/report.md: out: would overwrite the input {spec} with the study's report.md; give "
-        "another out"
+        f"{tmp_path}/report.md: out: would overwrite the input {spec} with the study's report.md; "
+        "give another out"
     ]
     _unchanged(spec, STUDY)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report.md"]  # nothing written

@@ -1,5 +1,6 @@
-"""axisopt in a notebook (issue 30 item 3): ``import axisopt`` is light, its functions return results with
-``to_frame()`` (units in the column names), a short repr in engineering units and an HTML table."""
+"""axisopt in a notebook (issue 30 item 3): ``import axisopt`` is light, its functions return
+results with ``to_frame()`` (units in the column names), a short repr in engineering units and an
+HTML table."""
 
 from __future__ import annotations
 
@@ -15,8 +16,8 @@ def test_design_and_problem_reprs_are_short_and_in_engineering_units():
     d = repr(axisopt.load_design(PROBLEMS / "teaching_design.yaml"))
     assert (
         d.startswith(
-            "Design('teaching axis 25x5'; fixed-free, horizontal; stroke 300 mm; moving mass 60 kg; "
-            "max speed 10 m/min"
+            "Design('teaching axis 25x5'; fixed-free, horizontal; stroke 300 mm; moving mass 60 "
+            "kg; max speed 10 m/min"
         )
         and "nut HIWIN-R25-05K4-FDC" in d
         and len(d) < 400

@@ -1,4 +1,5 @@
-"""The project's errors (axisopt.errors): an InputError's one line names the file and the place first."""
+"""The project's errors (axisopt.errors): an InputError's one line names the file and the place
+first."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""axisopt in a notebook (issue 30 item 3): ``import axisopt`` is light, its functions return results with
-``to_frame()`` (units in the column names), a short repr in engineering units and an HTML table."""
+"""axisopt in a notebook (issue 30 item 3): ``import axisopt`` is light, its functions return
+results with ``to_frame()`` (units in the column names), a short repr in engineering units and an
+HTML table."""
 
 from __future__ import annotations
 

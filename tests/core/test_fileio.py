@@ -1,9 +1,10 @@
-"""The one output opener and the one input opener (axisopt.fileio), through the commands that use them.
+"""The one output opener and the one input opener (axisopt.fileio), through the commands that use
+them.
 
-Issue 24, items 1 and 2: an output path that is a FIFO, a device or standard output is written in place and never
-replaced; '-' is stdout everywhere an output path is accepted; an input that is not a regular file is refused
-without being opened, and every input kind has a size cap.  Devices are never written here: FIFOs made with
-os.mkfifo in a temporary directory stand for them."""
+Issue 24, items 1 and 2: an output path that is a FIFO, a device or standard output is written in
+place and never replaced; '-' is stdout everywhere an output path is accepted; an input that is not
+a regular file is refused without being opened, and every input kind has a size cap.  Devices are
+never written here: FIFOs made with os.mkfifo in a temporary directory stand for them."""
 
 from __future__ import annotations
 
@@ -314,10 +315,9 @@ def test_parts_csv_escapes_a_user_catalog_formula(tmp_path, monkeypatch, capsys)
 
 
 # ------------------------------------------------------------------------- tidy_layout (was
-# test_tidy_layout.py)
-# A figure whose decorations cannot fit (the study's trade-off plot with a long legend did this in
-# bench_study) is
-# saved without matplotlib's 'Tight layout not applied' UserWarning reaching the user.
+# test_tidy_layout.py) A figure whose decorations cannot fit (the study's trade-off plot with a long
+# legend did this in bench_study) is saved without matplotlib's 'Tight layout not applied'
+# UserWarning reaching the user.
 
 
 def _crowded():

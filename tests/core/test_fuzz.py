@@ -1,21 +1,22 @@
 """Fuzz the command line with mutated shipped inputs and check the contract of every command.
 
-exit 0 with finite output (``--json``: no NaN/Infinity, no negative mass, stiffness, length, frequency), exit 1
-with an explanation, or exit 2 with exactly one stderr line starting ``error: ``; never a traceback, a warning
-on a success, a crash or a hang.  The mutations (``fuzz_inputs.py``, shared with ``bench/bench_fuzz.py``, the
-long run): a key deleted or misspelt, a value replaced by NaN, infinity, -1, 0, 1e300, 1e-300, a 10^5-character
-string, a list, a mapping, a wrong unit or type, scaled far from the shipped value; the file re-encoded
-(Latin-1, UTF-16), truncated, emptied, random bytes, nested 1000 deep, a billion-laughs alias bomb; CSV cells,
-columns and headers of the diagnose data and of a user catalog; odd command-line flags.
+exit 0 with finite output (``--json``: no NaN/Infinity, no negative mass, stiffness, length,
+frequency), exit 1 with an explanation, or exit 2 with exactly one stderr line starting ``error: ``;
+never a traceback, a warning on a success, a crash or a hang.  The mutations (``fuzz_inputs.py``,
+shared with ``bench/bench_fuzz.py``, the long run): a key deleted or misspelt, a value replaced by
+NaN, infinity, -1, 0, 1e300, 1e-300, a 10^5-character string, a list, a mapping, a wrong unit or
+type, scaled far from the shipped value; the file re-encoded (Latin-1, UTF-16), truncated, emptied,
+random bytes, nested 1000 deep, a billion-laughs alias bomb; CSV cells, columns and headers of the
+diagnose data and of a user catalog; odd command-line flags.
 
-Each case runs ``axisopt.cli.main(argv)`` in a forked copy of the test process (imports and caches warm, so a
-case costs milliseconds; a hang is killed after ``CASE_TIMEOUT`` s without stopping the test), or as a real
-subprocess where the command starts worker processes.  hypothesis draws the mutations (derandomized: the same
-cases on every run; a failure shrinks to a small one).
+Each case runs ``axisopt.cli.main(argv)`` in a forked copy of the test process (imports and caches
+warm, so a case costs milliseconds; a hang is killed after ``CASE_TIMEOUT`` s without stopping the
+test), or as a real subprocess where the command starts worker processes.  hypothesis draws the
+mutations (derandomized: the same cases on every run; a failure shrinks to a small one).
 
-Known bugs: each has a ``KNOWN`` entry (the outcome it produces, matched so that the fuzz tests tolerate it)
-and a minimal reproducer in ``test_known_bug`` marked ``xfail(strict=True)``: when the bug is fixed the
-reproducer passes, the strict xfail fails, and the fixer deletes the entry.
+Known bugs: each has a ``KNOWN`` entry (the outcome it produces, matched so that the fuzz tests
+tolerate it) and a minimal reproducer in ``test_known_bug`` marked ``xfail(strict=True)``: when the
+bug is fixed the reproducer passes, the strict xfail fails, and the fixer deletes the entry.
 """
 
 from __future__ import annotations
@@ -73,8 +74,9 @@ FUZZ = settings(
 
 @pytest.fixture(scope="module", autouse=True)
 def warm():
-    """Import the solver stack and build the shipped designs' functions once in this process, so that every
-    forked case starts warm; the calibration the calibration cases mutate is saved here too."""
+    """Import the solver stack and build the shipped designs' functions once in this process, so
+    that every forked case starts warm; the calibration the calibration cases mutate is saved here
+    too."""
     from axisopt.cli import main
 
     with tempfile.TemporaryDirectory() as d, contextlib.redirect_stdout(io.StringIO()):
@@ -126,7 +128,8 @@ def known(case: Case, cls: str, detail: str) -> Known | None:
 
 
 def run(case: Case, timeout: float = CASE_TIMEOUT):
-    """Run a case in a fresh directory: forked in-process, or a subprocess where it starts workers."""
+    """Run a case in a fresh directory: forked in-process, or a subprocess where it starts
+    workers."""
     pool = case.argv[:1] == ["study"] and (
         "--scheduler" in case.argv
         or ("--workers" in case.argv and case.argv[case.argv.index("--workers") + 1 :][:1] != ["0"])
@@ -144,8 +147,8 @@ def check(case: Case) -> str:
     if cls in BAD and known(case, cls, detail) is None:
         err = "\n".join(out.stderr.strip().splitlines()[-12:])
         pytest.fail(
-            f"{cls}: {case.command()}\n  mutation: {case.mutation}\n  {detail}\n  exit {out.rc} after "
-            f"{out.seconds:.1f} s; stderr:\n{err}",
+            f"{cls}: {case.command()}\n  mutation: {case.mutation}\n  {detail}\n  exit {out.rc} "
+            f"after {out.seconds:.1f} s; stderr:\n{err}",
             pytrace=False,
         )
     return cls
@@ -309,7 +312,8 @@ def _data_scaled(column: str, factor: float) -> bytes:
 
 
 def _calibration(baseline=None, effect=None) -> bytes:
-    """The rich calibration with only one baseline value or one effect, that one set to ``value``."""
+    """The rich calibration with only one baseline value or one effect, that one set to
+    ``value``."""
     tree = yaml.safe_load(F.RICH_CALIBRATION)
     if baseline:
         tree["baseline"] = {baseline[0]: dict(tree["baseline"][baseline[0]], value=baseline[1])}
@@ -341,8 +345,8 @@ def _evaluate_calibrated(cal: bytes, json_out: bool) -> Case:
 # Fixed bugs stay here as regression tests; OPEN lists the ones not fixed yet (xfail strict).
 REPRODUCERS = {
     "diagnose-degenerate-data": (
-        "diagnose data whose forces are all ~1e-300 N: overflow warnings, 'nan %' in the text, and with --json "
-        "the fit's NaN reaches write_json (ValueError traceback)",
+        "diagnose data whose forces are all ~1e-300 N: overflow warnings, 'nan %' in the text, and "
+        "with --json the fit's NaN reaches write_json (ValueError traceback)",
         lambda: Case(
             "data",
             "force column scaled by 1e-300",
@@ -360,13 +364,13 @@ REPRODUCERS = {
         lambda: _evaluate_calibrated(_calibration(baseline=("screw_modulus", "-202.7 GPa")), True),
     ),
     "calibration-negative-viscous": (
-        "evaluate --calibration with effect viscous, viscous_coefficient '-5000 N.s/m', is applied: "
-        "negative guide drag torque in the output (exit 0)",
+        "evaluate --calibration with effect viscous, viscous_coefficient '-5000 N.s/m', is "
+        "applied: negative guide drag torque in the output (exit 0)",
         lambda: _evaluate_calibrated(_calibration(effect=("viscous", "-5000 N.s/m")), True),
     ),
     "drive-choice-traceback": (
-        "catalog.drive: maybe (any value but yes/no/true/false) is a TypeError traceback: Section.choice hands the "
-        "boolean options to difflib.get_close_matches",
+        "catalog.drive: maybe (any value but yes/no/true/false) is a TypeError traceback: "
+        "Section.choice hands the boolean options to difflib.get_close_matches",
         lambda: Case(
             "problem",
             "catalog.drive: maybe",
@@ -379,8 +383,8 @@ REPRODUCERS = {
         ),
     ),
     "empty-pareto-front": (
-        "solve of an infeasible Pareto problem (text output): TypeError 'int' object is not iterable in "
-        "solve_cli._cand_table (max over an empty front)",
+        "solve of an infeasible Pareto problem (text output): TypeError 'int' object is not "
+        "iterable in solve_cli._cand_table (max over an empty front)",
         lambda: Case(
             "problem",
             "teaching, pareto objective, max_cost 100 EUR",
@@ -389,8 +393,8 @@ REPRODUCERS = {
         ),
     ),
     "time-limit-nan": (
-        "solve --time-limit nan (or inf) is accepted (NaN <= 0 is False); with --method bonmin it runs ~20 s and "
-        "ends in MINLP_ERROR (exit 1) instead of a one-line error",
+        "solve --time-limit nan (or inf) is accepted (NaN <= 0 is False); with --method bonmin it "
+        "runs ~20 s and ends in MINLP_ERROR (exit 1) instead of a one-line error",
         lambda: Case(
             "flags",
             "--time-limit nan",
@@ -399,7 +403,8 @@ REPRODUCERS = {
         ),
     ),
     "reduction-ratio-tiny": (
-        "axis.reduction_ratio 1e-300 in the gantry problem: OverflowError traceback in load_inertia (ratio**2)",
+        "axis.reduction_ratio 1e-300 in the gantry problem: OverflowError traceback in "
+        "load_inertia (ratio**2)",
         lambda: Case(
             "problem",
             "axis.reduction_ratio: 1e-300",
@@ -412,7 +417,8 @@ REPRODUCERS = {
         ),
     ),
     "study-named-nan": (
-        "a study named 'nan mm' is echoed as given; the classifier counted the user's name as a NaN output",
+        "a study named 'nan mm' is echoed as given; the classifier counted the user's name as a "
+        "NaN output",
         lambda: Case(
             "study",
             "name: nan mm",
@@ -447,13 +453,14 @@ def test_known_bug(bug):
 
 
 def test_a_plausibility_warning_is_part_of_the_contract():
-    """The one-line plausibility warning (design.plausible) beside a success or an error is no stray warning."""
+    """The one-line plausibility warning (design.plausible) beside a success or an error is no stray
+    warning."""
     from fuzz_inputs import Outcome
 
     c = Case("problem", "acceleration scaled 1e-3", ["solve", "p.yaml"])
     warn = (
-        "warning: p.yaml: line 14, key 'axis.acceleration': 0.003 m/s^2 is far below machine-tool practice "
-        "(0.1-50 m/s^2): check the value and its unit\n"
+        "warning: p.yaml: line 14, key 'axis.acceleration': 0.003 m/s^2 is far below machine-tool "
+        "practice (0.1-50 m/s^2): check the value and its unit\n"
     )
     assert classify(c, Outcome(0, "ok\n", warn, 0.1))[0] != "warning"
     assert classify(c, Outcome(2, "", warn + "error: p.yaml: bad\n", 0.1))[0] == "clean error"

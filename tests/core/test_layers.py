@@ -1,5 +1,6 @@
-"""Layer rules the import-linter contracts do not express: no private name crosses a module boundary, no module
-holds more than one idea's worth of lines, and the layer contract has no exceptions."""
+"""Layer rules the import-linter contracts do not express: no private name crosses a module
+boundary, no module holds more than one idea's worth of lines, and the layer contract has no
+exceptions."""
 
 from __future__ import annotations
 
@@ -40,7 +41,8 @@ def test_no_private_name_imported_across_packages():
                 private = alias.name.startswith("_") and not alias.name.startswith("__")
                 if private and _package(module) != _package(target):
                     bad.append(
-                        f"{path.relative_to(PKG.parent)}:{node.lineno} imports {target}.{alias.name}"
+                        f"{path.relative_to(PKG.parent)}:{node.lineno} imports "
+                        f"{target}.{alias.name}"
                     )
     assert not bad, "\n".join(bad)
 
@@ -54,7 +56,8 @@ def test_no_private_name_imported_across_modules():
                 private = alias.name.startswith("_") and not alias.name.startswith("__")
                 if private and module != target:
                     bad.append(
-                        f"{path.relative_to(PKG.parent)}:{node.lineno} imports {target}.{alias.name}"
+                        f"{path.relative_to(PKG.parent)}:{node.lineno} imports "
+                        f"{target}.{alias.name}"
                     )
     assert not bad, "\n".join(bad)
 
@@ -81,8 +84,8 @@ def test_the_layer_contract_has_no_exceptions():
 
 
 def _runtime_imports(tree: ast.AST):
-    """Every import statement a module can run: top level and inside functions (deferred), not the ones under
-    ``if TYPE_CHECKING:`` (never run)."""
+    """Every import statement a module can run: top level and inside functions (deferred), not the
+    ones under ``if TYPE_CHECKING:`` (never run)."""
     stack = [tree]
     while stack:
         node = stack.pop()
@@ -96,9 +99,10 @@ def _runtime_imports(tree: ast.AST):
 
 
 def module_graph() -> dict[str, set[str]]:
-    """axisopt's import graph: module -> the axisopt modules it imports, deferred imports included.  ``from pkg
-    import name`` reaches the module ``pkg.name`` when there is one (else the package); a module's own package
-    ``__init__`` is not an edge of its own (Python runs it first, but the package only re-exports)."""
+    """axisopt's import graph: module -> the axisopt modules it imports, deferred imports included.
+    ``from pkg import name`` reaches the module ``pkg.name`` when there is one (else the package); a
+    module's own package ``__init__`` is not an edge of its own (Python runs it first, but the
+    package only re-exports)."""
     modules = {}
     for path in sorted(PKG.rglob("*.py")):
         parts = list(path.relative_to(PKG.parent).with_suffix("").parts)
@@ -128,7 +132,8 @@ def module_graph() -> dict[str, set[str]]:
 
 
 def import_cycles(graph: dict[str, set[str]]) -> list[list[str]]:
-    """The strongly connected components of more than one module (Tarjan), each a cycle or a knot of them."""
+    """The strongly connected components of more than one module (Tarjan), each a cycle or a knot of
+    them."""
     index: dict[str, int] = {}
     low: dict[str, int] = {}
     on, stack, out = set(), [], []
@@ -162,8 +167,7 @@ def import_cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 
 def test_the_graph_sees_deferred_imports():
     # the walk must see an import inside a function: the front door imports its stages only when a
-    # solve
-    # reaches them
+    # solve reaches them
     graph = module_graph()
     assert "axisopt.search.parts" in graph["axisopt.search.front"]
     assert "axisopt.search.front" in graph["axisopt.search"]

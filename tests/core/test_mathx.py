@@ -1,5 +1,5 @@
-"""One formula on floats, numpy arrays and CasADi symbols (axisopt.mathx): each operation agrees with the
-math module on floats, elementwise on arrays, and through a CasADi function of a symbol."""
+"""One formula on floats, numpy arrays and CasADi symbols (axisopt.mathx): each operation agrees
+with the math module on floats, elementwise on arrays, and through a CasADi function of a symbol."""
 
 from __future__ import annotations
 

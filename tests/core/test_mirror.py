@@ -1,9 +1,10 @@
 """The tests mirror the package: share of modules with a test file at the mirrored path.
 
-Counting rule: a module axisopt/a/b.py is mirrored by tests/a/test_b.py or tests/a/test_b_<topic>.py; a module at
-the package root, axisopt/b.py, by tests/core/test_b.py or tests/core/test_b_<topic>.py (tests/core holds the tests
-of the root modules); __init__.py modules are left out of the count.  Run as a script to print the share, the
-unmirrored modules and the test file mirroring each module: `python tests/core/test_mirror.py [-v]`.
+Counting rule: a module axisopt/a/b.py is mirrored by tests/a/test_b.py or
+tests/a/test_b_<topic>.py; a module at the package root, axisopt/b.py, by tests/core/test_b.py or
+tests/core/test_b_<topic>.py (tests/core holds the tests of the root modules); __init__.py modules
+are left out of the count.  Run as a script to print the share, the unmirrored modules and the test
+file mirroring each module: `python tests/core/test_mirror.py [-v]`.
 """
 
 from __future__ import annotations

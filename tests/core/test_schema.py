@@ -1,8 +1,8 @@
 """``axisopt schema``: the JSON Schemas written from the readers' key tables (yamlio.Spec).
 
-Every shipped YAML validates against its schema; a misspelt key, a unit of the wrong kind or a value out of
-range fails both the schema and the loader; the schema holds every key the readers declare (it is their
-translation, not a second copy); the command's bad input is one line and exit code 2.
+Every shipped YAML validates against its schema; a misspelt key, a unit of the wrong kind or a value
+out of range fails both the schema and the loader; the schema holds every key the readers declare
+(it is their translation, not a second copy); the command's bad input is one line and exit code 2.
 """
 
 from __future__ import annotations
@@ -208,8 +208,9 @@ def _wrong_unit(kind: str) -> str:
 
 @pytest.mark.parametrize("name", sorted(AXIS_SPEC.keys))
 def test_every_axis_key_agrees(tmp_path, validators, name):
-    """Per declared axis key: a misspelling, and for quantities a wrong unit kind and a sign out of range,
-    are refused by the schema and by load_design alike; for numbers a value above the maximum."""
+    """Per declared axis key: a misspelling, and for quantities a wrong unit kind and a sign out of
+    range, are refused by the schema and by load_design alike; for numbers a value above the
+    maximum."""
     key = AXIS_SPEC.keys[name]
     _both_reject(tmp_path, validators, "design", _set(DESIGN_TREE, ("axis", name + "_x"), "1 mm"))
     if key.type == "quantity":
@@ -248,7 +249,8 @@ def _mappings(tree, path=()):
     ],
 )
 def test_an_unknown_key_anywhere_fails_both(tmp_path, validators, kind, path):
-    """Every mapping of the file refuses a key its table does not declare, in the schema and the loader."""
+    """Every mapping of the file refuses a key its table does not declare, in the schema and the
+    loader."""
     tree = yaml.safe_load(path.read_text())
     seen = 0
     for where in _mappings(tree):
@@ -388,7 +390,8 @@ def _walk(spec: Spec, schema: dict, node: dict, path: str, seen: set) -> int:
 
 @pytest.mark.parametrize("kind", KINDS_OF_FILE)
 def test_the_schema_holds_every_declared_key(kind):
-    """Walk the Spec tree and the schema together: the same keys, the same required ones, everywhere."""
+    """Walk the Spec tree and the schema together: the same keys, the same required ones,
+    everywhere."""
     schema = json_schema(kind)
     assert _walk(spec_of(kind), schema, schema, kind, set()) > 5
 
@@ -420,8 +423,8 @@ def test_the_schema_is_json_and_describes_each_key():
 
 
 def test_schema_ids_are_urns_and_a_wrong_unit_reads_well(validators):
-    """Issue 30 item 6: no example domain as $id; an editor shows the quantity's patternErrorMessage (kind,
-    example, units) in place of the 200-character regular expression."""
+    """Issue 30 item 6: no example domain as $id; an editor shows the quantity's patternErrorMessage
+    (kind, example, units) in place of the 200-character regular expression."""
     for kind in KINDS_OF_FILE:
         assert json_schema(kind)["$id"] == f"urn:axisopt:schema:{kind}"
     data = yaml.safe_load(DESIGN.read_text(encoding="utf-8"))

@@ -75,8 +75,8 @@ def test_reading_a_problem_builds_no_unit_registry():
     import sys
 
     code = (
-        "import sys; from axisopt.problem import load_problem; load_problem('problems/teaching_problem.yaml'); "
-        "print('pint' in sys.modules)"
+        "import sys; from axisopt.problem import load_problem; "
+        "load_problem('problems/teaching_problem.yaml'); print('pint' in sys.modules)"
     )
     root = Path(__file__).resolve().parents[2]
     out = subprocess.run(

@@ -1,5 +1,6 @@
-"""Twin-drive inputs (issue 40): ``axis.twin_drive`` read, written back and evaluated; bad input is a one-line error
-naming the file and the key (exit 2); the twin model's outputs against the single-drive model of one side."""
+"""Twin-drive inputs (issue 40): ``axis.twin_drive`` read, written back and evaluated; bad input is
+a one-line error naming the file and the key (exit 2); the twin model's outputs against the
+single-drive model of one side."""
 
 from __future__ import annotations
 
@@ -109,8 +110,7 @@ def test_round_trip_and_estimate(tmp_path):
     assert load_design(g).axis.twin_drive == tw
     p = model.design_params(d)
     # no inertia or uprights given: the estimate of half the bridge (axis.moving_mass) in its
-    # uprights at the
-    # drives, m/2 L^2/12 + m/2 (L/2)^2 = m L^2 / 6
+    # uprights at the drives, m/2 L^2/12 + m/2 (L/2)^2 = m L^2 / 6
     assert p["bridge_yaw_inertia"] == pytest.approx(450.0 * 1.0**2 / 6.0)
     assert "twin_drive" not in load_design(tmp_path / "d.yaml").assumed
 
@@ -124,9 +124,10 @@ def _pair(tmp_path):
 
 
 def test_twin_outputs_against_one_side(tmp_path):
-    """The governing side is the single-drive model of one side: with the cross carriage at the stroke end
-    (r = 1/2 + s/2L = 0.8) each drive moves m/2 + m_c s/2L and carries r of the process force; the pair costs
-    the second drive's parts more; the gantry's frequencies are the 2-DOF model's."""
+    """The governing side is the single-drive model of one side: with the cross carriage at the
+    stroke end (r = 1/2 + s/2L = 0.8) each drive moves m/2 + m_c s/2L and carries r of the process
+    force; the pair costs the second drive's parts more; the gantry's frequencies are the 2-DOF
+    model's."""
     twin, one, tv, ov = _pair(tmp_path)
     r = 0.5 + 0.6 / 2.0
     p = model.design_params(twin)
@@ -163,7 +164,8 @@ def test_twin_outputs_against_one_side(tmp_path):
 
 
 def test_single_drive_outputs_are_unchanged_by_the_twin_parameters(tmp_path):
-    """The neutral twin parameters leave a single-drive evaluation exactly as without them (a bare dict)."""
+    """The neutral twin parameters leave a single-drive evaluation exactly as without them (a bare
+    dict)."""
     _, one, _, ov = _pair(tmp_path)
     p = model.design_params(one)
     bare = {k: v for k, v in p.items() if k not in model.gantry.TWIN_PARAMS}

@@ -1,7 +1,8 @@
-"""search.counterbalance / search.twin_drive (a problem's options, axisopt.design.choices): each option read as the
-single axis key, a bad one refused in one line naming the file, line, key and the option's index, exit 2; a list
-where it makes no sense (on the axis, in a design, beside the single key, a Pareto objective) refused the same way;
-a good list solves and says which arrangement won, in the text and the JSON."""
+"""search.counterbalance / search.twin_drive (a problem's options, axisopt.design.choices): each
+option read as the single axis key, a bad one refused in one line naming the file, line, key and the
+option's index, exit 2; a list where it makes no sense (on the axis, in a design, beside the single
+key, a Pareto objective) refused the same way; a good list solves and says which arrangement won, in
+the text and the JSON."""
 
 from __future__ import annotations
 
@@ -111,7 +112,7 @@ axis: {stroke: 500 mm, moving_mass: 300 kg, mounting: fixed-supported, orientati
        axial_load: 3000 N, acceleration: 3 m/s^2}
 parts: {screw: HIWIN-G-25x5-b3p175, nut: HIWIN-R25-05K4-FDC, bearing: HIWIN-7205B-DB-H, guide: HIWIN-HG20-ZA}
 search: {counterbalance: [none]}
-"""
+"""  # noqa: E501
     assert main(["evaluate", write_file(tmp_path, "d.yaml", text)]) == 2
     err = one_line_error(capsys)
     assert "search" in err and "unknown key" in err, err
@@ -141,7 +142,8 @@ def test_options_solve_and_name_the_winner(tmp_path, capsys):
         tmp_path,
         "p.yaml",
         _problem(
-            "counterbalance: [none, {kind: counterweight, mass: 250 kg}, {kind: cylinder, force: 2500 N}]"
+            "counterbalance: [none, {kind: counterweight, mass: 250 kg}, {kind: cylinder, force: "
+            "2500 N}]"
         ),
     )
     # one solve (three arrangements, the longest of this file) for both: the JSON to a file, the

@@ -1,6 +1,7 @@
-"""search.drive_types and the drive-type catalogs: bad input refused in one line naming the file and where,
-exit 2 (a pinion with zero teeth, a NaN force constant, a linear motor on a vertical axis without a brake or a
-counterbalance, an unknown type, an objective the drive-type search does not make); a good problem solves."""
+"""search.drive_types and the drive-type catalogs: bad input refused in one line naming the file and
+where, exit 2 (a pinion with zero teeth, a NaN force constant, a linear motor on a vertical axis
+without a brake or a counterbalance, an unknown type, an objective the drive-type search does not
+make); a good problem solves."""
 
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
-"""The motion actually commanded (issue 24, item 4): the speed and acceleration the physics checks read come from
-the duty cycle's moves; a move faster than axis.max_speed, or a motor without an acceleration, is an error naming
-the key."""
+"""The motion actually commanded (issue 24, item 4): the speed and acceleration the physics checks
+read come from the duty cycle's moves; a move faster than axis.max_speed, or a motor without an
+acceleration, is an error naming the key."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
-"""The plausibility table (design/plausible.py) and the one docs/assumptions.md shows are the same table, and a
-value just outside each range is warned about while one just inside is not."""
+"""The plausibility table (design/plausible.py) and the one docs/assumptions.md shows are the same
+table, and a value just outside each range is warned about while one just inside is not."""
 
 from __future__ import annotations
 

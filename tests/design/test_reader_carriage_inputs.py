@@ -1,5 +1,6 @@
-"""Carriage inputs (issue 25): bad geometry and a guide row without its moment ratings are one-line errors naming
-the file and the key (exit 2); the geometry defaults; the carriage's outputs of an evaluation."""
+"""Carriage inputs (issue 25): bad geometry and a guide row without its moment ratings are one-line
+errors naming the file and the key (exit 2); the geometry defaults; the carriage's outputs of an
+evaluation."""
 
 from __future__ import annotations
 
@@ -72,7 +73,8 @@ def test_blocks_must_be_shared_by_the_rails(tmp_path, capsys):
 
 
 def test_guide_row_missing_a_moment_rating_is_a_load_error(tmp_path, capsys):
-    """A user catalog whose guide table lacks a moment column, or leaves a cell empty: one line naming the file."""
+    """A user catalog whose guide table lacks a moment column, or leaves a cell empty: one line
+    naming the file."""
     src = ROOT / "catalogs" / "guides.csv"
     with src.open(encoding="utf-8", newline="") as fh:
         rows = list(csv.reader(fh))
@@ -164,7 +166,8 @@ def test_support_keys_reject_bad_values(tmp_path, capsys, edit, key):
 
 
 def test_bearing_static_safety_overrides_the_vendor_figure(tmp_path, capsys):
-    """The check's need scales with the safety the axis asks; without one, the rating's vendor's (NSK 1/0.7)."""
+    """The check's need scales with the safety the axis asks; without one, the rating's vendor's
+    (NSK 1/0.7)."""
     base = load_design(_file(tmp_path, DESIGN, "a.yaml"))
     asked = load_design(
         _file(

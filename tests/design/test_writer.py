@@ -1,4 +1,5 @@
-"""YAML load(dump(design)) == design, for catalog and inline parts (hypothesis over the axis values)."""
+"""YAML load(dump(design)) == design, for catalog and inline parts (hypothesis over the axis
+values)."""
 
 import dataclasses
 from pathlib import Path
@@ -59,8 +60,9 @@ def test_yaml_round_trip(tmp_path_factory, stroke, mass, speed, load, inline, mo
 
 @pytest.mark.parametrize("inline", [False, True])
 def test_yaml_round_trip_with_a_reduction(tmp_path, inline):
-    """A design with a reduction part writes it (id or inline, vendor units) and leaves out the axis's reduction
-    values (the part sets them; the reader refuses both): load(dump(d)) evaluates the same."""
+    """A design with a reduction part writes it (id or inline, vendor units) and leaves out the
+    axis's reduction values (the part sets them; the reader refuses both): load(dump(d)) evaluates
+    the same."""
     from axisopt.catalog.loading import default_catalog
 
     red = default_catalog().part("reductions", "BK-NPT035-MF-4")

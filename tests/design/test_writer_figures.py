@@ -1,5 +1,5 @@
-"""The design writer's figures read as a person would write them (issue 42 item 3): an angle given in arcsec is
-not written back as 0.000833333333333 deg."""
+"""The design writer's figures read as a person would write them (issue 42 item 3): an angle given
+in arcsec is not written back as 0.000833333333333 deg."""
 
 import dataclasses
 from pathlib import Path

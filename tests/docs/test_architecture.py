@@ -1,6 +1,6 @@
-"""docs/ARCHITECTURE.md against the code: its table of packages names every package of axisopt, in the layer
-contract's order (pyproject.toml [tool.importlinter]), each name exists, and every module file the page names
-(``search/parts.py``, ``explain.py``) is one of the tree's."""
+"""docs/ARCHITECTURE.md against the code: its table of packages names every package of axisopt, in
+the layer contract's order (pyproject.toml [tool.importlinter]), each name exists, and every module
+file the page names (``search/parts.py``, ``explain.py``) is one of the tree's."""
 
 from __future__ import annotations
 
@@ -24,7 +24,8 @@ def _table_rows() -> list[list[str]]:
 
 
 def _named() -> set[str]:
-    """Every ``axisopt.x.y`` the table names (its second and third columns: sub-packages are named there)."""
+    """Every ``axisopt.x.y`` the table names (its second and third columns: sub-packages are named
+    there)."""
     block = PAGE.split("<!-- layers: begin -->")[1].split("<!-- layers: end -->")[0]
     return set(re.findall(r"`(axisopt(?:\.\w+)+)`", block))
 

@@ -1,5 +1,5 @@
-"""Every benchmark script answers ``--help`` with its usage (exit 0), never a traceback; each in its own
-process, as a user runs it."""
+"""Every benchmark script answers ``--help`` with its usage (exit 0), never a traceback; each in its
+own process, as a user runs it."""
 
 from __future__ import annotations
 

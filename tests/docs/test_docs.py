@@ -2,24 +2,28 @@
 
 Every Markdown page (README.md and docs/**/*.md) is read:
 
-1. Every fenced block that starts with ``$ axisopt ...`` is run; each quoted line must appear in the output,
-   in order (a line ``...`` skips output; a line ending in ``...`` matches a line it starts).
+1. Every fenced block that starts with ``$ axisopt ...`` is run; each quoted line must appear in the
+   output, in order (a line ``...`` skips output; a line ending in ``...`` matches a line it
+   starts).
 2. A block after ``<!-- file: PATH -->`` is written to PATH (the page asks the reader to write it).
-3. Every ``axisopt`` command in a ``bash``/``sh`` block is run and must exit 0 (or the ``exit N`` its
-   comment states).
-4. Every ``pycon`` block (``>>>`` prompts) is run by doctest (ELLIPSIS, NORMALIZE_WHITESPACE), the blocks of
-   one page in one namespace, so the output shown is the output compared.
-5. Figures quoted in the prose (deterministic ones: optima, sensitivities, diagnosis results) are compared
-   with the command's output to the precision the page quotes them.
-6. Every ``yaml`` block that is not a file to write (the annotated examples of the file formats) uses only
-   keys the readers accept (checked against the JSON Schema written from their key tables).
+3. Every ``axisopt`` command in a ``bash``/``sh`` block is run and must exit 0 (or the ``exit N``
+   its comment states).
+4. Every ``pycon`` block (``>>>`` prompts) is run by doctest (ELLIPSIS, NORMALIZE_WHITESPACE), the
+   blocks of one page in one namespace, so the output shown is the output compared.
+5. Figures quoted in the prose (deterministic ones: optima, sensitivities, diagnosis results) are
+   compared with the command's output to the precision the page quotes them.
+6. Every ``yaml`` block that is not a file to write (the annotated examples of the file formats)
+   uses only keys the readers accept (checked against the JSON Schema written from their key
+   tables).
 7. What a command prints fits 100 columns, except the commands listed in ``WIDE`` (the exceptions
    docs/evaluate.md names).
-8. Every ``axisopt ...`` command quoted inline in the prose uses options and values the parser accepts.
+8. Every ``axisopt ...`` command quoted inline in the prose uses options and values the parser
+   accepts.
 
-A block preceded by ``<!-- not-run: reason -->`` is not run; ``test_not_run_blocks_are_the_listed_ones``
-keeps the list of such blocks explicit, so nothing is skipped silently. Timings are not deterministic and
-are not compared; each sits beside the bench command that prints it (docs/benchmarks.md).
+A block preceded by ``<!-- not-run: reason -->`` is not run;
+``test_not_run_blocks_are_the_listed_ones`` keeps the list of such blocks explicit, so nothing is
+skipped silently. Timings are not deterministic and are not compared; each sits beside the bench
+command that prints it (docs/benchmarks.md).
 """
 
 from __future__ import annotations
@@ -56,9 +60,8 @@ NOT_RUN = {
 }
 
 # Commands whose output may exceed 100 columns (none now: compare prints designs in blocks that fit,
-# diagnose
-# wraps the calibration lines); kept so an exception is explicit and named here if one is ever
-# needed.
+# diagnose wraps the calibration lines); kept so an exception is explicit and named here if one is
+# ever needed.
 WIDE: dict = {}
 
 
@@ -81,9 +84,11 @@ FENCES = _fences()
 
 
 def _steps():
-    """Every runnable block in page order: (page:line, kind, payload). Kinds: ``quoted`` (a ``$ axisopt``
-    block: command and quoted lines), ``shell`` (an axisopt command of a bash/sh block and its expected
-    exit code), ``pycon`` (a doctest block), ``file`` (a block after ``<!-- file: PATH -->``: written to
+    """Every runnable block in page order: (page:line, kind, payload). Kinds: ``quoted`` (a
+    ``$ axisopt``
+    block: command and quoted lines), ``shell`` (an axisopt command of a bash/sh block and its
+    expected exit code), ``pycon`` (a doctest block), ``file`` (a block after
+    ``<!-- file: PATH -->``: written to
     PATH in the page's directory, as the reader is asked to)."""
     out = []
     for page, line, lang, body, why in FENCES:
@@ -121,7 +126,8 @@ STEPS = _steps()
 
 @contextlib.contextmanager
 def _in_scratch(tmp_path):
-    """Run in an empty directory with ``problems`` linked in, so outputs the docs name land in tmp."""
+    """Run in an empty directory with ``problems`` linked in, so outputs the docs name land in
+    tmp."""
     if not (tmp_path / "problems").exists():
         (tmp_path / "problems").symlink_to(ROOT / "problems")
     old = os.getcwd()
@@ -142,8 +148,8 @@ def _run(cmd: str, tmp_path) -> tuple[int, str]:
 
 
 class _Page:
-    """One scratch directory and one Python namespace per page: the blocks of a page run in order, so a
-    tutorial's later command reads what an earlier one wrote."""
+    """One scratch directory and one Python namespace per page: the blocks of a page run in order,
+    so a tutorial's later command reads what an earlier one wrote."""
 
     def __init__(self, tmp):
         self.dir = tmp
@@ -239,7 +245,10 @@ def _close(readme_value: str, printed: str) -> bool:
     return round(float(printed), decimals) == float(readme_value)
 
 
-XJTU_UP = "axisopt diagnose problems/data/xjtu/xjtu_up_friction.csv --design problems/data/xjtu/xjtu_rig.yaml"
+XJTU_UP = (
+    "axisopt diagnose problems/data/xjtu/xjtu_up_friction.csv --design "
+    "problems/data/xjtu/xjtu_rig.yaml"
+)
 # (page, command, regex on the page's prose, regex on the output): each group pair is one figure
 FIGURES = [
     (
@@ -283,7 +292,8 @@ FIGURES = [
         "docs/diagnose.md",
         XJTU_UP,
         r"held-out RMSE ([\d.]+) -> ([\d.]+) N.m over held-out cycles \(gain (\d+) %\)",
-        r"(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain \d+ %\); ([\d.]+) -> ([\d.]+) N.m at the screw",
+        r"(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain \d+ %\); ([\d.]+) -> ([\d.]+) N.m at "
+        r"the screw",
     ),
     (
         "docs/diagnose.md",
@@ -303,15 +313,17 @@ FIGURES = [
         "docs/diagnose.md",
         XJTU_UP.replace("_up_", "_down_"),
         r"The 'down' screw gives ([\d.]+) % per cycle \(gain (\d+) %\)",
-        r"preload_loss_rate = ([\d.]+) ±(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain (\d+) %\)",
+        r"preload_loss_rate = ([\d.]+) ±(?s:.*)held-out RMSE \S+: [\d.]+ -> [\d.]+ N \(gain (\d+) "
+        r"%\)",
     ),
 ]
 
 
 @pytest.fixture(scope="module")
 def figure_output(tmp_path_factory):
-    """What a figure's command prints, run once a module in a scratch directory of its own: several figures
-    (and the noise floor) quote the same diagnosis, a deterministic command of shipped inputs."""
+    """What a figure's command prints, run once a module in a scratch directory of its own: several
+    figures (and the noise floor) quote the same diagnosis, a deterministic command of shipped
+    inputs."""
     made: dict[str, str] = {}
 
     def get(cmd: str) -> str:
@@ -346,8 +358,8 @@ def test_noise_floor_quoted(figure_output):
 
 
 def test_test_files_have_unique_basenames():
-    """pytest's default import mode keys test modules by basename: two tests/*/test_x.py break collection
-    (it did once, in CI only, where no __pycache__ hid it)."""
+    """pytest's default import mode keys test modules by basename: two tests/*/test_x.py break
+    collection (it did once, in CI only, where no __pycache__ hid it)."""
     root = Path(__file__).resolve().parents[1]
     # pytest keys conftest modules by path: one per folder is fine
     names = [p.name for p in root.rglob("*.py") if p.name not in ("__init__.py", "conftest.py")]
@@ -355,8 +367,8 @@ def test_test_files_have_unique_basenames():
 
 
 def _yaml_examples():
-    """(page:line, kind, parsed) of every ``yaml`` block that is not a file the page has the reader write:
-    the annotated examples of the file formats. ``...`` stands for a part left out."""
+    """(page:line, kind, parsed) of every ``yaml`` block that is not a file the page has the
+    reader write: the annotated examples of the file formats. ``...`` stands for a part left out."""
     import yaml
 
     out = []
@@ -376,7 +388,8 @@ def _yaml_examples():
 
 
 def _unknown_keys(value, schema, defs, path="") -> list[str]:
-    """Keys of ``value`` the JSON Schema (written from the readers' key tables) does not know, recursively."""
+    """Keys of ``value`` the JSON Schema (written from the readers' key tables) does not know,
+    recursively."""
     while "$ref" in schema:
         schema = {**defs[schema.pop("$ref").rsplit("/", 1)[1]], **schema}
     options = schema.get("anyOf") or schema.get("oneOf")
@@ -419,8 +432,8 @@ YAML_EXAMPLES = _yaml_examples()
 
 @pytest.mark.parametrize("where, kind, doc", YAML_EXAMPLES, ids=[w for w, _, _ in YAML_EXAMPLES])
 def test_yaml_examples_use_known_keys(where, kind, doc):
-    """Every key in the pages' annotated YAML examples is one the reader accepts (the schema is written from
-    the readers' key tables), so an example cannot keep a renamed or removed key."""
+    """Every key in the pages' annotated YAML examples is one the reader accepts (the schema is
+    written from the readers' key tables), so an example cannot keep a renamed or removed key."""
     from axisopt.schema import json_schema
 
     schema = json_schema(kind)
@@ -462,8 +475,9 @@ INLINE = re.compile(r"(?<!`)`(axisopt [a-z][^`]*)`(?!`)")
 
 
 def _inline_commands():
-    """(page, command) of every ``axisopt ...`` command quoted inline in the prose (not in a fenced block),
-    and of the not-run blocks' axisopt commands (shown, not run: they must at least parse)."""
+    """(page, command) of every ``axisopt ...`` command quoted inline in the prose (not in a fenced
+    block), and of the not-run blocks' axisopt commands (shown, not run: they must at least
+    parse)."""
     inline = [
         (page, m.group(1))
         for page, text in TEXT.items()
@@ -480,9 +494,9 @@ def _inline_commands():
 
 
 def _inline_problems(cmd: str) -> list[str]:
-    """What is wrong with an inline command: an option its subcommand does not have, or a value the parser
-    refuses. Placeholders (``FILE``, ``KIND``, ``...``) and omitted required arguments are the prose's
-    shorthand; ``a|b`` stands for each alternative."""
+    """What is wrong with an inline command: an option its subcommand does not have, or a value the
+    parser refuses. Placeholders (``FILE``, ``KIND``, ``...``) and omitted required arguments are
+    the prose's shorthand; ``a|b`` stands for each alternative."""
     import argparse
     import itertools
 
@@ -527,8 +541,8 @@ def _inline_problems(cmd: str) -> list[str]:
     "page, cmd", _inline_commands(), ids=[f"{p}-{c[:40]}" for p, c in _inline_commands()]
 )
 def test_inline_commands_parse(page, cmd):
-    """A command quoted in the prose uses options and values the parser accepts (so a renamed flag or a
-    removed choice cannot stay in the text)."""
+    """A command quoted in the prose uses options and values the parser accepts (so a renamed flag
+    or a removed choice cannot stay in the text)."""
     assert not _inline_problems(cmd), f"{page}: `{cmd}`: {_inline_problems(cmd)}"
 
 

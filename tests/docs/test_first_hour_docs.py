@@ -1,6 +1,7 @@
-"""What a new user read and found untrue or missing (issue 57): the tutorial names every machine template, the
-templates of machines that do not turn quote no turning rule of thumb, study.md's pointer to "Output paths" names
-the page that has it, and the README says what the test suite takes and needs."""
+"""What a new user read and found untrue or missing (issue 57): the tutorial names every machine
+template, the templates of machines that do not turn quote no turning rule of thumb, study.md's
+pointer to "Output paths" names the page that has it, and the README says what the test suite takes
+and needs."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""The generated reference pages equal what the code's tables give, and the site builds without a warning."""
+"""The generated reference pages equal what the code's tables give, and the site builds without a
+warning."""
 
 from __future__ import annotations
 

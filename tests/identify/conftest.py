@@ -7,5 +7,6 @@ from axisopt.identify import plant_from_design
 
 @pytest.fixture(scope="module")
 def plant():
-    """The shipped table_x axis (problems/data/table_x.yaml) as the identification sees it, built once a module."""
+    """The shipped table_x axis (problems/data/table_x.yaml) as the identification sees it, built
+    once a module."""
     return plant_from_design(load_design(DESIGN))

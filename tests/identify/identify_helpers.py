@@ -1,6 +1,7 @@
-"""Helpers of the identify tests: the shipped table_x axis, measured tables written from a law or a simulated
-data set, and time records simulated by :mod:`axisopt.identify.records.synth` (an estimation run and a validation
-run, seeds ``seed`` and ``seed + 500``).  The module-scoped ``plant`` fixture is in conftest.py."""
+"""Helpers of the identify tests: the shipped table_x axis, measured tables written from a law or a
+simulated data set, and time records simulated by :mod:`axisopt.identify.records.synth` (an
+estimation run and a validation run, seeds ``seed`` and ``seed + 500``).  The module-scoped
+``plant`` fixture is in conftest.py."""
 
 from __future__ import annotations
 
@@ -20,7 +21,8 @@ SPEEDS = np.geomspace(0.002, 0.4, 14)  # [m/s]
 
 
 def assert_timesynth_axis(plant):
-    """The plant, after checking that it is the axis the time records assume (lead 10 mm, stroke 0.8 m)."""
+    """The plant, after checking that it is the axis the time records assume (lead 10 mm, stroke 0.8
+    m)."""
     assert plant.lead == LEAD and plant.stroke == pytest.approx(0.8)
     return plant
 
@@ -68,8 +70,8 @@ def coulomb(plant):
 def friction_table(
     path, law, *, speeds=SPEEDS, both=True, noise=5.0, seed=1, rep=2, magnitudes=False
 ):
-    """A friction table from ``law(v)`` [N] at ``speeds`` [m/s] (both directions unless ``both=False``),
-    ``rep`` readings each, Gaussian noise of ``noise`` [N]."""
+    """A friction table from ``law(v)`` [N] at ``speeds`` [m/s] (both directions unless
+    ``both=False``), ``rep`` readings each, Gaussian noise of ``noise`` [N]."""
     rng = np.random.default_rng(seed)
     v = np.repeat(np.r_[speeds, -speeds] if both else speeds, rep)
     f = law(v) + noise * rng.standard_normal(len(v))
@@ -83,7 +85,8 @@ def friction_table(
 # --------------------------------------------------------------------------------------------------
 # time records
 def baseline_truth(rng, **kw):
-    """A random baseline axis (mass, viscous, Coulomb, offset of random sign) drawn from ``rng``, plus ``kw``."""
+    """A random baseline axis (mass, viscous, Coulomb, offset of random sign) drawn from ``rng``,
+    plus ``kw``."""
     sign = rng.choice([-1.0, 1.0])
     return AxisTruth(
         mass=rng.uniform(300, 900),
@@ -99,9 +102,9 @@ def truth_for(seed, **kw):
 
 
 def records(tmp_path, truth, seed=0, *, loop=None, est_s=12.0, val_s=8.0, **csv):
-    """An estimation record (``est_s`` [s], seed ``seed``) and a validation record (``val_s`` [s], seed
-    ``seed + 500``) of ``truth`` under ``loop`` (timesynth's default loop when None); ``csv`` goes to
-    ``Record.write_csv``."""
+    """An estimation record (``est_s`` [s], seed ``seed``) and a validation record (``val_s`` [s],
+    seed ``seed + 500``) of ``truth`` under ``loop`` (timesynth's default loop when None); ``csv``
+    goes to ``Record.write_csv``."""
     est, val = tmp_path / f"est{seed}.csv", tmp_path / f"val{seed}.csv"
     simulate_axis(truth, loop, duration=est_s, seed=seed).write_csv(est, **csv)
     simulate_axis(truth, loop, duration=val_s, seed=seed + 500).write_csv(val, **csv)

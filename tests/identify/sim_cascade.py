@@ -1,18 +1,18 @@
-"""A feed axis simulated by the tests' own physics, written apart from axisopt (neither the identification's
-columns nor axisopt.identify.records.synth): a P-PI cascade (position P, velocity PI on a filtered backward
-difference of the quantised position), a generalised Stribeck curve, friction growing with the nut's axial
-force and the guides' normal load, viscous and Coulomb levels in temperature, a cogging force periodic in the
-motor angle, and coloured (AR(1)) noise on the recorded force.  Records are written as the CSV the
-diagnosis reads.
+"""A feed axis simulated by the tests' own physics, written apart from axisopt (neither the
+identification's columns nor axisopt.identify.records.synth): a P-PI cascade (position P, velocity
+PI on a filtered backward difference of the quantised position), a generalised Stribeck curve,
+friction growing with the nut's axial force and the guides' normal load, viscous and Coulomb levels
+in temperature, a cogging force periodic in the motor angle, and coloured (AR(1)) noise on the
+recorded force.  Records are written as the CSV the diagnosis reads.
 
 The axis (table side, SI): m a = u - F_fric - F_load(t) with
 
     F_fric = sgn(v) [Fc(T) + (Fs - Fc) exp(-(|v|/vs)^delta) + (1 - eta) |u| + mu N] + Fv(T) v
     Fv(T) = Fv exp(-beta (T - T0)),  Fc(T) = Fc + dfc_dT (T - T0)
 
-where (1 - eta) |u| is the nut's loss on the drive force u it converts (screw efficiency eta), F_load a
-piecewise-constant process force and N a piecewise-constant extra normal load.  Sticking: at rest the table
-stays while |u - F_load| is below the breakaway force.
+where (1 - eta) |u| is the nut's loss on the drive force u it converts (screw efficiency eta),
+F_load a piecewise-constant process force and N a piecewise-constant extra normal load.  Sticking:
+at rest the table stays while |u - F_load| is below the breakaway force.
 """
 
 from __future__ import annotations
@@ -63,8 +63,8 @@ class Loop:
 
 
 def reference(rng, duration, fs, stroke, vmax=0.3):
-    """Trapezoidal moves of random speed (log-uniform 3 mm/s..vmax) and acceleration, at most 1.2 s each,
-    with dwells of 0.15-0.4 s, jerk limited."""
+    """Trapezoidal moves of random speed (log-uniform 3 mm/s..vmax) and acceleration, at most 1.2 s
+    each, with dwells of 0.15-0.4 s, jerk limited."""
     n = int(duration * fs)
     r = np.empty(n)
     x, k = 0.5 * stroke, 0
@@ -110,8 +110,8 @@ def reference(rng, duration, fs, stroke, vmax=0.3):
 
 
 def _steps(rng, n, fs, amp, lo_frac=-1.0):
-    """Levels held 0.5-2 s, uniform in amp*[lo_frac, 1], changing by linear ramps of 0.3 s (a process force
-    builds up over a tool's entry, a payload is set down)."""
+    """Levels held 0.5-2 s, uniform in amp*[lo_frac, 1], changing by linear ramps of 0.3 s (a
+    process force builds up over a tool's entry, a payload is set down)."""
     out = np.empty(n)
     k = 0
     while k < n:

@@ -1,6 +1,6 @@
-"""Friction tables written by the tests' own law (apart from axisopt's measurement model): a signed friction
-force at constant speeds both ways, with optional axial load on the nut, payload on the guides and
-temperature, jitter of the logged speeds and positions, and Gaussian noise."""
+"""Friction tables written by the tests' own law (apart from axisopt's measurement model): a signed
+friction force at constant speeds both ways, with optional axial load on the nut, payload on the
+guides and temperature, jitter of the logged speeds and positions, and Gaussian noise."""
 
 from __future__ import annotations
 
@@ -35,9 +35,10 @@ def friction_rows(
     pos_jitter=0.0,
     positions=(0.2, 0.5),
 ):
-    """Rows (dict of columns, SI) of a friction test: every speed both ways at every axial load, normal load,
-    temperature and position, ``rep`` readings each.  The logged speed and position carry a relative
-    ``speed_jitter`` and an absolute ``pos_jitter`` (uniform); the friction follows the true values."""
+    """Rows (dict of columns, SI) of a friction test: every speed both ways at every axial load,
+    normal load, temperature and position, ``rep`` readings each.  The logged speed and position
+    carry a relative ``speed_jitter`` and an absolute ``pos_jitter`` (uniform); the friction follows
+    the true values."""
     rows = {
         k: []
         for k in (

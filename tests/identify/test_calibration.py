@@ -1,5 +1,5 @@
-"""Calibration files (:mod:`axisopt.identify.calibration`): the round trip from diagnose to evaluate, what
-evaluate cannot represent, validation of a calibration file."""
+"""Calibration files (:mod:`axisopt.identify.calibration`): the round trip from diagnose to
+evaluate, what evaluate cannot represent, validation of a calibration file."""
 
 import json
 
@@ -84,8 +84,8 @@ def test_bad_calibration_file_is_an_input_error(tmp_path):
     ],
 )
 def test_calibration_file_is_validated(tmp_path, capsys, old, new, words):
-    """A calibration applies only to its own design, with known keys and kinds (each bad case used to be
-    applied silently or end in a KeyError traceback)."""
+    """A calibration applies only to its own design, with known keys and kinds (each bad case used
+    to be applied silently or end in a KeyError traceback)."""
     design = load_design(DESIGN)
     text = GOOD_CAL if old is None else GOOD_CAL.replace(old, new)
     p = write(tmp_path, text.format(design=design.name), "c.yaml")
@@ -107,8 +107,8 @@ def test_calibration_file_is_validated(tmp_path, capsys, old, new, words):
     ],
 )
 def test_calibration_values_must_be_physical(tmp_path, capsys, old, new):
-    """A zero or negative modulus was a ZeroDivisionError / math domain traceback; a negative stiffness
-    was applied."""
+    """A zero or negative modulus was a ZeroDivisionError / math domain traceback; a negative
+    stiffness was applied."""
     design = load_design(DESIGN)
     p = write(tmp_path, GOOD_CAL.replace(old, new).format(design=design.name), "c.yaml")
     rc = main(["evaluate", str(DESIGN), "--calibration", str(p)])
@@ -117,8 +117,8 @@ def test_calibration_values_must_be_physical(tmp_path, capsys, old, new):
 
 
 def test_verdict_numbers_are_the_saved_calibration(plant, tmp_path, capsys):
-    """Two effects accepted in two rounds: the second round refits the first effect's value, and what the
-    verdict and JSON print is what --save-calibration writes."""
+    """Two effects accepted in two rounds: the second round refits the first effect's value, and
+    what the verdict and JSON print is what --save-calibration writes."""
     ds = simulate(
         plant,
         "friction",

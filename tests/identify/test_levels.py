@@ -1,5 +1,5 @@
-"""Levels of a factor logged with jitter (identify.levels): readings meant at one level become that level's
-mean, distinct levels stay apart; the cases are built here with known levels and jitter."""
+"""Levels of a factor logged with jitter (identify.levels): readings meant at one level become that
+level's mean, distinct levels stay apart; the cases are built here with known levels and jitter."""
 
 from __future__ import annotations
 

@@ -1,7 +1,8 @@
-"""Lines in motor orders: a cogging force periodic in the motor angle, through a 2:1 reduction (a period of
-1.25 mm at the table, under a quarter of the 10 mm lead), simulated by the tests' own cascade
-(``sim_cascade``); the residual signature must locate it and state it per mm, per screw turn and per motor
-turn with the design's reduction.  A reduction of 0 in the design is a one-line error."""
+"""Lines in motor orders: a cogging force periodic in the motor angle, through a 2:1 reduction (a
+period of 1.25 mm at the table, under a quarter of the 10 mm lead), simulated by the tests' own
+cascade (``sim_cascade``); the residual signature must locate it and state it per mm, per screw turn
+and per motor turn with the design's reduction.  A reduction of 0 in the design is a one-line
+error."""
 
 import subprocess
 import sys

@@ -1,8 +1,8 @@
-"""Runs that differ in payload: a ``payload [kg]`` column is a known mass (its inertial force leaves the
-effort), so an estimation run and a validation run with 350 kg more share one model.  Records come from the
-tests' own cascade simulator (``sim_cascade``: a P-PI loop, coloured force noise), written apart from the
-fitted model; the simulated axis carries its own mass plus the payload.  A payload that changes within a run
-and a design whose reduction is 0 are one-line errors (exit 2)."""
+"""Runs that differ in payload: a ``payload [kg]`` column is a known mass (its inertial force leaves
+the effort), so an estimation run and a validation run with 350 kg more share one model.  Records
+come from the tests' own cascade simulator (``sim_cascade``: a P-PI loop, coloured force noise),
+written apart from the fitted model; the simulated axis carries its own mass plus the payload.  A
+payload that changes within a run and a design whose reduction is 0 are one-line errors (exit 2)."""
 
 import numpy as np
 import pytest
@@ -84,8 +84,8 @@ def test_a_reduction_of_zero_is_a_one_line_error(tmp_path, capsys):
 
 
 def test_a_long_record_is_read_in_windows_that_start_at_rest(tmp_path, plant):
-    """The windows of a long record (thresholds lowered here): each starts where the axis rests, the times
-    stay the record's, and the filters see each window on its own."""
+    """The windows of a long record (thresholds lowered here): each starts where the axis rests, the
+    times stay the record's, and the filters see each window on its own."""
     from axisopt.identify.records.regression import make_rows, processing_for
     from axisopt.identify.records.signal import windowed
 

@@ -1,6 +1,6 @@
-"""The forward-selection rule (:mod:`axisopt.identify.selection`): the first criterion failed is the reason, in
-each pipeline's order; implausible values are added when they are not the reason; pairs must beat the better
-member alone; the pair pools of tables and time records."""
+"""The forward-selection rule (:mod:`axisopt.identify.selection`): the first criterion failed is the
+reason, in each pipeline's order; implausible values are added when they are not the reason; pairs
+must beat the better member alone; the pair pools of tables and time records."""
 
 from types import SimpleNamespace
 

@@ -1,4 +1,5 @@
-"""Random small machines for the machine tests (small catalogs: a few screws and guides, no drive search)."""
+"""Random small machines for the machine tests (small catalogs: a few screws and guides, no drive
+search)."""
 
 import numpy as np
 
@@ -39,7 +40,8 @@ def _axis(
     if frame:
         kf = rng.uniform(500, 3000, 3)
         lines.append(
-            f"    frame_stiffness: {{x: {kf[0]:.0f} N/um, y: {kf[1]:.0f} N/um, z: {kf[2]:.0f} N/um}}"
+            f"    frame_stiffness: {{x: {kf[0]:.0f} N/um, y: {kf[1]:.0f} N/um, z: {kf[2]:.0f} "
+            "N/um}"
         )
     else:
         lines.append("    frame_stiffness: estimate")
@@ -81,8 +83,9 @@ def _axis(
 
 
 def random_machine(seed: int) -> str:
-    """The YAML text of a random machine: one chain of two or three axes, sometimes a second chain; a vertical
-    counterweighted axis (at the top, or carrying another: the non-monotone case), sometimes a twin-drive base."""
+    """The YAML text of a random machine: one chain of two or three axes, sometimes a second chain;
+    a vertical counterweighted axis (at the top, or carrying another: the non-monotone case),
+    sometimes a twin-drive base."""
     rng = np.random.default_rng(seed)
     depth = int(rng.choice([2, 2, 2, 3]))
     objective = str(rng.choice(["cost", "tool_stiffness", "frequency", "moving_mass"]))
@@ -118,8 +121,9 @@ def random_machine(seed: int) -> str:
 
 
 def check_default_equals_exhaustive(seed: int, tmp_path) -> None:
-    """The default machine search against every combination of every axis on random machine ``seed``: the same
-    status and optimum, both feasible, and never worse than the sequential sizing where that one is feasible."""
+    """The default machine search against every combination of every axis on random machine
+    ``seed``: the same status and optimum, both feasible, and never worse than the sequential sizing
+    where that one is feasible."""
     import pytest
 
     from axisopt.machine import load_machine, solve_machine

@@ -7,10 +7,8 @@ from axisopt.machine.chain import chain_modes, dunkerley_frequency, lowest_frequ
 
 
 # Two equal masses on two equal springs (frame - k - m - k - m): omega^2 = (3 -/+ sqrt 5)/2 k/m, the
-# classic
-# two-degree-of-freedom example (S. S. Rao, Mechanical Vibrations, ch. 5; W. T. Thomson, Theory of
-# Vibration
-# with Applications, ch. 5): 0.618 and 1.618 sqrt(k/m).
+# classic two-degree-of-freedom example (S. S. Rao, Mechanical Vibrations, ch. 5; W. T. Thomson,
+# Theory of Vibration with Applications, ch. 5): 0.618 and 1.618 sqrt(k/m).
 @pytest.mark.published
 def test_two_dof_equal_chain_matches_closed_form():
     m, k = 400.0, 100e6
@@ -21,8 +19,8 @@ def test_two_dof_equal_chain_matches_closed_form():
 
 
 # A uniform fixed-free chain of n equal masses and springs: omega_r = 2 sqrt(k/m) sin((2r - 1) pi /
-# (2 (2n + 1))),
-# r = 1..n (e.g. L. Meirovitch, Fundamentals of Vibrations, the lumped string / rod; Rao, ch. 6).
+# (2 (2n + 1))), r = 1..n (e.g. L. Meirovitch, Fundamentals of Vibrations, the lumped string / rod;
+# Rao, ch. 6).
 @pytest.mark.published
 @pytest.mark.parametrize("n", [2, 3, 5])
 def test_uniform_chain_matches_closed_form(n):
@@ -34,8 +32,7 @@ def test_uniform_chain_matches_closed_form(n):
 
 
 # Two unequal masses: the 2x2 characteristic equation m1 m2 w^4 - (m1 (k2) + m2 (k1 + k2)) w^2 + k1
-# k2 = 0,
-# solved here by the quadratic formula (written apart from the code's eigenvalue solve).
+# k2 = 0, solved here by the quadratic formula (written apart from the code's eigenvalue solve).
 def test_two_dof_unequal_chain_matches_characteristic_equation():
     m1, m2, k1, k2 = 900.0, 300.0, 250e6, 120e6
     a, b, c = m1 * m2, -(m1 * k2 + m2 * (k1 + k2)), k1 * k2
@@ -67,7 +64,8 @@ def test_softest_spring_carries_most_strain_energy():
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4])
 def test_lowest_frequency_closed_form_equals_the_eigenvalue_solve(n):
-    """Chains of up to three masses take the 3x3 closed form (Smith 1961), longer ones LAPACK: the same."""
+    """Chains of up to three masses take the 3x3 closed form (Smith 1961), longer ones LAPACK: the
+    same."""
     rng = np.random.default_rng(n)
     m = rng.uniform(20, 5000, (500, n))
     k = rng.uniform(1e6, 1e10, (500, n))

@@ -1,5 +1,5 @@
-"""The joint machine search against every combination of every axis (small catalogs), and never worse than
-the sequential sizing on the shipped machines."""
+"""The joint machine search against every combination of every axis (small catalogs), and never
+worse than the sequential sizing on the shipped machines."""
 
 import pytest
 from machinegen import check_default_equals_exhaustive, random_machine
@@ -8,9 +8,10 @@ from axisopt.machine import load_machine, solve_machine
 from axisopt.machine.templates import SHIPPED, TEMPLATES
 
 SEEDS = range(100)
-# About 2.6 s of CPU a seed (0.4 to 5 s): the default run solves the first 25 (17 with a counterweight, 8
-# with the non-monotone carrier, 8 with a twin drive, 5 with two chains), the other 75 are marked slow
-# (`python -m pytest -m slow`, .ci/run's second step): every seed still runs in CI.
+# About 2.6 s of CPU a seed (0.4 to 5 s): the default run solves the first 25 (17 with a
+# counterweight, 8 with the non-monotone carrier, 8 with a twin drive, 5 with two chains), the other
+# 75 are marked slow (`python -m pytest -m slow`, .ci/run's second step): every seed still runs in
+# CI.
 FAST_SEEDS = 25
 
 

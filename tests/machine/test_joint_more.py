@@ -1,5 +1,5 @@
-"""The second half of the 100 random machines, default against every combination of every axis (a file of its
-own, so that pytest-xdist runs the two halves on two workers)."""
+"""The second half of the 100 random machines, default against every combination of every axis (a
+file of its own, so that pytest-xdist runs the two halves on two workers)."""
 
 import pytest
 from machinegen import check_default_equals_exhaustive

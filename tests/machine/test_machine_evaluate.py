@@ -1,6 +1,6 @@
-"""axisopt machine evaluate: a machine of chosen parts.  Pinned to the joint optimum's parts it gives the joint
-optimum's figures (one model serves solve and evaluate); a machine limit it misses is shown, exit 1; an axis
-left with a choice is a one-line error, exit 2."""
+"""axisopt machine evaluate: a machine of chosen parts.  Pinned to the joint optimum's parts it
+gives the joint optimum's figures (one model serves solve and evaluate); a machine limit it misses
+is shown, exit 1; an axis left with a choice is a one-line error, exit 2."""
 
 import json
 import re
@@ -97,9 +97,10 @@ def _with_preload(text: str, axis: str, value: str) -> str:
 
 
 def test_the_machine_file_sets_each_nut_preload(machine, tmp_path):
-    """An axis's nut_preload is the preload its nut is evaluated at: the optimum's own preload gives the
-    optimum's figures; the nut's least preload gives that axis the axis model's stiffness at that preload
-    (evaluated on the axis's own Design), and a machine stiffer than it in no direction."""
+    """An axis's nut_preload is the preload its nut is evaluated at: the optimum's own preload gives
+    the optimum's figures; the nut's least preload gives that axis the axis model's stiffness at
+    that preload (evaluated on the axis's own Design), and a machine stiffer than it in no
+    direction."""
     from dataclasses import replace
 
     from axisopt.model import evaluate

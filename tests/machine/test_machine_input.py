@@ -66,9 +66,9 @@ def test_shipped_machine_loads():
 
 
 def test_machine_axis_listing_drive_types_is_refused(tmp_path, capsys):
-    """A machine sizes its axes as screw drives: an axis problem listing rack and pinion or linear motors
-    is a one-line error naming the key (not a screw sized without a word), exit 2; listing the screw alone
-    is fine."""
+    """A machine sizes its axes as screw drives: an axis problem listing rack and pinion or linear
+    motors is a one-line error naming the key (not a screw sized without a word), exit 2; listing
+    the screw alone is fine."""
     with open(GOOD) as f:
         text = f.read()
     first = text.index("      catalog:")

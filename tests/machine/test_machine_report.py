@@ -1,5 +1,6 @@
-"""The machine's HTML report: the stiffness chain at the tool with every link (shares that add up to the tool's
-compliance), the per-axis designs, the frequencies, the sequential sizing; the figure checked by what it draws."""
+"""The machine's HTML report: the stiffness chain at the tool with every link (shares that add up to
+the tool's compliance), the per-axis designs, the frequencies, the sequential sizing; the figure
+checked by what it draws."""
 
 import pytest
 from machinegen import random_machine

@@ -1,6 +1,7 @@
-"""Machine studies: sweeps over a machine file, one joint solve per case, run by the axis study's runner.  The
-records are the same whatever ran them (one process, two local workers, a Dask cluster of one or two workers
-fed one batch at a time), a resumed run solves only the missing cases, the table reads the records only."""
+"""Machine studies: sweeps over a machine file, one joint solve per case, run by the axis study's
+runner.  The records are the same whatever ran them (one process, two local workers, a Dask cluster
+of one or two workers fed one batch at a time), a resumed run solves only the missing cases, the
+table reads the records only."""
 
 import json
 

@@ -1,5 +1,5 @@
-"""The machine templates (machine.templates): each equals its shipped machine file; the shipped VMC machine
-solves to its JSON."""
+"""The machine templates (machine.templates): each equals its shipped machine file; the shipped VMC
+machine solves to its JSON."""
 
 import json
 

@@ -1,7 +1,8 @@
-"""The stiffness at the tool against the published closed forms, on the catalog's own rows read here apart from
-the code: springs in series add their compliances (THK General Catalog, "Rigidity of the feed screw system",
-formula (6): 1/K = 1/K_S + 1/K_N + 1/K_B + 1/K_H; the seed paper's eq. (6), 1/k_bs = 1/k_s + 1/k_n), and the
-blocks of a carriage carry a load across the rails in parallel (their rigidities add)."""
+"""The stiffness at the tool against the published closed forms, on the catalog's own rows read here
+apart from the code: springs in series add their compliances (THK General Catalog, "Rigidity of the
+feed screw system", formula (6): 1/K = 1/K_S + 1/K_N + 1/K_B + 1/K_H; the seed paper's eq. (6),
+1/k_bs = 1/k_s + 1/k_n), and the blocks of a carriage carry a load across the rails in parallel
+(their rigidities add)."""
 
 import csv
 
@@ -36,7 +37,8 @@ MACHINE = (
 
 
 def _rigidity(guide: str) -> tuple:
-    """(normal, tangential) rigidity of one block [N/um], read from catalogs/guides.csv (HIWIN H-LG rows)."""
+    """(normal, tangential) rigidity of one block [N/um], read from catalogs/guides.csv (HIWIN H-LG
+    rows)."""
     with open("catalogs/guides.csv", newline="") as f:
         row = next(r for r in csv.DictReader(f) if r["id"] == guide)
     return float(row["normal_rigidity [N/um]"]), float(row["tangential_rigidity [N/um]"])
@@ -56,8 +58,7 @@ def test_tool_stiffness_is_the_series_of_every_link_with_blocks_in_parallel(tmp_
     blocks = 4  # the axis's default carriage: four blocks on two rails
     kfy = {"x": 900.0, "y": 1100.0, "z": 1300.0}
     # z: across both axes' rails (their blocks' normal rigidity), the bed under Y given, the frame
-    # under X the
-    # stated estimate (as stiff as X's link: its compliance doubled)
+    # under X the stated estimate (as stiff as X's link: its compliance doubled)
     kz = 1.0 / (1 / (blocks * ny) + 1 / kfy["z"] + 2 / (blocks * nx))
     assert md.k_tool[2] * 1e-6 == pytest.approx(kz, rel=1e-9)
     # x: X's drive chain along its travel and Y's blocks across it (tangential)

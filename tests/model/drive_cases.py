@@ -1,6 +1,7 @@
-"""The drive parameters the rack-and-pinion and linear-motor model tests share (tests/model/test_rackdrive.py,
-tests/model/test_lmdrive.py): a 2 m cycle against a 750 N process force, a twin-pinion rack axis, a two-forcer
-linear-motor axis and a guide pair (vendor-like values in SI)."""
+"""The drive parameters the rack-and-pinion and linear-motor model tests share
+(tests/model/test_rackdrive.py, tests/model/test_lmdrive.py): a 2 m cycle against a 750 N process
+force, a twin-pinion rack axis, a two-forcer linear-motor axis and a guide pair (vendor-like values
+in SI)."""
 
 from __future__ import annotations
 

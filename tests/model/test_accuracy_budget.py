@@ -1,6 +1,7 @@
-"""The positioning-error budget of an evaluated design (model.accuracy, issue 43): its rows against the grade
-tables (THK A-678 Table 1) and the model's own outputs, the total as their sum, and the direction the search
-relies on (the total does not rise with the nut preload, with the heat balance on or off)."""
+"""The positioning-error budget of an evaluated design (model.accuracy, issue 43): its rows against
+the grade tables (THK A-678 Table 1) and the model's own outputs, the total as their sum, and the
+direction the search relies on (the total does not rise with the nut preload, with the heat balance
+on or off)."""
 
 from __future__ import annotations
 
@@ -73,8 +74,9 @@ def test_elastic_row_is_the_softest_point_for_every_mounting(mounting):
 
 @pytest.mark.parametrize("heat", [False, True])
 def test_total_does_not_rise_with_the_preload(heat):
-    """model.limits declares positioning_error nonincreasing in the preload: the thermal row is taken at the
-    nut's highest preload (the heat balance) or the stated rise, the deflection falls."""
+    """model.limits declares positioning_error nonincreasing in the preload: the thermal row is
+    taken at the nut's highest preload (the heat balance) or the stated rise, the deflection
+    falls."""
     cycle = (
         motion.Segment("move", distance=0.3, speed=0.33, acceleration=2.0),
         motion.Segment("move", distance=-0.3, speed=0.33, acceleration=2.0),

@@ -1,5 +1,6 @@
-"""chain_response: the outputs the coupling's stiffness changes, as axis_response gives them (issue 52: the
-infeasibility explanation evaluates these once per coupling stiffness without the rest of the model)."""
+"""chain_response: the outputs the coupling's stiffness changes, as axis_response gives them
+(issue 52: the infeasibility explanation evaluates these once per coupling stiffness without the
+rest of the model)."""
 
 from pathlib import Path
 

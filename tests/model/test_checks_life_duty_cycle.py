@@ -1,9 +1,11 @@
-"""The nut life over a duty cycle, through the whole model, against THK's vertical conveyance example.
+"""The nut life over a duty cycle, through the whole model, against THK's vertical conveyance
+example.
 
-THK General Catalog, "Examples of Selecting a Ball Screw", vertical conveyance system (A-736 to A-742):
-m1 + m2 = 50 kg lifted vertically, guide resistance f = 20 N, 0.3 m/s with 0.2 s ramps over a 600 mm stroke,
-5 cycles per minute; BLK1510-5.6 (lead 10 mm, Ca 9.8 kN), fW 1.5.  THK: phase loads 585 / 510 / 435 N up and
-395 / 470 / 545 N down, Fm = 492 N, L = 2.34e9 rev, Nm = 600 min^-1, Lh = 65 000 h.
+THK General Catalog, "Examples of Selecting a Ball Screw", vertical conveyance system (A-736 to
+A-742): m1 + m2 = 50 kg lifted vertically, guide resistance f = 20 N, 0.3 m/s with 0.2 s ramps over
+a 600 mm stroke, 5 cycles per minute; BLK1510-5.6 (lead 10 mm, Ca 9.8 kN), fW 1.5.  THK: phase loads
+585 / 510 / 435 N up and 395 / 470 / 545 N down, Fm = 492 N, L = 2.34e9 rev, Nm = 600 min^-1, Lh =
+65 000 h.
 """
 
 from pathlib import Path

@@ -1,5 +1,6 @@
-"""The parts cost of an axis (model.cost): a bill of materials added up by hand, for one drive and a twin
-drive (the second drive's screw, nut, bearings, motor, coupling and reduction; the guides are shared)."""
+"""The parts cost of an axis (model.cost): a bill of materials added up by hand, for one drive and a
+twin drive (the second drive's screw, nut, bearings, motor, coupling and reduction; the guides are
+shared)."""
 
 from __future__ import annotations
 

@@ -1,6 +1,7 @@
-"""The no-load drag torque at the motor (model.drag) restated by hand from THK's forms: the nut's preload drag
-K F_a0 P_h / (2 pi), K = 0.05 / sqrt(tan beta) (THK / HIWIN / NSK catalog form, vendor-formulas.md sec. 2.6), the
-support bearings' starting torque, the guide friction through the lead at the screw efficiency."""
+"""The no-load drag torque at the motor (model.drag) restated by hand from THK's forms: the nut's
+preload drag K F_a0 P_h / (2 pi), K = 0.05 / sqrt(tan beta) (THK / HIWIN / NSK catalog form,
+vendor-formulas.md sec. 2.6), the support bearings' starting torque, the guide friction through the
+lead at the screw efficiency."""
 
 from __future__ import annotations
 

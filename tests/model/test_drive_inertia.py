@@ -1,7 +1,8 @@
-"""The drive sizes the screw's inertia as the vendors do: a solid steel cylinder of the nominal diameter
-(THK A-744 'inertial moment per unit length of the screw shaft' at the shaft diameter; FANUC B-65142E sec. 4;
-HIWIN F 3.20 'dn Nominal diameter'; Mitsubishi MDS-B-SVJ2 sec. 11-5), over the model's screw length (the
-bearing span).  Checked against the load inertia written out here from THK eq. 45, apart from the model."""
+"""The drive sizes the screw's inertia as the vendors do: a solid steel cylinder of the nominal
+diameter (THK A-744 'inertial moment per unit length of the screw shaft' at the shaft diameter;
+FANUC B-65142E sec. 4; HIWIN F 3.20 'dn Nominal diameter'; Mitsubishi MDS-B-SVJ2 sec. 11-5), over
+the model's screw length (the bearing span).  Checked against the load inertia written out here from
+THK eq. 45, apart from the model."""
 
 import math
 from pathlib import Path

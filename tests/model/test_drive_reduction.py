@@ -1,6 +1,7 @@
-"""A reduction part (planetary gearbox on the motor flange) in the axis model: catalog values in SI, THK eq. 43-46
-with the reduction ratio A, the vendor checks on the output side (Beckhoff AG2400 T2B, T2N, n1Max), the torsional
-stiffness in series with the coupling's, the backlash as lost motion at the table, and float = numpy = CasADi."""
+"""A reduction part (planetary gearbox on the motor flange) in the axis model: catalog values in SI,
+THK eq. 43-46 with the reduction ratio A, the vendor checks on the output side (Beckhoff AG2400 T2B,
+T2N, n1Max), the torsional stiffness in series with the coupling's, the backlash as lost motion at
+the table, and float = numpy = CasADi."""
 
 from __future__ import annotations
 
@@ -27,9 +28,8 @@ MM, KG_CM2 = 1e-3, 1e-4
 @pytest.mark.published
 def test_beckhoff_tp050_row_in_si():
     # Beckhoff AG2400 TP050 MF "Mechanical data"
-    # (infosys.beckhoff.com/content/1033/ag2400_ba/8995561355.html),
-    # i = 5: Ct21 187 Nm/arcmin, eta 97 %, J1 (K = 38 mm) 12.1 kgcm^2, T2N 337, T2B 840 Nm, n1Max
-    # 5000 min^-1, jt <= 3
+    # (infosys.beckhoff.com/content/1033/ag2400_ba/8995561355.html), i = 5: Ct21 187 Nm/arcmin, eta
+    # 97 %, J1 (K = 38 mm) 12.1 kgcm^2, T2N 337, T2B 840 Nm, n1Max 5000 min^-1, jt <= 3
     r = default_catalog().part("reductions", "BK-TP050-MF-5")
     assert r["torsional_stiffness"] == pytest.approx(642_859, abs=0.5)  # 187 x 10800 / pi
     assert r["efficiency"] == pytest.approx(0.97)
@@ -47,8 +47,9 @@ def test_beckhoff_tp050_row_in_si():
 
 
 def _thk_example_1(a=1.0):
-    """THK A-722..A-735 (example 1, horizontal transfer): m 80 kg, lead 40 mm, screw 20 mm x 1200 mm, friction
-    T1 = 120 N mm (A-733), t1 0.15 s to 1 m/s; as model parameters (no coupling inertia, no gravity)."""
+    """THK A-722..A-735 (example 1, horizontal transfer): m 80 kg, lead 40 mm, screw 20 mm x 1200
+    mm, friction T1 = 120 N mm (A-733), t1 0.15 s to 1 m/s; as model parameters (no coupling
+    inertia, no gravity)."""
     return {
         "lead": 40 * MM,
         "nominal_diameter": 20 * MM,
@@ -64,11 +65,9 @@ def _thk_example_1(a=1.0):
 @pytest.mark.published
 def test_output_torque_is_thk_eq_45_at_the_screw():
     # THK A-733: load inertia J = 3.39e-3 kg m^2 (table 80 kg through the 40 mm lead plus the
-    # screw), friction
-    # torque T1 = 120 N mm; the torque at the screw (the reduction's output) in the acceleration is
-    # J w' + T1,
-    # w' = 2 pi / P_h x a, without the rotor's J_m w' (THK's Tmax 4730 N mm includes Jm = 1e-3 kg
-    # m^2 x w')
+    # screw), friction torque T1 = 120 N mm; the torque at the screw (the reduction's output) in the
+    # acceleration is J w' + T1, w' = 2 pi / P_h x a, without the rotor's J_m w' (THK's Tmax 4730 N
+    # mm includes Jm = 1e-3 kg m^2 x w')
     p = _thk_example_1()
     phases = cycle_phases((Segment("move", distance=1.0, speed=1.0, acceleration=1.0 / 0.15),))
     torques, thrust, _ = output_torques(p, 80.0, 0.120, phases)
@@ -81,8 +80,8 @@ def test_output_torque_is_thk_eq_45_at_the_screw():
 
 def test_motor_torque_through_the_reduction_is_thk_eq_43_45_with_a():
     # THK eq. 43 and 45 with the reduction ratio A = 1/i: the motor's acceleration torque is the
-    # output's inertia
-    # torque / i plus (J_rotor + J_reduction) w'_motor, its friction the drag / (i eta)
+    # output's inertia torque / i plus (J_rotor + J_reduction) w'_motor, its friction the drag / (i
+    # eta)
     d = load_design(ROOT / "problems" / "vmc_x_design.yaml")
     red = default_catalog().part("reductions", "BK-TP050-MF-5")
     base = evaluate(replace(d, reduction=red), use_casadi=False).values
@@ -113,8 +112,7 @@ def test_reduction_checks_and_stiffness_in_series():
     assert v["margin_reduction_speed"] == pytest.approx(5000.0 / 6000.0)
     assert v0["margin_reduction_speed"] >= 1e9  # no reduction: not applicable
     # the output torques are the screw side's: the same whatever the gear's ratio (the coupling and
-    # load are); a
-    # design without a reduction reports none
+    # load are); a design without a reduction reports none
     v7 = evaluate(
         replace(d, reduction=default_catalog().part("reductions", "BK-TP050-MF-7")),
         use_casadi=False,
@@ -163,7 +161,8 @@ def _sym_or(values, backend):
 
 @pytest.mark.parametrize("backend", ["float", "numpy", "casadi"])
 def test_new_model_terms_on_float_numpy_casadi(backend):
-    """lost_motion, drive_torsional_stiffness and output_torques agree on floats, numpy arrays and CasADi."""
+    """lost_motion, drive_torsional_stiffness and output_torques agree on floats, numpy arrays and
+    CasADi."""
     vals = {
         "nut_double": (1.0, 0.0, 1.0),
         "nut_axial_play": (0.0, 10e-6, 0.0),

@@ -1,5 +1,5 @@
-"""The drive's parameters (model.driveparams): a reduction's emergency torque against the motor's peak times the
-ratio, from the vendors' published rows."""
+"""The drive's parameters (model.driveparams): a reduction's emergency torque against the motor's
+peak times the ratio, from the vendors' published rows."""
 
 import pytest
 
@@ -8,10 +8,11 @@ from axisopt.catalog.loading import default_catalog
 
 @pytest.mark.published
 def test_reduction_emergency_torque_against_motor_peak_times_ratio():
-    """Beckhoff AG3400 NPT035 MF (infosys.beckhoff.com ag3400_ba 9197685643): T2Em.stop 480 N.m, T2B 220 N.m at
-    i = 8; the SGM7A-70A's instantaneous peak 54 N.m (YSK-S7) through 8:1 gives 432 N.m at an emergency stop or
-    a collision (Siemens 1FT7 5.4.1: Mmax,gear >= M0 i f; apexdyna: output torque = motor torque x ratio).
-    A drive torque limit of 40 N.m caps it at 320 N.m (the same limit the coupling sees)."""
+    """Beckhoff AG3400 NPT035 MF (infosys.beckhoff.com ag3400_ba 9197685643): T2Em.stop 480 N.m, T2B
+    220 N.m at i = 8; the SGM7A-70A's instantaneous peak 54 N.m (YSK-S7) through 8:1 gives 432 N.m
+    at an emergency stop or a collision (Siemens 1FT7 5.4.1: Mmax,gear >= M0 i f; apexdyna: output
+    torque = motor torque x ratio).  A drive torque limit of 40 N.m caps it at 320 N.m (the same
+    limit the coupling sees)."""
     from dataclasses import replace
 
     from axisopt.design import Axis

@@ -1,4 +1,5 @@
-"""Issue 26: an estimated value never wins by being optimistic, and a result says when it rests on one."""
+"""Issue 26: an estimated value never wins by being optimistic, and a result says when it rests on
+one."""
 
 import csv
 
@@ -35,7 +36,7 @@ catalog:
   {estimated}require: {{screw: [HIWIN-G-50x20-b6p35], bearing: [{bearings}], guide: [HIWIN-HG15-ZA]}}
 continuous:
   nut_preload: {{min: 200 N, max: 20 kN}}
-"""
+"""  # noqa: E501
 
 
 def _problem(tmp_path, bearings, estimated=""):
@@ -61,8 +62,9 @@ def _problem(tmp_path, bearings, estimated=""):
 
 
 def test_envelope_bounds_every_vendor_starting_torque():
-    """The estimate for an empty starting-torque cell is at least the vendor value of every shipped row that
-    lists one, evaluated at that row's own preload and mean diameter (catalogs/SOURCES.md)."""
+    """The estimate for an empty starting-torque cell is at least the vendor value of every shipped
+    row that lists one, evaluated at that row's own preload and mean diameter
+    (catalogs/SOURCES.md)."""
     b = default_catalog().bearings
     v = b[np.isfinite(b["starting_torque"].to_numpy(float))]
     dm = 0.5 * (v["bore"] + v["outer_diameter"])
@@ -75,9 +77,9 @@ def test_envelope_bounds_every_vendor_starting_torque():
 
 
 def test_search_does_not_prefer_the_estimated_part(tmp_path):
-    """Two identical bearings, one without its vendor starting torque: the estimate is not optimistic, so the
-    drag-limited search keeps the part with the vendor value (before issue 26, eq. 40 read 0.17 N.m for the
-    copy against the vendor's 0.28 N.m and the copy won)."""
+    """Two identical bearings, one without its vendor starting torque: the estimate is not
+    optimistic, so the drag-limited search keeps the part with the vendor value (before issue 26,
+    eq. 40 read 0.17 N.m for the copy against the vendor's 0.28 N.m and the copy won)."""
     res = solve(_problem(tmp_path, [VENDOR, COPY]), top=2, sensitivities=False)
     assert res.status == "optimal"
     assert res.best.bearing == VENDOR
@@ -105,10 +107,9 @@ def test_estimated_exclude_searches_vendor_values_only(tmp_path):
 
 def test_estimated_housing_and_bracket_are_named_unless_given(tmp_path):
     # the stiffness optimum's objective moves with the housing and the nut bracket (THK's K_H term):
-    # left out,
-    # they are estimated (issue 38: IBC's units, THK's nut-mounting allowance; never rigid) and the
-    # certificate
-    # names them with their values; given, they are the user's values and not named
+    # left out, they are estimated (issue 38: IBC's units, THK's nut-mounting allowance; never
+    # rigid) and the certificate names them with their values; given, they are the user's values and
+    # not named
     res = solve(_problem(tmp_path, [VENDOR]), top=1, sensitivities=False)
     rest = {r["what"]: r for r in res.certificate.estimated}
     named = {e["column"]: e for e in rest["objective"]["estimates"] if e["slot"] == "axis"}
@@ -137,10 +138,9 @@ def test_estimated_housing_and_bracket_are_named_unless_given(tmp_path):
 
 def test_a_binding_check_names_the_defaults_it_reads(tmp_path):
     # the high-speed optimum (lexicographic) has its nut life at the required 20 000 h; the life
-    # reads the mean
-    # axial load and speed, which the problem leaves to their defaults (a third of axial_load, half
-    # of max_speed):
-    # the certificate names them; given in the file, they are the user's values and are not named
+    # reads the mean axial load and speed, which the problem leaves to their defaults (a third of
+    # axial_load, half of max_speed): the certificate names them; given in the file, they are the
+    # user's values and are not named
     from pathlib import Path
 
     # the direct drive of the shipped file (its belt-stage optimum since issue 54 has no binding
@@ -176,9 +176,9 @@ def test_a_binding_check_names_the_defaults_it_reads(tmp_path):
 
 
 def test_estimated_exclude_names_itself_when_it_removes_every_motor(tmp_path, capsys):
-    """No shipped motor row lists its peak zone past the corner speed (the Mitsubishi-rule corner and the fall to
-    rated torque are estimates, docs/assumptions.md): 'exclude' removes them all, and the error names that
-    filter, not the motor filters it did not come from."""
+    """No shipped motor row lists its peak zone past the corner speed (the Mitsubishi-rule corner
+    and the fall to rated torque are estimates, docs/assumptions.md): 'exclude' removes them all,
+    and the error names that filter, not the motor filters it did not come from."""
     from pathlib import Path
 
     from axisopt.cli import main
@@ -209,8 +209,9 @@ def test_estimated_exclude_names_itself_when_it_removes_every_motor(tmp_path, ca
 
 
 def test_a_reduction_estimate_shows_its_stiffness_not_the_compliance(tmp_path):
-    """Issue 54: the belt stage's torsional stiffness is derived (physics.belt); the estimate shows the
-    catalog's value in N.m/rad (16.68 N.m/arcmin x 60 x 180 / pi), not the compliance the model sums."""
+    """Issue 54: the belt stage's torsional stiffness is derived (physics.belt); the estimate shows
+    the catalog's value in N.m/rad (16.68 N.m/arcmin x 60 x 180 / pi), not the compliance the model
+    sums."""
     import math
     from pathlib import Path
 

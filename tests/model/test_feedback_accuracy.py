@@ -1,5 +1,5 @@
-"""Closed-loop feedback and pitch-error compensation in the positioning budget, and ISO 230-2 repeatability,
-against the vendors' published figures (grades.SCALE_GRADES, THK A-678 Table 1)."""
+"""Closed-loop feedback and pitch-error compensation in the positioning budget, and ISO 230-2
+repeatability, against the vendors' published figures (grades.SCALE_GRADES, THK A-678 Table 1)."""
 
 import pytest
 
@@ -29,8 +29,9 @@ def _eval(tmp_path, extra=""):
 
 @pytest.mark.published
 def test_linear_scale_replaces_lead_and_thermal_rows(tmp_path):
-    """AMO LMB (amosin.com/lmb-100): +-3 um/m; over a 600 mm stroke the Heidenhain grade definition (any section
-    of at most 1 m within +-a) gives 3 um.  HIWIN PMS: +-20 um/m, read head +-3 um (a 6 um band)."""
+    """AMO LMB (amosin.com/lmb-100): +-3 um/m; over a 600 mm stroke the Heidenhain grade definition
+    (any section of at most 1 m within +-a) gives 3 um.  HIWIN PMS: +-20 um/m, read head +-3 um (a 6
+    um band)."""
     semi = _eval(tmp_path)
     v = _eval(tmp_path, "  feedback: linear_scale\n  scale_grade: AMO-LMB-3\n")
     assert v["lead_error"] == pytest.approx(3e-6)
@@ -46,9 +47,10 @@ def test_linear_scale_replaces_lead_and_thermal_rows(tmp_path):
 
 @pytest.mark.published
 def test_pitch_compensation_leaves_the_fluctuation(tmp_path):
-    """THK A-678 Table 1, grade C5 over 630-800 mm: e_p +-35 um, v_u 25 um.  The nut travels 600 mm of stroke
-    plus its own 171 mm (R40-10K5-FDC, H-BS Table 6.5 L) = 771 mm of thread.  Uncompensated the lead row is
-    e_p + v_u = 60 um; compensation of the representative travel leaves v_u = 25 um."""
+    """THK A-678 Table 1, grade C5 over 630-800 mm: e_p +-35 um, v_u 25 um.  The nut travels 600 mm
+    of stroke plus its own 171 mm (R40-10K5-FDC, H-BS Table 6.5 L) = 771 mm of thread.
+    Uncompensated the lead row is e_p + v_u = 60 um; compensation of the representative travel
+    leaves v_u = 25 um."""
     v = _eval(tmp_path)
     c = _eval(tmp_path, "  pitch_compensation: yes\n")
     assert v["lead_error"] == pytest.approx(60e-6)
@@ -56,8 +58,8 @@ def test_pitch_compensation_leaves_the_fluctuation(tmp_path):
 
 
 def test_repeatability_is_iso_scatter_not_thermal(tmp_path):
-    """ISO 230-2: the reversal plus the noise band; the thermal drift stays its own row (a preloaded nut on a
-    motor encoder: 0)."""
+    """ISO 230-2: the reversal plus the noise band; the thermal drift stays its own row (a preloaded
+    nut on a motor encoder: 0)."""
     v = _eval(tmp_path)
     assert v["thermal_error"] > 1e-6
     assert v["repeatability"] == pytest.approx(v["lost_motion"])

@@ -1,5 +1,5 @@
-"""The dynamic compliance (model.frf, ``evaluate --frf``): static limit, peaks at the modes, the dynamic
-stiffness form, the JSON and plot, bad frequencies refused."""
+"""The dynamic compliance (model.frf, ``evaluate --frf``): static limit, peaks at the modes, the
+dynamic stiffness form, the JSON and plot, bad frequencies refused."""
 
 import json
 import math
@@ -82,7 +82,8 @@ def test_frf_peaks_at_modes(evals, name):
 
 
 def test_frf_dynamic_stiffness_form(evals):
-    """F/X of the free-motor model: s * (degree 5) / (degree 4); ~ c_g w at low and ~ m w^2 at high frequency."""
+    """F/X of the free-motor model: s * (degree 5) / (degree 4); ~ c_g w at low and ~ m w^2 at high
+    frequency."""
     ev = evals["vmc_x_design.yaml"]
     p = design_params(ev.design)
     i = 0

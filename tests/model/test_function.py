@@ -1,4 +1,5 @@
-"""The assembled axis model: one formula on floats, numpy and CasADi; stroke behaviour by mounting."""
+"""The assembled axis model: one formula on floats, numpy and CasADi; stroke behaviour by
+mounting."""
 
 import dataclasses
 import math
@@ -27,8 +28,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 @pytest.fixture(scope="module")
 def vmc():
-    """The shipped VMC design on the HIWIN WBK30-DFD set the hand calculations below use (HIWIN Table 8.12:
-    1520 N/um; the shipped file has an NSK light-preload set, which outlives the WBK's single row)."""
+    """The shipped VMC design on the HIWIN WBK30-DFD set the hand calculations below use (HIWIN
+    Table 8.12: 1520 N/um; the shipped file has an NSK light-preload set, which outlives the WBK's
+    single row)."""
     from axisopt.catalog.loading import load_catalogs
 
     d = load_design(ROOT / "problems" / "vmc_x_design.yaml")
@@ -109,7 +111,8 @@ def test_preload_raises_stiffness_drag_and_lowers_life(vmc):
 
 @pytest.mark.published
 def test_paper_3_1_3_frequency_and_stiffness_trend():
-    """Seed paper section 3.1.3, eq. (10)-(11): l0 = 0.13 m, 2 m screw, m = 450 kg, d = 25/40/50/63 mm.
+    """Seed paper section 3.1.3, eq. (10)-(11): l0 = 0.13 m, 2 m screw, m = 450 kg, d = 25/40/50/63
+    mm.
 
     The paper states that stiffness and frequency fall with the active length l_x and rise with d.
     Our shipped examples reproduce the study with real catalog screws; here eq. (11) itself is
@@ -133,12 +136,13 @@ def test_paper_3_1_3_frequency_and_stiffness_trend():
 
 def test_vmc_example_against_a_hand_calculation(vmc):
     """The shipped VMC design, evaluated by hand from its catalog rows (HIWIN BS-08-2-EN-1704-K):
-    screw root 34.91 mm, lead 20 mm, span 0.13 + 0.8 + 0.17 m, fixed-supported, nut R40-20K4-FDC 1150 N/um at
-    0.1 Ca = 5130 N run at 3000 N (HIWIN F 3.34) and then loaded by the largest axial force (Hertz halves,
-    lift-off at 2.83 x preload), WBK30-DFD 1520 N/um, screw torsion G pi d^4 / (32 x) through the lead, the
-    default coupling (RINGFEDER GWB AKN 60, 75e3 N.m/rad) through the lead, and the default mounts (issue 38): the
-    housing 1050/40 = 26.25 x the set (IBC BSBU 35 DB 128 on its bare set, 1050 on 1090 N/um), the bracket
-    4 x 0.8 x the nut's 1150 N/um (THK's 80 % nut-mounting allowance once more)."""
+    screw root 34.91 mm, lead 20 mm, span 0.13 + 0.8 + 0.17 m, fixed-supported, nut R40-20K4-FDC
+    1150 N/um at 0.1 Ca = 5130 N run at 3000 N (HIWIN F 3.34) and then loaded by the largest axial
+    force (Hertz halves, lift-off at 2.83 x preload), WBK30-DFD 1520 N/um, screw torsion G pi d^4 /
+    (32 x) through the lead, the default coupling (RINGFEDER GWB AKN 60, 75e3 N.m/rad) through the
+    lead, and the default mounts (issue 38): the housing 1050/40 = 26.25 x the set (IBC BSBU 35 DB
+    128 on its bare set, 1050 on 1090 N/um), the bracket 4 x 0.8 x the nut's 1150 N/um (THK's 80 %
+    nut-mounting allowance once more)."""
     ev = evaluate(vmc)
     x_end = 0.13 + 0.8
     lead = 0.020
@@ -177,7 +181,8 @@ def test_vmc_example_against_a_hand_calculation(vmc):
 
 
 def _two_path_hand(k_b, ea, x, span, mounting):
-    """Screw and bearings by hand: near set + segment x, in parallel with far set + segment L - x (fixed-fixed)."""
+    """Screw and bearings by hand: near set + segment x, in parallel with far set + segment L - x
+    (fixed-fixed)."""
     near = 1 / (1 / k_b + x / ea)
     if mounting != "fixed-fixed":
         return near
@@ -186,8 +191,9 @@ def _two_path_hand(k_b, ea, x, span, mounting):
 
 @pytest.mark.parametrize("mounting", ["fixed-free", "fixed-supported", "fixed-fixed"])
 def test_evaluate_and_diagnose_agree_on_the_chain(vmc, mounting):
-    """The same design in evaluate and in diagnose's plant gives the same compliance at every position
-    (nut taken at the same stiffness), and both equal the two-path chain written out by hand."""
+    """The same design in evaluate and in diagnose's plant gives the same compliance at every
+    position (nut taken at the same stiffness), and both equal the two-path chain written out by
+    hand."""
     from axisopt.identify import plant_from_design
     from axisopt.identify.tables.measure import (
         baseline_terms,
@@ -214,8 +220,8 @@ def test_evaluate_and_diagnose_agree_on_the_chain(vmc, mounting):
     )
     c_eval = 1 / np.asarray(ev["k_total"]) - 1 / ev["k_nut"] + 1 / ev["k_nut_unloaded"]
     np.testing.assert_allclose(c_diag, c_eval, rtol=1e-10)
-    # by hand: WBK30-DFD 1520 N/um in series with its 4000 N/um housing, at both ends for fixed-
-    # fixed
+    # by hand: WBK30-DFD 1520 N/um in series with its 4000 N/um housing, at both ends for
+    # fixed-fixed
     k_set = 1 / (1 / 1520e6 + 1 / 4000e6)
     ea = 206e9 * math.pi / 4 * 0.03491**2
     k_sb = _two_path_hand(k_set, ea, ev.x, d.axis.span, mounting)
@@ -223,8 +229,9 @@ def test_evaluate_and_diagnose_agree_on_the_chain(vmc, mounting):
 
 
 def test_fixed_fixed_shortcut_is_exact_only_at_mid_span(vmc):
-    """The old shortcut (both sets summed, in series with the screw's two segments) equals the two-path chain
-    at mid-span and overstates it elsewhere (about 20 % at x = 0.1 L for stiff-screw, soft-bearing axes)."""
+    """The old shortcut (both sets summed, in series with the screw's two segments) equals the
+    two-path chain at mid-span and overstates it elsewhere (about 20 % at x = 0.1 L for stiff-screw,
+    soft-bearing axes)."""
     k_b, ea, span = 300e6, 206e9 * math.pi / 4 * 0.03491**2, 1.0
     x = np.array([0.1, 0.5])
     exact = _two_path_hand(k_b, ea, x, span, "fixed-fixed")
@@ -240,7 +247,8 @@ def test_fixed_fixed_shortcut_is_exact_only_at_mid_span(vmc):
 
 def test_single_nut_follows_hiwin_f335_and_has_play():
     """HIWIN BS-08-2-EN-1704-K F 3.35: a single nut with play is rated at the mean operating load,
-    R_n = 0.8 K (F_bm / (0.28 C_dyn))^(1/3); R40-20K4-FSC: K = 870 N/um, C_dyn = 51 300 N (Table 6.4)."""
+    R_n = 0.8 K (F_bm / (0.28 C_dyn))^(1/3); R40-20K4-FSC: K = 870 N/um, C_dyn = 51 300 N (Table
+    6.4)."""
     d = load_design(ROOT / "problems" / "vmc_x_design.yaml")
     cat = d.screw  # same screw (40x20, ball 6.35)
     from axisopt.catalog.loading import default_catalog

@@ -1,5 +1,5 @@
-"""The goal table (model.goals): every scalar mode has its objective in its unit; Pareto keys, senses, units
-and fields come from the table."""
+"""The goal table (model.goals): every scalar mode has its objective in its unit; Pareto keys,
+senses, units and fields come from the table."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""Issue 38 item 4: the heat balance (model.heat, a lumped thermal network after Jungnickel 2010) against THK's
-measured heat-generation tests, and the pretension of a fixed-fixed screw by the vendor's design rise."""
+"""Issue 38 item 4: the heat balance (model.heat, a lumped thermal network after Jungnickel 2010)
+against THK's measured heat-generation tests, and the pretension of a fixed-fixed screw by the
+vendor's design rise."""
 
 import json
 import math
@@ -17,8 +18,9 @@ S = motion.Segment
 
 
 def _params(segments, nominal, root, lead, bearing_preload, bearing_dm, span):
-    """The parameters the heat balance reads for a test rig: one fixed support set (THK BK unit, torque from
-    the vendor envelope), a bearing at each shaft end, the network's default conductances."""
+    """The parameters the heat balance reads for a test rig: one fixed support set (THK BK unit,
+    torque from the vendor envelope), a bearing at each shaft end, the network's default
+    conductances."""
     phases = motion.Phases(motion.cycle_phases(segments), heat=True, given=True)
     return {
         "duty": phases,
@@ -38,13 +40,10 @@ def _params(segments, nominal, root, lead, bearing_preload, bearing_dm, span):
 
 def _a821(span=1.30):
     # THK General Catalog A-821 "Heat Generation Test" (wiper ring W option): BLK3232-3.6G0+1426LC5
-    # (B-698: d 32,
-    # lead 32, dc 28.3 mm), 1000 min^-1, 32 m/min, time constant 100 ms, stroke 1000 mm, load
-    # (through internal
-    # load, read as the preload) 0.98 kN, THK AFG grease 5 cm^3; reciprocating without dwell (none
-    # stated).  Shaft
-    # 1426 mm overall: a 1.30 m bearing span (our reading: the journals off).  Support: THK BK25
-    # (1010 N, 25/52 mm).
+    # (B-698: d 32, lead 32, dc 28.3 mm), 1000 min^-1, 32 m/min, time constant 100 ms, stroke 1000
+    # mm, load (through internal load, read as the preload) 0.98 kN, THK AFG grease 5 cm^3;
+    # reciprocating without dwell (none stated).  Shaft 1426 mm overall: a 1.30 m bearing span
+    # (our reading: the journals off).  Support: THK BK25 (1010 N, 25/52 mm).
     v = 32.0 / 60.0
     cycle = [
         S("move", distance=1.0, speed=v, acceleration=v / 0.1),
@@ -55,13 +54,10 @@ def _a821(span=1.30):
 
 def _a671(span):
     # THK General Catalog A-671 "Example of Heat Generation", Fig. 8/9: BNFN4010-5 (d 40, lead 10,
-    # dc 34.4 mm,
-    # B-670), preload 2700 N, 0.217 m/s (1300 min^-1) fast strokes with 0.2 s ramps and 1.3 / 1.4 s
-    # at speed, a
-    # 0.0042 m/s (25 min^-1) slow feed of 15.9 s, 0.1 s stops: 19.6 s per cycle (our reading of Fig.
-    # 8, whose
-    # times add up to the printed 19.6 s), Li grease No. 2.  Shaft length not printed.  Support: THK
-    # BK30.
+    # dc 34.4 mm, B-670), preload 2700 N, 0.217 m/s (1300 min^-1) fast strokes with 0.2 s ramps and
+    # 1.3 / 1.4 s at speed, a 0.0042 m/s (25 min^-1) slow feed of 15.9 s, 0.1 s stops: 19.6 s per
+    # cycle (our reading of Fig. 8, whose times add up to the printed 19.6 s), Li grease No. 2.
+    # Shaft length not printed.  Support: THK BK30.
     f, acc = 0.217, 0.217 / 0.2
     cycle = [
         S("move", distance=f * 1.5, speed=f, acceleration=acc),
@@ -75,10 +71,11 @@ def _a671(span):
 
 @pytest.mark.published
 def test_thk_a821_heat_generation_test_without_seal():
-    """THK A-821: the shaft centre rose 8.9 K without seal (12.2 K with the wiper ring, whose friction the model
-    does not count) after 90 min.  The network gives 10.2 K at a 1.30 m span; tolerance +-30 %: the preload drag
-    torque alone scatters +-30 % (THK A-689, C3-C5 torque fluctuation) and the conductances are estimates.
-    The convection-only balance this replaced gave 24.9 K."""
+    """THK A-821: the shaft centre rose 8.9 K without seal (12.2 K with the wiper ring, whose
+    friction the model does not count) after 90 min.  The network gives 10.2 K at a 1.30 m span;
+    tolerance +-30 %: the preload drag torque alone scatters +-30 % (THK A-689, C3-C5 torque
+    fluctuation) and the conductances are estimates.  The convection-only balance this replaced gave
+    24.9 K."""
     p, preload = _a821()
     heat = heat_balance(p, preload)
     # 1 m in 1.975 s
@@ -91,10 +88,11 @@ def test_thk_a821_heat_generation_test_without_seal():
 @pytest.mark.published
 @pytest.mark.parametrize("span", [0.6, 0.8, 1.0, 1.2, 1.5])
 def test_thk_a671_heat_generation_example_stays_on_its_scale(span):
-    """THK A-671 Fig. 9 draws the screw-shaft temperature of the 40x10 double nut at 2700 N on a 20-30 degC scale
-    over 180 min: a rise under 10 K.  The shaft length is not printed: every plausible span 0.6-1.5 m for a
-    0.35 m stroke stays under it (5.3-5.9 K); the convection-only balance this replaced gave 18-42 K.
-    The curve rises visibly on a 10 K scale: the rise is taken as above 2 K (our reading of the figure)."""
+    """THK A-671 Fig. 9 draws the screw-shaft temperature of the 40x10 double nut at 2700 N on a
+    20-30 degC scale over 180 min: a rise under 10 K.  The shaft length is not printed: every
+    plausible span 0.6-1.5 m for a 0.35 m stroke stays under it (5.3-5.9 K); the convection-only
+    balance this replaced gave 18-42 K.  The curve rises visibly on a 10 K scale: the rise is taken
+    as above 2 K (our reading of the figure)."""
     p, preload = _a671(span)
     heat = heat_balance(p, preload)
     assert float(heat["cycle_mean_screw_speed"]) * 60 / (2 * math.pi) == pytest.approx(226, abs=1)
@@ -155,9 +153,9 @@ def test_pretension_rise_rejects_bad_values(tmp_path, capsys, value):
 
 @pytest.mark.published
 def test_auto_pretension_absorbs_the_design_rise(tmp_path, capsys):
-    """THK A-715: pretension for a 2-5 degC design rise (-0.02 to -0.06 mm/m); the default 3 K on the 40x20
-    screw (root 34.91 mm): E A alpha dT = 206e9 x 957.2e-6 x 11.6e-6 x 3 = 6.86 kN, by hand.  A given design rise
-    scales it; a given pretension wins."""
+    """THK A-715: pretension for a 2-5 degC design rise (-0.02 to -0.06 mm/m); the default 3 K on
+    the 40x20 screw (root 34.91 mm): E A alpha dT = 206e9 x 957.2e-6 x 11.6e-6 x 3 = 6.86 kN, by
+    hand.  A given design rise scales it; a given pretension wins."""
     edits = {
         "": None,
         "\n  pretension_rise: 2 K": None,
@@ -180,9 +178,8 @@ def test_auto_pretension_absorbs_the_design_rise(tmp_path, capsys):
 @pytest.mark.published
 def test_default_design_rise_lies_in_thks_target_travel_range():
     # THK A-715: "set a negative target value for the reference travel distance assuming a
-    # temperature increase
-    # of 2 to 5 degC (-0.02 mm to -0.06 mm/m)"; the default design rise stretches the shaft by 0.035
-    # mm/m
+    # temperature increase of 2 to 5 degC (-0.02 mm to -0.06 mm/m)"; the default design rise
+    # stretches the shaft by 0.035 mm/m
     from axisopt.design import PRETENSION_RISE
 
     assert 0.02e-3 <= pt.thermal_growth(1.0, PRETENSION_RISE) <= 0.06e-3

@@ -1,7 +1,8 @@
-"""The life checks' load table that ``evaluate`` prints (the rows the vendors' worked examples list), against
-THK's vertical conveyance example (General Catalog A-736 to A-742): 50 kg lifted at 0.3 m/s with 0.2 s ramps
-over 600 mm, guide resistance f = 20 N.  THK: axial loads 585 / 510 / 435 N up and 395 / 470 / 545 N down
-(A-739), travels 30 / 540 / 30 mm each way (A-741), Fm = 492 N (A-742)."""
+"""The life checks' load table that ``evaluate`` prints (the rows the vendors' worked examples
+list), against THK's vertical conveyance example (General Catalog A-736 to A-742): 50 kg lifted at
+0.3 m/s with 0.2 s ramps over 600 mm, guide resistance f = 20 N.  THK: axial loads 585 / 510 / 435 N
+up and 395 / 470 / 545 N down (A-739), travels 30 / 540 / 30 mm each way (A-741), Fm = 492 N
+(A-742)."""
 
 from __future__ import annotations
 

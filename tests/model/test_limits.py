@@ -1,4 +1,5 @@
-"""The one declaration of limits and checks (model.limits): everything derived from it agrees with it."""
+"""The one declaration of limits and checks (model.limits): everything derived from it agrees with
+it."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
-"""The linear-motor sub-assembly (model.lmdrive): attraction force loads the guides and friction, as the
-vendor's sizing steps say (restated here)."""
+"""The linear-motor sub-assembly (model.lmdrive): attraction force loads the guides and friction, as
+the vendor's sizing steps say (restated here)."""
 
 from __future__ import annotations
 

@@ -1,9 +1,10 @@
-"""A counterbalanced vertical axis through the whole model, on THK's vertical conveyance example (A-736 to A-746:
-table 40 kg + work 10 kg, guide resistance f = 20 N, lead 10 mm, eta 0.9; published without a counterweight:
-J = 1.58e-4 kg m^2, Tt1 900, Tt2 830, TS 658 N.mm), with a counterweight added as the servo vendors write it:
-its weight off the head's (Mitsubishi MR-J2S-A eq. 11-20, Yaskawa Sigma-7 11.2.1, Fuji ALPHA5 Smart ch. 15 "at a
-stop"), its mass added to the inertia (Yaskawa: J_L1 = (M + M_c)(P_B / 2 pi)^2).  No worked example with a
-counterweight in numbers was found: the expected values below are those formulas at THK's numbers.
+"""A counterbalanced vertical axis through the whole model, on THK's vertical conveyance example
+(A-736 to A-746: table 40 kg + work 10 kg, guide resistance f = 20 N, lead 10 mm, eta 0.9; published
+without a counterweight: J = 1.58e-4 kg m^2, Tt1 900, Tt2 830, TS 658 N.mm), with a counterweight
+added as the servo vendors write it: its weight off the head's (Mitsubishi MR-J2S-A eq. 11-20,
+Yaskawa Sigma-7 11.2.1, Fuji ALPHA5 Smart ch. 15 "at a stop"), its mass added to the inertia
+(Yaskawa: J_L1 = (M + M_c)(P_B / 2 pi)^2).  No worked example with a counterweight in numbers
+was found: the expected values below are those formulas at THK's numbers.
 """
 
 from __future__ import annotations
@@ -36,8 +37,8 @@ def _with(cycle: str, cb: str) -> str:
 
 
 def _thk(tmp_path, cb: str | None, name="d.yaml"):
-    """THK's example through the model as tests/model/test_response_duty_mass.py runs it (its screw, no coupling, no
-    support-bearing drag, no nut preload), with a counterbalance."""
+    """THK's example through the model as tests/model/test_response_duty_mass.py runs it (its screw,
+    no coupling, no support-bearing drag, no nut preload), with a counterbalance."""
     cycle = THK_CYCLE if cb is None else _with(THK_CYCLE, cb)
     p = design_params(load_design(_design(tmp_path, cycle, name)))
     p.update(coupling_inertia=0.0, bearing_torque=0.0, span=0.8)
@@ -87,8 +88,7 @@ def test_counterweight_unloads_the_nut_and_keeps_the_lift_off(tmp_path):
     )
     acc = p0["acceleration"]
     # the largest axial force: rising and accelerating, the counterweight's weight off and its mass
-    # (and the
-    # chain's) accelerated with the head
+    # (and the chain's) accelerated with the head
     assert float(out["max_axial_force"]) == pytest.approx(
         float(base["max_axial_force"]) - mc * G + (mc + 2.0) * acc, rel=1e-9
     )

@@ -1,4 +1,5 @@
-"""Stiffness by every seed method (``evaluate --methods``) and the table's dynamic compliance (``--frf``)."""
+"""Stiffness by every seed method (``evaluate --methods``) and the table's dynamic compliance
+(``--frf``)."""
 
 import dataclasses
 import json
@@ -78,7 +79,8 @@ def test_methods_rows(evals, name):
 
 
 def test_methods_compute_when_columns_exist(evals):
-    """A nut with n_balls and a 7012C spindle bearing set with ball data: every method gives a value."""
+    """A nut with n_balls and a 7012C spindle bearing set with ball data: every method gives a
+    value."""
     ev = evals["vmc_x_design.yaml"]
     d = ev.design
     nut = d.nut.copy()

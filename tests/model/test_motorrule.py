@@ -1,5 +1,5 @@
-"""The servo vendors' motor selection rules (model.motorrule) against their published manuals, and how a motor's
-RMS check names its limit."""
+"""The servo vendors' motor selection rules (model.motorrule) against their published manuals, and
+how a motor's RMS check names its limit."""
 
 from __future__ import annotations
 
@@ -9,11 +9,9 @@ from axisopt.model.motorrule import DEFAULT_RULE, MOTOR_RULES, rule_text
 
 
 # Yaskawa Sigma-7 product manual 11.2.1: Trms and TL within the rated torque; Mitsubishi MDS-D-
-# SVJ3/SPJ3
-# Specifications Manual 7-1 eqs. 7-10 and 7-12: Trms <= 0.8 Tst, unbalanced TL <= 0.6 Tst; FANUC
-# B-65262EN/03
-# 3.1: condition 5 at 0.9 Ts, gravity-holding torque within 60 % of stall; Siemens 1FT7 PFT7S 2.4.3:
-# within S1
+# SVJ3/SPJ3 Specifications Manual 7-1 eqs. 7-10 and 7-12: Trms <= 0.8 Tst, unbalanced TL <= 0.6 Tst;
+# FANUC B-65262EN/03 3.1: condition 5 at 0.9 Ts, gravity-holding torque within 60 % of stall;
+# Siemens 1FT7 PFT7S 2.4.3: within S1
 @pytest.mark.published
 @pytest.mark.parametrize(
     "vendor, rms, unbalance",

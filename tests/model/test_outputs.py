@@ -1,7 +1,8 @@
-"""The output table (axisopt.model.outputs) says what the model does: every declared output is computed, with its
-shape; ``chain=False`` and ``regen=False`` leave out what the table says; the preload directions the search's
-exact 1-D solve rests on hold; the outputs marked as changed by the coupling are those a softer coupling changes;
-the outputs not marked as changed by a drive are the same for every motor, coupling and reduction."""
+"""The output table (axisopt.model.outputs) says what the model does: every declared output is
+computed, with its shape; ``chain=False`` and ``regen=False`` leave out what the table says; the
+preload directions the search's exact 1-D solve rests on hold; the outputs marked as changed by the
+coupling are those a softer coupling changes; the outputs not marked as changed by a drive are the
+same for every motor, coupling and reduction."""
 
 import dataclasses
 from pathlib import Path

@@ -1,5 +1,5 @@
-"""Part columns the model reads (model.paramnames): every one is a column of its catalog table, and the small
-readers treat an empty (NaN) or missing optional column as the text says."""
+"""Part columns the model reads (model.paramnames): every one is a column of its catalog table, and
+the small readers treat an empty (NaN) or missing optional column as the text says."""
 
 from __future__ import annotations
 

@@ -1,8 +1,9 @@
-"""Issue 26 item 3: the vendors' preload ceiling of a preloaded ball nut as a check (margin_nut_preload).
+"""Issue 26 item 3: the vendors' preload ceiling of a preloaded ball nut as a check
+(margin_nut_preload).
 
-THK Ball Screw General Catalog, "Preload" (A-687): "The maximum preload should be set at 10% of the basic dynamic
-load rating (Ca)"; HIWIN H-BS 3.6.2: at most 10 % for double nuts.  No vendor found states a ceiling by speed or
-DN (the preload's heat enters through the heat balance)."""
+THK Ball Screw General Catalog, "Preload" (A-687): "The maximum preload should be set at 10% of the
+basic dynamic load rating (Ca)"; HIWIN H-BS 3.6.2: at most 10 % for double nuts.  No vendor found
+states a ceiling by speed or DN (the preload's heat enters through the heat balance)."""
 
 from dataclasses import replace
 from pathlib import Path
@@ -50,9 +51,9 @@ def test_a_nut_with_play_is_not_checked(vmc):
 
 
 def test_search_keeps_preloads_under_the_ceiling():
-    """A catalog whose preloaded nuts allow up to 20 % Ca (more than any vendor): the search's preload range
-    stops at the ceiling, so the optimum's preload is at most 10 % Ca, its check passes, and the default method
-    still equals exhaustive enumeration."""
+    """A catalog whose preloaded nuts allow up to 20 % Ca (more than any vendor): the search's
+    preload range stops at the ceiling, so the optimum's preload is at most 10 % Ca, its check
+    passes, and the default method still equals exhaustive enumeration."""
     from axisopt.problem import load_problem
     from axisopt.search import solve
 
@@ -70,8 +71,8 @@ def test_search_keeps_preloads_under_the_ceiling():
     ceiling = 0.1 * sp.nuts.number("dynamic_load_rating")
     assert (sp.preload_hi <= ceiling * (1 + 1e-12)).all() and (sp.preload_hi > 0.99 * ceiling).any()
     d = solve(p, top=1, sensitivities=False)
-    # an hour, not the default 100 s wall: on a loaded machine the exhaustive reference's CPU can take
-    # longer (it stopped at the limit, unproven, on a shared 2-core machine)
+    # an hour, not the default 100 s wall: on a loaded machine the exhaustive reference's CPU can
+    # take longer (it stopped at the limit, unproven, on a shared 2-core machine)
     e = solve(p, "exhaustive", top=1, sensitivities=False, time_limit=3600.0)
     assert e.status == "optimal"
     assert d.best.combination == e.best.combination

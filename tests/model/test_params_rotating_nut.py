@@ -1,6 +1,7 @@
-"""The driven rotating-nut unit (THK DIR/BLR): its catalog rows, the estimates that stand in for what THK does not
-print, and what turning the nut instead of the screw changes in the model (model.checks.unit_checks,
-model.params.rotating_nut_params).  Published values name their source."""
+"""The driven rotating-nut unit (THK DIR/BLR): its catalog rows, the estimates that stand in for
+what THK does not print, and what turning the nut instead of the screw changes in the model
+(model.checks.unit_checks, model.params.rotating_nut_params).  Published values name their
+source."""
 
 from __future__ import annotations
 
@@ -49,10 +50,8 @@ def _design(
 @pytest.mark.published
 def test_thk_dir_and_blr_rows_in_si():
     # THK General Catalog B-720/B-721: DIR4010-6 Ca 29.8 kN, C0a 69.3 kN, K 750 N/um, support
-    # bearing Ca 21.5 kN /
-    # C0a 36.8 kN, nut inertia 20.6 kg.cm^2, nut mass 3.55 kg; B-722/B-723: BLR4040-3.6 Ca 38.7 /
-    # C0a 99.2 kN,
-    # support bearing 59.3 / 74.1 kN, nut inertia 27.9 kg.cm^2
+    # bearing Ca 21.5 kN / C0a 36.8 kN, nut inertia 20.6 kg.cm^2, nut mass 3.55 kg; B-722/B-723:
+    # BLR4040-3.6 Ca 38.7 / C0a 99.2 kN, support bearing 59.3 / 74.1 kN, nut inertia 27.9 kg.cm^2
     nuts = default_catalog().nuts
     d = nuts.loc["THK-DIR4010-6"]
     assert d["rotating"] == 1 and d["type"] == "double"
@@ -83,8 +82,7 @@ def test_thk_dir_and_blr_rows_in_si():
 @pytest.mark.published
 def test_unit_speed_without_a_vendor_figure_is_thk_dn_rule():
     # THK A-697: DN <= 70 000 for precision ball screws, D the ball centre diameter dp; DIR4010-6 dp
-    # = 41.75 mm
-    # (B-720), so the nut turns at most 70 000 / 41.75 = 1 677 rpm relative to the screw
+    # = 41.75 mm (B-720), so the nut turns at most 70 000 / 41.75 = 1 677 rpm relative to the screw
     d = _design()
     p = design_params(d)
     assert p["nut_rotating"] == 1.0
@@ -170,8 +168,9 @@ def test_sag_only_on_a_horizontal_axis():
 
 
 def test_a_reductions_output_torque_turns_the_unit_not_the_screw():
-    """A gearbox driving a rotating-nut unit accelerates the unit's turning parts (THK B-721 "nut inertia"), not the
-    standing screw: its output torque (T2B, T2N checks) takes the same inertia as the motor torque does."""
+    """A gearbox driving a rotating-nut unit accelerates the unit's turning parts (THK B-721 "nut
+    inertia"), not the standing screw: its output torque (T2B, T2N checks) takes the same inertia as
+    the motor torque does."""
     from axisopt.model.drive import output_torques
 
     p = design_params(_design())

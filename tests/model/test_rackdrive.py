@@ -1,5 +1,6 @@
-"""The rack-and-pinion and linear-motor sub-assemblies (model.rackdrive, model.lmdrive) evaluate alike on
-floats, numpy arrays and CasADi symbols, and their sizing follows the vendors' steps (restated here)."""
+"""The rack-and-pinion and linear-motor sub-assemblies (model.rackdrive, model.lmdrive) evaluate
+alike on floats, numpy arrays and CasADi symbols, and their sizing follows the vendors' steps
+(restated here)."""
 
 from __future__ import annotations
 
@@ -45,8 +46,9 @@ def test_float_numpy_casadi_agree(which):
 
 
 def test_rack_sizing_restated_by_hand():
-    """The rack model's peak feed force, tooth force, motor peak torque and stiffness, by the vendors' steps
-    written out for the acceleration phase of this cycle (THK A-241, Apex, Yaskawa 11.2.4)."""
+    """The rack model's peak feed force, tooth force, motor peak torque and stiffness, by the
+    vendors' steps written out for the acceleration phase of this cycle (THK A-241, Apex, Yaskawa
+    11.2.4)."""
     p = RACK
     m = p["m_axis"] + p["m_parts"] + p["m_blocks"]
     resist = p["mu"] * (m * 9.80665 + p["normal"]) + p["f_seal"]

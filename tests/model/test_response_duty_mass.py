@@ -1,12 +1,12 @@
-"""A duty-cycle entry's own moving mass (a workpiece loaded or unloaded) and the holding torque at a stop, through
-the whole model, against THK's vertical conveyance example.
+"""A duty-cycle entry's own moving mass (a workpiece loaded or unloaded) and the holding torque at a
+stop, through the whole model, against THK's vertical conveyance example.
 
-THK General Catalog, ball screw section, "Examples of Selecting a Ball Screw", vertical conveyance system
-(A-736 to A-746): table m1 = 40 kg, work m2 = 10 kg, guide surface resistance f = 20 N (without load), lead 10 mm,
-eta 0.9, J = 1.58e-4 kg m^2, Jm = 5e-5 kg m^2; up and down at 0.3 m/s with 0.2 s ramps over 600 mm, then
-"When stationary (m2 = 0): TS = 658 N.mm, t4 = 7.6 s" (A-745: the work removed, the guide resistance helping
-to hold); uniform motion Tt1 = 900 and Tt2 = 830 N.mm (A-743); "the rated torque of the motor must be 743 N.mm
-or greater" (A-746).
+THK General Catalog, ball screw section, "Examples of Selecting a Ball Screw", vertical conveyance
+system (A-736 to A-746): table m1 = 40 kg, work m2 = 10 kg, guide surface resistance f = 20 N
+(without load), lead 10 mm, eta 0.9, J = 1.58e-4 kg m^2, Jm = 5e-5 kg m^2; up and down at 0.3 m/s
+with 0.2 s ramps over 600 mm, then "When stationary (m2 = 0): TS = 658 N.mm, t4 = 7.6 s" (A-745: the
+work removed, the guide resistance helping to hold); uniform motion Tt1 = 900 and Tt2 = 830 N.mm
+(A-743); "the rated torque of the motor must be 743 N.mm or greater" (A-746).
 """
 
 from __future__ import annotations
@@ -46,8 +46,8 @@ def _design(tmp_path: Path, cycle: str, name="d.yaml"):
 
 
 def _thk_response(tmp_path):
-    """THK's example through the model: its screw (15 mm x 800 mm), no coupling, no support-bearing drag (THK
-    counts the guide resistance alone), no nut preload."""
+    """THK's example through the model: its screw (15 mm x 800 mm), no coupling, no support-bearing
+    drag (THK counts the guide resistance alone), no nut preload."""
     p = design_params(load_design(_design(tmp_path, THK_CYCLE)))
     p.update(coupling_inertia=0.0, bearing_torque=0.0, span=0.8)
     return axis_response(p, np.array([0.1]), "fixed-supported", 0.0)
@@ -105,7 +105,8 @@ def test_a_dwells_force_is_held_and_counts_in_the_rms(tmp_path):
 
 
 def test_life_loads_take_each_phases_mass(tmp_path):
-    """Work lifted at 50 kg, brought down empty (40 kg): THK's phase loads (A-739) with each phase's mass."""
+    """Work lifted at 50 kg, brought down empty (40 kg): THK's phase loads (A-739) with each phase's
+    mass."""
     cycle = CYCLE.replace("{move: -600 mm}", "{move: -600 mm, moving_mass: 40 kg}")
     ev = evaluate(load_design(_design(tmp_path, cycle)), use_casadi=False)
     g, f, a = G, 20.0, 1.5
@@ -173,8 +174,9 @@ def test_bad_phase_mass_is_one_line_exit_2(tmp_path, capsys, value, words):
 
 
 def test_guide_block_loads_take_each_phases_mass():
-    """A horizontal table that returns empty: the return's weight and inertia on the blocks are the empty
-    table's, so the mean block load over the cycle falls, while the static load cases keep the axis's mass."""
+    """A horizontal table that returns empty: the return's weight and inertia on the blocks are the
+    empty table's, so the mean block load over the cycle falls, while the static load cases keep the
+    axis's mass."""
     import dataclasses
 
     from axisopt.physics import motion

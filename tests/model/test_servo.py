@@ -1,6 +1,6 @@
-"""The state-space model (model.statespace) is the model: its eigenfrequencies are the model's modes at every
-nut position, its frequency response is ``--frf``'s curve; python-control round trip; the servo rule's
-published examples (model.servo, physics.servo)."""
+"""The state-space model (model.statespace) is the model: its eigenfrequencies are the model's modes
+at every nut position, its frequency response is ``--frf``'s curve; python-control round trip; the
+servo rule's published examples (model.servo, physics.servo)."""
 
 from __future__ import annotations
 
@@ -35,8 +35,8 @@ def test_tuned_servo_is_stable_on_the_model(ev):
     for bw in r.position_bandwidth_Hz:
         assert 0.8 * g.kv / (2 * math.pi) < bw < 2.0 * g.kv / (2 * math.pi)
     # at constant speed the motor lags v / Kv; the table as much again as the guides' viscous damper
-    # deflects
-    # the chain (c_g v / k_total): ramp x_ref = v t, z(t) = z1 t + z0 with A z1 = -b v, A z0 = z1
+    # deflects the chain (c_g v / k_total): ramp x_ref = v t, z(t) = z1 t + z0 with A z1 = -b v, A
+    # z0 = z1
     i = frf_positions(ev)[1]
     A, B, C, D = closed_loop(state_space(ev, i), g)
     v = 0.1

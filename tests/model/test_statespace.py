@@ -1,6 +1,6 @@
-"""The state-space model (model.statespace) is the model: its eigenfrequencies are the model's modes at every
-nut position, its frequency response is ``--frf``'s curve; python-control round trip; the servo rule's
-published examples (model.servo, physics.servo)."""
+"""The state-space model (model.statespace) is the model: its eigenfrequencies are the model's modes
+at every nut position, its frequency response is ``--frf``'s curve; python-control round trip; the
+servo rule's published examples (model.servo, physics.servo)."""
 
 from __future__ import annotations
 
@@ -42,9 +42,9 @@ def test_open_loop_eigenfrequencies_are_the_model_modes_at_every_position(ev):
         k_c = held.stiffness[0, 0] - ev.at("k_drive", i) * r**2
         want = pdy.axial_torsional_frequencies(m[0], k_c, ev.at("k_drive", i), m[1], held.lead)
         assert held.natural_frequencies() == pytest.approx(want, rel=1e-9)
-        # the headline axial mode f_axial (motor held) leaves out the screw's rotary inertia on the
-        # coupling:
-        # the held model's first mode is at or below it and equal to it without that inertia
+        # the headline axial mode f_axial (motor held) leaves out the screw's rotary inertia on
+        # the coupling: the held model's first mode is at or below it and equal to it without that
+        # inertia
         assert held.natural_frequencies()[0] <= ev.at("f_axial", i) * (1 + 1e-12)
         spring = chain_at(ev, design_params(ev.design), i)
         spring["screw_inertia"] = 1e-12 * spring["screw_inertia"]

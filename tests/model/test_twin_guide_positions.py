@@ -1,7 +1,8 @@
-"""A twin gantry's guides with the cross carriage at its worst position (issue 53): its weight at the end of its
-stroke across the rails adds the roll moment m_c g s/2, which the four-block pattern shares as THK's formula for a
-horizontal table on two rails of two blocks (General Catalog A-84, condition 1: P = W/4 + W l3 / (2 l1), l1 the
-rail spacing, l3 the load's distance across from the pattern centre), written here apart from model.carriage."""
+"""A twin gantry's guides with the cross carriage at its worst position (issue 53): its weight at
+the end of its stroke across the rails adds the roll moment m_c g s/2, which the four-block pattern
+shares as THK's formula for a horizontal table on two rails of two blocks (General Catalog A-84,
+condition 1: P = W/4 + W l3 / (2 l1), l1 the rail spacing, l3 the load's distance across from the
+pattern centre), written here apart from model.carriage."""
 
 from dataclasses import replace
 

@@ -1,5 +1,6 @@
-"""Each part by its own vendor's rule (model.motorrule, model.loads.lift_off_load, the reduction's emergency
-torque), against the vendors' published rules and numbers, computed here apart from the model."""
+"""Each part by its own vendor's rule (model.motorrule, model.loads.lift_off_load, the reduction's
+emergency torque), against the vendors' published rules and numbers, computed here apart from the
+model."""
 
 import math
 from pathlib import Path
@@ -18,8 +19,8 @@ TEACHING = "problems/teaching_design.yaml"
 
 @pytest.mark.published
 def test_motor_rows_carry_their_vendors_rule():
-    """Yaskawa Sigma-7 11.2.1 (Trms <= rated), Mitsubishi MDS-D-SVJ3 7-1 eqs. 7-10 / 7-12 (Trms <= 0.8 Tst, an
-    unbalanced axis's TL <= 0.6 Tst), Siemens 1FT7 PFT7S 2.4.3 (RMS within S1)."""
+    """Yaskawa Sigma-7 11.2.1 (Trms <= rated), Mitsubishi MDS-D-SVJ3 7-1 eqs. 7-10 / 7-12 (Trms <=
+    0.8 Tst, an unbalanced axis's TL <= 0.6 Tst), Siemens 1FT7 PFT7S 2.4.3 (RMS within S1)."""
     m = default_catalog().motors
     want = {"Yaskawa": (1.0, 1.0), "Mitsubishi Electric": (0.8, 0.6), "Siemens": (1.0, 1.0)}
     for vendor, (rms, unb) in want.items():
@@ -30,8 +31,9 @@ def test_motor_rows_carry_their_vendors_rule():
 
 @pytest.mark.published
 def test_yaskawa_motor_held_to_its_rated_torque(tmp_path):
-    """The teaching design's SGM7G-13A (rated 8.34 N.m, YSK-S7): Yaskawa's rule holds it to 8.34 N.m, not the
-    6.67 N.m of Mitsubishi's 0.8; a problem may still ask 0.8 (axis.rms_torque_ratio)."""
+    """The teaching design's SGM7G-13A (rated 8.34 N.m, YSK-S7): Yaskawa's rule holds it to 8.34
+    N.m, not the 6.67 N.m of Mitsubishi's 0.8; a problem may still ask 0.8
+    (axis.rms_torque_ratio)."""
     text = (
         Path(TEACHING)
         .read_text(encoding="utf-8")
@@ -88,8 +90,8 @@ def _vertical(mass, lead, motor_rated, rms_ratio, unbalance_ratio):
 @pytest.mark.published
 def test_mitsubishi_unbalanced_axis_load_torque():
     """MDS-D-SVJ3 eq. 7-12: an unbalanced axis's load torque TL (the weight's torque plus friction,
-    MR-J2S-A 11-5: TU = W g dS / (2e3 pi eta)) within 0.6 Tst.  With no cycle the RMS is 0, so the unbalance
-    rule alone sets the need: margin = 0.6 Tst / TL."""
+    MR-J2S-A 11-5: TU = W g dS / (2e3 pi eta)) within 0.6 Tst.  With no cycle the RMS is 0, so the
+    unbalance rule alone sets the need: margin = 0.6 Tst / TL."""
     mass, lead, drag = 100.0, 0.010, 0.2
     from axisopt.model.drag import SCREW_EFFICIENCY
 
@@ -103,9 +105,9 @@ def test_mitsubishi_unbalanced_axis_load_torque():
 
 
 def _horizontal_transfer(cut_while_accelerating=0.0, axial_load=0.0):
-    """THK General Catalog A-724..A-727, selection example "high-speed transfer equipment (horizontal)":
-    m 60 kg, mu 0.003, f 15 N, Vmax 1 m/s, t1 = t3 = 0.15 s: Fa1 = 417 N (accelerating), Fa2 = 17 N, Fa3 =
-    -383 N, each phase its own load."""
+    """THK General Catalog A-724..A-727, selection example "high-speed transfer equipment
+    (horizontal)": m 60 kg, mu 0.003, f 15 N, Vmax 1 m/s, t1 = t3 = 0.15 s: Fa1 = 417 N
+    (accelerating), Fa2 = 17 N, Fa3 = -383 N, each phase its own load."""
     seg_fwd = motion.Segment("move", distance=1.0, speed=1.0, acceleration=1.0 / 0.15)
     seg_back = motion.Segment("move", distance=-1.0, speed=1.0, acceleration=1.0 / 0.15)
     phases = motion.Phases(motion.cycle_phases([seg_fwd, seg_back]), given=True)
@@ -145,11 +147,14 @@ def test_lift_off_takes_each_phase_its_own_load():
 
 @pytest.mark.published
 def test_buckling_by_how_the_nut_is_held(tmp_path):
-    """MiSUMi Economy catalog 2025 p. 1676 "Selection of Ball Screws 2", Allowable Axial Load calculation
-    example: root diameter 12.5 mm, fixed-support, distance between the points of buckling load 820 mm, m = 10:
-    P = 10 x 12.5^4 / 820^2 x 1e4 = 3 630 N.  The physics reproduces it within 2 %; the model's buckling check
-    with the nut a supported end (axis.buckling_nut_end: supported) takes MiSUMi's m = 10 over the fixed
-    bearing to the nut at the far stroke end, held fixed (THK A-726, the default) m = 20."""
+    """MiSUMi Economy catalog 2025 p. 1676 "Selection of Ball Screws 2", Allowable Axial Load
+    calculation
+    example: root diameter 12.5 mm, fixed-support, distance between the points of buckling load 820
+    mm, m = 10:
+    P = 10 x 12.5^4 / 820^2 x 1e4 = 3 630 N.  The physics reproduces it within 2 %; the model's
+    buckling check with the nut a supported end (axis.buckling_nut_end: supported) takes MiSUMi's m
+    = 10 over the fixed bearing to the nut at the far stroke end, held fixed (THK A-726, the
+    default) m = 20."""
     from axisopt.physics.checks import buckling_load
 
     assert buckling_load(0.0125, 0.820, "fixed-supported") == pytest.approx(3630.0, rel=0.02)
@@ -171,8 +176,9 @@ def test_buckling_by_how_the_nut_is_held(tmp_path):
 
 
 def test_rise_without_cycle_chooses_practice_or_balance(tmp_path):
-    """Without a duty cycle the rise is THK A-715's practice 3 K by default; ``rise_without_cycle: balance`` takes
-    the heat balance of the default cycle (the same balance the practice case prints as 'would give')."""
+    """Without a duty cycle the rise is THK A-715's practice 3 K by default;
+    ``rise_without_cycle: balance`` takes the heat balance of the default cycle (the same balance
+    the practice case prints as 'would give')."""
     text = Path(TEACHING).read_text(encoding="utf-8")
     f = tmp_path / "d.yaml"
     f.write_text(text, encoding="utf-8")

@@ -1,6 +1,7 @@
-"""Lead accuracy grades and the positioning-error rows against THK's General Catalog (T-GC, ball screw section
-"Accuracy of the Ball Screw" A-677..A-690, "Studying the Positioning Accuracy" A-712..A-716 and the selection
-examples A-723 and A-737) and HIWIN's technical information S99TE20-1610 Table 4.4."""
+"""Lead accuracy grades and the positioning-error rows against THK's General Catalog (T-GC, ball
+screw section "Accuracy of the Ball Screw" A-677..A-690, "Studying the Positioning Accuracy"
+A-712..A-716 and the selection examples A-723 and A-737) and HIWIN's technical information
+S99TE20-1610 Table 4.4."""
 
 import math
 
@@ -34,8 +35,7 @@ def test_thk_a737_selecting_lead_angle_accuracy_c10():
 @pytest.mark.published
 def test_thk_a713_positioning_error_from_axial_rigidity():
     # THK A-713/A-714: BNF2512 (d1 = 21.9 mm), fixed-supported, 1000 N + 500 N vertical, L = 100 mm
-    # and 700 mm:
-    # Ks = 776 and 111 N/um, deflections 1.9 and 13.5 um, positioning error 11.6 um
+    # and 700 mm: Ks = 776 and 111 N/um, deflections 1.9 and 13.5 um, positioning error 11.6 um
     k1 = screw_stiffness(21.9e-3, 0.1, 1.0, "fixed-supported")
     k2 = screw_stiffness(21.9e-3, 0.7, 1.0, "fixed-supported")
     assert (k1 / 1e6, k2 / 1e6) == (pytest.approx(776, abs=0.5), pytest.approx(111, abs=0.5))

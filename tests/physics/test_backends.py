@@ -26,9 +26,9 @@ from axisopt.physics import (
     thermal,
 )
 
-# complex numpy-only FRFs; selector helper (no numbers)
-# carriage.mean_load takes sequences: tests/physics/test_carriage_published.py checks its backends
-# load_factor_default picks a table row by a float speed (a choice, not a formula)
+# complex numpy-only FRFs; selector helper (no numbers) carriage.mean_load takes sequences:
+# tests/physics/test_carriage_published.py checks its backends load_factor_default picks a table row
+# by a float speed (a choice, not a formula)
 EXCLUDED = {
     "dynamic_compliance",
     "drive_train_compliance",

@@ -1,5 +1,5 @@
-"""Physics formulas against published numbers (source named per test; tolerance = half a unit of the last
-printed digit unless a comment explains otherwise)."""
+"""Physics formulas against published numbers (source named per test; tolerance = half a unit of the
+last printed digit unless a comment explains otherwise)."""
 
 from __future__ import annotations
 
@@ -14,8 +14,7 @@ RPM = 2.0 * math.pi / 60.0
 
 # Seed eq. 27: k_r = k_a/2 cot^2 alpha, and catalog [12]: c_r = 6 / 3.5 / 2 c_a at 15 / 20 / 25 deg.
 # They disagree: eq. 27 gives 6.96 / 3.77 / 2.30, 7-16 % above the catalog.  Each is tested against
-# its own
-# statement, and the disagreement is pinned.
+# its own statement, and the disagreement is pinned.
 @pytest.mark.published
 @pytest.mark.parametrize(
     ("deg", "catalog", "eq27"), [(15, 6.0, 6.96), (20, 3.5, 3.77), (25, 2.0, 2.30)]

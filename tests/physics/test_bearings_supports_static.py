@@ -1,5 +1,5 @@
-"""Issue 38: the support-bearing set's static check, the mounting-stiffness estimates and the load factor default,
-each against the vendors' published numbers (sources in each test)."""
+"""Issue 38: the support-bearing set's static check, the mounting-stiffness estimates and the load
+factor default, each against the vendors' published numbers (sources in each test)."""
 
 from __future__ import annotations
 
@@ -20,8 +20,7 @@ def _series(*k):
 
 
 # NSK super-precision bearings (Russian ed.) p. 111, 25TAC62B: limiting axial load 40.5 / 81.5 / 122
-# kN with 1 / 2 /
-# 3 rows loaded; Table 1.2 (p. 139): static rating of multi-row sets x 2, 3, 4.
+# kN with 1 / 2 / 3 rows loaded; Table 1.2 (p. 139): static rating of multi-row sets x 2, 3, 4.
 @pytest.mark.published
 @pytest.mark.parametrize(("rows", "printed"), [(2, 81.5), (3, 122.0)])
 def test_static_rating_grows_with_the_rows_as_nsk_prints(rows, printed):
@@ -32,8 +31,9 @@ def test_static_rating_grows_with_the_rows_as_nsk_prints(rows, printed):
 
 @pytest.mark.published
 def test_nsk_permissible_axial_load_is_seven_tenths_of_the_limiting_load():
-    """NSK p. 111 footnote (2): permissible axial load = 0.7 x limiting axial load; 25TAC62B DF 0.7 x 40.5 =
-    28.35 kN.  The catalog row carries NSK's limiting load and 1/0.7 as its least static safety."""
+    """NSK p. 111 footnote (2): permissible axial load = 0.7 x limiting axial load; 25TAC62B DF 0.7
+    x 40.5 = 28.35 kN.  The catalog row carries NSK's limiting load and 1/0.7 as its least static
+    safety."""
     row = load_catalogs().bearings.loc["NSK-25TAC62B-DF-C10"]
     c0, s0 = float(row["static_load_rating"]), float(row["static_safety"])
     assert c0 == pytest.approx(40.5 * KN)
@@ -50,8 +50,8 @@ def test_nsk_permissible_axial_load_is_seven_tenths_of_the_limiting_load():
 
 @pytest.mark.published
 def test_ibc_set_static_rating_and_safety():
-    """IBC TI-I-5010.2 eq. 2.5 Cao_set = i Cao_single, eq. 2.6 S0a = Cao / Pao > 2.5; BS25M62 Cao 42 800 N (p. 8):
-    a tandem pair in the load direction takes 85 600 N / 2.5 = 34 240 N."""
+    """IBC TI-I-5010.2 eq. 2.5 Cao_set = i Cao_single, eq. 2.6 S0a = Cao / Pao > 2.5; BS25M62 Cao 42
+    800 N (p. 8): a tandem pair in the load direction takes 85 600 N / 2.5 = 34 240 N."""
     c0 = pb.row_static_rating(42_800.0, 2, 1)
     assert c0 == pytest.approx(85_600.0)
     assert pb.support_static_margin(
@@ -61,9 +61,10 @@ def test_ibc_set_static_rating_and_safety():
 
 @pytest.mark.published
 def test_dfd_set_loaded_against_its_single_row_is_rated_as_the_pair():
-    """A DFD set (2 rows one way, 1 the other) is printed with the 2-row limiting load (NSK 25TAC62B DFD 81.5 kN);
-    a load against the single row meets NSK's 1-row permissible load 0.7 x 40.5 = 28.35 kN (within NSK's
-    rounding of 81.5 = 2 x 40.75), and the static set load (pretension) is carried by the two rows."""
+    """A DFD set (2 rows one way, 1 the other) is printed with the 2-row limiting load (NSK 25TAC62B
+    DFD 81.5 kN); a load against the single row meets NSK's 1-row permissible load 0.7 x 40.5 =
+    28.35 kN (within NSK's rounding of 81.5 = 2 x 40.75), and the static set load (pretension) is
+    carried by the two rows."""
     row = load_catalogs().bearings.loc["NSK-25TAC62B-DFD-C10"]
     p = {
         "bearing_static_load": float(row["static_load_rating"]),
@@ -81,8 +82,7 @@ def test_dfd_set_loaded_against_its_single_row_is_rated_as_the_pair():
 
 
 # IBC TI-I-5010.2: bare duplex sets in O arrangement (p. 9, "Axial stiffness Sax", L/M/H preload)
-# against the
-# flange/pillow-block units with the same sets and preloads (p. 22, sec. 4.6), N/um.
+# against the flange/pillow-block units with the same sets and preloads (p. 22, sec. 4.6), N/um.
 IBC_BARE_VS_UNIT = (
     (460, 450),
     (580, 570),
@@ -106,7 +106,8 @@ IBC_BARE_VS_UNIT = (
 @pytest.mark.published
 @pytest.mark.parametrize(("bare", "unit"), IBC_BARE_VS_UNIT)
 def test_default_housing_is_never_stiffer_than_ibc_units(bare, unit):
-    """The set with the default housing reads at most the published unit (never kinder) and within 3 % of it."""
+    """The set with the default housing reads at most the published unit (never kinder) and within 3
+    % of it."""
     k_b = bare * N_PER_UM
     with_housing = _series(k_b, pb.housing_stiffness_default(k_b)) / N_PER_UM
     assert with_housing <= unit + 0.5
@@ -115,8 +116,9 @@ def test_default_housing_is_never_stiffer_than_ibc_units(bare, unit):
 
 @pytest.mark.published
 def test_default_bracket_takes_thk_mounting_allowance_once_more():
-    """THK A-709: the nut's table rigidity excludes the nut-mounting parts, "roughly 80 %" of it is the actual
-    value; the default bracket takes the same share again: nut and bracket in series 0.8 x the nut."""
+    """THK A-709: the nut's table rigidity excludes the nut-mounting parts, "roughly 80 %" of it is
+    the actual value; the default bracket takes the same share again: nut and bracket in series 0.8
+    x the nut."""
     k_n = 0.8 * 1470 * N_PER_UM  # THK BNFN4010-5 table rigidity 1470 N/um (B-670), x 0.8
     assert _series(k_n, pn.bracket_stiffness_default(k_n)) == pytest.approx(0.8 * k_n)
 

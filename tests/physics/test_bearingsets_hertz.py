@@ -1,6 +1,6 @@
-"""The Hertz split of a support set's row groups (physics.bearingsets.hertz_set_halves, issue 53: NSK rates its
-sets' groups by it) against IBC TI-I-5010.2/E Table 2.2's unloading points, which follow from the same law,
-and against the linear split it refines."""
+"""The Hertz split of a support set's row groups (physics.bearingsets.hertz_set_halves, issue 53:
+NSK rates its sets' groups by it) against IBC TI-I-5010.2/E Table 2.2's unloading points, which
+follow from the same law, and against the linear split it refines."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ FV = 1000.0  # IBC's Fv: the preload of two of the bearings as a DB pair [N]
 @pytest.mark.published
 @pytest.mark.parametrize(("n_load", "n_other", "x"), [(1, 1, 2.83), (2, 1, 5.66), (3, 1, 8.49)])
 def test_the_other_group_unloads_at_ibc_table_2_2(n_load, n_other, x):
-    """IBC Table 2.2: the opposite group unloads at Fae = X Fv (X 2.83, 5.66, 8.49 for 1, 2, 3 against 1), the
-    set's own preload being set_preload_ratio x Fv (1, 1.36, 1.57 Fv)."""
+    """IBC Table 2.2: the opposite group unloads at Fae = X Fv (X 2.83, 5.66, 8.49 for 1, 2, 3
+    against 1), the set's own preload being set_preload_ratio x Fv (1, 1.36, 1.57 Fv)."""
     pre = set_preload_ratio(n_load, n_other) * FV
     before = hertz_set_halves(pre, 0.995 * x * FV, float(n_load), float(n_other))
     after = hertz_set_halves(pre, 1.005 * x * FV, float(n_load), float(n_other))
@@ -37,7 +37,8 @@ def test_groups_balance_the_load_and_stay_below_the_linear_split(load):
 
 
 def test_the_deflections_match():
-    """Each bearing deflects as (Q / K)^(2/3): the pressed group's contacts close by what the other's open."""
+    """Each bearing deflects as (Q / K)^(2/3): the pressed group's contacts close by what the
+    other's open."""
     pre = set_preload_ratio(3, 1) * FV
     plus, minus = (float(v) for v in hertz_set_halves(pre, np.float64(2000.0), 3.0, 1.0))
     d = lambda q, n: (q / n) ** (2 / 3)  # noqa: E731

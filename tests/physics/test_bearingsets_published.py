@@ -9,9 +9,8 @@ import pytest
 from axisopt.physics import bearingsets
 
 # IBC TI-I-5010.2/E Table 2.2: the unloading point Fae > X Fv of each arrangement (bearings loaded
-# against the
-# opposite ones; Fv the bearings' preload as a DB pair) and the single bearing's preload in a set
-# against one
+# against the opposite ones; Fv the bearings' preload as a DB pair) and the single bearing's preload
+# in a set against one
 IBC_X = [
     (1, 1, 2.83),
     (2, 1, 5.66),
@@ -48,15 +47,16 @@ def test_lift_off_factor_ibc_table_2_2(n_load, n_other, x):
 @pytest.mark.published
 @pytest.mark.parametrize(("n", "ratio"), IBC_SINGLE)
 def test_single_bearing_preload_ibc_table_2_2(n, ratio):
-    """IBC Table 2.2, the single bearing of n against 1 ('B = 1.36 / 1.57 / 1.71 Fv - ...' at Fae = 0)."""
+    """IBC Table 2.2, the single bearing of n against 1 ('B = 1.36 / 1.57 / 1.71 Fv - ...' at Fae =
+    0)."""
     assert bearingsets.set_preload_ratio(n, 1) == pytest.approx(ratio, abs=0.006)
 
 
 @pytest.mark.published
 @pytest.mark.parametrize("bearing", sorted(NSK_168))
 def test_triplex_quadruplex_from_duplex_nsk_p168(bearing):
-    """NSK p. 168: the triplex (2 against 1) and quadruplex (2 against 2) preload and rigidity from the duplex's
-    by the Hertz set rule, within 4 % (NSK rounds and grinds to preload classes)."""
+    """NSK p. 168: the triplex (2 against 1) and quadruplex (2 against 2) preload and rigidity from
+    the duplex's by the Hertz set rule, within 4 % (NSK rounds and grinds to preload classes)."""
     (p2, k2), (p3, k3), (p4, k4) = NSK_168[bearing]
     assert p2 * bearingsets.set_preload_ratio(2, 1) == pytest.approx(p3, rel=0.04)
     assert p2 * bearingsets.set_preload_ratio(2, 2) == pytest.approx(p4, rel=0.04)
@@ -71,8 +71,9 @@ def test_db_pair_lift_off_skf():
 
 
 def test_set_split_bounds_hertz():
-    """The linear split (IBC's form) against Hertz's exact split of a 3-against-1 set, solved here by bisection
-    from delta ~ (Q/n)^(2/3): never below it, at most 8 % above, equal at no load and at lift-off."""
+    """The linear split (IBC's form) against Hertz's exact split of a 3-against-1 set, solved here
+    by bisection from delta ~ (Q/n)^(2/3): never below it, at most 8 % above, equal at no load and
+    at lift-off."""
     p0 = 1.0e4
     lift = bearingsets.set_lift_off(p0, 3, 1)
     for frac in np.linspace(0.0, 1.0, 11):

@@ -1,5 +1,6 @@
 """Timing-belt stages (physics.belt) against the vendors' published numbers, belt geometry computed
-independently, and the support-bearing set and belt formulas on floats, numpy arrays and CasADi SX alike."""
+independently, and the support-bearing set and belt formulas on floats, numpy arrays and CasADi SX
+alike."""
 
 from __future__ import annotations
 
@@ -14,8 +15,9 @@ from axisopt.physics import bearingsets, belt
 
 @pytest.mark.published
 def test_synchroflex_at10_worked_example():
-    """ContiTech SYNCHROFLEX pp. 42-43: AT10, z = 25, a = 625 mm, M = 300 N m: F_U = 2e3 M / d0 = 7539 N,
-    L = 2 a + z t = 1500 mm, and with z_e = 12 and Mspec 11.70 Ncm/cm the width 8.54 cm carries the 300 N m."""
+    """ContiTech SYNCHROFLEX pp. 42-43: AT10, z = 25, a = 625 mm, M = 300 N m: F_U = 2e3 M / d0 =
+    7539 N, L = 2 a + z t = 1500 mm, and with z_e = 12 and Mspec 11.70 Ncm/cm the width 8.54 cm
+    carries the 300 N m."""
     d0 = belt.pitch_diameter(10e-3, 25)
     assert 2.0 * 300.0 / d0 == pytest.approx(7539, abs=1.0)
     assert belt.belt_length(d0, d0, 0.625) == pytest.approx(1.500, abs=1e-9)
@@ -28,8 +30,8 @@ def test_synchroflex_at10_worked_example():
 
 @pytest.mark.published
 def test_synchroflex_mspec_from_fuspec_at10():
-    """SYNCHROFLEX AT10 GEN III p. 55: FUspec 91.88 N/cm and Mspec 14.63 Ncm/cm at n = 0 (and 61.88 / 9.85 at
-    1000 min^-1) are one tooth's pull times the pitch radius per tooth, p / 2 pi."""
+    """SYNCHROFLEX AT10 GEN III p. 55: FUspec 91.88 N/cm and Mspec 14.63 Ncm/cm at n = 0 (and 61.88
+    / 9.85 at 1000 min^-1) are one tooth's pull times the pitch radius per tooth, p / 2 pi."""
     for fu, m in ((91.88, 14.63), (61.88, 9.85)):
         one_tooth = (
             belt.tooth_shear_pull(fu * 100.0, 1.0, 0.01) * 0.5 * belt.pitch_diameter(10e-3, 1)
@@ -39,9 +41,9 @@ def test_synchroflex_mspec_from_fuspec_at10():
 
 @pytest.mark.published
 def test_elatech_permissible_pull_htd5m():
-    """ELATECH HTD5M (cat. p. 36): FUspez 19.23 N/cm at 3000 min^-1, at most 12 teeth counted: 50 mm wide, a
-    pulley with 15 teeth in mesh carries 19.23 x 12 x 5 = 1153.8 N; the cords (F_Tzul 5060 N) with F_TV = F_U
-    allow 5060 / 1.5 (tight span F_TV + F_U / 2)."""
+    """ELATECH HTD5M (cat. p. 36): FUspez 19.23 N/cm at 3000 min^-1, at most 12 teeth counted: 50 mm
+    wide, a pulley with 15 teeth in mesh carries 19.23 x 12 x 5 = 1153.8 N; the cords (F_Tzul 5060
+    N) with F_TV = F_U allow 5060 / 1.5 (tight span F_TV + F_U / 2)."""
     ze = belt.teeth_in_mesh(32.0, 0.05, 0.05, 0.2)  # equal pulleys: half the teeth, 16 -> 12
     assert ze == pytest.approx(12.0)
     assert belt.effective_pull(1923.0, ze, 0.05, 5060.0) == pytest.approx(1153.8, rel=1e-9)
@@ -49,7 +51,8 @@ def test_elatech_permissible_pull_htd5m():
 
 
 def test_belt_geometry_independent():
-    """Geometry written out independently: the wrap of a 1.5:1 stage and its span by the tangent construction."""
+    """Geometry written out independently: the wrap of a 1.5:1 stage and its span by the tangent
+    construction."""
     d1, d2, c = 0.05093, 0.07639, 0.1294
     alpha = math.asin((d2 - d1) / (2 * c))
     assert belt.wrap_angle(d1, d2, c) == pytest.approx(math.pi - 2 * alpha, rel=1e-12)

@@ -1,5 +1,7 @@
-"""The bridge's yaw inertia from its parts (physics.gantry.bridge_yaw_inertia), against the rigid-body sum written
-here: a slender beam about its centre m L^2 / 12, point masses at +-L/2 by the parallel-axis theorem."""
+"""The bridge's yaw inertia from its parts (physics.gantry.bridge_yaw_inertia), against the
+rigid-body sum written
+here: a slender beam about its centre m L^2 / 12, point masses at +-L/2 by the parallel-axis
+theorem."""
 
 import pytest
 

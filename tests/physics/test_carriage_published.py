@@ -1,7 +1,7 @@
-"""Carriage physics against vendor worked examples (each test names its source; tolerance: the example's own
-rounding, said per test).  Texts: THK General Catalog (English, PDF pages as printed A-nnn) and HIWIN
-G99TE20-1808 Linear Guideway Technical Information, as stored in GitHub ArtemFilin1990/Mar (see
-catalogs/SOURCES.md, keys T-GC and H-LG)."""
+"""Carriage physics against vendor worked examples (each test names its source; tolerance: the
+example's own rounding, said per test).  Texts: THK General Catalog (English, PDF pages as printed
+A-nnn) and HIWIN G99TE20-1808 Linear Guideway Technical Information, as stored in GitHub
+ArtemFilin1990/Mar (see catalogs/SOURCES.md, keys T-GC and H-LG)."""
 
 from __future__ import annotations
 
@@ -17,7 +17,8 @@ G_THK = 9.8  # THK's examples use g = 9.8 m/s^2
 
 
 def _corners(forces, n, c_pitch, c_roll, c_yaw):
-    """Radial and lateral loads of the four corners (CORNERS order) for forces [(fx, fy, fn, x, y, h), ...]."""
+    """Radial and lateral loads of the four corners (CORNERS order) for forces [(fx, fy, fn, x, y,
+    h), ...]."""
     mp = mr = my = 0.0
     fn = fy = 0.0
     for fx_, fy_, fn_, x, y, h in forces:
@@ -33,20 +34,14 @@ def _corners(forces, n, c_pitch, c_roll, c_yaw):
 
 
 # THK General Catalog A-103..A-107, "Example of Calculating the Nominal Life (1) - with Horizontal
-# Mount and
-# High-speed Acceleration": HSR35LA2SS, C = 50.2 kN, C0 = 81.4 kN; m1 = 800 kg at l2 = 120 mm along
-# and
-# l3 = 50 mm across the centre, l5 = 350 mm above the drive; m2 = 500 kg at the centre, l4 = 200 mm;
-# block
-# spacing l0 = 600 mm, rail spacing l1 = 400 mm; alpha1 = 10, alpha3 = 3.333 m/s^2; s1 = 12.5, s2 =
-# 1400,
-# s3 = 37.5 mm; fw = 1.5.  Blocks No.1..No.4 are the corners (-,+), (+,+), (+,-), (-,-) (m1 on the
-# +x, +y side).
-# THK rounds its intermediate sums to 0.1 N: loads within 0.5 N (the printed digit), fS within 0.05,
-# Pm within
-# 0.05 N, and lives within 1 % (THK prints 3 significant figures of lives it computed from rounded
-# loads:
-# its 20 600 km is (50.2/(1.5 x 4.4922))^3 x 50 = 20 674 km).
+# Mount and High-speed Acceleration": HSR35LA2SS, C = 50.2 kN, C0 = 81.4 kN; m1 = 800 kg at l2 = 120
+# mm along and l3 = 50 mm across the centre, l5 = 350 mm above the drive; m2 = 500 kg at the centre,
+# l4 = 200 mm; block spacing l0 = 600 mm, rail spacing l1 = 400 mm; alpha1 = 10, alpha3 = 3.333
+# m/s^2; s1 = 12.5, s2 = 1400, s3 = 37.5 mm; fw = 1.5.  Blocks No.1..No.4 are the corners (-,+),
+# (+,+), (+,-), (-,-) (m1 on the +x, +y side).  THK rounds its intermediate sums to 0.1 N: loads
+# within 0.5 N (the printed digit), fS within 0.05, Pm within 0.05 N, and lives within 1 % (THK
+# prints 3 significant figures of lives it computed from rounded loads: its 20 600 km is (50.2/(1.5
+# x 4.4922))^3 x 50 = 20 674 km).
 THK1 = dict(
     m1=800.0, m2=500.0, l0=600 * MM, l1=400 * MM, l2=120 * MM, l3=50 * MM, l4=200 * MM, l5=350 * MM
 )
@@ -125,15 +120,11 @@ def test_thk_horizontal_static_safety_and_life():
 
 
 # THK General Catalog A-108..A-110, "Example of Calculating the Nominal Life (2) - with Vertical
-# Mount":
-# HSR25CA2SS, C = 19.9 kN, C0 = 34.4 kN; the masses act along the rail (gravity is the feed force)
-# at heights
-# l4 = 150 (m1 = 200 kg), l5 = 250 (m2 = 100 kg), l3 = 280 mm (m0 = 100 kg, carried up only) and
-# lateral
-# offsets l2 = 50 mm (m1, m2), l1 = 80 mm (m0); block spacing l0 = 300 mm; fw = 1.2.  Printed: Pu =
-# 1355.6,
-# Ptu = 375.7, PEu = 1731.3, Pd = 898.3, Ptd = 245, PEd = 1143.3 N; fS = 19.9; Pm = 1495.1 N; L = 68
-# 200 km.
+# Mount": HSR25CA2SS, C = 19.9 kN, C0 = 34.4 kN; the masses act along the rail (gravity is the feed
+# force) at heights l4 = 150 (m1 = 200 kg), l5 = 250 (m2 = 100 kg), l3 = 280 mm (m0 = 100 kg,
+# carried up only) and lateral offsets l2 = 50 mm (m1, m2), l1 = 80 mm (m0); block spacing l0 = 300
+# mm; fw = 1.2.  Printed: Pu = 1355.6, Ptu = 375.7, PEu = 1731.3, Pd = 898.3, Ptd = 245, PEd =
+# 1143.3 N; fS = 19.9; Pm = 1495.1 N; L = 68 200 km.
 @pytest.mark.published
 def test_thk_vertical_block_loads_safety_life():
     l0 = 300 * MM
@@ -161,16 +152,13 @@ def test_thk_vertical_block_loads_safety_life():
     assert checks.guide_life_distance(19.9e3, pm, 1.2) / 1e3 == pytest.approx(68_200, abs=50)
 
 
-# THK General Catalog A-87, "[Example of calculation]" with moment-equivalent factors (1/mm):
-# one block SSR20XV1, mg = 98 N at l1 = 200 mm along and l2 = 100 mm across the block, KAR1 = 0.275,
+# THK General Catalog A-87, "[Example of calculation]" with moment-equivalent factors (1/mm): one
+# block SSR20XV1, mg = 98 N at l1 = 200 mm along and l2 = 100 mm across the block, KAR1 = 0.275,
 # KAL1 = 0.137, KCR = 0.129, KCL = 0.0644: P1 = 6752, P2 = -1323, P3 = -3218, P4 = 4857 N (printed
-# to 1 N);
-# two blocks in close contact SNS30R2, mg = 49 N, l1 = 200, l2 = 150 mm, KAR2 = 0.018, KAL2 =
-# 0.0151,
-# KCR = 0.0842, KCL = 0.0707: P1 = 510.3, P2 = 186, P3 = -383.3, P4 = -58.9 N.  THK's radial-type
-# blocks
-# (SSR, SNS) have separate radial (R) and reverse-radial (L) factors: each P_n takes the factors of
-# its signs.
+# to 1 N); two blocks in close contact SNS30R2, mg = 49 N, l1 = 200, l2 = 150 mm, KAR2 = 0.018, KAL2
+# = 0.0151, KCR = 0.0842, KCL = 0.0707: P1 = 510.3, P2 = 186, P3 = -383.3, P4 = -58.9 N.  THK's
+# radial-type blocks (SSR, SNS) have separate radial (R) and reverse-radial (L) factors: each P_n
+# takes the factors of its signs.
 @pytest.mark.published
 def test_thk_moment_equivalent_factors_single_and_double_block():
     mg, l1, l2 = 98.0, 200 * MM, 100 * MM
@@ -186,8 +174,7 @@ def test_thk_moment_equivalent_factors_single_and_double_block():
     assert p(0.137, 0.0644, -1, -1) == pytest.approx(-3218, abs=0.5)
     assert p(0.275, 0.0644, 1, -1) == pytest.approx(4857, abs=0.5)
     # two blocks in close contact on one rail: the pair takes the pitch moment with its double
-    # rating (KA2),
-    # the roll moment is shared by the two blocks (KC / 2)
+    # rating (KA2), the roll moment is shared by the two blocks (KC / 2)
     mg, l1, l2 = 49.0, 200 * MM, 150 * MM
     mp, mr, _ = cr.carriage_moments(0.0, 0.0, mg, l1, l2, 0.0)
     kw = dict(n=2.0, per_roll=2.0, pitch=mp, roll=mr, w=mg)
@@ -198,12 +185,9 @@ def test_thk_moment_equivalent_factors_single_and_double_block():
 
 
 # HIWIN G99TE20-1808 §1-5-4 Table 1-6 "Calculation Example for Service Life": HGH30CA, C = 38.74 kN,
-# preload Z0;
-# block spacing d = 600 mm; weight W = 15 kN acting along the rail at h = 200 mm, force F = 1 kN
-# opposing it
-# at l = 250 mm: P1 ~ P4 = W h / (2 d) - F l / (2 d) = 2.29 kN; fh = ft = 1, fw = 2: L = 30 258 km
-# (from the
-# rounded 2.29 kN).
+# preload Z0; block spacing d = 600 mm; weight W = 15 kN acting along the rail at h = 200 mm, force
+# F = 1 kN opposing it at l = 250 mm: P1 ~ P4 = W h / (2 d) - F l / (2 d) = 2.29 kN; fh = ft = 1, fw
+# = 2: L = 30 258 km (from the rounded 2.29 kN).
 @pytest.mark.published
 def test_hiwin_life_with_load_factor():
     c = float(cr.moment_share(2.0, 600 * MM, 0.0, 2.0))

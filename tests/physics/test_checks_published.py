@@ -1,5 +1,5 @@
-"""Physics formulas against published numbers (source named per test; tolerance = half a unit of the last
-printed digit unless a comment explains otherwise)."""
+"""Physics formulas against published numbers (source named per test; tolerance = half a unit of the
+last printed digit unless a comment explains otherwise)."""
 
 from __future__ import annotations
 
@@ -17,9 +17,9 @@ RPM = 2.0 * math.pi / 60.0
 
 
 # MiSUMi Economy catalog p. 1675 (selection example): Ø15 lead 5, fixed-supported, l = 820 mm, root
-# 12.5 mm
-# -> 3630 N.  MiSUMi uses the rounded eta_2 = 10; the exact 0.5 * 2 * pi^3 E / 64 gives 9.98, hence
-# 3623.7 N (rel. 1.8e-3).  With the vendor's rounded coefficient the half-unit tolerance holds.
+# 12.5 mm -> 3630 N.  MiSUMi uses the rounded eta_2 = 10; the exact 0.5 * 2 * pi^3 E / 64 gives
+# 9.98, hence 3623.7 N (rel. 1.8e-3).  With the vendor's rounded coefficient the half-unit tolerance
+# holds.
 @pytest.mark.published
 def test_buckling_misumi_example():
     p = checks.buckling_load(root_diameter=12.5 * MM, length=820 * MM, mounting="fixed-supported")
@@ -29,10 +29,8 @@ def test_buckling_misumi_example():
 
 
 # THK catalog A15-30 eq. 5: eta_2 = 1.3 / 10 / 20 (and 5 supported-supported, vendor-formulas.md
-# [DERIVED]),
-# i.e. P1 [N] = eta_2 d^4 / l^2 * 1e4 with d, l in mm.  Exact values 1.248 / 9.98 / 19.96 / 4.99;
-# THK prints
-# 1.248 as 1.3 (rounding up), so that row is checked at 0.06.
+# [DERIVED]), i.e. P1 [N] = eta_2 d^4 / l^2 * 1e4 with d, l in mm.  Exact values 1.248 / 9.98 /
+# 19.96 / 4.99; THK prints 1.248 as 1.3 (rounding up), so that row is checked at 0.06.
 @pytest.mark.published
 @pytest.mark.parametrize(
     ("mounting", "eta2", "tol"),
@@ -63,10 +61,8 @@ def test_life_misumi_example():
 
 
 # THK catalog A15-32 eq. 7: N1 = lambda_2 d / l^2 * 1e7 [1/min] (d, l in mm), lambda_2 = 3.4 / 9.7 /
-# 15.1 /
-# 21.9 including 0.8.  Derived from lambda_1 = 1.875 / 3.142 / 3.927 / 4.73 (vendor-formulas.md:
-# 3.44, 9.66,
-# 15.09, 21.89).
+# 15.1 / 21.9 including 0.8.  Derived from lambda_1 = 1.875 / 3.142 / 3.927 / 4.73
+# (vendor-formulas.md: 3.44, 9.66, 15.09, 21.89).
 @pytest.mark.published
 @pytest.mark.parametrize(
     ("mounting", "lambda2"),
@@ -84,9 +80,8 @@ def test_critical_speed_thk_lambda2(mounting, lambda2):
 
 
 # THK LM Guide selection: the dynamic load rating C is the load at which 90 % of blocks reach 50 km
-# (balls)
-# or 100 km (rollers); L = (C/P)^3 x 50 km and (C/P)^(10/3) x 100 km.  HIWIN G99TE20 divides C by
-# f_w.
+# (balls) or 100 km (rollers); L = (C/P)^3 x 50 km and (C/P)^(10/3) x 100 km.  HIWIN G99TE20 divides
+# C by f_w.
 @pytest.mark.published
 def test_guide_life_definition_thk():
     assert checks.guide_life_distance(30e3, 30e3) == pytest.approx(50e3, rel=1e-12)
@@ -101,11 +96,9 @@ def test_guide_life_definition_thk():
 
 
 # THK General Catalog A-738..A-740, worked example 2 (vertical conveyance): screw d1 = 12.5 mm, the
-# section
-# between the nut and the bearing counted "fixed-fixed", l_a = 700 mm: P1 = 20 x 12.5^4 / 700^2 x
-# 10^4 = 9960 N.
-# eta_2 = 20 is THK's rounding of 0.5 x 4 pi^2 E / 64 x 1e-4 with E = 206 GPa (19.96): 0.3 %
-# allowed.
+# section between the nut and the bearing counted "fixed-fixed", l_a = 700 mm: P1 = 20 x 12.5^4 /
+# 700^2 x 10^4 = 9960 N. eta_2 = 20 is THK's rounding of 0.5 x 4 pi^2 E / 64 x 1e-4 with E = 206 GPa
+# (19.96): 0.3 % allowed.
 @pytest.mark.published
 def test_buckling_thk_worked_example_nut_counts_as_fixed():
     assert checks.buckling_load(12.5e-3, 0.700, "fixed-fixed") == pytest.approx(9960, rel=3e-3)
@@ -124,14 +117,11 @@ def test_model_counts_the_nut_as_a_fixed_end():
 
 
 # A preloaded support-bearing set's life as NSK computes it (super-precision bearings, life of
-# preloaded sets:
-# each row group under its share of preload and load, the groups' lives combined with e = 1.1), on
-# HIWIN's
-# WBK30DFD (Table 8.12: C_dyn 47.5 kN for the two rows of the stronger direction, preload 4.5 kN);
-# the single
-# row of the other direction rated 47.5 x (1/2)^0.7 kN (NSK TAC B: 1, 2 rows 28.5 / 46.5 kN; IBC eq.
-# 2.4),
-# L10 = (C / (f_w P))^3 x 1e6 rev.  Written out here apart from physics.life.
+# preloaded sets: each row group under its share of preload and load, the groups' lives combined
+# with e = 1.1), on HIWIN's WBK30DFD (Table 8.12: C_dyn 47.5 kN for the two rows of the stronger
+# direction, preload 4.5 kN); the single row of the other direction rated 47.5 x (1/2)^0.7 kN (NSK
+# TAC B: 1, 2 rows 28.5 / 46.5 kN; IBC eq. 2.4), L10 = (C / (f_w P))^3 x 1e6 rev.  Written out here
+# apart from physics.life.
 @pytest.mark.published
 def test_support_bearing_life_in_the_model():
     import dataclasses
@@ -149,9 +139,8 @@ def test_support_bearing_life_in_the_model():
     c1 = c2 * 0.5**0.7
 
     # issue 54: a 2-against-1 set's groups by IBC Table 2.2's linear split, from the set's preload
-    # (1.36 Fv)
-    # to its unloading point: 5.66 Fv pressing the pair, 2.83 Fv pressing the single (Fv = pre /
-    # 1.36)
+    # (1.36 Fv) to its unloading point: 5.66 Fv pressing the pair, 2.83 Fv pressing the single (Fv =
+    # pre / 1.36)
     def split(lift):
         pressed = pre + f * (lift - pre) / lift if f < lift else f
         return pressed, pressed - f

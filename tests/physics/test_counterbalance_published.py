@@ -1,10 +1,12 @@
-"""Counterbalance of a vertical axis (physics.counterbalance) against the servo vendors' selection formulas.
+"""Counterbalance of a vertical axis (physics.counterbalance) against the servo vendors' selection
+formulas.
 
-No vendor text found gives a worked example with a counterweight in numbers (searched 2026-11: Mitsubishi MR-J2S-A
-Instruction Manual sec. 11 "Selection" eq. 11-18 to 11-21 and MELDAS MDS-R-V1 Appendix 2-4; Yaskawa Sigma-7
-manual 11.2.1 and Junma "Selection of Servomotor Size"; Fuji ALPHA5 Smart manual ch. 15 "Capacity Selection
-Calculation").  So: the one published number with the counterweight at 0 (Yaskawa's E-V-MD example), and
-otherwise the vendors' printed formulas, restated here term by term, evaluated at our numbers (labelled so).
+No vendor text found gives a worked example with a counterweight in numbers (searched 2026-11:
+Mitsubishi MR-J2S-A Instruction Manual sec. 11 "Selection" eq. 11-18 to 11-21 and MELDAS MDS-R-V1
+Appendix 2-4; Yaskawa Sigma-7 manual 11.2.1 and Junma "Selection of Servomotor Size"; Fuji ALPHA5
+Smart manual ch. 15 "Capacity Selection Calculation").  So: the one published number with the
+counterweight at 0 (Yaskawa's E-V-MD example), and otherwise the vendors' printed formulas, restated
+here term by term, evaluated at our numbers (labelled so).
 """
 
 from __future__ import annotations
@@ -23,8 +25,7 @@ G = 9.80665
 @pytest.mark.published
 def test_inertia_yaskawa_e_v_md_example_without_counterweight():
     # Yaskawa E-V-MD Series User Manual 2.2.2 "Selection Calculations": m = 250 kg, P_B = 0.01 m,
-    # gear 1/2 (R = 2):
-    # "J_L1 = m (P_B / 2 pi R)^2 = 1.58 x 10^-4 kg.m^2"
+    # gear 1/2 (R = 2): "J_L1 = m (P_B / 2 pi R)^2 = 1.58 x 10^-4 kg.m^2"
     assert cb.counterweighted_inertia(250.0, 0.0, 0.01, 0.5) == pytest.approx(1.58e-4, abs=0.005e-4)
 
 
@@ -81,8 +82,8 @@ def test_cylinder_force_law_and_worst_side():
     assert cb.cylinder_force(5000.0, 5600.0, 0.25, 0.5) == pytest.approx(5300.0)
     lo, hi = cb.cylinder_force_range(5600.0, 5000.0, 0.05)
     assert (lo, hi) == (pytest.approx(4750.0), pytest.approx(5880.0))
-    # a head heavier than the cylinder on average: the least force loads the drive most;
-    # overbalanced: the largest
+    # a head heavier than the cylinder on average: the least force loads the drive
+    # most; overbalanced: the largest
     assert cb.cylinder_worst_force(6000.0, lo, hi) == pytest.approx(lo)
     assert cb.cylinder_worst_force(5000.0, lo, hi) == pytest.approx(hi)
 

@@ -15,8 +15,8 @@ RPM = 60.0 / (2.0 * 3.141592653589793)
 
 def test_zone_is_flat_to_the_corner_then_linear_to_max_speed():
     # SGM7G-20A (YSK-S7 sec. 7.2.2: rated 11.5 N.m at 1500 rpm, peak 28.7 N.m, max 3000 rpm),
-    # estimated zone:
-    # corner min(1500, 3000 / 2) = 1500 rpm, peak falling to the rated torque at 3000 rpm
+    # estimated zone: corner min(1500, 3000 / 2) = 1500 rpm, peak falling to the rated torque at
+    # 3000 rpm
     args = dict(
         peak_torque=28.7, corner_speed=1500 / RPM, peak_at_max_speed=11.5, max_speed=3000 / RPM
     )
@@ -31,10 +31,9 @@ def test_zone_is_flat_to_the_corner_then_linear_to_max_speed():
 
 
 # Yaskawa Sigma (E-S series Product Manual sec. 2.4.1 p. 2-13, capacity selection example):
-# SGMSL-A3C, rated
-# 0.0955 N.m, instantaneous max 0.286 N.m; the cycle needs T_P = 0.186 N.m at 3000 rpm, the rated
-# speed, where the
-# intermittent zone is still flat (3000 <= the corner): 0.286 > 0.186, the example's verdict.
+# SGMSL-A3C, rated 0.0955 N.m, instantaneous max 0.286 N.m; the cycle needs T_P = 0.186 N.m at 3000
+# rpm, the rated speed, where the intermittent zone is still flat (3000 <= the corner): 0.286 >
+# 0.186, the example's verdict.
 def test_yaskawa_selection_example_peak_within_the_zone():
     avail = peak_torque_available(
         3000 / RPM,

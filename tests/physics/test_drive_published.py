@@ -2,9 +2,10 @@
 
 Source: THK General Catalog, ball screw section, "Examples of Selecting a Ball Screw": example 1
 (high-speed transfer equipment, horizontal) A-722 to A-735, example 2 (vertical conveyance system)
-A-736 to A-746; formulas A-717 to A-720 (eq. 40-49).  THK prints three significant figures and rounds
-the angular acceleration before using it (1050 rad/s^2 for 1047.2), so computed torques are compared at
-0.5 %; values THK prints from its own rounded numbers are compared exactly to its rounding.
+A-736 to A-746; formulas A-717 to A-720 (eq. 40-49).  THK prints three significant figures and
+rounds the angular acceleration before using it (1050 rad/s^2 for 1047.2), so computed torques are
+compared at 0.5 %; values THK prints from its own rounded numbers are compared exactly to its
+rounding.
 """
 
 from __future__ import annotations
@@ -44,8 +45,7 @@ def test_screw_inertia_fanuc_and_mitsubishi():
 @pytest.mark.published
 def test_thk_example_1_horizontal_transfer():
     # A-722: m1 60 + m2 20 kg, Vmax 1 m/s, t1 = t3 = 0.15 s, Jm 1e-3 kg m^2, A = 1, mu 0.003, f 15
-    # N;
-    # selected WTF2040-2 (lead 40 mm), screw length 1200 mm; eta 0.9 (A-733)
+    # N; selected WTF2040-2 (lead 40 mm), screw length 1200 mm; eta 0.9 (A-733)
     m, lead, jm, t1 = 80.0, 40 * MM, 1e-3, 0.15
     fa_uniform = 0.003 * m * G + 15.0  # A-725: Fa2 = 17 N
     assert fa_uniform == pytest.approx(17, abs=0.5)

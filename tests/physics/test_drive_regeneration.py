@@ -1,4 +1,5 @@
-"""Regenerative energy over a duty cycle against the vendors' regeneration formulas (issue 26 review)."""
+"""Regenerative energy over a duty cycle against the vendors' regeneration formulas (issue 26
+review)."""
 
 import math
 
@@ -21,10 +22,8 @@ def _move(speed, acc, jerk=None, distance=0.6):
 
 def test_a_stop_gives_back_yaskawa_rotational_energy_less_the_load_loss():
     # Yaskawa Sigma-7 manual 12.8.6, a stop from n_M in t_D: E_S = J n^2 / 182 (rotational energy, J
-    # in kg m^2,
-    # n in rpm) less E_L = (pi / 60) n T_L t_D (load loss); Mitsubishi MR-JE 11.2.2 writes the same
-    # stop as
-    # E_3 = 0.1047 / 2 * N * T_3 * t_psd
+    # in kg m^2, n in rpm) less E_L = (pi / 60) n T_L t_D (load loss); Mitsubishi MR-JE 11.2.2
+    # writes the same stop as E_3 = 0.1047 / 2 * N * T_3 * t_psd
     v, acc = 0.5, 5.0
     phases = _move(v, acc)
     torques = phase_torques(phases, J, LEAD, T_L, 0.0)
@@ -55,10 +54,8 @@ def test_lowering_at_constant_speed_returns_gravity_less_friction():
 
 def test_s_curve_stop_returns_the_kinetic_energy():
     # energy balance, independent of the phase bookkeeping: without friction a jerk-limited stop
-    # returns the
-    # rotating kinetic energy J w^2 / 2 (the power is a cubic in each piece: Simpson's rule is
-    # exact), and the
-    # start returns nothing
+    # returns the rotating kinetic energy J w^2 / 2 (the power is a cubic in each piece: Simpson's
+    # rule is exact), and the start returns nothing
     v, acc, jerk = 0.5, 5.0, 100.0
     phases = _move(v, acc, jerk)
     e = regenerative_energy(phases, phase_torques(phases, J, LEAD, 0.0, 0.0), LEAD)

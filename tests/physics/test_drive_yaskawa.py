@@ -1,16 +1,18 @@
-"""Yaskawa Σ-7 capacity-selection examples for a horizontal ball screw, reproduced through the model's
-drive sub-assembly (:func:`axisopt.model.drive.drive`) and the duty-cycle phases (:mod:`axisopt.physics.motion`).
+"""Yaskawa Σ-7 capacity-selection examples for a horizontal ball screw, reproduced through the
+model's drive sub-assembly (:func:`axisopt.model.drive.drive`) and the duty-cycle phases
+(:mod:`axisopt.physics.motion`).
 
-Source: Yaskawa Σ-7-Series Rotary Servomotor Product Manual, chapter 2 "Capacity Selection" (stored copies at
-manualshive.com, manual 3259625 / 907516, pages 37-40; manual pp. 2-2 to 2-5):
+Source: Yaskawa Σ-7-Series Rotary Servomotor Product Manual, chapter 2 "Capacity Selection" (stored
+copies at manualshive.com, manual 3259625 / 907516, pages 37-40; manual pp. 2-2 to 2-5):
 
-* §2.1.1 speed control: 250 kg, screw 20 mm x 1.0 m, lead 10 mm, density 7.87e3, gear 1/2 with gear and
-  coupling inertia 0.40e-4 kg m^2, 40 feeds/min of 0.275 m at 15 m/min in at most 1.2 s, mu 0.2, eta 0.9.
-  Printed: TL 0.43 N m, JL 2.29e-4 kg m^2 (JL1 1.58e-4, JB 0.31e-4, JG 0.40e-4), ta = td 0.1 s, tc 1.0 s,
-  TP 1.23 N m, TS 0.37 N m, Trms 0.483 N m.
-* §2.1.2 position control: 80 kg, screw 16 mm x 0.8 m, lead 5 mm, coupling 0.3 kg x 30 mm, 40 feeds/min of
-  0.25 m at 15 m/min, settling 0.1 s.  Printed: TL 0.139 N m, JL1 0.507e-4, JB 0.405e-4, JC 0.338e-4,
-  JL 1.25e-4 kg m^2, ta 0.1 s, tc 0.9 s; provisionally selected SGM7J-01A (allowable load inertia 35 x rotor).
+* §2.1.1 speed control: 250 kg, screw 20 mm x 1.0 m, lead 10 mm, density 7.87e3, gear 1/2 with gear
+  and coupling inertia 0.40e-4 kg m^2, 40 feeds/min of 0.275 m at 15 m/min in at most 1.2 s, mu 0.2,
+  eta 0.9.  Printed: TL 0.43 N m, JL 2.29e-4 kg m^2 (JL1 1.58e-4, JB 0.31e-4, JG 0.40e-4), ta = td
+  0.1 s, tc 1.0 s, TP 1.23 N m, TS 0.37 N m, Trms 0.483 N m.
+* §2.1.2 position control: 80 kg, screw 16 mm x 0.8 m, lead 5 mm, coupling 0.3 kg x 30 mm, 40
+  feeds/min of 0.25 m at 15 m/min, settling 0.1 s.  Printed: TL 0.139 N m, JL1 0.507e-4, JB
+  0.405e-4, JC 0.338e-4, JL 1.25e-4 kg m^2, ta 0.1 s, tc 0.9 s; provisionally selected SGM7J-01A
+  (allowable load inertia 35 x rotor).
 """
 
 from math import pi

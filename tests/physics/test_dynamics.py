@@ -1,5 +1,6 @@
-"""Axis dynamics (physics.dynamics): the axial-torsional modes against a generalised eigensolver and their stiff
-limit, the dynamic compliance at zero frequency and at resonance, eq. 11 against the lumped screw."""
+"""Axis dynamics (physics.dynamics): the axial-torsional modes against a generalised eigensolver and
+their stiff limit, the dynamic compliance at zero frequency and at resonance, eq. 11 against the
+lumped screw."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""Drive torque losses (physics.friction) against THK's published forms: the positive efficiency of a ball
-screw, the torque to push an axial force (work per revolution) and the drag torque at constant speed."""
+"""Drive torque losses (physics.friction) against THK's published forms: the positive efficiency of
+a ball screw, the torque to push an axial force (work per revolution) and the drag torque at
+constant speed."""
 
 from __future__ import annotations
 
@@ -18,8 +19,8 @@ from axisopt.physics import friction as pf
 )
 def test_positive_efficiency_thk_form(d, lead, mu):
     # THK General Catalog, ball screw, "Efficiency": eta1 = (1 - mu tan beta) / (1 + mu / tan beta),
-    # with the
-    # lead angle tan beta = Ph / (pi d); THK: 90 to 95 % or more for a ball screw at mu 0.003-0.01
+    # with the lead angle tan beta = Ph / (pi d); THK: 90 to 95 % or more for a ball screw at mu
+    # 0.003-0.01
     tan_b = lead / (math.pi * d)
     eta = (1 - mu * tan_b) / (1 + mu / tan_b)
     assert pf.screw_efficiency(math.atan(tan_b), mu) == pytest.approx(eta, rel=1e-12)

@@ -1,11 +1,12 @@
 """The twin-drive gantry model (axisopt.physics.gantry) against closed-form answers.
 
-No vendor publishes a worked twin-drive example; the lumped model follows the structure of Teo et al.,
-Mechatronics 17 (2007) and Garcia-Herreros et al., Control Eng. Practice 21 (2013) (translation + yaw, the
-drives' axial stiffnesses at +/-L/2).  Its closed-form limits: the load at the centre on equal drives gives two
-independent halves (each side a single-DOF axis with half the mass, and the racking mode sqrt(k_theta / J));
-one drive alone leaves a free rigid body on one spring (a zero mode and omega^2 = k (1/m + d^2/J), the mass
-reduced to the spring's point); the general 2x2 eigenvalues against numpy's eigenvalues of M^-1 K.
+No vendor publishes a worked twin-drive example; the lumped model follows the structure of Teo et
+al., Mechatronics 17 (2007) and Garcia-Herreros et al., Control Eng. Practice 21 (2013)
+(translation + yaw, the drives' axial stiffnesses at +/-L/2).  Its closed-form limits: the load at
+the centre on equal drives gives two independent halves (each side a single-DOF axis with half the
+mass, and the racking mode sqrt(k_theta / J)); one drive alone leaves a free rigid body on one
+spring (a zero mode and omega^2 = k (1/m + d^2/J), the mass reduced to the spring's point); the
+general 2x2 eigenvalues against numpy's eigenvalues of M^-1 K.
 """
 
 from __future__ import annotations
@@ -40,8 +41,7 @@ def test_yaw_stiffness_closed_form():
 
 def test_one_drive_alone_is_a_free_rigid_body_on_one_spring():
     # rigid-body limit: k2 = 0, no guides: one zero mode; the other omega^2 = k1 (1/m + d^2/J) with
-    # the
-    # carriage at the centre (d = L/2 from the centre of mass)
+    # the carriage at the centre (d = L/2 from the centre of mass)
     k1 = 1.5e8
     w1, w2 = pg.gantry_eigenvalues(M_B, J_B, M_C, 0.0, k1, 0.0, L)
     assert float(w1) == pytest.approx(0.0, abs=1e-6)

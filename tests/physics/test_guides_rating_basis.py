@@ -1,7 +1,8 @@
-"""The travel a guide's dynamic load rating is defined for (its rating basis), as each vendor states it.
+"""The travel a guide's dynamic load rating is defined for (its rating basis), as each vendor states
+it.
 
-THK and HIWIN define a roller block's C for 100 km and a ball block's for 50 km; IKO and NBS define both for
-50 km.  Read with the wrong basis, an IKO roller block's life doubles.
+THK and HIWIN define a roller block's C for 100 km and a ball block's for 50 km; IKO and NBS define
+both for 50 km.  Read with the wrong basis, an IKO roller block's life doubles.
 """
 
 import dataclasses
@@ -21,9 +22,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_iko_life_calculation_example():
-    """IKO CAT-1578E pp. I-21/I-22 (Linear Roller Way Super X), 'Life calculation example' at an applied load of
-    10 000 N: roller type MXG45, C = 124 000 N, L = 50 (C/P)^(10/3) ~ 220 000 km; ball type MHG45,
-    C = 95 200 N, L = 50 (C/P)^3 ~ 43 000 km."""
+    """IKO CAT-1578E pp. I-21/I-22 (Linear Roller Way Super X), 'Life calculation example' at an
+    applied load of 10 000 N: roller type MXG45, C = 124 000 N, L = 50 (C/P)^(10/3) ~ 220 000 km;
+    ball type MHG45, C = 95 200 N, L = 50 (C/P)^3 ~ 43 000 km."""
     roller = checks.guide_life_distance(124_000.0, 10_000.0, 1.0, roller=1.0, rating_distance=50e3)
     ball = checks.guide_life_distance(95_200.0, 10_000.0, 1.0, roller=0.0, rating_distance=50e3)
     assert roller / 1e3 == pytest.approx(220_000, rel=0.005)

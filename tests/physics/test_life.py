@@ -1,8 +1,9 @@
 """Rating life under a duty cycle (axisopt.physics.life) against the vendors' worked examples.
 
-THK General Catalog (ball screw section A-704 to A-746), HIWIN Ballscrews Technical Information S99TE20
-(examples 4.5-1), Bosch Rexroth ball screw catalog R310 (example "service life", p. 119), NSK super-precision
-bearings (TAC B ratings).  Published values are compared at their printed rounding.
+THK General Catalog (ball screw section A-704 to A-746), HIWIN Ballscrews Technical Information
+S99TE20 (examples 4.5-1), Bosch Rexroth ball screw catalog R310 (example "service life", p. 119),
+NSK super-precision bearings (TAC B ratings).  Published values are compared at their printed
+rounding.
 """
 
 import math
@@ -26,10 +27,8 @@ def test_thk_a706_mean_load_with_a_sign_change():
 
 def test_thk_high_speed_transfer_example_life():
     # THK A-725..A-731: Fa 550 / 17 / -516 N forward, -550 / -17 / 516 N back, travel 75 / 850 / 75
-    # mm each
-    # way: Fm1 = Fm2 = 225 N; WTF2040-2 (Ca 5.4 kN), fW 1.5: L = 4.1e9 rev; Nm = 2 x 8 x 1000 / 40 =
-    # 400 rpm;
-    # Lh = 171 000 h; LS = 164 000 km
+    # mm each way: Fm1 = Fm2 = 225 N; WTF2040-2 (Ca 5.4 kN), fW 1.5: L = 4.1e9 rev; Nm = 2 x 8 x
+    # 1000 / 40 = 400 rpm; Lh = 171 000 h; LS = 164 000 km
     loads = [550.0, 17.0, -516.0, -550.0, -17.0, 516.0]
     travels = [75.0, 850.0, 75.0, 75.0, 850.0, 75.0]
     plus, minus = life.directional_means(loads, travels)
@@ -44,9 +43,8 @@ def test_thk_high_speed_transfer_example_life():
 
 def test_thk_vertical_conveyance_example_life():
     # THK A-739..A-742: all loads upward (gravity), 585 / 510 / 435 N up, 395 / 470 / 545 N down,
-    # travel
-    # 30 / 540 / 30 mm: Fm = 492 N; BLK1510-5.6 (Ca 9.8 kN), fW 1.5: L = 2.34e9 rev; Nm 600 rpm: Lh
-    # 65 000 h
+    # travel 30 / 540 / 30 mm: Fm = 492 N; BLK1510-5.6 (Ca 9.8 kN), fW 1.5: L = 2.34e9 rev; Nm
+    # 600 rpm: Lh 65 000 h
     loads = [585.0, 510.0, 435.0, 395.0, 470.0, 545.0]
     travels = [30.0, 540.0, 30.0] * 2
     plus, minus = life.directional_means(loads, travels)
@@ -58,10 +56,9 @@ def test_thk_vertical_conveyance_example_life():
 
 def test_rexroth_service_life_example():
     # Rexroth R310 ball screw catalog, example "service life" (p. 119): F 50 000 / 25 000 / 8 000 /
-    # 2 000 N at
-    # 10 / 30 / 100 / 1000 min^-1 for 6 / 22 / 47 / 25 % of the time: nm = 304 min^-1, Fm = 8757 N;
-    # with
-    # C = 88 800 N: L = 1042e6 rev, Lh = 57 167 h.  Revolutions n q stand for the travel.
+    # 2 000 N at 10 / 30 / 100 / 1000 min^-1 for 6 / 22 / 47 / 25 % of the time: nm = 304 min^-1, Fm
+    # = 8757 N; with C = 88 800 N: L = 1042e6 rev, Lh = 57 167 h.  Revolutions n q stand for the
+    # travel.
     f = [50_000.0, 25_000.0, 8_000.0, 2_000.0]
     n = [10.0, 30.0, 100.0, 1000.0]
     q = [6.0, 22.0, 47.0, 25.0]
@@ -75,9 +72,8 @@ def test_rexroth_service_life_example():
 
 
 def test_hiwin_s99te20_example_4_5_1_mean_load():
-    # HIWIN S99TE20 example 4.5-1: 100 / 400 / 800 kgf at 1000 / 50 / 100 rpm for 45 / 35 / 20 %, fp
-    # 1.1:
-    # nav = 487.5 rpm, Fbm = 318.5 kgf (HIWIN rounds; 318.3 recomputed)
+    # HIWIN S99TE20 example 4.5-1: 100 / 400 / 800 kgf at 1000 / 50 / 100 rpm for 45 / 35 / 20 %,
+    # fp 1.1: nav = 487.5 rpm, Fbm = 318.5 kgf (HIWIN rounds; 318.3 recomputed)
     fb = [100.0 * 1.1, 400.0 * 1.1, 800.0 * 1.1]
     n, t = [1000.0, 50.0, 100.0], [45.0, 35.0, 20.0]
     assert sum(a * b for a, b in zip(n, t)) / 100 == pytest.approx(487.5)

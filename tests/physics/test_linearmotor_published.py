@@ -12,11 +12,9 @@ from axisopt.physics.motion import Phase
 @pytest.mark.published
 def test_hiwin_appendix_a_linear_motor_sizing_example():
     # HIWIN MM99TE07-1701 Appendix A, "Linear Motor Sizing Example": payload 5 kg, mu 0.01, X 500
-    # mm, T 400 ms,
-    # dwell 350 ms, 1/3-1/3-1/3 profile; LMCA6: Fp 187 N, Fc 62 N, Kf 33.8 N/A(rms), Ip 4.5 A, Ic
-    # 1.8 A.
-    # Printed: Ip = 70.79 / 33.8 = 2.09 A (< 4.5), Ie = 41.92 / 33.8 = 1.24 A (< 1.8), Ie / Ic =
-    # 68.89 %.
+    # mm, T 400 ms, dwell 350 ms, 1/3-1/3-1/3 profile; LMCA6: Fp 187 N, Fc 62 N, Kf 33.8 N/A(rms),
+    # Ip 4.5 A, Ic 1.8 A.  Printed: Ip = 70.79 / 33.8 = 2.09 A (< 4.5), Ie = 41.92 / 33.8 = 1.24 A
+    # (< 1.8), Ie / Ic = 68.89 %.
     v, a = lm.trapezoid_profile(0.5, 0.4)
     assert (v, a) == (pytest.approx(1.875), pytest.approx(14.0625))
     fp = lm.peak_force(5.0, a, 0.0, 0.01)

@@ -1,4 +1,5 @@
-"""Duty-cycle kinematics against closed-form rigid-body motion (written here, not taken from the code)."""
+"""Duty-cycle kinematics against closed-form rigid-body motion (written here, not taken from the
+code)."""
 
 from __future__ import annotations
 

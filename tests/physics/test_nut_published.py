@@ -1,5 +1,5 @@
-"""Physics formulas against published numbers (source named per test; tolerance = half a unit of the last
-printed digit unless a comment explains otherwise)."""
+"""Physics formulas against published numbers (source named per test; tolerance = half a unit of the
+last printed digit unless a comment explains otherwise)."""
 
 from __future__ import annotations
 
@@ -23,8 +23,7 @@ def test_lift_off_is_2_83_times_preload():
 
 
 # model-discrepancy.md row 3 (computed): K/K0 = 0.996 @ 0.5 Fa0, 0.931 @ 2, 0.866 @ 2.5, 0.707 @
-# lift-off,
-# 0.79 @ 4, 0.91 @ 6 (K0 = double-nut stiffness at zero external load).
+# lift-off, 0.79 @ 4, 0.91 @ 6 (K0 = double-nut stiffness at zero external load).
 @pytest.mark.parametrize(
     ("f", "ratio", "tol"),
     [
@@ -56,9 +55,8 @@ def test_nut_catalog_eq9():
     assert nut.nut_stiffness_catalog(1e9, 375.0, 30e3) == pytest.approx(0.4e9, rel=1e-12)
 
 
-# Johnson, Contact Mechanics eq. 4.23: two steel spheres, delta = (9 Q^2 / (16 R E*^2))^(1/3),
-# 1/R = 1/R1 + 1/R2, 1/E* = 2 (1 - nu^2)/E.  The Hamrock-Brewe curve fits are worst in this circular
-# limit
+# Johnson, Contact Mechanics eq. 4.23: two steel spheres, delta = (9 Q^2 / (16 R E*^2))^(1/3), 1/R =
+# 1/R1 + 1/R2, 1/E* = 2 (1 - nu^2)/E.  The Hamrock-Brewe curve fits are worst in this circular limit
 # (kappa 1.034 vs 1, F 1.528 vs pi/2): the approach comes out 5.4 % low, pinned here at 6 %.
 def test_hertz_point_deflection_matches_sphere_contact():
     q, r1 = 500.0, 5e-3
@@ -79,8 +77,8 @@ def test_nut_hertz_scaling_eq18():
     assert 1e8 < k < 1e9  # a few hundred N/um, the catalog order for a 40 mm nut
 
 
-# model-discrepancy.md sec. 1.2 (computed from the THK/HIWIN form): Fa0 = 1500 N, p = 8 mm ->
-# T_p = 0.30 / 0.34 / 0.38 N*m for d = 25 / 32 / 40 mm.
+# model-discrepancy.md sec. 1.2 (computed from the THK/HIWIN form): Fa0 = 1500 N, p = 8 mm -> T_p =
+# 0.30 / 0.34 / 0.38 N*m for d = 25 / 32 / 40 mm.
 @pytest.mark.parametrize(("d", "tp"), [(25, 0.30), (32, 0.34), (40, 0.38)])
 def test_preload_drag_torque(d, tp):
     assert nut.nut_preload_drag_torque(1500.0, 8 * MM, d * MM) == pytest.approx(tp, abs=0.005)

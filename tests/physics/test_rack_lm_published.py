@@ -1,5 +1,6 @@
-"""Rack and pinion (physics.rack) and linear motors (physics.linearmotor) against the vendors' worked examples,
-and the duty-cycle integrals the drive-type models use against a numerical integration written here."""
+"""Rack and pinion (physics.rack) and linear motors (physics.linearmotor) against the vendors'
+worked examples, and the duty-cycle integrals the drive-type models use against a numerical
+integration written here."""
 
 from __future__ import annotations
 
@@ -17,9 +18,8 @@ from axisopt.physics.motion import Segment, cycle_phases
 @pytest.mark.published
 def test_thk_gsr_r_checking_strength_example():
     # THK General Catalog A-241 (GSR-R, "Checking Strength", example): GP6-20A, m = 100 kg, v = 1
-    # m/s,
-    # T1 = 0.1 s, medium impact: "Fmax = m v / T1 = 1.00 kN", "Pmax = 2.33 / 1.25 = 1.86 kN", Fmax <
-    # Pmax
+    # m/s, T1 = 0.1 s, medium impact: "Fmax = m v / T1 = 1.00 kN", "Pmax = 2.33 / 1.25 = 1.86 kN",
+    # Fmax < Pmax
     f = pr.feed_force(100.0, 1.0 / 0.1, 0.0, 0.0, 0.0)
     assert f == pytest.approx(1000.0, rel=1e-12)
     assert pr.OVERLOAD_FACTORS["medium"] == 1.25
@@ -31,9 +31,8 @@ def test_thk_gsr_r_checking_strength_example():
 @pytest.mark.published
 def test_apex_and_yaskawa_rack_formulas():
     # Apex Dynamics: FN = M g mu + M a + F; TN = FN d / 2000 (N m, d in mm); pinion speed NV = v
-    # 19100 / d (rpm,
-    # v in m/s, d in mm).  Yaskawa Sigma-7 11.2.4: linear-section GD^2 = W (dP/1000)^2 = 4 J.  Our
-    # numbers.
+    # 19100 / d (rpm, v in m/s, d in mm).  Yaskawa Sigma-7 11.2.4: linear-section GD^2 = W
+    # (dP/1000)^2 = 4 J.  Our numbers.
     m, mu, a, f, d_mm, v = 500.0, 0.1, 2.0, 800.0, 63.66, 1.0
     fn = m * 9.80665 * mu + m * a + f
     assert pr.feed_force(m, a, mu, 0.0, f) == pytest.approx(fn, rel=1e-12)

@@ -1,5 +1,5 @@
-"""Physics formulas against published numbers (source named per test; tolerance = half a unit of the last
-printed digit unless a comment explains otherwise)."""
+"""Physics formulas against published numbers (source named per test; tolerance = half a unit of the
+last printed digit unless a comment explains otherwise)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""Sag of a horizontal screw under its own weight (physics.screw.screw_sag) against published beam figures."""
+"""Sag of a horizontal screw under its own weight (physics.screw.screw_sag) against published beam
+figures."""
 
 from __future__ import annotations
 
@@ -14,9 +15,9 @@ G = 9.80665
 @pytest.mark.published
 def test_simply_supported_beam_matches_the_engineering_toolbox_example():
     # The Engineering ToolBox, "Beams - Supported at Both Ends - Continuous and Point Loads",
-    # example "UB 305 x 127
-    # x 42" beam: uniform load 6 N/mm, length 5000 mm, I = 81 960 000 mm^4, E = 200 000 N/mm^2:
-    # delta_max = 5 (6 N/mm) (5000 mm)^4 / ((200000 N/mm^2) (81960000 mm^4) 384) = 2.98 mm
+    # example "UB 305 x 127 x 42" beam: uniform load 6 N/mm, length 5000 mm, I = 81 960 000 mm^4, E
+    # = 200 000 N/mm^2: delta_max = 5 (6 N/mm) (5000 mm)^4 / ((200000 N/mm^2) (81960000 mm^4) 384) =
+    # 2.98 mm
     i_beam = 81_960_000e-12  # [m^4]
     d_equiv = (64.0 * i_beam / math.pi) ** 0.25  # a round section of that I
     sag = screw_sag(
@@ -28,9 +29,8 @@ def test_simply_supported_beam_matches_the_engineering_toolbox_example():
 @pytest.mark.published
 def test_end_conditions_follow_the_aisc_table():
     # AISC Steel Construction Manual Table 3-23: delta_max = 5 w l^4 / 384 EI (case 1, simple beam),
-    # w l^4 / 185 EI
-    # (case 12, fixed and supported), w l^4 / 384 EI (case 15, both ends fixed), w l^4 / 8 EI (case
-    # 22, cantilever)
+    # w l^4 / 185 EI (case 12, fixed and supported), w l^4 / 384 EI (case 15, both ends fixed), w
+    # l^4 / 8 EI (case 22, cantilever)
     base = screw_sag(8.22, 0.0347, 2.2, "supported-supported")
     assert screw_sag(8.22, 0.0347, 2.2, "fixed-fixed") == pytest.approx(base / 5.0, rel=1e-12)
     assert screw_sag(8.22, 0.0347, 2.2, "fixed-supported") == pytest.approx(

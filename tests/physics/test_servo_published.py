@@ -1,5 +1,5 @@
-"""The servo tuning rules (physics.servo) against their published examples: Yaskawa manual tuning, FANUC
-position-loop rule, Heidenhain following error; float, numpy and CasADi agree."""
+"""The servo tuning rules (physics.servo) against their published examples: Yaskawa manual tuning,
+FANUC position-loop rule, Heidenhain following error; float, numpy and CasADi agree."""
 
 from __future__ import annotations
 
@@ -11,9 +11,9 @@ import pytest
 from axisopt.physics.servo import KV_M_MIN_PER_MM, following_error, kv_rule, yaskawa_gains
 
 
-# Yaskawa Sigma E-S / Sigma-7 product manual, 8.8.1 Manual Tuning: "If Pn100 = 40.0 [Hz], then
-# Pn101 = 4,000/(2 pi x 40.0) ~ 15.92 [ms]"; torque reference filter guide Pn401 [ms] <= 1000/(2 pi
-# Pn100 x 4).
+# Yaskawa Sigma E-S / Sigma-7 product manual, 8.8.1 Manual Tuning: "If Pn100 = 40.0 [Hz], then Pn101
+# = 4,000/(2 pi x 40.0) ~ 15.92 [ms]"; torque reference filter guide Pn401 [ms] <= 1000/(2 pi Pn100
+# x 4).
 @pytest.mark.published
 def test_yaskawa_manual_tuning_example():
     y = yaskawa_gains(40.0)
@@ -23,10 +23,9 @@ def test_yaskawa_manual_tuning_example():
 
 
 # FANUC AC servo motor alpha-i series descriptions B-65262EN/03, sec. 2 (machine rigidity): "when
-# setting 20
-# [sec-1] as the value of position loop gain, natural frequency of machine system must be more than
-# 20 [Hz]".
-# Heidenhain iTNC 530 technical manual: following error s_a = v_e / k_v, k_v in (m/min)/mm.
+# setting 20 [sec-1] as the value of position loop gain, natural frequency of machine system must be
+# more than 20 [Hz]".  Heidenhain iTNC 530 technical manual: following error s_a = v_e / k_v, k_v in
+# (m/min)/mm.
 @pytest.mark.published
 def test_fanuc_rule_and_heidenhain_following_error():
     assert kv_rule(20.0) == pytest.approx(20.0)

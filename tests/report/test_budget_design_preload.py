@@ -1,6 +1,6 @@
-"""The evaluation's thermal row at the design's own preload (issue 53): the heat balance of the nut at the preload
-the design states, not at the nut's top catalog preload, which stays the bound the positioning limit holds
-(model.accuracy, conservative so the search's preload solve stays exact)."""
+"""The evaluation's thermal row at the design's own preload (issue 53): the heat balance of the nut
+at the preload the design states, not at the nut's top catalog preload, which stays the bound the
+positioning limit holds (model.accuracy, conservative so the search's preload solve stays exact)."""
 
 import pytest
 
@@ -50,9 +50,8 @@ def test_thermal_row_follows_the_designs_preload(tmp_path):
         float(top.values["thermal_error"]), rel=1e-9
     )
     # the row is the growth of the rise the design's balance gives: alpha x rise x length scale,
-    # bounded by the
-    # free growth over the far end's distance from the fixed bearing (A-715: delta_l = rho x theta x
-    # l)
+    # bounded by the free growth over the far end's distance from the fixed bearing (A-715: delta_l
+    # = rho x theta x l)
     rise = float(low.values["temperature_rise"])
     far = low.design.axis.start_offset + low.design.axis.stroke
     assert 0 < r_low[thermal] <= ALPHA_STEEL * rise * far * (1 + 1e-9)
@@ -71,8 +70,9 @@ def test_thermal_row_follows_the_designs_preload(tmp_path):
 
 @pytest.mark.published
 def test_thermal_warning_at_thk_planning_range(tmp_path):
-    """THK A-715: a 2-5 degC rise is planned for with a target travel of -0.02 to -0.06 mm/m; a growth beyond
-    0.06 mm/m over the far end's distance from the fixed bearing is warned of, naming the key that bounds it."""
+    """THK A-715: a 2-5 degC rise is planned for with a target travel of -0.02 to -0.06 mm/m; a
+    growth beyond 0.06 mm/m over the far end's distance from the fixed bearing is warned of, naming
+    the key that bounds it."""
     from axisopt.report.drivetext import thermal_warning
 
     seen = set()

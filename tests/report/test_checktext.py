@@ -1,4 +1,5 @@
-"""The check table (report.checktext) judged against the problem's margins: a margin the problem allowed is no FAIL."""
+"""The check table (report.checktext) judged against the problem's margins: a margin the problem
+allowed is no FAIL."""
 
 from pathlib import Path
 

@@ -1,4 +1,5 @@
-"""The diagnosis report files (report.diagfiles): residual plots draw categorical factors as categories."""
+"""The diagnosis report files (report.diagfiles): residual plots draw categorical factors as
+categories."""
 
 from pathlib import Path
 

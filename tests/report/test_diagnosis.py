@@ -1,7 +1,7 @@
 """Diagnosis report (:mod:`axisopt.report.diagnosis`): residual plots draw categorical factors as
-categories; the FRF peak finder with repeated readings (an FRF file with every row twice gave 'invalid value
-encountered in scalar divide' warnings): repeated frequencies count once, and the peak of a single-mode
-magnitude sampled around its resonance is found near the true frequency."""
+categories; the FRF peak finder with repeated readings (an FRF file with every row twice gave
+'invalid value encountered in scalar divide' warnings): repeated frequencies count once, and the
+peak of a single-mode magnitude sampled around its resonance is found near the true frequency."""
 
 import warnings
 

@@ -1,6 +1,7 @@
-"""The HTML pages of drive-type answers (report.drivehtml): `solve --report` of a problem over drive types
-and `evaluate --report` of a saved rack-and-pinion design show the designs' parts, numbers and every margin
-with its verdict, and the margins figure as SVG; an infeasible answer shows its closest designs."""
+"""The HTML pages of drive-type answers (report.drivehtml): `solve --report` of a problem over drive
+types and `evaluate --report` of a saved rack-and-pinion design show the designs' parts, numbers and
+every margin with its verdict, and the margins figure as SVG; an infeasible answer shows its closest
+designs."""
 
 from __future__ import annotations
 

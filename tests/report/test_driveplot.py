@@ -1,5 +1,6 @@
-"""The plot of a drive types' answer (report.driveplot) draws what it says: one bar per (design, margin) whose
-length is that margin, the line at 1, and one point per design at (cost, objective)."""
+"""The plot of a drive types' answer (report.driveplot) draws what it says: one bar per (design,
+margin) whose length is that margin, the line at 1, and one point per design at (cost,
+objective)."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""A check table never says FAIL for a margin the problem allowed (issue 42, small things): ``limits.margins``
-lowers (or raises, or switches off) a check's least margin, and ``solve`` judges its optimum's checks by it."""
+"""A check table never says FAIL for a margin the problem allowed (issue 42, small things):
+``limits.margins`` lowers (or raises, or switches off) a check's least margin, and ``solve`` judges
+its optimum's checks by it."""
 
 from dataclasses import replace
 from pathlib import Path
@@ -50,9 +51,8 @@ def test_compare_judges_a_solved_problem_by_its_margins(tmp_path):
     line = next(ln for ln in table.splitlines() if ln.lstrip().startswith("bearing life"))
     assert "!" not in line and "*" in line
     # every check shown passes for both (the teaching optimum's nut life sits on its limit: 1 within
-    # rounding),
-    # and the row says so (it said NO: it read every margin the model computes, without the rounding
-    # tolerance)
+    # rounding), and the row says so (it said NO: it read every margin the model computes, without
+    # the rounding tolerance)
     assert next(ln for ln in table.splitlines() if ln.startswith("all checks pass")).split()[
         -2:
     ] == ["yes", "yes"]

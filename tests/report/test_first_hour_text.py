@@ -1,8 +1,8 @@
-"""Answers that read true (issue 57): what the text shows is what the checks use, nothing is cut silently, every
-line fits 100 columns, numbers carry engineering notation and units, an infeasible answer leads with the misses
-that decide, rotating nuts and screw grades show where a user looks, labels say what they measure, and the saved
-design's header states what the file evaluates to.  The designs are the user's, rebuilt from shipped files with
-the one value they changed."""
+"""Answers that read true (issue 57): what the text shows is what the checks use, nothing is cut
+silently, every line fits 100 columns, numbers carry engineering notation and units, an infeasible
+answer leads with the misses that decide, rotating nuts and screw grades show where a user looks,
+labels say what they measure, and the saved design's header states what the file evaluates to.  The
+designs are the user's, rebuilt from shipped files with the one value they changed."""
 
 from __future__ import annotations
 
@@ -26,7 +26,8 @@ VMC = ROOT / "problems" / "vmc_x_design.yaml"
 
 
 def _fast_vmc(speed_m_min: float):
-    """The VMC X design at a rapid where the motor's zone falls: the check scales the cycle's peak."""
+    """The VMC X design at a rapid where the motor's zone falls: the check scales the cycle's
+    peak."""
     d = load_design(VMC)
     return replace(d, axis=replace(d.axis, max_speed=speed_m_min / 60))
 
@@ -138,8 +139,7 @@ def test_study_reason_leads_with_the_misses(tmp_path):
     assert rec["status"] == "infeasible"
     assert rec["reason"].startswith("the closest design misses min stiffness by ")
     # the notes after the misses (the teaching problem leaves reductions out itself since issue 54:
-    # no note on
-    # what max_backlash left out, the enumeration's own note follows)
+    # no note on what max_backlash left out, the enumeration's own note follows)
     assert rec["reason"].split("; ", 1)[1].startswith("no catalog combination meets every limit")
 
 
@@ -163,7 +163,8 @@ def test_rotating_nut_checks_that_do_not_apply_read_so(tmp_path, capsys):
     f.write_text(
         "name: rot\naxis:\n  stroke: 2000 mm\n  moving_mass: 300 kg\n  mounting: fixed-fixed\n"
         "  max_speed: 15 m/min\n  axial_load: 3000 N\n  acceleration: 2 m/s^2\nparts:\n"
-        "  screw: THK-DIR-40x10\n  nut: THK-DIR4010-6\n  bearing: THK-BK30\n  guide: HIWIN-HG25-ZA\n"
+        "  screw: THK-DIR-40x10\n  nut: THK-DIR4010-6\n  bearing: THK-BK30\n  guide: "
+        "HIWIN-HG25-ZA\n"
         "  motor: SGM7G-13A\n",
         encoding="utf-8",
     )

@@ -1,8 +1,9 @@
-"""A twin-drive gantry's checks per side (report.gantry.side_rows): the limits are checked on the governing side
-(nearest the cross carriage at the end of its stroke); the far side at that moment takes the rest.  The statics
-of a beam on two supports (written here apart from physics.gantry and model.gantry): a force F on the cross
-carriage at y = s/2 splits as F (1/2 +/- s/2L), so the difference between the sides' largest screw compression
-is (2r - 1) (F + m_c a), r = 1/2 + s/2L, up to the guide friction of the mass moved across (a few newtons)."""
+"""A twin-drive gantry's checks per side (report.gantry.side_rows): the limits are checked on the
+governing side (nearest the cross carriage at the end of its stroke); the far side at that moment
+takes the rest.  The statics of a beam on two supports (written here apart from physics.gantry and
+model.gantry): a force F on the cross carriage at y = s/2 splits as F (1/2 +/- s/2L), so the
+difference between the sides' largest screw compression is (2r - 1) (F + m_c a), r = 1/2 + s/2L, up
+to the guide friction of the mass moved across (a few newtons)."""
 
 from __future__ import annotations
 
@@ -42,7 +43,8 @@ def test_sides_differ_by_the_statics_of_the_bridge(best):
 
 
 def test_a_centred_carriage_loads_both_sides_alike(best):
-    """No cross stroke: the carriage stays at the centre, both sides carry half: no check differs."""
+    """No cross stroke: the carriage stays at the centre, both sides carry half: no check
+    differs."""
     _, design = best
     tw = design.axis.twin_drive
     centred = replace(design, axis=replace(design.axis, twin_drive=replace(tw, cross_stroke=0.0)))
@@ -66,9 +68,9 @@ def test_unknown_side_is_refused(best):
 
 
 def test_the_long_screw_sag_is_shown(best):
-    """The 4.28 m screw's own-weight sag is in the text and the JSON: q L^4 / (384 E I) for the fixed-fixed
-    screw (AISC Table 3-23 case 15), written here from the catalog row (mass per metre, root diameter) and
-    THK's E = 2.06e5 N/mm^2."""
+    """The 4.28 m screw's own-weight sag is in the text and the JSON: q L^4 / (384 E I) for the
+    fixed-fixed screw (AISC Table 3-23 case 15), written here from the catalog row (mass per metre,
+    root diameter) and THK's E = 2.06e5 N/mm^2."""
     import math
 
     from axisopt.report.evaluation import evaluation_dict, evaluation_table

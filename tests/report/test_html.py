@@ -1,11 +1,12 @@
-"""``--report FILE.html`` on evaluate, solve, compare, study and diagnose: one self-contained file that a real
-headless browser (Debian's Chromium, installed by .ci/run) loads without console errors, with every figure
-drawn, every table fitting a 1280 px window and readable at a phone's 390 px (no column hidden, a table
-wider than the phone scrolls inside its own box, the page never sideways), and each page at most 1.5 MB
-(static SVG figures by default; ``--plotly inline`` interactive figures).
+"""``--report FILE.html`` on evaluate, solve, compare, study and diagnose: one self-contained file
+that a real headless browser (Debian's Chromium, installed by .ci/run) loads without console errors,
+with every figure drawn, every table fitting a 1280 px window and readable at a phone's 390 px (no
+column hidden, a table wider than the phone scrolls inside its own box, the page never sideways),
+and each page at most 1.5 MB (static SVG figures by default; ``--plotly inline`` interactive
+figures).
 
-Without Chromium, chromedriver or selenium the browser part is skipped, unless AXISOPT_REQUIRE_BROWSER=1
-(set by .ci/run), which turns the skip into a failure."""
+Without Chromium, chromedriver or selenium the browser part is skipped, unless
+AXISOPT_REQUIRE_BROWSER=1 (set by .ci/run), which turns the skip into a failure."""
 
 import os
 import re
@@ -121,9 +122,8 @@ def _driver(size):
 
 
 # per table: its width, the width of the box it sits in, whether that box scrolls sideways, and the
-# cells that
-# are not shown (display none, hidden, zero width or clipped by an ancestor other than the table's
-# own box)
+# cells that are not shown (display none, hidden, zero width or clipped by an ancestor other than
+# the table's own box)
 _TABLES = """
 return Array.from(document.querySelectorAll('table')).map(t => {
   const box = t.parentElement, cs = getComputedStyle(box);
@@ -134,7 +134,7 @@ return Array.from(document.querySelectorAll('table')).map(t => {
   return {first: t.rows[0].cells[0].textContent,
           width: t.getBoundingClientRect().width, box: box.clientWidth, scrolls: cs.overflowX === 'auto',
           hidden: hidden, columns: t.rows[0].cells.length, narrowest: Math.min(...widths)};
-});"""
+});"""  # noqa: E501
 
 
 @pytest.mark.parametrize("size", [DESKTOP, PHONE], ids=["1280px", "390px"])
@@ -175,7 +175,8 @@ def test_reports_render_in_a_headless_browser(reports):
             n_plots = driver.execute_script("return document.querySelectorAll('.fig').length")
             drawn = driver.execute_script(
                 "return Array.from(document.querySelectorAll('.fig'))"
-                ".filter(p => p.querySelector('svg') && p.getBoundingClientRect().height > 100).length"
+                ".filter(p => p.querySelector('svg') && p.getBoundingClientRect().height > "
+                "100).length"
             )
             errors = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
             assert not errors, (name, errors)

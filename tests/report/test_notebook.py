@@ -1,8 +1,8 @@
-"""Figures in Jupyter (issue 42 item 3): a notebook executed headless in a fresh kernel shows every plot of
-axisopt as an image, with no ``%matplotlib`` magic and no pyplot import in the notebook.
+"""Figures in Jupyter (issue 42 item 3): a notebook executed headless in a fresh kernel shows every
+plot of axisopt as an image, with no ``%matplotlib`` magic and no pyplot import in the notebook.
 
-nbformat, nbclient and ipykernel come with the ``test`` extra (pyproject.toml); without them the test is
-skipped, unless AXISOPT_REQUIRE_NOTEBOOK=1 (as .ci/run sets) makes that a failure."""
+nbformat, nbclient and ipykernel come with the ``test`` extra (pyproject.toml); without them the
+test is skipped, unless AXISOPT_REQUIRE_NOTEBOOK=1 (as .ci/run sets) makes that a failure."""
 
 from __future__ import annotations
 
@@ -15,9 +15,11 @@ ROOT = Path(__file__).resolve().parents[2]
 
 # one cell per public plot function; each cell ends with the figure, as a user would write it
 CELLS = {
-    "profiles": 'import axisopt\nev = axisopt.evaluate("problems/teaching_design.yaml")\naxisopt.plot_profiles(ev)',
-    "profiles with a drive": 'axisopt.plot_profiles(axisopt.evaluate("problems/vmc_x_design.yaml"))',
-    "pareto": 'res = axisopt.solve("problems/pareto_problem.yaml", sensitivities=False)\naxisopt.plot_pareto(res)',
+    "profiles": 'import axisopt\nev = axisopt.evaluate("problems/teaching_design.yaml")\n'
+    "axisopt.plot_profiles(ev)",
+    "profiles with a drive": 'axisopt.plot_profiles(axisopt.evaluate("problems/vmc_x_design.yaml"))',  # noqa: E501
+    "pareto": 'res = axisopt.solve("problems/pareto_problem.yaml", sensitivities=False)\n'
+    "axisopt.plot_pareto(res)",
     "frf": (
         "from axisopt.model.frf import frf\nfrom axisopt.report.methods import plot_frf\n"
         "plot_frf(frf(ev))"

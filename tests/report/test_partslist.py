@@ -1,4 +1,5 @@
-"""The parts list to order (issue 42 item 4): quantities, the rails' length, the nut preload rounded."""
+"""The parts list to order (issue 42 item 4): quantities, the rails' length, the nut preload
+rounded."""
 
 from pathlib import Path
 

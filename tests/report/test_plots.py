@@ -1,5 +1,5 @@
-"""Plots that tell the truth: legends name every part that differs, limits are drawn, the Pareto plot
-shows every objective pair with the front marked against the designs it dominates."""
+"""Plots that tell the truth: legends name every part that differs, limits are drawn, the Pareto
+plot shows every objective pair with the front marked against the designs it dominates."""
 
 from __future__ import annotations
 
@@ -61,8 +61,7 @@ def test_solve_plot_legend_tells_runners_up_apart_and_draws_the_limit(monkeypatc
     )
     ax, ax2 = figs[0].axes[0], figs[0].axes[1]
     # the designs' legend sits below the frequency panel (off the data); every rank is named exactly
-    # once,
-    # designs whose curves coincide share one line (no curve drawn twice over another)
+    # once, designs whose curves coincide share one line (no curve drawn twice over another)
     legend = [t.get_text() for t in ax2.get_legend().get_texts()]
     designs = [lab for lab in legend if lab.startswith("#")]
     ranks = [

@@ -99,10 +99,9 @@ def test_compare_plot_draws_each_motor_once_and_names_a_design_without_one(tmp_p
 
 
 def test_regeneration_of_the_default_cycle_is_yaskawas_two_stops(capsys):
-    # the default cycle (trapezoidal rapid over the stroke and back) stops twice from the rapid
-    # speed: Yaskawa
-    # Sigma-7 12.8.6 gives each stop E_S - E_L = J n^2 / 182 - (pi / 60) n T_L t_D (182.38
-    # unrounded)
+    # the default cycle (trapezoidal rapid over the stroke and back) stops twice from the
+    # rapid speed: Yaskawa Sigma-7 12.8.6 gives each stop E_S - E_L = J n^2 / 182 - (pi / 60) n T_L
+    # t_D (182.38 unrounded)
     ev = evaluate(load_design(DESIGN))
     a = ev.design.axis
     assert a.jerk is None and not a.duty_cycle and a.orientation == "horizontal"

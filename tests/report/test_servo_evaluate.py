@@ -1,5 +1,6 @@
-"""``evaluate`` reports the servo (text and JSON), ``--ss`` writes the state-space .npz, ``--frf`` carries the
-motor-held, motor-free and closed-loop curves; ``solve`` on the shipped VMC and high-speed problems shows Kv."""
+"""``evaluate`` reports the servo (text and JSON), ``--ss`` writes the state-space .npz, ``--frf``
+carries the motor-held, motor-free and closed-loop curves; ``solve`` on the shipped VMC and
+high-speed problems shows Kv."""
 
 from __future__ import annotations
 

@@ -1,7 +1,7 @@
-"""``axisopt solve`` says on a line of its own when the guides were sized without the cut's normal or cross
-component (axis.normal_load, axis.cross_load not given while axial_load is), with the turning rule of thumb
-F_f = 0.5 F_c, F_p = 0.25 F_c (E. Isakov, "Calculated Forces When Turning", Cutting Tool Engineering, 2013) as
-guidance; the JSON carries the same."""
+"""``axisopt solve`` says on a line of its own when the guides were sized without the cut's normal
+or cross component (axis.normal_load, axis.cross_load not given while axial_load is), with the
+turning rule of thumb F_f = 0.5 F_c, F_p = 0.25 F_c (E. Isakov, "Calculated Forces When Turning",
+Cutting Tool Engineering, 2013) as guidance; the JSON carries the same."""
 
 from __future__ import annotations
 

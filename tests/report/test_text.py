@@ -1,5 +1,5 @@
-"""The reports' text basics (report.text): values at sensible precision, rad/s to rpm, long lines wrapped under
-their indent; expected strings written by hand."""
+"""The reports' text basics (report.text): values at sensible precision, rad/s to rpm, long lines
+wrapped under their indent; expected strings written by hand."""
 
 from __future__ import annotations
 

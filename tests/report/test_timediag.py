@@ -1,4 +1,5 @@
-"""Time-record diagnosis output (:mod:`axisopt.report.timediag`): the JSON carries the unexplained verdict."""
+"""Time-record diagnosis output (:mod:`axisopt.report.timediag`): the JSON carries the unexplained
+verdict."""
 
 import json
 

@@ -1,6 +1,7 @@
-"""The random drive-type spaces the drive-type search tests share (tests/search/test_drivetype_search.py,
-tests/search/test_drivedefault.py): the teaching axis with random acceleration, speed and budget, three guides
-and three reductions kept, and random rack and linear-motor rows (plausible SI values, fixed seeds)."""
+"""The random drive-type spaces the drive-type search tests share
+(tests/search/test_drivetype_search.py, tests/search/test_drivedefault.py): the teaching axis with
+random acceleration, speed and budget, three guides and three reductions kept, and random rack and
+linear-motor rows (plausible SI values, fixed seeds)."""
 
 from __future__ import annotations
 
@@ -85,8 +86,8 @@ def drive_problem(tmp_path, rng, objective: str, types: str):
         .replace("objective: stiffness", f"objective: {objective}")
         .replace(
             "  require: {coupling: [RINGFEDER-GWB-AKN-30, RINGFEDER-GWB-AKN-60]}",
-            "  require: {coupling: [RINGFEDER-GWB-AKN-30, RINGFEDER-GWB-AKN-60], guide: [HIWIN-HG15-ZA, "
-            "HIWIN-HG20-ZB, HIWIN-HG25-ZA]}\n  exclude: {reduction: ["
+            "  require: {coupling: [RINGFEDER-GWB-AKN-30, RINGFEDER-GWB-AKN-60], guide: "
+            "[HIWIN-HG15-ZA, HIWIN-HG20-ZB, HIWIN-HG25-ZA]}\n  exclude: {reduction: ["
             + ", ".join(OTHER_REDUCTIONS)
             + "]}",
         )

@@ -1,11 +1,11 @@
 """The turning-centre Z at an impossible 500 EUR budget that tests/search/test_drivebounds.py and
-tests/search/infeasible/test_budget.py share: the shipped lathe Z (problems/lathe_z_problem.yaml) as it was
-when these tests were written, with a max_cost limit."""
+tests/search/infeasible/test_budget.py share: the shipped lathe Z (problems/lathe_z_problem.yaml) as
+it was when these tests were written, with a max_cost limit."""
 
 from axisopt.problem import load_problem
 
-# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about 1 500 EUR,
-# the cheapest design meeting every other limit about 4 000 EUR)
+# A turning-centre Z at 500 EUR with the drive sized (the catalogs' cheapest combination costs about
+# 1 500 EUR, the cheapest design meeting every other limit about 4 000 EUR)
 LATHE = """name: lathe-z
 description: >
   Turning-centre Z axis with its three cutting-force components: 1.5 m stroke, a 250 kg carriage and turret,
@@ -50,7 +50,7 @@ catalog:
   drive: yes
 continuous:
   nut_preload: {min: 200 N, max: 20 kN}
-"""
+"""  # noqa: E501
 
 
 def lathe(tmp_path, budget: str):

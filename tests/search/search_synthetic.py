@@ -20,9 +20,10 @@ RPM = 2 * math.pi / 60
 
 @dataclass(frozen=True)
 class Ranges:
-    """What the synthetic parts are drawn from (uniform between two values or a choice among several; SI
-    except the marked ones).  The tests' catalogs use ``TESTS``; bench/bench_search.py's catalog of 10^6
-    combinations ``BENCH`` (its draws kept, so the figures docs/benchmarks.md quotes still hold)."""
+    """What the synthetic parts are drawn from (uniform between two values or a choice among
+    several; SI except the marked ones).  The tests' catalogs use ``TESTS``; bench/bench_search.py's
+    catalog of 10^6 combinations ``BENCH`` (its draws kept, so the figures docs/benchmarks.md quotes
+    still hold)."""
 
     vendor: str
     diameters_mm: tuple
@@ -82,8 +83,9 @@ def make_catalog(
     rotating: bool = False,
     ranges: Ranges = TESTS,
 ) -> Catalog:
-    """``rotating``: about half the nuts are driven rotating-nut units (THK DIR/BLR-like unit values; some leave
-    the max speed, bearing rigidity and starting torque to the model's estimates)."""
+    """``rotating``: about half the nuts are driven rotating-nut units (THK DIR/BLR-like unit
+    values; some leave the max speed, bearing rigidity and starting torque to the model's
+    estimates)."""
     r = ranges
     screws, nuts, bearings, guides = [], [], [], []
     for i in range(n_screws):
@@ -232,7 +234,8 @@ def make_catalog(
 
 
 def make_double(catalog) -> None:
-    """Turn every nut of a synthetic catalog into a preloaded double nut (preload 2-10 % C, quoted at 10 % C)."""
+    """Turn every nut of a synthetic catalog into a preloaded double nut (preload 2-10 % C, quoted
+    at 10 % C)."""
     n = catalog.nuts
     c = n["dynamic_load_rating"]
     n["type"] = "double"
@@ -257,8 +260,7 @@ def make_problem(
     **axis_kw,
 ) -> Problem:
     # fw 1.2 as given (THK Table 19's default for 18 m/min would be 1.5, issue 38): the problems
-    # keep the sizes
-    # they were drawn for, with feasible combinations for every seed
+    # keep the sizes they were drawn for, with feasible combinations for every seed
     kw = {
         "moving_mass": 300.0,
         "max_speed": 0.3,
@@ -287,17 +289,17 @@ def make_problem(
 def add_drives(
     catalog, rng: np.random.Generator, n_motors=4, n_couplings=2, rules=False
 ) -> Catalog:
-    """Give a synthetic catalog servo motors (peak 3 x rated, some with a holding brake) and couplings.
-    ``rules``: each motor also names a vendor's selection rule (model.motorrule: Yaskawa 1 / 1, Mitsubishi
-    0.8 / 0.6, FANUC 0.9 / 0.6, or none), drawn from a generator of its own."""
+    """Give a synthetic catalog servo motors (peak 3 x rated, some with a holding brake) and
+    couplings.
+    ``rules``: each motor also names a vendor's selection rule (model.motorrule: Yaskawa 1 / 1,
+    Mitsubishi 0.8 / 0.6, FANUC 0.9 / 0.6, or none), drawn from a generator of its own."""
     motors, couplings = [], []
     for i in range(n_motors):
         t = rng.uniform(2.0, 15.0)
         j = rng.uniform(2e-4, 3e-3)
         brake = bool(rng.random() < 0.6)
         # intermittent-zone corner points (issue 26): half the motors list them, the rest take the
-        # estimate; a
-        # generator of its own so that the draws above keep their sequence
+        # estimate; a generator of its own so that the draws above keep their sequence
         zr = np.random.default_rng(7919 + i)
         listed = bool(zr.random() < 0.5)
         motors.append(
@@ -346,8 +348,9 @@ def add_drives(
 
 
 def add_reductions(catalog, rng: np.random.Generator, n=3, rules=False) -> Catalog:
-    """Give a synthetic catalog reductions (planetary and belt rows, ratio 1.5-5, T2B 1.5-2.5 x T2N, torsional
-    stiffness 1e4-1e6 N.m/rad, input speed limit 3000-8000 rpm): the search chooses one or none per drive."""
+    """Give a synthetic catalog reductions (planetary and belt rows, ratio 1.5-5, T2B 1.5-2.5 x T2N,
+    torsional stiffness 1e4-1e6 N.m/rad, input speed limit 3000-8000 rpm): the search chooses one or
+    none per drive."""
     rows = []
     for i in range(n):
         t = rng.uniform(20.0, 200.0)
@@ -380,9 +383,10 @@ def add_reductions(catalog, rng: np.random.Generator, n=3, rules=False) -> Catal
 
 
 def add_support_sets(catalog, rng: np.random.Generator) -> Catalog:
-    """Make about half the bearings of a synthetic catalog 3-against-1 sets (DFT: three rows each way's rating
-    3^0.7 / 1, the stronger direction's lift-off load three times the weaker's, as the Hertz set rule gives
-    5.41 / 1.80, physics.bearingsets) and some 2-against-1 (DFD), the rest DB pairs."""
+    """Make about half the bearings of a synthetic catalog 3-against-1 sets (DFT: three rows each
+    way's rating 3^0.7 / 1, the stronger direction's lift-off load three times the weaker's, as the
+    Hertz set rule gives 5.41 / 1.80, physics.bearingsets) and some 2-against-1 (DFD), the rest DB
+    pairs."""
     b = catalog.bearings.copy()
     b["lift_off_load_strong"] = math.nan
     for i in b.index:
@@ -398,8 +402,9 @@ def add_support_sets(catalog, rng: np.random.Generator) -> Catalog:
 
 
 def add_belt_stages(catalog, rng: np.random.Generator, n=2) -> Catalog:
-    """Add ``n`` timing-belt stages to a synthetic catalog's reductions: ratio 1-3, no backlash, torsional
-    stiffness 2e3-3e4 N.m/rad (a belt's spans: softer than a gearbox), T2B = T2N (the teeth's shear)."""
+    """Add ``n`` timing-belt stages to a synthetic catalog's reductions: ratio 1-3, no backlash,
+    torsional stiffness 2e3-3e4 N.m/rad (a belt's spans: softer than a gearbox), T2B = T2N (the
+    teeth's shear)."""
     rows = []
     for i in range(n):
         t = rng.uniform(15.0, 120.0)

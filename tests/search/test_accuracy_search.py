@@ -1,6 +1,7 @@
-"""The screw's lead accuracy grade as a search choice (issue 43): each screw row once per grade it is made in
-(screw x grade), the positioning-error limit on the budget; the default search equals exhaustive enumeration,
-and a problem without an accuracy limit keeps its search space.  Fixed seeds."""
+"""The screw's lead accuracy grade as a search choice (issue 43): each screw row once per grade it
+is made in (screw x grade), the positioning-error limit on the budget; the default search equals
+exhaustive enumeration, and a problem without an accuracy limit keeps its search space.  Fixed
+seeds."""
 
 from __future__ import annotations
 
@@ -72,9 +73,9 @@ def test_default_equals_exhaustive_with_grade_choice(seed):
 
 
 def test_grade_rows_drop_dominated_and_untoleranced_grades():
-    """C7 on a precision shaft costs as much as C5 and is less accurate: never a row; the rows of one screw are the
-    grades in order of price with falling lead error; no grade without a tolerance over the stroke (C0 beyond
-    1600 mm, THK A-678 Table 1)."""
+    """C7 on a precision shaft costs as much as C5 and is less accurate: never a row; the rows of
+    one screw are the grades in order of price with falling lead error; no grade without a tolerance
+    over the stroke (C0 beyond 1600 mm, THK A-678 Table 1)."""
     rng = np.random.default_rng(5)
     cat = make_catalog(rng, n_screws=2, nuts_per_screw=1, n_bearings=2, n_guides=2)
     p = make_problem(cat, limits={"max_positioning_error": 1e-3}, backlash=5e-5)
@@ -89,8 +90,8 @@ def test_grade_rows_drop_dominated_and_untoleranced_grades():
 
 
 def test_no_accuracy_limit_keeps_the_space_and_the_catalog_price():
-    """Without a positioning limit or catalog.screw_grades every screw takes its cheapest grade (C5: the catalog
-    price) and the search space is the catalog's, as before the grades."""
+    """Without a positioning limit or catalog.screw_grades every screw takes its cheapest grade (C5:
+    the catalog price) and the search space is the catalog's, as before the grades."""
     rng = np.random.default_rng(3)
     cat = make_catalog(rng, n_screws=3, nuts_per_screw=2, n_bearings=3, n_guides=2)
     p = make_problem(cat, limits={"max_cost": 5000.0}, backlash=5e-5)
@@ -105,8 +106,9 @@ def test_no_accuracy_limit_keeps_the_space_and_the_catalog_price():
     "keys", [("positioning_error", "cost"), ("positioning_error", "stiffness", "cost")]
 )
 def test_pareto_with_positioning_error_default_equals_exhaustive(keys):
-    """A front of the positioning error against cost (and stiffness): the grade is a choice, every point names
-    its grade, and the front is the brute-force non-dominated set of the exact per-combination values."""
+    """A front of the positioning error against cost (and stiffness): the grade is a choice, every
+    point names its grade, and the front is the brute-force non-dominated set of the exact
+    per-combination values."""
     from axisopt.model.goals import Objective
     from axisopt.search.exhaustive import exhaustive_search
     from axisopt.search.task.constraints import build_constraints

@@ -1,7 +1,8 @@
-"""A problem listing axis arrangements (search.counterbalance / search.twin_drive, axisopt.search.arrangements): the
-default method equals exhaustive enumeration, and the combined answer is the best of the arrangements solved one by
-one (the tie rule: lower cost, then mass); infeasible only when every arrangement is.  Fixed seeds, drawn so that
-the winner is sometimes not the first option and sometimes 'none'."""
+"""A problem listing axis arrangements (search.counterbalance / search.twin_drive,
+axisopt.search.arrangements): the default method equals exhaustive enumeration, and the combined
+answer is the best of the arrangements solved one by one (the tie rule: lower cost, then mass);
+infeasible only when every arrangement is.  Fixed seeds, drawn so that the winner is sometimes not
+the first option and sometimes 'none'."""
 
 from __future__ import annotations
 
@@ -18,8 +19,9 @@ from axisopt.search import solve
 
 
 def _vertical(seed: int):
-    """A vertical axis with a motor searched and four counterbalance options (none among them) in a drawn order;
-    seeds from 4 on an overbalancing cylinder or none (the cylinder wins the first seeds; seed 5 has no optimum)."""
+    """A vertical axis with a motor searched and four counterbalance options (none among them) in a
+    drawn order; seeds from 4 on an overbalancing cylinder or none (the cylinder wins the first
+    seeds; seed 5 has no optimum)."""
     rng = np.random.default_rng(900 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
     make_double(cat)
@@ -153,8 +155,8 @@ def test_twin_drive_choice_default_equals_exhaustive():
 
 
 def _brute_front(p):
-    """Every feasible design of every arrangement (exhaustive enumeration, exact per combination), filtered to the
-    non-dominated ones by pairwise comparison: {(arrangement, combination)}."""
+    """Every feasible design of every arrangement (exhaustive enumeration, exact per combination),
+    filtered to the non-dominated ones by pairwise comparison: {(arrangement, combination)}."""
     from axisopt.search.exhaustive import exhaustive_search
     from axisopt.search.parts import build_space
     from axisopt.search.task.constraints import build_constraints
@@ -186,8 +188,9 @@ def _brute_front(p):
     ],
 )
 def test_pareto_over_arrangements_is_the_front_of_all_their_designs(make, seed):
-    """A Pareto objective with arrangements: the merged front equals the non-dominated set of every feasible design
-    of every arrangement (brute force), each point naming its arrangement; default == exhaustive."""
+    """A Pareto objective with arrangements: the merged front equals the non-dominated set of every
+    feasible design of every arrangement (brute force), each point naming its arrangement; default
+    == exhaustive."""
     from axisopt.model.goals import Objective
 
     p = replace(make(seed), objective=Objective(mode="pareto", pareto=("stiffness", "cost")))

@@ -1,7 +1,8 @@
-"""Each support set by its maker's rule (issue 53): NSK's sets' row groups by their Hertz split, the others by
-IBC's linear split.  On randomized catalogs with 3-against-1 and 2-against-1 sets, some of them NSK's, the
-default search equals exhaustive enumeration, and the rule is exercised: the same catalog with every set
-rated by the linear split gives a different answer on some seed.  Fixed seeds."""
+"""Each support set by its maker's rule (issue 53): NSK's sets' row groups by their Hertz split, the
+others by IBC's linear split.  On randomized catalogs with 3-against-1 and 2-against-1 sets, some of
+them NSK's, the default search equals exhaustive enumeration, and the rule is exercised: the same
+catalog with every set rated by the linear split gives a different answer on some seed.  Fixed
+seeds."""
 
 from __future__ import annotations
 
@@ -46,8 +47,8 @@ def test_default_equals_exhaustive_with_vendor_set_rules(seed):
 
 
 def test_the_makers_rule_is_exercised():
-    """Over these seeds the NSK sets' Hertz split moves a bearing-life margin of the optimum (or the optimum
-    itself) against the same catalog read by the linear split alone."""
+    """Over these seeds the NSK sets' Hertz split moves a bearing-life margin of the optimum (or the
+    optimum itself) against the same catalog read by the linear split alone."""
     moved = 0
     for seed in range(5):
         a = solve(_problem(seed), "default", top=1, sensitivities=False)

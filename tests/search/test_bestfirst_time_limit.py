@@ -1,6 +1,7 @@
-"""The default method honours the time limit (issue 42): it stops there with what it has found, says so (status
-'time_limit', a certificate note, the gap unproven), and an infeasible answer's explanation is cut there too;
-a long search reports its progress to the "axisopt" logger (a terminal shows it)."""
+"""The default method honours the time limit (issue 42): it stops there with what it has found, says
+so (status 'time_limit', a certificate note, the gap unproven), and an infeasible answer's
+explanation is cut there too; a long search reports its progress to the "axisopt" logger (a terminal
+shows it)."""
 
 from __future__ import annotations
 
@@ -67,9 +68,10 @@ def test_a_long_search_reports_progress(monkeypatch, caplog):
 
 @pytest.fixture(scope="module")
 def full_exhaustive():
-    """The teaching problem's whole exhaustive solve (about 12 s), run once for the two tests below, with a
-    progress report at every step (PROGRESS 0) kept: the time-limit test reads its certificate, the progress
-    test its log lines (reporting progress changes neither what is solved nor the certificate)."""
+    """The teaching problem's whole exhaustive solve (about 12 s), run once for the two tests below,
+    with a progress report at every step (PROGRESS 0) kept: the time-limit test reads its
+    certificate, the progress test its log lines (reporting progress changes neither what is solved
+    nor the certificate)."""
     lines = []
 
     class Keep(logging.Handler):
@@ -118,9 +120,9 @@ def test_a_long_explanation_reports_progress(monkeypatch, caplog):
 
 @pytest.mark.parametrize("method", ["exhaustive", "default"])
 def test_a_pareto_front_stops_at_the_time_limit(method):
-    """A Pareto front (fuzz case 1039: a generated twin gantry of 1.3e10 combinations ran past `--time-limit
-    20` by minutes) stops at the limit: status 'time_limit', unproven, every point a feasible design of the
-    combinations solved by then, no infeasibility claimed."""
+    """A Pareto front (fuzz case 1039: a generated twin gantry of 1.3e10 combinations ran past
+    `--time-limit 20` by minutes) stops at the limit: status 'time_limit', unproven, every point a
+    feasible design of the combinations solved by then, no infeasibility claimed."""
     from dataclasses import replace
 
     from axisopt.model.goals import Objective

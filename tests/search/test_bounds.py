@@ -1,6 +1,7 @@
-"""The default method's block bounds (best-first over (mounting, nut, bearing) blocks, never forming the
-whole product): checked against every combination evaluated one by one (exhaustive enumeration), on ball and
-roller guides of random properties, with and without a drive search, and the search against exhaustive."""
+"""The default method's block bounds (best-first over (mounting, nut, bearing) blocks, never forming
+the whole product): checked against every combination evaluated one by one (exhaustive enumeration),
+on ball and roller guides of random properties, with and without a drive search, and the search
+against exhaustive."""
 
 from dataclasses import replace
 

@@ -1,7 +1,8 @@
-"""The shipped counterweighted vertical Z (problems/vertical_counterweight_problem.yaml) against the same axis without
-its counterweight (problems/vertical_problem.yaml): it solves, and the counterweight does what the servo vendors'
-formulas say it does -- less weight on the screw at rest (a larger nut lift-off margin, less holding torque), less
-RMS torque and regenerated power, more inertia."""
+"""The shipped counterweighted vertical Z (problems/vertical_counterweight_problem.yaml) against the
+same axis without its counterweight (problems/vertical_problem.yaml): it solves, and the
+counterweight does what the servo vendors' formulas say it does -- less weight on the screw at rest
+(a larger nut lift-off margin, less holding torque), less RMS torque and regenerated power, more
+inertia."""
 
 from __future__ import annotations
 

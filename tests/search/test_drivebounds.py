@@ -1,5 +1,5 @@
-"""The per-drive least cost the screening and the explanation use (search.drivebounds.least_cost) is the least
-over every guide and bearing combination, checked by enumeration."""
+"""The per-drive least cost the screening and the explanation use (search.drivebounds.least_cost) is
+the least over every guide and bearing combination, checked by enumeration."""
 
 import numpy as np
 import pytest
@@ -13,9 +13,9 @@ from axisopt.search.parts import build_space
 
 @pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_least_cost_per_drive_is_the_least_over_guides_and_bearings(tmp_path):
-    """The screening's and the explanation's per-drive cost bound (drivebounds.least_cost) is the least cost
-    over the block's guides and each group's bearings, for every drive of the lathe's 4 531: every (guide,
-    drive) combination evaluated."""
+    """The screening's and the explanation's per-drive cost bound (drivebounds.least_cost) is the
+    least cost over the block's guides and each group's bearings, for every drive of the lathe's
+    4 531: every (guide, drive) combination evaluated."""
     sp = build_space(lathe(tmp_path, "500 EUR"))
     B = sp.shape[2]
     for mounting in sp.mountings:
@@ -32,15 +32,15 @@ def test_least_cost_per_drive_is_the_least_over_guides_and_bearings(tmp_path):
 
 
 def test_hull_rows_kept_on_the_space_bound_as_a_fresh_evaluation(tmp_path):
-    """The per-nut rows drive_hull keeps on the space for the searches after the first (limit sensitivities,
-    the cheaper design) are the fresh interval bounds rounded outward to float32: an upper end never below,
-    a lower end never above, within float32's rounding; asked again (in another order, with another nut
-    among them) they come from the store and are the same."""
+    """The per-nut rows drive_hull keeps on the space for the searches after the first (limit
+    sensitivities, the cheaper design) are the fresh interval bounds rounded outward to float32: an
+    upper end never below, a lower end never above, within float32's rounding; asked again (in
+    another order, with another nut among them) they come from the store and are the same."""
     from axisopt.search.drivebounds import _drive_hull, _whole_hull, drive_hull
     from axisopt.search.task.constraints import build_constraints
     from axisopt.search.task.space import DRIVE_KEYS
 
-    problem = _lathe(tmp_path, "20000 EUR")
+    problem = lathe(tmp_path, "20000 EUR")
     sp = build_space(problem)
     assert not _whole_hull(sp)  # the store is used on this space
     cons = [c for c in build_constraints(problem) if c.key in DRIVE_KEYS]

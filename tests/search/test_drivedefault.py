@@ -1,5 +1,5 @@
-"""The default drive-type offer (search.drivedefault): equal to the exhaustive answer over every type, and it
-leaves out the types that do not apply."""
+"""The default drive-type offer (search.drivedefault): equal to the exhaustive answer over every
+type, and it leaves out the types that do not apply."""
 
 from __future__ import annotations
 
@@ -23,8 +23,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _default_problem(tmp_path, rng, objective):
-    """A screw problem with no search.drive_types (the default offer's case): the teaching axis without its
-    screw-only drag limit, with the reductions the random rack spaces keep, and random drive-type rows."""
+    """A screw problem with no search.drive_types (the default offer's case): the teaching axis
+    without its screw-only drag limit, with the reductions the random rack spaces keep, and random
+    drive-type rows."""
     drive_problem(tmp_path, rng, objective, "screw, linear_motor")  # its text, the random draws
     text = (tmp_path / "p.yaml").read_text(encoding="utf-8")
     text = text.replace("  max_drag_torque: 1.2 N.m\n", "").replace("  reductions: no\n", "")
@@ -40,9 +41,10 @@ def _default_problem(tmp_path, rng, objective):
 
 
 def test_default_offer_equals_exhaustive_over_every_type(tmp_path, monkeypatch):
-    """Issue 54: without search.drive_types the screw answer stands unless a rack or linear-motor design
-    beats it; the types that cannot are pruned by their bound (never searched).  The winner equals the
-    exhaustive search over every type listed (every rack and linear-motor combination evaluated)."""
+    """Issue 54: without search.drive_types the screw answer stands unless a rack or linear-motor
+    design beats it; the types that cannot are pruned by their bound (never searched).  The winner
+    equals the exhaustive search over every type listed (every rack and linear-motor combination
+    evaluated)."""
     from axisopt.design.drivechoice import DriveChoice
     from axisopt.search import drivedefault, solve
 
@@ -60,8 +62,7 @@ def test_default_offer_equals_exhaustive_over_every_type(tmp_path, monkeypatch):
         got = drivedefault.offer(prob, screw, "default", top=3, tables=tables)
         types, _, kept = drivedefault.offered(prob, tables)
         # the ground truth: every rack and linear-motor combination evaluated (the screw answer's
-        # own proof is
-        # tested with the screw search), ranked with the screw's best by the tie rule
+        # own proof is tested with the screw search), ranked with the screw's best by the tie rule
         e = solve_drive_types(
             replace(prob, drives=DriveChoice(types=types, tables=kept)), "exhaustive", top=1
         )
@@ -99,8 +100,8 @@ def test_default_offer_equals_exhaustive_over_every_type(tmp_path, monkeypatch):
 
 
 def test_default_offer_leaves_out_what_does_not_apply(tmp_path):
-    """A vertical axis without a counterbalance is offered no linear motor (the vendors ask a brake; listed
-    explicitly it is an input error), a short stroke no rack, a screw-only limit nothing."""
+    """A vertical axis without a counterbalance is offered no linear motor (the vendors ask a brake;
+    listed explicitly it is an input error), a short stroke no rack, a screw-only limit nothing."""
     from axisopt.drivecatalog import default_drive_tables
     from axisopt.search import drivedefault
 

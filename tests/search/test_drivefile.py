@@ -1,7 +1,7 @@
-"""A rack-and-pinion or linear-motor design saved by `axisopt solve --save-design` evaluates, by `axisopt
-evaluate`, to the numbers its solve gave (search.drivefile): the same parts, objective, cost, moving mass and
-check margins; a file naming a part its problem does not offer, leaving a slot out or naming a type the
-search does not list is a one-line error, exit 2."""
+"""A rack-and-pinion or linear-motor design saved by `axisopt solve --save-design` evaluates, by
+`axisopt evaluate`, to the numbers its solve gave (search.drivefile): the same parts, objective,
+cost, moving mass and check margins; a file naming a part its problem does not offer, leaving a slot
+out or naming a type the search does not list is a one-line error, exit 2."""
 
 from __future__ import annotations
 

@@ -1,7 +1,7 @@
-"""The drive type as a search choice: on randomized rack and linear-motor catalogs mixed with the screw drive,
-the default method's answer (bounded best-first per space, the screw search's proof) equals the exhaustive one
-(every combination evaluated) and the ground truth of every combination evaluated alone in floats; the best
-type wins by the shared tie rule."""
+"""The drive type as a search choice: on randomized rack and linear-motor catalogs mixed with the
+screw drive, the default method's answer (bounded best-first per space, the screw search's proof)
+equals the exhaustive one (every combination evaluated) and the ground truth of every combination
+evaluated alone in floats; the best type wins by the shared tie rule."""
 
 from __future__ import annotations
 
@@ -50,9 +50,9 @@ def test_default_equals_exhaustive_over_mixed_drive_types(tmp_path, seed, object
 
 
 def test_the_type_follows_the_objective(tmp_path):
-    """The same axes: the stiffest drive is a rack (its mesh and gearbox beat the servo's estimated stiffness),
-    the highest first frequency at least once a linear motor's (no screw or mesh between motor and table): the
-    choice is real, not a fixed preference."""
+    """The same axes: the stiffest drive is a rack (its mesh and gearbox beat the servo's estimated
+    stiffness), the highest first frequency at least once a linear motor's (no screw or mesh between
+    motor and table): the choice is real, not a fixed preference."""
     won = {}
     for objective in ("stiffness", "frequency"):
         for seed in range(3):

@@ -1,9 +1,10 @@
-"""The exhaustive method's per-combination solve (core.grid_solve) evaluates its preload grid up to the upper
-end of the feasible interval found by bisection.  That end must be evaluated exactly: the grid point
-``low + 1.0 * (up - low)`` can round one ulp above ``up``, past the drag threshold, and the combination then
-lost its best preload (the next grid point, 1/8 of the range lower): the reference method reported a worse
-objective than the default method for the same combination, and so other runners-up.  Reference: the
-default method's exact 1-D solve (the objective grows with the preload: the optimum is the upper end)."""
+"""The exhaustive method's per-combination solve (core.grid_solve) evaluates its preload grid up to
+the upper end of the feasible interval found by bisection.  That end must be evaluated exactly: the
+grid point ``low + 1.0 * (up - low)`` can round one ulp above ``up``, past the drag threshold, and
+the combination then lost its best preload (the next grid point, 1/8 of the range lower): the
+reference method reported a worse objective than the default method for the same combination, and so
+other runners-up.  Reference: the default method's exact 1-D solve (the objective grows with
+the preload: the optimum is the upper end)."""
 
 import numpy as np
 from search_synthetic import make_catalog, make_double, make_problem

@@ -1,4 +1,5 @@
-"""The front door: the method table's capabilities, one status table, the result built in one place."""
+"""The front door: the method table's capabilities, one status table, the result built in one
+place."""
 
 from __future__ import annotations
 

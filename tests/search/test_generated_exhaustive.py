@@ -1,12 +1,13 @@
 """Default == exhaustive on the generated axes' sample (issue 52).
 
-bench/axis_generator.py writes one case in five as a shortlist (one supplier per part kind, one series each, as
-a machine builder with framework contracts writes it): at most 10^6 combinations, few enough to enumerate.  The
-sample: the shortlist cases of seed 0 among its first 100 with at most 10^5 combinations (their indices are
-listed; the test checks each is still a shortlist of that size).  Each is solved by the default method and by
-``--method exhaustive`` (every combination, its preload on a grid): the same status, and the same optimum or
-the same proof that no combination meets every limit.  bench/bench_generalize.py --compare runs the same
-comparison on larger samples."""
+bench/axis_generator.py writes one case in five as a shortlist (one supplier per part kind, one
+series each, as a machine builder with framework contracts writes it): at most 10^6 combinations,
+few enough to enumerate.  The
+sample: the shortlist cases of seed 0 among its first 100 with at most 10^5 combinations (their
+indices are listed; the test checks each is still a shortlist of that size).  Each is solved by the
+default method and by ``--method exhaustive`` (every combination, its preload on a grid): the same
+status, and the same optimum or the same proof that no combination meets every limit.
+bench/bench_generalize.py --compare runs the same comparison on larger samples."""
 
 import sys
 import warnings

@@ -1,9 +1,9 @@
 """Interval arithmetic (search/interval.py) and the explanation's drive bounds built on it.
 
-The arithmetic is checked the way it is defined: for random intervals and random points inside them, every
-operation's result holds the operation applied to the points (numpy on plain floats is the reference).  The
-drive bounds are checked against the drive model evaluated on every combination of a random catalog, at each
-preload end, limit by limit."""
+The arithmetic is checked the way it is defined: for random intervals and random points inside them,
+every operation's result holds the operation applied to the points (numpy on plain floats is the
+reference).  The drive bounds are checked against the drive model evaluated on every combination of
+a random catalog, at each preload end, limit by limit."""
 
 import numpy as np
 import pytest
@@ -79,9 +79,10 @@ def test_unsupported_function_fails_loudly():
 
 @pytest.mark.parametrize("seed,groups", [(1, 8), (3, 8), (5, 8), (1, 2), (3, 1)])
 def test_drive_bounds_hold_every_combination(seed, groups, monkeypatch):
-    """Per (nut, bearing) block, each drive limit's interval bound is at least as good as the value of every
-    guide and drive pair in it at the favourable preload end (weak motors: the drive limits are active); with
-    the bearings taken one by one (8 groups of these 5 bearings) and together (2 groups, 1 group)."""
+    """Per (nut, bearing) block, each drive limit's interval bound is at least as good as the value
+    of every guide and drive pair in it at the favourable preload end (weak motors: the drive limits
+    are active); with the bearings taken one by one (8 groups of these 5 bearings) and together (2
+    groups, 1 group)."""
     from test_explain import _case
 
     monkeypatch.setattr(drivebounds, "DRIVE_BEARING_GROUPS", groups)
@@ -105,10 +106,11 @@ def test_drive_bounds_hold_every_combination(seed, groups, monkeypatch):
 
 
 def test_drive_block_in_intervals_holds_every_mass_and_drag():
-    """The drive block (model/drive.py) on interval moving mass and drag torque holds its value at every point
-    of the box, with a braking six times harder than the acceleration: there a carriage with less friction
-    needs more peak torque (the motor brakes what friction does not), so the guide of least friction is not
-    the optimistic one and the bound must take the whole range; and on a vertical axis."""
+    """The drive block (model/drive.py) on interval moving mass and drag torque holds its value at
+    every point of the box, with a braking six times harder than the acceleration: there a carriage
+    with less friction needs more peak torque (the motor brakes what friction does not), so the
+    guide of least friction is not the optimistic one and the bound must take the whole range; and
+    on a vertical axis."""
     from pathlib import Path
 
     from axisopt.design import load_design
@@ -161,9 +163,10 @@ def test_drive_block_in_intervals_holds_every_mass_and_drag():
 
 @pytest.mark.parametrize("seed,groups", [(1, 8), (3, 2), (5, 1)])
 def test_drive_hull_holds_every_guide_drive_and_preload(seed, groups, monkeypatch):
-    """drivebounds.drive_hull: per (nut, bearing group, drive), each drive limit's bound is at least as good as
-    its value with every guide at every allowed preload (the two ends and three points between them), so the
-    screening may leave out a drive that fails it and the explanation a drive it shows cannot score low."""
+    """drivebounds.drive_hull: per (nut, bearing group, drive), each drive limit's bound is at least
+    as good as its value with every guide at every allowed preload (the two ends and three points
+    between them), so the screening may leave out a drive that fails it and the explanation a drive
+    it shows cannot score low."""
     from test_explain import _case
 
     monkeypatch.setattr(drivebounds, "DRIVE_BEARING_GROUPS", groups)

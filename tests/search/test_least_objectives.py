@@ -1,7 +1,7 @@
-"""Cost and moving mass as objectives (issue 57): a least cost or mass alone, first or second in a lexicographic
-order, and the cheaper design a stiffness or frequency optimum points to.  The reference is the exhaustive
-enumeration on random catalogs (no new formula: the cost is a sum of part prices, the moving mass a sum of part
-masses)."""
+"""Cost and moving mass as objectives (issue 57): a least cost or mass alone, first or second in a
+lexicographic order, and the cheaper design a stiffness or frequency optimum points to.  The
+reference is the exhaustive enumeration on random catalogs (no new formula: the cost is a sum of
+part prices, the moving mass a sum of part masses)."""
 
 from __future__ import annotations
 
@@ -28,9 +28,10 @@ def _with(p, **objective):
 
 @functools.cache
 def _exhaustive(seed: int, mode: str):
-    """Every combination of ``_problem(seed)`` under the single objective ``mode`` (top 3), solved once a
-    module: the reference of the least cost and mass test and the primary's own optimum of the lexicographic
-    test (the best design does not depend on how many runners-up are kept)."""
+    """Every combination of ``_problem(seed)`` under the single objective ``mode`` (top 3), solved
+    once a
+    module: the reference of the least cost and mass test and the primary's own optimum of the
+    lexicographic test (the best design does not depend on how many runners-up are kept)."""
     return solve(_with(_problem(seed), mode=mode), "exhaustive", top=3, sensitivities=False)
 
 
@@ -98,8 +99,9 @@ def test_weighted_sum_refuses_a_least_goal(tmp_path):
 
 
 def test_a_stiffness_optimum_names_the_markedly_cheaper_design():
-    """The lathe Z: the stiffest design costs 7,812 EUR; one within 1 % of its stiffness costs 7 % less.  The
-    note's design is the lexicographic [stiffness, cost] answer at the same tolerance, solved on its own."""
+    """The lathe Z: the stiffest design costs 7,812 EUR; one within 1 % of its stiffness costs 7 %
+    less.  The note's design is the lexicographic [stiffness, cost] answer at the same tolerance,
+    solved on its own."""
     p = load_problem(ROOT / "problems" / "lathe_z_problem.yaml")
     res = solve(p)
     ch = res.cheaper

@@ -1,6 +1,6 @@
-"""One life requirement: a problem's ``limits.min_life`` is the life the nut, bearing and guide checks need
-unless its axis sets ``required_life`` (before, a hidden 20 000 h default bound beside a user's 15 000 h
-limit, and relaxing the limit showed no gain)."""
+"""One life requirement: a problem's ``limits.min_life`` is the life the nut, bearing and guide
+checks need unless its axis sets ``required_life`` (before, a hidden 20 000 h default bound beside a
+user's 15 000 h limit, and relaxing the limit showed no gain)."""
 
 from __future__ import annotations
 
@@ -36,10 +36,9 @@ def test_an_explicit_required_life_stands(tmp_path):
 
 def test_the_bearing_check_needs_the_life_limit(tmp_path):
     # teaching's support-bearing sets live less than 13 000 h at its mean speed and fw 1.5 (the best
-    # 12 360 h): a
-    # 13 000 h life limit leaves no design once the bearing check needs it too, while with an
-    # explicit 12 000 h
-    # check requirement the limit holds the nut alone (it binds there) and a design exists
+    # 12 360 h): a 13 000 h life limit leaves no design once the bearing check needs it too, while
+    # with an explicit 12 000 h check requirement the limit holds the nut alone (it binds there) and
+    # a design exists
     p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
     assert solve(p.with_limit("min_life", 13000 * H), sensitivities=False).status == "infeasible"
     text = (ROOT / "problems" / "teaching_problem.yaml").read_text(encoding="utf-8")
@@ -60,8 +59,7 @@ def test_the_defaults_line_shows_the_values_the_life_checks_read(capsys):
     from axisopt.cli import main
 
     # teaching: axial_load 2000 N, no mean axial load given: a third of the load; its mean_speed is
-    # given, so it is
-    # not a default
+    # given, so it is not a default
     assert (
         main(["solve", str(ROOT / "problems" / "teaching_problem.yaml"), "--no-sensitivity"]) == 0
     )
@@ -75,8 +73,8 @@ def test_the_defaults_line_shows_the_values_the_life_checks_read(capsys):
 
 def test_the_life_limits_sensitivity_is_the_gain_of_solving_it_relaxed():
     # relaxing min_life relaxes the checks' required life too (a new search space: the parts'
-    # parameters carry
-    # it); the sensitivity table once re-solved on the old space and showed +0 where the life binds
+    # parameters carry it); the sensitivity table once re-solved on the old space and showed +0
+    # where the life binds
     p = load_problem(ROOT / "problems" / "teaching_problem.yaml")
     res = solve(p)
     row = next(b for b in res.binding if b.limit == "min_life")

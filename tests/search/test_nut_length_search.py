@@ -1,7 +1,8 @@
-"""The lead band over the thread the nut travels (stroke + nut length, issue 53): with nut lengths that
-differ among the nuts (some left to the catalog envelope), the default search equals exhaustive enumeration
-on randomized problems whose positioning limit binds, and the optimum's lead row is the grade's band over
-stroke + its own nut length, read here from catalogs/lead_tolerances.csv apart from the model.  Fixed seeds."""
+"""The lead band over the thread the nut travels (stroke + nut length, issue 53): with nut lengths
+that differ among the nuts (some left to the catalog envelope), the default search equals exhaustive
+enumeration on randomized problems whose positioning limit binds, and the optimum's lead row is the
+grade's band over stroke + its own nut length, read here from catalogs/lead_tolerances.csv apart
+from the model.  Fixed seeds."""
 
 from __future__ import annotations
 
@@ -81,9 +82,10 @@ def test_default_equals_exhaustive_with_nut_lengths(seed):
 
 
 def test_the_travelled_thread_never_helps_and_moves_choices():
-    """The same problems with every nut 1 nm long (the old reading over the stroke alone) are never worse: the
-    nut's length only lengthens the band (both objectives here are maximised).  On these seeds it moves the
-    choice at least once (a finer grade for the same axis), so the rule is exercised above."""
+    """The same problems with every nut 1 nm long (the old reading over the stroke alone) are
+    never worse: the nut's length only lengthens the band (both objectives here are maximised).  On
+    these seeds it moves the choice at least once (a finer grade for the same axis), so the rule is
+    exercised above."""
     moved = 0
     for seed in range(6):
         d = solve(_problem(seed), "default", top=1, sensitivities=False)

@@ -1,6 +1,6 @@
-"""build_space reuses the filtered part tables of an earlier problem on the same catalog object with the same
-restrictions (a study's cases), while each problem keeps its own axis and parameter cache; a change of
-restrictions or preload range builds anew.  Reference: the uncached build."""
+"""build_space reuses the filtered part tables of an earlier problem on the same catalog object with
+the same restrictions (a study's cases), while each problem keeps its own axis and parameter cache;
+a change of restrictions or preload range builds anew.  Reference: the uncached build."""
 
 from pathlib import Path
 
@@ -50,9 +50,10 @@ def test_other_restrictions_build_anew():
 
 
 def test_what_prunes_drives_builds_anew(tmp_path):
-    """The drive pruning reads the cycle's top speed, the speed margins and the lost-motion limit (parts._add_drives):
-    a case differing in one of them must not take a space pruned for another (issue 39: a laser case's space,
-    built without reductions under max_backlash 0, was reused for a lathe case that admits 10 um)."""
+    """The drive pruning reads the cycle's top speed, the speed margins and the lost-motion limit
+    (parts._add_drives): a case differing in one of them must not take a space pruned for another
+    (issue 39: a laser case's space, built without reductions under max_backlash 0, was reused for a
+    lathe case that admits 10 um)."""
     src = ROOT / "problems" / "lathe_z_problem.yaml"
     p = load_problem(src)  # admits 10 um: gearboxes are formed
     tight = p.with_limit("max_backlash", 1e-9)  # no gearbox's backlash fits
@@ -77,12 +78,13 @@ def test_what_prunes_drives_builds_anew(tmp_path):
 
 
 def test_relaxing_a_backlash_limit_that_left_reductions_out_builds_anew(monkeypatch, tmp_path):
-    """The sensitivity of max_backlash re-solves on the relaxed problem's own space when the limit left reductions
-    out (a relaxed limit may admit them; the space prunes on it), and on the same space when it left none out."""
+    """The sensitivity of max_backlash re-solves on the relaxed problem's own space when the limit
+    left reductions out (a relaxed limit may admit them; the space prunes on it), and on the same
+    space when it left none out."""
     from axisopt.search import sensitivity, solve
 
-    # the teaching problem with reductions admitted (the shipped file leaves them out since issue
-    # 54)
+    # the teaching problem with reductions admitted (the shipped file leaves them out since
+    # issue 54)
     f = tmp_path / "teaching.yaml"
     f.write_text(
         (ROOT / "problems" / "teaching_problem.yaml")

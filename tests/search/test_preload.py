@@ -19,7 +19,8 @@ def test_threshold_of_a_monotone_limit(points):
 
 
 def test_threshold_from_above_and_of_an_interval():
-    """A limit met on an interval [l, u] of preloads, searched from a feasible point toward each end."""
+    """A limit met on an interval [l, u] of preloads, searched from a feasible point toward each
+    end."""
     lo, hi = np.zeros(20), np.full(20, 100.0)
     l, u = np.linspace(5, 40, 20), np.linspace(60, 95, 20)
     start = 0.5 * (l + u)
@@ -33,9 +34,10 @@ def test_threshold_from_above_and_of_an_interval():
 
 
 def test_exact_solve_drops_early_what_the_refined_threshold_would_reject():
-    """exact_solve drops the combinations that miss a limit a higher preload helps already at the coarse
-    bracket's upper end (COARSE_BITS): every combination's feasibility, objective and (feasible) preload are
-    those of the solve that refines every threshold to the bisection's 2^-52 before checking."""
+    """exact_solve drops the combinations that miss a limit a higher preload helps already at the
+    coarse bracket's upper end (COARSE_BITS): every combination's feasibility, objective and
+    (feasible) preload are those of the solve that refines every threshold to the bisection's 2^-52
+    before checking."""
     import sys
     import time
     import warnings

@@ -1,6 +1,6 @@
-"""The certificate counts the combinations never formed because of a (motor, coupling) pair: a coupling
-another beats on every count, or one that cannot carry the motor's peak torque.  Reference: the pairs
-counted by hand for a catalog built so that the answer is known."""
+"""The certificate counts the combinations never formed because of a (motor, coupling) pair: a
+coupling another beats on every count, or one that cannot carry the motor's peak torque.  Reference:
+the pairs counted by hand for a catalog built so that the answer is known."""
 
 from dataclasses import replace
 

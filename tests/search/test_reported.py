@@ -1,6 +1,6 @@
-"""The values a result reports (search.reported.REPORTED), declared once: each is a Candidate field after
-``objective``, a column of the candidate tables and of the study table (with its profile columns after it), and
-a value the candidate is filled with (a goal's field or a model output)."""
+"""The values a result reports (search.reported.REPORTED), declared once: each is a Candidate field
+after ``objective``, a column of the candidate tables and of the study table (with its profile
+columns after it), and a value the candidate is filled with (a goal's field or a model output)."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""The search chooses a driven rotating-nut unit where the catalog offers one and the axis needs it (a long axis
-whose turning screw would whirl), and never puts one on a screw not fixed at both ends."""
+"""The search chooses a driven rotating-nut unit where the catalog offers one and the axis needs it
+(a long axis whose turning screw would whirl), and never puts one on a screw not fixed at both
+ends."""
 
 from __future__ import annotations
 
@@ -20,7 +21,7 @@ catalog:
   {extra}
 continuous:
   nut_preload: {{min: 100 N, max: 10 kN}}
-"""
+"""  # noqa: E501
 
 
 def _problem(tmp_path, mountings="fixed-supported, fixed-fixed", extra=""):
@@ -36,8 +37,9 @@ def _problem(tmp_path, mountings="fixed-supported, fixed-fixed", extra=""):
 
 
 def test_a_long_axis_gets_a_rotating_nut_unit(tmp_path):
-    """2.5 m stroke at 16 m/min: a turning 40x10 screw over a 2.78 m span may turn at 980 rpm (THK A-695,
-    fixed-fixed, 0.8 safety), below the 1 600 rpm the speed asks; the THK DIR unit on a standing screw does not
+    """2.5 m stroke at 16 m/min: a turning 40x10 screw over a 2.78 m span may turn at 980 rpm (THK
+    A-695, fixed-fixed, 0.8 safety), below the 1 600 rpm the speed asks; the THK DIR unit on a
+    standing screw does not
     whirl: the proven optimum is a DIR unit, fixed-fixed."""
     res = solve(_problem(tmp_path), "default", top=1, sensitivities=False)
     assert res.certificate.proven

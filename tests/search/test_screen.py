@@ -1,7 +1,7 @@
-"""The faster screening paths against plain references: the drive stage evaluated structured over (survivor,
-drive pair) against the model evaluated per (combination, drive) row on the flat layout, the screening over
-cache-sized sub-blocks against one block, and mathx.power's products against numpy's power; random catalogs,
-fixed seeds."""
+"""The faster screening paths against plain references: the drive stage evaluated structured over
+(survivor, drive pair) against the model evaluated per (combination, drive) row on the flat layout,
+the screening over cache-sized sub-blocks against one block, and mathx.power's products against
+numpy's power; random catalogs, fixed seeds."""
 
 import numpy as np
 import pytest
@@ -20,7 +20,8 @@ from axisopt.search.task.space import DRIVE_KEYS
 
 
 def _reference_drives(space, mounting, constraints, phases, nn, bb, gg):
-    """Each (survivor, drive) row on its own: params_flat and drive_response per expanded row (float64)."""
+    """Each (survivor, drive) row on its own: params_flat and drive_response per expanded row
+    (float64)."""
     D = space.n_drives
     cons = [c for c in constraints if c.key in DRIVE_KEYS]
     ne, be = np.repeat(nn, D), np.repeat(bb, D)

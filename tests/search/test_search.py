@@ -74,9 +74,10 @@ def test_default_equals_exhaustive_randomized(seed, mode):
 @pytest.mark.parametrize("seed", range(6))
 @pytest.mark.parametrize("mode", ["stiffness", "frequency"])
 def test_default_equals_exhaustive_rotating_nut(seed, mode):
-    """Catalogs where about half the nuts are driven rotating-nut units (no whirl, the unit's inertia, bearing,
-    drag and speed; only on a fixed-fixed screw) and some parts use the unit estimates: default == exhaustive,
-    and no proposed design puts a unit on another mounting."""
+    """Catalogs where about half the nuts are driven rotating-nut units (no whirl, the unit's
+    inertia, bearing, drag and speed; only on a fixed-fixed screw) and some parts use the
+    unit estimates: default == exhaustive, and no proposed design puts a unit on another
+    mounting."""
     rng = np.random.default_rng(300 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=3, n_bearings=6, n_guides=5, rotating=True)
     if seed % 2:
@@ -108,8 +109,9 @@ def test_default_equals_exhaustive_rotating_nut(seed, mode):
 @pytest.mark.parametrize("seed", range(6))
 @pytest.mark.parametrize("mode", ["tool_stiffness", "frequency"])
 def test_default_equals_exhaustive_carriage(seed, mode):
-    """The carriage's checks (guide and nut static safety, guide life under the cutting loads), the tool-stiffness
-    limit and objective, and the rocking modes in the first frequency: the default search equals enumeration."""
+    """The carriage's checks (guide and nut static safety, guide life under the cutting loads), the
+    tool-stiffness limit and objective, and the rocking modes in the first frequency: the default
+    search equals enumeration."""
     rng = np.random.default_rng(100 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=3, n_bearings=5, n_guides=8, carriage=True)
     limits = {
@@ -146,9 +148,9 @@ REDUCTION_SEEDS = (0, 1, 2, 3, 5, 7)
 
 
 def _default_vs_exhaustive(p):
-    """``p`` with motor and coupling searched and every vendor margin at 1, solved by the default method and by
-    exhaustive enumeration (top 2): both find a design or neither, and the same answer.  Returns the problem
-    and the default method's result."""
+    """``p`` with motor and coupling searched and every vendor margin at 1, solved by the default
+    method and by exhaustive enumeration (top 2): both find a design or neither, and the same
+    answer.  Returns the problem and the default method's result."""
     from dataclasses import replace
 
     p = replace(
@@ -166,15 +168,16 @@ def _default_vs_exhaustive(p):
 
 @pytest.mark.parametrize("seed", REDUCTION_SEEDS)
 def test_default_equals_exhaustive_with_reductions(seed):
-    """(motor, coupling, reduction or none) triples as search choices on randomized catalogs: the default
-    method equals exhaustive enumeration (the reduction's torque checks are convex in the preload, its
-    stiffness is in series with the coupling's in the chain the bounds relax, its price in the cost)."""
+    """(motor, coupling, reduction or none) triples as search choices on randomized catalogs: the
+    default method equals exhaustive enumeration (the reduction's torque checks are convex in the
+    preload, its stiffness is in series with the coupling's in the chain the bounds relax, its price
+    in the cost)."""
     _reduction_case(seed)
 
 
 def _random_duty(seed: int) -> tuple:
-    """The randomized drive tests' duty cycle: none for seeds 0 and 1, else a jerk-limited rapid, a feed against
-    2.5 kN, a dwell and a return."""
+    """The randomized drive tests' duty cycle: none for seeds 0 and 1, else a jerk-limited rapid, a
+    feed against 2.5 kN, a dwell and a return."""
     from axisopt.physics.motion import Segment
 
     return (
@@ -201,8 +204,7 @@ def _reduction_case(seed):
     make_double(cat)
     cat = add_reductions(add_drives(cat, rng, n_motors=3, n_couplings=2), rng, n=3)
     # issue 54: belt stages (ratio 1-3, no backlash) and 3-against-1 support sets beside them, drawn
-    # from a
-    # stream of their own (the cases' other draws unchanged)
+    # from a stream of their own (the cases' other draws unchanged)
     extra = np.random.default_rng(700 + seed)
     cat = add_belt_stages(add_support_sets(cat, extra), extra)
     vertical = seed % 2 == 1
@@ -237,7 +239,8 @@ def _reduction_case(seed):
 
 
 def test_reductions_are_chosen_on_some_randomized_catalog():
-    """The randomized cases above exercise both choices: some optimum has a reduction, some has none."""
+    """The randomized cases above exercise both choices: some optimum has a reduction, some has
+    none."""
     chosen = [_reduction_case(s) for s in REDUCTION_SEEDS]
     reds = {bool(r.best.reduction) for r in chosen if r.best is not None}
     assert reds == {True, False}, reds
@@ -245,9 +248,9 @@ def test_reductions_are_chosen_on_some_randomized_catalog():
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 5, 7])
 def test_default_equals_exhaustive_with_drive(seed):
-    """Motor and coupling as search choices: the default method equals exhaustive enumeration, on horizontal
-    and vertical axes (gravity makes the motor-torque limits convex, not monotone, in the nut preload: the
-    drag helps when lowering) and with a duty cycle of cutting moves and dwells."""
+    """Motor and coupling as search choices: the default method equals exhaustive enumeration, on
+    horizontal and vertical axes (gravity makes the motor-torque limits convex, not monotone, in the
+    nut preload: the drag helps when lowering) and with a duty cycle of cutting moves and dwells."""
 
     rng = np.random.default_rng(100 + seed)
     cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
@@ -281,10 +284,10 @@ def test_default_equals_exhaustive_with_drive(seed):
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 3])
 def test_default_equals_exhaustive_with_phase_masses_and_forces(seed):
-    """The vendors' life loads per phase (THK A-725/A-739) with a workpiece unloaded mid-cycle (a phase's own
-    moving mass), a cutting move's process force and a dwell held against a force, horizontal and vertical,
-    motor and coupling searched, the vendors' load factor by speed and the estimated mounts: the default method
-    still equals exhaustive enumeration."""
+    """The vendors' life loads per phase (THK A-725/A-739) with a workpiece unloaded mid-cycle (a
+    phase's own moving mass), a cutting move's process force and a dwell held against a force,
+    horizontal and vertical, motor and coupling searched, the vendors' load factor by speed and the
+    estimated mounts: the default method still equals exhaustive enumeration."""
 
     from axisopt.physics.motion import Segment
 
@@ -323,10 +326,11 @@ def test_default_equals_exhaustive_with_phase_masses_and_forces(seed):
 
 @pytest.mark.parametrize("seed", [1, 2, 3, 4, 5, 6])
 def test_default_equals_exhaustive_with_counterbalance(seed):
-    """A counterweighted (even seeds, its chain's efficiency and mass drawn) or cylinder-balanced (odd seeds, a force
-    over the stroke with its tolerance, over- or underbalanced) vertical axis with a duty cycle of phase masses,
-    motor and coupling searched: the balance force in every phase load, the motor torques, inertia, holding
-    torque and lift-off; the default method still equals exhaustive enumeration."""
+    """A counterweighted (even seeds, its chain's efficiency and mass drawn) or cylinder-balanced
+    (odd seeds, a force over the stroke with its tolerance, over- or underbalanced) vertical axis
+    with a duty cycle of phase masses, motor and coupling searched: the balance force in every phase
+    load, the motor torques, inertia, holding torque and lift-off; the default method still equals
+    exhaustive enumeration."""
 
     from axisopt.design import Counterbalance
     from axisopt.physics.motion import Segment
@@ -380,7 +384,8 @@ def test_default_equals_exhaustive_with_counterbalance(seed):
 
 
 def _drive_problem(seed, axis_coupling):
-    """A synthetic drive problem whose two couplings are both stiffer than the axis's stand-in value."""
+    """A synthetic drive problem whose two couplings are both stiffer than the axis's stand-in
+    value."""
     from dataclasses import replace
 
     rng = np.random.default_rng(300 + seed)
@@ -405,10 +410,11 @@ def _drive_problem(seed, axis_coupling):
 
 @pytest.mark.parametrize("seed", [2, 5])
 def test_coupling_stiffness_in_chain_is_bounded_over_drive_pairs(seed):
-    """The coupling's torsional stiffness is in series in the stiffness chain, so the mechanical screening
-    stage must not take the axis's stand-in value (here 2e3 N m/rad, far softer than either searched
-    coupling): it pruned the optimum by bound (objective 150.8 against 192.0 N/um, seed 2) and called a
-    problem with a binding minimum stiffness infeasible.  Reference: exhaustive enumeration."""
+    """The coupling's torsional stiffness is in series in the stiffness chain, so the mechanical
+    screening stage must not take the axis's stand-in value (here 2e3 N m/rad, far softer than
+    either searched coupling): it pruned the optimum by bound (objective 150.8 against 192.0 N/um,
+    seed 2) and called a problem with a binding minimum stiffness infeasible.  Reference: exhaustive
+    enumeration."""
     p = _drive_problem(seed, axis_coupling=2e3)
     e = solve(p, "exhaustive", top=1, sensitivities=False)
     d = solve(p, "default", top=1, sensitivities=False)
@@ -555,8 +561,9 @@ def test_cli_solve_json_and_exit_codes(tmp_path, capsys):
 
 
 def test_motor_flange_restriction(tmp_path, capsys):
-    """catalog.max_motor_flange keeps only motors whose listed flange fits (a motor without a listed flange
-    cannot be shown to fit); counted independently from motors.csv.  Nothing left: a one-line error."""
+    """catalog.max_motor_flange keeps only motors whose listed flange fits (a motor without a listed
+    flange cannot be shown to fit); counted independently from motors.csv.  Nothing left: a one-line
+    error."""
     import pandas as pd
 
     root = Path(__file__).resolve().parents[2]
@@ -583,11 +590,12 @@ def test_motor_flange_restriction(tmp_path, capsys):
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 3])
 def test_default_equals_exhaustive_with_heat_balance(seed):
-    """Issue 26: with a duty cycle the temperature rise comes from the friction power, which rises with the nut
-    preload; the thermal growth, a fixed-fixed screw's pretension (auto or given) and the bearing and screw
-    checks that read it move with the preload too.  The default method still equals exhaustive enumeration.
-    Even seeds: fixed-fixed only with a cooled screw (axis.heat_transfer), so that its pretension stays
-    bearable; odd seeds: both mountings in still air."""
+    """Issue 26: with a duty cycle the temperature rise comes from the friction power, which rises
+    with the nut preload; the thermal growth, a fixed-fixed screw's pretension (auto or given) and
+    the bearing and screw checks that read it move with the preload too.  The default method still
+    equals exhaustive enumeration.  Even seeds: fixed-fixed only with a cooled screw
+    (axis.heat_transfer), so that its pretension stays bearable; odd seeds: both mountings in still
+    air."""
     from axisopt.physics.motion import Segment
 
     rng = np.random.default_rng(300 + seed)

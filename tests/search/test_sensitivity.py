@@ -1,4 +1,5 @@
-"""The limit what-ifs (search.sensitivity): they stop at the deadline and say so, and name a binding drag limit."""
+"""The limit what-ifs (search.sensitivity): they stop at the deadline and say so, and name a binding
+drag limit."""
 
 from __future__ import annotations
 
@@ -19,8 +20,9 @@ HERE = Path(__file__).resolve().parent / "unseen"
 
 
 def test_what_ifs_stop_at_the_deadline_and_say_so():
-    """The sensitivities and the advice's verifying searches take the command's deadline: past it, each limit
-    is named as cut (none reported unproven), and the advice verifies nothing and says it was cut."""
+    """The sensitivities and the advice's verifying searches take the command's deadline: past it,
+    each limit is named as cut (none reported unproven), and the advice verifies nothing and says it
+    was cut."""
     import time
 
     from axisopt.search import solve
@@ -54,8 +56,7 @@ def test_sensitivity_reports_binding_drag_limit():
     cat = make_catalog(np.random.default_rng(9), n_bearings=8)
     make_double(cat)
     # 0.8 N.m: since issue 26 the bearings without a listed starting torque take the vendor envelope
-    # (0.6 was
-    # infeasible)
+    # (0.6 was infeasible)
     p = make_problem(cat, axial_load=800.0, limits={"max_drag_torque": 0.8, "max_cost": 1e5})
     r = solve(p, "default", top=1)
     assert r.status == "optimal"
@@ -65,9 +66,10 @@ def test_sensitivity_reports_binding_drag_limit():
 
 
 def test_reused_main_search_gives_the_same_sensitivities():
-    """The re-solves of a limit that does not move the best preload (cost, a minimum stiffness or frequency)
-    take the main search's solved combinations (issue 52): the same gains as re-solving every combination,
-    on a generated axis with a cost, a life and a stiffness limit and on the teaching problem."""
+    """The re-solves of a limit that does not move the best preload (cost, a minimum stiffness or
+    frequency) take the main search's solved combinations (issue 52): the same gains as re-solving
+    every combination, on a generated axis with a cost, a life and a stiffness limit and on the
+    teaching problem."""
     import sys
     import time
 
@@ -119,8 +121,8 @@ def _load_text(path, text):
 
 
 def test_reuse_refused_for_a_limit_that_moves_the_preload():
-    """A life or drag limit relaxed raises the best preload: its re-solve does not take the main search's
-    answers (search.sensitivity.reusable)."""
+    """A life or drag limit relaxed raises the best preload: its re-solve does not take the main
+    search's answers (search.sensitivity.reusable)."""
     import time
 
     from axisopt.search import bestfirst, front

@@ -1,6 +1,7 @@
-"""The twin-drive gantry (issue 40, axisopt.model.gantry) in the search: the default method equals exhaustive
-enumeration on randomized twin-drive problems (the governing side's loads, the gantry's translation and racking
-modes in the frequency minimum, the pair's cost), with motors and couplings searched.  Fixed seeds."""
+"""The twin-drive gantry (issue 40, axisopt.model.gantry) in the search: the default method equals
+exhaustive enumeration on randomized twin-drive problems (the governing side's loads, the gantry's
+translation and racking modes in the frequency minimum, the pair's cost), with motors and couplings
+searched.  Fixed seeds."""
 
 from __future__ import annotations
 
@@ -73,7 +74,8 @@ def test_default_equals_exhaustive_twin_drive(seed, mode):
 
 
 def test_twin_problems_have_optima():
-    """The seeds above are drawn so that most twin-drive cases have an optimum (the comparison is not vacuous)."""
+    """The seeds above are drawn so that most twin-drive cases have an optimum (the comparison is
+    not vacuous)."""
     found = [
         solve(_twin_problem(s, "frequency"), "default", top=1, sensitivities=False).best is not None
         for s in range(4)

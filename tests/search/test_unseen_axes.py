@@ -1,9 +1,12 @@
-"""Axes written outside the project (issue 52): each answers with its status and exit code, no traceback.
+"""Axes written outside the project (issue 52): each answers with its status and exit code, no
+traceback.
 
-The files are in tests/search/unseen/: the fixed-fixed screw with ``end_margin: 0 mm`` (the nut reaches the far
-bearing: the screw's stiffness there divided by zero in the positioning budget), the coupling filter that leaves
-no coupling for any motor's peak torque (a valid infeasible problem, not an input error), and the slowest
-problems of bench/axis_generator.py (their times are measured in bench/bench_generalize.py, not here)."""
+The files are in tests/search/unseen/: the fixed-fixed screw with ``end_margin: 0 mm`` (the nut
+reaches the far
+bearing: the screw's stiffness there divided by zero in the positioning budget), the coupling filter
+that leaves no coupling for any motor's peak torque (a valid infeasible problem, not an input
+error), and the slowest problems of bench/axis_generator.py (their times are measured in
+bench/bench_generalize.py, not here)."""
 
 import json
 from pathlib import Path
@@ -33,7 +36,8 @@ def _solve(tmp_path, name, *extra, advice=False):
 
 
 def test_fixed_fixed_screw_is_rigid_at_its_bearing():
-    """x (L - x) = 0 at the far bearing: a finite stiffness far above the mid-span one, on floats and arrays."""
+    """x (L - x) = 0 at the far bearing: a finite stiffness far above the mid-span one, on floats
+    and arrays."""
     d_r, span = 0.02, 0.8
     k_end = ps.screw_stiffness(d_r, span, span, "fixed-fixed")
     k_mid = ps.screw_stiffness(d_r, span / 2, span, "fixed-fixed")
@@ -70,8 +74,9 @@ def test_coupling_filter_below_peak_torque_is_infeasible_not_input_error(tmp_pat
 
 
 def test_time_limit_bounds_every_arrangement_and_never_claims_a_proof(tmp_path):
-    """Three counterbalance options: the time limit is the whole command's (each arrangement gets what the ones
-    before it left), and an arrangement it cuts makes the answer unproven, never 'optimal' (issue 52)."""
+    """Three counterbalance options: the time limit is the whole command's (each arrangement gets
+    what the ones before it left), and an arrangement it cuts makes the answer unproven, never
+    'optimal' (issue 52)."""
     from axisopt.problem import load_problem
     from axisopt.search import solve
 
@@ -104,9 +109,10 @@ def _apply(text: str, changes) -> str:
 
 @pytest.mark.slow
 def test_tutorial_infeasible_problem_gets_a_design_change(tmp_path):
-    """problems/infeasible_problem.yaml (the tutorial's): a design change first -- the speed, acceleration and
-    the cut lowered, the other mounting admitted, with the user's own limits set to what a design reaches --
-    never a vendor margin below 0.95; the problem with the changes written into its YAML solves."""
+    """problems/infeasible_problem.yaml (the tutorial's): a design change first -- the speed,
+    acceleration and the cut lowered, the other mounting admitted, with the user's own limits set to
+    what a design reaches -- never a vendor margin below 0.95; the problem with the changes written
+    into its YAML solves."""
     from axisopt.problem import load_problem
     from axisopt.search import solve
 
@@ -124,7 +130,8 @@ def test_tutorial_infeasible_problem_gets_a_design_change(tmp_path):
 
 
 def test_unit_slip_30_m_s_gets_lower_max_speed(tmp_path):
-    """The teaching problem with max_speed 30 m/s (for m/min): "lower axis.max_speed", re-solved from its YAML."""
+    """The teaching problem with max_speed 30 m/s (for m/min): "lower axis.max_speed", re-solved
+    from its YAML."""
     from axisopt.errors import ImplausibleInput
     from axisopt.problem import load_problem
     from axisopt.search import solve
@@ -145,8 +152,8 @@ def test_unit_slip_30_m_s_gets_lower_max_speed(tmp_path):
 
 # the ten generated problems (bench/axis_generator.py, seed 0) that took the longest CPU time in
 # bench/bench_generalize.py on the base commit (bd0fcfd), as the generator then wrote them: each
-# answered with its
-# status, proven, and an explanation whose relaxations keep every vendor margin at 0.95 or more
+# answered with its status, proven, and an explanation whose relaxations keep every vendor margin at
+# 0.95 or more
 SLOWEST = (
     "gen-0-2-vmc_z",
     "gen-0-3-lathe_x",
@@ -182,8 +189,9 @@ def test_slowest_generated_problems_answer(name):
 
 
 def test_unexplained_infeasible_answer_has_the_same_status():
-    """solve(..., explain=False) (the arrangements' what-if re-solves): the same proven infeasibility, without
-    the explanation's closest designs; a feasible problem's optimum is unchanged by it."""
+    """solve(..., explain=False) (the arrangements' what-if re-solves): the same proven
+    infeasibility, without the explanation's closest designs; a feasible problem's optimum is
+    unchanged by it."""
     from axisopt.problem import load_problem
     from axisopt.search import solve
 

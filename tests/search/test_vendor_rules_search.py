@@ -1,6 +1,7 @@
-"""default == exhaustive with each part by its own vendor's rule (model.motorrule on motors with different
-vendors' ratios or none, an unbalanced vertical axis, a drive torque limit, reductions' emergency-stop torques
-listed or not, the nut lift-off by load case or with the cut while accelerating) on randomized catalogs."""
+"""default == exhaustive with each part by its own vendor's rule (model.motorrule on motors with
+different vendors' ratios or none, an unbalanced vertical axis, a drive torque limit, reductions'
+emergency-stop torques listed or not, the nut lift-off by load case or with the cut while
+accelerating) on randomized catalogs."""
 
 from dataclasses import replace
 

@@ -1,5 +1,6 @@
-"""Helpers of the hardening tests: a study whose files live in the test's own directory, a case solver
-that kills its worker process on chosen cases, a disk that fills up, and worker processes to kill."""
+"""Helpers of the hardening tests: a study whose files live in the test's own directory, a case
+solver that kills its worker process on chosen cases, a disk that fills up, and worker processes to
+kill."""
 
 from __future__ import annotations
 
@@ -17,9 +18,10 @@ CRASH_CONFIG = "crash.json"
 
 
 def copy_study(tmp_path: Path, n: int = 16) -> Path:
-    """A copy of the example study ``teaching_random`` (inline base, ~0.15 s a case) cut to its first ``n``
-    cases: its case ids are those of the original's first cases, and ``ctx['base_dir']`` is ``tmp_path``
-    (where :func:`crashing_solve` looks)."""
+    """A copy of the example study ``teaching_random`` (inline base, ~0.15 s a case) cut to its
+    first ``n``
+    cases: its case ids are those of the original's first cases, and ``ctx['base_dir']`` is
+    ``tmp_path`` (where :func:`crashing_solve` looks)."""
     text = (STUDIES / "teaching_random.yaml").read_text(encoding="utf-8")
     assert text.count("n: 24,") == 4
     dest = Path(tmp_path) / "teaching_random.yaml"
@@ -28,9 +30,9 @@ def copy_study(tmp_path: Path, n: int = 16) -> Path:
 
 
 def crashing_solve(ctx: dict, case):
-    """``solve_case``, except that the worker kills itself (SIGKILL) while solving the cases listed in
-    ``base_dir/crash.json``: ``{"always": [index, ...], "once": [index, ...]}``; a "once" case leaves a
-    marker file so that its second try succeeds."""
+    """``solve_case``, except that the worker kills itself (SIGKILL) while solving the cases listed
+    in ``base_dir/crash.json``: ``{"always": [index, ...], "once": [index, ...]}``; a "once" case
+    leaves a marker file so that its second try succeeds."""
     base = Path(ctx["base_dir"])
     try:
         cfg = json.loads((base / CRASH_CONFIG).read_text(encoding="utf-8"))
@@ -50,7 +52,8 @@ def crashing_solve(ctx: dict, case):
 
 
 class FullDisk:
-    """A file object whose writes fail with ENOSPC (or another errno) once ``budget`` bytes are written."""
+    """A file object whose writes fail with ENOSPC (or another errno) once ``budget`` bytes are
+    written."""
 
     def __init__(self, fh, budget: int, code: int):
         self.fh, self.left, self.code = fh, budget, code
@@ -78,9 +81,10 @@ class FullDisk:
 
 
 def fill_disk_on(monkeypatch, name: str, budget: int = 100, code: int = errno.ENOSPC) -> None:
-    """Make every write to a file called ``name`` (or to a temporary file for it, ``.NAME.*``) fail with
-    ``code`` after ``budget`` bytes, whoever opens it (``open``, ``io.open``, ``Path.write_text``); other
-    files are written normally.  Linux only (an open file descriptor's name is read from /proc)."""
+    """Make every write to a file called ``name`` (or to a temporary file for it, ``.NAME.*``) fail
+    with ``code`` after ``budget`` bytes, whoever opens it (``open``, ``io.open``,
+    ``Path.write_text``); other files are written normally.  Linux only (an open file descriptor's
+    name is read from /proc)."""
     import builtins
     import io
 
@@ -102,7 +106,8 @@ def fill_disk_on(monkeypatch, name: str, budget: int = 100, code: int = errno.EN
 
 
 def worker_pid(out: Path, exclude=()) -> int | None:
-    """The pid of a pool worker that wrote the newest case file in ``out/cases`` and is not in ``exclude``."""
+    """The pid of a pool worker that wrote the newest case file in ``out/cases`` and is not in
+    ``exclude``."""
     recs = []
     for p in (Path(out) / "cases").glob("*.json"):
         try:

@@ -22,7 +22,8 @@ def write_study(tmp_path: Path, body: str, name: str = "study.yaml") -> Path:
 
 
 def small_study(tmp_path) -> Path:
-    """8 cases: 4 strokes x 2 mountings of the teaching problem, one budget too tight (infeasible)."""
+    """8 cases: 4 strokes x 2 mountings of the teaching problem, one budget too tight
+    (infeasible)."""
     return write_study(
         tmp_path,
         """\
@@ -42,7 +43,8 @@ def stable(df):
 
 
 def kill_group(proc) -> None:
-    """kill -9 a study subprocess started with start_new_session=True and every worker it started."""
+    """kill -9 a study subprocess started with start_new_session=True and every worker it
+    started."""
     import os
     import signal
 
@@ -53,5 +55,6 @@ def kill_group(proc) -> None:
 
 
 def study_code(df) -> int:
-    """The exit code of a study whose results table is ``df``: 1 when a case has no design, else 0."""
+    """The exit code of a study whose results table is ``df``: 1 when a case has no design, else
+    0."""
     return int(bool((~df["status"].isin(["optimal", "feasible"])).any()))

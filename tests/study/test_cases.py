@@ -1,4 +1,5 @@
-"""Study cases (study.cases): a product expansion into cases with stable ids, each built into its problem."""
+"""Study cases (study.cases): a product expansion into cases with stable ids, each built into its
+problem."""
 
 from __future__ import annotations
 

@@ -61,8 +61,9 @@ def test_compare_designs_and_a_problem(tmp_path, capsys):
 
 
 def test_compare_shows_the_drive_side_by_side(tmp_path, capsys):
-    """A design with a motor next to one without: motor and coupling rows, the torques needed against the
-    motor's catalog values, and the drive figures in the CSV, the same numbers ``evaluate`` computes."""
+    """A design with a motor next to one without: motor and coupling rows, the torques needed
+    against the motor's catalog values, and the drive figures in the CSV, the same numbers
+    ``evaluate`` computes."""
     from axisopt.design import load_design
     from axisopt.model import evaluate
 

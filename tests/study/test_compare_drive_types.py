@@ -1,6 +1,7 @@
-"""`axisopt compare` takes rack-and-pinion and linear-motor designs beside screw designs (study.compare,
-report.compare): a saved drive design and a problem over drive types are each evaluated or solved to their
-design, shown side by side on what every type has, in the text, the JSON, the CSV and the HTML page."""
+"""`axisopt compare` takes rack-and-pinion and linear-motor designs beside screw designs
+(study.compare, report.compare): a saved drive design and a problem over drive types are each
+evaluated or solved to their design, shown side by side on what every type has, in the text, the
+JSON, the CSV and the HTML page."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""The study lock (study.lock): a stale lock (dead, garbled or reused pid) is taken over, another host's is not."""
+"""The study lock (study.lock): a stale lock (dead, garbled or reused pid) is taken over, another
+host's is not."""
 
 from __future__ import annotations
 

@@ -34,8 +34,8 @@ def test_dask_local_cluster_gives_the_same_rows(reference, tmp_path):
     distributed = pytest.importorskip("distributed")
     st, _, ref = reference
     # ":0": the scheduler's HTTP server on a free port, not on 8787 that another cluster may hold (a
-    # test on another
-    # pytest-xdist worker, another run on the machine; Dask then warns, an error here)
+    # test on another pytest-xdist worker, another run on the machine; Dask then warns, an error
+    # here)
     with distributed.LocalCluster(
         n_workers=1, threads_per_worker=2, processes=False, dashboard_address=":0"
     ) as cluster:

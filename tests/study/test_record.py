@@ -1,6 +1,7 @@
-"""Study records and outcomes (issue 24, item 6): a case file read back is validated (a bad one is solved again,
-never trusted); a combination invalid only together is a failed case, not a rejected study; a bad --report path
-is refused before the study runs; the exit code is 1 when any case has no design."""
+"""Study records and outcomes (issue 24, item 6): a case file read back is validated (a bad one is
+solved again, never trusted); a combination invalid only together is a failed case, not a rejected
+study; a bad --report path is refused before the study runs; the exit code is 1 when any case has no
+design."""
 
 from __future__ import annotations
 
@@ -94,7 +95,8 @@ def test_all_cases_solved_exits_zero(tmp_path, capsys):
 
 
 def test_combination_invalid_only_together_is_a_failed_case(tmp_path, capsys):
-    """nut_preload min 5 kN is valid alone, max 1 kN is valid alone; together (min > max) they are not."""
+    """nut_preload min 5 kN is valid alone, max 1 kN is valid alone; together (min > max) they are
+    not."""
     base = (PROBLEMS / "teaching_problem.yaml").read_text(encoding="utf-8")
     if "continuous:" not in base:
         base += "continuous:\n  nut_preload: {min: 200 N, max: 20 kN}\n"

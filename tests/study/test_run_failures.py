@@ -1,5 +1,6 @@
-"""Hardening of study runs: dead workers, full disks, unwritable or wrong-kind outputs, two runs on one
-directory, and kills at any moment -- each ends in the rows of an uninterrupted run or a one-line error."""
+"""Hardening of study runs: dead workers, full disks, unwritable or wrong-kind outputs, two runs on
+one directory, and kills at any moment -- each ends in the rows of an uninterrupted run or a
+one-line error."""
 
 from __future__ import annotations
 
@@ -30,7 +31,8 @@ LINUX_PROC = pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="need
 
 @pytest.fixture(scope="module")
 def reference(tmp_path_factory):
-    """The first 16 cases of teaching_random solved in this process, uninterrupted, with their outputs."""
+    """The first 16 cases of teaching_random solved in this process, uninterrupted, with their
+    outputs."""
     d = tmp_path_factory.mktemp("ref")
     st = load_study(copy_study(d))
     run_study(st, d / "out", workers=0)
@@ -38,8 +40,8 @@ def reference(tmp_path_factory):
 
 
 def _finished_copy(reference, tmp_path) -> tuple:
-    """A finished study directory (copy of the reference) and its study file: a resumed run solves nothing
-    and only writes the outputs."""
+    """A finished study directory (copy of the reference) and its study file: a resumed run solves
+    nothing and only writes the outputs."""
     _, ref_out, _ = reference
     src = copy_study(tmp_path)
     out = tmp_path / "out"
@@ -218,9 +220,10 @@ def _first_cases(ref, st):
 def test_only_the_case_a_dead_worker_was_running_is_charged(
     reference, tmp_path, monkeypatch, capsys
 ):
-    """Of 8 cases on 2 workers, case 3 kills its worker on the first try, case 5 on every try: 3 deaths while
-    other cases wait or run on the other worker.  Only case 5 is given up (worker_died), the run exits 1 with
-    a one-line note, and --resume solves it again and says so."""
+    """Of 8 cases on 2 workers, case 3 kills its worker on the first try, case 5 on every try: 3
+    deaths while other cases wait or run on the other worker.  Only case 5 is given up
+    (worker_died), the run exits 1 with a one-line note, and --resume solves it again and says
+    so."""
     src = copy_study(tmp_path, n=8)
     st = load_study(src)
     ref = _first_cases(reference[2], st)
@@ -350,8 +353,8 @@ def test_dask_worker_killed_mid_study_gives_the_uninterrupted_rows(reference, tm
     ref = _first_cases(reference[2], st)
     out = tmp_path / "out"
     # ":0": the scheduler's HTTP server on a free port, not on 8787 that another cluster may hold (a
-    # test on another
-    # pytest-xdist worker, another run on the machine; Dask then warns, an error here)
+    # test on another pytest-xdist worker, another run on the machine; Dask then warns, an error
+    # here)
     with (
         distributed.LocalCluster(
             n_workers=2,

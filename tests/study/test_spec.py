@@ -25,7 +25,7 @@ def test_range_random_zip_and_inline_base(tmp_path):
           axis.moving_mass: {random: {low: 50 kg, high: 150 kg, n: 4, seed: 3}}
           catalog.mountings: {random: {choice: [[fixed-supported], [fixed-fixed]], n: 4, seed: 1}}
           axis.acceleration: 2 m/s^2
-        """,
+        """,  # noqa: E501
     )
     st = load_study(p)
     assert len(st.cases) == 4
@@ -61,8 +61,8 @@ def test_range_random_zip_and_inline_base(tmp_path):
         ("axis.stroke: {random: {low: 1 mm, high: 2 mm, n: 1000000000000000000, seed: 1}}", "n"),
         ("axis.stroke: {from: 1 mm, to: 2 mm, steps: 100000000}", "steps"),
         (
-            "axis.stroke: {from: 1 mm, to: 2 mm, steps: 100000}\n          axis.moving_mass: {from: 1 kg, to: 2 kg, "
-            "steps: 100000}",
+            "axis.stroke: {from: 1 mm, to: 2 mm, steps: 100000}\n          axis.moving_mass: "
+            "{from: 1 kg, to: 2 kg, steps: 100000}",
             "sweep",
         ),
     ],

@@ -1,7 +1,7 @@
-"""A study over drive types (search.drive_types swept, or a base problem that lists them): each case solved
-over its types (study.record), its best design's drive type and parts in the table, its objective the one
-solve_drive_types gives the case's problem, the rack-and-pinion and linear-motor margins as columns, the
-report without NaN; a study of screw problems keeps its columns."""
+"""A study over drive types (search.drive_types swept, or a base problem that lists them): each case
+solved over its types (study.record), its best design's drive type and parts in the table, its
+objective the one solve_drive_types gives the case's problem, the rack-and-pinion and linear-motor
+margins as columns, the report without NaN; a study of screw problems keeps its columns."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""Study summary plots: lines never join cases that differ in another swept input, the cost/stiffness
-staircase never joins different machines (axis inputs), infeasible cases are shown, not dropped."""
+"""Study summary plots: lines never join cases that differ in another swept input, the
+cost/stiffness staircase never joins different machines (axis inputs), infeasible cases are shown,
+not dropped."""
 
 from __future__ import annotations
 
@@ -92,8 +93,8 @@ def test_tradeoff_staircase_stays_within_one_stroke(monkeypatch, tmp_path):
 
 
 def test_many_inputs_without_a_design_are_a_rug_not_bands(monkeypatch, tmp_path):
-    """A random sweep leaves hundreds of distinct inputs without a design: they are one row of red ticks along
-    the panel's bottom (one artist), not a band each that would paint the panel red."""
+    """A random sweep leaves hundreds of distinct inputs without a design: they are one row of red
+    ticks along the panel's bottom (one artist), not a band each that would paint the panel red."""
     df = _frame()
     rng = np.random.default_rng(3)
     extra = df[df.status != "optimal"].iloc[[0] * 30].copy()

@@ -1,13 +1,16 @@
-"""Every shipped optimum (and the shipped designs) by the part vendors' own procedures (issue 38, done-when 2).
+"""Every shipped optimum (and the shipped designs) by the part vendors' own procedures (issue 38,
+done-when 2).
 
-tools/vendor_check.py solves each problem with axisopt as a program, then recomputes every check from the design
-YAML and the catalog rows by the vendors' printed procedures (tools/vendor_procedures.py, tested against the
-worked examples in test_vendor_procedures.py).  Here:
+tools/vendor_check.py solves each problem with axisopt as a program, then recomputes every check
+from the design YAML and the catalog rows by the vendors' printed procedures
+(tools/vendor_procedures.py, tested against the worked examples in
+test_vendor_procedures.py).  Here:
 
-* the vendor's criterion: every margin >= 1 by the checker's own computation on every shipped optimum (the
-  teaching design, a lesson, fails exactly where axisopt's checks fail it);
-* agreement with axisopt where both use the same method: within TOLERANCE (2 %), or the wider tolerance stated
-  below where the vendor constants or an input convention differ by a known amount (docs/validation.md).
+* the vendor's criterion: every margin >= 1 by the checker's own computation on every shipped
+  optimum (the teaching design, a lesson, fails exactly where axisopt's checks fail it);
+* agreement with axisopt where both use the same method: within TOLERANCE (2 %), or the wider
+  tolerance stated below where the vendor constants or an input convention differ by a known amount
+  (docs/validation.md).
 """
 
 from __future__ import annotations
@@ -104,10 +107,8 @@ WIDER = {
     ),
 }
 # where the vendor's criterion fails (checker's computation), the checks that fail: the teaching
-# design is a
-# lesson, not an optimum, and axisopt's own checks fail it on the same two lives (and its bearing
-# bore, which
-# this checker does not compute)
+# design is a lesson, not an optimum, and axisopt's own checks fail it on the same two lives (and
+# its bearing bore, which this checker does not compute)
 KNOWN_FAILS = {
     "teaching_design": {"nut L10 life", "support bearing L10 life"},
     # issue 53: an NSK 3-against-1 set (the boring table's and the twin gantry's 50TAC100B-DFT) is
@@ -161,8 +162,8 @@ def rows(name: str, tmp_path_factory) -> list[dict]:
 
 
 def _compared(r: dict) -> tuple[float, float] | None:
-    """The two numbers the checker compared for a same-method row (its same-basis value, else the margins,
-    else the values)."""
+    """The two numbers the checker compared for a same-method row (its same-basis value, else the
+    margins, else the values)."""
     if r["kind"] in ("CONV", "INFO"):
         return None
     if r["same_basis"] is not None:
@@ -269,7 +270,8 @@ COLUMNS = {
 
 
 def test_docs_results_table_is_what_the_checker_prints(tmp_path_factory):
-    """docs/validation.md's results table, cell by cell, from the checker's rows on every shipped file."""
+    """docs/validation.md's results table, cell by cell, from the checker's rows on every shipped
+    file."""
     sys.path.insert(0, str(ROOT / "tools"))
     try:
         from vendor_check import summary_table

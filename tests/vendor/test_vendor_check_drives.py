@@ -1,6 +1,7 @@
-"""tools/vendor_check_drives.py (written apart from axisopt: it runs the program, reads the catalog rows and
-the problem's YAML, and samples the duty cycle in time) passes the router's rack-and-pinion design and the
-laser axis's linear-motor design by the vendors' printed steps, and agrees with axisopt's margins."""
+"""tools/vendor_check_drives.py (written apart from axisopt: it runs the program, reads the catalog
+rows and the problem's YAML, and samples the duty cycle in time) passes the router's rack-and-pinion
+design and the laser axis's linear-motor design by the vendors' printed steps, and agrees with
+axisopt's margins."""
 
 from __future__ import annotations
 
@@ -23,8 +24,8 @@ spec.loader.exec_module(vcd)
     [
         ("router_rack_problem", "rack_pinion"),
         ("laser_lm_problem", "linear_motor"),
-        # the shipped laser axis's optimum is a linear motor since issue 54 (1547.23 Hz): its
-        # moves are jerk-limited (300 m/s^3), which the checker samples as S-curves
+        # the shipped laser axis's optimum is a linear motor since issue 54 (1547.23 Hz): its moves
+        # are jerk-limited (300 m/s^3), which the checker samples as S-curves
         ("laser_problem", "linear_motor"),
     ],
 )
@@ -46,9 +47,9 @@ def test_the_vendor_steps_pass_and_agree(name, kind, monkeypatch):
 
 @pytest.mark.published
 def test_hiwin_appendix_a_worked_example():
-    """H-LMS MM99TE07-1701 Appendix A: 5 kg, mu 0.01, X 500 mm in T 400 ms on the 1/3-1/3-1/3 trapezoid
-    (Vmax 1.5 X / T, a 4.5 X / T^2), dwell 350 ms: Fp 70.79 N, Fe 41.92 N (LMCA6, Kf 33.8: Ip 2.09 A, Ie
-    1.24 A)."""
+    """H-LMS MM99TE07-1701 Appendix A: 5 kg, mu 0.01, X 500 mm in T 400 ms on the 1/3-1/3-1/3
+    trapezoid (Vmax 1.5 X / T, a 4.5 X / T^2), dwell 350 ms: Fp 70.79 N, Fe 41.92 N (LMCA6, Kf 33.8:
+    Ip 2.09 A, Ie 1.24 A)."""
     x, t = 0.5, 0.4
     axis = {
         "acceleration": f"{4.5 * x / t**2} m/s^2",
@@ -67,8 +68,8 @@ def test_hiwin_appendix_a_worked_example():
     ("dist", "v", "a", "j"), [(0.8, 80 / 60, 15.0, 300.0), (0.02, 1.0, 15, 300)]
 )
 def test_s_curve_covers_the_move(dist, v, a, j):
-    """The checker's S-curve (written from the kinematics alone): the sampled accelerations integrate to the
-    move's length, never exceed a or the jerk's reach, and end at rest."""
+    """The checker's S-curve (written from the kinematics alone): the sampled accelerations
+    integrate to the move's length, never exceed a or the jerk's reach, and end at rest."""
     axis = {
         "acceleration": f"{a} m/s^2",
         "max_speed": f"{v * 60} m/min",

@@ -1,6 +1,7 @@
-"""The vendor checker on a design with a gearbox (Beckhoff AG2400) and on one with a driven rotating-nut unit
-(THK DIR): the new rows are printed, computed by the vendors' procedures, and agree with axisopt where both use the
-same method (tools/vendor_check.py, tools/vendor_procedures.py)."""
+"""The vendor checker on a design with a gearbox (Beckhoff AG2400) and on one with a driven
+rotating-nut unit (THK DIR): the new rows are printed, computed by the vendors' procedures, and
+agree with axisopt where both use the same method (tools/vendor_check.py,
+tools/vendor_procedures.py)."""
 
 from __future__ import annotations
 
@@ -56,9 +57,8 @@ def rows(name: str, tmp_path_factory) -> dict:
 
 def test_beckhoff_commissioning_worked_example():
     # Beckhoff AG2300 manual, "Commissioning"
-    # (infosys.beckhoff.com/content/1033/ag2300_ba/8712251019.html):
-    # M_pmax 5 N.m, T2B 20 N.m, i 10 -> peak current limited to 40 %; M0 1 N.m, T2N 8 N.m, i 10 ->
-    # 80 %
+    # (infosys.beckhoff.com/content/1033/ag2300_ba/8712251019.html): M_pmax 5 N.m, T2B 20 N.m, i 10
+    # -> peak current limited to 40 %; M0 1 N.m, T2N 8 N.m, i 10 -> 80 %
     peak, rated = vp.gearbox_current_limits(5.0, 1.0, 10.0, 20.0, 8.0)
     assert peak == pytest.approx(0.40)
     assert rated == pytest.approx(0.80)
@@ -149,16 +149,15 @@ def test_rotating_nut_design(tmp_path_factory):
 
 def test_unit_bearing_life_formula():
     # T-GC A-704 life on the table's Ca: Ca 21.5 kN (DIR4010-6, B-721), 2150 N at fw 1 -> 10^3 x
-    # 10^6 rev; at a
-    # constant 500 rpm that is 10^9 / 30 000 = 33 333 h
+    # 10^6 rev; at a constant 500 rpm that is 10^9 / 30 000 = 33 333 h
     ph = [vp.Phase(1.0, 1.0, 1.0, 0.0, 1, 0.0, 2150.0)]
     assert vp.unit_bearing_life_h(21500.0, ph, 1.0, 500.0) == pytest.approx(1e9 / 30000)
 
 
 def test_sag_matches_axisopt_and_aisc_ratios():
     # AISC Table 3-23: case 15 (both ends fixed) wL^4/384EI is 1/5 of case 1 (simple) 5wL^4/384EI;
-    # no published
-    # screw figure: the checker's own beam formula and axisopt's physics.screw.screw_sag must agree
+    # no published screw figure: the checker's own beam formula and axisopt's
+    # physics.screw.screw_sag must agree
     from axisopt.physics.screw import screw_sag
 
     ss = vp.screw_sag(8.22, 0.0347, 1.1, "supported-supported")

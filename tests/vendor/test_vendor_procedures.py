@@ -1,7 +1,9 @@
-"""The independent checker's own formulas (tools/vendor_procedures.py) against the vendors' worked examples.
+"""The independent checker's own formulas (tools/vendor_procedures.py) against the vendors' worked
+examples.
 
-The checker is written apart from axisopt (it imports nothing of it); these tests show that its formulas
-reproduce the printed numbers, so that its verdict on the shipped optima (test_vendor_check.py) can be trusted.
+The checker is written apart from axisopt (it imports nothing of it); these tests show that its
+formulas reproduce the printed numbers, so that its verdict on the shipped optima
+(test_vendor_check.py) can be trusted.
 """
 
 from __future__ import annotations
@@ -46,8 +48,7 @@ def test_critical_speed_thk_a727_a738(d1, lb, printed):
 @pytest.mark.published
 def test_critical_speed_hiwin_factors_match_thk_within_their_rounding():
     # H-BS F 3.27/3.28 (0.8 x 2.71e8 x f_n) against THK's lambda_2 (A-696): fixed-supported 15.00 vs
-    # 15.1,
-    # fixed-fixed 21.68 vs 21.9 (1 %); fixed-free 3.19 vs 3.4 (HIWIN 6 % lower: its f_n 0.147)
+    # 15.1, fixed-fixed 21.68 vs 21.9 (1 %); fixed-free 3.19 vs 3.4 (HIWIN 6 % lower: its f_n 0.147)
     ratio = {
         m: vp.critical_speed("HIWIN", 30.0, 800.0, m)[0]
         / vp.critical_speed("THK", 30.0, 800.0, m)[0]
@@ -80,8 +81,7 @@ def _horizontal_thk_a722():
 def test_horizontal_example_phase_loads_and_life_thk_a725_a730():
     phases = _horizontal_thk_a722()
     # A-725: Fa1..Fa6 = 550, 17, -516, -550, -17, 516 N (THK prints 550 for 550.7: within 1 N);
-    # A-728: travels
-    # 75, 850, 75 mm
+    # A-728: travels 75, 850, 75 mm
     assert [p.load for p in phases] == pytest.approx([550, 17, -516, -550, -17, 516], abs=1.0)
     assert [round(p.dist * 1e3) for p in phases[:3]] == [75, 850, 75]
     # A-729: Fm = 225 N; WTF2040-2 (Ca 5400 N), fW 1.5: L = 4.1e9 rev; A-730: Nm = 400 min^-1, Lh =
@@ -125,9 +125,8 @@ def test_screw_inertia_thk_a733():
 
 @pytest.mark.published
 def test_guide_life_iko_i21():
-    # IKO CAT-1578E p. I-21/22: MXG45 roller C 124 000 N, MHG45 ball C 95 200 N, P 10 000 N, 50 km
-    # basis:
-    # 220 000 km and 43 000 km
+    # IKO CAT-1578E p. I-21/22: MXG45 roller C 124 000 N, MHG45 ball C 95 200 N, P 10 000 N, 50
+    # km basis: 220 000 km and 43 000 km
     assert vp.guide_rating_life(124000.0, 10000.0, "roller", 50) == pytest.approx(220000, rel=5e-3)
     assert vp.guide_rating_life(95200.0, 10000.0, "ball", 50) == pytest.approx(43000, rel=5e-3)
     assert vp.GUIDE_BASIS[("IKO", "roller")] == 50 and vp.GUIDE_BASIS[("HIWIN", "roller")] == 100
@@ -147,9 +146,8 @@ def test_support_set_rating_and_preload_nsk_25tac62b():
     # (0.5 %)
     assert 46.5 / 2**0.7 == pytest.approx(28.5, rel=5e-3)
     # NSK-SP p. 168, C10: DF 3150 N, DFD 4300 N.  IBC Table 2.2 puts the single bearing of a 2:1 set
-    # at 1.36 Fv:
-    # 4300 / 1.36 = 3162 N, the DF pair's preload (0.4 %): the reading of the set preload the
-    # checker uses
+    # at 1.36 Fv: 4300 / 1.36 = 3162 N, the DF pair's preload (0.4 %): the reading of the set
+    # preload the checker uses
     assert 4300.0 / vp.IBC_SET_PRELOAD[(2, 1)] == pytest.approx(3150.0, rel=5e-3)
 
 
@@ -181,8 +179,9 @@ def test_block_reactions_thk_rule_for_a_centred_table():
     ("n_load", "n_other", "x"), [(1, 1, 2.83), (2, 1, 5.66), (3, 1, 8.49), (2, 2, 5.66)]
 )
 def test_hertz_group_split_unloads_at_ibc_table_2_2(n_load, n_other, x):
-    """The checker's exact Hertz split (issue 54): the opposite group unloads at IBC Table 2.2's X Fv, Fv the
-    bearings' preload as a DB pair (the set's preload over 1, 1.36, 1.57, 2 for 1:1, 2:1, 3:1, 2:2)."""
+    """The checker's exact Hertz split (issue 54): the opposite group unloads at IBC Table 2.2's X
+    Fv, Fv the bearings' preload as a DB pair (the set's preload over 1, 1.36, 1.57, 2 for 1:1, 2:1,
+    3:1, 2:2)."""
     fv = 1000.0
     pre = fv * {(1, 1): 1.0, (2, 1): 1.36, (3, 1): 1.57, (2, 2): 2.0}[(n_load, n_other)]
     _, below = vp.hertz_group_loads(pre, n_load, n_other, 0.98 * x * fv)
@@ -191,8 +190,9 @@ def test_hertz_group_split_unloads_at_ibc_table_2_2(n_load, n_other, x):
 
 
 def test_lift_off_of_a_3_1_set_against_its_pretension():
-    """A DFT set at a fixed-fixed end: three rows against force + pretension (8.49 Fv), the single against the
-    force alone (2.83 Fv); the checker's margin is the smaller of the two, the set turned the better way."""
+    """A DFT set at a fixed-fixed end: three rows against force + pretension (8.49 Fv), the single
+    against the force alone (2.83 Fv); the checker's margin is the smaller of the two, the set
+    turned the better way."""
     brg = {"arrangement": "DFT", "preload": 1.57 * 6650.0}
     avail, need, margin, _ = vp.bearing_lift_off(brg, 17.0e3, 30.0e3)
     assert margin == pytest.approx(min(8.49 * 6650 / 47.0e3, 2.83 * 6650 / 17.0e3), rel=1e-3)

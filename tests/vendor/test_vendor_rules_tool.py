@@ -1,5 +1,5 @@
-"""The independent checker's per-vendor rules (tools/vendor_rules.py, written apart from axisopt) against the
-vendors' published rules and numbers."""
+"""The independent checker's per-vendor rules (tools/vendor_rules.py, written apart from axisopt)
+against the vendors' published rules and numbers."""
 
 from __future__ import annotations
 
@@ -45,8 +45,7 @@ def test_emergency_torque_beckhoff_npt035():
 @pytest.mark.published
 def test_lift_off_load_cases_thk_a725():
     # THK A-725 horizontal transfer example: m 60 kg, mu 0.003, f 15 N, 1 m/s in 0.15 s: Fa1 417 N,
-    # Fa2 17 N,
-    # Fa3 -383 N; each load case its own load: the largest is Fa1
+    # Fa2 17 N, Fa3 -383 N; each load case its own load: the largest is Fa1
     friction = 0.003 * 60 * 9.807 + 15.0
     phases = vp.move_phases(1.0, 1.0, 1.0 / 0.15, 0.0, 60.0, friction, 0.0)
     ax = type("Ax", (), {"axial_load": 0.0})()

@@ -1,7 +1,7 @@
-"""The effect library of both diagnosis pipelines: the registry and the declaration (:mod:`.base`) and the
-built-in effects by what they act on (:mod:`.stiffness`, :mod:`.dynamics`, :mod:`.friction`,
-:mod:`.disturbance`, :mod:`.load`; imported here in
-the order they are registered, which is the order tables try them)."""
+"""The effect library of both diagnosis pipelines: the registry and the declaration (:mod:`.base`)
+and the built-in effects by what they act on (:mod:`.stiffness`, :mod:`.dynamics`, :mod:`.friction`,
+:mod:`.disturbance`, :mod:`.load`; imported here in the order they are registered, which is the
+order tables try them)."""
 
 # isort: off
 # the order of registration, which is the order tables try the effects in

@@ -1,19 +1,20 @@
 """The one effect registry of both diagnosis pipelines, and how an effect is declared.
 
-An effect is a named physical extension of the axis model, declared once as an :class:`Effect` subclass
-that carries what each kind of measured data needs:
+An effect is a named physical extension of the axis model, declared once as an :class:`Effect`
+subclass that carries what each kind of measured data needs:
 
-* reduced tables (:mod:`..diagnose`): the tests it shows in (``kinds``), its parameters (:class:`..fit.Param`:
-  user units, bounds, plausible range), how it changes the measurement model (``apply``: edits a
-  :class:`~..measure.Terms` record with CasADi-safe arithmetic), alternative starts of its shape parameters
-  (``starts``), when it is testable (``applicable``) and how a calibrated design takes it (``calibrate``;
-  ``None`` = evaluate cannot represent it);
-* time records (:mod:`..idim`): ``time``, a :class:`TimeModel` -- its regression columns (:class:`Term`: parameter,
-  label, unit kind, column), its shape parameter and how it is searched (:class:`Shape`), when the record can
-  show it (``skip``) and the physical range of its fitted values (``implausible``).
+* reduced tables (:mod:`..diagnose`): the tests it shows in (``kinds``), its parameters
+  (:class:`..fit.Param`: user units, bounds, plausible range), how it changes the measurement model
+  (``apply``: edits a :class:`~..measure.Terms` record with CasADi-safe arithmetic), alternative
+  starts of its shape parameters (``starts``), when it is testable (``applicable``) and how a
+  calibrated design takes it (``calibrate``; ``None`` = evaluate cannot represent it);
+* time records (:mod:`..idim`): ``time``, a :class:`TimeModel` -- its regression columns
+  (:class:`Term`: parameter, label, unit kind, column), its shape parameter and how it is searched
+  (:class:`Shape`), when the record can show it (``skip``) and the physical range of its fitted
+  values (``implausible``).
 
-An effect with no table ``kinds`` exists for time records only; one without ``time`` for tables only.
-Register your own with :func:`register_effect`; it then competes like the built-ins.
+An effect with no table ``kinds`` exists for time records only; one without ``time`` for tables
+only.  Register your own with :func:`register_effect`; it then competes like the built-ins.
 """
 
 from __future__ import annotations
@@ -25,7 +26,8 @@ from typing import Callable
 
 @dataclass(frozen=True)
 class Term:
-    """One column of the time-record regression (:mod:`..timemodel`) and the parameter that multiplies it."""
+    """One column of the time-record regression (:mod:`..timemodel`) and the parameter that
+    multiplies it."""
 
     name: str
     label: str
@@ -39,10 +41,11 @@ class Term:
 
 @dataclass(frozen=True)
 class Shape:
-    """A shape parameter of a time-record effect: found on the least-squares residual, then held fixed.
-    Either ``bounds`` ((sig, proc) -> (lo, hi): log grid, then golden section), ``choices`` (proc -> values:
-    the one with the least residual) or ``search`` ((rows, r0, rss) -> {name: value, ...}: a scan of ``r0``,
-    the residual of the model so far on the estimation rows, refined on ``rss(values)``, the joint fit's RSS);
+    """A shape parameter of a time-record effect: found on the least-squares residual, then held
+    fixed.  Either ``bounds`` ((sig, proc) -> (lo, hi): log grid, then golden section), ``choices``
+    (proc -> values: the one with the least residual) or ``search`` ((rows, r0, rss) -> {name:
+    value, ...}: a scan of ``r0``, the residual of the model so far on the estimation rows, refined
+    on ``rss(values)``, the joint fit's RSS);
     ``also``: further shape values a search returns, as (name, label, unit kind)."""
 
     name: str
@@ -87,8 +90,9 @@ class TimeModel:
         return tuple(t.name for t in self.columns)
 
     def why_implausible(self, value, fc: float, fv: float) -> list:
-        """Texts for the fitted values (``value(term)``) outside the physical range; ``fc``, ``fv``: the
-        baseline's Coulomb level and viscous coefficient (magnitudes), the scale of every range."""
+        """Texts for the fitted values (``value(term)``) outside the physical range; ``fc``, ``fv``:
+        the baseline's Coulomb level and viscous coefficient (magnitudes), the scale of every
+        range."""
         return list(self.implausible(value, fc, fv)) if self.implausible is not None else []
 
 
@@ -171,17 +175,20 @@ def unregister_effect(name: str) -> None:
 
 
 def library() -> MappingProxyType:
-    """The effects reduced tables can show (those with table ``kinds``), by name, in registration order."""
+    """The effects reduced tables can show (those with table ``kinds``), by name, in registration
+    order."""
     return MappingProxyType({n: e for n, e in _REGISTRY.items() if e.kinds})
 
 
 def all_effects() -> MappingProxyType:
-    """Every registered effect by name, tables' and time records' (a calibration file may name either)."""
+    """Every registered effect by name, tables' and time records' (a calibration file may name
+    either)."""
     return MappingProxyType(dict(_REGISTRY))
 
 
 def time_effects() -> dict:
-    """The time-record declarations (:class:`TimeModel`) by effect name, built-ins in :data:`TIME_ORDER`."""
+    """The time-record declarations (:class:`TimeModel`) by effect name, built-ins in
+    :data:`TIME_ORDER`."""
     names = [n for n in TIME_ORDER if n in _REGISTRY] + [
         n for n in _REGISTRY if n not in TIME_ORDER
     ]
@@ -189,7 +196,8 @@ def time_effects() -> dict:
 
 
 def replace_part(design, slot, **values):
-    """``design`` with some values of one catalog part (``slot``: bearing, guide, nut, ...) replaced."""
+    """``design`` with some values of one catalog part (``slot``: bearing, guide, nut, ...)
+    replaced."""
     part = getattr(design, slot).copy()
     for k, v in values.items():
         part[k] = v

@@ -1,22 +1,25 @@
-"""Effects that time records alone show and smooth terms in position or speed miss: a force periodic in time
-(a pump, a spindle or a fan's unbalance coupled into the table, mains hum in the current sensor), friction
-local to one place on the stroke (a damaged or contaminated spot, a cable-chain kink) and friction that drifts
-within a run (the lubricant warming up).  Each is a few regression columns fitted jointly with the rigid
-baseline :math:`f = M \\ddot q + F_v \\dot q + F_c \\operatorname{sgn}\\dot q + f_0` (Gautier's inverse dynamic
-identification model) with nonlinear shape parameters found on the residual of the model so far (a scan) and
-then refined on the joint least-squares RSS (:class:`.base.Shape` ``search``):
+"""Effects that time records alone show and smooth terms in position or speed miss: a force periodic
+in time (a pump, a spindle or a fan's unbalance coupled into the table, mains hum in the current
+sensor), friction local to one place on the stroke (a damaged or contaminated spot, a cable-chain
+kink) and friction that drifts within a run (the lubricant warming up).  Each is a few regression
+columns fitted jointly with the rigid baseline :math:`f = M \\ddot q + F_v \\dot q + F_c
+\\operatorname{sgn}\\dot q + f_0` (Gautier's inverse dynamic identification model) with nonlinear
+shape parameters found on the residual of the model so far (a scan) and then refined on the joint
+least-squares RSS (:class:`.base.Shape` ``search``):
 
-* ``time_periodic``: :math:`a \\sin 2\\pi f t + b \\cos 2\\pi f t`, amplitude :math:`\\sqrt{a^2+b^2}`; ``f``
-  from the residual's line spectrum (Lomb-Scargle least-squares periodogram on the regression rows, N. R.
-  Lomb, Astrophys. Space Sci. 39 (1976) 447-462), then refined by golden section within one frequency bin.
-  The phase is each run's own (a pump does not start with the record): a held-out run keeps the amplitude and
-  frequency and takes its own phase (:data:`.base.TimeModel` ``per_run``).
-* ``local_friction``: :math:`h\\, e^{-(q - x_0)^2/2w^2} \\operatorname{sgn}\\dot q`: a Gaussian bump of height
-  ``h`` in the Coulomb level at ``x0``, standard width ``w``; (x0, w) from a 2-D grid on the residual, then
-  refined.
-* ``friction_drift``: :math:`A\\, e^{-t/\\tau} \\operatorname{sgn}\\dot q`, t from the start of each run (every run
-  is taken to start from the same rest, e.g. after a pause): a Coulomb level that settles with time constant
-  tau; tau by the log grid and golden section of the other shape parameters.
+* ``time_periodic``: :math:`a \\sin 2\\pi f t + b \\cos 2\\pi f t`, amplitude
+  :math:`\\sqrt{a^2+b^2}`; ``f`` from the residual's line spectrum (Lomb-Scargle least-squares
+  periodogram on the regression rows, N. R. Lomb, Astrophys. Space Sci. 39 (1976) 447-462), then
+  refined by golden section within one frequency bin. The phase is each run's own (a pump does not
+  start with the record): a held-out run keeps the amplitude and frequency and takes its own phase
+  (:data:`.base.TimeModel` ``per_run``).
+* ``local_friction``: :math:`h\\, e^{-(q - x_0)^2/2w^2} \\operatorname{sgn}\\dot q`: a Gaussian bump
+  of height ``h`` in the Coulomb level at ``x0``, standard width ``w``; (x0, w) from a 2-D grid on
+  the residual, then refined.
+* ``friction_drift``: :math:`A\\, e^{-t/\\tau} \\operatorname{sgn}\\dot q`, t from the start of each
+  run (every run is taken to start from the same rest, e.g. after a pause): a Coulomb level that
+  settles with time constant tau; tau by the log grid and golden section of the other shape
+  parameters.
 """
 
 from __future__ import annotations
@@ -50,13 +53,13 @@ def golden(f, a: float, b: float, it: int = 22) -> float:
 # ------------------------------------------------------------------------------------------ time-
 # periodic
 def frequency_band(t_span: float, proc, fit: bool = True) -> tuple:
-    """(lo, hi) [Hz] a record can show a line in: at least 20 periods in the run (its frequency bin 1/span is
-    then 5 % of the frequency, which the refinement narrows to better than 2 %) and above the motion
-    bandwidth (the moves themselves fill the spectrum below it); below 0.6x the position filter's cut-off,
-    where its |H|^2 = 1/(1 + (f/f_c)^8) still passes 98 % (a line above the loop's bandwidth moves the table,
-    and an acceleration the filter attenuates would leave part of it in the line) and below 0.9x the
-    decimation cut-off.  ``fit=False``: the band a line can be seen in (its frequency, not its amplitude), up
-    to 0.9x the decimation cut-off."""
+    """(lo, hi) [Hz] a record can show a line in: at least 20 periods in the run (its frequency bin
+    1/span is then 5 % of the frequency, which the refinement narrows to better than 2 %) and above
+    the motion bandwidth (the moves themselves fill the spectrum below it); below 0.6x the position
+    filter's cut-off, where its |H|^2 = 1/(1 + (f/f_c)^8) still passes 98 % (a line above the loop's
+    bandwidth moves the table, and an acceleration the filter attenuates would leave part of it in
+    the line) and below 0.9x the decimation cut-off.  ``fit=False``: the band a line can be seen in
+    (its frequency, not its amplitude), up to 0.9x the decimation cut-off."""
     hi = min(0.6 * proc.fc, 0.9 * proc.fdec) if fit else 0.9 * proc.fdec
     return max(PERIODS / t_span, 1.5 * proc.f_motion), hi
 
@@ -64,12 +67,13 @@ def frequency_band(t_span: float, proc, fit: bool = True) -> tuple:
 def line_scan(
     t: np.ndarray, r: np.ndarray, lo: float, hi: float, oversample: float = 4.0, step=None
 ) -> tuple:
-    """Least-squares periodogram (Lomb-Scargle) of ``r`` at the times ``t``: (frequencies, share of the sum of
-    squares the pair sin, cos 2 pi f t holds at each), on a grid ``oversample`` points per 1/span.  Rows on a
-    uniform time grid with gaps (the kept regression rows) take the FFT form of the same sums (W. H. Press,
-    G. B. Rybicki, Astrophys. J. 338 (1989) 277-280), exact on a finer grid, interpolated to this one.
-    ``step`` [s]: the record's sample period, the grid the rows lie on when their smallest gap is not one
-    (the windows of a long record start at any sample, not at a multiple of the decimation)."""
+    """Least-squares periodogram (Lomb-Scargle) of ``r`` at the times ``t``: (frequencies, share of
+    the sum of squares the pair sin, cos 2 pi f t holds at each), on a grid ``oversample`` points
+    per 1/span.  Rows on a uniform time grid with gaps (the kept regression rows) take the FFT form
+    of the same sums (W. H. Press, G. B. Rybicki, Astrophys. J. 338 (1989) 277-280), exact on a
+    finer grid, interpolated to this one.  ``step`` [s]: the record's sample period, the grid the
+    rows lie on when their smallest gap is not one (the windows of a long record start at any
+    sample, not at a multiple of the decimation)."""
     span = float(np.ptp(t)) or 1.0
     freqs = np.arange(lo, hi, 1.0 / (oversample * span))
     rc = r - r.mean()
@@ -94,8 +98,8 @@ FFT_SCAN_WORK = 4_000_000  # frequencies x rows above which the scan takes the F
 
 
 def _grid_index(t: np.ndarray, dt: float, tol: float = 1e-3):
-    """Integer sample indices of ``t`` on the grid of step ``dt`` (within ``tol`` of a step), or None when it
-    is not on one."""
+    """Integer sample indices of ``t`` on the grid of step ``dt`` (within ``tol`` of a step), or
+    None when it is not on one."""
     d = np.diff(t)
     if len(d) == 0 or not np.min(d) > 0 or not dt > 0:
         return None
@@ -107,8 +111,8 @@ def _grid_index(t: np.ndarray, dt: float, tol: float = 1e-3):
 def _fft_scan(
     k: np.ndarray, dt: float, rc: np.ndarray, freqs: np.ndarray, oversample: float
 ) -> np.ndarray:
-    """The Lomb-Scargle sums of :func:`line_scan` (times k dt) from two FFTs: of the residual and of the
-    sampling mask, the latter at twice the frequency for the sin^2, cos^2 and sin cos sums."""
+    """The Lomb-Scargle sums of :func:`line_scan` (times k dt) from two FFTs: of the residual and of
+    the sampling mask, the latter at twice the frequency for the sin^2, cos^2 and sin cos sums."""
     n = int(k[-1]) + 1
     m = 1 << int(math.ceil(math.log2(2.0 * oversample * n)))
     fm = np.arange(m // 2 + 1) / (m * dt)
@@ -182,7 +186,10 @@ class TimePeriodic(Effect):
     """A force periodic in time at a frequency that does not move with speed or position."""
 
     name = "time_periodic"
-    title = "a force periodic in time (a pump, spindle or fan unbalance, mains hum in the current sensor)"
+    title = (
+        "a force periodic in time (a pump, spindle or fan unbalance, mains hum in the current "
+        "sensor)"
+    )
     time = TimeModel(
         "a force periodic in time, not in position (a pump, spindle or fan unbalance, mains hum)",
         (
@@ -210,7 +217,8 @@ class TimePeriodic(Effect):
         skip=_periodic_short,
         too_short=_periodic_short,
         implausible=_periodic_implausible,
-        evidence="a record at rest in position control with the suspected source running: the line stays",
+        evidence="a record at rest in position control with the suspected source running: the line "
+        "stays",
         derived=(
             (
                 "amp",
@@ -236,8 +244,9 @@ def width_range(stroke_q: float) -> tuple:
 
 
 def spot_scan(q: np.ndarray, cols: np.ndarray, r: np.ndarray, stroke_q: float) -> tuple:
-    """2-D grid (position x width) of the residual ``r``'s share held by bump(q) times each column of ``cols``
-    (n, k) fitted jointly: (x0 grid, widths, share (nx, nw)).  Positions every half of the narrowest width."""
+    """2-D grid (position x width) of the residual ``r``'s share held by bump(q) times each column
+    of ``cols`` (n, k) fitted jointly: (x0 grid, widths, share (nx, nw)).  Positions every half of
+    the narrowest width."""
     w_lo, w_hi = width_range(stroke_q)
     widths = np.geomspace(w_lo, w_hi, 9)
     xs = np.arange(q.min(), q.max() + 0.5 * w_lo, 0.5 * w_lo)
@@ -297,9 +306,13 @@ class LocalFriction(Effect):
     """Friction raised over a short stretch of the stroke, both directions."""
 
     name = "local_friction"
-    title = "friction raised at one place on the stroke (a damaged or contaminated spot, a cable-chain kink)"
+    title = (
+        "friction raised at one place on the stroke (a damaged or contaminated spot, a cable-chain "
+        "kink)"
+    )
     time = TimeModel(
-        "friction raised at one place on the stroke (a damaged or contaminated spot, a cable-chain kink)",
+        "friction raised at one place on the stroke (a damaged or contaminated spot, a cable-chain "
+        "kink)",
         (
             Term(
                 "hs",
@@ -319,7 +332,8 @@ class LocalFriction(Effect):
         ),
         skip=_spot_skip,
         implausible=_spot_implausible,
-        evidence="slow constant-speed passes over the place in both directions: the bump stays at the same millimetres",
+        evidence="slow constant-speed passes over the place in both directions: the bump stays at "
+        "the same millimetres",
     )
 
 

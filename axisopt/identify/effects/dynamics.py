@@ -1,6 +1,7 @@
-"""Effects on the dynamics: a moving mass that differs from the design, and a resonance the axial model lacks
-(in an FRF as an extra peak; in a time record as a second mass behind a spring, :math:`f = M\\ddot q +
-(m_1 m_2/k)\\, q^{(4)}` without damping and friction, reported as :math:`f_r = \\sqrt{M/\\beta}/2\\pi`).
+"""Effects on the dynamics: a moving mass that differs from the design, and a resonance the axial
+model lacks (in an FRF as an extra peak; in a time record as a second mass behind a spring,
+:math:`f = M\\ddot q + (m_1 m_2/k)\\, q^{(4)}` without damping and friction, reported as
+:math:`f_r = \\sqrt{M/\\beta}/2\\pi`).
 """
 
 from __future__ import annotations
@@ -19,23 +20,25 @@ PEAK_RATIO = 5.0
 
 
 def _mode_skip(ctx) -> str:
-    """A mode needs a peak in the baseline residual's spectrum that does not follow the position (a ripple
-    moves in frequency with the speed; a mode does not)."""
+    """A mode needs a peak in the baseline residual's spectrum that does not follow the position (a
+    ripple moves in frequency with the speed; a mode does not)."""
     freq, ratio = ctx.peak
     if ratio < PEAK_RATIO:
         return f"no residual spectral peak (at most {ratio:.1f}x the median, {freq:.0f} Hz)"
     line = ctx.steady_line()
     if line is not None:
         return (
-            f"the residual's spectral peak is a steady line at {line[0]:.4g} Hz, one phase through the run "
-            f"({100 * line[1]:.0f} % of the residual): a periodic disturbance, not a resonance"
+            f"the residual's spectral peak is a steady line at {line[0]:.4g} Hz, one phase through "
+            f"the run ({100 * line[1]:.0f} % of the residual): a periodic disturbance, not a "
+            "resonance"
         )
     per = ctx.periodic_peak()
     if per is not None:
         u, f = ctx.position_unit
         return (
             f"the residual's spectral peak ({freq:.0f} Hz) follows the position: periodic over "
-            f"{per[0] * f:.3g} {u}, {100 * per[1]:.0f} % of the residual (a ripple, not a resonance)"
+            f"{per[0] * f:.3g} {u}, {100 * per[1]:.0f} % of the residual (a ripple, not a "
+            "resonance)"
         )
     return ""
 
@@ -51,9 +54,9 @@ RESOLVED_FC = 0.8  # a resonance is resolved up to this share of the position fi
 
 
 def _mode_resolved(value, proc) -> str:
-    """A resonance above 0.8x the position filter's cut-off is not resolved: there the filter bends the
-    acceleration and the snap (|H|^2 below 86 %), and a term in the fourth derivative then fits the filter's
-    and the sampling's own lag rather than a mode."""
+    """A resonance above 0.8x the position filter's cut-off is not resolved: there the filter bends
+    the acceleration and the snap (|H|^2 below 86 %), and a term in the fourth derivative then fits
+    the filter's and the sampling's own lag rather than a mode."""
     m, beta = value("M"), value("beta")
     if not (m > 0 and beta > 0):
         return ""
@@ -61,8 +64,8 @@ def _mode_resolved(value, proc) -> str:
     lim = RESOLVED_FC * proc.fc
     return (
         (
-            f"a resonance at {fr:.3g} Hz, above {lim:.3g} Hz (0.8x the position filter's cut-off), where the "
-            "record does not resolve one"
+            f"a resonance at {fr:.3g} Hz, above {lim:.3g} Hz (0.8x the position filter's cut-off), "
+            "where the record does not resolve one"
         )
         if fr > lim
         else ""
@@ -89,7 +92,8 @@ class AddedMass(Effect):
                 10.0 * m,
                 typical=0.2 * m,
                 plausible=(-0.5 * m, 1.0 * m),
-                plausible_note="a workpiece or fixture up to the table's own mass; at most half of it missing",
+                plausible_note="a workpiece or fixture up to the table's own mass; at most half of "
+                "it missing",
             )
         ]
 
@@ -132,7 +136,8 @@ class ExtraMode(Effect):
         skip=_mode_skip,
         implausible=_mode_implausible,
         resolved=_mode_resolved,
-        evidence="a frequency response (tap test or sine sweep) of the table: a peak at the resonance",
+        evidence="a frequency response (tap test or sine sweep) of the table: a peak at the "
+        "resonance",
     )
 
     def _peak(self, ctx):

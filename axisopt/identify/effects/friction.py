@@ -1,9 +1,11 @@
-"""Friction effects: Stribeck rise, viscous and load-dependent friction, a direction difference, quadratic drag,
-and -- in time records only -- a Coulomb level varying along the stroke and a ripple periodic in position.
+"""Friction effects: Stribeck rise, viscous and load-dependent friction, a direction difference,
+quadratic drag, and -- in time records only -- a Coulomb level varying along the stroke and a ripple
+periodic in position.
 
-In time records (:mod:`..idim`) each is a few regression columns fitted jointly with the rigid baseline
-:math:`f = M \\ddot q + F_v \\dot q + F_c \\operatorname{sgn}\\dot q + f_0` (Gautier's inverse dynamic
-identification model); every physical range is relative to the baseline's own friction.
+In time records (:mod:`..idim`) each is a few regression columns fitted jointly with the rigid
+baseline :math:`f = M \\ddot q + F_v \\dot q + F_c \\operatorname{sgn}\\dot q + f_0` (Gautier's
+inverse dynamic identification model); every physical range is relative to the baseline's own
+friction.
 """
 
 from __future__ import annotations
@@ -21,8 +23,8 @@ RIPPLE_HARMONICS = (1, 2, 3)
 
 
 def _stribeck_bounds(sig, proc) -> tuple:
-    """Search range of the Stribeck velocity: from the record's speed threshold (at least 1e-4 of the peak
-    speed) to half the peak speed."""
+    """Search range of the Stribeck velocity: from the record's speed threshold (at least 1e-4 of
+    the peak speed) to half the peak speed."""
     vmax = float(np.max(np.abs(sig["v"])))
     return max(proc.vmin, 1e-4 * vmax), 0.5 * vmax
 
@@ -70,7 +72,8 @@ class Stribeck(Effect):
         ),
         shape=Shape("vs", "Stribeck velocity (1-D search)", "speed", bounds=_stribeck_bounds),
         implausible=_stribeck_implausible,
-        evidence="a friction curve with many constant speeds below 10 mm/s in both directions: the rise at low speed",
+        evidence="a friction curve with many constant speeds below 10 mm/s in both directions: the "
+        "rise at low speed",
     )
 
     def _speeds(self, ctx):
@@ -126,7 +129,8 @@ class Stribeck(Effect):
 
 
 def _top_friction_speed(ctx) -> float:
-    """The largest |velocity| of the friction data [m/s]: the scale of the speed-dependent friction effects."""
+    """The largest |velocity| of the friction data [m/s]: the scale of the speed-dependent friction
+    effects."""
     return max(
         float(np.max(np.abs(o.feature("velocity")))) for o in ctx.obs if o.kind == "friction"
     )
@@ -139,8 +143,8 @@ class Viscous(Effect):
     kinds = ("friction",)
     signature = "residual linear and odd in v"
     evidence = (
-        "steady-state friction at constant speeds over a decade or more up to the top speed: a straight "
-        "line in v"
+        "steady-state friction at constant speeds over a decade or more up to the top speed: a "
+        "straight line in v"
     )
 
     def params(self, ctx):
@@ -157,7 +161,8 @@ class Viscous(Effect):
                 1e9,
                 typical=typ,
                 plausible=(0.0, 20.0 * typ),
-                plausible_note="viscous force at the top test speed up to 20x the axis's Coulomb friction",
+                plausible_note="viscous force at the top test speed up to 20x the axis's Coulomb "
+                "friction",
             )
         ]
 
@@ -165,7 +170,10 @@ class Viscous(Effect):
         q.viscous = P["viscous_coefficient"]
 
     def describe(self, v, plant):
-        return f"viscous friction {v['viscous_coefficient']:.0f} N.s/m (design {plant.viscous:.0f} N.s/m)"
+        return (
+            f"viscous friction {v['viscous_coefficient']:.0f} N.s/m (design {plant.viscous:.0f} "
+            "N.s/m)"
+        )
 
     def calibrate(self, v, design):
         blocks = design.axis.guide_blocks
@@ -203,7 +211,10 @@ class LoadDependentFriction(Effect):
         q.mu = P["friction_coefficient"]
 
     def describe(self, v, plant):
-        return f"guide friction grows with load: mu = {v['friction_coefficient']:.4f} (design {plant.mu:.4f})"
+        return (
+            f"guide friction grows with load: mu = {v['friction_coefficient']:.4f} (design "
+            f"{plant.mu:.4f})"
+        )
 
     def calibrate(self, v, design):
         return (
@@ -219,9 +230,8 @@ class DirectionAsymmetry(Effect):
     kinds = ("friction",)
     signature = "constant offset between + and - travel"
     # in a time record: viscous friction differing by direction, dFv = Fv(v>0) - Fv(v<0).  A Coulomb
-    # asymmetry
-    # (Fc(v>0) - Fc(v<0))/2 is a constant while moving and cannot be told from the offset on moving
-    # rows
+    # asymmetry (Fc(v>0) - Fc(v<0))/2 is a constant while moving and cannot be told from the offset
+    # on moving rows
     time = TimeModel(
         "viscous friction differs by direction",
         (
@@ -273,12 +283,14 @@ DRAG_SPEED = 0.05
 
 
 def _drag_regime(vmax: float) -> str:
-    """Churning and seal drag that grows with v|v| shows at tens of mm/s and above (an estimate: DRAG_SPEED)."""
+    """Churning and seal drag that grows with v|v| shows at tens of mm/s and above (an estimate:
+    DRAG_SPEED)."""
     if vmax >= DRAG_SPEED:
         return ""
     return (
-        f"a drag growing with v|v| at a top speed of {vmax * 1e3:.3g} mm/s is the less plausible reading: "
-        f"lubricant churning and seal drag show from about {DRAG_SPEED * 1e3:.0f} mm/s (an estimate)"
+        f"a drag growing with v|v| at a top speed of {vmax * 1e3:.3g} mm/s is the less plausible "
+        f"reading: lubricant churning and seal drag show from about {DRAG_SPEED * 1e3:.0f} mm/s "
+        "(an estimate)"
     )
 
 
@@ -299,7 +311,8 @@ class QuadraticDrag(Effect):
             ),
         ),
         implausible=_drag_implausible,
-        evidence="steady-state friction at constant speeds up to the maximum: the curve bends upward with v|v|",
+        evidence="steady-state friction at constant speeds up to the maximum: the curve bends "
+        "upward with v|v|",
         regime=_drag_regime,
     )
 
@@ -317,7 +330,8 @@ class QuadraticDrag(Effect):
                 1e12,
                 typical=fc / v**2,
                 plausible=(0.0, 20.0 * fc / v**2),
-                plausible_note="a positive drag, at the top test speed up to 20x the axis's Coulomb friction",
+                plausible_note="a positive drag, at the top test speed up to 20x the axis's "
+                "Coulomb friction",
             )
         ]
 
@@ -326,8 +340,8 @@ class QuadraticDrag(Effect):
 
     def describe(self, v, plant):
         return (
-            f"drag grows with v|v|: c = {v['drag_coefficient']:.4g} N.s^2/m^2 (seals, lubricant churning); "
-            "evaluate has no such term"
+            f"drag grows with v|v|: c = {v['drag_coefficient']:.4g} N.s^2/m^2 (seals, lubricant "
+            "churning); evaluate has no such term"
         )
 
 
@@ -375,7 +389,8 @@ class PositionFriction(Effect):
         ),
         skip=_position_skip,
         implausible=_position_implausible,
-        evidence="a slow constant-speed pass over the whole stroke in both directions: the level follows the position",
+        evidence="a slow constant-speed pass over the whole stroke in both directions: the level "
+        "follows the position",
     )
 
 
@@ -402,21 +417,23 @@ def _ripple_implausible(value, fc, fv) -> list:
         )
     if fric > fc:
         out.append(
-            f"a friction ripple of amplitude {fric:.4g} beyond {fc:.4g} (the friction would reverse)"
+            f"a friction ripple of amplitude {fric:.4g} beyond {fc:.4g} (the friction would "
+            "reverse)"
         )
     return out
 
 
 @register_effect
 class LeadRipple(Effect):
-    """A force ripple sin, cos(2 pi q/P) (the same both ways: lead error, run-out) and a friction ripple
-    sgn(v) sin, sgn(v) cos(2 pi q/P) (ball recirculation), P the lead / k for k in :data:`RIPPLE_HARMONICS`
-    (the best by RSS); each pair's amplitude up to the Coulomb level."""
+    """A force ripple sin, cos(2 pi q/P) (the same both ways: lead error, run-out) and a friction
+    ripple sgn(v) sin, sgn(v) cos(2 pi q/P) (ball recirculation), P the lead / k for k in
+    :data:`RIPPLE_HARMONICS` (the best by RSS); each pair's amplitude up to the Coulomb level."""
 
     name = "lead_ripple"
     title = "force or friction ripple periodic in position"
     time = TimeModel(
-        "force or friction ripple periodic in position at the lead or a harmonic (lead error, ball recirculation)",
+        "force or friction ripple periodic in position at the lead or a harmonic (lead error, ball "
+        "recirculation)",
         (
             Term("rs", "force ripple, sin(2 pi q/P) coefficient", "effort", _ripple(np.sin, False)),
             Term("rc", "force ripple, cos(2 pi q/P) coefficient", "effort", _ripple(np.cos, False)),
@@ -441,5 +458,6 @@ class LeadRipple(Effect):
         ),
         skip=_ripple_skip,
         implausible=_ripple_implausible,
-        evidence="the force over a slow constant-speed pass at two speeds: the ripple keeps its period in millimetres",
+        evidence="the force over a slow constant-speed pass at two speeds: the ripple keeps its "
+        "period in millimetres",
     )

@@ -1,29 +1,30 @@
 """Friction that depends on the load the axis carries and on its temperature.
 
-* ``nut_axial_friction``: the nut's loss grows with the axial force it transmits.  A screw of efficiency eta
-  needs the torque T = F_a p / (2 pi eta) to push F_a, of which F_a p / (2 pi) (1/eta - 1) is friction (the
-  nut load torque of the reference notes, sec. 1.2; THK and HIWIN give eta = 0.9-0.95 for ball screws,
-  0.3-0.7 for sliding lead screws).  At the table that is a friction k_a |F_a| sgn(v), k_a = 1/eta - 1, the
-  same both ways for a given |F_a|: a table averaged over the direction loses it, so it is fitted and
-  tested signed (``sgn(v) |F_a|``).  In tables from the ``axial_load`` column (the load on the nut, k_a =
-  1/eta - 1).  In time records from the force the drive supplies, the record's effort f = F_a / eta: the loss
-  is (1 - eta) |f| sgn(v) (``ka`` there is 1 - eta; measured, its own instrument); a candidate only when the
-  record has an ``external_force`` (otherwise |f| hardly varies apart from the Coulomb and inertia columns).
-* ``guide_load_friction`` (time records with a ``normal_load`` column): mu N sgn(v), the rolling friction of
-  the guide carriages growing with the normal load on them (seed Table 9; mu 0.001-0.005 for ball and roller
-  carriages, Thomson / Schaeffler).  Tables have ``load_dependent_friction``.
-* ``viscous_temperature`` (records and friction tables with a ``temperature`` column): the viscous friction
-  follows the lubricant's viscosity, which falls about exponentially with temperature (Reynolds' viscosity
-  law, mu(T) = mu_0 exp(-beta (T - T_0))): F_v(T) = F_v(20 degC) exp(-beta (T - 20 degC)).  Fitted as
-  c v (exp(-beta (T - 20 degC)) - 1) beside the baseline F_v v, beta by a 1-D search (0.005-0.2 /K; mineral
-  greases and oils about 0.02-0.05 /K).
-* ``coulomb_temperature``: the Coulomb level changing linearly with temperature, g (T - 20 degC) sgn(v)
-  (grease consistency, seal and preload change with warming; an estimate of the law: linear over the
-  range of a warm-up).
+* ``nut_axial_friction``: the nut's loss grows with the axial force it transmits.  A screw of
+  efficiency eta needs the torque T = F_a p / (2 pi eta) to push F_a, of which F_a p / (2 pi)
+  (1/eta - 1) is friction (the nut load torque of the reference notes, sec. 1.2; THK and HIWIN give
+  eta = 0.9-0.95 for ball screws, 0.3-0.7 for sliding lead screws).  At the table that is a friction
+  k_a |F_a| sgn(v), k_a = 1/eta - 1, the same both ways for a given |F_a|: a table averaged over the
+  direction loses it, so it is fitted and tested signed (``sgn(v) |F_a|``).  In tables from the
+  ``axial_load`` column (the load on the nut, k_a = 1/eta - 1).  In time records from the force the
+  drive supplies, the record's effort f = F_a / eta: the loss is (1 - eta) |f| sgn(v) (``ka`` there
+  is 1 - eta; measured, its own instrument); a candidate only when the record has an
+  ``external_force`` (otherwise |f| hardly varies apart from the Coulomb and inertia columns).
+* ``guide_load_friction`` (time records with a ``normal_load`` column): mu N sgn(v), the rolling
+  friction of the guide carriages growing with the normal load on them (seed Table 9; mu 0.001-0.005
+  for ball and roller carriages, Thomson / Schaeffler).  Tables have ``load_dependent_friction``.
+* ``viscous_temperature`` (records and friction tables with a ``temperature`` column): the viscous
+  friction follows the lubricant's viscosity, which falls about exponentially with temperature
+  (Reynolds' viscosity law, mu(T) = mu_0 exp(-beta (T - T_0))): F_v(T) = F_v(20 degC) exp(-beta (T -
+  20 degC)).  Fitted as c v (exp(-beta (T - 20 degC)) - 1) beside the baseline F_v v, beta by a 1-D
+  search (0.005-0.2 /K; mineral greases and oils about 0.02-0.05 /K).
+* ``coulomb_temperature``: the Coulomb level changing linearly with temperature, g (T - 20 degC)
+  sgn(v) (grease consistency, seal and preload change with warming; an estimate of the law: linear
+  over the range of a warm-up).
 
-Temperature effects are told apart from ``friction_drift`` (a level that settles with the time from each
-run's start) by their law: a validation run that starts warm keeps the warm friction under a temperature
-law and restarts cold under a time law.
+Temperature effects are told apart from ``friction_drift`` (a level that settles with the time from
+each run's start) by their law: a validation run that starts warm keeps the warm friction under a
+temperature law and restarts cold under a time law.
 """
 
 from __future__ import annotations
@@ -89,10 +90,10 @@ def _viscous_t_column(sig, proc, shape):
 
 
 def _beta_search(rows, r0, rss) -> dict:
-    """beta of the pure law F_v(T) = F_v(20 degC) exp(-beta (T - 20 degC)): the baseline's viscous column
-    replaced by v exp(-beta (T - 20 degC)) and the RSS of that fit minimised over beta (log grid, then golden
-    section).  A free constant viscous part beside the exponential trades with beta over the few tens of
-    kelvin of a warm-up; the joint fit then frees it at this beta."""
+    """beta of the pure law F_v(T) = F_v(20 degC) exp(-beta (T - 20 degC)): the baseline's viscous
+    column replaced by v exp(-beta (T - 20 degC)) and the RSS of that fit minimised over beta (log
+    grid, then golden section).  A free constant viscous part beside the exponential trades with
+    beta over the few tens of kelvin of a warm-up; the joint fit then frees it at this beta."""
     from .disturbance import golden
 
     W = rows.columns(("M", "Fc", "offset"), {})
@@ -136,7 +137,8 @@ def _viscous_t_implausible(value, fc, fv) -> list:
         []
         if 0.0 < v <= 5.0 * max(fv, 1e-9)
         else [
-            f"Fvt = {v:.4g} outside 0..{5.0 * fv:.4g} (the viscous friction at 20 degC, up to 5x the record's)"
+            f"Fvt = {v:.4g} outside 0..{5.0 * fv:.4g} (the viscous friction at 20 degC, up to 5x "
+            "the record's)"
         ]
     )
 
@@ -162,12 +164,13 @@ class NutAxialFriction(Effect):
     )
     needs = (("friction", "axial_load"),)
     time = TimeModel(
-        "nut friction grows with the axial force it transmits (screw efficiency: ka = 1 - eta of the drive force)",
+        "nut friction grows with the axial force it transmits (screw efficiency: ka = 1 - eta of "
+        "the drive force)",
         (Term("ka", "nut loss per drive force, 1 - eta", "ratio", _axial_column, simulated=False),),
         skip=_needs_external,
         implausible=_axial_implausible,
-        evidence="constant-speed passes at two or more process forces in both directions: the friction "
-        "grows with |F| the same way both ways",
+        evidence="constant-speed passes at two or more process forces in both directions: the "
+        "friction grows with |F| the same way both ways",
         needs=("fext",),
     )
 
@@ -209,8 +212,8 @@ class GuideLoadFriction(Effect):
         (Term("mu_g", "guide friction coefficient mu", "ratio", _normal_column, simulated=False),),
         skip=_needs_normal,
         implausible=_normal_implausible,
-        evidence="constant-speed passes with two payloads (or vertical forces): the friction grows with N, "
-        "the axial force unchanged",
+        evidence="constant-speed passes with two payloads (or vertical forces): the friction grows "
+        "with N, the axial force unchanged",
         needs=("normal",),
     )
 
@@ -228,7 +231,8 @@ class ViscousTemperature(_TemperatureEffect):
     title = "viscous friction falls with temperature (lubricant viscosity)"
     signature = "residual proportional to v, growing with the temperature difference"
     time = TimeModel(
-        "viscous friction follows the lubricant's viscosity with temperature: Fv(T) = Fvt exp(-beta (T - 20 C))",
+        "viscous friction follows the lubricant's viscosity with temperature: Fv(T) = Fvt "
+        "exp(-beta (T - 20 C))",
         (Term("Fvt", "viscous friction at 20 degC", "damping", _viscous_t_column),),
         shape=Shape(
             "beta",
@@ -238,8 +242,8 @@ class ViscousTemperature(_TemperatureEffect):
         ),
         skip=_needs_temperature,
         implausible=_viscous_t_implausible,
-        evidence="friction curves at two temperatures (cold and warm): the slope with speed changes, the "
-        "level at low speed does not",
+        evidence="friction curves at two temperatures (cold and warm): the slope with speed "
+        "changes, the level at low speed does not",
         needs=("temperature",),
     )
 
@@ -304,7 +308,8 @@ class CoulombTemperature(_TemperatureEffect):
         ),
         skip=_needs_temperature,
         implausible=_coulomb_t_implausible,
-        evidence="slow passes at two temperatures: the level at low speed changes, the slope does not",
+        evidence="slow passes at two temperatures: the level at low speed changes, the slope does "
+        "not",
         needs=("temperature",),
     )
 

@@ -1,9 +1,9 @@
-"""Effects on static stiffness (and frequency, FRF) tests: how the screw is supported, the nut's contact, lost
-motion, friction windup, thermal growth, a soft component and preload loss.
+"""Effects on static stiffness (and frequency, FRF) tests: how the screw is supported, the nut's
+contact, lost motion, friction windup, thermal growth, a soft component and preload loss.
 
-Signatures (what each leaves in the residual) are in each class's ``signature``; the mechanics are those of
-:mod:`..measure` (compliance chain 1/k_B + x/EA, double-nut Hertz contact with lift-off at 2^(3/2) times the
-preload).
+Signatures (what each leaves in the residual) are in each class's ``signature``; the mechanics are
+those of :mod:`..measure` (compliance chain 1/k_B + x/EA, double-nut Hertz contact with lift-off at
+2^(3/2) times the preload).
 """
 
 from __future__ import annotations
@@ -39,7 +39,8 @@ class SupportCondition(Effect):
                 100.0 * kb,
                 typical=kb,
                 plausible=(0.0, 1.5 * kb),
-                plausible_note="between a free end (0) and the far bearing set's catalog stiffness + 50 %",
+                plausible_note="between a free end (0) and the far bearing set's catalog stiffness "
+                "+ 50 %",
             )
         ]
 
@@ -99,8 +100,8 @@ class HertzContact(Effect):
                 50.0 * fa,
                 typical=fa,
                 plausible=(0.2 * fa, 1.5 * fa),
-                plausible_note="a worn nut keeps 20 % of its preload or more; 50 % above the design is not "
-                "assembled",
+                plausible_note="a worn nut keeps 20 % of its preload or more; 50 % above the "
+                "design is not assembled",
             )
         ]
 
@@ -159,7 +160,10 @@ class Backlash(Effect):
         q.offset = q.offset + 0.5 * P["backlash"] * mx.sign(Z["force"])
 
     def describe(self, v, plant):
-        return f"lost motion {v['backlash'] * 1e6:.1f} um at each load reversal, same at every position"
+        return (
+            f"lost motion {v['backlash'] * 1e6:.1f} um at each load reversal, same at every "
+            "position"
+        )
 
 
 @register_effect
@@ -185,7 +189,8 @@ class FrictionHysteresis(Effect):
                 1e5,
                 typical=f0,
                 plausible=(0.0, 5.0 * f0),
-                plausible_note="at most five times the axis's friction force (guides, nut, bearings)",
+                plausible_note="at most five times the axis's friction force (guides, nut, "
+                "bearings)",
             )
         ]
 
@@ -193,7 +198,10 @@ class FrictionHysteresis(Effect):
         q.hysteresis = P["hysteresis_friction"]
 
     def describe(self, v, plant):
-        return f"friction of {v['hysteresis_friction']:.0f} N winds up the drive: reversal error 2 F c(x)"
+        return (
+            f"friction of {v['hysteresis_friction']:.0f} N winds up the drive: reversal error 2 F "
+            "c(x)"
+        )
 
 
 @register_effect
@@ -273,7 +281,8 @@ class ComplianceOffset(Effect):
                 100.0 * c,
                 typical=c,
                 plausible=(-0.5 * c, 3.0 * c),
-                plausible_note="a component up to 4x softer than its catalog value, or the chain up to 2x stiffer",
+                plausible_note="a component up to 4x softer than its catalog value, or the chain "
+                "up to 2x stiffer",
             )
         ]
 
@@ -328,7 +337,8 @@ class PreloadLoss(Effect):
                 0.95 / cmax,
                 typical=0.1 / cmax,
                 plausible=(0.0, 0.8 / cmax),
-                plausible_note="preload only falls with running, and not to nothing within one test",
+                plausible_note="preload only falls with running, and not to nothing within one "
+                "test",
             )
         ]
 

@@ -1,9 +1,10 @@
 """A time-record diagnosis (:class:`.idim.TimeDiagnosis`) as a calibration file, in the layout of
-:mod:`.calibration` (which reads it and applies it for ``axisopt evaluate``): the final joint fit's Coulomb
-friction as the baseline (force records: it is the table's) and every accepted effect with its fitted terms,
-its searched shape values and its derived quantities, each with a unit of its kind.  A value whose unit kind
-has no quantity kind in :data:`axisopt.units.KINDS` (the m1 m2/k of an extra mode) is left out; the effects
-evaluate cannot represent are listed as not applied when the file is read.
+:mod:`.calibration` (which reads it and applies it for ``axisopt evaluate``): the final joint fit's
+Coulomb friction as the baseline (force records: it is the table's) and every accepted effect with
+its fitted terms, its searched shape values and its derived quantities, each with a unit of its
+kind.  A value whose unit kind has no quantity kind in :data:`axisopt.units.KINDS` (the m1 m2/k of
+an extra mode) is left out; the effects evaluate cannot represent are listed as not applied when the
+file is read.
 """
 
 from __future__ import annotations
@@ -45,8 +46,8 @@ def _entry(value: float, sigma: float, kind_unit) -> dict:
 
 
 def time_calibration_dict(diag, design=None, sources=()) -> dict:
-    """The calibration of a time-record diagnosis as a plain dict (YAML-ready); with ``design``, what evaluate
-    applies and what it cannot represent."""
+    """The calibration of a time-record diagnosis as a plain dict (YAML-ready); with ``design``,
+    what evaluate applies and what it cannot represent."""
     units = KIND_UNITS[diag.quantity]
     est = diag.final
     std = dict(zip(est.terms, est.std))

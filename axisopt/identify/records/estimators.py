@@ -1,19 +1,22 @@
-"""Estimators of the time-record regression (:mod:`.timemodel`): least squares (seed eq. 29) and instrumental
-variables (seed eq. 30, IDIM-IV: A. Janot, P.-O. Vandanjon, M. Gautier, "A generic instrumental variable
-approach for industrial robot identification", IEEE Trans. Control Syst. Technol. 22 (2014) 132-145).
+"""Estimators of the time-record regression (:mod:`.timemodel`): least squares (seed eq. 29) and
+instrumental variables (seed eq. 30, IDIM-IV: A. Janot, P.-O. Vandanjon, M. Gautier, "A generic
+instrumental variable approach for industrial robot identification", IEEE Trans. Control Syst.
+Technol. 22 (2014) 132-145).
 
-* LS: :math:`\\hat\\theta = (W^T W)^{-1} W^T y`, :math:`\\sigma^2 = \\|y - W\\hat\\theta\\|^2/(n - p)`,
+* LS: :math:`\\hat\\theta = (W^T W)^{-1} W^T y`,
+  :math:`\\sigma^2 = \\|y - W\\hat\\theta\\|^2/(n - p)`,
   :math:`\\operatorname{cov} = \\sigma^2 (W^T W)^{-1}`.
 * IV: instruments V are the same columns computed from the closed loop simulated with the current
-  estimate -- the PD position controller (+ velocity and acceleration feed-forward) is fitted to the record
-  from its ``reference`` column and driven by that reference; no measurement noise enters V.  Iterated
-  :math:`\\hat\\theta_{k+1} = (V_k^T W)^{-1} V_k^T y` until the estimate moves by less than 1e-4 of a
-  standard deviation (at most 30 iterations),
-  :math:`\\operatorname{cov} = \\sigma^2 (V^T W)^{-1} V^T V (V^T W)^{-T}`.  A record without ``reference``
-  cannot be re-simulated in closed loop: V is then the regressor delayed by two decimated rows (a
-  delayed-regressor instrument, not iterated).  A column the rigid simulation cannot produce (a term declared
+  estimate -- the PD position controller (+ velocity and acceleration feed-forward) is fitted to the
+  record from its ``reference`` column and driven by that reference; no measurement noise enters V.
+  Iterated :math:`\\hat\\theta_{k+1} = (V_k^T W)^{-1} V_k^T y` until the estimate moves by less than
+  1e-4 of a standard deviation (at most 30 iterations), :math:`\\operatorname{cov} = \\sigma^2 (V^T
+  W)^{-1} V^T V (V^T W)^{-T}`.  A record without ``reference`` cannot be re-simulated in
+  closed loop: V is then the regressor delayed by two decimated rows (a delayed-regressor
+  instrument, not iterated).  A column the rigid simulation cannot produce (a term declared
   ``simulated=False``, the extra mode's) is its own instrument.
-* A shape parameter (the Stribeck velocity) is found by a 1-D search on the LS residual, then held fixed.
+* A shape parameter (the Stribeck velocity) is found by a 1-D search on the LS residual, then held
+  fixed.
 """
 
 from __future__ import annotations
@@ -66,7 +69,8 @@ def lstsq(W, y):
 
 
 def least_squares(rows: Rows, terms, shape=None) -> Estimate:
-    """LS on the decimated rows (seed eq. 29) with the standard deviations from the residual variance."""
+    """LS on the decimated rows (seed eq. 29) with the standard deviations from the residual
+    variance."""
     shape = dict(shape or {})
     W = matrix(rows, terms, shape)
     th = lstsq(W, rows.y)
@@ -97,7 +101,8 @@ def search_shape(rows: Rows, terms, shape: dict, lo: float, hi: float, name: str
 # model
 @dataclass
 class Controller:
-    """u = Kp (r - q) + Kd (r' - q') + Kv r' + Ka r'' (fitted to the record; SI of the record's coordinate)."""
+    """u = Kp (r - q) + Kd (r' - q') + Kv r' + Ka r'' (fitted to the record; SI of the record's
+    coordinate)."""
 
     kp: float
     kd: float
@@ -137,8 +142,9 @@ def simulate_loop(
     proc: Processing,
     substeps: int = 2,
 ) -> np.ndarray | None:
-    """Closed loop of the identified rigid model driven by the record's reference; the position [q units] at
-    every sample, or None if the simulation diverges.  Exact sticking (implicit Coulomb step)."""
+    """Closed loop of the identified rigid model driven by the record's reference; the position [q
+    units] at every sample, or None if the simulation diverges.  Exact sticking (implicit Coulomb
+    step)."""
     r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2, rec.segments)
     # a long record's windows: the loop restarts at rest in each
     starts = {a for a, _ in rec.segments}
@@ -242,7 +248,10 @@ def instrumental_variables(
         Vf = np.vstack([np.repeat(Wf[:1], lag, axis=0), Wf[:-lag]])
         V = decimate(Vf, rows.proc, rows.keep, rows.record.segments)
         th = solve(V)
-        note = "delayed-regressor instrument (no reference column: the closed loop cannot be re-simulated)"
+        note = (
+            "delayed-regressor instrument (no reference column: the closed loop cannot be "
+            "re-simulated)"
+        )
         it = 1
     else:
         V = W
@@ -283,9 +292,10 @@ def instrumental_variables(
 
 
 def predict(rows: Rows, est: Estimate) -> np.ndarray:
-    """The effort ``est`` predicts at the rows.  An effect whose phase is each run's own (``per_run``: a sin,
-    cos pair) keeps its fitted amplitude and takes the phase that fits the run best given the other terms (on
-    the run it was fitted on that is its fitted phase: the LS normal equations make them equal)."""
+    """The effort ``est`` predicts at the rows.  An effect whose phase is each run's own
+    (``per_run``: a sin, cos pair) keeps its fitted amplitude and takes the phase that fits the run
+    best given the other terms (on the run it was fitted on that is its fitted phase: the LS normal
+    equations make them equal)."""
     W = matrix(rows, est.terms, est.shape)
     y = W @ est.theta
     for eff in time_effects().values():
@@ -313,7 +323,8 @@ def rmse(rows: Rows, est: Estimate) -> float:
 
 
 def mode_frequency(est: Estimate) -> float | None:
-    """The extra mode's resonance :math:`f_r = \\sqrt{M/\\beta}/2\\pi` [Hz] (None without a physical mode)."""
+    """The extra mode's resonance :math:`f_r = \\sqrt{M/\\beta}/2\\pi` [Hz] (None without a physical
+    mode)."""
     if "beta" not in est.terms:
         return None
     m, b = est.value("M"), est.value("beta")

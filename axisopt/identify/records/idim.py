@@ -1,20 +1,22 @@
-"""Inverse dynamic identification (IDIM) of a feed axis from time records, and the effects beyond the rigid
-baseline it names: the estimation run is identified by least squares and instrumental variables
-(:mod:`.estimators`, on the rows of :mod:`.timemodel`), each candidate effect (:func:`.effects.time_effects`:
-its columns, shape search, when a record can show it and its physical range) is fitted jointly with the
-baseline, and effects are selected forward by :data:`.selection.TIME_RULE`.
+"""Inverse dynamic identification (IDIM) of a feed axis from time records, and the effects beyond
+the rigid baseline it names: the estimation run is identified by least squares and instrumental
+variables (:mod:`.estimators`, on the rows of :mod:`.timemodel`), each candidate effect
+(:func:`.effects.time_effects`: its columns, shape search, when a record can show it and its
+physical range) is fitted jointly with the baseline, and effects are selected forward by
+:data:`.selection.TIME_RULE`.
 
-Selection: each round the candidates are sorted by dBIC = n ln(RSS1/RSS0) + dp ln n on the estimation run; a
-candidate passes when dBIC < -10, the RMSE of the effort predicted on the validation runs (or, with no validation
-run, 5 contiguous blocks of the estimation run held out in turn) falls by at least 5 %, and its values are
-physical; the best that passes is accepted and every other candidate keeps the first criterion it failed as its
-reason; another candidate that passes too and predicts the held-out data within the rule's resolution is recorded
-as an equally good explanation (``equivalent``). When no single effect passes, pairs of the candidates that lower
-BIC alone are fitted together and accepted on the same tests when each member is needed (:func:`best_pair`). The
-baseline and final fits carry plausibility and identifiability flags (:func:`baseline_flags`), the final residual
-is tested for structure (:mod:`.timeresidual`) and, with a motor encoder, the lost motion measured
-(:mod:`.lostmotion`). The text and JSON of a :class:`TimeDiagnosis` are in :mod:`axisopt.report.timediag`. Nothing
-here imports the CLI or YAML.
+Selection: each round the candidates are sorted by dBIC = n ln(RSS1/RSS0) + dp ln n on the
+estimation run; a candidate passes when dBIC < -10, the RMSE of the effort predicted on the
+validation runs (or, with no validation run, 5 contiguous blocks of the estimation run held out in
+turn) falls by at least 5 %, and its values are physical; the best that passes is accepted and every
+other candidate keeps the first criterion it failed as its reason; another candidate that passes too
+and predicts the held-out data within the rule's resolution is recorded as an equally good
+explanation (``equivalent``). When no single effect passes, pairs of the candidates that lower
+BIC alone are fitted together and accepted on the same tests when each member is needed
+(:func:`best_pair`). The baseline and final fits carry plausibility and identifiability flags
+(:func:`baseline_flags`), the final residual is tested for structure (:mod:`.timeresidual`) and,
+with a motor encoder, the lost motion measured (:mod:`.lostmotion`). The text and JSON of a
+:class:`TimeDiagnosis` are in :mod:`axisopt.report.timediag`. Nothing here imports the CLI or YAML.
 """
 
 from __future__ import annotations
@@ -125,8 +127,8 @@ def heldout_rmse(est_rows: Rows, val_rows: list, terms, shape) -> float:
 
 @dataclass
 class TimeContext:
-    """What an effect's ``skip`` sees of the estimation run: the baseline residual's spectral peak, the span
-    of positions covered, the stroke and lead (record coordinate)."""
+    """What an effect's ``skip`` sees of the estimation run: the baseline residual's spectral peak,
+    the span of positions covered, the stroke and lead (record coordinate)."""
 
     rows: Rows
     base: Estimate
@@ -141,15 +143,17 @@ class TimeContext:
         return periodic_peak(self.rows, self.base)
 
     def steady_line(self):
-        """(frequency, share) when the baseline residual's spectral peak is a steady line in time (one phase
-        through the run: a periodic disturbance, not a resonance the moves excite), else None."""
+        """(frequency, share) when the baseline residual's spectral peak is a steady line in time
+        (one phase through the run: a periodic disturbance, not a resonance the moves excite), else
+        None."""
         return steady_line(self.rows, self.base, self.peak[0])
 
 
 def implausible(effects, est: Estimate, base: Estimate, proc=None) -> str:
-    """Why the effects' fitted values leave their physical range ('' when they do not); every range is
-    relative to the baseline's own friction (each effect declares its range, :class:`.effects.TimeModel`);
-    with ``proc``, also values the record cannot resolve (``resolved``)."""
+    """Why the effects' fitted values leave their physical range ('' when they do not); every range
+    is relative to the baseline's own friction (each effect declares its range,
+    :class:`.effects.TimeModel`); with ``proc``, also values the record cannot resolve
+    (``resolved``)."""
     fc, fv = abs(base.value("Fc")), abs(base.value("Fv"))
     out = [t for e in effects for t in e.why_implausible(est.value, fc, fv)]
     if proc is not None:
@@ -160,7 +164,8 @@ def implausible(effects, est: Estimate, base: Estimate, proc=None) -> str:
 
 
 def fit_candidate(est_rows: Rows, terms, effect: TimeModel, shape: dict) -> tuple:
-    """LS fit of ``terms`` with the effect's shape parameter found on the estimation run: (estimate, shape)."""
+    """LS fit of ``terms`` with the effect's shape parameter found on the estimation run: (estimate,
+    shape)."""
     shape = dict(shape)
     sh = effect.shape
     if sh is not None and sh.search is not None:
@@ -190,7 +195,8 @@ def diagnose_time(
     design: dict | None = None,
     lead_q: float = 0.0,
 ) -> TimeDiagnosis:
-    """Identify the estimation record ``records[0]`` (LS and IV), select effects, validate on the rest."""
+    """Identify the estimation record ``records[0]`` (LS and IV), select effects, validate on the
+    rest."""
     import time
 
     t0 = time.perf_counter()
@@ -282,8 +288,7 @@ def diagnose_time(
             cur_ho = heldout_rmse(est_rows, val_rows, terms, shape)
             continue
         # pairs only when some candidate found signal (dBIC < -10) that no single effect turns into
-        # an accepted
-        # explanation: a residual at the noise floor costs no pair fits
+        # an accepted explanation: a residual at the noise floor costs no pair fits
         if len(accepted) + 2 > max_effects or not any(c.dbic < RULE.accept_dbic for c in scored):
             break
         pair = best_pair(
@@ -356,7 +361,8 @@ def diagnose_time(
 
 
 def _shape_flags(final: Estimate, rows: Rows, effects, quantity: str) -> list:
-    """A shape parameter searched over a range and found at its end is not identified by the record."""
+    """A shape parameter searched over a range and found at its end is not identified by the
+    record."""
     out = []
     for e in effects:
         sh = e.shape
@@ -375,11 +381,11 @@ def _shape_flags(final: Estimate, rows: Rows, effects, quantity: str) -> list:
 
 
 def best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, rnd, log):
-    """When no single effect passes, effects that only help together: every pair of the round's candidates
-    that lower BIC at all alone (at most :data:`.selection.TIME_RULE` ``pair_pool``), fitted jointly with the
-    shapes each found alone; a pair is accepted on the rule's tests and when it beats each of its members
-    alone by ``min_gain`` (each is needed).  The pair with the largest held-out gain wins; every pair tried is
-    logged with its reason."""
+    """When no single effect passes, effects that only help together: every pair of the round's
+    candidates that lower BIC at all alone (at most :data:`.selection.TIME_RULE` ``pair_pool``),
+    fitted jointly with the shapes each found alone; a pair is accepted on the rule's tests and when
+    it beats each of its members alone by ``min_gain`` (each is needed).  The pair with the largest
+    held-out gain wins; every pair tried is logged with its reason."""
     pool = RULE.pair_pool_of(scored)  # each must show some signal alone
     best = None
     for i in range(len(pool)):
@@ -405,15 +411,17 @@ def best_pair(est_rows, val_rows, scored, terms, shape, cur, cur_ho, base_ls, rn
         for e in log:
             if e is not best and e[0] == rnd and not e[6]:
                 e[6] = (
-                    f"{best[1].effect.name} + {best[2].effect.name} predicts better ({best[5]:.1f} %)"
+                    f"{best[1].effect.name} + {best[2].effect.name} predicts better ({best[5]:.1f} "
+                    "%)"
                 )
     return best
 
 
 def baseline_flags(est: Estimate, quantity: str) -> list:
-    """Plausibility and identifiability of a fit's baseline terms: a moving mass or inertia, viscous or Coulomb
-    friction that is not positive is never a physical fit; a term whose standard deviation is zero or
-    undefined, or larger than its value, is not identifiable from the record."""
+    """Plausibility and identifiability of a fit's baseline terms: a moving mass or inertia, viscous
+    or Coulomb friction that is not positive is never a physical fit; a term whose standard
+    deviation is zero or undefined, or larger than its value, is not identifiable from the
+    record."""
     out = []
     known = terms_by_name()
     sym = "J" if quantity == "torque" else "M"
@@ -425,19 +433,19 @@ def baseline_flags(est: Estimate, quantity: str) -> list:
         if t == "M" and v <= 0.0:
             out.append(
                 f"{sym} = {v * f:.3g} {u} is not positive: no moving body has zero or negative "
-                "inertia -- the record does not excite acceleration enough for its sampling and noise "
-                "(too coarse, too slow), or effort and position disagree in sign"
+                "inertia -- the record does not excite acceleration enough for its sampling and "
+                "noise (too coarse, too slow), or effort and position disagree in sign"
             )
         elif t == "Fc" and v < 0.0:
             out.append(
-                f"Fc = {v * f:.3g} {u} is negative: friction that drives the axis -- check the signs of "
-                "the effort and position columns, or a force the record does not carry "
+                f"Fc = {v * f:.3g} {u} is negative: friction that drives the axis -- check the "
+                "signs of the effort and position columns, or a force the record does not carry "
                 "(external_force)"
             )
         elif t == "Fv" and v < 0.0:
             out.append(
-                f"Fv = {v * f:.3g} {u} is negative: damping that feeds energy in -- a missing low-speed "
-                "(Stribeck) rise or a force the record does not carry pulls it below zero"
+                f"Fv = {v * f:.3g} {u} is negative: damping that feeds energy in -- a missing "
+                "low-speed (Stribeck) rise or a force the record does not carry pulls it below zero"
             )
         if t in BASE or t in known:
             if not math.isfinite(sd) or sd == 0.0:
@@ -456,8 +464,8 @@ def baseline_flags(est: Estimate, quantity: str) -> list:
 def diagnose_time_files(
     paths, *, plant, gain: str | None = None, candidates=None, max_effects: int = 3
 ) -> TimeDiagnosis:
-    """Read the records (the first the estimation run, the others validation runs) and diagnose them against
-    ``plant`` (:class:`.plant.Plant`: lead, efficiency and stroke are used)."""
+    """Read the records (the first the estimation run, the others validation runs) and diagnose them
+    against ``plant`` (:class:`.plant.Plant`: lead, efficiency and stroke are used)."""
     from .record import check_same_columns, read_time_record
     from .signal import windowed
 
@@ -477,7 +485,8 @@ def diagnose_time_files(
         check_same_columns(recs[0], r)
         if r.quantity != recs[0].quantity:
             raise InputError(
-                f"a {r.quantity} record cannot validate the {recs[0].quantity} record {recs[0].name}",
+                f"a {r.quantity} record cannot validate the {recs[0].quantity} record "
+                f"{recs[0].name}",
                 source=r.source,
             )
     to_q = 1.0 if recs[0].quantity == "force" else 2.0 * math.pi / plant.lead

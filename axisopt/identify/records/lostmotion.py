@@ -1,11 +1,12 @@
-"""Lost motion (backlash) and windup between motor and table, measured by two encoders: a time record with a
-``motor_position`` column beside the table's ``position`` (:mod:`.timerecord`).
+"""Lost motion (backlash) and windup between motor and table, measured by two encoders: a time
+record with a ``motor_position`` column beside the table's ``position`` (:mod:`.timerecord`).
 
 The motor-table difference e = motor_q - q carries the gap and the transmission's compliance,
-:math:`e = e_0 + (b/2)\\operatorname{sgn}F + F/k - (c/k)\\,\\dot e`, F = f - m1 a1 the force the transmission
-carries (lash with a linear spring and damper: M. Nordin, P.-O. Gutman, "Controlling mechanical systems with
-backlash -- a survey", Automatica 38 (2002) 1633-1649).  It is judged like an effect: significant, plausible
-and better on held-out rows by the time records' selection rule's gain (:data:`.selection.TIME_RULE`).
+:math:`e = e_0 + (b/2)\\operatorname{sgn}F + F/k - (c/k)\\,\\dot e`, F = f - m1 a1 the force the
+transmission carries (lash with a linear spring and damper: M. Nordin, P.-O. Gutman, "Controlling
+mechanical systems with backlash -- a survey", Automatica 38 (2002) 1633-1649).  It is judged like
+an effect: significant, plausible and better on held-out rows by the time records' selection rule's
+gain (:data:`.selection.TIME_RULE`).
 """
 
 from __future__ import annotations
@@ -27,9 +28,9 @@ LOST_MOTION_T = 5.0  # the lost motion's estimate must be this many standard dev
 
 @dataclass
 class LostMotion:
-    """Motor encoder against table position: e = motor_q - q = e0 + (b/2) sgn(F) + F/k - (c/k) de/dt, F = f - m1 a1 the
-    force the transmission carries (f the effort, a1 the motor side's acceleration, m1 the motor-side mass or
-    inertia, found by a 1-D search)."""
+    """Motor encoder against table position: e = motor_q - q = e0 + (b/2) sgn(F) + F/k - (c/k)
+    de/dt, F = f - m1 a1 the force the transmission carries (f the effort, a1 the motor side's
+    acceleration, m1 the motor-side mass or inertia, found by a 1-D search)."""
 
     width: float  # b, the lost motion [record coordinate]
     width_std: float
@@ -46,8 +47,8 @@ class LostMotion:
 
 
 def lost_motion_rows(rows: Rows, m1: float, fmin: float):
-    """(e, columns [1, sgn F, f, a1, de/dt]) at the rows where |F| = |f - m1 a1| > fmin (the side of the gap is
-    certain there): e = e0 + (b/2) sgn F + f/k - (m1/k) a1 - (c/k) de/dt."""
+    """(e, columns [1, sgn F, f, a1, de/dt]) at the rows where |F| = |f - m1 a1| > fmin (the side of
+    the gap is certain there): e = e0 + (b/2) sgn F + f/k - (m1/k) a1 - (c/k) de/dt."""
     rec = rows.record
     # e, the motor side's own acceleration and de/dt, filtered as the effort is
     if "lost_motion" not in rows.sig:
@@ -68,10 +69,11 @@ def lost_motion_rows(rows: Rows, m1: float, fmin: float):
 def lost_motion(
     est_rows: Rows, val_rows: list, base: Estimate, noise: float, lead_m: float = 0.0
 ) -> LostMotion | None:
-    """The lost motion and windup between motor and table when every record has a ``motor_position`` column;
-    judged like an effect: significant, plausible and better on the held-out rows (validation runs, else
-    the estimation run's second half).  m1 enters linearly (the a1 column) but also decides which side of the
-    gap each row is on: a coarse grid, then the fit's own m1 until the sides stop changing."""
+    """The lost motion and windup between motor and table when every record has a ``motor_position``
+    column; judged like an effect: significant, plausible and better on the held-out rows
+    (validation runs, else the estimation run's second half).  m1 enters linearly (the a1 column)
+    but also decides which side of the gap each row is on: a coarse grid, then the fit's own m1
+    until the sides stop changing."""
     if est_rows.record.motor_q is None or any(v.record.motor_q is None for v in val_rows):
         return None
     M = max(base.value("M"), 0.0)
@@ -124,9 +126,15 @@ def lost_motion(
     lim = LOST_MOTION_MAX * to_q
     reason = ""
     if width <= LOST_MOTION_T * width_std or width <= 0.0:
-        reason = f"not significant (b = {width:.3g} +- {width_std:.2g}, below {LOST_MOTION_T:g} standard deviations)"
+        reason = (
+            f"not significant (b = {width:.3g} +- {width_std:.2g}, below {LOST_MOTION_T:g} "
+            "standard deviations)"
+        )
     elif gain < TIME_RULE.min_gain:
         reason = f"held-out gain {gain:.1f} % < {TIME_RULE.min_gain:g} %"
     elif width > lim:
-        reason = "would need a lost motion above 0.2 mm of table travel (a loose coupling, key or nut, not backlash)"
+        reason = (
+            "would need a lost motion above 0.2 mm of table travel (a loose coupling, key or nut, "
+            "not backlash)"
+        )
     return LostMotion(width, width_std, k, m1, before, after, gain, reason)

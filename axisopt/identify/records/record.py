@@ -7,23 +7,27 @@ Format (units in the headers, any unit of the quantity)::
     # gain: 0.85 N.m/A            (only with a current column; or the CLI's --gain)
     time [s], position [mm], force [N], reference [mm]
 
-* ``time``: strictly increasing, uniform sampling (a gap of more than 25 % of the median step is refused).
+* ``time``: strictly increasing, uniform sampling (a gap of more than 25 % of the median step is
+  refused).
 * ``position``: table position (length unit), or motor angle (``rad``, ``deg``, ``rev``) turned into
   table travel through the screw lead.  ``reference`` (optional) takes the same kind of unit.
-* exactly one effort column: ``force [N]`` (table side), ``torque [N.m]`` (motor side) or ``current [A]``
-  with a gain in ``N.m/A`` (motor torque) or ``N/A`` (table force).
-* ``motor_position`` (optional): the motor encoder's position, in a length unit (converted through the
-  lead by the drive) or an angle unit, beside a ``position`` measured at the table (a linear scale).  The
-  two together measure the lost motion (backlash) and the windup of the transmission (:mod:`.idim`).
-* ``normal_load [N]`` (optional): a normal load on the guide carriages besides the table's weight (a payload,
-  a vertical process force); ``temperature [degC]`` (or K, optional): the axis's temperature (nut, guides or
-  lubricant), for the friction laws in temperature (:mod:`.effects.load`).
-* ``payload [kg]`` (optional): a mass the run carries besides the axis's own, one value through a run (a
-  validation run with 350 kg more): taken as known, M a of it is moved to the effort's side, so the fitted
-  mass is the axis's own and runs with different payloads share one model.
-* ``external_force [N]`` (optional): a process force acting on the table (cutting, a spring, a weight),
-  positive in +x.  The drive then supplies f = M a + F(v) - F_ext, so the identification fits f + F_ext;
-  for torque records the force is taken to the motor as F_ext p / (2 pi eta) (lead p, screw efficiency eta).
+* exactly one effort column: ``force [N]`` (table side), ``torque [N.m]`` (motor side) or
+  ``current [A]`` with a gain in ``N.m/A`` (motor torque) or ``N/A`` (table force).
+* ``motor_position`` (optional): the motor encoder's position, in a length unit (converted through
+  the lead by the drive) or an angle unit, beside a ``position`` measured at the table (a linear
+  scale).  The two together measure the lost motion (backlash) and the windup of the transmission
+  (:mod:`.idim`).
+* ``normal_load [N]`` (optional): a normal load on the guide carriages besides the table's weight (a
+  payload, a vertical process force); ``temperature [degC]`` (or K, optional): the axis's
+  temperature (nut, guides or lubricant), for the friction laws in temperature
+  (:mod:`.effects.load`).
+* ``payload [kg]`` (optional): a mass the run carries besides the axis's own, one value through a
+  run (a validation run with 350 kg more): taken as known, M a of it is moved to the effort's side,
+  so the fitted mass is the axis's own and runs with different payloads share one model.
+* ``external_force [N]`` (optional): a process force acting on the table (cutting, a spring, a
+  weight), positive in +x.  The drive then supplies f = M a + F(v) - F_ext, so the identification
+  fits f + F_ext; for torque records the force is taken to the motor as F_ext p / (2 pi eta) (lead
+  p, screw efficiency eta).
 
 The identification keeps the input's quantity: force data is identified in table coordinates (q [m],
 M [kg], Fv [N s/m], Fc [N]); torque data in motor coordinates (q [rad], J [kg m^2], Fv [N m s/rad],
@@ -142,8 +146,9 @@ def _header_names(path) -> list:
 
 
 def is_time_record(path) -> bool:
-    """True if the file's header has a ``time`` column and none of the reduced-table test columns.  A path
-    that is not a readable regular file within the size cap is an InputError (nothing is opened first)."""
+    """True if the file's header has a ``time`` column and none of the reduced-table test columns.
+    A path that is not a readable regular file within the size cap is an InputError (nothing is
+    opened first)."""
     names = set(_header_names(path))
     return "time" in names and not names & _TABLE_COLUMNS
 
@@ -192,9 +197,9 @@ def parse_gain(text: str, *, source=None, where=None) -> tuple:
 def read_time_record(
     path, *, lead: float, gain: str | None = None, efficiency: float = 1.0
 ) -> TimeRecord:
-    """Read one time record (see the module docstring).  ``lead`` [m] converts motor angles and chooses
-    nothing else; ``gain`` is the CLI's text for current columns (a ``# gain:`` line in the file wins);
-    ``efficiency`` takes an external force to the motor side of a torque record."""
+    """Read one time record (see the module docstring).  ``lead`` [m] converts motor angles and
+    chooses nothing else; ``gain`` is the CLI's text for current columns (a ``# gain:`` line in the
+    file wins); ``efficiency`` takes an external force to the motor side of a torque record."""
     src = str(path)
     raw = read_input(path, "time record", what="data file", encoding="utf-8-sig").splitlines()
     file_gain, gain_line = None, None
@@ -364,8 +369,9 @@ _KELVIN = {"degC": 273.15, "C": 273.15, "celsius": 273.15}
 
 
 def _payload(m: np.ndarray, data, names, lines, lead: float, quantity: str, src: str) -> np.ndarray:
-    """The payload column [kg] in the record's coordinate (a torque record's motor side: m (p/2 pi)^2); one
-    value through a run: a payload that changes within it conflicts (InputError naming the line)."""
+    """The payload column [kg] in the record's coordinate (a torque record's motor side: m (p/2
+    pi)^2); one value through a run: a payload that changes within it conflicts (InputError naming
+    the line)."""
     j = names.index("payload")
     change = np.nonzero(m != m[0])[0]
     if len(change):
@@ -384,9 +390,9 @@ def _payload(m: np.ndarray, data, names, lines, lead: float, quantity: str, src:
 
 
 def _fast_cells(rows: list, cols: list, names: list):
-    """The data cells as an (n, columns) array when every row has the header's width and every cell is a
-    finite number within the plausible range of its column; else None, and the caller's cell-by-cell reading
-    names the first bad cell."""
+    """The data cells as an (n, columns) array when every row has the header's width and every cell
+    is a finite number within the plausible range of its column; else None, and the caller's
+    cell-by-cell reading names the first bad cell."""
     k = len(cols)
     if not rows or any(text.count(",") != k - 1 for _, text in rows):
         return None
@@ -407,7 +413,8 @@ def _fast_cells(rows: list, cols: list, names: list):
 
 
 def _factor(name, unit, src, where, lead) -> float:
-    """SI factor of a column; positions in an angle unit become table travel [m] through the lead."""
+    """SI factor of a column; positions in an angle unit become table travel [m] through the
+    lead."""
     try:
         if name == "time":
             return unit_factor(unit, "time")

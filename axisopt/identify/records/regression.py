@@ -1,17 +1,20 @@
-"""The regression model of a time record (Gautier's inverse dynamic identification model, IDIM: A. Janot,
-P.-O. Vandanjon, M. Gautier, IEEE Trans. Control Syst. Technol. 22 (2014) 132-145, sec. II), in the
-coordinate of the record's effort (table [m] for force, motor angle [rad] for torque; :mod:`.timerecord`):
+"""The regression model of a time record (Gautier's inverse dynamic identification model, IDIM: A.
+Janot, P.-O. Vandanjon, M. Gautier, IEEE Trans. Control Syst. Technol. 22 (2014) 132-145, sec. II),
+in the coordinate of the record's effort (table [m] for force, motor angle [rad] for torque;
+:mod:`.timerecord`):
 
 .. math:: f = M \\ddot q + F_v \\dot q + F_c \\operatorname{sgn}\\dot q + f_0 \\;(+\\ \\text{effects})
 
-the baseline's terms here (:data:`BASE_TERMS`), each effect's in its declaration (:mod:`.effects`, ``time``).
+the baseline's terms here (:data:`BASE_TERMS`), each effect's in its declaration (:mod:`.effects`,
+``time``).
 
-Processing: the position is low-pass filtered with a zero-phase Butterworth whose cut-off comes from the data
-(:func:`.signal.choose_cutoff`), differentiated by central differences, every column of the regression
-and the effort are low-pass filtered alike and every nd-th row kept (parallel decimation); rows at low speed
-(``|v| < 0.5 %`` of the peak speed) and around reversals, where sgn(v) of the estimate is not that of the
-axis, are left out.  An ``external_force`` column is added to the effort before the regression.
-"""
+Processing: the position is low-pass filtered with a zero-phase Butterworth whose cut-off comes from
+the data (:func:`.signal.choose_cutoff`), differentiated by central differences, every column of the
+regression and the effort are low-pass filtered alike and every nd-th row kept (parallel
+decimation); rows at low speed (``|v| < 0.5 %`` of the peak speed) and around reversals, where
+sgn(v) of the estimate is not that of the axis, are left out.  An ``external_force`` column is added
+to the effort before the regression.
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -97,7 +100,8 @@ def term(name: str) -> Term:
 
 
 def unit_of(quantity: str, name: str) -> tuple:
-    """(unit, factor from SI) of a term's parameter in a ``quantity`` ('force' | 'torque') record."""
+    """(unit, factor from SI) of a term's parameter in a ``quantity`` ('force' | 'torque')
+    record."""
     return UNITS[quantity][term(name).unit]
 
 
@@ -139,8 +143,8 @@ class Rows:
         return len(self.keep)
 
     def columns(self, terms, shape: dict) -> np.ndarray:
-        """The regression columns of ``terms`` at the kept rows (:func:`matrix`): what an effect's own shape
-        search (``Shape.search``) fits with, without importing this pipeline."""
+        """The regression columns of ``terms`` at the kept rows (:func:`matrix`): what an effect's
+        own shape search (``Shape.search``) fits with, without importing this pipeline."""
         return matrix(self, terms, shape)
 
 
@@ -156,8 +160,8 @@ def full_matrix(sig: dict, terms, proc: Processing, shape: dict) -> np.ndarray:
 
 
 def decimate(rows_full: np.ndarray, proc: Processing, keep: np.ndarray, segments=()) -> np.ndarray:
-    """Parallel decimation: the same low-pass on every column (in each window of a long record), then the
-    kept rows."""
+    """Parallel decimation: the same low-pass on every column (in each window of a long record),
+    then the kept rows."""
     return lowpass(rows_full, proc.fs, proc.fdec, segments=segments)[keep]
 
 
@@ -196,8 +200,7 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
     edge = int(2.0 * proc.fs / min(proc.fc, proc.fdec)) + proc.nd
     idx = np.concatenate([np.arange(a + edge, b - edge, proc.nd) for a, b in segs or ((0, rec.n),)])
     # a row is kept when the axis moves one way for a whole filter window around it: the zero-phase
-    # filters
-    # smear starts and stops, where sgn(v) of the estimate leads the axis's
+    # filters smear starts and stops, where sgn(v) of the estimate leads the axis's
     w = int(proc.fs / proc.fdec)
     bad = (np.abs(v) < proc.vmin).astype(float)
     bad = np.convolve(bad, np.ones(2 * w + 1), mode="same") > 0
@@ -217,8 +220,9 @@ def make_rows(rec: TimeRecord, proc: Processing) -> Rows:
 
 
 def matrix(rows: Rows, terms, shape: dict, sig: dict | None = None) -> np.ndarray:
-    """The regression columns of ``terms`` at the kept rows (filtered and decimated).  On the record's own
-    signals, the columns no shape parameter moves are filtered once and kept with the rows."""
+    """The regression columns of ``terms`` at the kept rows (filtered and decimated).  On the
+    record's own signals, the columns no shape parameter moves are filtered once and kept with the
+    rows."""
     if sig is not None:
         return decimate(
             full_matrix(sig, terms, rows.proc, shape), rows.proc, rows.keep, rows.record.segments
@@ -241,7 +245,8 @@ def matrix(rows: Rows, terms, shape: dict, sig: dict | None = None) -> np.ndarra
 
 
 def _shape_free() -> set:
-    """Terms whose column no shape parameter changes: the baseline's and those of effects without a shape."""
+    """Terms whose column no shape parameter changes: the baseline's and those of effects without a
+    shape."""
     out = {t.name for t in BASE_TERMS}
     for eff in time_effects().values():
         if eff.shape is None:

@@ -1,6 +1,7 @@
-"""Signal processing of time records: the zero-phase Butterworth low-pass (applied exactly by FFT), Welch
-spectra, the choice of the cut-off frequency, derivatives of the filtered signals, the decimation a cut-off
-allows, and the windows a long record is fitted in.  Knows nothing of files (:mod:`.record` reads them)."""
+"""Signal processing of time records: the zero-phase Butterworth low-pass (applied exactly by FFT),
+Welch spectra, the choice of the cut-off frequency, derivatives of the filtered signals, the
+decimation a cut-off allows, and the windows a long record is fitted in.  Knows nothing of files
+(:mod:`.record` reads them)."""
 
 from __future__ import annotations
 
@@ -14,11 +15,12 @@ BUTTER_ORDER = 4
 
 
 def lowpass(x, fs: float, fc: float, order: int = BUTTER_ORDER, segments=()) -> np.ndarray:
-    """Zero-phase Butterworth low-pass: the squared magnitude :math:`|H|^2 = 1/(1 + (f/f_c)^{2n})` that a
-    forward-backward (filtfilt) pass of an order-``n`` Butterworth applies, applied exactly by FFT.  The
-    ends are extended by odd reflection over ``3 fs/fc`` samples (as filtfilt pads) so they do not ring.
-    ``x``: (n,) or (n, k) along axis 0; ``segments``: (start, end) index ranges filtered each on its own (the
-    windows of a long record, :func:`windowed`)."""
+    """Zero-phase Butterworth low-pass: the squared magnitude :math:`|H|^2 = 1/(1 + (f/f_c)^{2n})`
+    that a forward-backward (filtfilt) pass of an order-``n`` Butterworth applies, applied exactly
+    by FFT.  The ends are extended by odd reflection over ``3 fs/fc`` samples (as filtfilt pads) so
+    they do not ring.
+    ``x``: (n,) or (n, k) along axis 0; ``segments``: (start, end) index ranges filtered each on its
+    own (the windows of a long record, :func:`windowed`)."""
     if len(segments) > 1:
         return np.concatenate([lowpass(x[a:b], fs, fc, order) for a, b in segments], axis=0)
     x = np.asarray(x, dtype=float)
@@ -56,10 +58,11 @@ class CutoffChoice:
 
 
 def choose_cutoff(q, fs: float, segments=()) -> CutoffChoice:
-    """Cut-off from the data: the velocity spectrum (backward differences of the position) is compared with
-    its noise floor -- white position noise (quantisation) gives :math:`N_0 \\sin^2(\\pi f/f_s)`, fitted on
-    the upper half of the band -- and the cut-off is the highest frequency where the signal is still 10x
-    that floor, but at least 5x the motion bandwidth (99 % of the signal power) and at most fs/8."""
+    """Cut-off from the data: the velocity spectrum (backward differences of the position) is
+    compared with its noise floor -- white position noise (quantisation) gives
+    :math:`N_0 \\sin^2(\\pi f/f_s)`, fitted on the upper half of the band -- and the cut-off is the
+    highest frequency where the signal is still 10x that floor, but at least 5x the motion bandwidth
+    (99 % of the signal power) and at most fs/8."""
     v = np.concatenate([np.diff(q[a:b]) for a, b in segments]) * fs if segments else np.diff(q) * fs
     f, ps = welch(v, fs)
     shape = np.sin(np.pi * f / fs) ** 2 + 1e-30
@@ -84,8 +87,8 @@ def choose_cutoff(q, fs: float, segments=()) -> CutoffChoice:
 
 
 def derivatives(q, fs: float, fc: float, orders: int = 2, segments=()) -> list:
-    """[q_f, v, a, ...] up to ``orders`` (central differences of the zero-phase filtered position), each of
-    ``segments`` on its own."""
+    """[q_f, v, a, ...] up to ``orders`` (central differences of the zero-phase filtered position),
+    each of ``segments`` on its own."""
     if len(segments) > 1:
         parts = [derivatives(q[a:b], fs, fc, orders) for a, b in segments]
         return [np.concatenate([p[i] for p in parts]) for i in range(orders + 1)]
@@ -96,8 +99,8 @@ def derivatives(q, fs: float, fc: float, orders: int = 2, segments=()) -> list:
 
 
 def decimation_factor(fs: float, fc: float) -> int:
-    """Parallel decimation keeps every nd-th row after a low-pass at 0.8 of the new Nyquist frequency; nd is
-    the largest with that cut-off still at or above ``fc``."""
+    """Parallel decimation keeps every nd-th row after a low-pass at 0.8 of the new Nyquist
+    frequency; nd is the largest with that cut-off still at or above ``fc``."""
     return max(1, int(0.8 * fs / (2.0 * fc)))
 
 
@@ -114,13 +117,14 @@ def windowed(
     count: int = WINDOWS,
     size: int = WINDOW_SAMPLES,
 ) -> TimeRecord:
-    """``rec`` itself when it has at most ``long_samples`` samples; else ``count`` windows of ``size``
-    samples spread evenly over it, each starting at the first rest (the position still for 50 ms) at or after
-    its nominal start, as one record whose ``segments`` keep them apart: every filter, derivative and
-    closed-loop simulation then runs in each window on its own, and the times stay those of the record (a
-    warm-up's temperature, a drift's time from the start, a line's phase).  The slow physics a long record
-    is taken for (a warm-up over minutes) is sampled by the windows; the cost is that of ``count x size``
-    samples.  Windows on a record: :attr:`TimeRecord.segments`."""
+    """``rec`` itself when it has at most ``long_samples`` samples; else ``count`` windows of
+    ``size`` samples spread evenly over it, each starting at the first rest (the position still for
+    50 ms) at or after its nominal start, as one record whose ``segments`` keep them apart: every
+    filter, derivative and closed-loop simulation then runs in each window on its own, and the times
+    stay those of the record (a warm-up's temperature, a drift's time from the start, a line's
+    phase).  The slow physics a long record is taken for (a warm-up over minutes) is sampled by the
+    windows; the cost is that of ``count x size`` samples.  Windows on a record:
+    :attr:`TimeRecord.segments`."""
     n = rec.n
     if n <= long_samples:
         return rec

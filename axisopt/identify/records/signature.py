@@ -1,15 +1,17 @@
-"""Residual signatures that localise what a time-record fit leaves: a line in time (frequency, amplitude, and
-whether it stays at one frequency across speeds or moves with the speed), a spot on the stroke (where, how
-wide, in which directions) and a decay within the run (time constant, a friction or a force).
+"""Residual signatures that localise what a time-record fit leaves: a line in time (frequency,
+amplitude, and whether it stays at one frequency across speeds or moves with the speed), a spot on
+the stroke (where, how wide, in which directions) and a decay within the run (time constant, a
+friction or a force).
 
-Each is an added-variable probe of :mod:`.residual` (share of the residual against the model's columns,
-chi-square with the effective number of rows) scanned over its nonlinear parameter, and pays for the scan
-with a Bonferroni factor of the number of independent trials: frequencies 1/span apart, positions a
-narrowest width apart times the widths, the time constants tried.  The effective number of rows is that of the
-residual with the probe's fit taken out (``neff``, a function of a residual): the noise's correlation, not that
-of the structure tested (a slow drift left in the residual would make its own lag-1 correlation near one and
-hide itself).  The scans reuse the effects' own
-(:mod:`.effects.disturbance`); the probe's columns are computed as the regression's (filtered, decimated).
+Each is an added-variable probe of :mod:`.residual` (share of the residual against the model's
+columns, chi-square with the effective number of rows) scanned over its nonlinear parameter, and
+pays for the scan with a Bonferroni factor of the number of independent trials: frequencies 1/span
+apart, positions a narrowest width apart times the widths, the time constants tried.  The effective
+number of rows is that of the residual with the probe's fit taken out (``neff``, a function of a
+residual): the noise's correlation, not that of the structure tested (a slow drift left in the
+residual would make its own lag-1 correlation near one and hide itself).  The scans reuse the
+effects' own (:mod:`.effects.disturbance`); the probe's columns are computed as the regression's
+(filtered, decimated).
 """
 
 from __future__ import annotations
@@ -30,7 +32,8 @@ DECAY_TAUS = np.geomspace(0.3, 30.0, 13)  # [s] time constants the decay probe t
 
 
 def _blocks(runs, pooled, cols):
-    """Per-run copies of ``cols(rw)`` (a run's own coefficients: its own phase or level), stacked."""
+    """Per-run copies of ``cols(rw)`` (a run's own coefficients: its own phase or level),
+    stacked."""
     G = pooled(runs, cols)
     k = G.shape[1]
     out = np.zeros((G.shape[0], k * len(runs)))
@@ -42,7 +45,8 @@ def _blocks(runs, pooled, cols):
 
 
 def _rescore(p: rs.Probe, r, G, W, neff, scans: int) -> rs.Probe:
-    """``p`` with its significance on the effective rows of the residual with its own fit taken out."""
+    """``p`` with its significance on the effective rows of the residual with its own fit taken
+    out."""
     Go = rs.orthogonal(G, W)
     coef, *_ = np.linalg.lstsq(Go, r, rcond=None)
     n = neff(r - Go @ coef)
@@ -52,16 +56,18 @@ def _rescore(p: rs.Probe, r, G, W, neff, scans: int) -> rs.Probe:
 
 
 def _joint(r, G, W) -> np.ndarray:
-    """Coefficients of ``G`` in the least-squares fit of ``r`` on the model's span and ``G`` together."""
+    """Coefficients of ``G`` in the least-squares fit of ``r`` on the model's span and ``G``
+    together."""
     coef, *_ = np.linalg.lstsq(np.column_stack([W.Q, G]), r, rcond=None)
     return coef[W.Q.shape[1] :]
 
 
 def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
-    """The strongest line of the residual in time (per-run phase), its amplitude, and whether it is tied to the
-    speed: its amplitude is fitted in three speed groups (terciles of |v|); a line present in each at half its
-    amplitude or more stays at a fixed frequency, else it appears at one speed only (a ripple in position
-    seen at v/P) and the period in position v/f is given."""
+    """The strongest line of the residual in time (per-run phase), its amplitude, and whether it is
+    tied to the
+    speed: its amplitude is fitted in three speed groups (terciles of |v|); a line present in each
+    at half its amplitude or more stays at a fixed frequency, else it appears at one speed only (a
+    ripple in position seen at v/P) and the period in position v/f is given."""
     proc = runs[0].proc
     spans = [float(np.ptp(rw.sig["t"][rw.keep])) for rw in runs]
     lo, hi = frequency_band(max(spans), proc, fit=False)
@@ -125,8 +131,9 @@ def line_probe(runs, r, W, neff, pooled) -> rs.Probe:
 
 
 def spot_probe(runs, r, W, neff, pooled) -> rs.Probe:
-    """A narrow bump over position in the residual, fitted separately in + and - travel (2 columns); where
-    (x0), how wide (w) and the height in each direction (friction convention: positive opposes the motion)."""
+    """A narrow bump over position in the residual, fitted separately in + and - travel (2 columns);
+    where (x0), how wide (w) and the height in each direction (friction convention: positive opposes
+    the motion)."""
     sq = runs[0].proc.stroke_q
     q = np.concatenate([rw.sig["q"][rw.keep] for rw in runs])
     s = np.sign(np.concatenate([rw.sig["v"][rw.keep] for rw in runs]))
@@ -152,8 +159,7 @@ def spot_probe(runs, r, W, neff, pooled) -> rs.Probe:
     p.detail["crossed"] = "both" if all(seen) else "+" if seen[0] else "-"
     p.detail.update(height_plus=up, height_minus=down)
     # a spot is crossed on every pass: the height fitted on each pass over x0 +- 2w alone must agree
-    # in sign
-    # (a transient of one move that happens to end there does not)
+    # in sign (a transient of one move that happens to end there does not)
     near = np.abs(q - x0) < 2.0 * w
     g = np.exp(-0.5 * ((q - x0) / w) ** 2) * s
     starts = np.nonzero(near & ~np.r_[False, near[:-1]])[0]
@@ -179,9 +185,9 @@ def spot_probe(runs, r, W, neff, pooled) -> rs.Probe:
 
 
 def decay_probe(runs, r, W, neff, pooled) -> rs.Probe:
-    """A decay within the run, exp(-t/tau) and sgn(v) exp(-t/tau) (t from each run's start), the best of
-    :data:`DECAY_TAUS` that a run can show (tau up to twice its length); ``friction_share``: the part that
-    follows the direction."""
+    """A decay within the run, exp(-t/tau) and sgn(v) exp(-t/tau) (t from each run's start), the
+    best of :data:`DECAY_TAUS` that a run can show (tau up to twice its length); ``friction_share``:
+    the part that follows the direction."""
     span = max(float(np.ptp(rw.sig["t"])) for rw in runs)
     taus = [t for t in DECAY_TAUS if t <= 2.0 * span]
     best = None
@@ -208,9 +214,10 @@ STEADY_SHARE = 0.5
 
 
 def steady_line(rows, est, f_peak: float):
-    """(frequency, share) when one sin, cos pair near ``f_peak`` (refined on a fine scan) holds at least
-    :data:`STEADY_SHARE` of the residual of ``est`` on ``rows``: a line with one phase through the run (a
-    periodic disturbance), which a resonance excited by each move (its own phase each time) is not; else None."""
+    """(frequency, share) when one sin, cos pair near ``f_peak`` (refined on a fine scan) holds at
+    least :data:`STEADY_SHARE` of the residual of ``est`` on ``rows``: a line with one phase through
+    the run (a periodic disturbance), which a resonance excited by each move (its own phase each
+    time) is not; else None."""
     if not f_peak > 0:
         return None
     t = rows.sig["t"][rows.keep]

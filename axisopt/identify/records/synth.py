@@ -1,39 +1,40 @@
-"""Synthetic time records of a feed axis under closed-loop position control (tests, benchmarks, examples).
+"""Synthetic time records of a feed axis under closed-loop position control (tests, benchmarks,
+examples).
 
-Written apart from the identification code (``timerecord``, ``idim``) and sharing nothing with it: a test
-that identifies these records checks the identification against an independent model.
+Written apart from the identification code (``timerecord``, ``idim``) and sharing nothing with it: a
+test that identifies these records checks the identification against an independent model.
 
-The axis (table side, SI): a moving mass ``mass`` driven by the motor force ``u`` (reflected to the table),
-friction
+The axis (table side, SI): a moving mass ``mass`` driven by the motor force ``u`` (reflected to the
+table), friction
 
 .. math:: F(x, v) = F_c^\\pm \\operatorname{sgn} v + F_v^\\pm v
           + (F_s - F_c) e^{-|v|/v_s} \\operatorname{sgn} v + \\Delta F(\\xi) \\operatorname{sgn} v + F_0
 
-with direction-dependent Coulomb and viscous levels (``coulomb_asym``, ``viscous_asym`` = level for v > 0
-minus level for v < 0), a Stribeck excess ``stribeck`` decaying with velocity constant ``stribeck_v``, a
-position-dependent Coulomb part :math:`\\Delta F = c_1 \\xi + c_2 (3\\xi^2 - 1)/2` with
-:math:`\\xi = 2x/\\mathrm{stroke} - 1`, and a constant force ``offset`` :math:`F_0`.  Sticking is exact
-(implicit Coulomb step: the table stays at rest while the drive force is inside the breakaway band).
-Optionally a second mass: the motor-side mass ``mode_mass`` carries the drive force and is tied to the
-table by a spring-damper tuned to the resonance ``mode_hz`` (damping ratio ``mode_zeta``); the table
-carries the friction and its position is measured.
+with direction-dependent Coulomb and viscous levels (``coulomb_asym``, ``viscous_asym`` = level for
+v > 0 minus level for v < 0), a Stribeck excess ``stribeck`` decaying with velocity constant
+``stribeck_v``, a position-dependent Coulomb part :math:`\\Delta F = c_1 \\xi + c_2 (3\\xi^2 - 1)/2`
+with :math:`\\xi = 2x/\\mathrm{stroke} - 1`, and a constant force ``offset`` :math:`F_0`.  Sticking
+is exact (implicit Coulomb step: the table stays at rest while the drive force is inside the
+breakaway band).  Optionally a second mass: the motor-side mass ``mode_mass`` carries the drive
+force and is tied to the table by a spring-damper tuned to the resonance ``mode_hz`` (damping ratio
+``mode_zeta``); the table carries the friction and its position is measured.
 
 Effects the identification library may lack: a ripple periodic in position ``ripple`` sin(2 pi x /
 ``ripple_period`` + ``ripple_phase``), as a force in -x (the drive supplies it both ways) or, with
-``ripple_friction``, added to the Coulomb level (it follows the direction); a drag ``quadratic_drag`` v|v|;
-lost motion ``backlash`` between the motor-side and table masses (a dead zone of the spring; needs the
-second mass); a seeded piecewise-constant process force on the table, ``process_force`` (recorded as
-``extra['external_force']`` and written as the ``external_force [N]`` column); and a caller's own force
-``extra_force(t, x, v)`` or Coulomb level ``extra_friction(t, x)`` (tests write the physics of the effect they
-hide there, apart from the identification's columns).
+``ripple_friction``, added to the Coulomb level (it follows the direction); a drag
+``quadratic_drag`` v|v|; lost motion ``backlash`` between the motor-side and table masses (a dead
+zone of the spring; needs the second mass); a seeded piecewise-constant process force on the table,
+``process_force`` (recorded as ``extra['external_force']`` and written as the ``external_force [N]``
+column); and a caller's own force ``extra_force(t, x, v)`` or Coulomb level ``extra_friction(t, x)``
+(tests write the physics of the effect they hide there, apart from the identification's columns).
 
-The controller (sampled at ``fs``): PD on the measured position, the velocity from the backward difference
-of the measured position through a first-order low-pass (``vel_filter_hz``),
-:math:`u = K_p (r - x_m) + K_d (\\dot r - \\hat v)`.  The recorded force is ``u`` plus white sensor noise
-``force_noise``; the position is quantised to ``quantum`` (1 um) after white noise ``position_noise``.
-The reference is a seeded sequence of trapezoidal moves at several speeds and accelerations in both
-directions with dwells, inside the stroke.
-"""
+The controller (sampled at ``fs``): PD on the measured position, the velocity from the backward
+difference of the measured position through a first-order low-pass (``vel_filter_hz``),
+:math:`u = K_p (r - x_m) + K_d (\\dot r - \\hat v)`.  The recorded force is ``u`` plus white sensor
+noise ``force_noise``; the position is quantised to ``quantum`` (1 um) after white noise
+``position_noise``.  The reference is a seeded sequence of trapezoidal moves at several speeds and
+accelerations in both directions with dwells, inside the stroke.
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -77,11 +78,10 @@ class AxisTruth:
     backlash: float = 0.0
     # [N] amplitude of a seeded piecewise-constant external force on the table
     process_force: float = 0.0
-    # effects a caller writes itself (tests hide their own physics this way): ``extra_force(t, x,
-    # v)`` [N] a
-    # force in -x the drive must supply; ``extra_friction(t, x)`` [N] added to the Coulomb level of
-    # both
-    # directions (it opposes the motion and widens the breakaway band at rest)
+    # effects a caller writes itself (tests hide their own physics this way):
+    # ``extra_force(t, x, v)`` [N] a force in -x the drive must supply; ``extra_friction(t, x)`` [N]
+    # added to the Coulomb level of both directions (it opposes the motion and widens the breakaway
+    # band at rest)
     extra_force: Callable | None = None
     extra_friction: Callable | None = None
 
@@ -121,9 +121,10 @@ class Record:
         gain: float | None = None,
         position_unit: str = "mm",
     ) -> None:
-        """Write as an axisopt time-record CSV.  ``effort``: 'force' [N], 'torque' [N.m] or 'current' [A]
-        (torque = force * lead / (2 pi efficiency), current = torque / gain with a ``# gain`` line).
-        ``position_unit`` 'mm' (table) or 'rad' (motor angle through ``lead``)."""
+        """Write as an axisopt time-record CSV.  ``effort``: 'force' [N], 'torque' [N.m] or
+        'current' [A] (torque = force * lead / (2 pi efficiency), current = torque / gain with a
+        ``# gain`` line).  ``position_unit`` 'mm' (table) or 'rad' (motor angle through
+        ``lead``)."""
         if effort == "force":
             eff, head = self.force, "force [N]"
         else:
@@ -166,7 +167,8 @@ class Record:
 def trapezoid_reference(
     duration: float, fs: float, stroke: float, seed: int, speeds=SPEEDS, accels=ACCELS
 ) -> tuple:
-    """Seeded trapezoidal moves (position, velocity [SI] at every sample) within 5..95 % of the stroke."""
+    """Seeded trapezoidal moves (position, velocity [SI] at every sample) within 5..95 % of the
+    stroke."""
     rng = np.random.default_rng(seed)
     n = int(round(duration * fs))
     t = np.arange(n) / fs
@@ -234,9 +236,9 @@ def simulate_axis(
     reference_seed: int | None = None,
     record_motor: bool = False,
 ) -> Record:
-    """Simulate the closed loop; see the module docstring.  ``record_motor``: also record the motor-side
-    position (an encoder of 0.1 um resolution in table travel; the table's own when the axis is rigid) as
-    ``extra['motor_position']``, written as a ``motor_position`` column."""
+    """Simulate the closed loop; see the module docstring.  ``record_motor``: also record the
+    motor-side position (an encoder of 0.1 um resolution in table travel; the table's own when the
+    axis is rigid) as ``extra['motor_position']``, written as a ``motor_position`` column."""
     truth = truth or AxisTruth()
     loop = loop or LoopSettings()
     fs, ns = loop.fs, loop.substeps
@@ -349,8 +351,8 @@ def simulate_axis(
 
 
 def process_force_profile(t: np.ndarray, amplitude: float, seed: int) -> np.ndarray:
-    """A seeded external force on the table [N]: constant levels within +-``amplitude`` held 0.3-1.2 s each
-    (cuts starting and stopping), ramped over 20 ms between levels."""
+    """A seeded external force on the table [N]: constant levels within +-``amplitude`` held 0.3-1.2
+    s each (cuts starting and stopping), ramped over 20 ms between levels."""
     rng = np.random.default_rng(seed + 2000)
     out = np.zeros(len(t))
     t0, level = 0.0, 0.0

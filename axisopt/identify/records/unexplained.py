@@ -1,9 +1,10 @@
-"""What a time-record fit leaves unexplained: the residual of the final fit (estimation and validation rows
-pooled) tested for structure over position (a period scan, the lead and its harmonics named in advance),
-velocity, position along the stroke, time within a run, between runs, the external force, travel since a
-reversal and acceleration (:mod:`.residual`: added-variable shares against the noise floor), a line in time, a
-spot on the stroke and a decay within the run (:mod:`.timesignature`); and the baseline residual's spectral peak
-that makes an extra mode a candidate.
+"""What a time-record fit leaves unexplained: the residual of the final fit (estimation and
+validation rows pooled) tested for structure over position (a period scan, the lead and its
+harmonics named in advance), velocity, position along the stroke, time within a run, between runs,
+the external force, travel since a reversal and acceleration (:mod:`.residual`: added-variable
+shares against the noise floor), a line in time, a spot on the stroke and a decay within the run
+(:mod:`.timesignature`); and the baseline residual's spectral peak that makes an extra mode a
+candidate.
 """
 
 from __future__ import annotations
@@ -65,12 +66,12 @@ class Unexplained:
 def noise_floor(rows: Rows, est: Estimate | None = None) -> float:
     """Sensor noise of the effort at the regression rows, the larger of two estimates:
 
-    * white: the raw effort's second differences (median absolute deviation, var(e1 - 2 e2 + e3) =
-      6 sigma^2) through the decimation low-pass (equivalent noise bandwidth of |H|^2 = 1/(1 + (f/f_d)^8):
-      1.026 f_d).  Correlated (coloured) noise hides from second differences: its power sits at low
-      frequencies, where the regression rows keep it;
-    * coloured (:func:`ar_noise`): an AR(1) spectrum fitted to the effort above the motion's band, through the
-      same low-pass -- the noise as the rows see it when it is correlated."""
+    * white: the raw effort's second differences (median absolute deviation, var(e1 - 2 e2 + e3) = 6
+      sigma^2) through the decimation low-pass (equivalent noise bandwidth of |H|^2 = 1/(1 +
+      (f/f_d)^8): 1.026 f_d).  Correlated (coloured) noise hides from second differences: its power
+      sits at low frequencies, where the regression rows keep it;
+    * coloured (:func:`ar_noise`): an AR(1) spectrum fitted to the effort above the motion's band,
+      through the same low-pass -- the noise as the rows see it when it is correlated."""
     e = rows.record.effort
     d2 = e[2:] - 2.0 * e[1:-1] + e[:-2]
     s = 1.4826 * float(np.median(np.abs(d2 - np.median(d2)))) / math.sqrt(6.0)
@@ -86,13 +87,13 @@ AR_RHO = np.linspace(-0.5, 0.98, 149)
 
 
 def ar_noise(rows: Rows, est: Estimate | None = None):
-    """RMS of the effort's noise through the decimation low-pass when the noise is coloured: an AR(1) spectrum
-    S(f) = s^2 / (1 - 2 rho cos(2 pi f/fs) + rho^2) is fitted (least squares on the log of the averaged
-    periodogram, a running median over 9 bins first so lines do not count) to the full-rate residual of
-    ``est`` over windows of 0.256 s where the axis moves one way (the kept rows), above twice the motion
-    bandwidth (where the model's own misfit, which follows the motion, is small); the fitted spectrum is then
-    integrated under |H|^2 of the decimation filter, the band the regression rows keep.  None without an
-    estimate or with fewer than 4 windows."""
+    """RMS of the effort's noise through the decimation low-pass when the noise is coloured: an
+    AR(1) spectrum S(f) = s^2 / (1 - 2 rho cos(2 pi f/fs) + rho^2) is fitted (least squares on the
+    log of the averaged periodogram, a running median over 9 bins first so lines do not count) to
+    the full-rate residual of ``est`` over windows of 0.256 s where the axis moves one way (the kept
+    rows), above twice the motion bandwidth (where the model's own misfit, which follows the motion,
+    is small); the fitted spectrum is then integrated under |H|^2 of the decimation filter, the band
+    the regression rows keep.  None without an estimate or with fewer than 4 windows."""
     if est is None:
         return None
     proc = rows.proc
@@ -140,7 +141,8 @@ def ar_noise(rows: Rows, est: Estimate | None = None):
 
 
 def pooled(runs: list, full_cols) -> np.ndarray:
-    """Columns computed at full rate on each run (``full_cols(rows) -> (N, k)``), decimated alike, stacked."""
+    """Columns computed at full rate on each run (``full_cols(rows) -> (N, k)``), decimated alike,
+    stacked."""
     return np.vstack(
         [
             decimate(
@@ -152,10 +154,10 @@ def pooled(runs: list, full_cols) -> np.ndarray:
 
 
 def since_reversal(rw: Rows) -> np.ndarray:
-    """Travel since the last reversal of the motion at every full-rate sample, in the record's coordinate:
-    the direction is sgn(v) where the axis moves faster than the record's speed threshold, held through
-    slow stretches; the travel is measured from the position where it last changed (from the first sample
-    before the first reversal)."""
+    """Travel since the last reversal of the motion at every full-rate sample, in the
+    record's coordinate: the direction is sgn(v) where the axis moves faster than the record's speed
+    threshold, held through slow stretches; the travel is measured from the position where it last
+    changed (from the first sample before the first reversal)."""
     q, v = rw.sig["q"], rw.sig["v"]
     d = np.where(np.abs(v) >= rw.proc.vmin, np.sign(v), 0.0)
     idx = np.where(d != 0, np.arange(len(d)), 0)
@@ -177,9 +179,9 @@ def legendre(x, deg):
 
 
 def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
-    """Test the residual of ``est`` on ``runs`` (estimation first) for structure: over position (a period
-    scan, the lead and its harmonics named in advance), velocity, position along the stroke, time within a
-    run, between runs and acceleration; see :mod:`.residual`."""
+    """Test the residual of ``est`` on ``runs`` (estimation first) for structure: over position (a
+    period scan, the lead and its harmonics named in advance), velocity, position along the stroke,
+    time within a run, between runs and acceleration; see :mod:`.residual`."""
     proc = runs[0].proc
     W = np.vstack([matrix(r, est.terms, est.shape) for r in runs])
     # a per-run phase is each run's own
@@ -316,8 +318,9 @@ def analyse_residual(runs: list, est: Estimate, kinds=None) -> Unexplained:
 
 
 def periodic_peak(rows: Rows, est: Estimate):
-    """(period, share) when the residual of ``est`` is mostly periodic in position (a significant probe holding
-    at least half of it), else None: a spectral peak that moves with speed is a ripple, not a mode."""
+    """(period, share) when the residual of ``est`` is mostly periodic in position (a significant
+    probe holding at least half of it), else None: a spectral peak that moves with speed is a
+    ripple, not a mode."""
     if rows.proc.lead_q <= 0:
         return None
     u = analyse_residual([rows], est, kinds=("position_periodic",))

@@ -11,10 +11,10 @@ Four test types, told apart by their columns (units in brackets; any unit of the
   ``magnitude [um/N]`` + ``phase [deg]``
 
 Every file may also carry ``exclude`` (0/1): rows marked 1 are left out of the fit and listed in the
-report.  ``position`` is the table coordinate along the stroke, 0 at the stroke start (the nut is then
-``start_offset`` from the fixed bearing).  A missing column, an unknown column or unit, a non-numeric,
-empty or NaN cell is an :class:`InputError` naming the file, line and column.
-"""
+report.  ``position`` is the table coordinate along the stroke, 0 at the stroke start (the nut is
+then ``start_offset`` from the fixed bearing).  A missing column, an unknown column or unit, a
+non-numeric, empty or NaN cell is an :class:`InputError` naming the file, line and column.
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -103,7 +103,8 @@ DISPLAY = {
 
 @dataclass
 class Dataset:
-    """One measured test in SI.  ``columns`` holds only kept rows; ``excluded`` lists (line, reason)."""
+    """One measured test in SI.  ``columns`` holds only kept rows; ``excluded`` lists (line,
+    reason)."""
 
     kind: str
     source: str
@@ -279,11 +280,12 @@ def read_dataset(path) -> Dataset:
 
 
 def _check_friction_sign(columns, keep, lines, names, src) -> None:
-    """A friction table takes the signed force (or torque) the drive supplies: negative at negative velocity.
-    Magnitudes given with a signed velocity -- positive on both sides and about equal there, where a real
-    friction's odd part (its Coulomb level) would be -- would fit a Coulomb level of about zero and a spurious
-    offset: refused with the convention.  (A vertical axis whose weight exceeds its friction is positive on
-    both sides too, but differs between them by twice the friction, and passes.)"""
+    """A friction table takes the signed force (or torque) the drive supplies: negative at negative
+    velocity.  Magnitudes given with a signed velocity -- positive on both sides and about equal
+    there, where a real friction's odd part (its Coulomb level) would be -- would fit a Coulomb
+    level of about zero and a spurious
+    offset: refused with the convention.  (A vertical axis whose weight exceeds its friction is
+    positive on both sides too, but differs between them by twice the friction, and passes.)"""
     meas = "friction_force" if "friction_force" in columns else "drag_torque"
     v, f = columns["velocity"][keep], columns[meas][keep]
     neg, pos = v < 0, v > 0
@@ -296,9 +298,9 @@ def _check_friction_sign(columns, keep, lines, names, src) -> None:
         return
     i = int(np.nonzero(neg & (f > 0))[0][0])
     raise InputError(
-        f"{meas} is positive at negative velocity and about equal in both directions ({fn:.4g} against "
-        f"{fp:.4g}): a magnitude? A friction table takes the signed value the drive supplies, negative at "
-        f"negative velocity (F(|v|) sgn v)",
+        f"{meas} is positive at negative velocity and about equal in both directions ({fn:.4g} "
+        f"against {fp:.4g}): a magnitude? A friction table takes the signed value the drive "
+        "supplies, negative at negative velocity (F(|v|) sgn v)",
         source=src,
         where=f"line {lines[keep][i]}, column {names.index(meas) + 1} ({meas})",
     )

@@ -1,22 +1,26 @@
-"""Diagnosis of reduced tables: fit the design's model to measured data, find where it misfits, name the cause.
+"""Diagnosis of reduced tables: fit the design's model to measured data, find where it misfits, name
+the cause.
 
 1. Baseline: the design's own model with the calibration parameters a test engineer fits
    (``measure.baseline_params``), weighted by measurement noise (estimated from the data,
    :func:`.tableresidual.noise_sigma_rel`).
-2. Residuals against every recorded factor; a table of where misfit concentrates (:mod:`.tableresidual`).
-3. Forward selection over the effect library (:func:`.effects.library`): each applicable candidate is fitted
-   jointly with the current parameters and judged by :data:`.selection.TABLE_RULE` -- dBIC < -10, its values
-   in their physical range, and the grouped cross-validation RMSE (leave one position / load level / cycle
-   block out) at least 5 % lower.  Every candidate not accepted keeps the first criterion it failed; when no
-   single effect passes, pairs of the best candidates are fitted jointly and accepted when each member is
-   needed (:func:`_best_pair`).
-4. Gain on held-out data (pooled and per file), parameters +- 1 sigma with plausibility flags (a parameter
-   the data do not fix is "not identifiable", see :func:`.fit.covariance`), runner-up and margin.
-5. What remains: the final residual of every file is tested along each recorded factor against the noise
-   floor (:func:`.tableresidual.table_unexplained`); structure left is the "unexplained" verdict, in words.
+2. Residuals against every recorded factor; a table of where misfit concentrates
+   (:mod:`.tableresidual`).
+3. Forward selection over the effect library (:func:`.effects.library`): each applicable candidate
+   is fitted jointly with the current parameters and judged by :data:`.selection.TABLE_RULE` -- dBIC
+   < -10, its values in their physical range, and the grouped cross-validation RMSE (leave one
+   position / load level / cycle block out) at least 5 % lower.  Every candidate not accepted keeps
+   the first criterion it failed; when no single effect passes, pairs of the best candidates are
+   fitted jointly and accepted when each member is needed (:func:`_best_pair`).
+4. Gain on held-out data (pooled and per file), parameters +- 1 sigma with plausibility flags (a
+   parameter the data do not fix is "not identifiable", see :func:`.fit.covariance`), runner-up and
+   margin.
+5. What remains: the final residual of every file is tested along each recorded factor against the
+   noise floor (:func:`.tableresidual.table_unexplained`); structure left is the "unexplained"
+   verdict, in words.
 
-The information criterion and its threshold: Kass and Raftery, "Bayes factors", J. Am. Stat. Assoc. 90 (1995)
-773-795; grouped cross-validation: Roberts et al., Ecography 40 (2017) 913-929.
+The information criterion and its threshold: Kass and Raftery, "Bayes factors", J. Am. Stat. Assoc.
+90 (1995) 773-795; grouped cross-validation: Roberts et al., Ecography 40 (2017) 913-929.
 """
 
 from __future__ import annotations
@@ -113,8 +117,9 @@ class Diagnosis:
         return 100.0 * (1.0 - self.cv_final / self.cv_baseline) if self.cv_baseline > 0 else 0.0
 
     def to_frame(self):
-        """pandas DataFrame of the final fit's parameters, one row each: ``effect`` (the accepted effect that
-        owns it, 'baseline' otherwise), ``parameter``, ``label``, ``value`` and ``sigma`` in ``unit``."""
+        """pandas DataFrame of the final fit's parameters, one row each: ``effect`` (the accepted
+        effect that owns it, 'baseline' otherwise), ``parameter``, ``label``, ``value`` and
+        ``sigma`` in ``unit``."""
         rows = [
             {
                 "effect": self.param_owner.get(p["name"], "baseline"),
@@ -191,7 +196,8 @@ def param_text(p, v, s) -> str:
 
 
 def param_rows(res, names=None) -> list:
-    """The parameters of a fit (only ``names`` when given) as dicts: name, label, value, sigma, unit, text."""
+    """The parameters of a fit (only ``names`` when given) as dicts: name, label, value, sigma,
+    unit, text."""
     sig = dict(zip([p.name for p in res.params], res.sigma))
     return [
         {
@@ -208,8 +214,8 @@ def param_rows(res, names=None) -> list:
 
 
 def _check_positions(ds, plant) -> None:
-    """Positions are measured from the stroke start; data off the design's stroke is a wrong design or a
-    wrong zero, and would be extrapolated silently."""
+    """Positions are measured from the stroke start; data off the design's stroke is a wrong design
+    or a wrong zero, and would be extrapolated silently."""
     pos = ds.columns.get("position")
     if pos is None:
         return
@@ -336,10 +342,9 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
         scored.sort(key=lambda c: c.dbic)
         rounds.append(scored)
         # the best candidate by BIC that is physical and predicts held-out data better; a candidate
-        # that explains
-        # the data only with a value outside its physical range is reported ("would need ...") and
-        # the next one
-        # considered; every candidate not accepted keeps the first criterion it failed as its reason
+        # that explains the data only with a value outside its physical range is reported ("would
+        # need ...") and the next one considered; every candidate not accepted keeps the first
+        # criterion it failed as its reason
         top = None
         for c in scored:
             if top is not None:
@@ -359,8 +364,7 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
                 top = c
         if top is None:
             # pairs only when some candidate found signal (dBIC < -10) that no single effect turns
-            # into an
-            # accepted explanation: a misfit at the noise floor costs no pair fits
+            # into an accepted explanation: a misfit at the noise floor costs no pair fits
             if len(effects) + 2 > max_effects or not any(c.dbic < RULE.accept_dbic for c in scored):
                 break
             pair = _best_pair(
@@ -492,9 +496,8 @@ def diagnose(datasets, plant, *, candidates=None, max_effects: int = MAX_EFFECTS
 
 
 # held-out RMSE (weighted: in noise floors) at or below which an explanation leaves only noise; two
-# that both
-# do are not told apart by the held-out readings, however far apart their RMSE (a few readings'
-# scatter)
+# that both do are not told apart by the held-out readings, however far apart their RMSE (a few
+# readings' scatter)
 AT_FLOOR = 1.1
 
 
@@ -507,8 +510,8 @@ def top_speed(obs) -> float:
 
 
 def regime_flags(obs, effects) -> list:
-    """An accepted effect named outside the regime it is plausible in (its declaration's ``regime``, judged
-    at the tables' top speed, as for time records)."""
+    """An accepted effect named outside the regime it is plausible in (its declaration's ``regime``,
+    judged at the tables' top speed, as for time records)."""
     v = top_speed(obs)
     if not v > 0:
         return []
@@ -522,10 +525,11 @@ def regime_flags(obs, effects) -> list:
 
 
 def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
-    """Effects that only help together: when no single candidate passes, every pair of the round's best
-    candidates (:data:`.selection.TABLE_RULE`: ``pair_pool``) is fitted jointly and judged like a single one;
-    it must also beat each member alone by ``min_gain`` of held-out error (each is needed).  The pair with the
-    largest held-out gain is returned (a dict), every pair tried is logged with its reason."""
+    """Effects that only help together: when no single candidate passes, every pair of the round's
+    best candidates (:data:`.selection.TABLE_RULE`: ``pair_pool``) is fitted jointly and judged like
+    a single one; it must also beat each member alone by ``min_gain`` of held-out error (each is
+    needed).  The pair with the largest held-out gain is returned (a dict), every pair tried is
+    logged with its reason."""
     prev = cur_fit.values()
     pool = RULE.pair_pool_of(scored)
     best = None
@@ -569,7 +573,8 @@ def _best_pair(ctx, scored, effects, base, cur_fit, cur_cv, folds, rnd, log):
 
 
 def plausibility(res: FitResult, effects, names=None) -> list:
-    """Flags for fitted values outside their physically plausible range (only ``names`` when given)."""
+    """Flags for fitted values outside their physically plausible range (only ``names`` when
+    given)."""
     out = []
     for p, v in zip(res.params, res.theta):
         if p.plausible is None or (names is not None and p.name not in names):
@@ -578,6 +583,7 @@ def plausibility(res: FitResult, effects, names=None) -> list:
         if not lo <= v <= hi:
             note = f" ({p.plausible_note})" if p.plausible_note else ""
             out.append(
-                f"{p.name} = {p.show(v):.4g} {p.unit} outside {p.show(lo):.4g}..{p.show(hi):.4g}{note}"
+                f"{p.name} = {p.show(v):.4g} {p.unit} outside "
+                f"{p.show(lo):.4g}..{p.show(hi):.4g}{note}"
             )
     return out

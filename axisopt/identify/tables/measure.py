@@ -13,10 +13,11 @@ Terms (all SI; ``x`` = fixed bearing to nut, ``L`` = span, ``EA`` = screw sectio
 * static stiffness test: ``delta = F (c_SB + c_extra) + delta_N(F) + offsets``;
 * natural frequency: ``f = 1 / (2 pi sqrt(c_total m_eff(x)))`` (m_eff as the axis model);
 * frequency response: ``G = 1/(k - m w^2 + 2 i zeta sqrt(k m) w)`` plus any extra modes;
-* friction at the table: ``F = sgn(v) (F_c s(cycle) + mu N + k_a |F_a| + Stribeck) + c_v v + c_q v|v| + a/2``.
+* friction at the table: ``F = sgn(v) (F_c s(cycle) + mu N + k_a |F_a| + Stribeck) + c_v v + c_q
+  v|v| + a/2``.
 
 Effects (``effects.py``) change the fields of the :class:`Terms` record before the output is formed.
-"""
+"""  # noqa: E501
 
 from __future__ import annotations
 
@@ -240,13 +241,14 @@ def baseline_terms(plant, P) -> Terms:
 
 
 def screw_bearing_compliance(q: Terms, x, span):
-    """Screw and bearing sets, the axis model's two-path form (:func:`axisopt.physics.screw.two_path_stiffness`)."""
+    """Screw and bearing sets, the axis model's two-path form
+    (:func:`axisopt.physics.screw.two_path_stiffness`)."""
     return 1.0 / ps.two_path_stiffness(1.0 / q.c_bearing, q.k_far, q.EA, x, span)
 
 
 def drive_compliance(plant, x):
-    """Compliance in the chain besides screw tension, bearings and nut, as the axis model has it: screw
-    torsion through the lead up to the nut, nut bracket, coupling [m/N]."""
+    """Compliance in the chain besides screw tension, bearings and nut, as the axis model has it:
+    screw torsion through the lead up to the nut, nut bracket, coupling [m/N]."""
     tors = 0.0
     if plant.torsion:
         tors = 1.0 / ps.torsion_axial_stiffness(
@@ -267,10 +269,10 @@ def double_nut_deflection(force, preload, k0):
 
     .. math:: (1+s)^{3/2} - (1-s)_+^{3/2} = |F|/F_{a0},\qquad \delta = \mathrm{sgn}(F)\, s\, 3F_{a0}/k_0
 
-    (k_0 = 3 F_a0 / delta_0 is the stiffness at zero load).  Lift-off at |F| = 2^{3/2} F_a0.  The shift s is
-    :func:`axisopt.physics.nut.double_nut_shift`, as in the axis model's double-nut stiffness.
-    force [N], preload F_a0 [N], k0 [N/m]; returns [m].
-    """
+    (k_0 = 3 F_a0 / delta_0 is the stiffness at zero load).  Lift-off at |F| = 2^{3/2} F_a0.  The
+    shift s is :func:`axisopt.physics.nut.double_nut_shift`, as in the axis model's double-nut
+    stiffness. force [N], preload F_a0 [N], k0 [N/m]; returns [m].
+    """  # noqa: E501
     s = pn.double_nut_shift(mx.fabs(force) / preload)
     return mx.sign(force) * s * 3.0 * preload / k0
 

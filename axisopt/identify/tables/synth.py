@@ -32,7 +32,8 @@ def simulate(
     seed: int = 0,
     source: str = "synthetic.csv",
 ) -> Dataset:
-    """A :class:`Dataset` of ``kind`` at the conditions in ``columns`` (SI arrays, no measured column).
+    """A :class:`Dataset` of ``kind`` at the conditions in ``columns`` (SI arrays, no measured
+    column).
 
     effects  : {effect name: {parameter: SI value}} hidden in the data
     baseline : {baseline parameter: SI value}, e.g. {'screw_modulus': 200e9}

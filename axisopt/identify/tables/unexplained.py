@@ -1,10 +1,12 @@
-"""The reduced tables' residuals: the noise floor of each test, where misfit concentrates along the recorded
-factors, and the structure the final fit leaves (the "unexplained" verdict, tested with :mod:`.residual`).
+"""The reduced tables' residuals: the noise floor of each test, where misfit concentrates along the
+recorded factors, and the structure the final fit leaves (the "unexplained" verdict, tested with
+:mod:`.residual`).
 
-Noise floor, in order of preference: the pooled scatter of replicates (rows with the same value of every
-recorded factor), else second differences of the residual along one continuous factor, var(e1 - 2 e2 + e3) =
-6 sigma^2 for white noise (median-absolute-deviation form, so structure only adds).  Misfit per factor level:
-the share of residual variance the levels explain (eta^2, the correlation ratio).
+Noise floor, in order of preference: the pooled scatter of replicates (rows with the same value of
+every recorded factor), else second differences of the residual along one continuous factor,
+var(e1 - 2 e2 + e3) = 6 sigma^2 for white noise (median-absolute-deviation form, so structure only
+adds).  Misfit per factor level: the share of residual variance the levels explain (eta^2, the
+correlation ratio).
 """
 
 from __future__ import annotations
@@ -19,8 +21,7 @@ from ..levels import cluster_levels
 from .measure import FEATURES, Y_UNIT, Obs
 
 # Factors whose levels alternate between neighbouring rows of a test (load direction, cycle, mode):
-# the noise
-# floor never takes differences across them.
+# the noise floor never takes differences across them.
 _CATEGORICAL_FACTORS = ("direction", "cycle", "mode")
 MIN_REPLICATE_DOF = 5
 
@@ -29,17 +30,17 @@ def noise_sigma_rel(o: Obs, resid: np.ndarray) -> tuple[float, str]:
     """Noise floor relative to the weight scale, and how it was estimated.
 
     1. Replicates: rows with the same value of every recorded factor (a reading repeated at the same
-       position, load, direction, cycle, ...) differ by noise alone, whatever the model gets wrong; the pooled
-       within-replicate standard deviation is used when it has at least 5 degrees of freedom.
-    2. Otherwise second differences of the residual along one continuous factor within rows that share all
-       other factors (:func:`_second_difference_sigma`): misfit constant or linear along it cancels, and an
-       effect that alternates between neighbouring rows (hysteresis, a direction-dependent friction) is
-       never differenced across."""
+       position, load, direction, cycle, ...) differ by noise alone, whatever the model gets wrong;
+       the pooled within-replicate standard deviation is used when it has at least 5 degrees of
+       freedom.
+    2. Otherwise second differences of the residual along one continuous factor within rows that
+       share all other factors (:func:`_second_difference_sigma`): misfit constant or linear along
+       it cancels, and an effect that alternates between neighbouring rows (hysteresis, a
+       direction-dependent friction) is never differenced across."""
     r = resid / o.scale
     if o.factors:
         # every model feature too: an FRF's real and imaginary rows share their factors but are no
-        # replicates
-        # levels logged with jitter are one level (:mod:`.levels`)
+        # replicates levels logged with jitter are one level (:mod:`.levels`)
         feats = FEATURES[o.kind]
         keys = np.column_stack(
             [cluster_levels(v, k) for k, v in o.factors.items()]
@@ -65,11 +66,12 @@ def noise_sigma_rel(o: Obs, resid: np.ndarray) -> tuple[float, str]:
 
 
 def _second_difference_sigma(o: Obs, r: np.ndarray):
-    """Noise from second differences of the residual along one continuous factor, within rows that share
-    every other factor (and the factor's sign): misfit that is constant or linear along that factor cancels
-    (an offset per load direction, a stiffness error growing with the load, a friction term set by the
-    normal load).  Tried along each continuous factor with four or more levels; the smallest estimate is kept
-    (structure only adds).  Gaussian noise: var(e1 - 2 e2 + e3) = 6 sigma^2; median-absolute-deviation form."""
+    """Noise from second differences of the residual along one continuous factor, within rows that
+    share every other factor (and the factor's sign): misfit that is constant or linear along that
+    factor cancels (an offset per load direction, a stiffness error growing with the load, a
+    friction term set by the normal load).  Tried along each continuous factor with four or more
+    levels; the smallest estimate is kept (structure only adds).  Gaussian noise: var(e1 - 2 e2 +
+    e3) = 6 sigma^2; median-absolute-deviation form."""
     names = list(o.factors)
     if not names:
         return None, ""
@@ -113,7 +115,8 @@ class TableUnexplained:
 
     @property
     def remaining(self) -> list:
-        """Significant probes, largest share first -- only when the misfit exceeds the noise floor."""
+        """Significant probes, largest share first -- only when the misfit exceeds the noise
+        floor."""
         if self.rms < UNEXPLAINED_RMS:
             return []
         return sorted([p for p in self.probes if p.significant], key=lambda p: -p.share)
@@ -125,8 +128,9 @@ UNEXPLAINED_RMS = 1.5
 
 def table_unexplained(obs, resid_w, effects=()) -> list:
     """Test the final residual of every test for structure along its recorded factors (see
-    :mod:`.residual`): the share of the residual variance each factor's levels hold, its significance; for
-    friction data the velocity dependence's shape (v|v|, v, low-speed rise, direction)."""
+    :mod:`.residual`): the share of the residual variance each factor's levels hold, its
+    significance; for friction data the velocity dependence's shape (v|v|, v, low-speed rise,
+    direction)."""
     out = []
     for o, r in zip(obs, resid_w):
         r = np.asarray(r, dtype=float)
@@ -146,8 +150,7 @@ def table_unexplained(obs, resid_w, effects=()) -> list:
             if np.ptp(np.sign(v)) > 0:
                 shapes.update({"|v|": np.abs(v), "sgn": np.sign(v)})
             # the shapes are compared after what the model already fits along velocity: its Coulomb
-            # level, and
-            # its viscous slope when the viscous effect is in the model
+            # level, and its viscous slope when the viscous effect is in the model
             W = np.column_stack(
                 [np.sign(v), v] if "viscous" in [e.name for e in effects] else [np.sign(v)]
             )
@@ -168,7 +171,8 @@ def table_unexplained(obs, resid_w, effects=()) -> list:
 
 
 def table_signature(p, disp) -> tuple:
-    """(what, causes, measurement) of a table probe; ``disp(name, value)`` formats a factor level."""
+    """(what, causes, measurement) of a table probe; ``disp(name, value)`` formats a factor
+    level."""
     d = p.detail
     lo, hi = d.get("worst", (0.0, 0.0))
     where = f" (largest at {disp(p.kind, lo)}" + (f"..{disp(p.kind, hi)})" if hi != lo else ")")
@@ -189,24 +193,23 @@ def table_signature(p, disp) -> tuple:
 
 
 # Factors of a friction test whose friction follows the direction of motion (a load or temperature
-# raises the
-# friction both ways, so the signed residual changes sign with v): their level means are taken of
-# sgn(v) r,
-# or the two directions would average the effect away.
+# raises the friction both ways, so the signed residual changes sign with v): their level means are
+# taken of sgn(v) r, or the two directions would average the effect away.
 SIGNED_FACTORS = ("axial_load", "normal_load", "temperature")
 
 
 def signed(o: Obs, name: str, r: np.ndarray) -> np.ndarray:
-    """The residual as a factor's level means should see it: times sgn(v) for the friction test's loads and
-    temperature (:data:`SIGNED_FACTORS`), as it is otherwise."""
+    """The residual as a factor's level means should see it: times sgn(v) for the friction test's
+    loads and temperature (:data:`SIGNED_FACTORS`), as it is otherwise."""
     if o.kind == "friction" and name in SIGNED_FACTORS:
         return r * np.sign(o.feature("velocity"))
     return r
 
 
 def residual_table(o: Obs, resid: np.ndarray, max_bins: int = 6) -> list:
-    """Where misfit concentrates: for every recorded factor, the share of residual variance explained by
-    its levels (eta^2), the worst level and its RMS.  ``resid`` = prediction - y (SI)."""
+    """Where misfit concentrates: for every recorded factor, the share of residual variance
+    explained by its levels (eta^2), the worst level and its RMS.  ``resid`` = prediction - y
+    (SI)."""
     unit, f = Y_UNIT[o.kind]
     r = resid * f
     # misfit in compliance: a wrong stiffness would otherwise just track |F|

@@ -1,39 +1,45 @@
-"""Design changes that make an infeasible problem feasible, proposed before any limit is relaxed, each verified by
-a search on the changed problem (:func:`design_changes`).
+"""Design changes that make an infeasible problem feasible, proposed before any limit is relaxed,
+each verified by a search on the changed problem (:func:`design_changes`).
 
 The kinds of change, each offered only where the closest designs' misses call for it:
 
-- **a budget or mass raised**: no combination meets ``max_cost`` (or a mass limit) on its own, or every closest
-  design misses it: the least value at which the catalogs hold a design meeting every other limit (the budget by
-  its own least-cost search, :mod:`.budget`; a mass bisected toward the closest designs' need), first of all;
-- **another mounting, or parts a catalog filter left out** (:mod:`.widen`): the mounting, vendor, series, type,
-  grade or part id to add to the problem's ``catalog:`` section, with the axis as asked, before any axis value
-  is lowered (a search per group of filters, counted in :data:`BUDGET`);
-- **rapid speed** lowered: a margin of a speed check (critical speed, DN, the support bearings', the motor's,
-  coupling's, reduction's or rotating-nut unit's speed: available / needed >= L) needs the speed it is short of
-  in proportion: a design that reaches L (1 - m) meets L at the rapid speed times (1 - m);
-- **acceleration** lowered: a torque check of the motor or reduction is short of torque, a lift-off check of the
-  nut or support bearings short of preload against the largest axial force, both of which the acceleration sets
-  with the mass: the acceleration is lowered by the same factor (more than is needed, since the friction, the
-  weight and the process force do not scale with it);
-- **a reduction admitted**: the problem's ``max_backlash`` left every gearbox and belt out, and the closest
-  designs miss the inertia ratio, a torque or a motor speed, which a reduction changes by its ratio: the
-  least lost motion at the table that admits the least-backlash reduction on every screw of the catalogs;
-- **a counterbalance** on a vertical axis whose closest designs miss a torque, a lift-off or a life: a balance
-  cylinder taking :data:`BALANCE_SHARE` of the head's weight where there is none, or the counterweight or
-  cylinder raised to that share (a design rule of thumb, an estimate: docs/assumptions.md);
-- **the user's own limits** (cost, stiffness, mass, positioning error, ...: :data:`axisopt.model.limits.LIMITS`)
-  the closest designs miss, last, with the speed or acceleration change on top where the misses call for one:
-  each set to what the first design a search finds without them reaches (rounded outward), so that every vendor
-  rule holds as the vendor wrote it (:func:`_limits_step`; the vendor margins are relaxed only in the list that
-  follows the advice, :mod:`.relax`, never below 0.95).
+- **a budget or mass raised**: no combination meets ``max_cost`` (or a mass limit) on its own, or
+  every closest design misses it: the least value at which the catalogs hold a design meeting every
+  other limit (the budget by its own least-cost search, :mod:`.budget`; a mass bisected toward the
+  closest designs' need), first of all;
+- **another mounting, or parts a catalog filter left out** (:mod:`.widen`): the mounting, vendor,
+  series, type, grade or part id to add to the problem's ``catalog:`` section, with the axis as
+  asked, before any axis value is lowered (a search per group of filters, counted in
+  :data:`BUDGET`);
+- **rapid speed** lowered: a margin of a speed check (critical speed, DN, the support bearings', the
+  motor's, coupling's, reduction's or rotating-nut unit's speed: available / needed >= L) needs the
+  speed it is short of in proportion: a design that reaches L (1 - m) meets L at the rapid speed
+  times (1 - m);
+- **acceleration** lowered: a torque check of the motor or reduction is short of torque, a lift-off
+  check of the nut or support bearings short of preload against the largest axial force, both of
+  which the acceleration sets with the mass: the acceleration is lowered by the same factor (more
+  than is needed, since the friction, the weight and the process force do not scale with it);
+- **a reduction admitted**: the problem's ``max_backlash`` left every gearbox and belt out, and the
+  closest designs miss the inertia ratio, a torque or a motor speed, which a reduction changes by
+  its ratio: the least lost motion at the table that admits the least-backlash reduction on every
+  screw of the catalogs;
+- **a counterbalance** on a vertical axis whose closest designs miss a torque, a lift-off or a life:
+  a balance cylinder taking :data:`BALANCE_SHARE` of the head's weight where there is none, or the
+  counterweight or cylinder raised to that share (a design rule of thumb, an estimate:
+  docs/assumptions.md);
+- **the user's own limits** (cost, stiffness, mass, positioning error, ...:
+  :data:`axisopt.model.limits.LIMITS`) the closest designs miss, last, with the speed or
+  acceleration change on top where the misses call for one: each set to what the first design a
+  search finds without them reaches (rounded outward), so that every vendor rule holds as the vendor
+  wrote it (:func:`_limits_step`; the vendor margins are relaxed only in the list that follows the
+  advice, :mod:`.relax`, never below 0.95).
 
-Single changes are tried first (the speed and acceleration once more 10 % further), then each structural
-change (reduction, counterbalance) with the speed and acceleration changes on top: the first that a search
-verifies is the advice.  A verifying search is the default method's, stopped at its first feasible design (no
-optimum, no explanation); the whole advice stops after :data:`BUDGET` of them (an answer within the 2 s of an
-infeasible one, bench/bench_axes.py).  Values are rounded to three significant figures, down for what is lowered and
-up for what is raised.
+Single changes are tried first (the speed and acceleration once more 10 % further), then each
+structural change (reduction, counterbalance) with the speed and acceleration changes on top: the
+first that a search verifies is the advice.  A verifying search is the default method's, stopped at
+its first feasible design (no optimum, no explanation); the whole advice stops after :data:`BUDGET`
+of them (an answer within the 2 s of an infeasible one, bench/bench_axes.py).  Values are rounded to
+three significant figures, down for what is lowered and up for what is raised.
 """
 
 from __future__ import annotations
@@ -51,17 +57,16 @@ from .answer import DesignChange
 from .widen import first_design, first_feasible, widened
 
 # the checks whose needed value the rapid speed, the acceleration, the weight or a reduction's ratio
-# sets
-# (model.limits.CHECK_TABLE's set_by), as the advice's miss names (margin_<check> without margin_)
+# sets (model.limits.CHECK_TABLE's set_by), as the advice's miss names (margin_<check> without
+# margin_)
 SPEED_CHECKS = checks_set_by(SPEED)
 ACCEL_CHECKS = checks_set_by(ACCEL)  # the motor and reduction torques, the nut and bearing lift-off
 # the axis values lowered: (key, display unit, display per SI, the checks whose misses set the
 # factor)
 SCALARS = (("max_speed", "m/min", 60.0, SPEED_CHECKS), ("acceleration", "m/s^2", 1.0, ACCEL_CHECKS))
 # the process's axial load sets the largest axial force with the acceleration: the nut's and support
-# bearings'
-# lift-off and static checks (the advice's last resort before the user's own limits, with speed and
-# acceleration)
+# bearings' lift-off and static checks (the advice's last resort before the user's own limits, with
+# speed and acceleration)
 LOAD_CHECKS = frozenset({"nut_lift_off", "bearing_lift_off", "nut_static", "bearing_static"})
 # a reduction's ratio scales the reflected inertia, the torque and the motor speed
 REDUCTION_CHECKS = checks_set_by(RATIO)
@@ -70,8 +75,7 @@ REDUCTION_CHECKS = checks_set_by(RATIO)
 BALANCE_CHECKS = checks_set_by(WEIGHT)
 BALANCE_LIMITS = frozenset({"min_life"})
 # the share of the head's weight a proposed counterbalance takes: an estimate (machine builders
-# balance 80-100 %
-# of the weight; the shipped balanced Zs take 83 and 90 %)
+# balance 80-100 % of the weight; the shipped balanced Zs take 83 and 90 %)
 BALANCE_SHARE = 0.9
 FURTHER = 0.9  # the second proposal of a speed or acceleration: 10 % below the first
 # a budget or mass limit every closest design misses: raised (bisected) before any other change
@@ -95,7 +99,8 @@ def _round(x: float, up: bool = False) -> float:
 
 
 def _misses(constraints, infeasibility) -> list[dict]:
-    """Per closest design: {check or limit name: relative miss} (a margin's name without ``margin_``)."""
+    """Per closest design: {check or limit name: relative miss} (a margin's name without
+    ``margin_``)."""
     by_label = {c.label: c for c in constraints}
     out = []
     for cand in infeasibility.closest:
@@ -109,16 +114,18 @@ def _misses(constraints, infeasibility) -> list[dict]:
 
 
 def _factor(misses, checks) -> float | None:
-    """1 - the largest miss among ``checks`` of the closest design that misses them most (the largest change any
-    closest design needs; the search verifies it), None when no closest design misses one."""
+    """1 - the largest miss among ``checks`` of the closest design that misses them most (the
+    largest change any closest design needs; the search verifies it), None when no closest design
+    misses one."""
     need = [max(m for k, m in d.items() if k in checks) for d in misses if checks & d.keys()]
     f = [1.0 - m for m in need if 0.0 < 1.0 - m < 1.0]
     return min(f) if f else None
 
 
 def _with(axis, key: str, to: float):
-    """``axis`` with ``key`` (max_speed, acceleration or axial_load) lowered to ``to``, and the duty cycle's moves
-    capped at it (a move's speed, acceleration or force left out in the YAML is the axis's, filled in when read)."""
+    """``axis`` with ``key`` (max_speed, acceleration or axial_load) lowered to ``to``, and the duty
+    cycle's moves capped at it (a move's speed, acceleration or force left out in the YAML is the
+    axis's, filled in when read)."""
     field = {"max_speed": "speed", "acceleration": "acceleration", "axial_load": "force"}[key]
 
     def cap(v):
@@ -153,8 +160,9 @@ def _scalar_step(problem, key, unit, scale, factor) -> _Step | None:
 
 
 def _reduction_step(problem, misses, space) -> _Step | None:
-    """Admit the reductions the problem's max_backlash left out of ``space`` (parts: lost motion = backlash x lead
-    / 2 pi at the table), when the closest designs miss what a reduction's ratio changes."""
+    """Admit the reductions the problem's max_backlash left out of ``space`` (parts: lost motion =
+    backlash x lead / 2 pi at the table), when the closest designs miss what a reduction's ratio
+    changes."""
     from ..parts import build_space
 
     if not space.reductions_by_backlash or not any(REDUCTION_CHECKS & d.keys() for d in misses):
@@ -192,8 +200,8 @@ def _reduction_step(problem, misses, space) -> _Step | None:
 
 
 def _balance_step(problem, misses, constraints) -> _Step | None:
-    """A vertical axis: a balance cylinder taking BALANCE_SHARE of the head's weight, or the counterbalance raised
-    to it, when the closest designs miss what the weight sets."""
+    """A vertical axis: a balance cylinder taking BALANCE_SHARE of the head's weight, or the
+    counterbalance raised to it, when the closest designs miss what the weight sets."""
     a = problem.axis
     names = {c.name for c in constraints}
     if a.orientation != "vertical" or problem.arrangements:
@@ -231,23 +239,24 @@ def _balance_step(problem, misses, constraints) -> _Step | None:
 
 
 def _feasible(problem, space=None) -> bool:
-    """Whether the catalogs hold a design of ``problem`` (:func:`.widen.first_design`: the default search, stopped
-    at its first feasible design); ``space``: its search space when the change left the parts as they were (a
-    limit, not the axis)."""
+    """Whether the catalogs hold a design of ``problem`` (:func:`.widen.first_design`: the default
+    search, stopped at its first feasible design); ``space``: its search space when the change left
+    the parts as they were (a limit, not the axis)."""
     return first_design(problem, space) is not None
 
 
 def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) -> list:
-    """The least value of the budget or mass limit ``name`` (max_cost, max_total_mass, max_moving_mass) at which
-    the catalogs hold a design meeting every other limit, when no combination meets the limit on its own (the
-    explanation's single-limit check) or every closest design misses it; [] otherwise, or when none is found.
-    Rounded up to three significant figures.  A budget or mass limit leaves the parts as they are: every search
-    reuses ``space``.
+    """The least value of the budget or mass limit ``name`` (max_cost, max_total_mass,
+    max_moving_mass) at which the catalogs hold a design meeting every other limit, when no
+    combination meets the limit on its own (the explanation's single-limit check) or every closest
+    design misses it; [] otherwise, or when none is found.  Rounded up to three significant figures.
+    A budget or mass limit leaves the parts as they are: every search reuses ``space``.
 
     The budget: the least cost of a design meeting every other limit, found by its own search
-    (:func:`.budget.least_cost`, proven least), apart from the closest designs (which the miss sum ranks, and which
-    an explanation cut short leaves poor).  A mass: the closest designs' need first (the limit times one plus their
-    largest miss of it, verified), then halved toward the limit :data:`BISECT` times."""
+    (:func:`.budget.least_cost`, proven least), apart from the closest designs (which the miss sum
+    ranks, and which an explanation cut short leaves poor).  A mass: the closest designs' need first
+    (the limit times one plus their largest miss of it, verified), then halved toward the limit
+    :data:`BISECT` times."""
     from .budget import least_cost
 
     c = next((c for c in constraints if c.name == name), None)
@@ -299,13 +308,14 @@ def _raise_limit(problem, constraints, infeasibility, misses, name: str, space) 
 
 
 def _limits_step(problem, constraints, misses, combos, budget: int) -> list:
-    """The user's own limits the closest designs miss, set to what a design reaches, on top of each change of
-    ``combos`` (tuples of :class:`_Step`, the empty one first) in turn, with the screw's other mountings admitted
-    (a mounting the design needs is added to ``catalog.mountings``): the first design the default search finds
-    with those limits left out gives each limit's new value (rounded outward to three significant figures), and a
-    search on the problem so changed verifies it.  [] when the misses name no such limit, or no design is found
-    within ``budget`` searches.  The design the search finds is the verification: it meets every vendor check and
-    the other limits, and the limits at their new values (its own values, rounded outward)."""
+    """The user's own limits the closest designs miss, set to what a design reaches, on top of each
+    change of ``combos`` (tuples of :class:`_Step`, the empty one first) in turn, with the screw's
+    other mountings admitted (a mounting the design needs is added to ``catalog.mountings``): the
+    first design the default search finds with those limits left out gives each limit's new value
+    (rounded outward to three significant figures), and a search on the problem so changed verifies
+    it.  [] when the misses name no such limit, or no design is found within ``budget`` searches.
+    The design the search finds is the verification: it meets every vendor check and the other
+    limits, and the limits at their new values (its own values, rounded outward)."""
     from ..candidates import make_candidate
     from ..task.objective import objective_spec
     from .widen import design_edits, with_edits
@@ -347,9 +357,8 @@ def _limits_step(problem, constraints, misses, combos, budget: int) -> list:
             )
         else:
             # the design found is the witness: it meets every vendor check and the other limits (the
-            # search), and
-            # these limits as rounded outward (its own values); tests/search/test_unseen_axes.py re-
-            # solves
+            # search), and these limits as rounded outward (its own values);
+            # tests/search/test_unseen_axes.py re-solves
             return [ch for step in combo for ch in step.changes] + edits + rows
     return []
 
@@ -364,10 +373,11 @@ def design_changes(
     deadline: float | None = None,
     cut: list | None = None,
 ) -> list:
-    """The changes (:class:`.answer.DesignChange`, to be made together) that make ``problem`` feasible, verified
-    by a search; empty when no kind applies, none is verified or the budget is spent.  ``space``: the problem's
-    search space, if built.  ``deadline`` (a time.perf_counter() value): no verifying search runs past it (one it
-    cuts finds nothing); ``cut``, a list: True is appended when it cut one."""
+    """The changes (:class:`.answer.DesignChange`, to be made together) that make ``problem``
+    feasible, verified by a search; empty when no kind applies, none is verified or the budget is
+    spent.  ``space``: the problem's search space, if built.  ``deadline`` (a time.perf_counter()
+    value): no verifying search runs past it (one it cuts finds nothing); ``cut``, a list: True is
+    appended when it cut one."""
     from .widen import CUT, DEADLINE
 
     if deadline is not None and time.perf_counter() >= deadline:
@@ -403,8 +413,7 @@ def _design_changes(problem, constraints, infeasibility, budget: int, space) -> 
         return edits
     budget -= used
     # the speed and the acceleration as the closest designs' misses say, and one step further each
-    # (their misses
-    # are at one preload and one screw: another may need more)
+    # (their misses are at one preload and one screw: another may need more)
     factors = [(key, unit, scale, _factor(misses, checks)) for key, unit, scale, checks in SCALARS]
     speed, accel = (_scalar_step(problem, k, u, sc, f) for k, u, sc, f in factors)
     further = [_scalar_step(problem, k, u, sc, f and f * FURTHER) for k, u, sc, f in factors]
@@ -426,14 +435,12 @@ def _design_changes(problem, constraints, infeasibility, budget: int, space) -> 
         if _feasible(changed):
             return [c for step in combo for c in step.changes]
     # last, the user's own limits, with the speed and acceleration changes on top where the misses
-    # call for them,
-    # and then the process's axial load lowered with the acceleration (a lighter cut: lift-off,
-    # static checks)
+    # call for them, and then the process's axial load lowered with the acceleration (a lighter cut:
+    # lift-off, static checks)
     f_load = _factor(misses, LOAD_CHECKS)
     load = _scalar_step(problem, "axial_load", "N", 1.0, f_load and f_load * FURTHER)
     # the limits alone, then with the speed and acceleration as the misses say, then one step
-    # further with the
-    # lighter cut (each one search)
+    # further with the lighter cut (each one search)
     both = tuple(s for s in (speed, accel) if s)
     far = tuple(s for s in further if s) + ((load,) if load else ())
     combos = [c for c in (both, far) if c]

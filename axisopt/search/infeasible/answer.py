@@ -1,6 +1,7 @@
-"""The answer to an infeasible problem as plain data (JSON-ready through ``to_dict``): the limits no combination
-meets and the closest designs (:class:`Infeasibility`), what to relax for each (:class:`Relaxation`) and a
-verified change of the axis or a part (:class:`DesignChange`).  The modules beside it compute them."""
+"""The answer to an infeasible problem as plain data (JSON-ready through ``to_dict``): the limits no
+combination meets and the closest designs (:class:`Infeasibility`), what to relax for each
+(:class:`Relaxation`) and a verified change of the axis or a part (:class:`DesignChange`).  The
+modules beside it compute them."""
 
 from __future__ import annotations
 
@@ -11,11 +12,11 @@ from ...display import fmt, frame, json_value, one_line
 
 @dataclass(frozen=True)
 class DesignChange:
-    """An input changed (search.advice) after which the catalogs hold a design: ``key`` (``axis.max_speed``),
-    its unit, the value and the proposed one in that unit, and what it means where the key does not say it
-    (``note``: 'admits a gearbox or belt ...'); or a list of the ``catalog:`` section edited (search.widen):
-    ``edit`` 'add' (``values`` added to the list at ``key``) or 'remove' (taken out of it), ``value`` and ``to``
-    NaN."""
+    """An input changed (search.advice) after which the catalogs hold a design: ``key``
+    (``axis.max_speed``), its unit, the value and the proposed one in that unit, and what it means
+    where the key does not say it (``note``: 'admits a gearbox or belt ...'); or a list of the
+    ``catalog:`` section edited (search.widen): ``edit`` 'add' (``values`` added to the list at
+    ``key``) or 'remove' (taken out of it), ``value`` and ``to`` NaN."""
 
     key: str  # the input, e.g. 'axis.max_speed', 'catalog.mountings'
     unit: str  # its display unit (m/min, kg, ...; '' for a list)
@@ -38,7 +39,8 @@ class DesignChange:
 
 @dataclass
 class Relaxation:
-    """A limit to relax so that a design becomes feasible (:func:`axisopt.search.infeasible.relax.rank_relaxations`)."""
+    """A limit to relax so that a design becomes feasible
+    (:func:`axisopt.search.infeasible.relax.rank_relaxations`)."""
 
     # where it sits in the problem file, e.g. 'limits.max_cost', 'limits.margins.critical_speed'
     key: str
@@ -70,11 +72,9 @@ class Infeasibility:
     unmeetable: list
     closest: list  # list[Candidate] with .misses filled
     # what to relax: list[Relaxation], smallest change first, all for one design (search.relax); the
-    # closest
-    # designs left out because they break a compatibility rule: [(rank, [rules])]; and when every
-    # closest
-    # design breaks one, the rules the proposed design breaks (relaxing the limits is then not
-    # enough)
+    # closest designs left out because they break a compatibility rule: [(rank, [rules])]; and when
+    # every closest design breaks one, the rules the proposed design breaks (relaxing the limits is
+    # then not enough)
     relax: list = field(default_factory=list)
     not_relaxable: list = field(default_factory=list)
     relax_blocked_by: list = field(default_factory=list)
@@ -82,16 +82,14 @@ class Infeasibility:
     # any relaxation
     design_changes: list = field(default_factory=list)
     # checks the closest designs fail because a catalog row gives no value
-    # (search.relax.missing_values): what to
-    # give or choose instead, one sentence per check (never a margin relaxed to 0)
+    # (search.relax.missing_values): what to give or choose instead, one sentence per check (never a
+    # margin relaxed to 0)
     missing: list = field(default_factory=list)
     # the explanation stopped before every block was scored (at the time limit, or after
-    # explain.MAX_OPENED
-    # combinations where a limit no combination meets makes every design miss, or after
-    # explain.MAX_WORK model
-    # evaluations): the closest designs are those found by then, the unmeetable limits' best values
-    # those reached by
-    # then (the least cost exact); ``cut_by`` says which: 'time', 'opened' or 'work' ('' : not cut)
+    # explain.MAX_OPENED combinations where a limit no combination meets makes every design miss, or
+    # after explain.MAX_WORK model evaluations): the closest designs are those found by then, the
+    # unmeetable limits' best values those reached by then (the least cost exact); ``cut_by``
+    # says which: 'time', 'opened' or 'work' ('' : not cut)
     cut: bool = False
     cut_by: str = ""
 
@@ -118,9 +116,9 @@ class Infeasibility:
         return frame([c.row() for c in self.closest])
 
     def deciding(self, most: int = 3) -> str:
-        """The misses that decide, one clause: the limits no combination meets (with the best any reaches), else
-        what the closest design misses and by how much (at most ``most`` named); what an infeasible answer and a
-        study's reason lead with, before any note."""
+        """The misses that decide, one clause: the limits no combination meets (with the best any
+        reaches), else what the closest design misses and by how much (at most ``most`` named); what
+        an infeasible answer and a study's reason lead with, before any note."""
         if self.unmeetable:
             shown = [
                 f"{n} (limit {fmt(v, u)}, best any reaches {fmt(b, u)})"

@@ -1,21 +1,25 @@
-"""The least budget at which the catalogs hold a design meeting every other limit (:func:`least_cost`): the advice
-of an impossible ``max_cost`` (:mod:`.advice`), found apart from the explanation's closest designs.
+"""The least budget at which the catalogs hold a design meeting every other limit
+(:func:`least_cost`): the advice of an impossible ``max_cost`` (:mod:`.advice`), found apart from
+the explanation's closest designs.
 
-A best-first search over blocks of combinations like the default method's (:mod:`.bestfirst`), with the cost as
-the objective (minimised) and the problem's ``max_cost`` left out:
+A best-first search over blocks of combinations like the default method's (:mod:`.bestfirst`), with
+the cost as the objective (minimised) and the problem's ``max_cost`` left out:
 
-1. every (mounting, nut, bearing) block gets a lower bound of its combinations' cost (the cheapest guide with
-   the cheapest drive, :func:`.bounds.block_bounds` on the objective -cost) and a test of the mechanical limits;
-2. blocks are screened in increasing bound (:func:`.screen.screen_nuts`, with the cost capped at the cheapest
-   design found so far, which prunes the drives per block: :func:`.drivebounds.least_cost`), the survivors'
-   costs computed exactly (the cost reads no preload: a sum of part prices, :func:`axisopt.model.cost.cost`);
-3. the cheapest survivors are solved exactly (:func:`.preload.exact_solve`, every other limit) whenever they
-   cost no more than the next block's bound, or no design is known yet; the search stops when no block or
-   survivor left could cost less than the cheapest feasible design found.  The answer is proven least (the
-   bounds are exact or below).
+1. every (mounting, nut, bearing) block gets a lower bound of its combinations' cost (the cheapest
+   guide with the cheapest drive, :func:`.bounds.block_bounds` on the objective -cost) and a test of
+   the mechanical limits;
+2. blocks are screened in increasing bound (:func:`.screen.screen_nuts`, with the cost capped at the
+   cheapest design found so far, which prunes the drives per block:
+   :func:`.drivebounds.least_cost`), the survivors' costs computed exactly (the cost reads
+   no preload: a sum of part prices, :func:`axisopt.model.cost.cost`);
+3. the cheapest survivors are solved exactly (:func:`.preload.exact_solve`, every other limit)
+   whenever they cost no more than the next block's bound, or no design is known yet; the search
+   stops when no block or survivor left could cost less than the cheapest feasible design found.
+   The answer is proven least (the bounds are exact or below).
 
-The work is counted, not timed: at most :data:`MAX_BLOCKS` blocks are screened (the same answer on any machine);
-a search cut there returns the cheapest design found by then, not proven least, or None.
+The work is counted, not timed: at most :data:`MAX_BLOCKS` blocks are screened (the same answer on
+any machine); a search cut there returns the cheapest design found by then, not proven least, or
+None.
 """
 
 from __future__ import annotations
@@ -45,10 +49,10 @@ def _costs(space, idx) -> np.ndarray:
 
 
 def least_cost(problem, space, max_blocks: int = MAX_BLOCKS) -> tuple[float, int, bool] | None:
-    """(the least cost [EUR] of a design meeting every limit of ``problem`` but ``max_cost``, its combination
-    number, whether it is proven least), or None when the catalogs hold no such design (or the search was cut
-    before it found one; module docstring).  ``space``: the problem's search space (a limit leaves the parts as
-    they are)."""
+    """(the least cost [EUR] of a design meeting every limit of ``problem`` but ``max_cost``, its
+    combination number, whether it is proven least), or None when the catalogs hold no such design
+    (or the search was cut before it found one; module docstring).  ``space``: the problem's search
+    space (a limit leaves the parts as they are)."""
     free = problem.with_limit("max_cost", None)
     cons = build_constraints(free)
     blocks = block_bounds(space, cons, LEAST_COST)
@@ -72,8 +76,8 @@ def least_cost(problem, space, max_blocks: int = MAX_BLOCKS) -> tuple[float, int
         if min(nxt, cheapest) >= best:  # nothing left could cost less (inf: nothing left at all)
             return (float(best), int(best_idx), True) if best_idx >= 0 else None
         # the cheapest survivors, solved exactly: as soon as there are some while no design is known
-        # (its cost
-        # then caps the screening), else when they cost no more than the next block's bound
+        # (its cost then caps the screening), else when they cost no more than the next block's
+        # bound
         if len(pool_cost) and (cheapest <= nxt or best == np.inf):
             take = np.argsort(pool_cost, kind="stable")[:batch]
             batch *= 2

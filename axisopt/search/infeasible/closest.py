@@ -1,5 +1,5 @@
-"""The closest designs of an infeasible problem as candidates: each combination the explanation ranks closest,
-at its best preload, with its misses (:func:`closest_designs`)."""
+"""The closest designs of an infeasible problem as candidates: each combination the explanation
+ranks closest, at its best preload, with its misses (:func:`closest_designs`)."""
 
 from __future__ import annotations
 
@@ -11,8 +11,9 @@ from ..task.space import Space, respond
 
 
 def closest_designs(space: Space, constraints, objective, combos) -> list:
-    """The candidates of ``combos`` (ranked 1, 2, ...), each at the preload that minimises its total miss on a
-    grid of its allowed range (one model evaluation per mounting for all of them), with their misses."""
+    """The candidates of ``combos`` (ranked 1, 2, ...), each at the preload that minimises its total
+    miss on a grid of its allowed range (one model evaluation per mounting for all of them), with
+    their misses."""
     G = 33
     pre = np.zeros(len(combos))
     parts = [tuple(int(v) for v in space.unravel(int(c))) for c in combos]

@@ -1,22 +1,22 @@
 """Why a problem is infeasible: limits no combination meets, and the closest designs.
 
-Each limit is taken on its own at its most favourable allowed preload end; a limit no (fitting) combination
-meets is reported with the best value any combination reaches, and the closest designs minimise the sum of
-relative misses (:func:`miss_scores`).
+Each limit is taken on its own at its most favourable allowed preload end; a limit no (fitting)
+combination meets is reported with the best value any combination reaches, and the closest designs
+minimise the sum of relative misses (:func:`miss_scores`).
 
 Two ways to the same answer:
 
-* *best-first over blocks* (default method): every (mounting, nut, bearing) block -- all its guides and
-  drives -- gets the best value any of its combinations could reach on each limit, and so a lower bound of
-  its combinations' miss scores: for the mechanical limits from one evaluation with the optimistic guide of
-  each guide type (:func:`.bounds.optimistic_guide_params`); for the drive's (motor and coupling checks,
-  inertia ratio), which the optimistic guide does not bound (less friction can raise a deceleration
-  torque), from the drive block evaluated in interval arithmetic (:mod:`.interval`) per drive pair over the
-  range of moving mass and drag torque the block's guides give (:func:`drive_optimism`).  Blocks are scored
-  one by one only while they could still improve a limit's best value, meet a limit not met yet, or hold
-  one of the closest designs.
-* *every combination* (exhaustive method, and the reference of the tests): :func:`miss_scores` over the
-  whole product.
+* *best-first over blocks* (default method): every (mounting, nut, bearing) block -- all its guides
+  and drives -- gets the best value any of its combinations could reach on each limit, and so a
+  lower bound of its combinations' miss scores: for the mechanical limits from one evaluation with
+  the optimistic guide of each guide type (:func:`.bounds.optimistic_guide_params`); for the drive's
+  (motor and coupling checks, inertia ratio), which the optimistic guide does not bound (less
+  friction can raise a deceleration torque), from the drive block evaluated in interval arithmetic
+  (:mod:`.interval`) per drive pair over the range of moving mass and drag torque the block's guides
+  give (:func:`drive_optimism`).  Blocks are scored one by one only while they could still improve a
+  limit's best value, meet a limit not met yet, or hold one of the closest designs.
+* *every combination* (exhaustive method, and the reference of the tests): :func:`miss_scores` over
+  the whole product.
 """
 
 from __future__ import annotations
@@ -46,30 +46,21 @@ from .optimism import (
 
 CLOSEST = 5
 # A limit that no combination meets on its own (the block bounds show it: a budget below the
-# cheapest parts) adds
-# its miss to every design's score, so the scores lie close together and the bounds leave many
-# blocks open: the
-# best-first explanation then stops once the blocks it scored hold this many combinations (a count
-# of work, not a
-# time: the same answer on any machine; Infeasibility.cut).  The shipped infeasible examples score
-# 20 000 and
-# 6 300; a lathe Z with a budget of a quarter of its cheapest combination would score 580 M in 1 400
-# blocks
-# (35 s): it stops after 10 of its blocks of 420 000 (guides x drives)
+# cheapest parts) adds its miss to every design's score, so the scores lie close together and the
+# bounds leave many blocks open: the best-first explanation then stops once the blocks it scored
+# hold this many combinations (a count of work, not a time: the same answer on any machine;
+# Infeasibility.cut).  The shipped infeasible examples score 20 000 and 6 300; a lathe Z with a
+# budget of a quarter of its cheapest combination would score 580 M in 1 400 blocks (35 s): it stops
+# after 10 of its blocks of 420 000 (guides x drives)
 MAX_OPENED = 4_000_000
 # The best-first explanation's work in any case: it stops once it has made this many model
-# evaluations
-# (combinations x nut positions, at each preload end and, for the stiffness chain, each coupling
-# stiffness; a count,
-# not a time: the same answer on any machine; Infeasibility.cut).  Where the bounds are weak (every
-# limit met by
-# some combination, the closest designs missing several by a few per cent) the explanation otherwise
-# scores block
-# after block until the time limit: a generated 6 m twin-drive gantry of 2 x 10^10 combinations
-# scored 18 blocks
-# of 330 000 in 100 s (its closest designs settled after the fourth, 7.2 M evaluations; issue 52).
-# The shipped
-# infeasible examples make 0.2 M (infeasible_drive_problem) and 2.5 M (infeasible_problem).
+# evaluations (combinations x nut positions, at each preload end and, for the stiffness chain, each
+# coupling stiffness; a count, not a time: the same answer on any machine; Infeasibility.cut).
+# Where the bounds are weak (every limit met by some combination, the closest designs missing
+# several by a few per cent) the explanation otherwise scores block after block until the
+# time limit: a generated 6 m twin-drive gantry of 2 x 10^10 combinations scored 18 blocks of 330
+# 000 in 100 s (its closest designs settled after the fourth, 7.2 M evaluations; issue 52).  The
+# shipped infeasible examples make 0.2 M (infeasible_drive_problem) and 2.5 M (infeasible_problem).
 MAX_WORK = 8_000_000
 
 
@@ -80,7 +71,8 @@ BOUND_RTOL = 1e-9  # slack on the block bounds (rounding of the same sums in ano
 
 
 class _Tally:
-    """Per limit: whether any fitting combination meets it, and the best value any combination reaches."""
+    """Per limit: whether any fitting combination meets it, and the best value any combination
+    reaches."""
 
     def __init__(self, constraints):
         self.best = {c.name: None for c in constraints}
@@ -126,14 +118,15 @@ def explain_infeasible(
     max_opened: int | None = MAX_OPENED,
     max_work: int | None = MAX_WORK,
 ) -> Infeasibility:
-    """Limits no combination meets (with the best value any reaches) and the ``n_closest`` designs of
-    lowest miss score (ties: lowest combination number).  Best-first over blocks unless
-    ``every_combination`` (module docstring); both give the same answer.  ``deadline`` (a time.perf_counter()
-    value): the explanation stops there with the closest designs found so far (``Infeasibility.cut``); so does the
-    best-first one, when the block bounds show a limit that no combination meets on its own, once the blocks it
-    scored hold ``max_opened`` combinations (None: no such limit; see :data:`MAX_OPENED`), and in any case once it
-    has made ``max_work`` model evaluations (:data:`MAX_WORK`; None: no bound).  ``Infeasibility.cut_by`` says
-    which stopped it: 'time', 'opened' or 'work'."""
+    """Limits no combination meets (with the best value any reaches) and the ``n_closest`` designs
+    of lowest miss score (ties: lowest combination number).  Best-first over blocks unless
+    ``every_combination`` (module docstring); both give the same answer.  ``deadline`` (a
+    time.perf_counter() value): the explanation stops there with the closest designs found so far
+    (``Infeasibility.cut``); so does the best-first one, when the block bounds show a limit that no
+    combination meets on its own, once the blocks it scored hold ``max_opened`` combinations (None:
+    no such limit; see :data:`MAX_OPENED`), and in any case once it has made ``max_work`` model
+    evaluations (:data:`MAX_WORK`; None: no bound).  ``Infeasibility.cut_by`` says which stopped it:
+    'time', 'opened' or 'work'."""
     tally = _Tally(constraints)
     top_idx, top_score = np.zeros(0, np.int64), np.zeros(0)
     scores = (
@@ -179,23 +172,24 @@ def explain_infeasible(
 
 
 def cut_note(why: Infeasibility) -> str:
-    """What stopped the explanation ``why``, one clause for the answer's message ('' : it was not cut)."""
+    """What stopped the explanation ``why``, one clause for the answer's message ('' : it was not
+    cut)."""
     if why.cut_by == "time":
         return (
-            "the explanation stopped at the time limit: the closest designs are those found by then (a longer "
-            "--time-limit explains further)"
+            "the explanation stopped at the time limit: the closest designs are those found by "
+            "then (a longer --time-limit explains further)"
         )
     if why.cut_by == "opened":
         return (
-            f"a limit no combination meets on its own makes every design miss: the explanation stopped after "
-            f"scoring {MAX_OPENED:,} combinations, and the closest designs (and what to relax for them) are "
-            "those found by then, perhaps not the closest of all"
+            "a limit no combination meets on its own makes every design miss: the explanation "
+            f"stopped after scoring {MAX_OPENED:,} combinations, and the closest designs (and what "
+            "to relax for them) are those found by then, perhaps not the closest of all"
         )
     if why.cut_by == "work":
         return (
-            f"the explanation stopped after {MAX_WORK:,} model evaluations (its bound of work, the same on any "
-            "machine): the closest designs (and what to relax for them) are those found by then, perhaps not "
-            "the closest of all"
+            f"the explanation stopped after {MAX_WORK:,} model evaluations (its bound of work, the "
+            "same on any machine): the closest designs (and what to relax for them) are those "
+            "found by then, perhaps not the closest of all"
         )
     return ""
 
@@ -203,12 +197,12 @@ def cut_note(why: Infeasibility) -> str:
 def _best_first_scores(
     space: Space, constraints, tally: _Tally, n_closest: int, deadline: float | None = None
 ):
-    """Blocks of (combination numbers, miss scores) in best-first order, until no block left out could
-    change the explanation: improve the best value of a limit no block meets yet (or meet it), or hold a
-    design among the ``n_closest`` (its score lower bound not above the current ``n_closest``-th score)."""
+    """Blocks of (combination numbers, miss scores) in best-first order, until no block left out
+    could change the explanation: improve the best value of a limit no block meets yet (or meet it),
+    or hold a design among the ``n_closest`` (its score lower bound not above the current
+    ``n_closest``-th score)."""
     # the drive limits' bounds (interval arithmetic over every block) wait until a drive limit is
-    # left unmet by
-    # the first round: most explanations never need them
+    # left unmet by the first round: most explanations never need them
     opt = block_optimism(space, constraints, drive=False)
     drive = [c for c in constraints if not is_bounded(c)]
     M, (_, N, B, _) = len(space.mountings), space.shape
@@ -285,7 +279,8 @@ def _best_first_scores(
 
 
 def _first(cand, key, n):
-    """``n`` blocks of ``cand`` of lowest ``key`` (blocks tied with the n-th wait for a later round)."""
+    """``n`` blocks of ``cand`` of lowest ``key`` (blocks tied with the n-th wait for a later
+    round)."""
     k = np.nonzero(cand.ravel())[0]
     if len(k) > n:
         k = k[np.argpartition(key.ravel()[k], n - 1)[:n]]
@@ -295,9 +290,9 @@ def _first(cand, key, n):
 
 
 def miss_scores(space: Space, constraints, tally: _Tally | None = None):
-    """Blocks of (combination numbers, sum of relative misses) over every combination: each limit at its
-    favourable preload end, plus RULE_WEIGHT when the bearing does not fit the screw, a compatibility rule
-    weighted by RULE_WEIGHT (:func:`_score_nuts`)."""
+    """Blocks of (combination numbers, sum of relative misses) over every combination: each limit at
+    its favourable preload end, plus RULE_WEIGHT when the bearing does not fit the screw, a
+    compatibility rule weighted by RULE_WEIGHT (:func:`_score_nuts`)."""
     tally = tally or _Tally(constraints)
     _, N, B, G = space.shape
     D = space.n_drives if space.m_arr is not None else 1
@@ -318,17 +313,18 @@ def _score_nuts(
     kth=np.inf,
     n_closest: int = CLOSEST,
 ):
-    """(combination numbers, miss scores) of mounting ``mi`` over every guide and drive of either the nuts
-    ``nut_idx`` times every bearing, or, with ``bearing_idx`` (aligned with ``nut_idx``), the (nut, bearing)
-    blocks of those pairs only.  ``kth``: the score a design must not exceed to be among the ``n_closest``
-    (the best-first order's current n-th): a drive whose bounds (:func:`.drivebounds.drive_hull`) show that
-    it can neither score that low nor improve or meet a drive limit not met yet is not evaluated, and its
-    combinations score inf (:func:`_score_drives`).
+    """(combination numbers, miss scores) of mounting ``mi`` over every guide and drive of either
+    the nuts ``nut_idx`` times every bearing, or, with ``bearing_idx`` (aligned with ``nut_idx``),
+    the (nut, bearing) blocks of those pairs only.  ``kth``: the score a design must not exceed to
+    be among the ``n_closest`` (the best-first order's current n-th): a drive whose bounds
+    (:func:`.drivebounds.drive_hull`) show that it can neither score that low nor improve or meet a
+    drive limit not met yet is not evaluated, and its combinations score inf
+    (:func:`_score_drives`).
 
-    Structured like the screening: the limits the drive does not change are evaluated once per (screw, nut,
-    bearing, guide) combination, the ones the coupling's stiffness changes (:data:`COUPLING_KEYS`) once per
-    distinct coupling stiffness, the drive's limits (:data:`DRIVE_KEYS`) on the drive sub-assembly alone for
-    each (motor, coupling) pair."""
+    Structured like the screening: the limits the drive does not change are evaluated once per
+    (screw, nut, bearing, guide) combination, the ones the coupling's stiffness changes
+    (:data:`COUPLING_KEYS`) once per distinct coupling stiffness, the drive's limits
+    (:data:`DRIVE_KEYS`) on the drive sub-assembly alone for each (motor, coupling) pair."""
     mounting = space.mountings[mi]
     _, N, B, G = space.shape
     two_stage = space.m_arr is not None
@@ -359,8 +355,7 @@ def _score_nuts(
     score = np.where(fits, 0.0, RULE_WEIGHT)
     p = params(mechanics=two_stage)
     # at the lowest preload only the limits it favours are read: the stiffness chain and modes are
-    # skipped
-    # there unless one of those reads them
+    # skipped there unless one of those reads them
     chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in mech if not c.lower_type)
     regen = reads_regen(constraints)
     tally.work += 2 * nc * Bx * Gm * len(x)
@@ -437,13 +432,14 @@ def _score_drives(
     kth: float,
     n_closest: int,
 ):
-    """The miss scores of :func:`_score_nuts` with the drive limits added, (nuts, bearings, guides, drives):
-    ``score`` holds the mechanical part.  A drive is evaluated (at both preload ends, every guide) only if its
-    bounds over the block (:func:`.drivebounds.drive_hull`: every guide and preload) leave a score not above
-    ``kth``, or could meet, or improve the best value of, a drive limit no combination meets yet; the others
-    score inf.  A first pass scores the :data:`FIRST_DRIVES` drives of lowest score bound (without a ``kth``,
-    fewer than ``n_closest`` scores known: they give it) and of most favourable bound on each limit not met
-    yet (they set its best value), so that the second leaves out what they rule out."""
+    """The miss scores of :func:`_score_nuts` with the drive limits added, (nuts, bearings, guides,
+    drives): ``score`` holds the mechanical part.  A drive is evaluated (at both preload ends, every
+    guide) only if its bounds over the block (:func:`.drivebounds.drive_hull`: every guide and
+    preload) leave a score not above ``kth``, or could meet, or improve the best value of, a drive
+    limit no combination meets yet; the others score inf.  A first pass scores the
+    :data:`FIRST_DRIVES` drives of lowest score bound (without a ``kth``, fewer than ``n_closest``
+    scores known: they give it) and of most favourable bound on each limit not met yet (they set its
+    best value), so that the second leaves out what they rule out."""
     D = space.n_drives
     out = np.full(score.shape, np.inf)
     hull, group = (
@@ -505,8 +501,9 @@ def _score_drives(
 
 
 def _worth(drive, tally: _Tally, hull: dict, low, kth: float):
-    """Per drive: whether its bounds (``hull``; ``low``: the least score it could reach per (nut, bearing))
-    leave a score not above ``kth``, or could meet, or improve the best value of, a limit not met yet."""
+    """Per drive: whether its bounds (``hull``; ``low``: the least score it could reach per (nut,
+    bearing)) leave a score not above ``kth``, or could meet, or improve the best value of, a limit
+    not met yet."""
     D = low.shape[-1]
     need = (
         (low <= kth + BOUND_RTOL * max(abs(kth), 1.0)).reshape(-1, D).any(axis=0)

@@ -1,5 +1,6 @@
-"""Optimistic values of every limit over a block of combinations (interval bounds of the mechanics and of the
-drives), the cheapest combination: what the best-first explanation (:mod:`.explain`) prunes blocks with."""
+"""Optimistic values of every limit over a block of combinations (interval bounds of the mechanics
+and of the drives), the cheapest combination: what the best-first explanation (:mod:`.explain`)
+prunes blocks with."""
 
 from __future__ import annotations
 
@@ -22,7 +23,8 @@ from ..task.space import DRIVE_KEYS, MECHANICS_BOUNDED, Space, respond
 
 
 def _last(c, v):
-    """A limit's value over the block without the trailing position axis (profiles are reduced already)."""
+    """A limit's value over the block without the trailing position axis (profiles are reduced
+    already)."""
     v = np.asarray(v, dtype=float)
     return v[..., 0] if (not c.profile and v.ndim == 4) else v
 
@@ -31,14 +33,11 @@ CHUNK = 2_000_000  # response elements per block
 
 
 # A compatibility rule (the bearing bore does not fit the screw end, the screw is too short:
-# Check.relaxable
-# False) weighs this much more than a limit in the miss score, so the closest designs are ones the
-# user can
-# free by relaxing their own limits whenever such designs miss by less than ten limits' worth (a
-# bearing that
-# does not fit is not a design).  1000 gave the same proposals on the shipped variants but let fewer
-# blocks be
-# pruned: the explanation of the slowest vmc_random_1000 cases took 1.5x as long.
+# Check.relaxable False) weighs this much more than a limit in the miss score, so the closest
+# designs are ones the user can free by relaxing their own limits whenever such designs miss by less
+# than ten limits' worth (a bearing that does not fit is not a design).  1000 gave the same
+# proposals on the shipped variants but let fewer blocks be pruned: the explanation of the slowest
+# vmc_random_1000 cases took 1.5x as long.
 RULE_WEIGHT = 10.0
 
 
@@ -60,10 +59,11 @@ FLOAT32_RTOL = 2.0 * SCREEN_RTOL
 
 
 def favourable_bound(c, out_lo, out_hi, shape, positions: bool = True):
-    """The limit's value at the preload end that favours it (for a limit met on an interval of preloads,
-    the better of the two ends), broadcast to ``shape``; only the end(s) it needs are read (``out_lo`` may
-    be None, or without the chain outputs, when no limit read there needs them).  ``positions``: the outputs
-    have a trailing position axis (not the drive layout's, whose last axis is the drives)."""
+    """The limit's value at the preload end that favours it (for a limit met on an interval of
+    preloads, the better of the two ends), broadcast to ``shape``; only the end(s) it needs are read
+    (``out_lo`` may be None, or without the chain outputs, when no limit read there needs them).
+    ``positions``: the outputs have a trailing position axis (not the drive layout's, whose last
+    axis is the drives)."""
 
     def val(o):
         v = c.value(o)
@@ -77,8 +77,9 @@ def favourable_bound(c, out_lo, out_hi, shape, positions: bool = True):
 
 
 def cheapest_cost(space: Space) -> float:
-    """The least cost [EUR] of any (fitting, if any fits) combination of a space with a drive search, exact
-    (:func:`.drivebounds.cost_parts`): the budget's single-limit check when the explanation was cut."""
+    """The least cost [EUR] of any (fitting, if any fits) combination of a space with a drive
+    search, exact (:func:`.drivebounds.cost_parts`): the budget's single-limit check when the
+    explanation was cut."""
     B = space.shape[2]
     usable = space.fits if space.fits.any() else np.ones_like(space.fits)
     best = np.inf
@@ -89,28 +90,27 @@ def cheapest_cost(space: Space) -> float:
 
 
 def is_bounded(c) -> bool:
-    """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block (the
-    limits of :func:`axisopt.search.bounds.block_bounds`: not the drive's, except the cost)."""
+    """Whether the optimistic guide bounds the limit ``c`` over every guide and drive of a block
+    (the limits of :func:`axisopt.search.bounds.block_bounds`: not the drive's, except the cost)."""
     return not c.convex and (c.key not in DRIVE_KEYS or c.key in MECHANICS_BOUNDED)
 
 
 def block_optimism(space: Space, constraints, drive: bool = True):
-    """Per mounting and (nut, bearing) block: for each limit a value no combination of the block beats at the
-    limit's favourable preload end -- the limits the optimistic guide bounds from it (profiles on
-    :func:`.bounds.bound_positions`), the drive's from :func:`drive_optimism` (unless not ``drive``) -- and a
-    lower bound of the block's miss scores.  Returns a list over mountings of (values dict, lower bound)."""
+    """Per mounting and (nut, bearing) block: for each limit a value no combination of the block
+    beats at the limit's favourable preload end -- the limits the optimistic guide bounds from it
+    (profiles on :func:`.bounds.bound_positions`), the drive's from :func:`drive_optimism` (unless
+    not ``drive``) -- and a lower bound of the block's miss scores.  Returns a list over mountings
+    of (values dict, lower bound)."""
     _, N, B, _ = space.shape
     bounded = [c for c in constraints if is_bounded(c)]
     drive = [c for c in constraints if not is_bounded(c)] if drive else []
     constraints = bounded + drive
     types = np.unique(space.g_arr["type"]) if len(space.guides) else np.array([], dtype=str)
     # at the lowest preload only the limits it favours are read: the stiffness chain and modes are
-    # skipped there
-    # unless one of those reads them (as in _score_nuts)
+    # skipped there unless one of those reads them (as in _score_nuts)
     chain_lo = any(c.key in model.CHAIN_OUTPUTS for c in bounded if c.convex or not c.lower_type)
     # a minimum over a few positions bounds the minimum over the grid from above: optimistic for a
-    # ">=" limit,
-    # so the few suffice unless a "<=" limit reads a profile
+    # ">=" limit, so the few suffice unless a "<=" limit reads a profile
     few = all(c.sense == ">=" for c in bounded if c.profile)
     out = []
     for mounting in space.mountings:
@@ -155,12 +155,14 @@ def block_optimism(space: Space, constraints, drive: bool = True):
 def drive_bounds_of(
     space: Space, mounting: str, drive, deadline: float | None = None
 ) -> dict | None:
-    """:func:`drive_optimism` over every nut of ``mounting``, at most :data:`DRIVE_NUTS` nuts at a time:
-    {limit name: (nuts, bearings)}; None when ``deadline`` (a time.perf_counter() value) passed first."""
+    """:func:`drive_optimism` over every nut of ``mounting``, at most :data:`DRIVE_NUTS` nuts at
+    a time: {limit name: (nuts, bearings)}; None when ``deadline`` (a time.perf_counter() value)
+    passed first."""
     N, B = space.shape[1], space.shape[2]
     out = {c.name: np.empty((N, B)) for c in drive}
-    # as many nuts as keep one interval evaluation within HULL_BLOCK (nut, bearing group, drive) elements:
-    # thousands of drives times 64 nuts held arrays of GB in the drive block's temporaries
+    # as many nuts as keep one interval evaluation within HULL_BLOCK (nut, bearing group,
+    # drive) elements: thousands of drives times 64 nuts held arrays of GB in the drive block's
+    # temporaries
     per_nut = max(space.n_drives, 1) * min(B, DRIVE_BEARING_GROUPS)
     rows = max(1, min(DRIVE_NUTS, HULL_BLOCK // per_nut))
     for n0 in range(0, N, rows):
@@ -173,11 +175,11 @@ def drive_bounds_of(
 
 
 def drive_optimism(space: Space, mounting: str, nut_slice: slice, drive) -> dict:
-    """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the drive block),
-    per (nut, bearing) block of ``nut_slice`` a value no combination of the block beats at any allowed preload:
-    the drive block in interval arithmetic over the block's guides and preloads
-    (:func:`.drivebounds.drive_hull`); the best over the drives bounds the block.  Returns {limit name: (nuts,
-    bearings)}."""
+    """For the drive limits ``drive`` (motor and coupling checks, inertia ratio: the outputs of the
+    drive block), per (nut, bearing) block of ``nut_slice`` a value no combination of the block
+    beats at any allowed preload: the drive block in interval arithmetic over the block's guides and
+    preloads (:func:`.drivebounds.drive_hull`); the best over the drives bounds the block.  Returns
+    {limit name: (nuts, bearings)}."""
     hull, group = drive_hull(space, mounting, nut_slice, drive)
     out = {}
     for c in drive:

@@ -1,37 +1,40 @@
-"""What the problem's screw mountings and ``catalog:`` filters left out that would make an infeasible problem
-feasible (:func:`widened`, one kind of :func:`.advice.design_changes`): another mounting, the next part size or
-series, before any axis value is lowered.
+"""What the problem's screw mountings and ``catalog:`` filters left out that would make an
+infeasible problem feasible (:func:`widened`, one kind of :func:`.advice.design_changes`): another
+mounting, the next part size or series, before any axis value is lowered.
 
 The groups of filters, each offered where the closest designs' misses call for it:
 
-- **the mountings** (``catalog.mountings``, or ``axis.mounting`` alone): the stronger mountings admitted, when the
-  closest designs miss a check or limit other than the drive's (fixed-free is never proposed: it only saves the
-  support bearing's cost, which a raised budget says better).  A screw fixed at both ends runs to
-  (lambda_ff / lambda_fs)^2 = (4.730 / 3.927)^2 = 1.45 times the critical speed and carries eta_ff / eta_fs =
-  4 / 2 = 2 times the buckling load of a fixed-supported one on the same span (THK A15-32 eq. 7, A15-30 eq. 5:
-  :data:`axisopt.physics.checks.CRITICAL_SPEED_LAMBDA1`, :data:`~axisopt.physics.checks.BUCKLING_ETA1`);
-- **the drive's parts**, when the closest designs miss a drive check (motor, coupling or reduction: torque,
-  speed, inertia ratio, brake) or a limit: ``motor_vendors``, ``motor_series``, ``coupling_series`` and the
-  motor and coupling slots of ``require``/``exclude`` left out;
+- **the mountings** (``catalog.mountings``, or ``axis.mounting`` alone): the stronger mountings
+  admitted, when the closest designs miss a check or limit other than the drive's (fixed-free is
+  never proposed: it only saves the support bearing's cost, which a raised budget says better).  A
+  screw fixed at both ends runs to (lambda_ff / lambda_fs)^2 = (4.730 / 3.927)^2 = 1.45 times the
+  critical speed and carries eta_ff / eta_fs = 4 / 2 = 2 times the buckling load of a
+  fixed-supported one on the same span (THK A15-32 eq. 7, A15-30 eq. 5:
+  :data:`axisopt.physics.checks.CRITICAL_SPEED_LAMBDA1`,
+  :data:`~axisopt.physics.checks.BUCKLING_ETA1`);
+- **the drive's parts**, when the closest designs miss a drive check (motor, coupling or reduction:
+  torque, speed, inertia ratio, brake) or a limit: ``motor_vendors``, ``motor_series``,
+  ``coupling_series`` and the motor and coupling slots of ``require``/``exclude`` left out;
 - **the mechanical parts**, as the mountings: ``vendors``, ``nut_types``, ``bearing_arrangements``,
-  ``bearing_preload``, ``guide_types``, ``guide_preload``, ``screw_grades`` and the mechanical slots of
-  ``require``/``exclude`` left out.
+  ``bearing_preload``, ``guide_types``, ``guide_preload``, ``screw_grades`` and the mechanical slots
+  of ``require``/``exclude`` left out.
 
-Not widened: ``status`` and ``estimated`` (which rows the user trusts: derived and paper rows, estimated cells),
-``drive: no``, ``max_motor_flange`` (the room the machine has; no shipped motor lists its flange), and the
-reductions (``reductions: no``, a required reduction; a lost-motion limit that leaves reductions out is
-:func:`.advice.design_changes`' own kind).
+Not widened: ``status`` and ``estimated`` (which rows the user trusts: derived and paper rows,
+estimated cells),
+``drive: no``, ``max_motor_flange`` (the room the machine has; no shipped motor lists its flange),
+and the reductions (``reductions: no``, a required reduction; a lost-motion limit that leaves
+reductions out is :func:`.advice.design_changes`' own kind).
 
-Two searches at most find a design: the group whose checks the closest designs miss most, widened alone, then
-every group the misses call for at once (which holds any design of each group alone).  A search is the default
-method's stopped at its first feasible design (in the order of the problem's objective; no optimum).  The advice
-is what that design needs of the widened filters: the mounting, vendor, series, type, grade or part id to add
-(``add Sigma-7 SGM7G to catalog.motor_series``), the id to take out of ``exclude``.  The
-design is one of the problem changed by exactly these edits, so the edits alone make it feasible: the search is
-the verification.  The first design found need not be the least change; while the budget lasts, each value it
-adds is left out in turn and a search looks for a design without it (its edits, fewer, are then taken).  A
-value may still be further than the least part that fits (a larger motor than needed), which the user may
-narrow again.
+Two searches at most find a design: the group whose checks the closest designs miss most, widened
+alone, then every group the misses call for at once (which holds any design of each group alone).  A
+search is the default method's stopped at its first feasible design (in the order of the problem's
+objective; no optimum).  The advice is what that design needs of the widened filters: the mounting,
+vendor, series, type, grade or part id to add (``add Sigma-7 SGM7G to catalog.motor_series``), the
+id to take out of ``exclude``.  The design is one of the problem changed by exactly these edits, so
+the edits alone make it feasible: the search is the verification.  The first design found need not
+be the least change; while the budget lasts, each value it adds is left out in turn and a search
+looks for a design without it (its edits, fewer, are then taken).  A value may still be further than
+the least part that fits (a larger motor than needed), which the user may narrow again.
 """
 
 from __future__ import annotations
@@ -67,9 +70,8 @@ MECH_FILTERS = (
 )
 GROUPS = ("mounting", "drive", "mechanical")
 # the command's deadline (time.perf_counter()) for the advice's verifying searches, None: none; set
-# by
-# advice.design_changes for the searches it runs (a search cut by it finds nothing; ``CUT`` records
-# that one was)
+# by advice.design_changes for the searches it runs (a search cut by it finds nothing; ``CUT``
+# records that one was)
 DEADLINE: ContextVar = ContextVar("advice_deadline", default=None)
 CUT: ContextVar = ContextVar("advice_cut", default=None)
 
@@ -80,7 +82,8 @@ def _slots_left(pairs: tuple, slots) -> tuple:
 
 
 def _widen(problem, group: str):
-    """The problem's restrictions with ``group``'s filters widened (the same object when it has none set)."""
+    """The problem's restrictions with ``group``'s filters widened (the same object when it has none
+    set)."""
     r = problem.restrictions
     if group == "mounting":
         stronger = _stronger(problem.mountings)
@@ -105,17 +108,17 @@ def _widen(problem, group: str):
 
 
 def _stronger(mountings) -> tuple:
-    """The mountings whose screw runs faster before it whirls than the strongest of ``mountings`` (its critical-
-    speed factor lambda larger; the buckling factor eta ranks them alike)."""
+    """The mountings whose screw runs faster before it whirls than the strongest of ``mountings``
+    (its critical- speed factor lambda larger; the buckling factor eta ranks them alike)."""
     best = max(CRITICAL_SPEED_LAMBDA1[m] for m in mountings)
     return tuple(m for m in MOUNTINGS if CRITICAL_SPEED_LAMBDA1[m] > best)
 
 
 def _groups(misses) -> list:
-    """The groups the closest designs' misses call for, the one whose checks they miss most first (ties in
-    :data:`GROUPS` order); ``misses``: per closest design, {check or limit name: relative miss}.  The mounting
-    and the mechanical parts answer the mechanical checks and the limits, the drive's parts its checks and the
-    limits."""
+    """The groups the closest designs' misses call for, the one whose checks they miss most first
+    (ties in :data:`GROUPS` order); ``misses``: per closest design, {check or limit name: relative
+    miss}.  The mounting and the mechanical parts answer the mechanical checks and the limits, the
+    drive's parts its checks and the limits."""
     worst = {g: 0.0 for g in GROUPS}
     for d in misses:
         for name, m in d.items():
@@ -127,27 +130,30 @@ def _groups(misses) -> list:
 
 
 def _listed(key: str, new: list, note: str = "") -> list:
-    """An 'add' edit of the list ``key`` (none when ``new`` is empty), values in order of first appearance."""
+    """An 'add' edit of the list ``key`` (none when ``new`` is empty), values in order of first
+    appearance."""
     vals = tuple(dict.fromkeys(str(v) for v in new))
     return [DesignChange(key, "", math.nan, math.nan, note, "add", vals)] if vals else []
 
 
 def _mounting_note(old: tuple, new: str) -> str:
-    """What the mounting changes against the strongest one the problem had: critical speed and buckling load."""
+    """What the mounting changes against the strongest one the problem had: critical speed and
+    buckling load."""
     best = max(old, key=CRITICAL_SPEED_LAMBDA1.__getitem__)
     speed = (CRITICAL_SPEED_LAMBDA1[new] / CRITICAL_SPEED_LAMBDA1[best]) ** 2
     buckling = BUCKLING_ETA1[new] / BUCKLING_ETA1[best]
     if speed <= 1.0:
         return ""
     return (
-        f"{speed:.3g} x the critical speed and {buckling:.3g} x the buckling load of {best} on the same span, "
-        "THK A15-32 and A15-30"
+        f"{speed:.3g} x the critical speed and {buckling:.3g} x the buckling load of {best} on the "
+        "same span, THK A15-32 and A15-30"
     )
 
 
 def design_edits(problem, space, combo: int) -> list:
-    """The edits of ``problem``'s mountings and catalog filters that admit combination ``combo`` of ``space`` (a
-    space of the problem with filters widened): :class:`.answer.DesignChange` rows, empty when it needs none."""
+    """The edits of ``problem``'s mountings and catalog filters that admit combination ``combo`` of
+    ``space`` (a space of the problem with filters widened): :class:`.answer.DesignChange` rows,
+    empty when it needs none."""
     from ..candidates import part_rows
 
     r = problem.restrictions
@@ -209,10 +215,11 @@ def design_edits(problem, space, combo: int) -> list:
 
 
 def first_design(problem, space=None):
-    """(space, combination) of the first feasible design the default search finds for ``problem`` (stopped
-    there), or None: none, or the problem's inputs refuse the change (widened filters with nothing left to choose
-    from, a duty cycle a lowered speed breaks).  ``space``: the problem's search space when the change left the
-    parts as they were (a limit, not the axis or the filters)."""
+    """(space, combination) of the first feasible design the default search finds for ``problem``
+    (stopped there), or None: none, or the problem's inputs refuse the change (widened filters with
+    nothing left to choose from, a duty cycle a lowered speed breaks).  ``space``: the problem's
+    search space when the change left the parts as they were (a limit, not the axis or the
+    filters)."""
     found = first_feasible(problem, space)
     return None if found is None else found[:2]
 
@@ -250,8 +257,8 @@ def _cut() -> None:
 
 
 def with_edits(problem, edits):
-    """``problem`` with the catalog edits (:func:`design_edits` rows) made: its restrictions as the YAML edited so
-    would read them."""
+    """``problem`` with the catalog edits (:func:`design_edits` rows) made: its restrictions as the
+    YAML edited so would read them."""
     r = problem.restrictions
     kw: dict = {}
     for e in edits:
@@ -283,11 +290,11 @@ def _without(edits, key: str, value: str) -> list:
 
 
 def widened(problem, misses, budget: int) -> tuple:
-    """(edits, searches): the mounting and catalog-filter edits that make ``problem`` feasible (the module
-    docstring), [] when none is found within ``budget`` searches; ``misses``: per closest design,
-    {check or limit name: relative miss} (a check's name without ``margin_``).  A design that needs more than one
-    value added is narrowed while the budget lasts: each value left out in turn, the design a search finds without
-    it taken when there is one (its edits are fewer)."""
+    """(edits, searches): the mounting and catalog-filter edits that make ``problem`` feasible (the
+    module docstring), [] when none is found within ``budget`` searches; ``misses``: per closest
+    design, {check or limit name: relative miss} (a check's name without ``margin_``).  A design
+    that needs more than one value added is narrowed while the budget lasts: each value left out in
+    turn, the design a search finds without it taken when there is one (its edits are fewer)."""
     tries, every = [], problem.restrictions
     for group in _groups(misses):
         r = _widen(problem, group)
@@ -295,9 +302,8 @@ def widened(problem, misses, budget: int) -> tuple:
             tries.append(r)
             every = _widen(replace(problem, restrictions=every), group)
     # the group the misses call for most, then every group at once (a superset of each group alone:
-    # a design
-    # of any one group is in it, and one may need parts of two groups); the narrowing finds the
-    # fewer edits
+    # a design of any one group is in it, and one may need parts of two groups); the narrowing finds
+    # the fewer edits
     tries = tries[:1] + ([every] if len(tries) > 1 else [])
     used, edits = 0, []
     for r in tries:

@@ -1,14 +1,15 @@
 """Reference method: the whole problem as one MINLP for CasADi + Bonmin (a heuristic on this
 nonconvex problem).
 
-The formulation is :mod:`axisopt.search.minlp.formulation`'s: one-hot binaries choose the nut, the bearing
-arrangement and the guide-and-drive entry, and the symbolic :func:`axisopt.model.axis_response` is evaluated
-on the binary-weighted part parameters (exact at integer points).  The nut preload is
-``lo(z) + w (hi(z) - lo(z))`` with w in [0, 1].  The objective is an epigraph variable below the objective at
-every grid position (same grid as the other methods); every limit is a constraint scaled by
-:func:`axisopt.search.minlp.scaling.scaled_limit`.  A mounting is a structural choice of the model, so each
-allowed mounting is one MINLP, run in turn within the overall time limit.  Bonmin's own status is reported as
-is; the chosen combination is then re-evaluated exactly and re-checked.
+The formulation is :mod:`axisopt.search.minlp.formulation`'s: one-hot binaries choose the nut, the
+bearing arrangement and the guide-and-drive entry, and the symbolic
+:func:`axisopt.model.axis_response` is evaluated on the binary-weighted part parameters (exact at
+integer points).  The nut preload is ``lo(z) + w (hi(z) - lo(z))`` with w in [0, 1].  The objective
+is an epigraph variable below the objective at every grid position (same grid as the other methods);
+every limit is a constraint scaled by :func:`axisopt.search.minlp.scaling.scaled_limit`.  A mounting
+is a structural choice of the model, so each allowed mounting is one MINLP, run in turn within the
+overall time limit.  Bonmin's own status is reported as is; the chosen combination is then
+re-evaluated exactly and re-checked.
 """
 
 from __future__ import annotations
@@ -36,8 +37,7 @@ from .streams import quiet_stdout
 # of each column's mean added to the one-hot mixtures (no stiffness or diameter exactly 0)
 FLOOR = 1e-6
 # a preload that misses a limit on exact re-evaluation is backed off by this fraction of its range
-# (Bonmin's
-# constraint tolerance)
+# (Bonmin's constraint tolerance)
 MOVES = (-1e-6,)
 
 
@@ -82,7 +82,8 @@ DEADLINE_GRACE = 2.0
 
 
 class ChildError(Exception):
-    """What the Bonmin child raised that is not a solver failure (a bug), with the child's traceback."""
+    """What the Bonmin child raised that is not a solver failure (a bug), with the child's
+    traceback."""
 
 
 LOG = logging.getLogger("axisopt.search")
@@ -90,11 +91,13 @@ PROGRESS_EVERY = 10.0  # [s] progress lines on a terminal's stderr
 
 
 def _solve_with_deadline(work, deadline: float, label: str):
-    """Run ``work()`` (build and solve one MINLP) in a forked child and stop it at ``deadline`` seconds.
+    """Run ``work()`` (build and solve one MINLP) in a forked child and stop it at ``deadline``
+    seconds.
 
-    Building the symbolic problem and its derivatives can itself take minutes on a large catalog, so the
-    whole of it runs in the child.  Returns ("ok", (x, stats)), ("error", message) or ("timeout", None).
-    Where fork is not available the work runs in this process (Bonmin's own time limit only)."""
+    Building the symbolic problem and its derivatives can itself take minutes on a large catalog, so
+    the whole of it runs in the child.  Returns ("ok", (x, stats)), ("error", message) or
+    ("timeout", None).  Where fork is not available the work runs in this process (Bonmin's own time
+    limit only)."""
     import multiprocessing as mp
 
     try:
@@ -206,8 +209,9 @@ def solve_bonmin(
     top: int = 1,
     t0: float | None = None,
 ) -> SolveResult:
-    """Solve each mounting's MINLP with Bonmin and return the best design (re-evaluated; never proven: status
-    'feasible' at best).  One design only (``top`` is accepted for the common signature)."""
+    """Solve each mounting's MINLP with Bonmin and return the best design (re-evaluated;
+    never proven: status 'feasible' at best).  One design only (``top`` is accepted for the common
+    signature)."""
     t0 = time.perf_counter() if t0 is None else t0
     _, N, B, G = space.shape
     best = None

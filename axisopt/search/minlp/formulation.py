@@ -1,14 +1,17 @@
-"""The one-hot MINLP formulation shared by Bonmin and SCIP, and the recovery of a design from a solver's point.
+"""The one-hot MINLP formulation shared by Bonmin and SCIP, and the recovery of a design from a
+solver's point.
 
-One binary per part of each slot chooses the nut (which fixes the screw), the bearing arrangement and the
-guide (with the drive: one binary per guide-and-drive entry of the space's last axis), with ``sum z = 1`` per
-slot.  A part parameter is the binary-weighted sum of its catalog column, ``p = sum_i z_i p_i``, linear in z
-(the standard form of a discrete choice in an MINLP) and exact at every integer point, so the symbolic
-:func:`axisopt.model.axis_response` evaluated on these mixtures is the model of the chosen parts.
+One binary per part of each slot chooses the nut (which fixes the screw), the bearing arrangement
+and the guide (with the drive: one binary per guide-and-drive entry of the space's last axis), with
+``sum z = 1`` per slot.  A part parameter is the binary-weighted sum of its catalog column,
+``p = sum_i z_i p_i``, linear in z (the standard form of a discrete choice in an MINLP) and exact at
+every integer point, so the symbolic :func:`axisopt.model.axis_response` evaluated on these mixtures
+is the model of the chosen parts.
 
-A solver's point is turned back into a catalog combination (the largest binary of each slot) and a preload
-within the chosen nut's range; the combination is re-evaluated with the project's own model, and a preload
-that misses a limit by the solver's feasibility tolerance is moved into the limits before it is reported.
+A solver's point is turned back into a catalog combination (the largest binary of each slot) and a
+preload within the chosen nut's range; the combination is re-evaluated with the project's own model,
+and a preload that misses a limit by the solver's feasibility tolerance is moved into the limits
+before it is reported.
 """
 
 from __future__ import annotations
@@ -25,8 +28,9 @@ SLOTS = ("nut", "bearing", "guide")  # the one-hot slots, in the order of the sp
 
 
 def slot_params(space, mounting: str) -> dict:
-    """Param name -> (slot, values) where slot is 'nut' | 'bearing' | 'guide' | 'axis' (one value for the
-    axis, else one per part of the slot), from the space's structured (broadcastable) parameter arrays."""
+    """Param name -> (slot, values) where slot is 'nut' | 'bearing' | 'guide' | 'axis' (one value
+    for the axis, else one per part of the slot), from the space's structured (broadcastable)
+    parameter arrays."""
     ps = space.params_structured(mounting)
     out = {}
     for name, v in ps.items():
@@ -51,13 +55,13 @@ def one_hot_symbols(space) -> dict:
 
 
 def one_hot_params(space, mounting: str, z: dict, floor: float = 0.0) -> dict:
-    """The model's parameter dict on the one-hot mixtures ``sum_i z_i p_i`` (axis values as they are, the duty
-    cycle of the mounting's axis).
+    """The model's parameter dict on the one-hot mixtures ``sum_i z_i p_i`` (axis values as they
+    are, the duty cycle of the mounting's axis).
 
-    ``floor``: plus ``floor`` times the column mean, so that no stiffness, diameter or preload is exactly 0 at
-    the fractional points z = 0 a nonlinear branch-and-bound visits (NaN derivatives of cube roots and 1/k
-    otherwise); at integer points it is a relative change of ``floor``, and the chosen design is re-evaluated
-    exactly afterwards."""
+    ``floor``: plus ``floor`` times the column mean, so that no stiffness, diameter or preload is
+    exactly 0 at the fractional points z = 0 a nonlinear branch-and-bound visits (NaN derivatives of
+    cube roots and 1/k otherwise); at integer points it is a relative change of ``floor``, and the
+    chosen design is re-evaluated exactly afterwards."""
     p = {}
     for name, (slot, vals) in slot_params(space, mounting).items():
         if slot == "axis":
@@ -77,9 +81,9 @@ def integral(z: Mapping[str, np.ndarray], atol: float = 1e-6) -> bool:
 
 @dataclass(frozen=True)
 class Recovered:
-    """A solver's point as a design: ``combination`` (flat index into the space), ``proposed`` (the solver's
-    preload within the nut's range) and ``preload`` (the one that meets every limit on the exact model, None
-    when no move found one)."""
+    """A solver's point as a design: ``combination`` (flat index into the space), ``proposed`` (the
+    solver's preload within the nut's range) and ``preload`` (the one that meets every limit on the
+    exact model, None when no move found one)."""
 
     combination: int
     proposed: float
@@ -98,9 +102,9 @@ def recover(
 
     ``z``       : slot -> the binaries' values (the part with the largest value is chosen)
     ``preload`` : ``preload(lo, hi)`` -> the solver's preload within the chosen nut's range [lo, hi]
-    ``moves``   : relative preload moves tried in turn when the proposed preload misses a limit on the exact
-                  model (the solver's feasibility tolerance); a move m tries ``P + m max(hi - lo, 1 N)``
-                  clipped to the range"""
+    ``moves``   : relative preload moves tried in turn when the proposed preload misses a limit on
+                  the exact model (the solver's feasibility tolerance); a move m tries
+                  ``P + m max(hi - lo, 1 N)`` clipped to the range"""
     n, b, g = (int(np.argmax(z[s])) for s in SLOTS)
     combo = int(np.ravel_multi_index((mounting_index, n, b, g), space.shape))
     lo, hi = float(space.preload_lo[n]), float(space.preload_hi[n])

@@ -1,22 +1,22 @@
-"""Reference method: the whole problem as one global MINLP for SCIP (through pyscipopt, optional extra
-``axisopt[scip]``).
+"""Reference method: the whole problem as one global MINLP for SCIP (through pyscipopt, optional
+extra ``axisopt[scip]``).
 
-The formulation is :mod:`axisopt.search.minlp.formulation`'s, as for Bonmin: one-hot binaries choose the nut
-(which fixes the screw), the bearing arrangement and the guide-and-drive entry; the nut preload P is
-continuous within the chosen nut's range (``sum lo_i z_i <= P <= sum hi_i z_i``, linear); the objective is an
-epigraph variable below the objective at every grid position; every limit is a constraint scaled by
-:func:`axisopt.search.minlp.scaling.scaled_limit`.  Each allowed mounting is one MINLP, solved in turn within
-the overall time limit.
+The formulation is :mod:`axisopt.search.minlp.formulation`'s, as for Bonmin: one-hot binaries choose
+the nut (which fixes the screw), the bearing arrangement and the guide-and-drive entry; the nut
+preload P is continuous within the chosen nut's range (``sum lo_i z_i <= P <= sum hi_i z_i``,
+linear); the objective is an epigraph variable below the objective at every grid position; every
+limit is a constraint scaled by :func:`axisopt.search.minlp.scaling.scaled_limit`.  Each allowed
+mounting is one MINLP, solved in turn within the overall time limit.
 
 The algebra is not written twice: the CasADi model is translated node by node to SCIP
-(:mod:`axisopt.search.minlp.translate`).  A limit on a node that depends on one slot only removes the parts
-that miss it before SCIP starts (decided by the model itself); the carriage's limits, which depend on the nut
-and the guide alone, cut off the failing pairs linearly.
+(:mod:`axisopt.search.minlp.translate`).  A limit on a node that depends on one slot only removes
+the parts that miss it before SCIP starts (decided by the model itself); the carriage's limits,
+which depend on the nut and the guide alone, cut off the failing pairs linearly.
 
 SCIP's spatial branch-and-bound proves the optimum up to its tolerances (feasibility 1e-6, gap
-:data:`GAP`).  The chosen combination and preload are then re-evaluated with the project's own model and
-re-checked; the numbers printed are the model's.  A proven answer is cross-checked against the default
-method's best design (:func:`_contradiction`).
+:data:`GAP`).  The chosen combination and preload are then re-evaluated with the project's own model
+and re-checked; the numbers printed are the model's.  A proven answer is cross-checked against the
+default method's best design (:func:`_contradiction`).
 """
 
 from __future__ import annotations
@@ -44,27 +44,22 @@ from .translate import Graph, Translator, casadi_model
 GAP = 1e-5  # SCIP's relative gap limit (limits/gap)
 SAMPLES = 64  # random integer points (fixed seed) that set the scale of each auxiliary variable
 # Dual reductions (fixing a variable because the objective prefers one side) cut the optimum off the
-# teaching
-# problem (110.09 -> "optimal" 102.95 N/um; SCIP 10, the epigraph-with-comparisons model); off, it
-# is right.
+# teaching problem (110.09 -> "optimal" 102.95 N/um; SCIP 10, the epigraph-with-comparisons model);
+# off, it is right.
 SCIP_PARAMS = {"misc/allowstrongdualreds": False, "misc/allowweakdualreds": False}
 # SCIP's presolving can cut a feasible point off: with the vendor rules (lift-off by load case, nut
-# life per phase)
-# it stopped the teaching optimum's preload at 1007 N (70.38 N/um "optimal"; the model's 1146.8 N
-# gives 71.66 N/um,
-# and that point, every part and the preload fixed, is feasible in the same SCIP model).  A proof
-# the cross-check
-# contradicts is solved again once with presolving off (which finds 71.66); presolving stays on by
-# default, since
-# infeasibility proofs need it (the random infeasible catalog: 2.8 s CPU with it, over 8 s without)
+# life per phase) it stopped the teaching optimum's preload at 1007 N (70.38 N/um "optimal"; the
+# model's 1146.8 N gives 71.66 N/um, and that point, every part and the preload fixed, is feasible
+# in the same SCIP model).  A proof the cross-check contradicts is solved again once with presolving
+# off (which finds 71.66); presolving stays on by default, since infeasibility proofs need it (the
+# random infeasible catalog: 2.8 s CPU with it, over 8 s without)
 RETRY_PARAMS = {"presolving/maxrounds": 0}
 # a design better than SCIP's proven optimum by more than this contradicts the proof
 CROSS_CHECK_REL = 1e-4
 BRANCH_PRIORITY = (3, 2, 1)  # nut, bearing, guide-and-drive binaries
 INSTALL = "pip install 'axisopt[scip]'"
 # a preload that misses a limit on exact re-evaluation: moved by these fractions of its range, down
-# then up
-# (SCIP's feasibility tolerance, either way)
+# then up (SCIP's feasibility tolerance, either way)
 MOVES = tuple(
     step * rel for rel in (1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3) for step in (-1.0, 1.0)
 )
@@ -86,8 +81,8 @@ def _pyscipopt():
 
 # --------------------------------------------------------------------------- one mounting
 def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
-    """The SCIP model of one mounting.  Returns (model, z, P, info) or (None, None, None, reason) when no
-    part survives the one-slot limits."""
+    """The SCIP model of one mounting.  Returns (model, z, P, info) or (None, None, None, reason)
+    when no part survives the one-slot limits."""
     _, N, B, G = space.shape
     f, shift = casadi_model(space, mounting, constraints, objective)
     graph = Graph(f)
@@ -148,9 +143,8 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
     # limits on the parts alone, not on the preload (e.g. the support bearings' life)
     parts_limits = set()
     # their values from the model itself (numpy, flat layout, as the exhaustive search evaluates
-    # them): a part
-    # exactly at a limit must pass or fail as it does there, not as the translation's rounding has
-    # it
+    # them): a part exactly at a limit must pass or fail as it does there, not as the translation's
+    # rounding has it
     K = N + B + G
     pick_n, pick_b, pick_g = (np.argmax(zj[:, :K], axis=0) for zj in zs)
     exact = respond(
@@ -187,8 +181,8 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
             else:
                 general.append((c, node))
     # the carriage's limits depend on the nut (its mass) and the guide alone: evaluated on every
-    # pair with the
-    # model (as the exhaustive search does) and failing pairs cut off linearly, one cut per nut
+    # pair with the model (as the exhaustive search does) and failing pairs cut off linearly, one
+    # cut per nut
     forbidden = (
         _failing_pairs(space, mounting, pair_limits, N, G)
         if pair_limits
@@ -206,10 +200,8 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
         m.addCons(z["nut"][n_i] + z["bearing"][b_i] <= 1)
     # a limit on the parts alone (no preload, no nut shift) is decided by the model on every allowed
     # combination, as the exhaustive search decides it, and the failing (nut, bearing, guides) cut
-    # off linearly:
-    # its relaxation (the support bearings' life: cubic means, Weibull sums, a min over two
-    # mountings) would
-    # otherwise carry SCIP's whole tree
+    # off linearly: its relaxation (the support bearings' life: cubic means, Weibull sums, a min
+    # over two mountings) would otherwise carry SCIP's whole tree
     for n_i, b_i, bad_gs in (
         _failing_combinations(
             space, mounting, [constraints[ci] for ci in sorted(parts_limits)], allowed
@@ -245,8 +237,8 @@ def _mounting_model(ps, space, mounting, constraints, objective, seed=0):
 
 
 def _failing_pairs(space, mounting, pair_limits, N, G) -> np.ndarray:
-    """(N, G) mask of the (nut, guide-and-drive) pairs that miss a carriage limit (bearing 0 and the nut's
-    lowest preload stand in: these limits do not depend on them)."""
+    """(N, G) mask of the (nut, guide-and-drive) pairs that miss a carriage limit (bearing 0 and the
+    nut's lowest preload stand in: these limits do not depend on them)."""
     n_idx = np.repeat(np.arange(N), G)
     g_idx = np.tile(np.arange(G), N)
     x = space.positions(mounting)[-1:]
@@ -268,9 +260,9 @@ def _failing_pairs(space, mounting, pair_limits, N, G) -> np.ndarray:
 
 
 def _failing_combinations(space, mounting, limits, allowed):
-    """(nut, bearing, [guides]) for every allowed nut and bearing that fit, with the allowed guide-and-drive
-    entries whose combination misses one of ``limits`` (limits that do not depend on the preload: the nut's
-    lowest preload stands in)."""
+    """(nut, bearing, [guides]) for every allowed nut and bearing that fit, with the allowed
+    guide-and-drive entries whose combination misses one of ``limits`` (limits that do not depend on
+    the preload: the nut's lowest preload stands in)."""
     n_ok = np.nonzero(allowed["nut"])[0]
     b_ok = np.nonzero(allowed["bearing"])[0]
     g_ok = np.nonzero(allowed["guide"])[0]
@@ -310,8 +302,8 @@ def _failing_combinations(space, mounting, limits, allowed):
 
 
 def _recover(space, mi, z, P, m, constraints):
-    """The combination and preload of SCIP's best point, the preload nudged into the exact model's limits:
-    (combination, preload or None, note)."""
+    """The combination and preload of SCIP's best point, the preload nudged into the exact
+    model's limits: (combination, preload or None, note)."""
     sol = m.getBestSol()
     zs = {s: [m.getSolVal(sol, v) for v in z[s]] for s in SLOTS}
     got = recover(
@@ -341,14 +333,15 @@ def _recover(space, mi, z, P, m, constraints):
 
 
 def _contradiction(space, constraints, objective, best) -> str:
-    """SCIP's proof against a design the project's own search finds (re-evaluated by the model): '' when none
-    contradicts it, else why it is wrong.
+    """SCIP's proof against a design the project's own search finds (re-evaluated by the model): ''
+    when none contradicts it, else why it is wrong.
 
-    SCIP's LP relaxation of this model can be numerically wrong: on ``highspeed_problem.yaml`` (stage 2,
-    fixed-supported) it declares infeasible even the single combination whose parts and preload are all fixed
-    at the default method's optimum, a point that SCIP's own ``checkSol`` accepts (it stops at "unresolved
-    numerical troubles in LP ... using pseudo solution instead" and cuts the node off).  Such a proof is never
-    passed on: a design that meets every limit and beats SCIP's answer turns its status into a failure."""
+    SCIP's LP relaxation of this model can be numerically wrong: on ``highspeed_problem.yaml``
+    (stage 2, fixed-supported) it declares infeasible even the single combination whose parts and
+    preload are all fixed at the default method's optimum, a point that SCIP's own ``checkSol``
+    accepts (it stops at "unresolved numerical troubles in LP ... using pseudo solution instead" and
+    cuts the node off).  Such a proof is never passed on: a design that meets every limit and beats
+    SCIP's answer turns its status into a failure."""
     ex, _info = bound_order_search(space, constraints, objective, top=1)
     fin = np.isfinite(ex.objective)
     if not fin.any():
@@ -362,9 +355,10 @@ def _contradiction(space, constraints, objective, best) -> str:
     ref = make_candidate(space, int(ex.idx[j]), float(ex.preload[j]), objective)
     claim = "no design meets the limits" if best is None else f"the optimum is {best.objective:.6g}"
     return (
-        f"SCIP proved that {claim}, but {ref.mounting} {ref.nut} + {ref.bearing} + {ref.guide} at preload "
-        f"{ref.nut_preload:.1f} N meets every limit on the model with objective {j_ref:.6g}: SCIP's proof is "
-        f"wrong on this problem (numerical trouble in its LP relaxation); no proven answer"
+        f"SCIP proved that {claim}, but {ref.mounting} {ref.nut} + {ref.bearing} + {ref.guide} at "
+        f"preload {ref.nut_preload:.1f} N meets every limit on the model with objective "
+        f"{j_ref:.6g}: SCIP's proof is wrong on this problem (numerical trouble in its LP "
+        "relaxation); no proven answer"
     )
 
 
@@ -379,9 +373,9 @@ def solve_scip(
     t0: float | None = None,
     retry: bool = True,
 ) -> SolveResult:
-    """Solve each mounting's MINLP with SCIP and return the best design (re-evaluated).  A proof the default
-    method's best design contradicts is solved again with :data:`RETRY_PARAMS` (``retry``), within the same time
-    limit."""
+    """Solve each mounting's MINLP with SCIP and return the best design (re-evaluated).  A proof the
+    default method's best design contradicts is solved again with :data:`RETRY_PARAMS` (``retry``),
+    within the same time limit."""
     ps = _pyscipopt()
     t0 = time.perf_counter() if t0 is None else t0
     _, N, B, G = space.shape

@@ -1,8 +1,9 @@
-"""The reference MINLP solvers' own status words, declared once: what each SCIP status (``Model.getStatus()``)
-and each Bonmin return status (CasADi's ``stats()["return_status"]``) means for an axisopt solve.  The solve's
-own status (``SolveResult.status``) is one of :data:`axisopt.search.result.STATUS_TABLE`; these tables say how a
-solver's word maps onto it (SCIP's status list: the SCIP Optimization Suite documentation, ``SCIP_STATUS``;
-Bonmin's: the Bonmin user's manual, ``TMINLP::SolverReturn``)."""
+"""The reference MINLP solvers' own status words, declared once: what each SCIP status
+(``Model.getStatus()``) and each Bonmin return status (CasADi's ``stats()["return_status"]``) means
+for an axisopt solve.  The solve's own status (``SolveResult.status``) is one of
+:data:`axisopt.search.result.STATUS_TABLE`; these tables say how a solver's word maps onto it
+(SCIP's status list: the SCIP Optimization Suite documentation, ``SCIP_STATUS``; Bonmin's: the
+Bonmin user's manual, ``TMINLP::SolverReturn``)."""
 
 from __future__ import annotations
 

@@ -1,7 +1,9 @@
-"""What the solvers' C and C++ code writes straight to the process's file descriptors, kept off the user's
-terminal: Bonmin/CBC's node logs on descriptor 1, SCIP/SoPlex's messages on descriptor 2 (e.g. 'Cannot set
-feasibility tolerance to small value 1e-12 without GMP', hundreds of times on a long solve).  Python's
-``sys.stdout``/``sys.stderr`` do not see these writes; the descriptors themselves are redirected."""
+"""What the solvers' C and C++ code writes straight to the process's file descriptors, kept off the
+user's
+terminal: Bonmin/CBC's node logs on descriptor 1, SCIP/SoPlex's messages on descriptor 2 (e.g.
+'Cannot set feasibility tolerance to small value 1e-12 without GMP', hundreds of times on a long
+solve).  Python's ``sys.stdout``/``sys.stderr`` do not see these writes; the descriptors themselves
+are redirected."""
 
 from __future__ import annotations
 
@@ -32,8 +34,8 @@ def quiet_stdout():
 
 @contextlib.contextmanager
 def c_stderr_to_file():
-    """Send what is written to file descriptor 2 during the block to a temporary file instead of the user's
-    terminal; yields a list that holds its distinct lines afterwards."""
+    """Send what is written to file descriptor 2 during the block to a temporary file instead of the
+    user's terminal; yields a list that holds its distinct lines afterwards."""
     lines: list = []
     fd = 2  # the C library's stderr, whatever Python's sys.stderr is
     with contextlib.suppress(AttributeError, OSError, ValueError):

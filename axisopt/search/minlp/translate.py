@@ -1,17 +1,20 @@
 """The CasADi model of one mounting translated node by node to a SCIP model (through pyscipopt).
 
-The symbolic :func:`axisopt.model.axis_response` is built in CasADi on the one-hot mixtures of the part
-parameters (:mod:`axisopt.search.minlp.formulation`) and its expression graph is translated to SCIP:
+The symbolic :func:`axisopt.model.axis_response` is built in CasADi on the one-hot mixtures of the
+part parameters (:mod:`axisopt.search.minlp.formulation`) and its expression graph is translated
+to SCIP:
 
-* a node that depends on the parts of one slot only (a nut, bearing or guide-and-drive property, however
-  nonlinear) is exact as ``sum_i z_i v_i`` with ``v_i`` its value for part i, computed numerically;
-* every other node becomes the SCIP expression of its operation (+ - * /, powers, sqrt, exp, log, abs);
-  ``fmin``/``fmax`` are ``(a + b -/+ |a - b|)/2``; a comparison is a binary tied to the sign of its
-  difference by two indicator constraints, ``if_else`` is a product with that binary;
+* a node that depends on the parts of one slot only (a nut, bearing or guide-and-drive property,
+  however nonlinear) is exact as ``sum_i z_i v_i`` with ``v_i`` its value for part i, computed
+  numerically;
+* every other node becomes the SCIP expression of its operation (+ - * /, powers, sqrt, exp, log,
+  abs); ``fmin``/``fmax`` are ``(a + b -/+ |a - b|)/2``; a comparison is a binary tied to the sign
+  of its difference by two indicator constraints, ``if_else`` is a product with that binary;
 * a node used more than once, or a large expression, becomes a scaled auxiliary variable
-  (``v = s * y``, ``y`` of order one) so that SCIP sees a DAG, not an exploding tree, at sane magnitudes;
-* the double nut's shift (:func:`axisopt.physics.nut.double_nut_shift`, unrolled Newton steps whose relaxation
-  is useless to a global solver) becomes a variable s with its defining equation
+  (``v = s * y``, ``y`` of order one) so that SCIP sees a DAG, not an exploding tree, at sane
+  magnitudes;
+* the double nut's shift (:func:`axisopt.physics.nut.double_nut_shift`, unrolled Newton steps whose
+  relaxation is useless to a global solver) becomes a variable s with its defining equation
   ``(1+s)^{3/2} - (1-s)_+^{3/2} = f`` (monotone: tight bounds).
 """
 
@@ -34,9 +37,10 @@ _BUILD_LOCK = threading.Lock()  # the shift is swapped in a module: one build at
 
 @contextlib.contextmanager
 def implicit_shift(record: list):
-    """While building the model: :func:`axisopt.physics.nut.double_nut_shift` (12 unrolled Newton steps, whose
-    relaxation is useless to a global solver) returns a fresh symbol s and records its force ratio f, so that
-    SCIP gets the defining equation (1+s)^{3/2} - (1-s)_+^{3/2} = f instead (monotone: tight bounds)."""
+    """While building the model: :func:`axisopt.physics.nut.double_nut_shift` (12 unrolled Newton
+    steps, whose relaxation is useless to a global solver) returns a fresh symbol s and records its
+    force ratio f, so that SCIP gets the defining equation (1+s)^{3/2} - (1-s)_+^{3/2} = f instead
+    (monotone: tight bounds)."""
     from ...physics import nut as pn
 
     def shift(force_ratio):
@@ -54,8 +58,9 @@ def implicit_shift(record: list):
 
 
 def casadi_model(space, mounting, constraints, objective):
-    """(f, shift): f(z_nut, z_bearing, z_guide, P, s) -> [objective term profiles..., constraint values...,
-    force ratios of the nut shifts s]; ``shift`` is the model's own shift function (numeric)."""
+    """(f, shift): f(z_nut, z_bearing, z_guide, P, s) -> [objective term profiles..., constraint
+    values..., force ratios of the nut shifts s]; ``shift`` is the model's own shift function
+    (numeric)."""
     z = one_hot_symbols(space)
     pre = ca.SX.sym("P")
     p = one_hot_params(space, mounting, z)
@@ -106,9 +111,9 @@ _BINARY = {
 
 
 class Graph:
-    """The expression graph of a CasADi SX Function as nodes (op, args), with each node's dependency mask
-    (bit i for input i: nut 1, bearing 2, guide-and-drive 4, preload 8, nut shifts 16), its use count and its
-    numeric value on a batch of points."""
+    """The expression graph of a CasADi SX Function as nodes (op, args), with each node's dependency
+    mask (bit i for input i: nut 1, bearing 2, guide-and-drive 4, preload 8, nut shifts 16), its use
+    count and its numeric value on a batch of points."""
 
     def __init__(self, f: ca.Function):
         self.op, self.args, self.const, self.dep = [], [], [], []
@@ -169,9 +174,10 @@ class Graph:
 
 
 class Translator:
-    """The SCIP expression of each graph node (memoized), on the model ``m`` with the part binaries ``z`` (slot ->
-    variables), the preload variable and the nut-shift variables; ``columns``: slot -> the batch columns where
-    that slot runs over its parts (the numeric values of a folded node)."""
+    """The SCIP expression of each graph node (memoized), on the model ``m`` with the part binaries
+    ``z`` (slot -> variables), the preload variable and the nut-shift variables; ``columns``: slot
+    -> the batch columns where that slot runs over its parts (the numeric values of a folded
+    node)."""
 
     def __init__(self, ps, m, graph: Graph, z: dict, pre, shifts: list, columns: dict):
         self.ps, self.m, self.g, self.z, self.pre, self.shifts = ps, m, graph, z, pre, shifts
@@ -198,8 +204,8 @@ class Translator:
         return 2.0 ** round(np.log2(s)) if s > 0 else 1.0
 
     def aux(self, node, expr, lb=None, ub=None, s=None, name=""):
-        """A scaled auxiliary variable equal to ``expr``: returns ``s * y`` (``s`` by default the node's
-        largest magnitude on the sample points, a power of 2)."""
+        """A scaled auxiliary variable equal to ``expr``: returns ``s * y`` (``s`` by default the
+        node's largest magnitude on the sample points, a power of 2)."""
         s = self.scale(node) if s is None else s
         name = name or f"v{node}"
         y = self.m.addVar(
@@ -295,8 +301,8 @@ class Translator:
         raise NotImplementedError(f"CasADi operation {op} has no SCIP translation")
 
     def _compare(self, node, a, b):
-        """A binary d with d = 1 => a <= b and d = 0 => a >= b (equality may go either way: the model's
-        branches agree there or the tie has measure zero)."""
+        """A binary d with d = 1 => a <= b and d = 0 => a >= b (equality may go either way: the
+        model's branches agree there or the tie has measure zero)."""
         d = self.m.addVar(f"d{node}", vtype="B")
         s = max(self.scale(n) for n in self.g.args[node])
         diff = self.aux(node, a - b, s=s, name=f"diff{node}")

@@ -1,17 +1,17 @@
-"""The limits of a problem as the search checks them: :class:`Constraint` (one per limit and vendor-check
-margin), built from the problem by :func:`build_constraints`.
+"""The limits of a problem as the search checks them: :class:`Constraint` (one per limit and
+vendor-check margin), built from the problem by :func:`build_constraints`.
 
 Everything a constraint knows comes from the model's tables: the output it reads and its sense from
-:data:`axisopt.model.limits.LIMIT_TABLE` (a margin from ``CHECK_TABLE``), how that output moves with the
-nut preload from ``OUTPUT_PRELOAD`` (:class:`Preload`), whether it is a profile over the stroke from
-:data:`axisopt.model.PROFILE_OUTPUTS`.  From the direction and the sense follow the preload end that
-favours the limit (:attr:`Constraint.favourable`) and the form every solver is given
+:data:`axisopt.model.limits.LIMIT_TABLE` (a margin from ``CHECK_TABLE``), how that output moves with
+the nut preload from ``OUTPUT_PRELOAD`` (:class:`Preload`), whether it is a profile over the stroke
+from :data:`axisopt.model.PROFILE_OUTPUTS`.  From the direction and the sense follow the preload end
+that favours the limit (:attr:`Constraint.favourable`) and the form every solver is given
 (:meth:`Constraint.scaled`, the one scaling used by IPOPT, Bonmin and SCIP).
 
-Preload structure (from the model; default == exhaustive in tests/search checks it): the minimum stiffness
-and frequency, the drag torque and the nut lift-off margin are nondecreasing in the nut preload, the nut life
-is nonincreasing, the motor-torque margins are met on an interval of preloads, every other output is
-independent of it.
+Preload structure (from the model; default == exhaustive in tests/search checks it): the minimum
+stiffness and frequency, the drag torque and the nut lift-off margin are nondecreasing in the nut
+preload, the nut life is nonincreasing, the motor-torque margins are met on an interval of preloads,
+every other output is independent of it.
 """
 
 from __future__ import annotations
@@ -49,8 +49,8 @@ class End(enum.Enum):
 
 
 # a part's value at its limit within this relative amount meets it: a nut's 0.05 mm play is
-# 5.000000000000001e-05 m and a 50 um limit 4.9999999999999996e-05 m once converted to SI, and the part at
-# the limit was refused
+# 5.000000000000001e-05 m and a 50 um limit 4.9999999999999996e-05 m once converted to SI, and the
+# part at the limit was refused
 EQ_RTOL = 1e-9
 
 
@@ -67,8 +67,8 @@ class Constraint:
     label: str
     unit: str
     factor: float  # SI per display unit
-    # derived from the fields above (set in __post_init__), read in the search's inner loops
-    # the output is a profile over the stroke
+    # derived from the fields above (set in __post_init__), read in the search's inner loops the
+    # output is a profile over the stroke
     profile: bool = field(init=False, repr=False, compare=False)
     # satisfied on an interval of preloads
     convex: bool = field(init=False, repr=False, compare=False)
@@ -99,8 +99,9 @@ class Constraint:
         return min_last(v) if self.profile else v
 
     def ok(self, v):
-        """Whether ``v`` meets the limit; a value that does not depend on the preload (a part's play, a
-        price) meets it within :data:`EQ_RTOL` (the preload searches find exact boundaries themselves)."""
+        """Whether ``v`` meets the limit; a value that does not depend on the preload (a part's
+        play, a price) meets it within :data:`EQ_RTOL` (the preload searches find exact boundaries
+        themselves)."""
         slack = EQ_RTOL * abs(self.limit) if self.direction == 0 else 0.0
         return v <= self.limit + slack if self.sense == "<=" else v >= self.limit - slack
 
@@ -115,10 +116,11 @@ class Constraint:
         return np.where(m > (EQ_RTOL if self.direction == 0 else 0.0), m, 0.0)
 
     def scaled(self, v, limit=None):
-        """The constraint as a solver sees it, ``scaled(v) >= 0`` for ``>=`` and ``<= 0`` for ``<=``: the
-        logarithm of the ratio for a life or a margin (ratios over decades), else the ratio minus one, and for
-        a limit of 0 (``max_backlash: 0``) the value in display units.  ``limit``: the limit as a solver
-        parameter (default: :attr:`limit`).  ``v`` numpy or CasADi."""
+        """The constraint as a solver sees it, ``scaled(v) >= 0`` for ``>=`` and ``<= 0`` for
+        ``<=``: the logarithm of the ratio for a life or a margin (ratios over decades), else the
+        ratio minus one, and for a limit of 0 (``max_backlash: 0``) the value in display units.
+        ``limit``: the limit as a solver parameter (default: :attr:`limit`).  ``v`` numpy or
+        CasADi."""
         lim = self.limit if limit is None else limit
         if self.key == "life" or check_name(self.key) is not None:
             return mathx.log(mathx.fmax(v, 1e-300) / lim)
@@ -128,7 +130,8 @@ class Constraint:
 
 
 def reads_regen(constraints) -> bool:
-    """Whether a limit reads the regenerated energy or power (the drive block skips that sum otherwise)."""
+    """Whether a limit reads the regenerated energy or power (the drive block skips that sum
+    otherwise)."""
     return any(c.key in REGEN_OUTPUTS for c in constraints)
 
 
@@ -139,7 +142,8 @@ def as_vector(v, K):
 
 
 def ok_all(cons, out, K):
-    """(K,) bool: every constraint of ``cons`` met by the model outputs ``out`` of K combinations."""
+    """(K,) bool: every constraint of ``cons`` met by the model outputs ``out`` of K
+    combinations."""
     ok = np.ones(K, dtype=bool)
     for c in cons:
         ok &= as_vector(c.ok(c.value(out)), K).astype(bool)
@@ -181,7 +185,7 @@ def build_constraints(problem: Problem) -> tuple[Constraint, ...]:
 
 
 def limit_constraint(key: str, value: float, name: str, label: str) -> Constraint:
-    """The problem limit ``key`` (``LIMIT_TABLE``) at ``value`` [SI] under another name and label (the
-    lexicographic objective's floor on its primary)."""
+    """The problem limit ``key`` (``LIMIT_TABLE``) at ``value`` [SI] under another name and label
+    (the lexicographic objective's floor on its primary)."""
     lim = LIMITS[key]
     return Constraint(name, lim.output, lim.sense, value, lim.preload, label, lim.unit, lim.factor)

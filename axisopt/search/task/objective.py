@@ -1,9 +1,10 @@
 """The scalar objective of a search and its tie rule.
 
-:class:`ObjectiveSpec` (a weighted sum of performance minima, maximised, in display units) is derived from
-:data:`axisopt.model.goals.OBJECTIVE_TABLE` by :func:`objective_spec`; :func:`rank_order` and
-:func:`objective_floor` are the tie rule every method shares: objective values within :data:`TIE_RTOL` count as
-equal and go to the lower cost, then the lower total mass, then the lower combination number.
+:class:`ObjectiveSpec` (a weighted sum of performance minima, maximised, in display units) is
+derived from :data:`axisopt.model.goals.OBJECTIVE_TABLE` by :func:`objective_spec`;
+:func:`rank_order` and :func:`objective_floor` are the tie rule every method shares: objective
+values within :data:`TIE_RTOL` count as equal and go to the lower cost, then the lower total mass,
+then the lower combination number.
 """
 
 from __future__ import annotations
@@ -57,8 +58,8 @@ class ObjectiveSpec:
 
     @property
     def sign(self) -> float:
-        """-1 for a least cost or mass (the search maximises its negative), else 1: the sign that turns the
-        search's objective into the value shown."""
+        """-1 for a least cost or mass (the search maximises its negative), else 1: the sign that
+        turns the search's objective into the value shown."""
         return -1.0 if self.terms and all(w < 0 for _, w in self.terms) else 1.0
 
     def value(self, out, axis=-1):
@@ -69,8 +70,8 @@ class ObjectiveSpec:
 
 
 def objective_spec(kind: str, problem: Problem | None = None) -> ObjectiveSpec:
-    """The objective of the mode ``kind`` (a scalar goal of ``OBJECTIVE_TABLE``, or ``'weighted'`` with the
-    weights and scales of ``problem``)."""
+    """The objective of the mode ``kind`` (a scalar goal of ``OBJECTIVE_TABLE``, or ``'weighted'``
+    with the weights and scales of ``problem``)."""
     g = GOALS.get(kind)
     # a least cost or mass is maximised as its negative (ObjectiveSpec.sign)
     if g is not None and g.mode:
@@ -87,8 +88,8 @@ def objective_spec(kind: str, problem: Problem | None = None) -> ObjectiveSpec:
 
 
 def rank_order(objective, cost, mass, idx, top: int) -> np.ndarray:
-    """Positions of the ``top`` best entries: highest objective; values within TIE_RTOL count as equal
-    and go to the lower cost, then the lower total mass, then the lower combination number."""
+    """Positions of the ``top`` best entries: highest objective; values within TIE_RTOL count as
+    equal and go to the lower cost, then the lower total mass, then the lower combination number."""
     objective = np.asarray(objective, float)
     finite = np.isfinite(objective)
     pos = np.nonzero(finite)[0]

@@ -1,4 +1,5 @@
-"""The effect registry (:mod:`axisopt.identify.effects`): a user's effect competes like the built-ins."""
+"""The effect registry (:mod:`axisopt.identify.effects`): a user's effect competes like the
+built-ins."""
 
 from pathlib import Path
 

@@ -1,12 +1,14 @@
-"""Effects that only time records show (:mod:`axisopt.identify.effects.disturbance`): a force periodic in time,
-friction local to one place on the stroke and friction that drifts within a run.  Each is hidden in records
-simulated by :mod:`axisopt.identify.records.synth` (the closed loop written apart from the identification) with
-its physics written here, in this file, as the simulator's ``extra_force`` / ``extra_friction``: alone and
-beside an effect of the library, over several seeds, noise levels and parameter values.  The diagnosis must
-name it with its parameters within 10 % (frequency within 2 % of itself, position within 2 % of the stroke),
-give it no other effect's name, and leave no unexplained structure; with the class left out of the library
-the residual signature (:mod:`axisopt.identify.records.signature`) must locate it (frequency, position, time
-constant).  Null and decoy records name none of the three and show none of the three signatures."""
+"""Effects that only time records show (:mod:`axisopt.identify.effects.disturbance`): a force
+periodic in time, friction local to one place on the stroke and friction that drifts within a run.
+Each is hidden in records simulated by :mod:`axisopt.identify.records.synth` (the closed loop
+written apart from the identification) with its physics written here, in this file, as the
+simulator's ``extra_force`` / ``extra_friction``: alone and beside an effect of the library, over
+several seeds, noise levels and parameter values.  The diagnosis must name it with its parameters
+within 10 % (frequency within 2 % of itself, position within 2 % of the stroke), give it no other
+effect's name, and leave no unexplained structure; with the class left out of the library the
+residual signature (:mod:`axisopt.identify.records.signature`) must locate it (frequency, position,
+time constant).  Null and decoy records name none of the three and show none of the three
+signatures."""
 
 import math
 
@@ -33,7 +35,8 @@ STROKE = 0.8  # [m] of table_x.yaml
 # ----------------------------------------------------------------------- the hidden physics (this
 # file's own)
 def periodic_force(f_hz, amp, phase):
-    """A force in -x the drive must supply: amp sin(2 pi f t + phase) [N] (a pump's or spindle's unbalance)."""
+    """A force in -x the drive must supply: amp sin(2 pi f t + phase) [N] (a pump's or spindle's
+    unbalance)."""
     return lambda t, x, v: amp * math.sin(2.0 * math.pi * f_hz * t + phase)
 
 
@@ -43,7 +46,8 @@ def spot_friction(x0, width, height):
 
 
 def warm_up(amp, tau):
-    """A Coulomb level raised by amp exp(-t/tau) [N] from the start of each run (the lubricant warming)."""
+    """A Coulomb level raised by amp exp(-t/tau) [N] from the start of each run (the lubricant
+    warming)."""
     return lambda t, x: amp * math.exp(-t / tau)
 
 
@@ -129,9 +133,8 @@ def test_friction_drift_is_named_with_its_amplitude_and_time_constant(
 
 
 # ------------------------------------------------------------------------------- named beside
-# another effect
-# seed, the hidden class and its physics, the library effect beside it, (shape, true value,
-# tolerance)
+# another effect seed, the hidden class and its physics, the library effect beside it, (shape, true
+# value, tolerance)
 BESIDE = [
     (
         61,
@@ -198,9 +201,10 @@ def test_a_line_left_unexplained_is_located_in_frequency_and_not_tied_to_speed(t
 
 
 def test_a_line_above_the_fitted_band_is_no_resonance_and_is_located(tmp_path, plant):
-    """29 Hz against a 47 Hz position filter: above the band time_periodic is fitted in (0.6x the cut-off, where
-    the filter's attenuation of the table's response would bias the amplitude); the steady line is not taken
-    for a resonance (extra_mode not tried), nothing is named and the signature gives the frequency."""
+    """29 Hz against a 47 Hz position filter: above the band time_periodic is fitted in (0.6x the
+    cut-off, where the filter's attenuation of the table's response would bias the amplitude); the
+    steady line is not taken for a resonance (extra_mode not tried), nothing is named and the
+    signature gives the frequency."""
     truth = truth_for(33, extra_force=periodic_force(29.0, 70.0, 2.5))
     diag = diagnose_time_files(
         records(tmp_path, truth, 33, loop=LoopSettings(force_noise=10.0)), plant=plant
@@ -212,8 +216,9 @@ def test_a_line_above_the_fitted_band_is_no_resonance_and_is_located(tmp_path, p
 
 
 def test_a_line_from_a_ripple_in_position_is_tied_to_speed(tmp_path, plant):
-    """A ripple over 25 mm (no lead harmonic) shows in time only at the speed where v/P is in the band: the line
-    signature (when it shows) says it is tied to speed; the period signature comes first either way."""
+    """A ripple over 25 mm (no lead harmonic) shows in time only at the speed where v/P is in
+    the band: the line signature (when it shows) says it is tied to speed; the period signature
+    comes first either way."""
     truth = truth_for(3, ripple=40.0, ripple_period=0.025)
     diag = diagnose_time_files(records(tmp_path, truth, 3), plant=plant)
     assert not set(diag.verdict) & set(NEW)
@@ -244,10 +249,10 @@ def test_a_drift_left_unexplained_gives_its_time_constant(tmp_path, plant):
 
 
 def test_the_line_scan_of_windows_off_the_decimation_grid_equals_the_direct_sums():
-    """A long record's windows start at any sample, so the kept rows (every 3rd sample in each window) lie
-    on the sample grid but not on the grid of their smallest gap: the FFT form on the sample grid must give
-    the direct Lomb-Scargle sums (the line at 13.7 Hz found at the same frequency, the scores within the
-    interpolation of the finer grid)."""
+    """A long record's windows start at any sample, so the kept rows (every 3rd sample in each
+    window) lie on the sample grid but not on the grid of their smallest gap: the FFT form on the
+    sample grid must give the direct Lomb-Scargle sums (the line at 13.7 Hz found at the same
+    frequency, the scores within the interpolation of the finer grid)."""
     import numpy as np
 
     from axisopt.identify.effects import disturbance as dist

@@ -1,7 +1,8 @@
-"""Null and decoy records name none of the time-record classes of :mod:`axisopt.identify.effects.disturbance` and
-show none of their signatures; bad input (a run too short for the line asked, NaN time stamps); their
-calibration saved for evaluate; equally good explanations; an effect named outside its plausible regime.  The
-hidden physics is in test_timedisturbance.py (written apart from the identification)."""
+"""Null and decoy records name none of the time-record classes of
+:mod:`axisopt.identify.effects.disturbance` and show none of their signatures; bad input (a run too
+short for the line asked, NaN time stamps); their calibration saved for evaluate; equally good
+explanations; an effect named outside its plausible regime.  The hidden physics is in
+test_timedisturbance.py (written apart from the identification)."""
 
 import pytest
 from identify_helpers import DESIGN, LEAD, records, truth_for, unexplained
@@ -38,8 +39,8 @@ def test_null_and_decoy_records_name_none_of_the_new_classes(tmp_path, plant, se
 # ------------------------------------------------------------------------------------------------
 # bad input
 def test_a_run_too_short_for_the_line_asked_is_an_input_error(tmp_path, capsys):
-    """time_periodic asked by name on 0.8 s of record: no line can be resolved (20 periods at the highest
-    frequency fitted need more motion): one line naming the file, exit 2."""
+    """time_periodic asked by name on 0.8 s of record: no line can be resolved (20 periods at the
+    highest frequency fitted need more motion): one line naming the file, exit 2."""
     from axisopt.cli import main
 
     truth = truth_for(35, extra_force=periodic_force(12.0, 60.0, 0.0))
@@ -75,8 +76,9 @@ def test_nan_time_stamps_are_an_input_error(tmp_path, capsys):
 def test_save_calibration_of_a_time_record_is_read_by_evaluate(
     tmp_path, capsys, name, effect, key, true, unit
 ):
-    """The shipped example (problems/data/generate_timerecord.py) saved as a calibration: the effect with its
-    parameters in units; evaluate applies the Coulomb friction and lists the effect as not representable."""
+    """The shipped example (problems/data/generate_timerecord.py) saved as a calibration: the effect
+    with its parameters in units; evaluate applies the Coulomb friction and lists the effect as not
+    representable."""
     import yaml
 
     from axisopt.cli import main
@@ -112,8 +114,8 @@ def test_save_calibration_of_a_time_record_is_read_by_evaluate(
 # the regime
 @pytest.fixture
 def twin_of_stribeck():
-    """A second effect with Stribeck's columns under another name and its own evidence: the data cannot tell the
-    two apart, whatever the record."""
+    """A second effect with Stribeck's columns under another name and its own evidence: the data
+    cannot tell the two apart, whatever the record."""
     from dataclasses import replace as dc_replace
 
     from axisopt.identify.effects import Effect, register_effect, time_effects, unregister_effect
@@ -146,8 +148,9 @@ def test_two_effects_that_explain_the_data_equally_are_said_to_be_and_separated(
 
 
 def test_an_effect_named_outside_its_plausible_regime_is_flagged(tmp_path, plant, monkeypatch):
-    """A drag c v|v| hidden in a record that never exceeds 7 mm/s: when quadratic_drag is named, its declaration
-    says the reading is implausible at that speed (churning and seal drag show from tens of mm/s)."""
+    """A drag c v|v| hidden in a record that never exceeds 7 mm/s: when quadratic_drag is named, its
+    declaration says the reading is implausible at that speed (churning and seal drag show from tens
+    of mm/s)."""
     from axisopt.identify.records import synth as timesynth
 
     monkeypatch.setattr(

@@ -1,8 +1,8 @@
-"""Friction that depends on the load (:mod:`axisopt.identify.effects.load`), hidden in data written by the
-tests' own physics (``sim_tables`` for friction tables, ``sim_cascade`` for time records under a P-PI cascade
-with coloured force noise), alone and beside a library effect, over seeds, noise colours, jitter and
-parameter values.  The diagnosis must name it with its parameter within 10 %; nulls and decoys name nothing
-and claim no unexplained structure."""
+"""Friction that depends on the load (:mod:`axisopt.identify.effects.load`), hidden in data written
+by the tests' own physics (``sim_tables`` for friction tables, ``sim_cascade`` for time records
+under a P-PI cascade with coloured force noise), alone and beside a library effect, over seeds,
+noise colours, jitter and parameter values.  The diagnosis must name it with its parameter within 10
+%; nulls and decoys name nothing and claim no unexplained structure."""
 
 import numpy as np
 import pytest
@@ -61,8 +61,8 @@ def test_nut_friction_growing_with_axial_load_is_named_in_a_table(
 
 
 def test_axial_load_share_is_signed_by_direction(tmp_path, plant):
-    """A friction that grows with |F_a| both ways averages to nothing over the two directions: the misfit
-    table takes its share of sgn(v) times the residual."""
+    """A friction that grows with |F_a| both ways averages to nothing over the two directions: the
+    misfit table takes its share of sgn(v) times the residual."""
     path = write_table(
         tmp_path / "a.csv",
         friction_rows(
@@ -192,7 +192,8 @@ def test_nut_friction_beside_stribeck_in_a_time_record(tmp_path, plant):
     "seed, rho, fs", [(41, 0.5, 500.0), pytest.param(42, 0.9, 1000.0, marks=pytest.mark.slow)]
 )
 def test_null_time_record_with_coloured_noise_names_nothing(tmp_path, plant, seed, rho, fs):
-    """A process force without a load-dependent loss (a decoy for nut_axial_friction) and coloured force
+    """A process force without a load-dependent loss (a decoy for nut_axial_friction) and coloured
+    force
     noise: no effect, no claimed structure (the noise floor sees the colour)."""
     ax = Axis(mass=700.0, fc=300.0, fv=1800.0, load_amp=2500.0)
     diag = diagnose_time_files(_records(tmp_path, ax, Loop(fs=fs, rho=rho), seed), plant=plant)

@@ -1,8 +1,8 @@
-"""Friction laws in temperature (:mod:`axisopt.identify.effects.load`): the viscous friction following the
-lubricant's viscosity, the Coulomb level changing with temperature, hidden in friction tables (``sim_tables``)
-and time records (``sim_cascade``) written by the tests' own physics.  A warm-up recorded with its
-temperature is told from a drift with time (``friction_drift``) by the validation run that starts warm.  A
-temperature column with a NaN is a one-line error."""
+"""Friction laws in temperature (:mod:`axisopt.identify.effects.load`): the viscous friction
+following the lubricant's viscosity, the Coulomb level changing with temperature, hidden in friction
+tables (``sim_tables``) and time records (``sim_cascade``) written by the tests' own physics.  A
+warm-up recorded with its temperature is told from a drift with time (``friction_drift``) by the
+validation run that starts warm.  A temperature column with a NaN is a one-line error."""
 
 import numpy as np
 import pytest

@@ -1,5 +1,5 @@
-"""Time-record estimators (:mod:`axisopt.identify.records.estimators`): without a reference column IV uses
-delayed regressors as instruments."""
+"""Time-record estimators (:mod:`axisopt.identify.records.estimators`): without a reference column
+IV uses delayed regressors as instruments."""
 
 import pytest
 from identify_helpers import assert_timesynth_axis, close, records

@@ -1,8 +1,8 @@
-"""Time-record identification (:mod:`axisopt.identify.records.idim`, LS and IV): baseline recovery, hidden effects
-named with their parameters, null cases and decoys, implausible effects not accepted.
+"""Time-record identification (:mod:`axisopt.identify.records.idim`, LS and IV): baseline recovery,
+hidden effects named with their parameters, null cases and decoys, implausible effects not accepted.
 
-The records come from :mod:`axisopt.identify.records.synth`, a closed-loop simulator written apart from the
-identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 1 kHz)."""
+The records come from :mod:`axisopt.identify.records.synth`, a closed-loop simulator written apart
+from the identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 1 kHz)."""
 
 import math
 
@@ -117,9 +117,10 @@ def test_decoy_stribeck_is_not_viscous_or_position(tmp_path, plant):
 
 
 def test_implausible_time_effect_is_not_accepted(tmp_path, plant):
-    """Friction that *drops* at low speed (a negative Stribeck excess, -40 % of Coulomb) fits the Stribeck
-    term only with Fs < 0, outside its physical range: with Stribeck the only candidate, nothing is accepted
-    and the output says what it would need.  Control: the same record with a positive excess is accepted."""
+    """Friction that *drops* at low speed (a negative Stribeck excess, -40 % of Coulomb) fits the
+    Stribeck term only with Fs < 0, outside its physical range: with Stribeck the only candidate,
+    nothing is accepted and the output says what it would need.  Control: the same record with a
+    positive excess is accepted."""
     rng = np.random.default_rng(7)
     base = dict(mass=500.0, viscous=1200.0, coulomb=400.0, offset=20.0)
     bad = AxisTruth(**base, stribeck=-160.0, stribeck_v=0.005)

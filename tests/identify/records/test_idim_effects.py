@@ -1,10 +1,11 @@
-"""Time-record effects at the edge of the library (:mod:`axisopt.identify.records.idim`): a ripple at the lead and a
-quadratic drag named (not an extra mode, an asymmetry or a position friction), baseline plausibility and
-identifiability flags, the external-force column in the dynamics.
+"""Time-record effects at the edge of the library (:mod:`axisopt.identify.records.idim`): a ripple
+at the lead and a quadratic drag named (not an extra mode, an asymmetry or a position friction),
+baseline plausibility and identifiability flags, the external-force column in the dynamics.
 
-The records come from :mod:`axisopt.identify.records.synth`, the closed-loop simulator written apart from the
-identification (its ripple is ``sin(2 pi x / period + phase)`` on the simulated table, its drag ``c v|v|``);
-nothing here builds data with the columns of the time-record effects (:mod:`axisopt.identify.effects`)."""
+The records come from :mod:`axisopt.identify.records.synth`, the closed-loop simulator written apart
+from the identification (its ripple is ``sin(2 pi x / period + phase)`` on the simulated table, its
+drag ``c v|v|``); nothing here builds data with the columns of the time-record effects
+(:mod:`axisopt.identify.effects`)."""
 
 import math
 
@@ -22,7 +23,8 @@ from axisopt.report.timediag import time_diagnosis_text
 # library lacked
 @pytest.mark.parametrize("seed", [1, 2, 3, 4])
 def test_lead_ripple_is_named_not_an_extra_mode(tmp_path, plant, seed):
-    """A 40 N force ripple with the lead's period (sin(2 pi x / lead)) was named extra_mode in 3 of 4 seeds."""
+    """A 40 N force ripple with the lead's period (sin(2 pi x / lead)) was named extra_mode in 3 of
+    4 seeds."""
     truth = truth_for(seed, ripple=40.0, ripple_period=LEAD, ripple_phase=0.7 * seed)
     diag = diagnose_time_files(records(tmp_path, truth, seed), plant=plant)
     assert diag.verdict and diag.verdict[0] == "lead_ripple", diag.verdict
@@ -36,8 +38,8 @@ def test_lead_ripple_is_named_not_an_extra_mode(tmp_path, plant, seed):
 
 
 def test_friction_ripple_at_half_the_lead(tmp_path, plant):
-    """A friction ripple (follows sgn v) at the second harmonic of the lead: the same effect, its friction
-    columns, period lead/2."""
+    """A friction ripple (follows sgn v) at the second harmonic of the lead: the same effect, its
+    friction columns, period lead/2."""
     truth = truth_for(5, ripple=50.0, ripple_period=LEAD / 2, ripple_friction=True)
     diag = diagnose_time_files(records(tmp_path, truth, 5), plant=plant)
     assert diag.verdict[:1] == ["lead_ripple"], diag.verdict
@@ -48,8 +50,8 @@ def test_friction_ripple_at_half_the_lead(tmp_path, plant):
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_quadratic_drag_is_named_not_asymmetry_or_position(tmp_path, plant, seed):
-    """A symmetric c v|v| drag was named direction_asymmetry or position_friction, or nothing while the force
-    error stayed at 6-9 %."""
+    """A symmetric c v|v| drag was named direction_asymmetry or position_friction, or nothing while
+    the force error stayed at 6-9 %."""
     c = 3000.0 * (1 + 0.3 * seed)
     diag = diagnose_time_files(
         records(tmp_path, truth_for(seed, quadratic_drag=c), seed), plant=plant
@@ -63,8 +65,8 @@ def test_quadratic_drag_is_named_not_asymmetry_or_position(tmp_path, plant, seed
 # -----------------------------------------------------------------------------------------------
 # plausibility
 def test_sign_flipped_effort_is_flagged_not_reported_as_a_fit(tmp_path, plant):
-    """A force column recorded with the wrong sign gives a negative mass and Coulomb friction: flagged with an
-    explanation, never printed as a plain fit."""
+    """A force column recorded with the wrong sign gives a negative mass and Coulomb friction:
+    flagged with an explanation, never printed as a plain fit."""
     rec = simulate_axis(truth_for(6), duration=8.0, seed=6)
     rec.force = -rec.force
     path = tmp_path / "flipped.csv"
@@ -93,8 +95,8 @@ def test_degenerate_term_is_unidentifiable_not_zero_uncertainty():
 # --------------------------------------------------------------------------------------------------
 # - inputs
 def test_external_force_column_is_used_in_the_dynamics(tmp_path, plant):
-    """A process force of up to 300 N on the table: with the column the baseline is recovered and nothing is
-    named; without it the fit is far worse."""
+    """A process force of up to 300 N on the table: with the column the baseline is recovered and
+    nothing is named; without it the fit is far worse."""
     truth = AxisTruth(mass=500.0, viscous=1200.0, coulomb=300.0, offset=20.0, process_force=300.0)
     cols = ("time", "position", "force", "reference", "external_force")
     paths = records(tmp_path, truth, 7, columns=cols)

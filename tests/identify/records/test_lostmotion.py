@@ -1,7 +1,8 @@
-"""Lost motion (backlash) between motor and table in time records (:mod:`axisopt.identify.records.lostmotion`):
-hidden in records simulated by identify/records/synth (a motor-side mass tied to the table by a spring with a
-dead zone, closed loop on the table's scale; written apart from the identification code), measured from a
-motor_position column beside the table's position, never named on records without lost motion."""
+"""Lost motion (backlash) between motor and table in time records
+(:mod:`axisopt.identify.records.lostmotion`): hidden in records simulated by identify/records/synth
+(a motor-side mass tied to the table by a spring with a dead zone, closed loop on the table's scale;
+written apart from the identification code), measured from a motor_position column beside the
+table's position, never named on records without lost motion."""
 
 from __future__ import annotations
 
@@ -69,7 +70,8 @@ def test_hidden_backlash_is_named_with_its_width(tmp_path, plant, seed, backlash
 
 @pytest.mark.parametrize("seed, mode_hz", [(3, 30.0), (6, 45.0), (7, 0.0)])
 def test_no_lost_motion_names_no_backlash(tmp_path, plant, seed, mode_hz):
-    """A compliant transmission without a gap (windup only), and a rigid axis whose motor and table read the
+    """A compliant transmission without a gap (windup only), and a rigid axis whose motor and table
+    read the
     same: no backlash."""
     diag = diagnose_time_files(records(tmp_path, truth_for(seed, 0.0, mode_hz), seed), plant=plant)
     assert "backlash" not in diag.verdict
@@ -78,8 +80,9 @@ def test_no_lost_motion_names_no_backlash(tmp_path, plant, seed, mode_hz):
 
 
 def test_without_a_motor_encoder_backlash_is_not_guessed(tmp_path, plant):
-    """The table's position and the force alone do not show the lost motion (the rows inside the gap are
-    where the axis stands or turns): not named, and the output says which column would measure it."""
+    """The table's position and the force alone do not show the lost motion (the rows inside the gap
+    are where the axis stands or turns): not named, and the output says which column would measure
+    it."""
     truth = truth_for(1, 30e-6, 30.0)
     diag = diagnose_time_files(records(tmp_path, truth, 1, columns=COLS[:4]), plant=plant)
     assert "backlash" not in diag.verdict and diag.lost is None

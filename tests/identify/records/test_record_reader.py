@@ -1,9 +1,9 @@
-"""Time-record reader (:mod:`axisopt.identify.records.record`): current records with a gain (motor side and
-table equivalents), position in revolutions, bad input as one line naming file, line and column, validation
-runs with other columns, a bad external-force column.
+"""Time-record reader (:mod:`axisopt.identify.records.record`): current records with a gain (motor
+side and table equivalents), position in revolutions, bad input as one line naming file, line and
+column, validation runs with other columns, a bad external-force column.
 
-The records come from :mod:`axisopt.identify.records.synth`, a closed-loop simulator written apart from the
-identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 1 kHz)."""
+The records come from :mod:`axisopt.identify.records.synth`, a closed-loop simulator written apart
+from the identification code (PD loop, exact stick-slip, 1 um quantisation, force noise, 1 kHz)."""
 
 import json
 import math
@@ -147,7 +147,8 @@ def test_bad_input_is_one_line_naming_file_line_column(tmp_path, capsys, make, w
 
 
 def test_malformed_gain_is_refused_on_any_record(tmp_path, capsys):
-    """--gain is read only for current records, but a malformed one is still an error, not ignored."""
+    """--gain is read only for current records, but a malformed one is still an error, not
+    ignored."""
     assert main(["diagnose", str(_good(tmp_path)), "--design", str(DESIGN), "--gain", "abc"]) == 2
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and "--gain" in err and "unit per ampere" in err, err

@@ -1,10 +1,10 @@
-"""What a time-record fit leaves unexplained (:mod:`axisopt.identify.records.unexplained`): an effect the library
-does not have is reported with the residual's signature (a drag outside the library, a ripple off the lead or
-at the lead, an external force at the wrong scale); null cases and effects in the library leave nothing; the
-tests are quiet on white noise.
+"""What a time-record fit leaves unexplained (:mod:`axisopt.identify.records.unexplained`): an
+effect the library does not have is reported with the residual's signature (a drag outside the
+library, a ripple off the lead or at the lead, an external force at the wrong scale); null cases and
+effects in the library leave nothing; the tests are quiet on white noise.
 
-The records come from :mod:`axisopt.identify.records.synth`, the closed-loop simulator written apart from the
-identification."""
+The records come from :mod:`axisopt.identify.records.synth`, the closed-loop simulator written apart
+from the identification."""
 
 import pytest
 from identify_helpers import LEAD, records, truth_for, unexplained
@@ -20,9 +20,9 @@ LIBRARY_BEFORE = ["stribeck", "direction_asymmetry", "position_friction", "extra
 # ------------------------------------------------------------------------------------- the
 # unexplained verdict
 def test_drag_outside_the_library_is_unexplained_with_its_signature(tmp_path, plant):
-    """With the library as it was (no quadratic drag), the verdict says a misfit remains and that it grows
-    with v|v|; and the reason for naming nothing is the true one (here Stribeck fits only with an excess
-    beyond its range), not 'no effect lowers BIC'."""
+    """With the library as it was (no quadratic drag), the verdict says a misfit remains and that it
+    grows with v|v|; and the reason for naming nothing is the true one (here Stribeck fits only with
+    an excess beyond its range), not 'no effect lowers BIC'."""
     truth = truth_for(2, quadratic_drag=3000.0)
     diag = diagnose_time_files(records(tmp_path, truth, 2), plant=plant, candidates=LIBRARY_BEFORE)
     un = unexplained(diag)
@@ -40,8 +40,9 @@ def test_drag_outside_the_library_is_unexplained_with_its_signature(tmp_path, pl
 
 
 def test_ripple_off_the_lead_is_unexplained_with_its_period(tmp_path, plant):
-    """A ripple over 25 mm (a recirculation circuit of 2.5 turns) is no harmonic of the 10 mm lead: no effect
-    explains it, the verdict names its period and says it is not the lead; no extra_mode."""
+    """A ripple over 25 mm (a recirculation circuit of 2.5 turns) is no harmonic of the 10 mm lead:
+    no effect explains it, the verdict names its period and says it is not the lead; no
+    extra_mode."""
     truth = truth_for(3, ripple=40.0, ripple_period=0.025)
     diag = diagnose_time_files(records(tmp_path, truth, 3), plant=plant)
     assert "extra_mode" not in diag.verdict and "lead_ripple" not in diag.verdict
@@ -87,8 +88,8 @@ def test_residual_tests_are_quiet_on_white_noise(tmp_path, plant):
 
 
 def test_external_force_at_the_wrong_scale_leaves_a_load_signature(tmp_path, plant):
-    """An external_force column recorded at half its true value: the misfit follows the process force, and the
-    verdict says so (whatever else is fitted)."""
+    """An external_force column recorded at half its true value: the misfit follows the process
+    force, and the verdict says so (whatever else is fitted)."""
     truth = AxisTruth(mass=500.0, viscous=1200.0, coulomb=300.0, offset=20.0, process_force=300.0)
     rec = simulate_axis(truth, duration=12.0, seed=7)
     rec.extra["external_force"] = 0.5 * rec.extra["external_force"]

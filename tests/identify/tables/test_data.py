@@ -1,5 +1,6 @@
-"""Measured-table reader (:mod:`axisopt.identify.tables.data`): units converted and the test type detected, strict
-one-line errors naming file, line and column, excluded rows, the friction sign convention."""
+"""Measured-table reader (:mod:`axisopt.identify.tables.data`): units converted and the test type
+detected, strict one-line errors naming file, line and column, excluded rows, the friction sign
+convention."""
 
 import re
 
@@ -15,7 +16,8 @@ from axisopt.identify import read_dataset
 def test_units_convert_and_kind_is_detected(tmp_path):
     p = write(
         tmp_path,
-        "position [m],force [kN],displacement [mm],temperature [degC]\n0.1,2,0.01,20\n0.2,-2,-0.012,21\n",
+        "position [m],force [kN],displacement [mm],temperature [degC]\n0.1,2,0.01,20\n"
+        "0.2,-2,-0.012,21\n",
     )
     ds = read_dataset(p)
     assert ds.kind == "stiffness"
@@ -101,8 +103,8 @@ def test_excluded_rows_are_reported(tmp_path):
 # ------------------------------------------------------------------------------------------------
 # inputs
 def test_friction_magnitudes_with_signed_speed_are_refused(tmp_path, plant, capsys):
-    """Magnitudes with a negative speed fitted a 39.6 N 'Coulomb' level: now a one-line error with the
-    convention, exit 2."""
+    """Magnitudes with a negative speed fitted a 39.6 N 'Coulomb' level: now a one-line error with
+    the convention, exit 2."""
     fc = coulomb(plant)
     p = friction_table(
         tmp_path / "mag.csv", lambda v: np.sign(v) * fc + plant.viscous * v, magnitudes=True
@@ -116,7 +118,8 @@ def test_friction_magnitudes_with_signed_speed_are_refused(tmp_path, plant, caps
 
 
 def test_vertical_axis_positive_both_ways_is_accepted(tmp_path, plant):
-    """A weight larger than the friction makes the force positive in both directions, but unequal: read."""
+    """A weight larger than the friction makes the force positive in both directions, but unequal:
+    read."""
     fc = coulomb(plant)
     p = friction_table(
         tmp_path / "vertical.csv", lambda v: np.sign(v) * fc + plant.viscous * v + 3 * fc

@@ -1,10 +1,10 @@
-"""Diagnosis of reduced tables (:mod:`axisopt.identify.tables.diagnose`): the CLI end to end, test types sharing
-parameters, null cases, implausible fits never accepted, quantities kept, friction tables (quadratic drag,
-effects that only help together, per-file gains, unidentifiable parameters).
+"""Diagnosis of reduced tables (:mod:`axisopt.identify.tables.diagnose`): the CLI end to end, test
+types sharing parameters, null cases, implausible fits never accepted, quantities kept, friction
+tables (quadratic drag, effects that only help together, per-file gains, unidentifiable parameters).
 
 The friction tables are written here from a friction law of a few lines (sgn(v) levels, a Gaussian
-Stribeck rise, viscous, v|v| drag, a constant), apart from the library's measurement model; other data come
-from :func:`axisopt.identify.tables.synth.simulate` with hidden effects of known size."""
+Stribeck rise, viscous, v|v| drag, a constant), apart from the library's measurement model; other
+data come from :func:`axisopt.identify.tables.synth.simulate` with hidden effects of known size."""
 
 from __future__ import annotations
 
@@ -110,14 +110,11 @@ def test_correct_fixed_fixed_axis_names_nothing():
     d = replace(d, axis=replace(d.axis, mounting="fixed-fixed"))
     plant = plant_from_design(d)
     # by hand: WBK30-DFD 1520 N/um at both ends, each in series with the default housing (26.25 x
-    # the set: IBC's
-    # BSBU 35 DB 128 1050 N/um on its bare 1090 N/um set), root 34.91 mm, E 206 GPa, span 1.1 m;
-    # screw torsion
-    # G pi d^4/(32 x) and the GWB AKN 60 coupling (75e3 N.m/rad) through the 20 mm lead; nut at its
-    # preload
-    # (R40-20K4-FDC 0.8 x 1150 N/um x (3000/5130)^(1/3)), linear at these small loads, and the
-    # default bracket
-    # (4 x 0.8 x 1150 N/um: THK's nut-mounting allowance once more)
+    # the set: IBC's BSBU 35 DB 128 1050 N/um on its bare 1090 N/um set), root 34.91 mm, E 206 GPa,
+    # span 1.1 m; screw torsion G pi d^4/(32 x) and the GWB AKN 60 coupling (75e3 N.m/rad) through
+    # the 20 mm lead; nut at its preload (R40-20K4-FDC 0.8 x 1150 N/um x (3000/5130)^(1/3)), linear
+    # at these small loads, and the default bracket (4 x 0.8 x 1150 N/um: THK's nut-mounting
+    # allowance once more)
     ea = 206e9 * math.pi / 4 * 0.03491**2
     k_b, span, r2 = 1 / (1 / 1520e6 + 40 / (1050 * 1520e6)), 1.1, (0.020 / (2 * math.pi)) ** 2
     k_n = 0.8 * 1150e6 * (3000 / 5130) ** (1 / 3)
@@ -143,9 +140,9 @@ def test_correct_fixed_fixed_axis_names_nothing():
 
 
 def test_implausible_fit_is_not_accepted(plant):
-    """A frequency drop that only an added mass of 3x the table could explain: added_mass is the only
-    candidate, its fit leaves the plausible range (up to the table's own mass), so nothing is accepted and
-    the diagnosis says what it would need."""
+    """A frequency drop that only an added mass of 3x the table could explain: added_mass is the
+    only candidate, its fit leaves the plausible range (up to the table's own mass), so nothing is
+    accepted and the diagnosis says what it would need."""
     m = plant.moving_mass
     ds = simulate(
         plant,
@@ -180,8 +177,8 @@ def test_plausible_version_of_the_same_is_accepted(plant):
 
 
 def test_torque_data_keep_their_quantity(plant, tmp_path, capsys):
-    """Friction measured as screw torque: the output states the conversion and its efficiency, and gives
-    the friction findings in N.m too."""
+    """Friction measured as screw torque: the output states the conversion and its efficiency, and
+    gives the friction findings in N.m too."""
     ds = simulate(
         plant,
         "friction",
@@ -216,9 +213,9 @@ def test_frequency_data_say_there_is_no_baseline_parameter(plant):
 
 
 def test_frf_resonance_by_position(plant):
-    """FRFs at four positions with a hidden extra mode: the table gives, per position, the measured and the
-    fitted resonance (they agree after the fit), the axial mode's damping as hidden, and the extra mode.  The
-    measured peak moves down the stroke (a longer screw in tension is softer)."""
+    """FRFs at four positions with a hidden extra mode: the table gives, per position, the measured
+    and the fitted resonance (they agree after the fit), the axial mode's damping as hidden, and the
+    extra mode.  The measured peak moves down the stroke (a longer screw in tension is softer)."""
     from test_diagnose_recovery import frf_doe
 
     ds = simulate(
@@ -273,9 +270,9 @@ def test_null_friction_table_names_nothing_and_leaves_nothing(tmp_path, plant, s
 
 
 def test_effects_that_only_help_together_are_found_as_a_pair(tmp_path, plant):
-    """A lead-screw rig's friction curve: a direction difference, a Stribeck rise and a viscous slope three
-    times the catalog's.  After the asymmetry, neither Stribeck nor viscous predicts held-out speed bands
-    alone (Stribeck's held-out gain is negative); together they do."""
+    """A lead-screw rig's friction curve: a direction difference, a Stribeck rise and a viscous
+    slope three times the catalog's.  After the asymmetry, neither Stribeck nor viscous predicts
+    held-out speed bands alone (Stribeck's held-out gain is negative); together they do."""
     fc = coulomb(plant)
 
     def law(v):
@@ -319,8 +316,8 @@ def test_each_file_gets_its_own_gain(tmp_path, plant, capsys):
 
 
 def test_single_speed_friction_reports_viscous_as_not_identifiable():
-    """The shipped XJTU series is measured at one speed: a viscous slope cannot be told from the Coulomb level,
-    and is printed as not identifiable rather than with a zero uncertainty."""
+    """The shipped XJTU series is measured at one speed: a viscous slope cannot be told from the
+    Coulomb level, and is printed as not identifiable rather than with a zero uncertainty."""
     plant = plant_from_design(load_design(DATA / "xjtu" / "xjtu_rig.yaml"))
     diag = diagnose([read_dataset(DATA / "xjtu" / "xjtu_up_friction.csv")], plant)
     assert diag.verdict == "preload_loss"

@@ -1,9 +1,9 @@
-"""Hidden-effect recovery: seeded synthetic measurements of a known axis (the shipped table_x design)
-with one effect at a time, random parameters in physical ranges, 1-2 % noise, >= 60 points.
+"""Hidden-effect recovery: seeded synthetic measurements of a known axis (the shipped table_x
+design) with one effect at a time, random parameters in physical ranges, 1-2 % noise, >= 60 points.
 
-Pass criteria (model-discrepancy.md sec. 4): the hidden effect is named first; its physical parameter
-is recovered within 10 % (20 % for shape parameters); held-out (grouped CV) gain >= 30 %.  Null cases
-name nothing; look-alike decoys are not confused.
+Pass criteria (model-discrepancy.md sec. 4): the hidden effect is named first; its physical
+parameter is recovered within 10 % (20 % for shape parameters); held-out (grouped CV) gain >= 30 %.
+Null cases name nothing; look-alike decoys are not confused.
 """
 
 import numpy as np

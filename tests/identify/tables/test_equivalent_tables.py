@@ -1,6 +1,6 @@
-"""Friction tables: equally good explanations are said (as for time records), with the measurement that
-separates them, and an accepted effect outside its plausible regime is flagged.  Tables from the tests' own
-friction law (``sim_tables``), written apart from the fitted model."""
+"""Friction tables: equally good explanations are said (as for time records), with the measurement
+that separates them, and an accepted effect outside its plausible regime is flagged.  Tables from
+the tests' own friction law (``sim_tables``), written apart from the fitted model."""
 
 import numpy as np
 import pytest
@@ -12,7 +12,8 @@ from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
 
 @pytest.mark.parametrize("seed, drag", [(3, 4e6), (4, 6e6), (5, 3e6)])
 def test_two_speeds_cannot_tell_viscous_from_drag_and_it_is_said(tmp_path, plant, seed, drag):
-    """Two speeds each way: a slope in v and one in v|v| fit them alike, so the held-out data cannot decide."""
+    """Two speeds each way: a slope in v and one in v|v| fit them alike, so the held-out data cannot
+    decide."""
     rows = friction_rows(
         np.random.default_rng(seed),
         fc=300.0,

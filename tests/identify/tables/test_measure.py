@@ -8,7 +8,8 @@ from axisopt.identify import plant_from_design
 
 
 def test_calibration_baseline_names_match_the_fit():
-    """The names and kinds a calibration may carry are the ones diagnose fits (measure.baseline_params)."""
+    """The names and kinds a calibration may carry are the ones diagnose fits
+    (measure.baseline_params)."""
     from axisopt.identify.calibration import BASELINE_KINDS
     from axisopt.identify.tables.measure import baseline_params
 

@@ -1,5 +1,6 @@
-"""The reduced tables' residuals (:mod:`axisopt.identify.tables.unexplained`): the noise floor is the noise, not
-the misfit (replicates, second differences); a drag outside the library is left unexplained with its shape."""
+"""The reduced tables' residuals (:mod:`axisopt.identify.tables.unexplained`): the noise floor is
+the noise, not the misfit (replicates, second differences); a drag outside the library is left
+unexplained with its shape."""
 
 import numpy as np
 import pytest
@@ -20,9 +21,9 @@ from axisopt.report.diagnosis import diagnosis_dict, diagnosis_text
     ],
 )
 def test_noise_floor_is_the_noise_not_the_misfit(plant, kind, doe, effect, values):
-    """The floor is estimated from the baseline's residual, which still holds the hidden effect; it must
-    come out within 35 % of the noise put in (it came out 2-3x too high when effects alternate between
-    neighbouring rows)."""
+    """The floor is estimated from the baseline's residual, which still holds the hidden effect; it
+    must come out within 35 % of the noise put in (it came out 2-3x too high when effects alternate
+    between neighbouring rows)."""
     noise = 0.015
     ds = simulate(
         plant, kind, doe(), effects={effect: values}, baseline=BASELINE[kind], noise=noise, seed=11

@@ -1,7 +1,7 @@
-"""search.advice: a design change offered before any limit is relaxed, verified by a search.  The test solves the
-changed problem again from its own YAML text (the change written as a user would write it), so a change that
-only the advice believes in fails here.  The advice is a what-if re-solve like the sensitivities: a study's batch
-solves (sensitivities=False) leave it out."""
+"""search.advice: a design change offered before any limit is relaxed, verified by a search.  The
+test solves the changed problem again from its own YAML text (the change written as a user would
+write it), so a change that only the advice believes in fails here.  The advice is a what-if
+re-solve like the sensitivities: a study's batch solves (sensitivities=False) leave it out."""
 
 import re
 from pathlib import Path
@@ -27,8 +27,8 @@ def _variant(tmp_path, name, **values):
 
 
 def test_lower_rapid_speed_is_offered_and_holds(tmp_path):
-    """The lathe Z with at most 1 um of lost motion (no gearbox: direct drive) misses the critical speed at
-    40 m/min; the advice lowers the rapid speed, and the problem with that speed solves."""
+    """The lathe Z with at most 1 um of lost motion (no gearbox: direct drive) misses the critical
+    speed at 40 m/min; the advice lowers the rapid speed, and the problem with that speed solves."""
     res = solve(
         load_problem(_variant(tmp_path, "lathe_z_problem.yaml", max_backlash="1 um")), "default"
     )
@@ -45,8 +45,8 @@ def test_lower_rapid_speed_is_offered_and_holds(tmp_path):
 
 
 def test_no_change_offered_where_speed_and_torque_do_not_bind(tmp_path):
-    """The teaching problem at 65 m/min misses the support set's life and the nut's lift-off: no speed or
-    torque check, so no axis change is offered (another vendor's support set is,
+    """The teaching problem at 65 m/min misses the support set's life and the nut's lift-off: no
+    speed or torque check, so no axis change is offered (another vendor's support set is,
     tests/search/infeasible/test_widen.py)."""
     res = solve(
         load_problem(_variant(tmp_path, "teaching_problem.yaml", max_speed="65 m/min")), "default"
@@ -68,10 +68,10 @@ def test_batch_solves_leave_the_advice_out(tmp_path):
 
 
 def test_twin_gantry_too_fast_gets_a_verified_speed(tmp_path):
-    """The 4 m twin gantry at 20 m/min misses the critical speed and the inertia ratio (the closest designs'
-    63 mm screws): the advice's first proposal (the closest design's need) does not hold for every screw, the one
-    10 % further does; the problem at that speed solves (17.5 m/min since the nut lift-off takes each load
-    case alone, THK A-725)."""
+    """The 4 m twin gantry at 20 m/min misses the critical speed and the inertia ratio (the closest
+    designs' 63 mm screws): the advice's first proposal (the closest design's need) does not hold
+    for every screw, the one 10 % further does; the problem at that speed solves (17.5 m/min since
+    the nut lift-off takes each load case alone, THK A-725)."""
     res = solve(
         load_problem(_variant(tmp_path, "gantry_twin_problem.yaml", max_speed="20 m/min")),
         "default",
@@ -85,10 +85,10 @@ def test_twin_gantry_too_fast_gets_a_verified_speed(tmp_path):
 
 
 def test_heavier_balanced_ram_gets_a_stronger_cylinder(tmp_path):
-    """The balanced Z with its ram doubled to 1200 kg and the cylinder kept (5.3-5.6 kN, 45 % of the weight)
-    misses the motor's RMS torque and the support set's lift-off: neither speed nor acceleration is offered
-    first; the cylinder raised to 90 % of the weight is, with its force rise kept in proportion, and the
-    problem with that cylinder solves."""
+    """The balanced Z with its ram doubled to 1200 kg and the cylinder kept (5.3-5.6 kN, 45 % of the
+    weight) misses the motor's RMS torque and the support set's lift-off: neither speed nor
+    acceleration is offered first; the cylinder raised to 90 % of the weight is, with its force rise
+    kept in proportion, and the problem with that cylinder solves."""
     res = solve(
         load_problem(_variant(tmp_path, "vertical_z600_problem.yaml", moving_mass="1200 kg")),
         "default",
@@ -98,7 +98,10 @@ def test_heavier_balanced_ram_gets_a_stronger_cylinder(tmp_path):
     assert c.key == "axis.counterbalance.force" and c.value == pytest.approx(5300.0)
     assert c.to == pytest.approx(0.9 * 1200 * 9.80665, rel=2e-3)
     end = round(5600.0 * c.to / 5300.0, -1)
-    cylinder = f"{{kind: cylinder, force: {c.to:g} N, force_at_end: {end:g} N, tolerance: 5 %, piston_mass: 15 kg}}"
+    cylinder = (
+        f"{{kind: cylinder, force: {c.to:g} N, force_at_end: {end:g} N, tolerance: 5 %, "
+        "piston_mass: 15 kg}"
+    )
     fixed = _variant(
         tmp_path, "vertical_z600_problem.yaml", moving_mass="1200 kg", counterbalance=cylinder
     )
@@ -107,9 +110,10 @@ def test_heavier_balanced_ram_gets_a_stronger_cylinder(tmp_path):
 
 
 def test_unbalanced_vertical_gets_a_cylinder(tmp_path):
-    """A 1200 kg Z without a balance cylinder misses torque and lift-off for every catalog drive: the advice adds
-    a balance cylinder (90 % of the weight), and the problem with it solves.  (800 kg, this test's head before
-    each motor was held to its own vendor's rule, now solves at a lower speed: the speed comes first.)"""
+    """A 1200 kg Z without a balance cylinder misses torque and lift-off for every catalog drive:
+    the advice adds a balance cylinder (90 % of the weight), and the problem with it solves.  (800
+    kg, this test's head before each motor was held to its own vendor's rule, now solves at a
+    lower speed: the speed comes first.)"""
     res = solve(
         load_problem(
             _variant(
@@ -136,8 +140,9 @@ def test_unbalanced_vertical_gets_a_cylinder(tmp_path):
 
 
 def test_an_impossible_budget_is_raised_to_what_the_catalogs_need(tmp_path):
-    """The teaching problem at 1 500 EUR (it needs about 2 500): the advice raises the budget to the least value
-    that a search verifies (bisected, three figures), and the problem with it solves while 10 % less does not."""
+    """The teaching problem at 1 500 EUR (it needs about 2 500): the advice raises the budget to the
+    least value that a search verifies (bisected, three figures), and the problem with it solves
+    while 10 % less does not."""
     res = solve(
         load_problem(_variant(tmp_path, "teaching_problem.yaml", max_cost="1500 EUR")), "default"
     )

@@ -1,8 +1,9 @@
-"""An impossible budget (issue 42, item 2): the advice leads with the least budget at which the catalogs hold a
-design meeting every other limit, found by its own search (search.budget), whatever the explanation's closest
-designs are; checked against the default search on the changed problem (a design at that budget, none one
-rounding step below it), and the search itself against every combination (the exhaustive method) on random
-catalogs.  No formula is new here: the reference is the exhaustive enumeration, not a published number."""
+"""An impossible budget (issue 42, item 2): the advice leads with the least budget at which the
+catalogs hold a design meeting every other limit, found by its own search (search.budget), whatever
+the explanation's closest designs are; checked against the default search on the changed problem (a
+design at that budget, none one rounding step below it), and the search itself against every
+combination (the exhaustive method) on random catalogs.  No formula is new here: the reference is
+the exhaustive enumeration, not a published number."""
 
 import math
 
@@ -21,7 +22,8 @@ from axisopt.search.task.objective import objective_spec
 
 
 def _step_below(v: float) -> float:
-    """The three-significant-figure value one step below ``v`` (the advice rounds up to three figures)."""
+    """The three-significant-figure value one step below ``v`` (the advice rounds up to three
+    figures)."""
     return v - 10.0 ** (math.floor(math.log10(v)) - 2)
 
 
@@ -48,8 +50,8 @@ def test_impossible_budget_leads_with_the_least_budget(tmp_path):
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 3])
 def test_least_cost_equals_every_combination(seed):
-    """search.budget.least_cost against the cheapest feasible combination of the exhaustive method, the problem's
-    own budget left out (random catalogs, with and without a drive search)."""
+    """search.budget.least_cost against the cheapest feasible combination of the exhaustive method,
+    the problem's own budget left out (random catalogs, with and without a drive search)."""
     p = _problem(seed)
     free = p.with_limit("max_cost", None)
     sp = build_space(p)
@@ -66,7 +68,8 @@ def test_least_cost_equals_every_combination(seed):
 
 
 def test_a_budget_that_is_not_the_only_problem_gets_no_raise(tmp_path):
-    """Without the budget nothing fits either (a first natural frequency of 10 kHz no axis reaches): no budget."""
+    """Without the budget nothing fits either (a first natural frequency of 10 kHz no axis reaches):
+    no budget."""
     p = _problem(1).with_limit("min_frequency", 1e4)
     assert least_cost(p, build_space(p)) is None
     res = solve(p, "default")

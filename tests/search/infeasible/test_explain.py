@@ -1,8 +1,8 @@
-"""The infeasibility explanation of the default method (best-first over (mounting, nut, bearing) blocks,
-bounded with the optimistic guide; search/explain.py) against the same explanation over every combination
-(the exhaustive method's): the same limits reported unmeetable with the same best values, and the same
-closest designs, on random catalogs with ball and roller guides, with and without a drive search, infeasible
-on a mechanical limit, on a drive limit, or on both."""
+"""The infeasibility explanation of the default method (best-first over (mounting, nut, bearing)
+blocks, bounded with the optimistic guide; search/explain.py) against the same explanation over
+every combination (the exhaustive method's): the same limits reported unmeetable with the same best
+values, and the same closest designs, on random catalogs with ball and roller guides, with and
+without a drive search, infeasible on a mechanical limit, on a drive limit, or on both."""
 
 from dataclasses import replace
 from pathlib import Path
@@ -67,9 +67,9 @@ def test_best_first_explanation_equals_every_combination(seed, kind):
 
 @pytest.mark.parametrize("seed,kind", [c for c in CASES if c[1] != "mechanics"])
 def test_drives_scored_in_two_passes_give_the_same_explanation(seed, kind, monkeypatch):
-    """The best-first explanation scores a block's drives in two passes when no n-th score is known yet (the
-    FIRST_DRIVES of lowest bound, then the ones the n-th score they give cannot rule out): with one drive in
-    the first pass it still equals the explanation over every combination."""
+    """The best-first explanation scores a block's drives in two passes when no n-th score is known
+    yet (the FIRST_DRIVES of lowest bound, then the ones the n-th score they give cannot rule out):
+    with one drive in the first pass it still equals the explanation over every combination."""
     monkeypatch.setattr(E, "FIRST_DRIVES", 1)
     p = _case(seed, kind)
     sp, cons = build_space(p), build_constraints(p)
@@ -103,24 +103,22 @@ def _shipped(name):
 
 
 def test_shipped_mechanical_infeasibility_scores_few_blocks(monkeypatch):
-    """problems/infeasible_problem.yaml (1.7 M combinations): the blocks' bounds leave almost all of the
-    product unscored, and the explanation names the limits no combination meets."""
+    """problems/infeasible_problem.yaml (1.7 M combinations): the blocks' bounds leave almost all of
+    the product unscored, and the explanation names the limits no combination meets."""
     p, sp, cons, spec = _shipped("infeasible_problem.yaml")
     why, n = _scored(sp, cons, spec, monkeypatch)
     assert n < 0.1 * sp.size, (n, sp.size)
     # (issue 39: the 70-120 mm ZKLN and NSK TAC03 sets meet the support sets' life on their own, and
-    # the critical
-    # speed and the support sets' life are no longer unmeetable on their own: a driven
+    # the critical speed and the support sets' life are no longer unmeetable on their own: a driven
     # rotating-nut unit (THK DIR/BLR) leaves the screw and its end bearings standing, so those
-    # checks do not
-    # apply to it)
+    # checks do not apply to it)
     assert [u[0] for u in why.unmeetable] == ["max cost"]
     assert len(why.closest) == E.CLOSEST and all(c.misses for c in why.closest)
 
 
 def test_shipped_drive_infeasibility_equals_every_combination(monkeypatch):
-    """problems/infeasible_drive_problem.yaml: every drive limit is folded in exactly (the optimistic guide
-    does not bound them) and the answer equals the scan of every combination."""
+    """problems/infeasible_drive_problem.yaml: every drive limit is folded in exactly (the
+    optimistic guide does not bound them) and the answer equals the scan of every combination."""
     p, sp, cons, spec = _shipped("infeasible_drive_problem.yaml")
     why, n = _scored(sp, cons, spec, monkeypatch)
     full = E.explain_infeasible(sp, cons, spec, every_combination=True)
@@ -129,8 +127,9 @@ def test_shipped_drive_infeasibility_equals_every_combination(monkeypatch):
 
 
 def test_block_optimism_bounds_every_combination():
-    """Each block's optimistic values are at least as good as every combination's in it, and its score
-    lower bound at most their miss scores (reference: the miss scores over every combination)."""
+    """Each block's optimistic values are at least as good as every combination's in it, and its
+    score lower bound at most their miss scores (reference: the miss scores over every
+    combination)."""
     p = _case(1, "both")
     sp, cons = build_space(p), build_constraints(p)
     opt = E.block_optimism(sp, cons)
@@ -151,9 +150,9 @@ def test_solve_uses_the_block_explanation_and_agrees_with_exhaustive():
 
 
 def test_infeasible_says_when_the_lost_motion_limit_left_the_reductions_out():
-    """A problem that admits no lost motion (max_backlash 0, the default) forms no gearbox: an infeasible answer says
-    so, with the count, so that a designer knows the limit, not the catalog, ruled them out; admitting lost motion
-    forms them and the note goes."""
+    """A problem that admits no lost motion (max_backlash 0, the default) forms no gearbox: an
+    infeasible answer says so, with the count, so that a designer knows the limit, not the catalog,
+    ruled them out; admitting lost motion forms them and the note goes."""
     p = load_problem(
         Path(__file__).resolve().parents[3] / "problems" / "infeasible_drive_problem.yaml"
     )
@@ -167,10 +166,11 @@ def test_infeasible_says_when_the_lost_motion_limit_left_the_reductions_out():
 
 
 def test_explanation_work_is_bounded_and_said():
-    """The best-first explanation stops after MAX_WORK model evaluations whatever the bounds (issue 52: a
-    gantry's weak bounds scored block after block until the time limit): cut by a small bound of work it still
-    names closest designs, none closer than the uncut ones, and says what stopped it; the shipped infeasible
-    problem (2.5 M evaluations) is explained uncut, the default bound equal to none."""
+    """The best-first explanation stops after MAX_WORK model evaluations whatever the bounds
+    (issue 52: a gantry's weak bounds scored block after block until the time limit): cut by a small
+    bound of work it still names closest designs, none closer than the uncut ones, and says what
+    stopped it; the shipped infeasible problem (2.5 M evaluations) is explained uncut, the default
+    bound equal to none."""
     p, sp, cons, spec = _shipped("infeasible_drive_problem.yaml")
     full = E.explain_infeasible(sp, cons, spec, max_work=None)
     assert not full.cut and full.cut_by == ""

@@ -1,4 +1,5 @@
-"""The infeasibility scores (search.infeasible.optimism) equal an evaluation of every combination."""
+"""The infeasibility scores (search.infeasible.optimism) equal an evaluation of every
+combination."""
 
 from __future__ import annotations
 
@@ -15,7 +16,8 @@ from axisopt.search.task.constraints import build_constraints
 
 
 def _drive_problem(seed, axis_coupling):
-    """A synthetic drive problem whose two couplings are both stiffer than the axis's stand-in value."""
+    """A synthetic drive problem whose two couplings are both stiffer than the axis's stand-in
+    value."""
     from dataclasses import replace
 
     rng = np.random.default_rng(300 + seed)
@@ -39,9 +41,10 @@ def _drive_problem(seed, axis_coupling):
 
 
 def test_infeasibility_scores_equal_per_combination_evaluation():
-    """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive pairs on
-    the drive sub-assembly) gives every combination the same sum of relative misses as evaluating that
-    combination alone with all its parts (the flat layout the model is evaluated on everywhere else)."""
+    """The structured infeasibility explanation (mechanics once, coupling-stiffness groups, drive
+    pairs on the drive sub-assembly) gives every combination the same sum of relative misses as
+    evaluating that combination alone with all its parts (the flat layout the model is evaluated on
+    everywhere else)."""
     from axisopt.search.infeasible.explain import miss_scores
     from axisopt.search.infeasible.optimism import RULE_WEIGHT, weight
     from axisopt.search.task.constraints import as_vector
@@ -71,9 +74,9 @@ def test_infeasibility_scores_equal_per_combination_evaluation():
 
 
 def test_drive_bounds_split_into_nut_chunks_are_unchanged(monkeypatch):
-    """The drive limits' interval bounds are taken a few nuts at a time (at most HULL_BLOCK (nut, bearing
-    group, drive) elements: fuzz case 1909 held GB of temporaries with 18,808 drives x 47 nuts); one nut at a
-    time gives the very values of all the nuts at once."""
+    """The drive limits' interval bounds are taken a few nuts at a time (at most HULL_BLOCK (nut,
+    bearing group, drive) elements: fuzz case 1909 held GB of temporaries with 18,808 drives x 47
+    nuts); one nut at a time gives the very values of all the nuts at once."""
     from axisopt.search.infeasible import optimism
     from axisopt.search.task.space import DRIVE_KEYS
 
@@ -91,9 +94,10 @@ def test_drive_bounds_split_into_nut_chunks_are_unchanged(monkeypatch):
 
 
 def test_the_explanation_stops_inside_the_drive_bounds_at_its_deadline(monkeypatch):
-    """The drive limits' bounds of every block were one step without a clock (a generated 1490 t axis spent
-    147 s there past --time-limit 100): a deadline that passes inside them stops the explanation there, said
-    to be cut by time; before the deadline the same explanation is complete."""
+    """The drive limits' bounds of every block were one step without a clock (a generated 1490 t
+    axis spent 147 s there past --time-limit 100): a deadline that passes inside them stops the
+    explanation there, said to be cut by time; before the deadline the same explanation is
+    complete."""
     import time
     from dataclasses import replace
 

@@ -1,6 +1,6 @@
-"""An infeasible answer says what to relax (issue 30): the user's relaxable limits (problem limits and check
-margins) by the smallest relative change that frees a closest design, with that design; compatibility rules
-(bearing fit, screw length) are never proposed for relaxing."""
+"""An infeasible answer says what to relax (issue 30): the user's relaxable limits (problem limits
+and check margins) by the smallest relative change that frees a closest design, with that design;
+compatibility rules (bearing fit, screw length) are never proposed for relaxing."""
 
 from __future__ import annotations
 
@@ -22,9 +22,10 @@ PROBLEMS = Path(__file__).resolve().parents[3] / "problems"
 
 
 def test_infeasible_problem_first_lines_name_the_limit_and_the_amount(capsys):
-    """The tutorial's infeasible problem: the user's own limits are listed first, and no vendor margin is proposed
-    below 0.95 (issue 52): every closest design needs one far lower (a support-bearing life at 0.014), so the
-    relaxation is blocked by those rules and says so; the cost and stiffness it needs besides are listed."""
+    """The tutorial's infeasible problem: the user's own limits are listed first, and no vendor
+    margin is proposed below 0.95 (issue 52): every closest design needs one far lower (a
+    support-bearing life at 0.014), so the relaxation is blocked by those rules and says so; the
+    cost and stiffness it needs besides are listed."""
     assert (
         main(
             ["solve", str(PROBLEMS / "infeasible_problem.yaml"), "--no-sensitivity", "--json", "-"]
@@ -55,18 +56,19 @@ def test_infeasible_problem_first_lines_name_the_limit_and_the_amount(capsys):
     first = "\n".join(text.splitlines()[:24])
     assert "no relaxation of the limits is enough" in first and "no margin down to 0.95" in first
     assert (
-        f"limits.max_cost from 300 EUR to {cost['relaxed_to']:,.0f} EUR (+{100 * cost['change']:,.0f} %)"
-        in first
+        f"limits.max_cost from 300 EUR to {cost['relaxed_to']:,.0f} EUR "
+        f"(+{100 * cost['change']:,.0f} %)" in first
     )
     stiff = relax[keys.index("limits.min_stiffness")]
     assert f"limits.min_stiffness from 400 N/um to {stiff['relaxed_to']:.4g} N/um" in first
 
 
 def test_the_relaxations_free_the_design():
-    """The SGM7J motors give no brake torque: the holding-brake check, failed by 100 %, is never proposed at a
-    margin of 0; the motor's torque and inertia checks, missed by far more than 5 %, are not proposed below 0.95
-    either (issue 52): they block the relaxation, the answer says which rows lack the brake torque, and the advice
-    is a design change (tests/search/infeasible/test_widen.py re-solves it)."""
+    """The SGM7J motors give no brake torque: the holding-brake check, failed by 100 %, is never
+    proposed at a margin of 0; the motor's torque and inertia checks, missed by far more than 5 %,
+    are not proposed below 0.95 either (issue 52): they block the relaxation, the answer says which
+    rows lack the brake torque, and the advice is a design change
+    (tests/search/infeasible/test_widen.py re-solves it)."""
     problem = load_problem(PROBLEMS / "infeasible_drive_problem.yaml")
     res = solve(problem, sensitivities=False)
     inf = res.infeasibility
@@ -141,9 +143,10 @@ def test_one_limit_alone_beats_several_and_compatibility_rules_are_left_out():
 
 
 def test_no_margin_is_proposed_at_zero():
-    """A check missed by 100 % (its available value is 0) is never a relaxation to a margin of 0 (issue 42): the
-    design that misses it is left out like one that breaks a compatibility rule, and the answer says which check
-    no margin frees; with every closest design so, the relaxation is blocked by it."""
+    """A check missed by 100 % (its available value is 0) is never a relaxation to a margin of 0
+    (issue 42): the design that misses it is left out like one that breaks a compatibility rule, and
+    the answer says which check no margin frees; with every closest design so, the relaxation is
+    blocked by it."""
     from axisopt.search.infeasible.relax import missing_values
 
     problem = load_problem(PROBLEMS / "teaching_problem.yaml")
@@ -168,9 +171,10 @@ def test_no_margin_is_proposed_at_zero():
 
 
 def test_no_margin_is_proposed_below_095_and_own_limits_come_first():
-    """Issue 52: a vendor margin is never proposed below 0.95 (MARGIN_FLOOR); a closest design that needs one
-    lower is left out like one that breaks a compatibility rule, so a design freed by the user's own limits and
-    margins down to 0.95 wins over one that needs less in total; the user's own limits are listed first."""
+    """Issue 52: a vendor margin is never proposed below 0.95 (MARGIN_FLOOR); a closest design that
+    needs one lower is left out like one that breaks a compatibility rule, so a design freed by the
+    user's own limits and margins down to 0.95 wins over one that needs less in total; the user's
+    own limits are listed first."""
     from axisopt.search.infeasible.relax import MARGIN_FLOOR
 
     problem = load_problem(PROBLEMS / "teaching_problem.yaml")

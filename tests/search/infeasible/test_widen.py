@@ -1,9 +1,10 @@
-"""search.widen: when nothing fits, the advice names the mounting or the catalog filter value that the problem left
-out (verified by a search), and relax never proposes a vendor margin at 0 (a check failed for a catalog value
-the rows leave empty is said instead: search.relax.missing_values).  Each problem is solved again from its YAML
-text with the change written as a user would write it: the changed problem has a design, the unchanged one has
-none.  The problems rebuild a new user's files (issue 42): a 5 m horizontal axis fixed-supported only, and a
-vertical axis whose motors give no brake torque."""
+"""search.widen: when nothing fits, the advice names the mounting or the catalog filter value that
+the problem left out (verified by a search), and relax never proposes a vendor margin at 0 (a check
+failed for a catalog value the rows leave empty is said instead: search.relax.missing_values).  Each
+problem is solved again from its YAML text with the change written as a user would write it: the
+changed problem has a design, the unchanged one has none.  The problems rebuild a new user's files
+(issue 42): a 5 m horizontal axis fixed-supported only, and a vertical axis whose motors give no
+brake torque."""
 
 from pathlib import Path
 
@@ -14,10 +15,8 @@ from axisopt.search import solve
 ROOT = Path(__file__).resolve().parents[3]
 
 # 5 m of stroke, 300 kg: the 63 mm screws' critical speed fixed-supported is below the rapid speed.
-# The screw's
-# design rise for the pretension is 2 K (THK plans 2-5 degC, A-715): at the default 3 K the
-# pretension of a
-# fixed-fixed 63 mm screw overloads every support set this long axis can take.
+# The screw's design rise for the pretension is 2 K (THK plans 2-5 degC, A-715): at the default 3 K
+# the pretension of a fixed-fixed 63 mm screw overloads every support set this long axis can take.
 LONG = """\
 name: long-5m
 axis:
@@ -34,8 +33,7 @@ limits:
 {catalog}"""
 
 # a 40 kg vertical slide on Yaskawa SGM7J motors only: none of them lists a brake torque (YSK-S7
-# 4.2.2 gives the
-# brake's inertia, not its holding torque, for this series; catalogs/motors.csv)
+# 4.2.2 gives the brake's inertia, not its holding torque, for this series; catalogs/motors.csv)
 VERTICAL = """\
 name: vertical-small
 axis:
@@ -65,9 +63,9 @@ def _edits(res):
 
 
 def test_five_metre_axis_gets_a_fixed_fixed_screw(tmp_path):
-    """At 15 m/min the fixed-supported screws whirl (the closest design misses the critical speed by 16 %): the
-    advice adds fixed-fixed to the mountings, before lowering the speed or relaxing the vendor's margin; the
-    problem with both mountings solves with a fixed-fixed screw."""
+    """At 15 m/min the fixed-supported screws whirl (the closest design misses the critical speed by
+    16 %): the advice adds fixed-fixed to the mountings, before lowering the speed or relaxing the
+    vendor's margin; the problem with both mountings solves with a fixed-fixed screw."""
     res = _solve(tmp_path, LONG.format(speed=15, catalog=""))
     assert res.best is None
     assert _edits(res) == [("catalog.mountings", "add", ("fixed-fixed",))]
@@ -91,9 +89,10 @@ def test_five_metre_axis_gets_a_fixed_fixed_screw(tmp_path):
 
 
 def test_five_metre_axis_at_30_m_min_gets_the_speed_not_a_mounting(tmp_path):
-    """The user's file at 30 m/min: the closest design would run its screw at 1 / (1 - 0.58) = 2.4 times the
-    critical speed, and fixed-fixed raises it only 1.45 times (the fixed-fixed problem has no design either): no
-    mounting is offered, the rapid speed is lowered, and the margin is not proposed (it would need 0.42)."""
+    """The user's file at 30 m/min: the closest design would run its screw at 1 / (1 - 0.58) = 2.4
+    times the critical speed, and fixed-fixed raises it only 1.45 times (the fixed-fixed problem has
+    no design either): no mounting is offered, the rapid speed is lowered, and the margin is not
+    proposed (it would need 0.42)."""
     res = _solve(tmp_path, LONG.format(speed=30, catalog=""))
     assert res.best is None
     assert [c.key for c in res.infeasibility.design_changes] == ["axis.max_speed"]
@@ -112,9 +111,9 @@ def test_five_metre_axis_at_30_m_min_gets_the_speed_not_a_mounting(tmp_path):
 
 
 def test_a_vendor_filter_gets_the_vendor_to_add(tmp_path):
-    """The 5 m axis with both mountings but HIWIN parts only: no HIWIN support set takes the fixed-fixed screw's
-    pretension.  The advice names one vendor to add to catalog.vendors (the first design found used two; the
-    narrowing leaves one out), and the problem with it solves."""
+    """The 5 m axis with both mountings but HIWIN parts only: no HIWIN support set takes the
+    fixed-fixed screw's pretension.  The advice names one vendor to add to catalog.vendors (the
+    first design found used two; the narrowing leaves one out), and the problem with it solves."""
     catalog = "catalog:\n  vendors: [HIWIN]\n  mountings: [fixed-supported, fixed-fixed]\n"
     res = _solve(tmp_path, LONG.format(speed=15, catalog=catalog))
     assert res.best is None
@@ -126,9 +125,10 @@ def test_a_vendor_filter_gets_the_vendor_to_add(tmp_path):
 
 
 def test_vertical_axis_without_brake_torque_is_told_so(tmp_path):
-    """The SGM7J motors give no brake torque, so the holding-brake check fails by 100 % on every design: the
-    relaxations never propose its margin at 0 (nor any margin at 0 or below), the answer says which rows lack the
-    value and what to do, and the advice adds a motor series with brakes; the problem with it solves."""
+    """The SGM7J motors give no brake torque, so the holding-brake check fails by 100 % on
+    every design: the relaxations never propose its margin at 0 (nor any margin at 0 or below), the
+    answer says which rows lack the value and what to do, and the advice adds a motor series with
+    brakes; the problem with it solves."""
     res = _solve(tmp_path, VERTICAL.format(series="Sigma-7 SGM7J"))
     inf = res.infeasibility
     assert res.best is None
@@ -156,8 +156,9 @@ def test_vertical_axis_without_brake_torque_is_told_so(tmp_path):
 
 
 def test_an_excluded_part_is_taken_out_of_exclude(tmp_path):
-    """The vertical axis with the SGM7G motors listed but every one of them excluded: the advice takes one out of
-    catalog.exclude.motor, and the problem without that exclusion solves with it."""
+    """The vertical axis with the SGM7G motors listed but every one of them excluded: the advice
+    takes one out of catalog.exclude.motor, and the problem without that exclusion solves with
+    it."""
     sgm7g = ["SGM7G-03A", "SGM7G-05A", "SGM7G-09A", "SGM7G-13A", "SGM7G-20A"]
     text = VERTICAL.format(series="Sigma-7 SGM7J, Sigma-7 SGM7G") + "  exclude: {{motor: [{}]}}\n"
     res = _solve(tmp_path, text.format(", ".join(sgm7g)))
@@ -172,9 +173,10 @@ def test_an_excluded_part_is_taken_out_of_exclude(tmp_path):
 
 
 def test_shipped_drive_example_gets_a_motor_series_and_a_coupling(tmp_path):
-    """infeasible_drive_problem.yaml (400 kg vertical on SGM7J motors and one small coupling): the advice adds a
-    motor series and a coupling that carries it (both needed: the narrowing's searches without either find
-    nothing), the missing brake torque is said, and the problem with both edits solves."""
+    """infeasible_drive_problem.yaml (400 kg vertical on SGM7J motors and one small coupling): the
+    advice adds a motor series and a coupling that carries it (both needed: the narrowing's searches
+    without either find nothing), the missing brake torque is said, and the problem with both edits
+    solves."""
     text = (ROOT / "problems" / "infeasible_drive_problem.yaml").read_text(encoding="utf-8")
     res = _solve(tmp_path, text)
     assert res.best is None and res.infeasibility.missing
@@ -191,8 +193,9 @@ def test_shipped_drive_example_gets_a_motor_series_and_a_coupling(tmp_path):
 
 
 def test_the_widening_counts_in_the_budget(tmp_path, monkeypatch):
-    """The widening's searches count in design_changes' budget: with one search the 5 m axis still gets its
-    mounting (the first search finds it), and with none no search runs and nothing is offered."""
+    """The widening's searches count in design_changes' budget: with one search the 5 m axis still
+    gets its mounting (the first search finds it), and with none no search runs and nothing is
+    offered."""
     from axisopt.search.infeasible import advice, widen
     from axisopt.search.task.constraints import build_constraints
 

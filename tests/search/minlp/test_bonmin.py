@@ -1,5 +1,5 @@
-"""Bonmin reference (CasADi + Bonmin on the one-hot MINLP): its status is reported, it never beats the proven
-optimum, and its deadline child stops work that ignores Bonmin's own time limit."""
+"""Bonmin reference (CasADi + Bonmin on the one-hot MINLP): its status is reported, it never beats
+the proven optimum, and its deadline child stops work that ignores Bonmin's own time limit."""
 
 from __future__ import annotations
 
@@ -28,9 +28,8 @@ def test_bonmin_reports_status_and_never_beats_the_proven_optimum():
 
 def test_bonmin_deadline_stops_work_that_ignores_its_own_time_limit():
     # Bonmin checks its time limit only between nodes, and building the symbolic MINLP of a large
-    # catalog
-    # takes minutes before Bonmin starts: the deadline child must stop both (a hang, not a speed,
-    # check)
+    # catalog takes minutes before Bonmin starts: the deadline child must stop both (a hang, not a
+    # speed, check)
     import time as _time
 
     from axisopt.search.minlp.bonmin import _solve_with_deadline
@@ -40,9 +39,8 @@ def test_bonmin_deadline_stops_work_that_ignores_its_own_time_limit():
     assert (kind, got) == ("timeout", None) and _time.perf_counter() - t < 10
     assert _solve_with_deadline(lambda: ("ok", 42), 30.0, "test") == ("ok", 42)
     # a bug in the work (not a solver failure: CasADi's RuntimeError, MemoryError) is raised in the
-    # parent with
-    # the child's traceback, not hidden as a failed solve (issue 51: every except names what it
-    # expects)
+    # parent with the child's traceback, not hidden as a failed solve (issue 51: every except names
+    # what it expects)
     from axisopt.search.minlp.bonmin import ChildError
 
     with pytest.raises(ChildError, match="ZeroDivisionError"):

@@ -1,5 +1,6 @@
-"""The one-hot formulation shared by Bonmin and SCIP: the slot tables, the part parameters as binary-weighted
-catalog columns (exact at integer points) and the recovery of a design from a solver's point."""
+"""The one-hot formulation shared by Bonmin and SCIP: the slot tables, the part parameters as
+binary-weighted catalog columns (exact at integer points) and the recovery of a design from a
+solver's point."""
 
 from __future__ import annotations
 
@@ -76,8 +77,8 @@ def test_integral_point_needs_a_one_in_every_slot():
 
 
 def test_recover_moves_the_preload_into_the_limits(monkeypatch):
-    """The largest binary per slot is the part; a preload that misses a limit is moved by the first move that
-    meets it (clipped to the nut's range), else None."""
+    """The largest binary per slot is the part; a preload that misses a limit is moved by the first
+    move that meets it (clipped to the nut's range), else None."""
     space = SimpleNamespace(
         shape=(2, 2, 1, 3), preload_lo=np.array([100.0, 200.0]), preload_hi=np.array([300.0, 400.0])
     )

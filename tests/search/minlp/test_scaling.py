@@ -1,6 +1,6 @@
-"""The one scaling of a limit for the MINLP solvers: a ratio to the limit (compared with 1), the value in display
-units for a limit of 0, a logarithm for life and margins; the branch for a limit of 0 follows the number even
-when the divisor is a symbol."""
+"""The one scaling of a limit for the MINLP solvers: a ratio to the limit (compared with 1), the
+value in display units for a limit of 0, a logarithm for life and margins; the branch for a limit of
+0 follows the number even when the divisor is a symbol."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""SCIP global-MINLP reference (optional extra axisopt[scip]): its optimum equals exhaustive enumeration's on
-the teaching problem and on seeded random catalogs; infeasibility, Pareto and CLI exit codes."""
+"""SCIP global-MINLP reference (optional extra axisopt[scip]): its optimum equals exhaustive
+enumeration's on the teaching problem and on seeded random catalogs; infeasibility, Pareto and CLI
+exit codes."""
 
 from __future__ import annotations
 
@@ -19,21 +20,21 @@ pytest.importorskip("pyscipopt")
 
 PROBLEMS = Path(__file__).resolve().parents[3] / "problems"
 # wall seconds: with the vendor rules SCIP's presolved proof is contradicted and solved again with
-# presolving off
-# (scip.RETRY_PARAMS): 9.7 s CPU, 25 s wall at load 9 on 2 cores; over 40 s wall under the suite's
-# load
+# presolving off (scip.RETRY_PARAMS): 9.7 s CPU, 25 s wall at load 9 on 2 cores; over 40 s wall
+# under the suite's load
 TEACHING_LIMIT = 120
 
 
 def _teaching_yaskawa_rule(tmp_path) -> Path:
-    """The teaching problem under Yaskawa's own RMS rule (RMS within the rated torque, rms_torque_ratio 1) for its
-    Yaskawa motors, at 2 m/s^2 and on part of its catalog: the nuts of its optimum and runner-up (HIWIN R40-40K2
-    and R32-40K2 FDC), the three DF support sets that fit them (WBK20/25/30-DF), one motor and one coupling.
-    SCIP proves this in seconds.  On the whole teaching catalog it finds the default method's optimum but does
-    not prove it within 60 s: with the default 0.8 (issue 26) not within 400 s (207 425 nodes), with the vendor
-    screw inertia not at 3 m/s^2 within 300 s (808 340 nodes), and with the vendors' nut and support-set lives
-    (HIWIN's two halves, NSK's preloaded sets) not within 60 s in any variant tried (life needs of 5 000 to
-    20 000 h, mean speeds of 4 and 8 m/min)."""
+    """The teaching problem under Yaskawa's own RMS rule (RMS within the rated torque,
+    rms_torque_ratio 1) for its Yaskawa motors, at 2 m/s^2 and on part of its catalog: the nuts of
+    its optimum and runner-up (HIWIN R40-40K2 and R32-40K2 FDC), the three DF support sets that fit
+    them (WBK20/25/30-DF), one motor and one coupling.  SCIP proves this in seconds.  On the whole
+    teaching catalog it finds the default method's optimum but does not prove it within 60 s: with
+    the default 0.8 (issue 26) not within 400 s (207 425 nodes), with the vendor screw inertia not
+    at 3 m/s^2 within 300 s (808 340 nodes), and with the vendors' nut and support-set lives
+    (HIWIN's two halves, NSK's preloaded sets) not within 60 s in any variant tried (life needs of 5
+    000 to 20 000 h, mean speeds of 4 and 8 m/min)."""
     text = (PROBLEMS / "teaching_problem.yaml").read_text(encoding="utf-8")
     old_require = "require: {coupling: [RINGFEDER-GWB-AKN-30, RINGFEDER-GWB-AKN-60]}"
     assert "\naxis:\n" in text and "  acceleration: 3 m/s^2\n" in text and old_require in text
@@ -99,8 +100,8 @@ def test_missing_pyscipopt_names_the_extra(monkeypatch):
 
 @pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_contradicted_proof_is_detected():
-    """A proof of infeasibility, or of an optimum below a design the search finds, is contradicted (the check
-    that turns SCIP's numerically wrong proofs into a failure)."""
+    """A proof of infeasibility, or of an optimum below a design the search finds, is contradicted
+    (the check that turns SCIP's numerically wrong proofs into a failure)."""
     from axisopt.search.minlp.scip import _contradiction
     from axisopt.search.parts import build_space
     from axisopt.search.task.constraints import build_constraints
@@ -119,9 +120,9 @@ def test_contradicted_proof_is_detected():
 
 @pytest.mark.slow
 def test_highspeed_problem_never_a_wrong_proof():
-    """SCIP's LP relaxation proves the high-speed problem's stage 2 infeasible (57 s, proven) although the default
-    method and exhaustive enumeration solve it (99.37 N/um): the answer is the optimum, a time limit or a failure,
-    never a wrong proven answer."""
+    """SCIP's LP relaxation proves the high-speed problem's stage 2 infeasible (57 s, proven)
+    although the default method and exhaustive enumeration solve it (99.37 N/um): the answer is the
+    optimum, a time limit or a failure, never a wrong proven answer."""
     p = load_problem(PROBLEMS / "highspeed_problem.yaml")
     s = solve(p, "scip", time_limit=45)
     assert s.status in ("optimal", "time_limit", "solver_failed"), s.message
@@ -133,9 +134,9 @@ def test_highspeed_problem_never_a_wrong_proof():
 
 @pytest.mark.parametrize("method", ["scip", "bonmin"])
 def test_twin_drive_is_refused(method, tmp_path, capsys):
-    """A twin-drive gantry (issue 40): SCIP's relaxation of the gantry's 2-DOF eigenvalues contradicted
-    enumeration on a synthetic case (proof 'contradicted by a feasible design'), so the MINLP references refuse
-    it with a one-line error (exit 2) instead of answering."""
+    """A twin-drive gantry (issue 40): SCIP's relaxation of the gantry's 2-DOF eigenvalues
+    contradicted enumeration on a synthetic case (proof 'contradicted by a feasible design'), so the
+    MINLP references refuse it with a one-line error (exit 2) instead of answering."""
     p = load_problem(PROBLEMS / "gantry_twin_problem.yaml")
     with pytest.raises(InputError, match="twin-drive"):
         solve(p, method)

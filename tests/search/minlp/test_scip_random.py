@@ -1,6 +1,6 @@
-"""SCIP against exhaustive enumeration on random catalogs (the mechanics, a drive with a frequency objective, a
-counterweighted vertical axis, reductions): a file of its own so that pytest-xdist runs it beside the other SCIP
-tests."""
+"""SCIP against exhaustive enumeration on random catalogs (the mechanics, a drive with a frequency
+objective, a counterweighted vertical axis, reductions): a file of its own so that pytest-xdist runs
+it beside the other SCIP tests."""
 
 from __future__ import annotations
 
@@ -16,11 +16,9 @@ pytest.importorskip("pyscipopt")
 
 
 # Seed 3 failed from issue 26 to issue 38 (SCIP stopped at preload 1578 N, 45.51 N/um, where
-# exhaustive
-# enumeration found 1872 N, 47.04 N/um, on the same parts: SCIP's global search cut the optimum
-# off).  With the
-# vendors' load factor and the estimated mounts the problem's optimum moved and SCIP proves it: kept
-# as a case.
+# exhaustive enumeration found 1872 N, 47.04 N/um, on the same parts: SCIP's global search cut the
+# optimum off).  With the vendors' load factor and the estimated mounts the problem's optimum moved
+# and SCIP proves it: kept as a case.
 @pytest.mark.parametrize("seed", [3, 4])
 def test_random_catalogs_equal_exhaustive(seed):
     rng = np.random.default_rng(seed)
@@ -64,8 +62,9 @@ def test_random_catalog_with_drive_and_frequency_equals_exhaustive():
 
 @pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_random_catalog_with_counterweight_equals_exhaustive():
-    """A counterweighted vertical axis with a drive: the one-hot MINLP sees the balance force in the loads and the
-    counterweight's inertia and weight in the motor torques as the default method does."""
+    """A counterweighted vertical axis with a drive: the one-hot MINLP sees the balance force in the
+    loads and the counterweight's inertia and weight in the motor torques as the default method
+    does."""
     from dataclasses import replace
 
     from axisopt.design import Counterbalance
@@ -91,9 +90,9 @@ def test_random_catalog_with_counterweight_equals_exhaustive():
 
 @pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_random_catalog_with_reductions_equals_exhaustive():
-    """(motor, coupling, reduction or none) drives: the one-hot MINLP over the guide-and-drive entries sees the
-    reduction's parameters (ratio, efficiency, input inertia, T2B/T2N, n1Max, Ct21, backlash, price) as the
-    default method does."""
+    """(motor, coupling, reduction or none) drives: the one-hot MINLP over the guide-and-drive
+    entries sees the reduction's parameters (ratio, efficiency, input inertia, T2B/T2N, n1Max, Ct21,
+    backlash, price) as the default method does."""
     from dataclasses import replace
 
     rng = np.random.default_rng(106)

@@ -1,5 +1,6 @@
-"""SCIP's own status words meet the status table (search/minlp/statuses.py) as SCIP returns them: a model
-SCIP solves reads PROVED, one stopped by its time or node limit STOPPED, an unbounded one UNEXPECTED."""
+"""SCIP's own status words meet the status table (search/minlp/statuses.py) as SCIP returns them: a
+model SCIP solves reads PROVED, one stopped by its time or node limit STOPPED, an unbounded one
+UNEXPECTED."""
 
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
-"""What an external solver's C code writes to file descriptor 2 during a solve stays off the user's terminal
-and is kept for the notes (SoPlex printed 'Cannot set feasibility tolerance ... without GMP' hundreds of times
-on one `solve --method scip` of the vertical problem)."""
+"""What an external solver's C code writes to file descriptor 2 during a solve stays off the user's
+terminal and is kept for the notes (SoPlex printed 'Cannot set feasibility tolerance ... without
+GMP' hundreds of times on one `solve --method scip` of the vertical problem)."""
 
 import os
 
@@ -19,8 +19,8 @@ def test_c_level_stderr_is_captured_and_restored(capfd):
 
 
 def test_temporary_file_closed_when_descriptor_2_cannot_be_duplicated(monkeypatch):
-    """No descriptor 2 to duplicate (a daemon): the messages stay where they go, and the temporary file
-    opened for them is closed at once (it was left open for the garbage collector)."""
+    """No descriptor 2 to duplicate (a daemon): the messages stay where they go, and the temporary
+    file opened for them is closed at once (it was left open for the garbage collector)."""
     import tempfile
 
     opened, real = [], tempfile.TemporaryFile

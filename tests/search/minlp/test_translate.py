@@ -1,6 +1,6 @@
-"""The CasADi expression graph as the SCIP translation reads it: every node's value on a batch of points equals
-CasADi's own evaluation, dependency masks name the inputs, an operation without a translation is refused, and
-the double nut's shift is replaced only while the model is built."""
+"""The CasADi expression graph as the SCIP translation reads it: every node's value on a batch of
+points equals CasADi's own evaluation, dependency masks name the inputs, an operation without a
+translation is refused, and the double nut's shift is replaced only while the model is built."""
 
 from __future__ import annotations
 

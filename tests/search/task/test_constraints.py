@@ -1,4 +1,5 @@
-"""Constraints derived from the model's tables: preload direction, favourable end, scaling for the solvers."""
+"""Constraints derived from the model's tables: preload direction, favourable end, scaling for the
+solvers."""
 
 from __future__ import annotations
 
@@ -67,8 +68,9 @@ def test_limit_constraint_renames_a_problem_limit():
 
 def test_a_part_at_its_limit_meets_it_once_both_are_in_si():
     """A nut's 0.05 mm play and a 50 um backlash limit become 5.000000000000001e-05 and
-    4.9999999999999996e-05 m; the part at the limit meets it (a generated axis was told to relax 50 um to
-    50 um, +2.2e-14 %).  A preload-dependent limit keeps its exact boundary (the preload searches find it)."""
+    4.9999999999999996e-05 m; the part at the limit meets it (a generated axis was told to relax 50
+    um to 50 um, +2.2e-14 %).  A preload-dependent limit keeps its exact boundary (the preload
+    searches find it)."""
     from axisopt.units import parse_quantity
 
     play = parse_quantity("0.05 mm", "length")

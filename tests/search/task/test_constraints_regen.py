@@ -1,5 +1,6 @@
-"""Limit ``max_regen_power`` (the mean power the motor returns to the drive): the default search equals
-exhaustive enumeration with it, on horizontal and vertical synthetic axes with drives, and it binds."""
+"""Limit ``max_regen_power`` (the mean power the motor returns to the drive): the default search
+equals exhaustive enumeration with it, on horizontal and vertical synthetic axes with drives, and it
+binds."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""Objective ``kv`` and limit ``min_kv`` (model.servo): the default search equals exhaustive enumeration on
-randomized problems, and Kv rises with the nut preload (the search's 1-D solve rests on it)."""
+"""Objective ``kv`` and limit ``min_kv`` (model.servo): the default search equals exhaustive
+enumeration on randomized problems, and Kv rises with the nut preload (the search's 1-D solve rests
+on it)."""
 
 from __future__ import annotations
 

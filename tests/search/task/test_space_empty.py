@@ -1,6 +1,7 @@
-"""Filters that leave a part slot empty (no guide, no bearing, no screw and nut) leave no combination at
-all: a one-line error naming the slot (exit code 2), not a traceback (the explanation had nothing to score)
-nor an "infeasible" answer that says every limit is met by some combination."""
+"""Filters that leave a part slot empty (no guide, no bearing, no screw and nut) leave no
+combination at
+all: a one-line error naming the slot (exit code 2), not a traceback (the explanation had nothing to
+score) nor an "infeasible" answer that says every limit is met by some combination."""
 
 from dataclasses import replace
 from pathlib import Path
