@@ -83,7 +83,7 @@ def catalog_row(kind: str, part) -> dict:
 def run_axisopt(path: Path, workdir: Path) -> tuple[Path | None, dict]:
     """Solve a problem (saving its optimum as a design) or take a design; evaluate it.  Returns the
     design file and the evaluate JSON; where the optimum is not a screw drive (a linear motor,
-    a rack: --save-design then writes the best screw drive, not the optimum), (None, the solve's
+    a rack: --save-design then writes its drive_design, not a screw design), (None, the solve's
     JSON) for the drive checker."""
     text = path.read_text(encoding="utf-8")
     design = path
@@ -96,7 +96,12 @@ def run_axisopt(path: Path, workdir: Path) -> tuple[Path | None, dict]:
             capture_output=True,
             text=True,
         )
-        if "beats the screw drive" in run.stderr:  # the optimum is another drive type
+        saved = yaml.safe_load(design.read_text(encoding="utf-8")) if design.exists() else None
+        # the optimum is another drive type: said on stderr, and --save-design writes its
+        # drive_design section (not a screw design)
+        if "beats the screw drive" in run.stderr or (
+            isinstance(saved, dict) and "drive_design" in saved
+        ):
             solved = workdir / "solve.json"
             subprocess.run(
                 cmd + ["solve", str(path), "--no-sensitivity", "--top", "1", "--json", str(solved)],

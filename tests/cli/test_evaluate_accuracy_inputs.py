@@ -54,7 +54,8 @@ def test_a_grade_without_a_tolerance_over_the_stroke_is_refused(tmp_path, capsys
     path = write_file(tmp_path, "d.yaml", text)
     assert main(["evaluate", path]) == 2
     err = one_line_error(capsys)
-    assert "key 'parts.screw_grade'" in err and "no lead tolerance over a 1700 mm stroke" in err, (
+    # judged over the travelled thread: the 1700 mm stroke and the nut's 90 mm
+    assert "key 'parts.screw_grade'" in err and "no lead tolerance over a 1790 mm travelled" in err, (
         err
     )
 
@@ -108,6 +109,6 @@ def test_the_budget_names_its_grade(tmp_path, capsys):
     assert main(["evaluate", path]) in (0, 1)
     out = capsys.readouterr().out
     assert "screw HIWIN-G-25x5-b3p175 grade C3" in out
-    # THK A-678 T.1: 12 + 8 um over 300 mm
-    assert "lead error, grade C3                            20.0" in out
+    # THK A-678 T.1: 13 + 10 um over 315-400 mm (the 300 mm stroke and the nut's 90 mm)
+    assert "lead error, grade C3                            23.0" in out
     assert "total, arithmetic worst case" in out and "repeatability (ISO 230-2)" in out
