@@ -55,9 +55,8 @@ def test_a_grade_without_a_tolerance_over_the_stroke_is_refused(tmp_path, capsys
     assert main(["evaluate", path]) == 2
     err = one_line_error(capsys)
     # judged over the travelled thread: the 1700 mm stroke and the nut's 90 mm
-    assert "key 'parts.screw_grade'" in err and "no lead tolerance over a 1790 mm travelled" in err, (
-        err
-    )
+    assert "key 'parts.screw_grade'" in err, err
+    assert "no lead tolerance over a 1790 mm travelled" in err, err
 
 
 @pytest.mark.parametrize(
