@@ -130,36 +130,33 @@ def compare_page(items, text: str, interactive: bool = False) -> Page:
         "failed checks",
     ]
     rows, classes = [], []
+
+    def judged(label, stiffness, frequency, drag, mass, cost, motor, least, failed, kind=""):
+        """One design's card and its row of the side-by-side table (values in display units)."""
+        page.card(
+            label,
+            kind
+            + f"{stiffness:,.1f} N/um, {frequency:,.1f} Hz"
+            + (f"; FAILS {', '.join(failed)}" if failed else ""),
+            "bad" if failed else "ok",
+        )
+        rows.append(
+            [label, f"{stiffness:,.1f}", f"{frequency:,.1f}", drag, mass, f"{cost:,.0f}", motor]
+            + ["n/a" if least is None else f"{least:.2f}", ", ".join(failed) or "none"]
+        )
+        classes.append(
+            ["wrap"] + [""] * 6 + [margin_class(least, not failed), "bad wrap" if failed else "ok"]
+        )
+
     for c in items:
         e = c.evaluation
         if e is None and getattr(c, "drive", None) is not None:  # a rack or linear-motor design
             d = c.drive
             failed = [k for k, v in d.margins.items() if v < 1.0]
             least = min(d.margins.values()) if d.margins else None
-            page.card(
-                c.label,
-                f"{LABELS[d.drive_type]}: {d.stiffness:,.1f} N/um, {d.frequency:,.1f} Hz"
-                + (f"; FAILS {', '.join(failed)}" if failed else ""),
-                "bad" if failed else "ok",
-            )
-            rows.append(
-                [
-                    c.label,
-                    f"{d.stiffness:,.1f}",
-                    f"{d.frequency:,.1f}",
-                    "-",
-                    "-",
-                    f"{d.cost:,.0f}",
-                    str(d.parts.get("motor", d.parts.get("linear_motor", "-"))),
-                    "n/a" if least is None else f"{least:.2f}",
-                    ", ".join(failed) or "none",
-                ]
-            )
-            classes.append(
-                ["wrap"]
-                + [""] * 6
-                + [margin_class(least, not failed), "bad wrap" if failed else "ok"]
-            )
+            motor = str(d.parts.get("motor", d.parts.get("linear_motor", "-")))
+            kind = f"{LABELS[d.drive_type]}: "
+            judged(c.label, d.stiffness, d.frequency, "-", "-", d.cost, motor, least, failed, kind)
             continue
         if e is None:
             page.card(c.label, c.solve["status"] if c.solve else "-", "bad")
@@ -171,28 +168,17 @@ def compare_page(items, text: str, interactive: bool = False) -> Page:
         checks = judged_rows(e, c.margins)  # a solved problem's checks against its limits.margins
         failed = [r["check"] for r in checks if not r["pass"]]
         margins = [r["margin"] for r in checks if r["margin"] is not None]
-        least = min(margins) if margins else None
-        page.card(
+        motor = str(e.design.motor["id"]) if e.design.motor is not None else "no drive"
+        judged(
             c.label,
-            f"{e.minimum('k_total')[0] / N_PER_UM:,.1f} N/um, {e.minimum('f1')[0]:,.1f} Hz"
-            + (f"; FAILS {', '.join(failed)}" if failed else ""),
-            "bad" if failed else "ok",
-        )
-        rows.append(
-            [
-                c.label,
-                f"{e.minimum('k_total')[0] / N_PER_UM:,.1f}",
-                f"{e.minimum('f1')[0]:,.1f}",
-                f"{float(e['drag_torque']):.3f}",
-                f"{float(e['total_mass']):,.1f}",
-                f"{float(e['cost']):,.0f}",
-                str(e.design.motor["id"]) if e.design.motor is not None else "no drive",
-                "n/a" if least is None else f"{least:.2f}",
-                ", ".join(failed) or "none",
-            ]
-        )
-        classes.append(
-            ["wrap"] + [""] * 6 + [margin_class(least, not failed), "bad wrap" if failed else "ok"]
+            e.minimum("k_total")[0] / N_PER_UM,
+            e.minimum("f1")[0],
+            f"{float(e['drag_torque']):.3f}",
+            f"{float(e['total_mass']):,.1f}",
+            float(e["cost"]),
+            motor,
+            min(margins) if margins else None,
+            failed,
         )
     page.section("Side by side").append(table(head, rows, classes=classes) + MARGIN_KEY)
     if evs:

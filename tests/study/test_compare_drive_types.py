@@ -13,6 +13,7 @@ import pytest
 
 from axisopt.cli import main
 from axisopt.problem import load_problem
+from axisopt.report.drivetype import LABELS
 from axisopt.search.drivefile import drive_design_yaml, evaluate_drive_design
 from axisopt.search.drivetype import solve_drive_types
 
@@ -63,6 +64,9 @@ def test_side_by_side_text_json_csv_html(tmp_path, capsys, rack_file):
     )
     html = (tmp_path / "c.html").read_text()
     assert f"{rack.stiffness:,.1f}" in html and f"{laser.stiffness:,.1f}" in html
+    # each design's card names its drive type before its stiffness and frequency
+    card = f"{LABELS['rack_pinion']}: {rack.stiffness:,.1f} N/um, {rack.frequency:,.1f} Hz"
+    assert card in html
     text = (tmp_path / "c.json").read_text() and capsys.readouterr().out
     assert "rack and pinion" in text and "linear motor" in text and "screw" in text
     assert f"{rack.cost:,.0f} EUR" in text and "nut_life)  FAIL" in text
