@@ -132,6 +132,15 @@ def wrote(path, quiet: bool) -> None:
         print(f"\nreport written to {path}")
 
 
+def write_html_report(args, quiet: bool, page, *inputs) -> None:
+    """Write ``page(*inputs, interactive=...)`` to ``args.report`` as one HTML file, interactive
+    unless ``--plotly no``, and say where unless stdout carries data (``quiet``)."""
+    from ..report.html import write_page
+
+    write_page(page(*inputs, interactive=args.plotly != "no"), args.report, plotly=args.plotly)
+    wrote(args.report, quiet)
+
+
 class GuardedStdout:
     """sys.stdout for the length of one command: a closed pipe (``axisopt ... | head``) or a full
     device (``> /dev/full``) does not end the command with a traceback or a wrong exit code.  The

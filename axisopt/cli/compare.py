@@ -10,8 +10,8 @@ from .common import (
     error_line,
     show,
     stdout_taken,
+    write_html_report,
     write_json,
-    wrote,
 )
 
 
@@ -66,15 +66,9 @@ def cmd_compare(args) -> int:
         if not stdout_taken(args.json, args.csv):
             print(f"\nplot written to {args.plot}")
     if args.report:
-        from ..report.html import write_page
         from ..report.htmlpages import compare_page
 
-        write_page(
-            compare_page(items, text, interactive=args.plotly != "no"),
-            args.report,
-            plotly=args.plotly,
-        )
-        wrote(args.report, stdout_taken(args.json, args.csv))
+        write_html_report(args, stdout_taken(args.json, args.csv), compare_page, items, text)
     failed = [c for c in items if not c.ok]
     for c in failed:
         error_line(f"{c.source}: problem has no design to compare (status {c.solve['status']})")

@@ -8,7 +8,7 @@ others validation); the text and JSON of either diagnosis come from :mod:`axisop
 from __future__ import annotations
 
 from ..errors import InputError
-from .common import EXIT_OK, PLOTLY_HELP, stdout_taken, write_json
+from .common import EXIT_OK, PLOTLY_HELP, stdout_taken, write_html_report, write_json
 
 
 def cmd_diagnose(args) -> int:
@@ -49,16 +49,9 @@ def cmd_diagnose(args) -> int:
     if not quiet:
         print(text)
     if html:
-        from ..report.html import write_page
         from ..report.htmlpages import diagnose_page
 
-        write_page(
-            diagnose_page(diag, text, interactive=args.plotly != "no"),
-            args.report,
-            plotly=args.plotly,
-        )
-        if not quiet:
-            print(f"report written to {args.report}")
+        write_html_report(args, quiet, diagnose_page, diag, text)
     elif args.report:
         path = write_report(diag, args.report)
         if not quiet:

@@ -11,6 +11,7 @@ from .common import (
     check_html_report,
     show,
     stdout_taken,
+    write_html_report,
     write_json,
     wrote,
 )
@@ -122,12 +123,9 @@ def cmd_evaluate(args) -> int:
         if not stdout_taken(args.json):
             print(f"\nstate-space model written to {args.ss}")
     if args.report:
-        from ..report.html import evaluation_page, write_page
+        from ..report.html import evaluation_page
 
-        write_page(
-            evaluation_page(ev, interactive=args.plotly != "no"), args.report, plotly=args.plotly
-        )
-        wrote(args.report, stdout_taken(args.json))
+        write_html_report(args, stdout_taken(args.json), evaluation_page, ev)
     if args.fail_on_check:
         from ..report.evaluation import check_rows
 
@@ -171,14 +169,8 @@ def _evaluate_drive_design(args) -> int:
         show(text)
     if args.report:
         from ..report.drivehtml import drive_design_page
-        from ..report.html import write_page
 
-        write_page(
-            drive_design_page(d, problem, text, interactive=args.plotly != "no"),
-            args.report,
-            plotly=args.plotly,
-        )
-        wrote(args.report, quiet)
+        write_html_report(args, quiet, drive_design_page, d, problem, text)
     if args.json:
         write_json({"problem": problem.name, **d.to_dict()}, args.json)
     if args.plot:

@@ -4,7 +4,15 @@ joint solve per case, locally or on a Dask cluster (the axis study's runner)."""
 
 from __future__ import annotations
 
-from .common import EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, show, write_json
+from .common import (
+    EXIT_NEGATIVE,
+    EXIT_OK,
+    add_html_report,
+    check_html_report,
+    show,
+    write_html_report,
+    write_json,
+)
 from .study import add_run_options
 
 
@@ -81,14 +89,9 @@ def cmd_machine_solve(args) -> int:
     if args.json:
         write_json(machine_dict(res), args.json)
     if args.report:
-        from ..report.html import write_page
         from ..report.machine_html import machine_page
 
-        write_page(
-            machine_page(res, text, interactive=args.plotly != "no"),
-            args.report,
-            plotly=args.plotly,
-        )
+        write_html_report(args, bool(args.json and is_stdout(args.json)), machine_page, res, text)
     return EXIT_OK if res.best is not None else EXIT_NEGATIVE
 
 
@@ -178,12 +181,8 @@ def cmd_machine_evaluate(args) -> int:
             args.json,
         )
     if args.report:
-        from ..report.html import write_page
         from ..report.machine_html import evaluation_page
 
-        write_page(
-            evaluation_page(ev, text, interactive=args.plotly != "no"),
-            args.report,
-            plotly=args.plotly,
-        )
+        quiet = bool(args.json and is_stdout(args.json))
+        write_html_report(args, quiet, evaluation_page, ev, text)
     return EXIT_OK if ev.design is not None and ev.design.feasible else EXIT_NEGATIVE

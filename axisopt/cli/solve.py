@@ -14,6 +14,7 @@ from .common import (
     one_line,
     show,
     stdout_taken,
+    write_html_report,
     write_json,
     wrote,
 )
@@ -152,15 +153,9 @@ def cmd_solve(args) -> int:
         if not quiet:
             print(f"\nplot written to {args.plot}")
     if args.report:
-        from ..report.html import write_page
         from ..report.htmlpages import solve_page
 
-        write_page(
-            solve_page(res, problem, text, interactive=args.plotly != "no"),
-            args.report,
-            plotly=args.plotly,
-        )
-        wrote(args.report, quiet)
+        write_html_report(args, quiet, solve_page, res, problem, text)
     if args.save_design:
         written = save_designs(res, args.save_design, args.top, args.problem, problem)
         if not written:
@@ -200,14 +195,8 @@ def _show_drive_types(args, res) -> int:
         show(text)
     if args.report:
         from ..report.drivehtml import drive_types_page
-        from ..report.html import write_page
 
-        write_page(
-            drive_types_page(res, text, interactive=args.plotly != "no"),
-            args.report,
-            plotly=args.plotly,
-        )
-        wrote(args.report, quiet)
+        write_html_report(args, quiet, drive_types_page, res, text)
     if args.json:
         write_json(res.to_dict(), args.json)
     if args.plot:

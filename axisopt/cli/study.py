@@ -6,7 +6,15 @@ import sys
 import time
 
 from ..errors import InputError
-from .common import EXIT_INPUT, EXIT_NEGATIVE, EXIT_OK, add_html_report, check_html_report, one_line
+from .common import (
+    EXIT_INPUT,
+    EXIT_NEGATIVE,
+    EXIT_OK,
+    add_html_report,
+    check_html_report,
+    one_line,
+    write_html_report,
+)
 
 
 def register(sub) -> None:
@@ -197,16 +205,11 @@ def cmd_study(args) -> int:
         + f"; {s.failed} failed"
     )
     if args.report:
-        from ..report.html import write_page
         from ..report.htmlpages import study_page
         from ..study.table import results_table
 
         md = Path(s.files["report"]).read_text(encoding="utf-8") if "report" in s.files else ""
-        write_page(
-            study_page(study, results_table(study, out), md, interactive=args.plotly != "no"),
-            args.report,
-            plotly=args.plotly,
-        )
+        write_html_report(args, True, study_page, study, results_table(study, out), md)
         s.files["html report"] = args.report
     for name, path in s.files.items():
         print(f"  {name}: {path}")

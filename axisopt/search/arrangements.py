@@ -220,33 +220,17 @@ def solve_arrangements(
         return _pareto(problem, method, subs, labels, t0, door, time_limit)
     # one time limit for the whole command: each arrangement gets what the ones before it left
     deadline = t0 + time_limit
+
     # an infeasible arrangement is explained only when none has a design (its explanation is then
     # the answer's): searched again then, with the explanation
-    results = [
-        solve(
-            sub,
-            method,
-            top=top,
-            time_limit=max(deadline - time.perf_counter(), 1e-3),
-            sensitivities=False,
-            explain=False,
-        )
-        for sub in subs
-    ]
+    def run(sub, explain):
+        left = max(deadline - time.perf_counter(), 1e-3)
+        return solve(sub, method, top=top, time_limit=left, sensitivities=False, explain=explain)
+
+    results = [run(sub, False) for sub in subs]
     found = [i for i, r in enumerate(results) if r.best is not None]
     if not found:
-        results = [
-            solve(
-                sub,
-                method,
-                top=top,
-                time_limit=max(deadline - time.perf_counter(), 1e-3),
-                sensitivities=False,
-            )
-            if r.status == INFEASIBLE
-            else r
-            for sub, r in zip(subs, results)
-        ]
+        results = [run(sub, True) if r.status == INFEASIBLE else r for sub, r in zip(subs, results)]
     n = len(results)
     cert = _certificate(results)
     tried = f"{n} arrangements tried ({'; '.join(labels)})"
