@@ -25,6 +25,8 @@ All functions take floats, numpy arrays or CasADi symbols.
 
 from __future__ import annotations
 
+import numpy as np
+
 from .. import mathx as mx
 
 __all__ = [
@@ -118,12 +120,11 @@ def hertz_set_halves(preload, load, n_plus, n_minus):
     # (a load error below 1e-9 F; bounded derivatives for the solvers)
     after = r * (mx.fmax(f, 1e-12) ** (2.0 / 3.0) - 1.0)
     s = mx.fmin(f / (1.5 / r + 1.5), 1.0)
-    for _ in range(HERTZ_STEPS):
-        lo = mx.fmax(1.0 - s, 1e-6)
-        hi = mx.fmax(1.0 + s / r, 1e-6)
-        g = hi**1.5 - lo**1.5 - f
-        dg = 1.5 / r * mx.sqrt(hi) + 1.5 * mx.sqrt(lo)
-        s = mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
+    if mx.is_symbolic(s, r, f):
+        for _ in range(HERTZ_STEPS):
+            s = _newton_step(s, r, f)
+    else:
+        s = _newton_numbers(s, r, f)
     s = mx.if_else(f >= lift, after, s)
     # floored above 0: pow(0, 3/2)'s second derivative is not a number (the solvers' Hessian)
     pressed = preload * mx.fmax(1.0 + s / r, 1e-12) ** 1.5
@@ -132,3 +133,29 @@ def hertz_set_halves(preload, load, n_plus, n_minus):
         mx.if_else(pressed_plus, pressed, other),
         mx.if_else(pressed_plus, other, pressed),
     )
+
+
+def _newton_step(s, r, f):
+    """One Newton step of :func:`hertz_set_halves`'s equation in s (clamped to [0, 1])."""
+    lo = mx.fmax(1.0 - s, 1e-6)
+    hi = mx.fmax(1.0 + s / r, 1e-6)
+    g = hi**1.5 - lo**1.5 - f
+    dg = 1.5 / r * mx.sqrt(hi) + 1.5 * mx.sqrt(lo)
+    return mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
+
+
+def _newton_numbers(s, r, f):
+    """The same Newton steps on numbers, each step only on the elements still moving (a step below
+    1e-15 leaves an element as the fixed steps would: converged to rounding); at most
+    HERTZ_STEPS steps, as the symbolic expression."""
+    shape = np.broadcast_shapes(np.shape(s), np.shape(r), np.shape(f))
+    s, r, f = (np.array(np.broadcast_to(v, shape), dtype=float).ravel() for v in (s, r, f))
+    idx = np.arange(s.size)
+    for _ in range(HERTZ_STEPS):
+        new = _newton_step(s[idx], r[idx], f[idx])
+        moved = np.abs(new - s[idx]) > 1e-15
+        s[idx] = new
+        idx = idx[moved]
+        if not idx.size:
+            break
+    return s.reshape(shape) if shape else float(s[0])
