@@ -22,6 +22,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..search.candidates import make_candidate
+from ..search.drivespace import MOTOR_MASS_BASE, MOTOR_MASS_PER_NM
 from ..search.exhaustive import exhaustive_search
 from ..search.pareto import nondominated, screen_feasible_blocks
 from ..search.parts import build_space
@@ -129,6 +130,32 @@ def _link_stiffness(ax: MachineAxis, axis, space, ex_rows, stiffness) -> np.ndar
     return np.column_stack([by[ax.link_role(d)] for d in DIRECTIONS])
 
 
+def drive_mass(space, g) -> np.ndarray:
+    """The mass [kg] of the drive (motor, coupling, reduction) of guide-and-drive numbers ``g``: it
+    stays on the carrier.  A motor row without a catalog mass weighs the rack drives' estimate, 2 kg
+    + 0.7 kg per N m rated (docs/assumptions.md); no drive search: 0 (the axis's own values)."""
+    g = np.asarray(g, dtype=np.int64)
+    if space.m_arr is None:
+        return np.zeros(len(g))
+    m = space.motors.number("mass")
+    m = np.where(
+        np.isfinite(m), m, MOTOR_MASS_BASE + MOTOR_MASS_PER_NM * space.motors.number("rated_torque")
+    )
+    cm = (
+        space.couplings.number("mass")
+        if space.couplings is not None and len(space.couplings)
+        else None
+    )
+    rm = space.reductions.number("mass") if space.reductions is not None else None
+    per = np.array(
+        [
+            m[mi] + (cm[ci] if ci is not None else 0.0) + (rm[ri] if ri is not None else 0.0)
+            for mi, ci, ri in space.drives
+        ]
+    )
+    return per[g % len(space.drives)]
+
+
 def axis_designs(
     ax: MachineAxis,
     load: float,
@@ -176,7 +203,9 @@ def axis_designs(
         rows["cost"].append(ex.goals["cost"][ok])
         # in the model's total mass
         carried = axis.moving_mass + (axis.twin_drive.cross_mass if twin else 0.0)
-        rows["parts"].append(ex.goals["total_mass"][ok] - carried)
+        # the axis's parts and its drive(s), which stay on the carrier
+        drives = (1.0 + twin) * drive_mass(space, g)
+        rows["parts"].append(ex.goals["total_mass"][ok] - carried + drives)
         rows["moving"].append(moving)
         rows["cw"].append(np.full(len(ok), counterweight(axis)))
         rows["k"].append(_link_stiffness(ax, axis, space, idx, ex.goals["stiffness"][ok]))

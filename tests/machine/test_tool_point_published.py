@@ -129,3 +129,40 @@ def test_the_lumped_chain_is_the_two_mass_closed_form_on_the_catalog_masses(tmp_
     )
     assert md.f_dunkerley == pytest.approx(fd, rel=1e-9)
     assert md.f_dunkerley <= md.f_lowest
+
+
+def test_the_carried_axis_hangs_its_motor_coupling_and_reduction_on_its_carrier(tmp_path):
+    """An axis's drive stays on the axis below with its screw, bearings and rails: the carrier
+    carries the carried axis's structure, its axis parts and its drive, each part's mass read from
+    its catalog row (a motor row without one: 2 kg + 0.7 kg per N m rated, the stated estimate)."""
+    from axisopt.model import evaluate
+
+    head, sep, x_part = MACHINE.partition("  X:\n")
+    x_part = x_part.replace(
+        "drive: no\n        require: {screw:",
+        "motor_series: [Sigma-7 SGM7G]\n"
+        "        require: {coupling: [RINGFEDER-GWB-AKN-150], screw:",
+    )
+    assert "motor_series" in x_part
+    p = tmp_path / "driven.yaml"
+    p.write_text(head + sep + x_part)
+    md = solve_machine(load_machine(p)).best
+    assert md is not None
+    x = {a.name: a for a in md.axes}["X"]
+    c = x.candidate
+    assert c.motor and c.coupling
+    motor = _row("motors", c.motor)
+    m_motor = (
+        float(motor["mass [kg]"])
+        if motor["mass [kg]"]
+        else 2.0 + 0.7 * float(motor["rated_torque [N.m]"])
+    )
+    m_drive = m_motor + float(_row("couplings", c.coupling)["mass [kg]"])
+    if c.reduction:
+        m_drive += float(_row("reductions", c.reduction)["mass [kg]"])
+    # the axis parts the axis model counts (screw, nut, bearings, rails, blocks) and the drive
+    axis_parts = float(evaluate(c.design)["total_mass"]) - 200.0
+    assert x.parts_mass == pytest.approx(axis_parts + m_drive, rel=1e-9)
+    assert {a.name: a for a in md.axes}["Y"].carried == pytest.approx(
+        200.0 + axis_parts + m_drive, rel=1e-9
+    )
