@@ -69,7 +69,7 @@ class AxisDesigns:
     idx: np.ndarray  # combination number in its space
     preload: np.ndarray  # [N]
     cost: np.ndarray  # [EUR]
-    parts: np.ndarray  # every part's mass [kg]
+    parts: np.ndarray  # every part's mass, the drive's too [kg]
     moving_parts: np.ndarray  # nut(s) and guide blocks [kg]
     counterweight: np.ndarray  # hung on the carrier [kg]
     k: np.ndarray  # (K, 3) the axis link's stiffness in x, y, z, without the frame [N/m]
