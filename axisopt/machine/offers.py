@@ -130,23 +130,26 @@ def _link_stiffness(ax: MachineAxis, axis, space, ex_rows, stiffness) -> np.ndar
     return np.column_stack([by[ax.link_role(d)] for d in DIRECTIONS])
 
 
+def _masses(table) -> np.ndarray:
+    """The ``mass`` column of a part table [kg] (NaN where a row or the catalog gives none)."""
+    if table is None or not len(table):
+        return np.zeros(0)
+    return table.number("mass") if "mass" in table else np.full(len(table), np.nan)
+
+
 def drive_mass(space, g) -> np.ndarray:
     """The mass [kg] of the drive (motor, coupling, reduction) of guide-and-drive numbers ``g``: it
-    stays on the carrier.  A motor row without a catalog mass weighs the rack drives' estimate, 2 kg
-    + 0.7 kg per N m rated (docs/assumptions.md); no drive search: 0 (the axis's own values)."""
+    stays on the carrier.  A motor without a catalog mass weighs the rack drives' estimate, 2 kg +
+    0.7 kg per N m rated; a coupling or reduction without one, nothing (docs/assumptions.md); no
+    drive search: 0 (the axis's own values)."""
     g = np.asarray(g, dtype=np.int64)
     if space.m_arr is None:
         return np.zeros(len(g))
-    m = space.motors.number("mass")
-    m = np.where(
-        np.isfinite(m), m, MOTOR_MASS_BASE + MOTOR_MASS_PER_NM * space.motors.number("rated_torque")
-    )
-    cm = (
-        space.couplings.number("mass")
-        if space.couplings is not None and len(space.couplings)
-        else None
-    )
-    rm = space.reductions.number("mass") if space.reductions is not None else None
+    m = _masses(space.motors)
+    guess = MOTOR_MASS_BASE + MOTOR_MASS_PER_NM * space.motors.number("rated_torque")
+    m = np.where(np.isfinite(m), m, guess)
+    cm = np.nan_to_num(_masses(space.couplings))
+    rm = np.nan_to_num(_masses(space.reductions))
     per = np.array(
         [
             m[mi] + (cm[ci] if ci is not None else 0.0) + (rm[ri] if ri is not None else 0.0)
