@@ -81,6 +81,7 @@ class _Designs:
         self.superset: dict = {}
         self.solves = 0
         self.combinations: dict = {}
+        self.loads: dict = {}  # axis name -> {carried load [kg]: feasible designs}
 
     def get(self, ax, load: float, at: tuple):
         key = (ax.name, round(load, 9))
@@ -93,6 +94,7 @@ class _Designs:
             d = axis_designs(ax, load, at, exhaustive=self.exhaustive, superset=sup)
             self.solves += 1
             self.combinations[ax.name] = max(self.combinations.get(ax.name, 0), d.combinations)
+            self.loads.setdefault(ax.name, {})[load] = d.feasible
             if not self.exhaustive:
                 self.superset.setdefault(ax.name, []).append((load, feasible_sets(d)))
             self.cache[key] = d if self.exhaustive else pareto_designs(d)
@@ -477,6 +479,8 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
         for i in range(1, len(ch))
         if not monotone_in_load(ch[i - 1])
     ]
+    if best is None:
+        notes += _without_designs(designs)
     for name in machine.estimated_frames:
         notes.append(
             f"the frame under {name} is the stated estimate (as stiff as the axis link: its "
@@ -498,6 +502,18 @@ def solve_machine(machine: Machine, method: str = "default") -> MachineResult:
         time.perf_counter() - t0,
         notes,
     )
+
+
+def _without_designs(designs: _Designs) -> list:
+    """Notes naming each axis that had no design meeting its own limits at any load it was solved
+    at (an infeasible machine: that axis is the one to look at alone)."""
+    return [
+        f"axis {name} has no design meeting its own limits at {min(by):,.1f} kg carried (the "
+        "lightest load it was solved at): solve its problem alone (`axisopt solve`) to see which "
+        "limit no design meets"
+        for name, by in designs.loads.items()
+        if not any(by.values())
+    ]
 
 
 _EMPTY = {

@@ -42,7 +42,7 @@ class AxisChoice:
     k_link: tuple  # the two in series [N/m]
     roles: tuple  # 'axial' | 'normal' | 'lateral' per direction
     cost: float  # [EUR]
-    parts_mass: float  # [kg]
+    parts_mass: float  # its parts and drive (motor, coupling, reduction) [kg]
     counterweight: float = 0.0  # [kg]
     frame_estimated: bool = False
 

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..search.candidates import make_candidate
+from ..search.drivespace import MOTOR_MASS_BASE, MOTOR_MASS_PER_NM
 from ..search.exhaustive import exhaustive_search
 from ..search.pareto import nondominated, screen_feasible_blocks
 from ..search.parts import build_space
@@ -68,7 +69,7 @@ class AxisDesigns:
     idx: np.ndarray  # combination number in its space
     preload: np.ndarray  # [N]
     cost: np.ndarray  # [EUR]
-    parts: np.ndarray  # every part's mass [kg]
+    parts: np.ndarray  # every part's mass, the drive's too [kg]
     moving_parts: np.ndarray  # nut(s) and guide blocks [kg]
     counterweight: np.ndarray  # hung on the carrier [kg]
     k: np.ndarray  # (K, 3) the axis link's stiffness in x, y, z, without the frame [N/m]
@@ -129,6 +130,35 @@ def _link_stiffness(ax: MachineAxis, axis, space, ex_rows, stiffness) -> np.ndar
     return np.column_stack([by[ax.link_role(d)] for d in DIRECTIONS])
 
 
+def _masses(table) -> np.ndarray:
+    """The ``mass`` column of a part table [kg] (NaN where a row or the catalog gives none)."""
+    if table is None or not len(table):
+        return np.zeros(0)
+    return table.number("mass") if "mass" in table else np.full(len(table), np.nan)
+
+
+def drive_mass(space, g) -> np.ndarray:
+    """The mass [kg] of the drive (motor, coupling, reduction) of guide-and-drive numbers ``g``: it
+    stays on the carrier.  A motor without a catalog mass weighs the rack drives' estimate, 2 kg +
+    0.7 kg per N m rated; a coupling or reduction without one, nothing (docs/assumptions.md); no
+    drive search: 0 (the axis's own values)."""
+    g = np.asarray(g, dtype=np.int64)
+    if space.m_arr is None:
+        return np.zeros(len(g))
+    m = _masses(space.motors)
+    guess = MOTOR_MASS_BASE + MOTOR_MASS_PER_NM * space.motors.number("rated_torque")
+    m = np.where(np.isfinite(m), m, guess)
+    cm = np.nan_to_num(_masses(space.couplings))
+    rm = np.nan_to_num(_masses(space.reductions))
+    per = np.array(
+        [
+            m[mi] + (cm[ci] if ci is not None else 0.0) + (rm[ri] if ri is not None else 0.0)
+            for mi, ci, ri in space.drives
+        ]
+    )
+    return per[g % len(space.drives)]
+
+
 def axis_designs(
     ax: MachineAxis,
     load: float,
@@ -176,7 +206,9 @@ def axis_designs(
         rows["cost"].append(ex.goals["cost"][ok])
         # in the model's total mass
         carried = axis.moving_mass + (axis.twin_drive.cross_mass if twin else 0.0)
-        rows["parts"].append(ex.goals["total_mass"][ok] - carried)
+        # the axis's parts and its drive(s), which stay on the carrier
+        drives = (1.0 + twin) * drive_mass(space, g)
+        rows["parts"].append(ex.goals["total_mass"][ok] - carried + drives)
         rows["moving"].append(moving)
         rows["cw"].append(np.full(len(ok), counterweight(axis)))
         rows["k"].append(_link_stiffness(ax, axis, space, idx, ex.goals["stiffness"][ok]))

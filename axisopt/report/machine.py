@@ -85,11 +85,13 @@ def format_machine(res) -> str:
         f"({', '.join(' <- '.join(a.name for a in ch) for ch in m.branches())}"
         f" on the frame), objective {m.objective}, method {res.method}"
     ]
-    L.append(
-        f"status {res.status}: {res.nominal_combinations:.3g} nominal joint combinations, "
-        f"{res.axis_solves} axis solves, offers kept "
-        f"{', '.join(f'{k} {v}' for k, v in res.offers.items())}"
+    nominal = (
+        f"{res.nominal_combinations:.3g} nominal joint combinations"
+        if res.nominal_combinations > 0
+        else "nominal joint combinations not counted (the search ended before every axis)"
     )
+    kept = ", ".join(f"{k} {v}" for k, v in res.offers.items()) or "none"
+    L.append(f"status {res.status}: {nominal}, {res.axis_solves} axis solves, offers kept {kept}")
     L.append(f"time {res.time:.1f} s")
     if res.best is None:
         L.append("no combination of the axes' designs meets every machine and axis limit")

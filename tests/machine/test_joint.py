@@ -27,21 +27,44 @@ def test_default_equals_every_combination_of_every_axis(seed, tmp_path):
 
 
 def test_the_random_machines_cover_counterweights_twin_drives_and_the_non_monotone_case(tmp_path):
+    """The 100 random machines hold each case the issue names, with and without a counterweight
+    and a twin drive (and both, and neither), and every machine objective."""
     from axisopt.machine.offers import monotone_in_load
 
-    seen = {"counterweight": 0, "below a counterweighted axis": 0, "twin drive": 0, "two chains": 0}
+    seen = dict.fromkeys(
+        (
+            "counterweight",
+            "no counterweight",
+            "below a counterweighted axis",
+            "twin drive",
+            "no twin drive",
+            "counterweight and twin drive",
+            "neither",
+            "two chains",
+        ),
+        0,
+    )
+    objectives = set()
     for seed in SEEDS:
         path = tmp_path / f"m{seed}.yaml"
         path.write_text(random_machine(seed))
         m = load_machine(path)
         chains = m.branches()
-        seen["counterweight"] += any(a.problem.axis.counterbalance is not None for a in m.axes)
+        cw = any(a.problem.axis.counterbalance is not None for a in m.axes)
+        twin = any(a.problem.axis.twin_drive is not None for a in m.axes)
+        seen["counterweight"] += cw
+        seen["no counterweight"] += not cw
         seen["below a counterweighted axis"] += any(
             not monotone_in_load(c[i - 1]) for c in chains for i in range(1, len(c))
         )
-        seen["twin drive"] += any(a.problem.axis.twin_drive is not None for a in m.axes)
+        seen["twin drive"] += twin
+        seen["no twin drive"] += not twin
+        seen["counterweight and twin drive"] += cw and twin
+        seen["neither"] += not cw and not twin
         seen["two chains"] += len(chains) > 1
+        objectives.add(m.objective)
     assert min(seen.values()) >= 15, seen
+    assert objectives == {"cost", "tool_stiffness", "frequency", "moving_mass"}
 
 
 @pytest.mark.slow
