@@ -145,7 +145,8 @@ def _sub_frequency(m, k) -> np.ndarray:
     3)."""
     if not len(m):
         return np.zeros(0)
-    return np.min([lowest_frequency(m, k[:, :, d]) for d in range(3)], axis=0)
+    # the three directions as one batch (3, K, n): one call of the closed form, not three
+    return lowest_frequency(np.asarray(m, dtype=float), np.moveaxis(k, 2, 0)).min(axis=0)
 
 
 def _best_below(machine: Machine, chain: list, designs: _Designs, i: int) -> dict | None:
@@ -237,7 +238,7 @@ def _completion(machine: Machine, J: dict, other: dict) -> np.ndarray:
     """The best machine objective (larger is better) each joined offer ``J`` of a whole chain
     reaches with the other chain's offers ``other`` within the machine limits (-inf: none)."""
     f = (
-        np.min([lowest_frequency(J["m"], J["k"][:, :, d]) for d in range(3)], axis=0)
+        _sub_frequency(J["m"], J["k"])
         if _reads_frequency(machine)
         else np.full(len(J["cost"]), np.inf)
     )
@@ -355,7 +356,7 @@ def _branch_offers(
             keep &= (N["c"] <= cmax * (1 + 1e-9)).all(1)
         f_sub = None
         if freq:
-            f_sub = np.min([lowest_frequency(N["m"], N["k"][:, :, d]) for d in range(3)], axis=0)
+            f_sub = _sub_frequency(N["m"], N["k"])
             if prune and machine.min_frequency > 0:
                 keep &= f_sub >= machine.min_frequency * (1 - 1e-9)
         N = _take(N, np.nonzero(keep)[0])
@@ -368,11 +369,7 @@ def _branch_offers(
             )
         kept[ax.name] = len(N["refs"])
         O = N
-    O["f"] = (
-        np.min([lowest_frequency(O["m"], O["k"][:, :, d]) for d in range(3)], axis=0)
-        if len(O["refs"])
-        else np.zeros(0)
-    )
+    O["f"] = _sub_frequency(O["m"], O["k"]) if len(O["refs"]) else np.zeros(0)
     return O
 
 
