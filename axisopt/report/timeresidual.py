@@ -22,8 +22,8 @@ def order_statement(diag: TimeDiagnosis, period_mm: float) -> str:
     red = diag.design.get("reduction", 1.0) or 1.0
     per_screw = lead_mm / period_mm
     return (
-        f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.4g} of the screw turn, order "
-        f"{per_screw / red:.4g} of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)"
+        f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.3g} of the screw turn, order "
+        f"{per_screw / red:.3g} of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)"
     )
 
 

@@ -52,7 +52,7 @@ EXPECTED = {
 }  # str.format of the record's Processing fields
 MAX_ORDER = 200  # the largest order of the motor turn tried (bounds the work)
 BALL_BAND = 0.15  # the ball-pass order is searched within +-15 % of the estimate
-SEEN_SHARE = 0.25  # a period is resolved when this share of the moving rows see it in band
+SEEN_SHARE = 0.2  # a period is resolved when this share of the moving rows see it in band
 
 
 def ball_pass_order(pitch_diameter: float, ball_diameter: float, contact_angle: float) -> float:
@@ -65,18 +65,11 @@ def ball_pass_order(pitch_diameter: float, ball_diameter: float, contact_angle: 
 
 
 def shortest_period(rows) -> float:
-    """The shortest period in position [record unit] the rows resolve: at the speed that a quarter
-    of the moving rows stay below, its line lies at the top of the fit band (0.6x the position
-    filter's cut-off, 0.9x the decimation's)."""
+    """The shortest period in position [record unit] the rows resolve: a fifth of the moving rows
+    see its line at or below the position filter's cut-off, where the residual still holds half of
+    it or more (:func:`in_band`)."""
     v = np.abs(rows.sig["v"][rows.keep])
-    hi = fit_band_top(rows.proc)
-    return float(np.quantile(v, SEEN_SHARE)) / hi if len(v) else math.inf
-
-
-def fit_band_top(proc) -> float:
-    """The highest line frequency fitted [Hz]: 0.6x the position filter's cut-off (where the
-    acceleration from the filtered position still holds 98 % of the line), 0.9x the decimation's."""
-    return min(0.6 * proc.fc, 0.9 * proc.fdec)
+    return float(np.quantile(v, SEEN_SHARE)) / rows.proc.fc if len(v) else math.inf
 
 
 def in_band(v, period: float, proc):
@@ -241,7 +234,7 @@ class MotorCogging(Effect):
         _pair("g", "motor-order force", "cog_period"),
         shape=Shape(
             "cog_period",
-            "period of the motor-order line at the table (orders scanned, refined on RSS)",
+            "period at the table (integer motor orders scanned)",
             "position",
             search=_cogging_search,
             also=(("cog_order", "order of the motor turn", "ratio"),),
@@ -294,7 +287,7 @@ class BallPass(Effect):
         _pair("n", "ball-pass force", "ball_period"),
         shape=Shape(
             "ball_period",
-            "period of the ball pass at the table (searched +-15 % of the estimate)",
+            "period at the table (within 15 % of the estimate)",
             "position",
             search=_ball_search,
             also=(("ball_order", "balls passing per screw turn", "ratio"),),
