@@ -67,36 +67,40 @@ def ball_pass_order(pitch_diameter: float, ball_diameter: float, contact_angle: 
 def shortest_period(rows) -> float:
     """The shortest period in position [record unit] the rows resolve: a fifth of the moving rows
     see its line at or below the position filter's cut-off, where the residual still holds half of
-    it or more (:func:`in_band`)."""
+    it or more (:func:`line_gain`)."""
     v = np.abs(rows.sig["v"][rows.keep])
     return float(np.quantile(v, SEEN_SHARE)) / rows.proc.fc if len(v) else math.inf
 
 
-def in_band(v, period: float, proc):
-    """The share of a force line at ``|v| / period`` the regression's residual holds: the
-    position filter's zero-phase response 1 / (1 + (f/f_c)^8).  Above the servo loop's bandwidth a
-    force line moves the table rather than the effort, u = M a + d with a = -d/M; the regression's
-    M a from the filtered position keeps the share H of it, so the residual keeps d - M (1 - H)
-    d/M = H d; below the bandwidth H = 1 and the effort holds d itself."""
-    f = np.abs(v) / (period * proc.fc)
-    return 1.0 / (1.0 + f**8)
+def line_gain(v, period: float, proc):
+    """The share of a force line at ``f = |v| / period`` the regression's residual holds at each
+    row.  The effort is u = M a + d + F; the line's force d moves the table by M a = -T d through
+    the position loop, and the regression's M a comes from the position filtered by the
+    zero-phase H = 1 / (1 + (f/f_c)^8), so the residual keeps g = 1 - (1 - H) T of the line: all
+    of it below the loop's bandwidth (where H = 1 too), H above it (T = 1, the table takes the
+    line).  g = H is taken throughout: the loop's bandwidth lies well below the position filter's
+    cut-off, where the two differ."""
+    return 1.0 / (1.0 + (np.abs(v) / (period * proc.fc)) ** 8)
 
 
-def _column(trig, key):
-    def column(sig, proc, shape):
-        period = shape[key]
-        return trig(2.0 * math.pi * sig["q"] / period) * in_band(sig["v"], period, proc)
+def line_columns(sig, proc, period: float) -> tuple:
+    """The sin, cos pair of a force line of ``period`` in position as the residual holds it
+    (:func:`line_gain`).  Its own instruments in the IV fit (``simulated=False``): a period of a
+    millimetre or less does not survive the re-simulated loop's position error."""
+    a = line_gain(sig["v"], period, proc)
+    ph = 2.0 * math.pi * sig["q"] / period
+    return a * np.sin(ph), a * np.cos(ph)
 
-    return column
+
+def _column(k, key):
+    return lambda sig, proc, shape: line_columns(sig, proc, shape[key])[k]
 
 
 def _share(rows, r, period) -> float:
     """Share of ``r`` a sin, cos pair of 2 pi q / period holds at the rows that see it in band
     (least squares)."""
-    q = rows.sig["q"][rows.keep]
-    g = in_band(rows.sig["v"][rows.keep], period, rows.proc)
-    ph = 2.0 * math.pi * q / period
-    G = np.column_stack([g * np.sin(ph), g * np.cos(ph), np.ones(len(q))])
+    sig = {"q": rows.sig["q"][rows.keep], "v": rows.sig["v"][rows.keep]}
+    G = np.column_stack([*line_columns(sig, rows.proc, period), np.ones(len(r))])
     coef, *_ = np.linalg.lstsq(G, r, rcond=None)
     rc = r - r.mean()
     return 1.0 - float(np.sum((r - G @ coef) ** 2)) / (float(rc @ rc) or 1.0)
@@ -217,8 +221,20 @@ def _implausible(s, c, what):
 
 def _pair(prefix, label, key):
     return (
-        Term(f"{prefix}s", f"{label}, sin(2 pi q/P) coefficient", "effort", _column(np.sin, key)),
-        Term(f"{prefix}c", f"{label}, cos(2 pi q/P) coefficient", "effort", _column(np.cos, key)),
+        Term(
+            f"{prefix}s",
+            f"{label}, sin(2 pi q/P) coefficient",
+            "effort",
+            _column(0, key),
+            simulated=False,
+        ),
+        Term(
+            f"{prefix}c",
+            f"{label}, cos(2 pi q/P) coefficient",
+            "effort",
+            _column(1, key),
+            simulated=False,
+        ),
     )
 
 

@@ -124,3 +124,11 @@ def test_a_lead_ripple_decoy_is_not_named_a_motor_order(tmp_path):
     ax = Axis(lines=((50.0, LEAD, 0.4),))
     diag = _diagnose(tmp_path, plant, ax, Loop(fs=1000.0, rho=0.5), 61)
     assert diag.verdict == ["lead_ripple"]
+
+
+@pytest.mark.slow
+def test_a_pump_decoy_is_not_named_a_motor_order(tmp_path):
+    # a force periodic in time (23 Hz), not in position: no order of any turn
+    plant = _design(tmp_path, 2)
+    diag = _diagnose(tmp_path, plant, Axis(tone=(40.0, 23.0)), Loop(fs=1000.0, rho=0.5), 71)
+    assert diag.verdict == ["time_periodic"]
