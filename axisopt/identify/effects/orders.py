@@ -42,6 +42,7 @@ PERIOD_SHAPES = {
     "motor_cogging": "cog_period",
     "belt_mesh": "mesh_period",
     "ball_pass": "ball_period",
+    "lead_ripple": "period",
 }
 EXPECTED = {
     "motor_cogging": "expected at the slot count or a multiple of the pole pairs per motor turn "
@@ -49,6 +50,8 @@ EXPECTED = {
     "belt_mesh": "expected at order {belt_teeth} of the motor turn (the motor pulley's teeth)",
     "ball_pass": "expected near order {ball_order:.4g} of the screw turn (Z/2 (1 - D cos a / d_m), "
     "Z = pi d_m / D balls per turn: an estimate)",
+    "lead_ripple": "expected at order 1 of the screw turn (run-out, a bent screw) or 1 to 3 (a "
+    "lead error periodic in the turn, a circuit per turn)",
 }  # str.format of the record's Processing fields
 MAX_ORDER = 200  # the largest order of the motor turn tried (bounds the work)
 BALL_BAND = 0.15  # the ball-pass order is searched within +-15 % of the estimate

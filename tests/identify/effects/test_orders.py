@@ -124,6 +124,8 @@ def test_a_lead_ripple_decoy_is_not_named_a_motor_order(tmp_path):
     ax = Axis(lines=((50.0, LEAD, 0.4),))
     diag = _diagnose(tmp_path, plant, ax, Loop(fs=1000.0, rho=0.5), 61)
     assert diag.verdict == ["lead_ripple"]
+    text = " ".join(time_diagnosis_text(diag).split())
+    assert "order 1 of the screw turn, order 0.5 of the motor turn" in text
 
 
 @pytest.mark.slow
