@@ -99,10 +99,17 @@ def _column(k, key):
     return lambda sig, proc, shape: line_columns(sig, proc, shape[key])[k]
 
 
+SCAN_ROWS = 2000  # the scans of a residual look at most this many rows (evenly spread)
+
+
 def _share(rows, r, period) -> float:
     """Share of ``r`` a sin, cos pair of 2 pi q / period holds at the rows that see it in band
-    (least squares)."""
-    sig = {"q": rows.sig["q"][rows.keep], "v": rows.sig["v"][rows.keep]}
+    (least squares); on at most :data:`SCAN_ROWS` of them (a scan only locates the line, the
+    joint fit's RSS refines it)."""
+    k = max(1, len(r) // SCAN_ROWS)
+    keep = rows.keep[::k]
+    r = r[::k]
+    sig = {"q": rows.sig["q"][keep], "v": rows.sig["v"][keep]}
     G = np.column_stack([*line_columns(sig, rows.proc, period), np.ones(len(r))])
     coef, *_ = np.linalg.lstsq(G, r, rcond=None)
     rc = r - r.mean()
