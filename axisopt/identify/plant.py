@@ -9,11 +9,13 @@ mounting, masses and the catalog friction terms.  Tests and benchmarks may also 
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..physics.screw import E_STEEL
+from .effects.orders import ball_pass_order
 
 G = 9.80665
 
@@ -45,6 +47,9 @@ class Plant:
     c_series: float = 0.0
     torsion: bool = False  # screw torsion through the lead in the chain (as the axis model)
     reduction: float = 1.0  # motor turns per screw turn (a belt or gear between motor and screw)
+    # balls passing a point of the nut per screw turn (effects.orders.ball_pass_order; 0: unknown)
+    ball_order: float = 0.0
+    belt_teeth: int = 0  # teeth of a belt stage's motor pulley (0: no belt or not known)
     name: str = "design"
 
     @property
@@ -68,6 +73,25 @@ class Plant:
 
     def with_(self, **kw) -> Plant:
         return replace(self, **kw)
+
+
+def _known(value) -> float:
+    """A catalog value, 0 when the row leaves it empty."""
+    return float(value) if value is not None and math.isfinite(float(value)) else 0.0
+
+
+def belt_teeth(reduction) -> int:
+    """The motor pulley's teeth of a toothed-belt stage, 0 when not known: the catalog names a belt
+    stage's pulleys in its id as ``<z1>x<z2>`` (ELATECH's ``...-32x48``: 32 teeth on the motor,
+    48 on the screw), taken only when z2 / z1 is the row's ratio."""
+    if reduction is None or str(reduction.get("kind", "")) != "belt":
+        return 0
+    m = re.search(r"(\d+)x(\d+)$", str(reduction.get("id", "")))
+    if m is None:
+        return 0
+    z1, z2 = int(m.group(1)), int(m.group(2))
+    ratio = _known(reduction.get("ratio"))
+    return z1 if z1 > 0 and ratio > 0 and abs(z2 / z1 - ratio) <= 0.01 * ratio else 0
 
 
 def plant_from_design(design) -> Plant:
@@ -104,5 +128,11 @@ def plant_from_design(design) -> Plant:
         c_series=float(out["c_bracket"]) + 1.0 / float(out["k_coupling"]),
         torsion=True,
         reduction=float(p["reduction_ratio"]),
+        ball_order=ball_pass_order(
+            float(design.screw.get("nominal_diameter", 0.0)),
+            _known(design.screw.get("ball_diameter")),
+            _known(design.nut.get("contact_angle")),
+        ),
+        belt_teeth=belt_teeth(design.reduction),
         name=design.name,
     )

@@ -20,6 +20,7 @@ from ..identify.selection import TIME_RULE
 from .text import wrap_words
 from .timeresidual import (
     as_mm,
+    order_lines,
     unexplained_dict,
     unexplained_lines,
 )
@@ -240,6 +241,7 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
             cont="    ",
         )
         L += _param_lines(q, diag.final)
+        L += order_lines(diag)
         L += wrap_words(f"{q} error: {_errors(diag, diag.final)}", indent="    ")
         for f in diag.flags.get("final", []):
             L += wrap_words(f"! {f}", indent="  ", cont="      ")

@@ -7,9 +7,44 @@ from __future__ import annotations
 
 import math
 
+from ..identify.effects.orders import EXPECTED, PERIOD_SHAPES
 from ..identify.records.idim import TimeDiagnosis
 from ..identify.records.regression import UNITS
 from .text import wrap_words
+
+
+def order_statement(diag: TimeDiagnosis, period_mm: float) -> str:
+    """A period in table travel [mm] per mm, per screw turn and per motor turn (through the design's
+    reduction), '' without a lead."""
+    lead_mm = diag.design.get("lead", 0.0) * 1e3
+    if not (period_mm > 0 and lead_mm > 0):
+        return ""
+    red = diag.design.get("reduction", 1.0) or 1.0
+    per_screw = lead_mm / period_mm
+    return (
+        f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.3g} of the screw turn, order "
+        f"{per_screw / red:.3g} of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)"
+    )
+
+
+def order_lines(diag: TimeDiagnosis) -> list:
+    """Each accepted line in motor or screw orders (:mod:`..identify.effects.orders`) stated per
+    mm, per screw turn and per motor turn, with its expected order."""
+    out = []
+    for c in diag.accepted:
+        key = PERIOD_SHAPES.get(c.effect.name)
+        if key is None or key not in diag.final.shape:
+            continue
+        period = as_mm(diag, diag.final.shape[key])
+        out += wrap_words(
+            f"{c.effect.name}: period {period:.4g} mm"
+            + order_statement(diag, period)
+            + "; "
+            + EXPECTED[c.effect.name].format(**vars(diag.estimation.proc)),
+            indent="    ",
+            cont="      ",
+        )
+    return out
 
 
 def motor_orders(diag: TimeDiagnosis, period_mm: float) -> str:
@@ -19,16 +54,12 @@ def motor_orders(diag: TimeDiagnosis, period_mm: float) -> str:
     names: motor cogging or torque ripple (an integer order of the motor turn, the slot count or a
     multiple of the pole pairs), the ball circulation or the lead (an order of the screw turn), a
     belt's tooth mesh (the pulley's tooth count per pulley turn)."""
-    lead_mm = diag.design.get("lead", 0.0) * 1e3
-    if not (period_mm > 0 and lead_mm > 0):
+    text = order_statement(diag, period_mm)
+    if not text:
         return ""
     red = diag.design.get("reduction", 1.0) or 1.0
-    per_screw = lead_mm / period_mm
+    per_screw = diag.design["lead"] * 1e3 / period_mm
     per_motor = per_screw / red
-    text = (
-        f" = {1.0 / period_mm:.3g} per mm, order {per_screw:.3g} of the screw turn, order "
-        f"{per_motor:.3g} of the motor turn (lead {lead_mm:.3g} mm, reduction {red:.3g}:1)"
-    )
     near = [
         (name, o)
         for name, o in (("motor", per_motor), ("screw", per_screw))

@@ -44,6 +44,11 @@ class Axis:
     cog_amp: float = 0.0  # cogging force at the table [N], periodic in the motor angle
     cog_order: int = 0  # cogging periods per motor turn
     travel_per_motor_turn: float = 0.01  # [m]
+    # further forces periodic in the table's position, (amplitude [N], period [m], phase [rad])
+    # each: a belt's tooth mesh, the balls passing in the nut, a screw's run-out
+    lines: tuple = ()
+    vmax: float = 0.3  # the fastest move of the reference [m/s]
+    tone: tuple = ()  # a force periodic in time, (amplitude [N], frequency [Hz]): a pump
     stroke: float = 0.8
     extra: dict = field(default_factory=dict)
 
@@ -60,6 +65,7 @@ class Loop:
     substeps: int = 4
     # bandwidth of the current loop (0: the force is the command, held per sample)
     current_hz: float = 0.0
+    pos_jitter: float = 0.0  # RMS noise of the recorded position before its quantisation [m]
 
 
 def reference(rng, duration, fs, stroke, vmax=0.3):
@@ -128,7 +134,7 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
     rng = np.random.default_rng(seed)
     fs, dt = loop.fs, 1.0 / loop.fs
     n = int(duration * fs)
-    r = reference(rng, duration, fs, ax.stroke)
+    r = reference(rng, duration, fs, ax.stroke, ax.vmax)
     load = _steps(rng, n, fs, ax.load_amp) if ax.load_amp else np.zeros(n)
     normal = _steps(rng, n, fs, ax.normal_amp, 0.0) if ax.normal_amp else np.zeros(n)
     tt = np.arange(n) * dt
@@ -166,13 +172,17 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
         dT = temp_c[k] - (ax.temp[0] if ax.temp else 20.0)
         fc_t = ax.fc + ax.dfc_dT * dT
         fv_t = ax.fv * math.exp(-ax.beta * dT)
-        for _ in range(loop.substeps):
+        for j in range(loop.substeps):
             fa += (u - fa) * cl  # the current loop: the force follows the command
             cog = 0.0
             if ax.cog_amp:
                 cog = ax.cog_amp * math.sin(
                     2 * math.pi * ax.cog_order * x / ax.travel_per_motor_turn
                 )
+            for amp, period, phase in ax.lines:
+                cog += amp * math.sin(2 * math.pi * x / period + phase)
+            if ax.tone:
+                cog += ax.tone[0] * math.sin(2 * math.pi * ax.tone[1] * (tt[k] + j * h) + 0.5)
             drive = fa - load[k] - ax.offset - cog
             level = fc_t + ax.mu * normal[k] + ax.nut_loss * abs(fa)
             if v == 0.0:
@@ -193,6 +203,8 @@ def simulate(ax: Axis, loop: Loop, duration: float, seed: int) -> dict:
     # the current sensor averages over the sample period centred on the instant
     if not loop.current_hz:
         us = np.r_[us[0], 0.5 * (us[1:] + us[:-1])]
+    if loop.pos_jitter:
+        xs = xs + loop.pos_jitter * np.random.default_rng(seed + 7919).standard_normal(n)
     pos = np.round(xs / loop.quantum) * loop.quantum
     return {
         "time": tt,

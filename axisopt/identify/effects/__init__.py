@@ -10,6 +10,7 @@ from . import dynamics  # noqa: F401
 from . import friction  # noqa: F401
 from . import disturbance  # noqa: F401
 from . import load  # noqa: F401
+from . import orders  # noqa: F401
 
 # isort: on
 from .base import (

@@ -155,6 +155,9 @@ TIME_ORDER = (
     "guide_load_friction",
     "viscous_temperature",
     "coulomb_temperature",
+    "motor_cogging",
+    "belt_mesh",
+    "ball_pass",
 )
 
 

@@ -22,7 +22,7 @@ with a motor encoder, the lost motion measured (:mod:`.lostmotion`). The text an
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -53,6 +53,9 @@ from .regression import (
 )
 from .signature import steady_line
 from .unexplained import Unexplained, analyse_residual, noise_floor, periodic_peak, residual_peak
+
+# the design's values the order lines read (effects.orders), passed on as Processing fields
+ORDER_KEYS = ("reduction", "ball_order", "belt_teeth")
 
 
 @dataclass
@@ -202,6 +205,8 @@ def diagnose_time(
     t0 = time.perf_counter()
     est = records[0]
     proc = processing_for(est, stroke_q, lead_q)
+    # the design's turning parts, for the lines in motor and screw orders (effects.orders)
+    proc = replace(proc, **{k: (design or {})[k] for k in ORDER_KEYS if k in (design or {})})
     est_rows = make_rows(est, proc)
     val_rows = [make_rows(r, proc) for r in records[1:]]
     ctrl = fit_controller(est_rows)
@@ -495,6 +500,8 @@ def diagnose_time_files(
         "lead": plant.lead,
         "efficiency": plant.efficiency,
         "reduction": plant.reduction,
+        "ball_order": plant.ball_order,
+        "belt_teeth": plant.belt_teeth,
     }
     recs = [windowed(r) for r in recs]
     return diagnose_time(

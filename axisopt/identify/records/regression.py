@@ -124,6 +124,12 @@ class Processing:
     stroke_q: float  # stroke in the record's coordinate
     # the screw's lead in the record's coordinate (table [m] or motor angle 2 pi [rad])
     lead_q: float = 0.0
+    # the design's turning parts (effects.orders): motor turns per screw turn, balls passing a
+    # point of the nut per screw turn (0: unknown), the motor pulley's teeth of a belt stage (0:
+    # none known)
+    reduction: float = 1.0
+    ball_order: float = 0.0
+    belt_teeth: int = 0
 
 
 @dataclass
