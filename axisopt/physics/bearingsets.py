@@ -25,6 +25,8 @@ All functions take floats, numpy arrays or CasADi symbols.
 
 from __future__ import annotations
 
+import numpy as np
+
 from .. import mathx as mx
 
 __all__ = [
@@ -118,12 +120,11 @@ def hertz_set_halves(preload, load, n_plus, n_minus):
     # (a load error below 1e-9 F; bounded derivatives for the solvers)
     after = r * (mx.fmax(f, 1e-12) ** (2.0 / 3.0) - 1.0)
     s = mx.fmin(f / (1.5 / r + 1.5), 1.0)
-    for _ in range(HERTZ_STEPS):
-        lo = mx.fmax(1.0 - s, 1e-6)
-        hi = mx.fmax(1.0 + s / r, 1e-6)
-        g = hi**1.5 - lo**1.5 - f
-        dg = 1.5 / r * mx.sqrt(hi) + 1.5 * mx.sqrt(lo)
-        s = mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
+    if mx.is_symbolic(s, r, f) or not np.ndim(s):
+        for _ in range(HERTZ_STEPS):
+            s = _newton_step(s, r, f)
+    else:
+        s = _newton_array(s, r, f, lift)
     s = mx.if_else(f >= lift, after, s)
     # floored above 0: pow(0, 3/2)'s second derivative is not a number (the solvers' Hessian)
     pressed = preload * mx.fmax(1.0 + s / r, 1e-12) ** 1.5
@@ -132,3 +133,31 @@ def hertz_set_halves(preload, load, n_plus, n_minus):
         mx.if_else(pressed_plus, pressed, other),
         mx.if_else(pressed_plus, other, pressed),
     )
+
+
+def _newton_step(s, r, f):
+    """One Newton step of the Hertz split's equation in s (see :func:`hertz_set_halves`)."""
+    lo = mx.fmax(1.0 - s, 1e-6)
+    hi = mx.fmax(1.0 + s / r, 1e-6)
+    g = hi**1.5 - lo**1.5 - f
+    dg = 1.5 / r * mx.sqrt(hi) + 1.5 * mx.sqrt(lo)
+    return mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
+
+
+def _newton_array(s, r, f, lift):
+    """:data:`HERTZ_STEPS` Newton steps on arrays, element by element the same values: an element
+    whose step leaves it unchanged is a fixed point of the (deterministic) step and leaves the
+    loop; the elements past lift-off (whose s the closed form replaces) do not enter it.  The
+    search's arrays hold every bearing and preload: most elements settle in a few steps."""
+    s, r, f, lift = np.broadcast_arrays(s, r, f, lift)
+    out = np.array(s, dtype=float).reshape(-1)
+    r, f = r.reshape(-1), f.reshape(-1)
+    active = np.flatnonzero(~(f >= lift.reshape(-1)))
+    for _ in range(HERTZ_STEPS):
+        if not active.size:
+            break
+        old = out[active]
+        new = _newton_step(old, r[active], f[active])
+        out[active] = new
+        active = active[new != old]
+    return out.reshape(s.shape)
