@@ -202,6 +202,11 @@ def offer(
         inf = getattr(screw_res, "infeasibility", None)
         if inf is not None and not inf.design_changes:
             inf.design_changes = type_change(problem, tables, deadline)
+            if not inf.design_changes and deadline is not None and time.perf_counter() >= deadline:
+                from .sensitivity import cut_note
+
+                note = cut_note("advice", [])
+                screw_res.message = "; ".join(x for x in (screw_res.message, note) if x)
     if not ranked or ranked[0].drive_type == "screw":
         return Offer(reasons, None, time.perf_counter() - t0)
     cert = screw_res.certificate
