@@ -18,7 +18,9 @@ when no drive may pass its checks, or the best bound cannot reach the screw driv
 type cannot win and the screw answer stands as printed.  Otherwise that type's space is searched
 (best-first, or every combination with the exhaustive method) and the best design of any type wins
 by the drive-type search's tie rule; the tests compare this with the exhaustive search over every
-type listed explicitly (:func:`.drivetype.solve_drive_types`)."""
+type listed explicitly (:func:`.drivetype.solve_drive_types`).  When no type has a design and the
+screw answer's advice finds no change, another drive type is proposed as the change
+(:func:`type_change`)."""
 
 from __future__ import annotations
 
