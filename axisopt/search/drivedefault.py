@@ -245,6 +245,7 @@ def type_change(problem, tables: DriveTables, deadline: float | None = None) -> 
     the screw, as asked or with the least lowered acceleration or rapid speed (bisection,
     :func:`.drivechange.lowest_change`) at which its spaces hold a design.  The value is rounded
     down to three significant figures and verified again there.  [] when no type gives one."""
+    from ..errors import InputError
     from .drivechange import KEYS, TYPE_LABELS, first_design, lowest_change, scaled
     from .infeasible.answer import DesignChange
 
@@ -260,7 +261,10 @@ def type_change(problem, tables: DriveTables, deadline: float | None = None) -> 
         if deadline is not None and time.perf_counter() >= deadline:
             break
         p = replace(problem, drives=DriveChoice(types=(kind,), tables=t))
-        hit = first_design(p, axis)
+        try:
+            hit = first_design(p, axis)
+        except InputError:  # the type's space has nothing to choose from (its catalog filters)
+            continue
         if hit is not None:
             best = (1.0, kind, None, None, hit[1])
             break
