@@ -18,6 +18,7 @@ message), as the command line reports.
 
 from __future__ import annotations
 
+import time
 from os import PathLike
 
 from .design import Design, load_design
@@ -88,11 +89,12 @@ def solve(
         from .search.drivetype import solve_drive_types
 
         return solve_drive_types(p, method, top=top, time_limit=time_limit)
+    started = time.perf_counter()
     res = _solve(p, method, top=top, time_limit=time_limit, sensitivities=sensitivities)
     if res.pareto is None:  # the drive types the catalogs offer by default (search.drivedefault)
         from .search.drivedefault import offer
 
-        other = offer(p, res, method, top=top).result
+        other = offer(p, res, method, top=top, deadline=started + time_limit).result
         if other is not None:
             return other
     return res

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import sys
+import time
 
 from .common import (
     EXIT_NEGATIVE,
@@ -100,6 +101,7 @@ def cmd_solve(args) -> int:
         )
     if problem.drives is not None:
         return _solve_drive_types(args, problem)
+    started = time.perf_counter()
     res = solve(
         problem,
         args.method,
@@ -110,7 +112,8 @@ def cmd_solve(args) -> int:
     if res.pareto is None:  # the drive types the catalogs offer by default (search.drivedefault)
         from ..search.drivedefault import offer
 
-        other = offer(problem, res, args.method, top=args.top).result
+        deadline = started + args.time_limit
+        other = offer(problem, res, args.method, top=args.top, deadline=deadline).result
         if other is not None:  # its files (--plot, --save-design, --report) are the drive types'
             return _show_drive_types(args, other)
     quiet = stdout_taken(args.json, args.save_design)

@@ -120,11 +120,11 @@ def hertz_set_halves(preload, load, n_plus, n_minus):
     # (a load error below 1e-9 F; bounded derivatives for the solvers)
     after = r * (mx.fmax(f, 1e-12) ** (2.0 / 3.0) - 1.0)
     s = mx.fmin(f / (1.5 / r + 1.5), 1.0)
-    if mx.is_symbolic(s, r, f):
+    if mx.is_symbolic(s, r, f) or not np.ndim(s):
         for _ in range(HERTZ_STEPS):
             s = _newton_step(s, r, f)
     else:
-        s = _newton_numbers(s, r, f)
+        s = _newton_array(s, r, f, lift)
     s = mx.if_else(f >= lift, after, s)
     # floored above 0: pow(0, 3/2)'s second derivative is not a number (the solvers' Hessian)
     pressed = preload * mx.fmax(1.0 + s / r, 1e-12) ** 1.5
@@ -136,7 +136,7 @@ def hertz_set_halves(preload, load, n_plus, n_minus):
 
 
 def _newton_step(s, r, f):
-    """One Newton step of :func:`hertz_set_halves`'s equation in s (clamped to [0, 1])."""
+    """One Newton step of the Hertz split's equation in s (see :func:`hertz_set_halves`)."""
     lo = mx.fmax(1.0 - s, 1e-6)
     hi = mx.fmax(1.0 + s / r, 1e-6)
     g = hi**1.5 - lo**1.5 - f
@@ -144,18 +144,20 @@ def _newton_step(s, r, f):
     return mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
 
 
-def _newton_numbers(s, r, f):
-    """The same Newton steps on numbers, each step only on the elements still moving (a step below
-    1e-15 leaves an element as the fixed steps would: converged to rounding); at most
-    HERTZ_STEPS steps, as the symbolic expression."""
-    shape = np.broadcast_shapes(np.shape(s), np.shape(r), np.shape(f))
-    s, r, f = (np.array(np.broadcast_to(v, shape), dtype=float).ravel() for v in (s, r, f))
-    idx = np.arange(s.size)
+def _newton_array(s, r, f, lift):
+    """:data:`HERTZ_STEPS` Newton steps on arrays, element by element the same values: an element
+    whose step leaves it unchanged is a fixed point of the (deterministic) step and leaves the
+    loop; the elements past lift-off (whose s the closed form replaces) do not enter it.  The
+    search's arrays hold every bearing and preload: most elements settle in a few steps."""
+    s, r, f, lift = np.broadcast_arrays(s, r, f, lift)
+    out = np.array(s, dtype=float).reshape(-1)
+    r, f = r.reshape(-1), f.reshape(-1)
+    active = np.flatnonzero(~(f >= lift.reshape(-1)))
     for _ in range(HERTZ_STEPS):
-        new = _newton_step(s[idx], r[idx], f[idx])
-        moved = np.abs(new - s[idx]) > 1e-15
-        s[idx] = new
-        idx = idx[moved]
-        if not idx.size:
+        if not active.size:
             break
-    return s.reshape(shape) if shape else float(s[0])
+        old = out[active]
+        new = _newton_step(old, r[active], f[active])
+        out[active] = new
+        active = active[new != old]
+    return out.reshape(s.shape)

@@ -5,12 +5,18 @@ default search finds a design -- verified, the design is named."""
 
 from __future__ import annotations
 
+import time
 from dataclasses import replace
 
 from .drivespace import evaluate_one
 
 STEPS = 8  # bisection steps (a factor resolved to 1/256)
 TYPE_LABELS = {"rack_pinion": "rack and pinion", "linear_motor": "linear motor"}
+# the axis values lowered, in this order: (key, label, display unit, display per SI)
+KEYS = (
+    ("acceleration", "acceleration", "m/s^2", 1.0),
+    ("max_speed", "rapid speed", "m/min", 60.0),
+)
 
 
 def scaled(axis, key: str, factor: float):
@@ -31,8 +37,7 @@ def scaled(axis, key: str, factor: float):
 def design_change(problem, closest: dict, spec):
     """(closest designs, design change text) for an infeasible drive-type problem (see the
     module)."""
-    from .drivebest import best_first
-    from .drivedesigns import design_of, spaces
+    from .drivedesigns import design_of
 
     shown = []
     for space, flats in closest.values():
@@ -44,27 +49,8 @@ def design_change(problem, closest: dict, spec):
         return shown, ""
     best = None
     axis = problem.axis
-    for key, label, unit, scale in (
-        ("acceleration", "acceleration", "m/s^2", 1.0),
-        ("max_speed", "rapid speed", "m/min", 60.0),
-    ):
-        if getattr(axis, key) <= 0:
-            continue
-        lo, hi = 0.0, 1.0
-        found = None
-        for _ in range(STEPS):
-            mid = 0.5 * (lo + hi)
-            ax = scaled(axis, key, mid)
-            hit = None
-            for sp in spaces(problem, ax):
-                designs, _, _ = best_first(problem, sp, spec, 1)
-                if designs:
-                    hit = (sp.kind, designs[0].parts)
-                    break
-            if hit:
-                lo, found = mid, (mid, hit)
-            else:
-                hi = mid
+    for key, label, unit, scale in KEYS:
+        found = lowest_change(problem, key)
         if found is not None:
             value = getattr(axis, key) * found[0]
             text = (
@@ -81,3 +67,44 @@ def design_change(problem, closest: dict, spec):
             "stands in the way (see the checks missed)"
         )
     return shown, best[1]
+
+
+def first_design(problem, axis):
+    """(drive type, parts) of the best design of ``problem``'s drive-type spaces on ``axis``, the
+    first type in the problem's order that has one; None when none has."""
+    from .drivebest import best_first
+    from .drivedesigns import spaces
+
+    for sp in spaces(problem, axis):
+        designs, _, _ = best_first(problem, sp, spec_of(problem), 1)
+        if designs:
+            return sp.kind, designs[0].parts
+    return None
+
+
+def spec_of(problem):
+    from .drivedesigns import objective_of
+
+    return objective_of(problem)[1]
+
+
+def lowest_change(problem, key: str, deadline: float | None = None):
+    """(factor, (drive type, parts)): the largest factor (within 1/2^STEPS) on the axis's ``key``
+    ('acceleration' or 'max_speed') at which ``problem``'s drive-type spaces hold a design, found by
+    bisection; None when none does at 1/2^STEPS, or ``axis.key`` is 0.  ``deadline`` (a
+    time.perf_counter() value): the bisection stops there with what it verified."""
+    axis = problem.axis
+    if getattr(axis, key) <= 0:
+        return None
+    lo, hi = 0.0, 1.0
+    found = None
+    for _ in range(STEPS):
+        if deadline is not None and time.perf_counter() >= deadline:
+            break
+        mid = 0.5 * (lo + hi)
+        hit = first_design(problem, scaled(axis, key, mid))
+        if hit:
+            lo, found = mid, (mid, hit)
+        else:
+            hi = mid
+    return found

@@ -18,10 +18,13 @@ when no drive may pass its checks, or the best bound cannot reach the screw driv
 type cannot win and the screw answer stands as printed.  Otherwise that type's space is searched
 (best-first, or every combination with the exhaustive method) and the best design of any type wins
 by the drive-type search's tie rule; the tests compare this with the exhaustive search over every
-type listed explicitly (:func:`.drivetype.solve_drive_types`)."""
+type listed explicitly (:func:`.drivetype.solve_drive_types`).  When no type has a design and the
+screw answer's advice finds no change, another drive type is proposed as the change
+(:func:`type_change`)."""
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass, replace
 
@@ -49,6 +52,7 @@ OTHER_TYPES = ("rack_pinion", "linear_motor")
 # model.estimates)
 RACK_MIN_STROKE = 4.0
 SCREW_SLOTS = ("screw", "nut", "bearing")
+CUT = "not searched: the time limit was reached"
 
 
 @dataclass
@@ -137,9 +141,15 @@ def space_bound(problem, space, spec) -> tuple[float, bool]:
     return (float(np.max(v)) if sense == "max" else float(np.min(v))), True
 
 
-def offer(problem, screw_res, method: str = "default", *, top: int = 5, tables=None) -> Offer:
+def offer(
+    problem, screw_res, method: str = "default", *, top: int = 5, tables=None, deadline=None
+) -> Offer:
     """Offer rack and pinion and linear motors beside the screw answer ``screw_res`` of ``problem``
-    (see the module); ``tables``: the drive-type catalogs (default: the shipped ones)."""
+    (see the module); ``tables``: the drive-type catalogs (default: the shipped ones).  When no
+    type has a design and the screw answer proposes no design change, another drive type is
+    proposed as one (:func:`type_change`, put into ``screw_res``'s infeasibility).  ``deadline`` (a
+    time.perf_counter() value): no type is searched, and no change verified, past it (said in the
+    reasons)."""
     t0 = time.perf_counter()
     why = left_out(problem, method)
     if why:
@@ -158,6 +168,9 @@ def offer(problem, screw_res, method: str = "default", *, top: int = 5, tables=N
     best = screw[0].objective if screw else None
     designs, summaries = list(screw), []
     for space in spaces(p2):
+        if deadline is not None and time.perf_counter() >= deadline:
+            reasons[space.kind] = CUT
+            continue
         bound, may = space_bound(p2, space, spec)
         if not may:
             reasons[space.kind] = "no drive passes its checks even with the optimistic guide"
@@ -187,6 +200,15 @@ def offer(problem, screw_res, method: str = "default", *, top: int = 5, tables=N
             order.index(d.drive_type),
         ),
     )
+    if not ranked and method == "default":
+        inf = getattr(screw_res, "infeasibility", None)
+        if inf is not None and not inf.design_changes:
+            inf.design_changes = type_change(problem, tables, deadline)
+            if not inf.design_changes and deadline is not None and time.perf_counter() >= deadline:
+                from .sensitivity import cut_note
+
+                note = cut_note("advice", [])
+                screw_res.message = "; ".join(x for x in (screw_res.message, note) if x)
     if not ranked or ranked[0].drive_type == "screw":
         return Offer(reasons, None, time.perf_counter() - t0)
     cert = screw_res.certificate
@@ -208,3 +230,69 @@ def offer(problem, screw_res, method: str = "default", *, top: int = 5, tables=N
     out = Offer(reasons, res, time.perf_counter() - t0)
     res.time = float(getattr(screw_res, "time", 0.0) or 0.0) + out.time
     return out
+
+
+def round_down(x: float) -> float:
+    """``x`` > 0 rounded down to three significant figures."""
+    e = math.floor(math.log10(x)) - 2
+    return round(math.floor(x / 10**e + 1e-9) * 10**e, -e)
+
+
+def type_change(problem, tables: DriveTables, deadline: float | None = None) -> list:
+    """Another drive type as the design change of an infeasible screw answer: each type the
+    catalogs hold that applies to the axis (:func:`left_out`; rack and pinion on a stroke under
+    :data:`RACK_MIN_STROKE` too: the screw has no design), listed in ``search.drive_types`` beside
+    the screw, as asked or with the least lowered acceleration or rapid speed (bisection,
+    :func:`.drivechange.lowest_change`) at which its spaces hold a design.  The value is rounded
+    down to three significant figures and verified again there.  [] when no type gives one."""
+    from ..errors import InputError
+    from .drivechange import KEYS, TYPE_LABELS, first_design, lowest_change, scaled
+    from .infeasible.answer import DesignChange
+
+    if left_out(problem, "default"):
+        return []
+    _, why, t = offered(problem, tables)
+    kinds = [k for k in OTHER_TYPES if k not in why or why[k].startswith("a stroke under")]
+    if not problem.restrictions.reductions or not t.racks:
+        kinds = [k for k in kinds if k != "rack_pinion"]
+    axis = problem.axis
+    best = None  # (factor, kind, key, value, parts)
+    for kind in kinds:
+        if deadline is not None and time.perf_counter() >= deadline:
+            break
+        p = replace(problem, drives=DriveChoice(types=(kind,), tables=t))
+        try:
+            hit = first_design(p, axis)
+        except InputError:  # the type's space has nothing to choose from (its catalog filters)
+            continue
+        if hit is not None:
+            best = (1.0, kind, None, None, hit[1])
+            break
+        for key, _, _, scale in KEYS:
+            found = lowest_change(p, key, deadline)
+            if found is None or (best is not None and found[0] <= best[0]):
+                continue
+            value = round_down(getattr(axis, key) * found[0] * scale) / scale
+            hit = first_design(p, scaled(axis, key, value / getattr(axis, key)))
+            if hit is not None:
+                best = (value / getattr(axis, key), kind, key, value, hit[1])
+    if best is None:
+        return []
+    _, kind, key, value, parts = best
+    rows = [
+        DesignChange(
+            "search.drive_types",
+            "",
+            float("nan"),
+            float("nan"),
+            f"a {TYPE_LABELS[kind]}: "
+            + ", ".join(f"{k.replace('_', ' ')} {v}" for k, v in parts.items())
+            + ", the best design there",
+            "add",
+            ("screw", kind),
+        )
+    ]
+    if key is not None:
+        _, _, unit, scale = next(k for k in KEYS if k[0] == key)
+        rows.append(DesignChange(f"axis.{key}", unit, getattr(axis, key) * scale, value * scale))
+    return rows

@@ -397,6 +397,7 @@ def _add_drives(sp: Space, problem: Problem) -> None:
         keep = lost <= backlash_max * (1.0 + 1e-9) + 1e-15
         if not r.required("reduction") or keep.any():
             sp.reductions_by_backlash = int(np.count_nonzero(~keep))
+            sp.backlash_left_least = float(np.min(lost[~keep], initial=np.inf))
             reductions = reductions.take(keep)
     # the drive's reduction: none (the axis's values; left out when the problem requires reduction
     # parts) or a row

@@ -48,6 +48,35 @@ def reusable(space, constraints, loose, spec, key: str):
     return hit[2]
 
 
+def backlash_unmoved(space, limit: float, relaxed: float) -> bool:
+    """Whether relaxing ``max_backlash`` from ``limit`` to ``relaxed`` [m] admits no combination
+    the search did not have: every lost motion at the table (model.drive.lost_motion, a nut's play
+    and a reduction's backlash through the lead, independent of the preload) over the space's nuts
+    and drives lies outside (limit, relaxed] (a 1e-6 relative margin each side), and the
+    reductions the limit left out of the space (parts: their lost motion at the shortest lead)
+    stay out.  Then the re-solve's feasible set is the search's own: no gain."""
+    from ..model.drive import lost_motion
+
+    lo, hi = limit * (1.0 - 1e-6), relaxed * (1.0 + 1e-6)
+    if space.backlash_left_least <= hi:
+        return False
+    for mounting in space.mountings:
+        n = np.arange(len(space.nuts))
+        nuts = space.params_flat(mounting, n, np.zeros_like(n), np.zeros_like(n))
+        d = np.arange(space.n_drives)
+        drives = space.params_flat(mounting, np.zeros_like(d), np.zeros_like(d), d)
+        bl = np.unique(np.asarray(drives["reduction_backlash"], dtype=float))
+        p = {
+            k: np.asarray(nuts[k], dtype=float).reshape(-1, 1)
+            for k in ("nut_double", "nut_axial_play", "lead")
+        }
+        p["reduction_backlash"] = bl.reshape(1, -1)
+        v = np.asarray(lost_motion(p), dtype=float)
+        if not np.isfinite(v).all() or np.any((v > lo) & (v <= hi)):
+            return False
+    return True
+
+
 def cut_note(what: str, cut: list) -> str:
     """What the time limit cut after the search: the sensitivities (``cut``: the limits not
     re-solved) or the advice (its verifying searches)."""
@@ -104,6 +133,13 @@ def limit_sensitivities(
         relaxed = value * (1.0 + RELAX) if lim.sense == "<=" else value * (1.0 - RELAX)
         # the optimum meets the relaxed limit too: only designs that can reach it are searched
         # (none: no gain)
+        if key == "max_backlash" and backlash_unmoved(space, value, relaxed):
+            # no combination's lost motion lies between the limit and the relaxed limit: the
+            # re-solve's feasible set, and so its optimum, is the search's own
+            out.append(
+                Binding(key, unit, value / factor, at / factor, relaxed / factor, 0.0, False)
+            )
+            continue
         relaxed_problem = problem.with_limit(key, relaxed)
         loose = build_constraints(relaxed_problem)
         # a limit that is also an axis value (min_life: the life the checks need) changes the part

@@ -131,6 +131,9 @@ class Space:
     # exceeds the problem's max_backlash (an infeasible result says so: the limit, not the catalog,
     # left them out)
     reductions_by_backlash: int = 0
+    # the least lost motion at the table [m] of those reductions (their backlash through the
+    # shortest lead; inf: none left out)
+    backlash_left_least: float = float("inf")
     # the numbering of the combinations (:mod:`.parts` sets them once the tables are final)
     n_drives: int = 1  # drive pairs D
     shape: tuple = ()  # (mountings, nuts, bearings, guides x drives)
