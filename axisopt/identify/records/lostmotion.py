@@ -6,7 +6,7 @@ motor side's own equation gives the force the transmission carries, S = f - m1 a
 effort f less the motor side's inertia (m1, acceleration a1 of the motor encoder) and its own
 friction F1 = Fc1 sgn(v1) + Fv1 v1 (motor and support bearings, seals: it acts before the gap),
 and the transmission answers with
-:math:`e = e_0 + (b/2)\operatorname{sgn}S + S/k - (c/k)\,\dot e` (lash with a linear spring
+:math:`e = e_0 + (b/2)\\operatorname{sgn}S + S/k - (c/k)\\,\\dot e` (lash with a linear spring
 and damper: M. Nordin, P.-O. Gutman, "Controlling mechanical systems with backlash -- a survey",
 Automatica 38 (2002) 1633-1649).  Left in S, the motor-side friction reads as windup: the
 stiffness comes out high by about (Fc1 + Fc2) / Fc2 and the gap is pulled towards it (both share
