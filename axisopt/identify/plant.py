@@ -46,6 +46,9 @@ class Plant:
     torsion: bool = False  # screw torsion through the lead in the chain (as the axis model)
     reduction: float = 1.0  # motor turns per screw turn (a belt or gear between motor and screw)
     name: str = "design"
+    # the position loop's structure the design states (axis.controller: 'pd' | 'p_pi_cascade');
+    # None: fitted from the record
+    controller: str | None = None
 
     @property
     def area(self) -> float:
@@ -105,4 +108,5 @@ def plant_from_design(design) -> Plant:
         torsion=True,
         reduction=float(p["reduction_ratio"]),
         name=design.name,
+        controller=ax.controller,
     )

@@ -204,7 +204,7 @@ def diagnose_time(
     proc = processing_for(est, stroke_q, lead_q)
     est_rows = make_rows(est, proc)
     val_rows = [make_rows(r, proc) for r in records[1:]]
-    ctrl = fit_controller(est_rows)
+    ctrl = fit_controller(est_rows, (design or {}).get("controller"))
     tl = time.perf_counter()
     base_ls = least_squares(est_rows, BASE)
     t_ls = time.perf_counter() - tl
@@ -495,6 +495,7 @@ def diagnose_time_files(
         "lead": plant.lead,
         "efficiency": plant.efficiency,
         "reduction": plant.reduction,
+        "controller": plant.controller,
     }
     recs = [windowed(r) for r in recs]
     return diagnose_time(

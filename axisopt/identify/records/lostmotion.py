@@ -105,6 +105,24 @@ def lost_motion_rows(rows: Rows, motor: tuple, fmin: float):
     return e[ok], G
 
 
+def solve(G: np.ndarray, e: np.ndarray) -> np.ndarray:
+    """Least squares of e on G with the motor side's friction held non-negative (Fc1, Fv1 >= 0: a
+    column whose friction comes out negative is dropped, its coefficient 0, and the rest refitted):
+    a negative friction would only trade against the gap, which shares its sign in steady
+    motion."""
+    cols = list(range(G.shape[1]))
+    th = np.zeros(G.shape[1])
+    for _ in range(3):
+        sub, *_ = np.linalg.lstsq(G[:, cols], e, rcond=None)
+        th[:] = 0.0
+        th[cols] = sub
+        neg = [j for j in (5, 6) if j in cols and th[2] > 0 and th[j] > 0]
+        if not neg:
+            break
+        cols = [j for j in cols if j not in neg]
+    return th
+
+
 def _motor_side(th: np.ndarray, fallback: tuple, M: float) -> tuple:
     """(m1, Fc1, Fv1) from a fit's coefficients (``fallback`` when 1/k is not positive)."""
     if not th[2] > 0:
@@ -130,7 +148,7 @@ def lost_motion(
         e, G = lost_motion_rows(est_rows, motor, fmin)
         if len(e) < 20:
             return None
-        th, *_ = np.linalg.lstsq(G, e, rcond=None)
+        th = solve(G, e)
         return float(np.sum((e - G @ th) ** 2)), motor, th, e, G
 
     fits = [f for f in (fit((m, 0.0, 0.0)) for m in np.linspace(0.0, M, 21)) if f is not None]
@@ -170,8 +188,9 @@ def lost_motion(
     else:  # no validation run: fit on the first half, judge on the second
         n2 = len(e) // 2
         held, fit_e, fit_G = [(e[n2:], G[n2:])], e[:n2], G[:n2]
-    th_full, *_ = np.linalg.lstsq(fit_G, fit_e, rcond=None)
-    other = [i for i in range(len(COLUMNS)) if i != GAP]  # every column but the lost motion's
+    th_full = solve(fit_G, fit_e)
+    # every column but the lost motion's (the friction columns keep their index: 5 and 6 -> 4, 5)
+    other = [i for i in range(len(COLUMNS)) if i != GAP]
     th_base, *_ = np.linalg.lstsq(fit_G[:, other], fit_e, rcond=None)
     r_full = np.concatenate([he - hG @ th_full for he, hG in held])
     r_base = np.concatenate([he - hG[:, other] @ th_base for he, hG in held])
