@@ -39,6 +39,7 @@ LOST_MOTION_T = 5.0  # the lost motion's estimate must be this many standard dev
 # rate, motor-side Coulomb and viscous friction
 COLUMNS = ("e0", "b/2", "1/k", "-m1/k", "-c/k", "-Fc1/k", "-Fv1/k")
 GAP = 1  # the gap's column
+TRIM = 5.0  # rows off the fit by more than this many robust standard deviations are left out
 
 
 @dataclass
@@ -66,9 +67,10 @@ class LostMotion:
         return not self.reason
 
 
-def _motor_signals(rows: Rows) -> np.ndarray:
-    """(e, a1, de, v1, f) decimated at every row where the motor moves one way for a whole filter
-    window (cached with the rows): the table may stand there (winding up at a reversal)."""
+def _motor_signals(rows: Rows) -> tuple:
+    """((e, a1, de, v1, f) low-passed at full rate, the rows where the motor moves one way for a
+    whole filter window), cached with the rows: the table may stand there (winding up at a
+    reversal)."""
     if "lost_motion" in rows.sig:
         return rows.sig["lost_motion"]
     rec, proc = rows.record, rows.proc
@@ -88,7 +90,7 @@ def _motor_signals(rows: Rows) -> np.ndarray:
     slow = (np.abs(v1) < VMIN_REL * float(np.max(np.abs(v1)))).astype(float)
     slow = np.convolve(slow, np.ones(2 * w + 1), mode="same") > 0
     idx = idx[~slow[idx] & (np.abs(sf[idx]) >= SIGN_KEEP)]
-    rows.sig["lost_motion"] = dec[idx]
+    rows.sig["lost_motion"] = dec, idx
     return rows.sig["lost_motion"]
 
 
@@ -96,11 +98,17 @@ def lost_motion_rows(rows: Rows, motor: tuple, fmin: float):
     """(e, columns :data:`COLUMNS`) at the rows where the motor moves and the transmitted force
     |S| = |f - m1 a1 - Fc1 sgn v1 - Fv1 v1| > fmin (the side of the gap is certain there);
     ``motor`` = (m1, Fc1, Fv1)."""
-    e, a1, de, v1, f = _motor_signals(rows).T
+    full, idx = _motor_signals(rows)
     m1, fc1, fv1 = motor
+    S_full = full[:, 4] - m1 * full[:, 1] - fc1 * np.sign(full[:, 3]) - fv1 * full[:, 3]
+    # the side of the gap must hold for a whole filter window: a row beside a crossing of the gap
+    # (S through zero, the motor flying across) carries the filtered jump
+    proc, segs = rows.proc, rows.record.segments
+    sure = np.abs(lowpass(np.sign(S_full), proc.fs, proc.fdec, segments=segs))[idx] >= SIGN_KEEP
+    e, a1, de, v1, f = full[idx].T
     s1 = np.sign(v1)
-    S = f - m1 * a1 - fc1 * s1 - fv1 * v1
-    ok = np.abs(S) > fmin
+    S = S_full[idx]
+    ok = (np.abs(S) > fmin) & sure
     G = np.column_stack([np.ones(ok.sum()), np.sign(S[ok]), f[ok], a1[ok], de[ok], s1[ok], v1[ok]])
     return e[ok], G
 
@@ -149,12 +157,24 @@ def lost_motion(
         if len(e) < 20:
             return None
         th = solve(G, e)
-        return float(np.sum((e - G @ th) ** 2)), motor, th, e, G
+        # a row on the wrong side of the gap (beside a crossing) is off by up to b: trimmed
+        r = e - G @ th
+        ok = np.abs(r) <= TRIM * 1.4826 * float(np.median(np.abs(r))) + 1e-300
+        if ok.sum() >= 20 and not ok.all():
+            e, G = e[ok], G[ok]
+            th = solve(G, e)
+        return float(np.mean((e - G @ th) ** 2)), motor, th, e, G
 
-    fits = [f for f in (fit((m, 0.0, 0.0)) for m in np.linspace(0.0, M, 21)) if f is not None]
+    # the sides of the gap move with m1 and Fc1 (the fit's own values need not lead out of a wrong
+    # assignment: the motor friction and the gap share sgn v in steady motion): a grid over both,
+    # Fc1 up to the axis's whole Coulomb friction, judged by the mean squared residual
+    fc = max(abs(base.value("Fc")), 0.0)
+    grid = [(m, c, 0.0) for m in np.linspace(0.0, M, 11) for c in np.linspace(0.0, fc, 9)]
+    fits = [f for f in map(fit, grid) if f is not None]
     if not fits:
         return None
     best = min(fits, key=lambda f: f[0])
+    seen = [best]
     for _ in range(30):
         motor = _motor_side(best[2], best[1], M)
         step = max(
@@ -175,7 +195,11 @@ def lost_motion(
         if nxt is None:
             break
         best = nxt
-    rss, motor, th, e, G = best
+        seen.append(nxt)
+    else:  # no fixed point (the sides flip between two sets): the best fit seen
+        best = min(seen, key=lambda f: f[0])
+    mse, motor, th, e, G = best
+    rss = mse * len(e)
     dof = max(len(e) - G.shape[1], 1)
     cov = rss / dof * np.linalg.pinv(G.T @ G)
     half, half_std = float(th[GAP]), float(math.sqrt(max(cov[GAP, GAP], 0.0)))
