@@ -39,6 +39,7 @@ LOST_MOTION_T = 5.0  # the lost motion's estimate must be this many standard dev
 # rate, motor-side Coulomb and viscous friction
 COLUMNS = ("e0", "b/2", "1/k", "-m1/k", "-c/k", "-Fc1/k", "-Fv1/k")
 GAP = 1  # the gap's column
+STARTS = 4  # the fixed-point iteration starts from this many grid points
 TRIM = 5.0  # rows off the fit by more than this many robust standard deviations are left out
 
 
@@ -173,31 +174,35 @@ def lost_motion(
     fits = [f for f in map(fit, grid) if f is not None]
     if not fits:
         return None
-    best = min(fits, key=lambda f: f[0])
-    seen = [best]
-    for _ in range(30):
-        motor = _motor_side(best[2], best[1], M)
-        step = max(
-            abs(a - b) / s
-            for a, b, s in zip(
-                motor,
-                best[1],
-                (
-                    max(M, 1e-12),
-                    max(abs(base.value("Fc")), 1e-12),
-                    max(abs(base.value("Fv")), 1e-12),
-                ),
-            )
-        )
-        if step <= 1e-6:
-            break
-        nxt = fit(motor)
-        if nxt is None:
-            break
-        best = nxt
-        seen.append(nxt)
-    else:  # no fixed point (the sides flip between two sets): the best fit seen
-        best = min(seen, key=lambda f: f[0])
+    scale = (max(M, 1e-12), max(fc, 1e-12), max(abs(base.value("Fv")), 1e-12))
+
+    def settle(best):
+        """The fit's own (m1, Fc1, Fv1) until the sides stop changing (the best fit seen when
+        they flip between two sets)."""
+        seen = [best]
+        for _ in range(30):
+            motor = _motor_side(best[2], best[1], M)
+            if max(abs(a - b) / s for a, b, s in zip(motor, best[1], scale)) <= 1e-6:
+                return best
+            nxt = fit(motor)
+            if nxt is None:
+                break
+            best = nxt
+            seen.append(nxt)
+        return min(seen, key=lambda f: f[0])
+
+    # several starts (the best grid point of each Fc1 level): a wrong start can settle where the
+    # gap and Fc1 trade against each other
+    starts = {}
+    for f in fits:
+        c = f[1][1]
+        if c not in starts or f[0] < starts[c][0]:
+            starts[c] = f
+    firsts = sorted(starts.values(), key=lambda f: f[0])[:STARTS]
+    # a negative gap is no lost motion (it would be an overlap the transmission cannot have): a
+    # settled fit with b >= 0 is preferred when the record leaves both nearly as good
+    settled = [settle(f) for f in firsts]
+    best = min(settled, key=lambda f: (f[2][GAP] < 0.0, f[0]))
     mse, motor, th, e, G = best
     rss = mse * len(e)
     dof = max(len(e) - G.shape[1], 1)
