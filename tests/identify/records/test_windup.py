@@ -151,3 +151,22 @@ def test_an_unknown_controller_is_one_line_exit_2(tmp_path, capsys, value):
     assert main(["diagnose", str(rec), "--design", str(design)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "controller" in err and "d.yaml" in err
+
+
+def test_the_stated_controller_survives_the_design_writer(tmp_path):
+    """A design's axis.controller is read, kept off the defaults-used list (a structure left out is
+    fitted, not assumed) and written back."""
+    from axisopt.design import load_design
+    from axisopt.design.writer import design_to_dict
+
+    text = DESIGN.read_text(encoding="utf-8").replace(
+        "axis:\n", "axis:\n  controller: p_pi_cascade\n"
+    )
+    path = tmp_path / "d.yaml"
+    path.write_text(text, encoding="utf-8")
+    d = load_design(path)
+    assert d.axis.controller == "p_pi_cascade"
+    assert design_to_dict(d)["axis"]["controller"] == "p_pi_cascade"
+    plain = load_design(DESIGN)
+    assert plain.axis.controller is None and "controller" not in plain.assumed
+    assert "controller" not in design_to_dict(plain)["axis"]
