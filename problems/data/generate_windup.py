@@ -1,13 +1,15 @@
-"""Regenerate the shipped windup example (synthetic, seeded): ``python problems/data/generate_windup.py``.
+"""Regenerate the shipped windup example (synthetic, seeded): ``python
+problems/data/generate_windup.py``.
 
-table_x_windup_est.csv (10 s) and table_x_windup_val.csv (6 s): the table_x axis as two masses, its motor side
-(150 kg of the 620 kg, reflected to the table) with a friction of its own, 180 N Coulomb and 500 N.s/m viscous
-(motor and support bearings, seals: it acts before the gap), tied to the table (320 N, 1 200 N.s/m on the
-guides) through a transmission of 4 N/um that loses 25 um at each reversal; a P-PI cascade closes on the
-table's scale (position gain 10 1/s, velocity loop 4 Hz on the 620 kg, integral time 60 ms), the force noise is
-coloured (AR(1), 0.6) and the samples are taken with +-5 % jitter of the period; the motor encoder's position
-is recorded too.  The physics is the tests' two-mass simulator (tests/identify/sim_twomass.py), written apart
-from the identification's columns.
+table_x_windup_est.csv (10 s) and table_x_windup_val.csv (6 s): the table_x axis as two masses, its
+motor side (150 kg of the 620 kg, reflected to the table) with a friction of its own, 180 N Coulomb
+and 500 N.s/m viscous (motor and support bearings, seals: it acts before the gap), tied to the table
+(320 N, 1 200 N.s/m on the guides) through a transmission of 4 N/um that loses 25 um at each
+reversal; a P-PI cascade closes on the table's scale (position gain 10 1/s, velocity loop 4 Hz on
+the 620 kg, integral time 60 ms), the force noise is coloured (AR(1), 0.6) and the samples are taken
+with +-5 % jitter of the period; the motor encoder's position is recorded too. The physics is the
+tests' two-mass simulator (tests/identify/sim_twomass.py), written apart from the identification's
+columns.
 """
 
 from __future__ import annotations
