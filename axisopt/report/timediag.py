@@ -500,6 +500,8 @@ def controller_lines(c) -> list:
             f"{kv:.4g}, Ti {ti * 1e3:.3g} ms (Kx and 1/Ti enter alike: the smaller is named Kx); "
             f"as Kp {c.kp:.4g}, Kd {c.kd:.4g}, Ki {c.ki:.4g}, {ff}"
         )
+    if casc is not None and c.heldout_gain is not None:
+        text += f"; the integral term's held-out gain {c.heldout_gain:.0f} %"
     out = wrap_words(text, cont="              ")
     if c.note:
         out += wrap_words(f"! {c.note}", indent="  ", cont="      ")

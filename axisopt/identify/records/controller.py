@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..selection import TIME_RULE
 from .regression import Rows
 from .signal import derivatives, lowpass
 
@@ -50,6 +51,10 @@ class Controller:
     u0: tuple = ()  # the integrator's state at each segment's start
     source: str = "fitted"  # 'fitted' (chosen from the record) or 'design' (axis.controller)
     note: str = ""  # a stated structure the record contradicts
+    # both fits' coefficients: PD (Kp, Kd, Kv, Ka) and with the integral (.., Ki)
+    fits: tuple = ((), ())
+    # [%] the integral term's gain in the effort's RMS on the validation runs (None: none)
+    heldout_gain: float | None = None
 
     @property
     def cascade(self) -> tuple | None:
@@ -76,6 +81,8 @@ class Controller:
             out.update(Ki=self.ki, Kx_per_s=casc[0], Kv=casc[1], Ti_s=casc[2])
         if self.note:
             out["note"] = self.note
+        if self.heldout_gain is not None:
+            out["integral_heldout_gain_percent"] = self.heldout_gain
         return out
 
 
@@ -132,9 +139,10 @@ def fit_controller(rows: Rows, structure: str | None = None) -> Controller | Non
         )
     elif structure == "p_pi_cascade" and not th1[4] > 0.0:
         note = "the design states a P-PI cascade, but the record shows no positive integral gain"
+    fits = (tuple(map(float, th0)), tuple(map(float, th1[:5])))
     if chosen == "pd":
         return Controller(
-            *map(float, th0), 1.0 - rss0 / ss, "pd", source=_src(structure), note=note
+            *map(float, th0), 1.0 - rss0 / ss, "pd", source=_src(structure), note=note, fits=fits
         )
     kp, kd, kv, ka, ki = map(float, th1[:5])
     return Controller(
@@ -148,7 +156,28 @@ def fit_controller(rows: Rows, structure: str | None = None) -> Controller | Non
         tuple(map(float, th1[5:])),
         _src(structure),
         note,
+        fits,
     )
+
+
+def heldout_gain(ctrl: Controller, val_rows: list) -> float | None:
+    """[%] how much the integral term lowers the RMS of the effort the loop predicts on the
+    validation runs (each run's integrator state at its start fitted, the gains not): the held-out
+    judge of the structure.  None without validation runs or a reference."""
+    th0, th1 = (np.asarray(t) for t in ctrl.fits)
+    if not len(th0) or not val_rows or any(v.record.reference is None for v in val_rows):
+        return None
+    r0, r1 = [], []
+    for v in val_rows:
+        X, ie, ones, y, inner = _columns(v)
+        X, ie, ones, y = X[inner], ie[inner], ones[inner], y[inner]
+        r0.append(y - X @ th0)
+        y1 = y - np.column_stack([X, ie]) @ th1
+        u0, *_ = np.linalg.lstsq(ones, y1, rcond=None)
+        r1.append(y1 - ones @ u0)
+    before = float(np.sqrt(np.mean(np.concatenate(r0) ** 2)))
+    after = float(np.sqrt(np.mean(np.concatenate(r1) ** 2)))
+    return TIME_RULE.gain(before, after)
 
 
 def _src(structure):

@@ -138,6 +138,7 @@ def test_cli_json_carries_the_controller_and_the_motor_friction(tmp_path, capsys
     assert main(["diagnose", *map(str, paths), "--design", str(DESIGN), "--json", "-"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["controller"]["structure"] == "p_pi_cascade"
+    assert out["controller"]["integral_heldout_gain_percent"] > 50.0  # judged on the validation run
     lm = out["lost_motion"]
     assert lm["accepted"] and lm["motor_coulomb_N"] == pytest.approx(200.0, rel=0.1)
 
