@@ -500,6 +500,9 @@ def controller_lines(c) -> list:
             f"{kv:.4g}, Ti {ti * 1e3:.3g} ms (Kx and 1/Ti enter alike: the smaller is named Kx); "
             f"as Kp {c.kp:.4g}, Kd {c.kd:.4g}, Ki {c.ki:.4g}, {ff}"
         )
+    if casc is not None and casc[0] * casc[2] > 0.5:
+        # corners within 2x of each other: the roots of a nearly double quadratic split poorly
+        text += "; Kx and 1/Ti lie close: their sum and product are determined, the split is not"
     if casc is not None and c.heldout_gain is not None:
         text += f"; the integral term's held-out gain {c.heldout_gain:.0f} %"
     out = wrap_words(text, cont="              ")
