@@ -502,7 +502,9 @@ def controller_lines(c) -> list:
         )
     if casc is not None and casc[0] * casc[2] > 0.5:
         # corners within 2x of each other: the roots of a nearly double quadratic split poorly
-        text += "; Kx and 1/Ti lie close: their sum and product are determined, the split is not"
+        text += (
+            "; Kx and 1/Ti lie within 2x: their sum and product are determined, the split poorly"
+        )
     if casc is not None and c.heldout_gain is not None:
         text += f"; the integral term's held-out gain {c.heldout_gain:.0f} %"
     out = wrap_words(text, cont="              ")
