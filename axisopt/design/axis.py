@@ -196,6 +196,9 @@ class Axis:
     feedback: str = "motor_encoder"
     scale_grade: str | None = None
     pitch_compensation: bool = False
+    # the position loop's structure, for diagnose: "pd" or "p_pi_cascade" (None: fitted from a
+    # record)
+    controller: str | None = None
     # film coefficient of the screw surface [W/(m^2 K)]; None: Jungnickel
     heat_transfer: float | None = None
     # carriage: cutting force across the rail (the feed component is axial_load, the normal one

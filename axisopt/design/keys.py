@@ -210,6 +210,13 @@ AXIS_SPEC = Spec(
             "HIWIN PMS magnetic +-20 um/m)",
             choices=tuple(SCALE_GRADES),
         ),
+        "controller": Key(
+            "choice",
+            "the position loop's structure, for diagnose's time records: pd (a PD position "
+            "controller) or p_pi_cascade (position P, velocity PI); default: fitted from the "
+            "record's reference column",
+            choices=("pd", "p_pi_cascade"),
+        ),
         "pitch_compensation": Key(
             "choice",
             "the controller compensates the screw's pitch error (a semi-closed loop): "

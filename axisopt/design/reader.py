@@ -70,6 +70,8 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
             "a linear scale needs its accuracy grade: axis.scale_grade (one of "
             "AMO-LMB-3, AMO-LMB-5, HIWIN-PMS)",
         )
+    if sec.has("controller"):
+        kw["controller"] = sec.choice("controller", ("pd", "p_pi_cascade"), None)
     if sec.has("pitch_compensation"):
         kw["pitch_compensation"] = sec.read("pitch_compensation") is True
     if sec.has("cut_while_accelerating"):
@@ -97,7 +99,7 @@ def read_axis(sec: Section) -> tuple[Axis, tuple]:
     assumed = tuple(
         f.name
         for f in fields(Axis)
-        if f.name not in kw and f.name not in ("counterbalance", "twin_drive")
+        if f.name not in kw and f.name not in ("counterbalance", "twin_drive", "controller")
     )
     return Axis(**kw), assumed
 

@@ -51,6 +51,9 @@ class Plant:
     ball_order: float = 0.0
     belt_teeth: int = 0  # teeth of a belt stage's motor pulley (0: no belt or not known)
     name: str = "design"
+    # the position loop's structure the design states (axis.controller: 'pd' | 'p_pi_cascade');
+    # None: fitted from the record
+    controller: str | None = None
 
     @property
     def area(self) -> float:
@@ -135,4 +138,5 @@ def plant_from_design(design) -> Plant:
         ),
         belt_teeth=belt_teeth(design.reduction),
         name=design.name,
+        controller=ax.controller,
     )

@@ -154,13 +154,7 @@ def time_diagnosis_text(diag: TimeDiagnosis) -> str:
         f"{p.nd}th row kept; rows below {p.vmin * spd_f:.3g} {spd_u} or at reversals left out",
         cont="              ",
     )
-    c = diag.controller
-    if c is not None:
-        L += wrap_words(
-            f"controller  PD fitted from the reference: Kp {c.kp:.4g}, Kd {c.kd:.4g}, feed-forward "
-            f"v {c.kv:.3g}, a {c.ka:.3g} (R2 {c.r2:.3f})",
-            cont="              ",
-        )
+    L += controller_lines(diag.controller)
     L.append("")
     L.append(
         "baseline  f = M a + Fv v + Fc sgn(v) + offset"
@@ -293,9 +287,12 @@ def _lost_motion_lines(diag: TimeDiagnosis) -> list:
         return []
     q = diag.quantity
     b, sb = as_mm(diag, lm.width) * 1e3, as_mm(diag, lm.width_std) * 1e3
+    sym = "v1" if q == "force" else "w1"
     what = (
-        f"motor_position against position: e = e0 + (b/2) sgn(F) + F/k, F = {q} - m1 a1 the force "
-        f"the transmission carries; b = {b:.3g} ± {sb:.2g} um of table travel"
+        f"motor_position against position: e = e0 + (b/2) sgn(F) + F/k, F = {q} - m1 a1 - Fc1 "
+        f"sgn({sym}) - Fv1 {sym} the force the transmission carries (the motor side's own friction "
+        f"taken out: Fc1 {_fmt_unit(q, 'Fc', lm.motor_coulomb)}, Fv1 "
+        f"{_fmt_unit(q, 'Fv', lm.motor_viscous)}); b = {b:.3g} ± {sb:.2g} um of table travel"
     )
     if math.isfinite(lm.stiffness) and lm.stiffness > 0:
         per_m = lm.stiffness / (as_mm(diag, 1.0) * 1e-3)  # effort per metre of table travel
@@ -479,8 +476,60 @@ def time_diagnosis_dict(diag: TimeDiagnosis) -> dict:
             "reason": diag.lost.reason,
             "width_um": as_mm(diag, diag.lost.width) * 1e3,
             "width_std_um": as_mm(diag, diag.lost.width_std) * 1e3,
+            **_lost_motion_params(diag),
             "gain_percent": diag.lost.gain,
         },
         "final": {**_est_dict(q, diag.final), "relative_error": errs(diag.final)},
         "seconds": diag.times,
+    }
+
+
+def controller_lines(c) -> list:
+    """The position loop: its structure (stated by the design or chosen from the record) and
+    gains (:mod:`axisopt.identify.records.controller`)."""
+    if c is None:
+        return []
+    ff = f"feed-forward v {c.kv:.3g}, a {c.ka:.3g} (R2 {c.r2:.3f})"
+    casc = c.cascade
+    if casc is None:
+        how = "PD fitted from the reference" if c.source == "fitted" else "PD stated by the design"
+        text = f"controller  {how}: Kp {c.kp:.4g}, Kd {c.kd:.4g}, {ff}"
+    else:
+        how = "chosen from the record" if c.source == "fitted" else "stated by the design"
+        kx, kv, ti = casc
+        text = (
+            f"controller  P-PI cascade (position P, velocity PI), {how}: Kx {kx:.3g} 1/s, Kv "
+            f"{kv:.4g}, Ti {ti * 1e3:.3g} ms (Kx and 1/Ti enter alike: the smaller is named Kx); "
+            f"as Kp {c.kp:.4g}, Kd {c.kd:.4g}, Ki {c.ki:.4g}, {ff}"
+        )
+    if casc is not None and casc[0] * casc[2] > 0.5:
+        # corners within 2x of each other: the roots of a nearly double quadratic split poorly
+        text += (
+            "; Kx and 1/Ti lie within 2x: their sum and product are determined, the split poorly"
+        )
+    if casc is not None and c.heldout_gain is not None:
+        text += f"; the integral term's held-out gain {c.heldout_gain:.0f} %"
+    out = wrap_words(text, cont="              ")
+    if c.note:
+        out += wrap_words(f"! {c.note}", indent="  ", cont="      ")
+    return out
+
+
+def _fmt_unit(q: str, term: str, value: float) -> str:
+    u, f = unit_of(q, term)
+    return f"{value * f:.3g} {u}"
+
+
+def _lost_motion_params(diag) -> dict:
+    """The windup stiffness, the motor side's mass and friction of the lost motion's fit (in the
+    record's units: force records N, kg, N s/m; torque records N.m, kg.m^2, N.m.s/rad)."""
+    lm, q = diag.lost, diag.quantity
+    k = lm.stiffness if math.isfinite(lm.stiffness) else None
+    per_um = None if k is None else k / (as_mm(diag, 1.0) * 1e-3) / 1e6
+    key = "N" if q == "force" else "N.m"
+    return {
+        f"stiffness_{key}_per_um": per_um,
+        "motor_mass": lm.motor_mass,
+        f"motor_coulomb_{key}": lm.motor_coulomb,
+        "motor_viscous": lm.motor_viscous,
     }

@@ -28,9 +28,10 @@ import numpy as np
 
 from ..effects import time_effects
 from ..effects.disturbance import golden
+from .controller import Controller, fit_controller  # noqa: F401 (the loop, fitted)
 from .record import TimeRecord
 from .regression import Processing, Rows, decimate, full_matrix, matrix, signals, term
-from .signal import derivatives, lowpass
+from .signal import derivatives
 
 IV_TOL = 1e-4
 IV_MAXIT = 30
@@ -99,41 +100,6 @@ def search_shape(rows: Rows, terms, shape: dict, lo: float, hi: float, name: str
 
 # ---------------------------------------------------------------------------------- closed-loop
 # model
-@dataclass
-class Controller:
-    """u = Kp (r - q) + Kd (r' - q') + Kv r' + Ka r'' (fitted to the record; SI of the record's
-    coordinate)."""
-
-    kp: float
-    kd: float
-    kv: float
-    ka: float
-    r2: float
-
-    def as_dict(self) -> dict:
-        return {"Kp": self.kp, "Kd": self.kd, "Kv_ff": self.kv, "Ka_ff": self.ka, "R2": self.r2}
-
-
-def fit_controller(rows: Rows) -> Controller | None:
-    rec, proc = rows.record, rows.proc
-    if rec.reference is None:
-        return None
-    segs = rec.segments
-    r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2, segs)
-    X = np.column_stack([r - rows.sig["q"], dr - rows.sig["v"], dr, ddr])
-    y = lowpass(rec.effort, proc.fs, proc.fc, segments=segs)
-    e = int(2.0 * proc.fs / proc.fc)
-    inner = np.concatenate([np.arange(a + e, b - e) for a, b in segs or ((0, rec.n),)])
-    X, y = X[inner], y[inner]
-    th = lstsq(X, y)
-    res = y - X @ th
-    ss = float(np.sum((y - y.mean()) ** 2))
-    if not ss > 0.0:  # a constant effort explains nothing about the controller
-        return None
-    r2 = 1.0 - float(res @ res) / ss
-    return Controller(*map(float, th), r2)
-
-
 def simulate_loop(
     rec: TimeRecord,
     ctrl: Controller,
@@ -148,6 +114,8 @@ def simulate_loop(
     r, dr, ddr = derivatives(rec.reference, proc.fs, proc.fc, 2, rec.segments)
     # a long record's windows: the loop restarts at rest in each
     starts = {a for a, _ in rec.segments}
+    seg, integ, casc = -1, 0.0, ctrl.structure == "p_pi_cascade"
+    ki, u0 = ctrl.ki, ctrl.u0
     m = params.get("M", 0.0) + (float(rec.aux["payload"][0]) if "payload" in rec.aux else 0.0)
     if not m > 0:
         return None
@@ -177,6 +145,7 @@ def simulate_loop(
     fvp, fvn = fv + dfv / 2, fv - dfv / 2
     kp, kd, kv, ka = ctrl.kp, ctrl.kd, ctrl.kv, ctrl.ka
     h = 1.0 / (proc.fs * substeps)
+    dtk = 1.0 / proc.fs
     hm = h / m
     sq = 2.0 / proc.stroke_q
     q, v = float(rec.q[0]), 0.0
@@ -188,8 +157,12 @@ def simulate_loop(
     for k in range(rec.n):
         if k in starts:
             q, v = ql[k], 0.0
+            seg, integ = seg + 1, 0.0
         out[k] = q
         u = kp * (rl[k] - q) + kd * (drl[k] - v) + kv * drl[k] + ka * ddrl[k] - off
+        if casc:  # the P-PI cascade's integral of the position error (.controller)
+            integ += (rl[k] - q) * dtk
+            u += ki * integ + (u0[max(seg, 0)] if u0 else 0.0)
         load = levl[k] + kload * abs(u)
         if ext is not None:
             u += ext[k]

@@ -29,6 +29,7 @@ import numpy as np
 from ...errors import InputError
 from ..effects import TimeModel, time_effects
 from ..selection import TIME_RULE as RULE
+from .controller import heldout_gain as controller_heldout_gain
 from .estimators import (
     Controller,
     Estimate,
@@ -209,7 +210,9 @@ def diagnose_time(
     proc = replace(proc, **{k: (design or {})[k] for k in ORDER_KEYS if k in (design or {})})
     est_rows = make_rows(est, proc)
     val_rows = [make_rows(r, proc) for r in records[1:]]
-    ctrl = fit_controller(est_rows)
+    ctrl = fit_controller(est_rows, (design or {}).get("controller"))
+    if ctrl is not None:
+        ctrl.heldout_gain = controller_heldout_gain(ctrl, val_rows)
     tl = time.perf_counter()
     base_ls = least_squares(est_rows, BASE)
     t_ls = time.perf_counter() - tl
@@ -502,6 +505,7 @@ def diagnose_time_files(
         "reduction": plant.reduction,
         "ball_order": plant.ball_order,
         "belt_teeth": plant.belt_teeth,
+        "controller": plant.controller,
     }
     recs = [windowed(r) for r in recs]
     return diagnose_time(
