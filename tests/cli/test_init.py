@@ -51,7 +51,10 @@ def test_study_template_loads_into_cases(machine, tmp_path):
     )
 
 
-@pytest.mark.parametrize("machine", MACHINES)
+# the laser's three cases (the drive types each): over 10 s on an idle core, run by `pytest -m slow`
+@pytest.mark.parametrize(
+    "machine", [pytest.param(m, marks=pytest.mark.slow) if m == "laser" else m for m in MACHINES]
+)
 def test_study_template_runs_every_case_to_a_design(machine, tmp_path, capsys):
     path = tmp_path / "s.yaml"
     assert main(["init", "study", "--machine", machine, "--out", str(path)]) == 0

@@ -95,6 +95,7 @@ def full_exhaustive():
     return p, full, lines
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_the_exhaustive_method_stops_at_the_limit_unproven(full_exhaustive):
     p, full, _ = full_exhaustive
     res = solve(p, "exhaustive", top=1, sensitivities=False, time_limit=1e-3)
@@ -104,6 +105,7 @@ def test_the_exhaustive_method_stops_at_the_limit_unproven(full_exhaustive):
     assert "stopped at the time limit" in " ".join(res.certificate.notes)
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_a_long_exhaustive_search_reports_progress(full_exhaustive):
     lines = [m for m in full_exhaustive[2] if "exhaustive:" in m]
     assert lines and "combinations solved" in lines[-1]
@@ -118,7 +120,8 @@ def test_a_long_explanation_reports_progress(monkeypatch, caplog):
     assert lines and "combinations scored" in lines[-1]
 
 
-@pytest.mark.parametrize("method", ["exhaustive", "default"])
+# the exhaustive front: over 10 s on an idle core, run by `pytest -m slow`
+@pytest.mark.parametrize("method", [pytest.param("exhaustive", marks=pytest.mark.slow), "default"])
 def test_a_pareto_front_stops_at_the_time_limit(method):
     """A Pareto front (fuzz case 1039: a generated twin gantry of 1.3e10 combinations ran past
     `--time-limit 20` by minutes) stops at the limit: status 'time_limit', unproven, every point a

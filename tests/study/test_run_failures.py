@@ -347,6 +347,7 @@ def test_two_dead_workers_and_a_killed_run_resume_to_the_uninterrupted_rows(
     assert not (out / ".lock").exists() and _temporaries(out) == []
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_dask_worker_killed_mid_study_gives_the_uninterrupted_rows(reference, tmp_path):
     distributed = pytest.importorskip("distributed")
     st = load_study(copy_study(tmp_path, n=8))

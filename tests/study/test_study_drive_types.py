@@ -18,6 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 LASER = ROOT / "problems" / "laser_lm_problem.yaml"
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_study_over_drive_types(tmp_path):
     study = tmp_path / "s.yaml"
     study.write_text(

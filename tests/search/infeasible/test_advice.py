@@ -26,6 +26,7 @@ def _variant(tmp_path, name, **values):
     return path
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_lower_rapid_speed_is_offered_and_holds(tmp_path):
     """The lathe Z with at most 1 um of lost motion (no gearbox: direct drive) misses the critical
     speed at 40 m/min; the advice lowers the rapid speed, and the problem with that speed solves."""
@@ -84,6 +85,7 @@ def test_twin_gantry_too_fast_gets_a_verified_speed(tmp_path):
     assert again.best is not None and again.certificate.proven
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_heavier_balanced_ram_gets_a_stronger_cylinder(tmp_path):
     """The balanced Z with its ram doubled to 1200 kg and the cylinder kept (5.3-5.6 kN, 45 % of the
     weight) misses the motor's RMS torque and the support set's lift-off: neither speed nor
@@ -109,6 +111,7 @@ def test_heavier_balanced_ram_gets_a_stronger_cylinder(tmp_path):
     assert again.best is not None and again.certificate.proven
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_unbalanced_vertical_gets_a_cylinder(tmp_path):
     """A 1200 kg Z without a balance cylinder misses torque and lift-off for every catalog drive:
     the advice adds a balance cylinder (90 % of the weight), and the problem with it solves.  (800

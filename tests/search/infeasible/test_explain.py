@@ -116,6 +116,7 @@ def test_shipped_mechanical_infeasibility_scores_few_blocks(monkeypatch):
     assert len(why.closest) == E.CLOSEST and all(c.misses for c in why.closest)
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_shipped_drive_infeasibility_equals_every_combination(monkeypatch):
     """problems/infeasible_drive_problem.yaml: every drive limit is folded in exactly (the
     optimistic guide does not bound them) and the answer equals the scan of every combination."""

@@ -8,6 +8,8 @@ brake torque."""
 
 from pathlib import Path
 
+import pytest
+
 from axisopt.problem import load_problem
 from axisopt.report.solve import relax_lines
 from axisopt.search import solve
@@ -124,6 +126,7 @@ def test_a_vendor_filter_gets_the_vendor_to_add(tmp_path):
     assert again.best is not None and again.certificate.proven
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_vertical_axis_without_brake_torque_is_told_so(tmp_path):
     """The SGM7J motors give no brake torque, so the holding-brake check fails by 100 % on
     every design: the relaxations never propose its margin at 0 (nor any margin at 0 or below), the
@@ -155,6 +158,7 @@ def test_vertical_axis_without_brake_torque_is_told_so(tmp_path):
     )
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_an_excluded_part_is_taken_out_of_exclude(tmp_path):
     """The vertical axis with the SGM7G motors listed but every one of them excluded: the advice
     takes one out of catalog.exclude.motor, and the problem without that exclusion solves with

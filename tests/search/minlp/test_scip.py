@@ -53,6 +53,7 @@ def _teaching_yaskawa_rule(tmp_path) -> Path:
     return path
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_teaching_problem_equals_exhaustive(tmp_path):
     p = load_problem(_teaching_yaskawa_rule(tmp_path))
     s = solve(p, "scip", time_limit=TEACHING_LIMIT)
@@ -77,6 +78,7 @@ def test_pareto_is_an_input_error():
         solve(p, "scip")
 
 
+@pytest.mark.slow  # over 10 s on an idle core: run by `pytest -m slow`
 def test_cli_exit_codes(capsys, tmp_path):
     teaching = _teaching_yaskawa_rule(tmp_path)
     assert (
