@@ -354,9 +354,9 @@ def nut_length(screw, nut):
     )
 
 
-# the bearing makers that rate a set's row groups by the groups' Hertz load split (NSK
-# super-precision bearings pp. 110-111); the others print one set rating and state no rule for the
-# split
+# the bearing makers that state their own rule for a set's row-group loads (NSK super-precision
+# bearings: the rows' ratings pp. 110-111, the split of DB and DBB sets pp. 140-141, the Hertz law
+# it rests on for the others); the others print one set rating and state no rule for the split
 HERTZ_SPLIT_VENDORS = ("NSK",)
 
 
