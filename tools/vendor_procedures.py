@@ -919,6 +919,12 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
     :data:`BECKHOFF_COMMISSIONING`) as an INFO row: :func:`gearbox_current_limits`."""
     t2b, t2n, n1 = red["accel_torque"], red["rated_torque"], red["max_input_speed"] * 60
     src = f"Beckhoff AG2400 mechanical data ({red['id']})"
+    belt = str(red.get("kind")) == "belt"
+    if belt:
+        # a timing-belt stage by its belt maker's rule: the torque the belt transmits, F_U =
+        # FUspez z_e b on the pulley (ELATECH, the row's rated and peak torque), FUspez tabled up
+        # to the stage's top input speed
+        src = f"ELATECH PU belts cat. p. 20, pp. 52-54 ({red['id']})"
 
     def theirs(name):
         c = checks.get(name) or {}
@@ -927,7 +933,7 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
     peak, rated = gearbox_current_limits(
         motor["peak_torque"], motor["rated_torque"], red["ratio"], t2b, t2n
     )
-    return [
+    rows = [
         Row(
             "reduction T2B / peak output torque",
             "N.m",
@@ -936,7 +942,7 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             t2b / t_out_peak,
             *theirs("reduction_accel_torque"),
             "",
-            src + ": T2B, max. 1000 cycles/h",
+            src + (": F_U = FUspez z_e b on the pulley" if belt else ": T2B, max. 1000 cycles/h"),
             "the larger of the cycle's (screw torque, eta 0.9, + load-side J x alpha, trapezoidal "
             "moves) and the feed thrust's (axis.axial_load + friction)",
         ),
@@ -948,7 +954,7 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             t2n / t_out_rms,
             *theirs("reduction_rated_torque"),
             "",
-            src + ": T2N nominal output torque",
+            src + (": F_U on the pulley, continuous" if belt else ": T2N nominal output torque"),
             "the larger of the drive cycle's RMS (the duty cycle, else the rapid over the stroke "
             "and back) and the mean thrust's (axis.mean_axial_load + friction)",
         ),
@@ -960,7 +966,7 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             n1 / n_motor,
             *theirs("reduction_speed"),
             "",
-            src + ": n1Max max. input speed",
+            src + (": FUspez tabled to this speed" if belt else ": n1Max max. input speed"),
         ),
         Row(
             "reduction commissioning current limits",
@@ -977,6 +983,8 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             "(rated torque in place of Beckhoff's M0)",
         ),
     ]
+    # Beckhoff's commissioning rule is a gearbox's: a belt stage has no such row
+    return rows[:-1] if belt else rows
 
 
 def gearbox_current_limits(m_peak, m_rated, ratio, t2b, t2n):

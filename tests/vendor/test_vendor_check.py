@@ -70,8 +70,8 @@ WIDER = {
     ),
     (None, "support bearing L10 life"): (
         0.05,
-        "an NSK set by NSK's rule on both sides; on sets with as many rows each way axisopt keeps "
-        "HIWIN's pair law (2^(3/2)), whose loads lie 3-4 % above the Hertz split's: conservative",
+        "an NSK set by NSK's rule on both sides (its printed split for as many rows each way, the "
+        "Hertz split for 3 against 1); the rest: the inputs' rounding and the friction terms",
     ),
     ("lathe_z_problem", "support bearing L10 life"): (
         0.06,
