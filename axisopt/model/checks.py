@@ -301,7 +301,14 @@ def checks(p, mounting, preload, loads) -> dict:
     mean_omega = 2.0 * math.pi * p["mean_speed"] / p["lead"]
     f_max = loads["max_axial_force"]
     x_far = p["start_offset"] + p["stroke"]
+    # the dangerous speed by the screw's vendor (issue 53): HIWIN's F 3.27/3.28 for its screws,
+    # THK's A-696 for the others
     crit = pc.critical_speed(p["root_diameter"], span, mounting)
+    hiwin = p.get("screw_hiwin_rule", 0.0)
+    if not (isinstance(hiwin, (int, float)) and not hiwin):
+        crit = mx.if_else(
+            hiwin > 0.5, pc.critical_speed_hiwin(p["root_diameter"], span, mounting), crit
+        )
     # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK
     # "evaluate both"), nut counted as fixed (BUCKLING_END_CONDITION)
     buck_len = x_far if mounting != "fixed-fixed" else mx.fmax(x_far, span - p["start_offset"])

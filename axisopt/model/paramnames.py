@@ -95,6 +95,7 @@ PARAM_NAMES = (
     "bearing_rows_strong",
     "bearing_rows_weak",
     "bearing_hertz_split",
+    "screw_hiwin_rule",
     "bearing_static_load",
     "bearing_static_safety",
     "nut_lift_off_safety",
