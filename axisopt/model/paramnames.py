@@ -203,7 +203,8 @@ PART_PARAMS = MappingProxyType(
 # choice; the text columns type and arrangement as the numbers they stand for)
 _RULE_COLUMNS = MappingProxyType(
     {
-        "screws": (),
+        # the screw's vendor: its critical-speed rule (HIWIN's or THK's, model.checks)
+        "screws": ("vendor",),
         "nuts": (
             "type",
             "length",
