@@ -34,11 +34,6 @@ WIDER = {
         "which axisopt applies to every screw: +1.8 %; and axisopt's viscous guide friction "
         "in the load",
     ),
-    ("teaching_design", "critical speed"): (
-        0.08,
-        "fixed-free: HIWIN's f_n 0.147 (F 3.27) is 6.3 % below THK's "
-        "lambda_2 3.4 (A-696), which axisopt applies",
-    ),
     ("lathe_z_problem", "tensile/compressive load"): (
         0.03,
         "the pretension: the checker takes THK's 12e-6/K "
