@@ -61,8 +61,8 @@ def test_every_pareto_design_passes_the_vendor_check(tmp_path):
                 lowest = (r["margin"], r["check"])
     text = (ROOT / "docs" / "validation.md").read_text(encoding="utf-8")
     m = re.search(
-        r"Pareto front \(problems/pareto_problem\.yaml, (\d+) designs\).*?lowest vendor "
-        r"margin ([\d.]+) \(([^)]+)\)",
+        r"Pareto front \(problems/pareto_problem\.yaml, (\d+) designs\).*?lowest\s+vendor\s+"
+        r"margin\s+([\d.]+)\s+\(([^)]+)\)",
         text,
         re.S,
     )
