@@ -171,6 +171,23 @@ def _default_drive(catalog: Catalog, axis: Axis) -> tuple:
     return True, ""
 
 
+def _refuse_unit_with_scale(row, part_id: str, axis: Axis, s: Section, slot: str) -> None:
+    """A required driven rotating-nut unit (the nut row's ``rotating`` flag 1) on an axis with
+    ``feedback: linear_scale``: a one-line error, as evaluate refuses the design (the search leaves
+    such units out when they are merely offered: search.parts)."""
+    try:
+        unit = float(row["rotating"]) == 1.0
+    except (KeyError, TypeError, ValueError):
+        unit = False
+    if unit and axis.feedback == "linear_scale":
+        raise s.error(
+            slot,
+            f"nut '{part_id}' is a driven rotating-nut unit: axis.feedback: linear_scale is not "
+            "supported on it (its standing screw's positioning rows are the unit's; use the motor "
+            "encoder)",
+        )
+
+
 def read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Restrictions:
     has_motors = len(catalog.rows("motors")) > 0
     default, why = _default_drive(catalog, axis)
@@ -267,7 +284,9 @@ def read_restrictions(sec: Section | None, catalog: Catalog, axis: Axis) -> Rest
             if key == "require" and not ids:
                 raise s.error(slot, "list at least one part id (or leave the slot out)")
             for i in ids:
-                catalog.part(SLOT_TABLE[slot], i, source=s.source, key=s.where(slot))
+                row = catalog.part(SLOT_TABLE[slot], i, source=s.source, key=s.where(slot))
+                if key == "require" and slot == "nut":
+                    _refuse_unit_with_scale(row, i, axis, s, slot)
             out.append((slot, tuple(ids)))
         s.done()
         kw[key] = tuple(out)

@@ -892,6 +892,28 @@ def summary_table(results: dict) -> str:
     return "\n".join(lines)
 
 
+def lowest_margin(rows: list[dict]) -> dict | None:
+    """The row with the lowest vendor margin (the check an engineer signing the design looks at
+    first) among the rows the vendor's criterion judges, from the rows' JSON."""
+    judged = [r for r in rows if r["margin"] is not None]
+    return min(judged, key=lambda r: r["margin"]) if judged else None
+
+
+def signoff_cells(label: str, rows: list[dict]) -> str:
+    """The first cells of a row of docs/validation.md's sign-off table: the optimum's column name,
+    its lowest vendor margin with PASS/FAIL, the check, and the vendor rule that judges it (the
+    row's source)."""
+    r = lowest_margin(rows)
+    if r is None:
+        return f"| {label} | \u2013 | \u2013 | \u2013 |"
+    verdict = "PASS" if r["passes"] else "**FAIL**"
+    return (
+        f"| {label} | {fmt(r['margin'])} {verdict} | {r['check']} | "
+        + r["source"].replace("|", "/")
+        + " |"
+    )
+
+
 # the drive checker's rows: (source of the vendor's rule, unit) by check name's start
 DRIVE_SOURCES = (
     ("peak force", "H-LMS Appendix A: Fp = M a + (M g + Fa) mu below the peak force (about 1 s)"),

@@ -463,10 +463,20 @@ def hertz_group_loads(preload, n_a, n_b, f):
     return q(0.5 * (lo + hi))
 
 
+def nsk_printed_loads(preload, f):
+    """Loads [N] on the pressed group and the other of an NSK set with as many bearings each way
+    (DB/DF, DBB/DFF) under an axial force ``f`` >= 0, as NSK prints them (NSK-SP pp. 140-141, with
+    no radial load): F_a1 = F_ap + 2/3 F_ae, F_a2 = F_ap - 1/3 F_ae; once F_a2 would be below 0,
+    F_a1 = F_ae and F_a2 = 0 (DBB: per bearing half of each, the same per group)."""
+    a, b = preload + 2.0 * f / 3.0, preload - f / 3.0
+    return (f, 0.0) if b < 0.0 else (a, b)
+
+
 def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
     """Support-set L10 life [h] by the bearing maker's group ratings (NSK-SP pp. 110-111: Ca printed
     by the rows loaded; the other direction's rows by i^0.7) with each group's load from Hertz's
-    contact law (:func:`hertz_group_loads`), the cubic mean over travel, L10 = (Ca / P)^3 1e6 per
+    contact law (:func:`hertz_group_loads`; for as many rows each way NSK's printed split,
+    :func:`nsk_printed_loads`), the cubic mean over travel, L10 = (Ca / P)^3 1e6 per
     group, the groups' lives combined with NSK's exponent 1.1; the pretension on the rows the
     designer turns to it (the way round that lives longer).  Returns (hours, source, note)."""
     n1, n2 = ROWS[brg["arrangement"]]
@@ -483,7 +493,10 @@ def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
             cubes = [0.0, 0.0]
             for p in moving:
                 f = sign * p.load + pretension
-                if f >= 0:
+                if n1 == n2:
+                    qa, qb = nsk_printed_loads(brg["preload"], abs(f))
+                    qa, qb = (qa, qb) if f >= 0 else (qb, qa)
+                elif f >= 0:
                     qa, qb = hertz_group_loads(brg["preload"], a, b, f)
                 else:
                     qb, qa = hertz_group_loads(brg["preload"], b, a, -f)
@@ -498,7 +511,13 @@ def nsk_set_life_h(brg, phases, pretension, nm, fw=1.0):
         best = max(best, min(ends) if pretension else max(ends))
     return (
         best,
-        "NSK-SP pp. 110-111 (Ca by rows loaded), Hertz load split",
+        "NSK-SP pp. 110-111 (Ca by rows loaded), "
+        + (
+            "pp. 140-141 split (2/3, 1/3 of the load to 3 x preload)"
+            if n1 == n2
+            else "Hertz load split (the contact law NSK states, p. 140; no printed line for 3 "
+            "against 1)"
+        ),
         (
             f"{brg['arrangement']}: groups {n1}/{n2}, Ca {rating[n1] / 1e3:.1f} / "
             f"{rating[n2] / 1e3:.1f} kN; "
@@ -900,6 +919,12 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
     :data:`BECKHOFF_COMMISSIONING`) as an INFO row: :func:`gearbox_current_limits`."""
     t2b, t2n, n1 = red["accel_torque"], red["rated_torque"], red["max_input_speed"] * 60
     src = f"Beckhoff AG2400 mechanical data ({red['id']})"
+    belt = str(red.get("kind")) == "belt"
+    if belt:
+        # a timing-belt stage by its belt maker's rule: the torque the belt transmits, F_U =
+        # FUspez z_e b on the pulley (ELATECH, the row's rated and peak torque), FUspez tabled up
+        # to the stage's top input speed
+        src = f"ELATECH PU belts cat. p. 20, pp. 52-54 ({red['id']})"
 
     def theirs(name):
         c = checks.get(name) or {}
@@ -908,7 +933,7 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
     peak, rated = gearbox_current_limits(
         motor["peak_torque"], motor["rated_torque"], red["ratio"], t2b, t2n
     )
-    return [
+    rows = [
         Row(
             "reduction T2B / peak output torque",
             "N.m",
@@ -917,7 +942,7 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             t2b / t_out_peak,
             *theirs("reduction_accel_torque"),
             "",
-            src + ": T2B, max. 1000 cycles/h",
+            src + (": F_U = FUspez z_e b on the pulley" if belt else ": T2B, max. 1000 cycles/h"),
             "the larger of the cycle's (screw torque, eta 0.9, + load-side J x alpha, trapezoidal "
             "moves) and the feed thrust's (axis.axial_load + friction)",
         ),
@@ -929,7 +954,7 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             t2n / t_out_rms,
             *theirs("reduction_rated_torque"),
             "",
-            src + ": T2N nominal output torque",
+            src + (": F_U on the pulley, continuous" if belt else ": T2N nominal output torque"),
             "the larger of the drive cycle's RMS (the duty cycle, else the rapid over the stroke "
             "and back) and the mean thrust's (axis.mean_axial_load + friction)",
         ),
@@ -941,7 +966,7 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             n1 / n_motor,
             *theirs("reduction_speed"),
             "",
-            src + ": n1Max max. input speed",
+            src + (": FUspez tabled to this speed" if belt else ": n1Max max. input speed"),
         ),
         Row(
             "reduction commissioning current limits",
@@ -958,6 +983,8 @@ def reduction_rows(red, motor, t_out_peak, t_out_rms, n_motor, checks):
             "(rated torque in place of Beckhoff's M0)",
         ),
     ]
+    # Beckhoff's commissioning rule is a gearbox's: a belt stage has no such row
+    return rows[:-1] if belt else rows
 
 
 def gearbox_current_limits(m_peak, m_rated, ratio, t2b, t2n):

@@ -106,8 +106,9 @@ def bearing_life_load(p, loads, travels, static):
     for ratings, rows in (((c_strong, c_weak), (n_s, n_w)), ((c_weak, c_strong), (n_w, n_s))):
         ends = []
         for orient in (1.0, -1.0):
-            # the groups' loads: HIWIN's pair law for as many rows each way; where the groups differ
-            # in rows, the set maker's split up to the set's own lift-off load (_set_halves)
+            # the groups' loads by the set maker's rule (_set_halves): NSK's printed split or
+            # HIWIN's pair law for as many rows each way; where the groups differ in rows, the
+            # maker's split up to the set's own lift-off load
             sym, hz = n_s == n_w, p["bearing_hertz_split"]
             halves = _per_load(
                 lambda f, o=orient, r=rows, s=sym, h=hz: _set_halves(pre, o * f - static, r, s, h),
@@ -143,11 +144,16 @@ def _per_load(halves, loads, others) -> list:
 
 
 def _set_halves(preload, load, rows, symmetric, hertz=0.0):
-    """The two row groups' loads of a support set (see :func:`bearing_life_load`): HIWIN's pair law
-    for as many rows each way; where the groups differ, the set maker's rule: NSK's Hertz split
-    (``hertz`` 1, physics.bearingsets.hertz_set_halves), else IBC's linear split
-    (physics.bearingsets.set_halves)."""
+    """The two row groups' loads of a support set (see :func:`bearing_life_load`) by the set
+    maker's rule (``hertz`` 1: NSK): for as many rows each way NSK's printed split
+    (physics.bearingsets.nsk_pair_halves), else HIWIN's pair law; where the groups differ NSK's
+    Hertz split (physics.bearingsets.hertz_set_halves: NSK prints no line for 3 against 1), else
+    IBC's linear split (physics.bearingsets.set_halves)."""
     pair = pl.preloaded_halves(preload, load)
+    if not (isinstance(hertz, (int, float)) and not hertz):
+        # a maker that prints its own split for as many rows each way (NSK: DB, DBB)
+        nsk = psets.nsk_pair_halves(preload, load)
+        pair = tuple(mx.if_else(hertz > 0.5, a, b) for a, b in zip(nsk, pair))
     if isinstance(symmetric, (bool, np.bool_)) and symmetric:
         return pair
     linear = psets.set_halves(preload, load, rows[0], rows[1])
@@ -295,7 +301,14 @@ def checks(p, mounting, preload, loads) -> dict:
     mean_omega = 2.0 * math.pi * p["mean_speed"] / p["lead"]
     f_max = loads["max_axial_force"]
     x_far = p["start_offset"] + p["stroke"]
+    # the dangerous speed by the screw's vendor (issue 53): HIWIN's F 3.27/3.28 for its screws,
+    # THK's A-696 for the others
     crit = pc.critical_speed(p["root_diameter"], span, mounting)
+    hiwin = p.get("screw_hiwin_rule", 0.0)
+    if not (isinstance(hiwin, (int, float)) and not hiwin):
+        crit = mx.if_else(
+            hiwin > 0.5, pc.critical_speed_hiwin(p["root_diameter"], span, mounting), crit
+        )
     # buckling: bearing to nut at the far stroke end (fixed-fixed: the longer of the two sides, THK
     # "evaluate both"), nut counted as fixed (BUCKLING_END_CONDITION)
     buck_len = x_far if mounting != "fixed-fixed" else mx.fmax(x_far, span - p["start_offset"])

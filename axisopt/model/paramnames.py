@@ -95,6 +95,7 @@ PARAM_NAMES = (
     "bearing_rows_strong",
     "bearing_rows_weak",
     "bearing_hertz_split",
+    "screw_hiwin_rule",
     "bearing_static_load",
     "bearing_static_safety",
     "nut_lift_off_safety",
@@ -202,7 +203,8 @@ PART_PARAMS = MappingProxyType(
 # choice; the text columns type and arrangement as the numbers they stand for)
 _RULE_COLUMNS = MappingProxyType(
     {
-        "screws": (),
+        # the screw's vendor: its critical-speed rule (HIWIN's or THK's, model.checks)
+        "screws": ("vendor",),
         "nuts": (
             "type",
             "length",

@@ -103,6 +103,9 @@ def axis_params(
             # Hertz load split (NSK-SP pp. 110-111); a maker that states no set rule: IBC's linear
             # split (model.checks.bearing_life_load)
             "bearing_hertz_split": _is_vendor(bearing, HERTZ_SPLIT_VENDORS),
+            # the screw's dangerous speed by its vendor's rule: HIWIN's (H-BS F 3.27/3.28) for its
+            # screws, THK's lambda (A-696) for the others (model.checks)
+            "screw_hiwin_rule": _is_vendor(screw, ("HIWIN",)),
             # the lift-off load of the stronger direction where the catalog lists one (a 3-against-1
             # set), else the set's one lift-off load (the weaker direction's)
             "bearing_lift_off_strong": listed_or(
@@ -354,9 +357,9 @@ def nut_length(screw, nut):
     )
 
 
-# the bearing makers that rate a set's row groups by the groups' Hertz load split (NSK
-# super-precision bearings pp. 110-111); the others print one set rating and state no rule for the
-# split
+# the bearing makers that state their own rule for a set's row-group loads (NSK super-precision
+# bearings: the rows' ratings pp. 110-111, the split of DB and DBB sets pp. 140-141, the Hertz law
+# it rests on for the others); the others print one set rating and state no rule for the split
 HERTZ_SPLIT_VENDORS = ("NSK",)
 
 

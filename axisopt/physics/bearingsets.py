@@ -16,6 +16,9 @@ Three published tables follow from this alone:
   the duplex's and rigidity 1.46 and 1.96 times: :func:`set_preload_ratio`,
   :func:`set_rigidity_ratio`.
 
+NSK prints its own split for sets of as many bearings each way (:func:`nsk_pair_halves`: NSK
+super-precision bearings, life of preloaded angular-contact sets, DB p. 140 and DBB p. 141).
+
 The load on each group under an external load (:func:`set_halves`) is IBC's linear split between the
 preload and the set's own lift-off load (Table 2.2's form), above Hertz's exact (convex) split:
 conservative.
@@ -36,6 +39,7 @@ __all__ = [
     "set_pressed_load",
     "set_halves",
     "hertz_set_halves",
+    "nsk_pair_halves",
 ]
 
 # fixed Newton steps of the Hertz split (one symbolic expression; converged to ~1e-15 as the double
@@ -161,3 +165,27 @@ def _newton_array(s, r, f, lift):
         out[active] = new
         active = active[new != old]
     return out.reshape(s.shape)
+
+
+# NSK's printed split for sets of as many bearings each way: the pressed group takes 2/3 of the
+# external load, the other gives up 1/3, until the other unloads at 3 x the set's preload
+NSK_PRESSED_SHARE = 2.0 / 3.0
+NSK_LIFT_OFF = 3.0
+
+
+def nsk_pair_halves(preload, load):
+    r"""Loads [N] on the '+' and '-' groups of a preloaded set of as many bearings each way (DB/DF,
+    DBB/DFF) under a signed axial ``load`` [N] (+ presses the '+' group), as NSK prints it (NSK
+    super-precision bearings, "life of preloaded angular-contact ball bearings": DB p. 140, F_a1 =
+    2/3 F_ae + F_ap, F_a2 = F_ap - 1/3 F_ae, F_a1 = F_ae once F_a2 would fall below 0; DBB p. 141,
+    per bearing 1/3 F_ae + F_ap and F_ap - 1/6 F_ae, the same for the group of two):
+
+    .. math:: F_{pressed} = F + \tfrac{2}{3} |F_{ext}| \ (|F_{ext}| < 3 F),
+              \quad |F_{ext}| \text{ beyond};\quad F_{other} = F_{pressed} - |F_{ext}|
+
+    ``preload``: the set's preload F [N] (each group's load at no external load).  NSK's line
+    meets the Hertz law (:func:`hertz_set_halves`) at no load and lies above it elsewhere (it
+    unloads the other group at 3 F, Hertz at 2.83 F).  Returns (F_+, F_-)."""
+    mag = mx.fabs(load)
+    pressed = mx.if_else(mag < NSK_LIFT_OFF * preload, preload + NSK_PRESSED_SHARE * mag, mag)
+    return pressed + mx.fmin(load, 0.0), pressed - mx.fmax(load, 0.0)

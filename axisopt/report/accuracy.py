@@ -7,6 +7,7 @@ import math
 
 from ..catalog.grades import SCALE_GRADES, grade_table
 from ..model import nut_length
+from ..physics.nut import NUT_LENGTH_FACTORS
 
 ARCSEC = math.pi / 180.0 / 3600.0
 
@@ -115,14 +116,39 @@ def budget_rows(ev) -> list:
     return rows
 
 
+def nut_length_estimate_note(design) -> str | None:
+    """The line saying the lead row rests on the nut-length estimate (the nut's vendor lists no
+    length: physics.nut.nut_length_estimate), or None (a listed length; a scale, whose row does not
+    read the screw's lead)."""
+    if design.axis.feedback == "linear_scale":
+        return None
+    try:
+        listed = math.isfinite(float(design.nut["length"]))
+    except (KeyError, TypeError, ValueError):
+        listed = False
+    if listed:
+        return None
+    double = str(design.nut.get("type", "")) == "double"
+    factor = NUT_LENGTH_FACTORS[1 if double else 0]
+    length = float(nut_length(design.screw, design.nut)) * 1e3
+    return (
+        f"  the lead row rests on an estimate: nut length {length:.0f} mm = {factor:g} (P + d) "
+        "(its vendor lists none)"
+    )
+
+
 def budget_lines(ev) -> list:
-    """The budget as the text lines ``axisopt evaluate`` prints."""
+    """The budget as the text lines ``axisopt evaluate`` prints (and, where the nut's length is
+    the estimate, a line saying the lead row rests on it)."""
     lines = [
         f"positioning error budget over the {ev.design.axis.stroke * 1e3:.0f} mm stroke (um, "
         "largest deviation; THK A-712)"
     ]
     for label, value, source in budget_rows(ev):
         lines.append(f"  {label:<44}{value * 1e6:>8.1f}  ({source})")
+    note = nut_length_estimate_note(ev.design)
+    if note:
+        lines.append(note)
     return lines
 
 

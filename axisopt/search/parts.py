@@ -87,6 +87,7 @@ def build_space(problem: Problem) -> Space:
         float(problem.limit_map.get("max_backlash", np.inf)),
         _grades_chosen(problem),
         float(problem.axis.stroke) if _grades_chosen(problem) else 0.0,
+        problem.axis.feedback == "linear_scale",  # leaves the rotating-nut units out
     )
     hit = _SPACES.get(key)
     if hit is None or hit[0] is not problem.catalog:
@@ -206,6 +207,11 @@ def _build_space(problem: Problem) -> Space:
             | guides.isin("preload_class", r.guide_preload)
         )
     screws, nuts = _filtered(screws, r, "screw"), _filtered(nuts, r, "nut")
+    # a linear scale on the table is not supported with a driven rotating-nut unit (evaluate
+    # refuses that design; a required unit is refused as the problem is read): offered units are
+    # left out
+    if problem.axis.feedback == "linear_scale" and "rotating" in nuts:
+        nuts = nuts.take(~(np.nan_to_num(nuts.number("rotating")) == 1.0))
     bearings, guides = _filtered(bearings, r, "bearing"), _filtered(guides, r, "guide")
     nuts = nuts.take(nuts.isin("screw_id", set(screws.ids)))
     # the problem's preload bounds are for preloaded nuts; a single nut keeps its catalog range

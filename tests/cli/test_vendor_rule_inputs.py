@@ -71,3 +71,27 @@ parts:
     )
     assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
     assert "rotating-nut" in r.stderr and "linear_scale" in r.stderr
+
+
+def test_a_required_unit_with_a_scale_in_a_problem_one_line_exit_2(tmp_path):
+    """A problem that requires a driven rotating-nut unit and puts a linear scale on the table: the
+    combination evaluate refuses is refused as the problem is read (not proposed as an optimum)."""
+    text = """name: long-thk
+axis: {stroke: 2500 mm, moving_mass: 400 kg, mounting: fixed-fixed, max_speed: 16 m/min,
+       axial_load: 3000 N, feedback: linear_scale, scale_grade: AMO-LMB-5}
+objective: stiffness
+catalog:
+  vendors: [THK, HIWIN]
+  require: {nut: [THK-DIR4010-6]}
+"""
+    f = tmp_path / "p.yaml"
+    f.write_text(text, encoding="utf-8")
+    r = subprocess.run(
+        [sys.executable, "-m", "axisopt", "solve", str(f)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=300,
+    )
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    assert "catalog.require.nut" in r.stderr and "linear_scale" in r.stderr

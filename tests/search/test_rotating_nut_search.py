@@ -59,3 +59,22 @@ def test_a_required_unit_on_other_mountings_is_never_proposed(tmp_path):
     why = res.infeasibility
     assert "rotating-nut unit on a screw fixed at both ends" in why.relax_blocked_by
     assert all(r.key != "limits.margins.rotating_mount" for r in why.relax)
+
+
+def test_a_scale_leaves_offered_units_out(tmp_path):
+    """The same long axis with a linear scale on the table (axis.feedback: linear_scale): a driven
+    rotating-nut unit takes no scale (evaluate refuses that design), so the search proposes none
+    (without the scale its proven optimum is a DIR unit: the test above; with the units left out
+    nothing remains)."""
+    path = tmp_path / "scale.yaml"
+    text = LONG.replace("{mountings}", "fixed-supported, fixed-fixed").replace("{extra}", "")
+    text = text.replace("{{", "{").replace("}}", "}")
+    text = text.replace(
+        "pretension_rise: 2 K}",
+        "pretension_rise: 2 K,\n       feedback: linear_scale, scale_grade: AMO-LMB-5}",
+    )
+    path.write_text(text, encoding="utf-8")
+    res = solve(load_problem(path), "default", top=1, sensitivities=False)
+    # at 16 m/min over 2.78 m only a unit does not whirl (the test above): with the units left out
+    # no design remains
+    assert res.best is None, res.best

@@ -82,3 +82,27 @@ def test_default_equals_exhaustive_vendor_rules(seed):
         ev = model.evaluate(d.best.design)
         for c in model.CHECKS:
             assert model.passes(ev.values[f"margin_{c}"]), c
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_default_equals_exhaustive_screw_and_set_makers(seed):
+    """The screw's critical speed by its vendor (HIWIN's F 3.27 or THK's lambda) and the set's
+    load split by its maker (NSK's printed split or HIWIN's pair law), on catalogs mixing them, with
+    fixed-free mountings where HIWIN's rule differs most."""
+    rng = np.random.default_rng(950 + seed)
+    cat = make_catalog(rng, n_screws=4, nuts_per_screw=2, n_bearings=4, n_guides=3)
+    make_double(cat)
+    cat.screws["vendor"] = ["HIWIN" if i % 2 == 0 else "THK" for i in range(len(cat.screws))]
+    cat.bearings["vendor"] = ["NSK" if i % 2 == 0 else "HIWIN" for i in range(len(cat.bearings))]
+    p = make_problem(
+        cat,
+        mountings=("fixed-free", "fixed-supported", "fixed-fixed"),
+        limits={"max_cost": float(rng.uniform(3000, 5000)), "min_life": 15000 * 3600.0},
+        moving_mass=float(rng.uniform(150, 400)),
+        axial_load=3000.0,
+    )
+    d = solve(p, "default", top=2, sensitivities=False)
+    e = solve(p, "exhaustive", top=2, sensitivities=False)
+    assert (d.best is None) == (e.best is None)
+    if d.best is not None:
+        assert_same_answer(d, e)

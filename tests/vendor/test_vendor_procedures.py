@@ -152,6 +152,16 @@ def test_support_set_rating_and_preload_nsk_25tac62b():
 
 
 @pytest.mark.published
+def test_nsk_split_of_a_db_pair_until_and_after_unloading():
+    # NSK-SP p. 140 (DB, no radial load): Fa1 = 2/3 Fae + Fap, Fa2 = Fap - 1/3 Fae; unloaded (Fa2
+    # < 0): Fa1 = Fae, Fa2 = 0.  With Fap 1000 N: 1500 N gives 2000 / 500 N, 3000 N the unloading
+    # point 3000 / 0 N, 4000 N all on one side
+    assert vp.nsk_printed_loads(1000.0, 1500.0) == pytest.approx((2000.0, 500.0))
+    assert vp.nsk_printed_loads(1000.0, 3000.0) == pytest.approx((3000.0, 0.0))
+    assert vp.nsk_printed_loads(1000.0, 4000.0) == pytest.approx((4000.0, 0.0))
+
+
+@pytest.mark.published
 def test_ibc_split_of_a_db_pair_until_and_after_unloading():
     # IBC TI-I-5010.2/E Table 2.2, eqs. 2.8/2.9: DB pair, A = Fv + 0.67 Fae, B = Fv - 0.33 Fae,
     # unloading at 2.83 Fv
