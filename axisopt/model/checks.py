@@ -103,7 +103,12 @@ def bearing_life_load(p, loads, travels, static):
     pre = p["bearing_preload"]
     two_ends = p["bearing_sets"] > 1.5
     best = None
-    for ratings, rows in (((c_strong, c_weak), (n_s, n_w)), ((c_weak, c_strong), (n_w, n_s))):
+    orders = (((c_strong, c_weak), (n_s, n_w)), ((c_weak, c_strong), (n_w, n_s)))
+    if not mx.is_symbolic(n_s, n_w) and np.all(np.asarray(n_s) == np.asarray(n_w)):
+        # as many rows each way everywhere: the two ways round are one (the rows' ratings are
+        # equal, C (1/1)^0.7 = C), computed once
+        orders = orders[:1]
+    for ratings, rows in orders:
         ends = []
         for orient in (1.0, -1.0):
             # the groups' loads by the set maker's rule (_set_halves): NSK's printed split or
