@@ -143,16 +143,19 @@ def _newton_step(s, r, f):
     """One Newton step of the Hertz split's equation in s (see :func:`hertz_set_halves`)."""
     lo = mx.fmax(1.0 - s, 1e-6)
     hi = mx.fmax(1.0 + s / r, 1e-6)
-    g = hi**1.5 - lo**1.5 - f
-    dg = 1.5 / r * mx.sqrt(hi) + 1.5 * mx.sqrt(lo)
+    # x^{3/2} as x sqrt(x): the square roots serve the derivative too (a general power per element
+    # is several times slower on arrays)
+    root_hi, root_lo = mx.sqrt(hi), mx.sqrt(lo)
+    g = hi * root_hi - lo * root_lo - f
+    dg = 1.5 / r * root_hi + 1.5 * root_lo
     return mx.fmin(mx.fmax(s - g / dg, 0.0), 1.0)
 
 
 def _newton_array(s, r, f, lift):
-    """:data:`HERTZ_STEPS` Newton steps on arrays, element by element the same values: an element
-    whose step leaves it unchanged is a fixed point of the (deterministic) step and leaves the
-    loop; the elements past lift-off (whose s the closed form replaces) do not enter it.  The
-    search's arrays hold every bearing and preload: most elements settle in a few steps."""
+    """:data:`HERTZ_STEPS` Newton steps on arrays: an element whose step moves it by less than
+    1e-15 (s lies in [0, 1]: converged to rounding) leaves the loop; the elements past lift-off
+    (whose s the closed form replaces) do not enter it.  The search's arrays hold every bearing
+    and preload: most elements settle in a few steps."""
     s, r, f, lift = np.broadcast_arrays(s, r, f, lift)
     out = np.array(s, dtype=float).reshape(-1)
     r, f = r.reshape(-1), f.reshape(-1)
@@ -163,7 +166,7 @@ def _newton_array(s, r, f, lift):
         old = out[active]
         new = _newton_step(old, r[active], f[active])
         out[active] = new
-        active = active[new != old]
+        active = active[np.abs(new - old) > 1e-15]
     return out.reshape(s.shape)
 
 

@@ -360,6 +360,11 @@ CASES = [
         fixed=dict(mounting="fixed-supported"),
     ),
     case(
+        checks.critical_speed_hiwin,
+        kw=dict(root_diameter=0.02, span=1.0),
+        fixed=dict(mounting="fixed-free"),
+    ),
+    case(
         checks.buckling_load,
         kw=dict(root_diameter=0.02, length=1.0),
         fixed=dict(mounting="fixed-fixed"),
