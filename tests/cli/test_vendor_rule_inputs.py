@@ -25,6 +25,19 @@ def _run(tmp_path, line, monkeypatch) -> int:
     return main(["solve", str(f)])
 
 
+def _process_error(command: str, path) -> str:
+    """``axisopt COMMAND PATH`` as a process: exit 2 and one stderr line, returned."""
+    r = subprocess.run(
+        [sys.executable, "-m", "axisopt", command, str(path)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=300,
+    )
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    return r.stderr
+
+
 @pytest.mark.parametrize(
     "line, word",
     [
@@ -62,15 +75,8 @@ parts:
 """
     f = tmp_path / "d.yaml"
     f.write_text(text, encoding="utf-8")
-    r = subprocess.run(
-        [sys.executable, "-m", "axisopt", "evaluate", str(f)],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-        timeout=300,
-    )
-    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
-    assert "rotating-nut" in r.stderr and "linear_scale" in r.stderr
+    err = _process_error("evaluate", f)
+    assert "rotating-nut" in err and "linear_scale" in err
 
 
 def test_a_required_unit_with_a_scale_in_a_problem_one_line_exit_2(tmp_path):
@@ -86,12 +92,5 @@ catalog:
 """
     f = tmp_path / "p.yaml"
     f.write_text(text, encoding="utf-8")
-    r = subprocess.run(
-        [sys.executable, "-m", "axisopt", "solve", str(f)],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-        timeout=300,
-    )
-    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
-    assert "catalog.require.nut" in r.stderr and "linear_scale" in r.stderr
+    err = _process_error("solve", f)
+    assert "catalog.require.nut" in err and "linear_scale" in err
