@@ -56,7 +56,7 @@ def test_compare_designs_and_a_problem(tmp_path, capsys):
         r["critical_speed available [rpm]"] / 1200, rel=1e-9
     )
     assert r["nut_life needed [h]"] == pytest.approx(20_000)
-    assert "  critical speed [rpm]" in out and "(4,353/1,200)" in out
+    assert "  critical speed [rpm]" in out and "(4,328/1,200)" in out
     assert png.stat().st_size > 10_000
 
 
