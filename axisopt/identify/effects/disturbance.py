@@ -168,13 +168,25 @@ def _periodic_short(ctx) -> str:
     )
 
 
-def _periodic_implausible(value, fc, fv) -> list:
-    a = math.hypot(value("ps"), value("pc"))
-    return (
-        [f"a periodic force of amplitude {a:.4g} beyond {fc:.4g} (the whole Coulomb friction)"]
-        if a > fc
-        else []
-    )
+def pair_amplitude(s, c):
+    """The amplitude of a sin, cos pair of fitted coefficients named ``s`` and ``c``."""
+    return lambda value: math.hypot(value(s), value(c))
+
+
+def pair_implausible(s, c, what):
+    """The plausibility check of a force line (a sin, cos pair ``s``, ``c``): implausible when its
+    amplitude exceeds the whole Coulomb friction."""
+    amplitude = pair_amplitude(s, c)
+
+    def check(value, fc, fv):
+        a = amplitude(value)
+        return (
+            [f"{what} of amplitude {a:.4g} beyond {fc:.4g} (the whole Coulomb friction)"]
+            if a > fc
+            else []
+        )
+
+    return check
 
 
 def _periodic(trig):
@@ -216,7 +228,7 @@ class TimePeriodic(Effect):
         ),
         skip=_periodic_short,
         too_short=_periodic_short,
-        implausible=_periodic_implausible,
+        implausible=pair_implausible("ps", "pc", "a periodic force"),
         evidence="a record at rest in position control with the suspected source running: the line "
         "stays",
         derived=(
@@ -224,7 +236,7 @@ class TimePeriodic(Effect):
                 "amp",
                 "amplitude of the periodic force sqrt(ps^2 + pc^2)",
                 "effort",
-                lambda value: math.hypot(value("ps"), value("pc")),
+                pair_amplitude("ps", "pc"),
             ),
         ),
         per_run=True,

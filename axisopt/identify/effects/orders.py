@@ -34,7 +34,7 @@ import math
 import numpy as np
 
 from .base import Effect, Shape, Term, TimeModel, register_effect
-from .disturbance import golden
+from .disturbance import golden, pair_amplitude, pair_implausible
 from .friction import RIPPLE_HARMONICS
 
 # the shape that holds each effect's period at the table, and the order each candidate expects
@@ -213,22 +213,6 @@ def _ball_skip(ctx) -> str:
     return ""
 
 
-def _amplitude(s, c):
-    return lambda value: math.hypot(value(s), value(c))
-
-
-def _implausible(s, c, what):
-    def check(value, fc, fv):
-        a = math.hypot(value(s), value(c))
-        return (
-            [f"{what} of amplitude {a:.4g} beyond {fc:.4g} (the whole Coulomb friction)"]
-            if a > fc
-            else []
-        )
-
-    return check
-
-
 def _pair(prefix, label, key):
     return (
         Term(
@@ -266,11 +250,11 @@ class MotorCogging(Effect):
             also=(("cog_order", "order of the motor turn", "ratio"),),
         ),
         skip=_cogging_skip,
-        implausible=_implausible("gs", "gc", "a motor-order force"),
+        implausible=pair_implausible("gs", "gc", "a motor-order force"),
         evidence="a slow constant-speed pass with the motor decoupled from the screw (or at two "
         "reductions): the line keeps its order of the motor turn",
         derived=(
-            ("cog_amp", "amplitude of the motor-order force", "effort", _amplitude("gs", "gc")),
+            ("cog_amp", "amplitude of the motor-order force", "effort", pair_amplitude("gs", "gc")),
         ),
     )
 
@@ -293,11 +277,11 @@ class BeltMesh(Effect):
             ],
         ),
         skip=_belt_skip,
-        implausible=_implausible("bs", "bc", "a tooth-mesh force"),
+        implausible=pair_implausible("bs", "bc", "a tooth-mesh force"),
         evidence="the same pass with the belt's tension changed, or with another pulley pair: the "
         "line follows the tooth count",
         derived=(
-            ("mesh_amp", "amplitude of the tooth-mesh force", "effort", _amplitude("bs", "bc")),
+            ("mesh_amp", "amplitude of the tooth-mesh force", "effort", pair_amplitude("bs", "bc")),
         ),
     )
 
@@ -319,10 +303,10 @@ class BallPass(Effect):
             also=(("ball_order", "balls passing per screw turn", "ratio"),),
         ),
         skip=_ball_skip,
-        implausible=_implausible("ns", "nc", "a ball-pass force"),
+        implausible=pair_implausible("ns", "nc", "a ball-pass force"),
         evidence="slow constant-speed passes at two speeds: the line keeps its non-integer order "
         "of the screw turn (a worn or contaminated ball track grows it)",
         derived=(
-            ("ball_amp", "amplitude of the ball-pass force", "effort", _amplitude("ns", "nc")),
+            ("ball_amp", "amplitude of the ball-pass force", "effort", pair_amplitude("ns", "nc")),
         ),
     )
